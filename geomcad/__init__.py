@@ -1,0 +1,54 @@
+"""geomcad: Theory of Machines and Mechanisms by exact graphical constructions.
+
+>>> import geomcad
+>>> sol = geomcad.solve("2013-6")
+>>> round(sol.results["theta_deg"], 4)
+23.4783
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+from geomcad.errors import (
+    ConstructionError,
+    DegenerateInput,
+    GeomcadError,
+    MissingDependency,
+    NoIntersection,
+    ParallelLines,
+    ParameterError,
+    UnknownProblem,
+)
+
+if TYPE_CHECKING:
+    from geomcad.problem import Solution
+
+__version__ = "0.1.0"
+
+__all__ = [
+    "ConstructionError",
+    "DegenerateInput",
+    "GeomcadError",
+    "MissingDependency",
+    "NoIntersection",
+    "ParallelLines",
+    "ParameterError",
+    "UnknownProblem",
+    "problem_ids",
+    "solve",
+]
+
+
+def solve(problem_id: str, **params: object) -> Solution:
+    """Solve a registered problem with the given parameters (SI units; ``*_deg`` in degrees)."""
+    from geomcad import registry
+
+    return registry.get(problem_id).solve(**params)
+
+
+def problem_ids() -> list[str]:
+    """The ids of every registered problem."""
+    from geomcad import registry
+
+    return registry.problem_ids()

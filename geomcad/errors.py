@@ -1,0 +1,60 @@
+"""One error family for the whole library.
+
+``GeomcadError`` is the root. ``ParameterError`` names a parameter, its value and the allowed
+range; ``ConstructionError`` names the construction step that failed and why. Both derive from
+``ValueError`` too, so callers that only know the standard library can still catch them. The CLI
+turns any of them into one ``error:`` line and exit status 2.
+"""
+
+from __future__ import annotations
+
+
+class GeomcadError(ValueError):
+    """Root of every error geomcad raises on purpose."""
+
+
+class ParameterError(GeomcadError):
+    """A parameter is outside its allowed range, of the wrong type, or unknown.
+
+    >>> str(ParameterError("K", 0.8, "must be > 1 (K = 1 gives θ = 0)"))
+    'parameter K = 0.8: must be > 1 (K = 1 gives θ = 0)'
+    """
+
+    def __init__(self, name: str, value: object, why: str) -> None:
+        self.name = name
+        self.value = value
+        self.why = why
+        super().__init__(f"parameter {name} = {value!r}: {why}")
+
+
+class ConstructionError(GeomcadError):
+    """A construction step cannot be carried out.
+
+    >>> str(ConstructionError("B0 = circle(O2, l3) ∩ circle(C0, l4)", "the circles do not meet"))
+    'step "B0 = circle(O2, l3) ∩ circle(C0, l4)": the circles do not meet'
+    """
+
+    def __init__(self, step: str, why: str) -> None:
+        self.step = step
+        self.why = why
+        super().__init__(f'step "{step}": {why}')
+
+
+class NoIntersection(ConstructionError):
+    """Two objects that a step intersects do not meet (or meet on no admissible branch)."""
+
+
+class ParallelLines(ConstructionError):
+    """Two lines that a step intersects are parallel."""
+
+
+class DegenerateInput(ConstructionError):
+    """A step's input is degenerate: coincident points, a zero-length direction, a zero radius."""
+
+
+class MissingDependency(GeomcadError):
+    """An optional system component (libcairo for PDF and PNG) is not installed."""
+
+
+class UnknownProblem(GeomcadError):
+    """No construction is registered under the requested id."""

@@ -1,0 +1,107 @@
+"""Assur dyads solved over whole arrays of positions at once (numpy), with an explicit branch.
+
+Every function takes ``(N, 2)`` arrays of points (or broadcastable ones) and returns ``(N, 2)``
+arrays; the branch flag is fixed for the whole sweep, so a mechanism never jumps to its other
+assembly mode. A position where a dyad cannot close raises :class:`NoIntersection` naming the step
+and the first failing index.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import numpy.typing as npt
+
+from geomcad import tol
+from geomcad.errors import NoIntersection
+
+Arr = npt.NDArray[np.float64]
+
+
+def cross(a: Arr, b: Arr) -> Arr:
+    """z-component of a × b, row by row."""
+    return np.asarray(a[..., 0] * b[..., 1] - a[..., 1] * b[..., 0], dtype=np.float64)
+
+
+def dot(a: Arr, b: Arr) -> Arr:
+    """a · b, row by row."""
+    return np.asarray(a[..., 0] * b[..., 0] + a[..., 1] * b[..., 1], dtype=np.float64)
+
+
+def perp(a: Arr) -> Arr:
+    """Each vector turned 90° counter-clockwise."""
+    return np.stack([-a[..., 1], a[..., 0]], axis=-1)
+
+
+def _fail(step: str, bad: npt.NDArray[np.bool_], why: str) -> None:
+    if np.any(bad):
+        i = int(np.argmax(bad))
+        raise NoIntersection(step, f"{why} (first at position index {i})")
+
+
+def rrr(p1: Arr, r1: float, p2: Arr, r2: float, branch: int, step: str = "RRR dyad") -> Arr:
+    """The joint at distance r1 from p1 and r2 from p2 (circle ∩ circle).
+
+    ``branch`` +1 takes the point on the left of p1 → p2, −1 the one on the right (the order of
+    :func:`geomcad.geom.circle_circle`).
+    """
+    dv = p2 - p1
+    d2 = dot(dv, dv)
+    d = np.sqrt(d2)
+    a = (r1 * r1 - r2 * r2 + d2) / (2.0 * d)
+    h2 = r1 * r1 - a * a
+    scale = max(r1, r2)
+    _fail(
+        step,
+        ~(h2 >= -tol.TANGENT * scale * scale),
+        "the dyad cannot close: the circles do not meet",
+    )
+    h = np.sqrt(np.maximum(h2, 0.0))
+    u = dv / d[..., None]
+    return np.asarray(p1 + u * a[..., None] + perp(u) * (branch * h)[..., None], dtype=np.float64)
+
+
+def rrp(p: Arr, r: float, q: Arr, d: Arr, branch: int, step: str = "RRP dyad") -> Arr:
+    """The slider joint on the line q + t·d (d unit) at distance r from p (circle ∩ line).
+
+    ``branch`` +1 takes the point further along d, −1 the nearer one (the order of
+    :func:`geomcad.geom.line_circle`).
+    """
+    t0 = dot(p - q, d)
+    h = cross(d, p - q)
+    w2 = r * r - h * h
+    _fail(step, ~(w2 >= -tol.TANGENT * r * r), "the dyad cannot close: the line misses the circle")
+    w = np.sqrt(np.maximum(w2, 0.0))
+    return np.asarray(q + d * (t0 + branch * w)[..., None], dtype=np.float64)
+
+
+def rrr_velocity(p1: Arr, v1: Arr, p2: Arr, v2: Arr, b: Arr, step: str = "RRR dyad") -> Arr:
+    """The velocity of joint b of an RRR dyad from its two vector equations.
+
+    V_B = V_1 + V_B1 with V_B1 ⊥ B p1, and V_B = V_2 + V_B2 with V_B2 ⊥ B p2: the two lines of
+    the velocity plan meet in b. Solved in closed form: (b − p_i)·(V_B − v_i) = 0.
+    """
+    e1 = b - p1
+    e2 = b - p2
+    det = cross(e1, e2)
+    scale = np.sqrt(dot(e1, e1) * dot(e2, e2))
+    _fail(
+        step, np.abs(det) <= tol.ANGLE * scale, "the dyad is in a dead position (links collinear)"
+    )
+    r1 = dot(e1, v1)
+    r2 = dot(e2, v2)
+    vx = (r1 * e2[..., 1] - r2 * e1[..., 1]) / det
+    vy = (e1[..., 0] * r2 - e2[..., 0] * r1) / det
+    return np.stack([vx, vy], axis=-1)
+
+
+def rrp_velocity(p: Arr, vp: Arr, c: Arr, d: Arr, step: str = "RRP dyad") -> Arr:
+    """The velocity of slider c on a fixed guide along d, linked to p by a rod.
+
+    V_C = V_P + V_CP with V_C ∥ the guide and V_CP ⊥ CP: (c − p)·(V_C − V_P) = 0.
+    """
+    e = c - p
+    den = dot(e, d)
+    scale = np.sqrt(dot(e, e))
+    _fail(step, np.abs(den) <= tol.ANGLE * scale, "the rod is perpendicular to the guide")
+    v = dot(e, vp) / den
+    return np.asarray(d * v[..., None], dtype=np.float64)

@@ -1,0 +1,301 @@
+"""The problem protocol: what a construction module declares, and what solving it returns.
+
+A problem module in ``constructions/`` defines ``PROBLEM = Problem(...)`` with its parameters
+(defaults = the seed's data), the results it reports, the seed's published values and two
+functions: ``build(params) -> Build`` (the construction and its results) and
+``draw(solution) -> [(name, Sheet), ...]`` (its drawing sheets; name ``""`` is the main sheet).
+
+The library never imports a problem module; :mod:`geomcad.registry` discovers them through the
+``geomcad.constructions`` entry-point group.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable, Mapping, Sequence
+from dataclasses import dataclass, field
+from typing import TYPE_CHECKING, Any, Literal
+
+from geomcad.errors import ConstructionError, ParameterError
+
+if TYPE_CHECKING:
+    from geomcad.construction import Construction
+    from geomcad.sheet import Sheet
+
+ParamValue = float | int | str
+SeedKind = Literal["measured", "rounded", "erratum"]
+
+
+@dataclass(frozen=True)
+class Param:
+    """One input of a problem.
+
+    ``unit`` is the SI unit ("m", "N", "kg", "1"), or "deg" for names ending in ``_deg``.
+    A parameter with ``choices`` takes one of those words; an ``integer`` one takes a whole number;
+    any other takes a finite real number, optionally bounded by ``gt``/``ge``/``lt``/``le``.
+    """
+
+    name: str
+    default: ParamValue
+    doc: str
+    unit: str = "1"
+    choices: tuple[str, ...] = ()
+    integer: bool = False
+    gt: float | None = None
+    ge: float | None = None
+    lt: float | None = None
+    le: float | None = None
+
+    def parse(self, text: str) -> ParamValue:
+        """Read a value given as text (``--set NAME=TEXT``) and check it."""
+        if self.choices:
+            return self.check(text.strip())
+        t = text.strip().replace(",", ".") if text.count(",") == 1 and "." not in text else text
+        try:
+            value: ParamValue = int(t) if self.integer else float(t)
+        except ValueError:
+            if self.integer:
+                try:
+                    f = float(t)
+                except ValueError:
+                    f = math.nan
+                if math.isfinite(f) and f == int(f):
+                    value = int(f)
+                else:
+                    raise ParameterError(self.name, text, "must be a whole number") from None
+            else:
+                raise ParameterError(self.name, text, "must be a number") from None
+        return self.check(value)
+
+    def check(self, value: object) -> ParamValue:
+        """Check a value's type and range; return it normalised (int for integer parameters)."""
+        if self.choices:
+            if not isinstance(value, str) or value not in self.choices:
+                raise ParameterError(self.name, value, f"must be one of {', '.join(self.choices)}")
+            return value
+        if isinstance(value, bool) or not isinstance(value, int | float):
+            raise ParameterError(self.name, value, "must be a number")
+        x = float(value)
+        if not math.isfinite(x):
+            raise ParameterError(self.name, value, "must be a finite number")
+        if self.integer:
+            if x != int(x):
+                raise ParameterError(self.name, value, "must be a whole number")
+            value = int(x)
+        else:
+            value = x
+        if self.gt is not None and not x > self.gt:
+            raise ParameterError(self.name, value, f"must be > {self.gt:g}{self._u()}")
+        if self.ge is not None and not x >= self.ge:
+            raise ParameterError(self.name, value, f"must be ≥ {self.ge:g}{self._u()}")
+        if self.lt is not None and not x < self.lt:
+            raise ParameterError(self.name, value, f"must be < {self.lt:g}{self._u()}")
+        if self.le is not None and not x <= self.le:
+            raise ParameterError(self.name, value, f"must be ≤ {self.le:g}{self._u()}")
+        return value
+
+    def _u(self) -> str:
+        return "" if self.unit == "1" else f" {self.unit}"
+
+
+@dataclass(frozen=True)
+class SeedValue:
+    """A value the seed published, converted to SI, with the class that sets its comparison.
+
+    - ``measured``: read off the seed's drawing; ``tol`` is 0.5 mm at the seed's scale.
+    - ``rounded``: printed after rounding; ``tol`` is half a unit of the last printed digit.
+    - ``erratum``: the seed is wrong; ``note`` says how, and the results' notes repeat it.
+    """
+
+    value: float
+    kind: SeedKind
+    tol: float
+    printed: str
+    note: str = ""
+
+    def agrees(self, exact: float) -> bool:
+        """True when ``exact`` lies within this value's comparison tolerance."""
+        return self.kind != "erratum" and abs(exact - self.value) <= self.tol
+
+
+def measured(mm: float, k: float, printed: str) -> SeedValue:
+    """A length measured off the seed's drawing: ``mm`` sheet millimetres at ``k`` units/mm."""
+    return SeedValue(mm * k, "measured", 0.5 * k, printed)
+
+
+def measured_value(value: float, k: float, printed: str) -> SeedValue:
+    """A quantity (in its SI unit) the seed derived from drawing measurements at ``k`` units/mm."""
+    return SeedValue(value, "measured", 0.5 * k, printed)
+
+
+def rounded(value: float, decimals: int, printed: str, unit: float = 1.0) -> SeedValue:
+    """A value printed with ``decimals`` decimals in a unit that is ``unit`` SI units."""
+    return SeedValue(value * unit, "rounded", 0.5 * 10.0 ** (-decimals) * unit, printed)
+
+
+def erratum(value: float, note: str, printed: str) -> SeedValue:
+    """A published value that is wrong; ``note`` says what the seed should have written."""
+    return SeedValue(value, "erratum", 0.0, printed, note)
+
+
+@dataclass(frozen=True)
+class ResultSpec:
+    """What a result means, for reports and for ``verify``.
+
+    ``drawn`` names the plan scale it is drawn at on the project's own sheet: "l" (mechanism,
+    k_l), "v", "a", "F"; ``None`` when it is not drawn (a ratio, a count).
+    """
+
+    name: str
+    unit: str
+    doc: str
+    drawn: str | None = None
+
+
+@dataclass
+class Build:
+    """What a problem's ``build`` returns."""
+
+    results: dict[str, Any]
+    construction: Construction
+    notes: list[str] = field(default_factory=list)
+    scales: dict[str, float] = field(default_factory=dict)
+    data: Any = None
+
+
+@dataclass(frozen=True)
+class Problem:
+    """A problem id with its parameters, results, seed values, construction and drawings."""
+
+    id: str
+    title: str
+    params: tuple[Param, ...]
+    results: tuple[ResultSpec, ...]
+    seed: Mapping[str, SeedValue]
+    build: Callable[[Mapping[str, ParamValue]], Build]
+    draw: Callable[[Solution], Sequence[tuple[str, Sheet]]]
+    seed_k_l: float | None = None
+
+    def param(self, name: str) -> Param:
+        """The declared parameter ``name``; an unknown name is a :class:`ParameterError`."""
+        for p in self.params:
+            if p.name == name:
+                return p
+        known = ", ".join(p.name for p in self.params)
+        raise ParameterError(name, "?", f"{self.id} has no such parameter (it has {known})")
+
+    def result_spec(self, name: str) -> ResultSpec | None:
+        """The spec of result ``name``, or of the field ``name`` inside a list of objects."""
+        for r in self.results:
+            if r.name == name:
+                return r
+        return None
+
+    @property
+    def defaults(self) -> dict[str, ParamValue]:
+        return {p.name: p.default for p in self.params}
+
+    def solve(self, **params: object) -> Solution:
+        """Check the parameters, run the construction and return the :class:`Solution`."""
+        values = self.defaults
+        for name, value in params.items():
+            values[name] = self.param(name).check(value)
+        b = self.build(values)
+        _check_finite(b.results, "results")
+        return Solution(self, values, b)
+
+
+def _check_finite(value: object, path: str) -> None:
+    if isinstance(value, float) and not math.isfinite(value):
+        raise ConstructionError(path, "the construction produced a non-finite number")
+    if isinstance(value, dict):
+        for k, v in value.items():
+            _check_finite(v, f"{path}.{k}")
+    elif isinstance(value, list | tuple):
+        for i, v in enumerate(value):
+            _check_finite(v, f"{path}.{i}")
+
+
+class Solution:
+    """A solved problem: parameters, results, the recorded construction, seed comparison."""
+
+    def __init__(self, problem: Problem, params: dict[str, ParamValue], build: Build) -> None:
+        self.problem = problem
+        self.params = params
+        self.results = build.results
+        self.construction = build.construction
+        self.scales = build.scales
+        self.data = build.data
+        self._notes = list(build.notes)
+
+    @property
+    def is_seed(self) -> bool:
+        """True when every parameter has its default (the seed's) value."""
+        return self.params == self.problem.defaults
+
+    @property
+    def seed(self) -> dict[str, float]:
+        """The seed's published values under the result names, in SI; empty for a variant."""
+        if not self.is_seed:
+            return {}
+        return {k: v.value for k, v in self.problem.seed.items()}
+
+    @property
+    def diff(self) -> dict[str, float]:
+        """exact − seed for every published value; empty for a variant."""
+        out: dict[str, float] = {}
+        for k, v in self.seed.items():
+            exact = self.results.get(k)
+            if isinstance(exact, int | float):
+                out[k] = float(exact) - v
+        return out
+
+    @property
+    def notes(self) -> list[str]:
+        """The construction's notes, plus every seed erratum when the seed's data are used."""
+        notes = list(self._notes)
+        if self.is_seed:
+            for k, v in self.problem.seed.items():
+                if v.kind == "erratum":
+                    notes.append(f"erratum {k}: the seed prints {v.printed}; {v.note}")
+        return notes
+
+    def seed_report(self) -> list[dict[str, Any]]:
+        """Per seed value: exact, published, difference, class, tolerance, agreement."""
+        rows = []
+        for k, v in self.problem.seed.items():
+            exact = self.results.get(k)
+            if not isinstance(exact, int | float):
+                continue
+            rows.append(
+                {
+                    "name": k,
+                    "exact": float(exact),
+                    "seed": v.value,
+                    "diff": float(exact) - v.value,
+                    "class": v.kind,
+                    "tol": v.tol,
+                    "agrees": v.agrees(float(exact)),
+                    "printed": v.printed,
+                }
+            )
+        return rows
+
+    def to_json(self) -> dict[str, Any]:
+        """The ``solve --json`` object of the interface."""
+        return {
+            "id": self.problem.id,
+            "params": dict(self.params),
+            "results": self.results,
+            "seed": self.seed,
+            "diff": self.diff,
+            "notes": self.notes,
+        }
+
+    def sheets(self) -> list[tuple[str, Sheet]]:
+        """The problem's drawing sheets: ``[(name, Sheet)]``, name ``""`` for the main sheet."""
+        return list(self.problem.draw(self))
+
+    def trace(self) -> str:
+        """The construction protocol, one line per named step."""
+        return self.construction.trace()

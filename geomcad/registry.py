@@ -1,0 +1,43 @@
+"""Discovery of problems through the ``geomcad.constructions`` entry-point group.
+
+Modules are imported lazily: listing ids reads only the entry points; a problem's module is
+imported when that problem is asked for.
+"""
+
+from __future__ import annotations
+
+from functools import cache
+from importlib.metadata import EntryPoint, entry_points
+from typing import TYPE_CHECKING
+
+from geomcad.errors import UnknownProblem
+
+if TYPE_CHECKING:
+    from geomcad.problem import Problem
+
+GROUP = "geomcad.constructions"
+
+
+@cache
+def _entry_points() -> dict[str, EntryPoint]:
+    return {ep.name: ep for ep in entry_points(group=GROUP)}
+
+
+def _sort_key(pid: str) -> tuple[int, str]:
+    return (0 if pid[:1].isdigit() else 1, pid)
+
+
+def problem_ids() -> list[str]:
+    """Every registered id, in a stable order (numbered ids first)."""
+    return sorted(_entry_points(), key=_sort_key)
+
+
+@cache
+def get(pid: str) -> Problem:
+    """The problem registered under ``pid``; :class:`UnknownProblem` names the known ids."""
+    eps = _entry_points()
+    if pid not in eps:
+        known = ", ".join(problem_ids()) or "none (is geomcad installed with pip install .?)"
+        raise UnknownProblem(f"unknown problem id {pid!r}; known ids: {known}")
+    problem: Problem = eps[pid].load()
+    return problem

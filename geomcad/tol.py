@@ -1,0 +1,35 @@
+"""All tolerances of the library, in one place.
+
+Tolerances are relative: a length tolerance is a fraction of the figure's size (the caller passes
+that size as ``scale``), an angle tolerance is in radians. Raw determinants are never compared
+with a bare number: they are first normalised to the sine of an angle or to a length.
+"""
+
+from __future__ import annotations
+
+#: Relative length tolerance: two lengths within REL_LENGTH · scale are equal.
+REL_LENGTH = 1e-12
+
+#: Angle tolerance in radians: directions closer than this are parallel.
+ANGLE = 1e-12
+
+#: Relative tolerance for the tangency case of a line–circle or circle–circle intersection:
+#: a discriminant within TANGENT · scale of zero counts as touching (one point).
+TANGENT = 1e-10
+
+#: Relative tolerance used by tests and by ``close()`` for derived (not primitive) quantities.
+DERIVED = 1e-9
+
+#: Root finding on angles (scipy brentq): absolute tolerance in radians.
+ROOT_ANGLE = 1e-14
+
+
+def length_eps(scale: float) -> float:
+    """Absolute length tolerance for a figure whose characteristic size is ``scale``."""
+    return REL_LENGTH * max(abs(scale), 1.0e-300)
+
+
+def close(a: float, b: float, rel: float = DERIVED, scale: float | None = None) -> bool:
+    """True when ``a`` and ``b`` agree within ``rel`` of ``scale`` (default: the larger of them)."""
+    s = max(abs(a), abs(b)) if scale is None else abs(scale)
+    return abs(a - b) <= rel * s
