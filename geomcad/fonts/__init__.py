@@ -1,0 +1,1 @@
+"""The pinned lettering font (osifont) and its fontconfig file, shipped with the package."""

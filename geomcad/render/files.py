@@ -1,0 +1,120 @@
+"""Write a problem's sheets to files: ``ID.svg`` for the main sheet, ``ID-NAME.svg`` for others.
+
+Every file is written atomically (a temporary file in the same directory, then ``os.replace``),
+so a reader never sees half a sheet and a failure leaves neither a partial file nor a stray
+temporary one. Every SVG is written before any PDF or PNG: SVG needs nothing from the system, so a
+machine without libcairo still gets the SVGs before :class:`~geomcad.errors.MissingDependency`.
+"""
+
+from __future__ import annotations
+
+import os
+import uuid
+from collections.abc import Callable, Sequence
+from pathlib import Path
+
+from geomcad.errors import ParameterError
+from geomcad.render.raster import to_pdf, to_png
+from geomcad.render.svg import to_svg
+from geomcad.sheet.model import Sheet
+
+#: Output formats, in the order they are written.
+FORMATS = ("svg", "pdf", "png")
+
+#: Resolution of PNG previews (dots per inch).
+PNG_DPI = 150
+
+_SEPARATORS = {"/", "\\", "\0", os.sep} | ({os.altsep} if os.altsep else set())
+
+
+def _check_name(param: str, value: str, *, empty_ok: bool) -> None:
+    """Refuse a file-name part that could leave the output directory or is not a plain name."""
+    if not value and not empty_ok:
+        raise ParameterError(param, value, "must not be empty")
+    if any(sep in value for sep in _SEPARATORS) or ".." in value:
+        raise ParameterError(
+            param, value, "must be a plain file name: no path separator and no '..'"
+        )
+
+
+def _check_formats(formats: Sequence[str]) -> list[str]:
+    """The requested formats without repeats, in :data:`FORMATS` order."""
+    if isinstance(formats, str):
+        formats = [formats]
+    for f in formats:
+        if f not in FORMATS:
+            raise ParameterError("--format", f, f"allowed formats are {', '.join(FORMATS)}")
+    return [f for f in FORMATS if f in formats]
+
+
+def write_atomic(path: Path, data: bytes) -> None:
+    """Write ``data`` to ``path`` so that ``path`` is either untouched or complete.
+
+    The temporary file lives in the same directory (``os.replace`` is atomic only within one
+    file system) and is removed if anything fails before the rename.
+    """
+    tmp = path.with_name(f".{path.name}.{os.getpid()}-{uuid.uuid4().hex[:12]}.tmp")
+    # O_EXCL: never write through someone else's file; 0o666 lets the umask decide the mode.
+    fd = os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o666)
+    try:
+        with os.fdopen(fd, "wb") as f:
+            f.write(data)
+            f.flush()
+            os.fsync(f.fileno())
+        os.replace(tmp, path)
+    except BaseException:
+        tmp.unlink(missing_ok=True)
+        raise
+
+
+def write_sheets(
+    pid: str,
+    sheets: Sequence[tuple[str, Sheet]],
+    out_dir: Path,
+    formats: Sequence[str] = FORMATS,
+    *,
+    dpi: int = PNG_DPI,
+) -> list[Path]:
+    """Write each ``(name, sheet)`` as ``out_dir/ID[-NAME].{svg,pdf,png}`` and return the paths.
+
+    ``pid`` is the problem id; the main sheet has the name ``""``. ``out_dir`` is created if
+    missing. Every SVG is written first, then the PDFs and PNGs.
+
+    Raises :class:`~geomcad.errors.ParameterError` for an unknown format (naming ``--format``),
+    for an id or sheet name that is empty where it must not be, holds a path separator or ``..``,
+    or for two sheets with the same name; :class:`~geomcad.errors.MissingDependency` when a PDF
+    or PNG is asked for and libcairo is missing (after the SVGs are on disk).
+    """
+    wanted = _check_formats(formats)
+    _check_name("id", pid, empty_ok=False)
+    stems: list[str] = []
+    for name, _sheet in sheets:
+        _check_name("sheet name", name, empty_ok=True)
+        stem = f"{pid}-{name}" if name else pid
+        if stem in stems:
+            raise ParameterError("sheet name", name, f"two sheets of {pid} share this name")
+        stems.append(stem)
+
+    out_dir = Path(out_dir)
+    # Render every SVG before writing any, so a sheet that cannot be drawn writes nothing.
+    svgs = [to_svg(sheet) for _name, sheet in sheets]
+    out_dir.mkdir(parents=True, exist_ok=True)
+    written: list[Path] = []
+    if "svg" in wanted:
+        for stem, svg in zip(stems, svgs, strict=True):
+            path = out_dir / f"{stem}.svg"
+            write_atomic(path, svg.encode("utf-8"))
+            written.append(path)
+
+    def png(svg: str) -> bytes:
+        return to_png(svg, dpi=dpi)
+
+    converters: dict[str, Callable[[str], bytes]] = {"pdf": to_pdf, "png": png}
+    for fmt in ("pdf", "png"):
+        if fmt not in wanted:
+            continue
+        for stem, svg in zip(stems, svgs, strict=True):
+            path = out_dir / f"{stem}.{fmt}"
+            write_atomic(path, converters[fmt](svg))
+            written.append(path)
+    return written

@@ -1,0 +1,63 @@
+"""PDF and PNG from the SVG text, through cairosvg (imported only when asked for).
+
+cairosvg needs the system library libcairo; SVG output does not, so the import waits until a PDF
+or a PNG is wanted and a missing libcairo becomes one :class:`~geomcad.errors.MissingDependency`
+line that says what to install.
+
+cairo finds fonts through fontconfig, which reads its configuration once per process. Before the
+first import, ``FONTCONFIG_FILE`` is pointed at ``geomcad/fonts/fonts.conf``, which lists the
+package's own fonts directory (the pinned osifont) ahead of the system configuration, so the
+text is set in the same font whose metrics placed it.
+"""
+
+from __future__ import annotations
+
+import os
+from importlib import resources
+from pathlib import Path
+from types import ModuleType
+
+from geomcad.errors import MissingDependency
+
+#: The one line a user sees when libcairo is missing.
+CAIRO_MISSING = (
+    "PDF and PNG output need the cairo library: install it with `apt-get install libcairo2`"
+    " (SVG output works without it)"
+)
+
+FONTS_CONF = "fonts.conf"
+
+
+def fonts_conf() -> Path:
+    """The fontconfig file shipped with the package (its fonts directory, then the system's)."""
+    return Path(str(resources.files("geomcad.fonts").joinpath(FONTS_CONF)))
+
+
+def _cairosvg() -> ModuleType:
+    """Import cairosvg with fontconfig pointed at the shipped font.
+
+    Raises :class:`MissingDependency` when cairosvg or libcairo cannot be loaded.
+    """
+    # fontconfig reads this once, when cairo first sets text; set it before anything loads cairo.
+    os.environ["FONTCONFIG_FILE"] = str(fonts_conf())
+    try:
+        import cairosvg
+    except (ImportError, OSError) as exc:
+        # cairocffi raises OSError from dlopen when libcairo.so.2 is absent.
+        raise MissingDependency(CAIRO_MISSING) from exc
+    module: ModuleType = cairosvg
+    return module
+
+
+def to_pdf(svg: str) -> bytes:
+    """The SVG as a one-page PDF whose page is the sheet's paper size; text stays real text."""
+    cairosvg = _cairosvg()
+    return bytes(cairosvg.svg2pdf(bytestring=svg.encode("utf-8")))
+
+
+def to_png(svg: str, dpi: int = 150) -> bytes:
+    """The SVG as a PNG at ``dpi`` pixels per inch, on a white background."""
+    cairosvg = _cairosvg()
+    return bytes(
+        cairosvg.svg2png(bytestring=svg.encode("utf-8"), dpi=dpi, background_color="white")
+    )

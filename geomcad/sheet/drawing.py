@@ -1,0 +1,489 @@
+"""Drawing on a sheet: viewports at a scale, TMM symbols, arrows, dimensions, placed labels.
+
+A :class:`Viewport` maps model coordinates (metres, or m/s, or N; y up) to sheet millimetres
+(y down) through its :class:`~geomcad.sheet.scale.Scale`: the y axis is flipped here and only
+here, by transforming coordinates, so text stays upright and line widths stay in mm.
+
+Labels are placed last, by :meth:`Drawing.finish`: each label tries positions around its point,
+nearest first, and takes the one that overlaps no other label and crosses the fewest lines.
+"""
+
+from __future__ import annotations
+
+import itertools
+import math
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+
+import numpy as np
+import numpy.typing as npt
+
+from geomcad.geom import Arc, Circle, Line, PointLike, vec
+from geomcad.sheet.frame import Frame, text_at
+from geomcad.sheet.model import XY, ArcItem, CircleItem, Polyline, Sheet, TextItem
+from geomcad.sheet.scale import Scale
+from geomcad.sheet.style import (
+    arc_length,
+    circle_length,
+    fit_centre_line,
+    fit_closed,
+    fit_open,
+    style,
+)
+from geomcad.sheet.text import box, metrics, parse
+
+#: Symbol sizes on paper (mm).
+JOINT_R = 1.5
+DOT_R = 0.6
+ARROW_LEN = 3.5
+ARROW_HALF_WIDTH = 0.6
+SLIDER_SIZE = (9.0, 5.0)
+HATCH_STEP = 2.0
+HATCH_LEN = 2.5
+
+#: Label placement: gaps from the anchor (mm) and the eight directions, preferred first.
+LABEL_GAPS = (1.0, 2.0, 3.5, 5.5, 8.0, 11.0)
+DIRECTIONS: tuple[tuple[float, float], ...] = (
+    (1, -1), (-1, -1), (1, 1), (-1, 1), (1, 0), (-1, 0), (0, -1), (0, 1),
+)  # fmt: skip
+LABEL_PAD = 0.4
+
+
+def _dist(a: XY, b: XY) -> float:
+    return math.hypot(b[0] - a[0], b[1] - a[1])
+
+
+@dataclass
+class LabelRequest:
+    """A label waiting to be placed next to ``anchor`` (sheet mm)."""
+
+    anchor: XY
+    markup: str
+    height: float
+    role: str
+    prefer: tuple[float, float] | None
+    clear: float  # the radius around the anchor the label keeps clear of (a joint's circle)
+    id: str
+    others: tuple[XY, ...] = ()  # further anchors to try, each at a small extra cost
+
+
+@dataclass
+class Drawing:
+    """A sheet being drawn: its items, its free field, and the labels still to place."""
+
+    sheet: Sheet
+    frame: Frame
+    pending: list[LabelRequest] = field(default_factory=list)
+
+    def viewport(self, scale: Scale, origin: PointLike, at: XY) -> Viewport:
+        """A viewport that puts model point ``origin`` at sheet point ``at``."""
+        return Viewport(self, scale, vec(origin).x, vec(origin).y, at)
+
+    def text(
+        self, markup: str, at: XY, height: float = 3.5, anchor: str = "left", role: str = "label"
+    ) -> TextItem:
+        """Fixed text with its baseline at ``at`` (titles, notes)."""
+        return text_at(self.sheet, markup, at, height, role, anchor)
+
+    def label(
+        self,
+        anchor: XY,
+        markup: str,
+        height: float = 3.5,
+        prefer: tuple[float, float] | None = None,
+        clear: float = 0.0,
+        role: str = "label",
+        id: str = "",
+        others: tuple[XY, ...] = (),
+    ) -> None:
+        """Ask for a label next to a sheet point (or one of ``others``); :meth:`finish` places
+        it."""
+        self.pending.append(LabelRequest(anchor, markup, height, role, prefer, clear, id, others))
+
+    def table(
+        self,
+        x: float,
+        y: float,
+        widths: Sequence[float],
+        rows: Sequence[Sequence[str]],
+        height: float = 2.5,
+        row_h: float = 6.0,
+    ) -> tuple[float, float]:
+        """A ruled table with its top-left corner at (x, y); returns its (width, height).
+
+        The first row is the header (ruled off with a main line); numbers align left in cells.
+        """
+        total_w = sum(widths)
+        total_h = row_h * len(rows)
+        s = self.sheet
+        s.add(
+            Polyline(
+                ((x, y), (x + total_w, y), (x + total_w, y + total_h), (x, y + total_h)),
+                "frame_thin",
+                closed=True,
+            )
+        )
+        for i in range(1, len(rows)):
+            yy = y + i * row_h
+            s.add(Polyline(((x, yy), (x + total_w, yy)), "frame" if i == 1 else "frame_thin"))
+        xx = x
+        for w in widths[:-1]:
+            xx += w
+            s.add(Polyline(((xx, y), (xx, y + total_h)), "frame_thin"))
+        for i, row in enumerate(rows):
+            xx = x
+            for w, cell in zip(widths, row, strict=True):
+                if cell:
+                    self.text(
+                        cell,
+                        (xx + 1.2, y + i * row_h + row_h / 2 + height / 2),
+                        height,
+                        role="title",
+                    )
+                xx += w
+        return total_w, total_h
+
+    # -- label placement -----------------------------------------------------------------------
+    def finish(self) -> Sheet:
+        """Place every pending label and return the sheet."""
+        segs = _segments(self.sheet)
+        boxes: list[tuple[float, float, float, float]] = [_text_box(t) for t in self.sheet.texts()]
+        for req in self.pending:
+            item = _place(req, segs, boxes, self.frame)
+            self.sheet.add(item)
+            boxes.append(_text_box(item))
+        self.pending.clear()
+        return self.sheet
+
+
+def _text_box(t: TextItem) -> tuple[float, float, float, float]:
+    _, up, down = box(t.runs, t.height)
+    return (t.at[0], t.at[1] - up, t.at[0] + t.width, t.at[1] + down)
+
+
+def _segments(sheet: Sheet) -> npt.NDArray[np.float64]:
+    """Every drawn line of the sheet as segments (x1, y1, x2, y2); circles and arcs as chords."""
+    out: list[tuple[float, float, float, float]] = []
+    for it in sheet.items:
+        if isinstance(it, Polyline):
+            pts = list(it.points) + ([it.points[0]] if it.closed else [])
+            out += [(*a, *b) for a, b in itertools.pairwise(pts)]
+        elif isinstance(it, CircleItem | ArcItem):
+            if isinstance(it, CircleItem):
+                a0, sweep = 0.0, 2.0 * math.pi
+            else:
+                a0 = math.atan2(it.start[1] - it.c[1], it.start[0] - it.c[0])
+                sweep = it.sweep
+            n = max(8, int(abs(sweep) * it.r / 1.5) + 1)
+            t = a0 + np.linspace(0.0, sweep, n + 1)
+            xs, ys = it.c[0] + it.r * np.cos(t), it.c[1] + it.r * np.sin(t)
+            out += [
+                (float(xs[i]), float(ys[i]), float(xs[i + 1]), float(ys[i + 1])) for i in range(n)
+            ]
+    return np.array(out, dtype=np.float64).reshape(-1, 4)
+
+
+def _crossings(segs: npt.NDArray[np.float64], b: tuple[float, float, float, float]) -> int:
+    """How many segments cross or lie in the box (Liang–Barsky clipping, all at once)."""
+    if segs.size == 0:
+        return 0
+    x1, y1, x2, y2 = segs.T
+    dx, dy = x2 - x1, y2 - y1
+    t0 = np.zeros_like(x1)
+    t1 = np.ones_like(x1)
+    ok = np.ones(x1.shape, dtype=bool)
+    for p, q in ((-dx, x1 - b[0]), (dx, b[2] - x1), (-dy, y1 - b[1]), (dy, b[3] - y1)):
+        zero = p == 0.0
+        ok &= ~(zero & (q < 0.0))
+        with np.errstate(divide="ignore", invalid="ignore"):
+            r = np.where(zero, 0.0, q / np.where(zero, 1.0, p))
+        t0 = np.where(~zero & (p < 0.0), np.maximum(t0, r), t0)
+        t1 = np.where(~zero & (p > 0.0), np.minimum(t1, r), t1)
+    return int(np.count_nonzero(ok & (t0 <= t1)))
+
+
+def _overlaps(a: tuple[float, float, float, float], b: tuple[float, float, float, float]) -> bool:
+    return a[0] < b[2] and b[0] < a[2] and a[1] < b[3] and b[1] < a[3]
+
+
+def _place(
+    req: LabelRequest,
+    segs: npt.NDArray[np.float64],
+    boxes: list[tuple[float, float, float, float]],
+    frame: Frame,
+) -> TextItem:
+    runs = parse(req.markup)
+    w, up, down = box(runs, req.height)
+    h = up + down
+    dirs = list(DIRECTIONS)
+    if req.prefer is not None:
+        dirs.insert(0, req.prefer)
+    best: tuple[float, XY] | None = None
+    anchors = (req.anchor, *req.others)
+    for gi, gap in enumerate(LABEL_GAPS):
+        g = gap + req.clear
+        for (ai, (ax, ay)), (di, (dx, dy)) in itertools.product(
+            enumerate(anchors), enumerate(dirs)
+        ):
+            n = math.hypot(dx, dy)
+            ux, uy = dx / n, dy / n
+            # the box's nearest corner (or edge middle) sits g from the anchor along (ux, uy)
+            cx = ax + ux * g + (w / 2.0) * (1 if ux > 0.3 else -1 if ux < -0.3 else 0)
+            cy = ay + uy * g + (h / 2.0) * (1 if uy > 0.3 else -1 if uy < -0.3 else 0)
+            bx = (cx - w / 2.0, cy - h / 2.0, cx + w / 2.0, cy + h / 2.0)
+            if not (frame.left < bx[0] and bx[2] < frame.right and frame.top < bx[1]):
+                continue
+            if bx[3] > frame.bottom or (bx[2] > frame.tb_left and bx[3] > frame.tb_top):
+                continue
+            padded = (bx[0] - LABEL_PAD, bx[1] - LABEL_PAD, bx[2] + LABEL_PAD, bx[3] + LABEL_PAD)
+            if any(_overlaps(padded, o) for o in boxes):
+                continue
+            cost = 10.0 * _crossings(segs, padded) + gi * 1.5 + di * 0.2 + ai * 0.5
+            if best is None or cost < best[0]:
+                best = (cost, (bx[0], bx[1] + up))
+        if best is not None and best[0] < 1.0:
+            break
+    if best is None:  # nowhere free: fall back on the first position
+        best = (0.0, (req.anchor[0] + 1.0, req.anchor[1] - 1.0))
+    fs = metrics().font_size(req.height)
+    return TextItem(best[1], runs, req.height, fs, w, req.role, req.id)
+
+
+class Viewport:
+    """A view of the model at a scale: model point (ox, oy) lands on sheet point ``at``."""
+
+    def __init__(self, drawing: Drawing, scale: Scale, ox: float, oy: float, at: XY) -> None:
+        self.d = drawing
+        self.scale = scale
+        self.ox, self.oy = ox, oy
+        self.at = at
+
+    @property
+    def sheet(self) -> Sheet:
+        return self.d.sheet
+
+    def p(self, q: PointLike) -> XY:
+        """A model point on the sheet (the one y flip of the library)."""
+        v = vec(q)
+        k = self.scale.k
+        return (self.at[0] + (v.x - self.ox) / k, self.at[1] - (v.y - self.oy) / k)
+
+    def mm(self, length: float) -> float:
+        return self.scale.mm(length)
+
+    # -- lines ---------------------------------------------------------------------------------
+    def seg(self, a: PointLike, b: PointLike, role: str = "link") -> None:
+        pa, pb = self.p(a), self.p(b)
+        self.sheet.add(Polyline((pa, pb), role, dash=fit_open(style(role).line, _dist(pa, pb))))
+
+    def polyline(self, pts: Sequence[PointLike], role: str = "link", closed: bool = False) -> None:
+        sp = tuple(self.p(q) for q in pts)
+        length = sum(_dist(a, b) for a, b in itertools.pairwise(sp))
+        dash = (
+            fit_closed(style(role).line, length) if closed else fit_open(style(role).line, length)
+        )
+        self.sheet.add(Polyline(sp, role, closed=closed, dash=dash))
+
+    def line_over(
+        self,
+        line: Line,
+        points: Sequence[PointLike],
+        role: str = "construction",
+        over: float = 8.0,
+    ) -> None:
+        """The part of an infinite line that spans the feet of ``points``, ``over`` mm beyond."""
+        ts = [line.param(q) for q in points]
+        extra = self.scale.model(over)
+        self.seg(line.at(min(ts) - extra), line.at(max(ts) + extra), role)
+
+    def centre_cross(self, c: PointLike, half_mm: float) -> None:
+        """Two centre lines crossing at ``c`` (dash-dot, crossing at a dash)."""
+        x, y = self.p(c)
+        dash = fit_centre_line("dashdot", half_mm)
+        role = "centre" if dash is not None else "dimension"
+        for a, b in (((x - half_mm, y), (x + half_mm, y)), ((x, y - half_mm), (x, y + half_mm))):
+            self.sheet.add(Polyline((a, b), role, dash=dash))
+
+    def circle(self, c: PointLike, r: float, role: str = "construction") -> None:
+        rr = self.mm(r)
+        dash = fit_closed(style(role).line, circle_length(rr))
+        self.sheet.add(CircleItem(self.p(c), rr, role, dash=dash))
+
+    def arc(self, arc: Arc, role: str = "construction") -> None:
+        """A model arc (counter-clockwise from ``start`` to ``end``)."""
+        rr = self.mm(arc.circle.r)
+        dash = fit_open(style(role).line, arc_length(rr, arc.sweep))
+        self.sheet.add(
+            ArcItem(
+                self.p(arc.circle.c),
+                rr,
+                self.p(arc.start_point),
+                self.p(arc.end_point),
+                -arc.sweep,
+                role,
+                dash=dash,
+            )
+        )
+
+    # -- symbols -------------------------------------------------------------------------------
+    def dot(self, q: PointLike, role: str = "point") -> None:
+        self.sheet.add(CircleItem(self.p(q), DOT_R, role, fill=True))
+
+    def joint(self, q: PointLike) -> None:
+        """A revolute joint: a small circle drawn over the links."""
+        self.sheet.add(CircleItem(self.p(q), JOINT_R, "joint", fill=True))
+
+    def pivot(self, q: PointLike, down: tuple[float, float] = (0.0, -1.0)) -> None:
+        """A revolute joint on the frame (GOST 2.770): the joint, its stand, hatched ground."""
+        x, y = self.p(q)
+        dx, dy = down[0], -down[1]  # model direction to paper
+        n = math.hypot(dx, dy)
+        dx, dy = dx / n, dy / n
+        px, py = -dy, dx
+        depth, half = 5.0, 3.5
+        base = (x + dx * depth, y + dy * depth)
+        a = (base[0] + px * half, base[1] + py * half)
+        b = (base[0] - px * half, base[1] - py * half)
+        self.sheet.add(Polyline(((x, y), a), "link"))
+        self.sheet.add(Polyline(((x, y), b), "link"))
+        self._ground(
+            (a[0] + px * 1.5, a[1] + py * 1.5), (b[0] - px * 1.5, b[1] - py * 1.5), (dx, dy)
+        )
+        self.sheet.add(CircleItem((x, y), JOINT_R, "joint", fill=True))
+
+    def _ground(self, a: XY, b: XY, outward: tuple[float, float]) -> None:
+        """A ground line from a to b hatched on the ``outward`` side (paper direction)."""
+        self.sheet.add(Polyline((a, b), "link"))
+        length = _dist(a, b)
+        ux, uy = (b[0] - a[0]) / length, (b[1] - a[1]) / length
+        n = max(2, int(length / HATCH_STEP))
+        for i in range(n + 1):
+            t = i * length / n
+            sx, sy = a[0] + ux * t, a[1] + uy * t
+            ex = sx + outward[0] * HATCH_LEN * 0.8 - ux * HATCH_LEN * 0.6
+            ey = sy + outward[1] * HATCH_LEN * 0.8 - uy * HATCH_LEN * 0.6
+            self.sheet.add(Polyline(((sx, sy), (ex, ey)), "ground"))
+
+    def guide(self, a: PointLike, b: PointLike, side: tuple[float, float] = (0.0, -1.0)) -> None:
+        """A slider's fixed guide from a to b, hatched on the model side ``side``, drawn
+        clear of the slider block."""
+        pa, pb = self.p(a), self.p(b)
+        out = (side[0], -side[1])
+        off = SLIDER_SIZE[1] / 2.0 + 0.6
+        sa = (pa[0] + out[0] * off, pa[1] + out[1] * off)
+        sb = (pb[0] + out[0] * off, pb[1] + out[1] * off)
+        self._ground(sa, sb, out)
+
+    def slider(self, q: PointLike, along: PointLike = (1.0, 0.0)) -> None:
+        """A slider block on its guide, with the joint of the link that drives it."""
+        x, y = self.p(q)
+        d = vec(along).unit()
+        ux, uy = d.x, -d.y
+        px, py = -uy, ux
+        hw, hh = SLIDER_SIZE[0] / 2.0, SLIDER_SIZE[1] / 2.0
+        corners = tuple(
+            (x + ux * sx * hw + px * sy * hh, y + uy * sx * hw + py * sy * hh)
+            for sx, sy in ((-1, -1), (1, -1), (1, 1), (-1, 1))
+        )
+        self.sheet.add(Polyline(corners, "joint", closed=True, fill=True))
+        self.sheet.add(Polyline(corners, "link", closed=True))
+        self.sheet.add(CircleItem((x, y), JOINT_R, "joint", fill=True))
+
+    def arrow(self, a: PointLike, b: PointLike, role: str = "vector") -> None:
+        """A vector from a to b with a filled arrowhead at b."""
+        _arrow(self.sheet, self.p(a), self.p(b), role)
+
+    # -- dimensions ----------------------------------------------------------------------------
+    def dim_linear(
+        self, a: PointLike, b: PointLike, text: str, offset: float = 10.0, height: float = 3.5
+    ) -> None:
+        """An aligned dimension of segment ab, ``offset`` mm to the left of a → b on the paper
+        (negative: to the right), with horizontal text (ISO 129 unidirectional) beside the middle.
+        """
+        pa, pb = self.p(a), self.p(b)
+        length = _dist(pa, pb)
+        ux, uy = (pb[0] - pa[0]) / length, (pb[1] - pa[1]) / length
+        nx, ny = uy, -ux  # left of a → b on paper (y down)
+        da = (pa[0] + nx * offset, pa[1] + ny * offset)
+        db = (pb[0] + nx * offset, pb[1] + ny * offset)
+        s = math.copysign(1.0, offset)
+        for p0, p1 in ((pa, da), (pb, db)):
+            start = (p0[0] + nx * s * 1.0, p0[1] + ny * s * 1.0)
+            end = (p1[0] + nx * s * 2.0, p1[1] + ny * s * 2.0)
+            self.sheet.add(Polyline((start, end), "dimension"))
+        self.sheet.add(Polyline((da, db), "dimension"))
+        _head(self.sheet, db, (ux, uy), "dimension")
+        _head(self.sheet, da, (-ux, -uy), "dimension")
+
+        def along(t: float) -> XY:
+            return (da[0] + (db[0] - da[0]) * t, da[1] + (db[1] - da[1]) * t)
+
+        slide = tuple(along(t) for t in (0.4, 0.6, 0.3, 0.7, 0.2, 0.8))
+        self.d.label(along(0.5), text, height, prefer=(nx * s, ny * s), others=slide)
+
+    def dim_angle(
+        self,
+        vertex: PointLike,
+        p1: PointLike,
+        p2: PointLike,
+        text: str,
+        r_mm: float = 15.0,
+        height: float = 3.5,
+    ) -> None:
+        """The angle p1-vertex-p2 (the smaller one) as an arc of ``r_mm`` with two arrowheads."""
+        v = vec(vertex)
+        a1 = (vec(p1) - v).angle
+        a2 = (vec(p2) - v).angle
+        sweep = math.remainder(a2 - a1, 2.0 * math.pi)
+        start, sweep = (a1, sweep) if sweep > 0 else (a2, -sweep)
+        r = self.scale.model(r_mm)
+        arc = Arc(Circle(v, r), start, start + sweep)
+        self.arc(arc, "dimension")
+        c = self.p(v)
+        for ang, sgn in ((start, -1.0), (start + sweep, 1.0)):
+            tip = (c[0] + r_mm * math.cos(ang), c[1] - r_mm * math.sin(ang))
+            # the tangent on paper, pointing along the arc towards its end
+            tx, ty = -math.sin(ang) * sgn, -math.cos(ang) * sgn
+            _head(self.sheet, tip, (tx, ty), "dimension")
+
+        def on_arc(t: float) -> XY:
+            a = start + sweep * t
+            return (c[0] + r_mm * math.cos(a), c[1] - r_mm * math.sin(a))
+
+        mid = start + sweep / 2.0
+        others = tuple(on_arc(t) for t in (0.3, 0.7))
+        self.d.label(
+            on_arc(0.5), text, height, prefer=(math.cos(mid), -math.sin(mid)), others=others
+        )
+
+    # -- labels --------------------------------------------------------------------------------
+    def label(
+        self,
+        q: PointLike,
+        markup: str,
+        height: float = 3.5,
+        prefer: tuple[float, float] | None = None,
+        clear: float = JOINT_R,
+        id: str = "",
+    ) -> None:
+        """A label next to a model point; ``prefer`` is a model direction to try first."""
+        pref = None if prefer is None else (prefer[0], -prefer[1])
+        self.d.label(self.p(q), markup, height, pref, clear, id=id)
+
+
+def _head(sheet: Sheet, tip: XY, u: tuple[float, float], role: str) -> None:
+    """A filled arrowhead at ``tip`` pointing along the paper direction ``u``."""
+    ux, uy = u
+    bx, by = tip[0] - ux * ARROW_LEN, tip[1] - uy * ARROW_LEN
+    px, py = -uy * ARROW_HALF_WIDTH, ux * ARROW_HALF_WIDTH
+    sheet.add(Polyline((tip, (bx + px, by + py), (bx - px, by - py)), role, closed=True, fill=True))
+
+
+def _arrow(sheet: Sheet, a: XY, b: XY, role: str) -> None:
+    length = _dist(a, b)
+    if length <= 0.0:
+        return
+    ux, uy = (b[0] - a[0]) / length, (b[1] - a[1]) / length
+    end = (b[0] - ux * ARROW_LEN * 0.8, b[1] - uy * ARROW_LEN * 0.8) if length > ARROW_LEN else a
+    sheet.add(Polyline((a, end), role))
+    _head(sheet, b, (ux, uy), role)

@@ -1,0 +1,140 @@
+"""Scales: the factor k that maps a model quantity to sheet millimetres, and its printed label.
+
+TMM writes a drawing's scale as a factor: k_l (μ_l) in m/mm for the mechanism, k_v in (m/s)/mm for
+a velocity plan, k_a, k_F in N/mm. A mechanism's k_l is chosen so that the drawing's ratio is a
+GOST 2.302 scale (k_l = 0.005 m/mm is 1:5); plan factors are rounded to 1, 2, 2.5, 4 or 5 × 10^n.
+Some schools write the inverse (mm per unit): :class:`ScaleStyle` makes the symbol and the
+direction a setting.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from fractions import Fraction
+from typing import Literal
+
+from geomcad import tol
+from geomcad.errors import ParameterError
+
+Quantity = Literal["l", "v", "a", "F"]
+
+#: GOST 2.302 ratios (paper : nature), reductions and enlargements, as fractions.
+GOST_RATIOS: tuple[Fraction, ...] = tuple(
+    sorted(
+        {Fraction(1, n) for n in (1, 2, 4, 5, 10, 15, 20, 25, 40, 50, 75, 100, 200, 400, 500)}
+        | {Fraction(5, 2) ** -1, Fraction(5, 2)}
+        | {Fraction(n) for n in (2, 4, 5, 10, 20, 40, 50, 100)}
+    )
+)
+
+#: Mantissas of plan factors (DESIGN.md rule 6).
+NICE = (1.0, 2.0, 2.5, 4.0, 5.0)
+
+_UNITS = {
+    "ru": {"l": "м/мм", "v": "(м/с)/мм", "a": "(м/с²)/мм", "F": "Н/мм"},
+    "en": {"l": "m/mm", "v": "(m/s)/mm", "a": "(m/s²)/mm", "F": "N/mm"},
+}
+_INV_UNITS = {
+    "ru": {"l": "мм/м", "v": "мм/(м/с)", "a": "мм/(м/с²)", "F": "мм/Н"},
+    "en": {"l": "mm/m", "v": "mm/(m/s)", "a": "mm/(m/s²)", "F": "mm/N"},
+}
+
+
+@dataclass(frozen=True)
+class ScaleStyle:
+    """How a scale factor is printed: the symbol (``μ`` or ``k``), the direction, the language.
+
+    ``inverse`` prints mm per unit (1/k), as some schools do. Russian uses a decimal comma.
+    """
+
+    symbol: str = "μ"
+    inverse: bool = False
+    lang: Literal["ru", "en"] = "ru"
+
+
+def fmt_number(x: float, lang: str = "ru", digits: int = 6) -> str:
+    """A number for a sheet: up to ``digits`` significant digits, no trailing zeros, a decimal
+    comma in Russian, a typographic minus."""
+    if x == 0.0:
+        return "0"
+    s = f"{x:.{digits}g}"
+    if "e" in s:
+        mant, exp = s.split("e")
+        s = f"{mant}·10^{{{int(exp)}}}"
+    s = s.replace("-", "\u2013")
+    return s.replace(".", ",") if lang == "ru" else s
+
+
+@dataclass(frozen=True)
+class Scale:
+    """``k`` model units per sheet millimetre for quantity ``q`` (l, v, a or F)."""
+
+    k: float
+    q: Quantity = "l"
+
+    def __post_init__(self) -> None:
+        if not (self.k > 0.0 and math.isfinite(self.k)):
+            raise ParameterError(f"k_{self.q}", self.k, "a scale factor must be positive")
+
+    def mm(self, value: float) -> float:
+        """A model quantity as sheet millimetres."""
+        return value / self.k
+
+    def model(self, mm: float) -> float:
+        """Sheet millimetres as the model quantity."""
+        return mm * self.k
+
+    @property
+    def ratio(self) -> Fraction | None:
+        """The drawing's ratio paper : nature for a length scale (k in m/mm), when it is GOST."""
+        if self.q != "l":
+            return None
+        r = Fraction(1, 1000) / Fraction(self.k).limit_denominator(10**9)
+        for g in GOST_RATIOS:
+            if abs(float(g) - float(r)) <= tol.DERIVED * float(r):
+                return g
+        return None
+
+    def ratio_text(self) -> str:
+        """``1:5``, ``2:1``, ``1:2,5`` — GOST 2.302's way to write the ratio, or ``''``."""
+        r = self.ratio
+        if r is None:
+            return ""
+        if r >= 1:
+            return f"{fmt_number(float(r))}:1"
+        return f"1:{fmt_number(float(1 / r))}"
+
+    def label(self, style: ScaleStyle = ScaleStyle()) -> str:
+        """The factor as the subject writes it, as label markup: ``μ_l = 0,005 м/мм``."""
+        unit = (_INV_UNITS if style.inverse else _UNITS)[style.lang][self.q]
+        value = 1.0 / self.k if style.inverse else self.k
+        q = "V" if self.q == "v" and style.symbol == "μ" else self.q
+        return f"{style.symbol}_{q} = {fmt_number(value, style.lang)} {unit}"
+
+
+def gost_length_scale(extent_m: float, room_mm: float) -> Scale:
+    """The largest GOST 2.302 scale at which ``extent_m`` metres fit in ``room_mm`` millimetres."""
+    if not (extent_m > 0.0 and room_mm > 0.0):
+        raise ParameterError("extent", extent_m, "a drawing needs a positive size and room")
+    best: Fraction | None = None
+    for g in GOST_RATIOS:
+        if extent_m * 1000.0 * float(g) <= room_mm:
+            best = g
+    if best is None:
+        best = GOST_RATIOS[0]
+    return Scale(float(Fraction(1, 1000) / best), "l")
+
+
+def nice_factor(value_max: float, room_mm: float, q: Quantity) -> Scale:
+    """The smallest factor 1, 2, 2.5, 4 or 5 × 10^n at which ``value_max`` fits in ``room_mm``."""
+    if not (value_max > 0.0 and room_mm > 0.0):
+        raise ParameterError(f"k_{q}", value_max, "a plan needs a positive size and room")
+    raw = value_max / room_mm
+    e = math.floor(math.log10(raw))
+    for exp in (e, e + 1):
+        for m in NICE:
+            k = m * 10.0**exp
+            if k >= raw:
+                return Scale(k, q)
+    return Scale(10.0 ** (e + 2), q)  # unreachable: 10^(e+1) ≥ raw always

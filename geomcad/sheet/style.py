@@ -1,0 +1,141 @@
+"""Roles and their line styles (GOST 2.303 ≈ ISO 128-2), and dash patterns fitted to each line.
+
+Every item on a sheet has a role: what it is on the drawing. The role fixes its layer (one SVG
+group per role) and its line: weight as a multiple of the main line S, type (solid, dashed,
+dash-dot, two-dot), and whether closed shapes are filled.
+
+A dash-dot line must start and end with a dash, and a circle's centre must lie where two dashes
+cross; SVG's ``stroke-dasharray`` alone does not do that, so :func:`fit_open` and
+:func:`fit_closed` choose the dash length for each line's own length.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Literal
+
+from geomcad.sheet.model import Dash
+
+LineType = Literal["solid", "dashed", "dashdot", "twodot"]
+
+#: Main solid line S (mm) by format: 0.7 on A3/A4, 0.8 on A2, 1.0 on A1 and A0.
+MAIN_LINE = {"A4": 0.7, "A3": 0.7, "A2": 0.8, "A1": 1.0, "A0": 1.0}
+
+
+@dataclass(frozen=True, slots=True)
+class Style:
+    """A role's look: ``weight`` × S, the line type, the stroke colour and the fill of shapes."""
+
+    weight: float
+    line: LineType = "solid"
+    stroke: str = "#000000"
+    fill: str = "none"
+
+
+#: The roles, in drawing order (later layers are drawn on top).
+STYLES: dict[str, Style] = {
+    "ground": Style(1 / 3),  # hatching of the frame's supports
+    "construction": Style(1 / 3, stroke="#1f4e9c"),  # thin lines of the graphical solution
+    "locus": Style(1 / 3, "dashed", stroke="#1f4e9c"),  # a locus that gives no solution
+    "centre": Style(1 / 3, "dashdot"),  # axes, centre lines, paths
+    "extreme": Style(1 / 3, "twodot"),  # extreme positions of links
+    "dimension": Style(1 / 3, fill="#000000"),  # dimension and leader lines, their arrowheads
+    "result": Style(2 / 3, stroke="#b01c1c", fill="#b01c1c"),  # what the construction finds
+    "vector": Style(1 / 2, fill="#000000"),  # plan vectors and their arrowheads
+    "link": Style(1.0),  # links of the mechanism, main solid line
+    "joint": Style(1 / 2, fill="#ffffff"),  # revolute joints: circles over the links
+    "point": Style(1 / 3, fill="#000000"),  # marked points: small filled dots
+    "frame": Style(1.0),  # the frame and the title block's thick lines
+    "frame_thin": Style(1 / 3),  # the title block's thin lines
+    "label": Style(0.0, fill="#000000"),  # lettering on the drawing
+    "title": Style(0.0, fill="#000000"),  # lettering in the title block and tables
+}
+
+#: Dash parameters (mm): GOST 2.303 ranges, with the length we aim for inside each.
+DASHED = (2.0, 4.0, 8.0, 1.5)  # min, target, max dash; gap
+DASHDOT = (5.0, 12.0, 30.0, 1.5, 0.5)  # min, target, max dash; gap either side of the dot; dot
+TWODOT = (5.0, 12.0, 30.0, 1.3, 0.5)
+
+
+def style(role: str) -> Style:
+    """The style of a role; an unknown role is a programming error (``KeyError`` names it)."""
+    try:
+        return STYLES[role]
+    except KeyError:
+        raise KeyError(f"unknown sheet role {role!r}; roles are {', '.join(STYLES)}") from None
+
+
+def _gap_pattern(line: LineType) -> tuple[tuple[float, ...], float, float, float]:
+    """(the gap's own pattern between two dashes, its length, dash min, dash target)."""
+    if line == "dashed":
+        lo, target, _hi, gap = DASHED
+        return (gap,), gap, lo, target
+    lo, target, _hi, s, dot = DASHDOT if line == "dashdot" else TWODOT
+    dots = 1 if line == "dashdot" else 2
+    pat: tuple[float, ...] = (s,) + (dot, s) * dots
+    return pat, sum(pat), lo, target
+
+
+def fit_open(line: LineType, length: float) -> Dash | None:
+    """The dash pattern for an open line of ``length`` mm that starts and ends with a dash.
+
+    ``None`` for a solid line, or for a line too short to hold two dashes (drawn solid, as
+    GOST allows for short centre lines).
+    """
+    if line == "solid" or length <= 0.0:
+        return None
+    gap_pat, gap, lo, target = _gap_pattern(line)
+    n = max(1, round((length + gap) / (target + gap)))
+    while n > 1 and (length - (n - 1) * gap) / n < lo:
+        n -= 1
+    if n == 1:
+        return None
+    dash = (length - (n - 1) * gap) / n
+    return Dash((dash, *gap_pat))
+
+
+def fit_closed(line: LineType, length: float) -> Dash | None:
+    """The dash pattern for a closed line (a circle) of perimeter ``length`` mm.
+
+    A whole number of periods fits the perimeter, and the offset centres a gap on the start
+    point, so the pattern is symmetric about it.
+    """
+    if line == "solid" or length <= 0.0:
+        return None
+    gap_pat, gap, lo, target = _gap_pattern(line)
+    n = max(1, round(length / (target + gap)))
+    while n > 1 and length / n - gap < lo:
+        n -= 1
+    dash = length / n - gap
+    if n < 2 or dash < lo:
+        return None
+    return Dash((dash, *gap_pat), offset=dash + gap / 2.0)
+
+
+def fit_centre_line(line: LineType, half: float) -> Dash | None:
+    """The pattern for a centre line of length 2·``half`` whose middle falls inside a dash.
+
+    The two halves mirror each other: an odd number of dashes, the middle one centred on the
+    centre, so that two such lines cross at a dash (GOST 2.303).
+    """
+    d = fit_open(line, 2.0 * half)
+    if d is None:
+        return None
+    gap_pat, gap, lo, _target = _gap_pattern(line)
+    n = round((2.0 * half + gap) / (d.array[0] + gap))
+    if n % 2 == 0:
+        n -= 1
+    dash = (2.0 * half - (n - 1) * gap) / n if n >= 1 else 0.0
+    if n < 3 or dash < lo:
+        return None
+    return Dash((dash, *gap_pat))
+
+
+def arc_length(r: float, sweep: float) -> float:
+    """Length of an arc of radius ``r`` and angle ``sweep`` (rad)."""
+    return abs(r * sweep)
+
+
+def circle_length(r: float) -> float:
+    return 2.0 * math.pi * r

@@ -1,0 +1,159 @@
+"""Lettering: the pinned font's metrics, GOST cap heights, and labels with subscripts.
+
+The sheets use one font, osifont (ISO 3098 / GOST 2.304 style), shipped inside the package so
+that text metrics, and the golden sheets with them, are the same on every machine. Widths come
+from the font's own advance widths (fontTools), which match cairo's: cairo's text path applies no
+kerning. A cap height (GOST 2.304: 2.5, 3.5, 5, 7, 10, 14 mm) becomes a font size through the
+font's own cap-height/em.
+
+Label markup: ``O_1``, ``V_{B3B2}`` (subscript), ``x^2`` (superscript); ``\\_`` is a literal
+underscore. A character the font lacks is an error at drawing time, never an empty box.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import cache
+from importlib import resources
+from pathlib import Path
+
+from geomcad.sheet.model import Run, Shift
+
+FONT_FAMILY = "osifont"
+FONT_FILE = "osifont.ttf"
+
+#: GOST 2.304 cap heights (mm).
+HEIGHTS = (2.5, 3.5, 5.0, 7.0, 10.0, 14.0)
+
+#: Subscripts and superscripts are set at this fraction of the font size …
+SUB_SCALE = 0.7
+#: … and shifted by these fractions of the base font size (down for sub, up for sup).
+SUB_DROP = 0.25
+SUP_RISE = 0.45
+
+#: Characters osifont lacks, written with ones it has.
+SUBSTITUTE = {"\u2212": "\u2013", "\u2032": "'", "\u2033": '"', "\u2026": "..."}
+
+
+def font_path() -> Path:
+    """The shipped TTF file."""
+    return Path(str(resources.files("geomcad.fonts").joinpath(FONT_FILE)))
+
+
+@dataclass(frozen=True)
+class FontMetrics:
+    """Advance widths and the cap height of the pinned font, in em units."""
+
+    units_per_em: int
+    cap_height: int
+    ascent: int
+    descent: int
+    widths: dict[int, int]
+
+    def font_size(self, cap_height_mm: float) -> float:
+        """The em size (mm) whose capital letters are ``cap_height_mm`` tall."""
+        return cap_height_mm * self.units_per_em / self.cap_height
+
+    def advance(self, text: str, font_size: float) -> float:
+        """The advance width (mm) of ``text`` set at ``font_size`` mm; no kerning."""
+        missing = [c for c in text if ord(c) not in self.widths]
+        if missing:
+            raise ValueError(
+                f"the sheet font {FONT_FAMILY} has no glyph for {''.join(sorted(set(missing)))!r}"
+                f" in {text!r}: draw it as geometry or write it with other characters"
+            )
+        return sum(self.widths[ord(c)] for c in text) * font_size / self.units_per_em
+
+
+@cache
+def metrics() -> FontMetrics:
+    """The pinned font's metrics, read once."""
+    from fontTools.ttLib import TTFont
+
+    with TTFont(str(font_path()), lazy=True) as f:
+        cmap = f.getBestCmap()
+        hmtx = f["hmtx"]
+        widths = {code: int(hmtx[name][0]) for code, name in cmap.items()}
+        return FontMetrics(
+            units_per_em=int(f["head"].unitsPerEm),
+            cap_height=int(f["OS/2"].sCapHeight),
+            ascent=int(f["hhea"].ascent),
+            descent=int(f["hhea"].descent),
+            widths=widths,
+        )
+
+
+def parse(markup: str) -> tuple[Run, ...]:
+    """Split label markup into runs: ``V_{B3B2}`` → V, B3B2 (sub); ``O_1`` → O, 1 (sub)."""
+    runs: list[Run] = []
+    buf: list[str] = []
+    i = 0
+
+    def flush(shift: Shift = "base") -> None:
+        if buf:
+            runs.append(Run("".join(buf), shift))
+            buf.clear()
+
+    while i < len(markup):
+        ch = markup[i]
+        if ch == "\\" and i + 1 < len(markup):
+            buf.append(markup[i + 1])
+            i += 2
+            continue
+        if ch in "_^" and i + 1 < len(markup):
+            flush()
+            shift: Shift = "sub" if ch == "_" else "sup"
+            if markup[i + 1] == "{":
+                end = markup.find("}", i + 2)
+                if end < 0:
+                    raise ValueError(f"unclosed brace in label {markup!r}")
+                buf.extend(markup[i + 2 : end])
+                i = end + 1
+            else:
+                buf.append(markup[i + 1])
+                i += 2
+            flush(shift)
+            continue
+        buf.append(SUBSTITUTE.get(ch, ch))
+        i += 1
+    flush()
+    return tuple(_merge(runs))
+
+
+def _merge(runs: list[Run]) -> list[Run]:
+    out: list[Run] = []
+    for r in runs:
+        text = "".join(SUBSTITUTE.get(c, c) for c in r.text)
+        if out and out[-1].shift == r.shift:
+            out[-1] = Run(out[-1].text + text, r.shift)
+        else:
+            out.append(Run(text, r.shift))
+    return out
+
+
+def run_size(font_size: float, shift: Shift) -> float:
+    """The font size of a run: smaller for a subscript or a superscript."""
+    return font_size if shift == "base" else font_size * SUB_SCALE
+
+
+def width(runs: tuple[Run, ...], font_size: float) -> float:
+    """The advance width (mm) of a label's runs at ``font_size``."""
+    m = metrics()
+    return sum(m.advance(r.text, run_size(font_size, r.shift)) for r in runs)
+
+
+def box(runs: tuple[Run, ...], cap_height: float) -> tuple[float, float, float]:
+    """(width, height above the baseline, depth below it) of a label, in mm.
+
+    The height is the cap height (plus a superscript's rise); the depth covers a subscript.
+    """
+    fs = metrics().font_size(cap_height)
+    w = width(runs, fs)
+    up = cap_height
+    down = 0.0
+    for r in runs:
+        if r.shift == "sub":
+            down = max(down, SUB_DROP * fs)
+        elif r.shift == "sup":
+            up = max(up, SUP_RISE * fs + cap_height * SUB_SCALE)
+    return w, up, down

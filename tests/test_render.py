@@ -1,0 +1,518 @@
+"""The render layer: SVG structure and byte stability, PDF/PNG through cairosvg, the pinned font in
+both renderers, and the atomic file writer."""
+
+from __future__ import annotations
+
+import io
+import math
+import os
+import re
+import shutil
+import subprocess
+import xml.etree.ElementTree as ET
+from collections.abc import Callable
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from geomcad.errors import GeomcadError, MissingDependency, ParameterError
+from geomcad.render import FORMATS, raster, svg, to_pdf, to_png, to_svg, write_sheets
+from geomcad.sheet.model import ArcItem, CircleItem, Polyline, Sheet, TextItem
+from geomcad.sheet.style import MAIN_LINE, STYLES, circle_length, fit_closed, style
+from geomcad.sheet.text import SUB_DROP, font_path, metrics, parse, run_size, width
+
+SVG_NS = "{http://www.w3.org/2000/svg}"
+INK_NS = "{http://www.inkscape.org/namespaces/inkscape}"
+MM_PER_PT = 25.4 / 72.0
+LABEL = "V_{B3B2} План скоростей"
+
+
+def label(markup: str, at: tuple[float, float], cap: float = 5.0, tid: str = "") -> TextItem:
+    runs = parse(markup)
+    fs = metrics().font_size(cap)
+    return TextItem(at, runs, cap, fs, width(runs, fs), "label", id=tid)
+
+
+def sample_sheet() -> Sheet:
+    s = Sheet(width=420, height=297, format="A3", title="t")
+    s.add(Polyline(((10.0, 10.0), (100.0, 10.0), (100.0, 50.0)), "link"))
+    s.add(label(LABEL, (50.0, 150.0), tid="label V_B3B2"))
+    s.add(Polyline(((110.0, 10.0), (120.0, 12.0), (110.0, 14.0)), "vector", closed=True, fill=True))
+    s.add(CircleItem((200.0, 100.0), 30.0, "centre", dash=fit_closed("dashdot", circle_length(30))))
+    s.add(ArcItem((200.0, 200.0), 20.0, (220.0, 200.0), (200.0, 220.0), math.pi / 2, "link"))
+    s.add(label("O_1 μ_V = 0,02 (м/с)/мм", (50.0, 170.0), cap=3.5, tid="label V_B3B2"))
+    s.add(CircleItem((100.0, 50.0), 1.5, "joint", fill=True))
+    return s
+
+
+def parse_svg(text: str) -> ET.Element:
+    return ET.fromstring(text.encode("utf-8"))
+
+
+# --- SVG -------------------------------------------------------------------------------------
+
+
+def test_svg_is_byte_stable() -> None:
+    a = to_svg(sample_sheet())
+    b = to_svg(sample_sheet())
+    assert a == b
+    assert "-0," not in a and '"-0"' not in a and " -0 " not in a
+
+
+def test_svg_root_is_in_paper_millimetres() -> None:
+    root = parse_svg(to_svg(sample_sheet()))
+    assert root.tag == f"{SVG_NS}svg"
+    assert root.get("width") == "420mm"
+    assert root.get("height") == "297mm"
+    assert root.get("viewBox") == "0 0 420 297"
+
+
+def test_every_inner_length_is_a_plain_number() -> None:
+    text = to_svg(sample_sheet())
+    assert text.count('"420mm"') == 1 and text.count('"297mm"') == 1
+    body = text.replace('width="420mm"', "").replace('height="297mm"', "")
+    values = re.findall(r'="([^"]*)"', body)
+    assert len(values) > 40
+    for v in values:
+        assert not re.search(r"\d\s*(mm|%|px|pt|cm|in|em)\b", v), v
+    assert "%" not in body
+
+
+def test_numbers_are_fixed_decimals_and_never_negative_zero() -> None:
+    assert svg.num(1.0) == "1"
+    assert svg.num(-0.0001) == "0"
+    assert svg.num(2.5) == "2.5"
+    assert svg.num(1 / 3) == "0.333"
+    assert svg.num(-12.34567) == "-12.346"
+    with pytest.raises(ValueError, match="non-finite"):
+        svg.num(math.nan)
+
+
+def test_one_group_per_role_in_styles_order_with_the_role_style() -> None:
+    sheet = sample_sheet()
+    root = parse_svg(to_svg(sheet))
+    groups = root.findall(f"{SVG_NS}g")
+    roles = [g.get(f"{INK_NS}label") for g in groups]
+    used = {i.role for i in sheet.items}
+    assert roles == [r for r in STYLES if r in used]
+    assert roles == ["centre", "vector", "link", "joint", "label"]
+    s = MAIN_LINE["A3"]
+    for g in groups:
+        role = g.get(f"{INK_NS}label")
+        assert role is not None
+        st = style(role)
+        assert g.get("id") == f"layer-{role}"
+        assert g.get(f"{INK_NS}groupmode") == "layer"
+        assert g.get("fill") == "none"
+        if st.weight > 0:
+            assert g.get("stroke") == st.stroke
+            assert float(g.get("stroke-width", "nan")) == pytest.approx(st.weight * s, abs=5e-4)
+            assert g.get("stroke-linecap") == "round"
+            assert g.get("stroke-linejoin") == "round"
+        else:
+            assert g.get("stroke") == "none"
+    link = groups[roles.index("link")]
+    # items keep the sheet's order inside their layer
+    assert [c.tag.removeprefix(SVG_NS) for c in link] == ["polyline", "path"]
+    assert link.get("stroke-width") == "0.7"
+
+
+def test_unknown_format_uses_default_main_line() -> None:
+    sheet = Sheet(width=100, height=50, format="B5", title="")
+    sheet.add(Polyline(((0.0, 0.0), (10.0, 0.0)), "link"))
+    root = parse_svg(to_svg(sheet))
+    g = root.find(f"{SVG_NS}g")
+    assert g is not None and g.get("stroke-width") == "0.7"
+    assert root.get("width") == "100mm" and root.get("viewBox") == "0 0 100 50"
+
+
+def test_shapes_fill_dash_and_arc_flags() -> None:
+    root = parse_svg(to_svg(sample_sheet()))
+    polygon = root.find(f".//{SVG_NS}polygon")
+    assert polygon is not None
+    assert polygon.get("fill") == "#000000"
+    assert polygon.get("points") == "110,10 120,12 110,14"
+    circle = root.find(f".//{SVG_NS}g[@id='layer-centre']/{SVG_NS}circle")
+    assert circle is not None
+    dash = fit_closed("dashdot", circle_length(30))
+    assert dash is not None
+    assert [float(v) for v in circle.get("stroke-dasharray", "").split()] == pytest.approx(
+        dash.array, abs=5e-4
+    )
+    assert float(circle.get("stroke-dashoffset", "nan")) == pytest.approx(dash.offset, abs=5e-4)
+    assert circle.get("fill") is None
+    joint = root.find(f".//{SVG_NS}g[@id='layer-joint']/{SVG_NS}circle")
+    assert joint is not None and joint.get("fill") == STYLES["joint"].fill
+    path = root.find(f".//{SVG_NS}path")
+    assert path is not None
+    assert path.get("d") == "M220,200 A20,20 0 0 1 200,220"
+
+
+def test_arc_sweep_direction_and_large_arcs() -> None:
+    ccw = ArcItem((0.0, 0.0), 10.0, (10.0, 0.0), (0.0, -10.0), -math.pi / 2, "link")
+    assert svg._arc_path(ccw) == "M10,0 A10,10 0 0 0 0,-10"
+    # three quarters clockwise: two halves through the midpoint (at 135° in y-down paper terms)
+    big = ArcItem((0.0, 0.0), 10.0, (10.0, 0.0), (0.0, -10.0), 1.5 * math.pi, "link")
+    d = svg._arc_path(big)
+    assert d == "M10,0 A10,10 0 0 1 -7.071,7.071 A10,10 0 0 1 0,-10"
+    full = ArcItem((0.0, 0.0), 10.0, (10.0, 0.0), (10.0, 0.0), 2 * math.pi, "link")
+    assert svg._arc_path(full) == "M10,0 A10,10 0 0 1 -10,0 A10,10 0 0 1 10,0"
+
+
+def test_tspans_have_absolute_positions_from_the_font_metrics() -> None:
+    sheet = Sheet(width=420, height=297, format="A3", title="t")
+    item = label(LABEL, (50.0, 150.0))
+    sheet.add(item)
+    root = parse_svg(to_svg(sheet))
+    text = root.find(f".//{SVG_NS}text")
+    assert text is not None
+    assert text.get("font-family") == "osifont"
+    assert text.get("{http://www.w3.org/XML/1998/namespace}space") == "preserve"
+    assert text.get("stroke") == "none"
+    assert text.get("text-anchor") in (None, "start")
+    spans = list(text)
+    assert (
+        [s.text for s in spans] == [r.text for r in item.runs] == ["V", "B3B2", " План скоростей"]
+    )
+    m = metrics()
+    x = 50.0
+    for span, run in zip(spans, item.runs, strict=True):
+        size = run_size(item.font_size, run.shift)
+        assert float(span.get("x", "nan")) == pytest.approx(x, abs=5e-4)
+        y = 150.0 + (SUB_DROP * item.font_size if run.shift == "sub" else 0.0)
+        assert float(span.get("y", "nan")) == pytest.approx(y, abs=5e-4)
+        assert float(span.get("font-size", "nan")) == pytest.approx(size, abs=5e-4)
+        x += m.advance(run.text, size)
+    assert x - 50.0 == pytest.approx(item.width)
+    # no whitespace between tspans (pretty printing would insert visible spaces)
+    assert "</tspan><tspan" in to_svg(sheet)
+
+
+def test_text_ids_are_valid_and_unique() -> None:
+    root = parse_svg(to_svg(sample_sheet()))
+    ids = [t.get("id") for t in root.iter(f"{SVG_NS}text")]
+    assert ids == ["label_V_B3B2", "label_V_B3B2-2"]
+    assert svg.xml_id("1 План") == "t-1_План"
+    assert svg.xml_id("a/b:c") == "a_b_c"
+    assert svg.xml_id("") == "t-"
+    all_ids = [e.get("id") for e in root.iter() if e.get("id")]
+    assert len(all_ids) == len(set(all_ids))
+
+
+def test_result_label_takes_the_role_colour_without_outline() -> None:
+    sheet = Sheet(width=100, height=100, format="A4", title="")
+    runs = parse("B_0")
+    fs = metrics().font_size(3.5)
+    sheet.add(TextItem((5.0, 5.0), runs, 3.5, fs, width(runs, fs), "result"))
+    text = parse_svg(to_svg(sheet)).find(f".//{SVG_NS}text")
+    assert text is not None
+    assert text.get("fill") == STYLES["result"].fill
+    assert text.get("stroke") == "none"
+
+
+def test_unknown_role_is_refused() -> None:
+    sheet = Sheet(width=100, height=100, format="A4", title="")
+    sheet.add(Polyline(((0.0, 0.0), (1.0, 1.0)), "nonsense"))
+    with pytest.raises(KeyError, match="nonsense"):
+        to_svg(sheet)
+
+
+# --- PDF and PNG -----------------------------------------------------------------------------
+
+
+def text_sheet() -> Sheet:
+    sheet = Sheet(width=420, height=297, format="A3", title="t")
+    sheet.add(label(LABEL, (40.0, 100.0), cap=10.0))
+    sheet.add(label("Пров. Т.контр. № 5 ⌀20 ±0,1", (40.0, 160.0), cap=7.0))
+    return sheet
+
+
+def test_pdf_page_size_text_and_embedded_font() -> None:
+    from pypdf import PdfReader
+    from pypdf.generic import DictionaryObject
+
+    pdf = to_pdf(to_svg(text_sheet()))
+    reader = PdfReader(io.BytesIO(pdf))
+    assert len(reader.pages) == 1
+    page = reader.pages[0]
+    assert float(page.mediabox.width) == pytest.approx(420 / MM_PER_PT, abs=0.01)
+    assert float(page.mediabox.height) == pytest.approx(297 / MM_PER_PT, abs=0.01)
+    assert float(page.mediabox.width) == pytest.approx(1190.55, abs=0.01)
+    assert float(page.mediabox.height) == pytest.approx(841.89, abs=0.01)
+    text = page.extract_text()
+    for word in ("План", "скоростей", "Пров", "контр"):
+        assert word in text
+    resources = page["/Resources"].get_object()
+    assert isinstance(resources, DictionaryObject)
+    fonts = resources["/Font"].get_object()
+    assert isinstance(fonts, DictionaryObject)
+    names = []
+    for ref in fonts.values():
+        font = ref.get_object()
+        assert isinstance(font, DictionaryObject)
+        names.append(str(font["/BaseFont"]))
+    assert names and all("osifont" in n.lower() for n in names), names
+
+
+def test_png_decodes_at_the_expected_size() -> None:
+    from PIL import Image
+
+    png = to_png(to_svg(sample_sheet()), dpi=100)
+    img = Image.open(io.BytesIO(png))
+    assert img.format == "PNG"
+    assert img.size == (round(420 / 25.4 * 100), round(297 / 25.4 * 100))
+    gray = np.asarray(img.convert("L"))
+    assert gray.min() < 64 and gray.max() == 255  # ink on a white page
+
+
+def test_fontconfig_file_finds_the_shipped_font() -> None:
+    if shutil.which("fc-match") is None:
+        pytest.skip("fc-match (fontconfig) is not installed")
+    conf = raster.fonts_conf()
+    assert conf.is_file()
+    env = {**os.environ, "FONTCONFIG_FILE": str(conf)}
+    out = subprocess.run(
+        ["fc-match", "-f", "%{file}", "osifont"],
+        env=env,
+        capture_output=True,
+        text=True,
+        check=True,
+    )
+    assert Path(out.stdout).resolve() == (conf.parent / "osifont.ttf").resolve()
+
+
+def _rsvg(svg_text: str, tmp_path: Path, dpi: int) -> np.ndarray:
+    from PIL import Image
+
+    src = tmp_path / "in.svg"
+    src.write_text(svg_text, encoding="utf-8")
+    dst = tmp_path / "rsvg.png"
+    env = {**os.environ, "FONTCONFIG_FILE": str(raster.fonts_conf())}
+    subprocess.run(
+        ["rsvg-convert", "-d", str(dpi), "-p", str(dpi), "-b", "white", "-o", str(dst), str(src)],
+        env=env,
+        check=True,
+    )
+    return np.asarray(Image.open(dst).convert("L"), dtype=float)
+
+
+def _cairo(svg_text: str, dpi: int) -> np.ndarray:
+    from PIL import Image
+
+    return np.asarray(Image.open(io.BytesIO(to_png(svg_text, dpi=dpi))).convert("L"), dtype=float)
+
+
+def _ink_box(img: np.ndarray) -> tuple[int, int, int, int]:
+    ys, xs = np.nonzero(img < 128)
+    assert len(xs) > 0, "no ink"
+    return int(xs.min()), int(ys.min()), int(xs.max()), int(ys.max())
+
+
+@pytest.mark.skipif(shutil.which("rsvg-convert") is None, reason="rsvg-convert is not installed")
+@pytest.mark.parametrize("make", [sample_sheet, text_sheet], ids=["mixed", "text"])
+def test_cairosvg_and_rsvg_agree(make: Callable[[], Sheet], tmp_path: Path) -> None:
+    dpi = 100
+    text = to_svg(make())
+    a = _cairo(text, dpi)
+    b = _rsvg(text, tmp_path, dpi)
+    # cairo rounds the page to whole pixels, rsvg rounds up: compare the common area
+    assert abs(a.shape[0] - b.shape[0]) <= 1 and abs(a.shape[1] - b.shape[1]) <= 1
+    h, w = min(a.shape[0], b.shape[0]), min(a.shape[1], b.shape[1])
+    a, b = a[:h, :w], b[:h, :w]
+    assert float(np.mean(np.abs(a - b))) < 1.0  # grey levels out of 255, page mean
+    px_mm = 25.4 / dpi
+    box_a, box_b = _ink_box(a), _ink_box(b)
+    # a one-pixel edge at 100 dpi is 0.254 mm; allow 0.2 mm plus antialiasing's pixel
+    tol_px = 0.2 / px_mm + 1
+    for ea, eb in zip(box_a, box_b, strict=True):
+        assert abs(ea - eb) <= tol_px, (box_a, box_b)
+
+
+def _glyph_ink_box(text: str, at: tuple[float, float], font_size: float) -> tuple[float, ...]:
+    """The ink box (mm) of ``text`` set in the shipped font: (left, top, right, bottom)."""
+    from fontTools.ttLib import TTFont
+
+    with TTFont(str(font_path())) as f:
+        glyf, cmap, upm = f["glyf"], f.getBestCmap(), f["head"].unitsPerEm
+        k = font_size / upm
+        x, boxes = at[0], []
+        for ch in text:
+            g = glyf[cmap[ord(ch)]]
+            if g.numberOfContours:
+                boxes.append(
+                    (x + g.xMin * k, at[1] - g.yMax * k, x + g.xMax * k, at[1] - g.yMin * k)
+                )
+            x += metrics().advance(ch, font_size)
+    return (
+        min(b[0] for b in boxes),
+        min(b[1] for b in boxes),
+        max(b[2] for b in boxes),
+        max(b[3] for b in boxes),
+    )
+
+
+@pytest.mark.skipif(shutil.which("rsvg-convert") is None, reason="rsvg-convert is not installed")
+def test_text_ink_in_both_renderers_is_where_the_shipped_font_puts_it(tmp_path: Path) -> None:
+    """Both renderers set a text-only sheet in osifont, where the metrics placed it (0.2 mm).
+
+    Another font (a fallback) would move the ink's edges by far more than that.
+    """
+    dpi = 200
+    px_mm = 25.4 / dpi
+    sheet = Sheet(width=120, height=40, format="A4", title="")
+    item = label("НЕ ПЛАН", (10.0, 25.0), cap=10.0)
+    sheet.add(item)
+    text = to_svg(sheet)
+    expected = _glyph_ink_box(item.text, item.at, item.font_size)
+    boxes = []
+    for img in (_cairo(text, dpi), _rsvg(text, tmp_path, dpi)):
+        x0, y0, x1, y1 = _ink_box(img)
+        box = (x0 * px_mm, y0 * px_mm, (x1 + 1) * px_mm, (y1 + 1) * px_mm)
+        boxes.append(box)
+        for got, want in zip(box, expected, strict=True):
+            assert got == pytest.approx(want, abs=0.2 + px_mm), (box, expected)
+    for a, b in zip(*boxes, strict=True):
+        assert a == pytest.approx(b, abs=0.2), boxes
+
+
+# --- files -----------------------------------------------------------------------------------
+
+
+def test_write_sheets_writes_all_formats(tmp_path: Path) -> None:
+    out = tmp_path / "new" / "dir"
+    sheets = [("", sample_sheet()), ("plan", text_sheet())]
+    paths = write_sheets("2013-6", sheets, out)
+    names = [p.name for p in paths]
+    assert names == [
+        "2013-6.svg",
+        "2013-6-plan.svg",
+        "2013-6.pdf",
+        "2013-6-plan.pdf",
+        "2013-6.png",
+        "2013-6-plan.png",
+    ]
+    assert sorted(p.name for p in out.iterdir()) == sorted(names)
+    assert (out / "2013-6.svg").read_text(encoding="utf-8") == to_svg(sample_sheet())
+    assert (out / "2013-6.pdf").read_bytes().startswith(b"%PDF")
+    assert (out / "2013-6-plan.png").read_bytes().startswith(b"\x89PNG")
+    assert FORMATS == ("svg", "pdf", "png")
+
+
+def test_write_sheets_svg_only_needs_no_cairo(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    def boom() -> None:
+        raise AssertionError("cairosvg must not be imported for SVG output")
+
+    monkeypatch.setattr(raster, "_cairosvg", boom)
+    paths = write_sheets("p", [("", sample_sheet())], tmp_path, formats=["svg"])
+    assert paths == [tmp_path / "p.svg"]
+
+
+def test_failure_mid_write_leaves_no_partial_or_temp_file(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    (tmp_path / "p.pdf").write_bytes(b"old pdf")
+    calls = {"n": 0}
+    real_replace = os.replace
+
+    def flaky_replace(src: str | os.PathLike[str], dst: str | os.PathLike[str]) -> None:
+        calls["n"] += 1
+        if calls["n"] == 3:  # the first PDF: after both SVGs
+            raise OSError("disk full")
+        real_replace(src, dst)
+
+    monkeypatch.setattr("geomcad.render.files.os.replace", flaky_replace)
+    sheets = [("", sample_sheet()), ("b", text_sheet())]
+    with pytest.raises(OSError, match="disk full"):
+        write_sheets("p", sheets, tmp_path)
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["p-b.svg", "p.pdf", "p.svg"]
+    assert (tmp_path / "p.pdf").read_bytes() == b"old pdf"
+
+
+def test_failure_while_writing_data_removes_the_temp_file(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    def bad_fsync(fd: int) -> None:
+        raise OSError("I/O error")
+
+    monkeypatch.setattr("geomcad.render.files.os.fsync", bad_fsync)
+    with pytest.raises(OSError, match="I/O error"):
+        write_sheets("p", [("", sample_sheet())], tmp_path, formats=["svg"])
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_a_sheet_that_cannot_be_drawn_writes_nothing(tmp_path: Path) -> None:
+    bad = Sheet(width=100, height=100, format="A4", title="")
+    bad.add(Polyline(((0.0, math.inf), (1.0, 1.0)), "link"))
+    with pytest.raises(ValueError, match="non-finite"):
+        write_sheets("p", [("", sample_sheet()), ("bad", bad)], tmp_path)
+    assert list(tmp_path.iterdir()) == []
+
+
+@pytest.mark.parametrize(
+    ("pid", "name", "param"),
+    [
+        ("../x", "", "id"),
+        ("a/b", "", "id"),
+        ("a\\b", "", "id"),
+        ("..", "", "id"),
+        ("", "", "id"),
+        ("p", "../x", "sheet name"),
+        ("p", "sub/plan", "sheet name"),
+    ],
+)
+def test_names_that_leave_the_directory_are_refused(
+    tmp_path: Path, pid: str, name: str, param: str
+) -> None:
+    out = tmp_path / "out"
+    with pytest.raises(ParameterError) as info:
+        write_sheets(pid, [(name, sample_sheet())], out, formats=["svg"])
+    assert info.value.name == param
+    assert isinstance(info.value, GeomcadError)
+    assert not out.exists()
+
+
+def test_duplicate_sheet_names_are_refused(tmp_path: Path) -> None:
+    with pytest.raises(ParameterError, match="share"):
+        write_sheets("p", [("a", sample_sheet()), ("a", sample_sheet())], tmp_path)
+
+
+def test_unknown_format_names_the_option_and_the_choices(tmp_path: Path) -> None:
+    with pytest.raises(ParameterError) as info:
+        write_sheets("p", [("", sample_sheet())], tmp_path, formats=["svg", "dxf"])
+    msg = str(info.value)
+    assert info.value.name == "--format"
+    assert "'dxf'" in msg and "svg, pdf, png" in msg
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_missing_libcairo_is_one_line_and_svgs_are_still_written(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    import builtins
+
+    real_import = builtins.__import__
+
+    def no_cairo(name: str, *args: object, **kwargs: object) -> object:
+        if name == "cairosvg" or name.startswith("cairocffi"):
+            raise OSError('no library called "cairo-2" was found')
+        return real_import(name, *args, **kwargs)  # type: ignore[arg-type]
+
+    monkeypatch.delitem(__import__("sys").modules, "cairosvg", raising=False)
+    monkeypatch.setattr(builtins, "__import__", no_cairo)
+    sheets = [("", sample_sheet()), ("b", text_sheet())]
+    with pytest.raises(MissingDependency) as info:
+        write_sheets("p", sheets, tmp_path)
+    msg = str(info.value)
+    assert "\n" not in msg
+    assert "apt-get install libcairo2" in msg and "SVG" in msg
+    assert isinstance(info.value.__cause__, OSError)
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["p-b.svg", "p.svg"]
+
+
+def test_missing_cairosvg_package_is_missing_dependency(monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setitem(__import__("sys").modules, "cairosvg", None)  # import raises ImportError
+    with pytest.raises(MissingDependency, match="libcairo2"):
+        to_pdf(to_svg(sample_sheet()))
