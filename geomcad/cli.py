@@ -1,0 +1,433 @@
+"""The ``geomcad`` command line (the interface of problems.md).
+
+    geomcad list
+    geomcad solve ID [--set NAME=VALUE ...] [--json] [--trace]
+    geomcad build [ID ...] [--out DIR] [--format svg,pdf,png]
+    geomcad verify ID --measured NAME=VALUE ... [--set NAME=VALUE ...] [--scale K] [--json]
+
+Exit status: 0 done (and, for ``verify``, every measurement within precision), 1 a measurement
+out of precision, 2 bad input. Bad input prints nothing on stdout and exactly one line on stderr,
+``error: ...``, naming the parameter or the construction step (prefixed with the problem id).
+"""
+
+from __future__ import annotations
+
+import argparse
+import contextlib
+import json
+import math
+import os
+import sys
+from collections.abc import Sequence
+from pathlib import Path
+from typing import IO, TYPE_CHECKING, Any, NoReturn
+
+import geomcad
+from geomcad import registry
+from geomcad.errors import GeomcadError, MissingDependency, ParameterError, UnknownProblem
+
+if TYPE_CHECKING:
+    from geomcad.problem import ParamValue, Problem, Solution
+    from geomcad.verify import Item, Report
+
+FORMATS = ("svg", "pdf", "png")
+
+EXIT_OK = 0
+EXIT_OUT_OF_PRECISION = 1
+EXIT_BAD_INPUT = 2
+
+
+class _UsageError(Exception):
+    """A command line argparse rejects; reported as one ``error:`` line."""
+
+
+class _Failed(Exception):
+    """Bad input, already worded as the text of the ``error:`` line."""
+
+
+class _Parser(argparse.ArgumentParser):
+    # argparse's own error() prints the usage and exits; the interface wants one line
+    def error(self, message: str) -> NoReturn:
+        raise _UsageError(f"{self.prog}: {message}")
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    """Run the command line ``argv`` (default ``sys.argv[1:]``); return the exit status."""
+    args = list(sys.argv[1:] if argv is None else argv)
+    try:
+        ns = _parser().parse_args(args)
+    except _UsageError as exc:
+        return _fail(str(exc))
+    except SystemExit as exc:  # --help
+        return exc.code if isinstance(exc.code, int) else EXIT_OK
+    pid: str | None = getattr(ns, "id", None)
+    try:
+        status: int = ns.func(ns)
+    except (_Failed, _UsageError) as exc:
+        return _fail(str(exc))
+    except UnknownProblem as exc:
+        return _fail(str(exc))
+    except GeomcadError as exc:
+        return _fail(_prefixed(pid, exc))
+    except BrokenPipeError:
+        # the reader (e.g. `| head`) went away; keep the interpreter's last flush quiet too
+        with contextlib.suppress(OSError, ValueError):
+            os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        return EXIT_OK
+    return status
+
+
+def _parser() -> _Parser:
+    p = _Parser(
+        prog="geomcad",
+        description="Theory of Machines and Mechanisms by exact graphical constructions.",
+    )
+    sub = p.add_subparsers(dest="command", required=True, metavar="command")
+
+    s = sub.add_parser("list", help="ids and titles of the registered problems")
+    s.set_defaults(func=_cmd_list)
+
+    s = sub.add_parser("solve", help="solve a problem and compare with the seed")
+    s.add_argument("id", help="problem id, e.g. 2013-6")
+    _add_set(s)
+    s.add_argument("--json", action="store_true", help="print one JSON object")
+    s.add_argument("--trace", action="store_true", help="print the construction protocol")
+    s.set_defaults(func=_cmd_solve)
+
+    s = sub.add_parser("build", help="draw the sheets of problems")
+    s.add_argument("ids", nargs="*", metavar="ID", help="problem ids (default: every id)")
+    s.add_argument("--out", default="out", help="output folder (default: out)")
+    s.add_argument(
+        "--format", default=",".join(FORMATS), help="comma-separated svg,pdf,png (default: all)"
+    )
+    s.set_defaults(func=_cmd_build)
+
+    s = sub.add_parser("verify", help="compare measurements off a drawing with the exact values")
+    s.add_argument("id", help="problem id, e.g. 2013-6")
+    s.add_argument(
+        "--measured",
+        action="append",
+        required=True,
+        metavar="NAME=VALUE",
+        help="a result in SI units, NAME_mm=VALUE for a length in sheet mm, NAME.INDEX for an item",
+    )
+    _add_set(s)
+    s.add_argument("--scale", metavar="K", help="k_l in m/mm for NAME_mm readings")
+    s.add_argument("--json", action="store_true", help="print one JSON object")
+    s.set_defaults(func=_cmd_verify)
+    return p
+
+
+def _add_set(s: argparse.ArgumentParser) -> None:
+    s.add_argument(
+        "--set",
+        action="append",
+        default=[],
+        metavar="NAME=VALUE",
+        help="a parameter in SI units (angles *_deg in degrees), or one of its choices",
+    )
+
+
+# --- commands ---------------------------------------------------------------------------------
+
+
+def _cmd_list(ns: argparse.Namespace) -> int:
+    ids = registry.problem_ids()
+    width = max((len(i) for i in ids), default=0)
+    lines = [f"{pid:<{width}}  {registry.get(pid).title}" for pid in ids]
+    _write(sys.stdout, "".join(line + "\n" for line in lines))
+    return EXIT_OK
+
+
+def _cmd_solve(ns: argparse.Namespace) -> int:
+    sol = _solve(ns.id, ns.set)
+    if ns.json:
+        text = _dumps(sol.to_json()) + "\n"
+        trace = sol.trace().rstrip("\n") + "\n" if ns.trace else ""
+        _write(sys.stdout, text)
+        if trace:
+            _write(sys.stderr, trace)
+        return EXIT_OK
+    text = _solve_report(sol)
+    if ns.trace:
+        text += "\nconstruction protocol:\n" + sol.trace().rstrip("\n") + "\n"
+    _write(sys.stdout, text)
+    return EXIT_OK
+
+
+def _cmd_build(ns: argparse.Namespace) -> int:
+    ids: list[str] = list(ns.ids) or registry.problem_ids()
+    if not ids:
+        raise _Failed("no problems are registered (is geomcad installed with pip install .?)")
+    formats = _formats(ns.format)
+    for pid in ids:
+        registry.get(pid)  # an unknown id fails before anything is written
+    # solve and draw everything first, so that bad input writes no file and prints nothing
+    prepared: list[tuple[str, Any]] = []
+    for pid in ids:
+        try:
+            prepared.append((pid, geomcad.solve(pid).sheets()))
+        except GeomcadError as exc:
+            raise _Failed(_prefixed(pid, exc)) from exc
+
+    from geomcad.render import write_sheets
+
+    out = Path(ns.out)
+    missing: MissingDependency | None = None
+    try:
+        out.mkdir(parents=True, exist_ok=True)
+        for pid, sheets in prepared:
+            if missing is None:
+                try:
+                    paths = write_sheets(pid, sheets, out, formats)
+                except MissingDependency as exc:
+                    # the SVGs are written; write them again to learn their names
+                    missing = exc
+                    paths = write_sheets(pid, sheets, out, ["svg"])
+            else:
+                paths = write_sheets(pid, sheets, out, ["svg"])
+            _write(sys.stdout, "".join(f"{p}\n" for p in paths))
+    except OSError as exc:
+        raise _Failed(f"cannot write to {out}: {exc.strerror or exc}") from exc
+    if missing is not None:
+        _write(sys.stderr, _error_line(f"{_one_line(str(missing))} (only the SVGs were written)"))
+        return EXIT_BAD_INPUT
+    return EXIT_OK
+
+
+def _cmd_verify(ns: argparse.Namespace) -> int:
+    from geomcad.verify import verify
+
+    measured = dict(_pair(text, "--measured") for text in ns.measured)
+    scale = None if ns.scale is None else _scale(ns.scale)
+    sol = _solve(ns.id, ns.set)
+    report = verify(sol, measured, scale)
+    if ns.json:
+        _write(sys.stdout, _dumps(report.to_json()) + "\n")
+    else:
+        _write(sys.stdout, _verify_report(report))
+    return EXIT_OK if report.ok else EXIT_OUT_OF_PRECISION
+
+
+# --- input ------------------------------------------------------------------------------------
+
+
+def _solve(pid: str, sets: Sequence[str]) -> Solution:
+    problem: Problem = registry.get(pid)
+    params: dict[str, ParamValue] = {}
+    for text in sets:
+        name, value = _pair(text, "--set")
+        params[name] = problem.param(name).parse(value)
+    return problem.solve(**params)
+
+
+def _pair(text: str, option: str) -> tuple[str, str]:
+    name, eq, value = text.partition("=")
+    name = name.strip()
+    if not eq or not name:
+        raise GeomcadError(f"{option} {text}: expected NAME=VALUE")
+    return name, value
+
+
+def _scale(text: str) -> float:
+    t = text.strip()
+    if t.count(",") == 1 and "." not in t:
+        t = t.replace(",", ".")
+    try:
+        k = float(t)
+    except ValueError:
+        raise ParameterError("--scale", text, "must be a number (k_l in m/mm)") from None
+    if not (math.isfinite(k) and k > 0.0):
+        raise ParameterError("--scale", text, "must be a number > 0 (k_l in m/mm)")
+    return k
+
+
+def _formats(text: str) -> list[str]:
+    out: list[str] = []
+    for f in (w.strip().lower() for w in text.split(",")):
+        if f not in FORMATS:
+            raise ParameterError(
+                "--format", text, f"each format must be one of {', '.join(FORMATS)}"
+            )
+        if f not in out:
+            out.append(f)
+    return out
+
+
+# --- output -----------------------------------------------------------------------------------
+
+
+def _solve_report(sol: Solution) -> str:
+    """The readable ``solve`` report: parameters, results, the seed comparison, notes."""
+    problem = sol.problem
+    lines = [f"{problem.id} · {problem.title}", "", "parameters:"]
+    for p in problem.params:
+        value = sol.params[p.name]
+        mark = "" if value == p.default else "   (set; default " + _fmt(p.default) + ")"
+        lines.append(f"  {p.name} = {_fmt(value)}{_unit(p.unit)}{mark}")
+    lines += ["", "results:"]
+    specs = {r.name: r for r in problem.results}
+    for name, value in sol.results.items():
+        spec = specs.get(name)
+        unit = _unit(spec.unit) if spec is not None else ""
+        if isinstance(value, list) and value and all(isinstance(v, dict) for v in value):
+            lines.append(f"  {name}: {len(value)}")
+            for i, obj in enumerate(value):
+                fields = ", ".join(
+                    f"{k} = {_fmt(v)}{_field_unit(problem, k)}" for k, v in obj.items()
+                )
+                lines.append(f"    {name}.{i}: {fields}")
+        else:
+            lines.append(f"  {name} = {_fmt(value)}{unit}")
+    lines.append("")
+    if sol.is_seed and problem.seed:
+        lines.append("the seed's values (SI), exact − seed, and the tolerance of each class:")
+        head = ("name", "exact", "seed (printed)", "diff", "class", "within tolerance")
+        rows = [head]
+        for r in sol.seed_report():
+            if r["class"] == "erratum":
+                within = "n/a (erratum)"
+            else:
+                within = f"{'yes' if r['agrees'] else 'NO'} (±{r['tol']:.3g})"
+            rows.append(
+                (
+                    r["name"],
+                    _fmt(r["exact"]),
+                    f"{_fmt(r['seed'])} ({r['printed']})",
+                    f"{r['diff']:+.3g}",
+                    r["class"],
+                    within,
+                )
+            )
+        lines += ["  " + line for line in _table(rows)]
+    elif problem.seed:
+        lines.append("seed: not compared (the parameters differ from the seed's)")
+    notes = sol.notes
+    if notes:
+        lines += ["", "notes:"] + [f"  - {_one_line(n)}" for n in notes]
+    return "\n".join(lines) + "\n"
+
+
+def _verify_report(report: Report) -> str:
+    lines = [_verify_line(it) for it in report.items]
+    bad = sum(not it.ok for it in report.items)
+    n = len(report.items)
+    if bad:
+        lines.append(f"{report.id}: {bad} of {n} measurements out of precision")
+    else:
+        lines.append(f"{report.id}: all {n} measurements within precision")
+    return "\n".join(lines) + "\n"
+
+
+def _verify_line(it: Item) -> str:
+    """One item in words: measured, exact, deviation and the precision it was held to."""
+    within = "within" if it.ok else "NOT within"
+    if it.rule == "angle":
+        return (
+            f"{it.result}: measured {_g(it.measured)}°, exact {_g(it.exact)}°, off by "
+            f"{it.deviation:+.3g}°, {within} the angle precision of {_g(it.precision)}°"
+        )
+    if it.rule == "relative":
+        u = _unit(it.unit)
+        return (
+            f"{it.result}: measured {_g(it.measured)}{u}, exact {_g(it.exact)}{u}, off by "
+            f"{it.deviation:+.3g}{u}, {within} 0.5 % of the exact value ({it.precision:.3g}{u})"
+        )
+    from geomcad.verify import PLAN_SCALES
+
+    k = it.scale if it.scale is not None else math.nan
+    k_name, k_unit = PLAN_SCALES.get(it.plan or "", ("k", "units/mm"))
+    dev_mm = it.deviation_mm if it.deviation_mm is not None else math.nan
+    prec_mm = it.precision / k
+    u = _unit(it.unit)
+    if it.measured_mm is not None:
+        return (
+            f"{it.result}: measured {_g(it.measured_mm)} mm, exact {_g(it.exact / k)} mm "
+            f"({_g(it.exact)}{u} at {k_name} = {k:g} {k_unit}), off by {dev_mm:+.3g} mm, "
+            f"{within} the drawing precision of {prec_mm:g} mm"
+        )
+    return (
+        f"{it.result}: measured {_g(it.measured)}{u}, exact {_g(it.exact)}{u} "
+        f"({_g(it.exact / k)} mm at {k_name} = {k:g} {k_unit}), off by {it.deviation:+.3g}{u} "
+        f"({dev_mm:+.3g} mm), {within} the drawing precision of {prec_mm:g} mm "
+        f"({it.precision:.3g}{u})"
+    )
+
+
+def _table(rows: Sequence[Sequence[str]]) -> list[str]:
+    widths = [max(len(r[i]) for r in rows) for i in range(len(rows[0]))]
+    return [" | ".join(c.ljust(w) for c, w in zip(r, widths, strict=True)).rstrip() for r in rows]
+
+
+def _g(x: float) -> str:
+    return f"{x:.6g}"
+
+
+def _fmt(value: object) -> str:
+    """A result or parameter, readably: numbers to 6 digits, lists in brackets, bools in words."""
+    if isinstance(value, bool):
+        return "yes" if value else "no"
+    if isinstance(value, int):
+        return str(value)
+    if isinstance(value, float):
+        return _g(value)
+    if isinstance(value, list | tuple):
+        return "[" + ", ".join(_fmt(v) for v in value) + "]"
+    if isinstance(value, dict):
+        return "{" + ", ".join(f"{k} = {_fmt(v)}" for k, v in value.items()) + "}"
+    return str(value)
+
+
+def _field_unit(problem: Problem, name: str) -> str:
+    spec = problem.result_spec(name)
+    return _unit(spec.unit) if spec is not None else ""
+
+
+def _unit(unit: str) -> str:
+    if unit in ("", "1"):
+        return ""
+    if unit == "deg":
+        return "°"
+    return f" {unit}"
+
+
+def _dumps(obj: object) -> str:
+    # allow_nan=False: the interface promises valid JSON, and NaN is not JSON
+    return json.dumps(obj, ensure_ascii=False, allow_nan=False, indent=2, default=_json_default)
+
+
+def _json_default(obj: object) -> Any:
+    tolist = getattr(obj, "tolist", None)  # numpy scalars and arrays
+    if callable(tolist):
+        return tolist()
+    raise TypeError(f"{type(obj).__name__} is not JSON serializable")
+
+
+def _prefixed(pid: str | None, exc: GeomcadError) -> str:
+    msg = _one_line(str(exc))
+    if pid and not isinstance(exc, UnknownProblem) and not msg.startswith(f"{pid}:"):
+        return f"{pid}: {msg}"
+    return msg
+
+
+def _one_line(text: str) -> str:
+    return " ".join(text.split())
+
+
+def _error_line(msg: str) -> str:
+    return f"error: {_one_line(msg)}\n"
+
+
+def _fail(msg: str) -> int:
+    _write(sys.stderr, _error_line(msg))
+    return EXIT_BAD_INPUT
+
+
+def _write(stream: IO[str], text: str) -> None:
+    try:
+        stream.write(text)
+    except UnicodeEncodeError:
+        # a terminal that cannot show θ or Cyrillic still gets every line (and valid JSON)
+        enc = getattr(stream, "encoding", None) or "ascii"
+        stream.write(text.encode(enc, "backslashreplace").decode(enc))
+    stream.flush()
