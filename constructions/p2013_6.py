@@ -45,6 +45,7 @@ from geomcad.problem import (
     measured_value,
     rounded,
 )
+from geomcad.sheet.scale import gost_length_scale
 from geomcad.units import to_deg
 
 ID = "2013-6"
@@ -122,21 +123,26 @@ class Geometry:
     mechanism: SixBar | None
     phi_min: float  # crank angle at the slider's left extreme
     phi_max: float
+    extent: tuple[float, float, float, float]  # model box the sheet draws (xmin, ymin, xmax, ymax)
 
 
 def _check_params(p: Mapping[str, ParamValue]) -> tuple[float, float, float, float, float]:
     H, K, l3, l4, e = (float(p[n]) for n in ("H", "K", "l3", "l4", "e"))
     if K >= 3.0:
         raise ParameterError(
-            "K", K, "must be < 3: at K ≥ 3, θ ≥ 90° and the ray from B1 at 90° − θ turns away "
-            "from the perpendicular at B0, so the construction has no point O"
+            "K",
+            K,
+            "must be < 3: at K ≥ 3, θ ≥ 90° and the ray from B1 at 90° − θ turns away "
+            "from the perpendicular at B0, so the construction has no point O",
         )
     # C0 must be reachable from the rocker's circle: |O2C0| ≤ l3 + l4 (and ≥ |l3 − l4|)
     far = math.hypot(l4 + H / 2.0, l3)
     if far >= l3 + l4:
         raise ParameterError(
-            "H", H, f"too large for l3 = {l3:g} m and l4 = {l4:g} m: at C1 the links BC and O2B "
-            f"cannot close (|O2C1| = {far:.6g} m ≥ l3 + l4)"
+            "H",
+            H,
+            f"too large for l3 = {l3:g} m and l4 = {l4:g} m: at C1 the links BC and O2B "
+            f"cannot close (|O2C1| = {far:.6g} m ≥ l3 + l4)",
         )
     return H, K, l3, l4, e
 
@@ -148,36 +154,61 @@ def build(p: Mapping[str, ParamValue]) -> Build:
 
     O2 = c.point("O2", (0.0, 0.0), role="given", note="rocker pivot")
     path = c.line("path", Vec(0.0, l3), (1.0, 0.0), "slider path y = l3", role="given")
-    B = c.point("B", (0.0, l3), role="link", op="mid position: rocker vertical, B = (0, l3)")
+    c.point("B", (0.0, l3), role="link", op="mid position: rocker vertical, B = (0, l3)")
     C = c.point("C", (l4, l3), role="link", op="mid position: C = B + (l4, 0) on the path")
     C0 = c.point("C0", C - Vec(H / 2.0, 0.0), role="given", op="C − H/2 along the path")
     C1 = c.point("C1", C + Vec(H / 2.0, 0.0), role="given", op="C + H/2 along the path")
     k3 = c.circle("k3", O2, l3, role="aux", r_name="l3", note="path of B")
     kC0 = c.circle("kC0", C0, l4, role="hidden", r_name="l4")
     kC1 = c.circle("kC1", C1, l4, role="hidden", r_name="l4")
-    B0 = c.intersect("B0", k3, kC0, left_of(O2, C0, "O2→C0 (the mid position's branch)"),
-                     role="result", op="circle(O2, l3) ∩ circle(C0, l4)")
-    B1 = c.intersect("B1", k3, kC1, left_of(O2, C1, "O2→C1 (the mid position's branch)"),
-                     role="result", op="circle(O2, l3) ∩ circle(C1, l4)")
+    B0 = c.intersect(
+        "B0",
+        k3,
+        kC0,
+        left_of(O2, C0, "O2→C0 (the mid position's branch)"),
+        role="result",
+        op="circle(O2, l3) ∩ circle(C0, l4)",
+    )
+    B1 = c.intersect(
+        "B1",
+        k3,
+        kC1,
+        left_of(O2, C1, "O2→C1 (the mid position's branch)"),
+        role="result",
+        op="circle(O2, l3) ∩ circle(C1, l4)",
+    )
     theta = c.value("θ", math.pi * (K - 1.0) / (K + 1.0), "180°·(K − 1)/(K + 1), in radians")
     chord = c.line_through("B0B1", B0, B1)
     n0 = c.perpendicular("n0", chord, B0, note="perpendicular to B0B1 at B0")
     # the ray from B1 turns towards O2's side of the chord (left of B1→B0 when O2 is there)
     toward_o2 = 1.0 if Line.through(B1, B0).side(O2) > 0.0 else -1.0
-    ray = c.ray_at_angle("r1", B1, B0, toward_o2 * (math.pi / 2.0 - theta), "90° − θ",
-                         note="towards O2's side of B0B1")
-    O = c.intersect("O", n0, ray, role="construction")
-    gamma = c.circle_through("Γ", O, B0, B1, note="OB1 is a diameter: ∠OB0B1 = 90°")
-    gamma_m = c.record("Γ′", "mirror of Γ over B0B1", mirror_circle(gamma, chord), (gamma, chord),
-                       note="the other arc that sees B0B1 under θ")
-    o_side = chord.side(O)
+    ray = c.ray_at_angle(
+        "r1",
+        B1,
+        B0,
+        toward_o2 * (math.pi / 2.0 - theta),
+        "90° − θ",
+        note="towards O2's side of B0B1",
+    )
+    O_ = c.intersect("O", n0, ray, role="construction")
+    gamma = c.circle_through("Γ", O_, B0, B1, note="OB1 is a diameter: ∠OB0B1 = 90°")
+    gamma_m = c.record(
+        "Γ′",
+        "mirror of Γ over B0B1",
+        mirror_circle(gamma, chord),
+        (gamma, chord),
+        note="the other arc that sees B0B1 under θ",
+    )
+    o_side = chord.side(O_)
 
     def on_theta_arc(circle_is_mirror: bool) -> Where:
         # Γ's θ-arc is on O's side of the chord, Γ′'s on the other side
         sign = -o_side if circle_is_mirror else o_side
         side_text = "the side opposite O" if circle_is_mirror else "O's side"
-        return Where(lambda q: chord.side(q) * sign > 0.0,
-                     f"on the arc that sees B0B1 under θ ({side_text} of B0B1)")
+        return Where(
+            lambda q: chord.side(q) * sign > 0.0,
+            f"on the arc that sees B0B1 under θ ({side_text} of B0B1)",
+        )
 
     lines = (
         c.parallel("m−", path, offset=-e, op="line ∥ path at e, y = l3 − e", role="construction"),
@@ -187,8 +218,14 @@ def build(p: Mapping[str, ParamValue]) -> Build:
     for li, (m_line, tag) in enumerate(zip(lines, ("−", "+"), strict=True)):
         found: list[tuple[Vec, str]] = []
         for circ, arc_name, mirrored in ((gamma, "Γ", False), (gamma_m, "Γ′", True)):
-            pts = c.intersections(f"{arc_name}∩m{tag}", circ, m_line, on_theta_arc(mirrored),
-                                  role="hidden", allow_empty=True)
+            pts = c.intersections(
+                f"{arc_name}∩m{tag}",
+                circ,
+                m_line,
+                on_theta_arc(mirrored),
+                role="hidden",
+                allow_empty=True,
+            )
             found += [(q, arc_name) for q in pts]
         for q, arc_name in sorted(found, key=lambda t: t[0].x):
             cands.append(_candidate(q, B0, B1, O2, l3, li, arc_name))
@@ -247,8 +284,39 @@ def build(p: Mapping[str, ParamValue]) -> Build:
             f"requested H = {H:g} m and K = {K:g}: the slider does not reverse at the rocker's "
             "dead centres"
         )
-    geo = Geometry(H, K, l3, l4, e, theta, tuple(cands), chosen, mech, phi_min, phi_max)
-    return Build(results, c, notes, {"l": SEED_K_L}, geo)
+    box = _extent(c, cands, l3, l4)
+    geo = Geometry(H, K, l3, l4, e, theta, tuple(cands), chosen, mech, phi_min, phi_max, box)
+    return Build(results, c, notes, {"l": sheet_k_l(box)}, geo)
+
+
+#: The field the mechanism is drawn in on the sheet (mm: x0, y0, x1, y1), left of the tables.
+VIEW = (24.0, 24.0, 256.0, 290.0)
+
+
+def sheet_k_l(box: tuple[float, float, float, float]) -> float:
+    """k_l of the sheet: the seed's 0.005 m/mm (1:5) when the drawing fits, else the largest
+    GOST 2.302 scale at which it does."""
+    w, h = box[2] - box[0], box[3] - box[1]
+    room_w, room_h = VIEW[2] - VIEW[0], VIEW[3] - VIEW[1]
+    if w / SEED_K_L <= room_w and h / SEED_K_L <= room_h:
+        return SEED_K_L
+    return gost_length_scale(max(w * room_h / room_w, h), room_h).k
+
+
+def _extent(
+    c: Construction, cands: list[Candidate], l3: float, l4: float
+) -> tuple[float, float, float, float]:
+    """The model box the sheet draws: the θ-circles, the mechanism and every solution."""
+    xs: list[float] = [-l3, l3]
+    ys: list[float] = [-0.05 * l3]
+    for circ in (c["Γ"], c["Γ′"]):
+        xs += [circ.c.x - circ.r, circ.c.x + circ.r]
+        ys += [circ.c.y - circ.r, circ.c.y + circ.r]
+    for q in [*(c[n] for n in ("O2", "C0", "C1", "B0", "B1", "O")), *(cd.O1 for cd in cands)]:
+        xs.append(q.x)
+        ys.append(q.y)
+    xs.append(c["C1"].x + 0.1 * l4)
+    return min(xs), min(ys), max(xs), max(ys)
 
 
 def _theta_arcs_y_range(B0: Vec, B1: Vec, theta: float) -> tuple[float, float]:
@@ -271,12 +339,22 @@ def _mechanism(cd: Candidate, B0: Vec, B1: Vec, O2: Vec, l3: float, l4: float) -
     """The six-bar of a solution, assembled through the extended dead centre."""
     b_ext = B1 if cd.O1B1 >= cd.O1B0 else B0
     a_ext = cd.O1 + (b_ext - cd.O1).unit() * cd.l1
-    return SixBar(cd.O1, cd.l1, cd.l2, O2, l3, l4, Vec(0.0, l3), Vec(1.0, 0.0),
-                  branch_sign(a_ext, O2, b_ext), 1)
+    return SixBar(
+        cd.O1,
+        cd.l1,
+        cd.l2,
+        O2,
+        l3,
+        l4,
+        Vec(0.0, l3),
+        Vec(1.0, 0.0),
+        branch_sign(a_ext, O2, b_ext),
+        1,
+    )
 
 
 def draw(solution: Any) -> list[tuple[str, Any]]:
-    from geomcad_constructions.sheets_2013_6 import sheets
+    from .sheets_2013_6 import sheets
 
     return sheets(solution)
 

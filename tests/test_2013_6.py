@@ -1,4 +1,4 @@
-"""2013-6: the seed's published values, exact geometry checked independently, variants, bad input."""
+"""2013-6: the seed's values, exact geometry checked independently, variants, bad input."""
 
 from __future__ import annotations
 
@@ -36,7 +36,9 @@ def independent(H: float, K: float, l3: float, l4: float, e: float) -> list[tupl
 
         xs = np.linspace(-5.0, 5.0, 20001)
         f = np.array([seen(x) for x in xs])
-        roots = [brentq(seen, xs[i], xs[i + 1], xtol=1e-15) for i in np.nonzero(np.diff(np.sign(f)))[0]]
+        roots = [
+            brentq(seen, xs[i], xs[i + 1], xtol=1e-15) for i in np.nonzero(np.diff(np.sign(f)))[0]
+        ]
         out += [(x, y) for x in sorted(roots)]
     return out
 
@@ -126,8 +128,14 @@ def test_every_solution_sees_b0b1_under_theta() -> None:
 
 
 def test_the_check_reports_a_synthesis_that_misses_its_stroke() -> None:
-    sol = geomcad.solve("2013-6", H=0.1761659143404782, K=2.308716046061097,
-                        l3=0.4598713078539125, l4=0.10904649182023587, e=0.12850327675004805)
+    sol = geomcad.solve(
+        "2013-6",
+        H=0.1761659143404782,
+        K=2.308716046061097,
+        l3=0.4598713078539125,
+        l4=0.10904649182023587,
+        e=0.12850327675004805,
+    )
     assert sol.results["K_check"] < 2.0
     assert any("does not reverse" in n for n in sol.notes)
 

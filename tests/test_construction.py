@@ -30,7 +30,9 @@ def test_empty_intersection_names_the_step() -> None:
     a = c.point("A", (0, 0))
     far = c.point("F", (5, 0))
     ka, kf = c.circle("ka", a, 1.0), c.circle("kf", far, 1.0)
-    with pytest.raises(NoIntersection, match=r'step "X = circle ka ∩ circle kf": the circles do not'):
+    with pytest.raises(
+        NoIntersection, match=r'step "X = circle ka ∩ circle kf": the circles do not'
+    ):
         c.intersect("X", ka, kf)
 
 

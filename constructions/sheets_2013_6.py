@@ -1,0 +1,235 @@
+"""2013-6's drawing sheet: the six-bar in its mid and extreme positions and the whole synthesis.
+
+A3 landscape. Left: the construction at k_l (the seed's 0.005 m/mm, 1:5, when it fits; else the
+largest GOST scale that does): the rocker's arc, the extreme positions C0, C1 and B0, B1, the
+chord B0B1, the perpendicular at B0 and the ray at 90° − θ meeting in O, the θ-circle Γ through
+O, B0, B1 and its mirror image Γ′ (their arcs that see B0B1 under θ solid, the others dashed),
+the lines at e from the path, every solution O1, and the seed's solution built out: the crank's
+dead-centre positions O1A0B0 and O1A1B1, the crank circle, the linkage in its mid position, and
+the dimensions O1B0 and O1B1. Right: the given data, the results beside the seed's, and all
+solutions.
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, Any
+
+from geomcad.geom import Arc, Circle, Line, Vec, angle_arcs, circle_circle
+from geomcad.kinematics import branch_sign
+from geomcad.sheet import Drawing, Scale, Sheet, TitleBlock, Viewport, fmt_number, start
+
+if TYPE_CHECKING:
+    from geomcad.problem import Solution
+
+from .p2013_6 import VIEW
+
+#: The rocker's arc is drawn this far (rad) beyond B's swing.
+SWING_PAD = 0.25
+
+PANEL_X = 262.0
+
+
+def sheets(sol: Solution) -> list[tuple[str, Sheet]]:
+    """The main sheet of 2013-6."""
+    geo = sol.data
+    c = sol.construction
+    k = Scale(sol.scales["l"], "l")
+    tb = TitleBlock(
+        title="Синтез шестизвенного механизма по коэффициенту K",
+        designation="ТММ.2013-6.01",
+        scale=k.ratio_text(),
+        organisation="geomcad",
+        developer="geomcad",
+    )
+    d = start("A3", tb)
+    x0, y0, x1, y1 = geo.extent
+    cx, cy = (x0 + x1) / 2.0, (y0 + y1) / 2.0
+    at = ((VIEW[0] + VIEW[2]) / 2.0, (VIEW[1] + 8.0 + VIEW[3]) / 2.0)
+    v = d.viewport(k, (cx, cy), at)
+    d.text("Синтез механизма по K (метод окружности через B_0B_1)", (VIEW[0] + 2.0, 13.0), 5.0)
+    d.text(f"{k.label()}   (M {k.ratio_text() or '—'})", (VIEW[0] + 2.0, 20.0), 3.5)
+
+    _construction(v, geo, c)
+    _mechanism(v, geo, c)
+    _panel(d, sol, k)
+    return [("", d.finish())]
+
+
+def _construction(v: Viewport, geo: Any, c: Any) -> None:
+    B0, B1, Op, O2 = c["B0"], c["B1"], c["O"], c["O2"]
+    theta = geo.theta
+    # the rocker's arc and the slider's path
+    swing = Arc(Circle(O2, geo.l3), B1.angle - SWING_PAD, B0.angle + SWING_PAD)
+    v.arc(swing, "centre")
+    path = Line.of((0.0, geo.l3), (1.0, 0.0))
+    xs = [c["C0"].x, c["C1"].x, c["B"].x] + [cd.O1.x for cd in geo.candidates if cd.line == 1]
+    v.line_over(path, [(x, geo.l3) for x in xs], "centre", over=12.0)
+    # B0B1, the perpendicular at B0 and the ray from B1 at 90° − θ, meeting in O
+    v.seg(B0, B1, "construction")
+    v.seg(B0, Op, "construction")
+    v.seg(B1, Op, "construction")
+    _right_angle(v, B0, B1, Op)
+    v.dim_angle(B1, B0, Op, "90° – θ", r_mm=14.0, height=2.5)
+    v.dot(Op, "result")
+    v.label(Op, "O", prefer=(-1.0, -1.0))
+    # the θ-circle Γ and its mirror Γ′: θ-arcs solid, the arcs of 180° − θ dashed
+    left, right = angle_arcs(B0, B1, theta)
+    chord = Line.through(B0, B1)
+    for arc in (left, right):
+        v.arc(arc, "construction")
+        rest = type(arc)(arc.circle, arc.end, arc.start)
+        v.arc(rest, "locus")
+    gamma, gamma_m = c["Γ"], c["Γ′"]
+    v.dot(gamma.c, "construction")
+    for circ, name in ((gamma, "Γ"), (gamma_m, "Γ'")):
+        # the label sits on the θ-arc, at its point furthest from the chord
+        side = 1.0 if chord.side(circ.c) > 0.0 else -1.0
+        far = circ.c + chord.normal * (side * circ.r)
+        v.label(far, name, prefer=(0.0, side))
+    # the lines at e from the path, and every solution
+    for line_no, tag in ((0, "–"), (1, "+")):
+        y = geo.l3 + (geo.e if line_no else -geo.e)
+        on = [cd.O1 for cd in geo.candidates if cd.line == line_no]
+        pts = [*on, Vec(0.0, y)]
+        v.line_over(Line.of((0.0, y), (1.0, 0.0)), pts, "construction", over=14.0)
+        ends = [Line.of((0.0, y), (1.0, 0.0)).param(q) for q in pts]
+        v.label(Vec(max(ends), y), f"y = l_3 {tag} e", height=2.5, prefer=(1.0, 1.0), clear=12.0)
+    for i, cd in enumerate(geo.candidates):
+        if cd is geo.chosen:
+            continue
+        v.dot(cd.O1, "result")
+        v.label(cd.O1, f"O_1^{{({i + 1})}}", height=3.5)
+
+
+def _right_angle(v: Viewport, vertex: Vec, a: Vec, b: Vec, size_mm: float = 3.0) -> None:
+    """The right-angle mark at ``vertex`` between the directions to a and b."""
+    s = v.scale.model(size_mm)
+    ua, ub = (a - vertex).unit() * s, (b - vertex).unit() * s
+    v.polyline([vertex + ua, vertex + ua + ub, vertex + ub], "construction")
+
+
+def _mechanism(v: Viewport, geo: Any, c: Any) -> None:
+    O2, B, C, B0, B1, C0, C1 = (c[n] for n in ("O2", "B", "C", "B0", "B1", "C0", "C1"))
+    ch = geo.chosen
+    O1 = ch.O1
+    mech = geo.mechanism
+    # the crank's dead centres: folded (A on the far side of O1) and extended
+    folded, extended = (B0, B1) if ch.O1B0 <= ch.O1B1 else (B1, B0)
+    A_f = O1 - (folded - O1).unit() * ch.l1
+    A_e = O1 + (extended - O1).unit() * ch.l1
+    # the seed's solution: O1B0 and O1B1, the angle θ between them, the crank circle
+    v.seg(O1, B0, "result")
+    v.seg(O1, B1, "result")
+    v.dim_angle(O1, B0, B1, "θ", r_mm=22.0)
+    v.circle(O1, ch.l1, "centre")
+    # extreme positions (two-dot lines)
+    for Bx, Cx, Ax in (
+        (B0, C0, A_f if folded is B0 else A_e),
+        (B1, C1, A_e if folded is B0 else A_f),
+    ):
+        v.seg(O2, Bx, "extreme")
+        v.seg(Bx, Cx, "extreme")
+        v.seg(Ax, Bx, "extreme")
+        v.seg(O1, Ax, "extreme")
+        v.dot(Ax)
+    # the mid position: A from circle(O1, l1) ∩ circle(B, l2) on the mechanism's branch
+    A = _mid_A(O1, ch.l1, ch.l2, B, O2, mech.branch_B)
+    v.seg(O1, A, "link")
+    v.seg(A, B, "link")
+    v.seg(O2, B, "link")
+    v.seg(B, C, "link")
+    v.guide(Vec(C0.x - 0.06 * geo.l4, geo.l3), Vec(C1.x + 0.06 * geo.l4, geo.l3), (0.0, -1.0))
+    for q in (C0, C1):
+        v.slider(q)
+    v.slider(C)
+    for q in (A, B, B0, B1):
+        v.joint(q)
+    v.pivot(O2)
+    v.pivot(O1)
+    # labels, then the dimensions of the result
+    v.label(O2, "O_2", prefer=(1.0, -1.0), clear=4.0)
+    v.label(O1, "O_1", prefer=(-1.0, -1.0), clear=4.0)
+    v.label(A, "A", prefer=(-1.0, 1.0))
+    v.label(B, "B", prefer=(1.0, 1.0))
+    v.label(C, "C", prefer=(0.0, 1.0), clear=4.0)
+    v.label(C0, "C_0", prefer=(0.0, 1.0), clear=4.0)
+    v.label(C1, "C_1", prefer=(0.0, 1.0), clear=4.0)
+    v.label(B0, "B_0", prefer=(-1.0, 1.0))
+    v.label(B1, "B_1", prefer=(1.0, 1.0))
+    v.label(A_f, "A_0" if folded is B0 else "A_1", height=2.5)
+    v.label(A_e, "A_1" if folded is B0 else "A_0", height=2.5)
+    mm = 1000.0
+    v.dim_linear(O1, B0, f"O_1B_0 = {fmt_number(ch.O1B0 * mm, digits=4)}", offset=12.0, height=2.5)
+    v.dim_linear(O1, B1, f"O_1B_1 = {fmt_number(ch.O1B1 * mm, digits=4)}", offset=-12.0, height=2.5)
+
+
+def _mid_A(O1: Vec, l1: float, l2: float, B: Vec, O2: Vec, branch: int) -> Vec:
+    """The crank pin A with B at mid-stroke, on the assembly branch the mechanism runs on."""
+    pts = circle_circle(Circle(O1, l1), Circle(B, l2))
+    for q in pts:
+        if branch_sign(q, O2, B) == branch:
+            return q
+    return pts[0]
+
+
+def _panel(d: Drawing, sol: Solution, k: Scale) -> None:
+    """The tables on the right: given data, results beside the seed's, every solution."""
+    p = sol.params
+    r = sol.results
+    x, y = PANEL_X, 10.0
+    d.text("Исходные данные", (x, y + 3.5), 3.5)
+    rows = [["Параметр", "Значение"]]
+    for name, label, unit in (
+        ("H", "H", "м"),
+        ("K", "K", ""),
+        ("l3", "l_3", "м"),
+        ("l4", "l_4", "м"),
+        ("e", "e", "м"),
+    ):
+        rows.append([label, f"{fmt_number(float(p[name]))} {unit}".strip()])
+    _, h = d.table(x, y + 6.0, (40.0, 40.0), rows)
+    y += 6.0 + h + 6.0
+    d.text("Результаты", (x, y + 3.5), 3.5)
+    seed = sol.seed
+    rows = [["Величина", "Точно", "Опубликовано", "Разность"]]
+    mmk = k.k
+    for name, label, unit, scale in (
+        ("theta_deg", "θ", "°", 1.0),
+        ("O1B0", "O_1B_0", "мм*", mmk),
+        ("O1B1", "O_1B_1", "мм*", mmk),
+        ("l1", "l_1", "м", 1.0),
+        ("l2", "l_2", "м", 1.0),
+        ("H_check", "H (анализ)", "м", 1.0),
+        ("K_check", "K (анализ)", "", 1.0),
+    ):
+        exact = float(r[name]) / scale
+        pub = seed.get(name)
+        rows.append(
+            [
+                label,
+                f"{fmt_number(exact, digits=6)} {unit}".strip(),
+                "" if pub is None else fmt_number(pub / scale, digits=4),
+                "" if pub is None else fmt_number(exact - pub / scale, digits=2),
+            ]
+        )
+    _, h = d.table(x, y + 6.0, (24.0, 42.0, 38.0, 42.0), rows)
+    y += 6.0 + h + 4.0
+    d.text(f"* на чертеже, {k.label()}", (x, y + 2.5), 2.5)
+    y += 8.0
+    d.text("Все решения (O_1 на прямых y = l_3 ± e)", (x, y + 3.5), 3.5)
+    rows = [["№", "O_1 (x; y), м", "l_1, м", "l_2, м", "кривош."]]
+    for i, s in enumerate(r["solutions"]):
+        ox, oy = s["O1"]
+        rows.append(
+            [
+                str(i + 1),
+                f"{fmt_number(ox, digits=4)}; {fmt_number(oy, digits=4)}",
+                fmt_number(s["l1"], digits=4),
+                fmt_number(s["l2"], digits=4),
+                "да" if s["crank_rocker"] else "нет",
+            ]
+        )
+    _, h = d.table(x, y + 6.0, (10.0, 48.0, 26.0, 26.0, 36.0), rows)
+    y += 6.0 + h + 6.0
+    if sol.notes:
+        d.text("Замечания: см. geomcad solve 2013-6 (notes)", (x, y + 2.5), 2.5)
