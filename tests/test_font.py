@@ -1,0 +1,119 @@
+"""The shipped osifont has real glyphs for the letters and signs the sheets use.
+
+Upstream osifont 0.1.20220224 replaced Э э Ё ё by filled boxes; scripts/patch_osifont.py draws
+them again. These tests catch a box (or a missing glyph) coming back.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from pathlib import Path
+from typing import Any
+
+import pytest
+from fontTools.pens.recordingPen import RecordingPen
+from fontTools.ttLib import TTFont
+
+FONT = Path(__file__).resolve().parent.parent / "geomcad" / "fonts" / "osifont.ttf"
+UPSTREAM = Path("/usr/share/fonts/truetype/osifont/osifont.ttf")
+
+CYRILLIC = "".join(chr(c) for c in range(ord("А"), ord("я") + 1)) + "Ёё"
+SIGNS = "°±×·≈№θμωφαβεπρΓΘ"
+RESTORED = "ЭэЁё"
+
+#: How far (a fraction of the glyph's larger side) a box's corner may sit from its bounds'
+#: corner: upstream's boxes are slightly skewed quadrilaterals, not exact rectangles.
+BOX_TOLERANCE = 0.05
+
+
+@pytest.fixture(scope="module")
+def font() -> Iterator[TTFont]:
+    with TTFont(str(FONT)) as f:
+        yield f
+
+
+def _outline(font: TTFont, char: str) -> list[tuple[str, tuple[Any, ...]]]:
+    cmap = font.getBestCmap()
+    assert ord(char) in cmap, f"no glyph for {char!r} (U+{ord(char):04X})"
+    pen = RecordingPen()
+    font.getGlyphSet()[cmap[ord(char)]].draw(pen)
+    return list(pen.value)
+
+
+def is_box(outline: list[tuple[str, tuple[Any, ...]]]) -> bool:
+    """Whether an outline is one four-point, straight-sided box filling its own bounds."""
+    ops = [op for op, _ in outline]
+    if ops not in (
+        ["moveTo", *["lineTo"] * 3, "closePath"],
+        ["moveTo", *["lineTo"] * 4, "closePath"],
+    ):
+        return False
+    points: list[tuple[float, float]] = [args[0] for op, args in outline if op != "closePath"]
+    if len(points) == 5:
+        if points[0] != points[-1]:
+            return False
+        points = points[:4]
+    xs, ys = [p[0] for p in points], [p[1] for p in points]
+    x0, x1, y0, y1 = min(xs), max(xs), min(ys), max(ys)
+    tol = BOX_TOLERANCE * max(x1 - x0, y1 - y0)
+    corners = [(x0, y0), (x0, y1), (x1, y0), (x1, y1)]
+    matched = {
+        i
+        for px, py in points
+        for i, (cx, cy) in enumerate(corners)
+        if abs(px - cx) <= tol and abs(py - cy) <= tol
+    }
+    return len(matched) == 4
+
+
+def test_box_detector() -> None:
+    square = [
+        ("moveTo", ((0, 0),)),
+        ("lineTo", ((0, 100),)),
+        ("lineTo", ((100, 100),)),
+        ("lineTo", ((100, 0),)),
+        ("closePath", ()),
+    ]
+    skewed = [
+        ("moveTo", ((84, 1511),)),
+        ("lineTo", ((824, 1511),)),
+        ("lineTo", ((829, 0),)),
+        ("lineTo", ((94, 0),)),
+        ("closePath", ()),
+    ]
+    diamond = [
+        ("moveTo", ((50, 0),)),
+        ("lineTo", ((0, 50),)),
+        ("lineTo", ((50, 100),)),
+        ("lineTo", ((100, 50),)),
+        ("closePath", ()),
+    ]
+    rounded = [*square[:2], ("qCurveTo", ((0, 110), (10, 110))), *square[2:]]
+    assert is_box(square)
+    assert is_box(skewed)
+    assert not is_box(diamond)
+    assert not is_box(rounded)
+
+
+@pytest.mark.skipif(not UPSTREAM.exists(), reason="Debian's fonts-osifont is not installed")
+def test_box_detector_finds_upstreams_boxes() -> None:
+    with TTFont(str(UPSTREAM)) as upstream:
+        assert all(is_box(_outline(upstream, c)) for c in RESTORED)
+
+
+@pytest.mark.parametrize("char", list(CYRILLIC + SIGNS))
+def test_glyph_is_drawn(font: TTFont, char: str) -> None:
+    assert not is_box(_outline(font, char)), f"{char!r} (U+{ord(char):04X}) is a filled box"
+
+
+@pytest.mark.parametrize(("char", "model"), [("э", "с"), ("Э", "С"), ("ё", "е"), ("Ё", "Е")])
+def test_restored_letters_have_their_models_advance(font: TTFont, char: str, model: str) -> None:
+    cmap, hmtx = font.getBestCmap(), font["hmtx"]
+    assert hmtx[cmap[ord(char)]][0] == hmtx[cmap[ord(model)]][0]
+
+
+def test_version_string_names_the_patch(font: TTFont) -> None:
+    versions = [r.toUnicode() for r in font["name"].names if r.nameID == 5]
+    assert versions
+    assert all("geomcad" in v for v in versions), versions
+    assert font["name"].getDebugName(1) == "osifont"
