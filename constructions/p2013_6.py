@@ -286,19 +286,21 @@ def build(p: Mapping[str, ParamValue]) -> Build:
         )
     box = _extent(c, cands, l3, l4)
     geo = Geometry(H, K, l3, l4, e, theta, tuple(cands), chosen, mech, phi_min, phi_max, box)
-    return Build(results, c, notes, {"l": sheet_k_l(box)}, geo)
+    seed_data = all(p[q.name] == q.default for q in PARAMS)
+    return Build(results, c, notes, {"l": sheet_k_l(box, seed_data)}, geo)
 
 
 #: The field the mechanism is drawn in on the sheet (mm: x0, y0, x1, y1), left of the tables.
 VIEW = (24.0, 24.0, 256.0, 290.0)
 
 
-def sheet_k_l(box: tuple[float, float, float, float]) -> float:
-    """k_l of the sheet: the seed's 0.005 m/mm (1:5) when the drawing fits, else the largest
-    GOST 2.302 scale at which it does."""
+def sheet_k_l(box: tuple[float, float, float, float], seed_data: bool) -> float:
+    """k_l of the sheet: for the seed's data the seed's 0.005 m/mm (1:5), so that its drawing
+    and ours can be laid side by side; otherwise the largest GOST 2.302 scale at which the
+    drawing fits the field."""
     w, h = box[2] - box[0], box[3] - box[1]
     room_w, room_h = VIEW[2] - VIEW[0], VIEW[3] - VIEW[1]
-    if w / SEED_K_L <= room_w and h / SEED_K_L <= room_h:
+    if seed_data and w / SEED_K_L <= room_w and h / SEED_K_L <= room_h:
         return SEED_K_L
     return gost_length_scale(max(w * room_h / room_w, h), room_h).k
 

@@ -47,6 +47,8 @@ DIRECTIONS: tuple[tuple[float, float], ...] = (
     (1, -1), (-1, -1), (1, 1), (-1, 1), (1, 0), (-1, 0), (0, -1), (0, 1),
 )  # fmt: skip
 LABEL_PAD = 0.4
+#: Baseline-to-baseline distance of wrapped text, in cap heights (GOST 2.304, type B: 17/10 h).
+LINE_SPACING = 1.7
 
 
 def _dist(a: XY, b: XY) -> float:
@@ -142,6 +144,43 @@ class Drawing:
                     )
                 xx += w
         return total_w, total_h
+
+    def paragraph(
+        self,
+        markup: str,
+        x: float,
+        y: float,
+        width: float,
+        height: float = 2.5,
+        indent: float = 0.0,
+    ) -> float:
+        """Text from (x, y top) wrapped at spaces into lines of at most ``width`` mm; following
+        lines are indented by ``indent`` mm. Returns the y below the last line."""
+        lead = height * LINE_SPACING
+        line: list[str] = []
+        base = y + height
+        for word in markup.split(" "):
+            trial = " ".join([*line, word])
+            room = width - (indent if base > y + height else 0.0)
+            if line and box(parse(trial), height)[0] > room:
+                self.text(
+                    " ".join(line),
+                    (x + (indent if base > y + height else 0.0), base),
+                    height,
+                    role="title",
+                )
+                base += lead
+                line = [word]
+            else:
+                line.append(word)
+        if line:
+            self.text(
+                " ".join(line),
+                (x + (indent if base > y + height else 0.0), base),
+                height,
+                role="title",
+            )
+        return base + lead - height
 
     # -- label placement -----------------------------------------------------------------------
     def finish(self) -> Sheet:
