@@ -114,22 +114,24 @@ class Scale:
 
 
 def gost_length_scale(extent_m: float, room_mm: float) -> Scale:
-    """The largest GOST 2.302 scale at which ``extent_m`` metres fit in ``room_mm`` millimetres."""
-    if not (extent_m > 0.0 and room_mm > 0.0):
-        raise ParameterError("extent", extent_m, "a drawing needs a positive size and room")
-    best: Fraction | None = None
-    for g in GOST_RATIOS:
-        if extent_m * 1000.0 * float(g) <= room_mm:
-            best = g
-    if best is None:
-        best = GOST_RATIOS[0]
-    return Scale(float(Fraction(1, 1000) / best), "l")
+    """The largest GOST 2.302 scale at which ``extent_m`` metres fit in ``room_mm`` millimetres.
+
+    A drawing too large even at the smallest listed reduction is a :class:`ParameterError`.
+    """
+    if not (0.0 < extent_m < math.inf and 0.0 < room_mm < math.inf):
+        raise ParameterError("extent", extent_m, "a drawing needs a finite positive size and room")
+    fitting = [g for g in GOST_RATIOS if extent_m * 1000.0 * float(g) <= room_mm]
+    if not fitting:
+        raise ParameterError(
+            "extent", extent_m, f"too large for {room_mm:g} mm even at 1:{1 / GOST_RATIOS[0]}"
+        )
+    return Scale(float(Fraction(1, 1000) / fitting[-1]), "l")
 
 
 def nice_factor(value_max: float, room_mm: float, q: Quantity) -> Scale:
     """The smallest factor 1, 2, 2.5, 4 or 5 × 10^n at which ``value_max`` fits in ``room_mm``."""
-    if not (value_max > 0.0 and room_mm > 0.0):
-        raise ParameterError(f"k_{q}", value_max, "a plan needs a positive size and room")
+    if not (0.0 < value_max < math.inf and 0.0 < room_mm < math.inf):
+        raise ParameterError(f"k_{q}", value_max, "a plan needs a finite positive size and room")
     raw = value_max / room_mm
     e = math.floor(math.log10(raw))
     for exp in (e, e + 1):

@@ -77,59 +77,63 @@ def _gap_pattern(line: LineType) -> tuple[tuple[float, ...], float, float, float
     return pat, sum(pat), lo, target
 
 
+def _count(length: float, gap: float, lo: float, target: float, least: int, step: int) -> int:
+    """The number of dashes nearest the target dash length that keeps every dash ≥ ``lo``;
+    at least ``least`` (stepping by ``step`` to keep the parity); 0 when not even that fits."""
+    n = max(least, round((length + gap) / (target + gap)))
+    if (n - least) % step:
+        n -= 1
+    while n >= least and (length - (n - 1) * gap) / n < lo:
+        n -= step
+    return n if n >= least else 0
+
+
 def fit_open(line: LineType, length: float) -> Dash | None:
     """The dash pattern for an open line of ``length`` mm that starts and ends with a dash.
 
-    ``None`` for a solid line, or for a line too short to hold two dashes (drawn solid, as
-    GOST allows for short centre lines).
+    ``None`` for a solid line, or for a line too short to hold two dashes of GOST length (drawn
+    solid, as GOST allows for short centre lines).
     """
     if line == "solid" or length <= 0.0:
         return None
     gap_pat, gap, lo, target = _gap_pattern(line)
-    n = max(1, round((length + gap) / (target + gap)))
-    while n > 1 and (length - (n - 1) * gap) / n < lo:
-        n -= 1
-    if n == 1:
+    n = _count(length, gap, lo, target, 2, 1)
+    if n == 0:
         return None
-    dash = (length - (n - 1) * gap) / n
-    return Dash((dash, *gap_pat))
+    return Dash(((length - (n - 1) * gap) / n, *gap_pat))
 
 
 def fit_closed(line: LineType, length: float) -> Dash | None:
     """The dash pattern for a closed line (a circle) of perimeter ``length`` mm.
 
-    A whole number of periods fits the perimeter, and the offset centres a gap on the start
-    point, so the pattern is symmetric about it.
+    A whole number of periods (at least two) fits the perimeter, and the offset centres a gap on
+    the start point, so the pattern is symmetric about it.
     """
     if line == "solid" or length <= 0.0:
         return None
     gap_pat, gap, lo, target = _gap_pattern(line)
-    n = max(1, round(length / (target + gap)))
-    while n > 1 and length / n - gap < lo:
+    n = max(2, round(length / (target + gap)))
+    while n >= 2 and length / n - gap < lo:
         n -= 1
-    dash = length / n - gap
-    if n < 2 or dash < lo:
+    if n < 2:
         return None
+    dash = length / n - gap
     return Dash((dash, *gap_pat), offset=dash + gap / 2.0)
 
 
 def fit_centre_line(line: LineType, half: float) -> Dash | None:
     """The pattern for a centre line of length 2·``half`` whose middle falls inside a dash.
 
-    The two halves mirror each other: an odd number of dashes, the middle one centred on the
-    centre, so that two such lines cross at a dash (GOST 2.303).
+    An odd number of dashes (at least three), the middle one centred on the centre, so that two
+    such lines cross at a dash (GOST 2.303). ``None`` when three dashes do not fit.
     """
-    d = fit_open(line, 2.0 * half)
-    if d is None:
+    if line == "solid" or half <= 0.0:
         return None
-    gap_pat, gap, lo, _target = _gap_pattern(line)
-    n = round((2.0 * half + gap) / (d.array[0] + gap))
-    if n % 2 == 0:
-        n -= 1
-    dash = (2.0 * half - (n - 1) * gap) / n if n >= 1 else 0.0
-    if n < 3 or dash < lo:
+    gap_pat, gap, lo, target = _gap_pattern(line)
+    n = _count(2.0 * half, gap, lo, target, 3, 2)
+    if n == 0:
         return None
-    return Dash((dash, *gap_pat))
+    return Dash(((2.0 * half - (n - 1) * gap) / n, *gap_pat))
 
 
 def arc_length(r: float, sweep: float) -> float:
