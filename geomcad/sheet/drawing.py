@@ -157,30 +157,16 @@ class Drawing:
         """Text from (x, y top) wrapped at spaces into lines of at most ``width`` mm; following
         lines are indented by ``indent`` mm. Returns the y below the last line."""
         lead = height * LINE_SPACING
-        line: list[str] = []
-        base = y + height
+        lines: list[list[str]] = [[]]
         for word in markup.split(" "):
-            trial = " ".join([*line, word])
-            room = width - (indent if base > y + height else 0.0)
-            if line and box(parse(trial), height)[0] > room:
-                self.text(
-                    " ".join(line),
-                    (x + (indent if base > y + height else 0.0), base),
-                    height,
-                    role="title",
-                )
-                base += lead
-                line = [word]
-            else:
-                line.append(word)
-        if line:
-            self.text(
-                " ".join(line),
-                (x + (indent if base > y + height else 0.0), base),
-                height,
-                role="title",
-            )
-        return base + lead - height
+            room = width - (indent if len(lines) > 1 else 0.0)
+            if lines[-1] and box(parse(" ".join([*lines[-1], word])), height)[0] > room:
+                lines.append([])
+            lines[-1].append(word)
+        for i, words in enumerate(lines):
+            at = (x + (indent if i else 0.0), y + height + i * lead)
+            self.text(" ".join(words), at, height, role="title")
+        return y + height + (len(lines) - 1) * lead + (lead - height)
 
     # -- label placement -----------------------------------------------------------------------
     def finish(self) -> Sheet:
