@@ -255,6 +255,23 @@ def test_pdf_page_size_text_and_embedded_font() -> None:
     assert names and all("osifont" in n.lower() for n in names), names
 
 
+def test_pdf_is_byte_stable_and_still_valid() -> None:
+    """cairo stamps the time of writing (to the second); to_pdf pins it, so the same sheet
+    written a second later gives the same bytes."""
+    import time
+
+    from pypdf import PdfReader
+
+    svg = to_svg(text_sheet())
+    first = to_pdf(svg)
+    time.sleep(1.1)
+    second = to_pdf(svg)
+    assert first == second
+    assert b"/CreationDate (D:19700101000000Z)" in first
+    reader = PdfReader(io.BytesIO(first), strict=True)
+    assert "План" in reader.pages[0].extract_text()
+
+
 def test_png_decodes_at_the_expected_size() -> None:
     from PIL import Image
 

@@ -13,6 +13,7 @@ text is set in the same font whose metrics placed it.
 from __future__ import annotations
 
 import os
+import re
 from importlib import resources
 from pathlib import Path
 from types import ModuleType
@@ -49,10 +50,20 @@ def _cairosvg() -> ModuleType:
     return module
 
 
+#: cairo 1.16 stamps the PDF with the time of writing and ignores SOURCE_DATE_EPOCH.
+_CREATION_DATE = re.compile(rb"/CreationDate \(D:\d{14}Z\)")
+_EPOCH_DATE = b"/CreationDate (D:19700101000000Z)"
+
+
 def to_pdf(svg: str) -> bytes:
-    """The SVG as a one-page PDF whose page is the sheet's paper size; text stays real text."""
+    """The SVG as a one-page PDF whose page is the sheet's paper size; text stays real text.
+
+    The creation date is set to the epoch (a string of the same length, so the cross-reference
+    offsets stay right): the same sheet gives the same bytes.
+    """
     cairosvg = _cairosvg()
-    return bytes(cairosvg.svg2pdf(bytestring=svg.encode("utf-8")))
+    pdf = bytes(cairosvg.svg2pdf(bytestring=svg.encode("utf-8")))
+    return _CREATION_DATE.sub(_EPOCH_DATE, pdf, count=1)
 
 
 def to_png(svg: str, dpi: int = 150) -> bytes:
