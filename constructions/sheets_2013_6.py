@@ -61,9 +61,8 @@ def _construction(v: Viewport, geo: Any, c: Any) -> None:
     # the rocker's arc and the slider's path
     swing = Arc(Circle(O2, geo.l3), B1.angle - SWING_PAD, B0.angle + SWING_PAD)
     v.arc(swing, "centre")
-    path = Line.of((0.0, geo.l3), (1.0, 0.0))
-    xs = [c["C0"].x, c["C1"].x, c["B"].x] + [cd.O1.x for cd in geo.candidates if cd.line == 1]
-    v.line_over(path, [(x, geo.l3) for x in xs], "centre", over=12.0)
+    ends = [c["C0"], c["C1"], c["B"], *(cd.O1 for cd in geo.candidates if cd.line == 1)]
+    v.line_over(c["path"], ends, "centre", over=12.0)
     # B0B1, the perpendicular at B0 and the ray from B1 at 90° − θ, meeting in O
     v.seg(B0, B1, "construction")
     v.seg(B0, Op, "construction")
@@ -77,8 +76,7 @@ def _construction(v: Viewport, geo: Any, c: Any) -> None:
     chord = Line.through(B0, B1)
     for arc in (left, right):
         v.arc(arc, "construction")
-        rest = type(arc)(arc.circle, arc.end, arc.start)
-        v.arc(rest, "locus")
+        v.arc(Arc(arc.circle, arc.end, arc.start), "locus")
     gamma, gamma_m = c["Γ"], c["Γ′"]
     v.dot(gamma.c, "construction")
     for circ, name in ((gamma, "Γ"), (gamma_m, "Γ'")):
@@ -87,13 +85,12 @@ def _construction(v: Viewport, geo: Any, c: Any) -> None:
         far = circ.c + chord.normal * (side * circ.r)
         v.label(far, name, prefer=(0.0, side))
     # the lines at e from the path, and every solution
-    for line_no, tag in ((0, "–"), (1, "+")):
-        y = geo.l3 + (geo.e if line_no else -geo.e)
-        on = [cd.O1 for cd in geo.candidates if cd.line == line_no]
-        pts = [*on, Vec(0.0, y)]
-        v.line_over(Line.of((0.0, y), (1.0, 0.0)), pts, "construction", over=14.0)
-        ends = [Line.of((0.0, y), (1.0, 0.0)).param(q) for q in pts]
-        v.label(Vec(max(ends), y), f"y = l_3 {tag} e", height=2.5, prefer=(1.0, 1.0), clear=12.0)
+    for line_no, (step, tag) in enumerate((("m−", "–"), ("m+", "+"))):
+        m = c[step]
+        pts = [*(cd.O1 for cd in geo.candidates if cd.line == line_no), m.p]
+        v.line_over(m, pts, "construction", over=14.0)
+        far_end = Vec(max(q.x for q in pts), m.p.y)
+        v.label(far_end, f"y = l_3 {tag} e", height=2.5, prefer=(1.0, 1.0), clear=12.0)
     for i, cd in enumerate(geo.candidates):
         if cd is geo.chosen:
             continue
@@ -113,20 +110,17 @@ def _mechanism(v: Viewport, geo: Any, c: Any) -> None:
     ch = geo.chosen
     O1 = ch.O1
     mech = geo.mechanism
-    # the crank's dead centres: folded (A on the far side of O1) and extended
-    folded, extended = (B0, B1) if ch.O1B0 <= ch.O1B1 else (B1, B0)
-    A_f = O1 - (folded - O1).unit() * ch.l1
-    A_e = O1 + (extended - O1).unit() * ch.l1
+    # the crank pin at the dead centres: at the folded one (the nearer B) A lies on the far
+    # side of O1, at the extended one between O1 and B
+    folded = B0 if ch.O1B0 <= ch.O1B1 else B1
+    A0, A1 = (O1 + (Bx - O1).unit() * (-ch.l1 if Bx is folded else ch.l1) for Bx in (B0, B1))
     # the seed's solution: O1B0 and O1B1, the angle θ between them, the crank circle
     v.seg(O1, B0, "result")
     v.seg(O1, B1, "result")
     v.dim_angle(O1, B0, B1, "θ", r_mm=22.0)
     v.circle(O1, ch.l1, "centre")
     # extreme positions (two-dot lines)
-    for Bx, Cx, Ax in (
-        (B0, C0, A_f if folded is B0 else A_e),
-        (B1, C1, A_e if folded is B0 else A_f),
-    ):
+    for Bx, Cx, Ax in ((B0, C0, A0), (B1, C1, A1)):
         v.seg(O2, Bx, "extreme")
         v.seg(Bx, Cx, "extreme")
         v.seg(Ax, Bx, "extreme")
@@ -156,8 +150,8 @@ def _mechanism(v: Viewport, geo: Any, c: Any) -> None:
     v.label(C1, "C_1", prefer=(0.0, 1.0), clear=4.0)
     v.label(B0, "B_0", prefer=(-1.0, 1.0))
     v.label(B1, "B_1", prefer=(1.0, 1.0))
-    v.label(A_f, "A_0" if folded is B0 else "A_1", height=2.5)
-    v.label(A_e, "A_1" if folded is B0 else "A_0", height=2.5)
+    v.label(A0, "A_0", height=2.5)
+    v.label(A1, "A_1", height=2.5)
     mm = 1000.0
     v.dim_linear(O1, B0, f"O_1B_0 = {fmt_number(ch.O1B0 * mm, digits=4)}", offset=12.0, height=2.5)
     v.dim_linear(O1, B1, f"O_1B_1 = {fmt_number(ch.O1B1 * mm, digits=4)}", offset=-12.0, height=2.5)
