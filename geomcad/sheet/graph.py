@@ -1,0 +1,178 @@
+"""Diagrams on a sheet: a quantity plotted against another, each axis at its own scale factor.
+
+TMM draws kinematic and dynamic diagrams (S(φ), V(φ), a(φ), J_пр(φ), ω(φ), F(s) …) as graphs
+whose axes carry scale factors the way plans do: μ_φ in rad/mm, μ_S in m/mm. An :class:`Axis` is
+one such axis: its symbol, its unit, the range of values it must show and its factor (1, 2, 2.5, 4
+or 5 × 10^n units per mm, the smallest that fits the room). A :class:`Graph` puts two axes on the
+sheet with the data origin at a chosen sheet point, draws the axes with arrows, ticks and values,
+and plots curves, points and hatched areas (work under a force curve).
+"""
+
+from __future__ import annotations
+
+import itertools
+import math
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+import numpy as np
+
+from geomcad import tol
+from geomcad.errors import ParameterError
+from geomcad.sheet.drawing import DOT_R, Drawing, _arrow
+from geomcad.sheet.model import XY, CircleItem, Polyline
+from geomcad.sheet.scale import NICE, fmt_number
+from geomcad.sheet.style import fit_open, style
+
+#: Ticks are spaced at least this far apart on the paper (mm).
+TICK_MIN_MM = 8.0
+TICK_LEN = 1.5
+ARROW_OVER = 7.0  # the axis runs this far past the last value (mm), ending in an arrow
+HATCH_STEP_MM = 2.0
+
+
+def nice_step(raw: float) -> float:
+    """The smallest 1, 2, 2.5, 4 or 5 × 10^n that is ≥ ``raw`` (> 0)."""
+    e = math.floor(math.log10(raw))
+    for exp in (e, e + 1):
+        for m in NICE:
+            step = m * 10.0**exp
+            if step >= raw * (1.0 - tol.DERIVED):
+                return step
+    return 10.0 ** (e + 2)
+
+
+@dataclass(frozen=True)
+class Axis:
+    """One axis of a diagram.
+
+    ``symbol`` is label markup (``φ``, ``S``, ``J_{пр}``), ``unit`` the unit's text (``рад``,
+    ``м``), ``name`` the factor's subscript (μ_name), ``lo``…``hi`` the values shown (lo ≤ 0 ≤ hi
+    is not required: the axis line sits at 0 when 0 is in range, else at ``lo``) and ``k`` the
+    factor in units per mm.
+    """
+
+    symbol: str
+    unit: str
+    lo: float
+    hi: float
+    k: float
+    name: str = ""
+
+    @classmethod
+    def fit(
+        cls, symbol: str, unit: str, lo: float, hi: float, room_mm: float, name: str = ""
+    ) -> Axis:
+        """The axis whose nice factor puts ``lo``…``hi`` into ``room_mm`` millimetres.
+
+        A range with no extent (all values equal) is shown as ±|value| (or ±1 when zero), so a
+        constant quantity still gets a readable axis.
+        """
+        for what, x in (("lo", lo), ("hi", hi), ("room", room_mm)):
+            if not math.isfinite(x):
+                raise ParameterError(f"axis {symbol} {what}", x, "must be finite")
+        if room_mm <= 0.0:
+            raise ParameterError(f"axis {symbol} room", room_mm, "must be positive")
+        lo, hi = min(lo, hi), max(lo, hi)
+        if hi - lo <= 0.0:
+            m = abs(hi) or 1.0
+            lo, hi = -m, m
+        return cls(symbol, unit, lo, hi, nice_step((hi - lo) / room_mm), name or symbol)
+
+    @property
+    def zero(self) -> float:
+        """The value at which the other axis crosses this one."""
+        return 0.0 if self.lo <= 0.0 <= self.hi else self.lo
+
+    def mm(self, value: float) -> float:
+        return value / self.k
+
+    def ticks(self) -> list[float]:
+        """Tick values: a nice step at least :data:`TICK_MIN_MM` apart, through zero."""
+        step = nice_step(TICK_MIN_MM * self.k)
+        first = math.ceil(self.lo / step - tol.DERIVED)
+        last = math.floor(self.hi / step + tol.DERIVED)
+        return [i * step for i in range(first, last + 1)]
+
+    def factor_text(self, lang: str = "ru") -> str:
+        """``μ_φ = 0,02 рад/мм``."""
+        per = "мм" if lang == "ru" else "mm"
+        return f"μ_{{{self.name}}} = {fmt_number(self.k, lang)} {self.unit}/{per}"
+
+
+class Graph:
+    """A diagram: the data point (x0, y0) = (x.zero, y.zero) lands on sheet point ``at``."""
+
+    def __init__(self, drawing: Drawing, x: Axis, y: Axis, at: XY) -> None:
+        self.d = drawing
+        self.x, self.y = x, y
+        self.at = at
+
+    def p(self, x: float, y: float) -> XY:
+        """A data point on the sheet (y up in the data, down on the paper)."""
+        return (
+            self.at[0] + self.x.mm(x - self.x.zero),
+            self.at[1] - self.y.mm(y - self.y.zero),
+        )
+
+    @property
+    def box(self) -> tuple[float, float, float, float]:
+        """The sheet rectangle the data range covers (x0, y0, x1, y1), y down."""
+        a = self.p(self.x.lo, self.y.hi)
+        b = self.p(self.x.hi, self.y.lo)
+        return (a[0], a[1], b[0], b[1])
+
+    def axes(self, lang: str = "ru", tick_labels: bool = True, height: float = 2.5) -> None:
+        """Both axes with arrows, ticks, tick values and their symbols and units."""
+        x0, y0, x1, y1 = self.box
+        ax, ay = self.at
+        s = self.d.sheet
+        _arrow(s, (x0 - 2.0 if x0 < ax else ax, ay), (x1 + ARROW_OVER, ay), "vector")
+        _arrow(s, (ax, y1 + 2.0 if y1 > ay else ay), (ax, y0 - ARROW_OVER), "vector")
+        for v in self.x.ticks():
+            px, _ = self.p(v, self.y.zero)
+            s.add(Polyline(((px, ay), (px, ay + TICK_LEN)), "dimension"))
+            if tick_labels and v != self.x.zero:
+                self.d.text(fmt_number(v, lang, 4), (px, ay + TICK_LEN + height + 0.8), height,
+                            anchor="centre")  # fmt: skip
+        for v in self.y.ticks():
+            _, py = self.p(self.x.zero, v)
+            s.add(Polyline(((ax - TICK_LEN, py), (ax, py)), "dimension"))
+            if tick_labels and v != self.y.zero:
+                self.d.text(fmt_number(v, lang, 4), (ax - TICK_LEN - 0.8, py + height / 2.0),
+                            height, anchor="right")  # fmt: skip
+        self.d.text(
+            f"{self.x.symbol}, {self.x.unit}",
+            (x1 + ARROW_OVER, ay + TICK_LEN + 2.0 * height + 3.0),
+            3.5,
+            anchor="right",
+        )
+        self.d.text(f"{self.y.symbol}, {self.y.unit}", (ax + 2.0, y0 - ARROW_OVER + 3.0), 3.5)
+
+    def factors(self, at: XY, lang: str = "ru", height: float = 2.5) -> None:
+        """Both scale factors as one line of text with its baseline at ``at``."""
+        self.d.text(f"{self.x.factor_text(lang)};  {self.y.factor_text(lang)}", at, height)
+
+    def curve(self, xs: Sequence[float], ys: Sequence[float], role: str = "result") -> None:
+        """A polyline through the data points; non-finite points are a programming error."""
+        pts = tuple(self.p(float(a), float(b)) for a, b in zip(xs, ys, strict=True))
+        if not all(math.isfinite(c) for q in pts for c in q):
+            raise ValueError("a curve point is not finite")
+        length = sum(math.dist(a, b) for a, b in itertools.pairwise(pts))
+        self.d.sheet.add(Polyline(pts, role, dash=fit_open(style(role).line, length)))
+
+    def hatch(self, xs: Sequence[float], ys: Sequence[float], role: str = "construction") -> None:
+        """Vertical hatching between the x axis and the curve (an area such as a work)."""
+        x0, x1 = float(xs[0]), float(xs[-1])
+        n = max(2, int(abs(self.x.mm(x1 - x0)) / HATCH_STEP_MM))
+        for i in range(1, n):
+            x = x0 + (x1 - x0) * i / n
+            y = float(np.interp(x, xs, ys) if xs[0] < xs[-1] else np.interp(x, xs[::-1], ys[::-1]))
+            self.d.sheet.add(Polyline((self.p(x, self.y.zero), self.p(x, y)), role))
+
+    def point(self, x: float, y: float, markup: str = "", role: str = "point") -> None:
+        """A marked data point with an optional placed label."""
+        q = self.p(x, y)
+        self.d.sheet.add(CircleItem(q, DOT_R, role, fill=True))
+        if markup:
+            self.d.label(q, markup, 2.5, clear=DOT_R)

@@ -1,0 +1,52 @@
+"""Diagrams (geomcad.sheet.graph): nice factors, axes that hold their range, ticks through zero."""
+
+from __future__ import annotations
+
+import math
+
+import pytest
+
+from geomcad.errors import ParameterError
+from geomcad.sheet import TitleBlock, start
+from geomcad.sheet.graph import Axis, Graph, nice_step
+
+
+@pytest.mark.parametrize(
+    ("raw", "step"), [(0.013, 0.02), (0.02, 0.02), (0.021, 0.025), (3.1, 4.0), (4.5, 5.0), (7, 10)]
+)
+def test_nice_step(raw: float, step: float) -> None:
+    assert nice_step(raw) == pytest.approx(step, rel=1e-12)
+
+
+def test_axis_fits_its_room_and_ticks_pass_zero() -> None:
+    ax = Axis.fit("S", "м", -0.03, 0.11, 70.0)
+    assert ax.mm(ax.hi - ax.lo) <= 70.0
+    assert ax.mm(ax.hi - ax.lo) > 70.0 / 2.5  # the next nice factor down would not fit
+    ticks = ax.ticks()
+    assert 0.0 in ticks
+    assert all(ax.lo <= t <= ax.hi for t in ticks)
+    assert ax.factor_text() == "μ_{S} = 0,002 м/мм"
+
+
+def test_constant_range_and_bad_range() -> None:
+    ax = Axis.fit("J", "кг·м²", 2.0, 2.0, 50.0)
+    assert ax.lo == -2.0 and ax.hi == 2.0
+    with pytest.raises(ParameterError, match="axis S hi"):
+        Axis.fit("S", "м", 0.0, math.nan, 50.0)
+
+
+def test_graph_places_data_at_scale() -> None:
+    d = start("A4", TitleBlock(title="t", designation="x"), landscape=False)
+    g = Graph(
+        d,
+        Axis.fit("φ", "рад", 0.0, 2 * math.pi, 140.0),
+        Axis.fit("S", "м", 0, 0.1, 50),
+        (40.0, 120.0),
+    )
+    x, y = g.p(1.0, 0.05)
+    assert x == pytest.approx(40.0 + 1.0 / g.x.k)
+    assert y == pytest.approx(120.0 - 0.05 / g.y.k)
+    g.axes()
+    g.curve([0.0, 1.0, 2.0], [0.0, 0.05, 0.02])
+    with pytest.raises(ValueError, match="not finite"):
+        g.curve([0.0, 1.0], [0.0, math.inf])
