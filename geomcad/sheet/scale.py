@@ -30,6 +30,8 @@ GOST_RATIOS: tuple[Fraction, ...] = tuple(
 
 #: Mantissas of plan factors (DESIGN.md rule 6).
 NICE = (1.0, 2.0, 2.5, 4.0, 5.0)
+#: Mantissas of velocity and acceleration plan factors (1, 2 or 5 × 10^n: easy to read off).
+PLAN_NICE = (1.0, 2.0, 5.0)
 
 _UNITS = {
     "ru": {"l": "м/мм", "v": "(м/с)/мм", "a": "(м/с²)/мм", "F": "Н/мм"},
@@ -128,14 +130,17 @@ def gost_length_scale(extent_m: float, room_mm: float) -> Scale:
     return Scale(float(Fraction(1, 1000) / fitting[-1]), "l")
 
 
-def nice_factor(value_max: float, room_mm: float, q: Quantity) -> Scale:
-    """The smallest factor 1, 2, 2.5, 4 or 5 × 10^n at which ``value_max`` fits in ``room_mm``."""
+def nice_factor(
+    value_max: float, room_mm: float, q: Quantity, mantissas: tuple[float, ...] = NICE
+) -> Scale:
+    """The smallest factor m × 10^n (m one of ``mantissas``: 1, 2, 2.5, 4 or 5 by default) at
+    which ``value_max`` fits in ``room_mm``."""
     if not (0.0 < value_max < math.inf and 0.0 < room_mm < math.inf):
         raise ParameterError(f"k_{q}", value_max, "a plan needs a finite positive size and room")
     raw = value_max / room_mm
     e = math.floor(math.log10(raw))
     for exp in (e, e + 1):
-        for m in NICE:
+        for m in mantissas:
             k = m * 10.0**exp
             if k >= raw:
                 return Scale(k, q)

@@ -1,0 +1,203 @@
+"""2013-3 · Mechanism with a cross: the velocity plan.
+
+Links: 1 translates along O1O2 and carries A and B; block 2 is hinged to link 1 at B and slides in
+the slotted rocker 3 (pivot O1, slot along B–O1–C); the cross 4 slides with two perpendicular
+slides on link 3 (along O1C) and on link 5 (along O2C); link 5 rocks about O2 and carries the
+moment M.
+
+Frame (problems.md): O1 = (0, 0), O2 = (l_O1O2, 0); A = (−2·l_AB·cos α, 0) on the far side of O1;
+triangle O1AB is isosceles with base angles α (O1B = AB), B below O1O2; C is the foot of the
+perpendicular from O2 on the slot line (∠O1CO2 = 90°), above O1O2, on the other side of O1 from B.
+
+The velocity plan, as the seed draws it:
+- pa = V_A; link 1 translates, so b1 = a, and block 2 is hinged there, so b2 = b1;
+- V_B3 = V_B2 + V_B3B2 (∥ O1B) = V_O1 + V_B3O1 (⊥ O1B): two lines meet in b3; ω3 = pb3/l_O1B;
+- c3 is the image of C on link 3 (o1, b3, c3 on one line, pc3/pb3 = O1C/O1B, c3 opposite b3);
+- the cross slides on 3 and on 5 at a fixed right angle, so links 3, 4 and 5 turn together:
+  ω5 = ω3, and pc5 = ω5 × O2C (⊥ O2C);
+- V_C4 = V_C3 + V_C4C3 (∥ O1C) = V_C5 + V_C4C5 (∥ O2C): two lines meet in c4.
+
+The power balance on link 1 gives the force equivalent to M: F_red·|v_A| = |M·ω5|.
+
+Choices settled here (they change no published number): ``v_A`` is signed along +x (towards O2)
+and must not be zero; ``M`` may have either sign (its sense is drawn); every result is a
+magnitude, as problems.md's "Signs" rule asks.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+from dataclasses import dataclass
+from typing import Any
+
+from geomcad.construction import Construction, right_of
+from geomcad.errors import ParameterError
+from geomcad.geom import Vec
+from geomcad.kinematics.plan import Plan, Side, velocity_plan
+from geomcad.problem import Build, Param, ParamValue, Problem, ResultSpec, rounded
+from geomcad.sheet.plans import plan_scale
+from geomcad.sheet.scale import gost_length_scale
+
+ID = "2013-3"
+
+PARAMS = (
+    Param("v_A", 1.0, "velocity of link 1 along O1O2 (+: towards O2)", "m/s"),
+    Param("l_AB", 0.1, "link AB (= O1B: triangle O1AB is isosceles)", "m", gt=0.0),
+    Param("l_O1O2", 0.2, "distance between the pivots O1 and O2", "m", gt=0.0),
+    Param("M", 10.0, "moment on link 5 (shaft O2)", "N·m"),
+    Param(
+        "alpha_deg",
+        60.0,
+        "base angle α of triangle O1AB = slot angle to O1O2",
+        "deg",
+        gt=0.0,
+        lt=90.0,
+    ),
+)
+
+RESULTS = (
+    ResultSpec("V_B3", "m/s", "velocity of point B of link 3 (pb3)", "v"),
+    ResultSpec("V_B3B2", "m/s", "sliding velocity of block 2 in the slot of link 3 (b2b3)", "v"),
+    ResultSpec("omega3", "rad/s", "angular velocity of the slotted link 3"),
+    ResultSpec("V_C3", "m/s", "velocity of point C of link 3 (pc3)", "v"),
+    ResultSpec("omega5", "rad/s", "angular velocity of link 5 (= ω3)"),
+    ResultSpec("V_C5", "m/s", "velocity of point C of link 5 (pc5)", "v"),
+    ResultSpec("V_C4", "m/s", "velocity of the cross's centre C (pc4)", "v"),
+    ResultSpec("F_red", "N", "force on link 1 equivalent to M by equal power"),
+)
+
+SEED = {
+    "V_B3": rounded(0.866, 3, "V_B3 = 0,866 м/с"),
+    "V_B3B2": rounded(0.5, 1, "V_B3B2 = 0,5 м/с"),
+    "omega3": rounded(8.66, 2, "ω3 = 8,66 рад/с"),
+    "V_C3": rounded(0.866, 3, "V_C3 = V_B3"),
+    "omega5": rounded(8.66, 2, "ω5 = ω3 = 8,66 рад/с"),
+    "V_C5": rounded(1.5, 1, "V_C5 = 8,66·0,173 = 1,5 м/с"),
+    "V_C4": rounded(1.73, 2, "V_C4 = 1,73 м/с"),
+    "F_red": rounded(86.6, 1, "F = 86,6 Н"),
+}
+
+#: Sheet fields (mm: x0, y0, x1, y1) of the mechanism and of the velocity plan.
+MECH_VIEW = (26.0, 30.0, 222.0, 196.0)
+PLAN_VIEW = (236.0, 24.0, 410.0, 150.0)
+
+
+@dataclass(frozen=True)
+class Geometry:
+    """What the sheet needs besides the recorded steps."""
+
+    alpha: float
+    v_A: float
+    M: float
+    plan: Plan
+    extent: tuple[float, float, float, float]
+
+
+def _check(p: Mapping[str, ParamValue]) -> tuple[float, float, float, float, float]:
+    v_a, l_ab, l12, m, alpha_deg = (
+        float(p[n]) for n in ("v_A", "l_AB", "l_O1O2", "M", "alpha_deg")
+    )
+    if v_a == 0.0:
+        raise ParameterError("v_A", v_a, "must not be zero: a mechanism at rest has no plan")
+    return v_a, l_ab, l12, m, math.radians(alpha_deg)
+
+
+def build(p: Mapping[str, ParamValue]) -> Build:
+    """The positions by construction, then the velocity plan from its vector equations."""
+    v_a, l_ab, l12, m, alpha = _check(p)
+    c = Construction("2013-3: mechanism with a cross, velocity plan")
+    O1 = c.point("O1", (0.0, 0.0), note="pivot of the slotted link 3")
+    O2 = c.point("O2", (l12, 0.0), note="pivot of link 5")
+    A = c.point(
+        "A", (-2.0 * l_ab * math.cos(alpha), 0.0), op="on O1O2 beyond O1, O1A = 2·l_AB·cos α"
+    )
+    kA = c.circle("kA", A, l_ab, role="hidden", r_name="l_AB")
+    kO1 = c.circle("kO1", O1, l_ab, role="hidden", r_name="l_AB", note="O1B = AB")
+    B = c.intersect(
+        "B", kA, kO1, right_of(A, O1, "A→O1 (B below O1O2)"), role="link",
+        op="circle(A, l_AB) ∩ circle(O1, l_AB)",
+    )  # fmt: skip
+    slot = c.line_through("slot", B, O1, note="the slot of link 3, B–O1–C")
+    n5 = c.perpendicular("O2C", slot, O2, note="the cross keeps O2C ⊥ O1C")
+    C = c.intersect("C", slot, n5, role="link", op="slot ∩ perpendicular from O2")
+    c.value("l_O1B", O1.dist(B), "|O1B|", (O1, B))
+    c.value("l_O1C", O1.dist(C), "|O1C|", (O1, C))
+    c.value("l_O2C", O2.dist(C), "|O2C|", (O2, C))
+
+    vp = velocity_plan(c)
+    vp.fixed("o1")
+    vp.fixed("o2")
+    vp.given("a", Vec(v_a, 0.0), "V_A", "V_A ∥ O1O2 (link 1 translates)")
+    vp.same("b1", "a", "link 1 translates: V_B1 = V_A")
+    vp.same("b2", "b1", "block 2 is hinged to link 1 at B: V_B2 = V_B1")
+    vp.solve(
+        "b3",
+        Side("b2", O1 - B, "∥ O1B (V_B3B2 along the slot)"),
+        Side("o1", B - O1, "⊥ O1B (V_B3 about O1)", perpendicular=True),
+    )
+    v_b3 = vp.absolute("b3", "V_{B3}", "V_B3 ⊥ O1B")
+    v_b3b2 = vp.unknown("b2", "b3", "V_{B3B2}", "V_B3B2 ∥ O1B")
+    omega3 = c.value("ω3", vp.omega(O1, B, "o1", "b3"), "(O1B × pb3)/O1B², ccw > 0")
+    vp.image("c3", "o1", "b3", O1, B, C, why="C on link 3: o1b3c3 ~ O1BC")
+    v_c3 = vp.absolute("c3", "V_{C3}", "V_C3 ⊥ O1C")
+    omega5 = c.value("ω5", omega3, "= ω3: the cross slides on links 3 and 5 at a fixed right angle")
+    vp.rigid("c5", "p", O2, C, omega5, "V_{C5}", "V_C5 = ω5 × O2C, ⊥ O2C")
+    v_c5 = vp["c5"]
+    vp.solve(
+        "c4",
+        Side("c3", C - O1, "∥ O1C (V_C4C3: the cross slides on link 3)"),
+        Side("c5", C - O2, "∥ O2C (V_C4C5: the cross slides on link 5)"),
+    )
+    v_c4 = vp.absolute("c4", "V_{C4}", "V_C4 of the cross's centre")
+    vp.unknown("c3", "c4", "V_{C4C3}", "V_C4C3 ∥ O1C")
+    vp.unknown("c5", "c4", "V_{C4C5}", "V_C4C5 ∥ O2C")
+    f_red = c.value("F_red", abs(m * omega5) / abs(v_a), "|M·ω5| / |v_A| (equal power)")
+
+    results: dict[str, Any] = {
+        "V_B3": v_b3.norm,
+        "V_B3B2": v_b3b2.norm,
+        "omega3": abs(omega3),
+        "V_C3": v_c3.norm,
+        "omega5": abs(omega5),
+        "V_C5": v_c5.norm,
+        "V_C4": v_c4.norm,
+        "F_red": f_red,
+    }
+    box = _extent(c, l_ab)
+    k_l = _k_l(box)
+    k_v = plan_scale(vp, PLAN_VIEW[2] - PLAN_VIEW[0], PLAN_VIEW[3] - PLAN_VIEW[1] - 10.0).k
+    geo = Geometry(alpha, v_a, m, vp, box)
+    return Build(results, c, [], {"l": k_l, "v": k_v}, geo)
+
+
+def _extent(c: Construction, l_ab: float) -> tuple[float, float, float, float]:
+    """The model box the mechanism drawing needs: the links, the slots run past C and O2."""
+    pts = [c[n] for n in ("O1", "O2", "A", "B", "C")]
+    pad = 0.35 * l_ab
+    xs, ys = [q.x for q in pts], [q.y for q in pts]
+    return min(xs) - pad, min(ys) - pad, max(xs) + pad, max(ys) + pad
+
+
+def _k_l(box: tuple[float, float, float, float]) -> float:
+    """The largest GOST 2.302 scale at which the mechanism fills its field."""
+    w, h = box[2] - box[0], box[3] - box[1]
+    room_w, room_h = MECH_VIEW[2] - MECH_VIEW[0], MECH_VIEW[3] - MECH_VIEW[1]
+    return gost_length_scale(max(w * room_h / room_w, h), room_h).k
+
+
+def draw(solution: Any) -> list[tuple[str, Any]]:
+    from .sheets_2013_3 import sheets
+
+    return sheets(solution)
+
+
+PROBLEM = Problem(
+    id=ID,
+    title="Mechanism with a cross: velocity plan",
+    params=PARAMS,
+    results=RESULTS,
+    seed=SEED,
+    build=build,
+    draw=draw,
+)

@@ -1,0 +1,180 @@
+"""2013-3's drawing sheet: the mechanism with a cross at k_l and its velocity plan at k_v.
+
+A3 landscape. Left: the mechanism at the largest GOST scale that fills its field, with the links
+numbered, the angle α and the lengths dimensioned, the given velocity V_A and the senses of ω3,
+ω5 and M. Right: the velocity plan, each vector equation drawn as its two lines meeting, then the
+results beside the seed's and the vector equations in the order they were solved.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import TYPE_CHECKING, Any
+
+from geomcad.geom import Arc, Circle, Vec
+from geomcad.sheet import Drawing, Scale, Sheet, TitleBlock, Viewport, fmt_number, start
+from geomcad.sheet.drawing import _head
+from geomcad.sheet.plans import draw_plan
+
+if TYPE_CHECKING:
+    from geomcad.problem import Solution
+
+from .p2013_3 import MECH_VIEW, PLAN_VIEW
+
+#: Paper sizes of the symbols drawn beside the mechanism (mm).
+TURN_R = 9.0
+VA_LEN = 14.0
+
+
+def sheets(sol: Solution) -> list[tuple[str, Sheet]]:
+    """The main sheet of 2013-3."""
+    geo = sol.data
+    c = sol.construction
+    k = Scale(sol.scales["l"], "l")
+    kv = Scale(sol.scales["v"], "v")
+    tb = TitleBlock(
+        title="Механизм с крестовиной. План скоростей",
+        designation="ТММ.2013-3.01",
+        scale=k.ratio_text(),
+        organisation="geomcad",
+        developer="geomcad",
+    )
+    d = start("A3", tb)
+    x0, y0, x1, y1 = geo.extent
+    at = ((MECH_VIEW[0] + MECH_VIEW[2]) / 2.0, (MECH_VIEW[1] + 8.0 + MECH_VIEW[3]) / 2.0)
+    v = d.viewport(k, ((x0 + x1) / 2.0, (y0 + y1) / 2.0), at)
+    d.text("Схема механизма", (MECH_VIEW[0] + 2.0, 13.0), 5.0)
+    d.text(f"{k.label()}   (M {k.ratio_text() or '—'})", (MECH_VIEW[0] + 2.0, 20.0), 3.5)
+    _mechanism(v, geo, c, sol)
+    draw_plan(d, geo.plan, kv, PLAN_VIEW)
+    _panel(d, sol, kv)
+    return [("", d.finish())]
+
+
+def _turn(v: Viewport, centre: Vec, sense: float, start_deg: float, label: str) -> None:
+    """A curved arrow about ``centre``: 100° of arc, ``sense`` > 0 counter-clockwise."""
+    r = v.scale.model(TURN_R)
+    a0 = math.radians(start_deg)
+    a1 = a0 + math.radians(100.0)
+    v.arc(Arc(Circle(centre, r), a0, a1), "vector")
+    tip_angle = a1 if sense > 0 else a0
+    cx, cy = v.p(centre)
+    tip = (cx + TURN_R * math.cos(tip_angle), cy - TURN_R * math.sin(tip_angle))
+    s = 1.0 if sense > 0 else -1.0
+    _head(v.sheet, tip, (-math.sin(tip_angle) * s, -math.cos(tip_angle) * s), "vector")
+    lab = centre + Vec.polar(r * 1.5, (a0 + a1) / 2.0)
+    v.label(lab, label, 3.5, clear=0.5)
+
+
+def _mechanism(v: Viewport, geo: Any, c: Any, sol: Solution) -> None:
+    O1, O2, A, B, C = (c[n] for n in ("O1", "O2", "A", "B", "C"))
+    u3 = (C - B).unit()  # along the slot, from B through O1 to C
+    u5 = (C - O2).unit()
+    ext = v.scale.model(14.0)
+    # link 1: the body AB sliding along O1O2 on its guide
+    v.guide(A - Vec(v.scale.model(14.0), 0.0), A + Vec(v.scale.model(14.0), 0.0), (0.0, -1.0))
+    v.seg(A, B, "link")
+    v.slider(A)
+    # link 3: the slotted rocker B–O1–C, run past B and C
+    v.seg(B - u3 * ext, C + u3 * ext, "link")
+    # link 5: O2 through C and on
+    v.seg(O2, C + u5 * ext, "link")
+    v.seg(O1, O2, "centre")
+    # block 2 in the slot at B; the cross 4 at C, one slide on each link
+    v.slider(B, u3)
+    v.slider(C, u3)
+    v.slider(C, u5)
+    v.pivot(O1)
+    v.pivot(O2)
+    # the given velocity, and the senses of ω3 (= ω5) and of M
+    sgn = 1.0 if geo.v_A > 0 else -1.0
+    tip = A + Vec(sgn * v.scale.model(VA_LEN), 0.0)
+    va_from = A + Vec(0.0, v.scale.model(7.0))
+    v.arrow(va_from, tip + Vec(0.0, v.scale.model(7.0)), "result")
+    v.label(tip + Vec(0.0, v.scale.model(7.0)), "V_A", 3.5, prefer=(0.0, 1.0), clear=1.0)
+    w3 = c["ω3"]
+    _turn(v, O1, w3, math.degrees((C - O1).angle) + 20.0, "ω_3")
+    m_sense = -w3 * (1.0 if geo.M >= 0 else -1.0)  # M resists the motion when M > 0
+    _turn(v, O2, m_sense, -60.0, "M")
+    # letters and link numbers
+    v.label(O1, "O_1", prefer=(0.0, -1.0), clear=4.0)
+    v.label(O2, "O_2", prefer=(1.0, -1.0), clear=4.0)
+    v.label(A, "A", prefer=(-1.0, -1.0), clear=5.0)
+    v.label(B, "B", prefer=(-1.0, -1.0), clear=5.0)
+    v.label(C, "C", prefer=(-1.0, 1.0), clear=5.0)
+    for q, n in (
+        (A + (B - A) * 0.5, "1"),
+        (B + u3 * v.scale.model(8.0), "2"),
+        (O1 + (C - O1) * 0.55, "3"),
+        (C + u3 * v.scale.model(9.0), "4"),
+        (O2 + (C - O2) * 0.5, "5"),
+    ):
+        v.label(q, n, 3.5, clear=0.8)
+    # the given geometry, dimensioned
+    v.dim_angle(O1, O2, C, "α", r_mm=16.0, height=3.5)
+    l_ab, l12 = (
+        fmt_number(A.dist(B) * 1000.0, digits=4),
+        fmt_number(O1.dist(O2) * 1000.0, digits=4),
+    )
+    v.dim_linear(A, B, f"l_{{AB}} = {l_ab}", offset=-10.0, height=2.5)
+    v.dim_linear(O1, O2, f"l_{{O1O2}} = {l12}", offset=-22.0, height=2.5)
+
+
+def _panel(d: Drawing, sol: Solution, kv: Scale) -> None:
+    """Below the plan: the results beside the seed's; below the mechanism: data and equations."""
+    r, seed = sol.results, sol.seed
+    x, y = PLAN_VIEW[0], PLAN_VIEW[3] + 4.0
+    d.text("Результаты", (x, y + 3.5), 3.5)
+    rows = [["Величина", "Точно", "На плане, мм", "Опубл.", "Разность"]]
+    for name, label, unit in (
+        ("V_B3", "V_{B3}", "м/с"),
+        ("V_B3B2", "V_{B3B2}", "м/с"),
+        ("omega3", "ω_3", "рад/с"),
+        ("V_C3", "V_{C3}", "м/с"),
+        ("omega5", "ω_5", "рад/с"),
+        ("V_C5", "V_{C5}", "м/с"),
+        ("V_C4", "V_{C4}", "м/с"),
+        ("F_red", "F_{пр}", "Н"),
+    ):
+        exact = float(r[name])
+        pub = seed.get(name)
+        on_plan = fmt_number(kv.mm(exact), digits=4) if unit == "м/с" else ""
+        rows.append(
+            [
+                label,
+                f"{fmt_number(exact, digits=6)} {unit}",
+                on_plan,
+                "" if pub is None else fmt_number(pub, digits=4),
+                "" if pub is None else fmt_number(exact - pub, digits=2),
+            ]
+        )
+    d.table(x, y + 6.0, (22.0, 44.0, 28.0, 22.0, 30.0), rows, row_h=5.5)
+    # given data and the order of the plan, under the mechanism
+    x, y = MECH_VIEW[0], MECH_VIEW[3] + 4.0
+    p = sol.params
+    d.text("Исходные данные", (x, y + 3.5), 3.5)
+    rows = [["Параметр", "Значение"]]
+    for name, label, unit in (
+        ("v_A", "v_A", "м/с"),
+        ("l_AB", "l_{AB}", "м"),
+        ("l_O1O2", "l_{O1O2}", "м"),
+        ("alpha_deg", "α", "°"),
+        ("M", "M", "Н·м"),
+    ):
+        rows.append([label, f"{fmt_number(float(p[name]))}{'' if unit == '°' else ' '}{unit}"])
+    d.table(x, y + 6.0, (22.0, 30.0), rows, row_h=5.5)
+    x2 = x + 58.0
+    yy = d.text("Порядок построения плана скоростей", (x2, y + 3.5), 3.5).at[1] + 2.0
+    steps = (
+        "pa = V_A; звено 1 движется поступательно: b_1 = b_2 = a;",
+        "V_{B3} = V_{B2} + V_{B3B2}: через b_2 – прямая вдоль O_1B, через p – перпендикуляр "
+        "к O_1B; их пересечение – точка b_3; ω_3 = pb_3/l_{O1B};",
+        "c_3 – по подобию: o_1b_3c_3 ~ O_1BC (c_3 на продолжении b_3p, pc_3/pb_3 = O_1C/O_1B);",
+        "крестовина скользит по звеньям 3 и 5 под прямым углом: ω_5 = ω_3; pc_5 = ω_5·l_{O2C}, "
+        "перпендикулярно O_2C;",
+        "V_{C4} = V_{C3} + V_{C4C3} = V_{C5} + V_{C4C5}: через c_3 – прямая вдоль O_1C, через "
+        "c_5 – вдоль O_2C; пересечение – c_4;",
+        "F_{пр} = |M·ω_5|/v_A (равенство мощностей).",
+    )
+    for i, step in enumerate(steps):
+        yy = d.paragraph(f"{i + 1}. {step}", x2, yy, 136.0, 2.5, indent=4.0) + 0.5

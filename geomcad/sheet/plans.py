@@ -1,0 +1,93 @@
+"""Velocity and acceleration plans on a sheet, drawn from the recorded :class:`Plan`.
+
+The plan is drawn as the subject draws it: the thin construction lines of each vector equation
+(each spanning the points it joins, a little beyond), the vectors with their arrowheads (the
+found ones in the result colour), the points lettered in lower case with subscripts (``b_3``;
+coincident points share one label, ``p, o_1, o_2``), and a title with the scale factor:
+"План скоростей, μ_V = 0,02 (м/с)/мм".
+"""
+
+from __future__ import annotations
+
+import re
+
+from geomcad.kinematics.plan import Plan
+from geomcad.sheet.drawing import Drawing, Viewport
+from geomcad.sheet.frame import Lang
+from geomcad.sheet.scale import PLAN_NICE, Scale, ScaleStyle, nice_factor
+
+#: Points closer than this on the paper (mm) share one label.
+SAME_POINT_MM = 0.8
+#: Construction lines run this far past the points they join (mm).
+LINE_OVER_MM = 8.0
+
+TITLES = {
+    "ru": {"v": "План скоростей", "a": "План ускорений"},
+    "en": {"v": "Velocity plan", "a": "Acceleration plan"},
+}
+
+
+def markup_of(name: str) -> str:
+    """A plan point's step name as label markup: ``b3`` → ``b_3``, ``n_BA`` → ``n_{BA}``,
+    ``c4'`` → ``c_4'``."""
+    m = re.fullmatch(r"([^\d_']+)_?([^']*)('*)", name)
+    if m is None or not m.group(2):
+        return name
+    base, sub, prime = m.groups()
+    return f"{base}_{{{sub}}}{prime}" if len(sub) > 1 else f"{base}_{sub}{prime}"
+
+
+def plan_scale(plan: Plan, width_mm: float, height_mm: float) -> Scale:
+    """The plan's factor (1, 2 or 5 × 10^n) at which the whole plan fits ``width × height``."""
+    x0, y0, x1, y1 = plan.extent()
+    need = max((x1 - x0) / width_mm, (y1 - y0) / height_mm)
+    return nice_factor(need, 1.0, plan.kind, PLAN_NICE)
+
+
+def draw_plan(
+    d: Drawing,
+    plan: Plan,
+    scale: Scale,
+    box: tuple[float, float, float, float],
+    lang: Lang = "ru",
+    style: ScaleStyle | None = None,
+) -> Viewport:
+    """Draw ``plan`` at ``scale`` centred in the sheet rectangle ``box`` (x0, y0, x1, y1; the
+    title goes on its top edge) and return the viewport (pole at the plan's origin)."""
+    x0, y0, x1, y1 = plan.extent()
+    bx0, by0, bx1, by1 = box
+    title = f"{TITLES[lang][plan.kind]}, {scale.label(style or ScaleStyle(lang=lang))}"
+    d.text(title, (bx0, by0 + 3.5), 3.5)
+    at = ((bx0 + bx1) / 2.0, (by0 + 6.0 + by1) / 2.0)
+    v = d.viewport(scale, ((x0 + x1) / 2.0, (y0 + y1) / 2.0), at)
+    over = scale.model(LINE_OVER_MM)
+    for ln in plan.lines:
+        solved = ln.step.rsplit(":", 1)[0]
+        ts = [ln.line.param(plan.points[n]) for n in (ln.through, solved)]
+        v.seg(ln.line.at(min(ts) - over), ln.line.at(max(ts) + over), "construction")
+    for vec in plan.vectors:
+        a, b = plan.points[vec.tail], plan.points[vec.head]
+        if scale.mm((b - a).norm) > 0.5:
+            v.arrow(a, b, "vector" if vec.known else "result")
+    groups: list[list[str]] = []
+    for name, p in plan.points.items():
+        for g in groups:
+            if scale.mm((plan.points[g[0]] - p).norm) < SAME_POINT_MM:
+                g.append(name)
+                break
+        else:
+            groups.append([name])
+    for g in groups:
+        q = plan.points[g[0]]
+        v.dot(q)
+        v.label(q, ", ".join(markup_of(n) for n in g), 3.5, clear=1.0)
+    return v
+
+
+def vector_rows(plan: Plan, scale: Scale, digits: int = 4) -> list[tuple[str, str, float, float]]:
+    """The plan's vectors as table rows: (step, label markup, value, length in mm)."""
+    rows = []
+    for vec in plan.vectors:
+        value = (plan.points[vec.head] - plan.points[vec.tail]).norm
+        rows.append((vec.step, vec.label, value, round(scale.mm(value), digits)))
+    return rows
