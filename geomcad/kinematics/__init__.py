@@ -1,14 +1,36 @@
-"""Kinematics: dyads over arrays of positions, the six-bar, velocity analogues."""
+"""Kinematics: dyads over arrays of positions, the six-bar and its sweeps, velocity and
+acceleration analogues."""
 
-from geomcad.kinematics.dyads import rrp, rrp_velocity, rrr, rrr_velocity
-from geomcad.kinematics.sixbar import SixBar, branch_sign, grashof_crank_rocker
+from geomcad.kinematics.dyads import (
+    angular_acceleration,
+    angular_velocity,
+    rrp,
+    rrp_acceleration,
+    rrp_velocity,
+    rrr,
+    rrr_acceleration,
+    rrr_velocity,
+)
+from geomcad.kinematics.sixbar import (
+    BLOCK,
+    SixBar,
+    SweepResult,
+    branch_sign,
+    grashof_crank_rocker,
+)
 
 __all__ = [
+    "BLOCK",
     "SixBar",
+    "SweepResult",
+    "angular_acceleration",
+    "angular_velocity",
     "branch_sign",
     "grashof_crank_rocker",
     "rrp",
+    "rrp_acceleration",
     "rrp_velocity",
     "rrr",
+    "rrr_acceleration",
     "rrr_velocity",
 ]

@@ -105,3 +105,79 @@ def rrp_velocity(p: Arr, vp: Arr, c: Arr, d: Arr, step: str = "RRP dyad") -> Arr
     _fail(step, np.abs(den) <= tol.ANGLE * scale, "the rod is perpendicular to the guide")
     v = dot(e, vp) / den
     return np.asarray(d * v[..., None], dtype=np.float64)
+
+
+def rrr_acceleration(
+    p1: Arr,
+    v1: Arr,
+    a1: Arr,
+    p2: Arr,
+    v2: Arr,
+    a2: Arr,
+    b: Arr,
+    vb: Arr,
+    step: str = "RRR dyad",
+) -> Arr:
+    """The acceleration of joint b of an RRR dyad from its two vector equations.
+
+    a_B = a_1 + a^n_B1 + a^τ_B1 = a_2 + a^n_B2 + a^τ_B2, where a^n_Bi = V_Bi² / l_i points from
+    B to p_i and a^τ_Bi ⊥ B p_i. Projected on the link B p_i the tangential term drops out and the
+    normal one is −|V_Bi|², so the two lines of the acceleration plan give the 2×2 system
+    (b − p_i)·a_B = (b − p_i)·a_i − |v_b − v_i|², solved in closed form.
+
+    ``p1, v1, a1`` and ``p2, v2, a2`` are the outer joints with their velocities and
+    accelerations, ``b, vb`` the dyad's joint and its velocity (from :func:`rrr_velocity`).
+    Raises :class:`NoIntersection` naming ``step`` where the links are collinear (dead position).
+    """
+    e1 = b - p1
+    e2 = b - p2
+    u1 = vb - v1
+    u2 = vb - v2
+    det = cross(e1, e2)
+    scale = np.sqrt(dot(e1, e1) * dot(e2, e2))
+    _fail(
+        step, np.abs(det) <= tol.ANGLE * scale, "the dyad is in a dead position (links collinear)"
+    )
+    r1 = dot(e1, a1) - dot(u1, u1)
+    r2 = dot(e2, a2) - dot(u2, u2)
+    ax = (r1 * e2[..., 1] - r2 * e1[..., 1]) / det
+    ay = (e1[..., 0] * r2 - e2[..., 0] * r1) / det
+    return np.stack([ax, ay], axis=-1)
+
+
+def rrp_acceleration(
+    p: Arr, vp: Arr, ap: Arr, c: Arr, vc: Arr, d: Arr, step: str = "RRP dyad"
+) -> Arr:
+    """The acceleration of slider c on a fixed guide along d (unit), linked to p by a rod.
+
+    a_C = a_P + a^n_CP + a^τ_CP with a_C ∥ the guide, a^n_CP = V_CP² / l from C to P and
+    a^τ_CP ⊥ CP. Projected on the rod: (c − p)·a_C = (c − p)·a_P − |v_c − v_p|², and a_C = α d.
+    Raises :class:`NoIntersection` naming ``step`` where the rod is perpendicular to the guide.
+    """
+    e = c - p
+    u = vc - vp
+    den = dot(e, d)
+    scale = np.sqrt(dot(e, e))
+    _fail(step, np.abs(den) <= tol.ANGLE * scale, "the rod is perpendicular to the guide")
+    alpha = (dot(e, ap) - dot(u, u)) / den
+    return np.asarray(d * alpha[..., None], dtype=np.float64)
+
+
+def angular_velocity(p: Arr, vp: Arr, q: Arr, vq: Arr) -> Arr:
+    """The angular velocity (rad/s, counter-clockwise > 0) of the link through p and q.
+
+    V_QP = V_Q − V_P ⊥ PQ and ω = V_QP / l_PQ, its sense that of V_QP turning about P:
+    ω = (q − p) × (v_q − v_p) / |q − p|².
+    """
+    e = q - p
+    return np.asarray(cross(e, vq - vp) / dot(e, e), dtype=np.float64)
+
+
+def angular_acceleration(p: Arr, ap: Arr, q: Arr, aq: Arr) -> Arr:
+    """The angular acceleration (rad/s², counter-clockwise > 0) of the link through p and q.
+
+    a_QP = a_Q − a_P = −ω² (q − p) + ε (q − p) turned 90°: only the tangential term has a
+    component across the link, so ε = (q − p) × (a_q − a_p) / |q − p|².
+    """
+    e = q - p
+    return np.asarray(cross(e, aq - ap) / dot(e, e), dtype=np.float64)
