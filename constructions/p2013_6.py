@@ -48,8 +48,14 @@ from geomcad.problem import (
 from geomcad.sheet.scale import gost_length_scale
 from geomcad.units import to_deg
 
+from .kin_2013_6 import Analysis, analyse
+
 ID = "2013-6"
 SEED_K_L = 0.005  # m/mm: the seed's k_l = 0.2 / 40
+#: The kinematics sheet (a drawing-only choice, the same for every variant): the crank turns
+#: ccw at ω1 = 10 rad/s and is drawn 60° past its position at the slider's left extreme.
+ANALYSIS_OMEGA1 = 10.0
+ANALYSIS_TURN = math.radians(60.0)
 
 PARAMS = (
     Param("H", 0.2, "slider stroke", "m", gt=0.0),
@@ -124,6 +130,7 @@ class Geometry:
     phi_min: float  # crank angle at the slider's left extreme
     phi_max: float
     extent: tuple[float, float, float, float]  # model box the sheet draws (xmin, ymin, xmax, ymax)
+    analysis: Analysis  # the plans at φ1 and the slider's diagrams (the kinematics sheet)
 
 
 def _check_params(p: Mapping[str, ParamValue]) -> tuple[float, float, float, float, float]:
@@ -285,7 +292,10 @@ def build(p: Mapping[str, ParamValue]) -> Build:
             "dead centres"
         )
     box = _extent(c, cands, l3, l4)
-    geo = Geometry(H, K, l3, l4, e, theta, tuple(cands), chosen, mech, phi_min, phi_max, box)
+    analysis = analyse(mech, phi_min + ANALYSIS_TURN, ANALYSIS_OMEGA1)
+    geo = Geometry(
+        H, K, l3, l4, e, theta, tuple(cands), chosen, mech, phi_min, phi_max, box, analysis
+    )
     seed_data = all(p[q.name] == q.default for q in PARAMS)
     return Build(results, c, notes, {"l": sheet_k_l(box, seed_data)}, geo)
 
@@ -357,8 +367,9 @@ def _mechanism(cd: Candidate, B0: Vec, B1: Vec, O2: Vec, l3: float, l4: float) -
 
 def draw(solution: Any) -> list[tuple[str, Any]]:
     from .sheets_2013_6 import sheets
+    from .sheets_2013_6_kin import kinematics_sheet
 
-    return sheets(solution)
+    return [*sheets(solution), kinematics_sheet(solution)]
 
 
 PROBLEM = Problem(

@@ -160,7 +160,7 @@ def test_update_writes_the_golden_file(tmp_path: Path, monkeypatch: pytest.Monke
 
 @pytest.fixture(scope="module")
 def sheet_2013_6() -> Sheet:
-    ((_name, sheet),) = geomcad.solve("2013-6").sheets()
+    _name, sheet = geomcad.solve("2013-6").sheets()[0]
     return sheet
 
 

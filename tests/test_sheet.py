@@ -104,7 +104,7 @@ def block_part(sheet: Sheet) -> tuple[list[Item], list[Item]]:
 
 
 def sheet_2013_6(**params: float) -> Sheet:
-    ((name, sheet),) = geomcad.solve("2013-6", **params).sheets()
+    name, sheet = geomcad.solve("2013-6", **params).sheets()[0]
     assert name == ""
     return sheet
 

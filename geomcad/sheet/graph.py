@@ -12,10 +12,10 @@ from __future__ import annotations
 
 import itertools
 import math
-from collections.abc import Sequence
 from dataclasses import dataclass
 
 import numpy as np
+import numpy.typing as npt
 
 from geomcad import tol
 from geomcad.errors import ParameterError
@@ -153,16 +153,18 @@ class Graph:
         """Both scale factors as one line of text with its baseline at ``at``."""
         self.d.text(f"{self.x.factor_text(lang)};  {self.y.factor_text(lang)}", at, height)
 
-    def curve(self, xs: Sequence[float], ys: Sequence[float], role: str = "result") -> None:
+    def curve(self, xs: npt.ArrayLike, ys: npt.ArrayLike, role: str = "result") -> None:
         """A polyline through the data points; non-finite points are a programming error."""
-        pts = tuple(self.p(float(a), float(b)) for a, b in zip(xs, ys, strict=True))
+        xa, ya = np.asarray(xs, dtype=np.float64), np.asarray(ys, dtype=np.float64)
+        pts = tuple(self.p(float(a), float(b)) for a, b in zip(xa, ya, strict=True))
         if not all(math.isfinite(c) for q in pts for c in q):
             raise ValueError("a curve point is not finite")
         length = sum(math.dist(a, b) for a, b in itertools.pairwise(pts))
         self.d.sheet.add(Polyline(pts, role, dash=fit_open(style(role).line, length)))
 
-    def hatch(self, xs: Sequence[float], ys: Sequence[float], role: str = "construction") -> None:
+    def hatch(self, xs: npt.ArrayLike, ys: npt.ArrayLike, role: str = "construction") -> None:
         """Vertical hatching between the x axis and the curve (an area such as a work)."""
+        xs, ys = np.asarray(xs, dtype=np.float64), np.asarray(ys, dtype=np.float64)
         x0, x1 = float(xs[0]), float(xs[-1])
         n = max(2, int(abs(self.x.mm(x1 - x0)) / HATCH_STEP_MM))
         for i in range(1, n):
