@@ -11,9 +11,8 @@ from __future__ import annotations
 import math
 from typing import TYPE_CHECKING, Any
 
-from geomcad.geom import Arc, Circle, Vec
+from geomcad.geom import Vec
 from geomcad.sheet import Drawing, Scale, Sheet, TitleBlock, Viewport, fmt_number, start
-from geomcad.sheet.drawing import _head
 from geomcad.sheet.plans import draw_plan
 
 if TYPE_CHECKING:
@@ -22,7 +21,6 @@ if TYPE_CHECKING:
 from .p2013_3 import MECH_VIEW, PLAN_VIEW
 
 #: Paper sizes of the symbols drawn beside the mechanism (mm).
-TURN_R = 9.0
 VA_LEN = 14.0
 
 
@@ -49,21 +47,6 @@ def sheets(sol: Solution) -> list[tuple[str, Sheet]]:
     draw_plan(d, geo.plan, kv, PLAN_VIEW)
     _panel(d, sol, kv)
     return [("", d.finish())]
-
-
-def _turn(v: Viewport, centre: Vec, sense: float, start_deg: float, label: str) -> None:
-    """A curved arrow about ``centre``: 100° of arc, ``sense`` > 0 counter-clockwise."""
-    r = v.scale.model(TURN_R)
-    a0 = math.radians(start_deg)
-    a1 = a0 + math.radians(100.0)
-    v.arc(Arc(Circle(centre, r), a0, a1), "vector")
-    tip_angle = a1 if sense > 0 else a0
-    cx, cy = v.p(centre)
-    tip = (cx + TURN_R * math.cos(tip_angle), cy - TURN_R * math.sin(tip_angle))
-    s = 1.0 if sense > 0 else -1.0
-    _head(v.sheet, tip, (-math.sin(tip_angle) * s, -math.cos(tip_angle) * s), "vector")
-    lab = centre + Vec.polar(r * 1.5, (a0 + a1) / 2.0)
-    v.label(lab, label, 3.5, clear=0.5)
 
 
 def _mechanism(v: Viewport, geo: Any, c: Any, sol: Solution) -> None:
@@ -93,9 +76,9 @@ def _mechanism(v: Viewport, geo: Any, c: Any, sol: Solution) -> None:
     v.arrow(va_from, tip + Vec(0.0, v.scale.model(7.0)), "result")
     v.label(tip + Vec(0.0, v.scale.model(7.0)), "V_A", 3.5, prefer=(0.0, 1.0), clear=1.0)
     w3 = c["ω3"]
-    _turn(v, O1, w3, math.degrees((C - O1).angle) + 20.0, "ω_3")
+    v.turn(O1, w3, math.degrees((C - O1).angle) + 20.0, "ω_3")
     m_sense = -w3 * (1.0 if geo.M >= 0 else -1.0)  # M resists the motion when M > 0
-    _turn(v, O2, m_sense, -60.0, "M")
+    v.turn(O2, m_sense, -60.0, "M")
     # letters and link numbers
     v.label(O1, "O_1", prefer=(0.0, -1.0), clear=4.0)
     v.label(O2, "O_2", prefer=(1.0, -1.0), clear=4.0)

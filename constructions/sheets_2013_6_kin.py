@@ -14,9 +14,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from geomcad.geom import Arc, Circle, Vec
 from geomcad.sheet import Sheet, TitleBlock, Viewport, fmt_number, gost_length_scale, start
-from geomcad.sheet.drawing import _head
 from geomcad.sheet.graph import Axis, Graph
 from geomcad.sheet.model import Polyline
 from geomcad.sheet.plans import draw_plan, plan_scale
@@ -82,18 +80,7 @@ def _mechanism(v: Viewport, c: Any, m: Any, an: Analysis) -> None:
         v.joint(q)
     v.pivot(O1)
     v.pivot(O2)
-    # ω1's sense: a curved arrow about O1
-    r_mm = 7.0
-    r = v.scale.model(r_mm)
-    a0 = an.phi1 + math.radians(25.0)
-    a1 = a0 + math.radians(90.0)
-    v.arc(Arc(Circle(O1, r), a0, a1), "vector")
-    tip_a = a1 if an.omega1 > 0 else a0
-    s = 1.0 if an.omega1 > 0 else -1.0
-    cx, cy = v.p(O1)
-    tip = (cx + r_mm * math.cos(tip_a), cy - r_mm * math.sin(tip_a))
-    _head(v.sheet, tip, (-math.sin(tip_a) * s, -math.cos(tip_a) * s), "vector")
-    v.label(O1 + Vec.polar(r * 1.6, (a0 + a1) / 2.0), "ω_1", 3.5, clear=0.5)
+    v.turn(O1, an.omega1, math.degrees(an.phi1) + 25.0, "ω_1", r_mm=7.0, sweep_deg=90.0)
     for q, name, pref in (
         (O1, "O_1", (-1.0, -1.0)),
         (O2, "O_2", (1.0, -1.0)),

@@ -414,6 +414,33 @@ class Viewport:
         self.sheet.add(Polyline(corners, "link", closed=True))
         self.sheet.add(CircleItem((x, y), JOINT_R, "joint", fill=True))
 
+    def turn(
+        self,
+        centre: PointLike,
+        sense: float,
+        start_deg: float,
+        markup: str = "",
+        r_mm: float = 9.0,
+        sweep_deg: float = 100.0,
+        role: str = "vector",
+    ) -> None:
+        """A curved arrow about ``centre`` (an angular velocity, a moment): an arc of
+        ``sweep_deg`` from ``start_deg`` (model degrees, ccw from +x), its head at the end the
+        sense points to (``sense`` > 0: counter-clockwise), and an optional label outside it."""
+        c = vec(centre)
+        r = self.scale.model(r_mm)
+        a0 = math.radians(start_deg)
+        a1 = a0 + math.radians(sweep_deg)
+        self.arc(Arc(Circle(c, r), a0, a1), role)
+        tip_angle = a1 if sense > 0 else a0
+        s = 1.0 if sense > 0 else -1.0
+        cx, cy = self.p(c)
+        tip = (cx + r_mm * math.cos(tip_angle), cy - r_mm * math.sin(tip_angle))
+        _head(self.sheet, tip, (-math.sin(tip_angle) * s, -math.cos(tip_angle) * s), role)
+        if markup:
+            mid = (a0 + a1) / 2.0
+            self.label(c + vec((math.cos(mid), math.sin(mid))) * (r * 1.5), markup, 3.5, clear=0.5)
+
     def arrow(self, a: PointLike, b: PointLike, role: str = "vector") -> None:
         """A vector from a to b with a filled arrowhead at b."""
         _arrow(self.sheet, self.p(a), self.p(b), role)
