@@ -388,6 +388,13 @@ def build(p: Mapping[str, ParamValue]) -> Build:
             f"offset |e| = {abs(e):.6g} m: M never reaches the foot of the perpendicular from O "
             "to the slot, so ML ⊥ MO never happens and V_T ≠ 0 in every position",
         )
+    if len(feet) == 1:
+        raise NoIntersection(
+            "M* = pusher path ∩ circle(O, |e|)",
+            f"the pusher path touches the circle (|h| = |e| = {abs(e):.6g} m): the slot tangent "
+            "at the touching point lies along the path itself, so M is not defined there, and "
+            "nearby V_T/ω1 tends to −e/2, not 0; ML ⊥ MO never happens with V_T = 0",
+        )
     zeros: list[ZeroPosition] = []
     for i, Mz in enumerate(feet):
         # OM* = e·n1, so n1 = OM*/e and the slot's direction is n1 turned −90°
@@ -432,17 +439,11 @@ def build(p: Mapping[str, ParamValue]) -> Build:
             f"analysed by the counts alone (n = {n}, p5 = {p5}, p4 = {p4}, local = {local}); "
             "the sheet still shows the vulcanizer model's schemes"
         )
-    if len(zeros) == 1:
-        notes.append(
-            "|h| = |e|: the path touches circle(O, |e|); V_T/ω1 touches zero there without "
-            "changing sign"
-        )
-    else:
-        notes.append(
-            "V_T/ω1 changes sign over a turn at θ1 = "
-            + ", ".join(f"{x:.6g}°" for x in sweep)
-            + " (a sweep of the velocity plan), the positions the construction finds"
-        )
+    notes.append(
+        "V_T/ω1 changes sign over a turn at θ1 = "
+        + ", ".join(f"{x:.6g}°" for x in sweep)
+        + " (a sweep of the velocity plan), the positions the construction finds"
+    )
     results: dict[str, Any] = {
         **ws,
         "zero_theta1_deg": zero_deg,

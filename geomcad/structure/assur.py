@@ -118,7 +118,7 @@ def _check(mech: Mechanism, drivers: Sequence[str]) -> list[Primary]:
     if higher:
         raise ConstructionError(
             STEP,
-            f"pair {', '.join(higher)} is higher: replace the higher pairs by lower ones first",
+            f"higher pairs {', '.join(higher)}: replace the higher pairs by lower ones first",
         )
     mob = mobility(mech)
     if mob.local:

@@ -199,7 +199,8 @@ def local_mobilities(mech: Mechanism) -> tuple[LocalMobility, ...]:
         rows = [_pair_rows(p, ref, size) * (1.0 if p.a == lk else -1.0) for p in pairs]
         m = np.vstack(rows) if rows else np.zeros((0, 3))
         basis = _null_space(m) if m.size else np.eye(3)
-        for w, vx, vy in basis:
+        for row in basis:
+            w, vx, vy = (float(x) for x in row)
             if abs(w) > tol.RANK:
                 # the point of zero velocity: v + ω × (c − ref) = 0
                 wr = w / size
