@@ -171,7 +171,11 @@ def _link_at(geo: Geometry) -> dict[str, Vec]:
     n1 = (p["L"] - p["S0"]).unit().perp()
     away = n1 if n1.dot(p["N"]) > 0.0 else -n1  # from O's side of the slot to the far side
     along = (p["L"] - p["S0"]).unit()
-    return {"6": p["M"] + away * (2.2 * r) + along * (2.5 * r), "8": p["M"] - away * (2.2 * r)}
+    return {
+        "6": p["M"] + away * (2.2 * r) + along * (2.5 * r),
+        "7": p["M"] + (p["F"] - p["M"]) * 0.85,
+        "8": p["M"] - away * (2.2 * r),
+    }
 
 
 def _schemes(d: Drawing, geo: Geometry, k: Scale, box: tuple[float, float, float, float]) -> None:
@@ -187,7 +191,7 @@ def _schemes(d: Drawing, geo: Geometry, k: Scale, box: tuple[float, float, float
         geo.before,
         _bodies(geo, roller=False),
         pair_labels=PAIR_TEXT,
-        link_labels={"6": _link_at(geo)["6"]},
+        link_labels={k: v for k, v in _link_at(geo).items() if k != "8"},
     )
     after = _viewport(d, k, box, AFTER)
     rep = geo.replaced.mechanism
