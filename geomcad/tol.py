@@ -20,6 +20,10 @@ TANGENT = 1e-10
 #: Relative tolerance used by tests and by ``close()`` for derived (not primitive) quantities.
 DERIVED = 1e-9
 
+#: Numerical rank of a constraint matrix (structure): singular values below RANK times the largest
+#: count as zero. The matrix is scaled so that its entries are of order one.
+RANK = 1e-9
+
 #: Root finding on angles (scipy brentq): absolute tolerance in radians.
 ROOT_ANGLE = 1e-14
 

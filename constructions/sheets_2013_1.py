@@ -1,0 +1,544 @@
+"""2013-1's drawing sheet: the structural schemes, the Assur groups and the dead position.
+
+A2 landscape. Top: the structural scheme before the replacement (roller 6 in the slot of lever 1)
+and after it (the substitute link 8, a slider block in the slot hinged to the roller at M, drawn
+in red), both in the given position θ1 at one GOST scale; then the replaced mechanism without the
+roller's spin, split into its Assur groups (drawn apart, each with its outer pairs). Bottom: the
+position with ML ⊥ MO built (circle(O, |e|) that the slot always touches, the pusher path, their
+common point M, the slot as the tangent there, OM and the right angle at M) with its velocity plan
+(V_M1 = −V_M6M1, V_T = 0), and the velocity plan at the given θ1. Right: the links and pairs, the
+W counts beside the seed's, the Assur groups, the zero positions and why the seed's "2 before, 1
+after" differs from the standard rule.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import TYPE_CHECKING
+
+from geomcad.geom import Line, Vec
+from geomcad.sheet import Drawing, Scale, Sheet, TitleBlock, Viewport, fmt_number, start
+from geomcad.sheet.scale import gost_length_scale, nice_factor
+from geomcad.sheet.scheme import Body, draw_scheme
+from geomcad.structure import Link, Mechanism, Pair
+
+if TYPE_CHECKING:
+    from geomcad.problem import Solution
+
+    from .p2013_1 import Geometry
+
+#: Fields (sheet mm: x0, y0, x1, y1).
+BEFORE = (24.0, 24.0, 150.0, 176.0)
+AFTER = (156.0, 24.0, 282.0, 176.0)
+GROUPS = (288.0, 24.0, 414.0, 176.0)
+POSITION = (24.0, 196.0, 226.0, 410.0)
+PLAN_ZERO = (232.0, 196.0, 398.0, 296.0)
+PLAN_GIVEN = (232.0, 304.0, 398.0, 410.0)
+PANEL_X = 422.0
+PANEL_W = 162.0
+
+#: Room (mm) for the longest plan vector.
+PLAN_ROOM = 60.0
+CIRCLE_STEPS = 48
+#: Height (mm) of a group's caption row.
+CAPTION = 7.0
+
+
+def _box(points: list[Vec], pad: float = 0.0) -> tuple[float, float, float, float]:
+    xs = [q.x for q in points]
+    ys = [q.y for q in points]
+    return min(xs) - pad, min(ys) - pad, max(xs) + pad, max(ys) + pad
+
+
+def _fit(box: tuple[float, float, float, float], field: tuple[float, ...]) -> Scale:
+    w, h = box[2] - box[0], box[3] - box[1]
+    room_w, room_h = field[2] - field[0], field[3] - field[1]
+    return gost_length_scale(max(w * room_h / room_w, h), room_h)
+
+
+def _lid_end(pts: dict[str, Vec]) -> Vec:
+    return pts["D"] + (pts["E"] - pts["D"]) * 1.6
+
+
+def _slot_corners(start: Vec, end: Vec, r: float) -> list[Vec]:
+    u = (end - start).unit()
+    n = u.perp() * r
+    return [start - n, end - n, end + n, start + n]
+
+
+def _scheme_points(geo: Geometry) -> list[Vec]:
+    pts = geo.points
+    keys = ("O", "N", "C", "A", "B", "M", "T", "F", "E", "D", "S0", "L")
+    out = [pts[k] for k in keys] + [_lid_end(pts)]
+    r = pts["R"].x
+    out += [pts["M"] + Vec(r, r), pts["M"] - Vec(r, r)]
+    return out
+
+
+def _position_points(geo: Geometry) -> list[Vec]:
+    e = abs(geo.e)
+    z = geo.zeros[geo.built]
+    up = Vec(math.cos(geo.psi), math.sin(geo.psi))
+    out = [Vec(-e, -e), Vec(e, e), z.L, z.M - z.u1 * (0.6 * e)]
+    out += [z.M + up * (1.7 * e), z.M - up * (0.4 * e)]
+    for q in geo.zeros:
+        out += [q.M + q.u1 * (0.9 * e), q.M - q.u1 * (0.9 * e)]
+    return out
+
+
+def _plan_values(geo: Geometry) -> float:
+    pts = geo.points
+    return max(pts["m1"].norm, pts["m6"].norm, (pts["m6"] - pts["m1"]).norm, abs(geo.e))
+
+
+def scales(geo: Geometry) -> dict[str, float]:
+    """k_l of the schemes ("l"), of the dead-position drawing ("l_pos") and k_v of the plans."""
+    k_s = _fit(_box(_scheme_points(geo)), BEFORE)
+    k_p = _fit(_box(_position_points(geo)), POSITION)
+    k_v = nice_factor(_plan_values(geo), PLAN_ROOM, "v")
+    return {"l": k_s.k, "l_pos": k_p.k, "v": k_v.k}
+
+
+def sheets(sol: Solution) -> list[tuple[str, Sheet]]:
+    """The main sheet of 2013-1."""
+    geo: Geometry = sol.data
+    ks = Scale(sol.scales["l"], "l")
+    kp = Scale(sol.scales["l_pos"], "l")
+    kv = Scale(sol.scales["v"], "v")
+    ratio = ks.ratio_text() + ("" if kp.k == ks.k else f"; {kp.ratio_text()}")
+    tb = TitleBlock(
+        title="Механизм крышки вулканизатора: структура и мёртвое положение толкателя",
+        designation="ТММ.2013-1.01",
+        scale=ratio,
+        organisation="geomcad",
+        developer="geomcad",
+    )
+    d = start("A2", tb)
+    box = _box(_scheme_points(geo))
+    _schemes(d, geo, ks, box)
+    _groups(d, geo)
+    _position(d, geo, kp)
+    _plans(d, geo, kv)
+    _panel(d, sol, geo)
+    return [("", d.finish())]
+
+
+# -- the schemes ------------------------------------------------------------------------------
+
+
+def _viewport(
+    d: Drawing, k: Scale, box: tuple[float, float, float, float], field: tuple[float, ...]
+) -> Viewport:
+    cx, cy = (box[0] + box[2]) / 2.0, (box[1] + box[3]) / 2.0
+    at = ((field[0] + field[2]) / 2.0, (field[1] + field[3]) / 2.0)
+    return d.viewport(k, (cx, cy), at)
+
+
+def _circle(c: Vec, r: float) -> Body:
+    return Body.of(
+        [c + Vec.polar(r, 2.0 * math.pi * i / CIRCLE_STEPS) for i in range(CIRCLE_STEPS)],
+        closed=True,
+    )
+
+
+def _bodies(geo: Geometry, roller: bool) -> dict[str, list[Body]]:
+    """The bodies of the vulcanizer's links that are not plain lines between pairs."""
+    p = geo.points
+    r = p["R"].x
+    n1 = (p["L"] - p["S0"]).unit().perp()
+    # the lever's arm from O ends on the slot's side facing O
+    side = 1.0 if n1.dot(p["N"]) > 0.0 else -1.0
+    out = {
+        "1": [
+            Body.of([p["C"], p["O"], p["N"] - n1 * (side * r)]),
+            Body.of(_slot_corners(p["S0"], p["L"], r), closed=True),
+        ],
+        "4": [Body.of([p["D"], p["E"], _lid_end(p)])],
+        "7": [Body.of([p["M"], p["F"]])],
+    }
+    if roller:
+        out["6"] = [_circle(p["M"], r)]
+    return out
+
+
+PAIR_TEXT = {k: k for k in ("O", "A", "B", "C", "M", "T", "D", "E", "F", "K")}
+
+
+def _link_at(geo: Geometry) -> dict[str, Vec]:
+    """Link numbers that need a place of their own: roller 6 above the slot, block 8 below."""
+    p = geo.points
+    r = p["R"].x
+    n1 = (p["L"] - p["S0"]).unit().perp()
+    away = n1 if n1.dot(p["N"]) > 0.0 else -n1  # from O's side of the slot to the far side
+    along = (p["L"] - p["S0"]).unit()
+    return {
+        "6": p["M"] + away * (2.2 * r) + along * (2.5 * r),
+        "7": p["M"] + (p["F"] - p["M"]) * 0.85,
+        "8": p["M"] - away * (2.2 * r),
+    }
+
+
+def _schemes(d: Drawing, geo: Geometry, k: Scale, box: tuple[float, float, float, float]) -> None:
+    before = _viewport(d, k, box, BEFORE)
+    d.text("Структурная схема до замены", (BEFORE[0], 12.0), 5.0)
+    d.text(
+        f"n = {geo.before.n}, p_5 = {geo.before.p5}, p_4 = {geo.before.p4};   {k.label()}",
+        (BEFORE[0], 19.0),
+        3.5,
+    )
+    draw_scheme(
+        before,
+        geo.before,
+        _bodies(geo, roller=False),
+        pair_labels=PAIR_TEXT,
+        link_labels={k: v for k, v in _link_at(geo).items() if k != "8"},
+    )
+    after = _viewport(d, k, box, AFTER)
+    rep = geo.replaced.mechanism
+    d.text("После замены высшей пары K", (AFTER[0], 12.0), 5.0)
+    d.text(
+        f"n = {rep.n}, p_5 = {rep.p5}, p_4 = {rep.p4};   заменяющее звено 8",
+        (AFTER[0], 19.0),
+        3.5,
+    )
+    draw_scheme(
+        after,
+        rep,
+        _bodies(geo, roller=True),
+        highlight=[s.link for s in geo.replaced.substitutes],
+        pair_labels=PAIR_TEXT,
+        link_labels=_link_at(geo),
+    )
+
+
+def _groups(d: Drawing, geo: Geometry) -> None:
+    """The seed's replaced mechanism (no roller: the block is link 6), split into the primary
+    mechanism and its Assur groups, each drawn on its own in a cell, all at one scale."""
+    mech = geo.seed_route
+    dec = geo.decomposition
+    d.text("Группы Ассура", (GROUPS[0], 12.0), 5.0)
+    parts: list[tuple[str, tuple[str, ...]]] = [
+        (f"I({dec.frame}, {p.link}): механизм I класса", (p.link,)) for p in dec.primary
+    ]
+    for g in dec.groups:
+        kind = f", {g.kind}" if g.kind else ""
+        parts.append((f"{', '.join(g.links)}: {g.roman} кл., {g.order} пор.{kind}", g.links))
+    bodies = _bodies(geo, roller=False)
+    subs = [_part(mech, part) for _, part in parts]
+    boxes = [_part_box(sub, bodies, part) for sub, (_, part) in zip(subs, parts, strict=True)]
+    # one column, a row per part as tall as the part: the largest GOST scale at which the
+    # widest part fits the column and all the rows fit the field
+    room_w = GROUPS[2] - GROUPS[0] - 6.0
+    room_h = GROUPS[3] - GROUPS[1] - CAPTION * len(parts)
+    widest = max(b[2] - b[0] for b in boxes)
+    total = sum(b[3] - b[1] for b in boxes)
+    k = gost_length_scale(max(widest * room_h / room_w, total), room_h)
+    d.text(f"{k.label()}   (M {k.ratio_text() or '—'})", (GROUPS[0], 19.0), 3.5)
+    spare = (room_h - total / k.k) / len(parts)
+    y0 = GROUPS[1]
+    for (caption, part), sub, box in zip(parts, subs, boxes, strict=True):
+        hh = (box[3] - box[1]) / k.k + CAPTION + spare
+        d.text(caption, (GROUPS[0] + 1.0, y0 + 4.0), 2.5)
+        field = (GROUPS[0] + 3.0, y0 + CAPTION, GROUPS[2] - 3.0, y0 + hh)
+        v = _viewport(d, k, box, field)
+        ghosts = [lk.id for lk in sub.links if lk.id not in part]
+        draw_scheme(
+            v,
+            sub,
+            {lk: bodies[lk] for lk in part if lk in bodies},
+            pair_labels={q.name: q.name for q in sub.pairs},
+            ghosts=ghosts,
+            label_height=2.5,
+        )
+        y0 += hh
+
+
+def _part_box(
+    sub: Mechanism, bodies: dict[str, list[Body]], part: tuple[str, ...]
+) -> tuple[float, float, float, float]:
+    pts = [q.at for q in sub.pairs]
+    pts += [x for lk in part for b in bodies.get(lk, []) for x in b.points]
+    return _box(pts)
+
+
+def _part(mech: Mechanism, part: tuple[str, ...]) -> Mechanism:
+    """One group (or the primary mechanism) on its own: its pairs with moving links outside it
+    join it to placeholder links (drawn as ghosts), its pairs with the frame stay."""
+    links = [lk for lk in mech.links if lk.id in part]
+    pairs: list[Pair] = []
+    outside: dict[str, str] = {}
+    for p in mech.pairs:
+        if not set(p.links) & set(part):
+            continue
+        for lk in p.links:
+            if lk not in part and lk != mech.frame:
+                outside.setdefault(lk, f"{lk}'")
+        pairs.append(
+            Pair(
+                p.name,
+                p.kind,
+                outside.get(p.a, p.a),
+                outside.get(p.b, p.b),
+                p.at,
+                p.axis,
+            )
+        )
+    links += [Link(x) for x in outside.values()]
+    return Mechanism(tuple(links), tuple(pairs), mech.frame)
+
+
+# -- the dead position and the plans ----------------------------------------------------------
+
+
+def _right_angle(v: Viewport, vertex: Vec, a: Vec, b: Vec, size_mm: float = 3.0) -> None:
+    s = v.scale.model(size_mm)
+    ua, ub = (a - vertex).unit() * s, (b - vertex).unit() * s
+    v.polyline([vertex + ua, vertex + ua + ub, vertex + ub], "construction")
+
+
+def _position(d: Drawing, geo: Geometry, k: Scale) -> None:
+    z = geo.zeros[geo.built]
+    e = abs(geo.e)
+    r = geo.points["R"].x
+    up = Vec(math.cos(geo.psi), math.sin(geo.psi))
+    th = fmt_number(math.degrees(z.theta1) % 360.0, digits=5)
+    d.text(
+        "Положение, в котором V_T = 0: ML перпендикулярна MO", (POSITION[0], POSITION[1] - 2.0), 5.0
+    )
+    d.text(f"{k.label()}   (M {k.ratio_text() or '—'})", (POSITION[0], POSITION[1] + 5.0), 3.5)
+    v = _viewport(
+        d, k, _box(_position_points(geo)), (*POSITION[:1], POSITION[1] + 8, *POSITION[2:])
+    )
+    O_ = Vec(0.0, 0.0)
+    v.circle(O_, e, "construction")
+    path = Line(up.perp() * geo.h, up)
+    v.line_over(path, [q.M for q in geo.zeros] + [path.foot(O_)], "centre", over=18.0)
+    # the other zero position: its slot as a two-dot line
+    for i, q in enumerate(geo.zeros):
+        if i == geo.built:
+            continue
+        v.seg(q.M - q.u1 * (0.9 * e), q.M + q.u1 * (0.9 * e), "extreme")
+        v.dot(q.M, "result")
+        v.label(q.M, "M'", prefer=(1.0, 0.0))
+        tq = fmt_number(math.degrees(q.theta1) % 360.0, digits=5)
+        v.label(q.M + q.u1 * (0.9 * e), f"θ_1 = {tq}°", height=2.5, prefer=(1.0, -1.0))
+    # the built position: lever 1 with its slot tangent to the circle at M
+    n1 = z.u1.perp()
+    side = 1.0 if n1.dot(z.M) > 0.0 else -1.0
+    start_ = z.M - z.u1 * (0.6 * e)
+    v.polyline(_slot_corners(start_, z.L, r), "link", closed=True)
+    v.seg(O_, z.M - n1 * (side * r), "link")
+    v.seg(start_ - z.u1 * (0.3 * e), z.L + z.u1 * (0.3 * e), "centre")
+    v.pivot(O_, (-(z.M.x), -(z.M.y)))
+    # pusher 7 with roller 6 at M
+    v.circle(z.M, r, "link")
+    v.seg(z.M, z.M + up * (1.6 * e), "link")
+    g0, g1 = z.M + up * (0.75 * e), z.M + up * (1.05 * e)
+    n = up.perp()
+    v.guide(g0, g1, (n.x, n.y))
+    v.guide(g1, g0, (-n.x, -n.y))
+    v.joint(z.M)
+    # OM ⊥ ML: the lever's arm is OM itself
+    _right_angle(v, z.M, O_, z.L, r / k.k + 5.0)
+    v.dot(z.L, "result")
+    v.label(O_, "O", prefer=(-1.0, -1.0), clear=3.0)
+    v.label(z.M, "M", prefer=(1.0, 1.0), clear=r / k.k + 0.5)
+    v.label(z.L, "L", prefer=(0.0, 1.0))
+    v.label(z.M + up * (1.6 * e), "7", prefer=(1.0, 0.0))
+    v.label(z.L - z.u1 * (0.3 * e), "1", prefer=(0.0, 1.0), clear=r / k.k + 0.5)
+    v.label((O_ + z.M) * 0.5, "|e|", prefer=(-n1.x, -n1.y), height=2.5)
+    v.label(z.L + z.u1 * (0.3 * e), f"θ_1 = {th}°", height=2.5, prefer=(1.0, -1.0))
+    foot = path.foot(O_)
+    if foot.norm > 0.0:
+        mm = 1000.0
+        v.dim_linear(O_, foot, f"|h| = {fmt_number(abs(geo.h) * mm, digits=4)}", 8.0, 2.5)
+
+
+def _plan_view(d: Drawing, kv: Scale, field: tuple[float, ...], pts: list[Vec]) -> Viewport:
+    box = _box(pts)
+    cx, cy = (box[0] + box[2]) / 2.0, (box[1] + box[3]) / 2.0
+    at = ((field[0] + field[2]) / 2.0, (field[1] + 16.0 + field[3]) / 2.0)
+    return d.viewport(kv, (cx, cy), at)
+
+
+def _plans(d: Drawing, geo: Geometry, kv: Scale) -> None:
+    pts = geo.points
+    z = geo.zeros[geo.built]
+    up = Vec(math.cos(geo.psi), math.sin(geo.psi))
+    th = fmt_number(math.degrees(z.theta1) % 360.0, digits=5)
+    # the plan of the zero position: pm1 and m1m6 on one line, m6 = p
+    m1 = pts["m1*"]
+    d.text(f"План скоростей при θ_1 = {th}°", (PLAN_ZERO[0], PLAN_ZERO[1] - 2.0), 5.0)
+    d.text(f"ω_1 = 1 рад/с, {kv.label()}", (PLAN_ZERO[0], PLAN_ZERO[1] + 5.0), 3.5)
+    p = Vec(0.0, 0.0)
+    v = _plan_view(d, kv, PLAN_ZERO, [p, m1])
+    ext = kv.model(14.0)
+    v.seg(p - up * ext, p + up * ext, "construction")
+    v.arrow(p, m1, "vector")
+    off = m1.perp().unit() * kv.model(1.2)
+    v.arrow(m1 + off, p + off, "result")
+    v.label(p, "p, m_6", prefer=(-1.0, -1.0))
+    v.label(m1, "m_1", prefer=(1.0, 1.0))
+    v.label((p + m1) * 0.5, "V_{M1} = –V_{M6M1}", height=2.5, prefer=(-m1.y, m1.x))
+    d.text("V_T = pm_6 = 0", (PLAN_ZERO[0], PLAN_ZERO[1] + 11.0), 3.5)
+    # the plan at the given θ1
+    m1, m6 = pts["m1"], pts["m6"]
+    u1 = Vec(math.cos(geo.theta1), math.sin(geo.theta1))
+    t1 = fmt_number(math.degrees(geo.theta1) % 360.0, digits=5)
+    d.text(f"План скоростей при θ_1 = {t1}° (заданное)", (PLAN_GIVEN[0], PLAN_GIVEN[1] - 2.0), 5.0)
+    d.text(f"ω_1 = 1 рад/с, {kv.label()}", (PLAN_GIVEN[0], PLAN_GIVEN[1] + 5.0), 3.5)
+    v = _plan_view(d, kv, PLAN_GIVEN, [p, m1, m6])
+    v.seg(m6 - u1 * ext, m6 + u1 * ext, "construction")
+    v.seg(m6 - up * ext, m6 + up * ext, "construction")
+    v.arrow(p, m1, "vector")
+    if (m6 - m1).norm > 0.0:
+        v.arrow(m1, m6, "vector")
+    if m6.norm > 0.0:
+        v.arrow(p, m6, "result")
+    v.label(p, "p", prefer=(-1.0, -1.0))
+    v.label(m1, "m_1", prefer=(1.0, 1.0))
+    v.label(m6, "m_6", prefer=(1.0, -1.0))
+    vt = fmt_number(float(pts["m6"].dot(up)), digits=5)
+    d.text(f"V_T/ω_1 = pm_6 = {vt} м", (PLAN_GIVEN[0], PLAN_GIVEN[1] + 11.0), 3.5)
+
+
+# -- the panel --------------------------------------------------------------------------------
+
+
+def _kind_ru(kind: str) -> str:
+    return {"R": "вращ.", "P": "поступ.", "slot": "ролик–паз", "cam": "кулачок", "gear": "зацепл."}[
+        kind
+    ]
+
+
+def _panel(d: Drawing, sol: Solution, geo: Geometry) -> None:
+    x, y = PANEL_X, 8.0
+    r = sol.results
+    seed = sol.seed
+    y = d.text("Звенья", (x, y + 3.5), 3.5).at[1] + 1.0
+    names = "; ".join(f"{lk.id} – {lk.name}" for lk in geo.before.links)
+    y = d.paragraph(names + "; 8 – заменяющее звено (ползун).", x, y, PANEL_W, 2.5) + 2.0
+    d.text("Кинематические пары", (x, y + 3.5), 3.5)
+    rows = [["Пара", "Звенья", "Вид", "Класс"]]
+    for p in geo.before.pairs:
+        rows.append([p.name, f"{p.a}–{p.b}", _kind_ru(p.kind), f"p_{p.pair_class}"])
+    for s in geo.replaced.substitutes:
+        for name in (s.pair_a, s.pair_b):
+            q = geo.replaced.mechanism.pair(name)
+            rows.append([f"{name}*", f"{q.a}–{q.b}", _kind_ru(q.kind), f"p_{q.pair_class}"])
+    _, h = d.table(x, y + 6.0, (18.0, 22.0, 28.0, 18.0), rows, row_h=5.0)
+    d.paragraph(
+        "* пары заменяющего звена 8 (вместо высшей пары K: центр кривизны ролика – M, паза – "
+        "в бесконечности).",
+        x + 90.0,
+        y + 6.0,
+        PANEL_W - 90.0,
+        2.5,
+    )
+    y += 6.0 + h + 5.0
+    d.text("Число степеней свободы", (x, y + 3.5), 3.5)
+    n, p5, p4, local = geo.counts
+    rows = [["Величина", "Счёт", "Точно", "Опубл."]]
+    if geo.counts_mode:
+        formal = f"3·{n} – 2·{p5} – {p4}"
+        after = f"3·{n + p4} – 2·{p5 + 2 * p4}"
+        seedr = f"3·{n - local + p4} – 2·{p5 - local + 2 * p4}"
+    else:
+        mb, ma, ms = geo.mob_before, geo.mob_after, geo.mob_seed
+        formal = f"3·{mb.n} – 2·{mb.p5} – {mb.p4}"
+        after = f"3·{ma.n} – 2·{ma.p5} – {ma.p4}"
+        seedr = f"3·{ms.n} – 2·{ms.p5}"
+    for name, label, how in (
+        ("W_formal", "W до замены", formal),
+        ("W_local", "W_{мест} (ролик 6)", "вращение ролика"),
+        ("W_true", "W_{ист}", "W – W_{мест}"),
+        ("W_after_replacement", "W после замены", after),
+        ("W_after_seed", "W по решению", seedr + " (без ролика)"),
+    ):
+        pub = seed.get(name)
+        rows.append([label, how, str(r[name]), "" if pub is None else fmt_number(pub)])
+    _, h = d.table(x, y + 6.0, (38.0, 72.0, 20.0, 20.0), rows, row_h=5.0)
+    y += 6.0 + h + 2.0
+    y = (
+        d.paragraph(
+            "Почему в решении «до замены 2, после 1»: замена высшей пары добавляет звено и две "
+            "низшие пары (3 – 2·2 + 1 = 0), W не меняется. W = 2 до замены учитывает местную "
+            "подвижность – вращение ролика 6 вокруг M, которое ничего не передаёт. После замены "
+            "решение считает уже без ролика (ролик стал ползуном в пазу: n = 7, p5 = 10), отсюда "
+            "1. При одном правиле счёта: 2 и 2 с местной подвижностью или 1 и 1 без неё; "
+            "истинное W = 1.",
+            x,
+            y,
+            PANEL_W,
+            2.5,
+        )
+        + 3.0
+    )
+    d.text("Группы Ассура (после замены, без вращения ролика)", (x, y + 3.5), 3.5)
+    dec = geo.decomposition
+    rows = [["Группа", "Звенья", "Пары", "Класс", "Порядок", "Вид"]]
+    for pm in dec.primary:
+        rows.append(["механизм I кл.", f"0, {pm.link}", pm.pair, "I", "–", "–"])
+    for i, g in enumerate(dec.groups):
+        kind = f"{g.kind} ({g.kind_no})" if g.kind else "–"
+        rows.append(
+            [
+                f"{i + 1}",
+                ", ".join(g.links),
+                ", ".join(g.pairs),
+                g.roman,
+                str(g.order),
+                kind,
+            ]
+        )
+    _, h = d.table(x, y + 6.0, (28.0, 18.0, 34.0, 16.0, 20.0, 26.0), rows, row_h=5.0)
+    y += 6.0 + h + 2.0
+    y = (
+        d.paragraph(
+            f"Формула строения: {dec.formula().replace('→', '+')}; механизм "
+            f"{['', 'I', 'II', 'III', 'IV'][min(dec.mechanism_class, 4)]} класса.",
+            x,
+            y,
+            PANEL_W,
+            2.5,
+        )
+        + 3.0
+    )
+    d.text("Скорость толкателя", (x, y + 3.5), 3.5)
+    zs = ", ".join(f"{fmt_number(t, digits=6)}°" for t in r["zero_theta1_deg"])
+    e, h_ = geo.e, geo.h
+    psi = math.degrees(geo.psi)
+    acos = math.degrees(math.acos(max(-1.0, min(1.0, h_ / e))))
+    sweep = ", ".join(f"{fmt_number(t, digits=6)}°" for t in geo.sweep_zeros_deg) or "нет"
+    t1 = fmt_number(math.degrees(geo.theta1) % 360.0, digits=5)
+    vt = fmt_number(float(r["VT_over_omega1"]), digits=6)
+    check = f"{fmt_number(psi, digits=6)}° ± {fmt_number(acos, digits=6)}°"
+    rows = [
+        ["Величина", "Значение"],
+        ["θ_1 при V_T = 0 (построение)", zs],
+        ["ψ ± arccos(h/e) (проверка)", check],
+        ["смена знака V_T/ω_1 за оборот", sweep],
+        [f"V_T/ω_1 при θ_1 = {t1}°", f"{vt} м"],
+    ]
+    _, h = d.table(x, y + 6.0, (80.0, 70.0), rows, row_h=5.0)
+    y += 6.0 + h + 2.0
+    y = d.paragraph(
+        "Построение: паз всегда касается окружности радиуса |e| с центром O (его расстояние до O "
+        "равно e). Скорость толкателя равна нулю, когда скорость точки M рычага 1 параллельна "
+        "пазу, т. е. OM перпендикулярна пазу; тогда M – точка касания, и она лежит на траектории "
+        "толкателя: M – общая точка траектории и окружности. Кроме того, скорость толкателя "
+        "равна нулю в крайних положениях четырёхзвенника 2–3–1 (ω1 = 0; его размеры не заданы).",
+        x,
+        y,
+        PANEL_W,
+        2.5,
+    )
+    if geo.counts_mode:
+        d.paragraph(
+            "Число степеней свободы посчитано по заданным n, p_5, p_4 и числу местных "
+            "подвижностей; схемы показывают модель механизма.",
+            x,
+            y + 2.0,
+            PANEL_W,
+            2.5,
+        )

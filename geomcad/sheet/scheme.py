@@ -1,0 +1,219 @@
+"""Structural schemes: a :class:`~geomcad.structure.Mechanism` drawn with ESKD kinematic symbols
+(GOST 2.770).
+
+Each pair gets its symbol where it sits: a revolute on the frame is a hinge on a hatched support
+(turned away from the links it carries), a revolute between moving links a joint circle, a
+prismatic pair on the frame a guide hatched on both sides of the sliding axis (with a slider
+block when the sliding link is a block), a prismatic pair between moving links a block on the
+other link's guide, a higher pair a roller's circle on the other link's profile. Each link is drawn
+as its body: by default the lines between its pairs (a closed outline for three or more), or the
+polylines the caller gives (a slot, a lid plate). Highlighted links (a substitute link) are drawn
+in the result role.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Collection, Mapping, Sequence
+from dataclasses import dataclass
+
+from geomcad.geom import PointLike, Vec, vec
+from geomcad.sheet.drawing import JOINT_R, SLIDER_SIZE, Viewport
+from geomcad.sheet.model import CircleItem, Polyline
+from geomcad.structure import Mechanism, Pair
+
+#: Half the length (mm) of a guide drawn for a prismatic pair on the frame.
+GUIDE_HALF = 7.0
+
+
+@dataclass(frozen=True)
+class Body:
+    """A polyline of a link's body, in model coordinates."""
+
+    points: tuple[Vec, ...]
+    closed: bool = False
+
+    @staticmethod
+    def of(points: Sequence[PointLike], closed: bool = False) -> Body:
+        return Body(tuple(vec(q) for q in points), closed)
+
+
+#: Points closer than this fraction of the scheme's size are drawn as one.
+_REL = 1.0 / 4096.0
+
+
+def _same(a: Vec, b: Vec, size: float) -> bool:
+    return a.dist(b) <= size * _REL
+
+
+def _points(mech: Mechanism, link: str) -> list[Vec]:
+    """The distinct points where ``link`` takes part in its pairs."""
+    size = mech.size()
+    out: list[Vec] = []
+    for p in mech.pairs_of(link):
+        q = p.at if p.lower else (p.centre_on(link) or p.at)
+        if not any(_same(q, o, size) for o in out):
+            out.append(q)
+    return out
+
+
+def default_body(mech: Mechanism, link: str) -> list[Body]:
+    """The lines between a link's pairs: a segment, or a closed outline around three or more."""
+    pts = _points(mech, link)
+    if len(pts) < 2:
+        return []
+    if len(pts) == 2:
+        return [Body(tuple(pts))]
+    cx = sum(q.x for q in pts) / len(pts)
+    cy = sum(q.y for q in pts) / len(pts)
+    ring = sorted(pts, key=lambda q: math.atan2(q.y - cy, q.x - cx))
+    return [Body(tuple(ring), closed=True)]
+
+
+def is_block(mech: Mechanism, link: str) -> bool:
+    """True when every pair of ``link`` sits at one point (a slider block or a roller)."""
+    return len(_points(mech, link)) == 1
+
+
+def draw_scheme(
+    v: Viewport,
+    mech: Mechanism,
+    bodies: Mapping[str, Sequence[Body]] | None = None,
+    highlight: Collection[str] = (),
+    pair_labels: Mapping[str, str] | None = None,
+    link_labels: Mapping[str, PointLike] | None = None,
+    label_height: float = 3.5,
+    ghosts: Collection[str] = (),
+) -> None:
+    """Draw ``mech`` in viewport ``v`` (see the module docstring).
+
+    ``bodies`` replaces the default body of the links it names; ``pair_labels`` maps pair names
+    to label markup (pairs it omits are not labelled; ``None`` labels every pair by its name, one
+    label per point); ``link_labels`` places each link's number at a model point (default: the
+    middle of the link's first body line). ``ghosts`` are links left undrawn and unlabelled: the
+    links an Assur group hangs on, when the group is drawn on its own; their pairs with the drawn
+    links still get their symbols (a joint, a block with a stub of its guide).
+    """
+    bodies = dict(bodies or {})
+    size = mech.size()
+    role = {lk: ("result" if lk in highlight else "link") for lk in mech.ids}
+    drawn: dict[str, list[Body]] = {}
+    for lk in mech.ids:
+        if lk in ghosts:
+            drawn[lk] = []
+            continue
+        drawn[lk] = list(bodies.get(lk, default_body(mech, lk)))
+        for b in drawn[lk]:
+            v.polyline(b.points, role[lk], closed=b.closed)
+    for p in mech.pairs:
+        if not p.lower:
+            _higher(v, mech, p, role)
+    for p in mech.pairs:
+        if p.kind == "P":
+            _prismatic(v, mech, p, role, ghosts)
+    for p in mech.pairs:
+        if p.kind == "R":
+            if mech.frame in p.links:
+                v.pivot(p.at, _support_direction(mech, p))
+            else:
+                v.joint(p.at)
+    _labels(v, mech, drawn, size, pair_labels, link_labels, label_height, ghosts)
+
+
+def _support_direction(mech: Mechanism, p: Pair) -> tuple[float, float]:
+    """The direction (model) of a frame hinge's support: away from the links it carries."""
+    link = p.other(mech.frame)
+    s = Vec(0.0, 0.0)
+    for q in _points(mech, link):
+        d = q - p.at
+        if d.norm > 0.0:
+            s = s + d.unit()
+    if s.norm <= _REL:
+        return (0.0, -1.0)
+    u = -s.unit()
+    return (u.x, u.y)
+
+
+def _block(v: Viewport, q: Vec, along: Vec, role: str) -> None:
+    """A slider block centred on q along the sliding axis; a highlighted block is filled."""
+    x, y = v.p(q)
+    ux, uy = along.x, -along.y
+    px, py = -uy, ux
+    hw, hh = SLIDER_SIZE[0] / 2.0, SLIDER_SIZE[1] / 2.0
+    corners = tuple(
+        (x + ux * sx * hw + px * sy * hh, y + uy * sx * hw + py * sy * hh)
+        for sx, sy in ((-1, -1), (1, -1), (1, 1), (-1, 1))
+    )
+    v.sheet.add(Polyline(corners, "joint" if role == "link" else role, closed=True, fill=True))
+    v.sheet.add(Polyline(corners, role, closed=True))
+
+
+def _prismatic(
+    v: Viewport, mech: Mechanism, p: Pair, role: Mapping[str, str], ghosts: Collection[str]
+) -> None:
+    assert p.axis is not None
+    u = p.axis
+    if any(lk in ghosts for lk in p.links):
+        # a group drawn on its own: its block with a stub of the guide it slides on
+        k = v.scale.model(GUIDE_HALF * 1.6)
+        v.seg(p.at - u * k, p.at + u * k, "centre")
+        for lk in p.links:
+            if lk not in ghosts and is_block(mech, lk):
+                _block(v, p.at, u, role[lk])
+        return
+    if mech.frame in p.links:
+        k = v.scale.model(GUIDE_HALF)
+        a, b = p.at - u * k, p.at + u * k
+        n = u.perp()
+        v.guide(a, b, (n.x, n.y))
+        v.guide(b, a, (-n.x, -n.y))
+        link = p.other(mech.frame)
+        if is_block(mech, link):
+            _block(v, p.at, u, role[link])
+        return
+    for lk in p.links:
+        if is_block(mech, lk):
+            _block(v, p.at, u, role[lk])
+            return
+
+
+def _higher(v: Viewport, mech: Mechanism, p: Pair, role: Mapping[str, str]) -> None:
+    for lk in p.links:
+        c = p.centre_on(lk)
+        if c is not None and c.dist(p.at) > 0.0:
+            v.circle(c, c.dist(p.at), role[lk])
+    x, y = v.p(p.at)
+    v.sheet.add(CircleItem((x, y), 0.5, "point", fill=True))
+
+
+def _labels(
+    v: Viewport,
+    mech: Mechanism,
+    drawn: Mapping[str, list[Body]],
+    size: float,
+    pair_labels: Mapping[str, str] | None,
+    link_labels: Mapping[str, PointLike] | None,
+    height: float,
+    ghosts: Collection[str],
+) -> None:
+    seen: list[Vec] = []
+    for p in mech.pairs:
+        text = p.name if pair_labels is None else pair_labels.get(p.name)
+        if not text or any(_same(p.at, q, size) for q in seen):
+            continue
+        seen.append(p.at)
+        v.label(p.at, text, height, clear=JOINT_R + 0.5)
+    for lk in mech.ids:
+        if lk in ghosts:
+            continue
+        if link_labels is not None and lk in link_labels:
+            at = vec(link_labels[lk])
+        elif drawn[lk]:
+            b = drawn[lk][0].points
+            at = (b[0] + b[1]) * 0.5
+        else:
+            pts = _points(mech, lk)
+            if not pts:
+                continue
+            at = pts[0]
+        v.label(at, lk, height, clear=1.0)
