@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
+import threading
 from dataclasses import dataclass
 from functools import cached_property
 
@@ -323,6 +324,19 @@ def _spread(values: dict[str, Num], n: int) -> dict[str, Num]:
     return out
 
 
+_local = threading.local()
+
+
+def _scratch(size: int) -> Arr:
+    """This thread's scratch buffer for a sweep's temporaries, kept between sweeps: a fresh one
+    each time would cost the page faults of a new allocation on every call."""
+    buf: Arr | None = getattr(_local, "scratch", None)
+    if buf is None or buf.size < size:
+        buf = np.empty(size)
+        _local.scratch = buf
+    return buf[:size]
+
+
 def _at(x: Num, sl: slice) -> Num:
     return x if isinstance(x, float) else x[sl]
 
@@ -458,10 +472,12 @@ def _kernel(
     V_C = V_B + V_CB (⊥ CB) on CB gives v = d·V_B − hh·(d⊥·V_B) / (±√(l4² − hh²)).
     """
     n = phi.shape[0]
-    pos = np.empty((3, 2, n))
-    vel = np.empty((3, 2, n)) if with_velocities else np.empty((3, 2, 0))
-    s_out = np.empty(n)
-    v_out = np.empty(n if with_velocities else 0)
+    # one allocation for every output: x and y rows of A, B, C (and V_A, V_B, V_C), s (and v)
+    out = np.empty((14 if with_velocities else 7, n))
+    pos = out[0:6].reshape(3, 2, n)
+    vel = out[6:12].reshape(3, 2, n) if with_velocities else out[0:0].reshape(3, 2, 0)
+    s_out = out[12] if with_velocities else out[6]
+    v_out = out[13] if with_velocities else out[0:0].reshape(0)
     half_diff = 0.5 * (g.l2 * g.l2 - g.l3 * g.l3)
     l2sq = g.l2 * g.l2
     l4sq = g.l4 * g.l4
@@ -472,7 +488,7 @@ def _kernel(
     dead_b = tol.ANGLE * g.l2 * g.l3
     dead_c = (tol.ANGLE * g.l4) ** 2
     b = min(block, max(n, 1))
-    tmp = np.empty((10, b))
+    tmp = _scratch(10 * b).reshape(10, b)
     for i0 in range(0, n, b):
         i1 = min(i0 + b, n)
         sl = slice(i0, i1)
