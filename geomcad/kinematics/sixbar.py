@@ -39,9 +39,10 @@ from geomcad.kinematics.dyads import (
 #: Samples per turn for locating the slider's extreme positions before refining them.
 SWEEP_SAMPLES = 3600
 
-#: Crank angles per block of a sweep. About twenty arrays of a block are live at once; at 16384
-#: elements (128 KiB each) they stay in a 1–2 MiB L2 cache. Measured with
-#: ``python3 bench/bench_sixbar.py --blocks``: 4096 is ~15 % slower, 65536 no faster.
+#: Crank angles per block of a sweep. Ten scratch arrays and fourteen output rows of a block are
+#: in use at once; at 16384 elements (128 KiB each) the scratch stays in a 1 MiB L2 cache.
+#: Measured with ``python3 bench/bench_sixbar.py --blocks``: 4096 is 15–20 % slower, 1024 twice
+#: as slow (numpy's per-call overhead), 32768 and 65536 no faster.
 BLOCK = 16384
 
 #: The steps a sweep can fail at (the names the recorded constructions use).
