@@ -14,11 +14,14 @@ value: a margin of about a thousand, while a wrong or missing term (a normal acc
 from __future__ import annotations
 
 import dataclasses
+import doctest
 import math
 from collections.abc import Callable
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 import geomcad
 from geomcad.errors import ConstructionError, DegenerateInput, NoIntersection, ParameterError
@@ -430,3 +433,63 @@ def test_2013_6_stroke_and_k_from_one_sweep_over_several_syntheses() -> None:
         # and the exact check by analysis agrees with the sweep
         h_exact, k_exact, _, _ = m.stroke_and_k()
         assert h_exact == pytest.approx(H, rel=REL) and k_exact == pytest.approx(K, rel=REL)
+
+
+# --- invariants ---------------------------------------------------------------------------------
+
+
+@settings(max_examples=40, deadline=None)
+@given(
+    turn=st.floats(-math.pi, math.pi),
+    k=st.floats(0.01, 100.0),
+    shift=st.tuples(st.floats(-10.0, 10.0), st.floats(-10.0, 10.0)),
+    omega1=st.floats(0.1, 50.0),
+)
+def test_moving_turning_and_rescaling_the_mechanism(
+    seed: SixBar, turn: float, k: float, shift: tuple[float, float], omega1: float
+) -> None:
+    """Turned by γ about the origin, scaled by k and shifted: the positions follow, the
+    velocities and accelerations turn and scale, the slider's s, v, a scale, ω and ε stay."""
+    c, s = math.cos(turn), math.sin(turn)
+    rot = np.array([[c, -s], [s, c]])
+    t = np.array(shift)
+
+    def move(p: Vec) -> Vec:
+        return Vec(*(k * (rot @ p.array()) + t))
+
+    m = dataclasses.replace(
+        seed,
+        O1=move(seed.O1),
+        O2=move(seed.O2),
+        guide_p=move(seed.guide_p),
+        guide_d=Vec(*(rot @ seed.guide_d.array())),
+        l1=k * seed.l1,
+        l2=k * seed.l2,
+        l3=k * seed.l3,
+        l4=k * seed.l4,
+    )
+    phi = np.linspace(0.0, 2.0 * math.pi, 48, endpoint=False)
+    a, b = seed.sweep(phi, omega1), m.sweep(phi + turn, omega1)
+    size = k * max(seed.l2, 1.0)
+    for p, q in ((a.A, b.A), (a.B, b.B), (a.C, b.C)):
+        assert np.allclose(k * p @ rot.T + t, q, rtol=0, atol=1e-12 * (size + np.hypot(*t)))
+    for p, q in ((a.V_A, b.V_A), (a.V_B, b.V_B), (a.V_C, b.V_C)):
+        assert np.allclose(k * p @ rot.T, q, rtol=0, atol=1e-11 * k * omega1)
+    assert np.allclose(k * a.s, b.s, rtol=0, atol=1e-11 * (size + np.hypot(*t)))
+    assert np.allclose(k * a.v, b.v, rtol=0, atol=1e-11 * k * omega1)
+    assert np.allclose(
+        k * seed.slider_a(phi, omega1, 2.0),
+        m.slider_a(phi + turn, omega1, 2.0),
+        rtol=0,
+        atol=1e-10 * k * omega1 * omega1,
+    )
+    for w, v in zip(seed.omegas(phi, omega1), m.omegas(phi + turn, omega1), strict=True):
+        assert np.allclose(w, v, rtol=0, atol=1e-10 * omega1)
+
+
+def test_the_docstring_examples_run() -> None:
+    from geomcad.kinematics import dyads, sixbar
+
+    for mod in (sixbar, dyads):
+        failed, _ = doctest.testmod(mod)
+        assert failed == 0

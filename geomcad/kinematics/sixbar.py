@@ -162,8 +162,18 @@ class SixBar:
 
         Raises :class:`NoIntersection` naming the step (and the first position index and angle)
         where a dyad cannot close or is in a dead position (V_B or V_C undefined);
-        :class:`ParameterError` for a non-positive length, a zero guide direction or arrays of
-        different lengths.
+        :class:`ParameterError` for a non-positive length, a non-finite angle or arrays of
+        different lengths; :class:`DegenerateInput` for a zero guide direction.
+
+        >>> import math
+        >>> m = SixBar(Vec(0, 0), 0.1, 0.4, Vec(0.3, 0), 0.3, 0.3, Vec(0, 0.3), Vec(1, 0), 1, 1)
+        >>> r = m.sweep([0.0, math.pi / 2], omega1=10.0)
+        >>> r.B.shape, r.V_C.shape
+        ((2, 2), (2, 2))
+        >>> [round(math.dist(a, b), 12) for a, b in zip(r.A, r.B)]
+        [0.4, 0.4]
+        >>> m.sweep(0.0, l1=[0.1, 0.12, 0.14]).A[:, 0].round(12).tolist()  # three cranks at once
+        [0.1, 0.12, 0.14]
         """
         return _sweep(self, phi, omega1, block, True, O1, l1, l2, O2, l3, l4, guide_p, guide_d)
 
