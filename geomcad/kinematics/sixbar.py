@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
+import threading
 from dataclasses import dataclass
 from functools import cached_property
 
@@ -38,9 +39,10 @@ from geomcad.kinematics.dyads import (
 #: Samples per turn for locating the slider's extreme positions before refining them.
 SWEEP_SAMPLES = 3600
 
-#: Crank angles per block of a sweep. About twenty arrays of a block are live at once; at 16384
-#: elements (128 KiB each) they stay in a 1–2 MiB L2 cache. Measured with
-#: ``python3 bench/bench_sixbar.py --blocks``: 4096 is ~15 % slower, 65536 no faster.
+#: Crank angles per block of a sweep. Ten scratch arrays and fourteen output rows of a block are
+#: in use at once; at 16384 elements (128 KiB each) the scratch stays in a 1 MiB L2 cache.
+#: Measured with ``python3 bench/bench_sixbar.py --blocks``: 4096 is 15–20 % slower, 1024 twice
+#: as slow (numpy's per-call overhead), 32768 and 65536 no faster.
 BLOCK = 16384
 
 #: The steps a sweep can fail at (the names the recorded constructions use).
@@ -160,8 +162,18 @@ class SixBar:
 
         Raises :class:`NoIntersection` naming the step (and the first position index and angle)
         where a dyad cannot close or is in a dead position (V_B or V_C undefined);
-        :class:`ParameterError` for a non-positive length, a zero guide direction or arrays of
-        different lengths.
+        :class:`ParameterError` for a non-positive length, a non-finite angle or arrays of
+        different lengths; :class:`DegenerateInput` for a zero guide direction.
+
+        >>> import math
+        >>> m = SixBar(Vec(0, 0), 0.1, 0.4, Vec(0.3, 0), 0.3, 0.3, Vec(0, 0.3), Vec(1, 0), 1, 1)
+        >>> r = m.sweep([0.0, math.pi / 2], omega1=10.0)
+        >>> r.B.shape, r.V_C.shape
+        ((2, 2), (2, 2))
+        >>> [round(math.dist(a, b), 12) for a, b in zip(r.A, r.B)]
+        [0.4, 0.4]
+        >>> m.sweep(0.0, l1=[0.1, 0.12, 0.14]).A[:, 0].round(12).tolist()  # three cranks at once
+        [0.1, 0.12, 0.14]
         """
         return _sweep(self, phi, omega1, block, True, O1, l1, l2, O2, l3, l4, guide_p, guide_d)
 
@@ -323,6 +335,19 @@ def _spread(values: dict[str, Num], n: int) -> dict[str, Num]:
     return out
 
 
+_local = threading.local()
+
+
+def _scratch(size: int) -> Arr:
+    """This thread's scratch buffer for a sweep's temporaries, kept between sweeps: a fresh one
+    each time would cost the page faults of a new allocation on every call."""
+    buf: Arr | None = getattr(_local, "scratch", None)
+    if buf is None or buf.size < size:
+        buf = np.empty(size)
+        _local.scratch = buf
+    return buf[:size]
+
+
 def _at(x: Num, sl: slice) -> Num:
     return x if isinstance(x, float) else x[sl]
 
@@ -458,10 +483,12 @@ def _kernel(
     V_C = V_B + V_CB (⊥ CB) on CB gives v = d·V_B − hh·(d⊥·V_B) / (±√(l4² − hh²)).
     """
     n = phi.shape[0]
-    pos = np.empty((3, 2, n))
-    vel = np.empty((3, 2, n)) if with_velocities else np.empty((3, 2, 0))
-    s_out = np.empty(n)
-    v_out = np.empty(n if with_velocities else 0)
+    # one allocation for every output: x and y rows of A, B, C (and V_A, V_B, V_C), s (and v)
+    out = np.empty((14 if with_velocities else 7, n))
+    pos = out[0:6].reshape(3, 2, n)
+    vel = out[6:12].reshape(3, 2, n) if with_velocities else out[0:0].reshape(3, 2, 0)
+    s_out = out[12] if with_velocities else out[6]
+    v_out = out[13] if with_velocities else out[0:0].reshape(0)
     half_diff = 0.5 * (g.l2 * g.l2 - g.l3 * g.l3)
     l2sq = g.l2 * g.l2
     l4sq = g.l4 * g.l4
@@ -472,7 +499,7 @@ def _kernel(
     dead_b = tol.ANGLE * g.l2 * g.l3
     dead_c = (tol.ANGLE * g.l4) ** 2
     b = min(block, max(n, 1))
-    tmp = np.empty((10, b))
+    tmp = _scratch(10 * b).reshape(10, b)
     for i0 in range(0, n, b):
         i1 = min(i0 + b, n)
         sl = slice(i0, i1)
