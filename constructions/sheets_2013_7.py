@@ -107,7 +107,9 @@ def _mechanism(d: Drawing, geo: Any, k: Scale) -> None:
     ends3 = [run.link3.touch_a, run.link3.touch_b, run.Q]
     v.line_over(run.link3.line, ends3, "result", over=6.0)
     v.seg(D, run.Q, "construction")
-    v.line_over(Line(D, Vec(1.0, 0.0)), [run.K, D], "construction", over=10.0)
+    # F_i's line from D to K and on past K, where the angle β is marked
+    past = k.model(17.0) * (1.0 if run.K.x >= D.x else -1.0)
+    v.seg(D, Vec(run.K.x + past, D.y), "construction")
     v.line_over(run.P_line, [run.Q, run.K], "construction", over=8.0)
     t76 = run.R76_line.foot(H)
     v.line_over(run.R76_line, [run.K, t76], "result", over=8.0)
@@ -382,7 +384,7 @@ def _panel(d: Drawing, sol: Solution) -> None:
         row: list[str] = []
         for j in (i, i + half):
             name, val, unit = given[j]
-            row += [name, f"{val} {unit}".strip()]
+            row += [name, _with_unit(val, unit)]
         rows.append(row)
     head = ["Вел.", "Значение", "Вел.", "Значение"]
     _, h = d.table(x, y + 6.0, (14.0, 30.0, 14.0, 30.0), [head, *rows])

@@ -160,11 +160,12 @@ def two_force_line(a: FrictionCircle, b: FrictionCircle, tension: bool = True) -
     candidates: list[tuple[Vec, Vec]] = []
     if a.arm > 0.0 and b.arm > 0.0:
         if kind == "internal" and a.arm + b.arm >= ab.norm * (1.0 - tol.TANGENT):
+            na, nb = a.name or "a", b.name or "b"
             raise NoIntersection(
                 "two-force member",
-                f"the friction circles of {a.name or 'a'} and {b.name or 'b'} overlap "
-                f"(ρ_a + ρ_b = {a.arm + b.arm:.6g} m ≥ |ab| = {ab.norm:.6g} m): they have no "
-                "internal common tangent",
+                f"the friction circles of {na} and {nb} overlap (ρ_{na} + ρ_{nb} = "
+                f"{a.arm + b.arm:.6g} m ≥ {na}{nb} = {ab.norm:.6g} m): they have no internal "
+                "common tangent",
             )
         candidates = [(s.a, s.b) for s in common_tangents(a.circle, b.circle, kind)]
     elif a.arm > 0.0:
