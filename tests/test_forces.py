@@ -201,7 +201,8 @@ def test_tangent_reaction_passes_the_point_and_opposes_the_rotation(
     line = tangent_reaction(p, fc, hint)
     assert line.p == p
     assert abs(line.side(fc.c)) == pytest.approx(fc.rho, abs=1e-12)
-    assert line.d.dot(hint) > 0
+    # the sense: towards the joint or away from it, as the hint says
+    assert line.d.dot(fc.c - p) * hint.dot(fc.c - p) > 0
     assert moment(fc.c, line, 1.0) == pytest.approx(-s * fc.rho, abs=1e-12)
 
 
@@ -226,6 +227,8 @@ def test_tangent_reaction_without_friction_runs_through_the_centre() -> None:
     assert line.d.x < 0 and abs(line.side((1, 1))) <= 1e-15
     with pytest.raises(DegenerateInput, match="centre"):
         tangent_reaction((1, 1), fc, (1.0, 0.0))
+    with pytest.raises(DegenerateInput, match="neither towards nor away"):
+        tangent_reaction((0, 0), fc, (1.0, -1.0))
 
 
 # -- the three-force theorem and moments ---------------------------------------------------------

@@ -26,6 +26,7 @@ import math
 from dataclasses import dataclass
 
 from geomcad import tol
+from geomcad.construction import fmt
 from geomcad.errors import DegenerateInput, NoIntersection, ParameterError
 from geomcad.geom import Circle, Line, PointLike, Vec, common_tangents, tangents_from, vec
 
@@ -59,6 +60,13 @@ class FrictionCircle:
     sense: int
     r: float = 0.0
     name: str = ""
+
+    def __str__(self) -> str:
+        turn = {1: "ccw", -1: "cw", 0: "no"}[self.sense]
+        return (
+            f"friction circle centre {fmt(self.c)}, ρ = {fmt(self.rho)}, opposing {turn} "
+            "relative rotation"
+        )
 
     @property
     def arm(self) -> float:
@@ -133,6 +141,13 @@ class TwoForceLine:
     touch_b: Vec
     alpha: float
 
+    def __str__(self) -> str:
+        return (
+            f"{self.kind}{' common tangent' if self.kind in ('internal', 'external') else ''} "
+            f"through {fmt(self.touch_a)} and {fmt(self.touch_b)}, "
+            f"at {math.degrees(self.alpha):.6f}° to the link"
+        )
+
     @property
     def inclination(self) -> float:
         """The angle between the line of action and the link's centre line (rad, ≥ 0)."""
@@ -197,24 +212,25 @@ def two_force_line(a: FrictionCircle, b: FrictionCircle, tension: bool = True) -
 def tangent_reaction(point: PointLike, fc: FrictionCircle, along: PointLike) -> Line:
     """The line of a reaction through ``point`` tangent to the friction circle ``fc``.
 
-    Of the two tangents from the point, the one is taken on which a force pointing roughly
-    ``along`` (its sense, from a frictionless estimate or the force polygon) has a moment about
-    the centre that opposes the relative rotation. The line is directed along that force.
-    A zero arm gives the line through the centre.
+    ``along`` gives the force's sense: whether it points from the point towards the joint
+    (``along`` has a positive component along point → centre) or away from it; a frictionless
+    estimate or the force polygon gives it. With that sense, the two tangents from the point
+    have moments of opposite signs about the centre, and the one whose moment opposes the
+    relative rotation is taken. The line is directed along the force. A zero arm gives the line
+    through the centre.
 
-    Raises :class:`NoIntersection` when the point lies inside the friction circle (no tangent).
+    Raises :class:`NoIntersection` when the point lies inside the friction circle (no tangent),
+    :class:`DegenerateInput` when ``along`` is square to point → centre (no sense).
     """
     p = vec(point)
-    hint = vec(along)
-    if fc.arm <= 0.0:
-        d = fc.c - p
-        if d.norm == 0.0:
-            raise DegenerateInput("reaction through a point", "the point is the joint's centre")
-        return Line(p, d.unit() if d.dot(hint) >= 0.0 else -d.unit())
-    touches = tangents_from(p, fc.circle)
+    to_c = fc.c - p
+    if to_c.norm == 0.0:
+        raise DegenerateInput("reaction through a point", "the point is the joint's centre")
+    touches = tangents_from(p, fc.circle) if fc.arm > 0.0 else ()
     if len(touches) == 1:  # the point is on the circle: the tangent there
         w = (p - fc.c).perp()
-        line = Line(p, w.unit() if w.dot(hint) >= 0.0 else -w.unit())
+        w = w if w.dot(vec(along)) >= 0.0 else -w
+        line = Line(p, w.unit())
         if fc.opposes(line):
             return line
         raise NoIntersection(
@@ -222,6 +238,16 @@ def tangent_reaction(point: PointLike, fc: FrictionCircle, along: PointLike) -> 
             f"the point lies on the friction circle of {fc.name or 'the joint'}, on the side "
             "where the reaction would help the relative rotation",
         )
+    toward = vec(along).dot(to_c.unit())
+    if abs(toward) <= tol.ANGLE:
+        raise DegenerateInput(
+            "reaction through a point",
+            "the given sense is square to the line from the point to the joint: it says "
+            "neither towards nor away",
+        )
+    sigma = 1.0 if toward > 0.0 else -1.0  # the force points towards the joint, or away
+    if fc.arm <= 0.0:
+        return Line(p, to_c.unit() * sigma)
     if not touches:
         raise NoIntersection(
             "tangent to a friction circle",
@@ -229,10 +255,9 @@ def tangent_reaction(point: PointLike, fc: FrictionCircle, along: PointLike) -> 
             f"({p.dist(fc.c):.6g} m from its centre, ρ = {fc.arm:.6g} m)",
         )
     for t in touches:
-        w = t - p
-        line = Line(t, w.unit() if w.dot(hint) >= 0.0 else -w.unit())
+        line = Line(t, (t - p).unit() * sigma)
         if fc.opposes(line):
             return Line(p, line.d)
-    raise NoIntersection(  # unreachable: the two tangents have moments of opposite signs
+    raise NoIntersection(  # unreachable: with one sense the two tangents' moments differ in sign
         "tangent to a friction circle", "neither tangent opposes the relative rotation"
     )

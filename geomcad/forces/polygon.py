@@ -20,7 +20,7 @@ import math
 from collections.abc import Sequence
 from dataclasses import dataclass
 
-from geomcad.construction import Construction
+from geomcad.construction import Construction, fmt
 from geomcad.errors import DegenerateInput, ParallelLines
 from geomcad.geom import Line, PointLike, Vec, line_line, vec
 
@@ -53,6 +53,11 @@ class PlanVector:
     tail: Vec
     head: Vec
 
+    def __str__(self) -> str:
+        return f"{self.name} from {fmt(self.tail)} to {fmt(self.head)}, |{self.name}| = " + (
+            f"{self.magnitude:.6f}"
+        )
+
     @property
     def force(self) -> Vec:
         return self.head - self.tail
@@ -71,6 +76,9 @@ class ForcePolygon:
     pole: Vec
     vectors: tuple[PlanVector, ...]
     solved: tuple[tuple[str, float], ...]
+
+    def __str__(self) -> str:
+        return f"{' → '.join(self.names)} from {fmt(self.pole)}, |ΣF| = {self.closure:.3g}"
 
     def __getitem__(self, name: str) -> PlanVector:
         for v in self.vectors:
@@ -162,8 +170,8 @@ def close_polygon(terms: Sequence[Term], pole: PointLike = (0.0, 0.0)) -> ForceP
 
     >>> p = close_polygon([Known("G", Vec(0, -10)), Unknown("R1", Vec(1, 1)),
     ...                    Unknown("R2", Vec(-1, 1))])
-    >>> round(p.signed("R1"), 6), round(p.signed("R2"), 6), p.closure < 1e-12
-    (7.071068, 7.071068, True)
+    >>> round(p.signed("R1"), 6), round(p.signed("R2"), 6), round(p.closure, 9)
+    (7.071068, 7.071068, 0.0)
     """
     l1, l2 = closing_lines(terms, pole)
     meet = line_line(l1, l2)
