@@ -11,6 +11,8 @@ from typing import Any
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 from scipy.optimize import brentq
 
 import geomcad
@@ -194,6 +196,28 @@ def test_exact_values_against_an_independent_solution(changes: dict[str, float])
         assert got[name] == pytest.approx(want[name], rel=REL, abs=1e-12), name
     free = independent(**{**changes, "f": 0.0})
     assert got["omega_no_friction"] == pytest.approx(free["omega"], rel=REL)
+
+
+@settings(max_examples=60, deadline=None)
+@given(
+    st.floats(20.0, 70.0),
+    st.floats(0.0, 0.5),
+    st.floats(0.01, 0.05),
+    st.sampled_from((1, -1)),
+    st.floats(0.5, 20.0),
+)
+def test_well_conditioned_variants_match_the_independent_solution(
+    theta: float, f: float, d: float, direction: int, m2: float
+) -> None:
+    changes = {"theta_deg": theta, "f": f, "d": d, "direction": direction, "m2": m2}
+    sol = geomcad.solve(PID, **changes)
+    want = independent(**changes)
+    for name in ("R32", "P", "F_i", "omega"):
+        assert sol.results[name] == pytest.approx(want[name], rel=1e-8), name
+    run = sol.data.run
+    assert run.poly6.closure <= 1e-12 * (run.F_i + run.R76)
+    assert abs(run.R76_line.side(sol.data.H)) == pytest.approx(run.rho, abs=1e-15)
+    assert (sol.results["omega"] - sol.results["omega_no_friction"]) * direction >= 0
 
 
 # -- invariants of the construction ------------------------------------------------------------
