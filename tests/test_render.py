@@ -533,3 +533,26 @@ def test_missing_cairosvg_package_is_missing_dependency(monkeypatch: pytest.Monk
     monkeypatch.setitem(__import__("sys").modules, "cairosvg", None)  # import raises ImportError
     with pytest.raises(MissingDependency, match="libcairo2"):
         to_pdf(to_svg(sample_sheet()))
+
+
+@pytest.mark.parametrize("dpi", [100, 150, 300])
+def test_png_text_ends_where_its_metrics_say(dpi: int) -> None:
+    """Unhinted advances (text-rendering="geometricPrecision"): a long 2.5 mm line on a PNG
+    ends within 0.5 mm of its width from the font's metrics, at any resolution."""
+    import io
+
+    import numpy as np
+    from PIL import Image
+
+    from geomcad.render.raster import to_png
+    from geomcad.sheet import TitleBlock, start
+
+    d = start("A4", TitleBlock(title="t", designation="x"), landscape=False)
+    line = "крестовина скользит по звеньям 3 и 5 под прямым углом: ω_5 = ω_3, длинная строка W"
+    item = d.text(line, (25.0, 30.0), 2.5)
+    png = to_png(to_svg(d.finish()), dpi=dpi)
+    px = dpi / 25.4
+    im = np.asarray(Image.open(io.BytesIO(png)).convert("L"))
+    band = im[int(26 * px) : int(31 * px), : int(200 * px)]
+    right = np.nonzero((band < 128).any(axis=0))[0].max() / px
+    assert abs(right - (25.0 + item.width)) <= 0.5
