@@ -46,6 +46,14 @@ def _cairosvg() -> ModuleType:
     except (ImportError, OSError) as exc:
         # cairocffi raises OSError from dlopen when libcairo.so.2 is absent.
         raise MissingDependency(CAIRO_MISSING) from exc
+    # Text without a text-rendering attribute gets unhinted metrics (its outlines stay hinted):
+    # cairo's image surfaces otherwise round each glyph's advance to whole pixels, and at
+    # 150 dpi a long line of 2.5 mm lettering ran ~2 mm past the sheet's metrics, so a late
+    # subscript landed on its letter. (text-rendering="geometricPrecision" would switch off
+    # outline hinting too, which moves osifont's glyphs by up to 0.35 mm.) PDFs are unaffected.
+    import cairocffi
+
+    cairosvg.surface.TEXT_HINT_METRICS.setdefault(None, cairocffi.HINT_METRICS_OFF)
     module: ModuleType = cairosvg
     return module
 

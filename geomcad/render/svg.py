@@ -137,10 +137,6 @@ def _text(dwg: svgwrite.Drawing, t: TextItem, st: Style, ids: _Ids) -> svgwrite.
         "fill": _fill_colour(st),
         # A text in a stroked layer (a red result label) must not inherit the layer's outline.
         "stroke": "none",
-        # Unhinted advances: cairo's image surfaces otherwise round each glyph's advance to
-        # whole pixels, and at 150 dpi a long line of 2.5 mm lettering ran ~2 mm past its
-        # metrics (a late subscript landed on its letter). The PDF is unaffected either way.
-        "text-rendering": "geometricPrecision",
     }
     if t.id:
         attrs["id"] = ids.take(t.id)
