@@ -100,6 +100,24 @@ FORCE_ROOM_MM = 40.0
 
 
 @dataclass(frozen=True)
+class RodShape:
+    """The rod's drawn shape, in units of r, relative to its slot's centre line (y = x): only
+    the points where the spring and the damper act and where its guide holds it enter the
+    kinetostatics, and they change no reported result (only the guide's couple)."""
+
+    slot_half: float = 1.15  # the slot runs from −1.15r to 1.15r across the axis
+    frame: float = 0.2  # the crosshead reaches 0.2r above and below the slot's centre line
+    top: float = 3.2  # the stem's top, with the crossbar
+    bar_half: float = 0.6  # the spring (left) and the damper (right) hang at ±0.6r
+    guide: tuple[float, float] = (1.45, 2.05)  # the fixed guide's bushing (absolute, units of r)
+    ground: float = 4.7  # the fixed support above the spring and the damper (absolute)
+    centre: float = 1.6  # the rod's centre of mass above the slot's centre line
+
+
+ROD = RodShape()
+
+
+@dataclass(frozen=True)
 class Data:
     """What the sheets draw."""
 
@@ -172,7 +190,7 @@ def build(p: Mapping[str, ParamValue]) -> Build:
         return M0 + M1 * np.sin(Om * np.asarray(tt, dtype=np.float64))
 
     c = Construction("2013-9: valve mechanism, reduced model and equation of motion")
-    model, rod = model_of(J, m, r, c_, k, M)
+    model, _ = model_of(J, m, r, c_, k, M)
     c.run("J_pr,min", "the smallest J_pr(φ) over a turn (must be > 0)", model.check_inertia)
     j_pr = c.value("J_pr", float(model.J_pr(phi)), "Σ(m·v_q² + J·ω_q²) at φ")
     dj_pr = c.value("dJ_pr", float(model.dJ_pr(phi)), "Σ 2(m·v_q·a_q + J·ω_q·ε_q) at φ")
@@ -235,17 +253,17 @@ def kinetostatics(
     its guide's reaction R_02 (across the axis) and couple M_02.
     """
     ks = Kinetostatics("kinetostatics of disc and rod")
-    O = Vec(0.0, 0.0)
     A = Vec(r * math.cos(phi), r * math.sin(phi))
-    S2 = Vec(0.0, x)  # the rod's centre on its axis
+    S2 = Vec(0.0, x + ROD.centre * r)
+    top = x + ROD.top * r
     ks.body("1", J=J, eps=ddphi, inertia_names=("", "M_{Ф1}"))
     ks.body("2", m=m, centre=S2, a=(0.0, xdd), inertia_names=("Ф_2", ""))
     ks.torque("1", "M(t)", M)
-    ks.force("2", "F_{упр}", Vec(0.0, -c * x), S2)
-    ks.force("2", "F_д", Vec(0.0, -k * xd), S2)
-    ks.joint("R_{01}", None, "1", O)
+    ks.force("2", "F_{упр}", Vec(0.0, -c * x), Vec(-ROD.bar_half * r, top))
+    ks.force("2", "F_д", Vec(0.0, -k * xd), Vec(ROD.bar_half * r, top))
+    ks.joint("R_{01}", None, "1", (0.0, 0.0))
     ks.contact("R_{12}", "1", "2", A, (0.0, 1.0))
-    ks.contact("R_{02}", None, "2", S2, (1.0, 0.0))
+    ks.contact("R_{02}", None, "2", Vec(0.0, 0.5 * sum(ROD.guide) * r), (1.0, 0.0))
     ks.couple("M_{02}", None, "2")
     ks.balancing_torque("M_b", "1")
     return ks

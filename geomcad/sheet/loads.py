@@ -12,7 +12,7 @@ import math
 
 from geomcad.geom import PointLike, Vec, vec
 from geomcad.sheet.drawing import Viewport, _arrow, _head
-from geomcad.sheet.model import XY, ArcItem
+from geomcad.sheet.model import XY, ArcItem, Polyline
 
 #: A moment arrow's sweep (rad) and the gap between its ends.
 MOMENT_SWEEP = math.radians(250.0)
@@ -84,3 +84,56 @@ def moment(
         mid = a0 + s * MOMENT_SWEEP / 2.0
         v.d.label(at(mid), label, height, prefer=(math.cos(mid), -math.sin(mid)), clear=0.8,
                   others=(at(a1), at(a0)))  # fmt: skip
+
+
+def spring(v: Viewport, a: PointLike, b: PointLike, width_mm: float = 4.0, coils: int = 6) -> None:
+    """A spring (GOST 2.770) from model point a to b: short straight ends and a zigzag of
+    ``coils`` turns, ``width_mm`` across."""
+    pa, pb = v.p(a), v.p(b)
+    dx, dy = pb[0] - pa[0], pb[1] - pa[1]
+    length = math.hypot(dx, dy)
+    if length <= 0.0:
+        return
+    ux, uy = dx / length, dy / length
+    nx, ny = -uy, ux
+    lead = min(2.0, 0.15 * length)
+    body = length - 2.0 * lead
+    pts: list[XY] = [pa, (pa[0] + ux * lead, pa[1] + uy * lead)]
+    n = 2 * coils
+    for i in range(n):
+        t = lead + body * (i + 0.5) / n
+        side = width_mm / 2.0 * (1.0 if i % 2 == 0 else -1.0)
+        pts.append((pa[0] + ux * t + nx * side, pa[1] + uy * t + ny * side))
+    pts += [(pb[0] - ux * lead, pb[1] - uy * lead), pb]
+    v.sheet.add(Polyline(tuple(pts), "link"))
+
+
+def damper(v: Viewport, a: PointLike, b: PointLike, width_mm: float = 5.0) -> None:
+    """A viscous damper (dashpot) from model point a (its rod) to b (its cylinder's bottom): an
+    open cylinder on b's side and a piston on a rod from a."""
+    pa, pb = v.p(a), v.p(b)
+    dx, dy = pb[0] - pa[0], pb[1] - pa[1]
+    length = math.hypot(dx, dy)
+    if length <= 0.0:
+        return
+    ux, uy = dx / length, dy / length
+    nx, ny = -uy, ux
+    h = width_mm / 2.0
+    cyl = 0.55 * length  # the cylinder's length, from b towards a
+
+    def at(t: float, side: float = 0.0) -> XY:
+        return (pa[0] + ux * t + nx * side, pa[1] + uy * t + ny * side)
+
+    mouth = length - cyl
+    v.sheet.add(Polyline((at(mouth, h), at(length, h), at(length, -h), at(mouth, -h)), "link"))
+    v.sheet.add(Polyline((at(length), pb), "link"))
+    piston = mouth + 0.3 * cyl
+    v.sheet.add(Polyline((pa, at(piston)), "link"))
+    v.sheet.add(Polyline((at(piston, 0.7 * h), at(piston, -0.7 * h)), "link"))
+
+
+def ground(
+    v: Viewport, a: PointLike, b: PointLike, side: tuple[float, float] = (0.0, -1.0)
+) -> None:
+    """A fixed support from model point a to b, hatched on the model side ``side``."""
+    v._ground(v.p(a), v.p(b), (side[0], -side[1]))
