@@ -12,6 +12,8 @@ from geomcad.geom import Vec
 from geomcad.sheet import Viewport, fmt_number
 from geomcad.sheet.loads import force, moment
 
+ORIGIN = Vec(0.0, 0.0)
+
 #: A force arrow shorter than this (mm) is drawn this long, so that its head shows.
 MIN_ARROW_MM = 6.0
 
@@ -39,7 +41,14 @@ class Where:
     start_deg: float = -35.0
 
 
-def draw_loads(v: Viewport, reactions: Any, k_F: float, body: str, where: dict[str, Where]) -> None:
+def draw_loads(
+    v: Viewport,
+    reactions: Any,
+    k_F: float,
+    body: str,
+    where: dict[str, Where],
+    centre: Vec = ORIGIN,
+) -> None:
     """Every solved load on ``body``: forces at their points at k_F (arrows shorter than
     :data:`MIN_ARROW_MM` drawn that long), moments about their points; the balancing check
     moment and round-off forces are left out."""
@@ -59,5 +68,5 @@ def draw_loads(v: Viewport, reactions: Any, k_F: float, body: str, where: dict[s
                   role="result", height=2.5, prefer=w.prefer)  # fmt: skip
         elif abs(ld.moment) > 0.0:
             text = f"{w.label} = {f(abs(ld.moment))} Н·м"
-            moment(v, w.at or Vec(0.0, 0.0), ld.moment, w.radius, text, role="result",
+            moment(v, w.at or centre, ld.moment, w.radius, text, role="result",
                    start=math.radians(w.start_deg), height=2.5)  # fmt: skip
