@@ -23,6 +23,15 @@ def f(x: float, digits: int = 4) -> str:
     return fmt_number(x, digits=digits)
 
 
+def small(x: float, scale: float, unit: str = "") -> str:
+    """A quantity that should vanish: its value, or "|…| < 10^{–9}·scale" when it is round-off
+    (so that the sheet does not print noise that differs from machine to machine)."""
+    bound = tol.DERIVED * abs(scale)
+    if abs(x) <= bound:
+        return f"|·| < {fmt_number(bound, digits=1)}{(' ' + unit) if unit else ''}"
+    return f"{f(x, 3)}{(' ' + unit) if unit else ''}"
+
+
 def _arrow_len(F: Vec, k_F: float) -> float:
     """k_F for this arrow: to scale, unless it would be shorter than MIN_ARROW_MM."""
     return k_F if F.norm / k_F >= MIN_ARROW_MM else F.norm / MIN_ARROW_MM

@@ -70,7 +70,7 @@ NOTES = [
 ]
 
 #: Room for the load diagram's axes on the sheet (mm).
-F_ROOM_MM = (150.0, 95.0)
+F_ROOM_MM = (150.0, 85.0)
 
 
 @dataclass(frozen=True)

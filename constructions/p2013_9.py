@@ -142,12 +142,14 @@ def _nonneg(p: Mapping[str, ParamValue], name: str, what: str) -> float:
     return v
 
 
-def model_of(J: float, m: float, r: float, c: float, k: float,
-             M: Any) -> tuple[ReducedModel, Any]:  # fmt: skip
+def model_of(
+    J: float, m: float, r: float, c: float, k: float, M: Any, steady: bool = False
+) -> tuple[ReducedModel, Any]:
     """The reduced model of the valve mechanism and the rod's motion function.
 
-    ``M(t)`` is the driving moment; the rod's analogues come from the slotted yoke's velocity
-    plan (guide along +y, slot along x).
+    ``M(t)`` is the driving moment (``steady``: it does not change with t); the rod's analogues
+    come from the slotted yoke's velocity plan (guide along +y, slot along x). Without damping
+    and with a steady moment every load depends on φ only, and the energy method applies.
     """
 
     def rod(phi: Array) -> Any:
@@ -168,9 +170,9 @@ def model_of(J: float, m: float, r: float, c: float, k: float,
         return 0.0 * xd, -k * xd
 
     loads = (
-        Torque("M(t)", turning, drive, positional=False),
+        Torque("M(t)", turning, drive, positional=steady),
         Force("F_spring", rod, spring),
-        Force("F_damper", rod, damper, positional=False),
+        Force("F_damper", rod, damper, positional=k == 0.0),
     )
     return ReducedModel((disc, rod_part), loads), rod
 
@@ -190,7 +192,7 @@ def build(p: Mapping[str, ParamValue]) -> Build:
         return M0 + M1 * np.sin(Om * np.asarray(tt, dtype=np.float64))
 
     c = Construction("2013-9: valve mechanism, reduced model and equation of motion")
-    model, _ = model_of(J, m, r, c_, k, M)
+    model, _ = model_of(J, m, r, c_, k, M, steady=M1 == 0.0 or Om == 0.0)
     c.run("J_pr,min", "the smallest J_pr(φ) over a turn (must be > 0)", model.check_inertia)
     j_pr = c.value("J_pr", float(model.J_pr(phi)), "Σ(m·v_q² + J·ω_q²) at φ")
     dj_pr = c.value("dJ_pr", float(model.dJ_pr(phi)), "Σ 2(m·v_q·a_q + J·ω_q·ε_q) at φ")

@@ -339,11 +339,18 @@ def draw(solution: Any) -> list[tuple[str, Any]]:
     return sheets(solution)
 
 
+def turns(data: Data) -> int:
+    """Whole turns from φ0 that the diagrams show: one, or as many as it takes to reach φ."""
+    return max(1, math.ceil((data.phi - data.phi0) / (2.0 * math.pi) - tol.DERIVED))
+
+
 def sweep(data: Data, n: int = 361) -> dict[str, np.ndarray]:
-    """I_pr, dI_pr and ω1 (kinetic-energy theorem from rest at φ0) over a turn from φ0."""
+    """I_pr, dI_pr and ω1 (kinetic-energy theorem from rest at φ0) over the turns from φ0 that
+    reach φ (:func:`turns`)."""
     from geomcad.dynamics import omega_curve
 
-    phis = data.phi0 + np.linspace(0.0, 2.0 * math.pi, n)
+    span = 2.0 * math.pi * turns(data)
+    phis = data.phi0 + np.linspace(0.0, span, n * turns(data))
     return {
         "phi": phis,
         "I_pr": data.model.J_pr(phis),

@@ -20,7 +20,7 @@ from geomcad.sheet.graph import Axis, Graph
 from geomcad.sheet.loads import damper, ground, moment, spring
 from geomcad.sheet.scale import gost_length_scale
 
-from .dyn_common import MIN_ARROW_MM, Where, draw_loads, f
+from .dyn_common import MIN_ARROW_MM, Where, draw_loads, f, small
 from .p2013_9 import ROD, Data
 
 if TYPE_CHECKING:
@@ -247,7 +247,8 @@ def _panel_main(d: Drawing, sol: Solution, data: Data) -> None:
         "шток: F_{упр} = –c·x, F_д = –k·x', R_{12} вдоль оси штока (паз гладкий), момент "
         "направляющей M_{02}; диск: M(t), M_{Ф1}, R_{21} = –R_{12}, R_{01} в опоре O;",
         f"проверка: равновесие диска с нагрузками инерции требует уравновешивающего момента "
-        f"M_у = {f(mb, 2)} Н·м ≈ 0 – кинетостатика совпадает с уравнением движения.",
+        f"M_у = {small(mb, data.M_t or 1.0, 'Н·м')}, т.е. 0 – кинетостатика совпадает с "
+        "уравнением движения.",
     )
     for ln in notes:
         y = d.paragraph(f"– {ln}", x, y, PANEL_W, 2.5, indent=3.0) + 0.6

@@ -25,8 +25,8 @@ from geomcad.sheet.graph import Axis, Graph
 from geomcad.sheet.loads import force, ground, moment
 from geomcad.sheet.scale import gost_length_scale, nice_factor
 
-from .dyn_common import Where, draw_loads, f
-from .p_kulisa import Data, sweep
+from .dyn_common import Where, draw_loads, f, small
+from .p_kulisa import Data, sweep, turns
 
 if TYPE_CHECKING:
     from geomcad.problem import Solution
@@ -327,12 +327,12 @@ def _graphs(sol: Solution) -> Sheet:
     sw = sweep(data)
     phis_deg = np.degrees(sw["phi"])
     lo, hi = float(phis_deg[0]), float(phis_deg[-1])
-    gx = Axis.fit("φ", "°", lo, hi, 200.0).with_tick(30.0)
+    gx = Axis.fit("φ", "°", lo, hi, 195.0).with_tick(30.0 * turns(data))
     # 1. I_pr(φ)
     i_vals = sw["I_pr"]
     gy = Axis.fit("I_{пр}", "кг·м²", 0.0, float(np.max(i_vals)), 90.0, name="I")
     d.text("1. I_{пр}(φ) = A + B·sin^2φ", (25.0, 24.0), 3.5)
-    g = Graph(d, gx, gy, (42.0, 38.0 + gy.mm(gy.hi) + 6.0))
+    g = Graph(d, gx, gy, (40.0, 38.0 + gy.mm(gy.hi) + 6.0))
     g.factors((25.0, 30.0))
     g.curve(list(phis_deg), list(i_vals), "result")
     g.axes()
@@ -342,11 +342,11 @@ def _graphs(sol: Solution) -> Sheet:
             prefer=(1.0, -1.0))  # fmt: skip
     # 2. ω1(φ) from rest: the energy theorem (curve) and solve_ivp (points)
     om = sw["omega"]
-    y2 = 152.0
+    y2 = 148.0
     gy2 = Axis.fit("ω_1", "рад/с", 0.0, float(np.max(om)), 70.0, name="ω")
     d.text("2. ω_1(φ) из состояния покоя при φ_0: теорема об изменении кинетической энергии "
            "(линия) и solve\\_ivp (точки)", (25.0, y2), 3.5)  # fmt: skip
-    g2 = Graph(d, gx, gy2, (42.0, y2 + 14.0 + gy2.mm(gy2.hi) + 6.0))
+    g2 = Graph(d, gx, gy2, (40.0, y2 + 14.0 + gy2.mm(gy2.hi) + 6.0))
     g2.factors((25.0, y2 + 6.0))
     g2.curve(list(phis_deg), list(om), "result")
     g2.axes()
@@ -362,10 +362,10 @@ def _graphs(sol: Solution) -> Sheet:
 
 
 def _turn_ode(data: Data, n: int = 13) -> tuple[list[float], list[float]]:
-    """ω1 by solve_ivp at n positions over the turn (each reached from rest at φ0)."""
+    """ω1 by solve_ivp at n positions over the diagram's turns, on one motion from rest at φ0."""
     from geomcad.dynamics import reach
 
-    phis = data.phi0 + np.linspace(0.0, 2.0 * math.pi, n)[1:]
+    phis = data.phi0 + np.linspace(0.0, 2.0 * math.pi * turns(data), n)[1:]
     arr = reach(data.model, data.phi0, float(phis[-1]))
     # the dense solution gives φ(t); invert it at the wanted φ by the monotone samples
     ts = np.linspace(0.0, arr.t, 4001)
@@ -395,8 +395,13 @@ def _panel_graphs(d: Drawing, sol: Solution, data: Data) -> None:
     t_q = time_by_energy(data.model, data.phi0, data.phi)
     rows = [
         ["Величина", "Энергия (quad)", "solve\\_ivp", "Разность"],
-        ["ω_1, рад/с", f(r["omega1"], 9), f(r["omega_ode"], 9), f(r["omega_ode"] - r["omega1"], 2)],
-        ["t(φ), с", f(t_q, 9), f(r["t_reach"], 9), f(r["t_reach"] - t_q, 2)],
+        [
+            "ω_1, рад/с",
+            f(r["omega1"], 9),
+            f(r["omega_ode"], 9),
+            small(r["omega_ode"] - r["omega1"], r["omega1"]),
+        ],
+        ["t(φ), с", f(t_q, 9), f(r["t_reach"], 9), small(r["t_reach"] - t_q, t_q)],
     ]
     _, h = d.table(x, y + 6.0, (26.0, 40.0, 40.0, 40.0), rows)
     y += 6.0 + h + 3.0
@@ -581,7 +586,8 @@ def _panel_fbd(d: Drawing, sol: Solution, data: Data) -> None:
         "контакты катка передают только силы сцепления R_{32}, R_{03}; направляющая кулисы – "
         "нормальную силу и момент M_{02}.",
         f"Проверка: уравновешивающий момент на маховике при ε_1 из уравнения движения "
-        f"M_у = {f(mb, 2)} Н·м ≈ 0 (кинетостатика совпадает с уравнением Лагранжа).",
+        f"M_у = {small(mb, float(sol.params['M']), 'Н·м')}, т.е. 0 (кинетостатика совпадает с "
+        "уравнением Лагранжа).",
         f"F_x по равенству мощностей F_x·v_{{C3}} = M·ω_1: {f(sol.results['F_x'], 7)} Н; из "
         f"равновесия звеньев без сил инерции (г): {f(data.F_x_kinetostatic, 7)} Н.",
     )
