@@ -76,8 +76,9 @@ RESULTS = (
     ResultSpec("phi_ddot", "rad/s²", "φ'' from the equation of motion at the state (signed)"),
     ResultSpec("N_pin", "N", "force of the pin on the rod", "F"),
     ResultSpec("F_spring", "N", "spring force c·|x|", "F"),
-    ResultSpec("F_damper", "N", "damper force k·|x'|", "F"),
-    ResultSpec("F_inertia_rod", "N", "rod's inertia force m·|x''|", "F"),
+    # small forces are drawn at least MIN_ARROW_MM long, so they are not read off the sheet
+    ResultSpec("F_damper", "N", "damper force k·|x'|"),
+    ResultSpec("F_inertia_rod", "N", "rod's inertia force m·|x''|"),
     ResultSpec("M_inertia_disc", "N·m", "disc's inertia moment J·|φ''|"),
     ResultSpec("phi_T", "rad", "φ at t = T after starting from rest at φ = 0"),
     ResultSpec("omega_T", "rad/s", "φ' at t = T after starting from rest at φ = 0"),

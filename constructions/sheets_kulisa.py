@@ -25,7 +25,7 @@ from geomcad.sheet.graph import Axis, Graph
 from geomcad.sheet.loads import force, ground, moment
 from geomcad.sheet.scale import gost_length_scale, nice_factor
 
-from .dyn_common import Where, draw_loads, f, small
+from .dyn_common import MIN_ARROW_MM, Where, draw_loads, f, small
 from .p_kulisa import Data, sweep, turns
 
 if TYPE_CHECKING:
@@ -474,8 +474,9 @@ def _fbd(sol: Solution) -> Sheet:
     d = start("A3", _tb(sol, "Кулисный механизм: реакции связей", 3, k.ratio_text()))
     d.text("Силы, действующие на звенья в положении φ (с силами инерции), и уравновешивающая сила",
            (25.0, 13.0), 5.0)  # fmt: skip
-    d.text(f"{k.label()} (M {k.ratio_text()});   μ_F = {f(data.k_F)} Н/мм;   "
-           f"ε_1 = {f(data.eps)} рад/с²", (25.0, 20.0), 3.5)  # fmt: skip
+    d.text(f"{k.label()} (M {k.ratio_text()});   μ_F = {f(data.k_F)} Н/мм (стрелки короче "
+           f"{f(MIN_ARROW_MM)} мм удлинены до {f(MIN_ARROW_MM)} мм);   ε_1 = {f(data.eps)} рад/с²",
+           (25.0, 20.0), 3.5)  # fmt: skip
 
     def view(name: str, left: float, mid_y: float) -> tuple[Viewport, float]:
         b = boxes[name]

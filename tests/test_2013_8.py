@@ -66,7 +66,7 @@ def test_restored_energy_formula_is_the_load_diagrams_area() -> None:
 def test_erratum_seed_J_comes_from_rounded_speeds() -> None:
     """The seed's 1,89 is 2·4241/(157² − 142²) = 1,891; the exact speeds give 1,8951 ≈ 1,90."""
     sol = geomcad.solve(PID)
-    assert 2 * 4241 / (157**2 - 142**2) == pytest.approx(1.89, abs=0.005)
+    assert pytest.approx(1.89, abs=0.005) == 2 * 4241 / (157**2 - 142**2)
     assert sol.problem.seed["J"].kind == "erratum"
     assert abs(sol.results["J"] - 1.89) > 0.005
     assert round(sol.results["J"], 2) == 1.90

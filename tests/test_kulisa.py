@@ -28,16 +28,16 @@ def check(p: dict[str, float]) -> dict[str, float]:
     B = p["m2"] + p["m3"] * (p["R3"] ** 2 + p["rho3"] ** 2) / (p["R3"] + p["r3"]) ** 2
     B *= p["OA"] ** 2
     phi, phi0 = math.radians(p["phi_deg"]), math.radians(p["phi0_deg"])
-    I = I1 + B * math.sin(phi) ** 2
+    i_pr = I1 + B * math.sin(phi) ** 2
     dI = B * math.sin(2 * phi)
-    w = math.sqrt(2 * p["M"] * (phi - phi0) / I)
-    eps = (p["M"] - 0.5 * dI * w * w) / I
+    w = math.sqrt(2 * p["M"] * (phi - phi0) / i_pr)
+    eps = (p["M"] - 0.5 * dI * w * w) / i_pr
     # the flywheel: M − I1·ε − OA·sin φ·N_x = 0, and its bearing takes −N_x
     n = (p["M"] - I1 * eps) / (p["OA"] * math.sin(phi))
     return {
         "I_pr_A": I1,
         "I_pr_B": B,
-        "I_pr": I,
+        "I_pr": i_pr,
         "dI_pr": dI,
         "omega1": w,
         "eps1": eps,
@@ -72,14 +72,14 @@ def test_erratum_eps1_comes_from_rounded_intermediates() -> None:
     sol = geomcad.solve(PID)
     assert sol.problem.seed["eps1"].kind == "erratum"
     assert round(sol.results["eps1"], 2) == 10.67
-    assert (34 + 0.844 * 5.60**2) / 5.67 == pytest.approx(10.665, abs=5e-4)
+    assert pytest.approx(10.665, abs=5e-4) == (34 + 0.844 * 5.60**2) / 5.67
     assert any(n.startswith("erratum eps1") for n in sol.notes)
 
 
 def test_erratum_reactions_come_from_the_rounded_eps1() -> None:
     """N_A = X_O = 177,2 is (34 − 5,184·10,66)/(0,24·sin 150°); the exact ε1 gives 177,47."""
     sol = geomcad.solve(PID)
-    assert (34 - 5.184 * 10.66) / (0.24 * 0.5) == pytest.approx(-177.2, abs=0.05)
+    assert pytest.approx(-177.2, abs=0.05) == (34 - 5.184 * 10.66) / (0.24 * 0.5)
     assert sol.results["N_A"] == pytest.approx(177.472, abs=5e-4)
     for name in ("N_A", "X_O"):
         assert sol.problem.seed[name].kind == "erratum"
@@ -98,8 +98,8 @@ def test_erratum_printed_inertia_formula() -> None:
 
 
 def test_erratum_sign_of_x_C3() -> None:
-    """The roller's centre moves with the yoke (same sign of velocity), so x_C3 = x_C30 + k·OA·cos φ,
-    not the report's x_C30 − k·OA·cos φ."""
+    """The roller's centre moves with the yoke (same sign of velocity), so
+    x_C3 = x_C30 + k·OA·cos φ, not the report's x_C30 − k·OA·cos φ."""
     from geomcad_constructions.p_kulisa import layout, mechanism
 
     sol = geomcad.solve(PID)

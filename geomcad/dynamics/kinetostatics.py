@@ -215,7 +215,9 @@ class Kinetostatics:
             )
         xn, *_ = np.linalg.lstsq(An, rhs, rcond=None)
         x = xn / norms
-        scale = max(float(np.max(np.abs(rhs))), float(np.max(np.abs(A * x))), 1.0e-300)
+        scale = max(
+            float(np.max(np.abs(rhs))), float(np.max(np.abs(A * x))), np.finfo(np.float64).tiny
+        )
         resid = float(np.max(np.abs(A @ x - rhs)))
         if resid > tol.DERIVED * scale:
             raise ConstructionError(
