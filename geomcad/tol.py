@@ -37,3 +37,16 @@ def close(a: float, b: float, rel: float = DERIVED, scale: float | None = None) 
     """True when ``a`` and ``b`` agree within ``rel`` of ``scale`` (default: the larger of them)."""
     s = max(abs(a), abs(b)) if scale is None else abs(scale)
     return abs(a - b) <= rel * s
+
+
+#: Integration of an equation of motion (scipy solve_ivp, DOP853): relative and absolute
+#: tolerances on the state (φ in rad, φ' in rad/s).
+ODE_RTOL = 1e-11
+ODE_ATOL = 1e-12
+
+#: Quadrature of a work or a time integral (scipy quad): relative tolerance.
+QUAD_REL = 1e-12
+
+#: Conditioning of a kinetostatic system: a singular value below this fraction of the largest
+#: one makes the reactions indeterminate (a dead position, a load with no arm).
+KINETOSTATIC_RANK = 1e-9

@@ -10,6 +10,7 @@ and plots curves, points and hatched areas (work under a force curve).
 
 from __future__ import annotations
 
+import dataclasses
 import itertools
 import math
 from dataclasses import dataclass
@@ -19,7 +20,7 @@ import numpy.typing as npt
 
 from geomcad import tol
 from geomcad.errors import ParameterError
-from geomcad.sheet.drawing import DOT_R, Drawing, _arrow
+from geomcad.sheet.drawing import DOT_R, Drawing, _arrow, _head
 from geomcad.sheet.model import XY, CircleItem, Polyline
 from geomcad.sheet.scale import NICE, fmt_number
 from geomcad.sheet.style import fit_open, style
@@ -49,7 +50,8 @@ class Axis:
     ``symbol`` is label markup (``φ``, ``S``, ``J_{пр}``), ``unit`` the unit's text (``рад``,
     ``м``), ``name`` the factor's subscript (μ_name), ``lo``…``hi`` the values shown (lo ≤ 0 ≤ hi
     is not required: the axis line sits at 0 when 0 is in range, else at ``lo``) and ``k`` the
-    factor in units per mm.
+    factor in units per mm. ``tick`` fixes the tick step (e.g. 30 for degrees); 0 chooses a nice
+    step at least :data:`TICK_MIN_MM` apart.
     """
 
     symbol: str
@@ -58,6 +60,7 @@ class Axis:
     hi: float
     k: float
     name: str = ""
+    tick: float = 0.0
 
     @classmethod
     def fit(
@@ -87,9 +90,16 @@ class Axis:
     def mm(self, value: float) -> float:
         return value / self.k
 
+    def with_tick(self, step: float) -> Axis:
+        """The same axis with ticks every ``step`` units (> 0)."""
+        if not (math.isfinite(step) and step > 0.0):
+            raise ParameterError(f"axis {self.symbol} tick", step, "must be positive")
+        return dataclasses.replace(self, tick=step)
+
     def ticks(self) -> list[float]:
-        """Tick values: a nice step at least :data:`TICK_MIN_MM` apart, through zero."""
-        step = nice_step(TICK_MIN_MM * self.k)
+        """Tick values: every ``tick`` units, or a nice step at least :data:`TICK_MIN_MM` apart;
+        always through zero."""
+        step = self.tick or nice_step(TICK_MIN_MM * self.k)
         first = math.ceil(self.lo / step - tol.DERIVED)
         last = math.floor(self.hi / step + tol.DERIVED)
         return [i * step for i in range(first, last + 1)]
@@ -172,9 +182,32 @@ class Graph:
             y = float(np.interp(x, xs, ys) if xs[0] < xs[-1] else np.interp(x, xs[::-1], ys[::-1]))
             self.d.sheet.add(Polyline((self.p(x, self.y.zero), self.p(x, y)), role))
 
-    def point(self, x: float, y: float, markup: str = "", role: str = "point") -> None:
-        """A marked data point with an optional placed label."""
+    def point(
+        self,
+        x: float,
+        y: float,
+        markup: str = "",
+        role: str = "point",
+        prefer: tuple[float, float] | None = None,
+        height: float = 2.5,
+    ) -> None:
+        """A marked data point with an optional placed label (``prefer``: a paper direction to
+        try first, y down)."""
         q = self.p(x, y)
         self.d.sheet.add(CircleItem(q, DOT_R, role, fill=True))
         if markup:
-            self.d.label(q, markup, 2.5, clear=DOT_R)
+            self.d.label(q, markup, height, prefer=prefer, clear=DOT_R)
+
+    def span_y(self, x: float, y0: float, y1: float, markup: str = "", height: float = 2.5) -> None:
+        """A dimension along the y axis at data x: a line from y0 to y1 with arrowheads at both
+        ends and a placed label (a swing such as ΔT_max − ΔT_min)."""
+        a, b = self.p(x, y0), self.p(x, y1)
+        if a == b:
+            return
+        self.d.sheet.add(Polyline((a, b), "dimension"))
+        up = 1.0 if b[1] < a[1] else -1.0
+        _head(self.d.sheet, b, (0.0, -up), "dimension")
+        _head(self.d.sheet, a, (0.0, up), "dimension")
+        if markup:
+            mid = (a[0], (a[1] + b[1]) / 2.0)
+            self.d.label(mid, markup, height, prefer=(1.0, 0.0), clear=0.5)

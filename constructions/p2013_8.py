@@ -1,0 +1,135 @@
+"""2013-8 · Punch-press motor and flywheel.
+
+A press punches holes of diameter d in a plate of thickness h (shear strength τ), z holes a second;
+the motor runs at n rpm with the speed fluctuation δ. Find the motor's power and the flywheel.
+
+The model:
+- the shear area is π·d·(h − s) after the punch has gone s into the plate, so the force falls
+  linearly from F_max = π·d·h·τ at s = 0 to zero at s = h (the seed says "increases": the same
+  triangle, mirrored, with the same area);
+- the work of one hole is the area of that load diagram, E = F_max·h/2 (the seed's text lost this
+  formula; it is restored here and computed as the diagram's area);
+- the motor supplies E once per cycle of 1/z s: N = E·z;
+- the nominal speed is the largest, ω_max = π·n/30; δ = (ω_max − ω_min)/ω_mean with
+  ω_mean = (ω_max + ω_min)/2, so ω_min = ω_max·(2 − δ)/(2 + δ) (19/21·ω_max for δ = 0.1);
+- the flywheel gives up E while its speed falls from ω_max to ω_min:
+  J = 2E/(ω_max² − ω_min²).
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from geomcad.construction import Construction
+from geomcad.dynamics import cycle_work, flywheel_inertia, speeds_from_max
+from geomcad.problem import Build, Param, ParamValue, Problem, ResultSpec, erratum, rounded
+from geomcad.sheet.graph import Axis
+
+ID = "2013-8"
+
+PARAMS = (
+    Param("d_hole", 0.05, "diameter of the hole", "m", gt=0.0),
+    Param("h_plate", 0.03, "thickness of the plate", "m", gt=0.0),
+    Param("tau", 6e7, "shear strength of the plate's steel", "Pa", gt=0.0),
+    Param("n_rpm", 1500, "nominal (largest) speed of the motor shaft", "rpm", gt=0.0),
+    Param("delta", 0.1, "coefficient of speed fluctuation δ (0 < δ < 2)", "1"),
+    Param("holes_per_s", 1, "holes punched per second", "1/s", gt=0.0),
+)
+
+RESULTS = (
+    ResultSpec("F_max", "N", "largest punching force π·d·h·τ", "F"),
+    ResultSpec("E", "J", "work of one hole: the area under F(s)"),
+    ResultSpec("N", "W", "mean power of the motor, E per cycle"),
+    ResultSpec("omega_max", "rad/s", "nominal (largest) angular velocity π·n/30"),
+    ResultSpec("omega_min", "rad/s", "smallest angular velocity ω_max·(2 − δ)/(2 + δ)"),
+    ResultSpec("J", "kg·m²", "flywheel's moment of inertia 2E/(ω_max² − ω_min²)"),
+)
+
+J_NOTE = (
+    "it is computed from the rounded speeds 157 and 142 rad/s (2·4241/(157² − 142²) = 1.891); "
+    "the exact speeds ω_max = 50π and ω_min = 19/21·ω_max give J = 1.8951 kg·m², which rounds "
+    "to 1.90"
+)
+
+SEED = {
+    "F_max": rounded(282.7, 1, "F_max = 282,7 кН", unit=1000.0),
+    "N": rounded(4241.0, 0, "N = 4241 Вт"),
+    "omega_max": rounded(157.0, 0, "ω_max = 157 рад/с"),
+    "omega_min": rounded(142.0, 0, "ω_min = 142 рад/с"),
+    "J": erratum(1.89, J_NOTE, "J = 1,89 кг·м²"),
+}
+
+NOTES = [
+    "restored: the seed's text lost the energy formula; the work of one hole is the area of the "
+    "load diagram, E = F_max·h/2",
+]
+
+#: Room for the load diagram's axes on the sheet (mm).
+F_ROOM_MM = (150.0, 85.0)
+
+
+@dataclass(frozen=True)
+class Data:
+    """What the sheet draws: the load diagram and the cycle's energy balance."""
+
+    s: np.ndarray
+    F: np.ndarray
+    E: float
+    cycle: float  # s
+    N: float
+    omega_max: float
+    omega_min: float
+    omega_mean: float
+    J: float
+
+
+def build(p: Mapping[str, ParamValue]) -> Build:
+    """The load diagram, its area, the motor's power and the flywheel, as recorded steps."""
+    d, h, tau = float(p["d_hole"]), float(p["h_plate"]), float(p["tau"])
+    n, delta, z = float(p["n_rpm"]), float(p["delta"]), float(p["holes_per_s"])
+    c = Construction("2013-8: punch press, the work of a hole and the flywheel")
+    f_max = c.value("F_max", math.pi * d * h * tau, "π·d·h·τ: the shear area π·d·h times τ")
+    s = np.array([0.0, h])
+    F = np.array([f_max, 0.0])
+    c.record("F(s)", "load diagram: F falls linearly from F_max at s = 0 to 0 at s = h", (s, F))
+    E = c.value("E", cycle_work(s, F), "area under F(s) (= F_max·h/2)", ("F(s)",))
+    N = c.value("N", E * z, "E·z: the motor supplies E once per cycle of 1/z s")
+    w_nom = math.pi * n / 30.0
+    sp = speeds_from_max(w_nom, delta)
+    c.value("ω_max", sp.omega_max, "π·n/30 (the nominal speed is the largest)")
+    c.value("ω_min", sp.omega_min, "ω_max·(2 − δ)/(2 + δ), from δ = (ω_max − ω_min)/ω_mean")
+    J = c.value("J", flywheel_inertia(E, sp), "2E/(ω_max² − ω_min²): ½J(ω_max² − ω_min²) = E")
+    results: dict[str, Any] = {
+        "F_max": f_max,
+        "E": E,
+        "N": N,
+        "omega_max": sp.omega_max,
+        "omega_min": sp.omega_min,
+        "J": J,
+    }
+    data = Data(s, F, E, 1.0 / z, N, sp.omega_max, sp.omega_min, sp.omega_mean, J)
+    # the sheet draws F in kN at the factor Axis.fit chooses; k_F is that factor in N/mm
+    k_F = Axis.fit("F", "кН", 0.0, f_max / 1000.0, F_ROOM_MM[1]).k * 1000.0
+    return Build(results, c, list(NOTES), {"F": k_F}, data)
+
+
+def draw(solution: Any) -> list[tuple[str, Any]]:
+    from .sheets_2013_8 import sheets
+
+    return sheets(solution)
+
+
+PROBLEM = Problem(
+    id=ID,
+    title="Punch-press motor and flywheel: the work of a hole, the power, the flywheel's J",
+    params=PARAMS,
+    results=RESULTS,
+    seed=SEED,
+    build=build,
+    draw=draw,
+)

@@ -1,0 +1,370 @@
+"""kulisa-23110713 · Course work: dynamics of the slotted-link (scotch-yoke) mechanism.
+
+Flywheel 1 (a homogeneous disc m1, R1, I1 = m1·R1²/2) turns about O under a constant moment M
+in a horizontal plane. Its pin A (radius OA) works in the vertical slot of yoke 2 (mass m2), which
+translates along x: x_C2 = x_C20 + OA·cos φ. The yoke bears, without slip, on the hub radius r3
+of roller 3 (mass m3, radius of gyration ρ3), whose radius R3 rolls without slip on the base.
+The start is from rest at φ0.
+
+Frame (the report's): O at the origin, φ counter-clockwise from x, A = OA(cos φ, sin φ); the
+yoke's contact line with the roller is y = 0 and the roller's centre is C3 = (x_C3, −r3), the
+base y = −r3 − R3. The yoke's centre C2 lies on y = 0. Where C2 and the roller sit along x
+(x_C20, x_C30) changes no reported result; the sheets place them so that the roller clears the
+flywheel (see :func:`layout`).
+
+The model (:mod:`geomcad.dynamics`): the velocity analogues come from the slotted yoke's velocity
+plan (V_A2 = V_A1 + V_A2A1) and the roller's instantaneous centre (its base contact P):
+v_C3 = R3/(R3 + r3)·v2, ω3 = v2/(R3 + r3). Then
+
+    I_pr = I1 + [m2 + m3·(R3² + ρ3²)/(R3 + r3)²]·OA²·sin²φ = A + B·sin²φ,
+
+the equation of motion I_pr·φ'' + ½·I_pr'·φ'² = M, ω1 by the kinetic-energy theorem from rest
+(and by ``solve_ivp``), ε1 from the equation, the reactions by kinetostatics with d'Alembert's
+inertia loads, and the horizontal force at the roller's axis that balances M quasi-statically by
+equal power, F_x·v_C3 = M·ω1 (checked by a kinetostatic balance without inertia loads).
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from geomcad import tol
+from geomcad.construction import Construction
+from geomcad.dynamics import (
+    Arrival,
+    Body,
+    Kinetostatics,
+    Motion,
+    Part,
+    Reactions,
+    ReducedModel,
+    Torque,
+    Yoke,
+    ode_settings,
+    omega_by_energy,
+    reach,
+    rolling_wheel,
+    slotted_yoke,
+    turning,
+)
+from geomcad.dynamics.analogues import Array
+from geomcad.errors import ConstructionError, ParameterError
+from geomcad.geom import Vec
+from geomcad.problem import Build, Param, ParamValue, Problem, ResultSpec, erratum, rounded
+from geomcad.sheet.scale import nice_factor
+from geomcad.units import deg
+
+ID = "kulisa-23110713"
+
+PARAMS = (
+    Param("m1", 80.0, "flywheel's mass (a homogeneous disc)", "kg"),
+    Param("R1", 0.36, "flywheel's radius", "m", gt=0.0),
+    Param("OA", 0.24, "radius of the pin A on the flywheel", "m", gt=0.0),
+    Param("m2", 20.0, "yoke's mass", "kg"),
+    Param("m3", 25.0, "roller's mass", "kg"),
+    Param("R3", 0.12, "roller's rolling radius (on the base)", "m", gt=0.0),
+    Param("r3", 0.05, "roller's hub radius (under the yoke)", "m", ge=0.0),
+    Param("rho3", 0.04, "roller's radius of gyration about its axis", "m", ge=0.0),
+    Param("M", 34.0, "constant moment on the flywheel", "N·m"),
+    Param("phi_deg", 150.0, "position φ of the flywheel", "deg"),
+    Param("phi0_deg", 0.0, "starting position φ0 (from rest)", "deg"),
+)
+
+RESULTS = (
+    ResultSpec("I_pr_A", "kg·m²", "A in I_pr = A + B·sin²φ: the flywheel's I1"),
+    ResultSpec("I_pr_B", "kg·m²", "B in I_pr = A + B·sin²φ"),
+    ResultSpec("I_pr", "kg·m²", "reduced moment of inertia at φ"),
+    ResultSpec("dI_pr", "kg·m²", "dI_pr/dφ at φ (signed)"),
+    ResultSpec("omega1", "rad/s", "flywheel's angular velocity at φ (kinetic-energy theorem)"),
+    ResultSpec("eps1", "rad/s²", "flywheel's angular acceleration φ'' at φ (signed)"),
+    ResultSpec("N_A", "N", "force between the pin A and the yoke's slot", "F"),
+    ResultSpec("X_O", "N", "bearing reaction at O along x (magnitude)", "F"),
+    ResultSpec("Y_O", "N", "bearing reaction at O along y (magnitude)", "F"),
+    ResultSpec(
+        "F_x", "N", "horizontal force at the roller's axis that balances M (equal power)", "F"
+    ),
+    ResultSpec("t_reach", "s", "time from rest at φ0 to φ (solve_ivp)"),
+    ResultSpec("omega_ode", "rad/s", "ω1 at φ from integrating the equation of motion"),
+)
+
+EPS_NOTE = (
+    "it comes from the rounded I_pr = 5.67 and ω1 = 5.60: (34 + 0.844·5.60²)/5.67 = 10.665; the "
+    "exact value 10.6668 rounds to 10.67"
+)
+NA_NOTE = (
+    "it is (34 − 5.184·10.66)/(0.24·sin 150°) = 177.2 with the report's rounded ε1 = 10.66; with "
+    "the exact ε1 = 10.6668 the flywheel's moment balance gives 177.47 N (the force changes by "
+    "I1/(OA·sin φ) = 43.2 N per rad/s² of ε1), and so does the yoke and roller's balance"
+)
+
+SEED = {
+    "I_pr_A": rounded(5.184, 3, "(5,184 + 1,949·sin²φ)·φ'' + …"),
+    "I_pr_B": rounded(1.949, 3, "(5,184 + 1,949·sin²φ)·φ'' + …"),
+    "I_pr": rounded(5.67, 2, "I_пр = 5,67 кг·м²"),
+    "dI_pr": rounded(-1.688, 3, "dI_пр/dφ = −1.688"),
+    "omega1": rounded(5.60, 2, "ω1 = 5,60 рад/с"),
+    "eps1": erratum(10.66, EPS_NOTE, "ε1 = 10,66 рад/с²"),
+    "N_A": erratum(177.2, NA_NOTE, "N_A = 177,2 Н"),
+    "X_O": erratum(177.2, NA_NOTE, "X_O = 177,2 Н"),
+    "Y_O": rounded(0.0, 0, "Y_O = 0"),
+    "F_x": rounded(401.4, 1, "F_x = 401,4 Н"),
+}
+
+NOTES = [
+    "report erratum: its I_пр(φ) formula prints m3·((R3 + ρ3)/(r3 + R3))²; the kinetic energy "
+    "it writes gives m3·(R3² + ρ3²)/(r3 + R3)² (I3 = m3·ρ3²), and its numbers (1,949 = "
+    "B) use that; the printed form would give B = 2.428 kg·m² and I_пр = 5.791 kg·m²; the same "
+    "slip is in its dI_пр/dφ",
+    "report erratum: x_C3 = x_C30 − (R3/(r3 + R3))·OA·cos φ has the wrong sign; rolling under "
+    "the yoke moves the roller's centre with the yoke, x_C3 = x_C30 + (R3/(r3 + R3))·OA·cos φ, "
+    "as its own v_C3x = R3/(r3 + R3)·v2 says",
+]
+
+#: The largest reaction on the free-body sheet gets at most this many mm.
+FORCE_ROOM_MM = 45.0
+#: The largest velocity on the scheme gets at most this many mm.
+VELOCITY_ROOM_MM = 36.0
+
+
+@dataclass(frozen=True)
+class Layout:
+    """Where the sheet puts the parts along x (metres): they change no result."""
+
+    x_C20: float
+    x_C30: float
+
+
+def layout(R1: float, OA: float, R3: float, r3: float) -> Layout:
+    """The roller clears the flywheel at every φ, and the yoke's centre sits midway between the
+    slot's mean position and the roller."""
+    k = R3 / (R3 + r3)
+    x_C30 = R1 + R3 + k * OA + 0.15 * R1
+    return Layout(0.5 * x_C30, x_C30)
+
+
+@dataclass(frozen=True)
+class Data:
+    """What the sheets draw."""
+
+    phi: float
+    phi0: float
+    omega: float
+    eps: float
+    lay: Layout
+    yoke: Yoke
+    roller: Motion
+    C2: Vec
+    C3: Vec
+    model: ReducedModel
+    arrival: Arrival
+    dynamic: Reactions
+    static: Reactions
+    F_x_kinetostatic: float
+    k_F: float
+    k_v: float
+
+
+def _nonneg(p: Mapping[str, ParamValue], name: str, what: str) -> float:
+    v = float(p[name])
+    if v < 0.0:
+        raise ParameterError(name, v, f"{what} cannot be negative")
+    return v
+
+
+def mechanism(
+    m1: float, R1: float, OA: float, m2: float, m3: float, R3: float, r3: float, rho3: float,
+    M: float, lay: Layout,
+) -> tuple[ReducedModel, Any, Any]:  # fmt: skip
+    """The reduced model and the motions of the yoke (with the pin) and of the roller.
+
+    The yoke translates along x (guide angle 0) with its slot along y; the roller's drive is the
+    yoke's displacement, so its centre is (x_C30 + k·OA·cos φ, −r3).
+    """
+
+    def yoke(phi: Array) -> Yoke:
+        return slotted_yoke(phi, OA, 0.0, math.pi / 2.0, body0=(lay.x_C20, 0.0))
+
+    def drive(phi: Array) -> Motion:
+        return slotted_yoke(phi, OA, 0.0, math.pi / 2.0).body
+
+    def roller(phi: Array) -> Motion:
+        return rolling_wheel(drive(phi), (1.0, 0.0), R3, r3, (lay.x_C30, -r3))
+
+    parts = (
+        Part(Body("1", m1, m1 * R1 * R1 / 2.0), turning),
+        Part(Body("2", m2), lambda phi: yoke(phi).body),
+        Part(Body("3", m3, m3 * rho3 * rho3), roller),
+    )
+
+    def moment(phi: Array, dphi: Array, t: Array) -> Array:
+        return M + 0.0 * phi
+
+    return ReducedModel(parts, (Torque("M", turning, moment),)), yoke, roller
+
+
+def build(p: Mapping[str, ParamValue]) -> Build:
+    """Reduced inertia, ω1 and ε1 at φ (energy and ODE), reactions, balancing force."""
+    m1 = _nonneg(p, "m1", "the flywheel's mass")
+    m2 = _nonneg(p, "m2", "the yoke's mass")
+    m3 = _nonneg(p, "m3", "the roller's mass")
+    R1, OA, R3 = float(p["R1"]), float(p["OA"]), float(p["R3"])
+    r3, rho3, M = float(p["r3"]), float(p["rho3"]), float(p["M"])
+    phi, phi0 = deg(float(p["phi_deg"])), deg(float(p["phi0_deg"]))
+    if not phi > phi0:
+        raise ParameterError(
+            "phi_deg", p["phi_deg"], f"must be > phi0_deg = {p['phi0_deg']}: the flywheel starts "
+            "from rest at φ0 and turns forward (counter-clockwise) to φ",
+        )  # fmt: skip
+    lay = layout(R1, OA, R3, r3)
+    model, yoke, roller = mechanism(m1, R1, OA, m2, m3, R3, r3, rho3, M, lay)
+    c = Construction("kulisa-23110713: dynamics of the slotted-link mechanism")
+    c.run("I_pr,min", "the smallest I_pr(φ) over a turn from φ0 (must be > 0)",
+          lambda: model.check_inertia(phi0))  # fmt: skip
+    a_ = c.value("A", float(model.J_pr(0.0)), "I_pr at sin φ = 0: the flywheel alone")
+    b_ = c.value("B", float(model.J_pr(math.pi / 2.0)) - a_, "I_pr(90°) − A")
+    i_pr = c.value("I_pr", float(model.J_pr(phi)), "Σ(m·v_q² + J·ω_q²) at φ")
+    di_pr = c.value("dI_pr", float(model.dJ_pr(phi)), "Σ 2(m·v_q·a_q + J·ω_q·ε_q) at φ")
+    w = c.run("ω1", "√(2·∫M dφ / I_pr(φ)): kinetic-energy theorem from rest at φ0",
+              lambda: omega_by_energy(model, phi0, phi))  # fmt: skip
+    eps = c.value("ε1", float(model.phi_ddot(phi, w)), "(M − ½·I_pr'·ω1²)/I_pr")
+    arr = c.run("t_reach", f"equation of motion from rest at φ0 to φ, {ode_settings()}",
+                lambda: reach(model, phi0, phi))  # fmt: skip
+    c.value("ω1 (ODE)", arr.omega, "φ' at φ from the integration")
+    # kinematics at the position
+    y = yoke(phi)
+    rl = roller(phi)
+    C2, C3 = y.body.point(), rl.point()
+    # reactions with d'Alembert's inertia loads (a balancing moment that must come out zero)
+    dyn = c.run("reactions", "equilibrium of flywheel, yoke and roller with inertia loads",
+                lambda: kinetostatics(m1, R1, OA, m2, m3, R3, r3, rho3, M, phi, w, eps, lay,
+                                      y, rl, inertia=True).solve())  # fmt: skip
+    r_o = dyn.force("R_{01}")
+    n_a = abs(dyn.magnitudes["N_A"])
+    # the balancing force at the roller's axis by equal power: F_x·v_C3 = M·ω1
+    v_c3 = float(rl.vx)
+    if abs(v_c3) <= tol.length_eps(OA):
+        raise ConstructionError(
+            "F_x = M·ω1/v_C3 (equal power)",
+            f"at φ = {p['phi_deg']}° the roller's axis stands still (v_C3 = 0: the pin is on the "
+            "yoke's line of motion, a dead position), so no finite force at the axis balances M",
+        )
+    f_x = c.value("F_x", abs(M / v_c3), "|M·ω_q1/v_qC3|: equal power of M and F_x")
+    st = c.run("F_x (kinetostatics)", "equilibrium of the three bodies without inertia loads",
+               lambda: kinetostatics(m1, R1, OA, m2, m3, R3, r3, rho3, M, phi, w, eps, lay,
+                                     y, rl, inertia=False).solve())  # fmt: skip
+    results: dict[str, Any] = {
+        "I_pr_A": a_,
+        "I_pr_B": b_,
+        "I_pr": i_pr,
+        "dI_pr": di_pr,
+        "omega1": w,
+        "eps1": eps,
+        "N_A": n_a,
+        "X_O": abs(r_o.x),
+        "Y_O": abs(r_o.y),
+        "F_x": f_x,
+        "t_reach": arr.t,
+        "omega_ode": arr.omega,
+    }
+    biggest = max(n_a, abs(r_o.x), abs(r_o.y), f_x, *_loads_max(dyn), *_loads_max(st))
+    k_F = nice_factor(biggest, FORCE_ROOM_MM, "F").k
+    k_v = nice_factor(w * OA, VELOCITY_ROOM_MM, "v").k
+    notes = [*NOTES, f"t_reach and omega_ode: {ode_settings()}"]
+    f_ks = abs(st.magnitudes["F_x"])
+    data = Data(phi, phi0, w, eps, lay, y, rl, C2, C3, model, arr, dyn, st, f_ks, k_F, k_v)
+    return Build(results, c, notes, {"F": k_F, "v": k_v}, data)
+
+
+def _loads_max(r: Reactions) -> list[float]:
+    return [ld.force.norm for lds in r.loads.values() for ld in lds if ld.force is not None]
+
+
+def kinetostatics(
+    m1: float, R1: float, OA: float, m2: float, m3: float, R3: float, r3: float, rho3: float,
+    M: float, phi: float, omega: float, eps: float, lay: Layout, y: Yoke, rl: Motion,
+    inertia: bool,
+) -> Kinetostatics:  # fmt: skip
+    """Flywheel 1, yoke 2 and roller 3 at φ; link 0 is the frame.
+
+    Flywheel: M, its inertia moment −I1·ε1 (its centre O does not move), the bearing R_01 at O,
+    the yoke's push at A (N_A, along x: the slot is vertical and frictionless). Yoke: N_A, its
+    inertia force −m2·a2 at C2, the roller's friction at the contact D (x_C3, 0) along x, its
+    guide's pressure (along y) and couple. Roller: that friction reversed, the base's friction
+    at P (x_C3, −r3 − R3), its inertia force −m3·a_C3 and moment −I3·ε3. In the horizontal plane
+    no weight presses the roller, so its contacts carry only their friction forces.
+
+    With ``inertia`` the accelerations follow from ε1 and ω1, and a balancing moment M_b on the
+    flywheel must come out zero (the equation of motion); without it the mechanism is balanced
+    quasi-statically by an unknown horizontal force F_x at the roller's axis.
+    """
+    ks = Kinetostatics("kinetostatics of flywheel, yoke and roller")
+    A = y.pin.point()
+    C2 = y.body.point()
+    C3 = rl.point()
+    D = Vec(C3.x, 0.0)
+    P = Vec(C3.x, -r3 - R3)
+    if inertia:
+        a2, _ = y.body.acceleration(omega, eps)
+        a3, e3 = rl.acceleration(omega, eps)
+        ks.body("1", J=m1 * R1 * R1 / 2.0, eps=eps, inertia_names=("", "M_{Ф1}"))
+        ks.body("2", m=m2, centre=C2, a=a2, inertia_names=("Ф_2", ""))
+        ks.body("3", m=m3, J=m3 * rho3 * rho3, centre=C3, a=a3, eps=e3,
+                inertia_names=("Ф_3", "M_{Ф3}"))  # fmt: skip
+    else:
+        ks.body("1")
+        ks.body("2", centre=C2)
+        ks.body("3", centre=C3)
+    ks.torque("1", "M", M)
+    ks.joint("R_{01}", None, "1", (0.0, 0.0))
+    ks.contact("N_A", "1", "2", A, (1.0, 0.0))
+    ks.contact("R_{32}", "3", "2", D, (1.0, 0.0))
+    ks.contact("R_{02}", None, "2", C2, (0.0, 1.0))
+    ks.couple("M_{02}", None, "2")
+    ks.contact("R_{03}", None, "3", P, (1.0, 0.0))
+    if inertia:
+        ks.balancing_torque("M_b", "1")
+    else:
+        ks.balancing_force("F_x", "3", C3, (1.0, 0.0))
+    return ks
+
+
+def draw(solution: Any) -> list[tuple[str, Any]]:
+    from .sheets_kulisa import sheets
+
+    return sheets(solution)
+
+
+def turns(data: Data) -> int:
+    """Whole turns from φ0 that the diagrams show: one, or as many as it takes to reach φ."""
+    return max(1, math.ceil((data.phi - data.phi0) / (2.0 * math.pi) - tol.DERIVED))
+
+
+def sweep(data: Data, n: int = 361) -> dict[str, np.ndarray]:
+    """I_pr, dI_pr and ω1 (kinetic-energy theorem from rest at φ0) over the turns from φ0 that
+    reach φ (:func:`turns`)."""
+    from geomcad.dynamics import omega_curve
+
+    span = 2.0 * math.pi * turns(data)
+    phis = data.phi0 + np.linspace(0.0, span, n * turns(data))
+    return {
+        "phi": phis,
+        "I_pr": data.model.J_pr(phis),
+        "dI_pr": data.model.dJ_pr(phis),
+        "omega": omega_curve(data.model, data.phi0, phis),
+    }
+
+
+PROBLEM = Problem(
+    id=ID,
+    title="Course work: dynamics of the slotted-link mechanism (flywheel, yoke, roller)",
+    params=PARAMS,
+    results=RESULTS,
+    seed=SEED,
+    build=build,
+    draw=draw,
+)

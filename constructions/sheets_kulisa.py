@@ -1,0 +1,596 @@
+"""kulisa-23110713's drawing sheets: what the student hands in.
+
+- main sheet: the mechanism at φ with the velocities of its points drawn at μ_V (V_A ⊥ OA, the
+  yoke's V_A2 = V_A1 + V_A2A1, the roller's V_D = V_2 and V_C3 from its instantaneous centre P),
+  the velocity plan, the given data and the results beside the report's;
+- ``graphs``: I_pr(φ) and ω1(φ) over a turn from rest (the kinetic-energy theorem as a curve, the
+  solve_ivp integration as points), the equation of motion, the two methods side by side, and
+  the report's errata;
+- ``fbd``: the free-body diagrams of flywheel, yoke and roller with the reactions and the inertia
+  loads at μ_F, and the mechanism balanced by the horizontal force F_x at the roller's axis.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+from geomcad import tol
+from geomcad.dynamics import time_by_energy
+from geomcad.geom import Vec
+from geomcad.sheet import Drawing, Scale, Sheet, TitleBlock, Viewport, start
+from geomcad.sheet.graph import Axis, Graph
+from geomcad.sheet.loads import force, ground, moment
+from geomcad.sheet.scale import gost_length_scale, nice_factor
+
+from .dyn_common import MIN_ARROW_MM, Where, draw_loads, f, small
+from .p_kulisa import Data, sweep, turns
+
+if TYPE_CHECKING:
+    from geomcad.problem import Solution
+
+PANEL_X = 292.0
+PANEL_W = 118.0
+#: The field of the mechanism on the main sheet (mm): x0, y0, x1, y1.
+SCHEME = (26.0, 30.0, 284.0, 182.0)
+#: The field of the velocity plan (mm): x0, y0, x1, y1 (left of the title block).
+PLAN = (25.0, 196.0, 226.0, 288.0)
+SLOT_W = 0.08  # the slot's half-width and the yoke's bar height, in units of OA
+SHEETS = 3
+
+
+def _tb(sol: Solution, title: str, no: int, scale: str = "") -> TitleBlock:
+    return TitleBlock(
+        title=title,
+        designation=f"КР.23110713.0{no}",
+        sheet_no=no,
+        sheets=SHEETS,
+        organisation="geomcad",
+        developer="geomcad",
+        scale=scale,
+    )
+
+
+def sheets(sol: Solution) -> list[tuple[str, Sheet]]:
+    """The main sheet and the sheets ``graphs`` and ``fbd``."""
+    return [("", _main(sol)), ("graphs", _graphs(sol)), ("fbd", _fbd(sol))]
+
+
+# -- geometry shared by the views --------------------------------------------------------------
+
+
+def _p(sol: Solution) -> dict[str, float]:
+    return {k: float(v) for k, v in sol.params.items()}
+
+
+def _extent(sol: Solution, data: Data) -> tuple[float, float, float, float]:
+    """The mechanism's model box at φ: flywheel, slot, yoke bar, roller and its base."""
+    p = _p(sol)
+    R1, OA, R3, r3 = p["R1"], p["OA"], p["R3"], p["r3"]
+    c3 = data.C3
+    x0 = min(-R1, data.yoke.pin.point().x - 0.3 * OA)
+    x1 = c3.x + 1.8 * R3
+    y0 = min(-R1, -r3 - R3 - 0.1 * R3)
+    y1 = max(R1, OA * (1.0 + 2.0 * SLOT_W))
+    return x0, y0, x1, y1
+
+
+def _scale_for(box: tuple[float, float, float, float], room: tuple[float, float]) -> Scale:
+    w, h = box[2] - box[0], box[3] - box[1]
+    return gost_length_scale(max(h, w * room[1] / room[0]), room[1])
+
+
+def _flywheel(v: Viewport, sol: Solution, data: Data, pivot: bool = True) -> None:
+    p = _p(sol)
+    A = data.yoke.pin.point()
+    v.circle((0.0, 0.0), p["R1"], "link")
+    v.seg((0.0, 0.0), A, "link")
+    if pivot:
+        v.pivot((0.0, 0.0))
+    else:
+        v.joint((0.0, 0.0))
+    v.joint(A)
+
+
+def _yoke(v: Viewport, sol: Solution, data: Data, guides: bool = True) -> None:
+    """The yoke: a frame around the vertical slot through A and a bar along y = 0 whose lower
+    edge bears on the roller's hub at D."""
+    p = _p(sol)
+    OA = p["OA"]
+    A = data.yoke.pin.point()
+    w = SLOT_W * OA
+    top, bot = OA + 2.0 * w, -OA - 2.0 * w
+    xa = A.x
+    # the slot (inner) and the frame (outer)
+    v.polyline([(xa - w, bot + w), (xa + w, bot + w), (xa + w, top - w), (xa - w, top - w)], "link",
+               closed=True)  # fmt: skip
+    v.polyline([(xa - 2 * w, bot), (xa + 2 * w, bot), (xa + 2 * w, top), (xa - 2 * w, top)], "link",
+               closed=True)  # fmt: skip
+    # the bar from the frame to beyond the roller, its lower edge on y = 0
+    x_end = data.C3.x + 0.6 * p["R3"]
+    v.polyline([(xa + 2 * w, 0.0), (x_end, 0.0), (x_end, w), (xa + 2 * w, w)], "link")
+    if guides:
+        for gx in (0.55, 0.8):
+            xg = xa + 2 * w + gx * (x_end - xa - 2 * w)
+            half = 0.1 * (x_end - xa)
+            ground(v, (xg - half, w + 0.5 * w), (xg + half, w + 0.5 * w), (0.0, 1.0))
+
+
+def _roller(v: Viewport, sol: Solution, data: Data, base: bool = True) -> None:
+    p = _p(sol)
+    R3, r3 = p["R3"], p["r3"]
+    c3 = data.C3
+    v.circle(c3, R3, "link")
+    if r3 > 0.0:
+        v.circle(c3, r3, "link")
+    v.joint(c3)
+    if base:
+        yb = -r3 - R3
+        ground(v, (c3.x - 1.6 * R3, yb), (c3.x + 1.6 * R3, yb), (0.0, -1.0))
+
+
+# -- the main sheet ----------------------------------------------------------------------------
+
+
+def _main(sol: Solution) -> Sheet:
+    data: Data = sol.data
+    p = _p(sol)
+    box = _extent(sol, data)
+    room = (SCHEME[2] - SCHEME[0], SCHEME[3] - SCHEME[1])
+    k = _scale_for(box, room)
+    d = start("A3", _tb(sol, "Кулисный механизм: скорости в положении φ", 1, k.ratio_text()))
+    d.text("Кинематическая схема в положении φ и скорости точек", (25.0, 13.0), 5.0)
+    kv = Scale(data.k_v, "v")
+    d.text(
+        f"φ = {f(p['phi_deg'])}°, ω_1 = {f(data.omega)} рад/с;   {k.label()} "
+        f"(M {k.ratio_text()});   {kv.label()}",
+        (25.0, 20.0),
+        3.5,
+    )
+    cx = SCHEME[0] + (-box[0]) / k.k + 0.5 * (room[0] - (box[2] - box[0]) / k.k)
+    cy = SCHEME[1] + box[3] / k.k + 0.5 * (room[1] - (box[3] - box[1]) / k.k)
+    v = d.viewport(k, (0.0, 0.0), (cx, cy))
+    _flywheel(v, sol, data)
+    _yoke(v, sol, data)
+    _roller(v, sol, data)
+    _velocities(v, sol, data)
+    _plan(d, sol, data)
+    _panel_main(d, sol, data)
+    return d.finish()
+
+
+def _velocities(v: Viewport, sol: Solution, data: Data) -> None:
+    """V_A ⊥ OA, V_A2 = V_A1 + V_A2A1 along x, V_D = V_2 at the contact, V_C3 from P."""
+    p = _p(sol)
+    w = data.omega
+    kv = data.k_v
+    km = v.scale.k
+    A = data.yoke.pin.point()
+    c3 = data.C3
+    D = Vec(c3.x, 0.0)
+    P = Vec(c3.x, -p["r3"] - p["R3"])
+    va, _ = data.yoke.pin.velocity(w)
+    v2, _ = data.yoke.body.velocity(w)
+    vc, w3 = data.roller.velocity(w)
+
+    def tip(q: Vec, vel: Vec) -> Vec:
+        # a velocity drawn from its point: |V|/μ_V mm, i.e. |V|·μ_l/μ_V metres on the drawing
+        return q + vel * (km / kv)
+
+    for q, vel, name in ((A, va, "V_A"), (A, v2, "V_{A2}"), (D, v2, "V_D = V_2"),
+                         (c3, vc, "V_{C3}")):  # fmt: skip
+        if vel.norm > 0.0:
+            v.arrow(q, tip(q, vel), "result")
+            v.label(tip(q, vel), name, 2.5, prefer=(vel.x, vel.y))
+    # V_A2A1 along the slot: from V_A's tip to V_A2's tip
+    if (v2 - va).norm > 0.0:
+        v.arrow(tip(A, va), tip(A, v2), "construction")
+        v.label(0.5 * (tip(A, va) + tip(A, v2)), "V_{A2A1}", 2.5, prefer=(1.0, 0.0))
+    # the roller's velocities grow linearly from its instantaneous centre P
+    if v2.norm > 0.0:
+        v.seg(P, tip(D, v2), "construction")
+    v.dot(P)
+    v.label(P, "P_3", 2.5, prefer=(1.0, -1.0))
+    v.dot(D)
+    v.label(D, "D", 2.5, prefer=(1.0, 1.0))
+    v.label(A, "A", 3.5, prefer=(-1.0, 1.0))
+    v.label((0.0, 0.0), "O", 3.5, prefer=(-1.0, -1.0))
+    v.label(c3, "C_3", 3.5, prefer=(1.0, -1.0))
+    v.dot(data.C2)
+    v.label(data.C2, "C_2", 3.5, prefer=(0.0, -1.0))
+    # ω1 and ω3 as curved arrows, the angle φ
+    moment(v, (0.0, 0.0), w, 9.0, "ω_1", role="result", start=math.radians(200.0), height=2.5)
+    moment(v, c3, w3, 0.55 * v.mm(p["R3"]), "ω_3", role="result", start=math.radians(110.0),
+           height=2.5)  # fmt: skip
+    v.seg((0.0, 0.0), (0.6 * p["R1"], 0.0), "centre")
+    v.dim_angle((0.0, 0.0), (p["OA"], 0.0), A, "φ", r_mm=0.45 * v.mm(p["OA"]), height=2.5)
+
+
+def _plan(d: Drawing, sol: Solution, data: Data) -> None:
+    """The velocity plan: pa1 = V_A1 ⊥ OA, a1a2 ∥ slot, pa2 = V_A2 ∥ guide, pc3 = V_C3."""
+    w = data.omega
+    va, _ = data.yoke.pin.velocity(w)
+    v2, _ = data.yoke.body.velocity(w)
+    vc, _ = data.roller.velocity(w)
+    kv = nice_factor(va.norm, PLAN[3] - PLAN[1] - 14.0, "v") if va.norm > 0.0 else Scale(1.0, "v")
+    d.text(f"План скоростей, {kv.label()}", (PLAN[0], PLAN[1]), 3.5)
+    xs = [0.0, va.x, v2.x, vc.x]
+    ys = [0.0, va.y, v2.y, vc.y]
+    mid_x = 0.5 * (min(xs) + max(xs)) / kv.k
+    mid_y = 0.5 * (min(ys) + max(ys)) / kv.k
+    pole = (0.5 * (PLAN[0] + 60.0 + PLAN[2]) - mid_x, 0.5 * (PLAN[1] + 6.0 + PLAN[3]) + mid_y)
+    pv = d.viewport(kv, (0.0, 0.0), pole)
+    for vec_, name in ((va, "a_1"), (v2, "a_2 = d"), (vc, "c_3")):
+        if vec_.norm > 0.0:
+            pv.arrow((0.0, 0.0), vec_, "result")
+            pv.dot(vec_)
+            pv.label(vec_, name, 3.5, prefer=(0.0, -1.0) if name == "c_3" else None)
+    if (v2 - va).norm > 0.0:
+        pv.arrow(va, v2, "construction")
+    pv.dot((0.0, 0.0))
+    pv.label((0.0, 0.0), "p", 3.5, prefer=(1.0, 1.0))
+    k3 = vc.norm / v2.norm if v2.norm > 0.0 else 0.0
+    y = PLAN[1] + 6.0
+    for ln in (
+        f"pa_1 = V_A = ω_1·OA = {f(va.norm)} м/с, перпендикулярно OA;",
+        "a_1a_2 = V_{A2A1} – вдоль паза; pa_2 = V_{A2} = V_2 – вдоль направляющей;",
+        f"pa_2 = {f(v2.norm)} м/с; точка D катка: V_D = V_2;",
+        f"pc_3 = V_{{C3}} = V_2·R_3/(R_3 + r_3) = {f(vc.norm)} м/с (pc_3/pa_2 = {f(k3)}).",
+    ):
+        y = d.paragraph(ln, PLAN[0], y, 56.0, 2.5, indent=3.0) + 1.0
+
+
+def _diff(exact: float, pub: float) -> float:
+    """exact − published, with round-off shown as 0."""
+    dv = exact - pub
+    return 0.0 if abs(dv) <= tol.DERIVED * max(abs(exact), abs(pub)) else dv
+
+
+def _results_rows(sol: Solution, names: tuple[tuple[str, str, str], ...]) -> list[list[str]]:
+    seed = sol.seed
+    rows = [["Величина", "Точно", "Отчёт", "Разность"]]
+    for name, label, unit in names:
+        exact = float(sol.results[name])
+        pub = seed.get(name)
+        rows.append(
+            [
+                label,
+                f"{f(exact, 6)} {unit}".strip(),
+                "" if pub is None else f(pub, 5),
+                "" if pub is None else f(_diff(exact, pub), 2),
+            ]
+        )
+    return rows
+
+
+def _panel_main(d: Drawing, sol: Solution, data: Data) -> None:
+    p = _p(sol)
+    x, y = PANEL_X, 10.0
+    d.text("Исходные данные (восстановлены)", (x, y + 3.5), 3.5)
+    items = [
+        ("m1", "m_1", "кг"), ("R1", "R_1", "м"), ("OA", "OA", "м"), ("m2", "m_2", "кг"),
+        ("m3", "m_3", "кг"), ("R3", "R_3", "м"), ("r3", "r_3", "м"), ("rho3", "ρ_3", "м"),
+        ("M", "M", "Н·м"), ("phi_deg", "φ", "°"), ("phi0_deg", "φ_0", "°"),
+    ]  # fmt: skip
+    cells = [f"{lab} = {f(p[n], 6)}{'' if u == '°' else ' '}{u}" for n, lab, u in items]
+    cells.append("")
+    rows = [["Параметр", "Параметр"]] + [[cells[i], cells[i + 1]] for i in range(0, 12, 2)]
+    _, h = d.table(x, y + 6.0, (59.0, 59.0), rows)
+    y += 6.0 + h + 6.0
+    d.text("Скорости в положении φ", (x, y + 3.5), 3.5)
+    w = data.omega
+    va, _ = data.yoke.pin.velocity(w)
+    v2, _ = data.yoke.body.velocity(w)
+    vc, w3 = data.roller.velocity(w)
+    rows = [
+        ["Величина", "Значение", "Величина", "Значение"],
+        ["V_A", f"{f(va.norm)} м/с", "V_2 = V_D", f"{f(v2.norm)} м/с"],
+        ["V_{C3}", f"{f(vc.norm)} м/с", "ω_3", f"{f(abs(w3))} рад/с"],
+    ]
+    _, h = d.table(x, y + 6.0, (20.0, 39.0, 20.0, 39.0), rows)
+    y += 6.0 + h + 6.0
+    d.text("Результаты", (x, y + 3.5), 3.5)
+    rows = _results_rows(
+        sol,
+        (
+            ("I_pr_A", "A", "кг·м²"),
+            ("I_pr_B", "B", "кг·м²"),
+            ("I_pr", "I_{пр}", "кг·м²"),
+            ("dI_pr", "dI_{пр}/dφ", "кг·м²"),
+            ("omega1", "ω_1", "рад/с"),
+            ("eps1", "ε_1", "рад/с²"),
+            ("t_reach", "t(φ)", "с"),
+            ("omega_ode", "ω_1 (ОДУ)", "рад/с"),
+        ),
+    )
+    _, h = d.table(x, y + 6.0, (21.0, 41.0, 24.0, 32.0), rows)
+    y += 6.0 + h + 4.0
+    lines = (
+        "I_{пр} = A + B·sin^2φ; A = m_1R_1^2/2, B = [m_2 + m_3(R_3^2 + ρ_3^2)/(R_3 + r_3)^2]·OA^2.",
+        "Скорости – из плана скоростей (V_{A2} = V_{A1} + V_{A2A1}) и мгновенного "
+        "центра P_3 катка.",
+    )
+    for ln in lines:
+        y = d.paragraph(ln, x, y, PANEL_W, 2.5) + 0.8
+
+
+# -- graphs --------------------------------------------------------------------------------------
+
+
+def _graphs(sol: Solution) -> Sheet:
+    data: Data = sol.data
+    p = _p(sol)
+    d = start("A3", _tb(sol, "Кулисный механизм: I_{пр}(φ) и ω_1(φ)", 2))
+    d.text("Приведённый момент инерции и угловая скорость маховика за оборот", (25.0, 13.0), 5.0)
+    sw = sweep(data)
+    phis_deg = np.degrees(sw["phi"])
+    lo, hi = float(phis_deg[0]), float(phis_deg[-1])
+    gx = Axis.fit("φ", "°", lo, hi, 195.0).with_tick(30.0 * turns(data))
+    # 1. I_pr(φ)
+    i_vals = sw["I_pr"]
+    gy = Axis.fit("I_{пр}", "кг·м²", 0.0, float(np.max(i_vals)), 90.0, name="I")
+    d.text("1. I_{пр}(φ) = A + B·sin^2φ", (25.0, 24.0), 3.5)
+    g = Graph(d, gx, gy, (40.0, 38.0 + gy.mm(gy.hi) + 6.0))
+    g.factors((25.0, 30.0))
+    g.curve(list(phis_deg), list(i_vals), "result")
+    g.axes()
+    phi_deg = p["phi_deg"]
+    g.curve([phi_deg, phi_deg], [0.0, float(sol.results["I_pr"])], "centre")
+    g.point(phi_deg, float(sol.results["I_pr"]), f"I_{{пр}} = {f(sol.results['I_pr'])}",
+            prefer=(1.0, -1.0))  # fmt: skip
+    # 2. ω1(φ) from rest: the energy theorem (curve) and solve_ivp (points)
+    om = sw["omega"]
+    y2 = 148.0
+    gy2 = Axis.fit("ω_1", "рад/с", 0.0, float(np.max(om)), 70.0, name="ω")
+    d.text("2. ω_1(φ) из состояния покоя при φ_0: теорема об изменении кинетической энергии "
+           "(линия) и solve\\_ivp (точки)", (25.0, y2), 3.5)  # fmt: skip
+    g2 = Graph(d, gx, gy2, (40.0, y2 + 14.0 + gy2.mm(gy2.hi) + 6.0))
+    g2.factors((25.0, y2 + 6.0))
+    g2.curve(list(phis_deg), list(om), "result")
+    g2.axes()
+    tr = data.arrival.trajectory
+    full = _turn_ode(data)
+    for a, wv in zip(full[0], full[1], strict=True):
+        g2.point(float(np.degrees(a)), float(wv))
+    g2.curve([phi_deg, phi_deg], [0.0, data.omega], "centre")
+    g2.point(phi_deg, data.omega, f"ω_1 = {f(data.omega)}", prefer=(1.0, -1.0))
+    del tr
+    _panel_graphs(d, sol, data)
+    return d.finish()
+
+
+def _turn_ode(data: Data, n: int = 13) -> tuple[list[float], list[float]]:
+    """ω1 by solve_ivp at n positions over the diagram's turns, on one motion from rest at φ0."""
+    from geomcad.dynamics import reach
+
+    phis = data.phi0 + np.linspace(0.0, 2.0 * math.pi * turns(data), n)[1:]
+    arr = reach(data.model, data.phi0, float(phis[-1]))
+    # the dense solution gives φ(t); invert it at the wanted φ by the monotone samples
+    ts = np.linspace(0.0, arr.t, 4001)
+    y = arr.trajectory.sol(ts)
+    omegas = list(np.interp(phis, y[0], y[1]))
+    return [data.phi0, *phis], [0.0, *omegas]
+
+
+def _panel_graphs(d: Drawing, sol: Solution, data: Data) -> None:
+    r = sol.results
+    p = _p(sol)
+    x, y = 262.0, 10.0
+    width = 146.0
+    y = d.text("Уравнение движения", (x, y + 3.5), 3.5).at[1] + 2.0
+    a_, b_ = float(r["I_pr_A"]), float(r["I_pr_B"])
+    lines = (
+        "I_{пр}(φ)φ'' + ½(dI_{пр}/dφ)φ'^2 = M (уравнение движения машины; то же даёт уравнение "
+        "Лагранжа II рода):",
+        f"({f(a_, 6)} + {f(b_, 6)}·sin^2φ)·φ'' + {f(b_ / 2.0, 6)}·sin 2φ·φ'^2 = {f(p['M'], 6)}.",
+        "ω_1 = [2M(φ – φ_0)/I_{пр}(φ)]^{1/2} – теорема об изменении кинетической энергии; "
+        "ε_1 = (M – ½I'_{пр}ω_1^2)/I_{пр}.",
+    )
+    for ln in lines:
+        y = d.paragraph(ln, x, y, width, 2.5, indent=4.0) + 0.8
+    y += 3.0
+    d.text("Два способа", (x, y + 3.5), 3.5)
+    t_q = time_by_energy(data.model, data.phi0, data.phi)
+    rows = [
+        ["Величина", "Энергия (quad)", "solve\\_ivp", "Разность"],
+        [
+            "ω_1, рад/с",
+            f(r["omega1"], 9),
+            f(r["omega_ode"], 9),
+            small(r["omega_ode"] - r["omega1"], r["omega1"]),
+        ],
+        ["t(φ), с", f(t_q, 9), f(r["t_reach"], 9), small(r["t_reach"] - t_q, t_q)],
+    ]
+    _, h = d.table(x, y + 6.0, (26.0, 40.0, 40.0, 40.0), rows)
+    y += 6.0 + h + 3.0
+    y = d.paragraph("solve\\_ivp: DOP853, rtol = 10^{–11}, atol = 10^{–12}; событие φ = φ_{зад}.",
+                    x, y, width, 2.5) + 4.0  # fmt: skip
+    if sol.is_seed:
+        y = d.text("Замечания к отчёту", (x, y + 3.5), 3.5).at[1] + 2.0
+        notes = (
+            "формула I_{пр}(φ) напечатана с m_3((R_3 + ρ_3)/(r_3 + R_3))^2; из выражения "
+            "кинетической энергии (I_3 = m_3ρ_3^2) следует m_3(R_3^2 + ρ_3^2)/(r_3 + R_3)^2 – "
+            "числа отчёта (1,949) получены по верной формуле; напечатанная дала бы B = 2,428 и "
+            "I_{пр} = 5,791 кг·м²; та же описка в dI_{пр}/dφ;",
+            "x_{C3} = x_{C30} – (R_3/(r_3 + R_3))·OA·cos φ – неверный знак: центр катка "
+            "движется вместе с кулисой, x_{C3} = x_{C30} + (R_3/(r_3 + R_3))·OA·cos φ (как и "
+            "v_{C3x} = R_3/(r_3 + R_3)·v_2 в самом отчёте);",
+            "ε_1 = 10,66 рад/с² получено по округлённым I_{пр} = 5,67 и ω_1 = 5,60; точно "
+            f"{f(r['eps1'], 6)} ≈ 10,67 рад/с²; N_A = X_O = 177,2 Н – по этому ε_1, точно "
+            f"{f(r['N_A'], 6)} Н.",
+        )
+        for i, ln in enumerate(notes):
+            y = d.paragraph(f"{i + 1}. {ln}", x, y, width, 2.5, indent=4.0) + 0.8
+
+
+# -- free-body diagrams --------------------------------------------------------------------------
+
+
+Box = tuple[float, float, float, float]
+
+
+def _fbd_boxes(sol: Solution, data: Data) -> dict[str, Box]:
+    """The model boxes of the four views: flywheel, yoke, roller, the whole mechanism."""
+    p = _p(sol)
+    R1, OA, R3 = p["R1"], p["OA"], p["R3"]
+    A, c3 = data.yoke.pin.point(), data.C3
+    w = SLOT_W * OA
+    return {
+        "1": (-R1, -R1, R1, R1),
+        "2": (A.x - 2.0 * w, -OA - 2.0 * w, c3.x + 0.6 * R3, OA + 2.0 * w),
+        "3": (c3.x - R3, c3.y - R3, c3.x + R3, c3.y + R3),
+        "all": _extent(sol, data),
+    }
+
+
+def _fbd_scale(boxes: dict[str, Box]) -> Scale:
+    """One GOST scale for the four views: two rows in 230 × 2·80 mm, with room for the loads."""
+
+    def w(b: Box) -> float:
+        return b[2] - b[0]
+
+    def h(b: Box) -> float:
+        return b[3] - b[1]
+
+    need = max(
+        (w(boxes["1"]) + w(boxes["2"])) / FBD_ROW[0],
+        (w(boxes["3"]) + w(boxes["all"])) / FBD_ROW[0],
+        max(h(b) for b in boxes.values()) / FBD_ROW[1],
+    )
+    return gost_length_scale(need * 100.0, 100.0)
+
+
+#: The room of one row of free-body views (mm): the sum of the two widths, the height.
+FBD_ROW = (170.0, 85.0)
+
+
+def _fbd(sol: Solution) -> Sheet:
+    data: Data = sol.data
+    p = _p(sol)
+    boxes = _fbd_boxes(sol, data)
+    k = _fbd_scale(boxes)
+    d = start("A3", _tb(sol, "Кулисный механизм: реакции связей", 3, k.ratio_text()))
+    d.text("Силы, действующие на звенья в положении φ (с силами инерции), и уравновешивающая сила",
+           (25.0, 13.0), 5.0)  # fmt: skip
+    d.text(f"{k.label()} (M {k.ratio_text()});   μ_F = {f(data.k_F)} Н/мм (стрелки короче "
+           f"{f(MIN_ARROW_MM)} мм удлинены до {f(MIN_ARROW_MM)} мм);   ε_1 = {f(data.eps)} рад/с²",
+           (25.0, 20.0), 3.5)  # fmt: skip
+
+    def view(name: str, left: float, mid_y: float) -> tuple[Viewport, float]:
+        b = boxes[name]
+        cx, cy = 0.5 * (b[0] + b[2]), 0.5 * (b[1] + b[3])
+        half = 0.5 * (b[2] - b[0]) / k.k
+        return d.viewport(k, (cx, cy), (left + half, mid_y)), left + 2.0 * half
+
+    A = data.yoke.pin.point()
+    c3 = data.C3
+    top_y, bot_y = 88.0, 196.0
+    # a) the flywheel
+    v1, right = view("1", 45.0, top_y)
+    d.text("а) маховик 1", (28.0, 32.0), 3.5)
+    _flywheel(v1, sol, data, pivot=False)
+    v1.label(A, "A", 3.5, prefer=(-1.0, 1.0))
+    v1.label((0.0, 0.0), "O", 3.5, prefer=(-1.0, -1.0))
+    draw_loads(v1, data.dynamic, data.k_F, "1", {
+        "M": Where("M", radius=6.0, start_deg=160.0),
+        "M_{Ф1}": Where("M_{Ф1}", radius=11.0, start_deg=-20.0),
+        "R_{01}": Where("X_O", prefer=(0.0, 1.0)),
+        "N_A": Where("N_A", prefer=(0.0, 1.0)),
+    })  # fmt: skip
+    # b) the yoke
+    v2, _ = view("2", right + 40.0, top_y)
+    d.text("б) кулиса 2", (right + 30.0, 32.0), 3.5)
+    _yoke(v2, sol, data, guides=False)
+    v2.dot(data.C2)
+    v2.label(data.C2, "C_2", 3.5, prefer=(0.0, 1.0))
+    D = Vec(c3.x, 0.0)
+    v2.dot(D)
+    v2.label(D, "D", 3.5, prefer=(1.0, 1.0))
+    v2.label(A, "A", 3.5, prefer=(-1.0, 1.0))
+    draw_loads(v2, data.dynamic, data.k_F, "2", {
+        "N_A": Where("N_A", prefer=(0.0, 1.0)),
+        "Ф_2": Where("Ф_2", prefer=(0.0, -1.0)),
+        "R_{32}": Where("R_{32}", prefer=(0.0, -1.0)),
+        "M_{02}": Where("M_{02}", at=Vec(A.x, 0.0), radius=5.0, start_deg=60.0),
+    })  # fmt: skip
+    # c) the roller
+    v3, right = view("3", 55.0, bot_y)
+    d.text("в) каток 3", (28.0, 150.0), 3.5)
+    _roller(v3, sol, data, base=False)
+    P = Vec(c3.x, -p["r3"] - p["R3"])
+    for q, name in ((D, "D"), (P, "P")):
+        v3.dot(q)
+        v3.label(q, name, 3.5, prefer=(-1.0, 0.0))
+    v3.label(c3, "C_3", 3.5, prefer=(-1.0, 1.0))
+    draw_loads(v3, data.dynamic, data.k_F, "3", {
+        "R_{32}": Where("R_{23}"),
+        "R_{03}": Where("R_{03}"),
+        "Ф_3": Where("Ф_3", prefer=(0.0, 1.0)),
+        "M_{Ф3}": Where("M_{Ф3}", radius=v3.mm(p["R3"]) + 4.0, start_deg=100.0),
+    }, centre=c3)  # fmt: skip
+    # d) the mechanism balanced by F_x at the roller's axis (no inertia loads)
+    v4, _ = view("all", right + 40.0, bot_y)
+    d.text("г) уравновешивающая сила F_x (без сил инерции)", (right + 30.0, 150.0), 3.5)
+    _flywheel(v4, sol, data)
+    _yoke(v4, sol, data)
+    _roller(v4, sol, data)
+    v4.label((0.0, 0.0), "O", 3.5, prefer=(-1.0, -1.0))
+    v4.label(c3, "C_3", 3.5, prefer=(0.0, -1.0))
+    moment(v4, (0.0, 0.0), p["M"], 6.0, f"M = {f(abs(p['M']))} Н·м", role="result",
+           start=math.radians(160.0), height=2.5)  # fmt: skip
+    fx = data.static.force("F_x")
+    force(v4, c3, fx, max(fx.norm / 40.0, data.k_F), f"F_x = {f(fx.norm)} Н", role="result",
+          height=2.5)  # fmt: skip
+    _panel_fbd(d, sol, data)
+    return d.finish()
+
+
+def _panel_fbd(d: Drawing, sol: Solution, data: Data) -> None:
+    x, y = 262.0, 26.0
+    width = 146.0
+    d.text("Реакции и уравновешивающая сила", (x, y + 3.5), 3.5)
+    rows = _results_rows(
+        sol,
+        (
+            ("N_A", "N_A", "Н"),
+            ("X_O", "X_O", "Н"),
+            ("Y_O", "Y_O", "Н"),
+            ("F_x", "F_x", "Н"),
+        ),
+    )
+    _, h = d.table(x, y + 6.0, (26.0, 44.0, 36.0, 40.0), rows)
+    y += 6.0 + h + 6.0
+    R = data.dynamic
+    d.text("Остальные нагрузки", (x, y + 3.5), 3.5)
+    vals = []
+    for body in ("1", "2", "3"):
+        for ld in R.loads[body]:
+            if ld.kind == "inertia":
+                val = ld.force.norm if ld.force is not None else abs(ld.moment)
+                vals.append((ld.name, f"{f(val, 5)} {'Н' if ld.force is not None else 'Н·м'}"))
+    vals.append(("R_{32} = R_{23}", f"{f(abs(R.magnitudes['R_{32}']), 5)} Н"))
+    vals.append(("R_{03}", f"{f(abs(R.magnitudes['R_{03}']), 5)} Н"))
+    vals.append(("M_{02}", f"{f(abs(R.moment('M_{02}')), 5)} Н·м"))
+    if len(vals) % 2:
+        vals.append(("", ""))
+    rows = [["Нагрузка", "Значение", "Нагрузка", "Значение"]]
+    rows += [[*vals[i], *vals[i + 1]] for i in range(0, len(vals), 2)]
+    _, h = d.table(x, y + 6.0, (30.0, 43.0, 30.0, 43.0), rows)
+    y += 6.0 + h + 5.0
+    mb = R.moment("M_b")
+    lines = (
+        "R_{ij} – сила звена i на звено j (0 – стойка); Ф_i = –m_ia_{Ci}, M_{Фi} = –I_iε_i – "
+        "нагрузки инерции по принципу Даламбера.",
+        "Паз гладкий: N_A горизонтальна. В горизонтальной плоскости вес не прижимает каток, "
+        "контакты катка передают только силы сцепления R_{32}, R_{03}; направляющая кулисы – "
+        "нормальную силу и момент M_{02}.",
+        f"Проверка: уравновешивающий момент на маховике при ε_1 из уравнения движения "
+        f"M_у = {small(mb, float(sol.params['M']), 'Н·м')}, т.е. 0 (кинетостатика совпадает с "
+        "уравнением Лагранжа).",
+        f"F_x по равенству мощностей F_x·v_{{C3}} = M·ω_1: {f(sol.results['F_x'], 7)} Н; из "
+        f"равновесия звеньев без сил инерции (г): {f(data.F_x_kinetostatic, 7)} Н.",
+    )
+    for ln in lines:
+        y = d.paragraph(f"– {ln}", x, y, width, 2.5, indent=3.0) + 0.8
