@@ -262,6 +262,9 @@ def _solve_report(sol: Solution) -> str:
     problem = sol.problem
     lines = [f"{problem.id} · {problem.title}", "", "parameters:"]
     for p in problem.params:
+        if p.name not in sol.params:
+            lines.append(f"  {p.name}: not set (derived by the problem)")
+            continue
         value = sol.params[p.name]
         mark = "" if value == p.default else "   (set; default " + _fmt(p.default) + ")"
         lines.append(f"  {p.name} = {_fmt(value)}{_unit(p.unit)}{mark}")
