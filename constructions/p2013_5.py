@@ -59,7 +59,7 @@ from geomcad.kinematics.trains import (
     willis,
 )
 from geomcad.problem import Build, Param, ParamValue, Problem, ResultSpec, erratum, rounded
-from geomcad.sheet.scale import NICE, gost_length_scale, nice_factor
+from geomcad.sheet.scale import gost_length_scale, nice_factor
 
 ID = "2013-5"
 
@@ -278,7 +278,7 @@ def build(p: Mapping[str, ParamValue]) -> Build:
     links = (SUN, BLOCK25, PLANET, H1, H2)
     om = [abs(plan.omega[k]) for k in links]
     # the intercepts ω/k_ω fit RAY_W, and the pole distance H/k_l stays below RAY_H
-    k_omega = max(_nice_up(max(om) / RAY_W), _nice_up(k_v / (RAY_H * k_l)))
+    k_omega = max(nice_factor(max(om), RAY_W, "v").k, nice_factor(k_v / k_l, RAY_H, "v").k)
     H = k_v / k_omega  # the pole distance in the plan's y units (m): ray i ends at v = H·ω_i
     S = Vec(0.0, y_lo - 2.0 * H)  # the pole, below the plan on its axis v = 0
     rays = ray_plan(c, plan, S, H, links)
@@ -311,16 +311,6 @@ def build(p: Mapping[str, ParamValue]) -> Build:
     zs = {"1": z1, "2": z2, "3": z3, "4": z4, "5": z5, "6": z6, "7": z7}
     geo = Geometry(zs, m, a, points, plan, rays, omega_exact, k_v, k_omega, (y_lo, y_hi))
     return Build(results, c, notes, {"l": k_l, "v": k_v}, geo)
-
-
-def _nice_up(raw: float) -> float:
-    """The smallest 1, 2, 2.5, 4 or 5 × 10^n not below ``raw``."""
-    e = math.floor(math.log10(raw))
-    for exp in (e, e + 1):
-        for mant in NICE:
-            if mant * 10.0**exp >= raw * (1.0 - tol.DERIVED):
-                return mant * 10.0**exp
-    return 10.0 ** (e + 2)
 
 
 #: The sheet's layout (mm): the scheme's left edge and top, the gap between the scheme and the

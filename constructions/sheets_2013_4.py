@@ -172,8 +172,10 @@ def overline_marks(sheet: Sheet) -> None:
         sheet.items[i] = dataclasses.replace(
             it, runs=new_runs, width=text_width(new_runs, it.font_size)
         )
+        # a bar belongs with its text: the tables' thin line, or a dimension's
+        role = "frame_thin" if it.role == "title" else "dimension"
         for a, b in bars:
-            sheet.add(Polyline((a, b), "dimension"))
+            sheet.add(Polyline((a, b), role))
 
 
 def _arc(r: float, half: float) -> Arc:
@@ -203,7 +205,7 @@ def _circles(v: Viewport, gear: SpurGear, geo: Any, half: float) -> None:
 def _rack(v: Viewport, gear: SpurGear, x_lo: float, x_hi: float) -> None:
     """The producing rack at φ = 0 (its space straddles the tooth), its datum line and the shift."""
     m, a = gear.m, gear.alpha
-    c0, y_t, rho, c_x, y_c = gear._rack_frame()
+    c0, y_t, rho, c_x, y_c = gear.rack_frame()
     y_top = gear.r + gear.x * m + (gear.rack.ha + gear.rack.c) * m
     pts: list[tuple[float, float]] = []
     for kk in range(-3, 3):

@@ -31,7 +31,6 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Any
 
 import numpy as np
 import numpy.typing as npt
@@ -62,9 +61,10 @@ def inv_inverse(value: float) -> float:
         raise ParameterError("inv α", value, "must be a finite number ≥ 0")
     if value == 0.0:
         return 0.0
-    # at α = atan(value + π/2), tan α − α = value + π/2 − α > value: the root lies below
-    hi = math.atan(value + math.pi / 2.0)
-    root: float = brentq(lambda a: inv(a) - value, 0.0, hi, xtol=tol.ROOT_ANGLE)
+    # at α = atan(value + π/2), tan α − α = value + π/2 − α > value, and inv α > α³/3: the root
+    # lies below both bounds; the second keeps the tolerance relative for small angles
+    hi = min(math.atan(value + math.pi / 2.0), (3.0 * value) ** (1.0 / 3.0))
+    root: float = brentq(lambda a: inv(a) - value, 0.0, hi, xtol=tol.ROOT_ANGLE * hi)
     return root
 
 
@@ -302,7 +302,7 @@ class SpurGear:
         lam_b, lam_l = self._lambda_base(), self._lambda_limit()
         if lam_l <= lam_b * (1.0 + tol.DERIVED):
             return 2.0 * math.hypot(self.r_b, lam_b - lam_l)
-        return 2.0 * self._undercut_radius()
+        return 2.0 * self._undercut_crossing()[1]
 
     def half_angle(self, d_y: float) -> float:
         """ψ_y = s/d + inv α − inv α_y: half the tooth's angular thickness on the circle d_y ≥ d_b
@@ -396,9 +396,10 @@ class SpurGear:
 
     def constant_chord(self) -> Chord:
         """The constant chord: where the flanks of a rack tooth space straddling the tooth touch
-        it; s̄_c = s·cos²α, at the depth r − (s/2)·sin α·cos α from O, so h̄_c = r_a − that."""
+        it, on the lines of action through the pitch point; s̄_c = s·cos²α, at
+        r + (s/2)·sin α·cos α from O, so h̄_c = r_a − r − (s̄_c/2)·tan α."""
         s_c = self.s * math.cos(self.alpha) ** 2
-        depth = self.r - self.s * math.sin(self.alpha) * math.cos(self.alpha) / 2.0
+        depth = self.r + self.s * math.sin(self.alpha) * math.cos(self.alpha) / 2.0
         d_y = 2.0 * math.hypot(s_c / 2.0, depth)
         return Chord(s_c, self.r_a - depth, d_y, math.atan2(s_c / 2.0, depth))
 
@@ -427,7 +428,7 @@ class SpurGear:
         return 2.0 * math.hypot(self.r_b, W / 2.0)
 
     # -- generation by the rack -----------------------------------------------------------------
-    def _rack_frame(self) -> tuple[float, float, float, float, float]:
+    def rack_frame(self) -> tuple[float, float, float, float, float]:
         """(c0, y_t, ρ, C0x, y_c): the rack at φ = 0 in the gear's fixed frame.
 
         Its right tooth's left flank is the line x + y·tan α = c0 (the tooth space is centred on
@@ -447,7 +448,7 @@ class SpurGear:
 
     def _lambda_limit(self) -> float:
         """λ at the rack's limit line y_l (where its straight flank meets the fillet)."""
-        _, y_t, rho, _, _ = self._rack_frame()
+        _, y_t, rho, _, _ = self.rack_frame()
         y_l = y_t + rho * (1.0 - math.sin(self.alpha))
         return (self.r - y_l) / math.sin(self.alpha)
 
@@ -461,7 +462,7 @@ class SpurGear:
         """
         lam_a = np.asarray(lam, dtype=np.float64)
         a, r = self.alpha, self.r
-        c0 = self._rack_frame()[0]
+        c0 = self.rack_frame()[0]
         phi = (lam_a - r * math.sin(a) + c0 * math.cos(a)) / (r * math.cos(a))
         k = np.stack([-lam_a * math.cos(a), r - lam_a * math.sin(a)], axis=-1)
         return _turn(k, -phi), phi
@@ -474,7 +475,7 @@ class SpurGear:
         sin β) has its normal through P when r·φ = C0x + (r − y_c)·cot β.
         """
         b = np.asarray(beta, dtype=np.float64)
-        _, _, rho, c_x, y_c = self._rack_frame()
+        _, _, rho, c_x, y_c = self.rack_frame()
         r = self.r
         phi = (c_x + (r - y_c) * np.cos(b) / np.sin(b)) / r
         k = np.stack([c_x - r * phi + rho * np.cos(b), y_c + rho * np.sin(b)], axis=-1)
@@ -485,9 +486,10 @@ class SpurGear:
         a_y = np.arccos(np.minimum(1.0, self.r_b / radius))
         return np.asarray(self.s / self.d + inv(self.alpha) - (np.tan(a_y) - a_y), dtype=np.float64)
 
-    def _undercut_radius(self) -> float:
-        """The radius where the fillet curve crosses the involute (undercut gears), by brentq on
-        the fillet's parameter β; the crossing farthest from the centre bounds the involute."""
+    def _undercut_crossing(self) -> tuple[float, float]:
+        """(β, R) where the fillet curve crosses the involute (undercut gears), by brentq on the
+        fillet's parameter β; the crossing farthest from the centre bounds the involute. Without
+        a crossing: the fillet's start, and the base circle."""
         a = self.alpha
 
         def gap(b: float) -> float:
@@ -500,11 +502,13 @@ class SpurGear:
 
         betas = np.linspace(math.pi + a, 1.5 * math.pi, 2001)
         g = np.array([gap(float(b)) for b in betas])
-        best = self.r_b
+        best = (math.pi + a, self.r_b)
         for i in np.nonzero(np.diff(np.sign(g)))[0]:
             b0: float = brentq(gap, float(betas[i]), float(betas[i + 1]), xtol=tol.ROOT_ANGLE)
             q, _ = self.fillet_points(np.array([b0]))
-            best = max(best, float(np.hypot(q[0, 0], q[0, 1])))
+            radius = float(np.hypot(q[0, 0], q[0, 1]))
+            if radius > best[1]:
+                best = (b0, radius)
         return best
 
     def flank(self, n: int = 200) -> Flank:
@@ -516,12 +520,10 @@ class SpurGear:
         lam_tip = r * math.sin(a) - math.sqrt(self.r_a**2 - self.r_b**2)
         lam_low = r * math.sin(a) - math.sqrt(max(0.0, r_l**2 - self.r_b**2))
         inv_pts, inv_phi = self.flank_points(np.linspace(lam_tip, lam_low, n))
-        betas = np.linspace(math.pi + a, 1.5 * math.pi, n)
-        fil, _ = self.fillet_points(betas)
-        if self.undercut:
-            keep = np.hypot(fil[:, 0], fil[:, 1]) <= r_l * (1.0 + tol.DERIVED)
-            fil = fil[keep]
-        _, _, _, c_x, _ = self._rack_frame()
+        # with undercut the fillet starts where it crosses the involute
+        b_start = self._undercut_crossing()[0] if self.undercut else math.pi + a
+        fil, _ = self.fillet_points(np.linspace(b_start, 1.5 * math.pi, n))
+        _, _, _, c_x, _ = self.rack_frame()
         tip_to = float(half_angle_of(inv_pts[:1])[0])
         return Flank(inv_pts, inv_phi, fil, c_x / r, math.pi / self.z, tip_to)
 
@@ -658,18 +660,3 @@ def shift_from_span(
             f"x = {x:.4g}); measure over another number of teeth",
         )
     return x
-
-
-def describe(gear: SpurGear) -> dict[str, Any]:
-    """The gear's main sizes, for tables and notes (SI units)."""
-    return {
-        "d": gear.d,
-        "d_b": gear.d_b,
-        "d_a": gear.tip_diameter,
-        "d_f": gear.d_f,
-        "d_l": gear.limit_diameter(),
-        "s": gear.s,
-        "s_a": gear.s_a,
-        "x_min": gear.x_min,
-        "undercut": gear.undercut,
-    }
