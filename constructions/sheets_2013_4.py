@@ -19,6 +19,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from geomcad import tol
 from geomcad.geom import Arc, Circle, Vec
 from geomcad.kinematics.gears import SpurGear
 from geomcad.sheet import (
@@ -225,7 +226,7 @@ def _rack(v: Viewport, gear: SpurGear, x_lo: float, x_hi: float) -> None:
     v.seg(Vec(x_lo, y_d), Vec(x_hi, y_d), "centre")
     v.label(Vec(x_lo, y_d), "делительная прямая рейки", 2.5, prefer=(1.0, 1.0))
     v.seg(Vec(x_lo, gear.r), Vec(0.6 * x_lo, gear.r), "centre")
-    if abs(gear.x) * m > 0.0:
+    if abs(gear.x) > tol.DERIVED:  # no shift to dimension for x = 0
         xd = 0.93 * x_lo
         v.dim_linear(
             Vec(xd, gear.r),
@@ -332,6 +333,8 @@ def _panel(d: Drawing, sol: Solution, k: Scale) -> None:
     ):
         del unit
         exact = float(r[name]) * scale
+        if name == "x" and abs(exact) < tol.DERIVED:
+            exact = 0.0  # a shift of 10^-16 is no shift
         pub = seed.get(name)
         mark = " *" if name in sol.problem.seed and sol.problem.seed[name].kind == "erratum" else ""
         rows.append(

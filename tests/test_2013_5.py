@@ -221,3 +221,30 @@ def test_sheet_layout(params: dict[str, float]) -> None:
         if it.role not in ("frame", "frame_thin", "title", "label") and b[2] >= 260.0:
             problems.append(f"the drawing reaches the tables: {what}")
     assert not problems, "\n".join(problems)
+
+
+def test_optional_parameters_of_the_problem_machinery() -> None:
+    """Param(optional=True) has the default None: absent from the defaults and from the values
+    build() receives unless given; None through the API means "not given"."""
+    from geomcad.problem import Param
+
+    problem = p2013_5.PROBLEM
+    assert "z4" not in problem.defaults and "z7" not in problem.defaults
+    assert problem.param("z4").optional and problem.param("z4").default is None
+    with pytest.raises(ValueError, match="optional parameter has the default None"):
+        Param("q", None, "no default, not optional")
+    with pytest.raises(ValueError, match="optional parameter has the default None"):
+        Param("q", 3, "a default, yet optional", optional=True)
+    assert geomcad.solve("2013-5", z4=None, z7=None).params == problem.defaults
+
+
+def test_the_readable_report_says_which_counts_were_derived(
+    capsys: pytest.CaptureFixture[str],
+) -> None:
+    assert main(["solve", "2013-5"]) == 0
+    out = capsys.readouterr().out
+    assert "z4: not set (derived by the problem)" in out
+    assert "z4 = 20" in out
+    assert main(["solve", "2013-5", "--set", "z4=20"]) == 0
+    out = capsys.readouterr().out
+    assert "z4 = 20   (set; default derived by the problem)" in out
