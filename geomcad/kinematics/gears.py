@@ -492,16 +492,20 @@ class SpurGear:
         a crossing: the fillet's start, and the base circle."""
         a = self.alpha
 
+        def gaps(b: Arr) -> Arr:
+            # η of the fillet minus η of the involute at the same radius (−1 below the base
+            # circle, where there is no involute): < 0 where the fillet cuts into the tooth
+            q, _ = self.fillet_points(b)
+            radius = np.hypot(q[:, 0], q[:, 1])
+            inside = radius > self.r_b
+            eta_i = self._involute_half_angle(np.where(inside, radius, self.r_b))
+            return np.where(inside, half_angle_of(q) - eta_i, -1.0)
+
         def gap(b: float) -> float:
-            q, _ = self.fillet_points(np.array([b]))
-            radius = float(np.hypot(q[0, 0], q[0, 1]))
-            if radius <= self.r_b:
-                return -1.0
-            eta_f = float(half_angle_of(q)[0])
-            return eta_f - float(self._involute_half_angle(np.array([radius]))[0])
+            return float(gaps(np.array([b]))[0])
 
         betas = np.linspace(math.pi + a, 1.5 * math.pi, 2001)
-        g = np.array([gap(float(b)) for b in betas])
+        g = gaps(betas)
         best = (math.pi + a, self.r_b)
         for i in np.nonzero(np.diff(np.sign(g)))[0]:
             b0: float = brentq(gap, float(betas[i]), float(betas[i + 1]), xtol=tol.ROOT_ANGLE)
