@@ -262,8 +262,12 @@ def _solve_report(sol: Solution) -> str:
     problem = sol.problem
     lines = [f"{problem.id} · {problem.title}", "", "parameters:"]
     for p in problem.params:
+        if p.name not in sol.params:
+            lines.append(f"  {p.name}: not set (derived by the problem)")
+            continue
         value = sol.params[p.name]
-        mark = "" if value == p.default else "   (set; default " + _fmt(p.default) + ")"
+        default = "derived by the problem" if p.default is None else _fmt(p.default)
+        mark = "" if value == p.default else f"   (set; default {default})"
         lines.append(f"  {p.name} = {_fmt(value)}{_unit(p.unit)}{mark}")
     lines += ["", "results:"]
     specs = {r.name: r for r in problem.results}

@@ -33,10 +33,15 @@ class Param:
     ``unit`` is the SI unit ("m", "N", "kg", "1"), or "deg" for names ending in ``_deg``.
     A parameter with ``choices`` takes one of those words; an ``integer`` one takes a whole number;
     any other takes a finite real number, optionally bounded by ``gt``/``ge``/``lt``/``le``.
+
+    An ``optional`` parameter has the default ``None``: unless it is given, it is absent from the
+    values that ``build`` receives, and the problem derives it (e.g. a tooth count from a
+    coaxiality condition); given, it is checked like any other and the problem checks it against
+    what it would have derived. Passing ``None`` for it through the API means "not given".
     """
 
     name: str
-    default: ParamValue
+    default: ParamValue | None
     doc: str
     unit: str = "1"
     choices: tuple[str, ...] = ()
@@ -45,6 +50,14 @@ class Param:
     ge: float | None = None
     lt: float | None = None
     le: float | None = None
+    optional: bool = False
+
+    def __post_init__(self) -> None:
+        if self.optional != (self.default is None):
+            raise ValueError(
+                f"parameter {self.name}: an optional parameter has the default None, "
+                "and only an optional one"
+            )
 
     def parse(self, text: str) -> ParamValue:
         """Read a value given as text (``--set NAME=TEXT``) and check it."""
@@ -193,13 +206,20 @@ class Problem:
 
     @property
     def defaults(self) -> dict[str, ParamValue]:
-        return {p.name: p.default for p in self.params}
+        """The default values; optional parameters (default ``None``) are absent."""
+        return {p.name: p.default for p in self.params if p.default is not None}
 
     def solve(self, **params: object) -> Solution:
-        """Check the parameters, run the construction and return the :class:`Solution`."""
+        """Check the parameters, run the construction and return the :class:`Solution`.
+
+        ``None`` for an optional parameter leaves it out (the problem derives it)."""
         values = self.defaults
         for name, value in params.items():
-            values[name] = self.param(name).check(value)
+            p = self.param(name)
+            if value is None and p.optional:
+                values.pop(name, None)
+                continue
+            values[name] = p.check(value)
         b = self.build(values)
         _check_finite(b.results, "results")
         return Solution(self, values, b)

@@ -39,6 +39,7 @@ STYLES: dict[str, Style] = {
     "construction": Style(1 / 3, stroke="#1f4e9c"),  # thin lines of the graphical solution
     "locus": Style(1 / 3, "dashed", stroke="#1f4e9c"),  # a locus that gives no solution
     "centre": Style(1 / 3, "dashdot"),  # axes, centre lines, paths
+    "thin": Style(1 / 3),  # solid thin lines of a part's view (GOST 2.402: a gear's root circle)
     "extreme": Style(1 / 3, "twodot"),  # extreme positions of links
     "dimension": Style(1 / 3, fill="#000000"),  # dimension and leader lines, their arrowheads
     "result": Style(2 / 3, stroke="#b01c1c", fill="#b01c1c"),  # what the construction finds

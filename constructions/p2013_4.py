@@ -1,0 +1,304 @@
+"""2013-4 · Profile shift from a gear-tooth caliper measurement.
+
+A spur gear (module m, z teeth, tip diameter d_a) was cut by the standard rack (GOST 13755,
+profile angle α). A gear-tooth caliper, its height jaw resting on the tip circle, reads the chord
+s̄ between the flanks at the height h̄ below the tip. Find the shift x and the pitch thickness s.
+
+The construction (tooth frame: centre O at the origin, the tooth's axis +y):
+- T, where the axis meets the tip circle, is where the height jaw rests; the chord is the
+  perpendicular to the axis at H = T − h̄, and its ends K′, K lie s̄/2 either side of H.
+- The circle through K about O is d_y; the angle TOK is ψ_y, half the tooth's angular thickness at
+  d_y: tan ψ_y = (s̄/2)/(r_a − h̄) = s̄/(d_a − 2h̄) and d_y = s̄/sin ψ_y.
+- The tangent from K to the base circle d_b = m·z·cos α touches it at N (on the side the involute
+  through K unwinds from); the angle KON is the pressure angle α_y (cos α_y = d_b/d_y), and the
+  thread KN = r_b·tan α_y gives inv α_y = KN/r_b − α_y.
+- The involute relation s_y = d_y(s/d + inv α − inv α_y) with s_y = ψ_y·d_y gives
+  s = d(ψ_y + inv α_y − inv α), and s = π·m/2 + 2·x·m·tan α gives x.
+
+Checks: the rack with that shift generates a tooth (its flank is the envelope of the rack's flank)
+whose involute passes through K exactly, and the caliper set to h̄ on that tooth reads s̄ again.
+
+Choices settled here: the chord ends are on the involute part of the flanks (a reading in the
+fillet is an error); the tip circle is the given d_a, not the standard one for the shift found.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+from dataclasses import dataclass
+from typing import Any
+
+from geomcad import tol
+from geomcad.construction import Construction, Where, left_of
+from geomcad.errors import ConstructionError
+from geomcad.geom import Circle, Vec, tangents_from
+from geomcad.kinematics.gears import (
+    BasicRack,
+    Flank,
+    SpurGear,
+    inv,
+    shift_from_chord,
+)
+from geomcad.problem import (
+    Build,
+    Param,
+    ParamValue,
+    Problem,
+    ResultSpec,
+    erratum,
+    rounded,
+)
+from geomcad.sheet.scale import gost_length_scale
+from geomcad.units import MM, to_deg
+
+ID = "2013-4"
+
+PARAMS = (
+    Param("m", 0.01, "module", "m", gt=0.0),
+    Param(
+        "alpha_deg",
+        20.0,
+        "profile angle of the basic rack (GOST 13755: 20°)",
+        "deg",
+        gt=0.0,
+        lt=90.0,
+    ),
+    Param("z", 40, "number of teeth", "1", integer=True, ge=1),
+    Param("d_a", 0.42, "tip diameter", "m", gt=0.0),
+    Param("s_chord", 0.0181, "chordal thickness s̄ read by the caliper", "m", gt=0.0),
+    Param("h_chord", 0.0091, "chordal height h̄ (from the tip circle to the chord)", "m", gt=0.0),
+)
+
+RESULTS = (
+    ResultSpec("d", "m", "pitch diameter m·z", "l"),
+    ResultSpec("d_b", "m", "base diameter d·cos α", "l"),
+    ResultSpec("d_y", "m", "diameter of the circle through the chord's ends", "l"),
+    ResultSpec("psi_y", "rad", "half the tooth's angular thickness at d_y: tan ψ_y = s̄/(d_a − 2h̄)"),
+    ResultSpec("alpha_y_deg", "deg", "pressure angle of the involute at d_y: cos α_y = d_b/d_y"),
+    ResultSpec("s", "m", "tooth thickness on the pitch circle", "l"),
+    ResultSpec("x", "1", "profile shift coefficient"),
+)
+
+#: What the seed should have written for the half angular thickness (its formula is garbled).
+CORRECT_PSI_FORMULA = "tg ψ_y = (s̄_y/2)/(d_a/2 − h̄_ay) = s̄_y/(d_a − 2h̄_ay) = 18,1/401,8 = 0,04505"
+#: The seed's text as printed (LaTeX): tan φ_y/2 over (d_a − 2h̄) = 18,1/(420 − 2·9,1).
+SEED_PSI_FORMULA = r"\frac{\tan \phi_y / 2}{d_a - 2\bar{h}_{ay}} = \frac{18,1}{420 - 2 \cdot 9,1}"
+
+SEED = {
+    "d": rounded(400.0, 0, "d = 400 мм", MM),
+    "d_b": rounded(375.88, 2, "d_b = 375,88 мм", MM),
+    "d_y": erratum(
+        402.25 * MM,
+        "it is s̄/sin ψ_y with ψ_y rounded to 2,579° (sin 2,579° instead of sin 2,57928°); "
+        "exactly d_y = √(s̄² + (d_a − 2h̄)²) = 402,207 мм",
+        "d_y = 402,25 мм",
+    ),
+    "psi_y": rounded(0.04502, 5, "φ_y = 2,579° = 0,04502 рад"),
+    "alpha_y_deg": erratum(
+        20.86,
+        "it follows from the seed's d_y = 402,25 мм (cos α_y = 375,88/402,25); from the exact "
+        "d_y = 402,207 мм, α_y = 20,847°",
+        "α_y = 20,86°",
+    ),
+    "s": rounded(18.83, 2, "s = 18,83 мм", MM),
+    "x": rounded(0.43, 2, "x = 0,43"),
+}
+
+NOTES = [
+    "seed formula garbled: for the half angular thickness it prints "
+    "«tan φ_y/2 / (d_a − 2h̄_ay) = 18,1/(420 − 2·9,1)»; the geometry (the chord's ends lie "
+    "s̄/2 either side of the tooth's axis, r_a − h̄ from the centre) gives "
+    f"«{CORRECT_PSI_FORMULA}», which is the number the seed then uses",
+]
+
+
+@dataclass(frozen=True)
+class Geometry:
+    """What the sheet needs besides the recorded steps."""
+
+    gear: SpurGear
+    flank: Flank
+    psi_y: float
+    r_y: float
+    k_span: int
+    W: float
+    extent: tuple[float, float, float, float]  # model box of the tooth view (x0, y0, x1, y1)
+
+
+def _rack(alpha_deg: float) -> BasicRack:
+    rack = BasicRack(alpha=math.radians(alpha_deg))
+    rack.check("alpha_deg")
+    return rack
+
+
+def build(p: Mapping[str, ParamValue]) -> Build:
+    """The seed's solution as a recorded construction, checked against the generated gear."""
+    m, alpha_deg, d_a = float(p["m"]), float(p["alpha_deg"]), float(p["d_a"])
+    z = int(p["z"])
+    s_bar, h_bar = float(p["s_chord"]), float(p["h_chord"])
+    rack = _rack(alpha_deg)
+    alpha = rack.alpha
+    # an impossible reading fails here, naming the reading and its range
+    reading = shift_from_chord(m, z, d_a, s_bar, h_bar, rack)
+
+    c = Construction("2013-4: profile shift from a gear-tooth caliper reading")
+    centre = c.point("O", (0.0, 0.0), note="centre of the gear")
+    axis = c.line("axis", centre, (0.0, 1.0), "axis of the tooth through O", role="given")
+    k_a = c.circle("k_a", centre, d_a / 2.0, role="given", r_name="d_a/2", note="tip circle")
+    T = c.intersect(
+        "T",
+        axis,
+        k_a,
+        Where(lambda q: q.y > 0.0, "on the tooth's side of O"),
+        role="given",
+        op="axis ∩ tip circle (the height jaw rests here)",
+    )
+    H = c.point("H", T - Vec(0.0, h_bar), "construction", op="T − h̄ along the axis")
+    c.perpendicular("chord", axis, H, note="the caliper's jaws touch the flanks on it")
+    # K on the right flank (x > 0), K′ on the left one
+    right = Vec(axis.d.y, -axis.d.x)
+    K = c.point("K", H + right * (s_bar / 2.0), "result", op="H + s̄/2 along the chord")
+    c.point("K'", H - right * (s_bar / 2.0), "result", op="H − s̄/2 along the chord")
+    psi_y = c.value("ψ_y", math.atan2(K.x, K.y), "∠TOK: tan ψ_y = s̄/(d_a − 2h̄)", (T, centre, K))
+    k_y = c.circle(
+        "k_y", centre, centre.dist(K), role="construction", r_name="|OK|", note="circle d_y"
+    )
+    d_y = c.value("d_y", 2.0 * k_y.r, "2·|OK| = s̄/sin ψ_y")
+    d = c.value("d", m * z, "m·z")
+    d_b = c.value("d_b", d * math.cos(alpha), "d·cos α")
+    k_b = c.circle(
+        "k_b", centre, d_b / 2.0, role="construction", r_name="d_b/2", note="base circle"
+    )
+    # the involute through K on the right flank unwinds counter-clockwise: its thread KN touches
+    # the base circle counter-clockwise of OK, i.e. left of O → K
+    N = c.record(
+        "N",
+        "tangent from K to the base circle",
+        _thread_end(K, k_b, centre),
+        (K, k_b),
+        "construction",
+        note="KN is the involute's normal at K",
+    )
+    alpha_y = c.value(
+        "α_y", abs((N - centre).angle - (K - centre).angle), "∠KON: cos α_y = d_b/d_y"
+    )
+    inv_y = c.value("inv α_y", K.dist(N) / k_b.r - alpha_y, "KN/r_b − α_y = tan α_y − α_y")
+    s = c.value("s", d * (psi_y + inv_y - inv(alpha)), "d·(ψ_y + inv α_y − inv α)")
+    x = c.value("x", (s - math.pi * m / 2.0) / (2.0 * m * math.tan(alpha)), "(s − πm/2)/(2m·tg α)")
+
+    gear = c.run(
+        "gear",
+        "the rack with shift x cuts the blank d_a",
+        lambda: _checked_gear(m, z, x, rack, d_a),
+        note="GOST 13755 producing rack",
+    )
+    flank = c.run("flank", "envelope of the rack's flank", lambda: gear.flank(240))
+    c.point("S", Vec.polar(gear.r, math.pi / 2.0 - s / d), "result", op="flank ∩ pitch circle")
+    psi_gen = c.value("ψ_y (generated)", gear.half_angle(d_y), "η of the generated flank at d_y")
+    s_back = c.value(
+        "s̄ (caliper on the generated tooth)",
+        gear.chord_at_height(h_bar).s_bar,
+        "chord at h̄ below the tip",
+    )
+    for name, got, want in (
+        ("ψ_y (generated)", psi_gen, psi_y),
+        ("s̄ (caliper on the generated tooth)", s_back, s_bar),
+        ("x (library)", x, reading.x),
+    ):
+        if not math.isclose(got, want, rel_tol=tol.DERIVED, abs_tol=tol.DERIVED * m):
+            raise ConstructionError(
+                f"check {name}", f"{got!r} differs from {want!r}: the construction is inconsistent"
+            )
+
+    results: dict[str, Any] = {
+        "d": d,
+        "d_b": d_b,
+        "d_y": d_y,
+        "psi_y": psi_y,
+        "alpha_y_deg": to_deg(alpha_y),
+        "s": s,
+        "x": x,
+    }
+    seed_data = all(p[q.name] == q.default for q in PARAMS)
+    notes = list(NOTES) if seed_data else []
+    d_a_std = gear.d + 2.0 * (rack.ha + x) * m
+    if not math.isclose(d_a, d_a_std, rel_tol=tol.DERIVED):
+        notes.append(
+            f"the given tip d_a = {d_a * 1e3:.6g} mm differs from the standard tip "
+            f"d + 2(h_a* + x)·m = {d_a_std * 1e3:.6g} mm of a gear with this shift "
+            f"(by {(d_a - d_a_std) * 1e3:+.4g} mm): the caliper's height is measured from the "
+            "actual tip, so the reading uses the given d_a"
+        )
+    if gear.undercut:
+        notes.append(
+            f"the gear is undercut: x = {x:.4g} < x_min = h_a* − z·sin²α/2 = {gear.x_min:.4g}"
+        )
+    if gear.s_a < 0.25 * m:
+        notes.append(
+            f"the tip is thin: s_a = {gear.s_a * 1e3:.4g} mm < 0,25·m (pointed at d = "
+            f"{gear.pointed_diameter() * 1e3:.6g} mm)"
+        )
+    k_span = gear.span_teeth()
+    W = gear.span(k_span)
+    box = _extent(gear)
+    geo = Geometry(gear, flank, psi_y, k_y.r, k_span, W, box)
+    return Build(results, c, notes, {"l": sheet_k_l(box)}, geo)
+
+
+def _thread_end(K: Vec, base: Circle, centre: Vec) -> Vec:
+    """The tangent point N of the line from K touching the base circle, counter-clockwise of OK
+    (K itself when K lies on the base circle)."""
+    kept = left_of(centre, K, "O→K").keep(tangents_from(K, base))
+    return kept[0] if kept else K
+
+
+def _checked_gear(m: float, z: int, x: float, rack: BasicRack, d_a: float) -> SpurGear:
+    gear = SpurGear(m, z, x, rack, d_a)
+    gear.check()
+    return gear
+
+
+#: The field the tooth is drawn in on the sheet (mm: x0, y0, x1, y1), left of the tables.
+VIEW = (26.0, 26.0, 250.0, 286.0)
+
+
+def view_half_angle(gear: SpurGear) -> float:
+    """Half the angle the tooth view spans about the tooth's axis: the tooth, half a space either
+    side, and a little of the circles beyond."""
+    return min(1.3 * math.pi / gear.z, math.pi / 2.0)
+
+
+def _extent(gear: SpurGear) -> tuple[float, float, float, float]:
+    """The model box of the tooth view: the tooth with half a space either side, the circles
+    a little beyond, down to the lower of the base and root circles, up past the rack's top."""
+    half = view_half_angle(gear)
+    r_top = max(gear.r_a, gear.r + (gear.x + gear.rack.ha + gear.rack.c) * gear.m)
+    r_low = min(gear.r_b, gear.d_f / 2.0)
+    w = r_top * math.sin(half)
+    pad = 0.35 * gear.m
+    return (-w, r_low * math.cos(half) - pad, w, r_top + 1.5 * pad)
+
+
+def sheet_k_l(box: tuple[float, float, float, float]) -> float:
+    """The largest GOST 2.302 scale (enlargements included) at which the tooth view fits."""
+    w, h = box[2] - box[0], box[3] - box[1]
+    room_w, room_h = VIEW[2] - VIEW[0], VIEW[3] - VIEW[1]
+    return gost_length_scale(max(w * room_h / room_w, h), room_h).k
+
+
+def draw(solution: Any) -> list[tuple[str, Any]]:
+    from .sheets_2013_4 import sheets
+
+    return sheets(solution)
+
+
+PROBLEM = Problem(
+    id=ID,
+    title="Profile shift from a gear-tooth caliper measurement",
+    params=PARAMS,
+    results=RESULTS,
+    seed=SEED,
+    build=build,
+    draw=draw,
+)

@@ -1,0 +1,353 @@
+"""2013-5 · Planetary gear ratio u_1H2 (Willis' method, checked by the mesh equations and by the
+plan of linear velocities).
+
+The train (reconstructed, problems.md; the seed's figure is lost). Moving links: the input sun 1
+on the central axis; block 2-5 (ring 2 with internal teeth and pinion 5) turning on the axis O_25,
+which the outer carrier H2 carries at the distance a from the central axis; block H1-4 (carrier H1
+and gear 4) turning on the same axis O_25; planet 6 on H1; block H2-7 (the outer carrier and the
+ring 7, coaxial with O_25). Gear 3 on the central axis is fixed (part of the frame 0).
+
+Meshes (each with the link on which both its axes are fixed): 1–2 internal on H2; 4–3 external on
+H2; 5–6 external and 6–7 internal on H1. Coaxiality: the pairs 1–2 and 4–3 both join the central
+axis to O_25, so m(z2 − z1)/2 = m(z3 + z4)/2 and z4 = z2 − z1 − z3 (the seed misprints the left
+side as z1 − z2); the pairs 5–6 and 6–7 both join O_25 to the planet's axis, so
+m(z5 + z6)/2 = m(z7 − z6)/2 and z7 = z5 + 2·z6.
+
+Willis (the seed's way): with H2 held, the train is a fixed-axis train of three stages,
+u_13^(H2) = u_12 · u_5H1^(7) · u_43 with u_12 = z2/z1, u_43 = −z3/z4 and, for the stage 5–6–7 in
+which ring 7 is held (it is part of H2), u_5H1^(7) = 1 − u_57^(H1) = 1 + z7/z5. Then
+u_1H2 = 1 − u_13^(H2). All ratios are exact fractions.
+
+Checks: the mesh equations in absolute angular velocities (ω_0 = 0, ω_1 = 1) solved exactly; and
+the graphical method. Smirnov's plan of linear velocities is drawn on the radial line through both
+axes, with the radii y of its points: O (central axis, y = 0), A (mesh 1–2, y = a − r2),
+C (mesh 4–3, y = r3), B (axis O_25, y = a), D (mesh 5–6, y = a + r5), E (axis of planet 6,
+y = a + r5 + r6) and F (mesh 6–7, y = a + r7). The plan starts from the output: the line of H2
+through o (v = 0) and b, with ω_H2 taken as 1 rad/s (any value would do: the plan is linear);
+then H1-4 through c (the pitch point with the fixed gear 3 has v = 0) and b; 6 through e and f;
+2-5 through b and d; 1 through o and a. Each line's slope dv/dy is its link's ω, so ω_1 read off
+the plan is u_1H2. The angle diagram draws rays parallel to the lines from one pole; their
+intercepts on a line at distance H from the pole are H·ω, and their ratio is the train's ratio.
+
+Choices settled here (they change no published number): the planet 6 drawn is the one on the side
+of O_25 away from the central axis; the module m only sizes the drawing.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+from dataclasses import dataclass
+from fractions import Fraction
+from typing import Any
+
+from geomcad import tol
+from geomcad.construction import Construction
+from geomcad.errors import ConstructionError, ParameterError
+from geomcad.geom import Vec
+from geomcad.kinematics.trains import (
+    Mesh,
+    PlanPoint,
+    RayPlan,
+    VelocityPlan,
+    chain_ratio,
+    coaxial_count,
+    mobility,
+    ray_plan,
+    solve_speeds,
+    velocity_plan,
+    willis,
+)
+from geomcad.problem import Build, Param, ParamValue, Problem, ResultSpec, erratum, rounded
+from geomcad.sheet.scale import gost_length_scale, nice_factor
+
+ID = "2013-5"
+
+#: The links: the frame (with the fixed gear 3) and the five moving links.
+FRAME, SUN, BLOCK25, PLANET, H1, H2 = "0", "1", "2-5", "6", "H1-4", "H2-7"
+
+PARAMS = (
+    Param("z1", 20, "teeth of the input sun 1", "1", integer=True, ge=1),
+    Param("z2", 100, "teeth of the ring 2 (internal; block 2-5)", "1", integer=True, ge=1),
+    Param("z3", 60, "teeth of the fixed central gear 3", "1", integer=True, ge=1),
+    Param("z5", 22, "teeth of the pinion 5 (block 2-5)", "1", integer=True, ge=1),
+    Param("z6", 26, "teeth of the planet 6 (on carrier H1)", "1", integer=True, ge=1),
+    Param(
+        "z4",
+        None,
+        "teeth of gear 4 (block H1-4); default from coaxiality z4 = z2 − z1 − z3",
+        "1",
+        integer=True,
+        ge=1,
+        optional=True,
+    ),
+    Param(
+        "z7",
+        None,
+        "teeth of the ring 7 (block H2-7); default from coaxiality z7 = z5 + 2·z6",
+        "1",
+        integer=True,
+        ge=1,
+        optional=True,
+    ),
+    Param("m", 0.002, "module (sizes the drawing only)", "m", gt=0.0),
+)
+
+RESULTS = (
+    ResultSpec("W", "1", "degree of freedom, Chebyshev: W = 3n − 2p_l − p_h"),
+    ResultSpec("z4", "1", "teeth of gear 4 (coaxiality of 1–2 and 4–3)"),
+    ResultSpec("z7", "1", "teeth of the ring 7 (coaxiality of 5–6 and 6–7)"),
+    ResultSpec("u12", "1", "u_12 = z2/z1 (internal pair, carrier H2 held)"),
+    ResultSpec("u5H1_7", "1", "u_5H1^(7) = 1 + z7/z5 (ring 7 held)"),
+    ResultSpec("u43", "1", "u_43 = −z3/z4 (external pair, carrier H2 held)"),
+    ResultSpec("u13_H2", "1", "u_13^(H2) = u_12·u_5H1^(7)·u_43"),
+    ResultSpec("u1H2", "1", "u_1H2 = ω_1/ω_H2 = 1 − u_13^(H2)"),
+    ResultSpec("u1H2_fraction", "1", "u_1H2 exactly, as [numerator, denominator]"),
+)
+
+SEED = {
+    "W": rounded(1, 0, "W = 1"),
+    "z4": rounded(20, 0, "z4 = 20"),
+    "z7": rounded(74, 0, "z7 = 74"),
+    "u12": rounded(5, 0, "u12 = 5"),
+    "u5H1_7": rounded(4.364, 3, "u5H1(7) = 4,364"),
+    "u43": rounded(-3, 0, "u43 = −3"),
+    "u1H2": erratum(
+        66.46,
+        "it multiplies the rounded u_5H1^(7) = 4,364: 1 + 5·4,364·3 = 66,46; exactly "
+        "u_5H1^(7) = 48/11 and u_1H2 = 1 + 5·(48/11)·3 = 731/11 = 66,4545…, i.e. 66,45",
+        "u1H2(3) = 66,46",
+    ),
+}
+
+#: The seed's coaxiality condition as printed, and as the geometry has it.
+SEED_Z4_FORMULA = "z1 − z2 = z4 + z3"
+CORRECT_Z4_FORMULA = "z2 − z1 = z3 + z4"
+
+NOTES = [
+    "seed misprint in the coaxiality condition for z4: it prints «z1 − z2 = z4 + z3; "
+    "100 − 20 = z4 + 60»; the centre distance of the internal pair 1–2 is m(z2 − z1)/2 and of "
+    "the external pair 4–3 m(z3 + z4)/2, so the condition is «z2 − z1 = z3 + z4» (its numbers "
+    "already use it, so z4 = 20 is right)",
+]
+
+
+@dataclass(frozen=True)
+class Geometry:
+    """What the sheet needs besides the recorded steps (lengths in m, the module's drawing)."""
+
+    z: dict[str, int]
+    m: float
+    a: float
+    points: tuple[PlanPoint, ...]
+    plan: VelocityPlan
+    rays: RayPlan
+    omega_exact: dict[str, Fraction]  # ω_i / ω_H2, exactly
+    k_v: float
+    k_omega: float
+    extent: tuple[float, float]  # the radii the scheme spans (y_min, y_max)
+
+
+def _given_count(
+    p: Mapping[str, ParamValue], name: str, derived: Fraction, rule: str, why: str
+) -> int | None:
+    """A tooth count given explicitly, checked against the one coaxiality gives; ``None`` when
+    it is not given."""
+    if name not in p:
+        return None
+    given = int(p[name])
+    if Fraction(given) != derived:
+        tail = "" if derived.denominator == 1 and derived >= 1 else ", which no gear can have"
+        raise ParameterError(name, given, f"breaks coaxiality: {why}, so {rule} = {derived}{tail}")
+    return given
+
+
+def build(p: Mapping[str, ParamValue]) -> Build:
+    """Willis' method as in the seed, checked by the mesh equations and the velocity plan."""
+    z1, z2, z3, z5, z6 = (int(p[n]) for n in ("z1", "z2", "z3", "z5", "z6"))
+    m = float(p["m"])
+    if z2 <= z1:
+        raise ParameterError(
+            "z2",
+            z2,
+            f"the ring 2 meshes with the sun 1 inside it: it needs more teeth than z1 = {z1}",
+        )
+    c = Construction("2013-5: planetary train, Willis' method and the plan of linear velocities")
+    # coaxiality: the centre distances, in modules
+    a12 = Mesh(SUN, z1, BLOCK25, z2, H2, internal=True).centre_distance()
+    c.value("a_12", float(a12), "m(z2 − z1)/2 in modules: centre distance of 1–2")
+    z4 = _given_count(
+        p,
+        "z4",
+        2 * a12 - z3,
+        "z4 = z2 − z1 − z3",
+        f"the pairs 1–2 and 4–3 share the centre distance m(z2 − z1)/2 = {a12}·m",
+    )
+    if z4 is None:
+        z4 = c.run(
+            "z4",
+            "z2 − z1 − z3 (coaxiality of 1–2 and 4–3)",
+            lambda: coaxial_count("z4", a12, z3, internal=False),
+        )
+    else:
+        c.value("z4", float(z4), "given; equals z2 − z1 − z3 (coaxiality of 1–2 and 4–3)")
+    a56 = Mesh(BLOCK25, z5, PLANET, z6, H1).centre_distance()
+    c.value("a_56", float(a56), "m(z5 + z6)/2 in modules: centre distance of 5–6")
+    z7 = _given_count(
+        p,
+        "z7",
+        2 * a56 + z6,
+        "z7 = z5 + 2·z6",
+        f"the pairs 5–6 and 6–7 share the centre distance m(z5 + z6)/2 = {a56}·m",
+    )
+    if z7 is None:
+        z7 = c.run(
+            "z7",
+            "z5 + 2·z6 (coaxiality of 5–6 and 6–7)",
+            lambda: coaxial_count("z7", a56, z6, internal=True, ring_unknown=True),
+        )
+    else:
+        c.value("z7", float(z7), "given; equals z5 + 2·z6 (coaxiality of 5–6 and 6–7)")
+
+    m12 = Mesh(SUN, z1, BLOCK25, z2, H2, internal=True)
+    m56 = Mesh(BLOCK25, z5, PLANET, z6, H1)
+    m67 = Mesh(PLANET, z6, H2, z7, H1, internal=True)
+    m43 = Mesh(H1, z4, FRAME, z3, H2)
+    meshes = (m12, m56, m67, m43)
+
+    # structure: five moving links, five revolute pairs (1–0, H2–0, 2-5 on H2, H1-4 on H2,
+    # 6 on H1) and one higher pair per mesh
+    moving = (SUN, BLOCK25, PLANET, H1, H2)
+    lower = ((SUN, FRAME), (H2, FRAME), (BLOCK25, H2), (H1, H2), (PLANET, H1))
+    W = mobility(len(moving), len(lower), len(meshes))
+    c.value("W", float(W), "3n − 2p_l − p_h")
+
+    # Willis, stage by stage with H2 held
+    u12 = chain_ratio([m12])
+    u57_h1 = chain_ratio([m56, m67])
+    u5h1_7 = willis(u57_h1)
+    u43 = chain_ratio([m43])
+    u13_h2 = u12 * u5h1_7 * u43
+    u1h2 = willis(u13_h2)
+    for name, value, op in (
+        ("u12", u12, "z2/z1"),
+        ("u57(H1)", u57_h1, "(−z6/z5)·(z7/z6) = −z7/z5"),
+        ("u5H1(7)", u5h1_7, "1 − u57(H1)"),
+        ("u43", u43, "−z3/z4"),
+        ("u13(H2)", u13_h2, "u12·u5H1(7)·u43"),
+        ("u1H2", u1h2, "1 − u13(H2)"),
+    ):
+        c.value(name, float(value), f"{op} = {value}")
+
+    # check: the mesh equations in absolute angular velocities, exactly
+    speeds = c.run(
+        "ω (mesh equations)",
+        "z_a(ω_a − ω_H) ± z_b(ω_b − ω_H) = 0 per mesh, ω_0 = 0, ω_1 = 1",
+        lambda: solve_speeds(meshes, {FRAME: Fraction(0), SUN: Fraction(1)}),
+    )
+    if speeds[H2] == 0 or 1 / speeds[H2] != u1h2:
+        raise ConstructionError(
+            "check by the mesh equations",
+            f"ω_1/ω_H2 = {1 / speeds[H2] if speeds[H2] else '∞'} differs from Willis' {u1h2}",
+        )
+    omega_exact = {k: v / speeds[H2] for k, v in speeds.items()}
+
+    # the graphical method: Smirnov's plan, trial ω_H2 = 1 rad/s
+    r = {k: m * zz / 2.0 for k, zz in (("1", z1), ("2", z2), ("3", z3), ("4", z4))}
+    r.update({k: m * zz / 2.0 for k, zz in (("5", z5), ("6", z6), ("7", z7))})
+    a = m * float(a12)
+    points = (
+        PlanPoint("O", 0.0, (FRAME, SUN, H2)),
+        PlanPoint("A", a - r["2"], (SUN, BLOCK25)),
+        PlanPoint("C", r["3"], (H1, FRAME)),
+        PlanPoint("B", a, (H2, BLOCK25, H1)),
+        PlanPoint("D", a + r["5"], (BLOCK25, PLANET)),
+        PlanPoint("E", a + r["5"] + r["6"], (PLANET, H1)),
+        PlanPoint("F", a + r["7"], (PLANET, H2)),
+    )
+    omega_h2 = 1.0
+    plan = velocity_plan(c, points, FRAME, H2, "B", omega_h2 * a)
+    u_plan = plan.omega[SUN] / plan.omega[H2]
+    # scales: the scheme's k_l, the plan's k_v, and the angle diagram's pole distance H
+    y_lo = min(-r["1"], -r["3"], a - r["2"], a - r["7"])
+    y_hi = max(a + r["2"], a + r["7"], a + r["5"] + 2 * r["6"])
+    k_l = sheet_k_l(y_hi - y_lo)
+    v_ends = [e.x for e in plan.ends.values()]
+    v_span = max(max(v_ends), 0.0) - min(min(v_ends), 0.0)
+    k_v = nice_factor(v_span, plan_room(y_hi - y_lo, k_l), "v").k
+    links = (SUN, BLOCK25, PLANET, H1, H2)
+    om = [abs(plan.omega[k]) for k in links]
+    # the intercepts ω/k_ω fit RAY_W, and the pole distance H/k_l stays below RAY_H
+    k_omega = max(nice_factor(max(om), RAY_W, "v").k, nice_factor(k_v / k_l, RAY_H, "v").k)
+    H = k_v / k_omega  # the pole distance in the plan's y units (m): ray i ends at v = H·ω_i
+    S = Vec(0.0, y_lo - 2.0 * H)  # the pole, below the plan on its axis v = 0
+    rays = ray_plan(c, plan, S, H, links)
+    u_rays = rays.ratio(SUN, H2)
+    for name, got in (("plan", u_plan), ("angle diagram", u_rays)):
+        if not math.isclose(got, float(u1h2), rel_tol=tol.DERIVED):
+            raise ConstructionError(
+                f"check by the {name}", f"u_1H2 = {got!r} differs from Willis' {float(u1h2)!r}"
+            )
+    c.value("u1H2 (plan)", u_plan, "slope of line 1 / slope of line H2")
+    c.value("u1H2 (angle diagram)", u_rays, "intercept of ray 1 / intercept of ray H2")
+
+    results: dict[str, Any] = {
+        "W": W,
+        "z4": z4,
+        "z7": z7,
+        "u12": float(u12),
+        "u5H1_7": float(u5h1_7),
+        "u43": float(u43),
+        "u13_H2": float(u13_h2),
+        "u1H2": float(u1h2),
+        "u1H2_fraction": [u1h2.numerator, u1h2.denominator],
+    }
+    seed_data = all(p.get(q.name) == q.default for q in PARAMS)
+    notes = list(NOTES) if seed_data else []
+    notes.append(
+        f"checks: the mesh equations give ω_1/ω_H2 = {1 / speeds[H2]} exactly; the plan of "
+        f"linear velocities gives {u_plan:.12g} (slopes) and {u_rays:.12g} (angle diagram)"
+    )
+    zs = {"1": z1, "2": z2, "3": z3, "4": z4, "5": z5, "6": z6, "7": z7}
+    geo = Geometry(zs, m, a, points, plan, rays, omega_exact, k_v, k_omega, (y_lo, y_hi))
+    return Build(results, c, notes, {"l": k_l, "v": k_v}, geo)
+
+
+#: The sheet's layout (mm): the scheme's left edge and top, the gap between the scheme and the
+#: plan, the tables' left edge; the scheme's greatest height; its width in units u = (radii
+#: spanned)/SCHEME_UNITS; the angle diagram's field (x from, x to) and greatest pole distance.
+LEFT, TOP, GAP, PANEL_X = 30.0, 38.0, 14.0, 262.0
+SCHEME_H = 140.0
+SCHEME_UNITS = 14.5
+SCHEME_W_U = 15.2
+RAY_FIELD = (40.0, 225.0)
+RAY_W = RAY_FIELD[1] - RAY_FIELD[0] - 8.0
+RAY_H = 40.0
+
+
+def plan_room(height: float, k_l: float) -> float:
+    """The plan's width on the sheet (mm): what the scheme and the gap leave before the tables."""
+    scheme_w = SCHEME_W_U * height / SCHEME_UNITS / k_l
+    return PANEL_X - 12.0 - LEFT - GAP - scheme_w
+
+
+def sheet_k_l(height: float) -> float:
+    """The largest GOST 2.302 scale at which the scheme's radii fit its height on the sheet."""
+    return gost_length_scale(height, SCHEME_H).k
+
+
+def draw(solution: Any) -> list[tuple[str, Any]]:
+    from .sheets_2013_5 import sheets
+
+    return sheets(solution)
+
+
+PROBLEM = Problem(
+    id=ID,
+    title="Planetary gear ratio u_1H2 (Willis; plan of linear velocities)",
+    params=PARAMS,
+    results=RESULTS,
+    seed=SEED,
+    build=build,
+    draw=draw,
+)

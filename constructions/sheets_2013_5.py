@@ -1,0 +1,435 @@
+"""2013-5's drawing sheet: the kinematic scheme, Smirnov's plan of linear velocities, the angle
+diagram, and the tables.
+
+A3 landscape. Left: the scheme (GOST 2.770) in the section through the central axis and the axis
+O_25 of block 2-5, radii to scale (r = m·z/2) at k_l: shafts and carriers as main lines, each gear
+as its web with the rim at its pitch radius, an internal gear as a cup open towards its mesh, the
+pitch lines dash-dot through the pitch points; the frame's bearings and the fixed gear 3 hatched.
+Beside it, on the same radii, the plan of linear velocities at k_v: horizontal lines carry each
+point's level across, the velocities are arrows from the axis v = 0, and each link's line passes
+through the ends of its points. Below: the angle diagram from pole S, its rays parallel to the
+links' lines cut the line at H above S in segments ω/k_ω. Right: the data, the results beside the
+seed's, the angular velocities three ways (mesh equations, slopes, angle diagram), the order of
+construction and the seed's errata.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import TYPE_CHECKING, Any
+
+from geomcad.geom import Vec
+from geomcad.sheet import (
+    Drawing,
+    Polyline,
+    Scale,
+    Sheet,
+    TitleBlock,
+    Viewport,
+    fmt_number,
+    start,
+)
+
+if TYPE_CHECKING:
+    from geomcad.problem import Solution
+
+from geomcad.sheet.text import box as text_box
+from geomcad.sheet.text import parse
+
+from .p2013_5 import (
+    BLOCK25,
+    FRAME,
+    GAP,
+    H1,
+    H2,
+    LEFT,
+    PANEL_X,
+    PLANET,
+    RAY_FIELD,
+    SCHEME_UNITS,
+    SUN,
+    TOP,
+)
+
+#: How the links are named on the sheet.
+LINK_LABEL = {SUN: "1", BLOCK25: "2–5", PLANET: "6", H1: "H_1–4", H2: "H_2–7", FRAME: "0"}
+
+
+def sheets(sol: Solution) -> list[tuple[str, Sheet]]:
+    """The main sheet of 2013-5."""
+    geo = sol.data
+    k = Scale(sol.scales["l"], "l")
+    kv = Scale(sol.scales["v"], "v")
+    tb = TitleBlock(
+        title="Планетарный механизм: передаточное отношение u1H2",
+        designation="ТММ.2013-5.01",
+        scale=k.ratio_text(),
+        organisation="geomcad",
+        developer="geomcad",
+    )
+    d = start("A3", tb)
+    d.text("Кинематическая схема и план линейных скоростей", (LEFT - 4.0, 13.0), 5.0)
+    d.text(
+        f"{k.label()} (M {k.ratio_text() or '—'});  {kv.label()};  "
+        f"μ_ω = {fmt_number(geo.k_omega)} (рад/с)/мм",
+        (LEFT - 4.0, 20.0),
+        3.5,
+    )
+    y_lo, y_hi = geo.extent
+    u = (y_hi - y_lo) / SCHEME_UNITS
+    v = d.viewport(k, (0.0, y_hi), (LEFT, TOP))
+    right, spots = _scheme(v, geo, u)
+    d.text("Схема (разрез по осям)", (LEFT, TOP - 12.0), 3.5)
+    x_axis = right + GAP + (-min(0.0, *(e.x for e in geo.plan.ends.values()))) / kv.k
+    vp = d.viewport(k, (0.0, y_hi), (x_axis, TOP))
+    d.text("План линейных скоростей", (right + GAP, TOP - 12.0), 3.5)
+    _plan(v, vp, geo, kv, spots)
+    _rays(d, geo, k, kv, x_axis)
+    _panel(d, sol)
+    return [("", d.finish())]
+
+
+# -- the scheme ----------------------------------------------------------------------------------
+
+
+def _gear(
+    v: Viewport,
+    x: float,
+    y_c: float,
+    r: float,
+    b: float,
+    halves: tuple[int, ...] = (1, -1),
+    hub: float = 0.0,
+) -> None:
+    """An external gear (GOST 2.770): its web from the hub (``hub`` off the axis) to the rim at
+    the pitch radius r, the rim of width b."""
+    for s in halves:
+        v.seg(Vec(x, y_c + s * hub), Vec(x, y_c + s * r), "link")
+        v.seg(Vec(x - b / 2.0, y_c + s * r), Vec(x + b / 2.0, y_c + s * r), "link")
+
+
+def _ring(v: Viewport, x: float, x_web: float, y_c: float, r: float, b: float) -> None:
+    """An internal gear: the rim at the pitch radius from x − b/2 to the web at ``x_web`` (a cup
+    open towards its mesh), the web across the axis."""
+    for s in (1, -1):
+        v.seg(Vec(x - b / 2.0, y_c + s * r), Vec(x_web, y_c + s * r), "link")
+    v.seg(Vec(x_web, y_c - r), Vec(x_web, y_c + r), "link")
+
+
+def _ground(v: Viewport, at: Vec, half_mm: float = 5.0) -> None:
+    """The frame under a support: a ground line hatched below (sheet mm from the model point)."""
+    x, y = v.p(at)
+    s = v.sheet
+    s.add(Polyline(((x - half_mm, y), (x + half_mm, y)), "link"))
+    n = int(2.0 * half_mm / 2.0)
+    for i in range(n + 1):
+        hx = x - half_mm + i * 2.0 * half_mm / n
+        s.add(Polyline(((hx, y), (hx - 2.0, y + 2.5)), "ground"))
+
+
+def _bearing(v: Viewport, at: Vec, on_frame: bool, drop: float = 0.0) -> None:
+    """A revolute pair on a shaft: a small box round it; on the frame, a post down to the ground
+    (``drop`` model units long)."""
+    x, y = v.p(at)
+    w, h = 4.0, 3.0
+    box = (
+        (x - w / 2, y - h / 2),
+        (x + w / 2, y - h / 2),
+        (x + w / 2, y + h / 2),
+        (x - w / 2, y + h / 2),
+    )
+    v.sheet.add(Polyline(box, "joint", closed=True, fill=True))
+    v.sheet.add(Polyline(box, "link", closed=True))
+    if on_frame:
+        foot = Vec(at.x, at.y - drop)
+        v.sheet.add(Polyline(((x, y + h / 2), v.p(foot)), "link"))
+        _ground(v, foot)
+
+
+def _scheme(v: Viewport, geo: Any, u: float) -> tuple[float, dict[str, Vec]]:
+    """Draw the scheme; return its right edge on the sheet (mm) and where each point of the plan
+    lies on it."""
+    z, m, a = geo.z, geo.m, geo.a
+    r = {k: m * zz / 2.0 for k, zz in z.items()}
+    b = 0.7 * u
+    dlt = v.scale.model(1.2)  # half the gap between a sleeve and the shaft inside it
+    x1, x3, xh1, x5 = 3.0 * u, 6.5 * u, 9.0 * u, 10.8 * u
+    xw2 = x1 + b / 2.0 + 0.6 * u
+    xw7 = x5 + b / 2.0 + 0.6 * u
+    x_end = xw7 + 2.6 * u
+    y_e = a + r["5"] + r["6"]
+    y_ground = geo.extent[0] - 0.9 * u  # the frame's supports all stand on this level
+    # axes
+    v.seg(Vec(-0.4 * u, 0.0), Vec(x_end + 0.4 * u, 0.0), "centre")
+    v.seg(Vec(xw2 - 0.4 * u, a), Vec(xw7 + 0.5 * u, a), "centre")
+    v.seg(Vec(xh1 - 0.3 * u, y_e), Vec(x5 + b / 2.0 + 0.3 * u, y_e), "centre")
+    # input shaft 1 and the sun 1
+    v.seg(Vec(0.0, 0.0), Vec(x1, 0.0), "link")
+    _gear(v, x1, 0.0, r["1"], b)
+    _bearing(v, Vec(1.2 * u, 0.0), True, -y_ground)
+    # block 2-5: the ring 2, the shaft along O_25, the pinion 5
+    _ring(v, x1, xw2, a, r["2"], b)
+    v.seg(Vec(xw2, a), Vec(xw7, a), "link")
+    _gear(v, x5, a, r["5"], b)
+    # gear 3, fixed: its web on a post to the frame
+    _gear(v, x3, 0.0, r["3"], b)
+    post = Vec(x3, y_ground)
+    v.seg(Vec(x3, -r["3"]), post, "link")
+    _ground(v, post)
+    # block H1-4: the sleeve round the shaft 2-5, gear 4, the arm H1 and the planet's axle
+    for s in (1, -1):
+        v.seg(Vec(x3 - b / 2.0, a + s * dlt), Vec(xh1, a + s * dlt), "link")
+    _gear(v, x3, a, r["4"], b, hub=dlt)
+    v.seg(Vec(xh1, a + dlt), Vec(xh1, y_e), "link")
+    v.seg(Vec(xh1, y_e), Vec(x5, y_e), "link")
+    # the planet 6 (the one on the far side of O_25)
+    _gear(v, x5, y_e, r["6"], b)
+    _bearing(v, Vec(0.5 * (xh1 + x5), y_e), False)
+    # block H2-7: the ring 7, its web carrying the shaft 2-5, the arm to the central axis and
+    # the output shaft
+    _ring(v, x5, xw7, a, r["7"], b)
+    v.seg(Vec(xw7, min(a - r["7"], 0.0)), Vec(xw7, max(a - r["7"], 0.0)), "link")
+    v.seg(Vec(xw7, 0.0), Vec(x_end, 0.0), "link")
+    _bearing(v, Vec(xw7, a), False)
+    _bearing(v, Vec(xw7 + 1.4 * u, 0.0), True, -y_ground)
+    # pitch lines through the pitch points, and the points of the plan
+    ext = b / 2.0 + 0.35 * u
+    meshes = {"A": x1, "C": x3, "D": x5, "F": x5}
+    for p in geo.points:
+        if p.name in meshes:
+            xm = meshes[p.name]
+            v.seg(Vec(xm - ext, p.y), Vec(xm + ext, p.y), "centre")
+    spots = {"O": Vec(x1, 0.0), "B": Vec(x5, a), "E": Vec(x5, y_e)}
+    spots.update(
+        {n: Vec(xm, next(p.y for p in geo.points if p.name == n)) for n, xm in meshes.items()}
+    )
+    geo_spots = {p.name: spots[p.name] for p in geo.points}
+    for name, q in geo_spots.items():
+        v.dot(q, "result")
+        v.label(q, name, 2.5, prefer=(-1.0, 1.0), clear=0.8)
+    # the links' numbers
+    for text, q, pref in (
+        ("1", Vec(0.4 * u, 0.0), (0.0, 1.0)),
+        ("2", Vec(xw2, a + 0.55 * r["2"]), (1.0, 0.0)),
+        ("3", Vec(x3, -0.55 * r["3"]), (1.0, 0.0)),
+        ("4", Vec(x3, a + 0.6 * r["4"]), (-1.0, 0.0)),
+        ("5", Vec(x5, a - 0.6 * r["5"]), (1.0, 0.0)),
+        ("6", Vec(x5, y_e + 0.5 * r["6"]), (1.0, 0.0)),
+        ("7", Vec(xw7, a + 0.8 * r["7"]), (1.0, 0.0)),
+        ("H_1", Vec(xh1, 0.5 * (a + y_e)), (-1.0, 0.0)),
+        ("H_2", Vec(x_end - 0.6 * u, 0.0), (0.0, 1.0)),
+    ):
+        v.label(q, text, 3.5, prefer=pref, clear=1.0)
+    v.d.text("вход", v.p(Vec(-0.3 * u, 0.0 + v.scale.model(2.5))), 2.5)
+    v.d.text("выход", v.p(Vec(x_end - 1.3 * u, v.scale.model(2.5))), 2.5)
+    return v.p(Vec(x_end + 0.4 * u, 0.0))[0], geo_spots
+
+
+# -- the plan of linear velocities ---------------------------------------------------------------
+
+
+def _pv(geo: Any, k_l: float, k_v: float, q: Vec) -> Vec:
+    """A plan point (v in m/s, y in m) as a model point of the viewport at k_l: v drawn at k_v."""
+    return Vec(q.x * k_l / k_v, q.y)
+
+
+def _plan(v_scheme: Viewport, vp: Viewport, geo: Any, kv: Scale, spots: dict[str, Vec]) -> None:
+    k_l = vp.scale.k
+    plan = geo.plan
+    ys = [p.y for p in geo.points]
+    y_min, y_max = min(ys), max(ys)
+    pad = 0.06 * (y_max - y_min)
+
+    def P(q: Vec) -> Vec:
+        return _pv(geo, k_l, kv.k, q)
+
+    # the axis v = 0: the line of the fixed link (and of the points at rest)
+    vp.seg(Vec(0.0, y_min - pad), Vec(0.0, y_max + pad), "link")
+    vp.label(Vec(0.0, y_min - pad), "v = 0 (звенья 0, 3)", 2.5, prefer=(0.0, -1.0), clear=0.0)
+    for p in geo.points:
+        end = P(plan.ends[p.name])
+        level = vp.p(Vec(0.0, p.y))[1]
+        # the level of the point carried across from the scheme
+        x0 = v_scheme.p(spots[p.name])[0]
+        x_end = max(vp.p(end)[0], vp.p(Vec(0.0, p.y))[0]) + 3.0
+        vp.d.sheet.add(Polyline(((x0, level), (x_end, level)), "construction"))
+        if abs(vp.mm(end.x)) > 0.5:
+            vp.arrow(Vec(0.0, p.y), end, "vector")
+        vp.dot(end, "result")
+        vp.label(end, p.name.lower(), 3.5, prefer=(1.0 if end.x >= 0 else -1.0, 1.0), clear=0.8)
+    # each link's line through the ends of its points, 5 mm beyond the outermost ones
+    for link in plan.order:
+        pts = sorted(
+            (vp.p(P(plan.ends[p.name])) for p in geo.points if link in p.links), key=lambda q: q[1]
+        )
+        (xa, ya), (xb, yb) = pts[-1], pts[0]
+        length = math.hypot(xb - xa, yb - ya)
+        ux, uy = (xb - xa) / length, (yb - ya) / length
+        a_ = (xa - 5.0 * ux, ya - 5.0 * uy)
+        b_ = (xb + 5.0 * ux, yb + 5.0 * uy)
+        vp.d.sheet.add(Polyline((a_, b_), "result"))
+        far = max((a_, b_), key=lambda q: abs(q[0] - vp.p(Vec(0.0, 0.0))[0]))
+        vp.d.label(far, LINK_LABEL[link], 3.5, clear=0.5)
+
+
+# -- the angle diagram ---------------------------------------------------------------------------
+
+
+def _rays(d: Drawing, geo: Any, k: Scale, kv: Scale, x_axis: float) -> None:
+    """The angle diagram: from S, rays parallel to the links' lines; they cut the line H above S
+    in segments ω_i/k_ω."""
+    rays = geo.rays
+    k_l = k.k
+    ends = {kk: _pv(geo, k_l, kv.k, e) for kk, e in rays.ends.items()}
+    S = _pv(geo, k_l, kv.k, rays.S)
+    xs = [e.x for e in ends.values()] + [S.x]
+    lo, hi = min(xs), max(xs)
+    # centre the diagram under the scheme and the plan
+    y_lo = geo.extent[0]
+    top = TOP + (geo.extent[1] - y_lo) / k_l + 44.0
+    h_mm = rays.H / k_l
+    field = RAY_FIELD
+    width = (hi - lo) / k_l
+    x_s = field[0] + (field[1] - field[0] - width) / 2.0 + (S.x - lo) / k_l
+    v = d.viewport(k, S, (x_s, top + h_mm))
+    d.text(
+        f"Угловые скорости (лучевая диаграмма): ω_i = μ_ω·(отрезок), μ_ω = μ_V/(H·μ_l) = "
+        f"{fmt_number(geo.k_omega)} (рад/с)/мм",
+        (LEFT - 4.0, top - 20.0),
+        3.5,
+    )
+    base_lo = Vec(lo - 0.02 * (hi - lo), S.y + rays.H)
+    base_hi = Vec(hi + 0.02 * (hi - lo), S.y + rays.H)
+    v.seg(base_lo, base_hi, "construction")
+    v.seg(S, Vec(S.x, S.y + rays.H), "construction")
+    v.dot(S)
+    v.label(S, "S", 3.5, prefer=(0.0, -1.0))
+    # the intercepts' names above the line, staggered upwards where they would collide
+    rows: list[float] = []
+    for link, e in sorted(ends.items(), key=lambda kv_: kv_[1].x):
+        v.seg(S, e, "result")
+        v.dot(e, "result")
+        x_mm, y_mm = v.p(e)
+        label = LINK_LABEL[link]
+        w = text_box(parse(label), 3.5)[0]
+        row = next((i for i, right in enumerate(rows) if right < x_mm - w / 2.0 - 1.0), len(rows))
+        if row == len(rows):
+            rows.append(0.0)
+        rows[row] = x_mm + w / 2.0
+        y_text = y_mm - 2.0 - 6.0 * row
+        if row:
+            d.sheet.add(Polyline(((x_mm, y_mm - 0.8), (x_mm, y_text + 1.0)), "dimension"))
+        d.text(label, (x_mm, y_text), 3.5, anchor="centre")
+    x1, x2 = ((rays.ends[kk].x - rays.S.x) / kv.k for kk in (SUN, H2))
+    d.text(
+        f"u_{{1H2}} = ω_1/ω_{{H2}} = {fmt_number(x1, digits=5)}/"
+        f"{fmt_number(x2, digits=4)} = {fmt_number(x1 / x2, digits=6)}",
+        v.p(Vec(S.x, S.y - 0.55 * rays.H)),
+        3.5,
+    )
+    v.dim_linear(
+        S,
+        Vec(S.x, S.y + rays.H),
+        f"H = {fmt_number(h_mm, digits=4)}",
+        offset=-(min(12.0, 0.5 * width) + 4.0) if (S.x - lo) > (hi - S.x) else 12.0,
+        height=2.5,
+    )
+
+
+# -- the tables ----------------------------------------------------------------------------------
+
+
+def _panel(d: Drawing, sol: Solution) -> None:
+    p, r, geo = sol.params, sol.results, sol.data
+    x, y = PANEL_X, 10.0
+    d.text("Исходные данные", (x, y + 3.5), 3.5)
+    rows = [["z_1", "z_2", "z_3", "z_4", "z_5", "z_6", "z_7", "m, мм"]]
+    derived = {n: n not in p for n in ("z4", "z7")}
+    rows.append(
+        [
+            str(p["z1"]),
+            str(p["z2"]),
+            str(p["z3"]),
+            str(r["z4"]) + ("*" if derived["z4"] else ""),
+            str(p["z5"]),
+            str(p["z6"]),
+            str(r["z7"]) + ("*" if derived["z7"] else ""),
+            fmt_number(float(p["m"]) * 1000.0),
+        ]
+    )
+    _, h = d.table(x, y + 6.0, (18.0,) * 7 + (24.0,), rows, row_h=5.5)
+    y += 6.0 + h + 2.0
+    d.text("* из условия соосности: z_4 = z_2 – z_1 – z_3,  z_7 = z_5 + 2z_6", (x, y + 2.5), 2.5)
+    y += 8.0
+    d.text("Результаты (метод Виллиса)", (x, y + 3.5), 3.5)
+    seed = sol.seed
+    rows = [["Величина", "Точно", "Опубликовано", "Разность"]]
+    num, den = r["u1H2_fraction"]
+    for name, label in (
+        ("W", "W"),
+        ("z4", "z_4"),
+        ("z7", "z_7"),
+        ("u12", "u_{12}"),
+        ("u5H1_7", "u_{5H1}^{(7)}"),
+        ("u43", "u_{43}"),
+        ("u13_H2", "u_{13}^{(H2)}"),
+        ("u1H2", "u_{1H2}"),
+    ):
+        exact = r[name]
+        text = str(exact) if isinstance(exact, int) else fmt_number(float(exact), digits=7)
+        if name == "u1H2" and den != 1:
+            text += f" = {num}/{den}"
+        pub = seed.get(name)
+        bad = name in sol.problem.seed and sol.problem.seed[name].kind == "erratum"
+        rows.append(
+            [
+                label,
+                text,
+                "" if pub is None else fmt_number(pub, digits=5) + (" *" if bad else ""),
+                "" if pub is None else fmt_number(float(exact) - pub, digits=2),
+            ]
+        )
+    _, h = d.table(x, y + 6.0, (26.0, 48.0, 34.0, 38.0), rows, row_h=5.5)
+    y += 6.0 + h + 5.0
+    d.text("Угловые скорости при ω_{H2} = 1 рад/с", (x, y + 3.5), 3.5)
+    rows = [["Звено", "уравнения зацеплений", "наклон (план)", "луч, мм"]]
+    for link in (SUN, BLOCK25, PLANET, H1, H2):
+        exact = geo.omega_exact[link]
+        ray_mm = (geo.rays.ends[link].x - geo.rays.S.x) / sol.scales["v"]
+        rows.append(
+            [
+                LINK_LABEL[link],
+                str(exact)
+                if exact.denominator == 1
+                else f"{exact} = {fmt_number(float(exact), digits=6)}",
+                fmt_number(geo.plan.omega[link], digits=6),
+                fmt_number(ray_mm, digits=4),
+            ]
+        )
+    _, h = d.table(x, y + 6.0, (18.0, 58.0, 36.0, 34.0), rows, row_h=5.5)
+    y += 6.0 + h + 5.0
+    y = d.text("Порядок построения", (x, y + 3.5), 3.5).at[1] + 2.0
+    u_txt = fmt_number(float(r["u1H2"]), digits=6)
+    steps = (
+        "радиусы r_i = m·z_i/2 откладываем на вертикали; точки O, A … F – оси и полюсы "
+        "зацеплений на одной радиальной прямой;",
+        "задаём ω_{H2} = 1 рад/с: b = ω_{H2}·a; линия H_2 через o и b;",
+        "c – полюс зацепления с неподвижным колесом 3 (v = 0): линия H_1 через c и b даёт e;",
+        "линия 6 через e и f даёт d; линия 2–5 через b и d даёт a; линия 1 через o и a;",
+        "лучи из S параллельно линиям отсекают на прямой, удалённой на H, отрезки ω_i/μ_ω; "
+        f"u_{{1H2}} = ω_1/ω_{{H2}} = {u_txt}.",
+    )
+    for i, step in enumerate(steps):
+        y = d.paragraph(f"{i + 1}. {step}", x, y, 148.0, 2.5, indent=4.0) + 0.4
+    if sol.is_seed:
+        y += 2.0
+        d.paragraph(
+            "* Ошибки в опубликованном решении: условие соосности записано как "
+            "z_1 – z_2 = z_4 + z_3, следует z_2 – z_1 = z_3 + z_4 (числа подставлены верно); "
+            "u_{1H2} = 66,46 получено с округлённым u_{5H1}^{(7)} = 4,364, точно "
+            "u_{1H2} = 731/11 = 66,4545…",
+            x,
+            y,
+            148.0,
+            2.5,
+        )
