@@ -176,3 +176,21 @@ class Graph:
         self.d.sheet.add(CircleItem(q, DOT_R, role, fill=True))
         if markup:
             self.d.label(q, markup, 2.5, clear=DOT_R)
+
+    def ordinate(
+        self,
+        x: float,
+        y: float,
+        markup: str = "",
+        role: str = "construction",
+        height: float = 2.5,
+    ) -> None:
+        """The ordinate of a data point: a thin line from the x axis to (x, y), and an optional
+        label (a division point's number) placed by the point, above it where there is room."""
+        foot = self.p(x, self.y.zero)
+        top = self.p(x, y)
+        if math.dist(foot, top) > 0.0:
+            self.d.sheet.add(Polyline((foot, top), role))
+        if markup:
+            up = -1.0 if y >= self.y.zero else 1.0
+            self.d.label(top, markup, height, prefer=(0.0, up), clear=DOT_R)
