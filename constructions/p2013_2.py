@@ -48,6 +48,7 @@ from geomcad.kinematics.cams import (
     VelocityPlan,
     at_angles,
     cam_profile,
+    pressure_angle_max,
     profile_step_name,
     rho_min,
     velocity_plan,
@@ -178,7 +179,7 @@ def build(p: Mapping[str, ParamValue]) -> Build:
         "S": [float(x) for x in div.S],
         "r": r,
         "a": a,
-        "pressure_angle_max_deg": float(to_deg(float(np.max(np.abs(prof.pressure))))),
+        "pressure_angle_max_deg": to_deg(pressure_angle_max(program, prof)),
         "rho_min": c.value("ρ_min", rho_min(program, prof), "smallest |ρ| of the profile"),
         "profile": _points(prof),
     }
@@ -275,7 +276,7 @@ def _jump_notes(prof: CamProfile, program: CamProgram, f: Follower) -> list[str]
                 f"({p0[0] * 1000:.4g}; {p0[1] * 1000:.4g}) to ({p1[0] * 1000:.4g}; "
                 f"{p1[1] * 1000:.4g}) mm; the radius vector at its end is {r1 * 1000:.6g} mm"
                 + (
-                    f" (the seed's r_0 = 41,98 мм), not the base radius r0 = {f.r0 * 1000:g} mm"
+                    f" (the seed's r_0 = 41.98 mm), not the base radius r0 = {f.r0 * 1000:g} mm"
                     if at == 0.0 and d0 == 0.0
                     else ""
                 )

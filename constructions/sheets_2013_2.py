@@ -48,6 +48,10 @@ LAW_SHORT_RU = {
     "cycloidal": "синус.",
     "poly345": "3-4-5",
 }
+#: The follower's stem on the scheme is at least this long on the paper (mm).
+STEM_MM = 10.0
+#: The lowest baseline the right-hand panel may use (the title block starts at y = 237).
+BOTTOM = 234.0
 #: The width (mm) kept for the velocity plan at the scheme's right.
 PLAN_ROOM = 46.0
 #: The S(φ) graph: the data origin's x and the bottom of the axis; its room (mm).
@@ -116,7 +120,7 @@ def _profile_view(d: Drawing, sol: Solution, k: Scale) -> None:
             v.seg(C + across * lo, C + across * hi, "construction")
         elif f.kind == "roller":
             v.circle(C, f.r_roller, "construction")
-            v.dot(C, "point")
+        v.dot(C, "point")
         v.arrow(o, B, "result")
         if i % step == 0 or i == n - 1:
             v.label(B, f"B_{{{i}}}", height=2.5, prefer=(up.x, up.y))
@@ -126,6 +130,8 @@ def _profile_view(d: Drawing, sol: Solution, k: Scale) -> None:
         v.polyline(list(prof.pitch), "centre", closed=geo.closed)
     v.polyline(list(prof.contact), "link", closed=geo.closed)
     v.label(o, "O", prefer=(-1.0, -1.0), clear=1.0)
+    # the inversion: the follower turns about O against the cam's rotation
+    _turn_arrow(v, 0.55 * f.r0, 125.0, 165.0, -f.sigma, "–ω")
     # the radius vectors, dimensioned as radii: the line from o, its arrow at B_i, the value
     for i in range(n):
         if i % step and i != n - 1:
@@ -189,13 +195,15 @@ def _scheme(d: Drawing, sol: Solution) -> None:
     cam = evert(geo.profile.contact, np.full(len(geo.profile.phi), phi), f.sigma)
     width = float(np.max(np.abs(geo.profile.S1))) + 0.2 * f.r0
     h = float(plan.B.y)
-    stem = 0.25 * f.r0
-    xs = [*cam[:, 0], -f.r0, f.r0, -width + f.e * 0.0, width]
-    ys = [*cam[:, 1], -f.r0, h + stem]
-    w_m, h_m = max(xs) - min(xs), max(ys) - min(ys)
     x0, y0, x1, y1 = SCHEME
     room_w, room_h = x1 - x0 - PLAN_ROOM - 8.0, y1 - y0
-    kl = gost_length_scale(max(w_m * room_h / room_w, h_m), room_h)
+    stem = 0.25 * f.r0
+    for _ in range(2):  # the stem is at least STEM_MM long on the paper
+        xs = [*cam[:, 0], -f.r0, f.r0, -width, width]
+        ys = [*cam[:, 1], -f.r0, h + stem]
+        w_m, h_m = max(xs) - min(xs), max(ys) - min(ys)
+        kl = gost_length_scale(max(w_m * room_h / room_w, h_m), room_h)
+        stem = max(0.25 * f.r0, kl.model(STEM_MM))
     left = x0 + 2.0 + (room_w - kl.mm(w_m)) / 2.0
     v = d.viewport(kl, (min(xs), (max(ys) + min(ys)) / 2.0), (left, (y0 + y1) / 2.0))
     o = Vec(0.0, 0.0)
@@ -205,7 +213,7 @@ def _scheme(d: Drawing, sol: Solution) -> None:
     Bp, C, B = plan.B_prime, plan.C, plan.B
     away = -1.0 if Bp.x >= 0.0 else 1.0
     v.pivot(o, down=(away, -1.0))
-    _omega_arrow(v, f.r0 * 0.35, f.sigma, away)
+    _omega_arrow(v, max(f.r0 * 0.35, kl.model(13.0)), f.sigma, away)
     # the follower: flat face (or knife, roller), stem, guides
     top = Vec(f.e, h + stem)
     if f.kind == "flat":
@@ -273,16 +281,19 @@ def _scheme(d: Drawing, sol: Solution) -> None:
 def _omega_arrow(v: Viewport, r: float, sigma: int, side: float) -> None:
     """The cam's sense of rotation: an arc about O below it, on ``side`` (±1 in x), with an
     arrowhead, labelled ω."""
-    a0, a1 = (math.radians(200.0), math.radians(290.0))
-    if side > 0.0:
-        a0, a1 = math.radians(250.0), math.radians(340.0)
-    arc = Arc(Circle(Vec(0.0, 0.0), r), a0, a1)
-    v.arc(arc, "dimension")
-    end, before = (a1, a1 - 0.15) if sigma > 0 else (a0, a0 + 0.15)
-    p_end = Vec.polar(r, end)
-    p_before = Vec.polar(r, before)
-    v.arrow(p_before, p_end, "dimension")
-    v.label(Vec.polar(r, (a0 + a1) / 2.0), "ω", height=3.5, prefer=(-1.0, -1.0), clear=0.5)
+    a0, a1 = (200.0, 290.0) if side <= 0.0 else (250.0, 340.0)
+    _turn_arrow(v, r, a0, a1, sigma, "ω")
+
+
+def _turn_arrow(v: Viewport, r: float, a0_deg: float, a1_deg: float, sense: int, text: str) -> None:
+    """An arc about O from a0 to a1 (degrees, counter-clockwise) with an arrowhead at the end the
+    ``sense`` (+1 counter-clockwise) points to, and its label."""
+    a0, a1 = math.radians(a0_deg), math.radians(a1_deg)
+    v.arc(Arc(Circle(Vec(0.0, 0.0), r), a0, a1), "dimension")
+    end, before = (a1, a1 - 0.15) if sense > 0 else (a0, a0 + 0.15)
+    v.arrow(Vec.polar(r, before), Vec.polar(r, end), "dimension")
+    mid = (a0 + a1) / 2.0
+    v.label(Vec.polar(r, mid), text, height=3.5, prefer=(math.cos(mid), math.sin(mid)), clear=0.5)
 
 
 def _right_angle(v: Viewport, vertex: Vec, a: Vec, b: Vec, size_mm: float = 2.5) -> None:
@@ -323,7 +334,7 @@ def _panel(d: Drawing, sol: Solution, k: Scale) -> None:
     rows = [
         ["H", f"{fmt_number(float(p['H']) * mm)} мм", "φ_у", f"{rise}°", "закон",
          LAW_SHORT_RU[law]],
-        ["r_0", f"{fmt_number(float(p['r0']) * mm)} мм", "φ_д / φ_с", f"{dwell}° / {ret}°",
+        ["r_{min}", f"{fmt_number(float(p['r0']) * mm)} мм", "φ_д / φ_с", f"{dwell}° / {ret}°",
          "толкатель", kinds[str(p["follower"])]],
         ["интерв.", f"{p['n_div']} × {step_deg}°",
          "ω", "против час." if int(p["omega_sign"]) > 0 else "по час.", "e / r_{рол}",
@@ -365,19 +376,42 @@ def _panel(d: Drawing, sol: Solution, k: Scale) -> None:
         ]
     )
     r_widths = (12.0, 18.0, 18.0, 20.0, 26.0, 22.0, 26.0)
-    _, h = d.table(x, y + 5.0, r_widths, rows, row_h=5.0)
-    y += 5.0 + h + 3.0
+    _, h = d.table(x, y + 5.0, r_widths, rows, row_h=4.5)
+    y += 5.0 + h + 1.5
     rho = float(r["rho_min"]) * mm
     alpha = float(r["pressure_angle_max_deg"])
-    d.text(
-        f"ρ_{{min}} = {fmt_number(rho, digits=5)} мм;  "
-        f"α_{{max}} = {fmt_number(alpha, digits=4)}°;  a = H/φ_у",
-        (x, y + 2.5),
-        2.5,
+    summary = (
+        f"a = H/φ_у;  ρ_{{min}} = {fmt_number(rho, digits=5)} мм;  "
+        f"α_{{max}} = {fmt_number(alpha, digits=4)}°."
     )
-    y += 6.0
-    for text in _notes_ru(sol):
-        y = d.paragraph(text, x, y, PANEL_W, 2.5) + 0.8
+    for text in [summary, *_notes_ru(sol)]:
+        y = d.paragraph(text, x, y, PANEL_W, 2.5) + 0.6
+    order = _order_ru(sol)
+    if y + 7.0 + 4.5 * len(order) <= BOTTOM:
+        y = d.text("Порядок построения", (x, y + 5.0), 3.5).at[1] + 1.2
+        for i, step in enumerate(order):
+            y = d.paragraph(f"{i + 1}. {step}", x, y, PANEL_W, 2.5, indent=4.0) + 0.2
+
+
+def _order_ru(sol: Solution) -> list[str]:
+    """The construction by inversion, step by step (one line each)."""
+    kind = sol.data.follower.kind
+    lay = "r_{min} + S_i" if kind == "flat" else "s_0 + S_i"
+    what = {
+        "flat": "через C_i – тарелки перпендикулярно осям, B_i в S'_i от оси",
+        "knife": "B_i = C_i – положения острия",
+        "roller": "C_i – центры ролика, B_i – по нормали на r_{рол}",
+    }[kind]
+    last = {
+        "flat": "профиль – огибающая тарелок",
+        "knife": "профиль – кривая через B_i",
+        "roller": "профиль – эквидистанта центрового",
+    }[kind]
+    return [
+        "оси толкателя 0, 1, 2 … повёрнуты вокруг O на φ_i против вращения кулачка (–ω);",
+        f"на осях отложены {lay} (точки C_i); {what};",
+        f"{last}; радиус-векторы r_i = OB_i.",
+    ]
 
 
 def _notes_ru(sol: Solution) -> list[str]:
@@ -387,7 +421,7 @@ def _notes_ru(sol: Solution) -> list[str]:
     out: list[str] = []
     if f.kind == "flat":
         out.append(
-            "r_i^2 = (r_0 + S_i)^2 + S'_i^2: точка касания B отстоит от оси толкателя на "
+            "r_i^2 = (r_{min} + S_i)^2 + S'_i^2: точка касания B отстоит от оси толкателя на "
             "BC = OB' = S' (ΔOBB' подобен плану pb_1b_2, у автора Bb_1b_2)."
         )
     prof = geo.profile
@@ -395,7 +429,7 @@ def _notes_ru(sol: Solution) -> list[str]:
         a = float(sol.results["a"]) * MM
         out.append(
             f"При φ = 0 S' скачком растёт от 0 до a = {fmt_number(a, digits=4)} мм (жёсткий "
-            "удар): профиль начинается отрезком прямой длиной a, касательным к окружности r_0, "
+            "удар): профиль начинается отрезком прямой длиной a, касательным к окружности r_{min}, "
             "далее – эвольвента окружности радиуса a."
         )
     return out

@@ -449,6 +449,14 @@ def rho_min(program: CamProgram, prof: CamProfile) -> float:
     return best
 
 
+def pressure_angle_max(program: CamProgram, prof: CamProfile) -> float:
+    """The largest pressure angle |α| along the profile (rad), refined between samples."""
+    smooth = ~prof.corner
+    v = -_refined_min(program, prof, lambda p: -np.abs(p.pressure), smooth)[0]
+    corner = float(np.max(np.abs(prof.pressure[prof.corner]))) if np.any(prof.corner) else 0.0
+    return max(v, corner)
+
+
 @dataclass(frozen=True)
 class VelocityPlan:
     """The seed's velocity-plan argument at one position, in the fixed frame.
