@@ -210,7 +210,9 @@ def _record_divisions(c: Construction, f: Follower, div: CamProfile) -> None:
         c.value(f"S′_{i}", float(div.S1[i]), f"dS/dφ at φ_{i}")
         turn = -f.sigma * phi
         up = Vec(0.0, 1.0).rotated(turn)
-        foot = Vec(f.e, 0.0).rotated(turn)
+        # the flat face is built from the line through O along the motion (the stem's offset
+        # does not change the profile); a knife's or roller's axis is offset by e
+        foot = Vec(0.0 if f.kind == "flat" else f.e, 0.0).rotated(turn)
         axis = c.line(f"axis_{i}", foot, up, f"the follower's axis turned back by φ_{i}")
         C = c.point(
             f"C_{i}",
@@ -263,7 +265,7 @@ def _jump_notes(prof: CamProfile, program: CamProgram, f: Follower) -> list[str]
         d0 = float(prof.S1[i - 1]) if i > 0 else 0.0
         d1 = float(prof.S1[j]) if j < len(corner) else 0.0
         head = (
-            f"at φ = {at:.6g}° S′ jumps from {d0 * 1000:.6g} to {d1 * 1000:.6g} mm, so S″ is "
+            f"at φ = {at:.6g}°, S′ jumps from {d0 * 1000:.6g} to {d1 * 1000:.6g} mm, so S″ is "
             "infinite there (a rigid impact)"
         )
         if f.kind == "flat":
@@ -278,6 +280,11 @@ def _jump_notes(prof: CamProfile, program: CamProgram, f: Follower) -> list[str]
                 + (
                     f" (the seed's r_0 = 41.98 mm), not the base radius r0 = {f.r0 * 1000:g} mm"
                     if at == 0.0 and d0 == 0.0
+                    else ""
+                )
+                + (
+                    "; from there on the profile is the involute of the circle of radius a"
+                    if program.phases[0].law == "linear" and at == 0.0
                     else ""
                 )
             )

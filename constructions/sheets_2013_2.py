@@ -17,7 +17,7 @@ import numpy as np
 
 from geomcad import tol
 from geomcad.geom import Arc, Circle, Vec
-from geomcad.kinematics.cams import evert
+from geomcad.kinematics.cams import CamProfile, evert
 from geomcad.kinematics.motion_laws import LAW_TITLES_RU
 from geomcad.sheet import (
     Drawing,
@@ -48,6 +48,8 @@ LAW_SHORT_RU = {
     "cycloidal": "синус.",
     "poly345": "3-4-5",
 }
+#: Division points closer than this on the paper (mm) are not all labelled.
+LABEL_APART = 5.0
 #: The follower's stem on the scheme is at least this long on the paper (mm).
 STEM_MM = 10.0
 #: The lowest baseline the right-hand panel may use (the title block starts at y = 237).
@@ -101,18 +103,19 @@ def _profile_view(d: Drawing, sol: Solution, k: Scale) -> None:
     n = len(div.phi)
     if n > 1 and math.isclose(float(div.phi[-1] - div.phi[0]), 2.0 * math.pi):
         n -= 1  # the last point of a full turn is the first one again
-    step = _label_step(n)
+    shown = _labelled(v, div, n)
     for i in range(n):
         turn = -f.sigma * float(div.phi[i])
         up = Vec(0.0, 1.0).rotated(turn)
         across = Vec(1.0, 0.0).rotated(turn)
         C = Vec(*div.pitch[i])
         B = Vec(*div.contact[i])
-        foot = across * f.e
-        # the follower's axis turned back by φ_i, from the base circle's side to past the follower
+        # the follower's axis turned back by φ_i (for the flat face the line through O along
+        # the motion, on which C_i lies), from O or its foot on the circle of radius e to past C_i
+        foot = across * f.e if f.kind != "flat" else o
         tip = C + up * over
-        v.seg(foot if f.kind != "flat" or f.e != 0.0 else o, tip, "construction")
-        if i % step == 0 or i == n - 1:
+        v.seg(foot, tip, "construction")
+        if i in shown:
             v.label(tip, str(i), height=2.5, prefer=(up.x, up.y), clear=0.5)
         if f.kind == "flat":
             t_b = (B - C).dot(across)
@@ -122,7 +125,7 @@ def _profile_view(d: Drawing, sol: Solution, k: Scale) -> None:
             v.circle(C, f.r_roller, "construction")
         v.dot(C, "point")
         v.arrow(o, B, "result")
-        if i % step == 0 or i == n - 1:
+        if i in shown:
             v.label(B, f"B_{{{i}}}", height=2.5, prefer=(up.x, up.y))
     if f.kind != "flat" and f.e != 0.0:
         v.circle(o, abs(f.e), "centre")
@@ -133,9 +136,7 @@ def _profile_view(d: Drawing, sol: Solution, k: Scale) -> None:
     # the inversion: the follower turns about O against the cam's rotation
     _turn_arrow(v, 0.55 * f.r0, 125.0, 165.0, -f.sigma, "–ω")
     # the radius vectors, dimensioned as radii: the line from o, its arrow at B_i, the value
-    for i in range(n):
-        if i % step and i != n - 1:
-            continue
+    for i in sorted(shown):
         B = Vec(*div.contact[i])
         text = f"r_{{{i}}} = {fmt_number(float(div.radius[i]) * MM, digits=4)}"
         spots = tuple(v.p(B * t) for t in (0.6, 0.8, 0.5, 0.9, 0.4))
@@ -147,6 +148,20 @@ def _profile_view(d: Drawing, sol: Solution, k: Scale) -> None:
         dphi = math.degrees(float(div.phi[-1] - div.phi[-2]))
         v.dim_angle(o, a0, a1, f"{fmt_number(dphi, digits=4)}°", r_mm=k.mm(f.r0) * 0.55,
                     height=2.5)  # fmt: skip
+
+
+def _labelled(v: Viewport, div: CamProfile, n: int) -> set[int]:
+    """The division points that get labels: every ``_label_step``-th one, and of those only
+    points at least LABEL_APART mm on the paper from the ones already taken (the last one is
+    preferred to its neighbour)."""
+    step = _label_step(n)
+    want = [i for i in range(n) if i % step == 0 or i == n - 1]
+    taken: list[int] = []
+    for i in [want[-1], *want[:-1]] if len(want) > 1 else want:
+        q = v.p(div.contact[i])
+        if all(math.dist(q, v.p(div.contact[j])) >= LABEL_APART for j in taken):
+            taken.append(i)
+    return set(taken)
 
 
 def _label_step(n: int) -> int:
@@ -270,12 +285,15 @@ def _scheme(d: Drawing, sol: Solution) -> None:
     d.text("(ω = 1 рад/с)", (x1 - PLAN_ROOM + 2.0, low + 8.5), 2.5)
     k_i = geo.plan_index
     d.text(
-        f"Механизм при φ_{{{k_i}}} = {fmt_number(math.degrees(phi), digits=4)}°: "
-        "ΔOBB' подобен плану pb_1b_2, OB' = BC = S'",
+        f"Механизм при φ_{{{k_i}}} = {fmt_number(math.degrees(phi), digits=4)}° и план скоростей",
         (x0, y0 - 7.0),
         3.5,
     )
-    d.text(f"{kl.label()} (M {kl.ratio_text()})", (x0, y0 - 2.5), 2.5)
+    d.text(
+        f"{kl.label()} (M {kl.ratio_text()});  ΔOBB' подобен плану pb_1b_2, OB' = BC = S'",
+        (x0, y0 - 2.5),
+        2.5,
+    )
 
 
 def _omega_arrow(v: Viewport, r: float, sigma: int, side: float) -> None:
@@ -327,20 +345,22 @@ def _panel(d: Drawing, sol: Solution, k: Scale) -> None:
     law = str(p["law"])
     kinds = {"flat": "плоский", "knife": "острый", "roller": "роликовый"}
     mm = MM
-    rise, dwell, ret = (fmt_number(float(p[n])) for n in ("phi_rise_deg", "phi_dwell_deg",
-                                                          "phi_return_deg"))  # fmt: skip
-    step_deg = fmt_number(math.degrees(geo.span) / int(p["n_div"]), digits=4)
-    offsets = f"{fmt_number(float(p['e']) * mm)} / {fmt_number(float(p['r_roller']) * mm)} мм"
+    rise, dwell, ret = (fmt_number(float(p[n]), digits=4) for n in ("phi_rise_deg",
+                        "phi_dwell_deg", "phi_return_deg"))  # fmt: skip
+    step_deg = fmt_number(math.degrees(geo.span) / int(p["n_div"]), digits=3)
+    e_mm, rr_mm = (fmt_number(float(p[n]) * mm, digits=4) for n in ("e", "r_roller"))
+    offsets = f"{e_mm} / {rr_mm} мм"
+    r0_mm = fmt_number(float(p["r0"]) * mm, digits=4)
     rows = [
-        ["H", f"{fmt_number(float(p['H']) * mm)} мм", "φ_у", f"{rise}°", "закон",
+        ["H", f"{fmt_number(float(p['H']) * mm, digits=4)} мм", "φ_у", f"{rise}°", "закон",
          LAW_SHORT_RU[law]],
-        ["r_{min}", f"{fmt_number(float(p['r0']) * mm)} мм", "φ_д / φ_с", f"{dwell}° / {ret}°",
+        ["r_{min}", f"{r0_mm} мм", "φ_д / φ_с", f"{dwell}° / {ret}°",
          "толкатель", kinds[str(p["follower"])]],
         ["интерв.", f"{p['n_div']} × {step_deg}°",
          "ω", "против час." if int(p["omega_sign"]) > 0 else "по час.", "e / r_{рол}",
          offsets],
     ]  # fmt: skip
-    widths = (13.0, 21.0, 17.0, 23.0, 20.0, 28.0)
+    widths = (13.0, 25.0, 15.0, 29.0, 20.0, 30.0)
     _, h = d.table(x, y + 5.0, widths, rows, row_h=5.0, header=False)
     y += 5.0 + h + 5.0
     d.text("Результаты (мм)", (x, y + 3.5), 3.5)
@@ -355,8 +375,8 @@ def _panel(d: Drawing, sol: Solution, k: Scale) -> None:
             [
                 str(i),
                 fmt_number(math.degrees(float(r["phi"][i])), digits=5),
-                fmt_number(_clean(float(r["S"][i]), geo.program.H) * mm, digits=5),
-                fmt_number(_clean(float(geo.divisions.S1[i]), geo.program.H) * mm, digits=5),
+                fmt_number(_clean(float(r["S"][i]), geo.program.H) * mm, digits=4),
+                fmt_number(_clean(float(geo.divisions.S1[i]), geo.program.H) * mm, digits=4),
                 fmt_number(exact, digits=6),
                 "" if pub is None else fmt_number(pub, digits=4),
                 "" if pub is None else fmt_number(exact - pub, digits=2),
@@ -375,7 +395,7 @@ def _panel(d: Drawing, sol: Solution, k: Scale) -> None:
             "" if seed_a is None else fmt_number(a - float(seed_a) * mm, digits=2),
         ]
     )
-    r_widths = (12.0, 18.0, 18.0, 20.0, 26.0, 22.0, 26.0)
+    r_widths = (10.0, 17.0, 20.0, 20.0, 26.0, 22.0, 26.0)
     _, h = d.table(x, y + 5.0, r_widths, rows, row_h=4.5)
     y += 5.0 + h + 1.5
     rho = float(r["rho_min"]) * mm

@@ -70,9 +70,10 @@ def test_profile_starts_on_the_base_circle_and_ends_at_b4() -> None:
 
 def test_notes_explain_the_jump_at_phi_0_and_the_seeds_letters() -> None:
     notes = geomcad.solve(PID).notes
-    jump = next(n for n in notes if n.startswith("at φ = 0°"))
+    jump = next(n for n in notes if n.startswith("at φ = 0°,"))
     assert "S′ jumps from 0 to 12.7324 mm" in jump and "rigid impact" in jump
     assert "straight piece of the face line" in jump and "41.98" in jump
+    assert "involute of the circle of radius a" in jump
     assert any("seed notation" in n and "B′" in n for n in notes)
     # a variant without a jump has no such note
     assert not any(n.startswith("at φ") for n in geomcad.solve(PID, law="harmonic").notes)
@@ -396,8 +397,11 @@ def test_seed_sheet_radius_vectors_are_true_to_scale() -> None:
          "phi_rise_deg": 120, "phi_dwell_deg": 60, "phi_return_deg": 120, "span_fraction": 1.0,
          "n_div": 8},
         {"H": 0.1, "r0": 0.15, "law": "constant_acceleration", "n_div": 30},
+        {"H": 2.0, "phi_rise_deg": 5.0, "r0": 0.1, "n_div": 40, "span_fraction": 0.001,
+         "law": "constant_acceleration", "follower": "roller", "e": 0.045, "r_roller": 0.0377,
+         "omega_sign": -1},
     ],
-    ids=["full-turn", "knife-cw", "roller", "large"],
+    ids=["full-turn", "knife-cw", "roller", "large", "tiny-span"],
 )  # fmt: skip
 def test_variant_sheets_fit_at_a_gost_scale(params: dict[str, object]) -> None:
     sol = geomcad.solve(PID, **params)

@@ -24,11 +24,20 @@ circle about the pitch curve's corner when S′ rises; when S′ drops, a flat f
 have to enter a convex corner of the pitch curve, so that is a cusp or undercut too. Every
 jump's points are included (``corner`` marks them), with S′ running between its one-sided values.
 
-The tangent, the normal and the radius of curvature come from the exact derivatives: with
-A = dq/dφ + σ·J·q·(−1) = (σ(s0 + S), S′ − σe) (the pitch curve's tangent in fixed-frame
-orientation) and B = (2σS′ − e, S″ − s0 − S), the signed radius of curvature is
-ρ = −σ|A|³/(A × B) (> 0 where the profile is convex), the outward normal is
-ν = (e − σS′, s0 + S)/|A| and the pressure angle is α = atan2(σS′ − e, s0 + S).
+The tangent, the normal and the radius of curvature come from the exact derivatives. The pitch
+point in the cam's frame is p = R(−σφ)·q, so p′ = R·(q′ − σJq) and p″ = R·(q″ − 2σJq′ − q)
+(J turns by +90°). With A = q′ − σJq = (σ(s0 + S), S′ − σe) and B = (2σS′ − e, S″ − s0 − S),
+the signed radius of curvature is ρ = −σ|A|³/(A × B) (> 0 where the profile is convex, as the
+inversion runs round it against the cam's rotation), the outward normal is
+ν = (e − σS′, s0 + S)/|A| and the pressure angle is α = atan2(σS′ − e, s0 + S). For the
+flat face the same computation with q = (σS′, r0 + S) and the normal (0, 1) gives
+ρ = r0 + S + S″.
+
+>>> from geomcad.kinematics.motion_laws import standard_program
+>>> prog = standard_program(0.04, math.pi)  # S = aφ, a = 40/π mm
+>>> div = at_angles(prog, Follower("flat", 0.04), [0.0, math.pi / 8], math.pi / 2)
+>>> [round(float(r) * 1000, 2) for r in div.radius]  # the seed's r_0, r_1 in mm
+[41.98, 46.77]
 """
 
 from __future__ import annotations
