@@ -21,9 +21,10 @@ published number depends on them):
 - without a return phase the profile is built over the span; with one (``phi_return_deg`` > 0)
   the program is completed by the lower dwell to a full turn and the closed profile is built;
 - ``law`` drives both the rise and the return;
-- for the knife-edge and roller followers r0 is still the cam's smallest radius (the working
-  profile's base circle); the roller's centre runs on the pitch curve, whose prime circle has the
-  radius r0 + r_roller; ``r`` lists the radius vectors of the working profile. ``e`` offsets the
+- r0 is the smallest radius of the theoretical profile (textbook «центровой профиль»): the
+  flat face's (the seed's r_Omin, the cam's smallest radius), the knife's tip path, the roller
+  centre's pitch curve; the roller's working profile then has the base circle r0 − r_roller.
+  ``r`` lists the radius vectors of the working profile (what is cut). ``e`` offsets the
   follower's axis (for the flat face it moves the stem only: the profile does not change);
 - the velocity plan is drawn for ω = 1 rad/s at a division point where |S′| is largest, the
   middle one among equals (the seed's φ_2 = 45°).
@@ -65,7 +66,7 @@ SEED_K_L = 0.0005
 PARAMS = (
     Param("H", 0.04, "stroke of the follower on the rise", "m", gt=0.0),
     Param("phi_rise_deg", 180.0, "rise angle φ_у", "deg", gt=0.0, le=360.0),
-    Param("r0", 0.04, "the cam's smallest radius (base circle of the profile)", "m", gt=0.0),
+    Param("r0", 0.04, "base circle radius of the theoretical profile", "m", gt=0.0),
     Param("n_div", 4, "number of equal intervals of the span", "1", integer=True, ge=1, le=360),
     Param(
         "span_fraction",
@@ -157,7 +158,7 @@ def build(p: Mapping[str, ParamValue]) -> Build:
 
     c = Construction(f"2013-2: cam profile by inversion ({law} law, {kind} follower)")
     centre = c.point("O", (0.0, 0.0), note="the cam's centre of rotation")
-    c.circle("base", centre, r0, role="given", r_name="r0", note="the cam's smallest radius")
+    c.circle("base", centre, r0, role="given", r_name="r0", note="the theoretical profile's")
     a = c.value("a", H / rise, "H / φ_rise (S′ of the linear law)")
     what = "the full turn" if closed else f"φ = 0 … {to_deg(span):.6g}°"
     prof = c.run(

@@ -97,7 +97,11 @@ def _profile_view(d: Drawing, sol: Solution, k: Scale) -> None:
     at = ((VIEW[0] + VIEW[2]) / 2.0, (VIEW[1] + 6.0 + VIEW[3]) / 2.0)
     v = d.viewport(k, ((x0 + x1) / 2.0, (y0 + y1) / 2.0), at)
     o = Vec(0.0, 0.0)
-    v.circle(o, f.r0, "construction")
+    # the theoretical profile's base circle r0 (for a roller its prime circle, dash-dot, and the
+    # working profile's base circle r0 − r_roller)
+    v.circle(o, f.r0, "centre" if f.kind == "roller" else "construction")
+    if f.kind == "roller":
+        v.circle(o, f.base_radius, "construction")
     v.centre_cross(o, 6.0)
     over = k.model(FACE_OVER)
     n = len(div.phi)
@@ -223,7 +227,7 @@ def _scheme(d: Drawing, sol: Solution) -> None:
     v = d.viewport(kl, (min(xs), (max(ys) + min(ys)) / 2.0), (left, (y0 + y1) / 2.0))
     o = Vec(0.0, 0.0)
     # the cam: its built profile and the base circle, turned to φ
-    v.circle(o, f.r0, "construction")
+    v.circle(o, f.base_radius, "construction")
     v.polyline(list(cam), "link", closed=geo.closed)
     Bp, C, B = plan.B_prime, plan.C, plan.B
     away = -1.0 if Bp.x >= 0.0 else 1.0
@@ -290,7 +294,8 @@ def _scheme(d: Drawing, sol: Solution) -> None:
         3.5,
     )
     d.text(
-        f"{kl.label()} (M {kl.ratio_text()});  ΔOBB' подобен плану pb_1b_2, OB' = BC = S'",
+        f"{kl.label()} (M {kl.ratio_text()});  ΔOBB' подобен плану pb_1b_2, "
+        + ("OB' = BC = S'" if f.kind == "flat" else "OB' = S'"),
         (x0, y0 - 2.5),
         2.5,
     )

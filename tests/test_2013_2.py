@@ -196,12 +196,13 @@ def test_roller_radius_vectors_are_the_offset_profile() -> None:
     phi = np.array(r["phi"])
     rise, dwell, ret = (math.radians(x) for x in (120, 60, 120))
     S, S1, _ = _full_turn("poly345", 0.04, rise, dwell, ret, phi)
-    s0 = math.sqrt((0.04 + r_r) ** 2 - e**2)
+    s0 = math.sqrt(0.04**2 - e**2)
     q = np.stack([np.full_like(phi, e), s0 + S], axis=1)
     nu = np.stack([e - S1, s0 + S], axis=1)
     nu /= np.linalg.norm(nu, axis=1)[:, None]
     np.testing.assert_allclose(r["r"], np.linalg.norm(q - r_r * nu, axis=1), rtol=1e-12)
-    assert min(r["r"]) == pytest.approx(0.04, rel=1e-12)  # r0 is the cam's smallest radius
+    # the working profile's base circle is r0 − r_roller (r0 is the pitch curve's)
+    assert min(r["r"]) == pytest.approx(0.04 - r_r, rel=1e-12)
     assert r["rho_min"] > 0
 
 
@@ -243,11 +244,16 @@ BAD = [
     ({"follower": "roller"}, ParameterError, r"r_roller = 0\.0: a roller follower needs"),
     ({"follower": "knife", "e": 0.05}, ParameterError, r"parameter e = 0\.05: .*\|e\| < r0"),
     (
-        {"follower": "roller", "r_roller": 0.03, "law": "harmonic", "r0": 0.02,
-         "phi_rise_deg": 57.29577951308232, "phi_return_deg": 57.29577951308232},
+        {"follower": "roller", "r_roller": 0.039},
         ConstructionError,
         r'step "profile = inner offset of the pitch curve by r_roller .*": the roller radius '
-        r"r_roller = 0\.03 m is not smaller than the pitch curve's smallest radius of curvature",
+        r"r_roller = 0\.039 m is not smaller than the pitch curve's smallest radius of curvature "
+        r"ρ = 0\.03844",
+    ),
+    (
+        {"follower": "roller", "r_roller": 0.05},
+        ConstructionError,
+        r"r_roller = 0\.05 m is not smaller than r0 = 0\.04 m",
     ),
     (
         {"law": "linear", "phi_return_deg": 180.0},
@@ -286,8 +292,7 @@ CLI_BAD = [
     (["phi_rise_deg=0"], "parameter phi_rise_deg = 0.0: must be > 0"),
     (["r0=0"], "parameter r0 = 0.0: must be > 0"),
     (["law=spline"], "law = 'spline': must be one of"),
-    (["follower=roller", "r_roller=0.03", "law=harmonic", "phi_rise_deg=60",
-      "phi_return_deg=60", "r0=0.02"],
+    (["follower=roller", "r_roller=0.039"],
      'step "profile = inner offset of the pitch curve by r_roller'),
     (["phi_return_deg=180"], 'step "profile = envelope of the face lines'),
     (["n_div=abc"], "n_div = 'abc': must be a whole number"),

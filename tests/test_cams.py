@@ -347,22 +347,23 @@ def test_base_circle_too_small_for_the_flat_face_is_a_cusp() -> None:
 
 def test_roller_larger_than_the_pitch_curvature_is_undercut() -> None:
     """A harmonic rise straight into a return gives the pitch curve a nose of radius
-    ρ = y²/(y − S″), y = r0 + r_r + H, S″ = −π²H/(2Φ²): a roller larger than that undercuts."""
+    ρ = y²/(y − S″), y = r0 + H, S″ = −π²H/(2Φ²): a roller larger than that undercuts."""
     prog = standard_program(H, 1.0, "harmonic", 0.0, 1.0)
-    s2 = -(math.pi**2) * H / 2
-
-    def nose(r_r: float) -> float:
-        y = 0.02 + r_r + H
-        return y * y / (y - s2)
-
-    ok = cam_profile(prog, Follower("roller", 0.02, 0.0, 0.02), closed=True)
-    assert nose(0.02) > 0.02
-    assert float(np.min(ok.rho_pitch[ok.rho_pitch > 0])) == pytest.approx(nose(0.02), rel=1e-9)
-    assert nose(0.03) < 0.03
+    y = 0.02 + H
+    nose = y * y / (y + math.pi**2 * H / 2)
+    ok = cam_profile(prog, Follower("roller", 0.02, 0.0, 0.9 * nose), closed=True)
+    assert float(np.min(ok.rho_pitch[ok.rho_pitch > 0])) == pytest.approx(nose, rel=1e-9)
+    assert rho_min(prog, ok) == pytest.approx(0.1 * nose, rel=1e-6)
     with pytest.raises(ConstructionError, match="undercut") as info:
-        cam_profile(prog, Follower("roller", 0.02, 0.0, 0.03), closed=True)
+        cam_profile(prog, Follower("roller", 0.02, 0.0, 1.1 * nose), closed=True)
     assert info.value.step.startswith("profile = inner offset of the pitch curve")
-    assert f"ρ = {nose(0.03):.6g} m (at φ = 57.2958°)" in str(info.value)
+    assert f"ρ = {nose:.6g} m (at φ = 57.2958°)" in str(info.value)
+
+
+def test_roller_not_smaller_than_r0_undercuts_the_base_circle() -> None:
+    prog = standard_program(H, math.pi)
+    with pytest.raises(ConstructionError, match=r"r_roller = 0\.04 m is not smaller than r0"):
+        cam_profile(prog, Follower("roller", 0.04, 0.0, 0.04), 0.0, math.pi / 2)
 
 
 @pytest.mark.parametrize("kind", ["flat", "roller"])
@@ -383,7 +384,7 @@ def test_a_drop_of_s_prime_is_a_cusp_for_flat_and_roller(kind: str) -> None:
         (("wheel", 0.04), "follower"),
         (("roller", 0.04, 0.0, 0.0), "r_roller"),
         (("knife", 0.04, 0.04), "e"),
-        (("roller", 0.04, 0.05, 0.01), "e"),
+        (("roller", 0.04, 0.04, 0.01), "e"),
     ],
 )
 def test_bad_followers(args: tuple[object, ...], words: str) -> None:

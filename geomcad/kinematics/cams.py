@@ -5,7 +5,9 @@ counter-clockwise, −1 clockwise. The follower translates along +y; at φ = 0 t
 coincides with the fixed one. A point q of the fixed frame, seen from the cam at angle φ, is
 R(−σφ)·q: this is the *inversion* — the cam held still and the follower turned backwards.
 
-**Followers** (``r0`` is the cam's smallest radius, the base circle of its working profile):
+**Followers** (``r0`` is the smallest radius of the theoretical profile, the one the follower's
+reference point traces: the face for the flat follower, the tip for the knife, the roller's centre
+(the pitch curve) for the roller, as in the textbooks' «центровой профиль»):
 
 - ``flat``: a flat face perpendicular to the motion, at y = r0 + S. The profile is the envelope
   of the face lines. The velocity plan puts the contact point B a distance S′ along the face from
@@ -14,9 +16,10 @@ R(−σφ)·q: this is the *inversion* — the cam held still and the follower t
   be ≤ 0 the profile has a cusp (the base circle is too small for the law).
 - ``knife``: the tip q = (e, s0 + S) traces the profile, s0 = √(r0² − e²); ``e`` is the offset of
   the follower's axis from O.
-- ``roller``: the roller's centre q = (e, s0 + S) traces the pitch curve, s0 = √((r0 + r_r)² − e²);
-  the profile is the pitch curve's inner offset by r_r, taken exactly along its normals. Where
-  the pitch curve is convex with a radius of curvature ≤ r_r the offset has a cusp: undercut.
+- ``roller``: the roller's centre q = (e, s0 + S) traces the pitch curve, s0 = √(r0² − e²); the
+  working profile is the pitch curve's inner offset by r_r, taken exactly along its normals (its
+  base circle has the radius r0 − r_r). Where the pitch curve is convex with a radius of
+  curvature ≤ r_r the offset has a cusp: undercut.
 
 **Jumps.** Where S′ jumps (the linear law's ends) the profile has a corner: for the flat face a
 straight piece of the face line (|ΔS′| long) when S′ rises, for the roller an arc of the roller
@@ -98,26 +101,24 @@ class Follower:
             raise ParameterError("e", self.e, "must be a finite number")
         if self.kind == "roller" and not (math.isfinite(self.r_roller) and self.r_roller > 0.0):
             raise ParameterError("r_roller", self.r_roller, "a roller follower needs r_roller > 0")
-        if self.kind != "flat" and abs(self.e) >= self.prime_radius:
-            what = "r0" if self.kind == "knife" else "r0 + r_roller"
+        if self.kind != "flat" and abs(self.e) >= self.r0:
             raise ParameterError(
                 "e",
                 self.e,
-                f"the follower's axis must cut the {'base' if self.kind == 'knife' else 'prime'} "
-                f"circle: |e| < {what} = {self.prime_radius:.6g} m",
+                f"the follower's axis must cut the circle of radius r0: |e| < r0 = {self.r0:.6g} m",
             )
 
     @property
-    def prime_radius(self) -> float:
-        """The radius of the circle the follower's reference point keeps on the lower dwell."""
-        return self.r0 + (self.r_roller if self.kind == "roller" else 0.0)
-
-    @property
     def s0(self) -> float:
-        """The reference point's height on the lower dwell: √(prime radius² − e²) (flat: r0)."""
+        """The reference point's height on the lower dwell: √(r0² − e²) (flat: r0)."""
         if self.kind == "flat":
             return self.r0
-        return math.sqrt(self.prime_radius**2 - self.e**2)
+        return math.sqrt(self.r0**2 - self.e**2)
+
+    @property
+    def base_radius(self) -> float:
+        """The working profile's smallest radius on the lower dwell (r0; r0 − r_r for a roller)."""
+        return self.r0 - (self.r_roller if self.kind == "roller" else 0.0)
 
 
 @dataclass(frozen=True, eq=False)
@@ -427,6 +428,13 @@ def _check(
                 f"{need:.6g} m)",
             )
     elif f.kind == "roller":
+        if f.r_roller >= f.r0:
+            raise ConstructionError(
+                step,
+                f"the roller radius r_roller = {f.r_roller:.6g} m is not smaller than r0 = "
+                f"{f.r0:.6g} m, the pitch curve's radius (and radius of curvature) on the lower "
+                "dwell: the profile would be undercut down to the cam's centre",
+            )
         convex = smooth & (prof.rho_pitch > 0.0)
         v, at = _refined_min(program, prof, lambda p: p.rho_pitch, convex)
         if v <= f.r_roller:
