@@ -151,6 +151,27 @@ def erratum(value: float, note: str, printed: str) -> SeedValue:
     return SeedValue(value, "erratum", 0.0, printed, note)
 
 
+#: A seed entry: one value, or a list result's values item by item (radius vectors at the
+#: division points …), each with its own class.
+SeedEntry = SeedValue | tuple[SeedValue, ...]
+
+
+def _seed_items(name: str, entry: SeedEntry) -> list[tuple[str, int | None, SeedValue]]:
+    """The entry's values with their report names: ``name``, or ``name.INDEX`` for a list."""
+    if isinstance(entry, SeedValue):
+        return [(name, None, entry)]
+    return [(f"{name}.{i}", i, v) for i, v in enumerate(entry)]
+
+
+def _exact_item(results: Mapping[str, Any], name: str, index: int | None) -> object:
+    value = results.get(name)
+    if index is None:
+        return value
+    if isinstance(value, list | tuple) and index < len(value):
+        return value[index]
+    return None
+
+
 @dataclass(frozen=True)
 class ResultSpec:
     """What a result means, for reports and for ``verify``.
@@ -184,7 +205,7 @@ class Problem:
     title: str
     params: tuple[Param, ...]
     results: tuple[ResultSpec, ...]
-    seed: Mapping[str, SeedValue]
+    seed: Mapping[str, SeedEntry]
     build: Callable[[Mapping[str, ParamValue]], Build]
     draw: Callable[[Solution], Sequence[tuple[str, Sheet]]]
     seed_k_l: float | None = None
@@ -254,19 +275,27 @@ class Solution:
         return self.params == self.problem.defaults
 
     @property
-    def seed(self) -> dict[str, float]:
-        """The seed's published values under the result names, in SI; empty for a variant."""
+    def seed(self) -> dict[str, Any]:
+        """The seed's published values under the result names, in SI (a list for a list
+        result); empty for a variant."""
         if not self.is_seed:
             return {}
-        return {k: v.value for k, v in self.problem.seed.items()}
+        return {
+            k: v.value if isinstance(v, SeedValue) else [x.value for x in v]
+            for k, v in self.problem.seed.items()
+        }
 
     @property
-    def diff(self) -> dict[str, float]:
-        """exact − seed for every published value; empty for a variant."""
-        out: dict[str, float] = {}
+    def diff(self) -> dict[str, Any]:
+        """exact − seed for every published value (a list for a list result); empty for a
+        variant."""
+        out: dict[str, Any] = {}
         for k, v in self.seed.items():
             exact = self.results.get(k)
-            if isinstance(exact, int | float):
+            if isinstance(v, list):
+                if isinstance(exact, list) and len(exact) >= len(v):
+                    out[k] = [float(e) - s for e, s in zip(exact, v, strict=False)]
+            elif isinstance(exact, int | float):
                 out[k] = float(exact) - v
         return out
 
@@ -275,31 +304,35 @@ class Solution:
         """The construction's notes, plus every seed erratum when the seed's data are used."""
         notes = list(self._notes)
         if self.is_seed:
-            for k, v in self.problem.seed.items():
-                if v.kind == "erratum":
-                    notes.append(f"erratum {k}: the seed prints {v.printed}; {v.note}")
+            for k, entry in self.problem.seed.items():
+                for name, _, v in _seed_items(k, entry):
+                    if v.kind == "erratum":
+                        notes.append(f"erratum {name}: the seed prints {v.printed}; {v.note}")
         return notes
 
     def seed_report(self) -> list[dict[str, Any]]:
         """Per seed value: exact, published, difference, class, tolerance, agreement."""
         rows = []
-        for k, v in self.problem.seed.items():
-            exact = self.results.get(k)
-            if not isinstance(exact, int | float):
-                continue
-            rows.append(
-                {
-                    "name": k,
-                    "exact": float(exact),
-                    "seed": v.value,
-                    "diff": float(exact) - v.value,
-                    "class": v.kind,
-                    "tol": v.tol,
-                    "agrees": v.agrees(float(exact)),
-                    "printed": v.printed,
-                }
-            )
+        for k, entry in self.problem.seed.items():
+            for name, index, v in _seed_items(k, entry):
+                exact = _exact_item(self.results, k, index)
+                if not isinstance(exact, int | float):
+                    continue
+                rows.append(self._seed_row(name, float(exact), v))
         return rows
+
+    @staticmethod
+    def _seed_row(name: str, exact: float, v: SeedValue) -> dict[str, Any]:
+        return {
+            "name": name,
+            "exact": exact,
+            "seed": v.value,
+            "diff": exact - v.value,
+            "class": v.kind,
+            "tol": v.tol,
+            "agrees": v.agrees(exact),
+            "printed": v.printed,
+        }
 
     def to_json(self) -> dict[str, Any]:
         """The ``solve --json`` object of the interface."""

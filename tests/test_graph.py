@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import itertools
 import math
 
 import pytest
@@ -50,3 +51,39 @@ def test_graph_places_data_at_scale() -> None:
     g.curve([0.0, 1.0, 2.0], [0.0, 0.05, 0.02])
     with pytest.raises(ValueError, match="not finite"):
         g.curve([0.0, 1.0], [0.0, math.inf])
+
+
+def test_ordinate_runs_from_the_axis_to_the_point_and_is_labelled() -> None:
+    d = start("A4", TitleBlock(title="t", designation="x"), landscape=False)
+    g = Graph(d, Axis.fit("φ", "рад", 0.0, 3.0, 120.0), Axis.fit("S", "м", 0, 0.04, 40), (40, 150))
+    n = len(d.sheet.items)
+    g.ordinate(1.5, 0.02, "3")
+    line = d.sheet.items[n]
+    assert line.points == (g.p(1.5, 0.0), g.p(1.5, 0.02))  # type: ignore[attr-defined]
+    g.ordinate(0.0, 0.0, "0")  # a point on the axis: no line, only its number
+    assert len(d.sheet.items) == n + 1
+    sheet = d.finish()
+    assert {t.text for t in sheet.texts()} >= {"3", "0"}
+
+
+def test_table_without_a_header_has_only_thin_rules() -> None:
+    d = start("A4", TitleBlock(title="t", designation="x"), landscape=False)
+    n = len(d.sheet.items)
+    d.table(30.0, 30.0, (10.0, 10.0), [["a", "1"], ["b", "2"]], header=False)
+    assert all(it.role != "frame" for it in d.sheet.items[n:])
+    d.table(30.0, 60.0, (10.0, 10.0), [["a", "1"], ["b", "2"]])
+    assert any(it.role == "frame" for it in d.sheet.items[n:])
+
+
+def test_x_tick_values_never_run_into_each_other() -> None:
+    d = start("A4", TitleBlock(title="t", designation="x"), landscape=False)
+    n = len(d.sheet.items)
+    g = Graph(
+        d, Axis.fit("φ", "рад", 0.0, 0.0877, 180.0), Axis.fit("S", "м", 0, 2.0, 40), (30, 150)
+    )
+    g.axes()
+    values = [it for it in d.sheet.items[n:] if getattr(it, "text", "").startswith("0,")]
+    values = [t for t in values if abs(t.at[1] - (150 + 1.5 + 2.5 + 0.8)) < 1e-9]
+    assert len(values) >= 3
+    for a, b in itertools.pairwise(values):
+        assert a.at[0] + a.width + 1.0 <= b.at[0] + 1e-9

@@ -110,10 +110,12 @@ class Drawing:
         rows: Sequence[Sequence[str]],
         height: float = 2.5,
         row_h: float = 6.0,
+        header: bool = True,
     ) -> tuple[float, float]:
         """A ruled table with its top-left corner at (x, y); returns its (width, height).
 
-        The first row is the header (ruled off with a main line); numbers align left in cells.
+        The first row is the header (ruled off with a main line), unless ``header`` is False;
+        numbers align left in cells.
         """
         total_w = sum(widths)
         total_h = row_h * len(rows)
@@ -127,7 +129,8 @@ class Drawing:
         )
         for i in range(1, len(rows)):
             yy = y + i * row_h
-            s.add(Polyline(((x, yy), (x + total_w, yy)), "frame" if i == 1 else "frame_thin"))
+            thick = i == 1 and header
+            s.add(Polyline(((x, yy), (x + total_w, yy)), "frame" if thick else "frame_thin"))
         xx = x
         for w in widths[:-1]:
             xx += w

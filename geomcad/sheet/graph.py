@@ -24,10 +24,13 @@ from geomcad.sheet.drawing import DOT_R, Drawing, _arrow, _head
 from geomcad.sheet.model import XY, CircleItem, Polyline
 from geomcad.sheet.scale import NICE, fmt_number
 from geomcad.sheet.style import fit_open, style
+from geomcad.sheet.text import box, parse
 
 #: Ticks are spaced at least this far apart on the paper (mm).
 TICK_MIN_MM = 8.0
 TICK_LEN = 1.5
+#: Tick values along the x axis keep at least this gap between them (mm).
+TICK_GAP_MM = 1.0
 ARROW_OVER = 7.0  # the axis runs this far past the last value (mm), ending in an arrow
 HATCH_STEP_MM = 2.0
 
@@ -139,12 +142,16 @@ class Graph:
         s = self.d.sheet
         _arrow(s, (x0 - 2.0 if x0 < ax else ax, ay), (x1 + ARROW_OVER, ay), "vector")
         _arrow(s, (ax, y1 + 2.0 if y1 > ay else ay), (ax, y0 - ARROW_OVER), "vector")
+        right_of_last = -math.inf  # the right edge of the last x value written
         for v in self.x.ticks():
             px, _ = self.p(v, self.y.zero)
             s.add(Polyline(((px, ay), (px, ay + TICK_LEN)), "dimension"))
-            if tick_labels and v != self.x.zero:
-                self.d.text(fmt_number(v, lang, 4), (px, ay + TICK_LEN + height + 0.8), height,
-                            anchor="centre")  # fmt: skip
+            text = fmt_number(v, lang, 4)
+            half = box(parse(text), height)[0] / 2.0
+            # a value that would run into the one before it is left out (its tick stays)
+            if tick_labels and v != self.x.zero and px - half >= right_of_last + TICK_GAP_MM:
+                self.d.text(text, (px, ay + TICK_LEN + height + 0.8), height, anchor="centre")
+                right_of_last = px + half
         for v in self.y.ticks():
             _, py = self.p(self.x.zero, v)
             s.add(Polyline(((ax - TICK_LEN, py), (ax, py)), "dimension"))
@@ -211,3 +218,21 @@ class Graph:
         if markup:
             mid = (a[0], (a[1] + b[1]) / 2.0)
             self.d.label(mid, markup, height, prefer=(1.0, 0.0), clear=0.5)
+
+    def ordinate(
+        self,
+        x: float,
+        y: float,
+        markup: str = "",
+        role: str = "construction",
+        height: float = 2.5,
+    ) -> None:
+        """The ordinate of a data point: a thin line from the x axis to (x, y), and an optional
+        label (a division point's number) placed by the point, above it where there is room."""
+        foot = self.p(x, self.y.zero)
+        top = self.p(x, y)
+        if math.dist(foot, top) > 0.0:
+            self.d.sheet.add(Polyline((foot, top), role))
+        if markup:
+            up = -1.0 if y >= self.y.zero else 1.0
+            self.d.label(top, markup, height, prefer=(0.0, up), clear=DOT_R)

@@ -1,0 +1,343 @@
+"""2013-2 · Cam profile for S = a·φ ("cam profile radii").
+
+A disc cam turns about O at constant ω and drives a translating follower with a flat face
+perpendicular to its motion. The stroke on the rise angle φ_у = 180° is H = 40 mm, the cam's
+smallest radius r0 = 40 mm, the law S = aφ. The seed builds the profile on the first half of the
+rise (φ = 0 … 90°, four intervals of π/8) by inversion and draws it at 2:1.
+
+The seed's argument: in the mechanism's velocity plan Bb₁b₂ (V_B2 = V_B1 + V_B2B1, V_B2 along
+the motion, V_B2B1 along the face), turned by 90°, is similar to the triangle OBB′ with the ratio
+ω, so the contact point B lies S′ = dS/dφ along the face from the line through O along the motion:
+r = √((r0 + S)² + S′²). For S = aφ, S′ = a = H/φ_у, and the envelope of the face lines is an
+involute of the circle of radius a.
+
+Frame (problems.md): O is the origin, the follower moves along +y, at φ = 0 the cam's frame is
+the fixed one; ``omega_sign`` +1 turns the cam counter-clockwise. Choices settled here (no
+published number depends on them):
+
+- the division points φ_i = i·span/n_div, span = span_fraction·(φ_rise + φ_dwell + φ_return);
+  each takes the value of the phase that starts there (at φ = 0: S′ = a, the seed's r_0), the
+  last one the value of the phase that ends there;
+- without a return phase the profile is built over the span; with one (``phi_return_deg`` > 0)
+  the program is completed by the lower dwell to a full turn and the closed profile is built;
+- ``law`` drives both the rise and the return;
+- r0 is the smallest radius of the theoretical profile (textbook «центровой профиль»): the
+  flat face's (the seed's r_Omin, the cam's smallest radius), the knife's tip path, the roller
+  centre's pitch curve; the roller's working profile then has the base circle r0 − r_roller.
+  ``r`` lists the radius vectors of the working profile (what is cut). ``e`` offsets the
+  follower's axis (for the flat face it moves the stem only: the profile does not change);
+- the velocity plan is drawn for ω = 1 rad/s at a division point where |S′| is largest, the
+  middle one among equals (the seed's φ_2 = 45°).
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from geomcad import tol
+from geomcad.construction import Construction
+from geomcad.errors import ParameterError
+from geomcad.geom import Vec
+from geomcad.kinematics.cams import (
+    CamProfile,
+    Follower,
+    VelocityPlan,
+    at_angles,
+    cam_profile,
+    pressure_angle_max,
+    profile_step_name,
+    rho_min,
+    velocity_plan,
+)
+from geomcad.kinematics.motion_laws import LAWS, CamProgram, standard_program
+from geomcad.problem import Build, Param, ParamValue, Problem, ResultSpec, SeedValue, rounded
+from geomcad.sheet.scale import gost_length_scale
+from geomcad.units import MM, deg, to_deg
+
+ID = "2013-2"
+#: The seed's profile drawing: 2:1, k_l = 0.0005 m/mm.
+SEED_K_L = 0.0005
+
+PARAMS = (
+    Param("H", 0.04, "stroke of the follower on the rise", "m", gt=0.0),
+    Param("phi_rise_deg", 180.0, "rise angle φ_у", "deg", gt=0.0, le=360.0),
+    Param("r0", 0.04, "base circle radius of the theoretical profile", "m", gt=0.0),
+    Param("n_div", 4, "number of equal intervals of the span", "1", integer=True, ge=1, le=360),
+    Param(
+        "span_fraction",
+        0.5,
+        "part of the program (rise + dwell + return) the division points cover",
+        "1",
+        gt=0.0,
+        le=1.0,
+    ),
+    Param("omega_sign", 1, "+1: the cam turns counter-clockwise, −1: clockwise", integer=True),
+    Param("phi_dwell_deg", 0.0, "outer dwell after the rise", "deg", ge=0.0, lt=360.0),
+    Param("phi_return_deg", 0.0, "return angle (0: no return phase)", "deg", ge=0.0, lt=360.0),
+    Param("law", "linear", "the follower's motion law (rise and return)", choices=LAWS),
+    Param("follower", "flat", "the follower", choices=("flat", "knife", "roller")),
+    Param("e", 0.0, "offset of the follower's axis from O", "m"),
+    Param("r_roller", 0.0, "roller radius (roller follower)", "m", ge=0.0),
+)
+
+RESULTS = (
+    ResultSpec("phi", "rad", "cam angles φ_i of the division points"),
+    ResultSpec("S", "m", "follower displacement S_i at the division points", "l"),
+    ResultSpec("r", "m", "radius vectors r_i of the profile at the division points", "l"),
+    ResultSpec("a", "m", "H/φ_rise (= S′ of the linear law)", "l"),
+    ResultSpec("pressure_angle_max_deg", "deg", "largest pressure angle along the profile"),
+    ResultSpec("rho_min", "m", "smallest radius of curvature of the profile", "l"),
+    ResultSpec("profile", "m", "profile points [x, y] in the cam's frame"),
+)
+
+_R_PRINTED = ("41,98", "46,77", "51,6", "56,45", "61,34")
+SEED: dict[str, SeedValue | tuple[SeedValue, ...]] = {
+    "a": rounded(12.73, 2, "S′ = a = 40/π = 12,73 мм", MM),
+    "r": tuple(
+        rounded(float(t.replace(",", ".")), len(t.split(",")[1]), f"r_{i} = {t} мм", MM)
+        for i, t in enumerate(_R_PRINTED)
+    ),
+}
+
+NOTES = [
+    "seed notation: it calls the similar triangle OBB′ but writes its sides as Bb and Ob in "
+    "b₂b₁/Bb = Bb₂/Ob = Bb₁/OB = ω (b is B′: the foot of B on the line through O across the "
+    "motion), and C, in BC = Ob = S′, is where the face crosses the follower's axis; the "
+    "figure is lost, no number is affected",
+]
+
+
+@dataclass(frozen=True)
+class Geometry:
+    """Everything the sheet needs besides the recorded steps."""
+
+    program: CamProgram
+    follower: Follower
+    profile: CamProfile
+    divisions: CamProfile
+    span: float
+    closed: bool
+    plan: VelocityPlan
+    plan_index: int
+    extent: tuple[float, float, float, float]
+
+
+def _check(p: Mapping[str, ParamValue]) -> None:
+    sigma = int(p["omega_sign"])
+    if sigma not in (1, -1):
+        raise ParameterError("omega_sign", p["omega_sign"], "must be +1 or −1")
+    total = float(p["phi_rise_deg"]) + float(p["phi_dwell_deg"]) + float(p["phi_return_deg"])
+    if total > 360.0:
+        raise ParameterError(
+            "phi_return_deg" if float(p["phi_return_deg"]) > 0.0 else "phi_dwell_deg",
+            p["phi_return_deg"] if float(p["phi_return_deg"]) > 0.0 else p["phi_dwell_deg"],
+            f"rise + dwell + return = {total:g}° is more than a full turn (360°)",
+        )
+    if p["follower"] == "roller" and not float(p["r_roller"]) > 0.0:
+        raise ParameterError("r_roller", p["r_roller"], "a roller follower needs r_roller > 0")
+
+
+def build(p: Mapping[str, ParamValue]) -> Build:
+    """The profile by inversion, its division points, radius vectors and the velocity plan."""
+    _check(p)
+    H, r0 = float(p["H"]), float(p["r0"])
+    rise, dwell, ret = (deg(float(p[n])) for n in ("phi_rise_deg", "phi_dwell_deg",
+                                                   "phi_return_deg"))  # fmt: skip
+    n_div, sigma = int(p["n_div"]), int(p["omega_sign"])
+    law, kind = str(p["law"]), str(p["follower"])
+    e, r_r = float(p["e"]), float(p["r_roller"]) if p["follower"] == "roller" else 0.0
+    f = Follower(kind, r0, e, r_r, sigma)
+    program = standard_program(H, rise, law, dwell, ret)
+    closed = ret > 0.0
+    span = float(p["span_fraction"]) * (rise + dwell + ret)
+
+    c = Construction(f"2013-2: cam profile by inversion ({law} law, {kind} follower)")
+    centre = c.point("O", (0.0, 0.0), note="the cam's centre of rotation")
+    c.circle("base", centre, r0, role="given", r_name="r0", note="the theoretical profile's")
+    a = c.value("a", H / rise, "H / φ_rise (S′ of the linear law)")
+    what = "the full turn" if closed else f"φ = 0 … {to_deg(span):.6g}°"
+    prof = c.run(
+        "profile",
+        f"{profile_step_name(kind).split(' = ', 1)[1]}, over {what}",
+        lambda: cam_profile(program, f, 0.0, span, closed),
+        role="result",
+    )
+    phis = np.linspace(0.0, span, n_div + 1)
+    div = at_angles(program, f, phis, span)
+    _record_divisions(c, f, div)
+    k = _plan_index(div.S1)
+    plan = velocity_plan(program, f, float(div.phi[k]))
+    _record_plan(c, plan, k)
+
+    r = [float(x) for x in div.radius]
+    results: dict[str, Any] = {
+        "phi": [float(x) for x in div.phi],
+        "S": [float(x) for x in div.S],
+        "r": r,
+        "a": a,
+        "pressure_angle_max_deg": to_deg(pressure_angle_max(program, prof)),
+        "rho_min": c.value("ρ_min", rho_min(program, prof), "smallest |ρ| of the profile"),
+        "profile": _points(prof),
+    }
+    notes = list(NOTES) + _jump_notes(prof, program, f)
+    box = _extent(prof, div, f)
+    geo = Geometry(program, f, prof, div, span, closed, plan, k, box)
+    seed_data = all(p[q.name] == q.default for q in PARAMS)
+    return Build(results, c, notes, {"l": sheet_k_l(box, seed_data)}, geo)
+
+
+def _plan_index(S1: np.ndarray) -> int:
+    """The division point the velocity plan is drawn at: one where |S′| is largest (so that the
+    triangle OBB′ does not degenerate), the one nearest the middle among equals."""
+    mag = np.abs(S1)
+    top = float(mag.max())
+    mid = (len(S1) - 1) // 2
+    best = [i for i in range(len(S1)) if mag[i] >= top * (1.0 - tol.DERIVED)]
+    return min(best, key=lambda i: (abs(i - mid), i))
+
+
+def _record_divisions(c: Construction, f: Follower, div: CamProfile) -> None:
+    """Per division point: the follower turned back by φ_i, its face (or tip) and B_i, r_i."""
+    centre = c["O"]
+    for i in range(len(div.phi)):
+        phi = float(div.phi[i])
+        c.value(f"φ_{i}", phi, f"division point {i}")
+        c.value(f"S_{i}", float(div.S[i]), f"S(φ_{i})")
+        c.value(f"S′_{i}", float(div.S1[i]), f"dS/dφ at φ_{i}")
+        turn = -f.sigma * phi
+        up = Vec(0.0, 1.0).rotated(turn)
+        # the flat face is built from the line through O along the motion (the stem's offset
+        # does not change the profile); a knife's or roller's axis is offset by e
+        foot = Vec(0.0 if f.kind == "flat" else f.e, 0.0).rotated(turn)
+        axis = c.line(f"axis_{i}", foot, up, f"the follower's axis turned back by φ_{i}")
+        C = c.point(
+            f"C_{i}",
+            Vec(*div.pitch[i]),
+            role="construction",
+            op=f"on axis_{i} at {'r0 + S' if f.kind == 'flat' else 's0 + S'}_{i}",
+        )
+        if f.kind == "flat":
+            c.perpendicular(f"face_{i}", axis, C, note="the face, ⊥ the motion")
+            op = f"on face_{i} at S′_{i} from C_{i} (the velocity plan)"
+        elif f.kind == "roller":
+            op = f"circle(C_{i}, r_roller) touching the profile along its normal"
+        else:
+            op = f"the knife's tip C_{i}"
+        B = c.point(f"B_{i}", Vec(*div.contact[i]), role="result", op=op)
+        c.value(f"r_{i}", B.dist(centre), f"|OB_{i}|", (centre, B))
+
+
+def _record_plan(c: Construction, plan: VelocityPlan, k: int) -> None:
+    """The velocity plan at division point k (fixed frame, ω = 1 rad/s)."""
+    B = c.point("B", plan.B, role="construction", op=f"the contact point at φ_{k}, fixed frame")
+    c.point("b1", B + plan.V_B1, role="construction", op="B + V_B1, V_B1 = ω × OB")
+    c.point("b2", B + plan.V_B2, role="construction", op="B + V_B2, V_B2 along the motion")
+    c.point(
+        "B′", plan.B_prime, role="construction", op="normal at B ∩ line through O across motion"
+    )
+    c.value("OB′", plan.B_prime.norm, "|OB′| = S′ (the similar triangle OBB′)")
+
+
+def _points(prof: CamProfile) -> list[list[float]]:
+    """The profile as [x, y] pairs, consecutive duplicates dropped."""
+    pts = prof.contact
+    keep = np.ones(len(pts), dtype=bool)
+    keep[1:] = np.any(pts[1:] != pts[:-1], axis=1)
+    return [[float(x), float(y)] for x, y in pts[keep]]
+
+
+def _jump_notes(prof: CamProfile, program: CamProgram, f: Follower) -> list[str]:
+    """What happens where S′ jumps inside the built profile (the linear law's ends)."""
+    out: list[str] = []
+    corner = prof.corner
+    if not np.any(corner):
+        return out
+    starts = [i for i in range(len(corner)) if corner[i] and (i == 0 or not corner[i - 1])]
+    for i in starts:
+        j = i
+        while j < len(corner) and corner[j]:
+            j += 1
+        at = to_deg(float(prof.phi[i]))
+        d0 = float(prof.S1[i - 1]) if i > 0 else 0.0
+        d1 = float(prof.S1[j]) if j < len(corner) else 0.0
+        head = (
+            f"at φ = {at:.6g}°, S′ jumps from {d0 * 1000:.6g} to {d1 * 1000:.6g} mm, so S″ is "
+            "infinite there (a rigid impact)"
+        )
+        if f.kind == "flat":
+            p0 = prof.contact[i - 1] if i > 0 else prof.contact[0]
+            p1 = prof.contact[j] if j < len(corner) else prof.contact[-1]
+            r1 = math.hypot(*p1)
+            out.append(
+                f"{head}: the contact point moves {abs(d1 - d0) * 1000:.6g} mm along the face in "
+                f"no time, so the profile has a straight piece of the face line there, from "
+                f"({p0[0] * 1000:.4g}; {p0[1] * 1000:.4g}) to ({p1[0] * 1000:.4g}; "
+                f"{p1[1] * 1000:.4g}) mm; the radius vector at its end is {r1 * 1000:.6g} mm"
+                + (
+                    f" (the seed's r_0 = 41.98 mm), not the base radius r0 = {f.r0 * 1000:g} mm"
+                    if at == 0.0 and d0 == 0.0
+                    else ""
+                )
+                + (
+                    "; from there on the profile is the involute of the circle of radius a"
+                    if program.phases[0].law == "linear" and at == 0.0
+                    else ""
+                )
+            )
+        elif f.kind == "roller":
+            out.append(
+                f"{head}: the roller rests in a corner of the pitch curve while the cam turns "
+                f"on, so the profile has an arc of the roller circle (radius "
+                f"{f.r_roller * 1000:g} mm) there"
+            )
+        else:
+            out.append(f"{head}: the profile has a sharp corner there (the knife's path bends)")
+    return out
+
+
+#: The field the profile is drawn in on the sheet (mm: x0, y0, x1, y1).
+VIEW = (24.0, 24.0, 252.0, 200.0)
+#: Paper margin (mm) the face lines and labels take beyond the profile.
+VIEW_PAD = 6.0
+
+
+def sheet_k_l(box: tuple[float, float, float, float], seed_data: bool) -> float:
+    """k_l of the profile view: the seed's 2:1 (0.0005 m/mm) for its data when it fits; else the
+    largest GOST 2.302 scale at which the profile fits the field."""
+    w, h = box[2] - box[0], box[3] - box[1]
+    room_w, room_h = VIEW[2] - VIEW[0] - 2 * VIEW_PAD, VIEW[3] - VIEW[1] - 2 * VIEW_PAD
+    if seed_data and w / SEED_K_L <= room_w and h / SEED_K_L <= room_h:
+        return SEED_K_L
+    return gost_length_scale(max(w * room_h / room_w, h), room_h).k
+
+
+def _extent(prof: CamProfile, div: CamProfile, f: Follower) -> tuple[float, float, float, float]:
+    """The model box the profile view draws: the base circle, the profile, the division points."""
+    pts = np.vstack([prof.contact, div.pitch, div.contact, prof.pitch])
+    ext = f.r_roller if f.kind == "roller" else 0.0
+    xs = [float(pts[:, 0].min()) - ext, float(pts[:, 0].max()) + ext, -f.r0, f.r0]
+    ys = [float(pts[:, 1].min()) - ext, float(pts[:, 1].max()) + ext, -f.r0, f.r0]
+    return min(xs), min(ys), max(xs), max(ys)
+
+
+def draw(solution: Any) -> list[tuple[str, Any]]:
+    from .sheets_2013_2 import sheets
+
+    return sheets(solution)
+
+
+PROBLEM = Problem(
+    id=ID,
+    title="Cam profile for S = a·φ, translating flat-faced follower (radius vectors by inversion)",
+    params=PARAMS,
+    results=RESULTS,
+    seed=SEED,
+    build=build,
+    draw=draw,
+    seed_k_l=SEED_K_L,
+)
