@@ -22,6 +22,7 @@ import numpy as np
 from geomcad import tol
 from geomcad.geom import Arc, Circle, Vec
 from geomcad.kinematics.gears import SpurGear
+from geomcad.problem import SeedValue
 from geomcad.sheet import (
     Drawing,
     Polyline,
@@ -336,7 +337,8 @@ def _panel(d: Drawing, sol: Solution, k: Scale) -> None:
         if name == "x" and abs(exact) < tol.DERIVED:
             exact = 0.0  # a shift of 10^-16 is no shift
         pub = seed.get(name)
-        mark = " *" if name in sol.problem.seed and sol.problem.seed[name].kind == "erratum" else ""
+        sv = sol.problem.seed.get(name)
+        mark = " *" if isinstance(sv, SeedValue) and sv.kind == "erratum" else ""
         rows.append(
             [
                 label,

@@ -19,6 +19,7 @@ import math
 from typing import TYPE_CHECKING, Any
 
 from geomcad.geom import Vec
+from geomcad.problem import SeedValue
 from geomcad.sheet import (
     Drawing,
     Polyline,
@@ -380,7 +381,8 @@ def _panel(d: Drawing, sol: Solution) -> None:
         if name == "u1H2" and den != 1:
             text += f" = {num}/{den}"
         pub = seed.get(name)
-        bad = name in sol.problem.seed and sol.problem.seed[name].kind == "erratum"
+        sv = sol.problem.seed.get(name)
+        bad = isinstance(sv, SeedValue) and sv.kind == "erratum"
         rows.append(
             [
                 label,
