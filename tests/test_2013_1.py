@@ -8,7 +8,7 @@ import math
 import numpy as np
 import pytest
 from geomcad_constructions.p2013_1 import pusher_speed_ratio, slot_path_point
-from test_sheet import inside, item_box, overlapping_texts, text_box
+from layout import inside, item_box, overlapping_texts, text_box
 
 import geomcad
 from geomcad.cli import main

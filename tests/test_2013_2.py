@@ -11,12 +11,12 @@ import sys
 
 import numpy as np
 import pytest
+from layout import layout_problems
 
 import geomcad
 from geomcad.errors import ConstructionError, ParameterError
-from geomcad.sheet.model import CircleItem, Polyline, Sheet, TextItem
+from geomcad.sheet.model import Polyline, Sheet
 from geomcad.sheet.scale import Scale
-from geomcad.sheet.text import box
 
 PID = "2013-2"
 MM = 1e-3
@@ -321,46 +321,9 @@ def test_errors_are_value_errors_and_name_the_step() -> None:
 
 # -- the sheet ------------------------------------------------------------------------------------
 
-A3_FRAME = (20.0, 5.0, 415.0, 292.0)
-A3_BLOCK = (230.0, 237.0, 415.0, 292.0)
-
-
-def _text_box(t: TextItem) -> tuple[float, float, float, float]:
-    w, up, down = box(t.runs, t.height)
-    return (t.at[0], t.at[1] - up, t.at[0] + w, t.at[1] + down)
-
-
-def _item_box(it: object) -> tuple[float, float, float, float]:
-    if isinstance(it, TextItem):
-        return _text_box(it)
-    if isinstance(it, Polyline):
-        xs, ys = zip(*it.points, strict=True)
-        return (min(xs), min(ys), max(xs), max(ys))
-    if isinstance(it, CircleItem):
-        return (it.c[0] - it.r, it.c[1] - it.r, it.c[0] + it.r, it.c[1] + it.r)
-    c, r = it.c, it.r  # type: ignore[attr-defined]
-    return (c[0] - r, c[1] - r, c[0] + r, c[1] + r)
-
-
-def _overlap(a: tuple[float, ...], b: tuple[float, ...]) -> bool:
-    return a[0] < b[2] and b[0] < a[2] and a[1] < b[3] and b[1] < a[3]
-
 
 def _check_layout(sheet: Sheet) -> None:
-    problems = []
-    texts = sheet.texts()
-    for a, b in itertools.combinations(texts, 2):
-        if _overlap(_text_box(a), _text_box(b)):
-            problems.append(f"overlap {a.text!r} × {b.text!r}")
-    first = next(i for i, it in enumerate(sheet.items) if it.role not in ("frame", "frame_thin",
-                                                                          "title"))  # fmt: skip
-    for it in sheet.items[first:]:
-        b = _item_box(it)
-        if not (A3_FRAME[0] <= b[0] and A3_FRAME[1] <= b[1] and b[2] <= A3_FRAME[2]
-                and b[3] <= A3_FRAME[3]):  # fmt: skip
-            problems.append(f"outside the frame: {it}")
-        if _overlap(b, A3_BLOCK):
-            problems.append(f"on the title block: {type(it).__name__} {it.role} {b}")
+    problems = layout_problems(sheet)
     assert not problems, "\n".join(problems[:20])
 
 

@@ -212,27 +212,9 @@ LAYOUT_VARIANTS = [
 def test_sheet_layout(params: dict[str, float]) -> None:
     """No text on another, everything inside the frame and off the title block, the tooth view
     left of the tables, and the scale in the title block."""
-    from test_sheet import (
-        A3_BLOCK,
-        A3_FRAME,
-        block_part,
-        inside,
-        item_box,
-        overlap,
-        overlapping_texts,
-    )
+    from layout import layout_problems
 
     sol = geomcad.solve("2013-4", **params)
     ((_, sheet),) = sol.sheets()
-    problems = [f"overlap: {o}" for o in overlapping_texts(sheet.texts())]
-    _, drawn = block_part(sheet)
-    for it in drawn:
-        b = item_box(it)
-        what = f"{type(it).__name__} {it.role} {getattr(it, 'text', '')!r} {b}"
-        if not inside(b, A3_FRAME):
-            problems.append(f"outside the frame: {what}")
-        if overlap(b, A3_BLOCK):
-            problems.append(f"on the title block: {what}")
-        if it.role not in ("frame", "frame_thin", "title", "label") and b[2] >= 256.0:
-            problems.append(f"the tooth view reaches the tables: {what}")
+    problems = layout_problems(sheet, drawing_right=256.0)
     assert not problems, "\n".join(problems)

@@ -197,29 +197,11 @@ def test_the_sheet_has_the_scheme_the_plan_and_the_angle_diagram() -> None:
 def test_sheet_layout(params: dict[str, float]) -> None:
     """No text on another, everything inside the frame and off the title block, the scheme and
     the plans left of the tables."""
-    from test_sheet import (
-        A3_BLOCK,
-        A3_FRAME,
-        block_part,
-        inside,
-        item_box,
-        overlap,
-        overlapping_texts,
-    )
+    from layout import layout_problems
 
     sol = geomcad.solve("2013-5", **params)
     ((_, sheet),) = sol.sheets()
-    problems = [f"overlap: {o}" for o in overlapping_texts(sheet.texts())]
-    _, drawn = block_part(sheet)
-    for it in drawn:
-        b = item_box(it)
-        what = f"{type(it).__name__} {it.role} {getattr(it, 'text', '')!r} {b}"
-        if not inside(b, A3_FRAME):
-            problems.append(f"outside the frame: {what}")
-        if overlap(b, A3_BLOCK):
-            problems.append(f"on the title block: {what}")
-        if it.role not in ("frame", "frame_thin", "title", "label") and b[2] >= 260.0:
-            problems.append(f"the drawing reaches the tables: {what}")
+    problems = layout_problems(sheet, drawing_right=260.0)
     assert not problems, "\n".join(problems)
 
 

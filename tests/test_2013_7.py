@@ -13,6 +13,7 @@ import numpy as np
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
+from layout import layout_problems
 from scipy.optimize import brentq
 
 import geomcad
@@ -21,8 +22,7 @@ from geomcad.errors import ConstructionError, NoIntersection, ParameterError
 from geomcad.forces import moment
 from geomcad.geom import Line, Vec
 from geomcad.sheet import Scale
-from geomcad.sheet.model import CircleItem, Polyline, Sheet, TextItem
-from geomcad.sheet.text import box
+from geomcad.sheet.model import CircleItem, Polyline, Sheet
 
 PID = "2013-7"
 REL = 1e-9
@@ -484,49 +484,10 @@ def test_verify_the_seeds_readings(capsys: pytest.CaptureFixture[str]) -> None:
 
 # -- the sheet ---------------------------------------------------------------------------------
 
-A3_FRAME = (20.0, 5.0, 415.0, 292.0)
-A3_BLOCK = (230.0, 237.0, 415.0, 292.0)
-
-
-def _box(it: Any) -> tuple[float, float, float, float]:
-    if isinstance(it, TextItem):
-        w, up, down = box(it.runs, it.height)
-        return (it.at[0], it.at[1] - up, it.at[0] + w, it.at[1] + down)
-    if isinstance(it, Polyline):
-        xs, ys = [q[0] for q in it.points], [q[1] for q in it.points]
-        return (min(xs), min(ys), max(xs), max(ys))
-    if isinstance(it, CircleItem):
-        return (it.c[0] - it.r, it.c[1] - it.r, it.c[0] + it.r, it.c[1] + it.r)
-    return (it.c[0] - it.r, it.c[1] - it.r, it.c[0] + it.r, it.c[1] + it.r)  # an arc's circle
-
-
-def _overlap(a: tuple[float, ...], b: tuple[float, ...]) -> bool:
-    return a[0] < b[2] and b[0] < a[2] and a[1] < b[3] and b[1] < a[3]
-
-
-def _inside(a: tuple[float, ...], b: tuple[float, ...]) -> bool:
-    return (
-        a[0] >= b[0] - 1e-9 and a[1] >= b[1] - 1e-9 and a[2] <= b[2] + 1e-9 and a[3] <= b[3] + 1e-9
-    )
-
 
 def check_layout(sheet: Sheet) -> None:
     """No two texts overlap; everything drawn lies inside the frame and off the title block."""
-    n = next(
-        i for i, it in enumerate(sheet.items) if it.role not in ("frame", "frame_thin", "title")
-    )
-    drawn = sheet.items[n:]
-    problems = []
-    texts = sheet.texts()
-    for a, b in itertools.combinations(texts, 2):
-        if _overlap(_box(a), _box(b)):
-            problems.append(f"overlap: {a.text!r} × {b.text!r}")
-    for it in drawn:
-        bx = _box(it)
-        if not _inside(bx, A3_FRAME):
-            problems.append(f"outside the frame: {type(it).__name__} {it.role} {bx}")
-        if _overlap(bx, A3_BLOCK):
-            problems.append(f"on the title block: {type(it).__name__} {it.role} {bx}")
+    problems = layout_problems(sheet)
     assert not problems, "\n".join(problems)
 
 

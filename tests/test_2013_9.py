@@ -8,7 +8,7 @@ import math
 
 import numpy as np
 import pytest
-from dyn_sheets import labels, layout_problems
+from layout import labels, layout_problems
 from scipy.integrate import solve_ivp
 
 import geomcad

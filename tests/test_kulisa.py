@@ -7,7 +7,7 @@ from __future__ import annotations
 import math
 
 import pytest
-from dyn_sheets import labels, layout_problems
+from layout import labels, layout_problems
 
 import geomcad
 from geomcad.cli import main

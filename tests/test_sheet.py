@@ -5,24 +5,31 @@ labels, everything inside the frame, for the seed's data and for other variants.
 from __future__ import annotations
 
 import dataclasses
-import itertools
 import math
-from collections.abc import Iterable
 from fractions import Fraction
 
 import pytest
 from hypothesis import assume, given, settings
 from hypothesis import strategies as st
+from layout import (
+    A3_BLOCK,
+    A3_FRAME,
+    Box,
+    block_part,
+    inside,
+    item_box,
+    overlap,
+    overlapping_texts,
+    text_box,
+)
 
 import geomcad
 from geomcad.errors import ParameterError
 from geomcad.sheet import TitleBlock, new_sheet, paper
-from geomcad.sheet.model import CircleItem, Item, Polyline, Run, Sheet, TextItem
+from geomcad.sheet.model import CircleItem, Polyline, Run, Sheet, TextItem
 from geomcad.sheet.scale import NICE, Scale, fmt_number, gost_length_scale, nice_factor
 from geomcad.sheet.style import LineType, fit_centre_line, fit_closed, fit_open
 from geomcad.sheet.text import HEIGHTS, box, font_path, metrics, parse, width
-
-Box = tuple[float, float, float, float]  # x0, y0 (top), x1, y1 (bottom), sheet mm
 
 #: GOST 2.302 ratios paper : nature, written out here independently of the library's table.
 GOST_2302 = sorted(
@@ -39,68 +46,11 @@ DASH_RANGE: dict[LineType, tuple[float, float]] = {
 }
 BROKEN: tuple[LineType, ...] = ("dashed", "dashdot", "twodot")
 
-# A3 landscape: the frame 20 mm from the left edge, 5 mm from the others; the title block.
-A3_FRAME: Box = (20.0, 5.0, 415.0, 292.0)
-A3_BLOCK: Box = (415.0 - 185.0, 292.0 - 55.0, 415.0, 292.0)
 #: The right-hand tables of 2013-6 start at x = 262; the mechanism view must stay left of this.
 VIEW_RIGHT = 258.0
 
 
 # -- helpers ---------------------------------------------------------------------------------------
-
-
-def text_box(t: TextItem) -> Box:
-    w, up, down = box(t.runs, t.height)
-    return (t.at[0], t.at[1] - up, t.at[0] + w, t.at[1] + down)
-
-
-def item_box(it: Item) -> Box:
-    """The paper extent of an item (an arc sampled along its sweep)."""
-    if isinstance(it, TextItem):
-        return text_box(it)
-    if isinstance(it, Polyline):
-        xs = [p[0] for p in it.points]
-        ys = [p[1] for p in it.points]
-    elif isinstance(it, CircleItem):
-        xs = [it.c[0] - it.r, it.c[0] + it.r]
-        ys = [it.c[1] - it.r, it.c[1] + it.r]
-    else:
-        # y is down on paper: a clockwise sweep (> 0) is an increasing atan2 angle
-        a0 = math.atan2(it.start[1] - it.c[1], it.start[0] - it.c[0])
-        ts = [a0 + it.sweep * i / 400 for i in range(401)]
-        xs = [it.c[0] + it.r * math.cos(t) for t in ts]
-        ys = [it.c[1] + it.r * math.sin(t) for t in ts]
-    return (min(xs), min(ys), max(xs), max(ys))
-
-
-def overlap(a: Box, b: Box) -> bool:
-    return a[0] < b[2] and b[0] < a[2] and a[1] < b[3] and b[1] < a[3]
-
-
-def inside(a: Box, outer: Box, tol: float = 1e-9) -> bool:
-    return (
-        a[0] >= outer[0] - tol
-        and a[1] >= outer[1] - tol
-        and a[2] <= outer[2] + tol
-        and a[3] <= outer[3] + tol
-    )
-
-
-def overlapping_texts(texts: Iterable[TextItem]) -> list[str]:
-    boxes = [(t, text_box(t)) for t in texts]
-    return [
-        f"{a.text!r} {ba} × {b.text!r} {bb}"
-        for (a, ba), (b, bb) in itertools.combinations(boxes, 2)
-        if overlap(ba, bb)
-    ]
-
-
-def block_part(sheet: Sheet) -> tuple[list[Item], list[Item]]:
-    """(the frame and title block, everything drawn after them): new_sheet draws those first."""
-    n = next(
-        i for i, it in enumerate(sheet.items) if it.role not in ("frame", "frame_thin", "title")
-    )
-    return sheet.items[:n], sheet.items[n:]
 
 
 def sheet_2013_6(**params: float) -> Sheet:
