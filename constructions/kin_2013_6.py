@@ -46,8 +46,12 @@ class Analysis:
     s_min: float  # the path coordinate of the left extreme
 
 
-def analyse(m: SixBar, phi1: float, omega1: float) -> Analysis:
-    """The plans at φ1 and the diagrams over a turn for six-bar ``m``."""
+def analyse(
+    m: SixBar, phi1: float, omega1: float, extremes: tuple[float, float] | None = None
+) -> Analysis:
+    """The plans at φ1 and the diagrams over a turn for six-bar ``m``; ``extremes`` are the
+    crank angles of the slider's extreme positions when the caller has them already (else they
+    are found by :meth:`SixBar.stroke_and_k`)."""
     c = Construction(f"2013-6: kinematic analysis at φ1 = {math.degrees(phi1):.6g}°")
     O1 = c.point("O1", m.O1, note="crank pivot")
     O2 = c.point("O2", m.O2, note="rocker pivot")
@@ -120,15 +124,10 @@ def analyse(m: SixBar, phi1: float, omega1: float) -> Analysis:
     phi = np.linspace(0.0, 2.0 * math.pi, DIAGRAM_SAMPLES)
     r = m.sweep(phi, omega1)
     s = np.asarray(r.s, dtype=np.float64)
-    s_min = float(_extreme_min(m))
+    if extremes is None:
+        extremes = m.stroke_and_k()[2:]
+    s_min = float(np.min(m.slider_s(np.array(extremes))))
     acc = m.slider_a(phi, omega1)
     return Analysis(
         c, vp, ap, phi1, omega1, (w2, w3, w4), (e2, e3, e4), phi, s - s_min, r.v, acc, s_min
     )
-
-
-def _extreme_min(m: SixBar) -> float:
-    """The slider's path coordinate at its left (smallest-coordinate) extreme position."""
-    _, _, phi_min, phi_max = m.stroke_and_k()
-    s = m.slider_s(np.array([phi_min, phi_max]))
-    return float(np.min(s))

@@ -87,7 +87,6 @@ PLAN_VIEW = (236.0, 24.0, 410.0, 150.0)
 class Geometry:
     """What the sheet needs besides the recorded steps."""
 
-    alpha: float
     v_A: float
     M: float
     plan: Plan
@@ -167,7 +166,7 @@ def build(p: Mapping[str, ParamValue]) -> Build:
     box = _extent(c, l_ab)
     k_l = _k_l(box)
     k_v = plan_scale(vp, PLAN_VIEW[2] - PLAN_VIEW[0], PLAN_VIEW[3] - PLAN_VIEW[1] - 10.0).k
-    geo = Geometry(alpha, v_a, m, vp, box)
+    geo = Geometry(v_a, m, vp, box)
     return Build(results, c, [], {"l": k_l, "v": k_v}, geo)
 
 

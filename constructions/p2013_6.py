@@ -292,7 +292,7 @@ def build(p: Mapping[str, ParamValue]) -> Build:
             "dead centres"
         )
     box = _extent(c, cands, l3, l4)
-    analysis = analyse(mech, phi_min + ANALYSIS_TURN, ANALYSIS_OMEGA1)
+    analysis = analyse(mech, phi_min + ANALYSIS_TURN, ANALYSIS_OMEGA1, (phi_min, phi_max))
     geo = Geometry(
         H, K, l3, l4, e, theta, tuple(cands), chosen, mech, phi_min, phi_max, box, analysis
     )

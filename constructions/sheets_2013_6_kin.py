@@ -103,17 +103,12 @@ def _diagrams(d: Any, an: Analysis, m: Any) -> None:
     room = GRAPH_X[1] - GRAPH_X[0]
     x_axis = Axis.fit("φ", "рад", 0.0, 2.0 * math.pi, room)
     g_dir = m.guide_d.unit()
-    plan_values = (
-        None,
-        an.vp["c"].dot(g_dir),
-        an.ap["c"].dot(g_dir),
-    )
     phi1 = an.phi1 % (2.0 * math.pi)
     s_at = float(np.interp(phi1, an.phi, an.s))
     curves = (
-        ("s", "S", "м", an.s, s_at),
-        ("v", "V_C", "м/с", an.v, plan_values[1]),
-        ("a", "a_C", "м/с²", an.a, plan_values[2]),
+        ("S", "м", an.s, s_at, ""),
+        ("V_C", "м/с", an.v, an.vp["c"].dot(g_dir), "по плану"),
+        ("a_C", "м/с²", an.a, an.ap["c"].dot(g_dir), "по плану"),
     )
     d.text(
         "Диаграммы перемещения, скорости и ускорения ползуна за оборот кривошипа "
@@ -121,9 +116,8 @@ def _diagrams(d: Any, an: Analysis, m: Any) -> None:
         (GRAPH_X[0] - 16.0, GRAPH_ROWS[0][0] - 1.0),
         3.5,
     )
-    for (name, sym, unit, ys, at_phi1), (top, bottom) in zip(curves, GRAPH_ROWS, strict=True):
-        lo, hi = float(np.min(ys)), float(np.max(ys))
-        lo, hi = min(lo, 0.0), max(hi, 0.0)
+    for (sym, unit, ys, at_phi1, mark), (top, bottom) in zip(curves, GRAPH_ROWS, strict=True):
+        lo, hi = min(float(np.min(ys)), 0.0), max(float(np.max(ys)), 0.0)
         y_axis = Axis.fit(sym, unit, lo, hi, bottom - top - 14.0, name=sym.split("_")[0])
         zero_y = top + 10.0 + y_axis.mm(y_axis.hi)
         g = Graph(d, x_axis, y_axis, (GRAPH_X[0], zero_y))
@@ -131,10 +125,8 @@ def _diagrams(d: Any, an: Analysis, m: Any) -> None:
         g.curve(an.phi, ys, "result")
         x1, _ = g.p(phi1, 0.0)
         d.sheet.add(Polyline(((x1, top + 8.0), (x1, bottom)), "construction"))
-        if at_phi1 is not None:
-            g.point(phi1, float(at_phi1), "по плану" if name != "s" else "")
+        g.point(phi1, float(at_phi1), mark)
         g.factors((GRAPH_X[1] - 90.0, top + 6.0))
-        del name
 
 
 def _panel(d: Any, an: Analysis, m: Any, kv: float, ka: float) -> None:

@@ -30,8 +30,6 @@ remembers what to draw: the construction lines (:attr:`Plan.lines`) and the vect
 
 from __future__ import annotations
 
-import math
-from collections.abc import Sequence
 from dataclasses import dataclass, field
 from typing import Literal
 
@@ -134,7 +132,7 @@ class Plan:
         """A relative velocity (acceleration): the plan vector from ``tail`` to ``head``."""
         return self[head] - self[tail]
 
-    def _add(self, point: str, value: Vec, op: str, inputs: Sequence[object] = ()) -> Vec:
+    def _add(self, point: str, value: Vec, op: str) -> Vec:
         name = self.name(point)
         v = self.c.point(name, value, role="construction", op=op)
         self.points[name] = v
@@ -268,8 +266,3 @@ def normal(omega: float, B: Vec, A: Vec, head: str, label: str, meaning: str) ->
 def coriolis(omega: float, v_rel: Vec, head: str, label: str, meaning: str) -> Term:
     """The Coriolis acceleration 2ω × V_rel: V_rel turned 90° in the sense of ω, times 2|ω|."""
     return Term(Vec(-v_rel.y, v_rel.x) * (2.0 * omega), head, label, meaning)
-
-
-def angle_of(v: Vec) -> float:
-    """The direction of a plan vector in degrees, [0, 360)."""
-    return math.degrees(math.atan2(v.y, v.x)) % 360.0
