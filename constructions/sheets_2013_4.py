@@ -323,16 +323,15 @@ def _panel(d: Drawing, sol: Solution, k: Scale) -> None:
     d.text("Результаты", (x, y + 3.5), 3.5)
     seed = sol.seed
     rows = [["Величина", "Точно", "Опубликовано", "Разность"]]
-    for name, label, unit, scale in (
-        ("d", "d, мм", 1, MM),
-        ("d_b", "d_b, мм", 1, MM),
-        ("d_y", "d_y, мм", 1, MM),
-        ("psi_y", "ψ_y, рад", 1, 1.0),
-        ("alpha_y_deg", "α_y, °", 1, 1.0),
-        ("s", "s, мм", 1, MM),
-        ("x", "x", 1, 1.0),
+    for name, label, scale in (
+        ("d", "d, мм", MM),
+        ("d_b", "d_b, мм", MM),
+        ("d_y", "d_y, мм", MM),
+        ("psi_y", "ψ_y, рад", 1.0),
+        ("alpha_y_deg", "α_y, °", 1.0),
+        ("s", "s, мм", MM),
+        ("x", "x", 1.0),
     ):
-        del unit
         exact = float(r[name]) * scale
         if name == "x" and abs(exact) < tol.DERIVED:
             exact = 0.0  # a shift of 10^-16 is no shift
