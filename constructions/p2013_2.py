@@ -56,7 +56,7 @@ from geomcad.kinematics.cams import (
 )
 from geomcad.kinematics.motion_laws import LAWS, CamProgram, standard_program
 from geomcad.problem import Build, Param, ParamValue, Problem, ResultSpec, SeedValue, rounded
-from geomcad.sheet.scale import gost_length_scale
+from geomcad.sheet.scale import gost_scale_to_fit
 from geomcad.units import MM, deg, to_deg
 
 ID = "2013-2"
@@ -313,7 +313,7 @@ def sheet_k_l(box: tuple[float, float, float, float], seed_data: bool) -> float:
     room_w, room_h = VIEW[2] - VIEW[0] - 2 * VIEW_PAD, VIEW[3] - VIEW[1] - 2 * VIEW_PAD
     if seed_data and w / SEED_K_L <= room_w and h / SEED_K_L <= room_h:
         return SEED_K_L
-    return gost_length_scale(max(w * room_h / room_w, h), room_h).k
+    return gost_scale_to_fit(w, h, room_w, room_h).k
 
 
 def _extent(prof: CamProfile, div: CamProfile, f: Follower) -> tuple[float, float, float, float]:

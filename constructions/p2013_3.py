@@ -37,7 +37,7 @@ from geomcad.geom import Vec
 from geomcad.kinematics.plan import Plan, Side, velocity_plan
 from geomcad.problem import Build, Param, ParamValue, Problem, ResultSpec, rounded
 from geomcad.sheet.plans import plan_scale
-from geomcad.sheet.scale import gost_length_scale
+from geomcad.sheet.scale import gost_scale_to_fit
 
 ID = "2013-3"
 
@@ -182,7 +182,7 @@ def _k_l(box: tuple[float, float, float, float]) -> float:
     """The largest GOST 2.302 scale at which the mechanism fills its field."""
     w, h = box[2] - box[0], box[3] - box[1]
     room_w, room_h = MECH_VIEW[2] - MECH_VIEW[0], MECH_VIEW[3] - MECH_VIEW[1]
-    return gost_length_scale(max(w * room_h / room_w, h), room_h).k
+    return gost_scale_to_fit(w, h, room_w, room_h).k
 
 
 def draw(solution: Any) -> list[tuple[str, Any]]:

@@ -49,7 +49,7 @@ from geomcad.problem import (
     erratum,
     rounded,
 )
-from geomcad.sheet.scale import gost_length_scale
+from geomcad.sheet.scale import gost_scale_to_fit
 from geomcad.units import MM, to_deg
 
 ID = "2013-4"
@@ -284,7 +284,7 @@ def sheet_k_l(box: tuple[float, float, float, float]) -> float:
     """The largest GOST 2.302 scale (enlargements included) at which the tooth view fits."""
     w, h = box[2] - box[0], box[3] - box[1]
     room_w, room_h = VIEW[2] - VIEW[0], VIEW[3] - VIEW[1]
-    return gost_length_scale(max(w * room_h / room_w, h), room_h).k
+    return gost_scale_to_fit(w, h, room_w, room_h).k
 
 
 def draw(solution: Any) -> list[tuple[str, Any]]:

@@ -45,7 +45,7 @@ from geomcad.problem import (
     measured_value,
     rounded,
 )
-from geomcad.sheet.scale import gost_length_scale
+from geomcad.sheet.scale import gost_scale_to_fit
 from geomcad.units import to_deg
 
 from .kin_2013_6 import Analysis, analyse
@@ -312,7 +312,7 @@ def sheet_k_l(box: tuple[float, float, float, float], seed_data: bool) -> float:
     room_w, room_h = VIEW[2] - VIEW[0], VIEW[3] - VIEW[1]
     if seed_data and w / SEED_K_L <= room_w and h / SEED_K_L <= room_h:
         return SEED_K_L
-    return gost_length_scale(max(w * room_h / room_w, h), room_h).k
+    return gost_scale_to_fit(w, h, room_w, room_h).k
 
 
 def _extent(

@@ -460,13 +460,13 @@ PLAN6_ROOM = (92.0, 72.0)
 def sheet_k_l(box: tuple[float, ...], seed_data: bool) -> float:
     """k_l of the sheet: the seed's 0.002 m/mm (1:2) for its data when the drawing fits,
     otherwise the largest GOST 2.302 scale at which it fits its field."""
-    from geomcad.sheet.scale import gost_length_scale
+    from geomcad.sheet.scale import gost_scale_to_fit
 
     w, h = box[2] - box[0], box[3] - box[1]
     room_w, room_h = MECH_ROOM
     if seed_data and w / SEED_K_L <= room_w and h / SEED_K_L <= room_h:
         return SEED_K_L
-    return gost_length_scale(max(w * room_h / room_w, h), room_h).k
+    return gost_scale_to_fit(w, h, room_w, room_h).k
 
 
 def plan_box(poly: ForcePolygon) -> tuple[float, float, float, float]:

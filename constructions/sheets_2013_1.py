@@ -18,7 +18,7 @@ from typing import TYPE_CHECKING
 
 from geomcad.geom import Line, Vec
 from geomcad.sheet import Drawing, Scale, Sheet, TitleBlock, Viewport, fmt_number, start
-from geomcad.sheet.scale import gost_length_scale, nice_factor
+from geomcad.sheet.scale import gost_scale_to_fit, nice_factor
 from geomcad.sheet.scheme import Body, draw_scheme
 from geomcad.structure import Link, Mechanism, Pair
 
@@ -53,7 +53,7 @@ def _box(points: list[Vec], pad: float = 0.0) -> tuple[float, float, float, floa
 def _fit(box: tuple[float, float, float, float], field: tuple[float, ...]) -> Scale:
     w, h = box[2] - box[0], box[3] - box[1]
     room_w, room_h = field[2] - field[0], field[3] - field[1]
-    return gost_length_scale(max(w * room_h / room_w, h), room_h)
+    return gost_scale_to_fit(w, h, room_w, room_h)
 
 
 def _lid_end(pts: dict[str, Vec]) -> Vec:
@@ -232,7 +232,7 @@ def _groups(d: Drawing, geo: Geometry) -> None:
     room_h = GROUPS[3] - GROUPS[1] - CAPTION * len(parts)
     widest = max(b[2] - b[0] for b in boxes)
     total = sum(b[3] - b[1] for b in boxes)
-    k = gost_length_scale(max(widest * room_h / room_w, total), room_h)
+    k = gost_scale_to_fit(widest, total, room_w, room_h)
     d.text(f"{k.label()}   (M {k.ratio_text() or '—'})", (GROUPS[0], 19.0), 3.5)
     spare = (room_h - total / k.k) / len(parts)
     y0 = GROUPS[1]

@@ -26,7 +26,7 @@ from geomcad.sheet import (
     TitleBlock,
     Viewport,
     fmt_number,
-    gost_length_scale,
+    gost_scale_to_fit,
     nice_factor,
     start,
 )
@@ -221,7 +221,7 @@ def _scheme(d: Drawing, sol: Solution) -> None:
         xs = [*cam[:, 0], -f.r0, f.r0, -width, width]
         ys = [*cam[:, 1], -f.r0, h + stem]
         w_m, h_m = max(xs) - min(xs), max(ys) - min(ys)
-        kl = gost_length_scale(max(w_m * room_h / room_w, h_m), room_h)
+        kl = gost_scale_to_fit(w_m, h_m, room_w, room_h)
         stem = max(0.25 * f.r0, kl.model(STEM_MM))
     left = x0 + 2.0 + (room_w - kl.mm(w_m)) / 2.0
     v = d.viewport(kl, (min(xs), (max(ys) + min(ys)) / 2.0), (left, (y0 + y1) / 2.0))

@@ -33,7 +33,7 @@ from geomcad.sheet import (
     TitleBlock,
     Viewport,
     fmt_number,
-    gost_length_scale,
+    gost_scale_to_fit,
     start,
 )
 from geomcad.sheet.text import SUB_DROP, SUB_SCALE, SUP_RISE, metrics, run_size
@@ -93,7 +93,7 @@ def _inset(d: Drawing, c: Any, gear: SpurGear, geo: Any) -> None:
     x_hi = max(K.x, 0.0) + 0.1 * gear.r_a
     y_hi = 1.08 * gear.r_a
     w_room, h_room = INSET[2] - INSET[0], INSET[3] - INSET[1] - 10.0
-    ki = gost_length_scale(max((x_hi - x_lo) * h_room / w_room, y_hi + 0.06 * gear.r_a), h_room)
+    ki = gost_scale_to_fit(x_hi - x_lo, y_hi + 0.06 * gear.r_a, w_room, h_room)
     v = d.viewport(
         ki,
         ((x_lo + x_hi) / 2.0, y_hi / 2.0),

@@ -14,7 +14,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from geomcad.sheet import Sheet, TitleBlock, Viewport, fmt_number, gost_length_scale, start
+from geomcad.sheet import Sheet, TitleBlock, Viewport, fmt_number, gost_scale_to_fit, start
 from geomcad.sheet.graph import Axis, Graph
 from geomcad.sheet.model import Polyline
 from geomcad.sheet.plans import draw_plan, plan_scale
@@ -42,7 +42,7 @@ def kinematics_sheet(sol: Solution) -> tuple[str, Sheet]:
     pad = 0.25 * m.l3
     w, h = max(xs) - min(xs) + 2 * pad, max(ys) - min(ys) + 2 * pad
     room_w, room_h = MECH_VIEW[2] - MECH_VIEW[0], MECH_VIEW[3] - MECH_VIEW[1] - 10.0
-    k = gost_length_scale(max(w * room_h / room_w, h), room_h)
+    k = gost_scale_to_fit(w, h, room_w, room_h)
     kv = plan_scale(an.vp, VPLAN_VIEW[2] - VPLAN_VIEW[0], VPLAN_VIEW[3] - VPLAN_VIEW[1] - 14.0)
     ka = plan_scale(an.ap, APLAN_VIEW[2] - APLAN_VIEW[0], APLAN_VIEW[3] - APLAN_VIEW[1] - 14.0)
     tb = TitleBlock(

@@ -18,7 +18,7 @@ from geomcad.geom import Vec
 from geomcad.sheet import Drawing, Scale, Sheet, TitleBlock, Viewport, start
 from geomcad.sheet.graph import Axis, Graph
 from geomcad.sheet.loads import damper, ground, moment, spring
-from geomcad.sheet.scale import gost_length_scale
+from geomcad.sheet.scale import gost_scale_to_fit
 
 from .dyn_common import MIN_ARROW_MM, Where, draw_loads, f, small
 from .p2013_9 import ROD, Data
@@ -40,7 +40,7 @@ def k_l(r: float) -> Scale:
     """The largest GOST scale at which a view (the disc or the crosshead across, the support
     above to the disc's bottom) fits its room."""
     w, h = 2.0 * max(DISC, ROD.slot_half + ROD.frame) * r, (ROD.ground + DISC + 0.4) * r
-    return gost_length_scale(max(h, w * VIEW_ROOM[1] / VIEW_ROOM[0]), VIEW_ROOM[1])
+    return gost_scale_to_fit(w, h, VIEW_ROOM[0], VIEW_ROOM[1])
 
 
 def sheets(sol: Solution) -> list[tuple[str, Sheet]]:

@@ -23,7 +23,7 @@ from geomcad.geom import Vec
 from geomcad.sheet import Drawing, Scale, Sheet, TitleBlock, Viewport, start
 from geomcad.sheet.graph import Axis, Graph
 from geomcad.sheet.loads import force, ground, moment
-from geomcad.sheet.scale import gost_length_scale, nice_factor
+from geomcad.sheet.scale import gost_length_scale, gost_scale_to_fit, nice_factor
 
 from .dyn_common import MIN_ARROW_MM, Where, draw_loads, f, small
 from .p_kulisa import Data, sweep, turns
@@ -79,7 +79,7 @@ def _extent(sol: Solution, data: Data) -> tuple[float, float, float, float]:
 
 def _scale_for(box: tuple[float, float, float, float], room: tuple[float, float]) -> Scale:
     w, h = box[2] - box[0], box[3] - box[1]
-    return gost_length_scale(max(h, w * room[1] / room[0]), room[1])
+    return gost_scale_to_fit(w, h, room[0], room[1])
 
 
 def _flywheel(v: Viewport, sol: Solution, data: Data, pivot: bool = True) -> None:

@@ -563,3 +563,15 @@ def test_layout_check_can_fail(seed_sheet: Sheet) -> None:
     broken = Sheet(420.0, 297.0, "A3", "x", [*seed_sheet.items, stray])
     with pytest.raises(AssertionError, match="reaches the tables"):
         _check_layout(broken)
+
+
+@pytest.mark.parametrize(("w", "h"), [(0.6, 0.1), (0.1, 0.6), (0.3, 0.3), (0.002, 0.001)])
+def test_scale_to_fit_holds_both_directions(w: float, h: float) -> None:
+    from geomcad.sheet.scale import gost_scale_to_fit
+
+    k = gost_scale_to_fit(w, h, 200.0, 120.0)
+    assert w / k.k <= 200.0 + 1e-9 and h / k.k <= 120.0 + 1e-9
+    smaller = [g for g in GOST_2302 if g > k.ratio]  # the next larger drawing must not fit
+    if smaller:
+        g = float(min(smaller))
+        assert w * 1000.0 * g > 200.0 + 1e-9 or h * 1000.0 * g > 120.0 + 1e-9

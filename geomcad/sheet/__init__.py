@@ -4,7 +4,14 @@ line roles, labels, arrows, dimensions and kinematic symbols. No file I/O (see `
 from geomcad.sheet.drawing import Drawing, Viewport
 from geomcad.sheet.frame import FORMATS, Frame, TitleBlock, new_sheet, paper
 from geomcad.sheet.model import ArcItem, CircleItem, Dash, Item, Polyline, Run, Sheet, TextItem
-from geomcad.sheet.scale import Scale, ScaleStyle, fmt_number, gost_length_scale, nice_factor
+from geomcad.sheet.scale import (
+    Scale,
+    ScaleStyle,
+    fmt_number,
+    gost_length_scale,
+    gost_scale_to_fit,
+    nice_factor,
+)
 
 __all__ = [
     "FORMATS",
@@ -24,6 +31,7 @@ __all__ = [
     "Viewport",
     "fmt_number",
     "gost_length_scale",
+    "gost_scale_to_fit",
     "new_sheet",
     "nice_factor",
     "paper",

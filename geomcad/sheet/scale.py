@@ -130,6 +130,13 @@ def gost_length_scale(extent_m: float, room_mm: float) -> Scale:
     return Scale(float(Fraction(1, 1000) / fitting[-1]), "l")
 
 
+def gost_scale_to_fit(width_m: float, height_m: float, room_w_mm: float, room_h_mm: float) -> Scale:
+    """The largest GOST 2.302 scale at which a drawing ``width_m`` × ``height_m`` fits a field
+    ``room_w_mm`` × ``room_h_mm`` (both directions at once; errors as
+    :func:`gost_length_scale`)."""
+    return gost_length_scale(max(width_m * room_h_mm / room_w_mm, height_m), room_h_mm)
+
+
 def nice_factor(
     value_max: float, room_mm: float, q: Quantity, mantissas: tuple[float, ...] = NICE
 ) -> Scale:
