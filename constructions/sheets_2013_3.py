@@ -76,9 +76,11 @@ def _mechanism(v: Viewport, geo: Any, c: Any, sol: Solution) -> None:
     v.arrow(va_from, tip + Vec(0.0, v.scale.model(7.0)), "result")
     v.label(tip + Vec(0.0, v.scale.model(7.0)), "V_A", 3.5, prefer=(0.0, 1.0), clear=1.0)
     w3 = c["ω3"]
-    v.turn(O1, w3, math.degrees((C - O1).angle) + 20.0, "ω_3")
+    # each arrow keeps its 100° span whatever its sense: it starts at the span's far end
+    a3 = math.degrees((C - O1).angle) + 20.0
+    v.turn(O1, w3, a3 if w3 > 0 else a3 + 100.0, "ω_3")
     m_sense = -w3 * (1.0 if geo.M >= 0 else -1.0)  # M resists the motion when M > 0
-    v.turn(O2, m_sense, -60.0, "M")
+    v.turn(O2, m_sense, -60.0 if m_sense > 0 else 40.0, "M")
     # letters and link numbers
     v.label(O1, "O_1", prefer=(0.0, -1.0), clear=4.0)
     v.label(O2, "O_2", prefer=(1.0, -1.0), clear=4.0)

@@ -80,7 +80,8 @@ def _mechanism(v: Viewport, c: Any, m: Any, an: Analysis) -> None:
         v.joint(q)
     v.pivot(O1)
     v.pivot(O2)
-    v.turn(O1, an.omega1, math.degrees(an.phi1) + 25.0, "ω_1", r_mm=7.0, sweep_deg=90.0)
+    a1 = math.degrees(an.phi1) + 25.0  # ω1's arrow spans 90° just past the crank
+    v.turn(O1, an.omega1, a1 if an.omega1 > 0 else a1 + 90.0, "ω_1", r_mm=7.0, sweep_deg=90.0)
     for q, name, pref in (
         (O1, "O_1", (-1.0, -1.0)),
         (O2, "O_2", (1.0, -1.0)),

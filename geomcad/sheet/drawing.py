@@ -47,6 +47,8 @@ DIRECTIONS: tuple[tuple[float, float], ...] = (
     (1, -1), (-1, -1), (1, 1), (-1, 1), (1, 0), (-1, 0), (0, -1), (0, 1),
 )  # fmt: skip
 LABEL_PAD = 0.4
+#: A curved arrow's shaft stops this far (rad) short of its head's tip.
+TURN_HEAD_GAP = 0.35
 #: Baseline-to-baseline distance of wrapped text, in cap heights (GOST 2.304, type B: 17/10 h).
 LINE_SPACING = 1.7
 
@@ -426,23 +428,38 @@ class Viewport:
         r_mm: float = 9.0,
         sweep_deg: float = 100.0,
         role: str = "vector",
+        height: float = 3.5,
     ) -> None:
-        """A curved arrow about ``centre`` (an angular velocity, a moment): an arc of
-        ``sweep_deg`` from ``start_deg`` (model degrees, ccw from +x), its head at the end the
-        sense points to (``sense`` > 0: counter-clockwise), and an optional label outside it."""
-        c = vec(centre)
-        r = self.scale.model(r_mm)
+        """A curved arrow about ``centre`` (an angular velocity, a moment): an arc of ``r_mm``
+        from ``start_deg`` (model degrees, ccw from +x) over ``sweep_deg`` in the sense of
+        ``sense`` (> 0: counter-clockwise), its head at the far end (the shaft stops short of the
+        tip), and an optional label by the arc's middle. A zero ``sense`` draws nothing."""
+        if sense == 0.0:
+            return
+        cx, cy = self.p(centre)
+        s = 1.0 if sense > 0.0 else -1.0
+        sweep = math.radians(sweep_deg)
         a0 = math.radians(start_deg)
-        a1 = a0 + math.radians(sweep_deg)
-        self.arc(Arc(Circle(c, r), a0, a1), role)
-        tip_angle = a1 if sense > 0 else a0
-        s = 1.0 if sense > 0 else -1.0
-        cx, cy = self.p(c)
-        tip = (cx + r_mm * math.cos(tip_angle), cy - r_mm * math.sin(tip_angle))
-        _head(self.sheet, tip, (-math.sin(tip_angle) * s, -math.cos(tip_angle) * s), role)
+        a1 = a0 + s * sweep
+
+        def at(a: float) -> XY:
+            return (cx + r_mm * math.cos(a), cy - r_mm * math.sin(a))
+
+        self.sheet.add(
+            ArcItem(
+                (cx, cy),
+                r_mm,
+                at(a0),
+                at(a1 - s * TURN_HEAD_GAP),
+                -s * (sweep - TURN_HEAD_GAP),
+                role,
+            )
+        )
+        _head(self.sheet, at(a1), (-math.sin(a1) * s, -math.cos(a1) * s), role)
         if markup:
-            mid = (a0 + a1) / 2.0
-            self.label(c + vec((math.cos(mid), math.sin(mid))) * (r * 1.5), markup, 3.5, clear=0.5)
+            mid = a0 + s * sweep / 2.0
+            self.d.label(at(mid), markup, height, prefer=(math.cos(mid), -math.sin(mid)),
+                         clear=0.8, others=(at(a1), at(a0)))  # fmt: skip
 
     def arrow(self, a: PointLike, b: PointLike, role: str = "vector") -> None:
         """A vector from a to b with a filled arrowhead at b."""

@@ -10,9 +10,9 @@ from __future__ import annotations
 
 import math
 
-from geomcad.geom import PointLike, Vec, vec
-from geomcad.sheet.drawing import Viewport, _arrow, _head
-from geomcad.sheet.model import XY, ArcItem, Polyline
+from geomcad.geom import PointLike, Vec
+from geomcad.sheet.drawing import Viewport, _arrow
+from geomcad.sheet.model import XY, Polyline
 
 #: A moment arrow's sweep (rad) and the gap between its ends.
 MOMENT_SWEEP = math.radians(250.0)
@@ -65,25 +65,7 @@ def moment(
     """A moment ``M`` (N·m, counter-clockwise positive) about model point ``c``: an arc of radius
     ``r_mm`` from the model angle ``start`` with an arrowhead at its end in the moment's sense.
     A zero moment draws nothing."""
-    if M == 0.0:
-        return
-    cx, cy = v.p(vec(c))
-    s = 1.0 if M > 0.0 else -1.0
-    a0, a1 = start, start + s * MOMENT_SWEEP
-
-    def at(a: float) -> XY:
-        return (cx + r_mm * math.cos(a), cy - r_mm * math.sin(a))
-
-    # the head sits on the arc's end; its shaft stops short of the tip
-    v.sheet.add(
-        ArcItem((cx, cy), r_mm, at(a0), at(a1 - s * 0.35), -s * (MOMENT_SWEEP - 0.35), role)
-    )
-    tx, ty = -math.sin(a1) * s, -math.cos(a1) * s
-    _head(v.sheet, at(a1), (tx, ty), role)
-    if label:
-        mid = a0 + s * MOMENT_SWEEP / 2.0
-        v.d.label(at(mid), label, height, prefer=(math.cos(mid), -math.sin(mid)), clear=0.8,
-                  others=(at(a1), at(a0)))  # fmt: skip
+    v.turn(c, M, math.degrees(start), label, r_mm, math.degrees(MOMENT_SWEEP), role, height)
 
 
 def spring(v: Viewport, a: PointLike, b: PointLike, width_mm: float = 4.0, coils: int = 6) -> None:
