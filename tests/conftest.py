@@ -1,8 +1,19 @@
-"""Shared pytest options: ``--update-golden`` regenerates the golden sheets in ``tests/golden/``."""
+"""Shared pytest options: ``--update-golden`` regenerates the golden sheets in ``tests/golden/``.
+
+Hypothesis runs derandomized, so CI and a developer's machine try the same examples: a failure is
+reproducible, never a coin toss on one run (``HYPOTHESIS_PROFILE=explore`` draws new examples).
+"""
 
 from __future__ import annotations
 
+import os
+
 import pytest
+from hypothesis import settings
+
+settings.register_profile("ci", derandomize=True)
+settings.register_profile("explore", derandomize=False)
+settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "ci"))
 
 
 def pytest_addoption(parser: pytest.Parser) -> None:

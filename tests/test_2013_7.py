@@ -217,7 +217,9 @@ def test_well_conditioned_variants_match_the_independent_solution(
     run = sol.data.run
     assert run.poly6.closure <= 1e-12 * (run.F_i + run.R76)
     assert abs(run.R76_line.side(sol.data.H)) == pytest.approx(run.rho, abs=1e-15)
-    assert (sol.results["omega"] - sol.results["omega_no_friction"]) * direction >= 0
+    # friction raises ω when speeding up and lowers it when slowing down (round-off at f → 0)
+    gain = (sol.results["omega"] - sol.results["omega_no_friction"]) * direction
+    assert gain >= -1e-12 * sol.results["omega_no_friction"]
 
 
 # -- invariants of the construction ------------------------------------------------------------
