@@ -22,7 +22,6 @@ from collections.abc import Sequence
 from pathlib import Path
 from typing import IO, TYPE_CHECKING, Any, NoReturn
 
-import geomcad
 from geomcad import registry
 from geomcad.errors import GeomcadError, MissingDependency, ParameterError, UnknownProblem
 
@@ -88,14 +87,16 @@ def _parser() -> _Parser:
     s.set_defaults(func=_cmd_list)
 
     s = sub.add_parser("solve", help="solve a problem and compare with the seed")
-    s.add_argument("id", help="problem id, e.g. 2013-6")
+    s.add_argument("id", help="problem id, e.g. 2013-6, or a linkage file FILE.toml")
     _add_set(s)
     s.add_argument("--json", action="store_true", help="print one JSON object")
     s.add_argument("--trace", action="store_true", help="print the construction protocol")
     s.set_defaults(func=_cmd_solve)
 
     s = sub.add_parser("build", help="draw the sheets of problems")
-    s.add_argument("ids", nargs="*", metavar="ID", help="problem ids (default: every id)")
+    s.add_argument(
+        "ids", nargs="*", metavar="ID", help="problem ids or FILE.toml (default: every id)"
+    )
     s.add_argument("--out", default="out", help="output folder (default: out)")
     s.add_argument(
         "--format", default=",".join(FORMATS), help="comma-separated svg,pdf,png (default: all)"
@@ -160,15 +161,19 @@ def _cmd_build(ns: argparse.Namespace) -> int:
     if not ids:
         raise _Failed("no problems are registered (is geomcad installed with pip install .?)")
     formats = _formats(ns.format)
+    from geomcad import documents
+
     for pid in ids:
-        registry.get(pid)  # an unknown id fails before anything is written
+        if not documents.is_file_id(pid):
+            registry.get(pid)  # an unknown id fails before anything is written
     # solve and draw everything first, so that bad input writes no file and prints nothing
     prepared: list[tuple[str, Any]] = []
     for pid in ids:
         try:
-            prepared.append((pid, geomcad.solve(pid).sheets()))
+            sheets = _problem(pid).solve().sheets()
         except GeomcadError as exc:
             raise _Failed(_prefixed(pid, exc)) from exc
+        prepared.append((documents.stem(pid) if documents.is_file_id(pid) else pid, sheets))
 
     from geomcad.render import write_sheets
 
@@ -212,7 +217,18 @@ def _cmd_verify(ns: argparse.Namespace) -> int:
 # --- input ------------------------------------------------------------------------------------
 
 
+def _problem(pid: str) -> Problem:
+    """A registered problem id, or a file (a path ending in .toml) as it stands."""
+    from geomcad import documents
+
+    return documents.load(pid) if documents.is_file_id(pid) else registry.get(pid)
+
+
 def _solve(pid: str, sets: Sequence[str]) -> Solution:
+    from geomcad import documents
+
+    if documents.is_file_id(pid):
+        return documents.solve(pid, [_pair(text, "--set") for text in sets])
     problem: Problem = registry.get(pid)
     params: dict[str, ParamValue] = {}
     for text in sets:

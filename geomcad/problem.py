@@ -209,6 +209,9 @@ class Problem:
     build: Callable[[Mapping[str, ParamValue]], Build]
     draw: Callable[[Solution], Sequence[tuple[str, Sheet]]]
     seed_k_l: float | None = None
+    #: A problem stated by a file (:mod:`geomcad.documents`): the file's data, printed as the
+    #: ``params`` of ``solve --json``; ``None`` for a registered problem id.
+    inputs: Mapping[str, Any] | None = None
 
     def param(self, name: str) -> Param:
         """The declared parameter ``name``; an unknown name is a :class:`ParameterError`."""
@@ -338,7 +341,7 @@ class Solution:
         """The ``solve --json`` object of the interface."""
         return {
             "id": self.problem.id,
-            "params": dict(self.params),
+            "params": dict(self.params) if self.problem.inputs is None else self.problem.inputs,
             "results": self.results,
             "seed": self.seed,
             "diff": self.diff,

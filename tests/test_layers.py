@@ -1,7 +1,7 @@
 """Imports flow one way (DESIGN.md): a layer imports only the layers below it.
 
     errors, tol, units ← geom ← construction ← kinematics / forces / dynamics / structure
-        ← sheet ← render ← (problem, registry, draw, verify, cli)
+        ← linkage ← sheet ← render ← (problem, registry, documents, verify, cli)
 
 and the library never imports a problem module.
 """
@@ -24,10 +24,11 @@ LEVEL = {
     "forces": 3,
     "dynamics": 3,
     "structure": 3,
-    "sheet": 4,
-    "render": 5,
+    "linkage": 4,
+    "sheet": 5,
+    "render": 6,
 }
-TOP = 6  # problem, registry, draw, verify, cli, __init__, __main__
+TOP = 7  # problem, registry, draw, verify, cli, __init__, __main__
 DRAWING = ("svgwrite", "cairosvg", "cairocffi")
 
 
