@@ -22,6 +22,7 @@ from collections.abc import Sequence
 from pathlib import Path
 from typing import IO, TYPE_CHECKING, Any, NoReturn
 
+import geomcad
 from geomcad import registry
 from geomcad.errors import GeomcadError, MissingDependency, ParameterError, UnknownProblem
 
@@ -170,7 +171,8 @@ def _cmd_build(ns: argparse.Namespace) -> int:
     prepared: list[tuple[str, Any]] = []
     for pid in ids:
         try:
-            sheets = _problem(pid).solve().sheets()
+            sol = documents.solve(pid) if documents.is_file_id(pid) else geomcad.solve(pid)
+            sheets = sol.sheets()
         except GeomcadError as exc:
             raise _Failed(_prefixed(pid, exc)) from exc
         prepared.append((documents.stem(pid) if documents.is_file_id(pid) else pid, sheets))
@@ -215,13 +217,6 @@ def _cmd_verify(ns: argparse.Namespace) -> int:
 
 
 # --- input ------------------------------------------------------------------------------------
-
-
-def _problem(pid: str) -> Problem:
-    """A registered problem id, or a file (a path ending in .toml) as it stands."""
-    from geomcad import documents
-
-    return documents.load(pid) if documents.is_file_id(pid) else registry.get(pid)
 
 
 def _solve(pid: str, sets: Sequence[str]) -> Solution:
