@@ -58,3 +58,19 @@ class MissingDependency(GeomcadError):
 
 class UnknownProblem(GeomcadError):
     """No construction is registered under the requested id."""
+
+
+class FileKeyError(ParameterError):
+    """A key of an input file (a linkage file …) is missing, unknown, of the wrong type or out of
+    its domain; the message names the key as the file writes it.
+
+    >>> str(FileKeyError("group 2", "", 'point "Q" is not known yet'))
+    'group 2: point "Q" is not known yet'
+    """
+
+    def __init__(self, key: str, value: object, why: str) -> None:
+        super().__init__(key, value, why)
+        self.args = (f"{key}: {why}",)
+
+    def __str__(self) -> str:
+        return f"{self.name}: {self.why}"

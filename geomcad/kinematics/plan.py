@@ -169,6 +169,25 @@ class Plan:
         self._vec(base, point, label, f"ω × r ({why})", True)
         return self[point]
 
+    def rigid_acc(
+        self,
+        point: str,
+        base: str,
+        base_pos: Vec,
+        pos: Vec,
+        omega: float,
+        eps: float,
+        label: str,
+        why: str,
+    ) -> Vec:
+        """A point of a link that turns at ``omega`` with ``eps`` on an acceleration plan:
+        a_P = a_base + ε × r − ω²·r, r = P − base."""
+        r = pos - base_pos
+        value = self[base] + Vec(-r.y, r.x) * eps - r * (omega * omega)
+        self._add(point, value, f"{self.name(base)} + ε × r − ω²·r ({why})")
+        self._vec(base, point, label, f"ε × r − ω²·r ({why})", True)
+        return self[point]
+
     def image(
         self, point: str, a: str, b: str, A: Vec, B: Vec, P: Vec, label: str = "", why: str = ""
     ) -> Vec:

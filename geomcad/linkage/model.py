@@ -1,0 +1,821 @@
+"""A lever mechanism of a crank and class-II Assur groups, read from a linkage file.
+
+The file's format is the interface of ``../shared/linkages.md``: ``[frame]`` points, the
+``[drive]`` crank (link 1), ``[[group]]`` tables (RRR, RRP, RPR, PRP) attached one after another,
+``[[point]]`` points of links, ``[links.N]`` mass data, ``[[load]]`` rules and ``[dynamics]``.
+:func:`parse` turns the TOML data into a :class:`Linkage` (SI units, angles in radians) and checks
+everything that can be checked before a position is constructed; every failure is a
+:class:`~geomcad.errors.FileKeyError` naming the file's key, e.g. ``group 2: point "Q" is not
+known yet``.
+
+What a link "owns", for the groups and points that attach to it later:
+
+- frame points: link 0; the crank's joint: link 1;
+- a group's new joint: the group's second link (the rocker of an RRR, the slider of an RRP);
+- a PRP group's reference point ``point``: its second link (the sliding yoke);
+- a ``[[point]]``: its ``link``.
+
+>>> lk = parse({"frame": {"O": [0, 0], "C": [0.3, 0.0]},
+...             "drive": {"pivot": "O", "joint": "A", "length": 0.1, "omega": 10, "phi": [30]},
+...             "group": [{"kind": "RRR", "links": [2, 3], "joint": "B", "ends": ["A", "C"],
+...                        "lengths": [0.3, 0.2], "assembly": "left"}]})
+>>> [g.kind for g in lk.groups], lk.output, lk.owner["B"], lk.link_points(3)
+(['RRR'], 'B', 3, ('C', 'B'))
+"""
+
+from __future__ import annotations
+
+import difflib
+import itertools
+import math
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass, field
+from typing import Any, Literal
+
+from geomcad.errors import FileKeyError
+from geomcad.geom import Vec
+
+GroupKind = Literal["RRR", "RRP", "RPR", "PRP"]
+KINDS: tuple[GroupKind, ...] = ("RRR", "RRP", "RPR", "PRP")
+
+TOP_KEYS = (
+    "title",
+    "gravity",
+    "frame",
+    "drive",
+    "group",
+    "point",
+    "links",
+    "load",
+    "dynamics",
+    "sheet",
+)
+DRIVE_KEYS = ("pivot", "joint", "length", "omega", "phi", "positions", "output")
+GROUP_KEYS: dict[str, tuple[str, ...]] = {
+    "RRR": ("kind", "links", "joint", "ends", "lengths", "assembly"),
+    "RRP": ("kind", "links", "joint", "end", "length", "guide", "assembly"),
+    "RPR": ("kind", "links", "slider", "pivot", "offset"),
+    "PRP": ("kind", "links", "slider", "slot_angle", "guide", "point"),
+}
+POINT_KEYS = ("name", "link", "from", "toward", "along", "left")
+LINK_KEYS = ("mass", "J", "centre")
+LOAD_KEYS = ("point", "value", "stroke", "working", "shape", "link", "moment")
+DYNAMICS_KEYS = ("delta", "drive", "flywheel", "density", "ratio")
+FIXED_GUIDE_KEYS = ("through", "angle")
+MOVING_GUIDE_KEYS = ("link", "from", "toward", "offset")
+
+#: A length of a link, a radius: more than this fraction of the mechanism's size and less than
+#: this many times it is a sensible drawing. Lengths are checked against absolute bounds only.
+MAX_LENGTH = 1.0e4  # m
+MAX_OMEGA = 1.0e5  # rad/s
+MAX_POSITIONS = 360
+MAX_MASS = 1.0e7  # kg
+MAX_FORCE = 1.0e9  # N or N·m
+
+
+@dataclass(frozen=True)
+class Guide:
+    """A straight guide: fixed (``link`` 0, through ``through`` at ``angle`` rad) or on a moving
+    link (``link`` > 0, from point ``frm`` towards ``toward``, shifted ``offset`` m to the left)."""
+
+    link: int
+    through: Vec = field(default_factory=lambda: Vec(0.0, 0.0))
+    angle: float = 0.0
+    frm: str = ""
+    toward: str = ""
+    offset: float = 0.0
+
+    @property
+    def fixed(self) -> bool:
+        return self.link == 0
+
+    @property
+    def direction(self) -> Vec:
+        """A fixed guide's unit direction."""
+        return Vec(math.cos(self.angle), math.sin(self.angle))
+
+
+@dataclass(frozen=True)
+class Group:
+    """A class-II Assur group as the file states it (``index`` counts from 1, as in keys).
+
+    - RRR: ``ends`` (P1, P2), ``lengths`` (l_P1J, l_P2J), the new ``joint`` J; ``branch`` +1: J on
+      the left of P1 → P2.
+    - RRP: ``ends[0]`` the rod's known end, ``lengths[0]`` the rod, ``joint`` the slider's joint on
+      ``guide``; ``branch`` +1: J ahead of the end's foot along the guide.
+    - RPR: ``slider`` the block's known joint, ``pivot`` the slotted link's known joint,
+      ``offset`` (m, to the left of the pivot looking from it to the slider).
+    - PRP: ``slider`` the block's known joint, ``guide`` of the yoke (link b) on the frame,
+      ``slot_angle`` (rad, from the guide's direction), ``joint`` = the yoke's reference point.
+    """
+
+    index: int
+    kind: GroupKind
+    links: tuple[int, int]
+    joint: str = ""
+    ends: tuple[str, ...] = ()
+    lengths: tuple[float, ...] = ()
+    branch: int = 1
+    guide: Guide | None = None
+    slider: str = ""
+    pivot: str = ""
+    offset: float = 0.0
+    slot_angle: float = 0.0
+
+    @property
+    def key(self) -> str:
+        return f"group {self.index}"
+
+    @property
+    def known(self) -> tuple[str, ...]:
+        """The points the group hangs on (they must be known before it)."""
+        if self.kind == "RRR":
+            return self.ends
+        if self.kind == "RRP":
+            g = self.guide
+            extra = (g.frm, g.toward) if g is not None and not g.fixed else ()
+            return (*self.ends, *extra)
+        if self.kind == "RPR":
+            return (self.slider, self.pivot)
+        return (self.slider,)
+
+    @property
+    def sliding(self) -> bool:
+        """True for the groups with a sliding pair."""
+        return self.kind != "RRR"
+
+
+@dataclass(frozen=True)
+class PointDef:
+    """A named point of a link: ``along`` m from ``frm`` towards ``toward``, ``left`` m to its
+    left (``slide`` True: the direction is the link's slide direction)."""
+
+    name: str
+    link: int
+    frm: str
+    toward: str
+    along: float
+    left: float
+    slide: bool = False
+
+
+@dataclass(frozen=True)
+class Mass:
+    """Mass data of a moving link: mass (kg), J about the centre of mass (kg·m²), the centre."""
+
+    link: int
+    mass: float
+    J: float
+    centre: str
+
+
+@dataclass(frozen=True)
+class Load:
+    """A ``[[load]]``: a resistance force on ``point`` (``value``·shape(s/H) against the point's
+    velocity along its guide, on the named ``stroke``) or a ``moment`` on ``link``."""
+
+    index: int
+    point: str = ""
+    value: float = 0.0
+    stroke: Literal["working", "idle", "both"] = "working"
+    shape: tuple[tuple[float, float], ...] = ()
+    link: int = 0
+    moment: float = 0.0
+
+
+@dataclass(frozen=True)
+class Dynamics:
+    """``[dynamics]``: the allowed coefficient of speed fluctuation and the motor's law."""
+
+    delta: float
+    drive: Literal["constant"] = "constant"
+    flywheel: Literal["disc", "rim"] = "disc"
+    density: float = 7800.0
+    ratio: float = 0.2
+
+
+@dataclass(frozen=True)
+class Linkage:
+    """A lever mechanism: frame points, the crank (link 1), groups, points, masses and loads."""
+
+    title: str
+    gravity: float
+    frame: Mapping[str, Vec]
+    pivot: str
+    joint: str
+    length: float
+    omega: float
+    phi: tuple[float, ...] | None  # rad, as listed; None with `positions`
+    positions: int | None
+    output: str
+    working: Literal["forward", "backward"]
+    groups: tuple[Group, ...]
+    points: tuple[PointDef, ...]
+    masses: Mapping[int, Mass]
+    loads: tuple[Load, ...]
+    dynamics: Dynamics | None
+    sheet: Mapping[str, Any]
+    owner: Mapping[str, int] = field(default_factory=dict)
+
+    # -- structure -------------------------------------------------------------------------
+    @property
+    def moving_links(self) -> tuple[int, ...]:
+        """The moving links in order: the crank, then each group's two links."""
+        return (1, *(i for g in self.groups for i in g.links))
+
+    def group_of(self, link: int) -> Group | None:
+        """The group a link belongs to (``None`` for the crank)."""
+        for g in self.groups:
+            if link in g.links:
+                return g
+        return None
+
+    def link_points(self, link: int) -> tuple[str, ...]:
+        """The joints of a link (its revolute axes, in the group's order), without the
+        ``[[point]]`` points on it."""
+        if link == 1:
+            return (self.pivot, self.joint)
+        g = self.group_of(link)
+        if g is None:
+            return ()
+        first = link == g.links[0]
+        if g.kind == "RRR":
+            return (g.ends[0], g.joint) if first else (g.ends[1], g.joint)
+        if g.kind == "RRP":
+            return (g.ends[0], g.joint) if first else (g.joint,)
+        if g.kind == "RPR":
+            return (g.slider,) if first else (g.pivot,)
+        return (g.slider,) if first else (g.joint,)
+
+    def points_on(self, link: int) -> tuple[str, ...]:
+        """Every point that moves with the link: its joints and its ``[[point]]`` points."""
+        return (*self.link_points(link), *(p.name for p in self.points if p.link == link))
+
+    def has_slide(self, link: int) -> bool:
+        """True for the links whose direction is a slide: the slider of an RRP, both links of an
+        RPR and of a PRP."""
+        g = self.group_of(link)
+        return g is not None and (
+            g.kind in ("RPR", "PRP") or (g.kind == "RRP" and link == g.links[1])
+        )
+
+    def centre(self, link: int) -> str:
+        """The point that is the link's centre of mass (a ``[links.N]`` ``centre``, or the
+        default of linkages.md; ``""``: the middle of its two joints)."""
+        m = self.masses.get(link)
+        if m is not None and m.centre:
+            return m.centre
+        joints = self.link_points(link)
+        return joints[0] if len(joints) == 1 else ""
+
+    @property
+    def output_guide(self) -> Group | None:
+        """The group whose slider is the output (an RRP's joint, a PRP's yoke point), if any."""
+        for g in self.groups:
+            if g.joint == self.output and g.kind in ("RRP", "PRP"):
+                return g
+        return None
+
+
+# --- parsing ----------------------------------------------------------------------------------
+
+
+#: Tables of a list ([[group]] …) are named "group 2" in messages, their keys "group 2: ends".
+_LISTED = ("group ", "point ", "load ")
+
+
+def _suggest(key: str, known: Sequence[str]) -> str:
+    close = difflib.get_close_matches(key, known, n=1)
+    return f" (did you mean {close[0]!r}?)" if close else f" (known keys: {', '.join(known)})"
+
+
+def _check_keys(where: str, table: Mapping[str, Any], known: Sequence[str]) -> None:
+    for k in table:
+        if k not in known:
+            raise FileKeyError(
+                f"{where}.{k}" if where else k, table[k], "unknown key" + _suggest(k, known)
+            )
+
+
+def _table(data: Mapping[str, Any], key: str, where: str, required: bool = True) -> dict[str, Any]:
+    v = data.get(key)
+    if v is None:
+        if required:
+            raise FileKeyError(_join(where, key), None, "missing (a table is required)")
+        return {}
+    if not isinstance(v, dict):
+        raise FileKeyError(_join(where, key), v, "must be a table")
+    return v
+
+
+def _tables(data: Mapping[str, Any], key: str) -> list[dict[str, Any]]:
+    v = data.get(key, [])
+    if isinstance(v, dict):
+        v = [v]
+    if not isinstance(v, list) or not all(isinstance(t, dict) for t in v):
+        raise FileKeyError(key, v, f"must be a list of tables ([[{key}]])")
+    return v
+
+
+def _join(where: str, key: str) -> str:
+    return f"{where}.{key}" if where else key
+
+
+def _number(
+    t: Mapping[str, Any],
+    key: str,
+    where: str,
+    *,
+    default: float | None = None,
+    gt: float | None = None,
+    ge: float | None = None,
+    lt: float | None = None,
+    le: float | None = None,
+    unit: str = "",
+) -> float:
+    name = f"{where}: {key}" if where.startswith(_LISTED) else _join(where, key)
+    if key not in t:
+        if default is None:
+            raise FileKeyError(name, None, "missing (a number is required)")
+        return default
+    v = t[key]
+    if isinstance(v, bool) or not isinstance(v, int | float):
+        raise FileKeyError(name, v, f"must be a number, not {v!r}")
+    x = float(v)
+    u = f" {unit}" if unit else ""
+    if not math.isfinite(x):
+        raise FileKeyError(name, v, "must be a finite number")
+    if gt is not None and not x > gt:
+        raise FileKeyError(name, v, f"= {x:g} must be > {gt:g}{u}")
+    if ge is not None and not x >= ge:
+        raise FileKeyError(name, v, f"= {x:g} must be ≥ {ge:g}{u}")
+    if lt is not None and not x < lt:
+        raise FileKeyError(name, v, f"= {x:g} must be < {lt:g}{u}")
+    if le is not None and not x <= le:
+        raise FileKeyError(name, v, f"= {x:g} must be ≤ {le:g}{u}")
+    return x
+
+
+def _name(where: str, t: Mapping[str, Any], key: str, *, default: str | None = None) -> str:
+    label = f"{where}: {key}" if where.startswith(_LISTED) else _join(where, key)
+    if key not in t:
+        if default is None:
+            raise FileKeyError(label, None, "missing (a point's name is required)")
+        return default
+    v = t[key]
+    if not isinstance(v, str) or not v.strip():
+        raise FileKeyError(label, v, f"must be a point's name (a string), not {v!r}")
+    return v.strip()
+
+
+def _word(where: str, t: Mapping[str, Any], key: str, choices: Sequence[str], default: str) -> str:
+    label = f"{where}: {key}" if where.startswith(_LISTED) else _join(where, key)
+    v = t.get(key, default)
+    if v not in choices:
+        raise FileKeyError(
+            label, v, f"must be one of {', '.join(repr(c) for c in choices)}, not {v!r}"
+        )
+    return str(v)
+
+
+def _point(label: str, v: object) -> Vec:
+    if (
+        not isinstance(v, list)
+        or len(v) != 2
+        or not all(isinstance(x, int | float) and not isinstance(x, bool) for x in v)
+    ):
+        raise FileKeyError(label, v, f"must be a point [x, y] in metres, not {v!r}")
+    x, y = float(v[0]), float(v[1])
+    if not (math.isfinite(x) and math.isfinite(y)) or max(abs(x), abs(y)) > MAX_LENGTH:
+        raise FileKeyError(label, v, f"must be finite and within ±{MAX_LENGTH:g} m")
+    return Vec(x, y)
+
+
+def _link_no(label: str, v: object) -> int:
+    if isinstance(v, bool) or not isinstance(v, int):
+        raise FileKeyError(label, v, f"must be a link number (a whole number), not {v!r}")
+    return v
+
+
+def _lengths(where: str, t: Mapping[str, Any], key: str, n: int) -> tuple[float, ...]:
+    label = f"{where}: {key}"
+    v = t.get(key)
+    if n == 1 and isinstance(v, int | float) and not isinstance(v, bool):
+        v = [v]
+    if not isinstance(v, list) or len(v) != n:
+        raise FileKeyError(
+            label, v, f"must be {'a length' if n == 1 else f'{n} lengths'} in metres"
+        )
+    out = []
+    for i, x in enumerate(v, start=1):
+        out.append(
+            _number({key: x}, key, where, gt=0.0, le=MAX_LENGTH, unit="m")
+            if n == 1
+            else _number({f"{key}.{i}": x}, f"{key}.{i}", where, gt=0.0, le=MAX_LENGTH, unit="m")
+        )
+    return tuple(out)
+
+
+def parse(data: Mapping[str, Any]) -> Linkage:
+    """The :class:`Linkage` a linkage file's data states; see the module's docstring."""
+    if not isinstance(data, Mapping):
+        raise FileKeyError("file", data, "must be a TOML table")
+    _check_keys("", data, TOP_KEYS)
+    title = data.get("title", "Рычажный механизм")
+    if not isinstance(title, str):
+        raise FileKeyError("title", title, "must be a string")
+    gravity = _number(data, "gravity", "", default=9.81, ge=0.0, le=1000.0, unit="m/s²")
+    sheet = _table(data, "sheet", "", required=False)
+
+    # frame
+    frame_t = _table(data, "frame", "")
+    frame: dict[str, Vec] = {}
+    for k, v in frame_t.items():
+        frame[k] = _point(f"frame.{k}", v)
+    if not frame:
+        raise FileKeyError("frame", frame_t, "must name at least the crank's pivot")
+    owner: dict[str, int] = dict.fromkeys(frame, 0)
+
+    # drive
+    drive = _table(data, "drive", "")
+    _check_keys("drive", drive, DRIVE_KEYS)
+    pivot = _name("drive", drive, "pivot")
+    if pivot not in frame:
+        raise FileKeyError("drive.pivot", pivot, f'point "{pivot}" is not a [frame] point')
+    joint = _name("drive", drive, "joint")
+    if joint in owner:
+        raise FileKeyError("drive.joint", joint, f'point "{joint}" is named twice')
+    owner[joint] = 1
+    length = _number(drive, "length", "drive", gt=0.0, le=MAX_LENGTH, unit="m")
+    omega = _number(drive, "omega", "drive", unit="rad/s")
+    if omega == 0.0 or abs(omega) > MAX_OMEGA:
+        raise FileKeyError(
+            "drive.omega", omega, f"must be non-zero and within ±{MAX_OMEGA:g} rad/s"
+        )
+    phi: tuple[float, ...] | None = None
+    positions: int | None = None
+    if "phi" in drive and "positions" in drive:
+        raise FileKeyError("drive", "", "give phi or positions, not both")
+    if "phi" in drive:
+        v = drive["phi"]
+        if isinstance(v, int | float) and not isinstance(v, bool):
+            v = [v]
+        if not isinstance(v, list) or not v or len(v) > MAX_POSITIONS:
+            raise FileKeyError(
+                "drive.phi", v, f"must be a list of 1 … {MAX_POSITIONS} crank angles in degrees"
+            )
+        angles = [
+            _number({f"phi.{i}": x}, f"phi.{i}", "drive", ge=-1.0e6, le=1.0e6, unit="°")
+            for i, x in enumerate(v, start=1)
+        ]
+        phi = tuple(math.radians(math.remainder(a, 360.0)) for a in angles)
+    else:
+        v = drive.get("positions", 12)
+        if isinstance(v, bool) or not isinstance(v, int) or not 1 <= v <= MAX_POSITIONS:
+            raise FileKeyError("drive.positions", v, f"must be a whole number 1 … {MAX_POSITIONS}")
+        positions = v
+
+    # groups
+    used_links = {1}
+    groups: list[Group] = []
+    for i, t in enumerate(_tables(data, "group"), start=1):
+        g = _group(i, t, owner, used_links)
+        groups.append(g)
+    if not groups:
+        raise FileKeyError("group", None, "missing: a mechanism needs at least one [[group]]")
+
+    # points, each resolved as soon as what it names is known (file order)
+    lk = Linkage(
+        title=title,
+        gravity=gravity,
+        frame=frame,
+        pivot=pivot,
+        joint=joint,
+        length=length,
+        omega=omega,
+        phi=phi,
+        positions=positions,
+        output="",
+        working="forward",
+        groups=tuple(groups),
+        points=(),
+        masses={},
+        loads=(),
+        dynamics=None,
+        sheet=sheet,
+        owner=owner,
+    )
+    points = _points(lk, _tables(data, "point"), owner)
+    lk = _replace(lk, points=points)
+
+    default_out = groups[-1].joint or (groups[-1].slider if groups[-1].kind == "RPR" else "")
+    output = _name("drive", drive, "output", default=default_out)
+    if output not in owner:
+        raise FileKeyError(
+            "drive.output", output, f'point "{output}" is not a point of the mechanism'
+        )
+
+    masses = _masses(lk, _table(data, "links", "", required=False))
+    loads, working = _loads(lk, _tables(data, "load"), output)
+    dyn_t = _table(data, "dynamics", "", required=False)
+    dynamics = _dynamics(dyn_t) if dyn_t else None
+    if dynamics is not None and not masses:
+        raise FileKeyError("dynamics", "", "needs the links' masses ([links.N] tables)")
+    return _replace(
+        lk, output=output, masses=masses, loads=loads, working=working, dynamics=dynamics
+    )
+
+
+def _replace(lk: Linkage, **kw: Any) -> Linkage:
+    from dataclasses import replace
+
+    return replace(lk, **kw)
+
+
+def _known(where: str, name: str, owner: Mapping[str, int], key: str) -> None:
+    if name not in owner:
+        raise FileKeyError(where, name, f'{key}: point "{name}" is not known yet')
+
+
+def _new(where: str, name: str, owner: dict[str, int], link: int, key: str) -> None:
+    if name in owner:
+        raise FileKeyError(where, name, f'{key}: point "{name}" is named twice')
+    owner[name] = link
+
+
+def _group(i: int, t: Mapping[str, Any], owner: dict[str, int], used: set[int]) -> Group:
+    where = f"group {i}"
+    kind = t.get("kind")
+    if kind not in KINDS:
+        raise FileKeyError(where, kind, f"kind must be one of {', '.join(KINDS)}, not {kind!r}")
+    for k in t:
+        if k not in GROUP_KEYS[kind]:
+            raise FileKeyError(
+                where, t[k], f"{k}: unknown key for a {kind} group" + _suggest(k, GROUP_KEYS[kind])
+            )
+    lv = t.get("links")
+    if not isinstance(lv, list) or len(lv) != 2:
+        raise FileKeyError(where, lv, "links must be the group's two link numbers, e.g. [2, 3]")
+    links = (_link_no(f"{where}: links", lv[0]), _link_no(f"{where}: links", lv[1]))
+    for n in links:
+        if n < 2 or n > 99:
+            raise FileKeyError(
+                where, n, f"links: link {n} must be 2 … 99 (0 is the frame, 1 the crank)"
+            )
+        if n in used:
+            raise FileKeyError(where, n, f"links: link {n} is used twice")
+    if links[0] == links[1]:
+        raise FileKeyError(where, links, "links: the two links must differ")
+    used.update(links)
+    b = links[1]
+    if kind == "RRR":
+        ends_v = t.get("ends")
+        if (
+            not isinstance(ends_v, list)
+            or len(ends_v) != 2
+            or not all(isinstance(e, str) for e in ends_v)
+        ):
+            raise FileKeyError(where, ends_v, 'ends must be two known points, e.g. ["A", "C"]')
+        ends = (ends_v[0], ends_v[1])
+        for e in ends:
+            _known(where, e, owner, "ends")
+        if ends[0] == ends[1]:
+            raise FileKeyError(where, ends, "ends: the two ends must differ")
+        lengths = _lengths(where, t, "lengths", 2)
+        branch = 1 if _word(where, t, "assembly", ("left", "right"), "left") == "left" else -1
+        joint = _name(where, t, "joint")
+        _new(where, joint, owner, b, "joint")
+        return Group(i, kind, links, joint=joint, ends=ends, lengths=lengths, branch=branch)
+    if kind == "RRP":
+        end = _name(where, t, "end")
+        _known(where, end, owner, "end")
+        lengths = _lengths(where, t, "length", 1)
+        guide = _guide(where, t, owner, used_links=links)
+        branch = (
+            1
+            if _word(where, t, "assembly", ("forward", "backward"), "forward") == "forward"
+            else -1
+        )
+        joint = _name(where, t, "joint")
+        _new(where, joint, owner, b, "joint")
+        return Group(
+            i, kind, links, joint=joint, ends=(end,), lengths=lengths, branch=branch, guide=guide
+        )
+    if kind == "RPR":
+        slider = _name(where, t, "slider")
+        _known(where, slider, owner, "slider")
+        pivot = _name(where, t, "pivot")
+        _known(where, pivot, owner, "pivot")
+        if slider == pivot:
+            raise FileKeyError(where, pivot, "pivot: the pivot and the slider must differ")
+        offset = _number(t, "offset", where, default=0.0, ge=-MAX_LENGTH, le=MAX_LENGTH, unit="m")
+        return Group(i, kind, links, slider=slider, pivot=pivot, offset=offset)
+    # PRP
+    slider = _name(where, t, "slider")
+    _known(where, slider, owner, "slider")
+    slot = _number(t, "slot_angle", where, default=90.0, ge=-360.0, le=360.0, unit="°")
+    if abs(math.sin(math.radians(slot))) < 1.0e-6:
+        raise FileKeyError(
+            where, slot, "slot_angle: the slot must not run along the guide (0° or 180°)"
+        )
+    guide = _guide(where, t, owner, used_links=links, fixed_only=True)
+    joint = _name(where, t, "point")
+    _new(where, joint, owner, b, "point")
+    return Group(
+        i, kind, links, joint=joint, slider=slider, guide=guide, slot_angle=math.radians(slot)
+    )
+
+
+def _guide(
+    where: str,
+    t: Mapping[str, Any],
+    owner: Mapping[str, int],
+    used_links: tuple[int, int],
+    fixed_only: bool = False,
+) -> Guide:
+    g = t.get("guide")
+    if not isinstance(g, dict):
+        raise FileKeyError(
+            where,
+            g,
+            "guide must be a table: { through = [x, y], angle = deg } "
+            "or { link = N, from = …, toward = … }",
+        )
+    label = f"{where}: guide"
+    if "link" not in g or fixed_only:
+        for k in g:
+            if k not in FIXED_GUIDE_KEYS:
+                raise FileKeyError(
+                    label,
+                    g[k],
+                    f"{k}: unknown key of a fixed guide" + _suggest(k, FIXED_GUIDE_KEYS),
+                )
+        through = _point(f"{label}.through", g.get("through", [0.0, 0.0]))
+        angle = _number(g, "angle", label, default=0.0, ge=-360.0, le=360.0, unit="°")
+        return Guide(0, through=through, angle=math.radians(angle))
+    for k in g:
+        if k not in MOVING_GUIDE_KEYS:
+            raise FileKeyError(
+                label,
+                g[k],
+                f"{k}: unknown key of a guide on a link" + _suggest(k, MOVING_GUIDE_KEYS),
+            )
+    link = _link_no(f"{label}.link", g["link"])
+    if link == 0:
+        raise FileKeyError(
+            f"{label}.link", link, "0 is the frame: give a fixed guide { through, angle }"
+        )
+    if link in used_links:
+        raise FileKeyError(
+            f"{label}.link", link, "the guide must be on a link of an earlier group or the crank"
+        )
+    frm = _name(label, g, "from")
+    toward = _name(label, g, "toward")
+    for p in (frm, toward):
+        _known(where, p, owner, "guide")
+    offset = _number(
+        g, "offset", f"{where}: guide", default=0.0, ge=-MAX_LENGTH, le=MAX_LENGTH, unit="m"
+    )
+    return Guide(link, frm=frm, toward=toward, offset=offset)
+
+
+def _points(
+    lk: Linkage, tables: list[dict[str, Any]], owner: dict[str, int]
+) -> tuple[PointDef, ...]:
+    out: list[PointDef] = []
+    links = set(lk.moving_links)
+    for i, t in enumerate(tables, start=1):
+        where = f"point {i}"
+        _check_keys(where, t, POINT_KEYS)
+        name = _name(where, t, "name")
+        where = f'point "{name}"'
+        link = _link_no(f"{where}: link", t.get("link"))
+        if link not in links:
+            raise FileKeyError(where, link, f"link: {link} is not a moving link of the mechanism")
+        frm = _name(where, t, "from")
+        toward = _name(where, t, "toward")
+        along = _number(
+            t, "along", f"point {i}", default=0.0, ge=-MAX_LENGTH, le=MAX_LENGTH, unit="m"
+        )
+        left = _number(
+            t, "left", f"point {i}", default=0.0, ge=-MAX_LENGTH, le=MAX_LENGTH, unit="m"
+        )
+        so_far = _replace(lk, points=tuple(out))
+        on = so_far.points_on(link)
+        if frm not in on:
+            raise FileKeyError(
+                where,
+                frm,
+                f'from: point "{frm}" is not a point of link {link} (its points: {", ".join(on)})',
+            )
+        slide = False
+        if toward not in on:
+            if not lk.has_slide(link) or toward not in owner:
+                raise FileKeyError(
+                    where,
+                    toward,
+                    f'toward: point "{toward}" is not a point of link {link} '
+                    f"(its points: {', '.join(on)})",
+                )
+            slide = True
+        elif toward == frm:
+            raise FileKeyError(where, toward, "toward: from and toward must differ")
+        if name in owner:
+            raise FileKeyError(where, name, f'name: point "{name}" is named twice')
+        owner[name] = link
+        out.append(PointDef(name, link, frm, toward, along, left, slide))
+    return tuple(out)
+
+
+def _masses(lk: Linkage, t: Mapping[str, Any]) -> dict[int, Mass]:
+    out: dict[int, Mass] = {}
+    for k, v in t.items():
+        where = f"links.{k}"
+        if not k.isdigit() or int(k) not in lk.moving_links:
+            raise FileKeyError(
+                where,
+                k,
+                f"{k} is not a moving link (they are {', '.join(map(str, lk.moving_links))})",
+            )
+        if not isinstance(v, dict):
+            raise FileKeyError(where, v, "must be a table with mass, J, centre")
+        _check_keys(where, v, LINK_KEYS)
+        n = int(k)
+        mass = _number(v, "mass", where, default=0.0, ge=0.0, le=MAX_MASS, unit="kg")
+        J = _number(v, "J", where, default=0.0, ge=0.0, le=MAX_MASS, unit="kg·m²")
+        centre = ""
+        if "centre" in v:
+            centre = _name(where, v, "centre")
+            if centre not in lk.points_on(n):
+                raise FileKeyError(
+                    f"{where}.centre", centre, f'point "{centre}" is not a point of link {n}'
+                )
+        out[n] = Mass(n, mass, J, centre)
+    return out
+
+
+def _loads(
+    lk: Linkage, tables: list[dict[str, Any]], output: str
+) -> tuple[tuple[Load, ...], Literal["forward", "backward"]]:
+    out: list[Load] = []
+    working: Literal["forward", "backward"] = "forward"
+    for i, t in enumerate(tables, start=1):
+        where = f"load {i}"
+        _check_keys(where, t, LOAD_KEYS)
+        if "moment" in t or "link" in t:
+            if "point" in t or "value" in t:
+                raise FileKeyError(
+                    where,
+                    "",
+                    "a load is a force (point, value) or a moment (link, moment), not both",
+                )
+            link = _link_no(f"{where}: link", t.get("link"))
+            if link not in lk.moving_links:
+                raise FileKeyError(where, link, f"link: {link} is not a moving link")
+            moment = _number(t, "moment", where, ge=-MAX_FORCE, le=MAX_FORCE, unit="N·m")
+            out.append(Load(i, link=link, moment=moment))
+            continue
+        point = _name(where, t, "point")
+        if point not in lk.owner:
+            raise FileKeyError(where, point, f'point: "{point}" is not a point of the mechanism')
+        g = next((g for g in lk.groups if g.joint == point and g.kind in ("RRP", "PRP")), None)
+        if g is None:
+            raise FileKeyError(
+                where,
+                point,
+                f'point: "{point}" is not a slider\'s joint (a force load acts along a guide)',
+            )
+        value = _number(t, "value", where, ge=0.0, le=MAX_FORCE, unit="N")
+        stroke = _word(where, t, "stroke", ("working", "idle", "both"), "working")
+        w = _word(where, t, "working", ("forward", "backward"), "forward")
+        if point == output:
+            working = w  # type: ignore[assignment]
+        shape = _shape(where, t.get("shape"))
+        out.append(Load(i, point=point, value=value, stroke=stroke, shape=shape))  # type: ignore[arg-type]
+    return tuple(out), working
+
+
+def _shape(where: str, v: object) -> tuple[tuple[float, float], ...]:
+    if v is None:
+        return ()
+    label = f"{where}: shape"
+    if not isinstance(v, list) or len(v) < 2:
+        raise FileKeyError(label, v, "must be a list of at least two [s/H, F/value] pairs")
+    pts: list[tuple[float, float]] = []
+    for j, p in enumerate(v, start=1):
+        q = _point(f"{label}.{j}", p)
+        pts.append((q.x, q.y))
+    xs = [p[0] for p in pts]
+    if xs[0] != 0.0 or xs[-1] != 1.0 or any(b <= a for a, b in itertools.pairwise(xs)):
+        raise FileKeyError(label, v, "its s/H values must rise strictly from 0 to 1")
+    return tuple(pts)
+
+
+def _dynamics(t: Mapping[str, Any]) -> Dynamics:
+    _check_keys("dynamics", t, DYNAMICS_KEYS)
+    delta = _number(t, "delta", "dynamics", gt=0.0, lt=1.0)
+    drive = _word("dynamics", t, "drive", ("constant",), "constant")
+    fly = _word("dynamics", t, "flywheel", ("disc", "rim"), "disc")
+    density = _number(t, "density", "dynamics", default=7800.0, gt=0.0, le=1.0e5, unit="kg/m³")
+    ratio = _number(t, "ratio", "dynamics", default=0.2, gt=0.0, le=1.0)
+    return Dynamics(delta, drive, fly, density, ratio)  # type: ignore[arg-type]

@@ -1,0 +1,167 @@
+"""A linkage solved: its structure, its cycle and its plans at the asked crank angles.
+
+:func:`solve` is what ``geomcad solve FILE.toml`` computes; :func:`results` words it as the
+``results`` of linkages.md (every value at a position read off that position's plans).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Any
+
+from geomcad.geom import Vec
+from geomcad.linkage.cycle import Cycle, cycle, numbered, stroke_middles
+from geomcad.linkage.model import Linkage
+from geomcad.linkage.plans import Position, construct
+from geomcad.structure import Mechanism, chebyshev, mobility
+from geomcad.structure.model import Link, Pair, prismatic, revolute
+
+#: Positions numbered for the dynamics when the file lists ``phi`` instead of ``positions``.
+DYNAMICS_POSITIONS = 12
+
+
+@dataclass(frozen=True)
+class Solved:
+    """The linkage, its structural scheme at the first position, W, its cycle (``None``
+    without a slider output), the crank angles of the results' positions with their
+    constructions, and the two positions whose acceleration plans go on the sheet."""
+
+    linkage: Linkage
+    scheme: Mechanism
+    W: int
+    cycle: Cycle | None
+    positions: tuple[Position, ...]
+    accel_phis: tuple[float, ...]
+
+    @property
+    def numbered(self) -> bool:
+        """True when the positions are the file's ``positions = N`` numbering."""
+        return self.linkage.phi is None
+
+
+def scheme(lk: Linkage, P: Position) -> Mechanism:
+    """The structural scheme (links and pairs) of the linkage in position ``P``."""
+    own = lk.owner
+    links = tuple(Link(str(i)) for i in lk.moving_links)
+    pairs: list[Pair] = [revolute(lk.pivot, "0", "1", P.pos[lk.pivot])]
+    for g in lk.groups:
+        a, b = (str(i) for i in g.links)
+        if g.kind == "RRR":
+            e1, e2 = g.ends
+            pairs += [
+                revolute(f"{e1}:{a}", str(own[e1]), a, P.pos[e1]),
+                revolute(g.joint, a, b, P.pos[g.joint]),
+                revolute(f"{e2}:{b}", str(own[e2]), b, P.pos[e2]),
+            ]
+        elif g.kind == "RRP":
+            assert g.guide is not None
+            e = g.ends[0]
+            pairs += [
+                revolute(f"{e}:{a}", str(own[e]), a, P.pos[e]),
+                revolute(g.joint, a, b, P.pos[g.joint]),
+                prismatic(
+                    f"{g.joint}:{b}", b, str(g.guide.link), P.pos[g.joint], P.slide[g.links[1]]
+                ),
+            ]
+        elif g.kind == "RPR":
+            pairs += [
+                revolute(f"{g.slider}:{a}", str(own[g.slider]), a, P.pos[g.slider]),
+                prismatic(f"{g.slider}:{a}{b}", a, b, P.pos[g.slider], P.slide[g.links[0]]),
+                revolute(f"{g.pivot}:{b}", b, str(own[g.pivot]), P.pos[g.pivot]),
+            ]
+        else:
+            assert g.guide is not None
+            pairs += [
+                revolute(f"{g.slider}:{a}", str(own[g.slider]), a, P.pos[g.slider]),
+                prismatic(f"{g.slider}:{a}{b}", a, b, P.pos[g.slider], P.slide[g.links[0]]),
+                prismatic(f"{g.joint}:{b}", b, "0", P.pos[g.joint], g.guide.direction),
+            ]
+    return Mechanism(links, tuple(pairs))
+
+
+def solve(lk: Linkage) -> Solved:
+    """Solve the linkage: its cycle, its numbered (or listed) positions, their plans."""
+    cyc = cycle(lk)
+    if lk.phi is not None:
+        phis = list(lk.phi)
+    else:
+        assert lk.positions is not None
+        phis = numbered(lk, cyc, lk.positions)
+    positions = tuple(construct(lk, phi) for phi in phis)
+    m = scheme(lk, positions[0])
+    W = chebyshev(m.n, m.p5, m.p4)
+    mob = mobility(m)
+    if W != 1 or mob.true != 1:
+        from geomcad.errors import ConstructionError
+
+        raise ConstructionError(
+            "structure",
+            f"the mechanism has W = {W} (true mobility {mob.true}); a crank drives W = 1",
+        )
+    if lk.phi is not None:
+        accel = tuple(lk.phi[:2])
+    elif cyc is not None:
+        accel = stroke_middles(lk, cyc)
+    else:
+        accel = (phis[0], phis[len(phis) // 2])
+    return Solved(lk, m, W, cyc, positions, accel)
+
+
+def _xy(out: dict[str, Any], key: str, v: Vec) -> None:
+    out[key] = math.hypot(v.x, v.y)
+    out[f"{key}_x"] = v.x
+    out[f"{key}_y"] = v.y
+
+
+def moving_points(lk: Linkage) -> list[str]:
+    """Every moving joint and named point, in the order they become known."""
+    names = [lk.joint]
+    for g in lk.groups:
+        if g.joint:
+            names.append(g.joint)
+    names += [p.name for p in lk.points]
+    order = {n: i for i, n in enumerate(lk.owner)}
+    return sorted(dict.fromkeys(names), key=lambda n: order[n])
+
+
+def position_results(lk: Linkage, P: Position) -> dict[str, Any]:
+    """One object of ``results.positions``: everything read off position P's plans."""
+    out: dict[str, Any] = {"phi_deg": math.degrees(P.phi) % 360.0}
+    for name in moving_points(lk):
+        p = P.pos[name]
+        out[f"x_{name}"] = p.x
+        out[f"y_{name}"] = p.y
+        _xy(out, f"V_{name}", P.vel[name])
+        _xy(out, f"a_{name}", P.acc[name])
+    for i in lk.moving_links:
+        out[f"omega_{i}"] = P.omega[i]
+    for i in lk.moving_links:
+        out[f"eps_{i}"] = P.eps[i]
+    for name, v in P.v_rel.items():
+        out[f"V_rel_{name}"] = abs(v)
+        out[f"a_cor_{name}"] = P.a_cor[name].norm
+    return out
+
+
+def results(s: Solved) -> dict[str, Any]:
+    """The ``results`` object of ``solve --json`` (linkages.md)."""
+    lk = s.linkage
+    out: dict[str, Any] = {
+        "W": s.W,
+        "structure": [
+            {"kind": g.kind, "links": list(g.links), "class": 2, "order": 2} for g in lk.groups
+        ],
+        "formula": formula(lk),
+    }
+    if s.cycle is not None:
+        out["stroke"] = s.cycle.stroke
+        out["K"] = s.cycle.K
+    out["positions"] = [position_results(lk, P) for P in s.positions]
+    return out
+
+
+def formula(lk: Linkage) -> str:
+    """The structure formula: I(0,1) → II(2,3) → …"""
+    parts = ["I(0,1)"] + [f"II({a},{b})" for a, b in (g.links for g in lk.groups)]
+    return " → ".join(parts)

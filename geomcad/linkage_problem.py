@@ -1,0 +1,105 @@
+"""A linkage file as a problem (:mod:`geomcad.documents`): the model, the solution, the sheets.
+
+The file is the data: the problem has no parameters (``--set`` edits the file's keys), no seed,
+and its ``inputs`` are the file's data. Its results are those of ``../shared/linkages.md``, and
+``scales`` are the sheet's own (k_l of the mechanism, k_v and k_a of the plans), so that
+``geomcad verify`` reads drawn values at the scales they are drawn at.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping, Sequence
+from typing import Any
+
+from geomcad.construction import Construction
+from geomcad.linkage import parse
+from geomcad.linkage.solution import Solved, results, solve
+from geomcad.problem import Build, ParamValue, Problem, ResultSpec, Solution
+
+
+class Protocol(Construction):
+    """The protocols of several positions' constructions, one after another."""
+
+    def __init__(self, title: str, parts: Sequence[Construction]) -> None:
+        super().__init__(title)
+        self.parts = list(parts)
+
+    def trace(self) -> str:
+        return "\n\n".join(p.trace() for p in self.parts)
+
+
+#: How each result is drawn (verify's precision): name prefix → (unit, plan, meaning).
+SPECS: tuple[tuple[str, str, str | None, str], ...] = (
+    ("x_", "m", "l", "a point's x coordinate"),
+    ("y_", "m", "l", "a point's y coordinate"),
+    ("V_rel_", "m/s", "v", "relative velocity in a sliding pair"),
+    ("a_cor_", "m/s²", "a", "Coriolis acceleration in a sliding pair"),
+    ("V_", "m/s", "v", "a point's velocity"),
+    ("a_", "m/s²", "a", "a point's acceleration"),
+    ("omega_", "rad/s", None, "a link's angular velocity, ccw > 0"),
+    ("eps_", "rad/s²", None, "a link's angular acceleration, ccw > 0"),
+    ("R_", "N", "F", "a reaction: the force of link i on link j"),
+    ("M_bal", "N·m", None, "the balancing moment on the crank"),
+)
+
+
+def _specs(res: Mapping[str, Any]) -> tuple[ResultSpec, ...]:
+    names: dict[str, None] = {}
+    for k, v in res.items():
+        names[k] = None
+        if isinstance(v, list):
+            for item in v:
+                if isinstance(item, dict):
+                    names.update(dict.fromkeys(item))
+    out = [
+        ResultSpec("stroke", "m", "the output's stroke H", "l"),
+        ResultSpec("K", "1", "the coefficient of velocity change"),
+        ResultSpec("W", "1", "Chebyshev's mobility"),
+        ResultSpec("phi_deg", "deg", "the crank angle"),
+    ]
+    for name in names:
+        for prefix, unit, drawn, doc in SPECS:
+            if name.startswith(prefix):
+                out.append(ResultSpec(name, unit, doc, drawn))
+                break
+    return tuple(out)
+
+
+def make_problem(file_id: str, data: dict[str, Any]) -> Problem:
+    """The problem a linkage file states (raises :class:`~geomcad.errors.FileKeyError` for a
+    bad file)."""
+    lk = parse(data)
+
+    def build(values: Mapping[str, ParamValue]) -> Build:
+        s = solve(lk)
+        res = results(s)
+        from geomcad.sheet.linkage import sheet_scales
+
+        proto = Protocol(lk.title, [P.c for P in s.positions])
+        return Build(res, proto, [], sheet_scales(s), data=s)
+
+    def draw(sol: Solution) -> list[tuple[str, Any]]:
+        from geomcad.sheet.linkage import kinematic_sheets
+
+        solved: Solved = sol.data
+        return kinematic_sheets(solved, sol.scales)
+
+    return _FileProblem(
+        id=file_id,
+        title=lk.title,
+        params=(),
+        results=(),
+        seed={},
+        build=build,
+        draw=draw,
+        inputs=data,
+    )
+
+
+class _FileProblem(Problem):
+    """A problem whose result specs follow from its results (a file names its own points)."""
+
+    def solve(self, **params: object) -> Solution:
+        sol = super().solve(**params)
+        object.__setattr__(self, "results", _specs(sol.results))
+        return sol
