@@ -82,7 +82,9 @@ def make_problem(file_id: str, data: dict[str, Any]) -> Problem:
         from geomcad.sheet.linkage import kinematic_sheets
 
         solved: Solved = sol.data
-        return kinematic_sheets(solved, sol.scales)
+        from geomcad.documents import stem
+
+        return kinematic_sheets(solved, sol.scales, stem(file_id))
 
     return _FileProblem(
         id=file_id,

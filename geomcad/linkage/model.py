@@ -346,13 +346,13 @@ def _number(
     if not math.isfinite(x):
         raise FileKeyError(name, v, "must be a finite number")
     if gt is not None and not x > gt:
-        raise FileKeyError(name, v, f"= {x:g} must be > {gt:g}{u}")
+        raise FileKeyError(name, v, f"must be > {gt:g}{u}, not {x:g}")
     if ge is not None and not x >= ge:
-        raise FileKeyError(name, v, f"= {x:g} must be ≥ {ge:g}{u}")
+        raise FileKeyError(name, v, f"must be ≥ {ge:g}{u}, not {x:g}")
     if lt is not None and not x < lt:
-        raise FileKeyError(name, v, f"= {x:g} must be < {lt:g}{u}")
+        raise FileKeyError(name, v, f"must be < {lt:g}{u}, not {x:g}")
     if le is not None and not x <= le:
-        raise FileKeyError(name, v, f"= {x:g} must be ≤ {le:g}{u}")
+        raise FileKeyError(name, v, f"must be ≤ {le:g}{u}, not {x:g}")
     return x
 
 
@@ -475,16 +475,6 @@ def parse(data: Mapping[str, Any]) -> Linkage:
             raise FileKeyError("drive.positions", v, f"must be a whole number 1 … {MAX_POSITIONS}")
         positions = v
 
-    # groups
-    used_links = {1}
-    groups: list[Group] = []
-    for i, t in enumerate(_tables(data, "group"), start=1):
-        g = _group(i, t, owner, used_links)
-        groups.append(g)
-    if not groups:
-        raise FileKeyError("group", None, "missing: a mechanism needs at least one [[group]]")
-
-    # points, each resolved as soon as what it names is known (file order)
     lk = Linkage(
         title=title,
         gravity=gravity,
@@ -497,7 +487,7 @@ def parse(data: Mapping[str, Any]) -> Linkage:
         positions=positions,
         output="",
         working="forward",
-        groups=tuple(groups),
+        groups=(),
         points=(),
         masses={},
         loads=(),
@@ -505,8 +495,18 @@ def parse(data: Mapping[str, Any]) -> Linkage:
         sheet=sheet,
         owner=owner,
     )
-    points = _points(lk, _tables(data, "point"), owner)
-    lk = _replace(lk, points=points)
+    # groups in order; each [[point]] is known as soon as its link and what it names are
+    pending = list(enumerate(_tables(data, "point"), start=1))
+    lk = _take_points(lk, pending, owner, final=False)
+    used_links = {1}
+    for i, t in enumerate(_tables(data, "group"), start=1):
+        g = _group(i, t, owner, used_links)
+        lk = _replace(lk, groups=(*lk.groups, g))
+        lk = _take_points(lk, pending, owner, final=False)
+    groups = list(lk.groups)
+    if not groups:
+        raise FileKeyError("group", None, "missing: a mechanism needs at least one [[group]]")
+    lk = _take_points(lk, pending, owner, final=True)
 
     default_out = groups[-1].joint or (groups[-1].slider if groups[-1].kind == "RPR" else "")
     output = _name("drive", drive, "output", default=default_out)
@@ -679,52 +679,63 @@ def _guide(
     return Guide(link, frm=frm, toward=toward, offset=offset)
 
 
-def _points(
-    lk: Linkage, tables: list[dict[str, Any]], owner: dict[str, int]
-) -> tuple[PointDef, ...]:
-    out: list[PointDef] = []
-    links = set(lk.moving_links)
-    for i, t in enumerate(tables, start=1):
-        where = f"point {i}"
-        _check_keys(where, t, POINT_KEYS)
-        name = _name(where, t, "name")
-        where = f'point "{name}"'
-        link = _link_no(f"{where}: link", t.get("link"))
-        if link not in links:
+def _take_points(
+    lk: Linkage, pending: list[tuple[int, dict[str, Any]]], owner: dict[str, int], final: bool
+) -> Linkage:
+    """Add the pending ``[[point]]`` tables whose link is placed and whose ``from``/``toward``
+    are known (removing them from ``pending``); with ``final``, any left over is an error."""
+    progress = True
+    while progress:
+        progress = False
+        for item in list(pending):
+            p = _point_def(lk, *item, owner, final)
+            if p is not None:
+                pending.remove(item)
+                owner[p.name] = p.link
+                lk = _replace(lk, points=(*lk.points, p))
+                progress = True
+    return lk
+
+
+def _point_def(
+    lk: Linkage, i: int, t: dict[str, Any], owner: Mapping[str, int], final: bool
+) -> PointDef | None:
+    """The point table ``t`` (the i-th), or ``None`` while what it names is not known yet."""
+    where = f"point {i}"
+    _check_keys(where, t, POINT_KEYS)
+    name = _name(where, t, "name")
+    where = f'point "{name}"'
+    link = _link_no(f"{where}: link", t.get("link"))
+    if not 1 <= link <= 99:
+        raise FileKeyError(where, link, f"link: {link} is not a moving link of the mechanism")
+    frm = _name(where, t, "from")
+    toward = _name(where, t, "toward")
+    bounds: dict[str, Any] = {"default": 0.0, "ge": -MAX_LENGTH, "le": MAX_LENGTH, "unit": "m"}
+    along = _number(t, "along", where, **bounds)
+    left = _number(t, "left", where, **bounds)
+    if name in owner:
+        raise FileKeyError(where, name, f'name: point "{name}" is named twice')
+    if link not in lk.moving_links:
+        if final:
             raise FileKeyError(where, link, f"link: {link} is not a moving link of the mechanism")
-        frm = _name(where, t, "from")
-        toward = _name(where, t, "toward")
-        along = _number(
-            t, "along", f"point {i}", default=0.0, ge=-MAX_LENGTH, le=MAX_LENGTH, unit="m"
-        )
-        left = _number(
-            t, "left", f"point {i}", default=0.0, ge=-MAX_LENGTH, le=MAX_LENGTH, unit="m"
-        )
-        so_far = _replace(lk, points=tuple(out))
-        on = so_far.points_on(link)
-        if frm not in on:
-            raise FileKeyError(
-                where,
-                frm,
-                f'from: point "{frm}" is not a point of link {link} (its points: {", ".join(on)})',
-            )
-        slide = False
-        if toward not in on:
-            if not lk.has_slide(link) or toward not in owner:
-                raise FileKeyError(
-                    where,
-                    toward,
-                    f'toward: point "{toward}" is not a point of link {link} '
-                    f"(its points: {', '.join(on)})",
-                )
-            slide = True
-        elif toward == frm:
-            raise FileKeyError(where, toward, "toward: from and toward must differ")
-        if name in owner:
-            raise FileKeyError(where, name, f'name: point "{name}" is named twice')
-        owner[name] = link
-        out.append(PointDef(name, link, frm, toward, along, left, slide))
-    return tuple(out)
+        return None
+    on = lk.points_on(link)
+    if frm not in on:
+        if final:
+            why = f'from: point "{frm}" is not a point of link {link}'
+            raise FileKeyError(where, frm, f"{why} (its points: {', '.join(on)})")
+        return None
+    slide = False
+    if toward not in on:
+        if not lk.has_slide(link) or toward not in owner:
+            if final:
+                why = f'toward: point "{toward}" is not a point of link {link}'
+                raise FileKeyError(where, toward, f"{why} (its points: {', '.join(on)})")
+            return None
+        slide = True
+    elif toward == frm:
+        raise FileKeyError(where, toward, "toward: from and toward must differ")
+    return PointDef(name, link, frm, toward, along, left, slide)
 
 
 def _masses(lk: Linkage, t: Mapping[str, Any]) -> dict[int, Mass]:

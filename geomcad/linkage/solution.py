@@ -10,12 +10,18 @@ import math
 from dataclasses import dataclass
 from typing import Any
 
+import numpy as np
+
 from geomcad.geom import Vec
 from geomcad.linkage.cycle import Cycle, cycle, numbered, stroke_middles
 from geomcad.linkage.model import Linkage
 from geomcad.linkage.plans import Position, construct
+from geomcad.linkage.sweep import sweep
 from geomcad.structure import Mechanism, chebyshev, mobility
 from geomcad.structure.model import Link, Pair, prismatic, revolute
+
+#: Crank angles at which a whole turn is checked before the plans are constructed.
+TURN_SAMPLES = 720
 
 #: Positions numbered for the dynamics when the file lists ``phi`` instead of ``positions``.
 DYNAMICS_POSITIONS = 12
@@ -82,6 +88,8 @@ def scheme(lk: Linkage, P: Position) -> Mechanism:
 
 def solve(lk: Linkage) -> Solved:
     """Solve the linkage: its cycle, its numbered (or listed) positions, their plans."""
+    # the whole turn first: a group that cannot close anywhere is named with its crank angle
+    sweep(lk, np.linspace(0.0, 2.0 * math.pi, TURN_SAMPLES, endpoint=False), order=2)
     cyc = cycle(lk)
     if lk.phi is not None:
         phis = list(lk.phi)

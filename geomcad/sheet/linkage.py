@@ -1,1 +1,394 @@
-"""Placeholder replaced below."""
+"""The kinematic sheet of a linkage file (A1), laid out for any mechanism.
+
+The field is cut into regions by one layout rule, whatever the mechanism: the mechanism in all
+its numbered positions (top left), the velocity plan of every position in a grid (top right;
+on a second sheet when there are more than :data:`PLANS_ON_SHEET`), the output's diagrams
+s(φ), v(φ), a(φ) (bottom left: the exact curves of the sweep, and the graphical derivatives by
+chords through the numbered positions), the acceleration plans of two positions (bottom middle)
+and the tables of ω and ε (bottom right). Each view takes the largest scale of its series that
+fits its region: a GOST 2.302 ratio for the mechanism, one factor 1, 2, 2.5, 4, 5 × 10^n for all
+velocity plans and one for the acceleration plans, so every vector is drawn at the stated μ.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
+
+import numpy as np
+
+from geomcad.geom import Vec
+from geomcad.kinematics.plan import Plan
+from geomcad.linkage.model import Linkage
+from geomcad.linkage.plans import Position, construct
+from geomcad.linkage.solution import Solved
+from geomcad.linkage.sweep import output_coordinate, sweep
+from geomcad.sheet import Drawing, TitleBlock, fmt_number, gost_scale_to_fit, start
+from geomcad.sheet.graph import Axis, Graph
+from geomcad.sheet.plans import draw_plan, plan_scale
+from geomcad.sheet.scale import Scale
+from geomcad.sheet.scheme import Body, draw_scheme
+
+#: A1 landscape and its regions (x0, y0, x1, y1 in sheet mm).
+FORMAT = "A1"
+MECH = (26.0, 14.0, 420.0, 318.0)
+VPLANS = (428.0, 14.0, 832.0, 318.0)
+DIAGRAMS = (40.0, 330.0, 412.0, 584.0)
+APLANS = (428.0, 326.0, 642.0, 584.0)
+TABLES = (652.0, 326.0, 832.0, 530.0)
+#: At most this many velocity plans share the first sheet with the mechanism.
+PLANS_ON_SHEET = 12
+#: The second sheet's grid region for more plans.
+PLANS_ALL = (26.0, 14.0, 832.0, 528.0)
+#: Samples of the exact diagrams over a turn.
+DIAGRAM_SAMPLES = 361
+TITLE_ROOM = 8.0  # mm above a view for its title
+
+
+@dataclass(frozen=True)
+class Layout:
+    """The regions and scales of a linkage's kinematic sheets."""
+
+    k_l: Scale
+    k_v: Scale
+    k_a: Scale
+    cells: tuple[tuple[float, float, float, float], ...]  # one per velocity plan
+    second: bool  # the velocity plans go on a second sheet
+    accel: tuple[Position, ...]
+
+
+def _grid(
+    box: tuple[float, float, float, float], n: int
+) -> tuple[tuple[float, float, float, float], ...]:
+    """n cells of a grid filling ``box``, as square as the box allows, row by row."""
+    x0, y0, x1, y1 = box
+    w, h = x1 - x0, y1 - y0
+    best = (1, n)
+    best_side = 0.0
+    for cols in range(1, n + 1):
+        rows = math.ceil(n / cols)
+        side = min(w / cols, h / rows)
+        if side > best_side:
+            best, best_side = (cols, rows), side
+    cols, rows = best
+    cw, ch = w / cols, h / rows
+    return tuple(
+        (
+            x0 + (i % cols) * cw,
+            y0 + (i // cols) * ch,
+            x0 + (i % cols + 1) * cw,
+            y0 + (i // cols + 1) * ch,
+        )
+        for i in range(n)
+    )
+
+
+def _inner(
+    cell: tuple[float, float, float, float], title: float = TITLE_ROOM
+) -> tuple[float, float]:
+    return cell[2] - cell[0] - 6.0, cell[3] - cell[1] - title - 6.0
+
+
+def _common_scale(
+    plans: Sequence[Plan], cells: Sequence[tuple[float, float, float, float]]
+) -> Scale:
+    """The one factor at which every plan fits its cell: the largest of their own."""
+    scales = [plan_scale(p, *_inner(c)) for p, c in zip(plans, cells, strict=True)]
+    return max(scales, key=lambda s: s.k)
+
+
+def _mechanism_extent(s: Solved) -> tuple[float, float, float, float]:
+    xs: list[float] = []
+    ys: list[float] = []
+    for P in s.positions:
+        for q in P.pos.values():
+            xs.append(q.x)
+            ys.append(q.y)
+    return min(xs), min(ys), max(xs), max(ys)
+
+
+def layout(s: Solved) -> Layout:
+    """Where every view goes and at what scale (see the module's docstring)."""
+    n = len(s.positions)
+    second = n > PLANS_ON_SHEET
+    cells = _grid(PLANS_ALL if second else VPLANS, n)
+    k_v = _common_scale([P.vp for P in s.positions], cells)
+    lk = s.linkage
+    accel = tuple(
+        next((P for P in s.positions if abs(P.phi - phi) < 1e-12), None) or construct(lk, phi)
+        for phi in s.accel_phis
+    )
+    acells = _grid(APLANS, len(accel))
+    k_a = _common_scale([P.ap for P in accel], acells)
+    x0, y0, x1, y1 = _mechanism_extent(s)
+    pad = 0.04 * max(x1 - x0, y1 - y0, lk.length)
+    w, h = _inner(MECH, TITLE_ROOM + 4.0)
+    k_l = gost_scale_to_fit(x1 - x0 + 2 * pad, y1 - y0 + 2 * pad, w, h)
+    return Layout(k_l, k_v, k_a, cells, second, accel)
+
+
+def sheet_scales(s: Solved) -> dict[str, float]:
+    """The scale of each drawn quantity (for ``verify``): k_l, k_v, k_a."""
+    lay = layout(s)
+    return {"l": lay.k_l.k, "v": lay.k_v.k, "a": lay.k_a.k}
+
+
+def kinematic_sheets(
+    s: Solved, scales: Mapping[str, float], stem: str = ""
+) -> list[tuple[str, object]]:
+    """The kinematic sheet (and, with many positions, a second sheet of velocity plans)."""
+    lk = s.linkage
+    lay = layout(s)
+    count = 2 if lay.second else 1
+    designation = f"ТММ.{stem or 'МЕХ'}.01"
+    d = start(FORMAT, _title(lk, "Кинематический анализ", designation, lay.k_l, 1, count))
+    _mechanism(d, s, lay.k_l)
+    if not lay.second:
+        _vplans(d, s, lay)
+    _diagrams(d, s)
+    _aplans(d, lay)
+    _tables(d, s, lay)
+    out: list[tuple[str, object]] = [("", d.finish())]
+    if lay.second:
+        d2 = start(FORMAT, _title(lk, "Планы скоростей", designation, None, 2, count))
+        _vplans(d2, s, lay)
+        out.append(("plans", d2.finish()))
+    return out
+
+
+def _title(
+    lk: Linkage, what: str, designation: str, k: Scale | None, no: int, count: int
+) -> TitleBlock:
+    return TitleBlock(
+        title=f"{what}. {lk.title}" if len(lk.title) < 40 else what,
+        designation=designation,
+        scale=k.ratio_text() if k is not None else "",
+        sheet_no=no,
+        sheets=count,
+    )
+
+
+# --- the mechanism ----------------------------------------------------------------------------
+
+
+def _bodies(lk: Linkage, P: Position) -> dict[str, list[Body]]:
+    """Each link's body through all its points (a slotted link along its slide, past the block)."""
+    out: dict[str, list[Body]] = {}
+    for link in lk.moving_links:
+        pts = [P.pos[n] for n in lk.points_on(link)]
+        uniq: list[Vec] = []
+        for q in pts:
+            if not any(q.dist(u) < 1e-9 * max(1.0, q.norm) for u in uniq):
+                uniq.append(q)
+        g = lk.group_of(link)
+        if g is not None and g.kind == "RPR" and link == g.links[1]:
+            d = P.slide[link]
+            C = P.pos[g.pivot]
+            far = max([(q - C).dot(d) for q in [P.pos[g.slider], *uniq]])
+            foot = C + d.perp() * g.offset
+            out[str(link)] = (
+                [Body.of([C, foot, foot + d * (far * 1.15)])]
+                if g.offset
+                else [Body.of([C, C + d * (far * 1.15)])]
+            )
+            continue
+        if len(uniq) < 2:
+            continue
+        if len(uniq) == 2:
+            out[str(link)] = [Body.of(uniq)]
+        else:
+            cx = sum(q.x for q in uniq) / len(uniq)
+            cy = sum(q.y for q in uniq) / len(uniq)
+            ring = sorted(uniq, key=lambda q: math.atan2(q.y - cy, q.x - cx))
+            out[str(link)] = [Body.of(ring, closed=True)]
+    return out
+
+
+def _mechanism(d: Drawing, s: Solved, k: Scale) -> None:
+    lk = s.linkage
+    x0, y0, x1, y1 = _mechanism_extent(s)
+    d.text(
+        "Механизм в положениях 0 … " + str(len(s.positions) - 1),
+        (MECH[0] + 2.0, MECH[1] + 4.0),
+        5.0,
+    )
+    d.text(f"{k.label()}   (M {k.ratio_text()})", (MECH[0] + 2.0, MECH[1] + 10.5), 3.5)
+    at = ((MECH[0] + MECH[2]) / 2.0, (MECH[1] + TITLE_ROOM + 8.0 + MECH[3]) / 2.0)
+    v = d.viewport(k, ((x0 + x1) / 2.0, (y0 + y1) / 2.0), at)
+    # paths: the crank circle, the traced points, the guides
+    v.circle(lk.frame[lk.pivot], lk.length, "centre")
+    phi = np.linspace(0.0, 2.0 * math.pi, DIAGRAM_SAMPLES)
+    st = sweep(lk, phi, order=0)
+    for p in lk.points:
+        v.polyline([Vec(float(a), float(b)) for a, b in st.pos[p.name]], "centre")
+    # every other position in thin lines, numbered at the crank's joint and the output
+    P0 = s.positions[0]
+    for i, P in enumerate(s.positions):
+        if i > 0:
+            for bodies in _bodies(lk, P).values():
+                for b in bodies:
+                    v.polyline(b.points, "thin", closed=b.closed)
+        for name in dict.fromkeys((lk.joint, lk.output)):
+            v.dot(P.pos[name])
+            v.label(P.pos[name], f"{name}_{{{i}}}", 2.5, clear=1.0)
+    labels = {}
+    for pair in s.scheme.pairs:
+        name = pair.name.split(":")[0]
+        if name in P0.pos and name not in (lk.joint, lk.output):
+            labels[pair.name] = name
+    draw_scheme(v, s.scheme, bodies=_bodies(lk, P0), pair_labels=labels, label_height=3.5)
+    for p in lk.points:
+        v.dot(P0.pos[p.name])
+        v.label(P0.pos[p.name], p.name, 3.5, clear=1.0)
+
+
+# --- the plans --------------------------------------------------------------------------------
+
+
+def _vplans(d: Drawing, s: Solved, lay: Layout) -> None:
+    box = PLANS_ALL if lay.second else VPLANS
+    d.text(f"Планы скоростей, {lay.k_v.label()}", (box[0] + 2.0, box[1] + 4.0), 5.0)
+    for i, (P, cell) in enumerate(zip(s.positions, lay.cells, strict=True)):
+        inner = (cell[0] + 3.0, cell[1] + 8.0, cell[2] - 3.0, cell[3] - 2.0)
+        draw_plan(
+            d,
+            P.vp,
+            lay.k_v,
+            inner,
+            title=f"Положение {i}, φ_1 = {fmt_number(math.degrees(P.phi) % 360, digits=4)}°",
+        )
+
+
+def _aplans(d: Drawing, lay: Layout) -> None:
+    cells = _grid(APLANS, len(lay.accel))
+    for P, cell in zip(lay.accel, cells, strict=True):
+        phi = fmt_number(math.degrees(P.phi) % 360, digits=4)
+        draw_plan(d, P.ap, lay.k_a, cell, title=f"План ускорений, φ_1 = {phi}°, {lay.k_a.label()}")
+
+
+# --- the diagrams -----------------------------------------------------------------------------
+
+
+def _diagrams(d: Drawing, s: Solved) -> None:
+    lk = s.linkage
+    if s.cycle is None:
+        d.text(
+            "Выходное звено не ползун: диаграммы s, v, a не строятся",
+            (DIAGRAMS[0], DIAGRAMS[1] + 6.0),
+            3.5,
+        )
+        return
+    sign = 1.0 if lk.omega > 0 else -1.0
+    psi = np.linspace(0.0, 2.0 * math.pi, DIAGRAM_SAMPLES)
+    phi = s.cycle.phi_start + sign * psi
+    st = sweep(lk, phi, order=2)
+    coord = output_coordinate(lk, st)
+    assert coord is not None
+    fwd = 1.0 if lk.working == "forward" else -1.0
+    g = lk.output_guide
+    assert g is not None
+    sl = st.slide[g.links[1]]
+    s_m = fwd * (coord - (s.cycle.s_min if fwd > 0 else s.cycle.s_max))
+    v_m = fwd * (st.vel[lk.output] * sl).sum(axis=1)
+    a_m = fwd * (st.acc[lk.output] * sl).sum(axis=1)
+    n = len(s.positions)
+    # graphical differentiation by chords through the numbered positions
+    psi_k = np.array([2.0 * math.pi * k / n for k in range(n + 1)])
+    s_k = np.interp(psi_k, psi, s_m)
+    dt = (2.0 * math.pi / n) / abs(lk.omega)
+    v_ch = np.diff(s_k) / dt
+    psi_v = (psi_k[:-1] + psi_k[1:]) / 2.0
+    v_ext = np.concatenate([v_ch, v_ch[:1]])
+    a_ch = np.diff(v_ext) / dt
+    psi_a = psi_v + math.pi / n
+    rows = [
+        ("S", "м", s_m, psi_k, s_k, "s"),
+        ("v", "м/с", v_m, psi_v, v_ch, "v"),
+        ("a", "м/с²", a_m, psi_a % (2 * math.pi), a_ch, "a"),
+    ]
+    x0, y0, x1, y1 = DIAGRAMS
+    h = (y1 - y0) / 3.0
+    room_x = x1 - x0 - 30.0
+    for i, (sym, unit, exact, gx, gy, name) in enumerate(rows):
+        top = y0 + i * h + 8.0
+        bottom = y0 + (i + 1) * h - 8.0
+        lo = float(min(exact.min(), gy.min(), 0.0))
+        hi = float(max(exact.max(), gy.max(), 0.0))
+        ax_y = Axis.fit(sym, unit, lo, hi, bottom - top, name)
+        ax_x = Axis("φ", "град", 0.0, 360.0, 360.0 / room_x, "φ", tick=30.0)
+        at = (x0 + 4.0, top + ax_y.mm(ax_y.hi - ax_y.zero))
+        gr = Graph(d, ax_x, ax_y, at)
+        gr.axes(tick_labels=True)
+        gr.curve(np.degrees(psi), exact, "result")
+        order = np.argsort(gx)
+        gxs, gys = np.degrees(gx[order]), gy[order]
+        gr.curve(gxs, gys, "construction")
+        for xx, yy in zip(gxs, gys, strict=True):
+            gr.point(float(xx), float(yy))
+        d.text(
+            f"{ax_y.factor_text()};  {ax_x.factor_text()}",
+            (x1, y0 + i * h + 4.0),
+            2.5,
+            anchor="right",
+        )
+
+
+# --- the tables -------------------------------------------------------------------------------
+
+
+def _tables(d: Drawing, s: Solved, lay: Layout) -> None:
+    lk = s.linkage
+    links = [i for i in lk.moving_links if i != 1 and _turns(lk, i)]
+    head = ["№", "φ_1, °", f"V_{{{lk.output}}}, м/с", *[f"ω_{{{i}}}, с^{{-1}}" for i in links]]
+    rows: list[list[str]] = [head]
+    for i, P in enumerate(s.positions):
+        rows.append(
+            [
+                str(i),
+                fmt_number(math.degrees(P.phi) % 360, digits=4),
+                _num(P.vel[lk.output].norm, abs(lk.omega) * lk.length),
+                *[_num(P.omega[j], abs(lk.omega)) for j in links],
+            ]
+        )
+    x0, y0, x1, y1 = TABLES
+    width = x1 - x0
+    first = [8.0, 16.0, 20.0]
+    rest = (width - sum(first)) / max(len(links), 1)
+    widths = [*first, *[rest] * len(links)]
+    row_h = min(7.0, (y1 - y0 - 60.0) / (len(rows) + 1))
+    d.text("Угловые скорости звеньев", (x0, y0 + 4.0), 3.5)
+    _, th = d.table(x0, y0 + 7.0, widths, rows, 2.5, row_h)
+    head2 = ["φ_1, °", f"a_{{{lk.output}}}, м/с²", *[f"ε_{{{i}}}, с^{{-2}}" for i in links]]
+    rows2: list[list[str]] = [head2]
+    for P in lay.accel:
+        rows2.append(
+            [
+                fmt_number(math.degrees(P.phi) % 360, digits=4),
+                _num(P.acc[lk.output].norm, lk.omega**2 * lk.length),
+                *[_num(P.eps[j], lk.omega**2) for j in links],
+            ]
+        )
+    w2 = [16.0, 22.0, *[(width - 38.0) / max(len(links), 1)] * len(links)]
+    yy = y0 + 7.0 + th + 8.0
+    d.text("Угловые ускорения звеньев", (x0, yy), 3.5)
+    d.table(x0, yy + 3.0, w2, rows2, 2.5, 7.0)
+
+
+def _turns(lk: Linkage, link: int) -> bool:
+    """False for a link that cannot turn: a slider on a fixed guide, the links of a PRP."""
+    g = lk.group_of(link)
+    if g is None:
+        return True
+    if g.kind == "PRP":
+        return False
+    return not (g.kind == "RRP" and link == g.links[1] and g.guide is not None and g.guide.fixed)
+
+
+#: Values below this fraction of their quantity's scale print as 0 (round-off of a zero).
+ZERO = 1.0e-9
+
+
+def _num(x: float, scale: float) -> str:
+    """A table value to 3 significant figures; round-off of a zero as 0."""
+    return "0" if abs(x) <= ZERO * scale else fmt_number(x, digits=3)

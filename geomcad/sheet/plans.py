@@ -51,12 +51,15 @@ def draw_plan(
     box: tuple[float, float, float, float],
     lang: Lang = "ru",
     style: ScaleStyle | None = None,
+    title: str | None = None,
 ) -> Viewport:
     """Draw ``plan`` at ``scale`` centred in the sheet rectangle ``box`` (x0, y0, x1, y1; the
-    title goes on its top edge) and return the viewport (pole at the plan's origin)."""
+    title goes on its top edge: ``title``, or the plan's kind with its factor) and return the
+    viewport (pole at the plan's origin)."""
     x0, y0, x1, y1 = plan.extent()
     bx0, by0, bx1, by1 = box
-    title = f"{TITLES[lang][plan.kind]}, {scale.label(style or ScaleStyle(lang=lang))}"
+    if title is None:
+        title = f"{TITLES[lang][plan.kind]}, {scale.label(style or ScaleStyle(lang=lang))}"
     d.text(title, (bx0, by0 + 3.5), 3.5)
     at = ((bx0 + bx1) / 2.0, (by0 + 6.0 + by1) / 2.0)
     v = d.viewport(scale, ((x0 + x1) / 2.0, (y0 + y1) / 2.0), at)
