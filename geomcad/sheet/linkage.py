@@ -25,7 +25,7 @@ from geomcad.linkage.plans import Position, construct
 from geomcad.linkage.solution import Solved
 from geomcad.linkage.sweep import output_coordinate, sweep
 from geomcad.sheet import Drawing, TitleBlock, fmt_number, gost_scale_to_fit, start
-from geomcad.sheet.graph import Axis, Graph
+from geomcad.sheet.graph import Axis, Graph, nice_step
 from geomcad.sheet.plans import draw_plan, plan_scale
 from geomcad.sheet.scale import Scale
 from geomcad.sheet.scheme import Body, draw_scheme
@@ -34,7 +34,7 @@ from geomcad.sheet.scheme import Body, draw_scheme
 FORMAT = "A1"
 MECH = (26.0, 14.0, 420.0, 318.0)
 VPLANS = (428.0, 14.0, 832.0, 318.0)
-DIAGRAMS = (40.0, 330.0, 412.0, 584.0)
+DIAGRAMS = (26.0, 326.0, 420.0, 584.0)
 APLANS = (428.0, 326.0, 642.0, 584.0)
 TABLES = (652.0, 326.0, 832.0, 530.0)
 #: At most this many velocity plans share the first sheet with the mechanism.
@@ -45,6 +45,8 @@ PLANS_ALL = (26.0, 14.0, 832.0, 528.0)
 DIAGRAM_SAMPLES = 361
 TITLE_ROOM = 8.0  # mm above a view for its title
 
+Box = tuple[float, float, float, float]
+
 
 @dataclass(frozen=True)
 class Layout:
@@ -53,79 +55,90 @@ class Layout:
     k_l: Scale
     k_v: Scale
     k_a: Scale
-    cells: tuple[tuple[float, float, float, float], ...]  # one per velocity plan
+    cells: tuple[Box, ...]  # one per velocity plan
     second: bool  # the velocity plans go on a second sheet
     accel: tuple[Position, ...]
+    acells: tuple[Box, ...]  # one per acceleration plan
 
 
-def _grid(
-    box: tuple[float, float, float, float], n: int
-) -> tuple[tuple[float, float, float, float], ...]:
-    """n cells of a grid filling ``box``, as square as the box allows, row by row."""
+def _grid(box: Box, n: int, content: tuple[float, float] = (1.0, 1.0)) -> tuple[Box, ...]:
+    """n cells filling ``box`` row by row, in the arrangement (columns × rows) that draws a
+    content of ``content`` = (width, height) (model units, each cell alike) the largest."""
     x0, y0, x1, y1 = box
     w, h = x1 - x0, y1 - y0
-    best = (1, n)
-    best_side = 0.0
-    for cols in range(1, n + 1):
-        rows = math.ceil(n / cols)
-        side = min(w / cols, h / rows)
-        if side > best_side:
-            best, best_side = (cols, rows), side
-    cols, rows = best
+    cw_, ch_ = (max(c, 1e-300) for c in content)
+    cols = max(
+        range(1, n + 1),
+        key=lambda c: min((w / c - 6.0) / cw_, (h / math.ceil(n / c) - TITLE_ROOM - 6.0) / ch_),
+    )
+    rows = math.ceil(n / cols)
     cw, ch = w / cols, h / rows
     return tuple(
-        (
-            x0 + (i % cols) * cw,
-            y0 + (i // cols) * ch,
-            x0 + (i % cols + 1) * cw,
-            y0 + (i // cols + 1) * ch,
-        )
-        for i in range(n)
+        (x0 + c * cw, y0 + r * ch, x0 + (c + 1) * cw, y0 + (r + 1) * ch)
+        for r, c in (divmod(i, cols) for i in range(n))
     )
 
 
-def _inner(
-    cell: tuple[float, float, float, float], title: float = TITLE_ROOM
-) -> tuple[float, float]:
+def _content(plans: Sequence[Plan]) -> tuple[float, float]:
+    """The largest width and height of the plans (plan units)."""
+    ext = [p.extent() for p in plans]
+    return max(e[2] - e[0] for e in ext), max(e[3] - e[1] for e in ext)
+
+
+def _inner(cell: Box, title: float = TITLE_ROOM) -> tuple[float, float]:
     return cell[2] - cell[0] - 6.0, cell[3] - cell[1] - title - 6.0
 
 
-def _common_scale(
-    plans: Sequence[Plan], cells: Sequence[tuple[float, float, float, float]]
-) -> Scale:
+def _common_scale(plans: Sequence[Plan], cells: Sequence[Box]) -> Scale:
     """The one factor at which every plan fits its cell: the largest of their own."""
     scales = [plan_scale(p, *_inner(c)) for p, c in zip(plans, cells, strict=True)]
     return max(scales, key=lambda s: s.k)
 
 
 def _mechanism_extent(s: Solved) -> tuple[float, float, float, float]:
-    xs: list[float] = []
-    ys: list[float] = []
+    """The model box of everything the mechanism view draws: every position's points and link
+    bodies, the crank circle and the traced paths."""
+    lk = s.linkage
+    pts: list[Vec] = []
     for P in s.positions:
-        for q in P.pos.values():
-            xs.append(q.x)
-            ys.append(q.y)
+        pts += list(P.pos.values())
+        for bodies in _bodies(lk, P).values():
+            for b in bodies:
+                pts += list(b.points)
+    O1 = lk.frame[lk.pivot]
+    pts += [O1 + Vec(lk.length, lk.length), O1 - Vec(lk.length, lk.length)]
+    for path in _paths(lk).values():
+        pts += path
+    xs = [q.x for q in pts]
+    ys = [q.y for q in pts]
     return min(xs), min(ys), max(xs), max(ys)
+
+
+def _paths(lk: Linkage) -> dict[str, list[Vec]]:
+    """The paths of the named points over a turn (sampled by the sweep)."""
+    phi = np.linspace(0.0, 2.0 * math.pi, DIAGRAM_SAMPLES)
+    st = sweep(lk, phi, order=0)
+    return {p.name: [Vec(float(a), float(b)) for a, b in st.pos[p.name]] for p in lk.points}
 
 
 def layout(s: Solved) -> Layout:
     """Where every view goes and at what scale (see the module's docstring)."""
     n = len(s.positions)
     second = n > PLANS_ON_SHEET
-    cells = _grid(PLANS_ALL if second else VPLANS, n)
+    cells = _grid(PLANS_ALL if second else VPLANS, n, _content([P.vp for P in s.positions]))
     k_v = _common_scale([P.vp for P in s.positions], cells)
     lk = s.linkage
     accel = tuple(
         next((P for P in s.positions if abs(P.phi - phi) < 1e-12), None) or construct(lk, phi)
         for phi in s.accel_phis
     )
-    acells = _grid(APLANS, len(accel))
+    acells = _grid(APLANS, len(accel), _content([P.ap for P in accel]))
     k_a = _common_scale([P.ap for P in accel], acells)
     x0, y0, x1, y1 = _mechanism_extent(s)
     pad = 0.04 * max(x1 - x0, y1 - y0, lk.length)
     w, h = _inner(MECH, TITLE_ROOM + 4.0)
     k_l = gost_scale_to_fit(x1 - x0 + 2 * pad, y1 - y0 + 2 * pad, w, h)
-    return Layout(k_l, k_v, k_a, cells, second, accel)
+    return Layout(k_l, k_v, k_a, cells, second, accel, acells)
 
 
 def sheet_scales(s: Solved) -> dict[str, float]:
@@ -218,10 +231,8 @@ def _mechanism(d: Drawing, s: Solved, k: Scale) -> None:
     v = d.viewport(k, ((x0 + x1) / 2.0, (y0 + y1) / 2.0), at)
     # paths: the crank circle, the traced points, the guides
     v.circle(lk.frame[lk.pivot], lk.length, "centre")
-    phi = np.linspace(0.0, 2.0 * math.pi, DIAGRAM_SAMPLES)
-    st = sweep(lk, phi, order=0)
-    for p in lk.points:
-        v.polyline([Vec(float(a), float(b)) for a, b in st.pos[p.name]], "centre")
+    for path in _paths(lk).values():
+        v.polyline(path, "centre")
     # every other position in thin lines, numbered at the crank's joint and the output
     P0 = s.positions[0]
     for i, P in enumerate(s.positions):
@@ -239,8 +250,9 @@ def _mechanism(d: Drawing, s: Solved, k: Scale) -> None:
             labels[pair.name] = name
     draw_scheme(v, s.scheme, bodies=_bodies(lk, P0), pair_labels=labels, label_height=3.5)
     for p in lk.points:
-        v.dot(P0.pos[p.name])
-        v.label(P0.pos[p.name], p.name, 3.5, clear=1.0)
+        if p.name not in labels.values():
+            v.dot(P0.pos[p.name])
+            v.label(P0.pos[p.name], p.name, 3.5, clear=1.0)
 
 
 # --- the plans --------------------------------------------------------------------------------
@@ -261,8 +273,7 @@ def _vplans(d: Drawing, s: Solved, lay: Layout) -> None:
 
 
 def _aplans(d: Drawing, lay: Layout) -> None:
-    cells = _grid(APLANS, len(lay.accel))
-    for P, cell in zip(lay.accel, cells, strict=True):
+    for P, cell in zip(lay.accel, lay.acells, strict=True):
         phi = fmt_number(math.degrees(P.phi) % 360, digits=4)
         draw_plan(d, P.ap, lay.k_a, cell, title=f"План ускорений, φ_1 = {phi}°, {lay.k_a.label()}")
 
@@ -270,53 +281,70 @@ def _aplans(d: Drawing, lay: Layout) -> None:
 # --- the diagrams -----------------------------------------------------------------------------
 
 
-def _diagrams(d: Drawing, s: Solved) -> None:
+def _output_curves(
+    s: Solved, psi: np.ndarray
+) -> tuple[list[tuple[str, str, str]], np.ndarray, np.ndarray, np.ndarray]:
+    """The output's coordinate and its first two time derivatives over the crank's turn ψ from
+    position 0, with their (symbol, unit, factor name): a slider's s, v, a from the working
+    stroke's start in the working direction, else the output link's angle ψ (from position 0,
+    ccw > 0, rad), ω and ε."""
     lk = s.linkage
-    if s.cycle is None:
-        d.text(
-            "Выходное звено не ползун: диаграммы s, v, a не строятся",
-            (DIAGRAMS[0], DIAGRAMS[1] + 6.0),
-            3.5,
-        )
-        return
     sign = 1.0 if lk.omega > 0 else -1.0
-    psi = np.linspace(0.0, 2.0 * math.pi, DIAGRAM_SAMPLES)
-    phi = s.cycle.phi_start + sign * psi
+    phi = s.positions[0].phi + sign * psi
     st = sweep(lk, phi, order=2)
-    coord = output_coordinate(lk, st)
-    assert coord is not None
-    fwd = 1.0 if lk.working == "forward" else -1.0
     g = lk.output_guide
-    assert g is not None
-    sl = st.slide[g.links[1]]
-    s_m = fwd * (coord - (s.cycle.s_min if fwd > 0 else s.cycle.s_max))
-    v_m = fwd * (st.vel[lk.output] * sl).sum(axis=1)
-    a_m = fwd * (st.acc[lk.output] * sl).sum(axis=1)
-    n = len(s.positions)
-    # graphical differentiation by chords through the numbered positions
+    if g is not None and s.cycle is not None:
+        coord = output_coordinate(lk, st)
+        assert coord is not None
+        fwd = 1.0 if lk.working == "forward" else -1.0
+        sl = st.slide[g.links[1]]
+        s_m = fwd * (coord - (s.cycle.s_min if fwd > 0 else s.cycle.s_max))
+        v_m = fwd * (st.vel[lk.output] * sl).sum(axis=1)
+        a_m = fwd * (st.acc[lk.output] * sl).sum(axis=1)
+        names = [("S", "м", "s"), ("v", "м/с", "v"), ("a", "м/с²", "a")]
+        return names, s_m, v_m, a_m
+    link = lk.owner[lk.output]
+    base = next(p for p in lk.points_on(link) if p != lk.output)
+    r = st.pos[lk.output] - st.pos[base]
+    ang = np.unwrap(np.arctan2(r[:, 1], r[:, 0]))
+    names = [
+        (f"ψ_{{{link}}}", "рад", "ψ"),
+        (f"ω_{{{link}}}", "с^{-1}", "ω"),
+        (f"ε_{{{link}}}", "с^{-2}", "ε"),
+    ]
+    return names, ang - ang[0], st.omega[link], st.eps[link]
+
+
+def _diagrams(d: Drawing, s: Solved) -> None:
+    """The output's diagrams over a turn from position 0: the exact curves of the sweep, and
+    the derivatives by chords through the numbered positions (graphical differentiation)."""
+    lk = s.linkage
+    psi = np.linspace(0.0, 2.0 * math.pi, DIAGRAM_SAMPLES)
+    names, s_m, v_m, a_m = _output_curves(s, psi)
+    n = max(len(s.positions), 12) if lk.phi is not None else len(s.positions)
     psi_k = np.array([2.0 * math.pi * k / n for k in range(n + 1)])
     s_k = np.interp(psi_k, psi, s_m)
     dt = (2.0 * math.pi / n) / abs(lk.omega)
     v_ch = np.diff(s_k) / dt
     psi_v = (psi_k[:-1] + psi_k[1:]) / 2.0
-    v_ext = np.concatenate([v_ch, v_ch[:1]])
-    a_ch = np.diff(v_ext) / dt
-    psi_a = psi_v + math.pi / n
-    rows = [
-        ("S", "м", s_m, psi_k, s_k, "s"),
-        ("v", "м/с", v_m, psi_v, v_ch, "v"),
-        ("a", "м/с²", a_m, psi_a % (2 * math.pi), a_ch, "a"),
-    ]
+    a_ch = np.diff(np.concatenate([v_ch, v_ch[:1]])) / dt
+    psi_a = (psi_v + math.pi / n) % (2.0 * math.pi)
+    rows = [(s_m, psi_k, s_k), (v_m, psi_v, v_ch), (a_m, psi_a, a_ch)]
     x0, y0, x1, y1 = DIAGRAMS
     h = (y1 - y0) / 3.0
-    room_x = x1 - x0 - 30.0
-    for i, (sym, unit, exact, gx, gy, name) in enumerate(rows):
-        top = y0 + i * h + 8.0
-        bottom = y0 + (i + 1) * h - 8.0
+    room_x = x1 - x0 - 24.0
+    k_phi = 1.0 if room_x >= 360.0 else nice_step(360.0 / room_x)
+    through = (
+        f"положения 0 … {n - 1}" if lk.phi is None else f"{n} равных делений оборота кривошипа"
+    )
+    d.text(f"Диаграммы выходного звена: точные кривые и хорды через {through}", (x0, y0), 3.5)
+    for i, ((sym, unit, name), (exact, gx, gy)) in enumerate(zip(names, rows, strict=True)):
+        top = y0 + i * h + 12.0
+        bottom = y0 + (i + 1) * h - 9.0
         lo = float(min(exact.min(), gy.min(), 0.0))
         hi = float(max(exact.max(), gy.max(), 0.0))
         ax_y = Axis.fit(sym, unit, lo, hi, bottom - top, name)
-        ax_x = Axis("φ", "град", 0.0, 360.0, 360.0 / room_x, "φ", tick=30.0)
+        ax_x = Axis("φ", "град", 0.0, 360.0, k_phi, "φ", tick=30.0)
         at = (x0 + 4.0, top + ax_y.mm(ax_y.hi - ax_y.zero))
         gr = Graph(d, ax_x, ax_y, at)
         gr.axes(tick_labels=True)
@@ -328,7 +356,7 @@ def _diagrams(d: Drawing, s: Solved) -> None:
             gr.point(float(xx), float(yy))
         d.text(
             f"{ax_y.factor_text()};  {ax_x.factor_text()}",
-            (x1, y0 + i * h + 4.0),
+            (x1, y0 + i * h + 8.0),
             2.5,
             anchor="right",
         )
