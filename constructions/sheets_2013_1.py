@@ -110,8 +110,6 @@ def sheets(sol: Solution) -> list[tuple[str, Sheet]]:
         title="Механизм крышки вулканизатора: структура и мёртвое положение толкателя",
         designation="ТММ.2013-1.01",
         scale=ratio,
-        organisation="geomcad",
-        developer="geomcad",
     )
     d = start("A2", tb)
     box = _box(_scheme_points(geo))
@@ -183,7 +181,7 @@ def _schemes(d: Drawing, geo: Geometry, k: Scale, box: tuple[float, float, float
     d.text("Структурная схема до замены", (BEFORE[0], 12.0), 5.0)
     d.text(
         f"n = {geo.before.n}, p_5 = {geo.before.p5}, p_4 = {geo.before.p4};   {k.label()}",
-        (BEFORE[0], 19.0),
+        (BEFORE[0], 24.0),
         3.5,
     )
     draw_scheme(
@@ -198,7 +196,7 @@ def _schemes(d: Drawing, geo: Geometry, k: Scale, box: tuple[float, float, float
     d.text("После замены высшей пары K", (AFTER[0], 12.0), 5.0)
     d.text(
         f"n = {rep.n}, p_5 = {rep.p5}, p_4 = {rep.p4};   заменяющее звено 8",
-        (AFTER[0], 19.0),
+        (AFTER[0], 24.0),
         3.5,
     )
     draw_scheme(
@@ -414,7 +412,6 @@ def _kind_ru(kind: str) -> str:
 def _panel(d: Drawing, sol: Solution, geo: Geometry) -> None:
     x, y = PANEL_X, 8.0
     r = sol.results
-    seed = sol.seed
     y = d.text("Звенья", (x, y + 3.5), 3.5).at[1] + 1.0
     names = "; ".join(f"{lk.id} – {lk.name}" for lk in geo.before.links)
     y = d.paragraph(names + "; 8 – заменяющее звено (ползун).", x, y, PANEL_W, 2.5) + 2.0
@@ -437,36 +434,29 @@ def _panel(d: Drawing, sol: Solution, geo: Geometry) -> None:
     )
     y += 6.0 + h + 5.0
     d.text("Число степеней свободы", (x, y + 3.5), 3.5)
-    n, p5, p4, local = geo.counts
-    rows = [["Величина", "Счёт", "Точно", "Опубл."]]
+    n, p5, p4, _local = geo.counts
+    rows = [["Величина", "Счёт", "W"]]
     if geo.counts_mode:
         formal = f"3·{n} – 2·{p5} – {p4}"
         after = f"3·{n + p4} – 2·{p5 + 2 * p4}"
-        seedr = f"3·{n - local + p4} – 2·{p5 - local + 2 * p4}"
     else:
-        mb, ma, ms = geo.mob_before, geo.mob_after, geo.mob_seed
+        mb, ma = geo.mob_before, geo.mob_after
         formal = f"3·{mb.n} – 2·{mb.p5} – {mb.p4}"
         after = f"3·{ma.n} – 2·{ma.p5} – {ma.p4}"
-        seedr = f"3·{ms.n} – 2·{ms.p5}"
     for name, label, how in (
         ("W_formal", "W до замены", formal),
         ("W_local", "W_{мест} (ролик 6)", "вращение ролика"),
         ("W_true", "W_{ист}", "W – W_{мест}"),
         ("W_after_replacement", "W после замены", after),
-        ("W_after_seed", "W по решению", seedr + " (без ролика)"),
     ):
-        pub = seed.get(name)
-        rows.append([label, how, str(r[name]), "" if pub is None else fmt_number(pub)])
-    _, h = d.table(x, y + 6.0, (38.0, 72.0, 20.0, 20.0), rows, row_h=5.0)
+        rows.append([label, how, str(r[name])])
+    _, h = d.table(x, y + 6.0, (38.0, 72.0, 40.0), rows, row_h=5.0)
     y += 6.0 + h + 2.0
     y = (
         d.paragraph(
-            "Почему в решении «до замены 2, после 1»: замена высшей пары добавляет звено и две "
-            "низшие пары (3 – 2·2 + 1 = 0), W не меняется. W = 2 до замены учитывает местную "
-            "подвижность – вращение ролика 6 вокруг M, которое ничего не передаёт. После замены "
-            "решение считает уже без ролика (ролик стал ползуном в пазу: n = 7, p5 = 10), отсюда "
-            "1. При одном правиле счёта: 2 и 2 с местной подвижностью или 1 и 1 без неё; "
-            "истинное W = 1.",
+            "Замена высшей пары добавляет звено и две низшие пары (3 – 2·2 + 1 = 0), W не "
+            "меняется. W = 2 учитывает местную подвижность – вращение ролика 6 вокруг M, которое "
+            "ничего не передаёт; истинное W = 1.",
             x,
             y,
             PANEL_W,

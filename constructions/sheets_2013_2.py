@@ -73,8 +73,6 @@ def sheets(sol: Solution) -> list[tuple[str, Sheet]]:
         title="Профиль кулачка по закону движения толкателя",
         designation="ТММ.2013-2.01",
         scale=k.ratio_text(),
-        organisation="geomcad",
-        developer="geomcad",
     )
     d = start("A3", tb)
     d.text("Профиль кулачка (метод обращения движения)", (VIEW[0], 13.0), 5.0)
@@ -369,38 +367,21 @@ def _panel(d: Drawing, sol: Solution, k: Scale) -> None:
     _, h = d.table(x, y + 5.0, widths, rows, row_h=5.0, header=False)
     y += 5.0 + h + 5.0
     d.text("Результаты (мм)", (x, y + 3.5), 3.5)
-    seed_r = sol.seed.get("r") if sol.is_seed else None
-    head = ["i", "φ_i, °", "S_i", "S'_i", "r_i", "опубл.", "разность"]
+    head = ["i", "φ_i, °", "S_i", "S'_i", "r_i"]
     rows = [head]
     n = len(r["phi"])
     for i in _rows(n):
-        exact = float(r["r"][i]) * mm
-        pub = None if seed_r is None else float(seed_r[i]) * mm
         rows.append(
             [
                 str(i),
-                fmt_number(math.degrees(float(r["phi"][i])), digits=5),
+                fmt_number(math.degrees(float(r["phi"][i])), digits=4),
                 fmt_number(_clean(float(r["S"][i]), geo.program.H) * mm, digits=4),
                 fmt_number(_clean(float(geo.divisions.S1[i]), geo.program.H) * mm, digits=4),
-                fmt_number(exact, digits=6),
-                "" if pub is None else fmt_number(pub, digits=4),
-                "" if pub is None else fmt_number(exact - pub, digits=2),
+                fmt_number(float(r["r"][i]) * mm, digits=4),
             ]
         )
-    seed_a = sol.seed.get("a") if sol.is_seed else None
-    a = float(r["a"]) * mm
-    rows.append(
-        [
-            "a",
-            "",
-            "",
-            "",
-            fmt_number(a, digits=6),
-            "" if seed_a is None else fmt_number(float(seed_a) * mm, digits=4),
-            "" if seed_a is None else fmt_number(a - float(seed_a) * mm, digits=2),
-        ]
-    )
-    r_widths = (10.0, 17.0, 20.0, 20.0, 26.0, 22.0, 26.0)
+    rows.append(["a", "", "", "", fmt_number(float(r["a"]) * mm, digits=4)])
+    r_widths = (14.0, 26.0, 26.0, 26.0, 30.0)
     _, h = d.table(x, y + 5.0, r_widths, rows, row_h=4.5)
     y += 5.0 + h + 1.5
     rho = float(r["rho_min"]) * mm
@@ -447,7 +428,7 @@ def _notes_ru(sol: Solution) -> list[str]:
     if f.kind == "flat":
         out.append(
             "r_i^2 = (r_{min} + S_i)^2 + S'_i^2: точка касания B отстоит от оси толкателя на "
-            "BC = OB' = S' (ΔOBB' подобен плану pb_1b_2, у автора Bb_1b_2)."
+            "BC = OB' = S' (ΔOBB' подобен плану pb_1b_2)."
         )
     prof = geo.profile
     if np.any(prof.corner) and f.kind == "flat" and sol.params["law"] == "linear":

@@ -34,8 +34,6 @@ def sheets(sol: Solution) -> list[tuple[str, Sheet]]:
         title="Механизм с крестовиной. План скоростей",
         designation="ТММ.2013-3.01",
         scale=k.ratio_text(),
-        organisation="geomcad",
-        developer="geomcad",
     )
     d = start("A3", tb)
     x0, y0, x1, y1 = geo.extent
@@ -106,11 +104,11 @@ def _mechanism(v: Viewport, geo: Any, c: Any, sol: Solution) -> None:
 
 
 def _panel(d: Drawing, sol: Solution, kv: Scale) -> None:
-    """Below the plan: the results beside the seed's; below the mechanism: data and equations."""
-    r, seed = sol.results, sol.seed
+    """Below the plan: the results; below the mechanism: data and equations."""
+    r = sol.results
     x, y = PLAN_VIEW[0], PLAN_VIEW[3] + 4.0
     d.text("Результаты", (x, y + 3.5), 3.5)
-    rows = [["Величина", "Точно", "На плане, мм", "Опубл.", "Разность"]]
+    rows = [["Величина", "Значение", "На плане, мм"]]
     for name, label, unit in (
         ("V_B3", "V_{B3}", "м/с"),
         ("V_B3B2", "V_{B3B2}", "м/с"),
@@ -122,18 +120,9 @@ def _panel(d: Drawing, sol: Solution, kv: Scale) -> None:
         ("F_red", "F_{пр}", "Н"),
     ):
         exact = float(r[name])
-        pub = seed.get(name)
-        on_plan = fmt_number(kv.mm(exact), digits=4) if unit == "м/с" else ""
-        rows.append(
-            [
-                label,
-                f"{fmt_number(exact, digits=6)} {unit}",
-                on_plan,
-                "" if pub is None else fmt_number(pub, digits=4),
-                "" if pub is None else fmt_number(exact - pub, digits=2),
-            ]
-        )
-    d.table(x, y + 6.0, (22.0, 44.0, 28.0, 22.0, 30.0), rows, row_h=5.5)
+        on_plan = fmt_number(kv.mm(exact), digits=3) if unit == "м/с" else ""
+        rows.append([label, f"{fmt_number(exact, digits=4)} {unit}", on_plan])
+    d.table(x, y + 6.0, (30.0, 60.0, 40.0), rows, row_h=5.5)
     # given data and the order of the plan, under the mechanism
     x, y = MECH_VIEW[0], MECH_VIEW[3] + 4.0
     p = sol.params

@@ -22,7 +22,6 @@ import numpy as np
 from geomcad import tol
 from geomcad.geom import Arc, Circle, Vec
 from geomcad.kinematics.gears import SpurGear
-from geomcad.problem import SeedValue
 from geomcad.sheet import (
     Drawing,
     Polyline,
@@ -58,8 +57,6 @@ def sheets(sol: Solution) -> list[tuple[str, Sheet]]:
         title="Зуб колеса со смещением x; штангензубомер",
         designation="ТММ.2013-4.01",
         scale=k.ratio_text(),
-        organisation="geomcad",
-        developer="geomcad",
     )
     d = start("A3", tb)
     x0, y0, x1, y1 = geo.extent
@@ -303,7 +300,7 @@ def _caliper(v: Viewport, c: Any, geo: Any) -> None:
 
 
 def _panel(d: Drawing, sol: Solution, k: Scale) -> None:
-    """The tables on the right: given data, results beside the seed's, the tooth's sizes."""
+    """The tables on the right: given data, results, the tooth's sizes."""
     p, r, geo = sol.params, sol.results, sol.data
     gear: SpurGear = geo.gear
     x, y = PANEL_X, 10.0
@@ -321,8 +318,7 @@ def _panel(d: Drawing, sol: Solution, k: Scale) -> None:
     _, h = d.table(x, y + 6.0, (36.0, 36.0), rows, row_h=5.5)
     y += 6.0 + h + 5.0
     d.text("Результаты", (x, y + 3.5), 3.5)
-    seed = sol.seed
-    rows = [["Величина", "Точно", "Опубликовано", "Разность"]]
+    rows = [["Величина", "Значение"]]
     for name, label, scale in (
         ("d", "d, мм", MM),
         ("d_b", "d_b, мм", MM),
@@ -335,32 +331,19 @@ def _panel(d: Drawing, sol: Solution, k: Scale) -> None:
         exact = float(r[name]) * scale
         if name == "x" and abs(exact) < tol.DERIVED:
             exact = 0.0  # a shift of 10^-16 is no shift
-        pub = seed.get(name)
-        sv = sol.problem.seed.get(name)
-        mark = " *" if isinstance(sv, SeedValue) and sv.kind == "erratum" else ""
-        rows.append(
-            [
-                label,
-                fmt_number(exact, digits=6),
-                "" if pub is None else fmt_number(pub * scale, digits=5) + mark,
-                "" if pub is None else fmt_number(exact - pub * scale, digits=2),
-            ]
-        )
-    _, h = d.table(x, y + 6.0, (26.0, 40.0, 40.0, 40.0), rows, row_h=5.5)
+        rows.append([label, fmt_number(exact, digits=4)])
+    _, h = d.table(x, y + 6.0, (36.0, 36.0), rows, row_h=5.5)
     y += 6.0 + h + 3.0
-    if sol.is_seed:
-        d.text("* ошибка в опубликованном решении (см. ниже)", (x, y + 2.5), 2.5)
-        y += 5.0
     y += 3.0
     d.text("Зуб, нарезанный рейкой ГОСТ 13755", (x, y + 3.5), 3.5)
     k_span = geo.k_span
     rows = [["Величина", "Значение"]]
     for label, value in (
-        ("d_f (впадин)", f"{fmt_number(gear.d_f * MM, digits=6)} мм"),
-        ("d_l (граничная)", f"{fmt_number(gear.limit_diameter() * MM, digits=6)} мм"),
+        ("d_f (впадин)", f"{fmt_number(gear.d_f * MM, digits=4)} мм"),
+        ("d_l (граничная)", f"{fmt_number(gear.limit_diameter() * MM, digits=4)} мм"),
         ("s_a (на вершине)", f"{fmt_number(gear.s_a * MM, digits=4)} мм"),
         ("x_{min} (подрез)", f"{fmt_number(gear.x_min, digits=4)}"),
-        (f"W_{k_span} (z_W = {k_span})", f"{fmt_number(geo.W * MM, digits=6)} мм"),
+        (f"W_{k_span} (z_W = {k_span})", f"{fmt_number(geo.W * MM, digits=4)} мм"),
     ):
         rows.append([label, value])
     _, h = d.table(x, y + 6.0, (50.0, 46.0), rows, row_h=5.5)
@@ -378,15 +361,4 @@ def _panel(d: Drawing, sol: Solution, k: Scale) -> None:
     )
     for i, step in enumerate(steps):
         y = d.paragraph(f"{i + 1}. {step}", x, y, 150.0, 2.5, indent=4.0) + 0.4
-    if sol.is_seed:
-        y += 2.0
-        d.paragraph(
-            "Опечатка в решении: формула половины угловой толщины искажена; следует "
-            "tg ψ_y = s̄_y/(d_a – 2h̄_ay) = 18,1/401,8 = 0,04505. d_y = 402,25 мм вычислен по "
-            "ψ_y, округлённому до 2,579° (точно 402,207 мм), отсюда и α_y = 20,86° вместо 20,847°.",
-            x,
-            y,
-            150.0,
-            2.5,
-        )
     del k

@@ -19,7 +19,6 @@ import math
 from typing import TYPE_CHECKING, Any
 
 from geomcad.geom import Vec
-from geomcad.problem import SeedValue
 from geomcad.sheet import (
     Drawing,
     Polyline,
@@ -65,8 +64,6 @@ def sheets(sol: Solution) -> list[tuple[str, Sheet]]:
         title="Планетарный механизм: передаточное отношение u1H2",
         designation="ТММ.2013-5.01",
         scale=k.ratio_text(),
-        organisation="geomcad",
-        developer="geomcad",
     )
     d = start("A3", tb)
     d.text("Кинематическая схема и план линейных скоростей", (LEFT - 4.0, 13.0), 5.0)
@@ -363,8 +360,7 @@ def _panel(d: Drawing, sol: Solution) -> None:
     d.text("* из условия соосности: z_4 = z_2 – z_1 – z_3,  z_7 = z_5 + 2z_6", (x, y + 2.5), 2.5)
     y += 8.0
     d.text("Результаты (метод Виллиса)", (x, y + 3.5), 3.5)
-    seed = sol.seed
-    rows = [["Величина", "Точно", "Опубликовано", "Разность"]]
+    rows = [["Величина", "Значение"]]
     num, den = r["u1H2_fraction"]
     for name, label in (
         ("W", "W"),
@@ -377,21 +373,11 @@ def _panel(d: Drawing, sol: Solution) -> None:
         ("u1H2", "u_{1H2}"),
     ):
         exact = r[name]
-        text = str(exact) if isinstance(exact, int) else fmt_number(float(exact), digits=7)
+        text = str(exact) if isinstance(exact, int) else fmt_number(float(exact), digits=4)
         if name == "u1H2" and den != 1:
-            text += f" = {num}/{den}"
-        pub = seed.get(name)
-        sv = sol.problem.seed.get(name)
-        bad = isinstance(sv, SeedValue) and sv.kind == "erratum"
-        rows.append(
-            [
-                label,
-                text,
-                "" if pub is None else fmt_number(pub, digits=5) + (" *" if bad else ""),
-                "" if pub is None else fmt_number(float(exact) - pub, digits=2),
-            ]
-        )
-    _, h = d.table(x, y + 6.0, (26.0, 48.0, 34.0, 38.0), rows, row_h=5.5)
+            text = f"{num}/{den} = {text}"
+        rows.append([label, text])
+    _, h = d.table(x, y + 6.0, (36.0, 60.0), rows, row_h=5.5)
     y += 6.0 + h + 5.0
     d.text("Угловые скорости при ω_{H2} = 1 рад/с", (x, y + 3.5), 3.5)
     rows = [["Звено", "уравнения зацеплений", "наклон (план)", "луч, мм"]]
@@ -403,15 +389,15 @@ def _panel(d: Drawing, sol: Solution) -> None:
                 LINK_LABEL[link],
                 str(exact)
                 if exact.denominator == 1
-                else f"{exact} = {fmt_number(float(exact), digits=6)}",
-                fmt_number(geo.plan.omega[link], digits=6),
+                else f"{exact} = {fmt_number(float(exact), digits=4)}",
+                fmt_number(geo.plan.omega[link], digits=4),
                 fmt_number(ray_mm, digits=4),
             ]
         )
     _, h = d.table(x, y + 6.0, (18.0, 58.0, 36.0, 34.0), rows, row_h=5.5)
     y += 6.0 + h + 5.0
     y = d.text("Порядок построения", (x, y + 3.5), 3.5).at[1] + 2.0
-    u_txt = fmt_number(float(r["u1H2"]), digits=6)
+    u_txt = fmt_number(float(r["u1H2"]), digits=4)
     steps = (
         "радиусы r_i = m·z_i/2 откладываем на вертикали; точки O, A … F – оси и полюсы "
         "зацеплений на одной радиальной прямой;",
@@ -423,15 +409,3 @@ def _panel(d: Drawing, sol: Solution) -> None:
     )
     for i, step in enumerate(steps):
         y = d.paragraph(f"{i + 1}. {step}", x, y, 148.0, 2.5, indent=4.0) + 0.4
-    if sol.is_seed:
-        y += 2.0
-        d.paragraph(
-            "* Ошибки в опубликованном решении: условие соосности записано как "
-            "z_1 – z_2 = z_4 + z_3, следует z_2 – z_1 = z_3 + z_4 (числа подставлены верно); "
-            "u_{1H2} = 66,46 получено с округлённым u_{5H1}^{(7)} = 4,364, точно "
-            "u_{1H2} = 731/11 = 66,4545…",
-            x,
-            y,
-            148.0,
-            2.5,
-        )

@@ -38,8 +38,6 @@ def sheets(sol: Solution) -> list[tuple[str, Sheet]]:
         title="Синтез шестизвенного механизма по коэффициенту K",
         designation="ТММ.2013-6.01",
         scale=k.ratio_text(),
-        organisation="geomcad",
-        developer="geomcad",
     )
     d = start("A3", tb)
     x0, y0, x1, y1 = geo.extent
@@ -184,8 +182,7 @@ def _panel(d: Drawing, sol: Solution, k: Scale) -> None:
     _, h = d.table(x, y + 6.0, (40.0, 40.0), rows)
     y += 6.0 + h + 6.0
     d.text("Результаты", (x, y + 3.5), 3.5)
-    seed = sol.seed
-    rows = [["Величина", "Точно", "Опубликовано", "Разность"]]
+    rows = [["Величина", "Значение"]]
     mmk = k.k
     for name, label, unit, scale in (
         ("theta_deg", "θ", "°", 1.0),
@@ -197,16 +194,8 @@ def _panel(d: Drawing, sol: Solution, k: Scale) -> None:
         ("K_check", "K (анализ)", "", 1.0),
     ):
         exact = float(r[name]) / scale
-        pub = seed.get(name)
-        rows.append(
-            [
-                label,
-                f"{fmt_number(exact, digits=6)} {unit}".strip(),
-                "" if pub is None else fmt_number(pub / scale, digits=4),
-                "" if pub is None else fmt_number(exact - pub / scale, digits=2),
-            ]
-        )
-    _, h = d.table(x, y + 6.0, (24.0, 42.0, 38.0, 42.0), rows)
+        rows.append([label, f"{fmt_number(exact, digits=4)} {unit}".strip()])
+    _, h = d.table(x, y + 6.0, (40.0, 40.0), rows)
     y += 6.0 + h + 4.0
     d.text(f"* на чертеже, {k.label()}", (x, y + 2.5), 2.5)
     y += 8.0
@@ -238,18 +227,8 @@ def _panel(d: Drawing, sol: Solution, k: Scale) -> None:
         "задачи – левая точка на y\u00a0=\u00a0l_3\u00a0–\u00a0e;",
         "l_1 = (O_1B_1 – O_1B_0)/2, l_2 = (O_1B_1 + O_1B_0)/2;",
         f"проверка анализом за полный оборот кривошипа: H = "
-        f"{fmt_number(float(r['H_check']), digits=6)} м, K = "
-        f"{fmt_number(float(r['K_check']), digits=6)}.",
+        f"{fmt_number(float(r['H_check']), digits=4)} м, K = "
+        f"{fmt_number(float(r['K_check']), digits=4)}.",
     )
     for i, step in enumerate(steps):
         y = d.paragraph(f"{i + 1}. {step}", x, y, 146.0, 2.5, indent=4.0) + 0.6
-    if sol.is_seed:
-        y += 2.0
-        d.paragraph(
-            "Опечатка в опубликованном решении: «AB = OB_1 – O_1A» следует читать "
-            "«AB = O_1B_1 – O_1A» (числа в решении верны).",
-            x,
-            y,
-            146.0,
-            2.5,
-        )

@@ -49,8 +49,6 @@ def kinematics_sheet(sol: Solution) -> tuple[str, Sheet]:
         title="Кинематический анализ шестизвенного механизма",
         designation="ТММ.2013-6.02",
         scale=k.ratio_text(),
-        organisation="geomcad",
-        developer="geomcad",
     )
     d = start("A2", tb)
     phi1_deg = fmt_number(math.degrees(an.phi1), digits=4)

@@ -54,8 +54,6 @@ def _title(sol: Solution, title: str, no: int) -> TitleBlock:
         designation=f"ТММ.2013-9.0{no}",
         sheet_no=no,
         sheets=2,
-        organisation="geomcad",
-        developer="geomcad",
         scale=k_l(float(sol.params["r"])).ratio_text() if no == 1 else "",
     )
 
@@ -70,7 +68,7 @@ def _main(sol: Solution) -> Sheet:
         f"φ = {f(math.degrees(data.phi))}°, φ' = {f(data.dphi)} рад/с, φ'' = {f(data.ddphi)} "
         f"рад/с², t = {f(float(sol.params['t']))} с;   {k.label()} (M {k.ratio_text()});   "
         f"μ_F = {f(data.k_F)} Н/мм",
-        (25.0, 20.0),
+        (25.0, 24.5),
         3.5,
     )
     oy = VIEW_TOP + k.mm((ROD.ground + 0.15) * r)
@@ -279,9 +277,8 @@ def _motion(sol: Solution) -> Sheet:
     lines: tuple[str, ...] = (
         "J_{пр}(φ)φ'' + ½J'_{пр}(φ)φ'^2 = M_{пр}(φ, φ', t) как система для (φ, φ'), "
         "начальные условия φ(0) = 0, φ'(0) = 0;",
-        "scipy solve\\_ivp, метод DOP853, rtol = 10^{–11}, atol = 10^{–12};",
-        f"φ(T) = {f(res['phi_T'], 6)} рад, φ'(T) = {f(res['omega_T'], 6)} рад/с при T = "
-        f"{f(T, 6)} с.",
+        "численное интегрирование (метод Рунге – Кутты);",
+        f"φ(T) = {f(res['phi_T'])} рад, φ'(T) = {f(res['omega_T'])} рад/с при T = {f(T)} с.",
     )
     for ln in lines:
         y = d.paragraph(f"– {ln}", x, y, PANEL_W, 2.5, indent=3.0) + 0.6
@@ -296,16 +293,4 @@ def _motion(sol: Solution) -> Sheet:
     )
     for ln in lines:
         y = d.paragraph(f"– {ln}", x, y, PANEL_W, 2.5, indent=3.0) + 0.6
-    y += 4.0
-    y = d.text("Ошибки в опубликованном решении", (x, y + 3.5), 3.5).at[1] + 2.0
-    lines = (
-        "мощность пружины записана –c·x'·x'; должно быть –c·x·x' (следующее выражение "
-        "–cr sin φ·r cos φ·φ' верно);",
-        "в dE/dt член –mr^2cos φ sin φ·φ'^2 должен содержать φ'^3;",
-        "в итоговом уравнении член –mr^2·½sin 2φ·φ'^2/2 содержит лишнее деление на 2: "
-        "верно –½mr^2sin 2φ·φ'^2 = ½(dJ_{пр}/dφ)φ'^2;",
-        "в итоговом уравнении mr^2cos^2φ·φ' должно быть mr^2cos^2φ·φ'' (это часть J_{пр}φ'').",
-    )
-    for i, ln in enumerate(lines):
-        y = d.paragraph(f"{i + 1}. {ln}", x, y, PANEL_W, 2.5, indent=4.0) + 0.6
     return d.finish()

@@ -2,7 +2,9 @@
 
     geomcad list
     geomcad solve ID [--set NAME=VALUE ...] [--json] [--trace]
-    geomcad build [ID ...] [--out DIR] [--format svg,pdf,png]
+    geomcad build [ID ...] [--out DIR] [--format svg,pdf,png] [--review] [--color]
+                  [--student NAME] [--checker NAME] [--group G] [--org ORG] [--date D]
+                  [--designation DES]
     geomcad verify ID --measured NAME=VALUE ... [--set NAME=VALUE ...] [--scale K] [--json]
 
 Exit status: 0 done (and, for ``verify``, every measurement within precision), 1 a measurement
@@ -102,6 +104,15 @@ def _parser() -> _Parser:
     s.add_argument(
         "--format", default=",".join(FORMATS), help="comma-separated svg,pdf,png (default: all)"
     )
+    s.add_argument(
+        "--review",
+        action="store_true",
+        help="also write ID-review sheets: the results beside the published solution",
+    )
+    s.add_argument(
+        "--color", action="store_true", help="colour the construction and results (for screens)"
+    )
+    _add_title_options(s)
     s.set_defaults(func=_cmd_build)
 
     s = sub.add_parser("verify", help="compare measurements off a drawing with the exact values")
@@ -118,6 +129,36 @@ def _parser() -> _Parser:
     s.add_argument("--json", action="store_true", help="print one JSON object")
     s.set_defaults(func=_cmd_verify)
     return p
+
+
+#: Title-block options of ``build``: (option, TitleData field, help).
+_TITLE_OPTIONS = (
+    ("--student", "student", "Разраб.: the student's name"),
+    ("--checker", "checker", "Пров.: the teacher's name"),
+    ("--group", "group", "the student's group (графа 9)"),
+    ("--org", "org", "the organisation (графа 9)"),
+    ("--date", "date", "the date of the Разраб. row"),
+    ("--designation", "designation", "the document's designation (графы 2 and 26)"),
+)
+
+
+def _add_title_options(s: argparse.ArgumentParser) -> None:
+    g = s.add_argument_group(
+        "title block", "GOST 2.104 cells; these override a [sheet] table in ./geomcad.toml"
+    )
+    for option, dest, text in _TITLE_OPTIONS:
+        g.add_argument(option, dest=f"tb_{dest}", metavar="TEXT", help=text)
+
+
+def _title_data(ns: argparse.Namespace) -> tuple[Any, Any]:
+    """The title-block data of ``build``: (the options, ./geomcad.toml's [sheet] table)."""
+    from geomcad.sheet.titleblock import TitleData
+
+    given = {dest: getattr(ns, f"tb_{dest}") for _, dest, _ in _TITLE_OPTIONS}
+    options = TitleData.from_mapping(
+        {k: v for k, v in given.items() if v is not None}, "title-block option"
+    )
+    return options, TitleData.from_workdir()
 
 
 def _add_set(s: argparse.ArgumentParser) -> None:
@@ -167,12 +208,20 @@ def _cmd_build(ns: argparse.Namespace) -> int:
     for pid in ids:
         if not documents.is_file_id(pid):
             registry.get(pid)  # an unknown id fails before anything is written
+    options, workdir = _title_data(ns)
     # solve and draw everything first, so that bad input writes no file and prints nothing
     prepared: list[tuple[str, Any]] = []
     for pid in ids:
         try:
             sol = documents.solve(pid) if documents.is_file_id(pid) else geomcad.solve(pid)
-            sheets = sol.sheets()
+            own = _file_title(pid, sol)
+            # the options over the file's own [sheet] table over ./geomcad.toml's
+            title = options.over(workdir if own is None else own.over(workdir))
+            sheets = sol.sheets(title)
+            if ns.review:
+                from geomcad.review import review_sheets
+
+                sheets += review_sheets(sol, title)
         except GeomcadError as exc:
             raise _Failed(_prefixed(pid, exc)) from exc
         prepared.append((documents.stem(pid) if documents.is_file_id(pid) else pid, sheets))
@@ -186,13 +235,13 @@ def _cmd_build(ns: argparse.Namespace) -> int:
         for pid, sheets in prepared:
             if missing is None:
                 try:
-                    paths = write_sheets(pid, sheets, out, formats)
+                    paths = write_sheets(pid, sheets, out, formats, colour=ns.color)
                 except MissingDependency as exc:
                     # the SVGs are written; write them again to learn their names
                     missing = exc
-                    paths = write_sheets(pid, sheets, out, ["svg"])
+                    paths = write_sheets(pid, sheets, out, ["svg"], colour=ns.color)
             else:
-                paths = write_sheets(pid, sheets, out, ["svg"])
+                paths = write_sheets(pid, sheets, out, ["svg"], colour=ns.color)
             _write(sys.stdout, "".join(f"{p}\n" for p in paths))
     except OSError as exc:
         raise _Failed(f"cannot write to {out}: {exc.strerror or exc}") from exc
@@ -200,6 +249,14 @@ def _cmd_build(ns: argparse.Namespace) -> int:
         _write(sys.stderr, _error_line(f"{_one_line(str(missing))} (only the SVGs were written)"))
         return EXIT_BAD_INPUT
     return EXIT_OK
+
+
+def _file_title(pid: str, sol: Solution) -> Any:
+    """A file's own ``[sheet]`` table, or ``None``."""
+    from geomcad.sheet.titleblock import TitleData
+
+    table = (sol.problem.inputs or {}).get("sheet")
+    return None if table is None else TitleData.from_mapping(table, "sheet")
 
 
 def _cmd_verify(ns: argparse.Namespace) -> int:

@@ -21,6 +21,7 @@ from geomcad.errors import ConstructionError, ParameterError
 if TYPE_CHECKING:
     from geomcad.construction import Construction
     from geomcad.sheet import Sheet
+    from geomcad.sheet.titleblock import TitleData
 
 ParamValue = float | int | str
 SeedKind = Literal["measured", "rounded", "erratum"]
@@ -348,9 +349,17 @@ class Solution:
             "notes": self.notes,
         }
 
-    def sheets(self) -> list[tuple[str, Sheet]]:
-        """The problem's drawing sheets: ``[(name, Sheet)]``, name ``""`` for the main sheet."""
-        return list(self.problem.draw(self))
+    def sheets(self, title: TitleData | None = None) -> list[tuple[str, Sheet]]:
+        """The problem's hand-in sheets: ``[(name, Sheet)]``, name ``""`` for the main sheet.
+
+        Their title blocks are filled as one document (Лист i of Листов n, one designation)
+        with the user's ``title`` data; without it the people's cells stay empty.
+        """
+        from geomcad.sheet.frame import fill_title_blocks
+
+        out = list(self.problem.draw(self))
+        fill_title_blocks([s for _, s in out], title)
+        return out
 
     def trace(self) -> str:
         """The construction protocol, one line per named step."""

@@ -1,18 +1,54 @@
-"""Layout checks shared by the sheet tests: paper boxes of items, overlap and containment, and
-`layout_problems`, which lists everything wrong with a sheet in words. The frame and the title
-block are derived from the sheet's own size (GOST 2.301: 20 mm left, 5 mm elsewhere; GOST 2.104
-form 1: 185 × 55 mm in the lower right corner)."""
+"""The layout checker every sheet test uses (issue 14): what a teacher and a нормоконтроль
+checker would return a sheet for, in words.
+
+Geometry goes through shapely: every text is a (turned) box, every drawn line a stroke buffered
+by half its width, and an STRtree answers which of them meet. The form (frame, title block,
+графа 26, the captions under the frame) is told apart by where it lies, not by drawing order.
+
+Two levels:
+
+- :func:`layout_problems` — what no sheet may have: texts on texts, items outside the frame or on
+  the title block or графа 26, glyphs the font lacks, and colour in a default (black) build.
+- :func:`findings` — the drafting findings (:data:`KINDS`): a label crossed by a line, a label
+  far from what it names, a vector shorter than twice its head, an empty field. Every sheet is
+  held to a recorded count per kind (``tests/layout_baseline.json``) that may only fall.
+"""
 
 from __future__ import annotations
 
-import itertools
 import math
+import re
 from collections.abc import Iterable
+from dataclasses import dataclass
 
-from geomcad.sheet.model import CircleItem, Item, Polyline, Sheet, TextItem
+import shapely
+from shapely import affinity
+from shapely.geometry import LineString, Point, Polygon
+from shapely.geometry import box as sbox
+from shapely.strtree import STRtree
+
+from geomcad.render import to_svg
+from geomcad.sheet.drawing import ARROW_LEN
+from geomcad.sheet.frame import reserved
+from geomcad.sheet.model import ArcItem, CircleItem, Item, Polyline, Sheet, TextItem
+from geomcad.sheet.style import MAIN_LINE, style
 from geomcad.sheet.text import box, metrics
 
 Box = tuple[float, float, float, float]  # x0, y0 (top), x1, y1 (bottom), sheet mm
+
+#: The drafting findings, each with what it means.
+KINDS = {
+    "label-line": "a label crossed by a drawn line",
+    "anchor": "a placed label farther than ANCHOR_MAX from the point it names",
+    "short-vector": "a vector shorter than twice its arrowhead",
+    "empty": "more than EMPTY_MAX of the field left empty",
+}
+#: A placed label's box keeps within this distance (mm) of its anchor.
+ANCHOR_MAX = 6.0
+#: The share of the field (10 mm cells) that may stay empty.
+EMPTY_MAX = 0.5
+#: Overlaps smaller than this (mm²) are touching, not overlapping.
+AREA_EPS = 0.05
 
 
 def frame_box(sheet: Sheet) -> Box:
@@ -31,28 +67,61 @@ A3_FRAME: Box = (20.0, 5.0, 415.0, 292.0)
 A3_BLOCK: Box = (415.0 - 185.0, 292.0 - 55.0, 415.0, 292.0)
 
 
-def text_box(t: TextItem) -> Box:
+def text_poly(t: TextItem) -> Polygon:
+    """The text's box on the paper, turned by its angle about its baseline's start."""
     w, up, down = box(t.runs, t.height)
-    return (t.at[0], t.at[1] - up, t.at[0] + w, t.at[1] + down)
+    p = sbox(t.at[0], t.at[1] - up, t.at[0] + w, t.at[1] + down)
+    if t.angle:
+        # counter-clockwise on the paper is clockwise in these y-down coordinates
+        p = affinity.rotate(p, -t.angle, origin=t.at)
+    return p
+
+
+def text_box(t: TextItem) -> Box:
+    x0, y0, x1, y1 = text_poly(t).bounds
+    return (x0, y0, x1, y1)
+
+
+def _arc_points(it: ArcItem, n: int = 64) -> list[tuple[float, float]]:
+    # y is down on paper: a clockwise sweep (> 0) is an increasing atan2 angle
+    a0 = math.atan2(it.start[1] - it.c[1], it.start[0] - it.c[0])
+    return [
+        (
+            it.c[0] + it.r * math.cos(a0 + it.sweep * i / n),
+            it.c[1] + it.r * math.sin(a0 + it.sweep * i / n),
+        )
+        for i in range(n + 1)
+    ]
+
+
+def geometry(it: Item) -> shapely.Geometry:
+    """The item's centre line (a text: its box)."""
+    if isinstance(it, TextItem):
+        return text_poly(it)
+    if isinstance(it, Polyline):
+        pts = list(it.points)
+        if it.fill and it.closed and len(pts) >= 3:
+            return Polygon(pts)
+        if it.closed:
+            pts.append(pts[0])
+        return LineString(pts) if len(pts) >= 2 else Point(pts[0])
+    if isinstance(it, CircleItem):
+        c = Point(it.c)
+        return c.buffer(it.r) if it.fill else c.buffer(it.r).exterior
+    return LineString(_arc_points(it))
+
+
+def stroke(it: Item, fmt: str) -> shapely.Geometry:
+    """The ink of a line: its centre line buffered by half its width."""
+    g = geometry(it)
+    half = style(it.role).weight * MAIN_LINE.get(fmt, 0.7) / 2.0
+    return g.buffer(max(half, 0.05)) if not isinstance(g, Polygon) else g
 
 
 def item_box(it: Item) -> Box:
-    """The paper extent of an item (an arc sampled along its sweep)."""
-    if isinstance(it, TextItem):
-        return text_box(it)
-    if isinstance(it, Polyline):
-        xs = [p[0] for p in it.points]
-        ys = [p[1] for p in it.points]
-    elif isinstance(it, CircleItem):
-        xs = [it.c[0] - it.r, it.c[0] + it.r]
-        ys = [it.c[1] - it.r, it.c[1] + it.r]
-    else:
-        # y is down on paper: a clockwise sweep (> 0) is an increasing atan2 angle
-        a0 = math.atan2(it.start[1] - it.c[1], it.start[0] - it.c[0])
-        ts = [a0 + it.sweep * i / 400 for i in range(401)]
-        xs = [it.c[0] + it.r * math.cos(t) for t in ts]
-        ys = [it.c[1] + it.r * math.sin(t) for t in ts]
-    return (min(xs), min(ys), max(xs), max(ys))
+    """The paper extent of an item."""
+    x0, y0, x1, y1 = geometry(it).bounds
+    return (x0, y0, x1, y1)
 
 
 def overlap(a: Box, b: Box) -> bool:
@@ -69,43 +138,150 @@ def inside(a: Box, outer: Box, tol: float = 1e-9) -> bool:
 
 
 def overlapping_texts(texts: Iterable[TextItem]) -> list[str]:
-    boxes = [(t, text_box(t)) for t in texts]
-    return [
-        f"{a.text!r} {ba} × {b.text!r} {bb}"
-        for (a, ba), (b, bb) in itertools.combinations(boxes, 2)
-        if overlap(ba, bb)
-    ]
+    """Pairs of texts whose boxes overlap (an STRtree query over the boxes)."""
+    ts = list(texts)
+    polys = [text_poly(t) for t in ts]
+    tree = STRtree(polys)
+    out = []
+    for i, p in enumerate(polys):
+        for j in tree.query(p, predicate="intersects"):
+            if j > i and p.intersection(polys[j]).area > AREA_EPS:
+                out.append(f"{ts[i].text!r} {text_box(ts[i])} × {ts[j].text!r} {text_box(ts[j])}")
+    return out
+
+
+def _form_boxes(sheet: Sheet) -> list[Polygon]:
+    x1, y1 = sheet.width - 5.0, sheet.height - 5.0
+    under = sbox(x1 - 185.0, y1, x1, sheet.height)  # "Копировал", "Формат" under the frame
+    return [sbox(*b) for b in reserved(sheet.width, sheet.height)] + [under]
 
 
 def block_part(sheet: Sheet) -> tuple[list[Item], list[Item]]:
-    """(the frame and title block, everything drawn after them): new_sheet draws those first."""
-    n = next(
-        i for i, it in enumerate(sheet.items) if it.role not in ("frame", "frame_thin", "title")
-    )
-    return sheet.items[:n], sheet.items[n:]
+    """(the form: frame, title block, графа 26 and their texts; everything drawn on the field)."""
+    forms = _form_boxes(sheet)
+    outer = sbox(*frame_box(sheet))
+    form: list[Item] = []
+    drawn: list[Item] = []
+    for it in sheet.items:
+        if it.role in ("frame", "frame_thin", "title"):
+            g = geometry(it)
+            on_form = any(f.buffer(1e-6).covers(g) for f in forms)
+            if on_form or (isinstance(it, Polyline) and g.equals(outer.exterior)):
+                form.append(it)
+                continue
+        drawn.append(it)
+    return form, drawn
+
+
+def colours(svg: str) -> set[str]:
+    """The paints of an SVG other than black, white and none."""
+    paints = set(re.findall(r'(?:stroke|fill)="([^"]+)"', svg))
+    return {p for p in paints if p.lower() not in ("#000000", "#ffffff", "none", "black", "white")}
 
 
 def layout_problems(sheet: Sheet, drawing_right: float | None = None) -> list[str]:
-    """Everything wrong with a sheet's layout, in words (empty when it is fine): texts on one
-    another, items outside the frame or on the title block, a glyph the font lacks, and, with
-    ``drawing_right``, drawn lines reaching the tables that start at that x (mm)."""
-    frame, block = frame_box(sheet), block_box(sheet)
-    out = [f"overlap: {o}" for o in overlapping_texts(sheet.texts())]
-    for it in block_part(sheet)[1]:
-        b = item_box(it)
-        what = f"{type(it).__name__} {it.role} {getattr(it, 'text', '')!r} {b}"
-        if not inside(b, frame):
+    """Everything no sheet may have, in words (empty when it is fine): texts on one another,
+    items outside the frame or on the title block or графа 26, a glyph the font lacks, colour in
+    the default build, and, with ``drawing_right``, drawn lines reaching the tables that start at
+    that x (mm)."""
+    frame = sbox(*frame_box(sheet)).buffer(1e-6)
+    forms = [sbox(*b) for b in reserved(sheet.width, sheet.height)]
+    _form, drawn = block_part(sheet)
+    out = [f"overlap: {o}" for o in overlapping_texts(t for t in drawn if isinstance(t, TextItem))]
+    for it in drawn:
+        g = geometry(it)
+        what = f"{type(it).__name__} {it.role} {getattr(it, 'text', '')!r} {item_box(it)}"
+        if not frame.covers(g):
             out.append(f"outside the frame: {what}")
-        if overlap(b, block):
-            out.append(f"on the title block: {what}")
+        for f in forms:
+            if g.intersection(f).area > AREA_EPS or (
+                not isinstance(g, Polygon) and g.intersection(f).length > 0.1
+            ):
+                out.append(f"on the title block or графа 26: {what}")
         lines = it.role not in ("frame", "frame_thin", "title", "label")
-        if drawing_right is not None and lines and b[2] >= drawing_right:
+        if drawing_right is not None and lines and item_box(it)[2] >= drawing_right:
             out.append(f"the drawing reaches the tables: {what}")
     m = metrics()
     for t in sheet.texts():
         for r in t.runs:
             m.advance(r.text, 1.0)  # raises ValueError naming a missing glyph
+    painted = colours(to_svg(sheet))
+    if painted:
+        out.append(f"colour in a default build: {sorted(painted)}")
     return out
+
+
+@dataclass(frozen=True)
+class Finding:
+    kind: str
+    text: str
+
+
+def findings(sheet: Sheet) -> list[Finding]:
+    """The drafting findings of :data:`KINDS` on a sheet."""
+    _form, drawn = block_part(sheet)
+    out: list[Finding] = []
+    texts = [t for t in drawn if isinstance(t, TextItem)]
+    lines = [it for it in drawn if not isinstance(it, TextItem)]
+    strokes = [stroke(it, sheet.format) for it in lines]
+    tree = STRtree(strokes)
+    for t in texts:
+        # a label may touch a line at its edge: the box shrunk by 0.25 mm must stay clear
+        p = text_poly(t).buffer(-0.25)
+        if p.is_empty:
+            continue
+        for j in tree.query(p, predicate="intersects"):
+            if strokes[j].intersection(p).area > AREA_EPS:
+                it = lines[j]
+                out.append(
+                    Finding("label-line", f"{t.text!r} {text_box(t)} × {it.role} {item_box(it)}")
+                )
+                break
+    for t, anchor in sheet.anchors:
+        d = text_poly(t).distance(Point(anchor))
+        if d > ANCHOR_MAX:
+            out.append(Finding("anchor", f"{t.text!r} is {d:.1f} mm from its point {anchor}"))
+    for tail, tip in sheet.vectors:
+        n = math.dist(tail, tip)
+        if n < 2.0 * ARROW_LEN:
+            out.append(Finding("short-vector", f"{n:.2f} mm from {tail} to {tip}"))
+    share = empty_share(sheet)
+    if share > EMPTY_MAX:
+        out.append(Finding("empty", f"{share:.0%} of the field is empty"))
+    return out
+
+
+def empty_share(sheet: Sheet, cell: float = 10.0) -> float:
+    """The share of the field (the frame less the title block and графа 26) in ``cell`` mm
+    squares that nothing drawn reaches."""
+    _form, drawn = block_part(sheet)
+    field = sbox(*frame_box(sheet))
+    for f in reserved(sheet.width, sheet.height):
+        field = field.difference(sbox(*f))
+    ink = shapely.union_all([_area(it).buffer(cell / 2.0) for it in drawn]) if drawn else None
+    x0, y0, x1, y1 = frame_box(sheet)
+    total = empty = 0
+    y = y0
+    while y + cell <= y1 + 1e-9:
+        x = x0
+        while x + cell <= x1 + 1e-9:
+            c = Point(x + cell / 2.0, y + cell / 2.0)
+            if field.contains(c):
+                total += 1
+                if ink is None or not ink.contains(c):
+                    empty += 1
+            x += cell
+        y += cell
+    return empty / total if total else 0.0
+
+
+def _area(it: Item) -> shapely.Geometry:
+    """What an item takes of the field: a circle or a closed outline with its inside."""
+    if isinstance(it, CircleItem | ArcItem):
+        return Point(it.c).buffer(it.r)
+    if isinstance(it, Polyline) and it.closed and len(it.points) >= 3:
+        return Polygon(it.points)
+    return geometry(it)
 
 
 def labels(sheet: Sheet) -> set[str]:

@@ -7,6 +7,7 @@ import subprocess
 import sys
 from collections.abc import Sequence
 from pathlib import Path
+from types import SimpleNamespace
 from typing import Any
 
 import pytest
@@ -346,8 +347,9 @@ def test_verify_api() -> None:
 class FakeSolution:
     def __init__(self, pid: str) -> None:
         self.pid = pid
+        self.problem = SimpleNamespace(inputs=None)
 
-    def sheets(self) -> list[tuple[str, object]]:
+    def sheets(self, title: object = None) -> list[tuple[str, object]]:
         return [("", f"main sheet of {self.pid}"), ("plan", f"plan of {self.pid}")]
 
 
@@ -360,7 +362,12 @@ class FakeWriter:
         self.cairo = True
 
     def __call__(
-        self, pid: str, sheets: Sequence[tuple[str, object]], out_dir: Path, formats: Sequence[str]
+        self,
+        pid: str,
+        sheets: Sequence[tuple[str, object]],
+        out_dir: Path,
+        formats: Sequence[str],
+        colour: bool = False,
     ) -> list[Path]:
         self.calls.append((pid, list(formats), out_dir))
         if pid == self.no_cairo_from:

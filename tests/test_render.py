@@ -205,7 +205,7 @@ def test_result_label_takes_the_role_colour_without_outline() -> None:
     runs = parse("B_0")
     fs = metrics().font_size(3.5)
     sheet.add(TextItem((5.0, 5.0), runs, 3.5, fs, width(runs, fs), "result"))
-    text = parse_svg(to_svg(sheet)).find(f".//{SVG_NS}text")
+    text = parse_svg(to_svg(sheet, colour=True)).find(f".//{SVG_NS}text")
     assert text is not None
     assert text.get("fill") == STYLES["result"].fill
     assert text.get("stroke") == "none"
@@ -556,3 +556,13 @@ def test_png_text_ends_where_its_metrics_say(dpi: int) -> None:
     band = im[int(26 * px) : int(31 * px), : int(200 * px)]
     right = np.nonzero((band < 128).any(axis=0))[0].max() / px
     assert abs(right - (25.0 + item.width)) <= 0.5
+
+
+def test_black_by_default() -> None:
+    """ESKD has no colour: a default SVG paints in black (and paper white) only."""
+    sheet = Sheet(width=100, height=100, format="A4", title="")
+    sheet.add(Polyline(((5.0, 5.0), (50.0, 50.0)), "construction"))
+    sheet.add(Polyline(((5.0, 5.0), (9.0, 5.0), (9.0, 9.0)), "result", closed=True, fill=True))
+    svg = to_svg(sheet)
+    assert "#1f4e9c" not in svg and "#b01c1c" not in svg
+    assert "#1f4e9c" in to_svg(sheet, colour=True)

@@ -13,11 +13,11 @@ from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 from layout import (
     A3_BLOCK,
-    A3_FRAME,
     Box,
     block_part,
     inside,
     item_box,
+    layout_problems,
     overlap,
     overlapping_texts,
     text_box,
@@ -26,6 +26,7 @@ from layout import (
 import geomcad
 from geomcad.errors import ParameterError
 from geomcad.sheet import TitleBlock, new_sheet, paper
+from geomcad.sheet.frame import fill_title_blocks
 from geomcad.sheet.model import CircleItem, Polyline, Run, Sheet, TextItem
 from geomcad.sheet.scale import NICE, Scale, fmt_number, gost_length_scale, nice_factor
 from geomcad.sheet.style import LineType, fit_centre_line, fit_closed, fit_open
@@ -285,8 +286,9 @@ def test_missing_glyph_is_an_error(label: str) -> None:
     bad = next(c for c in label if c in "⊥√")
     with pytest.raises(ValueError, match=bad):
         width(parse(label), 3.5)
+    sheet, _ = new_sheet("A3", TitleBlock(title=label, designation="X"))
     with pytest.raises(ValueError, match=bad):
-        new_sheet("A3", TitleBlock(title=label, designation="X"))
+        fill_title_blocks([sheet])
 
 
 # -- frame and title block -------------------------------------------------------------------------
@@ -297,6 +299,7 @@ def a3() -> Sheet:
     sheet, _ = new_sheet(
         "A3", TitleBlock(title="План скоростей", designation="ТММ.01", scale="1:5")
     )
+    fill_title_blocks([sheet])
     return sheet
 
 
@@ -344,7 +347,8 @@ def test_title_block_outline(a3: Sheet) -> None:
         for it in a3.items
         if isinstance(it, Polyline) and it.closed and it.role == "frame" and it is not a3.items[0]
     ]
-    assert len(outlines) == 1
+    assert len(outlines) == 2  # the title block and графа 26
+    assert set(outlines[1].points) == {(20.0, 5.0), (90.0, 5.0), (90.0, 19.0), (20.0, 19.0)}
     xs = [p[0] for p in outlines[0].points]
     ys = [p[1] for p in outlines[0].points]
     assert (min(xs), min(ys), max(xs), max(ys)) == A3_BLOCK  # 185 × 55 in the corner
@@ -404,19 +408,29 @@ def _sheet_cell(cell: tuple[float, float, float, float]) -> Box:
 
 
 def test_title_block_captions_in_their_cells(a3: Sheet) -> None:
-    texts = {t.text: t for t in a3.texts()}
+    texts = {t.text: t for t in a3.texts() if not t.angle}
     for caption, cell in CAPTION_CELLS.items():
         assert caption in texts, f"caption {caption!r} missing; have {sorted(texts)}"
         tb = text_box(texts[caption])
         assert inside(tb, _sheet_cell(cell)), f"{caption!r} {tb} outside its cell {cell}"
+    g26 = (20.0, 5.0, 90.0, 19.0)
+    under = (A3_BLOCK[0], A3_BLOCK[3], A3_BLOCK[2], 297.0)
     for t in a3.texts():
-        assert inside(text_box(t), A3_BLOCK), f"{t.text!r} outside the title block"
+        places = (A3_BLOCK, g26, under)
+        assert any(inside(text_box(t), b) for b in places), f"{t.text!r} outside the form"
         assert t.role == "title"
+    # графа 26: the designation turned 180° in the top-left corner
+    (d26,) = [t for t in a3.texts() if t.angle]
+    assert (d26.text, d26.angle) == ("ТММ.01", 180.0) and inside(text_box(d26), g26)
+    # under the frame: Копировал and Формат; Лит. "У" for coursework
+    words = {t.text for t in a3.texts()}
+    assert {"Копировал", "Формат A3", "У", "Лист 1", "Листов 1"} <= words
     assert not overlapping_texts(a3.texts())
 
 
 def test_title_block_in_english() -> None:
     sheet, _ = new_sheet("A3", TitleBlock(title="Velocity plan", designation="X.01", lang="en"))
+    fill_title_blocks([sheet])
     words = {t.text for t in sheet.texts()}
     for caption in ("Rev.", "Doc. No.", "Drawn", "Checked", "Appr.", "Scale", "Mass", "Sheet 1"):
         assert caption in words
@@ -427,6 +441,7 @@ def test_title_block_in_english() -> None:
 def test_long_title_is_broken_into_lines() -> None:
     title = "Синтез шестизвенного механизма по коэффициенту изменения средней скорости"
     sheet, _ = new_sheet("A3", TitleBlock(title=title, designation="X"))
+    fill_title_blocks([sheet])
     lines = [t for t in sheet.texts() if t.text in title and t.text not in ("X",)]
     assert len(lines) >= 2
     assert " ".join(t.text for t in lines) == title
@@ -481,21 +496,12 @@ def test_2013_6_scale_in_the_title_block(seed_sheet: Sheet) -> None:
 
 
 def _check_layout(sheet: Sheet) -> None:
-    block, drawn = block_part(sheet)
-    problems: list[str] = []
-    # no two texts overlap, anywhere on the sheet
-    problems += [f"overlap: {o}" for o in overlapping_texts(sheet.texts())]
-    # the title block's texts inside it; every other text inside the frame, outside the block
-    for it in block:
-        if isinstance(it, TextItem) and not inside(text_box(it), A3_BLOCK):
-            problems.append(f"title block text {it.text!r} {text_box(it)} outside the block")
+    _block, drawn = block_part(sheet)
+    # the one checker: texts on texts, outside the frame, on the title block or графа 26, colour
+    problems: list[str] = layout_problems(sheet)
     for it in drawn:
         b = item_box(it)
         what = f"{type(it).__name__} {it.role} {getattr(it, 'text', '')!r} {b}"
-        if not inside(b, A3_FRAME):
-            problems.append(f"outside the frame: {what}")
-        if overlap(b, A3_BLOCK):
-            problems.append(f"on the title block: {what}")
         geometry = not isinstance(it, TextItem) and it.role not in ("frame", "frame_thin")
         if geometry and b[2] >= VIEW_RIGHT:
             problems.append(f"mechanism view reaches the tables (x ≥ {VIEW_RIGHT}): {what}")

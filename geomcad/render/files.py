@@ -74,8 +74,11 @@ def write_sheets(
     formats: Sequence[str] = FORMATS,
     *,
     dpi: int = PNG_DPI,
+    colour: bool = False,
 ) -> list[Path]:
     """Write each ``(name, sheet)`` as ``out_dir/ID[-NAME].{svg,pdf,png}`` and return the paths.
+
+    The sheets are black (ESKD); ``colour`` keeps the roles' colours, for screens.
 
     ``pid`` is the problem id; the main sheet has the name ``""``. ``out_dir`` is created if
     missing. Every SVG is written first, then the PDFs and PNGs.
@@ -97,7 +100,7 @@ def write_sheets(
 
     out_dir = Path(out_dir)
     # Render every SVG before writing any, so a sheet that cannot be drawn writes nothing.
-    svgs = [to_svg(sheet) for _name, sheet in sheets]
+    svgs = [to_svg(sheet, colour) for _name, sheet in sheets]
     out_dir.mkdir(parents=True, exist_ok=True)
     written: list[Path] = []
     if "svg" in wanted:

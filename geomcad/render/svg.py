@@ -21,6 +21,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterable
+from dataclasses import replace
 
 import svgwrite
 
@@ -57,6 +58,17 @@ def _pt(p: XY) -> str:
 def main_line(fmt: str) -> float:
     """The main line S (mm) of a sheet format; :data:`DEFAULT_MAIN_LINE` for an unknown one."""
     return MAIN_LINE.get(fmt, DEFAULT_MAIN_LINE)
+
+
+#: The colours a black-and-white sheet keeps: paper white (a joint's inside) and no paint.
+_NOT_INK = ("none", "#ffffff")
+
+
+def monochrome(st: Style) -> Style:
+    """The style in black (ESKD has no colour): every ink is black, paper white stays white."""
+    stroke = st.stroke if st.stroke in _NOT_INK else "#000000"
+    fill = st.fill if st.fill in _NOT_INK else "#000000"
+    return replace(st, stroke=stroke, fill=fill)
 
 
 def _fill_colour(st: Style) -> str:
@@ -140,6 +152,9 @@ def _text(dwg: svgwrite.Drawing, t: TextItem, st: Style, ids: _Ids) -> svgwrite.
     }
     if t.id:
         attrs["id"] = ids.take(t.id)
+    if t.angle:
+        # SVG turns clockwise on the paper (y down); the model's angle is counter-clockwise.
+        attrs["transform"] = f"rotate({num(-t.angle)} {num(t.at[0])} {num(t.at[1])})"
     el = dwg.text("", x=[num(t.at[0])], y=[num(t.at[1])], **attrs)
     m = metrics()
     x, base = t.at
@@ -157,8 +172,10 @@ def _text(dwg: svgwrite.Drawing, t: TextItem, st: Style, ids: _Ids) -> svgwrite.
     return el
 
 
-def _element(dwg: svgwrite.Drawing, item: Item, ids: _Ids) -> svgwrite.base.BaseElement:
-    st = style(item.role)
+def _element(
+    dwg: svgwrite.Drawing, item: Item, ids: _Ids, colour: bool
+) -> svgwrite.base.BaseElement:
+    st = style(item.role) if colour else monochrome(style(item.role))
     if isinstance(item, TextItem):
         return _text(dwg, item, st, ids)
     if isinstance(item, Polyline):
@@ -196,8 +213,9 @@ def _layer(dwg: svgwrite.Drawing, role: str, st: Style, s: float) -> svgwrite.co
     return dwg.g(**attrs)
 
 
-def to_svg(sheet: Sheet) -> str:
-    """The sheet as an SVG document (UTF-8 text with its XML declaration).
+def to_svg(sheet: Sheet, colour: bool = False) -> str:
+    """The sheet as an SVG document (UTF-8 text with its XML declaration): black on white, as
+    ESKD draws; ``colour`` keeps the roles' colours (blue construction, red results) for screens.
 
     Raises ``KeyError`` for an item whose role is not in ``STYLES``, and ``ValueError`` for a
     non-finite coordinate or a character the pinned font lacks.
@@ -221,9 +239,9 @@ def to_svg(sheet: Sheet) -> str:
         items = by_role.get(role)
         if not items:
             continue
-        group = _layer(dwg, role, st, s)
+        group = _layer(dwg, role, st if colour else monochrome(st), s)
         for item in items:
-            group.add(_element(dwg, item, ids))
+            group.add(_element(dwg, item, ids, colour))
         dwg.add(group)
     body: str = dwg.tostring()
     return XML_DECLARATION + body + "\n"

@@ -19,7 +19,7 @@ import numpy as np
 import numpy.typing as npt
 
 from geomcad.geom import Arc, Circle, Line, PointLike, vec
-from geomcad.sheet.frame import Frame, text_at
+from geomcad.sheet.frame import Frame, reserved, text_at
 from geomcad.sheet.model import XY, ArcItem, CircleItem, Polyline, Sheet, TextItem
 from geomcad.sheet.scale import Scale
 from geomcad.sheet.style import (
@@ -47,6 +47,8 @@ DIRECTIONS: tuple[tuple[float, float], ...] = (
     (1, -1), (-1, -1), (1, 1), (-1, 1), (1, 0), (-1, 0), (0, -1), (0, 1),
 )  # fmt: skip
 LABEL_PAD = 0.4
+#: Fixed text moved off a box of the form keeps this far from it (mm).
+RESERVED_GAP = 3.0
 #: A curved arrow's shaft stops this far (rad) short of its head's tip.
 TURN_HEAD_GAP = 0.35
 #: Baseline-to-baseline distance of wrapped text, in cap heights (GOST 2.304, type B: 17/10 h).
@@ -78,6 +80,9 @@ class Drawing:
     sheet: Sheet
     frame: Frame
     pending: list[LabelRequest] = field(default_factory=list)
+    #: Fixed texts moved off графа 26: :meth:`finish` sets them smaller if they then run into
+    #: other text.
+    moved: list[TextItem] = field(default_factory=list)
 
     def viewport(self, scale: Scale, origin: PointLike, at: XY) -> Viewport:
         """A viewport that puts model point ``origin`` at sheet point ``at``."""
@@ -86,8 +91,22 @@ class Drawing:
     def text(
         self, markup: str, at: XY, height: float = 3.5, anchor: str = "left", role: str = "label"
     ) -> TextItem:
-        """Fixed text with its baseline at ``at`` (titles, notes)."""
-        return text_at(self.sheet, markup, at, height, role, anchor)
+        """Fixed text with its baseline at ``at`` (titles, notes).
+
+        Left-anchored text that would run into a box of the form inside the frame (графа 26 in
+        the top-left corner) starts just right of that box instead.
+        """
+        moved = False
+        if anchor == "left":
+            w, up, down = box(parse(markup), height)
+            for x0, y0, x1, y1 in reserved(self.sheet.width, self.sheet.height):
+                if at[0] < x1 and x0 < at[0] + w and at[1] - up < y1 and y0 < at[1] + down:
+                    at = (x1 + RESERVED_GAP, at[1])
+                    moved = True
+        item = text_at(self.sheet, markup, at, height, role, anchor)
+        if moved:
+            self.moved.append(item)
+        return item
 
     def label(
         self,
@@ -176,14 +195,35 @@ class Drawing:
     # -- label placement -----------------------------------------------------------------------
     def finish(self) -> Sheet:
         """Place every pending label and return the sheet."""
+        _shrink(self)
         segs = _segments(self.sheet)
         boxes: list[tuple[float, float, float, float]] = [_text_box(t) for t in self.sheet.texts()]
         for req in self.pending:
             item = _place(req, segs, boxes, self.frame)
             self.sheet.add(item)
+            self.sheet.anchors.append((item, req.anchor))
             boxes.append(_text_box(item))
         self.pending.clear()
         return self.sheet
+
+
+def _shrink(d: Drawing) -> None:
+    """Each text moved off графа 26 that now runs into another text is set at the next smaller
+    GOST height (down to 2.5 mm) until it runs into none."""
+    items = d.sheet.items
+    for t in d.moved:
+        i = next(k for k, it in enumerate(items) if it is t)
+        others = [_text_box(o) for o in d.sheet.texts() if o is not t]
+        cur = t
+        for h in (3.5, 2.5):
+            if not any(_overlaps(_text_box(cur), o) for o in others) or h >= cur.height:
+                break
+            runs = cur.runs
+            fs = metrics().font_size(h)
+            w, _, _ = box(runs, h)
+            cur = TextItem(cur.at, runs, h, fs, w, cur.role, cur.id)
+        items[i] = cur
+    d.moved.clear()
 
 
 def _text_box(t: TextItem) -> tuple[float, float, float, float]:
@@ -557,5 +597,6 @@ def _arrow(sheet: Sheet, a: XY, b: XY, role: str) -> None:
         return
     ux, uy = (b[0] - a[0]) / length, (b[1] - a[1]) / length
     end = (b[0] - ux * ARROW_LEN * 0.8, b[1] - uy * ARROW_LEN * 0.8) if length > ARROW_LEN else a
+    sheet.vectors.append((a, b))
     sheet.add(Polyline((a, end), role))
     _head(sheet, b, (ux, uy), role)

@@ -8,12 +8,13 @@ language (``CAPTIONS``), so an English sheet changes words, not code.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Literal
 
 from geomcad.errors import ParameterError
 from geomcad.sheet.model import XY, Polyline, Sheet, TextItem
 from geomcad.sheet.text import HEIGHTS, box, metrics, parse
+from geomcad.sheet.titleblock import TitleData
 
 #: Paper sizes (short side, long side) in mm.
 FORMATS: dict[str, tuple[float, float]] = {
@@ -28,6 +29,9 @@ LEFT_MARGIN = 20.0
 MARGIN = 5.0
 TB_WIDTH = 185.0
 TB_HEIGHT = 55.0
+#: Графа 26 (GOST 2.104): the designation turned 180° in the frame's top-left corner, 70 × 14 mm.
+G26_WIDTH = 70.0
+G26_HEIGHT = 14.0
 
 Lang = Literal["ru", "en"]
 
@@ -51,6 +55,8 @@ CAPTIONS: dict[str, dict[str, str]] = {
         "scale": "Масштаб",
         "sheet": "Лист",
         "sheets": "Листов",
+        "copied": "Копировал",
+        "format": "Формат",
     },
     "en": {
         "izm": "Rev.",
@@ -68,13 +74,20 @@ CAPTIONS: dict[str, dict[str, str]] = {
         "scale": "Scale",
         "sheet": "Sheet",
         "sheets": "Sheets",
+        "copied": "Copied",
+        "format": "Format",
     },
 }
 
 
 @dataclass(frozen=True)
 class TitleBlock:
-    """What the title block says. Empty fields stay blank (to be filled in by hand)."""
+    """What the title block says. Empty fields stay blank (to be filled in by hand).
+
+    A sheet module gives what it knows (title, designation, scale, its number in the set); the
+    people, the organisation, the group and the date come from the user's
+    :class:`~geomcad.sheet.titleblock.TitleData` (see :meth:`with_user`).
+    """
 
     title: str
     designation: str
@@ -86,6 +99,30 @@ class TitleBlock:
     checker: str = ""
     material: str = ""
     lang: Lang = "ru"
+    group: str = ""
+    date: str = ""
+    stage: str = ""
+    tcontrol: str = ""
+    ncontrol: str = ""
+    approver: str = ""
+
+    def with_user(self, data: TitleData) -> TitleBlock:
+        """This block with the user's data: their designation (one for the whole document)
+        replaces the sheet module's, their people and places fill the empty cells."""
+        return replace(
+            self,
+            designation=data.designation or self.designation,
+            developer=data.student or self.developer,
+            checker=data.checker or self.checker,
+            tcontrol=data.tcontrol or self.tcontrol,
+            ncontrol=data.ncontrol or self.ncontrol,
+            approver=data.approver or self.approver,
+            organisation=data.org or self.organisation,
+            group=data.group or self.group,
+            date=data.date or self.date,
+            # Лит. "У" is a Russian letter: an English sheet takes only a stage given to it
+            stage=self.stage or (data.stage if self.lang == "ru" else ""),
+        )
 
 
 @dataclass(frozen=True)
@@ -111,13 +148,89 @@ def paper(fmt: str, landscape: bool = True) -> tuple[float, float]:
 
 
 def new_sheet(fmt: str, tb: TitleBlock, landscape: bool = True) -> tuple[Sheet, Frame]:
-    """A sheet of ``fmt`` with its frame and filled title block, and the free field inside."""
+    """A sheet of ``fmt`` with its frame and the form of its title block, and the free field.
+
+    The block's cells are filled by :func:`fill_title_blocks` once the whole set is drawn, so
+    that the numbers (Лист i, Листов n) and the one designation agree across the document.
+    Графа 26 (70 × 14 mm, top left) lies inside the frame: the layout keeps views out of
+    :func:`reserved` boxes.
+    """
     w, h = paper(fmt, landscape)
     sheet = Sheet(w, h, fmt, tb.title)
     x0, y0, x1, y1 = LEFT_MARGIN, MARGIN, w - MARGIN, h - MARGIN
     sheet.add(Polyline(((x0, y0), (x1, y0), (x1, y1), (x0, y1)), "frame", closed=True))
-    _title_block(sheet, x1 - TB_WIDTH, y1, tb)
+    _title_form(sheet, x1 - TB_WIDTH, y1, tb.lang)
+    sheet.add(Polyline(((x0, y0), (x0 + G26_WIDTH, y0), (x0 + G26_WIDTH, y0 + G26_HEIGHT),
+                        (x0, y0 + G26_HEIGHT)), "frame", closed=True))  # fmt: skip
+    _under_frame(sheet, x1 - TB_WIDTH, y1, fmt, tb.lang)
+    sheet.block = tb
     return sheet, Frame(x0, y0, x1, y1, x1 - TB_WIDTH, y1 - TB_HEIGHT)
+
+
+def fill_title_blocks(sheets: list[Sheet], data: TitleData | None = None) -> None:
+    """Fill the title blocks of one document's sheets, in order: Лист i of Листов n, one
+    designation (the user's, else the first sheet's), the user's people, places and date, and
+    графа 26. A sheet drawn without :func:`new_sheet`, or already filled, is left alone."""
+    data = data or TitleData()
+    blocks = [s.block for s in sheets if s.block is not None]
+    if not blocks:
+        return
+    designation = data.designation or blocks[0].designation
+    n = len(blocks)
+    i = 0
+    for sheet in sheets:
+        tb = sheet.block
+        if tb is None:
+            continue
+        i += 1
+        tb = replace(tb.with_user(data), designation=designation, sheet_no=i, sheets=n)
+        x1, y1 = sheet.width - MARGIN, sheet.height - MARGIN
+        _title_fill(sheet, x1 - TB_WIDTH, y1, tb)
+        _text26(sheet, LEFT_MARGIN, MARGIN, tb.designation)
+        sheet.block = None
+
+
+def short_date(text: str) -> str:
+    """A date written DD.MM.YYYY shortened to DD.MM.YY, as the 10 mm Дата cell holds it."""
+    parts = text.split(".")
+    if len(parts) == 3 and all(p.isdigit() for p in parts) and len(parts[2]) == 4:
+        return f"{parts[0]}.{parts[1]}.{parts[2][2:]}"
+    return text
+
+
+def reserved(sheet_w: float, sheet_h: float) -> list[tuple[float, float, float, float]]:
+    """The boxes (x0, y0 top, x1, y1 bottom) inside the frame that belong to the form, not to
+    the drawing: the title block and графа 26."""
+    x0, y0, x1, y1 = LEFT_MARGIN, MARGIN, sheet_w - MARGIN, sheet_h - MARGIN
+    return [
+        (x1 - TB_WIDTH, y1 - TB_HEIGHT, x1, y1),
+        (x0, y0, x0 + G26_WIDTH, y0 + G26_HEIGHT),
+    ]
+
+
+def _text26(sheet: Sheet, x0: float, y0: float, designation: str) -> None:
+    """Графа 26: the designation turned 180°, so that it reads from the sheet's top edge."""
+    x1, y1 = x0 + G26_WIDTH, y0 + G26_HEIGHT
+    if not designation:
+        return
+    cx, cy = (x0 + x1) / 2.0, (y0 + y1) / 2.0
+    for hh in (*(hh for hh in reversed(HEIGHTS) if hh <= 5.0), SMALLEST_HEIGHT):
+        runs = parse(designation)
+        w, _, _ = box(runs, hh)
+        if w <= G26_WIDTH - 2.0:
+            # turned 180° about its baseline's left end: the text runs leftwards, above it
+            at = (cx + w / 2.0, cy - hh / 2.0)
+            sheet.add(TextItem(at, runs, hh, metrics().font_size(hh), w, "title", angle=180.0))
+            return
+    raise ParameterError("designation", designation, "does not fit графа 26 (70 mm)")
+
+
+def _under_frame(sheet: Sheet, bx: float, by: float, fmt: str, lang: Lang) -> None:
+    """The captions "Копировал" and "Формат A3" under the title block (графы 29, 30)."""
+    cap = CAPTIONS[lang]
+    base = by + (MARGIN + 2.5) / 2.0
+    text_at(sheet, cap["copied"], (bx + 75.0, base), 2.5)
+    text_at(sheet, f"{cap['format']} {fmt}", (bx + 140.0, base), 2.5)
 
 
 def text_at(
@@ -141,13 +254,14 @@ def text_at(
 def fit_text(
     sheet: Sheet,
     markup: str,
-    cell: tuple[float, float, float, float],
+    cell: tuple[float, ...],
     height: float,
     role: str = "title",
     anchor: str = "centre",
+    param: str = "title block",
 ) -> list[TextItem]:
     """Text centred in a cell (x0, y0 top, x1, y1 bottom), shrunk to a smaller GOST height and
-    then broken into lines until it fits."""
+    then broken into lines until it fits; else a :class:`ParameterError` naming ``param``."""
     x0, y0, x1, y1 = cell
     room_w, room_h = x1 - x0 - 0.8, y1 - y0 - 1.0
     heights = [*(hh for hh in reversed(HEIGHTS) if hh <= height), SMALLEST_HEIGHT]
@@ -166,7 +280,9 @@ def fit_text(
                     text_at(sheet, ln, (cx, top + i * lead), hh, role, anchor)
                     for i, ln in enumerate(lines)
                 ]
-    raise ParameterError("title block", markup, "the text does not fit its cell")
+    raise ParameterError(
+        param, markup, f"does not fit its title-block cell ({x1 - x0:g} × {y1 - y0:g} mm)"
+    )
 
 
 def _split(words: list[str], n: int) -> list[str]:
@@ -187,19 +303,30 @@ def _split(words: list[str], n: int) -> list[str]:
     return lines
 
 
-def _title_block(sheet: Sheet, bx: float, by: float, tb: TitleBlock) -> None:
-    """Draw form 1 with its lower-left corner at sheet point (bx, by)."""
+@dataclass(frozen=True)
+class _Block:
+    """Form 1's own coordinates (mm from its lower-left corner, y up) on a sheet."""
 
-    def pt(x: float, y: float) -> XY:
-        return (bx + x, by - y)
+    sheet: Sheet
+    bx: float
+    by: float
 
-    def seg(x_a: float, y_a: float, x_b: float, y_b: float, thick: bool) -> None:
-        sheet.add(Polyline((pt(x_a, y_a), pt(x_b, y_b)), "frame" if thick else "frame_thin"))
+    def pt(self, x: float, y: float) -> XY:
+        return (self.bx + x, self.by - y)
 
-    def cell(x_a: float, y_a: float, x_b: float, y_b: float) -> tuple[float, float, float, float]:
-        return (bx + x_a, by - y_b, bx + x_b, by - y_a)
+    def seg(self, x_a: float, y_a: float, x_b: float, y_b: float, thick: bool) -> None:
+        role = "frame" if thick else "frame_thin"
+        self.sheet.add(Polyline((self.pt(x_a, y_a), self.pt(x_b, y_b)), role))
 
-    cap = CAPTIONS[tb.lang]
+    def cell(self, x_a: float, y_a: float, x_b: float, y_b: float) -> tuple[float, ...]:
+        return (self.bx + x_a, self.by - y_b, self.bx + x_b, self.by - y_a)
+
+
+def _title_form(sheet: Sheet, bx: float, by: float, lang: Lang) -> None:
+    """Draw form 1's lines and captions with its lower-left corner at sheet point (bx, by)."""
+    b = _Block(sheet, bx, by)
+    pt, seg, cell = b.pt, b.seg, b.cell
+    cap = CAPTIONS[lang]
     # outline and the main dividers (thick)
     sheet.add(Polyline((pt(0, 0), pt(185, 0), pt(185, 55), pt(0, 55)), "frame", closed=True))
     for x in (17, 40, 55, 65):
@@ -231,21 +358,45 @@ def _title_block(sheet: Sheet, bx: float, by: float, tb: TitleBlock) -> None:
     for row, key in enumerate(("dev", "chk", "tchk", "", "nchk", "appr")):
         if key:
             fit_text(sheet, cap[key], cell(0, 25 - 5 * row, 17, 30 - 5 * row), small, anchor="left")
-    if tb.developer:
-        fit_text(sheet, tb.developer, cell(17, 25, 40, 30), small, anchor="left")
-    if tb.checker:
-        fit_text(sheet, tb.checker, cell(17, 20, 40, 25), small, anchor="left")
     for (x_a, x_b), key in zip(
         ((135, 150), (150, 167), (167, 185)), ("lit", "mass", "scale"), strict=True
     ):
         fit_text(sheet, cap[key], cell(x_a, 35, x_b, 40), small)
+
+
+def _title_fill(sheet: Sheet, bx: float, by: float, tb: TitleBlock) -> None:
+    """Fill form 1's cells (lower-left corner at sheet point (bx, by)) from ``tb``."""
+    cell = _Block(sheet, bx, by).cell
+    cap = CAPTIONS[tb.lang]
+    small = 2.5
+    people = (
+        (tb.developer, "student"),
+        (tb.checker, "checker"),
+        (tb.tcontrol, "tcontrol"),
+        ("", ""),
+        (tb.ncontrol, "ncontrol"),
+        (tb.approver, "approver"),
+    )
+    for row, (name, key) in enumerate(people):
+        if name:
+            c = cell(17, 25 - 5 * row, 40, 30 - 5 * row)
+            fit_text(sheet, name, c, small, anchor="left", param=key)
+    if tb.date:
+        fit_text(sheet, short_date(tb.date), cell(55, 25, 65, 30), small, param="date")
+    if tb.stage:
+        fit_text(sheet, tb.stage, cell(135, 20, 140, 35), 5.0)
     fit_text(sheet, f"{cap['sheet']} {tb.sheet_no}", cell(135, 15, 155, 20), small)
     fit_text(sheet, f"{cap['sheets']} {tb.sheets}", cell(155, 15, 185, 20), small)
     if tb.scale:
         fit_text(sheet, tb.scale, cell(167, 20, 185, 35), 5.0)
-    fit_text(sheet, tb.designation, cell(65, 40, 185, 55), 7.0)
+    fit_text(sheet, tb.designation, cell(65, 40, 185, 55), 7.0, param="designation")
     fit_text(sheet, tb.title, cell(65, 15, 135, 40), 5.0)
     if tb.material:
         fit_text(sheet, tb.material, cell(65, 0, 135, 15), 5.0)
-    if tb.organisation:
-        fit_text(sheet, tb.organisation, cell(135, 0, 185, 15), 3.5)
+    # графа 9: the organisation, and under it the student's group
+    if tb.organisation and tb.group:
+        fit_text(sheet, tb.organisation, cell(135, 6, 185, 15), 3.5, param="org")
+        fit_text(sheet, tb.group, cell(135, 0, 185, 6), 2.5, param="group")
+    elif tb.organisation or tb.group:
+        key = "org" if tb.organisation else "group"
+        fit_text(sheet, tb.organisation or tb.group, cell(135, 0, 185, 15), 3.5, param=key)

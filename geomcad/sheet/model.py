@@ -12,7 +12,10 @@ so a backend only replays them. Nothing here writes files.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Literal, TypeAlias
+from typing import TYPE_CHECKING, Literal, TypeAlias
+
+if TYPE_CHECKING:
+    from geomcad.sheet.frame import TitleBlock
 
 XY: TypeAlias = tuple[float, float]
 Shift = Literal["base", "sub", "sup"]
@@ -79,7 +82,9 @@ class TextItem:
     """A line of text whose left end of the baseline is at ``at`` (mm).
 
     ``height`` is the GOST cap height (mm); ``font_size`` the matching em size, measured from the
-    font. ``width`` is the text's advance width in mm, as the backends will set it.
+    font. ``width`` is the text's advance width in mm, as the backends will set it. ``angle`` turns
+    the text about ``at`` (degrees, counter-clockwise as seen on the paper): a dimension's text
+    along a slanted dimension line, графа 26 turned 180°.
     """
 
     at: XY
@@ -89,6 +94,7 @@ class TextItem:
     width: float
     role: str
     id: str = ""
+    angle: float = 0.0
 
     @property
     def text(self) -> str:
@@ -111,6 +117,12 @@ class Sheet:
     format: str
     title: str
     items: list[Item] = field(default_factory=list)
+    #: The title block waiting to be filled (:func:`geomcad.sheet.frame.fill_title_blocks`).
+    block: TitleBlock | None = None
+    #: Every placed label with the point it names, and every vector (tail, tip), in sheet mm:
+    #: what the layout checker measures.
+    anchors: list[tuple[TextItem, XY]] = field(default_factory=list)
+    vectors: list[tuple[XY, XY]] = field(default_factory=list)
 
     def add(self, item: Item) -> None:
         self.items.append(item)

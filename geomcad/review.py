@@ -1,0 +1,136 @@
+"""Review sheets: a solution beside the published one, apart from what a student hands in.
+
+``geomcad build`` draws hand-in sheets, which show the solution and nothing of its audit. The
+comparison with the seed's published solution (its printed values, the differences, each value's
+class and tolerance, the errata, the notes on the numerical method) goes to the ``ID-review``
+sheets, drawn here from :meth:`~geomcad.problem.Solution.seed_report` and
+:attr:`~geomcad.problem.Solution.notes` for any problem, and written by
+``geomcad build --review``.
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+from geomcad.sheet import Drawing, Sheet, TitleBlock, fmt_number, start
+from geomcad.sheet.frame import fill_title_blocks
+from geomcad.sheet.text import SUBSTITUTE, metrics
+
+if TYPE_CHECKING:
+    from geomcad.problem import Solution
+    from geomcad.sheet.titleblock import TitleData
+
+#: Columns of the comparison: header and width (mm).
+COLUMNS = (
+    ("Величина", 38.0),
+    ("Ед.", 16.0),
+    ("Точно", 34.0),
+    ("Опубликовано", 34.0),
+    ("Напечатано", 96.0),
+    ("Разность", 30.0),
+    ("Класс", 24.0),
+    ("Допуск", 28.0),
+    ("Согласие", 22.0),
+)
+CLASSES = {"measured": "измерено", "rounded": "округлено", "erratum": "ошибка"}
+ROW_H = 6.0
+TOP = 30.0
+#: The lowest y (mm) a table row or a note line may reach on an A3 sheet (above the title block).
+BOTTOM = 230.0
+
+
+def review_sheets(sol: Solution, title: TitleData | None = None) -> list[tuple[str, Sheet]]:
+    """The review sheets of a solution: ``[("review", sheet), ("review-2", sheet) …]``, one
+    document with its own sheet numbers; none for a variant (no published solution to compare)."""
+    if not sol.is_seed or not sol.problem.seed:
+        return []
+    units = {r.name: r.unit for r in sol.problem.results}
+    rows = [
+        [
+            _plain(row["name"]),
+            units.get(row["name"].split(".")[0], ""),
+            fmt_number(row["exact"], digits=6),
+            fmt_number(row["seed"], digits=6),
+            _plain(row["printed"]),
+            fmt_number(row["diff"], digits=2),
+            CLASSES.get(row["class"], row["class"]),
+            fmt_number(row["tol"], digits=2),
+            "да" if row["agrees"] else "нет",
+        ]
+        for row in sol.seed_report()
+    ]
+    lines = [_plain(n) for n in sol.notes]
+    drawings: list[Drawing] = []
+    d = _new(sol, 1)
+    drawings.append(d)
+    y = TOP
+    widths = [w for _, w in COLUMNS]
+    header = [h for h, _ in COLUMNS]
+    while rows:
+        room = int((BOTTOM - y) // ROW_H) - 1
+        if room < 1:
+            d = _new(sol, len(drawings) + 1)
+            drawings.append(d)
+            y = TOP
+            continue
+        chunk, rows = rows[:room], rows[room:]
+        _w, h = d.table(30.0, y, widths, [header, *chunk], height=3.5, row_h=ROW_H)
+        y += h + 8.0
+    if lines:
+        if y > BOTTOM - 20.0:
+            d = _new(sol, len(drawings) + 1)
+            drawings.append(d)
+            y = TOP
+        d.text("Замечания (ошибки и пояснения к опубликованному решению)", (30.0, y + 5.0), 5.0)
+        y += 9.0
+        for i, line in enumerate(lines, 1):
+            if y > BOTTOM:
+                d = _new(sol, len(drawings) + 1)
+                drawings.append(d)
+                y = TOP
+            y = d.paragraph(f"{i}. {line}", 30.0, y, 360.0, 3.5, indent=5.0) + 1.5
+    sheets = [d.finish() for d in drawings]
+    fill_title_blocks(sheets, title)
+    return [("review" if i == 0 else f"review-{i + 1}", s) for i, s in enumerate(sheets)]
+
+
+def _new(sol: Solution, no: int) -> Drawing:
+    tb = TitleBlock(
+        title=f"{sol.problem.id}: сверка с опубликованным решением",
+        designation=f"ТММ.{sol.problem.id}.ПР",
+    )
+    d = start("A3", tb)
+    head = f"Сверка с опубликованным решением: {sol.problem.title}"
+    if no > 1:
+        head += f" (продолжение, {no})"
+    d.paragraph(head, 95.0, 8.0, 310.0, 5.0)
+    return d
+
+
+#: Characters of the notes the font lacks, written with ones it has (subscript digits, roots).
+_SPELL = {
+    **SUBSTITUTE,
+    **{chr(0x2080 + i): str(i) for i in range(10)},
+    **{"²": "^2", "³": "^3"},
+    "√": "sqrt",
+    "⊥": " perp. ",
+    "∥": " par. ",
+    "→": "->",
+    "\u0304": "",  # a combining macron (h̄): the letter stays
+}
+
+
+def _plain(text: str) -> str:
+    """Text as printed, with the markup characters escaped and the glyphs the font lacks spelt
+    out (a note quotes formulas verbatim)."""
+    text = text.replace("\\", "\\\\").replace("_", "\\_").replace("^", "\\^")
+    widths = metrics().widths
+    out = []
+    for ch in text:
+        if ch in _SPELL:
+            out.append(_SPELL[ch])
+        elif ord(ch) in widths:
+            out.append(ch)
+        else:
+            out.append("?")
+    return "".join(out)
