@@ -205,8 +205,8 @@ class Linkage:
     joint: str
     length: float
     omega: float
-    phi: tuple[float, ...] | None  # rad, as listed; None with `positions`
-    positions: int | None
+    phi: tuple[float, ...] | None  # rad, as listed: the plans' positions; None: the numbered ones
+    positions: int  # N of the numbering (12 unless the file says)
     output: str
     working: Literal["forward", "backward"]
     groups: tuple[Group, ...]
@@ -453,9 +453,6 @@ def parse(data: Mapping[str, Any]) -> Linkage:
             "drive.omega", omega, f"must be non-zero and within ±{MAX_OMEGA:g} rad/s"
         )
     phi: tuple[float, ...] | None = None
-    positions: int | None = None
-    if "phi" in drive and "positions" in drive:
-        raise FileKeyError("drive", "", "give phi or positions, not both")
     if "phi" in drive:
         v = drive["phi"]
         if isinstance(v, int | float) and not isinstance(v, bool):
@@ -469,11 +466,10 @@ def parse(data: Mapping[str, Any]) -> Linkage:
             for i, x in enumerate(v, start=1)
         ]
         phi = tuple(math.radians(math.remainder(a, 360.0)) for a in angles)
-    else:
-        v = drive.get("positions", 12)
-        if isinstance(v, bool) or not isinstance(v, int) or not 1 <= v <= MAX_POSITIONS:
-            raise FileKeyError("drive.positions", v, f"must be a whole number 1 … {MAX_POSITIONS}")
-        positions = v
+    v = drive.get("positions", 12)
+    if isinstance(v, bool) or not isinstance(v, int) or not 1 <= v <= MAX_POSITIONS:
+        raise FileKeyError("drive.positions", v, f"must be a whole number 1 … {MAX_POSITIONS}")
+    positions: int = v
 
     lk = Linkage(
         title=title,

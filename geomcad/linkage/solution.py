@@ -23,8 +23,6 @@ from geomcad.structure.model import Link, Pair, prismatic, revolute
 #: Crank angles at which a whole turn is checked before the plans are constructed.
 TURN_SAMPLES = 720
 
-#: Positions numbered for the dynamics when the file lists ``phi`` instead of ``positions``.
-DYNAMICS_POSITIONS = 12
 
 
 @dataclass(frozen=True)
@@ -94,7 +92,6 @@ def solve(lk: Linkage) -> Solved:
     if lk.phi is not None:
         phis = list(lk.phi)
     else:
-        assert lk.positions is not None
         phis = numbered(lk, cyc, lk.positions)
     positions = tuple(construct(lk, phi) for phi in phis)
     m = scheme(lk, positions[0])
@@ -135,7 +132,8 @@ def moving_points(lk: Linkage) -> list[str]:
 
 def position_results(lk: Linkage, P: Position) -> dict[str, Any]:
     """One object of ``results.positions``: everything read off position P's plans."""
-    out: dict[str, Any] = {"phi_deg": math.degrees(P.phi) % 360.0}
+    # the file's own angle back (30, not 29.999999999999996), within [0°, 360°)
+    out: dict[str, Any] = {"phi_deg": round(math.degrees(P.phi) % 360.0, 10) % 360.0}
     for name in moving_points(lk):
         p = P.pos[name]
         out[f"x_{name}"] = p.x
