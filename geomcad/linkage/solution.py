@@ -89,10 +89,7 @@ def solve(lk: Linkage) -> Solved:
     # the whole turn first: a group that cannot close anywhere is named with its crank angle
     sweep(lk, np.linspace(0.0, 2.0 * math.pi, TURN_SAMPLES, endpoint=False), order=2)
     cyc = cycle(lk)
-    if lk.phi is not None:
-        phis = list(lk.phi)
-    else:
-        phis = numbered(lk, cyc, lk.positions)
+    phis = list(lk.phi) if lk.phi is not None else numbered(lk, cyc, lk.positions)
     positions = tuple(construct(lk, phi) for phi in phis)
     m = scheme(lk, positions[0])
     W = chebyshev(m.n, m.p5, m.p4)
