@@ -13,14 +13,19 @@ assembly mode fixed for the whole sweep. The equations are those of the plans
   a^k = 2ω3 × V_rel; the block turns with link 3;
 - PRP: the yoke translates along the guide, V_A = V_E + V_rel (∥ slot), neither link turns.
 
-Every point is an ``(N, 2)`` array; link ω and ε are ``(N,)``. A position where a group cannot
-close, or a dead position, raises :class:`~geomcad.errors.NoIntersection` naming the group and the
-first crank angle where it happens.
+Points are complex numbers x + iy inside the kernel (a turn by 90° is a product by i, a dot
+product Re(conj(a)·b), a cross product Im(conj(a)·b)): contiguous arrays and few temporaries. The
+crank angles are processed in blocks of :data:`BLOCK`, so that the temporaries stay in the cache.
+:class:`State` shows every point as an ``(N, 2)`` float array (a view of the complex one, no
+copy); link ω and ε are ``(N,)``. A position where a group cannot close, or a dead position,
+raises :class:`~geomcad.errors.NoIntersection` naming the group and the first crank angle where
+it happens.
 """
 
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -28,13 +33,36 @@ import numpy.typing as npt
 
 from geomcad import tol
 from geomcad.errors import NoIntersection
-from geomcad.kinematics.dyads import cross, dot, perp
 from geomcad.linkage.model import Group, Linkage, PointDef
 
 Arr = npt.NDArray[np.float64]
+Cx = npt.NDArray[np.complex128]
 
-#: The sweep's velocities and accelerations: none, velocities, or both.
-Order = int
+#: Crank angles per block of the sweep (the bespoke six-bar kernel's best block too).
+BLOCK = 16384
+
+
+def _xy(z: Cx) -> Arr:
+    """A complex array as an ``(N, 2)`` float array (a view)."""
+    return z.view(np.float64).reshape(-1, 2)
+
+
+def _cx(a: Arr) -> Cx:
+    """An ``(N, 2)`` float array as complex numbers."""
+    a = np.ascontiguousarray(a, dtype=np.float64)
+    return a.view(np.complex128).reshape(-1)
+
+
+def _dot(a: Cx, b: Cx) -> Arr:
+    return np.asarray(a.real * b.real + a.imag * b.imag)
+
+
+def _cross(a: Cx, b: Cx) -> Arr:
+    return np.asarray(a.real * b.imag - a.imag * b.real)
+
+
+def _abs2(a: Cx) -> Arr:
+    return np.asarray(a.real * a.real + a.imag * a.imag)
 
 
 @dataclass
@@ -43,18 +71,35 @@ class State:
     ``(N, 2)`` each, ω and ε of every moving link, the unit slide direction of each link that
     has one (``slide``), and for each sliding pair, keyed by the block's joint, the relative
     velocity along the slide (signed, ``v_rel``) and the Coriolis acceleration (signed, along
-    the slide's left normal, ``a_cor``)."""
+    the slide's left normal, ``a_cor``). ``z``, ``vz``, ``az`` and ``sz`` are the same points
+    as complex numbers."""
 
     phi: Arr
     omega1: float
-    pos: dict[str, Arr] = field(default_factory=dict)
-    vel: dict[str, Arr] = field(default_factory=dict)
-    acc: dict[str, Arr] = field(default_factory=dict)
+    z: dict[str, Cx] = field(default_factory=dict)
+    vz: dict[str, Cx] = field(default_factory=dict)
+    az: dict[str, Cx] = field(default_factory=dict)
+    sz: dict[int, Cx] = field(default_factory=dict)
     omega: dict[int, Arr] = field(default_factory=dict)
     eps: dict[int, Arr] = field(default_factory=dict)
-    slide: dict[int, Arr] = field(default_factory=dict)
     v_rel: dict[str, Arr] = field(default_factory=dict)
     a_cor: dict[str, Arr] = field(default_factory=dict)
+
+    @property
+    def pos(self) -> dict[str, Arr]:
+        return {k: _xy(v) for k, v in self.z.items()}
+
+    @property
+    def vel(self) -> dict[str, Arr]:
+        return {k: _xy(v) for k, v in self.vz.items()}
+
+    @property
+    def acc(self) -> dict[str, Arr]:
+        return {k: _xy(v) for k, v in self.az.items()}
+
+    @property
+    def slide(self) -> dict[int, Arr]:
+        return {k: _xy(v) for k, v in self.sz.items()}
 
 
 def _raise(step: str, bad: npt.NDArray[np.bool_], phi: Arr, why: str) -> None:
@@ -64,37 +109,50 @@ def _raise(step: str, bad: npt.NDArray[np.bool_], phi: Arr, why: str) -> None:
         raise NoIntersection(step, f"{why} at the crank angle φ = {deg:.6g}°")
 
 
-def _unit(v: Arr) -> Arr:
-    return np.asarray(v / np.sqrt(dot(v, v))[..., None], dtype=np.float64)
-
-
-def _solve2(c1: Arr, c2: Arr, rhs: Arr) -> tuple[Arr, Arr]:
+def _solve2(c1: Cx, c2: Cx, rhs: Cx) -> tuple[Arr, Arr]:
     """x, y with x·c1 + y·c2 = rhs, row by row (Cramer's rule)."""
-    det = cross(c1, c2)
-    return cross(rhs, c2) / det, cross(c1, rhs) / det
+    det = _cross(c1, c2)
+    return _cross(rhs, c2) / det, _cross(c1, rhs) / det
 
 
-def sweep(lk: Linkage, phi: npt.ArrayLike, order: Order = 2) -> State:
+def sweep(lk: Linkage, phi: npt.ArrayLike, order: int = 2) -> State:
     """The linkage at the crank angles ``phi`` (rad): positions, and with ``order`` ≥ 1
     velocities, with ``order`` 2 accelerations too, at the file's constant ω1."""
-    ph = np.atleast_1d(np.asarray(phi, dtype=np.float64))
+    ph = np.ascontiguousarray(np.atleast_1d(np.asarray(phi, dtype=np.float64)))
+    n = ph.shape[0]
+    if n <= BLOCK:
+        return _block(lk, ph, order)
+    out = State(ph, lk.omega)
+    for start in range(0, n, BLOCK):
+        b = _block(lk, ph[start : start + BLOCK], order)
+        sl = slice(start, start + b.phi.shape[0])
+        for name in ("z", "vz", "az", "sz", "omega", "eps", "v_rel", "a_cor"):
+            dst, src = getattr(out, name), getattr(b, name)
+            for k, v in src.items():
+                if k not in dst:
+                    dst[k] = np.empty(n, dtype=v.dtype)
+                dst[k][sl] = v
+    return out
+
+
+def _block(lk: Linkage, ph: Arr, order: int) -> State:
     n = ph.shape[0]
     s = State(ph, lk.omega)
-    zeros = np.zeros((n, 2))
+    zero = np.zeros(n, dtype=np.complex128)
     for name, p in lk.frame.items():
-        s.pos[name] = np.broadcast_to(np.array([p.x, p.y]), (n, 2))
-        s.vel[name] = zeros
-        s.acc[name] = zeros
+        s.z[name] = np.full(n, complex(p.x, p.y))
+        s.vz[name] = zero
+        s.az[name] = zero
     w1 = lk.omega
     O1 = lk.frame[lk.pivot]
-    r = lk.length * np.stack([np.cos(ph), np.sin(ph)], axis=-1)
-    s.pos[lk.joint] = np.array([O1.x, O1.y]) + r
+    r = lk.length * np.exp(1j * ph)
+    s.z[lk.joint] = complex(O1.x, O1.y) + r
     s.omega[1] = np.full(n, w1)
     s.eps[1] = np.zeros(n)
     if order >= 1:
-        s.vel[lk.joint] = w1 * perp(r)
+        s.vz[lk.joint] = (1j * w1) * r
     if order >= 2:
-        s.acc[lk.joint] = -(w1 * w1) * r
+        s.az[lk.joint] = -(w1 * w1) * r
     _points_of(lk, s, 1, order)
     for g in lk.groups:
         _GROUP[g.kind](lk, g, s, order)
@@ -103,45 +161,39 @@ def sweep(lk: Linkage, phi: npt.ArrayLike, order: Order = 2) -> State:
     return s
 
 
-def _points_of(lk: Linkage, s: State, link: int, order: Order) -> None:
+def _points_of(lk: Linkage, s: State, link: int, order: int) -> None:
     for p in lk.points:
         if p.link == link:
             point(s, p, order)
 
 
-def point(s: State, p: PointDef, order: Order) -> None:
+def point(s: State, p: PointDef, order: int) -> None:
     """A ``[[point]]`` of a solved link: P = F + along·u + left·u⊥; V_P = V_F + ω × FP;
     a_P = a_F + ε × FP − ω²·FP."""
-    F = s.pos[p.frm]
-    u = s.slide[p.link] if p.slide else _unit(s.pos[p.toward] - F)
-    r = u * p.along + perp(u) * p.left
-    s.pos[p.name] = F + r
+    F = s.z[p.frm]
+    if p.slide:
+        u = s.sz[p.link]
+    else:
+        t = s.z[p.toward] - F
+        u = t / np.sqrt(_abs2(t))
+    r = u * complex(p.along, p.left)
+    s.z[p.name] = F + r
     if order >= 1:
-        w = s.omega[p.link][..., None]
-        s.vel[p.name] = s.vel[p.frm] + w * perp(r)
+        w = s.omega[p.link]
+        s.vz[p.name] = s.vz[p.frm] + 1j * w * r
     if order >= 2:
-        w = s.omega[p.link][..., None]
-        e = s.eps[p.link][..., None]
-        s.acc[p.name] = s.acc[p.frm] + e * perp(r) - (w * w) * r
+        w = s.omega[p.link]
+        s.az[p.name] = s.az[p.frm] + (1j * s.eps[p.link] - w * w) * r
 
 
-def _ang(p: Arr, vp: Arr, q: Arr, vq: Arr) -> Arr:
-    e = q - p
-    return np.asarray(cross(e, vq - vp) / dot(e, e), dtype=np.float64)
-
-
-def _rrr(lk: Linkage, g: Group, s: State, order: Order) -> None:
-    P1, P2 = s.pos[g.ends[0]], s.pos[g.ends[1]]
+def _rrr(lk: Linkage, g: Group, s: State, order: int) -> None:
+    P1, P2 = s.z[g.ends[0]], s.z[g.ends[1]]
     l1, l2 = g.lengths
     dv = P2 - P1
-    d2 = dot(dv, dv)
+    d2 = _abs2(dv)
     d = np.sqrt(d2)
-    _raise(
-        g.key,
-        d <= tol.REL_LENGTH * (l1 + l2),
-        s.phi,
-        f"the ends {g.ends[0]} and {g.ends[1]} coincide",
-    )
+    why = f"the ends {g.ends[0]} and {g.ends[1]} coincide"
+    _raise(g.key, d <= tol.REL_LENGTH * (l1 + l2), s.phi, why)
     a = (l1 * l1 - l2 * l2 + d2) / (2.0 * d)
     h2 = l1 * l1 - a * a
     _raise(
@@ -150,73 +202,77 @@ def _rrr(lk: Linkage, g: Group, s: State, order: Order) -> None:
         s.phi,
         "the group cannot close: the circles do not meet",
     )
-    u = dv / d[..., None]
-    B = P1 + u * a[..., None] + perp(u) * (g.branch * np.sqrt(np.maximum(h2, 0.0)))[..., None]
-    s.pos[g.joint] = B
+    h = np.sqrt(np.maximum(h2, 0.0))
+    B = P1 + dv * ((a + (1j * g.branch) * h) / d)
+    s.z[g.joint] = B
     if order < 1:
         return
-    V1, V2 = s.vel[g.ends[0]], s.vel[g.ends[1]]
+    V1, V2 = s.vz[g.ends[0]], s.vz[g.ends[1]]
     e1, e2 = B - P1, B - P2
-    det = cross(e1, e2)
+    det = _cross(e1, e2)
     _raise(
         f"{g.key}: velocity plan point {g.joint.lower()}",
         np.abs(det) <= tol.ANGLE * l1 * l2,
         s.phi,
         "a dead position: the group's links are collinear",
     )
-    VB = np.stack(_solve_dot(e1, e2, dot(e1, V1), dot(e2, V2), det), axis=-1)
-    s.vel[g.joint] = VB
+    # V_B from e_i·(V_B − V_i) = 0: V_B = i(r2·e1 − r1·e2)/det, r_i = e_i·V_i
+    VB = 1j * (_dot(e2, V2) * e1 - _dot(e1, V1) * e2) / det
+    s.vz[g.joint] = VB
     a_, b_ = g.links
-    s.omega[a_] = _ang(P1, V1, B, VB)
-    s.omega[b_] = _ang(P2, V2, B, VB)
+    u1, u2 = VB - V1, VB - V2
+    s.omega[a_] = _cross(e1, u1) / (l1 * l1)
+    s.omega[b_] = _cross(e2, u2) / (l2 * l2)
     if order < 2:
         return
-    A1, A2 = s.acc[g.ends[0]], s.acc[g.ends[1]]
-    u1, u2 = VB - V1, VB - V2
-    aB = np.stack(
-        _solve_dot(e1, e2, dot(e1, A1) - dot(u1, u1), dot(e2, A2) - dot(u2, u2), det), axis=-1
-    )
-    s.acc[g.joint] = aB
-    s.eps[a_] = _ang(P1, A1, B, aB)
-    s.eps[b_] = _ang(P2, A2, B, aB)
+    A1, A2 = s.az[g.ends[0]], s.az[g.ends[1]]
+    r1 = _dot(e1, A1) - _abs2(u1)
+    r2 = _dot(e2, A2) - _abs2(u2)
+    aB = 1j * (r2 * e1 - r1 * e2) / det
+    s.az[g.joint] = aB
+    s.eps[a_] = _cross(e1, aB - A1) / (l1 * l1)
+    s.eps[b_] = _cross(e2, aB - A2) / (l2 * l2)
 
 
-def _solve_dot(e1: Arr, e2: Arr, r1: Arr, r2: Arr, det: Arr) -> tuple[Arr, Arr]:
-    """x with e1·x = r1 and e2·x = r2, row by row."""
-    return (r1 * e2[..., 1] - r2 * e1[..., 1]) / det, (e1[..., 0] * r2 - e2[..., 0] * r1) / det
-
-
-def guide_line(lk: Linkage, g: Group, s: State) -> tuple[Arr, Arr]:
-    """The guide of an RRP/PRP group in every position: a point q on it and its unit
-    direction d (a guide on a moving link: from → toward, shifted ``offset`` to the left)."""
+def _guide_cx(lk: Linkage, g: Group, s: State) -> tuple[Cx, Cx]:
     gd = g.guide
     assert gd is not None
     n = s.phi.shape[0]
     if gd.fixed:
-        gdir = gd.direction
+        d = gd.direction
         return (
-            np.broadcast_to(np.array([gd.through.x, gd.through.y]), (n, 2)),
-            np.broadcast_to(np.array([gdir.x, gdir.y]), (n, 2)),
+            np.full(n, complex(gd.through.x, gd.through.y)),
+            np.full(n, complex(d.x, d.y)),
         )
-    F, T = s.pos[gd.frm], s.pos[gd.toward]
+    F, T = s.z[gd.frm], s.z[gd.toward]
+    t2 = _abs2(T - F)
     _raise(
         f"{g.key}: guide",
-        dot(T - F, T - F) <= (tol.REL_LENGTH * lk.length) ** 2,
+        t2 <= (tol.REL_LENGTH * lk.length) ** 2,
         s.phi,
         f"the guide's points {gd.frm} and {gd.toward} coincide",
     )
-    d = _unit(T - F)
-    return F + perp(d) * gd.offset, d
+    d = (T - F) / np.sqrt(t2)
+    return F + 1j * d * gd.offset, d
 
 
-def _rrp(lk: Linkage, g: Group, s: State, order: Order) -> None:
+def guide_line(lk: Linkage, g: Group, s: State) -> tuple[Arr, Arr]:
+    """The guide of an RRP/PRP group in every position: a point q on it and its unit
+    direction d, ``(N, 2)`` each (a guide on a moving link: from → toward, shifted ``offset``
+    to the left)."""
+    q, d = _guide_cx(lk, g, s)
+    return _xy(q), _xy(d)
+
+
+def _rrp(lk: Linkage, g: Group, s: State, order: int) -> None:
     gd = g.guide
     assert gd is not None
-    B = s.pos[g.ends[0]]
+    B = s.z[g.ends[0]]
     (length,) = g.lengths
-    q, d = guide_line(lk, g, s)
-    t0 = dot(B - q, d)
-    h = cross(d, B - q)
+    q, d = _guide_cx(lk, g, s)
+    bq = B - q
+    t0 = _dot(d, bq)
+    h = _cross(d, bq)
     w2 = length * length - h * h
     _raise(
         f"{g.key}: {g.joint} = circle({g.ends[0]}, {length:g}) ∩ guide",
@@ -224,58 +280,59 @@ def _rrp(lk: Linkage, g: Group, s: State, order: Order) -> None:
         s.phi,
         "the group cannot close: the guide misses the circle",
     )
-    D = q + d * (t0 + g.branch * np.sqrt(np.maximum(w2, 0.0)))[..., None]
-    s.pos[g.joint] = D
+    D = q + d * (t0 + g.branch * np.sqrt(np.maximum(w2, 0.0)))
+    s.z[g.joint] = D
     rod, slider = g.links
-    s.slide[slider] = d
+    s.sz[slider] = d
     if order < 1:
         return
     n = s.phi.shape[0]
-    wg = s.omega[gd.link] if not gd.fixed else np.zeros(n)
-    VB = s.vel[g.ends[0]]
-    if gd.fixed:
-        VDg = np.zeros((n, 2))
-    else:
-        rF = D - s.pos[gd.frm]
-        VDg = s.vel[gd.frm] + wg[..., None] * perp(rF)
+    VB = s.vz[g.ends[0]]
     e = D - B
-    den = dot(e, d)
+    den = _dot(e, d)
     _raise(
         f"{g.key}: velocity plan point {g.joint.lower()}",
         np.abs(den) <= tol.ANGLE * length,
         s.phi,
         "a dead position: the rod is perpendicular to the guide",
     )
-    vr = dot(e, VB - VDg) / den
-    VD = VDg + d * vr[..., None]
-    s.vel[g.joint] = VD
-    s.omega[rod] = _ang(B, VB, D, VD)
+    if gd.fixed:
+        wg = np.zeros(n)
+        vr = _dot(e, VB) / den
+        VD = d * vr
+    else:
+        wg = s.omega[gd.link]
+        rF = D - s.z[gd.frm]
+        VDg = s.vz[gd.frm] + 1j * wg * rF
+        vr = _dot(e, VB - VDg) / den
+        VD = VDg + d * vr
+    s.vz[g.joint] = VD
+    u = VD - VB
+    s.omega[rod] = _cross(e, u) / (length * length)
     s.omega[slider] = wg
     s.v_rel[g.joint] = vr
     s.a_cor[g.joint] = 2.0 * wg * vr
     if order < 2:
         return
-    aB = s.acc[g.ends[0]]
+    aB = s.az[g.ends[0]]
     if gd.fixed:
-        aDg = np.zeros((n, 2))
         eg = np.zeros(n)
+        ar = (_dot(e, aB) - _abs2(u)) / den
+        aD = d * ar
     else:
         eg = s.eps[gd.link]
-        aDg = s.acc[gd.frm] + eg[..., None] * perp(rF) - (wg * wg)[..., None] * rF
-    acor = perp(d) * (2.0 * wg * vr)[..., None]
-    u = VD - VB
-    ar = (dot(e, aB - aDg - acor) - dot(u, u)) / den
-    aD = aDg + acor + d * ar[..., None]
-    s.acc[g.joint] = aD
-    s.eps[rod] = _ang(B, aB, D, aD)
+        aDg = s.az[gd.frm] + (1j * eg - wg * wg) * rF
+        acor = 1j * d * (2.0 * wg * vr)
+        ar = (_dot(e, aB - aDg - acor) - _abs2(u)) / den
+        aD = aDg + acor + d * ar
+    s.az[g.joint] = aD
+    s.eps[rod] = _cross(e, aD - aB) / (length * length)
     s.eps[slider] = eg
 
 
-def rpr_direction(A: Arr, C: Arr, offset: float, step: str, phi: Arr) -> Arr:
-    """The slide line's unit direction of an RPR group: through A, ``offset`` to the left of C
-    looking from C towards A, directed from C's foot to A."""
+def _rpr_dir(A: Cx, C: Cx, offset: float, step: str, phi: Arr) -> Cx:
     r = A - C
-    L2 = dot(r, r)
+    L2 = _abs2(r)
     t2 = L2 - offset * offset
     _raise(
         step,
@@ -283,62 +340,66 @@ def rpr_direction(A: Arr, C: Arr, offset: float, step: str, phi: Arr) -> Arr:
         phi,
         f"the slider comes within the offset {abs(offset):g} m of the pivot",
     )
-    t = np.sqrt(t2)
-    return np.asarray((r * t[..., None] - perp(r) * offset) / L2[..., None], dtype=np.float64)
+    return np.asarray(r * ((np.sqrt(t2) - 1j * offset) / L2))
 
 
-def _rpr(lk: Linkage, g: Group, s: State, order: Order) -> None:
-    A, C = s.pos[g.slider], s.pos[g.pivot]
-    d = rpr_direction(A, C, g.offset, f"{g.key}: slide line through {g.slider}", s.phi)
+def rpr_direction(A: Arr, C: Arr, offset: float, step: str, phi: Arr) -> Arr:
+    """The slide line's unit direction of an RPR group, ``(N, 2)``: through A, ``offset`` to the
+    left of C looking from C towards A, directed from C's foot to A."""
+    return _xy(_rpr_dir(_cx(A), _cx(C), offset, step, phi))
+
+
+def _rpr(lk: Linkage, g: Group, s: State, order: int) -> None:
+    A, C = s.z[g.slider], s.z[g.pivot]
+    d = _rpr_dir(A, C, g.offset, f"{g.key}: slide line through {g.slider}", s.phi)
     block, rocker = g.links
-    s.slide[block] = d
-    s.slide[rocker] = d
+    s.sz[block] = d
+    s.sz[rocker] = d
     if order < 1:
         return
-    r = A - C
-    VA, VC = s.vel[g.slider], s.vel[g.pivot]
-    w3, vr = _solve2(perp(r), d, VA - VC)
+    ir = 1j * (A - C)
+    VA, VC = s.vz[g.slider], s.vz[g.pivot]
+    w3, vr = _solve2(ir, d, VA - VC)
     s.omega[block] = w3
     s.omega[rocker] = w3
     s.v_rel[g.slider] = vr
     s.a_cor[g.slider] = 2.0 * w3 * vr
     if order < 2:
         return
-    aA, aC = s.acc[g.slider], s.acc[g.pivot]
-    rhs = aA - aC + (w3 * w3)[..., None] * r - perp(d) * (2.0 * w3 * vr)[..., None]
-    e3, _ = _solve2(perp(r), d, rhs)
+    rhs = s.az[g.slider] - s.az[g.pivot] - (w3 * w3) * ir * 1j - 1j * d * (2.0 * w3 * vr)
+    e3, _ = _solve2(ir, d, rhs)
     s.eps[block] = e3
     s.eps[rocker] = e3
 
 
-def prp_frame(g: Group) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """A PRP group's guide point, guide direction and slot direction (unit vectors)."""
+def prp_frame(g: Group) -> tuple[Arr, Arr, Arr]:
+    """A PRP group's guide point, guide direction and slot direction (unit vectors), ``(2,)``."""
     gd = g.guide
     assert gd is not None
     gdir = gd.direction
     sdir = gdir.rotated(g.slot_angle)
-    return (
-        np.array([gd.through.x, gd.through.y]),
-        np.array([gdir.x, gdir.y]),
-        np.array([sdir.x, sdir.y]),
-    )
+    q = np.array([gd.through.x, gd.through.y])
+    return q, np.array([gdir.x, gdir.y]), np.array([sdir.x, sdir.y])
 
 
-def _prp(lk: Linkage, g: Group, s: State, order: Order) -> None:
-    q, gv, sv = prp_frame(g)
+def _prp(lk: Linkage, g: Group, s: State, order: int) -> None:
+    gd = g.guide
+    assert gd is not None
     n = s.phi.shape[0]
-    G = np.broadcast_to(gv, (n, 2))
-    S = np.broadcast_to(sv, (n, 2))
-    A = s.pos[g.slider]
-    t, _ = _solve2(G, S, A - q)
-    s.pos[g.joint] = q + G * t[..., None]
+    gdir = gd.direction
+    sdir = gdir.rotated(g.slot_angle)
+    G = np.full(n, complex(gdir.x, gdir.y))
+    S = np.full(n, complex(sdir.x, sdir.y))
+    q = complex(gd.through.x, gd.through.y)
+    t, _ = _solve2(G, S, s.z[g.slider] - q)
+    s.z[g.joint] = q + G * t
     block, yoke = g.links
-    s.slide[block] = S
-    s.slide[yoke] = S
+    s.sz[block] = S
+    s.sz[yoke] = S
     if order < 1:
         return
-    v, w = _solve2(G, S, s.vel[g.slider])
-    s.vel[g.joint] = G * v[..., None]
+    v, w = _solve2(G, S, s.vz[g.slider])
+    s.vz[g.joint] = G * v
     for link in g.links:
         s.omega[link] = np.zeros(n)
     s.v_rel[g.slider] = w
@@ -347,13 +408,18 @@ def _prp(lk: Linkage, g: Group, s: State, order: Order) -> None:
     s.a_cor[g.joint] = np.zeros(n)
     if order < 2:
         return
-    a, _ = _solve2(G, S, s.acc[g.slider])
-    s.acc[g.joint] = G * a[..., None]
+    a, _ = _solve2(G, S, s.az[g.slider])
+    s.az[g.joint] = G * a
     for link in g.links:
         s.eps[link] = np.zeros(n)
 
 
-_GROUP = {"RRR": _rrr, "RRP": _rrp, "RPR": _rpr, "PRP": _prp}
+_GROUP: dict[str, Callable[[Linkage, Group, State, int], None]] = {
+    "RRR": _rrr,
+    "RRP": _rrp,
+    "RPR": _rpr,
+    "PRP": _prp,
+}
 
 
 def output_coordinate(lk: Linkage, s: State) -> Arr | None:
@@ -361,13 +427,14 @@ def output_coordinate(lk: Linkage, s: State) -> Arr | None:
     g = lk.output_guide
     if g is None:
         return None
-    P = s.pos[lk.output]
-    q, d = (
-        guide_line(lk, g, s)
-        if g.kind == "RRP"
-        else (np.broadcast_to(prp_frame(g)[0], P.shape), np.broadcast_to(prp_frame(g)[1], P.shape))
-    )
-    return np.asarray(dot(P - q, d), dtype=np.float64)
+    P = s.z[lk.output]
+    if g.kind == "RRP":
+        q, d = _guide_cx(lk, g, s)
+        return _dot(d, P - q)
+    gd = g.guide
+    assert gd is not None
+    dq = gd.direction
+    return _dot(np.full(P.shape, complex(dq.x, dq.y)), P - complex(gd.through.x, gd.through.y))
 
 
 def output_velocity(lk: Linkage, s: State) -> Arr | None:
