@@ -210,10 +210,10 @@ def test_set_edits_the_file_by_dotted_keys(tmp_path: Path) -> None:
 BAD: list[tuple[str, Any, str]] = [
     ("group.0.kind", "RRX", "group 1: kind must be one of RRR, RRP, RPR, PRP"),
     ("group.0.ends", ["A", "Q"], 'group 1: ends: point "Q" is not known yet'),
-    ("group.0.lengths", [0.28, -1.0], "group 1: lengths.2: must be > 0 m, not -1"),
+    ("group.0.lengths", [0.28, -1.0], "group 1: lengths.2: must be ≥ 1e-06 m, not -1"),
     ("group.0.assembly", "up", "group 1: assembly: must be one of 'left', 'right'"),
     ("group.0.lenghts", [1, 2], "did you mean 'lengths'"),
-    ("drive.omega", 0.0, "drive.omega: must be non-zero"),
+    ("drive.omega", 0.0, "drive.omega: |ω1| must be 1e-06 … 100000 rad/s"),
     ("drive.pivot", "X", 'drive.pivot: point "X" is not a [frame] point'),
     ("frame.C", [0.3], "frame.C: must be a point [x, y]"),
     ("colour", "red", "colour: unknown key"),
@@ -287,3 +287,21 @@ def test_verify_reads_a_plan_vector_at_its_scale(capsys: pytest.CaptureFixture[s
     assert main(["verify", path, "--measured", f"positions.3.V_B={v * 1.001}", "--json"]) == 0
     item = json.loads(capsys.readouterr().out)["items"][0]
     assert item["ok"] and item["precision"] == pytest.approx(0.5 * sol.scales["v"])
+
+
+def test_a_guide_must_lie_on_a_link_placed_before() -> None:
+    data = load(Path(__file__).resolve().parents[1] / "examples" / "rocking-slider.toml")
+    data["group"][1]["guide"]["link"] = 7
+    with pytest.raises(FileKeyError, match="group 2: guide: link: 7 is not a link placed before"):
+        parse(data)
+    data["group"][1]["guide"] = {"link": 2, "from": "A", "toward": "C"}
+    with pytest.raises(FileKeyError, match='toward: point "C" is not a point of link 2'):
+        parse(data)
+
+
+def test_lower_case_point_names_keep_their_plan_points_apart() -> None:
+    data = load(Path(__file__).resolve().parents[1] / "examples" / "four-bar.toml")
+    data["group"][0]["joint"] = "b"
+    data["point"][0]["toward"] = "b"
+    P = construct(parse(data), 1.0)
+    assert "b" in P.pos and "p_b" in P.vp.points

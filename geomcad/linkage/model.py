@@ -67,7 +67,9 @@ MOVING_GUIDE_KEYS = ("link", "from", "toward", "offset")
 #: A length of a link, a radius: more than this fraction of the mechanism's size and less than
 #: this many times it is a sensible drawing. Lengths are checked against absolute bounds only.
 MAX_LENGTH = 1.0e4  # m
+MIN_LENGTH = 1.0e-6  # m: a link shorter than a micrometre is a typing error
 MAX_OMEGA = 1.0e5  # rad/s
+MIN_OMEGA = 1.0e-6  # rad/s
 MAX_POSITIONS = 360
 MAX_MASS = 1.0e7  # kg
 MAX_FORCE = 1.0e9  # N or N·m
@@ -409,9 +411,11 @@ def _lengths(where: str, t: Mapping[str, Any], key: str, n: int) -> tuple[float,
     out = []
     for i, x in enumerate(v, start=1):
         out.append(
-            _number({key: x}, key, where, gt=0.0, le=MAX_LENGTH, unit="m")
+            _number({key: x}, key, where, ge=MIN_LENGTH, le=MAX_LENGTH, unit="m")
             if n == 1
-            else _number({f"{key}.{i}": x}, f"{key}.{i}", where, gt=0.0, le=MAX_LENGTH, unit="m")
+            else _number(
+                {f"{key}.{i}": x}, f"{key}.{i}", where, ge=MIN_LENGTH, le=MAX_LENGTH, unit="m"
+            )
         )
     return tuple(out)
 
@@ -446,11 +450,13 @@ def parse(data: Mapping[str, Any]) -> Linkage:
     if joint in owner:
         raise FileKeyError("drive.joint", joint, f'point "{joint}" is named twice')
     owner[joint] = 1
-    length = _number(drive, "length", "drive", gt=0.0, le=MAX_LENGTH, unit="m")
+    length = _number(drive, "length", "drive", ge=MIN_LENGTH, le=MAX_LENGTH, unit="m")
     omega = _number(drive, "omega", "drive", unit="rad/s")
-    if omega == 0.0 or abs(omega) > MAX_OMEGA:
+    if not MIN_OMEGA <= abs(omega) <= MAX_OMEGA:
         raise FileKeyError(
-            "drive.omega", omega, f"must be non-zero and within ±{MAX_OMEGA:g} rad/s"
+            "drive.omega",
+            omega,
+            f"|ω1| must be {MIN_OMEGA:g} … {MAX_OMEGA:g} rad/s (the sign: the sense)",
         )
     phi: tuple[float, ...] | None = None
     if "phi" in drive:
@@ -497,6 +503,7 @@ def parse(data: Mapping[str, Any]) -> Linkage:
     used_links = {1}
     for i, t in enumerate(_tables(data, "group"), start=1):
         g = _group(i, t, owner, used_links)
+        _check_guide(lk, g)
         lk = _replace(lk, groups=(*lk.groups, g))
         lk = _take_points(lk, pending, owner, final=False)
     groups = list(lk.groups)
@@ -673,6 +680,29 @@ def _guide(
         g, "offset", f"{where}: guide", default=0.0, ge=-MAX_LENGTH, le=MAX_LENGTH, unit="m"
     )
     return Guide(link, frm=frm, toward=toward, offset=offset)
+
+
+def _check_guide(lk: Linkage, g: Group) -> None:
+    """A guide on a moving link must lie on the crank or an earlier group's link, through two
+    points of that link."""
+    gd = g.guide
+    if gd is None or gd.fixed:
+        return
+    where = f"{g.key}: guide"
+    if gd.link not in lk.moving_links:
+        them = ", ".join(map(str, lk.moving_links))
+        raise FileKeyError(
+            where, gd.link, f"link: {gd.link} is not a link placed before (they are {them})"
+        )
+    on = lk.points_on(gd.link)
+    for key, p in (("from", gd.frm), ("toward", gd.toward)):
+        if p not in on:
+            why = (
+                f'{key}: point "{p}" is not a point of link {gd.link} (its points: {", ".join(on)})'
+            )
+            raise FileKeyError(where, p, why)
+    if gd.frm == gd.toward:
+        raise FileKeyError(where, gd.toward, "from and toward must differ")
 
 
 def _take_points(

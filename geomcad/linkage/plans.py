@@ -33,10 +33,11 @@ from geomcad.linkage.model import Group, Linkage, PointDef
 from geomcad.linkage.sweep import rpr_direction
 
 
-def plan_name(point: str) -> str:
-    """The plan point of a mechanism point (``B`` → ``b``; ``P`` → ``p_P``, the pole is p)."""
+def plan_name(point: str, taken: frozenset[str] = frozenset()) -> str:
+    """The plan point of a mechanism point: ``B`` → ``b``; ``p_P`` where the lower-case name is
+    the pole's (p) or a mechanism point's own name (``taken``)."""
     low = point.lower()
-    return f"p_{point}" if low in ("p", "π") else low
+    return f"p_{point}" if low in ("p", "π") or low in taken else low
 
 
 def _sub(name: str) -> str:
@@ -68,6 +69,12 @@ class Position:
     handles: dict[int, list[tuple[str, str]]] = field(default_factory=dict)
     #: the guide line of each RRP/PRP group and the slide line of each RPR group, by group index
     lines: dict[int, Line] = field(default_factory=dict)
+    #: the mechanism's point names, which plan points must not take
+    taken: frozenset[str] = frozenset()
+
+    def pn(self, point: str) -> str:
+        """The plan point of a mechanism point (:func:`plan_name`)."""
+        return plan_name(point, self.taken)
 
 
 def construct(lk: Linkage, phi: float, title: str = "") -> Position:
@@ -76,6 +83,7 @@ def construct(lk: Linkage, phi: float, title: str = "") -> Position:
     c = Construction(title or f"{lk.title}, φ1 = {deg:.6g}°")
     frame = {name: c.point(name, p, op="a frame point") for name, p in lk.frame.items()}
     P = Position(phi, c, velocity_plan(c), acceleration_plan(c))
+    P.taken = frozenset(lk.owner)
     P.pos.update(frame)
     _crank(lk, P)
     _points(lk, P, 1)
@@ -88,7 +96,7 @@ def construct(lk: Linkage, phi: float, title: str = "") -> Position:
 
 def _on_plans(P: Position, point: str) -> str:
     """The plan point of ``point``, adding a frame point at both poles when first needed."""
-    n = plan_name(point)
+    n = P.pn(point)
     if P.vp.name(n) not in P.vp.points:
         P.vp.fixed(n)
         P.ap.fixed(n)
@@ -108,7 +116,7 @@ def _crank(lk: Linkage, P: Position) -> None:
         f"at φ1 = {math.degrees(P.phi) % 360:.6g}°",
     )
     o = _on_plans(P, lk.pivot)
-    a = plan_name(lk.joint)
+    a = P.pn(lk.joint)
     w1 = lk.omega
     nm = f"{lk.joint}{lk.pivot}"
     P.vel[lk.joint] = P.vp.rigid(a, o, O1, A, w1, f"V_{{{lk.joint}}}", f"ω1 × {lk.pivot}{lk.joint}")
@@ -139,7 +147,7 @@ def _point(P: Position, p: PointDef) -> None:
         role="link",
         op=f"{p.along:g} m from {p.frm} along {how}, {p.left:g} m to its left",
     )
-    n = plan_name(p.name)
+    n = P.pn(p.name)
     handles = P.handles[p.link]
     (A, a), far = handles[0], None
     for B, b in handles[1:]:
@@ -174,7 +182,7 @@ def _rrr(lk: Linkage, g: Group, P: Position) -> None:
         note=f"{g.key}, assembly {side}: {J} on the {side} of {E1}{E2}",
     )
     P.pos[J] = B
-    e1, e2, j = _on_plans(P, E1), _on_plans(P, E2), plan_name(J)
+    e1, e2, j = _on_plans(P, E1), _on_plans(P, E2), P.pn(J)
     A1, A2 = P.pos[E1], P.pos[E2]
     vp, ap = P.vp, P.ap
     vp.solve(
@@ -255,7 +263,7 @@ def _rrp(lk: Linkage, g: Group, P: Position) -> None:
     B = P.pos[E]
     rod, slider = g.links
     P.slide[slider] = d
-    e, j = _on_plans(P, E), plan_name(J)
+    e, j = _on_plans(P, E), P.pn(J)
     vp, ap = P.vp, P.ap
     if gd.fixed:
         wg = eg = 0.0
@@ -378,7 +386,7 @@ def _prp(lk: Linkage, g: Group, P: Position) -> None:
     P.pos[J] = E
     block, yoke = g.links
     P.slide[block] = P.slide[yoke] = sdir
-    s, j = _on_plans(P, S), plan_name(J)
+    s, j = _on_plans(P, S), P.pn(J)
     vp, ap = P.vp, P.ap
     vp.solve(j, Side(vp.pole, gdir, "∥ the guide"), Side(s, sdir, "∥ the slot"))
     P.vel[J] = vp.absolute(j, f"V_{{{J}}}")

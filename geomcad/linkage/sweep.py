@@ -239,10 +239,10 @@ def _guide_cx(lk: Linkage, g: Group, s: State) -> tuple[Cx, Cx]:
     assert gd is not None
     n = s.phi.shape[0]
     if gd.fixed:
-        d = gd.direction
+        gdir = gd.direction
         return (
             np.full(n, complex(gd.through.x, gd.through.y)),
-            np.full(n, complex(d.x, d.y)),
+            np.full(n, complex(gdir.x, gdir.y)),
         )
     F, T = s.z[gd.frm], s.z[gd.toward]
     t2 = _abs2(T - F)
@@ -392,14 +392,14 @@ def _prp(lk: Linkage, g: Group, s: State, order: int) -> None:
     S = np.full(n, complex(sdir.x, sdir.y))
     q = complex(gd.through.x, gd.through.y)
     t, _ = _solve2(G, S, s.z[g.slider] - q)
-    s.z[g.joint] = q + G * t
+    s.z[g.joint] = np.asarray(q + G * t, dtype=np.complex128)
     block, yoke = g.links
     s.sz[block] = S
     s.sz[yoke] = S
     if order < 1:
         return
     v, w = _solve2(G, S, s.vz[g.slider])
-    s.vz[g.joint] = G * v
+    s.vz[g.joint] = np.asarray(G * v, dtype=np.complex128)
     for link in g.links:
         s.omega[link] = np.zeros(n)
     s.v_rel[g.slider] = w
@@ -409,7 +409,7 @@ def _prp(lk: Linkage, g: Group, s: State, order: int) -> None:
     if order < 2:
         return
     a, _ = _solve2(G, S, s.az[g.slider])
-    s.az[g.joint] = G * a
+    s.az[g.joint] = np.asarray(G * a, dtype=np.complex128)
     for link in g.links:
         s.eps[link] = np.zeros(n)
 
