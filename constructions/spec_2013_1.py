@@ -1,8 +1,22 @@
-"""2013-1: the problem as the registry lists it (title, parameters, results, the seed's values).
+"""Vulcanizer-lid mechanism: structural analysis and the pusher's dead position.
 
-This module loads without numpy or the construction code (``geomcad list`` and ``--help`` read
-it); ``build`` and ``draw`` live in :mod:`geomcad_constructions.p2013_1` and load on first use.
+- The mechanism is data (``geomcad.structure``): links, and the revolute, prismatic and higher
+  pairs where they sit.
+- Chebyshev's W = 3n − 2p₅ − p₄, with the roller's free spin (a local mobility) and the
+  redundant constraints found from the pairs' velocity conditions.
+- The higher pair is replaced by a substitute link at the centres of curvature: W is unchanged
+  (2 and 2); the seed's "2 before, 1 after" counts the roller once only.
+- Assur groups with their class, order and kind.
+- The zero-velocity positions (ML ⊥ MO) are built as the pusher path ∩ the circle of radius e
+  about O that the slot always touches, and checked against θ1 = ψ ± arccos(h/e) and the sign
+  changes of V_T/ω1 over a turn.
+- Sheet (A2): the schemes before and after the replacement, the groups drawn apart, the dead
+  position with its velocity plan (V_M1 = −V_M6M1), the plan at the given θ1, and tables.
+- Set ``n``, ``p5``, ``p4``, ``local`` to count another mechanism.
 """
+
+# This module loads without numpy or the construction code: `geomcad list` and `--help` read it.
+# build and draw live in p2013_1.py and load on first use.
 
 from __future__ import annotations
 

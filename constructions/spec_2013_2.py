@@ -1,8 +1,23 @@
-"""2013-2: the problem as the registry lists it (title, parameters, results, the seed's values).
+"""Cam profile for S = aφ by inversion ("cam profile radii").
 
-This module loads without numpy or the construction code (``geomcad list`` and ``--help`` read
-it); ``build`` and ``draw`` live in :mod:`geomcad_constructions.p2013_2` and load on first use.
+- A disc cam and a translating flat-faced follower: the follower is turned back to each
+  division point, its face lines are drawn, and the profile is their exact envelope (for
+  S = aφ an involute of the circle of radius a, which is checked).
+- The velocity plan and the similar triangle OBB′ put the contact point S′ along the face, so
+  r = √((r0 + S)² + S′²).
+- Reports the radius vectors at the division points beside the seed's, the smallest radius of
+  curvature, the largest pressure angle and the profile; explains the jump of S′ at φ = 0 (a
+  straight piece of the face, a rigid impact).
+- Variants through ``--set``: a full turn (rise, outer dwell, return), five motion laws, knife-edge
+  and roller followers with an offset e (the roller profile offset exactly along the normals),
+  either sense of rotation. A cusp or an undercut (base circle too small, roller too large, a drop
+  of S′) is an error naming the step.
+- Sheet (A3): the profile at 2:1 with the radius vectors, the S(φ) graph, the mechanism with the
+  velocity plan and ΔOBB′, and the tables of data and results.
 """
+
+# This module loads without numpy or the construction code: `geomcad list` and `--help` read it.
+# build and draw live in p2013_2.py and load on first use.
 
 from __future__ import annotations
 

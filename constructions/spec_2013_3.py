@@ -1,8 +1,16 @@
-"""2013-3: the problem as the registry lists it (title, parameters, results, the seed's values).
+"""Mechanism with a cross, solved by its velocity plan.
 
-This module loads without numpy or the construction code (``geomcad list`` and ``--help`` read
-it); ``build`` and ``draw`` live in :mod:`geomcad_constructions.p2013_3` and load on first use.
+- Each vector equation (V_B3 = V_B2 + V_B3B2 with V_B3B2 along the slot;
+  V_C4 = V_C3 + V_C4C3 = V_C5 + V_C4C5) is drawn as two lines of known direction that meet.
+- c3 is the image of C on link 3 by similarity; ω3 = ω5 because the cross slides on both links
+  at a fixed right angle; F_red = M·ω5/v_A by equal power.
+- Sheet (A3): the mechanism at a GOST scale (1:2) with the links numbered and α, l_AB, l_O1O2
+  dimensioned, the plan at μ_V = 0,02 (m/s)/mm with its lines and lettered points, the results
+  beside the seed's and the order of the plan.
 """
+
+# This module loads without numpy or the construction code: `geomcad list` and `--help` read it.
+# build and draw live in p2013_3.py and load on first use.
 
 from __future__ import annotations
 

@@ -1,8 +1,20 @@
-"""2013-4: the problem as the registry lists it (title, parameters, results, the seed's values).
+"""Profile shift from a gear-tooth caliper reading.
 
-This module loads without numpy or the construction code (``geomcad list`` and ``--help`` read
-it); ``build`` and ``draw`` live in :mod:`geomcad_constructions.p2013_4` and load on first use.
+- The chord s̄ at the height h̄ below the tip circle fixes the circle d_y through its ends and
+  half the angular tooth thickness ψ_y (tg ψ_y = s̄/(d_a − 2h̄)); the tangent from the chord's end
+  to the base circle gives α_y; the involute relation gives the pitch thickness s and the shift x.
+- Checks it by cutting the tooth with the GOST 13755 rack at that shift (the flank is the
+  envelope of the rack's flank, exactly on the involute) and reading the caliper on it again.
+- Reports the seed's garbled ψ_y formula and the rounding in its d_y and α_y.
+- The library (``geomcad.kinematics.gears``) also predicts chordal and constant-chord readings and
+  the span W over k teeth from x, recovers x from each, and refuses impossible readings, pointed
+  tips and chords in the fillet.
+- Sheet (A3, 5:1): one generated tooth with the producing rack, the circles d_a, d, d_f, d_b, d_y
+  (GOST 2.402), the chord and height dimensioned, the construction of ψ_y and α_y, and tables.
 """
+
+# This module loads without numpy or the construction code: `geomcad list` and `--help` read it.
+# build and draw live in p2013_4.py and load on first use.
 
 from __future__ import annotations
 

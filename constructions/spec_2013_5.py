@@ -1,8 +1,19 @@
-"""2013-5: the problem as the registry lists it (title, parameters, results, the seed's values).
+"""Planetary gear ratio u_1H2 of the compound train 1 – 2-5 – 6 – H1-4 – H2-7, gear 3 fixed.
 
-This module loads without numpy or the construction code (``geomcad list`` and ``--help`` read
-it); ``build`` and ``draw`` live in :mod:`geomcad_constructions.p2013_5` and load on first use.
+- Coaxiality gives z4 and z7 (given explicitly, they are checked); Chebyshev's W; Willis' chain
+  u_1H2 = 1 − u_12·u_5H1^(7)·u_43 in exact fractions (``u1H2_fraction``: 731/11 for the seed).
+- Checks it twice: by solving the mesh equations in absolute angular velocities exactly, and
+  graphically by Smirnov's plan of linear velocities and its angle diagram, whose slopes give
+  every ω and the ratio.
+- Reports the seed's misprinted coaxiality condition and its rounded intermediate ratio (66,46
+  for 66,45).
+- Sheet (A3): the kinematic scheme (GOST 2.770) to scale, the plan of linear velocities on the
+  same radii, the angle diagram, and tables of the results and of the angular velocities found
+  three ways.
 """
+
+# This module loads without numpy or the construction code: `geomcad list` and `--help` read it.
+# build and draw live in p2013_5.py and load on first use.
 
 from __future__ import annotations
 

@@ -1,8 +1,21 @@
-"""2013-6: the problem as the registry lists it (title, parameters, results, the seed's values).
+"""Six-bar synthesis by the coefficient of velocity change K ("circle through B0B1").
 
-This module loads without numpy or the construction code (``geomcad list`` and ``--help`` read
-it); ``build`` and ``draw`` live in :mod:`geomcad_constructions.p2013_6` and load on first use.
+- Extreme positions, θ = 180°(K − 1)/(K + 1); the perpendicular at B0 and the ray at 90° − θ meet
+  in O; the circle OB0B1 and its mirror image are the loci of O1; the lines at e from the path
+  cut them.
+- Reports all four solutions (with a Grashof crank-rocker flag) and the seed's one in full, and
+  checks it by analysis: the synthesized six-bar is run through a full crank turn and its actual
+  stroke and K are measured.
+- Sheet (A3, 1:5): the mechanism in its mid and extreme positions, the whole construction, the
+  dimensions O1B0 and O1B1, and tables of the data, the results beside the seed's, every
+  solution and the order of construction.
+- Sheet ``2013-6-kinematics`` (A2): the synthesized six-bar at the crank 60° past the slider's left
+  extreme (ω1 = 10 rad/s), its velocity and acceleration plans, and the slider's s, v, a over a
+  turn from the vectorized sweep, with the plans' values marked on the curves.
 """
+
+# This module loads without numpy or the construction code: `geomcad list` and `--help` read it.
+# build and draw live in p2013_6.py and load on first use.
 
 from __future__ import annotations
 

@@ -1,8 +1,22 @@
-"""2013-7: the problem as the registry lists it (title, parameters, results, the seed's values).
+"""Centrifugal governor with friction in its six joints (force polygons with friction circles).
 
-This module loads without numpy or the construction code (``geomcad list`` and ``--help`` read
-it); ``build`` and ``draw`` live in :mod:`geomcad_constructions.p2013_7` and load on first use.
+- The relative rotations come from the linkage's velocities; ρ = (d/2)·sin(arctan f) gives the
+  friction circles at B, F and H.
+- Link 3's line of action is the common tangent of its friction circles whose moments oppose both
+  relative rotations (the internal one, α = arcsin(2ρ/BF)); then the sleeve's force triangle
+  (R32), P = G6 + R36 through Q, the point K where P's line meets the inertia force's, R76 as the
+  tangent from K to H's friction circle that opposes the arm's rotation, and the arm's force
+  polygon (F_i, hence ω).
+- Solves the same governor without friction (ω rises from 19.32 to 20.36 rad/s with f = 0.3) and
+  slowing down (``direction=-1``, lower ω); refuses overlapping friction circles and self-locking
+  with an error naming the step.
+- Sheet (A3): the half-governor at 1:2 with the friction circles to scale and the tangent
+  reaction lines, the joints B, F, H enlarged at 2:1, the force plans of the sleeve and the arm at
+  μ_F = 1 N/mm (the frictionless polygon dashed), and tables.
 """
+
+# This module loads without numpy or the construction code: `geomcad list` and `--help` read it.
+# build and draw live in p2013_7.py and load on first use.
 
 from __future__ import annotations
 

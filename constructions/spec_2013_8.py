@@ -1,8 +1,16 @@
-"""2013-8: the problem as the registry lists it (title, parameters, results, the seed's values).
+"""Punch-press motor and flywheel.
 
-This module loads without numpy or the construction code (``geomcad list`` and ``--help`` read
-it); ``build`` and ``draw`` live in :mod:`geomcad_constructions.p2013_8` and load on first use.
+- The load diagram F(s): the force falls linearly from F_max = π·d·h·τ to 0 over the plate.
+- The work of one hole is its area, E = F_max·h/2 (the formula the seed's text lost, restored);
+  the motor's power N = E·z; ω_max = πn/30, ω_min from δ; the flywheel
+  J = 2E/(ω_max² − ω_min²) (``geomcad.dynamics.flywheel``).
+- Reports the exact J beside the seed's 1,89, which it computed from rounded speeds.
+- Sheet (A3): the load diagram with the work hatched, the flywheel's energy balance ΔT(t) over
+  two cycles, the results beside the seed's and the solution step by step.
 """
+
+# This module loads without numpy or the construction code: `geomcad list` and `--help` read it.
+# build and draw live in p2013_8.py and load on first use.
 
 from __future__ import annotations
 

@@ -1,8 +1,17 @@
-"""2013-9: the problem as the registry lists it (title, parameters, results, the seed's values).
+"""Valve mechanism: a disc with a pin in a rod's slot, a spring, a damper, M(t) = M0 + M1·sin Ωt.
 
-This module loads without numpy or the construction code (``geomcad list`` and ``--help`` read
-it); ``build`` and ``draw`` live in :mod:`geomcad_constructions.p2013_9` and load on first use.
+- The model reduced to the disc from the slotted yoke's velocity analogues:
+  J_pr = J + m·r²·cos²φ, dJ_pr/dφ, M_pr by equal power.
+- The equation of motion J_pr·φ'' + ½·J_pr'·φ'² = M_pr at the state; the forces on the disc and
+  the rod with their d'Alembert inertia loads by kinetostatics (which must need no balancing
+  moment: the Lagrange equation checked by a force balance); the motion from rest by ``solve_ivp``.
+- Names the four slips of the seed's derivation (its final line is wrong in two terms).
+- Two A3 sheets: the mechanism and its parts with every force and moment at μ_F; φ(t), φ'(t),
+  the derivation and the seed's errors.
 """
+
+# This module loads without numpy or the construction code: `geomcad list` and `--help` read it.
+# build and draw live in p2013_9.py and load on first use.
 
 from __future__ import annotations
 

@@ -1,8 +1,18 @@
-"""kulisa-23110713: the problem as the registry lists it (title, parameters, results, the seed's values).
+"""Course work "dynamics of the slotted-link mechanism": flywheel, scotch yoke, rolling roller.
 
-This module loads without numpy or the construction code (``geomcad list`` and ``--help`` read
-it); ``build`` and ``draw`` live in :mod:`geomcad_constructions.p_kulisa` and load on first use.
+- The inputs are reconstructed. I_pr = A + B·sin²φ from the velocity analogues (the yoke's
+  velocity plan, the roller's instantaneous centre), dI_pr/dφ, the equation of motion.
+- ω1 by the kinetic-energy theorem and by ``solve_ivp`` (they agree to 1e-9), ε1, the reactions
+  X_O, Y_O, N_A by kinetostatics with inertia loads, and the balancing force F_x at the roller's
+  axis by equal power and by a force balance.
+- Reports the report's inconsistent I_pr formula, its sign slip in x_C3, and its ε1, N_A, X_O
+  computed from rounded intermediates.
+- Three A3 sheets: the scheme with the velocities and the velocity plan; I_pr(φ) and ω1(φ) over a
+  turn; the free-body diagrams of flywheel, yoke and roller and the balanced mechanism.
 """
+
+# This module loads without numpy or the construction code: `geomcad list` and `--help` read it.
+# build and draw live in p_kulisa.py and load on first use.
 
 from __future__ import annotations
 
