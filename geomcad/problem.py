@@ -17,6 +17,7 @@ and ``geomcad solve ID --help`` read every title and parameter without loading s
 from __future__ import annotations
 
 import importlib
+import importlib.util
 import math
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
@@ -212,6 +213,8 @@ class _Lazy:
         if not sep or not module or not attr:
             raise ValueError(f"lazy reference {ref!r}: expected 'module:attribute'")
         self.ref = ref
+        #: The absolute name of the module that holds the callable.
+        self.module = importlib.util.resolve_name(module, package) if module[0] == "." else module
         self._module = module
         self._attr = attr
         self._package = package
@@ -261,13 +264,14 @@ class Problem:
     #: ``params`` of ``solve --json``; ``None`` for a registered problem id.
     inputs: Mapping[str, Any] | None = None
 
-    def param(self, name: str) -> Param:
-        """The declared parameter ``name``; an unknown name is a :class:`ParameterError`."""
+    def param(self, name: str, value: object = "?") -> Param:
+        """The declared parameter ``name``; an unknown name is a :class:`ParameterError` that
+        quotes ``value``, the value it was given."""
         for p in self.params:
             if p.name == name:
                 return p
-        known = ", ".join(p.name for p in self.params)
-        raise ParameterError(name, "?", f"{self.id} has no such parameter (it has {known})")
+        known = ", ".join(p.name for p in self.params) or "none"
+        raise ParameterError(name, value, f"{self.id} has no such parameter (it has {known})")
 
     def result_spec(self, name: str) -> ResultSpec | None:
         """The spec of result ``name``, or of the field ``name`` inside a list of objects."""
@@ -287,7 +291,7 @@ class Problem:
         ``None`` for an optional parameter leaves it out (the problem derives it)."""
         values = self.defaults
         for name, value in params.items():
-            p = self.param(name)
+            p = self.param(name, value)
             if value is None and p.optional:
                 values.pop(name, None)
                 continue

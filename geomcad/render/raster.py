@@ -20,10 +20,10 @@ from types import ModuleType
 
 from geomcad.errors import MissingDependency
 
-#: The one line a user sees when libcairo is missing.
+#: The one line a user sees when libcairo is missing (``geomcad build`` adds that it wrote the
+#: SVGs, which need no cairo).
 CAIRO_MISSING = (
     "PDF and PNG output need the cairo library: install it with `apt-get install libcairo2`"
-    " (SVG output works without it)"
 )
 
 FONTS_CONF = "fonts.conf"
