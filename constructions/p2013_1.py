@@ -263,7 +263,7 @@ def vulcanizer(e: float, M: Vec, u1: Vec, up: Vec, h: float) -> tuple[Mechanism,
 
 
 def _structure(
-    p: Mapping[str, ParamValue], mech: Mechanism
+    c: Construction, p: Mapping[str, ParamValue], mech: Mechanism
 ) -> tuple[dict[str, int], bool, Replacement, Removal, Mechanism, Mobility, Mobility, Mobility]:
     """W by the model (counts derived from its links and pairs) or by the counts alone."""
     n, p5, p4, local = _counts(p)
@@ -301,9 +301,10 @@ def _structure(
             "W_after_replacement": mob_a.formal,
             "W_after_seed": mob_s.formal,
         }
+    c.value("W", ws["W_true"], "3n − 2p5 − p4 − local (Chebyshev, local mobilities taken out)")
     if ws["W_true"] <= 0:
         raise ConstructionError(
-            "W = 3n − 2p5 − p4 − local",
+            c.step("W").title,
             f"W = 3·{n} − 2·{p5} − {p4} − {local} = {ws['W_true']} ≤ 0: not a mechanism (no "
             "link can move; counts alone cannot show redundant constraints that would free it)",
         )
@@ -332,7 +333,7 @@ def build(p: Mapping[str, ParamValue]) -> Build:
     M = c.intersect("M", slot, path, op="slot ∩ pusher path", role="link")
 
     mech, pts = vulcanizer(e, M, u1, up, h)
-    ws, counts_mode, replaced, no_roller, seed_route, mob_b, mob_a, mob_s = _structure(p, mech)
+    ws, counts_mode, replaced, no_roller, seed_route, mob_b, mob_a, mob_s = _structure(c, p, mech)
     decomposition = assur_groups(seed_route, ["2"])
 
     # the zero positions: the slot touches circle(O, |e|) at the foot of O's perpendicular, so
@@ -389,7 +390,7 @@ def build(p: Mapping[str, ParamValue]) -> Build:
         op="m1*m6* ∩ pm6*: m6* = p, V_T = 0",
     )
     if m6z.dist(pole) > tol.DERIVED * abs(e):
-        raise ConstructionError("m6*", "the plan at M* does not close at the pole")
+        raise ConstructionError(c.step("m6*").title, "the plan at M* does not close at the pole")
 
     sweep = sign_changes_deg(e, psi, h)
     notes = [EXPLAIN, FOUR_BAR_NOTE]

@@ -155,11 +155,12 @@ def build(p: Mapping[str, ParamValue]) -> Build:
     for name, got, want in (
         ("ψ_y (generated)", psi_gen, psi_y),
         ("s̄ (caliper on the generated tooth)", s_back, s_bar),
-        ("x (library)", x, reading.x),
+        ("x", x, reading.x),  # against the library's reading
     ):
         if not math.isclose(got, want, rel_tol=tol.DERIVED, abs_tol=tol.DERIVED * m):
             raise ConstructionError(
-                f"check {name}", f"{got!r} differs from {want!r}: the construction is inconsistent"
+                c.step(name).title,
+                f"{got!r} differs from {want!r}: the construction is inconsistent",
             )
 
     results: dict[str, Any] = {

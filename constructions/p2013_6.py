@@ -52,6 +52,10 @@ ANALYSIS_OMEGA1 = 10.0
 ANALYSIS_TURN = math.radians(60.0)
 
 
+#: The operations of the steps O1 and H_check, which errors name as the protocol does.
+O1_OP = "leftmost point of the θ-arcs on y = l3 − e"
+H_CHECK_OP = "stroke of C over a full crank turn"
+
 NOTES = [
     "seed formula slip: it writes AB = OB1 − O1A where it means AB = O1B1 − O1A; its numbers "
     "(89,5 − 13 = 76,5 мм) use O1B1, so no published value is affected",
@@ -215,12 +219,12 @@ def build(p: Mapping[str, ParamValue]) -> Build:
             else "no e > 0 reaches them"
         )
         raise NoIntersection(
-            "O1 = circle(O, B0, B1) ∩ line ∥ path at e",
+            f"O1 = {O1_OP}",
             f"the line y = l3 − e = {l3 - e:.6g} m misses the arcs that see B0B1 under θ "
             f"(they span y = {y_lo:.6g} … {y_hi:.6g} m); for this H and K, {reach}",
         )
     chosen = lower[0]
-    O1 = c.point("O1", chosen.O1, role="result", op="leftmost point of the θ-arcs on y = l3 − e")
+    O1 = c.point("O1", chosen.O1, role="result", op=O1_OP)
     for i, cd in enumerate(cands):
         if cd is not chosen:
             c.point(f"O1({i + 1})", cd.O1, role="aux", op=f"solution {i + 1} on {cd.arc}")
@@ -241,14 +245,14 @@ def build(p: Mapping[str, ParamValue]) -> Build:
     }
     if not chosen.crank_rocker:
         raise ConstructionError(
-            "check by analysis",
+            f"H_check = {H_CHECK_OP}",
             f"the four-bar O1ABO2 of the chosen solution (l1 = {l1:.6g}, l2 = {l2:.6g}, "
             f"l3 = {l3:.6g}, O1O2 = {chosen.O1.norm:.6g} m) is not a crank-rocker, so its crank "
             "cannot make a full turn",
         )
     mech = _mechanism(chosen, B0, B1, O2, l3, l4)
     h_check, k_check, phi_min, phi_max = mech.stroke_and_k()
-    c.value("H_check", h_check, "stroke of C over a full crank turn")
+    c.value("H_check", h_check, H_CHECK_OP)
     c.value("K_check", k_check, "ratio of the crank angles between C's extremes")
     results["H_check"] = h_check
     results["K_check"] = k_check

@@ -265,7 +265,7 @@ def _forces(
     if u32.y <= 0.0:
         up = math.degrees(math.acos(max(-1.0, min(1.0, u32.y))))
         raise ConstructionError(
-            f"{pre}R_32 = G_2 + R_42 closed on link 3's line",
+            c.step(f"{pre}l_3").title,
             f"self-locking: link 3's line of action makes {up:.4g}° with the vertical (BF at "
             f"{math.degrees(math.acos(max(-1.0, min(1.0, (F - B).unit().y)))):.4g}°, turned by "
             f"α = {math.degrees(alpha):.4g}°), so its pull cannot hold the sleeve up",
@@ -284,7 +284,7 @@ def _forces(
     R32 = tri2.signed("R_32")
     if R32 <= 0.0:
         raise ConstructionError(
-            f"{pre}plan 2: closing vertex",
+            c.step(f"{pre}plan 2: closing vertex").title,
             f"self-locking: the sleeve's polygon closes with R_32 = {R32:.6g} N ≤ 0",
         )
     c.value(f"{pre}R_32", R32, "|R_32| off the force triangle of body 2")
@@ -331,14 +331,14 @@ def _forces(
     R76 = poly6.signed("R_76")
     if R76 <= 0.0:
         raise ConstructionError(
-            f"{pre}plan 6: closing vertex",
+            c.step(f"{pre}plan 6: closing vertex").title,
             f"the polygon gives R_76 = {R76:.6g} N against the sense that chose its tangent: "
             "friction at H this large leaves no consistent reaction",
         )
     if F_i <= 0.0:
         word = "rise" if senses["H"] > 0 else "sink"
         raise ConstructionError(
-            f"{pre}plan 6: closing vertex",
+            c.step(f"{pre}plan 6: closing vertex").title,
             f"self-locking: the polygon of arm 6 closes with F_i = {F_i:.6g} N ≤ 0, so friction "
             f"alone holds the arm and the balls do not {word} at any ω",
         )

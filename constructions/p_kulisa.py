@@ -61,6 +61,9 @@ from geomcad.units import deg
 
 from .spec_kulisa import PROBLEM as PROBLEM
 
+#: The operation of the step F_x, which an error names as the protocol does.
+F_X_OP = "|M·ω_q1/v_qC3|: equal power of M and F_x"
+
 NOTES = [
     "report erratum: its I_пр(φ) formula prints m3·((R3 + ρ3)/(r3 + R3))²; the kinetic energy "
     "it writes gives m3·(R3² + ρ3²)/(r3 + R3)² (I3 = m3·ρ3²), and its numbers (1,949 = "
@@ -195,11 +198,11 @@ def build(p: Mapping[str, ParamValue]) -> Build:
     v_c3 = float(rl.vx)
     if abs(v_c3) <= tol.length_eps(OA):
         raise ConstructionError(
-            "F_x = M·ω1/v_C3 (equal power)",
+            f"F_x = {F_X_OP}",
             f"at φ = {p['phi_deg']}° the roller's axis stands still (v_C3 = 0: the pin is on the "
             "yoke's line of motion, a dead position), so no finite force at the axis balances M",
         )
-    f_x = c.value("F_x", abs(M / v_c3), "|M·ω_q1/v_qC3|: equal power of M and F_x")
+    f_x = c.value("F_x", abs(M / v_c3), F_X_OP)
     st = c.run("F_x (kinetostatics)", "equilibrium of the three bodies without inertia loads",
                lambda: kinetostatics(m1, R1, OA, m2, m3, R3, r3, rho3, M, phi, w, eps, lay,
                                      y, rl, inertia=False).solve())  # fmt: skip
