@@ -1,7 +1,7 @@
 """Write docs/problems.md from the registered problems' specs (``--check``: only compare).
 
-    python3 scripts/gen_problems_md.py           # regenerate
-    python3 scripts/gen_problems_md.py --check   # exit 1 when the file is out of date
+python3 scripts/gen_problems_md.py           # regenerate
+python3 scripts/gen_problems_md.py --check   # exit 1 when the file is out of date
 """
 
 from __future__ import annotations
@@ -9,7 +9,7 @@ from __future__ import annotations
 import sys
 from pathlib import Path
 
-from geomcad.reference import registered_markdown
+from geomcad.reference import REGENERATE, registered_markdown
 
 TARGET = Path(__file__).resolve().parents[1] / "docs" / "problems.md"
 
@@ -19,7 +19,7 @@ def main(argv: list[str]) -> int:
     if "--check" in argv:
         same = TARGET.exists() and TARGET.read_text(encoding="utf-8") == text
         if not same:
-            print(f"{TARGET} is out of date: run python3 scripts/gen_problems_md.py", file=sys.stderr)
+            print(f"{TARGET} is out of date: run {REGENERATE}", file=sys.stderr)
         return 0 if same else 1
     TARGET.write_text(text, encoding="utf-8")
     print(TARGET)
