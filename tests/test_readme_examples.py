@@ -67,3 +67,15 @@ def test_each_problem_has_a_short_line() -> None:
     for row in rows:
         words = len(row.split("|")[2].split())
         assert words <= 40, row
+
+
+def test_what_build_writes_is_what_the_readme_says() -> None:
+    """The README's count of sheets and its ID-NAME examples match the golden sheets, one per
+    sheet that `geomcad build` writes (tests/test_golden.py keeps those in step with the code)."""
+    golden = {p.stem for p in (ROOT / "tests" / "golden").glob("*.svg")}
+    said = re.search(r"`geomcad build` draws (\d+) sheets", README)
+    assert said and int(said.group(1)) == len(golden)
+    paragraph = README.split("`geomcad build` draws", 1)[1].split("\n\n", 1)[0]
+    named = set(re.findall(r"`([\w-]+-[a-z]+)`", paragraph))
+    assert named and named <= golden
+    assert named == {g for g in golden if not re.fullmatch(r"2013-\d|kulisa-\d+", g)}
