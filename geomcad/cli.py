@@ -176,7 +176,7 @@ def _parser(help_for: tuple[str, str] | None = None) -> _Parser:
         "verify",
         help="compare measurements off a drawing with the exact values",
         description="Compare values measured off a drawing with the exact construction.",
-        epilog=VERIFY_RULES + _help_epilog("verify", help_for),
+        epilog=VERIFY_RULES + "\n" + _help_epilog("verify", help_for),
         formatter_class=raw,
     )
     s.add_argument("id", metavar="ID", help=ID_HELP)
