@@ -6,7 +6,7 @@
   at a fixed right angle; F_red = M·ω5/v_A by equal power.
 - Sheet (A3): the mechanism at a GOST scale (1:2) with the links numbered and α, l_AB, l_O1O2
   dimensioned, the plan at μ_V = 0,02 (m/s)/mm with its lines and lettered points, the results
-  beside the seed's and the order of the plan.
+  and the order of the plan.
 """
 
 # This module loads without numpy or the construction code: `geomcad list` and `--help` read it.

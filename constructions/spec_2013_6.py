@@ -7,8 +7,8 @@
   checks it by analysis: the synthesized six-bar is run through a full crank turn and its actual
   stroke and K are measured.
 - Sheet (A3, 1:5): the mechanism in its mid and extreme positions, the whole construction, the
-  dimensions O1B0 and O1B1, and tables of the data, the results beside the seed's, every
-  solution and the order of construction.
+  dimensions O1B0 and O1B1, and tables of the data, the results, every solution and the order
+  of construction.
 - Sheet ``2013-6-kinematics`` (A2): the synthesized six-bar at the crank 60° past the slider's left
   extreme (ω1 = 10 rad/s), its velocity and acceleration plans, and the slider's s, v, a over a
   turn from the vectorized sweep, with the plans' values marked on the curves.

@@ -7,7 +7,7 @@
   moment: the Lagrange equation checked by a force balance); the motion from rest by ``solve_ivp``.
 - Names the four slips of the seed's derivation (its final line is wrong in two terms).
 - Two A3 sheets: the mechanism and its parts with every force and moment at μ_F; φ(t), φ'(t),
-  the derivation and the seed's errors.
+  the derivation.
 """
 
 # This module loads without numpy or the construction code: `geomcad list` and `--help` read it.

@@ -209,7 +209,9 @@ the model the construction reconstructs. The same lists are at the prompt:
 
 Comparison classes: *measured* values were read off the seed's drawing and are compared within
 0.5 mm at its scale; *rounded* ones within half a unit of the last printed digit; an *erratum* is
-a published value that is wrong, and the results' `notes` say why.
+a published value that is wrong, and the results' `notes` say why. `geomcad solve` prints the
+comparison; on paper it goes to the review sheets (`geomcad build --review`), never to the sheets
+a student hands in.
 """
 
 
