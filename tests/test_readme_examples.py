@@ -76,6 +76,6 @@ def test_what_build_writes_is_what_the_readme_says() -> None:
     said = re.search(r"`geomcad build` draws (\d+) sheets", README)
     assert said and int(said.group(1)) == len(golden)
     paragraph = README.split("`geomcad build` draws", 1)[1].split("\n\n", 1)[0]
-    named = set(re.findall(r"`([\w-]+-[a-z]+)`", paragraph))
+    named = set(re.findall(r"`(\w[\w-]*-[a-z]+)`", paragraph))
     assert named and named <= golden
     assert named == {g for g in golden if not re.fullmatch(r"2013-\d|kulisa-\d+", g)}
