@@ -121,8 +121,10 @@ def _cell(text: str) -> str:
 
 
 def _rst_to_md(text: str) -> str:
-    """A docstring's reStructuredText as Markdown: ``x`` → `x`, :role:`x` → `x`."""
+    """A docstring's reStructuredText as Markdown: ``x`` → `x`, :role:`x` → `x`, and a star
+    after a letter (M*, a point's name) kept from opening emphasis."""
     text = re.sub(r":\w+:`~?([^`]+)`", r"`\1`", text)
+    text = re.sub(r"(?<=\w)\*(?!\*)", r"\\*", text)
     return text.replace("``", "`")
 
 
