@@ -156,7 +156,7 @@ def _seed_rows(problem: Problem) -> list[str]:
 def _seed_row(problem: Problem, name: str, key: str, v: SeedValue) -> str:
     spec = problem.result_spec(key)
     unit = "" if spec is None else unit_text(spec.unit)
-    unit = "" if unit == "—" else f" {unit}"
+    unit = {"—": "", "°": "°"}.get(unit, f" {unit}")
     tol = "erratum: " + v.note if v.kind == "erratum" else f"± {v.tol:.3g}{unit}"
     return f"| `{name}` | {_cell(v.printed)} | {v.value:.6g}{unit} | {v.kind} | {_cell(tol)} |"
 
