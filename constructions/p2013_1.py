@@ -49,7 +49,7 @@ from geomcad import tol
 from geomcad.construction import Construction
 from geomcad.errors import ConstructionError, NoIntersection, ParallelLines, ParameterError
 from geomcad.geom import Vec
-from geomcad.problem import Build, Param, ParamValue, Problem, ResultSpec, erratum, rounded
+from geomcad.problem import Build, ParamValue
 from geomcad.structure import (
     Decomposition,
     Link,
@@ -68,47 +68,7 @@ from geomcad.structure import (
 )
 from geomcad.units import to_deg, wrap_deg
 
-ID = "2013-1"
-
-PARAMS = (
-    Param(
-        "n",
-        7,
-        "number of moving links (set a count to analyse another mechanism)",
-        integer=True,
-        ge=0,
-    ),
-    Param("p5", 9, "number of lower pairs, class 5", integer=True, ge=0),
-    Param("p4", 1, "number of higher pairs, class 4", integer=True, ge=0),
-    Param("local", 1, "number of local mobilities (a roller's free spin)", integer=True, ge=0),
-    Param("e", 0.1, "offset of the slot's centre line from O (signed, ≠ 0)", "m"),
-    Param("psi_deg", 90.0, "direction ψ of the pusher path", "deg"),
-    Param("h", -0.05, "signed distance h of the pusher path from O", "m"),
-    Param("theta1_deg", 0.0, "direction θ1 of the slot (the lever's position)", "deg"),
-)
-
-RESULTS = (
-    ResultSpec("W_formal", "1", "Chebyshev's W = 3n − 2p5 − p4 (local mobility included)"),
-    ResultSpec("W_local", "1", "local mobilities (the roller's free spin)"),
-    ResultSpec("W_true", "1", "W_formal + q − W_local: the mobility of the motion that matters"),
-    ResultSpec("W_after_replacement", "1", "W after the standard replacement of the higher pair"),
-    ResultSpec("W_after_seed", "1", "W by the seed's route: roller taken out, then replacement"),
-    ResultSpec("zero_theta1_deg", "deg", "slot directions θ1 at which V_T = 0 (ML ⊥ MO)"),
-    ResultSpec("VT_over_omega1", "m", "V_T/ω1 at θ1, signed along the pusher path"),
-)
-
-SEED = {
-    "W_formal": rounded(2, 0, "W = 3·7 − 2·9 − 1 = 2"),
-    "W_after_replacement": erratum(
-        1.0,
-        "the seed's count after the replacement, 3·7 − 2·10 = 1, is made with the roller taken "
-        "out (it becomes the slider block), while its count before, 3·7 − 2·9 − 1 = 2, keeps the "
-        "roller's free spin; the standard replacement adds a link and two lower pairs: "
-        "3·8 − 2·11 = 2, W unchanged, with one local mobility in both counts (W_true = 1)",
-        "после замены W = 3·7 − 2·10 = 1",
-    ),
-    "W_after_seed": rounded(1, 0, "W = 3·7 − 2·10 = 1"),
-}
+from .spec_2013_1 import PROBLEM as PROBLEM
 
 EXPLAIN = (
     "before 2, after 1 (the seed) against 2 and 2 (the standard rule): replacing a higher pair "
@@ -303,7 +263,7 @@ def vulcanizer(e: float, M: Vec, u1: Vec, up: Vec, h: float) -> tuple[Mechanism,
 
 
 def _structure(
-    p: Mapping[str, ParamValue], mech: Mechanism
+    c: Construction, p: Mapping[str, ParamValue], mech: Mechanism
 ) -> tuple[dict[str, int], bool, Replacement, Removal, Mechanism, Mobility, Mobility, Mobility]:
     """W by the model (counts derived from its links and pairs) or by the counts alone."""
     n, p5, p4, local = _counts(p)
@@ -341,9 +301,10 @@ def _structure(
             "W_after_replacement": mob_a.formal,
             "W_after_seed": mob_s.formal,
         }
+    c.value("W", ws["W_true"], "3n − 2p5 − p4 − local (Chebyshev, local mobilities taken out)")
     if ws["W_true"] <= 0:
         raise ConstructionError(
-            "W = 3n − 2p5 − p4 − local",
+            c.step("W").title,
             f"W = 3·{n} − 2·{p5} − {p4} − {local} = {ws['W_true']} ≤ 0: not a mechanism (no "
             "link can move; counts alone cannot show redundant constraints that would free it)",
         )
@@ -372,7 +333,7 @@ def build(p: Mapping[str, ParamValue]) -> Build:
     M = c.intersect("M", slot, path, op="slot ∩ pusher path", role="link")
 
     mech, pts = vulcanizer(e, M, u1, up, h)
-    ws, counts_mode, replaced, no_roller, seed_route, mob_b, mob_a, mob_s = _structure(p, mech)
+    ws, counts_mode, replaced, no_roller, seed_route, mob_b, mob_a, mob_s = _structure(c, p, mech)
     decomposition = assur_groups(seed_route, ["2"])
 
     # the zero positions: the slot touches circle(O, |e|) at the foot of O's perpendicular, so
@@ -429,7 +390,7 @@ def build(p: Mapping[str, ParamValue]) -> Build:
         op="m1*m6* ∩ pm6*: m6* = p, V_T = 0",
     )
     if m6z.dist(pole) > tol.DERIVED * abs(e):
-        raise ConstructionError("m6*", "the plan at M* does not close at the pole")
+        raise ConstructionError(c.step("m6*").title, "the plan at M* does not close at the pole")
 
     sweep = sign_changes_deg(e, psi, h)
     notes = [EXPLAIN, FOUR_BAR_NOTE]
@@ -479,14 +440,3 @@ def draw(solution: Any) -> list[tuple[str, Any]]:
     from .sheets_2013_1 import sheets
 
     return sheets(solution)
-
-
-PROBLEM = Problem(
-    id=ID,
-    title="Vulcanizer-lid mechanism: structure and the pusher's dead position",
-    params=PARAMS,
-    results=RESULTS,
-    seed=SEED,
-    build=build,
-    draw=draw,
-)

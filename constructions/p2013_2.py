@@ -54,55 +54,13 @@ from geomcad.kinematics.cams import (
     rho_min,
     velocity_plan,
 )
-from geomcad.kinematics.motion_laws import LAWS, CamProgram, standard_program
-from geomcad.problem import Build, Param, ParamValue, Problem, ResultSpec, SeedValue, rounded
+from geomcad.kinematics.motion_laws import CamProgram, standard_program
+from geomcad.problem import Build, ParamValue
 from geomcad.sheet.scale import gost_scale_to_fit
-from geomcad.units import MM, deg, to_deg
+from geomcad.units import deg, to_deg
 
-ID = "2013-2"
-#: The seed's profile drawing: 2:1, k_l = 0.0005 m/mm.
-SEED_K_L = 0.0005
-
-PARAMS = (
-    Param("H", 0.04, "stroke of the follower on the rise", "m", gt=0.0),
-    Param("phi_rise_deg", 180.0, "rise angle φ_у", "deg", gt=0.0, le=360.0),
-    Param("r0", 0.04, "base circle radius of the theoretical profile", "m", gt=0.0),
-    Param("n_div", 4, "number of equal intervals of the span", "1", integer=True, ge=1, le=360),
-    Param(
-        "span_fraction",
-        0.5,
-        "part of the program (rise + dwell + return) the division points cover",
-        "1",
-        gt=0.0,
-        le=1.0,
-    ),
-    Param("omega_sign", 1, "+1: the cam turns counter-clockwise, −1: clockwise", integer=True),
-    Param("phi_dwell_deg", 0.0, "outer dwell after the rise", "deg", ge=0.0, lt=360.0),
-    Param("phi_return_deg", 0.0, "return angle (0: no return phase)", "deg", ge=0.0, lt=360.0),
-    Param("law", "linear", "the follower's motion law (rise and return)", choices=LAWS),
-    Param("follower", "flat", "the follower", choices=("flat", "knife", "roller")),
-    Param("e", 0.0, "offset of the follower's axis from O", "m"),
-    Param("r_roller", 0.0, "roller radius (roller follower)", "m", ge=0.0),
-)
-
-RESULTS = (
-    ResultSpec("phi", "rad", "cam angles φ_i of the division points"),
-    ResultSpec("S", "m", "follower displacement S_i at the division points", "l"),
-    ResultSpec("r", "m", "radius vectors r_i of the profile at the division points", "l"),
-    ResultSpec("a", "m", "H/φ_rise (= S′ of the linear law)", "l"),
-    ResultSpec("pressure_angle_max_deg", "deg", "largest pressure angle along the profile"),
-    ResultSpec("rho_min", "m", "smallest radius of curvature of the profile", "l"),
-    ResultSpec("profile", "m", "profile points [x, y] in the cam's frame"),
-)
-
-_R_PRINTED = ("41,98", "46,77", "51,6", "56,45", "61,34")
-SEED: dict[str, SeedValue | tuple[SeedValue, ...]] = {
-    "a": rounded(12.73, 2, "S′ = a = 40/π = 12,73 мм", MM),
-    "r": tuple(
-        rounded(float(t.replace(",", ".")), len(t.split(",")[1]), f"r_{i} = {t} мм", MM)
-        for i, t in enumerate(_R_PRINTED)
-    ),
-}
+from .spec_2013_2 import PARAMS, SEED_K_L
+from .spec_2013_2 import PROBLEM as PROBLEM
 
 NOTES = [
     "seed notation: it calls the similar triangle OBB′ but writes its sides as Bb and Ob in "
@@ -329,15 +287,3 @@ def draw(solution: Any) -> list[tuple[str, Any]]:
     from .sheets_2013_2 import sheets
 
     return sheets(solution)
-
-
-PROBLEM = Problem(
-    id=ID,
-    title="Cam profile for S = a·φ, translating flat-faced follower (radius vectors by inversion)",
-    params=PARAMS,
-    results=RESULTS,
-    seed=SEED,
-    build=build,
-    draw=draw,
-    seed_k_l=SEED_K_L,
-)

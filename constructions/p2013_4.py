@@ -42,68 +42,19 @@ from geomcad.kinematics.gears import (
 )
 from geomcad.problem import (
     Build,
-    Param,
     ParamValue,
-    Problem,
-    ResultSpec,
-    erratum,
-    rounded,
 )
 from geomcad.sheet.scale import gost_scale_to_fit
-from geomcad.units import MM, to_deg
+from geomcad.units import to_deg
 
-ID = "2013-4"
-
-PARAMS = (
-    Param("m", 0.01, "module", "m", gt=0.0),
-    Param(
-        "alpha_deg",
-        20.0,
-        "profile angle of the basic rack (GOST 13755: 20°)",
-        "deg",
-        gt=0.0,
-        lt=90.0,
-    ),
-    Param("z", 40, "number of teeth", "1", integer=True, ge=1),
-    Param("d_a", 0.42, "tip diameter", "m", gt=0.0),
-    Param("s_chord", 0.0181, "chordal thickness s̄ read by the caliper", "m", gt=0.0),
-    Param("h_chord", 0.0091, "chordal height h̄ (from the tip circle to the chord)", "m", gt=0.0),
-)
-
-RESULTS = (
-    ResultSpec("d", "m", "pitch diameter m·z", "l"),
-    ResultSpec("d_b", "m", "base diameter d·cos α", "l"),
-    ResultSpec("d_y", "m", "diameter of the circle through the chord's ends", "l"),
-    ResultSpec("psi_y", "rad", "half the tooth's angular thickness at d_y: tan ψ_y = s̄/(d_a − 2h̄)"),
-    ResultSpec("alpha_y_deg", "deg", "pressure angle of the involute at d_y: cos α_y = d_b/d_y"),
-    ResultSpec("s", "m", "tooth thickness on the pitch circle", "l"),
-    ResultSpec("x", "1", "profile shift coefficient"),
-)
+from .spec_2013_4 import PARAMS
+from .spec_2013_4 import PROBLEM as PROBLEM
 
 #: What the seed should have written for the half angular thickness (its formula is garbled).
 CORRECT_PSI_FORMULA = "tg ψ_y = (s̄_y/2)/(d_a/2 − h̄_ay) = s̄_y/(d_a − 2h̄_ay) = 18,1/401,8 = 0,04505"
 #: The seed's text as printed (LaTeX): tan φ_y/2 over (d_a − 2h̄) = 18,1/(420 − 2·9,1).
 SEED_PSI_FORMULA = r"\frac{\tan \phi_y / 2}{d_a - 2\bar{h}_{ay}} = \frac{18,1}{420 - 2 \cdot 9,1}"
 
-SEED = {
-    "d": rounded(400.0, 0, "d = 400 мм", MM),
-    "d_b": rounded(375.88, 2, "d_b = 375,88 мм", MM),
-    "d_y": erratum(
-        402.25 * MM,
-        "it is s̄/sin ψ_y with ψ_y rounded to 2,579° (sin 2,579° instead of sin 2,57928°); "
-        "exactly d_y = √(s̄² + (d_a − 2h̄)²) = 402,207 мм",
-        "d_y = 402,25 мм",
-    ),
-    "psi_y": rounded(0.04502, 5, "φ_y = 2,579° = 0,04502 рад"),
-    "alpha_y_deg": erratum(
-        20.86,
-        "it follows from the seed's d_y = 402,25 мм (cos α_y = 375,88/402,25); from the exact "
-        "d_y = 402,207 мм, α_y = 20,847°",
-        "α_y = 20,86°",
-    ),
-    "s": rounded(18.83, 2, "s = 18,83 мм", MM),
-    "x": rounded(0.43, 2, "x = 0,43"),
-}
 
 NOTES = [
     "seed formula garbled: for the half angular thickness it prints "
@@ -204,11 +155,12 @@ def build(p: Mapping[str, ParamValue]) -> Build:
     for name, got, want in (
         ("ψ_y (generated)", psi_gen, psi_y),
         ("s̄ (caliper on the generated tooth)", s_back, s_bar),
-        ("x (library)", x, reading.x),
+        ("x", x, reading.x),  # against the library's reading
     ):
         if not math.isclose(got, want, rel_tol=tol.DERIVED, abs_tol=tol.DERIVED * m):
             raise ConstructionError(
-                f"check {name}", f"{got!r} differs from {want!r}: the construction is inconsistent"
+                c.step(name).title,
+                f"{got!r} differs from {want!r}: the construction is inconsistent",
             )
 
     results: dict[str, Any] = {
@@ -291,14 +243,3 @@ def draw(solution: Any) -> list[tuple[str, Any]]:
     from .sheets_2013_4 import sheets
 
     return sheets(solution)
-
-
-PROBLEM = Problem(
-    id=ID,
-    title="Profile shift from a gear-tooth caliper measurement",
-    params=PARAMS,
-    results=RESULTS,
-    seed=SEED,
-    build=build,
-    draw=draw,
-)

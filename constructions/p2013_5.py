@@ -58,67 +58,15 @@ from geomcad.kinematics.trains import (
     velocity_plan,
     willis,
 )
-from geomcad.problem import Build, Param, ParamValue, Problem, ResultSpec, erratum, rounded
+from geomcad.problem import Build, ParamValue
 from geomcad.sheet.scale import gost_length_scale, nice_factor
 
-ID = "2013-5"
+from .spec_2013_5 import PARAMS
+from .spec_2013_5 import PROBLEM as PROBLEM
 
 #: The links: the frame (with the fixed gear 3) and the five moving links.
 FRAME, SUN, BLOCK25, PLANET, H1, H2 = "0", "1", "2-5", "6", "H1-4", "H2-7"
 
-PARAMS = (
-    Param("z1", 20, "teeth of the input sun 1", "1", integer=True, ge=1),
-    Param("z2", 100, "teeth of the ring 2 (internal; block 2-5)", "1", integer=True, ge=1),
-    Param("z3", 60, "teeth of the fixed central gear 3", "1", integer=True, ge=1),
-    Param("z5", 22, "teeth of the pinion 5 (block 2-5)", "1", integer=True, ge=1),
-    Param("z6", 26, "teeth of the planet 6 (on carrier H1)", "1", integer=True, ge=1),
-    Param(
-        "z4",
-        None,
-        "teeth of gear 4 (block H1-4); default from coaxiality z4 = z2 − z1 − z3",
-        "1",
-        integer=True,
-        ge=1,
-        optional=True,
-    ),
-    Param(
-        "z7",
-        None,
-        "teeth of the ring 7 (block H2-7); default from coaxiality z7 = z5 + 2·z6",
-        "1",
-        integer=True,
-        ge=1,
-        optional=True,
-    ),
-    Param("m", 0.002, "module (sizes the drawing only)", "m", gt=0.0),
-)
-
-RESULTS = (
-    ResultSpec("W", "1", "degree of freedom, Chebyshev: W = 3n − 2p_l − p_h"),
-    ResultSpec("z4", "1", "teeth of gear 4 (coaxiality of 1–2 and 4–3)"),
-    ResultSpec("z7", "1", "teeth of the ring 7 (coaxiality of 5–6 and 6–7)"),
-    ResultSpec("u12", "1", "u_12 = z2/z1 (internal pair, carrier H2 held)"),
-    ResultSpec("u5H1_7", "1", "u_5H1^(7) = 1 + z7/z5 (ring 7 held)"),
-    ResultSpec("u43", "1", "u_43 = −z3/z4 (external pair, carrier H2 held)"),
-    ResultSpec("u13_H2", "1", "u_13^(H2) = u_12·u_5H1^(7)·u_43"),
-    ResultSpec("u1H2", "1", "u_1H2 = ω_1/ω_H2 = 1 − u_13^(H2)"),
-    ResultSpec("u1H2_fraction", "1", "u_1H2 exactly, as [numerator, denominator]"),
-)
-
-SEED = {
-    "W": rounded(1, 0, "W = 1"),
-    "z4": rounded(20, 0, "z4 = 20"),
-    "z7": rounded(74, 0, "z7 = 74"),
-    "u12": rounded(5, 0, "u12 = 5"),
-    "u5H1_7": rounded(4.364, 3, "u5H1(7) = 4,364"),
-    "u43": rounded(-3, 0, "u43 = −3"),
-    "u1H2": erratum(
-        66.46,
-        "it multiplies the rounded u_5H1^(7) = 4,364: 1 + 5·4,364·3 = 66,46; exactly "
-        "u_5H1^(7) = 48/11 and u_1H2 = 1 + 5·(48/11)·3 = 731/11 = 66,4545…, i.e. 66,45",
-        "u1H2(3) = 66,46",
-    ),
-}
 
 #: The seed's coaxiality condition as printed, and as the geometry has it.
 SEED_Z4_FORMULA = "z1 − z2 = z4 + z3"
@@ -247,7 +195,7 @@ def build(p: Mapping[str, ParamValue]) -> Build:
     )
     if speeds[H2] == 0 or 1 / speeds[H2] != u1h2:
         raise ConstructionError(
-            "check by the mesh equations",
+            c.step("ω (mesh equations)").title,
             f"ω_1/ω_H2 = {1 / speeds[H2] if speeds[H2] else '∞'} differs from Willis' {u1h2}",
         )
     omega_exact = {k: v / speeds[H2] for k, v in speeds.items()}
@@ -283,13 +231,13 @@ def build(p: Mapping[str, ParamValue]) -> Build:
     S = Vec(0.0, y_lo - 2.0 * H)  # the pole, below the plan on its axis v = 0
     rays = ray_plan(c, plan, S, H, links)
     u_rays = rays.ratio(SUN, H2)
-    for name, got in (("plan", u_plan), ("angle diagram", u_rays)):
-        if not math.isclose(got, float(u1h2), rel_tol=tol.DERIVED):
-            raise ConstructionError(
-                f"check by the {name}", f"u_1H2 = {got!r} differs from Willis' {float(u1h2)!r}"
-            )
     c.value("u1H2 (plan)", u_plan, "slope of line 1 / slope of line H2")
     c.value("u1H2 (angle diagram)", u_rays, "intercept of ray 1 / intercept of ray H2")
+    for name, got in (("u1H2 (plan)", u_plan), ("u1H2 (angle diagram)", u_rays)):
+        if not math.isclose(got, float(u1h2), rel_tol=tol.DERIVED):
+            raise ConstructionError(
+                c.step(name).title, f"u_1H2 = {got!r} differs from Willis' {float(u1h2)!r}"
+            )
 
     results: dict[str, Any] = {
         "W": W,
@@ -340,14 +288,3 @@ def draw(solution: Any) -> list[tuple[str, Any]]:
     from .sheets_2013_5 import sheets
 
     return sheets(solution)
-
-
-PROBLEM = Problem(
-    id=ID,
-    title="Planetary gear ratio u_1H2 (Willis; plan of linear velocities)",
-    params=PARAMS,
-    results=RESULTS,
-    seed=SEED,
-    build=build,
-    draw=draw,
-)

@@ -37,52 +37,24 @@ from geomcad.geom import Line, Vec, angle_arcs, mirror_circle
 from geomcad.kinematics import SixBar, branch_sign, grashof_crank_rocker
 from geomcad.problem import (
     Build,
-    Param,
     ParamValue,
-    Problem,
-    ResultSpec,
-    measured,
-    measured_value,
-    rounded,
 )
 from geomcad.sheet.scale import gost_scale_to_fit
 from geomcad.units import to_deg
 
 from .kin_2013_6 import Analysis, analyse
+from .spec_2013_6 import PARAMS, SEED_K_L
+from .spec_2013_6 import PROBLEM as PROBLEM
 
-ID = "2013-6"
-SEED_K_L = 0.005  # m/mm: the seed's k_l = 0.2 / 40
 #: The kinematics sheet (a drawing-only choice, the same for every variant): the crank turns
 #: ccw at ω1 = 10 rad/s and is drawn 60° past its position at the slider's left extreme.
 ANALYSIS_OMEGA1 = 10.0
 ANALYSIS_TURN = math.radians(60.0)
 
-PARAMS = (
-    Param("H", 0.2, "slider stroke", "m", gt=0.0),
-    Param("K", 1.3, "coefficient of velocity change of the slider (1 < K < 3)", "1", gt=1.0),
-    Param("l3", 0.3, "rocker O2B", "m", gt=0.0),
-    Param("l4", 0.3, "link BC", "m", gt=0.0),
-    Param("e", 0.3, "distance of the crank centre O1 from the slider path", "m", gt=0.0),
-)
 
-RESULTS = (
-    ResultSpec("theta_deg", "deg", "angle θ = 180°·(K − 1)/(K + 1) between the rod's dead centres"),
-    ResultSpec("O1B0", "m", "distance O1B0 (folded dead centre for the seed's solution)", "l"),
-    ResultSpec("O1B1", "m", "distance O1B1 (extended dead centre for the seed's solution)", "l"),
-    ResultSpec("l1", "m", "crank O1A", "l"),
-    ResultSpec("l2", "m", "connecting rod AB", "l"),
-    ResultSpec("H_check", "m", "slider stroke of the synthesized six-bar over a crank turn", "l"),
-    ResultSpec("K_check", "1", "coefficient of velocity change measured over a crank turn"),
-    ResultSpec("solutions", "", "every candidate O1, by line (y = l3 − e first), then by x"),
-)
-
-SEED = {
-    "theta_deg": rounded(23.5, 1, "Θ = 23,5°"),
-    "O1B1": measured(89.5, SEED_K_L, "O1B1 = 89,5 мм"),
-    "O1B0": measured(63.5, SEED_K_L, "O1B0 = 63,5 мм"),
-    "l1": measured_value(0.065, SEED_K_L, "l1 = 0,065 м"),
-    "l2": measured_value(0.383, SEED_K_L, "l2 = 0,383 м"),
-}
+#: The operations of the steps O1 and H_check, which errors name as the protocol does.
+O1_OP = "leftmost point of the θ-arcs on y = l3 − e"
+H_CHECK_OP = "stroke of C over a full crank turn"
 
 NOTES = [
     "seed formula slip: it writes AB = OB1 − O1A where it means AB = O1B1 − O1A; its numbers "
@@ -247,12 +219,12 @@ def build(p: Mapping[str, ParamValue]) -> Build:
             else "no e > 0 reaches them"
         )
         raise NoIntersection(
-            "O1 = circle(O, B0, B1) ∩ line ∥ path at e",
+            f"O1 = {O1_OP}",
             f"the line y = l3 − e = {l3 - e:.6g} m misses the arcs that see B0B1 under θ "
             f"(they span y = {y_lo:.6g} … {y_hi:.6g} m); for this H and K, {reach}",
         )
     chosen = lower[0]
-    O1 = c.point("O1", chosen.O1, role="result", op="leftmost point of the θ-arcs on y = l3 − e")
+    O1 = c.point("O1", chosen.O1, role="result", op=O1_OP)
     for i, cd in enumerate(cands):
         if cd is not chosen:
             c.point(f"O1({i + 1})", cd.O1, role="aux", op=f"solution {i + 1} on {cd.arc}")
@@ -273,14 +245,14 @@ def build(p: Mapping[str, ParamValue]) -> Build:
     }
     if not chosen.crank_rocker:
         raise ConstructionError(
-            "check by analysis",
+            f"H_check = {H_CHECK_OP}",
             f"the four-bar O1ABO2 of the chosen solution (l1 = {l1:.6g}, l2 = {l2:.6g}, "
             f"l3 = {l3:.6g}, O1O2 = {chosen.O1.norm:.6g} m) is not a crank-rocker, so its crank "
             "cannot make a full turn",
         )
     mech = _mechanism(chosen, B0, B1, O2, l3, l4)
     h_check, k_check, phi_min, phi_max = mech.stroke_and_k()
-    c.value("H_check", h_check, "stroke of C over a full crank turn")
+    c.value("H_check", h_check, H_CHECK_OP)
     c.value("K_check", k_check, "ratio of the crank angles between C's extremes")
     results["H_check"] = h_check
     results["K_check"] = k_check
@@ -370,15 +342,3 @@ def draw(solution: Any) -> list[tuple[str, Any]]:
     from .sheets_2013_6_kin import kinematics_sheet
 
     return [*sheets(solution), kinematics_sheet(solution)]
-
-
-PROBLEM = Problem(
-    id=ID,
-    title="Six-bar synthesis by the coefficient of velocity change K (circle through B0B1)",
-    params=PARAMS,
-    results=RESULTS,
-    seed=SEED,
-    build=build,
-    draw=draw,
-    seed_k_l=SEED_K_L,
-)

@@ -70,75 +70,12 @@ from geomcad.forces import (
 from geomcad.geom import Line, Vec, mirror
 from geomcad.problem import (
     Build,
-    Param,
     ParamValue,
-    Problem,
-    ResultSpec,
-    SeedValue,
-    measured_value,
-    rounded,
 )
 from geomcad.units import deg, to_deg
-from geomcad.verify import ANGLE_PRECISION_DEG
 
-ID = "2013-7"
-SEED_K_L = 0.002  # m/mm: the seed's k_l
-SEED_K_F = 1.0  # N/mm: the seed's k_F
-
-PARAMS = (
-    Param("m2", 10.0, "mass of the sleeve 2", "kg", gt=0.0),
-    Param("m_ball", 1.0, "mass of each ball (C, D)", "kg", gt=0.0),
-    Param("f", 0.3, "friction coefficient in the six joints A, B, E, F, G, H", "1", ge=0.0),
-    Param("d", 0.032, "pin diameter of each joint", "m", gt=0.0),
-    Param("l_AB", 0.1, "distance AB between the sleeve's pivots", "m", gt=0.0),
-    Param("l_GH", 0.1, "distance GH between the collar's pivots", "m", gt=0.0),
-    Param("l_FH", 0.15, "arm 6: H to F", "m", gt=0.0),
-    Param("l_DH", 0.22, "arm 6: H to the ball's centre D", "m", gt=0.0),
-    Param("l_BF", 0.15, "link 3, BF", "m", gt=0.0),
-    Param("theta_deg", 45.0, "angle of the arm HD to the vertical", "deg", gt=0.0, lt=90.0),
-    Param("g", 9.81, "gravitational acceleration", "m/s²", gt=0.0),
-    Param(
-        "direction",
-        1,
-        "+1: slowly accelerating (the balls rise), −1: slowly slowing down (they sink)",
-        "1",
-        integer=True,
-    ),
-)
-
-RESULTS = (
-    ResultSpec("rho", "m", "friction-circle radius ρ = (d/2)·sin(arctan f)", "l"),
-    ResultSpec("alpha_deg", "deg", "inclination α of link 3's line of action to BF"),
-    ResultSpec("R32", "N", "reaction of link 3 on the sleeve 2", "F"),
-    ResultSpec("P", "N", "P = G_6 + R_36 (the ball's weight and link 3's pull on the arm)", "F"),
-    ResultSpec("beta_deg", "deg", "inclination of R_76's line to the horizontal"),
-    ResultSpec("F_i", "N", "inertia force of the ball D, m·r_D·ω² (Ф_6)", "F"),
-    ResultSpec("r_D", "m", "radius at which the ball D turns", "l"),
-    ResultSpec("omega", "rad/s", "angular velocity of the shaft"),
-    ResultSpec("omega_no_friction", "rad/s", "the same governor's ω with f = 0"),
-)
-
-
-def _omega_tol() -> float:
-    """The seed's ω = √(85,1/0,206) = 20,3 rad/s carries the drawing precision of F_i (0.5 mm at
-    k_F), the rounding of m·r_D to 0,206 and its own rounding to 0.1 rad/s."""
-    f_i, mr, w = 85.1, 0.206, math.sqrt(85.1 / 0.206)
-    from_f = 0.5 * SEED_K_F * w / (2.0 * f_i)
-    from_r = 0.0005 * w / (2.0 * mr)
-    return from_f + from_r + 0.05
-
-
-SEED: dict[str, SeedValue] = {
-    "rho": rounded(0.0046, 4, "ρ = 0,0046 м"),
-    "alpha_deg": rounded(3.5, 1, "α = 3,5°"),
-    "R32": rounded(74.0, 0, "R_32 = 74 Н"),
-    "P": measured_value(80.8, SEED_K_F, "P = 80,8 Н"),
-    # an angle read off the drawing with a protractor
-    "beta_deg": SeedValue(63.2, "measured", ANGLE_PRECISION_DEG, "63,2°"),
-    "F_i": measured_value(85.1, SEED_K_F, "F_i = 85,1 Н"),
-    "r_D": rounded(0.206, 3, "F_i = 0,206ω² (m·r_D = 0,206 кг·м)"),
-    "omega": SeedValue(20.3, "measured", _omega_tol(), "ω = 20,3 рад/с"),
-}
+from .spec_2013_7 import PARAMS, SEED_K_F, SEED_K_L
+from .spec_2013_7 import PROBLEM as PROBLEM
 
 
 @dataclass(frozen=True)
@@ -328,7 +265,7 @@ def _forces(
     if u32.y <= 0.0:
         up = math.degrees(math.acos(max(-1.0, min(1.0, u32.y))))
         raise ConstructionError(
-            f"{pre}R_32 = G_2 + R_42 closed on link 3's line",
+            c.step(f"{pre}l_3").title,
             f"self-locking: link 3's line of action makes {up:.4g}° with the vertical (BF at "
             f"{math.degrees(math.acos(max(-1.0, min(1.0, (F - B).unit().y)))):.4g}°, turned by "
             f"α = {math.degrees(alpha):.4g}°), so its pull cannot hold the sleeve up",
@@ -347,7 +284,7 @@ def _forces(
     R32 = tri2.signed("R_32")
     if R32 <= 0.0:
         raise ConstructionError(
-            f"{pre}plan 2: closing vertex",
+            c.step(f"{pre}plan 2: closing vertex").title,
             f"self-locking: the sleeve's polygon closes with R_32 = {R32:.6g} N ≤ 0",
         )
     c.value(f"{pre}R_32", R32, "|R_32| off the force triangle of body 2")
@@ -394,14 +331,14 @@ def _forces(
     R76 = poly6.signed("R_76")
     if R76 <= 0.0:
         raise ConstructionError(
-            f"{pre}plan 6: closing vertex",
+            c.step(f"{pre}plan 6: closing vertex").title,
             f"the polygon gives R_76 = {R76:.6g} N against the sense that chose its tangent: "
             "friction at H this large leaves no consistent reaction",
         )
     if F_i <= 0.0:
         word = "rise" if senses["H"] > 0 else "sink"
         raise ConstructionError(
-            f"{pre}plan 6: closing vertex",
+            c.step(f"{pre}plan 6: closing vertex").title,
             f"self-locking: the polygon of arm 6 closes with F_i = {F_i:.6g} N ≤ 0, so friction "
             f"alone holds the arm and the balls do not {word} at any ω",
         )
@@ -497,15 +434,3 @@ def draw(solution: Any) -> list[tuple[str, Any]]:
     from .sheets_2013_7 import sheets
 
     return sheets(solution)
-
-
-PROBLEM = Problem(
-    id=ID,
-    title="Centrifugal governor: force polygons with friction circles",
-    params=PARAMS,
-    results=RESULTS,
-    seed=SEED,
-    build=build,
-    draw=draw,
-    seed_k_l=SEED_K_L,
-)

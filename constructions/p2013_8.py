@@ -27,42 +27,10 @@ import numpy as np
 
 from geomcad.construction import Construction
 from geomcad.dynamics import cycle_work, flywheel_inertia, speeds_from_max
-from geomcad.problem import Build, Param, ParamValue, Problem, ResultSpec, erratum, rounded
+from geomcad.problem import Build, ParamValue
 from geomcad.sheet.graph import Axis
 
-ID = "2013-8"
-
-PARAMS = (
-    Param("d_hole", 0.05, "diameter of the hole", "m", gt=0.0),
-    Param("h_plate", 0.03, "thickness of the plate", "m", gt=0.0),
-    Param("tau", 6e7, "shear strength of the plate's steel", "Pa", gt=0.0),
-    Param("n_rpm", 1500, "nominal (largest) speed of the motor shaft", "rpm", gt=0.0),
-    Param("delta", 0.1, "coefficient of speed fluctuation δ (0 < δ < 2)", "1"),
-    Param("holes_per_s", 1, "holes punched per second", "1/s", gt=0.0),
-)
-
-RESULTS = (
-    ResultSpec("F_max", "N", "largest punching force π·d·h·τ", "F"),
-    ResultSpec("E", "J", "work of one hole: the area under F(s)"),
-    ResultSpec("N", "W", "mean power of the motor, E per cycle"),
-    ResultSpec("omega_max", "rad/s", "nominal (largest) angular velocity π·n/30"),
-    ResultSpec("omega_min", "rad/s", "smallest angular velocity ω_max·(2 − δ)/(2 + δ)"),
-    ResultSpec("J", "kg·m²", "flywheel's moment of inertia 2E/(ω_max² − ω_min²)"),
-)
-
-J_NOTE = (
-    "it is computed from the rounded speeds 157 and 142 rad/s (2·4241/(157² − 142²) = 1.891); "
-    "the exact speeds ω_max = 50π and ω_min = 19/21·ω_max give J = 1.8951 kg·m², which rounds "
-    "to 1.90"
-)
-
-SEED = {
-    "F_max": rounded(282.7, 1, "F_max = 282,7 кН", unit=1000.0),
-    "N": rounded(4241.0, 0, "N = 4241 Вт"),
-    "omega_max": rounded(157.0, 0, "ω_max = 157 рад/с"),
-    "omega_min": rounded(142.0, 0, "ω_min = 142 рад/с"),
-    "J": erratum(1.89, J_NOTE, "J = 1,89 кг·м²"),
-}
+from .spec_2013_8 import PROBLEM as PROBLEM
 
 NOTES = [
     "restored: the seed's text lost the energy formula; the work of one hole is the area of the "
@@ -122,14 +90,3 @@ def draw(solution: Any) -> list[tuple[str, Any]]:
     from .sheets_2013_8 import sheets
 
     return sheets(solution)
-
-
-PROBLEM = Problem(
-    id=ID,
-    title="Punch-press motor and flywheel: the work of a hole, the power, the flywheel's J",
-    params=PARAMS,
-    results=RESULTS,
-    seed=SEED,
-    build=build,
-    draw=draw,
-)

@@ -48,41 +48,11 @@ from geomcad.dynamics import (
 from geomcad.dynamics.analogues import Array
 from geomcad.errors import ParameterError
 from geomcad.geom import Vec
-from geomcad.problem import Build, Param, ParamValue, Problem, ResultSpec
+from geomcad.problem import Build, ParamValue
 from geomcad.sheet.scale import nice_factor
 from geomcad.units import deg
 
-ID = "2013-9"
-
-PARAMS = (
-    Param("J", 0.05, "disc's moment of inertia about O", "kg·m²"),
-    Param("m", 2.0, "mass of the rod with its slotted guide", "kg"),
-    Param("r", 0.05, "radius of the pin A on the disc", "m", gt=0.0),
-    Param("c", 4000.0, "spring stiffness (the spring is free at φ = 0)", "N/m"),
-    Param("k", 20.0, "damping constant (damper force k·x')", "N·s/m"),
-    Param("M0", 2.0, "constant part of the driving moment M(t) = M0 + M1·sin(Ωt)", "N·m"),
-    Param("M1", 0.0, "amplitude of the driving moment's harmonic part", "N·m"),
-    Param("Omega", 0.0, "circular frequency Ω of the driving moment", "rad/s"),
-    Param("t", 0.0, "time of the state", "s"),
-    Param("phi_deg", 30.0, "disc angle φ at the state", "deg"),
-    Param("phi_dot", 10.0, "angular velocity φ' at the state", "rad/s"),
-    Param("T", 0.5, "duration of the motion from rest at φ = 0", "s", gt=0.0),
-)
-
-RESULTS = (
-    ResultSpec("J_pr", "kg·m²", "reduced moment of inertia J + m·r²·cos²φ at the state"),
-    ResultSpec("dJ_pr", "kg·m²", "dJ_pr/dφ = −m·r²·sin 2φ at the state (signed)"),
-    ResultSpec("M_pr", "N·m", "reduced moment of the loads at the state (signed)"),
-    ResultSpec("phi_ddot", "rad/s²", "φ'' from the equation of motion at the state (signed)"),
-    ResultSpec("N_pin", "N", "force of the pin on the rod", "F"),
-    ResultSpec("F_spring", "N", "spring force c·|x|", "F"),
-    # small forces are drawn at least MIN_ARROW_MM long, so they are not read off the sheet
-    ResultSpec("F_damper", "N", "damper force k·|x'|"),
-    ResultSpec("F_inertia_rod", "N", "rod's inertia force m·|x''|"),
-    ResultSpec("M_inertia_disc", "N·m", "disc's inertia moment J·|φ''|"),
-    ResultSpec("phi_T", "rad", "φ at t = T after starting from rest at φ = 0"),
-    ResultSpec("omega_T", "rad/s", "φ' at t = T after starting from rest at φ = 0"),
-)
+from .spec_2013_9 import PROBLEM as PROBLEM
 
 NOTES = [
     "seed slip: the spring's power is written N = −c·x'·x'; it is −c·x·x' (the seed's next "
@@ -276,14 +246,3 @@ def draw(solution: Any) -> list[tuple[str, Any]]:
     from .sheets_2013_9 import sheets
 
     return sheets(solution)
-
-
-PROBLEM = Problem(
-    id=ID,
-    title="Valve mechanism: reduced inertia and moment, equation of motion, loads on the parts",
-    params=PARAMS,
-    results=RESULTS,
-    seed={},
-    build=build,
-    draw=draw,
-)

@@ -1,6 +1,7 @@
 """The ``geomcad`` command line (the interface of problems.md).
 
     geomcad list
+    geomcad params ID [--json]
     geomcad solve ID [--set NAME=VALUE ...] [--json] [--trace]
     geomcad build [ID ...] [--out DIR] [--format svg,pdf,png] [--review] [--color]
                   [--student NAME] [--checker NAME] [--group G] [--org ORG] [--date D]
@@ -57,7 +58,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     """Run the command line ``argv`` (default ``sys.argv[1:]``); return the exit status."""
     args = list(sys.argv[1:] if argv is None else argv)
     try:
-        ns = _parser().parse_args(args)
+        ns = _parser(_help_topic(args)).parse_args(args)
     except _UsageError as exc:
         return _fail(str(exc))
     except SystemExit as exc:  # --help
@@ -79,21 +80,77 @@ def main(argv: Sequence[str] | None = None) -> int:
     return status
 
 
-def _parser() -> _Parser:
+EXAMPLES = """\
+examples:
+  geomcad list                                  the problem ids and titles
+  geomcad params 2013-6                         its parameters (units, defaults, ranges), results
+  geomcad solve 2013-6                          results beside the seed's published values
+  geomcad solve 2013-6 --set K=1.4 --json       a variant, as one JSON object
+  geomcad solve 2013-6 --trace                  the results, then the construction step by step
+  geomcad build 2013-6 --out out --format svg,pdf,png
+  geomcad verify 2013-6 --measured O1B1_mm=89.5 --measured theta_deg=23.5
+
+ID is a problem id from `geomcad list`, or a file FILE.toml that states a problem.
+exit status: 0 done, 1 (verify) a measurement out of precision, 2 bad input (one error: line).
+"""
+
+VERIFY_RULES = """\
+measurements:
+  NAME=VALUE      a result in its own SI unit (angles *_deg in degrees)
+  NAME_mm=VALUE   a length read off the drawing in sheet mm, converted at k_l (--scale, else the
+                  seed's k_l, else the project's sheet's)
+  NAME.INDEX=...  an item of a list result, counted from 0 (e.g. r.2, solutions.1.O1B0_mm)
+
+precision (each item is within or not):
+  a length read in mm            0.5 mm on the sheet
+  an angle *_deg                 0.5°
+  a result drawn on the sheet    0.5 mm at its plan's scale (k_l, k_v, k_a or k_F)
+  a number not drawn             0.5 % of the exact value (a ratio, a shift coefficient)
+
+exit status: 0 every item within precision, 1 one or more are not, 2 bad input.
+"""
+
+
+def _parser(help_for: tuple[str, str] | None = None) -> _Parser:
+    """The command line; ``help_for`` = (command, ID) adds that problem's lists to its help."""
     p = _Parser(
         prog="geomcad",
         description="Theory of Machines and Mechanisms by exact graphical constructions.",
+        epilog=EXAMPLES,
+        formatter_class=argparse.RawDescriptionHelpFormatter,
     )
+    p.add_argument("--version", action="version", version=f"geomcad {geomcad.__version__}")
     sub = p.add_subparsers(dest="command", required=True, metavar="command")
+    raw = argparse.RawDescriptionHelpFormatter
 
     s = sub.add_parser("list", help="ids and titles of the registered problems")
     s.set_defaults(func=_cmd_list)
 
-    s = sub.add_parser("solve", help="solve a problem and compare with the seed")
-    s.add_argument("id", help="problem id, e.g. 2013-6, or a linkage file FILE.toml")
+    s = sub.add_parser(
+        "params",
+        help="a problem's parameters (units, defaults, ranges, choices) and results",
+        description="List a problem's parameters and results.",
+    )
+    s.add_argument("id", metavar="ID", help=ID_HELP)
+    s.add_argument("--json", action="store_true", help="print one JSON object")
+    s.set_defaults(func=_cmd_params)
+
+    s = sub.add_parser(
+        "solve",
+        help="solve a problem and compare with the seed",
+        description="Solve a problem: its parameters, results, the seed's values beside them.",
+        epilog=_help_epilog("solve", help_for),
+        formatter_class=raw,
+    )
+    s.add_argument("id", metavar="ID", help=ID_HELP)
     _add_set(s)
     s.add_argument("--json", action="store_true", help="print one JSON object")
-    s.add_argument("--trace", action="store_true", help="print the construction protocol")
+    s.add_argument(
+        "--trace",
+        action="store_true",
+        help="after the results, print the construction protocol, one line per named step "
+        "(with --json: to stderr)",
+    )
     s.set_defaults(func=_cmd_solve)
 
     s = sub.add_parser("build", help="draw the sheets of problems")
@@ -115,8 +172,14 @@ def _parser() -> _Parser:
     _add_title_options(s)
     s.set_defaults(func=_cmd_build)
 
-    s = sub.add_parser("verify", help="compare measurements off a drawing with the exact values")
-    s.add_argument("id", help="problem id, e.g. 2013-6")
+    s = sub.add_parser(
+        "verify",
+        help="compare measurements off a drawing with the exact values",
+        description="Compare values measured off a drawing with the exact construction.",
+        epilog=VERIFY_RULES + "\n" + _help_epilog("verify", help_for),
+        formatter_class=raw,
+    )
+    s.add_argument("id", metavar="ID", help=ID_HELP)
     s.add_argument(
         "--measured",
         action="append",
@@ -161,6 +224,41 @@ def _title_data(ns: argparse.Namespace) -> tuple[Any, Any]:
     return options, TitleData.from_workdir()
 
 
+ID_HELP = "a problem id (geomcad list), e.g. 2013-6, or a file FILE.toml"
+
+#: Options of solve and verify that take a value (skipped when looking for the ID).
+_VALUED = ("--set", "--measured", "--scale", "--out", "--format")
+
+
+def _help_topic(args: Sequence[str]) -> tuple[str, str] | None:
+    """(command, ID) when ``args`` ask for the help of solve or verify with an ID given."""
+    if not args or args[0] not in ("solve", "verify") or not {"-h", "--help"} & set(args):
+        return None
+    rest = iter(args[1:])
+    for a in rest:
+        if a in _VALUED:
+            next(rest, None)
+        elif not a.startswith("-"):
+            return args[0], a
+    return None
+
+
+def _help_epilog(command: str, help_for: tuple[str, str] | None) -> str:
+    """The lists of the problem whose help is asked for, or how to get them."""
+    if help_for is None or help_for[0] != command:
+        return "geomcad solve ID --help (or geomcad params ID) lists ID's parameters.\n"
+    from geomcad import reference
+
+    try:
+        problem = _problem(help_for[1])
+    except GeomcadError as exc:
+        return f"{_one_line(str(exc))}\n"
+    text = reference.params_text(problem)
+    if command == "verify":
+        text += "\n" + reference.results_text(problem)
+    return text
+
+
 def _add_set(s: argparse.ArgumentParser) -> None:
     s.add_argument(
         "--set",
@@ -179,6 +277,17 @@ def _cmd_list(ns: argparse.Namespace) -> int:
     width = max((len(i) for i in ids), default=0)
     lines = [f"{pid:<{width}}  {registry.get(pid).title}" for pid in ids]
     _write(sys.stdout, "".join(line + "\n" for line in lines))
+    return EXIT_OK
+
+
+def _cmd_params(ns: argparse.Namespace) -> int:
+    from geomcad import reference
+
+    problem = _problem(ns.id)
+    if ns.json:
+        _write(sys.stdout, _dumps(reference.problem_json(problem)) + "\n")
+    else:
+        _write(sys.stdout, reference.problem_text(problem))
     return EXIT_OK
 
 
@@ -246,7 +355,7 @@ def _cmd_build(ns: argparse.Namespace) -> int:
     except OSError as exc:
         raise _Failed(f"cannot write to {out}: {exc.strerror or exc}") from exc
     if missing is not None:
-        _write(sys.stderr, _error_line(f"{_one_line(str(missing))} (only the SVGs were written)"))
+        _write(sys.stderr, _error_line(f"{_one_line(str(missing))}; only the SVGs were written"))
         return EXIT_BAD_INPUT
     return EXIT_OK
 
@@ -285,8 +394,15 @@ def _solve(pid: str, sets: Sequence[str]) -> Solution:
     params: dict[str, ParamValue] = {}
     for text in sets:
         name, value = _pair(text, "--set")
-        params[name] = problem.param(name).parse(value)
+        params[name] = problem.param(name, value).parse(value)
     return problem.solve(**params)
+
+
+def _problem(pid: str) -> Problem:
+    """The problem an ID names: a registered id, or a file FILE.toml."""
+    from geomcad import documents
+
+    return documents.load(pid) if documents.is_file_id(pid) else registry.get(pid)
 
 
 def _pair(text: str, option: str) -> tuple[str, str]:
@@ -366,7 +482,7 @@ def _solve_report(sol: Solution) -> str:
                     r["name"],
                     _fmt(r["exact"]),
                     f"{_fmt(r['seed'])} ({r['printed']})",
-                    f"{r['diff']:+.3g}",
+                    _dev(r["diff"], r["exact"], r["seed"]),
                     r["class"],
                     within,
                 )
@@ -384,11 +500,23 @@ def _verify_report(report: Report) -> str:
     lines = [_verify_line(it) for it in report.items]
     bad = sum(not it.ok for it in report.items)
     n = len(report.items)
-    if bad:
+    if n == 1:
+        lines.append(f"{report.id}: the measurement is {'out of' if bad else 'within'} precision")
+    elif bad:
         lines.append(f"{report.id}: {bad} of {n} measurements out of precision")
     else:
         lines.append(f"{report.id}: all {n} measurements within precision")
     return "\n".join(lines) + "\n"
+
+
+def _dev(deviation: float, *values: float) -> str:
+    """A deviation to 3 digits, without the float noise below the 6 digits that the values it
+    is the difference of are printed with (−2.22e-16 is 0)."""
+    big = max((abs(v) for v in values if math.isfinite(v)), default=0.0)
+    if big > 0.0 and math.isfinite(deviation):
+        q = 10.0 ** (math.floor(math.log10(big)) - 5)
+        deviation = round(deviation / q) * q + 0.0  # + 0.0: no "-0"
+    return "0" if deviation == 0.0 else f"{deviation:+.3g}"
 
 
 def _verify_line(it: Item) -> str:
@@ -397,13 +525,15 @@ def _verify_line(it: Item) -> str:
     if it.rule == "angle":
         return (
             f"{it.result}: measured {_g(it.measured)}°, exact {_g(it.exact)}°, off by "
-            f"{it.deviation:+.3g}°, {within} the angle precision of {_g(it.precision)}°"
+            f"{_dev(it.deviation, it.measured, it.exact)}°, "
+            f"{within} the angle precision of {_g(it.precision)}°"
         )
     if it.rule == "relative":
         u = _unit(it.unit)
         return (
             f"{it.result}: measured {_g(it.measured)}{u}, exact {_g(it.exact)}{u}, off by "
-            f"{it.deviation:+.3g}{u}, {within} 0.5 % of the exact value ({it.precision:.3g}{u})"
+            f"{_dev(it.deviation, it.measured, it.exact)}{u}, "
+            f"{within} 0.5 % of the exact value ({it.precision:.3g}{u})"
         )
     from geomcad.verify import PLAN_SCALES
 
@@ -415,13 +545,16 @@ def _verify_line(it: Item) -> str:
     if it.measured_mm is not None:
         return (
             f"{it.result}: measured {_g(it.measured_mm)} mm, exact {_g(it.exact / k)} mm "
-            f"({_g(it.exact)}{u} at {k_name} = {k:g} {k_unit}), off by {dev_mm:+.3g} mm, "
+            f"({_g(it.exact)}{u} at {k_name} = {k:g} {k_unit}), "
+            f"off by {_dev(dev_mm, it.measured_mm, it.exact / k)} mm, "
             f"{within} the drawing precision of {prec_mm:g} mm"
         )
     return (
         f"{it.result}: measured {_g(it.measured)}{u}, exact {_g(it.exact)}{u} "
-        f"({_g(it.exact / k)} mm at {k_name} = {k:g} {k_unit}), off by {it.deviation:+.3g}{u} "
-        f"({dev_mm:+.3g} mm), {within} the drawing precision of {prec_mm:g} mm "
+        f"({_g(it.exact / k)} mm at {k_name} = {k:g} {k_unit}), "
+        f"off by {_dev(it.deviation, it.measured, it.exact)}{u} "
+        f"({_dev(dev_mm, it.measured / k, it.exact / k)} mm), "
+        f"{within} the drawing precision of {prec_mm:g} mm "
         f"({it.precision:.3g}{u})"
     )
 

@@ -7,10 +7,17 @@ functions: ``build(params) -> Build`` (the construction and its results) and
 
 The library never imports a problem module; :mod:`geomcad.registry` discovers them through the
 ``geomcad.constructions`` entry-point group.
+
+``build`` and ``draw`` may be :func:`lazy` references (``"module:attribute"``, imported on the
+first call). A problem package can then keep its ``Problem`` (title, parameters, results, seed)
+in a light module that imports neither numpy nor the construction code, so that ``geomcad list``
+and ``geomcad solve ID --help`` read every title and parameter without loading scipy.
 """
 
 from __future__ import annotations
 
+import importlib
+import importlib.util
 import math
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
@@ -198,6 +205,49 @@ class Build:
     data: Any = None
 
 
+class _Lazy:
+    """A callable named ``module:attribute``, imported when it is first called."""
+
+    def __init__(self, ref: str, package: str | None) -> None:
+        module, sep, attr = ref.partition(":")
+        if not sep or not module or not attr:
+            raise ValueError(f"lazy reference {ref!r}: expected 'module:attribute'")
+        self.ref = ref
+        #: The absolute name of the module that holds the callable.
+        self.module = importlib.util.resolve_name(module, package) if module[0] == "." else module
+        self._module = module
+        self._attr = attr
+        self._package = package
+        self._target: Callable[..., Any] | None = None
+
+    def resolve(self) -> Callable[..., Any]:
+        """The callable itself (its module is imported on the first use)."""
+        if self._target is None:
+            module = importlib.import_module(self._module, self._package)
+            target = getattr(module, self._attr)
+            if not callable(target):
+                raise TypeError(f"lazy reference {self.ref!r} is not callable")
+            self._target = target
+        return self._target
+
+    def __call__(self, *args: Any, **kwargs: Any) -> Any:
+        return self.resolve()(*args, **kwargs)
+
+    def __repr__(self) -> str:
+        return f"lazy({self.ref!r})"
+
+
+def lazy(ref: str, package: str | None = None) -> Callable[..., Any]:
+    """A stand-in for the callable ``ref`` (``"module:attribute"``) that imports its module on
+    the first call; a relative ``ref`` (``".p2013_6:build"``) is taken inside ``package``.
+
+    >>> f = lazy("math:hypot")
+    >>> f(3.0, 4.0)
+    5.0
+    """
+    return _Lazy(ref, package)
+
+
 @dataclass(frozen=True)
 class Problem:
     """A problem id with its parameters, results, seed values, construction and drawings."""
@@ -214,13 +264,14 @@ class Problem:
     #: ``params`` of ``solve --json``; ``None`` for a registered problem id.
     inputs: Mapping[str, Any] | None = None
 
-    def param(self, name: str) -> Param:
-        """The declared parameter ``name``; an unknown name is a :class:`ParameterError`."""
+    def param(self, name: str, value: object = "?") -> Param:
+        """The declared parameter ``name``; an unknown name is a :class:`ParameterError` that
+        quotes ``value``, the value it was given."""
         for p in self.params:
             if p.name == name:
                 return p
-        known = ", ".join(p.name for p in self.params)
-        raise ParameterError(name, "?", f"{self.id} has no such parameter (it has {known})")
+        known = ", ".join(p.name for p in self.params) or "none"
+        raise ParameterError(name, value, f"{self.id} has no such parameter (it has {known})")
 
     def result_spec(self, name: str) -> ResultSpec | None:
         """The spec of result ``name``, or of the field ``name`` inside a list of objects."""
@@ -240,7 +291,7 @@ class Problem:
         ``None`` for an optional parameter leaves it out (the problem derives it)."""
         values = self.defaults
         for name, value in params.items():
-            p = self.param(name)
+            p = self.param(name, value)
             if value is None and p.optional:
                 values.pop(name, None)
                 continue

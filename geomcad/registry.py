@@ -41,3 +41,9 @@ def get(pid: str) -> Problem:
         raise UnknownProblem(f"unknown problem id {pid!r}; known ids: {known}")
     problem: Problem = eps[pid].load()
     return problem
+
+
+def entry_point(pid: str) -> EntryPoint:
+    """The entry point ``pid`` is registered under; :class:`UnknownProblem` as :func:`get`."""
+    get(pid)
+    return _entry_points()[pid]

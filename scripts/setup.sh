@@ -20,8 +20,26 @@ if [ -n "$need" ]; then
         echo "setup: geomcad needs the Debian packages:$need (sudo apt-get install$need)" >&2
     fi
 fi
-if [ -n "$extra" ]; then
-    python3 -m pip install -q ".[$extra]"
-else
-    python3 -m pip install -q .
+venv_hint() {
+    echo "setup: make a virtual environment, enter it and run this again:" >&2
+    echo "    python3 -m venv .venv && . .venv/bin/activate && sh scripts/setup.sh $extra" >&2
+    echo "  (if python3 -m venv fails, Debian lacks its venv module: sudo apt-get install python3-venv)" >&2
+}
+if ! command -v python3 >/dev/null 2>&1; then
+    echo "setup: python3 is missing (Debian: sudo apt-get install python3 python3-venv)" >&2
+    exit 1
+fi
+if ! python3 -m pip --version >/dev/null 2>&1; then
+    echo "setup: $(command -v python3) has no pip." >&2
+    venv_hint
+    echo "  (or give the system Python its pip: sudo apt-get install python3-pip)" >&2
+    exit 1
+fi
+target=.
+[ -n "$extra" ] && target=".[$extra]"
+if ! python3 -m pip install -q "$target"; then
+    echo "setup: pip could not install geomcad (see above). If it says \"externally-managed-environment\"," >&2
+    echo "  this Python's packages belong to the system (PEP 668)." >&2
+    venv_hint
+    exit 1
 fi

@@ -1,5 +1,8 @@
 """Shared pytest options: ``--update-golden`` regenerates the golden sheets in ``tests/golden/``.
 
+The tests run the working tree: ``geomcad`` and ``geomcad_constructions`` (the ``constructions/``
+folder) are imported from this checkout, not from an installed copy (``tests/tree.py``).
+
 Hypothesis runs derandomized, so CI and a developer's machine try the same examples: a failure is
 reproducible, never a coin toss on one run (``HYPOTHESIS_PROFILE=explore`` draws new examples).
 """
@@ -10,6 +13,9 @@ import os
 
 import pytest
 from hypothesis import settings
+from tree import use_working_tree
+
+use_working_tree()
 
 settings.register_profile("ci", derandomize=True)
 settings.register_profile("explore", derandomize=False)

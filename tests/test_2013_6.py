@@ -152,7 +152,11 @@ BAD = [
     ({"l3": 0.0}, ParameterError, r"parameter l3 = 0\.0: must be > 0"),
     ({"e": 0.0}, ParameterError, r"parameter e = 0\.0: must be > 0"),
     ({"H": 1.0}, ParameterError, r"parameter H = 1\.0: too large .* cannot close"),
-    ({"e": 2.0}, NoIntersection, r'step "O1 = circle\(O, B0, B1\) ∩ line ∥ path at e": the line'),
+    (
+        {"e": 2.0},
+        NoIntersection,
+        r'step "O1 = leftmost point of the θ-arcs on y = l3 − e": the line',
+    ),
     ({"K": 1.4, "H": 0.15}, NoIntersection, r"misses the arcs .* e must lie between 0 and 0\.289"),
     ({"K": "x"}, ParameterError, r"parameter K = 'x': must be a number"),
     ({"K": float("nan")}, ParameterError, r"must be a finite number"),

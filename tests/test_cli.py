@@ -148,9 +148,12 @@ BAD = [
     (["solve", PID, "--set", "K"], [PID, "--set K", "NAME=VALUE"]),
     (["solve", PID, "--set", "=1"], ["NAME=VALUE"]),
     (["solve", PID, "--set", "K=nan"], ["K", "finite"]),
-    (["solve", PID, "--set", "e=2"], [PID, 'step "O1 = circle(O, B0, B1) ∩ line ∥ path at e"']),
+    (
+        ["solve", PID, "--set", "e=2"],
+        [PID, 'step "O1 = leftmost point of the θ-arcs on y = l3 − e"'],
+    ),
     (["solve", PID, "--bogus"], ["--bogus"]),
-    (["solve"], ["solve", "id"]),
+    (["solve"], ["solve", "ID"]),
     ([], ["command"]),
     (["frobnicate"], ["frobnicate"]),
     (["build", "no-such-id"], ["no-such-id"]),
@@ -192,7 +195,7 @@ def test_bad_input_is_one_error_line_and_status_2(
         (["solve", "no-such-id", "--json"], ["no-such-id"]),
         (["solve", PID, "--set", "K"], ["K"]),
         (["verify", PID, "--measured", "nope=1", "--json"], ["nope"]),
-        (["solve"], ["id"]),
+        (["solve"], ["ID"]),
     ],
 )
 def test_bad_input_through_a_process(argv: list[str], words: list[str], tmp_path: Path) -> None:

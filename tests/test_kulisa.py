@@ -178,7 +178,11 @@ BAD = [
     ({"m1": -80.0}, ParameterError, r"parameter m1 = -80\.0: the flywheel's mass cannot"),
     ({"M": -5.0}, ConstructionError, r'step "ω1 = .*cannot bring the machine to φ = 150°'),
     ({"M": 0.0}, ConstructionError, r"cannot bring the machine"),
-    ({"phi_deg": 180.0}, ConstructionError, r'step "F_x = M·ω1/v_C3 .*dead position'),
+    (
+        {"phi_deg": 180.0},
+        ConstructionError,
+        r'step "F_x = \|M·ω_q1/v_qC3\|: equal power of M and F_x": .*dead position',
+    ),
     ({"phi_deg": 360.0}, ConstructionError, r"dead position"),
     ({"phi_deg": 0.0}, ParameterError, r"phi_deg = 0\.0: must be > phi0_deg"),
     ({"R1": 0.0}, ParameterError, r"parameter R1 = 0\.0: must be > 0"),

@@ -14,16 +14,18 @@ from __future__ import annotations
 
 import os
 import re
+import struct
+import zlib
 from importlib import resources
 from pathlib import Path
 from types import ModuleType
 
 from geomcad.errors import MissingDependency
 
-#: The one line a user sees when libcairo is missing.
+#: The one line a user sees when libcairo is missing (``geomcad build`` adds that it wrote the
+#: SVGs, which need no cairo).
 CAIRO_MISSING = (
     "PDF and PNG output need the cairo library: install it with `apt-get install libcairo2`"
-    " (SVG output works without it)"
 )
 
 FONTS_CONF = "fonts.conf"
@@ -75,8 +77,42 @@ def to_pdf(svg: str) -> bytes:
 
 
 def to_png(svg: str, dpi: int = 150) -> bytes:
-    """The SVG as a PNG at ``dpi`` pixels per inch, on a white background."""
+    """The SVG as a PNG at ``dpi`` pixels per inch, on a white background, with its resolution
+    recorded (a pHYs chunk), so that it prints at the sheet's true size."""
     cairosvg = _cairosvg()
-    return bytes(
-        cairosvg.svg2png(bytestring=svg.encode("utf-8"), dpi=dpi, background_color="white")
-    )
+    png = bytes(cairosvg.svg2png(bytestring=svg.encode("utf-8"), dpi=dpi, background_color="white"))
+    return with_resolution(png, dpi)
+
+
+_PNG_SIGNATURE = b"\x89PNG\r\n\x1a\n"
+#: The signature and the IHDR chunk, which a PNG always starts with (its data is 13 bytes).
+_IHDR_END = len(_PNG_SIGNATURE) + 4 + 4 + 13 + 4
+_MM_PER_INCH = 25.4
+
+
+def _chunk(kind: bytes, data: bytes) -> bytes:
+    """A PNG chunk: length, type, data, and the CRC-32 of type and data."""
+    crc = zlib.crc32(kind + data) & 0xFFFFFFFF
+    return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", crc)
+
+
+def with_resolution(png: bytes, dpi: float) -> bytes:
+    """``png`` with a pHYs chunk saying ``dpi`` (in pixels per metre, as PNG counts), right
+    after IHDR, in place of any it had.
+
+    cairo writes no resolution, so a viewer or a printer would take 72 or 96 dpi and print an
+    A3 sheet at twice its size. The chunk is spliced in rather than the image re-encoded (e.g. by
+    Pillow), which would decompress and recompress every pixel of a large sheet to add 21 bytes.
+    """
+    if not png.startswith(_PNG_SIGNATURE) or png[12:16] != b"IHDR":
+        raise ValueError("not a PNG that starts with its IHDR chunk")
+    per_metre = round(dpi * 1000.0 / _MM_PER_INCH)
+    phys = _chunk(b"pHYs", struct.pack(">IIB", per_metre, per_metre, 1))  # 1: the unit is metre
+    rest, pos = [], _IHDR_END
+    while pos < len(png):
+        (length,) = struct.unpack(">I", png[pos : pos + 4])
+        end = pos + 12 + length
+        if png[pos + 4 : pos + 8] != b"pHYs":
+            rest.append(png[pos:end])
+        pos = end
+    return png[:_IHDR_END] + phys + b"".join(rest)
