@@ -2,7 +2,7 @@
 
     geomcad list
     geomcad solve ID [--set NAME=VALUE ...] [--json] [--trace]
-    geomcad build [ID ...] [--out DIR] [--format svg,pdf,png] [--review] [--color]
+    geomcad build [ID ...] [--out DIR] [--format svg,pdf,png,dxf] [--review] [--color]
                   [--student NAME] [--checker NAME] [--group G] [--org ORG] [--date D]
                   [--designation DES]
     geomcad verify ID --measured NAME=VALUE ... [--set NAME=VALUE ...] [--scale K] [--json]
@@ -32,7 +32,10 @@ if TYPE_CHECKING:
     from geomcad.problem import ParamValue, Problem, Solution
     from geomcad.verify import Item, Report
 
-FORMATS = ("svg", "pdf", "png")
+FORMATS = ("svg", "pdf", "png", "dxf")
+DEFAULT_FORMATS = ("svg", "pdf", "png")
+#: Formats that need no system library (the fallback when libcairo is missing).
+PLAIN_FORMATS = ("svg", "dxf")
 
 EXIT_OK = 0
 EXIT_OUT_OF_PRECISION = 1
@@ -102,7 +105,9 @@ def _parser() -> _Parser:
     )
     s.add_argument("--out", default="out", help="output folder (default: out)")
     s.add_argument(
-        "--format", default=",".join(FORMATS), help="comma-separated svg,pdf,png (default: all)"
+        "--format",
+        default=",".join(DEFAULT_FORMATS),
+        help="comma-separated svg,pdf,png,dxf (default: svg,pdf,png)",
     )
     s.add_argument(
         "--review",
@@ -229,6 +234,8 @@ def _cmd_build(ns: argparse.Namespace) -> int:
     from geomcad.render import write_sheets
 
     out = Path(ns.out)
+    # without libcairo the SVGs are still written, and the DXFs when asked for
+    plain = ["svg"] + [f for f in formats if f in PLAIN_FORMATS and f != "svg"]
     missing: MissingDependency | None = None
     try:
         out.mkdir(parents=True, exist_ok=True)
@@ -237,16 +244,17 @@ def _cmd_build(ns: argparse.Namespace) -> int:
                 try:
                     paths = write_sheets(pid, sheets, out, formats, colour=ns.color)
                 except MissingDependency as exc:
-                    # the SVGs are written; write them again to learn their names
+                    # the SVGs (and DXFs) are written; write them again to learn their names
                     missing = exc
-                    paths = write_sheets(pid, sheets, out, ["svg"], colour=ns.color)
+                    paths = write_sheets(pid, sheets, out, plain, colour=ns.color)
             else:
-                paths = write_sheets(pid, sheets, out, ["svg"], colour=ns.color)
+                paths = write_sheets(pid, sheets, out, plain, colour=ns.color)
             _write(sys.stdout, "".join(f"{p}\n" for p in paths))
     except OSError as exc:
         raise _Failed(f"cannot write to {out}: {exc.strerror or exc}") from exc
     if missing is not None:
-        _write(sys.stderr, _error_line(f"{_one_line(str(missing))} (only the SVGs were written)"))
+        what = "SVG and DXF files" if "dxf" in plain else "SVGs"
+        _write(sys.stderr, _error_line(f"{_one_line(str(missing))} (only the {what} were written)"))
         return EXIT_BAD_INPUT
     return EXIT_OK
 
