@@ -6,6 +6,7 @@
                   [--student NAME] [--checker NAME] [--group G] [--org ORG] [--date D]
                   [--designation DES]
     geomcad verify ID --measured NAME=VALUE ... [--set NAME=VALUE ...] [--scale K] [--json]
+    geomcad animate ID [--set NAME=VALUE ...] [--out DIR] [--frames N]
 
 Exit status: 0 done (and, for ``verify``, every measurement within precision), 1 a measurement
 out of precision, 2 bad input. Bad input prints nothing on stdout and exactly one line on stderr,
@@ -119,6 +120,15 @@ def _parser() -> _Parser:
     )
     _add_title_options(s)
     s.set_defaults(func=_cmd_build)
+
+    s = sub.add_parser("animate", help="an animated SVG of the mechanism over one crank turn")
+    s.add_argument("id", help="problem id with a crank mechanism, e.g. 2013-6, or FILE.toml")
+    _add_set(s)
+    s.add_argument("--out", default="out", help="output folder (default: out)")
+    s.add_argument(
+        "--frames", default="120", metavar="N", help="positions over the turn (default: 120)"
+    )
+    s.set_defaults(func=_cmd_animate)
 
     s = sub.add_parser("verify", help="compare measurements off a drawing with the exact values")
     s.add_argument("id", help="problem id, e.g. 2013-6")
@@ -265,6 +275,40 @@ def _file_title(pid: str, sol: Solution) -> Any:
 
     table = (sol.problem.inputs or {}).get("sheet")
     return None if table is None else TitleData.from_mapping(table, "sheet")
+
+
+def _cmd_animate(ns: argparse.Namespace) -> int:
+    from geomcad import documents
+    from geomcad.sheet.motion import MAX_FRAMES
+
+    try:
+        frames = int(ns.frames)
+    except ValueError:
+        frames = 0
+    if not 2 <= frames <= MAX_FRAMES:
+        raise ParameterError(
+            "--frames", ns.frames, f"must be a whole number from 2 to {MAX_FRAMES}"
+        )
+    sol = _solve(ns.id, ns.set)
+    if sol.problem.motion is None:
+        able = [p for p in registry.problem_ids() if registry.get(p).motion is not None]
+        raise _Failed(
+            f"{ns.id}: has no crank mechanism to animate (animate takes {', '.join(able)})"
+        )
+    from geomcad.render.animate import to_animated_svg
+    from geomcad.render.files import write_atomic
+
+    svg = to_animated_svg(sol.problem.motion(sol, frames))
+    stem = documents.stem(ns.id) if documents.is_file_id(ns.id) else ns.id
+    out = Path(ns.out)
+    path = out / f"{stem}-animated.svg"
+    try:
+        out.mkdir(parents=True, exist_ok=True)
+        write_atomic(path, svg.encode("utf-8"))
+    except OSError as exc:
+        raise _Failed(f"cannot write to {out}: {exc.strerror or exc}") from exc
+    _write(sys.stdout, f"{path}\n")
+    return EXIT_OK
 
 
 def _cmd_verify(ns: argparse.Namespace) -> int:

@@ -21,6 +21,7 @@ from geomcad.errors import ConstructionError, ParameterError
 if TYPE_CHECKING:
     from geomcad.construction import Construction
     from geomcad.sheet import Sheet
+    from geomcad.sheet.motion import Frames
     from geomcad.sheet.titleblock import TitleData
 
 ParamValue = float | int | str
@@ -213,6 +214,9 @@ class Problem:
     #: A problem stated by a file (:mod:`geomcad.documents`): the file's data, printed as the
     #: ``params`` of ``solve --json``; ``None`` for a registered problem id.
     inputs: Mapping[str, Any] | None = None
+    #: The mechanism over one crank turn, ``motion(solution, frames)``, for ``geomcad animate``;
+    #: ``None`` for a problem without a crank mechanism to animate.
+    motion: Callable[[Solution, int], Frames] | None = None
 
     def param(self, name: str) -> Param:
         """The declared parameter ``name``; an unknown name is a :class:`ParameterError`."""
