@@ -32,6 +32,10 @@ def _read(data: bytes) -> Drawing:
     return ezdxf.read(io.StringIO(data.decode("utf-8")))
 
 
+def _is_segment(item: object) -> bool:
+    return isinstance(item, Polyline) and len(item.points) == 2 and not item.closed
+
+
 @pytest.mark.parametrize("pid", PIDS)
 def test_every_sheet_reads_back_as_the_same_drawing(pid: str) -> None:
     for name, sheet in _sheets(pid):
@@ -79,7 +83,11 @@ def test_every_sheet_reads_back_as_the_same_drawing(pid: str) -> None:
             {
                 k: n
                 for k, n in {
-                    "LWPOLYLINE": sum(isinstance(i, Polyline) for i in sheet.items) + 1,
+                    "LINE": sum(_is_segment(i) for i in sheet.items),
+                    "LWPOLYLINE": sum(
+                        isinstance(i, Polyline) and not _is_segment(i) for i in sheet.items
+                    )
+                    + 1,  # the paper's edge
                     "CIRCLE": circles,
                     "ARC": sum(isinstance(i, ArcItem) for i in sheet.items),
                     "TEXT": runs,
@@ -150,9 +158,8 @@ def test_dash_patterns_are_the_ones_the_svg_draws() -> None:
     short = Polyline(((20.0, 40.0), (24.0, 40.0)), "centre", dash=fit_open("dashdot", 4.0))
     assert short.dash is None and line.dash and circle.dash
     doc = _read(to_dxf(Sheet(210.0, 297.0, "A4", "t", [line, circle, short])))
-    lw, cw, sw = (doc.modelspace().query("LWPOLYLINE CIRCLE"))[1:]  # after the paper's edge
+    lw, cw, sw = doc.modelspace().query("LINE CIRCLE")
     assert sw.dxf.linetype == "Continuous"  # drawn solid, as in the SVG
-    assert lw.dxf.flags & ezdxf.const.LWPOLYLINE_PLINEGEN
 
     def pattern(entity: ezdxf.entities.DXFGraphic) -> list[float]:
         tags = doc.linetypes.get(entity.dxf.linetype).pattern_tags.tags
@@ -267,3 +274,17 @@ def test_build_without_cairo_still_writes_the_svg_and_the_dxf(
     assert code == 2
     assert out.splitlines() == [str(tmp_path / "2013-3.svg"), str(tmp_path / "2013-3.dxf")]
     assert err.startswith("error: ") and "SVG and DXF files" in err and len(err.splitlines()) == 1
+
+
+def test_a_dashed_polyline_runs_its_pattern_across_its_vertices() -> None:
+    pts = ((20.0, 20.0), (60.0, 20.0), (60.0, 55.0))
+    locus = Polyline(pts, "locus", dash=fit_open("dashed", 75.0))
+    # a solid role's line that the sheet dashes all the same is drawn dashed too
+    odd = Polyline(((20.0, 80.0), (95.0, 80.0)), "construction", dash=fit_open("dashed", 75.0))
+    doc = _read(to_dxf(Sheet(210.0, 297.0, "A4", "t", [locus, odd])))
+    pl = doc.modelspace().query("LWPOLYLINE")[1]
+    assert pl.dxf.flags & ezdxf.const.LWPOLYLINE_PLINEGEN
+    line = doc.modelspace().query("LINE")[0]
+    assert pl.dxf.linetype == line.dxf.linetype
+    assert pl.dxf.linetype.startswith("GOST_DASHED_")
+    assert doc.layers.get("construction").dxf.linetype == "Continuous"

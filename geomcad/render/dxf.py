@@ -18,13 +18,15 @@ drawing's extents are the paper format (``$EXTMIN``/``$EXTMAX`` and ``$LIMMIN``/
   their vertices, as SVG's dash array does.
 - **The paper's edge** is a closed polyline on the layer ``paper``, which does not plot, so that
   "zoom extents" in a CAD program shows the whole format.
-- **Entities**: a polyline is an LWPOLYLINE, a circle a CIRCLE, an arc an ARC (true curves, not
-  chords). A filled shape (an arrowhead, a point's dot, a joint's white disc over its links) is its
-  outline plus a solid HATCH of the role's fill colour underneath. Lettering is one TEXT per run
-  of a label (a subscript is its own smaller TEXT, moved down as in the SVG), left-aligned on its
-  baseline at the x the pinned font's advance widths give, in the text style ``OSIFONT`` whose
-  font is ``osifont.ttf`` (the height of a DXF TEXT is its cap height, as the sheet's is).
-  Dimensions are the lines, arrowheads and texts the sheet draws (no DIMENSION entities).
+- **Entities**: a segment is a LINE, a longer polyline an LWPOLYLINE, a circle a CIRCLE, an arc
+  an ARC (true curves, not chords). A filled shape (an arrowhead, a point's dot, a joint's white
+  disc over its links) is its outline plus a solid HATCH of the role's fill colour underneath.
+  Lettering is one TEXT per run of a label (a subscript is its own smaller TEXT, moved down as
+  in the SVG), left-aligned on its baseline at the x the pinned font's advance widths give, in
+  the text style ``OSIFONT`` whose font is ``osifont.ttf`` (the height of a DXF TEXT is its cap
+  height, as the sheet's is). Dimensions are the lines, arrowheads and texts the sheet draws (no
+  DIMENSION entities). The hatching of supports and of areas under a graph is drawn by the sheet
+  as separate strokes, and stays so (lines on the layer of its role).
 - The file is DXF R2010 (UTF-8, so Cyrillic text is stored as it is), in millimetres
   (``$INSUNITS`` 4, metric), and passes ezdxf's audit. The header's timestamps and the document's
   GUIDs are fixed, so the same sheet gives the same bytes (DESIGN.md rule 9).
@@ -148,16 +150,17 @@ class _Linetypes:
             self._made[tuple(pattern)] = name
 
     def of(self, line: LineType, dash: Dash | None) -> str:
-        """The linetype of an item of a ``line``-type role whose fitted pattern is ``dash``."""
-        if line == "solid":
-            return "BYLAYER"
+        """The linetype of an item of a ``line``-type role whose fitted pattern is ``dash``:
+        ``BYLAYER`` when the layer's own (a solid role drawn solid, or the nominal pattern),
+        ``Continuous`` for a dashed role's line drawn solid (too short for two dashes)."""
         if dash is None:
-            return "Continuous"
+            return "BYLAYER" if line == "solid" else "Continuous"
+        family = line if line != "solid" else _family(dash)
         pattern = _pattern(dash)
         key = tuple(pattern)
         name = self._made.get(key)
         if name is None:
-            name = f"{LINETYPE_NAMES[line]}_{_fmt(dash.array[0])}"
+            name = f"{LINETYPE_NAMES[family]}_{_fmt(dash.array[0])}"
             if dash.offset:
                 name += "_C"  # a closed line's pattern, centred on its start
             taken = set(self._made.values())
@@ -168,10 +171,18 @@ class _Linetypes:
             self._doc.linetypes.add(
                 name,
                 [sum(abs(v) for v in pattern), *pattern],
-                description=f"{_DESCRIPTIONS[line]} fitted",
+                description=f"{_DESCRIPTIONS[family]} fitted",
             )
             self._made[key] = name
-        return name if name != LINETYPE_NAMES[line] else "BYLAYER"
+        return "BYLAYER" if name == LINETYPE_NAMES.get(line) else name
+
+
+def _family(dash: Dash) -> LineType:
+    """The GOST line type a dash array spells: dash-gap, dash-gap-dot-gap, or with two dots."""
+    n = len(dash.array)
+    if n == 2:
+        return "dashed"
+    return "dashdot" if n == 4 else "twodot"
 
 
 def _fmt(x: float) -> str:
@@ -257,6 +268,9 @@ class _Writer:
         if isinstance(item, Polyline):
             if item.fill:
                 self.fill(item, st)
+            if len(item.points) == 2 and not item.closed:
+                self.msp.add_line(self.p(item.points[0]), self.p(item.points[1]), dxfattribs=attrs)
+                return
             pl = self.msp.add_lwpolyline(
                 [self.p(q) for q in item.points], close=item.closed, dxfattribs=attrs
             )
