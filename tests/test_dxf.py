@@ -219,22 +219,28 @@ def _dxf_png(sheet: Sheet, dpi: int) -> bytes:
     return bytes(cairosvg.svg2png(bytestring=text.encode(), dpi=dpi, background_color="white"))
 
 
+def _alike(got: np.ndarray, want: np.ndarray) -> bool:
+    """Whether two ink maps show the same drawing: inked cells agree, ink correlates, and the
+    total ink is within 15 % (the fonts' rasterisers differ a little)."""
+    agree = float(((got > 0) == (want > 0)).mean())
+    corr = float(np.corrcoef(got.ravel(), want.ravel())[0, 1])
+    return agree > 0.95 and corr > 0.85 and abs(got.mean() / want.mean() - 1.0) < 0.15
+
+
 def test_the_dxf_drawn_by_ezdxf_looks_like_the_svg() -> None:
-    """Ink per 5 mm cell: the DXF as ezdxf draws it against the SVG as cairo draws it."""
-    sheet, other = _sheets("2013-6")[0][1], _sheets("2013-3")[0][1]
+    """Ink per 5 mm cell: the DXF as ezdxf's drawing add-on draws it against the SVG as cairo
+    draws it."""
+    sheet = _sheets("2013-6")[0][1]
     try:
         want = _ink(to_png(to_svg(sheet), dpi=50))
     except MissingDependency:
         pytest.skip("libcairo is missing")
     got = _ink(_dxf_png(sheet, 50))
     assert got.shape == want.shape  # the same paper at 1:1
-    agree = float(((got > 0) == (want > 0)).mean())
-    corr = float(np.corrcoef(got.ravel(), want.ravel())[0, 1])
-    assert agree > 0.95 and corr > 0.85, (agree, corr)
-    assert got.mean() == pytest.approx(want.mean(), rel=0.15)
-    # the comparison tells sheets apart: another problem's sheet does not pass it
-    wrong = _ink(_dxf_png(other, 50))
-    assert float(np.corrcoef(wrong.ravel(), want.ravel())[0, 1]) < 0.6
+    assert _alike(got, want)
+    # the comparison sees a drawing upside down (y not flipped) or moved by 10 mm
+    assert not _alike(got[::-1], want)
+    assert not _alike(np.roll(got, 2, axis=1), want)
 
 
 def test_build_writes_dxf_beside_the_svg(
