@@ -305,3 +305,16 @@ def test_a_linkage_file_builds_as_dxf(tmp_path: Path, capsys: pytest.CaptureFixt
     assert not doc.audit().has_errors
     assert tuple(doc.header["$EXTMAX"])[:2] == (841.0, 594.0)  # A1
     assert {"link", "frame", "title"} <= {layer.dxf.name for layer in doc.layers}
+
+
+def test_black_like_the_svg_unless_in_colour() -> None:
+    sheet = _sheets("2013-6")[0][1]
+    black, coloured = _read(to_dxf(sheet)), _read(to_dxf(sheet, colour=True))
+    for layer in black.layers:
+        assert layer.dxf.color in (7, 8) and not layer.has_dxf_attrib("true_color")
+    assert coloured.layers.get("construction").dxf.true_color == 0x1F4E9C
+    assert coloured.layers.get("result").dxf.true_color == 0xB01C1C
+    # a joint's disc is paper white in both: it hides the links under it
+    for doc in (black, coloured):
+        discs = [h for h in doc.modelspace().query("HATCH") if h.dxf.layer == "joint"]
+        assert discs and all(h.dxf.true_color == 0xFFFFFF for h in discs)

@@ -18,8 +18,9 @@ from geomcad.sheet.model import Sheet
 __all__ = ["DEFAULT_FORMATS", "FORMATS", "to_dxf", "to_pdf", "to_png", "to_svg", "write_sheets"]
 
 
-def to_dxf(sheet: Sheet) -> bytes:
-    """The sheet as DXF R2010 bytes (see :mod:`geomcad.render.dxf`; ezdxf loads on first use)."""
+def to_dxf(sheet: Sheet, colour: bool = False) -> bytes:
+    """The sheet as DXF R2010 bytes, black unless ``colour`` (see :mod:`geomcad.render.dxf`;
+    ezdxf loads on first use)."""
     from geomcad.render.dxf import to_dxf as dxf
 
-    return dxf(sheet)
+    return dxf(sheet, colour=colour)

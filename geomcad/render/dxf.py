@@ -8,7 +8,8 @@ drawing's extents are the paper format (``$EXTMIN``/``$EXTMAX`` and ``$LIMMIN``/
   :data:`~geomcad.sheet.style.STYLES` (the SVG's Inkscape layers), each with the role's
   lineweight (the role's multiple of the sheet's main line S, rounded to the nearest DXF
   lineweight), colour (black as ACI 7, which CAD shows black on white paper and white on a dark
-  screen; a coloured role as a true colour) and linetype: ``GOST_DASHED``, ``GOST_DASHDOT`` or
+  screen; with ``colour``, as ``build --color`` draws the SVG, a coloured role keeps its colour
+  as a true colour) and linetype: ``GOST_DASHED``, ``GOST_DASHDOT`` or
   ``GOST_TWODOT`` with the GOST 2.303 target dash, or ``Continuous``.
 - **Dash patterns as drawn**: the sheet fits each dashed line's pattern to its own length (a
   dash-dot line starts and ends with a dash, a circle's pattern is centred on its start point);
@@ -47,6 +48,7 @@ from ezdxf.lldxf.const import LINEWEIGHT_DEFAULT, VALID_DXF_LINEWEIGHTS
 
 from geomcad import tol
 from geomcad.render.svg import main_line as svg_main_line
+from geomcad.render.svg import monochrome
 from geomcad.sheet.model import XY, ArcItem, CircleItem, Dash, Item, Polyline, Sheet, TextItem
 from geomcad.sheet.style import DASHDOT, DASHED, STYLES, TWODOT, LineType, Style, style
 from geomcad.sheet.text import FONT_FAMILY, FONT_FILE, SUB_DROP, SUP_RISE, metrics, run_size
@@ -190,7 +192,7 @@ def _fmt(x: float) -> str:
 
 
 class _Writer:
-    def __init__(self, sheet: Sheet, main_line: float) -> None:
+    def __init__(self, sheet: Sheet, main_line: float, colour: bool) -> None:
         doc = ezdxf.new(DXF_VERSION, setup=False, units=ezdxf.units.MM)
         self.doc = doc
         self.sheet = sheet
@@ -211,6 +213,12 @@ class _Writer:
         self.msp.dxf.extmin, self.msp.dxf.extmax = ext
         self.msp.dxf.limmin, self.msp.dxf.limmax = lim
         self.main_line = main_line
+        self.colour = colour
+
+    def style(self, role: str) -> Style:
+        """The role's style, in black unless the sheet is drawn in colour (as the SVG)."""
+        st = style(role)
+        return st if self.colour else monochrome(st)
 
     def p(self, q: XY) -> tuple[float, float]:
         """A sheet point (y down from the top edge) in DXF coordinates (y up from the bottom)."""
@@ -260,7 +268,7 @@ class _Writer:
             edges.add_arc(self.p(item.c), item.r, 0.0, 360.0)
 
     def item(self, item: Item) -> None:
-        st = style(item.role)
+        st = self.style(item.role)
         if isinstance(item, TextItem):
             self.text(item, st)
             return
@@ -336,20 +344,21 @@ def _layers_in_order(items: Iterable[Item]) -> list[str]:
     return [r for r in _DRAWING_ORDER if r in used]
 
 
-def to_dxf_document(sheet: Sheet, main_line: float | None = None) -> Drawing:
+def to_dxf_document(sheet: Sheet, main_line: float | None = None, colour: bool = False) -> Drawing:
     """The sheet as an ezdxf document (for tests and for further editing in Python).
 
-    ``main_line`` is the sheet's main line S in mm (default: the format's, as the SVG draws it).
+    ``main_line`` is the sheet's main line S in mm (default: the format's, as the SVG draws it);
+    the drawing is black (ESKD) unless ``colour`` keeps the roles' colours, as in the SVG.
     Raises ``KeyError`` for an item whose role is not in ``STYLES``, and ``ValueError`` for a
     non-finite coordinate.
     """
     for item in sheet.items:
         style(item.role)
-    w = _Writer(sheet, svg_main_line(sheet.format) if main_line is None else main_line)
+    w = _Writer(sheet, svg_main_line(sheet.format) if main_line is None else main_line, colour)
     w.paper()
     roles = _layers_in_order(sheet.items)
     for role in roles:
-        w.layer(role, STYLES[role])
+        w.layer(role, w.style(role))
     by_role: dict[str, list[Item]] = {}
     for item in sheet.items:
         by_role.setdefault(item.role, []).append(item)
@@ -373,7 +382,7 @@ def _check_finite(item: Item) -> None:
         raise ValueError(f"cannot write a non-finite coordinate of a {item.role} item into DXF")
 
 
-def to_dxf(sheet: Sheet, main_line: float | None = None) -> bytes:
+def to_dxf(sheet: Sheet, main_line: float | None = None, colour: bool = False) -> bytes:
     """The sheet as DXF R2010 bytes (UTF-8 text), byte-stable for the same sheet.
 
     ezdxf stamps the time and fresh GUIDs into the document as it creates and writes it; its own
@@ -383,7 +392,7 @@ def to_dxf(sheet: Sheet, main_line: float | None = None) -> bytes:
     fixed = ezdxf.options.write_fixed_meta_data_for_testing
     ezdxf.options.write_fixed_meta_data_for_testing = True
     try:
-        doc = to_dxf_document(sheet, main_line)
+        doc = to_dxf_document(sheet, main_line, colour)
         doc.write(stream)
     finally:
         ezdxf.options.write_fixed_meta_data_for_testing = fixed

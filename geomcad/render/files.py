@@ -122,7 +122,7 @@ def write_sheets(
 
         for stem, (_name, sheet) in zip(stems, sheets, strict=True):
             path = out_dir / f"{stem}.dxf"
-            write_atomic(path, to_dxf(sheet))
+            write_atomic(path, to_dxf(sheet, colour=colour))
             written.append(path)
 
     def png(svg: str) -> bytes:
