@@ -24,6 +24,7 @@ from geomcad.structure.model import Link, Pair, prismatic, revolute
 TURN_SAMPLES = 720
 
 
+
 @dataclass(frozen=True)
 class Solved:
     """The linkage, its structural scheme at the first position, W, its cycle (``None``
