@@ -31,6 +31,8 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Any
 
+import numpy as np
+
 from geomcad.construction import Construction, Where, left_of
 from geomcad.errors import ConstructionError, NoIntersection, ParameterError
 from geomcad.geom import Line, Vec, angle_arcs, mirror_circle
@@ -39,6 +41,7 @@ from geomcad.problem import (
     Build,
     ParamValue,
 )
+from geomcad.sheet.motion import Frames, turn
 from geomcad.sheet.scale import gost_scale_to_fit
 from geomcad.units import to_deg
 
@@ -342,3 +345,32 @@ def draw(solution: Any) -> list[tuple[str, Any]]:
     from .sheets_2013_6_kin import kinematics_sheet
 
     return [*sheets(solution), kinematics_sheet(solution)]
+
+
+def motion(solution: Any, frames: int) -> Frames:
+    """The synthesized six-bar over one crank turn from the kinematics sheet's position (60°
+    past C's left extreme), at ω1 of the analysis: the joints, C on its guide, the paths of A, B
+    and C, and the velocity plan (pa, pb, pc)."""
+    geo: Geometry = solution.data
+    mech = geo.mechanism
+    assert mech is not None, "build refuses a solution that is not a crank-rocker"
+    r = mech.sweep(turn(frames, geo.phi_min + ANALYSIS_TURN, ANALYSIS_OMEGA1), ANALYSIS_OMEGA1)
+    fixed = {"O1": mech.O1, "O2": mech.O2}
+    points = {k: np.tile([v.x, v.y], (frames, 1)) for k, v in fixed.items()}
+    points |= {"A": r.A, "B": r.B, "C": r.C}
+    cx = r.C[:, 0]
+    reach = 0.15 * float(cx.max() - cx.min()) + geo.l4 * 0.1
+    y = mech.guide_p.y
+    return Frames(
+        title=f"{PROBLEM.id}: один оборот кривошипа",
+        phi=r.phi,
+        points=points,
+        links=(("O1", "A"), ("A", "B"), ("O2", "B"), ("B", "C")),
+        fixed=("O1", "O2"),
+        traced=("A", "B", "C"),
+        sliders={"C": (mech.guide_d.x, mech.guide_d.y)},
+        guides=(((float(cx.min()) - reach, y), (float(cx.max()) + reach, y)),),
+        velocities={"A": r.V_A, "B": r.V_B, "C": r.V_C},
+        plan_edges=(("A", "B"), ("B", "C")),
+        omega1=ANALYSIS_OMEGA1,
+    )

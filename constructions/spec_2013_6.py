@@ -59,5 +59,6 @@ PROBLEM = Problem(
     seed=SEED,
     build=lazy(".p2013_6:build", __package__),
     draw=lazy(".p2013_6:draw", __package__),
+    motion=lazy(".p2013_6:motion", __package__),
     seed_k_l=SEED_K_L,
 )

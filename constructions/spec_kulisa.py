@@ -82,4 +82,5 @@ PROBLEM = Problem(
     seed=SEED,
     build=lazy(".p_kulisa:build", __package__),
     draw=lazy(".p_kulisa:draw", __package__),
+    motion=lazy(".p_kulisa:motion", __package__),
 )

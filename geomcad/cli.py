@@ -3,10 +3,11 @@
     geomcad list
     geomcad params ID [--json]
     geomcad solve ID [--set NAME=VALUE ...] [--json] [--trace]
-    geomcad build [ID ...] [--out DIR] [--format svg,pdf,png] [--review] [--color]
+    geomcad build [ID ...] [--out DIR] [--format svg,pdf,png,dxf] [--review] [--color]
                   [--student NAME] [--checker NAME] [--group G] [--org ORG] [--date D]
                   [--designation DES]
     geomcad verify ID --measured NAME=VALUE ... [--set NAME=VALUE ...] [--scale K] [--json]
+    geomcad animate ID [--set NAME=VALUE ...] [--out DIR] [--frames N]
 
 Exit status: 0 done (and, for ``verify``, every measurement within precision), 1 a measurement
 out of precision, 2 bad input. Bad input prints nothing on stdout and exactly one line on stderr,
@@ -33,7 +34,10 @@ if TYPE_CHECKING:
     from geomcad.problem import ParamValue, Problem, Solution
     from geomcad.verify import Item, Report
 
-FORMATS = ("svg", "pdf", "png")
+FORMATS = ("svg", "pdf", "png", "dxf")
+DEFAULT_FORMATS = ("svg", "pdf", "png")
+#: Formats that need no system library (the fallback when libcairo is missing).
+PLAIN_FORMATS = ("svg", "dxf")
 
 EXIT_OK = 0
 EXIT_OUT_OF_PRECISION = 1
@@ -159,7 +163,9 @@ def _parser(help_for: tuple[str, str] | None = None) -> _Parser:
     )
     s.add_argument("--out", default="out", help="output folder (default: out)")
     s.add_argument(
-        "--format", default=",".join(FORMATS), help="comma-separated svg,pdf,png (default: all)"
+        "--format",
+        default=",".join(DEFAULT_FORMATS),
+        help="comma-separated svg,pdf,png,dxf (default: svg,pdf,png)",
     )
     s.add_argument(
         "--review",
@@ -171,6 +177,19 @@ def _parser(help_for: tuple[str, str] | None = None) -> _Parser:
     )
     _add_title_options(s)
     s.set_defaults(func=_cmd_build)
+
+    s = sub.add_parser("animate", help="an animated SVG of the mechanism over one crank turn")
+    s.add_argument(
+        "id",
+        metavar="ID",
+        help="a problem id with a crank mechanism (2013-6, kulisa-23110713) or FILE.toml",
+    )
+    _add_set(s)
+    s.add_argument("--out", default="out", help="output folder (default: out)")
+    s.add_argument(
+        "--frames", default="120", metavar="N", help="positions over the turn (default: 120)"
+    )
+    s.set_defaults(func=_cmd_animate)
 
     s = sub.add_parser(
         "verify",
@@ -338,6 +357,8 @@ def _cmd_build(ns: argparse.Namespace) -> int:
     from geomcad.render import write_sheets
 
     out = Path(ns.out)
+    # without libcairo the SVGs are still written, and the DXFs when asked for
+    plain = ["svg"] + [f for f in formats if f in PLAIN_FORMATS and f != "svg"]
     missing: MissingDependency | None = None
     try:
         out.mkdir(parents=True, exist_ok=True)
@@ -346,16 +367,17 @@ def _cmd_build(ns: argparse.Namespace) -> int:
                 try:
                     paths = write_sheets(pid, sheets, out, formats, colour=ns.color)
                 except MissingDependency as exc:
-                    # the SVGs are written; write them again to learn their names
+                    # the SVGs (and DXFs) are written; write them again to learn their names
                     missing = exc
-                    paths = write_sheets(pid, sheets, out, ["svg"], colour=ns.color)
+                    paths = write_sheets(pid, sheets, out, plain, colour=ns.color)
             else:
-                paths = write_sheets(pid, sheets, out, ["svg"], colour=ns.color)
+                paths = write_sheets(pid, sheets, out, plain, colour=ns.color)
             _write(sys.stdout, "".join(f"{p}\n" for p in paths))
     except OSError as exc:
         raise _Failed(f"cannot write to {out}: {exc.strerror or exc}") from exc
     if missing is not None:
-        _write(sys.stderr, _error_line(f"{_one_line(str(missing))}; only the SVGs were written"))
+        what = "SVG and DXF files" if "dxf" in plain else "SVGs"
+        _write(sys.stderr, _error_line(f"{_one_line(str(missing))}; only the {what} were written"))
         return EXIT_BAD_INPUT
     return EXIT_OK
 
@@ -366,6 +388,40 @@ def _file_title(pid: str, sol: Solution) -> Any:
 
     table = (sol.problem.inputs or {}).get("sheet")
     return None if table is None else TitleData.from_mapping(table, "sheet")
+
+
+def _cmd_animate(ns: argparse.Namespace) -> int:
+    from geomcad import documents
+    from geomcad.sheet.motion import MAX_FRAMES
+
+    try:
+        frames = int(ns.frames)
+    except ValueError:
+        frames = 0
+    if not 2 <= frames <= MAX_FRAMES:
+        raise ParameterError(
+            "--frames", ns.frames, f"must be a whole number from 2 to {MAX_FRAMES}"
+        )
+    sol = _solve(ns.id, ns.set)
+    if sol.problem.motion is None:
+        able = [p for p in registry.problem_ids() if registry.get(p).motion is not None]
+        raise _Failed(
+            f"{ns.id}: has no crank mechanism to animate (animate takes {', '.join(able)})"
+        )
+    from geomcad.render.animate import to_animated_svg
+    from geomcad.render.files import write_atomic
+
+    svg = to_animated_svg(sol.problem.motion(sol, frames))
+    stem = documents.stem(ns.id) if documents.is_file_id(ns.id) else ns.id
+    out = Path(ns.out)
+    path = out / f"{stem}-animated.svg"
+    try:
+        out.mkdir(parents=True, exist_ok=True)
+        write_atomic(path, svg.encode("utf-8"))
+    except OSError as exc:
+        raise _Failed(f"cannot write to {out}: {exc.strerror or exc}") from exc
+    _write(sys.stdout, f"{path}\n")
+    return EXIT_OK
 
 
 def _cmd_verify(ns: argparse.Namespace) -> int:

@@ -28,6 +28,7 @@ from geomcad.errors import ConstructionError, ParameterError
 if TYPE_CHECKING:
     from geomcad.construction import Construction
     from geomcad.sheet import Sheet
+    from geomcad.sheet.motion import Frames
     from geomcad.sheet.titleblock import TitleData
 
 ParamValue = float | int | str
@@ -263,6 +264,9 @@ class Problem:
     #: A problem stated by a file (:mod:`geomcad.documents`): the file's data, printed as the
     #: ``params`` of ``solve --json``; ``None`` for a registered problem id.
     inputs: Mapping[str, Any] | None = None
+    #: The mechanism over one crank turn, ``motion(solution, frames)``, for ``geomcad animate``;
+    #: ``None`` for a problem without a crank mechanism to animate.
+    motion: Callable[[Solution, int], Frames] | None = None
 
     def param(self, name: str, value: object = "?") -> Param:
         """The declared parameter ``name``; an unknown name is a :class:`ParameterError` that
@@ -323,6 +327,7 @@ class Solution:
         self.scales = build.scales
         self.data = build.data
         self._notes = list(build.notes)
+        self._main_svg: str | None = None
 
     @property
     def is_seed(self) -> bool:
@@ -404,13 +409,29 @@ class Solution:
         """The problem's hand-in sheets: ``[(name, Sheet)]``, name ``""`` for the main sheet.
 
         Their title blocks are filled as one document (Лист i of Листов n, one designation)
-        with the user's ``title`` data; without it the people's cells stay empty.
+        with the user's ``title`` data; without it the people's cells stay empty. Each sheet
+        shows itself as SVG in Jupyter (:mod:`geomcad.notebook`).
         """
+        import geomcad.notebook  # noqa: F401  (sets the sheets' SVG display)
         from geomcad.sheet.frame import fill_title_blocks
 
         out = list(self.problem.draw(self))
         fill_title_blocks([s for _, s in out], title)
         return out
+
+    def _repr_html_(self) -> str:
+        """Jupyter's view of a solution: the table of its results (:mod:`geomcad.notebook`)."""
+        from geomcad.notebook import results_html
+
+        return results_html(self)
+
+    def _repr_svg_(self) -> str:
+        """The main sheet as SVG (drawn once per solution)."""
+        if self._main_svg is None:
+            from geomcad.notebook import sheet_svg
+
+            self._main_svg = sheet_svg(self.sheets()[0][1])
+        return self._main_svg
 
     def trace(self) -> str:
         """The construction protocol, one line per named step."""

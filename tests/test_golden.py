@@ -14,6 +14,7 @@ Regenerate after an intended change of the drawings::
 from __future__ import annotations
 
 import dataclasses
+import functools
 import re
 import sys
 import xml.etree.ElementTree as ET
@@ -104,7 +105,9 @@ def svg_difference(got: str, want: str) -> str | None:
     return _first_diff(root_got, root_want, _local(root_want.tag))
 
 
+@functools.cache
 def _sheets(pid: str) -> list[tuple[str, Sheet]]:
+    """A problem's sheets, drawn once per test run (test_dxf reads the same ones)."""
     return geomcad.solve(pid).sheets()
 
 

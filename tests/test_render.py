@@ -432,7 +432,7 @@ def test_write_sheets_writes_all_formats(tmp_path: Path) -> None:
     assert (out / "2013-6.svg").read_text(encoding="utf-8") == to_svg(sample_sheet())
     assert (out / "2013-6.pdf").read_bytes().startswith(b"%PDF")
     assert (out / "2013-6-plan.png").read_bytes().startswith(b"\x89PNG")
-    assert FORMATS == ("svg", "pdf", "png")
+    assert FORMATS == ("svg", "pdf", "png", "dxf")
 
 
 def test_write_sheets_svg_only_needs_no_cairo(
@@ -517,10 +517,10 @@ def test_duplicate_sheet_names_are_refused(tmp_path: Path) -> None:
 
 def test_unknown_format_names_the_option_and_the_choices(tmp_path: Path) -> None:
     with pytest.raises(ParameterError) as info:
-        write_sheets("p", [("", sample_sheet())], tmp_path, formats=["svg", "dxf"])
+        write_sheets("p", [("", sample_sheet())], tmp_path, formats=["svg", "eps"])
     msg = str(info.value)
     assert info.value.name == "--format"
-    assert "'dxf'" in msg and "svg, pdf, png" in msg
+    assert "'eps'" in msg and "svg, pdf, png, dxf" in msg
     assert list(tmp_path.iterdir()) == []
 
 

@@ -1,9 +1,11 @@
-"""Write a problem's sheets to files: ``ID.svg`` for the main sheet, ``ID-NAME.svg`` for others.
+"""Write a problem's sheets to files: ``ID.svg`` for the main sheet, ``ID-NAME.svg`` for others
+(and ``.pdf``, ``.png``, ``.dxf`` beside them).
 
 Every file is written atomically (a temporary file in the same directory, then ``os.replace``),
 so a reader never sees half a sheet and a failure leaves neither a partial file nor a stray
-temporary one. Every SVG is written before any PDF or PNG: SVG needs nothing from the system, so a
-machine without libcairo still gets the SVGs before :class:`~geomcad.errors.MissingDependency`.
+temporary one. Every SVG and DXF is written before any PDF or PNG: they need nothing from the
+system, so a machine without libcairo still gets them before
+:class:`~geomcad.errors.MissingDependency`.
 """
 
 from __future__ import annotations
@@ -18,8 +20,14 @@ from geomcad.render.raster import to_pdf, to_png
 from geomcad.render.svg import to_svg
 from geomcad.sheet.model import Sheet
 
-#: Output formats, in the order they are written.
-FORMATS = ("svg", "pdf", "png")
+#: Output formats: the SVG and its PDF and PNG, and the DXF for CAD programs.
+FORMATS = ("svg", "pdf", "png", "dxf")
+
+#: What ``write_sheets`` and ``geomcad build`` write when no format is named.
+DEFAULT_FORMATS = ("svg", "pdf", "png")
+
+#: The order files are written in: what needs nothing from the system first.
+WRITE_ORDER = ("svg", "dxf", "pdf", "png")
 
 #: Resolution of PNG previews (dots per inch).
 PNG_DPI = 150
@@ -38,13 +46,13 @@ def _check_name(param: str, value: str, *, empty_ok: bool) -> None:
 
 
 def _check_formats(formats: Sequence[str]) -> list[str]:
-    """The requested formats without repeats, in :data:`FORMATS` order."""
+    """The requested formats without repeats, in :data:`WRITE_ORDER`."""
     if isinstance(formats, str):
         formats = [formats]
     for f in formats:
         if f not in FORMATS:
             raise ParameterError("--format", f, f"allowed formats are {', '.join(FORMATS)}")
-    return [f for f in FORMATS if f in formats]
+    return [f for f in WRITE_ORDER if f in formats]
 
 
 def write_atomic(path: Path, data: bytes) -> None:
@@ -71,17 +79,18 @@ def write_sheets(
     pid: str,
     sheets: Sequence[tuple[str, Sheet]],
     out_dir: Path,
-    formats: Sequence[str] = FORMATS,
+    formats: Sequence[str] = DEFAULT_FORMATS,
     *,
     dpi: int = PNG_DPI,
     colour: bool = False,
 ) -> list[Path]:
-    """Write each ``(name, sheet)`` as ``out_dir/ID[-NAME].{svg,pdf,png}`` and return the paths.
+    """Write each ``(name, sheet)`` as ``out_dir/ID[-NAME].{svg,pdf,png,dxf}``; return the paths.
 
     The sheets are black (ESKD); ``colour`` keeps the roles' colours, for screens.
 
     ``pid`` is the problem id; the main sheet has the name ``""``. ``out_dir`` is created if
-    missing. Every SVG is written first, then the PDFs and PNGs.
+    missing. Every SVG is written first, then the DXFs (ezdxf; nothing from the system either),
+    then the PDFs and PNGs.
 
     Raises :class:`~geomcad.errors.ParameterError` for an unknown format (naming ``--format``),
     for an id or sheet name that is empty where it must not be, holds a path separator or ``..``,
@@ -107,6 +116,13 @@ def write_sheets(
         for stem, svg in zip(stems, svgs, strict=True):
             path = out_dir / f"{stem}.svg"
             write_atomic(path, svg.encode("utf-8"))
+            written.append(path)
+    if "dxf" in wanted:
+        from geomcad.render.dxf import to_dxf  # ezdxf loads only when a DXF is asked for
+
+        for stem, (_name, sheet) in zip(stems, sheets, strict=True):
+            path = out_dir / f"{stem}.dxf"
+            write_atomic(path, to_dxf(sheet, colour=colour))
             written.append(path)
 
     def png(svg: str) -> bytes:

@@ -11,6 +11,7 @@ so a backend only replays them. Nothing here writes files.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Literal, TypeAlias
 
@@ -130,3 +131,21 @@ class Sheet:
     def texts(self) -> list[TextItem]:
         """Every text item, for tests and for label placement."""
         return [i for i in self.items if isinstance(i, TextItem)]
+
+    def _repr_svg_(self) -> str | None:
+        """The sheet as SVG, for Jupyter; ``None`` (no picture) until a backend is set.
+
+        The sheet layer cannot import the render layer above it, so the backend registers
+        itself (:func:`set_svg_writer`): importing :mod:`geomcad.notebook` does, and so does
+        getting sheets through ``Solution.sheets()``.
+        """
+        return None if _svg_writer is None else _svg_writer(self)
+
+
+_svg_writer: Callable[[Sheet], str] | None = None
+
+
+def set_svg_writer(writer: Callable[[Sheet], str] | None) -> None:
+    """Set the function that draws a sheet as SVG text for :meth:`Sheet._repr_svg_`."""
+    global _svg_writer
+    _svg_writer = writer
