@@ -86,6 +86,11 @@ def make_problem(file_id: str, data: dict[str, Any]) -> Problem:
 
         return kinematic_sheets(solved, sol.scales, stem(file_id))
 
+    def motion(sol: Solution, frames: int) -> Any:
+        from geomcad.sheet.linkage import motion as linkage_motion
+
+        return linkage_motion(sol.data, frames)
+
     return _FileProblem(
         id=file_id,
         title=lk.title,
@@ -95,6 +100,7 @@ def make_problem(file_id: str, data: dict[str, Any]) -> Problem:
         build=build,
         draw=draw,
         inputs=data,
+        motion=motion,
     )
 
 

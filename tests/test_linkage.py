@@ -305,3 +305,23 @@ def test_lower_case_point_names_keep_their_plan_points_apart() -> None:
     data["point"][0]["toward"] = "b"
     P = construct(parse(data), 1.0)
     assert "b" in P.pos and "p_b" in P.vp.points
+
+
+@pytest.mark.parametrize("name", ["shaper", "scotch-yoke"])
+def test_animate_a_linkage_file(name: str, tmp_path: Path) -> None:
+    import xml.etree.ElementTree as ET
+
+    path = str(Path(__file__).resolve().parents[1] / "examples" / f"{name}.toml")
+    assert main(["animate", path, "--out", str(tmp_path), "--frames", "12"]) == 0
+    svg = tmp_path / f"{name}-animated.svg"
+    root = ET.parse(svg).getroot()
+    assert root.tag.endswith("svg")
+    frames = documents.load(path).solve()
+    m = frames.problem.motion
+    assert m is not None
+    fr = m(frames, 12)
+    assert fr.frames == 12
+    # the crank keeps its length in every frame
+    lk = frames.data.linkage
+    r = fr.points[lk.joint] - fr.points[lk.pivot]
+    assert np.allclose(np.hypot(r[:, 0], r[:, 1]), lk.length, rtol=1e-12)

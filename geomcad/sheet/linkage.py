@@ -26,6 +26,7 @@ from geomcad.linkage.solution import Solved
 from geomcad.linkage.sweep import output_coordinate, sweep
 from geomcad.sheet import Drawing, TitleBlock, fmt_number, gost_scale_to_fit, start
 from geomcad.sheet.graph import Axis, Graph, nice_step
+from geomcad.sheet.motion import Frames, turn
 from geomcad.sheet.plans import draw_plan, plan_scale
 from geomcad.sheet.scale import Scale
 from geomcad.sheet.scheme import Body, draw_scheme
@@ -420,3 +421,53 @@ ZERO = 1.0e-9
 def _num(x: float, scale: float) -> str:
     """A table value to 3 significant figures; round-off of a zero as 0."""
     return "0" if abs(x) <= ZERO * scale else fmt_number(x, digits=3)
+
+
+# --- the moving mechanism ---------------------------------------------------------------------
+
+
+def motion(s: Solved, frames: int) -> Frames:
+    """The linkage over one crank turn from position 0 (:mod:`geomcad.sheet.motion`): every
+    joint and point from the sweep, each link as the chain of its points, the sliders along
+    their guides, the paths of the named points and the output, and the velocity plan with its
+    relative velocities along each link."""
+    lk = s.linkage
+    phi = turn(frames, s.positions[0].phi, 1.0 if lk.omega > 0 else -1.0)
+    st = sweep(lk, phi, order=1)
+    pos, vel = st.pos, st.vel
+    names = [*lk.frame, *(n for n in lk.owner if n not in lk.frame)]
+    points = {n: np.array(pos[n]) for n in names if n in pos}
+    links: list[tuple[str, ...]] = []
+    edges: list[tuple[str, str]] = []
+    for link in lk.moving_links:
+        on = [n for n in dict.fromkeys(lk.points_on(link)) if n in points]
+        if len(on) >= 2:
+            links.append(tuple(on))
+            edges += [(on[0], q) for q in on[1:] if q in vel and on[0] in vel]
+    sliders = {}
+    guides = []
+    for g in lk.groups:
+        if g.kind in ("RRP", "PRP") and g.guide is not None:
+            d = st.slide[g.links[1]][0]
+            sliders[g.joint] = (float(d[0]), float(d[1]))
+            if g.guide.fixed:
+                P = points[g.joint]
+                t = (P - np.array([g.guide.through.x, g.guide.through.y])) @ d
+                q = np.array([g.guide.through.x, g.guide.through.y])
+                reach = 0.15 * float(t.max() - t.min()) + 0.1 * lk.length
+                a, b = q + d * (t.min() - reach), q + d * (t.max() + reach)
+                guides.append(((float(a[0]), float(a[1])), (float(b[0]), float(b[1]))))
+    traced = tuple(dict.fromkeys((lk.joint, *(p.name for p in lk.points), lk.output)))
+    return Frames(
+        title=f"{lk.title}: один оборот кривошипа",
+        phi=phi,
+        points=points,
+        links=tuple(links),
+        fixed=tuple(lk.frame),
+        traced=traced,
+        sliders=sliders,
+        guides=tuple(guides),
+        velocities={n: np.array(vel[n]) for n in points if n in vel},
+        plan_edges=tuple(dict.fromkeys(edges)),
+        omega1=lk.omega,
+    )
