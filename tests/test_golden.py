@@ -105,13 +105,24 @@ def svg_difference(got: str, want: str) -> str | None:
     return _first_diff(root_got, root_want, _local(root_want.tag))
 
 
+#: Linkage files with golden sheets, under the name ``linkage-STEM``.
+EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
+GOLDEN_FILES = {f"linkage-{stem}": EXAMPLES / f"{stem}.toml" for stem in ("shaper", "four-bar")}
+KEYS = [*geomcad.problem_ids(), *GOLDEN_FILES]
+
+
 @functools.cache
 def _sheets(pid: str) -> list[tuple[str, Sheet]]:
-    """A problem's sheets, drawn once per test run (test_dxf reads the same ones)."""
+    """A problem's (or a golden linkage file's) sheets, drawn once per test run (test_dxf reads
+    the same ones)."""
+    if pid in GOLDEN_FILES:
+        from geomcad import documents
+
+        return documents.solve(str(GOLDEN_FILES[pid])).sheets()
     return geomcad.solve(pid).sheets()
 
 
-@pytest.mark.parametrize("pid", geomcad.problem_ids())
+@pytest.mark.parametrize("pid", KEYS)
 def test_golden_sheets(pid: str, update_golden: bool) -> None:
     sheets = _sheets(pid)
     assert sheets, f"{pid} draws no sheet"
@@ -136,7 +147,7 @@ def test_golden_sheets(pid: str, update_golden: bool) -> None:
 
 def test_every_golden_file_belongs_to_a_sheet() -> None:
     """A stale golden file (a renamed sheet or problem) would otherwise be compared with nothing."""
-    expected = {golden_name(pid, name) for pid in geomcad.problem_ids() for name, _ in _sheets(pid)}
+    expected = {golden_name(pid, name) for pid in KEYS for name, _ in _sheets(pid)}
     stale = sorted(p.name for p in GOLDEN_DIR.glob("*.svg") if p.name not in expected)
     assert not stale, f"golden files without a sheet: {stale}; delete them"
 
