@@ -325,3 +325,16 @@ def test_animate_a_linkage_file(name: str, tmp_path: Path) -> None:
     lk = frames.data.linkage
     r = fr.points[lk.joint] - fr.points[lk.pivot]
     assert np.allclose(np.hypot(r[:, 0], r[:, 1]), lk.length, rtol=1e-12)
+
+
+@pytest.mark.parametrize("path", LINKAGES, ids=lambda p: p.stem)
+def test_the_file_s_groups_are_the_assur_groups_of_its_scheme(path: Path) -> None:
+    """geomcad.structure decomposes the scheme the file builds into the file's own groups."""
+    from geomcad.structure import assur_groups
+
+    s = solve(parse(load(path)))
+    dec = assur_groups(s.scheme, ["1"])
+    assert [tuple(int(i) for i in g.links) for g in dec.groups] == [
+        g.links for g in s.linkage.groups
+    ]
+    assert all(g.group_class == 2 and g.order == 2 for g in dec.groups)
