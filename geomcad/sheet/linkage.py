@@ -27,7 +27,7 @@ from geomcad.linkage.sweep import output_coordinate, sweep
 from geomcad.sheet import Drawing, TitleBlock, fmt_number, gost_scale_to_fit, start
 from geomcad.sheet.graph import Axis, Graph, nice_step
 from geomcad.sheet.motion import Frames, turn
-from geomcad.sheet.plans import draw_plan, plan_scale
+from geomcad.sheet.plans import LINE_OVER_MM, draw_plan, plan_scale
 from geomcad.sheet.scale import Scale
 from geomcad.sheet.scheme import Body, draw_scheme
 
@@ -70,7 +70,10 @@ def _grid(box: Box, n: int, content: tuple[float, float] = (1.0, 1.0)) -> tuple[
     cw_, ch_ = (max(c, 1e-300) for c in content)
     cols = max(
         range(1, n + 1),
-        key=lambda c: min((w / c - 6.0) / cw_, (h / math.ceil(n / c) - TITLE_ROOM - 6.0) / ch_),
+        key=lambda c: min(
+            (w / c - 2 * LINE_OVER_MM) / cw_,
+            (h / math.ceil(n / c) - TITLE_ROOM - 2 * LINE_OVER_MM) / ch_,
+        ),
     )
     rows = math.ceil(n / cols)
     cw, ch = w / cols, h / rows
@@ -87,7 +90,10 @@ def _content(plans: Sequence[Plan]) -> tuple[float, float]:
 
 
 def _inner(cell: Box, title: float = TITLE_ROOM) -> tuple[float, float]:
-    return cell[2] - cell[0] - 6.0, cell[3] - cell[1] - title - 6.0
+    """The room a plan's points have in a cell: clear of its title, and of its neighbours by the
+    length its construction lines run past the points (:data:`LINE_OVER_MM`) on each side."""
+    margin = 2.0 * LINE_OVER_MM
+    return cell[2] - cell[0] - margin, cell[3] - cell[1] - title - margin
 
 
 def _common_scale(plans: Sequence[Plan], cells: Sequence[Box]) -> Scale:
