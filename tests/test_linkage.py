@@ -338,3 +338,31 @@ def test_the_file_s_groups_are_the_assur_groups_of_its_scheme(path: Path) -> Non
         g.links for g in s.linkage.groups
     ]
     assert all(g.group_class == 2 and g.order == 2 for g in dec.groups)
+
+
+@pytest.mark.parametrize("path", LINKAGES, ids=lambda p: p.stem)
+def test_every_plan_vector_joins_its_points_and_the_plans_close(path: Path) -> None:
+    """Each recorded plan vector is head − tail, and each absolute vector from the pole equals
+    the sum of the known and found vectors along its vector equation (the polygon closes)."""
+    lk = parse(load(path))
+    P = construct(lk, 0.9)
+    for plan in (P.vp, P.ap):
+        for v in plan.vectors:
+            step = P.c[v.step]
+            assert step == plan.points[v.head] - plan.points[v.tail]
+        for line in plan.lines:  # each solved point lies on both of its lines
+            solved = line.step.rsplit(":", 1)[0]
+            q = plan.points[solved]
+            assert abs(line.line.side(q)) <= 1e-9 * max(1.0, q.norm)
+    for g in lk.groups:
+        if g.kind == "RRR":  # V_B = V_A + V_BA and a_B = a_A + a^n_BA + a^τ_BA
+            e, j = plan_points(P, g.ends[0]), plan_points(P, g.joint)
+            vb = P.vp[e] + P.vp.between(e, j)
+            assert vb == P.vel[g.joint]
+            n = f"n_{g.joint}{g.ends[0]}"
+            ab = P.ap[e] + P.ap.between(e, n) + P.ap.between(n, j)
+            assert (ab - P.acc[g.joint]).norm <= 1e-12 * max(1.0, ab.norm)
+
+
+def plan_points(P: Any, name: str) -> str:
+    return P.pn(name)
