@@ -366,3 +366,113 @@ def test_every_plan_vector_joins_its_points_and_the_plans_close(path: Path) -> N
 
 def plan_points(P: Any, name: str) -> str:
     return P.pn(name)
+
+
+# Unusual but valid files: a guide on the crank, an RPR pivoting on a moving joint with offset,
+# a slanted PRP, a group attached through an along = 0 point of another link.
+ODD: dict[str, dict[str, Any]] = {
+    "guide_on_crank": {
+        "frame": {"O": [0, 0], "C": [0.25, 0.05]},
+        "drive": {"pivot": "O", "joint": "A", "length": 0.1, "omega": -7, "positions": 8},
+        "group": [
+            {
+                "kind": "RRP",
+                "links": [2, 3],
+                "joint": "D",
+                "end": "C",
+                "length": 0.3,
+                "guide": {"link": 1, "from": "O", "toward": "A", "offset": 0.02},
+                "assembly": "forward",
+            }
+        ],
+    },
+    "moving_rpr_pivot": {
+        "frame": {"O": [0, 0], "C": [0.3, 0.0]},
+        "drive": {"pivot": "O", "joint": "A", "length": 0.08, "omega": 5, "phi": [10, 100, 200]},
+        "group": [
+            {
+                "kind": "RRR",
+                "links": [2, 3],
+                "joint": "B",
+                "ends": ["A", "C"],
+                "lengths": [0.3, 0.2],
+                "assembly": "right",
+            },
+            {"kind": "RPR", "links": [4, 5], "slider": "M", "pivot": "B", "offset": 0.03},
+        ],
+        "point": [{"name": "M", "link": 2, "from": "A", "toward": "B", "along": 0.1, "left": 0.02}],
+    },
+    "slanted_prp": {
+        "frame": {"O": [0, 0]},
+        "drive": {"pivot": "O", "joint": "A", "length": 0.05, "omega": 12, "positions": 6},
+        "group": [
+            {
+                "kind": "PRP",
+                "links": [2, 3],
+                "slider": "A",
+                "slot_angle": 60,
+                "guide": {"through": [0.01, -0.02], "angle": 30},
+                "point": "E",
+            }
+        ],
+        "point": [
+            {"name": "F", "link": 3, "from": "E", "toward": "A", "along": 0.05, "left": 0.01}
+        ],
+    },
+    "attach_via_point": {
+        "frame": {"O": [0, 0], "C": [0.3, 0.0], "G": [0.1, 0.35]},
+        "drive": {
+            "pivot": "O",
+            "joint": "A",
+            "length": 0.08,
+            "omega": 10,
+            "positions": 12,
+            "output": "H",
+        },
+        "group": [
+            {
+                "kind": "RRR",
+                "links": [2, 3],
+                "joint": "B",
+                "ends": ["A", "C"],
+                "lengths": [0.3, 0.22],
+                "assembly": "left",
+            },
+            {
+                "kind": "RRR",
+                "links": [4, 5],
+                "joint": "H",
+                "ends": ["K", "G"],
+                "lengths": [0.2, 0.25],
+                "assembly": "left",
+            },
+        ],
+        "point": [{"name": "K", "link": 2, "from": "A", "toward": "B", "along": 0.0}],
+    },
+}
+
+
+@pytest.mark.parametrize("name", list(ODD))
+def test_unusual_files_plans_sweep_and_derivatives_agree(name: str) -> None:
+    lk = parse(copy.deepcopy(ODD[name]))
+    s = solve(lk)
+    st = sweep(lk, [P.phi for P in s.positions])
+    w, L = lk.omega, lk.length
+    for i, P in enumerate(s.positions):
+        for n in moving_points(lk):
+            assert np.allclose(P.vel[n].array(), st.vel[n][i], rtol=0, atol=1e-12 * abs(w) * L)
+            assert np.allclose(P.acc[n].array(), st.acc[n][i], rtol=0, atol=1e-12 * w * w * L)
+    phi, h = np.linspace(0.3, 6.5, 17), 1e-4
+    a = sweep(lk, phi)
+    pm, p0, pp = (sweep(lk, phi + k * h, order=0) for k in (-1.0, 0.0, 1.0))
+    for n in moving_points(lk):
+        dv = (pp.pos[n] - pm.pos[n]) / (2 * h) * w
+        da = (pp.pos[n] - 2 * p0.pos[n] + pm.pos[n]) / (h * h) * w * w
+        assert np.allclose(a.vel[n], dv, rtol=0, atol=1e-6 * abs(w) * L)
+        assert np.allclose(a.acc[n], da, rtol=0, atol=1e-5 * w * w * L)
+
+
+def test_slanted_prp_stroke() -> None:
+    cyc = cycle(parse(copy.deepcopy(ODD["slanted_prp"])))
+    assert cyc is not None
+    assert cyc.stroke == pytest.approx(2 * 0.05 / math.sin(math.radians(60.0)), rel=1e-12)
