@@ -67,10 +67,12 @@ MOVING_GUIDE_KEYS = ("link", "from", "toward", "offset")
 #: A length of a link, a radius: more than this fraction of the mechanism's size and less than
 #: this many times it is a sensible drawing. Lengths are checked against absolute bounds only.
 MAX_LENGTH = 1.0e4  # m
-MIN_LENGTH = 1.0e-6  # m: a link shorter than a micrometre is a typing error
+MIN_LENGTH = 1.0 / 1_000_000  # m: a link shorter than a micrometre is a typing error
 MAX_OMEGA = 1.0e5  # rad/s
-MIN_OMEGA = 1.0e-6  # rad/s
+MIN_OMEGA = 1.0 / 1_000_000  # rad/s
 MAX_POSITIONS = 360
+#: A slot closer than this (the sine of its angle) to the guide's direction runs along it.
+MIN_SLOT_SIN = math.sin(math.radians(0.01))
 MAX_MASS = 1.0e7  # kg
 MAX_FORCE = 1.0e9  # N or N·m
 
@@ -617,7 +619,7 @@ def _group(i: int, t: Mapping[str, Any], owner: dict[str, int], used: set[int]) 
     slider = _name(where, t, "slider")
     _known(where, slider, owner, "slider")
     slot = _number(t, "slot_angle", where, default=90.0, ge=-360.0, le=360.0, unit="°")
-    if abs(math.sin(math.radians(slot))) < 1.0e-6:
+    if abs(math.sin(math.radians(slot))) < MIN_SLOT_SIN:
         raise FileKeyError(
             where, slot, "slot_angle: the slot must not run along the guide (0° or 180°)"
         )

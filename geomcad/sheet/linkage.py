@@ -18,6 +18,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from geomcad import tol
 from geomcad.geom import Vec
 from geomcad.kinematics.plan import Plan
 from geomcad.linkage.model import Linkage
@@ -67,7 +68,7 @@ def _grid(box: Box, n: int, content: tuple[float, float] = (1.0, 1.0)) -> tuple[
     content of ``content`` = (width, height) (model units, each cell alike) the largest."""
     x0, y0, x1, y1 = box
     w, h = x1 - x0, y1 - y0
-    cw_, ch_ = (max(c, 1e-300) for c in content)
+    cw_, ch_ = (c if c > 0.0 else 1.0 for c in content)  # a plan all at its pole
     cols = max(
         range(1, n + 1),
         key=lambda c: min(
@@ -136,7 +137,7 @@ def layout(s: Solved) -> Layout:
     k_v = _common_scale([P.vp for P in s.positions], cells)
     lk = s.linkage
     accel = tuple(
-        next((P for P in s.positions if abs(P.phi - phi) < 1e-12), None) or construct(lk, phi)
+        next((P for P in s.positions if abs(P.phi - phi) <= tol.ANGLE), None) or construct(lk, phi)
         for phi in s.accel_phis
     )
     acells = _grid(APLANS, len(accel), _content([P.ap for P in accel]))
@@ -199,7 +200,7 @@ def _bodies(lk: Linkage, P: Position) -> dict[str, list[Body]]:
         pts = [P.pos[n] for n in lk.points_on(link)]
         uniq: list[Vec] = []
         for q in pts:
-            if not any(q.dist(u) < 1e-9 * max(1.0, q.norm) for u in uniq):
+            if not any(q.dist(u) <= tol.DERIVED * max(1.0, q.norm) for u in uniq):
                 uniq.append(q)
         g = lk.group_of(link)
         if g is not None and g.kind == "RPR" and link == g.links[1]:
@@ -421,7 +422,7 @@ def _turns(lk: Linkage, link: int) -> bool:
 
 
 #: Values below this fraction of their quantity's scale print as 0 (round-off of a zero).
-ZERO = 1.0e-9
+ZERO = tol.DERIVED
 
 
 def _num(x: float, scale: float) -> str:
