@@ -50,3 +50,7 @@ QUAD_REL = 1e-12
 #: Conditioning of a kinetostatic system: a singular value below this fraction of the largest
 #: one makes the reactions indeterminate (a dead position, a load with no arm).
 KINETOSTATIC_RANK = 1e-9
+
+#: The nearest point of a convex zone (scipy SLSQP on a squared distance): the optimiser's
+#: function tolerance, relative to the squared size of the figure.
+QP_FTOL = 1e-16

@@ -14,7 +14,11 @@ The laws (the usual names of the textbooks):
   continuous, S″ jumps (soft impacts, «мягкие удары»);
 - ``harmonic`` (cosine): s = (1 − cos πu)/2; S″ jumps at the ends;
 - ``cycloidal`` (sine acceleration): s = u − sin(2πu)/(2π); S, S′, S″ all continuous;
-- ``poly345``: s = 10u³ − 15u⁴ + 6u⁵; S, S′, S″ all continuous.
+- ``poly345``: s = 10u³ − 15u⁴ + 6u⁵; S, S′, S″ all continuous;
+- ``modified_trapezoid``: the acceleration rises along a quarter sine over u ∈ [0, 1/8], stays
+  at its peak to 3/8, falls along a half sine through 0 at 1/2 to the negative peak at 5/8,
+  stays there to 7/8 and returns along a quarter sine; its peak s″ = 1/0.20458 ≈ 4.888 is the
+  lowest of the smooth laws here. S, S′, S″ all continuous.
 
 A :class:`CamProgram` is the sequence of phases as data. Before φ = 0 and after its last phase
 the follower rests at the level it has there (a dwell). At a phase boundary a law may jump in S′
@@ -40,7 +44,14 @@ Side = Literal["left", "right"]
 PhaseKind = Literal["rise", "dwell", "return"]
 
 #: The law names, as the interface's ``law`` choice spells them.
-LAWS: tuple[str, ...] = ("linear", "constant_acceleration", "harmonic", "cycloidal", "poly345")
+LAWS: tuple[str, ...] = (
+    "linear",
+    "constant_acceleration",
+    "harmonic",
+    "cycloidal",
+    "poly345",
+    "modified_trapezoid",
+)
 
 #: Russian names of the laws, for sheets.
 LAW_TITLES_RU: dict[str, str] = {
@@ -49,6 +60,7 @@ LAW_TITLES_RU: dict[str, str] = {
     "harmonic": "косинусоидальный (гармонический)",
     "cycloidal": "синусоидальный (циклоидальный)",
     "poly345": "полином 3-4-5",
+    "modified_trapezoid": "модифицированная трапеция",
 }
 
 #: Inner points u of a phase where a law's S″ jumps (besides the phase ends).
@@ -94,7 +106,52 @@ def normalised(law: str, u: npt.ArrayLike) -> tuple[FloatArray, FloatArray, Floa
             30.0 * uu**2 * (1.0 - uu) ** 2,
             60.0 * uu * (1.0 - 3.0 * uu + 2.0 * uu**2),
         )
+    if law == "modified_trapezoid":
+        return _modified_trapezoid(uu)
     raise ParameterError("law", law, f"must be one of {', '.join(LAWS)}")
+
+
+def _mt_knots() -> tuple[float, list[tuple[float, float]]]:
+    """The modified trapezoid's peak acceleration A and (s, s′) at u = 0, 1/8, 3/8, 5/8, 7/8,
+    integrated piece by piece in closed form (w = 4π): A follows from s(1) = 1."""
+    w = 4.0 * math.pi
+    # (s, s′) per unit A, knot by knot
+    v1, s1 = 1.0 / w, 1.0 / (8.0 * w) - 1.0 / w**2
+    v2, s2 = v1 + 0.25, s1 + v1 / 4.0 + 1.0 / 32.0
+    v3, s3 = v2, s2 + v2 / 4.0 + 2.0 / w**2
+    v4, s4 = v3 - 0.25, s3 + v3 / 4.0 - 1.0 / 32.0
+    s5 = s4 + v4 / 8.0 - 1.0 / w**2
+    a = 1.0 / s5
+    return a, [(0.0, 0.0), (a * s1, a * v1), (a * s2, a * v2), (a * s3, a * v3), (a * s4, a * v4)]
+
+
+def _modified_trapezoid(u: FloatArray) -> tuple[FloatArray, FloatArray, FloatArray]:
+    a, knots = _mt_knots()
+    w = 4.0 * math.pi
+    starts = (0.0, 0.125, 0.375, 0.625, 0.875)
+    k = np.clip(np.searchsorted(starts, u, side="right") - 1, 0, 4)
+    t = u - np.asarray(starts)[k]
+    s0 = np.asarray([kn[0] for kn in knots])[k]
+    v0 = np.asarray([kn[1] for kn in knots])[k]
+    wt = w * t
+    # per piece: a″ = A sin wt, A, A cos wt, −A, −A cos wt
+    dds = np.select(
+        [k == 0, k == 1, k == 2, k == 3],
+        [a * np.sin(wt), np.full_like(t, a), a * np.cos(wt), np.full_like(t, -a)],
+        -a * np.cos(wt),
+    )
+    ds = v0 + np.select(
+        [k == 0, k == 1, k == 2, k == 3],
+        [a * (1.0 - np.cos(wt)) / w, a * t, a * np.sin(wt) / w, -a * t],
+        -a * np.sin(wt) / w,
+    )
+    s = s0 + v0 * t + np.select(
+        [k == 0, k == 1, k == 2, k == 3],
+        [a * (t / w - np.sin(wt) / w**2) - v0 * t, a * t**2 / 2.0, a * (1.0 - np.cos(wt)) / w**2,
+         -a * t**2 / 2.0],
+        -a * (1.0 - np.cos(wt)) / w**2,
+    )  # fmt: skip
+    return s, ds, dds
 
 
 @dataclass(frozen=True)
