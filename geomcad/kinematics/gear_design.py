@@ -15,8 +15,9 @@ For z1, z2, the module m, the basic rack (GOST 13755) and the shifts x1, x2:
 
 The blocking contour's limits, each an error naming the check: no undercut
 (x ≥ h_a*·(z_min − z)/z_min with z_min = 2h_a*/sin²α rounded to a whole number, the textbook's
-x ≥ (17 − z)/17), no interference (the active profile starts above the limit circle of the
-generated involute), tip thickness s_a ≥ s_a_min·m (0.25 by default), ε_α ≥ ε_min (1.2).
+x ≥ (17 − z)/17), tip thickness s_a ≥ s_a_min·m (0.25 by default; ≤ 0 is a pointed tooth), no
+interference (the active profile starts above the limit circle of the generated involute),
+ε_α ≥ ε_min (1.2).
 
 Shift rules: ``no_undercut`` (the smallest shifts ≥ 0 without undercut), ``equal_sliding``
 (x1 + x2 = x_Σ split so that |λ1| = |λ2|, brentq), ``max_contact_ratio`` (the largest ε_α inside
@@ -185,6 +186,13 @@ def violations(
                 (STEP_UNDERCUT, f"x{i} = {x:.4g} < (z_min − z{i})/z_min = {xm:.4g}: gear {i} "
                  f"(z{i} = {g.z}) is undercut")
             )  # fmt: skip
+    for i, g in enumerate((p.gear1, p.gear2), start=1):
+        if g.s_a < sa_min * p.m:
+            what = "pointed" if g.s_a <= 0.0 else "too thin at the tip"
+            out.append(
+                (STEP_TIP, f"gear {i}'s tooth is {what}: s_a{i} = {g.s_a:.4g} m < "
+                 f"{sa_min:g}·m = {sa_min * p.m:.4g} m")
+            )  # fmt: skip
     d_p1, d_p2 = p.active_start()
     for i, (g, N, d_p) in enumerate(((p.gear1, p.N1a, d_p1), (p.gear2, p.N2b, d_p2)), start=1):
         other = 2 if i == 1 else 1
@@ -199,13 +207,6 @@ def violations(
             out.append(
                 (STEP_INTERFERENCE, f"gear {i}'s active profile would start on d = {d_p:.6g} m, "
                  f"below its limit circle d_l = {d_l:.6g} m (the fillet): interference")
-            )  # fmt: skip
-    for i, g in enumerate((p.gear1, p.gear2), start=1):
-        if g.s_a < sa_min * p.m:
-            what = "pointed" if g.s_a <= 0.0 else "too thin at the tip"
-            out.append(
-                (STEP_TIP, f"gear {i}'s tooth is {what}: s_a{i} = {g.s_a:.4g} m < "
-                 f"{sa_min:g}·m = {sa_min * p.m:.4g} m")
             )  # fmt: skip
     if not out and p.eps_alpha < eps_min:
         out.append((STEP_EPS, f"ε_α = {p.eps_alpha:.4g} < {eps_min:g}"))

@@ -1,0 +1,245 @@
+"""Cam and gear design files (examples/*.toml): each number against an independent computation
+(closed forms on dense grids, the cam library's own pressure angle, the rack generation, Willis),
+and bad input as one error line naming the step, through the CLI."""
+
+from __future__ import annotations
+
+import math
+from fractions import Fraction
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from geomcad import documents
+from geomcad.cli import main
+from geomcad.kinematics import cam_design as cd
+from geomcad.kinematics.cams import Follower, cam_profile, pressure_angle_max
+from geomcad.kinematics.gears import SpurGear, inv
+from geomcad.kinematics.motion_laws import CamProgram, Phase
+
+EX = Path(__file__).resolve().parent.parent / "examples"
+ALL = ["cam-translating-roller", "cam-rocking-roller", "cam-flat", "gear-pair", "planetary"]
+
+
+def solve(name: str, *sets: tuple[str, str]) -> dict[str, object]:
+    return documents.solve(str(EX / f"{name}.toml"), list(sets)).results
+
+
+def program(phases: list[tuple[str, float, str]], H: float) -> CamProgram:
+    return CamProgram.of(
+        H, [Phase(k, math.radians(a), law) for k, a, law in phases]  # type: ignore[arg-type]
+    ).full_turn()
+
+
+# -- cams --------------------------------------------------------------------------------------------
+
+TRANS = [("rise", 120.0, "cycloidal"), ("dwell", 40.0, "linear"), ("return", 100.0, "poly345")]
+
+
+def test_translating_roller_centre_is_on_the_allowed_pressure_angles() -> None:
+    r = solve("cam-translating-roller")
+    prog = program(TRANS, 0.03)
+    # at r0_min and e the cam library's own pressure angle reaches 30° on the rise, 45° back
+    s0 = math.sqrt(float(r["r0_min"]) ** 2 - float(r["e"]) ** 2)  # type: ignore[arg-type]
+    phi = np.linspace(0.0, 2.0 * math.pi, 400001)
+    m = prog.motion(phi)
+    a = np.degrees(np.arctan2(m.S1 - float(r["e"]), s0 + m.S))  # type: ignore[arg-type]
+    back = (phi > math.radians(160)) & (phi < math.radians(260))
+    assert np.max(np.abs(a[~back])) == pytest.approx(30.0, abs=1e-6)
+    assert np.max(np.abs(a[back])) == pytest.approx(45.0, abs=1e-6)
+    # no centre nearer B0 keeps both: a grid of offsets, each at the least s0 it allows
+    t30, t45 = math.tan(math.radians(30)), math.tan(math.radians(45))
+    best = math.inf
+    for e in np.linspace(-0.02, 0.02, 801):
+        need = np.where(back, np.abs(m.S1 - e) / t45, np.abs(m.S1 - e) / t30) - m.S
+        best = min(best, math.hypot(e, float(np.max(need))))
+    assert float(r["r0_min"]) <= best + 1e-9  # type: ignore[arg-type]
+    assert best - float(r["r0_min"]) < 2e-5  # type: ignore[arg-type]
+    assert r["r0"] == pytest.approx(0.027)
+    # the built cam (r0 rounded up): the library's pressure angle stays within the allowed ones
+    assert float(r["pressure_angle_max_rise_deg"]) <= 30.0  # type: ignore[arg-type]
+    assert float(r["pressure_angle_max_deg"]) <= 45.0  # type: ignore[arg-type]
+    f = Follower("roller", 0.027, float(r["e"]), float(r["r_roller"]), 1)  # type: ignore[arg-type]
+    prof = cam_profile(prog, f, closed=True)
+    assert math.degrees(pressure_angle_max(prog, prof)) == pytest.approx(
+        float(r["pressure_angle_max_deg"]), abs=1e-6  # type: ignore[arg-type]
+    )
+    assert float(r["r_roller"]) < float(r["rho_pitch_min"])  # type: ignore[arg-type]
+
+
+def test_central_follower_r0_min_is_the_closed_form() -> None:
+    r = solve("cam-translating-roller", ("cam.offset", "0"))
+    H, rise = 0.03, math.radians(120)
+    u = np.linspace(0.0, 1.0, 200001)
+    S = H * (u - np.sin(2 * np.pi * u) / (2 * np.pi))
+    S1 = H / rise * (1 - np.cos(2 * np.pi * u))
+    need_rise = np.max(S1 / math.tan(math.radians(30)) - S)
+    ret = math.radians(100)
+    S_r = H * (1 - (10 * u**3 - 15 * u**4 + 6 * u**5))
+    S1_r = -H / ret * 30 * u**2 * (1 - u) ** 2
+    need_ret = np.max(np.abs(S1_r) / math.tan(math.radians(45)) - S_r)
+    assert r["e"] == 0.0
+    assert r["r0_min"] == pytest.approx(max(need_rise, need_ret), rel=1e-8)
+
+
+def test_rocking_roller_is_on_the_allowed_angle_and_no_nearer_centre_is() -> None:
+    r = solve("cam-rocking-roller")
+    prog = program(
+        [("rise", 110.0, "poly345"), ("dwell", 30.0, "linear"),
+         ("return", 110.0, "modified_trapezoid")],
+        math.radians(20),
+    )  # fmt: skip
+    geom = cd.RockerGeometry(0.1, math.radians(20), -1)
+    zone = cd.rocker_zone(prog, geom, math.radians(35), math.radians(45))
+    O = np.array(zone.nearest())
+    assert float(np.hypot(*O)) == pytest.approx(float(r["r0_min"]), rel=1e-12)  # type: ignore[arg-type]
+    phi = np.linspace(0.0, 2.0 * math.pi, 200001)
+    back = (phi > math.radians(140)) & (phi < math.radians(250))
+
+    def worst(q: np.ndarray) -> tuple[float, float]:
+        a = np.degrees(cd.rocker_pressure(prog, geom.A - q, 0.1, math.radians(20), -1, phi))
+        return float(np.max(a[~back])), float(np.max(a[back]))
+
+    rise, ret = worst(O)
+    assert max(rise - 35.0, ret - 45.0) == pytest.approx(0.0, abs=1e-3)
+    assert rise <= 35.0 + 1e-3 and ret <= 45.0 + 1e-3
+    # a centre 0.2 % nearer B0, in any direction, breaks an allowed angle
+    for ang in np.linspace(0.0, 2.0 * math.pi, 24, endpoint=False):
+        q = O * 0.998 + 0.0 * ang
+        q = q + 0.0005 * float(np.hypot(*O)) * np.array([math.cos(ang), math.sin(ang)])
+        if np.hypot(*q) < np.hypot(*O) * 0.999:
+            rr, rt = worst(q)
+            assert rr > 35.0 or rt > 45.0
+    assert r["r0"] == pytest.approx(0.028)
+    assert float(r["pressure_angle_max_rise_deg"]) <= 35.0  # type: ignore[arg-type]
+    assert float(r["pressure_angle_max_return_deg"]) <= 45.0  # type: ignore[arg-type]
+
+
+def test_rocker_with_a_given_pivot_distance_keeps_it() -> None:
+    r = solve("cam-rocking-roller", ("cam.pivot_distance", "0.12"))
+    assert r["a_w"] == pytest.approx(0.12, rel=1e-12)
+    assert float(r["r0"]) >= float(r["r0_min"])  # type: ignore[arg-type]
+    assert float(r["pressure_angle_max_rise_deg"]) <= 35.0  # type: ignore[arg-type]
+
+
+def test_flat_face_r0_min_is_the_convexity_closed_form() -> None:
+    r = solve("cam-flat")
+    H, rise, ret = 0.02, math.radians(90), math.radians(90)
+    u = np.linspace(0.0, 1.0, 200001)
+    rise_v = H * (1 - np.cos(np.pi * u)) / 2 + H * np.pi**2 / (2 * rise**2) * np.cos(np.pi * u)
+    tu = 2 * np.pi * u
+    ret_v = H * (1 - (u - np.sin(tu) / (2 * np.pi))) - H / ret**2 * 2 * np.pi * np.sin(tu)
+    r0_min = 0.005 - min(float(np.min(rise_v)), float(np.min(ret_v)), 0.0)
+    assert r["r0_min"] == pytest.approx(r0_min, rel=1e-9)
+    assert r["r0"] == pytest.approx(math.ceil(r0_min * 1000) / 1000)
+    # the built profile's smallest radius of curvature: r0 − r0_min + ρ_allowed
+    assert r["rho_min"] == pytest.approx(float(r["r0"]) - r0_min + 0.005, rel=1e-6)  # type: ignore[arg-type]
+    assert r["pressure_angle_max_deg"] == 0.0
+
+
+# -- gears -------------------------------------------------------------------------------------------
+
+
+def test_gear_pair_by_gost_16532_against_independent_forms() -> None:
+    r = solve("gear-pair")
+    z1, z2, m = 12, 30, 0.005
+    x1, x2 = float(r["x1"]), float(r["x2"])  # type: ignore[arg-type]
+    al = math.radians(20)
+    aw = math.radians(float(r["alpha_w_deg"]))  # type: ignore[arg-type]
+    a_w = float(r["a_w"])  # type: ignore[arg-type]
+    # zero backlash on the rolling circles, by the involute thickness of each wheel
+    g1, g2 = SpurGear(m, z1, x1), SpurGear(m, z2, x2)
+    d_w1, d_w2 = 2 * a_w * z1 / (z1 + z2), 2 * a_w * z2 / (z1 + z2)
+    assert g1.thickness(d_w1) + g2.thickness(d_w2) == pytest.approx(math.pi * d_w1 / z1, rel=1e-9)
+    assert a_w * math.cos(aw) == pytest.approx(m * (z1 + z2) / 2 * math.cos(al), rel=1e-12)
+    dy = x1 + x2 - (a_w - m * (z1 + z2) / 2) / m
+    assert r["d_a1"] == pytest.approx(m * (z1 + 2 + 2 * x1 - 2 * dy), rel=1e-12)
+    assert r["d_a2"] == pytest.approx(m * (z2 + 2 + 2 * x2 - 2 * dy), rel=1e-12)
+    # s_a off the rack-generated tooth: its tip corner's half-angle times d_a
+    for d_a, x, z, key in ((r["d_a1"], x1, z1, "s_a1"), (r["d_a2"], x2, z2, "s_a2")):
+        g = SpurGear(m, z, x, d_a=float(d_a))  # type: ignore[arg-type]
+        assert float(d_a) * g.flank(50).tip_to == pytest.approx(float(r[key]), rel=1e-9)  # type: ignore[arg-type]
+    ta = [
+        math.tan(math.acos(m * z * math.cos(al) / float(d)))  # type: ignore[arg-type]
+        for z, d in ((z1, r["d_a1"]), (z2, r["d_a2"]))
+    ]
+    eps = (z1 * ta[0] + z2 * ta[1] - (z1 + z2) * math.tan(aw)) / (2 * math.pi)
+    assert r["eps_alpha"] == pytest.approx(eps, rel=1e-12)
+    assert r["eps_alpha_drawn"] == pytest.approx(eps, rel=1e-4)
+    assert r["lambda1_max"] == pytest.approx(r["lambda2_max"], rel=1e-9)
+    assert x1 + x2 == pytest.approx((17 - 12) / 17, rel=1e-12)
+    assert inv(aw) == pytest.approx(2 * (x1 + x2) * math.tan(al) / (z1 + z2) + inv(al), rel=1e-12)
+
+
+def test_shift_rules() -> None:
+    r = solve("gear-pair", ("gears.pair.shift", "no_undercut"))
+    assert (r["x1"], r["x2"]) == (pytest.approx(5 / 17), 0.0)
+    r = solve("gear-pair", ("gears.pair.shift", "max_contact_ratio"))
+    base = solve("gear-pair", ("gears.pair.shift", "no_undercut"))
+    assert float(r["eps_alpha"]) >= float(base["eps_alpha"])  # type: ignore[arg-type]
+    assert float(r["x1"]) >= 5 / 17 - 1e-9 and float(r["x2"]) >= -13 / 17 - 1e-9  # type: ignore[arg-type]
+    assert float(r["s_a1"]) >= 0.25 * 0.005 - 1e-12  # type: ignore[arg-type]
+
+
+def test_planetary_tooth_numbers() -> None:
+    r = solve("planetary")
+    z1, z2, z3, z4 = r["z"]  # type: ignore[misc]
+    assert z1 + z2 == z4 - z3  # coaxiality
+    u = 1 + Fraction(z2 * z4, z1 * z3)  # Willis: u_1H = 1 − u_14^(H)
+    assert r["u"] == pytest.approx(float(u), rel=1e-15)
+    assert r["u_error"] == pytest.approx((float(u) - 12.5) / 12.5, rel=1e-12)
+    assert abs(float(r["u_error"])) <= 0.02  # type: ignore[arg-type]
+    assert (z2 + z1) * math.sin(math.pi / 3) > max(z2, z3) + 2  # neighbours
+    assert min(z1, z2, z3) >= 17
+
+
+def test_planetary_scheme_a_is_the_smallest_by_brute_force() -> None:
+    r = solve("planetary", ("gears.planetary.scheme", "A"), ("gears.planetary.ratio", "5.6"))
+    z1, z2, z3 = r["z"]  # type: ignore[misc]
+    smallest = min(
+        c
+        for a in range(17, 60)
+        for b in range(17, 60)
+        for c in [a + 2 * b]
+        if abs(1 + c / a - 5.6) <= 0.02 * 5.6
+        and (a + c) % 3 == 0
+        and (a + b) * math.sin(math.pi / 3) > b + 2
+    )
+    assert z3 == smallest == z1 + 2 * z2
+
+
+# -- bad input through the CLI -----------------------------------------------------------------------
+
+BAD = [
+    ("cam-translating-roller", "cam.pressure_angle_deg=95", "pressure_angle_deg"),
+    ("cam-translating-roller", "cam.r0=0.02", "r0 = r0_min"),
+    ("cam-translating-roller", "cam.roller_radius=0.03", "phase 1"),
+    ("cam-rocking-roller", "cam.pressure_angle_deg=8", "zone"),
+    ("cam-flat", "cam.phases.1.law=linear", "envelope of the face lines"),
+    ("cam-flat", "cam.stroke=-1", "cam.stroke"),
+    ("gear-pair", "gears.pair.shift=max", "gears.pair.shift"),
+    ("planetary", "gears.planetary.ratio=200", "tooth numbers"),
+]
+
+
+@pytest.mark.parametrize(("name", "setting", "words"), BAD)
+def test_bad_input_is_one_error_line(
+    capsys: pytest.CaptureFixture[str], name: str, setting: str, words: str
+) -> None:
+    code = main(["solve", str(EX / f"{name}.toml"), "--set", setting])
+    out, err = capsys.readouterr()
+    assert code == 2 and out == ""
+    lines = err.splitlines()
+    assert len(lines) == 1 and lines[0].startswith("error: "), err
+    assert words in lines[0], err
+
+
+def test_pointed_teeth_are_refused(capsys: pytest.CaptureFixture[str]) -> None:
+    sets = ["gears.pair.shift=given", "gears.pair.x1=1.2", "gears.pair.x2=0"]
+    argv = ["solve", str(EX / "gear-pair.toml")]
+    for s in sets:
+        argv += ["--set", s]
+    code = main(argv)
+    _, err = capsys.readouterr()
+    assert code == 2 and "pointed" in err and "tip thickness" in err
