@@ -412,7 +412,7 @@ def rocker_on_circle(zone: RockerZone, a_w: float) -> tuple[float, float]:
     """The zone's point on the circle (A, a_w) nearest B0 (the origin): the arcs of the circle
     inside the zone, sampled and their ends refined by brentq; none is an error."""
     A = zone.geometry.A
-    gam = np.linspace(-math.pi, math.pi, 7201)
+    gam = np.linspace(-math.pi, math.pi, 1441)
     pts = A + a_w * np.stack([np.cos(gam), np.sin(gam)], axis=-1)
     marg = np.min(zone.h[None, :] - pts @ zone.n.T, axis=1)
     ok = marg >= 0.0
