@@ -212,8 +212,11 @@ def _round_up(x: float, step: float, strict: bool = False) -> float:
 def _division_motion(program: CamProgram, n: int) -> Motion:
     """The division points: n equal parts of every rise and return, and the ends of every phase."""
     pts: list[float] = []
+    step = min(ph.angle for ph in program.phases if ph.kind != "dwell") / n
     for ph, a0 in zip(program.phases, program.boundaries[:-1], strict=True):
-        parts = 1 if ph.kind == "dwell" else n
+        # dwells in parts of about the same size, so the graphical differentiation's chords
+        # stay short there too
+        parts = max(1, round(ph.angle / step)) if ph.kind == "dwell" else n
         pts += [float(a0) + ph.angle * i / parts for i in range(parts)]
     pts.append(2.0 * math.pi)
     return program.motion(np.asarray(pts))

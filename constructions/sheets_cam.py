@@ -1,13 +1,378 @@
-"""The cam design sheet (A1)."""
+"""The cam design sheet (A1 landscape).
+
+Left: the follower's law over the turn — S (ψ for a rocker), its first and second velocity
+analogues, each exact (solid) with the graphical differentiation by chords beside it (dashed, its
+points at the middles of the intervals between the division points) — and the pressure angle
+over the turn with the allowed angles. Middle: the diagram the cam's size comes from — S against
+−σS′ with the zone's boundary rays (translating), the arm's positions, the points C and the
+active rays (rocker), S against S″ with the 45° tangent (flat face) — with B0, the zone's point
+O_min and the chosen centre O. Right: the profile by inversion at a GOST scale with the base
+circle, the pitch curve, the follower turned back to the division points and the radius vectors;
+under it the tables of the data and the results.
+"""
 
 from __future__ import annotations
 
-from typing import Any
+import math
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+
+from geomcad.geom import Vec
+from geomcad.kinematics import cam_design as cd
+from geomcad.kinematics.cams import CamProfile, Follower, at_angles, invert
+from geomcad.kinematics.motion_laws import LAW_TITLES_RU, Motion
+from geomcad.sheet import Drawing, Scale, TitleBlock, fmt_number, gost_scale_to_fit, start
+from geomcad.sheet.graph import Axis, Graph
+
+if TYPE_CHECKING:
+    from geomcad.problem import Solution
+
+    from .file_cam import CamDesign
+
+MM = 1000.0
+#: The profile's field (sheet mm: x0, y0, x1, y1).
+PROFILE = (575.0, 30.0, 830.0, 520.0)
+#: The size diagram's field.
+DIAGRAM = (330.0, 30.0, 560.0, 330.0)
+#: The law graphs: left x of the data origin, room width, room height of each graph.
+GRAPH_X, GRAPH_W, GRAPH_H = 45.0, 250.0, 78.0
+#: The baselines (sheet y of the bottom of each graph's range) of S, S′, S″ and α.
+GRAPH_Y = (118.0, 255.0, 392.0, 545.0)
+PAD = 8.0
 
 
-def profile_k_l(des: Any) -> float:
-    return 0.001
+def profile_k_l(des: CamDesign) -> float:
+    """The largest GOST scale at which the profile (with the follower turned back) fits."""
+    x0, y0, x1, y1 = _profile_box(des)
+    return gost_scale_to_fit(
+        x1 - x0, y1 - y0, PROFILE[2] - PROFILE[0] - 2 * PAD, PROFILE[3] - PROFILE[1] - 2 * PAD
+    ).k
 
 
-def sheets(sol: Any) -> list[tuple[str, Any]]:
-    return []
+def _profile_box(des: CamDesign) -> tuple[float, float, float, float]:
+    prof = des.profile
+    pts = np.vstack([prof.contact, prof.pitch])
+    r = des.r_roller
+    xs = [float(pts[:, 0].min()) - r, float(pts[:, 0].max()) + r, -des.r0, des.r0]
+    ys = [float(pts[:, 1].min()) - r, float(pts[:, 1].max()) + r, -des.r0, des.r0]
+    if des.spec.motion == "rocking":
+        a_w = math.hypot(*des.pivot)
+        xs += [-a_w, a_w]
+        ys += [-a_w, a_w]
+    return min(xs), min(ys), max(xs), max(ys)
+
+
+def sheets(sol: Solution) -> list[tuple[str, Any]]:
+    des: CamDesign = sol.data
+    k = Scale(sol.scales["l"], "l")
+    tb = TitleBlock(
+        title="Кулачковый механизм: синтез по углу давления",
+        designation="ТММ.КП.04",
+        scale=k.ratio_text(),
+    )
+    d = start("A1", tb)
+    _laws(d, des)
+    _pressure(d, des)
+    _diagram(d, des)
+    _profile(d, des, k)
+    _tables(d, des, sol.results)
+    return [("", d.finish())]
+
+
+# -- the law and its analogues ---------------------------------------------------------------------
+
+
+def _law_values(des: CamDesign) -> tuple[float, str, str, str, str]:
+    """(factor to the drawn unit, unit of S, of S′, of S″, the symbol)."""
+    if des.spec.motion == "rocking":
+        return math.degrees(1.0), "°", "°/рад", "°/рад²", "ψ"
+    return MM, "мм", "мм", "мм", "S"
+
+
+def _laws(d: Drawing, des: CamDesign) -> None:
+    prog = des.spec.program
+    f, u0, u1, u2, sym = _law_values(des)
+    phi = np.linspace(0.0, 2.0 * math.pi, 1441)
+    m = prog.motion(phi)
+    div = des.divisions
+    # graphical differentiation by chords: the slope of each chord at its interval's middle
+    p = div.phi
+    s1_g = np.diff(div.S) / np.diff(p)
+    mid = (p[:-1] + p[1:]) / 2.0
+    s2_g = np.diff(s1_g) / np.diff(mid)
+    mid2 = (mid[:-1] + mid[1:]) / 2.0
+    rows = [
+        (f"{sym}(φ)", u0, m.S, None, None, "перемещение"),
+        (f"d{sym}/dφ", u1, m.S1, mid, s1_g, "аналог скорости"),
+        (f"d^2{sym}/dφ^2", u2, m.S2, mid2, s2_g, "аналог ускорения"),
+    ]
+    for (name, unit, exact, gx, gy, what), y0 in zip(rows, GRAPH_Y[:3], strict=True):
+        vals = exact * f
+        lo = float(min(0.0, np.min(vals), np.min(gy * f) if gy is not None else 0.0))
+        hi = float(max(np.max(vals), np.max(gy * f) if gy is not None else 0.0))
+        ax = Axis.fit("φ", "°", 0.0, 360.0, GRAPH_W).with_tick(30.0)
+        ay = Axis.fit(name, unit, lo, hi, GRAPH_H)
+        # the range's bottom on the band's baseline y0
+        g = Graph(d, ax, ay, (GRAPH_X, y0 - ay.mm(-lo)))
+        g.axes(tick_labels=True)
+        g.curve(np.degrees(phi), vals, "link")
+        if gy is not None:
+            g.curve(np.degrees(gx), gy * f, "locus")
+            for a, b in zip(np.degrees(gx), gy * f, strict=True):
+                g.point(float(a), float(b))
+        else:
+            for i, (a, b) in enumerate(zip(np.degrees(div.phi), div.S * f, strict=True)):
+                g.ordinate(float(a), float(b), str(i) if i < len(div.phi) - 1 else "")
+        top = g.box[1]
+        d.text(f"{what} {name}: точно (сплошная), графически (штриховая)" if gy is not None
+               else f"{what} {name}", (GRAPH_X - 15.0, top - 15.0), 3.5)  # fmt: skip
+        g.factors((GRAPH_X - 15.0, top - 10.0))
+    laws = ", ".join(
+        f"{ph.kind} {math.degrees(ph.angle):g}°"
+        + (f" ({LAW_TITLES_RU[ph.law]})" if ph.kind != "dwell" else "")
+        for ph in prog.phases
+    )
+    d.paragraph(f"Фазы: {laws}.", GRAPH_X - 15.0, 15.0, 270.0, 2.5)
+
+
+def _pressure(d: Drawing, des: CamDesign) -> None:
+    prof = des.profile
+    keep = ~prof.corner
+    phi = np.degrees(prof.phi[keep])
+    a = np.degrees(prof.pressure[keep])
+    amax = max(math.degrees(des.spec.alpha_rise), math.degrees(des.spec.alpha_return))
+    lo = float(min(np.min(a), -amax if np.min(a) < 0 else 0.0))
+    ax = Axis.fit("φ", "°", 0.0, 360.0, GRAPH_W).with_tick(30.0)
+    ay = Axis.fit("α", "°", lo, amax, GRAPH_H).with_tick(15.0)
+    g = Graph(d, ax, ay, (GRAPH_X, GRAPH_Y[3] - ay.mm(-lo)))
+    g.axes()
+    g.curve(phi, a, "link")
+    for ph_kind, al in (("rise", des.spec.alpha_rise), ("return", des.spec.alpha_return)):
+        v = math.degrees(al)
+        for sgn in (1.0, -1.0) if lo < 0 else (1.0,):
+            g.curve([0.0, 360.0], [sgn * v, sgn * v], "locus")
+        _ = ph_kind
+    top = g.box[1]
+    d.text("Угол давления α(φ) за оборот; штриховые – допускаемые [α] на подъёме и опускании",
+           (GRAPH_X - 15.0, top - 15.0), 3.5)  # fmt: skip
+    g.factors((GRAPH_X - 15.0, top - 10.0))
+
+
+# -- the diagram of the cam's size -------------------------------------------------------------------
+
+
+def _diagram(d: Drawing, des: CamDesign) -> None:
+    spec = des.spec
+    prog = spec.program
+    phi = np.linspace(0.0, 2.0 * math.pi, 1441)
+    m = prog.motion(phi)
+    O = Vec(*des.centre)
+    Om = Vec(*des.centre_min)
+    x0, y0, x1, y1 = DIAGRAM
+    if spec.follower == "flat":
+        pts = np.stack([m.S2, m.S], axis=-1)
+        title = "Диаграмма S(S″): условие выпуклости r0 + S + S″ > ρ"
+    elif spec.motion == "translating":
+        pts = np.stack([cd.diagram_x(spec.sigma, m.S1), m.S], axis=-1)
+        title = "Диаграмма S(−σS′) и зона допустимых центров"
+    else:
+        geom = cd.RockerGeometry(spec.arm, prog.H, spec.sigma)
+        pts = geom.C(m.S, m.S1)
+        title = "Диаграмма ψ – lψ′ (точки C) и зона допустимых центров"
+    xs = [*pts[:, 0], O.x, Om.x, 0.0]
+    ys = [*pts[:, 1], O.y, Om.y, 0.0]
+    if spec.motion == "rocking":
+        A = cd.RockerGeometry(spec.arm, prog.H, spec.sigma).A
+        xs.append(float(A[0]))
+        ys.append(float(A[1]))
+    w, h = max(xs) - min(xs), max(ys) - min(ys)
+    kl = gost_scale_to_fit(w * 1.1, h * 1.1, x1 - x0 - 2 * PAD, y1 - y0 - 2 * PAD - 10.0)
+    v = d.viewport(kl, ((max(xs) + min(xs)) / 2.0, (max(ys) + min(ys)) / 2.0),
+                   ((x0 + x1) / 2.0, (y0 + 10.0 + y1) / 2.0))  # fmt: skip
+    d.text(title, (x0, y0 - 8.0), 3.5)
+    d.text(f"{kl.label()} (M {kl.ratio_text()})", (x0, y0 - 2.5), 2.5)
+    v.polyline(list(pts), "link")
+    B0 = Vec(0.0, 0.0)
+    ext = 0.15 * h
+    if spec.follower == "flat":
+        # the 45° tangent S + S″ = ρ − r0_min and the S axis
+        c0 = spec.rho_allowed - des.r0_min
+        top = max(ys)
+        v.seg(Vec(c0 - top, top), Vec(-(O.y - ext) + c0, O.y - ext), "construction")
+        v.seg(Vec(0.0, O.y - ext), Vec(0.0, top + ext * 0.3), "centre")
+        v.dot(Vec(0.0, c0), "point")
+    elif spec.motion == "translating":
+        zone = des.zone
+        assert isinstance(zone, cd.TranslatingZone)
+        low = min(O.y, Om.y) - ext
+        for r in zone.rays:
+            start_ = Vec(r.x, r.S)
+            X_low = (low - r.c) / r.b if r.b != 0.0 else r.x
+            v.seg(start_, Vec(X_low, low), "construction")
+            v.dot(start_, "point")
+        v.seg(Vec(0.0, low), Vec(0.0, max(ys) + ext * 0.3), "centre")
+        if O.x != 0.0:
+            v.seg(Vec(O.x, O.y), Vec(O.x, 0.0), "centre")
+    else:
+        zone = des.zone
+        assert isinstance(zone, cd.RockerZone)
+        geom = zone.geometry
+        A = Vec(*geom.A)
+        div = des.divisions
+        B = geom.B(div.S)
+        C = geom.C(div.S, div.S1)
+        for i in range(len(div.phi)):
+            v.seg(A, Vec(*B[i]), "construction")
+            v.seg(Vec(*B[i]), Vec(*C[i]), "construction")
+            v.dot(Vec(*C[i]), "point")
+        slack = zone.h - zone.n @ np.array([Om.x, Om.y])
+        nrow = len(zone.phi)
+        for j in np.argsort(slack)[:2]:
+            i = int(j) % nrow
+            sgn = 1.0 if j < nrow else -1.0
+            a = math.atan(float(zone.t[i]))
+            dd = zone.down[i]
+            ray = Vec(math.cos(sgn * a) * dd[0] - math.sin(sgn * a) * dd[1],
+                      math.sin(sgn * a) * dd[0] + math.cos(sgn * a) * dd[1])  # fmt: skip
+            Ci = Vec(*zone.C[i])
+            v.seg(Ci, Ci + ray * (1.3 * float(np.hypot(*(np.array([O.x, O.y]) - zone.C[i])))),
+                  "construction")  # fmt: skip
+        Bs = geom.B(np.linspace(0.0, prog.H, 50))
+        v.polyline(list(Bs), "centre")
+        v.joint(A)
+        v.label(A, "A", prefer=(1.0, 1.0))
+        v.seg(A, O, "thin")
+    v.seg(B0, O, "result")
+    v.dot(B0, "point")
+    v.dot(Om, "point")
+    v.joint(O)
+    v.label(B0, "B_0", prefer=(-1.0, 1.0))
+    v.label(O, "O", prefer=(-1.0, -1.0))
+    if (Om - O).norm > kl.model(3.0):
+        v.label(Om, "O_{min}", prefer=(1.0, 0.0))
+    r0 = fmt_number(des.r0 * MM, digits=4)
+    d.label(v.p((O + B0) * 0.5), f"r_0 = {r0}", 2.5)
+
+
+# -- the profile -------------------------------------------------------------------------------------
+
+
+def _profile(d: Drawing, des: CamDesign, k: Scale) -> None:
+    spec = des.spec
+    x0, y0, x1, y1 = PROFILE
+    bx0, by0, bx1, by1 = _profile_box(des)
+    v = d.viewport(k, ((bx0 + bx1) / 2.0, (by0 + by1) / 2.0), ((x0 + x1) / 2.0, (y0 + y1) / 2.0))
+    d.text("Профиль кулачка (метод обращения движения)", (x0, y0 - 8.0), 3.5)
+    d.text(f"{k.label()} (M {k.ratio_text()})", (x0, y0 - 2.5), 2.5)
+    prof = des.profile
+    o = Vec(0.0, 0.0)
+    v.centre_cross(o, 6.0)
+    v.circle(o, des.r0, "centre" if spec.follower == "roller" else "construction")
+    if spec.follower == "roller":
+        v.circle(o, des.r0 - des.r_roller, "construction")
+        v.polyline(list(prof.pitch), "centre", closed=True)
+    v.polyline(list(prof.contact), "link", closed=True)
+    div = des.divisions
+    n = len(div.phi) - 1
+    if spec.motion == "translating":
+        f = Follower(spec.follower, des.r0, des.e, des.r_roller, spec.sigma)  # type: ignore[arg-type]
+        pts = at_angles(spec.program, f, div.phi[:n], 2.0 * math.pi)
+        pitch, contact = pts.pitch, pts.contact
+        if spec.follower != "flat" and des.e != 0.0:
+            v.circle(o, abs(des.e), "centre")
+        for i in range(n):
+            up = Vec(0.0, 1.0).rotated(-spec.sigma * float(div.phi[i]))
+            foot = Vec(1.0, 0.0).rotated(-spec.sigma * float(div.phi[i])) * (
+                des.e if spec.follower != "flat" else 0.0
+            )
+            v.seg(foot, Vec(*pitch[i]) + up * k.model(5.0), "construction")
+    else:
+        A = np.asarray(des.pivot)
+        m = spec.program.motion(div.phi[:n])
+        pos = _rocker_points(des, A, m)
+        pitch, contact, Ai = pos
+        v.circle(o, math.hypot(*des.pivot), "centre")
+        for i in range(n):
+            v.seg(Vec(*Ai[i]), Vec(*pitch[i]), "construction")
+            v.dot(Vec(*Ai[i]), "point")
+    for i in range(n):
+        if spec.follower == "roller":
+            v.circle(Vec(*pitch[i]), des.r_roller, "construction")
+        B = Vec(*contact[i])
+        v.seg(o, B, "construction")
+        v.dot(B, "point")
+        v.label(B, str(i), height=2.5)
+    v.label(o, "O", prefer=(-1.0, -1.0), clear=1.0)
+
+
+def _rocker_points(
+    des: CamDesign, A: np.ndarray, m: Motion
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The rocker turned back to the division points: roller centres, contact points, pivots."""
+    spec = des.spec
+    prof = cd.rocker_profile(spec.program, A, spec.arm, spec.program.H, spec.sigma, des.r_roller)
+    idx = [int(np.argmin(np.abs(prof.phi - p) + 10.0 * prof.corner)) for p in m.phi]
+    Ai = invert(np.repeat(A[None, :], len(m.phi), axis=0), m.phi, spec.sigma)
+    return prof.pitch[idx], prof.contact[idx], Ai
+
+
+# -- tables --------------------------------------------------------------------------------------------
+
+
+def _tables(d: Drawing, des: CamDesign, r: dict[str, Any]) -> None:
+    spec = des.spec
+    x, y = 330.0, 360.0
+    kinds = {"knife": "острый", "roller": "роликовый", "flat": "плоский"}
+    motion = {"translating": "поступательный", "rocking": "коромысловый"}
+    rows = [
+        ["толкатель", f"{kinds[spec.follower]}, {motion[spec.motion]}"],
+        ["вращение", "против часовой" if spec.sigma > 0 else "по часовой"],
+    ]
+    if spec.motion == "translating":
+        rows.append(["ход H", f"{fmt_number(spec.program.H * MM, digits=4)} мм"])
+    else:
+        rows.append(["размах ψ_{max}, l", f"{fmt_number(math.degrees(spec.program.H), digits=4)}°, "
+                     f"{fmt_number(spec.arm * MM, digits=4)} мм"])  # fmt: skip
+    if spec.follower != "flat":
+        rows.append(["[α] подъём / опуск.", f"{fmt_number(math.degrees(spec.alpha_rise), digits=4)}°"
+                     f" / {fmt_number(math.degrees(spec.alpha_return), digits=4)}°"])  # fmt: skip
+    else:
+        rows.append(["ρ_{min} допуск.", f"{fmt_number(spec.rho_allowed * MM, digits=4)} мм"])
+    d.text("Исходные данные", (x, y - 2.0), 3.5)
+    _, h = d.table(x, y, (45.0, 80.0), rows, row_h=6.0, header=False)
+    y += h + 10.0
+    x, y = 465.0, 360.0
+    res = [["величина", "значение"]]
+
+    def mm(key: str, name: str) -> None:
+        if key in r:
+            res.append([name, f"{fmt_number(float(r[key]) * MM, digits=5)} мм"])
+
+    def dg(key: str, name: str) -> None:
+        if key in r:
+            res.append([name, f"{fmt_number(float(r[key]), digits=4)}°"])
+
+    mm("r0_min", "r_{0 min}")
+    mm("r0", "r_0 (принят)")
+    mm("e", "эксцентриситет e")
+    mm("a_w", "межосевое a_w")
+    mm("r_roller", "радиус ролика")
+    mm("rho_pitch_min", "ρ_{min} центрового")
+    mm("rho_min", "ρ_{min} профиля")
+    dg("pressure_angle_max_rise_deg", "α_{max} подъём")
+    dg("pressure_angle_max_return_deg", "α_{max} опускание")
+    d.text("Результаты", (x, y - 2.0), 3.5)
+    _, h = d.table(x, y, (45.0, 40.0), res, row_h=6.0)
+    d.paragraph(
+        "r_0 – радиус центрового профиля при наинизшем положении толкателя B_0; r_{0min} – "
+        "расстояние от B_0 до ближайшей точки зоны допустимых центров; r_0 – r_{0min}, "
+        "округлённый вверх. Ролик: r_р ≤ 0,7ρ_{min} центрового профиля и ≤ 0,4r_0.",
+        330.0,
+        y + h + 10.0,
+        215.0,
+        2.5,
+    )
+
+
+_ = CamProfile
