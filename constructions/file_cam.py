@@ -309,7 +309,7 @@ def design(spec: CamSpec) -> tuple[CamDesign, Construction, dict[str, Any]]:
     profile: CamProfile | cd.RockerProfile
     pivot = (0.0, 0.0)
     if spec.motion == "translating":
-        f = Follower(spec.follower, r0, e, r_r, spec.sigma)  # type: ignore[arg-type]
+        f = Follower(spec.follower, r0, e, r_r, spec.sigma)
         profile = c.run(
             "profile",
             profile_step_name(spec.follower).split(" = ", 1)[1] + ", over the turn",

@@ -124,8 +124,10 @@ def _read_pair(p: Table) -> PairSpec:
         raise ParameterError(p.key("x1" if x1 is None else "x2"), "missing",
                              'shift = "given" needs x1 and x2')  # fmt: skip
     if rule != "given" and (x1 is not None or x2 is not None):
-        raise ParameterError(p.key("x1" if x1 is not None else "x2"), x1 if x1 is not None else x2,
-                             f'shift = "{rule}" chooses the shifts: leave x1 and x2 out')  # fmt: skip
+        which = "x1" if x1 is not None else "x2"
+        raise ParameterError(
+            p.key(which), p.data[which], f'shift = "{rule}" chooses the shifts: leave x1 and x2 out'
+        )
     x_sum = p.optional_number("x_sum", ge=-3.0, le=6.0)
     if x_sum is not None and rule != "equal_sliding":
         raise ParameterError(p.key("x_sum"), x_sum, 'only shift = "equal_sliding" takes x_sum')

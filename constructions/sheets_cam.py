@@ -117,7 +117,7 @@ def _laws(d: Drawing, des: CamDesign) -> None:
         g = Graph(d, ax, ay, (GRAPH_X, y0 - ay.mm(-lo)))
         g.axes(tick_labels=True)
         g.curve(np.degrees(phi), vals, "link")
-        if gy is not None:
+        if gy is not None and gx is not None:
             g.curve(np.degrees(gx), gy * f, "locus")
             for a, b in zip(np.degrees(gx), gy * f, strict=True):
                 g.point(float(a), float(b))
@@ -159,7 +159,7 @@ def _pressure(d: Drawing, des: CamDesign) -> None:
     g.factors((GRAPH_X - 15.0, top - 10.0))
 
 
-# -- the diagram of the cam's size -------------------------------------------------------------------
+# -- the diagram of the cam's size -----------------------------------------------------------------
 
 
 def _diagram(d: Drawing, des: CamDesign) -> None:
@@ -167,7 +167,7 @@ def _diagram(d: Drawing, des: CamDesign) -> None:
     prog = spec.program
     phi = np.linspace(0.0, 2.0 * math.pi, 1441)
     m = prog.motion(phi)
-    O = Vec(*des.centre)
+    O = Vec(*des.centre)  # noqa: E741 (the cam's centre, as the textbooks write it)
     Om = Vec(*des.centre_min)
     x0, y0, x1, y1 = DIAGRAM
     if spec.follower == "flat":
@@ -218,12 +218,12 @@ def _diagram(d: Drawing, des: CamDesign) -> None:
         zone = des.zone
         assert isinstance(zone, cd.RockerZone)
         geom = zone.geometry
-        A = Vec(*geom.A)
+        Av = Vec(*geom.A)
         div = des.divisions
         B = geom.B(div.S)
         C = geom.C(div.S, div.S1)
         for i in range(len(div.phi)):
-            v.seg(A, Vec(*B[i]), "construction")
+            v.seg(Av, Vec(*B[i]), "construction")
             v.seg(Vec(*B[i]), Vec(*C[i]), "construction")
             v.dot(Vec(*C[i]), "point")
         slack = zone.h - zone.n @ np.array([Om.x, Om.y])
@@ -240,9 +240,9 @@ def _diagram(d: Drawing, des: CamDesign) -> None:
                   "construction")  # fmt: skip
         Bs = geom.B(np.linspace(0.0, prog.H, 50))
         v.polyline(list(Bs), "centre")
-        v.joint(A)
-        v.label(A, "A", prefer=(1.0, 1.0))
-        v.seg(A, O, "thin")
+        v.joint(Av)
+        v.label(Av, "A", prefer=(1.0, 1.0))
+        v.seg(Av, O, "thin")
     v.seg(B0, O, "result")
     v.dot(B0, "point")
     v.dot(Om, "point")
@@ -255,7 +255,7 @@ def _diagram(d: Drawing, des: CamDesign) -> None:
     d.label(v.p((O + B0) * 0.5), f"r_0 = {r0}", 2.5)
 
 
-# -- the profile -------------------------------------------------------------------------------------
+# -- the profile -----------------------------------------------------------------------------------
 
 
 def _profile(d: Drawing, des: CamDesign, k: Scale) -> None:
@@ -276,7 +276,7 @@ def _profile(d: Drawing, des: CamDesign, k: Scale) -> None:
     div = des.divisions
     n = len(div.phi) - 1
     if spec.motion == "translating":
-        f = Follower(spec.follower, des.r0, des.e, des.r_roller, spec.sigma)  # type: ignore[arg-type]
+        f = Follower(spec.follower, des.r0, des.e, des.r_roller, spec.sigma)
         pts = at_angles(spec.program, f, div.phi[:n], 2.0 * math.pi)
         pitch, contact = pts.pitch, pts.contact
         if spec.follower != "flat" and des.e != 0.0:
@@ -317,7 +317,7 @@ def _rocker_points(
     return prof.pitch[idx], prof.contact[idx], Ai
 
 
-# -- tables --------------------------------------------------------------------------------------------
+# -- tables ----------------------------------------------------------------------------------------
 
 
 def _tables(d: Drawing, des: CamDesign, r: dict[str, Any]) -> None:
@@ -335,8 +335,9 @@ def _tables(d: Drawing, des: CamDesign, r: dict[str, Any]) -> None:
         rows.append(["размах ψ_{max}, l", f"{fmt_number(math.degrees(spec.program.H), digits=4)}°, "
                      f"{fmt_number(spec.arm * MM, digits=4)} мм"])  # fmt: skip
     if spec.follower != "flat":
-        rows.append(["[α] подъём / опуск.", f"{fmt_number(math.degrees(spec.alpha_rise), digits=4)}°"
-                     f" / {fmt_number(math.degrees(spec.alpha_return), digits=4)}°"])  # fmt: skip
+        a_r = fmt_number(math.degrees(spec.alpha_rise), digits=4)
+        a_t = fmt_number(math.degrees(spec.alpha_return), digits=4)
+        rows.append(["[α] подъём / опуск.", f"{a_r}° / {a_t}°"])
     else:
         rows.append(["ρ_{min} допуск.", f"{fmt_number(spec.rho_allowed * MM, digits=4)} мм"])
     d.text("Исходные данные", (x, y - 2.0), 3.5)

@@ -79,7 +79,7 @@ def sheets(sol: Solution) -> list[tuple[str, Any]]:
     return out
 
 
-# -- the pair ----------------------------------------------------------------------------------------
+# -- the pair --------------------------------------------------------------------------------------
 
 
 def _pair_sheet(sol: Solution, des: GearsDesign) -> Any:
@@ -139,8 +139,8 @@ def _pair_sheet(sol: Solution, des: GearsDesign) -> Any:
     ):
         v.dot(q, "point")
         v.label(q, name, prefer=pref)
-    d.label(v.p(P + Vec(0.0, p.d_w1 * 0.0)), f"α_w = {fmt_number(math.degrees(p.alpha_w), digits=4)}°",
-            2.5, prefer=(1.0, 1.0))  # fmt: skip
+    a_w = fmt_number(math.degrees(p.alpha_w), digits=4)
+    d.label(v.p(P), f"α_w = {a_w}°", 2.5, prefer=(1.0, 1.0))
     _sliding(d, p)
     _pair_tables(d, p, me, sol.results)
     return d.finish()
@@ -225,7 +225,7 @@ def _pair_tables(d: Drawing, p: gd.GearPair, me: gd.Meshing, r: dict[str, Any]) 
     d.paragraph(text, x, y, 310.0, 2.5)
 
 
-# -- the planetary train -------------------------------------------------------------------------------
+# -- the planetary train ---------------------------------------------------------------------------
 
 
 def _plan_points(scheme: str, z: tuple[int, ...], m: float) -> tuple[list[PlanPoint], str, str]:
@@ -334,7 +334,7 @@ def _planetary_sheet(sol: Solution, des: GearsDesign, no: int) -> Any:
         sy = sheet_y[name]
         d.sheet.add(_line((px - 3.0, sy), (sx, sy), "construction"))
         d.label((sx, sy), name.lower(), 3.5)
-    for link, _line_ in plan.lines.items():
+    for link in plan.lines:
         if link == fixed:
             continue
         ends = [

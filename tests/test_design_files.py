@@ -4,6 +4,7 @@ and bad input as one error line naming the step, through the CLI."""
 
 from __future__ import annotations
 
+import functools
 import math
 from fractions import Fraction
 from pathlib import Path
@@ -17,22 +18,29 @@ from geomcad.kinematics import cam_design as cd
 from geomcad.kinematics.cams import Follower, cam_profile, pressure_angle_max
 from geomcad.kinematics.gears import SpurGear, inv
 from geomcad.kinematics.motion_laws import CamProgram, Phase
+from geomcad.problem import Solution
 
 EX = Path(__file__).resolve().parent.parent / "examples"
 ALL = ["cam-translating-roller", "cam-rocking-roller", "cam-flat", "gear-pair", "planetary"]
 
 
+@functools.cache
+def solution(name: str, *sets: tuple[str, str]) -> Solution:
+    return documents.solve(str(EX / f"{name}.toml"), list(sets))
+
+
 def solve(name: str, *sets: tuple[str, str]) -> dict[str, object]:
-    return documents.solve(str(EX / f"{name}.toml"), list(sets)).results
+    return solution(name, *sets).results
 
 
 def program(phases: list[tuple[str, float, str]], H: float) -> CamProgram:
     return CamProgram.of(
-        H, [Phase(k, math.radians(a), law) for k, a, law in phases]  # type: ignore[arg-type]
+        H,
+        [Phase(k, math.radians(a), law) for k, a, law in phases],  # type: ignore[arg-type]
     ).full_turn()
 
 
-# -- cams --------------------------------------------------------------------------------------------
+# -- cams ------------------------------------------------------------------------------------------
 
 TRANS = [("rise", 120.0, "cycloidal"), ("dwell", 40.0, "linear"), ("return", 100.0, "poly345")]
 
@@ -66,7 +74,8 @@ def test_translating_roller_centre_is_on_the_allowed_pressure_angles() -> None:
     f = Follower("roller", 0.027, float(r["e"]), float(r["r_roller"]), 1)  # type: ignore[arg-type]
     prof = cam_profile(prog, f, closed=True)
     assert math.degrees(pressure_angle_max(prog, prof)) == pytest.approx(
-        float(r["pressure_angle_max_deg"]), abs=1e-6  # type: ignore[arg-type]
+        float(r["pressure_angle_max_deg"]),
+        abs=1e-6,  # type: ignore[arg-type]
     )
     assert float(r["r_roller"]) < float(r["rho_pitch_min"])  # type: ignore[arg-type]
 
@@ -95,7 +104,7 @@ def test_rocking_roller_is_on_the_allowed_angle_and_no_nearer_centre_is() -> Non
     )  # fmt: skip
     geom = cd.RockerGeometry(0.1, math.radians(20), -1)
     zone = cd.rocker_zone(prog, geom, math.radians(35), math.radians(45))
-    O = np.array(zone.nearest())
+    O = np.array(zone.nearest())  # noqa: E741
     assert float(np.hypot(*O)) == pytest.approx(float(r["r0_min"]), rel=1e-12)  # type: ignore[arg-type]
     phi = np.linspace(0.0, 2.0 * math.pi, 50001)
     back = (phi > math.radians(140)) & (phi < math.radians(250))
@@ -141,7 +150,7 @@ def test_flat_face_r0_min_is_the_convexity_closed_form() -> None:
     assert r["pressure_angle_max_deg"] == 0.0
 
 
-# -- gears -------------------------------------------------------------------------------------------
+# -- gears -----------------------------------------------------------------------------------------
 
 
 def test_gear_pair_by_gost_16532_against_independent_forms() -> None:
@@ -212,7 +221,7 @@ def test_planetary_scheme_a_is_the_smallest_by_brute_force() -> None:
     assert z3 == smallest == z1 + 2 * z2
 
 
-# -- bad input through the CLI -----------------------------------------------------------------------
+# -- bad input through the CLI ---------------------------------------------------------------------
 
 BAD = [
     ("cam-translating-roller", "cam.pressure_angle_deg=95", "pressure_angle_deg"),
@@ -246,3 +255,23 @@ def test_pointed_teeth_are_refused(capsys: pytest.CaptureFixture[str]) -> None:
     code = main(argv)
     _, err = capsys.readouterr()
     assert code == 2 and "pointed" in err and "tip thickness" in err
+
+
+# -- sheets ----------------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("name", ALL)
+def test_sheets_pass_the_layout_checker(name: str) -> None:
+    from layout import layout_problems
+
+    sheets = solution(name).sheets()
+    assert sheets
+    for _, sheet in sheets:
+        assert (sheet.width, sheet.height) == (841.0, 594.0)  # A1
+        assert layout_problems(sheet) == []
+
+
+def test_build_writes_the_sheet(tmp_path: Path) -> None:
+    code = main(["build", str(EX / "cam-flat.toml"), "--out", str(tmp_path), "--format", "svg"])
+    assert code == 0
+    assert (tmp_path / "cam-flat.svg").read_text(encoding="utf-8").startswith("<?xml")

@@ -169,8 +169,8 @@ def synthesise(
     g = _grid(z_min, z_max)
     zz: list[IntArr]
     if scheme == "A":
-        a, b = np.meshgrid(g, g, indexing="ij")
-        a, b = a.ravel(), b.ravel()
+        a2, b2 = np.meshgrid(g, g, indexing="ij")
+        a, b = a2.ravel(), b2.ravel()
         c = a + 2 * b
         zz = [a, b, c]
         uu = 1.0 + c / a
