@@ -309,6 +309,7 @@ def design(spec: CamSpec) -> tuple[CamDesign, Construction, dict[str, Any]]:
     profile: CamProfile | cd.RockerProfile
     pivot = (0.0, 0.0)
     if spec.motion == "translating":
+        cd.check_jumps(prog, spec.follower, profile_step_name(spec.follower))
         f = Follower(spec.follower, r0, e, r_r, spec.sigma)
         profile = c.run(
             "profile",

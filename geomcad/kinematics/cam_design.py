@@ -94,6 +94,33 @@ def _phase_motion(program: CamProgram, k: int, phi: FloatArray) -> Motion:
     )
 
 
+def check_jumps(program: CamProgram, follower: str, step: str) -> None:
+    """A drop of S′ at a break (the linear law's end) under a roller or a flat face is a cusp:
+    the follower would have to enter a convex corner. An error names the phases and the angle."""
+    if follower == "knife":
+        return
+    b = program.boundaries
+    eps = tol.DERIVED * program.H / min(ph.angle for ph in program.phases)
+    for at in program.breaks():
+        x = float(at) % (2.0 * math.pi)
+        d0 = float(program.motion([x if x > 0.0 else 2.0 * math.pi], "left").S1[0])
+        d1 = float(program.motion([x], "right").S1[0])
+        if d1 < d0 - eps:
+            k = int(np.clip(np.searchsorted(b, x, side="right") - 1, 0, len(program.phases) - 1))
+            before = (
+                phase_name(program, float(b[k]) - 0.5 * program.phases[k - 1].angle)
+                if k
+                else (phase_name(program, float(b[-1]) - tol.DERIVED))
+            )
+            what = "the flat face" if follower == "flat" else "the roller"
+            raise ConstructionError(
+                step,
+                f"S′ drops from {d0:.6g} to {d1:.6g} at φ = {math.degrees(x):.6g}°, between "
+                f"{before} and {phase_name(program, x)}: {what} would have to enter a convex "
+                "corner of the profile (a cusp); choose a law whose S′ is continuous there",
+            )
+
+
 def phase_extreme(
     program: CamProgram,
     k: int,
