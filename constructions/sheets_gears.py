@@ -143,7 +143,47 @@ def _pair_sheet(sol: Solution, des: GearsDesign) -> Any:
     d.label(v.p(P), f"α_w = {a_w}°", 2.5, prefer=(1.0, 1.0))
     _sliding(d, p)
     _pair_tables(d, p, me, sol.results)
+    ps = des.spec.pair
+    assert ps is not None
+    _contour(d, p, ps.sa_min, ps.eps_min)
     return d.finish()
+
+
+#: Labels of the blocking contour's lines.
+LIMIT_TEXT = {
+    "x_min1": "подрез 1",
+    "x_min2": "подрез 2",
+    "s_a1": "s_{a1} = s_{a min}",
+    "s_a2": "s_{a2} = s_{a min}",
+    "interf1": "интерф. 1",
+    "interf2": "интерф. 2",
+    "eps": "ε_α = ε_{min}",
+}
+
+
+def _contour(d: Drawing, p: gd.GearPair, sa_min: float, eps_min: float) -> None:
+    """The blocking contour in the plane (x1, x2) around the chosen shifts."""
+    lo1 = min(gd.x_no_undercut(p.z1, p.rack), p.x1) - 0.3
+    lo2 = min(gd.x_no_undercut(p.z2, p.rack), p.x2) - 0.3
+    x1 = np.linspace(lo1, lo1 + 1.8, 37)
+    x2 = np.linspace(lo2, lo2 + 1.8, 37)
+    lines = gd.blocking_contour(p.z1, p.z2, p.m, x1, x2, p.rack, sa_min, eps_min)
+    x_at, room = 560.0, 150.0
+    ax = Axis.fit("x_1", "1", float(x1[0]), float(x1[-1]), room)
+    ay = Axis.fit("x_2", "1", float(x2[0]), float(x2[-1]), room)
+    g = Graph(d, ax, ay, (x_at - ax.mm(x1[0] - ax.zero), 522.0 + ay.mm(x2[0] - ay.zero)))
+    g.axes()
+    for key, segs in lines.items():
+        if not segs:
+            continue
+        for a1, a2, b1, b2 in segs:
+            g.curve([a1, b1], [a2, b2], "construction")
+        mid = segs[len(segs) // 2]
+        g.point(mid[0], mid[1], LIMIT_TEXT[key], role="construction")
+    g.point(p.x1, p.x2, "x_1, x_2", role="result", prefer=(1.0, 1.0))
+    top = g.box[1]
+    d.text("Блокирующий контур (x_1, x_2): линии ограничений и принятые смещения",
+           (x_at - 30.0, top - 15.0), 3.5)  # fmt: skip
 
 
 def _working(v: Any, tooth: np.ndarray, r_lo: float, r_hi: float, centre: Vec) -> None:

@@ -460,3 +460,77 @@ def meshing(p: GearPair, n: int = 60) -> Meshing:
     b = _tip_cut(N1, t, np.zeros(2), p.gear1.r_a, first=False)
     ab = float(np.hypot(*(b - a)))
     return Meshing(p, teeth1, teeth2, P, N1, N2, a, b, t, pb, ab / pb)
+
+
+# -- the blocking contour -------------------------------------------------------------------------
+
+#: The limits of the blocking contour, by name (the sheet's labels).
+LIMITS = ("x_min1", "x_min2", "s_a1", "s_a2", "interf1", "interf2", "eps")
+
+
+def limit_margins(
+    p: GearPair, sa_min: float = SA_MIN, eps_min: float = EPS_MIN
+) -> dict[str, float]:
+    """Each limit's margin, in modules (ε_α: in itself); > 0 inside the blocking contour."""
+    d_p1, d_p2 = p.active_start()
+    out = {
+        "x_min1": p.x1 - x_no_undercut(p.z1, p.rack),
+        "x_min2": p.x2 - x_no_undercut(p.z2, p.rack),
+        "s_a1": (p.gear1.s_a - sa_min * p.m) / p.m,
+        "s_a2": (p.gear2.s_a - sa_min * p.m) / p.m,
+        "eps": p.eps_alpha - eps_min,
+    }
+    for key, N, d_p, g in (("interf1", p.N1a, d_p1, p.gear1), ("interf2", p.N2b, d_p2, p.gear2)):
+        out[key] = N / p.m if N < 0.0 else (d_p - g.limit_diameter()) / p.m
+    return out
+
+
+def blocking_contour(
+    z1: int,
+    z2: int,
+    m: float,
+    x1: Arr,
+    x2: Arr,
+    rack: BasicRack = GOST_13755,
+    sa_min: float = SA_MIN,
+    eps_min: float = EPS_MIN,
+) -> dict[str, list[tuple[float, float, float, float]]]:
+    """The lines of the blocking contour in the plane (x1, x2): per limit, the segments where its
+    margin is zero, by marching squares on the grid ``x1`` × ``x2`` (pairs that cannot exist, a
+    negative inv α_w, are left out)."""
+    F = {k: np.full((len(x1), len(x2)), np.nan) for k in LIMITS}
+    for i, a in enumerate(x1):
+        for j, b in enumerate(x2):
+            try:
+                marg = limit_margins(pair(z1, z2, m, float(a), float(b), rack), sa_min, eps_min)
+            except (ConstructionError, ParameterError):
+                continue
+            for k, v in marg.items():
+                F[k][i, j] = v
+    return {k: _zero_lines(x1, x2, f) for k, f in F.items()}
+
+
+def _zero_lines(x1: Arr, x2: Arr, f: Arr) -> list[tuple[float, float, float, float]]:
+    """Marching squares: the segments of f = 0 on the grid, interpolated linearly on the edges."""
+    segs: list[tuple[float, float, float, float]] = []
+    for i in range(len(x1) - 1):
+        for j in range(len(x2) - 1):
+            c = [(i, j), (i + 1, j), (i + 1, j + 1), (i, j + 1)]
+            v = [f[q] for q in c]
+            if any(not math.isfinite(x) for x in v):
+                continue
+            pts = []
+            for k in range(4):
+                (ia, ja), (ib, jb) = c[k], c[(k + 1) % 4]
+                va, vb = v[k], v[(k + 1) % 4]
+                if (va > 0.0) != (vb > 0.0):
+                    t = va / (va - vb)
+                    pts.append(
+                        (
+                            float(x1[ia] + t * (x1[ib] - x1[ia])),
+                            float(x2[ja] + t * (x2[jb] - x2[ja])),
+                        )
+                    )
+            for k in range(0, len(pts) - 1, 2):
+                segs.append((*pts[k], *pts[k + 1]))
+    return segs
