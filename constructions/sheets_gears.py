@@ -49,7 +49,7 @@ SCHEME = (40.0, 60.0, 330.0, 520.0)
 PLAN = (380.0, 60.0, 620.0, 520.0)
 PAD = 10.0
 #: The sheet y of the central axis (r = 0) of the scheme and of the plan.
-Y_BASE = 470.0
+Y_BASE = (SCHEME[1] + SCHEME[3]) / 2.0
 
 
 def _mesh_box(p: gd.GearPair, me: gd.Meshing) -> tuple[float, float, float, float]:
@@ -299,8 +299,8 @@ def _scheme_scale(des: GearsDesign) -> Scale:
     assert pp is not None
     z = des.candidates[0].z
     top = pp.m * (max(z) + 2 * max(z[1], z[2] if len(z) > 3 else z[1])) / 2.0 + pp.m * 4.0
-    # the radii go up the sheet from the base line: the height sets the scale
-    return gost_scale_to_fit(top * 0.5, top * 1.15, SCHEME[2] - SCHEME[0], Y_BASE - SCHEME[1])
+    # the scheme is drawn whole, both halves about the central axis: its height sets the scale
+    return gost_scale_to_fit(top, 2.2 * top, SCHEME[2] - SCHEME[0], SCHEME[3] - SCHEME[1])
 
 
 def _planetary_sheet(sol: Solution, des: GearsDesign, no: int) -> Any:
@@ -325,38 +325,11 @@ def _planetary_sheet(sol: Solution, des: GearsDesign, no: int) -> Any:
     y_base = Y_BASE
     v = d.viewport(k, (0.0, 0.0), (SCHEME[0] + 20.0, y_base))
     by = {q.name: q.y for q in pts}
-    # the central axis, the gears as strokes of their pitch radii (planet rows at x = 1, 2)
-    span = k.model(SCHEME[2] - SCHEME[0] - 40.0)
-    v.seg(Vec(-k.model(10.0), 0.0), Vec(span, 0.0), "centre")
-    c1, c2 = span * 0.35, span * 0.65
-    aw = by["B"]
-    planet = [(c1, aw, m * z[1] / 2.0, "2")]
-    if pp.scheme != "A":
-        planet.append((c2, aw, m * z[2] / 2.0, "3"))
-    for x, yc, r, name in planet:
-        v.seg(Vec(x, yc - r), Vec(x, yc + r), "link")
-        v.label(Vec(x, yc + r), name, prefer=(1.0, 1.0))
-    if pp.scheme != "A":
-        v.seg(Vec(c1, aw), Vec(c2, aw), "link")
-    v.seg(Vec(c1, 0.0), Vec(c1, by["A"]), "link")  # gear 1 (a sun, or a ring on its disc)
-    v.label(Vec(c1, by["A"] * 0.5), "1", prefer=(-1.0, 0.0))
-    held_x = c1 if pp.scheme == "A" else c2
-    held = by["C"]
-    v.seg(Vec(held_x, held), Vec(held_x, held + k.model(12.0)), "link")
-    v.guide(Vec(held_x - k.model(6.0), held + k.model(12.0)),
-            Vec(held_x + k.model(6.0), held + k.model(12.0)), (0.0, 1.0))  # fmt: skip
-    v.label(Vec(held_x, held + k.model(12.0)), "3" if pp.scheme == "A" else "4", prefer=(1.0, 1.0))
-    hx = span * 0.85
-    v.polyline([Vec(hx, 0.0), Vec(hx, aw), Vec(c1 - k.model(8.0), aw)], "link")
-    v.label(Vec(hx, aw * 0.5), "H", prefer=(1.0, 0.0))
-    for q in pts:
-        v.dot(Vec(c1 if q.name != "C" or pp.scheme == "A" else c2, q.y), "point")
-        v.label(Vec(c1 if q.name != "C" or pp.scheme == "A" else c2, q.y), q.name,
-                prefer=(-1.0, 0.3))  # fmt: skip
+    _scheme(v, k, pp.scheme, z, m, by)
     # Smirnov's plan on the same radii, and the angle diagram
     c = Construction("plan")
     w_in = 1.0
-    v_start = w_in * (by[start_pt] if start_link == "1" else aw)
+    v_start = w_in * (by[start_pt] if start_link == "1" else by["B"])
     fixed = "3" if pp.scheme == "A" else "4"
     plan = velocity_plan(c, pts, fixed, start_link, start_pt, v_start)
     vmax = max(abs(e.x) for e in plan.ends.values()) or 1.0
@@ -427,6 +400,67 @@ def _planetary_sheet(sol: Solution, des: GearsDesign, no: int) -> Any:
     ):
         y = d.paragraph(text, x, y, 190.0, 2.5) + 1.0
     return d.finish()
+
+
+def _scheme(
+    v: Any, k: Scale, scheme: str, z: tuple[int, ...], m: float, by: dict[str, float]
+) -> None:
+    """The kinematic scheme (GOST 2.770, as in 2013-5): gears as webs with rims at their pitch
+    radii, rings as cups, the planet block on its axle in the carrier H, the held gear on the
+    frame; both halves about the central axis, the planets drawn in both."""
+    from .sheets_2013_5 import _bearing, _gear, _ground, _ring
+
+    b = k.model(6.0)
+    aw = by["B"]
+    span = k.model(SCHEME[2] - SCHEME[0] - 40.0)
+    c1, c2, cH = span * 0.3, span * 0.55, span * 0.85
+    v.seg(Vec(-k.model(10.0), 0.0), Vec(span + k.model(10.0), 0.0), "centre")
+    r1 = m * z[0] / 2.0
+    # gear 1 on the input (or output) shaft from the left
+    v.seg(Vec(-k.model(5.0), 0.0), Vec(c1, 0.0), "link")
+    if scheme == "D":
+        _ring(v, c1, c1 - 1.5 * b, 0.0, r1, b)
+    else:
+        _gear(v, c1, 0.0, r1, b)
+    v.label(Vec(c1, -r1), "1", prefer=(-1.0, -1.0))
+    # the planet block: 2 at c1, 3 at c2 on one axle, both halves
+    r2 = m * z[1] / 2.0
+    for s_ in (1.0, -1.0):
+        yc = s_ * aw
+        _gear(v, c1, yc, r2, b)
+        if scheme != "A":
+            _gear(v, c2, yc, m * z[2] / 2.0, b)
+        x_end = c2 if scheme != "A" else c1
+        v.seg(Vec(c1 - b, yc), Vec(x_end + b, yc), "link")
+        _bearing(v, Vec(x_end + 1.5 * b, yc), False)
+        # the carrier H: from its shaft up to the planets' axle
+        v.polyline([Vec(cH, 0.0), Vec(cH, yc), Vec(x_end + 1.5 * b, yc)], "link")
+    v.label(Vec(c1, aw + r2), "2", prefer=(-1.0, 1.0))
+    if scheme != "A":
+        v.label(Vec(c2, aw + m * z[2] / 2.0), "3", prefer=(1.0, 1.0))
+    v.seg(Vec(cH, 0.0), Vec(span + k.model(5.0), 0.0), "link")
+    v.label(Vec(cH, aw * 0.5), "H", prefer=(1.0, 0.0))
+    # the held gear, on the frame
+    held_c = c1 if scheme == "A" else c2
+    r_h = m * z[-1] / 2.0
+    name = "3" if scheme == "A" else "4"
+    if scheme == "C":
+        _gear(v, held_c, 0.0, r_h, b)
+        v.seg(Vec(held_c, 0.0), Vec(held_c + 1.2 * b, 0.0), "link")
+        _ground(v, Vec(held_c + 1.2 * b, -k.model(8.0)))
+        v.seg(Vec(held_c + 1.2 * b, 0.0), Vec(held_c + 1.2 * b, -k.model(8.0)), "link")
+        v.label(Vec(held_c, r_h), name, prefer=(1.0, 1.0))
+    else:
+        x_web = held_c + 1.5 * b
+        for s_ in (1.0, -1.0):
+            v.seg(Vec(held_c - b / 2.0, s_ * r_h), Vec(x_web, s_ * r_h), "link")
+            v.seg(Vec(x_web, s_ * r_h), Vec(x_web, s_ * (r_h + k.model(6.0))), "link")
+            _ground(v, Vec(x_web, s_ * (r_h + k.model(6.0))))
+        v.label(Vec(held_c, r_h), name, prefer=(-1.0, 1.0))
+    # the points of the radial line: pitch points and the planets' axle
+    for q, x in (("A", c1), ("B", c1), ("C", held_c)):
+        v.dot(Vec(x, by[q]), "point")
+        v.label(Vec(x, by[q]), q, height=2.5, prefer=(-1.0, 0.3))
 
 
 def sheet_y_of(vp: Any, y: float) -> float:
