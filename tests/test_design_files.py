@@ -221,6 +221,23 @@ def test_planetary_scheme_a_is_the_smallest_by_brute_force() -> None:
     assert z3 == smallest == z1 + 2 * z2
 
 
+@pytest.mark.parametrize(("scheme", "u"), [("C", 40.0), ("D", -30.0)])
+def test_planetary_schemes_with_the_carrier_driving(scheme: str, u: float) -> None:
+    r = solve("planetary", ("gears.planetary.scheme", scheme), ("gears.planetary.ratio", str(u)))
+    z1, z2, z3, z4 = r["z"]  # type: ignore[misc]
+    if scheme == "C":
+        assert z1 + z2 == z4 + z3
+        two_a = z1 + z2
+    else:
+        assert z1 - z2 == z4 - z3 and z1 - z2 >= 8 and z4 - z3 >= 8
+        two_a = z1 - z2
+    # u_H1 = 1/u_1H^(4), u_1H^(4) = 1 − u_14^(H), u_14^(H) = (∓z2/z1)(∓z4/z3)
+    exact = 1 / (1 - Fraction(z2 * z4, z1 * z3))
+    assert r["u"] == pytest.approx(float(exact), rel=1e-15)
+    assert abs(float(exact) - u) <= 0.02 * abs(u)
+    assert two_a * math.sin(math.pi / 3) > max(z2, z3) + 2
+
+
 # -- bad input through the CLI ---------------------------------------------------------------------
 
 BAD = [
