@@ -245,13 +245,18 @@ def choose_shifts(
             )
 
         def f(x1: float) -> float:
-            p = pair(z1, z2, m, x1, xs - x1, rack)
+            try:
+                p = pair(z1, z2, m, x1, xs - x1, rack)
+            except (ConstructionError, ParameterError):
+                return math.nan
             return p.lambda1 - p.lambda2
 
-        a, b = lo1, xs - lo2
-        grid = np.linspace(a, b, 41)
+        # x1 from the pinion's undercut limit to the wheel's, each shift within ±3
+        a, b = max(lo1, xs - 3.0), min(xs - lo2, 3.0)
+        grid = np.linspace(a, b, 81)
         vals = np.array([f(float(x)) for x in grid])
-        idx = np.nonzero(np.diff(np.sign(vals)))[0]
+        fin = np.isfinite(vals[:-1]) & np.isfinite(vals[1:])
+        idx = np.nonzero(fin & (np.sign(vals[:-1]) != np.sign(vals[1:])))[0]
         if idx.size == 0:
             raise ConstructionError(
                 STEP_SHIFTS,
