@@ -128,15 +128,12 @@ def _laws(d: Drawing, des: CamDesign) -> None:
         d.text(f"{what} {name}: точно (сплошная), графически (штриховая)" if gy is not None
                else f"{what} {name}", (GRAPH_X - 15.0, top - 15.0), 3.5)  # fmt: skip
         g.factors((GRAPH_X - 15.0, top - 10.0))
-    laws = ", ".join(
-        f"{ph.kind} {math.degrees(ph.angle):g}°"
-        + (f" ({LAW_TITLES_RU[ph.law]})" if ph.kind != "dwell" else "")
-        for ph in prog.phases
-    )
-    d.paragraph(f"Фазы: {laws}.", GRAPH_X - 15.0, 15.0, 270.0, 2.5)
 
 
 def _pressure(d: Drawing, des: CamDesign) -> None:
+    if des.spec.follower == "flat":
+        _curvature(d, des)
+        return
     prof = des.profile
     keep = ~prof.corner
     phi = np.degrees(prof.phi[keep])
@@ -155,6 +152,27 @@ def _pressure(d: Drawing, des: CamDesign) -> None:
         _ = ph_kind
     top = g.box[1]
     d.text("Угол давления α(φ) за оборот; штриховые – допускаемые [α] на подъёме и опускании",
+           (GRAPH_X - 15.0, top - 15.0), 3.5)  # fmt: skip
+    g.factors((GRAPH_X - 15.0, top - 10.0))
+
+
+def _curvature(d: Drawing, des: CamDesign) -> None:
+    """A flat face: the profile's radius of curvature ρ = r0 + S + S″ over the turn, with the
+    required smallest one."""
+    prog = des.spec.program
+    phi = np.linspace(0.0, 2.0 * math.pi, 1441)
+    m = prog.motion(phi)
+    rho = (des.r0 + m.S + m.S2) * MM
+    ax = Axis.fit("φ", "°", 0.0, 360.0, GRAPH_W).with_tick(30.0)
+    ay = Axis.fit("ρ", "мм", 0.0, float(np.max(rho)), GRAPH_H)
+    g = Graph(d, ax, ay, (GRAPH_X, GRAPH_Y[3]))
+    g.axes()
+    g.curve(np.degrees(phi), rho, "link")
+    if des.spec.rho_allowed > 0.0:
+        lim = des.spec.rho_allowed * MM
+        g.curve([0.0, 360.0], [lim, lim], "locus")
+    top = g.box[1]
+    d.text("Радиус кривизны профиля ρ = r_0 + S + S″ за оборот; штриховая – требуемый ρ_{min}",
            (GRAPH_X - 15.0, top - 15.0), 3.5)  # fmt: skip
     g.factors((GRAPH_X - 15.0, top - 10.0))
 
@@ -214,6 +232,8 @@ def _diagram(d: Drawing, des: CamDesign) -> None:
         v.seg(Vec(0.0, low), Vec(0.0, max(ys) + ext * 0.3), "centre")
         if O.x != 0.0:
             v.seg(Vec(O.x, O.y), Vec(O.x, 0.0), "centre")
+            e_mm = fmt_number(abs(des.e) * MM, digits=4)
+            v.dim_linear(Vec(O.x, O.y), Vec(0.0, O.y), f"e = {e_mm}", offset=-8.0, height=2.5)
     else:
         zone = des.zone
         assert isinstance(zone, cd.RockerZone)
@@ -365,12 +385,19 @@ def _tables(d: Drawing, des: CamDesign, r: dict[str, Any]) -> None:
     dg("pressure_angle_max_return_deg", "α_{max} опускание")
     d.text("Результаты", (x, y - 2.0), 3.5)
     _, h = d.table(x, y, (45.0, 40.0), res, row_h=6.0)
+    kinds = {"rise": "подъём", "dwell": "выстой", "return": "опускание"}
+    laws = ", ".join(
+        f"{kinds[ph.kind]} {fmt_number(math.degrees(ph.angle), digits=4)}°"
+        + (f" ({LAW_TITLES_RU[ph.law]})" if ph.kind != "dwell" else "")
+        for ph in spec.program.phases
+    )
+    y = d.paragraph(f"Фазы: {laws}.", 330.0, y + h + 10.0, 215.0, 2.5) + 2.0
     d.paragraph(
         "r_0 – радиус центрового профиля при наинизшем положении толкателя B_0; r_{0min} – "
         "расстояние от B_0 до ближайшей точки зоны допустимых центров; r_0 – r_{0min}, "
         "округлённый вверх. Ролик: r_р ≤ 0,7ρ_{min} центрового профиля и ≤ 0,4r_0.",
         330.0,
-        y + h + 10.0,
+        y,
         215.0,
         2.5,
     )
