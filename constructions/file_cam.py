@@ -37,7 +37,7 @@ from geomcad.kinematics.cams import (
     profile_step_name,
     rho_min,
 )
-from geomcad.kinematics.motion_laws import LAWS, CamProgram, Motion, Phase
+from geomcad.kinematics.motion_laws import ALL_LAWS, CamProgram, Motion, Phase
 from geomcad.problem import Build, Problem, ResultSpec
 from geomcad.units import deg, to_deg
 
@@ -161,7 +161,7 @@ def read_spec(file_id: str, data: Mapping[str, Any]) -> CamSpec:
         p = Table(raw, f"{KIND}.phases.{i + 1}")
         kind = p.choice("kind", ("rise", "dwell", "return"))
         angle = deg(p.number("angle_deg", gt=0.0, le=360.0, unit="°"))
-        law = p.choice("law", LAWS, "cycloidal") if kind != "dwell" else "linear"
+        law = p.choice("law", ALL_LAWS, "cycloidal") if kind != "dwell" else "linear"
         p.done()
         phases.append(Phase(kind, angle, law))  # type: ignore[arg-type]
     t.done()

@@ -47,7 +47,6 @@ LAW_SHORT_RU = {
     "harmonic": "косинус.",
     "cycloidal": "синус.",
     "poly345": "3-4-5",
-    "modified_trapezoid": "мод. трап.",
 }
 #: Division points closer than this on the paper (mm) are not all labelled.
 LABEL_APART = 5.0

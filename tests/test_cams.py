@@ -23,6 +23,7 @@ from geomcad.kinematics.cams import (
     velocity_plan,
 )
 from geomcad.kinematics.motion_laws import (
+    ALL_LAWS,
     LAWS,
     CamProgram,
     Phase,
@@ -46,7 +47,7 @@ ENDS = {
 }
 
 
-@pytest.mark.parametrize("law", LAWS)
+@pytest.mark.parametrize("law", ALL_LAWS)
 def test_laws_start_at_0_end_at_1_and_have_their_end_derivatives(law: str) -> None:
     s, ds, dds = normalised(law, [0.0, 1.0])
     assert s[0] == pytest.approx(0.0, abs=1e-15) and s[1] == pytest.approx(1.0, abs=1e-15)
@@ -55,7 +56,7 @@ def test_laws_start_at_0_end_at_1_and_have_their_end_derivatives(law: str) -> No
     assert dds[0] == pytest.approx(a0, abs=1e-12) and dds[1] == pytest.approx(a1, abs=1e-12)
 
 
-@pytest.mark.parametrize("law", LAWS)
+@pytest.mark.parametrize("law", ALL_LAWS)
 def test_laws_derivatives_match_numerical_differentiation(law: str) -> None:
     u = np.linspace(0.01, 0.99, 99)
     u = u[np.abs(u - 0.5) > 0.02]  # away from the constant-acceleration law's break
@@ -67,7 +68,7 @@ def test_laws_derivatives_match_numerical_differentiation(law: str) -> None:
     np.testing.assert_allclose((ds_p - ds_m) / (2 * h), dds, atol=1e-6)
 
 
-@pytest.mark.parametrize("law", LAWS)
+@pytest.mark.parametrize("law", ALL_LAWS)
 def test_mean_velocity_analogue_is_h_over_phi(law: str) -> None:
     """∫S′dφ over the rise is H: the mean of s′ over [0, 1] is 1 (trapezoids, fine grid)."""
     u = np.linspace(0.0, 1.0, 200001)

@@ -44,14 +44,11 @@ Side = Literal["left", "right"]
 PhaseKind = Literal["rise", "dwell", "return"]
 
 #: The law names, as the interface's ``law`` choice spells them.
-LAWS: tuple[str, ...] = (
-    "linear",
-    "constant_acceleration",
-    "harmonic",
-    "cycloidal",
-    "poly345",
-    "modified_trapezoid",
-)
+LAWS: tuple[str, ...] = ("linear", "constant_acceleration", "harmonic", "cycloidal", "poly345")
+
+#: Every law a program may use: the five, and the modified trapezoid (the design files' laws;
+#: 2013-2's ``law`` choice keeps the five).
+ALL_LAWS: tuple[str, ...] = (*LAWS, "modified_trapezoid")
 
 #: Russian names of the laws, for sheets.
 LAW_TITLES_RU: dict[str, str] = {
@@ -108,7 +105,7 @@ def normalised(law: str, u: npt.ArrayLike) -> tuple[FloatArray, FloatArray, Floa
         )
     if law == "modified_trapezoid":
         return _modified_trapezoid(uu)
-    raise ParameterError("law", law, f"must be one of {', '.join(LAWS)}")
+    raise ParameterError("law", law, f"must be one of {', '.join(ALL_LAWS)}")
 
 
 def _mt_knots() -> tuple[float, list[tuple[float, float]]]:
@@ -202,8 +199,8 @@ class CamProgram:
                 raise ParameterError(f"phase {i + 1} ({ph.kind}) angle", ph.angle, "must be > 0")
             if ph.kind not in ("rise", "dwell", "return"):
                 raise ParameterError(f"phase {i + 1} kind", ph.kind, "must be rise, dwell, return")
-            if ph.kind != "dwell" and ph.law not in LAWS:
-                raise ParameterError(f"phase {i + 1} law", ph.law, f"must be one of {LAWS}")
+            if ph.kind != "dwell" and ph.law not in ALL_LAWS:
+                raise ParameterError(f"phase {i + 1} law", ph.law, f"must be one of {ALL_LAWS}")
             if ph.kind == "rise":
                 if level != 0:
                     raise ParameterError(f"phase {i + 1}", "rise", "a rise must start at S = 0")
