@@ -20,6 +20,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from geomcad import tol
 from geomcad.construction import Construction
 from geomcad.geom import Arc, Circle, Vec
 from geomcad.kinematics import gear_design as gd
@@ -189,7 +190,7 @@ def _contour(d: Drawing, p: gd.GearPair, sa_min: float, eps_min: float) -> None:
 def _working(v: Any, tooth: np.ndarray, r_lo: float, r_hi: float, centre: Vec) -> None:
     """The tooth's flank points between the radii r_lo and r_hi, drawn as result lines."""
     r = np.hypot(tooth[:, 0] - centre.x, tooth[:, 1] - centre.y)
-    inside = (r >= r_lo) & (r <= r_hi * (1.0 - 1e-9))
+    inside = (r >= r_lo) & (r <= r_hi * (1.0 - tol.DERIVED))
     runs: list[list[np.ndarray]] = [[]]
     for ok, q in zip(inside, tooth, strict=True):
         if ok:
