@@ -10,7 +10,6 @@ mesh equations), its error against the file's.
 
 from __future__ import annotations
 
-import math
 from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Any
@@ -268,6 +267,3 @@ def make_problem(file_id: str, data: dict[str, Any]) -> Problem:
         draw=draw,
         inputs=data,
     )
-
-
-_ = math

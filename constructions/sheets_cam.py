@@ -20,7 +20,7 @@ import numpy as np
 
 from geomcad.geom import Vec
 from geomcad.kinematics import cam_design as cd
-from geomcad.kinematics.cams import CamProfile, Follower, at_angles, invert
+from geomcad.kinematics.cams import Follower, at_angles, invert
 from geomcad.kinematics.motion_laws import LAW_TITLES_RU, Motion
 from geomcad.sheet import Drawing, Scale, TitleBlock, fmt_number, gost_scale_to_fit, start
 from geomcad.sheet.graph import Axis, Graph
@@ -401,6 +401,3 @@ def _tables(d: Drawing, des: CamDesign, r: dict[str, Any]) -> None:
         215.0,
         2.5,
     )
-
-
-_ = CamProfile

@@ -24,7 +24,6 @@ from geomcad import tol
 from geomcad.construction import Construction
 from geomcad.geom import Arc, Circle, Vec
 from geomcad.kinematics import gear_design as gd
-from geomcad.kinematics import planetary as pl
 from geomcad.kinematics.trains import PlanPoint, ray_plan, velocity_plan
 from geomcad.sheet import (
     Drawing,
@@ -472,6 +471,3 @@ def _line(a: tuple[float, float], b: tuple[float, float], role: str = "dimension
     from geomcad.sheet import Polyline
 
     return Polyline((a, b), role)
-
-
-_ = pl
