@@ -75,7 +75,9 @@ def make_problem(file_id: str, data: dict[str, Any]) -> Problem:
         res = results(s)
         from geomcad.sheet.linkage import sheet_scales
 
-        proto = Protocol(lk.title, [P.c for P in s.positions])
+        from geomcad.linkage.analysis import analyse
+
+        proto = Protocol(lk.title, [P.c for P in s.positions] + analyse(s).constructions)
         return Build(res, proto, [], sheet_scales(s), data=s)
 
     def draw(sol: Solution) -> list[tuple[str, Any]]:

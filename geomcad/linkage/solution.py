@@ -160,6 +160,9 @@ def results(s: Solved) -> dict[str, Any]:
         out["stroke"] = s.cycle.stroke
         out["K"] = s.cycle.K
     out["positions"] = [position_results(lk, P) for P in s.positions]
+    from geomcad.linkage.analysis import add_results  # forces and dynamics (issue 15)
+
+    add_results(s, out)
     return out
 
 

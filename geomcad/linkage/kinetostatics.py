@@ -1,0 +1,565 @@
+"""Kinetostatics of a linkage at one position, by Assur groups, and Zhukovsky's lever.
+
+At constant ω1 (ε1 = 0) every moving link carries its weight, its inertia loads Ф = −m·a_S and
+M_Ф = −J·ε (d'Alembert) and the file's loads (:mod:`geomcad.linkage.loads`). The reactions are
+found as the subject teaches, **from the last group to the crank**, each class-II group cut out
+with its neighbours' reactions (the loads that later groups put on its links included):
+
+- **RRR** (links a: E1–J, b: E2–J): the tangential components R^τ at E1 and E2 from the moment
+  equations of each link about the inner joint J, ΣM_J = 0; the normal components (along E1J,
+  E2J) from the group's force polygon R^τ_1 + ΣF_a + ΣF_b + R^τ_2 + R^n_2 + R^n_1 = 0, closed by
+  the two lines of known direction; the inner reaction from link a's polygon;
+- **RRP** (rod a: E–J, slider b on a guide of link g): R^τ at E from the rod's ΣM_J = 0; the
+  guide's reaction N (normal to the slide) and R^n (along EJ) from the group's polygon
+  R^τ + ΣF_a + ΣF_b + N + R^n = 0; the inner reaction from the slider's polygon; N's point of
+  application h along the slide from J by the slider's moment equation about J;
+- **RPR** (block a at A, slotted link b turning at C): the block's moment equation about A puts
+  the product h·N (N of b on a, normal to the slide, applied h along the slide from A); link b's
+  ΣM_C = 0 then gives N; the reactions at A and C close the block's and link b's polygons;
+- **PRP** (block a at A, yoke b on a fixed guide): the yoke's polygon ΣF_b + N_ab + N_0b = 0 is
+  closed by the two normals (to the slot and to the guide); the reaction at A closes the block's
+  polygon; the points of N_ab and N_0b from the block's and the yoke's moment equations;
+- **the crank**: R_01 closes its polygon, and the balancing moment M_bal (the moment the motor
+  applies to the crank) is its moment equation about the pivot.
+
+Each step is recorded in the position's :class:`~geomcad.construction.Construction` (``--trace``),
+the polygons through :func:`geomcad.forces.force_polygon`.
+
+**Zhukovsky's lever**: the velocity plan turned 90° counter-clockwise (pole p, the image of a
+point P at V_P turned), every load moved to its point's image, a moment M on link i as a couple of
+forces on the image of a segment of the link; the lever's moment equation about the pole gives
+the balancing force at the crank's joint's image, hence M_bal_lever. A force F at an image
+turned from V has the moment (V turned) × F = −F·V about the pole, so the lever's equation is
+the equation of powers: M_bal_lever = −ΣP/ω1 over the same loads, inertia loads included.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Iterable
+from dataclasses import dataclass, field
+from typing import Literal
+
+import numpy as np
+
+from geomcad.construction import Construction
+from geomcad.forces import ForcePolygon, Known, PlanVector, Unknown, force_polygon
+from geomcad.geom import Vec
+from geomcad.linkage.cycle import Cycle
+from geomcad.linkage.loads import (
+    Range,
+    centre_name,
+    centre_vec,
+    force_value,
+    ranges,
+    slider_group,
+)
+from geomcad.linkage.model import Group, Linkage
+from geomcad.linkage.plans import Position
+
+LoadKind = Literal["weight", "inertia", "given", "reaction"]
+
+
+@dataclass(frozen=True)
+class Applied:
+    """A load on a link: a force ``force`` (N) at ``at`` (its velocity ``velocity``), or a
+    moment ``moment`` (N·m, ccw > 0; ``force`` None). ``point`` names the mechanism point it
+    acts at ("" for a computed point)."""
+
+    name: str
+    link: int
+    kind: LoadKind
+    force: Vec | None = None
+    at: Vec | None = None
+    moment: float = 0.0
+    point: str = ""
+    velocity: Vec | None = None
+
+
+@dataclass(frozen=True)
+class Reaction:
+    """The force of link ``of`` on link ``on`` in their pair at ``joint`` (N), applied at
+    ``at``; ``sliding``: a sliding pair's reaction, normal to the slide (``h`` m along the slide
+    from ``joint``), else a revolute's through its axis."""
+
+    name: str
+    of: int
+    on: int
+    force: Vec
+    at: Vec
+    joint: str
+    sliding: bool = False
+    h: float = 0.0
+
+    @property
+    def key(self) -> tuple[int, int]:
+        return (min(self.of, self.on), max(self.of, self.on))
+
+    def on_lower(self) -> Vec:
+        """The force of the lower-numbered link on the higher one (the ``R_i_j`` of results)."""
+        return self.force if self.of < self.on else -self.force
+
+
+@dataclass
+class GroupForces:
+    """One group's (or the crank's, ``group`` None) free body: the loads on its links (their
+    own and the later groups' reactions), the reactions found, the polygons drawn."""
+
+    group: Group | None
+    links: tuple[int, ...]
+    loads: dict[int, list[Applied]]
+    reactions: list[Reaction] = field(default_factory=list)
+    polygons: list[tuple[str, ForcePolygon]] = field(default_factory=list)
+
+
+@dataclass(frozen=True)
+class LeverItem:
+    """One load on Zhukovsky's lever: its force at the image ``image`` (the turned velocity of
+    its point), its arm about the pole and its moment (the couples of a moment load too)."""
+
+    name: str
+    force: Vec
+    image: Vec
+    moment: float
+
+
+@dataclass
+class Lever:
+    """Zhukovsky's lever: the images (turned plan, m/s) of the mechanism's points, the loads on
+    it, the balancing force at the crank's joint's image (⊥ the crank) and M_bal_lever."""
+
+    images: dict[str, Vec]
+    items: list[LeverItem]
+    F_bal: Vec
+    M_bal: float
+    power: float  # ΣP over the same loads (W)
+
+
+@dataclass
+class Forces:
+    """The kinetostatics of one position: the loads on each link, the groups (last to first,
+    then the crank), every reaction, M_bal and the lever."""
+
+    phi: float
+    c: Construction
+    loads: dict[int, list[Applied]]
+    groups: list[GroupForces]
+    reactions: list[Reaction]
+    M_bal: float
+    lever: Lever
+
+    def R(self, i: int, j: int) -> Vec:
+        """R_i_j: the force of link i on link j (summed over their pairs)."""
+        total = Vec(0.0, 0.0)
+        found = False
+        for r in self.reactions:
+            if r.key == (min(i, j), max(i, j)):
+                found = True
+                f = r.on_lower()
+                total = total + (f if i < j else -f)
+        if not found:
+            raise KeyError(f"links {i} and {j} form no pair")
+        return total
+
+    @property
+    def pairs(self) -> list[tuple[int, int]]:
+        return sorted({r.key for r in self.reactions})
+
+
+# --- loads --------------------------------------------------------------------------------
+
+
+def applied_loads(
+    lk: Linkage, P: Position, rng: dict[str, Range], c: Construction
+) -> dict[int, list[Applied]]:
+    """The given loads of every moving link at position P: weights, inertia loads and the
+    file's loads (module docstring of :mod:`geomcad.linkage.loads`), recorded in ``c``."""
+    out: dict[int, list[Applied]] = {i: [] for i in lk.moving_links}
+    g = lk.gravity
+    for i in lk.moving_links:
+        m = lk.masses.get(i)
+        if m is None:
+            continue
+        S = centre_vec(lk, i, P.pos)
+        VS = centre_vec(lk, i, P.vel)
+        aS = centre_vec(lk, i, P.acc)
+        sn = centre_name(lk, i)
+        pt = lk.centre(i)
+        if m.mass > 0.0 and g > 0.0:
+            G = c.record(
+                f"G_{i}",
+                f"the weight of link {i}: m·g = {m.mass:g}·{g:g} N, down, at {sn}",
+                Vec(0.0, -m.mass * g),
+                role="hidden",
+            )
+            out[i].append(Applied(f"G_{{{i}}}", i, "weight", G, S, 0.0, pt, VS))
+        if m.mass > 0.0 and aS.norm > 0.0:
+            F = c.record(
+                f"Ф_{i}",
+                f"the inertia force of link {i}: −m·a_{sn} at {sn}",
+                aS * -m.mass,
+                role="hidden",
+            )
+            out[i].append(Applied(f"Ф_{{{i}}}", i, "inertia", F, S, 0.0, pt, VS))
+        eps = P.eps[i]
+        if m.J > 0.0 and eps != 0.0:
+            M = c.value(f"M_Ф{i}", -m.J * eps, f"the inertia moment of link {i}: −J·ε{i}")
+            out[i].append(Applied(f"M_{{Ф{i}}}", i, "inertia", None, None, M))
+    for ld in lk.loads:
+        if ld.point:
+            grp = slider_group(lk, ld.point)
+            line = P.lines[grp.index]
+            J = P.pos[ld.point]
+            s = (J - line.p).dot(line.d)
+            v = P.v_rel[ld.point]
+            f = float(force_value(lk, ld, rng[ld.point], np.array([s]), np.array([v]))[0])
+            if f == 0.0:
+                continue
+            link = lk.owner[ld.point]
+            F = c.record(
+                f"F_{ld.index}",
+                f"load {ld.index} on {ld.point}: {ld.value:g} N·shape(s/H) along the guide, "
+                f"against V (s = {s - rng[ld.point].s_min:.6g} m above s_min)",
+                line.d * f,
+                role="hidden",
+            )
+            out[link].append(
+                Applied(f"F_{{{ld.point}}}", link, "given", F, J, 0.0, ld.point, P.vel[ld.point])
+            )
+        else:
+            c.value(f"M_{ld.index}", ld.moment, f"load {ld.index}: a moment on link {ld.link}")
+            out[ld.link].append(Applied(f"M_{{{ld.link}}}", ld.link, "given", None, None, ld.moment))
+    return out
+
+
+def _sum(loads: Iterable[Applied]) -> Vec:
+    total = Vec(0.0, 0.0)
+    for ld in loads:
+        if ld.force is not None:
+            total = total + ld.force
+    return total
+
+
+def _moment(loads: Iterable[Applied], about: Vec) -> float:
+    total = 0.0
+    for ld in loads:
+        if ld.force is not None and ld.at is not None:
+            total += (ld.at - about).cross(ld.force)
+        else:
+            total += ld.moment
+    return total
+
+
+def _knowns(loads: Iterable[Applied]) -> list[Known]:
+    return [Known(ld.name, ld.force) for ld in loads if ld.force is not None]
+
+
+def _closing(c: Construction, name: str, knowns: list[Known], unknown: str, eq: str) -> Vec:
+    """A polygon with one unknown vector: the closing side from the chain's end to the pole."""
+    at = Vec(0.0, 0.0)
+    vectors: list[PlanVector] = []
+    for k in knowns:
+        vectors.append(PlanVector(k.name, at, at + k.force))
+        at = at + k.force
+    vectors.append(PlanVector(unknown, at, Vec(0.0, 0.0)))
+    poly = ForcePolygon(Vec(0.0, 0.0), tuple(vectors), ())
+    c.record(name, f"force polygon {eq}, closed by {unknown}", poly, role="hidden")
+    return -at
+
+
+# --- groups -------------------------------------------------------------------------------
+
+
+def _name(i: int, j: int) -> str:
+    return f"R_{{{i}{j}}}" if i < 10 and j < 10 else f"R_{{{i},{j}}}"
+
+
+class _Solver:
+    def __init__(self, lk: Linkage, P: Position, c: Construction) -> None:
+        self.lk, self.P, self.c = lk, P, c
+        self.reactions: list[Reaction] = []
+
+    def _react(
+        self,
+        gf: GroupForces,
+        of: int,
+        on: int,
+        F: Vec,
+        at: Vec,
+        joint: str,
+        on_loads: dict[int, list[Applied]],
+        sliding: bool = False,
+        h: float = 0.0,
+    ) -> None:
+        """Record the force of ``of`` on ``on``; its opposite goes on ``of``'s loads (an
+        earlier link) unless ``of`` is in the group or the frame."""
+        r = Reaction(_name(of, on), of, on, F, at, joint, sliding, h)
+        gf.reactions.append(r)
+        self.reactions.append(r)
+        self.c.record(
+            f"{r.name} at {joint}" + (f" ({of}→{on})" if sliding else ""),
+            f"the force of link {of} on link {on}"
+            + (f", normal to the slide, {h:.6g} m along it from {joint}" if sliding else ""),
+            F,
+            role="hidden",
+        )
+        if of != 0 and of not in gf.links:
+            vel = self._velocity(of, at)
+            on_loads[of].append(
+                Applied(_name(on, of), of, "reaction", -F, at, 0.0, joint if h == 0.0 else "", vel)
+            )
+
+    def _velocity(self, link: int, at: Vec) -> Vec:
+        """The velocity of the point of ``link`` at ``at`` (rigid body)."""
+        P = self.P
+        base = self.lk.link_points(link)[0]
+        return P.vel[base] + (at - P.pos[base]).perp() * P.omega[link]
+
+    def rrr(self, g: Group, gf: GroupForces, loads: dict[int, list[Applied]]) -> None:
+        c, P, own = self.c, self.P, self.lk.owner
+        a, b = g.links
+        (E1, E2), J = g.ends, g.joint
+        pJ = P.pos[J]
+        La, Lb = gf.loads[a], gf.loads[b]
+        out: list[tuple[Vec, Vec, float]] = []
+        for E, L, link, l in ((E1, La, a, g.lengths[0]), (E2, Lb, b, g.lengths[1])):
+            u = (pJ - P.pos[E]).unit()
+            t = u.perp()
+            M = _moment(L, pJ)
+            # (E − J) × (Rτ·t) = −l·Rτ  ⇒  Rτ = M_J(loads)/l
+            Rt = c.value(
+                f"{g.key}: R^τ_{own[E]}{link}",
+                M / l,
+                f"ΣM_{J}(link {link}) = 0: R^τ·l_{E}{J} = ΣM_{J} of its loads = {M:.6g} N·m",
+            )
+            out.append((u, t, Rt))
+        (u1, t1, Rt1), (u2, t2, Rt2) = out
+        o1, o2 = own[E1], own[E2]
+        terms = [
+            Known(f"R^τ_{{{o1}{a}}}", t1 * Rt1),
+            *_knowns(La),
+            *_knowns(Lb),
+            Known(f"R^τ_{{{o2}{b}}}", t2 * Rt2),
+            Unknown(f"R^n_{{{o2}{b}}}", u2),
+            Unknown(f"R^n_{{{o1}{a}}}", u1),
+        ]
+        poly = force_polygon(c, f"{g.key}: force polygon", terms)
+        gf.polygons.append((f"{g.key}: force polygon", poly))
+        R1 = t1 * Rt1 + u1 * poly.signed(f"R^n_{{{o1}{a}}}")
+        R2 = t2 * Rt2 + u2 * poly.signed(f"R^n_{{{o2}{b}}}")
+        Rba = _closing(
+            c,
+            f"{g.key}: polygon of link {a}",
+            [Known(_name(o1, a), R1), *_knowns(La)],
+            _name(b, a),
+            f"{_name(o1, a)} + ΣF_{a} + {_name(b, a)} = 0",
+        )
+        self._react(gf, o1, a, R1, P.pos[E1], E1, loads)
+        self._react(gf, o2, b, R2, P.pos[E2], E2, loads)
+        self._react(gf, b, a, Rba, pJ, J, loads)
+
+    def rrp(self, g: Group, gf: GroupForces, loads: dict[int, list[Applied]]) -> None:
+        c, P, own = self.c, self.P, self.lk.owner
+        assert g.guide is not None
+        a, b = g.links
+        E, J = g.ends[0], g.joint
+        pJ, pE = P.pos[J], P.pos[E]
+        La, Lb = gf.loads[a], gf.loads[b]
+        d = P.slide[b]
+        n_dir = d.perp()
+        u = (pJ - pE).unit()
+        t = u.perp()
+        l = g.lengths[0]
+        M = _moment(La, pJ)
+        Rt = c.value(
+            f"{g.key}: R^τ_{own[E]}{a}",
+            M / l,
+            f"ΣM_{J}(link {a}) = 0: R^τ·l_{E}{J} = ΣM_{J} of its loads = {M:.6g} N·m",
+        )
+        o, gl = own[E], g.guide.link
+        terms = [
+            Known(f"R^τ_{{{o}{a}}}", t * Rt),
+            *_knowns(La),
+            *_knowns(Lb),
+            Unknown(_name(gl, b), n_dir),
+            Unknown(f"R^n_{{{o}{a}}}", u),
+        ]
+        poly = force_polygon(c, f"{g.key}: force polygon", terms)
+        gf.polygons.append((f"{g.key}: force polygon", poly))
+        n = poly.signed(_name(gl, b))
+        N = n_dir * n
+        R = t * Rt + u * poly.signed(f"R^n_{{{o}{a}}}")
+        Rab = _closing(
+            c,
+            f"{g.key}: polygon of link {b}",
+            [*_knowns(Lb), Known(_name(gl, b), N)],
+            _name(a, b),
+            f"ΣF_{b} + {_name(gl, b)} + {_name(a, b)} = 0",
+        )
+        # the slider about J: ΣM_J(loads) + h·n = 0
+        Mb = _moment(Lb, pJ)
+        h = self._arm(f"{g.key}: h_{gl}{b}", -Mb, n, J, b)
+        self._react(gf, o, a, R, pE, E, loads)
+        self._react(gf, a, b, Rab, pJ, J, loads)
+        self._react(gf, gl, b, N, pJ + d * h, J, loads, sliding=True, h=h)
+
+    def _arm(self, name: str, couple: float, n: float, joint: str, link: int) -> float:
+        """h with h·n = couple: the point of a sliding pair's reaction along the slide."""
+        h = couple / n if n != 0.0 else 0.0
+        return self.c.value(
+            name,
+            h,
+            f"ΣM_{joint}(link {link}) = 0: the reaction's point, h m along the slide from {joint}",
+        )
+
+    def rpr(self, g: Group, gf: GroupForces, loads: dict[int, list[Applied]]) -> None:
+        c, P, own = self.c, self.P, self.lk.owner
+        a, b = g.links
+        A, C = g.slider, g.pivot
+        pA, pC = P.pos[A], P.pos[C]
+        d = P.slide[a]
+        n_dir = d.perp()
+        La, Lb = gf.loads[a], gf.loads[b]
+        MA = _moment(La, pA)  # the block about A: MA + h·n = 0 (N of b on a at A + h·d)
+        MC = _moment(Lb, pC)
+        arm = (pA - pC).dot(d)
+        n = c.value(
+            f"{g.key}: N_{b}{a}",
+            (MC + MA) / arm,
+            f"ΣM_{C}(link {b}) = 0 with the block's ΣM_{A} = 0: "
+            f"N·{arm:.6g} m = ΣM_{C}(link {b}) + ΣM_{A}(block {a})",
+        )
+        N = n_dir * n
+        h = self._arm(f"{g.key}: h_{b}{a}", -MA, n, A, a)
+        RC = _closing(
+            c,
+            f"{g.key}: polygon of link {b}",
+            [*_knowns(Lb), Known(_name(a, b), -N)],
+            _name(own[C], b),
+            f"ΣF_{b} + {_name(a, b)} + {_name(own[C], b)} = 0",
+        )
+        RA = _closing(
+            c,
+            f"{g.key}: polygon of link {a}",
+            [*_knowns(La), Known(_name(b, a), N)],
+            _name(own[A], a),
+            f"ΣF_{a} + {_name(b, a)} + {_name(own[A], a)} = 0",
+        )
+        self._react(gf, own[A], a, RA, pA, A, loads)
+        self._react(gf, b, a, N, pA + d * h, A, loads, sliding=True, h=h)
+        self._react(gf, own[C], b, RC, pC, C, loads)
+
+    def prp(self, g: Group, gf: GroupForces, loads: dict[int, list[Applied]]) -> None:
+        c, P, own = self.c, self.P, self.lk.owner
+        assert g.guide is not None
+        a, b = g.links
+        A, E = g.slider, g.joint
+        pA, pE = P.pos[A], P.pos[E]
+        sdir = P.slide[a]
+        gdir = g.guide.direction
+        La, Lb = gf.loads[a], gf.loads[b]
+        terms = [
+            *_knowns(Lb),
+            Unknown(_name(a, b), sdir.perp()),
+            Unknown(_name(0, b), gdir.perp()),
+        ]
+        poly = force_polygon(c, f"{g.key}: force polygon of link {b}", terms)
+        gf.polygons.append((f"{g.key}: force polygon of link {b}", poly))
+        Nab = sdir.perp() * poly.signed(_name(a, b))  # of a on b
+        N0b = gdir.perp() * poly.signed(_name(0, b))
+        RA = _closing(
+            c,
+            f"{g.key}: polygon of link {a}",
+            [*_knowns(La), Known(_name(b, a), -Nab)],
+            _name(own[A], a),
+            f"ΣF_{a} + {_name(b, a)} + {_name(own[A], a)} = 0",
+        )
+        # the block about A: ΣM_A + h1·n_ba = 0, N_ba = −N_ab along the slot's normal
+        n_ba = -poly.signed(_name(a, b))
+        h1 = self._arm(f"{g.key}: h_{b}{a}", -_moment(La, pA), n_ba, A, a)
+        at1 = pA + sdir * h1
+        # the yoke about E: ΣM_E(loads) + (at1 − E) × N_ab + h2·n_0b = 0
+        Mb = _moment(Lb, pE) + (at1 - pE).cross(Nab)
+        h2 = self._arm(f"{g.key}: h_0{b}", -Mb, poly.signed(_name(0, b)), E, b)
+        self._react(gf, own[A], a, RA, pA, A, loads)
+        self._react(gf, b, a, -Nab, at1, A, loads, sliding=True, h=h1)
+        self._react(gf, 0, b, N0b, pE + gdir * h2, E, loads, sliding=True, h=h2)
+
+    def crank(self, gf: GroupForces) -> float:
+        c, P, lk = self.c, self.P, self.lk
+        O = P.pos[lk.pivot]
+        L1 = gf.loads[1]
+        R01 = _closing(
+            c, "crank: polygon of link 1", _knowns(L1), _name(0, 1), "ΣF_1 + R_01 = 0"
+        )
+        M = c.value(
+            "M_bal",
+            -_moment(L1, O),
+            f"ΣM_{lk.pivot}(link 1) = 0: M_bal = −ΣM_{lk.pivot} of the loads on the crank",
+        )
+        self._react(gf, 0, 1, R01, O, lk.pivot, {})
+        return M
+
+
+def kinetostatics(lk: Linkage, P: Position, cyc: Cycle | None = None) -> Forces:
+    """The kinetostatics of position P (module docstring)."""
+    deg = math.degrees(P.phi) % 360.0
+    c = Construction(f"{lk.title}: kinetostatics at φ1 = {deg:.6g}°")
+    rng = ranges(lk, cyc)
+    given = applied_loads(lk, P, rng, c)
+    loads = {i: list(v) for i, v in given.items()}
+    sv = _Solver(lk, P, c)
+    groups: list[GroupForces] = []
+    for g in reversed(lk.groups):
+        gf = GroupForces(g, g.links, {i: list(loads[i]) for i in g.links})
+        {"RRR": sv.rrr, "RRP": sv.rrp, "RPR": sv.rpr, "PRP": sv.prp}[g.kind](g, gf, loads)
+        groups.append(gf)
+    gf1 = GroupForces(None, (1,), {1: list(loads[1])})
+    M_bal = sv.crank(gf1)
+    groups.append(gf1)
+    lever = zhukovsky(lk, P, given, c)
+    return Forces(P.phi, c, given, groups, sv.reactions, M_bal, lever)
+
+
+def zhukovsky(
+    lk: Linkage, P: Position, given: dict[int, list[Applied]], c: Construction
+) -> Lever:
+    """Zhukovsky's lever of position P under the given loads (module docstring)."""
+    images = {name: v.perp() for name, v in P.vel.items()}
+    for name, im in images.items():
+        c.record(f"lever: {name.lower()}", f"image of {name}: V_{name} turned 90° ccw", im,
+                 role="hidden")  # fmt: skip
+    items: list[LeverItem] = []
+    power = 0.0
+    for link, lds in given.items():
+        for ld in lds:
+            if ld.force is not None:
+                assert ld.velocity is not None
+                im = ld.velocity.perp()
+                m = im.cross(ld.force)
+                items.append(LeverItem(ld.name, ld.force, im, m))
+                power += ld.force.dot(ld.velocity)
+            else:
+                # the couple: ±F ⊥ a unit segment X–Y of the link at the images of X and Y
+                w = P.omega[link]
+                base = lk.link_points(link)[0]
+                u = Vec(1.0, 0.0)
+                F = u.perp() * ld.moment
+                vX = P.vel[base]
+                vY = vX + u.perp() * w
+                items.append(LeverItem(ld.name, F, vY.perp(), vY.perp().cross(F)))
+                items.append(LeverItem(ld.name, -F, vX.perp(), vX.perp().cross(-F)))
+                power += ld.moment * w
+    total = sum(it.moment for it in items)
+    O, A = P.pos[lk.pivot], P.pos[lk.joint]
+    e = (A - O).unit()
+    # F_bal = f·e⊥ at the image of A: its lever moment is −ω1·l·f; the lever balances
+    f = total / (lk.omega * lk.length)
+    F_bal = e.perp() * f
+    M = c.value(
+        "M_bal_lever",
+        f * lk.length,
+        "Zhukovsky's lever: Σ moments about p of the loads at their images + that of the "
+        "balancing force ⊥ OA at the image of the crank's joint = 0; M = F_bal·l_OA",
+    )
+    return Lever(images, items, F_bal, M, power)

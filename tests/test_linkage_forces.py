@@ -1,0 +1,546 @@
+"""Forces and the flywheel of linkage files (issue 15): kinetostatics by groups against one
+Newton–Euler system of the whole mechanism, M_bal against Zhukovsky's lever and −ΣP/ω1, a
+static case against hand statics, J_fw against the closed form computed here and the check by
+the equation of motion, and bad input through the CLI."""
+
+from __future__ import annotations
+
+import math
+import tomllib
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import pytest
+
+from geomcad.cli import main
+from geomcad.dynamics import Kinetostatics
+from geomcad.geom import Vec
+from geomcad.linkage import parse, sweep
+from geomcad.linkage.analysis import analyse
+from geomcad.linkage.kinetostatics import Forces, kinetostatics
+from geomcad.linkage.model import Linkage
+from geomcad.linkage.plans import Position
+from geomcad.linkage.solution import Solved, results, solve
+
+EXAMPLE = Path(__file__).resolve().parents[1] / "examples" / "sixbar-2013-6.toml"
+REL = 1e-9
+
+SLIDER_CRANK = """
+title = "slider-crank"
+gravity = 9.81
+[frame]
+O = [0.0, 0.0]
+[drive]
+pivot = "O"
+joint = "A"
+length = 0.1
+omega = 12.0
+phi = [30.0, 100.0, 200.0, 290.0]
+[[group]]
+kind = "RRP"
+links = [2, 3]
+joint = "B"
+end = "A"
+length = 0.4
+guide = { through = [0.0, -0.02], angle = 0.0 }
+assembly = "forward"
+[[point]]
+name = "K"
+link = 2
+from = "A"
+toward = "B"
+along = 0.15
+left = 0.03
+[links.1]
+mass = 2.0
+J = 0.01
+[links.2]
+mass = 4.0
+J = 0.06
+centre = "K"
+[links.3]
+mass = 8.0
+[[load]]
+point = "B"
+value = 1500.0
+shape = [[0.0, 0.2], [0.5, 1.0], [1.0, 0.6]]
+[[load]]
+link = 2
+moment = 7.0
+[dynamics]
+delta = 0.04
+flywheel = "rim"
+"""
+
+SLOTTED = """
+title = "slotted lever"
+gravity = 9.81
+[frame]
+O = [0.0, 0.0]
+C = [0.0, -0.35]
+[drive]
+pivot = "O"
+joint = "A"
+length = 0.12
+omega = -8.0
+positions = 8
+[[group]]
+kind = "RPR"
+links = [2, 3]
+slider = "A"
+pivot = "C"
+offset = 0.02
+[[point]]
+name = "D"
+link = 3
+from = "C"
+toward = "A"
+along = 0.6
+[[group]]
+kind = "RRP"
+links = [4, 5]
+joint = "E"
+end = "D"
+length = 0.25
+guide = { through = [0.0, 0.3], angle = 0.0 }
+assembly = "forward"
+[links.2]
+mass = 1.0
+J = 0.002
+[links.3]
+mass = 6.0
+J = 0.2
+[links.4]
+mass = 2.0
+J = 0.01
+[links.5]
+mass = 15.0
+[[load]]
+point = "E"
+value = 900.0
+working = "backward"
+[[load]]
+link = 3
+moment = -4.0
+[dynamics]
+delta = 0.08
+"""
+
+YOKE = """
+title = "scotch yoke"
+gravity = 9.81
+[frame]
+O = [0.0, 0.0]
+[drive]
+pivot = "O"
+joint = "A"
+length = 0.1
+omega = 15.0
+phi = [20.0, 75.0, 160.0, 250.0, 330.0]
+[[group]]
+kind = "PRP"
+links = [2, 3]
+slider = "A"
+slot_angle = 60.0
+guide = { through = [0.0, 0.05], angle = 10.0 }
+point = "E"
+[[point]]
+name = "K"
+link = 3
+from = "E"
+toward = "A"
+along = 0.05
+left = 0.02
+[links.2]
+mass = 0.5
+J = 0.001
+[links.3]
+mass = 5.0
+J = 0.02
+centre = "K"
+[[load]]
+point = "E"
+value = 800.0
+stroke = "both"
+"""
+
+MOVING_GUIDE = """
+title = "a slider on a rocker's guide"
+gravity = 9.81
+[frame]
+O = [0.0, 0.0]
+C = [0.3, 0.0]
+[drive]
+pivot = "O"
+joint = "A"
+length = 0.08
+omega = 10.0
+phi = [0.0, 70.0, 145.0, 215.0, 300.0]
+[[group]]
+kind = "RRR"
+links = [2, 3]
+joint = "B"
+ends = ["A", "C"]
+lengths = [0.3, 0.2]
+assembly = "left"
+[[group]]
+kind = "RRP"
+links = [4, 5]
+joint = "D"
+end = "A"
+length = 0.5
+guide = { link = 3, from = "C", toward = "B", offset = 0.01 }
+assembly = "forward"
+[links.2]
+mass = 3.0
+J = 0.03
+[links.3]
+mass = 2.0
+J = 0.01
+[links.4]
+mass = 2.5
+J = 0.05
+[links.5]
+mass = 1.5
+J = 0.004
+[[load]]
+point = "D"
+value = 300.0
+stroke = "idle"
+[[load]]
+link = 3
+moment = 5.0
+"""
+
+FILES = {"slider-crank": SLIDER_CRANK, "slotted": SLOTTED, "yoke": YOKE,
+         "moving-guide": MOVING_GUIDE}  # fmt: skip
+
+
+def load(text: str) -> Linkage:
+    return parse(tomllib.loads(text))
+
+
+def example() -> Linkage:
+    return parse(tomllib.loads(EXAMPLE.read_text(encoding="utf-8")))
+
+
+@pytest.fixture(scope="module", params=[*FILES, "example"])
+def solved(request: pytest.FixtureRequest) -> Solved:
+    name = request.param
+    return solve(example() if name == "example" else load(FILES[name]))
+
+
+# --- one Newton–Euler system of the whole mechanism ------------------------------------------
+
+
+def newton_euler(lk: Linkage, P: Position, f: Forces) -> tuple[dict[str, Any], float]:
+    """Every link's ΣF = 0, ΣM = 0 at once (geomcad.dynamics.Kinetostatics, least squares) under
+    the same given loads: each revolute an unknown force, each sliding pair a normal force and a
+    couple, the crank a balancing moment. Returns the reactions by pair and M_bal."""
+    ks = Kinetostatics("whole mechanism")
+    for i in lk.moving_links:
+        ks.body(str(i))
+        for ld in f.loads[i]:
+            if ld.force is not None:
+                ks.force(str(i), ld.name, ld.force, ld.at)
+            else:
+                ks.torque(str(i), ld.name, ld.moment)
+
+    def b(i: int) -> str | None:
+        return None if i == 0 else str(i)
+
+    own = lk.owner
+    pairs: dict[str, tuple[int, int, str, bool]] = {}
+
+    def joint(of: int, on: int, at: str) -> None:
+        name = f"{of}>{on}@{at}"
+        ks.joint(name, b(of), str(on), P.pos[at])
+        pairs[name] = (of, on, at, False)
+
+    def slide(of: int, on: int, at: str, normal: Vec) -> None:
+        name = f"{of}>{on}@{at}"
+        ks.contact(name, b(of), str(on), P.pos[at], normal)
+        ks.couple(name + ":couple", b(of), str(on))
+        pairs[name] = (of, on, at, True)
+
+    joint(0, 1, lk.pivot)
+    for g in lk.groups:
+        a, c = g.links
+        if g.kind == "RRR":
+            joint(own[g.ends[0]], a, g.ends[0])
+            joint(own[g.ends[1]], c, g.ends[1])
+            joint(c, a, g.joint)
+        elif g.kind == "RRP":
+            assert g.guide is not None
+            joint(own[g.ends[0]], a, g.ends[0])
+            joint(a, c, g.joint)
+            slide(g.guide.link, c, g.joint, P.slide[c].perp())
+        elif g.kind == "RPR":
+            joint(own[g.slider], a, g.slider)
+            slide(c, a, g.slider, P.slide[a].perp())
+            joint(own[g.pivot], c, g.pivot)
+        else:
+            assert g.guide is not None
+            joint(own[g.slider], a, g.slider)
+            slide(c, a, g.slider, P.slide[a].perp())
+            slide(0, c, g.joint, g.guide.direction.perp())
+    ks.balancing_torque("M_bal", "1")
+    sol = ks.solve()
+    out: dict[str, Any] = {}
+    for name, (of, on, at, sliding) in pairs.items():
+        out[name] = (sol.force(name), sol.moment(name + ":couple") if sliding else 0.0)
+    return out, sol.moment("M_bal")
+
+
+def close(a: float, b: float, scale: float, rel: float = REL) -> bool:
+    return abs(a - b) <= rel * max(scale, 1e-300)
+
+
+def test_groups_agree_with_one_newton_euler_system(solved: Solved) -> None:
+    lk = solved.linkage
+    a = analyse(solved)
+    assert a.forces is not None
+    for P, f in zip(solved.positions, a.forces, strict=True):
+        ne, M = newton_euler(lk, P, f)
+        scale = max(r.force.norm for r in f.reactions)
+        assert close(f.M_bal, M, scale * lk.length), (f.M_bal, M)
+        assert len(ne) == len(f.reactions)
+        for r in f.reactions:
+            F, couple = ne[f"{r.of}>{r.on}@{r.joint}"]
+            assert close(r.force.x, F.x, scale) and close(r.force.y, F.y, scale), (r, F)
+            # a sliding pair's reaction at its point = the normal force and a couple at the joint
+            assert close((r.at - P.pos[r.joint]).cross(r.force), couple, scale * lk.length)
+
+
+def test_m_bal_by_groups_lever_and_power(solved: Solved) -> None:
+    lk = solved.linkage
+    a = analyse(solved)
+    assert a.forces is not None
+    for P, f in zip(solved.positions, a.forces, strict=True):
+        # ΣP here, from the plans' velocities: forces at their points, moments by ω of the link
+        power = 0.0
+        for i, lds in f.loads.items():
+            for ld in lds:
+                if ld.force is not None:
+                    assert ld.at is not None
+                    base = lk.link_points(i)[0]
+                    V = P.vel[base] + (ld.at - P.pos[base]).perp() * P.omega[i]
+                    power += ld.force.dot(V)
+                else:
+                    power += ld.moment * P.omega[i]
+        by_power = -power / lk.omega
+        scale = max(abs(f.M_bal), sum(abs(it.moment) for it in f.lever.items) / abs(lk.omega))
+        assert close(f.M_bal, f.lever.M_bal, scale), (f.M_bal, f.lever.M_bal)
+        assert close(f.M_bal, by_power, scale), (f.M_bal, by_power)
+
+
+def test_inertia_loads_follow_the_sweep(solved: Solved) -> None:
+    """Ф = −m·a_S and M_Ф = −J·ε, with a_S from the numpy kernel (not the plans)."""
+    lk = solved.linkage
+    a = analyse(solved)
+    assert a.forces is not None
+    st = sweep(lk, [P.phi for P in solved.positions], order=2)
+    for k, f in enumerate(a.forces):
+        for i, m in lk.masses.items():
+            name = m.centre or lk.centre(i)
+            if name:
+                aS = st.acc[name][k]
+            else:
+                j1, j2 = lk.link_points(i)
+                aS = 0.5 * (st.acc[j1][k] + st.acc[j2][k])
+            inertia = [ld for ld in f.loads[i] if ld.kind == "inertia"]
+            forces = [ld.force for ld in inertia if ld.force is not None]
+            moments = [ld.moment for ld in inertia if ld.force is None]
+            if m.mass > 0 and np.hypot(*aS) > 0:
+                (F,) = forces
+                assert np.allclose([F.x, F.y], -m.mass * aS, rtol=1e-9, atol=1e-9 * m.mass)
+            eps = float(st.eps[i][k])
+            assert math.isclose(sum(moments), -m.J * eps, rel_tol=1e-9, abs_tol=1e-9)
+
+
+def test_results_carry_the_named_keys() -> None:
+    s = solve(example())
+    res = results(s)
+    pos = res["positions"]
+    assert len(pos) == 12
+    for row in pos:
+        for i, j in [(0, 1), (1, 2), (2, 3), (0, 3), (3, 4), (4, 5), (0, 5)]:
+            R = row[f"R_{i}_{j}"]
+            assert R >= 0.0
+            assert math.isclose(R, math.hypot(row[f"R_{i}_{j}_x"], row[f"R_{i}_{j}_y"]))
+        assert math.isclose(row["M_bal"], row["M_bal_lever"], rel_tol=REL, abs_tol=1e-9)
+    for key in ("A_cycle", "M_drive", "J_flywheel", "omega_max", "omega_min", "delta_achieved"):
+        assert isinstance(res[key], float), key
+    assert len(res["I_pr"]) == len(res["M_pr"]) == 12
+    # the resistance 2000 N over the working stroke H: its work per cycle is F·H
+    assert math.isclose(res["A_cycle"], 2000.0 * res["stroke"], rel_tol=1e-7)
+    assert math.isclose(res["M_drive"], res["A_cycle"] / (2 * math.pi), rel_tol=1e-12)
+    assert math.isclose(res["omega_max"], 10.0 * 1.025) and math.isclose(
+        res["omega_min"], 10.0 * 0.975
+    )
+
+
+def test_no_masses_no_loads_no_forces() -> None:
+    data = tomllib.loads(SLIDER_CRANK)
+    for key in ("links", "load", "dynamics"):
+        del data[key]
+    res = results(solve(parse(data)))
+    assert not any(k.startswith(("R_", "M_bal")) for k in res["positions"][0])
+    assert "J_flywheel" not in res
+
+
+# --- a static case against hand statics ---------------------------------------------------------
+
+
+def test_slow_slider_crank_against_hand_statics() -> None:
+    """ω1 → 0: the inertia loads vanish; the rod (massless) is a two-force member."""
+    w = 1.0e-7
+    data = tomllib.loads(SLIDER_CRANK)
+    data["drive"]["omega"] = w
+    data["drive"]["phi"] = [60.0]
+    data["links"] = {"1": {"mass": 2.0}, "3": {"mass": 8.0}}
+    data["load"] = [{"point": "B", "value": 1000.0, "stroke": "both"}]
+    del data["dynamics"]
+    del data["point"]
+    lk = parse(data)
+    s = solve(lk)
+    (f,) = analyse(s).forces or ()
+    g = 9.81
+    phi = math.radians(60.0)
+    A = Vec(0.1 * math.cos(phi), 0.1 * math.sin(phi))
+    B = Vec(A.x + math.sqrt(0.4**2 - (A.y + 0.02) ** 2), -0.02)
+    u = (B - A).unit()
+    # at 60°, ω > 0, the slider moves backward (−x): the load pushes it forward, +x
+    F = 1000.0
+    S = -F / u.x  # the rod's force on the slider, along u
+    N = 8.0 * g - S * u.y  # the guide holds the rest
+    M_bal = S * A.cross(u) + 2.0 * g * 0.05 * math.cos(phi)
+    tol = 1e-6
+    assert math.isclose(f.M_bal, M_bal, rel_tol=tol), (f.M_bal, M_bal)
+    R23 = f.R(2, 3)
+    assert math.isclose(R23.x, S * u.x, rel_tol=tol) and math.isclose(R23.y, S * u.y, rel_tol=tol)
+    R03 = f.R(0, 3)
+    assert abs(R03.x) <= tol and math.isclose(R03.y, N, rel_tol=tol)
+    R01 = f.R(0, 1)
+    assert math.isclose(R01.x, S * u.x, rel_tol=tol)
+    assert math.isclose(R01.y, S * u.y + 2.0 * g, rel_tol=tol)
+
+
+def test_slow_four_bar_with_a_moment_against_hand_statics() -> None:
+    data = {
+        "frame": {"O": [0.0, 0.0], "C": [0.3, 0.0]},
+        "drive": {"pivot": "O", "joint": "A", "length": 0.08, "omega": -1.0e-7, "phi": [40.0]},
+        "group": [{"kind": "RRR", "links": [2, 3], "joint": "B", "ends": ["A", "C"],
+                   "lengths": [0.3, 0.2], "assembly": "left"}],  # fmt: skip
+        "load": [{"link": 3, "moment": 12.0}],
+    }
+    lk = parse(data)
+    (P,) = solve(lk).positions
+    f = kinetostatics(lk, P)
+    A, B, C = P.pos["A"], P.pos["B"], P.pos["C"]
+    u = (B - A).unit()
+    fb = -12.0 / (B - C).cross(u)  # the coupler's force on the rocker at B, along u
+    assert math.isclose(f.M_bal, fb * A.cross(u), rel_tol=1e-6)
+    R23 = f.R(2, 3)
+    assert math.isclose(R23.x, fb * u.x, rel_tol=1e-6)
+    assert math.isclose(f.R(0, 3).y, -fb * u.y, rel_tol=1e-6)
+
+
+# --- dynamics -------------------------------------------------------------------------------
+
+
+def closed_form(lk: Linkage, n: int = 40000) -> tuple[float, float]:
+    """A_cycle and J_fw of the example by linkages.md, computed here on a grid of n steps."""
+    assert lk.dynamics is not None
+    s = solve(lk)
+    assert s.cycle is not None
+    sign = math.copysign(1.0, lk.omega)
+    psi = np.linspace(0.0, 2 * math.pi, n + 1)
+    st = sweep(lk, s.cycle.phi_start + sign * psi, order=1)
+    I = np.zeros_like(psi)
+    P = np.zeros_like(psi)
+    for i, m in lk.masses.items():
+        j = lk.link_points(i)
+        V = st.vel[j[0]] if len(j) == 1 else 0.5 * (st.vel[j[0]] + st.vel[j[1]])
+        I += m.mass * (V**2).sum(axis=1) + m.J * st.omega[i] ** 2
+        P += -m.mass * 9.81 * V[:, 1]
+    v = st.vel["C"][:, 0]
+    P += np.where(v > 1e-9, -2000.0 * v, 0.0)  # on the working (forward) stroke only
+    I /= lk.omega**2
+    Mpr = P / lk.omega
+    W = sign * np.concatenate([[0.0], np.cumsum(0.5 * (Mpr[1:] + Mpr[:-1]) * np.diff(psi))])
+    A = -W[-1]
+    dA = A / (2 * math.pi) * psi + W
+    w = abs(lk.omega)
+    d = lk.dynamics.delta
+    wmax, wmin = w * (1 + d / 2), w * (1 - d / 2)
+    J = (np.max(0.5 * wmin**2 * I - dA) - np.min(0.5 * wmax**2 * I - dA)) / (
+        0.5 * (wmax**2 - wmin**2)
+    )
+    return float(A), max(float(J), 0.0)
+
+
+def test_flywheel_by_wittenbauer_is_the_closed_form_and_keeps_delta() -> None:
+    lk = example()
+    fw = analyse(solve(lk)).flywheel
+    assert fw is not None
+    A, J = closed_form(lk)
+    assert math.isclose(fw.A_cycle, A, rel_tol=1e-7)
+    assert math.isclose(fw.J_flywheel, J, rel_tol=1e-6), (fw.J_flywheel, J)
+    # the tangents meet at O' = (−J_fw, −T0)
+    t1, t2 = fw.tangents
+    x = (t2.p - t1.p).cross(t2.d) / t1.d.cross(t2.d)
+    assert math.isclose((t1.p + t1.d * x).x, -fw.J_flywheel, rel_tol=1e-9)
+    # the equation of motion with this flywheel runs at the asked δ
+    assert lk.dynamics is not None
+    assert math.isclose(fw.delta_achieved, lk.dynamics.delta, rel_tol=1e-5), fw.delta_achieved
+    assert fw.omega_t is not None
+    assert math.isclose(float(np.max(fw.omega_t)), fw.omega_max, rel_tol=1e-6)
+    assert math.isclose(float(np.min(fw.omega_t)), fw.omega_min, rel_tol=1e-6)
+
+
+@pytest.mark.parametrize("name", ["slider-crank", "slotted"])
+def test_flywheel_of_hand_written_files(name: str) -> None:
+    lk = load(FILES[name])
+    s = solve(lk)
+    fw = analyse(s).flywheel
+    assert fw is not None and lk.dynamics is not None
+    assert fw.A_cycle > 0.0
+    assert fw.J_flywheel > 0.0
+    assert math.isclose(fw.delta_achieved, lk.dynamics.delta, rel_tol=1e-4), fw.delta_achieved
+    # the dimensions give back J
+    d = lk.dynamics
+    if d.flywheel == "disc":
+        J = math.pi * d.density * fw.b * fw.D**4 / 32
+    else:
+        J = fw.mass * fw.D**2 / 4
+    assert math.isclose(J, fw.J_flywheel, rel_tol=1e-12)
+    # M_pr·ω1 is the power of the loads and weights: zero over a cycle but for the resistance
+    assert len(fw.I_pr) == (lk.positions or 12)
+
+
+# --- bad input through the CLI ------------------------------------------------------------------
+
+BAD = [
+    (["links.2.mass=-1"], ["links.2.mass", "≥ 0"]),
+    (["dynamics.delta=1.5"], ["dynamics.delta", "< 1"]),
+    (["dynamics.delta=0"], ["dynamics.delta", "> 0"]),
+    (["load.1.point=Q"], ["load 1", "Q"]),
+]
+
+
+@pytest.mark.parametrize(("sets", "words"), BAD, ids=[s[0] for s, _ in BAD])
+def test_bad_input_is_one_error_line(
+    capsys: pytest.CaptureFixture[str], sets: list[str], words: list[str]
+) -> None:
+    argv = ["solve", str(EXAMPLE), "--json"]
+    for s in sets:
+        argv += ["--set", s]
+    code = main(argv)
+    out, err = capsys.readouterr()
+    assert code == 2 and out == ""
+    lines = err.splitlines()
+    assert len(lines) == 1 and lines[0].startswith("error: "), err
+    for w in words:
+        assert w in lines[0], (w, err)
