@@ -73,9 +73,8 @@ def make_problem(file_id: str, data: dict[str, Any]) -> Problem:
     def build(values: Mapping[str, ParamValue]) -> Build:
         s = solve(lk)
         res = results(s)
-        from geomcad.sheet.linkage import sheet_scales
-
         from geomcad.linkage.analysis import analyse
+        from geomcad.sheet.linkage import sheet_scales
 
         proto = Protocol(lk.title, [P.c for P in s.positions] + analyse(s).constructions)
         return Build(res, proto, [], sheet_scales(s), data=s)

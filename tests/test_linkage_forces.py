@@ -288,7 +288,7 @@ def newton_euler(lk: Linkage, P: Position, f: Forces) -> tuple[dict[str, Any], f
     ks.balancing_torque("M_bal", "1")
     sol = ks.solve()
     out: dict[str, Any] = {}
-    for name, (of, on, at, sliding) in pairs.items():
+    for name, (_of, _on, _at, sliding) in pairs.items():
         out[name] = (sol.force(name), sol.moment(name + ":couple") if sliding else 0.0)
     return out, sol.moment("M_bal")
 
@@ -431,8 +431,16 @@ def test_slow_four_bar_with_a_moment_against_hand_statics() -> None:
     data = {
         "frame": {"O": [0.0, 0.0], "C": [0.3, 0.0]},
         "drive": {"pivot": "O", "joint": "A", "length": 0.08, "omega": -1.0e-7, "phi": [40.0]},
-        "group": [{"kind": "RRR", "links": [2, 3], "joint": "B", "ends": ["A", "C"],
-                   "lengths": [0.3, 0.2], "assembly": "left"}],  # fmt: skip
+        "group": [
+            {
+                "kind": "RRR",
+                "links": [2, 3],
+                "joint": "B",
+                "ends": ["A", "C"],
+                "lengths": [0.3, 0.2],
+                "assembly": "left",
+            }
+        ],
         "load": [{"link": 3, "moment": 12.0}],
     }
     lk = parse(data)
@@ -458,16 +466,16 @@ def closed_form(lk: Linkage, n: int = 40000) -> tuple[float, float]:
     sign = math.copysign(1.0, lk.omega)
     psi = np.linspace(0.0, 2 * math.pi, n + 1)
     st = sweep(lk, s.cycle.phi_start + sign * psi, order=1)
-    I = np.zeros_like(psi)
+    inertia = np.zeros_like(psi)
     P = np.zeros_like(psi)
     for i, m in lk.masses.items():
         j = lk.link_points(i)
         V = st.vel[j[0]] if len(j) == 1 else 0.5 * (st.vel[j[0]] + st.vel[j[1]])
-        I += m.mass * (V**2).sum(axis=1) + m.J * st.omega[i] ** 2
+        inertia += m.mass * (V**2).sum(axis=1) + m.J * st.omega[i] ** 2
         P += -m.mass * 9.81 * V[:, 1]
     v = st.vel["C"][:, 0]
     P += np.where(v > 1e-9, -2000.0 * v, 0.0)  # on the working (forward) stroke only
-    I /= lk.omega**2
+    inertia /= lk.omega**2
     Mpr = P / lk.omega
     W = sign * np.concatenate([[0.0], np.cumsum(0.5 * (Mpr[1:] + Mpr[:-1]) * np.diff(psi))])
     A = -W[-1]
@@ -475,7 +483,7 @@ def closed_form(lk: Linkage, n: int = 40000) -> tuple[float, float]:
     w = abs(lk.omega)
     d = lk.dynamics.delta
     wmax, wmin = w * (1 + d / 2), w * (1 - d / 2)
-    J = (np.max(0.5 * wmin**2 * I - dA) - np.min(0.5 * wmax**2 * I - dA)) / (
+    J = (np.max(0.5 * wmin**2 * inertia - dA) - np.min(0.5 * wmax**2 * inertia - dA)) / (
         0.5 * (wmax**2 - wmin**2)
     )
     return float(A), max(float(J), 0.0)

@@ -25,6 +25,7 @@ from geomcad.linkage.kinetostatics import Forces, kinetostatics
 if TYPE_CHECKING:
     from geomcad.linkage.solution import Solved
 
+
 @dataclass(frozen=True)
 class Analysis:
     """The kinetostatics of each result position (``None`` without masses and loads) and the

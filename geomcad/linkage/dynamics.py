@@ -13,7 +13,7 @@ Over the numbered positions and over a dense sweep of a turn at constant ω1:
 - ω_max,min = |ω1|·(1 ± δ/2); the smallest flywheel that keeps ω within them over the whole
   cycle, J_fw = (max_ψ[½ω_min²·I_pr − ΔA] − min_ψ[½ω_max²·I_pr − ΔA]) / (½(ω_max² − ω_min²)),
   0 when that is negative. Each extreme is refined off the dense sweep by a bounded scalar search
-  (ΔA between samples by ``quad``).
+  (ΔA between samples by Gauss–Legendre).
 
 **Wittenbauer's energy–mass diagram** ΔT(I_pr) (ΔT = ΔA, the machine's kinetic energy over its
 value at position 0) constructs the same number: the tangent of slope ½ω_max² that leaves every
@@ -38,11 +38,10 @@ from dataclasses import dataclass
 
 import numpy as np
 import numpy.typing as npt
-from scipy.integrate import cumulative_trapezoid, quad, solve_ivp
+from scipy.integrate import cumulative_trapezoid, solve_ivp
 from scipy.interpolate import CubicSpline
 from scipy.optimize import minimize_scalar
 
-from geomcad import tol
 from geomcad.construction import Construction
 from geomcad.errors import ConstructionError
 from geomcad.geom import Line, Vec
@@ -62,8 +61,12 @@ Arr = npt.NDArray[np.float64]
 
 #: Samples of a turn in the dense sweep (ψ from 0 to 2π, both ends).
 DENSE = 8192
+#: Gauss–Legendre nodes for ΔA between the sweep's samples.
+GAUSS = 8
 #: Turns integrated by the check.
 CYCLES = 3
+#: The check's relative tolerance (δ is read to about 1e-8).
+ODE_RTOL = 1.0e-10
 #: Samples of the last turn read for ω's extremes.
 OMEGA_SAMPLES = 20001
 
@@ -160,13 +163,16 @@ def dynamics(lk: Linkage, cyc: Cycle | None, positions: int) -> Flywheel:
     w_max, w_min = w * (1.0 + delta / 2.0), w * (1.0 - delta / 2.0)
     k_max, k_min = 0.5 * w_max**2, 0.5 * w_min**2
 
+    gx, gw = np.polynomial.legendre.leggauss(GAUSS)
+
     def dA_at(x: float) -> float:
-        """ΔA at any ψ: the nearest sample's plus quad over the rest."""
+        """ΔA at any ψ: the nearest sample's plus Gauss–Legendre over the rest (less than half
+        a step of the sweep)."""
         k = int(np.clip(round(x / (psi[1] - psi[0])), 0, DENSE))
-        extra, _ = quad(
-            lambda y: float(at(y).M_pr[0]), float(psi[k]), x, epsabs=0.0, epsrel=tol.QUAD_REL
-        )
-        return float(dA[k] + M_drive * (x - psi[k]) + sign * extra)
+        lo = float(psi[k])
+        half = 0.5 * (x - lo)
+        extra = half * float(np.dot(gw, at(lo + half * (gx + 1.0)).M_pr))
+        return float(dA[k] + M_drive * (x - lo) + sign * extra)
 
     def extreme(kk: float, largest: bool) -> tuple[float, float, float]:
         """ψ, I_pr and ΔA where k·I_pr − ΔA is largest (or smallest), refined."""
@@ -211,8 +217,8 @@ def dynamics(lk: Linkage, cyc: Cycle | None, positions: int) -> Flywheel:
     ab = c.value("ab", a_pt.y - b_pt.y, "the segment the tangents cut on the ΔT axis (J)")
     J = c.value("J_flywheel", max(ab / (k_max - k_min), 0.0), "ab / (½(ω_max² − ω_min²)), ≥ 0")
     if ab > 0.0:
-        O = c.intersect("O'", t_hi, t_lo, op="the tangents meet at (−J_fw, −T0)")
-        T0 = -O.y
+        origin = c.intersect("O'", t_hi, t_lo, op="the tangents meet at (−J_fw, −T0)")
+        T0 = -origin.y
     else:
         T0 = J * k_min + (k_min * I_lo - A_lo)
     c.value("T0", T0, "the energy of the machine with its flywheel at position 0")
@@ -271,8 +277,8 @@ def check(lk: Linkage, fw: Flywheel) -> None:
         (0.0, (CYCLES + 1) * t_turn * 2.0),
         [0.0, w0],
         method="DOP853",
-        rtol=tol.ODE_RTOL,
-        atol=tol.ODE_ATOL,
+        rtol=ODE_RTOL,
+        atol=ODE_RTOL * fw.omega_max,
         dense_output=True,
         events=[turn(CYCLES - 1, False), turn(CYCLES, True)],
     )

@@ -43,7 +43,7 @@ from typing import Literal
 import numpy as np
 
 from geomcad.construction import Construction
-from geomcad.forces import ForcePolygon, Known, PlanVector, Unknown, force_polygon
+from geomcad.forces import ForcePolygon, Known, PlanVector, Term, Unknown, force_polygon
 from geomcad.geom import Vec
 from geomcad.linkage.cycle import Cycle
 from geomcad.linkage.loads import (
@@ -228,7 +228,9 @@ def applied_loads(
             )
         else:
             c.value(f"M_{ld.index}", ld.moment, f"load {ld.index}: a moment on link {ld.link}")
-            out[ld.link].append(Applied(f"M_{{{ld.link}}}", ld.link, "given", None, None, ld.moment))
+            out[ld.link].append(
+                Applied(f"M_{{{ld.link}}}", ld.link, "given", None, None, ld.moment)
+            )
     return out
 
 
@@ -322,20 +324,20 @@ class _Solver:
         pJ = P.pos[J]
         La, Lb = gf.loads[a], gf.loads[b]
         out: list[tuple[Vec, Vec, float]] = []
-        for E, L, link, l in ((E1, La, a, g.lengths[0]), (E2, Lb, b, g.lengths[1])):
+        for E, L, link, length in ((E1, La, a, g.lengths[0]), (E2, Lb, b, g.lengths[1])):
             u = (pJ - P.pos[E]).unit()
             t = u.perp()
             M = _moment(L, pJ)
             # (E − J) × (Rτ·t) = −l·Rτ  ⇒  Rτ = M_J(loads)/l
             Rt = c.value(
                 f"{g.key}: R^τ_{own[E]}{link}",
-                M / l,
+                M / length,
                 f"ΣM_{J}(link {link}) = 0: R^τ·l_{E}{J} = ΣM_{J} of its loads = {M:.6g} N·m",
             )
             out.append((u, t, Rt))
         (u1, t1, Rt1), (u2, t2, Rt2) = out
         o1, o2 = own[E1], own[E2]
-        terms = [
+        terms: list[Term] = [
             Known(f"R^τ_{{{o1}{a}}}", t1 * Rt1),
             *_knowns(La),
             *_knowns(Lb),
@@ -369,15 +371,14 @@ class _Solver:
         n_dir = d.perp()
         u = (pJ - pE).unit()
         t = u.perp()
-        l = g.lengths[0]
         M = _moment(La, pJ)
         Rt = c.value(
             f"{g.key}: R^τ_{own[E]}{a}",
-            M / l,
+            M / g.lengths[0],
             f"ΣM_{J}(link {a}) = 0: R^τ·l_{E}{J} = ΣM_{J} of its loads = {M:.6g} N·m",
         )
         o, gl = own[E], g.guide.link
-        terms = [
+        terms: list[Term] = [
             Known(f"R^τ_{{{o}{a}}}", t * Rt),
             *_knowns(La),
             *_knowns(Lb),
@@ -458,7 +459,7 @@ class _Solver:
         sdir = P.slide[a]
         gdir = g.guide.direction
         La, Lb = gf.loads[a], gf.loads[b]
-        terms = [
+        terms: list[Term] = [
             *_knowns(Lb),
             Unknown(_name(a, b), sdir.perp()),
             Unknown(_name(0, b), gdir.perp()),
@@ -487,17 +488,15 @@ class _Solver:
 
     def crank(self, gf: GroupForces) -> float:
         c, P, lk = self.c, self.P, self.lk
-        O = P.pos[lk.pivot]
+        pO = P.pos[lk.pivot]
         L1 = gf.loads[1]
-        R01 = _closing(
-            c, "crank: polygon of link 1", _knowns(L1), _name(0, 1), "ΣF_1 + R_01 = 0"
-        )
+        R01 = _closing(c, "crank: polygon of link 1", _knowns(L1), _name(0, 1), "ΣF_1 + R_01 = 0")
         M = c.value(
             "M_bal",
-            -_moment(L1, O),
+            -_moment(L1, pO),
             f"ΣM_{lk.pivot}(link 1) = 0: M_bal = −ΣM_{lk.pivot} of the loads on the crank",
         )
-        self._react(gf, 0, 1, R01, O, lk.pivot, {})
+        self._react(gf, 0, 1, R01, pO, lk.pivot, {})
         return M
 
 
@@ -521,9 +520,7 @@ def kinetostatics(lk: Linkage, P: Position, cyc: Cycle | None = None) -> Forces:
     return Forces(P.phi, c, given, groups, sv.reactions, M_bal, lever)
 
 
-def zhukovsky(
-    lk: Linkage, P: Position, given: dict[int, list[Applied]], c: Construction
-) -> Lever:
+def zhukovsky(lk: Linkage, P: Position, given: dict[int, list[Applied]], c: Construction) -> Lever:
     """Zhukovsky's lever of position P under the given loads (module docstring)."""
     images = {name: v.perp() for name, v in P.vel.items()}
     for name, im in images.items():
@@ -551,8 +548,7 @@ def zhukovsky(
                 items.append(LeverItem(ld.name, -F, vX.perp(), vX.perp().cross(-F)))
                 power += ld.moment * w
     total = sum(it.moment for it in items)
-    O, A = P.pos[lk.pivot], P.pos[lk.joint]
-    e = (A - O).unit()
+    e = (P.pos[lk.joint] - P.pos[lk.pivot]).unit()
     # F_bal = f·e⊥ at the image of A: its lever moment is −ω1·l·f; the lever balances
     f = total / (lk.omega * lk.length)
     F_bal = e.perp() * f
