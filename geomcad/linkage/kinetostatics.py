@@ -216,10 +216,12 @@ def applied_loads(
             if f == 0.0:
                 continue
             link = lk.owner[ld.point]
+            r = rng[ld.point]
+            s_w = s - r.s_min if lk.working == "forward" else r.s_max - s
             F = c.record(
                 f"F_{ld.index}",
                 f"load {ld.index} on {ld.point}: {ld.value:g} N·shape(s/H) along the guide, "
-                f"against V (s = {s - rng[ld.point].s_min:.6g} m above s_min)",
+                f"against V; s = {s_w:.6g} m from the working stroke's start, H = {r.H:.6g} m",
                 line.d * f,
                 role="hidden",
             )
@@ -547,6 +549,12 @@ def zhukovsky(lk: Linkage, P: Position, given: dict[int, list[Applied]], c: Cons
                 items.append(LeverItem(ld.name, F, vY.perp(), vY.perp().cross(F)))
                 items.append(LeverItem(ld.name, -F, vX.perp(), vX.perp().cross(-F)))
                 power += ld.moment * w
+    for k, it in enumerate(items, start=1):
+        c.value(
+            f"lever: M_p({it.name}) {k}",
+            it.moment,
+            f"the moment about p of {it.name} at its image ({it.image.x:.6g}, {it.image.y:.6g})",
+        )
     total = sum(it.moment for it in items)
     e = (P.pos[lk.joint] - P.pos[lk.pivot]).unit()
     # F_bal = f·e⊥ at the image of A: its lever moment is −ω1·l·f; the lever balances
