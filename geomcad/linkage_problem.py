@@ -84,8 +84,10 @@ def make_problem(file_id: str, data: dict[str, Any]) -> Problem:
 
         solved: Solved = sol.data
         from geomcad.documents import stem
+        from geomcad.sheet.linkage_forces import force_sheets  # sheets 2 and 3 (issue 15)
 
-        return kinematic_sheets(solved, sol.scales, stem(file_id))
+        kinematic = kinematic_sheets(solved, sol.scales, stem(file_id))
+        return kinematic + force_sheets(solved, stem(file_id), first_no=len(kinematic) + 1)
 
     def motion(sol: Solution, frames: int) -> Any:
         from geomcad.sheet.linkage import motion as linkage_motion

@@ -552,3 +552,25 @@ def test_bad_input_is_one_error_line(
     assert len(lines) == 1 and lines[0].startswith("error: "), err
     for w in words:
         assert w in lines[0], (w, err)
+
+
+# --- sheets 2 and 3 -------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("name", ["example", "yoke", "moving-guide", "slotted"])
+def test_force_and_dynamics_sheets_pass_the_layout_checker(name: str) -> None:
+    from layout import labels, layout_problems
+
+    from geomcad.sheet.linkage_forces import force_sheets
+
+    lk = example() if name == "example" else load(FILES[name])
+    s = solve(lk)
+    sheets = force_sheets(s, first_no=2)
+    names = [n for n, _ in sheets]
+    assert names == (["forces", "dynamics"] if lk.dynamics is not None else ["forces"])
+    for _, sheet in sheets:
+        assert sheet.width == 841.0  # type: ignore[attr-defined]
+        assert layout_problems(sheet) == []  # type: ignore[arg-type]
+    texts = {t.text for t in sheets[0][1].texts()}  # type: ignore[attr-defined]
+    assert "Рычаг Жуковского" in texts
+    assert any(t.startswith("R") for t in labels(sheets[0][1]))  # type: ignore[arg-type]

@@ -258,8 +258,11 @@ def _knowns(loads: Iterable[Applied]) -> list[Known]:
     return [Known(ld.name, ld.force) for ld in loads if ld.force is not None]
 
 
-def _closing(c: Construction, name: str, knowns: list[Known], unknown: str, eq: str) -> Vec:
-    """A polygon with one unknown vector: the closing side from the chain's end to the pole."""
+def _closing(
+    c: Construction, gf: GroupForces, name: str, knowns: list[Known], unknown: str, eq: str
+) -> Vec:
+    """A polygon with one unknown vector: the closing side from the chain's end to the pole
+    (kept with the group's polygons)."""
     at = Vec(0.0, 0.0)
     vectors: list[PlanVector] = []
     for k in knowns:
@@ -268,6 +271,7 @@ def _closing(c: Construction, name: str, knowns: list[Known], unknown: str, eq: 
     vectors.append(PlanVector(unknown, at, Vec(0.0, 0.0)))
     poly = ForcePolygon(Vec(0.0, 0.0), tuple(vectors), ())
     c.record(name, f"force polygon {eq}, closed by {unknown}", poly, role="hidden")
+    gf.polygons.append((name, poly))
     return -at
 
 
@@ -353,6 +357,7 @@ class _Solver:
         R2 = t2 * Rt2 + u2 * poly.signed(f"R^n_{{{o2}{b}}}")
         Rba = _closing(
             c,
+            gf,
             f"{g.key}: polygon of link {a}",
             [Known(_name(o1, a), R1), *_knowns(La)],
             _name(b, a),
@@ -394,6 +399,7 @@ class _Solver:
         R = t * Rt + u * poly.signed(f"R^n_{{{o}{a}}}")
         Rab = _closing(
             c,
+            gf,
             f"{g.key}: polygon of link {b}",
             [*_knowns(Lb), Known(_name(gl, b), N)],
             _name(a, b),
@@ -436,6 +442,7 @@ class _Solver:
         h = self._arm(f"{g.key}: h_{b}{a}", -MA, n, A, a)
         RC = _closing(
             c,
+            gf,
             f"{g.key}: polygon of link {b}",
             [*_knowns(Lb), Known(_name(a, b), -N)],
             _name(own[C], b),
@@ -443,6 +450,7 @@ class _Solver:
         )
         RA = _closing(
             c,
+            gf,
             f"{g.key}: polygon of link {a}",
             [*_knowns(La), Known(_name(b, a), N)],
             _name(own[A], a),
@@ -472,6 +480,7 @@ class _Solver:
         N0b = gdir.perp() * poly.signed(_name(0, b))
         RA = _closing(
             c,
+            gf,
             f"{g.key}: polygon of link {a}",
             [*_knowns(La), Known(_name(b, a), -Nab)],
             _name(own[A], a),
@@ -492,7 +501,9 @@ class _Solver:
         c, P, lk = self.c, self.P, self.lk
         pO = P.pos[lk.pivot]
         L1 = gf.loads[1]
-        R01 = _closing(c, "crank: polygon of link 1", _knowns(L1), _name(0, 1), "ΣF_1 + R_01 = 0")
+        R01 = _closing(
+            c, gf, "crank: polygon of link 1", _knowns(L1), _name(0, 1), "ΣF_1 + R_01 = 0"
+        )
         M = c.value(
             "M_bal",
             -_moment(L1, pO),
@@ -539,12 +550,16 @@ def zhukovsky(lk: Linkage, P: Position, given: dict[int, list[Applied]], c: Cons
                 items.append(LeverItem(ld.name, ld.force, im, m))
                 power += ld.force.dot(ld.velocity)
             else:
-                # the couple: ±F ⊥ a unit segment X–Y of the link at the images of X and Y
+                # the couple: ±F ⊥ a segment X–Y of the link at the images of X and Y
                 w = P.omega[link]
-                base = lk.link_points(link)[0]
-                u = Vec(1.0, 0.0)
-                F = u.perp() * ld.moment
-                vX = P.vel[base]
+                pts = lk.link_points(link)
+                X = P.pos[pts[0]]
+                if len(pts) > 1 and P.pos[pts[1]].dist(X) > 0.0:
+                    u = P.pos[pts[1]] - X
+                else:
+                    u = (P.slide[link] if link in P.slide else Vec(1.0, 0.0)) * lk.length
+                F = u.perp() * (ld.moment / u.dot(u))
+                vX = P.vel[pts[0]]
                 vY = vX + u.perp() * w
                 items.append(LeverItem(ld.name, F, vY.perp(), vY.perp().cross(F)))
                 items.append(LeverItem(ld.name, -F, vX.perp(), vX.perp().cross(-F)))
