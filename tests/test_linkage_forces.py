@@ -557,20 +557,43 @@ def test_bad_input_is_one_error_line(
 # --- sheets 2 and 3 -------------------------------------------------------------------------
 
 
-@pytest.mark.parametrize("name", ["example", "yoke", "moving-guide", "slotted"])
-def test_force_and_dynamics_sheets_pass_the_layout_checker(name: str) -> None:
-    from layout import labels, layout_problems
+GOLDEN = Path(__file__).parent / "golden" / "linkage"
 
+
+@pytest.mark.parametrize("name", ["example", "yoke", "moving-guide", "slotted"])
+def test_force_and_dynamics_sheets(name: str, update_golden: bool) -> None:
+    """The layout checker passes; the example's sheets match their golden files."""
+    from layout import labels, layout_problems
+    from test_golden import UPDATE_CMD, svg_difference
+
+    from geomcad.render import to_svg
     from geomcad.sheet.linkage_forces import force_sheets
+    from geomcad.sheet.model import Sheet
 
     lk = example() if name == "example" else load(FILES[name])
     s = solve(lk)
-    sheets = force_sheets(s, first_no=2)
-    names = [n for n, _ in sheets]
-    assert names == (["forces", "dynamics"] if lk.dynamics is not None else ["forces"])
+    sheets = [(n, sh) for n, sh in force_sheets(s, EXAMPLE.stem, first_no=2)]
+    assert [n for n, _ in sheets] == (
+        ["forces", "dynamics"] if lk.dynamics is not None else ["forces"]
+    )
     for _, sheet in sheets:
-        assert sheet.width == 841.0  # type: ignore[attr-defined]
-        assert layout_problems(sheet) == []  # type: ignore[arg-type]
-    texts = {t.text for t in sheets[0][1].texts()}  # type: ignore[attr-defined]
-    assert "Рычаг Жуковского" in texts
-    assert any(t.startswith("R") for t in labels(sheets[0][1]))  # type: ignore[arg-type]
+        assert isinstance(sheet, Sheet)
+        assert sheet.width == 841.0
+        assert layout_problems(sheet) == []
+    first = sheets[0][1]
+    assert isinstance(first, Sheet)
+    assert "Рычаг Жуковского" in {t.text for t in first.texts()}
+    assert any(t.startswith("R") for t in labels(first))
+    if name != "example":
+        return
+    for n, sheet in sheets:
+        assert isinstance(sheet, Sheet)
+        path = GOLDEN / f"{EXAMPLE.stem}-{n}.svg"
+        svg = to_svg(sheet)
+        if update_golden:
+            GOLDEN.mkdir(parents=True, exist_ok=True)
+            path.write_text(svg, encoding="utf-8")
+            continue
+        assert path.exists(), f"no golden file {path}: run `{UPDATE_CMD}`"
+        diff = svg_difference(svg, path.read_text(encoding="utf-8"))
+        assert diff is None, f"{path.name} differs from its golden file: {diff}"

@@ -24,6 +24,7 @@ import math
 from collections.abc import Sequence
 
 import numpy as np
+import numpy.typing as npt
 
 from geomcad.forces import ForcePolygon
 from geomcad.geom import Vec
@@ -398,7 +399,7 @@ def _sheet3(d: Drawing, s: Solved, fw: Flywheel) -> None:
         gr = Graph(d, ax, ay, (x0 + 12.0, top + ay.mm(ay.hi - ay.zero)))
         gr.axes(tick_labels=True)
         for j, c in enumerate(curves):
-            gr.curve(deg, c, "result" if j == 0 else "construction")
+            gr.curve(_thin(deg), _thin(c), "result" if j == 0 else "construction")
         for xx, yy in zip(np.degrees(gx), gy, strict=True):
             gr.point(float(xx), float(yy))
         d.text(f"{ay.factor_text()};  {ax.factor_text()}", (x1, y0 + i * h + 5.0), 2.5,
@@ -406,6 +407,17 @@ def _sheet3(d: Drawing, s: Solved, fw: Flywheel) -> None:
     _wittenbauer(d, fw)
     _omega(d, lk, fw)
     _table3(d, lk, fw)
+
+
+#: At most about this many points of a curve are drawn.
+CURVE_POINTS = 720
+
+
+def _thin(y: npt.NDArray[np.float64]) -> npt.NDArray[np.float64]:
+    """Every k-th sample of a dense curve, its last one kept."""
+    k = max(1, len(y) // CURVE_POINTS)
+    out = y[::k]
+    return out if (len(y) - 1) % k == 0 else np.append(out, y[-1])
 
 
 def _wittenbauer(d: Drawing, fw: Flywheel) -> None:
@@ -431,7 +443,7 @@ def _wittenbauer(d: Drawing, fw: Flywheel) -> None:
     )
     gr = Graph(d, ax, ay, (bx0 + 20.0, by0 + TITLE_ROOM + 16.0 + ay.mm(ay.hi - ay.zero)))
     gr.axes(tick_labels=True)
-    gr.curve(I, T, "result")
+    gr.curve(_thin(I), _thin(T), "result")
     for y0, slope in ((a, k_max), (b, k_min)):
         x_end = min(i_hi, (ay.hi - y0) / slope) if slope > 0.0 else i_hi
         if x_end > 0.0:
@@ -460,7 +472,7 @@ def _omega(d: Drawing, lk: Linkage, fw: Flywheel) -> None:
     )
     gr = Graph(d, ax, ay, (bx0 + 16.0, by0 + TITLE_ROOM + 10.0 + ay.mm(ay.hi - ay.lo)))
     gr.axes(tick_labels=True)
-    gr.curve(np.degrees(fw.omega_psi), fw.omega_t, "result")
+    gr.curve(_thin(np.degrees(fw.omega_psi)), _thin(fw.omega_t), "result")
     for w in (fw.omega_max, fw.omega_min):
         gr.curve([0.0, 360.0], [w, w], "construction")
 
