@@ -188,6 +188,12 @@ def _bodies(lk: Linkage, P: Position, links: Sequence[int]) -> dict[str, list[Bo
             foot = C + d.perp() * g.offset
             out[str(link)] = [Body.of([C, foot, foot + d * (far * 1.15)])]
             continue
+        extra: list[Body] = []
+        if g is not None and g.kind == "PRP" and link == g.links[1]:
+            # the yoke's slot: from its reference point through the block, a little past it
+            E, A = P.pos[g.joint], P.pos[g.slider]
+            if E.dist(A) > 0.0:
+                extra.append(Body.of([E, A + (A - E) * 0.15]))
         uniq: list[Vec] = []
         for n in lk.points_on(link):
             q = P.pos[n]
@@ -200,6 +206,8 @@ def _bodies(lk: Linkage, P: Position, links: Sequence[int]) -> dict[str, list[Bo
             cy = sum(q.y for q in uniq) / len(uniq)
             ring = sorted(uniq, key=lambda q: math.atan2(q.y - cy, q.x - cx))
             out[str(link)] = [Body.of(ring, closed=True)]
+        if extra:
+            out.setdefault(str(link), []).extend(extra)
         # a guide on this link runs on to the slider it carries
         for g2 in lk.groups:
             gd = g2.guide
