@@ -40,6 +40,14 @@ SPECS: tuple[tuple[str, str, str | None, str], ...] = (
     ("eps_", "rad/s²", None, "a link's angular acceleration, ccw > 0"),
     ("R_", "N", "F", "a reaction: the force of link i on link j"),
     ("M_bal", "N·m", None, "the balancing moment on the crank"),
+    # the dynamics (issue 15)
+    ("A_cycle", "J", None, "the work of the resistances per cycle"),
+    ("M_drive", "N·m", None, "the constant motor moment"),
+    ("J_flywheel", "kg·m²", None, "the flywheel's moment of inertia"),
+    ("delta_achieved", "1", None, "δ by the equation of motion with the flywheel"),
+    ("D_flywheel", "m", None, "the flywheel's diameter"),
+    ("b_flywheel", "m", None, "the flywheel's width (a rim: its section's side)"),
+    ("m_flywheel", "kg", None, "the flywheel's mass"),
 )
 
 
