@@ -25,6 +25,9 @@ from geomcad.linkage.kinetostatics import Forces, kinetostatics
 if TYPE_CHECKING:
     from geomcad.linkage.solution import Solved
 
+#: Positions numbered for the dynamics when the file lists ``phi`` instead of ``positions``.
+DYNAMICS_POSITIONS = 12
+
 
 @dataclass(frozen=True)
 class Analysis:
@@ -53,8 +56,6 @@ def analyse(s: Solved) -> Analysis:
         forces = tuple(kinetostatics(lk, P, s.cycle) for P in s.positions)
     fw = None
     if lk.dynamics is not None:
-        from geomcad.linkage.solution import DYNAMICS_POSITIONS
-
         n = lk.positions if lk.positions is not None else DYNAMICS_POSITIONS
         fw = dynamics(lk, s.cycle, n)
     a = Analysis(forces, fw)
