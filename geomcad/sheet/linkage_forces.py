@@ -436,7 +436,7 @@ def _wittenbauer(d: Drawing, fw: Flywheel) -> None:
     k_max, k_min = 0.5 * fw.omega_max**2, 0.5 * fw.omega_min**2
     i_hi = float(I.max())
     lo = float(min(T.min(), b, 0.0))
-    hi = float(max(T.max(), a, 0.0))
+    hi = float(max(T.max(), a + k_max * i_hi, 0.0))
     ay = Axis.fit("ΔT", "Дж", lo, hi, by1 - by0 - TITLE_ROOM - 30.0, "T")
     ax = Axis.fit("I_{пр}", "кг·м²", 0.0, i_hi, bx1 - bx0 - 60.0, "I")
     d.text("Диаграмма энергомасс (Виттенбауэра)", (bx0, by0 + 4.0), 5.0)
