@@ -213,8 +213,17 @@ link = 3
 moment = 5.0
 """
 
+#: The yoke with its slot square to the guide, no weights and a moment on the yoke: the guide's
+#: normal force is zero, so the guide carries a couple.
+YOKE_COUPLE = (
+    YOKE.replace("gravity = 9.81", "gravity = 0.0")
+    .replace("slot_angle = 60.0", "slot_angle = 90.0")
+    .replace("angle = 10.0", "angle = 0.0")
+    + "[[load]]\nlink = 3\nmoment = 6.0\n"
+)
+
 FILES = {"slider-crank": SLIDER_CRANK, "slotted": SLOTTED, "yoke": YOKE,
-         "moving-guide": MOVING_GUIDE}  # fmt: skip
+         "moving-guide": MOVING_GUIDE, "yoke-couple": YOKE_COUPLE}  # fmt: skip
 
 
 def load(text: str) -> Linkage:
@@ -310,7 +319,27 @@ def test_groups_agree_with_one_newton_euler_system(solved: Solved) -> None:
             F, couple = ne[f"{r.of}>{r.on}@{r.joint}"]
             assert close(r.force.x, F.x, scale) and close(r.force.y, F.y, scale), (r, F)
             # a sliding pair's reaction at its point = the normal force and a couple at the joint
-            assert close((r.at - P.pos[r.joint]).cross(r.force), couple, scale * lk.length)
+            moment = (r.at - P.pos[r.joint]).cross(r.force) + r.couple
+            assert close(moment, couple, scale * lk.length)
+
+
+def test_a_slide_without_normal_force_carries_a_couple() -> None:
+    lk = load(YOKE_COUPLE)
+    f = analyse(solve(lk)).forces
+    assert f is not None
+    for P, forces in zip(solve(lk).positions, f, strict=True):
+        (r03,) = [r for r in forces.reactions if r.key == (0, 3)]
+        (r23,) = [r for r in forces.reactions if r.key == (2, 3)]
+        assert abs(r03.force.norm) <= 1e-9 and r03.h == 0.0 and r03.couple != 0.0
+        # the yoke about E: its loads, the block's force (2 on 3) and the guide's couple
+        E = P.pos["E"]
+        total = r03.couple + (r23.at - E).cross(-r23.force) - r23.couple
+        for ld in forces.loads[3]:
+            if ld.force is not None and ld.at is not None:
+                total += (ld.at - E).cross(ld.force)
+            else:
+                total += ld.moment
+        assert abs(total) <= 1e-9 * abs(r03.couple)
 
 
 def test_m_bal_by_groups_lever_and_power(solved: Solved) -> None:

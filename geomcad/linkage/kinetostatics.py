@@ -59,6 +59,10 @@ from geomcad.linkage.plans import Position
 
 LoadKind = Literal["weight", "inertia", "given", "reaction"]
 
+#: A sliding pair's reaction lies at most this many crank lengths from its joint; beyond, the
+#: normal force is about zero and the pair carries a couple (see :class:`Reaction`).
+ARM_MAX = 1.0e3
+
 
 @dataclass(frozen=True)
 class Applied:
@@ -80,7 +84,9 @@ class Applied:
 class Reaction:
     """The force of link ``of`` on link ``on`` in their pair at ``joint`` (N), applied at
     ``at``; ``sliding``: a sliding pair's reaction, normal to the slide (``h`` m along the slide
-    from ``joint``), else a revolute's through its axis."""
+    from ``joint``), else a revolute's through its axis. Where the normal force is (nearly) zero
+    and the slide must still carry a moment, the force stays at the joint and the pair's
+    ``couple`` (N·m, of ``of`` on ``on``) carries it."""
 
     name: str
     of: int
@@ -90,6 +96,7 @@ class Reaction:
     joint: str
     sliding: bool = False
     h: float = 0.0
+    couple: float = 0.0
 
     @property
     def key(self) -> tuple[int, int]:
@@ -298,16 +305,18 @@ class _Solver:
         on_loads: dict[int, list[Applied]],
         sliding: bool = False,
         h: float = 0.0,
+        couple: float = 0.0,
     ) -> None:
         """Record the force of ``of`` on ``on``; its opposite goes on ``of``'s loads (an
         earlier link) unless ``of`` is in the group or the frame."""
-        r = Reaction(_name(of, on), of, on, F, at, joint, sliding, h)
+        r = Reaction(_name(of, on), of, on, F, at, joint, sliding, h, couple)
         gf.reactions.append(r)
         self.reactions.append(r)
         self.c.record(
             f"{r.name} at {joint}" + (f" ({of}→{on})" if sliding else ""),
             f"the force of link {of} on link {on}"
-            + (f", normal to the slide, {h:.6g} m along it from {joint}" if sliding else ""),
+            + (f", normal to the slide, {h:.6g} m along it from {joint}" if sliding else "")
+            + (f", and a couple {couple:.6g} N·m" if couple else ""),
             F,
             role="hidden",
         )
@@ -316,6 +325,8 @@ class _Solver:
             on_loads[of].append(
                 Applied(_name(on, of), of, "reaction", -F, at, 0.0, joint if h == 0.0 else "", vel)
             )
+            if couple:
+                on_loads[of].append(Applied(f"M_{{{on}{of}}}", of, "reaction", None, None, -couple))
 
     def _velocity(self, link: int, at: Vec) -> Vec:
         """The velocity of the point of ``link`` at ``at`` (rigid body)."""
@@ -407,19 +418,33 @@ class _Solver:
         )
         # the slider about J: ΣM_J(loads) + h·n = 0
         Mb = _moment(Lb, pJ)
-        h = self._arm(f"{g.key}: h_{gl}{b}", -Mb, n, J, b)
+        h, m = self._arm(f"{g.key}: h_{gl}{b}", -Mb, n, J, b)
         self._react(gf, o, a, R, pE, E, loads)
         self._react(gf, a, b, Rab, pJ, J, loads)
-        self._react(gf, gl, b, N, pJ + d * h, J, loads, sliding=True, h=h)
+        self._react(gf, gl, b, N, pJ + d * h, J, loads, sliding=True, h=h, couple=m)
 
-    def _arm(self, name: str, couple: float, n: float, joint: str, link: int) -> float:
-        """h with h·n = couple: the point of a sliding pair's reaction along the slide."""
-        h = couple / n if n != 0.0 else 0.0
-        return self.c.value(
-            name,
-            h,
-            f"ΣM_{joint}(link {link}) = 0: the reaction's point, h m along the slide from {joint}",
+    def _arm(
+        self, name: str, couple: float, n: float, joint: str, link: int
+    ) -> tuple[float, float]:
+        """h with h·n = couple: the point of a sliding pair's reaction along the slide, and no
+        couple; where that point would lie farther than :data:`ARM_MAX` crank lengths (a normal
+        force of about zero), h = 0 and the pair's couple."""
+        if n != 0.0 and abs(couple) <= abs(n) * ARM_MAX * self.lk.length:
+            h = couple / n
+            self.c.value(
+                name,
+                h,
+                f"ΣM_{joint}(link {link}) = 0: the reaction's point, h m along the slide from "
+                f"{joint}",
+            )
+            return h, 0.0
+        self.c.value(
+            name + " (couple)",
+            couple,
+            f"ΣM_{joint}(link {link}) = 0: the normal force is about zero, the slide carries a "
+            "couple",
         )
+        return 0.0, couple
 
     def rpr(self, g: Group, gf: GroupForces, loads: dict[int, list[Applied]]) -> None:
         c, P, own = self.c, self.P, self.lk.owner
@@ -439,7 +464,7 @@ class _Solver:
             f"N·{arm:.6g} m = ΣM_{C}(link {b}) + ΣM_{A}(block {a})",
         )
         N = n_dir * n
-        h = self._arm(f"{g.key}: h_{b}{a}", -MA, n, A, a)
+        h, m = self._arm(f"{g.key}: h_{b}{a}", -MA, n, A, a)
         RC = _closing(
             c,
             gf,
@@ -457,7 +482,7 @@ class _Solver:
             f"ΣF_{a} + {_name(b, a)} + {_name(own[A], a)} = 0",
         )
         self._react(gf, own[A], a, RA, pA, A, loads)
-        self._react(gf, b, a, N, pA + d * h, A, loads, sliding=True, h=h)
+        self._react(gf, b, a, N, pA + d * h, A, loads, sliding=True, h=h, couple=m)
         self._react(gf, own[C], b, RC, pC, C, loads)
 
     def prp(self, g: Group, gf: GroupForces, loads: dict[int, list[Applied]]) -> None:
@@ -488,14 +513,14 @@ class _Solver:
         )
         # the block about A: ΣM_A + h1·n_ba = 0, N_ba = −N_ab along the slot's normal
         n_ba = -poly.signed(_name(a, b))
-        h1 = self._arm(f"{g.key}: h_{b}{a}", -_moment(La, pA), n_ba, A, a)
+        h1, m1 = self._arm(f"{g.key}: h_{b}{a}", -_moment(La, pA), n_ba, A, a)
         at1 = pA + sdir * h1
-        # the yoke about E: ΣM_E(loads) + (at1 − E) × N_ab + h2·n_0b = 0
-        Mb = _moment(Lb, pE) + (at1 - pE).cross(Nab)
-        h2 = self._arm(f"{g.key}: h_0{b}", -Mb, poly.signed(_name(0, b)), E, b)
+        # the yoke about E: ΣM_E(loads) + (at1 − E) × N_ab − m1 + h2·n_0b (+ m2) = 0
+        Mb = _moment(Lb, pE) + (at1 - pE).cross(Nab) - m1
+        h2, m2 = self._arm(f"{g.key}: h_0{b}", -Mb, poly.signed(_name(0, b)), E, b)
         self._react(gf, own[A], a, RA, pA, A, loads)
-        self._react(gf, b, a, -Nab, at1, A, loads, sliding=True, h=h1)
-        self._react(gf, 0, b, N0b, pE + gdir * h2, E, loads, sliding=True, h=h2)
+        self._react(gf, b, a, -Nab, at1, A, loads, sliding=True, h=h1, couple=m1)
+        self._react(gf, 0, b, N0b, pE + gdir * h2, E, loads, sliding=True, h=h2, couple=m2)
 
     def crank(self, gf: GroupForces) -> float:
         c, P, lk = self.c, self.P, self.lk

@@ -276,6 +276,9 @@ def _free_body(d: Drawing, lk: Linkage, P: Position, gf: GroupForces, cell: Box)
     for r in gf.reactions:
         if r.on in links:
             force(v, r.at, r.force, kF.k, r.name, arrive=True, role="result", height=2.5)
+            if r.couple:
+                label = f"M_{{{r.of}{r.on}}}"
+                moment(v, P.pos[r.joint], r.couple, 6.0, label, "result", height=2.5)
     if g is None:
         M = -sum(
             (ld.at - P.pos[lk.pivot]).cross(ld.force)
@@ -360,8 +363,13 @@ def _table2(d: Drawing, lk: Linkage, f: Forces) -> None:
                 rows.append([ld.name, _num(ld.force.norm), "Н"])
             else:
                 rows.append([ld.name, _num(ld.moment), "Н·м"])
+    big = max(r.force.norm for r in f.reactions)
     for i, j in f.pairs:
-        rows.append([f"R_{{{i}{j}}}" if j < 10 else f"R_{{{i},{j}}}", _num(f.R(i, j).norm), "Н"])
+        name = f"R_{{{i}{j}}}" if j < 10 else f"R_{{{i},{j}}}"
+        rows.append([name, _num(f.R(i, j).norm, scale=big), "Н"])
+    for r in f.reactions:
+        if r.couple:
+            rows.append([f"M_{{{r.of}{r.on}}}", _num(r.couple), "Н·м"])
     rows.append(["M_{ур} (силы)", _num(f.M_bal), "Н·м"])
     rows.append(["M_{ур} (рычаг)", _num(f.lever.M_bal), "Н·м"])
     x0, y0, x1, y1 = TABLE
