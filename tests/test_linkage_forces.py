@@ -626,3 +626,25 @@ def test_force_and_dynamics_sheets(name: str, update_golden: bool) -> None:
         assert path.exists(), f"no golden file {path}: run `{UPDATE_CMD}`"
         diff = svg_difference(svg, path.read_text(encoding="utf-8"))
         assert diff is None, f"{path.name} differs from its golden file: {diff}"
+
+
+def test_solve_json_of_every_example_with_masses(capsys: pytest.CaptureFixture[str]) -> None:
+    """`geomcad solve FILE --json`: the force results at each position, the dynamics on top."""
+    import json
+
+    files = [p for p in sorted(EXAMPLE.parent.glob("*.toml")) if "[links." in p.read_text()]
+    assert len(files) >= 2
+    for path in files:
+        assert main(["solve", str(path), "--json"]) == 0
+        res = json.loads(capsys.readouterr().out)["results"]
+        data = tomllib.loads(path.read_text(encoding="utf-8"))
+        for row in res["positions"]:
+            assert {"M_bal", "M_bal_lever", "R_0_1", "R_0_1_x", "R_0_1_y"} <= set(row)
+            assert math.isclose(row["M_bal"], row["M_bal_lever"], rel_tol=1e-9, abs_tol=1e-9)
+        if "dynamics" in data:
+            n = data["drive"].get("positions", 12)
+            assert len(res["I_pr"]) == len(res["M_pr"]) == n
+            for key in ("A_cycle", "M_drive", "J_flywheel", "omega_max", "omega_min"):
+                assert isinstance(res[key], float), (path.name, key)
+            delta = data["dynamics"]["delta"]
+            assert math.isclose(res["delta_achieved"], delta, rel_tol=1e-4), path.name
