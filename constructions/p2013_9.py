@@ -45,7 +45,7 @@ from geomcad.dynamics import (
     slotted_yoke,
     turning,
 )
-from geomcad.dynamics.analogues import Array
+from geomcad.dynamics.analogues import Array, remember_last
 from geomcad.errors import ParameterError
 from geomcad.geom import Vec
 from geomcad.problem import Build, ParamValue
@@ -123,6 +123,7 @@ def model_of(
     and with a steady moment every load depends on φ only, and the energy method applies.
     """
 
+    @remember_last
     def rod(phi: Array) -> Any:
         return slotted_yoke(phi, r, math.pi / 2.0, 0.0).body
 
@@ -200,7 +201,7 @@ def build(p: Mapping[str, ParamValue]) -> Build:
     }
     biggest = max(n_pin, results["F_spring"], results["F_damper"], results["F_inertia_rod"])
     k_F = nice_factor(biggest, FORCE_ROOM_MM, "F").k if biggest > 0.0 else 1.0
-    notes = [*NOTES, f"the motion from rest is integrated by {ode_settings()}"]
+    notes = [*NOTES, f"the motion from rest is integrated by {ode_settings(traj.method)}"]
     data = Data(r, phi, dphi, ddphi, x, xd, xdd, y, R, traj, k_F, float(M(t)))
     return Build(results, c, notes, {"F": k_F}, data)
 

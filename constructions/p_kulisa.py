@@ -52,7 +52,7 @@ from geomcad.dynamics import (
     slotted_yoke,
     turning,
 )
-from geomcad.dynamics.analogues import Array
+from geomcad.dynamics.analogues import Array, remember_last
 from geomcad.errors import ConstructionError, ParameterError
 from geomcad.geom import Vec
 from geomcad.problem import Build, ParamValue
@@ -61,6 +61,9 @@ from geomcad.sheet.scale import nice_factor
 from geomcad.units import deg
 
 from .spec_kulisa import PROBLEM as PROBLEM
+
+#: The farthest φ may lie from φ0: the run-up is integrated and its diagrams drawn turn by turn.
+MAX_TURNS = 5
 
 #: The operation of the step F_x, which an error names as the protocol does.
 F_X_OP = "|M·ω_q1/v_qC3|: equal power of M and F_x"
@@ -136,12 +139,14 @@ def mechanism(
     yoke's displacement, so its centre is (x_C30 + k·OA·cos φ, −r3).
     """
 
+    @remember_last
     def yoke(phi: Array) -> Yoke:
         return slotted_yoke(phi, OA, 0.0, math.pi / 2.0, body0=(lay.x_C20, 0.0))
 
     def drive(phi: Array) -> Motion:
         return slotted_yoke(phi, OA, 0.0, math.pi / 2.0).body
 
+    @remember_last
     def roller(phi: Array) -> Motion:
         return rolling_wheel(drive(phi), (1.0, 0.0), R3, r3, (lay.x_C30, -r3))
 
@@ -169,6 +174,12 @@ def build(p: Mapping[str, ParamValue]) -> Build:
         raise ParameterError(
             "phi_deg", p["phi_deg"], f"must be > phi0_deg = {p['phi0_deg']}: the flywheel starts "
             "from rest at φ0 and turns forward (counter-clockwise) to φ",
+        )  # fmt: skip
+    if phi - phi0 > MAX_TURNS * 2.0 * math.pi:
+        raise ParameterError(
+            "phi_deg", p["phi_deg"], f"must be at most {MAX_TURNS} turns ahead of phi0_deg = "
+            f"{p['phi0_deg']}, i.e. ≤ {float(p['phi0_deg']) + 360.0 * MAX_TURNS:g}: the run-up "
+            "from rest is integrated and drawn turn by turn",
         )  # fmt: skip
     lay = layout(R1, OA, R3, r3)
     model, yoke, roller = mechanism(m1, R1, OA, m2, m3, R3, r3, rho3, M, lay)
@@ -224,7 +235,7 @@ def build(p: Mapping[str, ParamValue]) -> Build:
     biggest = max(n_a, abs(r_o.x), abs(r_o.y), f_x, *_loads_max(dyn), *_loads_max(st))
     k_F = nice_factor(biggest, FORCE_ROOM_MM, "F").k
     k_v = nice_factor(w * OA, VELOCITY_ROOM_MM, "v").k
-    notes = [*NOTES, f"t_reach and omega_ode: {ode_settings()}"]
+    notes = [*NOTES, f"t_reach and omega_ode: {ode_settings(arr.trajectory.method)}"]
     f_ks = abs(st.magnitudes["F_x"])
     data = Data(phi, phi0, w, eps, lay, y, rl, C2, C3, model, arr, dyn, st, f_ks, k_F, k_v)
     return Build(results, c, notes, {"F": k_F, "v": k_v}, data)

@@ -36,9 +36,9 @@ PARAMS = (
     Param("p4", 1, "number of higher pairs, class 4", integer=True, ge=0),
     Param("local", 1, "number of local mobilities (a roller's free spin)", integer=True, ge=0),
     Param("e", 0.1, "offset of the slot's centre line from O (signed, ≠ 0)", "m"),
-    Param("psi_deg", 90.0, "direction ψ of the pusher path", "deg"),
+    Param("psi_deg", 90.0, "direction ψ of the pusher path", "deg", turn=True),
     Param("h", -0.05, "signed distance h of the pusher path from O", "m"),
-    Param("theta1_deg", 0.0, "direction θ1 of the slot (the lever's position)", "deg"),
+    Param("theta1_deg", 0.0, "direction θ1 of the slot (the lever's position)", "deg", turn=True),
 )
 
 RESULTS = (

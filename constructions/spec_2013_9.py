@@ -29,7 +29,7 @@ PARAMS = (
     Param("M1", 0.0, "amplitude of the driving moment's harmonic part", "N·m"),
     Param("Omega", 0.0, "circular frequency Ω of the driving moment", "rad/s"),
     Param("t", 0.0, "time of the state", "s"),
-    Param("phi_deg", 30.0, "disc angle φ at the state", "deg"),
+    Param("phi_deg", 30.0, "disc angle φ at the state", "deg", turn=True),
     Param("phi_dot", 10.0, "angular velocity φ' at the state", "rad/s"),
     Param("T", 0.5, "duration of the motion from rest at φ = 0", "s", gt=0.0),
 )

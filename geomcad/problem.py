@@ -19,11 +19,16 @@ from __future__ import annotations
 import importlib
 import importlib.util
 import math
+import numbers
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any, Literal
 
+import numpy as np
+
+from geomcad.construction.guard import guarded
 from geomcad.errors import ConstructionError, ParameterError
+from geomcad.units import PHYSICAL, wrap_deg
 
 if TYPE_CHECKING:
     from geomcad.construction import Construction
@@ -32,6 +37,17 @@ if TYPE_CHECKING:
     from geomcad.sheet.titleblock import TitleData
 
 ParamValue = float | int | str
+
+#: The largest count (teeth, links, pairs, divisions) a parameter may take unless it says.
+MAX_COUNT = 10_000
+
+
+def _short(value: object) -> object:
+    """A value as an error may quote it: a huge integer or a long text is cut short."""
+    text = repr(value)
+    return value if len(text) <= 40 else f"{text[:20]}…{text[-8:]} ({len(text)} characters)"
+
+
 SeedKind = Literal["measured", "rounded", "erratum"]
 
 
@@ -47,6 +63,19 @@ class Param:
     values that ``build`` receives, and the problem derives it (e.g. a tooth count from a
     coaxiality condition); given, it is checked like any other and the problem checks it against
     what it would have derived. Passing ``None`` for it through the API means "not given".
+
+    Every number has a physical range, checked before any computation: ``span = (lo, hi)`` bounds
+    its magnitude, |x| = 0 or lo ≤ |x| ≤ hi (0 itself only where the sign bounds allow it). By
+    default the span is its unit's from :data:`PHYSICAL` (wide enough for any real machine: a
+    length from a micron to a kilometre) and, for an integer, at most :data:`MAX_COUNT`.
+    A ``turn`` angle means a direction or a position on a turn: it is reduced into [0°, 360°).
+
+    >>> Param("H", 0.2, "stroke", "m", gt=0.0).check(1e-308)
+    Traceback (most recent call last):
+    ...
+    geomcad.errors.ParameterError: parameter H = 1e-308: must be between 1e-06 and 1000 m
+    >>> Param("psi_deg", 90.0, "direction", "deg", turn=True).check(-90.0)
+    270.0
     """
 
     name: str
@@ -60,6 +89,8 @@ class Param:
     lt: float | None = None
     le: float | None = None
     optional: bool = False
+    span: tuple[float, float] | None = None
+    turn: bool = False
 
     def __post_init__(self) -> None:
         if self.optional != (self.default is None):
@@ -95,9 +126,12 @@ class Param:
             if not isinstance(value, str) or value not in self.choices:
                 raise ParameterError(self.name, value, f"must be one of {', '.join(self.choices)}")
             return value
-        if isinstance(value, bool) or not isinstance(value, int | float):
-            raise ParameterError(self.name, value, "must be a number")
-        x = float(value)
+        if isinstance(value, bool) or not isinstance(value, numbers.Real):
+            raise ParameterError(self.name, _short(value), "must be a number")
+        try:
+            x = float(value)
+        except (OverflowError, ValueError, TypeError):
+            raise ParameterError(self.name, _short(value), f"must be {self.domain()}") from None
         if not math.isfinite(x):
             raise ParameterError(self.name, value, "must be a finite number")
         if self.integer:
@@ -114,7 +148,49 @@ class Param:
             raise ParameterError(self.name, value, f"must be < {self.lt:g}{self._u()}")
         if self.le is not None and not x <= self.le:
             raise ParameterError(self.name, value, f"must be ≤ {self.le:g}{self._u()}")
+        lo, hi = self.magnitudes()
+        if not (x == 0.0 or lo <= abs(x) <= hi):
+            raise ParameterError(self.name, value, f"must be {self.domain()}")
+        if self.turn and not self.integer:
+            return wrap_deg(x) if self.unit == "deg" else x
         return value
+
+    def magnitudes(self) -> tuple[float, float]:
+        """The span (lo, hi) of |x|: declared, else the unit's physical range."""
+        if self.span is not None:
+            return self.span
+        lo, hi = PHYSICAL.get(self.unit, PHYSICAL["1"])
+        if self.integer:
+            return 1.0, float(MAX_COUNT)
+        return lo, hi
+
+    def domain(self) -> str:
+        """The allowed values in words, e.g. "between 1e-06 and 1000 m" (for help and errors)."""
+        if self.choices:
+            return f"one of {', '.join(self.choices)}"
+        lo, hi = self.magnitudes()
+        low, high = -hi, hi
+        for b in (self.gt, self.ge):
+            low = low if b is None else max(low, b)
+        for b in (self.lt, self.le):
+            high = high if b is None else min(high, b)
+        u = self._u()
+        zero_ok = lo > 0.0 and self._signs_allow(0.0)
+        if lo == hi:
+            return f"{lo:g}{u}" if low >= 0.0 else f"−{lo:g} or +{lo:g}{u}"
+        if low >= 0.0:
+            return f"{'0 or ' if zero_ok else ''}between {max(lo, low):g} and {high:g}{u}"
+        if lo > 0.0:
+            return f"0 or between {lo:g} and {hi:g}{u} in size, either sign"
+        return f"between {low:g} and {high:g}{u}"
+
+    def _signs_allow(self, x: float) -> bool:
+        return not (
+            (self.gt is not None and not x > self.gt)
+            or (self.ge is not None and not x >= self.ge)
+            or (self.lt is not None and not x < self.lt)
+            or (self.le is not None and not x <= self.le)
+        )
 
     def _u(self) -> str:
         return "" if self.unit == "1" else f" {self.unit}"
@@ -300,14 +376,20 @@ class Problem:
                 values.pop(name, None)
                 continue
             values[name] = p.check(value)
-        b = self.build(values)
+        with guarded(f"the construction of {self.id}"):
+            b = self.build(values)
         _check_finite(b.results, "results")
         return Solution(self, values, b)
 
 
 def _check_finite(value: object, path: str) -> None:
+    """No result may hold a NaN or an infinity: it is an error naming the result."""
     if isinstance(value, float) and not math.isfinite(value):
-        raise ConstructionError(path, "the construction produced a non-finite number")
+        raise ConstructionError(path, f"the construction produced the non-finite number {value}")
+    if isinstance(value, np.ndarray):
+        if value.dtype.kind in "fc" and not np.all(np.isfinite(value)):
+            raise ConstructionError(path, "the construction produced a non-finite number")
+        return
     if isinstance(value, dict):
         for k, v in value.items():
             _check_finite(v, f"{path}.{k}")
@@ -415,8 +497,9 @@ class Solution:
         import geomcad.notebook  # noqa: F401  (sets the sheets' SVG display)
         from geomcad.sheet.frame import fill_title_blocks
 
-        out = list(self.problem.draw(self))
-        fill_title_blocks([s for _, s in out], title)
+        with guarded(f"drawing the sheets of {self.problem.id}"):
+            out = list(self.problem.draw(self))
+            fill_title_blocks([s for _, s in out], title)
         return out
 
     def _repr_html_(self) -> str:

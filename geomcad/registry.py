@@ -32,9 +32,16 @@ def problem_ids() -> list[str]:
     return sorted(_entry_points(), key=_sort_key)
 
 
-@cache
 def get(pid: str) -> Problem:
-    """The problem registered under ``pid``; :class:`UnknownProblem` names the known ids."""
+    """The problem registered under ``pid``; :class:`UnknownProblem` names the known ids (and
+    a ``pid`` that is not a string at all)."""
+    if not isinstance(pid, str):
+        raise UnknownProblem(f"a problem id is a string such as '2013-6', not {type(pid).__name__}")
+    return _get(pid)
+
+
+@cache
+def _get(pid: str) -> Problem:
     eps = _entry_points()
     if pid not in eps:
         known = ", ".join(problem_ids()) or "none (is geomcad installed with pip install .?)"

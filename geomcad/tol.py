@@ -54,3 +54,7 @@ KINETOSTATIC_RANK = 1e-9
 #: The nearest point of a convex zone (scipy SLSQP on a squared distance): the optimiser's
 #: function tolerance, relative to the squared size of the figure.
 QP_FTOL = 1e-16
+
+#: Relative step of a central difference that estimates a derivative (a Jacobian's entries,
+#: for the stiffness of an equation of motion).
+DIFF_STEP = 1e-6

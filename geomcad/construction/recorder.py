@@ -15,6 +15,7 @@ from dataclasses import dataclass
 from typing import Any, TypeVar
 
 from geomcad.construction.branch import Any_, Index, Rule
+from geomcad.construction.guard import is_numeric, watch, why
 from geomcad.errors import ConstructionError, NoIntersection, ParallelLines
 from geomcad.geom import (
     Arc,
@@ -109,6 +110,7 @@ class Construction:
         self.steps: list[Step] = []
         self._by_name: dict[str, Step] = {}
         self._names: dict[Any, str] = {}
+        watch(self)
 
     # -- bookkeeping ---------------------------------------------------------------------------
     def __getitem__(self, name: str) -> Any:
@@ -177,6 +179,10 @@ class Construction:
             result = fn()
         except ConstructionError as exc:
             raise type(exc)(title, exc.why) from None
+        except Exception as exc:
+            if not is_numeric(exc):
+                raise
+            raise ConstructionError(title, why(exc)) from exc
         return self.record(name, op, result, inputs, role, note)
 
     # -- the verbs -----------------------------------------------------------------------------
@@ -339,6 +345,10 @@ class Construction:
             raw = _intersect(o1, o2)
         except ConstructionError as exc:
             raise type(exc)(title, exc.why) from None
+        except Exception as exc:
+            if not is_numeric(exc):
+                raise
+            raise ConstructionError(title, why(exc)) from exc
         kept = rule.keep(raw)
         if not kept and not allow_empty:
             if isinstance(o1, Line) and isinstance(o2, Line):

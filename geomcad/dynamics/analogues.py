@@ -24,7 +24,9 @@ only reads :class:`Motion` objects, does not change.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
+from typing import Any, TypeVar
 
 import numpy as np
 import numpy.typing as npt
@@ -39,6 +41,28 @@ ArrayLike = float | npt.ArrayLike
 
 def _arr(phi: ArrayLike) -> Array:
     return np.asarray(phi, dtype=np.float64)
+
+
+F = TypeVar("F", bound=Callable[[Any], Any])
+
+
+def remember_last(fn: F) -> F:
+    """``fn(φ)`` with a memory of one scalar φ: asked again for the same φ (as an equation of
+    motion's right-hand side asks for a part's motion several times per evaluation), it returns
+    the same result without computing it again. Arrays of φ are always computed."""
+    last: list[Any] = [None, None]
+
+    def once(phi: Any) -> Any:
+        if isinstance(phi, float | int) or (isinstance(phi, np.ndarray) and phi.ndim == 0):
+            x = float(phi)
+            if last[0] is not None and last[0] == x:
+                return last[1]
+            result = fn(phi)
+            last[0], last[1] = x, result
+            return result
+        return fn(phi)
+
+    return once  # type: ignore[return-value]
 
 
 @dataclass(frozen=True)

@@ -8,6 +8,12 @@ Two independent ways to the same angular velocity of the driving link:
 - **integration** (:func:`integrate`, :func:`reach`): J_pr·φ'' + ½·J_pr'·φ'² = M_pr(φ, φ', t)
   as a first-order system for (φ, φ'), solved by scipy's ``solve_ivp`` (DOP853) with the
   tolerances :data:`geomcad.tol.ODE_RTOL` and :data:`geomcad.tol.ODE_ATOL`.
+
+Every integration has a budget (:data:`MAX_EVALUATIONS` evaluations of the equation,
+:data:`MAX_SECONDS` of wall clock); spent, it is a :class:`ConstructionError` naming the step and
+what makes the motion costly (a stiff spring, a fast excitation, many turns). A stiff equation —
+a strong damper, whose motion decays much faster than the span integrated — is handed to
+``LSODA``, which switches to an implicit (BDF) method where the equation is stiff.
 """
 
 from __future__ import annotations
@@ -20,6 +26,7 @@ import numpy as np
 from scipy.integrate import cumulative_trapezoid, quad, solve_ivp
 
 from geomcad import tol
+from geomcad.construction.guard import Budget
 from geomcad.dynamics.analogues import Array
 from geomcad.dynamics.model import ReducedModel
 from geomcad.errors import ConstructionError
@@ -30,14 +37,57 @@ PATH_SAMPLES = 2049
 METHOD = "DOP853"
 #: How many times :func:`reach` doubles its time horizon before it gives up.
 MAX_DOUBLINGS = 40
+#: The integrator for a stiff equation (LSODA: Adams where it can, BDF where it is stiff).
+STIFF_METHOD = "LSODA"
+#: An equation is stiff when its fastest decay rate times the span integrated exceeds this.
+STIFF_SPAN = 200.0
+#: The budget of one integration: evaluations of the equation of motion, and wall-clock seconds
+#: (a safety net only; the count of evaluations decides on any machine).
+MAX_EVALUATIONS = 6000
+MAX_SECONDS = 20.0
 
 STEP_ENERGY = "ω from the kinetic-energy theorem"
 STEP_ODE = "φ(t) from the equation of motion (solve_ivp)"
 
 
-def ode_settings() -> str:
+def ode_settings(method: str = METHOD) -> str:
     """The integrator and its tolerances, in words (for notes and sheets)."""
-    return f"solve_ivp ({METHOD}, rtol = {tol.ODE_RTOL:g}, atol = {tol.ODE_ATOL:g})"
+    return f"solve_ivp ({method}, rtol = {tol.ODE_RTOL:g}, atol = {tol.ODE_ATOL:g})"
+
+
+def rates(model: ReducedModel, phi: float, omega: float, t: float = 0.0) -> tuple[float, float]:
+    """The linearised equation's rates at a state: (fastest decay rate, fastest oscillation
+    frequency) in 1/s, from the eigenvalues of the Jacobian of (φ, φ') ↦ (φ', φ'') by central
+    differences (the stiffness a strong damper brings, the frequency a stiff spring brings)."""
+    h_p = tol.DIFF_STEP * max(1.0, abs(phi))
+    h_w = tol.DIFF_STEP * max(1.0, abs(omega))
+    a = float(model.phi_ddot(phi + h_p, omega, t) - model.phi_ddot(phi - h_p, omega, t)) / (2 * h_p)
+    b = float(model.phi_ddot(phi, omega + h_w, t) - model.phi_ddot(phi, omega - h_w, t)) / (2 * h_w)
+    lam = np.roots([1.0, -b, -a])  # λ² − bλ − a = 0
+    decay = float(max(0.0, -float(np.min(lam.real))))
+    freq = float(np.max(np.abs(lam.imag)))
+    return decay, freq
+
+
+def _budget(
+    model: ReducedModel, phi0: float, omega0: float, t0: float, span: float
+) -> tuple[Budget, str]:
+    """The budget of an integration over ``span`` seconds and the method it picks."""
+    decay, freq = rates(model, phi0, omega0, t0)
+    method = STIFF_METHOD if decay * span > STIFF_SPAN else METHOD
+    hints = []
+    if freq * span > 100.0:
+        hints.append(
+            f"the equation oscillates at ≈ {freq:.3g} rad/s (a stiff spring or a light inertia), "
+            f"≈ {freq * span / (2.0 * math.pi):.3g} times over the {span:.3g} s integrated"
+        )
+    if decay * span > STIFF_SPAN:
+        hints.append(f"it is stiff (a motion decaying at ≈ {decay:.3g} 1/s, {STIFF_METHOD} used)")
+    hints.append(
+        "a long run or a fast drive makes many turns to follow; shorten the time or soften the "
+        "parameters"
+    )
+    return Budget(STEP_ODE, MAX_EVALUATIONS, MAX_SECONDS, "; ".join(hints)), method
 
 
 def _need_positional(model: ReducedModel) -> None:
@@ -128,6 +178,7 @@ class Trajectory:
     omega: Array
     sol: Any
     t_end: float
+    method: str = METHOD
 
     def __str__(self) -> str:
         return (
@@ -141,8 +192,9 @@ class Trajectory:
         return float(y[0]), float(y[1])
 
 
-def _rhs(model: ReducedModel) -> Any:
+def _rhs(model: ReducedModel, budget: Budget) -> Any:
     def f(t: float, y: Array) -> list[float]:
+        budget.spend()
         return [float(y[1]), float(model.phi_ddot(y[0], y[1], t))]
 
     return f
@@ -159,15 +211,16 @@ def integrate(
     """The motion from (φ0, ω0) at t0 to t_end by ``solve_ivp``; ``samples`` points for plots."""
     if not t_end > t0:
         raise ConstructionError(STEP_ODE, f"the end time {t_end:g} s must follow t0 = {t0:g} s")
+    budget, method = _budget(model, phi0, omega0, t0, t_end - t0)
     res = solve_ivp(
-        _rhs(model), (t0, t_end), [phi0, omega0], method=METHOD, rtol=tol.ODE_RTOL,
+        _rhs(model, budget), (t0, t_end), [phi0, omega0], method=method, rtol=tol.ODE_RTOL,
         atol=tol.ODE_ATOL, dense_output=True,
     )  # fmt: skip
     if res.status != 0:
         raise ConstructionError(STEP_ODE, f"the integrator failed: {res.message}")
     ts = np.linspace(t0, t_end, samples)
     y = res.sol(ts)
-    return Trajectory(ts, y[0], y[1], res.sol, t_end)
+    return Trajectory(ts, y[0], y[1], res.sol, t_end, method)
 
 
 @dataclass(frozen=True, repr=False)
@@ -214,10 +267,11 @@ def reach(
             "the machine does not start towards φ",
         )
     horizon = 4.0 * guess
+    budget, method = _budget(model, phi0, omega0, t0, horizon)
     for _ in range(MAX_DOUBLINGS):
         res = solve_ivp(
-            _rhs(model), (t0, t0 + horizon), [phi0, omega0], method=METHOD, rtol=tol.ODE_RTOL,
-            atol=tol.ODE_ATOL, dense_output=True, events=(arrive, stop),
+            _rhs(model, budget), (t0, t0 + horizon), [phi0, omega0], method=method,
+            rtol=tol.ODE_RTOL, atol=tol.ODE_ATOL, dense_output=True, events=(arrive, stop),
         )  # fmt: skip
         if res.status == -1:
             raise ConstructionError(STEP_ODE, f"the integrator failed: {res.message}")
@@ -226,7 +280,7 @@ def reach(
             w_hit = float(res.y_events[0][0][1])
             ts = np.linspace(t0, t_hit, 401)
             y = res.sol(ts)
-            return Arrival(t_hit, w_hit, Trajectory(ts, y[0], y[1], res.sol, t_hit))
+            return Arrival(t_hit, w_hit, Trajectory(ts, y[0], y[1], res.sol, t_hit, method))
         if res.t_events[1].size:
             t_stop = float(res.t_events[1][0])
             phi_stop = float(res.y_events[1][0][0])
