@@ -12,6 +12,9 @@
 Exit status: 0 done (and, for ``verify``, every measurement within precision), 1 a measurement
 out of precision, 2 bad input. Bad input prints nothing on stdout and exactly one line on stderr,
 ``error: ...``, naming the parameter or the construction step (prefixed with the problem id).
+Anything else that goes wrong is a bug of geomcad's: one line ``error: internal error in STEP:
+TYPE: message (please report)`` and exit status 70 (EX_SOFTWARE), never a traceback
+(``GEOMCAD_TRACEBACK=1`` shows it, for a developer).
 """
 
 from __future__ import annotations
@@ -21,6 +24,7 @@ import contextlib
 import json
 import math
 import os
+import signal
 import sys
 from collections.abc import Sequence
 from pathlib import Path
@@ -28,6 +32,7 @@ from typing import IO, TYPE_CHECKING, Any, NoReturn
 
 import geomcad
 from geomcad import registry
+from geomcad.construction.guard import STEP_NOTE
 from geomcad.errors import GeomcadError, MissingDependency, ParameterError, UnknownProblem
 
 if TYPE_CHECKING:
@@ -42,6 +47,7 @@ PLAIN_FORMATS = ("svg", "dxf")
 EXIT_OK = 0
 EXIT_OUT_OF_PRECISION = 1
 EXIT_BAD_INPUT = 2
+EXIT_INTERNAL = 70  # EX_SOFTWARE (sysexits.h)
 
 
 class _UsageError(Exception):
@@ -50,6 +56,18 @@ class _UsageError(Exception):
 
 class _Failed(Exception):
     """Bad input, already worded as the text of the ``error:`` line."""
+
+
+class _Terminated(BaseException):
+    """SIGTERM or SIGHUP during a build: unwinds like Ctrl-C, so no temporary file stays."""
+
+    def __init__(self, signum: int) -> None:
+        self.signum = signum
+        super().__init__(signum)
+
+
+def _on_signal(signum: int, frame: object) -> NoReturn:
+    raise _Terminated(signum)
 
 
 class _Parser(argparse.ArgumentParser):
@@ -76,11 +94,25 @@ def main(argv: Sequence[str] | None = None) -> int:
         return _fail(str(exc))
     except GeomcadError as exc:
         return _fail(_prefixed(pid, exc))
+    except _Terminated as exc:
+        name = signal.Signals(exc.signum).name
+        _write(
+            sys.stderr,
+            _error_line(
+                f"{ns.command}: stopped by {name}; every file written is "
+                "complete, no partial or temporary file is left"
+            ),
+        )
+        return 128 + exc.signum
     except BrokenPipeError:
         # the reader (e.g. `| head`) went away; keep the interpreter's last flush quiet too
         with contextlib.suppress(OSError, ValueError):
             os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
         return EXIT_OK
+    except Exception as exc:
+        if os.environ.get("GEOMCAD_TRACEBACK"):
+            raise
+        return _internal(ns, pid, exc)
     return status
 
 
@@ -95,7 +127,8 @@ examples:
   geomcad verify 2013-6 --measured O1B1_mm=89.5 --measured theta_deg=23.5
 
 ID is a problem id from `geomcad list`, or a file FILE.toml that states a problem.
-exit status: 0 done, 1 (verify) a measurement out of precision, 2 bad input (one error: line).
+exit status: 0 done, 1 (verify) a measurement out of precision, 2 bad input (one error: line),
+70 an internal error of geomcad's (one error: line; please report).
 """
 
 VERIFY_RULES = """\
@@ -113,6 +146,28 @@ precision (each item is within or not):
 
 exit status: 0 every item within precision, 1 one or more are not, 2 bad input.
 """
+
+
+def _internal(ns: argparse.Namespace, pid: str | None, exc: Exception) -> int:
+    """A bug of geomcad's, in one line naming where it happened; exit status 70."""
+    where = " ".join(w for w in (ns.command, pid) if w)
+    step = next(
+        (
+            n.removeprefix(STEP_NOTE)
+            for n in getattr(exc, "__notes__", ())
+            if n.startswith(STEP_NOTE)
+        ),
+        None,
+    )
+    if step:
+        where = f"{where}, {step}"
+    text = _one_line(str(exc))
+    if len(text) > 300:
+        text = text[:300] + " …"
+    msg = f"internal error in {where}: {type(exc).__name__}: {text} (please report)"
+    with contextlib.suppress(OSError, ValueError):
+        _write(sys.stderr, _error_line(msg))
+    return EXIT_INTERNAL
 
 
 def _parser(help_for: tuple[str, str] | None = None) -> _Parser:
@@ -359,7 +414,10 @@ def _cmd_build(ns: argparse.Namespace) -> int:
     out = Path(ns.out)
     # without libcairo the SVGs are still written, and the DXFs when asked for
     plain = ["svg"] + [f for f in formats if f in PLAIN_FORMATS and f != "svg"]
+    if out.exists() and not out.is_dir():
+        raise _Failed(f"--out {out}: is a file, not a folder")
     missing: MissingDependency | None = None
+    old = _catch_signals()
     try:
         out.mkdir(parents=True, exist_ok=True)
         for pid, sheets in prepared:
@@ -373,8 +431,13 @@ def _cmd_build(ns: argparse.Namespace) -> int:
             else:
                 paths = write_sheets(pid, sheets, out, plain, colour=ns.color)
             _write(sys.stdout, "".join(f"{p}\n" for p in paths))
+    except BrokenPipeError:
+        raise
     except OSError as exc:
-        raise _Failed(f"cannot write to {out}: {exc.strerror or exc}") from exc
+        where = exc.filename if exc.filename else out
+        raise _Failed(f"cannot write to {where}: {exc.strerror or exc}") from exc
+    finally:
+        _restore_signals(old)
     if missing is not None:
         what = "SVG and DXF files" if "dxf" in plain else "SVGs"
         _write(sys.stderr, _error_line(f"{_one_line(str(missing))}; only the {what} were written"))
@@ -422,6 +485,21 @@ def _cmd_animate(ns: argparse.Namespace) -> int:
         raise _Failed(f"cannot write to {out}: {exc.strerror or exc}") from exc
     _write(sys.stdout, f"{path}\n")
     return EXIT_OK
+
+
+def _catch_signals() -> dict[int, Any]:
+    """SIGTERM and SIGHUP unwind as :class:`_Terminated` (so write_atomic removes its temporary
+    file); returns the handlers they had. Outside the main thread nothing changes."""
+    old: dict[int, Any] = {}
+    with contextlib.suppress(ValueError):
+        for sig in (signal.SIGTERM, signal.SIGHUP):
+            old[sig] = signal.signal(sig, _on_signal)
+    return old
+
+
+def _restore_signals(old: dict[int, Any]) -> None:
+    for sig, handler in old.items():
+        signal.signal(sig, handler)
 
 
 def _cmd_verify(ns: argparse.Namespace) -> int:

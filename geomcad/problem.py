@@ -65,7 +65,8 @@ class Param:
     what it would have derived. Passing ``None`` for it through the API means "not given".
 
     Every number has a physical range, checked before any computation: ``span = (lo, hi)`` bounds
-    its magnitude, |x| = 0 or lo ≤ |x| ≤ hi (0 itself only where the sign bounds allow it). By
+    its magnitude, |x| ≤ hi, and where the sign bounds refuse 0 (a length, a mass) also lo ≤ |x|
+    (a quantity that may be 0 may also be as small as it likes). By
     default the span is its unit's from :data:`PHYSICAL` (wide enough for any real machine: a
     length from a micron to a kilometre) and, for an integer, at most :data:`MAX_COUNT`.
     A ``turn`` angle means a direction or a position on a turn: it is reduced into [0°, 360°).
@@ -124,7 +125,9 @@ class Param:
         """Check a value's type and range; return it normalised (int for integer parameters)."""
         if self.choices:
             if not isinstance(value, str) or value not in self.choices:
-                raise ParameterError(self.name, value, f"must be one of {', '.join(self.choices)}")
+                raise ParameterError(
+                    self.name, _short(value), f"must be one of {', '.join(self.choices)}"
+                )
             return value
         if isinstance(value, bool) or not isinstance(value, numbers.Real):
             raise ParameterError(self.name, _short(value), "must be a number")
@@ -132,25 +135,26 @@ class Param:
             x = float(value)
         except (OverflowError, ValueError, TypeError):
             raise ParameterError(self.name, _short(value), f"must be {self.domain()}") from None
+        shown = _short(value)
         if not math.isfinite(x):
             raise ParameterError(self.name, value, "must be a finite number")
         if self.integer:
             if x != int(x):
-                raise ParameterError(self.name, value, "must be a whole number")
+                raise ParameterError(self.name, shown, "must be a whole number")
             value = int(x)
         else:
             value = x
         if self.gt is not None and not x > self.gt:
-            raise ParameterError(self.name, value, f"must be > {self.gt:g}{self._u()}")
+            raise ParameterError(self.name, shown, f"must be > {self.gt:g}{self._u()}")
         if self.ge is not None and not x >= self.ge:
-            raise ParameterError(self.name, value, f"must be ≥ {self.ge:g}{self._u()}")
+            raise ParameterError(self.name, shown, f"must be ≥ {self.ge:g}{self._u()}")
         if self.lt is not None and not x < self.lt:
-            raise ParameterError(self.name, value, f"must be < {self.lt:g}{self._u()}")
+            raise ParameterError(self.name, shown, f"must be < {self.lt:g}{self._u()}")
         if self.le is not None and not x <= self.le:
-            raise ParameterError(self.name, value, f"must be ≤ {self.le:g}{self._u()}")
+            raise ParameterError(self.name, shown, f"must be ≤ {self.le:g}{self._u()}")
         lo, hi = self.magnitudes()
-        if not (x == 0.0 or lo <= abs(x) <= hi):
-            raise ParameterError(self.name, value, f"must be {self.domain()}")
+        if not abs(x) <= hi or (abs(x) < lo and not self._signs_allow(0.0)):
+            raise ParameterError(self.name, shown, f"must be {self.domain()}")
         if self.turn and not self.integer:
             return wrap_deg(x) if self.unit == "deg" else x
         return value
@@ -175,13 +179,10 @@ class Param:
         for b in (self.lt, self.le):
             high = high if b is None else min(high, b)
         u = self._u()
-        zero_ok = lo > 0.0 and self._signs_allow(0.0)
-        if lo == hi:
-            return f"{lo:g}{u}" if low >= 0.0 else f"−{lo:g} or +{lo:g}{u}"
-        if low >= 0.0:
-            return f"{'0 or ' if zero_ok else ''}between {max(lo, low):g} and {high:g}{u}"
-        if lo > 0.0:
-            return f"0 or between {lo:g} and {hi:g}{u} in size, either sign"
+        if lo == hi and not self._signs_allow(0.0):
+            return f"{lo:g}{u}" if low >= 0.0 else f"+{lo:g} or −{lo:g}{u}"
+        if not self._signs_allow(0.0):  # a positive quantity: at least its physical least
+            return f"between {max(lo, low):g} and {high:g}{u}"
         return f"between {low:g} and {high:g}{u}"
 
     def _signs_allow(self, x: float) -> bool:

@@ -48,6 +48,10 @@ RELATIVE_PRECISION = 0.005
 MM_SUFFIX = "_mm"
 DEG_SUFFIX = "_deg"
 
+#: The scale factors k_l that --scale accepts (m/mm): from 1000:1 to 1:10⁹, far past any
+#: drawing's, so that a reading times k_l stays a finite number.
+SCALE_RANGE = (1e-6, 1e6)
+
 #: How each plan's scale is written, with its unit (k_l in m/mm, ...).
 PLAN_SCALES: dict[str, tuple[str, str]] = {
     "l": ("k_l", "m/mm"),
@@ -130,8 +134,27 @@ def verify(
     """
     if scale is not None and not (math.isfinite(scale) and scale > 0.0):
         raise ParameterError("scale", scale, "must be a number > 0 (k_l in m/mm)")
-    items = tuple(_item(solution, name, value, scale) for name, value in measured.items())
+    lo, hi = SCALE_RANGE
+    if scale is not None and not lo <= scale <= hi:
+        raise ParameterError("scale", scale, f"must lie between {lo:g} and {hi:g} (k_l in m/mm)")
+    items = tuple(
+        _finite(_item(solution, name, value, scale), value) for name, value in measured.items()
+    )
     return Report(solution.problem.id, items)
+
+
+def _finite(it: Item, raw: object) -> Item:
+    """The item, unless a number in it is not finite (a reading so far off that its deviation
+    overflows): that reading is bad input, named."""
+    values = (it.measured, it.exact, it.deviation, it.deviation_mm, it.precision, it.measured_mm)
+    if all(v is None or math.isfinite(v) for v in values):
+        return it
+    raise ParameterError(
+        f"measured {it.name}",
+        raw,
+        f"its deviation from the exact value {it.exact:.6g} is not a finite number in "
+        "float64: a reading off a drawing is never that large or that small",
+    )
 
 
 def _item(solution: Solution, name: str, raw: float | str, scale: float | None) -> Item:

@@ -13,14 +13,15 @@ integration, a root search): spent, it is a ``ConstructionError`` naming the ste
 
     >>> import math
     >>> from geomcad.construction import Construction
-    >>> with guarded("demo") as watch:
-    ...     c = Construction("demo")
-    ...     _ = c.value("a", 1.0, "given")
-    ...     x = math.exp(1000.0)
-    Traceback (most recent call last):
-    ...
-    geomcad.errors.ConstructionError: step "the step after «a» in demo": a number overflowed \
-(OverflowError: math range error)
+    >>> from geomcad.errors import ConstructionError
+    >>> try:
+    ...     with guarded("demo"):
+    ...         c = Construction("demo")
+    ...         _ = c.value("a", 1.0, "given")
+    ...         x = math.exp(1000.0)
+    ... except ConstructionError as exc:
+    ...     print(exc.step)
+    the step after «a» in demo
 """
 
 from __future__ import annotations
@@ -34,13 +35,16 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from geomcad.errors import ConstructionError
+from geomcad.errors import ConstructionError, GeomcadError
 
 if TYPE_CHECKING:
     from geomcad.construction.recorder import Construction
 
 #: The constructions made inside the innermost :func:`guarded` block.
 _WATCHED: ContextVar[list[Construction] | None] = ContextVar("geomcad_watched", default=None)
+
+#: The prefix of the note that :func:`guarded` adds to an unexpected exception: where it happened.
+STEP_NOTE = "geomcad step: "
 
 #: What the arithmetic raises when a number leaves float64 or a formula leaves its domain.
 NUMERIC = (
@@ -117,6 +121,9 @@ def guarded(title: str) -> Iterator[list[Construction]]:
         raise
     except Exception as exc:
         if not is_numeric(exc):
+            if not isinstance(exc, GeomcadError):
+                # an unexpected exception keeps its type; the note says where it happened
+                exc.add_note(STEP_NOTE + running_step(title, box))
             raise
         raise ConstructionError(running_step(title, box), why(exc)) from exc
     finally:

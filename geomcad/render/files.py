@@ -3,14 +3,18 @@
 
 Every file is written atomically (a temporary file in the same directory, then ``os.replace``),
 so a reader never sees half a sheet and a failure leaves neither a partial file nor a stray
-temporary one. Every SVG and DXF is written before any PDF or PNG: they need nothing from the
-system, so a machine without libcairo still gets them before
+temporary one. A process killed outright (SIGKILL, a power cut) cannot clean up after itself: its
+temporary file (``.NAME.PID-HEX.tmp``) stays, and the next :func:`write_sheets` into that folder
+removes every temporary file of this naming whose process is gone
+(:func:`remove_stale_temporaries`). Every SVG and DXF is written before any PDF or PNG: they need
+nothing from the system, so a machine without libcairo still gets them before
 :class:`~geomcad.errors.MissingDependency`.
 """
 
 from __future__ import annotations
 
 import os
+import re
 import uuid
 from collections.abc import Callable, Sequence
 from pathlib import Path
@@ -53,6 +57,46 @@ def _check_formats(formats: Sequence[str]) -> list[str]:
         if f not in FORMATS:
             raise ParameterError("--format", f, f"allowed formats are {', '.join(FORMATS)}")
     return [f for f in WRITE_ORDER if f in formats]
+
+
+#: The name of a temporary file of :func:`write_atomic`: ``.NAME.PID-HEX12.tmp``.
+TEMP_NAME = re.compile(r"^\..+\.(?P<pid>[0-9]+)-[0-9a-f]{12}\.tmp$")
+
+
+def _alive(pid: int) -> bool:
+    """True when a process ``pid`` exists (on this machine's process table)."""
+    if pid == os.getpid():
+        return True
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except (PermissionError, OSError):
+        return True  # it exists, owned by someone else (or we cannot tell: keep its file)
+    return True
+
+
+def remove_stale_temporaries(folder: Path) -> list[Path]:
+    """Remove the temporary files of :func:`write_atomic` in ``folder`` whose writing process no
+    longer runs (killed while it wrote); return them. Files of live processes (another build
+    writing into the same folder) and every other file are left alone."""
+    removed: list[Path] = []
+    try:
+        names = os.listdir(folder)
+    except OSError:
+        return removed
+    for name in names:
+        m = TEMP_NAME.match(name)
+        if m is None or _alive(int(m.group("pid"))):
+            continue
+        path = Path(folder) / name
+        try:
+            if path.is_file() and not path.is_symlink():
+                path.unlink()
+                removed.append(path)
+        except OSError:
+            pass  # another build removed it first, or the folder is read-only: not ours to fix
+    return removed
 
 
 def write_atomic(path: Path, data: bytes) -> None:
@@ -111,6 +155,7 @@ def write_sheets(
     # Render every SVG before writing any, so a sheet that cannot be drawn writes nothing.
     svgs = [to_svg(sheet, colour) for _name, sheet in sheets]
     out_dir.mkdir(parents=True, exist_ok=True)
+    remove_stale_temporaries(out_dir)
     written: list[Path] = []
     if "svg" in wanted:
         for stem, svg in zip(stems, svgs, strict=True):
