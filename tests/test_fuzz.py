@@ -1,0 +1,221 @@
+"""Fuzzing every problem's parameters: a result with only finite numbers, or a GeomcadError.
+
+Never another exception, never a warning, never a hang: each call must answer within
+:data:`CALL_SECONDS` (an alarm stops a call that does not). The values mix the ordinary (a
+default scaled or with its sign flipped, values across the parameter's own range) with the
+hostile (0, −0, the smallest subnormal, 1e±308, huge integers, NaN, ±inf, the ends of each
+physical range, text). In CI the examples are derandomized and few (a budget of about 15 s);
+``HYPOTHESIS_PROFILE=explore`` draws fresh ones, and ``GEOMCAD_FUZZ_EXAMPLES=N`` sets how many per
+problem (e.g. ``HYPOTHESIS_PROFILE=explore GEOMCAD_FUZZ_EXAMPLES=400 pytest tests/test_fuzz.py``);
+``GEOMCAD_FUZZ_SHEETS=1`` draws the sheets of every result too.
+"""
+
+from __future__ import annotations
+
+import io
+import math
+import os
+import signal
+import time
+import warnings
+from collections.abc import Iterator
+from contextlib import contextmanager, redirect_stderr, redirect_stdout
+from typing import Any
+
+import numpy as np
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+import geomcad
+from geomcad import registry
+from geomcad.cli import main
+from geomcad.problem import Param
+
+IDS = registry.problem_ids()
+EXAMPLES = int(os.environ.get("GEOMCAD_FUZZ_EXAMPLES", "40"))
+SHEETS = bool(os.environ.get("GEOMCAD_FUZZ_SHEETS"))
+#: The longest a call may take (the budgets of iterative steps are ~1 s on an idle machine; CI
+#: machines are shared, so the bound is generous: it catches hangs, not slowness).
+CALL_SECONDS = 20.0
+
+HOSTILE: list[object] = [
+    0.0,
+    -0.0,
+    5e-324,
+    -5e-324,
+    1e-308,
+    1e-300,
+    1e308,
+    -1e308,
+    1e30,
+    -1e30,
+    math.nan,
+    math.inf,
+    -math.inf,
+    10**40,
+    -(10**40),
+    10**400,
+    True,
+    "1",
+    None,
+    [1.0],
+]
+
+
+class _Hang(Exception):
+    pass
+
+
+@contextmanager
+def _time_bound(seconds: float) -> Iterator[None]:
+    def ring(signum: int, frame: object) -> None:
+        raise _Hang(f"no answer within {seconds} s")
+
+    old = signal.signal(signal.SIGALRM, ring)
+    signal.setitimer(signal.ITIMER_REAL, seconds)
+    try:
+        yield
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0.0)
+        signal.signal(signal.SIGALRM, old)
+
+
+def _values(p: Param) -> st.SearchStrategy[object]:
+    """Values for one parameter: ordinary ones near its default and in its range, and hostile
+    ones (see :data:`HOSTILE`), including the ends of its physical range."""
+    if p.choices:
+        return st.sampled_from([*p.choices, "", "linear ", "НЕТ", 1.0])
+    lo, hi = p.magnitudes()
+    edges: list[object] = [lo, hi, -lo, -hi, hi * (1.0 + 1e-9), lo * (1.0 - 1e-9)]
+    for b in (p.gt, p.ge, p.lt, p.le):
+        if b is not None:
+            edges += [b, math.nextafter(b, math.inf), math.nextafter(b, -math.inf)]
+    if p.integer:
+        base = int(p.default) if isinstance(p.default, int) else 1
+        ordinary: st.SearchStrategy[object] = st.one_of(
+            st.integers(-3, 3 * max(abs(base), 3)), st.integers(-(10**6), 10**6)
+        )
+        edges = [int(e) for e in edges if isinstance(e, float) and abs(e) < 1e18]
+    else:
+        base_f = float(p.default) if isinstance(p.default, int | float) else 1.0
+        scale = abs(base_f) or 1.0
+        ordinary = st.one_of(
+            st.floats(0.1, 10.0).map(lambda f: base_f * f),
+            st.floats(-10.0 * scale, 10.0 * scale, allow_nan=False),
+            st.floats(-hi, hi, allow_nan=False, allow_infinity=False),
+        )
+    return st.one_of(ordinary, ordinary, st.sampled_from(HOSTILE + edges))
+
+
+def _params(pid: str) -> st.SearchStrategy[dict[str, object]]:
+    problem = registry.get(pid)
+    names = [p.name for p in problem.params]
+    return st.lists(st.sampled_from(names), min_size=1, max_size=4, unique=True).flatmap(
+        lambda chosen: st.fixed_dictionaries({n: _values(problem.param(n)) for n in chosen})
+    )
+
+
+def _finite(value: Any, path: str) -> None:
+    if isinstance(value, bool | str) or value is None:
+        return
+    if isinstance(value, int | float | np.floating | np.integer):
+        assert math.isfinite(float(value)), f"{path} = {value}"
+    elif isinstance(value, np.ndarray):
+        assert np.all(np.isfinite(value)), path
+    elif isinstance(value, dict):
+        for k, v in value.items():
+            _finite(v, f"{path}.{k}")
+    elif isinstance(value, list | tuple):
+        for i, v in enumerate(value):
+            _finite(v, f"{path}.{i}")
+
+
+def _answer(pid: str, params: dict[str, object]) -> None:
+    """Solve (and draw) under the time bound: finite results or a GeomcadError, nothing else."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")  # a warning escaping the library is a finding too
+        start = time.monotonic()
+        try:
+            with _time_bound(CALL_SECONDS):
+                sol = geomcad.solve(pid, **params)
+                _finite(sol.results, "results")
+                if SHEETS:
+                    sol.sheets()
+        except geomcad.GeomcadError as exc:
+            assert str(exc).strip(), "an error says what is wrong"
+        finally:
+            elapsed = time.monotonic() - start
+        assert elapsed < CALL_SECONDS
+
+
+@pytest.mark.parametrize("pid", IDS)
+def test_every_parameter_gives_a_finite_result_or_a_geomcad_error(pid: str) -> None:
+    @settings(
+        max_examples=EXAMPLES,
+        deadline=None,
+        suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large],
+    )
+    @given(params=_params(pid))
+    def run(params: dict[str, object]) -> None:
+        _answer(pid, params)
+
+    run()
+
+
+TEXTS = st.one_of(
+    st.sampled_from(
+        [
+            "nan",
+            "inf",
+            "-inf",
+            "1e308",
+            "-1e308",
+            "5e-324",
+            "0",
+            "-0",
+            "1,5",
+            "1,5,5",
+            "١٢",
+            "0x10",
+            "1_000",
+            "",
+            " ",
+            "9" * 60,
+            "9" * 5000,
+            "1e999",
+            "+",
+            "e",
+            "٣٫٥",
+            "½",
+            "linear",
+            "∞",
+        ]
+    ),
+    st.text(max_size=12),
+)
+
+
+@settings(max_examples=max(EXAMPLES, 10), deadline=None)
+@given(
+    pid=st.sampled_from(IDS),
+    index=st.integers(0, 50),
+    text=TEXTS,
+    json_=st.booleans(),
+)
+def test_the_cli_takes_any_text_without_a_traceback(
+    pid: str, index: int, text: str, json_: bool
+) -> None:
+    params = registry.get(pid).params
+    name = params[index % len(params)].name
+    argv = ["solve", pid, "--set", f"{name}={text}", *(["--json"] if json_ else [])]
+    out_io, err_io = io.StringIO(), io.StringIO()
+    with _time_bound(CALL_SECONDS), redirect_stdout(out_io), redirect_stderr(err_io):
+        code = main(argv)
+    out, err = out_io.getvalue(), err_io.getvalue()
+    assert code in (0, 2), (argv, code, err)
+    if code == 2:
+        assert out == ""
+        assert err.startswith("error: ") and err.count("\n") == 1, err
+    else:
+        assert err == ""
