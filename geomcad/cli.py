@@ -32,8 +32,13 @@ from typing import IO, TYPE_CHECKING, Any, NoReturn
 
 import geomcad
 from geomcad import registry
-from geomcad.construction.guard import STEP_NOTE
-from geomcad.errors import GeomcadError, MissingDependency, ParameterError, UnknownProblem
+from geomcad.errors import (
+    STEP_NOTE,
+    GeomcadError,
+    MissingDependency,
+    ParameterError,
+    UnknownProblem,
+)
 
 if TYPE_CHECKING:
     from geomcad.problem import ParamValue, Problem, Solution

@@ -8,6 +8,10 @@ turns any of them into one ``error:`` line and exit status 2.
 
 from __future__ import annotations
 
+#: The prefix of the note that a solve adds to an unexpected exception (not a GeomcadError): the
+#: step that was running, which the CLI's "internal error in STEP" line quotes.
+STEP_NOTE = "geomcad step: "
+
 
 class GeomcadError(ValueError):
     """Root of every error geomcad raises on purpose."""

@@ -24,9 +24,6 @@ from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any, Literal
 
-import numpy as np
-
-from geomcad.construction.guard import guarded
 from geomcad.errors import ConstructionError, ParameterError
 from geomcad.units import PHYSICAL, wrap_deg
 
@@ -377,6 +374,8 @@ class Problem:
                 values.pop(name, None)
                 continue
             values[name] = p.check(value)
+        from geomcad.construction.guard import guarded
+
         with guarded(f"the construction of {self.id}"):
             b = self.build(values)
         _check_finite(b.results, "results")
@@ -387,8 +386,11 @@ def _check_finite(value: object, path: str) -> None:
     """No result may hold a NaN or an infinity: it is an error naming the result."""
     if isinstance(value, float) and not math.isfinite(value):
         raise ConstructionError(path, f"the construction produced the non-finite number {value}")
-    if isinstance(value, np.ndarray):
-        if value.dtype.kind in "fc" and not np.all(np.isfinite(value)):
+    if hasattr(value, "dtype") and hasattr(value, "shape"):  # a numpy array or scalar
+        import numpy as np
+
+        a = np.asarray(value)
+        if a.dtype.kind in "fc" and not np.all(np.isfinite(a)):
             raise ConstructionError(path, "the construction produced a non-finite number")
         return
     if isinstance(value, dict):
@@ -496,6 +498,7 @@ class Solution:
         shows itself as SVG in Jupyter (:mod:`geomcad.notebook`).
         """
         import geomcad.notebook  # noqa: F401  (sets the sheets' SVG display)
+        from geomcad.construction.guard import guarded
         from geomcad.sheet.frame import fill_title_blocks
 
         with guarded(f"drawing the sheets of {self.problem.id}"):

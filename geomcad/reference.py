@@ -9,7 +9,9 @@ choices it settles).
 
     >>> from geomcad.problem import Param
     >>> domain(Param("K", 1.3, "coefficient of velocity change", gt=1.0))
-    '> 1'
+    '> 1, at most 1e+06'
+    >>> domain(Param("H", 0.2, "stroke", "m", gt=0.0))
+    '> 0, 1e-06 … 1000'
     >>> domain(Param("n_div", 4, "intervals", integer=True, ge=1, le=360))
     'whole number, ≥ 1, ≤ 360'
     >>> domain(Param("follower", "flat", "the follower", choices=("flat", "knife")))
@@ -64,6 +66,21 @@ def domain(p: Param) -> str:
     for sign, bound in (("> ", p.gt), ("≥ ", p.ge), ("< ", p.lt), ("≤ ", p.le)):
         if bound is not None:
             parts.append(f"{sign}{_num(bound)}")
+    # the physical range (Param.magnitudes): a least size where 0 is refused, a largest size
+    lo, hi = p.magnitudes()
+    low = max((b for b in (p.gt, p.ge) if b is not None), default=None)
+    high = min((b for b in (p.lt, p.le) if b is not None), default=None)
+    least = low is not None and low >= 0.0 and p.ge != 0.0 and lo > low and not p.integer
+    most = high is None or high > hi
+    positive = low is not None and low >= 0.0
+    if least and most:
+        parts.append(f"{_num(lo)} … {_num(hi)}")
+    elif least:
+        parts.append(f"at least {_num(lo)}")
+    elif most:
+        parts.append(f"at most {_num(hi)}" if positive else f"size ≤ {_num(hi)}")
+    if p.turn:
+        parts.append("taken modulo 360°")
     return ", ".join(parts) or "any number"
 
 

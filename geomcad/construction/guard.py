@@ -35,16 +35,13 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from geomcad.errors import ConstructionError, GeomcadError
+from geomcad.errors import STEP_NOTE, ConstructionError, GeomcadError
 
 if TYPE_CHECKING:
     from geomcad.construction.recorder import Construction
 
 #: The constructions made inside the innermost :func:`guarded` block.
 _WATCHED: ContextVar[list[Construction] | None] = ContextVar("geomcad_watched", default=None)
-
-#: The prefix of the note that :func:`guarded` adds to an unexpected exception: where it happened.
-STEP_NOTE = "geomcad step: "
 
 #: What the arithmetic raises when a number leaves float64 or a formula leaves its domain.
 NUMERIC = (
