@@ -1,13 +1,16 @@
-"""``geomcad build --jobs N``: problems solved and drawn in worker processes.
+"""``geomcad build --jobs N``: problems solved, drawn and rendered in worker processes.
 
-Each worker solves one problem (or file), draws its sheets and renders every requested format to
-bytes, named as :func:`geomcad.render.write_sheets` names them; the parent writes the files in
-the order of the ids, after every worker has finished, so bad input writes nothing and the output
-is byte-identical to a serial build.
+Each worker prepares one problem or file as a serial build does (:func:`geomcad.cli._prepare`:
+the same title-block data, the review sheets when asked) and writes its files with
+:func:`geomcad.render.write_sheets` itself, into a private temporary folder, then hands back
+their names and bytes. The parent writes them into the output folder in the order of the ids,
+after every worker has finished: bad input writes nothing, and the output is byte-identical to a
+serial build whatever formats ``write_sheets`` knows.
 """
 
 from __future__ import annotations
 
+import tempfile
 from pathlib import Path
 from typing import Any
 
@@ -15,38 +18,38 @@ from geomcad.errors import GeomcadError, MissingDependency
 
 
 def build_one(
-    pid: str, formats: tuple[str, ...], colour: bool, options: Any, workdir: Any, review: bool
-) -> tuple[str, list[tuple[str, bytes]], str, str]:
-    """Solve, draw and render ``pid`` as a serial ``build`` does (:func:`geomcad.cli._prepare`
-    with the same title-block data): (stem, [(file name, bytes)], error, missing dependency).
+    pid: str,
+    formats: tuple[str, ...],
+    plain: tuple[str, ...],
+    colour: bool,
+    options: Any,
+    workdir: Any,
+    review: bool,
+) -> tuple[str, int, list[tuple[str, bytes]], str, str]:
+    """Prepare and render ``pid``: (stem, number of sheets, [(file name, bytes)], error,
+    missing dependency).
 
-    Errors come back as text (worker exceptions need not pickle); the files then are none, or
-    the SVGs only when libcairo is missing.
+    Errors come back as text (worker exceptions need not pickle): the files are then none, or
+    only the ``plain`` formats (SVG, DXF) when libcairo is missing.
     """
     from geomcad import cli
-    from geomcad.render import to_pdf, to_png, to_svg
-    from geomcad.render.files import PNG_DPI
+    from geomcad.render import write_sheets
 
     try:
         stem, sheets = cli._prepare(pid, options, workdir, review)
-        stems = [f"{stem}-{name}" if name else stem for name, _ in sheets]
-        svgs = [to_svg(sheet, colour) for _, sheet in sheets]
     except (GeomcadError, cli._Failed) as exc:
-        return pid, [], str(exc), ""
-    files: list[tuple[str, bytes]] = []
-    if "svg" in formats:
-        files += [(f"{s}.svg", svg.encode("utf-8")) for s, svg in zip(stems, svgs, strict=True)]
-    try:
-        for fmt in ("pdf", "png"):
-            if fmt not in formats:
-                continue
-            for s, svg in zip(stems, svgs, strict=True):
-                data = to_pdf(svg) if fmt == "pdf" else to_png(svg, dpi=PNG_DPI)
-                files.append((f"{s}.{fmt}", data))
-    except MissingDependency as exc:
-        svg_only = [(f"{s}.svg", svg.encode("utf-8")) for s, svg in zip(stems, svgs, strict=True)]
-        return stem, svg_only, "", str(exc)
-    return stem, files, "", ""
+        return pid, 0, [], str(exc), ""
+    missing = ""
+    with tempfile.TemporaryDirectory(prefix="geomcad-build-") as tmp:
+        try:
+            paths = write_sheets(stem, sheets, Path(tmp), list(formats), colour=colour)
+        except MissingDependency as exc:
+            missing = str(exc)
+            paths = write_sheets(stem, sheets, Path(tmp), list(plain), colour=colour)
+        except GeomcadError as exc:
+            return pid, 0, [], str(exc), ""
+        files = [(p.name, p.read_bytes()) for p in paths]
+    return stem, len(sheets), files, "", missing
 
 
 def write(out: Path, files: list[tuple[str, bytes]]) -> list[Path]:
