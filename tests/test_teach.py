@@ -428,12 +428,12 @@ def test_parallel_build_is_byte_identical_to_serial(
 ) -> None:
     ids = ["2013-8", "2013-7"]
     code1, out1, err1 = run(capsys, "build", *ids, "--out", str(tmp_path / "s"), "--format",
-                            "svg,pdf")  # fmt: skip
+                            "svg,pdf,dxf")  # fmt: skip
     code2, out2, err2 = run(capsys, "build", *ids, "--out", str(tmp_path / "p"), "--format",
-                            "svg,pdf", "--jobs", "2")  # fmt: skip
+                            "svg,pdf,dxf", "--jobs", "2")  # fmt: skip
     assert code1 == code2 == 0
     serial = sorted(p.name for p in (tmp_path / "s").iterdir())
-    assert serial == sorted(p.name for p in (tmp_path / "p").iterdir()) and len(serial) == 4
+    assert serial == sorted(p.name for p in (tmp_path / "p").iterdir()) and len(serial) == 6
     for name in serial:
         assert (tmp_path / "s" / name).read_bytes() == (tmp_path / "p" / name).read_bytes(), name
     assert out2 == out1.replace(str(tmp_path / "s"), str(tmp_path / "p"))
