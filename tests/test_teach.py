@@ -543,3 +543,15 @@ def test_variants_of_a_real_linkage_file_and_a_class_graded_off_its_plans(
         ("A", "positions.3.V_B_mm", "yes"), ("A", "stroke_mm", "yes"),
         ("B", "positions.3.V_B_mm", "no")]  # fmt: skip
     assert float(verdicts[0]["precision"]) == pytest.approx(0.5 * kv)
+
+
+def test_the_default_key_of_a_gear_file_leaves_out_the_data_it_gives_back(
+    capsys: pytest.CaptureFixture[str], tmp_path: Path
+) -> None:
+    code, _, _ = run(capsys, "variants", str(EXAMPLES / "gear-pair.toml"), "--count", "2",
+                     "--seed", "1", "--out", str(tmp_path), "--vary", "gears.pair.z2=25..40:1",
+                     "--format", "svg")  # fmt: skip
+    assert code == 0
+    columns = list(_answers(tmp_path)[0])[2:]
+    assert "x1" in columns and "a_w" in columns
+    assert not {"z1", "z2", "m"} & set(columns)

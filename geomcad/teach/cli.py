@@ -142,6 +142,9 @@ def cmd_variants(ns: argparse.Namespace) -> int:
             template, drawn.variants[0].results
         )
         columns = variants.key_columns(drawn.variants, patterns, explicit=bool(ns.key))
+        if not ns.key:  # the default key asks for results, not for the data given back
+            given = set(variants.echoes(template, drawn.variants, columns))
+            columns = [c for c in columns if c not in given] or columns
         width = variants.number_width(ns.count)
         out = Path(ns.out)
         names = [variants.variant_name(template, v.number, width) for v in drawn.variants]

@@ -521,3 +521,37 @@ def variant_sets(path: Path) -> tuple[str, list[tuple[str, str]]]:
     ):
         raise ParameterError(str(path), "", 'is not a variant file (needs "id" and "set")')
     return obj["id"], [(str(k), str(v)) for k, v in obj["set"].items()]
+
+
+def echoes(template: Template, variants: Sequence[Variant], columns: Sequence[str]) -> list[str]:
+    """The key's columns that only repeat a file's given data (a gear file's z1 as a result):
+    a single result named as a value of the file, equal to it in every variant."""
+    if template.data is None:
+        return []
+
+    def given(data: Mapping[str, Any]) -> dict[str, Any]:
+        out: dict[str, Any] = {}
+
+        def walk(node: Any, name: str) -> None:
+            if isinstance(node, Mapping):
+                for k, v in node.items():
+                    walk(v, str(k))
+            elif isinstance(node, list):
+                for v in node:
+                    walk(v, name)
+            elif isinstance(node, int | float) and not isinstance(node, bool):
+                out.setdefault(name, node)
+
+        walk(data, "")
+        return out
+
+    data = [given(template.variant_data(v.values)) for v in variants]
+    return [
+        c
+        for c in columns
+        if "." not in c
+        and all(
+            c in d and c in v.results and d[c] == v.results[c]
+            for d, v in zip(data, variants, strict=True)
+        )
+    ]
