@@ -10,3 +10,6 @@
 
 This package sits on top of the library (with ``problem``, ``documents`` and ``verify``).
 """
+
+#: Default lower limit of a linkage file's transmission angle in ``geomcad variants`` (degrees).
+MIN_TRANSMISSION_DEG = 40.0

@@ -1,4 +1,8 @@
-"""The ``geomcad variants`` command (its parser and its run), hooked into :mod:`geomcad.cli`."""
+"""The ``geomcad variants`` command (its parser and its run), hooked into :mod:`geomcad.cli`.
+
+Building the parser imports nothing heavy (``geomcad list`` and ``--help`` stay light): the
+modules that draw and solve are imported when the command runs.
+"""
 
 from __future__ import annotations
 
@@ -11,10 +15,13 @@ import sys
 import time
 from collections.abc import Callable, Sequence
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from geomcad.errors import GeomcadError, ParameterError
-from geomcad.teach import cards, jobs, keys, variants
+from geomcad.teach import MIN_TRANSMISSION_DEG, jobs
+
+if TYPE_CHECKING:
+    from geomcad.teach import cards, variants
 
 CARD_FORMATS = ("svg", "pdf", "png")
 
@@ -43,7 +50,7 @@ def add_variants(sub: Any, add_set: Callable[[argparse.ArgumentParser], None]) -
         default=None,
         metavar="DEG",
         help="linkage files: reject a variant whose transmission angle falls below "
-        f"(default {variants.MIN_TRANSMISSION_DEG:g}; 0: no check)",
+        f"(default {MIN_TRANSMISSION_DEG:g}; 0: no check)",
     )
     s.add_argument("--key", metavar="NAMES", help="results in the answer key, e.g. l1,l2,r.*")
     s.add_argument("--course", default="TMM", help="the course, for the title blocks")
@@ -91,6 +98,7 @@ def render_card(
     """One variant's task card rendered to each format (run in a worker process)."""
     from geomcad.render import to_pdf, to_png, to_svg
     from geomcad.render.files import PNG_DPI
+    from geomcad.teach import cards
 
     sol = template.solve(values, file_id)
     data = template.variant_data(values) if template.is_file else None
@@ -109,6 +117,7 @@ def render_card(
 def cmd_variants(ns: argparse.Namespace) -> int:
     """Run ``geomcad variants`` (see :mod:`geomcad.teach.variants`)."""
     from geomcad.render.files import write_atomic
+    from geomcad.teach import cards, keys, variants
 
     started = time.perf_counter()
     n_jobs = jobs.check_jobs(ns.jobs)
@@ -117,7 +126,7 @@ def cmd_variants(ns: argparse.Namespace) -> int:
     varies = [variants.parse_vary(t) for t in ns.vary]
     linkage = template.kind == "linkage"
     if ns.min_transmission_deg is None:
-        min_tr = variants.MIN_TRANSMISSION_DEG if linkage else 0.0
+        min_tr = MIN_TRANSMISSION_DEG if linkage else 0.0
     else:
         min_tr = float(ns.min_transmission_deg)
         if not 0.0 <= min_tr < 90.0:

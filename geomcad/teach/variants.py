@@ -37,13 +37,11 @@ import numpy as np
 
 from geomcad import documents, registry
 from geomcad.errors import GeomcadError, ParameterError
-from geomcad.teach import keys, transmission
+from geomcad.teach import MIN_TRANSMISSION_DEG, keys, transmission
 
 if TYPE_CHECKING:
     from geomcad.problem import ParamValue, Problem, Solution
 
-#: Default lower limit of the transmission angle of a linkage file (degrees).
-MIN_TRANSMISSION_DEG = 40.0
 
 #: Draws allowed per variant asked for, before the run gives up (rejections included).
 DRAWS_PER_VARIANT = 50
