@@ -26,6 +26,7 @@ import math
 import os
 import signal
 import sys
+import time
 from collections.abc import Sequence
 from pathlib import Path
 from typing import IO, TYPE_CHECKING, Any, NoReturn
@@ -235,6 +236,9 @@ def _parser(help_for: tuple[str, str] | None = None) -> _Parser:
     s.add_argument(
         "--color", action="store_true", help="colour the construction and results (for screens)"
     )
+    s.add_argument(
+        "--jobs", type=int, default=1, metavar="N", help="worker processes (default 1; 0: per core)"
+    )
     _add_title_options(s)
     s.set_defaults(func=_cmd_build)
 
@@ -258,18 +262,25 @@ def _parser(help_for: tuple[str, str] | None = None) -> _Parser:
         epilog=VERIFY_RULES + "\n" + _help_epilog("verify", help_for),
         formatter_class=raw,
     )
-    s.add_argument("id", metavar="ID", help=ID_HELP)
+    s.add_argument("id", metavar="ID", help=ID_HELP + " (with --batch: the students' CSV)")
     s.add_argument(
         "--measured",
         action="append",
-        required=True,
         metavar="NAME=VALUE",
         help="a result in SI units, NAME_mm=VALUE for a length in sheet mm, NAME.INDEX for an item",
     )
     _add_set(s)
     s.add_argument("--scale", metavar="K", help="k_l in m/mm for NAME_mm readings")
     s.add_argument("--json", action="store_true", help="print one JSON object")
+    s.add_argument(
+        "--batch", metavar="ANSWERS.csv", help="grade a class: the answers.csv of geomcad variants"
+    )
+    s.add_argument("--out", metavar="FILE", help="with --batch: the verdicts CSV (default stdout)")
     s.set_defaults(func=_cmd_verify)
+
+    from geomcad.teach.cli import add_variants
+
+    add_variants(sub, _add_set)
     return p
 
 
@@ -306,7 +317,7 @@ def _title_data(ns: argparse.Namespace) -> tuple[Any, Any]:
 ID_HELP = "a problem id (geomcad list), e.g. 2013-6, or a file FILE.toml"
 
 #: Options of solve and verify that take a value (skipped when looking for the ID).
-_VALUED = ("--set", "--measured", "--scale", "--out", "--format")
+_VALUED = ("--set", "--measured", "--scale", "--out", "--format", "--batch")
 
 
 def _help_topic(args: Sequence[str]) -> tuple[str, str] | None:
@@ -392,35 +403,60 @@ def _cmd_build(ns: argparse.Namespace) -> int:
         raise _Failed("no problems are registered (is geomcad installed with pip install .?)")
     formats = _formats(ns.format)
     from geomcad import documents
+    from geomcad.teach import jobs
 
+    n_jobs = jobs.check_jobs(ns.jobs)
     for pid in ids:
         if not documents.is_file_id(pid):
             registry.get(pid)  # an unknown id fails before anything is written
+    out = Path(ns.out)
+    if out.exists() and not out.is_dir():
+        raise _Failed(f"--out {out}: is a file, not a folder")
     options, workdir = _title_data(ns)
+    # without libcairo the SVGs are still written, and the DXFs when asked for
+    plain = ["svg"] + [f for f in formats if f in PLAIN_FORMATS and f != "svg"]
+    started = time.perf_counter()
+    if n_jobs > 1:
+        return _build_parallel(ns, ids, formats, plain, n_jobs, started, (options, workdir))
     # solve and draw everything first, so that bad input writes no file and prints nothing
     prepared: list[tuple[str, Any]] = []
-    for pid in ids:
-        try:
-            sol = documents.solve(pid) if documents.is_file_id(pid) else geomcad.solve(pid)
-            own = _file_title(pid, sol)
-            # the options over the file's own [sheet] table over ./geomcad.toml's
-            title = options.over(workdir if own is None else own.over(workdir))
-            sheets = sol.sheets(title)
-            if ns.review:
-                from geomcad.review import review_sheets
+    with jobs.bar(2 * len(ids), "step", "build") as tick:
+        for pid in ids:
+            prepared.append(_prepare(pid, options, workdir, ns.review))
+            tick(1)
+        return _write_prepared(ns, prepared, formats, plain, tick, started)
 
-                sheets += review_sheets(sol, title)
-        except GeomcadError as exc:
-            raise _Failed(_prefixed(pid, exc)) from exc
-        prepared.append((documents.stem(pid) if documents.is_file_id(pid) else pid, sheets))
 
+def _prepare(pid: str, options: Any, workdir: Any, review: bool) -> tuple[str, Any]:
+    """Solve and draw one problem or file for ``build``: (its file stem, its sheets)."""
+    from geomcad import documents
+
+    try:
+        sol = documents.solve(pid) if documents.is_file_id(pid) else geomcad.solve(pid)
+        own = _file_title(pid, sol)
+        # the options over the file's own [sheet] table over ./geomcad.toml's
+        title = options.over(workdir if own is None else own.over(workdir))
+        sheets = sol.sheets(title)
+        if review:
+            from geomcad.review import review_sheets
+
+            sheets += review_sheets(sol, title)
+    except GeomcadError as exc:
+        raise _Failed(_prefixed(pid, exc)) from exc
+    return (documents.stem(pid) if documents.is_file_id(pid) else pid, sheets)
+
+
+def _write_prepared(
+    ns: argparse.Namespace,
+    prepared: list[tuple[str, Any]],
+    formats: list[str],
+    plain: list[str],
+    tick: Any,
+    started: float,
+) -> int:
     from geomcad.render import write_sheets
 
     out = Path(ns.out)
-    # without libcairo the SVGs are still written, and the DXFs when asked for
-    plain = ["svg"] + [f for f in formats if f in PLAIN_FORMATS and f != "svg"]
-    if out.exists() and not out.is_dir():
-        raise _Failed(f"--out {out}: is a file, not a folder")
     missing: MissingDependency | None = None
     old = _catch_signals()
     try:
@@ -436,6 +472,7 @@ def _cmd_build(ns: argparse.Namespace) -> int:
             else:
                 paths = write_sheets(pid, sheets, out, plain, colour=ns.color)
             _write(sys.stdout, "".join(f"{p}\n" for p in paths))
+            tick(1)
     except BrokenPipeError:
         raise
     except OSError as exc:
@@ -447,6 +484,51 @@ def _cmd_build(ns: argparse.Namespace) -> int:
         what = "SVG and DXF files" if "dxf" in plain else "SVGs"
         _write(sys.stderr, _error_line(f"{_one_line(str(missing))}; only the {what} were written"))
         return EXIT_BAD_INPUT
+    _build_summary(sum(len(sheets) for _, sheets in prepared), len(prepared), started)
+    return EXIT_OK
+
+
+def _build_summary(n_sheets: int, n_ids: int, started: float) -> None:
+    """The one line a build ends with, on stderr (stdout keeps the written paths only)."""
+    seconds = time.perf_counter() - started
+    _write(sys.stderr, f"built {n_sheets} sheets of {n_ids} problems in {seconds:.1f} s\n")
+
+
+def _build_parallel(
+    ns: argparse.Namespace,
+    ids: list[str],
+    formats: list[str],
+    plain: list[str],
+    n_jobs: int,
+    started: float,
+    title: tuple[Any, Any],
+) -> int:
+    """``build --jobs N``: solve, draw and render in worker processes (each through
+    ``write_sheets``, as a serial build), then write in the order of the ids."""
+    from geomcad import documents
+    from geomcad.teach import build, jobs
+
+    jobs.warm([pid for pid in ids if documents.is_file_id(pid)], set(formats) - set(plain) != set())
+    args = [(pid, tuple(formats), tuple(plain), ns.color, *title, ns.review) for pid in ids]
+    with jobs.bar(len(ids), "problem", "build") as tick, jobs.pool(n_jobs, tick) as run:
+        done = run(build.build_one, args)
+    for pid, (_stem, _n, _files, error, _missing) in zip(ids, done, strict=True):
+        if error:
+            raise _Failed(_prefixed(pid, GeomcadError(error)))
+    out = Path(ns.out)
+    missing = ""
+    try:
+        for _stem, _n, files, _error, lacking in done:
+            missing = missing or lacking
+            paths = build.write(out, files)
+            _write(sys.stdout, "".join(f"{p}\n" for p in paths))
+    except OSError as exc:
+        raise _Failed(f"cannot write to {out}: {exc.strerror or exc}") from exc
+    if missing:
+        what = "SVG and DXF files" if "dxf" in plain else "SVGs"
+        _write(sys.stderr, _error_line(f"{_one_line(missing)}; only the {what} were written"))
+        return EXIT_BAD_INPUT
+    _build_summary(sum(n for _, n, _, _, _ in done), len(ids), started)
     return EXIT_OK
 
 
@@ -510,6 +592,13 @@ def _restore_signals(old: dict[int, Any]) -> None:
 def _cmd_verify(ns: argparse.Namespace) -> int:
     from geomcad.verify import verify
 
+    if ns.batch is not None:
+        from geomcad.teach.batch import run_batch
+
+        scale = None if ns.scale is None else _scale(ns.scale)
+        return run_batch(ns.batch, ns.id, ns.out, scale, sys.stdout, sys.stderr)
+    if not ns.measured:
+        raise _UsageError("geomcad verify: the following arguments are required: --measured")
     measured = dict(_pair(text, "--measured") for text in ns.measured)
     scale = None if ns.scale is None else _scale(ns.scale)
     sol = _solve(ns.id, ns.set)

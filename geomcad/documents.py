@@ -146,6 +146,12 @@ def load(pid: str, sets: Sequence[tuple[str, str]] = ()) -> Problem:
     data = read(pid)
     for key, text in sets:
         apply_set(data, key, text)
+    return from_data(pid, data)
+
+
+def from_data(pid: str, data: dict[str, Any]) -> Problem:
+    """The problem that the file data ``data`` states, named ``pid`` (a file's data held in
+    memory: a variant before it is written)."""
     return _maker(kind_of(data))(pid, data)
 
 

@@ -12,6 +12,8 @@ A measurement is named like a result:
 The precision an item must meet (problems.md):
 
 - a length read in mm: 0.5 mm at k_l;
+- a vector read in mm off its plan (``V_B_mm``, ``a_B_mm``, ``R_3_4_mm``: a result whose spec
+  has ``drawn`` = "v", "a" or "F"): converted at that plan's factor, 0.5 mm on the plan;
 - an angle ``*_deg``: 0.5°;
 - a quantity drawn on the project's own sheet (its :class:`~geomcad.problem.ResultSpec` has
   ``drawn`` = "l", "v", "a" or "F"): 0.5 mm at that plan's scale;
@@ -168,6 +170,16 @@ def _item(solution: Solution, name: str, raw: float | str, scale: float | None) 
     unit = spec.unit if spec is not None else ""
     leaf = next((p for p in reversed(parts) if not p.isdecimal()), parts[0])
 
+    plan = spec.drawn if spec is not None else None
+    if from_mm and plan in ("v", "a", "F"):
+        # a vector read off its plan (V_B_mm, a_B_mm, R_3_4_mm): mm at that plan's factor
+        k_plan = solution.scales.get(plan)
+        if k_plan is None or not k_plan > 0.0:
+            raise GeomcadError(f"measured {name}: the sheet gives no factor of the {plan} plan")
+        dev = value * k_plan - exact
+        prec = DRAWING_PRECISION_MM * k_plan
+        return Item(name, path, value * k_plan, exact, dev, dev / k_plan, prec,
+                    _within(dev, prec), unit, "drawing", k_plan, plan, value)  # fmt: skip
     if from_mm:
         if unit not in ("m", ""):
             raise GeomcadError(
@@ -198,7 +210,6 @@ def _item(solution: Solution, name: str, raw: float | str, scale: float | None) 
     if leaf.endswith(DEG_SUFFIX):
         prec = ANGLE_PRECISION_DEG
         return Item(name, path, value, exact, dev, None, prec, _within(dev, prec), "deg", "angle")
-    plan = spec.drawn if spec is not None else None
     k_plan = solution.scales.get(plan) if plan is not None else None
     if plan is not None and k_plan is not None and k_plan > 0.0:
         prec = DRAWING_PRECISION_MM * k_plan

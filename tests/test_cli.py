@@ -406,7 +406,7 @@ def test_build_writes_every_id_in_every_format(
     writer = FakeWriter()
     monkeypatch.setattr(geomcad.render, "write_sheets", writer)
     code, out, err = run(capsys, "build", "--out", str(tmp_path))
-    assert code == 0 and err == ""
+    assert code == 0 and err == "built 6 sheets of 3 problems in " + err.split(" in ")[1]
     assert writer.calls == [(pid, ["svg", "pdf", "png"], tmp_path) for pid in fake_problems]
     assert len(out.splitlines()) == 3 * 2 * 3
     assert str(tmp_path / "p-b-plan.pdf") in out.splitlines()
@@ -452,7 +452,7 @@ def test_build_of_a_named_id_with_a_bad_one_writes_nothing(
 
 def test_build_writes_real_svg(capsys: pytest.CaptureFixture[str], tmp_path: Path) -> None:
     code, out, err = run(capsys, "build", PID, "--out", str(tmp_path), "--format", "svg")
-    assert code == 0 and err == ""
+    assert code == 0 and err.startswith("built ") and len(err.splitlines()) == 1
     assert out.splitlines()[0] == str(tmp_path / f"{PID}.svg")
     for line in out.splitlines():
         assert Path(line).read_text(encoding="utf-8").lstrip().startswith(("<?xml", "<svg"))

@@ -1,0 +1,65 @@
+"""``geomcad build --jobs N``: problems solved, drawn and rendered in worker processes.
+
+Each worker prepares one problem or file as a serial build does (:func:`geomcad.cli._prepare`:
+the same title-block data, the review sheets when asked) and writes its files with
+:func:`geomcad.render.write_sheets` itself, into a private temporary folder, then hands back
+their names and bytes. The parent writes them into the output folder in the order of the ids,
+after every worker has finished: bad input writes nothing, and the output is byte-identical to a
+serial build whatever formats ``write_sheets`` knows.
+"""
+
+from __future__ import annotations
+
+import tempfile
+from pathlib import Path
+from typing import Any
+
+from geomcad.errors import GeomcadError, MissingDependency
+
+
+def build_one(
+    pid: str,
+    formats: tuple[str, ...],
+    plain: tuple[str, ...],
+    colour: bool,
+    options: Any,
+    workdir: Any,
+    review: bool,
+) -> tuple[str, int, list[tuple[str, bytes]], str, str]:
+    """Prepare and render ``pid``: (stem, number of sheets, [(file name, bytes)], error,
+    missing dependency).
+
+    Errors come back as text (worker exceptions need not pickle): the files are then none, or
+    only the ``plain`` formats (SVG, DXF) when libcairo is missing.
+    """
+    from geomcad import cli
+    from geomcad.render import write_sheets
+
+    try:
+        stem, sheets = cli._prepare(pid, options, workdir, review)
+    except (GeomcadError, cli._Failed) as exc:
+        return pid, 0, [], str(exc), ""
+    missing = ""
+    with tempfile.TemporaryDirectory(prefix="geomcad-build-") as tmp:
+        try:
+            paths = write_sheets(stem, sheets, Path(tmp), list(formats), colour=colour)
+        except MissingDependency as exc:
+            missing = str(exc)
+            paths = write_sheets(stem, sheets, Path(tmp), list(plain), colour=colour)
+        except GeomcadError as exc:
+            return pid, 0, [], str(exc), ""
+        files = [(p.name, p.read_bytes()) for p in paths]
+    return stem, len(sheets), files, "", missing
+
+
+def write(out: Path, files: list[tuple[str, bytes]]) -> list[Path]:
+    """Write the rendered files atomically into ``out``; return their paths."""
+    from geomcad.render.files import write_atomic
+
+    out.mkdir(parents=True, exist_ok=True)
+    paths = []
+    for name, data in files:
+        path = out / name
+        write_atomic(path, data)
+        paths.append(path)
+    return paths

@@ -1,0 +1,577 @@
+"""The sheets of a set of variants: an A4 task card per variant and the answer-key table.
+
+A task card (A4 portrait, frame and title block form 1) says what a student gets: the variant's
+number, the problem's title, for a linkage file the scheme of the mechanism in its first position
+at a GOST scale, the data table (every parameter, or every value of the file, with its unit),
+and what to find (the key's results by name). The title block carries the course (organisation
+field), the variant in the designation, the teacher as "Checked", and leaves "Drawn" blank for the
+student. No answer is on the card.
+
+The answer-key sheet is a ruled table: one row per variant, one column per key result, values to
+four significant figures; columns that do not fit an A3 sheet go on to further sheets.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
+from typing import TYPE_CHECKING, Any
+
+from geomcad.sheet import Scale, ScaleStyle, Sheet, TitleBlock, gost_scale_to_fit, start
+from geomcad.sheet.drawing import Drawing
+from geomcad.sheet.frame import Lang, fill_title_blocks
+from geomcad.sheet.model import Polyline
+from geomcad.sheet.text import box, parse
+from geomcad.teach import keys
+
+if TYPE_CHECKING:
+    from geomcad.problem import Problem, Solution
+
+#: Paper layout of an A4 card (mm): the field inside the frame above the title block.
+LEFT, RIGHT, TOP, BOTTOM = 20.0, 205.0, 5.0, 237.0
+PAD = 4.0
+ROW_H = 5.0
+TEXT_H = 2.5
+#: The largest room the scheme takes on a card (mm).
+SCHEME_W, SCHEME_H = RIGHT - LEFT - 2 * PAD, 75.0
+
+UNIT_TEXT = {"1": "", "": "", "deg": "°", "m/s²": "m/s^2", "rad/s²": "rad/s^2"}
+
+
+@dataclass(frozen=True)
+class CardInfo:
+    """Who and what the title blocks name, and the language of the cards' own words."""
+
+    course: str = "TMM"
+    teacher: str = ""
+    lang: Lang = "en"
+
+
+#: The cards' own words per language (a problem's parameter and result texts are its own).
+WORDS: dict[str, dict[str, str]] = {
+    "en": {
+        "variant": "Variant",
+        "given": "Given:",
+        "find": "Find:",
+        "quantity": "Quantity",
+        "symbol": "Symbol",
+        "value": "Value",
+        "unit": "Unit",
+        "keycol": "Key",
+        "at": "at",
+        "each": "in each of the {n} numbered positions",
+        "items": "items",
+        "rest": "... and the rest of the answer key's results",
+        "key": "Answer key",
+        "answers": "answers",
+        "no": "No.",
+        "pos": "pos.",
+    },
+    "ru": {
+        "variant": "Вариант",
+        "given": "Дано:",
+        "find": "Определить:",
+        "quantity": "Величина",
+        "symbol": "Обозн.",
+        "value": "Значение",
+        "unit": "Ед.",
+        "keycol": "Ключ",
+        "at": "при",
+        "each": "в каждом из {n} положений",
+        "items": "элементы",
+        "rest": "... и остальные величины ключа ответов",
+        "key": "Ключ ответов",
+        "answers": "ответы",
+        "no": "№",
+        "pos": "пол.",
+    },
+}
+
+
+def _unit(u: str) -> str:
+    return UNIT_TEXT.get(u, u)
+
+
+def _value(v: object) -> str:
+    if isinstance(v, bool):
+        return "yes" if v else "no"
+    if isinstance(v, int | float):
+        return format(v, ".10g")
+    if isinstance(v, list | tuple):
+        return "[" + ", ".join(_value(x) for x in v) + "]"
+    return str(v)
+
+
+def _esc(text: str) -> str:
+    """Plain text as label markup (underscores and carets stay themselves)."""
+    return text.replace("\\", "\\\\").replace("_", "\\_").replace("^", "\\^")
+
+
+def _fit(text: str, width: float, height: float = TEXT_H) -> str:
+    """The text cut with an ellipsis to fit ``width`` mm."""
+    if box(parse(_esc(text)), height)[0] <= width:
+        return text
+    while text and box(parse(_esc(text + "...")), height)[0] > width:
+        text = text[:-1]
+    return text.rstrip() + "..."
+
+
+def _wrap(text: str, width: float, height: float = TEXT_H) -> list[str]:
+    lines: list[list[str]] = [[]]
+    for word in text.split(" "):
+        trial = " ".join([*lines[-1], word])
+        if lines[-1] and box(parse(_esc(trial)), height)[0] > width:
+            lines.append([])
+        lines[-1].append(word)
+    return [" ".join(w) for w in lines]
+
+
+def _table(
+    d: Drawing, x: float, y: float, widths: Sequence[float], rows: Sequence[Sequence[str]]
+) -> float:
+    """A ruled table of plain text (cut to fit its cells); returns the y below it."""
+    s = d.sheet
+    total_w = sum(widths)
+    total_h = ROW_H * len(rows)
+    s.add(Polyline(((x, y), (x + total_w, y), (x + total_w, y + total_h), (x, y + total_h)),
+                   "frame_thin", closed=True))  # fmt: skip
+    for i in range(1, len(rows)):
+        yy = y + i * ROW_H
+        s.add(Polyline(((x, yy), (x + total_w, yy)), "frame" if i == 1 else "frame_thin"))
+    xx = x
+    for w in widths[:-1]:
+        xx += w
+        s.add(Polyline(((xx, y), (xx, y + total_h)), "frame_thin"))
+    for i, row in enumerate(rows):
+        xx = x
+        for w, cell in zip(widths, row, strict=True):
+            if cell:
+                text = _esc(_fit(cell, w - 2.0))
+                d.text(text, (xx + 1.0, y + i * ROW_H + ROW_H / 2 + TEXT_H / 2), TEXT_H, "left",
+                       "title")  # fmt: skip
+            xx += w
+    return y + total_h
+
+
+def _col_widths(rows: Sequence[Sequence[str]], room: float, flex: int) -> list[float]:
+    """Column widths that fit each column's text; column ``flex`` takes what room is left."""
+    n = len(rows[0])
+    natural = [max(box(parse(_esc(r[i])), TEXT_H)[0] for r in rows) + 2.5 for i in range(n)]
+    fixed = sum(w for i, w in enumerate(natural) if i != flex)
+    natural[flex] = max(20.0, min(natural[flex], room - fixed))
+    if sum(natural) > room:  # still too wide: the widest column gives in, its cells cut to fit
+        i = max(range(n), key=natural.__getitem__)
+        natural[i] = max(12.0, room - (sum(natural) - natural[i]))
+    return natural
+
+
+# --- data of a variant ------------------------------------------------------------------------
+
+
+def problem_rows(sol: Solution, lang: str = "en") -> list[list[str]]:
+    """The data table of a problem id's variant: quantity, symbol, value, unit."""
+    w = WORDS[lang]
+    rows = [[w["quantity"], w["symbol"], w["value"], w["unit"]]]
+    for p in sol.problem.params:
+        if p.name not in sol.params:
+            continue
+        rows.append([p.doc, p.name, _value(sol.params[p.name]), _unit(p.unit)])
+    return rows
+
+
+def file_rows(data: Mapping[str, Any], lang: str = "en") -> list[list[str]]:
+    """The data table of a file's variant: every value under its dotted key (lists counted
+    from 1, as ``--set`` names them)."""
+    rows = [[WORDS[lang]["keycol"], WORDS[lang]["value"]]]
+
+    def walk(node: Any, path: str) -> None:
+        if isinstance(node, Mapping):
+            for k, v in node.items():
+                walk(v, f"{path}.{k}" if path else str(k))
+        elif isinstance(node, list) and node and all(isinstance(v, Mapping) for v in node):
+            for i, v in enumerate(node, start=1):
+                walk(v, f"{path}.{i}")
+        elif path != "title":
+            rows.append([path, _value(node)])
+
+    walk(data, "")
+    return rows
+
+
+def find_lines(
+    problem: Problem, columns: Sequence[str], sol: Solution, lang: str = "en"
+) -> list[str]:
+    """What to find: each key result once, with its meaning, and where it is asked."""
+    groups: dict[str, list[str]] = {}
+    for c in columns:
+        groups.setdefault(_generic(c), []).append(c)
+    # results with the same meaning, unit and positions share a line: ω_2, ω_3, ω_4 …
+    merged: dict[tuple[str, str, str], list[str]] = {}
+    for generic, paths in groups.items():
+        name = keys.leaf(generic)
+        spec = problem.result_spec(name) or problem.result_spec(generic.split(".")[0])
+        doc = spec.doc if spec is not None and spec.name == name else ""
+        unit = _unit(spec.unit) if spec is not None and spec.name == name else ""
+        merged.setdefault((unit, doc, _where(generic, paths, sol, lang)), []).append(name)
+    return [
+        ", ".join(names) + (f", {unit}" if unit else "") + (f": {doc}" if doc else "") + where
+        for (unit, doc, where), names in merged.items()
+    ]
+
+
+def _generic(path: str) -> str:
+    """``positions.3.V_D`` → ``positions.*.V_D``; ``r.2`` → ``r``."""
+    parts = path.split(".")
+    if parts[-1].isdecimal():
+        return ".".join(parts[:-1])
+    return ".".join("*" if p.isdecimal() else p for p in parts)
+
+
+def _where(generic: str, paths: Sequence[str], sol: Solution, lang: str) -> str:
+    w = WORDS[lang]
+    if generic.startswith("positions.*."):
+        phis = []
+        for p in paths:
+            i = int(p.split(".")[1])
+            pos = sol.results.get("positions", [])
+            if i < len(pos) and isinstance(pos[i], Mapping) and "phi_deg" in pos[i]:
+                phis.append(keys.fmt(float(pos[i]["phi_deg"])).rstrip("0").rstrip(".") + "°")
+        if phis and len(phis) <= 4:
+            return f" ({w['at']} φ_1 = {', '.join(phis)})"
+        return " (" + w["each"].format(n=len(paths)) + ")"
+    if len(paths) > 1 or paths[0] != generic:
+        return f" ({w['items']} {', '.join(p.rsplit('.', 1)[1] for p in paths)})"
+    return ""
+
+
+# --- the linkage scheme -----------------------------------------------------------------------
+
+
+def _point(
+    position: Mapping[str, Any], frame: Mapping[str, Any], name: object
+) -> tuple[float, float] | None:
+    n = str(name)
+    x, y = position.get(f"x_{n}"), position.get(f"y_{n}")
+    if isinstance(x, int | float) and isinstance(y, int | float):
+        return (float(x), float(y))
+    p = frame.get(n)
+    if isinstance(p, list | tuple) and len(p) == 2:
+        return (float(p[0]), float(p[1]))
+    return None
+
+
+def _scheme_points(
+    data: Mapping[str, Any], position: Mapping[str, Any]
+) -> dict[str, tuple[float, float]]:
+    """Every frame point, joint and named point of the file in one solved position."""
+    frame = data.get("frame", {}) if isinstance(data.get("frame"), Mapping) else {}
+    drive = data.get("drive", {}) if isinstance(data.get("drive"), Mapping) else {}
+    groups = [g for g in data.get("group", []) if isinstance(g, Mapping)]
+    names: list[str] = [str(k) for k in frame]
+    names += [str(drive.get("joint", ""))]
+    for g in groups:
+        for field in ("joint", "slider", "point"):
+            if field in g:
+                names.append(str(g[field]))
+    for p in data.get("point", []) or []:
+        if isinstance(p, Mapping) and "name" in p:
+            names.append(str(p["name"]))
+    return {n: q for n in dict.fromkeys(names) if n and (q := _point(position, frame, n))}
+
+
+def _extent(pts: Mapping[str, tuple[float, float]]) -> tuple[float, float, float, float, float]:
+    xs = [q[0] for q in pts.values()]
+    ys = [q[1] for q in pts.values()]
+    w, h = max(xs) - min(xs), max(ys) - min(ys)
+    return min(xs), min(ys), w, h, 0.15 * (max(w, h) or 1.0)
+
+
+def scheme_scale(data: Mapping[str, Any], position: Mapping[str, Any]) -> Scale | None:
+    """The GOST scale the card draws the mechanism at (``None``: nothing to draw)."""
+    pts = _scheme_points(data, position)
+    if len(pts) < 2:
+        return None
+    _, _, w, h, pad = _extent(pts)
+    return gost_scale_to_fit(w + 2 * pad, h + 2 * pad, SCHEME_W, SCHEME_H - 8.0)
+
+
+def linkage_scheme(d: Drawing, data: Mapping[str, Any], position: Mapping[str, Any],
+                   top: float, lang: Lang = "en") -> float:  # fmt: skip
+    """The mechanism in one solved position at a GOST scale, from ``top``; returns the y below.
+
+    Links are straight lines between their joints, frame pivots hatched, sliders as blocks on
+    their guides; every joint and named point is labelled.
+    """
+    frame = data.get("frame", {}) if isinstance(data.get("frame"), Mapping) else {}
+    drive = data.get("drive", {}) if isinstance(data.get("drive"), Mapping) else {}
+    groups = [g for g in data.get("group", []) if isinstance(g, Mapping)]
+    pts = _scheme_points(data, position)
+    k = scheme_scale(data, position)
+    if k is None:
+        return top
+    x_min, y_min, w, h, pad = _extent(pts)
+    height = min(SCHEME_H, (h + 2 * pad) / k.k + 8.0)
+    centre = (x_min + w / 2, y_min + h / 2)
+    v = d.viewport(k, centre, ((LEFT + RIGHT) / 2, top + 8.0 + (height - 8.0) / 2))
+    phi = position.get("phi_deg")
+    where = f"   φ_1 = {float(phi):.4g}°" if isinstance(phi, int | float) else ""
+    d.text(f"{k.label(ScaleStyle(lang=lang))}   (M {k.ratio_text() or '-'}){where}",
+           (LEFT + PAD, top + 4.0), TEXT_H)  # fmt: skip
+
+    def seg(a: object, b: object) -> None:
+        pa, pb = pts.get(str(a)), pts.get(str(b))
+        if pa is not None and pb is not None and pa != pb:
+            v.seg(pa, pb, "link")
+
+    pivots: set[str] = set()
+    moving: set[str] = set()
+    if "pivot" in drive:
+        seg(drive["pivot"], drive.get("joint"))
+        pivots.add(str(drive["pivot"]))
+        moving.add(str(drive.get("joint")))
+    for g in groups:
+        kind = g.get("kind")
+        if kind == "RRR":
+            for e in g.get("ends", []):
+                seg(e, g.get("joint"))
+                if str(e) in frame:
+                    pivots.add(str(e))
+            moving.add(str(g.get("joint")))
+        elif kind == "RRP":
+            seg(g.get("end"), g.get("joint"))
+            q = pts.get(str(g.get("joint")))
+            guide = g.get("guide", {})
+            if q is not None and isinstance(guide, Mapping) and "link" not in guide:
+                ang = math.radians(float(guide.get("angle", 0.0)))
+                u = (math.cos(ang), math.sin(ang))
+                span = k.model(25.0)
+                v.seg((q[0] - u[0] * span, q[1] - u[1] * span),
+                      (q[0] + u[0] * span, q[1] + u[1] * span), "centre")  # fmt: skip
+                v.slider(q, u)
+        elif kind == "RPR":
+            c, a = pts.get(str(g.get("pivot"))), pts.get(str(g.get("slider")))
+            if c is not None and a is not None and c != a:
+                far = (c[0] + (a[0] - c[0]) * 1.3, c[1] + (a[1] - c[1]) * 1.3)
+                v.seg(c, far, "link")
+                v.slider(a, (a[0] - c[0], a[1] - c[1]))
+            if str(g.get("pivot")) in frame:
+                pivots.add(str(g.get("pivot")))
+        elif kind == "PRP":
+            e, a = pts.get(str(g.get("point"))), pts.get(str(g.get("slider")))
+            if e is not None and a is not None:
+                v.seg(e, a, "link")
+                v.slider(a, (a[0] - e[0], a[1] - e[1]) if e != a else (0.0, 1.0))
+    for p in data.get("point", []) or []:
+        if isinstance(p, Mapping) and "name" in p and "from" in p:
+            seg(p["from"], p["name"])
+    for n in sorted(pivots):
+        if n in pts:
+            v.pivot(pts[n])
+    for n in sorted(moving):
+        if n in pts:
+            v.joint(pts[n])
+    for n, q in pts.items():
+        v.label(q, n, height=3.5)
+    return top + height
+
+
+# --- sheets -----------------------------------------------------------------------------------
+
+
+def task_card(
+    sol: Solution,
+    number: int,
+    width: int,
+    columns: Sequence[str],
+    info: CardInfo,
+    data: Mapping[str, Any] | None = None,
+    stem: str = "",
+) -> Sheet:
+    """The A4 task card of one variant (see the module's docstring)."""
+    problem = sol.problem
+    words = WORDS[info.lang]
+    title = str(data.get("title")) if data and data.get("title") else problem.title
+    positions = sol.results.get("positions")
+    # numbered positions start at the output's extreme, a dead centre where the links lie
+    # folded on one line: the scheme shows position 1 instead
+    numbered = data is not None and "positions" in (data.get("drive") or {})
+    pick = 1 if numbered and isinstance(positions, list) and len(positions) > 1 else 0
+    first = positions[pick] if isinstance(positions, list) and positions else None
+    k = scheme_scale(data, first) if data is not None and isinstance(first, Mapping) else None
+    tb = TitleBlock(
+        title=_fit(title, 200.0, 5.0),
+        designation=f"{info.course} {stem or problem.id} V{number:0{width}d}",
+        scale=k.ratio_text() if k is not None else "",
+        organisation=info.course,
+        checker=info.teacher,
+        lang=info.lang,
+    )
+    d = start("A4", tb)
+    x0, room = LEFT + PAD, RIGHT - LEFT - 2 * PAD
+    d.text(f"{words['variant']} {number:0{width}d}", (x0, TOP + 11.0), 7.0)
+    y = TOP + 15.0
+    for line in _wrap(title, room, 3.5):
+        y += 5.5
+        d.text(_esc(line), (x0, y), 3.5)
+    y += 3.0
+    if data is not None and isinstance(first, Mapping):
+        y = linkage_scheme(d, data, first, y, info.lang) + 2.0
+    rows = problem_rows(sol, info.lang) if data is None else file_rows(data, info.lang)
+    find: list[tuple[float, str]] = []  # (indent, text) of each line of "Find"
+    for i, line in enumerate(find_lines(problem, columns, sol, info.lang), start=1):
+        find += [(4.0 if j else 0.0, t) for j, t in enumerate(_wrap(f"{i}. {line}", room - 4.0))]
+    lead = TEXT_H * 1.7
+    find_h = 8.0 + 8.0 + lead * len(find) + 2.0
+    d.text(words["given"], (x0, y + 5.0), 3.5)
+    y += 8.0
+    y = _given(d, rows, x0, y, room, BOTTOM - y - find_h) + 4.0
+    d.text(words["find"], (x0, y + 5.0), 3.5)
+    y += 8.0
+    fits = int((BOTTOM - 1.0 - y) / lead)
+    if len(find) > fits:  # never into the title block: the answer key lists the rest
+        find = [*find[: max(fits - 1, 0)], (0.0, words["rest"])]
+    for indent, text in find:
+        y += lead
+        d.text(_esc(text), (x0 + indent, y), TEXT_H)
+    return _filled([d.finish()])[0]
+
+
+def _filled(sheets: list[Sheet]) -> list[Sheet]:
+    """The sheets with their title blocks filled as one document (Лист i of Листов n)."""
+    fill_title_blocks(sheets)
+    return sheets
+
+
+def _given(
+    d: Drawing, rows: list[list[str]], x0: float, y: float, room: float, space: float
+) -> float:
+    """The data table, cut into two or three parts side by side when it is taller than
+    ``space`` mm (a linkage file's many values); returns the y below it."""
+    body = rows[1:]
+    n = next((k for k in (1, 2, 3) if (math.ceil(len(body) / k) + 1) * ROW_H <= space), 3)
+    per = math.ceil(len(body) / n)
+    gap = 4.0
+    col = (room - gap * (n - 1)) / n
+    bottoms = []
+    for k in range(n):
+        part = [rows[0], *body[k * per : (k + 1) * per]]
+        # a problem's quantity text gives way first; a file's key stays whole, its value gives way
+        flex = 0 if len(part[0]) > 2 else len(part[0]) - 1
+        widths = _col_widths(part, col, flex)
+        bottoms.append(_table(d, x0 + k * (col + gap), y, widths, part))
+    return max(bottoms)
+
+
+#: A table of the answer key: its column widths, header rows and body rows (all text).
+Table = tuple[list[float], list[list[str]], list[list[str]]]
+
+
+def _key_tables(
+    columns: Sequence[str],
+    units: Mapping[str, str],
+    rows: Sequence[Sequence[str]],
+    words: Mapping[str, str],
+) -> list[Table]:
+    """The key as tables: one row per variant for the single results, and, where the key has
+    results per position (``positions.i.NAME``), one row per variant and position."""
+    single = [i for i, c in enumerate(columns) if not c.startswith("positions.")]
+    per_pos: dict[str, dict[int, int]] = {}
+    for i, c in enumerate(columns):
+        parts = c.split(".")
+        if c.startswith("positions.") and len(parts) == 3 and parts[1].isdecimal():
+            per_pos.setdefault(parts[2], {})[int(parts[1])] = i
+        elif c.startswith("positions."):
+            single.append(i)
+    tables: list[tuple[list[list[str]], list[list[str]]]] = []
+    if single:
+        head = [[words["no"], *(columns[i] for i in single)],
+                ["", *(_unit(units.get(columns[i], "")) for i in single)]]  # fmt: skip
+        tables.append((head, [[r[0], *(r[i + 1] for i in single)] for r in rows]))
+    if per_pos:
+        names = list(per_pos)
+        positions = sorted({j for cols in per_pos.values() for j in cols})
+        unit_row = [_unit(units.get(columns[next(iter(per_pos[n].values()))], "")) for n in names]
+        head = [[words["no"], words["pos"], *names], ["", "", *unit_row]]
+        body = []
+        for r in rows:
+            for j in positions:
+                cells = [r[per_pos[n][j] + 1] if j in per_pos[n] else "" for n in names]
+                body.append([r[0], str(j), *cells])
+        tables.append((head, body))
+    out: list[Table] = []
+    for head, body in tables:
+        full = head + body
+        widths = [
+            max(box(parse(_esc(r[i])), TEXT_H)[0] for r in full) + 3.0 for i in range(len(head[0]))
+        ]
+        out.append((widths, head, body))
+    return out
+
+
+def _split_wide(table: Table, room: float) -> list[Table]:
+    """A table wider than ``room`` cut into column chunks that repeat its key columns."""
+    widths, head, body = table
+    keep = 2 if len(head[0]) > 1 and head[0][1] in ("pos.", "пол.") else 1
+    if sum(widths) <= room:
+        return [table]
+    chunks: list[list[int]] = [[]]
+    used = sum(widths[:keep])
+    for i in range(keep, len(widths)):
+        if chunks[-1] and used + widths[i] > room:
+            chunks.append([])
+            used = sum(widths[:keep])
+        chunks[-1].append(i)
+        used += widths[i]
+    out = []
+    for chunk in chunks:
+        idx = [*range(keep), *chunk]
+        out.append(([widths[i] for i in idx], [[r[i] for i in idx] for r in head],
+                    [[r[i] for i in idx] for r in body]))  # fmt: skip
+    return out
+
+
+def answer_sheets(
+    title: str,
+    columns: Sequence[str],
+    units: Mapping[str, str],
+    rows: Sequence[Sequence[str]],
+    info: CardInfo,
+    stem: str,
+) -> list[Sheet]:
+    """The answer key on A3 sheets: its tables (:func:`_key_tables`) cut into blocks of rows
+    that flow left to right across the field above the title block, then onto further sheets."""
+    words = WORDS[info.lang]
+    x_min, x_max = LEFT + PAD, 420.0 - 5.0 - PAD
+    y_top, y_max = TOP + 16.0, 297.0 - 5.0 - 55.0 - PAD
+    per_block = int((y_max - y_top) / ROW_H) - 2
+    gap = 8.0
+    pages: list[list[tuple[float, Table]]] = [[]]
+    x = x_min
+    for table in _key_tables(columns, units, rows, words):
+        for part in _split_wide(table, x_max - x_min):
+            widths, head, body = part
+            w = sum(widths)
+            for k in range(0, max(len(body), 1), per_block):
+                if pages[-1] and x + w > x_max:
+                    pages.append([])
+                    x = x_min
+                pages[-1].append((x, (widths, head, body[k : k + per_block])))
+                x += w + gap
+    sheets = []
+    for n, blocks in enumerate(pages, start=1):
+        tb = TitleBlock(
+            title=_fit(f"{words['key']}: {title}", 200.0, 5.0),
+            designation=f"{info.course} {stem} {words['answers']}",
+            organisation=info.course,
+            checker=info.teacher,
+            sheet_no=n,
+            sheets=len(pages),
+            lang=info.lang,
+        )
+        d = start("A3", tb)
+        d.text(_esc(f"{words['key']}: {title}"), (LEFT + PAD, TOP + 11.0), 5.0)
+        for bx, (widths, head, body) in blocks:
+            _table(d, bx, y_top, widths, [*head, *body])
+        sheets.append(d.finish())
+    return _filled(sheets)

@@ -1,0 +1,281 @@
+"""The ``geomcad variants`` command (its parser and its run), hooked into :mod:`geomcad.cli`.
+
+Building the parser imports nothing heavy (``geomcad list`` and ``--help`` stay light): the
+modules that draw and solve are imported when the command runs.
+"""
+
+from __future__ import annotations
+
+import argparse
+import contextlib
+import csv
+import io
+import json
+import sys
+import time
+from collections.abc import Callable, Sequence
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+from geomcad.errors import GeomcadError, ParameterError
+from geomcad.teach import MIN_TRANSMISSION_DEG, jobs
+
+if TYPE_CHECKING:
+    from geomcad.teach import cards, variants
+
+CARD_FORMATS = ("svg", "pdf", "png")
+
+
+def add_variants(sub: Any, add_set: Callable[[argparse.ArgumentParser], None]) -> None:
+    """Add ``variants`` to the command line's subparsers."""
+    s = sub.add_parser(
+        "variants",
+        help="make N variants of a problem or file: variant files, task cards, answer key",
+    )
+    s.add_argument("template", help="problem id (e.g. 2013-6) or a file FILE.toml")
+    s.add_argument("--count", type=int, required=True, metavar="N", help="variants to make")
+    s.add_argument("--seed", type=int, required=True, metavar="S", help="seed of the draws")
+    s.add_argument("--out", required=True, metavar="DIR", help="output folder")
+    s.add_argument(
+        "--vary",
+        action="append",
+        default=[],
+        metavar="KEY=LO..HI[:STEP]",
+        help="a key to vary with its range and rounding step (or KEY=a|b|c)",
+    )
+    add_set(s)
+    s.add_argument(
+        "--min-transmission-deg",
+        type=float,
+        default=None,
+        metavar="DEG",
+        help="linkage files: reject a variant whose transmission angle falls below "
+        f"(default {MIN_TRANSMISSION_DEG:g}; 0: no check)",
+    )
+    s.add_argument("--key", metavar="NAMES", help="results in the answer key, e.g. l1,l2,r.*")
+    s.add_argument("--course", default="TMM", help="the course, for the title blocks")
+    s.add_argument("--teacher", default="", help="the teacher (Checked), for the title blocks")
+    s.add_argument(
+        "--lang", default="en", choices=("en", "ru"), help="the cards' own words (default en)"
+    )
+    s.add_argument("--format", default="pdf", help="task cards: comma-separated svg,pdf,png")
+    s.add_argument(
+        "--jobs", type=int, default=1, metavar="N", help="worker processes (default 1; 0: per core)"
+    )
+    s.set_defaults(func=cmd_variants)
+
+
+def _pairs(texts: Sequence[str]) -> list[tuple[str, str]]:
+    out = []
+    for text in texts:
+        name, eq, value = text.partition("=")
+        if not eq or not name.strip():
+            raise GeomcadError(f"--set {text}: expected NAME=VALUE")
+        out.append((name.strip(), value))
+    return out
+
+
+def _formats(text: str) -> tuple[str, ...]:
+    fs = [f.strip().lower() for f in text.split(",") if f.strip()]
+    for f in fs:
+        if f not in CARD_FORMATS:
+            raise ParameterError(
+                "--format", text, f"each format must be one of {', '.join(CARD_FORMATS)}"
+            )
+    return tuple(f for f in CARD_FORMATS if f in fs)
+
+
+def render_card(
+    template: variants.Template,
+    values: tuple[tuple[str, str], ...],
+    number: int,
+    width: int,
+    columns: tuple[str, ...],
+    info: cards.CardInfo,
+    formats: tuple[str, ...],
+    file_id: str,
+) -> dict[str, bytes]:
+    """One variant's task card rendered to each format (run in a worker process)."""
+    from geomcad.render import to_pdf, to_png, to_svg
+    from geomcad.render.files import PNG_DPI
+    from geomcad.teach import cards
+
+    sol = template.solve(values, file_id)
+    data = template.variant_data(values) if template.is_file else None
+    sheet = cards.task_card(sol, number, width, columns, info, data, template.stem)
+    svg = to_svg(sheet)
+    out: dict[str, bytes] = {}
+    if "svg" in formats:
+        out["svg"] = svg.encode("utf-8")
+    if "pdf" in formats:
+        out["pdf"] = to_pdf(svg)
+    if "png" in formats:
+        out["png"] = to_png(svg, dpi=PNG_DPI)
+    return out
+
+
+def cmd_variants(ns: argparse.Namespace) -> int:
+    """Run ``geomcad variants`` (see :mod:`geomcad.teach.variants`)."""
+    from geomcad.render.files import write_atomic
+    from geomcad.teach import cards, keys, variants
+
+    started = time.perf_counter()
+    n_jobs = jobs.check_jobs(ns.jobs)
+    formats = _formats(ns.format)
+    template = variants.load_template(ns.template, _pairs(ns.set))
+    varies = [variants.parse_vary(t) for t in ns.vary]
+    linkage = template.kind == "linkage"
+    if ns.min_transmission_deg is None:
+        min_tr = MIN_TRANSMISSION_DEG if linkage else 0.0
+    else:
+        min_tr = float(ns.min_transmission_deg)
+        if not 0.0 <= min_tr < 90.0:
+            raise ParameterError(
+                "--min-transmission-deg", ns.min_transmission_deg, "must be in [0, 90)"
+            )
+        if not linkage and min_tr > 0.0:
+            raise ParameterError(
+                "--min-transmission-deg", ns.min_transmission_deg, "applies to linkage files only"
+            )
+    info = cards.CardInfo(course=ns.course, teacher=ns.teacher, lang=ns.lang)
+
+    # what every variant needs is imported here, once, before the workers fork
+    with contextlib.suppress(GeomcadError):
+        template.solve(())
+    jobs.warm([], raster=formats != ("svg",))
+    relay = jobs.Relay()
+    with jobs.pool(n_jobs, relay) as run:
+        with jobs.bar(ns.count, "variant", "solve") as tick:
+            drawn = variants.draw(template, varies, ns.count, ns.seed, min_tr, run, tick)
+        patterns = keys.parse_patterns(ns.key or "") or variants.default_key(
+            template, drawn.variants[0].results
+        )
+        columns = variants.key_columns(drawn.variants, patterns, explicit=bool(ns.key))
+        if not ns.key:  # the default key asks for results, not for the data given back
+            given = set(variants.echoes(template, drawn.variants, columns))
+            columns = [c for c in columns if c not in given] or columns
+        width = variants.number_width(ns.count)
+        out = Path(ns.out)
+        names = [variants.variant_name(template, v.number, width) for v in drawn.variants]
+        first = drawn.variants[0]
+        # a file's result specs follow from its solution (a file names its own points)
+        problem = template.solve(first.values, str(out / names[0])).problem
+        units = {c: variants.unit_of(problem, c) for c in columns}
+
+        args = [
+            (template, v.values, v.number, width, tuple(columns), info, formats, str(out / name))
+            for v, name in zip(drawn.variants, names, strict=True)
+        ]
+        with jobs.bar(len(args), "card", "cards") as tick:
+            relay.to = tick
+            rendered: list[dict[str, bytes]] = run(render_card, args)
+            relay.to = None
+
+        numbers = [f"{v.number:0{width}d}" for v in drawn.variants]
+        rows = keys.rows([v.results for v in drawn.variants], columns, numbers)
+        title = str(template.data.get("title", "")) if template.data else ""
+        sheets = cards.answer_sheets(
+            title or problem.title, columns, units, rows, info, template.stem
+        )
+        answer_pdfs: list[bytes] = run(_sheet_pdf, [(sh,) for sh in sheets])
+
+    try:
+        out.mkdir(parents=True, exist_ok=True)
+        written: list[Path] = []
+        for v, name, files in zip(drawn.variants, names, rendered, strict=True):
+            path = out / name
+            write_atomic(path, variants.variant_file(template, v, width))
+            written.append(path)
+            for fmt, data in files.items():
+                card = out / f"card-{v.number:0{width}d}.{fmt}"
+                write_atomic(card, data)
+                written.append(card)
+        csv_path = out / "answers.csv"
+        write_atomic(csv_path, _answers_csv(columns, rows, names).encode("utf-8"))
+        json_path = out / "answers.json"
+        obj = _answers_json(ns, template, min_tr, drawn, columns, units, names, rows)
+        text = json.dumps(obj, ensure_ascii=False, indent=2, allow_nan=False) + "\n"
+        write_atomic(json_path, text.encode("utf-8"))
+        pdf_path = out / "answers.pdf"
+        write_atomic(pdf_path, _one_pdf(answer_pdfs))
+    except OSError as exc:
+        raise GeomcadError(f"cannot write to {out}: {exc.strerror or exc}") from exc
+    report = variants.summary(drawn, template, ns.seed, out)
+    pages = f" ({len(answer_pdfs)} sheets)" if len(answer_pdfs) > 1 else ""
+    report += f"answer key: {csv_path}, {json_path}, {pdf_path}{pages}\n"
+    report += f"{len(written)} variant files and cards, {time.perf_counter() - started:.1f} s\n"
+    sys.stdout.write(report)
+    sys.stdout.flush()
+    return 0
+
+
+def _sheet_pdf(sheet: Any) -> bytes:
+    from geomcad.render import to_pdf, to_svg
+
+    return to_pdf(to_svg(sheet))
+
+
+def _one_pdf(pdfs: Sequence[bytes]) -> bytes:
+    """The answer key's sheets as one PDF, a page per sheet (pypdf writes no date or random
+    id, so the bytes stay the same run after run)."""
+    if len(pdfs) == 1:
+        return pdfs[0]
+    from pypdf import PdfWriter
+
+    writer = PdfWriter()
+    for pdf in pdfs:
+        writer.append(io.BytesIO(pdf))
+    buf = io.BytesIO()
+    writer.write(buf)
+    return buf.getvalue()
+
+
+def _answers_csv(
+    columns: Sequence[str], rows: Sequence[Sequence[str]], names: Sequence[str]
+) -> str:
+    buf = io.StringIO()
+    w = csv.writer(buf, lineterminator="\n")
+    w.writerow(["variant", "file", *columns])
+    for row, name in zip(rows, names, strict=True):
+        w.writerow([row[0], name, *row[1:]])
+    return buf.getvalue()
+
+
+def _answers_json(
+    ns: argparse.Namespace,
+    template: variants.Template,
+    min_tr: float,
+    drawn: variants.Drawn,
+    columns: Sequence[str],
+    units: dict[str, str],
+    names: Sequence[str],
+    rows: Sequence[Sequence[str]],
+) -> dict[str, Any]:
+    """answers.json: the run's inputs and rejections, and per variant its values and key (the
+    key's numbers as answers.csv prints them)."""
+
+    def number(text: str) -> float | int:
+        return int(text) if text.lstrip("-").isdecimal() else float(text)
+
+    return {
+        "template": template.ref,
+        "kind": template.kind,
+        "seed": ns.seed,
+        "count": len(drawn.variants),
+        "vary": list(ns.vary),
+        "set": list(ns.set),
+        "min_transmission_deg": min_tr,
+        "draws": drawn.draws,
+        "rejected": dict(drawn.rejected),
+        "columns": list(columns),
+        "units": units,
+        "variants": [
+            {
+                "variant": row[0],
+                "file": name,
+                "values": dict(v.values),
+                "answers": {c: number(t) for c, t in zip(columns, row[1:], strict=True) if t},
+            }
+            for v, name, row in zip(drawn.variants, names, rows, strict=True)
+        ],
+    }
