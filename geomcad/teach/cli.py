@@ -56,7 +56,7 @@ def add_variants(sub: Any, add_set: Callable[[argparse.ArgumentParser], None]) -
     s.add_argument("--course", default="TMM", help="the course, for the title blocks")
     s.add_argument("--teacher", default="", help="the teacher (Checked), for the title blocks")
     s.add_argument(
-        "--lang", default="en", choices=("en", "ru"), help="the cards' own words (default en)"
+        "--lang", default="ru", choices=("ru", "en"), help="the cards' own words (default ru)"
     )
     s.add_argument("--format", default="pdf", help="task cards: comma-separated svg,pdf,png")
     s.add_argument(
