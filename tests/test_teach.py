@@ -214,7 +214,7 @@ def test_problem_variants_solve_to_their_key(governor: Path) -> None:
     sets = [tuple(json.loads((governor / r["file"]).read_text())["set"].items()) for r in rows]
     assert len(set(sets)) == len(sets)
     card = (governor / "card-02.svg").read_text(encoding="utf-8")
-    for text in ("Variant 02", "Given:", "Find:", "ТММ-21", "Petrova", "omega"):
+    for text in ("Вариант 02", "Дано:", "Определить:", "ТММ-21", "Petrova", "omega"):
         assert text in card
     assert (governor / "answers.pdf").read_bytes().startswith(b"%PDF")
     meta = json.loads((governor / "answers.json").read_text(encoding="utf-8"))
