@@ -10,6 +10,7 @@ nearest first, and takes the one that overlaps no other label and crosses the fe
 
 from __future__ import annotations
 
+import dataclasses
 import itertools
 import math
 from collections.abc import Sequence
@@ -18,6 +19,7 @@ from dataclasses import dataclass, field
 import numpy as np
 import numpy.typing as npt
 
+from geomcad import tol
 from geomcad.geom import Arc, Circle, Line, PointLike, vec
 from geomcad.sheet.frame import Frame, reserved, text_at
 from geomcad.sheet.model import XY, ArcItem, CircleItem, Polyline, Sheet, TextItem
@@ -74,12 +76,27 @@ class LabelRequest:
 
 
 @dataclass
+class DimText:
+    """A dimension's text waiting for its place: turned by ``angle`` (degrees, counter-clockwise
+    on the paper) along the unit direction ``t``; ``candidates`` are the baseline starts to try,
+    the preferred first; ``box`` its (width, rise, descent) in mm."""
+
+    markup: str
+    height: float
+    angle: float
+    t: tuple[float, float]
+    candidates: tuple[XY, ...]
+    box: tuple[float, float, float]
+
+
+@dataclass
 class Drawing:
     """A sheet being drawn: its items, its free field, and the labels still to place."""
 
     sheet: Sheet
     frame: Frame
     pending: list[LabelRequest] = field(default_factory=list)
+    dims: list[DimText] = field(default_factory=list)
     #: Fixed texts moved off графа 26: :meth:`finish` sets them smaller if they then run into
     #: other text.
     moved: list[TextItem] = field(default_factory=list)
@@ -197,6 +214,11 @@ class Drawing:
         """Place every pending label and return the sheet."""
         _shrink(self)
         segs = _segments(self.sheet)
+        for dim in self.dims:
+            # the dimension's text keeps clear of the lines and of the texts already there
+            edges = [e for t in self.sheet.texts() for e in _box_edges(_text_box(t))]
+            _place_dim(self.sheet, dim, np.vstack([segs, np.array(edges).reshape(-1, 4)]))
+        self.dims.clear()
         boxes: list[tuple[float, float, float, float]] = [_text_box(t) for t in self.sheet.texts()]
         for req in self.pending:
             item = _place(req, segs, boxes, self.frame)
@@ -227,8 +249,25 @@ def _shrink(d: Drawing) -> None:
 
 
 def _text_box(t: TextItem) -> tuple[float, float, float, float]:
+    """The text's box on the paper (of its turned outline, for a turned text)."""
     _, up, down = box(t.runs, t.height)
-    return (t.at[0], t.at[1] - up, t.at[0] + t.width, t.at[1] + down)
+    if not t.angle:
+        return (t.at[0], t.at[1] - up, t.at[0] + t.width, t.at[1] + down)
+    a = math.radians(t.angle)
+    tx, ty = math.cos(a), -math.sin(a)  # along the text on the paper (y down)
+    # u along the text, v down across it: the paper point is at + u·t + v·(−t_y, t_x)
+    corners = [
+        (t.at[0] + tx * u - ty * v, t.at[1] + ty * u + tx * v)
+        for u in (0.0, t.width)
+        for v in (-up, down)
+    ]
+    xs, ys = [c[0] for c in corners], [c[1] for c in corners]
+    return (min(xs), min(ys), max(xs), max(ys))
+
+
+def _box_edges(b: tuple[float, float, float, float]) -> list[tuple[float, float, float, float]]:
+    x0, y0, x1, y1 = b
+    return [(x0, y0, x1, y0), (x1, y0, x1, y1), (x1, y1, x0, y1), (x0, y1, x0, y0)]
 
 
 def _segments(sheet: Sheet) -> npt.NDArray[np.float64]:
@@ -251,6 +290,37 @@ def _segments(sheet: Sheet) -> npt.NDArray[np.float64]:
                 (float(xs[i]), float(ys[i]), float(xs[i + 1]), float(ys[i + 1])) for i in range(n)
             ]
     return np.array(out, dtype=np.float64).reshape(-1, 4)
+
+
+def _place_dim(sheet: Sheet, dim: DimText, segs: npt.NDArray[np.float64]) -> None:
+    """Put a dimension's text at its first candidate that crosses no line (else the one that
+    crosses the fewest)."""
+    w, rise, down = dim.box
+    area = (-LABEL_PAD, -rise - LABEL_PAD, w + LABEL_PAD, down + LABEL_PAD)
+    best: tuple[int, XY] | None = None
+    for at in dim.candidates:
+        n = _crossings(_turned(segs, at, dim.t), area)
+        if best is None or n < best[0]:
+            best = (n, at)
+        if n == 0:
+            break
+    assert best is not None
+    item = text_at(sheet, dim.markup, best[1], dim.height, "label")
+    sheet.items[-1] = dataclasses.replace(item, angle=dim.angle)
+
+
+def _turned(
+    segs: npt.NDArray[np.float64], at: XY, t: tuple[float, float]
+) -> npt.NDArray[np.float64]:
+    """Segments in the frame of a turned text: x along ``t`` from ``at``, y down across it."""
+    dx, dy = t[1], -t[0]  # "down" of a text whose up is (t_y, −t_x), negated
+    dx, dy = -dx, -dy
+    out = np.empty_like(segs)
+    for i in (0, 2):
+        px, py = segs[:, i] - at[0], segs[:, i + 1] - at[1]
+        out[:, i] = px * t[0] + py * t[1]
+        out[:, i + 1] = px * dx + py * dy
+    return out
 
 
 def _crossings(segs: npt.NDArray[np.float64], b: tuple[float, float, float, float]) -> int:
@@ -510,7 +580,9 @@ class Viewport:
         self, a: PointLike, b: PointLike, text: str, offset: float = 10.0, height: float = 3.5
     ) -> None:
         """An aligned dimension of segment ab, ``offset`` mm to the left of a → b on the paper
-        (negative: to the right), with horizontal text (ISO 129 unidirectional) beside the middle.
+        (negative: to the right). Its text runs along the dimension line, above it, reading
+        from the bottom or from the right (GOST 2.307), in the middle of the line, or beside
+        its end where the line is shorter than the text.
         """
         pa, pb = self.p(a), self.p(b)
         length = _dist(pa, pb)
@@ -526,12 +598,32 @@ class Viewport:
         self.sheet.add(Polyline((da, db), "dimension"))
         _head(self.sheet, db, (ux, uy), "dimension")
         _head(self.sheet, da, (-ux, -uy), "dimension")
-
-        def along(t: float) -> XY:
-            return (da[0] + (db[0] - da[0]) * t, da[1] + (db[1] - da[1]) * t)
-
-        slide = tuple(along(t) for t in (0.4, 0.6, 0.3, 0.7, 0.2, 0.8))
-        self.d.label(along(0.5), text, height, prefer=(nx * s, ny * s), others=slide)
+        # the text's direction: the line's, turned to read from the bottom or the right
+        level = tol.DERIVED
+        tx, ty = (ux, uy) if ux > level or (abs(ux) <= level and uy < 0.0) else (-ux, -uy)
+        angle = math.degrees(math.atan2(-ty, tx))
+        upx, upy = ty, -tx  # the text's up on the paper
+        width, rise, down = box(parse(text), height)
+        line = _dist(da, db)
+        gap = 1.0 + down
+        # candidates along the line (the middle first), then beyond either end where the line
+        # is short; Drawing.finish takes the first whose turned box crosses no drawn line
+        fits = width <= line - 2.0 * ARROW_LEN
+        inside = (
+            sorted((k / 20.0 for k in range(2, 19)), key=lambda f: abs(f - 0.5)) if fits else []
+        )
+        far = 0.5 + (line + width) / (2.0 * line) + 1.0 / line
+        cands: list[XY] = []
+        # above the line first (GOST 2.307), below it only where every place above is crossed,
+        # then a little further off the line on either side
+        for lift in (gap, -(1.0 + rise), gap + 2.0, -(3.0 + rise)):
+            for f in (*inside, far, 1.0 - far):
+                cx = da[0] + (db[0] - da[0]) * f - tx * width / 2.0 + upx * lift
+                cy = da[1] + (db[1] - da[1]) * f - ty * width / 2.0 + upy * lift
+                cands.append((cx, cy))
+        self.d.dims.append(
+            DimText(text, height, angle, (tx, ty), tuple(cands), (width, rise, down))
+        )
 
     def dim_angle(
         self,
