@@ -10,12 +10,15 @@ from typing import Any
 from geomcad import tol
 from geomcad.geom import Vec
 from geomcad.sheet import Viewport, fmt_number
+from geomcad.sheet.drawing import ARROW_LEN
 from geomcad.sheet.loads import force, moment
 
 ORIGIN = Vec(0.0, 0.0)
 
 #: A force arrow shorter than this (mm) is drawn this long, so that its head shows.
-MIN_ARROW_MM = 6.0
+#: A force shorter than this at μ_F (two arrowheads) cannot be read as an arrow: it is drawn as
+#: a point with its label, and the sheet says so (SHEETS.md).
+SHORT_MM = 2.0 * ARROW_LEN
 
 
 def f(x: float, digits: int = 4) -> str:
@@ -32,9 +35,12 @@ def small(x: float, scale: float, unit: str = "") -> str:
     return f"{f(x, 3)}{(' ' + unit) if unit else ''}"
 
 
-def _arrow_len(F: Vec, k_F: float) -> float:
-    """k_F for this arrow: to scale, unless it would be shorter than MIN_ARROW_MM."""
-    return k_F if F.norm / k_F >= MIN_ARROW_MM else F.norm / MIN_ARROW_MM
+def short_note(k_F: float) -> str:
+    """The sheet's words for the forces drawn as points."""
+    return (
+        f"силы короче {f(SHORT_MM)} мм при μ_F = {f(k_F)} Н/мм показаны точкой, "
+        "их значения – у точки и в таблице"
+    )
 
 
 @dataclass(frozen=True)
@@ -58,9 +64,9 @@ def draw_loads(
     where: dict[str, Where],
     centre: Vec = ORIGIN,
 ) -> None:
-    """Every solved load on ``body``: forces at their points at k_F (arrows shorter than
-    :data:`MIN_ARROW_MM` drawn that long), moments about their points; the balancing check
-    moment and round-off forces are left out."""
+    """Every solved load on ``body``: forces at their points exactly at k_F (one shorter than
+    :data:`SHORT_MM` as a point with its label), moments about their points; the balancing
+    check moment and round-off forces are left out."""
     biggest = max(
         (a.force.norm for lds in reactions.loads.values() for a in lds if a.force),
         default=0.0,
@@ -73,7 +79,11 @@ def draw_loads(
             if ld.force.norm <= tol.DERIVED * biggest:
                 continue
             text = f"{w.label} = {f(ld.force.norm)} Н"
-            force(v, w.at or ld.at, ld.force, _arrow_len(ld.force, k_F), text, w.arrive,
+            if ld.force.norm / k_F < SHORT_MM:
+                v.dot(w.at or ld.at)
+                v.label(w.at or ld.at, f"{text} (·)", 2.5, prefer=w.prefer, clear=1.0)
+                continue
+            force(v, w.at or ld.at, ld.force, k_F, text, w.arrive,
                   role="result", height=2.5, prefer=w.prefer)  # fmt: skip
         elif abs(ld.moment) > 0.0:
             text = f"{w.label} = {f(abs(ld.moment))} Н·м"

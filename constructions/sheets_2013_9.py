@@ -20,7 +20,7 @@ from geomcad.sheet.graph import Axis, Graph
 from geomcad.sheet.loads import damper, ground, moment, spring
 from geomcad.sheet.scale import gost_scale_to_fit
 
-from .dyn_common import MIN_ARROW_MM, Where, draw_loads, f, small
+from .dyn_common import Where, draw_loads, f, short_note, small
 from .p2013_9 import ROD, Data
 
 if TYPE_CHECKING:
@@ -85,8 +85,7 @@ def _main(sol: Solution) -> Sheet:
         2.5,
     )
     d.text(
-        f"Силы – в масштабе μ_F; стрелки короче {f(MIN_ARROW_MM)} мм удлинены до "
-        f"{f(MIN_ARROW_MM)} мм, значения – в таблице и у стрелок.",
+        f"Силы – в масштабе μ_F; {short_note(data.k_F)}.",
         (25.0, 250.0),
         2.5,
     )

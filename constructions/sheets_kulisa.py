@@ -23,7 +23,7 @@ from geomcad.sheet.graph import Axis, Graph
 from geomcad.sheet.loads import force, ground, moment
 from geomcad.sheet.scale import gost_length_scale, gost_scale_to_fit, nice_factor
 
-from .dyn_common import MIN_ARROW_MM, Where, draw_loads, f, small
+from .dyn_common import Where, draw_loads, f, short_note, small
 from .p_kulisa import Data, sweep, turns
 
 if TYPE_CHECKING:
@@ -421,9 +421,8 @@ def _fbd(sol: Solution) -> Sheet:
     d = start("A3", _tb(sol, "Кулисный механизм: реакции связей", 3, k.ratio_text()))
     d.text("Силы, действующие на звенья в положении φ (с силами инерции), и уравновешивающая сила",
            (25.0, 13.0), 5.0)  # fmt: skip
-    d.text(f"{k.label()} (M {k.ratio_text()});   μ_F = {f(data.k_F)} Н/мм (стрелки короче "
-           f"{f(MIN_ARROW_MM)} мм удлинены до {f(MIN_ARROW_MM)} мм);   ε_1 = {f(data.eps)} рад/с²",
-           (25.0, 20.0), 3.5)  # fmt: skip
+    d.text(f"{k.label()} (M {k.ratio_text()});   {short_note(data.k_F)};   "
+           f"ε_1 = {f(data.eps)} рад/с²", (25.0, 20.0), 3.5)  # fmt: skip
 
     def view(name: str, left: float, mid_y: float) -> tuple[Viewport, float]:
         b = boxes[name]
@@ -488,7 +487,7 @@ def _fbd(sol: Solution) -> Sheet:
     moment(v4, (0.0, 0.0), p["M"], 6.0, f"M = {f(abs(p['M']))} Н·м", role="result",
            start=math.radians(160.0), height=2.5)  # fmt: skip
     fx = data.static.force("F_x")
-    force(v4, c3, fx, max(fx.norm / 40.0, data.k_F), f"F_x = {f(fx.norm)} Н", role="result",
+    force(v4, c3, fx, data.k_F, f"F_x = {f(fx.norm)} Н", role="result",
           height=2.5)  # fmt: skip
     _panel_fbd(d, sol, data)
     return d.finish()

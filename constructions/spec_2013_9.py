@@ -41,7 +41,7 @@ RESULTS = (
     ResultSpec("phi_ddot", "rad/s²", "φ'' from the equation of motion at the state (signed)"),
     ResultSpec("N_pin", "N", "force of the pin on the rod", "F"),
     ResultSpec("F_spring", "N", "spring force c·|x|", "F"),
-    # small forces are drawn at least MIN_ARROW_MM long, so they are not read off the sheet
+    # forces shorter than two arrowheads at μ_F are drawn as points, so they are not read off
     ResultSpec("F_damper", "N", "damper force k·|x'|"),
     ResultSpec("F_inertia_rod", "N", "rod's inertia force m·|x''|"),
     ResultSpec("M_inertia_disc", "N·m", "disc's inertia moment J·|φ''|"),
