@@ -132,7 +132,7 @@ def _mechanism(v: Viewport, geo: Any, c: Any) -> None:
     v.seg(B, C, "link")
     v.guide(Vec(C0.x - 0.06 * geo.l4, geo.l3), Vec(C1.x + 0.06 * geo.l4, geo.l3), (0.0, -1.0))
     for q in (C0, C1):
-        v.slider(q)
+        v.slider(q, role="extreme")
     v.slider(C)
     for q in (A, B, B0, B1):
         v.joint(q)
@@ -140,7 +140,8 @@ def _mechanism(v: Viewport, geo: Any, c: Any) -> None:
     v.pivot(O1)
     # labels, then the dimensions of the result
     v.label(O2, "O_2", prefer=(1.0, -1.0), clear=4.0)
-    v.label(O1, "O_1", prefer=(-1.0, -1.0), clear=4.0)
+    # O1's label below its support, clear of the crank pins A, A0, A1 around it
+    v.label(O1, "O_1", prefer=(1.0, -1.0), clear=6.0)
     v.label(A, "A", prefer=(-1.0, 1.0))
     v.label(B, "B", prefer=(1.0, 1.0))
     v.label(C, "C", prefer=(0.0, 1.0), clear=4.0)
@@ -148,8 +149,9 @@ def _mechanism(v: Viewport, geo: Any, c: Any) -> None:
     v.label(C1, "C_1", prefer=(0.0, 1.0), clear=4.0)
     v.label(B0, "B_0", prefer=(-1.0, 1.0))
     v.label(B1, "B_1", prefer=(1.0, 1.0))
-    v.label(A0, "A_0", height=2.5)
-    v.label(A1, "A_1", height=2.5)
+    for Ax, name in ((A0, "A_0"), (A1, "A_1")):
+        out = (Ax - O1).unit()  # outside the crank circle, away from O1's label
+        v.label(Ax, name, height=2.5, prefer=(out.x, out.y))
     mm = 1000.0
     v.dim_linear(O1, B0, f"O_1B_0 = {fmt_number(ch.O1B0 * mm, digits=4)}", offset=12.0, height=2.5)
     v.dim_linear(O1, B1, f"O_1B_1 = {fmt_number(ch.O1B1 * mm, digits=4)}", offset=-12.0, height=2.5)

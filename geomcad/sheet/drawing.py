@@ -514,8 +514,9 @@ class Viewport:
         sb = (pb[0] + out[0] * off, pb[1] + out[1] * off)
         self._ground(sa, sb, out)
 
-    def slider(self, q: PointLike, along: PointLike = (1.0, 0.0)) -> None:
-        """A slider block on its guide, with the joint of the link that drives it."""
+    def slider(self, q: PointLike, along: PointLike = (1.0, 0.0), role: str = "link") -> None:
+        """A slider block on its guide, with the joint of the link that drives it; ``role``
+        "extreme" draws an extreme position in thin two-dot lines."""
         x, y = self.p(q)
         d = vec(along).unit()
         ux, uy = d.x, -d.y
@@ -526,8 +527,10 @@ class Viewport:
             for sx, sy in ((-1, -1), (1, -1), (1, 1), (-1, 1))
         )
         self.sheet.add(Polyline(corners, "joint", closed=True, fill=True))
-        self.sheet.add(Polyline(corners, "link", closed=True))
+        self.sheet.add(Polyline(corners, role, closed=True))
         self.sheet.add(CircleItem((x, y), JOINT_R, "joint", fill=True))
+        if role != "link":
+            self.sheet.add(CircleItem((x, y), JOINT_R, role))
 
     def turn(
         self,
