@@ -23,7 +23,7 @@ BASELINE: dict[tuple[str, str], dict[str, int]] = {
     ("2013-3", ""): {"anchor": 5, "empty": 1},
     ("2013-4", ""): {"label-line": 4, "short-vector": 2},
     ("2013-5", ""): {"short-vector": 2},
-    ("2013-6", ""): {"anchor": 5},
+    ("2013-6", ""): {"anchor": 4},
     ("2013-6", "kinematics"): {"label-line": 5, "short-vector": 2, "empty": 1},
     ("2013-7", ""): {"anchor": 2, "short-vector": 3},
     ("2013-8", ""): {"anchor": 1, "empty": 1},
