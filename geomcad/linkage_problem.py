@@ -51,26 +51,29 @@ SPECS: tuple[tuple[str, str, str | None, str], ...] = (
 )
 
 
-def _specs(res: Mapping[str, Any]) -> tuple[ResultSpec, ...]:
-    names: dict[str, None] = {}
-    for k, v in res.items():
-        names[k] = None
-        if isinstance(v, list):
-            for item in v:
-                if isinstance(item, dict):
-                    names.update(dict.fromkeys(item))
-    out = [
-        ResultSpec("stroke", "m", "the output's stroke H", "l"),
-        ResultSpec("K", "1", "the coefficient of velocity change"),
-        ResultSpec("W", "1", "Chebyshev's mobility"),
-        ResultSpec("phi_deg", "deg", "the crank angle"),
-    ]
-    for name in names:
-        for prefix, unit, drawn, doc in SPECS:
-            if name.startswith(prefix):
-                out.append(ResultSpec(name, unit, doc, drawn))
-                break
-    return tuple(out)
+#: The file's top-level results (the positions' fields are found by :data:`SPECS`' prefixes).
+TOP: tuple[ResultSpec, ...] = (
+    ResultSpec("W", "1", "Chebyshev's mobility"),
+    ResultSpec("stroke", "m", "the output's stroke H", "l"),
+    ResultSpec("K", "1", "the coefficient of velocity change"),
+    ResultSpec("phi_deg", "deg", "the crank angle"),
+    ResultSpec("I_pr", "kg·m²", "the reduced moment of inertia at the numbered positions"),
+    ResultSpec("M_pr", "N·m", "the reduced moment of the loads at the numbered positions"),
+    ResultSpec("omega_max", "rad/s", "the largest crank speed allowed by δ"),
+    ResultSpec("omega_min", "rad/s", "the smallest crank speed allowed by δ"),
+)
+
+
+def spec_of(name: str) -> ResultSpec | None:
+    """The spec of a linkage file's result or position field: a top-level name, or by the
+    prefix of a point's, link's or pair's field (``V_B``, ``omega_3``, ``R_2_3_x``)."""
+    for r in TOP:
+        if r.name == name:
+            return r
+    for prefix, unit, drawn, doc in SPECS:
+        if name.startswith(prefix):
+            return ResultSpec(name, unit, doc, drawn)
+    return None
 
 
 def make_problem(file_id: str, data: dict[str, Any]) -> Problem:
@@ -94,7 +97,7 @@ def make_problem(file_id: str, data: dict[str, Any]) -> Problem:
         from geomcad.documents import stem
         from geomcad.sheet.linkage_forces import force_sheets  # sheets 2 and 3 (issue 15)
 
-        kinematic = kinematic_sheets(solved, sol.scales, stem(file_id))
+        kinematic = kinematic_sheets(solved, stem(file_id))
         return kinematic + force_sheets(solved, stem(file_id), first_no=len(kinematic) + 1)
 
     def motion(sol: Solution, frames: int) -> Any:
@@ -106,7 +109,7 @@ def make_problem(file_id: str, data: dict[str, Any]) -> Problem:
         id=file_id,
         title=lk.title,
         params=(),
-        results=(),
+        results=TOP,
         seed={},
         build=build,
         draw=draw,
@@ -116,9 +119,7 @@ def make_problem(file_id: str, data: dict[str, Any]) -> Problem:
 
 
 class _FileProblem(Problem):
-    """A problem whose result specs follow from its results (a file names its own points)."""
+    """A problem whose position fields are named after the file's own points and links."""
 
-    def solve(self, **params: object) -> Solution:
-        sol = super().solve(**params)
-        object.__setattr__(self, "results", _specs(sol.results))
-        return sol
+    def result_spec(self, name: str) -> ResultSpec | None:
+        return spec_of(name)

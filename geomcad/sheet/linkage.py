@@ -13,7 +13,7 @@ velocity plans and one for the acceleration plans, so every vector is drawn at t
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping, Sequence
+from collections.abc import Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -155,9 +155,7 @@ def sheet_scales(s: Solved) -> dict[str, float]:
     return {"l": lay.k_l.k, "v": lay.k_v.k, "a": lay.k_a.k}
 
 
-def kinematic_sheets(
-    s: Solved, scales: Mapping[str, float], stem: str = ""
-) -> list[tuple[str, object]]:
+def kinematic_sheets(s: Solved, stem: str = "") -> list[tuple[str, object]]:
     """The kinematic sheet (and, with many positions, a second sheet of velocity plans)."""
     lk = s.linkage
     lay = layout(s)
