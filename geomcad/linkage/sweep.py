@@ -38,12 +38,15 @@ from geomcad.linkage.model import Group, Linkage, PointDef
 Arr = npt.NDArray[np.float64]
 Cx = npt.NDArray[np.complex128]
 
-#: Crank angles per block of the sweep (the bespoke six-bar kernel's best block too).
+#: Crank angles per block of the sweep, so that its temporaries stay in the cache (the bespoke
+#: six-bar kernel's best block too; 4096 and 8192 measured no faster, `bench/bench_linkage.py`).
 BLOCK = 16384
 
 
 def _xy(z: Cx) -> Arr:
-    """A complex array as an ``(N, 2)`` float array (a view)."""
+    """A complex array as an ``(N, 2)`` float array (a view; a copy of a broadcast one)."""
+    if not z.flags.c_contiguous:  # a frame point or a constant: one value broadcast
+        z = np.ascontiguousarray(z)
     return z.view(np.float64).reshape(-1, 2)
 
 
@@ -130,25 +133,29 @@ def sweep(lk: Linkage, phi: npt.ArrayLike, order: int = 2) -> State:
             dst, src = getattr(out, name), getattr(b, name)
             for k, v in src.items():
                 if k not in dst:
+                    if not v.flags.c_contiguous:  # a constant: broadcast over every angle
+                        dst[k] = np.broadcast_to(v[0], (n,))
+                        continue
                     dst[k] = np.empty(n, dtype=v.dtype)
-                dst[k][sl] = v
+                if dst[k].flags.writeable:
+                    dst[k][sl] = v
     return out
 
 
 def _block(lk: Linkage, ph: Arr, order: int) -> State:
     n = ph.shape[0]
     s = State(ph, lk.omega)
-    zero = np.zeros(n, dtype=np.complex128)
+    zero = np.broadcast_to(np.complex128(0.0), (n,))
     for name, p in lk.frame.items():
-        s.z[name] = np.full(n, complex(p.x, p.y))
+        s.z[name] = np.broadcast_to(np.complex128(complex(p.x, p.y)), (n,))
         s.vz[name] = zero
         s.az[name] = zero
     w1 = lk.omega
     O1 = lk.frame[lk.pivot]
     r = lk.length * np.exp(1j * ph)
     s.z[lk.joint] = complex(O1.x, O1.y) + r
-    s.omega[1] = np.full(n, w1)
-    s.eps[1] = np.zeros(n)
+    s.omega[1] = np.broadcast_to(np.float64(w1), (n,))
+    s.eps[1] = np.broadcast_to(np.float64(0.0), (n,))
     if order >= 1:
         s.vz[lk.joint] = (1j * w1) * r
     if order >= 2:
