@@ -123,12 +123,12 @@ def read_spec(file_id: str, data: Mapping[str, Any]) -> CamSpec:
             t.key("follower"), follower, "a flat-faced rocker is not built (knife or roller)"
         )
     if motion == "translating":
-        H = t.number("stroke", gt=0.0, unit="m")
+        H = t.number("stroke", ge=1.0e-6, le=1.0e3, unit="m")
         arm = 0.0
         pivot = None
     else:
         H = deg(t.number("swing_deg", gt=0.0, lt=180.0, unit="°"))
-        arm = t.number("arm", gt=0.0, unit="m")
+        arm = t.number("arm", ge=1.0e-6, le=1.0e3, unit="m")
         pivot = t.optional_number("pivot_distance", gt=0.0)
     a_rise = deg(t.number("pressure_angle_deg", 30.0))
     a_ret = deg(t.number("return_pressure_angle_deg", to_deg(a_rise)))
@@ -160,7 +160,9 @@ def read_spec(file_id: str, data: Mapping[str, Any]) -> CamSpec:
     for i, raw in enumerate(phases_raw):
         p = Table(raw, f"{KIND}.phases.{i + 1}")
         kind = p.choice("kind", ("rise", "dwell", "return"))
-        angle = deg(p.number("angle_deg", gt=0.0, le=360.0, unit="°"))
+        # a phase under a degree is no phase a cam is cut or drawn with (and it would take
+        # millions of samples)
+        angle = deg(p.number("angle_deg", ge=1.0, le=360.0, unit="°"))
         law = p.choice("law", ALL_LAWS, "cycloidal") if kind != "dwell" else "linear"
         p.done()
         phases.append(Phase(kind, angle, law))  # type: ignore[arg-type]

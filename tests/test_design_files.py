@@ -292,3 +292,13 @@ def test_build_writes_the_sheet(tmp_path: Path) -> None:
     code = main(["build", str(EX / "cam-flat.toml"), "--out", str(tmp_path), "--format", "svg"])
     assert code == 0
     assert (tmp_path / "cam-flat.svg").read_text(encoding="utf-8").startswith("<?xml")
+
+
+def test_a_phase_under_a_degree_is_refused_at_once(capsys: pytest.CaptureFixture[str]) -> None:
+    """A fuzzed 1e-7° phase used to take seconds of sampling; it is bad input now."""
+    from geomcad.cli import main
+
+    path = str(Path(__file__).resolve().parents[1] / "examples" / "cam-flat.toml")
+    assert main(["solve", path, "--set", "cam.phases.1.angle_deg=1e-7"]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "cam.phases.1" in err[0] and "angle_deg" in err[0]
