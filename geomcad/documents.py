@@ -30,7 +30,7 @@ from importlib.metadata import entry_points
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from geomcad.errors import ParameterError
+from geomcad.errors import FileKeyError, ParameterError
 
 if TYPE_CHECKING:
     from geomcad.problem import Problem, Solution
@@ -149,9 +149,28 @@ def load(pid: str, sets: Sequence[tuple[str, str]] = ()) -> Problem:
     return from_data(pid, data)
 
 
+#: TOML's integers are 64-bit (the specification); :mod:`tomllib` reads longer ones too.
+INT_MIN, INT_MAX = -(2**63), 2**63 - 1
+
+
+def check_integers(node: object, path: str = "") -> None:
+    """Refuse an integer outside TOML's 64-bit range anywhere in the data (it would overflow
+    the float it is read as): a :class:`FileKeyError` naming its key."""
+    if isinstance(node, dict):
+        for k, v in node.items():
+            check_integers(v, f"{path}.{k}" if path else str(k))
+    elif isinstance(node, list):
+        for i, v in enumerate(node, start=1):
+            check_integers(v, f"{path}.{i}")
+    elif isinstance(node, int) and not isinstance(node, bool) and not INT_MIN <= node <= INT_MAX:
+        digits = len(str(abs(node)))
+        raise FileKeyError(path, "", f"a whole number of {digits} digits is beyond TOML's 64 bits")
+
+
 def from_data(pid: str, data: dict[str, Any]) -> Problem:
     """The problem that the file data ``data`` states, named ``pid`` (a file's data held in
     memory: a variant before it is written)."""
+    check_integers(data)
     return _maker(kind_of(data))(pid, data)
 
 

@@ -1,4 +1,5 @@
-"""Fuzzing every problem's parameters: a result with only finite numbers, or a GeomcadError.
+"""Fuzzing every problem's parameters and mutated example files (linkage, cam and gear files):
+a result with only finite numbers, or a GeomcadError.
 
 Never another exception, never a warning, never a hang: each call must answer within
 :data:`CALL_SECONDS` (an alarm stops a call that does not). The values mix the ordinary (a
@@ -12,14 +13,17 @@ problem (e.g. ``HYPOTHESIS_PROFILE=explore GEOMCAD_FUZZ_EXAMPLES=400 pytest test
 
 from __future__ import annotations
 
+import copy
 import io
 import math
 import os
 import signal
 import time
+import tomllib
 import warnings
 from collections.abc import Iterator
 from contextlib import contextmanager, redirect_stderr, redirect_stdout
+from pathlib import Path
 from typing import Any
 
 import numpy as np
@@ -219,3 +223,93 @@ def test_the_cli_takes_any_text_without_a_traceback(
         assert err.startswith("error: ") and err.count("\n") == 1, err
     else:
         assert err == ""
+
+
+# --- mutated files: every example file (linkage, cam, gear), a few of its values replaced ---------
+
+FILES = sorted((Path(__file__).resolve().parents[1] / "examples").glob("*.toml"))
+FILE_VALUES: list[object] = [
+    *(v for v in HOSTILE if not (isinstance(v, float) and not math.isfinite(v)) and v is not None),
+    -1,
+    0,
+    1e-9,
+    1e9,
+    360,
+    "A",
+    "O",
+    "x",
+    "",
+    [0.0, 0.0],
+    [1e308, 0.0],
+    [1, 2, 3],
+    {},
+    {"a": 1},
+]
+
+
+def _leaves(node: object, path: tuple[object, ...] = ()) -> Iterator[tuple[object, ...]]:
+    """Every key path into a TOML table, tables and lists included."""
+    if isinstance(node, dict):
+        for k, v in node.items():
+            yield (*path, k)
+            yield from _leaves(v, (*path, k))
+    elif isinstance(node, list):
+        for i, v in enumerate(node):
+            yield (*path, i)
+            yield from _leaves(v, (*path, i))
+
+
+@st.composite
+def _mutated(draw: st.DrawFn) -> tuple[str, dict[str, Any]]:
+    path = draw(st.sampled_from(FILES))
+    data = tomllib.loads(path.read_text(encoding="utf-8"))
+    for _ in range(draw(st.integers(1, 3))):
+        keys = list(_leaves(data))
+        if not keys:
+            break
+        where = draw(st.sampled_from(keys))
+        node: Any = data
+        for k in where[:-1]:
+            node = node[k]
+        last = where[-1]
+        old = node[last]
+        if isinstance(node, dict) and draw(st.booleans()) and draw(st.booleans()):
+            del node[last]
+        elif (
+            isinstance(old, int | float)
+            and not isinstance(old, bool)
+            and abs(old) < 2**53  # a huge integer planted before is replaced, not scaled
+            and draw(st.booleans())
+        ):
+            node[last] = old * draw(st.sampled_from([-1.0, 0.0, 0.5, 2.0, 10.0, 1e-9, 1e9]))
+        else:
+            node[last] = copy.deepcopy(draw(st.sampled_from(FILE_VALUES)))
+    return path.name, data
+
+
+@settings(
+    max_examples=max(EXAMPLES, 10) * 3,
+    deadline=None,
+    suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large],
+)
+@given(case=_mutated())
+def test_mutated_files_give_a_finite_result_or_a_geomcad_error(
+    case: tuple[str, dict[str, Any]],
+) -> None:
+    from geomcad import documents
+
+    name, data = case
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        start = time.monotonic()
+        try:
+            with _time_bound(CALL_SECONDS):
+                sol = documents.from_data(name, data).solve()
+                _finite(sol.results, "results")
+                if SHEETS:
+                    sol.sheets()
+        except geomcad.GeomcadError as exc:
+            assert str(exc).strip(), "an error says what is wrong"
+        finally:
+            elapsed = time.monotonic() - start
+        assert elapsed < CALL_SECONDS
