@@ -135,7 +135,7 @@ def _panel(d: Any, an: Analysis, m: Any, kv: float, ka: float) -> None:
     phi = np.array([an.phi1])
     r = m.sweep(phi, an.omega1)
     aa, ab, ac = (q[0] for q in m.accelerations(phi, an.omega1))
-    rows = [["Величина", "По плану", "На плане, мм", "Расчёт (sweep)"]]
+    rows = [["Величина", "По плану", "На плане, мм", "По функциям положения"]]
     vals = (
         ("V_A", an.vp["a"].norm, kv, float(np.hypot(*r.V_A[0]))),
         ("V_B", an.vp["b"].norm, kv, float(np.hypot(*r.V_B[0]))),
