@@ -58,3 +58,14 @@ QP_FTOL = 1e-16
 #: Relative step of a central difference that estimates a derivative (a Jacobian's entries,
 #: for the stiffness of an equation of motion).
 DIFF_STEP = 1e-6
+
+#: The flywheel check's integration of the equation of motion (linkage files): relative
+#: tolerance on the state (δ is read from it to about 1e-8).
+FLYWHEEL_ODE_RTOL = 1.0e-10
+
+#: Bounded minimisation of an angle (scipy minimize_scalar): absolute tolerance in radians.
+MIN_ANGLE = 1.0e-12
+
+#: A plan or a load group with nothing to show still gets a scale: its size is taken as at
+#: least this fraction (plan units per mm), so a factor can be chosen.
+EMPTY_PLAN = 1.0e-12

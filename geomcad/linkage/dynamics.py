@@ -42,6 +42,7 @@ from scipy.integrate import cumulative_trapezoid, solve_ivp
 from scipy.interpolate import CubicSpline
 from scipy.optimize import minimize_scalar
 
+from geomcad import tol
 from geomcad.construction import Construction
 from geomcad.errors import ConstructionError
 from geomcad.geom import Line, Vec
@@ -65,8 +66,8 @@ DENSE = 8192
 GAUSS = 8
 #: Turns integrated by the check.
 CYCLES = 3
-#: The check's relative tolerance (δ is read to about 1e-8).
-ODE_RTOL = 1.0e-10
+#: The check's relative tolerance.
+ODE_RTOL = tol.FLYWHEEL_ODE_RTOL
 #: Samples of the last turn read for ω's extremes.
 OMEGA_SAMPLES = 20001
 
@@ -187,7 +188,7 @@ def dynamics(lk: Linkage, cyc: Cycle | None, positions: int) -> Flywheel:
         best = (float(psi[i]), float(sgn * f[i]))
         if hi > lo:
             r = minimize_scalar(g, bounds=(float(lo), float(hi)), method="bounded",
-                                options={"xatol": 1e-12})  # fmt: skip
+                                options={"xatol": tol.MIN_ANGLE})  # fmt: skip
             if r.success and float(r.fun) < best[1]:
                 best = (float(r.x), float(r.fun))
         x = best[0]

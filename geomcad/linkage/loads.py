@@ -25,6 +25,7 @@ from dataclasses import dataclass
 import numpy as np
 import numpy.typing as npt
 
+from geomcad import tol
 from geomcad.geom import Vec
 from geomcad.linkage.cycle import Cycle
 from geomcad.linkage.model import Group, Linkage
@@ -34,7 +35,7 @@ from geomcad.linkage.sweep import State, guide_line, prp_frame, sweep
 Arr = npt.NDArray[np.float64]
 
 #: A slider whose velocity along its guide is below this fraction of |ω1|·l_crank is at rest.
-REST = 1.0e-9
+REST = tol.DERIVED
 #: Samples of a turn for the range of a loaded slider that is not the output.
 RANGE_SAMPLES = 7200
 

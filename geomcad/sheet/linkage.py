@@ -110,7 +110,7 @@ def _mechanism_extent(s: Solved) -> tuple[float, float, float, float]:
     pts: list[Vec] = []
     for P in s.positions:
         pts += list(P.pos.values())
-        for bodies in _bodies(lk, P).values():
+        for bodies in link_bodies(lk, P).values():
             for b in bodies:
                 pts += list(b.points)
     O1 = lk.frame[lk.pivot]
@@ -191,13 +191,17 @@ def _title(
 # --- the mechanism ----------------------------------------------------------------------------
 
 
-def _bodies(lk: Linkage, P: Position) -> dict[str, list[Body]]:
-    """Each link's body through all its points (a slotted link along its slide, past the block)."""
+def link_bodies(
+    lk: Linkage, P: Position, links: Sequence[int] | None = None
+) -> dict[str, list[Body]]:
+    """Each link's body in position P through all its points: a slotted link along its slide,
+    past the block; a PRP yoke with its slot through the block; a link carrying a guide with
+    the guide run on to its slider. ``links``: those to draw (default: every moving link)."""
     out: dict[str, list[Body]] = {}
-    for link in lk.moving_links:
-        pts = [P.pos[n] for n in lk.points_on(link)]
+    for link in lk.moving_links if links is None else links:
         uniq: list[Vec] = []
-        for q in pts:
+        for n in lk.points_on(link):
+            q = P.pos[n]
             if not any(q.dist(u) <= tol.DERIVED * max(1.0, q.norm) for u in uniq):
                 uniq.append(q)
         g = lk.group_of(link)
@@ -212,15 +216,27 @@ def _bodies(lk: Linkage, P: Position) -> dict[str, list[Body]]:
                 else [Body.of([C, C + d * (far * 1.15)])]
             )
             continue
-        if len(uniq) < 2:
-            continue
         if len(uniq) == 2:
             out[str(link)] = [Body.of(uniq)]
-        else:
+        elif len(uniq) > 2:
             cx = sum(q.x for q in uniq) / len(uniq)
             cy = sum(q.y for q in uniq) / len(uniq)
             ring = sorted(uniq, key=lambda q: math.atan2(q.y - cy, q.x - cx))
             out[str(link)] = [Body.of(ring, closed=True)]
+        if g is not None and g.kind == "PRP" and link == g.links[1]:
+            # the yoke's slot: from its reference point through the block, a little past it
+            E, A = P.pos[g.joint], P.pos[g.slider]
+            if E.dist(A) > 0.0:
+                out.setdefault(str(link), []).append(Body.of([E, A + (A - E) * 0.15]))
+        # a guide on this link runs on to the slider it carries
+        for g2 in lk.groups:
+            gd = g2.guide
+            if g2.kind == "RRP" and gd is not None and gd.link == link:
+                line = P.lines[g2.index]
+                t = [(P.pos[n] - line.p).dot(line.d) for n in (gd.frm, gd.toward, g2.joint)]
+                out.setdefault(str(link), []).append(Body.of([line.at(min(t)), line.at(max(t))]))
+                if gd.offset:
+                    out[str(link)].append(Body.of([P.pos[gd.frm], line.p]))
     return out
 
 
@@ -243,7 +259,7 @@ def _mechanism(d: Drawing, s: Solved, k: Scale) -> None:
     P0 = s.positions[0]
     for i, P in enumerate(s.positions):
         if i > 0:
-            for bodies in _bodies(lk, P).values():
+            for bodies in link_bodies(lk, P).values():
                 for b in bodies:
                     v.polyline(b.points, "thin", closed=b.closed)
         for name in dict.fromkeys((lk.joint, lk.output)):
@@ -254,7 +270,7 @@ def _mechanism(d: Drawing, s: Solved, k: Scale) -> None:
         name = pair.name.split(":")[0]
         if name in P0.pos and name not in (lk.joint, lk.output):
             labels[pair.name] = name
-    draw_scheme(v, s.scheme, bodies=_bodies(lk, P0), pair_labels=labels, label_height=3.5)
+    draw_scheme(v, s.scheme, bodies=link_bodies(lk, P0), pair_labels=labels, label_height=3.5)
     for p in lk.points:
         if p.name not in labels.values():
             v.dot(P0.pos[p.name])
@@ -381,8 +397,8 @@ def _tables(d: Drawing, s: Solved, lay: Layout) -> None:
             [
                 str(i),
                 fmt_number(math.degrees(P.phi) % 360, digits=4),
-                _num(P.vel[lk.output].norm, abs(lk.omega) * lk.length),
-                *[_num(P.omega[j], abs(lk.omega)) for j in links],
+                table_number(P.vel[lk.output].norm, abs(lk.omega) * lk.length),
+                *[table_number(P.omega[j], abs(lk.omega)) for j in links],
             ]
         )
     x0, y0, x1, y1 = TABLES
@@ -399,8 +415,8 @@ def _tables(d: Drawing, s: Solved, lay: Layout) -> None:
         rows2.append(
             [
                 fmt_number(math.degrees(P.phi) % 360, digits=4),
-                _num(P.acc[lk.output].norm, lk.omega**2 * lk.length),
-                *[_num(P.eps[j], lk.omega**2) for j in links],
+                table_number(P.acc[lk.output].norm, lk.omega**2 * lk.length),
+                *[table_number(P.eps[j], lk.omega**2) for j in links],
             ]
         )
     w2 = [16.0, 22.0, *[(width - 38.0) / max(len(links), 1)] * len(links)]
@@ -423,9 +439,10 @@ def _turns(lk: Linkage, link: int) -> bool:
 ZERO = tol.DERIVED
 
 
-def _num(x: float, scale: float) -> str:
-    """A table value to 3 significant figures; round-off of a zero as 0."""
-    return "0" if abs(x) <= ZERO * scale else fmt_number(x, digits=3)
+def table_number(x: float, scale: float = 0.0, digits: int = 3) -> str:
+    """A table value to ``digits`` significant figures; round-off of a zero (at most
+    :data:`ZERO` of ``scale``, the size of its quantity) as 0."""
+    return "0" if abs(x) <= ZERO * scale else fmt_number(x, digits=digits)
 
 
 # --- the moving mechanism ---------------------------------------------------------------------

@@ -26,6 +26,7 @@ from collections.abc import Sequence
 import numpy as np
 import numpy.typing as npt
 
+from geomcad import tol
 from geomcad.forces import ForcePolygon
 from geomcad.geom import Vec
 from geomcad.linkage.analysis import analyse
@@ -35,13 +36,14 @@ from geomcad.linkage.loads import centre_vec
 from geomcad.linkage.model import Linkage
 from geomcad.linkage.plans import Position, plan_name
 from geomcad.linkage.solution import Solved, scheme
-from geomcad.sheet import Drawing, TitleBlock, fmt_number, gost_scale_to_fit, nice_factor, start
+from geomcad.sheet import Drawing, TitleBlock, gost_scale_to_fit, nice_factor, start
 from geomcad.sheet.drawing import Viewport
 from geomcad.sheet.graph import Axis, Graph, nice_step
+from geomcad.sheet.linkage import link_bodies, table_number
 from geomcad.sheet.loads import force, moment
 from geomcad.sheet.plans import markup_of
 from geomcad.sheet.scale import Scale
-from geomcad.sheet.scheme import Body, draw_scheme
+from geomcad.sheet.scheme import draw_scheme
 from geomcad.structure import Mechanism
 from geomcad.structure.model import Link
 
@@ -131,14 +133,8 @@ def _title(lk: Linkage, what: str, designation: str, no: int, count: int) -> Tit
     )
 
 
-#: Values below this fraction of their column's largest print as 0 (round-off of a zero).
-ZERO = 1.0e-9
-
-
 def _num(x: float, digits: int = 4, scale: float = 0.0) -> str:
-    if abs(x) <= ZERO * scale:
-        return "0"
-    return fmt_number(x, digits=digits)
+    return table_number(x, scale, digits)
 
 
 # --- sheet 2 ------------------------------------------------------------------------------
@@ -175,53 +171,6 @@ def _fit(d: Drawing, box: Box, ext: tuple[float, float, float, float]) -> tuple[
     return d.viewport(k, ((x0 + x1) / 2.0, (y0 + y1) / 2.0), at), k
 
 
-def _bodies(lk: Linkage, P: Position, links: Sequence[int]) -> dict[str, list[Body]]:
-    """Each link's body through its points (a slotted link along its slide, past the block)."""
-    out: dict[str, list[Body]] = {}
-    for link in links:
-        g = lk.group_of(link)
-        if g is not None and g.kind == "RPR" and link == g.links[1]:
-            d = P.slide[link]
-            C = P.pos[g.pivot]
-            pts = [P.pos[n] for n in lk.points_on(link)] + [P.pos[g.slider]]
-            far = max((q - C).dot(d) for q in pts)
-            foot = C + d.perp() * g.offset
-            out[str(link)] = [Body.of([C, foot, foot + d * (far * 1.15)])]
-            continue
-        extra: list[Body] = []
-        if g is not None and g.kind == "PRP" and link == g.links[1]:
-            # the yoke's slot: from its reference point through the block, a little past it
-            E, A = P.pos[g.joint], P.pos[g.slider]
-            if E.dist(A) > 0.0:
-                extra.append(Body.of([E, A + (A - E) * 0.15]))
-        uniq: list[Vec] = []
-        for n in lk.points_on(link):
-            q = P.pos[n]
-            if not any(q.dist(u) < 1e-9 * max(1.0, q.norm) for u in uniq):
-                uniq.append(q)
-        if len(uniq) == 2:
-            out[str(link)] = [Body.of(uniq)]
-        elif len(uniq) > 2:
-            cx = sum(q.x for q in uniq) / len(uniq)
-            cy = sum(q.y for q in uniq) / len(uniq)
-            ring = sorted(uniq, key=lambda q: math.atan2(q.y - cy, q.x - cx))
-            out[str(link)] = [Body.of(ring, closed=True)]
-        if extra:
-            out.setdefault(str(link), []).extend(extra)
-        # a guide on this link runs on to the slider it carries
-        for g2 in lk.groups:
-            gd = g2.guide
-            if g2.kind == "RRP" and gd is not None and gd.link == link:
-                line = P.lines[g2.index]
-                t = [(P.pos[n] - line.p).dot(line.d) for n in (gd.frm, gd.toward, g2.joint)]
-                a, b = line.at(min(t)), line.at(max(t))
-                out.setdefault(str(link), []).append(Body.of([a, b]))
-                if gd.offset:
-                    F = P.pos[gd.frm]
-                    out[str(link)].append(Body.of([F, line.p]))
-    return out
-
-
 def _draw_loads(
     v: Viewport, lk: Linkage, P: Position, loads: Sequence[Applied], k_F: float, role: str
 ) -> None:
@@ -236,13 +185,13 @@ def _mechanism(d: Drawing, lk: Linkage, P: Position, f: Forces, title: str) -> N
     pts = list(P.pos.values())
     v, k = _fit(d, MECH, _extent(pts, lk.length))
     loads = [ld for lds in f.loads.values() for ld in lds]
-    big = max([ld.force.norm for ld in loads if ld.force is not None] + [1e-9])
+    big = max([ld.force.norm for ld in loads if ld.force is not None], default=0.0) or 1.0
     kF = nice_factor(big, LOAD_MM, "F")
     d.text(title, (MECH[0] + 2.0, MECH[1] + 4.0), 5.0)
     d.text(f"{k.label()}   (M {k.ratio_text()});   {kF.label()}", (MECH[0] + 2.0, MECH[1] + 10.0),
            3.5)  # fmt: skip
     mech = scheme(lk, P)
-    draw_scheme(v, mech, bodies=_bodies(lk, P, lk.moving_links), pair_labels={}, label_height=3.5)
+    draw_scheme(v, mech, bodies=link_bodies(lk, P), pair_labels={}, label_height=3.5)
     for name in P.pos:
         if name in lk.owner and lk.owner[name] != 0:
             v.label(P.pos[name], name, 3.5, clear=1.0)
@@ -260,7 +209,7 @@ def _free_body(d: Drawing, lk: Linkage, P: Position, gf: GroupForces, cell: Box)
     v, k = _fit(d, cell, _extent(pts, lk.length * 0.5))
     forces = [ld.force.norm for i in links for ld in gf.loads[i] if ld.force is not None]
     forces += [r.force.norm for r in gf.reactions]
-    kF = nice_factor(max([*forces, 1e-9]), LOAD_MM, "F")
+    kF = nice_factor(max(forces, default=0.0) or 1.0, LOAD_MM, "F")
     g = gf.group
     what = f"Группа II({links[0]}, {links[1]})" if g is not None else "Кривошип 1"
     d.text(what, (cell[0] + 3.0, cell[1] + 4.0), 3.5)
@@ -270,7 +219,7 @@ def _free_body(d: Drawing, lk: Linkage, P: Position, gf: GroupForces, cell: Box)
     pairs = tuple(p for p in full.pairs if own & set(p.links))
     near = {x for p in pairs for x in p.links} - own - {full.frame}
     mech = Mechanism(tuple(Link(x) for x in sorted(own | near)), pairs, full.frame)
-    draw_scheme(v, mech, bodies=_bodies(lk, P, links), pair_labels={}, ghosts=sorted(near))
+    draw_scheme(v, mech, bodies=link_bodies(lk, P, links), pair_labels={}, ghosts=sorted(near))
     for i in links:
         _draw_loads(v, lk, P, gf.loads[i], kF.k, "vector")
     for r in gf.reactions:
@@ -295,7 +244,7 @@ def _polygon(d: Drawing, gf: GroupForces, name: str, poly: ForcePolygon, cell: B
     ys = [q.y for q in pts]
     w = cell[2] - cell[0] - 16.0
     h = cell[3] - cell[1] - TITLE_ROOM - 10.0
-    need = max((max(xs) - min(xs)) / w, (max(ys) - min(ys)) / h, 1e-12)
+    need = max((max(xs) - min(xs)) / w, (max(ys) - min(ys)) / h, tol.EMPTY_PLAN)
     kF = nice_factor(need, 1.0, "F")
     if gf.group is None:
         title = "План сил кривошипа 1"
@@ -326,9 +275,11 @@ def _lever(d: Drawing, lk: Linkage, P: Position, f: Forces) -> None:
     ys = [q.y for q in pts]
     bx0, by0, bx1, by1 = LEVER
     w, h = bx1 - bx0 - 2.0 * LOAD_MM, by1 - by0 - TITLE_ROOM - 2.0 * LOAD_MM
-    kv = nice_factor(max((max(xs) - min(xs)) / w, (max(ys) - min(ys)) / h, 1e-12), 1.0, "v")
+    kv = nice_factor(
+        max((max(xs) - min(xs)) / w, (max(ys) - min(ys)) / h, tol.EMPTY_PLAN), 1.0, "v"
+    )
     forces = [it.force.norm for it in lev.items] + [lev.F_bal.norm]
-    kF = nice_factor(max([*forces, 1e-9]), LEVER_LOAD_MM, "F")
+    kF = nice_factor(max(forces, default=0.0) or 1.0, LEVER_LOAD_MM, "F")
     d.text("Рычаг Жуковского", (bx0 + 2.0, by0 + 4.0), 5.0)
     d.text(f"{kv.label()};  {kF.label()};  M_{{ур}} = {_num(lev.M_bal)} Н·м",
            (bx0 + 2.0, by0 + 10.0), 3.5)  # fmt: skip
