@@ -26,6 +26,7 @@ import numpy as np
 
 from geomcad import tol
 from geomcad.construction import Construction
+from geomcad.documents import file_problem
 from geomcad.errors import ConstructionError, ParameterError
 from geomcad.kinematics import cam_design as cd
 from geomcad.kinematics.cams import (
@@ -495,13 +496,4 @@ def make_problem(file_id: str, data: dict[str, Any]) -> Problem:
 
         return sheets(solution)
 
-    return Problem(
-        id=file_id,
-        title=spec.title,
-        params=(),
-        results=RESULTS,
-        seed={},
-        build=build,
-        draw=draw,
-        inputs=data,
-    )
+    return file_problem(file_id, data, spec.title, RESULTS, build, draw)

@@ -15,6 +15,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from geomcad.construction import Construction
+from geomcad.documents import file_problem
 from geomcad.errors import ConstructionError, ParameterError
 from geomcad.kinematics import gear_design as gd
 from geomcad.kinematics import planetary as pl
@@ -257,13 +258,4 @@ def make_problem(file_id: str, data: dict[str, Any]) -> Problem:
 
         return sheets(solution)
 
-    return Problem(
-        id=file_id,
-        title=spec.title,
-        params=(),
-        results=RESULTS,
-        seed={},
-        build=build,
-        draw=draw,
-        inputs=data,
-    )
+    return file_problem(file_id, data, spec.title, RESULTS, build, draw)

@@ -24,7 +24,7 @@ from __future__ import annotations
 
 import math
 import tomllib
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from functools import cache
 from importlib.metadata import entry_points
 from pathlib import Path
@@ -33,12 +33,42 @@ from typing import TYPE_CHECKING, Any
 from geomcad.errors import FileKeyError, ParameterError
 
 if TYPE_CHECKING:
-    from geomcad.problem import Problem, Solution
+    from geomcad.problem import Build, Problem, ResultSpec, Solution
+    from geomcad.sheet import Sheet
+    from geomcad.sheet.motion import Frames
 
 GROUP = "geomcad.files"
 SUFFIX = ".toml"
 
 Maker = Callable[[str, dict[str, Any]], "Problem"]
+
+
+def file_problem(
+    file_id: str,
+    data: dict[str, Any],
+    title: str,
+    results: tuple[ResultSpec, ...],
+    build: Callable[[Mapping[str, Any]], Build],
+    draw: Callable[[Solution], Sequence[tuple[str, Sheet]]],
+    motion: Callable[[Solution, int], Frames] | None = None,
+    cls: type[Problem] | None = None,
+) -> Problem:
+    """The problem of a file kind, as this module's docstring says it is: no parameters (the
+    file is the data), no seed, the file's data as its ``inputs``; ``cls`` a subclass of
+    :class:`~geomcad.problem.Problem` where the kind needs one."""
+    from geomcad.problem import Problem
+
+    return (cls or Problem)(
+        id=file_id,
+        title=title,
+        params=(),
+        results=results,
+        seed={},
+        build=build,
+        draw=draw,
+        inputs=data,
+        motion=motion,
+    )
 
 
 def is_file_id(pid: str) -> bool:

@@ -105,17 +105,9 @@ def make_problem(file_id: str, data: dict[str, Any]) -> Problem:
 
         return linkage_motion(sol.data, frames)
 
-    return _FileProblem(
-        id=file_id,
-        title=lk.title,
-        params=(),
-        results=TOP,
-        seed={},
-        build=build,
-        draw=draw,
-        inputs=data,
-        motion=motion,
-    )
+    from geomcad.documents import file_problem
+
+    return file_problem(file_id, data, lk.title, TOP, build, draw, motion, cls=_FileProblem)
 
 
 class _FileProblem(Problem):
