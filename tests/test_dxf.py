@@ -318,3 +318,23 @@ def test_black_like_the_svg_unless_in_colour() -> None:
     for doc in (black, coloured):
         discs = [h for h in doc.modelspace().query("HATCH") if h.dxf.layer == "joint"]
         assert discs and all(h.dxf.true_color == 0xFFFFFF for h in discs)
+
+
+def test_turned_texts_stay_turned() -> None:
+    """графа 26 (turned 180°) and a dimension's text along its slanted line (GOST 2.307) keep
+    their angle in the DXF, each run placed along the turned baseline."""
+    _, sheet = _sheets("2013-3")[0]
+    turned = [t for t in sheet.texts() if t.angle]
+    assert any(t.angle == 180.0 for t in turned) and any(t.angle % 90.0 for t in turned)
+    doc = _read(to_dxf(sheet))
+    rotations = Counter(round(e.dxf.rotation % 360.0, 6) for e in doc.modelspace().query("TEXT"))
+    for t in turned:
+        assert rotations[round(t.angle % 360.0, 6)] >= 1
+    # the runs of the designation read right to left on the paper (turned 180°)
+    des = next(t for t in turned if t.angle == 180.0)
+    xs = [
+        e.dxf.insert.x
+        for e in doc.modelspace().query("TEXT")
+        if round(e.dxf.rotation % 360.0) == 180 and e.dxf.text in {r.text for r in des.runs}
+    ]
+    assert xs and max(xs) <= des.at[0] + 1e-6

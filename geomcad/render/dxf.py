@@ -51,7 +51,7 @@ from geomcad.render.svg import main_line as svg_main_line
 from geomcad.render.svg import monochrome
 from geomcad.sheet.model import XY, ArcItem, CircleItem, Dash, Item, Polyline, Sheet, TextItem
 from geomcad.sheet.style import DASHDOT, DASHED, STYLES, TWODOT, LineType, Style, style
-from geomcad.sheet.text import FONT_FAMILY, FONT_FILE, SUB_DROP, SUP_RISE, metrics, run_size
+from geomcad.sheet.text import FONT_FAMILY, FONT_FILE, placed_runs
 
 #: The DXF version written: R2010 (AutoCAD 2010 and later, КОМПАС-3D, LibreCAD, QCAD read it).
 DXF_VERSION = "R2010"
@@ -311,18 +311,16 @@ class _Writer:
         """One TEXT per run, at the x and baseline the SVG sets it."""
         aci, true_colour = _colour(_fill_colour(st))
         layer_aci, layer_true = _colour(st.stroke if st.weight > 0.0 else _fill_colour(st))
-        m = metrics()
-        x, base = t.at
-        for run in t.runs:
-            if not run.text:
-                continue
-            size = run_size(t.font_size, run.shift)
-            y = base
-            if run.shift == "sub":
-                y += SUB_DROP * t.font_size
-            elif run.shift == "sup":
-                y -= SUP_RISE * t.font_size
+        # a turned text (графа 26, a dimension along its line): each run's start turned about
+        # the text's start, counter-clockwise on the paper, and the TEXT turned alike
+        a = math.radians(t.angle)
+        cos, sin = math.cos(a), math.sin(a)
+        for run, x, y, size in placed_runs(t):
             attrs: dict[str, object] = {"layer": t.role, "style": TEXT_STYLE}
+            if t.angle:
+                dx, dy = x - t.at[0], y - t.at[1]
+                x, y = t.at[0] + dx * cos + dy * sin, t.at[1] - dx * sin + dy * cos
+                attrs["rotation"] = t.angle % 360.0
             if (aci, true_colour) != (layer_aci, layer_true):
                 attrs["color"] = aci
                 if true_colour is not None:
@@ -331,7 +329,6 @@ class _Writer:
                 _escape(run.text), height=t.height * size / t.font_size, dxfattribs=attrs
             )
             entity.set_placement(self.p((x, y)), align=TextEntityAlignment.LEFT)
-            x += m.advance(run.text, size)
 
 
 def _escape(text: str) -> str:

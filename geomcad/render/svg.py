@@ -27,7 +27,7 @@ import svgwrite
 
 from geomcad.sheet.model import XY, ArcItem, CircleItem, Dash, Item, Polyline, Sheet, TextItem
 from geomcad.sheet.style import MAIN_LINE, STYLES, Style, style
-from geomcad.sheet.text import FONT_FAMILY, SUB_DROP, SUP_RISE, metrics, run_size
+from geomcad.sheet.text import FONT_FAMILY, placed_runs
 
 #: Main line S (mm) for a sheet whose format is not in MAIN_LINE (GOST 2.303: 0.7 on A3/A4).
 DEFAULT_MAIN_LINE = 0.7
@@ -156,19 +156,8 @@ def _text(dwg: svgwrite.Drawing, t: TextItem, st: Style, ids: _Ids) -> svgwrite.
         # SVG turns clockwise on the paper (y down); the model's angle is counter-clockwise.
         attrs["transform"] = f"rotate({num(-t.angle)} {num(t.at[0])} {num(t.at[1])})"
     el = dwg.text("", x=[num(t.at[0])], y=[num(t.at[1])], **attrs)
-    m = metrics()
-    x, base = t.at
-    for run in t.runs:
-        if not run.text:
-            continue
-        size = run_size(t.font_size, run.shift)
-        y = base
-        if run.shift == "sub":
-            y += SUB_DROP * t.font_size
-        elif run.shift == "sup":
-            y -= SUP_RISE * t.font_size
+    for run, x, y, size in placed_runs(t):
         el.add(dwg.tspan(run.text, x=[num(x)], y=[num(y)], **{"font-size": num(size)}))
-        x += m.advance(run.text, size)
     return el
 
 

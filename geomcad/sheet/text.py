@@ -12,12 +12,13 @@ underscore. A character the font lacks is an error at drawing time, never an emp
 
 from __future__ import annotations
 
+from collections.abc import Iterator
 from dataclasses import dataclass
 from functools import cache
 from importlib import resources
 from pathlib import Path
 
-from geomcad.sheet.model import Run, Shift
+from geomcad.sheet.model import Run, Shift, TextItem
 
 FONT_FAMILY = "osifont"
 FONT_FILE = "osifont.ttf"
@@ -157,3 +158,22 @@ def box(runs: tuple[Run, ...], cap_height: float) -> tuple[float, float, float]:
         elif r.shift == "sup":
             up = max(up, SUP_RISE * fs + cap_height * SUB_SCALE)
     return w, up, down
+
+
+def placed_runs(t: TextItem) -> Iterator[tuple[Run, float, float, float]]:
+    """Each non-empty run of a text with the start of its baseline (x, y) on the paper, before
+    the text is turned by its ``angle`` about ``t.at``, and its font size: the one layout every
+    backend sets (subscripts dropped, superscripts raised, runs one after another)."""
+    m = metrics()
+    x, base = t.at
+    for run in t.runs:
+        if not run.text:
+            continue
+        size = run_size(t.font_size, run.shift)
+        y = base
+        if run.shift == "sub":
+            y += SUB_DROP * t.font_size
+        elif run.shift == "sup":
+            y -= SUP_RISE * t.font_size
+        yield run, x, y, size
+        x += m.advance(run.text, size)
