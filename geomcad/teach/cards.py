@@ -21,7 +21,6 @@ from typing import TYPE_CHECKING, Any
 from geomcad.sheet import Scale, ScaleStyle, Sheet, TitleBlock, gost_scale_to_fit, start
 from geomcad.sheet.drawing import Drawing
 from geomcad.sheet.frame import Lang, fill_title_blocks
-from geomcad.sheet.model import Polyline
 from geomcad.sheet.text import box, parse
 from geomcad.teach import keys
 
@@ -131,27 +130,12 @@ def _table(
     d: Drawing, x: float, y: float, widths: Sequence[float], rows: Sequence[Sequence[str]]
 ) -> float:
     """A ruled table of plain text (cut to fit its cells); returns the y below it."""
-    s = d.sheet
-    total_w = sum(widths)
-    total_h = ROW_H * len(rows)
-    s.add(Polyline(((x, y), (x + total_w, y), (x + total_w, y + total_h), (x, y + total_h)),
-                   "frame_thin", closed=True))  # fmt: skip
-    for i in range(1, len(rows)):
-        yy = y + i * ROW_H
-        s.add(Polyline(((x, yy), (x + total_w, yy)), "frame" if i == 1 else "frame_thin"))
-    xx = x
-    for w in widths[:-1]:
-        xx += w
-        s.add(Polyline(((xx, y), (xx, y + total_h)), "frame_thin"))
-    for i, row in enumerate(rows):
-        xx = x
-        for w, cell in zip(widths, row, strict=True):
-            if cell:
-                text = _esc(_fit(cell, w - 2.0))
-                d.text(text, (xx + 1.0, y + i * ROW_H + ROW_H / 2 + TEXT_H / 2), TEXT_H, "left",
-                       "title")  # fmt: skip
-            xx += w
-    return y + total_h
+    cut = [
+        [_esc(_fit(cell, w - 2.0)) if cell else "" for w, cell in zip(widths, row, strict=True)]
+        for row in rows
+    ]
+    _, height = d.table(x, y, widths, cut, TEXT_H, ROW_H)
+    return y + height
 
 
 def _col_widths(rows: Sequence[Sequence[str]], room: float, flex: int) -> list[float]:
