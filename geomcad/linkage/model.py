@@ -288,6 +288,11 @@ class Linkage:
 _LISTED = ("group ", "point ", "load ")
 
 
+def _label(where: str, key: str) -> str:
+    """A key as messages name it: ``group 2: ends`` in a listed table, ``drive.omega`` else."""
+    return f"{where}: {key}" if where.startswith(_LISTED) else _join(where, key)
+
+
 def _suggest(key: str, known: Sequence[str]) -> str:
     close = difflib.get_close_matches(key, known, n=1)
     return f" (did you mean {close[0]!r}?)" if close else f" (known keys: {', '.join(known)})"
@@ -337,7 +342,7 @@ def _number(
     le: float | None = None,
     unit: str = "",
 ) -> float:
-    name = f"{where}: {key}" if where.startswith(_LISTED) else _join(where, key)
+    name = _label(where, key)
     if key not in t:
         if default is None:
             raise FileKeyError(name, None, "missing (a number is required)")
@@ -361,7 +366,7 @@ def _number(
 
 
 def _name(where: str, t: Mapping[str, Any], key: str, *, default: str | None = None) -> str:
-    label = f"{where}: {key}" if where.startswith(_LISTED) else _join(where, key)
+    label = _label(where, key)
     if key not in t:
         if default is None:
             raise FileKeyError(label, None, "missing (a point's name is required)")
@@ -373,7 +378,7 @@ def _name(where: str, t: Mapping[str, Any], key: str, *, default: str | None = N
 
 
 def _word(where: str, t: Mapping[str, Any], key: str, choices: Sequence[str], default: str) -> str:
-    label = f"{where}: {key}" if where.startswith(_LISTED) else _join(where, key)
+    label = _label(where, key)
     v = t.get(key, default)
     if v not in choices:
         raise FileKeyError(
