@@ -25,9 +25,6 @@ from geomcad.linkage.kinetostatics import Forces, kinetostatics
 if TYPE_CHECKING:
     from geomcad.linkage.solution import Solved
 
-#: Positions numbered for the dynamics when the file lists ``phi`` instead of ``positions``.
-DYNAMICS_POSITIONS = 12
-
 
 @dataclass(frozen=True)
 class Analysis:
@@ -56,8 +53,7 @@ def analyse(s: Solved) -> Analysis:
         forces = tuple(kinetostatics(lk, P, s.cycle) for P in s.positions)
     fw = None
     if lk.dynamics is not None:
-        n = lk.positions if lk.positions is not None else DYNAMICS_POSITIONS
-        fw = dynamics(lk, s.cycle, n)
+        fw = dynamics(lk, s.cycle, lk.positions)  # N of the numbering: the file's, or 12
     a = Analysis(forces, fw)
     object.__setattr__(s, "_analysis", a)
     return a
