@@ -3,15 +3,15 @@
 The inner frame is a main line 20 mm from the left edge and 5 mm from the others. The title block
 is 185 × 55 mm in the bottom-right corner of the frame; its geometry below is in mm from its own
 lower-left corner, y up, exactly as GOST 2.104 draws it. Its captions come from a table per
-language (``CAPTIONS``), so an English sheet changes words, not code.
+language (``strings/<lang>/frame.toml``), so an English sheet changes words, not code.
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass, replace
-from typing import Literal
 
 from geomcad.errors import ParameterError
+from geomcad.sheet.lang import Lang, Words
 from geomcad.sheet.model import XY, Polyline, Sheet, TextItem
 from geomcad.sheet.text import HEIGHTS, box, metrics, parse
 from geomcad.sheet.titleblock import TitleData
@@ -33,51 +33,12 @@ TB_HEIGHT = 55.0
 G26_WIDTH = 70.0
 G26_HEIGHT = 14.0
 
-Lang = Literal["ru", "en"]
 
 #: GOST 2.304 allows 1.8 mm lettering (not recommended): the last resort for a narrow cell.
 SMALLEST_HEIGHT = 1.8
 
-CAPTIONS: dict[str, dict[str, str]] = {
-    "ru": {
-        "izm": "Изм.",
-        "list": "Лист",
-        "doc": "№ докум.",
-        "sign": "Подп.",
-        "date": "Дата",
-        "dev": "Разраб.",
-        "chk": "Пров.",
-        "tchk": "Т.контр.",
-        "nchk": "Н.контр.",
-        "appr": "Утв.",
-        "lit": "Лит.",
-        "mass": "Масса",
-        "scale": "Масштаб",
-        "sheet": "Лист",
-        "sheets": "Листов",
-        "copied": "Копировал",
-        "format": "Формат",
-    },
-    "en": {
-        "izm": "Rev.",
-        "list": "Sheet",
-        "doc": "Doc. No.",
-        "sign": "Sign.",
-        "date": "Date",
-        "dev": "Drawn",
-        "chk": "Checked",
-        "tchk": "Tech.",
-        "nchk": "Std.",
-        "appr": "Appr.",
-        "lit": "Stage",
-        "mass": "Mass",
-        "scale": "Scale",
-        "sheet": "Sheet",
-        "sheets": "Sheets",
-        "copied": "Copied",
-        "format": "Format",
-    },
-}
+#: The captions of the title block and the frame, per language.
+WORDS = Words(__package__, "frame")
 
 
 @dataclass(frozen=True)
@@ -227,7 +188,7 @@ def _text26(sheet: Sheet, x0: float, y0: float, designation: str) -> None:
 
 def _under_frame(sheet: Sheet, bx: float, by: float, fmt: str, lang: Lang) -> None:
     """The captions "Копировал" and "Формат A3" under the title block (графы 29, 30)."""
-    cap = CAPTIONS[lang]
+    cap = WORDS.table(lang)
     base = by + (MARGIN + 2.5) / 2.0
     text_at(sheet, cap["copied"], (bx + 75.0, base), 2.5)
     text_at(sheet, f"{cap['format']} {fmt}", (bx + 140.0, base), 2.5)
@@ -326,7 +287,7 @@ def _title_form(sheet: Sheet, bx: float, by: float, lang: Lang) -> None:
     """Draw form 1's lines and captions with its lower-left corner at sheet point (bx, by)."""
     b = _Block(sheet, bx, by)
     pt, seg, cell = b.pt, b.seg, b.cell
-    cap = CAPTIONS[lang]
+    cap = WORDS.table(lang)
     # outline and the main dividers (thick)
     sheet.add(Polyline((pt(0, 0), pt(185, 0), pt(185, 55), pt(0, 55)), "frame", closed=True))
     for x in (17, 40, 55, 65):
@@ -367,7 +328,7 @@ def _title_form(sheet: Sheet, bx: float, by: float, lang: Lang) -> None:
 def _title_fill(sheet: Sheet, bx: float, by: float, tb: TitleBlock) -> None:
     """Fill form 1's cells (lower-left corner at sheet point (bx, by)) from ``tb``."""
     cell = _Block(sheet, bx, by).cell
-    cap = CAPTIONS[tb.lang]
+    cap = WORDS.table(tb.lang)
     small = 2.5
     people = (
         (tb.developer, "student"),

@@ -13,7 +13,7 @@ import re
 
 from geomcad.kinematics.plan import Plan
 from geomcad.sheet.drawing import Drawing, Viewport
-from geomcad.sheet.frame import Lang
+from geomcad.sheet.lang import Lang
 from geomcad.sheet.scale import PLAN_NICE, Scale, ScaleStyle, nice_factor
 
 #: Points closer than this on the paper (mm) share one label.

@@ -20,7 +20,8 @@ from typing import TYPE_CHECKING, Any
 
 from geomcad.sheet import Scale, ScaleStyle, Sheet, TitleBlock, gost_scale_to_fit, start
 from geomcad.sheet.drawing import Drawing
-from geomcad.sheet.frame import Lang, fill_title_blocks
+from geomcad.sheet.frame import fill_title_blocks
+from geomcad.sheet.lang import Lang
 from geomcad.sheet.text import box, parse
 from geomcad.teach import keys
 
