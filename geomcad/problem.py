@@ -341,6 +341,10 @@ class Problem:
     #: The mechanism over one crank turn, ``motion(solution, frames)``, for ``geomcad animate``;
     #: ``None`` for a problem without a crank mechanism to animate.
     motion: Callable[[Solution, int], Frames] | None = None
+    #: The sheet's scale factors (``{"l": k_l, "v": k_v, ...}``, SI per mm), chosen by the sheet
+    #: layer from the solved model, for ``verify`` to turn a student's millimetres into values;
+    #: ``None`` when the build itself states them (``Build.scales``) or the sheet has none.
+    scales: Callable[[Solution], Mapping[str, float]] | None = None
 
     def param(self, name: str, value: object = "?") -> Param:
         """The declared parameter ``name``; an unknown name is a :class:`ParameterError` that
@@ -409,10 +413,18 @@ class Solution:
         self.params = params
         self.results = build.results
         self.construction = build.construction
-        self.scales = build.scales
+        self._scales: Mapping[str, float] | None = build.scales or None
         self.data = build.data
         self._notes = list(build.notes)
         self._main_svg: str | None = None
+
+    @property
+    def scales(self) -> Mapping[str, float]:
+        """The sheet's scale factors (see ``Problem.scales``), computed on first use."""
+        if self._scales is None:
+            hook = self.problem.scales
+            self._scales = dict(hook(self)) if hook is not None else {}
+        return self._scales
 
     @property
     def is_seed(self) -> bool:
