@@ -63,9 +63,9 @@ K = TypeVar("K", str, int)
 Num = float | Arr
 
 #: Positions per block. Smaller blocks keep the scratch rows in a smaller cache but pay numpy's
-#: per-call overhead more often: measured with ``python3 bench/bench_linkage.py --blocks``,
-#: 16384 is the fastest (8192 10–30 % slower, 2048 twice as slow, 32768 no faster up to 10^5
-#: positions and half as fast at 10^6).
+#: per-call overhead more often: measured with ``python3 bench/bench_linkage.py --blocks`` (CPU
+#: time, 2013-6's six-bar), 16384 is the fastest for N = 10^4 … 10^6 (8192 5–20 % slower, 2048
+#: 1.5 times slower, 32768 no faster).
 BLOCK = 16384
 
 #: Scratch rows a group may use at once.
