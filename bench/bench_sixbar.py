@@ -17,8 +17,9 @@ repeated until they add up to a second; the garbage collector is off during a ru
 Columns, all measured in the same run:
 
 - **geomcad**: ``SixBar.sweep(phi)``, the sweep API that the sheets and the tests use (DESIGN.md
-  rule 13: the benchmark measures the same code, no kernel of its own). Blocked numpy, closed-form
-  dyads, preallocated outputs.
+  rule 13: the benchmark measures the same code, no kernel of its own): the one sweep kernel of
+  every lever mechanism (``geomcad.kinematics.chain``; blocked numpy, closed-form groups, in-place
+  temporaries, one output allocation) on the six-bar's plan.
 - **loop**: a plain Python loop over the scalar construction, one crank angle at a time:
   ``geomcad.geom.circle_circle`` for B, ``line_circle`` for C, and the velocity plan's vector
   equations in ``Vec`` arithmetic. It is slow, so above N = 10^4 it is timed on 10^4 of the

@@ -1,7 +1,9 @@
 """Imports flow one way (DESIGN.md): a layer imports only the layers below it.
 
-    errors, tol, units ← geom ← construction ← kinematics / forces / dynamics / structure
+    errors, tol, units ← geom ← construction ← kinematics / forces / structure ← dynamics
         ← linkage ← sheet ← render ← (problem, registry, documents, verify, cli)
+
+(dynamics above kinematics: its velocity analogues come from the kinematics' sweep kernel)
 
 and the library never imports a problem module.
 """
@@ -22,13 +24,13 @@ LEVEL = {
     "construction": 2,
     "kinematics": 3,
     "forces": 3,
-    "dynamics": 3,
     "structure": 3,
-    "linkage": 4,
-    "sheet": 5,
-    "render": 6,
+    "dynamics": 4,
+    "linkage": 5,
+    "sheet": 6,
+    "render": 7,
 }
-TOP = 7  # problem, registry, draw, verify, cli, __init__, __main__
+TOP = 8  # problem, registry, draw, verify, cli, __init__, __main__
 DRAWING = ("svgwrite", "cairosvg", "cairocffi")
 
 

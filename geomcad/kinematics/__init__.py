@@ -1,4 +1,5 @@
-"""Kinematics: dyads over arrays of positions, the six-bar and its sweeps, velocity and
+"""Kinematics: the one sweep kernel of lever mechanisms (:mod:`geomcad.kinematics.chain`), the
+six-bar of 2013-6 as a definition on it, dyads over arrays of positions, velocity and
 acceleration analogues."""
 
 from geomcad.kinematics.dyads import (

@@ -12,7 +12,7 @@ import numpy as np
 import numpy.typing as npt
 
 from geomcad import tol
-from geomcad.errors import NoIntersection
+from geomcad.errors import NoIntersection, ParameterError
 
 Arr = npt.NDArray[np.float64]
 
@@ -163,21 +163,58 @@ def rrp_acceleration(
     return np.asarray(d * alpha[..., None], dtype=np.float64)
 
 
+def _one_link(p: Arr, vp: Arr, q: Arr, vq: Arr) -> tuple[Arr, Arr, Arr]:
+    """e = q − p, u = v_q − v_p and |e|², refusing where p and q cannot be two points of one
+    rigid link: where they coincide, or where their relative velocity has a component along pq
+    (a rigid link's V_QP is ⊥ PQ). A block sliding on the link is such a case: the point under
+    the block moves with the link, the block's joint does not, and the difference is the
+    relative velocity along the slide whose Coriolis term 2ω × V_rel no two-point formula sees.
+    """
+    e = np.asarray(q, dtype=np.float64) - np.asarray(p, dtype=np.float64)
+    u = np.asarray(vq, dtype=np.float64) - np.asarray(vp, dtype=np.float64)
+    e2 = dot(e, e)
+    if np.any(~(e2 > 0.0)):
+        i = int(np.argmax(~(e2 > 0.0))) if e2.ndim else 0
+        raise ParameterError(
+            f"q[{i}]" if e2.ndim else "q", "p", "the two points of a link must not coincide"
+        )
+    along = dot(e, u)
+    bad = ~(np.abs(along) <= tol.DERIVED * np.sqrt(e2 * dot(u, u)))
+    if np.any(bad):
+        i = int(np.argmax(bad)) if bad.ndim else 0
+        v = float(np.reshape(along / np.sqrt(e2), -1)[i])
+        raise ParameterError(
+            f"vq[{i}]" if bad.ndim else "vq",
+            v,
+            "q is no point of the link through p: its velocity relative to p has this component "
+            "along pq (m/s) (a slider on the link? its relative velocity and Coriolis term are "
+            "not this formula's: take ω and ε from the sweep, geomcad.kinematics.chain)",
+        )
+    return e, u, e2
+
+
 def angular_velocity(p: Arr, vp: Arr, q: Arr, vq: Arr) -> Arr:
     """The angular velocity (rad/s, counter-clockwise > 0) of the link through p and q.
 
     V_QP = V_Q − V_P ⊥ PQ and ω = V_QP / l_PQ, its sense that of V_QP turning about P:
-    ω = (q − p) × (v_q − v_p) / |q − p|².
+    ω = (q − p) × (v_q − v_p) / |q − p|². p and q must be two points of the link: where their
+    relative velocity is not ⊥ PQ (q the joint of a block sliding on the link, say) there is no
+    right answer and :class:`ParameterError` is raised.
     """
-    e = q - p
-    return np.asarray(cross(e, vq - vp) / dot(e, e), dtype=np.float64)
+    e, u, e2 = _one_link(p, vp, q, vq)
+    return np.asarray(cross(e, u) / e2, dtype=np.float64)
 
 
-def angular_acceleration(p: Arr, ap: Arr, q: Arr, aq: Arr) -> Arr:
+def angular_acceleration(p: Arr, vp: Arr, ap: Arr, q: Arr, vq: Arr, aq: Arr) -> Arr:
     """The angular acceleration (rad/s², counter-clockwise > 0) of the link through p and q.
 
     a_QP = a_Q − a_P = −ω² (q − p) + ε (q − p) turned 90°: only the tangential term has a
-    component across the link, so ε = (q − p) × (a_q − a_p) / |q − p|².
+    component across the link, so ε = (q − p) × (a_q − a_p) / |q − p|². The velocities show
+    whether p and q are two points of one link (V_QP ⊥ PQ): for q the joint of a block sliding
+    on the link, a_Q − a_P would hold the relative and Coriolis accelerations, and the formula
+    would give a wrong ε (19.985 instead of 12.299 rad/s² for a slotted lever with crank 0.1 m,
+    pivots 0.3 m apart, φ = 30°, ω1 = 10): :class:`ParameterError` is raised instead.
     """
-    e = q - p
-    return np.asarray(cross(e, aq - ap) / dot(e, e), dtype=np.float64)
+    e, _, e2 = _one_link(p, vp, q, vq)
+    da = np.asarray(aq, dtype=np.float64) - np.asarray(ap, dtype=np.float64)
+    return np.asarray(cross(e, da) / e2, dtype=np.float64)

@@ -1,21 +1,18 @@
 """The six-bar of problem 2013-6: crank-rocker O1ABO2 driving slider C through link BC.
 
-Positions, velocities and accelerations over whole arrays of crank angles (and over arrays of
-dimensions: many variants at once), and the check by analysis: the slider's actual stroke and
-coefficient of velocity change over a turn.
-
-The sweep (:meth:`SixBar.sweep`) is the one implementation of positions and velocities; the other
-methods read from it. It runs the dyads' closed forms on the x and y component arrays, in blocks
-of :data:`BLOCK` crank angles so that the temporaries stay in the cache, writing into
-preallocated outputs. With B on a fixed side of A → O2 and C on a fixed side of B's foot on the
-guide for the whole sweep, the mechanism never jumps to its other assembly mode.
+The six-bar is a short definition on the general sweep kernel (:mod:`geomcad.kinematics.chain`):
+the crank O1A, the RRR group A–B–O2 and the RRP group B–C on the slider's fixed guide. Every
+position, velocity, acceleration, ω and ε below is that kernel's, over whole arrays of crank
+angles (and over arrays of dimensions: many variants at once); the check by analysis measures the
+slider's actual stroke and coefficient of velocity change over a turn. With B on a fixed side of
+A → O2 and C on a fixed side of B's foot on the guide for the whole sweep, the mechanism never
+jumps to its other assembly mode.
 """
 
 from __future__ import annotations
 
 import dataclasses
 import math
-import threading
 from dataclasses import dataclass
 from functools import cached_property
 
@@ -24,34 +21,31 @@ import numpy.typing as npt
 from scipy.optimize import brentq
 
 from geomcad import tol
-from geomcad.errors import ConstructionError, DegenerateInput, NoIntersection, ParameterError
+from geomcad.errors import ConstructionError, DegenerateInput, ParameterError
 from geomcad.geom import Vec
-from geomcad.kinematics.dyads import (
-    Arr,
-    angular_acceleration,
-    angular_velocity,
-    cross,
-    perp,
-    rrp_acceleration,
-    rrr_acceleration,
-)
+from geomcad.kinematics.chain import BLOCK, RRP, RRR, Chain, Crank, FixedGuide, State, run
+from geomcad.kinematics.dyads import Arr, cross
+
+__all__ = [
+    "BLOCK",
+    "STEP_B",
+    "STEP_C",
+    "STEP_VB",
+    "STEP_VC",
+    "SixBar",
+    "SweepResult",
+    "branch_sign",
+    "grashof_crank_rocker",
+]
 
 #: Samples per turn for locating the slider's extreme positions before refining them.
 SWEEP_SAMPLES = 3600
-
-#: Crank angles per block of a sweep. Ten scratch arrays and fourteen output rows of a block are
-#: in use at once; at 16384 elements (128 KiB each) the scratch stays in a 1 MiB L2 cache.
-#: Measured with ``python3 bench/bench_sixbar.py --blocks``: 4096 is 15–20 % slower, 1024 twice
-#: as slow (numpy's per-call overhead), 32768 and 65536 no faster.
-BLOCK = 16384
 
 #: The steps a sweep can fail at (the names the recorded constructions use).
 STEP_B = "B = circle(A, l2) ∩ circle(O2, l3)"
 STEP_C = "C = circle(B, l4) ∩ slider path"
 STEP_VB = "velocity of B"
 STEP_VC = "velocity of C"
-STEP_AB = "acceleration of B"
-STEP_AC = "acceleration of C"
 
 #: A number, or an array of shape (N,) with one value per position of the sweep.
 Num = float | Arr
@@ -107,6 +101,29 @@ class _Dims:
     dy: Num
 
 
+def _chain(g: _Dims, branch_b: int, branch_c: int) -> Chain:
+    """The six-bar as the general kernel's plan: crank O1A (link 1), the RRR group A–B–O2
+    (links 2 = AB, 3 = O2B) and the RRP group B–C on the fixed guide (links 4 = BC, 5 = the
+    slider)."""
+    return Chain(
+        {"O1": (g.o1x, g.o1y), "O2": (g.o2x, g.o2y)},
+        Crank("O1", "A", g.l1),
+        (
+            RRR("B", ("A", "O2"), (g.l2, g.l3), branch_b, (2, 3), STEP_B, STEP_VB),
+            RRP(
+                "C",
+                "B",
+                g.l4,
+                branch_c,
+                (4, 5),
+                FixedGuide((g.qx, g.qy), (g.dx, g.dy)),
+                STEP_C,
+                STEP_VC,
+            ),
+        ),
+    )
+
+
 @dataclass(frozen=True)
 class SixBar:
     """Crank O1A (l1), coupler AB (l2), rocker O2B (l3), link BC (l4), slider C on a guide.
@@ -129,9 +146,9 @@ class SixBar:
     branch_C: int
 
     @cached_property
-    def _dims(self) -> _Dims:
-        """The mechanism's own dimensions, checked once (the unit guide direction)."""
-        return _dims(self)
+    def chain(self) -> Chain:
+        """The mechanism as the general kernel's plan, its dimensions checked once."""
+        return _chain(_dims(self), self.branch_B, self.branch_C)
 
     def sweep(
         self,
@@ -150,7 +167,7 @@ class SixBar:
     ) -> SweepResult:
         """Positions and velocities at crank angles ``phi`` (rad) and crank speed ``omega1``.
 
-        Each step is the dyad's closed form on whole arrays: A on the crank circle; B =
+        The general kernel on the six-bar's plan: A on the crank circle; B =
         circle(A, l2) ∩ circle(O2, l3) on ``branch_B``; C = circle(B, l4) ∩ the guide on
         ``branch_C``; V_A = ω1 × O1A; V_B from V_B = V_A + V_BA (⊥ AB) = V_BO2 (⊥ O2B); V_C
         from V_C = V_B + V_CB (⊥ CB), V_C ∥ the guide.
@@ -175,7 +192,19 @@ class SixBar:
         >>> m.sweep(0.0, l1=[0.1, 0.12, 0.14]).A[:, 0].round(12).tolist()  # three cranks at once
         [0.1, 0.12, 0.14]
         """
-        return _sweep(self, phi, omega1, block, True, O1, l1, l2, O2, l3, l4, guide_p, guide_d)
+        st = _sweep(self, phi, omega1, 1, block, 0.0, O1, l1, l2, O2, l3, l4, guide_p, guide_d)
+        p, v = st.pos, st.vel
+        return SweepResult(
+            st.phi, p["A"], p["B"], p["C"], v["A"], v["B"], v["C"], st.along["C"], st.v_rel["C"]
+        )
+
+    def state(
+        self, phi: npt.ArrayLike, omega1: float = 1.0, eps1: float = 0.0, order: int = 2
+    ) -> State:
+        """The general kernel's whole state at crank angles ``phi``: every joint's position,
+        velocity and acceleration, ω and ε of links 1–5, the slider's coordinate and relative
+        velocity (:class:`geomcad.kinematics.chain.State`)."""
+        return _sweep(self, phi, omega1, order, BLOCK, eps1)
 
     def positions(self, phi: npt.ArrayLike) -> tuple[Arr, Arr, Arr]:
         """A, B, C as ``(N, 2)`` arrays for crank angles ``phi`` (rad).
@@ -183,13 +212,13 @@ class SixBar:
         The positions part of :meth:`sweep`: a dead position (where the velocities are
         undefined) is no error here.
         """
-        r = _sweep(self, phi, 1.0, BLOCK, False)
-        return r.A, r.B, r.C
+        p = self.state(phi, order=0).pos
+        return p["A"], p["B"], p["C"]
 
     def velocities(self, phi: npt.ArrayLike, omega1: float = 1.0) -> tuple[Arr, Arr, Arr]:
         """V_A, V_B, V_C for crank angles ``phi`` at crank speed ``omega1`` (rad/s, ccw > 0)."""
-        r = self.sweep(phi, omega1)
-        return r.V_A, r.V_B, r.V_C
+        v = self.state(phi, omega1, order=1).vel
+        return v["A"], v["B"], v["C"]
 
     def accelerations(
         self, phi: npt.ArrayLike, omega1: float = 1.0, eps1: float = 0.0
@@ -198,54 +227,34 @@ class SixBar:
         acceleration ``eps1`` (rad/s², both ccw > 0).
 
         a_A = a^n_A (ω1²·l1 towards O1) + a^τ_A (ε1·l1, ⊥ O1A); a_B from a_B = a_A + a^n_BA +
-        a^τ_BA = a^n_BO2 + a^τ_BO2 (:func:`~geomcad.kinematics.dyads.rrr_acceleration`); a_C
-        from a_C = a_B + a^n_CB + a^τ_CB with a_C ∥ the guide
-        (:func:`~geomcad.kinematics.dyads.rrp_acceleration`). With ω1 = 1 and ε1 = 0 these are
-        the acceleration analogues. Dead positions raise :class:`NoIntersection` naming the step.
+        a^τ_BA = a^n_BO2 + a^τ_BO2; a_C from a_C = a_B + a^n_CB + a^τ_CB with a_C ∥ the guide.
+        With ω1 = 1 and ε1 = 0 these are the acceleration analogues. Dead positions raise
+        :class:`NoIntersection` naming the step.
         """
-        r = self.sweep(phi, omega1)
-        return self._accelerations(r, omega1, eps1)
-
-    def _accelerations(self, r: SweepResult, omega1: float, eps1: float) -> tuple[Arr, Arr, Arr]:
-        rel = r.A - self.O1.array()
-        a_a = -(omega1 * omega1) * rel + eps1 * perp(rel)
-        zero = np.zeros(2)
-        a_b = rrr_acceleration(r.A, r.V_A, a_a, self.O2.array(), zero, zero, r.B, r.V_B, STEP_AB)
-        a_c = rrp_acceleration(r.B, r.V_B, a_b, r.C, r.V_C, self._unit_guide(), STEP_AC)
-        return a_a, a_b, a_c
+        a = self.state(phi, omega1, eps1).acc
+        return a["A"], a["B"], a["C"]
 
     def omegas(self, phi: npt.ArrayLike, omega1: float = 1.0) -> tuple[Arr, Arr, Arr]:
         """Angular velocities (rad/s, ccw > 0) of the coupler AB (ω2), the rocker O2B (ω3) and
-        the link BC (ω4): ω = V_QP / l_PQ with the sense of V_QP about P."""
-        r = self.sweep(phi, omega1)
-        zero = np.zeros(2)
-        return (
-            angular_velocity(r.A, r.V_A, r.B, r.V_B),
-            angular_velocity(self.O2.array(), zero, r.B, r.V_B),
-            angular_velocity(r.B, r.V_B, r.C, r.V_C),
-        )
+        the link BC (ω4)."""
+        w = self.state(phi, omega1, order=1).omega
+        return w[2], w[3], w[4]
 
     def epsilons(
         self, phi: npt.ArrayLike, omega1: float = 1.0, eps1: float = 0.0
     ) -> tuple[Arr, Arr, Arr]:
         """Angular accelerations (rad/s², ccw > 0) of the coupler AB (ε2), the rocker O2B (ε3)
-        and the link BC (ε4): ε = a^τ_QP / l_PQ with the sense of a^τ_QP about P."""
-        r = self.sweep(phi, omega1)
-        a_a, a_b, a_c = self._accelerations(r, omega1, eps1)
-        zero = np.zeros(2)
-        return (
-            angular_acceleration(r.A, a_a, r.B, a_b),
-            angular_acceleration(self.O2.array(), zero, r.B, a_b),
-            angular_acceleration(r.B, a_b, r.C, a_c),
-        )
+        and the link BC (ε4)."""
+        e = self.state(phi, omega1, eps1).eps
+        return e[2], e[3], e[4]
 
     def slider_s(self, phi: npt.ArrayLike) -> Arr:
         """The slider's coordinate along its guide from ``guide_p`` (m)."""
-        return _sweep(self, phi, 1.0, BLOCK, False).s
+        return self.state(phi, order=0).along["C"]
 
     def slider_v(self, phi: npt.ArrayLike, omega1: float = 1.0) -> Arr:
         """The slider's velocity along its guide (m/s at ``omega1``; the analogue for ω1 = 1)."""
-        return self.sweep(phi, omega1).v
+        return self.state(phi, omega1, order=1).v_rel["C"]
 
     def slider_a(self, phi: npt.ArrayLike, omega1: float = 1.0, eps1: float = 0.0) -> Arr:
         """The slider's acceleration along its guide (m/s² at ``omega1`` and ``eps1``; with
@@ -292,7 +301,7 @@ def branch_sign(a: Vec, o2: Vec, b: Vec) -> int:
     return 1 if cross((o2 - a).array(), (b - a).array()) > 0.0 else -1
 
 
-# --- the sweep ---------------------------------------------------------------------------------
+# --- the dimensions of a sweep ---------------------------------------------------------------
 
 
 def _length(name: str, value: npt.ArrayLike) -> Num:
@@ -335,43 +344,6 @@ def _spread(values: dict[str, Num], n: int) -> dict[str, Num]:
     return out
 
 
-_local = threading.local()
-
-
-def _scratch(size: int) -> Arr:
-    """This thread's scratch buffer for a sweep's temporaries, kept between sweeps: a fresh one
-    each time would cost the page faults of a new allocation on every call."""
-    buf: Arr | None = getattr(_local, "scratch", None)
-    if buf is None or buf.size < size:
-        buf = np.empty(size)
-        _local.scratch = buf
-    return buf[:size]
-
-
-def _at(x: Num, sl: slice) -> Num:
-    return x if isinstance(x, float) else x[sl]
-
-
-def _any_below(x: Arr, limit: Num) -> bool:
-    """True when some element of x is ≤ limit or NaN (the test on which a step fails)."""
-    if isinstance(limit, float):
-        return not bool(x.min() > limit)
-    return bool(np.any(~(x > limit)))
-
-
-def _raise(step: str, bad: npt.NDArray[np.bool_], i0: int, phi: Arr, why: str) -> None:
-    """Raise NoIntersection naming ``step`` at the first position where ``bad`` holds."""
-    if not np.all(np.isfinite(phi)):
-        i = int(np.argmax(~np.isfinite(phi)))
-        raise ParameterError(f"phi[{i0 + i}]", float(phi[i]), "a crank angle must be finite")
-    if np.any(bad):
-        i = int(np.argmax(bad))
-        raise NoIntersection(
-            step,
-            f"{why} (first at position index {i0 + i}, φ = {math.degrees(phi[i]):.6g}°)",
-        )
-
-
 def _dims(
     m: SixBar,
     O1: npt.ArrayLike | None = None,
@@ -410,8 +382,9 @@ def _sweep(
     m: SixBar,
     phi: npt.ArrayLike,
     omega1: npt.ArrayLike,
+    order: int,
     block: int,
-    with_velocities: bool,
+    eps1: float,
     O1: npt.ArrayLike | None = None,
     l1: npt.ArrayLike | None = None,
     l2: npt.ArrayLike | None = None,
@@ -420,9 +393,7 @@ def _sweep(
     l4: npt.ArrayLike | None = None,
     guide_p: npt.ArrayLike | None = None,
     guide_d: npt.ArrayLike | None = None,
-) -> SweepResult:
-    if block < 1:
-        raise ParameterError("block", block, "must be ≥ 1")
+) -> State:
     ph = np.asarray(phi, dtype=np.float64)
     w = _num(omega1)
     if not np.all(np.isfinite(w)):
@@ -430,17 +401,8 @@ def _sweep(
     if ph.ndim > 1:
         raise ParameterError("phi", ph.shape, "must be a number or an array of shape (N,)")
     if all(x is None for x in (O1, l1, l2, O2, l3, l4, guide_p, guide_d)) and isinstance(w, float):
-        # one mechanism: its dimensions were checked once
-        g = m._dims
-        return _kernel(
-            np.ascontiguousarray(np.atleast_1d(ph)),
-            g,
-            w * float(g.l1),
-            m.branch_B,
-            m.branch_C,
-            block,
-            with_velocities,
-        )
+        # one mechanism: its plan was made and checked once
+        return run(m.chain, ph, order, block, w, eps1)
     g = _dims(m, O1, l1, l2, O2, l3, l4, guide_p, guide_d)
     if np.ndim(w) > 1:
         raise ParameterError("omega1", np.shape(w), "must be a number or an array of shape (N,)")
@@ -452,195 +414,7 @@ def _sweep(
         raise ParameterError(
             "sweep", [s for s in shapes if s], "arrays of different lengths do not broadcast"
         ) from None
-    spread = _spread({**fields, "phi": ph, "wl1": _num(w * g.l1)}, n)
-    wl1 = spread.pop("wl1")
+    spread = _spread({**fields, "phi": ph, "omega1": w}, n)
+    w = spread.pop("omega1")
     phis = np.asarray(spread.pop("phi"))
-    return _kernel(
-        phis,
-        _Dims(**spread),
-        wl1,
-        m.branch_B,
-        m.branch_C,
-        block,
-        with_velocities,
-    )
-
-
-def _kernel(
-    phi: Arr, g: _Dims, wl1_all: Num, br_b: int, br_c: int, block: int, with_velocities: bool
-) -> SweepResult:
-    """The closed forms of the dyads, block by block, on component arrays.
-
-    RRR (B): with dv = O2 − A and d² = |dv|², the foot of B on AO2 is at k1 = a/d =
-    1/2 + (l2² − l3²)/(2d²) of dv and B's height above it is k2 = h/d = ±√(l2²/d² − k1²) of
-    dv turned 90°; so B − A = k1·dv + k2·dv⊥, B − O2 = (B − A) − dv, and the determinant of
-    the velocity plan, (B − A) × (B − O2) = k2·d², vanishes exactly at the dead position.
-    V_B solves (B − A)·V_B = (B − A)·V_A and (B − O2)·V_B = 0: V_B = g·(B − O2)⊥⁻ with
-    g = (B − A)·V_A / det.
-
-    RRP (C): with w = B − q, t0 = w·d its foot on the guide and hh = d × w its height above it,
-    s = t0 ± √(l4² − hh²) and C = q + s·d; since (C − B)·d = ±√(l4² − hh²), projecting
-    V_C = V_B + V_CB (⊥ CB) on CB gives v = d·V_B − hh·(d⊥·V_B) / (±√(l4² − hh²)).
-    """
-    n = phi.shape[0]
-    # one allocation for every output: x and y rows of A, B, C (and V_A, V_B, V_C), s (and v)
-    out = np.empty((14 if with_velocities else 7, n))
-    pos = out[0:6].reshape(3, 2, n)
-    vel = out[6:12].reshape(3, 2, n) if with_velocities else out[0:0].reshape(3, 2, 0)
-    s_out = out[12] if with_velocities else out[6]
-    v_out = out[13] if with_velocities else out[0:0].reshape(0)
-    half_diff = 0.5 * (g.l2 * g.l2 - g.l3 * g.l3)
-    l2sq = g.l2 * g.l2
-    l4sq = g.l4 * g.l4
-    # the tolerances of geomcad.geom's circle_circle / line_circle tangency, and of a dead
-    # position (sin of the angle between the links), per position when the lengths vary
-    touch_b = -tol.TANGENT * np.maximum(g.l2, g.l3) ** 2
-    touch_c = -tol.TANGENT * l4sq
-    dead_b = tol.ANGLE * g.l2 * g.l3
-    dead_c = (tol.ANGLE * g.l4) ** 2
-    b = min(block, max(n, 1))
-    tmp = _scratch(10 * b).reshape(10, b)
-    for i0 in range(0, n, b):
-        i1 = min(i0 + b, n)
-        sl = slice(i0, i1)
-        k = i1 - i0
-        t1, t2, dvx, dvy, d2, k1, k2, wx, wy, hh = (tmp[j, :k] for j in range(10))
-        ph = phi[sl]
-        ax, ay = pos[0, 0, sl], pos[0, 1, sl]
-        bx, by = pos[1, 0, sl], pos[1, 1, sl]
-        cx, cy = pos[2, 0, sl], pos[2, 1, sl]
-        s = s_out[sl]
-        l1, l2sq_, half_ = _at(g.l1, sl), _at(l2sq, sl), _at(half_diff, sl)
-        dx, dy, qx, qy = _at(g.dx, sl), _at(g.dy, sl), _at(g.qx, sl), _at(g.qy, sl)
-
-        # A = O1 + l1·(cos φ, sin φ)
-        np.cos(ph, out=t1)
-        np.sin(ph, out=t2)
-        np.multiply(t1, l1, out=ax)
-        ax += _at(g.o1x, sl)
-        np.multiply(t2, l1, out=ay)
-        ay += _at(g.o1y, sl)
-        if with_velocities:
-            # V_A = ω1 × O1A = ω1·l1·(−sin φ, cos φ)
-            wl1 = _at(wl1_all, sl)
-            np.multiply(t2, -wl1, out=vel[0, 0, sl])
-            np.multiply(t1, wl1, out=vel[0, 1, sl])
-
-        # B = circle(A, l2) ∩ circle(O2, l3)
-        np.subtract(_at(g.o2x, sl), ax, out=dvx)
-        np.subtract(_at(g.o2y, sl), ay, out=dvy)
-        np.multiply(dvx, dvx, out=d2)
-        np.multiply(dvy, dvy, out=t1)
-        d2 += t1
-        np.divide(1.0, d2, out=t2)
-        np.multiply(t2, half_, out=k1)
-        k1 += 0.5
-        np.multiply(t2, l2sq_, out=k2)
-        np.multiply(k1, k1, out=t1)
-        k2 -= t1  # (h/d)²
-        if _any_below(k2, 0.0):
-            np.multiply(k2, d2, out=t1)  # h²
-            _raise(
-                STEP_B,
-                ~(t1 >= _at(touch_b, sl)),
-                i0,
-                ph,
-                "the dyad cannot close: the circles do not meet",
-            )
-            np.maximum(k2, 0.0, out=k2)
-        np.sqrt(k2, out=k2)
-        if with_velocities:
-            np.multiply(k2, d2, out=d2)  # |det| = h·d = |AB × O2B|
-            if _any_below(d2, _at(dead_b, sl)):
-                _raise(
-                    STEP_VB,
-                    ~(d2 > _at(dead_b, sl)),
-                    i0,
-                    ph,
-                    "the dyad is in a dead position (links AB and O2B collinear)",
-                )
-            if br_b < 0:
-                np.negative(d2, out=d2)
-        if br_b < 0:
-            np.negative(k2, out=k2)
-        np.multiply(dvx, k1, out=wx)
-        np.multiply(dvy, k2, out=t1)
-        wx -= t1  # (B − A)x
-        np.multiply(dvy, k1, out=wy)
-        np.multiply(dvx, k2, out=t1)
-        wy += t1  # (B − A)y
-        np.add(ax, wx, out=bx)
-        np.add(ay, wy, out=by)
-        if with_velocities:
-            vbx, vby = vel[1, 0, sl], vel[1, 1, sl]
-            np.multiply(wx, vel[0, 0, sl], out=t1)
-            np.multiply(wy, vel[0, 1, sl], out=t2)
-            t1 += t2
-            t1 /= d2  # g = (B − A)·V_A / det
-            np.subtract(wy, dvy, out=t2)  # (B − O2)y
-            np.multiply(t1, t2, out=vbx)
-            np.subtract(dvx, wx, out=t2)  # −(B − O2)x
-            np.multiply(t1, t2, out=vby)
-
-        # C = circle(B, l4) ∩ the guide q + s·d
-        np.subtract(bx, qx, out=wx)
-        np.subtract(by, qy, out=wy)
-        np.multiply(wx, dx, out=s)
-        np.multiply(wy, dy, out=t1)
-        s += t1  # t0, B's foot on the guide
-        np.multiply(wy, dx, out=hh)
-        np.multiply(wx, dy, out=t1)
-        hh -= t1  # d × (B − q)
-        np.multiply(hh, hh, out=t2)
-        np.subtract(_at(l4sq, sl), t2, out=t2)
-        if _any_below(t2, 0.0):
-            _raise(
-                STEP_C,
-                ~(t2 >= _at(touch_c, sl)),
-                i0,
-                ph,
-                "the dyad cannot close: the line misses the circle",
-            )
-            np.maximum(t2, 0.0, out=t2)
-        if with_velocities and _any_below(t2, _at(dead_c, sl)):
-            _raise(
-                STEP_VC,
-                ~(t2 > _at(dead_c, sl)),
-                i0,
-                ph,
-                "the rod BC is perpendicular to the guide",
-            )
-        np.sqrt(t2, out=t2)
-        if br_c < 0:
-            np.negative(t2, out=t2)
-        s += t2
-        np.multiply(s, dx, out=cx)
-        cx += qx
-        np.multiply(s, dy, out=cy)
-        cy += qy
-        if with_velocities:
-            vbx, vby = vel[1, 0, sl], vel[1, 1, sl]
-            v = v_out[sl]
-            np.multiply(vbx, dx, out=v)
-            np.multiply(vby, dy, out=t1)
-            v += t1  # d·V_B
-            np.multiply(vby, dx, out=k1)
-            np.multiply(vbx, dy, out=t1)
-            k1 -= t1  # d⊥·V_B
-            k1 *= hh
-            k1 /= t2
-            v -= k1
-            np.multiply(v, dx, out=vel[2, 0, sl])
-            np.multiply(v, dy, out=vel[2, 1, sl])
-
-    return SweepResult(
-        phi,
-        pos[0].T,
-        pos[1].T,
-        pos[2].T,
-        vel[0].T,
-        vel[1].T,
-        vel[2].T,
-        s_out,
-        v_out,
-    )
+    return run(_chain(_Dims(**spread), m.branch_B, m.branch_C), phis, order, block, w, eps1)
