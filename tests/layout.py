@@ -287,3 +287,41 @@ def _area(it: Item) -> shapely.Geometry:
 def labels(sheet: Sheet) -> set[str]:
     """The plain text of every placed label."""
     return {t.text for t in sheet.texts() if t.role == "label"}
+
+
+def label_measures(sheet: Sheet) -> dict[str, object]:
+    """The placed labels' figures (bench/bench_labels.py): how many there are, how many a drawn
+    line crosses, how many overlap another text, how many lie beyond :data:`ANCHOR_MAX` of their
+    point, and each one's distance to its point (mm)."""
+    _form, drawn = block_part(sheet)
+    texts = [t for t in drawn if isinstance(t, TextItem)]
+    lines = [it for it in drawn if not isinstance(it, TextItem)]
+    strokes = [stroke(it, sheet.format) for it in lines]
+    line_tree = STRtree(strokes)
+    polys = [text_poly(t) for t in texts]
+    text_tree = STRtree(polys)
+    crossed = overlapped = far = 0
+    dists: list[float] = []
+    for t, anchor in sheet.anchors:
+        p = text_poly(t)
+        q = p.buffer(-0.25)
+        if not q.is_empty and any(
+            strokes[j].intersection(q).area > AREA_EPS
+            for j in line_tree.query(q, predicate="intersects")
+        ):
+            crossed += 1
+        if any(
+            texts[j] is not t and polys[j].intersection(p).area > AREA_EPS
+            for j in text_tree.query(p, predicate="intersects")
+        ):
+            overlapped += 1
+        d = p.distance(Point(anchor))
+        dists.append(d)
+        far += d > ANCHOR_MAX
+    return {
+        "labels": len(sheet.anchors),
+        "label-line": crossed,
+        "label-label": overlapped,
+        "far": far,
+        "distances": dists,
+    }

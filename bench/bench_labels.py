@@ -1,0 +1,81 @@
+"""Measure label placement over every sheet (run on demand, not in CI).
+
+    python3 bench/bench_labels.py [--per-sheet] [ID ...]
+
+For every sheet of every problem (and of the example linkage files) the placed labels (the ones
+with an anchor) are measured through the layout checker's geometry (tests/layout.py): how many are
+crossed by a drawn line, how many overlap another text, and how far each is from the point it
+names (mean, 95th percentile, max, and how many are beyond ``layout.ANCHOR_MAX``). The time the
+sheets took to draw is printed too.
+"""
+
+from __future__ import annotations
+
+import argparse
+import statistics
+import sys
+import time
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+sys.path[:0] = [str(ROOT / "tests"), str(ROOT)]
+
+from tree import use_working_tree  # noqa: E402
+
+use_working_tree()
+
+import layout  # noqa: E402
+
+import geomcad  # noqa: E402
+from geomcad import documents, registry  # noqa: E402
+from geomcad.sheet.model import Sheet  # noqa: E402
+
+FILES = ("shaper", "four-bar", "sixbar-2013-6", "slider-crank")
+
+
+def _sheets(ids: list[str]) -> list[tuple[str, Sheet]]:
+    out = []
+    for pid in ids:
+        if pid in FILES:
+            sheets = documents.solve(str(ROOT / "examples" / f"{pid}.toml")).sheets()
+        else:
+            sheets = geomcad.solve(pid).sheets()
+        out += [(f"{pid} {name}".strip(), s) for name, s in sheets]
+    return out
+
+
+def main() -> None:
+    ap = argparse.ArgumentParser()
+    ap.add_argument("ids", nargs="*")
+    ap.add_argument("--per-sheet", action="store_true")
+    args = ap.parse_args()
+    ids = args.ids or [*registry.problem_ids(), *FILES]
+    t0 = time.perf_counter()
+    sheets = _sheets(ids)
+    took = time.perf_counter() - t0
+    tot = {"labels": 0, "label-line": 0, "label-label": 0, "far": 0}
+    dists: list[float] = []
+    for name, s in sheets:
+        m = layout.label_measures(s)
+        for k in tot:
+            tot[k] += int(m[k])
+        dists += m["distances"]  # type: ignore[arg-type]
+        if args.per_sheet:
+            d = m["distances"]
+            print(
+                f"{name:32s} labels {m['labels']:3d}  label-line {m['label-line']:3d}  "
+                f"label-label {m['label-label']:3d}  far {m['far']:3d}  "
+                f"max {max(d, default=0.0):5.1f} mm"
+            )
+    dists.sort()
+    p95 = dists[int(0.95 * (len(dists) - 1))] if dists else 0.0
+    print(
+        f"{len(sheets)} sheets, {tot['labels']} placed labels: label-line {tot['label-line']}, "
+        f"label-label {tot['label-label']}, beyond {layout.ANCHOR_MAX} mm {tot['far']}; "
+        f"distance to anchor mean {statistics.fmean(dists) if dists else 0.0:.2f} mm, "
+        f"p95 {p95:.2f}, max {dists[-1] if dists else 0.0:.2f}; drawn in {took:.1f} s"
+    )
+
+
+if __name__ == "__main__":
+    main()
