@@ -20,7 +20,14 @@ from geomcad import tol
 from geomcad.geom import Arc, Circle, Line, PointLike, vec
 from geomcad.sheet.frame import Frame, reserved, text_at
 from geomcad.sheet.model import XY, ArcItem, CircleItem, Polyline, Sheet, TextItem
-from geomcad.sheet.placer import DimText, LabelRequest, place_dims, place_labels, shrink_moved
+from geomcad.sheet.placer import (
+    DimText,
+    LabelRequest,
+    drop_crossed,
+    place_dims,
+    place_labels,
+    shrink_moved,
+)
 from geomcad.sheet.scale import Scale
 from geomcad.sheet.style import (
     arc_length,
@@ -64,6 +71,9 @@ class Drawing:
     #: Fixed texts moved off графа 26: :meth:`finish` sets them smaller if they then run into
     #: other text.
     moved: list[TextItem] = field(default_factory=list)
+    #: Fixed texts that may be left out (a diagram's tick values): :meth:`finish` drops each one
+    #: a line crosses.
+    optional: list[TextItem] = field(default_factory=list)
 
     def viewport(self, scale: Scale, origin: PointLike, at: XY) -> Viewport:
         """A viewport that puts model point ``origin`` at sheet point ``at``."""
@@ -175,10 +185,13 @@ class Drawing:
 
     # -- label placement -----------------------------------------------------------------------
     def finish(self) -> Sheet:
-        """Place every dimension's text and every pending label (:mod:`geomcad.sheet.placer`)
+        """Drop the optional texts a line crosses, place every dimension's text and every pending
+        label (:mod:`geomcad.sheet.placer`)
         and return the sheet."""
         shrink_moved(self.sheet, self.moved)
         self.moved.clear()
+        drop_crossed(self.sheet, self.optional)
+        self.optional.clear()
         place_dims(self.sheet, self.frame, self.dims)
         self.dims.clear()
         place_labels(self.sheet, self.frame, self.pending)

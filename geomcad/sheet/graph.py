@@ -142,7 +142,8 @@ class Graph:
         The values of the x axis are written under the plot's bottom edge and those of the y
         axis left of its left edge, so that no curve can cross them: where the zero axis runs
         inside the plot (values below or left of zero), the edge gets a thin line with the same
-        ticks, the zero axis keeps its ticks unlabelled.
+        ticks, the zero axis keeps its ticks unlabelled. A value that another line drawn on the
+        sheet crosses (a marker of a position) is left out when the sheet is finished.
         """
         x0, y0, x1, y1 = self.box
         ax, ay = self.at
@@ -166,15 +167,18 @@ class Graph:
             # a value that would run into the one before it is left out (its tick stays), and
             # so is zero (the origin, or the other axis runs through it)
             if tick_labels and v != self.x.zero and px - half >= right_of_last + TICK_GAP_MM:
-                self.d.text(text, (px, bottom + TICK_LEN + height + 0.8), height, anchor="centre")
+                at = (px, bottom + TICK_LEN + height + 0.8)
+                self.d.optional.append(self.d.text(text, at, height, anchor="centre"))
                 right_of_last = px + half
         for v in self.y.ticks():
             _, py = self.p(self.x.zero, v)
             for xx in (ax,) if left == ax else (ax, left):
                 s.add(Polyline(((xx - TICK_LEN, py), (xx, py)), "dimension"))
             if tick_labels and v != self.y.zero:
-                self.d.text(fmt_number(v, lang, 4), (left - TICK_LEN - 0.8, py + height / 2.0),
-                            height, anchor="right")  # fmt: skip
+                at = (left - TICK_LEN - 0.8, py + height / 2.0)
+                self.d.optional.append(
+                    self.d.text(fmt_number(v, lang, 4), at, height, anchor="right")
+                )
         # the symbols by the arrows' tips, placed clear of the curves drawn before the sheet is
         # finished
         self.d.label((x1 + ARROW_OVER, ay), f"{self.x.symbol}, {self.x.unit}", 3.5,

@@ -411,3 +411,19 @@ def shrink_moved(sheet: Sheet, moved: Sequence[TextItem]) -> None:
             w, _, _ = box(cur.runs, h)
             cur = dataclasses.replace(cur, height=h, font_size=metrics().font_size(h), width=w)
         items[i] = cur
+
+
+def drop_crossed(sheet: Sheet, texts: Sequence[TextItem]) -> None:
+    """Take off the sheet each of ``texts`` that a drawn line crosses (its box less a 0.25 mm
+    margin meets the line's ink)."""
+    if not texts:
+        return
+    lines = [it for it in sheet.items if not isinstance(it, TextItem)]
+    strokes = np.array([ink(it, sheet.format) for it in lines], dtype=object)
+    tree = STRtree(strokes)
+    inner = np.array([text_outline(t, -0.25) for t in texts], dtype=object)
+    hit = tree.query(inner, predicate="intersects")
+    area = shapely.area(shapely.intersection(inner[hit[0]], strokes[hit[1]]))
+    crossed = {id(texts[i]) for i in hit[0][area > AREA_EPS]}
+    if crossed:
+        sheet.items[:] = [it for it in sheet.items if id(it) not in crossed]
