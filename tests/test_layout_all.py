@@ -35,7 +35,7 @@ BASELINE: dict[tuple[str, str], dict[str, int]] = {
     # the T labels keep 6.5 mm off points crowded by four lines, M and 1 7 mm
     ("2013-1", ""): {"anchor": 5, "empty": 1},
     ("2013-2", ""): {"short-vector": 3},
-    ("2013-3", ""): {"anchor": 2, "empty": 1},
+    ("2013-3", ""): {"anchor": 1, "empty": 1},
     # text of the panel on its table's rules, and s = 18,1 on its dimension's extension line
     ("2013-4", ""): {"label-line": 4, "short-vector": 2},
     ("2013-5", ""): {"short-vector": 2},
@@ -46,7 +46,8 @@ BASELINE: dict[tuple[str, str], dict[str, int]] = {
     ("2013-8", ""): {"anchor": 1, "empty": 1},
     ("2013-9", ""): {},
     ("2013-9", "motion"): {"empty": 1},
-    ("kulisa-23110713", ""): {"anchor": 1},
+    # O on the yoke's bar that runs through the pivot; V_D = V_2 by its arrow on the bar
+    ("kulisa-23110713", ""): {"anchor": 2},
     ("kulisa-23110713", "graphs"): {"empty": 1},
     ("kulisa-23110713", "fbd"): {"anchor": 1, "empty": 1},
 }

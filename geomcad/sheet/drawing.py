@@ -22,6 +22,7 @@ from geomcad.sheet.frame import Frame, reserved, text_at
 from geomcad.sheet.model import XY, ArcItem, CircleItem, Polyline, Sheet, TextItem
 from geomcad.sheet.placer import (
     DimText,
+    Index,
     LabelRequest,
     drop_crossed,
     place_dims,
@@ -190,11 +191,12 @@ class Drawing:
         and return the sheet."""
         shrink_moved(self.sheet, self.moved)
         self.moved.clear()
-        drop_crossed(self.sheet, self.optional)
+        index = Index(self.sheet, self.frame)  # the lines drawn; texts join it as they are set
+        drop_crossed(self.sheet, index, self.optional)
         self.optional.clear()
-        place_dims(self.sheet, self.frame, self.dims)
+        place_dims(self.sheet, index, self.dims)
         self.dims.clear()
-        place_labels(self.sheet, self.frame, self.pending)
+        place_labels(self.sheet, index, self.pending)
         self.pending.clear()
         return self.sheet
 
