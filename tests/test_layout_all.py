@@ -1,16 +1,17 @@
 """Every sheet of every problem through the one layout checker (tests/layout.py, issue 14).
 
-``layout_problems`` must be empty on every sheet, at the seed's parameters and on variants of
+``layout_problems`` must be empty on every sheet (every problem's and the golden linkage
+files'), at the seed's parameters and on variants of
 them (hypothesis: one to three parameters moved by up to a quarter, a choice switched, a count
 changed by one or two). The drafting ``findings`` (labels crossed by lines, tick values crossed
 by curves, labels far from their points, vectors shorter than twice their head, an empty field)
 of the seed's sheets are held to the counts below, which may only fall: lower a count when a
 sheet is fixed; a variant's are shown when it fails.
 
-CI draws :data:`EXAMPLES` variants per problem (derandomized, a few seconds in all);
+CI draws four variants over the problems (derandomized, a few seconds);
 ``GEOMCAD_FUZZ_EXAMPLES=N`` draws N per problem and ``HYPOTHESIS_PROFILE=explore`` fresh ones, as
 for tests/test_fuzz.py (e.g. ``HYPOTHESIS_PROFILE=explore GEOMCAD_FUZZ_EXAMPLES=30 pytest
-tests/test_layout_all.py``).
+tests/test_layout_all.py -k variants``).
 """
 
 from __future__ import annotations
@@ -22,13 +23,17 @@ import pytest
 from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 from layout import KINDS, findings, layout_problems
+from test_golden import KEYS
+from test_golden import _sheets as golden_sheets
 
 import geomcad
 from geomcad import registry
 from geomcad.problem import Param
 
-#: Variants drawn per problem.
-EXAMPLES = int(os.environ.get("GEOMCAD_FUZZ_EXAMPLES", "1"))
+#: Variants drawn in all: a few over the problems in CI, GEOMCAD_FUZZ_EXAMPLES per problem on
+#: demand.
+PER_PROBLEM = int(os.environ.get("GEOMCAD_FUZZ_EXAMPLES", "0"))
+EXAMPLES = PER_PROBLEM * len(registry.problem_ids()) if PER_PROBLEM else 4
 
 #: (problem id, sheet name) → the most findings of each kind the sheet may still have.
 BASELINE: dict[tuple[str, str], dict[str, int]] = {
@@ -50,15 +55,17 @@ BASELINE: dict[tuple[str, str], dict[str, int]] = {
     ("kulisa-23110713", ""): {"anchor": 2},
     ("kulisa-23110713", "graphs"): {"empty": 1},
     ("kulisa-23110713", "fbd"): {"anchor": 1, "empty": 1},
+    # the golden linkage files (tests/test_golden.py): forces under two arrowheads long
+    ("linkage-shaper", ""): {"anchor": 2, "short-vector": 7, "empty": 1},
+    ("linkage-shaper", "forces"): {"anchor": 6, "short-vector": 22, "empty": 1},
+    ("linkage-shaper", "dynamics"): {"empty": 1},
+    ("linkage-four-bar", ""): {"short-vector": 2, "empty": 1},
 }
 
 
 def _all_sheets() -> list[tuple[str, str, object]]:
-    return [
-        (pid, name, sheet)
-        for pid in registry.problem_ids()
-        for name, sheet in geomcad.solve(pid).sheets()
-    ]
+    # drawn once per run for the golden files and here (test_golden keeps them)
+    return [(key, name, sheet) for key in KEYS for name, sheet in golden_sheets(key)]
 
 
 @pytest.fixture(scope="module")
@@ -108,23 +115,24 @@ def _variant(pid: str) -> st.SearchStrategy[dict[str, object]]:
     )
 
 
-@pytest.mark.parametrize("pid", registry.problem_ids())
-def test_variants_pass_the_checker(pid: str) -> None:
-    @settings(
-        max_examples=EXAMPLES,
-        deadline=None,
-        suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much],
+@settings(
+    max_examples=EXAMPLES,
+    deadline=None,
+    suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much],
+)
+@given(
+    case=st.sampled_from(registry.problem_ids()).flatmap(
+        lambda pid: st.tuples(st.just(pid), _variant(pid))
     )
-    @given(params=_variant(pid))
-    def run(params: dict[str, object]) -> None:
-        try:
-            sheets = geomcad.solve(pid, **params).sheets()
-        except geomcad.GeomcadError:
-            assume(False)  # a variant the problem refuses is no layout case
-            return
-        for name, sheet in sheets:
-            bad = layout_problems(sheet)
-            seen = collections.Counter(f.kind for f in findings(sheet))
-            assert not bad, f"{pid} {name!r} {params}: {bad}; findings {dict(seen)}"
-
-    run()
+)
+def test_variants_pass_the_checker(case: tuple[str, dict[str, object]]) -> None:
+    pid, params = case
+    try:
+        sheets = geomcad.solve(pid, **params).sheets()
+    except geomcad.GeomcadError:
+        assume(False)  # a variant the problem refuses is no layout case
+        return
+    for name, sheet in sheets:
+        bad = layout_problems(sheet)
+        seen = collections.Counter(f.kind for f in findings(sheet))
+        assert not bad, f"{pid} {name!r} {params}: {bad}; findings {dict(seen)}"
