@@ -1,21 +1,23 @@
 """The one label placer of every sheet: candidate positions scored against an index of the ink.
 
-When a sheet is finished (:meth:`geomcad.sheet.drawing.Drawing.finish`) every drawn stroke —
-polylines, circles, arcs, each buffered by half its line width, filled shapes as areas — goes
-into one shapely ``STRtree``, and every text already on the sheet into another. A label then
-tries positions around its anchor: the eight compass directions, the middles of the free sectors
-between the lines that leave the anchor (the normal of a line for a label on a line), and the
-caller's preferred direction, each at several gaps. Each position is scored by
+When a sheet is finished (:meth:`geomcad.sheet.drawing.Drawing.finish`) the centre line of every
+drawn item — polylines, circles, arcs; filled shapes as areas — goes into one shapely ``STRtree``
+(:class:`Index`), and every text already on the sheet into another. A label then tries positions
+around its anchor: the eight compass directions, the middles of the free sectors between the
+lines that leave the anchor (the normals of a line for a label on a line), and the caller's
+preferred direction, each at several gaps. Each position is scored by
 
-- the lines its box crosses (each one, and the ink's area inside the box), and the lines within
-  :data:`PAD` of it;
+- the lines that cross its box (grown by half a line's width), those through its middle, and
+  those within :data:`PAD` of it; the cheapest few positions also by the area of ink (each line
+  buffered by half its own width) inside the box, the measure the layout checker uses;
 - the texts it overlaps (all but forbidden);
 - its distance to the anchor, and whether another label's point lies nearer to it than its own;
 
 and the cheapest position inside the field (the frame less the title block and графа 26) wins.
 The labels with the fewest free positions are placed first, then each is placed again once with
 all the others in place. A dimension's text tries its own candidates (along its dimension line)
-against the same index.
+against the same index, and so do optional texts (a diagram's tick values), left out where a
+line crosses them.
 """
 
 from __future__ import annotations
@@ -54,12 +56,12 @@ HALF = 0.3
 #: overlapped.
 W_LINE = 15.0
 W_MIDDLE = 10.0
+W_NEAR = 2.0
+W_TEXT = 200.0
 #: The cheapest REFINE positions of a label also pay W_INK for each mm² of ink inside its box
 #: (less 0.25 mm all round); the others pay W_LINE more.
 REFINE = 24
 W_INK = 10.0
-W_NEAR = 2.0
-W_TEXT = 200.0
 #: A mm of distance to the anchor, and each mm beyond FAR_MM (or 3 mm beyond a label's clear
 #: radius, if that is more).
 W_DIST = 0.6
@@ -210,6 +212,7 @@ class Index:
         self.tree = STRtree(self.lines)
         self.texts: list[Polygon] = [text_outline(t) for t in sheet.texts()]
         self._text_tree: STRtree | None = None
+        self._text_arr = np.array([], dtype=object)
         self.frame = frame
         self.forms = reserved(sheet.width, sheet.height)
 
@@ -234,7 +237,8 @@ class Index:
 
     def _tt(self) -> STRtree:
         if self._text_tree is None:
-            self._text_tree = STRtree(np.array(self.texts, dtype=object))
+            self._text_arr = np.array(self.texts, dtype=object)
+            self._text_tree = STRtree(self._text_arr)
         return self._text_tree
 
     def text_cost(self, padded: npt.NDArray[np.object_]) -> npt.NDArray[np.float64]:
@@ -245,8 +249,7 @@ class Index:
         tt = self._tt().query(padded, predicate="intersects")
         if not tt.shape[1]:
             return np.zeros(n)
-        texts = np.array(self.texts, dtype=object)
-        area = shapely.area(shapely.intersection(padded[tt[0]], texts[tt[1]]))
+        area = shapely.area(shapely.intersection(padded[tt[0]], self._text_arr[tt[1]]))
         return W_TEXT * np.bincount(tt[0][area > AREA_EPS], minlength=n).astype(np.float64)
 
     def outside(self, cands: npt.NDArray[np.object_]) -> npt.NDArray[np.bool_]:
