@@ -1,6 +1,7 @@
 """Measure label placement over every sheet (run on demand, not in CI).
 
     python3 bench/bench_labels.py [--per-sheet] [ID ...]
+    python3 bench/bench_labels.py --baseline   # today's findings, as BASELINE lines
 
 For every sheet of every problem (and of the example linkage files) the placed labels (the ones
 with an anchor) are measured through the layout checker's geometry (tests/layout.py): how many are
@@ -12,6 +13,7 @@ many are beyond ``layout.ANCHOR_MAX``). The time the sheets took to draw is prin
 from __future__ import annotations
 
 import argparse
+import collections
 import statistics
 import sys
 import time
@@ -93,7 +95,18 @@ def main() -> None:
     ap = argparse.ArgumentParser()
     ap.add_argument("ids", nargs="*")
     ap.add_argument("--per-sheet", action="store_true")
+    ap.add_argument(
+        "--baseline",
+        action="store_true",
+        help="print each problem sheet's findings as tests/test_layout_all.py's BASELINE lines",
+    )
     args = ap.parse_args()
+    if args.baseline:
+        for pid in registry.problem_ids():
+            for name, s in geomcad.solve(pid).sheets():
+                count = collections.Counter(f.kind for f in layout.findings(s))
+                print(f"    ({pid!r}, {name!r}): {dict(sorted(count.items()))},".replace("'", '"'))
+        return
     ids = args.ids or [*registry.problem_ids(), *FILES]
     t0, c0 = time.perf_counter(), time.process_time()
     sheets = _sheets(ids)
