@@ -18,6 +18,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from geomcad.errors import GeomcadError, ParameterError
+from geomcad.sheet.lang import LANGS
 from geomcad.teach import MIN_TRANSMISSION_DEG, jobs
 
 if TYPE_CHECKING:
@@ -55,9 +56,7 @@ def add_variants(sub: Any, add_set: Callable[[argparse.ArgumentParser], None]) -
     s.add_argument("--key", metavar="NAMES", help="results in the answer key, e.g. l1,l2,r.*")
     s.add_argument("--course", default="TMM", help="the course, for the title blocks")
     s.add_argument("--teacher", default="", help="the teacher (Checked), for the title blocks")
-    s.add_argument(
-        "--lang", default="ru", choices=("ru", "en"), help="the cards' own words (default ru)"
-    )
+    s.add_argument("--lang", default="ru", choices=LANGS, help="the cards' language (default ru)")
     s.add_argument("--format", default="pdf", help="task cards: comma-separated svg,pdf,png")
     s.add_argument(
         "--jobs", type=int, default=1, metavar="N", help="worker processes (default 1; 0: per core)"
@@ -102,7 +101,10 @@ def render_card(
 
     sol = template.solve(values, file_id)
     data = template.variant_data(values) if template.is_file else None
-    sheet = cards.task_card(sol, number, width, columns, info, data, template.stem)
+    from geomcad.sheet.lang import language
+
+    with language(info.lang):
+        sheet = cards.task_card(sol, number, width, columns, info, data, template.stem)
     svg = to_svg(sheet)
     out: dict[str, bytes] = {}
     if "svg" in formats:
