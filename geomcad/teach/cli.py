@@ -177,7 +177,7 @@ def cmd_variants(ns: argparse.Namespace) -> int:
         rows = keys.rows([v.results for v in drawn.variants], columns, numbers)
         title = str(template.data.get("title", "")) if template.data else ""
         sheets = cards.answer_sheets(
-            title or problem.title, columns, units, rows, info, template.stem
+            title or cards._title(problem, info.lang), columns, units, rows, info, template.stem
         )
         answer_pdfs: list[bytes] = run(_sheet_pdf, [(sh,) for sh in sheets])
 
