@@ -50,7 +50,16 @@ from geomcad import tol
 from geomcad.render.svg import main_line as svg_main_line
 from geomcad.render.svg import monochrome
 from geomcad.sheet.model import XY, ArcItem, CircleItem, Dash, Item, Polyline, Sheet, TextItem
-from geomcad.sheet.style import DASHDOT, DASHED, STYLES, TWODOT, LineType, Style, style
+from geomcad.sheet.style import (
+    DASHDOT,
+    DASHED,
+    STYLES,
+    TWODOT,
+    LineType,
+    Style,
+    for_language,
+    style,
+)
 from geomcad.sheet.text import FONT_FAMILY, FONT_FILE, placed_runs
 
 #: The DXF version written: R2010 (AutoCAD 2010 and later, КОМПАС-3D, LibreCAD, QCAD read it).
@@ -217,7 +226,7 @@ class _Writer:
 
     def style(self, role: str) -> Style:
         """The role's style, in black unless the sheet is drawn in colour (as the SVG)."""
-        st = style(role)
+        st = for_language(style(role), self.sheet.lang)
         return st if self.colour else monochrome(st)
 
     def p(self, q: XY) -> tuple[float, float]:

@@ -132,7 +132,7 @@ def new_sheet(fmt: str, tb: TitleBlock, landscape: bool = True) -> tuple[Sheet, 
     :func:`reserved` boxes.
     """
     w, h = paper(fmt, landscape)
-    sheet = Sheet(w, h, fmt, tb.title)
+    sheet = Sheet(w, h, fmt, tb.title, lang=tb.lang)
     x0, y0, x1, y1 = LEFT_MARGIN, MARGIN, w - MARGIN, h - MARGIN
     sheet.add(Polyline(((x0, y0), (x1, y0), (x1, y1), (x0, y1)), "frame", closed=True))
     if tb.lang == "ru":

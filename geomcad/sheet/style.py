@@ -13,7 +13,7 @@ cross; SVG's ``stroke-dasharray`` alone does not do that, so :func:`fit_open` an
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Literal
 
 from geomcad.sheet.lang import Lang, current
@@ -77,6 +77,18 @@ def patterns(
     if (lang or current()) == "ru":
         return DASHED, DASHDOT, TWODOT
     return ISO_DASHED, ISO_DASHDOT, ISO_TWODOT
+
+
+#: ISO 128-20's narrow line is half the wide one (line group 0.7: 0.35 and 0.7 mm).
+ISO_NARROW = 1 / 2
+
+
+def for_language(st: Style, lang: str) -> Style:
+    """A role's style on a sheet drawn in ``lang``: an English sheet draws GOST's thin lines
+    (S/3) as ISO 128's narrow lines (S/2); a Russian one keeps them."""
+    if lang == "ru" or not 0.0 < st.weight < ISO_NARROW:
+        return st
+    return replace(st, weight=ISO_NARROW)
 
 
 def style(role: str) -> Style:
