@@ -244,15 +244,17 @@ def fit_text(
     role: str = "title",
     anchor: str = "centre",
     param: str = "title block",
+    max_lines: int = 0,
 ) -> list[TextItem]:
     """Text centred in a cell (x0, y0 top, x1, y1 bottom), shrunk to a smaller GOST height and
-    then broken into lines until it fits; else a :class:`ParameterError` naming ``param``."""
+    then broken into lines (at most ``max_lines``, when given) until it fits; else a
+    :class:`ParameterError` naming ``param``."""
     x0, y0, x1, y1 = cell
     room_w, room_h = x1 - x0 - 0.8, y1 - y0 - 1.0
     heights = [*(hh for hh in reversed(HEIGHTS) if hh <= height), SMALLEST_HEIGHT]
     words = markup.split(" ")
     for hh in heights:
-        for n_lines in range(1, len(words) + 1):
+        for n_lines in range(1, min(len(words), max_lines or len(words)) + 1):
             lines = _split(words, n_lines)
             lead = hh * 1.6
             total = hh + (n_lines - 1) * lead
@@ -391,20 +393,20 @@ def _title_fill(sheet: Sheet, bx: float, by: float, tb: TitleBlock) -> None:
 #: block's lower-left corner, y up. The caption sits small in the cell's top-left corner and the
 #: data in the room below it.
 ISO_FIELDS: tuple[tuple[str, float, float, float, float], ...] = (
-    ("iso_techref", 0, 36, 50, 45),
-    ("iso_creator", 50, 36, 95, 45),
-    ("iso_approver", 95, 36, 140, 45),
-    ("iso_type", 140, 36, 180, 45),
-    ("iso_owner", 0, 0, 50, 36),
-    ("iso_title", 50, 9, 140, 36),
-    ("iso_status", 140, 27, 180, 36),
-    ("iso_id", 140, 9, 180, 27),
-    ("iso_scale", 50, 0, 72, 9),
-    ("iso_format", 72, 0, 90, 9),
-    ("iso_rev", 90, 0, 104, 9),
-    ("iso_date", 104, 0, 140, 9),
-    ("iso_lang", 140, 0, 154, 9),
-    ("iso_sheet", 154, 0, 180, 9),
+    ("iso_techref", 0, 36, 45, 45),
+    ("iso_creator", 45, 36, 88, 45),
+    ("iso_approver", 88, 36, 130, 45),
+    ("iso_type", 130, 36, 180, 45),
+    ("iso_owner", 0, 0, 45, 36),
+    ("iso_title", 45, 9, 130, 36),
+    ("iso_status", 130, 27, 180, 36),
+    ("iso_id", 130, 9, 180, 27),
+    ("iso_scale", 45, 0, 65, 9),
+    ("iso_format", 65, 0, 80, 9),
+    ("iso_rev", 80, 0, 92, 9),
+    ("iso_date", 92, 0, 130, 9),
+    ("iso_lang", 130, 0, 145, 9),
+    ("iso_sheet", 145, 0, 180, 9),
 )
 #: The caption's height (mm) and the band it takes at the top of its cell.
 ISO_CAPTION = SMALLEST_HEIGHT
@@ -469,4 +471,6 @@ def _iso_fill(sheet: Sheet, bx: float, by: float, tb: TitleBlock) -> None:
             continue
         text, height, param = data[key]
         if text:
-            fit_text(sheet, text, room, height, param=param)
+            # one line for the identification number, as ISO 7200 writes it (16 characters)
+            lines = 1 if key == "iso_id" else 0
+            fit_text(sheet, text, room, height, param=param, max_lines=lines)
