@@ -459,7 +459,7 @@ def _iso_fill(sheet: Sheet, bx: float, by: float, tb: TitleBlock) -> None:
     for key, x_a, y_a, x_b, y_b in ISO_FIELDS:
         x0, top = b.pt(x_a, y_b)
         x1, bottom = b.pt(x_b, y_a)
-        room = (x0, top + ISO_BAND, x1, bottom)
+        room = (x0 + 0.6, top + ISO_BAND, x1 - 0.6, bottom)  # 1 mm clear of the borders
         if key == "iso_owner":
             given = [(text, param) for text, param in owner if text]
             if len(given) == 2:

@@ -53,7 +53,7 @@ def draw_plan(
 ) -> Viewport:
     """Draw ``plan`` at ``scale`` centred in the sheet rectangle ``box`` (x0, y0, x1, y1; the
     title goes on its top edge: ``title``, or the plan's kind with its factor) and return the
-    viewport (pole at the plan's origin). ``lang`` defaults to the language being drawn."""
+    viewport (pole at the plan's origin)."""
     x0, y0, x1, y1 = plan.extent()
     bx0, by0, bx1, by1 = box
     if title is None:
