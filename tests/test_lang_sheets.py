@@ -252,3 +252,13 @@ def test_lang_option_and_config(
     assert code == 0, err
     svg = (tmp_path / "ru" / "2013-4.svg").read_text()
     assert "Масштаб" in svg and "Identification number" not in svg
+    # a cam or gear file's own [sheet] table may set it too, and is checked when it is read
+    text = (ROOT / "examples" / "planetary.toml").read_text(encoding="utf-8")
+    (tmp_path / "p.toml").write_text(text + '\n[sheet]\nlang = "fr"\n', encoding="utf-8")
+    code, out, err = _run(capsys, "build", "p.toml", "--lang", "en", "--out", "p")
+    assert code == 2 and "sheet.lang" in err and err.count("\n") == 1
+    (tmp_path / "p.toml").write_text(text + '\n[sheet]\nlang = "en"\n', encoding="utf-8")
+    (tmp_path / "geomcad.toml").unlink()
+    code, out, err = _run(capsys, "build", "p.toml", "--format", "svg", "--out", "p")
+    assert code == 0, err
+    assert "Planetary gear train design" in (tmp_path / "p" / "p.svg").read_text()
