@@ -15,7 +15,7 @@ from typing import TYPE_CHECKING
 from geomcad.registry import title as problem_title
 from geomcad.sheet import Drawing, Sheet, TitleBlock, fmt_number, start
 from geomcad.sheet.frame import fill_title_blocks
-from geomcad.sheet.lang import Words
+from geomcad.sheet.lang import Words, current, language
 from geomcad.sheet.text import SUBSTITUTE, metrics
 
 if TYPE_CHECKING:
@@ -46,9 +46,15 @@ BOTTOM = 230.0
 
 def review_sheets(sol: Solution, title: TitleData | None = None) -> list[tuple[str, Sheet]]:
     """The review sheets of a solution: ``[("review", sheet), ("review-2", sheet) …]``, one
-    document with its own sheet numbers; none for a variant (no published solution to compare)."""
+    document with its own sheet numbers; none for a variant (no published solution to compare).
+    Drawn in ``title.lang`` when given, else in the language being drawn."""
     if not sol.is_seed or not sol.problem.seed:
         return []
+    with language((title.lang if title is not None else "") or current()):
+        return _review_sheets(sol, title)
+
+
+def _review_sheets(sol: Solution, title: TitleData | None) -> list[tuple[str, Sheet]]:
     units = {r.name: r.unit for r in sol.problem.results}
     rows = [
         [
