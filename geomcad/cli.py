@@ -298,10 +298,13 @@ _TITLE_OPTIONS = (
 )
 
 
+#: The sheets' languages (:data:`geomcad.sheet.lang.LANGS`, spelt out here so that the parser
+#: imports no drawing code; a test keeps the two equal).
+LANGS = ("ru", "en")
+
+
 def _add_lang(s: argparse.ArgumentParser, text: str) -> None:
     """``--lang``, as every command that draws takes it (``variants`` too)."""
-    from geomcad.sheet.lang import LANGS
-
     s.add_argument("--lang", choices=LANGS, default=None, help=text)
 
 

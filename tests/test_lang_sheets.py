@@ -212,6 +212,13 @@ def test_english_lines_are_iso_128() -> None:
     assert iso.array != gost.array
 
 
+def test_the_command_line_knows_every_language() -> None:
+    from geomcad import cli
+    from geomcad.sheet.lang import LANGS
+
+    assert cli.LANGS == LANGS
+
+
 def test_problem_titles_in_both_languages() -> None:
     for pid in registry.problem_ids():
         p = registry.get(pid)

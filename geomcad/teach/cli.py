@@ -18,7 +18,6 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from geomcad.errors import GeomcadError, ParameterError
-from geomcad.sheet.lang import LANGS
 from geomcad.teach import MIN_TRANSMISSION_DEG, jobs
 
 if TYPE_CHECKING:
@@ -29,6 +28,8 @@ CARD_FORMATS = ("svg", "pdf", "png")
 
 def add_variants(sub: Any, add_set: Callable[[argparse.ArgumentParser], None]) -> None:
     """Add ``variants`` to the command line's subparsers."""
+    from geomcad.cli import LANGS
+
     s = sub.add_parser(
         "variants",
         help="make N variants of a problem or file: variant files, task cards, answer key",
