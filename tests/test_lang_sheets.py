@@ -8,11 +8,13 @@ itself as the sheet modules are converted.
 
 from __future__ import annotations
 
+import io
 import json
 import re
 import xml.etree.ElementTree as ET
 from pathlib import Path
 
+import ezdxf
 import pytest
 from layout import layout_problems
 
@@ -20,6 +22,8 @@ import geomcad
 from geomcad import documents, registry
 from geomcad.cli import main
 from geomcad.render import to_svg
+from geomcad.render.dxf import ISO_LINETYPE_NAMES, lineweight, to_dxf
+from geomcad.render.svg import main_line
 from geomcad.sheet import TitleBlock, fmt_number
 from geomcad.sheet.frame import (
     ISO_FIELDS,
@@ -30,6 +34,7 @@ from geomcad.sheet.frame import (
     new_sheet,
 )
 from geomcad.sheet.lang import current, language
+from geomcad.sheet.model import Polyline
 from geomcad.sheet.scale import Scale, ScaleStyle
 from geomcad.sheet.style import ISO_DASHDOT, fit_open
 from geomcad.sheet.titleblock import TitleData
@@ -210,6 +215,20 @@ def test_english_lines_are_iso_128() -> None:
     assert iso.array[1:] == (space, dot, space)
     assert lo <= iso.array[0] <= hi and abs(iso.array[0] - target) < 0.2 * target
     assert iso.array != gost.array
+
+
+def test_english_dxf_has_iso_linetypes_and_narrow_lines() -> None:
+    """The DXF of an English sheet: ISO 128-20 linetypes, narrow lines at half the main line."""
+    with language("en"):
+        sheet, _ = new_sheet("A3", TitleBlock(title="T", designation="X"))
+        line = Polyline(((30.0, 30.0), (130.0, 30.0)), "centre", dash=fit_open("dashdot", 100.0))
+    sheet.add(line)
+    doc = ezdxf.read(io.StringIO(to_dxf(sheet).decode("utf-8")))
+    names = {lt.dxf.name for lt in doc.linetypes}
+    assert set(ISO_LINETYPE_NAMES.values()) <= names and "GOST_DASHDOT" not in names
+    centre = doc.layers.get("centre")
+    assert centre.dxf.linetype == "ISO128_04"
+    assert centre.dxf.lineweight == lineweight(main_line("A3") / 2.0)
 
 
 def test_the_command_line_knows_every_language() -> None:
