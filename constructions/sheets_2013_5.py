@@ -16,6 +16,7 @@ construction and the seed's errata.
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping
 from typing import TYPE_CHECKING, Any
 
 from geomcad.geom import Vec
@@ -33,26 +34,48 @@ from geomcad.sheet import (
 if TYPE_CHECKING:
     from geomcad.problem import Solution
 
+from geomcad.kinematics.trains import RayPlan
+from geomcad.sheet.scale import gost_length_scale, nice_factor
 from geomcad.sheet.text import box as text_box
 from geomcad.sheet.text import parse
 
-from .p2013_5 import (
-    BLOCK25,
-    FRAME,
-    GAP,
-    H1,
-    H2,
-    LEFT,
-    PANEL_X,
-    PLANET,
-    RAY_FIELD,
-    SCHEME_UNITS,
-    SUN,
-    TOP,
-)
+from .p2013_5 import BLOCK25, FRAME, H1, H2, PLANET, SUN
+
+#: The sheet's layout (mm): the scheme's left edge and top, the gap between the scheme and the
+#: plan, the tables' left edge; the scheme's greatest height; its width in units u = (radii
+#: spanned)/SCHEME_UNITS; the angle diagram's field (x from, x to) and greatest pole distance.
+LEFT, TOP, GAP, PANEL_X = 30.0, 38.0, 14.0, 262.0
+SCHEME_H = 140.0
+SCHEME_UNITS = 14.5
+SCHEME_W_U = 15.2
+RAY_FIELD = (40.0, 225.0)
+RAY_W = RAY_FIELD[1] - RAY_FIELD[0] - 8.0
+RAY_H = 40.0
 
 #: How the links are named on the sheet.
 LINK_LABEL = {SUN: "1", BLOCK25: "2–5", PLANET: "6", H1: "H_1–4", H2: "H_2–7", FRAME: "0"}
+
+
+def _factors(geo: Any) -> tuple[float, float, float]:
+    """k_l of the scheme (the largest GOST 2.302 scale at which its radii fit its height), k_v
+    of the plan (what the scheme and the gap leave before the tables), and μ_ω of the angle
+    diagram (its intercepts ω/μ_ω fit RAY_W, its pole distance stays below RAY_H)."""
+    y_lo, y_hi = geo.extent
+    height = y_hi - y_lo
+    k_l = gost_length_scale(height, SCHEME_H).k
+    v_ends = [e.x for e in geo.plan.ends.values()]
+    v_span = max(max(v_ends), 0.0) - min(min(v_ends), 0.0)
+    scheme_w = SCHEME_W_U * height / SCHEME_UNITS / k_l
+    k_v = nice_factor(v_span, PANEL_X - 12.0 - LEFT - GAP - scheme_w, "v").k
+    om = [abs(w) for w in geo.plan.omega.values()]
+    k_omega = max(nice_factor(max(om), RAY_W, "v").k, nice_factor(k_v / k_l, RAY_H, "v").k)
+    return k_l, k_v, k_omega
+
+
+def scales(sol: Solution) -> Mapping[str, float]:
+    """The sheet's factors: k_l of the scheme and k_v of the plan of linear velocities."""
+    k_l, k_v, _ = _factors(sol.data)
+    return {"l": k_l, "v": k_v}
 
 
 def sheets(sol: Solution) -> list[tuple[str, Sheet]]:
@@ -60,6 +83,7 @@ def sheets(sol: Solution) -> list[tuple[str, Sheet]]:
     geo = sol.data
     k = Scale(sol.scales["l"], "l")
     kv = Scale(sol.scales["v"], "v")
+    k_omega = _factors(geo)[2]
     tb = TitleBlock(
         title="Планетарный механизм: передаточное отношение u1H2",
         designation="ТММ.2013-5.01",
@@ -69,7 +93,7 @@ def sheets(sol: Solution) -> list[tuple[str, Sheet]]:
     d.text("Кинематическая схема и план линейных скоростей", (LEFT - 4.0, 13.0), 5.0)
     d.text(
         f"{k.label()} (M {k.ratio_text() or '—'});  {kv.label()};  "
-        f"μ_ω = {fmt_number(geo.k_omega)} (рад/с)/мм",
+        f"μ_ω = {fmt_number(k_omega)} (рад/с)/мм",
         (LEFT - 4.0, 20.0),
         3.5,
     )
@@ -82,8 +106,9 @@ def sheets(sol: Solution) -> list[tuple[str, Sheet]]:
     vp = d.viewport(k, (0.0, y_hi), (x_axis, TOP))
     d.text("План линейных скоростей", (right + GAP, TOP - 12.0), 3.5)
     _plan(v, vp, geo, kv, spots)
-    _rays(d, geo, k, kv, x_axis)
-    _panel(d, sol)
+    rays = _scaled_rays(geo, kv.k, k_omega)
+    _rays(d, geo, rays, k, kv, k_omega)
+    _panel(d, sol, rays)
     return [("", d.finish())]
 
 
@@ -273,10 +298,18 @@ def _plan(v_scheme: Viewport, vp: Viewport, geo: Any, kv: Scale, spots: dict[str
 # -- the angle diagram ---------------------------------------------------------------------------
 
 
-def _rays(d: Drawing, geo: Any, k: Scale, kv: Scale, x_axis: float) -> None:
+def _scaled_rays(geo: Any, k_v: float, k_omega: float) -> RayPlan:
+    """The recorded angle diagram enlarged about its pole S so that its pole distance is
+    k_v/k_ω (the rays keep their directions, so the intercepts read ω_i at μ_ω = k_ω)."""
+    rays = geo.rays
+    H = k_v / k_omega
+    f = H / rays.H
+    return RayPlan(rays.S, H, {k: rays.S + (e - rays.S) * f for k, e in rays.ends.items()})
+
+
+def _rays(d: Drawing, geo: Any, rays: RayPlan, k: Scale, kv: Scale, k_omega: float) -> None:
     """The angle diagram: from S, rays parallel to the links' lines; they cut the line H above S
     in segments ω_i/k_ω."""
-    rays = geo.rays
     k_l = k.k
     ends = {kk: _pv(geo, k_l, kv.k, e) for kk, e in rays.ends.items()}
     S = _pv(geo, k_l, kv.k, rays.S)
@@ -292,7 +325,7 @@ def _rays(d: Drawing, geo: Any, k: Scale, kv: Scale, x_axis: float) -> None:
     v = d.viewport(k, S, (x_s, top + h_mm))
     d.text(
         f"Угловые скорости (лучевая диаграмма): ω_i = μ_ω·(отрезок), μ_ω = μ_V/(H·μ_l) = "
-        f"{fmt_number(geo.k_omega)} (рад/с)/мм",
+        f"{fmt_number(k_omega)} (рад/с)/мм",
         (LEFT - 4.0, top - 20.0),
         3.5,
     )
@@ -337,7 +370,7 @@ def _rays(d: Drawing, geo: Any, k: Scale, kv: Scale, x_axis: float) -> None:
 # -- the tables ----------------------------------------------------------------------------------
 
 
-def _panel(d: Drawing, sol: Solution) -> None:
+def _panel(d: Drawing, sol: Solution, rays: RayPlan) -> None:
     p, r, geo = sol.params, sol.results, sol.data
     x, y = PANEL_X, 10.0
     d.text("Исходные данные", (x, y + 3.5), 3.5)
@@ -383,7 +416,7 @@ def _panel(d: Drawing, sol: Solution) -> None:
     rows = [["Звено", "уравнения зацеплений", "наклон (план)", "луч, мм"]]
     for link in (SUN, BLOCK25, PLANET, H1, H2):
         exact = geo.omega_exact[link]
-        ray_mm = (geo.rays.ends[link].x - geo.rays.S.x) / sol.scales["v"]
+        ray_mm = (rays.ends[link].x - rays.S.x) / sol.scales["v"]
         rows.append(
             [
                 LINK_LABEL[link],

@@ -12,16 +12,25 @@ solutions.
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from typing import TYPE_CHECKING, Any
 
+from geomcad.construction import Construction
 from geomcad.geom import Arc, Circle, Line, Vec, angle_arcs, circle_circle
 from geomcad.kinematics import branch_sign
 from geomcad.sheet import Drawing, Scale, Sheet, TitleBlock, Viewport, fmt_number, start
+from geomcad.sheet.scale import gost_scale_to_fit
+
+from .sheets_2013_6_kin import kinematics_sheet
+from .spec_2013_6 import SEED_K_L
 
 if TYPE_CHECKING:
     from geomcad.problem import Solution
 
-from .p2013_6 import VIEW
+    from .p2013_6 import Geometry
+
+#: The field the mechanism is drawn in on the sheet (mm: x0, y0, x1, y1), left of the tables.
+VIEW = (24.0, 24.0, 256.0, 290.0)
 
 #: The rocker's arc is drawn this far (rad) beyond B's swing.
 SWING_PAD = 0.25
@@ -29,7 +38,43 @@ SWING_PAD = 0.25
 PANEL_X = 262.0
 
 
+def extent(geo: Geometry, c: Construction) -> tuple[float, float, float, float]:
+    """The model box the sheet draws (x0, y0, x1, y1): the θ-circles, the mechanism and every
+    solution."""
+    l3, l4 = geo.l3, geo.l4
+    xs: list[float] = [-l3, l3]
+    ys: list[float] = [-0.05 * l3]
+    for circ in (c["Γ"], c["Γ′"]):
+        xs += [circ.c.x - circ.r, circ.c.x + circ.r]
+        ys += [circ.c.y - circ.r, circ.c.y + circ.r]
+    for q in [
+        *(c[n] for n in ("O2", "C0", "C1", "B0", "B1", "O")),
+        *(cd.O1 for cd in geo.candidates),
+    ]:
+        xs.append(q.x)
+        ys.append(q.y)
+    xs.append(c["C1"].x + 0.1 * l4)
+    return min(xs), min(ys), max(xs), max(ys)
+
+
+def scales(sol: Solution) -> Mapping[str, float]:
+    """k_l of the sheet: for the seed's data the seed's 0.005 m/mm (1:5), so that its drawing
+    and ours can be laid side by side; otherwise the largest GOST 2.302 scale at which the
+    drawing fits the field."""
+    x0, y0, x1, y1 = extent(sol.data, sol.construction)
+    w, h = x1 - x0, y1 - y0
+    room_w, room_h = VIEW[2] - VIEW[0], VIEW[3] - VIEW[1]
+    if sol.is_seed and w / SEED_K_L <= room_w and h / SEED_K_L <= room_h:
+        return {"l": SEED_K_L}
+    return {"l": gost_scale_to_fit(w, h, room_w, room_h).k}
+
+
 def sheets(sol: Solution) -> list[tuple[str, Sheet]]:
+    """The sheets of 2013-6: the synthesis, and the kinematic analysis of its six-bar."""
+    return [main_sheet(sol), kinematics_sheet(sol)]
+
+
+def main_sheet(sol: Solution) -> tuple[str, Sheet]:
     """The main sheet of 2013-6."""
     geo = sol.data
     c = sol.construction
@@ -40,7 +85,7 @@ def sheets(sol: Solution) -> list[tuple[str, Sheet]]:
         scale=k.ratio_text(),
     )
     d = start("A3", tb)
-    x0, y0, x1, y1 = geo.extent
+    x0, y0, x1, y1 = extent(geo, c)
     cx, cy = (x0 + x1) / 2.0, (y0 + y1) / 2.0
     at = ((VIEW[0] + VIEW[2]) / 2.0, (VIEW[1] + 8.0 + VIEW[3]) / 2.0)
     v = d.viewport(k, (cx, cy), at)
@@ -50,7 +95,7 @@ def sheets(sol: Solution) -> list[tuple[str, Sheet]]:
     _construction(v, geo, c)
     _mechanism(v, geo, c)
     _panel(d, sol, k)
-    return [("", d.finish())]
+    return ("", d.finish())
 
 
 def _construction(v: Viewport, geo: Any, c: Any) -> None:

@@ -16,13 +16,17 @@ import numpy as np
 
 from geomcad.sheet import Sheet, TitleBlock, Viewport, fmt_number, gost_scale_to_fit, start
 from geomcad.sheet.graph import Axis, Graph
+from geomcad.sheet.lang import Words
 from geomcad.sheet.model import Polyline
+from geomcad.sheet.motion import Frames, turn
 from geomcad.sheet.plans import draw_plan, plan_scale
 
 if TYPE_CHECKING:
     from geomcad.problem import Solution
 
     from .kin_2013_6 import Analysis
+
+WORDS = Words(__package__, "sheets_2013_6_kin")
 
 MECH_VIEW = (26.0, 30.0, 246.0, 196.0)
 VPLAN_VIEW = (256.0, 24.0, 416.0, 196.0)
@@ -161,3 +165,34 @@ def _panel(d: Any, an: Analysis, m: Any, kv: float, ka: float) -> None:
     y += 6.0 + h + 3.0
     d.text("ω, ε – против часовой стрелки > 0; V, a – в м/с, м/с²; ω – рад/с; ε – рад/с²",
            (x, y + 2.5), 2.5)  # fmt: skip
+
+
+def motion(sol: Solution, frames: int) -> Frames:
+    """The synthesized six-bar over one crank turn from the kinematics sheet's position (60°
+    past C's left extreme), at ω1 of the analysis: the joints, C on its guide, the paths of A, B
+    and C, and the velocity plan (pa, pb, pc)."""
+    from .p2013_6 import ANALYSIS_OMEGA1, ANALYSIS_TURN
+
+    geo = sol.data
+    mech = geo.mechanism
+    assert mech is not None, "build refuses a solution that is not a crank-rocker"
+    r = mech.sweep(turn(frames, geo.phi_min + ANALYSIS_TURN, ANALYSIS_OMEGA1), ANALYSIS_OMEGA1)
+    fixed = {"O1": mech.O1, "O2": mech.O2}
+    points = {k: np.tile([v.x, v.y], (frames, 1)) for k, v in fixed.items()}
+    points |= {"A": r.A, "B": r.B, "C": r.C}
+    cx = r.C[:, 0]
+    reach = 0.15 * float(cx.max() - cx.min()) + geo.l4 * 0.1
+    y = mech.guide_p.y
+    return Frames(
+        title=WORDS("motion_title", id=sol.problem.id),
+        phi=r.phi,
+        points=points,
+        links=(("O1", "A"), ("A", "B"), ("O2", "B"), ("B", "C")),
+        fixed=("O1", "O2"),
+        traced=("A", "B", "C"),
+        sliders={"C": (mech.guide_d.x, mech.guide_d.y)},
+        guides=(((float(cx.min()) - reach, y), (float(cx.max()) + reach, y)),),
+        velocities={"A": r.V_A, "B": r.V_B, "C": r.V_C},
+        plan_edges=(("A", "B"), ("B", "C")),
+        omega1=ANALYSIS_OMEGA1,
+    )

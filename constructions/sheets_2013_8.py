@@ -14,12 +14,19 @@ from typing import TYPE_CHECKING
 
 from geomcad.sheet import Drawing, Sheet, TitleBlock, fmt_number, start
 from geomcad.sheet.graph import Axis, Graph, nice_step
+from geomcad.sheet.lang import Words
 
-from .p2013_8 import F_ROOM_MM, Data
+from .p2013_8 import Data
 
 if TYPE_CHECKING:
+    from collections.abc import Mapping
+
     from geomcad.problem import Solution
 
+WORDS = Words(__package__, "sheets_2013_8")
+
+#: Room for the load diagram's axes on the sheet (mm).
+F_ROOM_MM = (150.0, 85.0)
 PANEL_X = 262.0
 PANEL_W = 146.0
 KN = 1000.0
@@ -27,6 +34,13 @@ KN = 1000.0
 
 def f(x: float, digits: int = 4) -> str:
     return fmt_number(x, digits=digits)
+
+
+def scales(sol: Solution) -> Mapping[str, float]:
+    """The sheet's factor k_F (N/mm): the load diagram draws F in kN at the factor Axis.fit
+    chooses for its room."""
+    f_max = float(sol.data.F[0])
+    return {"F": Axis.fit("F", WORDS("kN"), 0.0, f_max / KN, F_ROOM_MM[1]).k * KN}
 
 
 def sheets(sol: Solution) -> list[tuple[str, Sheet]]:

@@ -15,7 +15,7 @@
 """
 
 # This module loads without numpy or the construction code: `geomcad list` and `--help` read it.
-# build and draw live in p2013_6.py and load on first use.
+# build lives in p2013_6.py, the sheets in sheets_2013_6*.py; they load on first use.
 
 from __future__ import annotations
 
@@ -58,7 +58,8 @@ PROBLEM = Problem(
     results=RESULTS,
     seed=SEED,
     build=lazy(".p2013_6:build", __package__),
-    draw=lazy(".p2013_6:draw", __package__),
-    motion=lazy(".p2013_6:motion", __package__),
+    draw=lazy(".sheets_2013_6:sheets", __package__),
+    motion=lazy(".sheets_2013_6_kin:motion", __package__),
+    scales=lazy(".sheets_2013_6:scales", __package__),
     seed_k_l=SEED_K_L,
 )

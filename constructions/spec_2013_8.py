@@ -10,7 +10,7 @@
 """
 
 # This module loads without numpy or the construction code: `geomcad list` and `--help` read it.
-# build and draw live in p2013_8.py and load on first use.
+# build lives in p2013_8.py, the sheet in sheets_2013_8.py; both load on first use.
 
 from __future__ import annotations
 
@@ -57,5 +57,6 @@ PROBLEM = Problem(
     results=RESULTS,
     seed=SEED,
     build=lazy(".p2013_8:build", __package__),
-    draw=lazy(".p2013_8:draw", __package__),
+    draw=lazy(".sheets_2013_8:sheets", __package__),
+    scales=lazy(".sheets_2013_8:scales", __package__),
 )
