@@ -18,16 +18,19 @@ from typing import TYPE_CHECKING, Any
 from geomcad.construction import Construction
 from geomcad.geom import Arc, Circle, Line, Vec, angle_arcs, circle_circle
 from geomcad.kinematics import branch_sign
-from geomcad.sheet import Drawing, Scale, Sheet, TitleBlock, Viewport, fmt_number, start
+from geomcad.sheet import Drawing, Scale, Sheet, TitleBlock, Viewport, start
+from geomcad.sheet.lang import Words, current
 from geomcad.sheet.scale import gost_scale_to_fit
 
-from .sheets_2013_6_kin import kinematics_sheet
+from .sheets_2013_6_kin import factor, kinematics_sheet, num, six_bar
 from .spec_2013_6 import SEED_K_L
 
 if TYPE_CHECKING:
     from geomcad.problem import Solution
 
     from .p2013_6 import Geometry
+
+WORDS = Words(__package__, "sheets_2013_6")
 
 #: The field the mechanism is drawn in on the sheet (mm: x0, y0, x1, y1), left of the tables.
 VIEW = (24.0, 24.0, 256.0, 290.0)
@@ -80,17 +83,18 @@ def main_sheet(sol: Solution) -> tuple[str, Sheet]:
     c = sol.construction
     k = Scale(sol.scales["l"], "l")
     tb = TitleBlock(
-        title="Синтез шестизвенного механизма по коэффициенту K",
-        designation="ТММ.2013-6.01",
+        title=WORDS("tb_title"),
+        designation=WORDS("designation"),
         scale=k.ratio_text(),
+        lang=current(),
     )
     d = start("A3", tb)
     x0, y0, x1, y1 = extent(geo, c)
     cx, cy = (x0 + x1) / 2.0, (y0 + y1) / 2.0
     at = ((VIEW[0] + VIEW[2]) / 2.0, (VIEW[1] + 8.0 + VIEW[3]) / 2.0)
     v = d.viewport(k, (cx, cy), at)
-    d.text("Синтез механизма по K (метод окружности через B_0B_1)", (VIEW[0] + 2.0, 13.0), 5.0)
-    d.text(f"{k.label()}   (M {k.ratio_text() or '—'})", (VIEW[0] + 2.0, 20.0), 3.5)
+    d.text(WORDS("title"), (VIEW[0] + 2.0, 13.0), 5.0)
+    d.text(f"{factor(k)}   (M {k.ratio_text() or '—'})", (VIEW[0] + 2.0, 20.0), 3.5)
 
     _construction(v, geo, c)
     _mechanism(v, geo, c)
@@ -104,22 +108,27 @@ def _construction(v: Viewport, geo: Any, c: Any) -> None:
     # the rocker's arc and the slider's path
     swing = Arc(Circle(O2, geo.l3), B1.angle - SWING_PAD, B0.angle + SWING_PAD)
     v.arc(swing, "centre")
-    ends = [c["C0"], c["C1"], c["B"], *(cd.O1 for cd in geo.candidates if cd.line == 1)]
-    v.line_over(c["path"], ends, "centre", over=12.0)
+    # the path's centre line where no link runs along it: left of B0, and past C1's block
+    xs = [q.x for q in (c["C0"], c["C1"], c["B"], *(cd.O1 for cd in geo.candidates))]
+    y = geo.l3
+    left, right = min(xs) - v.scale.model(12.0), max(xs) + v.scale.model(12.0)
+    if B0.x - v.scale.model(4.0) > left:
+        v.seg(Vec(left, y), Vec(B0.x - v.scale.model(4.0), y), "centre")
+    stub = c["C1"].x + v.scale.model(8.0)
+    v.seg(Vec(stub, y), Vec(max(right, stub + v.scale.model(10.0)), y), "centre")
     # B0B1, the perpendicular at B0 and the ray from B1 at 90° − θ, meeting in O
     v.seg(B0, B1, "construction")
     v.seg(B0, Op, "construction")
     v.seg(B1, Op, "construction")
     _right_angle(v, B0, B1, Op)
-    v.dim_angle(B1, B0, Op, "90° – θ", r_mm=14.0, height=2.5)
+    v.dim_angle(B1, B0, Op, "90° – θ", r_mm=12.0, height=2.5)
     v.dot(Op, "result")
     v.label(Op, "O", prefer=(-1.0, -1.0))
-    # the θ-circle Γ and its mirror Γ′: θ-arcs solid, the arcs of 180° − θ dashed
-    left, right = angle_arcs(B0, B1, theta)
+    # the θ-circle Γ and its mirror Γ′: only their arcs that see B0B1 under θ (the arcs of
+    # 180° − θ hug the chord and carry no solution)
     chord = Line.through(B0, B1)
-    for arc in (left, right):
+    for arc in angle_arcs(B0, B1, theta):
         v.arc(arc, "construction")
-        v.arc(Arc(arc.circle, arc.end, arc.start), "locus")
     gamma, gamma_m = c["Γ"], c["Γ′"]
     v.dot(gamma.c, "construction")
     for circ, name in ((gamma, "Γ"), (gamma_m, "Γ'")):
@@ -132,8 +141,9 @@ def _construction(v: Viewport, geo: Any, c: Any) -> None:
         m = c[step]
         pts = [*(cd.O1 for cd in geo.candidates if cd.line == line_no), m.p]
         v.line_over(m, pts, "construction", over=14.0)
-        far_end = Vec(max(q.x for q in pts), m.p.y)
-        v.label(far_end, f"y = l_3 {tag} e", height=2.5, prefer=(1.0, 1.0), clear=12.0)
+        # the line's name above its right end
+        far_end = Vec(max(q.x for q in pts) + v.scale.model(14.0), m.p.y)
+        v.label(far_end, f"y = l_3 {tag} e", height=2.5, prefer=(-1.0, 1.0), clear=0.5)
     for i, cd in enumerate(geo.candidates):
         if cd is geo.chosen:
             continue
@@ -169,37 +179,40 @@ def _mechanism(v: Viewport, geo: Any, c: Any) -> None:
         v.seg(Ax, Bx, "extreme")
         v.seg(O1, Ax, "extreme")
         v.dot(Ax)
-    # the mid position: A from circle(O1, l1) ∩ circle(B, l2) on the mechanism's branch
-    A = _mid_A(O1, ch.l1, ch.l2, B, O2, mech.branch_B)
-    v.seg(O1, A, "link")
-    v.seg(A, B, "link")
-    v.seg(O2, B, "link")
-    v.seg(B, C, "link")
-    v.guide(Vec(C0.x - 0.06 * geo.l4, geo.l3), Vec(C1.x + 0.06 * geo.l4, geo.l3), (0.0, -1.0))
     for q in (C0, C1):
         v.slider(q, role="extreme")
-    v.slider(C)
-    for q in (A, B, B0, B1):
+    for q in (B0, B1):
         v.joint(q)
-    v.pivot(O2)
-    v.pivot(O1)
-    # labels, then the dimensions of the result
-    v.label(O2, "O_2", prefer=(1.0, -1.0), clear=4.0)
-    # O1's label below its support, clear of the crank pins A, A0, A1 around it
-    v.label(O1, "O_1", prefer=(1.0, -1.0), clear=6.0)
-    v.label(A, "A", prefer=(-1.0, 1.0))
-    v.label(B, "B", prefer=(1.0, 1.0))
-    v.label(C, "C", prefer=(0.0, 1.0), clear=4.0)
-    v.label(C0, "C_0", prefer=(0.0, 1.0), clear=4.0)
-    v.label(C1, "C_1", prefer=(0.0, 1.0), clear=4.0)
+    # the mid position: A from circle(O1, l1) ∩ circle(B, l2) on the mechanism's branch, the
+    # six-bar drawn as on the kinematics sheet
+    A = _mid_A(O1, ch.l1, ch.l2, B, O2, mech.branch_B)
+    guide = (Vec(C0.x - 0.06 * geo.l4, geo.l3), Vec(C1.x + 0.06 * geo.l4, geo.l3))
+    labels = {
+        "O2": ((1.0, -1.0), 4.0),
+        "O1": ((1.0, -1.0), 4.5),
+        "A": ((-1.0, 1.0), 1.5),
+        "B": ((1.0, 1.0), 1.5),
+        "C": ((0.0, 1.0), 4.0),
+    }
+    pts = {"O1": O1, "A": A, "B": B, "O2": O2, "C": C}
+    # link 4's number past B1's label, before C0's block
+    six_bar(v, pts, Vec(1.0, 0.0), guide, labels, number_at={"4": 0.58})
+    for q, name in ((C0, "C_0"), (C1, "C_1")):
+        v.label(q, name, prefer=(0.0, 1.0), clear=4.0)
     v.label(B0, "B_0", prefer=(-1.0, 1.0))
     v.label(B1, "B_1", prefer=(1.0, 1.0))
     for Ax, name in ((A0, "A_0"), (A1, "A_1")):
         out = (Ax - O1).unit()  # outside the crank circle, away from O1's label
         v.label(Ax, name, height=2.5, prefer=(out.x, out.y))
     mm = 1000.0
-    v.dim_linear(O1, B0, f"O_1B_0 = {fmt_number(ch.O1B0 * mm, digits=4)}", offset=12.0, height=2.5)
-    v.dim_linear(O1, B1, f"O_1B_1 = {fmt_number(ch.O1B1 * mm, digits=4)}", offset=-12.0, height=2.5)
+    # O1B0's dimension on A's side of O1B0 (its other side holds O1B1 and θ), beyond the pin A
+    # so that it never runs through the joint
+    n = (B0 - O1).unit().perp()  # left of O1 → B0 in the model
+    side_a = (A - O1).dot(n)
+    off = max(12.0, v.mm(abs(side_a)) + 6.0)
+    offset = off if side_a > 0.0 else -off  # dim_linear's offset: left of a → b on the paper
+    v.dim_linear(O1, B0, f"O_1B_0 = {num(ch.O1B0 * mm, 4)}", offset=offset, height=2.5)
+    v.dim_linear(O1, B1, f"O_1B_1 = {num(ch.O1B1 * mm, 4)}", offset=-12.0, height=2.5)
 
 
 def _mid_A(O1: Vec, l1: float, l2: float, B: Vec, O2: Vec, branch: int) -> Vec:
@@ -216,66 +229,55 @@ def _panel(d: Drawing, sol: Solution, k: Scale) -> None:
     p = sol.params
     r = sol.results
     x, y = PANEL_X, 10.0
-    d.text("Исходные данные", (x, y + 3.5), 3.5)
-    rows = [["Параметр", "Значение"]]
+    m_ = WORDS("m")
+    d.text(WORDS("data"), (x, y + 3.5), 3.5)
+    rows = [[WORDS("param"), WORDS("value")]]
     for name, label, unit in (
-        ("H", "H", "м"),
+        ("H", "H", m_),
         ("K", "K", ""),
-        ("l3", "l_3", "м"),
-        ("l4", "l_4", "м"),
-        ("e", "e", "м"),
+        ("l3", "l_3", m_),
+        ("l4", "l_4", m_),
+        ("e", "e", m_),
     ):
-        rows.append([label, f"{fmt_number(float(p[name]))} {unit}".strip()])
+        rows.append([label, f"{num(float(p[name]))} {unit}".strip()])
     _, h = d.table(x, y + 6.0, (40.0, 40.0), rows)
     y += 6.0 + h + 6.0
-    d.text("Результаты", (x, y + 3.5), 3.5)
-    rows = [["Величина", "Значение"]]
+    d.text(WORDS("results"), (x, y + 3.5), 3.5)
+    rows = [[WORDS("quantity"), WORDS("value")]]
     mmk = k.k
     for name, label, unit, scale in (
         ("theta_deg", "θ", "°", 1.0),
-        ("O1B0", "O_1B_0", "мм*", mmk),
-        ("O1B1", "O_1B_1", "мм*", mmk),
-        ("l1", "l_1", "м", 1.0),
-        ("l2", "l_2", "м", 1.0),
-        ("H_check", "H (анализ)", "м", 1.0),
-        ("K_check", "K (анализ)", "", 1.0),
+        ("O1B0", "O_1B_0", WORDS("mm") + "*", mmk),
+        ("O1B1", "O_1B_1", WORDS("mm") + "*", mmk),
+        ("l1", "l_1", m_, 1.0),
+        ("l2", "l_2", m_, 1.0),
+        ("H_check", WORDS("H_check"), m_, 1.0),
+        ("K_check", WORDS("K_check"), "", 1.0),
     ):
         exact = float(r[name]) / scale
-        rows.append([label, f"{fmt_number(exact, digits=4)} {unit}".strip()])
+        rows.append([label, f"{num(exact, 4)} {unit}".strip()])
     _, h = d.table(x, y + 6.0, (40.0, 40.0), rows)
     y += 6.0 + h + 4.0
-    d.text(f"* на чертеже, {k.label()}", (x, y + 2.5), 2.5)
+    d.text(WORDS("on_drawing", k=factor(k)), (x, y + 2.5), 2.5)
     y += 8.0
-    d.text("Все решения (O_1 на прямых y = l_3 ± e)", (x, y + 3.5), 3.5)
-    rows = [["№", "O_1 (x; y), м", "l_1, м", "l_2, м", "кривош."]]
+    d.text(WORDS("all"), (x, y + 3.5), 3.5)
+    rows = [["№", f"O_1 (x; y), {m_}", f"l_1, {m_}", f"l_2, {m_}", WORDS("crank")]]
     for i, s in enumerate(r["solutions"]):
         ox, oy = s["O1"]
         rows.append(
             [
                 str(i + 1),
-                f"{fmt_number(ox, digits=4)}; {fmt_number(oy, digits=4)}",
-                fmt_number(s["l1"], digits=4),
-                fmt_number(s["l2"], digits=4),
-                "да" if s["crank_rocker"] else "нет",
+                f"{num(ox, 4)}; {num(oy, 4)}",
+                num(s["l1"], 4),
+                num(s["l2"], 4),
+                WORDS("yes" if s["crank_rocker"] else "no"),
             ]
         )
     _, h = d.table(x, y + 6.0, (10.0, 48.0, 26.0, 26.0, 36.0), rows)
     y += 6.0 + h + 6.0
-    y = d.text("Порядок построения", (x, y + 3.5), 3.5).at[1] + 2.0
-    th = fmt_number(float(r["theta_deg"]), digits=4)
-    steps = (
-        "механизм в среднем положении O_2BC и в крайних O_2B_0C_0, O_2B_1C_1 (ход ползуна H);",
-        f"θ = 180°·(K – 1)/(K + 1) = {th}°;",
-        "перпендикуляр к B_0B_1 в точке B_0 и луч из B_1 под углом 90°\u00a0–\u00a0θ к B_1B_0 "
-        "пересекаются в точке O;",
-        "окружность Γ через O, B_0, B_1 (OB_1 – диаметр) и её зеркальный образ Γ' относительно "
-        "B_0B_1: дуги, из которых хорда B_0B_1 видна под углом θ;",
-        "прямые y\u00a0=\u00a0l_3\u00a0±\u00a0e пересекают эти дуги в точках O_1; решение "
-        "задачи – левая точка на y\u00a0=\u00a0l_3\u00a0–\u00a0e;",
-        "l_1 = (O_1B_1 – O_1B_0)/2, l_2 = (O_1B_1 + O_1B_0)/2;",
-        f"проверка анализом за полный оборот кривошипа: H = "
-        f"{fmt_number(float(r['H_check']), digits=4)} м, K = "
-        f"{fmt_number(float(r['K_check']), digits=4)}.",
-    )
+    y = d.text(WORDS("order"), (x, y + 3.5), 3.5).at[1] + 2.0
+    steps = [WORDS(f"step_{i}") for i in range(1, 8)]
+    steps[1] = WORDS("step_2", theta=num(float(r["theta_deg"]), 4))
+    steps[6] = WORDS("step_7", H=num(float(r["H_check"]), 4), K=num(float(r["K_check"]), 4))
     for i, step in enumerate(steps):
         y = d.paragraph(f"{i + 1}. {step}", x, y, 146.0, 2.5, indent=4.0) + 0.6
