@@ -12,6 +12,7 @@ solutions.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Mapping
 from typing import TYPE_CHECKING, Any
 
@@ -19,8 +20,13 @@ from geomcad.construction import Construction
 from geomcad.geom import Arc, Circle, Line, Vec, angle_arcs, circle_circle
 from geomcad.kinematics import branch_sign
 from geomcad.sheet import Drawing, Scale, Sheet, TitleBlock, Viewport, start
+from geomcad.sheet.drawing import _crossings, _segments, _turned
 from geomcad.sheet.lang import Words, current
+from geomcad.sheet.model import Polyline
 from geomcad.sheet.scale import gost_scale_to_fit
+from geomcad.sheet.scheme import GUIDE_HALF
+from geomcad.sheet.text import box as text_box
+from geomcad.sheet.text import parse
 
 from .sheets_2013_6_kin import factor, kinematics_sheet, num, six_bar
 from .spec_2013_6 import SEED_K_L
@@ -98,6 +104,8 @@ def main_sheet(sol: Solution) -> tuple[str, Sheet]:
 
     _construction(v, geo, c)
     _mechanism(v, geo, c)
+    # the angle at B1 last, when every line it must keep clear of is drawn
+    _angle_with_leader(v, c["B1"], c["B0"], c["O"], "90° – θ", 12.0)
     _panel(d, sol, k)
     return ("", d.finish())
 
@@ -121,7 +129,6 @@ def _construction(v: Viewport, geo: Any, c: Any) -> None:
     v.seg(B0, Op, "construction")
     v.seg(B1, Op, "construction")
     _right_angle(v, B0, B1, Op)
-    v.dim_angle(B1, B0, Op, "90° – θ", r_mm=12.0, height=2.5)
     v.dot(Op, "result")
     v.label(Op, "O", prefer=(-1.0, -1.0))
     # the θ-circle Γ and its mirror Γ′: only their arcs that see B0B1 under θ (the arcs of
@@ -149,6 +156,82 @@ def _construction(v: Viewport, geo: Any, c: Any) -> None:
             continue
         v.dot(cd.O1, "result")
         v.label(cd.O1, f"O_1^{{({i + 1})}}", height=3.5)
+
+
+def _angle_with_leader(
+    v: Viewport, vertex: Vec, p1: Vec, p2: Vec, text: str, r_mm: float, height: float = 2.5
+) -> None:
+    """An angle's arc at ``vertex`` whose value stands where no line crosses it, as near the
+    arc as that allows, joined to the arc's middle by a thin leader when it stands apart (the
+    angle at B1 sits among the links and the construction, where no place beside it is free)."""
+    v.dim_angle(vertex, p1, p2, text, r_mm=r_mm, height=height)
+    mid = v.d.pending.pop().anchor  # the arc's middle; the value is placed here instead
+    w, rise, down = text_box(parse(text), height)
+    segs = _segments(v.sheet)
+    thick = [it for it in v.sheet.items if it.role in ("link", "joint")]
+    links = _segments(Sheet(v.sheet.width, v.sheet.height, "", "", thick))
+    # the arc's points on the paper, its middle first (as dim_angle draws it)
+    a1, a2 = (p1 - vertex).angle, (p2 - vertex).angle
+    sweep = math.remainder(a2 - a1, 2.0 * math.pi)
+    start, sweep = (a1, sweep) if sweep > 0 else (a2, -sweep)
+    c = v.p(vertex)
+    on_arc = [
+        (c[0] + r_mm * math.cos(start + sweep * t), c[1] - r_mm * math.sin(start + sweep * t))
+        for t in (0.5, 0.35, 0.65, 0.2, 0.8)
+    ]
+    # the dimensions' texts, placed at the finish, keep the places they would take now (the
+    # first candidate that crosses no line): each as a disc round its text's middle
+    dims = []
+    for dt in v.d.dims:
+        dw, drise, ddown = dt.box
+        area = (-1.0, -drise - 1.0, dw + 1.0, ddown + 1.0)
+        at = next(
+            (q for q in dt.candidates if _crossings(_turned(segs, q, dt.t), area) == 0),
+            dt.candidates[0],
+        )
+        dims.append((at[0] + dt.t[0] * dw / 2.0, at[1] + dt.t[1] * dw / 2.0, dw / 2.0 + 1.5))
+
+    def near_dim(x: float, y: float, pad: float) -> bool:
+        return any(math.hypot(x - dx, y - dy) < rr + pad for dx, dy, rr in dims)
+
+    best = None
+    for r in (3.0, 5.0, 7.0, 9.0, 12.0, 15.0, 18.0, 22.0, 27.0, 33.0, 40.0):
+        for p0 in on_arc:
+            out = math.atan2(-(p0[1] - c[1]), p0[0] - c[0])  # outward through the arc
+            for k in sorted(
+                range(24), key=lambda k: abs(math.remainder(k * math.pi / 12.0 - out, 2 * math.pi))
+            ):
+                a = k * math.pi / 12.0
+                cx, cy = p0[0] + r * math.cos(a), p0[1] - r * math.sin(a)
+                box = (cx - w / 2.0 - 0.8, cy - rise / 2.0 - 0.8, cx + w / 2.0 + 0.8,
+                       cy + rise / 2.0 + down + 0.8)  # fmt: skip
+                if _crossings(segs, box) or near_dim(cx, cy, w / 2.0):
+                    continue
+                # the leader crosses no link (thin lines it may)
+                steps = [(p0[0] + (cx - p0[0]) * t / 80.0, p0[1] + (cy - p0[1]) * t / 80.0)
+                         for t in range(81)]  # fmt: skip
+                if not any(_crossings(links, (x - 0.3, y - 0.3, x + 0.3, y + 0.3))
+                           or near_dim(x, y, 0.5) for x, y in steps):  # fmt: skip
+                    best, mid = (cx, cy), p0
+                    break
+            if best is not None:
+                break
+        if best is not None:
+            break
+    if best is None:  # nowhere free: beside the arc as the label placer would
+        v.d.label(mid, text, height, clear=0.5)
+        return
+    cx, cy = best
+    if math.dist(best, mid) > w / 2.0 + 2.0:
+        # the leader from the arc to the nearer end of the text's underline
+        end = (
+            (cx - w / 2.0, cy + rise / 2.0 + 0.6)
+            if mid[0] < cx
+            else (cx + w / 2.0, cy + rise / 2.0 + 0.6)
+        )
+        v.sheet.add(Polyline((mid, end), "dimension"))
+        v.sheet.add(Polyline(((cx - w / 2.0, end[1]), (cx + w / 2.0, end[1])), "dimension"))
+    v.d.text(text, (cx - w / 2.0, cy + rise / 2.0), height)
 
 
 def _right_angle(v: Viewport, vertex: Vec, a: Vec, b: Vec, size_mm: float = 3.0) -> None:
@@ -186,17 +269,22 @@ def _mechanism(v: Viewport, geo: Any, c: Any) -> None:
     # the mid position: A from circle(O1, l1) ∩ circle(B, l2) on the mechanism's branch, the
     # six-bar drawn as on the kinematics sheet
     A = _mid_A(O1, ch.l1, ch.l2, B, O2, mech.branch_B)
-    guide = (Vec(C0.x - 0.06 * geo.l4, geo.l3), Vec(C1.x + 0.06 * geo.l4, geo.l3))
+    # the guide under the whole stroke, on from the scheme's own guide at C (GUIDE_HALF mm
+    # either side of it)
+    half = v.scale.model(GUIDE_HALF)
+    for a, b in ((C0.x - 0.06 * geo.l4, C.x - half), (C.x + half, C1.x + 0.06 * geo.l4)):
+        if b > a:
+            v.guide(Vec(a, geo.l3), Vec(b, geo.l3), (0.0, -1.0))
     labels = {
         "O2": ((1.0, -1.0), 4.0),
         "O1": ((1.0, -1.0), 4.5),
         "A": ((-1.0, 1.0), 1.5),
         "B": ((1.0, 1.0), 1.5),
-        "C": ((0.0, 1.0), 4.0),
+        "C": ((1.0, 0.0), 4.7),
     }
     pts = {"O1": O1, "A": A, "B": B, "O2": O2, "C": C}
     # link 4's number past B1's label, before C0's block
-    six_bar(v, pts, Vec(1.0, 0.0), guide, labels, number_at={"4": 0.58})
+    six_bar(v, pts, Vec(1.0, 0.0), labels, number_at={"4": 0.58})
     for q, name in ((C0, "C_0"), (C1, "C_1")):
         v.label(q, name, prefer=(0.0, 1.0), clear=4.0)
     v.label(B0, "B_0", prefer=(-1.0, 1.0))

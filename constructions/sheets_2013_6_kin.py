@@ -30,6 +30,7 @@ from geomcad.sheet import (
     gost_scale_to_fit,
     start,
 )
+from geomcad.sheet.compose import text_width
 from geomcad.sheet.drawing import ARROW_LEN
 from geomcad.sheet.graph import Axis, Graph, nice_step
 from geomcad.sheet.lang import Words, current
@@ -37,6 +38,8 @@ from geomcad.sheet.model import Polyline
 from geomcad.sheet.motion import Frames, turn
 from geomcad.sheet.plans import LINE_OVER_MM, draw_plan, markup_of, plan_scale
 from geomcad.sheet.scale import ScaleStyle
+from geomcad.sheet.scheme import draw_scheme
+from geomcad.structure import Link, Mechanism, prismatic, revolute
 
 if TYPE_CHECKING:
     from geomcad.problem import Solution
@@ -72,60 +75,45 @@ def factor(k: Scale) -> str:
     return k.label(ScaleStyle(lang=current()))
 
 
-#: A support's stand keeps at least this angle (rad) from every link that leaves its joint.
-SUPPORT_CLEAR = math.radians(75.0)
-
-
-def _away(at: Vec, towards: Sequence[Vec]) -> tuple[float, float]:
-    """Where a support's stand and hatching go: down unless a link leaves the joint within
-    SUPPORT_CLEAR of it, else the first of the other seven directions (down-left, down-right,
-    the sides, up…) clear of every link, else the one farthest from them."""
-    dirs = [(q - at).unit() for q in towards if (q - at).norm > 0.0]
-    best, score = (0.0, -1.0), -math.inf
-    for k in (6, 5, 7, 4, 0, 3, 1, 2):
-        a = k * math.pi / 4.0
-        u = Vec(math.cos(a), math.sin(a))
-        worst = min((math.acos(max(-1.0, min(1.0, u.dot(d)))) for d in dirs), default=math.pi)
-        if worst >= SUPPORT_CLEAR:
-            return (u.x, u.y)
-        if worst > score:
-            best, score = (u.x, u.y), worst
-    return best
+def mechanism(pts: Mapping[str, Vec], along: Vec) -> Mechanism:
+    """The six-bar as a structure (GOST 2.770 numbering) in the position ``pts`` (O1, A, B, O2,
+    C): crank 1, rod 2, rocker 3, link 4, slider 5 on the frame 0's guide along ``along``."""
+    O1, A, B, O2, C = (pts[n] for n in ("O1", "A", "B", "O2", "C"))
+    return Mechanism(
+        links=tuple(Link(str(i)) for i in range(1, 6)),
+        pairs=(
+            revolute("O1", "0", "1", O1),
+            revolute("A", "1", "2", A),
+            revolute("B", "2", "3", B),
+            revolute("B4", "3", "4", B),
+            revolute("O2", "3", "0", O2),
+            revolute("C", "4", "5", C),
+            prismatic("C5", "5", "0", C, along),
+        ),
+    )
 
 
 def six_bar(
     v: Viewport,
     pts: Mapping[str, Vec],
     along: Vec,
-    guide: tuple[Vec, Vec],
     labels: Mapping[str, tuple[tuple[float, float], float]],
-    numbers: bool = True,
     number_at: Mapping[str, float] | None = None,
 ) -> None:
-    """The six-bar's scheme (GOST 2.770) in one position: crank 1 (O1A), rod 2 (AB), rocker 3
-    (O2B), link 4 (BC), slider 5 (C) on its fixed guide from ``guide[0]`` to ``guide[1]``
-    (hatched below), the supports turned away from the links they carry, the joints, the
-    points named as ``labels`` asks (name → (preferred direction, clearance mm)) and, with
-    ``numbers``, every link numbered (at the share ``number_at[n]`` of the link's length, the
-    middle by default). ``pts`` holds O1, A, B, O2, C (model)."""
-    O1, A, B, O2, C = (pts[n] for n in ("O1", "A", "B", "O2", "C"))
-    v.guide(guide[0], guide[1], (0.0, -1.0))
-    for a, b in ((O1, A), (A, B), (O2, B), (B, C)):
-        v.seg(a, b, "link")
-    v.slider(C, along)
-    for q in (A, B):
-        v.joint(q)
-    v.pivot(O1, _away(O1, [A]))
-    v.pivot(O2, _away(O2, [B]))
+    """The six-bar's scheme in one position, the one scheme view of both 2013-6 sheets: the
+    structure drawn by :func:`geomcad.sheet.scheme.draw_scheme` (GOST 2.770: supports turned
+    away from their links, the slider on its guide, every link numbered; link n's number at
+    the share ``number_at[n]`` of its length, the middle by default), and the points named as
+    ``labels`` asks (name → (preferred direction, clearance mm))."""
+    mech = mechanism(pts, along)
+    ends = {"1": ("O1", "A"), "2": ("A", "B"), "3": ("O2", "B"), "4": ("B", "C")}
+    at = {"1": 0.5, "2": 0.5, "3": 0.5, "4": 0.5, **(number_at or {})}
+    numbers = {n: pts[a] + (pts[b] - pts[a]) * at[n] for n, (a, b) in ends.items()}
+    # the slider's number by its block's top edge
+    numbers["5"] = pts["C"] + along.unit().perp() * v.scale.model(3.0)
+    draw_scheme(v, mech, pair_labels={}, link_labels=numbers)
     for name, (pref, clear) in labels.items():
         v.label(pts[name], markup_of(name), prefer=pref, clear=clear)
-    if numbers:
-        at = {"1": 0.5, "2": 0.5, "3": 0.5, "4": 0.5, **(number_at or {})}
-        for a, b, n in ((O1, A, "1"), (A, B, "2"), (O2, B, "3"), (B, C, "4")):
-            v.label(a + (b - a) * at[n], n, 3.5, clear=0.8)
-        # the slider's number by its block's upper corner, ahead of link 4
-        corner = C + along.unit() * v.scale.model(4.5) + along.unit().perp() * v.scale.model(2.5)
-        v.label(corner, "5", 3.5, prefer=(1.0, 1.0), clear=0.8)
 
 
 def kinematics_sheet(sol: Solution) -> tuple[str, Sheet]:
@@ -201,11 +189,11 @@ def _mechanism(v: Viewport, c: Any, m: Any, an: Analysis) -> None:
         "O2": ((1.0, -1.0), 4.0),
         "A": ((-1.0, 1.0), 4.0),
         "B": ((1.0, 1.0), 4.0),
-        "C": ((0.0, 1.0), 4.0),
+        "C": ((1.0, 0.0), 4.7),
     }
-    six_bar(v, pts, d, (C - d * ext, C + d * ext), labels)
+    six_bar(v, pts, d, labels)
     a1 = math.degrees(an.phi1) + 25.0  # ω1's arrow spans 90° just past the crank
-    v.turn(O1, an.omega1, a1 if an.omega1 > 0 else a1 + 90.0, "ω_1", r_mm=10.0, sweep_deg=90.0)
+    v.turn(O1, an.omega1, a1 if an.omega1 > 0 else a1 + 90.0, "ω_1", r_mm=11.0, sweep_deg=90.0)
 
 
 def _diagrams(d: Drawing, an: Analysis, m: Any) -> None:
@@ -284,7 +272,7 @@ def _panel(d: Drawing, an: Analysis, m: Any, kv: float, ka: float) -> None:
     d.text(WORDS("values"), (x, y + 3.5), 3.5)
     for name, val, kk, check in vals:
         rows.append([name, num(val, 4), num(abs(val) / kk, 4), num(check, 4)])
-    widths = (17.0, 19.0, 22.0, 26.0)
+    widths = [max(text_width(row[i], 2.5) for row in rows) + 3.0 for i in range(4)]
     _, h = d.table(x, y + 6.0, widths, rows, row_h=5.0)
     # the links' angular velocities and accelerations under it
     y += 6.0 + h + 4.0
