@@ -8,9 +8,10 @@ pitch lines dash-dot through the pitch points; the frame's bearings and the fixe
 Beside it, on the same radii, the plan of linear velocities at k_v: horizontal lines carry each
 point's level across, the velocities are arrows from the axis v = 0, and each link's line passes
 through the ends of its points. Below: the angle diagram from pole S, its rays parallel to the
-links' lines cut the line at H above S in segments ω/k_ω. Right: the data, the results beside the
-seed's, the angular velocities three ways (mesh equations, slopes, angle diagram), the order of
-construction and the seed's errata.
+links' lines cut the line at H above S in segments ω/k_ω. Right: the data, the results (Willis),
+the angular velocities three ways (mesh equations, slopes, angle diagram) and the order of
+construction. A velocity shorter than two arrowheads is drawn as its end point and named in a
+note under the plan.
 """
 
 from __future__ import annotations

@@ -3,11 +3,11 @@
 A3 landscape. Left: the construction at k_l (the seed's 0.005 m/mm, 1:5, when it fits; else the
 largest GOST scale that does): the rocker's arc, the extreme positions C0, C1 and B0, B1, the
 chord B0B1, the perpendicular at B0 and the ray at 90° − θ meeting in O, the θ-circle Γ through
-O, B0, B1 and its mirror image Γ′ (their arcs that see B0B1 under θ solid, the others dashed),
+O, B0, B1 and its mirror image Γ′ (only their arcs that see B0B1 under θ: the others hug the chord),
 the lines at e from the path, every solution O1, and the seed's solution built out: the crank's
 dead-centre positions O1A0B0 and O1A1B1, the crank circle, the linkage in its mid position, and
-the dimensions O1B0 and O1B1. Right: the given data, the results beside the seed's, and all
-solutions.
+the dimensions O1B0 and O1B1. Right: the given data, the results, all solutions and the order
+of construction.
 """
 
 from __future__ import annotations
@@ -313,7 +313,7 @@ def _mid_A(O1: Vec, l1: float, l2: float, B: Vec, O2: Vec, branch: int) -> Vec:
 
 
 def _panel(d: Drawing, sol: Solution, k: Scale) -> None:
-    """The tables on the right: given data, results beside the seed's, every solution."""
+    """The tables on the right: given data, results, every solution, the order of construction."""
     p = sol.params
     r = sol.results
     x, y = PANEL_X, 10.0

@@ -9,9 +9,10 @@
 - Sheet (A3, 1:5): the mechanism in its mid and extreme positions, the whole construction, the
   dimensions O1B0 and O1B1, and tables of the data, the results, every solution and the order
   of construction.
-- Sheet ``2013-6-kinematics`` (A2): the synthesized six-bar at the crank 60° past the slider's left
-  extreme (ω1 = 10 rad/s), its velocity and acceleration plans, and the slider's s, v, a over a
-  turn from the vectorized sweep, with the plans' values marked on the curves.
+- Sheet ``2013-6-kinematics`` (A3, 1:5): the synthesized six-bar at the crank 60° past the
+  slider's left extreme (ω1 = 10 rad/s), its velocity and acceleration plans with their vector
+  equations, and the slider's s, v, a over a turn from the vectorized sweep, with the plans'
+  values marked on the curves.
 """
 
 # This module loads without numpy or the construction code: `geomcad list` and `--help` read it.

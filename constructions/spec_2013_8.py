@@ -6,7 +6,8 @@
   J = 2E/(ω_max² − ω_min²) (``geomcad.dynamics.flywheel``).
 - Reports the exact J beside the seed's 1,89, which it computed from rounded speeds.
 - Sheet (A3): the load diagram with the work hatched, the flywheel's energy balance ΔT(t) over
-  two cycles, the results and the solution step by step.
+  two cycles, the kinematic scheme of the press with its flywheel, the results and the solution
+  step by step.
 """
 
 # This module loads without numpy or the construction code: `geomcad list` and `--help` read it.
