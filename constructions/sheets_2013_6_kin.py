@@ -30,7 +30,6 @@ from geomcad.sheet import (
     gost_scale_to_fit,
     start,
 )
-from geomcad.sheet.compose import text_width
 from geomcad.sheet.drawing import ARROW_LEN
 from geomcad.sheet.graph import Axis, Graph, nice_step
 from geomcad.sheet.lang import Words, current
@@ -39,6 +38,8 @@ from geomcad.sheet.motion import Frames, turn
 from geomcad.sheet.plans import LINE_OVER_MM, draw_plan, markup_of, plan_scale
 from geomcad.sheet.scale import ScaleStyle
 from geomcad.sheet.scheme import draw_scheme
+from geomcad.sheet.text import box as text_box
+from geomcad.sheet.text import parse
 from geomcad.structure import Link, Mechanism, prismatic, revolute
 
 if TYPE_CHECKING:
@@ -272,7 +273,7 @@ def _panel(d: Drawing, an: Analysis, m: Any, kv: float, ka: float) -> None:
     d.text(WORDS("values"), (x, y + 3.5), 3.5)
     for name, val, kk, check in vals:
         rows.append([name, num(val, 4), num(abs(val) / kk, 4), num(check, 4)])
-    widths = [max(text_width(row[i], 2.5) for row in rows) + 3.0 for i in range(4)]
+    widths = [max(text_box(parse(row[i]), 2.5)[0] for row in rows) + 3.0 for i in range(4)]
     _, h = d.table(x, y + 6.0, widths, rows, row_h=5.0)
     # the links' angular velocities and accelerations under it
     y += 6.0 + h + 4.0
