@@ -12,17 +12,19 @@ of construction.
 
 from __future__ import annotations
 
+import itertools
 import math
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 from typing import TYPE_CHECKING, Any
+
+import numpy as np
 
 from geomcad.construction import Construction
 from geomcad.geom import Arc, Circle, Line, Vec, angle_arcs, circle_circle
 from geomcad.kinematics import branch_sign
 from geomcad.sheet import Drawing, Scale, Sheet, TitleBlock, Viewport, start
-from geomcad.sheet.drawing import _crossings, _segments, _turned
 from geomcad.sheet.lang import Words, current
-from geomcad.sheet.model import Polyline
+from geomcad.sheet.model import ArcItem, CircleItem, Polyline
 from geomcad.sheet.scale import gost_scale_to_fit
 from geomcad.sheet.scheme import GUIDE_HALF
 from geomcad.sheet.text import box as text_box
@@ -158,6 +160,59 @@ def _construction(v: Viewport, geo: Any, c: Any) -> None:
         v.label(cd.O1, f"O_1^{{({i + 1})}}", height=3.5)
 
 
+def _ink(items: Sequence[Any]) -> np.ndarray:
+    """The drawn lines of ``items`` as paper segments (x1, y1, x2, y2): polylines by their
+    sides, circles and arcs by chords of at most about 1.5 mm."""
+    out: list[tuple[float, float, float, float]] = []
+    for it in items:
+        if isinstance(it, Polyline):
+            pts = [*it.points, *([it.points[0]] if it.closed else [])]
+            out += [(*a, *b) for a, b in itertools.pairwise(pts)]
+        elif isinstance(it, CircleItem | ArcItem):
+            if isinstance(it, CircleItem):
+                a0, sweep = 0.0, 2.0 * math.pi
+            else:
+                a0 = math.atan2(it.start[1] - it.c[1], it.start[0] - it.c[0])
+                sweep = it.sweep
+            n = max(8, int(abs(sweep) * it.r / 1.5) + 1)
+            t = a0 + np.linspace(0.0, sweep, n + 1)
+            xs, ys = it.c[0] + it.r * np.cos(t), it.c[1] + it.r * np.sin(t)
+            out += [(xs[i], ys[i], xs[i + 1], ys[i + 1]) for i in range(n)]
+    return np.array(out, dtype=np.float64).reshape(-1, 4)
+
+
+def _crossed(segs: np.ndarray, b: tuple[float, float, float, float]) -> bool:
+    """Whether a segment crosses or lies in the box b = (x0, y0, x1, y1) (Liang–Barsky, all
+    segments at once)."""
+    if segs.size == 0:
+        return False
+    x1, y1, x2, y2 = segs.T
+    dx, dy = x2 - x1, y2 - y1
+    t0, t1 = np.zeros_like(x1), np.ones_like(x1)
+    ok = np.ones(x1.shape, dtype=bool)
+    for p, q in ((-dx, x1 - b[0]), (dx, b[2] - x1), (-dy, y1 - b[1]), (dy, b[3] - y1)):
+        zero = p == 0.0
+        ok &= ~(zero & (q < 0.0))
+        r = q / np.where(zero, 1.0, p)
+        t0 = np.where(~zero & (p < 0.0), np.maximum(t0, r), t0)
+        t1 = np.where(~zero & (p > 0.0), np.minimum(t1, r), t1)
+    return bool(np.any(ok & (t0 <= t1)))
+
+
+def _dim_box(at: tuple[float, float], dt: Any) -> tuple[float, float, float, float]:
+    """The paper box round a dimension's text turned along ``dt.t`` with its baseline at
+    ``at``."""
+    w, rise, down = dt.box
+    tx, ty = dt.t
+    ux, uy = ty, -tx  # the text's up on the paper
+    xs, ys = [], []
+    for along in (0.0, w):
+        for up in (-down, rise):
+            xs.append(at[0] + tx * along + ux * up)
+            ys.append(at[1] + ty * along + uy * up)
+    return (min(xs) - 1.0, min(ys) - 1.0, max(xs) + 1.0, max(ys) + 1.0)
+
+
 def _angle_with_leader(
     v: Viewport, vertex: Vec, p1: Vec, p2: Vec, text: str, r_mm: float, height: float = 2.5
 ) -> None:
@@ -167,9 +222,8 @@ def _angle_with_leader(
     v.dim_angle(vertex, p1, p2, text, r_mm=r_mm, height=height)
     mid = v.d.pending.pop().anchor  # the arc's middle; the value is placed here instead
     w, rise, down = text_box(parse(text), height)
-    segs = _segments(v.sheet)
-    thick = [it for it in v.sheet.items if it.role in ("link", "joint")]
-    links = _segments(Sheet(v.sheet.width, v.sheet.height, "", "", thick))
+    segs = _ink(v.sheet.items)
+    links = _ink([it for it in v.sheet.items if it.role in ("link", "joint")])
     # the arc's points on the paper, its middle first (as dim_angle draws it)
     a1, a2 = (p1 - vertex).angle, (p2 - vertex).angle
     sweep = math.remainder(a2 - a1, 2.0 * math.pi)
@@ -183,12 +237,9 @@ def _angle_with_leader(
     # first candidate that crosses no line): each as a disc round its text's middle
     dims = []
     for dt in v.d.dims:
-        dw, drise, ddown = dt.box
-        area = (-1.0, -drise - 1.0, dw + 1.0, ddown + 1.0)
-        at = next(
-            (q for q in dt.candidates if _crossings(_turned(segs, q, dt.t), area) == 0),
-            dt.candidates[0],
-        )
+        dw = dt.box[0]
+        at = next((q for q in dt.candidates if not _crossed(segs, _dim_box(q, dt))),
+                  dt.candidates[0])  # fmt: skip
         dims.append((at[0] + dt.t[0] * dw / 2.0, at[1] + dt.t[1] * dw / 2.0, dw / 2.0 + 1.5))
 
     def near_dim(x: float, y: float, pad: float) -> bool:
@@ -205,12 +256,12 @@ def _angle_with_leader(
                 cx, cy = p0[0] + r * math.cos(a), p0[1] - r * math.sin(a)
                 box = (cx - w / 2.0 - 0.8, cy - rise / 2.0 - 0.8, cx + w / 2.0 + 0.8,
                        cy + rise / 2.0 + down + 0.8)  # fmt: skip
-                if _crossings(segs, box) or near_dim(cx, cy, w / 2.0):
+                if _crossed(segs, box) or near_dim(cx, cy, w / 2.0):
                     continue
                 # the leader crosses no link (thin lines it may)
                 steps = [(p0[0] + (cx - p0[0]) * t / 80.0, p0[1] + (cy - p0[1]) * t / 80.0)
                          for t in range(81)]  # fmt: skip
-                if not any(_crossings(links, (x - 0.3, y - 0.3, x + 0.3, y + 0.3))
+                if not any(_crossed(links, (x - 0.3, y - 0.3, x + 0.3, y + 0.3))
                            or near_dim(x, y, 0.5) for x, y in steps):  # fmt: skip
                     best, mid = (cx, cy), p0
                     break
