@@ -199,20 +199,6 @@ def _crossed(segs: np.ndarray, b: tuple[float, float, float, float]) -> bool:
     return bool(np.any(ok & (t0 <= t1)))
 
 
-def _dim_box(at: tuple[float, float], dt: Any) -> tuple[float, float, float, float]:
-    """The paper box round a dimension's text turned along ``dt.t`` with its baseline at
-    ``at``."""
-    w, rise, down = dt.box
-    tx, ty = dt.t
-    ux, uy = ty, -tx  # the text's up on the paper
-    xs, ys = [], []
-    for along in (0.0, w):
-        for up in (-down, rise):
-            xs.append(at[0] + tx * along + ux * up)
-            ys.append(at[1] + ty * along + uy * up)
-    return (min(xs) - 1.0, min(ys) - 1.0, max(xs) + 1.0, max(ys) + 1.0)
-
-
 def _angle_with_leader(
     v: Viewport, vertex: Vec, p1: Vec, p2: Vec, text: str, r_mm: float, height: float = 2.5
 ) -> None:
@@ -235,12 +221,13 @@ def _angle_with_leader(
     ]
     # the dimensions' texts, placed at the finish, keep the places they would take now (the
     # first candidate that crosses no line): each as a disc round its text's middle
+    # the dimensions' texts are placed at the finish, anywhere along their lines: every place
+    # they may take is kept free (a disc round the text's middle at each candidate)
     dims = []
     for dt in v.d.dims:
-        dw = dt.box[0]
-        at = next((q for q in dt.candidates if not _crossed(segs, _dim_box(q, dt))),
-                  dt.candidates[0])  # fmt: skip
-        dims.append((at[0] + dt.t[0] * dw / 2.0, at[1] + dt.t[1] * dw / 2.0, dw / 2.0 + 1.5))
+        dw, rise = dt.box[0], dt.box[1]
+        for at in dt.candidates:
+            dims.append((at[0] + dt.t[0] * dw / 2.0, at[1] + dt.t[1] * dw / 2.0, rise + 1.0))
 
     def near_dim(x: float, y: float, pad: float) -> bool:
         return any(math.hypot(x - dx, y - dy) < rr + pad for dx, dy, rr in dims)
