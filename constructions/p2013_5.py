@@ -59,7 +59,6 @@ from geomcad.kinematics.trains import (
     willis,
 )
 from geomcad.problem import Build, ParamValue
-from geomcad.sheet.scale import gost_length_scale, nice_factor
 
 from .spec_2013_5 import PARAMS
 from .spec_2013_5 import PROBLEM as PROBLEM
@@ -91,8 +90,6 @@ class Geometry:
     plan: VelocityPlan
     rays: RayPlan
     omega_exact: dict[str, Fraction]  # ω_i / ω_H2, exactly
-    k_v: float
-    k_omega: float
     extent: tuple[float, float]  # the radii the scheme spans (y_min, y_max)
 
 
@@ -216,20 +213,14 @@ def build(p: Mapping[str, ParamValue]) -> Build:
     omega_h2 = 1.0
     plan = velocity_plan(c, points, FRAME, H2, "B", omega_h2 * a)
     u_plan = plan.omega[SUN] / plan.omega[H2]
-    # scales: the scheme's k_l, the plan's k_v, and the angle diagram's pole distance H
+    # the radii the scheme spans
     y_lo = min(-r["1"], -r["3"], a - r["2"], a - r["7"])
     y_hi = max(a + r["2"], a + r["7"], a + r["5"] + 2 * r["6"])
-    k_l = sheet_k_l(y_hi - y_lo)
-    v_ends = [e.x for e in plan.ends.values()]
-    v_span = max(max(v_ends), 0.0) - min(min(v_ends), 0.0)
-    k_v = nice_factor(v_span, plan_room(y_hi - y_lo, k_l), "v").k
+    # the angle diagram: pole S below the plan on its axis v = 0, pole distance H = a (any
+    # distance would do: the diagram is linear in it); ray i ends at v = H·ω_i
     links = (SUN, BLOCK25, PLANET, H1, H2)
-    om = [abs(plan.omega[k]) for k in links]
-    # the intercepts ω/k_ω fit RAY_W, and the pole distance H/k_l stays below RAY_H
-    k_omega = max(nice_factor(max(om), RAY_W, "v").k, nice_factor(k_v / k_l, RAY_H, "v").k)
-    H = k_v / k_omega  # the pole distance in the plan's y units (m): ray i ends at v = H·ω_i
-    S = Vec(0.0, y_lo - 2.0 * H)  # the pole, below the plan on its axis v = 0
-    rays = ray_plan(c, plan, S, H, links)
+    S = Vec(0.0, y_lo - 2.0 * a)
+    rays = ray_plan(c, plan, S, a, links)
     u_rays = rays.ratio(SUN, H2)
     c.value("u1H2 (plan)", u_plan, "slope of line 1 / slope of line H2")
     c.value("u1H2 (angle diagram)", u_rays, "intercept of ray 1 / intercept of ray H2")
@@ -257,34 +248,5 @@ def build(p: Mapping[str, ParamValue]) -> Build:
         f"linear velocities gives {u_plan:.12g} (slopes) and {u_rays:.12g} (angle diagram)"
     )
     zs = {"1": z1, "2": z2, "3": z3, "4": z4, "5": z5, "6": z6, "7": z7}
-    geo = Geometry(zs, m, a, points, plan, rays, omega_exact, k_v, k_omega, (y_lo, y_hi))
-    return Build(results, c, notes, {"l": k_l, "v": k_v}, geo)
-
-
-#: The sheet's layout (mm): the scheme's left edge and top, the gap between the scheme and the
-#: plan, the tables' left edge; the scheme's greatest height; its width in units u = (radii
-#: spanned)/SCHEME_UNITS; the angle diagram's field (x from, x to) and greatest pole distance.
-LEFT, TOP, GAP, PANEL_X = 30.0, 38.0, 14.0, 262.0
-SCHEME_H = 140.0
-SCHEME_UNITS = 14.5
-SCHEME_W_U = 15.2
-RAY_FIELD = (40.0, 225.0)
-RAY_W = RAY_FIELD[1] - RAY_FIELD[0] - 8.0
-RAY_H = 40.0
-
-
-def plan_room(height: float, k_l: float) -> float:
-    """The plan's width on the sheet (mm): what the scheme and the gap leave before the tables."""
-    scheme_w = SCHEME_W_U * height / SCHEME_UNITS / k_l
-    return PANEL_X - 12.0 - LEFT - GAP - scheme_w
-
-
-def sheet_k_l(height: float) -> float:
-    """The largest GOST 2.302 scale at which the scheme's radii fit its height on the sheet."""
-    return gost_length_scale(height, SCHEME_H).k
-
-
-def draw(solution: Any) -> list[tuple[str, Any]]:
-    from .sheets_2013_5 import sheets
-
-    return sheets(solution)
+    geo = Geometry(zs, m, a, points, plan, rays, omega_exact, (y_lo, y_hi))
+    return Build(results, c, notes, data=geo)

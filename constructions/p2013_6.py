@@ -31,8 +31,6 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Any
 
-import numpy as np
-
 from geomcad.construction import Construction, Where, left_of
 from geomcad.errors import ConstructionError, NoIntersection, ParameterError
 from geomcad.geom import Line, Vec, angle_arcs, mirror_circle
@@ -41,16 +39,14 @@ from geomcad.problem import (
     Build,
     ParamValue,
 )
-from geomcad.sheet.motion import Frames, turn
-from geomcad.sheet.scale import gost_scale_to_fit
 from geomcad.units import to_deg
 
 from .kin_2013_6 import Analysis, analyse
-from .spec_2013_6 import PARAMS, SEED_K_L
 from .spec_2013_6 import PROBLEM as PROBLEM
 
-#: The kinematics sheet (a drawing-only choice, the same for every variant): the crank turns
-#: ccw at ω1 = 10 rad/s and is drawn 60° past its position at the slider's left extreme.
+#: The position the kinematic analysis is made at (a choice that changes no published number,
+#: the same for every variant): the crank turns ccw at ω1 = 10 rad/s and stands 60° past its
+#: position at the slider's left extreme.
 ANALYSIS_OMEGA1 = 10.0
 ANALYSIS_TURN = math.radians(60.0)
 
@@ -104,7 +100,6 @@ class Geometry:
     mechanism: SixBar | None
     phi_min: float  # crank angle at the slider's left extreme
     phi_max: float
-    extent: tuple[float, float, float, float]  # model box the sheet draws (xmin, ymin, xmax, ymax)
     analysis: Analysis  # the plans at φ1 and the slider's diagrams (the kinematics sheet)
 
 
@@ -266,44 +261,9 @@ def build(p: Mapping[str, ParamValue]) -> Build:
             f"requested H = {H:g} m and K = {K:g}: the slider does not reverse at the rocker's "
             "dead centres"
         )
-    box = _extent(c, cands, l3, l4)
     analysis = analyse(mech, phi_min + ANALYSIS_TURN, ANALYSIS_OMEGA1, (phi_min, phi_max))
-    geo = Geometry(
-        H, K, l3, l4, e, theta, tuple(cands), chosen, mech, phi_min, phi_max, box, analysis
-    )
-    seed_data = all(p[q.name] == q.default for q in PARAMS)
-    return Build(results, c, notes, {"l": sheet_k_l(box, seed_data)}, geo)
-
-
-#: The field the mechanism is drawn in on the sheet (mm: x0, y0, x1, y1), left of the tables.
-VIEW = (24.0, 24.0, 256.0, 290.0)
-
-
-def sheet_k_l(box: tuple[float, float, float, float], seed_data: bool) -> float:
-    """k_l of the sheet: for the seed's data the seed's 0.005 m/mm (1:5), so that its drawing
-    and ours can be laid side by side; otherwise the largest GOST 2.302 scale at which the
-    drawing fits the field."""
-    w, h = box[2] - box[0], box[3] - box[1]
-    room_w, room_h = VIEW[2] - VIEW[0], VIEW[3] - VIEW[1]
-    if seed_data and w / SEED_K_L <= room_w and h / SEED_K_L <= room_h:
-        return SEED_K_L
-    return gost_scale_to_fit(w, h, room_w, room_h).k
-
-
-def _extent(
-    c: Construction, cands: list[Candidate], l3: float, l4: float
-) -> tuple[float, float, float, float]:
-    """The model box the sheet draws: the θ-circles, the mechanism and every solution."""
-    xs: list[float] = [-l3, l3]
-    ys: list[float] = [-0.05 * l3]
-    for circ in (c["Γ"], c["Γ′"]):
-        xs += [circ.c.x - circ.r, circ.c.x + circ.r]
-        ys += [circ.c.y - circ.r, circ.c.y + circ.r]
-    for q in [*(c[n] for n in ("O2", "C0", "C1", "B0", "B1", "O")), *(cd.O1 for cd in cands)]:
-        xs.append(q.x)
-        ys.append(q.y)
-    xs.append(c["C1"].x + 0.1 * l4)
-    return min(xs), min(ys), max(xs), max(ys)
+    geo = Geometry(H, K, l3, l4, e, theta, tuple(cands), chosen, mech, phi_min, phi_max, analysis)
+    return Build(results, c, notes, data=geo)
 
 
 def _theta_arcs_y_range(B0: Vec, B1: Vec, theta: float) -> tuple[float, float]:
@@ -337,40 +297,4 @@ def _mechanism(cd: Candidate, B0: Vec, B1: Vec, O2: Vec, l3: float, l4: float) -
         Vec(1.0, 0.0),
         branch_sign(a_ext, O2, b_ext),
         1,
-    )
-
-
-def draw(solution: Any) -> list[tuple[str, Any]]:
-    from .sheets_2013_6 import sheets
-    from .sheets_2013_6_kin import kinematics_sheet
-
-    return [*sheets(solution), kinematics_sheet(solution)]
-
-
-def motion(solution: Any, frames: int) -> Frames:
-    """The synthesized six-bar over one crank turn from the kinematics sheet's position (60°
-    past C's left extreme), at ω1 of the analysis: the joints, C on its guide, the paths of A, B
-    and C, and the velocity plan (pa, pb, pc)."""
-    geo: Geometry = solution.data
-    mech = geo.mechanism
-    assert mech is not None, "build refuses a solution that is not a crank-rocker"
-    r = mech.sweep(turn(frames, geo.phi_min + ANALYSIS_TURN, ANALYSIS_OMEGA1), ANALYSIS_OMEGA1)
-    fixed = {"O1": mech.O1, "O2": mech.O2}
-    points = {k: np.tile([v.x, v.y], (frames, 1)) for k, v in fixed.items()}
-    points |= {"A": r.A, "B": r.B, "C": r.C}
-    cx = r.C[:, 0]
-    reach = 0.15 * float(cx.max() - cx.min()) + geo.l4 * 0.1
-    y = mech.guide_p.y
-    return Frames(
-        title=f"{PROBLEM.id}: один оборот кривошипа",
-        phi=r.phi,
-        points=points,
-        links=(("O1", "A"), ("A", "B"), ("O2", "B"), ("B", "C")),
-        fixed=("O1", "O2"),
-        traced=("A", "B", "C"),
-        sliders={"C": (mech.guide_d.x, mech.guide_d.y)},
-        guides=(((float(cx.min()) - reach, y), (float(cx.max()) + reach, y)),),
-        velocities={"A": r.V_A, "B": r.V_B, "C": r.V_C},
-        plan_edges=(("A", "B"), ("B", "C")),
-        omega1=ANALYSIS_OMEGA1,
     )

@@ -28,7 +28,6 @@ import numpy as np
 from geomcad.construction import Construction
 from geomcad.dynamics import cycle_work, flywheel_inertia, speeds_from_max
 from geomcad.problem import Build, ParamValue
-from geomcad.sheet.graph import Axis
 
 from .spec_2013_8 import PROBLEM as PROBLEM
 
@@ -36,9 +35,6 @@ NOTES = [
     "restored: the seed's text lost the energy formula; the work of one hole is the area of the "
     "load diagram, E = F_max·h/2",
 ]
-
-#: Room for the load diagram's axes on the sheet (mm).
-F_ROOM_MM = (150.0, 85.0)
 
 
 @dataclass(frozen=True)
@@ -81,12 +77,4 @@ def build(p: Mapping[str, ParamValue]) -> Build:
         "J": J,
     }
     data = Data(s, F, E, 1.0 / z, N, sp.omega_max, sp.omega_min, sp.omega_mean, J)
-    # the sheet draws F in kN at the factor Axis.fit chooses; k_F is that factor in N/mm
-    k_F = Axis.fit("F", "кН", 0.0, f_max / 1000.0, F_ROOM_MM[1]).k * 1000.0
-    return Build(results, c, list(NOTES), {"F": k_F}, data)
-
-
-def draw(solution: Any) -> list[tuple[str, Any]]:
-    from .sheets_2013_8 import sheets
-
-    return sheets(solution)
+    return Build(results, c, list(NOTES), data=data)

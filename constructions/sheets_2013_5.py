@@ -8,14 +8,16 @@ pitch lines dash-dot through the pitch points; the frame's bearings and the fixe
 Beside it, on the same radii, the plan of linear velocities at k_v: horizontal lines carry each
 point's level across, the velocities are arrows from the axis v = 0, and each link's line passes
 through the ends of its points. Below: the angle diagram from pole S, its rays parallel to the
-links' lines cut the line at H above S in segments ω/k_ω. Right: the data, the results beside the
-seed's, the angular velocities three ways (mesh equations, slopes, angle diagram), the order of
-construction and the seed's errata.
+links' lines cut the line at H above S in segments ω/k_ω. Right: the data, the results (Willis),
+the angular velocities three ways (mesh equations, slopes, angle diagram) and the order of
+construction. A velocity shorter than two arrowheads is drawn as its end point and named in a
+note under the plan.
 """
 
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping
 from typing import TYPE_CHECKING, Any
 
 from geomcad.geom import Vec
@@ -33,26 +35,63 @@ from geomcad.sheet import (
 if TYPE_CHECKING:
     from geomcad.problem import Solution
 
+from geomcad.kinematics.trains import RayPlan
+from geomcad.sheet.drawing import ARROW_LEN
+from geomcad.sheet.lang import Words, current
+from geomcad.sheet.scale import ScaleStyle, gost_length_scale, nice_factor
 from geomcad.sheet.text import box as text_box
 from geomcad.sheet.text import parse
 
-from .p2013_5 import (
-    BLOCK25,
-    FRAME,
-    GAP,
-    H1,
-    H2,
-    LEFT,
-    PANEL_X,
-    PLANET,
-    RAY_FIELD,
-    SCHEME_UNITS,
-    SUN,
-    TOP,
-)
+from .p2013_5 import BLOCK25, FRAME, H1, H2, PLANET, SUN
+
+#: The sheet's layout (mm): the scheme's left edge and top, the gap between the scheme and the
+#: plan, the tables' left edge; the scheme's greatest height; its width in units u = (radii
+#: spanned)/SCHEME_UNITS; the angle diagram's field (x from, x to) and greatest pole distance.
+LEFT, TOP, GAP, PANEL_X = 30.0, 38.0, 14.0, 262.0
+SCHEME_H = 140.0
+SCHEME_UNITS = 14.5
+SCHEME_W_U = 15.2
+RAY_FIELD = (40.0, 225.0)
+RAY_W = RAY_FIELD[1] - RAY_FIELD[0] - 8.0
+RAY_H = 40.0
+
+WORDS = Words(__package__, "sheets_2013_5")
+
+
+def num(x: float, digits: int = 6) -> str:
+    """A number in the language being drawn."""
+    return fmt_number(x, current(), digits)
+
+
+def factor(k: Scale) -> str:
+    """A scale factor as the language being drawn writes it."""
+    return k.label(ScaleStyle(lang=current()))
+
 
 #: How the links are named on the sheet.
 LINK_LABEL = {SUN: "1", BLOCK25: "2–5", PLANET: "6", H1: "H_1–4", H2: "H_2–7", FRAME: "0"}
+
+
+def _factors(geo: Any) -> tuple[float, float, float]:
+    """k_l of the scheme (the largest GOST 2.302 scale at which its radii fit its height), k_v
+    of the plan (what the scheme and the gap leave before the tables), and μ_ω of the angle
+    diagram (its intercepts ω/μ_ω fit RAY_W, its pole distance stays below RAY_H)."""
+    y_lo, y_hi = geo.extent
+    height = y_hi - y_lo
+    k_l = gost_length_scale(height, SCHEME_H).k
+    v_ends = [e.x for e in geo.plan.ends.values()]
+    v_span = max(max(v_ends), 0.0) - min(min(v_ends), 0.0)
+    scheme_w = SCHEME_W_U * height / SCHEME_UNITS / k_l
+    k_v = nice_factor(v_span, PANEL_X - 12.0 - LEFT - GAP - scheme_w, "v").k
+    om = [abs(w) for w in geo.plan.omega.values()]
+    k_omega = max(nice_factor(max(om), RAY_W, "v").k, nice_factor(k_v / k_l, RAY_H, "v").k)
+    return k_l, k_v, k_omega
+
+
+def scales(sol: Solution) -> Mapping[str, float]:
+    """The sheet's factors: k_l of the scheme and k_v of the plan of linear velocities."""
+    k_l, k_v, _ = _factors(sol.data)
+    return {"l": k_l, "v": k_v}
 
 
 def sheets(sol: Solution) -> list[tuple[str, Sheet]]:
@@ -60,16 +99,18 @@ def sheets(sol: Solution) -> list[tuple[str, Sheet]]:
     geo = sol.data
     k = Scale(sol.scales["l"], "l")
     kv = Scale(sol.scales["v"], "v")
+    k_omega = _factors(geo)[2]
     tb = TitleBlock(
-        title="Планетарный механизм: передаточное отношение u1H2",
-        designation="ТММ.2013-5.01",
+        title=WORDS("tb_title"),
+        designation=WORDS("designation"),
         scale=k.ratio_text(),
+        lang=current(),
     )
     d = start("A3", tb)
-    d.text("Кинематическая схема и план линейных скоростей", (LEFT - 4.0, 13.0), 5.0)
+    d.text(WORDS("title"), (LEFT - 4.0, 13.0), 5.0)
     d.text(
-        f"{k.label()} (M {k.ratio_text() or '—'});  {kv.label()};  "
-        f"μ_ω = {fmt_number(geo.k_omega)} (рад/с)/мм",
+        f"{factor(k)} (M {k.ratio_text() or '—'});  {factor(kv)};  "
+        f"μ_ω = {num(k_omega)} {WORDS('rad_s_mm')}",
         (LEFT - 4.0, 20.0),
         3.5,
     )
@@ -77,13 +118,20 @@ def sheets(sol: Solution) -> list[tuple[str, Sheet]]:
     u = (y_hi - y_lo) / SCHEME_UNITS
     v = d.viewport(k, (0.0, y_hi), (LEFT, TOP))
     right, spots = _scheme(v, geo, u)
-    d.text("Схема (разрез по осям)", (LEFT, TOP - 12.0), 3.5)
+    d.text(WORDS("scheme"), (LEFT, TOP - 12.0), 3.5)
     x_axis = right + GAP + (-min(0.0, *(e.x for e in geo.plan.ends.values()))) / kv.k
     vp = d.viewport(k, (0.0, y_hi), (x_axis, TOP))
-    d.text("План линейных скоростей", (right + GAP, TOP - 12.0), 3.5)
-    _plan(v, vp, geo, kv, spots)
-    _rays(d, geo, k, kv, x_axis)
-    _panel(d, sol)
+    d.text(WORDS("plan"), (right + GAP, TOP - 12.0), 3.5)
+    short = _plan(v, vp, geo, kv, spots)
+    if short:
+        names = ", ".join(n.lower() for n in short)
+        # the note under the plan, below the axis' own label
+        y_note = vp.p(Vec(0.0, min(p.y for p in geo.points)))[1] + 12.0
+        note = WORDS("short", names=names, mm=num(2.0 * ARROW_LEN, 2))
+        d.paragraph(note, right + GAP, y_note, PANEL_X - 8.0 - right - GAP, 2.5)
+    rays = _scaled_rays(geo, kv.k, k_omega)
+    _rays(d, geo, rays, k, kv, k_omega)
+    _panel(d, sol, rays)
     return [("", d.finish())]
 
 
@@ -215,11 +263,12 @@ def _scheme(v: Viewport, geo: Any, u: float) -> tuple[float, dict[str, Vec]]:
         ("6", Vec(x5, y_e + 0.5 * r["6"]), (1.0, 0.0)),
         ("7", Vec(xw7, a + 0.8 * r["7"]), (1.0, 0.0)),
         ("H_1", Vec(xh1, 0.5 * (a + y_e)), (-1.0, 0.0)),
-        ("H_2", Vec(x_end - 0.6 * u, 0.0), (0.0, 1.0)),
+        ("H_2", Vec(x_end - 0.5 * u, 0.0), (0.0, 1.0)),
     ):
         v.label(q, text, 3.5, prefer=pref, clear=1.0)
-    v.d.text("вход", v.p(Vec(-0.3 * u, 0.0 + v.scale.model(2.5))), 2.5)
-    v.d.text("выход", v.p(Vec(x_end - 1.3 * u, v.scale.model(2.5))), 2.5)
+    # the input and output named at the shafts' free ends, clear of the links' numbers
+    v.label(Vec(-0.4 * u, 0.0), WORDS("input"), 2.5, prefer=(-1.0, 0.0), clear=0.5)
+    v.label(Vec(x_end + 0.4 * u, 0.0), WORDS("output"), 2.5, prefer=(1.0, -1.0), clear=0.8)
     return v.p(Vec(x_end + 0.4 * u, 0.0))[0], geo_spots
 
 
@@ -231,7 +280,12 @@ def _pv(geo: Any, k_l: float, k_v: float, q: Vec) -> Vec:
     return Vec(q.x * k_l / k_v, q.y)
 
 
-def _plan(v_scheme: Viewport, vp: Viewport, geo: Any, kv: Scale, spots: dict[str, Vec]) -> None:
+def _plan(
+    v_scheme: Viewport, vp: Viewport, geo: Any, kv: Scale, spots: dict[str, Vec]
+) -> list[str]:
+    """Draw the plan; return the points whose velocity is shorter than two arrowheads (drawn
+    as their ends only, at μ_V, and named in a note)."""
+    short: list[str] = []
     k_l = vp.scale.k
     plan = geo.plan
     ys = [p.y for p in geo.points]
@@ -243,7 +297,7 @@ def _plan(v_scheme: Viewport, vp: Viewport, geo: Any, kv: Scale, spots: dict[str
 
     # the axis v = 0: the line of the fixed link (and of the points at rest)
     vp.seg(Vec(0.0, y_min - pad), Vec(0.0, y_max + pad), "link")
-    vp.label(Vec(0.0, y_min - pad), "v = 0 (звенья 0, 3)", 2.5, prefer=(0.0, -1.0), clear=0.0)
+    vp.label(Vec(0.0, y_min - pad), WORDS("v0"), 2.5, prefer=(0.0, -1.0), clear=0.0)
     for p in geo.points:
         end = P(plan.ends[p.name])
         level = vp.p(Vec(0.0, p.y))[1]
@@ -251,8 +305,11 @@ def _plan(v_scheme: Viewport, vp: Viewport, geo: Any, kv: Scale, spots: dict[str
         x0 = v_scheme.p(spots[p.name])[0]
         x_end = max(vp.p(end)[0], vp.p(Vec(0.0, p.y))[0]) + 3.0
         vp.d.sheet.add(Polyline(((x0, level), (x_end, level)), "construction"))
-        if abs(vp.mm(end.x)) > 0.5:
+        length = abs(vp.mm(end.x))
+        if length >= 2.0 * ARROW_LEN:
             vp.arrow(Vec(0.0, p.y), end, "vector")
+        elif length > 0.0:
+            short.append(p.name)
         vp.dot(end, "result")
         vp.label(end, p.name.lower(), 3.5, prefer=(1.0 if end.x >= 0 else -1.0, 1.0), clear=0.8)
     # each link's line through the ends of its points, 5 mm beyond the outermost ones
@@ -266,17 +323,26 @@ def _plan(v_scheme: Viewport, vp: Viewport, geo: Any, kv: Scale, spots: dict[str
         a_ = (xa - 5.0 * ux, ya - 5.0 * uy)
         b_ = (xb + 5.0 * ux, yb + 5.0 * uy)
         vp.d.sheet.add(Polyline((a_, b_), "result"))
-        far = max((a_, b_), key=lambda q: abs(q[0] - vp.p(Vec(0.0, 0.0))[0]))
-        vp.d.label(far, LINK_LABEL[link], 3.5, clear=0.5)
+        # the link's name just past the line's upper end, along the line, off every other line
+        vp.d.label(a_, LINK_LABEL[link], 3.5, prefer=(-ux, -uy), clear=1.0)
+    return short
 
 
 # -- the angle diagram ---------------------------------------------------------------------------
 
 
-def _rays(d: Drawing, geo: Any, k: Scale, kv: Scale, x_axis: float) -> None:
+def _scaled_rays(geo: Any, k_v: float, k_omega: float) -> RayPlan:
+    """The recorded angle diagram enlarged about its pole S so that its pole distance is
+    k_v/k_ω (the rays keep their directions, so the intercepts read ω_i at μ_ω = k_ω)."""
+    rays = geo.rays
+    H = k_v / k_omega
+    f = H / rays.H
+    return RayPlan(rays.S, H, {k: rays.S + (e - rays.S) * f for k, e in rays.ends.items()})
+
+
+def _rays(d: Drawing, geo: Any, rays: RayPlan, k: Scale, kv: Scale, k_omega: float) -> None:
     """The angle diagram: from S, rays parallel to the links' lines; they cut the line H above S
     in segments ω_i/k_ω."""
-    rays = geo.rays
     k_l = k.k
     ends = {kk: _pv(geo, k_l, kv.k, e) for kk, e in rays.ends.items()}
     S = _pv(geo, k_l, kv.k, rays.S)
@@ -291,8 +357,7 @@ def _rays(d: Drawing, geo: Any, k: Scale, kv: Scale, x_axis: float) -> None:
     x_s = field[0] + (field[1] - field[0] - width) / 2.0 + (S.x - lo) / k_l
     v = d.viewport(k, S, (x_s, top + h_mm))
     d.text(
-        f"Угловые скорости (лучевая диаграмма): ω_i = μ_ω·(отрезок), μ_ω = μ_V/(H·μ_l) = "
-        f"{fmt_number(geo.k_omega)} (рад/с)/мм",
+        WORDS("rays_title", k=num(k_omega)),
         (LEFT - 4.0, top - 20.0),
         3.5,
     )
@@ -318,17 +383,18 @@ def _rays(d: Drawing, geo: Any, k: Scale, kv: Scale, x_axis: float) -> None:
         if row:
             d.sheet.add(Polyline(((x_mm, y_mm - 0.8), (x_mm, y_text + 1.0)), "dimension"))
         d.text(label, (x_mm, y_text), 3.5, anchor="centre")
-    x1, x2 = ((rays.ends[kk].x - rays.S.x) / kv.k for kk in (SUN, H2))
+    # the ratio of the two intercepts as read off the diagram: the quotient of the printed
+    # segments (4 significant figures), printed to 3 so that the figures agree
+    x1, x2 = (float(f"{(rays.ends[kk].x - rays.S.x) / kv.k:.4g}") for kk in (SUN, H2))
     d.text(
-        f"u_{{1H2}} = ω_1/ω_{{H2}} = {fmt_number(x1, digits=5)}/"
-        f"{fmt_number(x2, digits=4)} = {fmt_number(x1 / x2, digits=6)}",
+        f"u_{{1H2}} = ω_1/ω_{{H2}} = {num(x1, 4)}/{num(x2, 4)} = {num(x1 / x2, 3)}",
         v.p(Vec(S.x, S.y - 0.55 * rays.H)),
         3.5,
     )
     v.dim_linear(
         S,
         Vec(S.x, S.y + rays.H),
-        f"H = {fmt_number(h_mm, digits=4)}",
+        f"H = {num(h_mm, 4)}",
         offset=-(min(12.0, 0.5 * width) + 4.0) if (S.x - lo) > (hi - S.x) else 12.0,
         height=2.5,
     )
@@ -337,11 +403,11 @@ def _rays(d: Drawing, geo: Any, k: Scale, kv: Scale, x_axis: float) -> None:
 # -- the tables ----------------------------------------------------------------------------------
 
 
-def _panel(d: Drawing, sol: Solution) -> None:
+def _panel(d: Drawing, sol: Solution, rays: RayPlan) -> None:
     p, r, geo = sol.params, sol.results, sol.data
     x, y = PANEL_X, 10.0
-    d.text("Исходные данные", (x, y + 3.5), 3.5)
-    rows = [["z_1", "z_2", "z_3", "z_4", "z_5", "z_6", "z_7", "m, мм"]]
+    d.text(WORDS("data"), (x, y + 3.5), 3.5)
+    rows = [["z_1", "z_2", "z_3", "z_4", "z_5", "z_6", "z_7", WORDS("m_mm")]]
     derived = {n: n not in p for n in ("z4", "z7")}
     rows.append(
         [
@@ -352,16 +418,16 @@ def _panel(d: Drawing, sol: Solution) -> None:
             str(p["z5"]),
             str(p["z6"]),
             str(r["z7"]) + ("*" if derived["z7"] else ""),
-            fmt_number(float(p["m"]) * 1000.0),
+            num(float(p["m"]) * 1000.0),
         ]
     )
     _, h = d.table(x, y + 6.0, (18.0,) * 7 + (24.0,), rows, row_h=5.5)
     y += 6.0 + h + 2.0
-    d.text("* из условия соосности: z_4 = z_2 – z_1 – z_3,  z_7 = z_5 + 2z_6", (x, y + 2.5), 2.5)
+    d.text(WORDS("coaxial"), (x, y + 2.5), 2.5)
     y += 8.0
-    d.text("Результаты (метод Виллиса)", (x, y + 3.5), 3.5)
-    rows = [["Величина", "Значение"]]
-    num, den = r["u1H2_fraction"]
+    d.text(WORDS("results"), (x, y + 3.5), 3.5)
+    rows = [[WORDS("quantity"), WORDS("value")]]
+    top, den = r["u1H2_fraction"]
     for name, label in (
         ("W", "W"),
         ("z4", "z_4"),
@@ -373,39 +439,31 @@ def _panel(d: Drawing, sol: Solution) -> None:
         ("u1H2", "u_{1H2}"),
     ):
         exact = r[name]
-        text = str(exact) if isinstance(exact, int) else fmt_number(float(exact), digits=4)
+        text = str(exact) if isinstance(exact, int) else num(float(exact), digits=4)
         if name == "u1H2" and den != 1:
-            text = f"{num}/{den} = {text}"
+            text = f"{top}/{den} = {text}"
         rows.append([label, text])
     _, h = d.table(x, y + 6.0, (36.0, 60.0), rows, row_h=5.5)
     y += 6.0 + h + 5.0
-    d.text("Угловые скорости при ω_{H2} = 1 рад/с", (x, y + 3.5), 3.5)
-    rows = [["Звено", "уравнения зацеплений", "наклон (план)", "луч, мм"]]
+    d.text(WORDS("omegas"), (x, y + 3.5), 3.5)
+    rows = [[WORDS("link"), WORDS("by_meshes"), WORDS("by_slopes"), WORDS("by_rays")]]
     for link in (SUN, BLOCK25, PLANET, H1, H2):
         exact = geo.omega_exact[link]
-        ray_mm = (geo.rays.ends[link].x - geo.rays.S.x) / sol.scales["v"]
+        ray_mm = (rays.ends[link].x - rays.S.x) / sol.scales["v"]
         rows.append(
             [
                 LINK_LABEL[link],
                 str(exact)
                 if exact.denominator == 1
-                else f"{exact} = {fmt_number(float(exact), digits=4)}",
-                fmt_number(geo.plan.omega[link], digits=4),
-                fmt_number(ray_mm, digits=4),
+                else f"{exact} = {num(float(exact), digits=4)}",
+                num(geo.plan.omega[link], digits=4),
+                num(ray_mm, digits=4),
             ]
         )
     _, h = d.table(x, y + 6.0, (18.0, 58.0, 36.0, 34.0), rows, row_h=5.5)
     y += 6.0 + h + 5.0
-    y = d.text("Порядок построения", (x, y + 3.5), 3.5).at[1] + 2.0
-    u_txt = fmt_number(float(r["u1H2"]), digits=4)
-    steps = (
-        "радиусы r_i = m·z_i/2 откладываем на вертикали; точки O, A … F – оси и полюсы "
-        "зацеплений на одной радиальной прямой;",
-        "задаём ω_{H2} = 1 рад/с: b = ω_{H2}·a; линия H_2 через o и b;",
-        "c – полюс зацепления с неподвижным колесом 3 (v = 0): линия H_1 через c и b даёт e;",
-        "линия 6 через e и f даёт d; линия 2–5 через b и d даёт a; линия 1 через o и a;",
-        "лучи из S параллельно линиям отсекают на прямой, удалённой на H, отрезки ω_i/μ_ω; "
-        f"u_{{1H2}} = ω_1/ω_{{H2}} = {u_txt}.",
-    )
+    y = d.text(WORDS("order"), (x, y + 3.5), 3.5).at[1] + 2.0
+    u_txt = num(float(r["u1H2"]), 4)
+    steps = [WORDS(f"step_{i}") for i in range(1, 5)] + [WORDS("step_5", u=u_txt)]
     for i, step in enumerate(steps):
         y = d.paragraph(f"{i + 1}. {step}", x, y, 148.0, 2.5, indent=4.0) + 0.4

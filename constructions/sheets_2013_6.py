@@ -3,25 +3,45 @@
 A3 landscape. Left: the construction at k_l (the seed's 0.005 m/mm, 1:5, when it fits; else the
 largest GOST scale that does): the rocker's arc, the extreme positions C0, C1 and B0, B1, the
 chord B0B1, the perpendicular at B0 and the ray at 90° − θ meeting in O, the θ-circle Γ through
-O, B0, B1 and its mirror image Γ′ (their arcs that see B0B1 under θ solid, the others dashed),
+O, B0, B1 and its mirror image Γ′ (only their arcs that see B0B1 under θ: the others hug the chord),
 the lines at e from the path, every solution O1, and the seed's solution built out: the crank's
 dead-centre positions O1A0B0 and O1A1B1, the crank circle, the linkage in its mid position, and
-the dimensions O1B0 and O1B1. Right: the given data, the results beside the seed's, and all
-solutions.
+the dimensions O1B0 and O1B1. Right: the given data, the results, all solutions and the order
+of construction.
 """
 
 from __future__ import annotations
 
+import itertools
+import math
+from collections.abc import Mapping, Sequence
 from typing import TYPE_CHECKING, Any
 
+import numpy as np
+
+from geomcad.construction import Construction
 from geomcad.geom import Arc, Circle, Line, Vec, angle_arcs, circle_circle
 from geomcad.kinematics import branch_sign
-from geomcad.sheet import Drawing, Scale, Sheet, TitleBlock, Viewport, fmt_number, start
+from geomcad.sheet import Drawing, Scale, Sheet, TitleBlock, Viewport, start
+from geomcad.sheet.lang import Words, current
+from geomcad.sheet.model import ArcItem, CircleItem, Polyline
+from geomcad.sheet.scale import gost_scale_to_fit
+from geomcad.sheet.scheme import GUIDE_HALF
+from geomcad.sheet.text import box as text_box
+from geomcad.sheet.text import parse
+
+from .sheets_2013_6_kin import factor, kinematics_sheet, num, six_bar
+from .spec_2013_6 import SEED_K_L
 
 if TYPE_CHECKING:
     from geomcad.problem import Solution
 
-from .p2013_6 import VIEW
+    from .p2013_6 import Geometry
+
+WORDS = Words(__package__, "sheets_2013_6")
+
+#: The field the mechanism is drawn in on the sheet (mm: x0, y0, x1, y1), left of the tables.
+VIEW = (24.0, 24.0, 256.0, 290.0)
 
 #: The rocker's arc is drawn this far (rad) beyond B's swing.
 SWING_PAD = 0.25
@@ -29,28 +49,67 @@ SWING_PAD = 0.25
 PANEL_X = 262.0
 
 
+def extent(geo: Geometry, c: Construction) -> tuple[float, float, float, float]:
+    """The model box the sheet draws (x0, y0, x1, y1): the θ-circles, the mechanism and every
+    solution."""
+    l3, l4 = geo.l3, geo.l4
+    xs: list[float] = [-l3, l3]
+    ys: list[float] = [-0.05 * l3]
+    for circ in (c["Γ"], c["Γ′"]):
+        xs += [circ.c.x - circ.r, circ.c.x + circ.r]
+        ys += [circ.c.y - circ.r, circ.c.y + circ.r]
+    for q in [
+        *(c[n] for n in ("O2", "C0", "C1", "B0", "B1", "O")),
+        *(cd.O1 for cd in geo.candidates),
+    ]:
+        xs.append(q.x)
+        ys.append(q.y)
+    xs.append(c["C1"].x + 0.1 * l4)
+    return min(xs), min(ys), max(xs), max(ys)
+
+
+def scales(sol: Solution) -> Mapping[str, float]:
+    """k_l of the sheet: for the seed's data the seed's 0.005 m/mm (1:5), so that its drawing
+    and ours can be laid side by side; otherwise the largest GOST 2.302 scale at which the
+    drawing fits the field."""
+    x0, y0, x1, y1 = extent(sol.data, sol.construction)
+    w, h = x1 - x0, y1 - y0
+    room_w, room_h = VIEW[2] - VIEW[0], VIEW[3] - VIEW[1]
+    if sol.is_seed and w / SEED_K_L <= room_w and h / SEED_K_L <= room_h:
+        return {"l": SEED_K_L}
+    return {"l": gost_scale_to_fit(w, h, room_w, room_h).k}
+
+
 def sheets(sol: Solution) -> list[tuple[str, Sheet]]:
+    """The sheets of 2013-6: the synthesis, and the kinematic analysis of its six-bar."""
+    return [main_sheet(sol), kinematics_sheet(sol)]
+
+
+def main_sheet(sol: Solution) -> tuple[str, Sheet]:
     """The main sheet of 2013-6."""
     geo = sol.data
     c = sol.construction
     k = Scale(sol.scales["l"], "l")
     tb = TitleBlock(
-        title="Синтез шестизвенного механизма по коэффициенту K",
-        designation="ТММ.2013-6.01",
+        title=WORDS("tb_title"),
+        designation=WORDS("designation"),
         scale=k.ratio_text(),
+        lang=current(),
     )
     d = start("A3", tb)
-    x0, y0, x1, y1 = geo.extent
+    x0, y0, x1, y1 = extent(geo, c)
     cx, cy = (x0 + x1) / 2.0, (y0 + y1) / 2.0
     at = ((VIEW[0] + VIEW[2]) / 2.0, (VIEW[1] + 8.0 + VIEW[3]) / 2.0)
     v = d.viewport(k, (cx, cy), at)
-    d.text("Синтез механизма по K (метод окружности через B_0B_1)", (VIEW[0] + 2.0, 13.0), 5.0)
-    d.text(f"{k.label()}   (M {k.ratio_text() or '—'})", (VIEW[0] + 2.0, 20.0), 3.5)
+    d.text(WORDS("title"), (VIEW[0] + 2.0, 13.0), 5.0)
+    d.text(f"{factor(k)}   (M {k.ratio_text() or '—'})", (VIEW[0] + 2.0, 20.0), 3.5)
 
     _construction(v, geo, c)
     _mechanism(v, geo, c)
+    # the angle at B1 last, when every line it must keep clear of is drawn
+    _angle_with_leader(v, c["B1"], c["B0"], c["O"], "90° – θ", 12.0)
     _panel(d, sol, k)
-    return [("", d.finish())]
+    return ("", d.finish())
 
 
 def _construction(v: Viewport, geo: Any, c: Any) -> None:
@@ -59,22 +118,26 @@ def _construction(v: Viewport, geo: Any, c: Any) -> None:
     # the rocker's arc and the slider's path
     swing = Arc(Circle(O2, geo.l3), B1.angle - SWING_PAD, B0.angle + SWING_PAD)
     v.arc(swing, "centre")
-    ends = [c["C0"], c["C1"], c["B"], *(cd.O1 for cd in geo.candidates if cd.line == 1)]
-    v.line_over(c["path"], ends, "centre", over=12.0)
+    # the path's centre line where no link runs along it: left of B0, and past C1's block
+    xs = [q.x for q in (c["C0"], c["C1"], c["B"], *(cd.O1 for cd in geo.candidates))]
+    y = geo.l3
+    left, right = min(xs) - v.scale.model(12.0), max(xs) + v.scale.model(12.0)
+    if B0.x - v.scale.model(4.0) > left:
+        v.seg(Vec(left, y), Vec(B0.x - v.scale.model(4.0), y), "centre")
+    stub = c["C1"].x + v.scale.model(8.0)
+    v.seg(Vec(stub, y), Vec(max(right, stub + v.scale.model(10.0)), y), "centre")
     # B0B1, the perpendicular at B0 and the ray from B1 at 90° − θ, meeting in O
     v.seg(B0, B1, "construction")
     v.seg(B0, Op, "construction")
     v.seg(B1, Op, "construction")
     _right_angle(v, B0, B1, Op)
-    v.dim_angle(B1, B0, Op, "90° – θ", r_mm=14.0, height=2.5)
     v.dot(Op, "result")
     v.label(Op, "O", prefer=(-1.0, -1.0))
-    # the θ-circle Γ and its mirror Γ′: θ-arcs solid, the arcs of 180° − θ dashed
-    left, right = angle_arcs(B0, B1, theta)
+    # the θ-circle Γ and its mirror Γ′: only their arcs that see B0B1 under θ (the arcs of
+    # 180° − θ hug the chord and carry no solution)
     chord = Line.through(B0, B1)
-    for arc in (left, right):
+    for arc in angle_arcs(B0, B1, theta):
         v.arc(arc, "construction")
-        v.arc(Arc(arc.circle, arc.end, arc.start), "locus")
     gamma, gamma_m = c["Γ"], c["Γ′"]
     v.dot(gamma.c, "construction")
     for circ, name in ((gamma, "Γ"), (gamma_m, "Γ'")):
@@ -87,13 +150,126 @@ def _construction(v: Viewport, geo: Any, c: Any) -> None:
         m = c[step]
         pts = [*(cd.O1 for cd in geo.candidates if cd.line == line_no), m.p]
         v.line_over(m, pts, "construction", over=14.0)
-        far_end = Vec(max(q.x for q in pts), m.p.y)
-        v.label(far_end, f"y = l_3 {tag} e", height=2.5, prefer=(1.0, 1.0), clear=12.0)
+        # the line's name above its right end
+        far_end = Vec(max(q.x for q in pts) + v.scale.model(14.0), m.p.y)
+        v.label(far_end, f"y = l_3 {tag} e", height=2.5, prefer=(-1.0, 1.0), clear=0.5)
     for i, cd in enumerate(geo.candidates):
         if cd is geo.chosen:
             continue
         v.dot(cd.O1, "result")
         v.label(cd.O1, f"O_1^{{({i + 1})}}", height=3.5)
+
+
+def _ink(items: Sequence[Any]) -> np.ndarray:
+    """The drawn lines of ``items`` as paper segments (x1, y1, x2, y2): polylines by their
+    sides, circles and arcs by chords of at most about 1.5 mm."""
+    out: list[tuple[float, float, float, float]] = []
+    for it in items:
+        if isinstance(it, Polyline):
+            pts = [*it.points, *([it.points[0]] if it.closed else [])]
+            out += [(*a, *b) for a, b in itertools.pairwise(pts)]
+        elif isinstance(it, CircleItem | ArcItem):
+            if isinstance(it, CircleItem):
+                a0, sweep = 0.0, 2.0 * math.pi
+            else:
+                a0 = math.atan2(it.start[1] - it.c[1], it.start[0] - it.c[0])
+                sweep = it.sweep
+            n = max(8, int(abs(sweep) * it.r / 1.5) + 1)
+            t = a0 + np.linspace(0.0, sweep, n + 1)
+            xs, ys = it.c[0] + it.r * np.cos(t), it.c[1] + it.r * np.sin(t)
+            out += [(xs[i], ys[i], xs[i + 1], ys[i + 1]) for i in range(n)]
+    return np.array(out, dtype=np.float64).reshape(-1, 4)
+
+
+def _crossed(segs: np.ndarray, b: tuple[float, float, float, float]) -> bool:
+    """Whether a segment crosses or lies in the box b = (x0, y0, x1, y1) (Liang–Barsky, all
+    segments at once)."""
+    if segs.size == 0:
+        return False
+    x1, y1, x2, y2 = segs.T
+    dx, dy = x2 - x1, y2 - y1
+    t0, t1 = np.zeros_like(x1), np.ones_like(x1)
+    ok = np.ones(x1.shape, dtype=bool)
+    for p, q in ((-dx, x1 - b[0]), (dx, b[2] - x1), (-dy, y1 - b[1]), (dy, b[3] - y1)):
+        zero = p == 0.0
+        ok &= ~(zero & (q < 0.0))
+        r = q / np.where(zero, 1.0, p)
+        t0 = np.where(~zero & (p < 0.0), np.maximum(t0, r), t0)
+        t1 = np.where(~zero & (p > 0.0), np.minimum(t1, r), t1)
+    return bool(np.any(ok & (t0 <= t1)))
+
+
+def _angle_with_leader(
+    v: Viewport, vertex: Vec, p1: Vec, p2: Vec, text: str, r_mm: float, height: float = 2.5
+) -> None:
+    """An angle's arc at ``vertex`` whose value stands where no line crosses it, as near the
+    arc as that allows, joined to the arc's middle by a thin leader when it stands apart (the
+    angle at B1 sits among the links and the construction, where no place beside it is free)."""
+    v.dim_angle(vertex, p1, p2, text, r_mm=r_mm, height=height)
+    mid = v.d.pending.pop().anchor  # the arc's middle; the value is placed here instead
+    w, rise, down = text_box(parse(text), height)
+    segs = _ink(v.sheet.items)
+    links = _ink([it for it in v.sheet.items if it.role in ("link", "joint")])
+    # the arc's points on the paper, its middle first (as dim_angle draws it)
+    a1, a2 = (p1 - vertex).angle, (p2 - vertex).angle
+    sweep = math.remainder(a2 - a1, 2.0 * math.pi)
+    start, sweep = (a1, sweep) if sweep > 0 else (a2, -sweep)
+    c = v.p(vertex)
+    on_arc = [
+        (c[0] + r_mm * math.cos(start + sweep * t), c[1] - r_mm * math.sin(start + sweep * t))
+        for t in (0.5, 0.35, 0.65, 0.2, 0.8)
+    ]
+    # the dimensions' texts, placed at the finish, keep the places they would take now (the
+    # first candidate that crosses no line): each as a disc round its text's middle
+    # the dimensions' texts are placed at the finish, anywhere along their lines: every place
+    # they may take is kept free (a disc round the text's middle at each candidate)
+    dims = []
+    for dt in v.d.dims:
+        dw, rise = dt.box[0], dt.box[1]
+        for at in dt.candidates:
+            dims.append((at[0] + dt.t[0] * dw / 2.0, at[1] + dt.t[1] * dw / 2.0, rise + 1.0))
+
+    def near_dim(x: float, y: float, pad: float) -> bool:
+        return any(math.hypot(x - dx, y - dy) < rr + pad for dx, dy, rr in dims)
+
+    best = None
+    for r in (3.0, 5.0, 7.0, 9.0, 12.0, 15.0, 18.0, 22.0, 27.0, 33.0, 40.0):
+        for p0 in on_arc:
+            out = math.atan2(-(p0[1] - c[1]), p0[0] - c[0])  # outward through the arc
+            for k in sorted(
+                range(24), key=lambda k: abs(math.remainder(k * math.pi / 12.0 - out, 2 * math.pi))
+            ):
+                a = k * math.pi / 12.0
+                cx, cy = p0[0] + r * math.cos(a), p0[1] - r * math.sin(a)
+                box = (cx - w / 2.0 - 0.8, cy - rise / 2.0 - 0.8, cx + w / 2.0 + 0.8,
+                       cy + rise / 2.0 + down + 0.8)  # fmt: skip
+                if _crossed(segs, box) or near_dim(cx, cy, w / 2.0):
+                    continue
+                # the leader crosses no link (thin lines it may)
+                steps = [(p0[0] + (cx - p0[0]) * t / 80.0, p0[1] + (cy - p0[1]) * t / 80.0)
+                         for t in range(81)]  # fmt: skip
+                if not any(_crossed(links, (x - 0.3, y - 0.3, x + 0.3, y + 0.3))
+                           or near_dim(x, y, 0.5) for x, y in steps):  # fmt: skip
+                    best, mid = (cx, cy), p0
+                    break
+            if best is not None:
+                break
+        if best is not None:
+            break
+    if best is None:  # nowhere free: beside the arc as the label placer would
+        v.d.label(mid, text, height, clear=0.5)
+        return
+    cx, cy = best
+    if math.dist(best, mid) > w / 2.0 + 2.0:
+        # the leader from the arc to the nearer end of the text's underline
+        end = (
+            (cx - w / 2.0, cy + rise / 2.0 + 0.6)
+            if mid[0] < cx
+            else (cx + w / 2.0, cy + rise / 2.0 + 0.6)
+        )
+        v.sheet.add(Polyline((mid, end), "dimension"))
+        v.sheet.add(Polyline(((cx - w / 2.0, end[1]), (cx + w / 2.0, end[1])), "dimension"))
+    v.d.text(text, (cx - w / 2.0, cy + rise / 2.0), height)
 
 
 def _right_angle(v: Viewport, vertex: Vec, a: Vec, b: Vec, size_mm: float = 3.0) -> None:
@@ -124,37 +300,45 @@ def _mechanism(v: Viewport, geo: Any, c: Any) -> None:
         v.seg(Ax, Bx, "extreme")
         v.seg(O1, Ax, "extreme")
         v.dot(Ax)
-    # the mid position: A from circle(O1, l1) ∩ circle(B, l2) on the mechanism's branch
-    A = _mid_A(O1, ch.l1, ch.l2, B, O2, mech.branch_B)
-    v.seg(O1, A, "link")
-    v.seg(A, B, "link")
-    v.seg(O2, B, "link")
-    v.seg(B, C, "link")
-    v.guide(Vec(C0.x - 0.06 * geo.l4, geo.l3), Vec(C1.x + 0.06 * geo.l4, geo.l3), (0.0, -1.0))
     for q in (C0, C1):
         v.slider(q, role="extreme")
-    v.slider(C)
-    for q in (A, B, B0, B1):
+    for q in (B0, B1):
         v.joint(q)
-    v.pivot(O2)
-    v.pivot(O1)
-    # labels, then the dimensions of the result
-    v.label(O2, "O_2", prefer=(1.0, -1.0), clear=4.0)
-    # O1's label below its support, clear of the crank pins A, A0, A1 around it
-    v.label(O1, "O_1", prefer=(1.0, -1.0), clear=6.0)
-    v.label(A, "A", prefer=(-1.0, 1.0))
-    v.label(B, "B", prefer=(1.0, 1.0))
-    v.label(C, "C", prefer=(0.0, 1.0), clear=4.0)
-    v.label(C0, "C_0", prefer=(0.0, 1.0), clear=4.0)
-    v.label(C1, "C_1", prefer=(0.0, 1.0), clear=4.0)
+    # the mid position: A from circle(O1, l1) ∩ circle(B, l2) on the mechanism's branch, the
+    # six-bar drawn as on the kinematics sheet
+    A = _mid_A(O1, ch.l1, ch.l2, B, O2, mech.branch_B)
+    # the guide under the whole stroke, on from the scheme's own guide at C (GUIDE_HALF mm
+    # either side of it)
+    half = v.scale.model(GUIDE_HALF)
+    for a, b in ((C0.x - 0.06 * geo.l4, C.x - half), (C.x + half, C1.x + 0.06 * geo.l4)):
+        if b > a:
+            v.guide(Vec(a, geo.l3), Vec(b, geo.l3), (0.0, -1.0))
+    labels = {
+        "O2": ((1.0, -1.0), 4.0),
+        "O1": ((1.0, -1.0), 4.5),
+        "A": ((-1.0, 1.0), 1.5),
+        "B": ((1.0, 1.0), 1.5),
+        "C": ((1.0, 0.0), 4.7),
+    }
+    pts = {"O1": O1, "A": A, "B": B, "O2": O2, "C": C}
+    # link 4's number past B1's label, before C0's block
+    six_bar(v, pts, Vec(1.0, 0.0), labels, number_at={"4": 0.58})
+    for q, name in ((C0, "C_0"), (C1, "C_1")):
+        v.label(q, name, prefer=(0.0, 1.0), clear=4.0)
     v.label(B0, "B_0", prefer=(-1.0, 1.0))
     v.label(B1, "B_1", prefer=(1.0, 1.0))
     for Ax, name in ((A0, "A_0"), (A1, "A_1")):
         out = (Ax - O1).unit()  # outside the crank circle, away from O1's label
         v.label(Ax, name, height=2.5, prefer=(out.x, out.y))
     mm = 1000.0
-    v.dim_linear(O1, B0, f"O_1B_0 = {fmt_number(ch.O1B0 * mm, digits=4)}", offset=12.0, height=2.5)
-    v.dim_linear(O1, B1, f"O_1B_1 = {fmt_number(ch.O1B1 * mm, digits=4)}", offset=-12.0, height=2.5)
+    # O1B0's dimension on A's side of O1B0 (its other side holds O1B1 and θ), beyond the pin A
+    # so that it never runs through the joint
+    n = (B0 - O1).unit().perp()  # left of O1 → B0 in the model
+    side_a = (A - O1).dot(n)
+    off = max(12.0, v.mm(abs(side_a)) + 6.0)
+    offset = off if side_a > 0.0 else -off  # dim_linear's offset: left of a → b on the paper
+    v.dim_linear(O1, B0, f"O_1B_0 = {num(ch.O1B0 * mm, 4)}", offset=offset, height=2.5)
+    v.dim_linear(O1, B1, f"O_1B_1 = {num(ch.O1B1 * mm, 4)}", offset=-12.0, height=2.5)
 
 
 def _mid_A(O1: Vec, l1: float, l2: float, B: Vec, O2: Vec, branch: int) -> Vec:
@@ -167,70 +351,59 @@ def _mid_A(O1: Vec, l1: float, l2: float, B: Vec, O2: Vec, branch: int) -> Vec:
 
 
 def _panel(d: Drawing, sol: Solution, k: Scale) -> None:
-    """The tables on the right: given data, results beside the seed's, every solution."""
+    """The tables on the right: given data, results, every solution, the order of construction."""
     p = sol.params
     r = sol.results
     x, y = PANEL_X, 10.0
-    d.text("Исходные данные", (x, y + 3.5), 3.5)
-    rows = [["Параметр", "Значение"]]
+    m_ = WORDS("m")
+    d.text(WORDS("data"), (x, y + 3.5), 3.5)
+    rows = [[WORDS("param"), WORDS("value")]]
     for name, label, unit in (
-        ("H", "H", "м"),
+        ("H", "H", m_),
         ("K", "K", ""),
-        ("l3", "l_3", "м"),
-        ("l4", "l_4", "м"),
-        ("e", "e", "м"),
+        ("l3", "l_3", m_),
+        ("l4", "l_4", m_),
+        ("e", "e", m_),
     ):
-        rows.append([label, f"{fmt_number(float(p[name]))} {unit}".strip()])
+        rows.append([label, f"{num(float(p[name]))} {unit}".strip()])
     _, h = d.table(x, y + 6.0, (40.0, 40.0), rows)
     y += 6.0 + h + 6.0
-    d.text("Результаты", (x, y + 3.5), 3.5)
-    rows = [["Величина", "Значение"]]
+    d.text(WORDS("results"), (x, y + 3.5), 3.5)
+    rows = [[WORDS("quantity"), WORDS("value")]]
     mmk = k.k
     for name, label, unit, scale in (
         ("theta_deg", "θ", "°", 1.0),
-        ("O1B0", "O_1B_0", "мм*", mmk),
-        ("O1B1", "O_1B_1", "мм*", mmk),
-        ("l1", "l_1", "м", 1.0),
-        ("l2", "l_2", "м", 1.0),
-        ("H_check", "H (анализ)", "м", 1.0),
-        ("K_check", "K (анализ)", "", 1.0),
+        ("O1B0", "O_1B_0", WORDS("mm") + "*", mmk),
+        ("O1B1", "O_1B_1", WORDS("mm") + "*", mmk),
+        ("l1", "l_1", m_, 1.0),
+        ("l2", "l_2", m_, 1.0),
+        ("H_check", WORDS("H_check"), m_, 1.0),
+        ("K_check", WORDS("K_check"), "", 1.0),
     ):
         exact = float(r[name]) / scale
-        rows.append([label, f"{fmt_number(exact, digits=4)} {unit}".strip()])
+        rows.append([label, f"{num(exact, 4)} {unit}".strip()])
     _, h = d.table(x, y + 6.0, (40.0, 40.0), rows)
     y += 6.0 + h + 4.0
-    d.text(f"* на чертеже, {k.label()}", (x, y + 2.5), 2.5)
+    d.text(WORDS("on_drawing", k=factor(k)), (x, y + 2.5), 2.5)
     y += 8.0
-    d.text("Все решения (O_1 на прямых y = l_3 ± e)", (x, y + 3.5), 3.5)
-    rows = [["№", "O_1 (x; y), м", "l_1, м", "l_2, м", "кривош."]]
+    d.text(WORDS("all"), (x, y + 3.5), 3.5)
+    rows = [["№", f"O_1 (x; y), {m_}", f"l_1, {m_}", f"l_2, {m_}", WORDS("crank")]]
     for i, s in enumerate(r["solutions"]):
         ox, oy = s["O1"]
         rows.append(
             [
                 str(i + 1),
-                f"{fmt_number(ox, digits=4)}; {fmt_number(oy, digits=4)}",
-                fmt_number(s["l1"], digits=4),
-                fmt_number(s["l2"], digits=4),
-                "да" if s["crank_rocker"] else "нет",
+                f"{num(ox, 4)}; {num(oy, 4)}",
+                num(s["l1"], 4),
+                num(s["l2"], 4),
+                WORDS("yes" if s["crank_rocker"] else "no"),
             ]
         )
     _, h = d.table(x, y + 6.0, (10.0, 48.0, 26.0, 26.0, 36.0), rows)
     y += 6.0 + h + 6.0
-    y = d.text("Порядок построения", (x, y + 3.5), 3.5).at[1] + 2.0
-    th = fmt_number(float(r["theta_deg"]), digits=4)
-    steps = (
-        "механизм в среднем положении O_2BC и в крайних O_2B_0C_0, O_2B_1C_1 (ход ползуна H);",
-        f"θ = 180°·(K – 1)/(K + 1) = {th}°;",
-        "перпендикуляр к B_0B_1 в точке B_0 и луч из B_1 под углом 90°\u00a0–\u00a0θ к B_1B_0 "
-        "пересекаются в точке O;",
-        "окружность Γ через O, B_0, B_1 (OB_1 – диаметр) и её зеркальный образ Γ' относительно "
-        "B_0B_1: дуги, из которых хорда B_0B_1 видна под углом θ;",
-        "прямые y\u00a0=\u00a0l_3\u00a0±\u00a0e пересекают эти дуги в точках O_1; решение "
-        "задачи – левая точка на y\u00a0=\u00a0l_3\u00a0–\u00a0e;",
-        "l_1 = (O_1B_1 – O_1B_0)/2, l_2 = (O_1B_1 + O_1B_0)/2;",
-        f"проверка анализом за полный оборот кривошипа: H = "
-        f"{fmt_number(float(r['H_check']), digits=4)} м, K = "
-        f"{fmt_number(float(r['K_check']), digits=4)}.",
-    )
+    y = d.text(WORDS("order"), (x, y + 3.5), 3.5).at[1] + 2.0
+    steps = [WORDS(f"step_{i}") for i in range(1, 8)]
+    steps[1] = WORDS("step_2", theta=num(float(r["theta_deg"]), 4))
+    steps[6] = WORDS("step_7", H=num(float(r["H_check"]), 4), K=num(float(r["K_check"]), 4))
     for i, step in enumerate(steps):
         y = d.paragraph(f"{i + 1}. {step}", x, y, 146.0, 2.5, indent=4.0) + 0.6

@@ -13,7 +13,7 @@
 """
 
 # This module loads without numpy or the construction code: `geomcad list` and `--help` read it.
-# build and draw live in p2013_5.py and load on first use.
+# build lives in p2013_5.py, the sheet in sheets_2013_5.py; both load on first use.
 
 from __future__ import annotations
 
@@ -82,5 +82,6 @@ PROBLEM = Problem(
     results=RESULTS,
     seed=SEED,
     build=lazy(".p2013_5:build", __package__),
-    draw=lazy(".p2013_5:draw", __package__),
+    draw=lazy(".sheets_2013_5:sheets", __package__),
+    scales=lazy(".sheets_2013_5:scales", __package__),
 )

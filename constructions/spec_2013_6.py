@@ -9,13 +9,14 @@
 - Sheet (A3, 1:5): the mechanism in its mid and extreme positions, the whole construction, the
   dimensions O1B0 and O1B1, and tables of the data, the results, every solution and the order
   of construction.
-- Sheet ``2013-6-kinematics`` (A2): the synthesized six-bar at the crank 60° past the slider's left
-  extreme (ω1 = 10 rad/s), its velocity and acceleration plans, and the slider's s, v, a over a
-  turn from the vectorized sweep, with the plans' values marked on the curves.
+- Sheet ``2013-6-kinematics`` (A3, 1:5): the synthesized six-bar at the crank 60° past the
+  slider's left extreme (ω1 = 10 rad/s), its velocity and acceleration plans with their vector
+  equations, and the slider's s, v, a over a turn from the vectorized sweep, with the plans'
+  values marked on the curves.
 """
 
 # This module loads without numpy or the construction code: `geomcad list` and `--help` read it.
-# build and draw live in p2013_6.py and load on first use.
+# build lives in p2013_6.py, the sheets in sheets_2013_6*.py; they load on first use.
 
 from __future__ import annotations
 
@@ -58,7 +59,8 @@ PROBLEM = Problem(
     results=RESULTS,
     seed=SEED,
     build=lazy(".p2013_6:build", __package__),
-    draw=lazy(".p2013_6:draw", __package__),
-    motion=lazy(".p2013_6:motion", __package__),
+    draw=lazy(".sheets_2013_6:sheets", __package__),
+    motion=lazy(".sheets_2013_6_kin:motion", __package__),
+    scales=lazy(".sheets_2013_6:scales", __package__),
     seed_k_l=SEED_K_L,
 )

@@ -6,11 +6,12 @@
   J = 2E/(ω_max² − ω_min²) (``geomcad.dynamics.flywheel``).
 - Reports the exact J beside the seed's 1,89, which it computed from rounded speeds.
 - Sheet (A3): the load diagram with the work hatched, the flywheel's energy balance ΔT(t) over
-  two cycles, the results and the solution step by step.
+  two cycles, the kinematic scheme of the press with its flywheel, the results and the solution
+  step by step.
 """
 
 # This module loads without numpy or the construction code: `geomcad list` and `--help` read it.
-# build and draw live in p2013_8.py and load on first use.
+# build lives in p2013_8.py, the sheet in sheets_2013_8.py; both load on first use.
 
 from __future__ import annotations
 
@@ -57,5 +58,6 @@ PROBLEM = Problem(
     results=RESULTS,
     seed=SEED,
     build=lazy(".p2013_8:build", __package__),
-    draw=lazy(".p2013_8:draw", __package__),
+    draw=lazy(".sheets_2013_8:sheets", __package__),
+    scales=lazy(".sheets_2013_8:scales", __package__),
 )

@@ -127,7 +127,21 @@ def test_the_sheet() -> None:
     ((name, sheet),) = geomcad.solve(PID).sheets()
     assert name == ""
     assert not layout_problems(sheet)
-    assert {"Fmax", "h", "ωmax", "ωmin"} <= labels(sheet)
+    assert {"s = h", "ω = ωmax", "1", "2", "3", "маховик", "двигатель"} <= labels(sheet)
     texts = " ".join(t.text for t in sheet.texts())
     assert "E = Fmax·h/2 = 4241 Дж" in texts
-    assert "μF = 4 кН/мм" in texts  # the load diagram's force scale
+    assert "Fmax = 282,7 кН" in texts and "ω = ωmin" in texts
+    assert "μF = 2,5 кН/мм" in texts  # the load diagram's force scale
+
+
+def test_speeds_are_not_written_as_tick_values() -> None:
+    """ω_max and ω_min name the energy diagram's top and foot inside its field: no such text
+    stands left of the ΔT axis or under the t axis, where the tick values are."""
+    sheet = geomcad.solve(PID).sheets()[0][1]
+    texts = sheet.texts()
+    ticks = [t for t in texts if t.text in ("0,2", "4000")]
+    t_row = max(t.at[1] for t in ticks if t.text == "0,2")  # the lower graph's x tick values
+    y_col = max(t.at[0] + t.width for t in ticks if t.text == "4000")
+    for t in texts:
+        if t.text.startswith("ω = "):
+            assert t.at[0] > y_col and t.at[1] < t_row - 2.0, t

@@ -43,12 +43,7 @@ BASELINE: dict[tuple[str, str], dict[str, int]] = {
     ("2013-3", ""): {"anchor": 1, "empty": 1},
     # text of the panel on its table's rules, and s = 18,1 on its dimension's extension line
     ("2013-4", ""): {"label-line": 4, "short-vector": 2},
-    ("2013-5", ""): {"short-vector": 2},
-    # y = l3 ± e asked 12 mm off their lines' ends; O1 kept clear of A0 and the crank's circle
-    ("2013-6", ""): {"anchor": 4},
-    ("2013-6", "kinematics"): {"short-vector": 2, "empty": 1},
     ("2013-7", ""): {"anchor": 1, "short-vector": 3},
-    ("2013-8", ""): {"anchor": 1, "empty": 1},
     ("2013-9", ""): {},
     ("2013-9", "motion"): {"empty": 1},
     # O on the yoke's bar that runs through the pivot; V_D = V_2 by its arrow on the bar

@@ -50,10 +50,12 @@ def draw_plan(
     lang: Lang | None = None,
     style: ScaleStyle | None = None,
     title: str | None = None,
+    min_mm: float = 0.5,
 ) -> Viewport:
     """Draw ``plan`` at ``scale`` centred in the sheet rectangle ``box`` (x0, y0, x1, y1; the
     title goes on its top edge: ``title``, or the plan's kind with its factor) and return the
-    viewport (pole at the plan's origin)."""
+    viewport (pole at the plan's origin). A vector shorter than ``min_mm`` on the paper gets
+    no arrow: its end point and label stand for it (the caller says so in a note)."""
     x0, y0, x1, y1 = plan.extent()
     bx0, by0, bx1, by1 = box
     if title is None:
@@ -69,7 +71,7 @@ def draw_plan(
         v.seg(ln.line.at(min(ts) - over), ln.line.at(max(ts) + over), "construction")
     for vec in plan.vectors:
         a, b = plan.points[vec.tail], plan.points[vec.head]
-        if scale.mm((b - a).norm) > 0.5:
+        if scale.mm((b - a).norm) >= min_mm:
             v.arrow(a, b, "vector" if vec.known else "result")
     groups: list[list[str]] = []
     for name, p in plan.points.items():
