@@ -38,6 +38,7 @@ into the title block or графа 26 is cut back to the larger of its parts cle
 
 from __future__ import annotations
 
+import bisect
 import itertools
 import math
 from collections.abc import Callable, Iterator, Mapping, Sequence
@@ -68,6 +69,9 @@ FIELD_MARGIN = 3.0
 #: A title line's room: its cap height times this, plus :data:`TITLE_GAP`.
 TITLE_LEAD = 1.5
 TITLE_GAP = 1.5
+#: What a vector shorter than two arrowheads costs the search, against log(drawn area): a view
+#: drawn 1.4 times larger (twice the area) is worth about two more short vectors.
+SHORT_COST = 0.35
 #: A content narrower than this share of its larger side counts as this wide (a plan along a
 #: line still needs room for its labels).
 THIN = 0.15
@@ -166,6 +170,12 @@ class View:
     def stretch(self) -> tuple[tuple[float, float], tuple[float, float]]:
         """A stretch view's least and preferred (width, height) in mm."""
         return (40.0, 30.0), (120.0, 80.0)
+
+    def lengths(self) -> Sequence[float]:
+        """The model lengths of the vectors a scaled view draws (a plan's, a polygon's): the
+        search counts those that would come out shorter than ``readable_mm`` (two arrowheads)
+        and prefers a scale that leaves fewer of them."""
+        return ()
 
     def used(self, w: float, h: float) -> tuple[float, float]:
         """The size (mm) a stretch view really draws in a room of w × h (its factors may be
@@ -490,6 +500,7 @@ class _Leaf:
     raw_k: float  # scaled: the continuous scale that fits
     content: tuple[float, float]  # scaled: the content's model size (thin ones widened)
     area: float  # stretch: the area it really draws (mm²)
+    lengths: tuple[float, ...] = ()  # scaled: its vectors' lengths, sorted
 
     @staticmethod
     def of(v: View, cell: Box) -> _Leaf:
@@ -511,7 +522,10 @@ class _Leaf:
             ext = _ext(v)
             assert ext is not None
             content = _content(ext)
-        return _Leaf(cell, kind, _group(v), bad, raw_k, content, area)
+        lengths = v._memo.get("lengths")
+        if lengths is None:
+            lengths = v._memo["lengths"] = tuple(sorted(v.lengths())) if kind == "scaled" else ()
+        return _Leaf(cell, kind, _group(v), bad, raw_k, content, area, lengths)
 
 
 def _leaf_score(v: View, cell: Box) -> float:
@@ -861,11 +875,22 @@ def _score(ev: _Eval) -> tuple[float, ...]:
             continue
         v = first[g]
         rounded[g] = round_scale(k, v.quantity, v.series).k if k > 0.0 else 1.0
-        if v.readable > 0.0 and v.readable / rounded[g] < v.readable_mm:
-            bad += v.readable_mm - v.readable / rounded[g]
+    short = 0
+    for key, leaf in ev.leaves.items():
+        if leaf.kind != "scaled" or not math.isfinite(rounded[leaf.group]):
+            continue
+        v = ev.views[key]
+        k = rounded[leaf.group]
+        if v.readable > 0.0 and v.readable / k < v.readable_mm:
+            bad += v.readable_mm - v.readable / k
+        if leaf.lengths:
+            # drawn (over half a millimetre) yet shorter than two arrowheads
+            short += bisect.bisect_left(leaf.lengths, v.readable_mm * k) - bisect.bisect_right(
+                leaf.lengths, 0.5 * k
+            )
     score_r = sum(w * math.log(a) for a, w in _areas(ev, rounded).values())
     score_c = sum(w * math.log(a) for a, w in _areas(ev, raw).values())
-    return (-round(bad, 6), score_r + 0.1 * score_c)
+    return (-round(bad, 6), score_r + 0.1 * score_c - SHORT_COST * short)
 
 
 def _fills(lay: Layout) -> list[float]:

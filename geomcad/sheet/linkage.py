@@ -89,7 +89,7 @@ def _trees(s: Solved, accel: Sequence[Position]) -> tuple[tuple[Tree, ...], _Mec
     vplans = Grid(
         *[
             PlanView(P.vp, title=WORDS("position", i=i, phi=_deg(P.phi)), group="v",
-                     show_scale=False)
+                     show_scale=False, weight=2.0)
             for i, P in enumerate(s.positions)
         ],
         title=WORDS("vplans"),

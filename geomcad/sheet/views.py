@@ -146,6 +146,10 @@ class PlanView(View):
     def extent(self) -> Extent | None:
         return self.plan.extent()
 
+    def lengths(self) -> Sequence[float]:
+        pts = self.plan.points
+        return [(pts[v.head] - pts[v.tail]).norm for v in self.plan.vectors]
+
     def draw(self, d: Drawing, at: Placed) -> None:
         assert at.viewport is not None
         plan_lines(at.viewport, self.plan)
@@ -240,6 +244,9 @@ class Polygon(View):
 
     def extent(self) -> Extent | None:
         return self._ext
+
+    def lengths(self) -> Sequence[float]:
+        return [pv.magnitude for poly, _ in self.layers for pv in poly.vectors]
 
     def draw(self, d: Drawing, at: Placed) -> None:
         assert at.viewport is not None
