@@ -673,8 +673,8 @@ class _Solver:
 
     def _options(self, nd: Node, fine: bool = False) -> list[tuple[float, ...] | int]:
         """A node's options: a Choice's items, a Grid's column counts, or the splits of a row
-        or column: its flexible items' shares in coarse steps, or (``fine``) in fine steps
-        within one coarse step of the current split."""
+        or column: its flexible items' shares in coarse steps, or (``fine``) in quarter steps
+        within half a coarse step of the current split."""
         if isinstance(nd, Choice):
             return list(range(len(nd.items)))
         if isinstance(nd, Grid):
@@ -697,7 +697,7 @@ class _Solver:
                 continue
             parts = (*combo, steps - sum(combo))
             if fine and any(
-                abs(c / steps - sh) > 1.0 / coarse + 1e-9
+                abs(c / steps - sh) > 0.5 / coarse + 1e-9
                 for c, sh in zip(parts, share, strict=True)
             ):
                 continue
@@ -748,8 +748,8 @@ class _Solver:
         """Coordinate search over the splits and grid shapes, the choices held: in coarse
         steps, then in fine steps near the coarse optimum."""
         best_ev, best = self.evaluate()
-        for fine in (False, True):
-            for _ in range(4):
+        for fine, rounds in ((False, 3), (True, 2)):
+            for _ in range(rounds):
                 improved = False
                 for nd in self.nodes:
                     if isinstance(nd, Choice) or (fine and isinstance(nd, Grid)):
