@@ -13,6 +13,7 @@ every vector is drawn at the stated μ. Its words come from ``strings/<lang>/lin
 from __future__ import annotations
 
 import math
+import re
 import weakref
 from collections.abc import Sequence
 from dataclasses import dataclass, replace
@@ -171,13 +172,25 @@ def _title(
     lk: Linkage, what: str, designation: str, k: Scale | None, no: int, count: int
 ) -> TitleBlock:
     return TitleBlock(
-        title=f"{what}. {lk.title}" if len(lk.title) < 40 else what,
+        title=f"{what}. {file_title(lk)}" if 0 < len(file_title(lk)) < 40 else what,
         designation=designation,
         scale=k.ratio_text() if k is not None else "",
         sheet_no=no,
         sheets=count,
         lang=current(),
     )
+
+
+#: Letters of another script than the language's: a file's title in them stays off its sheets
+#: (Cyrillic on an English sheet).
+_FOREIGN = {"en": re.compile(f"[{chr(0x400)}-{chr(0x4FF)}]")}
+
+
+def file_title(lk: Linkage) -> str:
+    """The file's title, where it is written in the language being drawn ("" on an English
+    sheet for a Russian title: the title is the user's words, not a table's)."""
+    foreign = _FOREIGN.get(current())
+    return "" if foreign is not None and foreign.search(lk.title) else lk.title
 
 
 def _through(s: Solved) -> str:
@@ -482,7 +495,7 @@ def motion(s: Solved, frames: int) -> Frames:
                 guides.append(((float(a[0]), float(a[1])), (float(b[0]), float(b[1]))))
     traced = tuple(dict.fromkeys((lk.joint, *(p.name for p in lk.points), lk.output)))
     return Frames(
-        title=WORDS("motion", title=lk.title),
+        title=WORDS("motion", title=file_title(lk) or lk.title),
         phi=phi,
         points=points,
         links=tuple(links),

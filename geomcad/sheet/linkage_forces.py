@@ -42,7 +42,7 @@ from geomcad.sheet.drawing import Viewport
 from geomcad.sheet.graph import Axis, Graph
 from geomcad.sheet.lang import Words, current
 from geomcad.sheet.linkage import WORDS as KIN_WORDS
-from geomcad.sheet.linkage import link_bodies, table_number
+from geomcad.sheet.linkage import file_title, link_bodies, table_number
 from geomcad.sheet.loads import force, moment
 from geomcad.sheet.plans import markup_of
 from geomcad.sheet.scale import Scale
@@ -99,7 +99,7 @@ def force_sheets(
 
 def _title(lk: Linkage, what: str, designation: str, no: int, count: int) -> TitleBlock:
     return TitleBlock(
-        title=f"{what}. {lk.title}" if len(lk.title) < 40 else what,
+        title=f"{what}. {file_title(lk)}" if 0 < len(file_title(lk)) < 40 else what,
         designation=designation,
         sheet_no=no,
         sheets=count,
@@ -119,7 +119,12 @@ def _sheet2(d: Drawing, s: Solved, P: Position, f: Forces, k: int) -> None:
     mech = _Loaded(lk, P, f, WORDS("mech", k=k, phi=_num(math.degrees(P.phi) % 360.0)))
     bodies = [_FreeBody(lk, P, gf) for gf in f.groups]
     polys = [
-        Polygon(poly, title=_poly_title(gf, name), margin=8.0)
+        Polygon(
+            poly,
+            title=_poly_title(gf, name),
+            margin=8.0,
+            names={pv.name: load_name(pv.name) for pv in poly.vectors},
+        )
         for gf in f.groups
         for name, poly in gf.polygons
     ]
@@ -132,6 +137,12 @@ def _sheet2(d: Drawing, s: Solved, P: Position, f: Forces, k: int) -> None:
             Row(Column(mech, lever), Column(Grid(*bodies), Row(Grid(*polys), table))),
         ),
     )
+
+
+def load_name(name: str) -> str:
+    """A load's name (the model's: ``Ф_2`` for an inertia force, as the subject writes it) in
+    the language being drawn: the inertia force's letter from the table (Greek Φ in English)."""
+    return name.replace(chr(0x424), WORDS("inertia"))
 
 
 def _poly_title(gf: GroupForces, name: str) -> str:
@@ -155,9 +166,17 @@ def _draw_loads(
 ) -> None:
     for ld in loads:
         if ld.force is not None and ld.at is not None:
-            force(v, ld.at, ld.force, k_F, ld.name, role=role, height=2.5)
+            force(v, ld.at, ld.force, k_F, load_name(ld.name), role=role, height=2.5)
         elif ld.moment != 0.0:
-            moment(v, centre_vec(lk, ld.link, P.pos), ld.moment, 6.0, ld.name, role, height=2.5)
+            moment(
+                v,
+                centre_vec(lk, ld.link, P.pos),
+                ld.moment,
+                6.0,
+                load_name(ld.name),
+                role,
+                height=2.5,
+            )
 
 
 class _Loaded(View):
@@ -230,7 +249,8 @@ class _FreeBody(View):
             _draw_loads(v, lk, P, gf.loads[i], self.kF.k, "vector")
         for r in gf.reactions:
             if r.on in links:
-                force(v, r.at, r.force, self.kF.k, r.name, arrive=True, role="result", height=2.5)
+                force(v, r.at, r.force, self.kF.k, load_name(r.name), arrive=True, role="result",
+                      height=2.5)  # fmt: skip
                 if r.couple:
                     label = f"M_{{{r.of}{r.on}}}"
                     moment(v, P.pos[r.joint], r.couple, 6.0, label, "result", height=2.5)
@@ -294,7 +314,7 @@ class _Lever(View):
             v.label(q, ", ".join(names), 2.5, clear=0.8)
         for it in lev.items:
             if self.kF.mm(it.force.norm) >= 1.0:
-                force(v, it.image, it.force, self.kF.k, it.name, height=2.5)
+                force(v, it.image, it.force, self.kF.k, load_name(it.name), height=2.5)
         force(v, lev.images[lk.joint], lev.F_bal, self.kF.k, WORDS("P_bal"), role="result",
               height=2.5)  # fmt: skip
 
@@ -305,9 +325,9 @@ def _table2(f: Forces) -> Table:
     for lds in f.loads.values():
         for ld in lds:
             if ld.force is not None:
-                rows.append([ld.name, _num(ld.force.norm), N])
+                rows.append([load_name(ld.name), _num(ld.force.norm), N])
             else:
-                rows.append([ld.name, _num(ld.moment), Nm])
+                rows.append([load_name(ld.name), _num(ld.moment), Nm])
     big = max(r.force.norm for r in f.reactions)
     for i, j in f.pairs:
         name = f"R_{{{i}{j}}}" if j < 10 else f"R_{{{i},{j}}}"
