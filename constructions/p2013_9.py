@@ -49,7 +49,6 @@ from geomcad.dynamics.analogues import Array, remember_last
 from geomcad.errors import ParameterError
 from geomcad.geom import Vec
 from geomcad.problem import Build, ParamValue
-from geomcad.sheet.scale import nice_factor
 from geomcad.units import deg
 
 from .spec_2013_9 import PROBLEM as PROBLEM
@@ -65,9 +64,6 @@ NOTES = [
     "J_pr·φ''); the correct line is (J + m·r²·cos²φ)·φ'' − ½·m·r²·sin 2φ·φ'² = "
     "M(t) − ½·c·r²·sin 2φ − k·r²·cos²φ·φ'",
 ]
-
-#: Force arrows on the sheet: the largest force gets at most this many mm.
-FORCE_ROOM_MM = 40.0
 
 
 @dataclass(frozen=True)
@@ -102,7 +98,6 @@ class Data:
     yoke: Yoke
     reactions: Reactions
     motion: Trajectory
-    k_F: float
     M_t: float
 
 
@@ -199,11 +194,9 @@ def build(p: Mapping[str, ParamValue]) -> Build:
         "phi_T": phi_T,
         "omega_T": omega_T,
     }
-    biggest = max(n_pin, results["F_spring"], results["F_damper"], results["F_inertia_rod"])
-    k_F = nice_factor(biggest, FORCE_ROOM_MM, "F").k if biggest > 0.0 else 1.0
     notes = [*NOTES, f"the motion from rest is integrated by {ode_settings(traj.method)}"]
-    data = Data(r, phi, dphi, ddphi, x, xd, xdd, y, R, traj, k_F, float(M(t)))
-    return Build(results, c, notes, {"F": k_F}, data)
+    data = Data(r, phi, dphi, ddphi, x, xd, xdd, y, R, traj, float(M(t)))
+    return Build(results, c, notes, data=data)
 
 
 def kinetostatics(
@@ -241,9 +234,3 @@ def kinetostatics(
     ks.couple("M_{02}", None, "2")
     ks.balancing_torque("M_b", "1")
     return ks
-
-
-def draw(solution: Any) -> list[tuple[str, Any]]:
-    from .sheets_2013_9 import sheets
-
-    return sheets(solution)

@@ -25,12 +25,13 @@ from typing import TYPE_CHECKING, Any
 from geomcad.forces import ForcePolygon, FrictionCircle
 from geomcad.geom import Circle, Line, Vec, line_circle
 from geomcad.sheet import Drawing, Scale, Sheet, TitleBlock, Viewport, fmt_number, start
-from geomcad.sheet.scale import GOST_RATIOS
+from geomcad.sheet.scale import GOST_RATIOS, gost_scale_to_fit, nice_factor
 
 if TYPE_CHECKING:
     from geomcad.problem import Solution
 
-from .p2013_7 import MECH_ROOM, PLAN2_ROOM, PLAN6_ROOM, ball_radius, plan_box
+from .p2013_7 import Forces, Geometry
+from .spec_2013_7 import SEED_K_F, SEED_K_L
 
 #: Sheet regions (mm). The mechanism's room starts at MECH_AT; the force plan of arm 6 and the
 #: order of construction are in the middle column; the sleeve's plan, the tables and the notes on
@@ -47,6 +48,70 @@ INSETS = (22.0, 176.0, 228.0, 290.0)  # x0, y0, x1, y1
 ARROW_MM = 14.0
 #: An inset shows its friction circle at most this many mm across.
 INSET_CIRCLE_MM = 24.0
+
+
+def scales(sol: Solution) -> dict[str, float]:
+    """The sheet's k_l and k_F (for ``verify`` and the drawing): the seed's 1:2 and 1 N/mm for
+    its data where they fit, else the largest that fit the sheet's rooms."""
+    geo: Geometry = sol.data
+    box = extent(geo)
+    return {"l": sheet_k_l(box, sol.is_seed), "F": sheet_k_F(geo.run, geo.free, sol.is_seed)}
+
+
+def extent(geo: Geometry) -> tuple[float, ...]:
+    """The model box of the mechanism drawing: the shaft, the half-governor with its ball, Q and
+    K, with a margin for the force arrows and labels."""
+    run = geo.run
+    rb = ball_radius(geo.D.dist(geo.H))
+    B, F, D, H = geo.B, geo.F, geo.D, geo.H
+    pts = [B, F, H, run.Q, run.K, Vec(0.0, 0.0), Vec(0.0, B.y), D + Vec(rb, rb), D - Vec(rb, rb)]
+    xs = [q.x for q in pts]
+    ys = [q.y for q in pts]
+    pad = 0.08 * max(max(xs) - min(xs), max(ys) - min(ys))
+    return min(xs) - pad, min(ys) - pad, max(xs) + pad, max(ys) + pad
+
+
+def ball_radius(l_DH: float) -> float:
+    """The radius the ball D is drawn with (the problem gives none): 6 % of the arm HD."""
+    return 0.06 * l_DH
+
+
+#: The room (mm: width, height) of the mechanism drawing and of the two force plans on the sheet.
+MECH_ROOM = (134.0, 140.0)
+PLAN2_ROOM = (56.0, 100.0)
+PLAN6_ROOM = (92.0, 72.0)
+
+
+def sheet_k_l(box: tuple[float, ...], seed_data: bool) -> float:
+    """k_l of the sheet: the seed's 0.002 m/mm (1:2) for its data when the drawing fits,
+    otherwise the largest GOST 2.302 scale at which it fits its field."""
+    w, h = box[2] - box[0], box[3] - box[1]
+    room_w, room_h = MECH_ROOM
+    if seed_data and w / SEED_K_L <= room_w and h / SEED_K_L <= room_h:
+        return SEED_K_L
+    return gost_scale_to_fit(w, h, room_w, room_h).k
+
+
+def plan_box(poly: ForcePolygon) -> tuple[float, float, float, float]:
+    """The plan extent (N) of a force polygon: xmin, ymin, xmax, ymax of its vertices."""
+    xs = [q.x for vv in poly.vectors for q in (vv.tail, vv.head)]
+    ys = [q.y for vv in poly.vectors for q in (vv.tail, vv.head)]
+    return min(xs), min(ys), max(xs), max(ys)
+
+
+def sheet_k_F(run: Forces, free: Forces, seed_data: bool) -> float:
+    """k_F of the force plans: the seed's 1 N/mm for its data when both plans fit their room,
+    otherwise the smallest factor 1, 2, 2.5, 4 or 5 × 10^n at which they do. The plan of arm 6
+    also carries the frictionless polygon, drawn from the same pole."""
+    need = 0.0
+    for polys, room in (((run.tri2,), PLAN2_ROOM), ((run.poly6, free.poly6), PLAN6_ROOM)):
+        boxes = [plan_box(pp) for pp in polys]
+        w = max(b[2] for b in boxes) - min(b[0] for b in boxes)
+        h = max(b[3] for b in boxes) - min(b[1] for b in boxes)
+        need = max(need, w / room[0], h / room[1])  # N per mm
+    if seed_data and need <= SEED_K_F:
+        return SEED_K_F
+    return nice_factor(need, 1.0, "F").k
 
 
 def sheets(sol: Solution) -> list[tuple[str, Sheet]]:
@@ -78,7 +143,7 @@ def sheets(sol: Solution) -> list[tuple[str, Sheet]]:
 
 def _mechanism(d: Drawing, geo: Any, k: Scale) -> None:
     run = geo.run
-    x0, y0, x1, y1 = geo.extent
+    x0, y0, x1, y1 = extent(geo)
     at = (MECH_AT[0] + MECH_ROOM[0] / 2.0, MECH_AT[1] + MECH_ROOM[1] / 2.0)
     v = d.viewport(k, ((x0 + x1) / 2.0, (y0 + y1) / 2.0), at)
     B, F, D, H = geo.B, geo.F, geo.D, geo.H

@@ -18,7 +18,7 @@ from geomcad.geom import Vec
 from geomcad.sheet import Drawing, Scale, Sheet, TitleBlock, Viewport, start
 from geomcad.sheet.graph import Axis, Graph
 from geomcad.sheet.loads import damper, ground, moment, spring
-from geomcad.sheet.scale import gost_scale_to_fit
+from geomcad.sheet.scale import gost_scale_to_fit, nice_factor
 
 from .dyn_common import Where, draw_loads, f, short_note, small
 from .p2013_9 import ROD, Data
@@ -34,6 +34,17 @@ VIEW_TOP = 44.0
 #: Room for the drawing of one view (mm): width, height.
 VIEW_ROOM = (70.0, 180.0)
 DISC = 1.3  # the disc's drawn radius, in units of r
+
+
+#: Force arrows on the sheet: the largest force gets at most this many mm.
+FORCE_ROOM_MM = 40.0
+
+
+def scales(sol: Solution) -> dict[str, float]:
+    """The sheet's μ_F (N/mm): the largest force at most FORCE_ROOM_MM long."""
+    res = sol.results
+    biggest = max(res["N_pin"], res["F_spring"], res["F_damper"], res["F_inertia_rod"])
+    return {"F": nice_factor(biggest, FORCE_ROOM_MM, "F").k if biggest > 0.0 else 1.0}
 
 
 def k_l(r: float) -> Scale:
@@ -62,12 +73,13 @@ def _main(sol: Solution) -> Sheet:
     data: Data = sol.data
     r = data.r
     k = k_l(r)
+    k_F = sol.scales["F"]
     d = start("A3", _title(sol, "Механизм клапана: силы и моменты", 1))
     d.text("Механизм клапана: расчленение на диск и шток в заданном положении", (25.0, 13.0), 5.0)
     d.text(
         f"φ = {f(math.degrees(data.phi))}°, φ' = {f(data.dphi)} рад/с, φ'' = {f(data.ddphi)} "
         f"рад/с², t = {f(float(sol.params['t']))} с;   {k.label()} (M {k.ratio_text()});   "
-        f"μ_F = {f(data.k_F)} Н/мм",
+        f"μ_F = {f(k_F)} Н/мм",
         (25.0, 24.5),
         3.5,
     )
@@ -76,8 +88,8 @@ def _main(sol: Solution) -> Sheet:
     for v, head in zip(views, ("а) схема механизма", "б) диск 1", "в) шток 2"), strict=True):
         d.text(head, (v.at[0] - 30.0, 32.0), 3.5)
     _scheme(views[0], data, sol)
-    _disc(views[1], data)
-    _rod(views[2], data)
+    _disc(views[1], data, k_F)
+    _rod(views[2], data, k_F)
     d.text(
         f"Шток: x = r·sin φ = {f(data.x)} м, x' = r·cos φ·φ' = {f(data.xd)} м/с, "
         f"x'' = r·cos φ·φ'' – r·sin φ·φ'^2 = {f(data.xdd)} м/с².",
@@ -85,7 +97,7 @@ def _main(sol: Solution) -> Sheet:
         2.5,
     )
     d.text(
-        f"Силы – в масштабе μ_F; {short_note(data.k_F)}.",
+        f"Силы – в масштабе μ_F; {short_note(k_F)}.",
         (25.0, 250.0),
         2.5,
     )
@@ -140,7 +152,7 @@ def _scheme(v: Viewport, data: Data, sol: Solution) -> None:
     v.label((b, 0.5 * (top + gy)), "k", 3.5, prefer=(1.0, 0.0), clear=3.5)
 
 
-def _disc(v: Viewport, data: Data) -> None:
+def _disc(v: Viewport, data: Data, k_F: float) -> None:
     r, phi = data.r, data.phi
     A = Vec(r * math.cos(phi), r * math.sin(phi))
     v.circle((0.0, 0.0), DISC * r, "link")
@@ -152,7 +164,7 @@ def _disc(v: Viewport, data: Data) -> None:
     draw_loads(
         v,
         data.reactions,
-        data.k_F,
+        k_F,
         "1",
         {
             "M(t)": Where("M(t)", radius=5.0, start_deg=200.0),
@@ -163,7 +175,7 @@ def _disc(v: Viewport, data: Data) -> None:
     )
 
 
-def _rod(v: Viewport, data: Data) -> None:
+def _rod(v: Viewport, data: Data, k_F: float) -> None:
     r, x, phi = data.r, data.x, data.phi
     A = Vec(r * math.cos(phi), x)
     _crosshead(v, data)
@@ -174,7 +186,7 @@ def _rod(v: Viewport, data: Data) -> None:
     draw_loads(
         v,
         data.reactions,
-        data.k_F,
+        k_F,
         "2",
         {
             "R_{12}": Where("R_{12}", prefer=(1.0, 0.0)),

@@ -17,14 +17,17 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from geomcad.dynamics.analogues import Array
 from geomcad.geom import Vec
 from geomcad.sheet import Drawing, Scale, Sheet, TitleBlock, Viewport, start
 from geomcad.sheet.graph import Axis, Graph
 from geomcad.sheet.loads import force, ground, moment
+from geomcad.sheet.motion import Frames, turn
 from geomcad.sheet.scale import gost_length_scale, gost_scale_to_fit, nice_factor
 
 from .dyn_common import Where, draw_loads, f, short_note, small
-from .p_kulisa import Data, sweep, turns
+from .p_kulisa import Data, mechanism, sweep, turns
+from .spec_kulisa import PROBLEM
 
 if TYPE_CHECKING:
     from geomcad.problem import Solution
@@ -47,6 +50,31 @@ def _tb(sol: Solution, title: str, no: int, scale: str = "") -> TitleBlock:
         sheets=SHEETS,
         scale=scale,
     )
+
+
+#: The largest reaction on the free-body sheet gets at most this many mm.
+FORCE_ROOM_MM = 45.0
+#: The largest velocity on the scheme gets at most this many mm.
+VELOCITY_ROOM_MM = 36.0
+
+
+def scales(sol: Solution) -> dict[str, float]:
+    """The sheets' μ_F (the free-body diagrams) and μ_V (the velocities on the scheme)."""
+    data: Data = sol.data
+    res = sol.results
+    loads = [
+        ld.force.norm
+        for r in (data.dynamic, data.static)
+        for lds in r.loads.values()
+        for ld in lds
+        if ld.force is not None
+    ]
+    biggest = max(res["N_A"], res["X_O"], res["Y_O"], res["F_x"], *loads)
+    w_oa = data.omega * float(sol.params["OA"])
+    return {
+        "F": nice_factor(biggest, FORCE_ROOM_MM, "F").k,
+        "v": nice_factor(w_oa, VELOCITY_ROOM_MM, "v").k,
+    }
 
 
 def sheets(sol: Solution) -> list[tuple[str, Sheet]]:
@@ -138,7 +166,7 @@ def _main(sol: Solution) -> Sheet:
     k = _scale_for(box, room)
     d = start("A3", _tb(sol, "Кулисный механизм: скорости в положении φ", 1, k.ratio_text()))
     d.text("Кинематическая схема в положении φ и скорости точек", (25.0, 13.0), 5.0)
-    kv = Scale(data.k_v, "v")
+    kv = Scale(sol.scales["v"], "v")
     d.text(
         f"φ = {f(p['phi_deg'])}°, ω_1 = {f(data.omega)} рад/с;   {k.label()} "
         f"(M {k.ratio_text()});   {kv.label()}",
@@ -161,7 +189,7 @@ def _velocities(v: Viewport, sol: Solution, data: Data) -> None:
     """V_A ⊥ OA, V_A2 = V_A1 + V_A2A1 along x, V_D = V_2 at the contact, V_C3 from P."""
     p = _p(sol)
     w = data.omega
-    kv = data.k_v
+    kv = sol.scales["v"]
     km = v.scale.k
     A = data.yoke.pin.point()
     c3 = data.C3
@@ -418,10 +446,11 @@ def _fbd(sol: Solution) -> Sheet:
     p = _p(sol)
     boxes = _fbd_boxes(sol, data)
     k = _fbd_scale(boxes)
+    k_F = sol.scales["F"]
     d = start("A3", _tb(sol, "Кулисный механизм: реакции связей", 3, k.ratio_text()))
     d.text("Силы, действующие на звенья в положении φ (с силами инерции), и уравновешивающая сила",
            (25.0, 13.0), 5.0)  # fmt: skip
-    d.text(f"{k.label()} (M {k.ratio_text()});   {short_note(data.k_F)};   "
+    d.text(f"{k.label()} (M {k.ratio_text()});   {short_note(k_F)};   "
            f"ε_1 = {f(data.eps)} рад/с²", (25.0, 20.0), 3.5)  # fmt: skip
 
     def view(name: str, left: float, mid_y: float) -> tuple[Viewport, float]:
@@ -439,7 +468,7 @@ def _fbd(sol: Solution) -> Sheet:
     _flywheel(v1, sol, data, pivot=False)
     v1.label(A, "A", 3.5, prefer=(-1.0, 1.0))
     v1.label((0.0, 0.0), "O", 3.5, prefer=(-1.0, -1.0))
-    draw_loads(v1, data.dynamic, data.k_F, "1", {
+    draw_loads(v1, data.dynamic, k_F, "1", {
         "M": Where("M", radius=6.0, start_deg=160.0),
         "M_{Ф1}": Where("M_{Ф1}", radius=11.0, start_deg=-20.0),
         "R_{01}": Where("X_O", prefer=(0.0, 1.0)),
@@ -455,7 +484,7 @@ def _fbd(sol: Solution) -> Sheet:
     v2.dot(D)
     v2.label(D, "D", 3.5, prefer=(1.0, 1.0))
     v2.label(A, "A", 3.5, prefer=(-1.0, 1.0))
-    draw_loads(v2, data.dynamic, data.k_F, "2", {
+    draw_loads(v2, data.dynamic, k_F, "2", {
         "N_A": Where("N_A", prefer=(0.0, 1.0)),
         "Ф_2": Where("Ф_2", prefer=(0.0, -1.0)),
         "R_{32}": Where("R_{32}", prefer=(0.0, -1.0)),
@@ -470,7 +499,7 @@ def _fbd(sol: Solution) -> Sheet:
         v3.dot(q)
         v3.label(q, name, 3.5, prefer=(-1.0, 0.0))
     v3.label(c3, "C_3", 3.5, prefer=(-1.0, 1.0))
-    draw_loads(v3, data.dynamic, data.k_F, "3", {
+    draw_loads(v3, data.dynamic, k_F, "3", {
         "R_{32}": Where("R_{23}"),
         "R_{03}": Where("R_{03}"),
         "Ф_3": Where("Ф_3", prefer=(0.0, 1.0)),
@@ -487,7 +516,7 @@ def _fbd(sol: Solution) -> Sheet:
     moment(v4, (0.0, 0.0), p["M"], 6.0, f"M = {f(abs(p['M']))} Н·м", role="result",
            start=math.radians(160.0), height=2.5)  # fmt: skip
     fx = data.static.force("F_x")
-    force(v4, c3, fx, data.k_F, f"F_x = {f(fx.norm)} Н", role="result",
+    force(v4, c3, fx, k_F, f"F_x = {f(fx.norm)} Н", role="result",
           height=2.5)  # fmt: skip
     _panel_fbd(d, sol, data)
     return d.finish()
@@ -540,3 +569,64 @@ def _panel_fbd(d: Drawing, sol: Solution, data: Data) -> None:
     )
     for ln in lines:
         y = d.paragraph(f"– {ln}", x, y, width, 2.5, indent=3.0) + 0.8
+
+
+# -- the animation ------------------------------------------------------------------------------
+
+
+#: The slot's half length in units of OA (the animation's yoke).
+SLOT_HALF = 1.25
+
+
+def motion(solution: Solution, frames: int) -> Frames:
+    """The mechanism over one turn of the flywheel from the sheets' position φ, from the model's
+    own motions (the yoke on its pin, the roller driven by the yoke), and the velocity plan at
+    the constant ω1 the flywheel has at φ: pa (the pin), pc2 (the yoke), pc3 (the roller's axis);
+    a c2 is the slip of the pin along the slot."""
+    data: Data = solution.data
+    p = {k: float(v) for k, v in solution.params.items()}
+    _model, yoke, roller = mechanism(
+        p["m1"], p["R1"], p["OA"], p["m2"], p["m3"], p["R3"], p["r3"], p["rho3"], p["M"], data.lay
+    )
+    phi = turn(frames, data.phi)
+    y, rl = yoke(phi), roller(phi)
+    OA, R3, r3 = p["OA"], p["R3"], p["r3"]
+
+    def pts(x: Array, yy: Array) -> np.ndarray:
+        return np.column_stack([np.broadcast_to(x, phi.shape), np.broadcast_to(yy, phi.shape)])
+
+    zero = np.zeros_like(phi)
+    rim = rl.theta + math.pi / 2.0  # a mark on the roller's rim, upwards at the start
+    points = {
+        "O": pts(zero, zero),
+        "A": pts(y.pin.x, y.pin.y),
+        "S1": pts(y.pin.x, zero + SLOT_HALF * OA),
+        "S2": pts(y.pin.x, zero - SLOT_HALF * OA),
+        "Y": pts(y.pin.x, zero),
+        "C2": pts(y.body.x, zero),
+        "D": pts(rl.x, zero),
+        "C3": pts(rl.x, rl.y),
+        "K": pts(rl.x + R3 * np.cos(rim), rl.y + R3 * np.sin(rim)),
+    }
+    w = data.omega
+    base = -r3 - R3
+    xs = np.concatenate([points["C3"][:, 0] - R3, points["C3"][:, 0] + R3])
+    return Frames(
+        title=f"{PROBLEM.id}: один оборот маховика",
+        phi=phi,
+        points=points,
+        links=(("O", "A"), ("S1", "S2"), ("Y", "C2", "D"), ("C3", "K")),
+        joints=("O", "A", "C3"),
+        labelled=("O", "A", "C2", "C3", "K"),
+        fixed=("O",),
+        traced=("A", "K"),
+        guides=(((float(xs.min()), base), (float(xs.max()), base)),),
+        discs={"O": (p["R1"],), "C3": (R3, r3) if r3 > 0.0 else (R3,)},
+        velocities={
+            "A": pts(y.pin.vx * w, y.pin.vy * w),
+            "C2": pts(y.body.vx * w, y.body.vy * w),
+            "C3": pts(rl.vx * w, rl.vy * w),
+        },
+        plan_edges=(("A", "C2"),),
+        omega1=w,
+    )

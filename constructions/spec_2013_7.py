@@ -99,6 +99,7 @@ PROBLEM = Problem(
     results=RESULTS,
     seed=SEED,
     build=lazy(".p2013_7:build", __package__),
-    draw=lazy(".p2013_7:draw", __package__),
+    draw=lazy(".sheets_2013_7:sheets", __package__),
     seed_k_l=SEED_K_L,
+    scales=lazy(".sheets_2013_7:scales", __package__),
 )
