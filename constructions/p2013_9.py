@@ -217,17 +217,18 @@ def kinetostatics(
     Disc: M, M_Ф1 = −J·φ'', the bearing R_01 at O, the rod's push R_21 at A and a balancing
     moment M_b (zero when φ'' satisfies the equation of motion). Rod: Ф_2 = −m·x'', the spring
     −c·x and the damper −k·x' along its axis, the pin's push R_12 at A normal to the slot, and
-    its guide's reaction R_02 (across the axis) and couple M_02.
+    its guide's reaction R_02 (across the axis) and couple M_02. The loads' names are keys
+    (``Phi_2``, ``M_Phi1``, ``F_spring``, ``F_damper``); the sheets write them in their language.
     """
     ks = Kinetostatics("kinetostatics of disc and rod")
     A = Vec(r * math.cos(phi), r * math.sin(phi))
     S2 = Vec(0.0, x + ROD.centre * r)
     top = x + ROD.top * r
-    ks.body("1", J=J, eps=ddphi, inertia_names=("", "M_{Ф1}"))
-    ks.body("2", m=m, centre=S2, a=(0.0, xdd), inertia_names=("Ф_2", ""))
+    ks.body("1", J=J, eps=ddphi, inertia_names=("Phi_1", "M_Phi1"))
+    ks.body("2", m=m, centre=S2, a=(0.0, xdd), inertia_names=("Phi_2", "M_Phi2"))
     ks.torque("1", "M(t)", M)
-    ks.force("2", "F_{упр}", Vec(0.0, -c * x), Vec(-ROD.bar_half * r, top))
-    ks.force("2", "F_д", Vec(0.0, -k * xd), Vec(ROD.bar_half * r, top))
+    ks.force("2", "F_spring", Vec(0.0, -c * x), Vec(-ROD.bar_half * r, top))
+    ks.force("2", "F_damper", Vec(0.0, -k * xd), Vec(ROD.bar_half * r, top))
     ks.joint("R_{01}", None, "1", (0.0, 0.0))
     ks.contact("R_{12}", "1", "2", A, (0.0, 1.0))
     ks.contact("R_{02}", None, "2", Vec(0.0, 0.5 * sum(ROD.guide) * r), (1.0, 0.0))

@@ -27,10 +27,7 @@ BASELINE: dict[tuple[str, str], dict[str, int]] = {
     ("2013-6", "kinematics"): {"label-line": 5, "short-vector": 2, "empty": 1},
     ("2013-7", ""): {"anchor": 2, "short-vector": 3},
     ("2013-8", ""): {"anchor": 1, "empty": 1},
-    # forces under two arrowheads are points now (no short vectors), and M02's label moved
-    # 7 mm off its point to make room for Ф2's
-    ("2013-9", ""): {"anchor": 2},
-    ("2013-9", "motion"): {"label-line": 1, "empty": 1},
+    ("2013-9", "motion"): {"label-line": 1},
     ("kulisa-23110713", ""): {"anchor": 2},
     ("kulisa-23110713", "graphs"): {"empty": 1},
     ("kulisa-23110713", "fbd"): {"anchor": 4, "empty": 1},
