@@ -256,10 +256,10 @@ def kinetostatics(
     if inertia:
         a2, _ = y.body.acceleration(omega, eps)
         a3, e3 = rl.acceleration(omega, eps)
-        ks.body("1", J=m1 * R1 * R1 / 2.0, eps=eps, inertia_names=("", "M_{Ф1}"))
-        ks.body("2", m=m2, centre=C2, a=a2, inertia_names=("Ф_2", ""))
+        ks.body("1", J=m1 * R1 * R1 / 2.0, eps=eps, inertia_names=("Phi_1", "M_Phi1"))
+        ks.body("2", m=m2, centre=C2, a=a2, inertia_names=("Phi_2", "M_Phi2"))
         ks.body("3", m=m3, J=m3 * rho3 * rho3, centre=C3, a=a3, eps=e3,
-                inertia_names=("Ф_3", "M_{Ф3}"))  # fmt: skip
+                inertia_names=("Phi_3", "M_Phi3"))  # fmt: skip
     else:
         ks.body("1")
         ks.body("2", centre=C2)

@@ -13,19 +13,20 @@
 from __future__ import annotations
 
 import math
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 from geomcad.dynamics.analogues import Array
-from geomcad.geom import Vec
+from geomcad.geom import Arc, Circle, Vec
 from geomcad.sheet import Drawing, Scale, Sheet, TitleBlock, Viewport, start
 from geomcad.sheet.graph import Axis, Graph
+from geomcad.sheet.lang import Words, current
 from geomcad.sheet.loads import force, ground, moment
 from geomcad.sheet.motion import Frames, turn
 from geomcad.sheet.scale import gost_length_scale, gost_scale_to_fit, nice_factor
 
-from .dyn_common import Where, draw_loads, f, short_note, small
+from .dyn_common import Where, draw_loads, f, load, mu, short_note, small
 from .p_kulisa import Data, mechanism, sweep, turns
 from .spec_kulisa import PROBLEM
 
@@ -42,14 +43,23 @@ SLOT_W = 0.08  # the slot's half-width and the yoke's bar height, in units of OA
 SHEETS = 3
 
 
-def _tb(sol: Solution, title: str, no: int, scale: str = "") -> TitleBlock:
+WORDS = Words(__package__, "sheets_kulisa")
+
+
+def _tb(key: str, no: int, scale: str = "") -> TitleBlock:
     return TitleBlock(
-        title=title,
-        designation=f"КР.23110713.0{no}",
+        title=WORDS(key),
+        designation=WORDS("designation", no=no),
         sheet_no=no,
         sheets=SHEETS,
         scale=scale,
+        lang=current(),
     )
+
+
+def _u(key: str) -> str:
+    """A unit's symbol in the language being drawn."""
+    return WORDS(f"u_{key}")
 
 
 #: The largest reaction on the free-body sheet gets at most this many mm.
@@ -118,9 +128,16 @@ def _flywheel(v: Viewport, sol: Solution, data: Data, pivot: bool = True) -> Non
     v.joint(A)
 
 
+def bar_level(p: dict[str, float]) -> float:
+    """The lower edge (model y) of the yoke's bar: above the roller's rim, which rises R3 − r3
+    over the contact line y = 0, by one bar height, so that the bar runs clear of the flywheel's
+    pivot O and of the roller's rim; a foot comes down from it to the contact D."""
+    return p["R3"] - p["r3"] + SLOT_W * p["OA"]
+
+
 def _yoke(v: Viewport, sol: Solution, data: Data, guides: bool = True) -> None:
-    """The yoke: a frame around the vertical slot through A and a bar along y = 0 whose lower
-    edge bears on the roller's hub at D."""
+    """The yoke: a frame around the vertical slot through A, a bar from the frame to above the
+    roller at bar_level, and a foot down to D = (x_C3, 0), where it bears on the roller's hub."""
     p = _p(sol)
     OA = p["OA"]
     A = data.yoke.pin.point()
@@ -132,27 +149,51 @@ def _yoke(v: Viewport, sol: Solution, data: Data, guides: bool = True) -> None:
                closed=True)  # fmt: skip
     v.polyline([(xa - 2 * w, bot), (xa + 2 * w, bot), (xa + 2 * w, top), (xa - 2 * w, top)], "link",
                closed=True)  # fmt: skip
-    # the bar from the frame to beyond the roller, its lower edge on y = 0
-    x_end = data.C3.x + 0.6 * p["R3"]
-    v.polyline([(xa + 2 * w, 0.0), (x_end, 0.0), (x_end, w), (xa + 2 * w, w)], "link")
+    # the bar and its foot: one outline from the frame's right side round to the frame again
+    y0 = bar_level(p)
+    xd = data.C3.x
+    v.polyline(
+        [(xa + 2 * w, y0), (xd - w / 2, y0), (xd - w / 2, 0.0), (xd + w / 2, 0.0),
+         (xd + w / 2, y0 + w), (xa + 2 * w, y0 + w)],
+        "link",
+    )  # fmt: skip
     if guides:
-        for gx in (0.55, 0.8):
-            xg = xa + 2 * w + gx * (x_end - xa - 2 * w)
-            half = 0.1 * (x_end - xa)
-            ground(v, (xg - half, w + 0.5 * w), (xg + half, w + 0.5 * w), (0.0, 1.0))
+        for gx in (0.35, 0.7):
+            xg = xa + 2 * w + gx * (xd - xa - 2 * w)
+            half = 0.08 * (xd - xa)
+            ground(v, (xg - half, y0 + 1.5 * w), (xg + half, y0 + 1.5 * w), (0.0, 1.0))
 
 
-def _roller(v: Viewport, sol: Solution, data: Data, base: bool = True) -> None:
+def _roller(v: Viewport, sol: Solution, data: Data, base: bool = True, foot: bool = True) -> None:
+    """The roller: its rim R3 (broken where the yoke's foot passes in front of it), its hub r3,
+    its axis C3, and the base it rolls on."""
     p = _p(sol)
     R3, r3 = p["R3"], p["r3"]
     c3 = data.C3
-    v.circle(c3, R3, "link")
+    w = SLOT_W * p["OA"]
+    if foot and w / 2.0 < R3:
+        gap = math.asin(min(1.0, (w / 2.0) / R3)) + v.scale.model(0.6) / R3
+        v.arc(Arc(Circle(c3, R3), math.pi / 2.0 + gap, math.pi / 2.0 - gap), "link")
+    else:
+        v.circle(c3, R3, "link")
     if r3 > 0.0:
         v.circle(c3, r3, "link")
     v.joint(c3)
     if base:
         yb = -r3 - R3
         ground(v, (c3.x - 1.6 * R3, yb), (c3.x + 1.6 * R3, yb), (0.0, -1.0))
+
+
+def _numbers(v: Viewport, sol: Solution, data: Data) -> None:
+    """The links' numbers (GOST 2.770): flywheel 1, yoke 2, roller 3."""
+    p = _p(sol)
+    A = data.yoke.pin.point()
+    w = SLOT_W * p["OA"]
+    c3 = data.C3
+    v.label(Vec.polar(p["R1"], math.radians(-60.0)), "1", 3.5, prefer=(1.0, -1.0), clear=1.5)
+    v.label((A.x - 2.0 * w, -0.8 * p["OA"]), "2", 3.5, prefer=(-1.0, 0.0), clear=1.5)
+    v.label(c3 + Vec.polar(p["R3"], math.radians(-40.0)), "3", 3.5, prefer=(1.0, -1.0),
+            clear=1.5)  # fmt: skip
 
 
 # -- the main sheet ----------------------------------------------------------------------------
@@ -164,21 +205,22 @@ def _main(sol: Solution) -> Sheet:
     box = _extent(sol, data)
     room = (SCHEME[2] - SCHEME[0], SCHEME[3] - SCHEME[1])
     k = _scale_for(box, room)
-    d = start("A3", _tb(sol, "Кулисный механизм: скорости в положении φ", 1, k.ratio_text()))
-    d.text("Кинематическая схема в положении φ и скорости точек", (25.0, 13.0), 5.0)
+    d = start("A3", _tb("tb_main", 1, k.ratio_text()))
+    d.text(WORDS("head_main"), (25.0, 13.0), 5.0)
     kv = Scale(sol.scales["v"], "v")
     d.text(
-        f"φ = {f(p['phi_deg'])}°, ω_1 = {f(data.omega)} рад/с;   {k.label()} "
-        f"(M {k.ratio_text()});   {kv.label()}",
+        WORDS("state", phi=f(p["phi_deg"]), omega=f(data.omega), mu_l=mu(k),
+              ratio=k.ratio_text(), mu_v=mu(kv)),
         (25.0, 20.0),
         3.5,
-    )
+    )  # fmt: skip
     cx = SCHEME[0] + (-box[0]) / k.k + 0.5 * (room[0] - (box[2] - box[0]) / k.k)
     cy = SCHEME[1] + box[3] / k.k + 0.5 * (room[1] - (box[3] - box[1]) / k.k)
     v = d.viewport(k, (0.0, 0.0), (cx, cy))
     _flywheel(v, sol, data)
     _yoke(v, sol, data)
     _roller(v, sol, data)
+    _numbers(v, sol, data)
     _velocities(v, sol, data)
     _plan(d, sol, data)
     _panel_main(d, sol, data)
@@ -186,7 +228,8 @@ def _main(sol: Solution) -> Sheet:
 
 
 def _velocities(v: Viewport, sol: Solution, data: Data) -> None:
-    """V_A ⊥ OA, V_A2 = V_A1 + V_A2A1 along x, V_D = V_2 at the contact, V_C3 from P."""
+    """V_A ⊥ OA, V_A2 = V_A1 + V_A2A1 along x, V_D = V_2 at the contact, V_C3 from P; each from
+    its point at μ_V, V_D along the contact line below the yoke's bar."""
     p = _p(sol)
     w = data.omega
     kv = sol.scales["v"]
@@ -207,7 +250,7 @@ def _velocities(v: Viewport, sol: Solution, data: Data) -> None:
                          (c3, vc, "V_{C3}")):  # fmt: skip
         if vel.norm > 0.0:
             v.arrow(q, tip(q, vel), "result")
-            v.label(tip(q, vel), name, 2.5, prefer=(vel.x, vel.y))
+            v.label(tip(q, vel), name, 2.5, prefer=(vel.x, vel.y) if q != D else (0.0, -1.0))
     # V_A2A1 along the slot: from V_A's tip to V_A2's tip
     if (v2 - va).norm > 0.0:
         v.arrow(tip(A, va), tip(A, v2), "construction")
@@ -218,7 +261,7 @@ def _velocities(v: Viewport, sol: Solution, data: Data) -> None:
     v.dot(P)
     v.label(P, "P_3", 2.5, prefer=(1.0, -1.0))
     v.dot(D)
-    v.label(D, "D", 2.5, prefer=(1.0, 1.0))
+    v.label(D, "D", 2.5, prefer=(1.0, -1.0))
     v.label(A, "A", 3.5, prefer=(-1.0, 1.0))
     v.label((0.0, 0.0), "O", 3.5, prefer=(-1.0, -1.0))
     v.label(c3, "C_3", 3.5, prefer=(1.0, -1.0))
@@ -229,7 +272,9 @@ def _velocities(v: Viewport, sol: Solution, data: Data) -> None:
     moment(v, c3, w3, 0.55 * v.mm(p["R3"]), "ω_3", role="result", start=math.radians(110.0),
            height=2.5)  # fmt: skip
     v.seg((0.0, 0.0), (0.6 * p["R1"], 0.0), "centre")
-    v.dim_angle((0.0, 0.0), (p["OA"], 0.0), A, "φ", r_mm=0.45 * v.mm(p["OA"]), height=2.5)
+    # the φ arc under the yoke's bar (and outside ω1's arrow)
+    r_phi = max(12.0, min(0.45 * v.mm(p["OA"]), v.mm(bar_level(p)) - 2.5))
+    v.dim_angle((0.0, 0.0), (p["OA"], 0.0), A, "φ", r_mm=r_phi, height=2.5)
 
 
 def _plan(d: Drawing, sol: Solution, data: Data) -> None:
@@ -239,7 +284,7 @@ def _plan(d: Drawing, sol: Solution, data: Data) -> None:
     v2, _ = data.yoke.body.velocity(w)
     vc, _ = data.roller.velocity(w)
     kv = nice_factor(va.norm, PLAN[3] - PLAN[1] - 14.0, "v") if va.norm > 0.0 else Scale(1.0, "v")
-    d.text(f"План скоростей, {kv.label()}", (PLAN[0], PLAN[1]), 3.5)
+    d.text(WORDS("plan_head", mu=mu(kv)), (PLAN[0], PLAN[1]), 3.5)
     xs = [0.0, va.x, v2.x, vc.x]
     ys = [0.0, va.y, v2.y, vc.y]
     mid_x = 0.5 * (min(xs) + max(xs)) / kv.k
@@ -257,119 +302,132 @@ def _plan(d: Drawing, sol: Solution, data: Data) -> None:
     pv.label((0.0, 0.0), "p", 3.5, prefer=(1.0, 1.0))
     k3 = vc.norm / v2.norm if v2.norm > 0.0 else 0.0
     y = PLAN[1] + 6.0
+    ms = _u("m_s")
     for ln in (
-        f"pa_1 = V_A = ω_1·OA = {f(va.norm)} м/с, перпендикулярно OA;",
-        "a_1a_2 = V_{A2A1} – вдоль паза; pa_2 = V_{A2} = V_2 – вдоль направляющей;",
-        f"pa_2 = {f(v2.norm)} м/с; точка D катка: V_D = V_2;",
-        f"pc_3 = V_{{C3}} = V_2·R_3/(R_3 + r_3) = {f(vc.norm)} м/с (pc_3/pa_2 = {f(k3)}).",
+        WORDS("plan_1", va=f(va.norm), u=ms),
+        WORDS("plan_2"),
+        WORDS("plan_3", v2=f(v2.norm), u=ms),
+        WORDS("plan_4", vc=f(vc.norm), u=ms, k3=f(k3)),
     ):
         y = d.paragraph(ln, PLAN[0], y, 56.0, 2.5, indent=3.0) + 1.0
 
 
 def _results_rows(sol: Solution, names: tuple[tuple[str, str, str], ...]) -> list[list[str]]:
-    rows = [["Величина", "Значение"]]
+    rows = [[WORDS("quantity"), WORDS("value")]]
     for name, label, unit in names:
-        rows.append([label, f"{f(float(sol.results[name]), 4)} {unit}".strip()])
+        rows.append([label, f"{f(float(sol.results[name]), 4)} {_u(unit) if unit else ''}".strip()])
     return rows
 
 
 def _panel_main(d: Drawing, sol: Solution, data: Data) -> None:
     p = _p(sol)
     x, y = PANEL_X, 10.0
-    d.text("Исходные данные", (x, y + 3.5), 3.5)
+    d.text(WORDS("given"), (x, y + 3.5), 3.5)
     items = [
-        ("m1", "m_1", "кг"), ("R1", "R_1", "м"), ("OA", "OA", "м"), ("m2", "m_2", "кг"),
-        ("m3", "m_3", "кг"), ("R3", "R_3", "м"), ("r3", "r_3", "м"), ("rho3", "ρ_3", "м"),
-        ("M", "M", "Н·м"), ("phi_deg", "φ", "°"), ("phi0_deg", "φ_0", "°"),
+        ("m1", "m_1", "kg"), ("R1", "R_1", "m"), ("OA", "OA", "m"), ("m2", "m_2", "kg"),
+        ("m3", "m_3", "kg"), ("R3", "R_3", "m"), ("r3", "r_3", "m"), ("rho3", "ρ_3", "m"),
+        ("M", "M", "Nm"), ("phi_deg", "φ", "deg"), ("phi0_deg", "φ_0", "deg"),
     ]  # fmt: skip
-    cells = [f"{lab} = {f(p[n], 6)}{'' if u == '°' else ' '}{u}" for n, lab, u in items]
+    cells = [f"{lab} = {f(p[n], 6)}{'' if u == 'deg' else ' '}{_u(u)}" for n, lab, u in items]
     cells.append("")
-    rows = [["Параметр", "Параметр"]] + [[cells[i], cells[i + 1]] for i in range(0, 12, 2)]
+    par = WORDS("param")
+    rows = [[par, par]] + [[cells[i], cells[i + 1]] for i in range(0, 12, 2)]
     _, h = d.table(x, y + 6.0, (59.0, 59.0), rows)
     y += 6.0 + h + 6.0
-    d.text("Скорости в положении φ", (x, y + 3.5), 3.5)
+    d.text(WORDS("velocities_head"), (x, y + 3.5), 3.5)
     w = data.omega
     va, _ = data.yoke.pin.velocity(w)
     v2, _ = data.yoke.body.velocity(w)
     vc, w3 = data.roller.velocity(w)
+    qty, val = WORDS("quantity"), WORDS("value")
+    ms = _u("m_s")
     rows = [
-        ["Величина", "Значение", "Величина", "Значение"],
-        ["V_A", f"{f(va.norm)} м/с", "V_2 = V_D", f"{f(v2.norm)} м/с"],
-        ["V_{C3}", f"{f(vc.norm)} м/с", "ω_3", f"{f(abs(w3))} рад/с"],
+        [qty, val, qty, val],
+        ["V_A", f"{f(va.norm, 4)} {ms}", "V_2 = V_D", f"{f(v2.norm, 4)} {ms}"],
+        ["V_{C3}", f"{f(vc.norm, 4)} {ms}", "ω_3", f"{f(abs(w3), 4)} {_u('rad_s')}"],
     ]
     _, h = d.table(x, y + 6.0, (20.0, 39.0, 20.0, 39.0), rows)
     y += 6.0 + h + 6.0
-    d.text("Результаты", (x, y + 3.5), 3.5)
+    d.text(WORDS("results_head"), (x, y + 3.5), 3.5)
     rows = _results_rows(
         sol,
         (
-            ("I_pr_A", "A", "кг·м²"),
-            ("I_pr_B", "B", "кг·м²"),
-            ("I_pr", "I_{пр}", "кг·м²"),
-            ("dI_pr", "dI_{пр}/dφ", "кг·м²"),
-            ("omega1", "ω_1", "рад/с"),
-            ("eps1", "ε_1", "рад/с²"),
-            ("t_reach", "t(φ)", "с"),
-            ("omega_ode", "ω_1 (ОДУ)", "рад/с"),
+            ("I_pr_A", "A", "kgm2"),
+            ("I_pr_B", "B", "kgm2"),
+            ("I_pr", WORDS("I_pr"), "kgm2"),
+            ("dI_pr", WORDS("dI_pr"), "kgm2"),
+            ("omega1", "ω_1", "rad_s"),
+            ("eps1", "ε_1", "rad_s2"),
+            ("t_reach", "t(φ)", "s"),
+            ("omega_ode", WORDS("omega_ode"), "rad_s"),
         ),
     )
     _, h = d.table(x, y + 6.0, (40.0, 78.0), rows)
     y += 6.0 + h + 4.0
-    lines = (
-        "I_{пр} = A + B·sin^2φ; A = m_1R_1^2/2, B = [m_2 + m_3(R_3^2 + ρ_3^2)/(R_3 + r_3)^2]·OA^2.",
-        "Скорости – из плана скоростей (V_{A2} = V_{A1} + V_{A2A1}) и мгновенного "
-        "центра P_3 катка.",
-    )
-    for ln in lines:
+    for ln in (WORDS("note_1"), WORDS("note_2")):
         y = d.paragraph(ln, x, y, PANEL_W, 2.5) + 0.8
 
 
 # -- graphs --------------------------------------------------------------------------------------
 
 
+#: The graphs sheet: the curves' left edge and room across, the right column's left edge (mm).
+GRAPH_X, GRAPH_W, RIGHT_X = 40.0, 200.0, 262.0
+
+
 def _graphs(sol: Solution) -> Sheet:
+    """I_pr(φ) above ω1(φ), across the left of the sheet on a common φ axis; the equation of
+    motion and a table of both at every 30° on the right."""
     data: Data = sol.data
     p = _p(sol)
-    d = start("A3", _tb(sol, "Кулисный механизм: I_{пр}(φ) и ω_1(φ)", 2))
-    d.text("Приведённый момент инерции и угловая скорость маховика за оборот", (25.0, 13.0), 5.0)
+    lang = current()
+    d = start("A3", _tb("tb_graphs", 2))
+    d.text(WORDS("head_graphs"), (25.0, 13.0), 5.0)
     sw = sweep(data)
     phis_deg = np.degrees(sw["phi"])
     lo, hi = float(phis_deg[0]), float(phis_deg[-1])
-    gx = Axis.fit("φ", "°", lo, hi, 195.0).with_tick(30.0 * turns(data))
+    gx = Axis.fit("φ", "°", lo, hi, GRAPH_W).with_tick(30.0 * turns(data))
     # 1. I_pr(φ)
     i_vals = sw["I_pr"]
-    gy = Axis.fit("I_{пр}", "кг·м²", 0.0, float(np.max(i_vals)), 90.0, name="I")
-    d.text("1. I_{пр}(φ) = A + B·sin^2φ", (25.0, 24.0), 3.5)
-    g = Graph(d, gx, gy, (40.0, 38.0 + gy.mm(gy.hi) + 6.0))
-    g.factors((25.0, 30.0))
+    gy = Axis.fit(WORDS("I_pr"), _u("kgm2"), 0.0, float(np.max(i_vals)), 86.0, name="I")
+    d.text(WORDS("graph_1"), (25.0, 24.0), 3.5)
+    g = Graph(d, gx, gy, (GRAPH_X, 38.0 + gy.mm(gy.hi) + 6.0))
+    g.factors((25.0, 30.0), lang)
     g.curve(list(phis_deg), list(i_vals), "result")
-    g.axes()
+    ode = _turn_ode(data)
+    _ordinates(g, ode[0], data.model.J_pr(np.asarray(ode[0])))
+    g.axes(lang)
     phi_deg = p["phi_deg"]
     g.curve([phi_deg, phi_deg], [0.0, float(sol.results["I_pr"])], "centre")
-    g.point(phi_deg, float(sol.results["I_pr"]), f"I_{{пр}} = {f(sol.results['I_pr'])}",
+    g.point(phi_deg, float(sol.results["I_pr"]), f"{WORDS('I_pr')} = {f(sol.results['I_pr'])}",
             prefer=(1.0, -1.0))  # fmt: skip
     # 2. ω1(φ) from rest: the energy theorem (curve) and solve_ivp (points)
     om = sw["omega"]
-    y2 = 148.0
-    gy2 = Axis.fit("ω_1", "рад/с", 0.0, float(np.max(om)), 70.0, name="ω")
-    d.text("2. ω_1(φ) из состояния покоя при φ_0: теорема об изменении кинетической энергии "
-           "(линия) и численное интегрирование (точки)", (25.0, y2), 3.5)  # fmt: skip
-    g2 = Graph(d, gx, gy2, (40.0, y2 + 14.0 + gy2.mm(gy2.hi) + 6.0))
-    g2.factors((25.0, y2 + 6.0))
+    y2 = 140.0
+    gy2 = Axis.fit("ω_1", _u("rad_s"), 0.0, float(np.max(om)), 92.0, name="ω")
+    d.paragraph(WORDS("graph_2"), 25.0, y2 - 3.5, 215.0, 3.5, indent=4.0)
+    g2 = Graph(d, gx, gy2, (GRAPH_X, y2 + 18.0 + gy2.mm(gy2.hi) + 6.0))
+    g2.factors((25.0, y2 + 10.0), lang)
     g2.curve(list(phis_deg), list(om), "result")
-    g2.axes()
-    tr = data.arrival.trajectory
-    full = _turn_ode(data)
-    for a, wv in zip(full[0], full[1], strict=True):
+    _ordinates(g2, ode[0], ode[1])
+    g2.axes(lang)
+    for a, wv in zip(ode[0], ode[1], strict=True):
         g2.point(float(np.degrees(a)), float(wv))
     g2.curve([phi_deg, phi_deg], [0.0, data.omega], "centre")
     g2.point(phi_deg, data.omega, f"ω_1 = {f(data.omega)}", prefer=(1.0, -1.0))
-    del tr
-    _panel_graphs(d, sol, data)
+    _panel_graphs(d, sol, data, ode)
     return d.finish()
 
 
-def _turn_ode(data: Data, n: int = 13) -> tuple[list[float], list[float]]:
+def _ordinates(g: Graph, phis: list[float], vals: Any) -> None:
+    """The diagram's ordinates at the tabulated positions (thin lines from the φ axis)."""
+    for a, val in zip(phis, vals, strict=True):
+        if float(val) > 0.0:
+            x = math.degrees(float(a))
+            g.curve([x, x], [0.0, float(val)], "construction")
+
+
+def _turn_ode(data: Data, n: int = 25) -> tuple[list[float], list[float]]:
     """ω1 by solve_ivp at n positions over the diagram's turns, on one motion from rest at φ0."""
     from geomcad.dynamics import reach
 
@@ -382,22 +440,36 @@ def _turn_ode(data: Data, n: int = 13) -> tuple[list[float], list[float]]:
     return [data.phi0, *phis], [0.0, *omegas]
 
 
-def _panel_graphs(d: Drawing, sol: Solution, data: Data) -> None:
+def _panel_graphs(
+    d: Drawing, sol: Solution, data: Data, ode: tuple[list[float], list[float]]
+) -> None:
     r = sol.results
     p = _p(sol)
-    x, y = 262.0, 10.0
-    width = 146.0
-    y = d.text("Уравнение движения", (x, y + 3.5), 3.5).at[1] + 2.0
+    x, y = RIGHT_X, 10.0
+    width = 408.0 - RIGHT_X
+    y = d.text(WORDS("eq_head"), (x, y + 3.5), 3.5).at[1] + 2.0
     a_, b_ = float(r["I_pr_A"]), float(r["I_pr_B"])
     lines = (
-        "I_{пр}(φ)φ'' + ½(dI_{пр}/dφ)φ'^2 = M (уравнение движения машины; то же даёт уравнение "
-        "Лагранжа II рода):",
-        f"({f(a_, 4)} + {f(b_, 4)}·sin^2φ)·φ'' + {f(b_ / 2.0, 4)}·sin 2φ·φ'^2 = {f(p['M'], 4)}.",
-        "ω_1 = [2M(φ – φ_0)/I_{пр}(φ)]^{1/2} – теорема об изменении кинетической энергии; "
-        "ε_1 = (M – ½I'_{пр}ω_1^2)/I_{пр}.",
+        WORDS("eq_1"),
+        WORDS("eq_2", a=f(a_, 4), b=f(b_, 4), half=f(b_ / 2.0, 4), M=f(p["M"], 4)),
+        WORDS("eq_3"),
     )
     for ln in lines:
         y = d.paragraph(ln, x, y, width, 2.5, indent=4.0) + 0.8
+    y += 4.0
+    # I_pr and ω1 at the diagrams' points: the energy theorem beside the integration
+    d.text(WORDS("table_head"), (x, y + 3.5), 3.5)
+    rows = [["φ, °", f"{WORDS('I_pr')}, {_u('kgm2')}", f"ω_1, {_u('rad_s')}",
+             f"{WORDS('omega_ode')}, {_u('rad_s')}"]]  # fmt: skip
+    phis = np.asarray(ode[0])
+    i_pr = data.model.J_pr(phis)
+    from geomcad.dynamics import omega_curve
+
+    om = omega_curve(data.model, data.phi0, phis)
+    for a, ip, w_e, w_o in zip(phis, i_pr, om, ode[1], strict=True):
+        rows.append([f(math.degrees(float(a)), 5), f(float(ip), 4), f(float(w_e), 4),
+                     f(float(w_o), 4)])  # fmt: skip
+    d.table(x, y + 6.0, (width / 4.0,) * 4, rows)
 
 
 # -- free-body diagrams --------------------------------------------------------------------------
@@ -414,7 +486,7 @@ def _fbd_boxes(sol: Solution, data: Data) -> dict[str, Box]:
     w = SLOT_W * OA
     return {
         "1": (-R1, -R1, R1, R1),
-        "2": (A.x - 2.0 * w, -OA - 2.0 * w, c3.x + 0.6 * R3, OA + 2.0 * w),
+        "2": (A.x - 2.0 * w, -OA - 2.0 * w, c3.x + w, OA + 2.0 * w),
         "3": (c3.x - R3, c3.y - R3, c3.x + R3, c3.y + R3),
         "all": _extent(sol, data),
     }
@@ -447,11 +519,11 @@ def _fbd(sol: Solution) -> Sheet:
     boxes = _fbd_boxes(sol, data)
     k = _fbd_scale(boxes)
     k_F = sol.scales["F"]
-    d = start("A3", _tb(sol, "Кулисный механизм: реакции связей", 3, k.ratio_text()))
-    d.text("Силы, действующие на звенья в положении φ (с силами инерции), и уравновешивающая сила",
-           (25.0, 13.0), 5.0)  # fmt: skip
-    d.text(f"{k.label()} (M {k.ratio_text()});   {short_note(k_F)};   "
-           f"ε_1 = {f(data.eps)} рад/с²", (25.0, 20.0), 3.5)  # fmt: skip
+    d = start("A3", _tb("tb_fbd", 3, k.ratio_text()))
+    d.text(WORDS("head_fbd"), (25.0, 13.0), 5.0)
+    d.text(WORDS("state_fbd", mu_l=mu(k), ratio=k.ratio_text(), eps=f(data.eps)), (25.0, 20.0),
+           3.5)  # fmt: skip
+    d.text(f"{short_note(k_F)}.", (25.0, 25.5), 2.5)
 
     def view(name: str, left: float, mid_y: float) -> tuple[Viewport, float]:
         b = boxes[name]
@@ -461,111 +533,127 @@ def _fbd(sol: Solution) -> Sheet:
 
     A = data.yoke.pin.point()
     c3 = data.C3
+    D = Vec(c3.x, 0.0)
+    P = Vec(c3.x, -p["r3"] - p["R3"])
+    R = data.dynamic
+    gap = k.model(3.0)
     top_y, bot_y = 88.0, 196.0
     # a) the flywheel
     v1, right = view("1", 45.0, top_y)
-    d.text("а) маховик 1", (28.0, 32.0), 3.5)
+    d.text(WORDS("view_1"), (28.0, 32.0), 3.5)
     _flywheel(v1, sol, data, pivot=False)
     v1.label(A, "A", 3.5, prefer=(-1.0, 1.0))
     v1.label((0.0, 0.0), "O", 3.5, prefer=(-1.0, -1.0))
-    draw_loads(v1, data.dynamic, k_F, "1", {
+    draw_loads(v1, R, k_F, "1", {
         "M": Where("M", radius=6.0, start_deg=160.0),
-        "M_{Ф1}": Where("M_{Ф1}", radius=11.0, start_deg=-20.0),
+        "M_Phi1": Where(WORDS("M_Phi1"), radius=11.0, start_deg=-20.0),
         "R_{01}": Where("X_O", prefer=(0.0, 1.0)),
         "N_A": Where("N_A", prefer=(0.0, 1.0)),
     })  # fmt: skip
-    # b) the yoke
+    # b) the yoke: the loads along the contact line y = 0 are drawn in the free space under the
+    # bar (Ф_2 at C_2) and beyond the foot (R_32 at D), not along the bar's edge
     v2, _ = view("2", right + 40.0, top_y)
-    d.text("б) кулиса 2", (right + 30.0, 32.0), 3.5)
+    d.text(WORDS("view_2"), (right + 30.0, 32.0), 3.5)
     _yoke(v2, sol, data, guides=False)
     v2.dot(data.C2)
     v2.label(data.C2, "C_2", 3.5, prefer=(0.0, 1.0))
-    D = Vec(c3.x, 0.0)
     v2.dot(D)
-    v2.label(D, "D", 3.5, prefer=(1.0, 1.0))
+    v2.label(D, "D", 3.5, prefer=(1.0, -1.0))
     v2.label(A, "A", 3.5, prefer=(-1.0, 1.0))
-    draw_loads(v2, data.dynamic, k_F, "2", {
-        "N_A": Where("N_A", prefer=(0.0, 1.0)),
-        "Ф_2": Where("Ф_2", prefer=(0.0, -1.0)),
-        "R_{32}": Where("R_{32}", prefer=(0.0, -1.0)),
-        "M_{02}": Where("M_{02}", at=Vec(A.x, 0.0), radius=5.0, start_deg=60.0),
+    r32 = load(R, "2", "R_{32}")
+    draw_loads(v2, R, k_F, "2", {
+        # the pin's push arrives at A through the frame's outer side, clear of the bar
+        "N_A": Where("N_A", arrive=True, prefer=(0.0, 1.0)),
+        "Phi_2": Where(WORDS("Phi2"), prefer=(0.0, -1.0)),
+        # pointing away from the bar: leaving D; pointing at it: arriving from beyond the foot
+        "R_{32}": Where("R_{32}", arrive=r32 is not None and r32.x < 0.0, prefer=(0.0, -1.0)),
+        # the guide's couple drawn in the free space under the bar, right of the frame
+        "M_{02}": Where("M_{02}", at=Vec(data.C2.x, -0.45 * p["OA"]), radius=5.0,
+                        start_deg=60.0),
     })  # fmt: skip
-    # c) the roller
-    v3, right = view("3", 55.0, bot_y)
-    d.text("в) каток 3", (28.0, 150.0), 3.5)
-    _roller(v3, sol, data, base=False)
-    P = Vec(c3.x, -p["r3"] - p["R3"])
-    for q, name in ((D, "D"), (P, "P")):
+    # c) the roller, at its own (larger) scale: it is small beside the flywheel
+    b3 = boxes["3"]
+    k3 = gost_scale_to_fit(b3[2] - b3[0], b3[3] - b3[1], 96.0, 96.0)
+    half3 = 0.5 * (b3[2] - b3[0]) / k3.k
+    v3 = d.viewport(k3, ((b3[0] + b3[2]) / 2.0, (b3[1] + b3[3]) / 2.0), (32.0 + half3, 201.0))
+    right = 32.0 + 2.0 * half3
+    d.text(WORDS("view_3", ratio=k3.ratio_text()), (28.0, 146.0), 3.5)
+    _roller(v3, sol, data, base=False, foot=False)
+    for q, name, pref in ((D, "D", (-1.0, 1.0)), (P, "P", (-1.0, -1.0))):
         v3.dot(q)
-        v3.label(q, name, 3.5, prefer=(-1.0, 0.0))
-    v3.label(c3, "C_3", 3.5, prefer=(-1.0, 1.0))
-    draw_loads(v3, data.dynamic, k_F, "3", {
-        "R_{32}": Where("R_{23}"),
-        "R_{03}": Where("R_{03}"),
-        "Ф_3": Where("Ф_3", prefer=(0.0, 1.0)),
-        "M_{Ф3}": Where("M_{Ф3}", radius=v3.mm(p["R3"]) + 4.0, start_deg=100.0),
+        v3.label(q, name, 3.5, prefer=pref)
+    v3.label(c3, "C_3", 3.5, prefer=(-1.0, -1.0))
+    rim_mm, hub_mm = v3.mm(p["R3"]), v3.mm(p["r3"])
+    r_m3 = rim_mm - 8.0 if rim_mm - 8.0 > hub_mm + 6.0 else rim_mm + 4.0
+    draw_loads(v3, R, k_F, "3", {
+        "R_{32}": Where("R_{23}", prefer=(0.0, 1.0)),
+        "R_{03}": Where("R_{03}", prefer=(1.0, -1.0), short_at=P - Vec(0.0, gap)),
+        "Phi_3": Where(WORDS("Phi3"), prefer=(-1.0, 1.0)),
+        # inside the rim, outside the hub where there is room between them
+        "M_Phi3": Where(WORDS("M_Phi3"), radius=r_m3, start_deg=100.0),
     }, centre=c3)  # fmt: skip
     # d) the mechanism balanced by F_x at the roller's axis (no inertia loads)
-    v4, _ = view("all", right + 40.0, bot_y)
-    d.text("г) уравновешивающая сила F_x (без сил инерции)", (right + 30.0, 150.0), 3.5)
+    v4, _ = view("all", right + 25.0, bot_y)
+    d.text(WORDS("view_4"), (right + 30.0, 150.0), 3.5)
     _flywheel(v4, sol, data)
     _yoke(v4, sol, data)
     _roller(v4, sol, data)
+    _numbers(v4, sol, data)
     v4.label((0.0, 0.0), "O", 3.5, prefer=(-1.0, -1.0))
     v4.label(c3, "C_3", 3.5, prefer=(0.0, -1.0))
-    moment(v4, (0.0, 0.0), p["M"], 6.0, f"M = {f(abs(p['M']))} Н·м", role="result",
+    moment(v4, (0.0, 0.0), p["M"], 6.0, f"M = {f(abs(p['M']))} {_u('Nm')}", role="result",
            start=math.radians(160.0), height=2.5)  # fmt: skip
     fx = data.static.force("F_x")
-    force(v4, c3, fx, k_F, f"F_x = {f(fx.norm)} Н", role="result",
-          height=2.5)  # fmt: skip
+    force(v4, c3, fx, k_F, f"F_x = {f(fx.norm)} {_u('N')}", role="result", height=2.5)
     _panel_fbd(d, sol, data)
     return d.finish()
+
+
+#: The names of the inertia loads on the free-body sheet's table, by the model's keys.
+_INERTIA = {"M_Phi1": "M_Phi1", "Phi_2": "Phi2", "Phi_3": "Phi3", "M_Phi3": "M_Phi3"}
 
 
 def _panel_fbd(d: Drawing, sol: Solution, data: Data) -> None:
     x, y = 262.0, 26.0
     width = 146.0
-    d.text("Реакции и уравновешивающая сила", (x, y + 3.5), 3.5)
+    d.text(WORDS("fbd_table_head"), (x, y + 3.5), 3.5)
     rows = _results_rows(
         sol,
         (
-            ("N_A", "N_A", "Н"),
-            ("X_O", "X_O", "Н"),
-            ("Y_O", "Y_O", "Н"),
-            ("F_x", "F_x", "Н"),
+            ("N_A", "N_A", "N"),
+            ("X_O", "X_O", "N"),
+            ("Y_O", "Y_O", "N"),
+            ("F_x", "F_x", "N"),
         ),
     )
     _, h = d.table(x, y + 6.0, (50.0, 96.0), rows)
     y += 6.0 + h + 6.0
     R = data.dynamic
-    d.text("Остальные нагрузки", (x, y + 3.5), 3.5)
+    d.text(WORDS("other_loads"), (x, y + 3.5), 3.5)
+    n, nm = _u("N"), _u("Nm")
     vals = []
     for body in ("1", "2", "3"):
         for ld in R.loads[body]:
             if ld.kind == "inertia":
                 val = ld.force.norm if ld.force is not None else abs(ld.moment)
-                vals.append((ld.name, f"{f(val, 5)} {'Н' if ld.force is not None else 'Н·м'}"))
-    vals.append(("R_{32} = R_{23}", f"{f(abs(R.magnitudes['R_{32}']), 5)} Н"))
-    vals.append(("R_{03}", f"{f(abs(R.magnitudes['R_{03}']), 5)} Н"))
-    vals.append(("M_{02}", f"{f(abs(R.moment('M_{02}')), 5)} Н·м"))
+                label = WORDS(_INERTIA[ld.name]) if ld.name in _INERTIA else ld.name
+                vals.append((label, f"{f(val, 4)} {n if ld.force is not None else nm}"))
+    vals.append(("R_{32} = R_{23}", f"{f(abs(R.magnitudes['R_{32}']), 4)} {n}"))
+    vals.append(("R_{03}", f"{f(abs(R.magnitudes['R_{03}']), 4)} {n}"))
+    vals.append(("M_{02}", f"{f(abs(R.moment('M_{02}')), 4)} {nm}"))
     if len(vals) % 2:
         vals.append(("", ""))
-    rows = [["Нагрузка", "Значение", "Нагрузка", "Значение"]]
+    load_, value = WORDS("load"), WORDS("value")
+    rows = [[load_, value, load_, value]]
     rows += [[*vals[i], *vals[i + 1]] for i in range(0, len(vals), 2)]
     _, h = d.table(x, y + 6.0, (30.0, 43.0, 30.0, 43.0), rows)
     y += 6.0 + h + 5.0
     mb = R.moment("M_b")
     lines = (
-        "R_{ij} – сила звена i на звено j (0 – стойка); Ф_i = –m_ia_{Ci}, M_{Фi} = –I_iε_i – "
-        "нагрузки инерции по принципу Даламбера.",
-        "Паз гладкий: N_A горизонтальна. В горизонтальной плоскости вес не прижимает каток, "
-        "контакты катка передают только силы сцепления R_{32}, R_{03}; направляющая кулисы – "
-        "нормальную силу и момент M_{02}.",
-        f"Проверка: уравновешивающий момент на маховике при ε_1 из уравнения движения "
-        f"M_у = {small(mb, float(sol.params['M']), 'Н·м')}, т.е. 0 (кинетостатика совпадает с "
-        "уравнением Лагранжа).",
-        f"F_x по равенству мощностей F_x·v_{{C3}} = M·ω_1: {f(sol.results['F_x'], 7)} Н; из "
-        f"равновесия звеньев без сил инерции (г): {f(data.F_x_kinetostatic, 7)} Н.",
+        WORDS("fbd_1"),
+        WORDS("fbd_2"),
+        WORDS("fbd_3", mb=small(mb, float(sol.params["M"]), nm)),
+        WORDS("fbd_4", fx=f(sol.results["F_x"], 4), fk=f(data.F_x_kinetostatic, 4), n=n),
     )
     for ln in lines:
         y = d.paragraph(f"– {ln}", x, y, width, 2.5, indent=3.0) + 0.8
@@ -612,7 +700,7 @@ def motion(solution: Solution, frames: int) -> Frames:
     base = -r3 - R3
     xs = np.concatenate([points["C3"][:, 0] - R3, points["C3"][:, 0] + R3])
     return Frames(
-        title=f"{PROBLEM.id}: один оборот маховика",
+        title=WORDS("animation", id=PROBLEM.id),
         phi=phi,
         points=points,
         links=(("O", "A"), ("S1", "S2"), ("Y", "C2", "D"), ("C3", "K")),

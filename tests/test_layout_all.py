@@ -29,8 +29,7 @@ BASELINE: dict[tuple[str, str], dict[str, int]] = {
     ("2013-8", ""): {"anchor": 1, "empty": 1},
     ("2013-9", "motion"): {"label-line": 1},
     ("kulisa-23110713", ""): {"anchor": 2},
-    ("kulisa-23110713", "graphs"): {"empty": 1},
-    ("kulisa-23110713", "fbd"): {"anchor": 4, "empty": 1},
+    ("kulisa-23110713", "fbd"): {"anchor": 3},
 }
 
 
