@@ -25,7 +25,9 @@ BASELINE: dict[tuple[str, str], dict[str, int]] = {
     ("2013-5", ""): {"short-vector": 2},
     ("2013-6", ""): {"anchor": 4},
     ("2013-6", "kinematics"): {"label-line": 5, "short-vector": 2, "empty": 1},
-    ("2013-7", ""): {"anchor": 2, "short-vector": 3},
+    # composed (sheet.compose): the mechanism 1:2.5, the plans 1 N/mm, the joints only 1:1 in a
+    # strip under the mechanism, whose labels crowd; the strip leaves the field 58 % empty
+    ("2013-7", ""): {"anchor": 5, "short-vector": 3, "empty": 1},
     ("2013-8", ""): {"anchor": 1, "empty": 1},
     ("2013-9", "motion"): {"label-line": 1},
     ("kulisa-23110713", ""): {"anchor": 2},
