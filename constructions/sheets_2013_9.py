@@ -22,13 +22,27 @@ import numpy as np
 
 from geomcad import tol
 from geomcad.geom import Vec
-from geomcad.sheet import Drawing, Scale, Sheet, TitleBlock, Viewport, start
-from geomcad.sheet.graph import Axis, Graph, nice_step
+from geomcad.sheet import Scale, Sheet, TitleBlock, Viewport, start
+from geomcad.sheet import views as V
+from geomcad.sheet.compose import (
+    Column,
+    Extent,
+    Field,
+    Figure,
+    Node,
+    Row,
+    Spacer,
+    View,
+    arrange,
+    compose,
+    text_width,
+)
+from geomcad.sheet.graph import Graph, nice_step
 from geomcad.sheet.lang import Words, current
 from geomcad.sheet.loads import damper, ground, moment, spring
-from geomcad.sheet.scale import gost_scale_to_fit, nice_factor
+from geomcad.sheet.scale import nice_factor
 
-from .dyn_common import Where, draw_loads, f, load, mu, short_note, small
+from .dyn_common import Where, draw_loads, f, load, short_note, small
 from .p2013_9 import ROD, Data
 
 if TYPE_CHECKING:
@@ -36,20 +50,13 @@ if TYPE_CHECKING:
 
 WORDS = Words(__package__, "sheets_2013_9")
 
-PANEL_X = 262.0
+#: The width (mm) of the right-hand panel's text and tables.
 PANEL_W = 146.0
-#: The three views' centres along x and the top of the drawings on the sheet (mm).
-VIEW_X = (64.0, 140.0, 212.0)
-VIEW_TOP = 44.0
-#: Room for the drawing of one view (mm): width, height.
-VIEW_ROOM = (70.0, 180.0)
 DISC = 1.3  # the disc's drawn radius, in units of r
 #: Force arrows on the sheet: the largest force gets at most this many mm.
 FORCE_ROOM_MM = 40.0
 #: A load drawn beyond its body keeps this gap (mm) from the body's outline.
 GAP_MM = 3.0
-#: The motion sheet: the graphs' left edge and width, the right column's left edge (mm).
-GRAPH_X, GRAPH_W, RIGHT_X = 45.0, 200.0, 262.0
 
 
 def scales(sol: Solution) -> dict[str, float]:
@@ -59,25 +66,18 @@ def scales(sol: Solution) -> dict[str, float]:
     return {"F": nice_factor(biggest, FORCE_ROOM_MM, "F").k if biggest > 0.0 else 1.0}
 
 
-def k_l(r: float) -> Scale:
-    """The largest GOST scale at which a view (the disc or the crosshead across, the support
-    above to the disc's bottom) fits its room."""
-    w, h = 2.0 * max(DISC, ROD.slot_half + ROD.frame) * r, (ROD.ground + DISC + 0.4) * r
-    return gost_scale_to_fit(w, h, VIEW_ROOM[0], VIEW_ROOM[1])
-
-
 def sheets(sol: Solution) -> list[tuple[str, Sheet]]:
     """The main sheet (the parts and their loads) and the ``motion`` sheet."""
     return [("", _main(sol)), ("motion", _motion(sol))]
 
 
-def _title(sol: Solution, key: str, no: int) -> TitleBlock:
+def _title(sol: Solution, key: str, no: int, scale: str = "") -> TitleBlock:
     return TitleBlock(
         title=WORDS(key),
         designation=WORDS("designation", no=no),
         sheet_no=no,
         sheets=2,
-        scale=k_l(float(sol.params["r"])).ratio_text() if no == 1 else "",
+        scale=scale,
         lang=current(),
     )
 
@@ -89,42 +89,92 @@ def _unit(u: str) -> str:
 
 def _main(sol: Solution) -> Sheet:
     data: Data = sol.data
-    r = data.r
-    k = k_l(r)
-    k_F = sol.scales["F"]
-    d = start("A3", _title(sol, "tb_main", 1))
-    d.text(WORDS("head_main"), (25.0, 13.0), 5.0)
-    d.text(
-        WORDS(
-            "state",
-            phi=f(math.degrees(data.phi)),
-            dphi=f(data.dphi),
-            ddphi=f(data.ddphi),
-            t=f(float(sol.params["t"])),
-            mu_l=mu(k),
-            ratio=k.ratio_text(),
-            k_F=f(k_F),
-        ),
-        (25.0, 24.5),
-        3.5,
-    )
-    # O's height: the scheme's support, or the rod's crossbar with the spring's push arriving
-    # from above, whichever reaches higher, under the views' heads
-    spring_mm = float(sol.results["F_spring"]) / k_F if data.x > 0.0 else 0.0
-    rise = max(k.mm((ROD.ground + 0.15) * r), k.mm(data.x + ROD.top * r) + spring_mm + 4.0)
-    oy = VIEW_TOP + rise
-    views = [d.viewport(k, (0.0, 0.0), (x, oy)) for x in VIEW_X]
-    for v, head in zip(views, ("view_scheme", "view_disc", "view_rod"), strict=True):
-        d.text(WORDS(head), (v.at[0] - 30.0, 32.0), 3.5)
-    _scheme(views[0], data)
-    _disc(views[1], data, k_F)
-    _rod(views[2], data, k_F)
-    y = d.paragraph(
-        WORDS("rod_motion", x=f(data.x), xd=f(data.xd), xdd=f(data.xdd)), 25.0, 238.0, 200.0, 2.5
-    )
-    d.paragraph(WORDS("forces_at_mu", note=short_note(k_F)), 25.0, y + 1.0, 200.0, 2.5)
-    _panel_main(d, sol, data)
+    tree, views = _main_tree(sol)
+    lay = arrange(tree, Field.of_format("A3"))
+    k = lay.scale("l")
+    d = start("A3", _title(sol, "tb_main", 1, k.ratio_text()))
+    compose(d, tree)
+    del data, views
     return d.finish()
+
+
+def _extents(data: Data, pad: float) -> tuple[Extent, Extent, Extent]:
+    """The model boxes of the scheme, the disc and the rod; ``pad`` (model units) above and
+    below the disc and the rod is room for their loads at μ_F."""
+    r, x = data.r, data.x
+    half = max(DISC, ROD.slot_half + ROD.frame) * r
+    scheme = (-(DISC + 0.25) * r, -(DISC + 0.1) * r, half, (ROD.ground + 0.15) * r)
+    disc = (-DISC * r, -DISC * r - pad, DISC * r, DISC * r + pad)
+    rod = (-half, x - ROD.frame * r - pad, half, x + ROD.top * r + pad)
+    return scheme, disc, rod
+
+
+def _main_tree(sol: Solution) -> tuple[Node, dict[str, View]]:
+    """The three views at one GOST scale (the loads' room above and below the disc and the rod
+    found by arranging twice: it depends on that scale), the notes under them, the tables and
+    the equations on the right, clear of the title block."""
+    data: Data = sol.data
+    k_F = sol.scales["F"]
+    longest = max(float(sol.results["N_pin"]), float(sol.results["F_spring"])) / k_F + 6.0
+    pad = 0.0
+    for _ in range(3):
+        tree, views = _main_views(sol, _extents(data, pad))
+        k = arrange(tree, Field.of_format("A3")).scale("l").k
+        if abs(longest * k - pad) <= 1e-12:
+            break
+        pad = longest * k
+    return tree, views
+
+
+def _main_views(
+    sol: Solution, boxes: tuple[Extent, Extent, Extent]
+) -> tuple[Node, dict[str, View]]:
+    data: Data = sol.data
+    k_F = sol.scales["F"]
+    heads = ("view_scheme", "view_disc", "view_rod")
+    draws = (
+        lambda v: _scheme(v, data),
+        lambda v: _disc(v, data, k_F),
+        lambda v: _rod(v, data, k_F),
+    )
+    figs = [
+        Figure(box, fn, title=WORDS(h), group="l", show_scale=False, margin=3.0)
+        for box, fn, h in zip(boxes, draws, heads, strict=True)
+    ]
+    state = WORDS(
+        "state",
+        phi=f(math.degrees(data.phi)),
+        dphi=f(data.dphi),
+        ddphi=f(data.ddphi),
+        t=f(float(sol.params["t"])),
+        k_F=f(k_F),
+    )
+    notes = V.Text(
+        lines=[
+            *_wrap(WORDS("rod_motion", x=f(data.x), xd=f(data.xd), xdd=f(data.xdd)), 200.0, 3.0),
+            *_wrap(WORDS("forces_at_mu", note=short_note(k_F)), 200.0, 3.0),
+        ],
+        width=200.0,
+        height=3.0,
+    )
+    left = Column(
+        V.Text(lines=[state], height=3.5),
+        Row(*figs, title=WORDS("views_head"), group="l", title_height=3.5),
+        Row(notes, Spacer((20.0, 10.0))),
+        weights=(1.0, 0.86, 0.14),
+    )
+    tree = Row(left, _panel_main(sol, data), weights=(0.62, 0.38))
+    return tree, {"scheme": figs[0], "disc": figs[1], "rod": figs[2]}
+
+
+def _wrap(text: str, width: float, height: float = 2.5) -> list[str]:
+    """``text`` wrapped at spaces into lines of at most ``width`` mm."""
+    out: list[list[str]] = [[]]
+    for word in text.split(" "):
+        if out[-1] and text_width(" ".join([*out[-1], word]), height) > width:
+            out.append([])
+        out[-1].append(word)
+    return [" ".join(w) for w in out]
 
 
 def _crosshead(v: Viewport, data: Data, role: str = "link") -> None:
@@ -281,10 +331,9 @@ def _zero(x: float, scale: float) -> float:
     return 0.0 if abs(x) <= tol.DERIVED * max(abs(scale), 1.0) else abs(x)
 
 
-def _given(d: Drawing, sol: Solution, x: float, y: float) -> float:
-    """The given data as a table from (x, y top); returns the y below it and its gap."""
+def _given(sol: Solution) -> View:
+    """The given data as a table."""
     p = sol.params
-    d.text(WORDS("given"), (x, y + 3.5), 3.5)
     items = [
         ("J", "J", "kgm2"), ("m", "m", "kg"), ("r", "r", "m"), ("c", "c", "N_m"),
         ("k", "k", "Ns_m"), ("M0", "M_0", "Nm"), ("M1", "M_1", "Nm"), ("Omega", "Ω", "rad_s"),
@@ -294,15 +343,19 @@ def _given(d: Drawing, sol: Solution, x: float, y: float) -> float:
              for n, lab, u in items]  # fmt: skip
     rows = [[WORDS("param"), "M(t) = M_0 + M_1·sin Ωt"]]
     rows += [[cells[i], cells[i + 1]] for i in range(0, len(cells), 2)]
-    _, h = d.table(x, y + 6.0, (73.0, 73.0), rows)
-    return y + 6.0 + h + 6.0
+    return V.Table(rows, widths=(73.0, 73.0), title=WORDS("given"))
 
 
-def _panel_main(d: Drawing, sol: Solution, data: Data) -> None:
+def _paragraphs(head: str, items: list[str], dash: bool = True) -> View:
+    """A titled block of paragraphs, each wrapped to the panel's width."""
+    lines: list[str] = []
+    for it in items:
+        lines += _wrap(f"– {it}" if dash else it, PANEL_W)
+    return V.Text(lines=lines, width=PANEL_W, title=head)
+
+
+def _panel_main(sol: Solution, data: Data) -> Node:
     res = sol.results
-    x, y = PANEL_X, 10.0
-    y = _given(d, sol, x, y)
-    d.text(WORDS("results_state"), (x, y + 3.5), 3.5)
     R = data.reactions
     qty, val = WORDS("quantity"), WORDS("value")
     rows = [[qty, val, qty, val]]
@@ -323,101 +376,76 @@ def _panel_main(d: Drawing, sol: Solution, data: Data) -> None:
     ]
     for i in range(0, len(pairs), 2):
         rows.append([pairs[i][0], pairs[i][1], pairs[i + 1][0], pairs[i + 1][1]])
-    _, h = d.table(x, y + 6.0, (29.0, 44.0, 29.0, 44.0), rows)
-    y += 6.0 + h + 5.0
-    y = d.text(WORDS("eq_head"), (x, y + 3.5), 3.5).at[1] + 2.0
-    for key in ("eq_1", "eq_2", "eq_3", "eq_4"):
-        y = d.paragraph(WORDS(key), x, y, PANEL_W, 2.5, indent=4.0) + 0.6
-    y += 3.0
-    y = d.text(WORDS("loads_head"), (x, y + 3.5), 3.5).at[1] + 2.0
+    results = V.Table(rows, widths=(29.0, 44.0, 29.0, 44.0), title=WORDS("results_state"))
+    eq = _paragraphs(WORDS("eq_head"), [WORDS(k) for k in ("eq_1", "eq_2", "eq_3", "eq_4")],
+                     dash=False)  # fmt: skip
     mb = R.moment("M_b")
-    notes = (
-        WORDS("loads_1"),
-        WORDS("loads_2"),
-        WORDS("loads_3", mb=small(mb, data.M_t or 1.0, nm)),
+    loads = _paragraphs(
+        WORDS("loads_head"),
+        [WORDS("loads_1"), WORDS("loads_2"), WORDS("loads_3", mb=small(mb, data.M_t or 1.0, nm))],
     )
-    for ln in notes:
-        y = d.paragraph(f"– {ln}", x, y, PANEL_W, 2.5, indent=3.0) + 0.6
+    return Column(_given(sol), results, eq, loads, Spacer((10.0, TITLE_BLOCK_H)))
 
 
-#: The title block's top-left corner on an A3 sheet (mm): nothing of a graph may reach into it.
-BLOCK = (230.0, 232.0)
-
-
-def _fit_graph(
-    gx: Axis, sym: str, unit: str, ts: list[float], vals: list[float], y_head: float, room: float
-) -> tuple[Axis, tuple[float, float]]:
-    """The value axis of a graph under ``y_head`` with the largest height up to ``room`` at
-    which its t axis, tick values and the curve keep out of the title block."""
-    lo, hi = min(0.0, min(vals)), max(0.0, max(vals))
-    while True:
-        gy = Axis.fit(sym, unit, lo, hi, room)
-        at = (GRAPH_X, y_head + 18.0 + gy.mm(gy.hi))
-        right = [at[1] - gy.mm(v - gy.zero) for t, v in zip(ts, vals, strict=True)
-                 if GRAPH_X + gx.mm(t) > BLOCK[0] - 2.0]  # fmt: skip
-        low = max([at[1] + 12.0, *right])
-        if low <= BLOCK[1] - 2.0 or room < 30.0:
-            return gy, at
-        room *= 0.8
+#: The height (mm) the title block takes at the bottom of the field, with its margin.
+TITLE_BLOCK_H = 58.0
 
 
 def _motion(sol: Solution) -> Sheet:
-    """φ(t) and φ'(t) on the left, one above the other on a common t axis, the derivation under
-    them; on the right the integration, the table of the motion and the phase curve φ'(φ)."""
+    """φ(t) above φ'(t) on a common t axis on the left (with the ordinates of the table's
+    instants); on the right the integration, the table of the motion, the derivation and the
+    given data."""
     data: Data = sol.data
     tr = data.motion
-    lang = current()
-    d = start("A3", _title(sol, "tb_motion", 2))
-    d.text(WORDS("head_motion"), (25.0, 13.0), 5.0)
     T = tr.t_end
     ts = list(tr.t)
-    gx = Axis.fit("t", _unit("s"), 0.0, T, GRAPH_W)
-    gx = gx.with_tick(nice_step(T / 10.0))
     times = np.linspace(0.0, T, 11)
     state = tr.sol(times)
-    # each graph: the head's y and the room (mm) of its curve's height
-    for i, (vals, sym, unit, y_head, room) in enumerate(
-        (
-            (list(tr.phi), "φ", "rad", 24.0, 82.0),
-            (list(tr.omega), "φ'", "rad_s", 136.0, 100.0),
-        )
+    tick = nice_step(T / 10.0)
+    diagrams: list[View] = []
+    for i, (vals, sym, unit) in enumerate(
+        ((list(tr.phi), "φ", "rad"), (list(tr.omega), "φ'", "rad_s"))
     ):
-        gy, at = _fit_graph(gx, sym, _unit(unit), ts, vals, y_head, room)
-        d.text(f"{i + 1}. {sym}(t)", (25.0, y_head), 3.5)
-        g = Graph(d, gx, gy, at)
-        g.factors((25.0, y_head + 6.0), lang)
-        g.curve(ts, vals, "result")
-        # the ordinates of the table's instants (those that stand on the t axis's upper side,
-        # clear of its tick values)
-        for tt, val in zip(times, state[i], strict=True):
-            if val > 0.0:
-                g.curve([tt, tt], [0.0, val], "construction")
-        g.axes(lang)
-        g.point(T, vals[-1], f"{sym}(T) = {f(vals[-1])}", prefer=(1.0, -1.0))
-    x, y = RIGHT_X, 10.0
-    width = 408.0 - RIGHT_X
+
+        def extra(g: Graph, i: int = i, vals: list[float] = vals, sym: str = sym) -> None:
+            for tt, val in zip(times, state[i], strict=True):
+                if val > 0.0:  # ordinates on the t axis's upper side, clear of its values
+                    g.curve([tt, tt], [0.0, val], "construction")
+            g.point(T, vals[-1], f"{sym}(T) = {f(vals[-1])}", prefer=(1.0, -1.0))
+
+        diagrams.append(
+            V.Diagram(
+                V.AxisSpec("t", _unit("s"), tick=tick),
+                V.AxisSpec(sym, _unit(unit)),
+                [V.Curve(ts, vals)],
+                extra=extra,
+                title=f"{i + 1}. {sym}(t)",
+                least=(150.0, 70.0),
+                prefer=(230.0, 120.0),
+            )
+        )
     res = sol.results
-    y = d.text(WORDS("int_head"), (x, y + 3.5), 3.5).at[1] + 2.0
-    lines: tuple[str, ...] = (
-        WORDS("int_1"),
-        WORDS("int_rk") if tr.method == "DOP853" else WORDS("int_lsoda"),
-        WORDS("int_3", phi=f(res["phi_T"]), omega=f(res["omega_T"]), T=f(T)),
+    integ = _paragraphs(
+        WORDS("int_head"),
+        [
+            WORDS("int_1"),
+            WORDS("int_rk") if tr.method == "DOP853" else WORDS("int_lsoda"),
+            WORDS("int_3", phi=f(res["phi_T"]), omega=f(res["omega_T"]), T=f(T)),
+        ],
     )
-    for ln in lines:
-        y = d.paragraph(f"– {ln}", x, y, width, 2.5, indent=3.0) + 0.6
-    y += 4.0
-    # the motion at eleven instants, from the dense solution
-    d.text(WORDS("table_head"), (x, y + 3.5), 3.5)
     phis, omegas = state
     rows = [[f"t, {_unit('s')}", f"φ, {_unit('rad')}", f"φ, {_unit('deg')}",
              f"φ', {_unit('rad_s')}"]]  # fmt: skip
     for tt, ph, om in zip(times, phis, omegas, strict=True):
         rows.append([f(float(tt), 4), f(float(ph), 4), f(math.degrees(float(ph)), 4),
                      f(float(om), 4)])  # fmt: skip
-    _, h = d.table(x, y + 6.0, (width / 4.0,) * 4, rows, row_h=7.0)
-    y += 6.0 + h + 6.0
-    y = d.text(WORDS("deriv_head"), (x, y + 3.5), 3.5).at[1] + 2.0
-    for key in ("deriv_1", "deriv_2", "deriv_3", "deriv_4"):
-        y = d.paragraph(f"– {WORDS(key)}", x, y, width, 2.5, indent=3.0) + 0.6
-    _given(d, sol, x, y + 4.0)
+    table = V.Table(rows, widths=(PANEL_W / 4.0,) * 4, title=WORDS("table_head"))
+    deriv = _paragraphs(WORDS("deriv_head"), [WORDS(k) for k in ("deriv_1", "deriv_2", "deriv_3",
+                                                                  "deriv_4")])  # fmt: skip
+    right = Column(integ, table, deriv, _given(sol), Spacer((10.0, TITLE_BLOCK_H)))
+    # the lower diagram keeps clear of the title block's corner on its right
+    left = Column(diagrams[0], Row(diagrams[1], Spacer((30.0, 10.0))))
+    tree = Row(left, right, weights=(0.6, 0.4))
+    d = start("A3", _title(sol, "tb_motion", 2))
+    compose(d, tree)
     return d.finish()
