@@ -1,13 +1,16 @@
 """kulisa-23110713's drawing sheets: what the student hands in.
 
-- main sheet: the mechanism at φ with the velocities of its points drawn at μ_V (V_A ⊥ OA, the
-  yoke's V_A2 = V_A1 + V_A2A1, the roller's V_D = V_2 and V_C3 from its instantaneous centre P),
-  the velocity plan, the given data and the results beside the report's;
-- ``graphs``: I_pr(φ) and ω1(φ) over a turn from rest (the kinetic-energy theorem as a curve, the
-  solve_ivp integration as points), the equation of motion, the two methods side by side, and
-  the report's errata;
-- ``fbd``: the free-body diagrams of flywheel, yoke and roller with the reactions and the inertia
-  loads at μ_F, and the mechanism balanced by the horizontal force F_x at the roller's axis.
+- main sheet (composed by geomcad.sheet.compose): the mechanism at φ with the velocities of its
+  points drawn at μ_V (V_A ⊥ OA, the yoke's V_A2 = V_A1 + V_A2A1, the roller's V_D = V_2 and
+  V_C3 from its instantaneous centre P), the velocity plan, the given data and the results;
+- ``graphs`` (composed): I_pr(φ) and ω1(φ) over a turn from rest (the kinetic-energy theorem as
+  a curve, the solve_ivp integration as points) with their ordinates, the equation of motion,
+  and the two methods side by side in a table;
+- ``fbd`` (still placed by hand: the layout step gave the views 1:15 with room for their loads):
+  the free-body diagrams of flywheel, yoke and roller with the reactions and the inertia loads at
+  μ_F, and the mechanism balanced by the horizontal force F_x at the roller's axis.
+
+Every word comes from ``strings/<lang>/sheets_kulisa.toml``.
 """
 
 from __future__ import annotations
@@ -20,7 +23,20 @@ import numpy as np
 from geomcad.dynamics.analogues import Array
 from geomcad.geom import Arc, Circle, Vec
 from geomcad.sheet import Drawing, Scale, Sheet, TitleBlock, Viewport, start
-from geomcad.sheet.graph import Axis, Graph
+from geomcad.sheet import views as V
+from geomcad.sheet.compose import (
+    Column,
+    Field,
+    Figure,
+    Node,
+    Row,
+    Spacer,
+    View,
+    arrange,
+    compose,
+    text_width,
+)
+from geomcad.sheet.graph import Graph
 from geomcad.sheet.lang import Words, current
 from geomcad.sheet.loads import force, ground, moment
 from geomcad.sheet.motion import Frames, turn
@@ -33,12 +49,8 @@ from .spec_kulisa import PROBLEM
 if TYPE_CHECKING:
     from geomcad.problem import Solution
 
-PANEL_X = 292.0
+#: The width (mm) of the main sheet's notes on the right.
 PANEL_W = 118.0
-#: The field of the mechanism on the main sheet (mm): x0, y0, x1, y1.
-SCHEME = (26.0, 30.0, 284.0, 182.0)
-#: The field of the velocity plan (mm): x0, y0, x1, y1 (left of the title block).
-PLAN = (25.0, 196.0, 226.0, 288.0)
 SLOT_W = 0.08  # the slot's half-width and the yoke's bar height, in units of OA
 SHEETS = 3
 
@@ -109,11 +121,6 @@ def _extent(sol: Solution, data: Data) -> tuple[float, float, float, float]:
     y0 = min(-R1, -r3 - R3 - 0.1 * R3)
     y1 = max(R1, OA * (1.0 + 2.0 * SLOT_W))
     return x0, y0, x1, y1
-
-
-def _scale_for(box: tuple[float, float, float, float], room: tuple[float, float]) -> Scale:
-    w, h = box[2] - box[0], box[3] - box[1]
-    return gost_scale_to_fit(w, h, room[0], room[1])
 
 
 def _flywheel(v: Viewport, sol: Solution, data: Data, pivot: bool = True) -> None:
@@ -200,31 +207,40 @@ def _numbers(v: Viewport, sol: Solution, data: Data) -> None:
 
 
 def _main(sol: Solution) -> Sheet:
-    data: Data = sol.data
-    p = _p(sol)
-    box = _extent(sol, data)
-    room = (SCHEME[2] - SCHEME[0], SCHEME[3] - SCHEME[1])
-    k = _scale_for(box, room)
+    tree, views = _main_tree(sol)
+    k = arrange(tree, Field.of_format("A3"))[views["scheme"]].scale
+    assert k is not None
     d = start("A3", _tb("tb_main", 1, k.ratio_text()))
-    d.text(WORDS("head_main"), (25.0, 13.0), 5.0)
-    kv = Scale(sol.scales["v"], "v")
-    d.text(
-        WORDS("state", phi=f(p["phi_deg"]), omega=f(data.omega), mu_l=mu(k),
-              ratio=k.ratio_text(), mu_v=mu(kv)),
-        (25.0, 20.0),
-        3.5,
-    )  # fmt: skip
-    cx = SCHEME[0] + (-box[0]) / k.k + 0.5 * (room[0] - (box[2] - box[0]) / k.k)
-    cy = SCHEME[1] + box[3] / k.k + 0.5 * (room[1] - (box[3] - box[1]) / k.k)
-    v = d.viewport(k, (0.0, 0.0), (cx, cy))
+    compose(d, tree)
+    return d.finish()
+
+
+def _main_tree(sol: Solution) -> tuple[Node, dict[str, View]]:
+    """The scheme with its velocities, the velocity plan and its words under it, the tables on
+    the right; the title block's corner kept free."""
+    data: Data = sol.data
+    # the model box holds the velocities drawn at μ_V (at most VELOCITY_ROOM_MM long)
+    scheme = Figure(_extent(sol, data), lambda v: _scheme(v, sol, data),
+                    title=WORDS("head_main"), margin=3.0, weight=3.0)  # fmt: skip
+    return _main_layout(sol, data, scheme), {"scheme": scheme}
+
+
+def _scheme(v: Viewport, sol: Solution, data: Data) -> None:
     _flywheel(v, sol, data)
     _yoke(v, sol, data)
     _roller(v, sol, data)
     _numbers(v, sol, data)
     _velocities(v, sol, data)
-    _plan(d, sol, data)
-    _panel_main(d, sol, data)
-    return d.finish()
+
+
+def _main_layout(sol: Solution, data: Data, scheme: View) -> Node:
+    p = _p(sol)
+    kv = Scale(sol.scales["v"], "v")
+    state = V.Text(lines=[WORDS("state", phi=f(p["phi_deg"]), omega=f(data.omega), mu_v=mu(kv))],
+                   height=3.5)  # fmt: skip
+    plan, words = _plan(sol, data)
+    left = Column(state, scheme, Row(plan, words, Spacer((30.0, 10.0))), weights=(1.0, 0.66, 0.34))
+    return Row(left, _panel_main(sol, data), weights=(0.69, 0.31))
 
 
 def _velocities(v: Viewport, sol: Solution, data: Data) -> None:
@@ -277,39 +293,58 @@ def _velocities(v: Viewport, sol: Solution, data: Data) -> None:
     v.dim_angle((0.0, 0.0), (p["OA"], 0.0), A, "φ", r_mm=r_phi, height=2.5)
 
 
-def _plan(d: Drawing, sol: Solution, data: Data) -> None:
-    """The velocity plan: pa1 = V_A1 ⊥ OA, a1a2 ∥ slot, pa2 = V_A2 ∥ guide, pc3 = V_C3."""
+def _plan(sol: Solution, data: Data) -> tuple[View, View]:
+    """The velocity plan (pa1 = V_A1 ⊥ OA, a1a2 ∥ slot, pa2 = V_A2 ∥ guide, pc3 = V_C3) at the
+    layout's μ_V, and its words."""
     w = data.omega
     va, _ = data.yoke.pin.velocity(w)
     v2, _ = data.yoke.body.velocity(w)
     vc, _ = data.roller.velocity(w)
-    kv = nice_factor(va.norm, PLAN[3] - PLAN[1] - 14.0, "v") if va.norm > 0.0 else Scale(1.0, "v")
-    d.text(WORDS("plan_head", mu=mu(kv)), (PLAN[0], PLAN[1]), 3.5)
     xs = [0.0, va.x, v2.x, vc.x]
     ys = [0.0, va.y, v2.y, vc.y]
-    mid_x = 0.5 * (min(xs) + max(xs)) / kv.k
-    mid_y = 0.5 * (min(ys) + max(ys)) / kv.k
-    pole = (0.5 * (PLAN[0] + 60.0 + PLAN[2]) - mid_x, 0.5 * (PLAN[1] + 6.0 + PLAN[3]) + mid_y)
-    pv = d.viewport(kv, (0.0, 0.0), pole)
-    for vec_, name in ((va, "a_1"), (v2, "a_2 = d"), (vc, "c_3")):
-        if vec_.norm > 0.0:
-            pv.arrow((0.0, 0.0), vec_, "result")
-            pv.dot(vec_)
-            pv.label(vec_, name, 3.5, prefer=(0.0, -1.0) if name == "c_3" else None)
-    if (v2 - va).norm > 0.0:
-        pv.arrow(va, v2, "construction")
-    pv.dot((0.0, 0.0))
-    pv.label((0.0, 0.0), "p", 3.5, prefer=(1.0, 1.0))
+
+    def draw(pv: Viewport) -> None:
+        for vec_, name in ((va, "a_1"), (v2, "a_2 = d"), (vc, "c_3")):
+            if vec_.norm > 0.0:
+                pv.arrow((0.0, 0.0), vec_, "result")
+                pv.dot(vec_)
+                pv.label(vec_, name, 3.5, prefer=(0.0, -1.0) if name == "c_3" else None)
+        if (v2 - va).norm > 0.0:
+            pv.arrow(va, v2, "construction")
+        pv.dot((0.0, 0.0))
+        pv.label((0.0, 0.0), "p", 3.5, prefer=(1.0, 1.0))
+
+    plan = Figure((min(xs), min(ys), max(xs), max(ys)), draw, title=WORDS("plan_title"),
+                  quantity="v", series="nice", margin=5.0)  # fmt: skip
     k3 = vc.norm / v2.norm if v2.norm > 0.0 else 0.0
-    y = PLAN[1] + 6.0
     ms = _u("m_s")
+    lines: list[str] = []
     for ln in (
         WORDS("plan_1", va=f(va.norm), u=ms),
         WORDS("plan_2"),
         WORDS("plan_3", v2=f(v2.norm), u=ms),
         WORDS("plan_4", vc=f(vc.norm), u=ms, k3=f(k3)),
     ):
-        y = d.paragraph(ln, PLAN[0], y, 56.0, 2.5, indent=3.0) + 1.0
+        lines += _wrap(ln, 70.0)
+    return plan, V.Text(lines=lines, width=70.0)
+
+
+def _wrap(text: str, width: float, height: float = 2.5) -> list[str]:
+    """``text`` wrapped at spaces into lines of at most ``width`` mm."""
+    out: list[list[str]] = [[]]
+    for word in text.split(" "):
+        if out[-1] and text_width(" ".join([*out[-1], word]), height) > width:
+            out.append([])
+        out[-1].append(word)
+    return [" ".join(w) for w in out]
+
+
+def _notes(items: list[str], width: float = 0.0, dash: bool = False) -> View:
+    width = width or PANEL_W
+    lines: list[str] = []
+    for it in items:
+        lines += _wrap(f"– {it}" if dash else it, width)
+    return V.Text(lines=lines, width=width)
 
 
 def _results_rows(sol: Solution, names: tuple[tuple[str, str, str], ...]) -> list[list[str]]:
@@ -319,10 +354,8 @@ def _results_rows(sol: Solution, names: tuple[tuple[str, str, str], ...]) -> lis
     return rows
 
 
-def _panel_main(d: Drawing, sol: Solution, data: Data) -> None:
+def _given(sol: Solution) -> View:
     p = _p(sol)
-    x, y = PANEL_X, 10.0
-    d.text(WORDS("given"), (x, y + 3.5), 3.5)
     items = [
         ("m1", "m_1", "kg"), ("R1", "R_1", "m"), ("OA", "OA", "m"), ("m2", "m_2", "kg"),
         ("m3", "m_3", "kg"), ("R3", "R_3", "m"), ("r3", "r_3", "m"), ("rho3", "ρ_3", "m"),
@@ -332,9 +365,10 @@ def _panel_main(d: Drawing, sol: Solution, data: Data) -> None:
     cells.append("")
     par = WORDS("param")
     rows = [[par, par]] + [[cells[i], cells[i + 1]] for i in range(0, 12, 2)]
-    _, h = d.table(x, y + 6.0, (59.0, 59.0), rows)
-    y += 6.0 + h + 6.0
-    d.text(WORDS("velocities_head"), (x, y + 3.5), 3.5)
+    return V.Table(rows, widths=(59.0, 59.0), title=WORDS("given"))
+
+
+def _panel_main(sol: Solution, data: Data) -> Node:
     w = data.omega
     va, _ = data.yoke.pin.velocity(w)
     v2, _ = data.yoke.body.velocity(w)
@@ -346,76 +380,81 @@ def _panel_main(d: Drawing, sol: Solution, data: Data) -> None:
         ["V_A", f"{f(va.norm, 4)} {ms}", "V_2 = V_D", f"{f(v2.norm, 4)} {ms}"],
         ["V_{C3}", f"{f(vc.norm, 4)} {ms}", "ω_3", f"{f(abs(w3), 4)} {_u('rad_s')}"],
     ]
-    _, h = d.table(x, y + 6.0, (20.0, 39.0, 20.0, 39.0), rows)
-    y += 6.0 + h + 6.0
-    d.text(WORDS("results_head"), (x, y + 3.5), 3.5)
-    rows = _results_rows(
-        sol,
-        (
-            ("I_pr_A", "A", "kgm2"),
-            ("I_pr_B", "B", "kgm2"),
-            ("I_pr", WORDS("I_pr"), "kgm2"),
-            ("dI_pr", WORDS("dI_pr"), "kgm2"),
-            ("omega1", "ω_1", "rad_s"),
-            ("eps1", "ε_1", "rad_s2"),
-            ("t_reach", "t(φ)", "s"),
-            ("omega_ode", WORDS("omega_ode"), "rad_s"),
+    vel = V.Table(rows, widths=(20.0, 39.0, 20.0, 39.0), title=WORDS("velocities_head"))
+    res = V.Table(
+        _results_rows(
+            sol,
+            (
+                ("I_pr_A", "A", "kgm2"),
+                ("I_pr_B", "B", "kgm2"),
+                ("I_pr", WORDS("I_pr"), "kgm2"),
+                ("dI_pr", WORDS("dI_pr"), "kgm2"),
+                ("omega1", "ω_1", "rad_s"),
+                ("eps1", "ε_1", "rad_s2"),
+                ("t_reach", "t(φ)", "s"),
+                ("omega_ode", WORDS("omega_ode"), "rad_s"),
+            ),
         ),
+        widths=(40.0, 78.0),
+        title=WORDS("results_head"),
     )
-    _, h = d.table(x, y + 6.0, (40.0, 78.0), rows)
-    y += 6.0 + h + 4.0
-    for ln in (WORDS("note_1"), WORDS("note_2")):
-        y = d.paragraph(ln, x, y, PANEL_W, 2.5) + 0.8
+    notes = _notes([WORDS("note_1"), WORDS("note_2")])
+    return Column(_given(sol), vel, res, notes, Spacer((10.0, TITLE_BLOCK_H)))
+
+
+#: The height (mm) the title block takes at the bottom of the field, with its margin.
+TITLE_BLOCK_H = 58.0
 
 
 # -- graphs --------------------------------------------------------------------------------------
 
 
-#: The graphs sheet: the curves' left edge and room across, the right column's left edge (mm).
-GRAPH_X, GRAPH_W, RIGHT_X = 40.0, 200.0, 262.0
-
-
 def _graphs(sol: Solution) -> Sheet:
-    """I_pr(φ) above ω1(φ), across the left of the sheet on a common φ axis; the equation of
-    motion and a table of both at every 30° on the right."""
+    """I_pr(φ) above ω1(φ) on the left (their ordinates at the tabulated positions), the equation
+    of motion and a table of both every 15° on the right."""
     data: Data = sol.data
     p = _p(sol)
-    lang = current()
-    d = start("A3", _tb("tb_graphs", 2))
-    d.text(WORDS("head_graphs"), (25.0, 13.0), 5.0)
     sw = sweep(data)
     phis_deg = np.degrees(sw["phi"])
-    lo, hi = float(phis_deg[0]), float(phis_deg[-1])
-    gx = Axis.fit("φ", "°", lo, hi, GRAPH_W).with_tick(30.0 * turns(data))
-    # 1. I_pr(φ)
-    i_vals = sw["I_pr"]
-    gy = Axis.fit(WORDS("I_pr"), _u("kgm2"), 0.0, float(np.max(i_vals)), 86.0, name="I")
-    d.text(WORDS("graph_1"), (25.0, 24.0), 3.5)
-    g = Graph(d, gx, gy, (GRAPH_X, 38.0 + gy.mm(gy.hi) + 6.0))
-    g.factors((25.0, 30.0), lang)
-    g.curve(list(phis_deg), list(i_vals), "result")
+    tick = 30.0 * turns(data)
     ode = _turn_ode(data)
-    _ordinates(g, ode[0], data.model.J_pr(np.asarray(ode[0])))
-    g.axes(lang)
     phi_deg = p["phi_deg"]
-    g.curve([phi_deg, phi_deg], [0.0, float(sol.results["I_pr"])], "centre")
-    g.point(phi_deg, float(sol.results["I_pr"]), f"{WORDS('I_pr')} = {f(sol.results['I_pr'])}",
-            prefer=(1.0, -1.0))  # fmt: skip
-    # 2. ω1(φ) from rest: the energy theorem (curve) and solve_ivp (points)
-    om = sw["omega"]
-    y2 = 140.0
-    gy2 = Axis.fit("ω_1", _u("rad_s"), 0.0, float(np.max(om)), 92.0, name="ω")
-    d.paragraph(WORDS("graph_2"), 25.0, y2 - 3.5, 215.0, 3.5, indent=4.0)
-    g2 = Graph(d, gx, gy2, (GRAPH_X, y2 + 18.0 + gy2.mm(gy2.hi) + 6.0))
-    g2.factors((25.0, y2 + 10.0), lang)
-    g2.curve(list(phis_deg), list(om), "result")
-    _ordinates(g2, ode[0], ode[1])
-    g2.axes(lang)
-    for a, wv in zip(ode[0], ode[1], strict=True):
-        g2.point(float(np.degrees(a)), float(wv))
-    g2.curve([phi_deg, phi_deg], [0.0, data.omega], "centre")
-    g2.point(phi_deg, data.omega, f"ω_1 = {f(data.omega)}", prefer=(1.0, -1.0))
-    _panel_graphs(d, sol, data, ode)
+    i_pr, w1 = float(sol.results["I_pr"]), data.omega
+
+    def extra_i(g: Graph) -> None:
+        _ordinates(g, ode[0], data.model.J_pr(np.asarray(ode[0])))
+        g.curve([phi_deg, phi_deg], [0.0, i_pr], "centre")
+        g.point(phi_deg, i_pr, f"{WORDS('I_pr')} = {f(i_pr)}", prefer=(1.0, -1.0))
+
+    def extra_w(g: Graph) -> None:
+        _ordinates(g, ode[0], ode[1])
+        for a, wv in zip(ode[0], ode[1], strict=True):
+            g.point(float(np.degrees(a)), float(wv))
+        g.curve([phi_deg, phi_deg], [0.0, w1], "centre")
+        g.point(phi_deg, w1, f"ω_1 = {f(w1)}", prefer=(1.0, -1.0))
+
+    d1 = V.Diagram(
+        V.AxisSpec("φ", "°", tick=tick),
+        V.AxisSpec(WORDS("I_pr"), _u("kgm2"), name="I"),
+        [V.Curve(list(phis_deg), list(sw["I_pr"]))],
+        extra=extra_i,
+        title=WORDS("graph_1"),
+        least=(150.0, 70.0),
+        prefer=(230.0, 110.0),
+    )
+    d2 = V.Diagram(
+        V.AxisSpec("φ", "°", tick=tick),
+        V.AxisSpec("ω_1", _u("rad_s"), name="ω"),
+        [V.Curve(list(phis_deg), list(sw["omega"]))],
+        extra=extra_w,
+        title=WORDS("graph_2"),
+        least=(150.0, 70.0),
+        prefer=(230.0, 110.0),
+    )
+    left = Column(d1, Row(d2, Spacer((30.0, 10.0))))
+    tree = Row(left, _panel_graphs(sol, data, ode), weights=(0.6, 0.4))
+    d = start("A3", _tb("tb_graphs", 2))
+    compose(d, tree)
     return d.finish()
 
 
@@ -440,25 +479,21 @@ def _turn_ode(data: Data, n: int = 25) -> tuple[list[float], list[float]]:
     return [data.phi0, *phis], [0.0, *omegas]
 
 
-def _panel_graphs(
-    d: Drawing, sol: Solution, data: Data, ode: tuple[list[float], list[float]]
-) -> None:
+def _panel_graphs(sol: Solution, data: Data, ode: tuple[list[float], list[float]]) -> Node:
     r = sol.results
     p = _p(sol)
-    x, y = RIGHT_X, 10.0
-    width = 408.0 - RIGHT_X
-    y = d.text(WORDS("eq_head"), (x, y + 3.5), 3.5).at[1] + 2.0
     a_, b_ = float(r["I_pr_A"]), float(r["I_pr_B"])
-    lines = (
-        WORDS("eq_1"),
-        WORDS("eq_2", a=f(a_, 4), b=f(b_, 4), half=f(b_ / 2.0, 4), M=f(p["M"], 4)),
-        WORDS("eq_3"),
+    eq = _notes(
+        [
+            WORDS("eq_1"),
+            WORDS("eq_2", a=f(a_, 4), b=f(b_, 4), half=f(b_ / 2.0, 4), M=f(p["M"], 4)),
+            WORDS("eq_3"),
+            WORDS("graph_2_note"),
+        ],
+        GRAPHS_PANEL_W,
     )
-    for ln in lines:
-        y = d.paragraph(ln, x, y, width, 2.5, indent=4.0) + 0.8
-    y += 4.0
+    eq.title = WORDS("eq_head")
     # I_pr and ω1 at the diagrams' points: the energy theorem beside the integration
-    d.text(WORDS("table_head"), (x, y + 3.5), 3.5)
     rows = [["φ, °", f"{WORDS('I_pr')}, {_u('kgm2')}", f"ω_1, {_u('rad_s')}",
              f"{WORDS('omega_ode')}, {_u('rad_s')}"]]  # fmt: skip
     phis = np.asarray(ode[0])
@@ -469,7 +504,12 @@ def _panel_graphs(
     for a, ip, w_e, w_o in zip(phis, i_pr, om, ode[1], strict=True):
         rows.append([f(math.degrees(float(a)), 5), f(float(ip), 4), f(float(w_e), 4),
                      f(float(w_o), 4)])  # fmt: skip
-    d.table(x, y + 6.0, (width / 4.0,) * 4, rows)
+    table = V.Table(rows, widths=(GRAPHS_PANEL_W / 4.0,) * 4, title=WORDS("table_head"))
+    return Column(eq, table, Spacer((10.0, TITLE_BLOCK_H)))
+
+
+#: The width (mm) of the graphs sheet's right panel.
+GRAPHS_PANEL_W = 146.0
 
 
 # -- free-body diagrams --------------------------------------------------------------------------
