@@ -18,6 +18,7 @@ from dataclasses import dataclass, field
 
 from geomcad import tol
 from geomcad.geom import Arc, Circle, Line, PointLike, vec
+from geomcad.sheet import symbols
 from geomcad.sheet.frame import Frame, reserved, text_at
 from geomcad.sheet.model import XY, ArcItem, CircleItem, Polyline, Sheet, TextItem
 from geomcad.sheet.placer import (
@@ -41,13 +42,13 @@ from geomcad.sheet.style import (
 from geomcad.sheet.text import box, parse
 
 #: Symbol sizes on paper (mm).
-JOINT_R = 1.5
+JOINT_R = symbols.JOINT_R
 DOT_R = 0.6
 ARROW_LEN = 3.5
 ARROW_HALF_WIDTH = 0.6
-SLIDER_SIZE = (9.0, 5.0)
-HATCH_STEP = 2.0
-HATCH_LEN = 2.5
+SLIDER_SIZE = symbols.SLIDER_SIZE
+HATCH_STEP = symbols.HATCH_STEP
+HATCH_LEN = symbols.HATCH_LEN
 
 #: Fixed text moved off a box of the form keeps this far from it (mm).
 RESERVED_GAP = 3.0
@@ -283,66 +284,27 @@ class Viewport:
 
     def joint(self, q: PointLike) -> None:
         """A revolute joint: a small circle drawn over the links."""
-        self.sheet.add(CircleItem(self.p(q), JOINT_R, "joint", fill=True))
+        symbols.joint(self.sheet, self.p(q))
+
+    def paper_dir(self, d: PointLike) -> tuple[float, float]:
+        """A model direction as a paper direction (y down)."""
+        v = vec(d)
+        return (v.x, -v.y)
 
     def pivot(self, q: PointLike, down: tuple[float, float] = (0.0, -1.0)) -> None:
-        """A revolute joint on the frame (GOST 2.770): the joint, its stand, hatched ground."""
-        x, y = self.p(q)
-        dx, dy = down[0], -down[1]  # model direction to paper
-        n = math.hypot(dx, dy)
-        dx, dy = dx / n, dy / n
-        px, py = -dy, dx
-        depth, half = 5.0, 3.5
-        base = (x + dx * depth, y + dy * depth)
-        a = (base[0] + px * half, base[1] + py * half)
-        b = (base[0] - px * half, base[1] - py * half)
-        self.sheet.add(Polyline(((x, y), a), "link"))
-        self.sheet.add(Polyline(((x, y), b), "link"))
-        self._ground(
-            (a[0] + px * 1.5, a[1] + py * 1.5), (b[0] - px * 1.5, b[1] - py * 1.5), (dx, dy)
-        )
-        self.sheet.add(CircleItem((x, y), JOINT_R, "joint", fill=True))
-
-    def _ground(self, a: XY, b: XY, outward: tuple[float, float]) -> None:
-        """A ground line from a to b hatched on the ``outward`` side (paper direction)."""
-        self.sheet.add(Polyline((a, b), "link"))
-        length = _dist(a, b)
-        ux, uy = (b[0] - a[0]) / length, (b[1] - a[1]) / length
-        n = max(2, int(length / HATCH_STEP))
-        for i in range(n + 1):
-            t = i * length / n
-            sx, sy = a[0] + ux * t, a[1] + uy * t
-            ex = sx + outward[0] * HATCH_LEN * 0.8 - ux * HATCH_LEN * 0.6
-            ey = sy + outward[1] * HATCH_LEN * 0.8 - uy * HATCH_LEN * 0.6
-            self.sheet.add(Polyline(((sx, sy), (ex, ey)), "ground"))
+        """A revolute joint on the frame (GOST 2.770): the joint, its stand, hatched ground;
+        the stand points along the model direction ``down``."""
+        symbols.pivot(self.sheet, self.p(q), self.paper_dir(down))
 
     def guide(self, a: PointLike, b: PointLike, side: tuple[float, float] = (0.0, -1.0)) -> None:
         """A slider's fixed guide from a to b, hatched on the model side ``side``, drawn
         clear of the slider block."""
-        pa, pb = self.p(a), self.p(b)
-        out = (side[0], -side[1])
-        off = SLIDER_SIZE[1] / 2.0 + 0.6
-        sa = (pa[0] + out[0] * off, pa[1] + out[1] * off)
-        sb = (pb[0] + out[0] * off, pb[1] + out[1] * off)
-        self._ground(sa, sb, out)
+        symbols.guide(self.sheet, self.p(a), self.p(b), self.paper_dir(side))
 
     def slider(self, q: PointLike, along: PointLike = (1.0, 0.0), role: str = "link") -> None:
         """A slider block on its guide, with the joint of the link that drives it; ``role``
         "extreme" draws an extreme position in thin two-dot lines."""
-        x, y = self.p(q)
-        d = vec(along).unit()
-        ux, uy = d.x, -d.y
-        px, py = -uy, ux
-        hw, hh = SLIDER_SIZE[0] / 2.0, SLIDER_SIZE[1] / 2.0
-        corners = tuple(
-            (x + ux * sx * hw + px * sy * hh, y + uy * sx * hw + py * sy * hh)
-            for sx, sy in ((-1, -1), (1, -1), (1, 1), (-1, 1))
-        )
-        self.sheet.add(Polyline(corners, "joint", closed=True, fill=True))
-        self.sheet.add(Polyline(corners, role, closed=True))
-        self.sheet.add(CircleItem((x, y), JOINT_R, "joint", fill=True))
-        if role != "link":
-            self.sheet.add(CircleItem((x, y), JOINT_R, role))
+        symbols.block(self.sheet, self.p(q), self.paper_dir(vec(along).unit()), role)
 
     def turn(
         self,

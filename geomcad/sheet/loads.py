@@ -11,6 +11,7 @@ from __future__ import annotations
 import math
 
 from geomcad.geom import PointLike, Vec
+from geomcad.sheet import symbols
 from geomcad.sheet.drawing import Viewport, _arrow
 from geomcad.sheet.model import XY, Polyline
 
@@ -118,4 +119,4 @@ def ground(
     v: Viewport, a: PointLike, b: PointLike, side: tuple[float, float] = (0.0, -1.0)
 ) -> None:
     """A fixed support from model point a to b, hatched on the model side ``side``."""
-    v._ground(v.p(a), v.p(b), (side[0], -side[1]))
+    symbols.ground(v.sheet, v.p(a), v.p(b), v.paper_dir(side))

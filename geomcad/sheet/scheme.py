@@ -18,8 +18,9 @@ from collections.abc import Collection, Mapping, Sequence
 from dataclasses import dataclass
 
 from geomcad.geom import PointLike, Vec, vec
-from geomcad.sheet.drawing import JOINT_R, SLIDER_SIZE, Viewport
-from geomcad.sheet.model import CircleItem, Polyline
+from geomcad.sheet import symbols
+from geomcad.sheet.drawing import JOINT_R, Viewport
+from geomcad.sheet.model import CircleItem
 from geomcad.structure import Mechanism, Pair
 
 #: Half the length (mm) of a guide drawn for a prismatic pair on the frame.
@@ -135,17 +136,9 @@ def _support_direction(mech: Mechanism, p: Pair) -> tuple[float, float]:
 
 
 def _block(v: Viewport, q: Vec, along: Vec, role: str) -> None:
-    """A slider block centred on q along the sliding axis; a highlighted block is filled."""
-    x, y = v.p(q)
-    ux, uy = along.x, -along.y
-    px, py = -uy, ux
-    hw, hh = SLIDER_SIZE[0] / 2.0, SLIDER_SIZE[1] / 2.0
-    corners = tuple(
-        (x + ux * sx * hw + px * sy * hh, y + uy * sx * hw + py * sy * hh)
-        for sx, sy in ((-1, -1), (1, -1), (1, 1), (-1, 1))
-    )
-    v.sheet.add(Polyline(corners, "joint" if role == "link" else role, closed=True, fill=True))
-    v.sheet.add(Polyline(corners, role, closed=True))
+    """A slider block centred on q along the sliding axis (no joint circle: a joint, where
+    there is one, is its own pair); a highlighted block is filled."""
+    symbols.block(v.sheet, v.p(q), v.paper_dir(along), role, with_joint=False)
 
 
 def _prismatic(
