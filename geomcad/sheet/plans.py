@@ -63,6 +63,14 @@ def draw_plan(
     d.text(title, (bx0, by0 + 3.5), 3.5)
     at = ((bx0 + bx1) / 2.0, (by0 + 6.0 + by1) / 2.0)
     v = d.viewport(scale, ((x0 + x1) / 2.0, (y0 + y1) / 2.0), at)
+    plan_lines(v, plan)
+    return v
+
+
+def plan_lines(v: Viewport, plan: Plan) -> None:
+    """The plan drawn through viewport ``v`` (its pole where ``v`` puts the plan's origin): the
+    construction lines, the vectors and the lettered points."""
+    scale = v.scale
     over = scale.model(LINE_OVER_MM)
     for ln in plan.lines:
         solved = ln.step.rsplit(":", 1)[0]
@@ -84,7 +92,6 @@ def draw_plan(
         q = plan.points[g[0]]
         v.dot(q)
         v.label(q, ", ".join(markup_of(n) for n in g), 3.5, clear=1.0)
-    return v
 
 
 def vector_rows(plan: Plan, scale: Scale, digits: int = 4) -> list[tuple[str, str, float, float]]:

@@ -1,0 +1,750 @@
+"""Composing a sheet: views packed into the field by general rules, each at the largest scale of
+its series that fits (issue 14: no hand-placed view positions).
+
+A sheet is a tree of :class:`Row`, :class:`Column` and :class:`Grid` nodes whose leaves are
+views (:class:`View`; the views that draw themselves from the model are in
+:mod:`geomcad.sheet.views`). A view is one of three kinds:
+
+- **scaled** — it has a natural extent in model units (:meth:`View.extent`: metres for a
+  mechanism, m/s for a velocity plan, N for a force polygon) and is drawn through one
+  :class:`~geomcad.sheet.drawing.Viewport` at one scale: the largest of its series that fits its
+  box. The series are GOST 2.302's ratios for lengths (``"gost"``: k_l = 0.0025 m/mm is 1:2.5),
+  or the factors 1, 2, 2.5, 4, 5 × 10^n (``"nice"``: plans, forces). Views with the same
+  ``group`` share one scale (every velocity plan of a sheet one μ_V): the coarsest their boxes
+  need;
+- **fixed** — it has a natural size in mm (:meth:`View.natural`: a table, a block of text) and
+  keeps it;
+- **stretch** — it fills whatever box it gets, at least its minimum and best its preferred size
+  (:meth:`View.stretch`: a diagram, whose two axes take their own factors).
+
+:func:`arrange` packs the tree into the field — the frame less the title block and графа 26 —
+and :func:`compose` also draws it: each view's title with its μ on its box's top edge, then the
+view through its :class:`Placed` (box, inner box, scale, viewport). Where the tree leaves the
+split of a row or a column open (``weights=None``), the split is chosen by a small search that
+maximises first the smallest *fill* of the flexible views (the share of its box a view's drawing
+covers: no view at a small scale beside a large empty area), then the share of the field used.
+Fixed views get exactly their natural length along a split; the rest is shared. A box that runs
+into the title block or графа 26 is cut back to the larger of its parts clear of them.
+
+>>> from geomcad.sheet.frame import TitleBlock
+>>> from geomcad.sheet import start
+>>> d = start("A3", TitleBlock("t", "d"))
+>>> a = Figure((0.0, 0.0, 0.4, 0.2), lambda v: None, title="A")
+>>> b = Figure((0.0, 0.0, 0.1, 0.3), lambda v: None, title="B")
+>>> lay = compose(d, Row(a, b))
+>>> lay[a].scale.ratio_text(), lay[b].scale.ratio_text()
+('1:2', '1:1')
+"""
+
+from __future__ import annotations
+
+import itertools
+import math
+from collections.abc import Callable, Iterator, Mapping, Sequence
+from dataclasses import dataclass, field
+from fractions import Fraction
+from typing import Any, Literal
+
+from geomcad.errors import ParameterError
+from geomcad.sheet.drawing import Drawing, Viewport
+from geomcad.sheet.frame import Frame
+from geomcad.sheet.scale import GOST_RATIOS, NICE, PLAN_NICE, Quantity, Scale, ScaleStyle
+from geomcad.sheet.text import box as text_box
+from geomcad.sheet.text import parse
+
+#: A rectangle on the sheet: x0, y0 (top), x1, y1 (bottom), mm.
+Box = tuple[float, float, float, float]
+#: A model rectangle: x0, y0, x1, y1 in model units, y up.
+Extent = tuple[float, float, float, float]
+#: The scale series of a scaled view.
+Series = Literal["gost", "nice", "plan"]
+Kind = Literal["scaled", "fixed", "stretch"]
+
+#: The gap between neighbouring boxes (mm).
+GAP = 4.0
+#: The margin kept between the field and the frame (mm).
+FIELD_MARGIN = 3.0
+#: A title line's room: its cap height times this, plus :data:`TITLE_GAP`.
+TITLE_LEAD = 1.5
+TITLE_GAP = 1.5
+#: Splits of an open row or column are searched in steps of this share of its length.
+SPLIT_STEP = 1.0 / 40.0
+#: A content narrower than this share of its larger side counts as this wide (a plan along a
+#: line still needs room for its labels).
+THIN = 0.15
+
+
+def round_scale(raw: float, q: Quantity, series: Series) -> Scale:
+    """The smallest factor of ``series`` that is at least ``raw`` (model units per mm): the
+    largest drawing of the series that fits.
+
+    ``"gost"`` takes GOST 2.302's ratios (for lengths; ``raw`` in m/mm); ``"nice"`` the
+    mantissas 1, 2, 2.5, 4, 5; ``"plan"`` 1, 2, 5.
+    """
+    if not (0.0 < raw < math.inf):
+        raise ParameterError(f"k_{q}", raw, "a scale factor must be finite and positive")
+    if series == "gost":
+        # k = 1/1000 m per mm of a ratio r: the smallest k ≥ raw is the largest r ≤ 1/(1000 raw)
+        fitting = [g for g in GOST_RATIOS if float(Fraction(1, 1000) / g) >= raw * (1 - 1e-12)]
+        if not fitting:
+            raise ParameterError(f"k_{q}", raw, "too large for the sheet even at 1:500")
+        return Scale(float(Fraction(1, 1000) / fitting[-1]), q)
+    mantissas = NICE if series == "nice" else PLAN_NICE
+    e = math.floor(math.log10(raw))
+    for exp in (e - 1, e, e + 1):
+        for m in mantissas:
+            k = m * 10.0**exp
+            if k >= raw * (1 - 1e-12):
+                return Scale(k, q)
+    return Scale(10.0 ** (e + 2), q)  # pragma: no cover - 10^(e+1) ≥ raw always
+
+
+# --- views --------------------------------------------------------------------------------------
+
+
+class View:
+    """Something the layout places (see the module's docstring).
+
+    Subclasses override :meth:`extent` (scaled), :meth:`natural` (fixed) or :meth:`stretch`
+    (stretch), and :meth:`draw`. ``title`` is label markup drawn on the box's top edge, followed
+    by the scale's label unless ``show_scale`` is False (a view of a titled :class:`Grid` shows
+    the common scale in the grid's title instead). ``group`` names a scale group (views of one
+    group share one scale); ``quantity`` and ``series`` say what the scale measures and how it
+    is rounded. ``margin`` (mm) is kept clear round the drawing for its labels and symbols;
+    ``readable`` (model units) is the shortest length that must be read on the drawing (a
+    vector), drawn at least ``readable_mm`` long when the field allows it. ``weight`` is the
+    view's share in the search for the splits (a view of weight 2 counts as two).
+    """
+
+    def __init__(
+        self,
+        *,
+        title: str = "",
+        group: str = "",
+        quantity: Quantity = "l",
+        series: Series = "gost",
+        margin: float = 4.0,
+        title_height: float = 3.5,
+        show_scale: bool = True,
+        readable: float = 0.0,
+        readable_mm: float = 7.0,
+        weight: float = 1.0,
+    ) -> None:
+        self.title = title
+        self.group = group
+        self.quantity: Quantity = quantity
+        self.series: Series = series
+        self.margin = margin
+        self.title_height = title_height
+        self.show_scale = show_scale
+        self.readable = readable
+        self.readable_mm = readable_mm
+        self.weight = weight
+        self._title_w: float | None = None
+
+    @property
+    def kind(self) -> Kind:
+        if self.extent() is not None:
+            return "scaled"
+        if self.natural() is not None:
+            return "fixed"
+        return "stretch"
+
+    def extent(self) -> Extent | None:
+        """The model rectangle the view draws (scaled views), else None."""
+        return None
+
+    def natural(self) -> tuple[float, float] | None:
+        """The size (mm) of a fixed view's drawing, else None."""
+        return None
+
+    def stretch(self) -> tuple[tuple[float, float], tuple[float, float]]:
+        """A stretch view's least and preferred (width, height) in mm."""
+        return (40.0, 30.0), (120.0, 80.0)
+
+    def title_room(self) -> float:
+        """The height (mm) of the title line above the drawing (0 without a title)."""
+        return self.title_height * TITLE_LEAD + TITLE_GAP if self.title else 0.0
+
+    def caption(self, scale: Scale | None) -> str:
+        """The title as drawn: the title, then the scale's label (and a length scale's GOST
+        ratio), e.g. ``План скоростей, μ_V = 0,02 (м/с)/мм``."""
+        if scale is None or not self.show_scale or not self.title:
+            return self.title
+        return f"{self.title}, {scale_text(scale)}"
+
+    def draw(self, d: Drawing, at: Placed) -> None:
+        """Draw the view into its place (the title is already drawn)."""
+
+
+def scale_text(scale: Scale, style: ScaleStyle | None = None) -> str:
+    """A scale's label as the title of a view shows it: ``μ_l = 0,0025 м/мм (M 1:2,5)``."""
+    text = scale.label(style or ScaleStyle())
+    ratio = scale.ratio_text()
+    return f"{text} (M {ratio})" if ratio else text
+
+
+class Figure(View):
+    """A scaled view drawn by a function: ``draw_fn(viewport)`` draws the model rectangle
+    ``box`` (model units, y up) through the viewport the layout gives it. The general view for
+    a construction no other view knows (a problem's own figure). Keywords as :class:`View`."""
+
+    def __init__(self, box: Extent, draw_fn: Callable[[Viewport], None], **kw: Any) -> None:
+        super().__init__(**kw)
+        self.box = box
+        self.draw_fn = draw_fn
+
+    def extent(self) -> Extent | None:
+        return self.box
+
+    def draw(self, d: Drawing, at: Placed) -> None:
+        assert at.viewport is not None
+        self.draw_fn(at.viewport)
+
+
+class Spacer(View):
+    """A fixed empty box of ``size`` mm (room kept free)."""
+
+    def __init__(self, size: tuple[float, float]) -> None:
+        super().__init__(margin=0.0)
+        self.size = size
+
+    def natural(self) -> tuple[float, float] | None:
+        return self.size
+
+
+# --- the tree -----------------------------------------------------------------------------------
+
+
+class Node:
+    """A split of a box among its children (see :class:`Row`, :class:`Column`)."""
+
+    def __init__(
+        self,
+        *items: View | Node,
+        weights: Sequence[float] | None = None,
+        gap: float = GAP,
+        title: str = "",
+        title_height: float = 5.0,
+        group: str = "",
+    ) -> None:
+        if not items:
+            raise ValueError(f"{type(self).__name__} needs at least one item")
+        if weights is not None and (
+            len(weights) != len(items) or any(not (w > 0.0) for w in weights)
+        ):
+            raise ValueError("weights: one positive weight per item")
+        self.items = tuple(items)
+        self.weights = tuple(weights) if weights is not None else None
+        self.gap = gap
+        self.title = title
+        self.title_height = title_height
+        #: The scale group whose scale the title shows (default: the first view's).
+        self.group = group
+
+    def views(self) -> Iterator[View]:
+        for it in self.items:
+            if isinstance(it, View):
+                yield it
+            else:
+                yield from it.views()
+
+    def title_room(self) -> float:
+        return self.title_height * TITLE_LEAD + TITLE_GAP if self.title else 0.0
+
+
+class Row(Node):
+    """Items side by side, left to right."""
+
+
+class Column(Node):
+    """Items one under another, top to bottom."""
+
+
+class Grid(Node):
+    """Alike items in equal cells, row by row, in the arrangement (columns × rows) that draws
+    them the largest; ``cols`` fixes the number of columns."""
+
+    def __init__(
+        self,
+        *items: View | Node,
+        cols: int | None = None,
+        gap: float = GAP,
+        title: str = "",
+        title_height: float = 5.0,
+        group: str = "",
+    ) -> None:
+        super().__init__(*items, gap=gap, title=title, title_height=title_height, group=group)
+        self.cols = cols
+
+
+Tree = View | Node
+
+
+# --- the field ----------------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class Field:
+    """The rectangle views go in and the boxes inside it that belong to the form."""
+
+    box: Box
+    obstacles: tuple[Box, ...]
+
+    @staticmethod
+    def of(frame: Frame, margin: float = FIELD_MARGIN) -> Field:
+        """The field of a frame: inside it by ``margin``, the title block and графа 26 kept
+        free (with ``margin`` round them)."""
+        from geomcad.sheet.frame import G26_HEIGHT, G26_WIDTH
+
+        b = (frame.left + margin, frame.top + margin, frame.right - margin, frame.bottom - margin)
+        tb = (frame.tb_left - margin, frame.tb_top - margin, frame.right, frame.bottom)
+        g26 = (frame.left, frame.top, frame.left + G26_WIDTH + margin, frame.top + G26_HEIGHT)
+        return Field(b, (tb, g26))
+
+    @staticmethod
+    def of_format(fmt: str, landscape: bool = True) -> Field:
+        """The field of a sheet format (for scales computed without drawing)."""
+        from geomcad.sheet.frame import LEFT_MARGIN, MARGIN, TB_HEIGHT, TB_WIDTH, paper
+
+        w, h = paper(fmt, landscape)
+        right, bottom = w - MARGIN, h - MARGIN
+        return Field.of(
+            Frame(LEFT_MARGIN, MARGIN, right, bottom, right - TB_WIDTH, bottom - TB_HEIGHT)
+        )
+
+
+# --- the result ---------------------------------------------------------------------------------
+
+
+@dataclass
+class Placed:
+    """Where a view went: its ``box`` (sheet mm), the ``inner`` box its drawing is centred in
+    (below the title, inside the margin), its ``scale`` and ``viewport`` (scaled views)."""
+
+    view: View
+    box: Box
+    inner: Box
+    scale: Scale | None = None
+    viewport: Viewport | None = None
+
+    @property
+    def size(self) -> tuple[float, float]:
+        return self.inner[2] - self.inner[0], self.inner[3] - self.inner[1]
+
+
+@dataclass
+class Layout:
+    """The placed views of a sheet, by view; :meth:`scale` gives a group's scale."""
+
+    placed: dict[int, Placed] = field(default_factory=dict)
+    titles: list[tuple[Box, Node]] = field(default_factory=list)
+    groups: dict[str, Scale] = field(default_factory=dict)
+
+    def __getitem__(self, view: View) -> Placed:
+        return self.placed[id(view)]
+
+    def __iter__(self) -> Iterator[Placed]:
+        return iter(self.placed.values())
+
+    def scale(self, group: str) -> Scale:
+        """The one scale of a scale group."""
+        return self.groups[group]
+
+    def fill(self) -> float:
+        """The smallest fill of the flexible views (see the module's docstring)."""
+        fills = _fills(self)
+        return min(fills) if fills else 1.0
+
+
+# --- the layout ---------------------------------------------------------------------------------
+
+
+def _group(v: View) -> str:
+    return v.group or f"#{id(v)}"
+
+
+def _cut(cell: Box, obstacles: Sequence[Box]) -> list[Box]:
+    """The parts of ``cell`` clear of the obstacles: for each obstacle it meets, the cell cut
+    back on one side (the four ways); the cell itself when it meets none."""
+    out = [cell]
+    for o in obstacles:
+        nxt: list[Box] = []
+        for c in out:
+            if not (c[0] < o[2] and o[0] < c[2] and c[1] < o[3] and o[1] < c[3]):
+                nxt.append(c)
+                continue
+            for part in (
+                (c[0], c[1], min(c[2], o[0]), c[3]),
+                (max(c[0], o[2]), c[1], c[2], c[3]),
+                (c[0], c[1], c[2], min(c[3], o[1])),
+                (c[0], max(c[1], o[3]), c[2], c[3]),
+            ):
+                if part[2] - part[0] > 1.0 and part[3] - part[1] > 1.0:
+                    nxt.append(part)
+        out = nxt or [(cell[0], cell[1], cell[0], cell[1])]
+    return out
+
+
+def _room(v: View, cell: Box) -> tuple[float, float]:
+    """The room (mm) a view's drawing has in ``cell``."""
+    w = cell[2] - cell[0] - 2.0 * v.margin
+    h = cell[3] - cell[1] - v.title_room() - 2.0 * v.margin
+    return w, h
+
+
+def _content(ext: Extent) -> tuple[float, float]:
+    w, h = ext[2] - ext[0], ext[3] - ext[1]
+    big = max(w, h)
+    if big <= 0.0:
+        return 0.0, 0.0
+    return max(w, THIN * big), max(h, THIN * big)
+
+
+def _raw_k(v: View, cell: Box) -> float:
+    """The continuous scale at which the view's extent just fits the cell (inf: no room)."""
+    ext = v.extent()
+    assert ext is not None
+    w, h = _room(v, cell)
+    cw, ch = ext[2] - ext[0], ext[3] - ext[1]
+    if w <= 1.0 or h <= 1.0:
+        return math.inf
+    need = max(cw / w, ch / h)
+    return need if need > 0.0 else 0.0
+
+
+class _Eval:
+    """One candidate layout: cells by view, the scales, the score."""
+
+    def __init__(self, field_: Field) -> None:
+        self.field = field_
+        self.cells: dict[int, Box] = {}
+        self.views: dict[int, View] = {}
+        self.titles: list[tuple[Box, Node]] = []
+
+    def place(self, v: View, cell: Box) -> None:
+        parts = _cut(cell, self.field.obstacles)
+        self.views[id(v)] = v
+        self.cells[id(v)] = max(parts, key=lambda c: _leaf_score(v, c))
+
+
+def _leaf_score(v: View, cell: Box) -> float:
+    """How well a view alone does in a cell (for choosing where a cut cell goes)."""
+    kind = v.kind
+    if kind == "fixed":
+        nat = v.natural()
+        assert nat is not None
+        w, h = _room(v, cell)
+        fits = nat[0] <= w + 1e-9 and nat[1] <= h + 1e-9
+        return (1.0 if fits else -1.0) * (cell[2] - cell[0]) * (cell[3] - cell[1])
+    if kind == "stretch":
+        return _stretch_fill(v, cell)
+    k = _raw_k(v, cell)
+    if k == 0.0:
+        return 1.0
+    if not math.isfinite(k):
+        return -1.0
+    return 1.0 / k
+
+
+def _stretch_fill(v: View, cell: Box) -> float:
+    (lw, lh), (pw, ph) = v.stretch()
+    w, h = _room(v, cell)
+    if w < lw or h < lh:
+        return -1.0 + min(w / lw, h / lh) * 0.5
+    return min(1.0, w / pw) * min(1.0, h / ph)
+
+
+def _split(
+    node: Node, box: Box, weights: Sequence[float], horizontal: bool
+) -> list[tuple[Tree, Box]]:
+    """The node's children's boxes: fixed children their natural length, the rest shared by
+    ``weights``."""
+    x0, y0, x1, y1 = box
+    y0 += node.title_room()
+    length = (x1 - x0) if horizontal else (y1 - y0)
+    n = len(node.items)
+    free = length - node.gap * (n - 1)
+    fixed: dict[int, float] = {}
+    for i, it in enumerate(node.items):
+        nat = it.natural() if isinstance(it, View) else None
+        if nat is not None:
+            assert isinstance(it, View)
+            fixed[i] = (
+                (nat[0] + 2 * it.margin)
+                if horizontal
+                else (nat[1] + 2 * it.margin + it.title_room())
+            )
+    flex = [i for i in range(n) if i not in fixed]
+    share = free - sum(fixed.values())
+    total_w = sum(weights[i] for i in flex) or 1.0
+    out = []
+    pos = x0 if horizontal else y0
+    for i, it in enumerate(node.items):
+        if i in fixed:
+            ln = fixed[i] if flex else fixed[i] + share / len(fixed)
+        else:
+            ln = max(share, 0.0) * weights[i] / total_w
+        cell = (pos, y0, pos + ln, y1) if horizontal else (x0, pos, x1, pos + ln)
+        out.append((it, cell))
+        pos += ln + node.gap
+    return out
+
+
+def _grid_cells(node: Grid, box: Box, cols: int) -> list[tuple[Tree, Box]]:
+    x0, y0, x1, y1 = box
+    y0 += node.title_room()
+    n = len(node.items)
+    rows = math.ceil(n / cols)
+    cw = (x1 - x0 - node.gap * (cols - 1)) / cols
+    ch = (y1 - y0 - node.gap * (rows - 1)) / rows
+    return [
+        (
+            it,
+            (
+                x0 + c * (cw + node.gap),
+                y0 + r * (ch + node.gap),
+                x0 + c * (cw + node.gap) + cw,
+                y0 + r * (ch + node.gap) + ch,
+            ),
+        )
+        for it, (r, c) in zip(node.items, (divmod(i, cols) for i in range(n)), strict=True)
+    ]
+
+
+class _Solver:
+    """The search over the open splits (see the module's docstring)."""
+
+    def __init__(self, tree: Tree, field_: Field) -> None:
+        self.tree = tree
+        self.field = field_
+        self.nodes: list[Node] = []
+        self._collect(tree)
+        self.choice: dict[int, tuple[float, ...] | int] = {}
+        for nd in self.nodes:
+            if isinstance(nd, Grid):
+                self.choice[id(nd)] = nd.cols or 1
+            else:
+                self.choice[id(nd)] = nd.weights or (1.0,) * len(nd.items)
+
+    def _collect(self, t: Tree) -> None:
+        if isinstance(t, Node):
+            self.nodes.append(t)
+            for it in t.items:
+                self._collect(it)
+
+    def _options(self, nd: Node) -> list[tuple[float, ...] | int]:
+        if isinstance(nd, Grid):
+            return [nd.cols] if nd.cols else list(range(1, len(nd.items) + 1))
+        if nd.weights is not None:
+            return [nd.weights]
+        n = len(nd.items)
+        if n == 1:
+            return [(1.0,)]
+        steps = round(1.0 / SPLIT_STEP)
+        if n > 3:
+            steps = 12 if n == 4 else 6
+        out: list[tuple[float, ...] | int] = []
+        for combo in itertools.product(range(1, steps), repeat=n - 1):
+            if sum(combo) < steps:
+                out.append((*combo, steps - sum(combo)))
+        return out
+
+    def run(self, t: Tree, box: Box, ev: _Eval) -> None:
+        if isinstance(t, View):
+            ev.place(t, box)
+            return
+        if t.title:
+            ev.titles.append((box, t))
+        ch = self.choice[id(t)]
+        if isinstance(t, Grid):
+            assert isinstance(ch, int)
+            kids = _grid_cells(t, box, ch)
+        else:
+            assert isinstance(ch, tuple)
+            kids = _split(t, box, ch, isinstance(t, Row))
+        for it, cell in kids:
+            self.run(it, cell, ev)
+
+    def evaluate(self) -> tuple[_Eval, tuple[float, ...]]:
+        ev = _Eval(self.field)
+        self.run(self.tree, self.field.box, ev)
+        return ev, _score(ev)
+
+    def solve(self) -> _Eval:
+        best_ev, best = self.evaluate()
+        for _ in range(4):
+            improved = False
+            for nd in self.nodes:
+                opts = self._options(nd)
+                if len(opts) <= 1:
+                    continue
+                keep = self.choice[id(nd)]
+                for o in opts:
+                    self.choice[id(nd)] = o
+                    ev, sc = self.evaluate()
+                    if sc > best:
+                        best, best_ev, keep, improved = sc, ev, o, True
+                self.choice[id(nd)] = keep
+            if not improved:
+                break
+        return best_ev
+
+
+def _scales(ev: _Eval) -> dict[str, Scale]:
+    """Each group's scale: the coarsest any member's cell needs, rounded up in its series."""
+    raw: dict[str, tuple[float, View]] = {}
+    for key, v in ev.views.items():
+        if v.kind != "scaled":
+            continue
+        k = _raw_k(v, ev.cells[key])
+        g = _group(v)
+        if g not in raw or k > raw[g][0]:
+            raw[g] = (k, v)
+    out = {}
+    for g, (k, v) in raw.items():
+        if not math.isfinite(k):
+            raise ParameterError("layout", v.title or type(v).__name__, "has no room on the sheet")
+        out[g] = round_scale(k, v.quantity, v.series) if k > 0.0 else Scale(1.0, v.quantity)
+    return out
+
+
+def _fill_of(v: View, cell: Box, k: float) -> float:
+    ext = v.extent()
+    assert ext is not None
+    cw, ch = _content(ext)
+    area = (cell[2] - cell[0]) * (cell[3] - cell[1] - v.title_room())
+    if area <= 0.0 or not math.isfinite(k) or k <= 0.0:
+        return 0.0
+    return (cw / k + 2 * v.margin) * (ch / k + 2 * v.margin) / area
+
+
+def _areas(ev: _Eval, scales: Mapping[str, float]) -> dict[str, tuple[float, float]]:
+    """The drawn area (mm²) of each flexible view, a scale group counting once (the sum of its
+    members'), a stretch view's at most its preferred size; with each one's weight."""
+    out: dict[str, tuple[float, float]] = {}
+    for key, v in ev.views.items():
+        cell = ev.cells[key]
+        if v.kind == "fixed":
+            continue
+        if v.kind == "stretch":
+            f = _stretch_fill(v, cell)
+            (pw, ph) = v.stretch()[1]
+            w, h = _room(v, cell)
+            area = max(f, 0.0) * max(min(w, pw), 0.0) * max(min(h, ph), 0.0)
+            out[f"#{key}"] = (max(area, 1e-6), v.weight)
+            continue
+        g = _group(v)
+        k = scales[g]
+        ext = v.extent()
+        assert ext is not None
+        cw, ch = _content(ext)
+        area = (cw / k) * (ch / k) if math.isfinite(k) and k > 0.0 and cw > 0.0 else 1e-6
+        prev = out.get(g, (0.0, 0.0))
+        out[g] = (prev[0] + max(area, 1e-6), max(prev[1], v.weight))
+    return out
+
+
+def _title_width(v: View) -> float:
+    """The width (mm) of a view's title with a typical scale label after it."""
+    if not v.title:
+        return 0.0
+    if v._title_w is None:
+        sample = Scale(0.0025, v.quantity) if v.kind == "scaled" else None
+        v._title_w = text_width(v.caption(sample), v.title_height)
+    return v._title_w
+
+
+def _score(ev: _Eval) -> tuple[float, ...]:
+    """(−infeasibility, Σ weight·log(drawn area)): larger is better. The sum of logarithms
+    shares the field fairly: a view gains only where its drawing grows, so no view keeps a
+    large box its drawing does not use while another could grow into it."""
+    bad = 0.0
+    for key, v in ev.views.items():
+        if v.kind == "fixed":
+            nat = v.natural()
+            assert nat is not None
+            w, h = _room(v, ev.cells[key])
+            bad += max(0.0, nat[0] - w) + max(0.0, nat[1] - h)
+    for key, v in ev.views.items():
+        cell = ev.cells[key]
+        bad += max(0.0, _title_width(v) - (cell[2] - cell[0]))
+    for cell, node in ev.titles:
+        bad += max(0.0, text_width(node.title, node.title_height) - (cell[2] - cell[0]))
+    raw: dict[str, float] = {}
+    rounded: dict[str, float] = {}
+    for key, v in ev.views.items():
+        if v.kind == "scaled":
+            g = _group(v)
+            raw[g] = max(raw.get(g, 0.0), _raw_k(v, ev.cells[key]))
+    for g, k in raw.items():
+        if not math.isfinite(k):
+            bad += 1000.0
+            rounded[g] = math.inf
+            continue
+        v = next(v for v in ev.views.values() if v.kind == "scaled" and _group(v) == g)
+        rounded[g] = round_scale(k, v.quantity, v.series).k if k > 0.0 else 1.0
+        if v.readable > 0.0 and v.readable / rounded[g] < v.readable_mm:
+            bad += v.readable_mm - v.readable / rounded[g]
+    score_r = sum(w * math.log(a) for a, w in _areas(ev, rounded).values())
+    score_c = sum(w * math.log(a) for a, w in _areas(ev, raw).values())
+    return (-round(bad, 6), score_r + 0.1 * score_c)
+
+
+def _fills(lay: Layout) -> list[float]:
+    out: dict[str, float] = {}
+    for pl in lay:
+        v = pl.view
+        if v.kind == "scaled" and pl.scale is not None:
+            g = _group(v)
+            out[g] = max(out.get(g, 0.0), _fill_of(v, pl.box, pl.scale.k))
+        elif v.kind == "stretch":
+            out[f"#{id(v)}"] = _stretch_fill(v, pl.box)
+    return list(out.values())
+
+
+def arrange(tree: Tree, field_: Field) -> Layout:
+    """Pack ``tree`` into ``field_`` and choose every scale (no drawing; see the module's
+    docstring). :class:`ParameterError` when a view has no room at all."""
+    ev = _Solver(tree, field_).solve()
+    scales = _scales(ev)
+    lay = Layout(titles=ev.titles, groups={g: s for g, s in scales.items()})
+    for key, v in ev.views.items():
+        cell = ev.cells[key]
+        top = cell[1] + v.title_room()
+        inner = (cell[0] + v.margin, top + v.margin, cell[2] - v.margin, cell[3] - v.margin)
+        scale = scales.get(_group(v)) if v.kind == "scaled" else None
+        lay.placed[key] = Placed(v, cell, inner, scale)
+    for g in list(lay.groups):
+        if g.startswith("#"):
+            continue
+    return lay
+
+
+def compose(d: Drawing, tree: Tree, field_: Field | None = None) -> Layout:
+    """Arrange ``tree`` in the drawing's field (:func:`arrange`), then draw every title and
+    every view; returns the layout (each view's box, scale and viewport)."""
+    lay = arrange(tree, field_ or Field.of(d.frame))
+    for cell, node in lay.titles:
+        g = node.group or next((v.group for v in node.views() if v.group), "")
+        text = node.title
+        if g and g in lay.groups:
+            text = f"{text}, {scale_text(lay.groups[g])}"
+        d.text(text, (cell[0], cell[1] + node.title_height), node.title_height)
+    for pl in lay:
+        v = pl.view
+        if v.title:
+            d.text(v.caption(pl.scale), (pl.box[0], pl.box[1] + v.title_height), v.title_height)
+        if pl.scale is not None:
+            ext = v.extent()
+            assert ext is not None
+            centre = ((ext[0] + ext[2]) / 2.0, (ext[1] + ext[3]) / 2.0)
+            at = ((pl.inner[0] + pl.inner[2]) / 2.0, (pl.inner[1] + pl.inner[3]) / 2.0)
+            pl.viewport = d.viewport(pl.scale, centre, at)
+        v.draw(d, pl)
+    return lay
+
+
+def text_width(markup: str, height: float) -> float:
+    """The width (mm) of a line of label markup at cap height ``height``."""
+    return text_box(parse(markup), height)[0]

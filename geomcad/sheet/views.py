@@ -1,0 +1,587 @@
+"""Views that draw themselves from the model, for :mod:`geomcad.sheet.compose` to place.
+
+- :class:`Scheme` — the kinematic scheme of a :class:`~geomcad.structure.Mechanism` (GOST 2.770:
+  supports hatched, joints, blocks; every link numbered), through
+  :func:`~geomcad.sheet.scheme.draw_scheme`;
+- :class:`PlanView` — a velocity or acceleration plan (:class:`~geomcad.kinematics.plan.Plan`);
+- :class:`Polygon` — one or more force polygons in one viewport, and :func:`draw_polygon`, the
+  one force-polygon drawer (each vector head to tail, labelled beside its middle outside the
+  polygon, the vectors found in the result role, those shorter than two arrowheads drawn as a
+  point with their label);
+- :class:`Diagram` — a diagram (:class:`~geomcad.sheet.graph.Graph`) with its curves, each axis
+  at its own factor, filling its box;
+- :class:`Table` — a ruled table of rows, or of values with their units
+  (:meth:`Table.of_values`, :meth:`Table.of_specs` from a problem's parameter or result specs);
+- :class:`Text` — lines or a paragraph of text;
+- :class:`Steps` — the order of construction, generated from a recorded construction's steps
+  through the per-language templates of ``strings/<lang>/views.toml`` (one template per kind of
+  step; the step's role decides whether it is listed).
+
+Every view's words come from the tables of :mod:`geomcad.sheet.lang`; numbers are written by
+:func:`~geomcad.sheet.scale.fmt_number` in the language being drawn.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Callable, Iterable, Mapping, Sequence
+from dataclasses import dataclass
+from typing import Any, Protocol
+
+import numpy as np
+import numpy.typing as npt
+
+from geomcad.construction import Construction
+from geomcad.construction.recorder import Step
+from geomcad.forces import ForcePolygon
+from geomcad.geom import Vec
+from geomcad.kinematics.plan import Plan
+from geomcad.sheet.compose import Extent, Placed, View, text_width
+from geomcad.sheet.drawing import ARROW_LEN, LINE_SPACING, Drawing, Viewport
+from geomcad.sheet.graph import Axis, Graph, nice_step
+from geomcad.sheet.lang import Words, current
+from geomcad.sheet.plans import LINE_OVER_MM, markup_of, plan_lines
+from geomcad.sheet.scale import fmt_number
+from geomcad.sheet.scheme import Body, draw_scheme
+from geomcad.sheet.text import metrics
+from geomcad.structure import Mechanism
+
+WORDS = Words(__package__, "views")
+
+
+def num(x: float, digits: int = 4) -> str:
+    """A number to ``digits`` significant figures in the language being drawn."""
+    return fmt_number(x, current(), digits)
+
+
+def _bbox(pts: Iterable[Vec]) -> Extent:
+    ps = list(pts)
+    xs = [q.x for q in ps]
+    ys = [q.y for q in ps]
+    return (min(xs), min(ys), max(xs), max(ys))
+
+
+# --- the scheme -----------------------------------------------------------------------------------
+
+
+class Scheme(View):
+    """The kinematic scheme of ``mech`` at a GOST 2.302 scale; every link is numbered.
+
+    ``bodies``, ``highlight``, ``pair_labels``, ``link_labels``, ``ghosts`` are
+    :func:`~geomcad.sheet.scheme.draw_scheme`'s; ``extra(viewport)`` draws more on the same
+    viewport (loads, paths, positions); ``also`` are further model points the drawing covers.
+    Keywords as :class:`~geomcad.sheet.compose.View` (default margin: room for a support).
+    """
+
+    def __init__(
+        self,
+        mech: Mechanism,
+        bodies: Mapping[str, Sequence[Body]] | None = None,
+        highlight: Sequence[str] = (),
+        pair_labels: Mapping[str, str] | None = None,
+        link_labels: Mapping[str, Vec] | None = None,
+        ghosts: Sequence[str] = (),
+        extra: Callable[[Viewport], None] | None = None,
+        also: Iterable[Vec] = (),
+        label_height: float = 3.5,
+        **kw: Any,
+    ) -> None:
+        kw.setdefault("margin", 9.0)
+        super().__init__(**kw)
+        self.mech = mech
+        self.bodies = bodies
+        self.highlight = tuple(highlight)
+        self.pair_labels = pair_labels
+        self.link_labels = link_labels
+        self.ghosts = tuple(ghosts)
+        self.extra = extra
+        self.label_height = label_height
+        pts = [p.at for p in mech.pairs]
+        pts += [c for p in mech.pairs for c in (p.centre_a, p.centre_b) if c is not None]
+        for bs in (bodies or {}).values():
+            for b in bs:
+                pts += list(b.points)
+        pts += list(also)
+        self._ext = _bbox(pts)
+
+    def extent(self) -> Extent | None:
+        return self._ext
+
+    def draw(self, d: Drawing, at: Placed) -> None:
+        v = at.viewport
+        assert v is not None
+        draw_scheme(
+            v,
+            self.mech,
+            bodies=self.bodies,
+            highlight=self.highlight,
+            pair_labels=self.pair_labels,
+            link_labels=self.link_labels,
+            label_height=self.label_height,
+            ghosts=self.ghosts,
+        )
+        if self.extra is not None:
+            self.extra(v)
+
+
+# --- plans ----------------------------------------------------------------------------------------
+
+
+class PlanView(View):
+    """A velocity (``plan.kind`` "v") or acceleration ("a") plan at a factor 1, 2, 2.5, 4,
+    5 × 10^n; all plans of one ``group`` share one factor. ``title`` defaults to the plan's
+    kind in words ("План скоростей"); ``extra(viewport)`` draws more on it."""
+
+    def __init__(
+        self, plan: Plan, extra: Callable[[Viewport], None] | None = None, **kw: Any
+    ) -> None:
+        kw.setdefault("title", WORDS(f"plan_{plan.kind}"))
+        kw.setdefault("quantity", plan.kind)
+        kw.setdefault("series", "nice")
+        kw.setdefault("margin", LINE_OVER_MM)
+        super().__init__(**kw)
+        self.plan = plan
+        self.extra = extra
+
+    def extent(self) -> Extent | None:
+        return self.plan.extent()
+
+    def draw(self, d: Drawing, at: Placed) -> None:
+        assert at.viewport is not None
+        plan_lines(at.viewport, self.plan)
+        if self.extra is not None:
+            self.extra(at.viewport)
+
+
+# --- force polygons -------------------------------------------------------------------------------
+
+
+def _outward(poly: ForcePolygon, a: Vec, b: Vec, inward: bool) -> tuple[float, float]:
+    """The normal of side ab pointing away from the polygon's centroid (or towards it)."""
+    pts = [pv.tail for pv in poly.vectors]
+    c = Vec(sum(q.x for q in pts) / len(pts), sum(q.y for q in pts) / len(pts))
+    n = (b - a).perp()
+    if n.norm == 0.0:
+        return (1.0, 0.0)
+    if n.dot((a + b) * 0.5 - c) < 0.0:
+        n = -n
+    if inward:
+        n = -n
+    u = n.unit()
+    return (u.x, u.y)
+
+
+def draw_polygon(
+    v: Viewport,
+    poly: ForcePolygon,
+    names: Mapping[str, str] | None = None,
+    role: str = "vector",
+    found: Iterable[str] | None = None,
+    inward: Iterable[str] = (),
+    height: float = 2.5,
+) -> list[str]:
+    """Draw ``poly`` through ``v`` at the viewport's μ_F: each vector head to tail, labelled
+    beside its middle (``names`` maps a vector's name to label markup; default: the name),
+    outside the polygon (inside for the names in ``inward``); the vectors ``found`` (default:
+    the polygon's solved unknowns, or its closing vector) in the result role, the others in
+    ``role``; a vector shorter than two arrowheads on the paper is drawn as a point with its
+    label. Returns the names drawn as points (for a note), and marks the pole."""
+    if found is None:
+        known = {n for n, _ in poly.solved}
+        found = known or ({poly.vectors[-1].name} if poly.vectors else set())
+    found = set(found)
+    inward = set(inward)
+    points: list[str] = []
+    for pv in poly.vectors:
+        text = (names or {}).get(pv.name, pv.name)
+        if v.mm(pv.magnitude) < 2.0 * ARROW_LEN:
+            if v.mm(pv.magnitude) > 0.0 or pv.magnitude == 0.0:
+                v.dot(pv.tail)
+                v.label(pv.tail, text, height, clear=0.8)
+                points.append(pv.name)
+            continue
+        v.arrow(pv.tail, pv.head, "result" if pv.name in found else role)
+        mid = (pv.tail + pv.head) * 0.5
+        v.label(mid, text, height, prefer=_outward(poly, pv.tail, pv.head, pv.name in inward),
+                clear=0.5)  # fmt: skip
+    v.dot(poly.pole)
+    return points
+
+
+class Polygon(View):
+    """Force polygons at one μ_F (a factor 1, 2, 2.5, 4, 5 × 10^n) in one viewport: the
+    first in ``layers`` drawn first (a frictionless polygon dashed under the one with friction).
+    Each layer is (polygon, role); ``names``, ``found``, ``inward`` as :func:`draw_polygon`.
+    ``readable`` defaults to the shortest vector the caller must read (0: none)."""
+
+    def __init__(
+        self,
+        *layers: ForcePolygon | tuple[ForcePolygon, str],
+        names: Mapping[str, str] | None = None,
+        found: Iterable[str] | None = None,
+        inward: Iterable[str] = (),
+        label_height: float = 2.5,
+        **kw: Any,
+    ) -> None:
+        kw.setdefault("title", WORDS("force_polygon"))
+        kw.setdefault("quantity", "F")
+        kw.setdefault("series", "nice")
+        kw.setdefault("margin", 6.0)
+        super().__init__(**kw)
+        self.layers = [lay if isinstance(lay, tuple) else (lay, "vector") for lay in layers]
+        self.names = names
+        self.found = None if found is None else set(found)
+        self.inward = tuple(inward)
+        self.label_height = label_height
+        self.points: list[str] = []
+        self._ext = _bbox(
+            q for poly, _ in self.layers for pv in poly.vectors for q in (pv.tail, pv.head)
+        )
+
+    def extent(self) -> Extent | None:
+        return self._ext
+
+    def draw(self, d: Drawing, at: Placed) -> None:
+        assert at.viewport is not None
+        for poly, role in self.layers:
+            self.points += draw_polygon(
+                at.viewport, poly, self.names, role, self.found, self.inward, self.label_height
+            )
+
+
+# --- diagrams -------------------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class Curve:
+    """A curve of a diagram: data ``xs``, ``ys``, its role; ``points`` marks the samples."""
+
+    xs: npt.ArrayLike
+    ys: npt.ArrayLike
+    role: str = "result"
+    points: bool = False
+
+
+@dataclass(frozen=True)
+class AxisSpec:
+    """An axis of a :class:`Diagram` before its factor is known: symbol and unit (markup), the
+    factor's subscript, a fixed range (else the curves'), a fixed tick step."""
+
+    symbol: str
+    unit: str
+    name: str = ""
+    lo: float | None = None
+    hi: float | None = None
+    tick: float = 0.0
+
+
+class Diagram(View):
+    """A diagram y(x) filling its box: each axis takes the smallest factor 1, 2, 2.5, 4,
+    5 × 10^n that puts its range into the room, and the factors are written at the box's top
+    right. ``extra(graph)`` draws more on the graph (spans, hatching, labelled points)."""
+
+    #: Room (mm) left of the y axis for its tick values, and under the x axis for its values
+    #: and symbol, and above the y axis's arrow for its symbol.
+    LEFT = 14.0
+    BELOW = 12.0
+    ABOVE = 10.0
+    RIGHT = 12.0
+
+    def __init__(
+        self,
+        x: AxisSpec,
+        y: AxisSpec,
+        curves: Sequence[Curve],
+        extra: Callable[[Graph], None] | None = None,
+        least: tuple[float, float] = (80.0, 45.0),
+        prefer: tuple[float, float] = (240.0, 110.0),
+        **kw: Any,
+    ) -> None:
+        kw.setdefault("margin", 2.0)
+        super().__init__(**kw)
+        self.x, self.y = x, y
+        self.curves = list(curves)
+        self.extra = extra
+        self.least, self.prefer = least, prefer
+        self.graph: Graph | None = None
+
+    def stretch(self) -> tuple[tuple[float, float], tuple[float, float]]:
+        return self.least, self.prefer
+
+    def _range(self, spec: AxisSpec, which: int) -> tuple[float, float]:
+        vals = [np.asarray(c.xs if which == 0 else c.ys, dtype=np.float64) for c in self.curves]
+        lo = spec.lo if spec.lo is not None else min(float(a.min()) for a in vals)
+        hi = spec.hi if spec.hi is not None else max(float(a.max()) for a in vals)
+        return min(lo, 0.0), max(hi, 0.0)
+
+    def draw(self, d: Drawing, at: Placed) -> None:
+        x0, y0, x1, y1 = at.inner
+        room_x = x1 - x0 - self.LEFT - self.RIGHT
+        room_y = y1 - y0 - self.BELOW - self.ABOVE
+        xlo, xhi = self._range(self.x, 0)
+        ylo, yhi = self._range(self.y, 1)
+        ax = Axis(
+            self.x.symbol, self.x.unit, xlo, xhi,
+            nice_step(max(xhi - xlo, 1e-300) / room_x), self.x.name or self.x.symbol, self.x.tick,
+        )  # fmt: skip
+        ay = Axis.fit(self.y.symbol, self.y.unit, ylo, yhi, room_y, self.y.name)
+        if self.y.tick:
+            ay = ay.with_tick(self.y.tick)
+        origin = (x0 + self.LEFT, y0 + self.ABOVE + ay.mm(ay.hi - ay.zero))
+        gr = Graph(d, ax, ay, origin)
+        gr.axes(current(), tick_labels=True)
+        for c in self.curves:
+            gr.curve(c.xs, c.ys, c.role)
+            if c.points:
+                for xx, yy in zip(np.asarray(c.xs), np.asarray(c.ys), strict=True):
+                    gr.point(float(xx), float(yy))
+        d.text(
+            f"{ay.factor_text(current())};  {ax.factor_text(current())}",
+            (at.box[2], at.box[1] + self.title_height),
+            2.5,
+            anchor="right",
+        )
+        if self.extra is not None:
+            self.extra(gr)
+        self.graph = gr
+
+
+# --- tables and text ------------------------------------------------------------------------------
+
+#: Cell padding (mm) either side of a cell's text.
+CELL_PAD = 1.2
+
+
+class Table(View):
+    """A ruled table of ``rows`` of label markup (the first the header unless ``header`` is
+    False), its columns as wide as their widest text (or ``widths``)."""
+
+    def __init__(
+        self,
+        rows: Sequence[Sequence[str]],
+        widths: Sequence[float] | None = None,
+        header: bool = True,
+        height: float = 2.5,
+        row_h: float = 6.0,
+        **kw: Any,
+    ) -> None:
+        kw.setdefault("margin", 1.0)
+        super().__init__(**kw)
+        self.rows = [list(r) for r in rows]
+        self.header = header
+        self.height = height
+        self.row_h = row_h
+        if widths is None:
+            n = max(len(r) for r in self.rows)
+            widths = [
+                max(text_width(r[i], height) if i < len(r) else 0.0 for r in self.rows)
+                + 2 * CELL_PAD
+                + 1.0
+                for i in range(n)
+            ]
+        self.widths = list(widths)
+
+    def natural(self) -> tuple[float, float] | None:
+        return sum(self.widths), self.row_h * len(self.rows)
+
+    def draw(self, d: Drawing, at: Placed) -> None:
+        d.table(at.inner[0], at.inner[1], self.widths, self.rows, self.height, self.row_h,
+                self.header)  # fmt: skip
+
+    @staticmethod
+    def of_values(
+        entries: Iterable[tuple[str, float | str, str]], digits: int = 4, **kw: Any
+    ) -> Table:
+        """A table "quantity | value | unit" of (label markup, value, unit) entries; numbers to
+        ``digits`` significant figures."""
+        head = [WORDS("quantity"), WORDS("value"), WORDS("unit")]
+        rows = [
+            [label, value if isinstance(value, str) else num(value, digits), unit_text(unit)]
+            for label, value, unit in entries
+        ]
+        return Table([head, *rows], **kw)
+
+    @staticmethod
+    def of_specs(
+        specs: Iterable[Spec],
+        values: Mapping[str, Any],
+        labels: Mapping[str, str] | None = None,
+        digits: int = 4,
+        **kw: Any,
+    ) -> Table:
+        """A table of the values of ``specs`` (a problem's ``Param`` or ``ResultSpec``: a
+        ``name`` and a ``unit``) found in ``values``; ``labels`` maps a name to label markup
+        (default: the name as markup, ``l_AB`` → ``l_{AB}``). A unit ``deg`` is written °, and
+        values in SI are printed as they are."""
+        entries = []
+        for s in specs:
+            if s.name not in values:
+                continue
+            x = values[s.name]
+            label = (labels or {}).get(s.name, name_markup(s.name))
+            entries.append((label, x if isinstance(x, str | int | float) else str(x), s.unit))
+        return Table.of_values(
+            [(lab, float(x) if isinstance(x, int) else x, u) for lab, x, u in entries], digits,
+            **kw,
+        )  # fmt: skip
+
+
+class Spec(Protocol):
+    """What :meth:`Table.of_specs` reads of a parameter's or a result's spec."""
+
+    @property
+    def name(self) -> str: ...
+    @property
+    def unit(self) -> str: ...
+
+
+def unit_text(unit: str) -> str:
+    """An SI unit as written on a sheet in the language being drawn (``"m"`` → ``м``); a unit
+    the table does not know is written as it is; ``"1"`` is no unit."""
+    table = WORDS.table()
+    return table.get(f"unit.{unit}", "" if unit == "1" else unit)
+
+
+def name_markup(name: str) -> str:
+    """A parameter's or a step's name as label markup: ``l_AB`` → ``l_{AB}``, ``O1`` →
+    ``O_1``, ``theta_deg`` → ``θ``."""
+    base = name.removesuffix("_deg")
+    greek = WORDS.table().get(f"greek.{base}")
+    if greek:
+        return greek
+    m = re.fullmatch(r"([A-Za-z]+)_?([A-Za-z0-9]*)", base)
+    if m and m.group(2) and (not m.group(1).isupper() or m.group(2).isdigit() or "_" in base):
+        head, sub = m.groups()
+        return f"{head}_{{{sub}}}" if len(sub) > 1 else f"{head}_{sub}"
+    return markup_of(base)
+
+
+class Text(View):
+    """Lines of text (label markup), or one ``paragraph`` wrapped to ``width`` mm."""
+
+    def __init__(
+        self,
+        lines: Sequence[str] = (),
+        paragraph: str = "",
+        width: float = 0.0,
+        height: float = 2.5,
+        indent: float = 0.0,
+        **kw: Any,
+    ) -> None:
+        kw.setdefault("margin", 1.0)
+        super().__init__(**kw)
+        self.height = height
+        self.indent = indent
+        self.lines = list(lines)
+        if paragraph:
+            self.lines += _wrap(paragraph, width, height, indent)
+        self.width = width or max((text_width(t, height) for t in self.lines), default=0.0)
+
+    def natural(self) -> tuple[float, float] | None:
+        lead = self.height * LINE_SPACING
+        return self.width, self.height + max(len(self.lines) - 1, 0) * lead + 1.0
+
+    def draw(self, d: Drawing, at: Placed) -> None:
+        lead = self.height * LINE_SPACING
+        for i, t in enumerate(self.lines):
+            d.text(t, (at.inner[0], at.inner[1] + self.height + i * lead), self.height,
+                   role="title")  # fmt: skip
+
+
+def _wrap(text: str, width: float, height: float, indent: float = 0.0) -> list[str]:
+    """``text`` wrapped at spaces into lines of at most ``width`` mm (lines after the first
+    ``indent`` mm narrower)."""
+    lines: list[list[str]] = [[]]
+    for word in text.split(" "):
+        room = width - (indent if len(lines) > 1 else 0.0)
+        if lines[-1] and text_width(" ".join([*lines[-1], word]), height) > room:
+            lines.append([])
+        lines[-1].append(word)
+    return [" ".join(w) for w in lines]
+
+
+# --- the order of construction -------------------------------------------------------------------
+
+#: The kinds of step the templates know, each told by its operation's words (the recorder's).
+_OPS: tuple[tuple[str, re.Pattern[str]], ...] = (
+    ("given", re.compile(r"given$")),
+    ("intersection", re.compile(r"(?:\w+ )?(?P<a>\S+) ∩ (?:\w+ )?(?P<b>\S+)$")),
+    ("perpendicular", re.compile(r"perpendicular to (?P<a>\S+) at (?P<b>\S+)$")),
+    ("parallel", re.compile(r"parallel to (?P<a>\S+) through (?P<b>\S+)$")),
+    ("parallel_at", re.compile(r"parallel to (?P<a>\S+) at (?P<b>\S+)$")),
+    ("line", re.compile(r"line (?P<a>\S+)$")),
+    ("segment", re.compile(r"segment (?P<a>\S+)$")),
+    ("ray", re.compile(r"ray from (?P<a>\S+) at (?P<b>.+) to (?P<c>\S+)$")),
+    ("arcs", re.compile(r"arcs seeing (?P<a>\S+) under (?P<b>.+)$")),
+    ("circle3", re.compile(r"circle\((?P<a>[^,]+), (?P<b>[^,]+), (?P<c>[^,]+)\)$")),
+    ("circle", re.compile(r"circle\((?P<a>[^,]+), (?P<b>[^,]+)\)$")),
+)
+
+#: Roles whose steps the order of construction lists.
+LISTED = ("construction", "result", "link", "extreme")
+
+
+def step_text(step: Step) -> str:
+    """One step of the order of construction in the language being drawn, from the template of
+    its kind (``strings/<lang>/views.toml``, keys ``step.<kind>``); an operation no template
+    knows is written as it was recorded, with its note."""
+    for kind, pat in _OPS:
+        m = pat.match(step.op)
+        if m:
+            fields: dict[str, object] = {k: _names(v) for k, v in m.groupdict().items()}
+            fields["name"] = name_markup(step.name)
+            text = WORDS.table()[f"step.{kind}"].format(**fields)
+            break
+    else:
+        text = f"{name_markup(step.name)} = {_printable(step.op)}"
+    if step.rule and "kernel" not in step.rule:
+        text += f" ({step.rule})"
+    return text
+
+
+def _printable(text: str) -> str:
+    """Recorded words with the signs the sheet font lacks written as words (``⊥``, ``∥``)."""
+    w = metrics().widths
+    for sign, key in (("⊥", "sign.perp"), ("∥", "sign.par"), ("∩", "sign.cap")):
+        text = text.replace(sign, WORDS(key))
+    return "".join(c if ord(c) in w or c in "_{}^" else "?" for c in text)
+
+
+def _names(s: str) -> str:
+    """Point names in an operation's words as markup: ``B0B1`` → ``B_0B_1``."""
+    return re.sub(r"([A-Z])(\d+)", lambda m: f"{m.group(1)}_{m.group(2)}", s)
+
+
+class Steps(View):
+    """The order of construction: the listed steps of ``construction`` (roles in
+    :data:`LISTED`; ``only`` keeps these names, in their recorded order), numbered, each
+    through its kind's template and wrapped to ``width`` mm."""
+
+    def __init__(
+        self,
+        construction: Construction | Sequence[Step],
+        width: float,
+        only: Sequence[str] | None = None,
+        height: float = 2.5,
+        **kw: Any,
+    ) -> None:
+        kw.setdefault("title", WORDS("order"))
+        kw.setdefault("margin", 1.0)
+        super().__init__(**kw)
+        steps = list(construction)
+        keep = [s for s in steps if (s.name in only if only is not None else s.role in LISTED)]
+        self.height = height
+        self.width = width
+        self.lines: list[str] = []
+        for i, s in enumerate(keep, 1):
+            self.lines += _wrap(f"{i}. {step_text(s)}", width, height, indent=4.0)
+
+    def natural(self) -> tuple[float, float] | None:
+        lead = self.height * LINE_SPACING
+        return self.width, self.height + max(len(self.lines) - 1, 0) * lead + 1.0
+
+    def draw(self, d: Drawing, at: Placed) -> None:
+        lead = self.height * LINE_SPACING
+        for i, t in enumerate(self.lines):
+            x = at.inner[0] + (0.0 if re.match(r"\d+\. ", t) else 4.0)
+            d.text(t, (x, at.inner[1] + self.height + i * lead), self.height, role="title")
