@@ -309,15 +309,21 @@ class Diagram(View):
         return self.least, self.prefer
 
     def _range(self, spec: AxisSpec, which: int) -> tuple[float, float]:
+        key = f"range{which}"
+        if key not in self._memo:
+            self._memo[key] = self._range_of(spec, which)
+        return self._memo[key]  # type: ignore[no-any-return]
+
+    def _range_of(self, spec: AxisSpec, which: int) -> tuple[float, float]:
         vals = [np.asarray(c.xs if which == 0 else c.ys, dtype=np.float64) for c in self.curves]
         lo = spec.lo if spec.lo is not None else min(float(a.min()) for a in vals)
         hi = spec.hi if spec.hi is not None else max(float(a.max()) for a in vals)
         return min(lo, 0.0), max(hi, 0.0)
 
-    def draw(self, d: Drawing, at: Placed) -> None:
-        x0, y0, x1, y1 = at.inner
-        room_x = x1 - x0 - self.LEFT - self.RIGHT
-        room_y = y1 - y0 - self.BELOW - self.ABOVE
+    def axes(self, w: float, h: float) -> tuple[Axis, Axis]:
+        """The two axes fitted to a room of w × h mm."""
+        room_x = max(w - self.LEFT - self.RIGHT, 1.0)
+        room_y = max(h - self.BELOW - self.ABOVE, 1.0)
         xlo, xhi = self._range(self.x, 0)
         ylo, yhi = self._range(self.y, 1)
         ax = Axis(
@@ -327,6 +333,20 @@ class Diagram(View):
         ay = Axis.fit(self.y.symbol, self.y.unit, ylo, yhi, room_y, self.y.name)
         if self.y.tick:
             ay = ay.with_tick(self.y.tick)
+        return ax, ay
+
+    def used(self, w: float, h: float) -> tuple[float, float]:
+        if w <= self.LEFT + self.RIGHT or h <= self.BELOW + self.ABOVE:
+            return 0.0, 0.0
+        ax, ay = self.axes(w, h)
+        return (
+            ax.mm(ax.hi - ax.lo) + self.LEFT + self.RIGHT,
+            ay.mm(ay.hi - ay.lo) + self.BELOW + self.ABOVE,
+        )
+
+    def draw(self, d: Drawing, at: Placed) -> None:
+        x0, y0, x1, y1 = at.inner
+        ax, ay = self.axes(x1 - x0, y1 - y0)
         origin = (x0 + self.LEFT, y0 + self.ABOVE + ay.mm(ay.hi - ay.zero))
         gr = Graph(d, ax, ay, origin)
         gr.axes(current(), tick_labels=True)
@@ -337,7 +357,7 @@ class Diagram(View):
                     gr.point(float(xx), float(yy))
         d.text(
             f"{ay.factor_text(current())};  {ax.factor_text(current())}",
-            (at.box[2], at.box[1] + self.title_height),
+            (min(at.box[2], x0 + self.used(x1 - x0, y1 - y0)[0]), at.box[1] + self.title_height),
             2.5,
             anchor="right",
         )
