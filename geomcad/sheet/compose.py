@@ -507,7 +507,7 @@ def natural_of(t: Tree) -> tuple[float, float] | None:
         nat = _nat(t)
         if nat is None:
             return None
-        return nat[0] + 2 * t.margin, nat[1] + 2 * t.margin + t.title_room()
+        return max(nat[0] + 2 * t.margin, _title_width(t)), nat[1] + 2 * t.margin + t.title_room()
     sizes = [natural_of(it) for it in t.items]
     if any(sz is None for sz in sizes):
         return None

@@ -278,7 +278,8 @@ class AxisSpec:
 class Diagram(View):
     """A diagram y(x) filling its box: each axis takes the smallest factor 1, 2, 2.5, 4,
     5 × 10^n that puts its range into the room, and the factors are written at the box's top
-    right. ``extra(graph)`` draws more on the graph (spans, hatching, labelled points)."""
+    right. ``extra(graph)`` draws more on the graph (spans, hatching, labelled points).
+    ``zero``: the y range always takes in 0 (else only the curves' range or the spec's)."""
 
     #: Room (mm) left of the y axis for its tick values, and under the x axis for its values
     #: and symbol, and above the y axis's arrow for its symbol.
@@ -295,10 +296,12 @@ class Diagram(View):
         extra: Callable[[Graph], None] | None = None,
         least: tuple[float, float] = (80.0, 45.0),
         prefer: tuple[float, float] = (240.0, 110.0),
+        zero: bool = True,
         **kw: Any,
     ) -> None:
         kw.setdefault("margin", 2.0)
         super().__init__(**kw)
+        self.zero = zero
         self.x, self.y = x, y
         self.curves = list(curves)
         self.extra = extra
@@ -307,6 +310,11 @@ class Diagram(View):
 
     def stretch(self) -> tuple[tuple[float, float], tuple[float, float]]:
         return self.least, self.prefer
+
+    def title_room(self) -> float:
+        """The title's line, and one more for the factors under a long title."""
+        base = super().title_room()
+        return base + 4.0 if self.title else base
 
     def _range(self, spec: AxisSpec, which: int) -> tuple[float, float]:
         key = f"range{which}"
@@ -318,7 +326,7 @@ class Diagram(View):
         vals = [np.asarray(c.xs if which == 0 else c.ys, dtype=np.float64) for c in self.curves]
         lo = spec.lo if spec.lo is not None else min(float(a.min()) for a in vals)
         hi = spec.hi if spec.hi is not None else max(float(a.max()) for a in vals)
-        return min(lo, 0.0), max(hi, 0.0)
+        return (min(lo, 0.0), max(hi, 0.0)) if self.zero or which == 0 else (lo, hi)
 
     def axes(self, w: float, h: float) -> tuple[Axis, Axis]:
         """The two axes fitted to a room of w × h mm."""
@@ -355,12 +363,17 @@ class Diagram(View):
             if c.points:
                 for xx, yy in zip(np.asarray(c.xs), np.asarray(c.ys), strict=True):
                     gr.point(float(xx), float(yy))
-        d.text(
-            f"{ay.factor_text(current())};  {ax.factor_text(current())}",
-            (min(at.box[2], x0 + self.used(x1 - x0, y1 - y0)[0]), at.box[1] + self.title_height),
-            2.5,
-            anchor="right",
-        )
+        # the factors: right of the title, or on a line of their own under a long title
+        factors = f"{ay.factor_text(current())};  {ax.factor_text(current())}"
+        right = min(at.box[2], x0 + self.used(x1 - x0, y1 - y0)[0])
+        base = at.box[1] + self.title_height
+        if (
+            self.title
+            and text_width(self.title, self.title_height) + text_width(factors, 2.5) + 5.0
+            > right - at.box[0]
+        ):
+            base = at.box[1] + super().title_room() + 2.5
+        d.text(factors, (right, base), 2.5, anchor="right")
         if self.extra is not None:
             self.extra(gr)
         self.graph = gr
