@@ -33,7 +33,7 @@ into the title block or графа 26 is cut back to the larger of its parts cle
 >>> b = Figure((0.0, 0.0, 0.1, 0.3), lambda v: None, title="B")
 >>> lay = compose(d, Row(a, b))
 >>> lay[a].scale.ratio_text(), lay[b].scale.ratio_text()
-('1:2', '1:1')
+('1:2', '1:2')
 """
 
 from __future__ import annotations

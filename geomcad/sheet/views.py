@@ -581,7 +581,10 @@ def _printable(text: str) -> str:
 
 
 def _names(s: str) -> str:
-    """Point names in an operation's words as markup: ``B0B1`` → ``B_0B_1``."""
+    """Point names in an operation's words as markup: ``B0B1`` → ``B_0B_1``; a number in the
+    language being drawn (4 significant figures)."""
+    if re.fullmatch(r"-?\d+(\.\d*)?(e-?\d+)?", s):
+        return num(float(s))
     return re.sub(r"([A-Z])(\d+)", lambda m: f"{m.group(1)}_{m.group(2)}", s)
 
 
