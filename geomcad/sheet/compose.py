@@ -146,7 +146,7 @@ class View:
         self.readable_mm = readable_mm
         self.weight = weight
         self._title_w: float | None = None
-        self._memo: dict[str, Any] = {}
+        self._memo: dict[object, Any] = {}
 
     @property
     def kind(self) -> Kind:
@@ -255,6 +255,7 @@ class Node:
         #: The scale group whose scale the title shows (default: the first view's).
         self.group = group
         self._title_w: float | None = None
+        self._natural: tuple[float, float] | None | Literal[False] = False
 
     def views(self) -> Iterator[View]:
         for it in self.items:
@@ -463,14 +464,56 @@ class _Eval:
         self.field = field_
         self.cells: dict[int, Box] = {}
         self.views: dict[int, View] = {}
+        self.leaves: dict[int, _Leaf] = {}
         self.titles: list[tuple[Box, Node]] = []
 
     def place(self, v: View, cell: Box) -> None:
-        parts = _cut(cell, self.field.obstacles)
+        key = ("leaf", cell, self.field.obstacles)
+        leaf = v._memo.get(key)
+        if leaf is None:
+            parts = _cut(cell, self.field.obstacles)
+            best = max(
+                parts, key=lambda c: (round(_leaf_score(v, c), 9), (c[2] - c[0]) * (c[3] - c[1]))
+            )
+            leaf = v._memo[key] = _Leaf.of(v, best)
         self.views[id(v)] = v
-        self.cells[id(v)] = max(
-            parts, key=lambda c: (round(_leaf_score(v, c), 9), (c[2] - c[0]) * (c[3] - c[1]))
-        )
+        self.cells[id(v)] = leaf.cell
+        self.leaves[id(v)] = leaf
+
+
+@dataclass(frozen=True)
+class _Leaf:
+    """What the search needs of a view in a cell, computed once per cell."""
+
+    cell: Box
+    kind: Kind
+    group: str
+    bad: float  # mm a fixed view or a title overflows its cell
+    raw_k: float  # scaled: the continuous scale that fits
+    content: tuple[float, float]  # scaled: the content's model size (thin ones widened)
+    area: float  # stretch: the area it really draws (mm²)
+
+    @staticmethod
+    def of(v: View, cell: Box) -> _Leaf:
+        kind = v.kind
+        bad = max(0.0, _title_width(v) - (cell[2] - cell[0]))
+        raw_k, content, area = 0.0, (0.0, 0.0), 0.0
+        if kind == "fixed":
+            nat = _nat(v)
+            assert nat is not None
+            w, h = _room(v, cell)
+            bad += max(0.0, nat[0] - w) + max(0.0, nat[1] - h)
+        elif kind == "stretch":
+            f = _stretch_fill(v, cell)
+            w, h = _room(v, cell)
+            uw, uh = v.used(w, h) if f > 0.0 else (0.0, 0.0)
+            area = max(uw, 0.0) * max(uh, 0.0)
+        else:
+            raw_k = _raw_k(v, cell)
+            ext = _ext(v)
+            assert ext is not None
+            content = _content(ext)
+        return _Leaf(cell, kind, _group(v), bad, raw_k, content, area)
 
 
 def _leaf_score(v: View, cell: Box) -> float:
@@ -508,6 +551,13 @@ def natural_of(t: Tree) -> tuple[float, float] | None:
         if nat is None:
             return None
         return max(nat[0] + 2 * t.margin, _title_width(t)), nat[1] + 2 * t.margin + t.title_room()
+    if t._natural is not False:
+        return t._natural
+    t._natural = _natural_node(t)
+    return t._natural
+
+
+def _natural_node(t: Node) -> tuple[float, float] | None:
     sizes = [natural_of(it) for it in t.items]
     if any(sz is None for sz in sizes):
         return None
@@ -707,27 +757,20 @@ def _fill_of(v: View, cell: Box, k: float) -> float:
 
 def _areas(ev: _Eval, scales: Mapping[str, float]) -> dict[str, tuple[float, float]]:
     """The drawn area (mm²) of each flexible view, a scale group counting once (the sum of its
-    members'), a stretch view's at most its preferred size; with each one's weight."""
+    members'), a stretch view's as it really draws; with each one's weight."""
     out: dict[str, tuple[float, float]] = {}
-    for key, v in ev.views.items():
-        cell = ev.cells[key]
-        if v.kind == "fixed":
+    for key, leaf in ev.leaves.items():
+        if leaf.kind == "fixed":
             continue
-        if v.kind == "stretch":
-            f = _stretch_fill(v, cell)
-            w, h = _room(v, cell)
-            uw, uh = v.used(w, h) if f > 0.0 else (0.0, 0.0)
-            area = max(uw, 0.0) * max(uh, 0.0)
-            out[f"#{key}"] = (max(area, 1e-6), v.weight)
+        w = ev.views[key].weight
+        if leaf.kind == "stretch":
+            out[f"#{key}"] = (max(leaf.area, 1e-6), w)
             continue
-        g = _group(v)
-        k = scales[g]
-        ext = _ext(v)
-        assert ext is not None
-        cw, ch = _content(ext)
+        k = scales[leaf.group]
+        cw, ch = leaf.content
         area = (cw / k) * (ch / k) if math.isfinite(k) and k > 0.0 and cw > 0.0 else 1e-6
-        prev = out.get(g, (0.0, 0.0))
-        out[g] = (prev[0] + max(area, 1e-6), max(prev[1], v.weight))
+        prev = out.get(leaf.group, (0.0, 0.0))
+        out[leaf.group] = (prev[0] + max(area, 1e-6), max(prev[1], w))
     return out
 
 
@@ -756,30 +799,22 @@ def _score(ev: _Eval) -> tuple[float, ...]:
     """(−infeasibility, Σ weight·log(drawn area)): larger is better. The sum of logarithms
     shares the field fairly: a view gains only where its drawing grows, so no view keeps a
     large box its drawing does not use while another could grow into it."""
-    bad = 0.0
-    for key, v in ev.views.items():
-        if v.kind == "fixed":
-            nat = _nat(v)
-            assert nat is not None
-            w, h = _room(v, ev.cells[key])
-            bad += max(0.0, nat[0] - w) + max(0.0, nat[1] - h)
-    for key, v in ev.views.items():
-        cell = ev.cells[key]
-        bad += max(0.0, _title_width(v) - (cell[2] - cell[0]))
+    bad = sum(leaf.bad for leaf in ev.leaves.values())
     for cell, node in ev.titles:
         bad += max(0.0, _node_title_width(node) - (cell[2] - cell[0]))
     raw: dict[str, float] = {}
+    first: dict[str, View] = {}
+    for key, leaf in ev.leaves.items():
+        if leaf.kind == "scaled":
+            raw[leaf.group] = max(raw.get(leaf.group, 0.0), leaf.raw_k)
+            first.setdefault(leaf.group, ev.views[key])
     rounded: dict[str, float] = {}
-    for key, v in ev.views.items():
-        if v.kind == "scaled":
-            g = _group(v)
-            raw[g] = max(raw.get(g, 0.0), _raw_k(v, ev.cells[key]))
     for g, k in raw.items():
         if not math.isfinite(k):
             bad += 1000.0
             rounded[g] = math.inf
             continue
-        v = next(v for v in ev.views.values() if v.kind == "scaled" and _group(v) == g)
+        v = first[g]
         rounded[g] = round_scale(k, v.quantity, v.series).k if k > 0.0 else 1.0
         if v.readable > 0.0 and v.readable / rounded[g] < v.readable_mm:
             bad += v.readable_mm - v.readable / rounded[g]
