@@ -255,7 +255,7 @@ class Node:
         #: The scale group whose scale the title shows (default: the first view's).
         self.group = group
         self._title_w: float | None = None
-        self._natural: tuple[float, float] | None | Literal[False] = False
+        self._natural: tuple[float, float] | Literal[False] | None = False
 
     def views(self) -> Iterator[View]:
         for it in self.items:
