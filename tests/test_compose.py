@@ -172,3 +172,18 @@ def test_symbols_draw_in_their_local_frame() -> None:
     assert all(isinstance(it, Polyline) and it.closed for it in new)
     v = d.viewport(Scale(0.001), (0.0, 0.0), (100.0, 100.0))
     assert v.paper_dir((0.0, 1.0)) == (0.0, -1.0)
+
+
+def test_linkage_sheet_states_the_scales_verify_reads() -> None:
+    """The scales a linkage file's build reports (for verify) are the ones its sheet draws."""
+    from pathlib import Path
+
+    from geomcad import documents
+    from geomcad.sheet.scale import fmt_number
+
+    path = Path(__file__).resolve().parents[1] / "examples" / "four-bar.toml"
+    sol = documents.solve(str(path))
+    texts = " | ".join(t.text for t in sol.sheets()[0][1].texts())
+    assert f"μV = {fmt_number(sol.scales['v'])} (м/с)/мм" in texts
+    assert f"μa = {fmt_number(sol.scales['a'])} (м/с²)/мм" in texts
+    assert f"μl = {fmt_number(sol.scales['l'])} м/мм" in texts

@@ -446,17 +446,14 @@ class Table(View):
         ``name`` and a ``unit``) found in ``values``; ``labels`` maps a name to label markup
         (default: the name as markup, ``l_AB`` → ``l_{AB}``). A unit ``deg`` is written °, and
         values in SI are printed as they are."""
-        entries = []
+        entries: list[tuple[str, float | str, str]] = []
         for s in specs:
             if s.name not in values:
                 continue
             x = values[s.name]
-            label = (labels or {}).get(s.name, name_markup(s.name))
-            entries.append((label, x if isinstance(x, str | int | float) else str(x), s.unit))
-        return Table.of_values(
-            [(lab, float(x) if isinstance(x, int) else x, u) for lab, x, u in entries], digits,
-            **kw,
-        )  # fmt: skip
+            value: float | str = float(x) if isinstance(x, int | float) else str(x)
+            entries.append(((labels or {}).get(s.name, name_markup(s.name)), value, s.unit))
+        return Table.of_values(entries, digits, **kw)
 
 
 class Spec(Protocol):
@@ -477,7 +474,11 @@ def unit_text(unit: str) -> str:
 
 def name_markup(name: str) -> str:
     """A parameter's or a step's name as label markup: ``l_AB`` → ``l_{AB}``, ``O1`` →
-    ``O_1``, ``theta_deg`` → ``θ``."""
+    ``O_1``, ``theta_deg`` → ``θ``, ``omega1`` → ``ω_1``.
+
+    >>> name_markup("l_AB"), name_markup("O1"), name_markup("omega1"), name_markup("AB")
+    ('l_{AB}', 'O_1', 'ω_1', 'AB')
+    """
     base = name.removesuffix("_deg")
     greek = WORDS.table().get(f"greek.{base}")
     if greek:
@@ -485,6 +486,7 @@ def name_markup(name: str) -> str:
     m = re.fullmatch(r"([A-Za-z]+)_?([A-Za-z0-9]*)", base)
     if m and m.group(2) and (not m.group(1).isupper() or m.group(2).isdigit() or "_" in base):
         head, sub = m.groups()
+        head = WORDS.table().get(f"greek.{head}", head)
         return f"{head}_{{{sub}}}" if len(sub) > 1 else f"{head}_{sub}"
     return markup_of(base)
 
