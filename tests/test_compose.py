@@ -100,7 +100,7 @@ def test_the_split_follows_the_drawings() -> None:
     wide, tall = _fig(0.8, 0.3), _fig(0.1, 0.5)
     lay = arrange(Row(wide, tall), Field.of_format("A2"))
     assert lay[tall].box[2] - lay[tall].box[0] < lay[wide].box[2] - lay[wide].box[0]
-    assert lay.fill() > 0.4
+    assert lay.fill() > 0.35
 
 
 def test_choice_takes_the_better_arrangement() -> None:

@@ -68,8 +68,6 @@ FIELD_MARGIN = 3.0
 #: A title line's room: its cap height times this, plus :data:`TITLE_GAP`.
 TITLE_LEAD = 1.5
 TITLE_GAP = 1.5
-#: Splits of an open row or column are searched in steps of this share of its length.
-SPLIT_STEP = 1.0 / 32.0
 #: A content narrower than this share of its larger side counts as this wide (a plan along a
 #: line still needs room for its labels).
 THIN = 0.15
@@ -637,13 +635,32 @@ class _Solver:
             else:
                 self.choice[id(nd)] = nd.weights or (1.0,) * len(nd.items)
 
+        #: Each node's subtree's nodes, and the placements of subtrees already evaluated (by
+        #: node, box and the subtree's choices): a search step changes one node, and the rest
+        #: of the tree is replayed from here.
+        self.sub: dict[int, list[int]] = {}
+        self._subtree(tree)
+        self.memo: dict[tuple[object, ...], _Eval] = {}
+
     def _collect(self, t: Tree) -> None:
         if isinstance(t, Node):
             self.nodes.append(t)
             for it in t.items:
                 self._collect(it)
 
-    def _options(self, nd: Node) -> list[tuple[float, ...] | int]:
+    def _subtree(self, t: Tree) -> list[int]:
+        if isinstance(t, View):
+            return []
+        ids = [id(t)]
+        for it in t.items:
+            ids += self._subtree(it)
+        self.sub[id(t)] = ids
+        return ids
+
+    def _options(self, nd: Node, fine: bool = False) -> list[tuple[float, ...] | int]:
+        """A node's options: a Choice's items, a Grid's column counts, or the splits of a row
+        or column: its flexible items' shares in coarse steps, or (``fine``) in fine steps
+        within one coarse step of the current split."""
         if isinstance(nd, Choice):
             return list(range(len(nd.items)))
         if isinstance(nd, Grid):
@@ -654,20 +671,44 @@ class _Solver:
         flex = [i for i, it in enumerate(nd.items) if natural_of(it) is None]
         if len(flex) <= 1:
             return [(1.0,) * n]
-        steps = {2: round(1.0 / SPLIT_STEP), 3: 20, 4: 12}.get(len(flex), 6)
+        coarse = {2: 12, 3: 8, 4: 6}.get(len(flex), 4)
+        steps = coarse * (4 if fine else 1)
+        cur = self.choice[id(nd)]
+        assert isinstance(cur, tuple)
+        total = sum(cur[i] for i in flex)
+        share = [cur[i] / total for i in flex]
         out: list[tuple[float, ...] | int] = []
         for combo in itertools.product(range(1, steps), repeat=len(flex) - 1):
-            if sum(combo) < steps:
-                w = [1.0] * n
-                for i, c in zip(flex, (*combo, steps - sum(combo)), strict=True):
-                    w[i] = float(c)
-                out.append(tuple(w))
+            if sum(combo) >= steps:
+                continue
+            parts = (*combo, steps - sum(combo))
+            if fine and any(
+                abs(c / steps - sh) > 1.0 / coarse + 1e-9
+                for c, sh in zip(parts, share, strict=True)
+            ):
+                continue
+            w = [1.0] * n
+            for i, c in zip(flex, parts, strict=True):
+                w[i] = float(c)
+            out.append(tuple(w))
         return out
 
     def run(self, t: Tree, box: Box, ev: _Eval) -> None:
         if isinstance(t, View):
             ev.place(t, box)
             return
+        key = (id(t), box, *(self.choice[i] for i in self.sub[id(t)]))
+        part = self.memo.get(key)
+        if part is None:
+            part = _Eval(self.field)
+            self._run(t, box, part)
+            self.memo[key] = part
+        ev.views.update(part.views)
+        ev.cells.update(part.cells)
+        ev.leaves.update(part.leaves)
+        ev.titles += part.titles
+
+    def _run(self, t: Node, box: Box, ev: _Eval) -> None:
         if t.title:
             ev.titles.append((box, t))
         ch = self.choice[id(t)]
@@ -690,25 +731,29 @@ class _Solver:
         return ev, _score(ev)
 
     def _descend(self) -> tuple[_Eval, tuple[float, ...]]:
-        """Coordinate search over the splits and grid shapes, the choices held."""
+        """Coordinate search over the splits and grid shapes, the choices held: in coarse
+        steps, then in fine steps near the coarse optimum."""
         best_ev, best = self.evaluate()
-        for _ in range(4):
-            improved = False
-            for nd in self.nodes:
-                if isinstance(nd, Choice):
-                    continue
-                opts = self._options(nd)
-                if len(opts) <= 1:
-                    continue
-                keep = self.choice[id(nd)]
-                for o in opts:
-                    self.choice[id(nd)] = o
-                    ev, sc = self.evaluate()
-                    if sc > best:
-                        best, best_ev, keep, improved = sc, ev, o, True
-                self.choice[id(nd)] = keep
-            if not improved:
-                break
+        for fine in (False, True):
+            for _ in range(4):
+                improved = False
+                for nd in self.nodes:
+                    if isinstance(nd, Choice) or (fine and isinstance(nd, Grid)):
+                        continue
+                    opts = self._options(nd, fine)
+                    if len(opts) <= 1:
+                        continue
+                    keep = self.choice[id(nd)]
+                    for o in opts:
+                        if o == keep:
+                            continue
+                        self.choice[id(nd)] = o
+                        ev, sc = self.evaluate()
+                        if sc > best:
+                            best, best_ev, keep, improved = sc, ev, o, True
+                    self.choice[id(nd)] = keep
+                if not improved:
+                    break
         return best_ev, best
 
     def solve(self) -> _Eval:
@@ -853,10 +898,13 @@ def arrange(tree: Tree, field_: Field) -> Layout:
     return lay
 
 
-def compose(d: Drawing, tree: Tree, field_: Field | None = None) -> Layout:
-    """Arrange ``tree`` in the drawing's field (:func:`arrange`), then draw every title and
-    every view; returns the layout (each view's box, scale and viewport)."""
-    lay = arrange(tree, field_ or Field.of(d.frame))
+def compose(
+    d: Drawing, tree: Tree, field_: Field | None = None, layout: Layout | None = None
+) -> Layout:
+    """Arrange ``tree`` in the drawing's field (:func:`arrange`; or take ``layout``, an
+    arrangement of this same tree), then draw every title and every view; returns the layout
+    (each view's box, scale and viewport)."""
+    lay = layout or arrange(tree, field_ or Field.of(d.frame))
     for cell, node in lay.titles:
         g = node.group or next((v.group for v in node.views() if v.group), "")
         text = node.title

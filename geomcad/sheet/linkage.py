@@ -13,6 +13,7 @@ every vector is drawn at the stated μ. Its words come from ``strings/<lang>/lin
 from __future__ import annotations
 
 import math
+import weakref
 from collections.abc import Sequence
 from dataclasses import dataclass, replace
 
@@ -36,6 +37,9 @@ from geomcad.sheet.compose import (
     View,
     arrange,
     compose,
+)
+from geomcad.sheet.compose import (
+    Layout as Arranged,
 )
 from geomcad.sheet.lang import Words, current
 from geomcad.sheet.motion import Frames, turn
@@ -66,6 +70,7 @@ class Layout:
     second: bool  # the velocity plans go on a second sheet
     accel: tuple[Position, ...]
     trees: tuple[Tree, ...]  # one per sheet
+    mech: View  # the mechanism's view (on the first sheet)
 
 
 def _accel_positions(s: Solved) -> tuple[Position, ...]:
@@ -111,14 +116,31 @@ def _trees(s: Solved, accel: Sequence[Position]) -> tuple[tuple[Tree, ...], _Mec
     return (sheet,), mech, False
 
 
+#: The last arrangements, by solution and language: a build asks for the scales and its draw
+#: for the sheets, and both use one arrangement (the search runs once).
+_ARRANGED: dict[tuple[int, str], tuple[weakref.ref[Solved], Layout, tuple[Arranged, ...]]] = {}
+
+
 def layout(s: Solved) -> Layout:
     """Every view of the kinematic sheets and its scale (see the module's docstring)."""
+    return _arranged(s)[0]
+
+
+def _arranged(s: Solved) -> tuple[Layout, tuple[Arranged, ...]]:
+    key = (id(s), current())
+    hit = _ARRANGED.get(key)
+    if hit is not None and hit[0]() is s:
+        return hit[1], hit[2]
     accel = _accel_positions(s)
     trees, mech, second = _trees(s, accel)
     field = Field.of_format(FORMAT)
-    lay = arrange(trees[0], field)
-    k_v = lay.scale("v") if not second else arrange(trees[1], field).scale("v")
-    return Layout(lay[mech].scale or Scale(1.0), k_v, lay.scale("a"), second, accel, trees)
+    lays = tuple(arrange(t, field) for t in trees)
+    k_v = lays[-1].scale("v")
+    out = Layout(lays[0][mech].scale or Scale(1.0), k_v, lays[0].scale("a"), second, accel,
+                 trees, mech)  # fmt: skip
+    _ARRANGED.clear()  # one solution at a time: the cache holds no more than one
+    _ARRANGED[key] = (weakref.ref(s), out, lays)
+    return out, lays
 
 
 def sheet_scales(s: Solved) -> dict[str, float]:
@@ -130,19 +152,17 @@ def sheet_scales(s: Solved) -> dict[str, float]:
 def kinematic_sheets(s: Solved, stem: str = "") -> list[tuple[str, object]]:
     """The kinematic sheet (and, with many positions, a second sheet of velocity plans)."""
     lk = s.linkage
-    accel = _accel_positions(s)
-    trees, mech, second = _trees(s, accel)
-    count = len(trees)
+    lay, lays = _arranged(s)
+    count = len(lay.trees)
     designation = WORDS("designation", stem=stem or WORDS("stem"))
     d = start(FORMAT, _title(lk, WORDS("kinematics"), designation, None, 1, count))
-    lay = compose(d, trees[0])
-    k_l = lay[mech].scale
-    if k_l is not None and d.sheet.block is not None:
-        d.sheet.block = replace(d.sheet.block, scale=k_l.ratio_text())
+    compose(d, lay.trees[0], layout=lays[0])
+    if d.sheet.block is not None:
+        d.sheet.block = replace(d.sheet.block, scale=lay.k_l.ratio_text())
     out: list[tuple[str, object]] = [("", d.finish())]
-    if second:
+    if lay.second:
         d2 = start(FORMAT, _title(lk, WORDS("vplans_sheet"), designation, None, 2, count))
-        compose(d2, trees[1])
+        compose(d2, lay.trees[1], layout=lays[1])
         out.append(("plans", d2.finish()))
     return out
 
