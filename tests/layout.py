@@ -22,8 +22,7 @@ from collections.abc import Iterable
 from dataclasses import dataclass
 
 import shapely
-from shapely import affinity
-from shapely.geometry import LineString, Point, Polygon
+from shapely.geometry import Point, Polygon
 from shapely.geometry import box as sbox
 from shapely.strtree import STRtree
 
@@ -31,14 +30,15 @@ from geomcad.render import to_svg
 from geomcad.sheet.drawing import ARROW_LEN
 from geomcad.sheet.frame import reserved
 from geomcad.sheet.model import ArcItem, CircleItem, Item, Polyline, Sheet, TextItem
-from geomcad.sheet.style import MAIN_LINE, style
-from geomcad.sheet.text import box, metrics
+from geomcad.sheet.placer import centre_line, ink, text_outline
+from geomcad.sheet.text import metrics
 
 Box = tuple[float, float, float, float]  # x0, y0 (top), x1, y1 (bottom), sheet mm
 
 #: The drafting findings, each with what it means.
 KINDS = {
     "label-line": "a label crossed by a drawn line",
+    "tick-label": "a diagram's tick value crossed by a curve or another line",
     "anchor": "a placed label farther than ANCHOR_MAX from the point it names",
     "short-vector": "a vector shorter than twice its arrowhead",
     "empty": "more than EMPTY_MAX of the field left empty",
@@ -49,6 +49,14 @@ ANCHOR_MAX = 6.0
 EMPTY_MAX = 0.5
 #: Overlaps smaller than this (mm²) are touching, not overlapping.
 AREA_EPS = 0.05
+#: A tick value: a number alone, in the diagrams' small lettering.
+TICK_VALUE = re.compile(r"[-−–]?\d+(?:[.,]\d+)?")
+TICK_HEIGHT = 2.5
+
+
+def is_tick_value(t: TextItem) -> bool:
+    """Whether a text is a diagram's tick value (a bare number at most TICK_HEIGHT tall)."""
+    return t.height <= TICK_HEIGHT and TICK_VALUE.fullmatch(t.text) is not None
 
 
 def frame_box(sheet: Sheet) -> Box:
@@ -68,13 +76,9 @@ A3_BLOCK: Box = (415.0 - 185.0, 292.0 - 55.0, 415.0, 292.0)
 
 
 def text_poly(t: TextItem) -> Polygon:
-    """The text's box on the paper, turned by its angle about its baseline's start."""
-    w, up, down = box(t.runs, t.height)
-    p = sbox(t.at[0], t.at[1] - up, t.at[0] + w, t.at[1] + down)
-    if t.angle:
-        # counter-clockwise on the paper is clockwise in these y-down coordinates
-        p = affinity.rotate(p, -t.angle, origin=t.at)
-    return p
+    """The text's box on the paper, turned by its angle about its baseline's start (the placer's
+    own outline, so that the checker and the placer measure alike)."""
+    return text_outline(t)
 
 
 def text_box(t: TextItem) -> Box:
@@ -82,40 +86,14 @@ def text_box(t: TextItem) -> Box:
     return (x0, y0, x1, y1)
 
 
-def _arc_points(it: ArcItem, n: int = 64) -> list[tuple[float, float]]:
-    # y is down on paper: a clockwise sweep (> 0) is an increasing atan2 angle
-    a0 = math.atan2(it.start[1] - it.c[1], it.start[0] - it.c[0])
-    return [
-        (
-            it.c[0] + it.r * math.cos(a0 + it.sweep * i / n),
-            it.c[1] + it.r * math.sin(a0 + it.sweep * i / n),
-        )
-        for i in range(n + 1)
-    ]
-
-
 def geometry(it: Item) -> shapely.Geometry:
-    """The item's centre line (a text: its box)."""
-    if isinstance(it, TextItem):
-        return text_poly(it)
-    if isinstance(it, Polyline):
-        pts = list(it.points)
-        if it.fill and it.closed and len(pts) >= 3:
-            return Polygon(pts)
-        if it.closed:
-            pts.append(pts[0])
-        return LineString(pts) if len(pts) >= 2 else Point(pts[0])
-    if isinstance(it, CircleItem):
-        c = Point(it.c)
-        return c.buffer(it.r) if it.fill else c.buffer(it.r).exterior
-    return LineString(_arc_points(it))
+    """The item's centre line (a filled shape: its area; a text: its box)."""
+    return centre_line(it)
 
 
 def stroke(it: Item, fmt: str) -> shapely.Geometry:
     """The ink of a line: its centre line buffered by half its width."""
-    g = geometry(it)
-    half = style(it.role).weight * MAIN_LINE.get(fmt, 0.7) / 2.0
-    return g.buffer(max(half, 0.05)) if not isinstance(g, Polygon) else g
+    return ink(it, fmt)
 
 
 def item_box(it: Item) -> Box:
@@ -233,9 +211,8 @@ def findings(sheet: Sheet) -> list[Finding]:
         for j in tree.query(p, predicate="intersects"):
             if strokes[j].intersection(p).area > AREA_EPS:
                 it = lines[j]
-                out.append(
-                    Finding("label-line", f"{t.text!r} {text_box(t)} × {it.role} {item_box(it)}")
-                )
+                kind = "tick-label" if t.role != "title" and is_tick_value(t) else "label-line"
+                out.append(Finding(kind, f"{t.text!r} {text_box(t)} × {it.role} {item_box(it)}"))
                 break
     for t, anchor in sheet.anchors:
         d = text_poly(t).distance(Point(anchor))

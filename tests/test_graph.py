@@ -87,3 +87,30 @@ def test_x_tick_values_never_run_into_each_other() -> None:
     assert len(values) >= 3
     for a, b in itertools.pairwise(values):
         assert a.at[0] + a.width + 1.0 <= b.at[0] + 1e-9
+
+
+def test_tick_values_stay_clear_of_the_curves() -> None:
+    """A curve that swings through zero never crosses a tick value: the values are written at
+    the plot's bottom and left edges; a line drawn through one (a position's marker) takes it
+    off when the sheet is finished, its tick stays."""
+    from layout import findings
+
+    from geomcad.sheet.model import Polyline
+
+    d = start("A3", TitleBlock(title="t", designation="x"))
+    xs = [i * 2.0 * math.pi / 96 for i in range(97)]
+    ys = [math.sin(3.0 * x) for x in xs]
+    g = Graph(d, Axis.fit("φ", "рад", 0.0, 2.0 * math.pi, 200.0), Axis.fit("V", "м/с", -1, 1, 80),
+              (60.0, 140.0))  # fmt: skip
+    g.axes()
+    g.curve(xs, ys)
+    x1, _ = g.p(1.2, 0.0)
+    d.sheet.add(Polyline(((x1, 90.0), (x1, 200.0)), "construction"))
+    sheet = d.finish()
+    values = [t for t in sheet.texts() if t.text.replace(",", "").replace("–", "").isdigit()]
+    bottom = g.box[3]
+    row = [t for t in values if t.at[0] > 60.0]  # the x axis's values (the y axis's are left)
+    assert row and all(t.at[1] > bottom for t in row)  # under the plot, not at zero
+    assert "1,2" not in {t.text for t in values}  # crossed by the marker: left out
+    assert {"0,8", "1,6"} <= {t.text for t in row}
+    assert not [f for f in findings(sheet) if f.kind in ("tick-label", "label-line")]

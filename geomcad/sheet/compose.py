@@ -33,7 +33,7 @@ into the title block or графа 26 is cut back to the larger of its parts cle
 >>> b = Figure((0.0, 0.0, 0.1, 0.3), lambda v: None, title="B")
 >>> lay = compose(d, Row(a, b))
 >>> lay[a].scale.ratio_text(), lay[b].scale.ratio_text()
-('1:2', '1:1')
+('1:2', '1:2')
 """
 
 from __future__ import annotations
@@ -48,6 +48,7 @@ from typing import Any, Literal
 from geomcad.errors import ParameterError
 from geomcad.sheet.drawing import Drawing, Viewport
 from geomcad.sheet.frame import Frame
+from geomcad.sheet.lang import current
 from geomcad.sheet.scale import GOST_RATIOS, NICE, PLAN_NICE, Quantity, Scale, ScaleStyle
 from geomcad.sheet.text import box as text_box
 from geomcad.sheet.text import parse
@@ -67,11 +68,13 @@ FIELD_MARGIN = 3.0
 #: A title line's room: its cap height times this, plus :data:`TITLE_GAP`.
 TITLE_LEAD = 1.5
 TITLE_GAP = 1.5
-#: Splits of an open row or column are searched in steps of this share of its length.
-SPLIT_STEP = 1.0 / 40.0
 #: A content narrower than this share of its larger side counts as this wide (a plan along a
 #: line still needs room for its labels).
 THIN = 0.15
+
+
+#: The GOST 2.302 ratios as length factors k (m/mm), smallest first.
+_GOST_K = tuple(sorted(float(Fraction(1, 1000) / g) for g in GOST_RATIOS))
 
 
 def round_scale(raw: float, q: Quantity, series: Series) -> Scale:
@@ -85,10 +88,10 @@ def round_scale(raw: float, q: Quantity, series: Series) -> Scale:
         raise ParameterError(f"k_{q}", raw, "a scale factor must be finite and positive")
     if series == "gost":
         # k = 1/1000 m per mm of a ratio r: the smallest k ≥ raw is the largest r ≤ 1/(1000 raw)
-        fitting = [g for g in GOST_RATIOS if float(Fraction(1, 1000) / g) >= raw * (1 - 1e-12)]
-        if not fitting:
-            raise ParameterError(f"k_{q}", raw, "too large for the sheet even at 1:500")
-        return Scale(float(Fraction(1, 1000) / fitting[-1]), q)
+        for k in _GOST_K:
+            if k >= raw * (1 - 1e-12):
+                return Scale(k, q)
+        raise ParameterError(f"k_{q}", raw, "too large for the sheet even at 1:500")
     mantissas = NICE if series == "nice" else PLAN_NICE
     e = math.floor(math.log10(raw))
     for exp in (e - 1, e, e + 1):
@@ -141,12 +144,14 @@ class View:
         self.readable_mm = readable_mm
         self.weight = weight
         self._title_w: float | None = None
+        self._memo: dict[object, Any] = {}
 
     @property
     def kind(self) -> Kind:
-        if self.extent() is not None:
+        """scaled, fixed or stretch (see the module's docstring)."""
+        if _ext(self) is not None:
             return "scaled"
-        if self.natural() is not None:
+        if _nat(self) is not None:
             return "fixed"
         return "stretch"
 
@@ -161,6 +166,12 @@ class View:
     def stretch(self) -> tuple[tuple[float, float], tuple[float, float]]:
         """A stretch view's least and preferred (width, height) in mm."""
         return (40.0, 30.0), (120.0, 80.0)
+
+    def used(self, w: float, h: float) -> tuple[float, float]:
+        """The size (mm) a stretch view really draws in a room of w × h (its factors may be
+        rounded): by default as much as it prefers."""
+        pw, ph = self.stretch()[1]
+        return min(w, pw), min(h, ph)
 
     def title_room(self) -> float:
         """The height (mm) of the title line above the drawing (0 without a title)."""
@@ -179,7 +190,7 @@ class View:
 
 def scale_text(scale: Scale, style: ScaleStyle | None = None) -> str:
     """A scale's label as the title of a view shows it: ``μ_l = 0,0025 м/мм (M 1:2,5)``."""
-    text = scale.label(style or ScaleStyle())
+    text = scale.label(style or ScaleStyle(lang=current()))
     ratio = scale.ratio_text()
     return f"{text} (M {ratio})" if ratio else text
 
@@ -241,6 +252,8 @@ class Node:
         self.title_height = title_height
         #: The scale group whose scale the title shows (default: the first view's).
         self.group = group
+        self._title_w: float | None = None
+        self._natural: tuple[float, float] | Literal[False] | None = False
 
     def views(self) -> Iterator[View]:
         for it in self.items:
@@ -276,6 +289,21 @@ class Grid(Node):
     ) -> None:
         super().__init__(*items, gap=gap, title=title, title_height=title_height, group=group)
         self.cols = cols
+
+
+class Choice(Node):
+    """Alternative arrangements of the same views: the layout takes the one that scores best
+    (e.g. the plans beside the mechanism, or under it)."""
+
+    def __init__(self, *items: View | Node) -> None:
+        super().__init__(*items, gap=0.0)
+
+    def views(self) -> Iterator[View]:
+        seen: set[int] = set()
+        for v in super().views():
+            if id(v) not in seen:
+                seen.add(id(v))
+                yield v
 
 
 Tree = View | Node
@@ -360,6 +388,20 @@ class Layout:
 # --- the layout ---------------------------------------------------------------------------------
 
 
+def _ext(v: View) -> Extent | None:
+    """The view's extent, asked once."""
+    if "ext" not in v._memo:
+        v._memo["ext"] = v.extent()
+    return v._memo["ext"]  # type: ignore[no-any-return]
+
+
+def _nat(v: View) -> tuple[float, float] | None:
+    """The view's natural size, asked once."""
+    if "nat" not in v._memo:
+        v._memo["nat"] = v.natural()
+    return v._memo["nat"]  # type: ignore[no-any-return]
+
+
 def _group(v: View) -> str:
     return v.group or f"#{id(v)}"
 
@@ -403,7 +445,7 @@ def _content(ext: Extent) -> tuple[float, float]:
 
 def _raw_k(v: View, cell: Box) -> float:
     """The continuous scale at which the view's extent just fits the cell (inf: no room)."""
-    ext = v.extent()
+    ext = _ext(v)
     assert ext is not None
     w, h = _room(v, cell)
     cw, ch = ext[2] - ext[0], ext[3] - ext[1]
@@ -420,19 +462,63 @@ class _Eval:
         self.field = field_
         self.cells: dict[int, Box] = {}
         self.views: dict[int, View] = {}
+        self.leaves: dict[int, _Leaf] = {}
         self.titles: list[tuple[Box, Node]] = []
 
     def place(self, v: View, cell: Box) -> None:
-        parts = _cut(cell, self.field.obstacles)
+        key = ("leaf", cell, self.field.obstacles)
+        leaf = v._memo.get(key)
+        if leaf is None:
+            parts = _cut(cell, self.field.obstacles)
+            best = max(
+                parts, key=lambda c: (round(_leaf_score(v, c), 9), (c[2] - c[0]) * (c[3] - c[1]))
+            )
+            leaf = v._memo[key] = _Leaf.of(v, best)
         self.views[id(v)] = v
-        self.cells[id(v)] = max(parts, key=lambda c: _leaf_score(v, c))
+        self.cells[id(v)] = leaf.cell
+        self.leaves[id(v)] = leaf
+
+
+@dataclass(frozen=True)
+class _Leaf:
+    """What the search needs of a view in a cell, computed once per cell."""
+
+    cell: Box
+    kind: Kind
+    group: str
+    bad: float  # mm a fixed view or a title overflows its cell
+    raw_k: float  # scaled: the continuous scale that fits
+    content: tuple[float, float]  # scaled: the content's model size (thin ones widened)
+    area: float  # stretch: the area it really draws (mm²)
+
+    @staticmethod
+    def of(v: View, cell: Box) -> _Leaf:
+        kind = v.kind
+        bad = max(0.0, _title_width(v) - (cell[2] - cell[0]))
+        raw_k, content, area = 0.0, (0.0, 0.0), 0.0
+        if kind == "fixed":
+            nat = _nat(v)
+            assert nat is not None
+            w, h = _room(v, cell)
+            bad += max(0.0, nat[0] - w) + max(0.0, nat[1] - h)
+        elif kind == "stretch":
+            f = _stretch_fill(v, cell)
+            w, h = _room(v, cell)
+            uw, uh = v.used(w, h) if f > 0.0 else (0.0, 0.0)
+            area = max(uw, 0.0) * max(uh, 0.0)
+        else:
+            raw_k = _raw_k(v, cell)
+            ext = _ext(v)
+            assert ext is not None
+            content = _content(ext)
+        return _Leaf(cell, kind, _group(v), bad, raw_k, content, area)
 
 
 def _leaf_score(v: View, cell: Box) -> float:
     """How well a view alone does in a cell (for choosing where a cut cell goes)."""
     kind = v.kind
     if kind == "fixed":
-        nat = v.natural()
+        nat = _nat(v)
         assert nat is not None
         w, h = _room(v, cell)
         fits = nat[0] <= w + 1e-9 and nat[1] <= h + 1e-9
@@ -455,6 +541,34 @@ def _stretch_fill(v: View, cell: Box) -> float:
     return min(1.0, w / pw) * min(1.0, h / ph)
 
 
+def natural_of(t: Tree) -> tuple[float, float] | None:
+    """The natural size (mm, margins and titles included) of a tree made of fixed views only,
+    else None."""
+    if isinstance(t, View):
+        nat = _nat(t)
+        if nat is None:
+            return None
+        return max(nat[0] + 2 * t.margin, _title_width(t)), nat[1] + 2 * t.margin + t.title_room()
+    if t._natural is not False:
+        return t._natural
+    t._natural = _natural_node(t)
+    return t._natural
+
+
+def _natural_node(t: Node) -> tuple[float, float] | None:
+    sizes = [natural_of(it) for it in t.items]
+    if any(sz is None for sz in sizes):
+        return None
+    ws = [sz[0] for sz in sizes if sz is not None]
+    hs = [sz[1] for sz in sizes if sz is not None]
+    gaps = t.gap * (len(sizes) - 1)
+    if isinstance(t, Row):
+        return sum(ws) + gaps, max(hs) + t.title_room()
+    if isinstance(t, Column):
+        return max(ws), sum(hs) + gaps + t.title_room()
+    return None  # a grid of fixed views shares its box
+
+
 def _split(
     node: Node, box: Box, weights: Sequence[float], horizontal: bool
 ) -> list[tuple[Tree, Box]]:
@@ -467,24 +581,16 @@ def _split(
     free = length - node.gap * (n - 1)
     fixed: dict[int, float] = {}
     for i, it in enumerate(node.items):
-        nat = it.natural() if isinstance(it, View) else None
+        nat = natural_of(it)
         if nat is not None:
-            assert isinstance(it, View)
-            fixed[i] = (
-                (nat[0] + 2 * it.margin)
-                if horizontal
-                else (nat[1] + 2 * it.margin + it.title_room())
-            )
+            fixed[i] = nat[0] if horizontal else nat[1]
     flex = [i for i in range(n) if i not in fixed]
     share = free - sum(fixed.values())
     total_w = sum(weights[i] for i in flex) or 1.0
     out = []
     pos = x0 if horizontal else y0
     for i, it in enumerate(node.items):
-        if i in fixed:
-            ln = fixed[i] if flex else fixed[i] + share / len(fixed)
-        else:
-            ln = max(share, 0.0) * weights[i] / total_w
+        ln = fixed[i] if i in fixed else max(share, 0.0) * weights[i] / total_w
         cell = (pos, y0, pos + ln, y1) if horizontal else (x0, pos, x1, pos + ln)
         out.append((it, cell))
         pos += ln + node.gap
@@ -522,10 +628,19 @@ class _Solver:
         self._collect(tree)
         self.choice: dict[int, tuple[float, ...] | int] = {}
         for nd in self.nodes:
-            if isinstance(nd, Grid):
+            if isinstance(nd, Choice):
+                self.choice[id(nd)] = 0
+            elif isinstance(nd, Grid):
                 self.choice[id(nd)] = nd.cols or 1
             else:
                 self.choice[id(nd)] = nd.weights or (1.0,) * len(nd.items)
+
+        #: Each node's subtree's nodes, and the placements of subtrees already evaluated (by
+        #: node, box and the subtree's choices): a search step changes one node, and the rest
+        #: of the tree is replayed from here.
+        self.sub: dict[int, list[int]] = {}
+        self._subtree(tree)
+        self.memo: dict[tuple[object, ...], _Eval] = {}
 
     def _collect(self, t: Tree) -> None:
         if isinstance(t, Node):
@@ -533,30 +648,74 @@ class _Solver:
             for it in t.items:
                 self._collect(it)
 
-    def _options(self, nd: Node) -> list[tuple[float, ...] | int]:
+    def _subtree(self, t: Tree) -> list[int]:
+        if isinstance(t, View):
+            return []
+        ids = [id(t)]
+        for it in t.items:
+            ids += self._subtree(it)
+        self.sub[id(t)] = ids
+        return ids
+
+    def _options(self, nd: Node, fine: bool = False) -> list[tuple[float, ...] | int]:
+        """A node's options: a Choice's items, a Grid's column counts, or the splits of a row
+        or column: its flexible items' shares in coarse steps, or (``fine``) in fine steps
+        within one coarse step of the current split."""
+        if isinstance(nd, Choice):
+            return list(range(len(nd.items)))
         if isinstance(nd, Grid):
             return [nd.cols] if nd.cols else list(range(1, len(nd.items) + 1))
         if nd.weights is not None:
             return [nd.weights]
         n = len(nd.items)
-        if n == 1:
-            return [(1.0,)]
-        steps = round(1.0 / SPLIT_STEP)
-        if n > 3:
-            steps = 12 if n == 4 else 6
+        flex = [i for i, it in enumerate(nd.items) if natural_of(it) is None]
+        if len(flex) <= 1:
+            return [(1.0,) * n]
+        coarse = {2: 12, 3: 8, 4: 6}.get(len(flex), 4)
+        steps = coarse * (4 if fine else 1)
+        cur = self.choice[id(nd)]
+        assert isinstance(cur, tuple)
+        total = sum(cur[i] for i in flex)
+        share = [cur[i] / total for i in flex]
         out: list[tuple[float, ...] | int] = []
-        for combo in itertools.product(range(1, steps), repeat=n - 1):
-            if sum(combo) < steps:
-                out.append((*combo, steps - sum(combo)))
+        for combo in itertools.product(range(1, steps), repeat=len(flex) - 1):
+            if sum(combo) >= steps:
+                continue
+            parts = (*combo, steps - sum(combo))
+            if fine and any(
+                abs(c / steps - sh) > 1.0 / coarse + 1e-9
+                for c, sh in zip(parts, share, strict=True)
+            ):
+                continue
+            w = [1.0] * n
+            for i, c in zip(flex, parts, strict=True):
+                w[i] = float(c)
+            out.append(tuple(w))
         return out
 
     def run(self, t: Tree, box: Box, ev: _Eval) -> None:
         if isinstance(t, View):
             ev.place(t, box)
             return
+        key = (id(t), box, *(self.choice[i] for i in self.sub[id(t)]))
+        part = self.memo.get(key)
+        if part is None:
+            part = _Eval(self.field)
+            self._run(t, box, part)
+            self.memo[key] = part
+        ev.views.update(part.views)
+        ev.cells.update(part.cells)
+        ev.leaves.update(part.leaves)
+        ev.titles += part.titles
+
+    def _run(self, t: Node, box: Box, ev: _Eval) -> None:
         if t.title:
             ev.titles.append((box, t))
         ch = self.choice[id(t)]
+        if isinstance(t, Choice):
+            assert isinstance(ch, int)
+            self.run(t.items[ch], box, ev)
+            return
         if isinstance(t, Grid):
             assert isinstance(ch, int)
             kids = _grid_cells(t, box, ch)
@@ -571,24 +730,46 @@ class _Solver:
         self.run(self.tree, self.field.box, ev)
         return ev, _score(ev)
 
-    def solve(self) -> _Eval:
+    def _descend(self) -> tuple[_Eval, tuple[float, ...]]:
+        """Coordinate search over the splits and grid shapes, the choices held: in coarse
+        steps, then in fine steps near the coarse optimum."""
         best_ev, best = self.evaluate()
-        for _ in range(4):
-            improved = False
-            for nd in self.nodes:
-                opts = self._options(nd)
-                if len(opts) <= 1:
-                    continue
-                keep = self.choice[id(nd)]
-                for o in opts:
-                    self.choice[id(nd)] = o
-                    ev, sc = self.evaluate()
-                    if sc > best:
-                        best, best_ev, keep, improved = sc, ev, o, True
-                self.choice[id(nd)] = keep
-            if not improved:
-                break
-        return best_ev
+        for fine in (False, True):
+            for _ in range(4):
+                improved = False
+                for nd in self.nodes:
+                    if isinstance(nd, Choice) or (fine and isinstance(nd, Grid)):
+                        continue
+                    opts = self._options(nd, fine)
+                    if len(opts) <= 1:
+                        continue
+                    keep = self.choice[id(nd)]
+                    for o in opts:
+                        if o == keep:
+                            continue
+                        self.choice[id(nd)] = o
+                        ev, sc = self.evaluate()
+                        if sc > best:
+                            best, best_ev, keep, improved = sc, ev, o, True
+                    self.choice[id(nd)] = keep
+                if not improved:
+                    break
+        return best_ev, best
+
+    def solve(self) -> _Eval:
+        """The best layout over every combination of the :class:`Choice` nodes' options."""
+        choices = [nd for nd in self.nodes if isinstance(nd, Choice)]
+        start = dict(self.choice)
+        found: tuple[_Eval, tuple[float, ...]] | None = None
+        for combo in itertools.product(*(range(len(c.items)) for c in choices)):
+            self.choice = dict(start)
+            for c, i in zip(choices, combo, strict=True):
+                self.choice[id(c)] = i
+            ev, sc = self._descend()
+            if found is None or sc > found[1]:
+                found = (ev, sc)
+        assert found is not None
+        return found[0]
 
 
 def _scales(ev: _Eval) -> dict[str, Scale]:
@@ -610,7 +791,7 @@ def _scales(ev: _Eval) -> dict[str, Scale]:
 
 
 def _fill_of(v: View, cell: Box, k: float) -> float:
-    ext = v.extent()
+    ext = _ext(v)
     assert ext is not None
     cw, ch = _content(ext)
     area = (cell[2] - cell[0]) * (cell[3] - cell[1] - v.title_room())
@@ -621,27 +802,20 @@ def _fill_of(v: View, cell: Box, k: float) -> float:
 
 def _areas(ev: _Eval, scales: Mapping[str, float]) -> dict[str, tuple[float, float]]:
     """The drawn area (mm²) of each flexible view, a scale group counting once (the sum of its
-    members'), a stretch view's at most its preferred size; with each one's weight."""
+    members'), a stretch view's as it really draws; with each one's weight."""
     out: dict[str, tuple[float, float]] = {}
-    for key, v in ev.views.items():
-        cell = ev.cells[key]
-        if v.kind == "fixed":
+    for key, leaf in ev.leaves.items():
+        if leaf.kind == "fixed":
             continue
-        if v.kind == "stretch":
-            f = _stretch_fill(v, cell)
-            (pw, ph) = v.stretch()[1]
-            w, h = _room(v, cell)
-            area = max(f, 0.0) * max(min(w, pw), 0.0) * max(min(h, ph), 0.0)
-            out[f"#{key}"] = (max(area, 1e-6), v.weight)
+        w = ev.views[key].weight
+        if leaf.kind == "stretch":
+            out[f"#{key}"] = (max(leaf.area, 1e-6), w)
             continue
-        g = _group(v)
-        k = scales[g]
-        ext = v.extent()
-        assert ext is not None
-        cw, ch = _content(ext)
+        k = scales[leaf.group]
+        cw, ch = leaf.content
         area = (cw / k) * (ch / k) if math.isfinite(k) and k > 0.0 and cw > 0.0 else 1e-6
-        prev = out.get(g, (0.0, 0.0))
-        out[g] = (prev[0] + max(area, 1e-6), max(prev[1], v.weight))
+        prev = out.get(leaf.group, (0.0, 0.0))
+        out[leaf.group] = (prev[0] + max(area, 1e-6), max(prev[1], w))
     return out
 
 
@@ -655,34 +829,37 @@ def _title_width(v: View) -> float:
     return v._title_w
 
 
+def _node_title_width(node: Node) -> float:
+    """The width (mm) of a node's title with a typical scale label after it."""
+    if node._title_w is not None:
+        return node._title_w
+    text = node.title
+    if node.group or any(v.group for v in node.views()):
+        text += ", " + scale_text(Scale(0.0025, next(iter(node.views())).quantity))
+    node._title_w = text_width(text, node.title_height)
+    return node._title_w
+
+
 def _score(ev: _Eval) -> tuple[float, ...]:
     """(−infeasibility, Σ weight·log(drawn area)): larger is better. The sum of logarithms
     shares the field fairly: a view gains only where its drawing grows, so no view keeps a
     large box its drawing does not use while another could grow into it."""
-    bad = 0.0
-    for key, v in ev.views.items():
-        if v.kind == "fixed":
-            nat = v.natural()
-            assert nat is not None
-            w, h = _room(v, ev.cells[key])
-            bad += max(0.0, nat[0] - w) + max(0.0, nat[1] - h)
-    for key, v in ev.views.items():
-        cell = ev.cells[key]
-        bad += max(0.0, _title_width(v) - (cell[2] - cell[0]))
+    bad = sum(leaf.bad for leaf in ev.leaves.values())
     for cell, node in ev.titles:
-        bad += max(0.0, text_width(node.title, node.title_height) - (cell[2] - cell[0]))
+        bad += max(0.0, _node_title_width(node) - (cell[2] - cell[0]))
     raw: dict[str, float] = {}
+    first: dict[str, View] = {}
+    for key, leaf in ev.leaves.items():
+        if leaf.kind == "scaled":
+            raw[leaf.group] = max(raw.get(leaf.group, 0.0), leaf.raw_k)
+            first.setdefault(leaf.group, ev.views[key])
     rounded: dict[str, float] = {}
-    for key, v in ev.views.items():
-        if v.kind == "scaled":
-            g = _group(v)
-            raw[g] = max(raw.get(g, 0.0), _raw_k(v, ev.cells[key]))
     for g, k in raw.items():
         if not math.isfinite(k):
             bad += 1000.0
             rounded[g] = math.inf
             continue
-        v = next(v for v in ev.views.values() if v.kind == "scaled" and _group(v) == g)
+        v = first[g]
         rounded[g] = round_scale(k, v.quantity, v.series).k if k > 0.0 else 1.0
         if v.readable > 0.0 and v.readable / rounded[g] < v.readable_mm:
             bad += v.readable_mm - v.readable / rounded[g]
@@ -721,10 +898,13 @@ def arrange(tree: Tree, field_: Field) -> Layout:
     return lay
 
 
-def compose(d: Drawing, tree: Tree, field_: Field | None = None) -> Layout:
-    """Arrange ``tree`` in the drawing's field (:func:`arrange`), then draw every title and
-    every view; returns the layout (each view's box, scale and viewport)."""
-    lay = arrange(tree, field_ or Field.of(d.frame))
+def compose(
+    d: Drawing, tree: Tree, field_: Field | None = None, layout: Layout | None = None
+) -> Layout:
+    """Arrange ``tree`` in the drawing's field (:func:`arrange`; or take ``layout``, an
+    arrangement of this same tree), then draw every title and every view; returns the layout
+    (each view's box, scale and viewport)."""
+    lay = layout or arrange(tree, field_ or Field.of(d.frame))
     for cell, node in lay.titles:
         g = node.group or next((v.group for v in node.views() if v.group), "")
         text = node.title
@@ -736,7 +916,7 @@ def compose(d: Drawing, tree: Tree, field_: Field | None = None) -> Layout:
         if v.title:
             d.text(v.caption(pl.scale), (pl.box[0], pl.box[1] + v.title_height), v.title_height)
         if pl.scale is not None:
-            ext = v.extent()
+            ext = _ext(v)
             assert ext is not None
             centre = ((ext[0] + ext[2]) / 2.0, (ext[1] + ext[3]) / 2.0)
             at = ((pl.inner[0] + pl.inner[2]) / 2.0, (pl.inner[1] + pl.inner[3]) / 2.0)

@@ -4,26 +4,32 @@ A :class:`Viewport` maps model coordinates (metres, or m/s, or N; y up) to sheet
 (y down) through its :class:`~geomcad.sheet.scale.Scale`: the y axis is flipped here and only
 here, by transforming coordinates, so text stays upright and line widths stay in mm.
 
-Labels are placed last, by :meth:`Drawing.finish`: each label tries positions around its point,
-nearest first, and takes the one that overlaps no other label and crosses the fewest lines.
+Labels are placed last, by :meth:`Drawing.finish`, through the one placer of every sheet
+(:mod:`geomcad.sheet.placer`): candidate positions around each label's point scored against an
+index of every drawn line and text.
 """
 
 from __future__ import annotations
 
-import dataclasses
 import itertools
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass, field
-
-import numpy as np
-import numpy.typing as npt
 
 from geomcad import tol
 from geomcad.geom import Arc, Circle, Line, PointLike, vec
 from geomcad.sheet import symbols
 from geomcad.sheet.frame import Frame, reserved, text_at
 from geomcad.sheet.model import XY, ArcItem, CircleItem, Polyline, Sheet, TextItem
+from geomcad.sheet.placer import (
+    DimText,
+    Index,
+    LabelRequest,
+    drop_crossed,
+    place_dims,
+    place_labels,
+    shrink_moved,
+)
 from geomcad.sheet.scale import Scale
 from geomcad.sheet.style import (
     arc_length,
@@ -33,7 +39,7 @@ from geomcad.sheet.style import (
     fit_open,
     style,
 )
-from geomcad.sheet.text import box, metrics, parse
+from geomcad.sheet.text import box, parse
 
 #: Symbol sizes on paper (mm).
 JOINT_R = symbols.JOINT_R
@@ -44,12 +50,6 @@ SLIDER_SIZE = symbols.SLIDER_SIZE
 HATCH_STEP = symbols.HATCH_STEP
 HATCH_LEN = symbols.HATCH_LEN
 
-#: Label placement: gaps from the anchor (mm) and the eight directions, preferred first.
-LABEL_GAPS = (1.0, 2.0, 3.5, 5.5, 8.0, 11.0)
-DIRECTIONS: tuple[tuple[float, float], ...] = (
-    (1, -1), (-1, -1), (1, 1), (-1, 1), (1, 0), (-1, 0), (0, -1), (0, 1),
-)  # fmt: skip
-LABEL_PAD = 0.4
 #: Fixed text moved off a box of the form keeps this far from it (mm).
 RESERVED_GAP = 3.0
 #: A curved arrow's shaft stops this far (rad) short of its head's tip.
@@ -63,34 +63,6 @@ def _dist(a: XY, b: XY) -> float:
 
 
 @dataclass
-class LabelRequest:
-    """A label waiting to be placed next to ``anchor`` (sheet mm)."""
-
-    anchor: XY
-    markup: str
-    height: float
-    role: str
-    prefer: tuple[float, float] | None
-    clear: float  # the radius around the anchor the label keeps clear of (a joint's circle)
-    id: str
-    others: tuple[XY, ...] = ()  # further anchors to try, each at a small extra cost
-
-
-@dataclass
-class DimText:
-    """A dimension's text waiting for its place: turned by ``angle`` (degrees, counter-clockwise
-    on the paper) along the unit direction ``t``; ``candidates`` are the baseline starts to try,
-    the preferred first; ``box`` its (width, rise, descent) in mm."""
-
-    markup: str
-    height: float
-    angle: float
-    t: tuple[float, float]
-    candidates: tuple[XY, ...]
-    box: tuple[float, float, float]
-
-
-@dataclass
 class Drawing:
     """A sheet being drawn: its items, its free field, and the labels still to place."""
 
@@ -101,6 +73,9 @@ class Drawing:
     #: Fixed texts moved off графа 26: :meth:`finish` sets them smaller if they then run into
     #: other text.
     moved: list[TextItem] = field(default_factory=list)
+    #: Fixed texts that may be left out (a diagram's tick values): :meth:`finish` drops each one
+    #: a line crosses.
+    optional: list[TextItem] = field(default_factory=list)
 
     def viewport(self, scale: Scale, origin: PointLike, at: XY) -> Viewport:
         """A viewport that puts model point ``origin`` at sheet point ``at``."""
@@ -212,182 +187,19 @@ class Drawing:
 
     # -- label placement -----------------------------------------------------------------------
     def finish(self) -> Sheet:
-        """Place every pending label and return the sheet."""
-        _shrink(self)
-        segs = _segments(self.sheet)
-        for dim in self.dims:
-            # the dimension's text keeps clear of the lines and of the texts already there
-            edges = [e for t in self.sheet.texts() for e in _box_edges(_text_box(t))]
-            _place_dim(self.sheet, dim, np.vstack([segs, np.array(edges).reshape(-1, 4)]))
+        """Drop the optional texts a line crosses, place every dimension's text and every pending
+        label (:mod:`geomcad.sheet.placer`)
+        and return the sheet."""
+        shrink_moved(self.sheet, self.moved)
+        self.moved.clear()
+        index = Index(self.sheet, self.frame)  # the lines drawn; texts join it as they are set
+        drop_crossed(self.sheet, index, self.optional)
+        self.optional.clear()
+        place_dims(self.sheet, index, self.dims)
         self.dims.clear()
-        boxes: list[tuple[float, float, float, float]] = [_text_box(t) for t in self.sheet.texts()]
-        for req in self.pending:
-            item = _place(req, segs, boxes, self.frame)
-            self.sheet.add(item)
-            self.sheet.anchors.append((item, req.anchor))
-            boxes.append(_text_box(item))
+        place_labels(self.sheet, index, self.pending)
         self.pending.clear()
         return self.sheet
-
-
-def _shrink(d: Drawing) -> None:
-    """Each text moved off графа 26 that now runs into another text is set at the next smaller
-    GOST height (down to 2.5 mm) until it runs into none."""
-    items = d.sheet.items
-    for t in d.moved:
-        i = next(k for k, it in enumerate(items) if it is t)
-        others = [_text_box(o) for o in d.sheet.texts() if o is not t]
-        cur = t
-        for h in (3.5, 2.5):
-            if not any(_overlaps(_text_box(cur), o) for o in others) or h >= cur.height:
-                break
-            runs = cur.runs
-            fs = metrics().font_size(h)
-            w, _, _ = box(runs, h)
-            cur = TextItem(cur.at, runs, h, fs, w, cur.role, cur.id)
-        items[i] = cur
-    d.moved.clear()
-
-
-def _text_box(t: TextItem) -> tuple[float, float, float, float]:
-    """The text's box on the paper (of its turned outline, for a turned text)."""
-    _, up, down = box(t.runs, t.height)
-    if not t.angle:
-        return (t.at[0], t.at[1] - up, t.at[0] + t.width, t.at[1] + down)
-    a = math.radians(t.angle)
-    tx, ty = math.cos(a), -math.sin(a)  # along the text on the paper (y down)
-    # u along the text, v down across it: the paper point is at + u·t + v·(−t_y, t_x)
-    corners = [
-        (t.at[0] + tx * u - ty * v, t.at[1] + ty * u + tx * v)
-        for u in (0.0, t.width)
-        for v in (-up, down)
-    ]
-    xs, ys = [c[0] for c in corners], [c[1] for c in corners]
-    return (min(xs), min(ys), max(xs), max(ys))
-
-
-def _box_edges(b: tuple[float, float, float, float]) -> list[tuple[float, float, float, float]]:
-    x0, y0, x1, y1 = b
-    return [(x0, y0, x1, y0), (x1, y0, x1, y1), (x1, y1, x0, y1), (x0, y1, x0, y0)]
-
-
-def _segments(sheet: Sheet) -> npt.NDArray[np.float64]:
-    """Every drawn line of the sheet as segments (x1, y1, x2, y2); circles and arcs as chords."""
-    out: list[tuple[float, float, float, float]] = []
-    for it in sheet.items:
-        if isinstance(it, Polyline):
-            pts = list(it.points) + ([it.points[0]] if it.closed else [])
-            out += [(*a, *b) for a, b in itertools.pairwise(pts)]
-        elif isinstance(it, CircleItem | ArcItem):
-            if isinstance(it, CircleItem):
-                a0, sweep = 0.0, 2.0 * math.pi
-            else:
-                a0 = math.atan2(it.start[1] - it.c[1], it.start[0] - it.c[0])
-                sweep = it.sweep
-            n = max(8, int(abs(sweep) * it.r / 1.5) + 1)
-            t = a0 + np.linspace(0.0, sweep, n + 1)
-            xs, ys = it.c[0] + it.r * np.cos(t), it.c[1] + it.r * np.sin(t)
-            out += [
-                (float(xs[i]), float(ys[i]), float(xs[i + 1]), float(ys[i + 1])) for i in range(n)
-            ]
-    return np.array(out, dtype=np.float64).reshape(-1, 4)
-
-
-def _place_dim(sheet: Sheet, dim: DimText, segs: npt.NDArray[np.float64]) -> None:
-    """Put a dimension's text at its first candidate that crosses no line (else the one that
-    crosses the fewest)."""
-    w, rise, down = dim.box
-    area = (-LABEL_PAD, -rise - LABEL_PAD, w + LABEL_PAD, down + LABEL_PAD)
-    best: tuple[int, XY] | None = None
-    for at in dim.candidates:
-        n = _crossings(_turned(segs, at, dim.t), area)
-        if best is None or n < best[0]:
-            best = (n, at)
-        if n == 0:
-            break
-    assert best is not None
-    item = text_at(sheet, dim.markup, best[1], dim.height, "label")
-    sheet.items[-1] = dataclasses.replace(item, angle=dim.angle)
-
-
-def _turned(
-    segs: npt.NDArray[np.float64], at: XY, t: tuple[float, float]
-) -> npt.NDArray[np.float64]:
-    """Segments in the frame of a turned text: x along ``t`` from ``at``, y down across it."""
-    dx, dy = t[1], -t[0]  # "down" of a text whose up is (t_y, −t_x), negated
-    dx, dy = -dx, -dy
-    out = np.empty_like(segs)
-    for i in (0, 2):
-        px, py = segs[:, i] - at[0], segs[:, i + 1] - at[1]
-        out[:, i] = px * t[0] + py * t[1]
-        out[:, i + 1] = px * dx + py * dy
-    return out
-
-
-def _crossings(segs: npt.NDArray[np.float64], b: tuple[float, float, float, float]) -> int:
-    """How many segments cross or lie in the box (Liang–Barsky clipping, all at once)."""
-    if segs.size == 0:
-        return 0
-    x1, y1, x2, y2 = segs.T
-    dx, dy = x2 - x1, y2 - y1
-    t0 = np.zeros_like(x1)
-    t1 = np.ones_like(x1)
-    ok = np.ones(x1.shape, dtype=bool)
-    for p, q in ((-dx, x1 - b[0]), (dx, b[2] - x1), (-dy, y1 - b[1]), (dy, b[3] - y1)):
-        zero = p == 0.0
-        ok &= ~(zero & (q < 0.0))
-        with np.errstate(divide="ignore", invalid="ignore"):
-            r = np.where(zero, 0.0, q / np.where(zero, 1.0, p))
-        t0 = np.where(~zero & (p < 0.0), np.maximum(t0, r), t0)
-        t1 = np.where(~zero & (p > 0.0), np.minimum(t1, r), t1)
-    return int(np.count_nonzero(ok & (t0 <= t1)))
-
-
-def _overlaps(a: tuple[float, float, float, float], b: tuple[float, float, float, float]) -> bool:
-    return a[0] < b[2] and b[0] < a[2] and a[1] < b[3] and b[1] < a[3]
-
-
-def _place(
-    req: LabelRequest,
-    segs: npt.NDArray[np.float64],
-    boxes: list[tuple[float, float, float, float]],
-    frame: Frame,
-) -> TextItem:
-    runs = parse(req.markup)
-    w, up, down = box(runs, req.height)
-    h = up + down
-    dirs = list(DIRECTIONS)
-    if req.prefer is not None:
-        dirs.insert(0, req.prefer)
-    best: tuple[float, XY] | None = None
-    anchors = (req.anchor, *req.others)
-    for gi, gap in enumerate(LABEL_GAPS):
-        g = gap + req.clear
-        for (ai, (ax, ay)), (di, (dx, dy)) in itertools.product(
-            enumerate(anchors), enumerate(dirs)
-        ):
-            n = math.hypot(dx, dy)
-            ux, uy = dx / n, dy / n
-            # the box's nearest corner (or edge middle) sits g from the anchor along (ux, uy)
-            cx = ax + ux * g + (w / 2.0) * (1 if ux > 0.3 else -1 if ux < -0.3 else 0)
-            cy = ay + uy * g + (h / 2.0) * (1 if uy > 0.3 else -1 if uy < -0.3 else 0)
-            bx = (cx - w / 2.0, cy - h / 2.0, cx + w / 2.0, cy + h / 2.0)
-            if not (frame.left < bx[0] and bx[2] < frame.right and frame.top < bx[1]):
-                continue
-            if bx[3] > frame.bottom or (bx[2] > frame.tb_left and bx[3] > frame.tb_top):
-                continue
-            padded = (bx[0] - LABEL_PAD, bx[1] - LABEL_PAD, bx[2] + LABEL_PAD, bx[3] + LABEL_PAD)
-            if any(_overlaps(padded, o) for o in boxes):
-                continue
-            cost = 10.0 * _crossings(segs, padded) + gi * 1.5 + di * 0.2 + ai * 0.5
-            if best is None or cost < best[0]:
-                best = (cost, (bx[0], bx[1] + up))
-        if best is not None and best[0] < 1.0:
-            break
-    if best is None:  # nowhere free: fall back on the first position
-        best = (0.0, (req.anchor[0] + 1.0, req.anchor[1] - 1.0))
-    fs = metrics().font_size(req.height)
-    return TextItem(best[1], runs, req.height, fs, w, req.role, req.id)
 
 
 class Viewport:

@@ -136,35 +136,55 @@ class Graph:
         return (a[0], a[1], b[0], b[1])
 
     def axes(self, lang: str = "ru", tick_labels: bool = True, height: float = 2.5) -> None:
-        """Both axes with arrows, ticks, tick values and their symbols and units."""
+        """Both axes with arrows and ticks, the tick values where no curve reaches them, and the
+        axes' symbols and units placed by the label placer next to the arrows.
+
+        The values of the x axis are written under the plot's bottom edge and those of the y
+        axis left of its left edge, so that no curve can cross them: where the zero axis runs
+        inside the plot (values below or left of zero), the edge gets a thin line with the same
+        ticks, the zero axis keeps its ticks unlabelled. A value that another line drawn on the
+        sheet crosses (a marker of a position) is left out when the sheet is finished.
+        """
         x0, y0, x1, y1 = self.box
         ax, ay = self.at
         s = self.d.sheet
         _arrow(s, (x0 - 2.0 if x0 < ax else ax, ay), (x1 + ARROW_OVER, ay), "vector")
         _arrow(s, (ax, y1 + 2.0 if y1 > ay else ay), (ax, y0 - ARROW_OVER), "vector")
+        # the rows of values: at the bottom and left edges (the zero axes when they are there)
+        bottom = max(ay, y1)
+        left = min(ax, x0)
+        if bottom > ay + tol.DERIVED:
+            s.add(Polyline(((x0, bottom), (x1, bottom)), "dimension"))
+        if left < ax - tol.DERIVED:
+            s.add(Polyline(((left, y0), (left, y1)), "dimension"))
         right_of_last = -math.inf  # the right edge of the last x value written
         for v in self.x.ticks():
             px, _ = self.p(v, self.y.zero)
-            s.add(Polyline(((px, ay), (px, ay + TICK_LEN)), "dimension"))
+            for yy in (ay,) if bottom == ay else (ay, bottom):
+                s.add(Polyline(((px, yy), (px, yy + TICK_LEN)), "dimension"))
             text = fmt_number(v, lang, 4)
             half = box(parse(text), height)[0] / 2.0
-            # a value that would run into the one before it is left out (its tick stays)
+            # a value that would run into the one before it is left out (its tick stays), and
+            # so is zero (the origin, or the other axis runs through it)
             if tick_labels and v != self.x.zero and px - half >= right_of_last + TICK_GAP_MM:
-                self.d.text(text, (px, ay + TICK_LEN + height + 0.8), height, anchor="centre")
+                at = (px, bottom + TICK_LEN + height + 0.8)
+                self.d.optional.append(self.d.text(text, at, height, anchor="centre"))
                 right_of_last = px + half
         for v in self.y.ticks():
             _, py = self.p(self.x.zero, v)
-            s.add(Polyline(((ax - TICK_LEN, py), (ax, py)), "dimension"))
+            for xx in (ax,) if left == ax else (ax, left):
+                s.add(Polyline(((xx - TICK_LEN, py), (xx, py)), "dimension"))
             if tick_labels and v != self.y.zero:
-                self.d.text(fmt_number(v, lang, 4), (ax - TICK_LEN - 0.8, py + height / 2.0),
-                            height, anchor="right")  # fmt: skip
-        self.d.text(
-            f"{self.x.symbol}, {self.x.unit}",
-            (x1 + ARROW_OVER, ay + TICK_LEN + 2.0 * height + 3.0),
-            3.5,
-            anchor="right",
-        )
-        self.d.text(f"{self.y.symbol}, {self.y.unit}", (ax + 2.0, y0 - ARROW_OVER + 3.0), 3.5)
+                at = (left - TICK_LEN - 0.8, py + height / 2.0)
+                self.d.optional.append(
+                    self.d.text(fmt_number(v, lang, 4), at, height, anchor="right")
+                )
+        # the symbols by the arrows' tips, placed clear of the curves drawn before the sheet is
+        # finished
+        self.d.label((x1 + ARROW_OVER, ay), f"{self.x.symbol}, {self.x.unit}", 3.5,
+                     prefer=(-1.0, 1.0), clear=0.5)  # fmt: skip
+        self.d.label((ax, y0 - ARROW_OVER), f"{self.y.symbol}, {self.y.unit}", 3.5,
+                     prefer=(1.0, 0.3), clear=1.0)  # fmt: skip
 
     def factors(self, at: XY, lang: str = "ru", height: float = 2.5) -> None:
         """Both scale factors as one line of text with its baseline at ``at``."""

@@ -1,152 +1,146 @@
-"""The kinematic sheet of a linkage file (A1), laid out for any mechanism.
+"""The kinematic sheet of a linkage file (A1), composed for any mechanism.
 
-The field is cut into regions by one layout rule, whatever the mechanism: the mechanism in all
-its numbered positions (top left), the velocity plan of every position in a grid (top right;
-on a second sheet when there are more than :data:`PLANS_ON_SHEET`), the output's diagrams
-s(φ), v(φ), a(φ) (bottom left: the exact curves of the sweep, and the graphical derivatives by
-chords through the numbered positions), the acceleration plans of two positions (bottom middle)
-and the tables of ω and ε (bottom right). Each view takes the largest scale of its series that
-fits its region: a GOST 2.302 ratio for the mechanism, one factor 1, 2, 2.5, 4, 5 × 10^n for all
-velocity plans and one for the acceleration plans, so every vector is drawn at the stated μ.
+The sheet is one tree of views (:mod:`geomcad.sheet.compose`), whatever the mechanism: the
+mechanism in all its numbered positions and the velocity plan of every position in a grid (on a
+second sheet when there are more than :data:`PLANS_ON_SHEET`) above; the output's diagrams
+s(φ), v(φ), a(φ) (the exact curves of the sweep, and the graphical derivatives by chords through
+the numbered positions), the acceleration plans of two positions and the tables of ω and ε below.
+The layout chooses the splits and each view's scale: a GOST 2.302 ratio for the mechanism, one
+factor 1, 2, 2.5, 4, 5 × 10^n for all velocity plans and one for the acceleration plans, so
+every vector is drawn at the stated μ. Its words come from ``strings/<lang>/linkage.toml``.
 """
 
 from __future__ import annotations
 
 import math
+import weakref
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
 from geomcad import tol
 from geomcad.geom import Vec
-from geomcad.kinematics.plan import Plan
 from geomcad.linkage.model import Linkage
 from geomcad.linkage.plans import Position, construct
 from geomcad.linkage.solution import Solved
 from geomcad.linkage.sweep import output_coordinate, sweep
-from geomcad.sheet import Drawing, TitleBlock, fmt_number, gost_scale_to_fit, start
-from geomcad.sheet.graph import Axis, Graph, nice_step
+from geomcad.sheet import Drawing, TitleBlock, fmt_number, start
+from geomcad.sheet.compose import (
+    Choice,
+    Column,
+    Field,
+    Grid,
+    Placed,
+    Row,
+    Tree,
+    View,
+    arrange,
+    compose,
+)
+from geomcad.sheet.compose import (
+    Layout as Arranged,
+)
+from geomcad.sheet.lang import Words, current
 from geomcad.sheet.motion import Frames, turn
-from geomcad.sheet.plans import LINE_OVER_MM, draw_plan, plan_scale
 from geomcad.sheet.scale import Scale
 from geomcad.sheet.scheme import Body, draw_scheme
+from geomcad.sheet.views import AxisSpec, Curve, Diagram, PlanView, Table
 
-#: A1 landscape and its regions (x0, y0, x1, y1 in sheet mm).
+WORDS = Words(__package__, "linkage")
+
 FORMAT = "A1"
-MECH = (26.0, 14.0, 420.0, 318.0)
-VPLANS = (428.0, 14.0, 832.0, 318.0)
-DIAGRAMS = (26.0, 326.0, 420.0, 584.0)
-APLANS = (428.0, 326.0, 642.0, 584.0)
-TABLES = (652.0, 326.0, 832.0, 530.0)
 #: At most this many velocity plans share the first sheet with the mechanism.
 PLANS_ON_SHEET = 12
-#: The second sheet's grid region for more plans.
-PLANS_ALL = (26.0, 14.0, 832.0, 528.0)
 #: Samples of the exact diagrams over a turn.
 DIAGRAM_SAMPLES = 361
-TITLE_ROOM = 8.0  # mm above a view for its title
 
-Box = tuple[float, float, float, float]
+
+def _deg(phi: float) -> str:
+    return fmt_number(math.degrees(phi) % 360, current(), digits=4)
 
 
 @dataclass(frozen=True)
 class Layout:
-    """The regions and scales of a linkage's kinematic sheets."""
+    """The views of a linkage's kinematic sheets, their trees and scales."""
 
     k_l: Scale
     k_v: Scale
     k_a: Scale
-    cells: tuple[Box, ...]  # one per velocity plan
     second: bool  # the velocity plans go on a second sheet
     accel: tuple[Position, ...]
-    acells: tuple[Box, ...]  # one per acceleration plan
+    trees: tuple[Tree, ...]  # one per sheet
+    mech: View  # the mechanism's view (on the first sheet)
 
 
-def _grid(box: Box, n: int, content: tuple[float, float] = (1.0, 1.0)) -> tuple[Box, ...]:
-    """n cells filling ``box`` row by row, in the arrangement (columns × rows) that draws a
-    content of ``content`` = (width, height) (model units, each cell alike) the largest."""
-    x0, y0, x1, y1 = box
-    w, h = x1 - x0, y1 - y0
-    cw_, ch_ = (c if c > 0.0 else 1.0 for c in content)  # a plan all at its pole
-    cols = max(
-        range(1, n + 1),
-        key=lambda c: min(
-            (w / c - 2 * LINE_OVER_MM) / cw_,
-            (h / math.ceil(n / c) - TITLE_ROOM - 2 * LINE_OVER_MM) / ch_,
-        ),
-    )
-    rows = math.ceil(n / cols)
-    cw, ch = w / cols, h / rows
+def _accel_positions(s: Solved) -> tuple[Position, ...]:
+    lk = s.linkage
     return tuple(
-        (x0 + c * cw, y0 + r * ch, x0 + (c + 1) * cw, y0 + (r + 1) * ch)
-        for r, c in (divmod(i, cols) for i in range(n))
-    )
-
-
-def _content(plans: Sequence[Plan]) -> tuple[float, float]:
-    """The largest width and height of the plans (plan units)."""
-    ext = [p.extent() for p in plans]
-    return max(e[2] - e[0] for e in ext), max(e[3] - e[1] for e in ext)
-
-
-def _inner(cell: Box, title: float = TITLE_ROOM) -> tuple[float, float]:
-    """The room a plan's points have in a cell: clear of its title, and of its neighbours by the
-    length its construction lines run past the points (:data:`LINE_OVER_MM`) on each side."""
-    margin = 2.0 * LINE_OVER_MM
-    return cell[2] - cell[0] - margin, cell[3] - cell[1] - title - margin
-
-
-def _common_scale(plans: Sequence[Plan], cells: Sequence[Box]) -> Scale:
-    """The one factor at which every plan fits its cell: the largest of their own."""
-    scales = [plan_scale(p, *_inner(c)) for p, c in zip(plans, cells, strict=True)]
-    return max(scales, key=lambda s: s.k)
-
-
-def _mechanism_extent(s: Solved) -> tuple[float, float, float, float]:
-    """The model box of everything the mechanism view draws: every position's points and link
-    bodies, the crank circle and the traced paths."""
-    lk = s.linkage
-    pts: list[Vec] = []
-    for P in s.positions:
-        pts += list(P.pos.values())
-        for bodies in link_bodies(lk, P).values():
-            for b in bodies:
-                pts += list(b.points)
-    O1 = lk.frame[lk.pivot]
-    pts += [O1 + Vec(lk.length, lk.length), O1 - Vec(lk.length, lk.length)]
-    for path in _paths(lk).values():
-        pts += path
-    xs = [q.x for q in pts]
-    ys = [q.y for q in pts]
-    return min(xs), min(ys), max(xs), max(ys)
-
-
-def _paths(lk: Linkage) -> dict[str, list[Vec]]:
-    """The paths of the named points over a turn (sampled by the sweep)."""
-    phi = np.linspace(0.0, 2.0 * math.pi, DIAGRAM_SAMPLES)
-    st = sweep(lk, phi, order=0)
-    return {p.name: [Vec(float(a), float(b)) for a, b in st.pos[p.name]] for p in lk.points}
-
-
-def layout(s: Solved) -> Layout:
-    """Where every view goes and at what scale (see the module's docstring)."""
-    n = len(s.positions)
-    second = n > PLANS_ON_SHEET
-    cells = _grid(PLANS_ALL if second else VPLANS, n, _content([P.vp for P in s.positions]))
-    k_v = _common_scale([P.vp for P in s.positions], cells)
-    lk = s.linkage
-    accel = tuple(
         next((P for P in s.positions if abs(P.phi - phi) <= tol.ANGLE), None) or construct(lk, phi)
         for phi in s.accel_phis
     )
-    acells = _grid(APLANS, len(accel), _content([P.ap for P in accel]))
-    k_a = _common_scale([P.ap for P in accel], acells)
-    x0, y0, x1, y1 = _mechanism_extent(s)
-    pad = 0.04 * max(x1 - x0, y1 - y0, lk.length)
-    w, h = _inner(MECH, TITLE_ROOM + 4.0)
-    k_l = gost_scale_to_fit(x1 - x0 + 2 * pad, y1 - y0 + 2 * pad, w, h)
-    return Layout(k_l, k_v, k_a, cells, second, accel, acells)
+
+
+def _trees(s: Solved, accel: Sequence[Position]) -> tuple[tuple[Tree, ...], _Mechanism, bool]:
+    """The sheets' view trees (see the module's docstring)."""
+    n = len(s.positions)
+    second = n > PLANS_ON_SHEET
+    mech = _Mechanism(s)
+    vplans = Grid(
+        *[
+            PlanView(P.vp, title=WORDS("position", i=i, phi=_deg(P.phi)), group="v",
+                     show_scale=False)
+            for i, P in enumerate(s.positions)
+        ],
+        title=WORDS("vplans"),
+        group="v",
+    )  # fmt: skip
+    aplans = Grid(
+        *[
+            PlanView(
+                P.ap, title=WORDS("aplan", phi=_deg(P.phi)), group="a", show_scale=False, weight=2.0
+            )
+            for P in accel
+        ],
+        title=WORDS("aplans"),
+        group="a",
+    )
+    diagrams = Column(*_diagrams(s), title=_through(s), title_height=3.5)
+    tables = Column(*_tables(s, accel))
+    if second:
+        return (Column(mech, Row(diagrams, aplans, tables)), vplans), mech, True
+    sheet = Choice(
+        Column(Row(mech, vplans), Row(diagrams, aplans, tables)),
+        Row(Column(mech, diagrams), Column(vplans, Row(aplans, tables))),
+    )
+    return (sheet,), mech, False
+
+
+#: The last arrangements, by solution and language: a build asks for the scales and its draw
+#: for the sheets, and both use one arrangement (the search runs once).
+_ARRANGED: dict[tuple[int, str], tuple[weakref.ref[Solved], Layout, tuple[Arranged, ...]]] = {}
+
+
+def layout(s: Solved) -> Layout:
+    """Every view of the kinematic sheets and its scale (see the module's docstring)."""
+    return _arranged(s)[0]
+
+
+def _arranged(s: Solved) -> tuple[Layout, tuple[Arranged, ...]]:
+    key = (id(s), current())
+    hit = _ARRANGED.get(key)
+    if hit is not None and hit[0]() is s:
+        return hit[1], hit[2]
+    accel = _accel_positions(s)
+    trees, mech, second = _trees(s, accel)
+    field = Field.of_format(FORMAT)
+    lays = tuple(arrange(t, field) for t in trees)
+    k_v = lays[-1].scale("v")
+    out = Layout(lays[0][mech].scale or Scale(1.0), k_v, lays[0].scale("a"), second, accel,
+                 trees, mech)  # fmt: skip
+    _ARRANGED.clear()  # one solution at a time: the cache holds no more than one
+    _ARRANGED[key] = (weakref.ref(s), out, lays)
+    return out, lays
 
 
 def sheet_scales(s: Solved) -> dict[str, float]:
@@ -158,20 +152,17 @@ def sheet_scales(s: Solved) -> dict[str, float]:
 def kinematic_sheets(s: Solved, stem: str = "") -> list[tuple[str, object]]:
     """The kinematic sheet (and, with many positions, a second sheet of velocity plans)."""
     lk = s.linkage
-    lay = layout(s)
-    count = 2 if lay.second else 1
-    designation = f"ТММ.{stem or 'МЕХ'}.01"
-    d = start(FORMAT, _title(lk, "Кинематический анализ", designation, lay.k_l, 1, count))
-    _mechanism(d, s, lay.k_l)
-    if not lay.second:
-        _vplans(d, s, lay)
-    _diagrams(d, s)
-    _aplans(d, lay)
-    _tables(d, s, lay)
+    lay, lays = _arranged(s)
+    count = len(lay.trees)
+    designation = WORDS("designation", stem=stem or WORDS("stem"))
+    d = start(FORMAT, _title(lk, WORDS("kinematics"), designation, None, 1, count))
+    compose(d, lay.trees[0], layout=lays[0])
+    if d.sheet.block is not None:
+        d.sheet.block = replace(d.sheet.block, scale=lay.k_l.ratio_text())
     out: list[tuple[str, object]] = [("", d.finish())]
     if lay.second:
-        d2 = start(FORMAT, _title(lk, "Планы скоростей", designation, None, 2, count))
-        _vplans(d2, s, lay)
+        d2 = start(FORMAT, _title(lk, WORDS("vplans_sheet"), designation, None, 2, count))
+        compose(d2, lay.trees[1], layout=lays[1])
         out.append(("plans", d2.finish()))
     return out
 
@@ -185,7 +176,23 @@ def _title(
         scale=k.ratio_text() if k is not None else "",
         sheet_no=no,
         sheets=count,
+        lang=current(),
     )
+
+
+def _through(s: Solved) -> str:
+    lk = s.linkage
+    n = _divisions(s)
+    through = (
+        WORDS("through_positions", last=n - 1)
+        if lk.phi is None
+        else WORDS("through_divisions", n=n)
+    )
+    return WORDS("diagrams", through=through)
+
+
+def _divisions(s: Solved) -> int:
+    return max(len(s.positions), 12) if s.linkage.phi is not None else len(s.positions)
 
 
 # --- the mechanism ----------------------------------------------------------------------------
@@ -240,64 +247,77 @@ def link_bodies(
     return out
 
 
-def _mechanism(d: Drawing, s: Solved, k: Scale) -> None:
+def _mechanism_extent(s: Solved) -> tuple[float, float, float, float]:
+    """The model box of everything the mechanism view draws: every position's points and link
+    bodies, the crank circle and the traced paths, with a little room round them."""
     lk = s.linkage
-    x0, y0, x1, y1 = _mechanism_extent(s)
-    d.text(
-        "Механизм в положениях 0 … " + str(len(s.positions) - 1),
-        (MECH[0] + 2.0, MECH[1] + 4.0),
-        5.0,
-    )
-    d.text(f"{k.label()}   (M {k.ratio_text()})", (MECH[0] + 2.0, MECH[1] + 10.5), 3.5)
-    at = ((MECH[0] + MECH[2]) / 2.0, (MECH[1] + TITLE_ROOM + 8.0 + MECH[3]) / 2.0)
-    v = d.viewport(k, ((x0 + x1) / 2.0, (y0 + y1) / 2.0), at)
-    # paths: the crank circle, the traced points, the guides
-    v.circle(lk.frame[lk.pivot], lk.length, "centre")
+    pts: list[Vec] = []
+    for P in s.positions:
+        pts += list(P.pos.values())
+        for bodies in link_bodies(lk, P).values():
+            for b in bodies:
+                pts += list(b.points)
+    O1 = lk.frame[lk.pivot]
+    pts += [O1 + Vec(lk.length, lk.length), O1 - Vec(lk.length, lk.length)]
     for path in _paths(lk).values():
-        v.polyline(path, "centre")
-    # every other position in thin lines, numbered at the crank's joint and the output
-    P0 = s.positions[0]
-    for i, P in enumerate(s.positions):
-        if i > 0:
-            for bodies in link_bodies(lk, P).values():
-                for b in bodies:
-                    v.polyline(b.points, "thin", closed=b.closed)
-        for name in dict.fromkeys((lk.joint, lk.output)):
-            v.dot(P.pos[name])
-            v.label(P.pos[name], f"{name}_{{{i}}}", 2.5, clear=1.0)
-    labels = {}
-    for pair in s.scheme.pairs:
-        name = pair.name.split(":")[0]
-        if name in P0.pos and name not in (lk.joint, lk.output):
-            labels[pair.name] = name
-    draw_scheme(v, s.scheme, bodies=link_bodies(lk, P0), pair_labels=labels, label_height=3.5)
-    for p in lk.points:
-        if p.name not in labels.values():
-            v.dot(P0.pos[p.name])
-            v.label(P0.pos[p.name], p.name, 3.5, clear=1.0)
+        pts += path
+    xs = [q.x for q in pts]
+    ys = [q.y for q in pts]
+    x0, y0, x1, y1 = min(xs), min(ys), max(xs), max(ys)
+    pad = 0.04 * max(x1 - x0, y1 - y0, lk.length)
+    return x0 - pad, y0 - pad, x1 + pad, y1 + pad
 
 
-# --- the plans --------------------------------------------------------------------------------
+def _paths(lk: Linkage) -> dict[str, list[Vec]]:
+    """The paths of the named points over a turn (sampled by the sweep)."""
+    phi = np.linspace(0.0, 2.0 * math.pi, DIAGRAM_SAMPLES)
+    st = sweep(lk, phi, order=0)
+    return {p.name: [Vec(float(a), float(b)) for a, b in st.pos[p.name]] for p in lk.points}
 
 
-def _vplans(d: Drawing, s: Solved, lay: Layout) -> None:
-    box = PLANS_ALL if lay.second else VPLANS
-    d.text(f"Планы скоростей, {lay.k_v.label()}", (box[0] + 2.0, box[1] + 4.0), 5.0)
-    for i, (P, cell) in enumerate(zip(s.positions, lay.cells, strict=True)):
-        inner = (cell[0] + 3.0, cell[1] + 8.0, cell[2] - 3.0, cell[3] - 2.0)
-        draw_plan(
-            d,
-            P.vp,
-            lay.k_v,
-            inner,
-            title=f"Положение {i}, φ_1 = {fmt_number(math.degrees(P.phi) % 360, digits=4)}°",
-        )
+class _Mechanism(View):
+    """The mechanism in all its numbered positions: position 0 in main lines with its scheme's
+    symbols, the others in thin lines, the crank circle and the paths of the named points."""
 
+    def __init__(self, s: Solved) -> None:
+        super().__init__(
+            title=WORDS("mech", last=len(s.positions) - 1), title_height=5.0, margin=6.0,
+            weight=2.0,
+        )  # fmt: skip
+        self.s = s
+        self._ext = _mechanism_extent(s)
 
-def _aplans(d: Drawing, lay: Layout) -> None:
-    for P, cell in zip(lay.accel, lay.acells, strict=True):
-        phi = fmt_number(math.degrees(P.phi) % 360, digits=4)
-        draw_plan(d, P.ap, lay.k_a, cell, title=f"План ускорений, φ_1 = {phi}°, {lay.k_a.label()}")
+    def extent(self) -> tuple[float, float, float, float]:
+        return self._ext
+
+    def draw(self, d: Drawing, at: Placed) -> None:
+        v = at.viewport
+        assert v is not None
+        s = self.s
+        lk = s.linkage
+        v.circle(lk.frame[lk.pivot], lk.length, "centre")
+        for path in _paths(lk).values():
+            v.polyline(path, "centre")
+        # every other position in thin lines, numbered at the crank's joint and the output
+        P0 = s.positions[0]
+        for i, P in enumerate(s.positions):
+            if i > 0:
+                for bodies in link_bodies(lk, P).values():
+                    for b in bodies:
+                        v.polyline(b.points, "thin", closed=b.closed)
+            for name in dict.fromkeys((lk.joint, lk.output)):
+                v.dot(P.pos[name])
+                v.label(P.pos[name], f"{name}_{{{i}}}", 2.5, clear=1.0)
+        labels = {}
+        for pair in s.scheme.pairs:
+            name = pair.name.split(":")[0]
+            if name in P0.pos and name not in (lk.joint, lk.output):
+                labels[pair.name] = name
+        draw_scheme(v, s.scheme, bodies=link_bodies(lk, P0), pair_labels=labels, label_height=3.5)
+        for p in lk.points:
+            if p.name not in labels.values():
+                v.dot(P0.pos[p.name])
+                v.label(P0.pos[p.name], p.name, 3.5, clear=1.0)
 
 
 # --- the diagrams -----------------------------------------------------------------------------
@@ -323,27 +343,27 @@ def _output_curves(
         s_m = fwd * (coord - (s.cycle.s_min if fwd > 0 else s.cycle.s_max))
         v_m = fwd * (st.vel[lk.output] * sl).sum(axis=1)
         a_m = fwd * (st.acc[lk.output] * sl).sum(axis=1)
-        names = [("S", "м", "s"), ("v", "м/с", "v"), ("a", "м/с²", "a")]
+        names = [("S", WORDS("m"), "s"), ("v", WORDS("m_s"), "v"), ("a", WORDS("m_s2"), "a")]
         return names, s_m, v_m, a_m
     link = lk.owner[lk.output]
     base = next(p for p in lk.points_on(link) if p != lk.output)
     r = st.pos[lk.output] - st.pos[base]
     ang = np.unwrap(np.arctan2(r[:, 1], r[:, 0]))
     names = [
-        (f"ψ_{{{link}}}", "рад", "ψ"),
-        (f"ω_{{{link}}}", "с^{-1}", "ω"),
-        (f"ε_{{{link}}}", "с^{-2}", "ε"),
+        (f"ψ_{{{link}}}", WORDS("rad"), "ψ"),
+        (f"ω_{{{link}}}", WORDS("per_s"), "ω"),
+        (f"ε_{{{link}}}", WORDS("per_s2"), "ε"),
     ]
     return names, ang - ang[0], st.omega[link], st.eps[link]
 
 
-def _diagrams(d: Drawing, s: Solved) -> None:
+def _diagrams(s: Solved) -> list[Diagram]:
     """The output's diagrams over a turn from position 0: the exact curves of the sweep, and
     the derivatives by chords through the numbered positions (graphical differentiation)."""
     lk = s.linkage
     psi = np.linspace(0.0, 2.0 * math.pi, DIAGRAM_SAMPLES)
     names, s_m, v_m, a_m = _output_curves(s, psi)
-    n = max(len(s.positions), 12) if lk.phi is not None else len(s.positions)
+    n = _divisions(s)
     psi_k = np.array([2.0 * math.pi * k / n for k in range(n + 1)])
     s_k = np.interp(psi_k, psi, s_m)
     dt = (2.0 * math.pi / n) / abs(lk.omega)
@@ -352,77 +372,58 @@ def _diagrams(d: Drawing, s: Solved) -> None:
     a_ch = np.diff(np.concatenate([v_ch, v_ch[:1]])) / dt
     psi_a = (psi_v + math.pi / n) % (2.0 * math.pi)
     rows = [(s_m, psi_k, s_k), (v_m, psi_v, v_ch), (a_m, psi_a, a_ch)]
-    x0, y0, x1, y1 = DIAGRAMS
-    h = (y1 - y0) / 3.0
-    room_x = x1 - x0 - 24.0
-    k_phi = 1.0 if room_x >= 360.0 else nice_step(360.0 / room_x)
-    through = (
-        f"положения 0 … {n - 1}" if lk.phi is None else f"{n} равных делений оборота кривошипа"
-    )
-    d.text(f"Диаграммы выходного звена: точные кривые и хорды через {through}", (x0, y0), 3.5)
-    for i, ((sym, unit, name), (exact, gx, gy)) in enumerate(zip(names, rows, strict=True)):
-        top = y0 + i * h + 12.0
-        bottom = y0 + (i + 1) * h - 9.0
-        lo = float(min(exact.min(), gy.min(), 0.0))
-        hi = float(max(exact.max(), gy.max(), 0.0))
-        ax_y = Axis.fit(sym, unit, lo, hi, bottom - top, name)
-        ax_x = Axis("φ", "град", 0.0, 360.0, k_phi, "φ", tick=30.0)
-        at = (x0 + 4.0, top + ax_y.mm(ax_y.hi - ax_y.zero))
-        gr = Graph(d, ax_x, ax_y, at)
-        gr.axes(tick_labels=True)
-        gr.curve(np.degrees(psi), exact, "result")
+    x = AxisSpec("φ", WORDS("deg"), "φ", 0.0, 360.0, 30.0)
+    out = []
+    for (sym, unit, name), (exact, gx, gy) in zip(names, rows, strict=True):
         order = np.argsort(gx)
-        gxs, gys = np.degrees(gx[order]), gy[order]
-        gr.curve(gxs, gys, "construction")
-        for xx, yy in zip(gxs, gys, strict=True):
-            gr.point(float(xx), float(yy))
-        d.text(
-            f"{ax_y.factor_text()};  {ax_x.factor_text()}",
-            (x1, y0 + i * h + 8.0),
-            2.5,
-            anchor="right",
-        )
+        curves = [
+            Curve(np.degrees(psi), exact, "result"),
+            Curve(np.degrees(gx[order]), gy[order], "construction", points=True),
+        ]
+        out.append(Diagram(x, AxisSpec(sym, unit, name), curves, least=(120.0, 50.0),
+                           prefer=(600.0, 160.0)))  # fmt: skip
+    return out
 
 
 # --- the tables -------------------------------------------------------------------------------
 
 
-def _tables(d: Drawing, s: Solved, lay: Layout) -> None:
+def _tables(s: Solved, accel: Sequence[Position]) -> list[Table]:
+    """The angular velocities of the turning links in every position, and their angular
+    accelerations (with the output's) in the positions of the acceleration plans."""
     lk = s.linkage
     links = [i for i in lk.moving_links if i != 1 and _turns(lk, i)]
-    head = ["№", "φ_1, °", f"V_{{{lk.output}}}, м/с", *[f"ω_{{{i}}}, с^{{-1}}" for i in links]]
+    per_s, per_s2 = WORDS("per_s"), WORDS("per_s2")
+    head = [
+        "№", "φ_1, °", f"V_{{{lk.output}}}, {WORDS('m_s')}",
+        *[f"ω_{{{i}}}, {per_s}" for i in links],
+    ]  # fmt: skip
     rows: list[list[str]] = [head]
     for i, P in enumerate(s.positions):
         rows.append(
             [
                 str(i),
-                fmt_number(math.degrees(P.phi) % 360, digits=4),
+                _deg(P.phi),
                 table_number(P.vel[lk.output].norm, abs(lk.omega) * lk.length),
                 *[table_number(P.omega[j], abs(lk.omega)) for j in links],
             ]
         )
-    x0, y0, x1, y1 = TABLES
-    width = x1 - x0
-    first = [8.0, 16.0, 20.0]
-    rest = (width - sum(first)) / max(len(links), 1)
-    widths = [*first, *[rest] * len(links)]
-    row_h = min(7.0, (y1 - y0 - 60.0) / (len(rows) + 1))
-    d.text("Угловые скорости звеньев", (x0, y0 + 4.0), 3.5)
-    _, th = d.table(x0, y0 + 7.0, widths, rows, 2.5, row_h)
-    head2 = ["φ_1, °", f"a_{{{lk.output}}}, м/с²", *[f"ε_{{{i}}}, с^{{-2}}" for i in links]]
+    head2 = [
+        "φ_1, °", f"a_{{{lk.output}}}, {WORDS('m_s2')}", *[f"ε_{{{i}}}, {per_s2}" for i in links]
+    ]  # fmt: skip
     rows2: list[list[str]] = [head2]
-    for P in lay.accel:
+    for P in accel:
         rows2.append(
             [
-                fmt_number(math.degrees(P.phi) % 360, digits=4),
+                _deg(P.phi),
                 table_number(P.acc[lk.output].norm, lk.omega**2 * lk.length),
                 *[table_number(P.eps[j], lk.omega**2) for j in links],
             ]
         )
-    w2 = [16.0, 22.0, *[(width - 38.0) / max(len(links), 1)] * len(links)]
-    yy = y0 + 7.0 + th + 8.0
-    d.text("Угловые ускорения звеньев", (x0, yy), 3.5)
-    d.table(x0, yy + 3.0, w2, rows2, 2.5, 7.0)
+    return [
+        Table(rows, title=WORDS("omega_table"), row_h=6.0),
+        Table(rows2, title=WORDS("eps_table"), row_h=6.0),
+    ]
 
 
 def _turns(lk: Linkage, link: int) -> bool:
@@ -442,7 +443,7 @@ ZERO = tol.DERIVED
 def table_number(x: float, scale: float = 0.0, digits: int = 3) -> str:
     """A table value to ``digits`` significant figures; round-off of a zero (at most
     :data:`ZERO` of ``scale``, the size of its quantity) as 0."""
-    return "0" if abs(x) <= ZERO * scale else fmt_number(x, digits=digits)
+    return "0" if abs(x) <= ZERO * scale else fmt_number(x, current(), digits=digits)
 
 
 # --- the moving mechanism ---------------------------------------------------------------------
@@ -481,7 +482,7 @@ def motion(s: Solved, frames: int) -> Frames:
                 guides.append(((float(a[0]), float(a[1])), (float(b[0]), float(b[1]))))
     traced = tuple(dict.fromkeys((lk.joint, *(p.name for p in lk.points), lk.output)))
     return Frames(
-        title=f"{lk.title}: один оборот кривошипа",
+        title=WORDS("motion", title=lk.title),
         phi=phi,
         points=points,
         links=tuple(links),

@@ -278,7 +278,8 @@ class AxisSpec:
 class Diagram(View):
     """A diagram y(x) filling its box: each axis takes the smallest factor 1, 2, 2.5, 4,
     5 × 10^n that puts its range into the room, and the factors are written at the box's top
-    right. ``extra(graph)`` draws more on the graph (spans, hatching, labelled points)."""
+    right. ``extra(graph)`` draws more on the graph (spans, hatching, labelled points).
+    ``zero``: the y range always takes in 0 (else only the curves' range or the spec's)."""
 
     #: Room (mm) left of the y axis for its tick values, and under the x axis for its values
     #: and symbol, and above the y axis's arrow for its symbol.
@@ -295,10 +296,12 @@ class Diagram(View):
         extra: Callable[[Graph], None] | None = None,
         least: tuple[float, float] = (80.0, 45.0),
         prefer: tuple[float, float] = (240.0, 110.0),
+        zero: bool = True,
         **kw: Any,
     ) -> None:
         kw.setdefault("margin", 2.0)
         super().__init__(**kw)
+        self.zero = zero
         self.x, self.y = x, y
         self.curves = list(curves)
         self.extra = extra
@@ -308,16 +311,27 @@ class Diagram(View):
     def stretch(self) -> tuple[tuple[float, float], tuple[float, float]]:
         return self.least, self.prefer
 
+    def title_room(self) -> float:
+        """The title's line, and one more for the factors under a long title."""
+        base = super().title_room()
+        return base + 4.0 if self.title else base
+
     def _range(self, spec: AxisSpec, which: int) -> tuple[float, float]:
+        key = f"range{which}"
+        if key not in self._memo:
+            self._memo[key] = self._range_of(spec, which)
+        return self._memo[key]  # type: ignore[no-any-return]
+
+    def _range_of(self, spec: AxisSpec, which: int) -> tuple[float, float]:
         vals = [np.asarray(c.xs if which == 0 else c.ys, dtype=np.float64) for c in self.curves]
         lo = spec.lo if spec.lo is not None else min(float(a.min()) for a in vals)
         hi = spec.hi if spec.hi is not None else max(float(a.max()) for a in vals)
-        return min(lo, 0.0), max(hi, 0.0)
+        return (min(lo, 0.0), max(hi, 0.0)) if self.zero or which == 0 else (lo, hi)
 
-    def draw(self, d: Drawing, at: Placed) -> None:
-        x0, y0, x1, y1 = at.inner
-        room_x = x1 - x0 - self.LEFT - self.RIGHT
-        room_y = y1 - y0 - self.BELOW - self.ABOVE
+    def axes(self, w: float, h: float) -> tuple[Axis, Axis]:
+        """The two axes fitted to a room of w × h mm."""
+        room_x = max(w - self.LEFT - self.RIGHT, 1.0)
+        room_y = max(h - self.BELOW - self.ABOVE, 1.0)
         xlo, xhi = self._range(self.x, 0)
         ylo, yhi = self._range(self.y, 1)
         ax = Axis(
@@ -327,6 +341,20 @@ class Diagram(View):
         ay = Axis.fit(self.y.symbol, self.y.unit, ylo, yhi, room_y, self.y.name)
         if self.y.tick:
             ay = ay.with_tick(self.y.tick)
+        return ax, ay
+
+    def used(self, w: float, h: float) -> tuple[float, float]:
+        if w <= self.LEFT + self.RIGHT or h <= self.BELOW + self.ABOVE:
+            return 0.0, 0.0
+        ax, ay = self.axes(w, h)
+        return (
+            ax.mm(ax.hi - ax.lo) + self.LEFT + self.RIGHT,
+            ay.mm(ay.hi - ay.lo) + self.BELOW + self.ABOVE,
+        )
+
+    def draw(self, d: Drawing, at: Placed) -> None:
+        x0, y0, x1, y1 = at.inner
+        ax, ay = self.axes(x1 - x0, y1 - y0)
         origin = (x0 + self.LEFT, y0 + self.ABOVE + ay.mm(ay.hi - ay.zero))
         gr = Graph(d, ax, ay, origin)
         gr.axes(current(), tick_labels=True)
@@ -335,12 +363,17 @@ class Diagram(View):
             if c.points:
                 for xx, yy in zip(np.asarray(c.xs), np.asarray(c.ys), strict=True):
                     gr.point(float(xx), float(yy))
-        d.text(
-            f"{ay.factor_text(current())};  {ax.factor_text(current())}",
-            (at.box[2], at.box[1] + self.title_height),
-            2.5,
-            anchor="right",
-        )
+        # the factors: right of the title, or on a line of their own under a long title
+        factors = f"{ay.factor_text(current())};  {ax.factor_text(current())}"
+        right = min(at.box[2], x0 + self.used(x1 - x0, y1 - y0)[0])
+        base = at.box[1] + self.title_height
+        if (
+            self.title
+            and text_width(self.title, self.title_height) + text_width(factors, 2.5) + 5.0
+            > right - at.box[0]
+        ):
+            base = at.box[1] + super().title_room() + 2.5
+        d.text(factors, (right, base), 2.5, anchor="right")
         if self.extra is not None:
             self.extra(gr)
         self.graph = gr
@@ -413,17 +446,14 @@ class Table(View):
         ``name`` and a ``unit``) found in ``values``; ``labels`` maps a name to label markup
         (default: the name as markup, ``l_AB`` → ``l_{AB}``). A unit ``deg`` is written °, and
         values in SI are printed as they are."""
-        entries = []
+        entries: list[tuple[str, float | str, str]] = []
         for s in specs:
             if s.name not in values:
                 continue
             x = values[s.name]
-            label = (labels or {}).get(s.name, name_markup(s.name))
-            entries.append((label, x if isinstance(x, str | int | float) else str(x), s.unit))
-        return Table.of_values(
-            [(lab, float(x) if isinstance(x, int) else x, u) for lab, x, u in entries], digits,
-            **kw,
-        )  # fmt: skip
+            value: float | str = float(x) if isinstance(x, int | float) else str(x)
+            entries.append(((labels or {}).get(s.name, name_markup(s.name)), value, s.unit))
+        return Table.of_values(entries, digits, **kw)
 
 
 class Spec(Protocol):
@@ -444,7 +474,11 @@ def unit_text(unit: str) -> str:
 
 def name_markup(name: str) -> str:
     """A parameter's or a step's name as label markup: ``l_AB`` → ``l_{AB}``, ``O1`` →
-    ``O_1``, ``theta_deg`` → ``θ``."""
+    ``O_1``, ``theta_deg`` → ``θ``, ``omega1`` → ``ω_1``.
+
+    >>> name_markup("l_AB"), name_markup("O1"), name_markup("omega1"), name_markup("AB")
+    ('l_{AB}', 'O_1', 'ω_1', 'AB')
+    """
     base = name.removesuffix("_deg")
     greek = WORDS.table().get(f"greek.{base}")
     if greek:
@@ -452,6 +486,7 @@ def name_markup(name: str) -> str:
     m = re.fullmatch(r"([A-Za-z]+)_?([A-Za-z0-9]*)", base)
     if m and m.group(2) and (not m.group(1).isupper() or m.group(2).isdigit() or "_" in base):
         head, sub = m.groups()
+        head = WORDS.table().get(f"greek.{head}", head)
         return f"{head}_{{{sub}}}" if len(sub) > 1 else f"{head}_{sub}"
     return markup_of(base)
 
@@ -548,7 +583,10 @@ def _printable(text: str) -> str:
 
 
 def _names(s: str) -> str:
-    """Point names in an operation's words as markup: ``B0B1`` → ``B_0B_1``."""
+    """Point names in an operation's words as markup: ``B0B1`` → ``B_0B_1``; a number in the
+    language being drawn (4 significant figures)."""
+    if re.fullmatch(r"-?\d+(\.\d*)?(e-?\d+)?", s):
+        return num(float(s))
     return re.sub(r"([A-Z])(\d+)", lambda m: f"{m.group(1)}_{m.group(2)}", s)
 
 

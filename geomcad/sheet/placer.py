@@ -1,0 +1,479 @@
+"""The one label placer of every sheet: candidate positions scored against an index of the ink.
+
+When a sheet is finished (:meth:`geomcad.sheet.drawing.Drawing.finish`) the centre line of every
+drawn item — polylines, circles, arcs; filled shapes as areas — goes into one shapely ``STRtree``
+(:class:`Index`), and every text already on the sheet into another. A label then tries positions
+around its anchor: the eight compass directions, the middles of the free sectors between the
+lines that leave the anchor (the normals of a line for a label on a line), and the caller's
+preferred direction, each at several gaps. Each position is scored by
+
+- the lines that cross its box (grown by half a line's width), those through its middle, and
+  those within :data:`PAD` of it; the cheapest few positions also by the area of ink (each line
+  buffered by half its own width) inside the box, the measure the layout checker uses;
+- the texts it overlaps (all but forbidden);
+- its distance to the anchor, and whether another label's point lies nearer to it than its own;
+
+and the cheapest position inside the field (the frame less the title block and графа 26) wins.
+The labels with the fewest free positions are placed first, then each is placed again once with
+all the others in place. A dimension's text tries its own candidates (along its dimension line)
+against the same index, and so do optional texts (a diagram's tick values), left out where a
+line crosses them.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+import numpy as np
+import numpy.typing as npt
+import shapely
+from shapely import affinity
+from shapely.geometry import LineString, Point, Polygon
+from shapely.geometry import box as sbox
+from shapely.strtree import STRtree
+
+from geomcad.sheet.frame import Frame, reserved
+from geomcad.sheet.model import XY, ArcItem, CircleItem, Item, Polyline, Sheet, TextItem
+from geomcad.sheet.style import MAIN_LINE, style
+from geomcad.sheet.text import box, metrics, parse
+
+#: The clearance a label keeps from lines and other texts (mm).
+PAD = 0.4
+#: Gaps (mm) between a label's box and its anchor (beyond the anchor's own ``clear`` radius).
+GAPS = (0.5, 1.0, 1.7, 2.5, 3.4, 4.5, 6.0, 8.0, 10.5)
+#: The eight compass directions on the paper (y down), the customary ones first.
+DIRECTIONS: tuple[tuple[float, float], ...] = (
+    (1, -1), (-1, -1), (1, 1), (-1, 1), (1, 0), (-1, 0), (0, -1), (0, 1),
+)  # fmt: skip
+#: A direction within 22.5° of an axis centres the box across it.
+ALIGN = math.sin(math.radians(22.5))
+#: A box grown by this much (about half a main line's width) meets the centre lines that cross it.
+HALF = 0.3
+#: Costs: a line crossed, a line through the middle of the box, a line within PAD, a text
+#: overlapped.
+W_LINE = 15.0
+W_MIDDLE = 10.0
+W_NEAR = 2.0
+W_TEXT = 200.0
+#: The cheapest REFINE positions of a label also pay W_INK for each mm² of ink inside its box
+#: (less 0.25 mm all round); the others pay W_LINE more.
+REFINE = 24
+W_INK = 10.0
+#: A mm of distance to the anchor, and each mm beyond FAR_MM (or 3 mm beyond a label's clear
+#: radius, if that is more).
+W_DIST = 0.6
+W_FAR = 2.5
+FAR_MM = 5.0
+#: A label nearer another label's point than its own, per mm (up to 2 mm).
+W_AMBIGUOUS = 3.0
+#: Each further anchor (``others``) tried costs this much more.
+W_OTHER = 0.5
+#: Ink inside a box below this area (mm²) is touching, not crossing.
+AREA_EPS = 0.02
+#: A position this cheap is free (no line, no text); the labels with fewest such go first.
+FREE = 8.0
+
+
+@dataclass
+class LabelRequest:
+    """A label waiting to be placed next to ``anchor`` (sheet mm)."""
+
+    anchor: XY
+    markup: str
+    height: float
+    role: str
+    prefer: tuple[float, float] | None
+    clear: float  # the radius around the anchor the label keeps clear of (a joint's circle)
+    id: str
+    others: tuple[XY, ...] = ()  # further anchors to try, each at a small extra cost
+
+
+@dataclass
+class DimText:
+    """A dimension's text waiting for its place: turned by ``angle`` (degrees, counter-clockwise
+    on the paper) along the unit direction ``t``; ``candidates`` are the baseline starts to try,
+    the preferred first; ``box`` its (width, rise, descent) in mm."""
+
+    markup: str
+    height: float
+    angle: float
+    t: tuple[float, float]
+    candidates: tuple[XY, ...]
+    box: tuple[float, float, float]
+
+
+# -- geometry --------------------------------------------------------------------------------------
+
+
+def text_outline(t: TextItem, pad: float = 0.0) -> Polygon:
+    """The text's box on the paper (grown by ``pad``), turned by its angle about its baseline's
+    start."""
+    _, up, down = box(t.runs, t.height)
+    return _turned_box(t.at, t.width, up, down, t.angle, pad)
+
+
+def _turned_box(at: XY, w: float, up: float, down: float, angle: float, pad: float) -> Polygon:
+    p = sbox(at[0] - pad, at[1] - up - pad, at[0] + w + pad, at[1] + down + pad)
+    if angle:
+        # counter-clockwise on the paper is clockwise in these y-down coordinates
+        p = affinity.rotate(p, -angle, origin=at)
+    return p
+
+
+def _arc_points(it: ArcItem) -> list[XY]:
+    # y is down on paper: a clockwise sweep (> 0) is an increasing atan2 angle
+    a0 = math.atan2(it.start[1] - it.c[1], it.start[0] - it.c[0])
+    n = max(8, int(abs(it.sweep) * it.r / 1.0) + 1)
+    return [
+        (
+            it.c[0] + it.r * math.cos(a0 + it.sweep * i / n),
+            it.c[1] + it.r * math.sin(a0 + it.sweep * i / n),
+        )
+        for i in range(n + 1)
+    ]
+
+
+def centre_line(it: Item) -> shapely.Geometry:
+    """A drawn item's centre line (a filled shape: its area; a text: its box)."""
+    if isinstance(it, TextItem):
+        return text_outline(it)
+    if isinstance(it, Polyline):
+        pts = list(it.points)
+        if it.fill and it.closed and len(pts) >= 3:
+            return Polygon(pts)
+        if it.closed:
+            pts.append(pts[0])
+        return LineString(pts) if len(pts) >= 2 else Point(pts[0])
+    if isinstance(it, CircleItem):
+        c = Point(it.c)
+        return c.buffer(it.r) if it.fill else c.buffer(it.r).exterior
+    return LineString(_arc_points(it))
+
+
+def ink(it: Item, fmt: str) -> shapely.Geometry:
+    """The ink of a drawn line: its centre line buffered by half its width (a filled shape as it
+    is)."""
+    g = centre_line(it)
+    if isinstance(g, Polygon):
+        return g
+    half = style(it.role).weight * MAIN_LINE.get(fmt, 0.7) / 2.0
+    return g.buffer(max(half, 0.05), quad_segs=2)
+
+
+# -- the index -------------------------------------------------------------------------------------
+
+
+@dataclass
+class _Boxes:
+    """Candidate boxes of a text: each ``core`` box, ``grown`` by :data:`HALF`, ``padded`` by
+    :data:`PAD`, and its ``middle`` (less a quarter of its height all round)."""
+
+    core: npt.NDArray[np.object_]
+    grown: npt.NDArray[np.object_]
+    padded: npt.NDArray[np.object_]
+    middle: npt.NDArray[np.object_]
+
+    @classmethod
+    def turned(cls, ats: Sequence[XY], w: float, up: float, down: float, angle: float) -> _Boxes:
+        """The boxes of a text turned by ``angle`` with its baseline starting at each of
+        ``ats``."""
+        q = min(w, up + down) / 4.0
+        return cls(
+            *(
+                np.array([_turned_box(a, w, up, down, angle, g) for a in ats], dtype=object)
+                for g in (0.0, HALF, PAD, -q)
+            )
+        )
+
+    @classmethod
+    def upright(cls, at: npt.NDArray[np.float64], w: float, up: float, down: float) -> _Boxes:
+        """The boxes of an upright text with its baseline starting at each row of ``at``."""
+        x, y = at[:, 0], at[:, 1]
+        q = min(w, up + down) / 4.0
+        return cls(
+            *(shapely.box(x - g, y - up - g, x + w + g, y + down + g) for g in (0.0, HALF, PAD, -q))
+        )
+
+
+class Index:
+    """The sheet's ink and texts for overlap queries, and its free field."""
+
+    def __init__(self, sheet: Sheet, frame: Frame) -> None:
+        lines = [it for it in sheet.items if not isinstance(it, TextItem)]
+        #: centre lines (filled shapes as areas)
+        self.lines = np.array([centre_line(it) for it in lines], dtype=object)
+        self._items = lines
+        self._fmt = sheet.format
+        self._ink: dict[int, shapely.Geometry] = {}
+        self.filled = shapely.get_type_id(self.lines) == shapely.GeometryType.POLYGON
+        self.tree = STRtree(self.lines)
+        self.texts: list[Polygon] = [text_outline(t) for t in sheet.texts()]
+        self._text_tree: STRtree | None = None
+        self._text_arr = np.array([], dtype=object)
+        self.frame = frame
+        self.forms = reserved(sheet.width, sheet.height)
+
+    def ink_inside(self, boxes: npt.NDArray[np.object_]) -> npt.NDArray[np.float64]:
+        """The area (mm²) of ink inside each box: the exact measure, for a few boxes."""
+        out = np.zeros(len(boxes))
+        i, j = self.tree.query(boxes, predicate="intersects")
+        for a, b in zip(i.tolist(), j.tolist(), strict=True):
+            g = self._ink.get(b)
+            if g is None:
+                g = self._ink[b] = ink(self._items[b], self._fmt)
+            out[a] += g.intersection(boxes[a]).area
+        return out
+
+    def add_text(self, p: Polygon) -> None:
+        self.texts.append(p)
+        self._text_tree = None
+
+    def remove_text(self, p: Polygon) -> None:
+        self.texts = [q for q in self.texts if q is not p]
+        self._text_tree = None
+
+    def _tt(self) -> STRtree:
+        if self._text_tree is None:
+            self._text_arr = np.array(self.texts, dtype=object)
+            self._text_tree = STRtree(self._text_arr)
+        return self._text_tree
+
+    def text_cost(self, padded: npt.NDArray[np.object_]) -> npt.NDArray[np.float64]:
+        """W_TEXT for each box that overlaps a text."""
+        n = len(padded)
+        if not self.texts:
+            return np.zeros(n)
+        tt = self._tt().query(padded, predicate="intersects")
+        if not tt.shape[1]:
+            return np.zeros(n)
+        area = shapely.area(shapely.intersection(padded[tt[0]], self._text_arr[tt[1]]))
+        return W_TEXT * np.bincount(tt[0][area > AREA_EPS], minlength=n).astype(np.float64)
+
+    def outside(self, cands: npt.NDArray[np.object_]) -> npt.NDArray[np.bool_]:
+        """Which boxes leave the field: the frame (less 0.5 mm) or onto a box of the form."""
+        x0, y0, x1, y1 = shapely.bounds(cands).T
+        f, m = self.frame, 0.5
+        out: npt.NDArray[np.bool_] = (
+            (x0 < f.left + m) | (y0 < f.top + m) | (x1 > f.right - m) | (y1 > f.bottom - m)
+        )
+        for a0, b0, a1, b1 in self.forms:
+            out |= (x0 < a1 + m) & (a0 - m < x1) & (y0 < b1 + m) & (b0 - m < y1)
+        return out
+
+    def cost(self, boxes: _Boxes, texts: bool = True) -> npt.NDArray[np.float64]:
+        """The overlap cost of each box: lines crossed, lines through its middle, lines near,
+        texts overlapped (unless not ``texts``), and leaving the field."""
+        core, grown, padded, middle = boxes.core, boxes.grown, boxes.padded, boxes.middle
+        n = len(core)
+        out = np.zeros(n)
+        # a line crosses a box whose outline grown by a line's half width its centre line meets;
+        # one through the box's middle (its core less a quarter of its height all round) is worse
+        # than one that cuts a corner
+        crossed = np.bincount(self.tree.query(grown, predicate="intersects")[0], minlength=n)
+        near = np.bincount(self.tree.query(padded, predicate="intersects")[0], minlength=n)
+        out += W_LINE * crossed + W_NEAR * np.maximum(near - crossed, 0)
+        out += W_MIDDLE * np.bincount(self.tree.query(middle, predicate="intersects")[0],
+                                      minlength=n)  # fmt: skip
+        if texts:
+            out += self.text_cost(padded)
+        out[self.outside(core)] += 1e6
+        return out
+
+
+# -- labels ----------------------------------------------------------------------------------------
+
+
+@dataclass
+class _Candidates:
+    at: npt.NDArray[np.float64]  # (n, 2) baseline starts
+    core: npt.NDArray[np.object_]
+    padded: npt.NDArray[np.object_]
+    base: npt.NDArray[np.float64]  # the cost that does not depend on other labels' texts
+    anchor: npt.NDArray[np.int64]  # which anchor (0: the request's own, i: others[i − 1])
+
+
+def _free_directions(index: Index, anchor: XY, r: float) -> list[tuple[float, float]]:
+    """The middles of the free sectors around ``anchor``: where the ink crosses a circle of
+    radius ``r`` about it, the widest gaps between the crossings first (a line through the
+    anchor gives its two normals)."""
+    ring = Point(anchor).buffer(r, quad_segs=16).exterior
+    hits = index.tree.query(ring, predicate="intersects")
+    if not len(hits):
+        return []
+    g = index.lines[hits]
+    edges = np.where(index.filled[hits], shapely.boundary(g), g)
+    parts = shapely.get_parts(shapely.intersection(ring, edges))
+    pts = [(c.x, c.y) for c in shapely.centroid(parts[~shapely.is_empty(parts)])]
+    if not pts:
+        return []
+    angles = sorted(math.atan2(y - anchor[1], x - anchor[0]) for x, y in pts)
+    gaps = []
+    for i, a in enumerate(angles):
+        b = angles[(i + 1) % len(angles)] + (2.0 * math.pi if i + 1 == len(angles) else 0.0)
+        gaps.append((b - a, (a + b) / 2.0))
+    gaps.sort(key=lambda g: -g[0])
+    return [(math.cos(m), math.sin(m)) for width, m in gaps[:3] if width > math.radians(40.0)]
+
+
+def _boxes_around(
+    anchor: XY, w: float, up: float, down: float, dirs: Sequence[tuple[float, float]], gap0: float
+) -> tuple[list[XY], list[int]]:
+    """Baseline starts of a ``w`` × (up + down) box ``gap`` from the anchor along each direction:
+    the box's nearest corner (or the middle of its nearest edge, for a direction within 22.5° of
+    an axis) on the ray, the box beyond it; with each one's direction index."""
+    h = up + down
+    ats: list[XY] = []
+    dis: list[int] = []
+    for gap in GAPS:
+        g = gap + gap0
+        for di, (dx, dy) in enumerate(dirs):
+            n = math.hypot(dx, dy)
+            ux, uy = dx / n, dy / n
+            sx = 1.0 if ux > ALIGN else -1.0 if ux < -ALIGN else 0.0
+            sy = 1.0 if uy > ALIGN else -1.0 if uy < -ALIGN else 0.0
+            cx = anchor[0] + ux * g + sx * w / 2.0
+            cy = anchor[1] + uy * g + sy * h / 2.0
+            ats.append((cx - w / 2.0, cy - h / 2.0 + up))
+            dis.append(di)
+    return ats, dis
+
+
+def _candidates(req: LabelRequest, index: Index, points: npt.NDArray[np.float64]) -> _Candidates:
+    runs = parse(req.markup)
+    w, up, down = box(runs, req.height)
+    all_at: list[XY] = []
+    anchor_of: list[int] = []
+    order: list[float] = []
+    for ai, a in enumerate((req.anchor, *req.others)):
+        dirs: list[tuple[float, float]] = []
+        if req.prefer is not None:
+            dirs.append(req.prefer)
+        dirs += _free_directions(index, a, req.clear + 1.5)
+        first = len(dirs)
+        dirs += DIRECTIONS
+        ats, dis = _boxes_around(a, w, up, down, dirs, req.clear)
+        all_at += ats
+        anchor_of += [ai] * len(ats)
+        order += [0.05 * d if d < first else 0.3 + 0.1 * (d - first) for d in dis]
+    at = np.array(all_at, dtype=np.float64)
+    boxes = _Boxes.upright(at, w, up, down)
+    core = boxes.core
+    which = np.array(anchor_of, dtype=np.int64)
+    anchors = np.array([req.anchor, *req.others], dtype=np.float64)
+    own = shapely.points(anchors[which])
+    d = shapely.distance(core, own) - req.clear
+    base = W_DIST * d + W_FAR * np.maximum(d + req.clear - max(FAR_MM, req.clear + 3.0), 0.0)
+    base += np.array(order) + W_OTHER * which
+    # nearer another label's point than its own: the label would name the wrong point
+    if len(points):
+        near = points[np.hypot(points[:, 0] - req.anchor[0], points[:, 1] - req.anchor[1]) < 25.0]
+        mine = np.hypot(near[:, 0] - req.anchor[0], near[:, 1] - req.anchor[1]) < 1.0
+        near = near[~mine]
+        if len(near):
+            dq = shapely.distance(core[:, None], shapely.points(near)[None, :]).min(axis=1)
+            base += W_AMBIGUOUS * np.clip(d + req.clear - dq, 0.0, 2.0)
+    base += index.cost(boxes, texts=False)
+    # the cheapest few measured exactly: the ink inside each (a line through the letters
+    # against one that grazes an edge); the others wait behind them
+    best = np.argsort(base, kind="stable")[:REFINE]
+    inner = shapely.box(*(shapely.bounds(core[best]) + np.array([0.25, 0.25, -0.25, -0.25])).T)
+    extra = np.full(len(base), W_LINE)
+    extra[best] = W_INK * index.ink_inside(inner)
+    base += extra
+    return _Candidates(at, core, boxes.padded, base, which)
+
+
+def place_labels(sheet: Sheet, index: Index, requests: Sequence[LabelRequest]) -> None:
+    """Place every request on the sheet: the most constrained first, then each once more with
+    all the others in place; records each label with the point it names in ``sheet.anchors``."""
+    if not requests:
+        return
+    points = np.array([r.anchor for r in requests], dtype=np.float64).reshape(-1, 2)
+    cands = [_candidates(r, index, points) for r in requests]
+    # the fewest free positions first (a label in a crowd before one in the open)
+    free = [int(np.sum(c.base + index.text_cost(c.padded) < FREE)) for c in cands]
+    order = sorted(range(len(requests)), key=lambda i: free[i])
+    chosen: dict[int, int] = {}
+    polys: dict[int, Polygon] = {}
+    for rnd in range(2):
+        for i in order:
+            c = cands[i]
+            if rnd:
+                index.remove_text(polys[i])
+            total = c.base + index.text_cost(c.padded)
+            k = int(np.argmin(total))
+            if rnd and total[chosen[i]] <= total[k] + 1e-9:
+                k = chosen[i]
+            chosen[i] = k
+            polys[i] = c.core[k]
+            index.add_text(polys[i])
+    fs_cache: dict[float, float] = {}
+    for i, req in enumerate(requests):
+        c = cands[i]
+        k = chosen[i]
+        runs = parse(req.markup)
+        w, _, _ = box(runs, req.height)
+        fs = fs_cache.setdefault(req.height, metrics().font_size(req.height))
+        item = TextItem((float(c.at[k, 0]), float(c.at[k, 1])), runs, req.height, fs, w,
+                        req.role, req.id)  # fmt: skip
+        sheet.add(item)
+        used = req.anchor if c.anchor[k] == 0 else req.others[c.anchor[k] - 1]
+        sheet.anchors.append((item, used))
+
+
+# -- dimension texts -------------------------------------------------------------------------------
+
+
+def place_dims(sheet: Sheet, index: Index, dims: Sequence[DimText]) -> None:
+    """Put each dimension's text at its first candidate clear of lines and texts (else the
+    cheapest), through the same index."""
+    if not dims:
+        return
+    for dim in dims:
+        w, rise, down = dim.box
+        boxes = _Boxes.turned(dim.candidates, w, rise, down, dim.angle)
+        total = index.cost(boxes) + 0.01 * np.arange(len(dim.candidates))
+        k = int(np.argmin(total))
+        runs = parse(dim.markup)
+        item = TextItem(dim.candidates[k], runs, dim.height, metrics().font_size(dim.height),
+                        w, "label", angle=dim.angle)  # fmt: skip
+        sheet.add(item)
+        index.add_text(boxes.core[k])
+
+
+def shrink_moved(sheet: Sheet, moved: Sequence[TextItem]) -> None:
+    """Each text moved off графа 26 that now runs into another text is set at the next smaller
+    GOST height (down to 2.5 mm) until it runs into none."""
+    items = sheet.items
+    for t in moved:
+        i = next(k for k, it in enumerate(items) if it is t)
+        others = [text_outline(o) for o in sheet.texts() if o is not t]
+        tree = STRtree(np.array(others, dtype=object)) if others else None
+        cur = t
+        for h in (3.5, 2.5):
+            p = text_outline(cur)
+            clash = tree is not None and any(
+                others[j].intersection(p).area > 0.0 for j in tree.query(p, predicate="intersects")
+            )
+            if not clash or h >= cur.height:
+                break
+            w, _, _ = box(cur.runs, h)
+            cur = dataclasses.replace(cur, height=h, font_size=metrics().font_size(h), width=w)
+        items[i] = cur
+
+
+def drop_crossed(sheet: Sheet, index: Index, texts: Sequence[TextItem]) -> None:
+    """Take off the sheet (and the index) each of ``texts`` that a drawn line crosses: a centre
+    line meets its box less 0.25 mm all round, grown by :data:`HALF`."""
+    if not texts:
+        return
+    inner = np.array([text_outline(t, HALF - 0.25) for t in texts], dtype=object)
+    hit = index.tree.query(inner, predicate="intersects")[0]
+    crossed = {id(texts[i]) for i in hit}
+    if crossed:
+        sheet.items[:] = [it for it in sheet.items if id(it) not in crossed]
+        index.texts = [text_outline(t) for t in sheet.texts()]
+        index._text_tree = None

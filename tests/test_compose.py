@@ -1,0 +1,189 @@
+"""The composition layer (issue 14): views packed into the field at their series' largest scale,
+the views that draw themselves, and the kinematic symbols in their local frame."""
+
+from __future__ import annotations
+
+import itertools
+
+import numpy as np
+import pytest
+from layout import layout_problems
+
+from geomcad.construction import Construction
+from geomcad.errors import ParameterError
+from geomcad.forces.polygon import ForcePolygon, PlanVector
+from geomcad.geom import Vec
+from geomcad.problem import Param
+from geomcad.sheet import TitleBlock, start
+from geomcad.sheet.compose import (
+    Choice,
+    Column,
+    Field,
+    Figure,
+    Grid,
+    Row,
+    arrange,
+    compose,
+    round_scale,
+)
+from geomcad.sheet.frame import reserved
+from geomcad.sheet.lang import language
+from geomcad.sheet.model import CircleItem, Polyline
+from geomcad.sheet.scale import Scale
+from geomcad.sheet.symbols import Local, block
+from geomcad.sheet.views import AxisSpec, Curve, Diagram, Polygon, Steps, Table, step_text
+
+
+def _fig(w: float, h: float, **kw: object) -> Figure:
+    return Figure((0.0, 0.0, w, h), lambda v: None, **kw)  # type: ignore[arg-type]
+
+
+def _overlap(a: tuple[float, ...], b: tuple[float, ...]) -> bool:
+    return a[0] < b[2] - 1e-9 and b[0] < a[2] - 1e-9 and a[1] < b[3] - 1e-9 and b[1] < a[3] - 1e-9
+
+
+@pytest.mark.parametrize(
+    ("raw", "series", "k"),
+    [(0.0023, "gost", 0.0025), (0.0026, "gost", 0.004), (0.03, "nice", 0.04),
+     (0.03, "plan", 0.05), (0.04, "nice", 0.04)],
+)  # fmt: skip
+def test_round_scale_takes_the_largest_drawing_of_the_series(
+    raw: float, series: str, k: float
+) -> None:
+    assert round_scale(raw, "l", series).k == pytest.approx(k)  # type: ignore[arg-type]
+
+
+def test_round_scale_refuses_no_room() -> None:
+    with pytest.raises(ParameterError):
+        round_scale(float("inf"), "l", "gost")
+
+
+def test_views_fill_the_field_without_overlap() -> None:
+    """Boxes stay in the field, clear of each other, of the title block and of графа 26; the
+    drawings fit their boxes at the chosen scales; a scale group shares one scale."""
+    views = [_fig(0.5, 0.3, title="A", weight=2.0)]
+    plans = [_fig(1.0 + i, 0.5, quantity="v", series="nice", group="v") for i in range(5)]
+    table = Table([["a", "b"], ["1", "2"]], title="T")
+    tree = Column(Row(views[0], Grid(*plans, title="plans")), Row(_fig(0.2, 0.2), table))
+    field = Field.of_format("A1")
+    lay = arrange(tree, field)
+    boxes = [pl.box for pl in lay]
+    for a, b in itertools.combinations(boxes, 2):
+        assert not _overlap(a, b)
+    for bx in boxes:
+        assert field.box[0] <= bx[0] and bx[2] <= field.box[2] + 1e-9
+        assert all(not _overlap(bx, r) for r in reserved(841.0, 594.0))
+    for pl in lay:
+        ext = pl.view.extent()
+        if ext is not None:
+            assert pl.scale is not None
+            assert pl.scale.mm(ext[2] - ext[0]) <= pl.size[0] + 1e-6
+            assert pl.scale.mm(ext[3] - ext[1]) <= pl.size[1] + 1e-6
+    assert len({lay[p].scale for p in plans}) == 1
+    nat = table.natural()
+    assert nat is not None
+    assert lay[table].size[0] >= nat[0] - 1e-6 and lay[table].size[1] >= nat[1] - 1e-6
+
+
+def test_a_view_alone_is_drawn_larger_than_beside_another() -> None:
+    field = Field.of_format("A3")
+    a = _fig(0.3, 0.2)
+    alone = arrange(a, field)[a].scale
+    b = _fig(0.3, 0.2)
+    beside = arrange(Row(a, b), field)[a].scale
+    assert alone is not None and beside is not None and alone.k < beside.k
+
+
+def test_the_split_follows_the_drawings() -> None:
+    """A tall narrow view beside a wide one gets a narrow box: no large empty room beside a
+    small drawing (the smallest fill stays high)."""
+    wide, tall = _fig(0.8, 0.3), _fig(0.1, 0.5)
+    lay = arrange(Row(wide, tall), Field.of_format("A2"))
+    assert lay[tall].box[2] - lay[tall].box[0] < lay[wide].box[2] - lay[wide].box[0]
+    assert lay.fill() > 0.35
+
+
+def test_choice_takes_the_better_arrangement() -> None:
+    a, b = _fig(0.8, 0.1), _fig(0.8, 0.1)
+    side, under = Row(a, b), Column(a, b)
+    lay = arrange(Choice(side, under), Field.of_format("A3"))
+    assert lay[a].box[2] - lay[a].box[0] > 300.0  # two long views one under the other
+
+
+def test_composed_sheet_passes_the_layout_checker() -> None:
+    d = start("A3", TitleBlock("t", "d"))
+    c = Construction("t")
+    A = c.point("A", (0.0, 0.0))
+    B = c.point("B", (0.1, 0.0))
+    k = c.circle("k", A, 0.08)
+    m = c.circle("m", B, 0.06)
+    c.intersect("C", k, m)
+    poly = ForcePolygon(
+        Vec(0.0, 0.0),
+        (
+            PlanVector("F", Vec(0.0, 0.0), Vec(100.0, 0.0)),
+            PlanVector("G", Vec(100.0, 0.0), Vec(100.0, 1.0)),
+            PlanVector("R", Vec(100.0, 1.0), Vec(0.0, 0.0)),
+        ),
+        (("R", 100.0),),
+    )
+    pv = Polygon(poly, title="Forces")
+    x = np.linspace(0.0, 360.0, 50)
+    dia = Diagram(AxisSpec("φ", "°", "φ", 0.0, 360.0, 60.0), AxisSpec("S", "m", "S"),
+                  [Curve(x, np.sin(np.radians(x)))], title="S")  # fmt: skip
+    steps = Steps(c, width=90.0)
+    table = Table.of_specs([Param("l_AB", 0.1, "AB", "m")], {"l_AB": 0.1})
+    lay = compose(d, Row(Column(pv, dia), Column(table, steps)))
+    sheet = d.finish()
+    assert layout_problems(sheet) == []
+    assert pv.points == ["G"]  # 1 N at μ_F ≥ 1 N/mm is shorter than two arrowheads
+    assert lay[pv].scale is not None and lay[pv].scale.q == "F"
+    texts = {t.text for t in sheet.texts()}
+    assert "lAB" in texts  # the spec's name as markup, l_{AB}
+    assert any(t.endswith("радиусом 0,08") for t in texts)
+
+
+def test_order_of_construction_from_the_steps_in_each_language() -> None:
+    c = Construction("t")
+    A = c.point("A", (0.0, 0.0))
+    B1 = c.point("B1", (1.0, 0.0))
+    k = c.circle("k", A, 1.0)
+    ln = c.line_through("AB", A, B1)
+    c.intersect("C", k, ln)
+    step = c.step("C")
+    with language("ru"):
+        assert step_text(step) == "C — точка пересечения k и AB"
+    with language("en"):
+        assert step_text(step) == "C: the intersection of k and AB"
+        assert step_text(c.step("k")).startswith("k: the circle about A")
+    listed = Steps(c, width=200.0).lines
+    assert [t.split(" ")[0] for t in listed] == ["1.", "2.", "3."]  # the givens are not listed
+
+
+def test_symbols_draw_in_their_local_frame() -> None:
+    f = Local.along((10.0, 10.0), (0.0, -2.0))  # x up the paper
+    assert f.p(1.0, 0.0) == pytest.approx((10.0, 9.0))
+    assert f.p(0.0, 1.0) == pytest.approx((9.0, 10.0))  # y: x turned ccw on the paper
+    d = start("A4", TitleBlock("t", "d"))
+    n = len(d.sheet.items)
+    block(d.sheet, (50.0, 50.0), (1.0, 0.0), with_joint=False)
+    new = d.sheet.items[n:]
+    assert not any(isinstance(it, CircleItem) for it in new)
+    assert all(isinstance(it, Polyline) and it.closed for it in new)
+    v = d.viewport(Scale(0.001), (0.0, 0.0), (100.0, 100.0))
+    assert v.paper_dir((0.0, 1.0)) == (0.0, -1.0)
+
+
+def test_linkage_sheet_states_the_scales_verify_reads() -> None:
+    """The scales a linkage file's build reports (for verify) are the ones its sheet draws."""
+    from pathlib import Path
+
+    from geomcad import documents
+    from geomcad.sheet.scale import fmt_number
+
+    path = Path(__file__).resolve().parents[1] / "examples" / "four-bar.toml"
+    sol = documents.solve(str(path))
+    texts = " | ".join(t.text for t in sol.sheets()[0][1].texts())
+    assert f"μV = {fmt_number(sol.scales['v'])} (м/с)/мм" in texts
+    assert f"μa = {fmt_number(sol.scales['a'])} (м/с²)/мм" in texts
+    assert f"μl = {fmt_number(sol.scales['l'])} м/мм" in texts
