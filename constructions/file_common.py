@@ -111,14 +111,21 @@ class Table:
             )
 
 
-def check_top(data: Mapping[str, Any], kind: str, allowed: Iterable[str] = ("title",)) -> str:
-    """The file's top level: the marking table ``kind`` and, optionally, a ``title`` string."""
+def check_top(
+    data: Mapping[str, Any], kind: str, allowed: Iterable[str] = ("title", "sheet")
+) -> str:
+    """The file's top level: the marking table ``kind`` and, optionally, a ``title`` string and
+    a ``[sheet]`` table of title-block data (``lang = "en"`` among them), checked here."""
+    from geomcad.sheet.titleblock import TitleData
+
     ok = {kind, *allowed}
     for k in data:
         if k not in ok:
             raise ParameterError(
                 k, data[k], f"unknown top-level key in a [{kind}] file (it knows {', '.join(ok)})"
             )
+    if "sheet" in data:
+        TitleData.from_mapping(data["sheet"], "sheet")
     title = data.get("title", "")
     if not isinstance(title, str):
         raise ParameterError("title", title, "must be a string")

@@ -21,15 +21,18 @@ import numpy as np
 from geomcad.geom import Vec
 from geomcad.kinematics import cam_design as cd
 from geomcad.kinematics.cams import Follower, at_angles, invert
-from geomcad.kinematics.motion_laws import LAW_TITLES_RU, Motion
+from geomcad.kinematics.motion_laws import Motion
 from geomcad.sheet import Drawing, Scale, TitleBlock, fmt_number, gost_scale_to_fit, start
 from geomcad.sheet.graph import Axis, Graph
+from geomcad.sheet.lang import Words
 
 if TYPE_CHECKING:
     from geomcad.problem import Solution
 
     from .file_cam import CamDesign
 
+#: The sheet's words, per language (constructions/strings/<lang>/sheets_cam.toml).
+WORDS = Words(__package__, "sheets_cam")
 MM = 1000.0
 #: The profile's field (sheet mm: x0, y0, x1, y1).
 PROFILE = (575.0, 30.0, 830.0, 520.0)
@@ -66,11 +69,7 @@ def _profile_box(des: CamDesign) -> tuple[float, float, float, float]:
 def sheets(sol: Solution) -> list[tuple[str, Any]]:
     des: CamDesign = sol.data
     k = Scale(sol.scales["l"], "l")
-    tb = TitleBlock(
-        title="Кулачковый механизм: синтез по углу давления",
-        designation="ТММ.КП.04",
-        scale=k.ratio_text(),
-    )
+    tb = TitleBlock(title=WORDS("tb_title"), designation=WORDS("designation"), scale=k.ratio_text())
     d = start("A1", tb)
     _laws(d, des)
     _pressure(d, des)
@@ -86,8 +85,9 @@ def sheets(sol: Solution) -> list[tuple[str, Any]]:
 def _law_values(des: CamDesign) -> tuple[float, str, str, str, str]:
     """(factor to the drawn unit, unit of S, of S′, of S″, the symbol)."""
     if des.spec.motion == "rocking":
-        return math.degrees(1.0), "°", "°/рад", "°/рад²", "ψ"
-    return MM, "мм", "мм", "мм", "S"
+        return math.degrees(1.0), "°", WORDS("u_deg_rad"), WORDS("u_deg_rad2"), "ψ"
+    mm = WORDS("u_mm")
+    return MM, mm, mm, mm, "S"
 
 
 def _laws(d: Drawing, des: CamDesign) -> None:
@@ -103,9 +103,9 @@ def _laws(d: Drawing, des: CamDesign) -> None:
     s2_g = np.diff(s1_g) / np.diff(mid)
     mid2 = (mid[:-1] + mid[1:]) / 2.0
     rows = [
-        (f"{sym}(φ)", u0, m.S, None, None, "перемещение"),
-        (f"d{sym}/dφ", u1, m.S1, mid, s1_g, "аналог скорости"),
-        (f"d^2{sym}/dφ^2", u2, m.S2, mid2, s2_g, "аналог ускорения"),
+        (f"{sym}(φ)", u0, m.S, None, None, WORDS("what_S")),
+        (f"d{sym}/dφ", u1, m.S1, mid, s1_g, WORDS("what_S1")),
+        (f"d^2{sym}/dφ^2", u2, m.S2, mid2, s2_g, WORDS("what_S2")),
     ]
     for (name, unit, exact, gx, gy, what), y0 in zip(rows, GRAPH_Y[:3], strict=True):
         vals = exact * f
@@ -125,8 +125,8 @@ def _laws(d: Drawing, des: CamDesign) -> None:
             for i, (a, b) in enumerate(zip(np.degrees(div.phi), div.S * f, strict=True)):
                 g.ordinate(float(a), float(b), str(i) if i < len(div.phi) - 1 else "")
         top = g.box[1]
-        d.text(f"{what} {name}: точно (сплошная), графически (штриховая)" if gy is not None
-               else f"{what} {name}", (GRAPH_X - 15.0, top - 15.0), 3.5)  # fmt: skip
+        key = "graph_exact" if gy is not None else "graph_plain"
+        d.text(WORDS(key, what=what, name=name), (GRAPH_X - 15.0, top - 15.0), 3.5)
         g.factors((GRAPH_X - 15.0, top - 10.0))
 
 
@@ -151,8 +151,7 @@ def _pressure(d: Drawing, des: CamDesign) -> None:
             g.curve([0.0, 360.0], [sgn * v, sgn * v], "locus")
         _ = ph_kind
     top = g.box[1]
-    d.text("Угол давления α(φ) за оборот; штриховые – допускаемые [α] на подъёме и опускании",
-           (GRAPH_X - 15.0, top - 15.0), 3.5)  # fmt: skip
+    d.text(WORDS("pressure_title"), (GRAPH_X - 15.0, top - 15.0), 3.5)
     g.factors((GRAPH_X - 15.0, top - 10.0))
 
 
@@ -164,7 +163,7 @@ def _curvature(d: Drawing, des: CamDesign) -> None:
     m = prog.motion(phi)
     rho = (des.r0 + m.S + m.S2) * MM
     ax = Axis.fit("φ", "°", 0.0, 360.0, GRAPH_W).with_tick(30.0)
-    ay = Axis.fit("ρ", "мм", 0.0, float(np.max(rho)), GRAPH_H)
+    ay = Axis.fit("ρ", WORDS("u_mm"), 0.0, float(np.max(rho)), GRAPH_H)
     g = Graph(d, ax, ay, (GRAPH_X, GRAPH_Y[3]))
     g.axes()
     g.curve(np.degrees(phi), rho, "link")
@@ -172,8 +171,7 @@ def _curvature(d: Drawing, des: CamDesign) -> None:
         lim = des.spec.rho_allowed * MM
         g.curve([0.0, 360.0], [lim, lim], "locus")
     top = g.box[1]
-    d.text("Радиус кривизны профиля ρ = r_0 + S + S″ за оборот; штриховая – требуемый ρ_{min}",
-           (GRAPH_X - 15.0, top - 15.0), 3.5)  # fmt: skip
+    d.text(WORDS("curvature_title"), (GRAPH_X - 15.0, top - 15.0), 3.5)
     g.factors((GRAPH_X - 15.0, top - 10.0))
 
 
@@ -190,14 +188,14 @@ def _diagram(d: Drawing, des: CamDesign) -> None:
     x0, y0, x1, y1 = DIAGRAM
     if spec.follower == "flat":
         pts = np.stack([m.S2, m.S], axis=-1)
-        title = "Диаграмма S(S″): условие выпуклости r0 + S + S″ > ρ"
+        title = WORDS("diagram_flat")
     elif spec.motion == "translating":
         pts = np.stack([cd.diagram_x(spec.sigma, m.S1), m.S], axis=-1)
-        title = "Диаграмма S(−σS′) и зона допустимых центров"
+        title = WORDS("diagram_translating")
     else:
         geom = cd.RockerGeometry(spec.arm, prog.H, spec.sigma)
         pts = geom.C(m.S, m.S1)
-        title = "Диаграмма ψ – lψ′ (точки C) и зона допустимых центров"
+        title = WORDS("diagram_rocking")
     xs = [*pts[:, 0], O.x, Om.x, 0.0]
     ys = [*pts[:, 1], O.y, Om.y, 0.0]
     if spec.motion == "rocking":
@@ -209,7 +207,7 @@ def _diagram(d: Drawing, des: CamDesign) -> None:
     v = d.viewport(kl, ((max(xs) + min(xs)) / 2.0, (max(ys) + min(ys)) / 2.0),
                    ((x0 + x1) / 2.0, (y0 + 10.0 + y1) / 2.0))  # fmt: skip
     d.text(title, (x0, y0 - 8.0), 3.5)
-    d.text(f"{kl.label()} (M {kl.ratio_text()})", (x0, y0 - 2.5), 2.5)
+    d.text(WORDS("scale_line", label=kl.label(), ratio=kl.ratio_text()), (x0, y0 - 2.5), 2.5)
     v.polyline(list(pts), "link")
     B0 = Vec(0.0, 0.0)
     ext = 0.15 * h
@@ -283,8 +281,8 @@ def _profile(d: Drawing, des: CamDesign, k: Scale) -> None:
     x0, y0, x1, y1 = PROFILE
     bx0, by0, bx1, by1 = _profile_box(des)
     v = d.viewport(k, ((bx0 + bx1) / 2.0, (by0 + by1) / 2.0), ((x0 + x1) / 2.0, (y0 + y1) / 2.0))
-    d.text("Профиль кулачка (метод обращения движения)", (x0, y0 - 8.0), 3.5)
-    d.text(f"{k.label()} (M {k.ratio_text()})", (x0, y0 - 2.5), 2.5)
+    d.text(WORDS("profile_title"), (x0, y0 - 8.0), 3.5)
+    d.text(WORDS("scale_line", label=k.label(), ratio=k.ratio_text()), (x0, y0 - 2.5), 2.5)
     prof = des.profile
     o = Vec(0.0, 0.0)
     v.centre_cross(o, 6.0)
@@ -343,61 +341,47 @@ def _rocker_points(
 def _tables(d: Drawing, des: CamDesign, r: dict[str, Any]) -> None:
     spec = des.spec
     x, y = 330.0, 360.0
-    kinds = {"knife": "острый", "roller": "роликовый", "flat": "плоский"}
-    motion = {"translating": "поступательный", "rocking": "коромысловый"}
+    u = WORDS("u_mm")
     rows = [
-        ["толкатель", f"{kinds[spec.follower]}, {motion[spec.motion]}"],
-        ["вращение", "против часовой" if spec.sigma > 0 else "по часовой"],
-    ]
+        [WORDS("row_follower"),
+         f"{WORDS('follower_' + spec.follower)}, {WORDS('motion_' + spec.motion)}"],
+        [WORDS("row_rotation"), WORDS("ccw" if spec.sigma > 0 else "cw")],
+    ]  # fmt: skip
     if spec.motion == "translating":
-        rows.append(["ход H", f"{fmt_number(spec.program.H * MM, digits=4)} мм"])
+        rows.append([WORDS("row_stroke"), f"{fmt_number(spec.program.H * MM, digits=4)} {u}"])
     else:
-        rows.append(["размах ψ_{max}, l", f"{fmt_number(math.degrees(spec.program.H), digits=4)}°, "
-                     f"{fmt_number(spec.arm * MM, digits=4)} мм"])  # fmt: skip
+        rows.append([WORDS("row_swing"), f"{fmt_number(math.degrees(spec.program.H), digits=4)}°, "
+                     f"{fmt_number(spec.arm * MM, digits=4)} {u}"])  # fmt: skip
     if spec.follower != "flat":
         a_r = fmt_number(math.degrees(spec.alpha_rise), digits=4)
         a_t = fmt_number(math.degrees(spec.alpha_return), digits=4)
-        rows.append(["[α] подъём / опуск.", f"{a_r}° / {a_t}°"])
+        rows.append([WORDS("row_alpha"), f"{a_r}° / {a_t}°"])
     else:
-        rows.append(["ρ_{min} допуск.", f"{fmt_number(spec.rho_allowed * MM, digits=4)} мм"])
-    d.text("Исходные данные", (x, y - 2.0), 3.5)
+        rows.append([WORDS("row_rho"), f"{fmt_number(spec.rho_allowed * MM, digits=4)} {u}"])
+    d.text(WORDS("data_title"), (x, y - 2.0), 3.5)
     _, h = d.table(x, y, (45.0, 80.0), rows, row_h=6.0, header=False)
     y += h + 10.0
     x, y = 465.0, 360.0
-    res = [["величина", "значение"]]
+    res = [[WORDS("h_quantity"), WORDS("h_value")]]
 
     def mm(key: str, name: str) -> None:
         if key in r:
-            res.append([name, f"{fmt_number(float(r[key]) * MM, digits=5)} мм"])
+            res.append([WORDS(name), f"{fmt_number(float(r[key]) * MM, digits=5)} {u}"])
 
     def dg(key: str, name: str) -> None:
         if key in r:
-            res.append([name, f"{fmt_number(float(r[key]), digits=4)}°"])
+            res.append([WORDS(name), f"{fmt_number(float(r[key]), digits=4)}°"])
 
-    mm("r0_min", "r_{0 min}")
-    mm("r0", "r_0 (принят)")
-    mm("e", "эксцентриситет e")
-    mm("a_w", "межосевое a_w")
-    mm("r_roller", "радиус ролика")
-    mm("rho_pitch_min", "ρ_{min} центрового")
-    mm("rho_min", "ρ_{min} профиля")
-    dg("pressure_angle_max_rise_deg", "α_{max} подъём")
-    dg("pressure_angle_max_return_deg", "α_{max} опускание")
-    d.text("Результаты", (x, y - 2.0), 3.5)
+    for key in ("r0_min", "r0", "e", "a_w", "r_roller", "rho_pitch_min", "rho_min"):
+        mm(key, key)
+    dg("pressure_angle_max_rise_deg", "alpha_rise")
+    dg("pressure_angle_max_return_deg", "alpha_return")
+    d.text(WORDS("results_title"), (x, y - 2.0), 3.5)
     _, h = d.table(x, y, (45.0, 40.0), res, row_h=6.0)
-    kinds = {"rise": "подъём", "dwell": "выстой", "return": "опускание"}
     laws = ", ".join(
-        f"{kinds[ph.kind]} {fmt_number(math.degrees(ph.angle), digits=4)}°"
-        + (f" ({LAW_TITLES_RU[ph.law]})" if ph.kind != "dwell" else "")
+        f"{WORDS('phase_' + ph.kind)} {fmt_number(math.degrees(ph.angle), digits=4)}°"
+        + (f" ({WORDS('law_' + ph.law)})" if ph.kind != "dwell" else "")
         for ph in spec.program.phases
     )
-    y = d.paragraph(f"Фазы: {laws}.", 330.0, y + h + 10.0, 215.0, 2.5) + 2.0
-    d.paragraph(
-        "r_0 – радиус центрового профиля при наинизшем положении толкателя B_0; r_{0min} – "
-        "расстояние от B_0 до ближайшей точки зоны допустимых центров; r_0 – r_{0min}, "
-        "округлённый вверх. Ролик: r_р ≤ 0,7ρ_{min} центрового профиля и ≤ 0,4r_0.",
-        330.0,
-        y,
-        215.0,
-        2.5,
-    )
+    y = d.paragraph(WORDS("phases", laws=laws), 330.0, y + h + 10.0, 215.0, 2.5) + 2.0
+    d.paragraph(WORDS("note"), 330.0, y, 215.0, 2.5)

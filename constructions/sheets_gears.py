@@ -35,12 +35,15 @@ from geomcad.sheet import (
     start,
 )
 from geomcad.sheet.graph import Axis, Graph
+from geomcad.sheet.lang import Words
 
 if TYPE_CHECKING:
     from geomcad.problem import Solution
 
     from .file_gears import GearsDesign
 
+#: The sheets' words, per language (constructions/strings/<lang>/sheets_gears.toml).
+WORDS = Words(__package__, "sheets_gears")
 MM = 1000.0
 #: The meshing drawing's field (sheet mm).
 MESH = (35.0, 35.0, 480.0, 575.0)
@@ -87,8 +90,8 @@ def _pair_sheet(sol: Solution, des: GearsDesign) -> Any:
     assert p is not None and me is not None
     k = Scale(sol.scales["l"], "l")
     tb = TitleBlock(
-        title="Эвольвентное зацепление со смещением",
-        designation="ТММ.КП.05",
+        title=WORDS("tb_pair"),
+        designation=WORDS("designation"),
         scale=k.ratio_text(),
         sheets=2 if des.spec.planetary is not None else 1,
     )
@@ -96,8 +99,8 @@ def _pair_sheet(sol: Solution, des: GearsDesign) -> Any:
     x0, y0, x1, y1 = _mesh_box(p, me)
     v = d.viewport(k, ((x0 + x1) / 2.0, (y0 + y1) / 2.0),
                    ((MESH[0] + MESH[2]) / 2.0, (MESH[1] + MESH[3]) / 2.0))  # fmt: skip
-    d.text("Картина зацепления (зубья нарезаны реечным инструментом)", (MESH[0], 15.0), 5.0)
-    d.text(f"{k.label()} (M {k.ratio_text()})", (MESH[0], 22.0), 3.5)
+    d.text(WORDS("mesh_title"), (MESH[0], 15.0), 5.0)
+    d.text(WORDS("scale_line", label=k.label(), ratio=k.ratio_text()), (MESH[0], 22.0), 3.5)
     O1, O2 = Vec(0.0, 0.0), Vec(0.0, p.a_w)
     half_w = max(abs(x0), abs(x1)) * 1.05
     for centre, g, d_w, up in ((O1, p.gear1, p.d_w1, True), (O2, p.gear2, p.d_w2, False)):
@@ -149,16 +152,16 @@ def _pair_sheet(sol: Solution, des: GearsDesign) -> Any:
     return d.finish()
 
 
-#: Labels of the blocking contour's lines.
+#: Labels of the blocking contour's lines: formulas, or a key of the table (``limit_*``).
 LIMIT_TEXT = {
-    "x_min1": "подрез 1",
-    "x_min2": "подрез 2",
     "s_a1": "s_{a1} = s_{a min}",
     "s_a2": "s_{a2} = s_{a min}",
-    "interf1": "интерф. 1",
-    "interf2": "интерф. 2",
     "eps": "ε_α = ε_{min}",
 }
+
+
+def _limit_text(key: str) -> str:
+    return LIMIT_TEXT.get(key) or WORDS(f"limit_{key}")
 
 
 def _contour(d: Drawing, p: gd.GearPair, sa_min: float, eps_min: float) -> None:
@@ -179,11 +182,10 @@ def _contour(d: Drawing, p: gd.GearPair, sa_min: float, eps_min: float) -> None:
         for a1, a2, b1, b2 in segs:
             g.curve([a1, b1], [a2, b2], "construction")
         mid = segs[len(segs) // 2]
-        g.point(mid[0], mid[1], LIMIT_TEXT[key], role="construction")
+        g.point(mid[0], mid[1], _limit_text(key), role="construction")
     g.point(p.x1, p.x2, "x_1, x_2", role="result", prefer=(1.0, 1.0))
     top = g.box[1]
-    d.text("Блокирующий контур (x_1, x_2): линии ограничений и принятые смещения",
-           (x_at - 30.0, top - 15.0), 3.5)  # fmt: skip
+    d.text(WORDS("contour_title"), (x_at - 30.0, top - 15.0), 3.5)
 
 
 def _working(v: Any, tooth: np.ndarray, r_lo: float, r_hi: float, centre: Vec) -> None:
@@ -207,7 +209,7 @@ def _sliding(d: Drawing, p: gd.GearPair) -> None:
     rho = np.linspace(0.0, L, 801)[1:-1]
     l1, l2 = p.sliding(rho)
     lo = -4.0
-    ax = Axis.fit("N_1K", "мм", 0.0, L * MM, room_w)
+    ax = Axis.fit("N_1K", WORDS("u_mm"), 0.0, L * MM, room_w)
     ay = Axis.fit("λ", "1", lo, 1.0, room_h).with_tick(1.0)
     g = Graph(d, ax, ay, (x_at, y_at - ay.mm(-lo)))
     g.axes()
@@ -218,8 +220,7 @@ def _sliding(d: Drawing, p: gd.GearPair) -> None:
         g.curve([s * MM, s * MM], [lo, 1.0], "locus")
         g.point(s * MM, 1.0, name, prefer=(1.0, 1.0))
     top = g.box[1]
-    d.text("Удельные скольжения λ_1 (растёт от N_1), λ_2 (растёт к N_2) вдоль линии зацепления",
-           (x_at - 15.0, top - 15.0), 3.5)  # fmt: skip
+    d.text(WORDS("sliding_title"), (x_at - 15.0, top - 15.0), 3.5)
     g.factors((x_at - 15.0, top - 10.0))
 
 
@@ -229,40 +230,34 @@ def _pair_tables(d: Drawing, p: gd.GearPair, me: gd.Meshing, r: dict[str, Any]) 
     def mm(v: float) -> str:
         return fmt_number(v * MM, digits=5)
 
+    u = WORDS("u_mm")
     rows = [
-        ["параметр", "шестерня 1", "колесо 2"],
+        [WORDS("h_param"), WORDS("h_gear1"), WORDS("h_gear2")],
         ["z", str(p.z1), str(p.z2)],
         ["x", fmt_number(p.x1, digits=4), fmt_number(p.x2, digits=4)],
-        ["d, мм", mm(p.gear1.d), mm(p.gear2.d)],
-        ["d_b, мм", mm(p.gear1.d_b), mm(p.gear2.d_b)],
-        ["d_w, мм", mm(p.d_w1), mm(p.d_w2)],
-        ["d_a, мм", mm(p.gear1.tip_diameter), mm(p.gear2.tip_diameter)],
-        ["d_f, мм", mm(p.gear1.d_f), mm(p.gear2.d_f)],
-        ["s_a, мм", mm(p.gear1.s_a), mm(p.gear2.s_a)],
+        [f"d, {u}", mm(p.gear1.d), mm(p.gear2.d)],
+        [f"d_b, {u}", mm(p.gear1.d_b), mm(p.gear2.d_b)],
+        [f"d_w, {u}", mm(p.d_w1), mm(p.d_w2)],
+        [f"d_a, {u}", mm(p.gear1.tip_diameter), mm(p.gear2.tip_diameter)],
+        [f"d_f, {u}", mm(p.gear1.d_f), mm(p.gear2.d_f)],
+        [f"s_a, {u}", mm(p.gear1.s_a), mm(p.gear2.s_a)],
         ["|λ|_{max}", fmt_number(p.lambda1, digits=4), fmt_number(p.lambda2, digits=4)],
     ]
-    d.text(f"Размеры колёс (ГОСТ 16532), m = {mm(p.m)} мм, α = 20°, h_a* = 1, c* = 0,25",
-           (x, y - 2.0), 3.5)  # fmt: skip
+    d.text(WORDS("sizes_title", m=mm(p.m)), (x, y - 2.0), 3.5)
     _, h = d.table(x, y, (30.0, 40.0, 40.0), rows, row_h=6.0)
     rows2 = [
-        ["a, мм", mm(p.a)],
-        ["a_w, мм", mm(p.a_w)],
+        [f"a, {u}", mm(p.a)],
+        [f"a_w, {u}", mm(p.a_w)],
         ["α_w", f"{fmt_number(math.degrees(p.alpha_w), digits=5)}°"],
         ["y", fmt_number(p.y, digits=4)],
         ["Δy", fmt_number(p.dy, digits=4)],
-        ["ε_α точно", fmt_number(p.eps_alpha, digits=4)],
-        ["ε_α по чертежу", fmt_number(me.eps_drawn, digits=4)],
-        ["p_b, мм", mm(p.p_b)],
+        [WORDS("eps_exact"), fmt_number(p.eps_alpha, digits=4)],
+        [WORDS("eps_drawn"), fmt_number(me.eps_drawn, digits=4)],
+        [f"p_b, {u}", mm(p.p_b)],
     ]
     d.table(x + 120.0, y, (32.0, 30.0), rows2, row_h=6.0, header=False)
     y += max(h, 6.0 * len(rows2)) + 8.0
-    text = (
-        "ε_α по чертежу = ab/p_b: отрезок ab активной линии зацепления между окружностями вершин "
-        "и основной шаг p_b, измеренный между соседними эвольвентами вдоль линии зацепления на "
-        "зубьях, нарезанных рейкой. Вершины укорочены на Δy·m. Проверено: нет подреза (x ≥ (17 − "
-        "z)/17), s_a ≥ 0,25m, нет интерференции, ε_α ≥ 1,2."
-    )
-    d.paragraph(text, x, y, 310.0, 2.5)
+    d.paragraph(WORDS("pair_note"), x, y, 310.0, 2.5)
 
 
 # -- the planetary train ---------------------------------------------------------------------------
@@ -311,16 +306,15 @@ def _planetary_sheet(sol: Solution, des: GearsDesign, no: int) -> Any:
     m = pp.m
     k = _scheme_scale(des)
     tb = TitleBlock(
-        title="Синтез планетарного механизма",
-        designation="ТММ.КП.05",
+        title=WORDS("tb_planetary"),
+        designation=WORDS("designation"),
         scale=k.ratio_text(),
         sheet_no=no,
         sheets=no,
     )
     d = start("A1", tb)
-    d.text(f"Схема {pp.scheme}, k = {pp.planets} сателлита(ов): кинематическая схема",
-           (SCHEME[0], 25.0), 5.0)  # fmt: skip
-    d.text(f"{k.label()} (M {k.ratio_text()})", (SCHEME[0], 32.0), 3.5)
+    d.text(WORDS("scheme_title", scheme=pp.scheme, k=pp.planets), (SCHEME[0], 25.0), 5.0)
+    d.text(WORDS("scale_line", label=k.label(), ratio=k.ratio_text()), (SCHEME[0], 32.0), 3.5)
     pts, start_link, start_pt = _plan_points(pp.scheme, z, m)
     y_base = Y_BASE
     v = d.viewport(k, (0.0, 0.0), (SCHEME[0] + 20.0, y_base))
@@ -338,8 +332,8 @@ def _planetary_sheet(sol: Solution, des: GearsDesign, no: int) -> Any:
     pv_at = (px, y_base)
     pv = d.viewport(Scale(k.k, "l"), (0.0, 0.0), pv_at)
     sheet_y = {name: pv.p(Vec(0.0, e.y))[1] for name, e in plan.ends.items()}
-    d.text("План линейных скоростей (Смирнов)", (PLAN[0], 25.0), 5.0)
-    d.text(f"{kv.label()}, ω_{{вх}} = 1 рад/с", (PLAN[0], 32.0), 3.5)
+    d.text(WORDS("plan_title"), (PLAN[0], 25.0), 5.0)
+    d.text(WORDS("plan_factor", label=kv.label()), (PLAN[0], 32.0), 3.5)
     top_y = min(sheet_y.values()) - 10.0
     d.sheet.add(_line((px, y_base + 5.0), (px, top_y)))
     for name, e in plan.ends.items():
@@ -374,16 +368,15 @@ def _planetary_sheet(sol: Solution, des: GearsDesign, no: int) -> Any:
     # tables
     x, y = 640.0, 60.0
     names = ["z_1", "z_2", "z_3"] if pp.scheme == "A" else ["z_1", "z_2", "z_3", "z_4"]
-    rows = [["", *names, "u", "ошибка"]]
+    rows = [["", *names, "u", WORDS("h_error")]]
     for cand in des.candidates:
         rows.append([
-            "принят" if cand is best else "",
+            WORDS("chosen") if cand is best else "",
             *[str(q) for q in cand.z],
             fmt_number(float(cand.u), digits=5),
             f"{fmt_number(100.0 * (float(cand.u) - pp.ratio) / pp.ratio, digits=3)} %",
         ])  # fmt: skip
-    d.text(f"Числа зубьев для u = {fmt_number(pp.ratio, digits=5)} (меньший размер – первым)",
-           (x, y - 2.0), 3.5)  # fmt: skip
+    d.text(WORDS("teeth_title", u=fmt_number(pp.ratio, digits=5)), (x, y - 2.0), 3.5)
     widths = (16.0, *(14.0 for _ in names), 22.0, 20.0)
     _, h = d.table(x, y, widths, rows, row_h=6.0)
     y += h + 8.0
@@ -391,13 +384,16 @@ def _planetary_sheet(sol: Solution, des: GearsDesign, no: int) -> Any:
     out = "H" if pp.scheme in ("A", "B") else "1"
     inp = "1" if out == "H" else "H"
     u_plan = w_plan[inp] / w_plan[out] if w_plan.get(out) else math.nan
-    for text in (
-        f"u = {best.u.numerator}/{best.u.denominator} = {fmt_number(float(best.u), digits=6)} "
-        f"(Виллис); по плану скоростей u = ω_{{{inp}}}/ω_{{{out}}} = "
-        f"{fmt_number(u_plan, digits=6)}.",
-        "Условия: соосность, сборка k сателлитов, соседство, z ≥ z_{min}, "
-        "z_{вн} − z_{сат} ≥ 8 во внутреннем зацеплении.",
-    ):
+    willis = WORDS(
+        "willis",
+        num=best.u.numerator,
+        den=best.u.denominator,
+        u=fmt_number(float(best.u), digits=6),
+        inp=inp,
+        out=out,
+        u_plan=fmt_number(u_plan, digits=6),
+    )
+    for text in (willis, WORDS("conditions")):
         y = d.paragraph(text, x, y, 190.0, 2.5) + 1.0
     return d.finish()
 

@@ -4,10 +4,10 @@
     geomcad params ID [--json]
     geomcad solve ID [--set NAME=VALUE ...] [--json] [--trace]
     geomcad build [ID ...] [--out DIR] [--format svg,pdf,png,dxf] [--review] [--color]
-                  [--student NAME] [--checker NAME] [--group G] [--org ORG] [--date D]
-                  [--designation DES]
+                  [--lang ru|en] [--student NAME] [--checker NAME] [--group G] [--org ORG]
+                  [--date D] [--designation DES]
     geomcad verify ID --measured NAME=VALUE ... [--set NAME=VALUE ...] [--scale K] [--json]
-    geomcad animate ID [--set NAME=VALUE ...] [--out DIR] [--frames N]
+    geomcad animate ID [--set NAME=VALUE ...] [--out DIR] [--frames N] [--lang ru|en]
 
 Exit status: 0 done (and, for ``verify``, every measurement within precision), 1 a measurement
 out of precision, 2 bad input. Bad input prints nothing on stdout and exactly one line on stderr,
@@ -239,6 +239,8 @@ def _parser(help_for: tuple[str, str] | None = None) -> _Parser:
     s.add_argument(
         "--jobs", type=int, default=1, metavar="N", help="worker processes (default 1; 0: per core)"
     )
+    _add_lang(s, "the sheets' language: ru (GOST 2.104 title block) or en (ISO 7200); "
+              "default: [sheet] lang of the file or ./geomcad.toml, else ru")  # fmt: skip
     _add_title_options(s)
     s.set_defaults(func=_cmd_build)
 
@@ -253,6 +255,7 @@ def _parser(help_for: tuple[str, str] | None = None) -> _Parser:
     s.add_argument(
         "--frames", default="120", metavar="N", help="positions over the turn (default: 120)"
     )
+    _add_lang(s, "the words' language: ru or en (default: ./geomcad.toml's [sheet] lang, else ru)")
     s.set_defaults(func=_cmd_animate)
 
     s = sub.add_parser(
@@ -295,6 +298,16 @@ _TITLE_OPTIONS = (
 )
 
 
+#: The sheets' languages (:data:`geomcad.sheet.lang.LANGS`, spelt out here so that the parser
+#: imports no drawing code; a test keeps the two equal).
+LANGS = ("ru", "en")
+
+
+def _add_lang(s: argparse.ArgumentParser, text: str) -> None:
+    """``--lang``, as every command that draws takes it (``variants`` too)."""
+    s.add_argument("--lang", choices=LANGS, default=None, help=text)
+
+
 def _add_title_options(s: argparse.ArgumentParser) -> None:
     g = s.add_argument_group(
         "title block", "GOST 2.104 cells; these override a [sheet] table in ./geomcad.toml"
@@ -308,6 +321,7 @@ def _title_data(ns: argparse.Namespace) -> tuple[Any, Any]:
     from geomcad.sheet.titleblock import TitleData
 
     given = {dest: getattr(ns, f"tb_{dest}") for _, dest, _ in _TITLE_OPTIONS}
+    given["lang"] = ns.lang
     options = TitleData.from_mapping(
         {k: v for k, v in given.items() if v is not None}, "title-block option"
     )
@@ -428,19 +442,22 @@ def _cmd_build(ns: argparse.Namespace) -> int:
 
 
 def _prepare(pid: str, options: Any, workdir: Any, review: bool) -> tuple[str, Any]:
-    """Solve and draw one problem or file for ``build``: (its file stem, its sheets)."""
+    """Solve and draw one problem or file for ``build``: (its file stem, its sheets), in the
+    language the title data name (``--lang``, else the file's or ./geomcad.toml's)."""
     from geomcad import documents
+    from geomcad.sheet.lang import language
 
     try:
         sol = documents.solve(pid) if documents.is_file_id(pid) else geomcad.solve(pid)
         own = _file_title(pid, sol)
         # the options over the file's own [sheet] table over ./geomcad.toml's
         title = options.over(workdir if own is None else own.over(workdir))
-        sheets = sol.sheets(title)
-        if review:
-            from geomcad.review import review_sheets
+        with language(title.lang or "ru"):
+            sheets = sol.sheets(title)
+            if review:
+                from geomcad.review import review_sheets
 
-            sheets += review_sheets(sol, title)
+                sheets += review_sheets(sol, title)
     except GeomcadError as exc:
         raise _Failed(_prefixed(pid, exc)) from exc
     return (documents.stem(pid) if documents.is_file_id(pid) else pid, sheets)
@@ -560,8 +577,11 @@ def _cmd_animate(ns: argparse.Namespace) -> int:
         )
     from geomcad.render.animate import to_animated_svg
     from geomcad.render.files import write_atomic
+    from geomcad.sheet.lang import language
+    from geomcad.sheet.titleblock import TitleData
 
-    svg = to_animated_svg(sol.problem.motion(sol, frames))
+    with language(ns.lang or TitleData.from_workdir().lang or "ru"):
+        svg = to_animated_svg(sol.problem.motion(sol, frames))
     stem = documents.stem(ns.id) if documents.is_file_id(ns.id) else ns.id
     out = Path(ns.out)
     path = out / f"{stem}-animated.svg"

@@ -506,14 +506,18 @@ class Solution:
         """The problem's hand-in sheets: ``[(name, Sheet)]``, name ``""`` for the main sheet.
 
         Their title blocks are filled as one document (Лист i of Листов n, one designation)
-        with the user's ``title`` data; without it the people's cells stay empty. Each sheet
+        with the user's ``title`` data; without it the people's cells stay empty. They are drawn
+        in ``title.lang`` when it is given (``TitleData(lang="en")``), else in the language being
+        drawn (Russian unless inside ``with geomcad.sheet.lang.language("en"):``). Each sheet
         shows itself as SVG in Jupyter (:mod:`geomcad.notebook`).
         """
         import geomcad.notebook  # noqa: F401  (sets the sheets' SVG display)
         from geomcad.construction.guard import guarded
         from geomcad.sheet.frame import fill_title_blocks
+        from geomcad.sheet.lang import current, language
 
-        with guarded(f"drawing the sheets of {self.problem.id}"):
+        lang = (title.lang if title is not None else "") or current()
+        with guarded(f"drawing the sheets of {self.problem.id}"), language(lang):
             out = list(self.problem.draw(self))
             fill_title_blocks([s for _, s in out], title)
         return out

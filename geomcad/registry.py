@@ -54,3 +54,29 @@ def entry_point(pid: str) -> EntryPoint:
     """The entry point ``pid`` is registered under; :class:`UnknownProblem` as :func:`get`."""
     get(pid)
     return _entry_points()[pid]
+
+
+#: The table of the problems' titles in each language (``<package>/strings/<lang>/titles.toml``).
+TITLES = "titles"
+
+
+def title(problem: Problem, lang: str | None = None) -> str:
+    """``problem``'s title in ``lang`` (default: the language being drawn): its entry in the
+    ``titles`` table of the package that registers it, else its own :attr:`Problem.title`
+    (a file's problem, or a package without the table)."""
+    from importlib import resources
+
+    from geomcad.sheet.lang import Words, check_lang, current
+
+    ep = _entry_points().get(problem.id)
+    if ep is None or ep.module is None:
+        return problem.title
+    package = ep.module.rpartition(".")[0]
+    lang_ = check_lang(lang) if lang else current()
+    try:
+        has = resources.files(package).joinpath("strings", lang_, f"{TITLES}.toml").is_file()
+    except ModuleNotFoundError:
+        has = False
+    if not has:
+        return problem.title
+    return Words(package, TITLES).table(lang_).get(problem.id, problem.title)

@@ -12,27 +12,32 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
+from geomcad.registry import title as problem_title
 from geomcad.sheet import Drawing, Sheet, TitleBlock, fmt_number, start
 from geomcad.sheet.frame import fill_title_blocks
+from geomcad.sheet.lang import Words, current, language
 from geomcad.sheet.text import SUBSTITUTE, metrics
 
 if TYPE_CHECKING:
     from geomcad.problem import Solution
     from geomcad.sheet.titleblock import TitleData
 
-#: Columns of the comparison: header and width (mm).
+#: The review sheets' words, per language (``geomcad/sheet/strings/<lang>/review.toml``).
+WORDS = Words("geomcad.sheet", "review")
+#: Columns of the comparison: header key and width (mm).
 COLUMNS = (
-    ("Величина", 38.0),
-    ("Ед.", 16.0),
-    ("Точно", 34.0),
-    ("Опубликовано", 34.0),
-    ("Напечатано", 96.0),
-    ("Разность", 30.0),
-    ("Класс", 24.0),
-    ("Допуск", 28.0),
-    ("Согласие", 22.0),
+    ("h_name", 38.0),
+    ("h_unit", 16.0),
+    ("h_exact", 34.0),
+    ("h_seed", 34.0),
+    ("h_printed", 96.0),
+    ("h_diff", 30.0),
+    ("h_class", 24.0),
+    ("h_tol", 28.0),
+    ("h_agrees", 22.0),
 )
-CLASSES = {"measured": "измерено", "rounded": "округлено", "erratum": "ошибка"}
+#: The classes of a seed value (``Solution.seed_report``'s ``class``): their table keys.
+CLASSES = ("measured", "rounded", "erratum")
 ROW_H = 6.0
 TOP = 30.0
 #: The lowest y (mm) a table row or a note line may reach on an A3 sheet (above the title block).
@@ -41,9 +46,15 @@ BOTTOM = 230.0
 
 def review_sheets(sol: Solution, title: TitleData | None = None) -> list[tuple[str, Sheet]]:
     """The review sheets of a solution: ``[("review", sheet), ("review-2", sheet) …]``, one
-    document with its own sheet numbers; none for a variant (no published solution to compare)."""
+    document with its own sheet numbers; none for a variant (no published solution to compare).
+    Drawn in ``title.lang`` when given, else in the language being drawn."""
     if not sol.is_seed or not sol.problem.seed:
         return []
+    with language((title.lang if title is not None else "") or current()):
+        return _review_sheets(sol, title)
+
+
+def _review_sheets(sol: Solution, title: TitleData | None) -> list[tuple[str, Sheet]]:
     units = {r.name: r.unit for r in sol.problem.results}
     rows = [
         [
@@ -53,9 +64,9 @@ def review_sheets(sol: Solution, title: TitleData | None = None) -> list[tuple[s
             fmt_number(row["seed"], digits=6),
             _plain(row["printed"]),
             fmt_number(row["diff"], digits=2),
-            CLASSES.get(row["class"], row["class"]),
+            WORDS(row["class"]) if row["class"] in CLASSES else row["class"],
             fmt_number(row["tol"], digits=2),
-            "да" if row["agrees"] else "нет",
+            WORDS("yes" if row["agrees"] else "no"),
         ]
         for row in sol.seed_report()
     ]
@@ -65,7 +76,7 @@ def review_sheets(sol: Solution, title: TitleData | None = None) -> list[tuple[s
     drawings.append(d)
     y = TOP
     widths = [w for _, w in COLUMNS]
-    header = [h for h, _ in COLUMNS]
+    header = [WORDS(h) for h, _ in COLUMNS]
     while rows:
         room = int((BOTTOM - y) // ROW_H) - 1
         if room < 1:
@@ -81,7 +92,7 @@ def review_sheets(sol: Solution, title: TitleData | None = None) -> list[tuple[s
             d = _new(sol, len(drawings) + 1)
             drawings.append(d)
             y = TOP
-        d.text("Замечания (ошибки и пояснения к опубликованному решению)", (30.0, y + 5.0), 5.0)
+        d.text(WORDS("notes"), (30.0, y + 5.0), 5.0)
         y += 9.0
         for i, line in enumerate(lines, 1):
             if y > BOTTOM:
@@ -95,14 +106,12 @@ def review_sheets(sol: Solution, title: TitleData | None = None) -> list[tuple[s
 
 
 def _new(sol: Solution, no: int) -> Drawing:
-    tb = TitleBlock(
-        title=f"{sol.problem.id}: сверка с опубликованным решением",
-        designation=f"ТММ.{sol.problem.id}.ПР",
-    )
+    pid = sol.problem.id
+    tb = TitleBlock(title=WORDS("tb_title", id=pid), designation=WORDS("designation", id=pid))
     d = start("A3", tb)
-    head = f"Сверка с опубликованным решением: {sol.problem.title}"
+    head = WORDS("head", title=problem_title(sol.problem))
     if no > 1:
-        head += f" (продолжение, {no})"
+        head += WORDS("continued", no=no)
     d.paragraph(head, 95.0, 8.0, 310.0, 5.0)
     return d
 

@@ -428,16 +428,6 @@ def test_title_block_captions_in_their_cells(a3: Sheet) -> None:
     assert not overlapping_texts(a3.texts())
 
 
-def test_title_block_in_english() -> None:
-    sheet, _ = new_sheet("A3", TitleBlock(title="Velocity plan", designation="X.01", lang="en"))
-    fill_title_blocks([sheet])
-    words = {t.text for t in sheet.texts()}
-    for caption in ("Rev.", "Doc. No.", "Drawn", "Checked", "Appr.", "Scale", "Mass", "Sheet 1"):
-        assert caption in words
-    cyrillic = [w for w in words if any("А" <= c <= "я" for c in w)]
-    assert not cyrillic, cyrillic
-
-
 def test_long_title_is_broken_into_lines() -> None:
     title = "Синтез шестизвенного механизма по коэффициенту изменения средней скорости"
     sheet, _ = new_sheet("A3", TitleBlock(title=title, designation="X"))

@@ -28,11 +28,16 @@ from collections.abc import Callable, Sequence
 import numpy as np
 
 from geomcad.render.svg import num
+from geomcad.sheet.lang import Words
 from geomcad.sheet.motion import Arr, Frames
 from geomcad.sheet.scale import Scale, gost_scale_to_fit, nice_factor
 from geomcad.sheet.text import FONT_FAMILY, SUB_DROP, SUP_RISE, metrics, parse, run_size
 
 SVG_NS = "http://www.w3.org/2000/svg"
+
+#: The animation's words (``geomcad/sheet/strings/<lang>/animate.toml``), in the language being
+#: drawn.
+WORDS = Words("geomcad.sheet", "animate")
 
 #: Seconds per crank turn in the animation (the real turn at ω1 = 10 rad/s takes 0.6 s).
 PERIOD_S = 6.0
@@ -177,15 +182,17 @@ def to_animated_svg(
     motion: Frames,
     period: float = PERIOD_S,
     label: Callable[[Scale], str] | None = None,
-    plan_title: str = "План скоростей",
+    plan_title: str | None = None,
 ) -> str:
     """The motion as an animated SVG document (UTF-8 text with its XML declaration).
 
-    ``label`` writes a scale factor (default: :meth:`Scale.label` in Russian, e.g.
-    "μ_l = 0,005 м/мм"); ``period`` is the seconds per turn. Raises
+    ``label`` writes a scale factor (default: :meth:`Scale.label` in the language being drawn,
+    e.g. "μ_l = 0,005 м/мм"); ``plan_title`` defaults to the language's "velocity plan";
+    ``period`` is the seconds per turn. Raises
     :class:`~geomcad.errors.ParameterError` for a mechanism or plan too large for any scale.
     """
     write = label or (lambda s: s.label())
+    plan_title = WORDS("vplan") if plan_title is None else plan_title
     n = motion.frames
     doc = _Doc(n, period)
     xmin, ymin, xmax, ymax = motion.extent()
@@ -223,7 +230,8 @@ def to_animated_svg(
     heading = _group(root, "heading", fill=INK, stroke="none")
     _text(heading, MARGIN, MARGIN + 5.0, motion.title, 5.0)
     ratio = k_l.ratio_text()
-    _text(heading, MARGIN, MARGIN + 12.0, write(k_l) + (f"   (М {ratio})" if ratio else ""))
+    scale = WORDS("ratio", ratio=ratio) if ratio else ""
+    _text(heading, MARGIN, MARGIN + 12.0, write(k_l) + scale)
 
     thin = _group(root, "guides", stroke=INK, stroke_width=num(S / 3))
     for (ax, ay), (bx, by) in motion.guides:

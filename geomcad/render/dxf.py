@@ -10,7 +10,8 @@ drawing's extents are the paper format (``$EXTMIN``/``$EXTMAX`` and ``$LIMMIN``/
   lineweight), colour (black as ACI 7, which CAD shows black on white paper and white on a dark
   screen; with ``colour``, as ``build --color`` draws the SVG, a coloured role keeps its colour
   as a true colour) and linetype: ``GOST_DASHED``, ``GOST_DASHDOT`` or
-  ``GOST_TWODOT`` with the GOST 2.303 target dash, or ``Continuous``.
+  ``GOST_TWODOT`` with the GOST 2.303 target dash, or ``Continuous`` (an English sheet:
+  ``ISO128_02``, ``ISO128_04``, ``ISO128_05`` with ISO 128-20's, and its narrow lines at S/2).
 - **Dash patterns as drawn**: the sheet fits each dashed line's pattern to its own length (a
   dash-dot line starts and ends with a dash, a circle's pattern is centred on its start point);
   an entity whose fitted pattern differs from its layer's gets a linetype of that exact pattern,
@@ -50,7 +51,14 @@ from geomcad import tol
 from geomcad.render.svg import main_line as svg_main_line
 from geomcad.render.svg import monochrome
 from geomcad.sheet.model import XY, ArcItem, CircleItem, Dash, Item, Polyline, Sheet, TextItem
-from geomcad.sheet.style import DASHDOT, DASHED, STYLES, TWODOT, LineType, Style, style
+from geomcad.sheet.style import (
+    STYLES,
+    LineType,
+    Style,
+    for_language,
+    patterns,
+    style,
+)
 from geomcad.sheet.text import FONT_FAMILY, FONT_FILE, placed_runs
 
 #: The DXF version written: R2010 (AutoCAD 2010 and later, КОМПАС-3D, LibreCAD, QCAD read it).
@@ -73,6 +81,24 @@ _DESCRIPTIONS: dict[LineType, str] = {
     "dashdot": "GOST 2.303 dash-dot thin __ . __ . __",
     "twodot": "GOST 2.303 two-dot thin __ . . __ . . __",
 }
+#: The same on an English sheet (ISO 128-20 line types 02, 04 and 05).
+ISO_LINETYPE_NAMES: dict[LineType, str] = {
+    "dashed": "ISO128_02",
+    "dashdot": "ISO128_04",
+    "twodot": "ISO128_05",
+}
+_ISO_DESCRIPTIONS: dict[LineType, str] = {
+    "dashed": "ISO 128-20 type 02 dashed __ __ __",
+    "dashdot": "ISO 128-20 type 04 long-dashed dotted __ . __ . __",
+    "twodot": "ISO 128-20 type 05 long-dashed double-dotted __ . . __ . . __",
+}
+
+
+def linetype_names(lang: str = "ru") -> dict[LineType, str]:
+    """The DXF names of the dashed line types of a sheet drawn in ``lang``: GOST 2.303's in
+    Russian, ISO 128-20's otherwise."""
+    return LINETYPE_NAMES if lang == "ru" else ISO_LINETYPE_NAMES
+
 
 #: Decimals kept in a fitted pattern (1 µm on paper, as in the SVG).
 DECIMALS = 3
@@ -80,12 +106,14 @@ DECIMALS = 3
 _DRAWING_ORDER = tuple(STYLES)
 
 
-def _nominal(line: LineType) -> Dash:
-    """The GOST 2.303 pattern a layer carries: the target dash and the sheet's own gaps."""
+def _nominal(line: LineType, lang: str = "ru") -> Dash:
+    """The pattern a layer carries (GOST 2.303, or ISO 128-20 on an English sheet): the target
+    dash and the sheet's own gaps."""
+    dashed, dashdot, twodot = patterns("ru" if lang == "ru" else "en")
     if line == "dashed":
-        _lo, target, _hi, gap = DASHED
+        _lo, target, _hi, gap = dashed
         return Dash((target, gap))
-    _lo, target, _hi, s, dot = DASHDOT if line == "dashdot" else TWODOT
+    _lo, target, _hi, s, dot = dashdot if line == "dashdot" else twodot
     dots = 1 if line == "dashdot" else 2
     return Dash((target, s, *(dot, s) * dots))
 
@@ -139,15 +167,20 @@ def _pattern(dash: Dash) -> list[float]:
 
 
 class _Linetypes:
-    """The document's linetypes: one per GOST line type, one per fitted pattern that differs."""
+    """The document's linetypes: one per GOST (ISO) line type, one per fitted pattern that
+    differs."""
 
-    def __init__(self, doc: Drawing) -> None:
+    def __init__(self, doc: Drawing, lang: str = "ru") -> None:
         self._doc = doc
         self._made: dict[tuple[float, ...], str] = {}
-        for line, name in LINETYPE_NAMES.items():
-            pattern = _pattern(_nominal(line))
+        self.names = linetype_names(lang)
+        self._descriptions = _DESCRIPTIONS if lang == "ru" else _ISO_DESCRIPTIONS
+        for line, name in self.names.items():
+            pattern = _pattern(_nominal(line, lang))
             doc.linetypes.add(
-                name, [sum(abs(v) for v in pattern), *pattern], description=_DESCRIPTIONS[line]
+                name,
+                [sum(abs(v) for v in pattern), *pattern],
+                description=self._descriptions[line],
             )
             self._made[tuple(pattern)] = name
 
@@ -162,7 +195,7 @@ class _Linetypes:
         key = tuple(pattern)
         name = self._made.get(key)
         if name is None:
-            name = f"{LINETYPE_NAMES[family]}_{_fmt(dash.array[0])}"
+            name = f"{self.names[family]}_{_fmt(dash.array[0])}"
             if dash.offset:
                 name += "_C"  # a closed line's pattern, centred on its start
             taken = set(self._made.values())
@@ -173,10 +206,10 @@ class _Linetypes:
             self._doc.linetypes.add(
                 name,
                 [sum(abs(v) for v in pattern), *pattern],
-                description=f"{_DESCRIPTIONS[family]} fitted",
+                description=f"{self._descriptions[family]} fitted",
             )
             self._made[key] = name
-        return "BYLAYER" if name == LINETYPE_NAMES.get(line) else name
+        return "BYLAYER" if name == self.names.get(line) else name
 
 
 def _family(dash: Dash) -> LineType:
@@ -197,7 +230,7 @@ class _Writer:
         self.doc = doc
         self.sheet = sheet
         self.msp: Modelspace = doc.modelspace()
-        self.linetypes = _Linetypes(doc)
+        self.linetypes = _Linetypes(doc, sheet.lang)
         doc.styles.add(TEXT_STYLE, font=FONT_FILE).dxf.height = 0.0
         doc.header["$MEASUREMENT"] = 1
         doc.header["$LWDISPLAY"] = 1
@@ -217,7 +250,7 @@ class _Writer:
 
     def style(self, role: str) -> Style:
         """The role's style, in black unless the sheet is drawn in colour (as the SVG)."""
-        st = style(role)
+        st = for_language(style(role), self.sheet.lang)
         return st if self.colour else monochrome(st)
 
     def p(self, q: XY) -> tuple[float, float]:
@@ -240,7 +273,7 @@ class _Writer:
             role,
             color=aci if aci != 256 else 7,
             true_color=true_colour,
-            linetype=LINETYPE_NAMES.get(st.line, "Continuous"),
+            linetype=self.linetypes.names.get(st.line, "Continuous"),
             lineweight=lineweight(st.weight * self.main_line)
             if st.weight > 0.0
             else LINEWEIGHT_DEFAULT,

@@ -26,7 +26,7 @@ from dataclasses import replace
 import svgwrite
 
 from geomcad.sheet.model import XY, ArcItem, CircleItem, Dash, Item, Polyline, Sheet, TextItem
-from geomcad.sheet.style import MAIN_LINE, STYLES, Style, style
+from geomcad.sheet.style import MAIN_LINE, STYLES, Style, for_language, style
 from geomcad.sheet.text import FONT_FAMILY, placed_runs
 
 #: Main line S (mm) for a sheet whose format is not in MAIN_LINE (GOST 2.303: 0.7 on A3/A4).
@@ -228,6 +228,7 @@ def to_svg(sheet: Sheet, colour: bool = False) -> str:
         items = by_role.get(role)
         if not items:
             continue
+        st = for_language(st, sheet.lang)
         group = _layer(dwg, role, st if colour else monochrome(st), s)
         for item in items:
             group.add(_element(dwg, item, ids, colour))

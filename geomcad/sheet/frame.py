@@ -1,20 +1,28 @@
-"""ESKD sheets: formats (GOST 2.301), the frame, and the main title block, form 1 (GOST 2.104).
+"""Sheets: formats (GOST 2.301 ≈ ISO 5457), the frame, and the title block: GOST 2.104 form 1 on
+a Russian sheet, the data fields of ISO 7200 on an English one.
 
-The inner frame is a main line 20 mm from the left edge and 5 mm from the others. The title block
-is 185 × 55 mm in the bottom-right corner of the frame; its geometry below is in mm from its own
-lower-left corner, y up, exactly as GOST 2.104 draws it. Its captions come from a table per
-language (``strings/<lang>/frame.toml``), so an English sheet changes words, not code.
+The inner frame is a main line 20 mm from the left edge and 5 mm from the others. The Russian
+title block is 185 × 55 mm in the bottom-right corner of the frame; its geometry below is in mm
+from its own lower-left corner, y up, exactly as GOST 2.104 draws it. The English block
+(:data:`ISO_WIDTH` × :data:`ISO_HEIGHT`, ISO 7200: at most 180 mm wide) sits in the same corner,
+inside the room form 1 takes, so a sheet's layout is the same in either language. Captions come
+from a table per language (``strings/<lang>/frame.toml``); the language of a block is the one
+being drawn when it is made (:func:`geomcad.sheet.lang.current`).
+
+The English sheet keeps the frame's GOST margins (20 mm left, 5 mm elsewhere) rather than ISO
+5457's 20 / 10: every sheet module lays its views out in the GOST field, and the ISO frame would
+take 5 mm off three sides of it.
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
 
 from geomcad.errors import ParameterError
-from geomcad.sheet.lang import Lang, Words
+from geomcad.sheet.lang import Lang, Words, current
 from geomcad.sheet.model import XY, Polyline, Sheet, TextItem
 from geomcad.sheet.text import HEIGHTS, box, metrics, parse
-from geomcad.sheet.titleblock import TitleData
+from geomcad.sheet.titleblock import STUDENT_STAGE, TitleData
 
 #: Paper sizes (short side, long side) in mm.
 FORMATS: dict[str, tuple[float, float]] = {
@@ -32,6 +40,9 @@ TB_HEIGHT = 55.0
 #: Графа 26 (GOST 2.104): the designation turned 180° in the frame's top-left corner, 70 × 14 mm.
 G26_WIDTH = 70.0
 G26_HEIGHT = 14.0
+#: The English title block (ISO 7200: at most 180 mm wide), in the frame's bottom-right corner.
+ISO_WIDTH = 180.0
+ISO_HEIGHT = 45.0
 
 
 #: GOST 2.304 allows 1.8 mm lettering (not recommended): the last resort for a narrow cell.
@@ -59,13 +70,14 @@ class TitleBlock:
     developer: str = ""
     checker: str = ""
     material: str = ""
-    lang: Lang = "ru"
+    lang: Lang = field(default_factory=current)
     group: str = ""
     date: str = ""
     stage: str = ""
     tcontrol: str = ""
     ncontrol: str = ""
     approver: str = ""
+    revision: str = ""
 
     def with_user(self, data: TitleData) -> TitleBlock:
         """This block with the user's data: their designation (one for the whole document)
@@ -81,8 +93,11 @@ class TitleBlock:
             organisation=data.org or self.organisation,
             group=data.group or self.group,
             date=data.date or self.date,
-            # Лит. "У" is a Russian letter: an English sheet takes only a stage given to it
-            stage=self.stage or (data.stage if self.lang == "ru" else ""),
+            revision=data.revision or self.revision,
+            # Лит. "У" is a Russian letter: an English sheet (its document status) takes only a
+            # stage given to it in other words
+            stage=self.stage
+            or (data.stage if self.lang == "ru" or data.stage != STUDENT_STAGE else ""),
         )
 
 
@@ -117,13 +132,16 @@ def new_sheet(fmt: str, tb: TitleBlock, landscape: bool = True) -> tuple[Sheet, 
     :func:`reserved` boxes.
     """
     w, h = paper(fmt, landscape)
-    sheet = Sheet(w, h, fmt, tb.title)
+    sheet = Sheet(w, h, fmt, tb.title, lang=tb.lang)
     x0, y0, x1, y1 = LEFT_MARGIN, MARGIN, w - MARGIN, h - MARGIN
     sheet.add(Polyline(((x0, y0), (x1, y0), (x1, y1), (x0, y1)), "frame", closed=True))
-    _title_form(sheet, x1 - TB_WIDTH, y1, tb.lang)
-    sheet.add(Polyline(((x0, y0), (x0 + G26_WIDTH, y0), (x0 + G26_WIDTH, y0 + G26_HEIGHT),
-                        (x0, y0 + G26_HEIGHT)), "frame", closed=True))  # fmt: skip
-    _under_frame(sheet, x1 - TB_WIDTH, y1, fmt, tb.lang)
+    if tb.lang == "ru":
+        _title_form(sheet, x1 - TB_WIDTH, y1, tb.lang)
+        sheet.add(Polyline(((x0, y0), (x0 + G26_WIDTH, y0), (x0 + G26_WIDTH, y0 + G26_HEIGHT),
+                            (x0, y0 + G26_HEIGHT)), "frame", closed=True))  # fmt: skip
+        _under_frame(sheet, x1 - TB_WIDTH, y1, fmt, tb.lang)
+    else:
+        _iso_form(sheet, x1 - ISO_WIDTH, y1, tb.lang)
     sheet.block = tb
     return sheet, Frame(x0, y0, x1, y1, x1 - TB_WIDTH, y1 - TB_HEIGHT)
 
@@ -146,8 +164,11 @@ def fill_title_blocks(sheets: list[Sheet], data: TitleData | None = None) -> Non
         i += 1
         tb = replace(tb.with_user(data), designation=designation, sheet_no=i, sheets=n)
         x1, y1 = sheet.width - MARGIN, sheet.height - MARGIN
-        _title_fill(sheet, x1 - TB_WIDTH, y1, tb)
-        _text26(sheet, LEFT_MARGIN, MARGIN, tb.designation)
+        if tb.lang == "ru":
+            _title_fill(sheet, x1 - TB_WIDTH, y1, tb)
+            _text26(sheet, LEFT_MARGIN, MARGIN, tb.designation)
+        else:
+            _iso_fill(sheet, x1 - ISO_WIDTH, y1, tb)
         sheet.block = None
 
 
@@ -161,7 +182,8 @@ def short_date(text: str) -> str:
 
 def reserved(sheet_w: float, sheet_h: float) -> list[tuple[float, float, float, float]]:
     """The boxes (x0, y0 top, x1, y1 bottom) inside the frame that belong to the form, not to
-    the drawing: the title block and графа 26."""
+    the drawing: the title block and графа 26 (kept free on an English sheet too, so that a
+    sheet's layout does not depend on its language)."""
     x0, y0, x1, y1 = LEFT_MARGIN, MARGIN, sheet_w - MARGIN, sheet_h - MARGIN
     return [
         (x1 - TB_WIDTH, y1 - TB_HEIGHT, x1, y1),
@@ -183,7 +205,9 @@ def _text26(sheet: Sheet, x0: float, y0: float, designation: str) -> None:
             at = (cx + w / 2.0, cy - hh / 2.0)
             sheet.add(TextItem(at, runs, hh, metrics().font_size(hh), w, "title", angle=180.0))
             return
-    raise ParameterError("designation", designation, "does not fit графа 26 (70 mm)")
+    raise ParameterError(
+        "designation", designation, "does not fit box 26 in the frame's top-left corner (70 mm)"
+    )
 
 
 def _under_frame(sheet: Sheet, bx: float, by: float, fmt: str, lang: Lang) -> None:
@@ -220,15 +244,17 @@ def fit_text(
     role: str = "title",
     anchor: str = "centre",
     param: str = "title block",
+    max_lines: int = 0,
 ) -> list[TextItem]:
     """Text centred in a cell (x0, y0 top, x1, y1 bottom), shrunk to a smaller GOST height and
-    then broken into lines until it fits; else a :class:`ParameterError` naming ``param``."""
+    then broken into lines (at most ``max_lines``, when given) until it fits; else a
+    :class:`ParameterError` naming ``param``."""
     x0, y0, x1, y1 = cell
     room_w, room_h = x1 - x0 - 0.8, y1 - y0 - 1.0
     heights = [*(hh for hh in reversed(HEIGHTS) if hh <= height), SMALLEST_HEIGHT]
     words = markup.split(" ")
     for hh in heights:
-        for n_lines in range(1, len(words) + 1):
+        for n_lines in range(1, min(len(words), max_lines or len(words)) + 1):
             lines = _split(words, n_lines)
             lead = hh * 1.6
             total = hh + (n_lines - 1) * lead
@@ -361,3 +387,90 @@ def _title_fill(sheet: Sheet, bx: float, by: float, tb: TitleBlock) -> None:
     elif tb.organisation or tb.group:
         key = "org" if tb.organisation else "group"
         fit_text(sheet, tb.organisation or tb.group, cell(135, 0, 185, 15), 3.5, param=key)
+
+
+#: ISO 7200's data fields on the English block: (caption key, x0, y0, x1, y1) in mm from the
+#: block's lower-left corner, y up. The caption sits small in the cell's top-left corner and the
+#: data in the room below it.
+ISO_FIELDS: tuple[tuple[str, float, float, float, float], ...] = (
+    ("iso_techref", 0, 36, 45, 45),
+    ("iso_creator", 45, 36, 88, 45),
+    ("iso_approver", 88, 36, 130, 45),
+    ("iso_type", 130, 36, 180, 45),
+    ("iso_owner", 0, 0, 45, 36),
+    ("iso_title", 45, 9, 130, 36),
+    ("iso_status", 130, 27, 180, 36),
+    ("iso_id", 130, 9, 180, 27),
+    ("iso_scale", 45, 0, 65, 9),
+    ("iso_format", 65, 0, 80, 9),
+    ("iso_rev", 80, 0, 92, 9),
+    ("iso_date", 92, 0, 130, 9),
+    ("iso_lang", 130, 0, 145, 9),
+    ("iso_sheet", 145, 0, 180, 9),
+)
+#: The caption's height (mm) and the band it takes at the top of its cell.
+ISO_CAPTION = SMALLEST_HEIGHT
+ISO_BAND = 3.0
+
+
+def _iso_form(sheet: Sheet, bx: float, by: float, lang: Lang) -> None:
+    """The ISO 7200 block's lines and field captions, lower-left corner at sheet point (bx, by):
+    the outline a main line, the fields' borders thin."""
+    b = _Block(sheet, bx, by)
+    cap = WORDS.table(lang)
+    w, h = ISO_WIDTH, ISO_HEIGHT
+    sheet.add(Polyline((b.pt(0, 0), b.pt(w, 0), b.pt(w, h), b.pt(0, h)), "frame", closed=True))
+    edges: set[tuple[float, float, float, float]] = set()
+    for _key, x_a, y_a, x_b, y_b in ISO_FIELDS:
+        for e in ((x_a, y_a, x_b, y_a), (x_a, y_b, x_b, y_b), (x_a, y_a, x_a, y_b),
+                  (x_b, y_a, x_b, y_b)):  # fmt: skip
+            on_outline = (e[0] == e[2] and e[0] in (0, w)) or (e[1] == e[3] and e[1] in (0, h))
+            if not on_outline:
+                edges.add(e)
+    for x_a, y_a, x_b, y_b in sorted(edges):
+        b.seg(x_a, y_a, x_b, y_b, False)
+    for key, x_a, _y_a, x_b, y_b in ISO_FIELDS:
+        x0, top = b.pt(x_a, y_b)
+        fit_text(sheet, cap[key], (x0, top, b.pt(x_b, 0)[0], top + ISO_BAND), ISO_CAPTION,
+                 anchor="left")  # fmt: skip
+
+
+def _iso_fill(sheet: Sheet, bx: float, by: float, tb: TitleBlock) -> None:
+    """Fill the ISO 7200 block's fields (lower-left corner at sheet point (bx, by)) from ``tb``;
+    a field without data stays blank."""
+    b = _Block(sheet, bx, by)
+    cap = WORDS.table(tb.lang)
+    owner = [(tb.organisation, "org"), (tb.group, "group")]
+    data = {
+        "iso_techref": (tb.checker, 2.5, "checker"),
+        "iso_creator": (tb.developer, 2.5, "student"),
+        "iso_approver": (tb.approver, 2.5, "approver"),
+        "iso_type": (cap["iso_type_value"], 2.5, "document type"),
+        "iso_title": (tb.title, 5.0, "title"),
+        "iso_status": (tb.stage, 2.5, "stage"),
+        "iso_id": (tb.designation, 5.0, "designation"),
+        "iso_scale": (tb.scale, 3.5, "scale"),
+        "iso_format": (sheet.format, 3.5, "format"),
+        "iso_rev": (tb.revision, 3.5, "revision"),
+        "iso_date": (tb.date, 3.5, "date"),
+        "iso_lang": (tb.lang, 3.5, "language"),
+        "iso_sheet": (f"{tb.sheet_no}/{tb.sheets}", 3.5, "sheet"),
+    }
+    for key, x_a, y_a, x_b, y_b in ISO_FIELDS:
+        x0, top = b.pt(x_a, y_b)
+        x1, bottom = b.pt(x_b, y_a)
+        room = (x0 + 0.6, top + ISO_BAND, x1 - 0.6, bottom)  # 1 mm clear of the borders
+        if key == "iso_owner":
+            given = [(text, param) for text, param in owner if text]
+            if len(given) == 2:
+                mid = top + ISO_BAND + (bottom - top - ISO_BAND) * 0.6
+                fit_text(sheet, given[0][0], (x0, top + ISO_BAND, x1, mid), 3.5, param="org")
+                fit_text(sheet, given[1][0], (x0, mid, x1, bottom), 2.5, param="group")
+            elif given:
+                fit_text(sheet, given[0][0], room, 3.5, param=given[0][1])
+            continue
+        text, height, param = data[key]
+        if text:
+            # one line for the identification number, as ISO 7200 writes it (16 characters)
+            lines = 1 if key == "iso_id" else 0
+            fit_text(sheet, text, room, height, param=param, max_lines=lines)

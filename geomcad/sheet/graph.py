@@ -21,12 +21,15 @@ import numpy.typing as npt
 from geomcad import tol
 from geomcad.errors import ParameterError
 from geomcad.sheet.drawing import DOT_R, Drawing, _arrow, _head
+from geomcad.sheet.lang import Lang, Words
 from geomcad.sheet.model import XY, CircleItem, Polyline
 from geomcad.sheet.scale import NICE, fmt_number
 from geomcad.sheet.style import fit_open, style
 from geomcad.sheet.text import box, parse
 
 #: Ticks are spaced at least this far apart on the paper (mm).
+#: The diagrams' words, per language.
+WORDS = Words(__package__, "graph")
 TICK_MIN_MM = 8.0
 TICK_LEN = 1.5
 #: Tick values along the x axis keep at least this gap between them (mm).
@@ -107,9 +110,9 @@ class Axis:
         last = math.floor(self.hi / step + tol.DERIVED)
         return [i * step for i in range(first, last + 1)]
 
-    def factor_text(self, lang: str = "ru") -> str:
-        """``μ_φ = 0,02 рад/мм``."""
-        per = "мм" if lang == "ru" else "mm"
+    def factor_text(self, lang: Lang | None = None) -> str:
+        """``μ_φ = 0,02 рад/мм`` (``lang``: default the language being drawn)."""
+        per = WORDS("per_mm", lang)
         return f"μ_{{{self.name}}} = {fmt_number(self.k, lang)} {self.unit}/{per}"
 
 
@@ -135,7 +138,7 @@ class Graph:
         b = self.p(self.x.hi, self.y.lo)
         return (a[0], a[1], b[0], b[1])
 
-    def axes(self, lang: str = "ru", tick_labels: bool = True, height: float = 2.5) -> None:
+    def axes(self, lang: Lang | None = None, tick_labels: bool = True, height: float = 2.5) -> None:
         """Both axes with arrows and ticks, the tick values where no curve reaches them, and the
         axes' symbols and units placed by the label placer next to the arrows.
 
@@ -186,7 +189,7 @@ class Graph:
         self.d.label((ax, y0 - ARROW_OVER), f"{self.y.symbol}, {self.y.unit}", 3.5,
                      prefer=(1.0, 0.3), clear=1.0)  # fmt: skip
 
-    def factors(self, at: XY, lang: str = "ru", height: float = 2.5) -> None:
+    def factors(self, at: XY, lang: Lang | None = None, height: float = 2.5) -> None:
         """Both scale factors as one line of text with its baseline at ``at``."""
         self.d.text(f"{self.x.factor_text(lang)};  {self.y.factor_text(lang)}", at, height)
 

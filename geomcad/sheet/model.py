@@ -124,6 +124,8 @@ class Sheet:
     #: what the layout checker measures.
     anchors: list[tuple[TextItem, XY]] = field(default_factory=list)
     vectors: list[tuple[XY, XY]] = field(default_factory=list)
+    #: The language the sheet is drawn in (``ru``: GOST line widths; ``en``: ISO 128's).
+    lang: str = "ru"
 
     def add(self, item: Item) -> None:
         self.items.append(item)

@@ -4,7 +4,7 @@ The plan is drawn as the subject draws it: the thin construction lines of each v
 (each spanning the points it joins, a little beyond), the vectors with their arrowheads (the
 found ones in the result colour), the points lettered in lower case with subscripts (``b_3``;
 coincident points share one label, ``p, o_1, o_2``), and a title with the scale factor:
-"План скоростей, μ_V = 0,02 (м/с)/мм".
+"План скоростей, μ_V = 0,02 (м/с)/мм" (its words from ``strings/<lang>/plans.toml``).
 """
 
 from __future__ import annotations
@@ -13,7 +13,7 @@ import re
 
 from geomcad.kinematics.plan import Plan
 from geomcad.sheet.drawing import Drawing, Viewport
-from geomcad.sheet.lang import Lang
+from geomcad.sheet.lang import Lang, Words, current
 from geomcad.sheet.scale import PLAN_NICE, Scale, ScaleStyle, nice_factor
 
 #: Points closer than this on the paper (mm) share one label.
@@ -21,10 +21,8 @@ SAME_POINT_MM = 0.8
 #: Construction lines run this far past the points they join (mm).
 LINE_OVER_MM = 8.0
 
-TITLES = {
-    "ru": {"v": "План скоростей", "a": "План ускорений"},
-    "en": {"v": "Velocity plan", "a": "Acceleration plan"},
-}
+#: The plans' titles (``v``, ``a``), per language.
+TITLES = Words(__package__, "plans")
 
 
 def markup_of(name: str) -> str:
@@ -49,7 +47,7 @@ def draw_plan(
     plan: Plan,
     scale: Scale,
     box: tuple[float, float, float, float],
-    lang: Lang = "ru",
+    lang: Lang | None = None,
     style: ScaleStyle | None = None,
     title: str | None = None,
 ) -> Viewport:
@@ -59,7 +57,8 @@ def draw_plan(
     x0, y0, x1, y1 = plan.extent()
     bx0, by0, bx1, by1 = box
     if title is None:
-        title = f"{TITLES[lang][plan.kind]}, {scale.label(style or ScaleStyle(lang=lang))}"
+        lang = lang or current()
+        title = f"{TITLES(plan.kind, lang)}, {scale.label(style or ScaleStyle(lang=lang))}"
     d.text(title, (bx0, by0 + 3.5), 3.5)
     at = ((bx0 + bx1) / 2.0, (by0 + 6.0 + by1) / 2.0)
     v = d.viewport(scale, ((x0 + x1) / 2.0, (y0 + y1) / 2.0), at)

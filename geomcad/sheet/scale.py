@@ -10,12 +10,13 @@ direction a setting.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from fractions import Fraction
 from typing import Literal
 
 from geomcad import tol
 from geomcad.errors import ParameterError
+from geomcad.sheet.lang import Lang, Words, current
 
 Quantity = Literal["l", "v", "a", "F"]
 
@@ -33,31 +34,27 @@ NICE = (1.0, 2.0, 2.5, 4.0, 5.0)
 #: Mantissas of velocity and acceleration plan factors (1, 2 or 5 × 10^n: easy to read off).
 PLAN_NICE = (1.0, 2.0, 5.0)
 
-_UNITS = {
-    "ru": {"l": "м/мм", "v": "(м/с)/мм", "a": "(м/с²)/мм", "F": "Н/мм"},
-    "en": {"l": "m/mm", "v": "(m/s)/mm", "a": "(m/s²)/mm", "F": "N/mm"},
-}
-_INV_UNITS = {
-    "ru": {"l": "мм/м", "v": "мм/(м/с)", "a": "мм/(м/с²)", "F": "мм/Н"},
-    "en": {"l": "mm/m", "v": "mm/(m/s)", "a": "mm/(m/s²)", "F": "mm/N"},
-}
+#: The units of the factors (``l``, ``v``, ``a``, ``F``; ``inv_*`` for mm per unit), per language.
+WORDS = Words(__package__, "scale")
 
 
 @dataclass(frozen=True)
 class ScaleStyle:
     """How a scale factor is printed: the symbol (``μ`` or ``k``), the direction, the language.
 
-    ``inverse`` prints mm per unit (1/k), as some schools do. Russian uses a decimal comma.
+    ``inverse`` prints mm per unit (1/k), as some schools do. Russian uses a decimal comma. The
+    language defaults to the one being drawn (:func:`geomcad.sheet.lang.current`).
     """
 
     symbol: str = "μ"
     inverse: bool = False
-    lang: Literal["ru", "en"] = "ru"
+    lang: Lang = field(default_factory=current)
 
 
-def fmt_number(x: float, lang: str = "ru", digits: int = 6) -> str:
+def fmt_number(x: float, lang: str | None = None, digits: int = 6) -> str:
     """A number for a sheet: up to ``digits`` significant digits, no trailing zeros, a decimal
-    comma in Russian, a typographic minus."""
+    comma in Russian (a point in English), a typographic minus; ``lang`` defaults to the
+    language being drawn."""
     if x == 0.0:
         return "0"
     s = f"{x:.{digits}g}"
@@ -65,7 +62,7 @@ def fmt_number(x: float, lang: str = "ru", digits: int = 6) -> str:
         mant, exp = s.split("e")
         s = f"{mant}·10^{{{int(exp)}}}"
     s = s.replace("-", "\u2013")
-    return s.replace(".", ",") if lang == "ru" else s
+    return s.replace(".", ",") if (lang or current()) == "ru" else s
 
 
 @dataclass(frozen=True)
@@ -107,9 +104,10 @@ class Scale:
             return f"{fmt_number(float(r))}:1"
         return f"1:{fmt_number(float(1 / r))}"
 
-    def label(self, style: ScaleStyle = ScaleStyle()) -> str:
+    def label(self, style: ScaleStyle | None = None) -> str:
         """The factor as the subject writes it, as label markup: ``μ_l = 0,005 м/мм``."""
-        unit = (_INV_UNITS if style.inverse else _UNITS)[style.lang][self.q]
+        style = style or ScaleStyle()
+        unit = WORDS(f"inv_{self.q}" if style.inverse else self.q, style.lang)
         value = 1.0 / self.k if style.inverse else self.k
         q = "V" if self.q == "v" and style.symbol == "μ" else self.q
         return f"{style.symbol}_{q} = {fmt_number(value, style.lang)} {unit}"

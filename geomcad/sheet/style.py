@@ -1,4 +1,5 @@
-"""Roles and their line styles (GOST 2.303 ≈ ISO 128-2), and dash patterns fitted to each line.
+"""Roles and their line styles (GOST 2.303 on a Russian sheet, ISO 128 on an English one), and dash
+patterns fitted to each line.
 
 Every item on a sheet has a role: what it is on the drawing. The role fixes its layer (one SVG
 group per role) and its line: weight as a multiple of the main line S, type (solid, dashed,
@@ -12,9 +13,10 @@ cross; SVG's ``stroke-dasharray`` alone does not do that, so :func:`fit_open` an
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Literal
 
+from geomcad.sheet.lang import Lang, current
 from geomcad.sheet.model import Dash
 
 LineType = Literal["solid", "dashed", "dashdot", "twodot"]
@@ -57,6 +59,36 @@ STYLES: dict[str, Style] = {
 DASHED = (2.0, 4.0, 8.0, 1.5)  # min, target, max dash; gap
 DASHDOT = (5.0, 12.0, 30.0, 1.5, 0.5)  # min, target, max dash; gap either side of the dot; dot
 TWODOT = (5.0, 12.0, 30.0, 1.3, 0.5)
+#: ISO 128-20's line elements for an English sheet, at the narrow line of ISO 128-24's line group
+#: 0.7 (d = 0.35 mm): dash 12d, long dash 24d, space 3d, dot 0.5d; the dash is still fitted to
+#: each line (ISO 128-20: lines start and end with a dash, and cross at dashes) within
+#: 0.7-1.4 times its length.
+ISO_D = 0.35
+ISO_DASHED = (8.5 * ISO_D, 12 * ISO_D, 17 * ISO_D, 3 * ISO_D)
+ISO_DASHDOT = (17 * ISO_D, 24 * ISO_D, 34 * ISO_D, 3 * ISO_D, 0.5 * ISO_D)
+ISO_TWODOT = ISO_DASHDOT
+
+
+def patterns(
+    lang: Lang | None = None,
+) -> tuple[tuple[float, ...], tuple[float, ...], tuple[float, ...]]:
+    """(dashed, dash-dot, two-dot) dash parameters of ``lang`` (default: the language being
+    drawn): GOST 2.303 in Russian, ISO 128-20 in English."""
+    if (lang or current()) == "ru":
+        return DASHED, DASHDOT, TWODOT
+    return ISO_DASHED, ISO_DASHDOT, ISO_TWODOT
+
+
+#: ISO 128-20's narrow line is half the wide one (line group 0.7: 0.35 and 0.7 mm).
+ISO_NARROW = 1 / 2
+
+
+def for_language(st: Style, lang: str) -> Style:
+    """A role's style on a sheet drawn in ``lang``: an English sheet draws GOST's thin lines
+    (S/3) as ISO 128's narrow lines (S/2); a Russian one keeps them."""
+    if lang == "ru" or not 0.0 < st.weight < ISO_NARROW:
+        return st
+    return replace(st, weight=ISO_NARROW)
 
 
 def style(role: str) -> Style:
@@ -69,10 +101,11 @@ def style(role: str) -> Style:
 
 def _gap_pattern(line: LineType) -> tuple[tuple[float, ...], float, float, float]:
     """(the gap's own pattern between two dashes, its length, dash min, dash target)."""
+    dashed, dashdot, twodot = patterns()
     if line == "dashed":
-        lo, target, _hi, gap = DASHED
+        lo, target, _hi, gap = dashed
         return (gap,), gap, lo, target
-    lo, target, _hi, s, dot = DASHDOT if line == "dashdot" else TWODOT
+    lo, target, _hi, s, dot = dashdot if line == "dashdot" else twodot
     dots = 1 if line == "dashdot" else 2
     pat: tuple[float, ...] = (s,) + (dot, s) * dots
     return pat, sum(pat), lo, target

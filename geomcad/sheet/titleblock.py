@@ -24,12 +24,13 @@ from dataclasses import dataclass, fields, replace
 from pathlib import Path
 
 from geomcad.errors import ParameterError
+from geomcad.sheet.lang import LANGS, Words, check_lang
 
 #: The file in the working directory whose ``[sheet]`` table ``geomcad build`` reads.
 CONFIG_FILE = "geomcad.toml"
 
-#: Лит. of a student's work (GOST 2.103: "У", учебный документ).
-STUDENT_STAGE = "У"
+#: Лит. of a student's work (GOST 2.103: "У", учебный документ), from the Russian caption table.
+STUDENT_STAGE = Words(__package__, "frame")("student_stage", "ru")
 
 
 @dataclass(frozen=True)
@@ -42,7 +43,11 @@ class TitleData:
     - ``date``: графа 13 of the Разраб. row (any text, e.g. ``24.11.26``).
     - ``designation``: графа 2 (and 26), one for every sheet of a document; empty keeps the
       problem's own designation.
-    - ``stage``: Лит. (графа 4), "У" for coursework.
+    - ``stage``: Лит. (графа 4), "У" for coursework; on an English sheet, ISO 7200's document
+      status (the Russian "У" is not carried over).
+    - ``revision``: ISO 7200's revision index (English sheets).
+    - ``lang``: the language the sheets are drawn in (``ru`` or ``en``; empty: Russian, or what
+      a table under these data says).
     """
 
     student: str = ""
@@ -55,6 +60,8 @@ class TitleData:
     date: str = ""
     designation: str = ""
     stage: str = STUDENT_STAGE
+    revision: str = ""
+    lang: str = ""
 
     @classmethod
     def keys(cls) -> tuple[str, ...]:
@@ -80,6 +87,13 @@ class TitleData:
                     f"is not a title-block field (known: {', '.join(known)})",
                 )
             values[key] = _text(f"{where}.{key}", value)
+        if values.get("lang"):
+            try:
+                check_lang(values["lang"])
+            except ValueError:
+                raise ParameterError(
+                    f"{where}.lang", values["lang"], f"must be one of {', '.join(LANGS)}"
+                ) from None
         return cls(**values)
 
     @classmethod
@@ -113,7 +127,9 @@ class TitleData:
     @property
     def empty(self) -> bool:
         """True when no person, place or date is given (the stage alone does not count)."""
-        return not any(getattr(self, f.name) for f in fields(self) if f.name != "stage")
+        return not any(
+            getattr(self, f.name) for f in fields(self) if f.name not in ("stage", "lang")
+        )
 
 
 def _text(key: str, value: object) -> str:

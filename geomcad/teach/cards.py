@@ -39,6 +39,13 @@ SCHEME_W, SCHEME_H = RIGHT - LEFT - 2 * PAD, 75.0
 UNIT_TEXT = {"1": "", "": "", "deg": "°", "m/s²": "m/s^2", "rad/s²": "rad/s^2"}
 
 
+def _title(problem: Problem, lang: Lang) -> str:
+    """A problem's title in the cards' language (its package's ``titles`` table)."""
+    from geomcad.registry import title
+
+    return title(problem, lang)
+
+
 @dataclass(frozen=True)
 class CardInfo:
     """Who and what the title blocks name, and the language of the cards' own words."""
@@ -376,7 +383,7 @@ def task_card(
     """The A4 task card of one variant (see the module's docstring)."""
     problem = sol.problem
     words = WORDS[info.lang]
-    title = str(data.get("title")) if data and data.get("title") else problem.title
+    title = str(data.get("title")) if data and data.get("title") else _title(problem, info.lang)
     positions = sol.results.get("positions")
     # numbered positions start at the output's extreme, a dead centre where the links lie
     # folded on one line: the scheme shows position 1 instead

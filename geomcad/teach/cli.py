@@ -28,6 +28,8 @@ CARD_FORMATS = ("svg", "pdf", "png")
 
 def add_variants(sub: Any, add_set: Callable[[argparse.ArgumentParser], None]) -> None:
     """Add ``variants`` to the command line's subparsers."""
+    from geomcad.cli import LANGS
+
     s = sub.add_parser(
         "variants",
         help="make N variants of a problem or file: variant files, task cards, answer key",
@@ -55,9 +57,7 @@ def add_variants(sub: Any, add_set: Callable[[argparse.ArgumentParser], None]) -
     s.add_argument("--key", metavar="NAMES", help="results in the answer key, e.g. l1,l2,r.*")
     s.add_argument("--course", default="TMM", help="the course, for the title blocks")
     s.add_argument("--teacher", default="", help="the teacher (Checked), for the title blocks")
-    s.add_argument(
-        "--lang", default="ru", choices=("ru", "en"), help="the cards' own words (default ru)"
-    )
+    s.add_argument("--lang", default="ru", choices=LANGS, help="the cards' language (default ru)")
     s.add_argument("--format", default="pdf", help="task cards: comma-separated svg,pdf,png")
     s.add_argument(
         "--jobs", type=int, default=1, metavar="N", help="worker processes (default 1; 0: per core)"
@@ -102,7 +102,10 @@ def render_card(
 
     sol = template.solve(values, file_id)
     data = template.variant_data(values) if template.is_file else None
-    sheet = cards.task_card(sol, number, width, columns, info, data, template.stem)
+    from geomcad.sheet.lang import language
+
+    with language(info.lang):
+        sheet = cards.task_card(sol, number, width, columns, info, data, template.stem)
     svg = to_svg(sheet)
     out: dict[str, bytes] = {}
     if "svg" in formats:
@@ -175,7 +178,7 @@ def cmd_variants(ns: argparse.Namespace) -> int:
         rows = keys.rows([v.results for v in drawn.variants], columns, numbers)
         title = str(template.data.get("title", "")) if template.data else ""
         sheets = cards.answer_sheets(
-            title or problem.title, columns, units, rows, info, template.stem
+            title or cards._title(problem, info.lang), columns, units, rows, info, template.stem
         )
         answer_pdfs: list[bytes] = run(_sheet_pdf, [(sh,) for sh in sheets])
 
