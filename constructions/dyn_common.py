@@ -1,5 +1,8 @@
 """Drawing helpers shared by the dynamics sheets (2013-9, kulisa-23110713): loads on free-body
-diagrams at a force scale, with their values."""
+diagrams at a force scale, with their values.
+
+Sheet side: it draws through :mod:`geomcad.sheet` and only sheet modules (``sheets_*.py``) import
+it; no problem module (``p*.py``) may. Its words are in ``strings/<lang>/dyn_common.toml``."""
 
 from __future__ import annotations
 
@@ -9,11 +12,14 @@ from typing import Any
 
 from geomcad import tol
 from geomcad.geom import Vec
-from geomcad.sheet import Viewport, fmt_number
+from geomcad.sheet import Scale, Viewport, fmt_number
 from geomcad.sheet.drawing import ARROW_LEN
+from geomcad.sheet.lang import Words, current
 from geomcad.sheet.loads import force, moment
+from geomcad.sheet.scale import ScaleStyle
 
 ORIGIN = Vec(0.0, 0.0)
+WORDS = Words(__package__, "dyn_common")
 
 #: A force arrow shorter than this (mm) is drawn this long, so that its head shows.
 #: A force shorter than this at μ_F (two arrowheads) cannot be read as an arrow: it is drawn as
@@ -22,8 +28,14 @@ SHORT_MM = 2.0 * ARROW_LEN
 
 
 def f(x: float, digits: int = 4) -> str:
-    """A number for a sheet (decimal comma), ``digits`` significant digits."""
-    return fmt_number(x, digits=digits)
+    """A number for a sheet in the language being drawn (a decimal comma in Russian, a point in
+    English), ``digits`` significant digits."""
+    return fmt_number(x, current(), digits=digits)
+
+
+def mu(k: Scale) -> str:
+    """A scale factor as the subject writes it, in the language being drawn: μ_l = 0,002 м/мм."""
+    return k.label(ScaleStyle(lang=current()))
 
 
 def small(x: float, scale: float, unit: str = "") -> str:
@@ -31,22 +43,21 @@ def small(x: float, scale: float, unit: str = "") -> str:
     (so that the sheet does not print noise that differs from machine to machine)."""
     bound = tol.DERIVED * abs(scale)
     if abs(x) <= bound:
-        return f"|·| < {fmt_number(bound, digits=1)}{(' ' + unit) if unit else ''}"
+        return f"|·| < {f(bound, 1)}{(' ' + unit) if unit else ''}"
     return f"{f(x, 3)}{(' ' + unit) if unit else ''}"
 
 
 def short_note(k_F: float) -> str:
     """The sheet's words for the forces drawn as points."""
-    return (
-        f"силы короче {f(SHORT_MM)} мм при μ_F = {f(k_F)} Н/мм показаны точкой, "
-        "их значения – у точки и в таблице"
-    )
+    return WORDS("short_note", mm=f(SHORT_MM), k_F=f(k_F))
 
 
 @dataclass(frozen=True)
 class Where:
     """How a load is drawn: its label, the point it is drawn at (None: where it acts), whether
-    the arrow arrives there, a preferred label direction, a moment's radius and start angle."""
+    the arrow arrives there, a preferred label direction, a moment's radius and start angle, and
+    the point where a force too short for an arrow is drawn as a dot (None: ``at``): on its line
+    of action outside the body, never on the body's outline."""
 
     label: str
     at: Vec | None = None
@@ -54,6 +65,15 @@ class Where:
     prefer: tuple[float, float] | None = None
     radius: float = 8.0
     start_deg: float = -35.0
+    short_at: Vec | None = None
+
+
+def load(reactions: Any, body: str, name: str) -> Vec | None:
+    """The force of the load ``name`` on ``body`` (``None``: no such force)."""
+    for ld in reactions.loads.get(body, ()):
+        if ld.name == name and ld.force is not None:
+            return ld.force  # type: ignore[no-any-return]
+    return None
 
 
 def draw_loads(
@@ -78,14 +98,15 @@ def draw_loads(
         if ld.force is not None:
             if ld.force.norm <= tol.DERIVED * biggest:
                 continue
-            text = f"{w.label} = {f(ld.force.norm)} Н"
+            text = f"{w.label} = {f(ld.force.norm)} {WORDS('N')}"
             if ld.force.norm / k_F < SHORT_MM:
-                v.dot(w.at or ld.at)
-                v.label(w.at or ld.at, f"{text} (·)", 2.5, prefer=w.prefer, clear=1.0)
+                dot = w.short_at or w.at or ld.at
+                v.dot(dot)
+                v.label(dot, f"{text} (·)", 2.5, prefer=w.prefer, clear=1.0)
                 continue
             force(v, w.at or ld.at, ld.force, k_F, text, w.arrive,
                   role="result", height=2.5, prefer=w.prefer)  # fmt: skip
         elif abs(ld.moment) > 0.0:
-            text = f"{w.label} = {f(abs(ld.moment))} Н·м"
+            text = f"{w.label} = {f(abs(ld.moment))} {WORDS('Nm')}"
             moment(v, w.at or centre, ld.moment, w.radius, text, role="result",
                    start=math.radians(w.start_deg), height=2.5)  # fmt: skip

@@ -74,7 +74,7 @@ from geomcad.problem import (
 )
 from geomcad.units import deg, to_deg
 
-from .spec_2013_7 import PARAMS, SEED_K_F, SEED_K_L
+from .spec_2013_7 import PARAMS
 from .spec_2013_7 import PROBLEM as PROBLEM
 
 
@@ -124,7 +124,6 @@ class Geometry:
     direction: int
     run: Forces
     free: Forces
-    extent: tuple[float, ...]  # model box of the mechanism drawing: x0, y0, x1, y1
 
 
 def _check_params(p: Mapping[str, ParamValue]) -> dict[str, float]:
@@ -214,13 +213,10 @@ def build(p: Mapping[str, ParamValue]) -> Build:
             "direction −1: the governor slowly slows down, the balls sink and every friction "
             "moment turns the other way"
         )
-    box = _extent(B, F, D, H, run, v["l_DH"])
     geo = Geometry(
-        A, B, F, D, H, G, theta, w3, v["m2"], v["m_ball"], v["g"], v["d"], direction, run, free, box
+        A, B, F, D, H, G, theta, w3, v["m2"], v["m_ball"], v["g"], v["d"], direction, run, free
     )
-    seed_data = all(p[q.name] == q.default for q in PARAMS)
-    scales = {"l": sheet_k_l(box, seed_data), "F": sheet_k_F(run, free, seed_data)}
-    return Build(results, c, notes, scales, geo)
+    return Build(results, c, notes, data=geo)
 
 
 def _sign(x: float) -> int:
@@ -370,67 +366,3 @@ def _forces(
         beta,
         omega,
     )
-
-
-def ball_radius(l_DH: float) -> float:
-    """The radius the ball D is drawn with (the problem gives none): 6 % of the arm HD."""
-    return 0.06 * l_DH
-
-
-def _extent(B: Vec, F: Vec, D: Vec, H: Vec, run: Forces, l_DH: float) -> tuple[float, ...]:
-    """The model box of the mechanism drawing: the shaft, the half-governor with its ball, Q and
-    K, with a margin for the force arrows and labels."""
-    rb = ball_radius(l_DH)
-    pts = [B, F, H, run.Q, run.K, Vec(0.0, 0.0), Vec(0.0, B.y), D + Vec(rb, rb), D - Vec(rb, rb)]
-    xs = [q.x for q in pts]
-    ys = [q.y for q in pts]
-    pad = 0.08 * max(max(xs) - min(xs), max(ys) - min(ys))
-    return min(xs) - pad, min(ys) - pad, max(xs) + pad, max(ys) + pad
-
-
-#: The room (mm: width, height) of the mechanism drawing and of the two force plans on the sheet.
-MECH_ROOM = (134.0, 140.0)
-PLAN2_ROOM = (56.0, 100.0)
-PLAN6_ROOM = (92.0, 72.0)
-
-
-def sheet_k_l(box: tuple[float, ...], seed_data: bool) -> float:
-    """k_l of the sheet: the seed's 0.002 m/mm (1:2) for its data when the drawing fits,
-    otherwise the largest GOST 2.302 scale at which it fits its field."""
-    from geomcad.sheet.scale import gost_scale_to_fit
-
-    w, h = box[2] - box[0], box[3] - box[1]
-    room_w, room_h = MECH_ROOM
-    if seed_data and w / SEED_K_L <= room_w and h / SEED_K_L <= room_h:
-        return SEED_K_L
-    return gost_scale_to_fit(w, h, room_w, room_h).k
-
-
-def plan_box(poly: ForcePolygon) -> tuple[float, float, float, float]:
-    """The plan extent (N) of a force polygon: xmin, ymin, xmax, ymax of its vertices."""
-    xs = [q.x for vv in poly.vectors for q in (vv.tail, vv.head)]
-    ys = [q.y for vv in poly.vectors for q in (vv.tail, vv.head)]
-    return min(xs), min(ys), max(xs), max(ys)
-
-
-def sheet_k_F(run: Forces, free: Forces, seed_data: bool) -> float:
-    """k_F of the force plans: the seed's 1 N/mm for its data when both plans fit their room,
-    otherwise the smallest factor 1, 2, 2.5, 4 or 5 × 10^n at which they do. The plan of arm 6
-    also carries the frictionless polygon, drawn from the same pole."""
-    from geomcad.sheet.scale import nice_factor
-
-    need = 0.0
-    for polys, room in (((run.tri2,), PLAN2_ROOM), ((run.poly6, free.poly6), PLAN6_ROOM)):
-        boxes = [plan_box(pp) for pp in polys]
-        w = max(b[2] for b in boxes) - min(b[0] for b in boxes)
-        h = max(b[3] for b in boxes) - min(b[1] for b in boxes)
-        need = max(need, w / room[0], h / room[1])  # N per mm
-    if seed_data and need <= SEED_K_F:
-        return SEED_K_F
-    return nice_factor(need, 1.0, "F").k
-
-
-def draw(solution: Any) -> list[tuple[str, Any]]:
-    from .sheets_2013_7 import sheets
-
-    return sheets(solution)

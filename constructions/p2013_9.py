@@ -49,7 +49,6 @@ from geomcad.dynamics.analogues import Array, remember_last
 from geomcad.errors import ParameterError
 from geomcad.geom import Vec
 from geomcad.problem import Build, ParamValue
-from geomcad.sheet.scale import nice_factor
 from geomcad.units import deg
 
 from .spec_2013_9 import PROBLEM as PROBLEM
@@ -65,9 +64,6 @@ NOTES = [
     "J_pr·φ''); the correct line is (J + m·r²·cos²φ)·φ'' − ½·m·r²·sin 2φ·φ'² = "
     "M(t) − ½·c·r²·sin 2φ − k·r²·cos²φ·φ'",
 ]
-
-#: Force arrows on the sheet: the largest force gets at most this many mm.
-FORCE_ROOM_MM = 40.0
 
 
 @dataclass(frozen=True)
@@ -102,7 +98,6 @@ class Data:
     yoke: Yoke
     reactions: Reactions
     motion: Trajectory
-    k_F: float
     M_t: float
 
 
@@ -199,11 +194,9 @@ def build(p: Mapping[str, ParamValue]) -> Build:
         "phi_T": phi_T,
         "omega_T": omega_T,
     }
-    biggest = max(n_pin, results["F_spring"], results["F_damper"], results["F_inertia_rod"])
-    k_F = nice_factor(biggest, FORCE_ROOM_MM, "F").k if biggest > 0.0 else 1.0
     notes = [*NOTES, f"the motion from rest is integrated by {ode_settings(traj.method)}"]
-    data = Data(r, phi, dphi, ddphi, x, xd, xdd, y, R, traj, k_F, float(M(t)))
-    return Build(results, c, notes, {"F": k_F}, data)
+    data = Data(r, phi, dphi, ddphi, x, xd, xdd, y, R, traj, float(M(t)))
+    return Build(results, c, notes, data=data)
 
 
 def kinetostatics(
@@ -224,26 +217,21 @@ def kinetostatics(
     Disc: M, M_Ф1 = −J·φ'', the bearing R_01 at O, the rod's push R_21 at A and a balancing
     moment M_b (zero when φ'' satisfies the equation of motion). Rod: Ф_2 = −m·x'', the spring
     −c·x and the damper −k·x' along its axis, the pin's push R_12 at A normal to the slot, and
-    its guide's reaction R_02 (across the axis) and couple M_02.
+    its guide's reaction R_02 (across the axis) and couple M_02. The loads' names are keys
+    (``Phi_2``, ``M_Phi1``, ``F_spring``, ``F_damper``); the sheets write them in their language.
     """
     ks = Kinetostatics("kinetostatics of disc and rod")
     A = Vec(r * math.cos(phi), r * math.sin(phi))
     S2 = Vec(0.0, x + ROD.centre * r)
     top = x + ROD.top * r
-    ks.body("1", J=J, eps=ddphi, inertia_names=("", "M_{Ф1}"))
-    ks.body("2", m=m, centre=S2, a=(0.0, xdd), inertia_names=("Ф_2", ""))
+    ks.body("1", J=J, eps=ddphi, inertia_names=("Phi_1", "M_Phi1"))
+    ks.body("2", m=m, centre=S2, a=(0.0, xdd), inertia_names=("Phi_2", "M_Phi2"))
     ks.torque("1", "M(t)", M)
-    ks.force("2", "F_{упр}", Vec(0.0, -c * x), Vec(-ROD.bar_half * r, top))
-    ks.force("2", "F_д", Vec(0.0, -k * xd), Vec(ROD.bar_half * r, top))
+    ks.force("2", "F_spring", Vec(0.0, -c * x), Vec(-ROD.bar_half * r, top))
+    ks.force("2", "F_damper", Vec(0.0, -k * xd), Vec(ROD.bar_half * r, top))
     ks.joint("R_{01}", None, "1", (0.0, 0.0))
     ks.contact("R_{12}", "1", "2", A, (0.0, 1.0))
     ks.contact("R_{02}", None, "2", Vec(0.0, 0.5 * sum(ROD.guide) * r), (1.0, 0.0))
     ks.couple("M_{02}", None, "2")
     ks.balancing_torque("M_b", "1")
     return ks
-
-
-def draw(solution: Any) -> list[tuple[str, Any]]:
-    from .sheets_2013_9 import sheets
-
-    return sheets(solution)

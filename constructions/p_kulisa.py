@@ -56,8 +56,6 @@ from geomcad.dynamics.analogues import Array, remember_last
 from geomcad.errors import ConstructionError, ParameterError
 from geomcad.geom import Vec
 from geomcad.problem import Build, ParamValue
-from geomcad.sheet.motion import Frames, turn
-from geomcad.sheet.scale import nice_factor
 from geomcad.units import deg
 
 from .spec_kulisa import PROBLEM as PROBLEM
@@ -77,11 +75,6 @@ NOTES = [
     "the yoke moves the roller's centre with the yoke, x_C3 = x_C30 + (R3/(r3 + R3))·OA·cos φ, "
     "as its own v_C3x = R3/(r3 + R3)·v2 says",
 ]
-
-#: The largest reaction on the free-body sheet gets at most this many mm.
-FORCE_ROOM_MM = 45.0
-#: The largest velocity on the scheme gets at most this many mm.
-VELOCITY_ROOM_MM = 36.0
 
 
 @dataclass(frozen=True)
@@ -118,8 +111,6 @@ class Data:
     dynamic: Reactions
     static: Reactions
     F_x_kinetostatic: float
-    k_F: float
-    k_v: float
 
 
 def _nonneg(p: Mapping[str, ParamValue], name: str, what: str) -> float:
@@ -232,17 +223,10 @@ def build(p: Mapping[str, ParamValue]) -> Build:
         "t_reach": arr.t,
         "omega_ode": arr.omega,
     }
-    biggest = max(n_a, abs(r_o.x), abs(r_o.y), f_x, *_loads_max(dyn), *_loads_max(st))
-    k_F = nice_factor(biggest, FORCE_ROOM_MM, "F").k
-    k_v = nice_factor(w * OA, VELOCITY_ROOM_MM, "v").k
     notes = [*NOTES, f"t_reach and omega_ode: {ode_settings(arr.trajectory.method)}"]
     f_ks = abs(st.magnitudes["F_x"])
-    data = Data(phi, phi0, w, eps, lay, y, rl, C2, C3, model, arr, dyn, st, f_ks, k_F, k_v)
-    return Build(results, c, notes, {"F": k_F, "v": k_v}, data)
-
-
-def _loads_max(r: Reactions) -> list[float]:
-    return [ld.force.norm for lds in r.loads.values() for ld in lds if ld.force is not None]
+    data = Data(phi, phi0, w, eps, lay, y, rl, C2, C3, model, arr, dyn, st, f_ks)
+    return Build(results, c, notes, data=data)
 
 
 def kinetostatics(
@@ -272,10 +256,10 @@ def kinetostatics(
     if inertia:
         a2, _ = y.body.acceleration(omega, eps)
         a3, e3 = rl.acceleration(omega, eps)
-        ks.body("1", J=m1 * R1 * R1 / 2.0, eps=eps, inertia_names=("", "M_{Ф1}"))
-        ks.body("2", m=m2, centre=C2, a=a2, inertia_names=("Ф_2", ""))
+        ks.body("1", J=m1 * R1 * R1 / 2.0, eps=eps, inertia_names=("Phi_1", "M_Phi1"))
+        ks.body("2", m=m2, centre=C2, a=a2, inertia_names=("Phi_2", "M_Phi2"))
         ks.body("3", m=m3, J=m3 * rho3 * rho3, centre=C3, a=a3, eps=e3,
-                inertia_names=("Ф_3", "M_{Ф3}"))  # fmt: skip
+                inertia_names=("Phi_3", "M_Phi3"))  # fmt: skip
     else:
         ks.body("1")
         ks.body("2", centre=C2)
@@ -292,12 +276,6 @@ def kinetostatics(
     else:
         ks.balancing_force("F_x", "3", C3, (1.0, 0.0))
     return ks
-
-
-def draw(solution: Any) -> list[tuple[str, Any]]:
-    from .sheets_kulisa import sheets
-
-    return sheets(solution)
 
 
 def turns(data: Data) -> int:
@@ -318,61 +296,3 @@ def sweep(data: Data, n: int = 361) -> dict[str, np.ndarray]:
         "dI_pr": data.model.dJ_pr(phis),
         "omega": omega_curve(data.model, data.phi0, phis),
     }
-
-
-#: The slot's half length in units of OA (the animation's yoke).
-SLOT_HALF = 1.25
-
-
-def motion(solution: Any, frames: int) -> Frames:
-    """The mechanism over one turn of the flywheel from the sheets' position φ, from the model's
-    own motions (the yoke on its pin, the roller driven by the yoke), and the velocity plan at
-    the constant ω1 the flywheel has at φ: pa (the pin), pc2 (the yoke), pc3 (the roller's axis);
-    a c2 is the slip of the pin along the slot."""
-    data: Data = solution.data
-    p = {k: float(v) for k, v in solution.params.items()}
-    _model, yoke, roller = mechanism(
-        p["m1"], p["R1"], p["OA"], p["m2"], p["m3"], p["R3"], p["r3"], p["rho3"], p["M"], data.lay
-    )
-    phi = turn(frames, data.phi)
-    y, rl = yoke(phi), roller(phi)
-    OA, R3, r3 = p["OA"], p["R3"], p["r3"]
-
-    def pts(x: Array, yy: Array) -> np.ndarray:
-        return np.column_stack([np.broadcast_to(x, phi.shape), np.broadcast_to(yy, phi.shape)])
-
-    zero = np.zeros_like(phi)
-    rim = rl.theta + math.pi / 2.0  # a mark on the roller's rim, upwards at the start
-    points = {
-        "O": pts(zero, zero),
-        "A": pts(y.pin.x, y.pin.y),
-        "S1": pts(y.pin.x, zero + SLOT_HALF * OA),
-        "S2": pts(y.pin.x, zero - SLOT_HALF * OA),
-        "Y": pts(y.pin.x, zero),
-        "C2": pts(y.body.x, zero),
-        "D": pts(rl.x, zero),
-        "C3": pts(rl.x, rl.y),
-        "K": pts(rl.x + R3 * np.cos(rim), rl.y + R3 * np.sin(rim)),
-    }
-    w = data.omega
-    base = -r3 - R3
-    xs = np.concatenate([points["C3"][:, 0] - R3, points["C3"][:, 0] + R3])
-    return Frames(
-        title=f"{PROBLEM.id}: один оборот маховика",
-        phi=phi,
-        points=points,
-        links=(("O", "A"), ("S1", "S2"), ("Y", "C2", "D"), ("C3", "K")),
-        joints=("O", "A", "C3"),
-        labelled=("O", "A", "C2", "C3", "K"),
-        fixed=("O",),
-        traced=("A", "K"),
-        guides=(((float(xs.min()), base), (float(xs.max()), base)),),
-        discs={"O": (p["R1"],), "C3": (R3, r3) if r3 > 0.0 else (R3,)},
-        velocities={
-            "A": pts(y.pin.vx * w, y.pin.vy * w),
-            "C2": pts(y.body.vx * w, y.body.vy * w),
-            "C3": pts(rl.vx * w, rl.vy * w),
-        },
-        plan_edges=(("A", "C2"),),
-        omega1=w,
-    )

@@ -1,86 +1,200 @@
 """2013-7's drawing sheet: the half-governor with its friction circles and reaction lines, the
-joints enlarged, and the force plans of the sleeve and of the arm.
+joints enlarged, and the force plans of the sleeve and of the arm, composed by the layout step
+(geomcad.sheet.compose: no hand-placed view positions).
 
-A3 landscape.
-- Top left: the right half of the governor at k_l (the seed's 0.002 m/mm, 1:2, when it fits;
-  else the largest GOST scale that does), with the friction circles at B, F and H drawn to scale,
-  link 3's line of action (their common tangent), the lines of G_6 and F_i through D, the point Q
-  where R_36's line meets G_6's, P's line through Q, the point K where it meets F_i's line, and
-  R_76's line from K tangent to the friction circle at H; the forces on the arm and the sleeve as
-  arrows; the angle β.
-- Bottom left: the joints B, F, H enlarged (at the largest GOST scale that shows the friction
-  circle at most 24 mm across), each with the friction circle, the pin, the links' centre lines,
-  the reaction touching the circle and the relative rotation it opposes.
-- Middle: the force triangle of the sleeve 2 (G_2 + R_32 + R_42 = 0) and the force polygon of arm
-  6 (G_6 + R_36 + F_i + R_76 = 0, with P = G_6 + R_36) at k_F, the frictionless polygon dashed.
-- Right: the given data, the results beside the seed's, the order of construction.
+A3 landscape:
+- the right half of the governor (the largest GOST scale that fits), with the friction circles at
+  B, F and H drawn to scale, link 3's line of action (their common tangent), the lines of G_6
+  and F_i through D, the point Q where R_36's line meets G_6's, P's line through Q, the point K
+  where it meets F_i's line, and R_76's line from K tangent to the friction circle at H; the
+  forces as arrows along their lines (their senses), each outside the link it acts on; the angle
+  β; the links numbered;
+- the joints B, F, H enlarged at one GOST scale, each with the friction circle, the pin, the
+  links' centre lines, the reaction touching the circle and the relative rotation it opposes;
+- the force triangle of the sleeve 2 (G_2 + R_32 + R_42 = 0) and the force polygon of arm 6
+  (G_6 + R_36 + F_i + R_76 = 0, with P = G_6 + R_36) at one μ_F, the frictionless polygon
+  dashed, both drawn by the one polygon drawer (geomcad.sheet.views.draw_polygon);
+- the given data, the results with and without friction, the order of construction.
+
+Every word comes from ``strings/<lang>/sheets_2013_7.toml``.
 """
 
 from __future__ import annotations
 
 import math
-from fractions import Fraction
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 from geomcad.forces import ForcePolygon, FrictionCircle
 from geomcad.geom import Circle, Line, Vec, line_circle
-from geomcad.sheet import Drawing, Scale, Sheet, TitleBlock, Viewport, fmt_number, start
-from geomcad.sheet.scale import GOST_RATIOS
+from geomcad.sheet import Sheet, TitleBlock, Viewport, fmt_number, start, symbols
+from geomcad.sheet import views as V
+from geomcad.sheet.compose import (
+    Column,
+    Field,
+    Figure,
+    Node,
+    Row,
+    Spacer,
+    View,
+    arrange,
+    compose,
+    text_width,
+)
+from geomcad.sheet.lang import Words, current
+
+from .p2013_7 import Geometry
 
 if TYPE_CHECKING:
     from geomcad.problem import Solution
 
-from .p2013_7 import MECH_ROOM, PLAN2_ROOM, PLAN6_ROOM, ball_radius, plan_box
+WORDS = Words(__package__, "sheets_2013_7")
 
-#: Sheet regions (mm). The mechanism's room starts at MECH_AT; the force plan of arm 6 and the
-#: order of construction are in the middle column; the sleeve's plan, the tables and the notes on
-#: the right; the enlarged joints along the bottom, left of the title block.
-MECH_AT = (24.0, 26.0)
-MID_X = 163.0
-PLAN6_AT = (164.0, 30.0)
-STEPS_AT = (163.0, 104.0, 95.0)  # x, y, width
-PLAN2_AT = (264.0, 24.0)
-GIVEN_AT = (326.0, 10.0)
-RIGHT_X = 264.0
-INSETS = (22.0, 176.0, 228.0, 290.0)  # x0, y0, x1, y1
-#: Force arrows on the mechanism drawing are this long (mm); they show lines and senses only.
+#: Force arrows on the mechanism drawing are this long (mm): they show lines and senses only,
+#: the magnitudes are read off the force plans.
 ARROW_MM = 14.0
-#: An inset shows its friction circle at most this many mm across.
-INSET_CIRCLE_MM = 24.0
+
+
+def _n(x: float, digits: int = 4) -> str:
+    """A number in the language being drawn."""
+    return fmt_number(x, current(), digits=digits)
+
+
+def scales(sol: Solution) -> dict[str, float]:
+    """The sheet's k_l and k_F as the layout step chooses them (for ``verify``), and k_j of the
+    enlarged joints (absent without friction)."""
+    tree, views = _tree(sol)
+    lay = arrange(tree, Field.of_format("A3"))
+    out = {"l": lay[views["mech"]].scale.k, "F": lay.scale("F").k}  # type: ignore[union-attr]
+    if "joints" in lay.groups:
+        out["j"] = lay.scale("joints").k
+    return out
+
+
+def extent(geo: Geometry) -> tuple[float, float, float, float]:
+    """The model box of the mechanism drawing: the shaft, the half-governor with its ball, Q and
+    K, with a margin for the force arrows and labels."""
+    run = geo.run
+    rb = ball_radius(geo.D.dist(geo.H))
+    B, F, D, H = geo.B, geo.F, geo.D, geo.H
+    pts = [B, F, H, run.Q, run.K, Vec(0.0, 0.0), Vec(0.0, B.y), D + Vec(rb, rb), D - Vec(rb, rb)]
+    xs = [q.x for q in pts]
+    ys = [q.y for q in pts]
+    pad = 0.08 * max(max(xs) - min(xs), max(ys) - min(ys))
+    return min(xs) - pad, min(ys) - pad, max(xs) + pad, max(ys) + pad
+
+
+def ball_radius(l_DH: float) -> float:
+    """The radius the ball D is drawn with (the problem gives none): 6 % of the arm HD."""
+    return 0.06 * l_DH
+
+
+def inset_reach(pin_d: float, rho: float) -> float:
+    """The half-size (model units) of a joint's enlarged view: the pin with room round it."""
+    return max(0.52 * pin_d, 2.5 * rho)
 
 
 def sheets(sol: Solution) -> list[tuple[str, Sheet]]:
     """The main sheet of 2013-7."""
-    geo = sol.data
-    kl = Scale(sol.scales["l"], "l")
-    kf = Scale(sol.scales["F"], "F")
+    tree, views = _tree(sol)
+    lay = arrange(tree, Field.of_format("A3"))
+    kl = lay[views["mech"]].scale
+    assert kl is not None
     tb = TitleBlock(
-        title="Силовой расчёт центробежного регулятора с учётом трения",
-        designation="ТММ.2013-7.01",
+        title=WORDS("tb"),
+        designation=WORDS("designation"),
         scale=kl.ratio_text(),
+        lang=current(),
     )
     d = start("A3", tb)
-    d.text("Центробежный регулятор: круги трения и планы сил", (MECH_AT[0], 13.0), 5.0)
-    d.text(
-        f"Правая половина, {kl.label()}   (M {kl.ratio_text() or '—'})",
-        (MECH_AT[0], 25.0),
-        3.5,
-    )
-    _mechanism(d, geo, kl)
-    _insets(d, geo, kl)
-    _plans(d, geo, kf)
-    _panel(d, sol)
+    compose(d, tree)
     return [("", d.finish())]
+
+
+def _tree(sol: Solution) -> tuple[Node, dict[str, View]]:
+    """The sheet's views and how they share the field."""
+    geo: Geometry = sol.data
+    run, free = geo.run, geo.free
+    mech = Figure(
+        extent(geo), lambda v: _mechanism(v, geo), title=WORDS("mech"), margin=5.0, weight=4.0
+    )
+    # the joints enlarged (one scale), or a note where there are no friction circles
+    joints: list[View] = []
+    if run.rho > 0.0:
+        S = Vec(0.0, geo.B.y)
+        u76 = run.R76_line.d
+        specs = (
+            (run.fc_B, [geo.F, S], run.link3.line, run.u32, "R_{32}", -1, "ω_{23}"),
+            (run.fc_F, [geo.B, geo.H, geo.D], run.link3.line, run.link3.line.d, "R_{36}", -1,
+             "ω_{63}"),
+            (run.fc_H, [Vec(0.0, 0.0), geo.D], run.R76_line, u76, "R_{76}", 1, "ω_{67}"),
+        )  # fmt: skip
+        for fc, towards, line, force, fname, flip, wname in specs:
+            r = inset_reach(geo.d, fc.arm)
+            box = (fc.c.x - r, fc.c.y - r, fc.c.x + r, fc.c.y + r)
+
+            def draw(v: Viewport, fc: FrictionCircle = fc, towards: list[Vec] = towards,
+                     line: Line = line, force: Vec = force, fname: str = fname,
+                     sense: int = flip * fc.sense, wname: str = wname) -> None:  # fmt: skip
+                _inset(v, fc, towards, line, force, fname, sense, wname, geo.d)
+
+            joints.append(
+                Figure(box, draw, title=WORDS("joint", name=fc.name), group="joints",
+                       show_scale=False, margin=2.0)
+            )  # fmt: skip
+        joint_row: Node | View = Row(
+            *joints, title=WORDS("joints"), group="joints", title_height=3.5
+        )
+    else:
+        joint_row = V.Text(paragraph=WORDS("no_friction"), width=150.0, height=3.5)
+    names = {"G_6": "G_6", "R_36": "R_{36}", "F_i": WORDS("Phi6"), "R_76": "R_{76}"}
+    plan6 = Figure(
+        _polys_box([run.poly6, free.poly6]),
+        lambda v: _plan6(v, geo, names),
+        title=WORDS("plan6"),
+        quantity="F",
+        series="nice",
+        group="F",
+        margin=5.0,
+        weight=2.0,
+    )
+    plan2 = V.Polygon(
+        run.tri2,
+        names={"G_2": "G_2", "R_32": "R_{32}", "R_42": "R_{42}"},
+        title=WORDS("plan2"),
+        group="F",
+        margin=5.0,
+        weight=2.0,
+    )
+    low = Spacer((10.0, TITLE_BLOCK[1]))
+    # the middle and the right columns keep the title block's corner free
+    tree = Row(
+        Column(
+            Row(mech, plan6, plan2, weights=(0.42, 0.34, 0.24)),
+            joint_row,
+            Row(_steps(geo), Spacer((TITLE_BLOCK[0] - 70.0, 10.0))),
+        ),
+        Column(_given(sol), _compare(geo), _results(sol), low),
+        weights=(0.82, 0.18),
+    )
+    return tree, {"mech": mech, "plan6": plan6, "plan2": plan2}
+
+
+def _polys_box(polys: list[ForcePolygon]) -> tuple[float, float, float, float]:
+    xs = [q.x for p in polys for vv in p.vectors for q in (vv.tail, vv.head)]
+    ys = [q.y for p in polys for vv in p.vectors for q in (vv.tail, vv.head)]
+    return min(xs), min(ys), max(xs), max(ys)
 
 
 # -- the mechanism --------------------------------------------------------------------------------
 
 
-def _mechanism(d: Drawing, geo: Any, k: Scale) -> None:
+def _mechanism(v: Viewport, geo: Geometry) -> None:
+    """The half-governor with its friction circles, the lines of action, Q, K and β; the
+    forces as arrows of one length along their lines (their senses; their magnitudes are on
+    the plans), each on its line outside the link it acts on, its head at its point."""
     run = geo.run
-    x0, y0, x1, y1 = geo.extent
-    at = (MECH_AT[0] + MECH_ROOM[0] / 2.0, MECH_AT[1] + MECH_ROOM[1] / 2.0)
-    v = d.viewport(k, ((x0 + x1) / 2.0, (y0 + y1) / 2.0), at)
+    k = v.scale
+    _x0, y0, _x1, y1 = extent(geo)
     B, F, D, H = geo.B, geo.F, geo.D, geo.H
     S = Vec(0.0, B.y)  # the sleeve's centre on the shaft
     over = k.model(4.0)
@@ -90,7 +204,8 @@ def _mechanism(d: Drawing, geo: Any, k: Scale) -> None:
     v.seg(top + Vec(0.0, over), bottom - Vec(0.0, over), "centre")
     v.seg(Vec(0.0, 0.0), H, "link")
     v.seg(S, B, "link")
-    v.slider(S, (0.0, 1.0))
+    # the sleeve slides on the shaft: a block without a joint circle (GOST 2.770)
+    symbols.block(v.sheet, v.p(S), v.paper_dir(Vec(0.0, 1.0)), with_joint=False)
     # arm 6 with the ball D, link 3
     v.seg(H, D, "link")
     v.seg(B, F, "link")
@@ -117,9 +232,10 @@ def _mechanism(d: Drawing, geo: Any, k: Scale) -> None:
     m = k.model(ARROW_MM)
     u36 = run.link3.line.d
     _force(v, D, D + Vec(0.0, -m), "G_6", (1.0, -1.0))
-    _force(v, D, D + Vec(m, 0.0), "Ф_6", (1.0, 1.0))
-    _force(v, run.link3.touch_b, run.link3.touch_b + u36 * m, "R_{36}", (1.0, -1.0))
-    _force(v, run.link3.touch_a, run.link3.touch_a + run.u32 * m, "R_{32}", (-1.0, 1.0))
+    _force(v, D, D + Vec(m, 0.0), WORDS("Phi6"), (1.0, 1.0))
+    # R_36 and R_32 act along link 3's line: drawn beyond F and below B, off the link
+    _force(v, run.link3.touch_b - u36 * m, run.link3.touch_b, "R_{36}", (1.0, 1.0))
+    _force(v, run.link3.touch_a - run.u32 * m, run.link3.touch_a, "R_{32}", (-1.0, -1.0))
     u76 = run.R76_line.d
     _force(v, t76, t76 + u76 * m, "R_{76}", (-1.0, 1.0))
     # the angle β between R_76's line and the horizontal, at K
@@ -133,7 +249,10 @@ def _mechanism(d: Drawing, geo: Any, k: Scale) -> None:
     v.label(D, "D", prefer=(1.0, -1.0), clear=k.mm(ball_radius(geo.D.dist(H))) + 1.0)
     v.label(run.Q, "Q", prefer=(1.0, 0.0))
     v.label(run.K, "K", prefer=(0.0, -1.0), clear=2.0)
+    # the links' numbers (GOST 2.770): sleeve 2, link 3, arm 6, shaft 7
     v.label(S, "2", prefer=(-1.0, -1.0), clear=5.0)
+    v.label((B + F) * 0.5, "3", prefer=(1.0, -1.0), clear=1.5)
+    v.label((H + F) * 0.5, "6", prefer=(1.0, 1.0), clear=1.5)
     v.label(top, "7", prefer=(1.0, 0.0))
 
 
@@ -145,51 +264,8 @@ def _force(v: Viewport, tail: Vec, head: Vec, name: str, prefer: tuple[float, fl
 # -- the enlarged joints --------------------------------------------------------------------------
 
 
-def inset_scale(rho: float, d: float, room_mm: float) -> Scale | None:
-    """The GOST 2.302 scale of the joint insets: the largest at which the friction circle is at
-    most INSET_CIRCLE_MM across and the pin fits the inset; ``None`` when there is no friction
-    circle (f = 0)."""
-    if rho <= 0.0:
-        return None
-    fits = [
-        g
-        for g in GOST_RATIOS
-        if 2.0 * rho * 1000.0 * float(g) <= INSET_CIRCLE_MM and d * 1000.0 * float(g) <= room_mm
-    ]
-    g = fits[-1] if fits else GOST_RATIOS[0]
-    return Scale(float(Fraction(1, 1000) / g), "l")
-
-
-def _insets(d: Drawing, geo: Any, kl: Scale) -> None:
-    run = geo.run
-    x0, y0, x1, y1 = INSETS
-    w = (x1 - x0) / 3.0
-    room = min(w, y1 - y0 - 8.0) - 4.0  # the pin must fit the inset
-    ks = inset_scale(run.rho, geo.d, room)
-    if ks is None or ks.k >= kl.k:
-        why = (
-            "f = 0: круги трения вырождаются в точки, реакции проходят через центры шарниров."
-            if ks is None
-            else "Круги трения достаточно велики на основном чертеже; выносные элементы не нужны."
-        )
-        d.paragraph(why, x0, y0 + 4.0, x1 - x0, 3.5)
-        return
-    S = Vec(0.0, geo.B.y)
-    u76 = run.R76_line.d
-    joints = (
-        (run.fc_B, [geo.F, S], run.link3.line, run.u32, "R_{32}", -1, "ω_{23}"),
-        (run.fc_F, [geo.B, geo.H, geo.D], run.link3.line, run.link3.line.d, "R_{36}", -1, "ω_{63}"),
-        (run.fc_H, [Vec(0.0, 0.0), geo.D], run.R76_line, u76, "R_{76}", 1, "ω_{67}"),
-    )
-    for i, (fc, towards, line, force, fname, flip, wname) in enumerate(joints):
-        box = (x0 + i * w, y0, x0 + (i + 1) * w, y1)
-        _inset(d, ks, box, fc, towards, line, force, fname, flip * fc.sense, wname, geo.d)
-
-
 def _inset(
-    d: Drawing,
-    k: Scale,
-    box: tuple[float, float, float, float],
+    v: Viewport,
     fc: FrictionCircle,
     towards: list[Vec],
     line: Line,
@@ -201,13 +277,9 @@ def _inset(
 ) -> None:
     """One enlarged joint: its friction circle, pin, links, the reaction and the rotation it
     opposes (``sense`` of the rotation of the link the reaction acts on, relative to the other).
-    The title sits over the box, the joint in the middle of the rest."""
-    bx0, by0, bx1, by1 = box
-    centre_at = ((bx0 + bx1) / 2.0, (by0 + 8.0 + by1) / 2.0)
-    top = centre_at[1] - max(k.mm(pin_d / 2.0), k.mm(fc.arm) + 12.0)
-    d.text(f"Шарнир {fc.name}  (M {k.ratio_text()})", (bx0 + 2.0, max(by0 + 3.5, top - 3.0)), 3.5)
-    v = d.viewport(k, fc.c, centre_at)
-    reach = k.model(min(bx1 - bx0, by1 - by0 - 8.0) / 2.0 - 1.0)
+    """
+    k = v.scale
+    reach = inset_reach(pin_d, fc.arm)
     J = fc.c
     # the links' centre lines through the joint, the pin, the friction circle
     dirs = [(q - J).unit() for q in towards]
@@ -222,7 +294,7 @@ def _inset(
     if len(chord) == 2:
         v.seg(chord[0], chord[1], "result")
     u = force.unit()
-    tip = touch + u * k.model(16.0)
+    tip = touch + u * 0.45 * reach
     v.arrow(touch, tip, "vector")
     v.dot(touch, "result")
     v.label(tip, fname, prefer=(u.x, u.y), clear=0.5)
@@ -241,7 +313,8 @@ def _inset(
         else pin_d / 2.0 + k.model(3.0)
     )
     _turn_arrow(v, J, r_w, a_w, sense)
-    v.label(J + Vec.polar(r_w, a_w), wname, height=2.5, prefer=(math.cos(a_w), math.sin(a_w)))
+    v.label(J + Vec.polar(r_w, a_w), wname, height=2.5, prefer=(math.cos(a_w), math.sin(a_w)),
+            clear=0.5)  # fmt: skip
 
 
 def _free_angle(taken: list[Vec]) -> float:
@@ -270,83 +343,30 @@ def _turn_arrow(v: Viewport, c: Vec, r: float, mid: float, sense: int) -> None:
 # -- the force plans ------------------------------------------------------------------------------
 
 
-def _plans(d: Drawing, geo: Any, k: Scale) -> None:
+def _plan6(v: Viewport, geo: Geometry, names: dict[str, str]) -> None:
+    """The polygon of arm 6 by the one polygon drawer, over the frictionless one (dashed, from
+    the same pole: G_6 is common), with P = G_6 + R_36 as its diagonal."""
     run, free = geo.run, geo.free
-    x, y = PLAN2_AT
-    d.text("План сил звена 2,", (x, y - 9.0), 3.5)
-    d.text(k.label(), (x, y - 3.0), 3.5)
-    v2 = _plan_view(d, k, [run.tri2], (x, y), PLAN2_ROOM)
-    _polygon(v2, run.tri2, {"G_2": "G_2", "R_32": "R_{32}", "R_42": "R_{42}"}, "vector")
-    x, y = PLAN6_AT
-    d.text(f"План сил звена 6, {k.label()}", (x - 1.0, y - 5.0), 3.5)
-    v6 = _plan_view(d, k, [run.poly6, free.poly6], (x, y), PLAN6_ROOM)
-    names = {"G_6": "G_6", "R_36": "R_{36}", "F_i": "Ф_6", "R_76": "R_{76}"}
-    # the frictionless polygon first, dashed, under the one with friction (G_6 is common)
     if run.rho > 0.0:
         for vec_ in free.poly6.vectors:
             if vec_.name != "G_6":
-                v6.seg(vec_.tail, vec_.head, "locus")
+                v.seg(vec_.tail, vec_.head, "locus")
     # P = G_6 + R_36 runs beside R_36: P's label goes outside, R_36's inside the polygon
-    _polygon(v6, run.poly6, names, "vector", inward=("R_36",))
+    V.draw_polygon(v, run.poly6, names, "vector", inward=("R_36",))
     p = run.poly6.diagonal("G_6", "R_36", "P")
-    v6.arrow(p.tail, p.head, "result")
-    v6.label(_mid(p.tail, p.head), "P", prefer=_outward(run.poly6, p.tail, p.head))
-    if run.rho > 0.0:
-        fi0 = free.poly6["F_i"]
-        v6.label(fi0.head, "f = 0", height=2.5, prefer=(1.0, -1.0))
-
-
-def _plan_view(
-    d: Drawing, k: Scale, polys: list[ForcePolygon], corner: tuple[float, float], room: Any
-) -> Viewport:
-    boxes = [plan_box(p) for p in polys]
-    bx0 = min(b[0] for b in boxes)
-    by0 = min(b[1] for b in boxes)
-    bx1 = max(b[2] for b in boxes)
-    by1 = max(b[3] for b in boxes)
-    at = (corner[0] + room[0] / 2.0, corner[1] + room[1] / 2.0)
-    return d.viewport(k, ((bx0 + bx1) / 2.0, (by0 + by1) / 2.0), at)
-
-
-def _mid(a: Vec, b: Vec) -> Vec:
-    return (a + b) * 0.5
-
-
-def _outward(poly: ForcePolygon, a: Vec, b: Vec, inward: bool = False) -> tuple[float, float]:
-    """The normal of side ab pointing away from the polygon's centroid (or towards it)."""
-    pts = [vv.tail for vv in poly.vectors]
-    cx = sum(q.x for q in pts) / len(pts)
-    cy = sum(q.y for q in pts) / len(pts)
-    n = (b - a).perp()
-    if n.dot(_mid(a, b) - Vec(cx, cy)) < 0.0:
-        n = -n
-    if inward:
+    v.arrow(p.tail, p.head, "result")
+    c = sum((vv.tail for vv in run.poly6.vectors), Vec(0.0, 0.0)) * (1.0 / len(run.poly6.vectors))
+    n = (p.head - p.tail).perp()
+    mid = (p.tail + p.head) * 0.5
+    if n.dot(mid - c) < 0.0:
         n = -n
     u = n.unit()
-    return (u.x, u.y)
+    v.label(mid, "P", prefer=(u.x, u.y))
+    if run.rho > 0.0:
+        v.label(free.poly6["F_i"].head, "f = 0", height=2.5, prefer=(1.0, -1.0))
 
 
-def _polygon(
-    v: Viewport,
-    poly: ForcePolygon,
-    names: dict[str, str],
-    role: str,
-    inward: tuple[str, ...] = (),
-) -> None:
-    """The polygon's vectors head to tail, each labelled beside its middle, outside the polygon
-    (inside for the names in ``inward``)."""
-    for vec_ in poly.vectors:
-        v.arrow(vec_.tail, vec_.head, role)
-        v.label(
-            _mid(vec_.tail, vec_.head),
-            names[vec_.name],
-            prefer=_outward(poly, vec_.tail, vec_.head, vec_.name in inward),
-            clear=0.5,
-        )
-    v.dot(poly.pole)
-
-
-# -- the tables -----------------------------------------------------------------------------------
+# -- the tables and the order of construction ----------------------------------------------------
 
 
 def _with_unit(value: str, unit: str) -> str:
@@ -354,27 +374,25 @@ def _with_unit(value: str, unit: str) -> str:
     return value + unit if unit in ("°", "") else f"{value} {unit}"
 
 
-def _panel(d: Drawing, sol: Solution) -> None:
+def _u(key: str) -> str:
+    return WORDS(f"u_{key}")
+
+
+def _given(sol: Solution) -> View:
     p = sol.params
-    r = sol.results
-    geo = sol.data
-    run, free = geo.run, geo.free
-    # the given data, beside the sleeve's plan
-    x, y = GIVEN_AT
-    d.text("Исходные данные", (x, y + 3.5), 3.5)
     given = [
-        ("m_2", fmt_number(float(p["m2"])), "кг"),
-        ("m_ш", fmt_number(float(p["m_ball"])), "кг"),
-        ("f", fmt_number(float(p["f"])), ""),
-        ("d", fmt_number(float(p["d"])), "м"),
-        ("AB", fmt_number(float(p["l_AB"])), "м"),
-        ("GH", fmt_number(float(p["l_GH"])), "м"),
-        ("FH", fmt_number(float(p["l_FH"])), "м"),
-        ("DH", fmt_number(float(p["l_DH"])), "м"),
-        ("BF", fmt_number(float(p["l_BF"])), "м"),
-        ("θ", fmt_number(float(p["theta_deg"])), "°"),
-        ("g", fmt_number(float(p["g"])), "м/с^2"),
-        ("режим", "разгон" if int(p["direction"]) > 0 else "выбег", ""),
+        ("m_2", _n(float(p["m2"]), 6), _u("kg")),
+        (WORDS("m_ball"), _n(float(p["m_ball"]), 6), _u("kg")),
+        ("f", _n(float(p["f"]), 6), ""),
+        ("d", _n(float(p["d"]), 6), _u("m")),
+        ("AB", _n(float(p["l_AB"]), 6), _u("m")),
+        ("GH", _n(float(p["l_GH"]), 6), _u("m")),
+        ("FH", _n(float(p["l_FH"]), 6), _u("m")),
+        ("DH", _n(float(p["l_DH"]), 6), _u("m")),
+        ("BF", _n(float(p["l_BF"]), 6), _u("m")),
+        ("θ", _n(float(p["theta_deg"]), 6), "°"),
+        ("g", _n(float(p["g"]), 6), _u("m_s2")),
+        (WORDS("mode"), WORDS("speeding_up" if int(p["direction"]) > 0 else "slowing_down"), ""),
     ]
     half = (len(given) + 1) // 2
     rows = []
@@ -384,77 +402,97 @@ def _panel(d: Drawing, sol: Solution) -> None:
             name, val, unit = given[j]
             row += [name, _with_unit(val, unit)]
         rows.append(row)
-    head = ["Вел.", "Значение", "Вел.", "Значение"]
-    _, h = d.table(x, y + 6.0, (14.0, 30.0, 14.0, 30.0), [head, *rows])
-    y += 6.0 + h + 6.0
-    # with and without friction
-    d.text("С трением и без трения", (x, y + 3.5), 3.5)
-    rows = [["", f"f = {fmt_number(run.f)}", "f = 0"]]
+    q, val = WORDS("q_short"), WORDS("value")
+    return V.Table([[q, val, q, val], *rows], title=WORDS("given"))
+
+
+def _compare(geo: Geometry) -> View:
+    run, free = geo.run, geo.free
+    rows = [["", f"f = {_n(run.f)}", "f = 0"]]
     for label, a, b, unit in (
-        ("R_{32}", run.R32, free.R32, "Н"),
-        ("P", run.P, free.P, "Н"),
+        ("R_{32}", run.R32, free.R32, _u("N")),
+        ("P", run.P, free.P, _u("N")),
         ("β", math.degrees(run.beta), math.degrees(free.beta), "°"),
-        ("F_i", run.F_i, free.F_i, "Н"),
-        ("ω", run.omega, free.omega, "рад/с"),
+        ("F_i", run.F_i, free.F_i, _u("N")),
+        ("ω", run.omega, free.omega, _u("rad_s")),
     ):
-        rows.append(
-            [
-                label,
-                _with_unit(fmt_number(a, digits=4), unit),
-                _with_unit(fmt_number(b, digits=4), unit),
-            ]
-        )
-    d.table(x, y + 6.0, (14.0, 37.0, 37.0), rows)
-    # the results
-    x, y = RIGHT_X, PLAN2_AT[1] + PLAN2_ROOM[1] + 4.0
-    d.text("Результаты", (x, y + 3.5), 3.5)
-    rows = [["Величина", "Значение"]]
+        rows.append([label, _with_unit(_n(a), unit), _with_unit(_n(b), unit)])
+    return V.Table(rows, title=WORDS("compare"))
+
+
+def _results(sol: Solution) -> View:
+    r = sol.results
+    rows = [[WORDS("quantity"), WORDS("value")]]
     for name, label, unit in (
-        ("rho", "ρ", "м"),
+        ("rho", "ρ", _u("m")),
         ("alpha_deg", "α", "°"),
-        ("R32", "R_{32}", "Н"),
-        ("P", "P", "Н"),
+        ("R32", "R_{32}", _u("N")),
+        ("P", "P", _u("N")),
         ("beta_deg", "β", "°"),
-        ("F_i", "F_i = Ф_6", "Н"),
-        ("r_D", "r_D", "м"),
-        ("omega", "ω", "рад/с"),
-        ("omega_no_friction", "ω (f = 0)", "рад/с"),
+        ("F_i", f"F_i = {WORDS('Phi6')}", _u("N")),
+        ("r_D", "r_D", _u("m")),
+        ("omega", "ω", _u("rad_s")),
+        ("omega_no_friction", "ω (f = 0)", _u("rad_s")),
     ):
-        rows.append([label, _with_unit(fmt_number(float(r[name]), digits=4), unit)])
-    d.table(x, y + 6.0, (40.0, 60.0), rows)
-    # the order of construction, under the arm's plan
-    x, y, width = STEPS_AT
-    y = d.text("Порядок построения", (x, y + 3.5), 3.5).at[1] + 2.0
-    turn = {1: "против час. стрелки", -1: "по час. стрелке", 0: "нет"}
-    mode = "разгон" if geo.direction > 0 else "выбег"
-    kinds = {"internal": "внутренняя", "external": "внешняя"}
+        rows.append([label, _with_unit(_n(float(r[name])), unit)])
+    return V.Table(rows, title=WORDS("results"))
+
+
+def _steps(geo: Geometry) -> View:
+    """The order of construction, one worded line per step of the seed's solution with its
+    value (the recorded steps' own words are the protocol's, in English)."""
+    run, free = geo.run, geo.free
+    turn = {1: WORDS("ccw"), -1: WORDS("cw"), 0: WORDS("none")}
+    mode = WORDS("speeding_up" if geo.direction > 0 else "slowing_down")
+    kinds = {"internal": WORDS("internal"), "external": WORDS("external")}
     friction = run.rho > 0.0
     if friction:
-        circles = (
-            f"ρ = 0,5d·sin(arctg f) = {fmt_number(run.rho * 1000.0, digits=4)} мм, круги "
-            "трения в B, F, H;"
+        circles = WORDS("step_circles", rho=_n(run.rho * 1000.0))
+        line3 = WORDS(
+            "step_line3",
+            kind=kinds.get(run.link3.kind, WORDS("common")),
+            alpha=_n(math.degrees(run.alpha), 3),
         )
-        line3 = (
-            f"линия звена 3 – {kinds.get(run.link3.kind, 'общая')} касательная к кругам B и "
-            f"F, α = {fmt_number(math.degrees(run.alpha), digits=3)}° к BF;"
-        )
-        line76 = "R_{76} – касательная из K к кругу трения H, момент против ω_{67};"
+        line76 = WORDS("step_line76")
     else:
-        circles = "f = 0: кругов трения нет, реакции проходят через центры шарниров;"
-        line3 = "линия звена 3 – BF;"
-        line76 = "R_{76} – по прямой KH;"
+        circles = WORDS("step_circles_0")
+        line3 = WORDS("step_line3_0")
+        line76 = WORDS("step_line76_0")
     steps = (
-        f"{mode}: ω_{{32}} {turn[run.fc_B.sense]}, ω_{{36}} {turn[run.fc_F.sense]}, "
-        f"ω_{{67}} {turn[run.fc_H.sense]};",
+        WORDS(
+            "step_senses",
+            mode=mode,
+            b=turn[run.fc_B.sense],
+            f=turn[run.fc_F.sense],
+            h=turn[run.fc_H.sense],
+        ),
         circles,
         line3,
-        f"G_2 + R_{{32}} + R_{{42}} = 0: R_{{32}} = {fmt_number(run.R32, digits=4)} Н;",
-        f"P = G_6 + R_{{36}} = {fmt_number(run.P, digits=4)} Н через точку Q; K – на линиях P "
-        "и Ф_6;",
+        WORDS("step_plan2", R32=_n(run.R32), u=_u("N")),
+        WORDS("step_P", P=_n(run.P), u=_u("N")),
         line76,
-        f"G_6 + R_{{36}} + Ф_6 + R_{{76}} = 0: F_i = {fmt_number(run.F_i, digits=4)} Н;",
-        f"ω = (F_i/(m_ш·r_D))^{{1/2}} = {fmt_number(run.omega, digits=4)} рад/с"
-        + (f" (f = 0: {fmt_number(free.omega, digits=4)})." if friction else "."),
+        WORDS("step_plan6", F_i=_n(run.F_i), u=_u("N")),
+        WORDS("step_omega", omega=_n(run.omega), u=_u("rad_s"))
+        + (WORDS("step_omega_0", omega=_n(free.omega)) if friction else "."),
+        WORDS("step_note"),
     )
+    lines: list[str] = []
     for i, step in enumerate(steps):
-        y = d.paragraph(f"{i + 1}. {step}", x, y, width, 2.5, indent=4.0) + 0.6
+        lines += _wrap(f"{i + 1}. {step}", STEPS_WIDTH, 3.0)
+    return V.Text(lines=lines, width=STEPS_WIDTH, height=3.0, title=WORDS("order"))
+
+
+#: The room the title block takes in the field's lower right corner (mm, with its margin).
+TITLE_BLOCK = (188.0, 58.0)
+#: The width (mm) of the order of construction.
+STEPS_WIDTH = 195.0
+
+
+def _wrap(text: str, width: float, height: float) -> list[str]:
+    """``text`` wrapped at spaces into lines of at most ``width`` mm."""
+    out: list[list[str]] = [[]]
+    for word in text.split(" "):
+        if out[-1] and text_width(" ".join([*out[-1], word]), height) > width:
+            out.append([])
+        out[-1].append(word)
+    return [" ".join(w) for w in out]

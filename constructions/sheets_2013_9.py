@@ -2,10 +2,15 @@
 
 Main sheet (A3): the valve mechanism at the state, then split into disc 1 and rod 2, each with
 every force and moment on it at the force scale μ_F, the inertia loads included (d'Alembert); the
-given data, the results at the state and the equation of motion on the right.
+given data, the results at the state and the equation of motion on the right. A load is drawn on
+its line of action outside its body: the rod's inertia force Ф_2 and the damper's force act along
+the rod's axis and its crossbar's verticals, so they are drawn beyond the crosshead and the
+crossbar, not on them.
 
-Sheet ``motion`` (A3): φ(t) and φ'(t) from rest at φ = 0 (solve_ivp), the derivation of the
-equation of motion and the slips of the seed's solution.
+Sheet ``motion`` (A3): φ(t) and φ'(t) from rest at φ = 0 (solve_ivp) across the field, the table
+of the motion at eleven instants, the integration and the derivation of the equation of motion.
+
+Every word comes from ``strings/<lang>/sheets_2013_9.toml``.
 """
 
 from __future__ import annotations
@@ -13,34 +18,52 @@ from __future__ import annotations
 import math
 from typing import TYPE_CHECKING
 
+import numpy as np
+
 from geomcad import tol
 from geomcad.geom import Vec
-from geomcad.sheet import Drawing, Scale, Sheet, TitleBlock, Viewport, start
-from geomcad.sheet.graph import Axis, Graph
+from geomcad.sheet import Scale, Sheet, TitleBlock, Viewport, start
+from geomcad.sheet import views as V
+from geomcad.sheet.compose import (
+    Column,
+    Extent,
+    Field,
+    Figure,
+    Node,
+    Row,
+    Spacer,
+    View,
+    arrange,
+    compose,
+    text_width,
+)
+from geomcad.sheet.graph import Graph, nice_step
+from geomcad.sheet.lang import Words, current
 from geomcad.sheet.loads import damper, ground, moment, spring
-from geomcad.sheet.scale import gost_scale_to_fit
+from geomcad.sheet.scale import nice_factor
 
-from .dyn_common import Where, draw_loads, f, short_note, small
+from .dyn_common import Where, draw_loads, f, load, short_note, small
 from .p2013_9 import ROD, Data
 
 if TYPE_CHECKING:
     from geomcad.problem import Solution
 
-PANEL_X = 262.0
+WORDS = Words(__package__, "sheets_2013_9")
+
+#: The width (mm) of the right-hand panel's text and tables.
 PANEL_W = 146.0
-#: The three views' centres along x and the top of the drawings on the sheet (mm).
-VIEW_X = (64.0, 140.0, 212.0)
-VIEW_TOP = 44.0
-#: Room for the drawing of one view (mm): width, height.
-VIEW_ROOM = (70.0, 180.0)
 DISC = 1.3  # the disc's drawn radius, in units of r
+#: Force arrows on the sheet: the largest force gets at most this many mm.
+FORCE_ROOM_MM = 40.0
+#: A load drawn beyond its body keeps this gap (mm) from the body's outline.
+GAP_MM = 3.0
 
 
-def k_l(r: float) -> Scale:
-    """The largest GOST scale at which a view (the disc or the crosshead across, the support
-    above to the disc's bottom) fits its room."""
-    w, h = 2.0 * max(DISC, ROD.slot_half + ROD.frame) * r, (ROD.ground + DISC + 0.4) * r
-    return gost_scale_to_fit(w, h, VIEW_ROOM[0], VIEW_ROOM[1])
+def scales(sol: Solution) -> dict[str, float]:
+    """The sheet's μ_F (N/mm): the largest force at most FORCE_ROOM_MM long."""
+    res = sol.results
+    biggest = max(res["N_pin"], res["F_spring"], res["F_damper"], res["F_inertia_rod"])
+    return {"F": nice_factor(biggest, FORCE_ROOM_MM, "F").k if biggest > 0.0 else 1.0}
 
 
 def sheets(sol: Solution) -> list[tuple[str, Sheet]]:
@@ -48,49 +71,110 @@ def sheets(sol: Solution) -> list[tuple[str, Sheet]]:
     return [("", _main(sol)), ("motion", _motion(sol))]
 
 
-def _title(sol: Solution, title: str, no: int) -> TitleBlock:
+def _title(sol: Solution, key: str, no: int, scale: str = "") -> TitleBlock:
     return TitleBlock(
-        title=title,
-        designation=f"ТММ.2013-9.0{no}",
+        title=WORDS(key),
+        designation=WORDS("designation", no=no),
         sheet_no=no,
         sheets=2,
-        scale=k_l(float(sol.params["r"])).ratio_text() if no == 1 else "",
+        scale=scale,
+        lang=current(),
     )
+
+
+def _unit(u: str) -> str:
+    """A unit's symbol in the language being drawn."""
+    return WORDS(f"u_{u}")
 
 
 def _main(sol: Solution) -> Sheet:
     data: Data = sol.data
-    r = data.r
-    k = k_l(r)
-    d = start("A3", _title(sol, "Механизм клапана: силы и моменты", 1))
-    d.text("Механизм клапана: расчленение на диск и шток в заданном положении", (25.0, 13.0), 5.0)
-    d.text(
-        f"φ = {f(math.degrees(data.phi))}°, φ' = {f(data.dphi)} рад/с, φ'' = {f(data.ddphi)} "
-        f"рад/с², t = {f(float(sol.params['t']))} с;   {k.label()} (M {k.ratio_text()});   "
-        f"μ_F = {f(data.k_F)} Н/мм",
-        (25.0, 24.5),
-        3.5,
-    )
-    oy = VIEW_TOP + k.mm((ROD.ground + 0.15) * r)
-    views = [d.viewport(k, (0.0, 0.0), (x, oy)) for x in VIEW_X]
-    for v, head in zip(views, ("а) схема механизма", "б) диск 1", "в) шток 2"), strict=True):
-        d.text(head, (v.at[0] - 30.0, 32.0), 3.5)
-    _scheme(views[0], data, sol)
-    _disc(views[1], data)
-    _rod(views[2], data)
-    d.text(
-        f"Шток: x = r·sin φ = {f(data.x)} м, x' = r·cos φ·φ' = {f(data.xd)} м/с, "
-        f"x'' = r·cos φ·φ'' – r·sin φ·φ'^2 = {f(data.xdd)} м/с².",
-        (25.0, 244.0),
-        2.5,
-    )
-    d.text(
-        f"Силы – в масштабе μ_F; {short_note(data.k_F)}.",
-        (25.0, 250.0),
-        2.5,
-    )
-    _panel_main(d, sol, data)
+    tree, views = _main_tree(sol)
+    lay = arrange(tree, Field.of_format("A3"))
+    k = lay.scale("l")
+    d = start("A3", _title(sol, "tb_main", 1, k.ratio_text()))
+    compose(d, tree)
+    del data, views
     return d.finish()
+
+
+def _extents(data: Data, pad: float) -> tuple[Extent, Extent, Extent]:
+    """The model boxes of the scheme, the disc and the rod; ``pad`` (model units) above and
+    below the disc and the rod is room for their loads at μ_F."""
+    r, x = data.r, data.x
+    half = max(DISC, ROD.slot_half + ROD.frame) * r
+    scheme = (-(DISC + 0.25) * r, -(DISC + 0.1) * r, half, (ROD.ground + 0.15) * r)
+    disc = (-DISC * r, -DISC * r - pad, DISC * r, DISC * r + pad)
+    rod = (-half, x - ROD.frame * r - pad, half, x + ROD.top * r + pad)
+    return scheme, disc, rod
+
+
+def _main_tree(sol: Solution) -> tuple[Node, dict[str, View]]:
+    """The three views at one GOST scale (the loads' room above and below the disc and the rod
+    found by arranging twice: it depends on that scale), the notes under them, the tables and
+    the equations on the right, clear of the title block."""
+    data: Data = sol.data
+    k_F = sol.scales["F"]
+    longest = max(float(sol.results["N_pin"]), float(sol.results["F_spring"])) / k_F + 6.0
+    pad = 0.0
+    for _ in range(3):
+        tree, views = _main_views(sol, _extents(data, pad))
+        k = arrange(tree, Field.of_format("A3")).scale("l").k
+        if abs(longest * k - pad) <= 1e-12:
+            break
+        pad = longest * k
+    return tree, views
+
+
+def _main_views(
+    sol: Solution, boxes: tuple[Extent, Extent, Extent]
+) -> tuple[Node, dict[str, View]]:
+    data: Data = sol.data
+    k_F = sol.scales["F"]
+    heads = ("view_scheme", "view_disc", "view_rod")
+    draws = (
+        lambda v: _scheme(v, data),
+        lambda v: _disc(v, data, k_F),
+        lambda v: _rod(v, data, k_F),
+    )
+    figs = [
+        Figure(box, fn, title=WORDS(h), group="l", show_scale=False, margin=3.0)
+        for box, fn, h in zip(boxes, draws, heads, strict=True)
+    ]
+    state = WORDS(
+        "state",
+        phi=f(math.degrees(data.phi)),
+        dphi=f(data.dphi),
+        ddphi=f(data.ddphi),
+        t=f(float(sol.params["t"])),
+        k_F=f(k_F),
+    )
+    notes = V.Text(
+        lines=[
+            *_wrap(WORDS("rod_motion", x=f(data.x), xd=f(data.xd), xdd=f(data.xdd)), 200.0, 3.0),
+            *_wrap(WORDS("forces_at_mu", note=short_note(k_F)), 200.0, 3.0),
+        ],
+        width=200.0,
+        height=3.0,
+    )
+    left = Column(
+        V.Text(lines=[state], height=3.5),
+        Row(*figs, title=WORDS("views_head"), group="l", title_height=3.5),
+        Row(notes, Spacer((20.0, 10.0))),
+        weights=(1.0, 0.86, 0.14),
+    )
+    tree = Row(left, _panel_main(sol, data), weights=(0.62, 0.38))
+    return tree, {"scheme": figs[0], "disc": figs[1], "rod": figs[2]}
+
+
+def _wrap(text: str, width: float, height: float = 2.5) -> list[str]:
+    """``text`` wrapped at spaces into lines of at most ``width`` mm."""
+    out: list[list[str]] = [[]]
+    for word in text.split(" "):
+        if out[-1] and text_width(" ".join([*out[-1], word]), height) > width:
+            out.append([])
+        out[-1].append(word)
+    return [" ".join(w) for w in out]
 
 
 def _crosshead(v: Viewport, data: Data, role: str = "link") -> None:
@@ -107,7 +191,25 @@ def _crosshead(v: Viewport, data: Data, role: str = "link") -> None:
     v.seg((-ROD.bar_half * r, top), (ROD.bar_half * r, top), role)
 
 
-def _scheme(v: Viewport, data: Data, sol: Solution) -> None:
+def phi_arc_radius(data: Data, k: Scale) -> float:
+    """The radius (model units) of the arc that marks φ: it ends on OA, 1 mm clear of the
+    crosshead's outline and outside the moment's arrow at O, as large as that allows (at most
+    0.9·r, so that A's joint stays clear)."""
+    r, phi = data.r, data.phi
+    lo = k.model(9.0)  # outside M(t)'s arrow about O (5 mm) with its head
+    gap = k.model(1.0)
+    below = data.x - ROD.frame * r - gap  # the crosshead's lower edge, less the gap
+    above = data.x + ROD.frame * r + gap
+    for i in range(36, 0, -1):
+        rho = r * i / 40.0
+        if rho < lo:
+            break
+        if not (below < rho * math.sin(phi) < above):
+            return rho
+    return lo
+
+
+def _scheme(v: Viewport, data: Data) -> None:
     r, x, phi = data.r, data.x, data.phi
     A = Vec(r * math.cos(phi), r * math.sin(phi))
     v.circle((0.0, 0.0), DISC * r, "link")
@@ -127,7 +229,8 @@ def _scheme(v: Viewport, data: Data, sol: Solution) -> None:
     ground(v, (-1.3 * b - 0.1 * r, gy), (1.3 * b + 0.1 * r, gy), (0.0, 1.0))
     v.pivot((0.0, 0.0))
     v.joint(A)
-    v.dim_angle((0.0, 0.0), (DISC * r, 0.0), A, "φ", r_mm=0.9 * v.mm(DISC * r), height=2.5)
+    rho = phi_arc_radius(data, v.scale)
+    v.dim_angle((0.0, 0.0), (rho, 0.0), A, "φ", r_mm=v.mm(rho), height=2.5)
     v.seg((0.0, 0.0), (1.25 * DISC * r, 0.0), "centre")
     moment(v, (0.0, 0.0), data.M_t, 5.0, "M(t)", role="vector", start=math.radians(150.0))
     # the rod's coordinate x along its axis, from the spring's free position
@@ -138,9 +241,12 @@ def _scheme(v: Viewport, data: Data, sol: Solution) -> None:
     v.label((0.0, 0.0), "O", 3.5, prefer=(-1.0, -1.0))
     v.label((-b, 0.5 * (top + gy)), "c", 3.5, prefer=(-1.0, 0.0), clear=3.0)
     v.label((b, 0.5 * (top + gy)), "k", 3.5, prefer=(1.0, 0.0), clear=3.5)
+    # the links' numbers (GOST 2.770): the disc 1, the rod 2; the frame 0 at its supports
+    v.label(Vec.polar(DISC * r, math.radians(-60.0)), "1", 3.5, prefer=(1.0, -1.0), clear=1.5)
+    v.label((0.0, 0.5 * (x + ROD.frame * r + g0)), "2", 3.5, prefer=(1.0, 0.0), clear=1.5)
 
 
-def _disc(v: Viewport, data: Data) -> None:
+def _disc(v: Viewport, data: Data, k_F: float) -> None:
     r, phi = data.r, data.phi
     A = Vec(r * math.cos(phi), r * math.sin(phi))
     v.circle((0.0, 0.0), DISC * r, "link")
@@ -152,18 +258,22 @@ def _disc(v: Viewport, data: Data) -> None:
     draw_loads(
         v,
         data.reactions,
-        data.k_F,
+        k_F,
         "1",
         {
             "M(t)": Where("M(t)", radius=5.0, start_deg=200.0),
-            "M_{Ф1}": Where("M_{Ф1}", radius=9.5, start_deg=-20.0),
+            "M_Phi1": Where(WORDS("M_in1"), radius=9.5, start_deg=-20.0),
             "R_{01}": Where("R_{01}", prefer=(-1.0, 0.0)),
             "R_{12}": Where("R_{21}", prefer=(1.0, 0.0)),
         },
     )
 
 
-def _rod(v: Viewport, data: Data) -> None:
+def _rod(v: Viewport, data: Data, k_F: float) -> None:
+    """The rod with its loads, each on its line of action outside the rod: the pin's push R_12
+    arrives at A from below the crosshead, the spring's push at the crossbar's end from above;
+    Ф_2 (along the axis) and the damper's force (along the crossbar's right vertical), drawn as
+    points where they are short, sit on their lines beyond the crosshead and the crossbar."""
     r, x, phi = data.r, data.x, data.phi
     A = Vec(r * math.cos(phi), x)
     _crosshead(v, data)
@@ -171,16 +281,46 @@ def _rod(v: Viewport, data: Data) -> None:
     v.label(A, "A", 3.5, prefer=(1.0, -1.0))
     gm = Vec(0.0, 0.5 * sum(ROD.guide) * r)
     v.dot(gm)
+    gap = v.scale.model(GAP_MM)
+    top = x + ROD.top * r
+    under = x - ROD.frame * r - gap  # below the crosshead
+    over = top + gap  # above the crossbar
+    R = data.reactions
+
+    def up(name: str) -> bool:
+        F = load(R, "2", name)
+        return F is not None and F.y > 0.0
+
     draw_loads(
         v,
-        data.reactions,
-        data.k_F,
+        R,
+        k_F,
         "2",
         {
-            "R_{12}": Where("R_{12}", prefer=(1.0, 0.0)),
-            "Ф_2": Where("Ф_2", prefer=(-1.0, 0.0)),
-            "F_{упр}": Where("F_{упр}", prefer=(-1.0, 0.0)),
-            "F_д": Where("F_д", prefer=(1.0, 0.0)),
+            "R_{12}": Where("R_{12}", arrive=True, prefer=(1.0, 0.0)),
+            # Phi_2 acts along the axis: drawn below the crosshead pushing up, or above the
+            # crossbar pushing down
+            "Phi_2": Where(
+                WORDS("Phi2"),
+                at=Vec(0.0, x - ROD.frame * r) if up("Phi_2") else Vec(0.0, top),
+                arrive=True,
+                prefer=(-1.0, 0.0),
+                short_at=Vec(0.0, under) if up("Phi_2") else Vec(0.0, over),
+            ),
+            "F_spring": Where(
+                WORDS("F_spring"),
+                at=Vec(-ROD.bar_half * r, top),
+                arrive=not up("F_spring"),
+                prefer=(-1.0, 0.0),
+                short_at=Vec(-ROD.bar_half * r, over),
+            ),
+            "F_damper": Where(
+                WORDS("F_damper"),
+                at=Vec(ROD.bar_half * r, top),
+                arrive=not up("F_damper"),
+                prefer=(1.0, 0.0),
+                short_at=Vec(ROD.bar_half * r, over),
+            ),
             "M_{02}": Where("M_{02}", at=gm, radius=5.0, start_deg=150.0),
         },
     )
@@ -191,107 +331,121 @@ def _zero(x: float, scale: float) -> float:
     return 0.0 if abs(x) <= tol.DERIVED * max(abs(scale), 1.0) else abs(x)
 
 
-def _panel_main(d: Drawing, sol: Solution, data: Data) -> None:
-    p, res = sol.params, sol.results
-    x, y = PANEL_X, 10.0
-    d.text("Исходные данные", (x, y + 3.5), 3.5)
+def _given(sol: Solution) -> View:
+    """The given data as a table."""
+    p = sol.params
     items = [
-        ("J", "J", "кг·м²"), ("m", "m", "кг"), ("r", "r", "м"), ("c", "c", "Н/м"),
-        ("k", "k", "Н·с/м"), ("M0", "M_0", "Н·м"), ("M1", "M_1", "Н·м"), ("Omega", "Ω", "рад/с"),
-        ("t", "t", "с"), ("phi_deg", "φ", "°"), ("phi_dot", "φ'", "рад/с"), ("T", "T", "с"),
+        ("J", "J", "kgm2"), ("m", "m", "kg"), ("r", "r", "m"), ("c", "c", "N_m"),
+        ("k", "k", "Ns_m"), ("M0", "M_0", "Nm"), ("M1", "M_1", "Nm"), ("Omega", "Ω", "rad_s"),
+        ("t", "t", "s"), ("phi_deg", "φ", "deg"), ("phi_dot", "φ'", "rad_s"), ("T", "T", "s"),
     ]  # fmt: skip
-    cells = [f"{lab} = {f(float(p[n]), 6)}{'' if u == '°' else ' '}{u}" for n, lab, u in items]
-    rows = [["Параметр", "M(t) = M_0 + M_1·sin Ωt"]]
+    cells = [f"{lab} = {f(float(p[n]), 6)}{'' if u == 'deg' else ' '}{_unit(u)}"
+             for n, lab, u in items]  # fmt: skip
+    rows = [[WORDS("param"), "M(t) = M_0 + M_1·sin Ωt"]]
     rows += [[cells[i], cells[i + 1]] for i in range(0, len(cells), 2)]
-    _, h = d.table(x, y + 6.0, (73.0, 73.0), rows)
-    y += 6.0 + h + 6.0
-    d.text("Результаты в заданном положении", (x, y + 3.5), 3.5)
+    return V.Table(rows, widths=(73.0, 73.0), title=WORDS("given"))
+
+
+def _paragraphs(head: str, items: list[str], dash: bool = True) -> View:
+    """A titled block of paragraphs, each wrapped to the panel's width."""
+    lines: list[str] = []
+    for it in items:
+        lines += _wrap(f"– {it}" if dash else it, PANEL_W)
+    return V.Text(lines=lines, width=PANEL_W, title=head)
+
+
+def _panel_main(sol: Solution, data: Data) -> Node:
+    res = sol.results
     R = data.reactions
-    rows = [["Величина", "Значение", "Величина", "Значение"]]
+    qty, val = WORDS("quantity"), WORDS("value")
+    rows = [[qty, val, qty, val]]
+    n, nm = _unit("N"), _unit("Nm")
     pairs = [
-        ("J_{пр}", f"{f(res['J_pr'], 6)} кг·м²"),
-        ("dJ_{пр}/dφ", f"{f(res['dJ_pr'], 6)} кг·м²"),
-        ("M_{пр}", f"{f(res['M_pr'], 6)} Н·м"),
-        ("φ''", f"{f(res['phi_ddot'], 6)} рад/с²"),
-        ("R_{12} = R_{21}", f"{f(res['N_pin'], 6)} Н"),
-        ("R_{01}", f"{f(R.force('R_{01}').norm, 6)} Н"),
-        ("F_{упр} = c|x|", f"{f(res['F_spring'], 6)} Н"),
-        ("F_д = k|x'|", f"{f(res['F_damper'], 6)} Н"),
-        ("Ф_2 = m|x''|", f"{f(res['F_inertia_rod'], 6)} Н"),
-        ("M_{Ф1} = J|φ''|", f"{f(res['M_inertia_disc'], 6)} Н·м"),
-        ("M_{02}", f"{f(abs(R.moment('M_{02}')), 6)} Н·м"),
-        ("R_{02}", f"{f(_zero(R.magnitudes['R_{02}'], res['N_pin']), 3)} Н"),
+        (WORDS("J_pr"), f"{f(res['J_pr'], 4)} {_unit('kgm2')}"),
+        (WORDS("dJ_pr"), f"{f(res['dJ_pr'], 4)} {_unit('kgm2')}"),
+        (WORDS("M_pr"), f"{f(res['M_pr'], 4)} {nm}"),
+        ("φ''", f"{f(res['phi_ddot'], 4)} {_unit('rad_s2')}"),
+        ("R_{12} = R_{21}", f"{f(res['N_pin'], 4)} {n}"),
+        ("R_{01}", f"{f(R.force('R_{01}').norm, 4)} {n}"),
+        (f"{WORDS('F_spring')} = c|x|", f"{f(res['F_spring'], 4)} {n}"),
+        (f"{WORDS('F_damper')} = k|x'|", f"{f(res['F_damper'], 4)} {n}"),
+        (f"{WORDS('Phi2')} = m|x''|", f"{f(res['F_inertia_rod'], 4)} {n}"),
+        (f"{WORDS('M_in1')} = J|φ''|", f"{f(res['M_inertia_disc'], 4)} {nm}"),
+        ("M_{02}", f"{f(abs(R.moment('M_{02}')), 4)} {nm}"),
+        ("R_{02}", f"{f(_zero(R.magnitudes['R_{02}'], res['N_pin']), 3)} {n}"),
     ]
     for i in range(0, len(pairs), 2):
         rows.append([pairs[i][0], pairs[i][1], pairs[i + 1][0], pairs[i + 1][1]])
-    _, h = d.table(x, y + 6.0, (29.0, 44.0, 29.0, 44.0), rows)
-    y += 6.0 + h + 5.0
-    y = d.text("Уравнение движения", (x, y + 3.5), 3.5).at[1] + 2.0
-    lines = (
-        "J_{пр} = J + mr^2cos^2φ,  dJ_{пр}/dφ = –mr^2sin 2φ;",
-        "M_{пр} = M(t) – ½cr^2sin 2φ – kr^2cos^2φ·φ' (по равенству мощностей);",
-        "J_{пр}φ'' + ½(dJ_{пр}/dφ)φ'^2 = M_{пр}, т.е.",
-        "(J + mr^2cos^2φ)φ'' – ½mr^2sin 2φ·φ'^2 = M(t) – ½cr^2sin 2φ – kr^2cos^2φ·φ'.",
-    )
-    for ln in lines:
-        y = d.paragraph(ln, x, y, PANEL_W, 2.5, indent=4.0) + 0.6
-    y += 3.0
-    y = d.text("Силы на частях механизма", (x, y + 3.5), 3.5).at[1] + 2.0
+    results = V.Table(rows, widths=(29.0, 44.0, 29.0, 44.0), title=WORDS("results_state"))
+    eq = _paragraphs(WORDS("eq_head"), [WORDS(k) for k in ("eq_1", "eq_2", "eq_3", "eq_4")],
+                     dash=False)  # fmt: skip
     mb = R.moment("M_b")
-    notes = (
-        "R_{ij} – сила звена i на звено j (0 – стойка); Ф_2 = –m·x'' и M_{Ф1} = –J·φ'' – "
-        "нагрузки инерции (принцип Даламбера), их направления зависят от знака φ'' (от M_{пр});",
-        "шток: F_{упр} = –c·x, F_д = –k·x', R_{12} вдоль оси штока (паз гладкий), момент "
-        "направляющей M_{02}; диск: M(t), M_{Ф1}, R_{21} = –R_{12}, R_{01} в опоре O;",
-        f"проверка: равновесие диска с нагрузками инерции требует уравновешивающего момента "
-        f"M_у = {small(mb, data.M_t or 1.0, 'Н·м')}, т.е. 0 – кинетостатика совпадает с "
-        "уравнением движения.",
+    loads = _paragraphs(
+        WORDS("loads_head"),
+        [WORDS("loads_1"), WORDS("loads_2"), WORDS("loads_3", mb=small(mb, data.M_t or 1.0, nm))],
     )
-    for ln in notes:
-        y = d.paragraph(f"– {ln}", x, y, PANEL_W, 2.5, indent=3.0) + 0.6
+    return Column(_given(sol), results, eq, loads, Spacer((10.0, TITLE_BLOCK_H)))
+
+
+#: The height (mm) the title block takes at the bottom of the field, with its margin.
+TITLE_BLOCK_H = 58.0
 
 
 def _motion(sol: Solution) -> Sheet:
+    """φ(t) above φ'(t) on a common t axis on the left (with the ordinates of the table's
+    instants); on the right the integration, the table of the motion, the derivation and the
+    given data."""
     data: Data = sol.data
     tr = data.motion
-    d = start("A3", _title(sol, "Механизм клапана: закон движения", 2))
-    d.text("Движение из состояния покоя при φ = 0: φ(t) и φ'(t)", (25.0, 13.0), 5.0)
     T = tr.t_end
     ts = list(tr.t)
-    gx = Axis.fit("t", "с", 0.0, T, 195.0)
-    for i, (vals, sym, unit, y_head) in enumerate(
-        ((list(tr.phi), "φ", "рад", 24.0), (list(tr.omega), "φ'", "рад/с", 134.0))
+    times = np.linspace(0.0, T, 11)
+    state = tr.sol(times)
+    tick = nice_step(T / 10.0)
+    diagrams: list[View] = []
+    for i, (vals, sym, unit) in enumerate(
+        ((list(tr.phi), "φ", "rad"), (list(tr.omega), "φ'", "rad_s"))
     ):
-        gy = Axis.fit(sym, unit, min(0.0, min(vals)), max(0.0, max(vals)), 92.0)
-        d.text(f"{i + 1}. {sym}(t)", (25.0, y_head), 3.5)
-        at = (45.0, y_head + 18.0 + gy.mm(gy.hi))
-        g = Graph(d, gx, gy, at)
-        g.factors((25.0, y_head + 6.0))
-        g.curve(ts, vals, "result")
-        g.axes()
-        g.point(T, vals[-1], f"{sym}(T) = {f(vals[-1])}", prefer=(1.0, -1.0))
-    x, y = PANEL_X, 10.0
+
+        def extra(g: Graph, i: int = i, vals: list[float] = vals, sym: str = sym) -> None:
+            for tt, val in zip(times, state[i], strict=True):
+                if val > 0.0:  # ordinates on the t axis's upper side, clear of its values
+                    g.curve([tt, tt], [0.0, val], "construction")
+            g.point(T, vals[-1], f"{sym}(T) = {f(vals[-1])}", prefer=(1.0, -1.0))
+
+        diagrams.append(
+            V.Diagram(
+                V.AxisSpec("t", _unit("s"), tick=tick),
+                V.AxisSpec(sym, _unit(unit)),
+                [V.Curve(ts, vals)],
+                extra=extra,
+                title=f"{i + 1}. {sym}(t)",
+                least=(150.0, 70.0),
+                prefer=(230.0, 120.0),
+            )
+        )
     res = sol.results
-    y = d.text("Интегрирование уравнения движения", (x, y + 3.5), 3.5).at[1] + 2.0
-    lines: tuple[str, ...] = (
-        "J_{пр}(φ)φ'' + ½J'_{пр}(φ)φ'^2 = M_{пр}(φ, φ', t) как система для (φ, φ'), "
-        "начальные условия φ(0) = 0, φ'(0) = 0;",
-        "численное интегрирование (метод Рунге – Кутты);"
-        if tr.method == "DOP853"
-        else "численное интегрирование жёсткой системы (LSODA: методы Адамса и BDF);",
-        f"φ(T) = {f(res['phi_T'])} рад, φ'(T) = {f(res['omega_T'])} рад/с при T = {f(T)} с.",
+    integ = _paragraphs(
+        WORDS("int_head"),
+        [
+            WORDS("int_1"),
+            WORDS("int_rk") if tr.method == "DOP853" else WORDS("int_lsoda"),
+            WORDS("int_3", phi=f(res["phi_T"]), omega=f(res["omega_T"]), T=f(T)),
+        ],
     )
-    for ln in lines:
-        y = d.paragraph(f"– {ln}", x, y, PANEL_W, 2.5, indent=3.0) + 0.6
-    y += 4.0
-    y = d.text("Вывод уравнения (dE/dt = ΣN)", (x, y + 3.5), 3.5).at[1] + 2.0
-    lines = (
-        "x = r sin φ, x' = r cos φ·φ', E = ½(J + mr^2cos^2φ)φ'^2;",
-        "N(M) = M(t)φ', N(F_{упр}) = –cx·x' = –½cr^2sin 2φ·φ', N(F_д) = –kx'^2 = –kr^2cos^2φ·φ'^2;",
-        "dE/dt = (J + mr^2cos^2φ)φ'φ'' – mr^2sin φ cos φ·φ'^3;",
-        "после сокращения на φ': (J + mr^2cos^2φ)φ'' – ½mr^2sin 2φ·φ'^2 = M(t) – ½cr^2sin 2φ – "
-        "kr^2cos^2φ·φ'.",
-    )
-    for ln in lines:
-        y = d.paragraph(f"– {ln}", x, y, PANEL_W, 2.5, indent=3.0) + 0.6
+    phis, omegas = state
+    rows = [[f"t, {_unit('s')}", f"φ, {_unit('rad')}", f"φ, {_unit('deg')}",
+             f"φ', {_unit('rad_s')}"]]  # fmt: skip
+    for tt, ph, om in zip(times, phis, omegas, strict=True):
+        rows.append([f(float(tt), 4), f(float(ph), 4), f(math.degrees(float(ph)), 4),
+                     f(float(om), 4)])  # fmt: skip
+    table = V.Table(rows, widths=(PANEL_W / 4.0,) * 4, title=WORDS("table_head"))
+    deriv = _paragraphs(WORDS("deriv_head"), [WORDS(k) for k in ("deriv_1", "deriv_2", "deriv_3",
+                                                                  "deriv_4")])  # fmt: skip
+    right = Column(integ, table, deriv, _given(sol), Spacer((10.0, TITLE_BLOCK_H)))
+    # the lower diagram keeps clear of the title block's corner on its right
+    left = Column(diagrams[0], Row(diagrams[1], Spacer((30.0, 10.0))))
+    tree = Row(left, right, weights=(0.6, 0.4))
+    d = start("A3", _title(sol, "tb_motion", 2))
+    compose(d, tree)
     return d.finish()

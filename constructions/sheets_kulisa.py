@@ -1,52 +1,102 @@
 """kulisa-23110713's drawing sheets: what the student hands in.
 
-- main sheet: the mechanism at φ with the velocities of its points drawn at μ_V (V_A ⊥ OA, the
-  yoke's V_A2 = V_A1 + V_A2A1, the roller's V_D = V_2 and V_C3 from its instantaneous centre P),
-  the velocity plan, the given data and the results beside the report's;
-- ``graphs``: I_pr(φ) and ω1(φ) over a turn from rest (the kinetic-energy theorem as a curve, the
-  solve_ivp integration as points), the equation of motion, the two methods side by side, and
-  the report's errata;
-- ``fbd``: the free-body diagrams of flywheel, yoke and roller with the reactions and the inertia
-  loads at μ_F, and the mechanism balanced by the horizontal force F_x at the roller's axis.
+- main sheet (composed by geomcad.sheet.compose): the mechanism at φ with the velocities of its
+  points drawn at μ_V (V_A ⊥ OA, the yoke's V_A2 = V_A1 + V_A2A1, the roller's V_D = V_2 and
+  V_C3 from its instantaneous centre P), the velocity plan, the given data and the results;
+- ``graphs`` (composed): I_pr(φ) and ω1(φ) over a turn from rest (the kinetic-energy theorem as
+  a curve, the solve_ivp integration as points) with their ordinates, the equation of motion,
+  and the two methods side by side in a table;
+- ``fbd`` (still placed by hand: the layout step gave the views 1:15 with room for their loads):
+  the free-body diagrams of flywheel, yoke and roller with the reactions and the inertia loads at
+  μ_F, and the mechanism balanced by the horizontal force F_x at the roller's axis.
+
+Every word comes from ``strings/<lang>/sheets_kulisa.toml``.
 """
 
 from __future__ import annotations
 
 import math
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from geomcad.geom import Vec
+from geomcad.dynamics.analogues import Array
+from geomcad.geom import Arc, Circle, Vec
 from geomcad.sheet import Drawing, Scale, Sheet, TitleBlock, Viewport, start
-from geomcad.sheet.graph import Axis, Graph
+from geomcad.sheet import views as V
+from geomcad.sheet.compose import (
+    Column,
+    Field,
+    Figure,
+    Node,
+    Row,
+    Spacer,
+    View,
+    arrange,
+    compose,
+    text_width,
+)
+from geomcad.sheet.graph import Graph
+from geomcad.sheet.lang import Words, current
 from geomcad.sheet.loads import force, ground, moment
+from geomcad.sheet.motion import Frames, turn
 from geomcad.sheet.scale import gost_length_scale, gost_scale_to_fit, nice_factor
 
-from .dyn_common import Where, draw_loads, f, short_note, small
-from .p_kulisa import Data, sweep, turns
+from .dyn_common import Where, draw_loads, f, load, mu, short_note, small
+from .p_kulisa import Data, mechanism, sweep, turns
+from .spec_kulisa import PROBLEM
 
 if TYPE_CHECKING:
     from geomcad.problem import Solution
 
-PANEL_X = 292.0
+#: The width (mm) of the main sheet's notes on the right.
 PANEL_W = 118.0
-#: The field of the mechanism on the main sheet (mm): x0, y0, x1, y1.
-SCHEME = (26.0, 30.0, 284.0, 182.0)
-#: The field of the velocity plan (mm): x0, y0, x1, y1 (left of the title block).
-PLAN = (25.0, 196.0, 226.0, 288.0)
 SLOT_W = 0.08  # the slot's half-width and the yoke's bar height, in units of OA
 SHEETS = 3
 
 
-def _tb(sol: Solution, title: str, no: int, scale: str = "") -> TitleBlock:
+WORDS = Words(__package__, "sheets_kulisa")
+
+
+def _tb(key: str, no: int, scale: str = "") -> TitleBlock:
     return TitleBlock(
-        title=title,
-        designation=f"КР.23110713.0{no}",
+        title=WORDS(key),
+        designation=WORDS("designation", no=no),
         sheet_no=no,
         sheets=SHEETS,
         scale=scale,
+        lang=current(),
     )
+
+
+def _u(key: str) -> str:
+    """A unit's symbol in the language being drawn."""
+    return WORDS(f"u_{key}")
+
+
+#: The largest reaction on the free-body sheet gets at most this many mm.
+FORCE_ROOM_MM = 45.0
+#: The largest velocity on the scheme gets at most this many mm.
+VELOCITY_ROOM_MM = 36.0
+
+
+def scales(sol: Solution) -> dict[str, float]:
+    """The sheets' μ_F (the free-body diagrams) and μ_V (the velocities on the scheme)."""
+    data: Data = sol.data
+    res = sol.results
+    loads = [
+        ld.force.norm
+        for r in (data.dynamic, data.static)
+        for lds in r.loads.values()
+        for ld in lds
+        if ld.force is not None
+    ]
+    biggest = max(res["N_A"], res["X_O"], res["Y_O"], res["F_x"], *loads)
+    w_oa = data.omega * float(sol.params["OA"])
+    return {
+        "F": nice_factor(biggest, FORCE_ROOM_MM, "F").k,
+        "v": nice_factor(w_oa, VELOCITY_ROOM_MM, "v").k,
+    }
 
 
 def sheets(sol: Solution) -> list[tuple[str, Sheet]]:
@@ -73,11 +123,6 @@ def _extent(sol: Solution, data: Data) -> tuple[float, float, float, float]:
     return x0, y0, x1, y1
 
 
-def _scale_for(box: tuple[float, float, float, float], room: tuple[float, float]) -> Scale:
-    w, h = box[2] - box[0], box[3] - box[1]
-    return gost_scale_to_fit(w, h, room[0], room[1])
-
-
 def _flywheel(v: Viewport, sol: Solution, data: Data, pivot: bool = True) -> None:
     p = _p(sol)
     A = data.yoke.pin.point()
@@ -90,9 +135,16 @@ def _flywheel(v: Viewport, sol: Solution, data: Data, pivot: bool = True) -> Non
     v.joint(A)
 
 
+def bar_level(p: dict[str, float]) -> float:
+    """The lower edge (model y) of the yoke's bar: above the roller's rim, which rises R3 − r3
+    over the contact line y = 0, by one bar height, so that the bar runs clear of the flywheel's
+    pivot O and of the roller's rim; a foot comes down from it to the contact D."""
+    return p["R3"] - p["r3"] + SLOT_W * p["OA"]
+
+
 def _yoke(v: Viewport, sol: Solution, data: Data, guides: bool = True) -> None:
-    """The yoke: a frame around the vertical slot through A and a bar along y = 0 whose lower
-    edge bears on the roller's hub at D."""
+    """The yoke: a frame around the vertical slot through A, a bar from the frame to above the
+    roller at bar_level, and a foot down to D = (x_C3, 0), where it bears on the roller's hub."""
     p = _p(sol)
     OA = p["OA"]
     A = data.yoke.pin.point()
@@ -104,21 +156,33 @@ def _yoke(v: Viewport, sol: Solution, data: Data, guides: bool = True) -> None:
                closed=True)  # fmt: skip
     v.polyline([(xa - 2 * w, bot), (xa + 2 * w, bot), (xa + 2 * w, top), (xa - 2 * w, top)], "link",
                closed=True)  # fmt: skip
-    # the bar from the frame to beyond the roller, its lower edge on y = 0
-    x_end = data.C3.x + 0.6 * p["R3"]
-    v.polyline([(xa + 2 * w, 0.0), (x_end, 0.0), (x_end, w), (xa + 2 * w, w)], "link")
+    # the bar and its foot: one outline from the frame's right side round to the frame again
+    y0 = bar_level(p)
+    xd = data.C3.x
+    v.polyline(
+        [(xa + 2 * w, y0), (xd - w / 2, y0), (xd - w / 2, 0.0), (xd + w / 2, 0.0),
+         (xd + w / 2, y0 + w), (xa + 2 * w, y0 + w)],
+        "link",
+    )  # fmt: skip
     if guides:
-        for gx in (0.55, 0.8):
-            xg = xa + 2 * w + gx * (x_end - xa - 2 * w)
-            half = 0.1 * (x_end - xa)
-            ground(v, (xg - half, w + 0.5 * w), (xg + half, w + 0.5 * w), (0.0, 1.0))
+        for gx in (0.35, 0.7):
+            xg = xa + 2 * w + gx * (xd - xa - 2 * w)
+            half = 0.08 * (xd - xa)
+            ground(v, (xg - half, y0 + 1.5 * w), (xg + half, y0 + 1.5 * w), (0.0, 1.0))
 
 
-def _roller(v: Viewport, sol: Solution, data: Data, base: bool = True) -> None:
+def _roller(v: Viewport, sol: Solution, data: Data, base: bool = True, foot: bool = True) -> None:
+    """The roller: its rim R3 (broken where the yoke's foot passes in front of it), its hub r3,
+    its axis C3, and the base it rolls on."""
     p = _p(sol)
     R3, r3 = p["R3"], p["r3"]
     c3 = data.C3
-    v.circle(c3, R3, "link")
+    w = SLOT_W * p["OA"]
+    if foot and w / 2.0 < R3:
+        gap = math.asin(min(1.0, (w / 2.0) / R3)) + v.scale.model(0.6) / R3
+        v.arc(Arc(Circle(c3, R3), math.pi / 2.0 + gap, math.pi / 2.0 - gap), "link")
+    else:
+        v.circle(c3, R3, "link")
     if r3 > 0.0:
         v.circle(c3, r3, "link")
     v.joint(c3)
@@ -127,41 +191,64 @@ def _roller(v: Viewport, sol: Solution, data: Data, base: bool = True) -> None:
         ground(v, (c3.x - 1.6 * R3, yb), (c3.x + 1.6 * R3, yb), (0.0, -1.0))
 
 
+def _numbers(v: Viewport, sol: Solution, data: Data) -> None:
+    """The links' numbers (GOST 2.770): flywheel 1, yoke 2, roller 3."""
+    p = _p(sol)
+    A = data.yoke.pin.point()
+    w = SLOT_W * p["OA"]
+    c3 = data.C3
+    v.label(Vec.polar(p["R1"], math.radians(-60.0)), "1", 3.5, prefer=(1.0, -1.0), clear=1.5)
+    v.label((A.x - 2.0 * w, -0.8 * p["OA"]), "2", 3.5, prefer=(-1.0, 0.0), clear=1.5)
+    v.label(c3 + Vec.polar(p["R3"], math.radians(-40.0)), "3", 3.5, prefer=(1.0, -1.0),
+            clear=1.5)  # fmt: skip
+
+
 # -- the main sheet ----------------------------------------------------------------------------
 
 
 def _main(sol: Solution) -> Sheet:
-    data: Data = sol.data
-    p = _p(sol)
-    box = _extent(sol, data)
-    room = (SCHEME[2] - SCHEME[0], SCHEME[3] - SCHEME[1])
-    k = _scale_for(box, room)
-    d = start("A3", _tb(sol, "Кулисный механизм: скорости в положении φ", 1, k.ratio_text()))
-    d.text("Кинематическая схема в положении φ и скорости точек", (25.0, 13.0), 5.0)
-    kv = Scale(data.k_v, "v")
-    d.text(
-        f"φ = {f(p['phi_deg'])}°, ω_1 = {f(data.omega)} рад/с;   {k.label()} "
-        f"(M {k.ratio_text()});   {kv.label()}",
-        (25.0, 20.0),
-        3.5,
-    )
-    cx = SCHEME[0] + (-box[0]) / k.k + 0.5 * (room[0] - (box[2] - box[0]) / k.k)
-    cy = SCHEME[1] + box[3] / k.k + 0.5 * (room[1] - (box[3] - box[1]) / k.k)
-    v = d.viewport(k, (0.0, 0.0), (cx, cy))
-    _flywheel(v, sol, data)
-    _yoke(v, sol, data)
-    _roller(v, sol, data)
-    _velocities(v, sol, data)
-    _plan(d, sol, data)
-    _panel_main(d, sol, data)
+    tree, views = _main_tree(sol)
+    k = arrange(tree, Field.of_format("A3"))[views["scheme"]].scale
+    assert k is not None
+    d = start("A3", _tb("tb_main", 1, k.ratio_text()))
+    compose(d, tree)
     return d.finish()
 
 
+def _main_tree(sol: Solution) -> tuple[Node, dict[str, View]]:
+    """The scheme with its velocities, the velocity plan and its words under it, the tables on
+    the right; the title block's corner kept free."""
+    data: Data = sol.data
+    # the model box holds the velocities drawn at μ_V (at most VELOCITY_ROOM_MM long)
+    scheme = Figure(_extent(sol, data), lambda v: _scheme(v, sol, data),
+                    title=WORDS("head_main"), margin=3.0, weight=3.0)  # fmt: skip
+    return _main_layout(sol, data, scheme), {"scheme": scheme}
+
+
+def _scheme(v: Viewport, sol: Solution, data: Data) -> None:
+    _flywheel(v, sol, data)
+    _yoke(v, sol, data)
+    _roller(v, sol, data)
+    _numbers(v, sol, data)
+    _velocities(v, sol, data)
+
+
+def _main_layout(sol: Solution, data: Data, scheme: View) -> Node:
+    p = _p(sol)
+    kv = Scale(sol.scales["v"], "v")
+    state = V.Text(lines=[WORDS("state", phi=f(p["phi_deg"]), omega=f(data.omega), mu_v=mu(kv))],
+                   height=3.5)  # fmt: skip
+    plan, words = _plan(sol, data)
+    left = Column(state, scheme, Row(plan, words, Spacer((30.0, 10.0))), weights=(1.0, 0.66, 0.34))
+    return Row(left, _panel_main(sol, data), weights=(0.69, 0.31))
+
+
 def _velocities(v: Viewport, sol: Solution, data: Data) -> None:
-    """V_A ⊥ OA, V_A2 = V_A1 + V_A2A1 along x, V_D = V_2 at the contact, V_C3 from P."""
+    """V_A ⊥ OA, V_A2 = V_A1 + V_A2A1 along x, V_D = V_2 at the contact, V_C3 from P; each from
+    its point at μ_V, V_D along the contact line below the yoke's bar."""
     p = _p(sol)
     w = data.omega
-    kv = data.k_v
+    kv = sol.scales["v"]
     km = v.scale.k
     A = data.yoke.pin.point()
     c3 = data.C3
@@ -179,7 +266,7 @@ def _velocities(v: Viewport, sol: Solution, data: Data) -> None:
                          (c3, vc, "V_{C3}")):  # fmt: skip
         if vel.norm > 0.0:
             v.arrow(q, tip(q, vel), "result")
-            v.label(tip(q, vel), name, 2.5, prefer=(vel.x, vel.y))
+            v.label(tip(q, vel), name, 2.5, prefer=(vel.x, vel.y) if q != D else (0.0, -1.0))
     # V_A2A1 along the slot: from V_A's tip to V_A2's tip
     if (v2 - va).norm > 0.0:
         v.arrow(tip(A, va), tip(A, v2), "construction")
@@ -190,7 +277,7 @@ def _velocities(v: Viewport, sol: Solution, data: Data) -> None:
     v.dot(P)
     v.label(P, "P_3", 2.5, prefer=(1.0, -1.0))
     v.dot(D)
-    v.label(D, "D", 2.5, prefer=(1.0, 1.0))
+    v.label(D, "D", 2.5, prefer=(1.0, -1.0))
     v.label(A, "A", 3.5, prefer=(-1.0, 1.0))
     v.label((0.0, 0.0), "O", 3.5, prefer=(-1.0, -1.0))
     v.label(c3, "C_3", 3.5, prefer=(1.0, -1.0))
@@ -201,147 +288,185 @@ def _velocities(v: Viewport, sol: Solution, data: Data) -> None:
     moment(v, c3, w3, 0.55 * v.mm(p["R3"]), "ω_3", role="result", start=math.radians(110.0),
            height=2.5)  # fmt: skip
     v.seg((0.0, 0.0), (0.6 * p["R1"], 0.0), "centre")
-    v.dim_angle((0.0, 0.0), (p["OA"], 0.0), A, "φ", r_mm=0.45 * v.mm(p["OA"]), height=2.5)
+    # the φ arc under the yoke's bar (and outside ω1's arrow)
+    r_phi = max(12.0, min(0.45 * v.mm(p["OA"]), v.mm(bar_level(p)) - 2.5))
+    v.dim_angle((0.0, 0.0), (p["OA"], 0.0), A, "φ", r_mm=r_phi, height=2.5)
 
 
-def _plan(d: Drawing, sol: Solution, data: Data) -> None:
-    """The velocity plan: pa1 = V_A1 ⊥ OA, a1a2 ∥ slot, pa2 = V_A2 ∥ guide, pc3 = V_C3."""
+def _plan(sol: Solution, data: Data) -> tuple[View, View]:
+    """The velocity plan (pa1 = V_A1 ⊥ OA, a1a2 ∥ slot, pa2 = V_A2 ∥ guide, pc3 = V_C3) at the
+    layout's μ_V, and its words."""
     w = data.omega
     va, _ = data.yoke.pin.velocity(w)
     v2, _ = data.yoke.body.velocity(w)
     vc, _ = data.roller.velocity(w)
-    kv = nice_factor(va.norm, PLAN[3] - PLAN[1] - 14.0, "v") if va.norm > 0.0 else Scale(1.0, "v")
-    d.text(f"План скоростей, {kv.label()}", (PLAN[0], PLAN[1]), 3.5)
     xs = [0.0, va.x, v2.x, vc.x]
     ys = [0.0, va.y, v2.y, vc.y]
-    mid_x = 0.5 * (min(xs) + max(xs)) / kv.k
-    mid_y = 0.5 * (min(ys) + max(ys)) / kv.k
-    pole = (0.5 * (PLAN[0] + 60.0 + PLAN[2]) - mid_x, 0.5 * (PLAN[1] + 6.0 + PLAN[3]) + mid_y)
-    pv = d.viewport(kv, (0.0, 0.0), pole)
-    for vec_, name in ((va, "a_1"), (v2, "a_2 = d"), (vc, "c_3")):
-        if vec_.norm > 0.0:
-            pv.arrow((0.0, 0.0), vec_, "result")
-            pv.dot(vec_)
-            pv.label(vec_, name, 3.5, prefer=(0.0, -1.0) if name == "c_3" else None)
-    if (v2 - va).norm > 0.0:
-        pv.arrow(va, v2, "construction")
-    pv.dot((0.0, 0.0))
-    pv.label((0.0, 0.0), "p", 3.5, prefer=(1.0, 1.0))
+
+    def draw(pv: Viewport) -> None:
+        for vec_, name in ((va, "a_1"), (v2, "a_2 = d"), (vc, "c_3")):
+            if vec_.norm > 0.0:
+                pv.arrow((0.0, 0.0), vec_, "result")
+                pv.dot(vec_)
+                pv.label(vec_, name, 3.5, prefer=(0.0, -1.0) if name == "c_3" else None)
+        if (v2 - va).norm > 0.0:
+            pv.arrow(va, v2, "construction")
+        pv.dot((0.0, 0.0))
+        pv.label((0.0, 0.0), "p", 3.5, prefer=(1.0, 1.0))
+
+    plan = Figure((min(xs), min(ys), max(xs), max(ys)), draw, title=WORDS("plan_title"),
+                  quantity="v", series="nice", margin=5.0)  # fmt: skip
     k3 = vc.norm / v2.norm if v2.norm > 0.0 else 0.0
-    y = PLAN[1] + 6.0
+    ms = _u("m_s")
+    lines: list[str] = []
     for ln in (
-        f"pa_1 = V_A = ω_1·OA = {f(va.norm)} м/с, перпендикулярно OA;",
-        "a_1a_2 = V_{A2A1} – вдоль паза; pa_2 = V_{A2} = V_2 – вдоль направляющей;",
-        f"pa_2 = {f(v2.norm)} м/с; точка D катка: V_D = V_2;",
-        f"pc_3 = V_{{C3}} = V_2·R_3/(R_3 + r_3) = {f(vc.norm)} м/с (pc_3/pa_2 = {f(k3)}).",
+        WORDS("plan_1", va=f(va.norm), u=ms),
+        WORDS("plan_2"),
+        WORDS("plan_3", v2=f(v2.norm), u=ms),
+        WORDS("plan_4", vc=f(vc.norm), u=ms, k3=f(k3)),
     ):
-        y = d.paragraph(ln, PLAN[0], y, 56.0, 2.5, indent=3.0) + 1.0
+        lines += _wrap(ln, 70.0)
+    return plan, V.Text(lines=lines, width=70.0)
+
+
+def _wrap(text: str, width: float, height: float = 2.5) -> list[str]:
+    """``text`` wrapped at spaces into lines of at most ``width`` mm."""
+    out: list[list[str]] = [[]]
+    for word in text.split(" "):
+        if out[-1] and text_width(" ".join([*out[-1], word]), height) > width:
+            out.append([])
+        out[-1].append(word)
+    return [" ".join(w) for w in out]
+
+
+def _notes(items: list[str], width: float = 0.0, dash: bool = False) -> View:
+    width = width or PANEL_W
+    lines: list[str] = []
+    for it in items:
+        lines += _wrap(f"– {it}" if dash else it, width)
+    return V.Text(lines=lines, width=width)
 
 
 def _results_rows(sol: Solution, names: tuple[tuple[str, str, str], ...]) -> list[list[str]]:
-    rows = [["Величина", "Значение"]]
+    rows = [[WORDS("quantity"), WORDS("value")]]
     for name, label, unit in names:
-        rows.append([label, f"{f(float(sol.results[name]), 4)} {unit}".strip()])
+        rows.append([label, f"{f(float(sol.results[name]), 4)} {_u(unit) if unit else ''}".strip()])
     return rows
 
 
-def _panel_main(d: Drawing, sol: Solution, data: Data) -> None:
+def _given(sol: Solution) -> View:
     p = _p(sol)
-    x, y = PANEL_X, 10.0
-    d.text("Исходные данные", (x, y + 3.5), 3.5)
     items = [
-        ("m1", "m_1", "кг"), ("R1", "R_1", "м"), ("OA", "OA", "м"), ("m2", "m_2", "кг"),
-        ("m3", "m_3", "кг"), ("R3", "R_3", "м"), ("r3", "r_3", "м"), ("rho3", "ρ_3", "м"),
-        ("M", "M", "Н·м"), ("phi_deg", "φ", "°"), ("phi0_deg", "φ_0", "°"),
+        ("m1", "m_1", "kg"), ("R1", "R_1", "m"), ("OA", "OA", "m"), ("m2", "m_2", "kg"),
+        ("m3", "m_3", "kg"), ("R3", "R_3", "m"), ("r3", "r_3", "m"), ("rho3", "ρ_3", "m"),
+        ("M", "M", "Nm"), ("phi_deg", "φ", "deg"), ("phi0_deg", "φ_0", "deg"),
     ]  # fmt: skip
-    cells = [f"{lab} = {f(p[n], 6)}{'' if u == '°' else ' '}{u}" for n, lab, u in items]
+    cells = [f"{lab} = {f(p[n], 6)}{'' if u == 'deg' else ' '}{_u(u)}" for n, lab, u in items]
     cells.append("")
-    rows = [["Параметр", "Параметр"]] + [[cells[i], cells[i + 1]] for i in range(0, 12, 2)]
-    _, h = d.table(x, y + 6.0, (59.0, 59.0), rows)
-    y += 6.0 + h + 6.0
-    d.text("Скорости в положении φ", (x, y + 3.5), 3.5)
+    par = WORDS("param")
+    rows = [[par, par]] + [[cells[i], cells[i + 1]] for i in range(0, 12, 2)]
+    return V.Table(rows, widths=(59.0, 59.0), title=WORDS("given"))
+
+
+def _panel_main(sol: Solution, data: Data) -> Node:
     w = data.omega
     va, _ = data.yoke.pin.velocity(w)
     v2, _ = data.yoke.body.velocity(w)
     vc, w3 = data.roller.velocity(w)
+    qty, val = WORDS("quantity"), WORDS("value")
+    ms = _u("m_s")
     rows = [
-        ["Величина", "Значение", "Величина", "Значение"],
-        ["V_A", f"{f(va.norm)} м/с", "V_2 = V_D", f"{f(v2.norm)} м/с"],
-        ["V_{C3}", f"{f(vc.norm)} м/с", "ω_3", f"{f(abs(w3))} рад/с"],
+        [qty, val, qty, val],
+        ["V_A", f"{f(va.norm, 4)} {ms}", "V_2 = V_D", f"{f(v2.norm, 4)} {ms}"],
+        ["V_{C3}", f"{f(vc.norm, 4)} {ms}", "ω_3", f"{f(abs(w3), 4)} {_u('rad_s')}"],
     ]
-    _, h = d.table(x, y + 6.0, (20.0, 39.0, 20.0, 39.0), rows)
-    y += 6.0 + h + 6.0
-    d.text("Результаты", (x, y + 3.5), 3.5)
-    rows = _results_rows(
-        sol,
-        (
-            ("I_pr_A", "A", "кг·м²"),
-            ("I_pr_B", "B", "кг·м²"),
-            ("I_pr", "I_{пр}", "кг·м²"),
-            ("dI_pr", "dI_{пр}/dφ", "кг·м²"),
-            ("omega1", "ω_1", "рад/с"),
-            ("eps1", "ε_1", "рад/с²"),
-            ("t_reach", "t(φ)", "с"),
-            ("omega_ode", "ω_1 (ОДУ)", "рад/с"),
+    vel = V.Table(rows, widths=(20.0, 39.0, 20.0, 39.0), title=WORDS("velocities_head"))
+    res = V.Table(
+        _results_rows(
+            sol,
+            (
+                ("I_pr_A", "A", "kgm2"),
+                ("I_pr_B", "B", "kgm2"),
+                ("I_pr", WORDS("I_pr"), "kgm2"),
+                ("dI_pr", WORDS("dI_pr"), "kgm2"),
+                ("omega1", "ω_1", "rad_s"),
+                ("eps1", "ε_1", "rad_s2"),
+                ("t_reach", "t(φ)", "s"),
+                ("omega_ode", WORDS("omega_ode"), "rad_s"),
+            ),
         ),
+        widths=(40.0, 78.0),
+        title=WORDS("results_head"),
     )
-    _, h = d.table(x, y + 6.0, (40.0, 78.0), rows)
-    y += 6.0 + h + 4.0
-    lines = (
-        "I_{пр} = A + B·sin^2φ; A = m_1R_1^2/2, B = [m_2 + m_3(R_3^2 + ρ_3^2)/(R_3 + r_3)^2]·OA^2.",
-        "Скорости – из плана скоростей (V_{A2} = V_{A1} + V_{A2A1}) и мгновенного "
-        "центра P_3 катка.",
-    )
-    for ln in lines:
-        y = d.paragraph(ln, x, y, PANEL_W, 2.5) + 0.8
+    notes = _notes([WORDS("note_1"), WORDS("note_2")])
+    return Column(_given(sol), vel, res, notes, Spacer((10.0, TITLE_BLOCK_H)))
+
+
+#: The height (mm) the title block takes at the bottom of the field, with its margin.
+TITLE_BLOCK_H = 58.0
 
 
 # -- graphs --------------------------------------------------------------------------------------
 
 
 def _graphs(sol: Solution) -> Sheet:
+    """I_pr(φ) above ω1(φ) on the left (their ordinates at the tabulated positions), the equation
+    of motion and a table of both every 15° on the right."""
     data: Data = sol.data
     p = _p(sol)
-    d = start("A3", _tb(sol, "Кулисный механизм: I_{пр}(φ) и ω_1(φ)", 2))
-    d.text("Приведённый момент инерции и угловая скорость маховика за оборот", (25.0, 13.0), 5.0)
     sw = sweep(data)
     phis_deg = np.degrees(sw["phi"])
-    lo, hi = float(phis_deg[0]), float(phis_deg[-1])
-    gx = Axis.fit("φ", "°", lo, hi, 195.0).with_tick(30.0 * turns(data))
-    # 1. I_pr(φ)
-    i_vals = sw["I_pr"]
-    gy = Axis.fit("I_{пр}", "кг·м²", 0.0, float(np.max(i_vals)), 90.0, name="I")
-    d.text("1. I_{пр}(φ) = A + B·sin^2φ", (25.0, 24.0), 3.5)
-    g = Graph(d, gx, gy, (40.0, 38.0 + gy.mm(gy.hi) + 6.0))
-    g.factors((25.0, 30.0))
-    g.curve(list(phis_deg), list(i_vals), "result")
-    g.axes()
+    tick = 30.0 * turns(data)
+    ode = _turn_ode(data)
     phi_deg = p["phi_deg"]
-    g.curve([phi_deg, phi_deg], [0.0, float(sol.results["I_pr"])], "centre")
-    g.point(phi_deg, float(sol.results["I_pr"]), f"I_{{пр}} = {f(sol.results['I_pr'])}",
-            prefer=(1.0, -1.0))  # fmt: skip
-    # 2. ω1(φ) from rest: the energy theorem (curve) and solve_ivp (points)
-    om = sw["omega"]
-    y2 = 148.0
-    gy2 = Axis.fit("ω_1", "рад/с", 0.0, float(np.max(om)), 70.0, name="ω")
-    d.text("2. ω_1(φ) из состояния покоя при φ_0: теорема об изменении кинетической энергии "
-           "(линия) и численное интегрирование (точки)", (25.0, y2), 3.5)  # fmt: skip
-    g2 = Graph(d, gx, gy2, (40.0, y2 + 14.0 + gy2.mm(gy2.hi) + 6.0))
-    g2.factors((25.0, y2 + 6.0))
-    g2.curve(list(phis_deg), list(om), "result")
-    g2.axes()
-    tr = data.arrival.trajectory
-    full = _turn_ode(data)
-    for a, wv in zip(full[0], full[1], strict=True):
-        g2.point(float(np.degrees(a)), float(wv))
-    g2.curve([phi_deg, phi_deg], [0.0, data.omega], "centre")
-    g2.point(phi_deg, data.omega, f"ω_1 = {f(data.omega)}", prefer=(1.0, -1.0))
-    del tr
-    _panel_graphs(d, sol, data)
+    i_pr, w1 = float(sol.results["I_pr"]), data.omega
+
+    def extra_i(g: Graph) -> None:
+        _ordinates(g, ode[0], data.model.J_pr(np.asarray(ode[0])))
+        g.curve([phi_deg, phi_deg], [0.0, i_pr], "centre")
+        g.point(phi_deg, i_pr, f"{WORDS('I_pr')} = {f(i_pr)}", prefer=(1.0, -1.0))
+
+    def extra_w(g: Graph) -> None:
+        _ordinates(g, ode[0], ode[1])
+        for a, wv in zip(ode[0], ode[1], strict=True):
+            g.point(float(np.degrees(a)), float(wv))
+        g.curve([phi_deg, phi_deg], [0.0, w1], "centre")
+        g.point(phi_deg, w1, f"ω_1 = {f(w1)}", prefer=(1.0, -1.0))
+
+    d1 = V.Diagram(
+        V.AxisSpec("φ", "°", tick=tick),
+        V.AxisSpec(WORDS("I_pr"), _u("kgm2"), name="I"),
+        [V.Curve(list(phis_deg), list(sw["I_pr"]))],
+        extra=extra_i,
+        title=WORDS("graph_1"),
+        least=(150.0, 70.0),
+        prefer=(230.0, 110.0),
+    )
+    d2 = V.Diagram(
+        V.AxisSpec("φ", "°", tick=tick),
+        V.AxisSpec("ω_1", _u("rad_s"), name="ω"),
+        [V.Curve(list(phis_deg), list(sw["omega"]))],
+        extra=extra_w,
+        title=WORDS("graph_2"),
+        least=(150.0, 70.0),
+        prefer=(230.0, 110.0),
+    )
+    left = Column(d1, Row(d2, Spacer((30.0, 10.0))))
+    tree = Row(left, _panel_graphs(sol, data, ode), weights=(0.6, 0.4))
+    d = start("A3", _tb("tb_graphs", 2))
+    compose(d, tree)
     return d.finish()
 
 
-def _turn_ode(data: Data, n: int = 13) -> tuple[list[float], list[float]]:
+def _ordinates(g: Graph, phis: list[float], vals: Any) -> None:
+    """The diagram's ordinates at the tabulated positions (thin lines from the φ axis)."""
+    for a, val in zip(phis, vals, strict=True):
+        if float(val) > 0.0:
+            x = math.degrees(float(a))
+            g.curve([x, x], [0.0, float(val)], "construction")
+
+
+def _turn_ode(data: Data, n: int = 25) -> tuple[list[float], list[float]]:
     """ω1 by solve_ivp at n positions over the diagram's turns, on one motion from rest at φ0."""
     from geomcad.dynamics import reach
 
@@ -354,22 +479,37 @@ def _turn_ode(data: Data, n: int = 13) -> tuple[list[float], list[float]]:
     return [data.phi0, *phis], [0.0, *omegas]
 
 
-def _panel_graphs(d: Drawing, sol: Solution, data: Data) -> None:
+def _panel_graphs(sol: Solution, data: Data, ode: tuple[list[float], list[float]]) -> Node:
     r = sol.results
     p = _p(sol)
-    x, y = 262.0, 10.0
-    width = 146.0
-    y = d.text("Уравнение движения", (x, y + 3.5), 3.5).at[1] + 2.0
     a_, b_ = float(r["I_pr_A"]), float(r["I_pr_B"])
-    lines = (
-        "I_{пр}(φ)φ'' + ½(dI_{пр}/dφ)φ'^2 = M (уравнение движения машины; то же даёт уравнение "
-        "Лагранжа II рода):",
-        f"({f(a_, 4)} + {f(b_, 4)}·sin^2φ)·φ'' + {f(b_ / 2.0, 4)}·sin 2φ·φ'^2 = {f(p['M'], 4)}.",
-        "ω_1 = [2M(φ – φ_0)/I_{пр}(φ)]^{1/2} – теорема об изменении кинетической энергии; "
-        "ε_1 = (M – ½I'_{пр}ω_1^2)/I_{пр}.",
+    eq = _notes(
+        [
+            WORDS("eq_1"),
+            WORDS("eq_2", a=f(a_, 4), b=f(b_, 4), half=f(b_ / 2.0, 4), M=f(p["M"], 4)),
+            WORDS("eq_3"),
+            WORDS("graph_2_note"),
+        ],
+        GRAPHS_PANEL_W,
     )
-    for ln in lines:
-        y = d.paragraph(ln, x, y, width, 2.5, indent=4.0) + 0.8
+    eq.title = WORDS("eq_head")
+    # I_pr and ω1 at the diagrams' points: the energy theorem beside the integration
+    rows = [["φ, °", f"{WORDS('I_pr')}, {_u('kgm2')}", f"ω_1, {_u('rad_s')}",
+             f"{WORDS('omega_ode')}, {_u('rad_s')}"]]  # fmt: skip
+    phis = np.asarray(ode[0])
+    i_pr = data.model.J_pr(phis)
+    from geomcad.dynamics import omega_curve
+
+    om = omega_curve(data.model, data.phi0, phis)
+    for a, ip, w_e, w_o in zip(phis, i_pr, om, ode[1], strict=True):
+        rows.append([f(math.degrees(float(a)), 5), f(float(ip), 4), f(float(w_e), 4),
+                     f(float(w_o), 4)])  # fmt: skip
+    table = V.Table(rows, widths=(GRAPHS_PANEL_W / 4.0,) * 4, title=WORDS("table_head"))
+    return Column(eq, table, Spacer((10.0, TITLE_BLOCK_H)))
+
+
+#: The width (mm) of the graphs sheet's right panel.
+GRAPHS_PANEL_W = 146.0
 
 
 # -- free-body diagrams --------------------------------------------------------------------------
@@ -386,7 +526,7 @@ def _fbd_boxes(sol: Solution, data: Data) -> dict[str, Box]:
     w = SLOT_W * OA
     return {
         "1": (-R1, -R1, R1, R1),
-        "2": (A.x - 2.0 * w, -OA - 2.0 * w, c3.x + 0.6 * R3, OA + 2.0 * w),
+        "2": (A.x - 2.0 * w, -OA - 2.0 * w, c3.x + w, OA + 2.0 * w),
         "3": (c3.x - R3, c3.y - R3, c3.x + R3, c3.y + R3),
         "all": _extent(sol, data),
     }
@@ -418,11 +558,12 @@ def _fbd(sol: Solution) -> Sheet:
     p = _p(sol)
     boxes = _fbd_boxes(sol, data)
     k = _fbd_scale(boxes)
-    d = start("A3", _tb(sol, "Кулисный механизм: реакции связей", 3, k.ratio_text()))
-    d.text("Силы, действующие на звенья в положении φ (с силами инерции), и уравновешивающая сила",
-           (25.0, 13.0), 5.0)  # fmt: skip
-    d.text(f"{k.label()} (M {k.ratio_text()});   {short_note(data.k_F)};   "
-           f"ε_1 = {f(data.eps)} рад/с²", (25.0, 20.0), 3.5)  # fmt: skip
+    k_F = sol.scales["F"]
+    d = start("A3", _tb("tb_fbd", 3, k.ratio_text()))
+    d.text(WORDS("head_fbd"), (25.0, 13.0), 5.0)
+    d.text(WORDS("state_fbd", mu_l=mu(k), ratio=k.ratio_text(), eps=f(data.eps)), (25.0, 20.0),
+           3.5)  # fmt: skip
+    d.text(f"{short_note(k_F)}.", (25.0, 25.5), 2.5)
 
     def view(name: str, left: float, mid_y: float) -> tuple[Viewport, float]:
         b = boxes[name]
@@ -432,111 +573,188 @@ def _fbd(sol: Solution) -> Sheet:
 
     A = data.yoke.pin.point()
     c3 = data.C3
+    D = Vec(c3.x, 0.0)
+    P = Vec(c3.x, -p["r3"] - p["R3"])
+    R = data.dynamic
+    gap = k.model(3.0)
     top_y, bot_y = 88.0, 196.0
     # a) the flywheel
     v1, right = view("1", 45.0, top_y)
-    d.text("а) маховик 1", (28.0, 32.0), 3.5)
+    d.text(WORDS("view_1"), (28.0, 32.0), 3.5)
     _flywheel(v1, sol, data, pivot=False)
     v1.label(A, "A", 3.5, prefer=(-1.0, 1.0))
     v1.label((0.0, 0.0), "O", 3.5, prefer=(-1.0, -1.0))
-    draw_loads(v1, data.dynamic, data.k_F, "1", {
+    draw_loads(v1, R, k_F, "1", {
         "M": Where("M", radius=6.0, start_deg=160.0),
-        "M_{Ф1}": Where("M_{Ф1}", radius=11.0, start_deg=-20.0),
+        "M_Phi1": Where(WORDS("M_Phi1"), radius=11.0, start_deg=-20.0),
         "R_{01}": Where("X_O", prefer=(0.0, 1.0)),
         "N_A": Where("N_A", prefer=(0.0, 1.0)),
     })  # fmt: skip
-    # b) the yoke
+    # b) the yoke: the loads along the contact line y = 0 are drawn in the free space under the
+    # bar (Ф_2 at C_2) and beyond the foot (R_32 at D), not along the bar's edge
     v2, _ = view("2", right + 40.0, top_y)
-    d.text("б) кулиса 2", (right + 30.0, 32.0), 3.5)
+    d.text(WORDS("view_2"), (right + 30.0, 32.0), 3.5)
     _yoke(v2, sol, data, guides=False)
     v2.dot(data.C2)
     v2.label(data.C2, "C_2", 3.5, prefer=(0.0, 1.0))
-    D = Vec(c3.x, 0.0)
     v2.dot(D)
-    v2.label(D, "D", 3.5, prefer=(1.0, 1.0))
+    v2.label(D, "D", 3.5, prefer=(1.0, -1.0))
     v2.label(A, "A", 3.5, prefer=(-1.0, 1.0))
-    draw_loads(v2, data.dynamic, data.k_F, "2", {
-        "N_A": Where("N_A", prefer=(0.0, 1.0)),
-        "Ф_2": Where("Ф_2", prefer=(0.0, -1.0)),
-        "R_{32}": Where("R_{32}", prefer=(0.0, -1.0)),
-        "M_{02}": Where("M_{02}", at=Vec(A.x, 0.0), radius=5.0, start_deg=60.0),
+    r32 = load(R, "2", "R_{32}")
+    draw_loads(v2, R, k_F, "2", {
+        # the pin's push arrives at A through the frame's outer side, clear of the bar
+        "N_A": Where("N_A", arrive=True, prefer=(0.0, 1.0)),
+        "Phi_2": Where(WORDS("Phi2"), prefer=(0.0, -1.0)),
+        # pointing away from the bar: leaving D; pointing at it: arriving from beyond the foot
+        "R_{32}": Where("R_{32}", arrive=r32 is not None and r32.x < 0.0, prefer=(0.0, -1.0)),
+        # the guide's couple drawn in the free space under the bar, right of the frame
+        "M_{02}": Where("M_{02}", at=Vec(data.C2.x, -0.45 * p["OA"]), radius=5.0,
+                        start_deg=60.0),
     })  # fmt: skip
-    # c) the roller
-    v3, right = view("3", 55.0, bot_y)
-    d.text("в) каток 3", (28.0, 150.0), 3.5)
-    _roller(v3, sol, data, base=False)
-    P = Vec(c3.x, -p["r3"] - p["R3"])
-    for q, name in ((D, "D"), (P, "P")):
+    # c) the roller, at its own (larger) scale: it is small beside the flywheel
+    b3 = boxes["3"]
+    k3 = gost_scale_to_fit(b3[2] - b3[0], b3[3] - b3[1], 96.0, 96.0)
+    half3 = 0.5 * (b3[2] - b3[0]) / k3.k
+    v3 = d.viewport(k3, ((b3[0] + b3[2]) / 2.0, (b3[1] + b3[3]) / 2.0), (32.0 + half3, 201.0))
+    right = 32.0 + 2.0 * half3
+    d.text(WORDS("view_3", ratio=k3.ratio_text()), (28.0, 146.0), 3.5)
+    _roller(v3, sol, data, base=False, foot=False)
+    for q, name, pref in ((D, "D", (-1.0, 1.0)), (P, "P", (-1.0, -1.0))):
         v3.dot(q)
-        v3.label(q, name, 3.5, prefer=(-1.0, 0.0))
-    v3.label(c3, "C_3", 3.5, prefer=(-1.0, 1.0))
-    draw_loads(v3, data.dynamic, data.k_F, "3", {
-        "R_{32}": Where("R_{23}"),
-        "R_{03}": Where("R_{03}"),
-        "Ф_3": Where("Ф_3", prefer=(0.0, 1.0)),
-        "M_{Ф3}": Where("M_{Ф3}", radius=v3.mm(p["R3"]) + 4.0, start_deg=100.0),
+        v3.label(q, name, 3.5, prefer=pref)
+    v3.label(c3, "C_3", 3.5, prefer=(-1.0, -1.0))
+    rim_mm, hub_mm = v3.mm(p["R3"]), v3.mm(p["r3"])
+    r_m3 = rim_mm - 8.0 if rim_mm - 8.0 > hub_mm + 6.0 else rim_mm + 4.0
+    draw_loads(v3, R, k_F, "3", {
+        "R_{32}": Where("R_{23}", prefer=(0.0, 1.0)),
+        "R_{03}": Where("R_{03}", prefer=(1.0, -1.0), short_at=P - Vec(0.0, gap)),
+        "Phi_3": Where(WORDS("Phi3"), prefer=(-1.0, 1.0)),
+        # inside the rim, outside the hub where there is room between them
+        "M_Phi3": Where(WORDS("M_Phi3"), radius=r_m3, start_deg=100.0),
     }, centre=c3)  # fmt: skip
     # d) the mechanism balanced by F_x at the roller's axis (no inertia loads)
-    v4, _ = view("all", right + 40.0, bot_y)
-    d.text("г) уравновешивающая сила F_x (без сил инерции)", (right + 30.0, 150.0), 3.5)
+    v4, _ = view("all", right + 25.0, bot_y)
+    d.text(WORDS("view_4"), (right + 30.0, 150.0), 3.5)
     _flywheel(v4, sol, data)
     _yoke(v4, sol, data)
     _roller(v4, sol, data)
+    _numbers(v4, sol, data)
     v4.label((0.0, 0.0), "O", 3.5, prefer=(-1.0, -1.0))
     v4.label(c3, "C_3", 3.5, prefer=(0.0, -1.0))
-    moment(v4, (0.0, 0.0), p["M"], 6.0, f"M = {f(abs(p['M']))} Н·м", role="result",
+    moment(v4, (0.0, 0.0), p["M"], 6.0, f"M = {f(abs(p['M']))} {_u('Nm')}", role="result",
            start=math.radians(160.0), height=2.5)  # fmt: skip
     fx = data.static.force("F_x")
-    force(v4, c3, fx, data.k_F, f"F_x = {f(fx.norm)} Н", role="result",
-          height=2.5)  # fmt: skip
+    force(v4, c3, fx, k_F, f"F_x = {f(fx.norm)} {_u('N')}", role="result", height=2.5)
     _panel_fbd(d, sol, data)
     return d.finish()
+
+
+#: The names of the inertia loads on the free-body sheet's table, by the model's keys.
+_INERTIA = {"M_Phi1": "M_Phi1", "Phi_2": "Phi2", "Phi_3": "Phi3", "M_Phi3": "M_Phi3"}
 
 
 def _panel_fbd(d: Drawing, sol: Solution, data: Data) -> None:
     x, y = 262.0, 26.0
     width = 146.0
-    d.text("Реакции и уравновешивающая сила", (x, y + 3.5), 3.5)
+    d.text(WORDS("fbd_table_head"), (x, y + 3.5), 3.5)
     rows = _results_rows(
         sol,
         (
-            ("N_A", "N_A", "Н"),
-            ("X_O", "X_O", "Н"),
-            ("Y_O", "Y_O", "Н"),
-            ("F_x", "F_x", "Н"),
+            ("N_A", "N_A", "N"),
+            ("X_O", "X_O", "N"),
+            ("Y_O", "Y_O", "N"),
+            ("F_x", "F_x", "N"),
         ),
     )
     _, h = d.table(x, y + 6.0, (50.0, 96.0), rows)
     y += 6.0 + h + 6.0
     R = data.dynamic
-    d.text("Остальные нагрузки", (x, y + 3.5), 3.5)
+    d.text(WORDS("other_loads"), (x, y + 3.5), 3.5)
+    n, nm = _u("N"), _u("Nm")
     vals = []
     for body in ("1", "2", "3"):
         for ld in R.loads[body]:
             if ld.kind == "inertia":
                 val = ld.force.norm if ld.force is not None else abs(ld.moment)
-                vals.append((ld.name, f"{f(val, 5)} {'Н' if ld.force is not None else 'Н·м'}"))
-    vals.append(("R_{32} = R_{23}", f"{f(abs(R.magnitudes['R_{32}']), 5)} Н"))
-    vals.append(("R_{03}", f"{f(abs(R.magnitudes['R_{03}']), 5)} Н"))
-    vals.append(("M_{02}", f"{f(abs(R.moment('M_{02}')), 5)} Н·м"))
+                label = WORDS(_INERTIA[ld.name]) if ld.name in _INERTIA else ld.name
+                vals.append((label, f"{f(val, 4)} {n if ld.force is not None else nm}"))
+    vals.append(("R_{32} = R_{23}", f"{f(abs(R.magnitudes['R_{32}']), 4)} {n}"))
+    vals.append(("R_{03}", f"{f(abs(R.magnitudes['R_{03}']), 4)} {n}"))
+    vals.append(("M_{02}", f"{f(abs(R.moment('M_{02}')), 4)} {nm}"))
     if len(vals) % 2:
         vals.append(("", ""))
-    rows = [["Нагрузка", "Значение", "Нагрузка", "Значение"]]
+    load_, value = WORDS("load"), WORDS("value")
+    rows = [[load_, value, load_, value]]
     rows += [[*vals[i], *vals[i + 1]] for i in range(0, len(vals), 2)]
     _, h = d.table(x, y + 6.0, (30.0, 43.0, 30.0, 43.0), rows)
     y += 6.0 + h + 5.0
     mb = R.moment("M_b")
     lines = (
-        "R_{ij} – сила звена i на звено j (0 – стойка); Ф_i = –m_ia_{Ci}, M_{Фi} = –I_iε_i – "
-        "нагрузки инерции по принципу Даламбера.",
-        "Паз гладкий: N_A горизонтальна. В горизонтальной плоскости вес не прижимает каток, "
-        "контакты катка передают только силы сцепления R_{32}, R_{03}; направляющая кулисы – "
-        "нормальную силу и момент M_{02}.",
-        f"Проверка: уравновешивающий момент на маховике при ε_1 из уравнения движения "
-        f"M_у = {small(mb, float(sol.params['M']), 'Н·м')}, т.е. 0 (кинетостатика совпадает с "
-        "уравнением Лагранжа).",
-        f"F_x по равенству мощностей F_x·v_{{C3}} = M·ω_1: {f(sol.results['F_x'], 7)} Н; из "
-        f"равновесия звеньев без сил инерции (г): {f(data.F_x_kinetostatic, 7)} Н.",
+        WORDS("fbd_1"),
+        WORDS("fbd_2"),
+        WORDS("fbd_3", mb=small(mb, float(sol.params["M"]), nm)),
+        WORDS("fbd_4", fx=f(sol.results["F_x"], 4), fk=f(data.F_x_kinetostatic, 4), n=n),
     )
     for ln in lines:
         y = d.paragraph(f"– {ln}", x, y, width, 2.5, indent=3.0) + 0.8
+
+
+# -- the animation ------------------------------------------------------------------------------
+
+
+#: The slot's half length in units of OA (the animation's yoke).
+SLOT_HALF = 1.25
+
+
+def motion(solution: Solution, frames: int) -> Frames:
+    """The mechanism over one turn of the flywheel from the sheets' position φ, from the model's
+    own motions (the yoke on its pin, the roller driven by the yoke), and the velocity plan at
+    the constant ω1 the flywheel has at φ: pa (the pin), pc2 (the yoke), pc3 (the roller's axis);
+    a c2 is the slip of the pin along the slot."""
+    data: Data = solution.data
+    p = {k: float(v) for k, v in solution.params.items()}
+    _model, yoke, roller = mechanism(
+        p["m1"], p["R1"], p["OA"], p["m2"], p["m3"], p["R3"], p["r3"], p["rho3"], p["M"], data.lay
+    )
+    phi = turn(frames, data.phi)
+    y, rl = yoke(phi), roller(phi)
+    OA, R3, r3 = p["OA"], p["R3"], p["r3"]
+
+    def pts(x: Array, yy: Array) -> np.ndarray:
+        return np.column_stack([np.broadcast_to(x, phi.shape), np.broadcast_to(yy, phi.shape)])
+
+    zero = np.zeros_like(phi)
+    rim = rl.theta + math.pi / 2.0  # a mark on the roller's rim, upwards at the start
+    points = {
+        "O": pts(zero, zero),
+        "A": pts(y.pin.x, y.pin.y),
+        "S1": pts(y.pin.x, zero + SLOT_HALF * OA),
+        "S2": pts(y.pin.x, zero - SLOT_HALF * OA),
+        "Y": pts(y.pin.x, zero),
+        "C2": pts(y.body.x, zero),
+        "D": pts(rl.x, zero),
+        "C3": pts(rl.x, rl.y),
+        "K": pts(rl.x + R3 * np.cos(rim), rl.y + R3 * np.sin(rim)),
+    }
+    w = data.omega
+    base = -r3 - R3
+    xs = np.concatenate([points["C3"][:, 0] - R3, points["C3"][:, 0] + R3])
+    return Frames(
+        title=WORDS("animation", id=PROBLEM.id),
+        phi=phi,
+        points=points,
+        links=(("O", "A"), ("S1", "S2"), ("Y", "C2", "D"), ("C3", "K")),
+        joints=("O", "A", "C3"),
+        labelled=("O", "A", "C2", "C3", "K"),
+        fixed=("O",),
+        traced=("A", "K"),
+        guides=(((float(xs.min()), base), (float(xs.max()), base)),),
+        discs={"O": (p["R1"],), "C3": (R3, r3) if r3 > 0.0 else (R3,)},
+        velocities={
+            "A": pts(y.pin.vx * w, y.pin.vy * w),
+            "C2": pts(y.body.vx * w, y.body.vy * w),
+            "C3": pts(rl.vx * w, rl.vy * w),
+        },
+        plan_edges=(("A", "C2"),),
+        omega1=w,
+    )

@@ -10,9 +10,10 @@
 - Solves the same governor without friction (ω rises from 19.32 to 20.36 rad/s with f = 0.3) and
   slowing down (``direction=-1``, lower ω); refuses overlapping friction circles and self-locking
   with an error naming the step.
-- Sheet (A3): the half-governor at 1:2 with the friction circles to scale and the tangent
-  reaction lines, the joints B, F, H enlarged at 2:1, the force plans of the sleeve and the arm at
-  μ_F = 1 N/mm (the frictionless polygon dashed), and tables.
+- Sheet (A3, composed by the layout step): the half-governor (1:2.5 at the seed's data) with the
+  friction circles to scale and the tangent reaction lines, the joints B, F, H enlarged (2:1),
+  the force plans of the sleeve and the arm (μ_F = 1 N/mm; the frictionless polygon dashed), and
+  tables.
 """
 
 # This module loads without numpy or the construction code: `geomcad list` and `--help` read it.
@@ -99,6 +100,7 @@ PROBLEM = Problem(
     results=RESULTS,
     seed=SEED,
     build=lazy(".p2013_7:build", __package__),
-    draw=lazy(".p2013_7:draw", __package__),
+    draw=lazy(".sheets_2013_7:sheets", __package__),
     seed_k_l=SEED_K_L,
+    scales=lazy(".sheets_2013_7:scales", __package__),
 )

@@ -56,5 +56,6 @@ PROBLEM = Problem(
     results=RESULTS,
     seed={},
     build=lazy(".p2013_9:build", __package__),
-    draw=lazy(".p2013_9:draw", __package__),
+    draw=lazy(".sheets_2013_9:sheets", __package__),
+    scales=lazy(".sheets_2013_9:scales", __package__),
 )

@@ -81,6 +81,7 @@ PROBLEM = Problem(
     results=RESULTS,
     seed=SEED,
     build=lazy(".p_kulisa:build", __package__),
-    draw=lazy(".p_kulisa:draw", __package__),
-    motion=lazy(".p_kulisa:motion", __package__),
+    draw=lazy(".sheets_kulisa:sheets", __package__),
+    motion=lazy(".sheets_kulisa:motion", __package__),
+    scales=lazy(".sheets_kulisa:scales", __package__),
 )

@@ -508,11 +508,15 @@ def test_sheet_layout_and_scales(seed_sheet: Sheet) -> None:
     assert (seed_sheet.format, seed_sheet.width, seed_sheet.height) == ("A3", 420.0, 297.0)
     check_layout(seed_sheet)
     words = [t.text for t in seed_sheet.texts()]
-    assert "1:2" in words  # the title block's scale
-    assert any("μl = 0,002 м/мм" in w and "M 1:2" in w for w in words)
+    # the layout step's scales: the mechanism 1:2.5, the plans at 1 N/mm, the joints enlarged
+    assert "1:2,5" in words  # the title block's scale
+    assert any("μl = 0,0025 м/мм" in w and "M 1:2,5" in w for w in words)
     assert "План сил звена 6, μF = 1 Н/мм" in words
-    assert "μF = 1 Н/мм" in words  # the sleeve's plan, its title in two lines
-    assert sum(w.startswith("Шарнир") and "(M 2:1)" in w for w in words) == 3
+    assert "План сил звена 2, μF = 1 Н/мм" in words
+    assert sum(w.startswith("Шарнир ") for w in words) == 3
+    kj = Scale(geomcad.solve(PID).scales["j"], "l")
+    assert kj.k < 0.0025  # larger than the mechanism's 1:2.5
+    assert any(w.startswith("Шарниры") and f"(M {kj.ratio_text()})" in w for w in words)
 
 
 def test_sheet_labels_name_the_points_and_forces(seed_sheet: Sheet) -> None:
@@ -526,19 +530,20 @@ def test_sheet_labels_name_the_points_and_forces(seed_sheet: Sheet) -> None:
 def test_sheet_is_true_to_scale(seed_sheet: Sheet) -> None:
     sol = geomcad.solve(PID)
     kl, kf = sol.scales["l"], sol.scales["F"]
-    assert (kl, kf) == (0.002, 1.0)
+    assert (kl, kf) == (0.0025, 1.0)
     run = sol.data.run
-    # the friction circles at B, F, H on the mechanism drawing: radius ρ/k_l, centres 1:2 apart
+    # the friction circles at B, F, H on the mechanism drawing: radius ρ/k_l, centres k_l apart
     small = [it for it in seed_sheet.items if isinstance(it, CircleItem)
              and it.role == "construction" and it.r == pytest.approx(run.rho / kl)]  # fmt: skip
     assert len(small) == 3
     (b, f, h) = (it.c for it in small)
     assert math.dist(b, f) * kl == pytest.approx(0.15, rel=1e-9)
     assert math.dist(f, h) * kl == pytest.approx(0.15, rel=1e-9)
-    # the insets at 2:1: ρ/0.0005 and the pin d/2/0.0005
+    # the insets at k_j: ρ/k_j and the pin d/2/k_j
+    kj = sol.scales["j"]
     big = [it.r for it in seed_sheet.items if isinstance(it, CircleItem)]
-    assert big.count(pytest.approx(run.rho / 0.0005)) == 3
-    assert big.count(pytest.approx(0.016 / 0.0005)) == 3
+    assert big.count(pytest.approx(run.rho / kj)) == 3
+    assert big.count(pytest.approx(0.016 / kj)) == 3
     # P on the plan of arm 6: the result arrow from the pole, P/k_F long to its head's tip
     shafts = [it for it in seed_sheet.items if isinstance(it, Polyline) and it.role == "result"
               and not it.closed and len(it.points) == 2]  # fmt: skip
