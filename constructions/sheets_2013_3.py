@@ -13,15 +13,37 @@ from typing import TYPE_CHECKING, Any
 
 from geomcad.geom import Vec
 from geomcad.sheet import Drawing, Scale, Sheet, TitleBlock, Viewport, fmt_number, start
-from geomcad.sheet.plans import draw_plan
+from geomcad.sheet.plans import draw_plan, plan_scale
+from geomcad.sheet.scale import gost_scale_to_fit
 
 if TYPE_CHECKING:
+    from geomcad.construction import Construction
     from geomcad.problem import Solution
 
-from .p2013_3 import MECH_VIEW, PLAN_VIEW
+#: Sheet fields (mm: x0, y0, x1, y1) of the mechanism and of the velocity plan.
+MECH_VIEW = (26.0, 30.0, 222.0, 196.0)
+PLAN_VIEW = (236.0, 24.0, 410.0, 150.0)
 
 #: Paper sizes of the symbols drawn beside the mechanism (mm).
 VA_LEN = 14.0
+
+
+def extent(c: Construction, l_ab: float) -> tuple[float, float, float, float]:
+    """The model box the mechanism drawing needs: the links, the slots run past C and O2."""
+    pts = [c[n] for n in ("O1", "O2", "A", "B", "C")]
+    pad = 0.35 * l_ab
+    xs, ys = [q.x for q in pts], [q.y for q in pts]
+    return min(xs) - pad, min(ys) - pad, max(xs) + pad, max(ys) + pad
+
+
+def scales(sol: Solution) -> dict[str, float]:
+    """k_l: the largest GOST 2.302 scale at which the mechanism fills its field; k_v: the plan's
+    factor at which the whole plan fits its field."""
+    x0, y0, x1, y1 = extent(sol.construction, sol.data.l_AB)
+    room_w, room_h = MECH_VIEW[2] - MECH_VIEW[0], MECH_VIEW[3] - MECH_VIEW[1]
+    k_l = gost_scale_to_fit(x1 - x0, y1 - y0, room_w, room_h).k
+    pw, ph = PLAN_VIEW[2] - PLAN_VIEW[0], PLAN_VIEW[3] - PLAN_VIEW[1] - 10.0
+    return {"l": k_l, "v": plan_scale(sol.data.plan, pw, ph).k}
 
 
 def sheets(sol: Solution) -> list[tuple[str, Sheet]]:
@@ -36,7 +58,7 @@ def sheets(sol: Solution) -> list[tuple[str, Sheet]]:
         scale=k.ratio_text(),
     )
     d = start("A3", tb)
-    x0, y0, x1, y1 = geo.extent
+    x0, y0, x1, y1 = extent(c, geo.l_AB)
     at = ((MECH_VIEW[0] + MECH_VIEW[2]) / 2.0, (MECH_VIEW[1] + 8.0 + MECH_VIEW[3]) / 2.0)
     v = d.viewport(k, ((x0 + x1) / 2.0, (y0 + y1) / 2.0), at)
     d.text("Схема механизма", (MECH_VIEW[0] + 2.0, 13.0), 5.0)

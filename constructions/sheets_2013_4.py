@@ -41,7 +41,33 @@ from geomcad.sheet.text import width as text_width
 if TYPE_CHECKING:
     from geomcad.problem import Solution
 
-from .p2013_4 import VIEW, view_half_angle
+#: The field the tooth is drawn in on the sheet (mm: x0, y0, x1, y1), left of the tables.
+VIEW = (26.0, 26.0, 250.0, 286.0)
+
+
+def view_half_angle(gear: SpurGear) -> float:
+    """Half the angle the tooth view spans about the tooth's axis: the tooth, half a space either
+    side, and a little of the circles beyond."""
+    return min(1.3 * math.pi / gear.z, math.pi / 2.0)
+
+
+def extent(gear: SpurGear) -> tuple[float, float, float, float]:
+    """The model box of the tooth view: the tooth with half a space either side, the circles
+    a little beyond, down to the lower of the base and root circles, up past the rack's top."""
+    half = view_half_angle(gear)
+    r_top = max(gear.r_a, gear.r + (gear.x + gear.rack.ha + gear.rack.c) * gear.m)
+    r_low = min(gear.r_b, gear.d_f / 2.0)
+    w = r_top * math.sin(half)
+    pad = 0.35 * gear.m
+    return (-w, r_low * math.cos(half) - pad, w, r_top + 1.5 * pad)
+
+
+def scales(sol: Solution) -> dict[str, float]:
+    """k_l: the largest GOST 2.302 scale (enlargements included) at which the tooth view fits."""
+    x0, y0, x1, y1 = extent(sol.data.gear)
+    room_w, room_h = VIEW[2] - VIEW[0], VIEW[3] - VIEW[1]
+    return {"l": gost_scale_to_fit(x1 - x0, y1 - y0, room_w, room_h).k}
+
 
 PANEL_X = 258.0
 MM = 1000.0  # m → mm for the tables
@@ -59,7 +85,7 @@ def sheets(sol: Solution) -> list[tuple[str, Sheet]]:
         scale=k.ratio_text(),
     )
     d = start("A3", tb)
-    x0, y0, x1, y1 = geo.extent
+    x0, y0, x1, y1 = extent(geo.gear)
     at = ((VIEW[0] + VIEW[2]) / 2.0, (VIEW[1] + VIEW[3]) / 2.0)
     v = d.viewport(k, ((x0 + x1) / 2.0, (y0 + y1) / 2.0), at)
     d.text("Зуб, нарезанный реечным инструментом со смещением x", (VIEW[0], 13.0), 5.0)
@@ -198,7 +224,8 @@ def _circles(v: Viewport, gear: SpurGear, geo: Any, half: float) -> None:
         end = Vec.polar(r, math.pi / 2.0 + side * span)
         v.label(end, f"{name} = ⌀{fmt_number(dia * MM, digits=6)}", 2.5, prefer=(-side, 1.0))
     # the tooth's axis
-    v.seg(Vec(0.0, min(gear.r_b, gear.d_f / 2.0) - 0.3 * gear.m), Vec(0.0, geo.extent[3]), "centre")
+    low = min(gear.r_b, gear.d_f / 2.0) - 0.3 * gear.m
+    v.seg(Vec(0.0, low), Vec(0.0, extent(gear)[3]), "centre")
 
 
 def _rack(v: Viewport, gear: SpurGear, x_lo: float, x_hi: float) -> None:

@@ -80,6 +80,7 @@ PROBLEM = Problem(
     results=RESULTS,
     seed=SEED,
     build=lazy(".p2013_2:build", __package__),
-    draw=lazy(".p2013_2:draw", __package__),
+    draw=lazy(".sheets_2013_2:sheets", __package__),
+    scales=lazy(".sheets_2013_2:scales", __package__),
     seed_k_l=SEED_K_L,
 )

@@ -10,7 +10,7 @@
 """
 
 # This module loads without numpy or the construction code: `geomcad list` and `--help` read it.
-# build and draw live in p2013_3.py and load on first use.
+# build lives in p2013_3.py, the sheet and its scales in sheets_2013_3.py; both load on first use.
 
 from __future__ import annotations
 
@@ -62,5 +62,6 @@ PROBLEM = Problem(
     results=RESULTS,
     seed=SEED,
     build=lazy(".p2013_3:build", __package__),
-    draw=lazy(".p2013_3:draw", __package__),
+    draw=lazy(".sheets_2013_3:sheets", __package__),
+    scales=lazy(".sheets_2013_3:scales", __package__),
 )

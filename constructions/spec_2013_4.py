@@ -76,5 +76,6 @@ PROBLEM = Problem(
     results=RESULTS,
     seed=SEED,
     build=lazy(".p2013_4:build", __package__),
-    draw=lazy(".p2013_4:draw", __package__),
+    draw=lazy(".sheets_2013_4:sheets", __package__),
+    scales=lazy(".sheets_2013_4:scales", __package__),
 )

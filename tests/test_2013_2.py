@@ -327,11 +327,12 @@ def _check_layout(sheet: Sheet) -> None:
     assert not problems, "\n".join(problems[:20])
 
 
-def test_seed_sheet_is_a3_at_2_to_1_with_no_overlaps() -> None:
+def test_seed_sheet_is_a2_at_2_to_1_with_no_overlaps() -> None:
+    """A2: the whole rise at the seed's 2:1 (the span thick, the rest of the rise thin)."""
     sol = geomcad.solve(PID)
     assert sol.scales["l"] == SEED_K_L
     ((name, sheet),) = sol.sheets()
-    assert name == "" and sheet.format == "A3"
+    assert name == "" and sheet.format == "A2"
     _check_layout(sheet)
     assert "2:1" in [t.text for t in sheet.texts()]
     words = {t.text for t in sheet.texts()}

@@ -186,7 +186,7 @@ def test_scales_are_gost_and_plan_factor_is_1_2_or_5() -> None:
 
 
 def test_plan_fits_its_field_and_vectors_end_on_points() -> None:
-    from geomcad_constructions.p2013_3 import PLAN_VIEW
+    from geomcad_constructions.sheets_2013_3 import PLAN_VIEW
 
     sol = geomcad.solve(PID, alpha_deg=25.0)
     vp, kv = sol.data.plan, sol.scales["v"]
