@@ -91,8 +91,9 @@ def _plan_values(geo: Geometry) -> float:
     return max(pts["m1"].norm, pts["m6"].norm, (pts["m6"] - pts["m1"]).norm, abs(geo.e))
 
 
-def scales(geo: Geometry) -> dict[str, float]:
+def scales(sol: Solution) -> dict[str, float]:
     """k_l of the schemes ("l"), of the dead-position drawing ("l_pos") and k_v of the plans."""
+    geo: Geometry = sol.data
     k_s = _fit(_box(_scheme_points(geo)), BEFORE)
     k_p = _fit(_box(_position_points(geo)), POSITION)
     k_v = nice_factor(_plan_values(geo), PLAN_ROOM, "v")

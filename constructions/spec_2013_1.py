@@ -71,5 +71,6 @@ PROBLEM = Problem(
     results=RESULTS,
     seed=SEED,
     build=lazy(".p2013_1:build", __package__),
-    draw=lazy(".p2013_1:draw", __package__),
+    draw=lazy(".sheets_2013_1:sheets", __package__),
+    scales=lazy(".sheets_2013_1:scales", __package__),
 )
