@@ -35,6 +35,8 @@ from geomcad.sheet import (
     gost_scale_to_fit,
     start,
 )
+from geomcad.sheet.lang import Words, current
+from geomcad.sheet.scale import ScaleStyle
 from geomcad.sheet.text import SUB_DROP, SUB_SCALE, SUP_RISE, metrics, run_size
 from geomcad.sheet.text import width as text_width
 
@@ -70,6 +72,13 @@ def scales(sol: Solution) -> dict[str, float]:
 
 
 PANEL_X = 258.0
+WORDS = Words(__package__, "sheets_2013_4")
+
+
+def _num(x: float, digits: int = 6) -> str:
+    return fmt_number(x, current(), digits)
+
+
 MM = 1000.0  # m → mm for the tables
 CENTRE = Vec(0.0, 0.0)  # the gear's centre O
 
@@ -79,17 +88,14 @@ def sheets(sol: Solution) -> list[tuple[str, Sheet]]:
     geo = sol.data
     c = sol.construction
     k = Scale(sol.scales["l"], "l")
-    tb = TitleBlock(
-        title="Зуб колеса со смещением x; штангензубомер",
-        designation="ТММ.2013-4.01",
-        scale=k.ratio_text(),
-    )
+    tb = TitleBlock(title=WORDS("tb_title"), designation=WORDS("designation"), scale=k.ratio_text())
     d = start("A3", tb)
     x0, y0, x1, y1 = extent(geo.gear)
     at = ((VIEW[0] + VIEW[2]) / 2.0, (VIEW[1] + VIEW[3]) / 2.0)
     v = d.viewport(k, ((x0 + x1) / 2.0, (y0 + y1) / 2.0), at)
-    d.text("Зуб, нарезанный реечным инструментом со смещением x", (VIEW[0], 13.0), 5.0)
-    d.text(f"{k.label()}   (M {k.ratio_text() or '—'})", (VIEW[0], 20.0), 3.5)
+    d.text(WORDS("view_title"), (VIEW[0], 13.0), 5.0)
+    label = k.label(ScaleStyle(lang=current()))
+    d.text(WORDS("scale_line", label=label, ratio=k.ratio_text() or "—"), (VIEW[0], 20.0), 3.5)
 
     gear: SpurGear = geo.gear
     half = view_half_angle(gear)
@@ -122,7 +128,7 @@ def _inset(d: Drawing, c: Any, gear: SpurGear, geo: Any) -> None:
         ((x_lo + x_hi) / 2.0, y_hi / 2.0),
         ((INSET[0] + INSET[2]) / 2.0, INSET[1] + 10.0 + h_room / 2.0),
     )
-    d.text(f"Построение ψ_y и α_y (M {ki.ratio_text()})", (INSET[0], INSET[1] + 3.5), 2.5)
+    d.text(WORDS("inset_title", ratio=ki.ratio_text()), (INSET[0], INSET[1] + 3.5), 2.5)
     a_lo, a_hi = math.pi / 2.0 - 0.12, N.angle + 0.12
     for r, role in ((gear.r_b, "construction"), (geo.r_y, "construction"), (gear.r_a, "link")):
         v.arc(Arc(Circle(CENTRE, r), a_lo, a_hi), role)
@@ -222,7 +228,7 @@ def _circles(v: Viewport, gear: SpurGear, geo: Any, half: float) -> None:
     for r, role, name, dia, side in items:
         v.arc(_arc(r, span), role)
         end = Vec.polar(r, math.pi / 2.0 + side * span)
-        v.label(end, f"{name} = ⌀{fmt_number(dia * MM, digits=6)}", 2.5, prefer=(-side, 1.0))
+        v.label(end, f"{name} = ⌀{_num(dia * MM, digits=4)}", 2.5, prefer=(-side, 1.0))
     # the tooth's axis
     low = min(gear.r_b, gear.d_f / 2.0) - 0.3 * gear.m
     v.seg(Vec(0.0, low), Vec(0.0, extent(gear)[3]), "centre")
@@ -249,14 +255,14 @@ def _rack(v: Viewport, gear: SpurGear, x_lo: float, x_hi: float) -> None:
         v.polyline([Vec(px, py) for px, py in piece], "extreme")
     y_d = gear.r + gear.x * m
     v.seg(Vec(x_lo, y_d), Vec(x_hi, y_d), "centre")
-    v.label(Vec(x_lo, y_d), "делительная прямая рейки", 2.5, prefer=(1.0, 1.0))
+    v.label(Vec(x_lo, y_d), WORDS("rack_datum"), 2.5, prefer=(1.0, 1.0))
     v.seg(Vec(x_lo, gear.r), Vec(0.6 * x_lo, gear.r), "centre")
     if abs(gear.x) > tol.DERIVED:  # no shift to dimension for x = 0
         xd = 0.93 * x_lo
         v.dim_linear(
             Vec(xd, gear.r),
             Vec(xd, y_d),
-            f"xm = {fmt_number(gear.x * m * MM, digits=4)}",
+            f"xm = {_num(gear.x * m * MM, digits=4)}",
             offset=6.0,
             height=2.5,
         )
@@ -318,9 +324,9 @@ def _caliper(v: Viewport, c: Any, geo: Any) -> None:
     v.label(K_, "K'", prefer=(-1.0, -1.0), clear=1.0)
     v.label(T, "T", prefer=(-1.0, 1.0), clear=1.0)
     rise = v.mm(T.y - K.y)
-    s_txt = fmt_number(float(c["K"].dist(c["K'"])) * MM, digits=4)
+    s_txt = _num(float(c["K"].dist(c["K'"])) * MM, digits=4)
     v.dim_linear(K_, K, f"s̄ = {s_txt}", offset=rise + 14.0, height=3.5)
-    h_txt = fmt_number((T.y - H.y) * MM, digits=4)
+    h_txt = _num((T.y - H.y) * MM, digits=4)
     side = v.mm(K.x) + 12.0
     v.dim_linear(T, H, f"h̄ = {h_txt}", offset=side, height=3.5)
     del gear
@@ -330,62 +336,52 @@ def _panel(d: Drawing, sol: Solution, k: Scale) -> None:
     """The tables on the right: given data, results, the tooth's sizes."""
     p, r, geo = sol.params, sol.results, sol.data
     gear: SpurGear = geo.gear
+    mm = WORDS("mm")
     x, y = PANEL_X, 10.0
-    d.text("Исходные данные", (x, y + 3.5), 3.5)
-    rows = [["Параметр", "Значение"]]
+    d.text(WORDS("data_title"), (x, y + 3.5), 3.5)
+    rows = [[WORDS("h_param"), WORDS("h_value")]]
     for label, text in (
-        ("m", f"{fmt_number(float(p['m']) * MM)} мм"),
-        ("α", f"{fmt_number(float(p['alpha_deg']))}°"),
+        ("m", f"{_num(float(p['m']) * MM)} {mm}"),
+        ("α", f"{_num(float(p['alpha_deg']))}°"),
         ("z", str(p["z"])),
-        ("d_a", f"{fmt_number(float(p['d_a']) * MM)} мм"),
-        ("s̄ (хорда)", f"{fmt_number(float(p['s_chord']) * MM)} мм"),
-        ("h̄ (высота)", f"{fmt_number(float(p['h_chord']) * MM)} мм"),
+        ("d_a", f"{_num(float(p['d_a']) * MM)} {mm}"),
+        (WORDS("chord"), f"{_num(float(p['s_chord']) * MM)} {mm}"),
+        (WORDS("height"), f"{_num(float(p['h_chord']) * MM)} {mm}"),
     ):
         rows.append([label, text])
     _, h = d.table(x, y + 6.0, (36.0, 36.0), rows, row_h=5.5)
     y += 6.0 + h + 5.0
-    d.text("Результаты", (x, y + 3.5), 3.5)
-    rows = [["Величина", "Значение"]]
+    d.text(WORDS("results_title"), (x, y + 3.5), 3.5)
+    rows = [[WORDS("h_quantity"), WORDS("h_value")]]
     for name, label, scale in (
-        ("d", "d, мм", MM),
-        ("d_b", "d_b, мм", MM),
-        ("d_y", "d_y, мм", MM),
-        ("psi_y", "ψ_y, рад", 1.0),
+        ("d", f"d, {mm}", MM),
+        ("d_b", f"d_b, {mm}", MM),
+        ("d_y", f"d_y, {mm}", MM),
+        ("psi_y", f"ψ_y, {WORDS('rad')}", 1.0),
         ("alpha_y_deg", "α_y, °", 1.0),
-        ("s", "s, мм", MM),
+        ("s", f"s, {mm}", MM),
         ("x", "x", 1.0),
     ):
         exact = float(r[name]) * scale
         if name == "x" and abs(exact) < tol.DERIVED:
             exact = 0.0  # a shift of 10^-16 is no shift
-        rows.append([label, fmt_number(exact, digits=4)])
+        rows.append([label, _num(exact, digits=4)])
     _, h = d.table(x, y + 6.0, (36.0, 36.0), rows, row_h=5.5)
-    y += 6.0 + h + 3.0
-    y += 3.0
-    d.text("Зуб, нарезанный рейкой ГОСТ 13755", (x, y + 3.5), 3.5)
+    y += 6.0 + h + 6.0
+    d.text(WORDS("tooth_title"), (x, y + 3.5), 3.5)
     k_span = geo.k_span
-    rows = [["Величина", "Значение"]]
+    rows = [[WORDS("h_quantity"), WORDS("h_value")]]
     for label, value in (
-        ("d_f (впадин)", f"{fmt_number(gear.d_f * MM, digits=4)} мм"),
-        ("d_l (граничная)", f"{fmt_number(gear.limit_diameter() * MM, digits=4)} мм"),
-        ("s_a (на вершине)", f"{fmt_number(gear.s_a * MM, digits=4)} мм"),
-        ("x_{min} (подрез)", f"{fmt_number(gear.x_min, digits=4)}"),
-        (f"W_{k_span} (z_W = {k_span})", f"{fmt_number(geo.W * MM, digits=4)} мм"),
+        (WORDS("d_f"), f"{_num(gear.d_f * MM, digits=4)} {mm}"),
+        (WORDS("d_l"), f"{_num(gear.limit_diameter() * MM, digits=4)} {mm}"),
+        (WORDS("s_a"), f"{_num(gear.s_a * MM, digits=4)} {mm}"),
+        (WORDS("x_min"), f"{_num(gear.x_min, digits=4)}"),
+        (f"W_{k_span} (z_W = {k_span})", f"{_num(geo.W * MM, digits=4)} {mm}"),
     ):
         rows.append([label, value])
     _, h = d.table(x, y + 6.0, (50.0, 46.0), rows, row_h=5.5)
     y += 6.0 + h + 5.0
-    y = d.text("Порядок построения", (x, y + 3.5), 3.5).at[1] + 2.0
-    steps = (
-        "T – точка окружности вершин на оси зуба; хорда K'K перпендикулярна оси на "
-        "расстоянии h̄ от T;",
-        "tg ψ_y = (s̄/2)/(d_a/2 – h̄) = s̄/(d_a – 2h̄); d_y = 2·OK = s̄/sin ψ_y;",
-        "касательная KN к основной окружности: ∠KON = α_y, cos α_y = d_b/d_y, "
-        "inv α_y = KN/r_b – α_y;",
-        "s = d(ψ_y + inv α_y – inv α); x = (s – πm/2)/(2m·tg α);",
-        "проверка: рейка со смещением xm нарезает зуб, эвольвента которого проходит через K, "
-        "а штангензубомер при высоте h̄ показывает s̄.",
-    )
-    for i, step in enumerate(steps):
-        y = d.paragraph(f"{i + 1}. {step}", x, y, 150.0, 2.5, indent=4.0) + 0.4
+    y = d.text(WORDS("order_title"), (x, y + 3.5), 3.5).at[1] + 2.0
+    for i in range(1, 6):
+        y = d.paragraph(f"{i}. {WORDS(f'order_{i}')}", x, y, 150.0, 2.5, indent=4.0) + 0.4
     del k
