@@ -18,7 +18,8 @@ from typing import TYPE_CHECKING
 
 from geomcad.geom import Line, Vec
 from geomcad.sheet import Drawing, Scale, Sheet, TitleBlock, Viewport, fmt_number, start
-from geomcad.sheet.scale import gost_scale_to_fit, nice_factor
+from geomcad.sheet.lang import Words, current
+from geomcad.sheet.scale import ScaleStyle, gost_scale_to_fit, nice_factor
 from geomcad.sheet.scheme import Body, draw_scheme
 from geomcad.structure import Link, Mechanism, Pair
 
@@ -28,9 +29,11 @@ if TYPE_CHECKING:
     from .p2013_1 import Geometry
 
 #: Fields (sheet mm: x0, y0, x1, y1).
-BEFORE = (24.0, 24.0, 150.0, 176.0)
-AFTER = (156.0, 24.0, 282.0, 176.0)
-GROUPS = (288.0, 24.0, 414.0, 176.0)
+BEFORE = (24.0, 36.0, 150.0, 182.0)
+AFTER = (156.0, 36.0, 282.0, 182.0)
+GROUPS = (288.0, 36.0, 414.0, 182.0)
+#: The baselines of the views' titles and of the lines under them (below графа 26).
+TITLE_Y, SUB_Y = 26.0, 32.5
 POSITION = (24.0, 196.0, 226.0, 410.0)
 PLAN_ZERO = (232.0, 196.0, 398.0, 296.0)
 PLAN_GIVEN = (232.0, 304.0, 398.0, 410.0)
@@ -42,6 +45,15 @@ PLAN_ROOM = 60.0
 CIRCLE_STEPS = 48
 #: Height (mm) of a group's caption row.
 CAPTION = 7.0
+WORDS = Words(__package__, "sheets_2013_1")
+
+
+def _num(x: float, digits: int = 6) -> str:
+    return fmt_number(x, current(), digits)
+
+
+def _label(k: Scale) -> str:
+    return k.label(ScaleStyle(lang=current()))
 
 
 def _box(points: list[Vec], pad: float = 0.0) -> tuple[float, float, float, float]:
@@ -108,8 +120,8 @@ def sheets(sol: Solution) -> list[tuple[str, Sheet]]:
     kv = Scale(sol.scales["v"], "v")
     ratio = ks.ratio_text() + ("" if kp.k == ks.k else f"; {kp.ratio_text()}")
     tb = TitleBlock(
-        title="Механизм крышки вулканизатора: структура и мёртвое положение толкателя",
-        designation="ТММ.2013-1.01",
+        title=WORDS("tb_title"),
+        designation=WORDS("designation"),
         scale=ratio,
     )
     d = start("A2", tb)
@@ -179,10 +191,10 @@ def _link_at(geo: Geometry) -> dict[str, Vec]:
 
 def _schemes(d: Drawing, geo: Geometry, k: Scale, box: tuple[float, float, float, float]) -> None:
     before = _viewport(d, k, box, BEFORE)
-    d.text("Структурная схема до замены", (BEFORE[0], 12.0), 5.0)
+    d.text(WORDS("before_title"), (BEFORE[0], TITLE_Y), 5.0)
     d.text(
-        f"n = {geo.before.n}, p_5 = {geo.before.p5}, p_4 = {geo.before.p4};   {k.label()}",
-        (BEFORE[0], 24.0),
+        WORDS("counts", n=geo.before.n, p5=geo.before.p5, p4=geo.before.p4, tail=_label(k)),
+        (BEFORE[0], SUB_Y),
         3.5,
     )
     draw_scheme(
@@ -194,10 +206,10 @@ def _schemes(d: Drawing, geo: Geometry, k: Scale, box: tuple[float, float, float
     )
     after = _viewport(d, k, box, AFTER)
     rep = geo.replaced.mechanism
-    d.text("После замены высшей пары K", (AFTER[0], 12.0), 5.0)
+    d.text(WORDS("after_title"), (AFTER[0], TITLE_Y), 5.0)
     d.text(
-        f"n = {rep.n}, p_5 = {rep.p5}, p_4 = {rep.p4};   заменяющее звено 8",
-        (AFTER[0], 24.0),
+        WORDS("counts", n=rep.n, p5=rep.p5, p4=rep.p4, tail=WORDS("substitute")),
+        (AFTER[0], SUB_Y),
         3.5,
     )
     draw_scheme(
@@ -215,13 +227,14 @@ def _groups(d: Drawing, geo: Geometry) -> None:
     mechanism and its Assur groups, each drawn on its own in a cell, all at one scale."""
     mech = geo.seed_route
     dec = geo.decomposition
-    d.text("Группы Ассура", (GROUPS[0], 12.0), 5.0)
+    d.text(WORDS("groups_title"), (GROUPS[0], TITLE_Y), 5.0)
     parts: list[tuple[str, tuple[str, ...]]] = [
-        (f"I({dec.frame}, {p.link}): механизм I класса", (p.link,)) for p in dec.primary
+        (WORDS("primary", frame=dec.frame, link=p.link), (p.link,)) for p in dec.primary
     ]
     for g in dec.groups:
         kind = f", {g.kind}" if g.kind else ""
-        parts.append((f"{', '.join(g.links)}: {g.roman} кл., {g.order} пор.{kind}", g.links))
+        caption = WORDS("group", links=", ".join(g.links), cls=g.roman, order=g.order, kind=kind)
+        parts.append((caption, g.links))
     bodies = _bodies(geo, roller=False)
     subs = [_part(mech, part) for _, part in parts]
     boxes = [_part_box(sub, bodies, part) for sub, (_, part) in zip(subs, parts, strict=True)]
@@ -232,7 +245,9 @@ def _groups(d: Drawing, geo: Geometry) -> None:
     widest = max(b[2] - b[0] for b in boxes)
     total = sum(b[3] - b[1] for b in boxes)
     k = gost_scale_to_fit(widest, total, room_w, room_h)
-    d.text(f"{k.label()}   (M {k.ratio_text() or '—'})", (GROUPS[0], 19.0), 3.5)
+    d.text(
+        WORDS("scale_line", label=_label(k), ratio=k.ratio_text() or "—"), (GROUPS[0], SUB_Y), 3.5
+    )
     spare = (room_h - total / k.k) / len(parts)
     y0 = GROUPS[1]
     for (caption, part), sub, box in zip(parts, subs, boxes, strict=True):
@@ -300,11 +315,13 @@ def _position(d: Drawing, geo: Geometry, k: Scale) -> None:
     e = abs(geo.e)
     r = geo.points["R"].x
     up = Vec(math.cos(geo.psi), math.sin(geo.psi))
-    th = fmt_number(math.degrees(z.theta1) % 360.0, digits=5)
+    th = _num(math.degrees(z.theta1) % 360.0, digits=5)
+    d.text(WORDS("position_title"), (POSITION[0], POSITION[1] - 2.0), 5.0)
     d.text(
-        "Положение, в котором V_T = 0: ML перпендикулярна MO", (POSITION[0], POSITION[1] - 2.0), 5.0
+        WORDS("scale_line", label=_label(k), ratio=k.ratio_text() or "—"),
+        (POSITION[0], POSITION[1] + 5.0),
+        3.5,
     )
-    d.text(f"{k.label()}   (M {k.ratio_text() or '—'})", (POSITION[0], POSITION[1] + 5.0), 3.5)
     v = _viewport(
         d, k, _box(_position_points(geo)), (*POSITION[:1], POSITION[1] + 8, *POSITION[2:])
     )
@@ -319,7 +336,7 @@ def _position(d: Drawing, geo: Geometry, k: Scale) -> None:
         v.seg(q.M - q.u1 * (0.9 * e), q.M + q.u1 * (0.9 * e), "extreme")
         v.dot(q.M, "result")
         v.label(q.M, "M'", prefer=(1.0, 0.0))
-        tq = fmt_number(math.degrees(q.theta1) % 360.0, digits=5)
+        tq = _num(math.degrees(q.theta1) % 360.0, digits=5)
         v.label(q.M + q.u1 * (0.9 * e), f"θ_1 = {tq}°", height=2.5, prefer=(1.0, -1.0))
     # the built position: lever 1 with its slot tangent to the circle at M
     n1 = z.u1.perp()
@@ -344,13 +361,14 @@ def _position(d: Drawing, geo: Geometry, k: Scale) -> None:
     v.label(z.M, "M", prefer=(1.0, 1.0), clear=r / k.k + 0.5)
     v.label(z.L, "L", prefer=(0.0, 1.0))
     v.label(z.M + up * (1.6 * e), "7", prefer=(1.0, 0.0))
+    v.label(z.M - up * r, "6", prefer=(-1.0, -1.0), clear=0.5)
     v.label(z.L - z.u1 * (0.3 * e), "1", prefer=(0.0, 1.0), clear=r / k.k + 0.5)
     v.label((O_ + z.M) * 0.5, "|e|", prefer=(-n1.x, -n1.y), height=2.5)
     v.label(z.L + z.u1 * (0.3 * e), f"θ_1 = {th}°", height=2.5, prefer=(1.0, -1.0))
     foot = path.foot(O_)
     if foot.norm > 0.0:
         mm = 1000.0
-        v.dim_linear(O_, foot, f"|h| = {fmt_number(abs(geo.h) * mm, digits=4)}", 8.0, 2.5)
+        v.dim_linear(O_, foot, f"|h| = {_num(abs(geo.h) * mm, digits=4)}", 8.0, 2.5)
 
 
 def _plan_view(d: Drawing, kv: Scale, field: tuple[float, ...], pts: list[Vec]) -> Viewport:
@@ -364,11 +382,11 @@ def _plans(d: Drawing, geo: Geometry, kv: Scale) -> None:
     pts = geo.points
     z = geo.zeros[geo.built]
     up = Vec(math.cos(geo.psi), math.sin(geo.psi))
-    th = fmt_number(math.degrees(z.theta1) % 360.0, digits=5)
+    th = _num(math.degrees(z.theta1) % 360.0, digits=5)
     # the plan of the zero position: pm1 and m1m6 on one line, m6 = p
     m1 = pts["m1*"]
-    d.text(f"План скоростей при θ_1 = {th}°", (PLAN_ZERO[0], PLAN_ZERO[1] - 2.0), 5.0)
-    d.text(f"ω_1 = 1 рад/с, {kv.label()}", (PLAN_ZERO[0], PLAN_ZERO[1] + 5.0), 3.5)
+    d.text(WORDS("plan_zero", th=th), (PLAN_ZERO[0], PLAN_ZERO[1] - 2.0), 5.0)
+    d.text(WORDS("plan_factor", label=_label(kv)), (PLAN_ZERO[0], PLAN_ZERO[1] + 5.0), 3.5)
     p = Vec(0.0, 0.0)
     v = _plan_view(d, kv, PLAN_ZERO, [p, m1])
     ext = kv.model(14.0)
@@ -383,9 +401,9 @@ def _plans(d: Drawing, geo: Geometry, kv: Scale) -> None:
     # the plan at the given θ1
     m1, m6 = pts["m1"], pts["m6"]
     u1 = Vec(math.cos(geo.theta1), math.sin(geo.theta1))
-    t1 = fmt_number(math.degrees(geo.theta1) % 360.0, digits=5)
-    d.text(f"План скоростей при θ_1 = {t1}° (заданное)", (PLAN_GIVEN[0], PLAN_GIVEN[1] - 2.0), 5.0)
-    d.text(f"ω_1 = 1 рад/с, {kv.label()}", (PLAN_GIVEN[0], PLAN_GIVEN[1] + 5.0), 3.5)
+    t1 = _num(math.degrees(geo.theta1) % 360.0, digits=5)
+    d.text(WORDS("plan_given", th=t1), (PLAN_GIVEN[0], PLAN_GIVEN[1] - 2.0), 5.0)
+    d.text(WORDS("plan_factor", label=_label(kv)), (PLAN_GIVEN[0], PLAN_GIVEN[1] + 5.0), 3.5)
     v = _plan_view(d, kv, PLAN_GIVEN, [p, m1, m6])
     v.seg(m6 - u1 * ext, m6 + u1 * ext, "construction")
     v.seg(m6 - up * ext, m6 + up * ext, "construction")
@@ -397,46 +415,52 @@ def _plans(d: Drawing, geo: Geometry, kv: Scale) -> None:
     v.label(p, "p", prefer=(-1.0, -1.0))
     v.label(m1, "m_1", prefer=(1.0, 1.0))
     v.label(m6, "m_6", prefer=(1.0, -1.0))
-    vt = fmt_number(float(pts["m6"].dot(up)), digits=5)
-    d.text(f"V_T/ω_1 = pm_6 = {vt} м", (PLAN_GIVEN[0], PLAN_GIVEN[1] + 11.0), 3.5)
+    vt = _num(float(pts["m6"].dot(up)), digits=5)
+    d.text(WORDS("vt_given", vt=vt), (PLAN_GIVEN[0], PLAN_GIVEN[1] + 11.0), 3.5)
 
 
 # -- the panel --------------------------------------------------------------------------------
 
 
-def _kind_ru(kind: str) -> str:
-    return {"R": "вращ.", "P": "поступ.", "slot": "ролик–паз", "cam": "кулачок", "gear": "зацепл."}[
-        kind
-    ]
+def _kind(kind: str) -> str:
+    return WORDS(f"kind_{kind}")
+
+
+def _link_name(lk: Link) -> str:
+    """A link's name in the language being drawn (the model's own name for a link the table
+    does not know)."""
+    try:
+        return WORDS(f"link_{lk.id}")
+    except LookupError:
+        return lk.name
 
 
 def _panel(d: Drawing, sol: Solution, geo: Geometry) -> None:
     x, y = PANEL_X, 8.0
     r = sol.results
-    y = d.text("Звенья", (x, y + 3.5), 3.5).at[1] + 1.0
-    names = "; ".join(f"{lk.id} – {lk.name}" for lk in geo.before.links)
-    y = d.paragraph(names + "; 8 – заменяющее звено (ползун).", x, y, PANEL_W, 2.5) + 2.0
-    d.text("Кинематические пары", (x, y + 3.5), 3.5)
-    rows = [["Пара", "Звенья", "Вид", "Класс"]]
+    y = d.text(WORDS("links_title"), (x, y + 3.5), 3.5).at[1] + 1.0
+    names = "; ".join(f"{lk.id} – {_link_name(lk)}" for lk in geo.before.links)
+    y = d.paragraph(f"{names}; {WORDS('link_8')}", x, y, PANEL_W, 2.5) + 2.0
+    d.text(WORDS("pairs_title"), (x, y + 3.5), 3.5)
+    rows = [[WORDS(k) for k in ("h_pair", "h_links", "h_kind", "h_class")]]
     for p in geo.before.pairs:
-        rows.append([p.name, f"{p.a}–{p.b}", _kind_ru(p.kind), f"p_{p.pair_class}"])
+        rows.append([p.name, f"{p.a}–{p.b}", _kind(p.kind), f"p_{p.pair_class}"])
     for s in geo.replaced.substitutes:
         for name in (s.pair_a, s.pair_b):
             q = geo.replaced.mechanism.pair(name)
-            rows.append([f"{name}*", f"{q.a}–{q.b}", _kind_ru(q.kind), f"p_{q.pair_class}"])
+            rows.append([f"{name}*", f"{q.a}–{q.b}", _kind(q.kind), f"p_{q.pair_class}"])
     _, h = d.table(x, y + 6.0, (18.0, 22.0, 28.0, 18.0), rows, row_h=5.0)
     d.paragraph(
-        "* пары заменяющего звена 8 (вместо высшей пары K: центр кривизны ролика – M, паза – "
-        "в бесконечности).",
+        WORDS("pairs_note"),
         x + 90.0,
         y + 6.0,
         PANEL_W - 90.0,
         2.5,
     )
     y += 6.0 + h + 5.0
-    d.text("Число степеней свободы", (x, y + 3.5), 3.5)
+    d.text(WORDS("mobility_title"), (x, y + 3.5), 3.5)
     n, p5, p4, _local = geo.counts
-    rows = [["Величина", "Счёт", "W"]]
+    rows = [[WORDS("h_quantity"), WORDS("h_count"), "W"]]
     if geo.counts_mode:
         formal = f"3·{n} – 2·{p5} – {p4}"
         after = f"3·{n + p4} – 2·{p5 + 2 * p4}"
@@ -445,19 +469,17 @@ def _panel(d: Drawing, sol: Solution, geo: Geometry) -> None:
         formal = f"3·{mb.n} – 2·{mb.p5} – {mb.p4}"
         after = f"3·{ma.n} – 2·{ma.p5} – {ma.p4}"
     for name, label, how in (
-        ("W_formal", "W до замены", formal),
-        ("W_local", "W_{мест} (ролик 6)", "вращение ролика"),
-        ("W_true", "W_{ист}", "W – W_{мест}"),
-        ("W_after_replacement", "W после замены", after),
+        ("W_formal", WORDS("w_formal"), formal),
+        ("W_local", WORDS("w_local"), WORDS("w_local_how")),
+        ("W_true", WORDS("w_true"), WORDS("w_true_how")),
+        ("W_after_replacement", WORDS("w_after"), after),
     ):
         rows.append([label, how, str(r[name])])
-    _, h = d.table(x, y + 6.0, (38.0, 72.0, 40.0), rows, row_h=5.0)
+    _, h = d.table(x, y + 6.0, (52.0, 62.0, 36.0), rows, row_h=5.0)
     y += 6.0 + h + 2.0
     y = (
         d.paragraph(
-            "Замена высшей пары добавляет звено и две низшие пары (3 – 2·2 + 1 = 0), W не "
-            "меняется. W = 2 учитывает местную подвижность – вращение ролика 6 вокруг M, которое "
-            "ничего не передаёт; истинное W = 1.",
+            WORDS("mobility_note"),
             x,
             y,
             PANEL_W,
@@ -465,11 +487,12 @@ def _panel(d: Drawing, sol: Solution, geo: Geometry) -> None:
         )
         + 3.0
     )
-    d.text("Группы Ассура (после замены, без вращения ролика)", (x, y + 3.5), 3.5)
+    d.text(WORDS("groups_table"), (x, y + 3.5), 3.5)
     dec = geo.decomposition
-    rows = [["Группа", "Звенья", "Пары", "Класс", "Порядок", "Вид"]]
+    heads = ("h_group", "h_links", "h_pairs", "h_class", "h_order", "h_kind")
+    rows = [[WORDS(k) for k in heads]]
     for pm in dec.primary:
-        rows.append(["механизм I кл.", f"0, {pm.link}", pm.pair, "I", "–", "–"])
+        rows.append([WORDS("primary_row"), f"0, {pm.link}", pm.pair, "I", "–", "–"])
     for i, g in enumerate(dec.groups):
         kind = f"{g.kind} ({g.kind_no})" if g.kind else "–"
         rows.append(
@@ -482,12 +505,15 @@ def _panel(d: Drawing, sol: Solution, geo: Geometry) -> None:
                 kind,
             ]
         )
-    _, h = d.table(x, y + 6.0, (28.0, 18.0, 34.0, 16.0, 20.0, 26.0), rows, row_h=5.0)
+    _, h = d.table(x, y + 6.0, (34.0, 18.0, 32.0, 16.0, 20.0, 26.0), rows, row_h=5.0)
     y += 6.0 + h + 2.0
     y = (
         d.paragraph(
-            f"Формула строения: {dec.formula().replace('→', '+')}; механизм "
-            f"{['', 'I', 'II', 'III', 'IV'][min(dec.mechanism_class, 4)]} класса.",
+            WORDS(
+                "formula",
+                formula=dec.formula().replace("→", "+"),
+                cls=["", "I", "II", "III", "IV"][min(dec.mechanism_class, 4)],
+            ),
             x,
             y,
             PANEL_W,
@@ -495,30 +521,26 @@ def _panel(d: Drawing, sol: Solution, geo: Geometry) -> None:
         )
         + 3.0
     )
-    d.text("Скорость толкателя", (x, y + 3.5), 3.5)
-    zs = ", ".join(f"{fmt_number(t, digits=6)}°" for t in r["zero_theta1_deg"])
+    d.text(WORDS("pusher_title"), (x, y + 3.5), 3.5)
+    zs = ", ".join(f"{_num(t, digits=6)}°" for t in r["zero_theta1_deg"])
     e, h_ = geo.e, geo.h
     psi = math.degrees(geo.psi)
     acos = math.degrees(math.acos(max(-1.0, min(1.0, h_ / e))))
-    sweep = ", ".join(f"{fmt_number(t, digits=6)}°" for t in geo.sweep_zeros_deg) or "нет"
-    t1 = fmt_number(math.degrees(geo.theta1) % 360.0, digits=5)
-    vt = fmt_number(float(r["VT_over_omega1"]), digits=6)
-    check = f"{fmt_number(psi, digits=6)}° ± {fmt_number(acos, digits=6)}°"
+    sweep = ", ".join(f"{_num(t, digits=6)}°" for t in geo.sweep_zeros_deg) or WORDS("none")
+    t1 = _num(math.degrees(geo.theta1) % 360.0, digits=5)
+    vt = _num(float(r["VT_over_omega1"]), digits=6)
+    check = f"{_num(psi, digits=6)}° ± {_num(acos, digits=6)}°"
     rows = [
-        ["Величина", "Значение"],
-        ["θ_1 при V_T = 0 (построение)", zs],
-        ["ψ ± arccos(h/e) (проверка)", check],
-        ["смена знака V_T/ω_1 за оборот", sweep],
-        [f"V_T/ω_1 при θ_1 = {t1}°", f"{vt} м"],
+        [WORDS("h_quantity"), WORDS("h_value")],
+        [WORDS("zero_built"), zs],
+        [WORDS("zero_check"), check],
+        [WORDS("zero_sweep"), sweep],
+        [WORDS("vt_at", th=t1), f"{vt} {WORDS('metre')}"],
     ]
     _, h = d.table(x, y + 6.0, (80.0, 70.0), rows, row_h=5.0)
     y += 6.0 + h + 2.0
     y = d.paragraph(
-        "Построение: паз всегда касается окружности радиуса |e| с центром O (его расстояние до O "
-        "равно e). Скорость толкателя равна нулю, когда скорость точки M рычага 1 параллельна "
-        "пазу, т. е. OM перпендикулярна пазу; тогда M – точка касания, и она лежит на траектории "
-        "толкателя: M – общая точка траектории и окружности. Кроме того, скорость толкателя "
-        "равна нулю в крайних положениях четырёхзвенника 2–3–1 (ω1 = 0; его размеры не заданы).",
+        WORDS("construction_note"),
         x,
         y,
         PANEL_W,
@@ -526,8 +548,7 @@ def _panel(d: Drawing, sol: Solution, geo: Geometry) -> None:
     )
     if geo.counts_mode:
         d.paragraph(
-            "Число степеней свободы посчитано по заданным n, p_5, p_4 и числу местных "
-            "подвижностей; схемы показывают модель механизма.",
+            WORDS("counts_note"),
             x,
             y + 2.0,
             PANEL_W,
