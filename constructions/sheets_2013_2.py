@@ -206,8 +206,9 @@ def _rest(v: Viewport, sol: Solution, rest: CamProfile, over: float) -> None:
     v.polyline(list(rest.contact), "thin")
     end = float(rest.phi[-1])
     up = Vec(0.0, 1.0).rotated(-f.sigma * end)
+    foot = Vec(1.0, 0.0).rotated(-f.sigma * end) * (f.e if f.kind != "flat" else 0.0)
     C = Vec(*rest.pitch[-1])
-    v.seg(Vec(0.0, 0.0), C + up * over, "construction")
+    v.seg(foot, C + up * over, "construction")
     v.label(C + up * over, WORDS("rest_end", phi=_n(math.degrees(end))), 2.5,
             prefer=(up.x, up.y), clear=0.5)  # fmt: skip
     span = math.degrees(float(sol.data.span))
@@ -249,7 +250,7 @@ def _graph(d: Drawing, sol: Solution) -> None:
     n = len(div.phi)
     step = _label_step(n)
     law = WORDS(f"law_{sol.params['law']}")
-    d.text(WORDS("graph_title", law=law), (x_at - 6.0, y_at - room_h - 24.0), 5.0)
+    d.text(WORDS("graph_title", law=law), (x_at - 6.0, y_at - room_h - 17.0), 5.0)
     for j, (sym, unit, ys, at_div) in enumerate(
         (
             ("S", WORDS("unit_m"), motion.S, div.S),
@@ -292,10 +293,12 @@ def _scheme(d: Drawing, sol: Solution) -> None:
     x0, y0, x1, y1 = SCHEME
     room_w, room_h = x1 - x0 - PLAN_ROOM - 8.0, y1 - y0 - 4.0
     stem = 0.25 * f.r0
+    # the stem starts at the face, the knife's tip or the roller's top
+    base = h + (f.r_roller if f.kind == "roller" else 0.0)
     every = np.vstack([cam, rest]) if len(rest) else cam
     for _ in range(2):  # the stem is at least STEM_MM long on the paper
         xs = [*every[:, 0], -f.r0, f.r0, -width, width]
-        ys = [*every[:, 1], -f.r0, h + stem]
+        ys = [*every[:, 1], -f.r0, base + stem]
         w_m, h_m = max(xs) - min(xs), max(ys) - min(ys)
         kl = gost_scale_to_fit(w_m, h_m, room_w, room_h)
         stem = max(0.25 * f.r0, kl.model(STEM_MM))
@@ -312,7 +315,7 @@ def _scheme(d: Drawing, sol: Solution) -> None:
     v.pivot(o, down=(away, -1.0))
     _omega_arrow(v, max(f.r0 * 0.35, kl.model(13.0)), f.sigma, away)
     # the follower: flat face (or knife, roller), stem, its guide on the frame (hatched both sides)
-    top = Vec(f.e, h + stem)
+    top = Vec(f.e, base + stem)
     if f.kind == "flat":
         v.seg(Vec(-width, h), Vec(width, h), "link")
         v.seg(Vec(f.e, h), top, "link")
@@ -322,12 +325,12 @@ def _scheme(d: Drawing, sol: Solution) -> None:
         v.joint(B)
     else:
         v.seg(B, top, "link")
-    g_lo, g_hi = Vec(f.e, h + stem * 0.45), Vec(f.e, h + stem * 0.95)
+    g_lo, g_hi = Vec(f.e, base + stem * 0.45), Vec(f.e, base + stem * 0.95)
     v.guide(g_lo, g_hi, (1.0, 0.0))
     v.guide(g_lo, g_hi, (-1.0, 0.0))
     # link numbers: the cam 1 inside its base circle, the follower 2 by its stem, the roller 3
     v.label(Vec(0.0, -0.6 * f.base_radius), "1", 3.5, clear=0.5)
-    v.label(Vec(f.e, h + stem * 0.25), "2", 3.5, prefer=(-away, 0.0), clear=1.0)
+    v.label(Vec(f.e, base + stem * 0.22), "2", 3.5, prefer=(-away, 0.0), clear=1.0)
     if f.kind == "roller":
         v.label(B + Vec(f.r_roller, 0.0) * (-away), "3", 3.5, prefer=(-away, 0.0), clear=1.0)
     # the triangle OBB′ similar to the plan, and C (BC = OB′ = S′)
