@@ -94,7 +94,10 @@ def _mechanism(v: Viewport, geo: Any, c: Any, sol: Solution) -> None:
     v.slider(B, u3)
     _block(v, C, u3)
     _block(v, C, u5)
-    v.pivot(O1)
+    # O1's support turned away from the rocker that passes through it and from O1O2: along the
+    # bisector of the angle between the rocker's lower half (towards B) and O1O2
+    n3 = ((B - O1).unit() + (O2 - O1).unit()).unit()
+    v.pivot(O1, (n3.x, n3.y))
     v.pivot(O2)
     # the given velocity, and the senses of ω3 (= ω5) and of M
     sgn = 1.0 if geo.v_A > 0 else -1.0
@@ -109,10 +112,10 @@ def _mechanism(v: Viewport, geo: Any, c: Any, sol: Solution) -> None:
     m_sense = -w3 * (1.0 if geo.M >= 0 else -1.0)  # M resists the motion when M > 0
     v.turn(O2, m_sense, -60.0 if m_sense > 0 else 40.0, "M")
     # letters and link numbers
-    v.label(O1, "O_1", prefer=(0.0, -1.0), clear=4.0)
+    v.label(O1, "O_1", prefer=(1.0, -1.0), clear=2.5)
     v.label(O2, "O_2", prefer=(1.0, -1.0), clear=4.0)
-    v.label(A, "A", prefer=(-1.0, -1.0), clear=5.0)
-    v.label(B, "B", prefer=(-1.0, -1.0), clear=5.0)
+    v.label(A, "A", prefer=(-1.0, -1.0), clear=3.0)
+    v.label(B, "B", prefer=(-1.0, -1.0), clear=3.5)
     v.label(C, "C", prefer=(-1.0, 1.0), clear=5.0)
     for q, n in (
         (A + (B - A) * 0.5, "1"),
