@@ -1,9 +1,11 @@
 """2013-3's drawing sheet: the mechanism with a cross at k_l and its velocity plan at k_v.
 
-A3 landscape. Left: the mechanism at the largest GOST scale that fills its field, with the links
-numbered, the angle α and the lengths dimensioned, the given velocity V_A and the senses of ω3,
-ω5 and M. Right: the velocity plan, each vector equation drawn as its two lines meeting, then the
-results beside the seed's and the vector equations in the order they were solved.
+A3 landscape, composed by :mod:`geomcad.sheet.compose` (no hand-placed view): the mechanism at
+the largest GOST scale its box allows, with the links numbered, the angle α and the lengths
+dimensioned, the given velocity V_A and the senses of ω3, ω5 and M; the velocity plan, each
+vector equation drawn as its two lines meeting, at a factor 1, 2, 2.5, 4 or 5 × 10^n; the given
+data, the results and the vector equations in the order they were solved. :func:`scales` gives
+the layout's factors without drawing (``Problem.scales``).
 """
 
 from __future__ import annotations
@@ -12,23 +14,33 @@ import math
 from typing import TYPE_CHECKING, Any
 
 from geomcad.geom import Vec
-from geomcad.sheet import Drawing, Scale, Sheet, TitleBlock, Viewport, fmt_number, start
+from geomcad.sheet import Scale, Sheet, TitleBlock, Viewport, fmt_number, start
+from geomcad.sheet import views as V
+from geomcad.sheet.compose import (
+    Column,
+    Field,
+    Figure,
+    Row,
+    Spacer,
+    Tree,
+    arrange,
+    compose,
+    text_width,
+)
 from geomcad.sheet.drawing import SLIDER_SIZE
 from geomcad.sheet.lang import Words, current
 from geomcad.sheet.model import Polyline
-from geomcad.sheet.plans import draw_plan, plan_scale
-from geomcad.sheet.scale import ScaleStyle, gost_scale_to_fit
 
 if TYPE_CHECKING:
     from geomcad.construction import Construction
     from geomcad.problem import Solution
 
-#: Sheet fields (mm: x0, y0, x1, y1) of the mechanism and of the velocity plan.
-MECH_VIEW = (26.0, 30.0, 222.0, 196.0)
-PLAN_VIEW = (236.0, 24.0, 410.0, 150.0)
-
 #: Paper sizes of the symbols drawn beside the mechanism (mm).
 VA_LEN = 14.0
+#: Width (mm) of the order of construction's text.
+ORDER_W = 150.0
+#: The title block's height (mm): the right-hand column keeps it free.
+BLOCK_H = 52.0
 WORDS = Words(__package__, "sheets_2013_3")
 
 
@@ -44,35 +56,62 @@ def extent(c: Construction, l_ab: float) -> tuple[float, float, float, float]:
     return min(xs) - pad, min(ys) - pad, max(xs) + pad, max(ys) + pad
 
 
+def _views(sol: Solution, kv: Scale | None = None) -> tuple[Tree, Figure, V.PlanView]:
+    """The sheet's tree: the mechanism over the data and the order of construction, the plan
+    over the results (their lengths on the plan at ``kv``; the table's size does not depend on
+    it, so the layout can be arranged before the scales are known)."""
+    geo, c = sol.data, sol.construction
+    scheme = Figure(
+        extent(c, geo.l_AB),
+        lambda v: _mechanism(v, geo, c, sol),
+        title=WORDS("scheme_title"),
+        title_height=5.0,
+        margin=8.0,
+    )
+    plan = V.PlanView(geo.plan, title=WORDS("plan_title"), title_height=5.0, margin=6.0)
+    order = V.Text(
+        _wrapped([f"{i}. {WORDS(f'order_{i}')}" for i in range(1, 7)], ORDER_W, 2.5),
+        title=WORDS("order_title"),
+    )
+    tree = Row(
+        Column(scheme, Row(_data(sol), _results(sol, kv))),
+        Column(plan, order, Spacer((10.0, BLOCK_H))),
+    )
+    return tree, scheme, plan
+
+
+def _wrapped(paragraphs: list[str], width: float, height: float) -> list[str]:
+    """Paragraphs wrapped at spaces into lines of at most ``width`` mm."""
+    out: list[str] = []
+    for par in paragraphs:
+        line = ""
+        for word in par.split(" "):
+            trial = f"{line} {word}" if line else word
+            if line and text_width(trial, height) > width:
+                out.append(line)
+                line = word
+            else:
+                line = trial
+        out.append(line)
+    return out
+
+
 def scales(sol: Solution) -> dict[str, float]:
-    """k_l: the largest GOST 2.302 scale at which the mechanism fills its field; k_v: the plan's
-    factor at which the whole plan fits its field."""
-    x0, y0, x1, y1 = extent(sol.construction, sol.data.l_AB)
-    room_w, room_h = MECH_VIEW[2] - MECH_VIEW[0], MECH_VIEW[3] - MECH_VIEW[1]
-    k_l = gost_scale_to_fit(x1 - x0, y1 - y0, room_w, room_h).k
-    pw, ph = PLAN_VIEW[2] - PLAN_VIEW[0], PLAN_VIEW[3] - PLAN_VIEW[1] - 10.0
-    return {"l": k_l, "v": plan_scale(sol.data.plan, pw, ph).k}
+    """k_l of the mechanism and k_v of the plan, as the layout chooses them (no drawing)."""
+    tree, scheme, plan = _views(sol)
+    lay = arrange(tree, Field.of_format("A3"))
+    k_l, k_v = lay[scheme].scale, lay[plan].scale
+    assert k_l is not None and k_v is not None
+    return {"l": k_l.k, "v": k_v.k}
 
 
 def sheets(sol: Solution) -> list[tuple[str, Sheet]]:
     """The main sheet of 2013-3."""
-    geo = sol.data
-    c = sol.construction
+    tree, _scheme, _plan = _views(sol, Scale(sol.scales["v"], "v"))
     k = Scale(sol.scales["l"], "l")
-    kv = Scale(sol.scales["v"], "v")
     tb = TitleBlock(title=WORDS("tb_title"), designation=WORDS("designation"), scale=k.ratio_text())
     d = start("A3", tb)
-    x0, y0, x1, y1 = extent(c, geo.l_AB)
-    at = ((MECH_VIEW[0] + MECH_VIEW[2]) / 2.0, (MECH_VIEW[1] + 8.0 + MECH_VIEW[3]) / 2.0)
-    v = d.viewport(k, ((x0 + x1) / 2.0, (y0 + y1) / 2.0), at)
-    style = ScaleStyle(lang=current())
-    d.text(WORDS("scheme_title"), (MECH_VIEW[0] + 2.0, 13.0), 5.0)
-    d.text(WORDS("scale_line", label=k.label(style), ratio=k.ratio_text() or "—"),
-           (MECH_VIEW[0] + 2.0, 20.0), 3.5)  # fmt: skip
-    _mechanism(v, geo, c, sol)
-    draw_plan(d, geo.plan, kv, PLAN_VIEW, current(), style,
-              WORDS("plan_title", label=kv.label(style)))  # fmt: skip
-    _panel(d, sol, kv)
+    compose(d, tree)
     return [("", d.finish())]
 
 
@@ -151,11 +190,9 @@ def _block(v: Viewport, q: Vec, along: Vec) -> None:
     v.sheet.add(Polyline(corners, "link", closed=True))
 
 
-def _panel(d: Drawing, sol: Solution, kv: Scale) -> None:
-    """Below the plan: the results; below the mechanism: data and equations."""
+def _results(sol: Solution, kv: Scale | None) -> V.Table:
+    """The results with their lengths on the plan (velocities) at ``kv``."""
     r = sol.results
-    x, y = PLAN_VIEW[0], PLAN_VIEW[3] + 4.0
-    d.text(WORDS("results_title"), (x, y + 3.5), 3.5)
     rows = [[WORDS("h_quantity"), WORDS("h_value"), WORDS("h_on_plan")]]
     for name, label, unit in (
         ("V_B3", "V_{B3}", "u_ms"),
@@ -168,13 +205,13 @@ def _panel(d: Drawing, sol: Solution, kv: Scale) -> None:
         ("F_red", WORDS("F_red"), "u_n"),
     ):
         exact = float(r[name])
-        on_plan = _n(kv.mm(exact), 3) if unit == "u_ms" else ""
+        on_plan = _n(kv.mm(exact), 3) if unit == "u_ms" and kv is not None else ""
         rows.append([label, f"{_n(exact)} {WORDS(unit)}", on_plan])
-    d.table(x, y + 6.0, (30.0, 60.0, 40.0), rows, row_h=5.5)
-    # given data and the order of the plan, under the mechanism
-    x, y = MECH_VIEW[0], MECH_VIEW[3] + 4.0
+    return V.Table(rows, widths=(30.0, 40.0, 36.0), row_h=5.5, title=WORDS("results_title"))
+
+
+def _data(sol: Solution) -> V.Table:
     p = sol.params
-    d.text(WORDS("data_title"), (x, y + 3.5), 3.5)
     rows = [[WORDS("h_param"), WORDS("h_value")]]
     for name, label, unit in (
         ("v_A", "v_A", "u_ms"),
@@ -185,8 +222,4 @@ def _panel(d: Drawing, sol: Solution, kv: Scale) -> None:
     ):
         value = _n(float(p[name]), 6)
         rows.append([label, f"{value} {WORDS(unit)}" if unit else f"{value}°"])
-    d.table(x, y + 6.0, (22.0, 30.0), rows, row_h=5.5)
-    x2 = x + 58.0
-    yy = d.text(WORDS("order_title"), (x2, y + 3.5), 3.5).at[1] + 2.0
-    for i in range(1, 7):
-        yy = d.paragraph(f"{i}. {WORDS(f'order_{i}')}", x2, yy, 136.0, 2.5, indent=4.0) + 0.5
+    return V.Table(rows, widths=(22.0, 30.0), row_h=5.5, title=WORDS("data_title"))
