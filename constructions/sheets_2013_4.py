@@ -23,7 +23,6 @@ from geomcad import tol
 from geomcad.geom import Arc, Circle, Vec
 from geomcad.kinematics.gears import SpurGear
 from geomcad.sheet import (
-    Drawing,
     Polyline,
     Run,
     Scale,
@@ -32,19 +31,17 @@ from geomcad.sheet import (
     TitleBlock,
     Viewport,
     fmt_number,
-    gost_scale_to_fit,
     start,
 )
+from geomcad.sheet import views as V
+from geomcad.sheet.compose import Column, Field, Figure, Row, Spacer, Tree, arrange, compose
+from geomcad.sheet.compose import text_width as layout_text_width
 from geomcad.sheet.lang import Words, current
-from geomcad.sheet.scale import ScaleStyle
 from geomcad.sheet.text import SUB_DROP, SUB_SCALE, SUP_RISE, metrics, run_size
 from geomcad.sheet.text import width as text_width
 
 if TYPE_CHECKING:
     from geomcad.problem import Solution
-
-#: The field the tooth is drawn in on the sheet (mm: x0, y0, x1, y1), left of the tables.
-VIEW = (26.0, 26.0, 250.0, 286.0)
 
 
 def view_half_angle(gear: SpurGear) -> float:
@@ -64,71 +61,94 @@ def extent(gear: SpurGear) -> tuple[float, float, float, float]:
     return (-w, r_low * math.cos(half) - pad, w, r_top + 1.5 * pad)
 
 
-def scales(sol: Solution) -> dict[str, float]:
-    """k_l: the largest GOST 2.302 scale (enlargements included) at which the tooth view fits."""
-    x0, y0, x1, y1 = extent(sol.data.gear)
-    room_w, room_h = VIEW[2] - VIEW[0], VIEW[3] - VIEW[1]
-    return {"l": gost_scale_to_fit(x1 - x0, y1 - y0, room_w, room_h).k}
+def _inset_extent(c: Any, gear: SpurGear) -> tuple[float, float, float, float]:
+    """The model box of the inset: O, the axis up past the tip, K and N."""
+    K, N = c["K"], c["N"]
+    x_lo = min(N.x, 0.0) - 0.1 * gear.r_a
+    x_hi = max(K.x, 0.0) + 0.1 * gear.r_a
+    return (x_lo, -0.06 * gear.r_a, x_hi, 1.08 * gear.r_a)
 
 
-PANEL_X = 258.0
 WORDS = Words(__package__, "sheets_2013_4")
+MM = 1000.0  # m → mm for the tables
+CENTRE = Vec(0.0, 0.0)  # the gear's centre O
+#: Width (mm) of the order of construction's text.
+ORDER_W = 140.0
+#: The title block's height (mm): the right-hand column keeps it free.
+BLOCK_H = 52.0
 
 
 def _num(x: float, digits: int = 6) -> str:
     return fmt_number(x, current(), digits)
 
 
-MM = 1000.0  # m → mm for the tables
-CENTRE = Vec(0.0, 0.0)  # the gear's centre O
+def _views(sol: Solution) -> tuple[Tree, Figure]:
+    """The sheet's tree: the tooth (the sheet's main view) beside a column of the inset, the
+    tables and the order of construction."""
+    geo, c = sol.data, sol.construction
+    gear: SpurGear = geo.gear
+    x0, _y0, x1, _y1 = box = extent(gear)
+
+    def tooth(v: Viewport) -> None:
+        _circles(v, gear, geo, view_half_angle(gear))
+        _rack(v, gear, x0, x1)
+        _tooth(v, gear, geo)
+        _caliper(v, c, geo)
+
+    main = Figure(box, tooth, title=WORDS("view_title"), title_height=5.0, margin=3.0, weight=3.0)
+    inset = Figure(
+        _inset_extent(c, gear), lambda v: _inset(v, c, gear, geo),
+        title=WORDS("inset_title"), title_height=2.5, margin=4.0,
+    )  # fmt: skip
+    data, results, teeth = _tables(sol)
+    order = V.Text(
+        _wrapped([f"{i}. {WORDS(f'order_{i}')}" for i in range(1, 6)], ORDER_W, 2.5),
+        title=WORDS("order_title"),
+    )
+    side = Column(inset, Row(data, results), teeth, order, Spacer((10.0, BLOCK_H)))
+    return Row(main, side, weights=(5.0, 3.0)), main
+
+
+def _wrapped(paragraphs: list[str], width: float, height: float) -> list[str]:
+    """Paragraphs wrapped at spaces into lines of at most ``width`` mm."""
+    out: list[str] = []
+    for par in paragraphs:
+        line = ""
+        for word in par.split(" "):
+            trial = f"{line} {word}" if line else word
+            if line and layout_text_width(trial, height) > width:
+                out.append(line)
+                line = word
+            else:
+                line = trial
+        out.append(line)
+    return out
+
+
+def scales(sol: Solution) -> dict[str, float]:
+    """k_l of the tooth view, as the layout chooses it (no drawing)."""
+    tree, main = _views(sol)
+    k = arrange(tree, Field.of_format("A3"))[main].scale
+    assert k is not None
+    return {"l": k.k}
 
 
 def sheets(sol: Solution) -> list[tuple[str, Sheet]]:
     """The main sheet of 2013-4."""
-    geo = sol.data
-    c = sol.construction
     k = Scale(sol.scales["l"], "l")
     tb = TitleBlock(title=WORDS("tb_title"), designation=WORDS("designation"), scale=k.ratio_text())
     d = start("A3", tb)
-    x0, y0, x1, y1 = extent(geo.gear)
-    at = ((VIEW[0] + VIEW[2]) / 2.0, (VIEW[1] + VIEW[3]) / 2.0)
-    v = d.viewport(k, ((x0 + x1) / 2.0, (y0 + y1) / 2.0), at)
-    d.text(WORDS("view_title"), (VIEW[0], 13.0), 5.0)
-    label = k.label(ScaleStyle(lang=current()))
-    d.text(WORDS("scale_line", label=label, ratio=k.ratio_text() or "—"), (VIEW[0], 20.0), 3.5)
-
-    gear: SpurGear = geo.gear
-    half = view_half_angle(gear)
-    _circles(v, gear, geo, half)
-    _rack(v, gear, x0, x1)
-    _tooth(v, gear, geo)
-    _caliper(v, c, geo)
-    _inset(d, c, gear, geo)
-    _panel(d, sol, k)
+    tree, _main = _views(sol)
+    compose(d, tree)
     sheet = d.finish()
     overline_marks(sheet)
     return [("", sheet)]
 
 
-#: The inset with the angles ψ_y and α_y: its field on the sheet (mm: x0, y0, x1, y1).
-INSET = (30.0, 30.0, 92.0, 104.0)
-
-
-def _inset(d: Drawing, c: Any, gear: SpurGear, geo: Any) -> None:
+def _inset(v: Viewport, c: Any, gear: SpurGear, geo: Any) -> None:
     """A small view of the whole construction about O: the axis OT, OK, the circles d_b, d_y,
     d_a, the thread KN tangent to the base circle, and the angles ψ_y = ∠TOK, α_y = ∠KON."""
     K, N, T = c["K"], c["N"], c["T"]
-    x_lo = min(N.x, 0.0) - 0.1 * gear.r_a
-    x_hi = max(K.x, 0.0) + 0.1 * gear.r_a
-    y_hi = 1.08 * gear.r_a
-    w_room, h_room = INSET[2] - INSET[0], INSET[3] - INSET[1] - 10.0
-    ki = gost_scale_to_fit(x_hi - x_lo, y_hi + 0.06 * gear.r_a, w_room, h_room)
-    v = d.viewport(
-        ki,
-        ((x_lo + x_hi) / 2.0, y_hi / 2.0),
-        ((INSET[0] + INSET[2]) / 2.0, INSET[1] + 10.0 + h_room / 2.0),
-    )
-    d.text(WORDS("inset_title", ratio=ki.ratio_text()), (INSET[0], INSET[1] + 3.5), 2.5)
     a_lo, a_hi = math.pi / 2.0 - 0.12, N.angle + 0.12
     for r, role in ((gear.r_b, "construction"), (geo.r_y, "construction"), (gear.r_a, "link")):
         v.arc(Arc(Circle(CENTRE, r), a_lo, a_hi), role)
@@ -332,13 +352,11 @@ def _caliper(v: Viewport, c: Any, geo: Any) -> None:
     del gear
 
 
-def _panel(d: Drawing, sol: Solution, k: Scale) -> None:
-    """The tables on the right: given data, results, the tooth's sizes."""
+def _tables(sol: Solution) -> tuple[V.Table, V.Table, V.Table]:
+    """The given data, the results, and the sizes of the tooth the rack cuts."""
     p, r, geo = sol.params, sol.results, sol.data
     gear: SpurGear = geo.gear
     mm = WORDS("mm")
-    x, y = PANEL_X, 10.0
-    d.text(WORDS("data_title"), (x, y + 3.5), 3.5)
     rows = [[WORDS("h_param"), WORDS("h_value")]]
     for label, text in (
         ("m", f"{_num(float(p['m']) * MM)} {mm}"),
@@ -349,9 +367,7 @@ def _panel(d: Drawing, sol: Solution, k: Scale) -> None:
         (WORDS("height"), f"{_num(float(p['h_chord']) * MM)} {mm}"),
     ):
         rows.append([label, text])
-    _, h = d.table(x, y + 6.0, (36.0, 36.0), rows, row_h=5.5)
-    y += 6.0 + h + 5.0
-    d.text(WORDS("results_title"), (x, y + 3.5), 3.5)
+    data = V.Table(rows, widths=(30.0, 24.0), row_h=5.5, title=WORDS("data_title"))
     rows = [[WORDS("h_quantity"), WORDS("h_value")]]
     for name, label, scale in (
         ("d", f"d, {mm}", MM),
@@ -366,9 +382,7 @@ def _panel(d: Drawing, sol: Solution, k: Scale) -> None:
         if name == "x" and abs(exact) < tol.DERIVED:
             exact = 0.0  # a shift of 10^-16 is no shift
         rows.append([label, _num(exact, digits=4)])
-    _, h = d.table(x, y + 6.0, (36.0, 36.0), rows, row_h=5.5)
-    y += 6.0 + h + 6.0
-    d.text(WORDS("tooth_title"), (x, y + 3.5), 3.5)
+    results = V.Table(rows, widths=(24.0, 22.0), row_h=5.5, title=WORDS("results_title"))
     k_span = geo.k_span
     rows = [[WORDS("h_quantity"), WORDS("h_value")]]
     for label, value in (
@@ -379,9 +393,5 @@ def _panel(d: Drawing, sol: Solution, k: Scale) -> None:
         (f"W_{k_span} (z_W = {k_span})", f"{_num(geo.W * MM, digits=4)} {mm}"),
     ):
         rows.append([label, value])
-    _, h = d.table(x, y + 6.0, (50.0, 46.0), rows, row_h=5.5)
-    y += 6.0 + h + 5.0
-    y = d.text(WORDS("order_title"), (x, y + 3.5), 3.5).at[1] + 2.0
-    for i in range(1, 6):
-        y = d.paragraph(f"{i}. {WORDS(f'order_{i}')}", x, y, 150.0, 2.5, indent=4.0) + 0.4
-    del k
+    teeth = V.Table(rows, widths=(40.0, 30.0), row_h=5.5, title=WORDS("tooth_title"))
+    return data, results, teeth
