@@ -17,10 +17,20 @@ import math
 from typing import TYPE_CHECKING
 
 from geomcad.geom import Line, Vec
-from geomcad.sheet import Drawing, Scale, Sheet, TitleBlock, Viewport, fmt_number, start
+from geomcad.sheet import Scale, Sheet, TitleBlock, Viewport, fmt_number, start
+from geomcad.sheet import views as V
+from geomcad.sheet.compose import (
+    Column,
+    Field,
+    Figure,
+    Layout,
+    Row,
+    View,
+    arrange,
+    compose,
+)
 from geomcad.sheet.lang import Words, current
-from geomcad.sheet.scale import ScaleStyle, gost_scale_to_fit, nice_factor
-from geomcad.sheet.scheme import Body, draw_scheme
+from geomcad.sheet.scheme import Body
 from geomcad.structure import Link, Mechanism, Pair
 
 if TYPE_CHECKING:
@@ -28,23 +38,13 @@ if TYPE_CHECKING:
 
     from .p2013_1 import Geometry
 
-#: Fields (sheet mm: x0, y0, x1, y1).
-BEFORE = (24.0, 36.0, 150.0, 182.0)
-AFTER = (156.0, 36.0, 282.0, 182.0)
-GROUPS = (288.0, 36.0, 414.0, 182.0)
-#: The baselines of the views' titles and of the lines under them (below графа 26).
-TITLE_Y, SUB_Y = 26.0, 32.5
-POSITION = (24.0, 196.0, 226.0, 410.0)
-PLAN_ZERO = (232.0, 196.0, 398.0, 296.0)
-PLAN_GIVEN = (232.0, 304.0, 398.0, 410.0)
-PANEL_X = 422.0
+#: Width (mm) of the right-hand panel's text.
 PANEL_W = 162.0
-
-#: Room (mm) for the longest plan vector.
-PLAN_ROOM = 60.0
+#: The title block's height (mm): the right-hand panel keeps it free.
+BLOCK_H = 52.0
 CIRCLE_STEPS = 48
-#: Height (mm) of a group's caption row.
-CAPTION = 7.0
+#: Paper length (mm) of the construction lines through a plan's points.
+PLAN_LINE = 14.0
 WORDS = Words(__package__, "sheets_2013_1")
 
 
@@ -52,20 +52,10 @@ def _num(x: float, digits: int = 6) -> str:
     return fmt_number(x, current(), digits)
 
 
-def _label(k: Scale) -> str:
-    return k.label(ScaleStyle(lang=current()))
-
-
 def _box(points: list[Vec], pad: float = 0.0) -> tuple[float, float, float, float]:
     xs = [q.x for q in points]
     ys = [q.y for q in points]
     return min(xs) - pad, min(ys) - pad, max(xs) + pad, max(ys) + pad
-
-
-def _fit(box: tuple[float, float, float, float], field: tuple[float, ...]) -> Scale:
-    w, h = box[2] - box[0], box[3] - box[1]
-    room_w, room_h = field[2] - field[0], field[3] - field[1]
-    return gost_scale_to_fit(w, h, room_w, room_h)
 
 
 def _lid_end(pts: dict[str, Vec]) -> Vec:
@@ -98,51 +88,113 @@ def _position_points(geo: Geometry) -> list[Vec]:
     return out
 
 
-def _plan_values(geo: Geometry) -> float:
-    pts = geo.points
-    return max(pts["m1"].norm, pts["m6"].norm, (pts["m6"] - pts["m1"]).norm, abs(geo.e))
+class _Rest(View):
+    """The rest of a column of tables and text (it keeps them together at the top, and its box
+    takes the title block's corner): draws nothing, and is always content with its box."""
+
+    def __init__(self) -> None:
+        super().__init__(margin=0.0)
+
+    def stretch(self) -> tuple[tuple[float, float], tuple[float, float]]:
+        return (1.0, BLOCK_H), (1.0, BLOCK_H)
+
+
+class _Views:
+    """The sheet's views and their tree (composed by :mod:`geomcad.sheet.compose`)."""
+
+    def __init__(self, sol: Solution) -> None:
+        geo: Geometry = sol.data
+        rep = geo.replaced.mechanism
+        self.before = V.Scheme(
+            geo.before,
+            _bodies(geo, roller=False),
+            pair_labels=PAIR_TEXT,
+            link_labels={k: v for k, v in _link_at(geo).items() if k != "8"},
+            also=_scheme_points(geo),
+            title=WORDS("before_title", n=geo.before.n, p5=geo.before.p5, p4=geo.before.p4),
+            group="s",
+            show_scale=False,
+        )
+        self.after = V.Scheme(
+            rep,
+            _bodies(geo, roller=True),
+            highlight=[s.link for s in geo.replaced.substitutes],
+            pair_labels=PAIR_TEXT,
+            link_labels=_link_at(geo),
+            also=_scheme_points(geo),
+            title=WORDS("after_title", n=rep.n, p5=rep.p5, p4=rep.p4),
+            group="s",
+            show_scale=False,
+        )
+        schemes = Row(self.before, self.after, title=WORDS("schemes_title"), group="s")
+        groups = Column(*_groups(geo), title=WORDS("groups_title"), group="g")
+        self.position = Figure(
+            _box(_position_points(geo)),
+            lambda v: _position(v, geo),
+            title=WORDS("position_title"),
+            title_height=5.0,
+            margin=8.0,
+            weight=2.0,
+        )
+        pts = geo.points
+        z = geo.zeros[geo.built]
+        th = _num(math.degrees(z.theta1) % 360.0, digits=5)
+        t1 = _num(math.degrees(geo.theta1) % 360.0, digits=5)
+        vt = _num(float(pts["m6"].dot(Vec(math.cos(geo.psi), math.sin(geo.psi)))), digits=5)
+        origin = Vec(0.0, 0.0)
+        self.plan_zero = Figure(
+            _box([origin, pts["m1*"]]),
+            lambda v: _plan_zero(v, geo),
+            title=WORDS("plan_zero", th=th),
+            show_scale=False,
+            quantity="v",
+            series="nice",
+            group="v",
+            margin=PLAN_LINE,
+            readable=pts["m1*"].norm,
+        )
+        self.plan_given = Figure(
+            _box([origin, pts["m1"], pts["m6"]]),
+            lambda v: _plan_given(v, geo),
+            title=WORDS("plan_given", th=t1, vt=vt),
+            show_scale=False,
+            quantity="v",
+            series="nice",
+            group="v",
+            margin=PLAN_LINE,
+        )
+        plans = Column(self.plan_zero, self.plan_given, title=WORDS("plans_title"), group="v")
+        panel = Column(*_panel(sol, geo), _Rest(), gap=2.0)
+        self.tree = Row(
+            Column(Row(schemes, groups, weights=(2.0, 1.0)), Row(self.position, plans)),
+            panel,
+        )
+
+    def scales(self, lay: Layout) -> dict[str, float]:
+        """k_l of the schemes ("l"), of the dead-position drawing ("l_pos"), k_v of the plans."""
+        k_pos = lay[self.position].scale
+        assert k_pos is not None
+        return {"l": lay.scale("s").k, "l_pos": k_pos.k, "v": lay.scale("v").k}
 
 
 def scales(sol: Solution) -> dict[str, float]:
-    """k_l of the schemes ("l"), of the dead-position drawing ("l_pos") and k_v of the plans."""
-    geo: Geometry = sol.data
-    k_s = _fit(_box(_scheme_points(geo)), BEFORE)
-    k_p = _fit(_box(_position_points(geo)), POSITION)
-    k_v = nice_factor(_plan_values(geo), PLAN_ROOM, "v")
-    return {"l": k_s.k, "l_pos": k_p.k, "v": k_v.k}
+    """The layout's scale factors (no drawing): see :meth:`_Views.scales`."""
+    views = _Views(sol)
+    return views.scales(arrange(views.tree, Field.of_format("A2")))
 
 
 def sheets(sol: Solution) -> list[tuple[str, Sheet]]:
     """The main sheet of 2013-1."""
-    geo: Geometry = sol.data
     ks = Scale(sol.scales["l"], "l")
     kp = Scale(sol.scales["l_pos"], "l")
-    kv = Scale(sol.scales["v"], "v")
     ratio = ks.ratio_text() + ("" if kp.k == ks.k else f"; {kp.ratio_text()}")
-    tb = TitleBlock(
-        title=WORDS("tb_title"),
-        designation=WORDS("designation"),
-        scale=ratio,
-    )
+    tb = TitleBlock(title=WORDS("tb_title"), designation=WORDS("designation"), scale=ratio)
     d = start("A2", tb)
-    box = _box(_scheme_points(geo))
-    _schemes(d, geo, ks, box)
-    _groups(d, geo)
-    _position(d, geo, kp)
-    _plans(d, geo, kv)
-    _panel(d, sol, geo)
+    compose(d, _Views(sol).tree)
     return [("", d.finish())]
 
 
 # -- the schemes ------------------------------------------------------------------------------
-
-
-def _viewport(
-    d: Drawing, k: Scale, box: tuple[float, float, float, float], field: tuple[float, ...]
-) -> Viewport:
-    cx, cy = (box[0] + box[2]) / 2.0, (box[1] + box[3]) / 2.0
-    at = ((field[0] + field[2]) / 2.0, (field[1] + field[3]) / 2.0)
-    return d.viewport(k, (cx, cy), at)
 
 
 def _circle(c: Vec, r: float) -> Body:
@@ -189,45 +241,12 @@ def _link_at(geo: Geometry) -> dict[str, Vec]:
     }
 
 
-def _schemes(d: Drawing, geo: Geometry, k: Scale, box: tuple[float, float, float, float]) -> None:
-    before = _viewport(d, k, box, BEFORE)
-    d.text(WORDS("before_title"), (BEFORE[0], TITLE_Y), 5.0)
-    d.text(
-        WORDS("counts", n=geo.before.n, p5=geo.before.p5, p4=geo.before.p4, tail=_label(k)),
-        (BEFORE[0], SUB_Y),
-        3.5,
-    )
-    draw_scheme(
-        before,
-        geo.before,
-        _bodies(geo, roller=False),
-        pair_labels=PAIR_TEXT,
-        link_labels={k: v for k, v in _link_at(geo).items() if k != "8"},
-    )
-    after = _viewport(d, k, box, AFTER)
-    rep = geo.replaced.mechanism
-    d.text(WORDS("after_title"), (AFTER[0], TITLE_Y), 5.0)
-    d.text(
-        WORDS("counts", n=rep.n, p5=rep.p5, p4=rep.p4, tail=WORDS("substitute")),
-        (AFTER[0], SUB_Y),
-        3.5,
-    )
-    draw_scheme(
-        after,
-        rep,
-        _bodies(geo, roller=True),
-        highlight=[s.link for s in geo.replaced.substitutes],
-        pair_labels=PAIR_TEXT,
-        link_labels=_link_at(geo),
-    )
-
-
-def _groups(d: Drawing, geo: Geometry) -> None:
+def _groups(geo: Geometry) -> list[V.Scheme]:
     """The seed's replaced mechanism (no roller: the block is link 6), split into the primary
-    mechanism and its Assur groups, each drawn on its own in a cell, all at one scale."""
+    mechanism and its Assur groups, each drawn on its own with its outer pairs, all at one
+    scale (group "g")."""
     mech = geo.seed_route
     dec = geo.decomposition
-    d.text(WORDS("groups_title"), (GROUPS[0], TITLE_Y), 5.0)
     parts: list[tuple[str, tuple[str, ...]]] = [
         (WORDS("primary", frame=dec.frame, link=p.link), (p.link,)) for p in dec.primary
     ]
@@ -236,43 +255,25 @@ def _groups(d: Drawing, geo: Geometry) -> None:
         caption = WORDS("group", links=", ".join(g.links), cls=g.roman, order=g.order, kind=kind)
         parts.append((caption, g.links))
     bodies = _bodies(geo, roller=False)
-    subs = [_part(mech, part) for _, part in parts]
-    boxes = [_part_box(sub, bodies, part) for sub, (_, part) in zip(subs, parts, strict=True)]
-    # one column, a row per part as tall as the part: the largest GOST scale at which the
-    # widest part fits the column and all the rows fit the field
-    room_w = GROUPS[2] - GROUPS[0] - 6.0
-    room_h = GROUPS[3] - GROUPS[1] - CAPTION * len(parts)
-    widest = max(b[2] - b[0] for b in boxes)
-    total = sum(b[3] - b[1] for b in boxes)
-    k = gost_scale_to_fit(widest, total, room_w, room_h)
-    d.text(
-        WORDS("scale_line", label=_label(k), ratio=k.ratio_text() or "—"), (GROUPS[0], SUB_Y), 3.5
-    )
-    spare = (room_h - total / k.k) / len(parts)
-    y0 = GROUPS[1]
-    for (caption, part), sub, box in zip(parts, subs, boxes, strict=True):
-        hh = (box[3] - box[1]) / k.k + CAPTION + spare
-        d.text(caption, (GROUPS[0] + 1.0, y0 + 4.0), 2.5)
-        field = (GROUPS[0] + 3.0, y0 + CAPTION, GROUPS[2] - 3.0, y0 + hh)
-        v = _viewport(d, k, box, field)
-        ghosts = [lk.id for lk in sub.links if lk.id not in part]
-        draw_scheme(
-            v,
-            sub,
-            {lk: bodies[lk] for lk in part if lk in bodies},
-            pair_labels={q.name: q.name for q in sub.pairs},
-            ghosts=ghosts,
-            label_height=2.5,
+    out = []
+    for caption, part in parts:
+        sub = _part(mech, part)
+        out.append(
+            V.Scheme(
+                sub,
+                {lk: bodies[lk] for lk in part if lk in bodies},
+                pair_labels={q.name: q.name for q in sub.pairs},
+                ghosts=[lk.id for lk in sub.links if lk.id not in part],
+                also=[x for lk in part for b in bodies.get(lk, []) for x in b.points],
+                label_height=2.5,
+                title=caption,
+                title_height=2.5,
+                group="g",
+                show_scale=False,
+                margin=6.0,
+            )
         )
-        y0 += hh
-
-
-def _part_box(
-    sub: Mechanism, bodies: dict[str, list[Body]], part: tuple[str, ...]
-) -> tuple[float, float, float, float]:
-    pts = [q.at for q in sub.pairs]
-    pts += [x for lk in part for b in bodies.get(lk, []) for x in b.points]
-    return _box(pts)
+    return out
 
 
 def _part(mech: Mechanism, part: tuple[str, ...]) -> Mechanism:
@@ -310,21 +311,15 @@ def _right_angle(v: Viewport, vertex: Vec, a: Vec, b: Vec, size_mm: float = 3.0)
     v.polyline([vertex + ua, vertex + ua + ub, vertex + ub], "construction")
 
 
-def _position(d: Drawing, geo: Geometry, k: Scale) -> None:
+def _position(v: Viewport, geo: Geometry) -> None:
+    """The position with ML ⊥ MO built: circle(O, |e|), the pusher's path, M, the slot as the
+    tangent there, OM and the right angle at M; the other zero position in two-dot lines."""
+    k = v.scale
     z = geo.zeros[geo.built]
     e = abs(geo.e)
     r = geo.points["R"].x
     up = Vec(math.cos(geo.psi), math.sin(geo.psi))
     th = _num(math.degrees(z.theta1) % 360.0, digits=5)
-    d.text(WORDS("position_title"), (POSITION[0], POSITION[1] - 2.0), 5.0)
-    d.text(
-        WORDS("scale_line", label=_label(k), ratio=k.ratio_text() or "—"),
-        (POSITION[0], POSITION[1] + 5.0),
-        3.5,
-    )
-    v = _viewport(
-        d, k, _box(_position_points(geo)), (*POSITION[:1], POSITION[1] + 8, *POSITION[2:])
-    )
     O_ = Vec(0.0, 0.0)
     v.circle(O_, e, "construction")
     path = Line(up.perp() * geo.h, up)
@@ -371,25 +366,13 @@ def _position(d: Drawing, geo: Geometry, k: Scale) -> None:
         v.dim_linear(O_, foot, f"|h| = {_num(abs(geo.h) * mm, digits=4)}", 8.0, 2.5)
 
 
-def _plan_view(d: Drawing, kv: Scale, field: tuple[float, ...], pts: list[Vec]) -> Viewport:
-    box = _box(pts)
-    cx, cy = (box[0] + box[2]) / 2.0, (box[1] + box[3]) / 2.0
-    at = ((field[0] + field[2]) / 2.0, (field[1] + 16.0 + field[3]) / 2.0)
-    return d.viewport(kv, (cx, cy), at)
-
-
-def _plans(d: Drawing, geo: Geometry, kv: Scale) -> None:
-    pts = geo.points
-    z = geo.zeros[geo.built]
+def _plan_zero(v: Viewport, geo: Geometry) -> None:
+    """The plan of the zero position: pm1 and m1m6 on one line, m6 = p (V_T = 0)."""
+    kv = v.scale
     up = Vec(math.cos(geo.psi), math.sin(geo.psi))
-    th = _num(math.degrees(z.theta1) % 360.0, digits=5)
-    # the plan of the zero position: pm1 and m1m6 on one line, m6 = p
-    m1 = pts["m1*"]
-    d.text(WORDS("plan_zero", th=th), (PLAN_ZERO[0], PLAN_ZERO[1] - 2.0), 5.0)
-    d.text(WORDS("plan_factor", label=_label(kv)), (PLAN_ZERO[0], PLAN_ZERO[1] + 5.0), 3.5)
+    m1 = geo.points["m1*"]
     p = Vec(0.0, 0.0)
-    v = _plan_view(d, kv, PLAN_ZERO, [p, m1])
-    ext = kv.model(14.0)
+    ext = kv.model(PLAN_LINE)
     v.seg(p - up * ext, p + up * ext, "construction")
     v.arrow(p, m1, "vector")
     off = m1.perp().unit() * kv.model(1.2)
@@ -397,14 +380,16 @@ def _plans(d: Drawing, geo: Geometry, kv: Scale) -> None:
     v.label(p, "p, m_6", prefer=(-1.0, -1.0))
     v.label(m1, "m_1", prefer=(1.0, 1.0))
     v.label((p + m1) * 0.5, "V_{M1} = –V_{M6M1}", height=2.5, prefer=(-m1.y, m1.x))
-    d.text("V_T = pm_6 = 0", (PLAN_ZERO[0], PLAN_ZERO[1] + 11.0), 3.5)
-    # the plan at the given θ1
-    m1, m6 = pts["m1"], pts["m6"]
+
+
+def _plan_given(v: Viewport, geo: Geometry) -> None:
+    """The plan at the given θ1: pm1 ⊥ OM, m1m6 along the slot, pm6 along the pusher's path."""
+    kv = v.scale
+    pts = geo.points
+    up = Vec(math.cos(geo.psi), math.sin(geo.psi))
+    p, m1, m6 = Vec(0.0, 0.0), pts["m1"], pts["m6"]
     u1 = Vec(math.cos(geo.theta1), math.sin(geo.theta1))
-    t1 = _num(math.degrees(geo.theta1) % 360.0, digits=5)
-    d.text(WORDS("plan_given", th=t1), (PLAN_GIVEN[0], PLAN_GIVEN[1] - 2.0), 5.0)
-    d.text(WORDS("plan_factor", label=_label(kv)), (PLAN_GIVEN[0], PLAN_GIVEN[1] + 5.0), 3.5)
-    v = _plan_view(d, kv, PLAN_GIVEN, [p, m1, m6])
+    ext = kv.model(PLAN_LINE)
     v.seg(m6 - u1 * ext, m6 + u1 * ext, "construction")
     v.seg(m6 - up * ext, m6 + up * ext, "construction")
     v.arrow(p, m1, "vector")
@@ -415,8 +400,6 @@ def _plans(d: Drawing, geo: Geometry, kv: Scale) -> None:
     v.label(p, "p", prefer=(-1.0, -1.0))
     v.label(m1, "m_1", prefer=(1.0, 1.0))
     v.label(m6, "m_6", prefer=(1.0, -1.0))
-    vt = _num(float(pts["m6"].dot(up)), digits=5)
-    d.text(WORDS("vt_given", vt=vt), (PLAN_GIVEN[0], PLAN_GIVEN[1] + 11.0), 3.5)
 
 
 # -- the panel --------------------------------------------------------------------------------
@@ -435,13 +418,19 @@ def _link_name(lk: Link) -> str:
         return lk.name
 
 
-def _panel(d: Drawing, sol: Solution, geo: Geometry) -> None:
-    x, y = PANEL_X, 8.0
+def _panel(sol: Solution, geo: Geometry) -> list[View]:
+    """The right-hand panel: the links, the pairs, the W counts, the Assur groups, the pusher's
+    zero positions, each a table or a paragraph."""
     r = sol.results
-    y = d.text(WORDS("links_title"), (x, y + 3.5), 3.5).at[1] + 1.0
+    out: list[View] = []
+
+    def text(markup: str) -> None:
+        out.append(V.Text(paragraph=markup, width=PANEL_W))
+
     names = "; ".join(f"{lk.id} – {_link_name(lk)}" for lk in geo.before.links)
-    y = d.paragraph(f"{names}; {WORDS('link_8')}", x, y, PANEL_W, 2.5) + 2.0
-    d.text(WORDS("pairs_title"), (x, y + 3.5), 3.5)
+    out.append(
+        V.Text(paragraph=f"{names}; {WORDS('link_8')}", width=PANEL_W, title=WORDS("links_title"))
+    )
     rows = [[WORDS(k) for k in ("h_pair", "h_links", "h_kind", "h_class")]]
     for p in geo.before.pairs:
         rows.append([p.name, f"{p.a}–{p.b}", _kind(p.kind), f"p_{p.pair_class}"])
@@ -449,16 +438,10 @@ def _panel(d: Drawing, sol: Solution, geo: Geometry) -> None:
         for name in (s.pair_a, s.pair_b):
             q = geo.replaced.mechanism.pair(name)
             rows.append([f"{name}*", f"{q.a}–{q.b}", _kind(q.kind), f"p_{q.pair_class}"])
-    _, h = d.table(x, y + 6.0, (18.0, 22.0, 28.0, 18.0), rows, row_h=5.0)
-    d.paragraph(
-        WORDS("pairs_note"),
-        x + 90.0,
-        y + 6.0,
-        PANEL_W - 90.0,
-        2.5,
+    out.append(
+        V.Table(rows, widths=(18.0, 22.0, 30.0, 18.0), row_h=5.0, title=WORDS("pairs_title"))
     )
-    y += 6.0 + h + 5.0
-    d.text(WORDS("mobility_title"), (x, y + 3.5), 3.5)
+    text(WORDS("pairs_note"))
     n, p5, p4, _local = geo.counts
     rows = [[WORDS("h_quantity"), WORDS("h_count"), "W"]]
     if geo.counts_mode:
@@ -475,19 +458,8 @@ def _panel(d: Drawing, sol: Solution, geo: Geometry) -> None:
         ("W_after_replacement", WORDS("w_after"), after),
     ):
         rows.append([label, how, str(r[name])])
-    _, h = d.table(x, y + 6.0, (52.0, 62.0, 36.0), rows, row_h=5.0)
-    y += 6.0 + h + 2.0
-    y = (
-        d.paragraph(
-            WORDS("mobility_note"),
-            x,
-            y,
-            PANEL_W,
-            2.5,
-        )
-        + 3.0
-    )
-    d.text(WORDS("groups_table"), (x, y + 3.5), 3.5)
+    out.append(V.Table(rows, widths=(56.0, 62.0, 20.0), row_h=5.0, title=WORDS("mobility_title")))
+    text(WORDS("mobility_note"))
     dec = geo.decomposition
     heads = ("h_group", "h_links", "h_pairs", "h_class", "h_order", "h_kind")
     rows = [[WORDS(k) for k in heads]]
@@ -496,32 +468,21 @@ def _panel(d: Drawing, sol: Solution, geo: Geometry) -> None:
     for i, g in enumerate(dec.groups):
         kind = f"{g.kind} ({g.kind_no})" if g.kind else "–"
         rows.append(
-            [
-                f"{i + 1}",
-                ", ".join(g.links),
-                ", ".join(g.pairs),
-                g.roman,
-                str(g.order),
-                kind,
-            ]
+            [f"{i + 1}", ", ".join(g.links), ", ".join(g.pairs), g.roman, str(g.order), kind]
         )
-    _, h = d.table(x, y + 6.0, (34.0, 18.0, 32.0, 16.0, 20.0, 26.0), rows, row_h=5.0)
-    y += 6.0 + h + 2.0
-    y = (
-        d.paragraph(
-            WORDS(
-                "formula",
-                formula=dec.formula().replace("→", "+"),
-                cls=["", "I", "II", "III", "IV"][min(dec.mechanism_class, 4)],
-            ),
-            x,
-            y,
-            PANEL_W,
-            2.5,
+    out.append(
+        V.Table(
+            rows, widths=(34.0, 18.0, 32.0, 16.0, 20.0, 26.0), row_h=5.0,
+            title=WORDS("groups_table"),
         )
-        + 3.0
+    )  # fmt: skip
+    text(
+        WORDS(
+            "formula",
+            formula=dec.formula().replace("→", "+"),
+            cls=["", "I", "II", "III", "IV"][min(dec.mechanism_class, 4)],
+        )
     )
-    d.text(WORDS("pusher_title"), (x, y + 3.5), 3.5)
     zs = ", ".join(f"{_num(t, digits=6)}°" for t in r["zero_theta1_deg"])
     e, h_ = geo.e, geo.h
     psi = math.degrees(geo.psi)
@@ -537,20 +498,8 @@ def _panel(d: Drawing, sol: Solution, geo: Geometry) -> None:
         [WORDS("zero_sweep"), sweep],
         [WORDS("vt_at", th=t1), f"{vt} {WORDS('metre')}"],
     ]
-    _, h = d.table(x, y + 6.0, (80.0, 70.0), rows, row_h=5.0)
-    y += 6.0 + h + 2.0
-    y = d.paragraph(
-        WORDS("construction_note"),
-        x,
-        y,
-        PANEL_W,
-        2.5,
-    )
+    out.append(V.Table(rows, widths=(80.0, 70.0), row_h=5.0, title=WORDS("pusher_title")))
+    text(WORDS("construction_note"))
     if geo.counts_mode:
-        d.paragraph(
-            WORDS("counts_note"),
-            x,
-            y + 2.0,
-            PANEL_W,
-            2.5,
-        )
+        text(WORDS("counts_note"))
+    return out

@@ -878,7 +878,12 @@ def _score(ev: _Eval) -> tuple[float, ...]:
             rounded[g] = math.inf
             continue
         v = first[g]
-        rounded[g] = round_scale(k, v.quantity, v.series).k if k > 0.0 else 1.0
+        try:
+            rounded[g] = round_scale(k, v.quantity, v.series).k if k > 0.0 else 1.0
+        except ParameterError:  # a candidate too small even for the smallest scale
+            bad += 1000.0
+            rounded[g] = math.inf
+            continue
     short = 0
     for key, leaf in ev.leaves.items():
         if leaf.kind != "scaled" or not math.isfinite(rounded[leaf.group]):
