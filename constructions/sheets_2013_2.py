@@ -22,68 +22,50 @@ import numpy as np
 from geomcad import tol
 from geomcad.geom import Arc, Circle, Vec
 from geomcad.kinematics.cams import CamProfile, evert
-from geomcad.sheet import (
-    Drawing,
-    Scale,
-    Sheet,
-    TitleBlock,
-    Viewport,
-    fmt_number,
-    gost_scale_to_fit,
-    nice_factor,
-    start,
+from geomcad.sheet import Scale, Sheet, TitleBlock, Viewport, fmt_number, start
+from geomcad.sheet import views as V
+from geomcad.sheet.compose import (
+    Column,
+    Field,
+    Figure,
+    Layout,
+    Node,
+    Row,
+    Spacer,
+    View,
+    arrange,
+    compose,
+    text_width,
 )
 from geomcad.sheet.drawing import ARROW_LEN
-from geomcad.sheet.graph import Axis, Graph
+from geomcad.sheet.graph import Graph
 from geomcad.sheet.lang import Words, current
-from geomcad.sheet.scale import ScaleStyle
-
-from .spec_2013_2 import SEED_K_L
 
 if TYPE_CHECKING:
     from geomcad.problem import Solution
 
 WORDS = Words(__package__, "sheets_2013_2")
 MM = 1000.0
-#: The field the profile is drawn in (sheet mm: x0, y0, x1, y1).
-VIEW = (24.0, 24.0, 274.0, 298.0)
 #: Paper margin (mm) the face lines and labels take beyond the profile.
 VIEW_PAD = 6.0
-#: The mechanism scheme with the velocity plan (sheet mm: x0, y0, x1, y1).
-SCHEME = (292.0, 26.0, 585.0, 178.0)
-#: The width (mm) kept for the velocity plan at the scheme's right.
-PLAN_ROOM = 126.0
-#: The S(φ) graph: the data origin's x and the bottom of the axis; its room (mm). The S′(φ)
-#: graph stands beside it, GRAPH_GAP mm to the right.
-GRAPH = (36.0, 400.0, 150.0, 62.0)
-GRAPH_GAP = 40.0
-#: The right-hand panel: its left edge, width, top, and the lowest baseline it may use (the S′(φ)
-#: graph starts below it).
-PANEL_X = 292.0
-PANEL_W = 290.0
-PANEL_TOP = 182.0
-BOTTOM = 326.0
 #: Division points closer than this on the paper (mm) are not all labelled.
 LABEL_APART = 5.0
-#: The follower's stem on the scheme is at least this long on the paper (mm).
-STEM_MM = 14.0
 #: Rows a results table shows at most (the first, the last and evenly spaced ones between).
 MAX_ROWS = 7
 #: The face lines run this far (paper mm) past the contact point and the follower's axis.
 FACE_OVER = 6.0
 #: A plan vector shorter than this (mm) is drawn as a point with its label (twice the head).
 SHORTEST = 2.0 * ARROW_LEN
+#: Width (mm) of the panel's text, and the title block's height (kept free under the panel).
+PANEL_W = 250.0
+BLOCK_H = 52.0
 
 
 def _n(x: float, digits: int = 4) -> str:
     return fmt_number(x, current(), digits)
 
 
-def _style() -> ScaleStyle:
-    return ScaleStyle(lang=current())
-
-
-# -- scales ----------------------------------------------------------------------------------------
+# -- views and scales ------------------------------------------------------------------------------
 
 
 def extent(sol: Solution) -> tuple[float, float, float, float]:
@@ -101,15 +83,59 @@ def extent(sol: Solution) -> tuple[float, float, float, float]:
     return min(xs), min(ys), max(xs), max(ys)
 
 
+class _Views:
+    """The sheet's views and their tree (composed by :mod:`geomcad.sheet.compose`)."""
+
+    def __init__(self, sol: Solution) -> None:
+        geo = sol.data
+        f = geo.follower
+        self.profile = Figure(
+            extent(sol), lambda v: _profile(v, sol), title=WORDS("profile_title"),
+            title_height=5.0, margin=VIEW_PAD, weight=3.0,
+        )  # fmt: skip
+        left: list[View | Node] = [self.profile]
+        if geo.rest is not None:
+            span, end = math.degrees(float(geo.span)), math.degrees(float(geo.rest.phi[-1]))
+            left.append(V.Text([WORDS("rest_note", span=_n(span), end=_n(end))], height=2.5))
+        law = WORDS(f"law_{sol.params['law']}")
+        left.append(Row(*_diagrams(sol), title=WORDS("graph_title", law=law)))
+        plan = geo.plan
+        phi = math.degrees(plan.phi)
+        self.scheme = Figure(
+            _scheme_extent(sol), lambda v: _scheme(v, sol),
+            title=WORDS("scheme_title", i=geo.plan_index, phi=_n(phi)), margin=6.0,
+        )  # fmt: skip
+        vectors = [plan.V_B1, plan.V_B2, plan.V_B2 - plan.V_B1]
+        shortest = min((q.norm for q in vectors if q.norm > 0.0), default=0.0)
+        self.plan = Figure(
+            _plan_extent(sol), lambda v: _plan(v, sol), title=WORDS("plan_title"),
+            quantity="v", series="nice", margin=8.0, readable=shortest,
+        )  # fmt: skip
+        eq = "OB' = BC = S'" if f.kind == "flat" else "OB' = S'"
+        right: list[View | Node] = [
+            Row(self.scheme, self.plan),
+            V.Text([WORDS("scheme_note", eq=eq), WORDS("plan_omega")], height=2.5),
+            *_tables(sol),
+            V.Text(_notes(sol), width=PANEL_W, height=3.0),
+            V.Text(
+                [f"{i + 1}. {t}" for i, t in enumerate(_order(sol))], height=3.0,
+                title=WORDS("order_title"), title_height=5.0,
+            ),
+            Spacer((10.0, BLOCK_H)),
+        ]  # fmt: skip
+        self.tree = Row(Column(*left), Column(*right), weights=(1.0, 1.0))
+
+    def scales(self, lay: Layout) -> dict[str, float]:
+        k_l, k_v = lay[self.profile].scale, lay[self.plan].scale
+        assert k_l is not None and k_v is not None
+        return {"l": k_l.k, "v": k_v.k}
+
+
 def scales(sol: Solution) -> dict[str, float]:
-    """k_l of the profile view: the seed's 2:1 (0.0005 m/mm) for its data when it fits; else the
-    largest GOST 2.302 scale at which the profile fits the field."""
-    x0, y0, x1, y1 = extent(sol)
-    w, h = x1 - x0, y1 - y0
-    room_w, room_h = VIEW[2] - VIEW[0] - 2 * VIEW_PAD, VIEW[3] - VIEW[1] - 2 * VIEW_PAD
-    if sol.is_seed and w / SEED_K_L <= room_w and h / SEED_K_L <= room_h:
-        return {"l": SEED_K_L}
-    return {"l": gost_scale_to_fit(w, h, room_w, room_h).k}
+    """k_l of the profile and k_v of the velocity plan, as the layout chooses them (no drawing):
+    each the largest of its series the view's box allows."""
+    views = _Views(sol)
+    return views.scales(arrange(views.tree, Field.of_format("A2")))
 
 
 def sheets(sol: Solution) -> list[tuple[str, Sheet]]:
@@ -117,26 +143,19 @@ def sheets(sol: Solution) -> list[tuple[str, Sheet]]:
     k = Scale(sol.scales["l"], "l")
     tb = TitleBlock(title=WORDS("tb_title"), designation=WORDS("designation"), scale=k.ratio_text())
     d = start("A2", tb)
-    d.text(WORDS("profile_title"), (VIEW[0], 13.0), 5.0)
-    d.text(WORDS("scale_line", label=k.label(_style()), ratio=k.ratio_text() or "—"),
-           (VIEW[0], 20.0), 3.5)  # fmt: skip
-    _profile_view(d, sol, k)
-    _graph(d, sol)
-    _scheme(d, sol)
-    _panel(d, sol)
+    compose(d, _Views(sol).tree)
     return [("", d.finish())]
 
 
 # -- the profile by inversion ----------------------------------------------------------------------
 
 
-def _profile_view(d: Drawing, sol: Solution, k: Scale) -> None:
+def _profile(v: Viewport, sol: Solution) -> None:
+    """The profile by inversion (see the module's docstring)."""
     geo = sol.data
     f = geo.follower
     prof, div = geo.profile, geo.divisions
-    x0, y0, x1, y1 = extent(sol)
-    at = ((VIEW[0] + VIEW[2]) / 2.0, (VIEW[1] + 6.0 + VIEW[3]) / 2.0)
-    v = d.viewport(k, ((x0 + x1) / 2.0, (y0 + y1) / 2.0), at)
+    k = v.scale
     o = Vec(0.0, 0.0)
     # the theoretical profile's base circle r0 (for a roller its prime circle, dash-dot, and the
     # working profile's base circle r0 − r_roller)
@@ -187,7 +206,7 @@ def _profile_view(d: Drawing, sol: Solution, k: Scale) -> None:
         B = Vec(*div.contact[i])
         text = f"r_{{{i}}} = {_n(float(div.radius[i]) * MM)}"
         spots = tuple(v.p(B * t) for t in (0.6, 0.8, 0.5, 0.9, 0.4))
-        d.label(v.p(B * 0.7), text, 2.5, others=spots)
+        v.d.label(v.p(B * 0.7), text, 2.5, others=spots)
     # the angle of one interval, between the last two axes
     if n >= 2:
         a0 = Vec(0.0, 1.0).rotated(-f.sigma * float(div.phi[-2]))
@@ -198,8 +217,8 @@ def _profile_view(d: Drawing, sol: Solution, k: Scale) -> None:
 
 def _rest(v: Viewport, sol: Solution, rest: CamProfile, over: float) -> None:
     """The profile past the span to the program's end in thin lines, with the follower's axis at
-    the end (thin) and a note of where the program ends; the note under the title says what the
-    thin line is."""
+    the end (thin) and a note of where the program ends (a note under the view says what the
+    thin line is)."""
     f = sol.data.follower
     if f.kind == "roller":
         v.polyline(list(rest.pitch), "centre")
@@ -211,8 +230,6 @@ def _rest(v: Viewport, sol: Solution, rest: CamProfile, over: float) -> None:
     v.seg(foot, C + up * over, "construction")
     v.label(C + up * over, WORDS("rest_end", phi=_n(math.degrees(end))), 2.5,
             prefer=(up.x, up.y), clear=0.5)  # fmt: skip
-    span = math.degrees(float(sol.data.span))
-    v.d.text(WORDS("rest_note", span=_n(span), end=_n(math.degrees(end))), (VIEW[0], 26.0), 2.5)
 
 
 def _labelled(v: Viewport, div: CamProfile, n: int) -> set[int]:
@@ -237,43 +254,82 @@ def _label_step(n: int) -> int:
 # -- the law S(φ) ----------------------------------------------------------------------------------
 
 
-def _graph(d: Drawing, sol: Solution) -> None:
+def _diagrams(sol: Solution) -> list[V.Diagram]:
     """The follower's law S(φ) and its analogue of velocity S′(φ) = dS/dφ (the length BC = OB′
     of the scheme), side by side, with the ordinates of the division points."""
     geo = sol.data
     prog = geo.program
     end = 2.0 * math.pi if geo.closed else prog.total
-    x_at, y_at, room_w, room_h = GRAPH
     phi = np.linspace(0.0, end, 721)
     motion = prog.motion(phi)
     div = geo.divisions
     n = len(div.phi)
     step = _label_step(n)
-    law = WORDS(f"law_{sol.params['law']}")
-    d.text(WORDS("graph_title", law=law), (x_at - 6.0, y_at - room_h - 17.0), 5.0)
-    for j, (sym, unit, ys, at_div) in enumerate(
-        (
-            ("S", WORDS("unit_m"), motion.S, div.S),
-            ("S'", WORDS("unit_m"), motion.S1, div.S1),
+    out = []
+    for sym, ys, at_div in (("S", motion.S, div.S), ("S'", motion.S1, div.S1)):
+
+        def ordinates(g: Graph, at_div: np.ndarray = at_div) -> None:
+            for i in range(n):
+                g.ordinate(float(div.phi[i]), float(at_div[i]), str(i) if i % step == 0 else "")
+
+        out.append(
+            V.Diagram(
+                V.AxisSpec("φ", WORDS("unit_rad"), lo=0.0, hi=end),
+                V.AxisSpec(sym, WORDS("unit_m")),
+                [V.Curve(phi, ys, "link")],
+                extra=ordinates,
+                least=(90.0, 45.0),
+                prefer=(160.0, 70.0),
+            )
         )
-    ):
-        lo, hi = min(0.0, float(np.min(ys))), max(0.0, float(np.max(ys)))
-        gx = Axis.fit("φ", WORDS("unit_rad"), 0.0, end, room_w)
-        gy = Axis.fit(sym, unit, lo, hi, room_h)
-        x0 = x_at + j * (room_w + GRAPH_GAP)
-        # the data's lowest value on the bottom line y_at (the zero above it when S′ < 0)
-        g = Graph(d, gx, gy, (x0, y_at - gy.mm(0.0 - lo)))
-        g.axes(current(), tick_labels=True)
-        g.curve(phi.tolist(), ys.tolist(), "link")
-        for i in range(n):
-            g.ordinate(float(div.phi[i]), float(at_div[i]), str(i) if i % step == 0 else "")
-        g.factors((x0 + room_w * 0.35, g.box[1] - 5.0), current())
+    return out
 
 
 # -- the scheme and the velocity plan --------------------------------------------------------------
 
 
-def _scheme(d: Drawing, sol: Solution) -> None:
+def _cam_now(sol: Solution) -> tuple[np.ndarray, np.ndarray]:
+    """The cam's built profile and the rest of the program, turned to the plan's φ."""
+    geo = sol.data
+    f = geo.follower
+    phi = geo.plan.phi
+    cam = evert(geo.profile.contact, np.full(len(geo.profile.phi), phi), f.sigma)
+    rest = (
+        evert(geo.rest.contact, np.full(len(geo.rest.phi), phi), f.sigma)
+        if geo.rest is not None
+        else np.zeros((0, 2))
+    )
+    return cam, rest
+
+
+def _follower_size(sol: Solution) -> tuple[float, float, float]:
+    """The face's half width, the stem's base (the face, the knife's tip or the roller's top)
+    and the stem's length, in model units."""
+    geo = sol.data
+    f = geo.follower
+    width = float(np.max(np.abs(geo.profile.S1))) + 0.2 * f.r0
+    base = float(geo.plan.B.y) + (f.r_roller if f.kind == "roller" else 0.0)
+    return width, base, 0.35 * f.r0
+
+
+def _scheme_extent(sol: Solution) -> tuple[float, float, float, float]:
+    f = sol.data.follower
+    cam, rest = _cam_now(sol)
+    every = np.vstack([cam, rest]) if len(rest) else cam
+    width, base, stem = _follower_size(sol)
+    xs = [*every[:, 0], -f.r0, f.r0, -width, width]
+    ys = [*every[:, 1], -f.r0, base + stem]
+    return min(xs), min(ys), max(xs), max(ys)
+
+
+def _plan_extent(sol: Solution) -> tuple[float, float, float, float]:
+    plan = sol.data.plan
+    pts = [Vec(0.0, 0.0), plan.V_B1, plan.V_B2]
+    xs, ys = [q.x for q in pts], [q.y for q in pts]
+    return min(xs), min(ys), max(xs), max(ys)
+
+
+def _scheme(v: Viewport, sol: Solution) -> None:
     """The mechanism at the plan's division point, in the fixed frame: the cam (the built profile
     thick, the rest of the program thin), the follower, the triangle OBB′ (and C); links numbered
     (1 the cam, 2 the follower, 3 the roller); beside it the velocity plan pb₁b₂ at its own
@@ -281,29 +337,10 @@ def _scheme(d: Drawing, sol: Solution) -> None:
     geo = sol.data
     f = geo.follower
     plan = geo.plan
-    phi = plan.phi
-    cam = evert(geo.profile.contact, np.full(len(geo.profile.phi), phi), f.sigma)
-    rest = (
-        evert(geo.rest.contact, np.full(len(geo.rest.phi), phi), f.sigma)
-        if geo.rest is not None
-        else np.zeros((0, 2))
-    )
-    width = float(np.max(np.abs(geo.profile.S1))) + 0.2 * f.r0
+    kl = v.scale
+    cam, rest = _cam_now(sol)
+    width, base, stem = _follower_size(sol)
     h = float(plan.B.y)
-    x0, y0, x1, y1 = SCHEME
-    room_w, room_h = x1 - x0 - PLAN_ROOM - 8.0, y1 - y0 - 4.0
-    stem = 0.25 * f.r0
-    # the stem starts at the face, the knife's tip or the roller's top
-    base = h + (f.r_roller if f.kind == "roller" else 0.0)
-    every = np.vstack([cam, rest]) if len(rest) else cam
-    for _ in range(2):  # the stem is at least STEM_MM long on the paper
-        xs = [*every[:, 0], -f.r0, f.r0, -width, width]
-        ys = [*every[:, 1], -f.r0, base + stem]
-        w_m, h_m = max(xs) - min(xs), max(ys) - min(ys)
-        kl = gost_scale_to_fit(w_m, h_m, room_w, room_h)
-        stem = max(0.25 * f.r0, kl.model(STEM_MM))
-    left = x0 + 2.0 + (room_w - kl.mm(w_m)) / 2.0
-    v = d.viewport(kl, (min(xs), (max(ys) + min(ys)) / 2.0), (left, (y0 + 4.0 + y1) / 2.0))
     o = Vec(0.0, 0.0)
     # the cam: its built profile and the base circle, turned to φ; the rest of the program thin
     v.circle(o, f.base_radius, "construction")
@@ -349,57 +386,26 @@ def _scheme(d: Drawing, sol: Solution) -> None:
         v.label(C, "C", prefer=(away, -1.0))
     if abs(plan.S1) > 0.0:
         v.dim_linear(o, Bp, "S'", offset=-3.0 if Bp.x > 0 else 3.0, height=2.5)
-    k_i = geo.plan_index
-    d.text(WORDS("scheme_title", i=k_i, phi=_n(math.degrees(phi))), (x0, y0 - 7.0), 5.0)
-    eq = "OB' = BC = S'" if f.kind == "flat" else "OB' = S'"
-    d.text(WORDS("scheme_scale", label=kl.label(_style()), ratio=kl.ratio_text(), eq=eq),
-           (x0, y0 - 1.0), 2.5)  # fmt: skip
-    _plan(d, sol)
 
 
-def plan_factor(sol: Solution) -> Scale:
-    """μ_V of the velocity plan: the smallest factor (1, 2, 2.5, 4 or 5 × 10^n) at which the
-    plan fits its room; every vector is drawn at it."""
-    plan = sol.data.plan
-    pts = [Vec(0.0, 0.0), plan.V_B1, plan.V_B2]
-    pw = max(q.x for q in pts) - min(q.x for q in pts)
-    ph = max(q.y for q in pts) - min(q.y for q in pts)
-    room_w, room_h = PLAN_ROOM - 16.0, SCHEME[3] - SCHEME[1] - 40.0
-    return nice_factor(max(pw * room_h / room_w, ph, plan.V_B1.norm * 0.1), room_h, "v")
-
-
-def _plan(d: Drawing, sol: Solution) -> None:
+def _plan(pv: Viewport, sol: Solution) -> None:
     """The velocity plan: pb1 = V_B1 ⊥ OB, pb2 = V_B2 along the motion, b1b2 = V_B2B1, each at
-    μ_V exactly; a vector under two arrowheads is drawn as a point and the sheet says so."""
+    μ_V exactly; a vector under two arrowheads is drawn as a point with its name."""
     plan = sol.data.plan
-    kv = plan_factor(sol)
-    _, y0, x1, y1 = SCHEME
-    pts = [Vec(0.0, 0.0), plan.V_B1, plan.V_B2]
-    # the plan centred in its room under the scheme's title
-    cx = (min(q.x for q in pts) + max(q.x for q in pts)) / 2.0
-    cy = (min(q.y for q in pts) + max(q.y for q in pts)) / 2.0
-    px0 = x1 - PLAN_ROOM
-    pv = d.viewport(kv, (cx, cy), (px0 + PLAN_ROOM / 2.0, y0 + 14.0 + (y1 - y0 - 40.0) / 2.0))
+    kv = pv.scale
     pole = Vec(0.0, 0.0)
     b1, b2 = plan.V_B1, plan.V_B2
-    short: list[str] = []
     for a, b, name in ((pole, b1, "V_{B1}"), (pole, b2, "V_{B2}"), (b1, b2, "V_{B2B1}")):
         length = kv.mm((b - a).norm)
         if length >= SHORTEST:
             pv.arrow(a, b, "vector")
         elif length > 0.0:
             pv.dot(b, "point")
-            short.append(WORDS("plan_short", name=name, value=_n(length, 3)))
+            pv.label(b, WORDS("plan_short", name=name, value=_n(length, 3)), 2.5)
     pv.dot(pole, "point")
     pv.label(pole, "p", height=3.5, prefer=(1.0, -1.0))
     pv.label(b1, "b_1", height=3.5, prefer=(-1.0, 0.0))
     pv.label(b2, "b_2", height=3.5, prefer=(1.0, 1.0))
-    low = max(pv.p(q)[1] for q in pts) + 10.0
-    d.text(WORDS("plan_title"), (px0 + 2.0, low), 3.5)
-    d.text(kv.label(_style()), (px0 + 2.0, low + 4.5), 2.5)
-    yy = d.text(WORDS("plan_omega"), (px0 + 2.0, low + 8.5), 2.5).at[1]
-    for text in short:
-        yy = d.paragraph(text, px0 + 2.0, yy + 1.0, PLAN_ROOM - 4.0, 2.5)
 
 
 def _omega_arrow(v: Viewport, r: float, sigma: int, side: float) -> None:
@@ -445,10 +451,9 @@ def _clean(x: float, size: float) -> float:
     return 0.0 if abs(x) <= tol.DERIVED * size else x
 
 
-def _panel(d: Drawing, sol: Solution) -> None:
+def _tables(sol: Solution) -> list[V.Table]:
+    """The given data and the results at the division points."""
     p, r, geo = sol.params, sol.results, sol.data
-    x, y = PANEL_X, PANEL_TOP
-    d.text(WORDS("data_title"), (x, y + 3.5), 5.0)
     law = str(p["law"])
     mm = WORDS("mm")
     rise, dwell, ret = (_n(float(p[n])) for n in ("phi_rise_deg", "phi_dwell_deg",
@@ -464,10 +469,10 @@ def _panel(d: Drawing, sol: Solution) -> None:
          WORDS("ccw" if int(p["omega_sign"]) > 0 else "cw"), WORDS("c_offsets"),
          f"{e_mm} / {rr_mm} {mm}"],
     ]  # fmt: skip
-    widths = (30.0, 44.0, 38.0, 54.0, 46.0, 58.0)
-    _, h = d.table(x, y + 7.0, widths, rows, height=3.5, row_h=6.0, header=False)
-    y += 7.0 + h + 7.0
-    d.text(WORDS("results_title"), (x, y + 3.5), 5.0)
+    data = V.Table(
+        rows, widths=(30.0, 38.0, 30.0, 54.0, 40.0, 54.0), height=3.5, row_h=6.0, header=False,
+        title=WORDS("data_title"), title_height=5.0,
+    )  # fmt: skip
     rows = [[WORDS(f"h_{q}") for q in ("i", "phi", "S", "S1", "r")]]
     n = len(r["phi"])
     for i in _rows(n):
@@ -481,21 +486,11 @@ def _panel(d: Drawing, sol: Solution) -> None:
             ]
         )
     rows.append(["a", "", "", "", _n(float(r["a"]) * MM)])
-    r_widths = (30.0, 60.0, 60.0, 60.0, 60.0)
-    _, h = d.table(x, y + 7.0, r_widths, rows, height=3.5, row_h=6.5)
-    y += 7.0 + h + 2.0
-    summary = WORDS(
-        "summary",
-        rho=_n(float(r["rho_min"]) * MM),
-        alpha=_n(float(r["pressure_angle_max_deg"])),
-    )
-    for text in [summary, *_notes(sol)]:
-        y = d.paragraph(text, x, y, PANEL_W, 3.0) + 0.8
-    order = _order(sol)
-    if y + 9.0 + 5.0 * len(order) <= BOTTOM:
-        y = d.text(WORDS("order_title"), (x, y + 7.0), 5.0).at[1] + 1.5
-        for i, step in enumerate(order):
-            y = d.paragraph(f"{i + 1}. {step}", x, y, PANEL_W, 3.0, indent=5.0) + 0.3
+    results = V.Table(
+        rows, widths=(20.0, 50.0, 50.0, 50.0, 50.0), height=3.5, row_h=6.5,
+        title=WORDS("results_title"), title_height=5.0,
+    )  # fmt: skip
+    return [data, results]
 
 
 def _order(sol: Solution) -> list[str]:
@@ -513,12 +508,32 @@ def _order(sol: Solution) -> list[str]:
 
 
 def _notes(sol: Solution) -> list[str]:
-    """The sheet's notes: the radius formula, what happens at a jump of S′."""
+    """The sheet's notes, wrapped to the panel: the summary, the radius formula, what happens at
+    a jump of S′."""
     geo = sol.data
     f = geo.follower
-    out: list[str] = []
+    r = sol.results
+    out: list[str] = [
+        WORDS("summary", rho=_n(float(r["rho_min"]) * MM),
+              alpha=_n(float(r["pressure_angle_max_deg"]))),
+    ]  # fmt: skip
     if f.kind == "flat":
         out.append(WORDS("note_radius"))
     if np.any(geo.profile.corner) and f.kind == "flat" and sol.params["law"] == "linear":
         out.append(WORDS("note_jump", a=_n(float(sol.results["a"]) * MM)))
+    return [line for par in out for line in _wrapped(par, PANEL_W, 3.0)]
+
+
+def _wrapped(par: str, width: float, height: float) -> list[str]:
+    """A paragraph wrapped at spaces into lines of at most ``width`` mm."""
+    out: list[str] = []
+    line = ""
+    for word in par.split(" "):
+        trial = f"{line} {word}" if line else word
+        if line and text_width(trial, height) > width:
+            out.append(line)
+            line = word
+        else:
+            line = trial
+    out.append(line)
     return out
