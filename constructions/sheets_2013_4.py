@@ -36,6 +36,7 @@ from geomcad.sheet import (
 from geomcad.sheet import views as V
 from geomcad.sheet.compose import Column, Field, Figure, Row, Spacer, Tree, arrange, compose
 from geomcad.sheet.compose import text_width as layout_text_width
+from geomcad.sheet.drawing import ARROW_LEN
 from geomcad.sheet.lang import Words, current
 from geomcad.sheet.text import SUB_DROP, SUB_SCALE, SUP_RISE, metrics, run_size
 from geomcad.sheet.text import width as text_width
@@ -174,7 +175,7 @@ def _small_angle(v: Viewport, vertex: Vec, p1: Vec, p2: Vec, text: str, r_mm: fl
     lo, hi = min(a1, a2), max(a1, a2)
     r = v.scale.model(r_mm)
     v.arc(Arc(Circle(vertex, r), lo, hi), "dimension")
-    step = 6.0 / r_mm
+    step = 2.2 * ARROW_LEN / r_mm  # arrows outside the arc, each over two heads long
     for a_end, a_out in ((lo, lo - step), (hi, hi + step)):
         v.arrow(vertex + Vec.polar(r, a_out), vertex + Vec.polar(r, a_end), "dimension")
     v.label(vertex + Vec.polar(r, hi + step), text, 2.5, prefer=(-1.0, 0.0))
