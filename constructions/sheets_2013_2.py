@@ -98,7 +98,7 @@ class _Views:
             span, end = math.degrees(float(geo.span)), math.degrees(float(geo.rest.phi[-1]))
             left.append(V.Text([WORDS("rest_note", span=_n(span), end=_n(end))], height=2.5))
         law = WORDS(f"law_{sol.params['law']}")
-        left.append(Row(*_diagrams(sol), title=WORDS("graph_title", law=law)))
+        left.append(Row(*_diagrams(sol), weights=(1.0, 1.0), title=WORDS("graph_title", law=law)))
         plan = geo.plan
         phi = math.degrees(plan.phi)
         self.scheme = Figure(
