@@ -4,7 +4,7 @@
   V_C4 = V_C3 + V_C4C3 = V_C5 + V_C4C5) is drawn as two lines of known direction that meet.
 - c3 is the image of C on link 3 by similarity; ω3 = ω5 because the cross slides on both links
   at a fixed right angle; F_red = M·ω5/v_A by equal power.
-- Sheet (A3): the mechanism at a GOST scale (1:2) with the links numbered and α, l_AB, l_O1O2
+- Sheet (A3): the mechanism at a GOST scale (1:2.5) with the links numbered and α, l_AB, l_O1O2
   dimensioned, the plan at μ_V = 0,02 (m/s)/mm with its lines and lettered points, the results
   and the order of the plan.
 """
