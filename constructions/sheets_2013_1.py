@@ -126,7 +126,9 @@ class _Views:
             group="s",
             show_scale=False,
         )
-        schemes = Row(self.before, self.after, title=WORDS("schemes_title"), group="s")
+        schemes = Row(
+            self.before, self.after, weights=(1.0, 1.0), title=WORDS("schemes_title"), group="s"
+        )
         groups = Column(*_groups(geo), title=WORDS("groups_title"), group="g")
         self.position = Figure(
             _box(_position_points(geo)),
@@ -163,7 +165,10 @@ class _Views:
             group="v",
             margin=PLAN_LINE,
         )
-        plans = Column(self.plan_zero, self.plan_given, title=WORDS("plans_title"), group="v")
+        plans = Column(
+            self.plan_zero, self.plan_given, weights=(1.0, 1.0), title=WORDS("plans_title"),
+            group="v",
+        )  # fmt: skip
         panel = Column(*_panel(sol, geo), _Rest(), gap=2.0)
         self.tree = Row(
             Column(Row(schemes, groups, weights=(2.0, 1.0)), Row(self.position, plans)),
