@@ -116,7 +116,8 @@ class ZeroPosition:
 
 @dataclass(frozen=True)
 class Geometry:
-    """Everything the sheet needs besides the recorded steps."""
+    """The solved model besides the recorded steps: the mechanism before and after the
+    replacement, the decomposition, the scheme's points and the zero positions."""
 
     e: float
     psi: float
