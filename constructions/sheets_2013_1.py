@@ -33,6 +33,8 @@ from geomcad.sheet.lang import Words, current
 from geomcad.sheet.scheme import Body
 from geomcad.structure import Link, Mechanism, Pair
 
+from .layout_cache import per_language
+
 if TYPE_CHECKING:
     from geomcad.problem import Solution
 
@@ -182,6 +184,7 @@ class _Views:
         return {"l": lay.scale("s").k, "l_pos": k_pos.k, "v": lay.scale("v").k}
 
 
+@per_language
 def scales(sol: Solution) -> dict[str, float]:
     """The layout's scale factors (no drawing): see :meth:`_Views.scales`."""
     views = _Views(sol)
@@ -190,8 +193,8 @@ def scales(sol: Solution) -> dict[str, float]:
 
 def sheets(sol: Solution) -> list[tuple[str, Sheet]]:
     """The main sheet of 2013-1."""
-    ks = Scale(sol.scales["l"], "l")
-    kp = Scale(sol.scales["l_pos"], "l")
+    got = scales(sol)  # this layout's (in the language being drawn), which compose() repeats
+    ks, kp = Scale(got["l"], "l"), Scale(got["l_pos"], "l")
     ratio = ks.ratio_text() + ("" if kp.k == ks.k else f"; {kp.ratio_text()}")
     tb = TitleBlock(title=WORDS("tb_title"), designation=WORDS("designation"), scale=ratio)
     d = start("A2", tb)

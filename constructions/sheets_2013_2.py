@@ -41,6 +41,8 @@ from geomcad.sheet.drawing import ARROW_LEN
 from geomcad.sheet.graph import Graph
 from geomcad.sheet.lang import Words, current
 
+from .layout_cache import per_language
+
 if TYPE_CHECKING:
     from geomcad.problem import Solution
 
@@ -131,6 +133,7 @@ class _Views:
         return {"l": k_l.k, "v": k_v.k}
 
 
+@per_language
 def scales(sol: Solution) -> dict[str, float]:
     """k_l of the profile and k_v of the velocity plan, as the layout chooses them (no drawing):
     each the largest of its series the view's box allows."""
@@ -140,7 +143,7 @@ def scales(sol: Solution) -> dict[str, float]:
 
 def sheets(sol: Solution) -> list[tuple[str, Sheet]]:
     """The main sheet of 2013-2."""
-    k = Scale(sol.scales["l"], "l")
+    k = Scale(scales(sol)["l"], "l")  # this layout's (in the language being drawn)
     tb = TitleBlock(title=WORDS("tb_title"), designation=WORDS("designation"), scale=k.ratio_text())
     d = start("A2", tb)
     compose(d, _Views(sol).tree)

@@ -31,6 +31,8 @@ from geomcad.sheet.drawing import SLIDER_SIZE
 from geomcad.sheet.lang import Words, current
 from geomcad.sheet.model import Polyline
 
+from .layout_cache import per_language
+
 if TYPE_CHECKING:
     from geomcad.construction import Construction
     from geomcad.problem import Solution
@@ -96,6 +98,7 @@ def _wrapped(paragraphs: list[str], width: float, height: float) -> list[str]:
     return out
 
 
+@per_language
 def scales(sol: Solution) -> dict[str, float]:
     """k_l of the mechanism and k_v of the plan, as the layout chooses them (no drawing)."""
     tree, scheme, plan = _views(sol)
@@ -107,8 +110,9 @@ def scales(sol: Solution) -> dict[str, float]:
 
 def sheets(sol: Solution) -> list[tuple[str, Sheet]]:
     """The main sheet of 2013-3."""
-    tree, _scheme, _plan = _views(sol, Scale(sol.scales["v"], "v"))
-    k = Scale(sol.scales["l"], "l")
+    got = scales(sol)  # this layout's (in the language being drawn), which compose() repeats
+    tree, _scheme, _plan = _views(sol, Scale(got["v"], "v"))
+    k = Scale(got["l"], "l")
     tb = TitleBlock(title=WORDS("tb_title"), designation=WORDS("designation"), scale=k.ratio_text())
     d = start("A3", tb)
     compose(d, tree)

@@ -41,6 +41,8 @@ from geomcad.sheet.lang import Words, current
 from geomcad.sheet.text import SUB_DROP, SUB_SCALE, SUP_RISE, metrics, run_size
 from geomcad.sheet.text import width as text_width
 
+from .layout_cache import per_language
+
 if TYPE_CHECKING:
     from geomcad.problem import Solution
 
@@ -126,6 +128,7 @@ def _wrapped(paragraphs: list[str], width: float, height: float) -> list[str]:
     return out
 
 
+@per_language
 def scales(sol: Solution) -> dict[str, float]:
     """k_l of the tooth view, as the layout chooses it (no drawing)."""
     tree, main = _views(sol)
@@ -136,7 +139,7 @@ def scales(sol: Solution) -> dict[str, float]:
 
 def sheets(sol: Solution) -> list[tuple[str, Sheet]]:
     """The main sheet of 2013-4."""
-    k = Scale(sol.scales["l"], "l")
+    k = Scale(scales(sol)["l"], "l")  # this layout's (in the language being drawn)
     tb = TitleBlock(title=WORDS("tb_title"), designation=WORDS("designation"), scale=k.ratio_text())
     d = start("A3", tb)
     tree, _main = _views(sol)
