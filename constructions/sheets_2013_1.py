@@ -364,7 +364,7 @@ def _position(v: Viewport, geo: Geometry) -> None:
     v.label(z.M, "M", prefer=(1.0, 1.0), clear=r / k.k + 0.5)
     v.label(z.L, "L", prefer=(0.0, 1.0))
     v.label(z.M + up * (1.6 * e), "7", prefer=(1.0, 0.0))
-    v.label(z.M - up * r, "6", prefer=(-1.0, -1.0), clear=0.5)
+    v.label(z.M - z.u1 * r, "6", prefer=(-z.u1.x, -z.u1.y), clear=0.5)
     v.label(z.L - z.u1 * (0.3 * e), "1", prefer=(0.0, 1.0), clear=r / k.k + 0.5)
     v.label((O_ + z.M) * 0.5, "|e|", prefer=(-n1.x, -n1.y), height=2.5)
     v.label(z.L + z.u1 * (0.3 * e), f"θ_1 = {th}°", height=2.5, prefer=(1.0, -1.0))
