@@ -90,6 +90,18 @@ def _position_points(geo: Geometry) -> list[Vec]:
     return out
 
 
+def _caption(view: V.Scheme, text: str) -> None:
+    """``text`` over the top left corner of the scheme's drawing, inside its margin."""
+    ext = view.extent()
+    assert ext is not None
+
+    def draw(v: Viewport) -> None:
+        x, y = v.p((ext[0], ext[3]))
+        v.d.text(text, (x, y - 4.0), 3.5)
+
+    view.extra = draw
+
+
 class _Rest(View):
     """The rest of a column of tables and text (it keeps them together at the top, and its box
     takes the title block's corner): draws nothing, and is always content with its box."""
@@ -113,9 +125,7 @@ class _Views:
             pair_labels=PAIR_TEXT,
             link_labels={k: v for k, v in _link_at(geo).items() if k != "8"},
             also=_scheme_points(geo),
-            title=WORDS("before_title", n=geo.before.n, p5=geo.before.p5, p4=geo.before.p4),
             group="s",
-            show_scale=False,
         )
         self.after = V.Scheme(
             rep,
@@ -124,10 +134,13 @@ class _Views:
             pair_labels=PAIR_TEXT,
             link_labels=_link_at(geo),
             also=_scheme_points(geo),
-            title=WORDS("after_title", n=rep.n, p5=rep.p5, p4=rep.p4),
             group="s",
-            show_scale=False,
         )
+        # each scheme's counts over its drawing (the row's title states the common scale)
+        _caption(
+            self.before, WORDS("before_title", n=geo.before.n, p5=geo.before.p5, p4=geo.before.p4)
+        )
+        _caption(self.after, WORDS("after_title", n=rep.n, p5=rep.p5, p4=rep.p4))  # fmt: skip
         schemes = Row(
             self.before, self.after, weights=(1.0, 1.0), title=WORDS("schemes_title"), group="s"
         )
