@@ -116,7 +116,8 @@ class ZeroPosition:
 
 @dataclass(frozen=True)
 class Geometry:
-    """Everything the sheet needs besides the recorded steps."""
+    """The solved model besides the recorded steps: the mechanism before and after the
+    replacement, the decomposition, the scheme's points and the zero positions."""
 
     e: float
     psi: float
@@ -431,12 +432,4 @@ def build(p: Mapping[str, ParamValue]) -> Build:
         built,
         sweep,
     )
-    from .sheets_2013_1 import scales
-
-    return Build(results, c, notes, scales(geo), geo)
-
-
-def draw(solution: Any) -> list[tuple[str, Any]]:
-    from .sheets_2013_1 import sheets
-
-    return sheets(solution)
+    return Build(results, c, notes, {}, geo)

@@ -41,7 +41,7 @@ import numpy as np
 
 from geomcad import tol
 from geomcad.construction import Construction
-from geomcad.errors import ParameterError
+from geomcad.errors import GeomcadError, ParameterError
 from geomcad.geom import Vec
 from geomcad.kinematics.cams import (
     CamProfile,
@@ -56,10 +56,8 @@ from geomcad.kinematics.cams import (
 )
 from geomcad.kinematics.motion_laws import CamProgram, standard_program
 from geomcad.problem import Build, ParamValue
-from geomcad.sheet.scale import gost_scale_to_fit
 from geomcad.units import deg, to_deg
 
-from .spec_2013_2 import PARAMS, SEED_K_L
 from .spec_2013_2 import PROBLEM as PROBLEM
 
 NOTES = [
@@ -72,7 +70,8 @@ NOTES = [
 
 @dataclass(frozen=True)
 class Geometry:
-    """Everything the sheet needs besides the recorded steps."""
+    """The solved model besides the recorded steps: the program, the follower, the profile over
+    the span (and, for a full turn, closed), the division points and the velocity plan."""
 
     program: CamProgram
     follower: Follower
@@ -82,7 +81,10 @@ class Geometry:
     closed: bool
     plan: VelocityPlan
     plan_index: int
-    extent: tuple[float, float, float, float]
+    #: The profile on from the span's end to the program's end (the rest of the program, which
+    #: the sheet draws in thin lines so that the cam's shape is seen whole); ``None`` when the
+    #: span covers the program (or the profile is closed), or when the rest has a cusp.
+    rest: CamProfile | None = None
 
 
 def _check(p: Mapping[str, ParamValue]) -> None:
@@ -143,10 +145,21 @@ def build(p: Mapping[str, ParamValue]) -> Build:
         "profile": _points(prof),
     }
     notes = list(NOTES) + _jump_notes(prof, program, f)
-    box = _extent(prof, div, f)
-    geo = Geometry(program, f, prof, div, span, closed, plan, k, box)
-    seed_data = all(p[q.name] == q.default for q in PARAMS)
-    return Build(results, c, notes, {"l": sheet_k_l(box, seed_data)}, geo)
+    rest = _rest(program, f, span, closed)
+    geo = Geometry(program, f, prof, div, span, closed, plan, k, rest)
+    return Build(results, c, notes, {}, geo)
+
+
+def _rest(program: CamProgram, f: Follower, span: float, closed: bool) -> CamProfile | None:
+    """The profile from the span's end to the end of the program (not recorded as a step: no
+    result depends on it); ``None`` when there is nothing more, or when it cannot be cut (a cusp
+    past the span is not this problem's error)."""
+    if closed or span >= program.total * (1.0 - tol.DERIVED):
+        return None
+    try:
+        return cam_profile(program, f, span, program.total)
+    except GeomcadError:
+        return None
 
 
 def _plan_index(S1: np.ndarray) -> int:
@@ -256,34 +269,3 @@ def _jump_notes(prof: CamProfile, program: CamProgram, f: Follower) -> list[str]
         else:
             out.append(f"{head}: the profile has a sharp corner there (the knife's path bends)")
     return out
-
-
-#: The field the profile is drawn in on the sheet (mm: x0, y0, x1, y1).
-VIEW = (24.0, 24.0, 252.0, 200.0)
-#: Paper margin (mm) the face lines and labels take beyond the profile.
-VIEW_PAD = 6.0
-
-
-def sheet_k_l(box: tuple[float, float, float, float], seed_data: bool) -> float:
-    """k_l of the profile view: the seed's 2:1 (0.0005 m/mm) for its data when it fits; else the
-    largest GOST 2.302 scale at which the profile fits the field."""
-    w, h = box[2] - box[0], box[3] - box[1]
-    room_w, room_h = VIEW[2] - VIEW[0] - 2 * VIEW_PAD, VIEW[3] - VIEW[1] - 2 * VIEW_PAD
-    if seed_data and w / SEED_K_L <= room_w and h / SEED_K_L <= room_h:
-        return SEED_K_L
-    return gost_scale_to_fit(w, h, room_w, room_h).k
-
-
-def _extent(prof: CamProfile, div: CamProfile, f: Follower) -> tuple[float, float, float, float]:
-    """The model box the profile view draws: the base circle, the profile, the division points."""
-    pts = np.vstack([prof.contact, div.pitch, div.contact, prof.pitch])
-    ext = f.r_roller if f.kind == "roller" else 0.0
-    xs = [float(pts[:, 0].min()) - ext, float(pts[:, 0].max()) + ext, -f.r0, f.r0]
-    ys = [float(pts[:, 1].min()) - ext, float(pts[:, 1].max()) + ext, -f.r0, f.r0]
-    return min(xs), min(ys), max(xs), max(ys)
-
-
-def draw(solution: Any) -> list[tuple[str, Any]]:
-    from .sheets_2013_2 import sheets
-
-    return sheets(solution)

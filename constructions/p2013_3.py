@@ -36,24 +36,18 @@ from geomcad.errors import ParameterError
 from geomcad.geom import Vec
 from geomcad.kinematics.plan import Plan, Side, velocity_plan
 from geomcad.problem import Build, ParamValue
-from geomcad.sheet.plans import plan_scale
-from geomcad.sheet.scale import gost_scale_to_fit
 
 from .spec_2013_3 import PROBLEM as PROBLEM
-
-#: Sheet fields (mm: x0, y0, x1, y1) of the mechanism and of the velocity plan.
-MECH_VIEW = (26.0, 30.0, 222.0, 196.0)
-PLAN_VIEW = (236.0, 24.0, 410.0, 150.0)
 
 
 @dataclass(frozen=True)
 class Geometry:
-    """What the sheet needs besides the recorded steps."""
+    """The solved model besides the recorded steps: the given motion and load, and the plan."""
 
     v_A: float
     M: float
+    l_AB: float
     plan: Plan
-    extent: tuple[float, float, float, float]
 
 
 def _check(p: Mapping[str, ParamValue]) -> tuple[float, float, float, float, float]:
@@ -126,29 +120,4 @@ def build(p: Mapping[str, ParamValue]) -> Build:
         "V_C4": v_c4.norm,
         "F_red": f_red,
     }
-    box = _extent(c, l_ab)
-    k_l = _k_l(box)
-    k_v = plan_scale(vp, PLAN_VIEW[2] - PLAN_VIEW[0], PLAN_VIEW[3] - PLAN_VIEW[1] - 10.0).k
-    geo = Geometry(v_a, m, vp, box)
-    return Build(results, c, [], {"l": k_l, "v": k_v}, geo)
-
-
-def _extent(c: Construction, l_ab: float) -> tuple[float, float, float, float]:
-    """The model box the mechanism drawing needs: the links, the slots run past C and O2."""
-    pts = [c[n] for n in ("O1", "O2", "A", "B", "C")]
-    pad = 0.35 * l_ab
-    xs, ys = [q.x for q in pts], [q.y for q in pts]
-    return min(xs) - pad, min(ys) - pad, max(xs) + pad, max(ys) + pad
-
-
-def _k_l(box: tuple[float, float, float, float]) -> float:
-    """The largest GOST 2.302 scale at which the mechanism fills its field."""
-    w, h = box[2] - box[0], box[3] - box[1]
-    room_w, room_h = MECH_VIEW[2] - MECH_VIEW[0], MECH_VIEW[3] - MECH_VIEW[1]
-    return gost_scale_to_fit(w, h, room_w, room_h).k
-
-
-def draw(solution: Any) -> list[tuple[str, Any]]:
-    from .sheets_2013_3 import sheets
-
-    return sheets(solution)
+    return Build(results, c, [], {}, Geometry(v_a, m, l_ab, vp))

@@ -44,7 +44,6 @@ from geomcad.problem import (
     Build,
     ParamValue,
 )
-from geomcad.sheet.scale import gost_scale_to_fit
 from geomcad.units import to_deg
 
 from .spec_2013_4 import PARAMS
@@ -66,7 +65,8 @@ NOTES = [
 
 @dataclass(frozen=True)
 class Geometry:
-    """What the sheet needs besides the recorded steps."""
+    """The solved model besides the recorded steps: the generated gear and its flank, the
+    caliper's angle and circle, the span measurement."""
 
     gear: SpurGear
     flank: Flank
@@ -74,7 +74,6 @@ class Geometry:
     r_y: float
     k_span: int
     W: float
-    extent: tuple[float, float, float, float]  # model box of the tooth view (x0, y0, x1, y1)
 
 
 def _rack(alpha_deg: float) -> BasicRack:
@@ -193,9 +192,8 @@ def build(p: Mapping[str, ParamValue]) -> Build:
         )
     k_span = gear.span_teeth()
     W = gear.span(k_span)
-    box = _extent(gear)
-    geo = Geometry(gear, flank, psi_y, k_y.r, k_span, W, box)
-    return Build(results, c, notes, {"l": sheet_k_l(box)}, geo)
+    geo = Geometry(gear, flank, psi_y, k_y.r, k_span, W)
+    return Build(results, c, notes, {}, geo)
 
 
 def _thread_end(K: Vec, base: Circle, centre: Vec) -> Vec:
@@ -209,37 +207,3 @@ def _checked_gear(m: float, z: int, x: float, rack: BasicRack, d_a: float) -> Sp
     gear = SpurGear(m, z, x, rack, d_a)
     gear.check()
     return gear
-
-
-#: The field the tooth is drawn in on the sheet (mm: x0, y0, x1, y1), left of the tables.
-VIEW = (26.0, 26.0, 250.0, 286.0)
-
-
-def view_half_angle(gear: SpurGear) -> float:
-    """Half the angle the tooth view spans about the tooth's axis: the tooth, half a space either
-    side, and a little of the circles beyond."""
-    return min(1.3 * math.pi / gear.z, math.pi / 2.0)
-
-
-def _extent(gear: SpurGear) -> tuple[float, float, float, float]:
-    """The model box of the tooth view: the tooth with half a space either side, the circles
-    a little beyond, down to the lower of the base and root circles, up past the rack's top."""
-    half = view_half_angle(gear)
-    r_top = max(gear.r_a, gear.r + (gear.x + gear.rack.ha + gear.rack.c) * gear.m)
-    r_low = min(gear.r_b, gear.d_f / 2.0)
-    w = r_top * math.sin(half)
-    pad = 0.35 * gear.m
-    return (-w, r_low * math.cos(half) - pad, w, r_top + 1.5 * pad)
-
-
-def sheet_k_l(box: tuple[float, float, float, float]) -> float:
-    """The largest GOST 2.302 scale (enlargements included) at which the tooth view fits."""
-    w, h = box[2] - box[0], box[3] - box[1]
-    room_w, room_h = VIEW[2] - VIEW[0], VIEW[3] - VIEW[1]
-    return gost_scale_to_fit(w, h, room_w, room_h).k
-
-
-def draw(solution: Any) -> list[tuple[str, Any]]:
-    from .sheets_2013_4 import sheets
-
-    return sheets(solution)

@@ -17,43 +17,47 @@ import math
 from typing import TYPE_CHECKING
 
 from geomcad.geom import Line, Vec
-from geomcad.sheet import Drawing, Scale, Sheet, TitleBlock, Viewport, fmt_number, start
-from geomcad.sheet.scale import gost_scale_to_fit, nice_factor
-from geomcad.sheet.scheme import Body, draw_scheme
+from geomcad.sheet import Scale, Sheet, TitleBlock, Viewport, fmt_number, start
+from geomcad.sheet import views as V
+from geomcad.sheet.compose import (
+    Column,
+    Field,
+    Figure,
+    Layout,
+    Row,
+    View,
+    arrange,
+    compose,
+)
+from geomcad.sheet.lang import Words, current
+from geomcad.sheet.scheme import Body
 from geomcad.structure import Link, Mechanism, Pair
+
+from .layout_cache import per_language
 
 if TYPE_CHECKING:
     from geomcad.problem import Solution
 
     from .p2013_1 import Geometry
 
-#: Fields (sheet mm: x0, y0, x1, y1).
-BEFORE = (24.0, 24.0, 150.0, 176.0)
-AFTER = (156.0, 24.0, 282.0, 176.0)
-GROUPS = (288.0, 24.0, 414.0, 176.0)
-POSITION = (24.0, 196.0, 226.0, 410.0)
-PLAN_ZERO = (232.0, 196.0, 398.0, 296.0)
-PLAN_GIVEN = (232.0, 304.0, 398.0, 410.0)
-PANEL_X = 422.0
+#: Width (mm) of the right-hand panel's text.
 PANEL_W = 162.0
-
-#: Room (mm) for the longest plan vector.
-PLAN_ROOM = 60.0
+#: The title block's height (mm): the right-hand panel keeps it free.
+BLOCK_H = 52.0
 CIRCLE_STEPS = 48
-#: Height (mm) of a group's caption row.
-CAPTION = 7.0
+#: Paper length (mm) of the construction lines through a plan's points.
+PLAN_LINE = 14.0
+WORDS = Words(__package__, "sheets_2013_1")
+
+
+def _num(x: float, digits: int = 6) -> str:
+    return fmt_number(x, current(), digits)
 
 
 def _box(points: list[Vec], pad: float = 0.0) -> tuple[float, float, float, float]:
     xs = [q.x for q in points]
     ys = [q.y for q in points]
     return min(xs) - pad, min(ys) - pad, max(xs) + pad, max(ys) + pad
-
-
-def _fit(box: tuple[float, float, float, float], field: tuple[float, ...]) -> Scale:
-    w, h = box[2] - box[0], box[3] - box[1]
-    room_w, room_h = field[2] - field[0], field[3] - field[1]
-    return gost_scale_to_fit(w, h, room_w, room_h)
 
 
 def _lid_end(pts: dict[str, Vec]) -> Vec:
@@ -86,50 +90,132 @@ def _position_points(geo: Geometry) -> list[Vec]:
     return out
 
 
-def _plan_values(geo: Geometry) -> float:
-    pts = geo.points
-    return max(pts["m1"].norm, pts["m6"].norm, (pts["m6"] - pts["m1"]).norm, abs(geo.e))
+def _caption(view: V.Scheme, text: str) -> None:
+    """``text`` over the top left corner of the scheme's drawing, inside its margin."""
+    ext = view.extent()
+    assert ext is not None
+
+    def draw(v: Viewport) -> None:
+        x, y = v.p((ext[0], ext[3]))
+        v.d.text(text, (x, y - 4.0), 3.5)
+
+    view.extra = draw
 
 
-def scales(geo: Geometry) -> dict[str, float]:
-    """k_l of the schemes ("l"), of the dead-position drawing ("l_pos") and k_v of the plans."""
-    k_s = _fit(_box(_scheme_points(geo)), BEFORE)
-    k_p = _fit(_box(_position_points(geo)), POSITION)
-    k_v = nice_factor(_plan_values(geo), PLAN_ROOM, "v")
-    return {"l": k_s.k, "l_pos": k_p.k, "v": k_v.k}
+class _Rest(View):
+    """The rest of a column of tables and text (it keeps them together at the top, and its box
+    takes the title block's corner): draws nothing, and is always content with its box."""
+
+    def __init__(self) -> None:
+        super().__init__(margin=0.0)
+
+    def stretch(self) -> tuple[tuple[float, float], tuple[float, float]]:
+        return (1.0, BLOCK_H), (1.0, BLOCK_H)
+
+
+class _Views:
+    """The sheet's views and their tree (composed by :mod:`geomcad.sheet.compose`)."""
+
+    def __init__(self, sol: Solution) -> None:
+        geo: Geometry = sol.data
+        rep = geo.replaced.mechanism
+        self.before = V.Scheme(
+            geo.before,
+            _bodies(geo, roller=False),
+            pair_labels=PAIR_TEXT,
+            link_labels={k: v for k, v in _link_at(geo).items() if k != "8"},
+            also=_scheme_points(geo),
+            group="s",
+        )
+        self.after = V.Scheme(
+            rep,
+            _bodies(geo, roller=True),
+            highlight=[s.link for s in geo.replaced.substitutes],
+            pair_labels=PAIR_TEXT,
+            link_labels=_link_at(geo),
+            also=_scheme_points(geo),
+            group="s",
+        )
+        # each scheme's counts over its drawing (the row's title states the common scale)
+        _caption(
+            self.before, WORDS("before_title", n=geo.before.n, p5=geo.before.p5, p4=geo.before.p4)
+        )
+        _caption(self.after, WORDS("after_title", n=rep.n, p5=rep.p5, p4=rep.p4))  # fmt: skip
+        schemes = Row(
+            self.before, self.after, weights=(1.0, 1.0), title=WORDS("schemes_title"), group="s"
+        )
+        groups = Column(*_groups(geo), title=WORDS("groups_title"), group="g")
+        self.position = Figure(
+            _box(_position_points(geo)),
+            lambda v: _position(v, geo),
+            title=WORDS("position_title"),
+            title_height=5.0,
+            margin=8.0,
+            weight=2.0,
+        )
+        pts = geo.points
+        z = geo.zeros[geo.built]
+        th = _num(math.degrees(z.theta1) % 360.0, digits=5)
+        t1 = _num(math.degrees(geo.theta1) % 360.0, digits=5)
+        vt = _num(float(pts["m6"].dot(Vec(math.cos(geo.psi), math.sin(geo.psi)))), digits=5)
+        origin = Vec(0.0, 0.0)
+        self.plan_zero = Figure(
+            _box([origin, pts["m1*"]]),
+            lambda v: _plan_zero(v, geo),
+            title=WORDS("plan_zero", th=th),
+            show_scale=False,
+            quantity="v",
+            series="nice",
+            group="v",
+            margin=PLAN_LINE,
+            readable=pts["m1*"].norm,
+        )
+        self.plan_given = Figure(
+            _box([origin, pts["m1"], pts["m6"]]),
+            lambda v: _plan_given(v, geo),
+            title=WORDS("plan_given", th=t1, vt=vt),
+            show_scale=False,
+            quantity="v",
+            series="nice",
+            group="v",
+            margin=PLAN_LINE,
+        )
+        plans = Column(
+            self.plan_zero, self.plan_given, weights=(1.0, 1.0), title=WORDS("plans_title"),
+            group="v",
+        )  # fmt: skip
+        panel = Column(*_panel(sol, geo), _Rest(), gap=2.0)
+        self.tree = Row(
+            Column(Row(schemes, groups, weights=(2.0, 1.0)), Row(self.position, plans)),
+            panel,
+        )
+
+    def scales(self, lay: Layout) -> dict[str, float]:
+        """k_l of the schemes ("l"), of the dead-position drawing ("l_pos"), k_v of the plans."""
+        k_pos = lay[self.position].scale
+        assert k_pos is not None
+        return {"l": lay.scale("s").k, "l_pos": k_pos.k, "v": lay.scale("v").k}
+
+
+@per_language
+def scales(sol: Solution) -> dict[str, float]:
+    """The layout's scale factors (no drawing): see :meth:`_Views.scales`."""
+    views = _Views(sol)
+    return views.scales(arrange(views.tree, Field.of_format("A2")))
 
 
 def sheets(sol: Solution) -> list[tuple[str, Sheet]]:
     """The main sheet of 2013-1."""
-    geo: Geometry = sol.data
-    ks = Scale(sol.scales["l"], "l")
-    kp = Scale(sol.scales["l_pos"], "l")
-    kv = Scale(sol.scales["v"], "v")
+    got = scales(sol)  # this layout's (in the language being drawn), which compose() repeats
+    ks, kp = Scale(got["l"], "l"), Scale(got["l_pos"], "l")
     ratio = ks.ratio_text() + ("" if kp.k == ks.k else f"; {kp.ratio_text()}")
-    tb = TitleBlock(
-        title="Механизм крышки вулканизатора: структура и мёртвое положение толкателя",
-        designation="ТММ.2013-1.01",
-        scale=ratio,
-    )
+    tb = TitleBlock(title=WORDS("tb_title"), designation=WORDS("designation"), scale=ratio)
     d = start("A2", tb)
-    box = _box(_scheme_points(geo))
-    _schemes(d, geo, ks, box)
-    _groups(d, geo)
-    _position(d, geo, kp)
-    _plans(d, geo, kv)
-    _panel(d, sol, geo)
+    compose(d, _Views(sol).tree)
     return [("", d.finish())]
 
 
 # -- the schemes ------------------------------------------------------------------------------
-
-
-def _viewport(
-    d: Drawing, k: Scale, box: tuple[float, float, float, float], field: tuple[float, ...]
-) -> Viewport:
-    cx, cy = (box[0] + box[2]) / 2.0, (box[1] + box[3]) / 2.0
-    at = ((field[0] + field[2]) / 2.0, (field[1] + field[3]) / 2.0)
-    return d.viewport(k, (cx, cy), at)
 
 
 def _circle(c: Vec, r: float) -> Body:
@@ -176,87 +262,39 @@ def _link_at(geo: Geometry) -> dict[str, Vec]:
     }
 
 
-def _schemes(d: Drawing, geo: Geometry, k: Scale, box: tuple[float, float, float, float]) -> None:
-    before = _viewport(d, k, box, BEFORE)
-    d.text("Структурная схема до замены", (BEFORE[0], 12.0), 5.0)
-    d.text(
-        f"n = {geo.before.n}, p_5 = {geo.before.p5}, p_4 = {geo.before.p4};   {k.label()}",
-        (BEFORE[0], 24.0),
-        3.5,
-    )
-    draw_scheme(
-        before,
-        geo.before,
-        _bodies(geo, roller=False),
-        pair_labels=PAIR_TEXT,
-        link_labels={k: v for k, v in _link_at(geo).items() if k != "8"},
-    )
-    after = _viewport(d, k, box, AFTER)
-    rep = geo.replaced.mechanism
-    d.text("После замены высшей пары K", (AFTER[0], 12.0), 5.0)
-    d.text(
-        f"n = {rep.n}, p_5 = {rep.p5}, p_4 = {rep.p4};   заменяющее звено 8",
-        (AFTER[0], 24.0),
-        3.5,
-    )
-    draw_scheme(
-        after,
-        rep,
-        _bodies(geo, roller=True),
-        highlight=[s.link for s in geo.replaced.substitutes],
-        pair_labels=PAIR_TEXT,
-        link_labels=_link_at(geo),
-    )
-
-
-def _groups(d: Drawing, geo: Geometry) -> None:
+def _groups(geo: Geometry) -> list[V.Scheme]:
     """The seed's replaced mechanism (no roller: the block is link 6), split into the primary
-    mechanism and its Assur groups, each drawn on its own in a cell, all at one scale."""
+    mechanism and its Assur groups, each drawn on its own with its outer pairs, all at one
+    scale (group "g")."""
     mech = geo.seed_route
     dec = geo.decomposition
-    d.text("Группы Ассура", (GROUPS[0], 12.0), 5.0)
     parts: list[tuple[str, tuple[str, ...]]] = [
-        (f"I({dec.frame}, {p.link}): механизм I класса", (p.link,)) for p in dec.primary
+        (WORDS("primary", frame=dec.frame, link=p.link), (p.link,)) for p in dec.primary
     ]
     for g in dec.groups:
         kind = f", {g.kind}" if g.kind else ""
-        parts.append((f"{', '.join(g.links)}: {g.roman} кл., {g.order} пор.{kind}", g.links))
+        caption = WORDS("group", links=", ".join(g.links), cls=g.roman, order=g.order, kind=kind)
+        parts.append((caption, g.links))
     bodies = _bodies(geo, roller=False)
-    subs = [_part(mech, part) for _, part in parts]
-    boxes = [_part_box(sub, bodies, part) for sub, (_, part) in zip(subs, parts, strict=True)]
-    # one column, a row per part as tall as the part: the largest GOST scale at which the
-    # widest part fits the column and all the rows fit the field
-    room_w = GROUPS[2] - GROUPS[0] - 6.0
-    room_h = GROUPS[3] - GROUPS[1] - CAPTION * len(parts)
-    widest = max(b[2] - b[0] for b in boxes)
-    total = sum(b[3] - b[1] for b in boxes)
-    k = gost_scale_to_fit(widest, total, room_w, room_h)
-    d.text(f"{k.label()}   (M {k.ratio_text() or '—'})", (GROUPS[0], 19.0), 3.5)
-    spare = (room_h - total / k.k) / len(parts)
-    y0 = GROUPS[1]
-    for (caption, part), sub, box in zip(parts, subs, boxes, strict=True):
-        hh = (box[3] - box[1]) / k.k + CAPTION + spare
-        d.text(caption, (GROUPS[0] + 1.0, y0 + 4.0), 2.5)
-        field = (GROUPS[0] + 3.0, y0 + CAPTION, GROUPS[2] - 3.0, y0 + hh)
-        v = _viewport(d, k, box, field)
-        ghosts = [lk.id for lk in sub.links if lk.id not in part]
-        draw_scheme(
-            v,
-            sub,
-            {lk: bodies[lk] for lk in part if lk in bodies},
-            pair_labels={q.name: q.name for q in sub.pairs},
-            ghosts=ghosts,
-            label_height=2.5,
+    out = []
+    for caption, part in parts:
+        sub = _part(mech, part)
+        out.append(
+            V.Scheme(
+                sub,
+                {lk: bodies[lk] for lk in part if lk in bodies},
+                pair_labels={q.name: q.name for q in sub.pairs},
+                ghosts=[lk.id for lk in sub.links if lk.id not in part],
+                also=[x for lk in part for b in bodies.get(lk, []) for x in b.points],
+                label_height=2.5,
+                title=caption,
+                title_height=2.5,
+                group="g",
+                show_scale=False,
+                margin=6.0,
+            )
         )
-        y0 += hh
-
-
-def _part_box(
-    sub: Mechanism, bodies: dict[str, list[Body]], part: tuple[str, ...]
-) -> tuple[float, float, float, float]:
-    pts = [q.at for q in sub.pairs]
-    pts += [x for lk in part for b in bodies.get(lk, []) for x in b.points]
-    return _box(pts)
+    return out
 
 
 def _part(mech: Mechanism, part: tuple[str, ...]) -> Mechanism:
@@ -294,19 +332,15 @@ def _right_angle(v: Viewport, vertex: Vec, a: Vec, b: Vec, size_mm: float = 3.0)
     v.polyline([vertex + ua, vertex + ua + ub, vertex + ub], "construction")
 
 
-def _position(d: Drawing, geo: Geometry, k: Scale) -> None:
+def _position(v: Viewport, geo: Geometry) -> None:
+    """The position with ML ⊥ MO built: circle(O, |e|), the pusher's path, M, the slot as the
+    tangent there, OM and the right angle at M; the other zero position in two-dot lines."""
+    k = v.scale
     z = geo.zeros[geo.built]
     e = abs(geo.e)
     r = geo.points["R"].x
     up = Vec(math.cos(geo.psi), math.sin(geo.psi))
-    th = fmt_number(math.degrees(z.theta1) % 360.0, digits=5)
-    d.text(
-        "Положение, в котором V_T = 0: ML перпендикулярна MO", (POSITION[0], POSITION[1] - 2.0), 5.0
-    )
-    d.text(f"{k.label()}   (M {k.ratio_text() or '—'})", (POSITION[0], POSITION[1] + 5.0), 3.5)
-    v = _viewport(
-        d, k, _box(_position_points(geo)), (*POSITION[:1], POSITION[1] + 8, *POSITION[2:])
-    )
+    th = _num(math.degrees(z.theta1) % 360.0, digits=5)
     O_ = Vec(0.0, 0.0)
     v.circle(O_, e, "construction")
     path = Line(up.perp() * geo.h, up)
@@ -318,7 +352,7 @@ def _position(d: Drawing, geo: Geometry, k: Scale) -> None:
         v.seg(q.M - q.u1 * (0.9 * e), q.M + q.u1 * (0.9 * e), "extreme")
         v.dot(q.M, "result")
         v.label(q.M, "M'", prefer=(1.0, 0.0))
-        tq = fmt_number(math.degrees(q.theta1) % 360.0, digits=5)
+        tq = _num(math.degrees(q.theta1) % 360.0, digits=5)
         v.label(q.M + q.u1 * (0.9 * e), f"θ_1 = {tq}°", height=2.5, prefer=(1.0, -1.0))
     # the built position: lever 1 with its slot tangent to the circle at M
     n1 = z.u1.perp()
@@ -343,34 +377,23 @@ def _position(d: Drawing, geo: Geometry, k: Scale) -> None:
     v.label(z.M, "M", prefer=(1.0, 1.0), clear=r / k.k + 0.5)
     v.label(z.L, "L", prefer=(0.0, 1.0))
     v.label(z.M + up * (1.6 * e), "7", prefer=(1.0, 0.0))
+    v.label(z.M - z.u1 * r, "6", prefer=(-z.u1.x, -z.u1.y), clear=0.5)
     v.label(z.L - z.u1 * (0.3 * e), "1", prefer=(0.0, 1.0), clear=r / k.k + 0.5)
     v.label((O_ + z.M) * 0.5, "|e|", prefer=(-n1.x, -n1.y), height=2.5)
     v.label(z.L + z.u1 * (0.3 * e), f"θ_1 = {th}°", height=2.5, prefer=(1.0, -1.0))
     foot = path.foot(O_)
     if foot.norm > 0.0:
         mm = 1000.0
-        v.dim_linear(O_, foot, f"|h| = {fmt_number(abs(geo.h) * mm, digits=4)}", 8.0, 2.5)
+        v.dim_linear(O_, foot, f"|h| = {_num(abs(geo.h) * mm, digits=4)}", 8.0, 2.5)
 
 
-def _plan_view(d: Drawing, kv: Scale, field: tuple[float, ...], pts: list[Vec]) -> Viewport:
-    box = _box(pts)
-    cx, cy = (box[0] + box[2]) / 2.0, (box[1] + box[3]) / 2.0
-    at = ((field[0] + field[2]) / 2.0, (field[1] + 16.0 + field[3]) / 2.0)
-    return d.viewport(kv, (cx, cy), at)
-
-
-def _plans(d: Drawing, geo: Geometry, kv: Scale) -> None:
-    pts = geo.points
-    z = geo.zeros[geo.built]
+def _plan_zero(v: Viewport, geo: Geometry) -> None:
+    """The plan of the zero position: pm1 and m1m6 on one line, m6 = p (V_T = 0)."""
+    kv = v.scale
     up = Vec(math.cos(geo.psi), math.sin(geo.psi))
-    th = fmt_number(math.degrees(z.theta1) % 360.0, digits=5)
-    # the plan of the zero position: pm1 and m1m6 on one line, m6 = p
-    m1 = pts["m1*"]
-    d.text(f"План скоростей при θ_1 = {th}°", (PLAN_ZERO[0], PLAN_ZERO[1] - 2.0), 5.0)
-    d.text(f"ω_1 = 1 рад/с, {kv.label()}", (PLAN_ZERO[0], PLAN_ZERO[1] + 5.0), 3.5)
+    m1 = geo.points["m1*"]
     p = Vec(0.0, 0.0)
-    v = _plan_view(d, kv, PLAN_ZERO, [p, m1])
-    ext = kv.model(14.0)
+    ext = kv.model(PLAN_LINE)
     v.seg(p - up * ext, p + up * ext, "construction")
     v.arrow(p, m1, "vector")
     off = m1.perp().unit() * kv.model(1.2)
@@ -378,14 +401,16 @@ def _plans(d: Drawing, geo: Geometry, kv: Scale) -> None:
     v.label(p, "p, m_6", prefer=(-1.0, -1.0))
     v.label(m1, "m_1", prefer=(1.0, 1.0))
     v.label((p + m1) * 0.5, "V_{M1} = –V_{M6M1}", height=2.5, prefer=(-m1.y, m1.x))
-    d.text("V_T = pm_6 = 0", (PLAN_ZERO[0], PLAN_ZERO[1] + 11.0), 3.5)
-    # the plan at the given θ1
-    m1, m6 = pts["m1"], pts["m6"]
+
+
+def _plan_given(v: Viewport, geo: Geometry) -> None:
+    """The plan at the given θ1: pm1 ⊥ OM, m1m6 along the slot, pm6 along the pusher's path."""
+    kv = v.scale
+    pts = geo.points
+    up = Vec(math.cos(geo.psi), math.sin(geo.psi))
+    p, m1, m6 = Vec(0.0, 0.0), pts["m1"], pts["m6"]
     u1 = Vec(math.cos(geo.theta1), math.sin(geo.theta1))
-    t1 = fmt_number(math.degrees(geo.theta1) % 360.0, digits=5)
-    d.text(f"План скоростей при θ_1 = {t1}° (заданное)", (PLAN_GIVEN[0], PLAN_GIVEN[1] - 2.0), 5.0)
-    d.text(f"ω_1 = 1 рад/с, {kv.label()}", (PLAN_GIVEN[0], PLAN_GIVEN[1] + 5.0), 3.5)
-    v = _plan_view(d, kv, PLAN_GIVEN, [p, m1, m6])
+    ext = kv.model(PLAN_LINE)
     v.seg(m6 - u1 * ext, m6 + u1 * ext, "construction")
     v.seg(m6 - up * ext, m6 + up * ext, "construction")
     v.arrow(p, m1, "vector")
@@ -396,46 +421,50 @@ def _plans(d: Drawing, geo: Geometry, kv: Scale) -> None:
     v.label(p, "p", prefer=(-1.0, -1.0))
     v.label(m1, "m_1", prefer=(1.0, 1.0))
     v.label(m6, "m_6", prefer=(1.0, -1.0))
-    vt = fmt_number(float(pts["m6"].dot(up)), digits=5)
-    d.text(f"V_T/ω_1 = pm_6 = {vt} м", (PLAN_GIVEN[0], PLAN_GIVEN[1] + 11.0), 3.5)
 
 
 # -- the panel --------------------------------------------------------------------------------
 
 
-def _kind_ru(kind: str) -> str:
-    return {"R": "вращ.", "P": "поступ.", "slot": "ролик–паз", "cam": "кулачок", "gear": "зацепл."}[
-        kind
-    ]
+def _kind(kind: str) -> str:
+    return WORDS(f"kind_{kind}")
 
 
-def _panel(d: Drawing, sol: Solution, geo: Geometry) -> None:
-    x, y = PANEL_X, 8.0
+def _link_name(lk: Link) -> str:
+    """A link's name in the language being drawn (the model's own name for a link the table
+    does not know)."""
+    try:
+        return WORDS(f"link_{lk.id}")
+    except LookupError:
+        return lk.name
+
+
+def _panel(sol: Solution, geo: Geometry) -> list[View]:
+    """The right-hand panel: the links, the pairs, the W counts, the Assur groups, the pusher's
+    zero positions, each a table or a paragraph."""
     r = sol.results
-    y = d.text("Звенья", (x, y + 3.5), 3.5).at[1] + 1.0
-    names = "; ".join(f"{lk.id} – {lk.name}" for lk in geo.before.links)
-    y = d.paragraph(names + "; 8 – заменяющее звено (ползун).", x, y, PANEL_W, 2.5) + 2.0
-    d.text("Кинематические пары", (x, y + 3.5), 3.5)
-    rows = [["Пара", "Звенья", "Вид", "Класс"]]
+    out: list[View] = []
+
+    def text(markup: str) -> None:
+        out.append(V.Text(paragraph=markup, width=PANEL_W))
+
+    names = "; ".join(f"{lk.id} – {_link_name(lk)}" for lk in geo.before.links)
+    out.append(
+        V.Text(paragraph=f"{names}; {WORDS('link_8')}", width=PANEL_W, title=WORDS("links_title"))
+    )
+    rows = [[WORDS(k) for k in ("h_pair", "h_links", "h_kind", "h_class")]]
     for p in geo.before.pairs:
-        rows.append([p.name, f"{p.a}–{p.b}", _kind_ru(p.kind), f"p_{p.pair_class}"])
+        rows.append([p.name, f"{p.a}–{p.b}", _kind(p.kind), f"p_{p.pair_class}"])
     for s in geo.replaced.substitutes:
         for name in (s.pair_a, s.pair_b):
             q = geo.replaced.mechanism.pair(name)
-            rows.append([f"{name}*", f"{q.a}–{q.b}", _kind_ru(q.kind), f"p_{q.pair_class}"])
-    _, h = d.table(x, y + 6.0, (18.0, 22.0, 28.0, 18.0), rows, row_h=5.0)
-    d.paragraph(
-        "* пары заменяющего звена 8 (вместо высшей пары K: центр кривизны ролика – M, паза – "
-        "в бесконечности).",
-        x + 90.0,
-        y + 6.0,
-        PANEL_W - 90.0,
-        2.5,
+            rows.append([f"{name}*", f"{q.a}–{q.b}", _kind(q.kind), f"p_{q.pair_class}"])
+    out.append(
+        V.Table(rows, widths=(18.0, 22.0, 30.0, 18.0), row_h=5.0, title=WORDS("pairs_title"))
     )
-    y += 6.0 + h + 5.0
-    d.text("Число степеней свободы", (x, y + 3.5), 3.5)
+    text(WORDS("pairs_note"))
     n, p5, p4, _local = geo.counts
-    rows = [["Величина", "Счёт", "W"]]
+    rows = [[WORDS("h_quantity"), WORDS("h_count"), "W"]]
     if geo.counts_mode:
         formal = f"3·{n} – 2·{p5} – {p4}"
         after = f"3·{n + p4} – 2·{p5 + 2 * p4}"
@@ -444,91 +473,54 @@ def _panel(d: Drawing, sol: Solution, geo: Geometry) -> None:
         formal = f"3·{mb.n} – 2·{mb.p5} – {mb.p4}"
         after = f"3·{ma.n} – 2·{ma.p5} – {ma.p4}"
     for name, label, how in (
-        ("W_formal", "W до замены", formal),
-        ("W_local", "W_{мест} (ролик 6)", "вращение ролика"),
-        ("W_true", "W_{ист}", "W – W_{мест}"),
-        ("W_after_replacement", "W после замены", after),
+        ("W_formal", WORDS("w_formal"), formal),
+        ("W_local", WORDS("w_local"), WORDS("w_local_how")),
+        ("W_true", WORDS("w_true"), WORDS("w_true_how")),
+        ("W_after_replacement", WORDS("w_after"), after),
     ):
         rows.append([label, how, str(r[name])])
-    _, h = d.table(x, y + 6.0, (38.0, 72.0, 40.0), rows, row_h=5.0)
-    y += 6.0 + h + 2.0
-    y = (
-        d.paragraph(
-            "Замена высшей пары добавляет звено и две низшие пары (3 – 2·2 + 1 = 0), W не "
-            "меняется. W = 2 учитывает местную подвижность – вращение ролика 6 вокруг M, которое "
-            "ничего не передаёт; истинное W = 1.",
-            x,
-            y,
-            PANEL_W,
-            2.5,
-        )
-        + 3.0
-    )
-    d.text("Группы Ассура (после замены, без вращения ролика)", (x, y + 3.5), 3.5)
+    out.append(V.Table(rows, widths=(56.0, 62.0, 20.0), row_h=5.0, title=WORDS("mobility_title")))
+    text(WORDS("mobility_note"))
     dec = geo.decomposition
-    rows = [["Группа", "Звенья", "Пары", "Класс", "Порядок", "Вид"]]
+    heads = ("h_group", "h_links", "h_pairs", "h_class", "h_order", "h_kind")
+    rows = [[WORDS(k) for k in heads]]
     for pm in dec.primary:
-        rows.append(["механизм I кл.", f"0, {pm.link}", pm.pair, "I", "–", "–"])
+        rows.append([WORDS("primary_row"), f"0, {pm.link}", pm.pair, "I", "–", "–"])
     for i, g in enumerate(dec.groups):
         kind = f"{g.kind} ({g.kind_no})" if g.kind else "–"
         rows.append(
-            [
-                f"{i + 1}",
-                ", ".join(g.links),
-                ", ".join(g.pairs),
-                g.roman,
-                str(g.order),
-                kind,
-            ]
+            [f"{i + 1}", ", ".join(g.links), ", ".join(g.pairs), g.roman, str(g.order), kind]
         )
-    _, h = d.table(x, y + 6.0, (28.0, 18.0, 34.0, 16.0, 20.0, 26.0), rows, row_h=5.0)
-    y += 6.0 + h + 2.0
-    y = (
-        d.paragraph(
-            f"Формула строения: {dec.formula().replace('→', '+')}; механизм "
-            f"{['', 'I', 'II', 'III', 'IV'][min(dec.mechanism_class, 4)]} класса.",
-            x,
-            y,
-            PANEL_W,
-            2.5,
+    out.append(
+        V.Table(
+            rows, widths=(34.0, 18.0, 32.0, 16.0, 20.0, 26.0), row_h=5.0,
+            title=WORDS("groups_table"),
         )
-        + 3.0
+    )  # fmt: skip
+    text(
+        WORDS(
+            "formula",
+            formula=dec.formula().replace("→", "+"),
+            cls=["", "I", "II", "III", "IV"][min(dec.mechanism_class, 4)],
+        )
     )
-    d.text("Скорость толкателя", (x, y + 3.5), 3.5)
-    zs = ", ".join(f"{fmt_number(t, digits=6)}°" for t in r["zero_theta1_deg"])
+    zs = ", ".join(f"{_num(t, digits=6)}°" for t in r["zero_theta1_deg"])
     e, h_ = geo.e, geo.h
     psi = math.degrees(geo.psi)
     acos = math.degrees(math.acos(max(-1.0, min(1.0, h_ / e))))
-    sweep = ", ".join(f"{fmt_number(t, digits=6)}°" for t in geo.sweep_zeros_deg) or "нет"
-    t1 = fmt_number(math.degrees(geo.theta1) % 360.0, digits=5)
-    vt = fmt_number(float(r["VT_over_omega1"]), digits=6)
-    check = f"{fmt_number(psi, digits=6)}° ± {fmt_number(acos, digits=6)}°"
+    sweep = ", ".join(f"{_num(t, digits=6)}°" for t in geo.sweep_zeros_deg) or WORDS("none")
+    t1 = _num(math.degrees(geo.theta1) % 360.0, digits=5)
+    vt = _num(float(r["VT_over_omega1"]), digits=6)
+    check = f"{_num(psi, digits=6)}° ± {_num(acos, digits=6)}°"
     rows = [
-        ["Величина", "Значение"],
-        ["θ_1 при V_T = 0 (построение)", zs],
-        ["ψ ± arccos(h/e) (проверка)", check],
-        ["смена знака V_T/ω_1 за оборот", sweep],
-        [f"V_T/ω_1 при θ_1 = {t1}°", f"{vt} м"],
+        [WORDS("h_quantity"), WORDS("h_value")],
+        [WORDS("zero_built"), zs],
+        [WORDS("zero_check"), check],
+        [WORDS("zero_sweep"), sweep],
+        [WORDS("vt_at", th=t1), f"{vt} {WORDS('metre')}"],
     ]
-    _, h = d.table(x, y + 6.0, (80.0, 70.0), rows, row_h=5.0)
-    y += 6.0 + h + 2.0
-    y = d.paragraph(
-        "Построение: паз всегда касается окружности радиуса |e| с центром O (его расстояние до O "
-        "равно e). Скорость толкателя равна нулю, когда скорость точки M рычага 1 параллельна "
-        "пазу, т. е. OM перпендикулярна пазу; тогда M – точка касания, и она лежит на траектории "
-        "толкателя: M – общая точка траектории и окружности. Кроме того, скорость толкателя "
-        "равна нулю в крайних положениях четырёхзвенника 2–3–1 (ω1 = 0; его размеры не заданы).",
-        x,
-        y,
-        PANEL_W,
-        2.5,
-    )
+    out.append(V.Table(rows, widths=(80.0, 70.0), row_h=5.0, title=WORDS("pusher_title")))
+    text(WORDS("construction_note"))
     if geo.counts_mode:
-        d.paragraph(
-            "Число степеней свободы посчитано по заданным n, p_5, p_4 и числу местных "
-            "подвижностей; схемы показывают модель механизма.",
-            x,
-            y + 2.0,
-            PANEL_W,
-            2.5,
-        )
+        text(WORDS("counts_note"))
+    return out

@@ -1,11 +1,15 @@
 """2013-2's drawing sheet: the cam profile by inversion, the S(φ) graph and the velocity plan.
 
-A3 landscape. Left: the profile at k_l (the seed's 2:1 when it fits; else the largest GOST scale
+A2 landscape. Left: the profile at k_l (the seed's 2:1 when it fits; else the largest GOST scale
 that does) with the base circle, the follower turned back to each division point (its axis and its
-face, or its tip, or its roller), the profile, and the radius vectors r_i dimensioned; below it
-the follower's law S(φ) with the ordinates of the division points. Right: the mechanism at the
-middle division point with the velocity plan Bb₁b₂ and the similar triangle OBB′ (OB′ = BC = S′),
-the given data, the results beside the seed's, and the notes.
+face, or its tip, or its roller), the profile, and the radius vectors r_i dimensioned; the rest of
+the program past the span (the seed's second half of the rise) in thin lines, so that the cam's
+shape is seen whole; a closed program is drawn as its full turn. Below it the follower's law S(φ)
+with the ordinates of the division points. Right: the mechanism at the plan's division point with
+the velocity plan Bb₁b₂ and the similar triangle OBB′ (OB′ = BC = S′), the given data, the
+results and the order of construction.
+
+Scale choice lives here (:func:`scales`): the problem's build returns only its model.
 """
 
 from __future__ import annotations
@@ -18,82 +22,143 @@ import numpy as np
 from geomcad import tol
 from geomcad.geom import Arc, Circle, Vec
 from geomcad.kinematics.cams import CamProfile, evert
-from geomcad.kinematics.motion_laws import LAW_TITLES_RU
-from geomcad.sheet import (
-    Drawing,
-    Scale,
-    Sheet,
-    TitleBlock,
-    Viewport,
-    fmt_number,
-    gost_scale_to_fit,
-    nice_factor,
-    start,
+from geomcad.sheet import Scale, Sheet, TitleBlock, Viewport, fmt_number, start
+from geomcad.sheet import views as V
+from geomcad.sheet.compose import (
+    Column,
+    Field,
+    Figure,
+    Layout,
+    Node,
+    Row,
+    Spacer,
+    View,
+    arrange,
+    compose,
+    text_width,
 )
-from geomcad.sheet.graph import Axis, Graph
+from geomcad.sheet.drawing import ARROW_LEN
+from geomcad.sheet.graph import Graph
+from geomcad.sheet.lang import Words, current
+
+from .layout_cache import per_language
 
 if TYPE_CHECKING:
     from geomcad.problem import Solution
 
-from .p2013_2 import VIEW
-
+WORDS = Words(__package__, "sheets_2013_2")
 MM = 1000.0
-#: The mechanism scheme with the velocity plan (sheet mm: x0, y0, x1, y1).
-SCHEME = (258.0, 19.0, 410.0, 122.0)
-#: The laws' short names for the data table.
-LAW_SHORT_RU = {
-    "linear": "S = aφ",
-    "constant_acceleration": "равноуск.",
-    "harmonic": "косинус.",
-    "cycloidal": "синус.",
-    "poly345": "3-4-5",
-}
+#: Paper margin (mm) the face lines and labels take beyond the profile.
+VIEW_PAD = 6.0
 #: Division points closer than this on the paper (mm) are not all labelled.
 LABEL_APART = 5.0
-#: The follower's stem on the scheme is at least this long on the paper (mm).
-STEM_MM = 10.0
-#: The lowest baseline the right-hand panel may use (the title block starts at y = 237).
-BOTTOM = 234.0
-#: The width (mm) kept for the velocity plan at the scheme's right.
-PLAN_ROOM = 46.0
-#: The S(φ) graph: the data origin's x and the bottom of the axis; its room (mm).
-GRAPH = (34.0, 278.0, 180.0, 48.0)
-PANEL_X = 258.0
-PANEL_W = 152.0
 #: Rows a results table shows at most (the first, the last and evenly spaced ones between).
 MAX_ROWS = 7
 #: The face lines run this far (paper mm) past the contact point and the follower's axis.
 FACE_OVER = 6.0
+#: A plan vector shorter than this (mm) is drawn as a point with its label (twice the head).
+SHORTEST = 2.0 * ARROW_LEN
+#: Width (mm) of the panel's text, and the title block's height (kept free under the panel).
+PANEL_W = 250.0
+BLOCK_H = 52.0
+
+
+def _n(x: float, digits: int = 4) -> str:
+    return fmt_number(x, current(), digits)
+
+
+# -- views and scales ------------------------------------------------------------------------------
+
+
+def extent(sol: Solution) -> tuple[float, float, float, float]:
+    """The model box the profile view draws: the base circle, the profile (and the rest of the
+    program past the span), the division points."""
+    geo = sol.data
+    f = geo.follower
+    parts = [geo.profile.contact, geo.divisions.pitch, geo.divisions.contact, geo.profile.pitch]
+    if geo.rest is not None:
+        parts += [geo.rest.contact, geo.rest.pitch]
+    pts = np.vstack(parts)
+    ext = f.r_roller if f.kind == "roller" else 0.0
+    xs = [float(pts[:, 0].min()) - ext, float(pts[:, 0].max()) + ext, -f.r0, f.r0]
+    ys = [float(pts[:, 1].min()) - ext, float(pts[:, 1].max()) + ext, -f.r0, f.r0]
+    return min(xs), min(ys), max(xs), max(ys)
+
+
+class _Views:
+    """The sheet's views and their tree (composed by :mod:`geomcad.sheet.compose`)."""
+
+    def __init__(self, sol: Solution) -> None:
+        geo = sol.data
+        f = geo.follower
+        self.profile = Figure(
+            extent(sol), lambda v: _profile(v, sol), title=WORDS("profile_title"),
+            title_height=5.0, margin=VIEW_PAD, weight=3.0,
+        )  # fmt: skip
+        left: list[View | Node] = [self.profile]
+        if geo.rest is not None:
+            span, end = math.degrees(float(geo.span)), math.degrees(float(geo.rest.phi[-1]))
+            left.append(V.Text([WORDS("rest_note", span=_n(span), end=_n(end))], height=2.5))
+        law = WORDS(f"law_{sol.params['law']}")
+        left.append(Row(*_diagrams(sol), weights=(1.0, 1.0), title=WORDS("graph_title", law=law)))
+        plan = geo.plan
+        phi = math.degrees(plan.phi)
+        self.scheme = Figure(
+            _scheme_extent(sol), lambda v: _scheme(v, sol),
+            title=WORDS("scheme_title", i=geo.plan_index, phi=_n(phi)), margin=6.0,
+        )  # fmt: skip
+        vectors = [plan.V_B1, plan.V_B2, plan.V_B2 - plan.V_B1]
+        shortest = min((q.norm for q in vectors if q.norm > 0.0), default=0.0)
+        self.plan = Figure(
+            _plan_extent(sol), lambda v: _plan(v, sol), title=WORDS("plan_title"),
+            quantity="v", series="nice", margin=8.0, readable=shortest,
+        )  # fmt: skip
+        eq = "OB' = BC = S'" if f.kind == "flat" else "OB' = S'"
+        right: list[View | Node] = [
+            Row(self.scheme, self.plan),
+            V.Text([WORDS("scheme_note", eq=eq), WORDS("plan_omega")], height=2.5),
+            *_tables(sol),
+            V.Text(_notes(sol), width=PANEL_W, height=3.0),
+            V.Text(
+                [f"{i + 1}. {t}" for i, t in enumerate(_order(sol))], height=3.0,
+                title=WORDS("order_title"), title_height=5.0,
+            ),
+            Spacer((10.0, BLOCK_H)),
+        ]  # fmt: skip
+        self.tree = Row(Column(*left), Column(*right), weights=(1.0, 1.0))
+
+    def scales(self, lay: Layout) -> dict[str, float]:
+        k_l, k_v = lay[self.profile].scale, lay[self.plan].scale
+        assert k_l is not None and k_v is not None
+        return {"l": k_l.k, "v": k_v.k}
+
+
+@per_language
+def scales(sol: Solution) -> dict[str, float]:
+    """k_l of the profile and k_v of the velocity plan, as the layout chooses them (no drawing):
+    each the largest of its series the view's box allows."""
+    views = _Views(sol)
+    return views.scales(arrange(views.tree, Field.of_format("A2")))
 
 
 def sheets(sol: Solution) -> list[tuple[str, Sheet]]:
     """The main sheet of 2013-2."""
-    k = Scale(sol.scales["l"], "l")
-    tb = TitleBlock(
-        title="Профиль кулачка по закону движения толкателя",
-        designation="ТММ.2013-2.01",
-        scale=k.ratio_text(),
-    )
-    d = start("A3", tb)
-    d.text("Профиль кулачка (метод обращения движения)", (VIEW[0], 13.0), 5.0)
-    d.text(f"{k.label()}   (M {k.ratio_text() or '—'})", (VIEW[0], 20.0), 3.5)
-    _profile_view(d, sol, k)
-    _graph(d, sol)
-    _scheme(d, sol)
-    _panel(d, sol, k)
+    k = Scale(scales(sol)["l"], "l")  # this layout's (in the language being drawn)
+    tb = TitleBlock(title=WORDS("tb_title"), designation=WORDS("designation"), scale=k.ratio_text())
+    d = start("A2", tb)
+    compose(d, _Views(sol).tree)
     return [("", d.finish())]
 
 
 # -- the profile by inversion ----------------------------------------------------------------------
 
 
-def _profile_view(d: Drawing, sol: Solution, k: Scale) -> None:
+def _profile(v: Viewport, sol: Solution) -> None:
+    """The profile by inversion (see the module's docstring)."""
     geo = sol.data
     f = geo.follower
     prof, div = geo.profile, geo.divisions
-    x0, y0, x1, y1 = geo.extent
-    at = ((VIEW[0] + VIEW[2]) / 2.0, (VIEW[1] + 6.0 + VIEW[3]) / 2.0)
-    v = d.viewport(k, ((x0 + x1) / 2.0, (y0 + y1) / 2.0), at)
+    k = v.scale
     o = Vec(0.0, 0.0)
     # the theoretical profile's base circle r0 (for a roller its prime circle, dash-dot, and the
     # working profile's base circle r0 − r_roller)
@@ -134,22 +199,40 @@ def _profile_view(d: Drawing, sol: Solution, k: Scale) -> None:
     if f.kind == "roller":
         v.polyline(list(prof.pitch), "centre", closed=geo.closed)
     v.polyline(list(prof.contact), "link", closed=geo.closed)
+    if geo.rest is not None:
+        _rest(v, sol, geo.rest, over)
     v.label(o, "O", prefer=(-1.0, -1.0), clear=1.0)
     # the inversion: the follower turns about O against the cam's rotation
-    _turn_arrow(v, 0.55 * f.r0, 125.0, 165.0, -f.sigma, "–ω")
+    _turn_arrow(v, 0.55 * f.r0, 125.0, 165.0, -f.sigma, WORDS("minus_omega"))
     # the radius vectors, dimensioned as radii: the line from o, its arrow at B_i, the value
     for i in sorted(shown):
         B = Vec(*div.contact[i])
-        text = f"r_{{{i}}} = {fmt_number(float(div.radius[i]) * MM, digits=4)}"
+        text = f"r_{{{i}}} = {_n(float(div.radius[i]) * MM)}"
         spots = tuple(v.p(B * t) for t in (0.6, 0.8, 0.5, 0.9, 0.4))
-        d.label(v.p(B * 0.7), text, 2.5, others=spots)
+        v.d.label(v.p(B * 0.7), text, 2.5, others=spots)
     # the angle of one interval, between the last two axes
     if n >= 2:
         a0 = Vec(0.0, 1.0).rotated(-f.sigma * float(div.phi[-2]))
         a1 = Vec(0.0, 1.0).rotated(-f.sigma * float(div.phi[-1]))
         dphi = math.degrees(float(div.phi[-1] - div.phi[-2]))
-        v.dim_angle(o, a0, a1, f"{fmt_number(dphi, digits=4)}°", r_mm=k.mm(f.r0) * 0.55,
-                    height=2.5)  # fmt: skip
+        v.dim_angle(o, a0, a1, f"{_n(dphi)}°", r_mm=k.mm(f.r0) * 0.55, height=2.5)
+
+
+def _rest(v: Viewport, sol: Solution, rest: CamProfile, over: float) -> None:
+    """The profile past the span to the program's end in thin lines, with the follower's axis at
+    the end (thin) and a note of where the program ends (a note under the view says what the
+    thin line is)."""
+    f = sol.data.follower
+    if f.kind == "roller":
+        v.polyline(list(rest.pitch), "centre")
+    v.polyline(list(rest.contact), "thin")
+    end = float(rest.phi[-1])
+    up = Vec(0.0, 1.0).rotated(-f.sigma * end)
+    foot = Vec(1.0, 0.0).rotated(-f.sigma * end) * (f.e if f.kind != "flat" else 0.0)
+    C = Vec(*rest.pitch[-1])
+    v.seg(foot, C + up * over, "construction")
+    v.label(C + up * over, WORDS("rest_end", phi=_n(math.degrees(end))), 2.5,
+            prefer=(up.x, up.y), clear=0.5)  # fmt: skip
 
 
 def _labelled(v: Viewport, div: CamProfile, n: int) -> set[int]:
@@ -174,65 +257,105 @@ def _label_step(n: int) -> int:
 # -- the law S(φ) ----------------------------------------------------------------------------------
 
 
-def _graph(d: Drawing, sol: Solution) -> None:
+def _diagrams(sol: Solution) -> list[V.Diagram]:
+    """The follower's law S(φ) and its analogue of velocity S′(φ) = dS/dφ (the length BC = OB′
+    of the scheme), side by side, with the ordinates of the division points."""
     geo = sol.data
     prog = geo.program
     end = 2.0 * math.pi if geo.closed else prog.total
-    x_at, y_at, room_w, room_h = GRAPH
-    gx = Axis.fit("φ", "рад", 0.0, end, room_w)
-    gy = Axis.fit("S", "м", 0.0, prog.H, room_h)
-    g = Graph(d, gx, gy, (x_at, y_at))
     phi = np.linspace(0.0, end, 721)
-    g.axes(tick_labels=True)
-    g.curve(phi.tolist(), prog.motion(phi).S.tolist(), "link")
+    motion = prog.motion(phi)
     div = geo.divisions
     n = len(div.phi)
     step = _label_step(n)
-    for i in range(n):
-        g.ordinate(float(div.phi[i]), float(div.S[i]), str(i) if i % step == 0 else "")
-    top = g.box[1]
-    d.text(
-        f"Закон движения толкателя S(φ): {LAW_TITLES_RU[str(sol.params['law'])]}",
-        (x_at - 6.0, top - 12.0),
-        3.5,
-    )
-    g.factors((x_at + room_w * 0.45, top - 5.0))
+    out = []
+    for sym, ys, at_div in (("S", motion.S, div.S), ("S'", motion.S1, div.S1)):
+
+        def ordinates(g: Graph, at_div: np.ndarray = at_div) -> None:
+            for i in range(n):
+                g.ordinate(float(div.phi[i]), float(at_div[i]), str(i) if i % step == 0 else "")
+
+        out.append(
+            V.Diagram(
+                V.AxisSpec("φ", WORDS("unit_rad"), lo=0.0, hi=end),
+                V.AxisSpec(sym, WORDS("unit_m")),
+                [V.Curve(phi, ys, "link")],
+                extra=ordinates,
+                least=(90.0, 45.0),
+                prefer=(160.0, 70.0),
+            )
+        )
+    return out
 
 
 # -- the scheme and the velocity plan --------------------------------------------------------------
 
 
-def _scheme(d: Drawing, sol: Solution) -> None:
-    """The mechanism at the middle division point, in the fixed frame: the cam, the follower, the
-    triangle OBB′ (and C); beside it the velocity plan pb₁b₂ at its own factor."""
+def _cam_now(sol: Solution) -> tuple[np.ndarray, np.ndarray]:
+    """The cam's built profile and the rest of the program, turned to the plan's φ."""
+    geo = sol.data
+    f = geo.follower
+    phi = geo.plan.phi
+    cam = evert(geo.profile.contact, np.full(len(geo.profile.phi), phi), f.sigma)
+    rest = (
+        evert(geo.rest.contact, np.full(len(geo.rest.phi), phi), f.sigma)
+        if geo.rest is not None
+        else np.zeros((0, 2))
+    )
+    return cam, rest
+
+
+def _follower_size(sol: Solution) -> tuple[float, float, float]:
+    """The face's half width, the stem's base (the face, the knife's tip or the roller's top)
+    and the stem's length, in model units."""
+    geo = sol.data
+    f = geo.follower
+    width = float(np.max(np.abs(geo.profile.S1))) + 0.2 * f.r0
+    base = float(geo.plan.B.y) + (f.r_roller if f.kind == "roller" else 0.0)
+    return width, base, 0.35 * f.r0
+
+
+def _scheme_extent(sol: Solution) -> tuple[float, float, float, float]:
+    f = sol.data.follower
+    cam, rest = _cam_now(sol)
+    every = np.vstack([cam, rest]) if len(rest) else cam
+    width, base, stem = _follower_size(sol)
+    xs = [*every[:, 0], -f.r0, f.r0, -width, width]
+    ys = [*every[:, 1], -f.r0, base + stem]
+    return min(xs), min(ys), max(xs), max(ys)
+
+
+def _plan_extent(sol: Solution) -> tuple[float, float, float, float]:
+    plan = sol.data.plan
+    pts = [Vec(0.0, 0.0), plan.V_B1, plan.V_B2]
+    xs, ys = [q.x for q in pts], [q.y for q in pts]
+    return min(xs), min(ys), max(xs), max(ys)
+
+
+def _scheme(v: Viewport, sol: Solution) -> None:
+    """The mechanism at the plan's division point, in the fixed frame: the cam (the built profile
+    thick, the rest of the program thin), the follower, the triangle OBB′ (and C); links numbered
+    (1 the cam, 2 the follower, 3 the roller); beside it the velocity plan pb₁b₂ at its own
+    factor."""
     geo = sol.data
     f = geo.follower
     plan = geo.plan
-    phi = plan.phi
-    cam = evert(geo.profile.contact, np.full(len(geo.profile.phi), phi), f.sigma)
-    width = float(np.max(np.abs(geo.profile.S1))) + 0.2 * f.r0
+    kl = v.scale
+    cam, rest = _cam_now(sol)
+    width, base, stem = _follower_size(sol)
     h = float(plan.B.y)
-    x0, y0, x1, y1 = SCHEME
-    room_w, room_h = x1 - x0 - PLAN_ROOM - 8.0, y1 - y0
-    stem = 0.25 * f.r0
-    for _ in range(2):  # the stem is at least STEM_MM long on the paper
-        xs = [*cam[:, 0], -f.r0, f.r0, -width, width]
-        ys = [*cam[:, 1], -f.r0, h + stem]
-        w_m, h_m = max(xs) - min(xs), max(ys) - min(ys)
-        kl = gost_scale_to_fit(w_m, h_m, room_w, room_h)
-        stem = max(0.25 * f.r0, kl.model(STEM_MM))
-    left = x0 + 2.0 + (room_w - kl.mm(w_m)) / 2.0
-    v = d.viewport(kl, (min(xs), (max(ys) + min(ys)) / 2.0), (left, (y0 + y1) / 2.0))
     o = Vec(0.0, 0.0)
-    # the cam: its built profile and the base circle, turned to φ
+    # the cam: its built profile and the base circle, turned to φ; the rest of the program thin
     v.circle(o, f.base_radius, "construction")
     v.polyline(list(cam), "link", closed=geo.closed)
+    if len(rest):
+        v.polyline(list(rest), "thin")
     Bp, C, B = plan.B_prime, plan.C, plan.B
     away = -1.0 if Bp.x >= 0.0 else 1.0
     v.pivot(o, down=(away, -1.0))
     _omega_arrow(v, max(f.r0 * 0.35, kl.model(13.0)), f.sigma, away)
-    # the follower: flat face (or knife, roller), stem, guides
-    top = Vec(f.e, h + stem)
+    # the follower: flat face (or knife, roller), stem, its guide on the frame (hatched both sides)
+    top = Vec(f.e, base + stem)
     if f.kind == "flat":
         v.seg(Vec(-width, h), Vec(width, h), "link")
         v.seg(Vec(f.e, h), top, "link")
@@ -242,9 +365,14 @@ def _scheme(d: Drawing, sol: Solution) -> None:
         v.joint(B)
     else:
         v.seg(B, top, "link")
-    g_lo, g_hi = Vec(f.e, h + stem * 0.45), Vec(f.e, h + stem * 0.95)
+    g_lo, g_hi = Vec(f.e, base + stem * 0.45), Vec(f.e, base + stem * 0.95)
     v.guide(g_lo, g_hi, (1.0, 0.0))
     v.guide(g_lo, g_hi, (-1.0, 0.0))
+    # link numbers: the cam 1 inside its base circle, the follower 2 by its stem, the roller 3
+    v.label(Vec(0.0, -0.6 * f.base_radius), "1", 3.5, clear=0.5)
+    v.label(Vec(f.e, base + stem * 0.22), "2", 3.5, prefer=(-away, 0.0), clear=1.0)
+    if f.kind == "roller":
+        v.label(B + Vec(f.r_roller, 0.0) * (-away), "3", 3.5, prefer=(-away, 0.0), clear=1.0)
     # the triangle OBB′ similar to the plan, and C (BC = OB′ = S′)
     v.seg(o, B, "construction")
     v.seg(B, Bp, "construction")
@@ -261,49 +389,33 @@ def _scheme(d: Drawing, sol: Solution) -> None:
         v.label(C, "C", prefer=(away, -1.0))
     if abs(plan.S1) > 0.0:
         v.dim_linear(o, Bp, "S'", offset=-3.0 if Bp.x > 0 else 3.0, height=2.5)
-    # the velocity plan: pb1 = V_B1 ⊥ OB, pb2 = V_B2 along the motion, b1b2 = V_B2B1
-    pts = [Vec(0.0, 0.0), plan.V_B1, plan.V_B2]
-    pw = max(q.x for q in pts) - min(q.x for q in pts)
-    ph = max(q.y for q in pts) - min(q.y for q in pts)
-    p_room_w, p_room_h = PLAN_ROOM - 6.0, 0.45 * (y1 - y0)
-    kv = nice_factor(max(pw * p_room_h / p_room_w, ph, plan.V_B1.norm * 0.1), p_room_h, "v")
-    px = x1 - 4.0 - kv.mm(max(q.x for q in pts))
-    py = y0 + 10.0 + kv.mm(max(q.y for q in pts))
-    pv = d.viewport(kv, (0.0, 0.0), (px, py))
+
+
+def _plan(pv: Viewport, sol: Solution) -> None:
+    """The velocity plan: pb1 = V_B1 ⊥ OB, pb2 = V_B2 along the motion, b1b2 = V_B2B1, each at
+    μ_V exactly; a vector under two arrowheads is drawn as a point with its name."""
+    plan = sol.data.plan
+    kv = pv.scale
     pole = Vec(0.0, 0.0)
     b1, b2 = plan.V_B1, plan.V_B2
-    pv.arrow(pole, b1, "vector")
-    if b2.norm > 0.0:
-        pv.arrow(pole, b2, "vector")
-    if (b2 - b1).norm > 0.0:
-        pv.arrow(b1, b2, "vector")
+    for a, b, name in ((pole, b1, "V_{B1}"), (pole, b2, "V_{B2}"), (b1, b2, "V_{B2B1}")):
+        length = kv.mm((b - a).norm)
+        if length >= SHORTEST:
+            pv.arrow(a, b, "vector")
+        elif length > 0.0:
+            pv.dot(b, "point")
+            pv.label(b, WORDS("plan_short", name=name, value=_n(length, 3)), 2.5)
     pv.dot(pole, "point")
     pv.label(pole, "p", height=3.5, prefer=(1.0, -1.0))
     pv.label(b1, "b_1", height=3.5, prefer=(-1.0, 0.0))
     pv.label(b2, "b_2", height=3.5, prefer=(1.0, 1.0))
-    low = max(pv.p(q)[1] for q in pts) + 9.0
-    d.text("План скоростей", (x1 - PLAN_ROOM + 2.0, low), 3.5)
-    d.text(f"{kv.label()}", (x1 - PLAN_ROOM + 2.0, low + 4.5), 2.5)
-    d.text("(ω = 1 рад/с)", (x1 - PLAN_ROOM + 2.0, low + 8.5), 2.5)
-    k_i = geo.plan_index
-    d.text(
-        f"Механизм при φ_{{{k_i}}} = {fmt_number(math.degrees(phi), digits=4)}° и план скоростей",
-        (x0, y0 - 7.0),
-        3.5,
-    )
-    d.text(
-        f"{kl.label()} (M {kl.ratio_text()});  ΔOBB' подобен плану pb_1b_2, "
-        + ("OB' = BC = S'" if f.kind == "flat" else "OB' = S'"),
-        (x0, y0 - 2.5),
-        2.5,
-    )
 
 
 def _omega_arrow(v: Viewport, r: float, sigma: int, side: float) -> None:
     """The cam's sense of rotation: an arc about O below it, on ``side`` (±1 in x), with an
     arrowhead, labelled ω."""
     a0, a1 = (200.0, 290.0) if side <= 0.0 else (250.0, 340.0)
-    _turn_arrow(v, r, a0, a1, sigma, "ω")
+    _turn_arrow(v, r, a0, a1, sigma, WORDS("omega"))
 
 
 def _turn_arrow(v: Viewport, r: float, a0_deg: float, a1_deg: float, sense: int, text: str) -> None:
@@ -311,7 +423,8 @@ def _turn_arrow(v: Viewport, r: float, a0_deg: float, a1_deg: float, sense: int,
     ``sense`` (+1 counter-clockwise) points to, and its label."""
     a0, a1 = math.radians(a0_deg), math.radians(a1_deg)
     v.arc(Arc(Circle(Vec(0.0, 0.0), r), a0, a1), "dimension")
-    end, before = (a1, a1 - 0.15) if sense > 0 else (a0, a0 + 0.15)
+    chord = 2.2 * ARROW_LEN / v.mm(r)  # the head's arc: more than two arrowheads long
+    end, before = (a1, a1 - chord) if sense > 0 else (a0, a0 + chord)
     v.arrow(Vec.polar(r, before), Vec.polar(r, end), "dimension")
     mid = (a0 + a1) / 2.0
     v.label(Vec.polar(r, mid), text, height=3.5, prefer=(math.cos(mid), math.sin(mid)), clear=0.5)
@@ -341,101 +454,89 @@ def _clean(x: float, size: float) -> float:
     return 0.0 if abs(x) <= tol.DERIVED * size else x
 
 
-def _panel(d: Drawing, sol: Solution, k: Scale) -> None:
+def _tables(sol: Solution) -> list[V.Table]:
+    """The given data and the results at the division points."""
     p, r, geo = sol.params, sol.results, sol.data
-    x, y = PANEL_X, 125.0
-    d.text("Исходные данные", (x, y + 3.5), 3.5)
     law = str(p["law"])
-    kinds = {"flat": "плоский", "knife": "острый", "roller": "роликовый"}
-    mm = MM
-    rise, dwell, ret = (fmt_number(float(p[n]), digits=4) for n in ("phi_rise_deg",
-                        "phi_dwell_deg", "phi_return_deg"))  # fmt: skip
-    step_deg = fmt_number(math.degrees(geo.span) / int(p["n_div"]), digits=3)
-    e_mm, rr_mm = (fmt_number(float(p[n]) * mm, digits=4) for n in ("e", "r_roller"))
-    offsets = f"{e_mm} / {rr_mm} мм"
-    r0_mm = fmt_number(float(p["r0"]) * mm, digits=4)
+    mm = WORDS("mm")
+    rise, dwell, ret = (_n(float(p[n])) for n in ("phi_rise_deg", "phi_dwell_deg",
+                                                  "phi_return_deg"))  # fmt: skip
+    step_deg = _n(math.degrees(geo.span) / int(p["n_div"]), 3)
+    e_mm, rr_mm = (_n(float(p[n]) * MM) for n in ("e", "r_roller"))
     rows = [
-        ["H", f"{fmt_number(float(p['H']) * mm, digits=4)} мм", "φ_у", f"{rise}°", "закон",
-         LAW_SHORT_RU[law]],
-        ["r_{min}", f"{r0_mm} мм", "φ_д / φ_с", f"{dwell}° / {ret}°",
-         "толкатель", kinds[str(p["follower"])]],
-        ["интерв.", f"{p['n_div']} × {step_deg}°",
-         "ω", "против час." if int(p["omega_sign"]) > 0 else "по час.", "e / r_{рол}",
-         offsets],
+        [WORDS("c_H"), f"{_n(float(p['H']) * MM)} {mm}", WORDS("c_rise"), f"{rise}°",
+         WORDS("c_law"), WORDS(f"short_{law}")],
+        [WORDS("c_r0"), f"{_n(float(p['r0']) * MM)} {mm}", WORDS("c_dwell_ret"),
+         f"{dwell}° / {ret}°", WORDS("c_follower"), WORDS(f"f_{p['follower']}")],
+        [WORDS("c_intervals"), f"{p['n_div']} × {step_deg}°", WORDS("c_omega"),
+         WORDS("ccw" if int(p["omega_sign"]) > 0 else "cw"), WORDS("c_offsets"),
+         f"{e_mm} / {rr_mm} {mm}"],
     ]  # fmt: skip
-    widths = (13.0, 25.0, 15.0, 29.0, 20.0, 30.0)
-    _, h = d.table(x, y + 5.0, widths, rows, row_h=5.0, header=False)
-    y += 5.0 + h + 5.0
-    d.text("Результаты (мм)", (x, y + 3.5), 3.5)
-    head = ["i", "φ_i, °", "S_i", "S'_i", "r_i"]
-    rows = [head]
+    data = V.Table(
+        rows, widths=(30.0, 38.0, 30.0, 54.0, 40.0, 54.0), height=3.5, row_h=6.0, header=False,
+        title=WORDS("data_title"), title_height=5.0,
+    )  # fmt: skip
+    rows = [[WORDS(f"h_{q}") for q in ("i", "phi", "S", "S1", "r")]]
     n = len(r["phi"])
     for i in _rows(n):
         rows.append(
             [
                 str(i),
-                fmt_number(math.degrees(float(r["phi"][i])), digits=4),
-                fmt_number(_clean(float(r["S"][i]), geo.program.H) * mm, digits=4),
-                fmt_number(_clean(float(geo.divisions.S1[i]), geo.program.H) * mm, digits=4),
-                fmt_number(float(r["r"][i]) * mm, digits=4),
+                _n(math.degrees(float(r["phi"][i]))),
+                _n(_clean(float(r["S"][i]), geo.program.H) * MM),
+                _n(_clean(float(geo.divisions.S1[i]), geo.program.H) * MM),
+                _n(float(r["r"][i]) * MM),
             ]
         )
-    rows.append(["a", "", "", "", fmt_number(float(r["a"]) * mm, digits=4)])
-    r_widths = (14.0, 26.0, 26.0, 26.0, 30.0)
-    _, h = d.table(x, y + 5.0, r_widths, rows, row_h=4.5)
-    y += 5.0 + h + 1.5
-    rho = float(r["rho_min"]) * mm
-    alpha = float(r["pressure_angle_max_deg"])
-    summary = (
-        f"a = H/φ_у;  ρ_{{min}} = {fmt_number(rho, digits=5)} мм;  "
-        f"α_{{max}} = {fmt_number(alpha, digits=4)}°."
-    )
-    for text in [summary, *_notes_ru(sol)]:
-        y = d.paragraph(text, x, y, PANEL_W, 2.5) + 0.6
-    order = _order_ru(sol)
-    if y + 7.0 + 4.5 * len(order) <= BOTTOM:
-        y = d.text("Порядок построения", (x, y + 5.0), 3.5).at[1] + 1.2
-        for i, step in enumerate(order):
-            y = d.paragraph(f"{i + 1}. {step}", x, y, PANEL_W, 2.5, indent=4.0) + 0.2
+    rows.append(["a", "", "", "", _n(float(r["a"]) * MM)])
+    results = V.Table(
+        rows, widths=(20.0, 50.0, 50.0, 50.0, 50.0), height=3.5, row_h=6.5,
+        title=WORDS("results_title"), title_height=5.0,
+    )  # fmt: skip
+    return [data, results]
 
 
-def _order_ru(sol: Solution) -> list[str]:
+def _order(sol: Solution) -> list[str]:
     """The construction by inversion, step by step (one line each)."""
     kind = sol.data.follower.kind
-    lay = "r_{min} + S_i" if kind == "flat" else "s_0 + S_i"
-    what = {
-        "flat": "через C_i – тарелки перпендикулярно осям, B_i в S'_i от оси",
-        "knife": "B_i = C_i – положения острия",
-        "roller": "C_i – центры ролика, B_i – по нормали на r_{рол}",
-    }[kind]
-    last = {
-        "flat": "профиль – огибающая тарелок",
-        "knife": "профиль – кривая через B_i",
-        "roller": "профиль – эквидистанта центрового",
-    }[kind]
     return [
-        "оси толкателя 0, 1, 2 … повёрнуты вокруг O на φ_i против вращения кулачка (–ω);",
-        f"на осях отложены {lay} (точки C_i); {what};",
-        f"{last}; радиус-векторы r_i = OB_i.",
+        WORDS("order_1"),
+        WORDS(
+            "order_2",
+            lay=WORDS("lay_flat" if kind == "flat" else "lay_other"),
+            what=WORDS(f"what_{kind}"),
+        ),
+        WORDS("order_3", last=WORDS(f"last_{kind}")),
     ]
 
 
-def _notes_ru(sol: Solution) -> list[str]:
-    """The sheet's notes: the radius formula, what happens at a jump of S′."""
+def _notes(sol: Solution) -> list[str]:
+    """The sheet's notes, wrapped to the panel: the summary, the radius formula, what happens at
+    a jump of S′."""
     geo = sol.data
     f = geo.follower
-    out: list[str] = []
+    r = sol.results
+    out: list[str] = [
+        WORDS("summary", rho=_n(float(r["rho_min"]) * MM),
+              alpha=_n(float(r["pressure_angle_max_deg"]))),
+    ]  # fmt: skip
     if f.kind == "flat":
-        out.append(
-            "r_i^2 = (r_{min} + S_i)^2 + S'_i^2: точка касания B отстоит от оси толкателя на "
-            "BC = OB' = S' (ΔOBB' подобен плану pb_1b_2)."
-        )
-    prof = geo.profile
-    if np.any(prof.corner) and f.kind == "flat" and sol.params["law"] == "linear":
-        a = float(sol.results["a"]) * MM
-        out.append(
-            f"При φ = 0 S' скачком растёт от 0 до a = {fmt_number(a, digits=4)} мм (жёсткий "
-            "удар): профиль начинается отрезком прямой длиной a, касательным к окружности r_{min}, "
-            "далее – эвольвента окружности радиуса a."
-        )
+        out.append(WORDS("note_radius"))
+    if np.any(geo.profile.corner) and f.kind == "flat" and sol.params["law"] == "linear":
+        out.append(WORDS("note_jump", a=_n(float(sol.results["a"]) * MM)))
+    return [line for par in out for line in _wrapped(par, PANEL_W, 3.0)]
+
+
+def _wrapped(par: str, width: float, height: float) -> list[str]:
+    """A paragraph wrapped at spaces into lines of at most ``width`` mm."""
+    out: list[str] = []
+    line = ""
+    for word in par.split(" "):
+        trial = f"{line} {word}" if line else word
+        if line and text_width(trial, height) > width:
+            out.append(line)
+            line = word
+        else:
+            line = trial
+    out.append(line)
     return out

@@ -1,9 +1,11 @@
 """2013-3's drawing sheet: the mechanism with a cross at k_l and its velocity plan at k_v.
 
-A3 landscape. Left: the mechanism at the largest GOST scale that fills its field, with the links
-numbered, the angle α and the lengths dimensioned, the given velocity V_A and the senses of ω3,
-ω5 and M. Right: the velocity plan, each vector equation drawn as its two lines meeting, then the
-results beside the seed's and the vector equations in the order they were solved.
+A3 landscape, composed by :mod:`geomcad.sheet.compose` (no hand-placed view): the mechanism at
+the largest GOST scale its box allows, with the links numbered, the angle α and the lengths
+dimensioned, the given velocity V_A and the senses of ω3, ω5 and M; the velocity plan, each
+vector equation drawn as its two lines meeting, at a factor 1, 2, 2.5, 4 or 5 × 10^n; the given
+data, the results and the vector equations in the order they were solved. :func:`scales` gives
+the layout's factors without drawing (``Problem.scales``).
 """
 
 from __future__ import annotations
@@ -12,38 +14,108 @@ import math
 from typing import TYPE_CHECKING, Any
 
 from geomcad.geom import Vec
-from geomcad.sheet import Drawing, Scale, Sheet, TitleBlock, Viewport, fmt_number, start
-from geomcad.sheet.plans import draw_plan
+from geomcad.sheet import Scale, Sheet, TitleBlock, Viewport, fmt_number, start
+from geomcad.sheet import views as V
+from geomcad.sheet.compose import (
+    Column,
+    Field,
+    Figure,
+    Row,
+    Spacer,
+    Tree,
+    arrange,
+    compose,
+    text_width,
+)
+from geomcad.sheet.drawing import SLIDER_SIZE
+from geomcad.sheet.lang import Words, current
+from geomcad.sheet.model import Polyline
+
+from .layout_cache import per_language
 
 if TYPE_CHECKING:
+    from geomcad.construction import Construction
     from geomcad.problem import Solution
-
-from .p2013_3 import MECH_VIEW, PLAN_VIEW
 
 #: Paper sizes of the symbols drawn beside the mechanism (mm).
 VA_LEN = 14.0
+#: Width (mm) of the order of construction's text.
+ORDER_W = 150.0
+#: The title block's height (mm): the right-hand column keeps it free.
+BLOCK_H = 52.0
+WORDS = Words(__package__, "sheets_2013_3")
+
+
+def _n(x: float, digits: int = 4) -> str:
+    return fmt_number(x, current(), digits)
+
+
+def extent(c: Construction, l_ab: float) -> tuple[float, float, float, float]:
+    """The model box the mechanism drawing needs: the links, the slots run past C and O2."""
+    pts = [c[n] for n in ("O1", "O2", "A", "B", "C")]
+    pad = 0.35 * l_ab
+    xs, ys = [q.x for q in pts], [q.y for q in pts]
+    return min(xs) - pad, min(ys) - pad, max(xs) + pad, max(ys) + pad
+
+
+def _views(sol: Solution, kv: Scale | None = None) -> tuple[Tree, Figure, V.PlanView]:
+    """The sheet's tree: the mechanism over the data and the order of construction, the plan
+    over the results (their lengths on the plan at ``kv``; the table's size does not depend on
+    it, so the layout can be arranged before the scales are known)."""
+    geo, c = sol.data, sol.construction
+    scheme = Figure(
+        extent(c, geo.l_AB),
+        lambda v: _mechanism(v, geo, c, sol),
+        title=WORDS("scheme_title"),
+        title_height=5.0,
+        margin=8.0,
+    )
+    plan = V.PlanView(geo.plan, title=WORDS("plan_title"), title_height=5.0, margin=6.0)
+    order = V.Text(
+        _wrapped([f"{i}. {WORDS(f'order_{i}')}" for i in range(1, 7)], ORDER_W, 2.5),
+        title=WORDS("order_title"),
+    )
+    tree = Row(
+        Column(scheme, Row(_data(sol), _results(sol, kv))),
+        Column(plan, order, Spacer((10.0, BLOCK_H))),
+    )
+    return tree, scheme, plan
+
+
+def _wrapped(paragraphs: list[str], width: float, height: float) -> list[str]:
+    """Paragraphs wrapped at spaces into lines of at most ``width`` mm."""
+    out: list[str] = []
+    for par in paragraphs:
+        line = ""
+        for word in par.split(" "):
+            trial = f"{line} {word}" if line else word
+            if line and text_width(trial, height) > width:
+                out.append(line)
+                line = word
+            else:
+                line = trial
+        out.append(line)
+    return out
+
+
+@per_language
+def scales(sol: Solution) -> dict[str, float]:
+    """k_l of the mechanism and k_v of the plan, as the layout chooses them (no drawing)."""
+    tree, scheme, plan = _views(sol)
+    lay = arrange(tree, Field.of_format("A3"))
+    k_l, k_v = lay[scheme].scale, lay[plan].scale
+    assert k_l is not None and k_v is not None
+    return {"l": k_l.k, "v": k_v.k}
 
 
 def sheets(sol: Solution) -> list[tuple[str, Sheet]]:
     """The main sheet of 2013-3."""
-    geo = sol.data
-    c = sol.construction
-    k = Scale(sol.scales["l"], "l")
-    kv = Scale(sol.scales["v"], "v")
-    tb = TitleBlock(
-        title="Механизм с крестовиной. План скоростей",
-        designation="ТММ.2013-3.01",
-        scale=k.ratio_text(),
-    )
+    got = scales(sol)  # this layout's (in the language being drawn), which compose() repeats
+    tree, _scheme, _plan = _views(sol, Scale(got["v"], "v"))
+    k = Scale(got["l"], "l")
+    tb = TitleBlock(title=WORDS("tb_title"), designation=WORDS("designation"), scale=k.ratio_text())
     d = start("A3", tb)
-    x0, y0, x1, y1 = geo.extent
-    at = ((MECH_VIEW[0] + MECH_VIEW[2]) / 2.0, (MECH_VIEW[1] + 8.0 + MECH_VIEW[3]) / 2.0)
-    v = d.viewport(k, ((x0 + x1) / 2.0, (y0 + y1) / 2.0), at)
-    d.text("Схема механизма", (MECH_VIEW[0] + 2.0, 13.0), 5.0)
-    d.text(f"{k.label()}   (M {k.ratio_text() or '—'})", (MECH_VIEW[0] + 2.0, 20.0), 3.5)
-    _mechanism(v, geo, c, sol)
-    draw_plan(d, geo.plan, kv, PLAN_VIEW)
-    _panel(d, sol, kv)
+    compose(d, tree)
     return [("", d.finish())]
 
 
@@ -55,7 +127,7 @@ def _mechanism(v: Viewport, geo: Any, c: Any, sol: Solution) -> None:
     # link 1: the body AB sliding along O1O2 on its guide
     v.guide(A - Vec(v.scale.model(14.0), 0.0), A + Vec(v.scale.model(14.0), 0.0), (0.0, -1.0))
     v.seg(A, B, "link")
-    v.slider(A)
+    _block(v, A, Vec(1.0, 0.0))
     # link 3: the slotted rocker B–O1–C, run past B and C
     v.seg(B - u3 * ext, C + u3 * ext, "link")
     # link 5: O2 through C and on
@@ -63,9 +135,12 @@ def _mechanism(v: Viewport, geo: Any, c: Any, sol: Solution) -> None:
     v.seg(O1, O2, "centre")
     # block 2 in the slot at B; the cross 4 at C, one slide on each link
     v.slider(B, u3)
-    v.slider(C, u3)
-    v.slider(C, u5)
-    v.pivot(O1)
+    _block(v, C, u3)
+    _block(v, C, u5)
+    # O1's support turned away from the rocker that passes through it and from O1O2: along the
+    # bisector of the angle between the rocker's lower half (towards B) and O1O2
+    n3 = ((B - O1).unit() + (O2 - O1).unit()).unit()
+    v.pivot(O1, (n3.x, n3.y))
     v.pivot(O2)
     # the given velocity, and the senses of ω3 (= ω5) and of M
     sgn = 1.0 if geo.v_A > 0 else -1.0
@@ -80,10 +155,10 @@ def _mechanism(v: Viewport, geo: Any, c: Any, sol: Solution) -> None:
     m_sense = -w3 * (1.0 if geo.M >= 0 else -1.0)  # M resists the motion when M > 0
     v.turn(O2, m_sense, -60.0 if m_sense > 0 else 40.0, "M")
     # letters and link numbers
-    v.label(O1, "O_1", prefer=(0.0, -1.0), clear=4.0)
+    v.label(O1, "O_1", prefer=(1.0, -1.0), clear=2.5)
     v.label(O2, "O_2", prefer=(1.0, -1.0), clear=4.0)
-    v.label(A, "A", prefer=(-1.0, -1.0), clear=5.0)
-    v.label(B, "B", prefer=(-1.0, -1.0), clear=5.0)
+    v.label(A, "A", prefer=(-1.0, -1.0), clear=3.0)
+    v.label(B, "B", prefer=(-1.0, -1.0), clear=3.5)
     v.label(C, "C", prefer=(-1.0, 1.0), clear=5.0)
     for q, n in (
         (A + (B - A) * 0.5, "1"),
@@ -96,59 +171,59 @@ def _mechanism(v: Viewport, geo: Any, c: Any, sol: Solution) -> None:
     # the given geometry, dimensioned
     v.dim_angle(O1, O2, C, "α", r_mm=16.0, height=3.5)
     l_ab, l12 = (
-        fmt_number(A.dist(B) * 1000.0, digits=4),
-        fmt_number(O1.dist(O2) * 1000.0, digits=4),
+        _n(A.dist(B) * 1000.0),
+        _n(O1.dist(O2) * 1000.0),
     )
     v.dim_linear(A, B, f"l_{{AB}} = {l_ab}", offset=-10.0, height=2.5)
     v.dim_linear(O1, O2, f"l_{{O1O2}} = {l12}", offset=-22.0, height=2.5)
 
 
-def _panel(d: Drawing, sol: Solution, kv: Scale) -> None:
-    """Below the plan: the results; below the mechanism: data and equations."""
+def _block(v: Viewport, q: Vec, along: Vec) -> None:
+    """A slider block on its guide with no revolute joint inside (GOST 2.770): link 1's block at
+    A, the cross's two slides at C."""
+    x, y = v.p(q)
+    d = along.unit()
+    ux, uy = d.x, -d.y
+    px, py = -uy, ux
+    hw, hh = SLIDER_SIZE[0] / 2.0, SLIDER_SIZE[1] / 2.0
+    corners = tuple(
+        (x + ux * sx * hw + px * sy * hh, y + uy * sx * hw + py * sy * hh)
+        for sx, sy in ((-1, -1), (1, -1), (1, 1), (-1, 1))
+    )
+    v.sheet.add(Polyline(corners, "joint", closed=True, fill=True))
+    v.sheet.add(Polyline(corners, "link", closed=True))
+
+
+def _results(sol: Solution, kv: Scale | None) -> V.Table:
+    """The results with their lengths on the plan (velocities) at ``kv``."""
     r = sol.results
-    x, y = PLAN_VIEW[0], PLAN_VIEW[3] + 4.0
-    d.text("Результаты", (x, y + 3.5), 3.5)
-    rows = [["Величина", "Значение", "На плане, мм"]]
+    rows = [[WORDS("h_quantity"), WORDS("h_value"), WORDS("h_on_plan")]]
     for name, label, unit in (
-        ("V_B3", "V_{B3}", "м/с"),
-        ("V_B3B2", "V_{B3B2}", "м/с"),
-        ("omega3", "ω_3", "рад/с"),
-        ("V_C3", "V_{C3}", "м/с"),
-        ("omega5", "ω_5", "рад/с"),
-        ("V_C5", "V_{C5}", "м/с"),
-        ("V_C4", "V_{C4}", "м/с"),
-        ("F_red", "F_{пр}", "Н"),
+        ("V_B3", "V_{B3}", "u_ms"),
+        ("V_B3B2", "V_{B3B2}", "u_ms"),
+        ("omega3", "ω_3", "u_rads"),
+        ("V_C3", "V_{C3}", "u_ms"),
+        ("omega5", "ω_5", "u_rads"),
+        ("V_C5", "V_{C5}", "u_ms"),
+        ("V_C4", "V_{C4}", "u_ms"),
+        ("F_red", WORDS("F_red"), "u_n"),
     ):
         exact = float(r[name])
-        on_plan = fmt_number(kv.mm(exact), digits=3) if unit == "м/с" else ""
-        rows.append([label, f"{fmt_number(exact, digits=4)} {unit}", on_plan])
-    d.table(x, y + 6.0, (30.0, 60.0, 40.0), rows, row_h=5.5)
-    # given data and the order of the plan, under the mechanism
-    x, y = MECH_VIEW[0], MECH_VIEW[3] + 4.0
+        on_plan = _n(kv.mm(exact), 3) if unit == "u_ms" and kv is not None else ""
+        rows.append([label, f"{_n(exact)} {WORDS(unit)}", on_plan])
+    return V.Table(rows, widths=(30.0, 40.0, 36.0), row_h=5.5, title=WORDS("results_title"))
+
+
+def _data(sol: Solution) -> V.Table:
     p = sol.params
-    d.text("Исходные данные", (x, y + 3.5), 3.5)
-    rows = [["Параметр", "Значение"]]
+    rows = [[WORDS("h_param"), WORDS("h_value")]]
     for name, label, unit in (
-        ("v_A", "v_A", "м/с"),
-        ("l_AB", "l_{AB}", "м"),
-        ("l_O1O2", "l_{O1O2}", "м"),
-        ("alpha_deg", "α", "°"),
-        ("M", "M", "Н·м"),
+        ("v_A", "v_A", "u_ms"),
+        ("l_AB", "l_{AB}", "u_m"),
+        ("l_O1O2", "l_{O1O2}", "u_m"),
+        ("alpha_deg", "α", ""),
+        ("M", "M", "u_nm"),
     ):
-        rows.append([label, f"{fmt_number(float(p[name]))}{'' if unit == '°' else ' '}{unit}"])
-    d.table(x, y + 6.0, (22.0, 30.0), rows, row_h=5.5)
-    x2 = x + 58.0
-    yy = d.text("Порядок построения плана скоростей", (x2, y + 3.5), 3.5).at[1] + 2.0
-    steps = (
-        "pa = V_A; звено 1 движется поступательно: b_1 = b_2 = a;",
-        "V_{B3} = V_{B2} + V_{B3B2}: через b_2 – прямая вдоль O_1B, через p – перпендикуляр "
-        "к O_1B; их пересечение – точка b_3; ω_3 = pb_3/l_{O1B};",
-        "c_3 – по подобию: o_1b_3c_3 ~ O_1BC (c_3 на продолжении b_3p, pc_3/pb_3 = O_1C/O_1B);",
-        "крестовина скользит по звеньям 3 и 5 под прямым углом: ω_5 = ω_3; pc_5 = ω_5·l_{O2C}, "
-        "перпендикулярно O_2C;",
-        "V_{C4} = V_{C3} + V_{C4C3} = V_{C5} + V_{C4C5}: через c_3 – прямая вдоль O_1C, через "
-        "c_5 – вдоль O_2C; пересечение – c_4;",
-        "F_{пр} = |M·ω_5|/v_A (равенство мощностей).",
-    )
-    for i, step in enumerate(steps):
-        yy = d.paragraph(f"{i + 1}. {step}", x2, yy, 136.0, 2.5, indent=4.0) + 0.5
+        value = _n(float(p[name]), 6)
+        rows.append([label, f"{value} {WORDS(unit)}" if unit else f"{value}°"])
+    return V.Table(rows, widths=(22.0, 30.0), row_h=5.5, title=WORDS("data_title"))

@@ -23,7 +23,6 @@ from geomcad import tol
 from geomcad.geom import Arc, Circle, Vec
 from geomcad.kinematics.gears import SpurGear
 from geomcad.sheet import (
-    Drawing,
     Polyline,
     Run,
     Scale,
@@ -32,71 +31,128 @@ from geomcad.sheet import (
     TitleBlock,
     Viewport,
     fmt_number,
-    gost_scale_to_fit,
     start,
 )
+from geomcad.sheet import views as V
+from geomcad.sheet.compose import Column, Field, Figure, Row, Spacer, Tree, arrange, compose
+from geomcad.sheet.compose import text_width as layout_text_width
+from geomcad.sheet.drawing import ARROW_LEN
+from geomcad.sheet.lang import Words, current
 from geomcad.sheet.text import SUB_DROP, SUB_SCALE, SUP_RISE, metrics, run_size
 from geomcad.sheet.text import width as text_width
+
+from .layout_cache import per_language
 
 if TYPE_CHECKING:
     from geomcad.problem import Solution
 
-from .p2013_4 import VIEW, view_half_angle
 
-PANEL_X = 258.0
+def view_half_angle(gear: SpurGear) -> float:
+    """Half the angle the tooth view spans about the tooth's axis: the tooth, half a space either
+    side, and a little of the circles beyond."""
+    return min(1.3 * math.pi / gear.z, math.pi / 2.0)
+
+
+def extent(gear: SpurGear) -> tuple[float, float, float, float]:
+    """The model box of the tooth view: the tooth with half a space either side, the circles
+    a little beyond, down to the lower of the base and root circles, up past the rack's top."""
+    half = view_half_angle(gear)
+    r_top = max(gear.r_a, gear.r + (gear.x + gear.rack.ha + gear.rack.c) * gear.m)
+    r_low = min(gear.r_b, gear.d_f / 2.0)
+    w = r_top * math.sin(half)
+    pad = 0.35 * gear.m
+    return (-w, r_low * math.cos(half) - pad, w, r_top + 1.5 * pad)
+
+
+def _inset_extent(c: Any, gear: SpurGear) -> tuple[float, float, float, float]:
+    """The model box of the inset: O, the axis up past the tip, K and N."""
+    K, N = c["K"], c["N"]
+    x_lo = min(N.x, 0.0) - 0.1 * gear.r_a
+    x_hi = max(K.x, 0.0) + 0.1 * gear.r_a
+    return (x_lo, -0.06 * gear.r_a, x_hi, 1.08 * gear.r_a)
+
+
+WORDS = Words(__package__, "sheets_2013_4")
 MM = 1000.0  # m → mm for the tables
 CENTRE = Vec(0.0, 0.0)  # the gear's centre O
+#: Width (mm) of the order of construction's text.
+ORDER_W = 140.0
+#: The title block's height (mm): the right-hand column keeps it free.
+BLOCK_H = 52.0
+
+
+def _num(x: float, digits: int = 6) -> str:
+    return fmt_number(x, current(), digits)
+
+
+def _views(sol: Solution) -> tuple[Tree, Figure]:
+    """The sheet's tree: the tooth (the sheet's main view) beside a column of the inset, the
+    tables and the order of construction."""
+    geo, c = sol.data, sol.construction
+    gear: SpurGear = geo.gear
+    x0, _y0, x1, _y1 = box = extent(gear)
+
+    def tooth(v: Viewport) -> None:
+        _circles(v, gear, geo, view_half_angle(gear))
+        _rack(v, gear, x0, x1)
+        _tooth(v, gear, geo)
+        _caliper(v, c, geo)
+
+    main = Figure(box, tooth, title=WORDS("view_title"), title_height=5.0, margin=3.0, weight=3.0)
+    inset = Figure(
+        _inset_extent(c, gear), lambda v: _inset(v, c, gear, geo),
+        title=WORDS("inset_title"), title_height=2.5, margin=4.0,
+    )  # fmt: skip
+    data, results, teeth = _tables(sol)
+    order = V.Text(
+        _wrapped([f"{i}. {WORDS(f'order_{i}')}" for i in range(1, 6)], ORDER_W, 2.5),
+        title=WORDS("order_title"),
+    )
+    side = Column(inset, Row(data, results), teeth, order, Spacer((10.0, BLOCK_H)))
+    return Row(main, side, weights=(5.0, 3.0)), main
+
+
+def _wrapped(paragraphs: list[str], width: float, height: float) -> list[str]:
+    """Paragraphs wrapped at spaces into lines of at most ``width`` mm."""
+    out: list[str] = []
+    for par in paragraphs:
+        line = ""
+        for word in par.split(" "):
+            trial = f"{line} {word}" if line else word
+            if line and layout_text_width(trial, height) > width:
+                out.append(line)
+                line = word
+            else:
+                line = trial
+        out.append(line)
+    return out
+
+
+@per_language
+def scales(sol: Solution) -> dict[str, float]:
+    """k_l of the tooth view, as the layout chooses it (no drawing)."""
+    tree, main = _views(sol)
+    k = arrange(tree, Field.of_format("A3"))[main].scale
+    assert k is not None
+    return {"l": k.k}
 
 
 def sheets(sol: Solution) -> list[tuple[str, Sheet]]:
     """The main sheet of 2013-4."""
-    geo = sol.data
-    c = sol.construction
-    k = Scale(sol.scales["l"], "l")
-    tb = TitleBlock(
-        title="Зуб колеса со смещением x; штангензубомер",
-        designation="ТММ.2013-4.01",
-        scale=k.ratio_text(),
-    )
+    k = Scale(scales(sol)["l"], "l")  # this layout's (in the language being drawn)
+    tb = TitleBlock(title=WORDS("tb_title"), designation=WORDS("designation"), scale=k.ratio_text())
     d = start("A3", tb)
-    x0, y0, x1, y1 = geo.extent
-    at = ((VIEW[0] + VIEW[2]) / 2.0, (VIEW[1] + VIEW[3]) / 2.0)
-    v = d.viewport(k, ((x0 + x1) / 2.0, (y0 + y1) / 2.0), at)
-    d.text("Зуб, нарезанный реечным инструментом со смещением x", (VIEW[0], 13.0), 5.0)
-    d.text(f"{k.label()}   (M {k.ratio_text() or '—'})", (VIEW[0], 20.0), 3.5)
-
-    gear: SpurGear = geo.gear
-    half = view_half_angle(gear)
-    _circles(v, gear, geo, half)
-    _rack(v, gear, x0, x1)
-    _tooth(v, gear, geo)
-    _caliper(v, c, geo)
-    _inset(d, c, gear, geo)
-    _panel(d, sol, k)
+    tree, _main = _views(sol)
+    compose(d, tree)
     sheet = d.finish()
     overline_marks(sheet)
     return [("", sheet)]
 
 
-#: The inset with the angles ψ_y and α_y: its field on the sheet (mm: x0, y0, x1, y1).
-INSET = (30.0, 30.0, 92.0, 104.0)
-
-
-def _inset(d: Drawing, c: Any, gear: SpurGear, geo: Any) -> None:
+def _inset(v: Viewport, c: Any, gear: SpurGear, geo: Any) -> None:
     """A small view of the whole construction about O: the axis OT, OK, the circles d_b, d_y,
     d_a, the thread KN tangent to the base circle, and the angles ψ_y = ∠TOK, α_y = ∠KON."""
     K, N, T = c["K"], c["N"], c["T"]
-    x_lo = min(N.x, 0.0) - 0.1 * gear.r_a
-    x_hi = max(K.x, 0.0) + 0.1 * gear.r_a
-    y_hi = 1.08 * gear.r_a
-    w_room, h_room = INSET[2] - INSET[0], INSET[3] - INSET[1] - 10.0
-    ki = gost_scale_to_fit(x_hi - x_lo, y_hi + 0.06 * gear.r_a, w_room, h_room)
-    v = d.viewport(
-        ki,
-        ((x_lo + x_hi) / 2.0, y_hi / 2.0),
-        ((INSET[0] + INSET[2]) / 2.0, INSET[1] + 10.0 + h_room / 2.0),
-    )
-    d.text(f"Построение ψ_y и α_y (M {ki.ratio_text()})", (INSET[0], INSET[1] + 3.5), 2.5)
     a_lo, a_hi = math.pi / 2.0 - 0.12, N.angle + 0.12
     for r, role in ((gear.r_b, "construction"), (geo.r_y, "construction"), (gear.r_a, "link")):
         v.arc(Arc(Circle(CENTRE, r), a_lo, a_hi), role)
@@ -122,7 +178,7 @@ def _small_angle(v: Viewport, vertex: Vec, p1: Vec, p2: Vec, text: str, r_mm: fl
     lo, hi = min(a1, a2), max(a1, a2)
     r = v.scale.model(r_mm)
     v.arc(Arc(Circle(vertex, r), lo, hi), "dimension")
-    step = 6.0 / r_mm
+    step = 2.2 * ARROW_LEN / r_mm  # arrows outside the arc, each over two heads long
     for a_end, a_out in ((lo, lo - step), (hi, hi + step)):
         v.arrow(vertex + Vec.polar(r, a_out), vertex + Vec.polar(r, a_end), "dimension")
     v.label(vertex + Vec.polar(r, hi + step), text, 2.5, prefer=(-1.0, 0.0))
@@ -196,9 +252,10 @@ def _circles(v: Viewport, gear: SpurGear, geo: Any, half: float) -> None:
     for r, role, name, dia, side in items:
         v.arc(_arc(r, span), role)
         end = Vec.polar(r, math.pi / 2.0 + side * span)
-        v.label(end, f"{name} = ⌀{fmt_number(dia * MM, digits=6)}", 2.5, prefer=(-side, 1.0))
+        v.label(end, f"{name} = ⌀{_num(dia * MM, digits=4)}", 2.5, prefer=(-side, 1.0))
     # the tooth's axis
-    v.seg(Vec(0.0, min(gear.r_b, gear.d_f / 2.0) - 0.3 * gear.m), Vec(0.0, geo.extent[3]), "centre")
+    low = min(gear.r_b, gear.d_f / 2.0) - 0.3 * gear.m
+    v.seg(Vec(0.0, low), Vec(0.0, extent(gear)[3]), "centre")
 
 
 def _rack(v: Viewport, gear: SpurGear, x_lo: float, x_hi: float) -> None:
@@ -222,14 +279,14 @@ def _rack(v: Viewport, gear: SpurGear, x_lo: float, x_hi: float) -> None:
         v.polyline([Vec(px, py) for px, py in piece], "extreme")
     y_d = gear.r + gear.x * m
     v.seg(Vec(x_lo, y_d), Vec(x_hi, y_d), "centre")
-    v.label(Vec(x_lo, y_d), "делительная прямая рейки", 2.5, prefer=(1.0, 1.0))
+    v.label(Vec(x_lo, y_d), WORDS("rack_datum"), 2.5, prefer=(1.0, 1.0))
     v.seg(Vec(x_lo, gear.r), Vec(0.6 * x_lo, gear.r), "centre")
     if abs(gear.x) > tol.DERIVED:  # no shift to dimension for x = 0
         xd = 0.93 * x_lo
         v.dim_linear(
             Vec(xd, gear.r),
             Vec(xd, y_d),
-            f"xm = {fmt_number(gear.x * m * MM, digits=4)}",
+            f"xm = {_num(gear.x * m * MM, digits=4)}",
             offset=6.0,
             height=2.5,
         )
@@ -291,74 +348,54 @@ def _caliper(v: Viewport, c: Any, geo: Any) -> None:
     v.label(K_, "K'", prefer=(-1.0, -1.0), clear=1.0)
     v.label(T, "T", prefer=(-1.0, 1.0), clear=1.0)
     rise = v.mm(T.y - K.y)
-    s_txt = fmt_number(float(c["K"].dist(c["K'"])) * MM, digits=4)
+    s_txt = _num(float(c["K"].dist(c["K'"])) * MM, digits=4)
     v.dim_linear(K_, K, f"s̄ = {s_txt}", offset=rise + 14.0, height=3.5)
-    h_txt = fmt_number((T.y - H.y) * MM, digits=4)
+    h_txt = _num((T.y - H.y) * MM, digits=4)
     side = v.mm(K.x) + 12.0
     v.dim_linear(T, H, f"h̄ = {h_txt}", offset=side, height=3.5)
     del gear
 
 
-def _panel(d: Drawing, sol: Solution, k: Scale) -> None:
-    """The tables on the right: given data, results, the tooth's sizes."""
+def _tables(sol: Solution) -> tuple[V.Table, V.Table, V.Table]:
+    """The given data, the results, and the sizes of the tooth the rack cuts."""
     p, r, geo = sol.params, sol.results, sol.data
     gear: SpurGear = geo.gear
-    x, y = PANEL_X, 10.0
-    d.text("Исходные данные", (x, y + 3.5), 3.5)
-    rows = [["Параметр", "Значение"]]
+    mm = WORDS("mm")
+    rows = [[WORDS("h_param"), WORDS("h_value")]]
     for label, text in (
-        ("m", f"{fmt_number(float(p['m']) * MM)} мм"),
-        ("α", f"{fmt_number(float(p['alpha_deg']))}°"),
+        ("m", f"{_num(float(p['m']) * MM)} {mm}"),
+        ("α", f"{_num(float(p['alpha_deg']))}°"),
         ("z", str(p["z"])),
-        ("d_a", f"{fmt_number(float(p['d_a']) * MM)} мм"),
-        ("s̄ (хорда)", f"{fmt_number(float(p['s_chord']) * MM)} мм"),
-        ("h̄ (высота)", f"{fmt_number(float(p['h_chord']) * MM)} мм"),
+        ("d_a", f"{_num(float(p['d_a']) * MM)} {mm}"),
+        (WORDS("chord"), f"{_num(float(p['s_chord']) * MM)} {mm}"),
+        (WORDS("height"), f"{_num(float(p['h_chord']) * MM)} {mm}"),
     ):
         rows.append([label, text])
-    _, h = d.table(x, y + 6.0, (36.0, 36.0), rows, row_h=5.5)
-    y += 6.0 + h + 5.0
-    d.text("Результаты", (x, y + 3.5), 3.5)
-    rows = [["Величина", "Значение"]]
+    data = V.Table(rows, widths=(30.0, 24.0), row_h=5.5, title=WORDS("data_title"))
+    rows = [[WORDS("h_quantity"), WORDS("h_value")]]
     for name, label, scale in (
-        ("d", "d, мм", MM),
-        ("d_b", "d_b, мм", MM),
-        ("d_y", "d_y, мм", MM),
-        ("psi_y", "ψ_y, рад", 1.0),
+        ("d", f"d, {mm}", MM),
+        ("d_b", f"d_b, {mm}", MM),
+        ("d_y", f"d_y, {mm}", MM),
+        ("psi_y", f"ψ_y, {WORDS('rad')}", 1.0),
         ("alpha_y_deg", "α_y, °", 1.0),
-        ("s", "s, мм", MM),
+        ("s", f"s, {mm}", MM),
         ("x", "x", 1.0),
     ):
         exact = float(r[name]) * scale
         if name == "x" and abs(exact) < tol.DERIVED:
             exact = 0.0  # a shift of 10^-16 is no shift
-        rows.append([label, fmt_number(exact, digits=4)])
-    _, h = d.table(x, y + 6.0, (36.0, 36.0), rows, row_h=5.5)
-    y += 6.0 + h + 3.0
-    y += 3.0
-    d.text("Зуб, нарезанный рейкой ГОСТ 13755", (x, y + 3.5), 3.5)
+        rows.append([label, _num(exact, digits=4)])
+    results = V.Table(rows, widths=(24.0, 22.0), row_h=5.5, title=WORDS("results_title"))
     k_span = geo.k_span
-    rows = [["Величина", "Значение"]]
+    rows = [[WORDS("h_quantity"), WORDS("h_value")]]
     for label, value in (
-        ("d_f (впадин)", f"{fmt_number(gear.d_f * MM, digits=4)} мм"),
-        ("d_l (граничная)", f"{fmt_number(gear.limit_diameter() * MM, digits=4)} мм"),
-        ("s_a (на вершине)", f"{fmt_number(gear.s_a * MM, digits=4)} мм"),
-        ("x_{min} (подрез)", f"{fmt_number(gear.x_min, digits=4)}"),
-        (f"W_{k_span} (z_W = {k_span})", f"{fmt_number(geo.W * MM, digits=4)} мм"),
+        (WORDS("d_f"), f"{_num(gear.d_f * MM, digits=4)} {mm}"),
+        (WORDS("d_l"), f"{_num(gear.limit_diameter() * MM, digits=4)} {mm}"),
+        (WORDS("s_a"), f"{_num(gear.s_a * MM, digits=4)} {mm}"),
+        (WORDS("x_min"), f"{_num(gear.x_min, digits=4)}"),
+        (f"W_{k_span} (z_W = {k_span})", f"{_num(geo.W * MM, digits=4)} {mm}"),
     ):
         rows.append([label, value])
-    _, h = d.table(x, y + 6.0, (50.0, 46.0), rows, row_h=5.5)
-    y += 6.0 + h + 5.0
-    y = d.text("Порядок построения", (x, y + 3.5), 3.5).at[1] + 2.0
-    steps = (
-        "T – точка окружности вершин на оси зуба; хорда K'K перпендикулярна оси на "
-        "расстоянии h̄ от T;",
-        "tg ψ_y = (s̄/2)/(d_a/2 – h̄) = s̄/(d_a – 2h̄); d_y = 2·OK = s̄/sin ψ_y;",
-        "касательная KN к основной окружности: ∠KON = α_y, cos α_y = d_b/d_y, "
-        "inv α_y = KN/r_b – α_y;",
-        "s = d(ψ_y + inv α_y – inv α); x = (s – πm/2)/(2m·tg α);",
-        "проверка: рейка со смещением xm нарезает зуб, эвольвента которого проходит через K, "
-        "а штангензубомер при высоте h̄ показывает s̄.",
-    )
-    for i, step in enumerate(steps):
-        y = d.paragraph(f"{i + 1}. {step}", x, y, 150.0, 2.5, indent=4.0) + 0.4
-    del k
+    teeth = V.Table(rows, widths=(40.0, 30.0), row_h=5.5, title=WORDS("tooth_title"))
+    return data, results, teeth

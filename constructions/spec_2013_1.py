@@ -16,7 +16,7 @@
 """
 
 # This module loads without numpy or the construction code: `geomcad list` and `--help` read it.
-# build and draw live in p2013_1.py and load on first use.
+# build lives in p2013_1.py, the sheet and its scales in sheets_2013_1.py; both load on first use.
 
 from __future__ import annotations
 
@@ -71,5 +71,6 @@ PROBLEM = Problem(
     results=RESULTS,
     seed=SEED,
     build=lazy(".p2013_1:build", __package__),
-    draw=lazy(".p2013_1:draw", __package__),
+    draw=lazy(".sheets_2013_1:sheets", __package__),
+    scales=lazy(".sheets_2013_1:scales", __package__),
 )

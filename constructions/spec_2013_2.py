@@ -12,12 +12,13 @@
   and roller followers with an offset e (the roller profile offset exactly along the normals),
   either sense of rotation. A cusp or an undercut (base circle too small, roller too large, a drop
   of S′) is an error naming the step.
-- Sheet (A3): the profile at 2:1 with the radius vectors, the S(φ) graph, the mechanism with the
-  velocity plan and ΔOBB′, and the tables of data and results.
+- Sheet (A2): the profile at 2:1 with the radius vectors (the rest of the rise in thin lines),
+  the S(φ) and S′(φ) graphs, the mechanism with the velocity plan and ΔOBB′, and the tables of
+  data and results.
 """
 
 # This module loads without numpy or the construction code: `geomcad list` and `--help` read it.
-# build and draw live in p2013_2.py and load on first use.
+# build lives in p2013_2.py, the sheet and its scales in sheets_2013_2.py; both load on first use.
 
 from __future__ import annotations
 
@@ -80,6 +81,7 @@ PROBLEM = Problem(
     results=RESULTS,
     seed=SEED,
     build=lazy(".p2013_2:build", __package__),
-    draw=lazy(".p2013_2:draw", __package__),
+    draw=lazy(".sheets_2013_2:sheets", __package__),
+    scales=lazy(".sheets_2013_2:scales", __package__),
     seed_k_l=SEED_K_L,
 )

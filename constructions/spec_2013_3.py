@@ -4,13 +4,13 @@
   V_C4 = V_C3 + V_C4C3 = V_C5 + V_C4C5) is drawn as two lines of known direction that meet.
 - c3 is the image of C on link 3 by similarity; ω3 = ω5 because the cross slides on both links
   at a fixed right angle; F_red = M·ω5/v_A by equal power.
-- Sheet (A3): the mechanism at a GOST scale (1:2) with the links numbered and α, l_AB, l_O1O2
+- Sheet (A3): the mechanism at a GOST scale (1:2.5) with the links numbered and α, l_AB, l_O1O2
   dimensioned, the plan at μ_V = 0,02 (m/s)/mm with its lines and lettered points, the results
   and the order of the plan.
 """
 
 # This module loads without numpy or the construction code: `geomcad list` and `--help` read it.
-# build and draw live in p2013_3.py and load on first use.
+# build lives in p2013_3.py, the sheet and its scales in sheets_2013_3.py; both load on first use.
 
 from __future__ import annotations
 
@@ -62,5 +62,6 @@ PROBLEM = Problem(
     results=RESULTS,
     seed=SEED,
     build=lazy(".p2013_3:build", __package__),
-    draw=lazy(".p2013_3:draw", __package__),
+    draw=lazy(".sheets_2013_3:sheets", __package__),
+    scales=lazy(".sheets_2013_3:scales", __package__),
 )

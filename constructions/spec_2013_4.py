@@ -14,7 +14,7 @@
 """
 
 # This module loads without numpy or the construction code: `geomcad list` and `--help` read it.
-# build and draw live in p2013_4.py and load on first use.
+# build lives in p2013_4.py, the sheet and its scales in sheets_2013_4.py; both load on first use.
 
 from __future__ import annotations
 
@@ -76,5 +76,6 @@ PROBLEM = Problem(
     results=RESULTS,
     seed=SEED,
     build=lazy(".p2013_4:build", __package__),
-    draw=lazy(".p2013_4:draw", __package__),
+    draw=lazy(".sheets_2013_4:sheets", __package__),
+    scales=lazy(".sheets_2013_4:scales", __package__),
 )

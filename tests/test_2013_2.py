@@ -327,11 +327,12 @@ def _check_layout(sheet: Sheet) -> None:
     assert not problems, "\n".join(problems[:20])
 
 
-def test_seed_sheet_is_a3_at_2_to_1_with_no_overlaps() -> None:
+def test_seed_sheet_is_a2_at_2_to_1_with_no_overlaps() -> None:
+    """A2: the whole rise at the seed's 2:1 (the span thick, the rest of the rise thin)."""
     sol = geomcad.solve(PID)
     assert sol.scales["l"] == SEED_K_L
     ((name, sheet),) = sol.sheets()
-    assert name == "" and sheet.format == "A3"
+    assert name == "" and sheet.format == "A2"
     _check_layout(sheet)
     assert "2:1" in [t.text for t in sheet.texts()]
     words = {t.text for t in sheet.texts()}
@@ -379,3 +380,22 @@ def test_variant_sheets_fit_at_a_gost_scale(params: dict[str, object]) -> None:
     _check_layout(sheet)
     # every paragraph is drawn (a glyph missing from the font would have raised)
     assert any(t.text == "Порядок построения" for t in sheet.texts())
+
+
+def test_english_sheet_has_no_russian_word_and_passes_the_checker() -> None:
+    """--lang en: every word on the drawing from the English table (the title block's captions
+    are the frame's), a decimal point, and nothing the layout checker refuses."""
+    import re
+
+    from layout import block_part, layout_problems
+
+    from geomcad.sheet.lang import language
+    from geomcad.sheet.model import TextItem
+
+    with language("en"):
+        ((_, sheet),) = geomcad.solve("2013-2").sheets()
+    _form, drawn = block_part(sheet)
+    texts = [t.text for t in drawn if isinstance(t, TextItem)]
+    assert not [t for t in texts if re.search("[\u0400-\u04ff]", t)]
+    assert not [t for t in texts if re.search(r"\d,\d", t)]
+    assert not layout_problems(sheet)

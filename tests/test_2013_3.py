@@ -177,21 +177,45 @@ def test_bad_input_through_the_cli(setting: str) -> None:
     assert "Traceback" not in run.stderr
 
 
-def test_scales_are_gost_and_plan_factor_is_1_2_or_5() -> None:
+def test_scales_are_gost_and_plan_factor_is_nice() -> None:
     sol = geomcad.solve(PID)
-    assert sol.scales["l"] == pytest.approx(0.002)  # 1:2 fills the field
+    assert sol.scales["l"] == pytest.approx(0.0025)  # 1:2.5: the layout's largest that fits
     kv = sol.scales["v"]
     mant = kv / 10 ** math.floor(math.log10(kv))
-    assert min(abs(mant - m) for m in (1.0, 2.0, 5.0)) < 1e-9
+    assert min(abs(mant - m) for m in (1.0, 2.0, 2.5, 4.0, 5.0)) < 1e-9
 
 
 def test_plan_fits_its_field_and_vectors_end_on_points() -> None:
-    from geomcad_constructions.p2013_3 import PLAN_VIEW
+    from geomcad_constructions.sheets_2013_3 import _views
+
+    from geomcad.sheet.compose import Field, arrange
 
     sol = geomcad.solve(PID, alpha_deg=25.0)
     vp, kv = sol.data.plan, sol.scales["v"]
+    _tree, _scheme, plan = _views(sol)
+    lay = arrange(_tree, Field.of_format("A3"))
+    ix0, iy0, ix1, iy1 = lay[plan].inner
     x0, y0, x1, y1 = vp.extent()
-    assert (x1 - x0) / kv <= PLAN_VIEW[2] - PLAN_VIEW[0]
-    assert (y1 - y0) / kv <= PLAN_VIEW[3] - PLAN_VIEW[1]
+    assert (x1 - x0) / kv <= ix1 - ix0 + 1e-9
+    assert (y1 - y0) / kv <= iy1 - iy0 + 1e-9
     assert sol.sheets()  # draws without error for a variant
     assert Vec(0, 0) == vp["p"]
+
+
+def test_english_sheet_has_no_russian_word_and_passes_the_checker() -> None:
+    """--lang en: every word on the drawing from the English table (the title block's captions
+    are the frame's), a decimal point, and nothing the layout checker refuses."""
+    import re
+
+    from layout import block_part, layout_problems
+
+    from geomcad.sheet.lang import language
+    from geomcad.sheet.model import TextItem
+
+    with language("en"):
+        ((_, sheet),) = geomcad.solve("2013-3").sheets()
+    _form, drawn = block_part(sheet)
+    texts = [t.text for t in drawn if isinstance(t, TextItem)]
+    assert not [t for t in texts if re.search("[\u0400-\u04ff]", t)]
+    assert not [t for t in texts if re.search(r"\d,\d", t)]
+    assert not layout_problems(sheet)

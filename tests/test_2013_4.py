@@ -212,9 +212,43 @@ LAYOUT_VARIANTS = [
 def test_sheet_layout(params: dict[str, float]) -> None:
     """No text on another, everything inside the frame and off the title block, the tooth view
     left of the tables, and the scale in the title block."""
-    from layout import layout_problems
+    from geomcad_constructions.sheets_2013_4 import _views
+    from layout import item_box, layout_problems
+
+    from geomcad.sheet import views as V
+    from geomcad.sheet.compose import Field, arrange
 
     sol = geomcad.solve("2013-4", **params)
     ((_, sheet),) = sol.sheets()
-    problems = layout_problems(sheet, drawing_right=256.0)
+    problems = layout_problems(sheet)
+    # no drawn line reaches a table or the order of construction
+    tree, _main = _views(sol)
+    lay = arrange(tree, Field.of_format("A3"))
+    boxes = [pl.inner for pl in lay if isinstance(pl.view, V.Table | V.Text)]
+    for it in sheet.items:
+        if getattr(it, "role", "") in ("frame", "frame_thin", "title", "label"):
+            continue
+        x0, y0, x1, y1 = item_box(it)
+        for b in boxes:
+            if x0 < b[2] and b[0] < x1 and y0 < b[3] and b[1] < y1:
+                problems.append(f"{it.role} line {item_box(it)} reaches the table at {b}")
     assert not problems, "\n".join(problems)
+
+
+def test_english_sheet_has_no_russian_word_and_passes_the_checker() -> None:
+    """--lang en: every word on the drawing from the English table (the title block's captions
+    are the frame's), a decimal point, and nothing the layout checker refuses."""
+    import re
+
+    from layout import block_part, layout_problems
+
+    from geomcad.sheet.lang import language
+    from geomcad.sheet.model import TextItem
+
+    with language("en"):
+        ((_, sheet),) = geomcad.solve("2013-4").sheets()
+    _form, drawn = block_part(sheet)
+    texts = [t.text for t in drawn if isinstance(t, TextItem)]
+    assert not [t for t in texts if re.search("[\u0400-\u04ff]", t)]
+    assert not [t for t in texts if re.search(r"\d,\d", t)]
+    assert not layout_problems(sheet)

@@ -199,10 +199,14 @@ class View:
 
 
 def scale_text(scale: Scale, style: ScaleStyle | None = None) -> str:
-    """A scale's label as the title of a view shows it: ``μ_l = 0,0025 м/мм (M 1:2,5)``."""
-    text = scale.label(style or ScaleStyle(lang=current()))
+    """A scale's label as the title of a view shows it, in the language being drawn:
+    ``μ_l = 0,0025 м/мм (M 1:2,5)``, ``μ_l = 0.0025 m/mm (1:2.5)``."""
+    lang = current()
+    text = scale.label(style or ScaleStyle(lang=lang))
     ratio = scale.ratio_text()
-    return f"{text} (M {ratio})" if ratio else text
+    if lang != "ru":
+        ratio = ratio.replace(",", ".")
+    return (f"{text} (M {ratio})" if lang == "ru" else f"{text} ({ratio})") if ratio else text
 
 
 class Figure(View):
@@ -874,7 +878,12 @@ def _score(ev: _Eval) -> tuple[float, ...]:
             rounded[g] = math.inf
             continue
         v = first[g]
-        rounded[g] = round_scale(k, v.quantity, v.series).k if k > 0.0 else 1.0
+        try:
+            rounded[g] = round_scale(k, v.quantity, v.series).k if k > 0.0 else 1.0
+        except ParameterError:  # a candidate too small even for the smallest scale
+            bad += 1000.0
+            rounded[g] = math.inf
+            continue
     short = 0
     for key, leaf in ev.leaves.items():
         if leaf.kind != "scaled" or not math.isfinite(rounded[leaf.group]):
