@@ -35,7 +35,6 @@ from geomcad.sheet.compose import (
     View,
     arrange,
     compose,
-    text_width,
 )
 from geomcad.sheet.drawing import ARROW_LEN
 from geomcad.sheet.graph import Graph
@@ -524,19 +523,4 @@ def _notes(sol: Solution) -> list[str]:
         out.append(WORDS("note_radius"))
     if np.any(geo.profile.corner) and f.kind == "flat" and sol.params["law"] == "linear":
         out.append(WORDS("note_jump", a=_n(float(sol.results["a"]) * MM)))
-    return [line for par in out for line in _wrapped(par, PANEL_W, 3.0)]
-
-
-def _wrapped(par: str, width: float, height: float) -> list[str]:
-    """A paragraph wrapped at spaces into lines of at most ``width`` mm."""
-    out: list[str] = []
-    line = ""
-    for word in par.split(" "):
-        trial = f"{line} {word}" if line else word
-        if line and text_width(trial, height) > width:
-            out.append(line)
-            line = word
-        else:
-            line = trial
-    out.append(line)
-    return out
+    return [line for par in out for line in V.wrap(par, PANEL_W, 3.0)]

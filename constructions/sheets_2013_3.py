@@ -25,7 +25,6 @@ from geomcad.sheet.compose import (
     Tree,
     arrange,
     compose,
-    text_width,
 )
 from geomcad.sheet.drawing import SLIDER_SIZE
 from geomcad.sheet.lang import Words, current
@@ -72,7 +71,11 @@ def _views(sol: Solution, kv: Scale | None = None) -> tuple[Tree, Figure, V.Plan
     )
     plan = V.PlanView(geo.plan, title=WORDS("plan_title"), title_height=5.0, margin=6.0)
     order = V.Text(
-        _wrapped([f"{i}. {WORDS(f'order_{i}')}" for i in range(1, 7)], ORDER_W, 2.5),
+        [
+            line
+            for par in [f"{i}. {WORDS(f'order_{i}')}" for i in range(1, 7)]
+            for line in V.wrap(par, ORDER_W, 2.5)
+        ],
         title=WORDS("order_title"),
     )
     tree = Row(
@@ -80,22 +83,6 @@ def _views(sol: Solution, kv: Scale | None = None) -> tuple[Tree, Figure, V.Plan
         Column(plan, order, Spacer((10.0, BLOCK_H))),
     )
     return tree, scheme, plan
-
-
-def _wrapped(paragraphs: list[str], width: float, height: float) -> list[str]:
-    """Paragraphs wrapped at spaces into lines of at most ``width`` mm."""
-    out: list[str] = []
-    for par in paragraphs:
-        line = ""
-        for word in par.split(" "):
-            trial = f"{line} {word}" if line else word
-            if line and text_width(trial, height) > width:
-                out.append(line)
-                line = word
-            else:
-                line = trial
-        out.append(line)
-    return out
 
 
 @per_language

@@ -35,7 +35,6 @@ from geomcad.sheet import (
 )
 from geomcad.sheet import views as V
 from geomcad.sheet.compose import Column, Field, Figure, Row, Spacer, Tree, arrange, compose
-from geomcad.sheet.compose import text_width as layout_text_width
 from geomcad.sheet.drawing import ARROW_LEN
 from geomcad.sheet.lang import Words, current
 from geomcad.sheet.text import SUB_DROP, SUB_SCALE, SUP_RISE, metrics, run_size
@@ -105,27 +104,15 @@ def _views(sol: Solution) -> tuple[Tree, Figure]:
     )  # fmt: skip
     data, results, teeth = _tables(sol)
     order = V.Text(
-        _wrapped([f"{i}. {WORDS(f'order_{i}')}" for i in range(1, 6)], ORDER_W, 2.5),
+        [
+            line
+            for par in [f"{i}. {WORDS(f'order_{i}')}" for i in range(1, 6)]
+            for line in V.wrap(par, ORDER_W, 2.5)
+        ],
         title=WORDS("order_title"),
     )
     side = Column(inset, Row(data, results), teeth, order, Spacer((10.0, BLOCK_H)))
     return Row(main, side, weights=(5.0, 3.0)), main
-
-
-def _wrapped(paragraphs: list[str], width: float, height: float) -> list[str]:
-    """Paragraphs wrapped at spaces into lines of at most ``width`` mm."""
-    out: list[str] = []
-    for par in paragraphs:
-        line = ""
-        for word in par.split(" "):
-            trial = f"{line} {word}" if line else word
-            if line and layout_text_width(trial, height) > width:
-                out.append(line)
-                line = word
-            else:
-                line = trial
-        out.append(line)
-    return out
 
 
 @per_language

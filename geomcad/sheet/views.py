@@ -516,7 +516,7 @@ class Text(View):
         self.indent = indent
         self.lines = list(lines)
         if paragraph:
-            self.lines += _wrap(paragraph, width, height, indent)
+            self.lines += wrap(paragraph, width, height, indent)
         self.width = width or max((text_width(t, height) for t in self.lines), default=0.0)
 
     def natural(self) -> tuple[float, float] | None:
@@ -530,7 +530,7 @@ class Text(View):
                    role="title")  # fmt: skip
 
 
-def _wrap(text: str, width: float, height: float, indent: float = 0.0) -> list[str]:
+def wrap(text: str, width: float, height: float, indent: float = 0.0) -> list[str]:
     """``text`` wrapped at spaces into lines of at most ``width`` mm (lines after the first
     ``indent`` mm narrower)."""
     lines: list[list[str]] = [[]]
@@ -619,7 +619,7 @@ class Steps(View):
         self.width = width
         self.lines: list[str] = []
         for i, s in enumerate(keep, 1):
-            self.lines += _wrap(f"{i}. {step_text(s)}", width, height, indent=4.0)
+            self.lines += wrap(f"{i}. {step_text(s)}", width, height, indent=4.0)
 
     def natural(self) -> tuple[float, float] | None:
         lead = self.height * LINE_SPACING
