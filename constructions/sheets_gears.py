@@ -16,6 +16,7 @@ other candidates in a table.
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -26,16 +27,18 @@ from geomcad.geom import Arc, Circle, Vec
 from geomcad.kinematics import gear_design as gd
 from geomcad.kinematics.trains import PlanPoint, ray_plan, velocity_plan
 from geomcad.sheet import (
-    Drawing,
     Scale,
     TitleBlock,
+    Viewport,
     fmt_number,
     gost_scale_to_fit,
     nice_factor,
     start,
 )
-from geomcad.sheet.graph import Axis, Graph
+from geomcad.sheet.compose import Column, Field, Figure, Row, Tree, arrange, compose
+from geomcad.sheet.graph import Graph
 from geomcad.sheet.lang import Words
+from geomcad.sheet.views import AxisSpec, Curve, Diagram, Table, Text
 
 if TYPE_CHECKING:
     from geomcad.problem import Solution
@@ -45,14 +48,13 @@ if TYPE_CHECKING:
 #: The sheets' words, per language (constructions/strings/<lang>/sheets_gears.toml).
 WORDS = Words(__package__, "sheets_gears")
 MM = 1000.0
-#: The meshing drawing's field (sheet mm).
-MESH = (35.0, 35.0, 480.0, 575.0)
 #: The planetary scheme's and plan's fields.
 SCHEME = (40.0, 60.0, 330.0, 520.0)
 PLAN = (380.0, 60.0, 620.0, 520.0)
-PAD = 10.0
 #: The sheet y of the central axis (r = 0) of the scheme and of the plan.
 Y_BASE = (SCHEME[1] + SCHEME[3]) / 2.0
+#: Width (mm) of the notes under the tables.
+NOTE_W = 200.0
 
 
 def _mesh_box(p: gd.GearPair, me: gd.Meshing) -> tuple[float, float, float, float]:
@@ -63,12 +65,35 @@ def _mesh_box(p: gd.GearPair, me: gd.Meshing) -> tuple[float, float, float, floa
     return x0, y0, x1, y1
 
 
+def _pair_tree(des: GearsDesign) -> tuple[Tree, Figure]:
+    """The pair's sheet as a composition: the meshing drawing (the main view, its scale by
+    GOST 2.302 chosen by the layout) beside the diagrams, the tables and the note."""
+    p, me = des.pair, des.meshing
+    ps = des.spec.pair
+    assert p is not None and me is not None and ps is not None
+    mesh = Figure(
+        _mesh_box(p, me),
+        lambda v: _mesh(v, p, me),
+        title=WORDS("mesh_title"),
+        title_height=5.0,
+        margin=8.0,
+        weight=3.0,
+    )
+    sliding = _sliding(p)
+    contour = _contour(p, ps.sa_min, ps.eps_min)
+    sizes, params = _pair_tables(p, me)
+    note = Text(paragraph=WORDS("pair_note"), width=NOTE_W)
+    right = Column(sliding, Row(contour, Column(sizes, params, note)))
+    return Row(mesh, right), mesh
+
+
 def scales(des: GearsDesign) -> dict[str, float]:
-    """k_l of the meshing drawing (or of the planetary scheme)."""
+    """k_l of the meshing drawing (or of the planetary scheme), as the layout chooses it."""
     if des.pair is not None and des.meshing is not None:
-        x0, y0, x1, y1 = _mesh_box(des.pair, des.meshing)
-        w, h = MESH[2] - MESH[0] - 2 * PAD, MESH[3] - MESH[1] - 2 * PAD
-        return {"l": gost_scale_to_fit(x1 - x0, y1 - y0, w, h).k}
+        tree, mesh = _pair_tree(des)
+        scale = arrange(tree, Field.of_format("A1"))[mesh].scale
+        assert scale is not None
+        return {"l": scale.k}
     return {"l": _scheme_scale(des).k}
 
 
@@ -86,9 +111,10 @@ def sheets(sol: Solution) -> list[tuple[str, Any]]:
 
 
 def _pair_sheet(sol: Solution, des: GearsDesign) -> Any:
-    p, me = des.pair, des.meshing
-    assert p is not None and me is not None
-    k = Scale(sol.scales["l"], "l")
+    tree, mesh = _pair_tree(des)
+    lay = arrange(tree, Field.of_format("A1"))
+    k = lay[mesh].scale
+    assert k is not None
     tb = TitleBlock(
         title=WORDS("tb_pair"),
         designation=WORDS("designation"),
@@ -96,16 +122,25 @@ def _pair_sheet(sol: Solution, des: GearsDesign) -> Any:
         sheets=2 if des.spec.planetary is not None else 1,
     )
     d = start("A1", tb)
-    x0, y0, x1, y1 = _mesh_box(p, me)
-    v = d.viewport(k, ((x0 + x1) / 2.0, (y0 + y1) / 2.0),
-                   ((MESH[0] + MESH[2]) / 2.0, (MESH[1] + MESH[3]) / 2.0))  # fmt: skip
-    d.text(WORDS("mesh_title"), (MESH[0], 15.0), 5.0)
-    d.text(WORDS("scale_line", label=k.label(), ratio=k.ratio_text()), (MESH[0], 22.0), 3.5)
+    compose(d, tree, layout=lay)
+    return d.finish()
+
+
+def _mesh(v: Viewport, p: gd.GearPair, me: gd.Meshing) -> None:
+    """The meshing drawing: the circles as arcs over the drawn field (the tip circle thick only
+    along the drawn teeth, thin beyond them), the teeth, the working parts of the flanks, the
+    line of centres and the line of action with its active part."""
+    x0, _, x1, _ = _mesh_box(p, me)
     O1, O2 = Vec(0.0, 0.0), Vec(0.0, p.a_w)
     half_w = max(abs(x0), abs(x1)) * 1.05
-    for centre, g, d_w, up in ((O1, p.gear1, p.d_w1, True), (O2, p.gear2, p.d_w2, False)):
+    for centre, g, d_w, up, teeth in (
+        (O1, p.gear1, p.d_w1, True, me.teeth1),
+        (O2, p.gear2, p.d_w2, False, me.teeth2),
+    ):
+        mid = math.pi / 2.0 if up else -math.pi / 2.0
+        span = _teeth_span(teeth, centre)
         for r, role in (
-            (g.r_a, "link"),
+            (g.r_a, "thin"),
             (g.d / 2.0, "centre"),
             (d_w / 2.0, "centre"),
             (g.r_b, "thin"),
@@ -114,8 +149,17 @@ def _pair_sheet(sol: Solution, des: GearsDesign) -> Any:
             if r <= half_w:
                 continue
             half = math.asin(min(1.0, half_w / r))
-            mid = math.pi / 2.0 if up else -math.pi / 2.0
-            v.arc(Arc(Circle(centre, r), mid - half, mid + half), role)
+            lo_a, hi_a = mid - half, mid + half
+            if r == g.r_a:
+                # thin beyond the drawn teeth, thick (their tip lands and the gaps) along them
+                t0, t1 = max(lo_a, span[0]), min(hi_a, span[1])
+                if t0 < t1:
+                    v.arc(Arc(Circle(centre, r), t0, t1), "link")
+                    for u0, u1 in ((lo_a, t0), (t1, hi_a)):
+                        if u1 > u0:
+                            v.arc(Arc(Circle(centre, r), u0, u1), "thin")
+                    continue
+            v.arc(Arc(Circle(centre, r), lo_a, hi_a), role)
         v.centre_cross(centre, 6.0)
     for tooth in [*me.teeth1, *me.teeth2]:
         v.polyline(list(tooth), "link")
@@ -126,7 +170,7 @@ def _pair_sheet(sol: Solution, des: GearsDesign) -> Any:
     v.seg(O1, O2, "centre")
     t = Vec(*me.t)
     N1, N2, a, b, P = Vec(*me.N1), Vec(*me.N2), Vec(*me.a), Vec(*me.b), Vec(*me.P)
-    over = k.model(8.0)
+    over = v.scale.model(8.0)
     v.seg(N1 - t * over, N2 + t * over, "construction")
     v.seg(O1, N1, "thin")
     v.seg(O2, N2, "thin")
@@ -136,20 +180,22 @@ def _pair_sheet(sol: Solution, des: GearsDesign) -> Any:
         (N2, "N_2", (1.0, -1.0)),
         (a, "a", (-1.0, -1.0)),
         (b, "b", (1.0, 1.0)),
-        (P, "P", (1.0, -0.3)),
+        (P, "P", (-1.0, 0.5)),
         (O1, "O_1", (-1.0, -1.0)),
         (O2, "O_2", (-1.0, 1.0)),
     ):
         v.dot(q, "point")
         v.label(q, name, prefer=pref)
     a_w = fmt_number(math.degrees(p.alpha_w), digits=4)
-    d.label(v.p(P), f"α_w = {a_w}°", 2.5, prefer=(1.0, 1.0))
-    _sliding(d, p)
-    _pair_tables(d, p, me, sol.results)
-    ps = des.spec.pair
-    assert ps is not None
-    _contour(d, p, ps.sa_min, ps.eps_min)
-    return d.finish()
+    # the angle of action, written along the line of action beyond P (P itself is crowded)
+    v.label(P + t * v.scale.model(30.0), f"α_w = {a_w}°", 2.5, prefer=(1.0, -1.0), clear=0.5)
+
+
+def _teeth_span(teeth: Sequence[np.ndarray], centre: Vec) -> tuple[float, float]:
+    """The angles (from the centre, counter-clockwise) between which the teeth are drawn."""
+    pts = np.vstack(list(teeth))
+    ang = np.arctan2(pts[:, 1] - centre.y, pts[:, 0] - centre.x)
+    return float(ang.min()), float(ang.max())
 
 
 #: Labels of the blocking contour's lines: formulas, or a key of the table (``limit_*``).
@@ -164,28 +210,34 @@ def _limit_text(key: str) -> str:
     return LIMIT_TEXT.get(key) or WORDS(f"limit_{key}")
 
 
-def _contour(d: Drawing, p: gd.GearPair, sa_min: float, eps_min: float) -> None:
+def _contour(p: gd.GearPair, sa_min: float, eps_min: float) -> Diagram:
     """The blocking contour in the plane (x1, x2) around the chosen shifts."""
     lo1 = min(gd.x_no_undercut(p.z1, p.rack), p.x1) - 0.3
     lo2 = min(gd.x_no_undercut(p.z2, p.rack), p.x2) - 0.3
     x1 = np.linspace(lo1, lo1 + 1.8, 37)
     x2 = np.linspace(lo2, lo2 + 1.8, 37)
     lines = gd.blocking_contour(p.z1, p.z2, p.m, x1, x2, p.rack, sa_min, eps_min)
-    x_at, room = 560.0, 150.0
-    ax = Axis.fit("x_1", "1", float(x1[0]), float(x1[-1]), room)
-    ay = Axis.fit("x_2", "1", float(x2[0]), float(x2[-1]), room)
-    g = Graph(d, ax, ay, (x_at - ax.mm(x1[0] - ax.zero), 522.0 + ay.mm(x2[0] - ay.zero)))
-    g.axes()
-    for key, segs in lines.items():
-        if not segs:
-            continue
-        for a1, a2, b1, b2 in segs:
-            g.curve([a1, b1], [a2, b2], "construction")
-        mid = segs[len(segs) // 2]
-        g.point(mid[0], mid[1], _limit_text(key), role="construction")
-    g.point(p.x1, p.x2, "x_1, x_2", role="result", prefer=(1.0, 1.0))
-    top = g.box[1]
-    d.text(WORDS("contour_title"), (x_at - 30.0, top - 15.0), 3.5)
+
+    def extra(g: Graph) -> None:
+        for key, segs in lines.items():
+            if not segs:
+                continue
+            for a1, a2, b1, b2 in segs:
+                g.curve([a1, b1], [a2, b2], "construction")
+            mid = segs[len(segs) // 2]
+            g.point(mid[0], mid[1], _limit_text(key), role="construction")
+        g.point(p.x1, p.x2, "x_1, x_2", role="result", prefer=(1.0, 1.0))
+
+    return Diagram(
+        AxisSpec("x_1", "1", lo=float(x1[0]), hi=float(x1[-1])),
+        AxisSpec("x_2", "1", lo=float(x2[0]), hi=float(x2[-1])),
+        [],
+        extra=extra,
+        least=(110.0, 110.0),
+        prefer=(200.0, 200.0),
+        zero=False,
+        title=WORDS("contour_title"),
+    )
 
 
 def _working(v: Any, tooth: np.ndarray, r_lo: float, r_hi: float, centre: Vec) -> None:
@@ -203,30 +255,33 @@ def _working(v: Any, tooth: np.ndarray, r_lo: float, r_hi: float, centre: Vec) -
             v.polyline(run, "result")
 
 
-def _sliding(d: Drawing, p: gd.GearPair) -> None:
-    x_at, room_w, y_at, room_h = 520.0, 270.0, 190.0, 120.0
+def _sliding(p: gd.GearPair) -> Diagram:
     L = p.N1N2
     rho = np.linspace(0.0, L, 801)[1:-1]
     l1, l2 = p.sliding(rho)
     lo = -4.0
-    ax = Axis.fit("N_1K", WORDS("u_mm"), 0.0, L * MM, room_w)
-    ay = Axis.fit("λ", "1", lo, 1.0, room_h).with_tick(1.0)
-    g = Graph(d, ax, ay, (x_at, y_at - ay.mm(-lo)))
-    g.axes()
+    curves = []
     for lam in (l1, l2):
         keep = lam >= lo
-        g.curve(rho[keep] * MM, lam[keep], "link")
-    for s, name in ((p.N1a, "a"), (p.g_a1, "b")):
-        g.curve([s * MM, s * MM], [lo, 1.0], "locus")
-        g.point(s * MM, 1.0, name, prefer=(1.0, 1.0))
-    top = g.box[1]
-    d.text(WORDS("sliding_title"), (x_at - 15.0, top - 15.0), 3.5)
-    g.factors((x_at - 15.0, top - 10.0))
+        curves.append(Curve(rho[keep] * MM, lam[keep], "link"))
+
+    def extra(g: Graph) -> None:
+        for s, name in ((p.N1a, "a"), (p.g_a1, "b")):
+            g.curve([s * MM, s * MM], [lo, 1.0], "locus")
+            g.point(s * MM, 1.0, name, prefer=(1.0, 1.0))
+
+    return Diagram(
+        AxisSpec("N_1K", WORDS("u_mm"), lo=0.0, hi=L * MM),
+        AxisSpec("λ", "1", lo=lo, hi=1.0, tick=1.0),
+        curves,
+        extra=extra,
+        least=(150.0, 80.0),
+        prefer=(320.0, 150.0),
+        title=WORDS("sliding_title"),
+    )
 
 
-def _pair_tables(d: Drawing, p: gd.GearPair, me: gd.Meshing, r: dict[str, Any]) -> None:
-    x, y = 505.0, 245.0
-
+def _pair_tables(p: gd.GearPair, me: gd.Meshing) -> tuple[Table, Table]:
     def mm(v: float) -> str:
         return fmt_number(v * MM, digits=5)
 
@@ -243,8 +298,7 @@ def _pair_tables(d: Drawing, p: gd.GearPair, me: gd.Meshing, r: dict[str, Any]) 
         [f"s_a, {u}", mm(p.gear1.s_a), mm(p.gear2.s_a)],
         ["|λ|_{max}", fmt_number(p.lambda1, digits=4), fmt_number(p.lambda2, digits=4)],
     ]
-    d.text(WORDS("sizes_title", m=mm(p.m)), (x, y - 2.0), 3.5)
-    _, h = d.table(x, y, (30.0, 40.0, 40.0), rows, row_h=6.0)
+    sizes = Table(rows, widths=(30.0, 40.0, 40.0), title=WORDS("sizes_title", m=mm(p.m)))
     rows2 = [
         [f"a, {u}", mm(p.a)],
         [f"a_w, {u}", mm(p.a_w)],
@@ -255,9 +309,7 @@ def _pair_tables(d: Drawing, p: gd.GearPair, me: gd.Meshing, r: dict[str, Any]) 
         [WORDS("eps_drawn"), fmt_number(me.eps_drawn, digits=4)],
         [f"p_b, {u}", mm(p.p_b)],
     ]
-    d.table(x + 120.0, y, (32.0, 30.0), rows2, row_h=6.0, header=False)
-    y += max(h, 6.0 * len(rows2)) + 8.0
-    d.paragraph(WORDS("pair_note"), x, y, 310.0, 2.5)
+    return sizes, Table(rows2, header=False)
 
 
 # -- the planetary train ---------------------------------------------------------------------------
