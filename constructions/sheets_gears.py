@@ -27,11 +27,9 @@ from geomcad.geom import Arc, Circle, Vec
 from geomcad.kinematics import gear_design as gd
 from geomcad.kinematics.trains import PlanPoint, ray_plan, velocity_plan
 from geomcad.sheet import (
-    Scale,
     TitleBlock,
     Viewport,
     fmt_number,
-    gost_scale_to_fit,
     nice_factor,
     start,
 )
@@ -48,11 +46,6 @@ if TYPE_CHECKING:
 #: The sheets' words, per language (constructions/strings/<lang>/sheets_gears.toml).
 WORDS = Words(__package__, "sheets_gears")
 MM = 1000.0
-#: The planetary scheme's and plan's fields.
-SCHEME = (40.0, 60.0, 330.0, 520.0)
-PLAN = (380.0, 60.0, 620.0, 520.0)
-#: The sheet y of the central axis (r = 0) of the scheme and of the plan.
-Y_BASE = (SCHEME[1] + SCHEME[3]) / 2.0
 #: Width (mm) of the notes under the tables.
 NOTE_W = 200.0
 
@@ -94,7 +87,10 @@ def scales(des: GearsDesign) -> dict[str, float]:
         scale = arrange(tree, Field.of_format("A1"))[mesh].scale
         assert scale is not None
         return {"l": scale.k}
-    return {"l": _scheme_scale(des).k}
+    tree, scheme = _planetary_tree(des)
+    scale = arrange(tree, Field.of_format("A1"))[scheme].scale
+    assert scale is not None
+    return {"l": scale.k}
 
 
 def sheets(sol: Solution) -> list[tuple[str, Any]]:
@@ -341,22 +337,105 @@ def _plan_points(scheme: str, z: tuple[int, ...], m: float) -> tuple[list[PlanPo
     return pts, ("1" if scheme == "B" else "H"), ("A" if scheme == "B" else "B")
 
 
-def _scheme_scale(des: GearsDesign) -> Scale:
+def _radii(des: GearsDesign) -> tuple[float, float]:
+    """The scheme's reach from the central axis (model m; the gears' pitch radii, the planets
+    on their axle, the held gear's web, with room for the symbols) and its length along it."""
     pp = des.spec.planetary
     assert pp is not None
     z = des.candidates[0].z
-    top = pp.m * (max(z) + 2 * max(z[1], z[2] if len(z) > 3 else z[1])) / 2.0 + pp.m * 4.0
-    # the scheme is drawn whole, both halves about the central axis: its height sets the scale
-    return gost_scale_to_fit(top, 2.2 * top, SCHEME[2] - SCHEME[0], SCHEME[3] - SCHEME[1])
+    pts, _, _ = _plan_points(pp.scheme, z, pp.m)
+    aw = next(q.y for q in pts if q.name == "B")
+    planets = [pp.m * q / 2.0 for q in (z[1:3] if len(z) > 3 else z[1:2])]
+    top = max(aw + max(planets), pp.m * z[-1] / 2.0, pp.m * z[0] / 2.0) * 1.12
+    # the scheme is drawn whole, both halves about the central axis
+    return top, 1.1 * top
 
 
-def _planetary_sheet(sol: Solution, des: GearsDesign, no: int) -> Any:
+def _planetary_tree(des: GearsDesign) -> tuple[Tree, Figure]:
+    """The train's sheet as a composition: the scheme and Smirnov's plan at one length scale
+    (the plan on the scheme's radii: both views span the same heights, so their axes line up),
+    then the table of tooth numbers and the notes."""
     pp = des.spec.planetary
     assert pp is not None
     best = des.candidates[0]
     z = best.z
     m = pp.m
-    k = _scheme_scale(des)
+    top, span = _radii(des)
+    pts, start_link, start_pt = _plan_points(pp.scheme, z, m)
+    by = {q.name: q.y for q in pts}
+    scheme = Figure(
+        (-0.1 * span, -top, span * 1.08, top),
+        lambda v: _scheme(v, pp.scheme, z, m, by, span),
+        group="l",
+        weight=2.0,
+    )
+    plan = Figure(
+        (-0.6 * top, -top, 0.6 * top, top),
+        lambda v: _plan(v, pp, pts, start_link, start_pt, by, (0.6 * top, top)),
+        title=WORDS("plan_title"),
+        show_scale=False,
+        group="l",
+    )
+    names = ["z_1", "z_2", "z_3"] if pp.scheme == "A" else ["z_1", "z_2", "z_3", "z_4"]
+    rows = [["", *names, "u", WORDS("h_error")]]
+    for cand in des.candidates:
+        rows.append([
+            WORDS("chosen") if cand is best else "",
+            *[str(q) for q in cand.z],
+            fmt_number(float(cand.u), digits=5),
+            f"{fmt_number(100.0 * (float(cand.u) - pp.ratio) / pp.ratio, digits=3)} %",
+        ])  # fmt: skip
+    widths = (16.0, *(14.0 for _ in names), 22.0, 20.0)
+    teeth = Table(rows, widths=widths, title=WORDS("teeth_title", u=fmt_number(pp.ratio, digits=5)))
+    notes = [Text(paragraph=t, width=NOTE_W) for t in (_willis(des, pts, start_link, start_pt),
+                                                       WORDS("conditions"))]  # fmt: skip
+    # the scheme's title over both views: it states their one length scale
+    views = Row(
+        scheme, plan, title=WORDS("scheme_title", scheme=pp.scheme, k=pp.planets), group="l"
+    )
+    return Row(views, Column(teeth, *notes)), scheme
+
+
+def _angles(
+    pp: Any, pts: list[PlanPoint], start_link: str, start_pt: str, by: dict[str, float], H: float
+) -> tuple[Any, Any, str]:
+    """Smirnov's plan and the angle diagram with the pole distance H (model): (plan, rays,
+    the held gear)."""
+    c = Construction("plan")
+    w_in = 1.0
+    v_start = w_in * (by[start_pt] if start_link == "1" else by["B"])
+    fixed = "3" if pp.scheme == "A" else "4"
+    plan = velocity_plan(c, pts, fixed, start_link, start_pt, v_start)
+    rp = ray_plan(c, plan, Vec(0.0, -H), H, [q for q in plan.lines if q != fixed])
+    return plan, rp, fixed
+
+
+def _willis(des: GearsDesign, pts: list[PlanPoint], start_link: str, start_pt: str) -> str:
+    pp = des.spec.planetary
+    assert pp is not None
+    best = des.candidates[0]
+    by = {q.name: q.y for q in pts}
+    _, rp, _ = _angles(pp, pts, start_link, start_pt, by, 1.0)
+    w_plan = {ln: rp.omega(ln) for ln in rp.ends}
+    out = "H" if pp.scheme in ("A", "B") else "1"
+    inp = "1" if out == "H" else "H"
+    u_plan = w_plan[inp] / w_plan[out] if w_plan.get(out) else math.nan
+    return WORDS(
+        "willis",
+        num=best.u.numerator,
+        den=best.u.denominator,
+        u=fmt_number(float(best.u), digits=6),
+        inp=inp,
+        out=out,
+        u_plan=fmt_number(u_plan, digits=6),
+    )
+
+
+def _planetary_sheet(sol: Solution, des: GearsDesign, no: int) -> Any:
+    tree, scheme = _planetary_tree(des)
+    lay = arrange(tree, Field.of_format("A1"))
+    k = lay[scheme].scale
+    assert k is not None
     tb = TitleBlock(
         title=WORDS("tb_planetary"),
         designation=WORDS("designation"),
@@ -365,27 +444,36 @@ def _planetary_sheet(sol: Solution, des: GearsDesign, no: int) -> Any:
         sheets=no,
     )
     d = start("A1", tb)
-    d.text(WORDS("scheme_title", scheme=pp.scheme, k=pp.planets), (SCHEME[0], 25.0), 5.0)
-    d.text(WORDS("scale_line", label=k.label(), ratio=k.ratio_text()), (SCHEME[0], 32.0), 3.5)
-    pts, start_link, start_pt = _plan_points(pp.scheme, z, m)
-    y_base = Y_BASE
-    v = d.viewport(k, (0.0, 0.0), (SCHEME[0] + 20.0, y_base))
-    by = {q.name: q.y for q in pts}
-    _scheme(v, k, pp.scheme, z, m, by)
-    # Smirnov's plan on the same radii, and the angle diagram
-    c = Construction("plan")
-    w_in = 1.0
-    v_start = w_in * (by[start_pt] if start_link == "1" else by["B"])
-    fixed = "3" if pp.scheme == "A" else "4"
-    plan = velocity_plan(c, pts, fixed, start_link, start_pt, v_start)
+    compose(d, tree, layout=lay)
+    return d.finish()
+
+
+def _plan(
+    pv: Viewport,
+    pp: Any,
+    pts: list[PlanPoint],
+    start_link: str,
+    start_pt: str,
+    by: dict[str, float],
+    room: tuple[float, float],
+) -> None:
+    """Smirnov's plan on the scheme's radii (its axis at the view's centre), the velocity
+    factor written over it, and the angle diagram below the central axis."""
+    d = pv.d
+    k = pv.scale
+    half, top = room
+    half_mm = k.mm(half)
+    px, y_base = pv.p(Vec(0.0, 0.0))
+    H_mm = 35.0
+    plan, rp, fixed = _angles(pp, pts, start_link, start_pt, by, H_mm * k.k)
     vmax = max(abs(e.x) for e in plan.ends.values()) or 1.0
-    kv = nice_factor(vmax, (PLAN[2] - PLAN[0]) / 2.0 - 10.0, "v")
-    px = (PLAN[0] + PLAN[2]) / 2.0
-    pv_at = (px, y_base)
-    pv = d.viewport(Scale(k.k, "l"), (0.0, 0.0), pv_at)
+    kv = nice_factor(vmax, half_mm - 10.0, "v")
+    # the pole distance: the rays' ends within the view
+    wmax = max(abs(rp.omega(ln)) for ln in rp.ends) or 1.0
+    H_mm = min(H_mm, (half_mm - 5.0) * kv.k / (wmax * k.k))
+    H_model = H_mm * k.k
+    d.text(WORDS("plan_factor", label=kv.label()), pv.p(Vec(-half, top)), 3.5)
     sheet_y = {name: pv.p(Vec(0.0, e.y))[1] for name, e in plan.ends.items()}
-    d.text(WORDS("plan_title"), (PLAN[0], 25.0), 5.0)
-    d.text(WORDS("plan_factor", label=kv.label()), (PLAN[0], 32.0), 3.5)
     top_y = min(sheet_y.values()) - 10.0
     d.sheet.add(_line((px, y_base + 5.0), (px, top_y)))
     for name, e in plan.ends.items():
@@ -405,11 +493,7 @@ def _planetary_sheet(sol: Solution, des: GearsDesign, no: int) -> Any:
             d.sheet.add(_line((px + lo_e.x / kv.k, sheet_y_of(pv, lo_e.y)),
                               (px + hi_e.x / kv.k, sheet_y_of(pv, hi_e.y)), "link"))  # fmt: skip
     # the angle diagram below the plan: rays ∥ each link's line from the pole S
-    H_mm = 35.0
     S_sheet = (px, y_base + 15.0 + H_mm)
-    H_model = H_mm * k.k
-    rp = ray_plan(c, plan, Vec(0.0, -H_model - k.model(15.0) - 0.0), H_model,
-                  [q for q in plan.lines if q != fixed])  # fmt: skip
     for link in rp.ends:
         w = rp.omega(link)
         end = (px + w * H_model / kv.k, S_sheet[1] - H_mm)
@@ -417,50 +501,19 @@ def _planetary_sheet(sol: Solution, des: GearsDesign, no: int) -> Any:
         d.label(end, f"ω_{{{link}}}", 2.5)
     d.sheet.add(_line((px - 60.0, S_sheet[1] - H_mm), (px + 60.0, S_sheet[1] - H_mm), "thin"))
     d.label(S_sheet, "S", 3.5)
-    # tables
-    x, y = 640.0, 60.0
-    names = ["z_1", "z_2", "z_3"] if pp.scheme == "A" else ["z_1", "z_2", "z_3", "z_4"]
-    rows = [["", *names, "u", WORDS("h_error")]]
-    for cand in des.candidates:
-        rows.append([
-            WORDS("chosen") if cand is best else "",
-            *[str(q) for q in cand.z],
-            fmt_number(float(cand.u), digits=5),
-            f"{fmt_number(100.0 * (float(cand.u) - pp.ratio) / pp.ratio, digits=3)} %",
-        ])  # fmt: skip
-    d.text(WORDS("teeth_title", u=fmt_number(pp.ratio, digits=5)), (x, y - 2.0), 3.5)
-    widths = (16.0, *(14.0 for _ in names), 22.0, 20.0)
-    _, h = d.table(x, y, widths, rows, row_h=6.0)
-    y += h + 8.0
-    w_plan = {ln: rp.omega(ln) for ln in rp.ends}
-    out = "H" if pp.scheme in ("A", "B") else "1"
-    inp = "1" if out == "H" else "H"
-    u_plan = w_plan[inp] / w_plan[out] if w_plan.get(out) else math.nan
-    willis = WORDS(
-        "willis",
-        num=best.u.numerator,
-        den=best.u.denominator,
-        u=fmt_number(float(best.u), digits=6),
-        inp=inp,
-        out=out,
-        u_plan=fmt_number(u_plan, digits=6),
-    )
-    for text in (willis, WORDS("conditions")):
-        y = d.paragraph(text, x, y, 190.0, 2.5) + 1.0
-    return d.finish()
 
 
 def _scheme(
-    v: Any, k: Scale, scheme: str, z: tuple[int, ...], m: float, by: dict[str, float]
+    v: Viewport, scheme: str, z: tuple[int, ...], m: float, by: dict[str, float], span: float
 ) -> None:
     """The kinematic scheme (GOST 2.770, as in 2013-5): gears as webs with rims at their pitch
     radii, rings as cups, the planet block on its axle in the carrier H, the held gear on the
     frame; both halves about the central axis, the planets drawn in both."""
     from .sheets_2013_5 import _bearing, _gear, _ground, _ring
 
+    k = v.scale
     b = k.model(6.0)
     aw = by["B"]
-    span = k.model(SCHEME[2] - SCHEME[0] - 40.0)
     c1, c2, cH = span * 0.3, span * 0.55, span * 0.85
     v.seg(Vec(-k.model(10.0), 0.0), Vec(span + k.model(10.0), 0.0), "centre")
     r1 = m * z[0] / 2.0
