@@ -225,8 +225,8 @@ def _contour(p: gd.GearPair, sa_min: float, eps_min: float) -> Diagram:
         g.point(p.x1, p.x2, "x_1, x_2", role="result", prefer=(1.0, 1.0))
 
     return Diagram(
-        AxisSpec("x_1", "1", lo=float(x1[0]), hi=float(x1[-1])),
-        AxisSpec("x_2", "1", lo=float(x2[0]), hi=float(x2[-1])),
+        AxisSpec("x_1", "1", "x1", lo=float(x1[0]), hi=float(x1[-1])),
+        AxisSpec("x_2", "1", "x2", lo=float(x2[0]), hi=float(x2[-1])),
         [],
         extra=extra,
         least=(110.0, 110.0),
