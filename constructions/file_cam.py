@@ -473,15 +473,15 @@ def _rocker_measures(spec: CamSpec, A: np.ndarray, r_r: float) -> tuple[float, f
 def build_file(file_id: str, data: Mapping[str, Any]) -> Build:
     spec = read_spec(file_id, data)
     des, c, results = design(spec)
-    scale = _view_k_l(des)
+    scale = _view_k_l(des, results)
     return Build(results, c, [], {"l": scale}, des)
 
 
-def _view_k_l(des: CamDesign) -> float:
+def _view_k_l(des: CamDesign, results: dict[str, Any]) -> float:
     """k_l of the profile view on the sheet (see sheets_cam)."""
     from .sheets_cam import profile_k_l
 
-    return profile_k_l(des)
+    return profile_k_l(des, results)
 
 
 def make_problem(file_id: str, data: dict[str, Any]) -> Problem:

@@ -22,9 +22,11 @@ from geomcad.geom import Vec
 from geomcad.kinematics import cam_design as cd
 from geomcad.kinematics.cams import Follower, at_angles, invert
 from geomcad.kinematics.motion_laws import Motion
-from geomcad.sheet import Drawing, Scale, TitleBlock, fmt_number, gost_scale_to_fit, start
-from geomcad.sheet.graph import Axis, Graph
+from geomcad.sheet import TitleBlock, Viewport, fmt_number, start
+from geomcad.sheet.compose import Choice, Column, Field, Figure, Row, Tree, arrange, compose
+from geomcad.sheet.graph import Graph
 from geomcad.sheet.lang import Words
+from geomcad.sheet.views import AxisSpec, Curve, Diagram, Table, Text
 
 if TYPE_CHECKING:
     from geomcad.problem import Solution
@@ -34,23 +36,10 @@ if TYPE_CHECKING:
 #: The sheet's words, per language (constructions/strings/<lang>/sheets_cam.toml).
 WORDS = Words(__package__, "sheets_cam")
 MM = 1000.0
-#: The profile's field (sheet mm: x0, y0, x1, y1).
-PROFILE = (575.0, 30.0, 830.0, 520.0)
-#: The size diagram's field.
-DIAGRAM = (330.0, 30.0, 560.0, 330.0)
-#: The law graphs: left x of the data origin, room width, room height of each graph.
-GRAPH_X, GRAPH_W, GRAPH_H = 45.0, 250.0, 78.0
-#: The baselines (sheet y of the bottom of each graph's range) of S, S′, S″ and α.
-GRAPH_Y = (118.0, 255.0, 392.0, 545.0)
-PAD = 8.0
-
-
-def profile_k_l(des: CamDesign) -> float:
-    """The largest GOST scale at which the profile (with the follower turned back) fits."""
-    x0, y0, x1, y1 = _profile_box(des)
-    return gost_scale_to_fit(
-        x1 - x0, y1 - y0, PROFILE[2] - PROFILE[0] - 2 * PAD, PROFILE[3] - PROFILE[1] - 2 * PAD
-    ).k
+#: Width (mm) of the notes under the tables.
+NOTE_W = 215.0
+#: The law graphs' least and preferred sizes (mm).
+LAW_LEAST, LAW_PREFER = (150.0, 70.0), (280.0, 120.0)
 
 
 def _profile_box(des: CamDesign) -> tuple[float, float, float, float]:
@@ -66,16 +55,46 @@ def _profile_box(des: CamDesign) -> tuple[float, float, float, float]:
     return min(xs), min(ys), max(xs), max(ys)
 
 
+def _tree(des: CamDesign, results: dict[str, Any]) -> tuple[Tree, Figure]:
+    """The sheet as a composition: the law and its analogues with the pressure angle (or the
+    curvature) in a column, the diagram of the cam's size over the tables and notes, and the
+    profile (the main view, at the GOST scale the layout picks)."""
+    profile = Figure(
+        _profile_box(des),
+        lambda v: _profile(v, des),
+        title=WORDS("profile_title"),
+        margin=8.0,
+        weight=3.0,
+    )
+    laws = Column(*_laws(des), _pressure(des))
+    data, res = _tables(des, results)
+    diagram = _diagram(des)
+    phases, note = _notes(des)
+    tables = Row(data, res)
+    tree = Choice(
+        Row(laws, Column(diagram, tables, phases, note), profile),
+        Row(laws, Column(Row(diagram, profile), Row(tables, Column(phases, note)))),
+    )
+    return tree, profile
+
+
+def profile_k_l(des: CamDesign, results: dict[str, Any]) -> float:
+    """The GOST scale the layout gives the profile (with the follower turned back)."""
+    tree, profile = _tree(des, results)
+    scale = arrange(tree, Field.of_format("A1"))[profile].scale
+    assert scale is not None
+    return scale.k
+
+
 def sheets(sol: Solution) -> list[tuple[str, Any]]:
     des: CamDesign = sol.data
-    k = Scale(sol.scales["l"], "l")
+    tree, profile = _tree(des, sol.results)
+    lay = arrange(tree, Field.of_format("A1"))
+    k = lay[profile].scale
+    assert k is not None
     tb = TitleBlock(title=WORDS("tb_title"), designation=WORDS("designation"), scale=k.ratio_text())
     d = start("A1", tb)
-    _laws(d, des)
-    _pressure(d, des)
-    _diagram(d, des)
-    _profile(d, des, k)
-    _tables(d, des, sol.results)
+    compose(d, tree, layout=lay)
     return [("", d.finish())]
 
 
@@ -90,7 +109,11 @@ def _law_values(des: CamDesign) -> tuple[float, str, str, str, str]:
     return MM, mm, mm, mm, "S"
 
 
-def _laws(d: Drawing, des: CamDesign) -> None:
+def _phi_axis() -> AxisSpec:
+    return AxisSpec("φ", "°", lo=0.0, hi=360.0, tick=30.0)
+
+
+def _laws(des: CamDesign) -> list[Diagram]:
     prog = des.spec.program
     f, u0, u1, u2, sym = _law_values(des)
     phi = np.linspace(0.0, 2.0 * math.pi, 1441)
@@ -107,85 +130,89 @@ def _laws(d: Drawing, des: CamDesign) -> None:
         (f"d{sym}/dφ", u1, m.S1, mid, s1_g, WORDS("what_S1")),
         (f"d^2{sym}/dφ^2", u2, m.S2, mid2, s2_g, WORDS("what_S2")),
     ]
-    for (name, unit, exact, gx, gy, what), y0 in zip(rows, GRAPH_Y[:3], strict=True):
-        vals = exact * f
-        lo = float(min(0.0, np.min(vals), np.min(gy * f) if gy is not None else 0.0))
-        hi = float(max(np.max(vals), np.max(gy * f) if gy is not None else 0.0))
-        ax = Axis.fit("φ", "°", 0.0, 360.0, GRAPH_W).with_tick(30.0)
-        ay = Axis.fit(name, unit, lo, hi, GRAPH_H)
-        # the range's bottom on the band's baseline y0
-        g = Graph(d, ax, ay, (GRAPH_X, y0 - ay.mm(-lo)))
-        g.axes(tick_labels=True)
-        g.curve(np.degrees(phi), vals, "link")
+    out = []
+    for name, unit, exact, gx, gy, what in rows:
+        curves = [Curve(np.degrees(phi), exact * f, "link")]
+        extra = None
         if gy is not None and gx is not None:
-            g.curve(np.degrees(gx), gy * f, "locus")
-            for a, b in zip(np.degrees(gx), gy * f, strict=True):
-                g.point(float(a), float(b))
+            curves.append(Curve(np.degrees(gx), gy * f, "locus", points=True))
         else:
-            for i, (a, b) in enumerate(zip(np.degrees(div.phi), div.S * f, strict=True)):
-                g.ordinate(float(a), float(b), str(i) if i < len(div.phi) - 1 else "")
-        top = g.box[1]
+
+            def extra(g: Graph) -> None:
+                for i, (a, b) in enumerate(zip(np.degrees(div.phi), div.S * f, strict=True)):
+                    g.ordinate(float(a), float(b), str(i) if i < len(div.phi) - 1 else "")
+
         key = "graph_exact" if gy is not None else "graph_plain"
-        d.text(WORDS(key, what=what, name=name), (GRAPH_X - 15.0, top - 15.0), 3.5)
-        g.factors((GRAPH_X - 15.0, top - 10.0))
+        out.append(
+            Diagram(
+                _phi_axis(),
+                AxisSpec(name, unit),
+                curves,
+                extra=extra,
+                least=LAW_LEAST,
+                prefer=LAW_PREFER,
+                title=WORDS(key, what=what, name=name),
+            )
+        )
+    return out
 
 
-def _pressure(d: Drawing, des: CamDesign) -> None:
+def _pressure(des: CamDesign) -> Diagram:
     if des.spec.follower == "flat":
-        _curvature(d, des)
-        return
+        return _curvature(des)
     prof = des.profile
     keep = ~prof.corner
     phi = np.degrees(prof.phi[keep])
     a = np.degrees(prof.pressure[keep])
     amax = max(math.degrees(des.spec.alpha_rise), math.degrees(des.spec.alpha_return))
     lo = float(min(np.min(a), -amax if np.min(a) < 0 else 0.0))
-    ax = Axis.fit("φ", "°", 0.0, 360.0, GRAPH_W).with_tick(30.0)
-    ay = Axis.fit("α", "°", lo, amax, GRAPH_H).with_tick(15.0)
-    g = Graph(d, ax, ay, (GRAPH_X, GRAPH_Y[3] - ay.mm(-lo)))
-    g.axes()
-    g.curve(phi, a, "link")
-    for ph_kind, al in (("rise", des.spec.alpha_rise), ("return", des.spec.alpha_return)):
+    curves = [Curve(phi, a, "link")]
+    for al in (des.spec.alpha_rise, des.spec.alpha_return):
         v = math.degrees(al)
         for sgn in (1.0, -1.0) if lo < 0 else (1.0,):
-            g.curve([0.0, 360.0], [sgn * v, sgn * v], "locus")
-        _ = ph_kind
-    top = g.box[1]
-    d.text(WORDS("pressure_title"), (GRAPH_X - 15.0, top - 15.0), 3.5)
-    g.factors((GRAPH_X - 15.0, top - 10.0))
+            curves.append(Curve([0.0, 360.0], [sgn * v, sgn * v], "locus"))
+    return Diagram(
+        _phi_axis(),
+        AxisSpec("α", "°", lo=lo, hi=amax, tick=15.0),
+        curves,
+        least=LAW_LEAST,
+        prefer=LAW_PREFER,
+        title=WORDS("pressure_title"),
+    )
 
 
-def _curvature(d: Drawing, des: CamDesign) -> None:
+def _curvature(des: CamDesign) -> Diagram:
     """A flat face: the profile's radius of curvature ρ = r0 + S + S″ over the turn, with the
     required smallest one."""
     prog = des.spec.program
     phi = np.linspace(0.0, 2.0 * math.pi, 1441)
     m = prog.motion(phi)
     rho = (des.r0 + m.S + m.S2) * MM
-    ax = Axis.fit("φ", "°", 0.0, 360.0, GRAPH_W).with_tick(30.0)
-    ay = Axis.fit("ρ", WORDS("u_mm"), 0.0, float(np.max(rho)), GRAPH_H)
-    g = Graph(d, ax, ay, (GRAPH_X, GRAPH_Y[3]))
-    g.axes()
-    g.curve(np.degrees(phi), rho, "link")
+    curves = [Curve(np.degrees(phi), rho, "link")]
     if des.spec.rho_allowed > 0.0:
         lim = des.spec.rho_allowed * MM
-        g.curve([0.0, 360.0], [lim, lim], "locus")
-    top = g.box[1]
-    d.text(WORDS("curvature_title"), (GRAPH_X - 15.0, top - 15.0), 3.5)
-    g.factors((GRAPH_X - 15.0, top - 10.0))
+        curves.append(Curve([0.0, 360.0], [lim, lim], "locus"))
+    return Diagram(
+        _phi_axis(),
+        AxisSpec("ρ", WORDS("u_mm"), lo=0.0, hi=float(np.max(rho))),
+        curves,
+        least=LAW_LEAST,
+        prefer=LAW_PREFER,
+        title=WORDS("curvature_title"),
+    )
 
 
 # -- the diagram of the cam's size -----------------------------------------------------------------
 
 
-def _diagram(d: Drawing, des: CamDesign) -> None:
+def _diagram(des: CamDesign) -> Figure:
+    """The diagram the cam's size comes from, as a view at a GOST scale."""
     spec = des.spec
     prog = spec.program
     phi = np.linspace(0.0, 2.0 * math.pi, 1441)
     m = prog.motion(phi)
     O = Vec(*des.centre)  # noqa: E741 (the cam's centre, as the textbooks write it)
     Om = Vec(*des.centre_min)
-    x0, y0, x1, y1 = DIAGRAM
     if spec.follower == "flat":
         pts = np.stack([m.S2, m.S], axis=-1)
         title = WORDS("diagram_flat")
@@ -203,11 +230,19 @@ def _diagram(d: Drawing, des: CamDesign) -> None:
         xs.append(float(A[0]))
         ys.append(float(A[1]))
     w, h = max(xs) - min(xs), max(ys) - min(ys)
-    kl = gost_scale_to_fit(w * 1.1, h * 1.1, x1 - x0 - 2 * PAD, y1 - y0 - 2 * PAD - 10.0)
-    v = d.viewport(kl, ((max(xs) + min(xs)) / 2.0, (max(ys) + min(ys)) / 2.0),
-                   ((x0 + x1) / 2.0, (y0 + 10.0 + y1) / 2.0))  # fmt: skip
-    d.text(title, (x0, y0 - 8.0), 3.5)
-    d.text(WORDS("scale_line", label=kl.label(), ratio=kl.ratio_text()), (x0, y0 - 2.5), 2.5)
+    cx, cy = (max(xs) + min(xs)) / 2.0, (max(ys) + min(ys)) / 2.0
+    box = (cx - 0.55 * w, cy - 0.55 * h, cx + 0.55 * w, cy + 0.55 * h)
+    return Figure(box, lambda v: _diagram_draw(v, des, pts, O, Om, h, max(ys)), title=title)
+
+
+def _diagram_draw(
+    v: Viewport, des: CamDesign, pts: np.ndarray, centre: Vec, Om: Vec, h: float, top_y: float
+) -> None:
+    O = centre  # noqa: E741 (the cam's centre, as the textbooks write it)
+    spec = des.spec
+    prog = spec.program
+    kl = v.scale
+    ys = [top_y]
     v.polyline(list(pts), "link")
     B0 = Vec(0.0, 0.0)
     ext = 0.15 * h
@@ -270,19 +305,17 @@ def _diagram(d: Drawing, des: CamDesign) -> None:
     if (Om - O).norm > kl.model(3.0):
         v.label(Om, "O_{min}", prefer=(1.0, 0.0))
     r0 = fmt_number(des.r0 * MM, digits=4)
-    d.label(v.p((O + B0) * 0.5), f"r_0 = {r0}", 2.5)
+    # beside B0O near O, between it and the S axis (where they are furthest apart)
+    side = 1.0 if O.x <= 0.0 else -1.0
+    v.label(O + (B0 - O) * 0.3, f"r_0 = {r0}", 2.5, prefer=(side, 0.0))
 
 
 # -- the profile -----------------------------------------------------------------------------------
 
 
-def _profile(d: Drawing, des: CamDesign, k: Scale) -> None:
+def _profile(v: Viewport, des: CamDesign) -> None:
     spec = des.spec
-    x0, y0, x1, y1 = PROFILE
-    bx0, by0, bx1, by1 = _profile_box(des)
-    v = d.viewport(k, ((bx0 + bx1) / 2.0, (by0 + by1) / 2.0), ((x0 + x1) / 2.0, (y0 + y1) / 2.0))
-    d.text(WORDS("profile_title"), (x0, y0 - 8.0), 3.5)
-    d.text(WORDS("scale_line", label=k.label(), ratio=k.ratio_text()), (x0, y0 - 2.5), 2.5)
+    k = v.scale
     prof = des.profile
     o = Vec(0.0, 0.0)
     v.centre_cross(o, 6.0)
@@ -321,7 +354,12 @@ def _profile(d: Drawing, des: CamDesign, k: Scale) -> None:
         v.seg(o, B, "construction")
         v.dot(B, "point")
         v.label(B, str(i), height=2.5)
-    v.label(o, "O", prefer=(-1.0, -1.0), clear=1.0)
+    # O in the widest gap between the radius vectors
+    ang = np.sort(np.arctan2(contact[:n, 1], contact[:n, 0]))
+    gaps = np.diff(np.append(ang, ang[0] + 2.0 * math.pi))
+    j = int(np.argmax(gaps))
+    mid = float(ang[j] + gaps[j] / 2.0)
+    v.label(o, "O", prefer=(math.cos(mid), math.sin(mid)), clear=1.0)
 
 
 def _rocker_points(
@@ -338,9 +376,8 @@ def _rocker_points(
 # -- tables ----------------------------------------------------------------------------------------
 
 
-def _tables(d: Drawing, des: CamDesign, r: dict[str, Any]) -> None:
+def _tables(des: CamDesign, r: dict[str, Any]) -> tuple[Table, Table]:
     spec = des.spec
-    x, y = 330.0, 360.0
     u = WORDS("u_mm")
     rows = [
         [WORDS("row_follower"),
@@ -358,10 +395,7 @@ def _tables(d: Drawing, des: CamDesign, r: dict[str, Any]) -> None:
         rows.append([WORDS("row_alpha"), f"{a_r}° / {a_t}°"])
     else:
         rows.append([WORDS("row_rho"), f"{fmt_number(spec.rho_allowed * MM, digits=4)} {u}"])
-    d.text(WORDS("data_title"), (x, y - 2.0), 3.5)
-    _, h = d.table(x, y, (45.0, 80.0), rows, row_h=6.0, header=False)
-    y += h + 10.0
-    x, y = 465.0, 360.0
+    data = Table(rows, header=False, title=WORDS("data_title"))
     res = [[WORDS("h_quantity"), WORDS("h_value")]]
 
     def mm(key: str, name: str) -> None:
@@ -376,12 +410,17 @@ def _tables(d: Drawing, des: CamDesign, r: dict[str, Any]) -> None:
         mm(key, key)
     dg("pressure_angle_max_rise_deg", "alpha_rise")
     dg("pressure_angle_max_return_deg", "alpha_return")
-    d.text(WORDS("results_title"), (x, y - 2.0), 3.5)
-    _, h = d.table(x, y, (45.0, 40.0), res, row_h=6.0)
+    return data, Table(res, title=WORDS("results_title"))
+
+
+def _notes(des: CamDesign) -> tuple[Text, Text]:
+    """The phases and laws of the program, and the note on r_0 and the roller."""
     laws = ", ".join(
         f"{WORDS('phase_' + ph.kind)} {fmt_number(math.degrees(ph.angle), digits=4)}°"
         + (f" ({WORDS('law_' + ph.law)})" if ph.kind != "dwell" else "")
-        for ph in spec.program.phases
+        for ph in des.spec.program.phases
     )
-    y = d.paragraph(WORDS("phases", laws=laws), 330.0, y + h + 10.0, 215.0, 2.5) + 2.0
-    d.paragraph(WORDS("note"), 330.0, y, 215.0, 2.5)
+    return (
+        Text(paragraph=WORDS("phases", laws=laws), width=NOTE_W),
+        Text(paragraph=WORDS("note"), width=NOTE_W),
+    )

@@ -16,6 +16,7 @@ other candidates in a table.
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -26,16 +27,16 @@ from geomcad.geom import Arc, Circle, Vec
 from geomcad.kinematics import gear_design as gd
 from geomcad.kinematics.trains import PlanPoint, ray_plan, velocity_plan
 from geomcad.sheet import (
-    Drawing,
-    Scale,
     TitleBlock,
+    Viewport,
     fmt_number,
-    gost_scale_to_fit,
     nice_factor,
     start,
 )
-from geomcad.sheet.graph import Axis, Graph
+from geomcad.sheet.compose import Column, Field, Figure, Row, Tree, arrange, compose
+from geomcad.sheet.graph import Graph
 from geomcad.sheet.lang import Words
+from geomcad.sheet.views import AxisSpec, Curve, Diagram, Table, Text
 
 if TYPE_CHECKING:
     from geomcad.problem import Solution
@@ -45,14 +46,8 @@ if TYPE_CHECKING:
 #: The sheets' words, per language (constructions/strings/<lang>/sheets_gears.toml).
 WORDS = Words(__package__, "sheets_gears")
 MM = 1000.0
-#: The meshing drawing's field (sheet mm).
-MESH = (35.0, 35.0, 480.0, 575.0)
-#: The planetary scheme's and plan's fields.
-SCHEME = (40.0, 60.0, 330.0, 520.0)
-PLAN = (380.0, 60.0, 620.0, 520.0)
-PAD = 10.0
-#: The sheet y of the central axis (r = 0) of the scheme and of the plan.
-Y_BASE = (SCHEME[1] + SCHEME[3]) / 2.0
+#: Width (mm) of the notes under the tables.
+NOTE_W = 200.0
 
 
 def _mesh_box(p: gd.GearPair, me: gd.Meshing) -> tuple[float, float, float, float]:
@@ -63,13 +58,39 @@ def _mesh_box(p: gd.GearPair, me: gd.Meshing) -> tuple[float, float, float, floa
     return x0, y0, x1, y1
 
 
+def _pair_tree(des: GearsDesign) -> tuple[Tree, Figure]:
+    """The pair's sheet as a composition: the meshing drawing (the main view, its scale by
+    GOST 2.302 chosen by the layout) beside the diagrams, the tables and the note."""
+    p, me = des.pair, des.meshing
+    ps = des.spec.pair
+    assert p is not None and me is not None and ps is not None
+    mesh = Figure(
+        _mesh_box(p, me),
+        lambda v: _mesh(v, p, me),
+        title=WORDS("mesh_title"),
+        title_height=5.0,
+        margin=8.0,
+        weight=3.0,
+    )
+    sliding = _sliding(p)
+    contour = _contour(p, ps.sa_min, ps.eps_min)
+    sizes, params = _pair_tables(p, me)
+    note = Text(paragraph=WORDS("pair_note"), width=NOTE_W)
+    right = Column(sliding, Row(contour, Column(sizes, params, note)))
+    return Row(mesh, right), mesh
+
+
 def scales(des: GearsDesign) -> dict[str, float]:
-    """k_l of the meshing drawing (or of the planetary scheme)."""
+    """k_l of the meshing drawing (or of the planetary scheme), as the layout chooses it."""
     if des.pair is not None and des.meshing is not None:
-        x0, y0, x1, y1 = _mesh_box(des.pair, des.meshing)
-        w, h = MESH[2] - MESH[0] - 2 * PAD, MESH[3] - MESH[1] - 2 * PAD
-        return {"l": gost_scale_to_fit(x1 - x0, y1 - y0, w, h).k}
-    return {"l": _scheme_scale(des).k}
+        tree, mesh = _pair_tree(des)
+        scale = arrange(tree, Field.of_format("A1"))[mesh].scale
+        assert scale is not None
+        return {"l": scale.k}
+    tree, scheme = _planetary_tree(des)
+    scale = arrange(tree, Field.of_format("A1"))[scheme].scale
+    assert scale is not None
+    return {"l": scale.k}
 
 
 def sheets(sol: Solution) -> list[tuple[str, Any]]:
@@ -86,9 +107,10 @@ def sheets(sol: Solution) -> list[tuple[str, Any]]:
 
 
 def _pair_sheet(sol: Solution, des: GearsDesign) -> Any:
-    p, me = des.pair, des.meshing
-    assert p is not None and me is not None
-    k = Scale(sol.scales["l"], "l")
+    tree, mesh = _pair_tree(des)
+    lay = arrange(tree, Field.of_format("A1"))
+    k = lay[mesh].scale
+    assert k is not None
     tb = TitleBlock(
         title=WORDS("tb_pair"),
         designation=WORDS("designation"),
@@ -96,16 +118,25 @@ def _pair_sheet(sol: Solution, des: GearsDesign) -> Any:
         sheets=2 if des.spec.planetary is not None else 1,
     )
     d = start("A1", tb)
-    x0, y0, x1, y1 = _mesh_box(p, me)
-    v = d.viewport(k, ((x0 + x1) / 2.0, (y0 + y1) / 2.0),
-                   ((MESH[0] + MESH[2]) / 2.0, (MESH[1] + MESH[3]) / 2.0))  # fmt: skip
-    d.text(WORDS("mesh_title"), (MESH[0], 15.0), 5.0)
-    d.text(WORDS("scale_line", label=k.label(), ratio=k.ratio_text()), (MESH[0], 22.0), 3.5)
+    compose(d, tree, layout=lay)
+    return d.finish()
+
+
+def _mesh(v: Viewport, p: gd.GearPair, me: gd.Meshing) -> None:
+    """The meshing drawing: the circles as arcs over the drawn field (the tip circle thick only
+    along the drawn teeth, thin beyond them), the teeth, the working parts of the flanks, the
+    line of centres and the line of action with its active part."""
+    x0, _, x1, _ = _mesh_box(p, me)
     O1, O2 = Vec(0.0, 0.0), Vec(0.0, p.a_w)
     half_w = max(abs(x0), abs(x1)) * 1.05
-    for centre, g, d_w, up in ((O1, p.gear1, p.d_w1, True), (O2, p.gear2, p.d_w2, False)):
+    for centre, g, d_w, up, teeth in (
+        (O1, p.gear1, p.d_w1, True, me.teeth1),
+        (O2, p.gear2, p.d_w2, False, me.teeth2),
+    ):
+        mid = math.pi / 2.0 if up else -math.pi / 2.0
+        span = _teeth_span(teeth, centre)
         for r, role in (
-            (g.r_a, "link"),
+            (g.r_a, "thin"),
             (g.d / 2.0, "centre"),
             (d_w / 2.0, "centre"),
             (g.r_b, "thin"),
@@ -114,8 +145,17 @@ def _pair_sheet(sol: Solution, des: GearsDesign) -> Any:
             if r <= half_w:
                 continue
             half = math.asin(min(1.0, half_w / r))
-            mid = math.pi / 2.0 if up else -math.pi / 2.0
-            v.arc(Arc(Circle(centre, r), mid - half, mid + half), role)
+            lo_a, hi_a = mid - half, mid + half
+            if r == g.r_a:
+                # thin beyond the drawn teeth, thick (their tip lands and the gaps) along them
+                t0, t1 = max(lo_a, span[0]), min(hi_a, span[1])
+                if t0 < t1:
+                    v.arc(Arc(Circle(centre, r), t0, t1), "link")
+                    for u0, u1 in ((lo_a, t0), (t1, hi_a)):
+                        if u1 > u0:
+                            v.arc(Arc(Circle(centre, r), u0, u1), "thin")
+                    continue
+            v.arc(Arc(Circle(centre, r), lo_a, hi_a), role)
         v.centre_cross(centre, 6.0)
     for tooth in [*me.teeth1, *me.teeth2]:
         v.polyline(list(tooth), "link")
@@ -126,7 +166,7 @@ def _pair_sheet(sol: Solution, des: GearsDesign) -> Any:
     v.seg(O1, O2, "centre")
     t = Vec(*me.t)
     N1, N2, a, b, P = Vec(*me.N1), Vec(*me.N2), Vec(*me.a), Vec(*me.b), Vec(*me.P)
-    over = k.model(8.0)
+    over = v.scale.model(8.0)
     v.seg(N1 - t * over, N2 + t * over, "construction")
     v.seg(O1, N1, "thin")
     v.seg(O2, N2, "thin")
@@ -136,20 +176,22 @@ def _pair_sheet(sol: Solution, des: GearsDesign) -> Any:
         (N2, "N_2", (1.0, -1.0)),
         (a, "a", (-1.0, -1.0)),
         (b, "b", (1.0, 1.0)),
-        (P, "P", (1.0, -0.3)),
+        (P, "P", (-1.0, 0.5)),
         (O1, "O_1", (-1.0, -1.0)),
         (O2, "O_2", (-1.0, 1.0)),
     ):
         v.dot(q, "point")
         v.label(q, name, prefer=pref)
     a_w = fmt_number(math.degrees(p.alpha_w), digits=4)
-    d.label(v.p(P), f"α_w = {a_w}°", 2.5, prefer=(1.0, 1.0))
-    _sliding(d, p)
-    _pair_tables(d, p, me, sol.results)
-    ps = des.spec.pair
-    assert ps is not None
-    _contour(d, p, ps.sa_min, ps.eps_min)
-    return d.finish()
+    # the angle of action, written along the line of action beyond P (P itself is crowded)
+    v.label(P + t * v.scale.model(30.0), f"α_w = {a_w}°", 2.5, prefer=(1.0, -1.0), clear=0.5)
+
+
+def _teeth_span(teeth: Sequence[np.ndarray], centre: Vec) -> tuple[float, float]:
+    """The angles (from the centre, counter-clockwise) between which the teeth are drawn."""
+    pts = np.vstack(list(teeth))
+    ang = np.arctan2(pts[:, 1] - centre.y, pts[:, 0] - centre.x)
+    return float(ang.min()), float(ang.max())
 
 
 #: Labels of the blocking contour's lines: formulas, or a key of the table (``limit_*``).
@@ -164,28 +206,34 @@ def _limit_text(key: str) -> str:
     return LIMIT_TEXT.get(key) or WORDS(f"limit_{key}")
 
 
-def _contour(d: Drawing, p: gd.GearPair, sa_min: float, eps_min: float) -> None:
+def _contour(p: gd.GearPair, sa_min: float, eps_min: float) -> Diagram:
     """The blocking contour in the plane (x1, x2) around the chosen shifts."""
     lo1 = min(gd.x_no_undercut(p.z1, p.rack), p.x1) - 0.3
     lo2 = min(gd.x_no_undercut(p.z2, p.rack), p.x2) - 0.3
     x1 = np.linspace(lo1, lo1 + 1.8, 37)
     x2 = np.linspace(lo2, lo2 + 1.8, 37)
     lines = gd.blocking_contour(p.z1, p.z2, p.m, x1, x2, p.rack, sa_min, eps_min)
-    x_at, room = 560.0, 150.0
-    ax = Axis.fit("x_1", "1", float(x1[0]), float(x1[-1]), room)
-    ay = Axis.fit("x_2", "1", float(x2[0]), float(x2[-1]), room)
-    g = Graph(d, ax, ay, (x_at - ax.mm(x1[0] - ax.zero), 522.0 + ay.mm(x2[0] - ay.zero)))
-    g.axes()
-    for key, segs in lines.items():
-        if not segs:
-            continue
-        for a1, a2, b1, b2 in segs:
-            g.curve([a1, b1], [a2, b2], "construction")
-        mid = segs[len(segs) // 2]
-        g.point(mid[0], mid[1], _limit_text(key), role="construction")
-    g.point(p.x1, p.x2, "x_1, x_2", role="result", prefer=(1.0, 1.0))
-    top = g.box[1]
-    d.text(WORDS("contour_title"), (x_at - 30.0, top - 15.0), 3.5)
+
+    def extra(g: Graph) -> None:
+        for key, segs in lines.items():
+            if not segs:
+                continue
+            for a1, a2, b1, b2 in segs:
+                g.curve([a1, b1], [a2, b2], "construction")
+            mid = segs[len(segs) // 2]
+            g.point(mid[0], mid[1], _limit_text(key), role="construction")
+        g.point(p.x1, p.x2, "x_1, x_2", role="result", prefer=(1.0, 1.0))
+
+    return Diagram(
+        AxisSpec("x_1", "1", "x1", lo=float(x1[0]), hi=float(x1[-1])),
+        AxisSpec("x_2", "1", "x2", lo=float(x2[0]), hi=float(x2[-1])),
+        [],
+        extra=extra,
+        least=(110.0, 110.0),
+        prefer=(200.0, 200.0),
+        zero=False,
+        title=WORDS("contour_title"),
+    )
 
 
 def _working(v: Any, tooth: np.ndarray, r_lo: float, r_hi: float, centre: Vec) -> None:
@@ -203,30 +251,33 @@ def _working(v: Any, tooth: np.ndarray, r_lo: float, r_hi: float, centre: Vec) -
             v.polyline(run, "result")
 
 
-def _sliding(d: Drawing, p: gd.GearPair) -> None:
-    x_at, room_w, y_at, room_h = 520.0, 270.0, 190.0, 120.0
+def _sliding(p: gd.GearPair) -> Diagram:
     L = p.N1N2
     rho = np.linspace(0.0, L, 801)[1:-1]
     l1, l2 = p.sliding(rho)
     lo = -4.0
-    ax = Axis.fit("N_1K", WORDS("u_mm"), 0.0, L * MM, room_w)
-    ay = Axis.fit("λ", "1", lo, 1.0, room_h).with_tick(1.0)
-    g = Graph(d, ax, ay, (x_at, y_at - ay.mm(-lo)))
-    g.axes()
+    curves = []
     for lam in (l1, l2):
         keep = lam >= lo
-        g.curve(rho[keep] * MM, lam[keep], "link")
-    for s, name in ((p.N1a, "a"), (p.g_a1, "b")):
-        g.curve([s * MM, s * MM], [lo, 1.0], "locus")
-        g.point(s * MM, 1.0, name, prefer=(1.0, 1.0))
-    top = g.box[1]
-    d.text(WORDS("sliding_title"), (x_at - 15.0, top - 15.0), 3.5)
-    g.factors((x_at - 15.0, top - 10.0))
+        curves.append(Curve(rho[keep] * MM, lam[keep], "link"))
+
+    def extra(g: Graph) -> None:
+        for s, name in ((p.N1a, "a"), (p.g_a1, "b")):
+            g.curve([s * MM, s * MM], [lo, 1.0], "locus")
+            g.point(s * MM, 1.0, name, prefer=(1.0, 1.0))
+
+    return Diagram(
+        AxisSpec("N_1K", WORDS("u_mm"), lo=0.0, hi=L * MM),
+        AxisSpec("λ", "1", lo=lo, hi=1.0, tick=1.0),
+        curves,
+        extra=extra,
+        least=(150.0, 80.0),
+        prefer=(320.0, 150.0),
+        title=WORDS("sliding_title"),
+    )
 
 
-def _pair_tables(d: Drawing, p: gd.GearPair, me: gd.Meshing, r: dict[str, Any]) -> None:
-    x, y = 505.0, 245.0
-
+def _pair_tables(p: gd.GearPair, me: gd.Meshing) -> tuple[Table, Table]:
     def mm(v: float) -> str:
         return fmt_number(v * MM, digits=5)
 
@@ -243,8 +294,7 @@ def _pair_tables(d: Drawing, p: gd.GearPair, me: gd.Meshing, r: dict[str, Any]) 
         [f"s_a, {u}", mm(p.gear1.s_a), mm(p.gear2.s_a)],
         ["|λ|_{max}", fmt_number(p.lambda1, digits=4), fmt_number(p.lambda2, digits=4)],
     ]
-    d.text(WORDS("sizes_title", m=mm(p.m)), (x, y - 2.0), 3.5)
-    _, h = d.table(x, y, (30.0, 40.0, 40.0), rows, row_h=6.0)
+    sizes = Table(rows, widths=(30.0, 40.0, 40.0), title=WORDS("sizes_title", m=mm(p.m)))
     rows2 = [
         [f"a, {u}", mm(p.a)],
         [f"a_w, {u}", mm(p.a_w)],
@@ -255,9 +305,7 @@ def _pair_tables(d: Drawing, p: gd.GearPair, me: gd.Meshing, r: dict[str, Any]) 
         [WORDS("eps_drawn"), fmt_number(me.eps_drawn, digits=4)],
         [f"p_b, {u}", mm(p.p_b)],
     ]
-    d.table(x + 120.0, y, (32.0, 30.0), rows2, row_h=6.0, header=False)
-    y += max(h, 6.0 * len(rows2)) + 8.0
-    d.paragraph(WORDS("pair_note"), x, y, 310.0, 2.5)
+    return sizes, Table(rows2, header=False)
 
 
 # -- the planetary train ---------------------------------------------------------------------------
@@ -289,22 +337,105 @@ def _plan_points(scheme: str, z: tuple[int, ...], m: float) -> tuple[list[PlanPo
     return pts, ("1" if scheme == "B" else "H"), ("A" if scheme == "B" else "B")
 
 
-def _scheme_scale(des: GearsDesign) -> Scale:
+def _radii(des: GearsDesign) -> tuple[float, float]:
+    """The scheme's reach from the central axis (model m; the gears' pitch radii, the planets
+    on their axle, the held gear's web, with room for the symbols) and its length along it."""
     pp = des.spec.planetary
     assert pp is not None
     z = des.candidates[0].z
-    top = pp.m * (max(z) + 2 * max(z[1], z[2] if len(z) > 3 else z[1])) / 2.0 + pp.m * 4.0
-    # the scheme is drawn whole, both halves about the central axis: its height sets the scale
-    return gost_scale_to_fit(top, 2.2 * top, SCHEME[2] - SCHEME[0], SCHEME[3] - SCHEME[1])
+    pts, _, _ = _plan_points(pp.scheme, z, pp.m)
+    aw = next(q.y for q in pts if q.name == "B")
+    planets = [pp.m * q / 2.0 for q in (z[1:3] if len(z) > 3 else z[1:2])]
+    top = max(aw + max(planets), pp.m * z[-1] / 2.0, pp.m * z[0] / 2.0) * 1.12
+    # the scheme is drawn whole, both halves about the central axis
+    return top, 1.1 * top
 
 
-def _planetary_sheet(sol: Solution, des: GearsDesign, no: int) -> Any:
+def _planetary_tree(des: GearsDesign) -> tuple[Tree, Figure]:
+    """The train's sheet as a composition: the scheme and Smirnov's plan at one length scale
+    (the plan on the scheme's radii: both views span the same heights, so their axes line up),
+    then the table of tooth numbers and the notes."""
     pp = des.spec.planetary
     assert pp is not None
     best = des.candidates[0]
     z = best.z
     m = pp.m
-    k = _scheme_scale(des)
+    top, span = _radii(des)
+    pts, start_link, start_pt = _plan_points(pp.scheme, z, m)
+    by = {q.name: q.y for q in pts}
+    scheme = Figure(
+        (-0.1 * span, -top, span * 1.08, top),
+        lambda v: _scheme(v, pp.scheme, z, m, by, span),
+        group="l",
+        weight=2.0,
+    )
+    plan = Figure(
+        (-0.6 * top, -top, 0.6 * top, top),
+        lambda v: _plan(v, pp, pts, start_link, start_pt, by, (0.6 * top, top)),
+        title=WORDS("plan_title"),
+        show_scale=False,
+        group="l",
+    )
+    names = ["z_1", "z_2", "z_3"] if pp.scheme == "A" else ["z_1", "z_2", "z_3", "z_4"]
+    rows = [["", *names, "u", WORDS("h_error")]]
+    for cand in des.candidates:
+        rows.append([
+            WORDS("chosen") if cand is best else "",
+            *[str(q) for q in cand.z],
+            fmt_number(float(cand.u), digits=5),
+            f"{fmt_number(100.0 * (float(cand.u) - pp.ratio) / pp.ratio, digits=3)} %",
+        ])  # fmt: skip
+    widths = (16.0, *(14.0 for _ in names), 22.0, 20.0)
+    teeth = Table(rows, widths=widths, title=WORDS("teeth_title", u=fmt_number(pp.ratio, digits=5)))
+    notes = [Text(paragraph=t, width=NOTE_W) for t in (_willis(des, pts, start_link, start_pt),
+                                                       WORDS("conditions"))]  # fmt: skip
+    # the scheme's title over both views: it states their one length scale
+    views = Row(
+        scheme, plan, title=WORDS("scheme_title", scheme=pp.scheme, k=pp.planets), group="l"
+    )
+    return Row(views, Column(teeth, *notes)), scheme
+
+
+def _angles(
+    pp: Any, pts: list[PlanPoint], start_link: str, start_pt: str, by: dict[str, float], H: float
+) -> tuple[Any, Any, str]:
+    """Smirnov's plan and the angle diagram with the pole distance H (model): (plan, rays,
+    the held gear)."""
+    c = Construction("plan")
+    w_in = 1.0
+    v_start = w_in * (by[start_pt] if start_link == "1" else by["B"])
+    fixed = "3" if pp.scheme == "A" else "4"
+    plan = velocity_plan(c, pts, fixed, start_link, start_pt, v_start)
+    rp = ray_plan(c, plan, Vec(0.0, -H), H, [q for q in plan.lines if q != fixed])
+    return plan, rp, fixed
+
+
+def _willis(des: GearsDesign, pts: list[PlanPoint], start_link: str, start_pt: str) -> str:
+    pp = des.spec.planetary
+    assert pp is not None
+    best = des.candidates[0]
+    by = {q.name: q.y for q in pts}
+    _, rp, _ = _angles(pp, pts, start_link, start_pt, by, 1.0)
+    w_plan = {ln: rp.omega(ln) for ln in rp.ends}
+    out = "H" if pp.scheme in ("A", "B") else "1"
+    inp = "1" if out == "H" else "H"
+    u_plan = w_plan[inp] / w_plan[out] if w_plan.get(out) else math.nan
+    return WORDS(
+        "willis",
+        num=best.u.numerator,
+        den=best.u.denominator,
+        u=fmt_number(float(best.u), digits=6),
+        inp=inp,
+        out=out,
+        u_plan=fmt_number(u_plan, digits=6),
+    )
+
+
+def _planetary_sheet(sol: Solution, des: GearsDesign, no: int) -> Any:
+    tree, scheme = _planetary_tree(des)
+    lay = arrange(tree, Field.of_format("A1"))
+    k = lay[scheme].scale
+    assert k is not None
     tb = TitleBlock(
         title=WORDS("tb_planetary"),
         designation=WORDS("designation"),
@@ -313,27 +444,36 @@ def _planetary_sheet(sol: Solution, des: GearsDesign, no: int) -> Any:
         sheets=no,
     )
     d = start("A1", tb)
-    d.text(WORDS("scheme_title", scheme=pp.scheme, k=pp.planets), (SCHEME[0], 25.0), 5.0)
-    d.text(WORDS("scale_line", label=k.label(), ratio=k.ratio_text()), (SCHEME[0], 32.0), 3.5)
-    pts, start_link, start_pt = _plan_points(pp.scheme, z, m)
-    y_base = Y_BASE
-    v = d.viewport(k, (0.0, 0.0), (SCHEME[0] + 20.0, y_base))
-    by = {q.name: q.y for q in pts}
-    _scheme(v, k, pp.scheme, z, m, by)
-    # Smirnov's plan on the same radii, and the angle diagram
-    c = Construction("plan")
-    w_in = 1.0
-    v_start = w_in * (by[start_pt] if start_link == "1" else by["B"])
-    fixed = "3" if pp.scheme == "A" else "4"
-    plan = velocity_plan(c, pts, fixed, start_link, start_pt, v_start)
+    compose(d, tree, layout=lay)
+    return d.finish()
+
+
+def _plan(
+    pv: Viewport,
+    pp: Any,
+    pts: list[PlanPoint],
+    start_link: str,
+    start_pt: str,
+    by: dict[str, float],
+    room: tuple[float, float],
+) -> None:
+    """Smirnov's plan on the scheme's radii (its axis at the view's centre), the velocity
+    factor written over it, and the angle diagram below the central axis."""
+    d = pv.d
+    k = pv.scale
+    half, top = room
+    half_mm = k.mm(half)
+    px, y_base = pv.p(Vec(0.0, 0.0))
+    H_mm = 35.0
+    plan, rp, fixed = _angles(pp, pts, start_link, start_pt, by, H_mm * k.k)
     vmax = max(abs(e.x) for e in plan.ends.values()) or 1.0
-    kv = nice_factor(vmax, (PLAN[2] - PLAN[0]) / 2.0 - 10.0, "v")
-    px = (PLAN[0] + PLAN[2]) / 2.0
-    pv_at = (px, y_base)
-    pv = d.viewport(Scale(k.k, "l"), (0.0, 0.0), pv_at)
+    kv = nice_factor(vmax, half_mm - 10.0, "v")
+    # the pole distance: the rays' ends within the view
+    wmax = max(abs(rp.omega(ln)) for ln in rp.ends) or 1.0
+    H_mm = min(H_mm, (half_mm - 5.0) * kv.k / (wmax * k.k))
+    H_model = H_mm * k.k
+    d.text(WORDS("plan_factor", label=kv.label()), pv.p(Vec(-half, top)), 3.5)
     sheet_y = {name: pv.p(Vec(0.0, e.y))[1] for name, e in plan.ends.items()}
-    d.text(WORDS("plan_title"), (PLAN[0], 25.0), 5.0)
-    d.text(WORDS("plan_factor", label=kv.label()), (PLAN[0], 32.0), 3.5)
     top_y = min(sheet_y.values()) - 10.0
     d.sheet.add(_line((px, y_base + 5.0), (px, top_y)))
     for name, e in plan.ends.items():
@@ -353,11 +493,7 @@ def _planetary_sheet(sol: Solution, des: GearsDesign, no: int) -> Any:
             d.sheet.add(_line((px + lo_e.x / kv.k, sheet_y_of(pv, lo_e.y)),
                               (px + hi_e.x / kv.k, sheet_y_of(pv, hi_e.y)), "link"))  # fmt: skip
     # the angle diagram below the plan: rays ∥ each link's line from the pole S
-    H_mm = 35.0
     S_sheet = (px, y_base + 15.0 + H_mm)
-    H_model = H_mm * k.k
-    rp = ray_plan(c, plan, Vec(0.0, -H_model - k.model(15.0) - 0.0), H_model,
-                  [q for q in plan.lines if q != fixed])  # fmt: skip
     for link in rp.ends:
         w = rp.omega(link)
         end = (px + w * H_model / kv.k, S_sheet[1] - H_mm)
@@ -365,50 +501,19 @@ def _planetary_sheet(sol: Solution, des: GearsDesign, no: int) -> Any:
         d.label(end, f"ω_{{{link}}}", 2.5)
     d.sheet.add(_line((px - 60.0, S_sheet[1] - H_mm), (px + 60.0, S_sheet[1] - H_mm), "thin"))
     d.label(S_sheet, "S", 3.5)
-    # tables
-    x, y = 640.0, 60.0
-    names = ["z_1", "z_2", "z_3"] if pp.scheme == "A" else ["z_1", "z_2", "z_3", "z_4"]
-    rows = [["", *names, "u", WORDS("h_error")]]
-    for cand in des.candidates:
-        rows.append([
-            WORDS("chosen") if cand is best else "",
-            *[str(q) for q in cand.z],
-            fmt_number(float(cand.u), digits=5),
-            f"{fmt_number(100.0 * (float(cand.u) - pp.ratio) / pp.ratio, digits=3)} %",
-        ])  # fmt: skip
-    d.text(WORDS("teeth_title", u=fmt_number(pp.ratio, digits=5)), (x, y - 2.0), 3.5)
-    widths = (16.0, *(14.0 for _ in names), 22.0, 20.0)
-    _, h = d.table(x, y, widths, rows, row_h=6.0)
-    y += h + 8.0
-    w_plan = {ln: rp.omega(ln) for ln in rp.ends}
-    out = "H" if pp.scheme in ("A", "B") else "1"
-    inp = "1" if out == "H" else "H"
-    u_plan = w_plan[inp] / w_plan[out] if w_plan.get(out) else math.nan
-    willis = WORDS(
-        "willis",
-        num=best.u.numerator,
-        den=best.u.denominator,
-        u=fmt_number(float(best.u), digits=6),
-        inp=inp,
-        out=out,
-        u_plan=fmt_number(u_plan, digits=6),
-    )
-    for text in (willis, WORDS("conditions")):
-        y = d.paragraph(text, x, y, 190.0, 2.5) + 1.0
-    return d.finish()
 
 
 def _scheme(
-    v: Any, k: Scale, scheme: str, z: tuple[int, ...], m: float, by: dict[str, float]
+    v: Viewport, scheme: str, z: tuple[int, ...], m: float, by: dict[str, float], span: float
 ) -> None:
     """The kinematic scheme (GOST 2.770, as in 2013-5): gears as webs with rims at their pitch
     radii, rings as cups, the planet block on its axle in the carrier H, the held gear on the
     frame; both halves about the central axis, the planets drawn in both."""
     from .sheets_2013_5 import _bearing, _gear, _ground, _ring
 
+    k = v.scale
     b = k.model(6.0)
     aw = by["B"]
-    span = k.model(SCHEME[2] - SCHEME[0] - 40.0)
     c1, c2, cH = span * 0.3, span * 0.55, span * 0.85
     v.seg(Vec(-k.model(10.0), 0.0), Vec(span + k.model(10.0), 0.0), "centre")
     r1 = m * z[0] / 2.0
