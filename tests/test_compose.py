@@ -45,12 +45,20 @@ def _overlap(a: tuple[float, ...], b: tuple[float, ...]) -> bool:
 @pytest.mark.parametrize(
     ("raw", "series", "k"),
     [(0.0023, "gost", 0.0025), (0.0026, "gost", 0.004), (0.03, "nice", 0.04),
-     (0.03, "plan", 0.05), (0.04, "nice", 0.04)],
+     (0.03, "plan", 0.05), (0.04, "nice", 0.04), (0.7404, "free", 0.75), (0.02, "free", 0.02)],
 )  # fmt: skip
 def test_round_scale_takes_the_largest_drawing_of_the_series(
     raw: float, series: str, k: float
 ) -> None:
     assert round_scale(raw, "l", series).k == pytest.approx(k)  # type: ignore[arg-type]
+
+
+def test_text_paragraphs_begin_on_new_lines_their_rest_indented() -> None:
+    from geomcad.sheet.views import Text
+
+    t = Text(paragraphs=["1. " + "word " * 30, "2. short"], width=60.0, indent=4.0)
+    assert len(t.lines) >= 3 and t.lines[-1] == "2. short"
+    assert t.shifts[0] == 0.0 and t.shifts[1] == 4.0 and t.shifts[-1] == 0.0
 
 
 def test_round_scale_refuses_no_room() -> None:

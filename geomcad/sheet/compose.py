@@ -59,7 +59,7 @@ Box = tuple[float, float, float, float]
 #: A model rectangle: x0, y0, x1, y1 in model units, y up.
 Extent = tuple[float, float, float, float]
 #: The scale series of a scaled view.
-Series = Literal["gost", "nice", "plan"]
+Series = Literal["gost", "nice", "plan", "free"]
 Kind = Literal["scaled", "fixed", "stretch"]
 
 #: The gap between neighbouring boxes (mm).
@@ -86,10 +86,14 @@ def round_scale(raw: float, q: Quantity, series: Series) -> Scale:
     largest drawing of the series that fits.
 
     ``"gost"`` takes GOST 2.302's ratios (for lengths; ``raw`` in m/mm); ``"nice"`` the
-    mantissas 1, 2, 2.5, 4, 5; ``"plan"`` 1, 2, 5.
+    mantissas 1, 2, 2.5, 4, 5; ``"plan"`` 1, 2, 5; ``"free"`` (a drawing not to scale, whose
+    scale is not written) ``raw`` itself, to two significant digits.
     """
     if not (0.0 < raw < math.inf):
         raise ParameterError(f"k_{q}", raw, "a scale factor must be finite and positive")
+    if series == "free":
+        e = math.floor(math.log10(raw)) - 1
+        return Scale(math.ceil(raw / 10.0**e * (1 - 1e-12)) * 10.0**e, q)
     if series == "gost":
         # k = 1/1000 m per mm of a ratio r: the smallest k ≥ raw is the largest r ≤ 1/(1000 raw)
         for k in _GOST_K:

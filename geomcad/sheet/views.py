@@ -499,7 +499,8 @@ def name_markup(name: str) -> str:
 
 
 class Text(View):
-    """Lines of text (label markup), or one ``paragraph`` wrapped to ``width`` mm."""
+    """Lines of text (label markup), or one ``paragraph`` (or several, ``paragraphs``, each
+    begun on a new line) wrapped to ``width`` mm, their later lines indented by ``indent``."""
 
     def __init__(
         self,
@@ -508,6 +509,7 @@ class Text(View):
         width: float = 0.0,
         height: float = 2.5,
         indent: float = 0.0,
+        paragraphs: Sequence[str] = (),
         **kw: Any,
     ) -> None:
         kw.setdefault("margin", 1.0)
@@ -517,6 +519,12 @@ class Text(View):
         self.lines = list(lines)
         if paragraph:
             self.lines += wrap(paragraph, width, height, indent)
+        #: x offsets (mm) of the lines: the continuation lines of ``paragraphs`` indented
+        self.shifts = [0.0] * len(self.lines)
+        for par in paragraphs:
+            wrapped = wrap(par, width, height, indent)
+            self.lines += wrapped
+            self.shifts += [0.0] + [indent] * (len(wrapped) - 1)
         self.width = width or max((text_width(t, height) for t in self.lines), default=0.0)
 
     def natural(self) -> tuple[float, float] | None:
@@ -525,8 +533,8 @@ class Text(View):
 
     def draw(self, d: Drawing, at: Placed) -> None:
         lead = self.height * LINE_SPACING
-        for i, t in enumerate(self.lines):
-            d.text(t, (at.inner[0], at.inner[1] + self.height + i * lead), self.height,
+        for i, (t, dx) in enumerate(zip(self.lines, self.shifts, strict=True)):
+            d.text(t, (at.inner[0] + dx, at.inner[1] + self.height + i * lead), self.height,
                    role="title")  # fmt: skip
 
 
