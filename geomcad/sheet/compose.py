@@ -519,10 +519,15 @@ class _Leaf:
             nat = _nat(v)
             assert nat is not None
             w, h = _room(v, cell)
-            bad += max(0.0, nat[0] - w) + max(0.0, nat[1] - h)
+            # (a spacer keeps room free of views: the form's boxes may fill it)
+            if not isinstance(v, Spacer):
+                bad += max(0.0, nat[0] - w) + max(0.0, nat[1] - h)
         elif kind == "stretch":
             f = _stretch_fill(v, cell)
             w, h = _room(v, cell)
+            # a stretch view narrower or lower than its least is as bad as a fixed one
+            least = v.stretch()[0]
+            bad += max(0.0, least[0] - w) + max(0.0, least[1] - h)
             uw, uh = v.used(w, h) if f > 0.0 else (0.0, 0.0)
             area = max(uw, 0.0) * max(uh, 0.0)
         else:
@@ -613,7 +618,10 @@ def _split(
     pos = x0 if horizontal else y0
     for i, it in enumerate(node.items):
         ln = fixed[i] if i in fixed else max(share, 0.0) * weights[i] / total_w
-        cell = (pos, y0, pos + ln, y1) if horizontal else (x0, pos, x1, pos + ln)
+        # fixed children that overrun the box are cut back at its end (and count as not
+        # fitting), not laid past it
+        end = min(pos + ln, x1 if horizontal else y1)
+        cell = (pos, y0, end, y1) if horizontal else (x0, pos, x1, end)
         out.append((it, cell))
         pos += ln + node.gap
     return out

@@ -130,10 +130,17 @@ class Scheme(View):
 class PlanView(View):
     """A velocity (``plan.kind`` "v") or acceleration ("a") plan at a factor 1, 2, 2.5, 4,
     5 × 10^n; all plans of one ``group`` share one factor. ``title`` defaults to the plan's
-    kind in words ("План скоростей"); ``extra(viewport)`` draws more on it."""
+    kind in words ("План скоростей"); ``extra(viewport)`` draws more on it; a vector shorter
+    than ``min_mm`` on the paper is drawn without its arrow, the construction lines run on
+    ``over_mm`` past their points (as :func:`plan_lines`)."""
 
     def __init__(
-        self, plan: Plan, extra: Callable[[Viewport], None] | None = None, **kw: Any
+        self,
+        plan: Plan,
+        extra: Callable[[Viewport], None] | None = None,
+        min_mm: float = 0.5,
+        over_mm: float = LINE_OVER_MM,
+        **kw: Any,
     ) -> None:
         kw.setdefault("title", WORDS(f"plan_{plan.kind}"))
         kw.setdefault("quantity", plan.kind)
@@ -142,6 +149,8 @@ class PlanView(View):
         super().__init__(**kw)
         self.plan = plan
         self.extra = extra
+        self.min_mm = min_mm
+        self.over_mm = over_mm
 
     def extent(self) -> Extent | None:
         return self.plan.extent()
@@ -152,7 +161,7 @@ class PlanView(View):
 
     def draw(self, d: Drawing, at: Placed) -> None:
         assert at.viewport is not None
-        plan_lines(at.viewport, self.plan)
+        plan_lines(at.viewport, self.plan, self.min_mm, self.over_mm)
         if self.extra is not None:
             self.extra(at.viewport)
 
