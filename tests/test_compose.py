@@ -195,3 +195,18 @@ def test_linkage_sheet_states_the_scales_verify_reads() -> None:
     assert f"μV = {fmt_number(sol.scales['v'])} (м/с)/мм" in texts
     assert f"μa = {fmt_number(sol.scales['a'])} (м/с²)/мм" in texts
     assert f"μl = {fmt_number(sol.scales['l'])} м/мм" in texts
+
+
+def test_a_stretch_view_keeps_its_least_and_fixed_children_stay_in_their_box() -> None:
+    """The search does not squeeze a diagram below its least size for a larger figure, and a
+    column of tables taller than its box is cut back at the box's end (it counts as not
+    fitting), not laid past it."""
+    dg = Diagram(AxisSpec("x", "m"), AxisSpec("y", "N"), [Curve([0, 1, 2], [0, 1, 0])],
+                 least=(150.0, 60.0), prefer=(200.0, 80.0))  # fmt: skip
+    big = _fig(1.0, 1.0, weight=4.0)
+    lay = arrange(Row(dg, big), Field.of_format("A3"))
+    assert lay[dg].box[2] - lay[dg].box[0] >= 150.0
+    tall = [Table([["a", "b"]] * 12, title=f"T{i}") for i in range(4)]
+    field = Field.of_format("A4")
+    lay = arrange(Row(_fig(0.1, 0.1), Column(*tall)), field)
+    assert all(lay[t].box[3] <= field.box[3] + 1e-9 for t in tall)
