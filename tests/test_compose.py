@@ -210,3 +210,11 @@ def test_a_stretch_view_keeps_its_least_and_fixed_children_stay_in_their_box() -
     field = Field.of_format("A4")
     lay = arrange(Row(_fig(0.1, 0.1), Column(*tall)), field)
     assert all(lay[t].box[3] <= field.box[3] + 1e-9 for t in tall)
+
+
+def test_least_k_keeps_a_scale_the_task_fixes() -> None:
+    """A view's ``least_k`` holds its scale at or above it even where a finer one fits."""
+    free, held = _fig(0.1, 0.1), _fig(0.1, 0.1, least_k=0.005)
+    lay = arrange(Row(free, held), Field.of_format("A3"))
+    assert lay[free].scale is not None and lay[free].scale.k < 0.005
+    assert lay[held].scale is not None and lay[held].scale.k == pytest.approx(0.005)

@@ -124,7 +124,8 @@ class View:
     is rounded. ``margin`` (mm) is kept clear round the drawing for its labels and symbols;
     ``readable`` (model units) is the shortest length that must be read on the drawing (a
     vector), drawn at least ``readable_mm`` long when the field allows it. ``weight`` is the
-    view's share in the search for the splits (a view of weight 2 counts as two).
+    view's share in the search for the splits (a view of weight 2 counts as two). ``least_k``
+    (model units per mm): the scale is never finer than this (a scale the task fixes).
     """
 
     def __init__(
@@ -140,6 +141,7 @@ class View:
         readable: float = 0.0,
         readable_mm: float = 7.0,
         weight: float = 1.0,
+        least_k: float = 0.0,
     ) -> None:
         self.title = title
         self.group = group
@@ -151,6 +153,7 @@ class View:
         self.readable = readable
         self.readable_mm = readable_mm
         self.weight = weight
+        self.least_k = least_k
         self._title_w: float | None = None
         self._memo: dict[object, Any] = {}
 
@@ -462,14 +465,15 @@ def _content(ext: Extent) -> tuple[float, float]:
 
 
 def _raw_k(v: View, cell: Box) -> float:
-    """The continuous scale at which the view's extent just fits the cell (inf: no room)."""
+    """The continuous scale at which the view's extent just fits the cell (inf: no room), never
+    finer than the view's ``least_k``."""
     ext = _ext(v)
     assert ext is not None
     w, h = _room(v, cell)
     cw, ch = ext[2] - ext[0], ext[3] - ext[1]
     if w <= 1.0 or h <= 1.0:
         return math.inf
-    need = max(cw / w, ch / h)
+    need = max(cw / w, ch / h, v.least_k)
     return need if need > 0.0 else 0.0
 
 
