@@ -1,7 +1,8 @@
 """2013-6's drawing sheet: the six-bar in its mid and extreme positions and the whole synthesis.
 
-A3 landscape. Left: the construction at k_l (the seed's 0.005 m/mm, 1:5, when it fits; else the
-largest GOST scale that does): the rocker's arc, the extreme positions C0, C1 and B0, B1, the
+A3 landscape, composed by geomcad.sheet.compose (no view placed by hand). Left: the
+construction at k_l (for the seed's data the seed's 0.005 m/mm, 1:5; else the largest GOST
+scale its place allows): the rocker's arc, the extreme positions C0, C1 and B0, B1, the
 chord B0B1, the perpendicular at B0 and the ray at 90° − θ meeting in O, the θ-circle Γ through
 O, B0, B1 and its mirror image Γ′ (only their arcs that see B0B1 under θ: the others hug the chord),
 the lines at e from the path, every solution O1, and the seed's solution built out: the crank's
@@ -22,13 +23,14 @@ import numpy as np
 from geomcad.construction import Construction
 from geomcad.geom import Arc, Circle, Line, Vec, angle_arcs, circle_circle
 from geomcad.kinematics import branch_sign
-from geomcad.sheet import Drawing, Scale, Sheet, TitleBlock, Viewport, start
+from geomcad.sheet import Scale, Sheet, TitleBlock, Viewport, start
+from geomcad.sheet.compose import Column, Field, Figure, Layout, Row, View, arrange, compose
 from geomcad.sheet.lang import Words, current
 from geomcad.sheet.model import ArcItem, CircleItem, Polyline
-from geomcad.sheet.scale import gost_scale_to_fit
 from geomcad.sheet.scheme import GUIDE_HALF
 from geomcad.sheet.text import box as text_box
 from geomcad.sheet.text import parse
+from geomcad.sheet.views import Table, Text
 
 from .sheets_2013_6_kin import factor, kinematics_sheet, num, six_bar
 from .spec_2013_6 import SEED_K_L
@@ -40,13 +42,11 @@ if TYPE_CHECKING:
 
 WORDS = Words(__package__, "sheets_2013_6")
 
-#: The field the mechanism is drawn in on the sheet (mm: x0, y0, x1, y1), left of the tables.
-VIEW = (24.0, 24.0, 256.0, 290.0)
-
 #: The rocker's arc is drawn this far (rad) beyond B's swing.
 SWING_PAD = 0.25
 
-PANEL_X = 262.0
+#: Width (mm) of the order of construction's text.
+ORDER_W = 146.0
 
 
 def extent(geo: Geometry, c: Construction) -> tuple[float, float, float, float]:
@@ -68,16 +68,34 @@ def extent(geo: Geometry, c: Construction) -> tuple[float, float, float, float]:
     return min(xs), min(ys), max(xs), max(ys)
 
 
+class _Main:
+    """The main sheet's views and their arrangement. The results give O1B0, O1B1 in mm at the
+    mechanism's scale, which the arrangement chooses: arranged until the scale it was built
+    with is the one it gets."""
+
+    def __init__(self, sol: Solution) -> None:
+        geo, c = sol.data, sol.construction
+        # for the seed's data the seed's 1:5, so that its drawing and ours can be laid side by
+        # side (O1B0, O1B1 are measured on it)
+        least = SEED_K_L if sol.is_seed else 0.0
+        self.view = Figure(extent(geo, c), lambda v: _drawing(v, geo, c), weight=2.0,
+                           title=WORDS("title"), least_k=least)  # fmt: skip
+        k = 0.0
+        for _ in range(3):
+            self.tree = Row(self.view, Column(*_panel(sol, k)))
+            self.layout: Layout = arrange(self.tree, Field.of_format("A3"))
+            got = self.layout[self.view].scale
+            assert got is not None
+            if got.k == k:
+                break
+            k = got.k
+        self.k = k
+
+
 def scales(sol: Solution) -> Mapping[str, float]:
-    """k_l of the sheet: for the seed's data the seed's 0.005 m/mm (1:5), so that its drawing
-    and ours can be laid side by side; otherwise the largest GOST 2.302 scale at which the
-    drawing fits the field."""
-    x0, y0, x1, y1 = extent(sol.data, sol.construction)
-    w, h = x1 - x0, y1 - y0
-    room_w, room_h = VIEW[2] - VIEW[0], VIEW[3] - VIEW[1]
-    if sol.is_seed and w / SEED_K_L <= room_w and h / SEED_K_L <= room_h:
-        return {"l": SEED_K_L}
-    return {"l": gost_scale_to_fit(w, h, room_w, room_h).k}
+    """k_l of the sheet: the largest GOST 2.302 scale at which the drawing fits its place on
+    the composed sheet (for the seed's data the seed's 0.005 m/mm, 1:5)."""
+    return {"l": _Main(sol).k}
 
 
 def sheets(sol: Solution) -> list[tuple[str, Sheet]]:
@@ -87,9 +105,8 @@ def sheets(sol: Solution) -> list[tuple[str, Sheet]]:
 
 def main_sheet(sol: Solution) -> tuple[str, Sheet]:
     """The main sheet of 2013-6."""
-    geo = sol.data
-    c = sol.construction
-    k = Scale(sol.scales["l"], "l")
+    m = _Main(sol)
+    k = Scale(m.k, "l")
     tb = TitleBlock(
         title=WORDS("tb_title"),
         designation=WORDS("designation"),
@@ -97,19 +114,15 @@ def main_sheet(sol: Solution) -> tuple[str, Sheet]:
         lang=current(),
     )
     d = start("A3", tb)
-    x0, y0, x1, y1 = extent(geo, c)
-    cx, cy = (x0 + x1) / 2.0, (y0 + y1) / 2.0
-    at = ((VIEW[0] + VIEW[2]) / 2.0, (VIEW[1] + 8.0 + VIEW[3]) / 2.0)
-    v = d.viewport(k, (cx, cy), at)
-    d.text(WORDS("title"), (VIEW[0] + 2.0, 13.0), 5.0)
-    d.text(f"{factor(k)}   (M {k.ratio_text() or '—'})", (VIEW[0] + 2.0, 20.0), 3.5)
+    compose(d, m.tree, layout=m.layout)
+    return ("", d.finish())
 
+
+def _drawing(v: Viewport, geo: Any, c: Any) -> None:
     _construction(v, geo, c)
     _mechanism(v, geo, c)
     # the angle at B1 last, when every line it must keep clear of is drawn
     _angle_with_leader(v, c["B1"], c["B0"], c["O"], "90° – θ", 12.0)
-    _panel(d, sol, k)
-    return ("", d.finish())
 
 
 def _construction(v: Viewport, geo: Any, c: Any) -> None:
@@ -350,13 +363,12 @@ def _mid_A(O1: Vec, l1: float, l2: float, B: Vec, O2: Vec, branch: int) -> Vec:
     return pts[0]
 
 
-def _panel(d: Drawing, sol: Solution, k: Scale) -> None:
-    """The tables on the right: given data, results, every solution, the order of construction."""
+def _panel(sol: Solution, k: float) -> tuple[View, ...]:
+    """The tables on the right: given data, results (O1B0, O1B1 in mm at the factor k; none
+    yet when 0), every solution, the order of construction."""
     p = sol.params
     r = sol.results
-    x, y = PANEL_X, 10.0
     m_ = WORDS("m")
-    d.text(WORDS("data"), (x, y + 3.5), 3.5)
     rows = [[WORDS("param"), WORDS("value")]]
     for name, label, unit in (
         ("H", "H", m_),
@@ -366,27 +378,21 @@ def _panel(d: Drawing, sol: Solution, k: Scale) -> None:
         ("e", "e", m_),
     ):
         rows.append([label, f"{num(float(p[name]))} {unit}".strip()])
-    _, h = d.table(x, y + 6.0, (40.0, 40.0), rows)
-    y += 6.0 + h + 6.0
-    d.text(WORDS("results"), (x, y + 3.5), 3.5)
+    given = Table(rows, widths=(40.0, 40.0), title=WORDS("data"))
     rows = [[WORDS("quantity"), WORDS("value")]]
-    mmk = k.k
     for name, label, unit, scale in (
         ("theta_deg", "θ", "°", 1.0),
-        ("O1B0", "O_1B_0", WORDS("mm") + "*", mmk),
-        ("O1B1", "O_1B_1", WORDS("mm") + "*", mmk),
+        ("O1B0", "O_1B_0", WORDS("mm") + "*", k),
+        ("O1B1", "O_1B_1", WORDS("mm") + "*", k),
         ("l1", "l_1", m_, 1.0),
         ("l2", "l_2", m_, 1.0),
         ("H_check", WORDS("H_check"), m_, 1.0),
         ("K_check", WORDS("K_check"), "", 1.0),
     ):
-        exact = float(r[name]) / scale
+        exact = float(r[name]) / scale if scale else 0.0
         rows.append([label, f"{num(exact, 4)} {unit}".strip()])
-    _, h = d.table(x, y + 6.0, (40.0, 40.0), rows)
-    y += 6.0 + h + 4.0
-    d.text(WORDS("on_drawing", k=factor(k)), (x, y + 2.5), 2.5)
-    y += 8.0
-    d.text(WORDS("all"), (x, y + 3.5), 3.5)
+    results = Table(rows, widths=(40.0, 40.0), title=WORDS("results"))
+    note = Text(lines=[WORDS("on_drawing", k=factor(Scale(k or 0.001, "l")))])
     rows = [["№", f"O_1 (x; y), {m_}", f"l_1, {m_}", f"l_2, {m_}", WORDS("crank")]]
     for i, s in enumerate(r["solutions"]):
         ox, oy = s["O1"]
@@ -399,11 +405,10 @@ def _panel(d: Drawing, sol: Solution, k: Scale) -> None:
                 WORDS("yes" if s["crank_rocker"] else "no"),
             ]
         )
-    _, h = d.table(x, y + 6.0, (10.0, 48.0, 26.0, 26.0, 36.0), rows)
-    y += 6.0 + h + 6.0
-    y = d.text(WORDS("order"), (x, y + 3.5), 3.5).at[1] + 2.0
+    every = Table(rows, widths=(10.0, 48.0, 26.0, 26.0, 36.0), title=WORDS("all"))
     steps = [WORDS(f"step_{i}") for i in range(1, 8)]
     steps[1] = WORDS("step_2", theta=num(float(r["theta_deg"]), 4))
     steps[6] = WORDS("step_7", H=num(float(r["H_check"]), 4), K=num(float(r["K_check"]), 4))
-    for i, step in enumerate(steps):
-        y = d.paragraph(f"{i + 1}. {step}", x, y, 146.0, 2.5, indent=4.0) + 0.6
+    order = Text(paragraphs=[f"{i + 1}. {st}" for i, st in enumerate(steps)], width=ORDER_W,
+                 indent=4.0, title=WORDS("order"))  # fmt: skip
+    return given, results, note, every, order

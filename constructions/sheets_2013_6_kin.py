@@ -1,12 +1,14 @@
-"""2013-6's kinematic-analysis sheet (``2013-6-kinematics``), A2 landscape, and the six-bar's
-scheme that both 2013-6 sheets draw.
+"""2013-6's kinematic-analysis sheet (``2013-6-kinematics``), A3 landscape composed by
+geomcad.sheet.compose (no view placed by hand), and the six-bar's scheme that both 2013-6
+sheets draw.
 
 Top: the synthesized six-bar at the crank angle φ1 at a GOST scale, and its acceleration plan
-(pole π). Bottom: the slider's displacement s, velocity v and acceleration a over a crank turn,
-from the sweep, with φ1 marked and the plans' values at φ1 as dots on the curves (they must lie
-on them); beside them the velocity plan (pole p) and the values read off the plans beside the
-analytic ones. Each vector equation is drawn as its two lines meeting; a vector shorter than two
-arrowheads is drawn as its end point only, named in a note under its plan.
+(pole π), the values read off the plans between them. Bottom: the slider's displacement s,
+velocity v and acceleration a over a crank turn, from the sweep, with φ1 marked and the plans'
+values at φ1 as dots on the curves (they must lie on them); beside them the velocity plan (pole
+p) and the plans' vector equations. Each vector equation is drawn as its two lines meeting; a
+vector shorter than two arrowheads is drawn as its end point only, named in a note under its
+plan.
 """
 
 from __future__ import annotations
@@ -20,26 +22,32 @@ import numpy as np
 
 from geomcad.geom import Vec
 from geomcad.kinematics.plan import Plan
-from geomcad.sheet import (
-    Drawing,
-    Scale,
-    Sheet,
-    TitleBlock,
-    Viewport,
-    fmt_number,
-    gost_scale_to_fit,
-    start,
+from geomcad.sheet import Drawing, Scale, Sheet, TitleBlock, Viewport, fmt_number, start
+from geomcad.sheet.compose import (
+    GAP,
+    Column,
+    Field,
+    Figure,
+    Layout,
+    Placed,
+    Row,
+    Spacer,
+    View,
+    arrange,
+    compose,
 )
 from geomcad.sheet.drawing import ARROW_LEN
+from geomcad.sheet.frame import TB_HEIGHT
 from geomcad.sheet.graph import Axis, Graph, nice_step
 from geomcad.sheet.lang import Words, current
 from geomcad.sheet.model import Polyline
 from geomcad.sheet.motion import Frames, turn
-from geomcad.sheet.plans import LINE_OVER_MM, draw_plan, markup_of, plan_scale
+from geomcad.sheet.plans import markup_of
 from geomcad.sheet.scale import ScaleStyle
 from geomcad.sheet.scheme import draw_scheme
 from geomcad.sheet.text import box as text_box
 from geomcad.sheet.text import parse
+from geomcad.sheet.views import PlanView, Table, Text
 from geomcad.structure import Link, Mechanism, prismatic, revolute
 
 if TYPE_CHECKING:
@@ -49,17 +57,27 @@ if TYPE_CHECKING:
 
 WORDS = Words(__package__, "sheets_2013_6_kin")
 
-#: The views on the A3 sheet (mm: x0, y0, x1, y1): the mechanism, the velocity plan and the
-#: acceleration plan side by side on top; the diagrams and the tables below.
-MECH_VIEW = (24.0, 24.0, 165.0, 126.0)
-PANEL = (168.0, 24.0)  # the values read off the plans, then the links' ω and ε
-APLAN_VIEW = (258.0, 24.0, 414.0, 126.0)
-VPLAN_VIEW = (232.0, 134.0, 414.0, 194.0)
-EQUATIONS = (232.0, 198.0, 182.0)  # x, y, width of the plans' vector equations
-NOTE_H = 7.0  # room under a plan for its note on short vectors
-GRAPH_X = (44.0, 216.0)  # the φ axis from 0 to 2π
-GRAPH_SPAN = (134.0, 290.0)  # the diagrams' rows share this height (mm, top to bottom)
-GRAPH_PAD = 15.0  # each row's room beyond its curve: the arrow, the symbol, the tick values
+#: Room (mm) under a plan for its note on short vectors.
+NOTE_H = 7.0
+#: The splits of the top row (the mechanism, the tables, the acceleration plan; None: the
+#: layout's choice) and of the bottom row (the diagrams, the velocity plan over the equations:
+#: the diagrams a little wider, so that the φ axis takes 0.04 rad/mm).
+TOP_W = None
+BOTTOM_W = (1.0, 0.9)
+#: Room (mm) kept round a plan, and how far its construction lines run on past their points
+#: (PLAN_OVER, less than the usual LINE_OVER_MM: within the margin and the field's).
+PLAN_MARGIN = 4.0
+PLAN_OVER = 6.0
+#: Width (mm) of the plans' vector equations.
+EQUATIONS_W = 150.0
+#: The diagrams' room: left of the φ axis's origin for the tick values and the symbols, right
+#: of its end for the arrow and φ, and each row's room beyond its curve (the arrow, the symbol,
+#: the tick values).
+GRAPH_LEFT = 20.0
+GRAPH_RIGHT = 20.0
+GRAPH_PAD = 15.0
+#: Room (mm) over the diagrams for their sub-title.
+GRAPH_HEAD = 4.0
 #: How far (m) the guide is drawn either side of the slider, as a share of l4.
 GUIDE_EXT = 0.3
 #: A vector shorter than this (mm) is drawn as its end point (it would be all arrowhead).
@@ -117,25 +135,70 @@ def six_bar(
         v.label(pts[name], markup_of(name), prefer=pref, clear=clear)
 
 
+class _Kin:
+    """The kinematics sheet's views and their arrangement. The values table gives the plans'
+    vectors in mm at the plans' factors, which the arrangement chooses: the tree is arranged
+    until the factors it was built with are the ones it gets."""
+
+    def __init__(self, sol: Solution) -> None:
+        geo = sol.data
+        m = geo.mechanism
+        an: Analysis = geo.analysis
+        c = an.c
+        pts = [c[n] for n in ("O1", "O2", "A", "B", "C")]
+        # the mechanism's box: its joints, the crank's circle, the guide past C, with room for
+        # the supports and labels
+        ext = GUIDE_EXT * m.l4
+        xs = [q.x for q in pts] + [m.O1.x - m.l1, m.O1.x + m.l1, c["C"].x + ext]
+        ys = [q.y for q in pts] + [m.O1.y - m.l1, m.O1.y + m.l1]
+        pad = 0.04 * m.l3
+        box = (min(xs) - pad, min(ys) - pad, max(xs) + pad, max(ys) + pad)
+        self.mech = Figure(box, lambda v: _mechanism(v, c, m, an), weight=2.0,
+                           title=WORDS("title", phi=num(math.degrees(an.phi1), 4)))  # fmt: skip
+        self.vplan = PlanView(
+            an.vp,
+            min_mm=SHORT_MM,
+            title=WORDS("vplan"),
+            series="plan",
+            margin=PLAN_MARGIN,
+            over_mm=PLAN_OVER,
+        )
+        self.aplan = PlanView(
+            an.ap,
+            min_mm=SHORT_MM,
+            title=WORDS("aplan"),
+            series="plan",
+            margin=PLAN_MARGIN,
+            over_mm=PLAN_OVER,
+        )
+        self.vnote, self.anote = Spacer((10.0, NOTE_H)), Spacer((10.0, NOTE_H))
+        self.diagrams = _Diagrams(an, m, title=WORDS("diagrams"), weight=2.0)
+        self.equations = Text(paragraphs=[f"{i}. {WORDS(f'eq_{i}')}" for i in range(1, 5)],
+                              width=EQUATIONS_W, indent=4.0, title=WORDS("equations"))  # fmt: skip
+        self.an, self.m = an, m
+        kv = ka = 0.0
+        for _ in range(3):
+            self.tree = self._tree(kv, ka)
+            self.layout: Layout = arrange(self.tree, Field.of_format("A3"))
+            got = (self.layout[self.vplan].scale, self.layout[self.aplan].scale)
+            assert got[0] is not None and got[1] is not None
+            if (got[0].k, got[1].k) == (kv, ka):
+                break
+            kv, ka = got[0].k, got[1].k
+
+    def _tree(self, kv: float, ka: float) -> Column:
+        panel = Column(*_panel(self.an, self.m, kv, ka))
+        top = Row(self.mech, panel, Column(self.aplan, self.anote), weights=TOP_W)
+        # the title block under the right-hand column
+        right = Column(self.vplan, self.vnote, self.equations, Spacer((10.0, TB_HEIGHT - GAP)))
+        return Column(top, Row(self.diagrams, right, weights=BOTTOM_W))
+
+
 def kinematics_sheet(sol: Solution) -> tuple[str, Sheet]:
-    geo = sol.data
-    m = geo.mechanism
-    an: Analysis = geo.analysis
-    c = an.c
-    pts = [c[n] for n in ("O1", "O2", "A", "B", "C")]
-    # the mechanism's box: its joints, the crank's circle, the guide 30 mm past C (about 0.15 m
-    # at the scales that fit), with room for the supports and labels
-    ext = GUIDE_EXT * m.l4
-    xs = [q.x for q in pts] + [m.O1.x - m.l1, m.O1.x + m.l1, c["C"].x + ext]
-    ys = [q.y for q in pts] + [m.O1.y - m.l1, m.O1.y + m.l1]
-    pad = 0.04 * m.l3
-    w, h = max(xs) - min(xs) + 2 * pad, max(ys) - min(ys) + 2 * pad
-    room_w, room_h = MECH_VIEW[2] - MECH_VIEW[0], MECH_VIEW[3] - MECH_VIEW[1] - 10.0
-    k = gost_scale_to_fit(w, h, room_w, room_h)
-    kv, ka = (
-        plan_scale(plan, box[2] - box[0] - 2.0 * LINE_OVER_MM, box[3] - box[1] - 8.0 - NOTE_H)
-        for plan, box in ((an.vp, VPLAN_VIEW), (an.ap, APLAN_VIEW))
-    )
+    kin = _Kin(sol)
+    lay = kin.layout
+    k = lay[kin.mech].scale
+    assert k is not None
     tb = TitleBlock(
         title=WORDS("tb_title"),
         designation=WORDS("designation"),
@@ -143,29 +206,17 @@ def kinematics_sheet(sol: Solution) -> tuple[str, Sheet]:
         lang=current(),
     )
     d = start("A3", tb)
-    d.text(WORDS("title", phi=num(math.degrees(an.phi1), 4)), (MECH_VIEW[0] + 2.0, 13.0), 5.0)
-    d.text(f"{factor(k)}   (M {k.ratio_text()})", (MECH_VIEW[0] + 2.0, 20.0), 3.5)
-    at = ((MECH_VIEW[0] + MECH_VIEW[2]) / 2.0, (MECH_VIEW[1] + 10.0 + MECH_VIEW[3]) / 2.0)
-    v = d.viewport(k, ((min(xs) + max(xs)) / 2.0, (min(ys) + max(ys)) / 2.0), at)
-    _mechanism(v, c, m, an)
-    lang = current()
-    for plan, scale, box in ((an.vp, kv, VPLAN_VIEW), (an.ap, ka, APLAN_VIEW)):
-        title = f"{WORDS('vplan' if plan.kind == 'v' else 'aplan')}, {factor(scale)}"
-        inner = (box[0], box[1], box[2], box[3] - NOTE_H)
-        draw_plan(d, plan, scale, inner, lang, title=title, min_mm=SHORT_MM)
-        _short_note(d, plan, scale, box)
-    _diagrams(d, an, m)
-    _panel(d, an, m, kv.k, ka.k)
-    x, y, width = EQUATIONS
-    y = d.text(WORDS("equations"), (x, y + 3.5), 3.5).at[1] + 2.0
-    for i in range(1, 5):
-        y = d.paragraph(f"{i}. {WORDS(f'eq_{i}')}", x, y, width, 2.5, indent=4.0) + 0.4
+    compose(d, kin.tree, layout=lay)
+    for plan, view, note in ((kin.an.vp, kin.vplan, kin.vnote), (kin.an.ap, kin.aplan, kin.anote)):
+        _short_note(d, plan, lay[view], lay[note])
     return ("kinematics", d.finish())
 
 
-def _short_note(d: Drawing, plan: Plan, scale: Scale, box: tuple[float, ...]) -> None:
-    """Under a plan: the vectors drawn as points because they are shorter than two
-    arrowheads, each with its value and length."""
+def _short_note(d: Drawing, plan: Plan, at: Placed, room: Placed) -> None:
+    """Under a plan (in ``room``): the vectors drawn as points because they are shorter than
+    two arrowheads, each with its value and length."""
+    scale = at.scale
+    assert scale is not None
     short = []
     for vec in plan.vectors:
         value = (plan.points[vec.head] - plan.points[vec.tail]).norm
@@ -175,7 +226,7 @@ def _short_note(d: Drawing, plan: Plan, scale: Scale, box: tuple[float, ...]) ->
             short.append(f"{vec.label} = {num(value, 3)} {unit} ({num(mm, 2)} {WORDS('mm')})")
     if short:
         text = WORDS("short", vectors="; ".join(short), mm=num(SHORT_MM, 2))
-        d.paragraph(text, box[0], box[3] - NOTE_H + 3.0, box[2] - box[0], 2.5)
+        d.paragraph(text, at.box[0], room.box[1] + 2.5, at.box[2] - at.box[0], 2.5)
 
 
 def _mechanism(v: Viewport, c: Any, m: Any, an: Analysis) -> None:
@@ -197,11 +248,35 @@ def _mechanism(v: Viewport, c: Any, m: Any, an: Analysis) -> None:
     v.turn(O1, an.omega1, a1 if an.omega1 > 0 else a1 + 90.0, "ω_1", r_mm=11.0, sweep_deg=90.0)
 
 
-def _diagrams(d: Drawing, an: Analysis, m: Any) -> None:
-    """s(φ), v(φ), a(φ) stacked, one φ axis scale, φ1 marked, the plans' values as dots."""
+class _Diagrams(View):
+    """s(φ), v(φ), a(φ) stacked in the box the layout gives them, one φ axis scale, φ1
+    marked, the plans' values as dots."""
+
+    def __init__(self, an: Analysis, m: Any, **kw: Any) -> None:
+        kw.setdefault("margin", 0.0)
+        super().__init__(**kw)
+        self.an, self.m = an, m
+
+    def stretch(self) -> tuple[tuple[float, float], tuple[float, float]]:
+        return (150.0, 120.0), (240.0, 170.0)
+
+    def used(self, w: float, h: float) -> tuple[float, float]:
+        """The width the φ axis really takes at its rounded factor, and all the height."""
+        room = w - GRAPH_LEFT - GRAPH_RIGHT
+        if room <= 1.0:
+            return 0.0, 0.0
+        k = Axis.fit("φ", "", 0.0, 2.0 * math.pi, room).k
+        return 2.0 * math.pi / k + GRAPH_LEFT + GRAPH_RIGHT, h
+
+    def draw(self, d: Drawing, at: Placed) -> None:
+        _diagrams(d, self.an, self.m, at.inner)
+
+
+def _diagrams(d: Drawing, an: Analysis, m: Any, box: tuple[float, float, float, float]) -> None:
     lang = current()
-    room = GRAPH_X[1] - GRAPH_X[0]
-    x_axis = Axis.fit("φ", WORDS("rad"), 0.0, 2.0 * math.pi, room)
+    x0, y0, x1, y1 = box
+    gx = (x0 + GRAPH_LEFT, x1 - GRAPH_RIGHT)
+    x_axis = Axis.fit("φ", WORDS("rad"), 0.0, 2.0 * math.pi, gx[1] - gx[0])
     g_dir = m.guide_d.unit()
     phi1 = an.phi1 % (2.0 * math.pi)
     s_at = float(np.interp(phi1, an.phi, an.s))
@@ -211,52 +286,51 @@ def _diagrams(d: Drawing, an: Analysis, m: Any) -> None:
         ("V_C", WORDS("m_s"), an.v, an.vp["c"].dot(g_dir), mark),
         ("a_C", WORDS("m_s2"), an.a, an.ap["c"].dot(g_dir), mark),
     )
-    top = GRAPH_SPAN[0]
-    d.text(WORDS("diagrams"), (GRAPH_X[0] - 18.0, top - 6.0), 3.5)
-    d.text(WORDS("diagrams_2", w=num(an.omega1, 4)), (GRAPH_X[0] - 18.0, top - 1.5), 2.5)
+    d.text(WORDS("diagrams_2", w=num(an.omega1, 4)), (x0, y0 + 2.5), 2.5)
+    top = y0 + GRAPH_HEAD
     spans = [(min(float(np.min(c[2])), 0.0), max(float(np.max(c[2])), 0.0)) for c in curves]
-    factors = _row_factors([hi - lo for lo, hi in spans])
+    factors = _row_factors([hi - lo for lo, hi in spans], y1 - top)
     for (sym, unit, ys, at_phi1, label), (lo, hi), k in zip(curves, spans, factors, strict=True):
         y_axis = Axis(sym, unit, lo, hi, k, sym.split("_")[0])
         bottom = top + GRAPH_PAD + (hi - lo) / k
         zero_y = top + 9.0 + y_axis.mm(y_axis.hi)
-        g = Graph(d, x_axis, y_axis, (GRAPH_X[0], zero_y))
+        g = Graph(d, x_axis, y_axis, (gx[0], zero_y))
         g.axes(lang, tick_labels=True)
         g.curve(an.phi, ys, "result")
         # φ1 marked from the top of the field down to the axis or the point (not through the
         # tick values under the axis)
-        x1, y_axis0 = g.p(phi1, 0.0)
+        xm, y_axis0 = g.p(phi1, 0.0)
         y_pt = g.p(phi1, float(at_phi1))[1]
-        d.sheet.add(Polyline(((x1, top + 8.0), (x1, max(y_axis0, y_pt))), "construction"))
+        d.sheet.add(Polyline(((xm, top + 8.0), (xm, max(y_axis0, y_pt))), "construction"))
         g.point(phi1, float(at_phi1), label)
-        g.factors((GRAPH_X[0] + 26.0, top + 4.0), lang)
+        g.factors((gx[0] + 26.0, top + 4.0), lang)
         top = bottom
 
 
-def _row_factors(ranges: Sequence[float]) -> list[float]:
+def _row_factors(ranges: Sequence[float], span: float) -> list[float]:
     """The diagrams' factors (nice, units per mm): of the few finest each range allows, the
-    choice whose curves, stacked with their rows' room, fill GRAPH_SPAN with the largest least
-    height."""
-    total = GRAPH_SPAN[1] - GRAPH_SPAN[0] - GRAPH_PAD * len(ranges)
+    choice whose curves, stacked with their rows' room, fill ``span`` mm with the largest
+    least height."""
+    total = span - GRAPH_PAD * len(ranges)
     options = []
     for r in ranges:
         r = r if r > 0.0 else 1.0
-        ks = [nice_step(r / total)]
+        ks = [nice_step(r / max(total, 1.0))]
         while len(ks) < 6:
             ks.append(nice_step(ks[-1] * 1.001))
         options.append(ks)
     best: tuple[tuple[float, float], list[float]] | None = None
     for combo in itertools.product(*options):
         h = [(r if r > 0.0 else 1.0) / k for r, k in zip(ranges, combo, strict=True)]
-        if sum(h) <= total and (best is None or (min(h), sum(h)) > best[0]):
-            best = ((min(h), sum(h)), list(combo))
-    assert best is not None, "the coarsest factors always fit"
+        if best is None or (sum(h) <= total and (min(h), sum(h)) > best[0]):
+            best = ((min(h), sum(h)) if sum(h) <= total else (-1.0, 0.0), list(combo))
+    assert best is not None, "at least one choice"
     return best[1]
 
 
-def _panel(d: Drawing, an: Analysis, m: Any, kv: float, ka: float) -> None:
-    """Values read off the plans beside the analytic ones, and the links' ω and ε."""
-    x, y = PANEL
+def _panel(an: Analysis, m: Any, kv: float, ka: float) -> tuple[View, ...]:
+    """Values read off the plans beside the analytic ones (their lengths on the plans at the
+    factors kv, ka; none yet when 0), and the links' ω and ε."""
     g_dir = m.guide_d.unit()
     phi = np.array([an.phi1])
     r = m.sweep(phi, an.omega1)
@@ -270,20 +344,17 @@ def _panel(d: Drawing, an: Analysis, m: Any, kv: float, ka: float) -> None:
         ("a_B", an.ap["b"].norm, ka, float(np.hypot(*ab))),
         ("a_C", an.ap["c"].dot(g_dir), ka, float(ac @ m.guide_d.unit().array())),
     )
-    d.text(WORDS("values"), (x, y + 3.5), 3.5)
     for name, val, kk, check in vals:
-        rows.append([name, num(val, 4), num(abs(val) / kk, 4), num(check, 4)])
+        rows.append([name, num(val, 4), num(abs(val) / kk, 4) if kk else "0000", num(check, 4)])
     widths = [max(text_box(parse(row[i]), 2.5)[0] for row in rows) + 3.0 for i in range(4)]
-    _, h = d.table(x, y + 6.0, widths, rows, row_h=5.0)
+    values = Table(rows, widths=widths, row_h=5.0, title=WORDS("values"))
     # the links' angular velocities and accelerations under it
-    y += 6.0 + h + 4.0
     rows = [[WORDS("link"), "ω, " + WORDS("rad_s"), "ε, " + WORDS("rad_s2")]]
     for i in range(3):
         rows.append([str(i + 2), num(an.omegas[i], 4), num(an.epsilons[i], 4)])
-    d.text(WORDS("omegas"), (x, y + 3.5), 3.5)
-    _, h = d.table(x, y + 6.0, (14.0, 30.0, 30.0), rows, row_h=5.0)
-    y += 6.0 + h + 1.0
-    d.paragraph(WORDS("signs"), x, y + 2.5, sum(widths), 2.5)
+    omegas = Table(rows, widths=(14.0, 30.0, 30.0), row_h=5.0, title=WORDS("omegas"))
+    signs = Text(paragraph=WORDS("signs"), width=sum(widths))
+    return values, omegas, signs
 
 
 def motion(sol: Solution, frames: int) -> Frames:

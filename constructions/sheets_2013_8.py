@@ -1,13 +1,15 @@
 """2013-8's drawing sheet: the press and its flywheel, the load diagram with the work as its
 area, and the energy balance.
 
-A3 landscape. Left, top: the force–penetration diagram F(s), the triangle from F_max at s = 0 to
-zero at s = h, its area (the work of one hole, E) hatched. Left, bottom: the energy balance of the
-flywheel over two cycles, ΔT(t): each hole takes E at once, the motor gives it back at the power N
-over the cycle, so the flywheel's kinetic energy swings by E between ω_max and ω_min. Right: the
-given data, the results, the solution step by step, and under them the kinematic scheme of the
-press (GOST 2.770, not to scale): the motor driving the flywheel by a belt, the crankshaft that
-carries the flywheel, the connecting rod and the punch over the plate on its die.
+A3 landscape, composed by geomcad.sheet.compose (no view placed by hand). Left, top: the
+force–penetration diagram F(s), the triangle from F_max at s = 0 to zero at s = h, its area (the
+work of one hole, E) hatched. Left, bottom: the energy balance of the flywheel over two cycles,
+ΔT(t): each hole takes E at once, the motor gives it back at the power N over the cycle, so the
+flywheel's kinetic energy swings by E between ω_max and ω_min. Right: the heading, the given
+data, the results, the solution step by step, what the energy balance says, and under them the
+kinematic scheme of the press (GOST 2.770, not to scale): the motor driving the flywheel by a
+belt, the crankshaft that carries the flywheel, the connecting rod and the punch over the plate
+on its die.
 """
 
 from __future__ import annotations
@@ -16,10 +18,12 @@ import math
 from typing import TYPE_CHECKING
 
 from geomcad.geom import Vec
-from geomcad.sheet import Drawing, Scale, Sheet, TitleBlock, fmt_number, start
-from geomcad.sheet.graph import Axis, Graph, nice_step
+from geomcad.sheet import Sheet, TitleBlock, fmt_number, start
+from geomcad.sheet.compose import Column, Field, Figure, Layout, Row, arrange, compose
+from geomcad.sheet.graph import Graph, nice_step
 from geomcad.sheet.lang import Words, current
 from geomcad.sheet.model import CircleItem, Polyline
+from geomcad.sheet.views import AxisSpec, Curve, Diagram, Table, Text
 
 from .p2013_8 import Data
 
@@ -27,18 +31,19 @@ if TYPE_CHECKING:
     from collections.abc import Mapping
 
     from geomcad.problem import Solution
+    from geomcad.sheet.drawing import Viewport
 
 WORDS = Words(__package__, "sheets_2013_8")
 
-#: Room for the load diagram's axes on the sheet (mm).
-F_ROOM_MM = (190.0, 115.0)
-#: Room for the energy balance's axes (mm).
-T_ROOM_MM = (130.0, 86.0)
-PANEL_X = 262.0
-PANEL_W = 146.0
-#: The press's scheme under the tables: its crankshaft's x (mm) and its enlargement.
-SCHEME_X = 350.0
-SCHEME_ZOOM = 1.3
+#: The scheme's model: sheet millimetres of a drawing not to scale (flywheel rim, crank, rod).
+RIM, CRANK, ROD = 19.0, 7.0, 30.0
+#: The scheme's model box (x0, y0, x1, y1), round the motor, the flywheel and the die.
+SCHEME_BOX = (-60.0, -55.0, 30.0, 27.0)
+#: Width (mm) of the solution's text and of the notes beside the energy balance.
+SOLUTION_W = 146.0
+NOTE_W = SOLUTION_W
+#: Width (mm) the sheet's heading wraps at (it heads the right-hand column).
+HEADING_W = 170.0
 KN = 1000.0
 
 
@@ -46,47 +51,74 @@ def f(x: float, digits: int = 4) -> str:
     return fmt_number(x, current(), digits)
 
 
+class _Sheet:
+    """The sheet's views and their arrangement (one tree for the sheet and the scales hook)."""
+
+    def __init__(self, sol: Solution) -> None:
+        data: Data = sol.data
+        self.load = _load_diagram(data)
+        self.balance = _energy_balance(data)
+        note = Text(
+            paragraphs=[WORDS(k, T=f(data.cycle), N=f(data.N)) for k in ("balance_1", "balance_2",
+                                                                         "balance_3")],
+            width=NOTE_W,
+        )  # fmt: skip
+        given, results, solution = _panel(sol)
+        # the press's scheme is not to scale: it takes whatever enlargement its place allows
+        scheme = Figure(SCHEME_BOX, _scheme, title=WORDS("scheme_title"), show_scale=False,
+                        series="free", margin=6.0)  # fmt: skip
+        heading = Text(paragraph=WORDS("title"), width=HEADING_W, height=5.0)
+        left = Column(self.load, self.balance, weights=(1.33, 1.0))
+        right = Column(heading, Row(given, results), solution, note, scheme)
+        self.tree = Row(left, right, weights=(0.52, 0.48))
+        self.layout: Layout = arrange(self.tree, Field.of_format("A3"))
+
+
+def _factor(view: Diagram, lay: Layout) -> float:
+    """The y factor (units per mm) the diagram takes in its place."""
+    x0, y0, x1, y1 = lay[view].inner
+    return view.axes(x1 - x0, y1 - y0)[1].k
+
+
 def scales(sol: Solution) -> Mapping[str, float]:
-    """The sheet's factor k_F (N/mm): the load diagram draws F in kN at the factor Axis.fit
-    chooses for its room."""
-    f_max = float(sol.data.F[0])
-    return {"F": Axis.fit("F", WORDS("kN"), 0.0, f_max / KN, F_ROOM_MM[1]).k * KN}
+    """The sheet's factor k_F (N/mm): the load diagram draws F in kN at the factor its place
+    on the composed sheet allows."""
+    s = _Sheet(sol)
+    return {"F": _factor(s.load, s.layout) * KN}
 
 
 def sheets(sol: Solution) -> list[tuple[str, Sheet]]:
     """The main sheet of 2013-8."""
-    data: Data = sol.data
     tb = TitleBlock(title=WORDS("tb_title"), designation=WORDS("designation"), lang=current())
     d = start("A3", tb)
-    d.text(WORDS("title"), (25.0, 13.0), 5.0)
-    _load_diagram(d, data)
-    _energy_balance(d, data)
-    y = _panel(d, sol)
-    _scheme(d, y)
+    s = _Sheet(sol)
+    compose(d, s.tree, layout=s.layout)
     return [("", d.finish())]
 
 
-def _load_diagram(d: Drawing, data: Data) -> None:
+def _load_diagram(data: Data) -> Diagram:
     h = float(data.s[-1])
     f_max = float(data.F[0]) / KN
-    lang = current()
-    gx = Axis.fit("s", WORDS("m"), 0.0, h, F_ROOM_MM[0])
-    gx = gx.with_tick(nice_step(max(gx.hi, -gx.lo) / 6.0))
-    gy = Axis.fit("F", WORDS("kN"), 0.0, f_max, F_ROOM_MM[1])
-    top = 36.0
-    at = (48.0, top + 7.0 + gy.mm(gy.hi))
-    d.text(WORDS("load_title"), (25.0, 24.0), 3.5)
-    g = Graph(d, gx, gy, at)
-    g.factors((25.0, 31.0), lang)
-    g.hatch(list(data.s), [x / KN for x in data.F])
-    g.curve(list(data.s), [x / KN for x in data.F], "result")
-    g.axes(lang)
-    # the peak and the plate's thickness named inside the field, clear of the tick values
-    _note(g, 0.0, f_max, f"F_{{max}} = {f(f_max)} {WORDS('kN')}", (8.0, 1.2))
-    g.point(h, 0.0, "s = h", prefer=(0.0, -1.0))
-    mid = g.p(h / 2.0, f_max / 2.0)
-    d.text(f"E = F_{{max}}·h/2 = {f(data.E)} {WORDS('J')}", (mid[0] + 4.0, mid[1] - 3.0), 3.5)
-    d.text(WORDS("area"), (mid[0] + 8.0, mid[1] + 2.5), 2.5)
+    ks = [x / KN for x in data.F]
+
+    def extra(g: Graph) -> None:
+        g.hatch(list(data.s), ks)
+        g.curve(list(data.s), ks, "result")
+        # the peak and the plate's thickness named inside the field, clear of the tick values
+        _note(g, 0.0, f_max, f"F_{{max}} = {f(f_max)} {WORDS('kN')}", (8.0, 1.2))
+        g.point(h, 0.0, "s = h", prefer=(0.0, -1.0))
+        mid = g.p(h / 2.0, f_max / 2.0)
+        g.d.text(f"E = F_{{max}}·h/2 = {f(data.E)} {WORDS('J')}", (mid[0] + 4.0, mid[1] - 3.0),
+                 3.5)  # fmt: skip
+        g.d.text(WORDS("area"), (mid[0] + 8.0, mid[1] + 2.5), 2.5)
+
+    return Diagram(
+        AxisSpec("s", WORDS("m"), lo=0.0, hi=h, tick=nice_step(h / 6.0)),
+        AxisSpec("F", WORDS("kN"), lo=0.0, hi=f_max),
+        [Curve(list(data.s), ks, "construction")],
+        extra=extra, least=(120.0, 80.0), prefer=(200.0, 130.0), margin=0.0,
+        title=WORDS("load_title"), weight=2.0,
+    )  # fmt: skip
 
 
 def _note(
@@ -101,40 +133,34 @@ def _note(
     g.d.text(markup, (px + off[0], py + off[1]), 2.5)
 
 
-def _energy_balance(d: Drawing, data: Data) -> None:
+def _energy_balance(data: Data) -> Diagram:
     T, E = data.cycle, data.E
-    lang = current()
-    gx = Axis.fit("t", WORDS("s"), 0.0, 2.2 * T, T_ROOM_MM[0])
-    gy = Axis.fit("ΔT", WORDS("J"), 0.0, E, T_ROOM_MM[1])
-    y_title = 172.0
-    d.text(WORDS("balance_title"), (25.0, y_title), 3.5)
-    at = (48.0, y_title + 18.0 + gy.mm(E))
-    g = Graph(d, gx, gy, at)
-    g.factors((25.0, y_title + 7.0), lang)
     # each hole takes E at once (t = 0, T); the motor returns it at the power N over the cycle
     ts = [0.0, 0.0, T, T, 2.0 * T]
     dts = [E, 0.0, data.N * T, 0.0, data.N * T]
-    g.hatch([0.0, T], [0.0, data.N * T])
-    g.curve(ts, dts, "result")
-    g.axes(lang)
-    g.curve([0.0, 2.1 * T], [E, E], "centre")
-    g.span_y(2.1 * T, 0.0, E, f"E = {f(E)} {WORDS('J')}")
-    # the speeds named at the top and the foot of the drop, inside the field, as "ω = ω_max",
-    # so that they cannot be read as tick values
-    g.point(T, E, "ω = ω_{max}", prefer=(1.0, -1.0), height=3.5)
-    _note(g, T, 0.0, "ω = ω_{min}", (3.0, -1.4), leader=False)
-    # what the diagram says, beside it
-    x_note = 48.0 + T_ROOM_MM[0] + 24.0
-    y = y_title + 24.0
-    for key in ("balance_1", "balance_2", "balance_3"):
-        y = d.paragraph(WORDS(key, T=f(T), N=f(data.N)), x_note, y, 255.0 - x_note, 2.5) + 0.6
+
+    def extra(g: Graph) -> None:
+        g.hatch([0.0, T], [0.0, data.N * T])
+        g.curve(ts, dts, "result")
+        g.curve([0.0, 2.1 * T], [E, E], "centre")
+        g.span_y(2.1 * T, 0.0, E, f"E = {f(E)} {WORDS('J')}")
+        # the speeds named at the top and the foot of the drop, inside the field, as
+        # "ω = ω_max", so that they cannot be read as tick values
+        g.point(T, E, "ω = ω_{max}", prefer=(1.0, -1.0), height=3.5)
+        _note(g, T, 0.0, "ω = ω_{min}", (3.0, -1.4), leader=False)
+
+    return Diagram(
+        AxisSpec("t", WORDS("s"), lo=0.0, hi=2.2 * T),
+        AxisSpec("ΔT", WORDS("J"), lo=0.0, hi=E),
+        [Curve(ts, dts, "construction")],
+        extra=extra, least=(100.0, 70.0), prefer=(150.0, 110.0), margin=0.0,
+        title=WORDS("balance_title"),
+    )  # fmt: skip
 
 
-def _panel(d: Drawing, sol: Solution) -> float:
-    """The tables and the solution on the right; returns the y (mm) where they end."""
+def _panel(sol: Solution) -> tuple[Table, Table, Text]:
+    """The given data, the results and the solution step by step."""
     p, r = sol.params, sol.results
-    x, y = PANEL_X, 10.0
-    d.text(WORDS("data"), (x, y + 3.5), 3.5)
     rows = [[WORDS("param"), WORDS("value")]]
     for name, label, unit in (
         ("d_hole", "d", WORDS("m")),
@@ -145,8 +171,7 @@ def _panel(d: Drawing, sol: Solution) -> float:
         ("holes_per_s", "z", WORDS("holes_per_s")),
     ):
         rows.append([label, f"{f(float(p[name]))} {unit}".strip()])
-    _, hh = d.table(x, y + 6.0, (30.0, 40.0), rows)
-    d.text(WORDS("results"), (x + 76.0, y + 3.5), 3.5)
+    given = Table(rows, widths=(30.0, 40.0), title=WORDS("data"))
     rows = [[WORDS("quantity"), WORDS("value")]]
     for name, label, unit, scale in (
         ("F_max", "F_{max}", WORDS("kN"), KN),
@@ -157,9 +182,7 @@ def _panel(d: Drawing, sol: Solution) -> float:
         ("J", "J", WORDS("kgm2"), 1.0),
     ):
         rows.append([label, f"{f(float(r[name]) / scale)} {unit}"])
-    _, hr = d.table(x + 76.0, y + 6.0, (30.0, 40.0), rows)
-    y += 6.0 + max(hh, hr) + 6.0
-    y = d.text(WORDS("solution"), (x, y + 3.5), 3.5).at[1] + 2.0
+    results = Table(rows, widths=(30.0, 40.0), title=WORDS("results"))
     steps = [
         WORDS("step_1", F=f(r["F_max"] / KN)),
         WORDS("step_2", E=f(r["E"])),
@@ -168,21 +191,19 @@ def _panel(d: Drawing, sol: Solution) -> float:
         WORDS("step_5", w=f(r["omega_min"])),
         WORDS("step_6", J=f(r["J"])),
     ]
-    for i, step in enumerate(steps):
-        y = d.paragraph(f"{i + 1}. {step}", x, y, PANEL_W, 2.5, indent=4.0) + 0.6
-    return y
+    solution = Text(paragraphs=[f"{i + 1}. {step}" for i, step in enumerate(steps)],
+                    width=SOLUTION_W, indent=4.0, title=WORDS("solution"))  # fmt: skip
+    return given, results, solution
 
 
-def _scheme(d: Drawing, top: float) -> None:
+def _scheme(v: Viewport) -> None:
     """The press's kinematic scheme (GOST 2.770), not to scale: the motor's pulley and the
     flywheel joined by a belt, the flywheel on the crankshaft 1 with the crank, the connecting rod
-    2, the punch 3 in its guides, the plate on the die. Model units are sheet millimetres at
-    SCHEME_ZOOM."""
-    d.text(WORDS("scheme_title"), (PANEL_X, top + 6.0), 3.5)
-    R, r1, l2 = 19.0, 7.0, 30.0  # flywheel rim, crank, rod
+    2, the punch 3 in its guides, the plate on the die. Model units are sheet millimetres, drawn
+    at the enlargement its place allows."""
+    R, r1, l2 = RIM, CRANK, ROD
     O1 = Vec(0.0, 0.0)
-    z = SCHEME_ZOOM
-    v = d.viewport(Scale(1.0 / z, "l"), (0.0, 0.0), (SCHEME_X, top + 12.0 + (R + 6.0) * z))
+    z = 1.0 / v.scale.k
     s = v.sheet
     # the motor on its foot, its pulley on the shaft
     Mo = Vec(-50.0, -4.0)

@@ -45,12 +45,20 @@ def _overlap(a: tuple[float, ...], b: tuple[float, ...]) -> bool:
 @pytest.mark.parametrize(
     ("raw", "series", "k"),
     [(0.0023, "gost", 0.0025), (0.0026, "gost", 0.004), (0.03, "nice", 0.04),
-     (0.03, "plan", 0.05), (0.04, "nice", 0.04)],
+     (0.03, "plan", 0.05), (0.04, "nice", 0.04), (0.7404, "free", 0.75), (0.02, "free", 0.02)],
 )  # fmt: skip
 def test_round_scale_takes_the_largest_drawing_of_the_series(
     raw: float, series: str, k: float
 ) -> None:
     assert round_scale(raw, "l", series).k == pytest.approx(k)  # type: ignore[arg-type]
+
+
+def test_text_paragraphs_begin_on_new_lines_their_rest_indented() -> None:
+    from geomcad.sheet.views import Text
+
+    t = Text(paragraphs=["1. " + "word " * 30, "2. short"], width=60.0, indent=4.0)
+    assert len(t.lines) >= 3 and t.lines[-1] == "2. short"
+    assert t.shifts[0] == 0.0 and t.shifts[1] == 4.0 and t.shifts[-1] == 0.0
 
 
 def test_round_scale_refuses_no_room() -> None:
@@ -187,3 +195,26 @@ def test_linkage_sheet_states_the_scales_verify_reads() -> None:
     assert f"μV = {fmt_number(sol.scales['v'])} (м/с)/мм" in texts
     assert f"μa = {fmt_number(sol.scales['a'])} (м/с²)/мм" in texts
     assert f"μl = {fmt_number(sol.scales['l'])} м/мм" in texts
+
+
+def test_a_stretch_view_keeps_its_least_and_fixed_children_stay_in_their_box() -> None:
+    """The search does not squeeze a diagram below its least size for a larger figure, and a
+    column of tables taller than its box is cut back at the box's end (it counts as not
+    fitting), not laid past it."""
+    dg = Diagram(AxisSpec("x", "m"), AxisSpec("y", "N"), [Curve([0, 1, 2], [0, 1, 0])],
+                 least=(150.0, 60.0), prefer=(200.0, 80.0))  # fmt: skip
+    big = _fig(1.0, 1.0, weight=4.0)
+    lay = arrange(Row(dg, big), Field.of_format("A3"))
+    assert lay[dg].box[2] - lay[dg].box[0] >= 150.0
+    tall = [Table([["a", "b"]] * 12, title=f"T{i}") for i in range(4)]
+    field = Field.of_format("A4")
+    lay = arrange(Row(_fig(0.1, 0.1), Column(*tall)), field)
+    assert all(lay[t].box[3] <= field.box[3] + 1e-9 for t in tall)
+
+
+def test_least_k_keeps_a_scale_the_task_fixes() -> None:
+    """A view's ``least_k`` holds its scale at or above it even where a finer one fits."""
+    free, held = _fig(0.1, 0.1), _fig(0.1, 0.1, least_k=0.005)
+    lay = arrange(Row(free, held), Field.of_format("A3"))
+    assert lay[free].scale is not None and lay[free].scale.k < 0.005
+    assert lay[held].scale is not None and lay[held].scale.k == pytest.approx(0.005)

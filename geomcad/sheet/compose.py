@@ -59,7 +59,7 @@ Box = tuple[float, float, float, float]
 #: A model rectangle: x0, y0, x1, y1 in model units, y up.
 Extent = tuple[float, float, float, float]
 #: The scale series of a scaled view.
-Series = Literal["gost", "nice", "plan"]
+Series = Literal["gost", "nice", "plan", "free"]
 Kind = Literal["scaled", "fixed", "stretch"]
 
 #: The gap between neighbouring boxes (mm).
@@ -86,10 +86,14 @@ def round_scale(raw: float, q: Quantity, series: Series) -> Scale:
     largest drawing of the series that fits.
 
     ``"gost"`` takes GOST 2.302's ratios (for lengths; ``raw`` in m/mm); ``"nice"`` the
-    mantissas 1, 2, 2.5, 4, 5; ``"plan"`` 1, 2, 5.
+    mantissas 1, 2, 2.5, 4, 5; ``"plan"`` 1, 2, 5; ``"free"`` (a drawing not to scale, whose
+    scale is not written) ``raw`` itself, to two significant digits.
     """
     if not (0.0 < raw < math.inf):
         raise ParameterError(f"k_{q}", raw, "a scale factor must be finite and positive")
+    if series == "free":
+        e = math.floor(math.log10(raw)) - 1
+        return Scale(math.ceil(raw / 10.0**e * (1 - 1e-12)) * 10.0**e, q)
     if series == "gost":
         # k = 1/1000 m per mm of a ratio r: the smallest k ≥ raw is the largest r ≤ 1/(1000 raw)
         for k in _GOST_K:
@@ -120,7 +124,8 @@ class View:
     is rounded. ``margin`` (mm) is kept clear round the drawing for its labels and symbols;
     ``readable`` (model units) is the shortest length that must be read on the drawing (a
     vector), drawn at least ``readable_mm`` long when the field allows it. ``weight`` is the
-    view's share in the search for the splits (a view of weight 2 counts as two).
+    view's share in the search for the splits (a view of weight 2 counts as two). ``least_k``
+    (model units per mm): the scale is never finer than this (a scale the task fixes).
     """
 
     def __init__(
@@ -136,6 +141,7 @@ class View:
         readable: float = 0.0,
         readable_mm: float = 7.0,
         weight: float = 1.0,
+        least_k: float = 0.0,
     ) -> None:
         self.title = title
         self.group = group
@@ -147,6 +153,7 @@ class View:
         self.readable = readable
         self.readable_mm = readable_mm
         self.weight = weight
+        self.least_k = least_k
         self._title_w: float | None = None
         self._memo: dict[object, Any] = {}
 
@@ -458,14 +465,15 @@ def _content(ext: Extent) -> tuple[float, float]:
 
 
 def _raw_k(v: View, cell: Box) -> float:
-    """The continuous scale at which the view's extent just fits the cell (inf: no room)."""
+    """The continuous scale at which the view's extent just fits the cell (inf: no room), never
+    finer than the view's ``least_k``."""
     ext = _ext(v)
     assert ext is not None
     w, h = _room(v, cell)
     cw, ch = ext[2] - ext[0], ext[3] - ext[1]
     if w <= 1.0 or h <= 1.0:
         return math.inf
-    need = max(cw / w, ch / h)
+    need = max(cw / w, ch / h, v.least_k)
     return need if need > 0.0 else 0.0
 
 
@@ -515,10 +523,15 @@ class _Leaf:
             nat = _nat(v)
             assert nat is not None
             w, h = _room(v, cell)
-            bad += max(0.0, nat[0] - w) + max(0.0, nat[1] - h)
+            # (a spacer keeps room free of views: the form's boxes may fill it)
+            if not isinstance(v, Spacer):
+                bad += max(0.0, nat[0] - w) + max(0.0, nat[1] - h)
         elif kind == "stretch":
             f = _stretch_fill(v, cell)
             w, h = _room(v, cell)
+            # a stretch view narrower or lower than its least is as bad as a fixed one
+            least = v.stretch()[0]
+            bad += max(0.0, least[0] - w) + max(0.0, least[1] - h)
             uw, uh = v.used(w, h) if f > 0.0 else (0.0, 0.0)
             area = max(uw, 0.0) * max(uh, 0.0)
         else:
@@ -609,7 +622,10 @@ def _split(
     pos = x0 if horizontal else y0
     for i, it in enumerate(node.items):
         ln = fixed[i] if i in fixed else max(share, 0.0) * weights[i] / total_w
-        cell = (pos, y0, pos + ln, y1) if horizontal else (x0, pos, x1, pos + ln)
+        # fixed children that overrun the box are cut back at its end (and count as not
+        # fitting), not laid past it
+        end = min(pos + ln, x1 if horizontal else y1)
+        cell = (pos, y0, end, y1) if horizontal else (x0, pos, x1, end)
         out.append((it, cell))
         pos += ln + node.gap
     return out

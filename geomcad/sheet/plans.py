@@ -68,12 +68,12 @@ def draw_plan(
     return v
 
 
-def plan_lines(v: Viewport, plan: Plan, min_mm: float = 0.5) -> None:
+def plan_lines(v: Viewport, plan: Plan, min_mm: float = 0.5, over_mm: float = LINE_OVER_MM) -> None:
     """The plan drawn through viewport ``v`` (its pole where ``v`` puts the plan's origin): the
-    construction lines, the vectors (those shorter than ``min_mm`` on the paper without an
-    arrow) and the lettered points."""
+    construction lines (run on ``over_mm`` past their points), the vectors (those shorter than
+    ``min_mm`` on the paper without an arrow) and the lettered points."""
     scale = v.scale
-    over = scale.model(LINE_OVER_MM)
+    over = scale.model(over_mm)
     for ln in plan.lines:
         solved = ln.step.rsplit(":", 1)[0]
         ts = [ln.line.param(plan.points[n]) for n in (ln.through, solved)]

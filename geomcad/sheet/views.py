@@ -130,10 +130,17 @@ class Scheme(View):
 class PlanView(View):
     """A velocity (``plan.kind`` "v") or acceleration ("a") plan at a factor 1, 2, 2.5, 4,
     5 × 10^n; all plans of one ``group`` share one factor. ``title`` defaults to the plan's
-    kind in words ("План скоростей"); ``extra(viewport)`` draws more on it."""
+    kind in words ("План скоростей"); ``extra(viewport)`` draws more on it; a vector shorter
+    than ``min_mm`` on the paper is drawn without its arrow, the construction lines run on
+    ``over_mm`` past their points (as :func:`plan_lines`)."""
 
     def __init__(
-        self, plan: Plan, extra: Callable[[Viewport], None] | None = None, **kw: Any
+        self,
+        plan: Plan,
+        extra: Callable[[Viewport], None] | None = None,
+        min_mm: float = 0.5,
+        over_mm: float = LINE_OVER_MM,
+        **kw: Any,
     ) -> None:
         kw.setdefault("title", WORDS(f"plan_{plan.kind}"))
         kw.setdefault("quantity", plan.kind)
@@ -142,6 +149,8 @@ class PlanView(View):
         super().__init__(**kw)
         self.plan = plan
         self.extra = extra
+        self.min_mm = min_mm
+        self.over_mm = over_mm
 
     def extent(self) -> Extent | None:
         return self.plan.extent()
@@ -152,7 +161,7 @@ class PlanView(View):
 
     def draw(self, d: Drawing, at: Placed) -> None:
         assert at.viewport is not None
-        plan_lines(at.viewport, self.plan)
+        plan_lines(at.viewport, self.plan, self.min_mm, self.over_mm)
         if self.extra is not None:
             self.extra(at.viewport)
 
@@ -499,7 +508,8 @@ def name_markup(name: str) -> str:
 
 
 class Text(View):
-    """Lines of text (label markup), or one ``paragraph`` wrapped to ``width`` mm."""
+    """Lines of text (label markup), or one ``paragraph`` (or several, ``paragraphs``, each
+    begun on a new line) wrapped to ``width`` mm, their later lines indented by ``indent``."""
 
     def __init__(
         self,
@@ -508,6 +518,7 @@ class Text(View):
         width: float = 0.0,
         height: float = 2.5,
         indent: float = 0.0,
+        paragraphs: Sequence[str] = (),
         **kw: Any,
     ) -> None:
         kw.setdefault("margin", 1.0)
@@ -517,6 +528,12 @@ class Text(View):
         self.lines = list(lines)
         if paragraph:
             self.lines += wrap(paragraph, width, height, indent)
+        #: x offsets (mm) of the lines: the continuation lines of ``paragraphs`` indented
+        self.shifts = [0.0] * len(self.lines)
+        for par in paragraphs:
+            wrapped = wrap(par, width, height, indent)
+            self.lines += wrapped
+            self.shifts += [0.0] + [indent] * (len(wrapped) - 1)
         self.width = width or max((text_width(t, height) for t in self.lines), default=0.0)
 
     def natural(self) -> tuple[float, float] | None:
@@ -525,8 +542,8 @@ class Text(View):
 
     def draw(self, d: Drawing, at: Placed) -> None:
         lead = self.height * LINE_SPACING
-        for i, t in enumerate(self.lines):
-            d.text(t, (at.inner[0], at.inner[1] + self.height + i * lead), self.height,
+        for i, (t, dx) in enumerate(zip(self.lines, self.shifts, strict=True)):
+            d.text(t, (at.inner[0] + dx, at.inner[1] + self.height + i * lead), self.height,
                    role="title")  # fmt: skip
 
 
