@@ -39,7 +39,7 @@ from geomcad.kinematics.cams import (
     rho_min,
 )
 from geomcad.kinematics.motion_laws import ALL_LAWS, CamProgram, Motion, Phase
-from geomcad.problem import Build, Problem, ResultSpec
+from geomcad.problem import Build, Problem, ResultSpec, lazy
 from geomcad.units import deg, to_deg
 
 from .file_common import Table, check_top
@@ -473,15 +473,7 @@ def _rocker_measures(spec: CamSpec, A: np.ndarray, r_r: float) -> tuple[float, f
 def build_file(file_id: str, data: Mapping[str, Any]) -> Build:
     spec = read_spec(file_id, data)
     des, c, results = design(spec)
-    scale = _view_k_l(des, results)
-    return Build(results, c, [], {"l": scale}, des)
-
-
-def _view_k_l(des: CamDesign, results: dict[str, Any]) -> float:
-    """k_l of the profile view on the sheet (see sheets_cam)."""
-    from .sheets_cam import profile_k_l
-
-    return profile_k_l(des, results)
+    return Build(results, c, [], data=des)
 
 
 def make_problem(file_id: str, data: dict[str, Any]) -> Problem:
@@ -491,9 +483,6 @@ def make_problem(file_id: str, data: dict[str, Any]) -> Problem:
     def build(_: Mapping[str, Any]) -> Build:
         return build_file(file_id, data)
 
-    def draw(solution: Any) -> list[tuple[str, Any]]:
-        from .sheets_cam import sheets
-
-        return sheets(solution)
-
-    return file_problem(file_id, data, spec.title, RESULTS, build, draw)
+    draw = lazy(".sheets_cam:sheets", __package__)
+    scales = lazy(".sheets_cam:scales", __package__)
+    return file_problem(file_id, data, spec.title, RESULTS, build, draw, scales=scales)

@@ -20,7 +20,7 @@ from geomcad.errors import ConstructionError, ParameterError
 from geomcad.kinematics import gear_design as gd
 from geomcad.kinematics import planetary as pl
 from geomcad.kinematics.gears import GOST_13755, BasicRack
-from geomcad.problem import Build, Problem, ResultSpec
+from geomcad.problem import Build, Problem, ResultSpec, lazy
 from geomcad.units import deg, to_deg
 
 from .file_common import Table, check_top
@@ -249,13 +249,8 @@ def make_problem(file_id: str, data: dict[str, Any]) -> Problem:
 
     def build(_: Mapping[str, Any]) -> Build:
         des, c, results = design(spec)
-        from .sheets_gears import scales
+        return Build(results, c, [], data=des)
 
-        return Build(results, c, [], scales(des), des)
-
-    def draw(solution: Any) -> list[tuple[str, Any]]:
-        from .sheets_gears import sheets
-
-        return sheets(solution)
-
-    return file_problem(file_id, data, spec.title, RESULTS, build, draw)
+    draw = lazy(".sheets_gears:sheets", __package__)
+    scales = lazy(".sheets_gears:scales", __package__)
+    return file_problem(file_id, data, spec.title, RESULTS, build, draw, scales=scales)

@@ -78,12 +78,12 @@ def _tree(des: CamDesign, results: dict[str, Any]) -> tuple[Tree, Figure]:
     return tree, profile
 
 
-def profile_k_l(des: CamDesign, results: dict[str, Any]) -> float:
-    """The GOST scale the layout gives the profile (with the follower turned back)."""
-    tree, profile = _tree(des, results)
+def scales(sol: Solution) -> dict[str, float]:
+    """k_l of the profile view: the GOST scale the layout gives it (``Problem.scales``)."""
+    tree, profile = _tree(sol.data, sol.results)
     scale = arrange(tree, Field.of_format("A1"))[profile].scale
     assert scale is not None
-    return scale.k
+    return {"l": scale.k}
 
 
 def sheets(sol: Solution) -> list[tuple[str, Any]]:

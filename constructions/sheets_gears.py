@@ -80,8 +80,10 @@ def _pair_tree(des: GearsDesign) -> tuple[Tree, Figure]:
     return Row(mesh, right), mesh
 
 
-def scales(des: GearsDesign) -> dict[str, float]:
-    """k_l of the meshing drawing (or of the planetary scheme), as the layout chooses it."""
+def scales(sol: Solution) -> dict[str, float]:
+    """k_l of the meshing drawing (or of the planetary scheme), as the layout chooses it
+    (``Problem.scales``)."""
+    des: GearsDesign = sol.data
     if des.pair is not None and des.meshing is not None:
         tree, mesh = _pair_tree(des)
         scale = arrange(tree, Field.of_format("A1"))[mesh].scale

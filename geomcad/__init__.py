@@ -41,9 +41,14 @@ __all__ = [
 
 
 def solve(problem_id: str, **params: object) -> Solution:
-    """Solve a registered problem with the given parameters (SI units; ``*_deg`` in degrees)."""
-    from geomcad import registry
+    """Solve a registered problem with the given parameters (SI units; ``*_deg`` in degrees),
+    or a linkage, cam or gear file (a path ending in ``.toml``; its data are its parameters)."""
+    from geomcad import documents, registry
 
+    if documents.is_file_id(problem_id):
+        if params:
+            raise TypeError(f"{problem_id}: a file takes no parameters (change the file)")
+        return documents.solve(problem_id)
     return registry.get(problem_id).solve(**params)
 
 

@@ -52,6 +52,7 @@ def file_problem(
     draw: Callable[[Solution], Sequence[tuple[str, Sheet]]],
     motion: Callable[[Solution, int], Frames] | None = None,
     cls: type[Problem] | None = None,
+    scales: Callable[[Solution], Mapping[str, float]] | None = None,
 ) -> Problem:
     """The problem of a file kind, as this module's docstring says it is: no parameters (the
     file is the data), no seed, the file's data as its ``inputs``; ``cls`` a subclass of
@@ -68,6 +69,7 @@ def file_problem(
         draw=draw,
         inputs=data,
         motion=motion,
+        scales=scales,
     )
 
 

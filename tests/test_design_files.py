@@ -335,3 +335,16 @@ def test_gear_tip_circle_is_thick_only_along_the_drawn_teeth() -> None:
         for a in thick:  # thick only along the teeth
             assert lo - 1e-9 <= a.start and a.end <= hi + 1e-9
         assert {r for _, r in tips} == {"link", "thin"}  # thin beyond them
+
+
+def test_library_solve_takes_a_file_and_its_sheet_scales_come_from_the_sheet() -> None:
+    """geomcad.solve accepts a file as the CLI does; its scales are the sheet layer's (the
+    build asks no sheet module), and a file takes no parameters."""
+    import geomcad
+
+    root = Path(__file__).resolve().parent.parent / "examples"
+    sol = geomcad.solve(str(root / "gear-pair.toml"))
+    assert sol.problem.scales is not None
+    assert sol.scales["l"] == pytest.approx(0.00025, rel=1e-12)  # the mesh at 4:1 on A1
+    with pytest.raises(TypeError, match="takes no parameters"):
+        geomcad.solve(str(root / "cam-flat.toml"), stroke=0.02)
