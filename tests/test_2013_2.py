@@ -380,22 +380,3 @@ def test_variant_sheets_fit_at_a_gost_scale(params: dict[str, object]) -> None:
     _check_layout(sheet)
     # every paragraph is drawn (a glyph missing from the font would have raised)
     assert any(t.text == "Порядок построения" for t in sheet.texts())
-
-
-def test_english_sheet_has_no_russian_word_and_passes_the_checker() -> None:
-    """--lang en: every word on the drawing from the English table (the title block's captions
-    are the frame's), a decimal point, and nothing the layout checker refuses."""
-    import re
-
-    from layout import block_part, layout_problems
-
-    from geomcad.sheet.lang import language
-    from geomcad.sheet.model import TextItem
-
-    with language("en"):
-        ((_, sheet),) = geomcad.solve("2013-2").sheets()
-    _form, drawn = block_part(sheet)
-    texts = [t.text for t in drawn if isinstance(t, TextItem)]
-    assert not [t for t in texts if re.search("[\u0400-\u04ff]", t)]
-    assert not [t for t in texts if re.search(r"\d,\d", t)]
-    assert not layout_problems(sheet)

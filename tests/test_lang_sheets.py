@@ -16,7 +16,7 @@ from pathlib import Path
 
 import ezdxf
 import pytest
-from layout import layout_problems
+from layout import block_part, layout_problems
 
 import geomcad
 from geomcad import documents, registry
@@ -34,13 +34,15 @@ from geomcad.sheet.frame import (
     new_sheet,
 )
 from geomcad.sheet.lang import current, language
-from geomcad.sheet.model import Polyline
+from geomcad.sheet.model import Polyline, TextItem
 from geomcad.sheet.scale import Scale, ScaleStyle
 from geomcad.sheet.style import ISO_DASHDOT, fit_open
 from geomcad.sheet.titleblock import TitleData
 
 ROOT = Path(__file__).resolve().parent.parent
 CYRILLIC = re.compile("[\u0400-\u04ff]")
+#: A decimal comma between digits: a Russian number on an English sheet.
+DECIMAL_COMMA = re.compile(r"\d,\d")
 BASELINE: dict[str, int] = json.loads((ROOT / "tests" / "lang_baseline.json").read_text())
 EXAMPLES = sorted((ROOT / "examples").glob("*.toml"))
 
@@ -110,6 +112,9 @@ def test_english_sheets_hold_no_russian(
     for name, sheet in sheets:
         russian = [t.text for t in sheet.texts() if CYRILLIC.search(t.text)]
         assert not russian, (target, name, russian[:5])
+        _form, drawn = block_part(sheet)
+        commas = [t.text for t in drawn if isinstance(t, TextItem) and DECIMAL_COMMA.search(t.text)]
+        assert not commas, (target, name, commas[:5])
         assert sheet.lang == "en"
         assert not layout_problems(sheet), (target, name, layout_problems(sheet))
         assert "Identification number" in {t.text for t in sheet.texts()}
