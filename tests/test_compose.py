@@ -218,3 +218,16 @@ def test_least_k_keeps_a_scale_the_task_fixes() -> None:
     lay = arrange(Row(free, held), Field.of_format("A3"))
     assert lay[free].scale is not None and lay[free].scale.k < 0.005
     assert lay[held].scale is not None and lay[held].scale.k == pytest.approx(0.005)
+
+
+@pytest.mark.parametrize("lang", ["ru", "en"])
+def test_order_of_construction_writes_every_recorded_step(lang: str) -> None:
+    """Any recorded step, whatever words its problem recorded (names with spaces and colons,
+    signs the sheet font lacks), gives a line the sheet can draw, not an error."""
+    import geomcad
+
+    with language(lang):
+        for pid in geomcad.problem_ids():
+            for step in geomcad.solve(pid).construction:
+                (first, *_rest) = Steps([step], width=160.0, only=[step.name]).lines
+                assert first.startswith("1. ")

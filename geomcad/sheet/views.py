@@ -587,15 +587,23 @@ def step_text(step: Step) -> str:
     for kind, pat in _OPS:
         m = pat.match(step.op)
         if m:
-            fields: dict[str, object] = {k: _names(v) for k, v in m.groupdict().items()}
-            fields["name"] = name_markup(step.name)
+            fields = {k: _names(_printable(v)) for k, v in m.groupdict().items()}
+            fields["name"] = _step_name(step.name)
             text = WORDS.table()[f"step.{kind}"].format(**fields)
             break
     else:
-        text = f"{name_markup(step.name)} = {_printable(step.op)}"
+        text = f"{_step_name(step.name)} = {_printable(step.op)}"
     if step.rule and "kernel" not in step.rule:
-        text += f" ({step.rule})"
+        text += f" ({_printable(step.rule)})"
     return text
+
+
+def _step_name(name: str) -> str:
+    """A step's name as markup: a symbol (``V_B``, ``O1``) through :func:`name_markup`, any
+    other recorded name (``plan 2: ∥ R_32``) as printable text."""
+    if re.fullmatch(r"[^\W\d]\w*'*", name):
+        return name_markup(name)
+    return _printable(name)
 
 
 def _printable(text: str) -> str:
