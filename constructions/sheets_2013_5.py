@@ -68,7 +68,7 @@ from .p2013_5 import BLOCK25, FRAME, H1, H2, PLANET, SUN
 #: titles); the scheme's greatest height (the first guess of k_l); the scheme's unit
 #: u = (radii spanned)/SCHEME_UNITS; the angle diagram's greatest width and pole distance.
 GAP = 14.0
-PAD_L, PAD_R, PAD_B, PAD_T = 8.0, 10.0, 24.0, 14.0
+PAD_L, PAD_R, PAD_B, PAD_T = 6.0, 7.0, 24.0, 14.0
 SCHEME_H = 140.0
 SCHEME_UNITS = 14.5
 RAY_W = 177.0
@@ -151,7 +151,7 @@ def _tree(sol: Solution, k_l: float, k_v: float) -> tuple[Node, dict[str, View],
     k_omega = max(nice_factor(max(om), RAY_W, "v").k, nice_factor(k_v / k_l, RAY_H, "v").k)
     rays = _scaled_rays(geo, k_v, k_omega)
     build = Figure(_build_box(geo, k_l, k_v), lambda v: _build(v, geo, kv), group="l",
-                   margin=1.0, weight=2.0)  # fmt: skip
+                   margin=0.5, weight=2.0)  # fmt: skip
     ray_view = Figure(_rays_box(geo, rays, k_l, k_v),
                       lambda v: _rays(v, geo, rays, kv, k_omega), group="l", margin=1.0,
                       title=WORDS("rays_title", k=num(k_omega)), show_scale=False)  # fmt: skip
@@ -179,15 +179,20 @@ def _arranged(sol: Solution) -> tuple[Node, Layout, float, float, float]:
     v_span = max(max(v_ends), 0.0) - min(min(v_ends), 0.0)
     k_l, k_v = _factors(geo)
     field = Field.of_format("A3")
-    for _ in range(6):
+    least_v = 0.0  # once the plan was narrowed for the scheme's scale, k_v stays that coarse
+    for _ in range(8):
         tree, views, k_omega = _tree(sol, k_l, k_v)
         lay = arrange(tree, field)
         placed = lay[views["build"]]
         assert placed.scale is not None
         nk_l = placed.scale.k
+        if nk_l > k_l and least_v < k_v:
+            # the scheme would lose its scale: a narrower plan (the next coarser k_v) first
+            k_v = least_v = nice_factor(v_span, 0.99 * v_span / k_v, "v").k
+            continue
         scheme_w = (_x_end(u) + 0.8 * u) / nk_l + PAD_L
         room = placed.inner[2] - placed.inner[0] - scheme_w - GAP - PAD_R
-        nk_v = nice_factor(v_span, max(room, 1.0), "v").k
+        nk_v = max(nice_factor(v_span, max(room, 1.0), "v").k, least_v)
         if (nk_l, nk_v) == (k_l, k_v):
             break
         k_l, k_v = nk_l, nk_v
