@@ -12,6 +12,12 @@ links' lines cut the line at H above S in segments ω/k_ω. Right: the data, the
 the angular velocities three ways (mesh equations, slopes, angle diagram) and the order of
 construction. A velocity shorter than two arrowheads is drawn as its end point and named in a
 note under the plan.
+
+Composed (geomcad.sheet.compose): the scheme and the plan are one Figure in metres at k_l (the
+plan's velocities drawn as lengths at k_l/k_v, so the levels carry across), the angle diagram a
+second Figure at the same k_l, the tables and the order of construction views of their own. The
+tree is rebuilt until k_l (the layout's) and k_v (the plan's factor for the room the scheme
+leaves in its box) settle; μ_ω follows from them.
 """
 
 from __future__ import annotations
@@ -22,7 +28,6 @@ from typing import TYPE_CHECKING, Any
 
 from geomcad.geom import Vec
 from geomcad.sheet import (
-    Drawing,
     Polyline,
     Scale,
     Sheet,
@@ -36,6 +41,20 @@ if TYPE_CHECKING:
     from geomcad.problem import Solution
 
 from geomcad.kinematics.trains import RayPlan
+from geomcad.sheet import views as V
+from geomcad.sheet.compose import (
+    Column,
+    Extent,
+    Field,
+    Figure,
+    Layout,
+    Node,
+    Row,
+    Spacer,
+    View,
+    arrange,
+    compose,
+)
 from geomcad.sheet.drawing import ARROW_LEN
 from geomcad.sheet.lang import Words, current
 from geomcad.sheet.scale import ScaleStyle, gost_length_scale, nice_factor
@@ -44,15 +63,15 @@ from geomcad.sheet.text import parse
 
 from .p2013_5 import BLOCK25, FRAME, H1, H2, PLANET, SUN
 
-#: The sheet's layout (mm): the scheme's left edge and top, the gap between the scheme and the
-#: plan, the tables' left edge; the scheme's greatest height; its width in units u = (radii
-#: spanned)/SCHEME_UNITS; the angle diagram's field (x from, x to) and greatest pole distance.
-LEFT, TOP, GAP, PANEL_X = 30.0, 38.0, 14.0, 262.0
+#: Sizes (mm): the gap between the scheme and the plan; the room kept for labels left of the
+#: scheme, right of the plan, under them (the axis' name and the note) and over them (the
+#: titles); the scheme's greatest height (the first guess of k_l); the scheme's unit
+#: u = (radii spanned)/SCHEME_UNITS; the angle diagram's greatest width and pole distance.
+GAP = 14.0
+PAD_L, PAD_R, PAD_B, PAD_T = 6.0, 7.0, 24.0, 14.0
 SCHEME_H = 140.0
 SCHEME_UNITS = 14.5
-SCHEME_W_U = 15.2
-RAY_FIELD = (40.0, 225.0)
-RAY_W = RAY_FIELD[1] - RAY_FIELD[0] - 8.0
+RAY_W = 177.0
 RAY_H = 40.0
 
 WORDS = Words(__package__, "sheets_2013_5")
@@ -72,34 +91,21 @@ def factor(k: Scale) -> str:
 LINK_LABEL = {SUN: "1", BLOCK25: "2–5", PLANET: "6", H1: "H_1–4", H2: "H_2–7", FRAME: "0"}
 
 
-def _factors(geo: Any) -> tuple[float, float, float]:
-    """k_l of the scheme (the largest GOST 2.302 scale at which its radii fit its height), k_v
-    of the plan (what the scheme and the gap leave before the tables), and μ_ω of the angle
-    diagram (its intercepts ω/μ_ω fit RAY_W, its pole distance stays below RAY_H)."""
+def _factors(geo: Any) -> tuple[float, float]:
+    """The first guess of the layout's factors: k_l of the scheme (the largest GOST 2.302 scale
+    at which its radii fit SCHEME_H), k_v of the plan (its velocities in half that height: a
+    narrow plan first, so that the layout can give the scheme its largest scale)."""
     y_lo, y_hi = geo.extent
-    height = y_hi - y_lo
-    k_l = gost_length_scale(height, SCHEME_H).k
+    k_l = gost_length_scale(y_hi - y_lo, SCHEME_H).k
     v_ends = [e.x for e in geo.plan.ends.values()]
     v_span = max(max(v_ends), 0.0) - min(min(v_ends), 0.0)
-    scheme_w = SCHEME_W_U * height / SCHEME_UNITS / k_l
-    k_v = nice_factor(v_span, PANEL_X - 12.0 - LEFT - GAP - scheme_w, "v").k
-    om = [abs(w) for w in geo.plan.omega.values()]
-    k_omega = max(nice_factor(max(om), RAY_W, "v").k, nice_factor(k_v / k_l, RAY_H, "v").k)
-    return k_l, k_v, k_omega
-
-
-def scales(sol: Solution) -> Mapping[str, float]:
-    """The sheet's factors: k_l of the scheme and k_v of the plan of linear velocities."""
-    k_l, k_v, _ = _factors(sol.data)
-    return {"l": k_l, "v": k_v}
+    return k_l, nice_factor(v_span, 0.5 * SCHEME_H, "v").k
 
 
 def sheets(sol: Solution) -> list[tuple[str, Sheet]]:
     """The main sheet of 2013-5."""
-    geo = sol.data
-    k = Scale(sol.scales["l"], "l")
-    kv = Scale(sol.scales["v"], "v")
-    k_omega = _factors(geo)[2]
+    tree, lay, k_l, _, _ = _arranged(sol)
+    k = Scale(k_l, "l")
     tb = TitleBlock(
         title=WORDS("tb_title"),
         designation=WORDS("designation"),
@@ -107,32 +113,118 @@ def sheets(sol: Solution) -> list[tuple[str, Sheet]]:
         lang=current(),
     )
     d = start("A3", tb)
-    d.text(WORDS("title"), (LEFT - 4.0, 13.0), 5.0)
-    d.text(
-        f"{factor(k)} (M {k.ratio_text() or '—'});  {factor(kv)};  "
-        f"μ_ω = {num(k_omega)} {WORDS('rad_s_mm')}",
-        (LEFT - 4.0, 20.0),
-        3.5,
-    )
+    compose(d, tree, layout=lay)
+    return [("", d.finish())]
+
+
+def _build_box(geo: Any, k_l: float, k_v: float) -> Extent:
+    """The model box (m, at k_l) of the scheme and the plan beside it: the plan's velocities
+    drawn at k_v as lengths k_l/k_v, the gap and the room for the labels (paper mm) at k_l."""
     y_lo, y_hi = geo.extent
     u = (y_hi - y_lo) / SCHEME_UNITS
-    v = d.viewport(k, (0.0, y_hi), (LEFT, TOP))
+    v_ends = [e.x for e in geo.plan.ends.values()]
+    right = _x_end(u) + 0.4 * u
+    plan_w = (max(max(v_ends), 0.0) - min(min(v_ends), 0.0)) * k_l / k_v
+    y_min = min(p.y for p in geo.points)
+    bottom = min(y_lo - 0.9 * u - 4.0 * k_l, y_min - PAD_B * k_l)
+    return (-0.4 * u - PAD_L * k_l, bottom, right + (GAP + PAD_R) * k_l + plan_w,
+            y_hi + PAD_T * k_l)  # fmt: skip
+
+
+def _rays_box(geo: Any, rays: RayPlan, k_l: float, k_v: float) -> Extent:
+    """The model box (at k_l) of the angle diagram, its labels' rows and the ratio under it."""
+    ends = [_pv(geo, k_l, k_v, e) for e in rays.ends.values()]
+    S = _pv(geo, k_l, k_v, rays.S)
+    xs = [e.x for e in ends] + [S.x]
+    text = text_box(parse("u_{1H2} = ω_1/ω_{H2} = 000,0/00,00 = 00,0"), 3.5)[0]
+    lo = min(xs) - 20.0 * k_l
+    hi = max(max(xs) + 4.0 * k_l, S.x + text * k_l)
+    return (lo, S.y - 0.55 * rays.H - 3.0 * k_l, hi, S.y + rays.H + 3.0 * 6.5 * k_l)
+
+
+def _tree(sol: Solution, k_l: float, k_v: float) -> tuple[Node, dict[str, View], float]:
+    """The sheet's views at the factors k_l, k_v: the heading, the scheme with the plan, the
+    angle diagram under them, the panel on the right; and μ_ω of the angle diagram."""
+    geo = sol.data
+    k, kv = Scale(k_l, "l"), Scale(k_v, "v")
+    om = [abs(w) for w in geo.plan.omega.values()]
+    k_omega = max(nice_factor(max(om), RAY_W, "v").k, nice_factor(k_v / k_l, RAY_H, "v").k)
+    rays = _scaled_rays(geo, k_v, k_omega)
+    build = Figure(_build_box(geo, k_l, k_v), lambda v: _build(v, geo, kv), group="l",
+                   margin=0.5, weight=2.0)  # fmt: skip
+    ray_view = Figure(_rays_box(geo, rays, k_l, k_v),
+                      lambda v: _rays(v, geo, rays, kv, k_omega), group="l", margin=1.0,
+                      title=WORDS("rays_title", k=num(k_omega)), show_scale=False)  # fmt: skip
+    head = V.Text(paragraph=WORDS("title"), width=160.0, height=5.0)
+    factors = V.Text(
+        lines=[
+            f"{factor(k)} (M {k.ratio_text() or '—'});  {factor(kv)};  "
+            f"μ_ω = {num(k_omega)} {WORDS('rad_s_mm')}"
+        ],
+        height=3.5,
+    )
+    field = Field.of_format("A3")
+    tb = Spacer((10.0, field.box[3] - field.obstacles[0][1]))
+    tree = Row(Column(head, factors, build, ray_view), Column(*_panel(sol, rays, k_v), tb))
+    return tree, {"build": build, "rays": ray_view}, k_omega
+
+
+def _arranged(sol: Solution) -> tuple[Node, Layout, float, float, float]:
+    """The tree rebuilt until its factors settle: k_l is the layout's, k_v the plan's factor
+    for the room the scheme leaves in the view's box (the plan's width depends on both)."""
+    geo = sol.data
+    y_lo, y_hi = geo.extent
+    u = (y_hi - y_lo) / SCHEME_UNITS
+    v_ends = [e.x for e in geo.plan.ends.values()]
+    v_span = max(max(v_ends), 0.0) - min(min(v_ends), 0.0)
+    k_l, k_v = _factors(geo)
+    field = Field.of_format("A3")
+    least_v = 0.0  # once the plan was narrowed for the scheme's scale, k_v stays that coarse
+    for _ in range(8):
+        tree, views, k_omega = _tree(sol, k_l, k_v)
+        lay = arrange(tree, field)
+        placed = lay[views["build"]]
+        assert placed.scale is not None
+        nk_l = placed.scale.k
+        if nk_l > k_l and least_v < k_v:
+            # the scheme would lose its scale: a narrower plan (the next coarser k_v) first
+            k_v = least_v = nice_factor(v_span, 0.99 * v_span / k_v, "v").k
+            continue
+        scheme_w = (_x_end(u) + 0.8 * u) / nk_l + PAD_L
+        room = placed.inner[2] - placed.inner[0] - scheme_w - GAP - PAD_R
+        nk_v = max(nice_factor(v_span, max(room, 1.0), "v").k, least_v)
+        if (nk_l, nk_v) == (k_l, k_v):
+            break
+        k_l, k_v = nk_l, nk_v
+    return tree, lay, k_l, k_v, k_omega
+
+
+def scales(sol: Solution) -> Mapping[str, float]:
+    """The sheet's factors: k_l of the scheme and k_v of the plan of linear velocities."""
+    _, _, k_l, k_v, _ = _arranged(sol)
+    return {"l": k_l, "v": k_v}
+
+
+def _build(v: Viewport, geo: Any, kv: Scale) -> None:
+    """The scheme and, beside it on the same levels, the plan of linear velocities."""
+    y_lo, y_hi = geo.extent
+    u = (y_hi - y_lo) / SCHEME_UNITS
     right, spots = _scheme(v, geo, u)
-    d.text(WORDS("scheme"), (LEFT, TOP - 12.0), 3.5)
+    top = v.p(Vec(0.0, y_hi))[1]
+    d = v.d
+    d.text(WORDS("scheme"), (v.p(Vec(-0.4 * u, 0.0))[0], top - 12.0), 3.5)
     x_axis = right + GAP + (-min(0.0, *(e.x for e in geo.plan.ends.values()))) / kv.k
-    vp = d.viewport(k, (0.0, y_hi), (x_axis, TOP))
-    d.text(WORDS("plan"), (right + GAP, TOP - 12.0), 3.5)
+    vp = d.viewport(v.scale, (0.0, y_hi), (x_axis, top))
+    d.text(WORDS("plan"), (right + GAP, top - 12.0), 3.5)
     short = _plan(v, vp, geo, kv, spots)
     if short:
         names = ", ".join(n.lower() for n in short)
         # the note under the plan, below the axis' own label
         y_note = vp.p(Vec(0.0, min(p.y for p in geo.points)))[1] + 12.0
         note = WORDS("short", names=names, mm=num(2.0 * ARROW_LEN, 2))
-        d.paragraph(note, right + GAP, y_note, PANEL_X - 8.0 - right - GAP, 2.5)
-    rays = _scaled_rays(geo, kv.k, k_omega)
-    _rays(d, geo, rays, k, kv, k_omega)
-    _panel(d, sol, rays)
-    return [("", d.finish())]
+        v_ends = [e.x for e in geo.plan.ends.values()]
+        width = (max(max(v_ends), 0.0) - min(min(v_ends), 0.0)) / kv.k + PAD_R
+        d.paragraph(note, right + GAP, y_note, max(width, 60.0), 2.5)
 
 
 # -- the scheme ----------------------------------------------------------------------------------
@@ -192,6 +284,11 @@ def _bearing(v: Viewport, at: Vec, on_frame: bool, drop: float = 0.0) -> None:
         _ground(v, foot)
 
 
+def _x_end(u: float) -> float:
+    """The output shaft's free end (model x) on the scheme of unit u."""
+    return 10.8 * u + 0.35 * u + 0.6 * u + 2.6 * u
+
+
 def _scheme(v: Viewport, geo: Any, u: float) -> tuple[float, dict[str, Vec]]:
     """Draw the scheme; return its right edge on the sheet (mm) and where each point of the plan
     lies on it."""
@@ -202,7 +299,7 @@ def _scheme(v: Viewport, geo: Any, u: float) -> tuple[float, dict[str, Vec]]:
     x1, x3, xh1, x5 = 3.0 * u, 6.5 * u, 9.0 * u, 10.8 * u
     xw2 = x1 + b / 2.0 + 0.6 * u
     xw7 = x5 + b / 2.0 + 0.6 * u
-    x_end = xw7 + 2.6 * u
+    x_end = _x_end(u)
     y_e = a + r["5"] + r["6"]
     y_ground = geo.extent[0] - 0.9 * u  # the frame's supports all stand on this level
     # axes
@@ -340,27 +437,17 @@ def _scaled_rays(geo: Any, k_v: float, k_omega: float) -> RayPlan:
     return RayPlan(rays.S, H, {k: rays.S + (e - rays.S) * f for k, e in rays.ends.items()})
 
 
-def _rays(d: Drawing, geo: Any, rays: RayPlan, k: Scale, kv: Scale, k_omega: float) -> None:
+def _rays(v: Viewport, geo: Any, rays: RayPlan, kv: Scale, k_omega: float) -> None:
     """The angle diagram: from S, rays parallel to the links' lines; they cut the line H above S
     in segments ω_i/k_ω."""
-    k_l = k.k
+    k_l = v.scale.k
+    d = v.d
     ends = {kk: _pv(geo, k_l, kv.k, e) for kk, e in rays.ends.items()}
     S = _pv(geo, k_l, kv.k, rays.S)
     xs = [e.x for e in ends.values()] + [S.x]
     lo, hi = min(xs), max(xs)
-    # centre the diagram under the scheme and the plan
-    y_lo = geo.extent[0]
-    top = TOP + (geo.extent[1] - y_lo) / k_l + 44.0
     h_mm = rays.H / k_l
-    field = RAY_FIELD
     width = (hi - lo) / k_l
-    x_s = field[0] + (field[1] - field[0] - width) / 2.0 + (S.x - lo) / k_l
-    v = d.viewport(k, S, (x_s, top + h_mm))
-    d.text(
-        WORDS("rays_title", k=num(k_omega)),
-        (LEFT - 4.0, top - 20.0),
-        3.5,
-    )
     base_lo = Vec(lo - 0.02 * (hi - lo), S.y + rays.H)
     base_hi = Vec(hi + 0.02 * (hi - lo), S.y + rays.H)
     v.seg(base_lo, base_hi, "construction")
@@ -403,10 +490,10 @@ def _rays(d: Drawing, geo: Any, rays: RayPlan, k: Scale, kv: Scale, k_omega: flo
 # -- the tables ----------------------------------------------------------------------------------
 
 
-def _panel(d: Drawing, sol: Solution, rays: RayPlan) -> None:
+def _panel(sol: Solution, rays: RayPlan, k_v: float) -> list[View]:
+    """The data, the results (Willis), the angular velocities three ways, the order of
+    construction."""
     p, r, geo = sol.params, sol.results, sol.data
-    x, y = PANEL_X, 10.0
-    d.text(WORDS("data"), (x, y + 3.5), 3.5)
     rows = [["z_1", "z_2", "z_3", "z_4", "z_5", "z_6", "z_7", WORDS("m_mm")]]
     derived = {n: n not in p for n in ("z4", "z7")}
     rows.append(
@@ -421,11 +508,8 @@ def _panel(d: Drawing, sol: Solution, rays: RayPlan) -> None:
             num(float(p["m"]) * 1000.0),
         ]
     )
-    _, h = d.table(x, y + 6.0, (18.0,) * 7 + (24.0,), rows, row_h=5.5)
-    y += 6.0 + h + 2.0
-    d.text(WORDS("coaxial"), (x, y + 2.5), 2.5)
-    y += 8.0
-    d.text(WORDS("results"), (x, y + 3.5), 3.5)
+    data = V.Table(rows, widths=(18.0,) * 7 + (24.0,), row_h=5.5, title=WORDS("data"))
+    coaxial = V.Text(lines=[WORDS("coaxial")])
     rows = [[WORDS("quantity"), WORDS("value")]]
     top, den = r["u1H2_fraction"]
     for name, label in (
@@ -443,13 +527,11 @@ def _panel(d: Drawing, sol: Solution, rays: RayPlan) -> None:
         if name == "u1H2" and den != 1:
             text = f"{top}/{den} = {text}"
         rows.append([label, text])
-    _, h = d.table(x, y + 6.0, (36.0, 60.0), rows, row_h=5.5)
-    y += 6.0 + h + 5.0
-    d.text(WORDS("omegas"), (x, y + 3.5), 3.5)
+    results = V.Table(rows, widths=(36.0, 60.0), row_h=5.5, title=WORDS("results"))
     rows = [[WORDS("link"), WORDS("by_meshes"), WORDS("by_slopes"), WORDS("by_rays")]]
     for link in (SUN, BLOCK25, PLANET, H1, H2):
         exact = geo.omega_exact[link]
-        ray_mm = (rays.ends[link].x - rays.S.x) / sol.scales["v"]
+        ray_mm = (rays.ends[link].x - rays.S.x) / k_v
         rows.append(
             [
                 LINK_LABEL[link],
@@ -460,10 +542,9 @@ def _panel(d: Drawing, sol: Solution, rays: RayPlan) -> None:
                 num(ray_mm, digits=4),
             ]
         )
-    _, h = d.table(x, y + 6.0, (18.0, 58.0, 36.0, 34.0), rows, row_h=5.5)
-    y += 6.0 + h + 5.0
-    y = d.text(WORDS("order"), (x, y + 3.5), 3.5).at[1] + 2.0
+    omegas = V.Table(rows, widths=(18.0, 58.0, 36.0, 34.0), row_h=5.5, title=WORDS("omegas"))
     u_txt = num(float(r["u1H2"]), 4)
     steps = [WORDS(f"step_{i}") for i in range(1, 5)] + [WORDS("step_5", u=u_txt)]
-    for i, step in enumerate(steps):
-        y = d.paragraph(f"{i + 1}. {step}", x, y, 148.0, 2.5, indent=4.0) + 0.4
+    order = V.Text(paragraphs=[f"{i + 1}. {s}" for i, s in enumerate(steps)], width=148.0,
+                   indent=4.0, title=WORDS("order"))  # fmt: skip
+    return [data, coaxial, results, omegas, order]

@@ -6,9 +6,10 @@
 - ``graphs`` (composed): I_pr(φ) and ω1(φ) over a turn from rest (the kinetic-energy theorem as
   a curve, the solve_ivp integration as points) with their ordinates, the equation of motion,
   and the two methods side by side in a table;
-- ``fbd`` (still placed by hand: the layout step gave the views 1:15 with room for their loads):
-  the free-body diagrams of flywheel, yoke and roller with the reactions and the inertia loads at
-  μ_F, and the mechanism balanced by the horizontal force F_x at the roller's axis.
+- ``fbd`` (composed): the free-body diagrams of flywheel, yoke and roller with the reactions and
+  the inertia loads at μ_F, and the mechanism balanced by the horizontal force F_x at the
+  roller's axis; each view's extent takes in its loads' reach, measured at the layout's scale
+  (the tree is rebuilt until the scales settle).
 
 Every word comes from ``strings/<lang>/sheets_kulisa.toml``.
 """
@@ -16,18 +17,20 @@ Every word comes from ``strings/<lang>/sheets_kulisa.toml``.
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 from geomcad.dynamics.analogues import Array
 from geomcad.geom import Arc, Circle, Vec
-from geomcad.sheet import Drawing, Scale, Sheet, TitleBlock, Viewport, start
+from geomcad.sheet import Scale, Sheet, TitleBlock, Viewport, start
 from geomcad.sheet import views as V
 from geomcad.sheet.compose import (
     Column,
     Field,
     Figure,
+    Layout,
     Node,
     Row,
     Spacer,
@@ -40,7 +43,8 @@ from geomcad.sheet.graph import Graph
 from geomcad.sheet.lang import Words, current
 from geomcad.sheet.loads import force, ground, moment
 from geomcad.sheet.motion import Frames, turn
-from geomcad.sheet.scale import gost_length_scale, gost_scale_to_fit, nice_factor
+from geomcad.sheet.placer import centre_line
+from geomcad.sheet.scale import nice_factor
 
 from .dyn_common import Where, draw_loads, f, load, mu, short_note, small
 from .p_kulisa import Data, mechanism, sweep, turns
@@ -519,7 +523,7 @@ Box = tuple[float, float, float, float]
 
 
 def _fbd_boxes(sol: Solution, data: Data) -> dict[str, Box]:
-    """The model boxes of the four views: flywheel, yoke, roller, the whole mechanism."""
+    """The model boxes of the four bodies: flywheel, yoke, roller, the whole mechanism."""
     p = _p(sol)
     R1, OA, R3 = p["R1"], p["OA"], p["R3"]
     A, c3 = data.yoke.pin.point(), data.C3
@@ -532,144 +536,193 @@ def _fbd_boxes(sol: Solution, data: Data) -> dict[str, Box]:
     }
 
 
-def _fbd_scale(boxes: dict[str, Box]) -> Scale:
-    """One GOST scale for the four views: two rows in 230 × 2·80 mm, with room for the loads."""
-
-    def w(b: Box) -> float:
-        return b[2] - b[0]
-
-    def h(b: Box) -> float:
-        return b[3] - b[1]
-
-    need = max(
-        (w(boxes["1"]) + w(boxes["2"])) / FBD_ROW[0],
-        (w(boxes["3"]) + w(boxes["all"])) / FBD_ROW[0],
-        max(h(b) for b in boxes.values()) / FBD_ROW[1],
-    )
-    return gost_length_scale(need * 100.0, 100.0)
-
-
-#: The room of one row of free-body views (mm): the sum of the two widths, the height.
-FBD_ROW = (170.0, 85.0)
+def _reach(box: Box, draw_fn: Callable[[Viewport], None], k: Scale) -> Box:
+    """The model box a view really takes at scale k: its body's ``box`` with the loads, their
+    values and the labels drawn round it at μ_F (paper mm) taken in, measured on a scratch
+    sheet (the loads' arrows have their own scale, so a view's extent depends on k)."""
+    d = start("A3", _tb("tb_fbd", 3))
+    first = len(d.sheet.items)
+    at = (210.0, 148.0)
+    draw_fn(d.viewport(k, (box[0], box[3]), at))
+    sheet = d.finish()
+    x0, y0, x1, y1 = box
+    for it in sheet.items[first:]:
+        bx0, by0, bx1, by1 = centre_line(it).bounds
+        x0, x1 = min(x0, box[0] + (bx0 - at[0]) * k.k), max(x1, box[0] + (bx1 - at[0]) * k.k)
+        y0, y1 = min(y0, box[3] - (by1 - at[1]) * k.k), max(y1, box[3] - (by0 - at[1]) * k.k)
+    return (x0, y0, x1, y1)
 
 
-def _fbd(sol: Solution) -> Sheet:
-    data: Data = sol.data
+def _fbd_draw(sol: Solution, data: Data) -> dict[str, Callable[[Viewport], None]]:
+    """How each of the four views is drawn through the viewport the layout gives it."""
     p = _p(sol)
-    boxes = _fbd_boxes(sol, data)
-    k = _fbd_scale(boxes)
     k_F = sol.scales["F"]
-    d = start("A3", _tb("tb_fbd", 3, k.ratio_text()))
-    d.text(WORDS("head_fbd"), (25.0, 13.0), 5.0)
-    d.text(WORDS("state_fbd", mu_l=mu(k), ratio=k.ratio_text(), eps=f(data.eps)), (25.0, 20.0),
-           3.5)  # fmt: skip
-    d.text(f"{short_note(k_F)}.", (25.0, 25.5), 2.5)
-
-    def view(name: str, left: float, mid_y: float) -> tuple[Viewport, float]:
-        b = boxes[name]
-        cx, cy = 0.5 * (b[0] + b[2]), 0.5 * (b[1] + b[3])
-        half = 0.5 * (b[2] - b[0]) / k.k
-        return d.viewport(k, (cx, cy), (left + half, mid_y)), left + 2.0 * half
-
     A = data.yoke.pin.point()
     c3 = data.C3
     D = Vec(c3.x, 0.0)
     P = Vec(c3.x, -p["r3"] - p["R3"])
     R = data.dynamic
-    gap = k.model(3.0)
-    top_y, bot_y = 88.0, 196.0
+
     # a) the flywheel
-    v1, right = view("1", 45.0, top_y)
-    d.text(WORDS("view_1"), (28.0, 32.0), 3.5)
-    _flywheel(v1, sol, data, pivot=False)
-    v1.label(A, "A", 3.5, prefer=(-1.0, 1.0))
-    v1.label((0.0, 0.0), "O", 3.5, prefer=(-1.0, -1.0))
-    draw_loads(v1, R, k_F, "1", {
-        "M": Where("M", radius=6.0, start_deg=160.0),
-        "M_Phi1": Where(WORDS("M_Phi1"), radius=11.0, start_deg=-20.0),
-        "R_{01}": Where("X_O", prefer=(0.0, 1.0)),
-        "N_A": Where("N_A", prefer=(0.0, 1.0)),
-    })  # fmt: skip
+    def flywheel(v1: Viewport) -> None:
+        _flywheel(v1, sol, data, pivot=False)
+        v1.label(A, "A", 3.5, prefer=(-1.0, 1.0))
+        v1.label((0.0, 0.0), "O", 3.5, prefer=(-1.0, -1.0))
+        draw_loads(v1, R, k_F, "1", {
+            "M": Where("M", radius=6.0, start_deg=160.0),
+            "M_Phi1": Where(WORDS("M_Phi1"), radius=11.0, start_deg=-20.0),
+            "R_{01}": Where("X_O", prefer=(0.0, 1.0)),
+            "N_A": Where("N_A", prefer=(0.0, 1.0)),
+        })  # fmt: skip
+
     # b) the yoke: the loads along the contact line y = 0 are drawn in the free space under the
     # bar (Ф_2 at C_2) and beyond the foot (R_32 at D), not along the bar's edge
-    v2, _ = view("2", right + 40.0, top_y)
-    d.text(WORDS("view_2"), (right + 30.0, 32.0), 3.5)
-    _yoke(v2, sol, data, guides=False)
-    v2.dot(data.C2)
-    v2.label(data.C2, "C_2", 3.5, prefer=(0.0, 1.0))
-    v2.dot(D)
-    v2.label(D, "D", 3.5, prefer=(1.0, -1.0))
-    v2.label(A, "A", 3.5, prefer=(-1.0, 1.0))
-    r32 = load(R, "2", "R_{32}")
-    draw_loads(v2, R, k_F, "2", {
-        # the pin's push arrives at A through the frame's outer side, clear of the bar
-        "N_A": Where("N_A", arrive=True, prefer=(0.0, 1.0)),
-        "Phi_2": Where(WORDS("Phi2"), prefer=(0.0, -1.0)),
-        # pointing away from the bar: leaving D; pointing at it: arriving from beyond the foot
-        "R_{32}": Where("R_{32}", arrive=r32 is not None and r32.x < 0.0, prefer=(0.0, -1.0)),
-        # the guide's couple drawn in the free space under the bar, right of the frame
-        "M_{02}": Where("M_{02}", at=Vec(data.C2.x, -0.45 * p["OA"]), radius=5.0,
-                        start_deg=60.0),
-    })  # fmt: skip
+    def yoke(v2: Viewport) -> None:
+        _yoke(v2, sol, data, guides=False)
+        v2.dot(data.C2)
+        v2.label(data.C2, "C_2", 3.5, prefer=(0.0, 1.0))
+        v2.dot(D)
+        v2.label(D, "D", 3.5, prefer=(1.0, -1.0))
+        v2.label(A, "A", 3.5, prefer=(-1.0, 1.0))
+        r32 = load(R, "2", "R_{32}")
+        draw_loads(v2, R, k_F, "2", {
+            # the pin's push arrives at A through the frame's outer side, clear of the bar
+            "N_A": Where("N_A", arrive=True, prefer=(0.0, 1.0)),
+            "Phi_2": Where(WORDS("Phi2"), prefer=(0.0, -1.0)),
+            # pointing away from the bar: leaving D; pointing at it: arriving from beyond the foot
+            "R_{32}": Where("R_{32}", arrive=r32 is not None and r32.x < 0.0, prefer=(0.0, -1.0)),
+            # the guide's couple drawn in the free space under the bar, right of the frame
+            "M_{02}": Where("M_{02}", at=Vec(data.C2.x, -0.45 * p["OA"]), radius=5.0,
+                            start_deg=60.0),
+        })  # fmt: skip
+
     # c) the roller, at its own (larger) scale: it is small beside the flywheel
-    b3 = boxes["3"]
-    k3 = gost_scale_to_fit(b3[2] - b3[0], b3[3] - b3[1], 96.0, 96.0)
-    half3 = 0.5 * (b3[2] - b3[0]) / k3.k
-    v3 = d.viewport(k3, ((b3[0] + b3[2]) / 2.0, (b3[1] + b3[3]) / 2.0), (32.0 + half3, 201.0))
-    right = 32.0 + 2.0 * half3
-    d.text(WORDS("view_3", ratio=k3.ratio_text()), (28.0, 146.0), 3.5)
-    _roller(v3, sol, data, base=False, foot=False)
-    for q, name, pref in ((D, "D", (-1.0, 1.0)), (P, "P", (-1.0, -1.0))):
-        v3.dot(q)
-        v3.label(q, name, 3.5, prefer=pref)
-    v3.label(c3, "C_3", 3.5, prefer=(-1.0, -1.0))
-    rim_mm, hub_mm = v3.mm(p["R3"]), v3.mm(p["r3"])
-    r_m3 = rim_mm - 8.0 if rim_mm - 8.0 > hub_mm + 6.0 else rim_mm + 4.0
-    draw_loads(v3, R, k_F, "3", {
-        "R_{32}": Where("R_{23}", prefer=(0.0, 1.0)),
-        "R_{03}": Where("R_{03}", prefer=(1.0, -1.0), short_at=P - Vec(0.0, gap)),
-        "Phi_3": Where(WORDS("Phi3"), prefer=(-1.0, 1.0)),
-        # inside the rim, outside the hub where there is room between them
-        "M_Phi3": Where(WORDS("M_Phi3"), radius=r_m3, start_deg=100.0),
-    }, centre=c3)  # fmt: skip
+    def roller(v3: Viewport) -> None:
+        _roller(v3, sol, data, base=False, foot=False)
+        for q, name, pref in ((D, "D", (-1.0, 1.0)), (P, "P", (-1.0, -1.0))):
+            v3.dot(q)
+            v3.label(q, name, 3.5, prefer=pref)
+        v3.label(c3, "C_3", 3.5, prefer=(-1.0, -1.0))
+        rim_mm, hub_mm = v3.mm(p["R3"]), v3.mm(p["r3"])
+        r_m3 = rim_mm - 8.0 if rim_mm - 8.0 > hub_mm + 6.0 else rim_mm + 4.0
+        gap = v3.scale.model(3.0)
+        draw_loads(v3, R, k_F, "3", {
+            "R_{32}": Where("R_{23}", prefer=(0.0, 1.0)),
+            "R_{03}": Where("R_{03}", prefer=(1.0, -1.0), short_at=P - Vec(0.0, gap)),
+            "Phi_3": Where(WORDS("Phi3"), prefer=(-1.0, 1.0)),
+            # inside the rim, outside the hub where there is room between them
+            "M_Phi3": Where(WORDS("M_Phi3"), radius=r_m3, start_deg=100.0),
+        }, centre=c3)  # fmt: skip
+
     # d) the mechanism balanced by F_x at the roller's axis (no inertia loads)
-    v4, _ = view("all", right + 25.0, bot_y)
-    d.text(WORDS("view_4"), (right + 30.0, 150.0), 3.5)
-    _flywheel(v4, sol, data)
-    _yoke(v4, sol, data)
-    _roller(v4, sol, data)
-    _numbers(v4, sol, data)
-    v4.label((0.0, 0.0), "O", 3.5, prefer=(-1.0, -1.0))
-    v4.label(c3, "C_3", 3.5, prefer=(0.0, -1.0))
-    moment(v4, (0.0, 0.0), p["M"], 6.0, f"M = {f(abs(p['M']))} {_u('Nm')}", role="result",
-           start=math.radians(160.0), height=2.5)  # fmt: skip
-    fx = data.static.force("F_x")
-    force(v4, c3, fx, k_F, f"F_x = {f(fx.norm)} {_u('N')}", role="result", height=2.5)
-    _panel_fbd(d, sol, data)
+    def balanced(v4: Viewport) -> None:
+        _flywheel(v4, sol, data)
+        _yoke(v4, sol, data)
+        _roller(v4, sol, data)
+        _numbers(v4, sol, data)
+        v4.label((0.0, 0.0), "O", 3.5, prefer=(-1.0, -1.0))
+        v4.label(c3, "C_3", 3.5, prefer=(0.0, -1.0))
+        moment(v4, (0.0, 0.0), p["M"], 6.0, f"M = {f(abs(p['M']))} {_u('Nm')}", role="result",
+               start=math.radians(160.0), height=2.5)  # fmt: skip
+        fx = data.static.force("F_x")
+        force(v4, c3, fx, k_F, f"F_x = {f(fx.norm)} {_u('N')}", role="result", height=2.5)
+
+    return {"1": flywheel, "2": yoke, "3": roller, "all": balanced}
+
+
+def _fbd_tree(sol: Solution, k: Scale, k3: Scale) -> tuple[Node, dict[str, View]]:
+    """The four views (a, b, d at one scale, the roller c at its own), their loads' reach
+    measured at the scales k and k3, the heading and the panel; the layout chooses between the
+    panel beside the top row and beside the whole."""
+    data: Data = sol.data
+    boxes = _fbd_boxes(sol, data)
+    draw = _fbd_draw(sol, data)
+    views: dict[str, View] = {}
+    # the loads' reach is measured, so the margins only keep the views apart
+    for name, key in (("1", "view_1"), ("2", "view_2"), ("all", "view_4")):
+        views[name] = Figure(_reach(boxes[name], draw[name], k), draw[name], title=WORDS(key),
+                             group="fbd", show_scale=False, margin=0.5, weight=3.0)  # fmt: skip
+    views["3"] = Figure(_reach(boxes["3"], draw["3"], k3), draw["3"], margin=0.5,
+                        title=WORDS("view_3", ratio=k3.ratio_text()), show_scale=False)  # fmt: skip
+    head = V.Text(lines=[WORDS("head_fbd")], height=5.0)
+    state = Column(
+        V.Text(lines=[WORDS("state_fbd", mu_l=mu(k), ratio=k.ratio_text(), eps=f(data.eps))],
+               height=3.5),
+        V.Text(paragraph=f"{short_note(sol.scales['F'])}.", width=NOTES_W),
+    )  # fmt: skip
+    tables, notes = _panel_fbd(sol, data, NOTES_W)
+    a, b, c, dd = views["1"], views["2"], views["3"], views["all"]
+    # a and b at one scale: the row split as their model widths
+    ab = Row(a, b, weights=[_width(v) for v in (a, b)])
+    # the title block's height under the field's bottom (a box may lie over it)
+    field = Field.of_format("A3")
+    tb = Spacer((10.0, field.box[3] - field.obstacles[0][1]))
+    # the tables beside the state line and the top row; the roller and the notes under them on
+    # the left, the balanced mechanism above the title block
+    tree = Column(
+        head,
+        Row(Column(state, ab), tables),
+        Row(Column(c, notes), Column(dd, tb)),
+    )
+    return tree, views
+
+
+def _width(v: View) -> float:
+    box = v.extent()
+    assert box is not None
+    return box[2] - box[0]
+
+
+def _fbd_scales(sol: Solution) -> tuple[Node, dict[str, View], Layout]:
+    """The tree rebuilt until its scales settle: the loads' arrows are drawn at μ_F, so the
+    room a view needs depends on its length scale."""
+    k, k3 = Scale(0.01, "l"), Scale(0.0025, "l")
+    tree, views = _fbd_tree(sol, k, k3)
+    lay = arrange(tree, Field.of_format("A3"))
+    for _ in range(4):
+        nk, nk3 = lay[views["all"]].scale, lay[views["3"]].scale
+        assert nk is not None and nk3 is not None
+        if (nk.k, nk3.k) == (k.k, k3.k):
+            break
+        k, k3 = nk, nk3
+        tree, views = _fbd_tree(sol, k, k3)
+        lay = arrange(tree, Field.of_format("A3"))
+    return tree, views, lay
+
+
+def _fbd(sol: Solution) -> Sheet:
+    tree, views, lay = _fbd_scales(sol)
+    k = lay[views["all"]].scale
+    assert k is not None
+    d = start("A3", _tb("tb_fbd", 3, k.ratio_text()))
+    compose(d, tree, layout=lay)
     return d.finish()
 
+
+#: The width (mm) of the free-body sheet's notes.
+NOTES_W = 180.0
 
 #: The names of the inertia loads on the free-body sheet's table, by the model's keys.
 _INERTIA = {"M_Phi1": "M_Phi1", "Phi_2": "Phi2", "Phi_3": "Phi3", "M_Phi3": "M_Phi3"}
 
 
-def _panel_fbd(d: Drawing, sol: Solution, data: Data) -> None:
-    x, y = 262.0, 26.0
-    width = 146.0
-    d.text(WORDS("fbd_table_head"), (x, y + 3.5), 3.5)
-    rows = _results_rows(
-        sol,
-        (
-            ("N_A", "N_A", "N"),
-            ("X_O", "X_O", "N"),
-            ("Y_O", "Y_O", "N"),
-            ("F_x", "F_x", "N"),
+def _panel_fbd(sol: Solution, data: Data, width: float = 140.0) -> tuple[Node, View]:
+    """The tables of the loads, and the notes (``width`` mm wide)."""
+    reactions = V.Table(
+        _results_rows(
+            sol,
+            (
+                ("N_A", "N_A", "N"),
+                ("X_O", "X_O", "N"),
+                ("Y_O", "Y_O", "N"),
+                ("F_x", "F_x", "N"),
+            ),
         ),
+        widths=(50.0, 90.0),
+        row_h=5.5,
+        title=WORDS("fbd_table_head"),
     )
-    _, h = d.table(x, y + 6.0, (50.0, 96.0), rows)
-    y += 6.0 + h + 6.0
     R = data.dynamic
-    d.text(WORDS("other_loads"), (x, y + 3.5), 3.5)
     n, nm = _u("N"), _u("Nm")
     vals = []
     for body in ("1", "2", "3"):
@@ -686,8 +739,7 @@ def _panel_fbd(d: Drawing, sol: Solution, data: Data) -> None:
     load_, value = WORDS("load"), WORDS("value")
     rows = [[load_, value, load_, value]]
     rows += [[*vals[i], *vals[i + 1]] for i in range(0, len(vals), 2)]
-    _, h = d.table(x, y + 6.0, (30.0, 43.0, 30.0, 43.0), rows)
-    y += 6.0 + h + 5.0
+    others = V.Table(rows, widths=(28.0, 42.0, 28.0, 42.0), row_h=5.5, title=WORDS("other_loads"))
     mb = R.moment("M_b")
     lines = (
         WORDS("fbd_1"),
@@ -695,8 +747,8 @@ def _panel_fbd(d: Drawing, sol: Solution, data: Data) -> None:
         WORDS("fbd_3", mb=small(mb, float(sol.params["M"]), nm)),
         WORDS("fbd_4", fx=f(sol.results["F_x"], 4), fk=f(data.F_x_kinetostatic, 4), n=n),
     )
-    for ln in lines:
-        y = d.paragraph(f"– {ln}", x, y, width, 2.5, indent=3.0) + 0.8
+    notes = V.Text(paragraphs=[f"– {ln}" for ln in lines], width=width, indent=3.0)
+    return Column(reactions, others), notes
 
 
 # -- the animation ------------------------------------------------------------------------------
