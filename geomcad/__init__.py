@@ -44,10 +44,11 @@ def solve(problem_id: str, **params: object) -> Solution:
     """Solve a registered problem with the given parameters (SI units; ``*_deg`` in degrees),
     or a linkage, cam or gear file (a path ending in ``.toml``; its data are its parameters)."""
     from geomcad import documents, registry
+    from geomcad.errors import ParameterError
 
-    if documents.is_file_id(problem_id):
-        if params:
-            raise TypeError(f"{problem_id}: a file takes no parameters (change the file)")
+    if isinstance(problem_id, str) and documents.is_file_id(problem_id):
+        for name, value in params.items():
+            raise ParameterError(name, value, f"{problem_id} is a file: change the file instead")
         return documents.solve(problem_id)
     return registry.get(problem_id).solve(**params)
 
