@@ -38,7 +38,7 @@ from geomcad.linkage.plans import Position, plan_name
 from geomcad.linkage.solution import Solved, scheme
 from geomcad.sheet import Drawing, TitleBlock, nice_factor, start
 from geomcad.sheet.compose import Choice, Column, Grid, Placed, Row, View, compose, scale_text
-from geomcad.sheet.drawing import Viewport
+from geomcad.sheet.drawing import ARROW_LEN, Viewport
 from geomcad.sheet.graph import Axis, Graph
 from geomcad.sheet.lang import Words, current
 from geomcad.sheet.linkage import WORDS as KIN_WORDS
@@ -47,7 +47,7 @@ from geomcad.sheet.loads import force, moment
 from geomcad.sheet.plans import markup_of
 from geomcad.sheet.scale import Scale
 from geomcad.sheet.scheme import draw_scheme
-from geomcad.sheet.views import AxisSpec, Curve, Diagram, Polygon, Table
+from geomcad.sheet.views import AxisSpec, Curve, Diagram, Polygon, Table, Text
 from geomcad.structure import Mechanism
 from geomcad.structure.model import Link
 
@@ -57,6 +57,10 @@ FORMAT = "A1"
 LOAD_MM = 24.0
 #: The longest load arrow on Zhukovsky's lever (mm); shorter than 1 mm are left out.
 LEVER_LOAD_MM = 40.0
+#: A force drawn shorter than this (two arrowheads) is drawn as a point with its label (·).
+SHORT_MM = 2.0 * ARROW_LEN
+#: The width of the note under the table of loads (mm).
+TABLE2_W = 60.0
 
 
 def force_position(s: Solved) -> int:
@@ -129,7 +133,10 @@ def _sheet2(d: Drawing, s: Solved, P: Position, f: Forces, k: int) -> None:
         for name, poly in gf.polygons
     ]
     lever = _Lever(lk, P, f)
-    table = _table2(f)
+    table: Table | Column = _table2(f)
+    if mech.short or lever.short or any(b.short for b in bodies):
+        mm = f"{SHORT_MM:g}" if current() == "en" else f"{SHORT_MM:g}".replace(".", ",")
+        table = Column(table, Text(paragraph=WORDS("short", mm=mm), width=TABLE2_W))
     compose(
         d,
         Choice(
@@ -161,12 +168,43 @@ def _bbox(pts: Sequence[Vec], minimum: float) -> tuple[float, float, float, floa
     return x0 - pad, y0 - pad, x1 + pad, y1 + pad
 
 
+#: Forces drawn as points, by the point they act at: one dot and one label for them all.
+Points = dict[tuple[float, float], tuple[Vec, list[str]]]
+
+
+def _force(
+    v: Viewport, at: Vec, F: Vec, k_F: float, label: str, points: Points, arrive: bool = False,
+    role: str = "vector",
+) -> None:  # fmt: skip
+    """A force at its μ_F; one shorter than :data:`SHORT_MM` goes to ``points`` (drawn by
+    :func:`_draw_points` as a dot with its label and the sign (·))."""
+    if F.norm / k_F < SHORT_MM:
+        if F.norm > 0.0:
+            x, y = v.p(at)
+            points.setdefault((round(x, 1), round(y, 1)), (at, []))[1].append(label)
+        return
+    force(v, at, F, k_F, label, arrive=arrive, role=role, height=2.5)
+
+
+def _draw_points(v: Viewport, points: Points) -> None:
+    """The forces too short for an arrow: a dot per point, their names in one label."""
+    for at, labels in points.values():
+        v.dot(at)
+        v.label(at, f"{', '.join(labels)} (·)", 2.5, clear=1.0)
+
+
+def _has_short(forces: Sequence[float], k_F: float) -> bool:
+    """True when some of ``forces`` (N) are drawn as points at ``k_F`` (the sheet says so)."""
+    return any(0.0 < F / k_F < SHORT_MM for F in forces)
+
+
 def _draw_loads(
-    v: Viewport, lk: Linkage, P: Position, loads: Sequence[Applied], k_F: float, role: str
-) -> None:
+    v: Viewport, lk: Linkage, P: Position, loads: Sequence[Applied], k_F: float, role: str,
+    points: Points,
+) -> None:  # fmt: skip
     for ld in loads:
         if ld.force is not None and ld.at is not None:
-            force(v, ld.at, ld.force, k_F, load_name(ld.name), role=role, height=2.5)
+            _force(v, ld.at, ld.force, k_F, load_name(ld.name), points, role=role)
         elif ld.moment != 0.0:
             moment(
                 v,
@@ -189,6 +227,8 @@ class _Loaded(View):
         big = max([ld.force.norm for ld in self.loads if ld.force is not None], default=0.0)
         self.kF = nice_factor(big or 1.0, LOAD_MM, "F")
         self._ext = _bbox(list(P.pos.values()), lk.length)
+        drawn = [ld.force.norm for ld in self.loads if ld.force is not None and ld.at is not None]
+        self.short = _has_short(drawn, self.kF.k)
 
     def extent(self) -> tuple[float, float, float, float]:
         return self._ext
@@ -205,7 +245,9 @@ class _Loaded(View):
         for name in P.pos:
             if name in lk.owner and lk.owner[name] != 0:
                 v.label(P.pos[name], name, 3.5, clear=1.0)
-        _draw_loads(v, lk, P, self.loads, self.kF.k, "vector")
+        points: Points = {}
+        _draw_loads(v, lk, P, self.loads, self.kF.k, "vector", points)
+        _draw_points(v, points)
         v.turn(P.pos[lk.pivot], self.f.M_bal, 30.0, WORDS("M_bal"), 8.0, 250.0, "result", 2.5)
 
 
@@ -226,6 +268,7 @@ class _FreeBody(View):
         forces = [ld.force.norm for i in links for ld in gf.loads[i] if ld.force is not None]
         forces += [r.force.norm for r in gf.reactions]
         self.kF = nice_factor(max(forces, default=0.0) or 1.0, LOAD_MM, "F")
+        self.short = _has_short(forces, self.kF.k)
 
     def extent(self) -> tuple[float, float, float, float]:
         return self._ext
@@ -245,12 +288,12 @@ class _FreeBody(View):
         mech = Mechanism(tuple(Link(x) for x in sorted(own | near)), pairs, full.frame)
         draw_scheme(v, mech, bodies=link_bodies(lk, P, links), pair_labels={},
                     ghosts=sorted(near))  # fmt: skip
+        points: Points = {}
         for i in links:
-            _draw_loads(v, lk, P, gf.loads[i], self.kF.k, "vector")
+            _draw_loads(v, lk, P, gf.loads[i], self.kF.k, "vector", points)
         for r in gf.reactions:
             if r.on in links:
-                force(v, r.at, r.force, self.kF.k, load_name(r.name), arrive=True, role="result",
-                      height=2.5)  # fmt: skip
+                _force(v, r.at, r.force, self.kF.k, load_name(r.name), points, True, "result")
                 if r.couple:
                     label = f"M_{{{r.of}{r.on}}}"
                     moment(v, P.pos[r.joint], r.couple, 6.0, label, "result", height=2.5)
@@ -262,6 +305,7 @@ class _FreeBody(View):
                 for ld in gf.loads[1]
             )
             v.turn(P.pos[lk.pivot], M, 30.0, WORDS("M_bal"), 7.0, 250.0, "result", 2.5)
+        _draw_points(v, points)
 
 
 def polygon_points(poly: ForcePolygon) -> list[Vec]:
@@ -277,6 +321,7 @@ class _Lever(View):
         lev = f.lever
         forces = [it.force.norm for it in lev.items] + [lev.F_bal.norm]
         self.kF = nice_factor(max(forces, default=0.0) or 1.0, LEVER_LOAD_MM, "F")
+        self.short = _has_short([F for F in forces if self.kF.mm(F) >= 1.0], self.kF.k)
         super().__init__(title=WORDS("lever"), title_height=5.0, quantity="v", series="nice",
                          margin=LEVER_LOAD_MM)  # fmt: skip
         self.lk, self.P, self.f = lk, P, f
@@ -312,11 +357,13 @@ class _Lever(View):
         for q, names in groups:
             v.dot(q)
             v.label(q, ", ".join(names), 2.5, clear=0.8)
+        points: Points = {}
         for it in lev.items:
             if self.kF.mm(it.force.norm) >= 1.0:
-                force(v, it.image, it.force, self.kF.k, load_name(it.name), height=2.5)
-        force(v, lev.images[lk.joint], lev.F_bal, self.kF.k, WORDS("P_bal"), role="result",
-              height=2.5)  # fmt: skip
+                _force(v, it.image, it.force, self.kF.k, load_name(it.name), points)
+        _force(v, lev.images[lk.joint], lev.F_bal, self.kF.k, WORDS("P_bal"), points,
+               role="result")  # fmt: skip
+        _draw_points(v, points)
 
 
 def _table2(f: Forces) -> Table:
