@@ -69,3 +69,9 @@ MIN_ANGLE = 1.0e-12
 #: A plan or a load group with nothing to show still gets a scale: its size is taken as at
 #: least this fraction (plan units per mm), so a factor can be chosen.
 EMPTY_PLAN = 1.0e-12
+
+#: Paper lengths (mm) and layout costs compared after arithmetic: below this they are equal.
+SHEET_MM = 1.0e-9
+
+#: The least drawn area (mm²) a view counts with in the layout's score (a log): an empty view.
+SHEET_AREA = 1.0e-6

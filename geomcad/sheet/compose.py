@@ -46,6 +46,7 @@ from dataclasses import dataclass, field
 from fractions import Fraction
 from typing import Any, Literal
 
+from geomcad import tol
 from geomcad.errors import ParameterError
 from geomcad.sheet.drawing import Drawing, Viewport
 from geomcad.sheet.frame import Frame
@@ -93,11 +94,11 @@ def round_scale(raw: float, q: Quantity, series: Series) -> Scale:
         raise ParameterError(f"k_{q}", raw, "a scale factor must be finite and positive")
     if series == "free":
         e = math.floor(math.log10(raw)) - 1
-        return Scale(math.ceil(raw / 10.0**e * (1 - 1e-12)) * 10.0**e, q)
+        return Scale(math.ceil(raw / 10.0**e * (1 - tol.REL_LENGTH)) * 10.0**e, q)
     if series == "gost":
         # k = 1/1000 m per mm of a ratio r: the smallest k ≥ raw is the largest r ≤ 1/(1000 raw)
         for k in _GOST_K:
-            if k >= raw * (1 - 1e-12):
+            if k >= raw * (1 - tol.REL_LENGTH):
                 return Scale(k, q)
         raise ParameterError(f"k_{q}", raw, "too large for the sheet even at 1:500")
     mantissas = NICE if series == "nice" else PLAN_NICE
@@ -105,7 +106,7 @@ def round_scale(raw: float, q: Quantity, series: Series) -> Scale:
     for exp in (e - 1, e, e + 1):
         for m in mantissas:
             k = m * 10.0**exp
-            if k >= raw * (1 - 1e-12):
+            if k >= raw * (1 - tol.REL_LENGTH):
                 return Scale(k, q)
     return Scale(10.0 ** (e + 2), q)  # pragma: no cover - 10^(e+1) ≥ raw always
 
@@ -552,7 +553,7 @@ def _leaf_score(v: View, cell: Box) -> float:
         nat = _nat(v)
         assert nat is not None
         w, h = _room(v, cell)
-        fits = nat[0] <= w + 1e-9 and nat[1] <= h + 1e-9
+        fits = nat[0] <= w + tol.SHEET_MM and nat[1] <= h + tol.SHEET_MM
         return (1.0 if fits else -1.0) * (cell[2] - cell[0]) * (cell[3] - cell[1])
     if kind == "stretch":
         return _stretch_fill(v, cell)
@@ -717,7 +718,7 @@ class _Solver:
                 continue
             parts = (*combo, steps - sum(combo))
             if fine and any(
-                abs(c / steps - sh) > 0.5 / coarse + 1e-9
+                abs(c / steps - sh) > 0.5 / coarse + tol.SHEET_MM
                 for c, sh in zip(parts, share, strict=True)
             ):
                 continue
@@ -843,13 +844,13 @@ def _areas(ev: _Eval, scales: Mapping[str, float]) -> dict[str, tuple[float, flo
             continue
         w = ev.views[key].weight
         if leaf.kind == "stretch":
-            out[f"#{key}"] = (max(leaf.area, 1e-6), w)
+            out[f"#{key}"] = (max(leaf.area, tol.SHEET_AREA), w)
             continue
         k = scales[leaf.group]
         cw, ch = leaf.content
-        area = (cw / k) * (ch / k) if math.isfinite(k) and k > 0.0 and cw > 0.0 else 1e-6
+        area = (cw / k) * (ch / k) if math.isfinite(k) and k > 0.0 and cw > 0.0 else tol.SHEET_AREA
         prev = out.get(leaf.group, (0.0, 0.0))
-        out[leaf.group] = (prev[0] + max(area, 1e-6), max(prev[1], w))
+        out[leaf.group] = (prev[0] + max(area, tol.SHEET_AREA), max(prev[1], w))
     return out
 
 

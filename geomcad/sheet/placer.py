@@ -35,6 +35,7 @@ from shapely.geometry import LineString, Point, Polygon
 from shapely.geometry import box as sbox
 from shapely.strtree import STRtree
 
+from geomcad import tol
 from geomcad.sheet.frame import Frame, reserved
 from geomcad.sheet.model import XY, ArcItem, CircleItem, Item, Polyline, Sheet, TextItem
 from geomcad.sheet.style import MAIN_LINE, style
@@ -405,7 +406,7 @@ def place_labels(sheet: Sheet, index: Index, requests: Sequence[LabelRequest]) -
                 index.remove_text(polys[i])
             total = c.base + index.text_cost(c.padded)
             k = int(np.argmin(total))
-            if rnd and total[chosen[i]] <= total[k] + 1e-9:
+            if rnd and total[chosen[i]] <= total[k] + tol.SHEET_MM:
                 k = chosen[i]
             chosen[i] = k
             polys[i] = c.core[k]

@@ -24,6 +24,7 @@ Every view's words come from the tables of :mod:`geomcad.sheet.lang`; numbers ar
 from __future__ import annotations
 
 import re
+import sys
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass
 from typing import Any, Protocol
@@ -352,7 +353,7 @@ class Diagram(View):
         ylo, yhi = self._range(self.y, 1)
         ax = Axis(
             self.x.symbol, self.x.unit, xlo, xhi,
-            nice_step(max(xhi - xlo, 1e-300) / room_x), self.x.name or self.x.symbol, self.x.tick,
+            nice_step(max(xhi - xlo, sys.float_info.min) / room_x), self.x.name or self.x.symbol, self.x.tick,
         )  # fmt: skip
         ay = Axis.fit(self.y.symbol, self.y.unit, ylo, yhi, room_y, self.y.name)
         if self.y.tick:
