@@ -353,7 +353,8 @@ class Diagram(View):
         ylo, yhi = self._range(self.y, 1)
         ax = Axis(
             self.x.symbol, self.x.unit, xlo, xhi,
-            nice_step(max(xhi - xlo, sys.float_info.min) / room_x), self.x.name or self.x.symbol, self.x.tick,
+            nice_step(max(xhi - xlo, sys.float_info.min) / room_x),
+            self.x.name or self.x.symbol, self.x.tick,
         )  # fmt: skip
         ay = Axis.fit(self.y.symbol, self.y.unit, ylo, yhi, room_y, self.y.name)
         if self.y.tick:
