@@ -39,6 +39,7 @@ from geomcad.sheet.compose import (
 from geomcad.sheet.drawing import ARROW_LEN
 from geomcad.sheet.graph import Graph
 from geomcad.sheet.lang import Words, current
+from geomcad.sheet.text import wrap
 
 from .layout_cache import per_language
 
@@ -523,4 +524,4 @@ def _notes(sol: Solution) -> list[str]:
         out.append(WORDS("note_radius"))
     if np.any(geo.profile.corner) and f.kind == "flat" and sol.params["law"] == "linear":
         out.append(WORDS("note_jump", a=_n(float(sol.results["a"]) * MM)))
-    return [line for par in out for line in V.wrap(par, PANEL_W, 3.0)]
+    return [line for par in out for line in wrap(par, PANEL_W, 3.0)]

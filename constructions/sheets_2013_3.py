@@ -29,6 +29,7 @@ from geomcad.sheet.compose import (
 from geomcad.sheet.drawing import SLIDER_SIZE
 from geomcad.sheet.lang import Words, current
 from geomcad.sheet.model import Polyline
+from geomcad.sheet.text import wrap
 
 from .layout_cache import per_language
 
@@ -74,7 +75,7 @@ def _views(sol: Solution, kv: Scale | None = None) -> tuple[Tree, Figure, V.Plan
         [
             line
             for par in [f"{i}. {WORDS(f'order_{i}')}" for i in range(1, 7)]
-            for line in V.wrap(par, ORDER_W, 2.5)
+            for line in wrap(par, ORDER_W, 2.5)
         ],
         title=WORDS("order_title"),
     )

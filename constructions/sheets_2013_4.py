@@ -37,7 +37,7 @@ from geomcad.sheet import views as V
 from geomcad.sheet.compose import Column, Field, Figure, Row, Spacer, Tree, arrange, compose
 from geomcad.sheet.drawing import ARROW_LEN
 from geomcad.sheet.lang import Words, current
-from geomcad.sheet.text import SUB_DROP, SUB_SCALE, SUP_RISE, metrics, run_size
+from geomcad.sheet.text import SUB_DROP, SUB_SCALE, SUP_RISE, metrics, run_size, wrap
 from geomcad.sheet.text import width as text_width
 
 from .layout_cache import per_language
@@ -107,7 +107,7 @@ def _views(sol: Solution) -> tuple[Tree, Figure]:
         [
             line
             for par in [f"{i}. {WORDS(f'order_{i}')}" for i in range(1, 6)]
-            for line in V.wrap(par, ORDER_W, 2.5)
+            for line in wrap(par, ORDER_W, 2.5)
         ],
         title=WORDS("order_title"),
     )

@@ -38,9 +38,9 @@ from geomcad.sheet.compose import (
     View,
     arrange,
     compose,
-    text_width,
 )
 from geomcad.sheet.lang import Words, current
+from geomcad.sheet.text import wrap
 
 from .p2013_7 import Geometry
 
@@ -478,7 +478,7 @@ def _steps(geo: Geometry) -> View:
     )
     lines: list[str] = []
     for i, step in enumerate(steps):
-        lines += _wrap(f"{i + 1}. {step}", STEPS_WIDTH, 3.0)
+        lines += wrap(f"{i + 1}. {step}", STEPS_WIDTH, 3.0)
     return V.Text(lines=lines, width=STEPS_WIDTH, height=3.0, title=WORDS("order"))
 
 
@@ -486,13 +486,3 @@ def _steps(geo: Geometry) -> View:
 TITLE_BLOCK = (188.0, 58.0)
 #: The width (mm) of the order of construction.
 STEPS_WIDTH = 195.0
-
-
-def _wrap(text: str, width: float, height: float) -> list[str]:
-    """``text`` wrapped at spaces into lines of at most ``width`` mm."""
-    out: list[list[str]] = [[]]
-    for word in text.split(" "):
-        if out[-1] and text_width(" ".join([*out[-1], word]), height) > width:
-            out.append([])
-        out[-1].append(word)
-    return [" ".join(w) for w in out]

@@ -35,12 +35,12 @@ from geomcad.sheet.compose import (
     View,
     arrange,
     compose,
-    text_width,
 )
 from geomcad.sheet.graph import Graph, nice_step
 from geomcad.sheet.lang import Words, current
 from geomcad.sheet.loads import damper, ground, moment, spring
 from geomcad.sheet.scale import nice_factor
+from geomcad.sheet.text import wrap
 
 from .dyn_common import Where, draw_loads, f, load, short_note, small
 from .p2013_9 import ROD, Data
@@ -151,8 +151,8 @@ def _main_views(
     )
     notes = V.Text(
         lines=[
-            *_wrap(WORDS("rod_motion", x=f(data.x), xd=f(data.xd), xdd=f(data.xdd)), 200.0, 3.0),
-            *_wrap(WORDS("forces_at_mu", note=short_note(k_F)), 200.0, 3.0),
+            *wrap(WORDS("rod_motion", x=f(data.x), xd=f(data.xd), xdd=f(data.xdd)), 200.0, 3.0),
+            *wrap(WORDS("forces_at_mu", note=short_note(k_F)), 200.0, 3.0),
         ],
         width=200.0,
         height=3.0,
@@ -165,16 +165,6 @@ def _main_views(
     )
     tree = Row(left, _panel_main(sol, data), weights=(0.62, 0.38))
     return tree, {"scheme": figs[0], "disc": figs[1], "rod": figs[2]}
-
-
-def _wrap(text: str, width: float, height: float = 2.5) -> list[str]:
-    """``text`` wrapped at spaces into lines of at most ``width`` mm."""
-    out: list[list[str]] = [[]]
-    for word in text.split(" "):
-        if out[-1] and text_width(" ".join([*out[-1], word]), height) > width:
-            out.append([])
-        out[-1].append(word)
-    return [" ".join(w) for w in out]
 
 
 def _crosshead(v: Viewport, data: Data, role: str = "link") -> None:
@@ -350,7 +340,7 @@ def _paragraphs(head: str, items: list[str], dash: bool = True) -> View:
     """A titled block of paragraphs, each wrapped to the panel's width."""
     lines: list[str] = []
     for it in items:
-        lines += _wrap(f"– {it}" if dash else it, PANEL_W)
+        lines += wrap(f"– {it}" if dash else it, PANEL_W, 2.5)
     return V.Text(lines=lines, width=PANEL_W, title=head)
 
 

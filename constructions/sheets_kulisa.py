@@ -37,7 +37,6 @@ from geomcad.sheet.compose import (
     View,
     arrange,
     compose,
-    text_width,
 )
 from geomcad.sheet.graph import Graph
 from geomcad.sheet.lang import Words, current
@@ -45,6 +44,7 @@ from geomcad.sheet.loads import force, ground, moment
 from geomcad.sheet.motion import Frames, turn
 from geomcad.sheet.placer import centre_line
 from geomcad.sheet.scale import nice_factor
+from geomcad.sheet.text import wrap
 
 from .dyn_common import Where, draw_loads, f, load, mu, short_note, small
 from .p_kulisa import Data, mechanism, sweep, turns
@@ -329,25 +329,15 @@ def _plan(sol: Solution, data: Data) -> tuple[View, View]:
         WORDS("plan_3", v2=f(v2.norm), u=ms),
         WORDS("plan_4", vc=f(vc.norm), u=ms, k3=f(k3)),
     ):
-        lines += _wrap(ln, 70.0)
+        lines += wrap(ln, 70.0, 2.5)
     return plan, V.Text(lines=lines, width=70.0)
-
-
-def _wrap(text: str, width: float, height: float = 2.5) -> list[str]:
-    """``text`` wrapped at spaces into lines of at most ``width`` mm."""
-    out: list[list[str]] = [[]]
-    for word in text.split(" "):
-        if out[-1] and text_width(" ".join([*out[-1], word]), height) > width:
-            out.append([])
-        out[-1].append(word)
-    return [" ".join(w) for w in out]
 
 
 def _notes(items: list[str], width: float = 0.0, dash: bool = False) -> View:
     width = width or PANEL_W
     lines: list[str] = []
     for it in items:
-        lines += _wrap(f"– {it}" if dash else it, width)
+        lines += wrap(f"– {it}" if dash else it, width, 2.5)
     return V.Text(lines=lines, width=width)
 
 

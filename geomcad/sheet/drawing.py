@@ -39,7 +39,7 @@ from geomcad.sheet.style import (
     fit_open,
     style,
 )
-from geomcad.sheet.text import box, parse
+from geomcad.sheet.text import box, parse, wrap
 
 #: Symbol sizes on paper (mm).
 JOINT_R = symbols.JOINT_R
@@ -174,15 +174,10 @@ class Drawing:
         """Text from (x, y top) wrapped at spaces into lines of at most ``width`` mm; following
         lines are indented by ``indent`` mm. Returns the y below the last line."""
         lead = height * LINE_SPACING
-        lines: list[list[str]] = [[]]
-        for word in markup.split(" "):
-            room = width - (indent if len(lines) > 1 else 0.0)
-            if lines[-1] and box(parse(" ".join([*lines[-1], word])), height)[0] > room:
-                lines.append([])
-            lines[-1].append(word)
-        for i, words in enumerate(lines):
+        lines = wrap(markup, width, height, indent)
+        for i, line in enumerate(lines):
             at = (x + (indent if i else 0.0), y + height + i * lead)
-            self.text(" ".join(words), at, height, role="title")
+            self.text(line, at, height, role="title")
         return y + height + (len(lines) - 1) * lead + (lead - height)
 
     # -- label placement -----------------------------------------------------------------------

@@ -160,6 +160,18 @@ def box(runs: tuple[Run, ...], cap_height: float) -> tuple[float, float, float]:
     return w, up, down
 
 
+def wrap(markup: str, width: float, height: float, indent: float = 0.0) -> list[str]:
+    """``markup`` wrapped at spaces into lines of at most ``width`` mm at cap height ``height``
+    (lines after the first ``indent`` mm narrower)."""
+    lines: list[list[str]] = [[]]
+    for word in markup.split(" "):
+        room = width - (indent if len(lines) > 1 else 0.0)
+        if lines[-1] and box(parse(" ".join([*lines[-1], word])), height)[0] > room:
+            lines.append([])
+        lines[-1].append(word)
+    return [" ".join(w) for w in lines]
+
+
 def placed_runs(t: TextItem) -> Iterator[tuple[Run, float, float, float]]:
     """Each non-empty run of a text with the start of its baseline (x, y) on the paper, before
     the text is turned by its ``angle`` about ``t.at``, and its font size: the one layout every

@@ -44,7 +44,7 @@ from geomcad.sheet.lang import Words, current
 from geomcad.sheet.plans import LINE_OVER_MM, markup_of, plan_lines
 from geomcad.sheet.scale import fmt_number
 from geomcad.sheet.scheme import Body, draw_scheme
-from geomcad.sheet.text import metrics
+from geomcad.sheet.text import metrics, wrap
 from geomcad.structure import Mechanism
 
 WORDS = Words(__package__, "views")
@@ -547,18 +547,6 @@ class Text(View):
         for i, (t, dx) in enumerate(zip(self.lines, self.shifts, strict=True)):
             d.text(t, (at.inner[0] + dx, at.inner[1] + self.height + i * lead), self.height,
                    role="title")  # fmt: skip
-
-
-def wrap(text: str, width: float, height: float, indent: float = 0.0) -> list[str]:
-    """``text`` wrapped at spaces into lines of at most ``width`` mm (lines after the first
-    ``indent`` mm narrower)."""
-    lines: list[list[str]] = [[]]
-    for word in text.split(" "):
-        room = width - (indent if len(lines) > 1 else 0.0)
-        if lines[-1] and text_width(" ".join([*lines[-1], word]), height) > room:
-            lines.append([])
-        lines[-1].append(word)
-    return [" ".join(w) for w in lines]
 
 
 # --- the order of construction -------------------------------------------------------------------
