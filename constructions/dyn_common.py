@@ -13,7 +13,7 @@ from typing import Any
 from geomcad import tol
 from geomcad.geom import Vec
 from geomcad.sheet import Scale, Viewport, fmt_number
-from geomcad.sheet.drawing import ARROW_LEN
+from geomcad.sheet.drawing import SHORT_MM
 from geomcad.sheet.lang import Words, current
 from geomcad.sheet.loads import force, moment
 from geomcad.sheet.scale import ScaleStyle
@@ -24,7 +24,6 @@ WORDS = Words(__package__, "dyn_common")
 #: A force arrow shorter than this (mm) is drawn this long, so that its head shows.
 #: A force shorter than this at μ_F (two arrowheads) cannot be read as an arrow: it is drawn as
 #: a point with its label, and the sheet says so (SHEETS.md).
-SHORT_MM = 2.0 * ARROW_LEN
 
 
 def f(x: float, digits: int = 4) -> str:

@@ -36,7 +36,7 @@ from geomcad.sheet.compose import (
     arrange,
     compose,
 )
-from geomcad.sheet.drawing import ARROW_LEN
+from geomcad.sheet.drawing import ARROW_LEN, SHORT_MM
 from geomcad.sheet.graph import Graph
 from geomcad.sheet.lang import Words, current
 from geomcad.sheet.text import wrap
@@ -57,7 +57,6 @@ MAX_ROWS = 7
 #: The face lines run this far (paper mm) past the contact point and the follower's axis.
 FACE_OVER = 6.0
 #: A plan vector shorter than this (mm) is drawn as a point with its label (twice the head).
-SHORTEST = 2.0 * ARROW_LEN
 #: Width (mm) of the panel's text, and the title block's height (kept free under the panel).
 PANEL_W = 250.0
 BLOCK_H = 52.0
@@ -400,7 +399,7 @@ def _plan(pv: Viewport, sol: Solution) -> None:
     b1, b2 = plan.V_B1, plan.V_B2
     for a, b, name in ((pole, b1, "V_{B1}"), (pole, b2, "V_{B2}"), (b1, b2, "V_{B2B1}")):
         length = kv.mm((b - a).norm)
-        if length >= SHORTEST:
+        if length >= SHORT_MM:
             pv.arrow(a, b, "vector")
         elif length > 0.0:
             pv.dot(b, "point")

@@ -55,7 +55,7 @@ from geomcad.sheet.compose import (
     arrange,
     compose,
 )
-from geomcad.sheet.drawing import ARROW_LEN
+from geomcad.sheet.drawing import SHORT_MM
 from geomcad.sheet.lang import Words, current
 from geomcad.sheet.scale import ScaleStyle, gost_length_scale, nice_factor
 from geomcad.sheet.text import box as text_box
@@ -221,7 +221,7 @@ def _build(v: Viewport, geo: Any, kv: Scale) -> None:
         names = ", ".join(n.lower() for n in short)
         # the note under the plan, below the axis' own label
         y_note = vp.p(Vec(0.0, min(p.y for p in geo.points)))[1] + 12.0
-        note = WORDS("short", names=names, mm=num(2.0 * ARROW_LEN, 2))
+        note = WORDS("short", names=names, mm=num(SHORT_MM, 2))
         v_ends = [e.x for e in geo.plan.ends.values()]
         width = (max(max(v_ends), 0.0) - min(min(v_ends), 0.0)) / kv.k + PAD_R
         d.paragraph(note, right + GAP, y_note, max(width, 60.0), 2.5)
@@ -403,7 +403,7 @@ def _plan(
         x_end = max(vp.p(end)[0], vp.p(Vec(0.0, p.y))[0]) + 3.0
         vp.d.sheet.add(Polyline(((x0, level), (x_end, level)), "construction"))
         length = abs(vp.mm(end.x))
-        if length >= 2.0 * ARROW_LEN:
+        if length >= SHORT_MM:
             vp.arrow(Vec(0.0, p.y), end, "vector")
         elif length > 0.0:
             short.append(p.name)

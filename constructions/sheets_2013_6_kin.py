@@ -36,7 +36,7 @@ from geomcad.sheet.compose import (
     arrange,
     compose,
 )
-from geomcad.sheet.drawing import ARROW_LEN
+from geomcad.sheet.drawing import SHORT_MM
 from geomcad.sheet.frame import TB_HEIGHT
 from geomcad.sheet.graph import Axis, Graph, nice_step
 from geomcad.sheet.lang import Words, current
@@ -81,7 +81,6 @@ GRAPH_HEAD = 4.0
 #: How far (m) the guide is drawn either side of the slider, as a share of l4.
 GUIDE_EXT = 0.3
 #: A vector shorter than this (mm) is drawn as its end point (it would be all arrowhead).
-SHORT_MM = 2.0 * ARROW_LEN
 
 
 def num(x: float, digits: int = 6) -> str:

@@ -46,6 +46,9 @@ JOINT_R = symbols.JOINT_R
 DOT_R = 0.6
 ARROW_LEN = 3.5
 ARROW_HALF_WIDTH = 0.6
+#: The shortest vector drawn as an arrow (mm): two arrowheads. A shorter one is drawn as a point
+#: with its label, and the sheet says so.
+SHORT_MM = 2.0 * ARROW_LEN
 SLIDER_SIZE = symbols.SLIDER_SIZE
 HATCH_STEP = symbols.HATCH_STEP
 HATCH_LEN = symbols.HATCH_LEN

@@ -36,9 +36,9 @@ from geomcad.linkage.loads import centre_vec
 from geomcad.linkage.model import Linkage
 from geomcad.linkage.plans import Position, plan_name
 from geomcad.linkage.solution import Solved, scheme
-from geomcad.sheet import Drawing, TitleBlock, nice_factor, start
+from geomcad.sheet import Drawing, TitleBlock, fmt_number, nice_factor, start
 from geomcad.sheet.compose import Choice, Column, Grid, Placed, Row, View, compose, scale_text
-from geomcad.sheet.drawing import ARROW_LEN, Viewport
+from geomcad.sheet.drawing import SHORT_MM, Viewport
 from geomcad.sheet.graph import Axis, Graph
 from geomcad.sheet.lang import Words, current
 from geomcad.sheet.linkage import WORDS as KIN_WORDS
@@ -57,8 +57,6 @@ FORMAT = "A1"
 LOAD_MM = 24.0
 #: The longest load arrow on Zhukovsky's lever (mm); shorter than 1 mm are left out.
 LEVER_LOAD_MM = 40.0
-#: A force drawn shorter than this (two arrowheads) is drawn as a point with its label (·).
-SHORT_MM = 2.0 * ARROW_LEN
 #: The width of the note under the table of loads (mm).
 TABLE2_W = 60.0
 
@@ -135,8 +133,8 @@ def _sheet2(d: Drawing, s: Solved, P: Position, f: Forces, k: int) -> None:
     lever = _Lever(lk, P, f)
     table: Table | Column = _table2(f)
     if mech.short or lever.short or any(b.short for b in bodies):
-        mm = f"{SHORT_MM:g}" if current() == "en" else f"{SHORT_MM:g}".replace(".", ",")
-        table = Column(table, Text(paragraph=WORDS("short", mm=mm), width=TABLE2_W))
+        note = WORDS("short", mm=fmt_number(SHORT_MM))
+        table = Column(table, Text(paragraph=note, width=TABLE2_W))
     compose(
         d,
         Choice(

@@ -38,7 +38,7 @@ from geomcad.forces import ForcePolygon
 from geomcad.geom import Vec
 from geomcad.kinematics.plan import Plan
 from geomcad.sheet.compose import Extent, Placed, View, text_width
-from geomcad.sheet.drawing import ARROW_LEN, LINE_SPACING, Drawing, Viewport
+from geomcad.sheet.drawing import LINE_SPACING, SHORT_MM, Drawing, Viewport
 from geomcad.sheet.graph import Axis, Graph, nice_step
 from geomcad.sheet.lang import Words, current
 from geomcad.sheet.plans import LINE_OVER_MM, markup_of, plan_lines
@@ -208,7 +208,7 @@ def draw_polygon(
     points: list[str] = []
     for pv in poly.vectors:
         text = (names or {}).get(pv.name, pv.name)
-        if v.mm(pv.magnitude) < 2.0 * ARROW_LEN:
+        if v.mm(pv.magnitude) < SHORT_MM:
             if v.mm(pv.magnitude) > 0.0 or pv.magnitude == 0.0:
                 v.dot(pv.tail)
                 v.label(pv.tail, text, height, clear=0.8)
