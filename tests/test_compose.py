@@ -31,6 +31,7 @@ from geomcad.sheet.lang import language
 from geomcad.sheet.model import CircleItem, Polyline
 from geomcad.sheet.scale import Scale
 from geomcad.sheet.symbols import Local, block
+from geomcad.sheet.views import WORDS as WORDS_VIEWS
 from geomcad.sheet.views import AxisSpec, Curve, Diagram, Polygon, Steps, Table, step_text
 
 
@@ -221,13 +222,23 @@ def test_least_k_keeps_a_scale_the_task_fixes() -> None:
 
 
 @pytest.mark.parametrize("lang", ["ru", "en"])
-def test_order_of_construction_writes_every_recorded_step(lang: str) -> None:
-    """Any recorded step, whatever words its problem recorded (names with spaces and colons,
-    signs the sheet font lacks), gives a line the sheet can draw, not an error."""
+def test_order_of_construction_writes_every_step_of_a_general_kind(lang: str) -> None:
+    """Every recorded step of a general kind (the recorder's verbs) gives a line the sheet can
+    draw in either language, whatever its names (spaces, colons, signs the font lacks); a step
+    of no kind is refused, naming the step, rather than written in the recorder's English."""
     import geomcad
+    from geomcad.construction import recorder
 
+    general = {k.removeprefix("step.") for k in WORDS_VIEWS.table() if k.startswith("step.")}
+    seen = set()
     with language(lang):
         for pid in geomcad.problem_ids():
             for step in geomcad.solve(pid).construction:
-                (first, *_rest) = Steps([step], width=160.0, only=[step.name]).lines
-                assert first.startswith("1. ")
+                if step.kind in general:
+                    seen.add(step.kind)
+                    (first, *_rest) = Steps([step], width=160.0, only=[step.name]).lines
+                    assert first.startswith("1. ") and "{" not in first.replace("_{", "")
+        bare = recorder.Step(1, "X", "something in English", (), None, "construction")
+        with pytest.raises(ValueError, match="step 'X = something in English': no template"):
+            step_text(bare)
+    assert {"given", "intersection", "circle", "perpendicular"} <= seen

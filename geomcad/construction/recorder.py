@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import contextlib
 import math
-from collections.abc import Callable, Iterator, Sequence
+from collections.abc import Callable, Iterator, Mapping, Sequence
 from dataclasses import dataclass
 from typing import Any, TypeVar
 
@@ -55,6 +55,11 @@ class Step:
     role: str
     note: str = ""
     rule: str = ""
+    #: what the step does, for the order of construction: a template key (``intersection``,
+    #: ``circle``, a problem's own ``cross``); "" for a step no template describes
+    kind: str = ""
+    #: the template's operands: object names (``B0B1``) or numbers, by the template's field names
+    args: tuple[tuple[str, str | float], ...] = ()
 
     @property
     def title(self) -> str:
@@ -142,8 +147,14 @@ class Construction:
         role: str = "construction",
         note: str = "",
         rule: str = "",
+        kind: str = "",
+        args: Mapping[str, object] | None = None,
     ) -> T:
-        """Store a step whose result was computed by the caller; return the result."""
+        """Store a step whose result was computed by the caller; return the result.
+
+        ``kind`` and ``args`` say what the step does in a structured form, for the order of
+        construction a sheet writes from the steps (a template per kind and language); an
+        argument that is a recorded object is stored by its name, a number as a float."""
         if role not in ROLES:
             raise ValueError(f"unknown role {role!r}; roles are {', '.join(ROLES)}")
         if name in self._by_name:
@@ -157,12 +168,23 @@ class Construction:
             role,
             note,
             rule,
+            kind,
+            self._args(args or {}),
         )
         self.steps.append(s)
         self._by_name[name] = s
         with contextlib.suppress(TypeError):  # unhashable results keep no name
             self._names.setdefault(result, name)
         return result
+
+    def _args(self, args: Mapping[str, object]) -> tuple[tuple[str, str | float], ...]:
+        out: list[tuple[str, str | float]] = []
+        for k, v in args.items():
+            if isinstance(v, bool) or not isinstance(v, (int, float, str)):
+                out.append((k, self.name_of(v)))
+            else:
+                out.append((k, v if isinstance(v, str) else float(v)))
+        return tuple(out)
 
     def run(
         self,
@@ -172,6 +194,8 @@ class Construction:
         inputs: Sequence[object] = (),
         role: str = "construction",
         note: str = "",
+        kind: str = "",
+        args: Mapping[str, object] | None = None,
     ) -> T:
         """Run ``fn`` as step ``name``; renames a :class:`ConstructionError` to the step."""
         title = f"{name} = {op}"
@@ -183,28 +207,52 @@ class Construction:
             if not is_numeric(exc):
                 raise
             raise ConstructionError(title, why(exc)) from exc
-        return self.record(name, op, result, inputs, role, note)
+        return self.record(name, op, result, inputs, role, note, kind=kind, args=args)
 
     # -- the verbs -----------------------------------------------------------------------------
+    # Each verb records its kind and operands (``kind``/``args`` of :class:`Step`); a caller that
+    # words its own operation (``op``) says what it is by its own ``kind`` and ``args``.
     def point(
-        self, name: str, p: PointLike, role: str = "given", note: str = "", op: str = ""
+        self,
+        name: str,
+        p: PointLike,
+        role: str = "given",
+        note: str = "",
+        op: str = "",
+        kind: str = "",
+        args: Mapping[str, object] | None = None,
     ) -> Vec:
         """A given (or computed-elsewhere) point."""
         v = vec(p)
-        return self.record(name, op or "given", v, (), role, note)
+        kind = kind or ("" if op else "given")
+        return self.record(name, op or "given", v, (), role, note, kind=kind, args=args)
 
     def value(
-        self, name: str, x: float, op: str, inputs: Sequence[object] = (), note: str = ""
+        self,
+        name: str,
+        x: float,
+        op: str,
+        inputs: Sequence[object] = (),
+        note: str = "",
+        kind: str = "",
+        args: Mapping[str, object] | None = None,
     ) -> float:
         """A number the construction measures or computes (a length, an angle)."""
-        return self.record(name, op, float(x), inputs, "hidden", note)
+        return self.record(name, op, float(x), inputs, "hidden", note, kind=kind, args=args)
 
     def segment(
         self, name: str, a: Vec, b: Vec, role: str = "construction", note: str = ""
     ) -> Segment:
         """The segment between two recorded points."""
         return self.record(
-            name, f"segment {self.name_of(a)}{self.name_of(b)}", Segment(a, b), (a, b), role, note
+            name,
+            f"segment {self.name_of(a)}{self.name_of(b)}",
+            Segment(a, b),
+            (a, b),
+            role,
+            note,
+            kind="segment",
+            args={"a": a, "b": b},
         )
 
     def line_through(
@@ -212,7 +260,16 @@ class Construction:
     ) -> Line:
         """The line through two points, directed from a to b."""
         op = f"line {self.name_of(a)}{self.name_of(b)}"
-        return self.run(name, op, lambda: Line.through(a, b), (a, b), role, note)
+        return self.run(
+            name,
+            op,
+            lambda: Line.through(a, b),
+            (a, b),
+            role,
+            note,
+            kind="line",
+            args={"a": a, "b": b},
+        )
 
     def line(
         self,
@@ -222,9 +279,13 @@ class Construction:
         op: str,
         role: str = "construction",
         note: str = "",
+        kind: str = "",
+        args: Mapping[str, object] | None = None,
     ) -> Line:
         """A line through ``p`` along ``direction``, described by ``op``."""
-        return self.run(name, op, lambda: Line.of(p, direction), (p,), role, note)
+        return self.run(
+            name, op, lambda: Line.of(p, direction), (p,), role, note, kind=kind, args=args
+        )
 
     def circle(
         self,
@@ -235,16 +296,34 @@ class Construction:
         note: str = "",
         r_name: str = "",
     ) -> Circle:
-        """The circle about a recorded centre."""
+        """The circle about a recorded centre (its radius named ``r_name`` in the words)."""
         op = f"circle({self.name_of(centre)}, {r_name or fmt(float(r))})"
-        return self.run(name, op, lambda: Circle(centre, float(r)), (centre,), role, note)
+        return self.run(
+            name,
+            op,
+            lambda: Circle(centre, float(r)),
+            (centre,),
+            role,
+            note,
+            kind="circle",
+            args={"c": centre, "r": r_name or float(r)},
+        )
 
     def perpendicular(
         self, name: str, line: Line, through: Vec, role: str = "construction", note: str = ""
     ) -> Line:
         """The perpendicular to a line through a point."""
         op = f"perpendicular to {self.name_of(line)} at {self.name_of(through)}"
-        return self.record(name, op, perpendicular(line, through), (line, through), role, note)
+        return self.record(
+            name,
+            op,
+            perpendicular(line, through),
+            (line, through),
+            role,
+            note,
+            kind="perpendicular",
+            args={"line": line, "p": through},
+        )
 
     def parallel(
         self,
@@ -255,11 +334,27 @@ class Construction:
         role: str = "construction",
         note: str = "",
         op: str = "",
+        kind: str = "",
+        args: Mapping[str, object] | None = None,
     ) -> Line:
         """The parallel to a line through a point, or at a signed offset (left > 0)."""
         where = f"through {self.name_of(through)}" if through is not None else f"at {fmt(offset)}"
+        if not kind:
+            kind = "parallel" if through is not None else "parallel_at"
+            args = {"line": line, "p": through} if through is not None else {"line": line}
+            if through is None:
+                args["d"] = abs(offset)
         op = op or f"parallel to {self.name_of(line)} {where}"
-        return self.record(name, op, parallel(line, through, offset), (line,), role, note)
+        return self.record(
+            name,
+            op,
+            parallel(line, through, offset),
+            (line,),
+            role,
+            note,
+            kind=kind,
+            args=args,
+        )
 
     def ray_at_angle(
         self,
@@ -276,7 +371,14 @@ class Construction:
         o, t = self.name_of(origin), self.name_of(toward)
         op = f"ray from {o} at {a} to {o}{t}"
         return self.run(
-            name, op, lambda: ray_at_angle(origin, toward, angle), (origin, toward), role, note
+            name,
+            op,
+            lambda: ray_at_angle(origin, toward, angle),
+            (origin, toward),
+            role,
+            note,
+            kind="ray",
+            args={"o": origin, "t": toward, "angle": angle_text or f"{math.degrees(angle):.4g}°"},
         )
 
     def circle_through(
@@ -284,7 +386,16 @@ class Construction:
     ) -> Circle:
         """The circle through three recorded points."""
         op = f"circle({self.name_of(a)}, {self.name_of(b)}, {self.name_of(c)})"
-        return self.run(name, op, lambda: circle_through(a, b, c), (a, b, c), role, note)
+        return self.run(
+            name,
+            op,
+            lambda: circle_through(a, b, c),
+            (a, b, c),
+            role,
+            note,
+            kind="circle3",
+            args={"a": a, "b": b, "c": c},
+        )
 
     def angle_arcs(
         self,
@@ -299,7 +410,16 @@ class Construction:
         """The two arcs that see chord ab under ``angle``: (left of a → b, right)."""
         a_t = angle_text or f"{math.degrees(angle):.6g}°"
         op = f"arcs seeing {self.name_of(a)}{self.name_of(b)} under {a_t}"
-        return self.run(name, op, lambda: angle_arcs(a, b, angle), (a, b), role, note)
+        return self.run(
+            name,
+            op,
+            lambda: angle_arcs(a, b, angle),
+            (a, b),
+            role,
+            note,
+            kind="arcs",
+            args={"a": a, "b": b, "angle": angle_text or f"{math.degrees(angle):.4g}°"},
+        )
 
     def intersections(
         self,
@@ -311,6 +431,8 @@ class Construction:
         note: str = "",
         op: str = "",
         allow_empty: bool = False,
+        kind: str = "",
+        args: Mapping[str, object] | None = None,
     ) -> tuple[Vec, ...]:
         """All intersection points of two objects that ``rule`` keeps (kernel order by default).
 
@@ -319,7 +441,8 @@ class Construction:
         """
         rule = rule or Any_()
         op, kept = self._meet(name, o1, o2, rule, op, allow_empty)
-        return self.record(name, op, kept, (o1, o2), role, note, rule.text)
+        kind, args = (kind, args) if kind else ("intersection", {"a": o1, "b": o2})
+        return self.record(name, op, kept, (o1, o2), role, note, rule.text, kind, args)
 
     def intersect(
         self,
@@ -330,11 +453,14 @@ class Construction:
         role: str = "construction",
         note: str = "",
         op: str = "",
+        kind: str = "",
+        args: Mapping[str, object] | None = None,
     ) -> Vec:
         """The one intersection point of two objects that ``rule`` picks (the first it keeps)."""
         rule = rule or Index(0)
         op, kept = self._meet(name, o1, o2, rule, op, False)
-        return self.record(name, op, kept[0], (o1, o2), role, note, rule.text)
+        kind, args = (kind, args) if kind else ("intersection", {"a": o1, "b": o2})
+        return self.record(name, op, kept[0], (o1, o2), role, note, rule.text, kind, args)
 
     def _meet(
         self, name: str, o1: Obj, o2: Obj, rule: Rule, op: str, allow_empty: bool

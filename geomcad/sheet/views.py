@@ -552,48 +552,53 @@ class Text(View):
 # --- the order of construction -------------------------------------------------------------------
 
 #: The kinds of step the templates know, each told by its operation's words (the recorder's).
-_OPS: tuple[tuple[str, re.Pattern[str]], ...] = (
-    ("given", re.compile(r"given$")),
-    ("intersection", re.compile(r"(?:\w+ )?(?P<a>\S+) ∩ (?:\w+ )?(?P<b>\S+)$")),
-    ("perpendicular", re.compile(r"perpendicular to (?P<a>\S+) at (?P<b>\S+)$")),
-    ("parallel", re.compile(r"parallel to (?P<a>\S+) through (?P<b>\S+)$")),
-    ("parallel_at", re.compile(r"parallel to (?P<a>\S+) at (?P<b>\S+)$")),
-    ("line", re.compile(r"line (?P<a>\S+)$")),
-    ("segment", re.compile(r"segment (?P<a>\S+)$")),
-    ("ray", re.compile(r"ray from (?P<a>\S+) at (?P<b>.+) to (?P<c>\S+)$")),
-    ("arcs", re.compile(r"arcs seeing (?P<a>\S+) under (?P<b>.+)$")),
-    ("circle3", re.compile(r"circle\((?P<a>[^,]+), (?P<b>[^,]+), (?P<c>[^,]+)\)$")),
-    ("circle", re.compile(r"circle\((?P<a>[^,]+), (?P<b>[^,]+)\)$")),
-)
-
 #: Roles whose steps the order of construction lists.
 LISTED = ("construction", "result", "link", "extreme")
 
 
-def step_text(step: Step) -> str:
-    """One step of the order of construction in the language being drawn, from the template of
-    its kind (``strings/<lang>/views.toml``, keys ``step.<kind>``); an operation no template
-    knows is written as it was recorded, with its note."""
-    for kind, pat in _OPS:
-        m = pat.match(step.op)
-        if m:
-            fields = {k: _names(_printable(v)) for k, v in m.groupdict().items()}
-            fields["name"] = _step_name(step.name)
-            text = WORDS.table()[f"step.{kind}"].format(**fields)
-            break
-    else:
-        text = f"{_step_name(step.name)} = {_printable(step.op)}"
-    if step.rule and "kernel" not in step.rule:
-        text += f" ({_printable(step.rule)})"
-    return text
+def step_text(step: Step, words: Words | None = None) -> str:
+    """One step of the order of construction in the language being drawn: the template of its
+    recorded kind (:attr:`Step.kind`), key ``step.<kind>``, looked up in ``words`` (a sheet's
+    own table, for a problem's own kinds) and then in ``strings/<lang>/views.toml``, filled
+    with the step's name (``{name}``) and operands (:attr:`Step.args`: names as label markup,
+    numbers in the language drawn).
+
+    A step without a kind, or whose kind no table knows, is an error naming the step: the
+    order of construction is written from the recorded steps or not at all."""
+    key = f"step.{step.kind}"
+    table = words.table() if words is not None else {}
+    template = table.get(key) or WORDS.table().get(key)
+    if not step.kind or template is None:
+        raise ValueError(
+            f"step {step.title!r}: no template for its kind {step.kind!r} "
+            f"in the {current()} words (key {key!r})"
+        )
+    fields = {k: _arg(v) for k, v in step.args}
+    fields["name"] = _arg(step.name)
+    try:
+        return template.format(**fields)
+    except (KeyError, IndexError) as exc:
+        raise ValueError(f"step {step.title!r}: template {key!r} needs {exc}") from None
 
 
-def _step_name(name: str) -> str:
-    """A step's name as markup: a symbol (``V_B``, ``O1``) through :func:`name_markup`, any
-    other recorded name (``plan 2: ∥ R_32``) as printable text."""
-    if re.fullmatch(r"[^\W\d]\w*'*", name):
-        return name_markup(name)
-    return _printable(name)
+_POINTS = re.compile(r"(?:[A-Z][a-z]?\d*'*)+")
+
+
+def _arg(v: str | float) -> str:
+    """An operand as label markup: a number in the language drawn (4 significant figures);
+    a symbol (``O1``, ``b3``, ``l_AB``) through :func:`name_markup`; a run of point names
+    (``B0B1``, ``O1C``) with each point's digits as its subscript; markup (``{``) as it is."""
+    if not isinstance(v, str):
+        return num(v)
+    if "{" in v:
+        return _printable(v)
+    if re.fullmatch(r"-?\d+(\.\d*)?(e-?\d+)?", v):
+        return num(float(v))
+    if re.fullmatch(r"[A-Za-z]\d+'*|[a-z]\d*'*|[A-Za-z]+_\w+", v):
+        return name_markup(v)
+    if _POINTS.fullmatch(v):
+        return re.sub(r"([A-Z][a-z]?)(\d+)", lambda m: f"{m.group(1)}_{m.group(2)}", v)
+    return _printable(v)
 
 
 def _printable(text: str) -> str:
@@ -604,18 +609,11 @@ def _printable(text: str) -> str:
     return "".join(c if ord(c) in w or c in "_{}^" else "?" for c in text)
 
 
-def _names(s: str) -> str:
-    """Point names in an operation's words as markup: ``B0B1`` → ``B_0B_1``; a number in the
-    language being drawn (4 significant figures)."""
-    if re.fullmatch(r"-?\d+(\.\d*)?(e-?\d+)?", s):
-        return num(float(s))
-    return re.sub(r"([A-Z])(\d+)", lambda m: f"{m.group(1)}_{m.group(2)}", s)
-
-
 class Steps(View):
     """The order of construction: the listed steps of ``construction`` (roles in
     :data:`LISTED`; ``only`` keeps these names, in their recorded order), numbered, each
-    through its kind's template and wrapped to ``width`` mm."""
+    through its kind's template (:func:`step_text`; ``words`` holds a problem's own kinds)
+    and wrapped to ``width`` mm."""
 
     def __init__(
         self,
@@ -623,6 +621,7 @@ class Steps(View):
         width: float,
         only: Sequence[str] | None = None,
         height: float = 2.5,
+        words: Words | None = None,
         **kw: Any,
     ) -> None:
         kw.setdefault("title", WORDS("order"))
@@ -634,7 +633,7 @@ class Steps(View):
         self.width = width
         self.lines: list[str] = []
         for i, s in enumerate(keep, 1):
-            self.lines += wrap(f"{i}. {step_text(s)}", width, height, indent=4.0)
+            self.lines += wrap(f"{i}. {step_text(s, words)}", width, height, indent=4.0)
 
     def natural(self) -> tuple[float, float] | None:
         lead = self.height * LINE_SPACING
