@@ -29,11 +29,9 @@ from geomcad.sheet.compose import (
     arrange,
     compose,
 )
-from geomcad.sheet.lang import Words, current
+from geomcad.sheet.lang import Words, current, per_language
 from geomcad.sheet.scheme import Body
 from geomcad.structure import Link, Mechanism, Pair
-
-from .layout_cache import per_language
 
 if TYPE_CHECKING:
     from geomcad.problem import Solution

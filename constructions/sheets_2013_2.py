@@ -38,10 +38,8 @@ from geomcad.sheet.compose import (
 )
 from geomcad.sheet.drawing import ARROW_LEN, SHORT_MM
 from geomcad.sheet.graph import Graph
-from geomcad.sheet.lang import Words, current
+from geomcad.sheet.lang import Words, current, per_language
 from geomcad.sheet.text import wrap
-
-from .layout_cache import per_language
 
 if TYPE_CHECKING:
     from geomcad.problem import Solution

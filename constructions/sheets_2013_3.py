@@ -27,11 +27,9 @@ from geomcad.sheet.compose import (
     compose,
 )
 from geomcad.sheet.drawing import SLIDER_SIZE
-from geomcad.sheet.lang import Words, current
+from geomcad.sheet.lang import Words, current, per_language
 from geomcad.sheet.model import Polyline
 from geomcad.sheet.text import wrap
-
-from .layout_cache import per_language
 
 if TYPE_CHECKING:
     from geomcad.construction import Construction

@@ -36,11 +36,9 @@ from geomcad.sheet import (
 from geomcad.sheet import views as V
 from geomcad.sheet.compose import Column, Field, Figure, Row, Spacer, Tree, arrange, compose
 from geomcad.sheet.drawing import ARROW_LEN
-from geomcad.sheet.lang import Words, current
+from geomcad.sheet.lang import Words, current, per_language
 from geomcad.sheet.text import SUB_DROP, SUB_SCALE, SUP_RISE, metrics, run_size, wrap
 from geomcad.sheet.text import width as text_width
-
-from .layout_cache import per_language
 
 if TYPE_CHECKING:
     from geomcad.problem import Solution

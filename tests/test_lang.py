@@ -103,3 +103,36 @@ def test_words_follow_the_language_being_drawn() -> None:
         words("nonesuch")
     with pytest.raises(ValueError, match="not a language"), language("de"):
         pass
+
+
+def test_per_language_keeps_one_result_per_object_and_language() -> None:
+    """The arrangement cache: one call per object and language, by identity, freed with it."""
+    import gc
+    from dataclasses import dataclass
+
+    from geomcad.sheet.lang import per_language
+
+    @dataclass(frozen=True)
+    class Model:
+        x: int
+
+    calls: list[tuple[int, str]] = []
+
+    @per_language
+    def arrange(m: Model) -> list[str]:
+        from geomcad.sheet.lang import current
+
+        calls.append((id(m), current()))
+        return [current()]
+
+    a, b = Model(1), Model(1)  # equal, but two solutions
+    assert arrange(a) == ["ru"] and arrange(a) is arrange(a)
+    with language("en"):
+        assert arrange(a) == ["en"]
+    assert arrange(b) == ["ru"]
+    assert len(calls) == 3
+    kept = arrange.__closure__  # type: ignore[attr-defined]
+    del a, b
+    gc.collect()
+    store = next(c.cell_contents for c in kept if isinstance(c.cell_contents, dict))
+    assert store == {}

@@ -15,13 +15,15 @@ check that every language's table has the same keys.
 
 from __future__ import annotations
 
+import functools
 import tomllib
-from collections.abc import Iterator, Mapping
+import weakref
+from collections.abc import Callable, Iterator, Mapping
 from contextlib import contextmanager
 from contextvars import ContextVar
 from functools import cache
 from importlib import resources
-from typing import Literal, get_args
+from typing import Literal, TypeVar, get_args
 
 Lang = Literal["ru", "en"]
 LANGS: tuple[Lang, ...] = get_args(Lang)
@@ -49,6 +51,39 @@ def language(lang: str) -> Iterator[Lang]:
         yield _CURRENT.get()
     finally:
         _CURRENT.reset(token)
+
+
+_O = TypeVar("_O")
+_R = TypeVar("_R")
+
+
+def per_language(fn: Callable[[_O], _R]) -> Callable[[_O], _R]:
+    """``fn(obj)`` computed once per object and language being drawn, and kept while the object
+    lives (by identity: a frozen dataclass that compares equal to another is still itself).
+
+    A composed sheet's layout depends on the language (the words' widths): ``Problem.scales``
+    arranges the views to learn the scales, the sheet arranges them again to draw; with this
+    both use one arrangement, and a sheet drawn in English after the Russian scales were read
+    arranges its own layout once and never states another layout's scales. The result is
+    shared, not copied: callers treat it as read-only.
+    """
+    kept: dict[int, tuple[weakref.ref[_O], dict[Lang, _R]]] = {}
+
+    @functools.wraps(fn)
+    def once(obj: _O) -> _R:
+        key = id(obj)
+        hit = kept.get(key)
+        if hit is None or hit[0]() is not obj:
+            hit = (weakref.ref(obj), {})
+            kept[key] = hit
+            weakref.finalize(obj, kept.pop, key, None)
+        by_lang = hit[1]
+        lang = current()
+        if lang not in by_lang:
+            by_lang[lang] = fn(obj)
+        return by_lang[lang]
+
+    return once
 
 
 @cache

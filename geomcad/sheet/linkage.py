@@ -14,7 +14,6 @@ from __future__ import annotations
 
 import math
 import re
-import weakref
 from collections.abc import Sequence
 from dataclasses import dataclass, replace
 
@@ -42,7 +41,7 @@ from geomcad.sheet.compose import (
 from geomcad.sheet.compose import (
     Layout as Arranged,
 )
-from geomcad.sheet.lang import Words, current
+from geomcad.sheet.lang import Words, current, per_language
 from geomcad.sheet.motion import Frames, turn
 from geomcad.sheet.scale import Scale
 from geomcad.sheet.scheme import Body, draw_scheme
@@ -117,21 +116,15 @@ def _trees(s: Solved, accel: Sequence[Position]) -> tuple[tuple[Tree, ...], _Mec
     return (sheet,), mech, False
 
 
-#: The last arrangements, by solution and language: a build asks for the scales and its draw
-#: for the sheets, and both use one arrangement (the search runs once).
-_ARRANGED: dict[tuple[int, str], tuple[weakref.ref[Solved], Layout, tuple[Arranged, ...]]] = {}
-
-
 def layout(s: Solved) -> Layout:
     """Every view of the kinematic sheets and its scale (see the module's docstring)."""
     return _arranged(s)[0]
 
 
+@per_language
 def _arranged(s: Solved) -> tuple[Layout, tuple[Arranged, ...]]:
-    key = (id(s), current())
-    hit = _ARRANGED.get(key)
-    if hit is not None and hit[0]() is s:
-        return hit[1], hit[2]
+    """The arrangement of the sheets, once per solution and language (the build asks for the
+    scales and its draw for the sheets: the search runs once)."""
     accel = _accel_positions(s)
     trees, mech, second = _trees(s, accel)
     field = Field.of_format(FORMAT)
@@ -139,8 +132,6 @@ def _arranged(s: Solved) -> tuple[Layout, tuple[Arranged, ...]]:
     k_v = lays[-1].scale("v")
     out = Layout(lays[0][mech].scale or Scale(1.0), k_v, lays[0].scale("a"), second, accel,
                  trees, mech)  # fmt: skip
-    _ARRANGED.clear()  # one solution at a time: the cache holds no more than one
-    _ARRANGED[key] = (weakref.ref(s), out, lays)
     return out, lays
 
 
