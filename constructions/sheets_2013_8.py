@@ -58,11 +58,10 @@ class _Sheet:
         data: Data = sol.data
         self.load = _load_diagram(data)
         self.balance = _energy_balance(data)
-        note = Text(
-            paragraphs=[WORDS(k, T=f(data.cycle), N=f(data.N)) for k in ("balance_1", "balance_2",
-                                                                         "balance_3")],
-            width=NOTE_W,
-        )  # fmt: skip
+        # one sentence (the cycle and the motor's return of E), then its formula on a line
+        keys = ("balance_1", "balance_2", "balance_3")
+        w = [WORDS(k, T=f(data.cycle), N=f(data.N)) for k in keys]
+        note = Text(paragraphs=[f"{w[0]} {w[1]}", w[2]], width=NOTE_W)
         given, results, solution = _panel(sol)
         # the press's scheme is not to scale: it takes whatever enlargement its place allows
         scheme = Figure(SCHEME_BOX, _scheme, title=WORDS("scheme_title"), show_scale=False,

@@ -349,7 +349,8 @@ class Field:
 
         b = (frame.left + margin, frame.top + margin, frame.right - margin, frame.bottom - margin)
         tb = (frame.tb_left - margin, frame.tb_top - margin, frame.right, frame.bottom)
-        g26 = (frame.left, frame.top, frame.left + G26_WIDTH + margin, frame.top + G26_HEIGHT)
+        right, below = frame.left + G26_WIDTH + margin, frame.top + G26_HEIGHT + margin
+        g26 = (frame.left, frame.top, right, below)
         return Field(b, (tb, g26))
 
     @staticmethod
