@@ -8,10 +8,12 @@ by half its width, and an STRtree answers which of them meet. The form (frame, t
 Two levels:
 
 - :func:`layout_problems` — what no sheet may have: texts on texts, items outside the frame or on
-  the title block or графа 26, glyphs the font lacks, and colour in a default (black) build.
+  the title block or графа 26, glyphs the font lacks, colour in a default (black) build, and a
+  plan's or polygon's vector drawn at a scale the sheet does not state (not at its μ).
 - :func:`findings` — the drafting findings (:data:`KINDS`): a label crossed by a line, a label
   far from what it names, a vector shorter than twice its head, an empty field. Every sheet is
-  held to a recorded count per kind (``tests/layout_baseline.json``) that may only fall.
+  held to a recorded count per kind (``BASELINE`` in tests/test_layout_all.py, ``FINDINGS`` in
+  tests/test_design_files.py) that may only fall.
 """
 
 from __future__ import annotations
@@ -31,6 +33,7 @@ from geomcad.sheet.drawing import ARROW_LEN
 from geomcad.sheet.frame import reserved
 from geomcad.sheet.model import ArcItem, CircleItem, Item, Polyline, Sheet, TextItem
 from geomcad.sheet.placer import centre_line, ink, text_outline
+from geomcad.sheet.scale import fmt_number
 from geomcad.sheet.text import metrics
 
 Box = tuple[float, float, float, float]  # x0, y0 (top), x1, y1 (bottom), sheet mm
@@ -186,6 +189,31 @@ def layout_problems(sheet: Sheet, drawing_right: float | None = None) -> list[st
     painted = colours(to_svg(sheet))
     if painted:
         out.append(f"colour in a default build: {sorted(painted)}")
+    out += [f"a vector not at a stated μ: {v}" for v in unstated_vectors(sheet)]
+    return out
+
+
+#: A scale factor as a sheet states it: ``μV = 0,01``, ``μ_F = 2,5`` (the markup's plain text).
+STATED = re.compile(r"μ_?\{?([A-Za-z]+)\}?\s*=\s*([0-9][0-9.,]*(?:·10\^?\{?[–-]?\d+\}?)?)")
+
+
+def stated_scales(sheet: Sheet) -> set[tuple[str, str]]:
+    """The (symbol, value) pairs of every scale factor written on the sheet."""
+    return {(m.group(1), m.group(2)) for t in sheet.texts() for m in STATED.finditer(t.text)}
+
+
+def unstated_vectors(sheet: Sheet) -> list[str]:
+    """The plan and polygon vectors (``Sheet.scaled``) whose scale no text of the sheet states:
+    a vector drawn at some μ the reader cannot know is not at its stated μ."""
+    stated = stated_scales(sheet)
+    out = []
+    for tail, tip, scale in sheet.scaled:
+        sym = "V" if scale.q == "v" else scale.q
+        value = fmt_number(scale.k, sheet.lang)
+        plain = value.replace("{", "").replace("}", "").replace("^", "")
+        if not any(s == sym and v.replace("{", "").replace("}", "").replace("^", "") == plain
+                   for s, v in stated):  # fmt: skip
+            out.append(f"{tail}→{tip} at μ{sym} = {value}, stated: {sorted(stated)}")
     return out
 
 

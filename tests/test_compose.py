@@ -242,3 +242,19 @@ def test_order_of_construction_writes_every_step_of_a_general_kind(lang: str) ->
         with pytest.raises(ValueError, match="step 'X = something in English': no template"):
             step_text(bare)
     assert {"given", "intersection", "circle", "perpendicular"} <= seen
+
+
+def test_the_checker_finds_a_vector_at_a_scale_the_sheet_does_not_state() -> None:
+    """A plan's vector drawn through a viewport whose μ no text states is a layout problem;
+    stated (as the views' titles write it), it is not."""
+    d = start("A4", TitleBlock("t", "d"))
+    v = d.viewport(Scale(0.02, "v"), (0.0, 0.0), (60.0, 100.0))
+    v.arrow((0.0, 0.0), (1.0, 0.5), "vector")
+    sheet = d.finish()
+    assert any("not at a stated μ" in p for p in layout_problems(sheet))
+    d = start("A4", TitleBlock("t", "d"))
+    v = d.viewport(Scale(0.02, "v"), (0.0, 0.0), (60.0, 100.0))
+    v.arrow((0.0, 0.0), (1.0, 0.5), "vector")
+    d.text("План скоростей, μ_V = 0,02 (м/с)/мм", (60.0, 40.0), 3.5)
+    d.text("μ_V = 0,05 (м/с)/мм", (60.0, 50.0), 3.5)  # another μ does not count
+    assert layout_problems(d.finish()) == []

@@ -347,8 +347,12 @@ class Viewport:
                          clear=0.8, others=(at(a1), at(a0)))  # fmt: skip
 
     def arrow(self, a: PointLike, b: PointLike, role: str = "vector") -> None:
-        """A vector from a to b with a filled arrowhead at b."""
-        _arrow(self.sheet, self.p(a), self.p(b), role)
+        """A vector from a to b with a filled arrowhead at b (a plan's or a polygon's vector is
+        kept with its scale in ``Sheet.scaled``, for the checker)."""
+        pa, pb = self.p(a), self.p(b)
+        _arrow(self.sheet, pa, pb, role)
+        if self.scale.q != "l" and pa != pb:
+            self.sheet.scaled.append((pa, pb, self.scale))
 
     # -- dimensions ----------------------------------------------------------------------------
     def dim_linear(

@@ -17,6 +17,7 @@ from typing import TYPE_CHECKING, Literal, TypeAlias
 
 if TYPE_CHECKING:
     from geomcad.sheet.frame import TitleBlock
+    from geomcad.sheet.scale import Scale
 
 XY: TypeAlias = tuple[float, float]
 Shift = Literal["base", "sub", "sup"]
@@ -124,6 +125,9 @@ class Sheet:
     #: what the layout checker measures.
     anchors: list[tuple[TextItem, XY]] = field(default_factory=list)
     vectors: list[tuple[XY, XY]] = field(default_factory=list)
+    #: Every vector drawn through a viewport of a plan or a polygon, with the scale it was drawn
+    #: at (``Scale`` of v, a or F): the checker finds that scale stated on the sheet.
+    scaled: list[tuple[XY, XY, Scale]] = field(default_factory=list)
     #: The language the sheet is drawn in (``ru``: GOST line widths; ``en``: ISO 128's).
     lang: str = "ru"
 
