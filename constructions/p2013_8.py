@@ -57,17 +57,26 @@ def build(p: Mapping[str, ParamValue]) -> Build:
     d, h, tau = float(p["d_hole"]), float(p["h_plate"]), float(p["tau"])
     n, delta, z = float(p["n_rpm"]), float(p["delta"]), float(p["holes_per_s"])
     c = Construction("2013-8: punch press, the work of a hole and the flywheel")
-    f_max = c.value("F_max", math.pi * d * h * tau, "π·d·h·τ: the shear area π·d·h times τ")
+    f_max = math.pi * d * h * tau
+    # each step's kind and operands: the sheet's solution is written from them
+    c.value("F_max", f_max, "π·d·h·τ: the shear area π·d·h times τ", kind="shear_force",
+            args={"F_kN": f_max / 1000.0})  # fmt: skip
     s = np.array([0.0, h])
     F = np.array([f_max, 0.0])
     c.record("F(s)", "load diagram: F falls linearly from F_max at s = 0 to 0 at s = h", (s, F))
-    E = c.value("E", cycle_work(s, F), "area under F(s) (= F_max·h/2)", ("F(s)",))
-    N = c.value("N", E * z, "E·z: the motor supplies E once per cycle of 1/z s")
+    E = cycle_work(s, F)
+    c.value("E", E, "area under F(s) (= F_max·h/2)", ("F(s)",), kind="work_of_hole", args={"E": E})
+    N = c.value("N", E * z, "E·z: the motor supplies E once per cycle of 1/z s",
+                kind="motor_power", args={"N": E * z})  # fmt: skip
     w_nom = math.pi * n / 30.0
     sp = speeds_from_max(w_nom, delta)
-    c.value("ω_max", sp.omega_max, "π·n/30 (the nominal speed is the largest)")
-    c.value("ω_min", sp.omega_min, "ω_max·(2 − δ)/(2 + δ), from δ = (ω_max − ω_min)/ω_mean")
-    J = c.value("J", flywheel_inertia(E, sp), "2E/(ω_max² − ω_min²): ½J(ω_max² − ω_min²) = E")
+    c.value("ω_max", sp.omega_max, "π·n/30 (the nominal speed is the largest)",
+            kind="nominal_speed", args={"w": sp.omega_max})  # fmt: skip
+    c.value("ω_min", sp.omega_min, "ω_max·(2 − δ)/(2 + δ), from δ = (ω_max − ω_min)/ω_mean",
+            kind="least_speed", args={"w": sp.omega_min})  # fmt: skip
+    J = flywheel_inertia(E, sp)
+    c.value("J", J, "2E/(ω_max² − ω_min²): ½J(ω_max² − ω_min²) = E", kind="flywheel_inertia",
+            args={"J": J})  # fmt: skip
     results: dict[str, Any] = {
         "F_max": f_max,
         "E": E,

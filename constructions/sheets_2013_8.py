@@ -23,7 +23,7 @@ from geomcad.sheet.compose import Column, Field, Figure, Layout, Row, arrange, c
 from geomcad.sheet.graph import Graph, nice_step
 from geomcad.sheet.lang import Words, current
 from geomcad.sheet.model import CircleItem, Polyline
-from geomcad.sheet.views import AxisSpec, Curve, Diagram, Table, Text
+from geomcad.sheet.views import AxisSpec, Curve, Diagram, Steps, Table, Text
 
 from .p2013_8 import Data
 
@@ -41,6 +41,8 @@ RIM, CRANK, ROD = 19.0, 7.0, 30.0
 SCHEME_BOX = (-60.0, -55.0, 30.0, 27.0)
 #: Width (mm) of the solution's text and of the notes beside the energy balance.
 SOLUTION_W = 146.0
+#: The recorded steps the solution lists, in their order.
+SOLUTION = ("F_max", "E", "N", "ω_max", "ω_min", "J")
 NOTE_W = SOLUTION_W
 #: Width (mm) the sheet's heading wraps at (it heads the right-hand column).
 HEADING_W = 170.0
@@ -182,16 +184,8 @@ def _panel(sol: Solution) -> tuple[Table, Table, Text]:
     ):
         rows.append([label, f"{f(float(r[name]) / scale)} {unit}"])
     results = Table(rows, widths=(30.0, 40.0), title=WORDS("results"))
-    steps = [
-        WORDS("step_1", F=f(r["F_max"] / KN)),
-        WORDS("step_2", E=f(r["E"])),
-        WORDS("step_3", N=f(r["N"])),
-        WORDS("step_4", w=f(r["omega_max"])),
-        WORDS("step_5", w=f(r["omega_min"])),
-        WORDS("step_6", J=f(r["J"])),
-    ]
-    solution = Text(paragraphs=[f"{i + 1}. {step}" for i, step in enumerate(steps)],
-                    width=SOLUTION_W, indent=4.0, title=WORDS("solution"))  # fmt: skip
+    solution = Steps(sol.construction, SOLUTION_W, only=SOLUTION, words=WORDS,
+                     title=WORDS("solution"))  # fmt: skip
     return given, results, solution
 
 

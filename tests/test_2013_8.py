@@ -145,3 +145,17 @@ def test_speeds_are_not_written_as_tick_values() -> None:
     for t in texts:
         if t.text.startswith("ω = "):
             assert t.at[0] > y_col and t.at[1] < t_row - 2.0, t
+
+
+def test_the_solution_is_written_from_the_recorded_steps() -> None:
+    """The sheet's "Решение" lists the recorded steps through their kinds' templates: one
+    numbered line per step, each value the recorded one; a variant's values follow."""
+    from geomcad.sheet.scale import fmt_number
+
+    sol = geomcad.solve(PID, delta=0.05)
+    texts = [t.text for t in sol.sheets()[0][1].texts() if t.height <= 2.5]  # not view titles
+    numbered = [t for t in texts if t[:3] in {f"{i}. " for i in range(1, 10)}]
+    assert [t[:2] for t in numbered] == ["1.", "2.", "3.", "4.", "5.", "6."]
+    J = fmt_number(sol.construction["J"], "ru", 4)
+    assert numbered[-1].endswith(f"J = 2E/(ωmax2 – ωmin2) = {J} кг·м².")
+    assert fmt_number(geomcad.solve(PID).results["J"], "ru", 4) != J
