@@ -159,7 +159,7 @@ def _energy_balance(data: Data) -> Diagram:
     )  # fmt: skip
 
 
-def _panel(sol: Solution) -> tuple[Table, Table, Text]:
+def _panel(sol: Solution) -> tuple[Table, Table, Steps]:
     """The given data, the results and the solution step by step."""
     p, r = sol.params, sol.results
     rows = [[WORDS("param"), WORDS("value")]]
