@@ -489,7 +489,10 @@ class _Wittenbauer(View):
             hi=_num(math.degrees(math.atan(tan_hi))),
             lo=_num(math.degrees(math.atan(tan_lo))),
         )
-        d.text(f"{ay.factor_text(current())};  {ax.factor_text(current())};  {angles}",
+        # ab, the segment the tangents cut on the ΔT axis, is read in the heading: a label on
+        # the axis itself would stand among its tick values
+        ab = WORDS("ab", value=_num(a - b))
+        d.text(f"{ay.factor_text(current())};  {ax.factor_text(current())};  {angles};  {ab}",
                (x0, y0 + 3.0), 2.5)  # fmt: skip
         gr = Graph(d, ax, ay, (x0 + self.LEFT, y0 + self.ABOVE + 6.0 + ay.mm(ay.hi - ay.zero)))
         gr.axes(current(), tick_labels=True)
@@ -500,7 +503,6 @@ class _Wittenbauer(View):
                 gr.curve([0.0, x_end], [yy, yy + slope * x_end], "construction")
         gr.point(0.0, a, "a", prefer=(-1.0, 0.0))
         gr.point(0.0, b, "b", prefer=(-1.0, 0.0))
-        gr.span_y(0.0, b, a, WORDS("ab", value=_num(a - b)))
         for (x, y), name in zip(fw.touch, ("ω_{max}", "ω_{min}"), strict=True):
             gr.point(x, y, name)
 
