@@ -43,6 +43,8 @@ from geomcad.sheet.text import width as text_width
 if TYPE_CHECKING:
     from geomcad.problem import Solution
 
+    from .p2013_4 import Geometry
+
 
 def view_half_angle(gear: SpurGear) -> float:
     """Half the angle the tooth view spans about the tooth's axis: the tooth, half a space either
@@ -82,7 +84,7 @@ def _num(x: float, digits: int = 6) -> str:
     return fmt_number(x, current(), digits)
 
 
-def _views(sol: Solution) -> tuple[Tree, Figure]:
+def _views(sol: Solution[Geometry]) -> tuple[Tree, Figure]:
     """The sheet's tree: the tooth (the sheet's main view) beside a column of the inset, the
     tables and the order of construction."""
     geo, c = sol.data, sol.construction
@@ -114,7 +116,7 @@ def _views(sol: Solution) -> tuple[Tree, Figure]:
 
 
 @per_language
-def scales(sol: Solution) -> dict[str, float]:
+def scales(sol: Solution[Geometry]) -> dict[str, float]:
     """k_l of the tooth view, as the layout chooses it (no drawing)."""
     tree, main = _views(sol)
     k = arrange(tree, Field.of_format("A3"))[main].scale
@@ -122,7 +124,7 @@ def scales(sol: Solution) -> dict[str, float]:
     return {"l": k.k}
 
 
-def sheets(sol: Solution) -> list[tuple[str, Sheet]]:
+def sheets(sol: Solution[Geometry]) -> list[tuple[str, Sheet]]:
     """The main sheet of 2013-4."""
     k = Scale(scales(sol)["l"], "l")  # this layout's (in the language being drawn)
     tb = TitleBlock(title=WORDS("tb_title"), designation=WORDS("designation"), scale=k.ratio_text())
@@ -341,7 +343,7 @@ def _caliper(v: Viewport, c: Any, geo: Any) -> None:
     del gear
 
 
-def _tables(sol: Solution) -> tuple[V.Table, V.Table, V.Table]:
+def _tables(sol: Solution[Geometry]) -> tuple[V.Table, V.Table, V.Table]:
     """The given data, the results, and the sizes of the tooth the rack cuts."""
     p, r, geo = sol.params, sol.results, sol.data
     gear: SpurGear = geo.gear

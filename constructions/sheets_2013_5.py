@@ -40,6 +40,8 @@ from geomcad.sheet import (
 if TYPE_CHECKING:
     from geomcad.problem import Solution
 
+    from .p2013_5 import Geometry
+
 from geomcad.kinematics.trains import RayPlan
 from geomcad.sheet import views as V
 from geomcad.sheet.compose import (
@@ -102,7 +104,7 @@ def _factors(geo: Any) -> tuple[float, float]:
     return k_l, nice_factor(v_span, 0.5 * SCHEME_H, "v").k
 
 
-def sheets(sol: Solution) -> list[tuple[str, Sheet]]:
+def sheets(sol: Solution[Geometry]) -> list[tuple[str, Sheet]]:
     """The main sheet of 2013-5."""
     tree, lay, k_l, _, _ = _arranged(sol)
     k = Scale(k_l, "l")
@@ -142,7 +144,7 @@ def _rays_box(geo: Any, rays: RayPlan, k_l: float, k_v: float) -> Extent:
     return (lo, S.y - 0.55 * rays.H - 3.0 * k_l, hi, S.y + rays.H + 3.0 * 6.5 * k_l)
 
 
-def _tree(sol: Solution, k_l: float, k_v: float) -> tuple[Node, dict[str, View], float]:
+def _tree(sol: Solution[Geometry], k_l: float, k_v: float) -> tuple[Node, dict[str, View], float]:
     """The sheet's views at the factors k_l, k_v: the heading, the scheme with the plan, the
     angle diagram under them, the panel on the right; and μ_ω of the angle diagram."""
     geo = sol.data
@@ -169,7 +171,7 @@ def _tree(sol: Solution, k_l: float, k_v: float) -> tuple[Node, dict[str, View],
     return tree, {"build": build, "rays": ray_view}, k_omega
 
 
-def _arranged(sol: Solution) -> tuple[Node, Layout, float, float, float]:
+def _arranged(sol: Solution[Geometry]) -> tuple[Node, Layout, float, float, float]:
     """The tree rebuilt until its factors settle: k_l is the layout's, k_v the plan's factor
     for the room the scheme leaves in the view's box (the plan's width depends on both)."""
     geo = sol.data
@@ -199,7 +201,7 @@ def _arranged(sol: Solution) -> tuple[Node, Layout, float, float, float]:
     return tree, lay, k_l, k_v, k_omega
 
 
-def scales(sol: Solution) -> Mapping[str, float]:
+def scales(sol: Solution[Geometry]) -> Mapping[str, float]:
     """The sheet's factors: k_l of the scheme and k_v of the plan of linear velocities."""
     _, _, k_l, k_v, _ = _arranged(sol)
     return {"l": k_l, "v": k_v}
@@ -490,7 +492,7 @@ def _rays(v: Viewport, geo: Any, rays: RayPlan, kv: Scale, k_omega: float) -> No
 # -- the tables ----------------------------------------------------------------------------------
 
 
-def _panel(sol: Solution, rays: RayPlan, k_v: float) -> list[View]:
+def _panel(sol: Solution[Geometry], rays: RayPlan, k_v: float) -> list[View]:
     """The data, the results (Willis), the angular velocities three ways, the order of
     construction."""
     p, r, geo = sol.params, sol.results, sol.data

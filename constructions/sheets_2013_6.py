@@ -73,7 +73,7 @@ class _Main:
     mechanism's scale, which the arrangement chooses: arranged until the scale it was built
     with is the one it gets."""
 
-    def __init__(self, sol: Solution) -> None:
+    def __init__(self, sol: Solution[Geometry]) -> None:
         geo, c = sol.data, sol.construction
         # for the seed's data the seed's 1:5, so that its drawing and ours can be laid side by
         # side (O1B0, O1B1 are measured on it)
@@ -92,18 +92,18 @@ class _Main:
         self.k = k
 
 
-def scales(sol: Solution) -> Mapping[str, float]:
+def scales(sol: Solution[Geometry]) -> Mapping[str, float]:
     """k_l of the sheet: the largest GOST 2.302 scale at which the drawing fits its place on
     the composed sheet (for the seed's data the seed's 0.005 m/mm, 1:5)."""
     return {"l": _Main(sol).k}
 
 
-def sheets(sol: Solution) -> list[tuple[str, Sheet]]:
+def sheets(sol: Solution[Geometry]) -> list[tuple[str, Sheet]]:
     """The sheets of 2013-6: the synthesis, and the kinematic analysis of its six-bar."""
     return [main_sheet(sol), kinematics_sheet(sol)]
 
 
-def main_sheet(sol: Solution) -> tuple[str, Sheet]:
+def main_sheet(sol: Solution[Geometry]) -> tuple[str, Sheet]:
     """The main sheet of 2013-6."""
     m = _Main(sol)
     k = Scale(m.k, "l")
@@ -363,7 +363,7 @@ def _mid_A(O1: Vec, l1: float, l2: float, B: Vec, O2: Vec, branch: int) -> Vec:
     return pts[0]
 
 
-def _panel(sol: Solution, k: float) -> tuple[View, ...]:
+def _panel(sol: Solution[Geometry], k: float) -> tuple[View, ...]:
     """The tables on the right: given data, results (O1B0, O1B1 in mm at the factor k; none
     yet when 0), every solution, the order of construction."""
     p = sol.params

@@ -54,6 +54,7 @@ if TYPE_CHECKING:
     from geomcad.problem import Solution
 
     from .kin_2013_6 import Analysis
+    from .p2013_6 import Geometry
 
 WORDS = Words(__package__, "sheets_2013_6_kin")
 
@@ -139,7 +140,7 @@ class _Kin:
     vectors in mm at the plans' factors, which the arrangement chooses: the tree is arranged
     until the factors it was built with are the ones it gets."""
 
-    def __init__(self, sol: Solution) -> None:
+    def __init__(self, sol: Solution[Geometry]) -> None:
         geo = sol.data
         m = geo.mechanism
         an: Analysis = geo.analysis
@@ -193,7 +194,7 @@ class _Kin:
         return Column(top, Row(self.diagrams, right, weights=BOTTOM_W))
 
 
-def kinematics_sheet(sol: Solution) -> tuple[str, Sheet]:
+def kinematics_sheet(sol: Solution[Geometry]) -> tuple[str, Sheet]:
     kin = _Kin(sol)
     lay = kin.layout
     k = lay[kin.mech].scale
@@ -356,7 +357,7 @@ def _panel(an: Analysis, m: Any, kv: float, ka: float) -> tuple[View, ...]:
     return values, omegas, signs
 
 
-def motion(sol: Solution, frames: int) -> Frames:
+def motion(sol: Solution[Geometry], frames: int) -> Frames:
     """The synthesized six-bar over one crank turn from the kinematics sheet's position (60°
     past C's left extreme), at ω1 of the analysis: the joints, C on its guide, the paths of A, B
     and C, and the velocity plan (pa, pb, pc)."""
@@ -364,7 +365,6 @@ def motion(sol: Solution, frames: int) -> Frames:
 
     geo = sol.data
     mech = geo.mechanism
-    assert mech is not None, "build refuses a solution that is not a crank-rocker"
     r = mech.sweep(turn(frames, geo.phi_min + ANALYSIS_TURN, ANALYSIS_OMEGA1), ANALYSIS_OMEGA1)
     fixed = {"O1": mech.O1, "O2": mech.O2}
     points = {k: np.tile([v.x, v.y], (frames, 1)) for k, v in fixed.items()}

@@ -54,7 +54,7 @@ def f(x: float, digits: int = 4) -> str:
 class _Sheet:
     """The sheet's views and their arrangement (one tree for the sheet and the scales hook)."""
 
-    def __init__(self, sol: Solution) -> None:
+    def __init__(self, sol: Solution[Data]) -> None:
         data: Data = sol.data
         self.load = _load_diagram(data)
         self.balance = _energy_balance(data)
@@ -79,14 +79,14 @@ def _factor(view: Diagram, lay: Layout) -> float:
     return view.axes(x1 - x0, y1 - y0)[1].k
 
 
-def scales(sol: Solution) -> Mapping[str, float]:
+def scales(sol: Solution[Data]) -> Mapping[str, float]:
     """The sheet's factor k_F (N/mm): the load diagram draws F in kN at the factor its place
     on the composed sheet allows."""
     s = _Sheet(sol)
     return {"F": _factor(s.load, s.layout) * KN}
 
 
-def sheets(sol: Solution) -> list[tuple[str, Sheet]]:
+def sheets(sol: Solution[Data]) -> list[tuple[str, Sheet]]:
     """The main sheet of 2013-8."""
     tb = TitleBlock(title=WORDS("tb_title"), designation=WORDS("designation"), lang=current())
     d = start("A3", tb)
@@ -157,7 +157,7 @@ def _energy_balance(data: Data) -> Diagram:
     )  # fmt: skip
 
 
-def _panel(sol: Solution) -> tuple[Table, Table, Text]:
+def _panel(sol: Solution[Data]) -> tuple[Table, Table, Text]:
     """The given data, the results and the solution step by step."""
     p, r = sol.params, sol.results
     rows = [[WORDS("param"), WORDS("value")]]

@@ -80,7 +80,7 @@ def _pair_tree(des: GearsDesign) -> tuple[Tree, Figure]:
     return Row(mesh, right), mesh
 
 
-def scales(sol: Solution) -> dict[str, float]:
+def scales(sol: Solution[GearsDesign]) -> dict[str, float]:
     """k_l of the meshing drawing (or of the planetary scheme), as the layout chooses it
     (``Problem.scales``)."""
     des: GearsDesign = sol.data
@@ -95,7 +95,7 @@ def scales(sol: Solution) -> dict[str, float]:
     return {"l": scale.k}
 
 
-def sheets(sol: Solution) -> list[tuple[str, Any]]:
+def sheets(sol: Solution[GearsDesign]) -> list[tuple[str, Any]]:
     des: GearsDesign = sol.data
     out: list[tuple[str, Any]] = []
     if des.pair is not None:
@@ -108,7 +108,7 @@ def sheets(sol: Solution) -> list[tuple[str, Any]]:
 # -- the pair --------------------------------------------------------------------------------------
 
 
-def _pair_sheet(sol: Solution, des: GearsDesign) -> Any:
+def _pair_sheet(sol: Solution[GearsDesign], des: GearsDesign) -> Any:
     tree, mesh = _pair_tree(des)
     lay = arrange(tree, Field.of_format("A1"))
     k = lay[mesh].scale
@@ -433,7 +433,7 @@ def _willis(des: GearsDesign, pts: list[PlanPoint], start_link: str, start_pt: s
     )
 
 
-def _planetary_sheet(sol: Solution, des: GearsDesign, no: int) -> Any:
+def _planetary_sheet(sol: Solution[GearsDesign], des: GearsDesign, no: int) -> Any:
     tree, scheme = _planetary_tree(des)
     lay = arrange(tree, Field.of_format("A1"))
     k = lay[scheme].scale
