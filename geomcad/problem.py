@@ -420,9 +420,7 @@ class Solution(Generic[D]):
     """A solved problem: parameters, results, the recorded construction, seed comparison, and
     the problem's model ``data`` (of type ``D``)."""
 
-    def __init__(
-        self, problem: Problem[D], params: dict[str, ParamValue], build: Build[D]
-    ) -> None:
+    def __init__(self, problem: Problem[D], params: dict[str, ParamValue], build: Build[D]) -> None:
         self.problem = problem
         self.params = params
         self.results = build.results
