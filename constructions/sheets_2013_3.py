@@ -11,7 +11,7 @@ the layout's factors without drawing (``Problem.scales``).
 from __future__ import annotations
 
 import math
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 from geomcad.geom import Vec
 from geomcad.sheet import Scale, Sheet, TitleBlock, Viewport, fmt_number, start
@@ -107,7 +107,7 @@ def sheets(sol: Solution[Geometry]) -> list[tuple[str, Sheet]]:
     return [("", d.finish())]
 
 
-def _mechanism(v: Viewport, geo: Any, c: Any, sol: Solution[Geometry]) -> None:
+def _mechanism(v: Viewport, geo: Geometry, c: Construction, sol: Solution[Geometry]) -> None:
     O1, O2, A, B, C = (c[n] for n in ("O1", "O2", "A", "B", "C"))
     u3 = (C - B).unit()  # along the slot, from B through O1 to C
     u5 = (C - O2).unit()

@@ -24,7 +24,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 from geomcad.geom import Vec
 from geomcad.sheet import (
@@ -93,7 +93,7 @@ def factor(k: Scale) -> str:
 LINK_LABEL = {SUN: "1", BLOCK25: "2–5", PLANET: "6", H1: "H_1–4", H2: "H_2–7", FRAME: "0"}
 
 
-def _factors(geo: Any) -> tuple[float, float]:
+def _factors(geo: Geometry) -> tuple[float, float]:
     """The first guess of the layout's factors: k_l of the scheme (the largest GOST 2.302 scale
     at which its radii fit SCHEME_H), k_v of the plan (its velocities in half that height: a
     narrow plan first, so that the layout can give the scheme its largest scale)."""
@@ -119,7 +119,7 @@ def sheets(sol: Solution[Geometry]) -> list[tuple[str, Sheet]]:
     return [("", d.finish())]
 
 
-def _build_box(geo: Any, k_l: float, k_v: float) -> Extent:
+def _build_box(geo: Geometry, k_l: float, k_v: float) -> Extent:
     """The model box (m, at k_l) of the scheme and the plan beside it: the plan's velocities
     drawn at k_v as lengths k_l/k_v, the gap and the room for the labels (paper mm) at k_l."""
     y_lo, y_hi = geo.extent
@@ -133,7 +133,7 @@ def _build_box(geo: Any, k_l: float, k_v: float) -> Extent:
             y_hi + PAD_T * k_l)  # fmt: skip
 
 
-def _rays_box(geo: Any, rays: RayPlan, k_l: float, k_v: float) -> Extent:
+def _rays_box(geo: Geometry, rays: RayPlan, k_l: float, k_v: float) -> Extent:
     """The model box (at k_l) of the angle diagram, its labels' rows and the ratio under it."""
     ends = [_pv(geo, k_l, k_v, e) for e in rays.ends.values()]
     S = _pv(geo, k_l, k_v, rays.S)
@@ -207,7 +207,7 @@ def scales(sol: Solution[Geometry]) -> Mapping[str, float]:
     return {"l": k_l, "v": k_v}
 
 
-def _build(v: Viewport, geo: Any, kv: Scale) -> None:
+def _build(v: Viewport, geo: Geometry, kv: Scale) -> None:
     """The scheme and, beside it on the same levels, the plan of linear velocities."""
     y_lo, y_hi = geo.extent
     u = (y_hi - y_lo) / SCHEME_UNITS
@@ -291,7 +291,7 @@ def _x_end(u: float) -> float:
     return 10.8 * u + 0.35 * u + 0.6 * u + 2.6 * u
 
 
-def _scheme(v: Viewport, geo: Any, u: float) -> tuple[float, dict[str, Vec]]:
+def _scheme(v: Viewport, geo: Geometry, u: float) -> tuple[float, dict[str, Vec]]:
     """Draw the scheme; return its right edge on the sheet (mm) and where each point of the plan
     lies on it."""
     z, m, a = geo.z, geo.m, geo.a
@@ -374,13 +374,13 @@ def _scheme(v: Viewport, geo: Any, u: float) -> tuple[float, dict[str, Vec]]:
 # -- the plan of linear velocities ---------------------------------------------------------------
 
 
-def _pv(geo: Any, k_l: float, k_v: float, q: Vec) -> Vec:
+def _pv(geo: Geometry, k_l: float, k_v: float, q: Vec) -> Vec:
     """A plan point (v in m/s, y in m) as a model point of the viewport at k_l: v drawn at k_v."""
     return Vec(q.x * k_l / k_v, q.y)
 
 
 def _plan(
-    v_scheme: Viewport, vp: Viewport, geo: Any, kv: Scale, spots: dict[str, Vec]
+    v_scheme: Viewport, vp: Viewport, geo: Geometry, kv: Scale, spots: dict[str, Vec]
 ) -> list[str]:
     """Draw the plan; return the points whose velocity is shorter than two arrowheads (drawn
     as their ends only, at μ_V, and named in a note)."""
@@ -430,7 +430,7 @@ def _plan(
 # -- the angle diagram ---------------------------------------------------------------------------
 
 
-def _scaled_rays(geo: Any, k_v: float, k_omega: float) -> RayPlan:
+def _scaled_rays(geo: Geometry, k_v: float, k_omega: float) -> RayPlan:
     """The recorded angle diagram enlarged about its pole S so that its pole distance is
     k_v/k_ω (the rays keep their directions, so the intercepts read ω_i at μ_ω = k_ω)."""
     rays = geo.rays
@@ -439,7 +439,7 @@ def _scaled_rays(geo: Any, k_v: float, k_omega: float) -> RayPlan:
     return RayPlan(rays.S, H, {k: rays.S + (e - rays.S) * f for k, e in rays.ends.items()})
 
 
-def _rays(v: Viewport, geo: Any, rays: RayPlan, kv: Scale, k_omega: float) -> None:
+def _rays(v: Viewport, geo: Geometry, rays: RayPlan, kv: Scale, k_omega: float) -> None:
     """The angle diagram: from S, rays parallel to the links' lines; they cut the line H above S
     in segments ω_i/k_ω."""
     k_l = v.scale.k

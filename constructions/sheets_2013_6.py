@@ -118,14 +118,14 @@ def main_sheet(sol: Solution[Geometry]) -> tuple[str, Sheet]:
     return ("", d.finish())
 
 
-def _drawing(v: Viewport, geo: Any, c: Any) -> None:
+def _drawing(v: Viewport, geo: Geometry, c: Construction) -> None:
     _construction(v, geo, c)
     _mechanism(v, geo, c)
     # the angle at B1 last, when every line it must keep clear of is drawn
     _angle_with_leader(v, c["B1"], c["B0"], c["O"], "90° – θ", 12.0)
 
 
-def _construction(v: Viewport, geo: Any, c: Any) -> None:
+def _construction(v: Viewport, geo: Geometry, c: Construction) -> None:
     B0, B1, Op, O2 = c["B0"], c["B1"], c["O"], c["O2"]
     theta = geo.theta
     # the rocker's arc and the slider's path
@@ -292,7 +292,7 @@ def _right_angle(v: Viewport, vertex: Vec, a: Vec, b: Vec, size_mm: float = 3.0)
     v.polyline([vertex + ua, vertex + ua + ub, vertex + ub], "construction")
 
 
-def _mechanism(v: Viewport, geo: Any, c: Any) -> None:
+def _mechanism(v: Viewport, geo: Geometry, c: Construction) -> None:
     O2, B, C, B0, B1, C0, C1 = (c[n] for n in ("O2", "B", "C", "B0", "B1", "C0", "C1"))
     ch = geo.chosen
     O1 = ch.O1

@@ -51,6 +51,8 @@ from geomcad.sheet.views import PlanView, Table, Text
 from geomcad.structure import Link, Mechanism, prismatic, revolute
 
 if TYPE_CHECKING:
+    from geomcad.construction import Construction
+    from geomcad.kinematics.sixbar import SixBar
     from geomcad.problem import Solution
 
     from .kin_2013_6 import Analysis
@@ -229,7 +231,7 @@ def _short_note(d: Drawing, plan: Plan, at: Placed, room: Placed) -> None:
         d.paragraph(text, at.box[0], room.box[1] + 2.5, at.box[2] - at.box[0], 2.5)
 
 
-def _mechanism(v: Viewport, c: Any, m: Any, an: Analysis) -> None:
+def _mechanism(v: Viewport, c: Construction, m: SixBar, an: Analysis) -> None:
     O1, C = c["O1"], c["C"]
     d = m.guide_d.unit()
     ext = GUIDE_EXT * m.l4
@@ -252,7 +254,7 @@ class _Diagrams(View):
     """s(φ), v(φ), a(φ) stacked in the box the layout gives them, one φ axis scale, φ1
     marked, the plans' values as dots."""
 
-    def __init__(self, an: Analysis, m: Any, **kw: Any) -> None:
+    def __init__(self, an: Analysis, m: SixBar, **kw: Any) -> None:
         kw.setdefault("margin", 0.0)
         super().__init__(**kw)
         self.an, self.m = an, m
@@ -272,7 +274,7 @@ class _Diagrams(View):
         _diagrams(d, self.an, self.m, at.inner)
 
 
-def _diagrams(d: Drawing, an: Analysis, m: Any, box: tuple[float, float, float, float]) -> None:
+def _diagrams(d: Drawing, an: Analysis, m: SixBar, box: tuple[float, float, float, float]) -> None:
     lang = current()
     x0, y0, x1, y1 = box
     gx = (x0 + GRAPH_LEFT, x1 - GRAPH_RIGHT)
@@ -328,7 +330,7 @@ def _row_factors(ranges: Sequence[float], span: float) -> list[float]:
     return best[1]
 
 
-def _panel(an: Analysis, m: Any, kv: float, ka: float) -> tuple[View, ...]:
+def _panel(an: Analysis, m: SixBar, kv: float, ka: float) -> tuple[View, ...]:
     """Values read off the plans beside the analytic ones (their lengths on the plans at the
     factors kv, ka; none yet when 0), and the links' ω and ε."""
     g_dir = m.guide_d.unit()
