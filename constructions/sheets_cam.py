@@ -30,6 +30,7 @@ from geomcad.sheet.views import AxisSpec, Curve, Diagram, Table, Text
 
 if TYPE_CHECKING:
     from geomcad.problem import Solution
+    from geomcad.sheet import Sheet
 
     from .file_cam import CamDesign
 
@@ -86,7 +87,7 @@ def scales(sol: Solution[CamDesign]) -> dict[str, float]:
     return {"l": scale.k}
 
 
-def sheets(sol: Solution[CamDesign]) -> list[tuple[str, Any]]:
+def sheets(sol: Solution[CamDesign]) -> list[tuple[str, Sheet]]:
     des: CamDesign = sol.data
     tree, profile = _tree(des, sol.results)
     lay = arrange(tree, Field.of_format("A1"))
