@@ -115,7 +115,7 @@ class _Views:
     """The sheet's views and their tree (composed by :mod:`geomcad.sheet.compose`)."""
 
     def __init__(self, sol: Solution[Geometry]) -> None:
-        geo: Geometry = sol.data
+        geo = sol.data
         rep = geo.replaced.mechanism
         self.before = V.Scheme(
             geo.before,

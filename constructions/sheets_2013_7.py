@@ -112,7 +112,7 @@ def sheets(sol: Solution[Geometry]) -> list[tuple[str, Sheet]]:
 
 def _tree(sol: Solution[Geometry]) -> tuple[Node, dict[str, View]]:
     """The sheet's views and how they share the field."""
-    geo: Geometry = sol.data
+    geo = sol.data
     run, free = geo.run, geo.free
     mech = Figure(
         extent(geo), lambda v: _mechanism(v, geo), title=WORDS("mech"), margin=5.0, weight=4.0

@@ -55,7 +55,7 @@ class _Sheet:
     """The sheet's views and their arrangement (one tree for the sheet and the scales hook)."""
 
     def __init__(self, sol: Solution[Data]) -> None:
-        data: Data = sol.data
+        data = sol.data
         self.load = _load_diagram(data)
         self.balance = _energy_balance(data)
         # one sentence (the cycle and the motor's return of E), then its formula on a line

@@ -88,7 +88,7 @@ def _unit(u: str) -> str:
 
 
 def _main(sol: Solution[Data]) -> Sheet:
-    data: Data = sol.data
+    data = sol.data
     tree, views = _main_tree(sol)
     lay = arrange(tree, Field.of_format("A3"))
     k = lay.scale("l")
@@ -113,7 +113,7 @@ def _main_tree(sol: Solution[Data]) -> tuple[Node, dict[str, View]]:
     """The three views at one GOST scale (the loads' room above and below the disc and the rod
     found by arranging twice: it depends on that scale), the notes under them, the tables and
     the equations on the right, clear of the title block."""
-    data: Data = sol.data
+    data = sol.data
     k_F = sol.scales["F"]
     longest = max(float(sol.results["N_pin"]), float(sol.results["F_spring"])) / k_F + 6.0
     pad = 0.0
@@ -129,7 +129,7 @@ def _main_tree(sol: Solution[Data]) -> tuple[Node, dict[str, View]]:
 def _main_views(
     sol: Solution[Data], boxes: tuple[Extent, Extent, Extent]
 ) -> tuple[Node, dict[str, View]]:
-    data: Data = sol.data
+    data = sol.data
     k_F = sol.scales["F"]
     heads = ("view_scheme", "view_disc", "view_rod")
     draws = (
@@ -385,7 +385,7 @@ def _motion(sol: Solution[Data]) -> Sheet:
     """φ(t) above φ'(t) on a common t axis on the left (with the ordinates of the table's
     instants); on the right the integration, the table of the motion, the derivation and the
     given data."""
-    data: Data = sol.data
+    data = sol.data
     tr = data.motion
     T = tr.t_end
     ts = list(tr.t)

@@ -88,7 +88,7 @@ def scales(sol: Solution[CamDesign]) -> dict[str, float]:
 
 
 def sheets(sol: Solution[CamDesign]) -> list[tuple[str, Sheet]]:
-    des: CamDesign = sol.data
+    des = sol.data
     tree, profile = _tree(des, sol.results)
     lay = arrange(tree, Field.of_format("A1"))
     k = lay[profile].scale

@@ -84,7 +84,7 @@ def _pair_tree(des: GearsDesign) -> tuple[Tree, Figure]:
 def scales(sol: Solution[GearsDesign]) -> dict[str, float]:
     """k_l of the meshing drawing (or of the planetary scheme), as the layout chooses it
     (``Problem.scales``)."""
-    des: GearsDesign = sol.data
+    des = sol.data
     if des.pair is not None and des.meshing is not None:
         tree, mesh = _pair_tree(des)
         scale = arrange(tree, Field.of_format("A1"))[mesh].scale
@@ -97,7 +97,7 @@ def scales(sol: Solution[GearsDesign]) -> dict[str, float]:
 
 
 def sheets(sol: Solution[GearsDesign]) -> list[tuple[str, Sheet]]:
-    des: GearsDesign = sol.data
+    des = sol.data
     out: list[tuple[str, Sheet]] = []
     if des.pair is not None:
         out.append(("", _pair_sheet(sol, des)))

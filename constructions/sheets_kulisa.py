@@ -86,7 +86,7 @@ VELOCITY_ROOM_MM = 36.0
 
 def scales(sol: Solution[Data]) -> dict[str, float]:
     """The sheets' μ_F (the free-body diagrams) and μ_V (the velocities on the scheme)."""
-    data: Data = sol.data
+    data = sol.data
     res = sol.results
     loads = [
         ld.force.norm
@@ -224,7 +224,7 @@ def _main(sol: Solution[Data]) -> Sheet:
 def _main_tree(sol: Solution[Data]) -> tuple[Node, dict[str, View]]:
     """The scheme with its velocities, the velocity plan and its words under it, the tables on
     the right; the title block's corner kept free."""
-    data: Data = sol.data
+    data = sol.data
     # the model box holds the velocities drawn at μ_V (at most VELOCITY_ROOM_MM long)
     scheme = Figure(_extent(sol, data), lambda v: _scheme(v, sol, data),
                     title=WORDS("head_main"), margin=3.0, weight=3.0)  # fmt: skip
@@ -408,7 +408,7 @@ TITLE_BLOCK_H = 58.0
 def _graphs(sol: Solution[Data]) -> Sheet:
     """I_pr(φ) above ω1(φ) on the left (their ordinates at the tabulated positions), the equation
     of motion and a table of both every 15° on the right."""
-    data: Data = sol.data
+    data = sol.data
     p = _p(sol)
     sw = sweep(data)
     phis_deg = np.degrees(sw["phi"])
@@ -626,7 +626,7 @@ def _fbd_tree(sol: Solution[Data], k: Scale, k3: Scale) -> tuple[Node, dict[str,
     """The four views (a, b, d at one scale, the roller c at its own), their loads' reach
     measured at the scales k and k3, the heading and the panel; the layout chooses between the
     panel beside the top row and beside the whole."""
-    data: Data = sol.data
+    data = sol.data
     boxes = _fbd_boxes(sol, data)
     draw = _fbd_draw(sol, data)
     views: dict[str, View] = {}
@@ -755,7 +755,7 @@ def motion(solution: Solution[Data], frames: int) -> Frames:
     own motions (the yoke on its pin, the roller driven by the yoke), and the velocity plan at
     the constant ω1 the flywheel has at φ: pa (the pin), pc2 (the yoke), pc3 (the roller's axis);
     a c2 is the slip of the pin along the slot."""
-    data: Data = solution.data
+    data = solution.data
     p = {k: float(v) for k, v in solution.params.items()}
     _model, yoke, roller = mechanism(
         p["m1"], p["R1"], p["OA"], p["m2"], p["m3"], p["R3"], p["r3"], p["rho3"], p["M"], data.lay
