@@ -470,17 +470,17 @@ def _rocker_measures(spec: CamSpec, A: np.ndarray, r_r: float) -> tuple[float, f
     return p_max, rho
 
 
-def build_file(file_id: str, data: Mapping[str, Any]) -> Build:
+def build_file(file_id: str, data: Mapping[str, Any]) -> Build[CamDesign]:
     spec = read_spec(file_id, data)
     des, c, results = design(spec)
     return Build(results, c, [], data=des)
 
 
-def make_problem(file_id: str, data: dict[str, Any]) -> Problem:
+def make_problem(file_id: str, data: dict[str, Any]) -> Problem[CamDesign]:
     """The ``geomcad.files`` kind ``cam``."""
     spec = read_spec(file_id, data)
 
-    def build(_: Mapping[str, Any]) -> Build:
+    def build(_: Mapping[str, Any]) -> Build[CamDesign]:
         return build_file(file_id, data)
 
     draw = lazy(".sheets_cam:sheets", __package__)

@@ -243,11 +243,11 @@ def design(spec: GearsSpec) -> tuple[GearsDesign, Construction, dict[str, Any]]:
     return GearsDesign(spec, gp, mesh, cands), c, results
 
 
-def make_problem(file_id: str, data: dict[str, Any]) -> Problem:
+def make_problem(file_id: str, data: dict[str, Any]) -> Problem[GearsDesign]:
     """The ``geomcad.files`` kind ``gears``."""
     spec = read_spec(file_id, data)
 
-    def build(_: Mapping[str, Any]) -> Build:
+    def build(_: Mapping[str, Any]) -> Build[GearsDesign]:
         des, c, results = design(spec)
         return Build(results, c, [], data=des)
 

@@ -312,7 +312,7 @@ def _structure(
     return ws, counts_mode, replaced, no_roller, seed_route, mob_b, mob_a, mob_s
 
 
-def build(p: Mapping[str, ParamValue]) -> Build:
+def build(p: Mapping[str, ParamValue]) -> Build[Geometry]:
     """The structural analysis, then the zero-velocity positions and the velocity plan at θ1."""
     e, h = float(p["e"]), float(p["h"])
     psi, theta1 = math.radians(float(p["psi_deg"])), math.radians(float(p["theta1_deg"]))

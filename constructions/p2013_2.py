@@ -102,7 +102,7 @@ def _check(p: Mapping[str, ParamValue]) -> None:
         raise ParameterError("r_roller", p["r_roller"], "a roller follower needs r_roller > 0")
 
 
-def build(p: Mapping[str, ParamValue]) -> Build:
+def build(p: Mapping[str, ParamValue]) -> Build[Geometry]:
     """The profile by inversion, its division points, radius vectors and the velocity plan."""
     _check(p)
     H, r0 = float(p["H"]), float(p["r0"])

@@ -59,7 +59,7 @@ def _check(p: Mapping[str, ParamValue]) -> tuple[float, float, float, float, flo
     return v_a, l_ab, l12, m, math.radians(alpha_deg)
 
 
-def build(p: Mapping[str, ParamValue]) -> Build:
+def build(p: Mapping[str, ParamValue]) -> Build[Geometry]:
     """The positions by construction, then the velocity plan from its vector equations."""
     v_a, l_ab, l12, m, alpha = _check(p)
     c = Construction("2013-3: mechanism with a cross, velocity plan")

@@ -82,7 +82,7 @@ def _rack(alpha_deg: float) -> BasicRack:
     return rack
 
 
-def build(p: Mapping[str, ParamValue]) -> Build:
+def build(p: Mapping[str, ParamValue]) -> Build[Geometry]:
     """The seed's solution as a recorded construction, checked against the generated gear."""
     m, alpha_deg, d_a = float(p["m"]), float(p["alpha_deg"]), float(p["d_a"])
     z = int(p["z"])

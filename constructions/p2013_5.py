@@ -107,7 +107,7 @@ def _given_count(
     return given
 
 
-def build(p: Mapping[str, ParamValue]) -> Build:
+def build(p: Mapping[str, ParamValue]) -> Build[Geometry]:
     """Willis' method as in the seed, checked by the mesh equations and the velocity plan."""
     z1, z2, z3, z5, z6 = (int(p[n]) for n in ("z1", "z2", "z3", "z5", "z6"))
     m = float(p["m"])

@@ -97,7 +97,7 @@ class Geometry:
     theta: float
     candidates: tuple[Candidate, ...]
     chosen: Candidate
-    mechanism: SixBar | None
+    mechanism: SixBar
     phi_min: float  # crank angle at the slider's left extreme
     phi_max: float
     analysis: Analysis  # the plans at φ1 and the slider's diagrams (the kinematics sheet)
@@ -124,7 +124,7 @@ def _check_params(p: Mapping[str, ParamValue]) -> tuple[float, float, float, flo
     return H, K, l3, l4, e
 
 
-def build(p: Mapping[str, ParamValue]) -> Build:
+def build(p: Mapping[str, ParamValue]) -> Build[Geometry]:
     """Run the seed's graphical synthesis as a recorded construction, then check it by analysis."""
     H, K, l3, l4, e = _check_params(p)
     c = Construction("2013-6: six-bar synthesis by K (circle through B0B1)")

@@ -146,7 +146,7 @@ def _check_params(p: Mapping[str, ParamValue]) -> dict[str, float]:
     return v
 
 
-def build(p: Mapping[str, ParamValue]) -> Build:
+def build(p: Mapping[str, ParamValue]) -> Build[Geometry]:
     """The seed's graphical solution as recorded steps, with friction and again with f = 0."""
     v = _check_params(p)
     c = Construction("2013-7: centrifugal governor, force polygons with friction circles")

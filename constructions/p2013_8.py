@@ -52,7 +52,7 @@ class Data:
     J: float
 
 
-def build(p: Mapping[str, ParamValue]) -> Build:
+def build(p: Mapping[str, ParamValue]) -> Build[Data]:
     """The load diagram, its area, the motor's power and the flywheel, as recorded steps."""
     d, h, tau = float(p["d_hole"]), float(p["h_plate"]), float(p["tau"])
     n, delta, z = float(p["n_rpm"]), float(p["delta"]), float(p["holes_per_s"])

@@ -144,7 +144,7 @@ def model_of(
     return ReducedModel((disc, rod_part), loads), rod
 
 
-def build(p: Mapping[str, ParamValue]) -> Build:
+def build(p: Mapping[str, ParamValue]) -> Build[Data]:
     """The reduced model at the state, the kinetostatics of disc and rod, and the motion from
     rest."""
     J = _nonneg(p, "J", "the disc's moment of inertia")

@@ -153,7 +153,7 @@ def mechanism(
     return ReducedModel(parts, (Torque("M", turning, moment),)), yoke, roller
 
 
-def build(p: Mapping[str, ParamValue]) -> Build:
+def build(p: Mapping[str, ParamValue]) -> Build[Data]:
     """Reduced inertia, ω1 and ε1 at φ (energy and ODE), reactions, balancing force."""
     m1 = _nonneg(p, "m1", "the flywheel's mass")
     m2 = _nonneg(p, "m2", "the yoke's mass")

@@ -114,8 +114,8 @@ class _Rest(View):
 class _Views:
     """The sheet's views and their tree (composed by :mod:`geomcad.sheet.compose`)."""
 
-    def __init__(self, sol: Solution) -> None:
-        geo: Geometry = sol.data
+    def __init__(self, sol: Solution[Geometry]) -> None:
+        geo = sol.data
         rep = geo.replaced.mechanism
         self.before = V.Scheme(
             geo.before,
@@ -196,13 +196,13 @@ class _Views:
 
 
 @per_language
-def scales(sol: Solution) -> dict[str, float]:
+def scales(sol: Solution[Geometry]) -> dict[str, float]:
     """The layout's scale factors (no drawing): see :meth:`_Views.scales`."""
     views = _Views(sol)
     return views.scales(arrange(views.tree, Field.of_format("A2")))
 
 
-def sheets(sol: Solution) -> list[tuple[str, Sheet]]:
+def sheets(sol: Solution[Geometry]) -> list[tuple[str, Sheet]]:
     """The main sheet of 2013-1."""
     got = scales(sol)  # this layout's (in the language being drawn), which compose() repeats
     ks, kp = Scale(got["l"], "l"), Scale(got["l_pos"], "l")
@@ -437,7 +437,7 @@ def _link_name(lk: Link) -> str:
         return lk.name
 
 
-def _panel(sol: Solution, geo: Geometry) -> list[View]:
+def _panel(sol: Solution[Geometry], geo: Geometry) -> list[View]:
     """The right-hand panel: the links, the pairs, the W counts, the Assur groups, the pusher's
     zero positions, each a table or a paragraph."""
     r = sol.results

@@ -44,6 +44,8 @@ from geomcad.sheet.text import wrap
 if TYPE_CHECKING:
     from geomcad.problem import Solution
 
+    from .p2013_2 import Geometry
+
 WORDS = Words(__package__, "sheets_2013_2")
 MM = 1000.0
 #: Paper margin (mm) the face lines and labels take beyond the profile.
@@ -67,7 +69,7 @@ def _n(x: float, digits: int = 4) -> str:
 # -- views and scales ------------------------------------------------------------------------------
 
 
-def extent(sol: Solution) -> tuple[float, float, float, float]:
+def extent(sol: Solution[Geometry]) -> tuple[float, float, float, float]:
     """The model box the profile view draws: the base circle, the profile (and the rest of the
     program past the span), the division points."""
     geo = sol.data
@@ -85,7 +87,7 @@ def extent(sol: Solution) -> tuple[float, float, float, float]:
 class _Views:
     """The sheet's views and their tree (composed by :mod:`geomcad.sheet.compose`)."""
 
-    def __init__(self, sol: Solution) -> None:
+    def __init__(self, sol: Solution[Geometry]) -> None:
         geo = sol.data
         f = geo.follower
         self.profile = Figure(
@@ -131,14 +133,14 @@ class _Views:
 
 
 @per_language
-def scales(sol: Solution) -> dict[str, float]:
+def scales(sol: Solution[Geometry]) -> dict[str, float]:
     """k_l of the profile and k_v of the velocity plan, as the layout chooses them (no drawing):
     each the largest of its series the view's box allows."""
     views = _Views(sol)
     return views.scales(arrange(views.tree, Field.of_format("A2")))
 
 
-def sheets(sol: Solution) -> list[tuple[str, Sheet]]:
+def sheets(sol: Solution[Geometry]) -> list[tuple[str, Sheet]]:
     """The main sheet of 2013-2."""
     k = Scale(scales(sol)["l"], "l")  # this layout's (in the language being drawn)
     tb = TitleBlock(title=WORDS("tb_title"), designation=WORDS("designation"), scale=k.ratio_text())
@@ -150,7 +152,7 @@ def sheets(sol: Solution) -> list[tuple[str, Sheet]]:
 # -- the profile by inversion ----------------------------------------------------------------------
 
 
-def _profile(v: Viewport, sol: Solution) -> None:
+def _profile(v: Viewport, sol: Solution[Geometry]) -> None:
     """The profile by inversion (see the module's docstring)."""
     geo = sol.data
     f = geo.follower
@@ -215,7 +217,7 @@ def _profile(v: Viewport, sol: Solution) -> None:
         v.dim_angle(o, a0, a1, f"{_n(dphi)}°", r_mm=k.mm(f.r0) * 0.55, height=2.5)
 
 
-def _rest(v: Viewport, sol: Solution, rest: CamProfile, over: float) -> None:
+def _rest(v: Viewport, sol: Solution[Geometry], rest: CamProfile, over: float) -> None:
     """The profile past the span to the program's end in thin lines, with the follower's axis at
     the end (thin) and a note of where the program ends (a note under the view says what the
     thin line is)."""
@@ -254,7 +256,7 @@ def _label_step(n: int) -> int:
 # -- the law S(φ) ----------------------------------------------------------------------------------
 
 
-def _diagrams(sol: Solution) -> list[V.Diagram]:
+def _diagrams(sol: Solution[Geometry]) -> list[V.Diagram]:
     """The follower's law S(φ) and its analogue of velocity S′(φ) = dS/dφ (the length BC = OB′
     of the scheme), side by side, with the ordinates of the division points."""
     geo = sol.data
@@ -288,7 +290,7 @@ def _diagrams(sol: Solution) -> list[V.Diagram]:
 # -- the scheme and the velocity plan --------------------------------------------------------------
 
 
-def _cam_now(sol: Solution) -> tuple[np.ndarray, np.ndarray]:
+def _cam_now(sol: Solution[Geometry]) -> tuple[np.ndarray, np.ndarray]:
     """The cam's built profile and the rest of the program, turned to the plan's φ."""
     geo = sol.data
     f = geo.follower
@@ -302,7 +304,7 @@ def _cam_now(sol: Solution) -> tuple[np.ndarray, np.ndarray]:
     return cam, rest
 
 
-def _follower_size(sol: Solution) -> tuple[float, float, float]:
+def _follower_size(sol: Solution[Geometry]) -> tuple[float, float, float]:
     """The face's half width, the stem's base (the face, the knife's tip or the roller's top)
     and the stem's length, in model units."""
     geo = sol.data
@@ -312,7 +314,7 @@ def _follower_size(sol: Solution) -> tuple[float, float, float]:
     return width, base, 0.35 * f.r0
 
 
-def _scheme_extent(sol: Solution) -> tuple[float, float, float, float]:
+def _scheme_extent(sol: Solution[Geometry]) -> tuple[float, float, float, float]:
     f = sol.data.follower
     cam, rest = _cam_now(sol)
     every = np.vstack([cam, rest]) if len(rest) else cam
@@ -322,14 +324,14 @@ def _scheme_extent(sol: Solution) -> tuple[float, float, float, float]:
     return min(xs), min(ys), max(xs), max(ys)
 
 
-def _plan_extent(sol: Solution) -> tuple[float, float, float, float]:
+def _plan_extent(sol: Solution[Geometry]) -> tuple[float, float, float, float]:
     plan = sol.data.plan
     pts = [Vec(0.0, 0.0), plan.V_B1, plan.V_B2]
     xs, ys = [q.x for q in pts], [q.y for q in pts]
     return min(xs), min(ys), max(xs), max(ys)
 
 
-def _scheme(v: Viewport, sol: Solution) -> None:
+def _scheme(v: Viewport, sol: Solution[Geometry]) -> None:
     """The mechanism at the plan's division point, in the fixed frame: the cam (the built profile
     thick, the rest of the program thin), the follower, the triangle OBB′ (and C); links numbered
     (1 the cam, 2 the follower, 3 the roller); beside it the velocity plan pb₁b₂ at its own
@@ -388,7 +390,7 @@ def _scheme(v: Viewport, sol: Solution) -> None:
         v.dim_linear(o, Bp, "S'", offset=-3.0 if Bp.x > 0 else 3.0, height=2.5)
 
 
-def _plan(pv: Viewport, sol: Solution) -> None:
+def _plan(pv: Viewport, sol: Solution[Geometry]) -> None:
     """The velocity plan: pb1 = V_B1 ⊥ OB, pb2 = V_B2 along the motion, b1b2 = V_B2B1, each at
     μ_V exactly; a vector under two arrowheads is drawn as a point with its name."""
     plan = sol.data.plan
@@ -451,7 +453,7 @@ def _clean(x: float, size: float) -> float:
     return 0.0 if abs(x) <= tol.DERIVED * size else x
 
 
-def _tables(sol: Solution) -> list[V.Table]:
+def _tables(sol: Solution[Geometry]) -> list[V.Table]:
     """The given data and the results at the division points."""
     p, r, geo = sol.params, sol.results, sol.data
     law = str(p["law"])
@@ -493,7 +495,7 @@ def _tables(sol: Solution) -> list[V.Table]:
     return [data, results]
 
 
-def _order(sol: Solution) -> list[str]:
+def _order(sol: Solution[Geometry]) -> list[str]:
     """The construction by inversion, step by step (one line each)."""
     kind = sol.data.follower.kind
     return [
@@ -507,7 +509,7 @@ def _order(sol: Solution) -> list[str]:
     ]
 
 
-def _notes(sol: Solution) -> list[str]:
+def _notes(sol: Solution[Geometry]) -> list[str]:
     """The sheet's notes, wrapped to the panel: the summary, the radius formula, what happens at
     a jump of S′."""
     geo = sol.data

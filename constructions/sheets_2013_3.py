@@ -11,7 +11,7 @@ the layout's factors without drawing (``Problem.scales``).
 from __future__ import annotations
 
 import math
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 from geomcad.geom import Vec
 from geomcad.sheet import Scale, Sheet, TitleBlock, Viewport, fmt_number, start
@@ -35,6 +35,8 @@ if TYPE_CHECKING:
     from geomcad.construction import Construction
     from geomcad.problem import Solution
 
+    from .p2013_3 import Geometry
+
 #: Paper sizes of the symbols drawn beside the mechanism (mm).
 VA_LEN = 14.0
 #: Width (mm) of the order of construction's text.
@@ -56,7 +58,7 @@ def extent(c: Construction, l_ab: float) -> tuple[float, float, float, float]:
     return min(xs) - pad, min(ys) - pad, max(xs) + pad, max(ys) + pad
 
 
-def _views(sol: Solution, kv: Scale | None = None) -> tuple[Tree, Figure, V.PlanView]:
+def _views(sol: Solution[Geometry], kv: Scale | None = None) -> tuple[Tree, Figure, V.PlanView]:
     """The sheet's tree: the mechanism over the data and the order of construction, the plan
     over the results (their lengths on the plan at ``kv``; the table's size does not depend on
     it, so the layout can be arranged before the scales are known)."""
@@ -85,7 +87,7 @@ def _views(sol: Solution, kv: Scale | None = None) -> tuple[Tree, Figure, V.Plan
 
 
 @per_language
-def scales(sol: Solution) -> dict[str, float]:
+def scales(sol: Solution[Geometry]) -> dict[str, float]:
     """k_l of the mechanism and k_v of the plan, as the layout chooses them (no drawing)."""
     tree, scheme, plan = _views(sol)
     lay = arrange(tree, Field.of_format("A3"))
@@ -94,7 +96,7 @@ def scales(sol: Solution) -> dict[str, float]:
     return {"l": k_l.k, "v": k_v.k}
 
 
-def sheets(sol: Solution) -> list[tuple[str, Sheet]]:
+def sheets(sol: Solution[Geometry]) -> list[tuple[str, Sheet]]:
     """The main sheet of 2013-3."""
     got = scales(sol)  # this layout's (in the language being drawn), which compose() repeats
     tree, _scheme, _plan = _views(sol, Scale(got["v"], "v"))
@@ -105,7 +107,7 @@ def sheets(sol: Solution) -> list[tuple[str, Sheet]]:
     return [("", d.finish())]
 
 
-def _mechanism(v: Viewport, geo: Any, c: Any, sol: Solution) -> None:
+def _mechanism(v: Viewport, geo: Geometry, c: Construction, sol: Solution[Geometry]) -> None:
     O1, O2, A, B, C = (c[n] for n in ("O1", "O2", "A", "B", "C"))
     u3 = (C - B).unit()  # along the slot, from B through O1 to C
     u5 = (C - O2).unit()
@@ -180,7 +182,7 @@ def _block(v: Viewport, q: Vec, along: Vec) -> None:
     v.sheet.add(Polyline(corners, "link", closed=True))
 
 
-def _results(sol: Solution, kv: Scale | None) -> V.Table:
+def _results(sol: Solution[Geometry], kv: Scale | None) -> V.Table:
     """The results with their lengths on the plan (velocities) at ``kv``."""
     r = sol.results
     rows = [[WORDS("h_quantity"), WORDS("h_value"), WORDS("h_on_plan")]]
@@ -200,7 +202,7 @@ def _results(sol: Solution, kv: Scale | None) -> V.Table:
     return V.Table(rows, widths=(30.0, 40.0, 36.0), row_h=5.5, title=WORDS("results_title"))
 
 
-def _data(sol: Solution) -> V.Table:
+def _data(sol: Solution[Geometry]) -> V.Table:
     p = sol.params
     rows = [[WORDS("h_param"), WORDS("h_value")]]
     for name, label, unit in (

@@ -15,7 +15,7 @@ from __future__ import annotations
 import dataclasses
 import itertools
 import math
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 import numpy as np
 
@@ -41,7 +41,10 @@ from geomcad.sheet.text import SUB_DROP, SUB_SCALE, SUP_RISE, metrics, run_size,
 from geomcad.sheet.text import width as text_width
 
 if TYPE_CHECKING:
+    from geomcad.construction import Construction
     from geomcad.problem import Solution
+
+    from .p2013_4 import Geometry
 
 
 def view_half_angle(gear: SpurGear) -> float:
@@ -61,7 +64,7 @@ def extent(gear: SpurGear) -> tuple[float, float, float, float]:
     return (-w, r_low * math.cos(half) - pad, w, r_top + 1.5 * pad)
 
 
-def _inset_extent(c: Any, gear: SpurGear) -> tuple[float, float, float, float]:
+def _inset_extent(c: Construction, gear: SpurGear) -> tuple[float, float, float, float]:
     """The model box of the inset: O, the axis up past the tip, K and N."""
     K, N = c["K"], c["N"]
     x_lo = min(N.x, 0.0) - 0.1 * gear.r_a
@@ -82,7 +85,7 @@ def _num(x: float, digits: int = 6) -> str:
     return fmt_number(x, current(), digits)
 
 
-def _views(sol: Solution) -> tuple[Tree, Figure]:
+def _views(sol: Solution[Geometry]) -> tuple[Tree, Figure]:
     """The sheet's tree: the tooth (the sheet's main view) beside a column of the inset, the
     tables and the order of construction."""
     geo, c = sol.data, sol.construction
@@ -114,7 +117,7 @@ def _views(sol: Solution) -> tuple[Tree, Figure]:
 
 
 @per_language
-def scales(sol: Solution) -> dict[str, float]:
+def scales(sol: Solution[Geometry]) -> dict[str, float]:
     """k_l of the tooth view, as the layout chooses it (no drawing)."""
     tree, main = _views(sol)
     k = arrange(tree, Field.of_format("A3"))[main].scale
@@ -122,7 +125,7 @@ def scales(sol: Solution) -> dict[str, float]:
     return {"l": k.k}
 
 
-def sheets(sol: Solution) -> list[tuple[str, Sheet]]:
+def sheets(sol: Solution[Geometry]) -> list[tuple[str, Sheet]]:
     """The main sheet of 2013-4."""
     k = Scale(scales(sol)["l"], "l")  # this layout's (in the language being drawn)
     tb = TitleBlock(title=WORDS("tb_title"), designation=WORDS("designation"), scale=k.ratio_text())
@@ -134,7 +137,7 @@ def sheets(sol: Solution) -> list[tuple[str, Sheet]]:
     return [("", sheet)]
 
 
-def _inset(v: Viewport, c: Any, gear: SpurGear, geo: Any) -> None:
+def _inset(v: Viewport, c: Construction, gear: SpurGear, geo: Geometry) -> None:
     """A small view of the whole construction about O: the axis OT, OK, the circles d_b, d_y,
     d_a, the thread KN tangent to the base circle, and the angles ψ_y = ∠TOK, α_y = ∠KON."""
     K, N, T = c["K"], c["N"], c["T"]
@@ -223,7 +226,7 @@ def _arc(r: float, half: float) -> Arc:
     return Arc(Circle(CENTRE, r), math.pi / 2.0 - half, math.pi / 2.0 + half)
 
 
-def _circles(v: Viewport, gear: SpurGear, geo: Any, half: float) -> None:
+def _circles(v: Viewport, gear: SpurGear, geo: Geometry, half: float) -> None:
     """The gear's circles across the view, labelled at their ends."""
     span = 0.97 * half
     r_y = geo.r_y
@@ -304,7 +307,7 @@ def _clip(pts: list[tuple[float, float]], lo: float, hi: float) -> list[list[tup
     return [p for p in out if len(p) > 1]
 
 
-def _tooth(v: Viewport, gear: SpurGear, geo: Any) -> None:
+def _tooth(v: Viewport, gear: SpurGear, geo: Geometry) -> None:
     """The tooth's outline (main line): both flanks, the tip land and the root in the spaces."""
     fl = geo.flank
     right = np.concatenate([fl.involute, fl.fillet[1:]])
@@ -321,7 +324,7 @@ def _tooth(v: Viewport, gear: SpurGear, geo: Any) -> None:
             v.arc(Arc(Circle(CENTRE, r_f), math.pi / 2.0 + lo, math.pi / 2.0 + hi), "link")
 
 
-def _caliper(v: Viewport, c: Any, geo: Any) -> None:
+def _caliper(v: Viewport, c: Construction, geo: Geometry) -> None:
     """The caliper's chord K′K, its height below the tip T, and their dimensions."""
     K, K_, T, H = c["K"], c["K'"], c["T"], c["H"]
     gear = geo.gear
@@ -341,7 +344,7 @@ def _caliper(v: Viewport, c: Any, geo: Any) -> None:
     del gear
 
 
-def _tables(sol: Solution) -> tuple[V.Table, V.Table, V.Table]:
+def _tables(sol: Solution[Geometry]) -> tuple[V.Table, V.Table, V.Table]:
     """The given data, the results, and the sizes of the tooth the rack cuts."""
     p, r, geo = sol.params, sol.results, sol.data
     gear: SpurGear = geo.gear

@@ -24,7 +24,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 from geomcad.geom import Vec
 from geomcad.sheet import (
@@ -39,6 +39,8 @@ from geomcad.sheet import (
 
 if TYPE_CHECKING:
     from geomcad.problem import Solution
+
+    from .p2013_5 import Geometry
 
 from geomcad.kinematics.trains import RayPlan
 from geomcad.sheet import views as V
@@ -91,7 +93,7 @@ def factor(k: Scale) -> str:
 LINK_LABEL = {SUN: "1", BLOCK25: "2–5", PLANET: "6", H1: "H_1–4", H2: "H_2–7", FRAME: "0"}
 
 
-def _factors(geo: Any) -> tuple[float, float]:
+def _factors(geo: Geometry) -> tuple[float, float]:
     """The first guess of the layout's factors: k_l of the scheme (the largest GOST 2.302 scale
     at which its radii fit SCHEME_H), k_v of the plan (its velocities in half that height: a
     narrow plan first, so that the layout can give the scheme its largest scale)."""
@@ -102,7 +104,7 @@ def _factors(geo: Any) -> tuple[float, float]:
     return k_l, nice_factor(v_span, 0.5 * SCHEME_H, "v").k
 
 
-def sheets(sol: Solution) -> list[tuple[str, Sheet]]:
+def sheets(sol: Solution[Geometry]) -> list[tuple[str, Sheet]]:
     """The main sheet of 2013-5."""
     tree, lay, k_l, _, _ = _arranged(sol)
     k = Scale(k_l, "l")
@@ -117,7 +119,7 @@ def sheets(sol: Solution) -> list[tuple[str, Sheet]]:
     return [("", d.finish())]
 
 
-def _build_box(geo: Any, k_l: float, k_v: float) -> Extent:
+def _build_box(geo: Geometry, k_l: float, k_v: float) -> Extent:
     """The model box (m, at k_l) of the scheme and the plan beside it: the plan's velocities
     drawn at k_v as lengths k_l/k_v, the gap and the room for the labels (paper mm) at k_l."""
     y_lo, y_hi = geo.extent
@@ -131,7 +133,7 @@ def _build_box(geo: Any, k_l: float, k_v: float) -> Extent:
             y_hi + PAD_T * k_l)  # fmt: skip
 
 
-def _rays_box(geo: Any, rays: RayPlan, k_l: float, k_v: float) -> Extent:
+def _rays_box(geo: Geometry, rays: RayPlan, k_l: float, k_v: float) -> Extent:
     """The model box (at k_l) of the angle diagram, its labels' rows and the ratio under it."""
     ends = [_pv(geo, k_l, k_v, e) for e in rays.ends.values()]
     S = _pv(geo, k_l, k_v, rays.S)
@@ -142,7 +144,7 @@ def _rays_box(geo: Any, rays: RayPlan, k_l: float, k_v: float) -> Extent:
     return (lo, S.y - 0.55 * rays.H - 3.0 * k_l, hi, S.y + rays.H + 3.0 * 6.5 * k_l)
 
 
-def _tree(sol: Solution, k_l: float, k_v: float) -> tuple[Node, dict[str, View], float]:
+def _tree(sol: Solution[Geometry], k_l: float, k_v: float) -> tuple[Node, dict[str, View], float]:
     """The sheet's views at the factors k_l, k_v: the heading, the scheme with the plan, the
     angle diagram under them, the panel on the right; and μ_ω of the angle diagram."""
     geo = sol.data
@@ -169,7 +171,7 @@ def _tree(sol: Solution, k_l: float, k_v: float) -> tuple[Node, dict[str, View],
     return tree, {"build": build, "rays": ray_view}, k_omega
 
 
-def _arranged(sol: Solution) -> tuple[Node, Layout, float, float, float]:
+def _arranged(sol: Solution[Geometry]) -> tuple[Node, Layout, float, float, float]:
     """The tree rebuilt until its factors settle: k_l is the layout's, k_v the plan's factor
     for the room the scheme leaves in the view's box (the plan's width depends on both)."""
     geo = sol.data
@@ -199,13 +201,13 @@ def _arranged(sol: Solution) -> tuple[Node, Layout, float, float, float]:
     return tree, lay, k_l, k_v, k_omega
 
 
-def scales(sol: Solution) -> Mapping[str, float]:
+def scales(sol: Solution[Geometry]) -> Mapping[str, float]:
     """The sheet's factors: k_l of the scheme and k_v of the plan of linear velocities."""
     _, _, k_l, k_v, _ = _arranged(sol)
     return {"l": k_l, "v": k_v}
 
 
-def _build(v: Viewport, geo: Any, kv: Scale) -> None:
+def _build(v: Viewport, geo: Geometry, kv: Scale) -> None:
     """The scheme and, beside it on the same levels, the plan of linear velocities."""
     y_lo, y_hi = geo.extent
     u = (y_hi - y_lo) / SCHEME_UNITS
@@ -289,7 +291,7 @@ def _x_end(u: float) -> float:
     return 10.8 * u + 0.35 * u + 0.6 * u + 2.6 * u
 
 
-def _scheme(v: Viewport, geo: Any, u: float) -> tuple[float, dict[str, Vec]]:
+def _scheme(v: Viewport, geo: Geometry, u: float) -> tuple[float, dict[str, Vec]]:
     """Draw the scheme; return its right edge on the sheet (mm) and where each point of the plan
     lies on it."""
     z, m, a = geo.z, geo.m, geo.a
@@ -372,13 +374,13 @@ def _scheme(v: Viewport, geo: Any, u: float) -> tuple[float, dict[str, Vec]]:
 # -- the plan of linear velocities ---------------------------------------------------------------
 
 
-def _pv(geo: Any, k_l: float, k_v: float, q: Vec) -> Vec:
+def _pv(geo: Geometry, k_l: float, k_v: float, q: Vec) -> Vec:
     """A plan point (v in m/s, y in m) as a model point of the viewport at k_l: v drawn at k_v."""
     return Vec(q.x * k_l / k_v, q.y)
 
 
 def _plan(
-    v_scheme: Viewport, vp: Viewport, geo: Any, kv: Scale, spots: dict[str, Vec]
+    v_scheme: Viewport, vp: Viewport, geo: Geometry, kv: Scale, spots: dict[str, Vec]
 ) -> list[str]:
     """Draw the plan; return the points whose velocity is shorter than two arrowheads (drawn
     as their ends only, at μ_V, and named in a note)."""
@@ -428,7 +430,7 @@ def _plan(
 # -- the angle diagram ---------------------------------------------------------------------------
 
 
-def _scaled_rays(geo: Any, k_v: float, k_omega: float) -> RayPlan:
+def _scaled_rays(geo: Geometry, k_v: float, k_omega: float) -> RayPlan:
     """The recorded angle diagram enlarged about its pole S so that its pole distance is
     k_v/k_ω (the rays keep their directions, so the intercepts read ω_i at μ_ω = k_ω)."""
     rays = geo.rays
@@ -437,7 +439,7 @@ def _scaled_rays(geo: Any, k_v: float, k_omega: float) -> RayPlan:
     return RayPlan(rays.S, H, {k: rays.S + (e - rays.S) * f for k, e in rays.ends.items()})
 
 
-def _rays(v: Viewport, geo: Any, rays: RayPlan, kv: Scale, k_omega: float) -> None:
+def _rays(v: Viewport, geo: Geometry, rays: RayPlan, kv: Scale, k_omega: float) -> None:
     """The angle diagram: from S, rays parallel to the links' lines; they cut the line H above S
     in segments ω_i/k_ω."""
     k_l = v.scale.k
@@ -490,7 +492,7 @@ def _rays(v: Viewport, geo: Any, rays: RayPlan, kv: Scale, k_omega: float) -> No
 # -- the tables ----------------------------------------------------------------------------------
 
 
-def _panel(sol: Solution, rays: RayPlan, k_v: float) -> list[View]:
+def _panel(sol: Solution[Geometry], rays: RayPlan, k_v: float) -> list[View]:
     """The data, the results (Willis), the angular velocities three ways, the order of
     construction."""
     p, r, geo = sol.params, sol.results, sol.data

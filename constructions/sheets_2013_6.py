@@ -73,7 +73,7 @@ class _Main:
     mechanism's scale, which the arrangement chooses: arranged until the scale it was built
     with is the one it gets."""
 
-    def __init__(self, sol: Solution) -> None:
+    def __init__(self, sol: Solution[Geometry]) -> None:
         geo, c = sol.data, sol.construction
         # for the seed's data the seed's 1:5, so that its drawing and ours can be laid side by
         # side (O1B0, O1B1 are measured on it)
@@ -92,18 +92,18 @@ class _Main:
         self.k = k
 
 
-def scales(sol: Solution) -> Mapping[str, float]:
+def scales(sol: Solution[Geometry]) -> Mapping[str, float]:
     """k_l of the sheet: the largest GOST 2.302 scale at which the drawing fits its place on
     the composed sheet (for the seed's data the seed's 0.005 m/mm, 1:5)."""
     return {"l": _Main(sol).k}
 
 
-def sheets(sol: Solution) -> list[tuple[str, Sheet]]:
+def sheets(sol: Solution[Geometry]) -> list[tuple[str, Sheet]]:
     """The sheets of 2013-6: the synthesis, and the kinematic analysis of its six-bar."""
     return [main_sheet(sol), kinematics_sheet(sol)]
 
 
-def main_sheet(sol: Solution) -> tuple[str, Sheet]:
+def main_sheet(sol: Solution[Geometry]) -> tuple[str, Sheet]:
     """The main sheet of 2013-6."""
     m = _Main(sol)
     k = Scale(m.k, "l")
@@ -118,14 +118,14 @@ def main_sheet(sol: Solution) -> tuple[str, Sheet]:
     return ("", d.finish())
 
 
-def _drawing(v: Viewport, geo: Any, c: Any) -> None:
+def _drawing(v: Viewport, geo: Geometry, c: Construction) -> None:
     _construction(v, geo, c)
     _mechanism(v, geo, c)
     # the angle at B1 last, when every line it must keep clear of is drawn
     _angle_with_leader(v, c["B1"], c["B0"], c["O"], "90° – θ", 12.0)
 
 
-def _construction(v: Viewport, geo: Any, c: Any) -> None:
+def _construction(v: Viewport, geo: Geometry, c: Construction) -> None:
     B0, B1, Op, O2 = c["B0"], c["B1"], c["O"], c["O2"]
     theta = geo.theta
     # the rocker's arc and the slider's path
@@ -292,7 +292,7 @@ def _right_angle(v: Viewport, vertex: Vec, a: Vec, b: Vec, size_mm: float = 3.0)
     v.polyline([vertex + ua, vertex + ua + ub, vertex + ub], "construction")
 
 
-def _mechanism(v: Viewport, geo: Any, c: Any) -> None:
+def _mechanism(v: Viewport, geo: Geometry, c: Construction) -> None:
     O2, B, C, B0, B1, C0, C1 = (c[n] for n in ("O2", "B", "C", "B0", "B1", "C0", "C1"))
     ch = geo.chosen
     O1 = ch.O1
@@ -363,7 +363,7 @@ def _mid_A(O1: Vec, l1: float, l2: float, B: Vec, O2: Vec, branch: int) -> Vec:
     return pts[0]
 
 
-def _panel(sol: Solution, k: float) -> tuple[View, ...]:
+def _panel(sol: Solution[Geometry], k: float) -> tuple[View, ...]:
     """The tables on the right: given data, results (O1B0, O1B1 in mm at the factor k; none
     yet when 0), every solution, the order of construction."""
     p = sol.params

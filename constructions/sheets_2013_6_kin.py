@@ -51,9 +51,12 @@ from geomcad.sheet.views import PlanView, Table, Text
 from geomcad.structure import Link, Mechanism, prismatic, revolute
 
 if TYPE_CHECKING:
+    from geomcad.construction import Construction
+    from geomcad.kinematics.sixbar import SixBar
     from geomcad.problem import Solution
 
     from .kin_2013_6 import Analysis
+    from .p2013_6 import Geometry
 
 WORDS = Words(__package__, "sheets_2013_6_kin")
 
@@ -139,7 +142,7 @@ class _Kin:
     vectors in mm at the plans' factors, which the arrangement chooses: the tree is arranged
     until the factors it was built with are the ones it gets."""
 
-    def __init__(self, sol: Solution) -> None:
+    def __init__(self, sol: Solution[Geometry]) -> None:
         geo = sol.data
         m = geo.mechanism
         an: Analysis = geo.analysis
@@ -193,7 +196,7 @@ class _Kin:
         return Column(top, Row(self.diagrams, right, weights=BOTTOM_W))
 
 
-def kinematics_sheet(sol: Solution) -> tuple[str, Sheet]:
+def kinematics_sheet(sol: Solution[Geometry]) -> tuple[str, Sheet]:
     kin = _Kin(sol)
     lay = kin.layout
     k = lay[kin.mech].scale
@@ -228,7 +231,7 @@ def _short_note(d: Drawing, plan: Plan, at: Placed, room: Placed) -> None:
         d.paragraph(text, at.box[0], room.box[1] + 2.5, at.box[2] - at.box[0], 2.5)
 
 
-def _mechanism(v: Viewport, c: Any, m: Any, an: Analysis) -> None:
+def _mechanism(v: Viewport, c: Construction, m: SixBar, an: Analysis) -> None:
     O1, C = c["O1"], c["C"]
     d = m.guide_d.unit()
     ext = GUIDE_EXT * m.l4
@@ -251,7 +254,7 @@ class _Diagrams(View):
     """s(φ), v(φ), a(φ) stacked in the box the layout gives them, one φ axis scale, φ1
     marked, the plans' values as dots."""
 
-    def __init__(self, an: Analysis, m: Any, **kw: Any) -> None:
+    def __init__(self, an: Analysis, m: SixBar, **kw: Any) -> None:
         kw.setdefault("margin", 0.0)
         super().__init__(**kw)
         self.an, self.m = an, m
@@ -271,7 +274,7 @@ class _Diagrams(View):
         _diagrams(d, self.an, self.m, at.inner)
 
 
-def _diagrams(d: Drawing, an: Analysis, m: Any, box: tuple[float, float, float, float]) -> None:
+def _diagrams(d: Drawing, an: Analysis, m: SixBar, box: tuple[float, float, float, float]) -> None:
     lang = current()
     x0, y0, x1, y1 = box
     gx = (x0 + GRAPH_LEFT, x1 - GRAPH_RIGHT)
@@ -327,7 +330,7 @@ def _row_factors(ranges: Sequence[float], span: float) -> list[float]:
     return best[1]
 
 
-def _panel(an: Analysis, m: Any, kv: float, ka: float) -> tuple[View, ...]:
+def _panel(an: Analysis, m: SixBar, kv: float, ka: float) -> tuple[View, ...]:
     """Values read off the plans beside the analytic ones (their lengths on the plans at the
     factors kv, ka; none yet when 0), and the links' ω and ε."""
     g_dir = m.guide_d.unit()
@@ -356,7 +359,7 @@ def _panel(an: Analysis, m: Any, kv: float, ka: float) -> tuple[View, ...]:
     return values, omegas, signs
 
 
-def motion(sol: Solution, frames: int) -> Frames:
+def motion(sol: Solution[Geometry], frames: int) -> Frames:
     """The synthesized six-bar over one crank turn from the kinematics sheet's position (60°
     past C's left extreme), at ω1 of the analysis: the joints, C on its guide, the paths of A, B
     and C, and the velocity plan (pa, pb, pc)."""
@@ -364,7 +367,6 @@ def motion(sol: Solution, frames: int) -> Frames:
 
     geo = sol.data
     mech = geo.mechanism
-    assert mech is not None, "build refuses a solution that is not a crank-rocker"
     r = mech.sweep(turn(frames, geo.phi_min + ANALYSIS_TURN, ANALYSIS_OMEGA1), ANALYSIS_OMEGA1)
     fixed = {"O1": mech.O1, "O2": mech.O2}
     points = {k: np.tile([v.x, v.y], (frames, 1)) for k, v in fixed.items()}

@@ -59,7 +59,7 @@ def _n(x: float, digits: int = 4) -> str:
     return fmt_number(x, current(), digits=digits)
 
 
-def scales(sol: Solution) -> dict[str, float]:
+def scales(sol: Solution[Geometry]) -> dict[str, float]:
     """The sheet's k_l and k_F as the layout step chooses them (for ``verify``), and k_j of the
     enlarged joints (absent without friction)."""
     tree, views = _tree(sol)
@@ -93,7 +93,7 @@ def inset_reach(pin_d: float, rho: float) -> float:
     return max(0.52 * pin_d, 2.5 * rho)
 
 
-def sheets(sol: Solution) -> list[tuple[str, Sheet]]:
+def sheets(sol: Solution[Geometry]) -> list[tuple[str, Sheet]]:
     """The main sheet of 2013-7."""
     tree, views = _tree(sol)
     lay = arrange(tree, Field.of_format("A3"))
@@ -110,9 +110,9 @@ def sheets(sol: Solution) -> list[tuple[str, Sheet]]:
     return [("", d.finish())]
 
 
-def _tree(sol: Solution) -> tuple[Node, dict[str, View]]:
+def _tree(sol: Solution[Geometry]) -> tuple[Node, dict[str, View]]:
     """The sheet's views and how they share the field."""
-    geo: Geometry = sol.data
+    geo = sol.data
     run, free = geo.run, geo.free
     mech = Figure(
         extent(geo), lambda v: _mechanism(v, geo), title=WORDS("mech"), margin=5.0, weight=4.0
@@ -378,7 +378,7 @@ def _u(key: str) -> str:
     return WORDS(f"u_{key}")
 
 
-def _given(sol: Solution) -> View:
+def _given(sol: Solution[Geometry]) -> View:
     p = sol.params
     given = [
         ("m_2", _n(float(p["m2"]), 6), _u("kg")),
@@ -420,7 +420,7 @@ def _compare(geo: Geometry) -> View:
     return V.Table(rows, title=WORDS("compare"))
 
 
-def _results(sol: Solution) -> View:
+def _results(sol: Solution[Geometry]) -> View:
     r = sol.results
     rows = [[WORDS("quantity"), WORDS("value")]]
     for name, label, unit in (

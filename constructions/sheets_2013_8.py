@@ -56,8 +56,8 @@ def f(x: float, digits: int = 4) -> str:
 class _Sheet:
     """The sheet's views and their arrangement (one tree for the sheet and the scales hook)."""
 
-    def __init__(self, sol: Solution) -> None:
-        data: Data = sol.data
+    def __init__(self, sol: Solution[Data]) -> None:
+        data = sol.data
         self.load = _load_diagram(data)
         self.balance = _energy_balance(data)
         # one sentence (the cycle and the motor's return of E), then its formula on a line
@@ -81,14 +81,14 @@ def _factor(view: Diagram, lay: Layout) -> float:
     return view.axes(x1 - x0, y1 - y0)[1].k
 
 
-def scales(sol: Solution) -> Mapping[str, float]:
+def scales(sol: Solution[Data]) -> Mapping[str, float]:
     """The sheet's factor k_F (N/mm): the load diagram draws F in kN at the factor its place
     on the composed sheet allows."""
     s = _Sheet(sol)
     return {"F": _factor(s.load, s.layout) * KN}
 
 
-def sheets(sol: Solution) -> list[tuple[str, Sheet]]:
+def sheets(sol: Solution[Data]) -> list[tuple[str, Sheet]]:
     """The main sheet of 2013-8."""
     tb = TitleBlock(title=WORDS("tb_title"), designation=WORDS("designation"), lang=current())
     d = start("A3", tb)
@@ -159,7 +159,7 @@ def _energy_balance(data: Data) -> Diagram:
     )  # fmt: skip
 
 
-def _panel(sol: Solution) -> tuple[Table, Table, Steps]:
+def _panel(sol: Solution[Data]) -> tuple[Table, Table, Steps]:
     """The given data, the results and the solution step by step."""
     p, r = sol.params, sol.results
     rows = [[WORDS("param"), WORDS("value")]]

@@ -59,19 +59,19 @@ FORCE_ROOM_MM = 40.0
 GAP_MM = 3.0
 
 
-def scales(sol: Solution) -> dict[str, float]:
+def scales(sol: Solution[Data]) -> dict[str, float]:
     """The sheet's μ_F (N/mm): the largest force at most FORCE_ROOM_MM long."""
     res = sol.results
     biggest = max(res["N_pin"], res["F_spring"], res["F_damper"], res["F_inertia_rod"])
     return {"F": nice_factor(biggest, FORCE_ROOM_MM, "F").k if biggest > 0.0 else 1.0}
 
 
-def sheets(sol: Solution) -> list[tuple[str, Sheet]]:
+def sheets(sol: Solution[Data]) -> list[tuple[str, Sheet]]:
     """The main sheet (the parts and their loads) and the ``motion`` sheet."""
     return [("", _main(sol)), ("motion", _motion(sol))]
 
 
-def _title(sol: Solution, key: str, no: int, scale: str = "") -> TitleBlock:
+def _title(sol: Solution[Data], key: str, no: int, scale: str = "") -> TitleBlock:
     return TitleBlock(
         title=WORDS(key),
         designation=WORDS("designation", no=no),
@@ -87,8 +87,8 @@ def _unit(u: str) -> str:
     return WORDS(f"u_{u}")
 
 
-def _main(sol: Solution) -> Sheet:
-    data: Data = sol.data
+def _main(sol: Solution[Data]) -> Sheet:
+    data = sol.data
     tree, views = _main_tree(sol)
     lay = arrange(tree, Field.of_format("A3"))
     k = lay.scale("l")
@@ -109,11 +109,11 @@ def _extents(data: Data, pad: float) -> tuple[Extent, Extent, Extent]:
     return scheme, disc, rod
 
 
-def _main_tree(sol: Solution) -> tuple[Node, dict[str, View]]:
+def _main_tree(sol: Solution[Data]) -> tuple[Node, dict[str, View]]:
     """The three views at one GOST scale (the loads' room above and below the disc and the rod
     found by arranging twice: it depends on that scale), the notes under them, the tables and
     the equations on the right, clear of the title block."""
-    data: Data = sol.data
+    data = sol.data
     k_F = sol.scales["F"]
     longest = max(float(sol.results["N_pin"]), float(sol.results["F_spring"])) / k_F + 6.0
     pad = 0.0
@@ -127,9 +127,9 @@ def _main_tree(sol: Solution) -> tuple[Node, dict[str, View]]:
 
 
 def _main_views(
-    sol: Solution, boxes: tuple[Extent, Extent, Extent]
+    sol: Solution[Data], boxes: tuple[Extent, Extent, Extent]
 ) -> tuple[Node, dict[str, View]]:
-    data: Data = sol.data
+    data = sol.data
     k_F = sol.scales["F"]
     heads = ("view_scheme", "view_disc", "view_rod")
     draws = (
@@ -321,7 +321,7 @@ def _zero(x: float, scale: float) -> float:
     return 0.0 if abs(x) <= tol.DERIVED * max(abs(scale), 1.0) else abs(x)
 
 
-def _given(sol: Solution) -> View:
+def _given(sol: Solution[Data]) -> View:
     """The given data as a table."""
     p = sol.params
     items = [
@@ -344,7 +344,7 @@ def _paragraphs(head: str, items: list[str], dash: bool = True) -> View:
     return V.Text(lines=lines, width=PANEL_W, title=head)
 
 
-def _panel_main(sol: Solution, data: Data) -> Node:
+def _panel_main(sol: Solution[Data], data: Data) -> Node:
     res = sol.results
     R = data.reactions
     qty, val = WORDS("quantity"), WORDS("value")
@@ -381,11 +381,11 @@ def _panel_main(sol: Solution, data: Data) -> Node:
 TITLE_BLOCK_H = 58.0
 
 
-def _motion(sol: Solution) -> Sheet:
+def _motion(sol: Solution[Data]) -> Sheet:
     """φ(t) above φ'(t) on a common t axis on the left (with the ordinates of the table's
     instants); on the right the integration, the table of the motion, the derivation and the
     given data."""
-    data: Data = sol.data
+    data = sol.data
     tr = data.motion
     T = tr.t_end
     ts = list(tr.t)

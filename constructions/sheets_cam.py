@@ -30,6 +30,7 @@ from geomcad.sheet.views import AxisSpec, Curve, Diagram, Table, Text
 
 if TYPE_CHECKING:
     from geomcad.problem import Solution
+    from geomcad.sheet import Sheet
 
     from .file_cam import CamDesign
 
@@ -78,7 +79,7 @@ def _tree(des: CamDesign, results: dict[str, Any]) -> tuple[Tree, Figure]:
     return tree, profile
 
 
-def scales(sol: Solution) -> dict[str, float]:
+def scales(sol: Solution[CamDesign]) -> dict[str, float]:
     """k_l of the profile view: the GOST scale the layout gives it (``Problem.scales``)."""
     tree, profile = _tree(sol.data, sol.results)
     scale = arrange(tree, Field.of_format("A1"))[profile].scale
@@ -86,8 +87,8 @@ def scales(sol: Solution) -> dict[str, float]:
     return {"l": scale.k}
 
 
-def sheets(sol: Solution) -> list[tuple[str, Any]]:
-    des: CamDesign = sol.data
+def sheets(sol: Solution[CamDesign]) -> list[tuple[str, Sheet]]:
+    des = sol.data
     tree, profile = _tree(des, sol.results)
     lay = arrange(tree, Field.of_format("A1"))
     k = lay[profile].scale

@@ -40,6 +40,7 @@ from geomcad.sheet.views import AxisSpec, Curve, Diagram, Table, Text
 
 if TYPE_CHECKING:
     from geomcad.problem import Solution
+    from geomcad.sheet import Sheet
 
     from .file_gears import GearsDesign
 
@@ -80,10 +81,10 @@ def _pair_tree(des: GearsDesign) -> tuple[Tree, Figure]:
     return Row(mesh, right), mesh
 
 
-def scales(sol: Solution) -> dict[str, float]:
+def scales(sol: Solution[GearsDesign]) -> dict[str, float]:
     """k_l of the meshing drawing (or of the planetary scheme), as the layout chooses it
     (``Problem.scales``)."""
-    des: GearsDesign = sol.data
+    des = sol.data
     if des.pair is not None and des.meshing is not None:
         tree, mesh = _pair_tree(des)
         scale = arrange(tree, Field.of_format("A1"))[mesh].scale
@@ -95,9 +96,9 @@ def scales(sol: Solution) -> dict[str, float]:
     return {"l": scale.k}
 
 
-def sheets(sol: Solution) -> list[tuple[str, Any]]:
-    des: GearsDesign = sol.data
-    out: list[tuple[str, Any]] = []
+def sheets(sol: Solution[GearsDesign]) -> list[tuple[str, Sheet]]:
+    des = sol.data
+    out: list[tuple[str, Sheet]] = []
     if des.pair is not None:
         out.append(("", _pair_sheet(sol, des)))
     if des.spec.planetary is not None:
@@ -108,7 +109,7 @@ def sheets(sol: Solution) -> list[tuple[str, Any]]:
 # -- the pair --------------------------------------------------------------------------------------
 
 
-def _pair_sheet(sol: Solution, des: GearsDesign) -> Any:
+def _pair_sheet(sol: Solution[GearsDesign], des: GearsDesign) -> Sheet:
     tree, mesh = _pair_tree(des)
     lay = arrange(tree, Field.of_format("A1"))
     k = lay[mesh].scale
@@ -433,7 +434,7 @@ def _willis(des: GearsDesign, pts: list[PlanPoint], start_link: str, start_pt: s
     )
 
 
-def _planetary_sheet(sol: Solution, des: GearsDesign, no: int) -> Any:
+def _planetary_sheet(sol: Solution[GearsDesign], des: GearsDesign, no: int) -> Sheet:
     tree, scheme = _planetary_tree(des)
     lay = arrange(tree, Field.of_format("A1"))
     k = lay[scheme].scale

@@ -84,9 +84,9 @@ FORCE_ROOM_MM = 45.0
 VELOCITY_ROOM_MM = 36.0
 
 
-def scales(sol: Solution) -> dict[str, float]:
+def scales(sol: Solution[Data]) -> dict[str, float]:
     """The sheets' μ_F (the free-body diagrams) and μ_V (the velocities on the scheme)."""
-    data: Data = sol.data
+    data = sol.data
     res = sol.results
     loads = [
         ld.force.norm
@@ -103,7 +103,7 @@ def scales(sol: Solution) -> dict[str, float]:
     }
 
 
-def sheets(sol: Solution) -> list[tuple[str, Sheet]]:
+def sheets(sol: Solution[Data]) -> list[tuple[str, Sheet]]:
     """The main sheet and the sheets ``graphs`` and ``fbd``."""
     return [("", _main(sol)), ("graphs", _graphs(sol)), ("fbd", _fbd(sol))]
 
@@ -111,11 +111,11 @@ def sheets(sol: Solution) -> list[tuple[str, Sheet]]:
 # -- geometry shared by the views --------------------------------------------------------------
 
 
-def _p(sol: Solution) -> dict[str, float]:
+def _p(sol: Solution[Data]) -> dict[str, float]:
     return {k: float(v) for k, v in sol.params.items()}
 
 
-def _extent(sol: Solution, data: Data) -> tuple[float, float, float, float]:
+def _extent(sol: Solution[Data], data: Data) -> tuple[float, float, float, float]:
     """The mechanism's model box at φ: flywheel, slot, yoke bar, roller and its base."""
     p = _p(sol)
     R1, OA, R3, r3 = p["R1"], p["OA"], p["R3"], p["r3"]
@@ -127,7 +127,7 @@ def _extent(sol: Solution, data: Data) -> tuple[float, float, float, float]:
     return x0, y0, x1, y1
 
 
-def _flywheel(v: Viewport, sol: Solution, data: Data, pivot: bool = True) -> None:
+def _flywheel(v: Viewport, sol: Solution[Data], data: Data, pivot: bool = True) -> None:
     p = _p(sol)
     A = data.yoke.pin.point()
     v.circle((0.0, 0.0), p["R1"], "link")
@@ -146,7 +146,7 @@ def bar_level(p: dict[str, float]) -> float:
     return p["R3"] - p["r3"] + SLOT_W * p["OA"]
 
 
-def _yoke(v: Viewport, sol: Solution, data: Data, guides: bool = True) -> None:
+def _yoke(v: Viewport, sol: Solution[Data], data: Data, guides: bool = True) -> None:
     """The yoke: a frame around the vertical slot through A, a bar from the frame to above the
     roller at bar_level, and a foot down to D = (x_C3, 0), where it bears on the roller's hub."""
     p = _p(sol)
@@ -175,7 +175,9 @@ def _yoke(v: Viewport, sol: Solution, data: Data, guides: bool = True) -> None:
             ground(v, (xg - half, y0 + 1.5 * w), (xg + half, y0 + 1.5 * w), (0.0, 1.0))
 
 
-def _roller(v: Viewport, sol: Solution, data: Data, base: bool = True, foot: bool = True) -> None:
+def _roller(
+    v: Viewport, sol: Solution[Data], data: Data, base: bool = True, foot: bool = True
+) -> None:
     """The roller: its rim R3 (broken where the yoke's foot passes in front of it), its hub r3,
     its axis C3, and the base it rolls on."""
     p = _p(sol)
@@ -195,7 +197,7 @@ def _roller(v: Viewport, sol: Solution, data: Data, base: bool = True, foot: boo
         ground(v, (c3.x - 1.6 * R3, yb), (c3.x + 1.6 * R3, yb), (0.0, -1.0))
 
 
-def _numbers(v: Viewport, sol: Solution, data: Data) -> None:
+def _numbers(v: Viewport, sol: Solution[Data], data: Data) -> None:
     """The links' numbers (GOST 2.770): flywheel 1, yoke 2, roller 3."""
     p = _p(sol)
     A = data.yoke.pin.point()
@@ -210,7 +212,7 @@ def _numbers(v: Viewport, sol: Solution, data: Data) -> None:
 # -- the main sheet ----------------------------------------------------------------------------
 
 
-def _main(sol: Solution) -> Sheet:
+def _main(sol: Solution[Data]) -> Sheet:
     tree, views = _main_tree(sol)
     k = arrange(tree, Field.of_format("A3"))[views["scheme"]].scale
     assert k is not None
@@ -219,17 +221,17 @@ def _main(sol: Solution) -> Sheet:
     return d.finish()
 
 
-def _main_tree(sol: Solution) -> tuple[Node, dict[str, View]]:
+def _main_tree(sol: Solution[Data]) -> tuple[Node, dict[str, View]]:
     """The scheme with its velocities, the velocity plan and its words under it, the tables on
     the right; the title block's corner kept free."""
-    data: Data = sol.data
+    data = sol.data
     # the model box holds the velocities drawn at μ_V (at most VELOCITY_ROOM_MM long)
     scheme = Figure(_extent(sol, data), lambda v: _scheme(v, sol, data),
                     title=WORDS("head_main"), margin=3.0, weight=3.0)  # fmt: skip
     return _main_layout(sol, data, scheme), {"scheme": scheme}
 
 
-def _scheme(v: Viewport, sol: Solution, data: Data) -> None:
+def _scheme(v: Viewport, sol: Solution[Data], data: Data) -> None:
     _flywheel(v, sol, data)
     _yoke(v, sol, data)
     _roller(v, sol, data)
@@ -237,7 +239,7 @@ def _scheme(v: Viewport, sol: Solution, data: Data) -> None:
     _velocities(v, sol, data)
 
 
-def _main_layout(sol: Solution, data: Data, scheme: View) -> Node:
+def _main_layout(sol: Solution[Data], data: Data, scheme: View) -> Node:
     p = _p(sol)
     kv = Scale(sol.scales["v"], "v")
     state = V.Text(lines=[WORDS("state", phi=f(p["phi_deg"]), omega=f(data.omega), mu_v=mu(kv))],
@@ -247,7 +249,7 @@ def _main_layout(sol: Solution, data: Data, scheme: View) -> Node:
     return Row(left, _panel_main(sol, data), weights=(0.69, 0.31))
 
 
-def _velocities(v: Viewport, sol: Solution, data: Data) -> None:
+def _velocities(v: Viewport, sol: Solution[Data], data: Data) -> None:
     """V_A ⊥ OA, V_A2 = V_A1 + V_A2A1 along x, V_D = V_2 at the contact, V_C3 from P; each from
     its point at μ_V, V_D along the contact line below the yoke's bar."""
     p = _p(sol)
@@ -297,7 +299,7 @@ def _velocities(v: Viewport, sol: Solution, data: Data) -> None:
     v.dim_angle((0.0, 0.0), (p["OA"], 0.0), A, "φ", r_mm=r_phi, height=2.5)
 
 
-def _plan(sol: Solution, data: Data) -> tuple[View, View]:
+def _plan(sol: Solution[Data], data: Data) -> tuple[View, View]:
     """The velocity plan (pa1 = V_A1 ⊥ OA, a1a2 ∥ slot, pa2 = V_A2 ∥ guide, pc3 = V_C3) at the
     layout's μ_V, and its words."""
     w = data.omega
@@ -341,14 +343,14 @@ def _notes(items: list[str], width: float = 0.0, dash: bool = False) -> View:
     return V.Text(lines=lines, width=width)
 
 
-def _results_rows(sol: Solution, names: tuple[tuple[str, str, str], ...]) -> list[list[str]]:
+def _results_rows(sol: Solution[Data], names: tuple[tuple[str, str, str], ...]) -> list[list[str]]:
     rows = [[WORDS("quantity"), WORDS("value")]]
     for name, label, unit in names:
         rows.append([label, f"{f(float(sol.results[name]), 4)} {_u(unit) if unit else ''}".strip()])
     return rows
 
 
-def _given(sol: Solution) -> View:
+def _given(sol: Solution[Data]) -> View:
     p = _p(sol)
     items = [
         ("m1", "m_1", "kg"), ("R1", "R_1", "m"), ("OA", "OA", "m"), ("m2", "m_2", "kg"),
@@ -362,7 +364,7 @@ def _given(sol: Solution) -> View:
     return V.Table(rows, widths=(59.0, 59.0), title=WORDS("given"))
 
 
-def _panel_main(sol: Solution, data: Data) -> Node:
+def _panel_main(sol: Solution[Data], data: Data) -> Node:
     w = data.omega
     va, _ = data.yoke.pin.velocity(w)
     v2, _ = data.yoke.body.velocity(w)
@@ -403,10 +405,10 @@ TITLE_BLOCK_H = 58.0
 # -- graphs --------------------------------------------------------------------------------------
 
 
-def _graphs(sol: Solution) -> Sheet:
+def _graphs(sol: Solution[Data]) -> Sheet:
     """I_pr(φ) above ω1(φ) on the left (their ordinates at the tabulated positions), the equation
     of motion and a table of both every 15° on the right."""
-    data: Data = sol.data
+    data = sol.data
     p = _p(sol)
     sw = sweep(data)
     phis_deg = np.degrees(sw["phi"])
@@ -473,7 +475,7 @@ def _turn_ode(data: Data, n: int = 25) -> tuple[list[float], list[float]]:
     return [data.phi0, *phis], [0.0, *omegas]
 
 
-def _panel_graphs(sol: Solution, data: Data, ode: tuple[list[float], list[float]]) -> Node:
+def _panel_graphs(sol: Solution[Data], data: Data, ode: tuple[list[float], list[float]]) -> Node:
     r = sol.results
     p = _p(sol)
     a_, b_ = float(r["I_pr_A"]), float(r["I_pr_B"])
@@ -512,7 +514,7 @@ GRAPHS_PANEL_W = 146.0
 Box = tuple[float, float, float, float]
 
 
-def _fbd_boxes(sol: Solution, data: Data) -> dict[str, Box]:
+def _fbd_boxes(sol: Solution[Data], data: Data) -> dict[str, Box]:
     """The model boxes of the four bodies: flywheel, yoke, roller, the whole mechanism."""
     p = _p(sol)
     R1, OA, R3 = p["R1"], p["OA"], p["R3"]
@@ -543,7 +545,7 @@ def _reach(box: Box, draw_fn: Callable[[Viewport], None], k: Scale) -> Box:
     return (x0, y0, x1, y1)
 
 
-def _fbd_draw(sol: Solution, data: Data) -> dict[str, Callable[[Viewport], None]]:
+def _fbd_draw(sol: Solution[Data], data: Data) -> dict[str, Callable[[Viewport], None]]:
     """How each of the four views is drawn through the viewport the layout gives it."""
     p = _p(sol)
     k_F = sol.scales["F"]
@@ -620,11 +622,11 @@ def _fbd_draw(sol: Solution, data: Data) -> dict[str, Callable[[Viewport], None]
     return {"1": flywheel, "2": yoke, "3": roller, "all": balanced}
 
 
-def _fbd_tree(sol: Solution, k: Scale, k3: Scale) -> tuple[Node, dict[str, View]]:
+def _fbd_tree(sol: Solution[Data], k: Scale, k3: Scale) -> tuple[Node, dict[str, View]]:
     """The four views (a, b, d at one scale, the roller c at its own), their loads' reach
     measured at the scales k and k3, the heading and the panel; the layout chooses between the
     panel beside the top row and beside the whole."""
-    data: Data = sol.data
+    data = sol.data
     boxes = _fbd_boxes(sol, data)
     draw = _fbd_draw(sol, data)
     views: dict[str, View] = {}
@@ -663,7 +665,7 @@ def _width(v: View) -> float:
     return box[2] - box[0]
 
 
-def _fbd_scales(sol: Solution) -> tuple[Node, dict[str, View], Layout]:
+def _fbd_scales(sol: Solution[Data]) -> tuple[Node, dict[str, View], Layout]:
     """The tree rebuilt until its scales settle: the loads' arrows are drawn at μ_F, so the
     room a view needs depends on its length scale."""
     k, k3 = Scale(0.01, "l"), Scale(0.0025, "l")
@@ -680,7 +682,7 @@ def _fbd_scales(sol: Solution) -> tuple[Node, dict[str, View], Layout]:
     return tree, views, lay
 
 
-def _fbd(sol: Solution) -> Sheet:
+def _fbd(sol: Solution[Data]) -> Sheet:
     tree, views, lay = _fbd_scales(sol)
     k = lay[views["all"]].scale
     assert k is not None
@@ -696,7 +698,7 @@ NOTES_W = 180.0
 _INERTIA = {"M_Phi1": "M_Phi1", "Phi_2": "Phi2", "Phi_3": "Phi3", "M_Phi3": "M_Phi3"}
 
 
-def _panel_fbd(sol: Solution, data: Data, width: float = 140.0) -> tuple[Node, View]:
+def _panel_fbd(sol: Solution[Data], data: Data, width: float = 140.0) -> tuple[Node, View]:
     """The tables of the loads, and the notes (``width`` mm wide)."""
     reactions = V.Table(
         _results_rows(
@@ -748,12 +750,12 @@ def _panel_fbd(sol: Solution, data: Data, width: float = 140.0) -> tuple[Node, V
 SLOT_HALF = 1.25
 
 
-def motion(solution: Solution, frames: int) -> Frames:
+def motion(solution: Solution[Data], frames: int) -> Frames:
     """The mechanism over one turn of the flywheel from the sheets' position φ, from the model's
     own motions (the yoke on its pin, the roller driven by the yoke), and the velocity plan at
     the constant ω1 the flywheel has at φ: pa (the pin), pc2 (the yoke), pc3 (the roller's axis);
     a c2 is the slip of the pin along the slot."""
-    data: Data = solution.data
+    data = solution.data
     p = {k: float(v) for k, v in solution.params.items()}
     _model, yoke, roller = mechanism(
         p["m1"], p["R1"], p["OA"], p["m2"], p["m3"], p["R3"], p["r3"], p["rho3"], p["M"], data.lay

@@ -20,7 +20,12 @@
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 from geomcad.problem import Param, Problem, ResultSpec, erratum, lazy, rounded
+
+if TYPE_CHECKING:
+    from .p2013_1 import Geometry
 
 ID = "2013-1"
 
@@ -64,7 +69,7 @@ SEED = {
     "W_after_seed": rounded(1, 0, "W = 3·7 − 2·10 = 1"),
 }
 
-PROBLEM = Problem(
+PROBLEM: Problem[Geometry] = Problem(
     id=ID,
     title="Vulcanizer-lid mechanism: structure and the pusher's dead position",
     params=PARAMS,

@@ -22,8 +22,13 @@
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 from geomcad.problem import Param, Problem, ResultSpec, SeedValue, lazy, rounded
 from geomcad.units import MM
+
+if TYPE_CHECKING:
+    from .p2013_2 import Geometry
 
 #: The motion laws of geomcad.kinematics.motion_laws.LAWS, spelled out here so that the parameter
 #: list loads without numpy (a test keeps the two equal).
@@ -74,7 +79,7 @@ SEED: dict[str, SeedValue | tuple[SeedValue, ...]] = {
     ),
 }
 
-PROBLEM = Problem(
+PROBLEM: Problem[Geometry] = Problem(
     id=ID,
     title="Cam profile for S = a·φ, translating flat-faced follower (radius vectors by inversion)",
     params=PARAMS,

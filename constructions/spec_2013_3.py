@@ -14,7 +14,12 @@
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 from geomcad.problem import Param, Problem, ResultSpec, lazy, rounded
+
+if TYPE_CHECKING:
+    from .p2013_3 import Geometry
 
 ID = "2013-3"
 
@@ -55,7 +60,7 @@ SEED = {
     "F_red": rounded(86.6, 1, "F = 86,6 Н"),
 }
 
-PROBLEM = Problem(
+PROBLEM: Problem[Geometry] = Problem(
     id=ID,
     title="Mechanism with a cross: velocity plan",
     params=PARAMS,

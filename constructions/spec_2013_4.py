@@ -18,8 +18,13 @@
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 from geomcad.problem import Param, Problem, ResultSpec, erratum, lazy, rounded
 from geomcad.units import MM
+
+if TYPE_CHECKING:
+    from .p2013_4 import Geometry
 
 ID = "2013-4"
 
@@ -69,7 +74,7 @@ SEED = {
     "x": rounded(0.43, 2, "x = 0,43"),
 }
 
-PROBLEM = Problem(
+PROBLEM: Problem[Geometry] = Problem(
     id=ID,
     title="Profile shift from a gear-tooth caliper measurement",
     params=PARAMS,

@@ -17,7 +17,12 @@
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 from geomcad.problem import Param, Problem, ResultSpec, erratum, lazy, rounded
+
+if TYPE_CHECKING:
+    from .p2013_5 import Geometry
 
 ID = "2013-5"
 
@@ -75,7 +80,7 @@ SEED = {
     ),
 }
 
-PROBLEM = Problem(
+PROBLEM: Problem[Geometry] = Problem(
     id=ID,
     title="Planetary gear ratio u_1H2 (Willis; plan of linear velocities)",
     params=PARAMS,

@@ -20,7 +20,12 @@
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 from geomcad.problem import Param, Problem, ResultSpec, lazy, measured, measured_value, rounded
+
+if TYPE_CHECKING:
+    from .p2013_6 import Geometry
 
 ID = "2013-6"
 SEED_K_L = 0.005  # m/mm: the seed's k_l = 0.2 / 40
@@ -52,7 +57,7 @@ SEED = {
     "l2": measured_value(0.383, SEED_K_L, "l2 = 0,383 м"),
 }
 
-PROBLEM = Problem(
+PROBLEM: Problem[Geometry] = Problem(
     id=ID,
     title="Six-bar synthesis by the coefficient of velocity change K (circle through B0B1)",
     params=PARAMS,

@@ -22,6 +22,7 @@
 from __future__ import annotations
 
 import math
+from typing import TYPE_CHECKING
 
 from geomcad.problem import (
     Param,
@@ -33,6 +34,9 @@ from geomcad.problem import (
     rounded,
 )
 from geomcad.verify import ANGLE_PRECISION_DEG
+
+if TYPE_CHECKING:
+    from .p2013_7 import Geometry
 
 ID = "2013-7"
 SEED_K_L = 0.002  # m/mm: the seed's k_l
@@ -93,7 +97,7 @@ SEED: dict[str, SeedValue] = {
     "omega": SeedValue(20.3, "measured", _omega_tol(), "ω = 20,3 рад/с"),
 }
 
-PROBLEM = Problem(
+PROBLEM: Problem[Geometry] = Problem(
     id=ID,
     title="Centrifugal governor: force polygons with friction circles",
     params=PARAMS,

@@ -15,7 +15,12 @@
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 from geomcad.problem import Param, Problem, ResultSpec, erratum, lazy, rounded
+
+if TYPE_CHECKING:
+    from .p2013_8 import Data
 
 ID = "2013-8"
 
@@ -51,7 +56,7 @@ SEED = {
     "J": erratum(1.89, J_NOTE, "J = 1,89 кг·м²"),
 }
 
-PROBLEM = Problem(
+PROBLEM: Problem[Data] = Problem(
     id=ID,
     title="Punch-press motor and flywheel: the work of a hole, the power, the flywheel's J",
     params=PARAMS,

@@ -15,7 +15,12 @@
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 from geomcad.problem import Param, Problem, ResultSpec, lazy
+
+if TYPE_CHECKING:
+    from .p2013_9 import Data
 
 ID = "2013-9"
 
@@ -49,7 +54,7 @@ RESULTS = (
     ResultSpec("omega_T", "rad/s", "φ' at t = T after starting from rest at φ = 0"),
 )
 
-PROBLEM = Problem(
+PROBLEM: Problem[Data] = Problem(
     id=ID,
     title="Valve mechanism: reduced inertia and moment, equation of motion, loads on the parts",
     params=PARAMS,

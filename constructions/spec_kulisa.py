@@ -16,7 +16,12 @@
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 from geomcad.problem import Param, Problem, ResultSpec, erratum, lazy, rounded
+
+if TYPE_CHECKING:
+    from .p_kulisa import Data
 
 ID = "kulisa-23110713"
 
@@ -74,7 +79,7 @@ SEED = {
     "F_x": rounded(401.4, 1, "F_x = 401,4 Н"),
 }
 
-PROBLEM = Problem(
+PROBLEM: Problem[Data] = Problem(
     id=ID,
     title="Course work: dynamics of the slotted-link mechanism (flywheel, yoke, roller)",
     params=PARAMS,

@@ -8,7 +8,7 @@
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 from geomcad.errors import (
     ConstructionError,
@@ -40,7 +40,7 @@ __all__ = [
 ]
 
 
-def solve(problem_id: str, **params: object) -> Solution:
+def solve(problem_id: str, **params: object) -> Solution[Any]:
     """Solve a registered problem with the given parameters (SI units; ``*_deg`` in degrees),
     or a linkage, cam or gear file (a path ending in ``.toml``; its data are its parameters)."""
     from geomcad import documents, registry

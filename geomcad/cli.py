@@ -549,7 +549,7 @@ def _build_parallel(
     return EXIT_OK
 
 
-def _file_title(pid: str, sol: Solution) -> Any:
+def _file_title(pid: str, sol: Solution[Any]) -> Any:
     """A file's own ``[sheet]`` table, or ``None``."""
     from geomcad.sheet.titleblock import TitleData
 
@@ -633,12 +633,12 @@ def _cmd_verify(ns: argparse.Namespace) -> int:
 # --- input ------------------------------------------------------------------------------------
 
 
-def _solve(pid: str, sets: Sequence[str]) -> Solution:
+def _solve(pid: str, sets: Sequence[str]) -> Solution[Any]:
     from geomcad import documents
 
     if documents.is_file_id(pid):
         return documents.solve(pid, [_pair(text, "--set") for text in sets])
-    problem: Problem = registry.get(pid)
+    problem: Problem[Any] = registry.get(pid)
     params: dict[str, ParamValue] = {}
     for text in sets:
         name, value = _pair(text, "--set")
@@ -646,7 +646,7 @@ def _solve(pid: str, sets: Sequence[str]) -> Solution:
     return problem.solve(**params)
 
 
-def _problem(pid: str) -> Problem:
+def _problem(pid: str) -> Problem[Any]:
     """The problem an ID names: a registered id, or a file FILE.toml."""
     from geomcad import documents
 
@@ -689,7 +689,7 @@ def _formats(text: str) -> list[str]:
 # --- output -----------------------------------------------------------------------------------
 
 
-def _solve_report(sol: Solution) -> str:
+def _solve_report(sol: Solution[Any]) -> str:
     """The readable ``solve`` report: parameters, results, the seed comparison, notes."""
     problem = sol.problem
     lines = [f"{problem.id} · {problem.title}", "", "parameters:"]
@@ -831,7 +831,7 @@ def _fmt(value: object) -> str:
     return str(value)
 
 
-def _field_unit(problem: Problem, name: str) -> str:
+def _field_unit(problem: Problem[Any], name: str) -> str:
     spec = problem.result_spec(name)
     return _unit(spec.unit) if spec is not None else ""
 

@@ -28,7 +28,7 @@ from collections.abc import Callable, Mapping, Sequence
 from functools import cache
 from importlib.metadata import entry_points
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, TypeVar
 
 from geomcad.errors import FileKeyError, ParameterError
 
@@ -40,7 +40,10 @@ if TYPE_CHECKING:
 GROUP = "geomcad.files"
 SUFFIX = ".toml"
 
-Maker = Callable[[str, dict[str, Any]], "Problem"]
+Maker = Callable[[str, dict[str, Any]], "Problem[Any]"]
+
+#: The type of a file kind's model (``Build.data``), as :data:`geomcad.problem.D`.
+D = TypeVar("D")
 
 
 def file_problem(
@@ -48,12 +51,12 @@ def file_problem(
     data: dict[str, Any],
     title: str,
     results: tuple[ResultSpec, ...],
-    build: Callable[[Mapping[str, Any]], Build],
-    draw: Callable[[Solution], Sequence[tuple[str, Sheet]]],
-    motion: Callable[[Solution, int], Frames] | None = None,
-    cls: type[Problem] | None = None,
-    scales: Callable[[Solution], Mapping[str, float]] | None = None,
-) -> Problem:
+    build: Callable[[Mapping[str, Any]], Build[D]],
+    draw: Callable[[Solution[D]], Sequence[tuple[str, Sheet]]],
+    motion: Callable[[Solution[D], int], Frames] | None = None,
+    cls: type[Problem[D]] | None = None,
+    scales: Callable[[Solution[D]], Mapping[str, float]] | None = None,
+) -> Problem[D]:
     """The problem of a file kind, as this module's docstring says it is: no parameters (the
     file is the data), no seed, the file's data as its ``inputs``; ``cls`` a subclass of
     :class:`~geomcad.problem.Problem` where the kind needs one."""
@@ -173,7 +176,7 @@ def _maker(kind: str) -> Maker:
     return maker
 
 
-def load(pid: str, sets: Sequence[tuple[str, str]] = ()) -> Problem:
+def load(pid: str, sets: Sequence[tuple[str, str]] = ()) -> Problem[Any]:
     """The problem a file states, with the ``--set`` pairs ``(KEY, VALUE)`` applied."""
     data = read(pid)
     for key, text in sets:
@@ -199,19 +202,19 @@ def check_integers(node: object, path: str = "") -> None:
         raise FileKeyError(path, "", f"a whole number of {digits} digits is beyond TOML's 64 bits")
 
 
-def from_data(pid: str, data: dict[str, Any]) -> Problem:
+def from_data(pid: str, data: dict[str, Any]) -> Problem[Any]:
     """The problem that the file data ``data`` states, named ``pid`` (a file's data held in
     memory: a variant before it is written)."""
     check_integers(data)
     return _maker(kind_of(data))(pid, data)
 
 
-def solve(pid: str, sets: Sequence[tuple[str, str]] = ()) -> Solution:
+def solve(pid: str, sets: Sequence[tuple[str, str]] = ()) -> Solution[Any]:
     """Load the file ``pid`` and solve it."""
     return load(pid, sets).solve()
 
 
-def _linkage_problem(file_id: str, data: dict[str, Any]) -> Problem:
+def _linkage_problem(file_id: str, data: dict[str, Any]) -> Problem[Any]:
     """A linkage file (``../shared/linkages.md``) as a problem: model, solution and sheets."""
     from geomcad.linkage_problem import make_problem
 

@@ -9,12 +9,16 @@ and its ``inputs`` are the file's data. Its results are those of ``../shared/lin
 from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from geomcad.construction import Construction
 from geomcad.linkage import parse
 from geomcad.linkage.solution import Solved, results, solve
 from geomcad.problem import Build, ParamValue, Problem, ResultSpec, Solution
+
+if TYPE_CHECKING:
+    from geomcad.sheet import Sheet
+    from geomcad.sheet.motion import Frames
 
 
 class Protocol(Construction):
@@ -76,12 +80,12 @@ def spec_of(name: str) -> ResultSpec | None:
     return None
 
 
-def make_problem(file_id: str, data: dict[str, Any]) -> Problem:
+def make_problem(file_id: str, data: dict[str, Any]) -> Problem[Solved]:
     """The problem a linkage file states (raises :class:`~geomcad.errors.FileKeyError` for a
     bad file)."""
     lk = parse(data)
 
-    def build(values: Mapping[str, ParamValue]) -> Build:
+    def build(values: Mapping[str, ParamValue]) -> Build[Solved]:
         s = solve(lk)
         res = results(s)
         from geomcad.linkage.analysis import analyse
@@ -90,17 +94,17 @@ def make_problem(file_id: str, data: dict[str, Any]) -> Problem:
         proto = Protocol(lk.title, [P.c for P in s.positions] + analyse(s).constructions)
         return Build(res, proto, [], sheet_scales(s), data=s)
 
-    def draw(sol: Solution) -> list[tuple[str, Any]]:
+    def draw(sol: Solution[Solved]) -> list[tuple[str, Sheet]]:
         from geomcad.sheet.linkage import kinematic_sheets
 
-        solved: Solved = sol.data
+        solved = sol.data
         from geomcad.documents import stem
         from geomcad.sheet.linkage_forces import force_sheets  # sheets 2 and 3 (issue 15)
 
         kinematic = kinematic_sheets(solved, stem(file_id))
         return kinematic + force_sheets(solved, stem(file_id), first_no=len(kinematic) + 1)
 
-    def motion(sol: Solution, frames: int) -> Any:
+    def motion(sol: Solution[Solved], frames: int) -> Frames:
         from geomcad.sheet.linkage import motion as linkage_motion
 
         return linkage_motion(sol.data, frames)
@@ -110,7 +114,7 @@ def make_problem(file_id: str, data: dict[str, Any]) -> Problem:
     return file_problem(file_id, data, lk.title, TOP, build, draw, motion, cls=_FileProblem)
 
 
-class _FileProblem(Problem):
+class _FileProblem(Problem[Solved]):
     """A problem whose position fields are named after the file's own points and links."""
 
     def result_spec(self, name: str) -> ResultSpec | None:

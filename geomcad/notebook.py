@@ -57,7 +57,7 @@ def _fmt(value: object) -> str:
     return html.escape(str(value))
 
 
-def _unit(problem: Problem, name: str) -> str:
+def _unit(problem: Problem[Any], name: str) -> str:
     spec = problem.result_spec(name)
     if spec is None or spec.unit in ("", "1"):
         return ""
@@ -73,7 +73,7 @@ def _row(cells: list[str], tag: str = "td") -> str:
     return "<tr>" + "".join(aligned) + "</tr>"
 
 
-def _objects(problem: Problem, name: str, items: list[dict[str, Any]]) -> list[list[str]]:
+def _objects(problem: Problem[Any], name: str, items: list[dict[str, Any]]) -> list[list[str]]:
     """One row per object of a list result (several solutions): ``name.i`` and its fields."""
     return [
         [
@@ -89,7 +89,7 @@ def _objects(problem: Problem, name: str, items: list[dict[str, Any]]) -> list[l
     ]
 
 
-def results_html(sol: Solution) -> str:
+def results_html(sol: Solution[Any]) -> str:
     """The results of a solution as an HTML table, with the seed's values when it has them."""
     problem = sol.problem
     seed, diff = sol.seed, sol.diff

@@ -5,6 +5,11 @@ A problem module in ``constructions/`` defines ``PROBLEM = Problem(...)`` with i
 functions: ``build(params) -> Build`` (the construction and its results) and
 ``draw(solution) -> [(name, Sheet), ...]`` (its drawing sheets; name ``""`` is the main sheet).
 
+``Build``, ``Problem`` and ``Solution`` are generic in the type of the problem's model, the
+``data`` its build returns: a spec declares ``PROBLEM: Problem[Geometry] = Problem(...)``, its
+build returns ``Build[Geometry]``, and a sheet function taking ``Solution[Geometry]`` reads
+``sol.data`` type-checked. Code that handles any problem takes ``Problem[Any]``/``Solution[Any]``.
+
 The library never imports a problem module; :mod:`geomcad.registry` discovers them through the
 ``geomcad.constructions`` entry-point group.
 
@@ -22,7 +27,7 @@ import math
 import numbers
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING, Any, Literal
+from typing import TYPE_CHECKING, Any, Generic, Literal, TypeVar
 
 from geomcad.errors import ConstructionError, ParameterError
 from geomcad.units import PHYSICAL, wrap_deg
@@ -34,6 +39,9 @@ if TYPE_CHECKING:
     from geomcad.sheet.titleblock import TitleData
 
 ParamValue = float | int | str
+
+#: The type of a problem's model: what its build returns as ``Build.data``.
+D = TypeVar("D")
 
 #: The largest count (teeth, links, pairs, divisions) a parameter may take unless it says.
 MAX_COUNT = 10_000
@@ -270,14 +278,16 @@ class ResultSpec:
 
 
 @dataclass
-class Build:
-    """What a problem's ``build`` returns."""
+class Build(Generic[D]):
+    """What a problem's ``build`` returns: ``data`` is the problem's model, of type ``D``
+    (``None`` for a problem that keeps none: a ``Build[None]``)."""
 
     results: dict[str, Any]
     construction: Construction
     notes: list[str] = field(default_factory=list)
     scales: dict[str, float] = field(default_factory=dict)
-    data: Any = None
+    # The default stands for a Build[None] only; mypy cannot say so of a generic field.
+    data: D = None  # type: ignore[assignment]
 
 
 class _Lazy:
@@ -324,27 +334,28 @@ def lazy(ref: str, package: str | None = None) -> Callable[..., Any]:
 
 
 @dataclass(frozen=True)
-class Problem:
-    """A problem id with its parameters, results, seed values, construction and drawings."""
+class Problem(Generic[D]):
+    """A problem id with its parameters, results, seed values, construction and drawings;
+    ``D`` is the type of its model (``Build.data``, ``Solution.data``)."""
 
     id: str
     title: str
     params: tuple[Param, ...]
     results: tuple[ResultSpec, ...]
     seed: Mapping[str, SeedEntry]
-    build: Callable[[Mapping[str, ParamValue]], Build]
-    draw: Callable[[Solution], Sequence[tuple[str, Sheet]]]
+    build: Callable[[Mapping[str, ParamValue]], Build[D]]
+    draw: Callable[[Solution[D]], Sequence[tuple[str, Sheet]]]
     seed_k_l: float | None = None
     #: A problem stated by a file (:mod:`geomcad.documents`): the file's data, printed as the
     #: ``params`` of ``solve --json``; ``None`` for a registered problem id.
     inputs: Mapping[str, Any] | None = None
     #: The mechanism over one crank turn, ``motion(solution, frames)``, for ``geomcad animate``;
     #: ``None`` for a problem without a crank mechanism to animate.
-    motion: Callable[[Solution, int], Frames] | None = None
+    motion: Callable[[Solution[D], int], Frames] | None = None
     #: The sheet's scale factors (``{"l": k_l, "v": k_v, ...}``, SI per mm), chosen by the sheet
     #: layer from the solved model, for ``verify`` to turn a student's millimetres into values;
     #: ``None`` when the build itself states them (``Build.scales``) or the sheet has none.
-    scales: Callable[[Solution], Mapping[str, float]] | None = None
+    scales: Callable[[Solution[D]], Mapping[str, float]] | None = None
 
     def param(self, name: str, value: object = "?") -> Param:
         """The declared parameter ``name``; an unknown name is a :class:`ParameterError` that
@@ -367,7 +378,7 @@ class Problem:
         """The default values; optional parameters (default ``None``) are absent."""
         return {p.name: p.default for p in self.params if p.default is not None}
 
-    def solve(self, **params: object) -> Solution:
+    def solve(self, **params: object) -> Solution[D]:
         """Check the parameters, run the construction and return the :class:`Solution`.
 
         ``None`` for an optional parameter leaves it out (the problem derives it)."""
@@ -405,16 +416,17 @@ def _check_finite(value: object, path: str) -> None:
             _check_finite(v, f"{path}.{i}")
 
 
-class Solution:
-    """A solved problem: parameters, results, the recorded construction, seed comparison."""
+class Solution(Generic[D]):
+    """A solved problem: parameters, results, the recorded construction, seed comparison, and
+    the problem's model ``data`` (of type ``D``)."""
 
-    def __init__(self, problem: Problem, params: dict[str, ParamValue], build: Build) -> None:
+    def __init__(self, problem: Problem[D], params: dict[str, ParamValue], build: Build[D]) -> None:
         self.problem = problem
         self.params = params
         self.results = build.results
         self.construction = build.construction
         self._scales: Mapping[str, float] | None = build.scales or None
-        self.data = build.data
+        self.data: D = build.data
         self._notes = list(build.notes)
         self._main_svg: str | None = None
 

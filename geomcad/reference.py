@@ -92,7 +92,7 @@ def _table(rows: Sequence[Sequence[str]], indent: str = "  ") -> list[str]:
     ]
 
 
-def params_text(problem: Problem) -> str:
+def params_text(problem: Problem[Any]) -> str:
     """The parameters as a plain-text table (``solve --help``, ``params``)."""
     if not problem.params:
         return (
@@ -112,7 +112,7 @@ def _drawn(r: ResultSpec) -> str:
     return _PLANS.get(r.drawn or "", "—")
 
 
-def results_text(problem: Problem) -> str:
+def results_text(problem: Problem[Any]) -> str:
     """The results as a plain-text table, with the plan scale each is drawn at (for verify)."""
     if not problem.results:
         return f"{problem.id} declares no results in advance.\n"
@@ -125,7 +125,7 @@ def results_text(problem: Problem) -> str:
     return "\n".join([head, *_table(rows)]) + "\n"
 
 
-def problem_text(problem: Problem) -> str:
+def problem_text(problem: Problem[Any]) -> str:
     """``geomcad params ID``: the title, the parameters and the results."""
     return f"{problem.id} · {problem.title}\n\n{params_text(problem)}\n{results_text(problem)}"
 
@@ -154,7 +154,7 @@ def _docstring_body(doc: str | None) -> str:
     return rest.strip()
 
 
-def construction_module_doc(problem: Problem) -> str:
+def construction_module_doc(problem: Problem[Any]) -> str:
     """The docstring of the module that holds the problem's ``build`` (its reconstruction)."""
     name = getattr(problem.build, "module", None) or getattr(problem.build, "__module__", None)
     if not name:
@@ -162,7 +162,7 @@ def construction_module_doc(problem: Problem) -> str:
     return _docstring_body(importlib.import_module(name).__doc__)
 
 
-def _seed_rows(problem: Problem) -> list[str]:
+def _seed_rows(problem: Problem[Any]) -> list[str]:
     rows: list[str] = []
     for key, entry in problem.seed.items():
         for name, _index, v in _seed_items(key, entry):
@@ -170,7 +170,7 @@ def _seed_rows(problem: Problem) -> list[str]:
     return rows
 
 
-def _seed_row(problem: Problem, name: str, key: str, v: SeedValue) -> str:
+def _seed_row(problem: Problem[Any], name: str, key: str, v: SeedValue) -> str:
     spec = problem.result_spec(key)
     unit = "" if spec is None else unit_text(spec.unit)
     unit = {"—": "", "°": "°"}.get(unit, f" {unit}")
@@ -178,7 +178,7 @@ def _seed_row(problem: Problem, name: str, key: str, v: SeedValue) -> str:
     return f"| `{name}` | {_cell(v.printed)} | {v.value:.6g}{unit} | {v.kind} | {_cell(tol)} |"
 
 
-def problem_markdown(problem: Problem, description: str) -> str:
+def problem_markdown(problem: Problem[Any], description: str) -> str:
     """One problem's section of ``docs/problems.md``."""
     out = [f"## {problem.id} · {problem.title}", ""]
     if description:
@@ -234,7 +234,7 @@ a student hands in.
 """
 
 
-def problems_markdown(problems: Sequence[tuple[Problem, str]]) -> str:
+def problems_markdown(problems: Sequence[tuple[Problem[Any], str]]) -> str:
     """The whole ``docs/problems.md``: a header, an index, and a section per problem.
 
     ``problems`` pairs each problem with its description (the spec module's docstring)."""
@@ -274,7 +274,7 @@ def _docstring_of_entry_point(pid: str) -> str:
     return inspect.cleandoc(importlib.import_module(module).__doc__ or "")
 
 
-def problem_json(problem: Problem) -> dict[str, Any]:
+def problem_json(problem: Problem[Any]) -> dict[str, Any]:
     """``geomcad params ID --json``: the title, every parameter and every result."""
     return {
         "id": problem.id,

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from functools import cache
 from importlib.metadata import EntryPoint, entry_points
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 from geomcad.errors import UnknownProblem
 
@@ -32,7 +32,7 @@ def problem_ids() -> list[str]:
     return sorted(_entry_points(), key=_sort_key)
 
 
-def get(pid: str) -> Problem:
+def get(pid: str) -> Problem[Any]:
     """The problem registered under ``pid``; :class:`UnknownProblem` names the known ids (and
     a ``pid`` that is not a string at all)."""
     if not isinstance(pid, str):
@@ -41,12 +41,12 @@ def get(pid: str) -> Problem:
 
 
 @cache
-def _get(pid: str) -> Problem:
+def _get(pid: str) -> Problem[Any]:
     eps = _entry_points()
     if pid not in eps:
         known = ", ".join(problem_ids()) or "none (is geomcad installed with pip install .?)"
         raise UnknownProblem(f"unknown problem id {pid!r}; known ids: {known}")
-    problem: Problem = eps[pid].load()
+    problem: Problem[Any] = eps[pid].load()
     return problem
 
 
@@ -60,7 +60,7 @@ def entry_point(pid: str) -> EntryPoint:
 TITLES = "titles"
 
 
-def title(problem: Problem, lang: str | None = None) -> str:
+def title(problem: Problem[Any], lang: str | None = None) -> str:
     """``problem``'s title in ``lang`` (default: the language being drawn): its entry in the
     ``titles`` table of the package that registers it, else its own :attr:`Problem.title`
     (a file's problem, or a package without the table)."""

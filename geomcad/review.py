@@ -10,7 +10,7 @@ sheets, drawn here from :meth:`~geomcad.problem.Solution.seed_report` and
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 from geomcad.registry import title as problem_title
 from geomcad.sheet import Drawing, Sheet, TitleBlock, fmt_number, start
@@ -44,7 +44,7 @@ TOP = 30.0
 BOTTOM = 230.0
 
 
-def review_sheets(sol: Solution, title: TitleData | None = None) -> list[tuple[str, Sheet]]:
+def review_sheets(sol: Solution[Any], title: TitleData | None = None) -> list[tuple[str, Sheet]]:
     """The review sheets of a solution: ``[("review", sheet), ("review-2", sheet) …]``, one
     document with its own sheet numbers; none for a variant (no published solution to compare).
     Drawn in ``title.lang`` when given, else in the language being drawn."""
@@ -54,7 +54,7 @@ def review_sheets(sol: Solution, title: TitleData | None = None) -> list[tuple[s
         return _review_sheets(sol, title)
 
 
-def _review_sheets(sol: Solution, title: TitleData | None) -> list[tuple[str, Sheet]]:
+def _review_sheets(sol: Solution[Any], title: TitleData | None) -> list[tuple[str, Sheet]]:
     units = {r.name: r.unit for r in sol.problem.results}
     rows = [
         [
@@ -105,7 +105,7 @@ def _review_sheets(sol: Solution, title: TitleData | None) -> list[tuple[str, Sh
     return [("review" if i == 0 else f"review-{i + 1}", s) for i, s in enumerate(sheets)]
 
 
-def _new(sol: Solution, no: int) -> Drawing:
+def _new(sol: Solution[Any], no: int) -> Drawing:
     pid = sol.problem.id
     tb = TitleBlock(title=WORDS("tb_title", id=pid), designation=WORDS("designation", id=pid))
     d = start("A3", tb)

@@ -121,7 +121,7 @@ class Report:
 
 
 def verify(
-    solution: Solution, measured: Mapping[str, float | str], scale: float | None = None
+    solution: Solution[Any], measured: Mapping[str, float | str], scale: float | None = None
 ) -> Report:
     """Compare each ``NAME[=VALUE]`` of ``measured`` with ``solution``'s exact results.
 
@@ -159,7 +159,7 @@ def _finite(it: Item, raw: object) -> Item:
     )
 
 
-def _item(solution: Solution, name: str, raw: float | str, scale: float | None) -> Item:
+def _item(solution: Solution[Any], name: str, raw: float | str, scale: float | None) -> Item:
     value = _number(name, raw)
     results = solution.results
     from_mm = name.endswith(MM_SUFFIX) and not _resolves(results, name)
@@ -273,7 +273,7 @@ def _is_number(x: object) -> bool:
     return isinstance(x, numbers.Real) and not isinstance(x, bool)
 
 
-def _lookup(solution: Solution, parts: list[str]) -> float:
+def _lookup(solution: Solution[Any], parts: list[str]) -> float:
     results = solution.results
     head = parts[0]
     if head not in results:
@@ -312,7 +312,7 @@ def _lookup(solution: Solution, parts: list[str]) -> float:
     raise GeomcadError(f"{where} = {node!r} is not a number, so it cannot be measured")
 
 
-def _spec(solution: Solution, parts: list[str]) -> ResultSpec | None:
+def _spec(solution: Solution[Any], parts: list[str]) -> ResultSpec | None:
     """The spec of the innermost named component that has one (the field's, else its parent's)."""
     for p in reversed(parts):
         if p.isdecimal():
@@ -323,7 +323,7 @@ def _spec(solution: Solution, parts: list[str]) -> ResultSpec | None:
     return None
 
 
-def _k_l(solution: Solution, scale: float | None, name: str) -> float:
+def _k_l(solution: Solution[Any], scale: float | None, name: str) -> float:
     if scale is not None:
         return scale
     if solution.problem.seed_k_l is not None:

@@ -25,7 +25,7 @@ from geomcad.linkage.model import Linkage
 from geomcad.linkage.plans import Position, construct
 from geomcad.linkage.solution import Solved
 from geomcad.linkage.sweep import output_coordinate, sweep
-from geomcad.sheet import Drawing, TitleBlock, fmt_number, start
+from geomcad.sheet import Drawing, Sheet, TitleBlock, fmt_number, start
 from geomcad.sheet.compose import (
     Choice,
     Column,
@@ -141,7 +141,7 @@ def sheet_scales(s: Solved) -> dict[str, float]:
     return {"l": lay.k_l.k, "v": lay.k_v.k, "a": lay.k_a.k}
 
 
-def kinematic_sheets(s: Solved, stem: str = "") -> list[tuple[str, object]]:
+def kinematic_sheets(s: Solved, stem: str = "") -> list[tuple[str, Sheet]]:
     """The kinematic sheet (and, with many positions, a second sheet of velocity plans)."""
     lk = s.linkage
     lay, lays = _arranged(s)
@@ -151,7 +151,7 @@ def kinematic_sheets(s: Solved, stem: str = "") -> list[tuple[str, object]]:
     compose(d, lay.trees[0], layout=lays[0])
     if d.sheet.block is not None:
         d.sheet.block = replace(d.sheet.block, scale=lay.k_l.ratio_text())
-    out: list[tuple[str, object]] = [("", d.finish())]
+    out: list[tuple[str, Sheet]] = [("", d.finish())]
     if lay.second:
         d2 = start(FORMAT, _title(lk, WORDS("vplans_sheet"), designation, None, 2, count))
         compose(d2, lay.trees[1], layout=lays[1])

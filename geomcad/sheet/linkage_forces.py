@@ -36,7 +36,7 @@ from geomcad.linkage.loads import centre_vec
 from geomcad.linkage.model import Linkage
 from geomcad.linkage.plans import Position, plan_name
 from geomcad.linkage.solution import Solved, scheme
-from geomcad.sheet import Drawing, TitleBlock, fmt_number, nice_factor, start
+from geomcad.sheet import Drawing, Sheet, TitleBlock, fmt_number, nice_factor, start
 from geomcad.sheet.compose import Choice, Column, Grid, Placed, Row, View, compose, scale_text
 from geomcad.sheet.drawing import SHORT_MM, Viewport
 from geomcad.sheet.graph import Axis, Graph
@@ -76,7 +76,7 @@ def force_position(s: Solved) -> int:
 
 def force_sheets(
     s: Solved, stem: str = "", first_no: int = 2, count: int = 0
-) -> list[tuple[str, object]]:
+) -> list[tuple[str, Sheet]]:
     """Sheet 2 (where the file gives masses or loads) and sheet 3 (with ``[dynamics]``),
     numbered from ``first_no`` of ``count`` sheets (0: these are the last ones)."""
     a = analyse(s)
@@ -84,7 +84,7 @@ def force_sheets(
     mine = (a.forces is not None) + (a.flywheel is not None)
     count = count or first_no - 1 + mine
     designation = KIN_WORDS("designation", stem=stem or KIN_WORDS("stem"))
-    out: list[tuple[str, object]] = []
+    out: list[tuple[str, Sheet]] = []
     no = first_no
     if a.forces is not None:
         k = force_position(s)

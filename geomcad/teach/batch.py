@@ -26,7 +26,7 @@ import csv
 import io
 from dataclasses import dataclass
 from pathlib import Path
-from typing import IO, TYPE_CHECKING
+from typing import IO, TYPE_CHECKING, Any
 
 from geomcad import documents, registry
 from geomcad.errors import GeomcadError
@@ -88,9 +88,9 @@ class Answers:
                 )
         self.base = Path(path).parent
         self.files = {_variant_no(r["variant"]): r["file"] for _, r in rows if r.get("variant")}
-        self._solved: dict[str, Solution | GeomcadError] = {}
+        self._solved: dict[str, Solution[Any] | GeomcadError] = {}
 
-    def solution(self, variant: str) -> Solution:
+    def solution(self, variant: str) -> Solution[Any]:
         """The exact solution of ``variant``; an unknown or unsolvable one raises."""
         if variant not in self.files:
             known = ", ".join(sorted(self.files, key=lambda v: (len(v), v)))
@@ -106,7 +106,7 @@ class Answers:
         return got
 
     @staticmethod
-    def _solve(path: Path) -> Solution:
+    def _solve(path: Path) -> Solution[Any]:
         if documents.is_file_id(str(path)):
             return documents.solve(str(path))
         pid, sets = variants.variant_sets(path)

@@ -39,7 +39,7 @@ SCHEME_W, SCHEME_H = RIGHT - LEFT - 2 * PAD, 75.0
 UNIT_TEXT = {"1": "", "": "", "deg": "°", "m/s²": "m/s^2", "rad/s²": "rad/s^2"}
 
 
-def _title(problem: Problem, lang: Lang) -> str:
+def _title(problem: Problem[Any], lang: Lang) -> str:
     """A problem's title in the cards' language (its package's ``titles`` table)."""
     from geomcad.registry import title
 
@@ -161,7 +161,7 @@ def _col_widths(rows: Sequence[Sequence[str]], room: float, flex: int) -> list[f
 # --- data of a variant ------------------------------------------------------------------------
 
 
-def problem_rows(sol: Solution, lang: str = "en") -> list[list[str]]:
+def problem_rows(sol: Solution[Any], lang: str = "en") -> list[list[str]]:
     """The data table of a problem id's variant: quantity, symbol, value, unit."""
     w = WORDS[lang]
     rows = [[w["quantity"], w["symbol"], w["value"], w["unit"]]]
@@ -192,7 +192,7 @@ def file_rows(data: Mapping[str, Any], lang: str = "en") -> list[list[str]]:
 
 
 def find_lines(
-    problem: Problem, columns: Sequence[str], sol: Solution, lang: str = "en"
+    problem: Problem[Any], columns: Sequence[str], sol: Solution[Any], lang: str = "en"
 ) -> list[str]:
     """What to find: each key result once, with its meaning, and where it is asked."""
     groups: dict[str, list[str]] = {}
@@ -220,7 +220,7 @@ def _generic(path: str) -> str:
     return ".".join("*" if p.isdecimal() else p for p in parts)
 
 
-def _where(generic: str, paths: Sequence[str], sol: Solution, lang: str) -> str:
+def _where(generic: str, paths: Sequence[str], sol: Solution[Any], lang: str) -> str:
     w = WORDS[lang]
     if generic.startswith("positions.*."):
         phis = []
@@ -372,7 +372,7 @@ def linkage_scheme(d: Drawing, data: Mapping[str, Any], position: Mapping[str, A
 
 
 def task_card(
-    sol: Solution,
+    sol: Solution[Any],
     number: int,
     width: int,
     columns: Sequence[str],

@@ -151,7 +151,7 @@ class Template:
             documents.apply_set(data, key, text)
         return data
 
-    def problem(self, values: Sequence[tuple[str, str]] = (), file_id: str = "") -> Problem:
+    def problem(self, values: Sequence[tuple[str, str]] = (), file_id: str = "") -> Problem[Any]:
         """The problem of the variant (for a file: made from its data, not yet solved)."""
         if self.data is None:
             return registry.get(self.ref)
@@ -165,7 +165,7 @@ class Template:
             out[name] = problem.param(name).parse(text)
         return out
 
-    def solve(self, values: Sequence[tuple[str, str]], file_id: str = "") -> Solution:
+    def solve(self, values: Sequence[tuple[str, str]], file_id: str = "") -> Solution[Any]:
         """Solve the variant with ``values`` (pairs of key and text)."""
         if self.data is None:
             return registry.get(self.ref).solve(**self.params(values))
@@ -470,7 +470,7 @@ def key_columns(variants: Sequence[Variant], patterns: Sequence[str], explicit: 
     return paths
 
 
-def unit_of(problem: Problem, path: str) -> str:
+def unit_of(problem: Problem[Any], path: str) -> str:
     """The SI unit of a key column, from the result specs (the field's, else its parent's)."""
     for part in reversed(path.split(".")):
         if part.isdecimal():
