@@ -127,6 +127,9 @@ class Plan:
     values: list[str] = field(default_factory=list)
     #: the step names of the fixed points (at the pole)
     at_pole: set[str] = field(default_factory=set)
+    #: an acceleration plan's velocity plan: the size against which a relative velocity
+    #: (of a Coriolis term) is rounding noise
+    velocity: Plan | None = None
 
     def __post_init__(self) -> None:
         pole = self.pole
@@ -174,6 +177,12 @@ class Plan:
         ``a_{O2}`` on an acceleration plan."""
         return _sub(_SYMBOL[self.kind], model_of(point))
 
+    def _noise(self, x: float) -> bool:
+        """Whether a magnitude of plan units is rounding noise beside the plan's size (a
+        vector that vanishes in this position: written 0, not 3·10^-17)."""
+        size = max((p.norm for p in self.points.values()), default=0.0)
+        return abs(x) <= NOISE * size
+
     @property
     def _unit(self) -> str:
         return f"@u_{self.kind}"
@@ -213,7 +222,7 @@ class Plan:
             "head": point_markup(h),
             "label": label,
             "mu": _MU[self.kind],
-            "value": value.norm,
+            "value": 0.0 if self._noise(value.norm) else value.norm,
             "unit": self._unit,
             **(args or {}),
         }
@@ -254,11 +263,16 @@ class Plan:
         self._vec(self.pole, point, label, meaning or label, True)
         return self[point]
 
-    def same(self, point: str, as_: str, why: str) -> Vec:
-        """A point that coincides with another one (a translating link, a hinged block)."""
+    def same(self, point: str, as_: str, why: str, reason: str = "") -> Vec:
+        """A point that coincides with another one (a translating link, a hinged block).
+        ``reason`` says why in the order of construction: ``@translates`` (the link moves
+        without turning), ``@hinge`` (one joint of two links), or another ``@word``."""
         eq = f"{self.label_of(point)} = {self.label_of(as_)}"
         args: dict[str, str | float] = {"as": self.mark(as_), "eq": eq}
-        return self._add(point, self[as_], f"= {self.name(as_)} ({why})", "plan_same", args)
+        kind = "plan_same"
+        if reason:
+            kind, args["why"] = "plan_same_why", reason
+        return self._add(point, self[as_], f"= {self.name(as_)} ({why})", kind, args)
 
     def _turning(
         self, point: str, base: str, r: Vec, link: str | int, model: tuple[str, str]
@@ -405,6 +419,12 @@ class Plan:
                 targs.update(term.args)
                 targs.setdefault("label", term.label)
                 targs.setdefault("value", term.value.norm)
+                relv = targs.get("relv")
+                vp = self.velocity
+                if isinstance(relv, float) and vp is not None and vp._noise(relv):
+                    targs.update(value=0.0, relv=0.0)  # no sliding in this position
+                elif self._noise(term.value.norm):  # ω = 0 in this position
+                    targs.update(value=0.0, omega=0.0)
                 self._add(
                     term.head,
                     self[tail] + term.value,
@@ -479,6 +499,7 @@ class Plan:
         name: str = "",
         link: str | int = "",
         model: tuple[str, str] = ("", ""),
+        rel: str = "",
     ) -> float:
         """The angular velocity (acceleration) of link AB read off the plan, ccw > 0.
 
@@ -486,14 +507,16 @@ class Plan:
         AB towards ab. On an acceleration plan pass the tangential vector's ends: ε = a^τ/l.
         With ``name`` the value is recorded as a step (kind ``plan_omega``, ``plan_eps``) and
         listed in :attr:`order`; ``link`` (its number) and ``model`` (the names of A and B on
-        the mechanism) are for its text.
+        the mechanism) are for its text, ``rel`` the label of the vector read (default: the
+        relative vector of B about A, ``V_{BA}``, ``a^τ_{BA}``).
         """
         AB = B - A
         w = AB.cross(self.between(a, b)) / AB.dot(AB)
         if name:
             MA, MB = model if all(model) else (model_of(a), model_of(b))
             length = AB.norm
-            rel = _sub("V", MB + MA) if self.kind == "v" else _sub("a^τ", MB + MA)
+            shown = 0.0 if self._noise(w * length) else abs(w)
+            rel = rel or (_sub("V", MB + MA) if self.kind == "v" else _sub("a^τ", MB + MA))
             sym = "ω" if self.kind == "v" else "ε"
             self.c.value(
                 name,
@@ -504,10 +527,10 @@ class Plan:
                 args={
                     "w": _sub(sym, str(link)),
                     "rel": rel,
-                    "relv": abs(w) * length,
+                    "relv": shown * length,
                     "l": _sub("l", MA + MB),
                     "lv": length,
-                    "value": abs(w),
+                    "value": shown,
                     "unit": "@u_w" if self.kind == "v" else "@u_e",
                 },
             )
@@ -520,6 +543,9 @@ class Plan:
         ys = [p.y for p in self.points.values()]
         return (min(xs), min(ys), max(xs), max(ys))
 
+
+#: A magnitude at most this share of the plan's size is written 0 in the order of construction.
+NOISE = 1.0e-9
 
 _SYMBOL = {"v": "V", "a": "a"}
 _MU = {"v": "μ_V", "a": "μ_a"}
@@ -556,9 +582,10 @@ def velocity_plan(c: Construction, suffix: str = "") -> Plan:
     return Plan(c, "v", suffix)
 
 
-def acceleration_plan(c: Construction, suffix: str = "'") -> Plan:
-    """A new acceleration plan in ``c``, pole π at the origin; its points are named ``b'``."""
-    return Plan(c, "a", suffix)
+def acceleration_plan(c: Construction, suffix: str = "'", velocity: Plan | None = None) -> Plan:
+    """A new acceleration plan in ``c``, pole π at the origin; its points are named ``b'``.
+    ``velocity``: the velocity plan of the same position (for the order of construction)."""
+    return Plan(c, "a", suffix, velocity=velocity)
 
 
 def normal(

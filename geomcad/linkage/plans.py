@@ -82,7 +82,8 @@ def construct(lk: Linkage, phi: float, title: str = "") -> Position:
     deg = math.degrees(phi) % 360.0
     c = Construction(title or f"{lk.title}, φ1 = {deg:.6g}°")
     frame = {name: c.point(name, p, op="a frame point") for name, p in lk.frame.items()}
-    P = Position(phi, c, velocity_plan(c), acceleration_plan(c))
+    vp = velocity_plan(c)
+    P = Position(phi, c, vp, acceleration_plan(c, velocity=vp))
     P.taken = frozenset(lk.owner)
     P.pos.update(frame)
     _crank(lk, P)

@@ -41,17 +41,20 @@ from geomcad.sheet.compose import (
 from geomcad.sheet.compose import (
     Layout as Arranged,
 )
+from geomcad.sheet.drawing import SHORT_MM
 from geomcad.sheet.lang import Words, current, per_language
 from geomcad.sheet.motion import Frames, turn
 from geomcad.sheet.scale import Scale
 from geomcad.sheet.scheme import Body, draw_scheme
-from geomcad.sheet.views import AxisSpec, Curve, Diagram, PlanView, Table
+from geomcad.sheet.views import AxisSpec, Curve, Diagram, PlanView, Steps, Table, Text
 
 WORDS = Words(__package__, "linkage")
 
 FORMAT = "A1"
 #: At most this many velocity plans share the first sheet with the mechanism.
 PLANS_ON_SHEET = 12
+#: The width of the order of construction and of the notes (mm).
+ORDER_W = 190.0
 #: Samples of the exact diagrams over a turn.
 DIAGRAM_SAMPLES = 361
 
@@ -81,39 +84,69 @@ def _accel_positions(s: Solved) -> tuple[Position, ...]:
     )
 
 
-def _trees(s: Solved, accel: Sequence[Position]) -> tuple[tuple[Tree, ...], _Mechanism, bool]:
-    """The sheets' view trees (see the module's docstring)."""
+def _trees(
+    s: Solved, accel: Sequence[Position], note: bool = False
+) -> tuple[tuple[Tree, ...], _Mechanism, bool]:
+    """The sheets' view trees (see the module's docstring); ``note``: say that vectors
+    shorter than two arrowheads are drawn as points."""
     n = len(s.positions)
     second = n > PLANS_ON_SHEET
     mech = _Mechanism(s)
+    # vectors shorter than two arrowheads are drawn as their lettered end point (a note says so)
     vplans = Grid(
         *[
             PlanView(P.vp, title=WORDS("position", i=i, phi=_deg(P.phi)), group="v",
-                     show_scale=False, weight=2.0)
+                     show_scale=False, weight=2.0, min_mm=SHORT_MM)
             for i, P in enumerate(s.positions)
         ],
         title=WORDS("vplans"),
         group="v",
     )  # fmt: skip
-    aplans = Grid(
+    detail = accel[0] if accel else s.positions[0]
+    aplans: Tree = Grid(
         *[
-            PlanView(
-                P.ap, title=WORDS("aplan", phi=_deg(P.phi)), group="a", show_scale=False, weight=2.0
-            )
+            PlanView(P.ap, title=WORDS("aplan", phi=_deg(P.phi)), group="a", show_scale=False,
+                     weight=2.0, min_mm=SHORT_MM)
             for P in accel
         ],
         title=WORDS("aplans"),
         group="a",
-    )
+    )  # fmt: skip
+    if all(P is not detail for P in s.positions):
+        # the velocity plan of the position drawn in detail, beside its acceleration plans
+        vdetail = PlanView(detail.vp, title=WORDS("vplan_detail", phi=_deg(detail.phi)),
+                           group="v", weight=2.0, min_mm=SHORT_MM)  # fmt: skip
+        aplans = Row(vdetail, aplans)
     diagrams = Column(*_diagrams(s), title=_through(s), title_height=3.5)
-    tables = Column(*_tables(s, accel))
+    notes = [Text(paragraph=WORDS("short", mm=fmt_number(SHORT_MM)), width=ORDER_W)] if note else []
+    tables = Column(*_tables(s, accel), *notes)
+    # the velocity plan's steps, then the acceleration plan's
+    names = [detail.vp.pole, *detail.vp.order, detail.ap.pole, *detail.ap.order]
+    order = Steps(
+        [detail.c.step(n) for n in names],
+        ORDER_W,
+        only=names,
+        title=WORDS("order", phi=_deg(detail.phi)),
+    )
     if second:
-        return (Column(mech, Row(diagrams, aplans, tables)), vplans), mech, True
+        return (Column(mech, Row(diagrams, aplans, Column(tables, order))), vplans), mech, True
     sheet = Choice(
-        Column(Row(mech, vplans), Row(diagrams, aplans, tables)),
-        Row(Column(mech, diagrams), Column(vplans, Row(aplans, tables))),
+        Column(Row(mech, vplans), Row(diagrams, aplans, Column(tables, order))),
+        Row(Column(mech, diagrams), Column(vplans, Row(aplans, Column(tables, order)))),
+        Column(Row(mech, vplans), Row(diagrams, aplans), Row(tables, order)),
     )
     return (sheet,), mech, False
+
+
+def _short(s: Solved, accel: Sequence[Position], lays: Sequence[Arranged]) -> bool:
+    """Whether a plan vector comes out shorter than two arrowheads at the arranged scales."""
+    k_v, k_a = lays[-1].scale("v"), lays[0].scale("a")
+    plans = [(P.vp, k_v) for P in [*s.positions, *accel]] + [(P.ap, k_a) for P in accel]
+    return any(
+        k.mm((plan.points[v.head] - plan.points[v.tail]).norm) < SHORT_MM
+        for plan, k in plans
+        for v in plan.vectors
+    )
 
 
 def layout(s: Solved) -> Layout:
@@ -129,6 +162,9 @@ def _arranged(s: Solved) -> tuple[Layout, tuple[Arranged, ...]]:
     trees, mech, second = _trees(s, accel)
     field = Field.of_format(FORMAT)
     lays = tuple(arrange(t, field) for t in trees)
+    if _short(s, accel, lays):  # the note on vectors drawn as points, and the layout again
+        trees, mech, second = _trees(s, accel, note=True)
+        lays = tuple(arrange(t, field) for t in trees)
     k_v = lays[-1].scale("v")
     out = Layout(lays[0][mech].scale or Scale(1.0), k_v, lays[0].scale("a"), second, accel,
                  trees, mech)  # fmt: skip
