@@ -61,7 +61,7 @@ if TYPE_CHECKING:
 WORDS = Words(__package__, "sheets_2013_6_kin")
 
 #: The sheet's format.
-FORMAT = "A2"
+FORMAT = "A3"
 #: Room (mm) under a plan for its note on short vectors.
 NOTE_H = 7.0
 #: The splits of the top row (the mechanism, the tables, the acceleration plan; None: the
@@ -177,9 +177,12 @@ class _Kin:
         )
         self.vnote, self.anote = Spacer((10.0, NOTE_H)), Spacer((10.0, NOTE_H))
         self.diagrams = _Diagrams(an, m, title=WORDS("diagrams"), weight=2.0)
-        # the order of construction of each plan, under the plan
-        self.vorder = Steps(c, EQUATIONS_W, only=an.vp.order, title=WORDS("vorder"))
-        self.aorder = Steps(c, EQUATIONS_W, only=an.ap.order, title=WORDS("aorder"))
+        # the order of construction of each plan, under the plan (ω and ε read off the plans
+        # are in the links' table: on an A3 their lines would halve the plans' scales)
+        vorder, aorder = ([n for n in p.order if c.step(n).kind != "plan_omega"]
+                          for p in (an.vp, an.ap))  # fmt: skip
+        self.vorder = Steps(c, EQUATIONS_W, only=vorder, title=WORDS("vorder"))
+        self.aorder = Steps(c, EQUATIONS_W, only=aorder, title=WORDS("aorder"))
         self.an, self.m = an, m
         kv = ka = 0.0
         for _ in range(3):
