@@ -126,7 +126,7 @@ def _trees(
         [detail.c.step(n) for n in names],
         ORDER_W,
         only=names,
-        title=WORDS("order", phi=_deg(detail.phi)),
+        title=_order_title(s, detail),
     )
     if second:
         return (Column(mech, Row(diagrams, aplans, Column(tables, order))), vplans), mech, True
@@ -136,6 +136,15 @@ def _trees(
         Column(Row(mech, vplans), Row(diagrams, aplans), Row(tables, order)),
     )
     return (sheet,), mech, False
+
+
+def _order_title(s: Solved, P: Position) -> str:
+    """The order's title: the position's angle, and its number where its velocity plan is one
+    of the numbered ones."""
+    i = next((i for i, Q in enumerate(s.positions) if Q is P), None)
+    if i is None:
+        return WORDS("order", phi=_deg(P.phi))
+    return WORDS("order_at", i=i, phi=_deg(P.phi))
 
 
 def _short(s: Solved, accel: Sequence[Position], lays: Sequence[Arranged]) -> bool:
