@@ -63,7 +63,7 @@ WORDS = Words(__package__, "sheets_2013_6_kin")
 #: The sheet's format.
 FORMAT = "A3"
 #: Room (mm) under a plan for its note on short vectors.
-NOTE_H = 7.0
+NOTE_H = 11.0
 #: The splits of the top row (the mechanism, the tables, the acceleration plan; None: the
 #: layout's choice) and of the bottom row (the diagrams, the velocity plan over the equations:
 #: the diagrams a little wider, so that the φ axis takes 0.04 rad/mm).

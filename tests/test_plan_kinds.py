@@ -61,8 +61,8 @@ def _numbered(view: Steps) -> list[str]:
     return [t for t in view.lines if re.match(r"\d+\. ", t)]
 
 
-@pytest.mark.parametrize("lang", ["ru", "en"])
-def test_linkage_sheet_lists_both_plans_of_its_detailed_position(lang: str) -> None:
+def test_linkage_sheet_lists_both_plans_of_its_detailed_position() -> None:
+    lang = "ru"
     lk = parse(tomllib.loads((EXAMPLES / "shaper.toml").read_text()))
     s = solve(lk)
     with language(lang):

@@ -84,11 +84,8 @@ def _accel_positions(s: Solved) -> tuple[Position, ...]:
     )
 
 
-def _trees(
-    s: Solved, accel: Sequence[Position], note: bool = False
-) -> tuple[tuple[Tree, ...], _Mechanism, bool]:
-    """The sheets' view trees (see the module's docstring); ``note``: say that vectors
-    shorter than two arrowheads are drawn as points."""
+def _trees(s: Solved, accel: Sequence[Position]) -> tuple[tuple[Tree, ...], _Mechanism, bool]:
+    """The sheets' view trees (see the module's docstring)."""
     n = len(s.positions)
     second = n > PLANS_ON_SHEET
     mech = _Mechanism(s)
@@ -118,8 +115,7 @@ def _trees(
                            group="v", weight=2.0, min_mm=SHORT_MM)  # fmt: skip
         aplans = Row(vdetail, aplans)
     diagrams = Column(*_diagrams(s), title=_through(s), title_height=3.5)
-    notes = [Text(paragraph=WORDS("short", mm=fmt_number(SHORT_MM)), width=ORDER_W)] if note else []
-    tables = Column(*_tables(s, accel), *notes)
+    tables = Column(*_tables(s, accel), _Note(WORDS("short", mm=fmt_number(SHORT_MM))))
     # the velocity plan's steps, then the acceleration plan's
     names = [detail.vp.pole, *detail.vp.order, detail.ap.pole, *detail.ap.order]
     order = Steps(
@@ -136,6 +132,19 @@ def _trees(
         Column(Row(mech, vplans), Row(diagrams, aplans), Row(tables, order)),
     )
     return (sheet,), mech, False
+
+
+class _Note(Text):
+    """The note on plan vectors drawn as points: its room is kept in the layout, its words
+    drawn only where a plan has such a vector at the scales arranged (:attr:`shown`)."""
+
+    def __init__(self, text: str) -> None:
+        super().__init__(paragraph=text, width=ORDER_W)
+        self.shown = True
+
+    def draw(self, d: Drawing, at: Placed) -> None:
+        if self.shown:
+            super().draw(d, at)
 
 
 def _order_title(s: Solved, P: Position) -> str:
@@ -171,9 +180,11 @@ def _arranged(s: Solved) -> tuple[Layout, tuple[Arranged, ...]]:
     trees, mech, second = _trees(s, accel)
     field = Field.of_format(FORMAT)
     lays = tuple(arrange(t, field) for t in trees)
-    if _short(s, accel, lays):  # the note on vectors drawn as points, and the layout again
-        trees, mech, second = _trees(s, accel, note=True)
-        lays = tuple(arrange(t, field) for t in trees)
+    short = _short(s, accel, lays)
+    for tree in trees:  # the note, where a plan needs it
+        for view in [tree] if isinstance(tree, View) else tree.views():
+            if isinstance(view, _Note):
+                view.shown = short
     k_v = lays[-1].scale("v")
     out = Layout(lays[0][mech].scale or Scale(1.0), k_v, lays[0].scale("a"), second, accel,
                  trees, mech)  # fmt: skip
