@@ -82,44 +82,43 @@ def analyse(
     vp = velocity_plan(c)
     vp.fixed("o1")
     vp.fixed("o2")
-    vp.given("a", (A - O1).perp() * omega1, "V_A", "V_A = ω1 × O1A, ⊥ O1A")
+    vp.rigid("a", "o1", O1, A, omega1, "V_A", "V_A = ω1 × O1A, ⊥ O1A", 1, ("O1", "A"))
     vp.solve("b", Side("a", B - A, "⊥ AB", True), Side("o2", B - O2, "⊥ O2B", True))
     vp.absolute("b", "V_B", "V_B ⊥ O2B")
     vp.unknown("a", "b", "V_{BA}", "V_BA ⊥ AB")
-    vp.solve("c", Side("b", C - B, "⊥ BC", True), Side("p", d, "∥ the path"))
+    vp.solve("c", Side("b", C - B, "⊥ BC", True), Side("p", d, "∥ the path", line="@guide"))
     vp.absolute("c", "V_C", "V_C ∥ the path")
     vp.unknown("b", "c", "V_{CB}", "V_CB ⊥ BC")
-    w2 = c.value("ω2", vp.omega(A, B, "a", "b"), "(AB × ab)/AB²")
-    w3 = c.value("ω3", vp.omega(O2, B, "o2", "b"), "(O2B × pb)/O2B²")
-    w4 = c.value("ω4", vp.omega(B, C, "b", "c"), "(BC × bc)/BC²")
+    w2 = vp.omega(A, B, "a", "b", "ω2", 2, ("A", "B"))
+    w3 = vp.omega(O2, B, "o2", "b", "ω3", 3, ("O2", "B"))
+    w4 = vp.omega(B, C, "b", "c", "ω4", 4, ("B", "C"))
     # the acceleration plan
-    ap = acceleration_plan(c)
+    ap = acceleration_plan(c, velocity=vp)
+    ap.fixed("o1")
     ap.fixed("o2")
-    ap.given("a", (O1 - A) * (omega1 * omega1), "a_A", "a_A = ω1²·l1, from A to O1 (ε1 = 0)")
+    # a_A = ω1²·l1, from A to O1 (ε1 = 0)
+    ap.rigid_acc("a", "o1", O1, A, omega1, 0.0, "a_A", "a_A = ω1²·l1", 1, ("O1", "A"))
+    n_ba = normal(w2, B, A, "n_BA", "a^n_{BA}", "ω2²·l2, B → A", 2, ("B", "A"))
+    n_bo2 = normal(w3, B, O2, "n_BO2", "a^n_{BO2}", "ω3²·l3, B → O2", 3, ("B", "O2"))
     ap.solve(
         "b",
-        Side("a", B - A, "⊥ AB", True, (normal(w2, B, A, "n_BA", "a^n_{BA}", "ω2²·l2, B → A"),)),
-        Side(
-            "o2",
-            B - O2,
-            "⊥ O2B",
-            True,
-            (normal(w3, B, O2, "n_BO2", "a^n_{BO2}", "ω3²·l3, B → O2"),),
-        ),
+        Side("a", B - A, "⊥ AB", True, (n_ba,)),
+        Side("o2", B - O2, "⊥ O2B", True, (n_bo2,)),
     )
     ap.absolute("b", "a_B")
     ap.unknown("n_BA", "b", "a^τ_{BA}", "a^τ_BA ⊥ AB")
     ap.unknown("n_BO2", "b", "a^τ_{BO2}", "a^τ_BO2 ⊥ O2B")
+    n_cb = normal(w4, C, B, "n_CB", "a^n_{CB}", "ω4²·l4, C → B", 4, ("C", "B"))
     ap.solve(
         "c",
-        Side("b", C - B, "⊥ BC", True, (normal(w4, C, B, "n_CB", "a^n_{CB}", "ω4²·l4, C → B"),)),
-        Side("π", d, "∥ the path"),
+        Side("b", C - B, "⊥ BC", True, (n_cb,)),
+        Side("π", d, "∥ the path", line="@guide"),
     )
     ap.absolute("c", "a_C")
     ap.unknown("n_CB", "c", "a^τ_{CB}", "a^τ_CB ⊥ BC")
-    e2 = c.value("ε2", ap.omega(A, B, "a", "b"), "(AB × a'b')/AB²: a^τ_BA/l2")
-    e3 = c.value("ε3", ap.omega(O2, B, "o2", "b"), "(O2B × π b')/O2B²")
-    e4 = c.value("ε4", ap.omega(B, C, "b", "c"), "(BC × b'c')/BC²")
+    e2 = ap.omega(A, B, "a", "b", "ε2", 2, ("A", "B"))
+    e3 = ap.omega(O2, B, "o2", "b", "ε3", 3, ("O2", "B"))
+    e4 = ap.omega(B, C, "b", "c", "ε4", 4, ("B", "C"))
     # the slider's diagrams over a turn, from φ1's zero: s from the left extreme
     phi = np.linspace(0.0, 2.0 * math.pi, DIAGRAM_SAMPLES)
     r = m.sweep(phi, omega1)

@@ -85,8 +85,8 @@ def build(p: Mapping[str, ParamValue]) -> Build[Geometry]:
     vp.fixed("o1")
     vp.fixed("o2")
     vp.given("a", Vec(v_a, 0.0), "V_A", "V_A ∥ O1O2 (link 1 translates)")
-    vp.same("b1", "a", "link 1 translates: V_B1 = V_A")
-    vp.same("b2", "b1", "block 2 is hinged to link 1 at B: V_B2 = V_B1")
+    vp.same("b1", "a", "link 1 translates: V_B1 = V_A", "@translates")
+    vp.same("b2", "b1", "block 2 is hinged to link 1 at B: V_B2 = V_B1", "@hinge")
     vp.solve(
         "b3",
         Side("b2", O1 - B, "∥ O1B (V_B3B2 along the slot)"),
@@ -94,11 +94,18 @@ def build(p: Mapping[str, ParamValue]) -> Build[Geometry]:
     )
     v_b3 = vp.absolute("b3", "V_{B3}", "V_B3 ⊥ O1B")
     v_b3b2 = vp.unknown("b2", "b3", "V_{B3B2}", "V_B3B2 ∥ O1B")
-    omega3 = c.value("ω3", vp.omega(O1, B, "o1", "b3"), "(O1B × pb3)/O1B², ccw > 0")
-    vp.image("c3", "o1", "b3", O1, B, C, why="C on link 3: o1b3c3 ~ O1BC")
+    omega3 = vp.omega(O1, B, "o1", "b3", "ω3", 3, ("O1", "B"), rel="V_{B3}")
+    vp.image("c3", "o1", "b3", O1, B, C, why="C on link 3: o1b3c3 ~ O1BC", model=("O1", "B", "C"))
     v_c3 = vp.absolute("c3", "V_{C3}", "V_C3 ⊥ O1C")
-    omega5 = c.value("ω5", omega3, "= ω3: the cross slides on links 3 and 5 at a fixed right angle")
-    vp.rigid("c5", "p", O2, C, omega5, "V_{C5}", "V_C5 = ω5 × O2C, ⊥ O2C")
+    omega5 = c.value(
+        "ω5",
+        omega3,
+        "= ω3: the cross slides on links 3 and 5 at a fixed right angle",
+        kind="cross_omega",
+        args={"w": "ω_5", "of": "ω_3", "value": abs(omega3)},
+    )
+    vp.order.append("ω5")
+    vp.rigid("c5", "p", O2, C, omega5, "V_{C5}", "V_C5 = ω5 × O2C, ⊥ O2C", 5, ("O2", "C"))
     v_c5 = vp["c5"]
     vp.solve(
         "c4",
@@ -108,7 +115,13 @@ def build(p: Mapping[str, ParamValue]) -> Build[Geometry]:
     v_c4 = vp.absolute("c4", "V_{C4}", "V_C4 of the cross's centre")
     vp.unknown("c3", "c4", "V_{C4C3}", "V_C4C3 ∥ O1C")
     vp.unknown("c5", "c4", "V_{C4C5}", "V_C4C5 ∥ O2C")
-    f_red = c.value("F_red", abs(m * omega5) / abs(v_a), "|M·ω5| / |v_A| (equal power)")
+    f_red = c.value(
+        "F_red",
+        abs(m * omega5) / abs(v_a),
+        "|M·ω5| / |v_A| (equal power)",
+        kind="reduced_force",
+        args={"M": abs(m), "w": abs(omega5), "v": abs(v_a), "value": abs(m * omega5) / abs(v_a)},
+    )
 
     results: dict[str, Any] = {
         "V_B3": v_b3.norm,

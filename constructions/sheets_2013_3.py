@@ -29,7 +29,6 @@ from geomcad.sheet.compose import (
 from geomcad.sheet.drawing import SLIDER_SIZE
 from geomcad.sheet.lang import Words, current, per_language
 from geomcad.sheet.model import Polyline
-from geomcad.sheet.text import wrap
 
 if TYPE_CHECKING:
     from geomcad.construction import Construction
@@ -71,14 +70,9 @@ def _views(sol: Solution[Geometry], kv: Scale | None = None) -> tuple[Tree, Figu
         margin=8.0,
     )
     plan = V.PlanView(geo.plan, title=WORDS("plan_title"), title_height=5.0, margin=6.0)
-    order = V.Text(
-        [
-            line
-            for par in [f"{i}. {WORDS(f'order_{i}')}" for i in range(1, 7)]
-            for line in wrap(par, ORDER_W, 2.5)
-        ],
-        title=WORDS("order_title"),
-    )
+    # the order of construction: the plan's steps and the force equivalent to M
+    order = V.Steps(c, ORDER_W, only=[*geo.plan.order, "F_red"], words=WORDS,
+                    title=WORDS("order_title"))  # fmt: skip
     tree = Row(
         Column(scheme, Row(_data(sol), _results(sol, kv))),
         Column(plan, order, Spacer((10.0, BLOCK_H))),

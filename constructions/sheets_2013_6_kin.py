@@ -47,7 +47,7 @@ from geomcad.sheet.scale import ScaleStyle
 from geomcad.sheet.scheme import draw_scheme
 from geomcad.sheet.text import box as text_box
 from geomcad.sheet.text import parse
-from geomcad.sheet.views import PlanView, Table, Text
+from geomcad.sheet.views import PlanView, Steps, Table, Text
 from geomcad.structure import Link, Mechanism, prismatic, revolute
 
 if TYPE_CHECKING:
@@ -60,8 +60,10 @@ if TYPE_CHECKING:
 
 WORDS = Words(__package__, "sheets_2013_6_kin")
 
+#: The sheet's format.
+FORMAT = "A3"
 #: Room (mm) under a plan for its note on short vectors.
-NOTE_H = 7.0
+NOTE_H = 11.0
 #: The splits of the top row (the mechanism, the tables, the acceleration plan; None: the
 #: layout's choice) and of the bottom row (the diagrams, the velocity plan over the equations:
 #: the diagrams a little wider, so that the φ axis takes 0.04 rad/mm).
@@ -175,13 +177,17 @@ class _Kin:
         )
         self.vnote, self.anote = Spacer((10.0, NOTE_H)), Spacer((10.0, NOTE_H))
         self.diagrams = _Diagrams(an, m, title=WORDS("diagrams"), weight=2.0)
-        self.equations = Text(paragraphs=[f"{i}. {WORDS(f'eq_{i}')}" for i in range(1, 5)],
-                              width=EQUATIONS_W, indent=4.0, title=WORDS("equations"))  # fmt: skip
+        # the order of construction of each plan, under the plan (ω and ε read off the plans
+        # are in the links' table: on an A3 their lines would halve the plans' scales)
+        vorder, aorder = ([n for n in p.order if c.step(n).kind != "plan_omega"]
+                          for p in (an.vp, an.ap))  # fmt: skip
+        self.vorder = Steps(c, EQUATIONS_W, only=vorder, title=WORDS("vorder"))
+        self.aorder = Steps(c, EQUATIONS_W, only=aorder, title=WORDS("aorder"))
         self.an, self.m = an, m
         kv = ka = 0.0
         for _ in range(3):
             self.tree = self._tree(kv, ka)
-            self.layout: Layout = arrange(self.tree, Field.of_format("A3"))
+            self.layout: Layout = arrange(self.tree, Field.of_format(FORMAT))
             got = (self.layout[self.vplan].scale, self.layout[self.aplan].scale)
             assert got[0] is not None and got[1] is not None
             if (got[0].k, got[1].k) == (kv, ka):
@@ -190,9 +196,9 @@ class _Kin:
 
     def _tree(self, kv: float, ka: float) -> Column:
         panel = Column(*_panel(self.an, self.m, kv, ka))
-        top = Row(self.mech, panel, Column(self.aplan, self.anote), weights=TOP_W)
+        top = Row(self.mech, panel, Column(self.aplan, self.anote, self.aorder), weights=TOP_W)
         # the title block under the right-hand column
-        right = Column(self.vplan, self.vnote, self.equations, Spacer((10.0, TB_HEIGHT - GAP)))
+        right = Column(self.vplan, self.vnote, self.vorder, Spacer((10.0, TB_HEIGHT - GAP)))
         return Column(top, Row(self.diagrams, right, weights=BOTTOM_W))
 
 
@@ -207,7 +213,7 @@ def kinematics_sheet(sol: Solution[Geometry]) -> tuple[str, Sheet]:
         scale=k.ratio_text(),
         lang=current(),
     )
-    d = start("A3", tb)
+    d = start(FORMAT, tb)
     compose(d, kin.tree, layout=lay)
     for plan, view, note in ((kin.an.vp, kin.vplan, kin.vnote), (kin.an.ap, kin.aplan, kin.anote)):
         _short_note(d, plan, lay[view], lay[note])

@@ -30,6 +30,8 @@ remembers what to draw: the construction lines (:attr:`Plan.lines`) and the vect
 
 from __future__ import annotations
 
+import math
+import re as _re
 from dataclasses import dataclass, field
 from typing import Literal
 
@@ -53,6 +55,10 @@ class Term:
     head: str
     label: str
     meaning: str
+    #: the order of construction's kind and operands of the term (:func:`normal`,
+    #: :func:`coriolis`; ``plan_term`` for a term given by its value)
+    kind: str = "plan_term"
+    args: tuple[tuple[str, str | float], ...] = ()
 
 
 @dataclass(frozen=True)
@@ -66,6 +72,13 @@ class Side:
     text: str
     perpendicular: bool = False
     terms: tuple[Term, ...] = ()
+    #: the model line the unknown vector is perpendicular or parallel to, for the order of
+    #: construction: a run of point names (``O1B``) or ``@word`` (``@guide``: a word of the
+    #: sheet's table); "" = ``text`` without its sign and remark
+    line: str = ""
+    #: the unknown vector's label markup; "" = the relative vector of the point about ``start``
+    #: (``V_{BA}``; ``a^τ_{BA}`` across a line, ``a^r_{BA}`` along one)
+    unknown: str = ""
 
 
 @dataclass(frozen=True)
@@ -96,6 +109,12 @@ class Plan:
 
     ``suffix`` is appended to every step name of the plan's points (``b'`` on an acceleration
     plan drawn beside a velocity plan), so that both can live in one construction.
+
+    Every step carries a ``kind`` and ``args`` for the order of construction (templates
+    ``step.plan_*`` in ``geomcad/sheet/strings/<lang>/views.toml``): the plan's points, the
+    known terms, the vector equations, the vectors read off and the angular velocities.
+    :attr:`order` names the steps a sheet's order of construction lists (in recorded order),
+    :attr:`values` the vectors read off the plan (``V_B = pb·μ_V``).
     """
 
     c: Construction
@@ -104,11 +123,23 @@ class Plan:
     points: dict[str, Vec] = field(default_factory=dict)
     lines: list[PlanLine] = field(default_factory=list)
     vectors: list[PlanVector] = field(default_factory=list)
+    order: list[str] = field(default_factory=list)
+    values: list[str] = field(default_factory=list)
+    #: the step names of the fixed points (at the pole)
+    at_pole: set[str] = field(default_factory=set)
+    #: an acceleration plan's velocity plan: the size against which a relative velocity
+    #: (of a Coriolis term) is rounding noise
+    velocity: Plan | None = None
 
     def __post_init__(self) -> None:
         pole = self.pole
         self.points[pole] = self.c.point(
-            pole, (0.0, 0.0), role="construction", op=f"the pole of the {_WHAT[self.kind]} plan"
+            pole,
+            (0.0, 0.0),
+            role="construction",
+            op=f"the pole of the {_WHAT[self.kind]} plan",
+            kind="plan_pole",
+            args={"plan": f"@plan_{self.kind}"},
         )
 
     # -- names -----------------------------------------------------------------------------
@@ -132,40 +163,153 @@ class Plan:
         """A relative velocity (acceleration): the plan vector from ``tail`` to ``head``."""
         return self[head] - self[tail]
 
-    def _add(self, point: str, value: Vec, op: str) -> Vec:
+    def mark(self, point: str) -> str:
+        """A plan point as label markup (``b3`` → ``b_{3}'`` on a suffixed plan)."""
+        return point_markup(self.name(point))
+
+    def origin(self, point: str) -> str:
+        """A point to draw from, as markup: the pole for a fixed point (``o2`` → ``p``)."""
         name = self.name(point)
-        v = self.c.point(name, value, role="construction", op=op)
+        return self.pole if name in self.at_pole else point_markup(name)
+
+    def label_of(self, point: str) -> str:
+        """The absolute vector of a plan point as label markup: ``b`` → ``V_B``, ``o2`` →
+        ``a_{O2}`` on an acceleration plan."""
+        return _sub(_SYMBOL[self.kind], model_of(point))
+
+    def _noise(self, x: float) -> bool:
+        """Whether a magnitude of plan units is rounding noise beside the plan's size (a
+        vector that vanishes in this position: written 0, not 3·10^-17)."""
+        size = max((p.norm for p in self.points.values()), default=0.0)
+        return abs(x) <= NOISE * size
+
+    @property
+    def _unit(self) -> str:
+        return f"@u_{self.kind}"
+
+    def _add(
+        self,
+        point: str,
+        value: Vec,
+        op: str,
+        kind: str,
+        args: dict[str, str | float],
+        listed: bool = True,
+    ) -> Vec:
+        name = self.name(point)
+        args = {"pt": point_markup(name), "plan": f"@plan_{self.kind}", **args}
+        v = self.c.point(name, value, role="construction", op=op, kind=kind, args=args)
         self.points[name] = v
+        if listed:
+            self.order.append(name)
         return v
 
-    def _vec(self, tail: str, head: str, label: str, meaning: str, known: bool) -> None:
+    def _vec(
+        self,
+        tail: str,
+        head: str,
+        label: str,
+        meaning: str,
+        known: bool,
+        kind: str = "plan_vector",
+        args: dict[str, str | float] | None = None,
+    ) -> str:
         t, h = self.name(tail), self.name(head)
         step = f"{t}{h}"
         value = self.points[h] - self.points[t]
-        self.c.record(step, f"vector {t} → {h} = {meaning}", value, (t, h), "construction")
+        args = {
+            "tail": self.origin(tail),
+            "head": point_markup(h),
+            "label": label,
+            "mu": _MU[self.kind],
+            "value": 0.0 if self._noise(value.norm) else value.norm,
+            "unit": self._unit,
+            **(args or {}),
+        }
+        self.c.record(
+            step,
+            f"vector {t} → {h} = {meaning}",
+            value,
+            (t, h),
+            "construction",
+            kind=kind,
+            args=args,
+        )
         self.vectors.append(PlanVector(step, t, h, label, meaning, known))
+        return step
 
     # -- known points --------------------------------------------------------------------------
     def fixed(self, point: str) -> Vec:
         """A point of the frame (or of a link at rest): it lies at the pole."""
-        return self._add(point, Vec(0.0, 0.0), f"at the pole ({point} is fixed)")
+        self.at_pole.add(self.name(point))
+        return self._add(
+            point,
+            Vec(0.0, 0.0),
+            f"at the pole ({point} is fixed)",
+            "plan_fixed",
+            {"pole": self.pole, "vec": self.label_of(point)},
+            listed=False,
+        )
 
     def given(self, point: str, value: Vec, label: str, meaning: str = "") -> Vec:
         """A known vector from the pole (``pa = V_A``)."""
-        self._add(point, value, f"given {label}")
+        args: dict[str, str | float] = {
+            "pole": self.pole,
+            "label": label,
+            "value": value.norm,
+            "unit": self._unit,
+        }
+        self._add(point, value, f"given {label}", "plan_given", args)
         self._vec(self.pole, point, label, meaning or label, True)
         return self[point]
 
-    def same(self, point: str, as_: str, why: str) -> Vec:
-        """A point that coincides with another one (a translating link, a hinged block)."""
-        return self._add(point, self[as_], f"= {self.name(as_)} ({why})")
+    def same(self, point: str, as_: str, why: str, reason: str = "") -> Vec:
+        """A point that coincides with another one (a translating link, a hinged block).
+        ``reason`` says why in the order of construction: ``@translates`` (the link moves
+        without turning), ``@hinge`` (one joint of two links), or another ``@word``."""
+        eq = f"{self.label_of(point)} = {self.label_of(as_)}"
+        args: dict[str, str | float] = {"as": self.mark(as_), "eq": eq}
+        kind = "plan_same"
+        if reason:
+            kind, args["why"] = "plan_same_why", reason
+        return self._add(point, self[as_], f"= {self.name(as_)} ({why})", kind, args)
+
+    def _turning(
+        self, point: str, base: str, r: Vec, link: str | int, model: tuple[str, str]
+    ) -> dict[str, str | float]:
+        B, P = model if all(model) else (model_of(base), model_of(point))
+        return {
+            "base": self.origin(base),
+            "w": _sub("ω", str(link)),
+            "e": _sub("ε", str(link)),
+            "l": _sub("l", f"{B}{P}"),
+            "lv": r.norm,
+            "line": f"{B}{P}",
+            "from": P,
+            "to": B,
+            "unit": self._unit,
+        }
 
     def rigid(
-        self, point: str, base: str, base_pos: Vec, pos: Vec, omega: float, label: str, why: str
+        self,
+        point: str,
+        base: str,
+        base_pos: Vec,
+        pos: Vec,
+        omega: float,
+        label: str,
+        why: str,
+        link: str | int = "",
+        model: tuple[str, str] = ("", ""),
     ) -> Vec:
-        """A point of a link that turns at ``omega``: V_P = V_base + ω × (P − base)."""
+        """A point of a link that turns at ``omega``: V_P = V_base + ω × (P − base).
+        ``link`` (its number) and ``model`` (the names of base and point on the mechanism)
+        are for the order of construction."""
         r = pos - base_pos
-        self._add(point, self[base] + Vec(-r.y, r.x) * omega, f"{self.name(base)} + ω × r ({why})")
+        args = self._turning(point, base, r, link, model)
+        args.update(label=label, omega=abs(omega), value=abs(omega) * r.norm)
+        value = self[base] + Vec(-r.y, r.x) * omega
+        self._add(point, value, f"{self.name(base)} + ω × r ({why})", "plan_rigid", args)
         self._vec(base, point, label, f"ω × r ({why})", True)
         return self[point]
 
@@ -179,20 +323,42 @@ class Plan:
         eps: float,
         label: str,
         why: str,
+        link: str | int = "",
+        model: tuple[str, str] = ("", ""),
     ) -> Vec:
         """A point of a link that turns at ``omega`` with ``eps`` on an acceleration plan:
-        a_P = a_base + ε × r − ω²·r, r = P − base."""
+        a_P = a_base + ε × r − ω²·r, r = P − base (the order of construction's ``link`` and
+        ``model`` as in :meth:`rigid`)."""
         r = pos - base_pos
         value = self[base] + Vec(-r.y, r.x) * eps - r * (omega * omega)
-        self._add(point, value, f"{self.name(base)} + ε × r − ω²·r ({why})")
+        args = self._turning(point, base, r, link, model)
+        args.update(
+            label=label,
+            omega=abs(omega),
+            eps=abs(eps),
+            an=omega * omega * r.norm,
+            at=abs(eps) * r.norm,
+        )
+        kind = "plan_rigid_acc" if eps != 0.0 else "plan_rigid_acc_n"
+        self._add(point, value, f"{self.name(base)} + ε × r − ω²·r ({why})", kind, args)
         self._vec(base, point, label, f"ε × r − ω²·r ({why})", True)
         return self[point]
 
     def image(
-        self, point: str, a: str, b: str, A: Vec, B: Vec, P: Vec, label: str = "", why: str = ""
+        self,
+        point: str,
+        a: str,
+        b: str,
+        A: Vec,
+        B: Vec,
+        P: Vec,
+        label: str = "",
+        why: str = "",
+        model: tuple[str, str, str] = ("", "", ""),
     ) -> Vec:
         """The image of point P of a link whose points A and B are on the plan as ``a``, ``b``:
         the triangle abp is similar to ABP and turned the same way (the theorem of similarity).
+        ``model`` names A, B and P on the mechanism, for the order of construction.
 
         Raises :class:`DegenerateInput` when A and B coincide.
         """
@@ -206,7 +372,20 @@ class Plan:
         r = P - A
         value = self[a] + Vec(re * r.x - im * r.y, re * r.y + im * r.x)
         op = f"image of {point}: triangle {self.name(a)}{self.name(b)}{self.name(point)} ~ link"
-        self._add(point, value, op + (f" ({why})" if why else ""))
+        names = model if all(model) else (model_of(a), model_of(b), model_of(point))
+        args: dict[str, str | float] = {
+            "a": self.mark(a),
+            "b": self.mark(b),
+            "A": names[0],
+            "B": names[1],
+            "P": names[2],
+        }
+        kind = "plan_image"
+        if abs(AB.cross(r)) <= tol.REL_LENGTH * 1.0e3 * math.sqrt(L2) * max(r.norm, 1.0e-300):
+            t = r.dot(AB) / L2  # P on line AB: its image on line ab at the same ratio
+            kind = "plan_image_line" if t >= 0.0 else "plan_image_beyond"
+            args["ratio"] = abs(t)
+        self._add(point, value, op + (f" ({why})" if why else ""), kind, args)
         if label:
             self._vec(a, point, label, why or label, True)
         return self[point]
@@ -219,46 +398,144 @@ class Plan:
         recorded point and vector), and draws the line of its unknown vector through the end;
         the two lines meet in the new point. Parallel lines (a dead position, a guide along the
         link) raise :class:`~geomcad.errors.ParallelLines` naming the step.
+
+        The point's step (kind ``plan_solve``) carries the equation (``V_B = V_A + V_{BA} =
+        V_{O2} + V_{BO2}``) and each side's line; each known term is a step of its own kind
+        (``plan_normal``, ``plan_coriolis``).
         """
         name = self.name(point)
         lines: list[Line] = []
+        args: dict[str, str | float] = {"pt": point_markup(name)}
+        sums: list[str] = []
         for side_no, side in enumerate((first, second), start=1):
             tail = side.start
+            parts = [] if tail == self.pole else [self.label_of(tail)]
             for term in side.terms:
-                self._add(term.head, self[tail] + term.value, f"{self.name(tail)} + {term.meaning}")
+                targs: dict[str, str | float] = {
+                    "tail": self.origin(tail),
+                    "pt": self.mark(term.head),
+                    "unit": self._unit,
+                }
+                targs.update(term.args)
+                targs.setdefault("label", term.label)
+                targs.setdefault("value", term.value.norm)
+                relv = targs.get("relv")
+                vp = self.velocity
+                if isinstance(relv, float) and vp is not None and vp._noise(relv):
+                    targs.update(value=0.0, relv=0.0)  # no sliding in this position
+                elif self._noise(term.value.norm):  # ω = 0 in this position
+                    targs.update(value=0.0, omega=0.0)
+                self._add(
+                    term.head,
+                    self[tail] + term.value,
+                    f"{self.name(tail)} + {term.meaning}",
+                    term.kind,
+                    targs,
+                )
                 self._vec(tail, term.head, term.label, term.meaning, True)
+                parts.append(f"+ {term.label}" if parts else term.label)
                 tail = term.head
             d = side.direction.unit()
             if side.perpendicular:
                 d = Vec(-d.y, d.x)
             step = f"{name}:{side_no}"
             through = self.name(tail)
-            line = self.c.line(step, self[tail], d, f"line through {through} {side.text}")
+            ref = side.line or _line_of(side.text)
+            sign = "⊥" if side.perpendicular else "∥"
+            largs = {"p": self.origin(tail), "s": sign, "l": ref}
+            line = self.c.line(
+                step,
+                self[tail],
+                d,
+                f"line through {through} {side.text}",
+                kind="plan_line",
+                args=largs,
+            )
             self.lines.append(PlanLine(step, through, line, side.text))
             lines.append(line)
-        v = self.c.intersect(name, lines[0], lines[1], role="construction")
+            if tail != self.pole or parts:
+                unknown = side.unknown or self._relative(point, side)
+                parts.append(f"+ {unknown}" if parts else unknown)
+                sums.append(" ".join(parts))
+            args.update({f"p{side_no}": self.origin(tail), f"s{side_no}": sign})
+            args[f"l{side_no}"] = ref
+        args["eq"] = " = ".join([self.label_of(point), *sums])
+        v = self.c.intersect(
+            name,
+            lines[0],
+            lines[1],
+            role="construction",
+            kind="plan_solve",
+            args=args,
+        )
         self.points[name] = v
+        self.order.append(name)
         return v
+
+    def _relative(self, point: str, side: Side) -> str:
+        P, S = model_of(point), model_of(side.start)
+        if self.kind == "v":
+            return _sub("V", P + S)
+        return _sub("a^τ" if side.perpendicular else "a^r", P + S)
 
     def unknown(self, tail: str, head: str, label: str, meaning: str) -> Vec:
         """Record a vector the plan has found (``ab = V_BA``) and return it."""
-        self._vec(tail, head, label, meaning, False)
+        self.values.append(self._vec(tail, head, label, meaning, False, "plan_unknown"))
         return self.between(tail, head)
 
     def absolute(self, point: str, label: str, meaning: str = "") -> Vec:
         """Record the absolute vector pole → point (``pb = V_B``) and return it."""
-        self._vec(self.pole, point, label, meaning or label, False)
+        step = self._vec(self.pole, point, label, meaning or label, False, "plan_absolute")
+        self.values.append(step)
         return self[point]
 
     # -- reading the plan ----------------------------------------------------------------------
-    def omega(self, A: Vec, B: Vec, a: str, b: str) -> float:
+    def omega(
+        self,
+        A: Vec,
+        B: Vec,
+        a: str,
+        b: str,
+        name: str = "",
+        link: str | int = "",
+        model: tuple[str, str] = ("", ""),
+        rel: str = "",
+    ) -> float:
         """The angular velocity (acceleration) of link AB read off the plan, ccw > 0.
 
         On a velocity plan: ω = (AB × ab)/AB², i.e. ω = |ab|/l_AB with the sense that turns
         AB towards ab. On an acceleration plan pass the tangential vector's ends: ε = a^τ/l.
+        With ``name`` the value is recorded as a step (kind ``plan_omega``, ``plan_eps``) and
+        listed in :attr:`order`; ``link`` (its number) and ``model`` (the names of A and B on
+        the mechanism) are for its text, ``rel`` the label of the vector read (default: the
+        relative vector of B about A, ``V_{BA}``, ``a^τ_{BA}``).
         """
         AB = B - A
-        return AB.cross(self.between(a, b)) / AB.dot(AB)
+        w = AB.cross(self.between(a, b)) / AB.dot(AB)
+        if name:
+            MA, MB = model if all(model) else (model_of(a), model_of(b))
+            length = AB.norm
+            shown = 0.0 if self._noise(w * length) else abs(w)
+            rel = rel or (_sub("V", MB + MA) if self.kind == "v" else _sub("a^τ", MB + MA))
+            sym = "ω" if self.kind == "v" else "ε"
+            self.c.value(
+                name,
+                w,
+                f"({MA}{MB} × {self.name(a)}{self.name(b)})/{MA}{MB}², ccw > 0",
+                (self.name(a), self.name(b)),
+                kind="plan_omega",
+                args={
+                    "w": _sub(sym, str(link)),
+                    "rel": rel,
+                    "relv": shown * length,
+                    "l": _sub("l", MA + MB),
+                    "lv": length,
+                    "value": shown,
+                    "unit": "@u_w" if self.kind == "v" else "@u_e",
+                },
+            )
+            self.order.append(name)
+        return w
 
     def extent(self) -> tuple[float, float, float, float]:
         """The plan's bounding box (x0, y0, x1, y1) in plan units, pole included."""
@@ -267,21 +544,99 @@ class Plan:
         return (min(xs), min(ys), max(xs), max(ys))
 
 
+#: A magnitude at most this share of the plan's size is written 0 in the order of construction.
+NOISE = 1.0e-9
+
+_SYMBOL = {"v": "V", "a": "a"}
+_MU = {"v": "μ_V", "a": "μ_a"}
+
+
+def point_markup(name: str) -> str:
+    """A plan point's step name as label markup: ``b3`` → ``b_{3}``, ``n_BA'`` → ``n_{BA}'``,
+    ``p_P`` → ``p_{P}``; ``b``, ``π`` as they are."""
+    m = _re.fullmatch(r"([^\d_']+)_?([^']*)('*)", name)
+    if m is None or not m.group(2):
+        return name
+    base, sub, prime = m.groups()
+    return f"{base}_{{{sub}}}{prime}"
+
+
+def model_of(point: str) -> str:
+    """The mechanism point a plan point stands for: ``b3`` → ``B3``, ``p_P`` → ``P``."""
+    base = point.rstrip("'")
+    return (base[2:] if base.startswith("p_") else base).upper()
+
+
+def _sub(head: str, sub: str) -> str:
+    """``head`` with subscript ``sub`` as markup (``V``, ``BA`` → ``V_{BA}``; none: ``head``)."""
+    return f"{head}_{{{sub}}}" if sub else head
+
+
+def _line_of(text: str) -> str:
+    """The line a side's words name: ``⊥ O1B (V_B3 about O1)`` → ``O1B``."""
+    return text.split("(")[0].strip().lstrip("⊥∥ ").strip()
+
+
 def velocity_plan(c: Construction, suffix: str = "") -> Plan:
     """A new velocity plan in ``c``, pole p at the origin."""
     return Plan(c, "v", suffix)
 
 
-def acceleration_plan(c: Construction, suffix: str = "'") -> Plan:
-    """A new acceleration plan in ``c``, pole π at the origin; its points are named ``b'``."""
-    return Plan(c, "a", suffix)
+def acceleration_plan(c: Construction, suffix: str = "'", velocity: Plan | None = None) -> Plan:
+    """A new acceleration plan in ``c``, pole π at the origin; its points are named ``b'``.
+    ``velocity``: the velocity plan of the same position (for the order of construction)."""
+    return Plan(c, "a", suffix, velocity=velocity)
 
 
-def normal(omega: float, B: Vec, A: Vec, head: str, label: str, meaning: str) -> Term:
-    """The normal acceleration of B about A: ω²·l_AB, directed from B to A."""
-    return Term((A - B) * (omega * omega), head, label, meaning)
+def normal(
+    omega: float,
+    B: Vec,
+    A: Vec,
+    head: str,
+    label: str,
+    meaning: str,
+    link: str | int = "",
+    model: tuple[str, str] = ("", ""),
+) -> Term:
+    """The normal acceleration of B about A: ω²·l_AB, directed from B to A. ``link`` (its
+    number) and ``model`` (the names of B and A on the mechanism) are for the order of
+    construction (kind ``plan_normal``; without ``model``: ``plan_term``)."""
+    value = (A - B) * (omega * omega)
+    if not all(model):
+        return Term(value, head, label, meaning)
+    P, Q = model
+    args: tuple[tuple[str, str | float], ...] = (
+        ("w", _sub("ω", str(link))),
+        ("omega", abs(omega)),
+        ("l", _sub("l", Q + P)),
+        ("lv", (A - B).norm),
+        ("from", P),
+        ("to", Q),
+    )
+    return Term(value, head, label, meaning, "plan_normal", args)
 
 
-def coriolis(omega: float, v_rel: Vec, head: str, label: str, meaning: str) -> Term:
-    """The Coriolis acceleration 2ω × V_rel: V_rel turned 90° in the sense of ω, times 2|ω|."""
-    return Term(Vec(-v_rel.y, v_rel.x) * (2.0 * omega), head, label, meaning)
+def coriolis(
+    omega: float,
+    v_rel: Vec,
+    head: str,
+    label: str,
+    meaning: str,
+    link: str | int = "",
+    rel: str = "",
+) -> Term:
+    """The Coriolis acceleration 2ω × V_rel: V_rel turned 90° in the sense of ω, times 2|ω|.
+    ``link`` (the number of the link that carries the guide) and ``rel`` (the label markup of
+    V_rel) are for the order of construction (kind ``plan_coriolis``; without ``rel``:
+    ``plan_term``)."""
+    value = Vec(-v_rel.y, v_rel.x) * (2.0 * omega)
+    if not rel:
+        return Term(value, head, label, meaning)
+    args: tuple[tuple[str, str | float], ...] = (
+        ("w", _sub("ω", str(link))),
+        ("omega", abs(omega)),
+        ("rel", rel),
+        ("relv", v_rel.norm),
+        ("sense", "@ccw" if omega > 0.0 else "@cw"),
+    )
+    return Term(value, head, label, meaning, "plan_coriolis", args)

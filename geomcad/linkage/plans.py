@@ -15,7 +15,7 @@ link 3 under A); a point whose lower-case name is the pole's (``p``) is written 
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 from geomcad import tol
 from geomcad.construction import Construction, Index
@@ -82,7 +82,8 @@ def construct(lk: Linkage, phi: float, title: str = "") -> Position:
     deg = math.degrees(phi) % 360.0
     c = Construction(title or f"{lk.title}, φ1 = {deg:.6g}°")
     frame = {name: c.point(name, p, op="a frame point") for name, p in lk.frame.items()}
-    P = Position(phi, c, velocity_plan(c), acceleration_plan(c))
+    vp = velocity_plan(c)
+    P = Position(phi, c, vp, acceleration_plan(c, velocity=vp))
     P.taken = frozenset(lk.owner)
     P.pos.update(frame)
     _crank(lk, P)
@@ -119,13 +120,11 @@ def _crank(lk: Linkage, P: Position) -> None:
     a = P.pn(lk.joint)
     w1 = lk.omega
     nm = f"{lk.joint}{lk.pivot}"
-    P.vel[lk.joint] = P.vp.rigid(a, o, O1, A, w1, f"V_{{{lk.joint}}}", f"ω1 × {lk.pivot}{lk.joint}")
-    P.acc[lk.joint] = P.ap.given(
-        a,
-        (O1 - A) * (w1 * w1),
-        f"a^n_{{{nm}}}",
-        f"a_{lk.joint} = a^n_{nm} = ω1²·l from {lk.joint} to {lk.pivot}",
-    )
+    model = (lk.pivot, lk.joint)
+    why = f"ω1 × {lk.pivot}{lk.joint}"
+    P.vel[lk.joint] = P.vp.rigid(a, o, O1, A, w1, f"V_{{{lk.joint}}}", why, 1, model)
+    # a_A = a^n_AO1 = ω1²·l from A to O1 (the crank turns evenly: ε1 = 0)
+    P.acc[lk.joint] = P.ap.rigid_acc(a, o, O1, A, w1, 0.0, f"a^n_{{{nm}}}", why, 1, model)
     P.omega[1], P.eps[1] = w1, 0.0
     P.handles[1] = [(lk.pivot, o), (lk.joint, a)]
 
@@ -157,13 +156,15 @@ def _point(P: Position, p: PointDef) -> None:
     why = f"link {p.link}"
     if far is not None:
         B, b = far
-        P.vel[p.name] = P.vp.image(n, a, b, P.pos[A], P.pos[B], pos, why=why)
-        P.acc[p.name] = P.ap.image(n, a, b, P.pos[A], P.pos[B], pos, why=why)
+        m3 = (A, B, p.name)
+        P.vel[p.name] = P.vp.image(n, a, b, P.pos[A], P.pos[B], pos, why=why, model=m3)
+        P.acc[p.name] = P.ap.image(n, a, b, P.pos[A], P.pos[B], pos, why=why, model=m3)
     else:
         w, e = P.omega[p.link], P.eps[p.link]
         label = f"{p.name}{A}"
-        P.vel[p.name] = P.vp.rigid(n, a, P.pos[A], pos, w, f"V_{{{label}}}", why)
-        P.acc[p.name] = P.ap.rigid_acc(n, a, P.pos[A], pos, w, e, f"a_{{{label}}}", why)
+        m2 = (A, p.name)
+        P.vel[p.name] = P.vp.rigid(n, a, P.pos[A], pos, w, f"V_{{{label}}}", why, p.link, m2)
+        P.acc[p.name] = P.ap.rigid_acc(n, a, P.pos[A], pos, w, e, f"a_{{{label}}}", why, p.link, m2)
     handles.append((p.name, n))
 
 
@@ -194,10 +195,14 @@ def _rrr(lk: Linkage, g: Group, P: Position) -> None:
     vp.unknown(e2, j, f"V_{{{J}{E2}}}", f"V_{J}{E2} ⊥ {E2}{J}")
     P.vel[J] = vp.absolute(j, f"V_{{{J}}}")
     a, b = g.links
-    P.omega[a] = vp.omega(A1, B, e1, j)
-    P.omega[b] = vp.omega(A2, B, e2, j)
-    n1 = normal(P.omega[a], B, A1, f"n_{J}{E1}", f"a^n_{{{J}{E1}}}", f"a^n_{J}{E1} ∥ {J}{E1}")
-    n2 = normal(P.omega[b], B, A2, f"n_{J}{E2}", f"a^n_{{{J}{E2}}}", f"a^n_{J}{E2} ∥ {J}{E2}")
+    P.omega[a] = vp.omega(A1, B, e1, j, f"ω{a}", a, (E1, J))
+    P.omega[b] = vp.omega(A2, B, e2, j, f"ω{b}", b, (E2, J))
+    n1 = normal(
+        P.omega[a], B, A1, f"n_{J}{E1}", f"a^n_{{{J}{E1}}}", f"a^n_{J}{E1} ∥ {J}{E1}", a, (J, E1)
+    )
+    n2 = normal(
+        P.omega[b], B, A2, f"n_{J}{E2}", f"a^n_{{{J}{E2}}}", f"a^n_{J}{E2} ∥ {J}{E2}", b, (J, E2)
+    )
     ap.solve(
         j,
         Side(e1, B - A1, f"⊥ {E1}{J}", perpendicular=True, terms=(n1,)),
@@ -206,8 +211,8 @@ def _rrr(lk: Linkage, g: Group, P: Position) -> None:
     ap.unknown(n1.head, j, f"a^τ_{{{J}{E1}}}", f"a^τ_{J}{E1} ⊥ {E1}{J}")
     ap.unknown(n2.head, j, f"a^τ_{{{J}{E2}}}", f"a^τ_{J}{E2} ⊥ {E2}{J}")
     P.acc[J] = ap.absolute(j, f"a_{{{J}}}")
-    P.eps[a] = ap.omega(A1, B, e1, j)
-    P.eps[b] = ap.omega(A2, B, e2, j)
+    P.eps[a] = ap.omega(A1, B, e1, j, f"ε{a}", a, (E1, J))
+    P.eps[b] = ap.omega(A2, B, e2, j, f"ε{b}", b, (E2, J))
     P.handles[a] = [(E1, e1), (J, j)]
     P.handles[b] = [(E2, e2), (J, j)]
 
@@ -221,15 +226,17 @@ def _coincident(P: Position, link: int, point: str, name: str) -> tuple[Vec, Vec
     for B, b in handles[1:]:
         if P.pos[A].dist(P.pos[B]) > tol.REL_LENGTH * 1.0e3 * max(P.pos[A].norm, 1.0):
             why = f"the point of link {link} under {point}"
+            m3 = (A, B, f"{point}{link}")
             return (
-                P.vp.image(name, a, b, P.pos[A], P.pos[B], pos, why=why),
-                P.ap.image(name, a, b, P.pos[A], P.pos[B], pos, why=why),
+                P.vp.image(name, a, b, P.pos[A], P.pos[B], pos, why=why, model=m3),
+                P.ap.image(name, a, b, P.pos[A], P.pos[B], pos, why=why, model=m3),
             )
     w, e = P.omega[link], P.eps[link]
     why = f"the point of link {link} under {point}"
+    m2 = (A, f"{point}{link}")
     return (
-        P.vp.rigid(name, a, P.pos[A], pos, w, f"V_{{{point}{link}{A}}}", why),
-        P.ap.rigid_acc(name, a, P.pos[A], pos, w, e, f"a_{{{point}{link}{A}}}", why),
+        P.vp.rigid(name, a, P.pos[A], pos, w, f"V_{{{point}{link}{A}}}", why, link, m2),
+        P.ap.rigid_acc(name, a, P.pos[A], pos, w, e, f"a_{{{point}{link}{A}}}", why, link, m2),
     )
 
 
@@ -274,10 +281,11 @@ def _rrp(lk: Linkage, g: Group, P: Position) -> None:
         _coincident(P, gd.link, J, jg)
         jga = jg
         wg, eg = P.omega[gd.link], P.eps[gd.link]
+    along = "@guide" if gd.fixed else f"{gd.frm}{gd.toward}"
     vp.solve(
         j,
         Side(e, D - B, f"⊥ {E}{J}", perpendicular=True),
-        Side(jg, d, "∥ the guide"),
+        Side(jg, d, "∥ the guide", line=along),
     )
     vp.unknown(e, j, f"V_{{{J}{E}}}", f"V_{J}{E} ⊥ {E}{J}")
     V_rel = vp.between(jg, j)
@@ -285,13 +293,21 @@ def _rrp(lk: Linkage, g: Group, P: Position) -> None:
         vp.unknown(jg, j, f"V_{{{J}{J}{gd.link}}}", f"V_{J}{J}{gd.link} ∥ the guide")
     P.vel[J] = vp.absolute(j, f"V_{{{J}}}")
     P.v_rel[J] = V_rel.dot(d)
-    P.omega[rod] = vp.omega(B, D, e, j)
+    P.omega[rod] = vp.omega(B, D, e, j, f"ω{rod}", rod, (E, J))
     P.omega[slider] = wg
-    nr = normal(P.omega[rod], D, B, f"n_{J}{E}", f"a^n_{{{J}{E}}}", f"a^n_{J}{E} ∥ {J}{E}")
+    nr = normal(
+        P.omega[rod], D, B, f"n_{J}{E}", f"a^n_{{{J}{E}}}", f"a^n_{J}{E} ∥ {J}{E}", rod, (J, E)
+    )
     terms: tuple[Term, ...] = ()
     if not gd.fixed:
         k_term = coriolis(
-            wg, V_rel, f"k_{J}", f"a^k_{{{J}{J}{gd.link}}}", f"a^k = 2ω{gd.link} × V_rel"
+            wg,
+            V_rel,
+            f"k_{J}",
+            f"a^k_{{{J}{J}{gd.link}}}",
+            f"a^k = 2ω{gd.link} × V_rel",
+            gd.link,
+            f"V_{{{J}{J}{gd.link}}}",
         )
         terms = (k_term,)
         P.a_cor[J] = k_term.value
@@ -300,11 +316,11 @@ def _rrp(lk: Linkage, g: Group, P: Position) -> None:
     ap.solve(
         j,
         Side(e, D - B, f"⊥ {E}{J}", perpendicular=True, terms=(nr,)),
-        Side(jga, d, "∥ the guide", terms=terms),
+        Side(jga, d, "∥ the guide", terms=terms, line=along),
     )
     ap.unknown(nr.head, j, f"a^τ_{{{J}{E}}}", f"a^τ_{J}{E} ⊥ {E}{J}")
     P.acc[J] = ap.absolute(j, f"a_{{{J}}}")
-    P.eps[rod] = ap.omega(B, D, e, j)
+    P.eps[rod] = ap.omega(B, D, e, j, f"ε{rod}", rod, (E, J))
     P.eps[slider] = eg
     P.handles[rod] = [(E, e), (J, j)]
     P.handles[slider] = [(J, j)]
@@ -335,26 +351,48 @@ def _rpr(lk: Linkage, g: Group, P: Position) -> None:
     s3 = f"{s}{rocker}"
     vp, ap = P.vp, P.ap
     r = A - Cp
-    vp.solve(s3, Side(cn, r, f"⊥ {C}{S}", perpendicular=True), Side(s, d, "∥ the slide"))
+    along = f"{C}{S}" if g.offset == 0.0 else "@slide"
+    vp.solve(
+        s3,
+        Side(cn, r, f"⊥ {C}{S}", perpendicular=True),
+        Side(s, d, "∥ the slide", line=along),
+    )
     vp.unknown(cn, s3, f"V_{{{S}{rocker}{C}}}", f"V_{S}{rocker}{C} ⊥ {C}{S}")
     vp.unknown(s3, s, f"V_{{{S}{S}{rocker}}}", f"V_{S}{S}{rocker} ∥ the slide")
     V_rel = vp.between(s3, s)
-    w3 = vp.omega(Cp, A, cn, s3)
+    s3m = f"{S}{rocker}"
+    w3 = vp.omega(Cp, A, cn, s3, f"ω{rocker}", rocker, (C, s3m))
     P.omega[block] = P.omega[rocker] = w3
     P.v_rel[S] = V_rel.dot(d)
     k_term = coriolis(w3, V_rel, f"k_{S}", f"a^k_{{{S}{S}{rocker}}}", f"a^k = 2ω{rocker} × V_rel")
     P.a_cor[S] = k_term.value
-    minus_k = Term(-k_term.value, k_term.head, k_term.label, "−a^k (the Coriolis term, reversed)")
+    # the Coriolis term of S3 about the block: 2ω3 × V_S3S = −a^k_SS3
+    minus_k = coriolis(
+        w3,
+        -V_rel,
+        k_term.head,
+        f"a^k_{{{s3m}{S}}}",
+        f"a^k_{s3m}{S} = 2ω{rocker} × V_{s3m}{S}",
+        rocker,
+        f"V_{{{s3m}{S}}}",
+    )
     nr = normal(
-        w3, A, Cp, f"n_{S}{rocker}{C}", f"a^n_{{{S}{rocker}{C}}}", f"a^n_{S}{rocker}{C} ∥ {S}{C}"
+        w3,
+        A,
+        Cp,
+        f"n_{S}{rocker}{C}",
+        f"a^n_{{{S}{rocker}{C}}}",
+        f"a^n_{S}{rocker}{C} ∥ {S}{C}",
+        rocker,
+        (s3m, C),
     )
     ap.solve(
         s3,
         Side(cn, r, f"⊥ {C}{S}", perpendicular=True, terms=(nr,)),
-        Side(s, d, "∥ the slide", terms=(minus_k,)),
+        Side(s, d, "∥ the slide", terms=(minus_k,), line=along),
     )
     ap.unknown(nr.head, s3, f"a^τ_{{{S}{rocker}{C}}}", f"a^τ ⊥ {C}{S}")
-    e3 = ap.omega(Cp, A, cn, s3)
+    e3 = ap.omega(Cp, A, cn, s3, f"ε{rocker}", rocker, (C, s3m))
     P.eps[block] = P.eps[rocker] = e3
     P.handles[block] = [(S, s)]
     P.handles[rocker] = [(C, cn), (S, s3)]
@@ -388,10 +426,12 @@ def _prp(lk: Linkage, g: Group, P: Position) -> None:
     P.slide[block] = P.slide[yoke] = sdir
     s, j = _on_plans(P, S), P.pn(J)
     vp, ap = P.vp, P.ap
-    vp.solve(j, Side(vp.pole, gdir, "∥ the guide"), Side(s, sdir, "∥ the slot"))
+    guide_side = Side(vp.pole, gdir, "∥ the guide", line="@guide")
+    slot_side = Side(s, sdir, "∥ the slot", line="@slot")
+    vp.solve(j, guide_side, slot_side)
     P.vel[J] = vp.absolute(j, f"V_{{{J}}}")
     vp.unknown(j, s, f"V_{{{S}{S}{yoke}}}", f"V_{S}{S}{yoke} ∥ the slot")
-    ap.solve(j, Side(ap.pole, gdir, "∥ the guide"), Side(s, sdir, "∥ the slot"))
+    ap.solve(j, replace(guide_side, start=ap.pole), slot_side)
     P.acc[J] = ap.absolute(j, f"a_{{{J}}}")
     ap.unknown(j, s, f"a^r_{{{S}{S}{yoke}}}", "a^r ∥ the slot")
     for link in g.links:

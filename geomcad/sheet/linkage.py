@@ -41,17 +41,20 @@ from geomcad.sheet.compose import (
 from geomcad.sheet.compose import (
     Layout as Arranged,
 )
+from geomcad.sheet.drawing import SHORT_MM
 from geomcad.sheet.lang import Words, current, per_language
 from geomcad.sheet.motion import Frames, turn
 from geomcad.sheet.scale import Scale
 from geomcad.sheet.scheme import Body, draw_scheme
-from geomcad.sheet.views import AxisSpec, Curve, Diagram, PlanView, Table
+from geomcad.sheet.views import AxisSpec, Curve, Diagram, PlanView, Steps, Table, Text
 
 WORDS = Words(__package__, "linkage")
 
 FORMAT = "A1"
 #: At most this many velocity plans share the first sheet with the mechanism.
 PLANS_ON_SHEET = 12
+#: The width of the order of construction and of the notes (mm).
+ORDER_W = 190.0
 #: Samples of the exact diagrams over a turn.
 DIAGRAM_SAMPLES = 361
 
@@ -86,34 +89,82 @@ def _trees(s: Solved, accel: Sequence[Position]) -> tuple[tuple[Tree, ...], _Mec
     n = len(s.positions)
     second = n > PLANS_ON_SHEET
     mech = _Mechanism(s)
+    # vectors shorter than two arrowheads are drawn as their lettered end point (a note says so)
     vplans = Grid(
         *[
             PlanView(P.vp, title=WORDS("position", i=i, phi=_deg(P.phi)), group="v",
-                     show_scale=False, weight=2.0)
+                     show_scale=False, weight=2.0, min_mm=SHORT_MM)
             for i, P in enumerate(s.positions)
         ],
         title=WORDS("vplans"),
         group="v",
     )  # fmt: skip
-    aplans = Grid(
+    detail = accel[0] if accel else s.positions[0]
+    aplans: Tree = Grid(
         *[
-            PlanView(
-                P.ap, title=WORDS("aplan", phi=_deg(P.phi)), group="a", show_scale=False, weight=2.0
-            )
+            PlanView(P.ap, title=WORDS("aplan", phi=_deg(P.phi)), group="a", show_scale=False,
+                     weight=2.0, min_mm=SHORT_MM)
             for P in accel
         ],
         title=WORDS("aplans"),
         group="a",
-    )
+    )  # fmt: skip
+    if all(P is not detail for P in s.positions):
+        # the velocity plan of the position drawn in detail, beside its acceleration plans
+        vdetail = PlanView(detail.vp, title=WORDS("vplan_detail", phi=_deg(detail.phi)),
+                           group="v", weight=2.0, min_mm=SHORT_MM)  # fmt: skip
+        aplans = Row(vdetail, aplans)
     diagrams = Column(*_diagrams(s), title=_through(s), title_height=3.5)
-    tables = Column(*_tables(s, accel))
+    tables = Column(*_tables(s, accel), _Note(WORDS("short", mm=fmt_number(SHORT_MM))))
+    # the velocity plan's steps, then the acceleration plan's
+    names = [detail.vp.pole, *detail.vp.order, detail.ap.pole, *detail.ap.order]
+    order = Steps(
+        [detail.c.step(n) for n in names],
+        ORDER_W,
+        only=names,
+        title=_order_title(s, detail),
+    )
     if second:
-        return (Column(mech, Row(diagrams, aplans, tables)), vplans), mech, True
+        return (Column(mech, Row(diagrams, aplans, Column(tables, order))), vplans), mech, True
     sheet = Choice(
-        Column(Row(mech, vplans), Row(diagrams, aplans, tables)),
-        Row(Column(mech, diagrams), Column(vplans, Row(aplans, tables))),
+        Column(Row(mech, vplans), Row(diagrams, aplans, Column(tables, order))),
+        Row(Column(mech, diagrams), Column(vplans, Row(aplans, Column(tables, order)))),
+        Column(Row(mech, vplans), Row(diagrams, aplans), Row(tables, order)),
     )
     return (sheet,), mech, False
+
+
+class _Note(Text):
+    """The note on plan vectors drawn as points: its room is kept in the layout, its words
+    drawn only where a plan has such a vector at the scales arranged (:attr:`shown`)."""
+
+    def __init__(self, text: str) -> None:
+        super().__init__(paragraph=text, width=ORDER_W)
+        self.shown = True
+
+    def draw(self, d: Drawing, at: Placed) -> None:
+        if self.shown:
+            super().draw(d, at)
+
+
+def _order_title(s: Solved, P: Position) -> str:
+    """The order's title: the position's angle, and its number where its velocity plan is one
+    of the numbered ones."""
+    i = next((i for i, Q in enumerate(s.positions) if Q is P), None)
+    if i is None:
+        return WORDS("order", phi=_deg(P.phi))
+    return WORDS("order_at", i=i, phi=_deg(P.phi))
+
+
+def _short(s: Solved, accel: Sequence[Position], lays: Sequence[Arranged]) -> bool:
+    """Whether a plan vector comes out shorter than two arrowheads at the arranged scales."""
+    k_v, k_a = lays[-1].scale("v"), lays[0].scale("a")
+    plans = [(P.vp, k_v) for P in [*s.positions, *accel]] + [(P.ap, k_a) for P in accel]
+    return any(
+        k.mm((plan.points[v.head] - plan.points[v.tail]).norm) < SHORT_MM
+        for plan, k in plans
+        for v in plan.vectors
+    )
 
 
 def layout(s: Solved) -> Layout:
@@ -129,6 +180,11 @@ def _arranged(s: Solved) -> tuple[Layout, tuple[Arranged, ...]]:
     trees, mech, second = _trees(s, accel)
     field = Field.of_format(FORMAT)
     lays = tuple(arrange(t, field) for t in trees)
+    short = _short(s, accel, lays)
+    for tree in trees:  # the note, where a plan needs it
+        for view in [tree] if isinstance(tree, View) else tree.views():
+            if isinstance(view, _Note):
+                view.shown = short
     k_v = lays[-1].scale("v")
     out = Layout(lays[0][mech].scale or Scale(1.0), k_v, lays[0].scale("a"), second, accel,
                  trees, mech)  # fmt: skip

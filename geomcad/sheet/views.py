@@ -561,7 +561,7 @@ def step_text(step: Step, words: Words | None = None) -> str:
     recorded kind (:attr:`Step.kind`), key ``step.<kind>``, looked up in ``words`` (a sheet's
     own table, for a problem's own kinds) and then in ``strings/<lang>/views.toml``, filled
     with the step's name (``{name}``) and operands (:attr:`Step.args`: names as label markup,
-    numbers in the language drawn).
+    numbers in the language drawn, ``@key`` the word ``word.key`` of the tables).
 
     A step without a kind, or whose kind no table knows, is an error naming the step: the
     order of construction is written from the recorded steps or not at all."""
@@ -573,7 +573,13 @@ def step_text(step: Step, words: Words | None = None) -> str:
             f"step {step.title!r}: no template for its kind {step.kind!r} "
             f"in the {current()} words (key {key!r})"
         )
-    fields = {k: _arg(v) for k, v in step.args}
+    # an operand ``@key`` is a word: ``word.key`` of the sheet's table or of views.toml
+    fields = {
+        k: table.get(f"word.{v[1:]}") or WORDS(f"word.{v[1:]}")
+        if isinstance(v, str) and v.startswith("@")
+        else _arg(v)
+        for k, v in step.args
+    }
     fields["name"] = _arg(step.name)
     try:
         return template.format(**fields)
