@@ -31,7 +31,7 @@ from geomcad.sheet.lang import Words, per_language
 from geomcad.sheet.placer import DimText
 from geomcad.sheet.text import box as text_box
 from geomcad.sheet.text import parse
-from geomcad.sheet.views import AxisSpec, Curve, Diagram, Table, Text
+from geomcad.sheet.views import AxisSpec, Curve, Diagram, Steps, Table, Text
 
 from .file_common import sheet_formats
 
@@ -65,10 +65,11 @@ def _profile_box(des: CamDesign) -> tuple[float, float, float, float]:
     return min(xs), min(ys), max(xs), max(ys)
 
 
-def _tree(des: CamDesign, results: dict[str, Any]) -> tuple[Tree, Figure, Figure]:
+def _tree(sol: Solution) -> tuple[Tree, Figure, Figure]:
     """The sheet as a composition: the law and its analogues with the pressure angle (or the
     curvature) in a column, the diagram of the cam's size over the tables and notes, and the
     profile (the main view, at the GOST scale the layout picks)."""
+    des: CamDesign = sol.data
     profile = Figure(
         _profile_box(des),
         lambda v: _profile(v, des),
@@ -78,9 +79,9 @@ def _tree(des: CamDesign, results: dict[str, Any]) -> tuple[Tree, Figure, Figure
     )
     graphs = [*_laws(des), _pressure(des)]
     laws = Column(*graphs)
-    data, res = _tables(des, results)
+    data, res = _tables(des, sol.results)
     diagram = _diagram(des)
-    phases, note = _notes(des)
+    phases, note = _notes(des), _order(sol)
     tables = Row(data, res)
     tree = Choice(
         Row(laws, Column(diagram, tables, phases, note), profile),
@@ -99,7 +100,7 @@ WANT_K = 0.001
 def _sized(sol: Solution[CamDesign]) -> tuple[Tree, Figure, Sized]:
     """The views and the format they take: the smallest on which the profile and the diagram
     reach 1:1 and the laws their least size (or the file's ``[sheet] format``)."""
-    tree, profile, diagram = _tree(sol.data, sol.results)
+    tree, profile, diagram = _tree(sol)
     sized = choose(
         tree, {profile: WANT_K, diagram: WANT_K}, sheet_formats(sol.problem.inputs or {})
     )
@@ -479,14 +480,21 @@ def _tables(des: CamDesign, r: dict[str, Any]) -> tuple[Table, Table]:
     return data, Table(res, title=WORDS("results_title"))
 
 
-def _notes(des: CamDesign) -> tuple[Text, Text]:
-    """The phases and laws of the program, and the note on r_0 and the roller."""
+def _notes(des: CamDesign) -> Text:
+    """The phases and laws of the program."""
     laws = ", ".join(
         f"{WORDS('phase_' + ph.kind)} {fmt_number(math.degrees(ph.angle), digits=4)}°"
         + (f" ({WORDS('law_' + ph.law)})" if ph.kind != "dwell" else "")
         for ph in des.spec.program.phases
     )
-    return (
-        Text(paragraph=WORDS("phases", laws=laws), width=NOTE_W),
-        Text(paragraph=WORDS("note"), width=NOTE_W),
-    )
+    return Text(paragraph=WORDS("phases", laws=laws), width=NOTE_W)
+
+
+#: The recorded steps the order of construction lists (constructions/file_cam.py), in order.
+ORDER = ("S(φ)", "zone", "ρ-condition", "O_min", "r0_min", "r0", "r_roller", "profile")
+
+
+def _order(sol: Solution) -> Steps:
+    """The order of construction, written from the design's recorded steps."""
+    names = [n for n in ORDER if n in sol.construction]
+    return Steps(sol.construction, width=NOTE_W, only=names, words=WORDS)

@@ -324,7 +324,7 @@ def test_the_format_is_the_smallest_that_reaches_the_subjects_scale() -> None:
     from geomcad.sheet.compose import Field, arrange
 
     sol = solution("cam-flat")
-    tree, profile, diagram = sheets_cam._tree(sol.data, sol.results)
+    tree, profile, diagram = sheets_cam._tree(sol)
     wants = {profile: sheets_cam.WANT_K, diagram: sheets_cam.WANT_K}
     got = formats.choose(tree, wants)
     assert (got.fmt, got.landscape) == ("A2", True)
@@ -387,3 +387,24 @@ def test_library_solve_takes_a_file_and_its_sheet_scales_come_from_the_sheet() -
     assert sol.scales["l"] == pytest.approx(0.00025, rel=1e-12)  # the mesh at 4:1 on A1
     with pytest.raises(geomcad.ParameterError, match="is a file"):
         geomcad.solve(str(root / "cam-flat.toml"), stroke=0.02)
+
+
+@pytest.mark.parametrize("name", ["cam-translating-roller", "cam-rocking-roller", "cam-flat"])
+def test_cam_order_of_construction_is_the_recorded_steps(name: str) -> None:
+    """The cam sheet's order of construction: one numbered item per recorded design step (by
+    its kind's template), with the recorded values in the language drawn."""
+    from geomcad_constructions import sheets_cam
+
+    from geomcad.sheet.lang import language
+
+    sol = solution(name)
+    listed = [n for n in sheets_cam.ORDER if n in sol.construction]
+    assert listed[0] == "S(φ)" and listed[-1] == "profile"
+    for lang, r0 in (("ru", "r_0 = {} мм"), ("en", "r_0 = {} mm")):
+        with language(lang):  # type: ignore[arg-type]
+            order = sheets_cam._order(sol)
+        text = " ".join(order.lines)
+        numbered = [t for t in order.lines if t.split(". ", 1)[0].isdigit()]
+        assert len(numbered) == len(listed)
+        value = f"{float(sol.results['r0']) * 1000:g}"  # type: ignore[arg-type]
+        assert r0.format(value) in text
