@@ -65,11 +65,11 @@ def _profile_box(des: CamDesign) -> tuple[float, float, float, float]:
     return min(xs), min(ys), max(xs), max(ys)
 
 
-def _tree(sol: Solution) -> tuple[Tree, Figure, Figure]:
+def _tree(sol: Solution[CamDesign]) -> tuple[Tree, Figure, Figure]:
     """The sheet as a composition: the law and its analogues with the pressure angle (or the
     curvature) in a column, the diagram of the cam's size over the tables and notes, and the
     profile (the main view, at the GOST scale the layout picks)."""
-    des: CamDesign = sol.data
+    des = sol.data
     profile = Figure(
         _profile_box(des),
         lambda v: _profile(v, des),
@@ -494,7 +494,7 @@ def _notes(des: CamDesign) -> Text:
 ORDER = ("S(φ)", "zone", "ρ-condition", "O_min", "r0_min", "r0", "r_roller", "profile")
 
 
-def _order(sol: Solution) -> Steps:
+def _order(sol: Solution[CamDesign]) -> Steps:
     """The order of construction, written from the design's recorded steps."""
     names = [n for n in ORDER if n in sol.construction]
     return Steps(sol.construction, width=NOTE_W, only=names, words=WORDS)
