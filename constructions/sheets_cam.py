@@ -97,26 +97,26 @@ WANT_K = 0.001
 
 
 @per_language
-def _sized(sol: Solution[CamDesign]) -> tuple[Tree, Figure, Sized]:
+def _sized(sol: Solution[CamDesign]) -> tuple[Tree, Figure, Figure, Sized]:
     """The views and the format they take: the smallest on which the profile and the diagram
     reach 1:1 and the laws their least size (or the file's ``[sheet] format``)."""
     tree, profile, diagram = _tree(sol)
     sized = choose(
         tree, {profile: WANT_K, diagram: WANT_K}, sheet_formats(sol.problem.inputs or {})
     )
-    return tree, profile, sized
+    return tree, profile, diagram, sized
 
 
 def scales(sol: Solution[CamDesign]) -> dict[str, float]:
     """k_l of the profile view: the GOST scale the layout gives it (``Problem.scales``)."""
-    _, profile, sized = _sized(sol)
+    _, profile, _, sized = _sized(sol)
     scale = sized.layout[profile].scale
     assert scale is not None
     return {"l": scale.k}
 
 
 def sheets(sol: Solution[CamDesign]) -> list[tuple[str, Sheet]]:
-    tree, profile, sized = _sized(sol)
+    tree, profile, _, sized = _sized(sol)
     k = sized.layout[profile].scale
     assert k is not None
     tb = TitleBlock(title=WORDS("tb_title"), designation=WORDS("designation"), scale=k.ratio_text())

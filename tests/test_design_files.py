@@ -317,25 +317,25 @@ def test_sheets_pass_the_layout_checker(name: str) -> None:
 def test_the_format_is_the_smallest_that_reaches_the_subjects_scale() -> None:
     """A cam sheet on the smallest format where its profile and diagram reach 1:1: every
     smaller candidate fails (a view under 1:1 or something overflowing), and the views grow on
-    the format taken; a format the file asks for is kept."""
-    from geomcad_constructions import sheets_cam
+    the format taken; a format the file asks for is the only one tried."""
+    from geomcad_constructions import file_common, sheets_cam
 
     from geomcad.sheet import formats
     from geomcad.sheet.compose import Field, arrange
 
     sol = solution("cam-flat")
-    tree, profile, diagram = sheets_cam._tree(sol)
+    tree, profile, diagram, got = sheets_cam._sized(sol)  # the arrangement the sheet drew
     wants = {profile: sheets_cam.WANT_K, diagram: sheets_cam.WANT_K}
-    got = formats.choose(tree, wants)
     assert (got.fmt, got.landscape) == ("A2", True)
     assert formats.meets(got.layout, wants) and got.layout.fits
     assert got.layout[profile].scale.k < sheets_cam.WANT_K  # type: ignore[union-attr]  # 2:1
     for fmt, land in formats.candidates(("A4", "A3")):
-        lay = arrange(tree, Field.of_format(fmt, land))
-        assert not (lay.fits and formats.meets(lay, wants)), (fmt, land)
-    asked = documents.solve(str(EX / "cam-flat.toml"), [("sheet.format", "A1")])
-    ((_, sheet),) = asked.sheets()
-    assert (sheet.width, sheet.height) in ((841.0, 594.0), (594.0, 841.0))
+        field = Field.of_format(fmt, land)
+        if formats._may_fit(tree, wants, field):
+            lay = arrange(tree, field)
+            assert not (lay.fits and formats.meets(lay, wants)), (fmt, land)
+    assert file_common.sheet_formats({"sheet": {"format": "A1"}}) == ("A1",)
+    assert file_common.sheet_formats({"sheet": {"student": "x"}}) == formats.SIZES
 
 
 def test_a_format_the_file_asks_for_is_checked(capsys: pytest.CaptureFixture[str]) -> None:
