@@ -504,9 +504,11 @@ def _plan(
     wmax = max(abs(rp.omega(ln)) for ln in rp.ends) or 1.0
     H_mm = min(H_mm, (half_mm - 5.0) * kv.k / (wmax * k.k))
     H_model = H_mm * k.k
-    d.text(WORDS("plan_factor", label=kv.label()), pv.p(Vec(-half, top)), 3.5)
     sheet_y = {name: pv.p(Vec(0.0, e.y))[1] for name, e in plan.ends.items()}
     top_y = min(sheet_y.values()) - 10.0
+    # the factor over the plan's axis (not at the top of the view's room: the plan spans the
+    # radii of the train, the room the whole scheme's height)
+    d.text(WORDS("plan_factor", label=kv.label()), (pv.p(Vec(-half, 0.0))[0], top_y - 3.0), 3.5)
     d.sheet.add(_line((px, y_base + 5.0), (px, top_y)))
     for name, e in plan.ends.items():
         sx = px + e.x / kv.k
