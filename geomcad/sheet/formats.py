@@ -119,6 +119,11 @@ def choose(
     fits with every view of ``wants`` at its scale or larger (module docstring); else the
     largest of them, in its better orientation."""
     wants = wants or {}
+    # the layout's search seeks the wanted scales itself: a wanted view's ``readable`` length
+    # (at least ``readable_mm`` on paper, a term of the search's score) is raised to the model
+    # length that ``readable_mm`` stands for at its wanted scale
+    for v, k in wants.items():
+        v.readable = max(v.readable, k * v.readable_mm)
     largest = max(formats, key=lambda f: FORMATS[f][0] * FORMATS[f][1])
     fallback: list[Sized] = []
     for fmt, land in candidates(formats):
