@@ -493,7 +493,7 @@ def _plan(
     factor written over it, and the angle diagram below the central axis."""
     d = pv.d
     k = pv.scale
-    half, top = room
+    half = room[0]
     half_mm = k.mm(half)
     px, y_base = pv.p(Vec(0.0, 0.0))
     H_mm = 35.0
