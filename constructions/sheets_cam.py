@@ -48,6 +48,8 @@ MM = 1000.0
 NOTE_W = 130.0
 #: Paper room (mm) round the cam's centre kept for its letter: the radius vectors begin there.
 O_ROOM = 6.0
+#: The flat face drawn this far (mm) past its point of contact in each turned position.
+FACE_MM = 6.0
 #: The law graphs' least and preferred sizes (mm).
 LAW_LEAST, LAW_PREFER = (130.0, 70.0), (280.0, 120.0)
 
@@ -385,6 +387,13 @@ def _profile(v: Viewport, des: CamDesign) -> None:
                 des.e if spec.follower != "flat" else 0.0
             )
             _ray(v, foot, Vec(*pitch[i]) + up * k.model(5.0), k.model(O_ROOM))
+            if spec.follower == "flat":
+                # the face in its turned position (⊥ the axis, r0 + S_i from O), out past its
+                # point of contact: the profile is the envelope of these lines
+                P, C = Vec(*pitch[i]), Vec(*contact[i])
+                side = up.perp()
+                reach = abs((C - P).dot(side)) + k.model(FACE_MM)
+                v.seg(P - side * reach, P + side * reach, "construction")
     else:
         A = np.asarray(des.pivot)
         m = spec.program.motion(div.phi[:n])
