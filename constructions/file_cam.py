@@ -47,6 +47,8 @@ from .file_common import Table, check_top
 KIND = "cam"
 FOLLOWERS = ("knife", "roller", "flat")
 MOTIONS = ("translating", "rocking")
+#: Metres to the millimetres the order of construction states.
+MM = 1000.0
 #: The roller rule: r_roller ≤ ROLLER_RHO·ρ_min(pitch curve) and ≤ ROLLER_R0·r0.
 ROLLER_RHO = 0.7
 ROLLER_R0 = 0.4
@@ -230,11 +232,23 @@ def design(spec: CamSpec) -> tuple[CamDesign, Construction, dict[str, Any]]:
     prog = spec.program
     c = Construction(f"cam design: {spec.motion} {spec.follower} follower")
     c.point("B0", (0.0, 0.0), note="the follower's lowest position (the diagram's origin)")
+    c.record(
+        "S(φ)",
+        "the law phase by phase over the turn, its analogues by graphical differentiation",
+        prog,
+        role="hidden",
+        kind="cam_law",
+        args={"n": float(spec.divisions)},
+    )
     zone: cd.TranslatingZone | cd.RockerZone | None = None
     flat_phi = math.nan
     if spec.follower == "flat":
         r0_min, flat_phi = c.run(
-            "ρ-condition", cd.STEP_CONVEX, lambda: cd.flat_r0_min(prog, spec.rho_allowed)
+            "ρ-condition",
+            cd.STEP_CONVEX,
+            lambda: cd.flat_r0_min(prog, spec.rho_allowed),
+            kind="cam_convex",
+            args={"rho": spec.rho_allowed * MM},
         )
         cmin = (0.0, -r0_min)
     elif spec.motion == "translating":
@@ -243,6 +257,8 @@ def design(spec: CamSpec) -> tuple[CamDesign, Construction, dict[str, Any]]:
             cd.STEP_ZONE,
             lambda: cd.translating_zone(prog, spec.sigma, spec.alpha_rise, spec.alpha_return),
             role="construction",
+            kind="cam_zone",
+            args={"rise": to_deg(spec.alpha_rise), "ret": to_deg(spec.alpha_return)},
         )
         assert isinstance(zone, cd.TranslatingZone)
         cmin = zone.nearest() if spec.offset is None else (-spec.offset, zone.g(-spec.offset))
@@ -254,19 +270,28 @@ def design(spec: CamSpec) -> tuple[CamDesign, Construction, dict[str, Any]]:
             cd.STEP_ROCKER_ZONE,
             lambda: cd.rocker_zone(prog, geom, spec.alpha_rise, spec.alpha_return),
             role="construction",
+            kind="cam_rocker_zone",
+            args={"rise": to_deg(spec.alpha_rise), "ret": to_deg(spec.alpha_return)},
         )
         assert isinstance(zone, cd.RockerZone)
         z = zone
         if spec.pivot_distance is None:
-            cmin = c.run("O_min", "the zone's point nearest B0", z.nearest)
+            cmin = c.run("O_min", "the zone's point nearest B0", z.nearest, kind="cam_nearest")
         else:
             a_w = spec.pivot_distance
             cmin = c.run("O_min", "zone ∩ circle(A, a_w) nearest B0",
-                         lambda: cd.rocker_on_circle(z, a_w))  # fmt: skip
+                         lambda: cd.rocker_on_circle(z, a_w), kind="cam_on_circle",
+                         args={"a": a_w * MM})  # fmt: skip
         r0_min = math.hypot(*cmin)
     if not r0_min > 0.0:
         raise ConstructionError(STEP_R0, "r0_min = 0: the zone reaches B0")
-    c.value("r0_min", r0_min, "|O B0| at the zone's point")
+    c.value(
+        "r0_min",
+        r0_min,
+        "|O B0| at the zone's point",
+        kind="cam_flat_r0_min" if spec.follower == "flat" else "cam_r0_min",
+        args={"r": r0_min * MM},
+    )
     if spec.r0 is not None:
         r0 = spec.r0
         low = (
@@ -285,7 +310,8 @@ def design(spec: CamSpec) -> tuple[CamDesign, Construction, dict[str, Any]]:
             )
     else:
         r0 = _round_up(r0_min, spec.r0_step, strict=spec.follower == "flat")
-    c.value("r0", r0, STEP_R0)
+    c.value("r0", r0, STEP_R0, kind="cam_r0_given" if spec.r0 is not None else "cam_r0",
+            args={"r": r0 * MM, "step": spec.r0_step * MM})  # fmt: skip
     centre = _centre(spec, zone, cmin, r0_min, r0)
     e = -centre[0] if spec.motion == "translating" else 0.0
     if spec.follower == "flat":
@@ -308,7 +334,8 @@ def design(spec: CamSpec) -> tuple[CamDesign, Construction, dict[str, Any]]:
             r_r = math.floor(cap / spec.r0_step * (1.0 + tol.DERIVED)) * spec.r0_step
             if r_r <= 0.0:
                 r_r = cap
-        c.value("r_roller", r_r, STEP_ROLLER)
+        c.value("r_roller", r_r, STEP_ROLLER, kind="cam_roller",
+                args={"r": r_r * MM, "rho": rho_p * MM})  # fmt: skip
     profile: CamProfile | cd.RockerProfile
     pivot = (0.0, 0.0)
     if spec.motion == "translating":
@@ -319,6 +346,7 @@ def design(spec: CamSpec) -> tuple[CamDesign, Construction, dict[str, Any]]:
             profile_step_name(spec.follower).split(" = ", 1)[1] + ", over the turn",
             lambda: cam_profile(prog, f, closed=True),
             role="result",
+            kind=f"cam_profile_{spec.follower}",
         )
         assert isinstance(profile, CamProfile)
         p_max = pressure_angle_max(prog, profile)
@@ -332,6 +360,7 @@ def design(spec: CamSpec) -> tuple[CamDesign, Construction, dict[str, Any]]:
             "rocker's profile by inversion, over the turn",
             lambda: cd.rocker_profile(prog, A, spec.arm, prog.H, spec.sigma, r_r),
             role="result",
+            kind=f"cam_profile_rocker_{spec.follower}",
         )
         assert isinstance(profile, cd.RockerProfile)
         cd.check_rocker_profile(prog, profile, r_r, f"profile ({step})")

@@ -115,7 +115,8 @@ def check_top(
     data: Mapping[str, Any], kind: str, allowed: Iterable[str] = ("title", "sheet")
 ) -> str:
     """The file's top level: the marking table ``kind`` and, optionally, a ``title`` string and
-    a ``[sheet]`` table of title-block data (``lang = "en"`` among them), checked here."""
+    a ``[sheet]`` table of title-block data (``lang = "en"`` among them) and the sheet
+    ``format`` (:func:`sheet_formats`), checked here."""
     from geomcad.sheet.titleblock import TitleData
 
     ok = {kind, *allowed}
@@ -125,8 +126,33 @@ def check_top(
                 k, data[k], f"unknown top-level key in a [{kind}] file (it knows {', '.join(ok)})"
             )
     if "sheet" in data:
-        TitleData.from_mapping(data["sheet"], "sheet")
+        TitleData.from_mapping(title_fields(data["sheet"]), "sheet")
+        sheet_formats(data)
     title = data.get("title", "")
     if not isinstance(title, str):
         raise ParameterError("title", title, "must be a string")
     return title
+
+
+#: The key of a file's ``[sheet]`` table that asks for a format instead of the one chosen by
+#: the sheet's content (:mod:`geomcad.sheet.formats`); the table's other keys are title-block data.
+FORMAT_KEY = "format"
+
+
+def title_fields(table: Any) -> Any:
+    """A ``[sheet]`` table without its :data:`FORMAT_KEY` (the title-block data)."""
+    if isinstance(table, Mapping):
+        return {k: v for k, v in table.items() if k != FORMAT_KEY}
+    return table
+
+
+def sheet_formats(data: Mapping[str, Any]) -> tuple[str, ...]:
+    """The formats a file's sheets may take: the one its ``[sheet]`` table asks for
+    (``format = "A2"``), else every one of :data:`geomcad.sheet.formats.SIZES` (the sheet module
+    takes the smallest its content allows)."""
+    from geomcad.sheet import formats
+
+    table = data.get("sheet")
+    if isinstance(table, Mapping) and table.get(FORMAT_KEY) is not None:
+        return (formats.check(table[FORMAT_KEY], f"sheet.{FORMAT_KEY}"),)
+    return formats.SIZES

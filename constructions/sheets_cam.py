@@ -18,15 +18,22 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from geomcad import tol
 from geomcad.geom import Vec
 from geomcad.kinematics import cam_design as cd
 from geomcad.kinematics.cams import Follower, at_angles, invert
 from geomcad.kinematics.motion_laws import Motion
-from geomcad.sheet import TitleBlock, Viewport, fmt_number, start
-from geomcad.sheet.compose import Choice, Column, Field, Figure, Row, Tree, arrange, compose
+from geomcad.sheet import TitleBlock, Viewport, fmt_number
+from geomcad.sheet.compose import Choice, Column, Figure, Row, Tree, compose
+from geomcad.sheet.formats import Sized, choose
 from geomcad.sheet.graph import Graph
-from geomcad.sheet.lang import Words
-from geomcad.sheet.views import AxisSpec, Curve, Diagram, Table, Text
+from geomcad.sheet.lang import Words, per_language
+from geomcad.sheet.placer import DimText
+from geomcad.sheet.text import box as text_box
+from geomcad.sheet.text import parse
+from geomcad.sheet.views import AxisSpec, Curve, Diagram, Steps, Table, Text
+
+from .file_common import sheet_formats
 
 if TYPE_CHECKING:
     from geomcad.problem import Solution
@@ -38,9 +45,13 @@ if TYPE_CHECKING:
 WORDS = Words(__package__, "sheets_cam")
 MM = 1000.0
 #: Width (mm) of the notes under the tables.
-NOTE_W = 215.0
+NOTE_W = 130.0
+#: Paper room (mm) round the cam's centre kept for its letter: the radius vectors begin there.
+O_ROOM = 6.0
+#: The flat face drawn this far (mm) past its point of contact in each turned position.
+FACE_MM = 6.0
 #: The law graphs' least and preferred sizes (mm).
-LAW_LEAST, LAW_PREFER = (150.0, 70.0), (280.0, 120.0)
+LAW_LEAST, LAW_PREFER = (130.0, 70.0), (280.0, 120.0)
 
 
 def _profile_box(des: CamDesign) -> tuple[float, float, float, float]:
@@ -56,10 +67,11 @@ def _profile_box(des: CamDesign) -> tuple[float, float, float, float]:
     return min(xs), min(ys), max(xs), max(ys)
 
 
-def _tree(des: CamDesign, results: dict[str, Any]) -> tuple[Tree, Figure]:
+def _tree(sol: Solution[CamDesign]) -> tuple[Tree, Figure, Figure]:
     """The sheet as a composition: the law and its analogues with the pressure angle (or the
     curvature) in a column, the diagram of the cam's size over the tables and notes, and the
     profile (the main view, at the GOST scale the layout picks)."""
+    des = sol.data
     profile = Figure(
         _profile_box(des),
         lambda v: _profile(v, des),
@@ -67,35 +79,51 @@ def _tree(des: CamDesign, results: dict[str, Any]) -> tuple[Tree, Figure]:
         margin=8.0,
         weight=3.0,
     )
-    laws = Column(*_laws(des), _pressure(des))
-    data, res = _tables(des, results)
+    graphs = [*_laws(des), _pressure(des)]
+    laws = Column(*graphs)
+    data, res = _tables(des, sol.results)
     diagram = _diagram(des)
-    phases, note = _notes(des)
+    phases, note = _notes(des), _order(sol)
     tables = Row(data, res)
     tree = Choice(
         Row(laws, Column(diagram, tables, phases, note), profile),
         Row(laws, Column(Row(diagram, profile), Row(tables, Column(phases, note)))),
+        Column(Row(*graphs), Row(diagram, profile, Column(data, res, phases, note))),
     )
-    return tree, profile
+    return tree, profile, diagram
+
+
+#: The profile and the diagram of the cam's size at 1:1 or larger (where a sheet up to A1 allows):
+#: the scale a cam is drawn and measured at.
+WANT_K = 0.001
+
+
+@per_language
+def _sized(sol: Solution[CamDesign]) -> tuple[Tree, Figure, Figure, Sized]:
+    """The views and the format they take: the smallest on which the profile and the diagram
+    reach 1:1 and the laws their least size (or the file's ``[sheet] format``)."""
+    tree, profile, diagram = _tree(sol)
+    sized = choose(
+        tree, {profile: WANT_K, diagram: WANT_K}, sheet_formats(sol.problem.inputs or {})
+    )
+    return tree, profile, diagram, sized
 
 
 def scales(sol: Solution[CamDesign]) -> dict[str, float]:
     """k_l of the profile view: the GOST scale the layout gives it (``Problem.scales``)."""
-    tree, profile = _tree(sol.data, sol.results)
-    scale = arrange(tree, Field.of_format("A1"))[profile].scale
+    _, profile, _, sized = _sized(sol)
+    scale = sized.layout[profile].scale
     assert scale is not None
     return {"l": scale.k}
 
 
 def sheets(sol: Solution[CamDesign]) -> list[tuple[str, Sheet]]:
-    des = sol.data
-    tree, profile = _tree(des, sol.results)
-    lay = arrange(tree, Field.of_format("A1"))
-    k = lay[profile].scale
+    tree, profile, _, sized = _sized(sol)
+    k = sized.layout[profile].scale
     assert k is not None
     tb = TitleBlock(title=WORDS("tb_title"), designation=WORDS("designation"), scale=k.ratio_text())
-    d = start("A1", tb)
-    compose(d, tree, layout=lay)
+    d = sized.start(tb)
+    compose(d, tree, layout=sized.layout)
     return [("", d.finish())]
 
 
@@ -306,9 +334,29 @@ def _diagram_draw(
     if (Om - O).norm > kl.model(3.0):
         v.label(Om, "O_{min}", prefer=(1.0, 0.0))
     r0 = fmt_number(des.r0 * MM, digits=4)
-    # beside B0O near O, between it and the S axis (where they are furthest apart)
-    side = 1.0 if O.x <= 0.0 else -1.0
-    v.label(O + (B0 - O) * 0.3, f"r_0 = {r0}", 2.5, prefer=(side, 0.0))
+    _along(v, O, B0, f"r_0 = {r0}", 2.5)
+
+
+def _along(v: Viewport, a: Vec, b: Vec, text: str, height: float) -> None:
+    """``text`` written along the segment ``ab`` (a radius named on its line, GOST 2.307: above
+    it, reading from the bottom or the right), where it crosses no drawn line: the places along
+    the segment from its middle out, above it first."""
+    pa, pb = v.p(a), v.p(b)
+    length = math.dist(pa, pb)
+    if length <= 0.0:
+        return
+    ux, uy = (pb[0] - pa[0]) / length, (pb[1] - pa[1]) / length
+    tx, ty = (ux, uy) if ux > tol.DERIVED or (abs(ux) <= tol.DERIVED and uy < 0.0) else (-ux, -uy)
+    upx, upy = ty, -tx
+    width, rise, down = text_box(parse(text), height)
+    cands: list[tuple[float, float]] = []
+    for lift in (1.0 + down, -(1.0 + rise), 3.0 + down, -(3.0 + rise)):
+        for f in sorted((i / 20.0 for i in range(1, 20)), key=lambda f: abs(f - 0.5)):
+            cx = pa[0] + (pb[0] - pa[0]) * f - tx * width / 2.0 + upx * lift
+            cy = pa[1] + (pb[1] - pa[1]) * f - ty * width / 2.0 + upy * lift
+            cands.append((cx, cy))
+    angle = math.degrees(math.atan2(-ty, tx))
+    v.d.dims.append(DimText(text, height, angle, (tx, ty), tuple(cands), (width, rise, down)))
 
 
 # -- the profile -----------------------------------------------------------------------------------
@@ -338,7 +386,14 @@ def _profile(v: Viewport, des: CamDesign) -> None:
             foot = Vec(1.0, 0.0).rotated(-spec.sigma * float(div.phi[i])) * (
                 des.e if spec.follower != "flat" else 0.0
             )
-            v.seg(foot, Vec(*pitch[i]) + up * k.model(5.0), "construction")
+            _ray(v, foot, Vec(*pitch[i]) + up * k.model(5.0), k.model(O_ROOM))
+            if spec.follower == "flat":
+                # the face in its turned position (⊥ the axis, r0 + S_i from O), out past its
+                # point of contact: the profile is the envelope of these lines
+                P, C = Vec(*pitch[i]), Vec(*contact[i])
+                side = up.perp()
+                reach = abs((C - P).dot(side)) + k.model(FACE_MM)
+                v.seg(P - side * reach, P + side * reach, "construction")
     else:
         A = np.asarray(des.pivot)
         m = spec.program.motion(div.phi[:n])
@@ -348,19 +403,39 @@ def _profile(v: Viewport, des: CamDesign) -> None:
         for i in range(n):
             v.seg(Vec(*Ai[i]), Vec(*pitch[i]), "construction")
             v.dot(Vec(*Ai[i]), "point")
+    # the radius vectors run from the centre's letter to the division points: where twenty of
+    # them meet, O sits in their widest gap with the rays begun just past it
+    start = k.model(O_ROOM)
     for i in range(n):
         if spec.follower == "roller":
             v.circle(Vec(*pitch[i]), des.r_roller, "construction")
         B = Vec(*contact[i])
-        v.seg(o, B, "construction")
+        _ray(v, o, B, start)
         v.dot(B, "point")
-        v.label(B, str(i), height=2.5)
-    # O in the widest gap between the radius vectors
+        # outward first: inside the roller's circle, clear of the crowd of rays near O
+        v.label(B, str(i), height=2.5, prefer=(B.x, B.y))
     ang = np.sort(np.arctan2(contact[:n, 1], contact[:n, 0]))
     gaps = np.diff(np.append(ang, ang[0] + 2.0 * math.pi))
     j = int(np.argmax(gaps))
     mid = float(ang[j] + gaps[j] / 2.0)
     v.label(o, "O", prefer=(math.cos(mid), math.sin(mid)), clear=1.0)
+
+
+def _ray(v: Viewport, a: Vec, b: Vec, room: float) -> None:
+    """The construction segment ``ab`` less its part within ``room`` of the cam's centre (where
+    the radius vectors and the follower's axes meet, the room of the letter O)."""
+    d = b - a
+    t0 = 0.0
+    if d.norm > 0.0:
+        # the segment's points at distance ``room`` from O: |a + t·d| = room
+        p, q = a.dot(d) / d.dot(d), (a.dot(a) - room * room) / d.dot(d)
+        disc = p * p - q
+        if disc > 0.0:
+            lo, hi = -p - math.sqrt(disc), -p + math.sqrt(disc)
+            if lo <= 0.0 < hi:
+                t0 = hi
+    if t0 < 1.0:
+        v.seg(a + d * t0, b, "construction")
 
 
 def _rocker_points(
@@ -414,14 +489,21 @@ def _tables(des: CamDesign, r: dict[str, Any]) -> tuple[Table, Table]:
     return data, Table(res, title=WORDS("results_title"))
 
 
-def _notes(des: CamDesign) -> tuple[Text, Text]:
-    """The phases and laws of the program, and the note on r_0 and the roller."""
+def _notes(des: CamDesign) -> Text:
+    """The phases and laws of the program."""
     laws = ", ".join(
         f"{WORDS('phase_' + ph.kind)} {fmt_number(math.degrees(ph.angle), digits=4)}°"
         + (f" ({WORDS('law_' + ph.law)})" if ph.kind != "dwell" else "")
         for ph in des.spec.program.phases
     )
-    return (
-        Text(paragraph=WORDS("phases", laws=laws), width=NOTE_W),
-        Text(paragraph=WORDS("note"), width=NOTE_W),
-    )
+    return Text(paragraph=WORDS("phases", laws=laws), width=NOTE_W)
+
+
+#: The recorded steps the order of construction lists (constructions/file_cam.py), in order.
+ORDER = ("S(φ)", "zone", "ρ-condition", "O_min", "r0_min", "r0", "r_roller", "profile")
+
+
+def _order(sol: Solution[CamDesign]) -> Steps:
+    """The order of construction, written from the design's recorded steps."""
+    names = [n for n in ORDER if n in sol.construction]
+    return Steps(sol.construction, width=NOTE_W, only=names, words=WORDS)

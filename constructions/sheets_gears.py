@@ -31,12 +31,14 @@ from geomcad.sheet import (
     Viewport,
     fmt_number,
     nice_factor,
-    start,
 )
-from geomcad.sheet.compose import Column, Field, Figure, Row, Tree, arrange, compose
+from geomcad.sheet.compose import Choice, Column, Figure, Row, Tree, compose
+from geomcad.sheet.formats import Sized, choose
 from geomcad.sheet.graph import Graph
-from geomcad.sheet.lang import Words
+from geomcad.sheet.lang import Words, per_language
 from geomcad.sheet.views import AxisSpec, Curve, Diagram, Table, Text
+
+from .file_common import sheet_formats
 
 if TYPE_CHECKING:
     from geomcad.problem import Solution
@@ -47,8 +49,9 @@ if TYPE_CHECKING:
 #: The sheets' words, per language (constructions/strings/<lang>/sheets_gears.toml).
 WORDS = Words(__package__, "sheets_gears")
 MM = 1000.0
-#: Width (mm) of the notes under the tables.
+#: Width (mm) of the notes under the tables (the pair's; the train's).
 NOTE_W = 200.0
+PLANETARY_NOTE_W = 140.0
 
 
 def _mesh_box(p: gd.GearPair, me: gd.Meshing) -> tuple[float, float, float, float]:
@@ -81,17 +84,43 @@ def _pair_tree(des: GearsDesign) -> tuple[Tree, Figure]:
     return Row(mesh, right), mesh
 
 
+#: The meshing drawing at a scale where a tooth reads: its height 2.25·m at least this (mm).
+TOOTH_MM = 40.0
+#: The planetary scheme (and the plan on its radii) at a scale where the sun reads: its pitch
+#: circle at least this across (mm).
+SUN_MM = 15.0
+
+
+@per_language
+def _pair_sized(sol: Solution[GearsDesign]) -> tuple[Tree, Figure, Sized]:
+    """The pair's views on the smallest format where the mesh's teeth read (or the file's)."""
+    des = sol.data
+    tree, mesh = _pair_tree(des)
+    assert des.pair is not None
+    want = 2.25 * des.pair.gear1.m / TOOTH_MM
+    return tree, mesh, choose(tree, {mesh: want}, sheet_formats(sol.problem.inputs or {}))
+
+
+@per_language
+def _planetary_sized(sol: Solution[GearsDesign]) -> tuple[Tree, Figure, Sized]:
+    """The train's views on the smallest format where the sun reads (or the file's)."""
+    des = sol.data
+    pp = des.spec.planetary
+    assert pp is not None
+    tree, scheme = _planetary_tree(des)
+    want = pp.m * min(des.candidates[0].z) / SUN_MM
+    return tree, scheme, choose(tree, {scheme: want}, sheet_formats(sol.problem.inputs or {}))
+
+
 def scales(sol: Solution[GearsDesign]) -> dict[str, float]:
     """k_l of the meshing drawing (or of the planetary scheme), as the layout chooses it
     (``Problem.scales``)."""
     des = sol.data
     if des.pair is not None and des.meshing is not None:
-        tree, mesh = _pair_tree(des)
-        scale = arrange(tree, Field.of_format("A1"))[mesh].scale
-        assert scale is not None
-        return {"l": scale.k}
-    tree, scheme = _planetary_tree(des)
-    scale = arrange(tree, Field.of_format("A1"))[scheme].scale
+        _, view, sized = _pair_sized(sol)
+    else:
+        _, view, sized = _planetary_sized(sol)
+    scale = sized.layout[view].scale
     assert scale is not None
     return {"l": scale.k}
 
@@ -110,9 +139,8 @@ def sheets(sol: Solution[GearsDesign]) -> list[tuple[str, Sheet]]:
 
 
 def _pair_sheet(sol: Solution[GearsDesign], des: GearsDesign) -> Sheet:
-    tree, mesh = _pair_tree(des)
-    lay = arrange(tree, Field.of_format("A1"))
-    k = lay[mesh].scale
+    tree, mesh, sized = _pair_sized(sol)
+    k = sized.layout[mesh].scale
     assert k is not None
     tb = TitleBlock(
         title=WORDS("tb_pair"),
@@ -120,8 +148,8 @@ def _pair_sheet(sol: Solution[GearsDesign], des: GearsDesign) -> Sheet:
         scale=k.ratio_text(),
         sheets=2 if des.spec.planetary is not None else 1,
     )
-    d = start("A1", tb)
-    compose(d, tree, layout=lay)
+    d = sized.start(tb)
+    compose(d, tree, layout=sized.layout)
     return d.finish()
 
 
@@ -390,13 +418,15 @@ def _planetary_tree(des: GearsDesign) -> tuple[Tree, Figure]:
         ])  # fmt: skip
     widths = (16.0, *(14.0 for _ in names), 22.0, 20.0)
     teeth = Table(rows, widths=widths, title=WORDS("teeth_title", u=fmt_number(pp.ratio, digits=5)))
-    notes = [Text(paragraph=t, width=NOTE_W) for t in (_willis(des, pts, start_link, start_pt),
-                                                       WORDS("conditions"))]  # fmt: skip
+    texts = (_willis(des, pts, start_link, start_pt), WORDS("conditions"))
+    notes = [Text(paragraph=t, width=PLANETARY_NOTE_W) for t in texts]
     # the scheme's title over both views: it states their one length scale
     views = Row(
         scheme, plan, title=WORDS("scheme_title", scheme=pp.scheme, k=pp.planets), group="l"
     )
-    return Row(views, Column(teeth, *notes)), scheme
+    # the tables beside the views, or under them
+    beside = Row(views, Column(teeth, *notes))
+    return Choice(beside, Column(views, Row(teeth, Column(*notes)))), scheme
 
 
 def _angles(
@@ -435,9 +465,8 @@ def _willis(des: GearsDesign, pts: list[PlanPoint], start_link: str, start_pt: s
 
 
 def _planetary_sheet(sol: Solution[GearsDesign], des: GearsDesign, no: int) -> Sheet:
-    tree, scheme = _planetary_tree(des)
-    lay = arrange(tree, Field.of_format("A1"))
-    k = lay[scheme].scale
+    tree, scheme, sized = _planetary_sized(sol)
+    k = sized.layout[scheme].scale
     assert k is not None
     tb = TitleBlock(
         title=WORDS("tb_planetary"),
@@ -446,8 +475,8 @@ def _planetary_sheet(sol: Solution[GearsDesign], des: GearsDesign, no: int) -> S
         sheet_no=no,
         sheets=no,
     )
-    d = start("A1", tb)
-    compose(d, tree, layout=lay)
+    d = sized.start(tb)
+    compose(d, tree, layout=sized.layout)
     return d.finish()
 
 
@@ -464,7 +493,7 @@ def _plan(
     factor written over it, and the angle diagram below the central axis."""
     d = pv.d
     k = pv.scale
-    half, top = room
+    half = room[0]
     half_mm = k.mm(half)
     px, y_base = pv.p(Vec(0.0, 0.0))
     H_mm = 35.0
@@ -475,9 +504,11 @@ def _plan(
     wmax = max(abs(rp.omega(ln)) for ln in rp.ends) or 1.0
     H_mm = min(H_mm, (half_mm - 5.0) * kv.k / (wmax * k.k))
     H_model = H_mm * k.k
-    d.text(WORDS("plan_factor", label=kv.label()), pv.p(Vec(-half, top)), 3.5)
     sheet_y = {name: pv.p(Vec(0.0, e.y))[1] for name, e in plan.ends.items()}
     top_y = min(sheet_y.values()) - 10.0
+    # the factor over the plan's axis (not at the top of the view's room: the plan spans the
+    # radii of the train, the room the whole scheme's height)
+    d.text(WORDS("plan_factor", label=kv.label()), (pv.p(Vec(-half, 0.0))[0], top_y - 3.0), 3.5)
     d.sheet.add(_line((px, y_base + 5.0), (px, top_y)))
     for name, e in plan.ends.items():
         sx = px + e.x / kv.k

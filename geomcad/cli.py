@@ -554,6 +554,8 @@ def _file_title(pid: str, sol: Solution[Any]) -> Any:
     from geomcad.sheet.titleblock import TitleData
 
     table = (sol.problem.inputs or {}).get("sheet")
+    if isinstance(table, dict):  # its "format" is the sheet's format (cam and gear files)
+        table = {k: v for k, v in table.items() if k != "format"}
     return None if table is None else TitleData.from_mapping(table, "sheet")
 
 

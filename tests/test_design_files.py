@@ -280,14 +280,23 @@ def test_pointed_teeth_are_refused(capsys: pytest.CaptureFixture[str]) -> None:
 
 
 #: The drafting findings (tests/layout.py) each composed sheet may still have; a count may only
-#: fall. The cams: O at the profile's centre among the radius vectors and the followers' lines
-#: (every side crossed); '19' of the rocker 7.5 mm off its crowded point; the flat face's O.
+#: fall. The rocker: '19' 7.5 mm off its point, where the dwell's division points crowd at 1:1.
 FINDINGS = {
-    "cam-translating-roller": {"label-line": 1, "empty": 1},
-    "cam-rocking-roller": {"label-line": 1, "anchor": 1, "empty": 1},
-    "cam-flat": {"label-line": 1, "anchor": 1, "empty": 1},
+    "cam-translating-roller": {"empty": 1},
+    "cam-rocking-roller": {"anchor": 1, "empty": 1},
+    "cam-flat": {"empty": 1},
     "gear-pair": {},
     "planetary": {"empty": 1},
+}
+
+#: The format each sheet takes by its content (geomcad.sheet.formats): the smallest on which the
+#: cam's profile and diagram reach 1:1, the mesh's teeth 40 mm, the train's sun 15 mm across.
+FORMAT = {
+    "cam-translating-roller": (594.0, 420.0),  # A2: profile 2:1
+    "cam-rocking-roller": (594.0, 420.0),  # A2: profile 1:1 (the pivot's circle 206 mm across)
+    "cam-flat": (594.0, 420.0),  # A2: profile 2:1
+    "gear-pair": (841.0, 594.0),  # A1: the mesh at 4:1 (m = 5 mm)
+    "planetary": (420.0, 297.0),  # A3: the scheme at 1:2
 }
 
 
@@ -298,11 +307,41 @@ def test_sheets_pass_the_layout_checker(name: str) -> None:
     sheets = solution(name).sheets()
     assert sheets
     for _, sheet in sheets:
-        assert (sheet.width, sheet.height) == (841.0, 594.0)  # A1
+        assert (sheet.width, sheet.height) == FORMAT[name]
         assert layout_problems(sheet) == []
         found = collections.Counter(f.kind for f in findings(sheet))
         grown = {k: n for k, n in found.items() if n > FINDINGS[name].get(k, 0)}
         assert not grown, (grown, findings(sheet))
+
+
+def test_the_format_is_the_smallest_that_reaches_the_subjects_scale() -> None:
+    """A cam sheet on the smallest format where its profile and diagram reach 1:1: every
+    smaller candidate fails (a view under 1:1 or something overflowing), and the views grow on
+    the format taken; a format the file asks for is the only one tried."""
+    from geomcad_constructions import file_common, sheets_cam
+
+    from geomcad.sheet import formats
+    from geomcad.sheet.compose import Field, arrange
+
+    sol = solution("cam-flat")
+    tree, profile, diagram, got = sheets_cam._sized(sol)  # the arrangement the sheet drew
+    wants = {profile: sheets_cam.WANT_K, diagram: sheets_cam.WANT_K}
+    assert (got.fmt, got.landscape) == ("A2", True)
+    assert formats.meets(got.layout, wants) and got.layout.fits
+    assert got.layout[profile].scale.k < sheets_cam.WANT_K  # type: ignore[union-attr]  # 2:1
+    for fmt, land in formats.candidates(("A4", "A3")):
+        field = Field.of_format(fmt, land)
+        if formats._may_fit(tree, wants, field):
+            lay = arrange(tree, field)
+            assert not (lay.fits and formats.meets(lay, wants)), (fmt, land)
+    assert file_common.sheet_formats({"sheet": {"format": "A1"}}) == ("A1",)
+    assert file_common.sheet_formats({"sheet": {"student": "x"}}) == formats.SIZES
+
+
+def test_a_format_the_file_asks_for_is_checked(capsys: pytest.CaptureFixture[str]) -> None:
+    code = main(["solve", str(EX / "cam-flat.toml"), "--set", "sheet.format=A7"])
+    _, err = capsys.readouterr()
+    assert code == 2 and err.startswith("error: ") and "sheet.format" in err and "A1" in err
 
 
 def test_gear_tip_circle_is_thick_only_along_the_drawn_teeth() -> None:
@@ -348,3 +387,24 @@ def test_library_solve_takes_a_file_and_its_sheet_scales_come_from_the_sheet() -
     assert sol.scales["l"] == pytest.approx(0.00025, rel=1e-12)  # the mesh at 4:1 on A1
     with pytest.raises(geomcad.ParameterError, match="is a file"):
         geomcad.solve(str(root / "cam-flat.toml"), stroke=0.02)
+
+
+@pytest.mark.parametrize("name", ["cam-translating-roller", "cam-rocking-roller", "cam-flat"])
+def test_cam_order_of_construction_is_the_recorded_steps(name: str) -> None:
+    """The cam sheet's order of construction: one numbered item per recorded design step (by
+    its kind's template), with the recorded values in the language drawn."""
+    from geomcad_constructions import sheets_cam
+
+    from geomcad.sheet.lang import language
+
+    sol = solution(name)
+    listed = [n for n in sheets_cam.ORDER if n in sol.construction]
+    assert listed[0] == "S(φ)" and listed[-1] == "profile"
+    for lang, r0 in (("ru", "r_0 = {} мм"), ("en", "r_0 = {} mm")):
+        with language(lang):  # type: ignore[arg-type]
+            order = sheets_cam._order(sol)
+        text = " ".join(order.lines)
+        numbered = [t for t in order.lines if t.split(". ", 1)[0].isdigit()]
+        assert len(numbered) == len(listed)
+        value = f"{float(sol.results['r0']) * 1000:g}"  # type: ignore[arg-type]
+        assert r0.format(value) in text

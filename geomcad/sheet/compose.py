@@ -391,6 +391,14 @@ class Layout:
     placed: dict[int, Placed] = field(default_factory=dict)
     titles: list[tuple[Box, Node]] = field(default_factory=list)
     groups: dict[str, Scale] = field(default_factory=dict)
+    #: the search's score of this arrangement: (−overflow in mm, Σ weight·log(drawn area))
+    score: tuple[float, ...] = ()
+
+    @property
+    def fits(self) -> bool:
+        """True when nothing overflows: every fixed view and title fits its box, every stretch
+        view has its least size and every ``readable`` length its millimetres."""
+        return not self.score or self.score[0] >= 0.0
 
     def __getitem__(self, view: View) -> Placed:
         return self.placed[id(view)]
@@ -937,7 +945,7 @@ def arrange(tree: Tree, field_: Field) -> Layout:
     docstring). :class:`ParameterError` when a view has no room at all."""
     ev = _Solver(tree, field_).solve()
     scales = _scales(ev)
-    lay = Layout(titles=ev.titles, groups={g: s for g, s in scales.items()})
+    lay = Layout(titles=ev.titles, groups={g: s for g, s in scales.items()}, score=_score(ev))
     for key, v in ev.views.items():
         cell = ev.cells[key]
         top = cell[1] + v.title_room()
