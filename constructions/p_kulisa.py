@@ -55,6 +55,7 @@ from geomcad.dynamics import (
 from geomcad.dynamics.analogues import Array, remember_last
 from geomcad.errors import ConstructionError, ParameterError
 from geomcad.geom import Vec
+from geomcad.kinematics.plan import Plan, Side, velocity_plan
 from geomcad.problem import Build, ParamValue
 from geomcad.units import deg
 
@@ -62,6 +63,11 @@ from .spec_kulisa import PROBLEM as PROBLEM
 
 #: The farthest φ may lie from φ0: the run-up is integrated and its diagrams drawn turn by turn.
 MAX_TURNS = 5
+
+#: The yoke's guide (along x) and its slot (along y): the directions of the yoke's motion and of
+#: the pin's slip in the slot, as model angles.
+GUIDE = 0.0
+SLOT = math.pi / 2.0
 
 #: The operation of the step F_x, which an error names as the protocol does.
 F_X_OP = "|M·ω_q1/v_qC3|: equal power of M and F_x"
@@ -111,6 +117,10 @@ class Data:
     dynamic: Reactions
     static: Reactions
     F_x_kinetostatic: float
+    #: the velocity plan of the drawn position (recorded in the construction)
+    vplan: Plan
+    #: the steps of the plan's order of construction, in recorded order
+    plan_steps: tuple[str, ...]
 
 
 def _nonneg(p: Mapping[str, ParamValue], name: str, what: str) -> float:
@@ -132,10 +142,10 @@ def mechanism(
 
     @remember_last
     def yoke(phi: Array) -> Yoke:
-        return slotted_yoke(phi, OA, 0.0, math.pi / 2.0, body0=(lay.x_C20, 0.0))
+        return slotted_yoke(phi, OA, GUIDE, SLOT, body0=(lay.x_C20, 0.0))
 
     def drive(phi: Array) -> Motion:
-        return slotted_yoke(phi, OA, 0.0, math.pi / 2.0).body
+        return slotted_yoke(phi, OA, GUIDE, SLOT).body
 
     @remember_last
     def roller(phi: Array) -> Motion:
@@ -181,9 +191,15 @@ def build(p: Mapping[str, ParamValue]) -> Build[Data]:
     b_ = c.value("B", float(model.J_pr(math.pi / 2.0)) - a_, "I_pr(90°) − A")
     i_pr = c.value("I_pr", float(model.J_pr(phi)), "Σ(m·v_q² + J·ω_q²) at φ")
     di_pr = c.value("dI_pr", float(model.dJ_pr(phi)), "Σ 2(m·v_q·a_q + J·ω_q·ε_q) at φ")
+    # the order's operands: the work of the constant M from rest, 2M(φ − φ0), over I_pr(φ)
+    work2 = 2.0 * M * (phi - phi0)
     w = c.run("ω1", "√(2·∫M dφ / I_pr(φ)): kinetic-energy theorem from rest at φ0",
-              lambda: omega_by_energy(model, phi0, phi))  # fmt: skip
-    eps = c.value("ε1", float(model.phi_ddot(phi, w)), "(M − ½·I_pr'·ω1²)/I_pr")
+              lambda: omega_by_energy(model, phi0, phi), kind="energy_theorem",
+              args={"M": M, "dphi": phi - phi0, "I": i_pr,
+                    "w": math.sqrt(work2 / i_pr) if work2 > 0.0 < i_pr else 0.0})  # fmt: skip
+    e1 = float(model.phi_ddot(phi, w))
+    eps = c.value("ε1", e1, "(M − ½·I_pr'·ω1²)/I_pr", kind="motion_equation",
+                  args={"M": M, "dI": di_pr, "w": w, "I": i_pr, "e": e1})  # fmt: skip
     arr = c.run("t_reach", f"equation of motion from rest at φ0 to φ, {ode_settings()}",
                 lambda: reach(model, phi0, phi))  # fmt: skip
     c.value("ω1 (ODE)", arr.omega, "φ' at φ from the integration")
@@ -191,6 +207,7 @@ def build(p: Mapping[str, ParamValue]) -> Build[Data]:
     y = yoke(phi)
     rl = roller(phi)
     C2, C3 = y.body.point(), rl.point()
+    vp, plan_steps = plan(c, y.pin.point(), C3, R3, w)
     # reactions with d'Alembert's inertia loads (a balancing moment that must come out zero)
     dyn = c.run("reactions", "equilibrium of flywheel, yoke and roller with inertia loads",
                 lambda: kinetostatics(m1, R1, OA, m2, m3, R3, r3, rho3, M, phi, w, eps, lay,
@@ -205,10 +222,15 @@ def build(p: Mapping[str, ParamValue]) -> Build[Data]:
             f"at φ = {p['phi_deg']}° the roller's axis stands still (v_C3 = 0: the pin is on the "
             "yoke's line of motion, a dead position), so no finite force at the axis balances M",
         )
-    f_x = c.value("F_x", abs(M / v_c3), F_X_OP)
+    f_x = abs(M / v_c3)
+    c.value("F_x", f_x, F_X_OP, kind="equal_power",
+            args={"M": abs(M), "w": abs(w), "v": abs(v_c3 * w), "F": f_x})  # fmt: skip
     st = c.run("F_x (kinetostatics)", "equilibrium of the three bodies without inertia loads",
                lambda: kinetostatics(m1, R1, OA, m2, m3, R3, r3, rho3, M, phi, w, eps, lay,
                                      y, rl, inertia=False).solve())  # fmt: skip
+    f_ks = abs(st.magnitudes["F_x"])
+    c.value("|F_x| (kinetostatics)", f_ks, "|F_x| of that equilibrium", kind="balance_statics",
+            args={"F": f_ks})  # fmt: skip
     results: dict[str, Any] = {
         "I_pr_A": a_,
         "I_pr_B": b_,
@@ -224,9 +246,42 @@ def build(p: Mapping[str, ParamValue]) -> Build[Data]:
         "omega_ode": arr.omega,
     }
     notes = [*NOTES, f"t_reach and omega_ode: {ode_settings(arr.trajectory.method)}"]
-    f_ks = abs(st.magnitudes["F_x"])
-    data = Data(phi, phi0, w, eps, lay, y, rl, C2, C3, model, arr, dyn, st, f_ks)
+    data = Data(phi, phi0, w, eps, lay, y, rl, C2, C3, model, arr, dyn, st, f_ks, vp, plan_steps)
     return Build(results, c, notes, data=data)
+
+
+def plan(c: Construction, A: Vec, C3: Vec, R3: float, omega: float) -> tuple[Plan, tuple[str, ...]]:
+    """The velocity plan at the drawn position, recorded in ``c``, and its order of construction.
+
+    V_A1 = ω1 × OA (the pin on the flywheel); the yoke's point A2 under the pin from
+    V_A2 = V_A1 + V_A2A1 (∥ the slot) = V_A0 + V_A2A0 (∥ the guide, A0 of the frame); the
+    yoke translates, so its point D (the contact with the roller's hub) has V_D = V_A2 = V_2;
+    the roller turns about its instantaneous centre P3 (its contact with the base, at rest), so
+    its axis C3 is the image of P3DC3 on the plan (c3 on pd at P3C3/P3D) and ω3 = V_D/l_P3D.
+    """
+    D = Vec(C3.x, 0.0)
+    P3 = Vec(C3.x, C3.y - R3)
+    vp = velocity_plan(c)
+    vp.fixed("a0")
+    vp.rigid("a1", vp.pole, Vec(0.0, 0.0), A, omega, "V_{A1}", "the pin A of flywheel 1", link=1,
+             model=("O", "A"))  # fmt: skip
+    vp.solve(
+        "a2",
+        Side("a1", Vec.polar(1.0, SLOT), "∥ the slot", line="@slot"),
+        Side("a0", Vec.polar(1.0, GUIDE), "∥ the guide", line="@guide"),
+    )
+    vp.unknown("a1", "a2", "V_{A2A1}", "the pin's slip along the slot")
+    vp.absolute("a2", "V_{A2}", "the yoke's velocity V_2")
+    vp.same("d", "a2", "yoke 2 translates", reason="@translates")
+    c.point("P3", P3, role="construction", op="the roller's instantaneous centre: its contact "
+            "with the base (rolling without slip)", kind="instant_centre",
+            args={"pt": "P3", "link": "3"})  # fmt: skip
+    vp.fixed("p3")
+    vp.image("c3", "p3", "d", P3, D, C3, why="roller 3 turns about P3", model=("P3", "D", "C3"))
+    vp.absolute("c3", "V_{C3}", "the roller's axis")
+    vp.omega(P3, D, "p3", "d", name="ω3", link=3, model=("P3", "D"))
+    listed = {vp.pole, vp.name("a0"), "P3", vp.name("p3"), *vp.order, *vp.values}
+    return vp, tuple(s.name for s in c if s.name in listed)
 
 
 def kinetostatics(

@@ -38,6 +38,7 @@ from geomcad.sheet.compose import (
     arrange,
     compose,
 )
+from geomcad.sheet.drawing import SHORT_MM
 from geomcad.sheet.graph import Graph
 from geomcad.sheet.lang import Words, current
 from geomcad.sheet.loads import force, ground, moment
@@ -213,22 +214,43 @@ def _numbers(v: Viewport, sol: Solution[Data], data: Data) -> None:
 
 
 def _main(sol: Solution[Data]) -> Sheet:
-    tree, views = _main_tree(sol)
-    k = arrange(tree, Field.of_format("A3"))[views["scheme"]].scale
+    field = Field.of_format("A3")
+    tree, views = _main_tree(sol, short=False)
+    lay = arrange(tree, field)
+    if _short(sol, lay[views["plan"]].scale):
+        # the note on plan vectors drawn as points, and the layout again
+        tree, views = _main_tree(sol, short=True)
+        lay = arrange(tree, field)
+    k = lay[views["scheme"]].scale
     assert k is not None
     d = start("A3", _tb("tb_main", 1, k.ratio_text()))
-    compose(d, tree)
+    compose(d, tree, layout=lay)
     return d.finish()
 
 
-def _main_tree(sol: Solution[Data]) -> tuple[Node, dict[str, View]]:
-    """The scheme with its velocities, the velocity plan and its words under it, the tables on
-    the right; the title block's corner kept free."""
+def _short(sol: Solution[Data], k: Scale | None) -> bool:
+    """Whether a vector of the velocity plan at its scale ``k``, or a velocity on the scheme at
+    its μ_V, comes out shorter than two arrowheads (drawn as its lettered end point)."""
+    assert k is not None
+    plan = sol.data.vplan
+    pts = plan.points
+    if any(k.mm((pts[v.head] - pts[v.tail]).norm) < SHORT_MM for v in plan.vectors):
+        return True
+    va, v2, vc, _ = _plan_values(sol, sol.data)
+    kv = sol.scales["v"]
+    return any(0.0 < x.norm / kv < SHORT_MM for x in (va, v2, vc, v2 - va))
+
+
+def _main_tree(sol: Solution[Data], short: bool) -> tuple[Node, dict[str, View]]:
+    """The scheme with its velocities and the tables beside it; the velocity plan, its order of
+    construction and the notes under them, the title block's corner kept free. ``short``: a
+    note says that the plan's vectors shorter than two arrowheads are drawn as points."""
     data = sol.data
     # the model box holds the velocities drawn at μ_V (at most VELOCITY_ROOM_MM long)
     scheme = Figure(_extent(sol, data), lambda v: _scheme(v, sol, data),
                     title=WORDS("head_main"), margin=3.0, weight=3.0)  # fmt: skip
-    return _main_layout(sol, data, scheme), {"scheme": scheme}
+    tree, plan = _main_layout(sol, data, scheme, short)
+    return tree, {"scheme": scheme, "plan": plan}
 
 
 def _scheme(v: Viewport, sol: Solution[Data], data: Data) -> None:
@@ -239,14 +261,34 @@ def _scheme(v: Viewport, sol: Solution[Data], data: Data) -> None:
     _velocities(v, sol, data)
 
 
-def _main_layout(sol: Solution[Data], data: Data, scheme: View) -> Node:
+def _main_layout(sol: Solution[Data], data: Data, scheme: View, short: bool) -> tuple[Node, View]:
     p = _p(sol)
     kv = Scale(sol.scales["v"], "v")
     state = V.Text(lines=[WORDS("state", phi=f(p["phi_deg"]), omega=f(data.omega), mu_v=mu(kv))],
                    height=3.5)  # fmt: skip
-    plan, words = _plan(sol, data)
-    left = Column(state, scheme, Row(plan, words, Spacer((30.0, 10.0))), weights=(1.0, 0.66, 0.34))
-    return Row(left, _panel_main(sol, data), weights=(0.69, 0.31))
+    plan, order = _plan(sol, data)
+    tables, notes = _panel_main(sol, data, short)
+    # the title block's box at the bottom right (with its margin): the notes go above it
+    field = Field.of_format("A3")
+    tb = field.obstacles[0]
+    form = Spacer((field.box[2] - tb[0], field.box[3] - tb[1]))
+    top = Row(Column(state, scheme), tables)
+    return Column(top, Row(plan, order, Column(notes, form), gap=PLAN_GAP)), plan
+
+
+def _plan_values(sol: Solution[Data], data: Data) -> tuple[Vec, Vec, Vec, float]:
+    """V_A, V_2 (= V_A2 = V_D), V_C3 and ω3 read off the recorded velocity plan."""
+    vp = data.vplan
+    return vp.vector("a1"), vp.vector("a2"), vp.vector("c3"), float(sol.construction["ω3"])
+
+
+def _vector(v: Viewport, a: Vec, b: Vec, mm: float, role: str) -> None:
+    """A velocity ``mm`` long at μ_V: an arrow, or its end point if shorter than two arrowheads
+    (a note says so)."""
+    if mm >= SHORT_MM:
+        v.arrow(a, b, role)
+    else:
+        v.dot(b)
 
 
 def _velocities(v: Viewport, sol: Solution[Data], data: Data) -> None:
@@ -260,9 +302,7 @@ def _velocities(v: Viewport, sol: Solution[Data], data: Data) -> None:
     c3 = data.C3
     D = Vec(c3.x, 0.0)
     P = Vec(c3.x, -p["r3"] - p["R3"])
-    va, _ = data.yoke.pin.velocity(w)
-    v2, _ = data.yoke.body.velocity(w)
-    vc, w3 = data.roller.velocity(w)
+    va, v2, vc, w3 = _plan_values(sol, data)
 
     def tip(q: Vec, vel: Vec) -> Vec:
         # a velocity drawn from its point: |V|/μ_V mm, i.e. |V|·μ_l/μ_V metres on the drawing
@@ -271,11 +311,11 @@ def _velocities(v: Viewport, sol: Solution[Data], data: Data) -> None:
     for q, vel, name in ((A, va, "V_A"), (A, v2, "V_{A2}"), (D, v2, "V_D = V_2"),
                          (c3, vc, "V_{C3}")):  # fmt: skip
         if vel.norm > 0.0:
-            v.arrow(q, tip(q, vel), "result")
+            _vector(v, q, tip(q, vel), vel.norm / kv, "result")
             v.label(tip(q, vel), name, 2.5, prefer=(vel.x, vel.y) if q != D else (0.0, -1.0))
     # V_A2A1 along the slot: from V_A's tip to V_A2's tip
     if (v2 - va).norm > 0.0:
-        v.arrow(tip(A, va), tip(A, v2), "construction")
+        _vector(v, tip(A, va), tip(A, v2), (v2 - va).norm / kv, "construction")
         v.label(0.5 * (tip(A, va) + tip(A, v2)), "V_{A2A1}", 2.5, prefer=(1.0, 0.0))
     # the roller's velocities grow linearly from its instantaneous centre P
     if v2.norm > 0.0:
@@ -300,39 +340,24 @@ def _velocities(v: Viewport, sol: Solution[Data], data: Data) -> None:
 
 
 def _plan(sol: Solution[Data], data: Data) -> tuple[View, View]:
-    """The velocity plan (pa1 = V_A1 ⊥ OA, a1a2 ∥ slot, pa2 = V_A2 ∥ guide, pc3 = V_C3) at the
-    layout's μ_V, and its words."""
-    w = data.omega
-    va, _ = data.yoke.pin.velocity(w)
-    v2, _ = data.yoke.body.velocity(w)
-    vc, _ = data.roller.velocity(w)
-    xs = [0.0, va.x, v2.x, vc.x]
-    ys = [0.0, va.y, v2.y, vc.y]
+    """The velocity plan recorded by the problem (pa_1 = V_A1 ⊥ OA, a_1a_2 ∥ the slot, pa_2 ∥
+    the guide, c_3 on pd by the roller's instantaneous centre) at the layout's μ_V, and its
+    order of construction written from the plan's steps."""
+    plan = V.PlanView(data.vplan, margin=5.0, min_mm=SHORT_MM)
+    order = V.Steps(sol.construction, ORDER_W, only=data.plan_steps, words=WORDS)
+    return plan, order
 
-    def draw(pv: Viewport) -> None:
-        for vec_, name in ((va, "a_1"), (v2, "a_2 = d"), (vc, "c_3")):
-            if vec_.norm > 0.0:
-                pv.arrow((0.0, 0.0), vec_, "result")
-                pv.dot(vec_)
-                pv.label(vec_, name, 3.5, prefer=(0.0, -1.0) if name == "c_3" else None)
-        if (v2 - va).norm > 0.0:
-            pv.arrow(va, v2, "construction")
-        pv.dot((0.0, 0.0))
-        pv.label((0.0, 0.0), "p", 3.5, prefer=(1.0, 1.0))
 
-    plan = Figure((min(xs), min(ys), max(xs), max(ys)), draw, title=WORDS("plan_title"),
-                  quantity="v", series="nice", margin=5.0)  # fmt: skip
-    k3 = vc.norm / v2.norm if v2.norm > 0.0 else 0.0
-    ms = _u("m_s")
-    lines: list[str] = []
-    for ln in (
-        WORDS("plan_1", va=f(va.norm), u=ms),
-        WORDS("plan_2"),
-        WORDS("plan_3", v2=f(v2.norm), u=ms),
-        WORDS("plan_4", vc=f(vc.norm), u=ms, k3=f(k3)),
-    ):
-        lines += wrap(ln, 70.0, 2.5)
-    return plan, V.Text(lines=lines, width=70.0)
+#: The gap (mm) between the velocity plan, its order of construction and the notes.
+PLAN_GAP = 6.0
+
+#: The width (mm) of the velocity plan's order of construction.
+ORDER_W = 110.0
+
+
+def _step_lines(sol: Solution[Data], *names: str) -> list[str]:
+    """The texts of recorded steps (their kinds' templates in the language drawn)."""
+    return [V.step_text(sol.construction.step(n), WORDS) for n in names]
 
 
 def _notes(items: list[str], width: float = 0.0, dash: bool = False) -> View:
@@ -364,11 +389,10 @@ def _given(sol: Solution[Data]) -> View:
     return V.Table(rows, widths=(59.0, 59.0), title=WORDS("given"))
 
 
-def _panel_main(sol: Solution[Data], data: Data) -> Node:
-    w = data.omega
-    va, _ = data.yoke.pin.velocity(w)
-    v2, _ = data.yoke.body.velocity(w)
-    vc, w3 = data.roller.velocity(w)
+def _panel_main(sol: Solution[Data], data: Data, short: bool) -> tuple[Node, View]:
+    """The tables of the given data, the velocities and the results, and the notes (with
+    ``short``: on the plan's vectors drawn as points)."""
+    va, v2, vc, w3 = _plan_values(sol, data)
     qty, val = WORDS("quantity"), WORDS("value")
     ms = _u("m_s")
     rows = [
@@ -394,8 +418,14 @@ def _panel_main(sol: Solution[Data], data: Data) -> Node:
         widths=(40.0, 78.0),
         title=WORDS("results_head"),
     )
-    notes = _notes([WORDS("note_1"), WORDS("note_2")])
-    return Column(_given(sol), vel, res, notes, Spacer((10.0, TITLE_BLOCK_H)))
+    notes = [WORDS("note_1"), WORDS("note_2")]
+    if short:
+        notes.append(WORDS("short_plan", mm=f(SHORT_MM)))
+    return Column(_given(sol), vel, res), _notes(notes, NOTES_MAIN_W)
+
+
+#: The width (mm) of the main sheet's notes (above the title block).
+NOTES_MAIN_W = 180.0
 
 
 #: The height (mm) the title block takes at the bottom of the field, with its margin.
@@ -483,7 +513,7 @@ def _panel_graphs(sol: Solution[Data], data: Data, ode: tuple[list[float], list[
         [
             WORDS("eq_1"),
             WORDS("eq_2", a=f(a_, 4), b=f(b_, 4), half=f(b_ / 2.0, 4), M=f(p["M"], 4)),
-            WORDS("eq_3"),
+            *_step_lines(sol, "ω1", "ε1"),
             WORDS("graph_2_note"),
         ],
         GRAPHS_PANEL_W,
@@ -737,7 +767,7 @@ def _panel_fbd(sol: Solution[Data], data: Data, width: float = 140.0) -> tuple[N
         WORDS("fbd_1"),
         WORDS("fbd_2"),
         WORDS("fbd_3", mb=small(mb, float(sol.params["M"]), nm)),
-        WORDS("fbd_4", fx=f(sol.results["F_x"], 4), fk=f(data.F_x_kinetostatic, 4), n=n),
+        " ".join(_step_lines(sol, "F_x", "|F_x| (kinetostatics)")),
     )
     notes = V.Text(paragraphs=[f"– {ln}" for ln in lines], width=width, indent=3.0)
     return Column(reactions, others), notes
