@@ -100,7 +100,7 @@ def build(p: Mapping[str, ParamValue]) -> Build[Geometry]:
     omega5 = c.value(
         "ω5",
         omega3,
-        "= ω3: the cross slides on links 3 and 5 at a fixed right angle",
+        "equal to ω3: the cross slides on links 3 and 5 at a fixed right angle",
         kind="cross_omega",
         args={"w": "ω_5", "of": "ω_3", "value": abs(omega3)},
     )
