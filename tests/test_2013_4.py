@@ -245,8 +245,11 @@ def test_order_of_construction_is_the_recorded_steps() -> None:
 
     sol = geomcad.solve("2013-4")
     c = sol.construction
-    for lang, psi, x in (("ru", "ψ_y = 0,04502 рад", "x = (s – πm/2)/(2m·tg α) = 0,4284"),
-                         ("en", "ψ_y = 0.04502 rad", "x = (s – πm/2)/(2m·tan α) = 0.4284")):  # fmt: skip
+    cases = (
+        ("ru", "ψ_y = 0,04502 рад", "x = (s – πm/2)/(2m·tg α) = 0,4284"),
+        ("en", "ψ_y = 0.04502 rad", "x = (s – πm/2)/(2m·tan α) = 0.4284"),
+    )
+    for lang, psi, x in cases:
         with language(lang):
             steps = V.Steps(c, 140.0, only=ORDER, words=WORDS)
             numbered = [t for t in steps.lines if t[:1].isdigit()]
