@@ -42,7 +42,7 @@ import numpy as np
 from geomcad import tol
 from geomcad.construction import Construction
 from geomcad.errors import GeomcadError, ParameterError
-from geomcad.geom import Vec
+from geomcad.geom import Circle, Vec, perpendicular
 from geomcad.kinematics.cams import (
     CamProfile,
     Follower,
@@ -59,6 +59,9 @@ from geomcad.problem import Build, ParamValue
 from geomcad.units import deg, to_deg
 
 from .spec_2013_2 import PROBLEM as PROBLEM
+
+#: m → mm for the operands of the order of construction
+MM = 1000.0
 
 NOTES = [
     "seed notation: it calls the similar triangle OBB′ but writes its sides as Bb and Ob in "
@@ -118,7 +121,10 @@ def build(p: Mapping[str, ParamValue]) -> Build[Geometry]:
 
     c = Construction(f"2013-2: cam profile by inversion ({law} law, {kind} follower)")
     centre = c.point("O", (0.0, 0.0), note="the cam's centre of rotation")
-    c.circle("base", centre, r0, role="given", r_name="r0", note="the theoretical profile's")
+    c.run(
+        "base", "circle(O, r0)", lambda: Circle(centre, r0), (centre,), "given",
+        "the theoretical profile's", kind=f"cam_base_{kind}", args={"r": r0 * MM},
+    )  # fmt: skip
     a = c.value("a", H / rise, "H / φ_rise (S′ of the linear law)")
     what = "the full turn" if closed else f"φ = 0 … {to_deg(span):.6g}°"
     prof = c.run(
@@ -126,10 +132,12 @@ def build(p: Mapping[str, ParamValue]) -> Build[Geometry]:
         f"{profile_step_name(kind).split(' = ', 1)[1]}, over {what}",
         lambda: cam_profile(program, f, 0.0, span, closed),
         role="result",
+        kind=f"cam_profile_{kind}",
+        args={"r": r_r * MM},
     )
     phis = np.linspace(0.0, span, n_div + 1)
     div = at_angles(program, f, phis, span)
-    _record_divisions(c, f, div)
+    _record_divisions(c, f, div, span)
     k = _plan_index(div.S1)
     plan = velocity_plan(program, f, float(div.phi[k]))
     _record_plan(c, plan, k)
@@ -172,9 +180,18 @@ def _plan_index(S1: np.ndarray) -> int:
     return min(best, key=lambda i: (abs(i - mid), i))
 
 
-def _record_divisions(c: Construction, f: Follower, div: CamProfile) -> None:
-    """Per division point: the follower turned back by φ_i, its face (or tip) and B_i, r_i."""
+def _record_divisions(c: Construction, f: Follower, div: CamProfile, span: float) -> None:
+    """Per division point: the follower turned back by φ_i, its face (or tip) and B_i, r_i.
+
+    Each step's kind is a general step of the inversion, its operand ``i`` the division's index
+    (the sheet writes the steps of one division with ``i`` for the index: "for each φ_i")."""
     centre = c["O"]
+    n = len(div.phi) - 1
+    c.value(
+        "Δφ", span / n, f"the span {to_deg(span):.6g}° in {n} equal intervals",
+        kind="cam_divide", args={"span": to_deg(span), "n": float(n), "d": to_deg(span / n)},
+    )  # fmt: skip
+    offset = f.kind != "flat" and f.e != 0.0
     for i in range(len(div.phi)):
         phi = float(div.phi[i])
         c.value(f"φ_{i}", phi, f"division point {i}")
@@ -185,21 +202,33 @@ def _record_divisions(c: Construction, f: Follower, div: CamProfile) -> None:
         # the flat face is built from the line through O along the motion (the stem's offset
         # does not change the profile); a knife's or roller's axis is offset by e
         foot = Vec(0.0 if f.kind == "flat" else f.e, 0.0).rotated(turn)
-        axis = c.line(f"axis_{i}", foot, up, f"the follower's axis turned back by φ_{i}")
+        axis = c.line(
+            f"axis_{i}", foot, up, f"the follower's axis turned back by φ_{i}",
+            kind="cam_axis_offset" if offset else "cam_axis",
+            args={"i": float(i), "e": abs(f.e) * MM} if offset else {"i": float(i)},
+        )  # fmt: skip
         C = c.point(
             f"C_{i}",
             Vec(*div.pitch[i]),
             role="construction",
             op=f"on axis_{i} at {'r0 + S' if f.kind == 'flat' else 's0 + S'}_{i}",
+            kind="cam_lay_offset" if offset else "cam_lay",
+            args={"i": float(i), "s0": f.s0 * MM} if offset else {"i": float(i)},
         )
         if f.kind == "flat":
-            c.perpendicular(f"face_{i}", axis, C, note="the face, ⊥ the motion")
+            c.record(
+                f"face_{i}", f"perpendicular to axis_{i} at C_{i}", perpendicular(axis, C),
+                (axis, C), note="the face, ⊥ the motion", kind="cam_face", args={"i": float(i)},
+            )  # fmt: skip
             op = f"on face_{i} at S′_{i} from C_{i} (the velocity plan)"
         elif f.kind == "roller":
             op = f"circle(C_{i}, r_roller) touching the profile along its normal"
         else:
             op = f"the knife's tip C_{i}"
-        B = c.point(f"B_{i}", Vec(*div.contact[i]), role="result", op=op)
+        B = c.point(
+            f"B_{i}", Vec(*div.contact[i]), role="result", op=op,
+            kind=f"cam_contact_{f.kind}", args={"i": float(i), "r": f.r_roller * MM},
+        )  # fmt: skip
         c.value(f"r_{i}", B.dist(centre), f"|OB_{i}|", (centre, B))
 
 
