@@ -14,6 +14,7 @@ Scale choice lives here (:func:`scales`): the problem's build returns only its m
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from typing import TYPE_CHECKING
 
@@ -42,6 +43,7 @@ from geomcad.sheet.lang import Words, current, per_language
 from geomcad.sheet.text import wrap
 
 if TYPE_CHECKING:
+    from geomcad.construction.recorder import Step
     from geomcad.problem import Solution
 
     from .p2013_2 import Geometry
@@ -59,6 +61,8 @@ FACE_OVER = 6.0
 #: A plan vector shorter than this (mm) is drawn as a point with its label (twice the head).
 #: Width (mm) of the panel's text, and the title block's height (kept free under the panel).
 PANEL_W = 250.0
+#: Width (mm) of the order of construction (beside the diagrams of the law).
+ORDER_W = 190.0
 BLOCK_H = 52.0
 
 
@@ -99,7 +103,15 @@ class _Views:
             span, end = math.degrees(float(geo.span)), math.degrees(float(geo.rest.phi[-1]))
             left.append(V.Text([WORDS("rest_note", span=_n(span), end=_n(end))], height=2.5))
         law = WORDS(f"law_{sol.params['law']}")
-        left.append(Row(*_diagrams(sol), weights=(1.0, 1.0), title=WORDS("graph_title", law=law)))
+        # the law S(φ) over its analogue S′(φ) (one φ axis), beside the order of construction
+        steps = order_steps(sol)
+        order = V.Steps(
+            steps, ORDER_W, only=[st.name for st in steps], height=3.0, words=WORDS,
+            title_height=5.0,
+        )  # fmt: skip
+        law_line = V.Text([WORDS("graph_law", law=law)], height=3.5)
+        graphs = Column(law_line, *_diagrams(sol), title=WORDS("graph_title"))
+        left.append(Row(graphs, order))
         plan = geo.plan
         phi = math.degrees(plan.phi)
         self.scheme = Figure(
@@ -118,10 +130,6 @@ class _Views:
             V.Text([WORDS("scheme_note", eq=eq), WORDS("plan_omega")], height=2.5),
             *_tables(sol),
             V.Text(_notes(sol), width=PANEL_W, height=3.0),
-            V.Text(
-                [f"{i + 1}. {t}" for i, t in enumerate(_order(sol))], height=3.0,
-                title=WORDS("order_title"), title_height=5.0,
-            ),
             Spacer((10.0, BLOCK_H)),
         ]  # fmt: skip
         self.tree = Row(Column(*left), Column(*right), weights=(1.0, 1.0))
@@ -495,18 +503,22 @@ def _tables(sol: Solution[Geometry]) -> list[V.Table]:
     return [data, results]
 
 
-def _order(sol: Solution[Geometry]) -> list[str]:
-    """The construction by inversion, step by step (one line each)."""
-    kind = sol.data.follower.kind
-    return [
-        WORDS("order_1"),
-        WORDS(
-            "order_2",
-            lay=WORDS("lay_flat" if kind == "flat" else "lay_other"),
-            what=WORDS(f"what_{kind}"),
-        ),
-        WORDS("order_3", last=WORDS(f"last_{kind}")),
-    ]
+def order_steps(sol: Solution[Geometry]) -> list[Step]:
+    """The steps of the order of construction, in the order a student writes them: the base
+    circle and the division, the steps of one division written for any index i ("for each
+    φ_i"), the profile, then the velocity plan at the plan's division point (its pole, its
+    points, the vector read off) and the similar triangle OBB′."""
+    c = sol.construction
+    one = 1 if len(sol.data.divisions.phi) > 1 else 0
+    each = [f"axis_{one}", f"C_{one}", f"face_{one}", f"B_{one}"]
+    plan = ["B", "p", "b1", "b2", "pb2", "B′"]
+    names = ["base", "Δφ", *(n for n in each if n in c), "profile", *plan]
+    return [_for_each(c.step(n)) if n in each else c.step(n) for n in names]
+
+
+def _for_each(step: Step) -> Step:
+    """A division's step written for any division: its index operand ``i`` as the letter i."""
+    return dataclasses.replace(step, args=tuple((k, "i" if k == "i" else v) for k, v in step.args))
 
 
 def _notes(sol: Solution[Geometry]) -> list[str]:
