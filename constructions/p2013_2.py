@@ -41,7 +41,7 @@ import numpy as np
 
 from geomcad import tol
 from geomcad.construction import Construction
-from geomcad.errors import GeomcadError, ParameterError
+from geomcad.errors import ConstructionError, GeomcadError, ParameterError
 from geomcad.geom import Circle, Vec, perpendicular
 from geomcad.kinematics.cams import (
     CamProfile,
@@ -55,6 +55,8 @@ from geomcad.kinematics.cams import (
     velocity_plan,
 )
 from geomcad.kinematics.motion_laws import CamProgram, standard_program
+from geomcad.kinematics.plan import Plan, Side
+from geomcad.kinematics.plan import velocity_plan as plan_of
 from geomcad.problem import Build, ParamValue
 from geomcad.units import deg, to_deg
 
@@ -140,7 +142,7 @@ def build(p: Mapping[str, ParamValue]) -> Build[Geometry]:
     _record_divisions(c, f, div, span)
     k = _plan_index(div.S1)
     plan = velocity_plan(program, f, float(div.phi[k]))
-    _record_plan(c, plan, k)
+    _record_plan(c, f, plan, k)
 
     r = [float(x) for x in div.radius]
     results: dict[str, Any] = {
@@ -232,15 +234,36 @@ def _record_divisions(c: Construction, f: Follower, div: CamProfile, span: float
         c.value(f"r_{i}", B.dist(centre), f"|OB_{i}|", (centre, B))
 
 
-def _record_plan(c: Construction, plan: VelocityPlan, k: int) -> None:
-    """The velocity plan at division point k (fixed frame, ω = 1 rad/s)."""
-    B = c.point("B", plan.B, role="construction", op=f"the contact point at φ_{k}, fixed frame")
-    c.point("b1", B + plan.V_B1, role="construction", op="B + V_B1, V_B1 = ω × OB")
-    c.point("b2", B + plan.V_B2, role="construction", op="B + V_B2, V_B2 along the motion")
+def _record_plan(c: Construction, f: Follower, plan: VelocityPlan, k: int) -> Plan:
+    """The velocity plan at division point k (fixed frame, ω = 1 rad/s), built as the vector
+    equation V_B2 = V_B1 + V_B2B1 (:mod:`geomcad.kinematics.plan`), and the triangle OBB′
+    similar to it; the plan must agree with the cam's (:func:`velocity_plan` of the law)."""
+    B = c.point(
+        "B", plan.B, role="construction", op=f"the contact point at φ_{k}, fixed frame",
+        kind="cam_plan_at", args={"k": float(k), "phi": to_deg(plan.phi)},
+    )  # fmt: skip
+    vp = plan_of(c)
+    vp.rigid("b1", "p", Vec(0.0, 0.0), B, f.sigma * plan.omega, "V_{B1}", "the cam's point at B",
+             link=1, model=("O", "B"))  # fmt: skip
+    # V_B2B1 along the face (flat) or along the pitch curve's tangent at B (knife, roller)
+    along = Vec(1.0, 0.0) if f.kind == "flat" else plan.V_B2B1
+    vp.solve(
+        "b2",
+        Side("b1", along, "∥ the face" if f.kind == "flat" else "∥ the profile's tangent",
+             line="@face" if f.kind == "flat" else "@tangent", unknown="V_{B2B1}"),
+        Side("p", Vec(0.0, 1.0), "∥ the motion", line="@guide"),
+    )  # fmt: skip
+    b2 = vp.absolute("b2", "V_{B2}", "the follower's velocity")
+    if b2.dist(plan.V_B2) > tol.DERIVED * max(plan.V_B1.norm, plan.V_B2.norm):
+        raise ConstructionError(
+            c.step("b2").title, f"{b2!r} differs from the cam's V_B2 = {plan.V_B2!r}"
+        )
     c.point(
-        "B′", plan.B_prime, role="construction", op="normal at B ∩ line through O across motion"
-    )
+        "B′", plan.B_prime, role="construction", op="normal at B ∩ line through O across motion",
+        kind="cam_similar", args={"value": abs(plan.S1) * MM},
+    )  # fmt: skip
     c.value("OB′", plan.B_prime.norm, "|OB′| = S′ (the similar triangle OBB′)")
+    return vp
 
 
 def _points(prof: CamProfile) -> list[list[float]]:

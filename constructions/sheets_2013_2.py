@@ -61,8 +61,9 @@ FACE_OVER = 6.0
 #: A plan vector shorter than this (mm) is drawn as a point with its label (twice the head).
 #: Width (mm) of the panel's text, and the title block's height (kept free under the panel).
 PANEL_W = 250.0
-#: Width (mm) of the order of construction (beside the diagrams of the law).
-ORDER_W = 190.0
+#: Width and letter height (mm) of the order of construction.
+ORDER_W = 280.0
+ORDER_H = 2.5
 BLOCK_H = 52.0
 
 
@@ -103,20 +104,13 @@ class _Views:
             span, end = math.degrees(float(geo.span)), math.degrees(float(geo.rest.phi[-1]))
             left.append(V.Text([WORDS("rest_note", span=_n(span), end=_n(end))], height=2.5))
         law = WORDS(f"law_{sol.params['law']}")
-        # the law S(φ) over its analogue S′(φ) (one φ axis), beside the order of construction
+        left.append(Row(*_diagrams(sol), weights=(1.0, 1.0), title=WORDS("graph_title", law=law)))
         steps = order_steps(sol)
-        order = V.Steps(
-            steps, ORDER_W, only=[st.name for st in steps], height=3.0, words=WORDS,
-            title_height=5.0,
-        )  # fmt: skip
-        law_line = V.Text([WORDS("graph_law", law=law)], height=3.5)
-        graphs = Column(law_line, *_diagrams(sol), title=WORDS("graph_title"))
-        left.append(Row(graphs, order))
         plan = geo.plan
         phi = math.degrees(plan.phi)
         self.scheme = Figure(
             _scheme_extent(sol), lambda v: _scheme(v, sol),
-            title=WORDS("scheme_title", i=geo.plan_index, phi=_n(phi)), margin=6.0,
+            title=WORDS("scheme_title", i=geo.plan_index, phi=_n(phi)), margin=6.0, weight=2.0,
         )  # fmt: skip
         vectors = [plan.V_B1, plan.V_B2, plan.V_B2 - plan.V_B1]
         shortest = min((q.norm for q in vectors if q.norm > 0.0), default=0.0)
@@ -127,9 +121,13 @@ class _Views:
         eq = "OB' = BC = S'" if f.kind == "flat" else "OB' = S'"
         right: list[View | Node] = [
             Row(self.scheme, self.plan),
-            V.Text([WORDS("scheme_note", eq=eq), WORDS("plan_omega")], height=2.5),
+            V.Text([f"{WORDS('scheme_note', eq=eq)} {WORDS('plan_omega')}"], height=2.5),
             *_tables(sol),
             V.Text(_notes(sol), width=PANEL_W, height=3.0),
+            V.Steps(
+                steps, ORDER_W, only=[st.name for st in steps], height=ORDER_H, words=WORDS,
+                title_height=5.0,
+            ),
             Spacer((10.0, BLOCK_H)),
         ]  # fmt: skip
         self.tree = Row(Column(*left), Column(*right), weights=(1.0, 1.0))
