@@ -76,7 +76,9 @@ WORDS = Words(__package__, "sheets_2013_4")
 MM = 1000.0  # m → mm for the tables
 CENTRE = Vec(0.0, 0.0)  # the gear's centre O
 #: Width (mm) of the order of construction's text.
-ORDER_W = 140.0
+ORDER_W = 144.0
+#: The tables' row height (mm).
+ROW_H = 5.0
 #: The steps of the order of construction (constructions/p2013_4.py records them with their
 #: kinds; the templates are this sheet's ``step.*`` words).
 ORDER = (
@@ -365,7 +367,7 @@ def _tables(sol: Solution[Geometry]) -> tuple[V.Table, V.Table, V.Table]:
         (WORDS("height"), f"{_num(float(p['h_chord']) * MM)} {mm}"),
     ):
         rows.append([label, text])
-    data = V.Table(rows, widths=(30.0, 24.0), row_h=5.5, title=WORDS("data_title"))
+    data = V.Table(rows, widths=(30.0, 24.0), row_h=ROW_H, title=WORDS("data_title"))
     rows = [[WORDS("h_quantity"), WORDS("h_value")]]
     for name, label, scale in (
         ("d", f"d, {mm}", MM),
@@ -380,7 +382,7 @@ def _tables(sol: Solution[Geometry]) -> tuple[V.Table, V.Table, V.Table]:
         if name == "x" and abs(exact) < tol.DERIVED:
             exact = 0.0  # a shift of 10^-16 is no shift
         rows.append([label, _num(exact, digits=4)])
-    results = V.Table(rows, widths=(24.0, 22.0), row_h=5.5, title=WORDS("results_title"))
+    results = V.Table(rows, widths=(24.0, 22.0), row_h=ROW_H, title=WORDS("results_title"))
     k_span = geo.k_span
     rows = [[WORDS("h_quantity"), WORDS("h_value")]]
     for label, value in (
@@ -391,5 +393,5 @@ def _tables(sol: Solution[Geometry]) -> tuple[V.Table, V.Table, V.Table]:
         (f"W_{k_span} (z_W = {k_span})", f"{_num(geo.W * MM, digits=4)} {mm}"),
     ):
         rows.append([label, value])
-    teeth = V.Table(rows, widths=(40.0, 30.0), row_h=5.5, title=WORDS("tooth_title"))
+    teeth = V.Table(rows, widths=(40.0, 30.0), row_h=ROW_H, title=WORDS("tooth_title"))
     return data, results, teeth
