@@ -249,8 +249,8 @@ def _record_plan(c: Construction, f: Follower, plan: VelocityPlan, k: int) -> Pl
     along = Vec(1.0, 0.0) if f.kind == "flat" else plan.V_B2B1
     vp.solve(
         "b2",
-        Side("b1", along, "∥ the face" if f.kind == "flat" else "∥ the profile's tangent",
-             line="@face" if f.kind == "flat" else "@tangent", unknown="V_{B2B1}"),
+        Side("b1", along, "∥ the face BC" if f.kind == "flat" else "∥ the pitch curve's tangent",
+             line="BC" if f.kind == "flat" else "@tangent", unknown="V_{B2B1}"),
         Side("p", Vec(0.0, 1.0), "∥ the motion", line="@guide"),
     )  # fmt: skip
     b2 = vp.absolute("b2", "V_{B2}", "the follower's velocity")
