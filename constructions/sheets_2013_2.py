@@ -478,7 +478,7 @@ def _tables(sol: Solution[Geometry]) -> list[V.Table]:
          f"{e_mm} / {rr_mm} {mm}"],
     ]  # fmt: skip
     data = V.Table(
-        rows, widths=(30.0, 38.0, 30.0, 54.0, 40.0, 54.0), height=3.5, row_h=6.0, header=False,
+        rows, widths=(34.0, 43.0, 34.0, 62.0, 45.0, 62.0), height=3.5, row_h=6.0, header=False,
         title=WORDS("data_title"), title_height=5.0,
     )  # fmt: skip
     rows = [[WORDS(f"h_{q}") for q in ("i", "phi", "S", "S1", "r")]]
@@ -495,7 +495,7 @@ def _tables(sol: Solution[Geometry]) -> list[V.Table]:
         )
     rows.append(["a", "", "", "", _n(float(r["a"]) * MM)])
     results = V.Table(
-        rows, widths=(20.0, 50.0, 50.0, 50.0, 50.0), height=3.5, row_h=6.5,
+        rows, widths=(24.0, 64.0, 64.0, 64.0, 64.0), height=3.5, row_h=6.5,
         title=WORDS("results_title"), title_height=5.0,
     )  # fmt: skip
     return [data, results]

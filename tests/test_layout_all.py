@@ -40,8 +40,8 @@ BASELINE: dict[tuple[str, str], dict[str, int]] = {
     # the T labels keep 6.5 mm off points crowded by four lines, M 7 mm (outside its roller);
     # 63 % empty: sparse schemes at GOST scales (1:4, 1:10, 1:2), the panel of tables
     ("2013-1", ""): {"anchor": 4, "empty": 1},
-    # A2 (the whole rise at 2:1, S′(φ) beside S(φ)): no short vector; 57 % of the 10 mm cells
-    # empty (the open profile and the plan leave white inside their boxes)
+    # A2 (the whole rise at 2:1, S′(φ) beside S(φ), the scheme at 1:1): no short vector; 51 % of
+    # the 10 mm cells empty (the open profile and the plan leave white inside their boxes)
     ("2013-2", ""): {"empty": 1},
     ("2013-3", ""): {"empty": 1},
     # the bars over s̄, h̄ are part of their labels (layout.is_bar_of)
