@@ -121,12 +121,11 @@ def build(p: Mapping[str, ParamValue]) -> Build[Geometry]:
         kind="caliper_chord", args={"h": "H", "other": "K'", "half": s_bar / 2.0 * MM},
     )  # fmt: skip
     c.point("K'", H - right * (s_bar / 2.0), "result", op="H − s̄/2 along the chord")
-    tan_y = K.x / K.y
+    psi = math.atan2(K.x, K.y)
     psi_y = c.value(
-        "ψ_y", math.atan2(K.x, K.y), "∠TOK: tan ψ_y = s̄/(d_a − 2h̄)", (T, centre, K),
+        "ψ_y", psi, "∠TOK: tan ψ_y = s̄/(d_a − 2h̄)", (T, centre, K),
         kind="chord_half_angle",
-        args={"s": s_bar * MM, "den": (d_a - 2.0 * h_bar) * MM, "tan": tan_y,
-              "value": math.atan2(K.x, K.y)},
+        args={"s": s_bar * MM, "den": (d_a - 2.0 * h_bar) * MM, "tan": K.x / K.y, "value": psi},
     )  # fmt: skip
     k_y = c.circle(
         "k_y", centre, centre.dist(K), role="construction", r_name="|OK|", note="circle d_y"
