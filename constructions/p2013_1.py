@@ -48,7 +48,7 @@ from scipy.optimize import brentq
 from geomcad import tol
 from geomcad.construction import Construction
 from geomcad.errors import ConstructionError, NoIntersection, ParallelLines, ParameterError
-from geomcad.geom import Vec
+from geomcad.geom import Circle, Vec
 from geomcad.problem import Build, ParamValue
 from geomcad.structure import (
     Decomposition,
@@ -83,6 +83,9 @@ FOUR_BAR_NOTE = (
     "V_T = 0 also where ω1 = 0, at the extreme positions of the driving four-bar (crank 2, "
     "coupler 3, lever 1); its dimensions are not given, so those positions are not computed"
 )
+
+#: m → mm for the operands of the order of construction
+MM = 1000.0
 
 # The scheme's proportions, in units of |e| (drawing choices; they change no result).
 #: lever 1's pin C, and the frame pivot A and crank pin B of the four-bar, in the lever's frame
@@ -331,7 +334,10 @@ def build(p: Mapping[str, ParamValue]) -> Build[Geometry]:
             f"the slot (θ1 = {float(p['theta1_deg']):g}°) is parallel to the pusher path "
             f"(ψ = {float(p['psi_deg']):g}°): the roller's centre M would be at infinity",
         )
-    M = c.intersect("M", slot, path, op="slot ∩ pusher path", role="link")
+    M = c.intersect(
+        "M", slot, path, op="slot ∩ pusher path", role="link",
+        kind="slot_meets_path", args={"th": float(p["theta1_deg"])},
+    )  # fmt: skip
 
     mech, pts = vulcanizer(e, M, u1, up, h)
     ws, counts_mode, replaced, no_roller, seed_route, mob_b, mob_a, mob_s = _structure(c, p, mech)
@@ -339,10 +345,15 @@ def build(p: Mapping[str, ParamValue]) -> Build[Geometry]:
 
     # the zero positions: the slot touches circle(O, |e|) at the foot of O's perpendicular, so
     # OM ⊥ slot puts M on that circle and on the pusher path
-    ke = c.circle("k_e", O_, abs(e), r_name="|e|", note="the slot is always tangent to it")
+    ke = c.run(
+        "k_e", "circle(O, |e|)", lambda: Circle(O_, abs(e)), (O_,),
+        note="the slot is always tangent to it",
+        kind="slot_circle", args={"o": "O", "e": abs(e) * MM},
+    )  # fmt: skip
     feet = c.intersections(
-        "M*", path, ke, op="pusher path ∩ circle(O, |e|)", role="result", allow_empty=True
-    )
+        "M*", path, ke, op="pusher path ∩ circle(O, |e|)", role="result", allow_empty=True,
+        kind="dead_points", args={"o": "O", "h": abs(h) * MM},
+    )  # fmt: skip
     if not feet:
         raise NoIntersection(
             "M* = pusher path ∩ circle(O, |e|)",
@@ -363,18 +374,28 @@ def build(p: Mapping[str, ParamValue]) -> Build[Geometry]:
         nz = Mz * (1.0 / e)
         th = c.value(f"θ1*{i + 1}", math.atan2(-nz.x, nz.y), "direction of the tangent at M*")
         uz = Vec(math.cos(th), math.sin(th))
-        c.line(f"slot*{i + 1}", Mz, uz, "tangent to circle(O, |e|) at M*: ML ⊥ MO", role="result")
+        c.line(
+            f"slot*{i + 1}", Mz, uz, "tangent to circle(O, |e|) at M*: ML ⊥ MO", role="result",
+            kind="dead_slot", args={"th": wrap_deg(to_deg(th))},
+        )  # fmt: skip
         zeros.append(ZeroPosition(th, Mz, uz, Mz + uz * (SLOT_PAST * abs(e))))
     zeros.sort(key=lambda z: wrap_deg(to_deg(z.theta1)))
     zero_deg = [wrap_deg(to_deg(z.theta1)) for z in zeros]
 
     # the velocity plan at θ1 (ω1 = 1 rad/s): V_M6 = V_M1 + V_M6M1
     pole = c.point("p", (0.0, 0.0), note="pole of the velocity plan, ω1 = 1 rad/s")
-    m1 = c.point("m1", pole + M.perp(), role="construction", op="p + ω1 × OM (pm1 ⊥ OM)")
+    th1 = wrap_deg(float(p["theta1_deg"]))
+    m1 = c.point(
+        "m1", pole + M.perp(), role="construction", op="p + ω1 × OM (pm1 ⊥ OM)",
+        kind="plan_turning", args={"a": "m1", "r": "OM", "th": th1},
+    )  # fmt: skip
     rel = c.line("m1m6", m1, u1, "through m1 ∥ slot: V_M6M1")
     abs_ = c.line("pm6", pole, up, "through p ∥ pusher path: V_M6 = V_T")
-    m6 = c.intersect("m6", rel, abs_, role="result")
-    vt = c.value("V_T/ω1", (m6 - pole).dot(up), "pm6 along (cos ψ, sin ψ)", (m6,))
+    m6 = c.intersect("m6", rel, abs_, role="result", kind="plan_slot_path", args={"a": "m1"})
+    vt = c.value(
+        "V_T/ω1", (m6 - pole).dot(up), "pm6 along (cos ψ, sin ψ)", (m6,),
+        kind="plan_pusher", args={"value": (m6 - pole).dot(up)},
+    )  # fmt: skip
 
     # the position the sheet builds: the zero position nearest to θ1, with its plan
     built = min(
@@ -382,13 +403,19 @@ def build(p: Mapping[str, ParamValue]) -> Build[Geometry]:
         key=lambda i: abs(math.remainder(zeros[i].theta1 - theta1, 2.0 * math.pi)),
     )
     z = zeros[built]
-    m1z = c.point("m1*", pole + z.M.perp(), role="construction", op="p + ω1 × OM* (∥ slot)")
+    thz = wrap_deg(to_deg(z.theta1))
+    m1z = c.point(
+        "m1*", pole + z.M.perp(), role="construction", op="p + ω1 × OM* (∥ slot)",
+        kind="plan_turning", args={"a": "m1", "r": "OM", "th": thz},
+    )  # fmt: skip
     m6z = c.intersect(
         "m6*",
         c.line("m1*m6*", m1z, z.u1, "through m1* ∥ slot*: passes through p"),
         c.line("pm6*", pole, up, "through p ∥ pusher path"),
         role="result",
         op="m1*m6* ∩ pm6*: m6* = p, V_T = 0",
+        kind="plan_dead",
+        args={"a": "m1"},
     )
     if m6z.dist(pole) > tol.DERIVED * abs(e):
         raise ConstructionError(c.step("m6*").title, "the plan at M* does not close at the pole")

@@ -41,8 +41,8 @@ import numpy as np
 
 from geomcad import tol
 from geomcad.construction import Construction
-from geomcad.errors import GeomcadError, ParameterError
-from geomcad.geom import Vec
+from geomcad.errors import ConstructionError, GeomcadError, ParameterError
+from geomcad.geom import Circle, Vec, perpendicular
 from geomcad.kinematics.cams import (
     CamProfile,
     Follower,
@@ -55,10 +55,15 @@ from geomcad.kinematics.cams import (
     velocity_plan,
 )
 from geomcad.kinematics.motion_laws import CamProgram, standard_program
+from geomcad.kinematics.plan import Plan, Side
+from geomcad.kinematics.plan import velocity_plan as plan_of
 from geomcad.problem import Build, ParamValue
 from geomcad.units import deg, to_deg
 
 from .spec_2013_2 import PROBLEM as PROBLEM
+
+#: m → mm for the operands of the order of construction
+MM = 1000.0
 
 NOTES = [
     "seed notation: it calls the similar triangle OBB′ but writes its sides as Bb and Ob in "
@@ -118,7 +123,10 @@ def build(p: Mapping[str, ParamValue]) -> Build[Geometry]:
 
     c = Construction(f"2013-2: cam profile by inversion ({law} law, {kind} follower)")
     centre = c.point("O", (0.0, 0.0), note="the cam's centre of rotation")
-    c.circle("base", centre, r0, role="given", r_name="r0", note="the theoretical profile's")
+    c.run(
+        "base", "circle(O, r0)", lambda: Circle(centre, r0), (centre,), "given",
+        "the theoretical profile's", kind=f"cam_base_{kind}", args={"r": r0 * MM},
+    )  # fmt: skip
     a = c.value("a", H / rise, "H / φ_rise (S′ of the linear law)")
     what = "the full turn" if closed else f"φ = 0 … {to_deg(span):.6g}°"
     prof = c.run(
@@ -126,13 +134,15 @@ def build(p: Mapping[str, ParamValue]) -> Build[Geometry]:
         f"{profile_step_name(kind).split(' = ', 1)[1]}, over {what}",
         lambda: cam_profile(program, f, 0.0, span, closed),
         role="result",
+        kind=f"cam_profile_{kind}",
+        args={"r": r_r * MM},
     )
     phis = np.linspace(0.0, span, n_div + 1)
     div = at_angles(program, f, phis, span)
-    _record_divisions(c, f, div)
+    _record_divisions(c, f, div, span)
     k = _plan_index(div.S1)
     plan = velocity_plan(program, f, float(div.phi[k]))
-    _record_plan(c, plan, k)
+    _record_plan(c, f, plan, k)
 
     r = [float(x) for x in div.radius]
     results: dict[str, Any] = {
@@ -172,9 +182,18 @@ def _plan_index(S1: np.ndarray) -> int:
     return min(best, key=lambda i: (abs(i - mid), i))
 
 
-def _record_divisions(c: Construction, f: Follower, div: CamProfile) -> None:
-    """Per division point: the follower turned back by φ_i, its face (or tip) and B_i, r_i."""
+def _record_divisions(c: Construction, f: Follower, div: CamProfile, span: float) -> None:
+    """Per division point: the follower turned back by φ_i, its face (or tip) and B_i, r_i.
+
+    Each step's kind is a general step of the inversion, its operand ``i`` the division's index
+    (the sheet writes the steps of one division with ``i`` for the index: "for each φ_i")."""
     centre = c["O"]
+    n = len(div.phi) - 1
+    c.value(
+        "Δφ", span / n, f"the span {to_deg(span):.6g}° in {n} equal intervals",
+        kind="cam_divide", args={"span": to_deg(span), "n": float(n), "d": to_deg(span / n)},
+    )  # fmt: skip
+    offset = f.kind != "flat" and f.e != 0.0
     for i in range(len(div.phi)):
         phi = float(div.phi[i])
         c.value(f"φ_{i}", phi, f"division point {i}")
@@ -185,33 +204,66 @@ def _record_divisions(c: Construction, f: Follower, div: CamProfile) -> None:
         # the flat face is built from the line through O along the motion (the stem's offset
         # does not change the profile); a knife's or roller's axis is offset by e
         foot = Vec(0.0 if f.kind == "flat" else f.e, 0.0).rotated(turn)
-        axis = c.line(f"axis_{i}", foot, up, f"the follower's axis turned back by φ_{i}")
+        axis = c.line(
+            f"axis_{i}", foot, up, f"the follower's axis turned back by φ_{i}",
+            kind="cam_axis_offset" if offset else "cam_axis",
+            args={"i": float(i), "e": abs(f.e) * MM} if offset else {"i": float(i)},
+        )  # fmt: skip
         C = c.point(
             f"C_{i}",
             Vec(*div.pitch[i]),
             role="construction",
             op=f"on axis_{i} at {'r0 + S' if f.kind == 'flat' else 's0 + S'}_{i}",
+            kind="cam_lay_offset" if offset else "cam_lay",
+            args={"i": float(i), "s0": f.s0 * MM} if offset else {"i": float(i)},
         )
         if f.kind == "flat":
-            c.perpendicular(f"face_{i}", axis, C, note="the face, ⊥ the motion")
+            c.record(
+                f"face_{i}", f"perpendicular to axis_{i} at C_{i}", perpendicular(axis, C),
+                (axis, C), note="the face, ⊥ the motion", kind="cam_face", args={"i": float(i)},
+            )  # fmt: skip
             op = f"on face_{i} at S′_{i} from C_{i} (the velocity plan)"
         elif f.kind == "roller":
             op = f"circle(C_{i}, r_roller) touching the profile along its normal"
         else:
             op = f"the knife's tip C_{i}"
-        B = c.point(f"B_{i}", Vec(*div.contact[i]), role="result", op=op)
+        B = c.point(
+            f"B_{i}", Vec(*div.contact[i]), role="result", op=op,
+            kind=f"cam_contact_{f.kind}", args={"i": float(i), "r": f.r_roller * MM},
+        )  # fmt: skip
         c.value(f"r_{i}", B.dist(centre), f"|OB_{i}|", (centre, B))
 
 
-def _record_plan(c: Construction, plan: VelocityPlan, k: int) -> None:
-    """The velocity plan at division point k (fixed frame, ω = 1 rad/s)."""
-    B = c.point("B", plan.B, role="construction", op=f"the contact point at φ_{k}, fixed frame")
-    c.point("b1", B + plan.V_B1, role="construction", op="B + V_B1, V_B1 = ω × OB")
-    c.point("b2", B + plan.V_B2, role="construction", op="B + V_B2, V_B2 along the motion")
+def _record_plan(c: Construction, f: Follower, plan: VelocityPlan, k: int) -> Plan:
+    """The velocity plan at division point k (fixed frame, ω = 1 rad/s), built as the vector
+    equation V_B2 = V_B1 + V_B2B1 (:mod:`geomcad.kinematics.plan`), and the triangle OBB′
+    similar to it; the plan must agree with the cam's (:func:`velocity_plan` of the law)."""
+    B = c.point(
+        "B", plan.B, role="construction", op=f"the contact point at φ_{k}, fixed frame",
+        kind="cam_plan_at", args={"k": float(k), "phi": to_deg(plan.phi)},
+    )  # fmt: skip
+    vp = plan_of(c)
+    vp.rigid("b1", "p", Vec(0.0, 0.0), B, f.sigma * plan.omega, "V_{B1}", "the cam's point at B",
+             link=1, model=("O", "B"))  # fmt: skip
+    # V_B2B1 along the face (flat) or along the pitch curve's tangent at B (knife, roller)
+    along = Vec(1.0, 0.0) if f.kind == "flat" else plan.V_B2B1
+    vp.solve(
+        "b2",
+        Side("b1", along, "∥ the face BC" if f.kind == "flat" else "∥ the pitch curve's tangent",
+             line="BC" if f.kind == "flat" else "@tangent", unknown="V_{B2B1}"),
+        Side("p", Vec(0.0, 1.0), "∥ the motion", line="@guide"),
+    )  # fmt: skip
+    b2 = vp.absolute("b2", "V_{B2}", "the follower's velocity")
+    if b2.dist(plan.V_B2) > tol.DERIVED * max(plan.V_B1.norm, plan.V_B2.norm):
+        raise ConstructionError(
+            c.step("b2").title, f"{b2!r} differs from the cam's V_B2 = {plan.V_B2!r}"
+        )
     c.point(
-        "B′", plan.B_prime, role="construction", op="normal at B ∩ line through O across motion"
-    )
+        "B′", plan.B_prime, role="construction", op="normal at B ∩ line through O across motion",
+        kind="cam_similar", args={"value": abs(plan.S1) * MM},
+    )  # fmt: skip
     c.value("OB′", plan.B_prime.norm, "|OB′| = S′ (the similar triangle OBB′)")
+    return vp
 
 
 def _points(prof: CamProfile) -> list[list[float]]:

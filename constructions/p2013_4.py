@@ -49,6 +49,9 @@ from geomcad.units import to_deg
 from .spec_2013_4 import PARAMS
 from .spec_2013_4 import PROBLEM as PROBLEM
 
+#: m → mm for the operands of the order of construction
+MM = 1000.0
+
 #: What the seed should have written for the half angular thickness (its formula is garbled).
 CORRECT_PSI_FORMULA = "tg ψ_y = (s̄_y/2)/(d_a/2 − h̄_ay) = s̄_y/(d_a − 2h̄_ay) = 18,1/401,8 = 0,04505"
 #: The seed's text as printed (LaTeX): tan φ_y/2 over (d_a − 2h̄) = 18,1/(420 − 2·9,1).
@@ -103,20 +106,40 @@ def build(p: Mapping[str, ParamValue]) -> Build[Geometry]:
         Where(lambda q: q.y > 0.0, "on the tooth's side of O"),
         role="given",
         op="axis ∩ tip circle (the height jaw rests here)",
+        kind="caliper_tip",
+        args={"d_a": d_a * MM},
     )
-    H = c.point("H", T - Vec(0.0, h_bar), "construction", op="T − h̄ along the axis")
+    H = c.point(
+        "H", T - Vec(0.0, h_bar), "construction", op="T − h̄ along the axis",
+        kind="caliper_height", args={"t": "T", "h": h_bar * MM},
+    )  # fmt: skip
     c.perpendicular("chord", axis, H, note="the caliper's jaws touch the flanks on it")
     # K on the right flank (x > 0), K′ on the left one
     right = Vec(axis.d.y, -axis.d.x)
-    K = c.point("K", H + right * (s_bar / 2.0), "result", op="H + s̄/2 along the chord")
+    K = c.point(
+        "K", H + right * (s_bar / 2.0), "result", op="H + s̄/2 along the chord",
+        kind="caliper_chord", args={"h": "H", "other": "K'", "half": s_bar / 2.0 * MM},
+    )  # fmt: skip
     c.point("K'", H - right * (s_bar / 2.0), "result", op="H − s̄/2 along the chord")
-    psi_y = c.value("ψ_y", math.atan2(K.x, K.y), "∠TOK: tan ψ_y = s̄/(d_a − 2h̄)", (T, centre, K))
+    psi = math.atan2(K.x, K.y)
+    psi_y = c.value(
+        "ψ_y", psi, "∠TOK: tan ψ_y = s̄/(d_a − 2h̄)", (T, centre, K),
+        kind="chord_half_angle",
+        args={"s": s_bar * MM, "den": (d_a - 2.0 * h_bar) * MM, "tan": K.x / K.y, "value": psi},
+    )  # fmt: skip
     k_y = c.circle(
         "k_y", centre, centre.dist(K), role="construction", r_name="|OK|", note="circle d_y"
     )
-    d_y = c.value("d_y", 2.0 * k_y.r, "2·|OK| = s̄/sin ψ_y")
+    d_y = c.value(
+        "d_y", 2.0 * k_y.r, "2·|OK| = s̄/sin ψ_y",
+        kind="circle_through", args={"o": "O", "k": "K", "value": 2.0 * k_y.r * MM},
+    )  # fmt: skip
     d = c.value("d", m * z, "m·z")
-    d_b = c.value("d_b", d * math.cos(alpha), "d·cos α")
+    d_b = c.value(
+        "d_b", d * math.cos(alpha), "d·cos α",
+        kind="base_diameter",
+        args={"m": m * MM, "z": float(z), "alpha": alpha_deg, "value": d * math.cos(alpha) * MM},
+    )  # fmt: skip
     k_b = c.circle(
         "k_b", centre, d_b / 2.0, role="construction", r_name="d_b/2", note="base circle"
     )
@@ -129,13 +152,31 @@ def build(p: Mapping[str, ParamValue]) -> Build[Geometry]:
         (K, k_b),
         "construction",
         note="KN is the involute's normal at K",
+        kind="tangent_to_base",
+        args={"k": "K"},
     )
+    a_y = abs((N - centre).angle - (K - centre).angle)
     alpha_y = c.value(
-        "α_y", abs((N - centre).angle - (K - centre).angle), "∠KON: cos α_y = d_b/d_y"
-    )
-    inv_y = c.value("inv α_y", K.dist(N) / k_b.r - alpha_y, "KN/r_b − α_y = tan α_y − α_y")
-    s = c.value("s", d * (psi_y + inv_y - inv(alpha)), "d·(ψ_y + inv α_y − inv α)")
-    x = c.value("x", (s - math.pi * m / 2.0) / (2.0 * m * math.tan(alpha)), "(s − πm/2)/(2m·tg α)")
+        "α_y", a_y, "∠KON: cos α_y = d_b/d_y",
+        kind="pressure_angle_at", args={"k": "K", "n": "N", "cos": d_b / d_y, "deg": to_deg(a_y)},
+    )  # fmt: skip
+    thread = K.dist(N)
+    inv_y = c.value(
+        "inv α_y", thread / k_b.r - alpha_y, "KN/r_b − α_y = tan α_y − α_y",
+        kind="involute_function",
+        args={"kn": thread * MM, "rb": k_b.r * MM, "a": alpha_y,
+              "value": thread / k_b.r - alpha_y},
+    )  # fmt: skip
+    s = c.value(
+        "s", d * (psi_y + inv_y - inv(alpha)), "d·(ψ_y + inv α_y − inv α)",
+        kind="thickness_from_involute",
+        args={"d": d * MM, "inv": inv(alpha), "value": d * (psi_y + inv_y - inv(alpha)) * MM},
+    )  # fmt: skip
+    x_val = (s - math.pi * m / 2.0) / (2.0 * m * math.tan(alpha))
+    x = c.value(
+        "x", x_val, "(s − πm/2)/(2m·tg α)",
+        kind="shift_from_thickness", args={"value": 0.0 if abs(x_val) < tol.DERIVED else x_val},
+    )  # fmt: skip
 
     gear = c.run(
         "gear",
@@ -146,11 +187,13 @@ def build(p: Mapping[str, ParamValue]) -> Build[Geometry]:
     flank = c.run("flank", "envelope of the rack's flank", lambda: gear.flank(240))
     c.point("S", Vec.polar(gear.r, math.pi / 2.0 - s / d), "result", op="flank ∩ pitch circle")
     psi_gen = c.value("ψ_y (generated)", gear.half_angle(d_y), "η of the generated flank at d_y")
+    s_gen = gear.chord_at_height(h_bar).s_bar
     s_back = c.value(
-        "s̄ (caliper on the generated tooth)",
-        gear.chord_at_height(h_bar).s_bar,
-        "chord at h̄ below the tip",
-    )
+        "s̄ (caliper on the generated tooth)", s_gen, "chord at h̄ below the tip",
+        kind="caliper_check",
+        args={"k": "K", "h": h_bar * MM, "s": s_gen * MM,
+              "x": 0.0 if abs(x_val) < tol.DERIVED else x_val},
+    )  # fmt: skip
     for name, got, want in (
         ("ψ_y (generated)", psi_gen, psi_y),
         ("s̄ (caliper on the generated tooth)", s_back, s_bar),

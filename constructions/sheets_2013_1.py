@@ -46,6 +46,9 @@ CIRCLE_STEPS = 48
 #: Paper length (mm) of the construction lines through a plan's points.
 PLAN_LINE = 14.0
 WORDS = Words(__package__, "sheets_2013_1")
+#: The order of construction (the steps constructions/p2013_1.py records with their kinds): the
+#: position with V_T = 0 and its plan, then the plan at the given θ1.
+ORDER = ("M", "k_e", "M*", "slot*1", "slot*2", "m1*", "m6*", "m1", "m6", "V_T/ω1")
 
 
 def _num(x: float, digits: int = 6) -> str:
@@ -376,7 +379,9 @@ def _position(v: Viewport, geo: Geometry) -> None:
     v.label(z.L, "L", prefer=(0.0, 1.0))
     v.label(z.M + up * (1.6 * e), "7", prefer=(1.0, 0.0))
     v.label(z.M - z.u1 * r, "6", prefer=(-z.u1.x, -z.u1.y), clear=0.5)
-    v.label(z.L - z.u1 * (0.3 * e), "1", prefer=(0.0, 1.0), clear=r / k.k + 0.5)
+    # lever 1's number beside its slot's outline, on the side away from O
+    edge = z.L - z.u1 * (0.3 * e) + n1 * (side * r)
+    v.label(edge, "1", prefer=(side * n1.x, side * n1.y), clear=0.5)
     v.label((O_ + z.M) * 0.5, "|e|", prefer=(-n1.x, -n1.y), height=2.5)
     v.label(z.L + z.u1 * (0.3 * e), f"θ_1 = {th}°", height=2.5, prefer=(1.0, -1.0))
     foot = path.foot(O_)
@@ -518,7 +523,9 @@ def _panel(sol: Solution[Geometry], geo: Geometry) -> list[View]:
         [WORDS("vt_at", th=t1), f"{vt} {WORDS('metre')}"],
     ]
     out.append(V.Table(rows, widths=(80.0, 70.0), row_h=5.0, title=WORDS("pusher_title")))
-    text(WORDS("construction_note"))
+    steps = [sol.construction.step(n) for n in ORDER]
+    out.append(V.Steps(steps, PANEL_W, only=ORDER, words=WORDS))
+    text(WORDS("four_bar_note"))
     if geo.counts_mode:
         text(WORDS("counts_note"))
     return out

@@ -14,6 +14,7 @@ Scale choice lives here (:func:`scales`): the problem's build returns only its m
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from typing import TYPE_CHECKING
 
@@ -42,6 +43,7 @@ from geomcad.sheet.lang import Words, current, per_language
 from geomcad.sheet.text import wrap
 
 if TYPE_CHECKING:
+    from geomcad.construction.recorder import Step
     from geomcad.problem import Solution
 
     from .p2013_2 import Geometry
@@ -59,6 +61,9 @@ FACE_OVER = 6.0
 #: A plan vector shorter than this (mm) is drawn as a point with its label (twice the head).
 #: Width (mm) of the panel's text, and the title block's height (kept free under the panel).
 PANEL_W = 250.0
+#: Width and letter height (mm) of the order of construction.
+ORDER_W = 280.0
+ORDER_H = 2.5
 BLOCK_H = 52.0
 
 
@@ -100,11 +105,12 @@ class _Views:
             left.append(V.Text([WORDS("rest_note", span=_n(span), end=_n(end))], height=2.5))
         law = WORDS(f"law_{sol.params['law']}")
         left.append(Row(*_diagrams(sol), weights=(1.0, 1.0), title=WORDS("graph_title", law=law)))
+        steps = order_steps(sol)
         plan = geo.plan
         phi = math.degrees(plan.phi)
         self.scheme = Figure(
             _scheme_extent(sol), lambda v: _scheme(v, sol),
-            title=WORDS("scheme_title", i=geo.plan_index, phi=_n(phi)), margin=6.0,
+            title=WORDS("scheme_title", i=geo.plan_index, phi=_n(phi)), margin=6.0, weight=2.0,
         )  # fmt: skip
         vectors = [plan.V_B1, plan.V_B2, plan.V_B2 - plan.V_B1]
         shortest = min((q.norm for q in vectors if q.norm > 0.0), default=0.0)
@@ -115,12 +121,12 @@ class _Views:
         eq = "OB' = BC = S'" if f.kind == "flat" else "OB' = S'"
         right: list[View | Node] = [
             Row(self.scheme, self.plan),
-            V.Text([WORDS("scheme_note", eq=eq), WORDS("plan_omega")], height=2.5),
+            V.Text([f"{WORDS('scheme_note', eq=eq)} {WORDS('plan_omega')}"], height=2.5),
             *_tables(sol),
             V.Text(_notes(sol), width=PANEL_W, height=3.0),
-            V.Text(
-                [f"{i + 1}. {t}" for i, t in enumerate(_order(sol))], height=3.0,
-                title=WORDS("order_title"), title_height=5.0,
+            V.Steps(
+                steps, ORDER_W, only=[st.name for st in steps], height=ORDER_H, words=WORDS,
+                title_height=5.0,
             ),
             Spacer((10.0, BLOCK_H)),
         ]  # fmt: skip
@@ -472,7 +478,7 @@ def _tables(sol: Solution[Geometry]) -> list[V.Table]:
          f"{e_mm} / {rr_mm} {mm}"],
     ]  # fmt: skip
     data = V.Table(
-        rows, widths=(30.0, 38.0, 30.0, 54.0, 40.0, 54.0), height=3.5, row_h=6.0, header=False,
+        rows, widths=(34.0, 43.0, 34.0, 62.0, 45.0, 62.0), height=3.5, row_h=6.0, header=False,
         title=WORDS("data_title"), title_height=5.0,
     )  # fmt: skip
     rows = [[WORDS(f"h_{q}") for q in ("i", "phi", "S", "S1", "r")]]
@@ -489,24 +495,28 @@ def _tables(sol: Solution[Geometry]) -> list[V.Table]:
         )
     rows.append(["a", "", "", "", _n(float(r["a"]) * MM)])
     results = V.Table(
-        rows, widths=(20.0, 50.0, 50.0, 50.0, 50.0), height=3.5, row_h=6.5,
+        rows, widths=(24.0, 64.0, 64.0, 64.0, 64.0), height=3.5, row_h=6.5,
         title=WORDS("results_title"), title_height=5.0,
     )  # fmt: skip
     return [data, results]
 
 
-def _order(sol: Solution[Geometry]) -> list[str]:
-    """The construction by inversion, step by step (one line each)."""
-    kind = sol.data.follower.kind
-    return [
-        WORDS("order_1"),
-        WORDS(
-            "order_2",
-            lay=WORDS("lay_flat" if kind == "flat" else "lay_other"),
-            what=WORDS(f"what_{kind}"),
-        ),
-        WORDS("order_3", last=WORDS(f"last_{kind}")),
-    ]
+def order_steps(sol: Solution[Geometry]) -> list[Step]:
+    """The steps of the order of construction, in the order a student writes them: the base
+    circle and the division, the steps of one division written for any index i ("for each
+    φ_i"), the profile, then the velocity plan at the plan's division point (its pole, its
+    points, the vector read off) and the similar triangle OBB′."""
+    c = sol.construction
+    one = 1 if len(sol.data.divisions.phi) > 1 else 0
+    each = [f"axis_{one}", f"C_{one}", f"face_{one}", f"B_{one}"]
+    plan = ["B", "p", "b1", "b2", "pb2", "B′"]
+    names = ["base", "Δφ", *(n for n in each if n in c), "profile", *plan]
+    return [_for_each(c.step(n)) if n in each else c.step(n) for n in names]
+
+
+def _for_each(step: Step) -> Step:
+    """A division's step written for any division: its index operand ``i`` as the letter i."""
+    return dataclasses.replace(step, args=tuple((k, "i" if k == "i" else v) for k, v in step.args))
 
 
 def _notes(sol: Solution[Geometry]) -> list[str]:

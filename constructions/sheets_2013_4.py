@@ -37,7 +37,7 @@ from geomcad.sheet import views as V
 from geomcad.sheet.compose import Column, Field, Figure, Row, Spacer, Tree, arrange, compose
 from geomcad.sheet.drawing import ARROW_LEN
 from geomcad.sheet.lang import Words, current, per_language
-from geomcad.sheet.text import SUB_DROP, SUB_SCALE, SUP_RISE, metrics, run_size, wrap
+from geomcad.sheet.text import SUB_DROP, SUB_SCALE, SUP_RISE, metrics, run_size
 from geomcad.sheet.text import width as text_width
 
 if TYPE_CHECKING:
@@ -76,7 +76,15 @@ WORDS = Words(__package__, "sheets_2013_4")
 MM = 1000.0  # m → mm for the tables
 CENTRE = Vec(0.0, 0.0)  # the gear's centre O
 #: Width (mm) of the order of construction's text.
-ORDER_W = 140.0
+ORDER_W = 144.0
+#: The tables' row height (mm).
+ROW_H = 5.0
+#: The steps of the order of construction (constructions/p2013_4.py records them with their
+#: kinds; the templates are this sheet's ``step.*`` words).
+ORDER = (
+    "T", "H", "K", "ψ_y", "d_y", "d_b", "N", "α_y", "inv α_y", "s", "x",
+    "s̄ (caliper on the generated tooth)",
+)  # fmt: skip
 #: The title block's height (mm): the right-hand column keeps it free.
 BLOCK_H = 52.0
 
@@ -104,15 +112,8 @@ def _views(sol: Solution[Geometry]) -> tuple[Tree, Figure]:
         title=WORDS("inset_title"), title_height=2.5, margin=4.0,
     )  # fmt: skip
     data, results, teeth = _tables(sol)
-    order = V.Text(
-        [
-            line
-            for par in [f"{i}. {WORDS(f'order_{i}')}" for i in range(1, 6)]
-            for line in wrap(par, ORDER_W, 2.5)
-        ],
-        title=WORDS("order_title"),
-    )
-    side = Column(inset, Row(data, results), teeth, order, Spacer((10.0, BLOCK_H)))
+    order = V.Steps(c, ORDER_W, only=ORDER, words=WORDS)
+    side = Column(Row(inset, Column(data, results)), teeth, order, Spacer((10.0, BLOCK_H)))
     return Row(main, side, weights=(5.0, 3.0)), main
 
 
@@ -184,7 +185,7 @@ def overline_marks(sheet: Sheet) -> None:
     for i, it in enumerate(sheet.items):
         if not isinstance(it, TextItem) or MACRON not in it.text:
             continue
-        x = it.at[0]
+        x = 0.0  # along the baseline from ``it.at``
         runs: list[Run] = []
         bars: list[tuple[tuple[float, float], tuple[float, float]]] = []
         for run in it.runs:
@@ -204,8 +205,8 @@ def overline_marks(sheet: Sheet) -> None:
                     runs.append(Run(letter, run.shift))
                     kept = ""
                     tall = letter.isupper() or letter in "bdfhklt"
-                    y_bar = it.at[1] + dy[run.shift] - (1.15 if tall else 0.92) * cap
-                    bars.append(((x - 0.73 * w, y_bar), (x - 0.1 * w, y_bar)))
+                    y_bar = dy[run.shift] - (1.15 if tall else 0.92) * cap
+                    bars.append((_turned(it, x - 0.73 * w, y_bar), _turned(it, x - 0.1 * w, y_bar)))
                     continue
                 kept += ch
                 x += m.advance(ch, fs)
@@ -219,6 +220,13 @@ def overline_marks(sheet: Sheet) -> None:
         role = "frame_thin" if it.role == "title" else "dimension"
         for a, b in bars:
             sheet.add(Polyline((a, b), role))
+
+
+def _turned(it: TextItem, x: float, y: float) -> tuple[float, float]:
+    """A point given in the text's own frame (x along its baseline from ``it.at``, y down across
+    it) on the paper: turned with the text by its angle (counter-clockwise on the paper)."""
+    c, s = math.cos(math.radians(it.angle)), math.sin(math.radians(it.angle))
+    return (it.at[0] + x * c + y * s, it.at[1] - x * s + y * c)
 
 
 def _arc(r: float, half: float) -> Arc:
@@ -359,7 +367,7 @@ def _tables(sol: Solution[Geometry]) -> tuple[V.Table, V.Table, V.Table]:
         (WORDS("height"), f"{_num(float(p['h_chord']) * MM)} {mm}"),
     ):
         rows.append([label, text])
-    data = V.Table(rows, widths=(30.0, 24.0), row_h=5.5, title=WORDS("data_title"))
+    data = V.Table(rows, widths=(30.0, 24.0), row_h=ROW_H, title=WORDS("data_title"))
     rows = [[WORDS("h_quantity"), WORDS("h_value")]]
     for name, label, scale in (
         ("d", f"d, {mm}", MM),
@@ -374,7 +382,7 @@ def _tables(sol: Solution[Geometry]) -> tuple[V.Table, V.Table, V.Table]:
         if name == "x" and abs(exact) < tol.DERIVED:
             exact = 0.0  # a shift of 10^-16 is no shift
         rows.append([label, _num(exact, digits=4)])
-    results = V.Table(rows, widths=(24.0, 22.0), row_h=5.5, title=WORDS("results_title"))
+    results = V.Table(rows, widths=(24.0, 22.0), row_h=ROW_H, title=WORDS("results_title"))
     k_span = geo.k_span
     rows = [[WORDS("h_quantity"), WORDS("h_value")]]
     for label, value in (
@@ -385,5 +393,5 @@ def _tables(sol: Solution[Geometry]) -> tuple[V.Table, V.Table, V.Table]:
         (f"W_{k_span} (z_W = {k_span})", f"{_num(geo.W * MM, digits=4)} {mm}"),
     ):
         rows.append([label, value])
-    teeth = V.Table(rows, widths=(40.0, 30.0), row_h=5.5, title=WORDS("tooth_title"))
+    teeth = V.Table(rows, widths=(40.0, 30.0), row_h=ROW_H, title=WORDS("tooth_title"))
     return data, results, teeth

@@ -223,6 +223,28 @@ class Finding:
     text: str
 
 
+def is_bar_of(it: Item, t: TextItem) -> bool:
+    """Whether a line is a bar drawn as part of the label ``t`` (an overline, s̄, h̄): one
+    straight stroke no longer than a letter is high, along the baseline, within the label's box
+    (or just over its top) and above its lower-case letters. A line that crosses the label runs out
+    of its box, or across its baseline, or through its letters: it is none of these."""
+    if not isinstance(it, Polyline) or len(it.points) != 2 or it.closed or it.fill:
+        return False
+    (ax, ay), (bx, by) = it.points
+    length = math.hypot(bx - ax, by - ay)
+    if not 0.0 < length <= t.height:
+        return False
+    # the stroke's direction and its height over the baseline, in the label's own frame
+    # (angle counter-clockwise on the paper, y down)
+    c, s = math.cos(math.radians(t.angle)), math.sin(math.radians(t.angle))
+    along = abs((bx - ax) * c - (by - ay) * s) / length
+    rise = [-(x - t.at[0]) * s - (y - t.at[1]) * c for x, y in it.points]
+    if along < math.cos(math.radians(1.0)) or min(rise) < 0.7 * t.height:
+        return False
+    # over a capital or an ascender the bar stands a little above the cap height
+    return bool(text_poly(t).buffer(0.3 + 0.2 * t.height).contains(geometry(it)))
+
+
 def findings(sheet: Sheet) -> list[Finding]:
     """The drafting findings of :data:`KINDS` on a sheet."""
     _form, drawn = block_part(sheet)
@@ -237,7 +259,7 @@ def findings(sheet: Sheet) -> list[Finding]:
         if p.is_empty:
             continue
         for j in tree.query(p, predicate="intersects"):
-            if strokes[j].intersection(p).area > AREA_EPS:
+            if strokes[j].intersection(p).area > AREA_EPS and not is_bar_of(lines[j], t):
                 it = lines[j]
                 kind = "tick-label" if t.role != "title" and is_tick_value(t) else "label-line"
                 out.append(Finding(kind, f"{t.text!r} {text_box(t)} × {it.role} {item_box(it)}"))

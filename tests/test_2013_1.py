@@ -341,3 +341,28 @@ def test_sheet_is_true_to_scale() -> None:
     assert {"O", "M", "L", "p, m6", "m1"} <= labels
     assert Scale(k, "l").ratio_text() == "1:2"
     assert Scale(sol.scales["l"], "l").ratio_text() == "1:4"
+
+
+def test_order_of_construction_is_the_recorded_steps() -> None:
+    """The panel's order of construction is ORDER's steps through their kinds' templates, in
+    both languages, with the recorded zero positions and V_T/ω1 written as a student writes
+    them."""
+    from geomcad_constructions.sheets_2013_1 import ORDER, WORDS
+
+    from geomcad.sheet import views as V
+    from geomcad.sheet.lang import language
+
+    sol = geomcad.solve("2013-1")
+    c = sol.construction
+    assert all(c.step(n).kind for n in ORDER)
+    for lang in ("ru", "en"):
+        with language(lang):
+            steps = V.Steps([c.step(n) for n in ORDER], 162.0, only=ORDER, words=WORDS)
+            numbered = [t for t in steps.lines if t[:1].isdigit()]
+            assert len(numbered) == len(ORDER)
+            text = " ".join(steps.lines)
+            for deg in sol.results["zero_theta1_deg"]:
+                assert f"θ_1 = {V.num(deg)}°" in text
+            assert f"pm_6 = {V.num(sol.results['VT_over_omega1'])}" in text
+            # the dead position first, then the plan at the given θ1
+            assert text.index("M*") < text.index("pm_6 =")

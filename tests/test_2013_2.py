@@ -380,3 +380,39 @@ def test_variant_sheets_fit_at_a_gost_scale(params: dict[str, object]) -> None:
     _check_layout(sheet)
     # every paragraph is drawn (a glyph missing from the font would have raised)
     assert any(t.text == "Порядок построения" for t in sheet.texts())
+
+
+@pytest.mark.parametrize(
+    "params",
+    [{}, {"follower": "roller", "r_roller": 0.01, "e": 0.005}, {"follower": "knife"}],
+    ids=["flat", "roller", "knife"],
+)
+def test_order_of_construction_is_the_recorded_steps(params: dict[str, object]) -> None:
+    """The order of construction lists the recorded steps through their kinds' templates: one
+    division's steps written for any index i ("for each φ_i"), then the profile and the velocity
+    plan of geomcad.kinematics.plan, with the recorded values, in both languages."""
+    from geomcad_constructions.sheets_2013_2 import WORDS, order_steps
+
+    from geomcad.sheet import views as V
+    from geomcad.sheet.lang import language
+
+    sol = geomcad.solve("2013-2", **params)
+    c = sol.construction
+    steps = order_steps(sol)
+    names = [s.name for s in steps]
+    assert names[:2] == ["base", "Δφ"] and names[-6:] == ["B", "p", "b1", "b2", "pb2", "B′"]
+    assert "profile" in names and all(s.kind for s in steps)
+    # the division's steps are recorded for every φ_i; the order writes them once, with i
+    each = [s for s in steps if dict(s.args).get("i") == "i"]
+    assert len(each) == (4 if sol.params["follower"] == "flat" else 3)
+    assert all(dict(c.step(s.name).args)["i"] == 1.0 for s in each)
+    for lang in ("ru", "en"):
+        with language(lang):
+            view = V.Steps(steps, 280.0, only=names, height=2.5, words=WORDS)
+            numbered = [t for t in view.lines if t[:1].isdigit()]
+            assert len(numbered) == len(steps)
+            text = " ".join(view.lines)
+            assert "C_{i}" in text and "C_{1}" not in text
+            v_b2 = c.step("pb2").result.norm
+            assert f"= {V.num(v_b2)} " in text  # V_B2 = pb2·μ_V, read off the plan
+            assert f"S' = {V.num(sol.data.plan.S1 * 1000.0)} " in text  # OB' = S', mm

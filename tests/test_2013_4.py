@@ -224,7 +224,7 @@ def test_sheet_layout(params: dict[str, float]) -> None:
     # no drawn line reaches a table or the order of construction
     tree, _main = _views(sol)
     lay = arrange(tree, Field.of_format("A3"))
-    boxes = [pl.inner for pl in lay if isinstance(pl.view, V.Table | V.Text)]
+    boxes = [pl.inner for pl in lay if isinstance(pl.view, V.Table | V.Text | V.Steps)]
     for it in sheet.items:
         if getattr(it, "role", "") in ("frame", "frame_thin", "title", "label"):
             continue
@@ -233,3 +233,58 @@ def test_sheet_layout(params: dict[str, float]) -> None:
             if x0 < b[2] and b[0] < x1 and y0 < b[3] and b[1] < y1:
                 problems.append(f"{it.role} line {item_box(it)} reaches the table at {b}")
     assert not problems, "\n".join(problems)
+
+
+def test_order_of_construction_is_the_recorded_steps() -> None:
+    """The order of construction lists the steps of ORDER through their kinds' templates, in
+    both languages, with the recorded values (ψ_y, x) as the student writes them."""
+    from geomcad_constructions.sheets_2013_4 import ORDER, WORDS
+
+    from geomcad.sheet import views as V
+    from geomcad.sheet.lang import language
+
+    sol = geomcad.solve("2013-4")
+    c = sol.construction
+    cases = (
+        ("ru", "ψ_y = 0,04502 рад", "x = (s – πm/2)/(2m·tg α) = 0,4284"),
+        ("en", "ψ_y = 0.04502 rad", "x = (s – πm/2)/(2m·tan α) = 0.4284"),
+    )
+    for lang, psi, x in cases:
+        with language(lang):
+            steps = V.Steps(c, 140.0, only=ORDER, words=WORDS)
+            numbered = [t for t in steps.lines if t[:1].isdigit()]
+            assert len(numbered) == len(ORDER) == 12
+            text = " ".join(steps.lines)
+            assert psi in text and x in text
+            assert f"ψ_y = {V.num(c['ψ_y'])}" in text and x.endswith(V.num(c["x"]))
+            assert all(c.step(n).kind for n in ORDER)
+
+
+def test_bars_belong_to_their_labels() -> None:
+    """The bars over s̄ and h̄ lie on their letters (the turned h̄ of the vertical dimension
+    too), and the checker takes them for part of their labels, not lines crossing them; a line
+    through a label is still found."""
+    from layout import findings, is_bar_of, text_poly
+
+    from geomcad.sheet.model import TextItem
+
+    ((_, sheet),) = geomcad.solve("2013-4").sheets()
+    texts = [t for t in sheet.items if isinstance(t, TextItem)]
+    bars = [
+        it
+        for it in sheet.items
+        if isinstance(it, Polyline) and len(it.points) == 2
+        and math.dist(*it.points) < 2.0 and it.role in ("dimension", "frame_thin")
+    ]  # fmt: skip
+    assert len(bars) >= 6  # s̄, h̄ in the dimensions, the data table and the order
+    for b in bars:
+        assert any(is_bar_of(b, t) for t in texts), b
+    assert not [f for f in findings(sheet) if f.kind == "label-line"]
+    turned = [t for t in texts if t.angle and any(is_bar_of(b, t) for b in bars)]
+    assert turned, "the bar over h̄ of the vertical dimension turns with its text"
+    # a line across a label, or one over its whole length, is not a bar of it
+    t = turned[0]
+    x0, y0, x1, y1 = text_poly(t).bounds
+    mid = ((x0 + x1) / 2.0, (y0 + y1) / 2.0)
+    for pts in (((x0 - 3.0, mid[1]), (x1 + 3.0, mid[1])), ((mid[0], y0 - 3.0), (mid[0], y1 + 3.0))):
+        assert not is_bar_of(Polyline(pts, "thin"), t)
