@@ -272,7 +272,9 @@ class Plan:
         kind = "plan_same"
         if reason:
             kind, args["why"] = "plan_same_why", reason
-        return self._add(point, self[as_], f"the same point as {self.name(as_)} ({why})", kind, args)
+        return self._add(
+            point, self[as_], f"the same point as {self.name(as_)} ({why})", kind, args
+        )
 
     def _turning(
         self, point: str, base: str, r: Vec, link: str | int, model: tuple[str, str]
