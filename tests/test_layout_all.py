@@ -59,7 +59,7 @@ BASELINE: dict[tuple[str, str], dict[str, int]] = {
     # the golden linkage files (tests/test_golden.py): plan vectors under two arrowheads are
     # lettered points (with a note)
     ("linkage-shaper", ""): {"anchor": 2, "empty": 1},
-    ("linkage-shaper", "forces"): {"anchor": 3, "empty": 1},
+    ("linkage-shaper", "forces"): {"empty": 1},
     ("linkage-shaper", "dynamics"): {"empty": 1},
     ("linkage-four-bar", ""): {"empty": 1},
 }

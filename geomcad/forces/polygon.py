@@ -218,7 +218,9 @@ def force_polygon(
         c.value(f"{name}: |{n}|", value, f"closing side of {name}, signed along the assumed sense")
     mark = dict(words or {})
     names = [mark.get(t.name, t.name) for t in terms]
-    solved = dict(poly.solved)
+    # a magnitude at the level of rounding (a force the equation makes zero) is written as 0
+    size = max((v.force.norm for v in poly.vectors), default=0.0)
+    solved = {n: (0.0 if abs(x) <= 1e-12 * size else x) for n, x in poly.solved}
     return c.record(
         name,
         f"force polygon {eq}, head to tail from the pole",
