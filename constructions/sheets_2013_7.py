@@ -448,7 +448,7 @@ ORDER = ("ω_3/ω_6", "sense ω_32", "sense ω_36", "sense ω_67", "ρ", "α", "
 ORDER_NO_FRICTION = ("ρ", "α", "plan 2", "Q", "line P", "K", "line R_76", "plan 6", "ω")
 
 
-def order_steps(sol: Solution) -> list[Step]:
+def order_steps(sol: Solution[Geometry]) -> list[Step]:
     """The steps of the order of construction, their operands in the language being drawn (the
     inertia force's letter: Ф in Russian, Φ in English)."""
     geo: Geometry = sol.data
@@ -464,7 +464,7 @@ def order_steps(sol: Solution) -> list[Step]:
     return out
 
 
-def _steps(sol: Solution) -> Column:
+def _steps(sol: Solution[Geometry]) -> Column:
     """The order of construction written from the recorded steps (their kinds' templates in
     ``strings/<lang>/sheets_2013_7.toml``), and one note that no step records: how the forces
     are drawn on the scheme."""

@@ -49,7 +49,7 @@ from geomcad.sheet.lang import Words, current
 from geomcad.sheet.linkage import WORDS as KIN_WORDS
 from geomcad.sheet.linkage import file_title, link_bodies, table_number
 from geomcad.sheet.loads import force, moment
-from geomcad.sheet.model import XY, Polyline, Sheet
+from geomcad.sheet.model import XY, Polyline
 from geomcad.sheet.placer import text_outline
 from geomcad.sheet.plans import markup_of
 from geomcad.sheet.scale import Scale
