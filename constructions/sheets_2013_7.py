@@ -176,7 +176,7 @@ def _tree(sol: Solution[Geometry]) -> tuple[Node, dict[str, View]]:
             joint_row,
             Row(_steps(sol), Spacer((TITLE_BLOCK[0] - 70.0, 10.0))),
         ),
-        Column(_given(sol), _compare(geo), _results(sol), low),
+        Column(_given(sol), _compare(geo), _results(sol), _note(), low),
         weights=(0.82, 0.18),
     )
     return tree, {"mech": mech, "plan6": plan6, "plan2": plan2}
@@ -311,7 +311,7 @@ def _inset(
     v.dot(touch, "result")
     v.label(tip, fname, prefer=(u.x, u.y), clear=0.5)
     # ρ: a radius of the friction circle in a free direction
-    taken = [*dirs, (touch - J).unit(), u, -u]
+    taken = [*dirs, (touch - J).unit(), u, -u, (tip - J).unit(), ((touch + tip) * 0.5 - J).unit()]
     a_rho = _free_angle(taken)
     v.seg(J, J + Vec.polar(fc.arm, a_rho), "dimension")
     v.label(
@@ -464,18 +464,22 @@ def order_steps(sol: Solution[Geometry]) -> list[Step]:
     return out
 
 
-def _steps(sol: Solution[Geometry]) -> Column:
+def _steps(sol: Solution[Geometry]) -> View:
     """The order of construction written from the recorded steps (their kinds' templates in
-    ``strings/<lang>/sheets_2013_7.toml``), and one note that no step records: how the forces
-    are drawn on the scheme."""
+    ``strings/<lang>/sheets_2013_7.toml``)."""
     steps = order_steps(sol)
-    order = V.Steps(steps, STEPS_WIDTH, only=[st.name for st in steps], words=WORDS,
-                    title=WORDS("order"))  # fmt: skip
-    note = V.Text(paragraph=WORDS("note"), width=STEPS_WIDTH, height=2.5)
-    return Column(order, note)
+    return V.Steps(steps, STEPS_WIDTH, only=[st.name for st in steps], words=WORDS,
+                   title=WORDS("order"))  # fmt: skip
+
+
+def _note() -> View:
+    """The one note no step records: how the forces are drawn on the scheme."""
+    return V.Text(paragraph=WORDS("note"), width=NOTE_WIDTH, height=2.5)
 
 
 #: The room the title block takes in the field's lower right corner (mm, with its margin).
 TITLE_BLOCK = (188.0, 58.0)
 #: The width (mm) of the order of construction.
-STEPS_WIDTH = 195.0
+STEPS_WIDTH = 200.0
+#: The width (mm) of the note under the tables.
+NOTE_WIDTH = 68.0
