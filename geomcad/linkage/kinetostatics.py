@@ -55,7 +55,7 @@ from geomcad.linkage.loads import (
     slider_group,
 )
 from geomcad.linkage.model import Group, Linkage
-from geomcad.linkage.plans import Position
+from geomcad.linkage.plans import Position, plan_name
 
 LoadKind = Literal["weight", "inertia", "given", "reaction"]
 
@@ -745,7 +745,7 @@ def zhukovsky(lk: Linkage, P: Position, given: dict[int, list[Applied]], c: Cons
         "balancing force ⊥ OA at the image of the crank's joint = 0; M = F_bal·l_OA",
         kind="zhukovsky",
         args={
-            "a": lk.joint.lower(),
+            "a": plan_name(lk.joint),
             "OA": f"{lk.pivot}{lk.joint}",
             "F": f,
             "l": lk.length,
