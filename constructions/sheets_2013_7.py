@@ -304,14 +304,18 @@ def _inset(
     if len(chord) == 2:
         v.seg(chord[0], chord[1], "result")
     u = force.unit()
-    # the reaction's sense only (its magnitude is on the plans): an arrow of INSET_ARROW_MM at
-    # any scale of the enlarged views, long enough to read
-    tip = touch + u * max(0.45 * reach, k.model(INSET_ARROW_MM))
+    # the reaction's sense only (its magnitude is on the plans): an arrow at least
+    # INSET_ARROW_MM long at any scale of the enlarged views, its head just outside the pin
+    # (where its name has room)
+    out = [q for q in line_circle(Line(touch, u), Circle(J, pin_d / 2.0)) if (q - touch).dot(u) > 0]
+    exit_ = (out[0] - touch).dot(u) + k.model(2.0) if out else 0.0
+    tip = touch + u * max(exit_, k.model(INSET_ARROW_MM))
     v.arrow(touch, tip, "vector")
     v.dot(touch, "result")
     v.label(tip, fname, prefer=(u.x, u.y), clear=0.5)
     # ρ: a radius of the friction circle in a free direction
     taken = [*dirs, (touch - J).unit(), u, -u, (tip - J).unit(), ((touch + tip) * 0.5 - J).unit()]
+    taken += [(q - J).unit() for q in chord]  # the reaction's line where it leaves the view
     a_rho = _free_angle(taken)
     v.seg(J, J + Vec.polar(fc.arm, a_rho), "dimension")
     v.label(
