@@ -312,7 +312,7 @@ class _Loaded(View):
                     label_height=3.5)  # fmt: skip
         for name in P.pos:
             if name in lk.owner and lk.owner[name] != 0:
-                v.label(P.pos[name], name, 3.5, clear=1.0)
+                v.label(P.pos[name], markup_of(name), 3.5, clear=1.0)
         points: Points = {}
         _draw_loads(v, lk, P, self.loads, self.kF.k, "vector", points)
         _draw_points(v, points)
