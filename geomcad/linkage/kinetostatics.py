@@ -364,6 +364,11 @@ def _closing(
 # --- groups -------------------------------------------------------------------------------
 
 
+def _clean(x: float, scale: float) -> float:
+    """``x`` for the order of the analysis: 0 where it is at the level of rounding of ``scale``."""
+    return 0.0 if abs(x) <= 1e-12 * scale else x
+
+
 def _tangential(o: int, link: int, E: str, J: str, M: float, length: float) -> dict[str, object]:
     """The operands of a tangential component found by a link's ΣM_J = 0 (kind ``tangential``)."""
     return {
@@ -633,6 +638,12 @@ class _Solver:
         self._react(gf, b, a, -Nab, at1, A, loads, sliding=True, h=h1, couple=m1)
         self._react(gf, 0, b, N0b, pE + gdir * h2, E, loads, sliding=True, h=h2, couple=m2)
 
+    def moment_scale(self, *more: Vec) -> float:
+        """The moments' scale (N·m) of the analysis: the largest reaction on the crank's arm (a
+        moment below 1e-12 of it is written as 0 in the order of the analysis)."""
+        forces = [r.force.norm for r in self.reactions] + [F.norm for F in more]
+        return max(forces, default=0.0) * self.lk.length
+
     def crank(self, gf: GroupForces) -> float:
         c, P, lk = self.c, self.P, self.lk
         pO = P.pos[lk.pivot]
@@ -653,7 +664,7 @@ class _Solver:
             -_moment(L1, pO),
             f"ΣM_{lk.pivot}(link 1) = 0: M_bal = −ΣM_{lk.pivot} of the loads on the crank",
             kind="balancing_moment",
-            args={"O": lk.pivot, "value": -_moment(L1, pO)},
+            args={"O": lk.pivot, "value": _clean(-_moment(L1, pO), self.moment_scale(R01))},
         )
         self._react(gf, 0, 1, R01, pO, lk.pivot, {})
         return M
@@ -684,20 +695,31 @@ def kinetostatics(lk: Linkage, P: Position, cyc: Cycle | None = None) -> Forces:
     gf1 = GroupForces(None, (1,), {1: list(loads[1])})
     M_bal = sv.crank(gf1)
     groups.append(gf1)
-    lever = zhukovsky(lk, P, given, c)
-    off = abs(lever.M_bal - M_bal) / max(abs(M_bal), abs(lever.M_bal), 1e-300) * 100.0
+    scale = sv.moment_scale()
+    lever = zhukovsky(lk, P, given, c, scale)
+    # relative to M_bal, or to the moments of the analysis where M_bal is about zero (a dead
+    # position, where the lever's plan collapses to its pole)
+    off = abs(lever.M_bal - M_bal) / max(abs(M_bal), abs(lever.M_bal), 1e-9 * scale, 1e-300)
+    off *= 100.0
     c.value(
         "M_bal check",
         off,
         "Zhukovsky's lever against the force analysis: |M_bal_lever − M_bal|/|M_bal|, %",
         kind="lever_check",
-        args={"a": M_bal, "b": lever.M_bal, "value": round(off, 2)},
+        args={"a": _clean(M_bal, scale), "b": _clean(lever.M_bal, scale), "value": round(off, 2)},
     )
     return Forces(P.phi, c, given, groups, sv.reactions, M_bal, lever)
 
 
-def zhukovsky(lk: Linkage, P: Position, given: dict[int, list[Applied]], c: Construction) -> Lever:
-    """Zhukovsky's lever of position P under the given loads (module docstring)."""
+def zhukovsky(
+    lk: Linkage,
+    P: Position,
+    given: dict[int, list[Applied]],
+    c: Construction,
+    scale: float = 0.0,
+) -> Lever:
+    """Zhukovsky's lever of position P under the given loads (module docstring); ``scale``
+    (N·m): moments below 1e-12 of it are written as 0 in the order of the analysis."""
     images = {name: v.perp() for name, v in P.vel.items()}
     for name, im in images.items():
         c.record(f"lever: {name.lower()}", f"image of {name}: V_{name} turned 90° ccw", im,
@@ -747,9 +769,9 @@ def zhukovsky(lk: Linkage, P: Position, given: dict[int, list[Applied]], c: Cons
         args={
             "a": plan_name(lk.joint),
             "OA": f"{lk.pivot}{lk.joint}",
-            "F": f,
+            "F": _clean(f * lk.length, scale) / lk.length,
             "l": lk.length,
-            "value": f * lk.length,
+            "value": _clean(f * lk.length, scale),
         },
     )
     return Lever(images, items, F_bal, M, power)
