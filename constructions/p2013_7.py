@@ -201,8 +201,12 @@ def build(p: Mapping[str, ParamValue]) -> Build[Geometry]:
             f"sense {what}",
             float(senses[joint]),
             f"sign of {what} (+1 ccw, −1 cw)",
-            kind={1: "sense_ccw", -1: "sense_cw", 0: "sense_none"}[senses[joint]],
-            args={"w": _markup(what), "expr": expr},
+            kind="sense",
+            args={
+                "w": _markup(what),
+                "expr": expr,
+                "turn": {1: "@ccw", -1: "@cw", 0: "@still"}[senses[joint]],
+            },
         )
 
     run = _forces(c, v, B, F, D, H, senses, v["f"], "")

@@ -670,8 +670,8 @@ def test_the_order_of_the_analysis_is_the_recorded_steps(solved: Solved, lang: s
             steps = order_steps(f)
         assert [s.name for s in steps] == f.order
         kinds = [s.kind for s in steps]
-        groups = [k for k in kinds if k.startswith("group_")]
-        assert groups == [f"group_{g.kind.lower()}" for g in reversed(lk.groups)]
+        groups = [dict(s.args)["type"] for s in steps if s.kind == "group"]
+        assert groups == [f"@{g.kind.lower()}" for g in reversed(lk.groups)]
         assert kinds[-4:] == ["polygon_closing", "balancing_moment", "zhukovsky", "lever_check"]
         with language(lang):
             texts = [step_text(s, WORDS) for s in steps]

@@ -69,10 +69,7 @@ ORDER_KINDS = frozenset(
         "inertia_moment",
         "given_force",
         "given_moment",
-        "group_rrr",
-        "group_rrp",
-        "group_rpr",
-        "group_prp",
+        "group",
         "tangential",
         "slot_normal",
         "force_polygon",
@@ -686,8 +683,8 @@ def kinetostatics(lk: Linkage, P: Position, cyc: Cycle | None = None) -> Forces:
             "and the reactions of the links it is cut from",
             g.links,
             role="hidden",
-            kind=f"group_{g.kind.lower()}",
-            args={"a": g.links[0], "b": g.links[1]},
+            kind="group",
+            args={"a": g.links[0], "b": g.links[1], "type": f"@{g.kind.lower()}"},
         )
         gf = GroupForces(g, g.links, {i: list(loads[i]) for i in g.links})
         {"RRR": sv.rrr, "RRP": sv.rrp, "RPR": sv.rpr, "PRP": sv.prp}[g.kind](g, gf, loads)
