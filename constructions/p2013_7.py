@@ -47,6 +47,7 @@ the friction circle at H.
 from __future__ import annotations
 
 import math
+import re
 from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Any
@@ -182,6 +183,8 @@ def build(p: Mapping[str, ParamValue]) -> Build[Geometry]:
         hf.y / bf.y,  # x-components: −ω6·(F − H)_y = −ω3·(F − B)_y
         "from V_F = V_B + ω_3 × BF with V_B vertical (per unit ω_6)",
         (H, F, B),
+        kind="velocity_ratio",
+        args={"w": "ω_3/ω_6", "eq": "V_F = V_B + V_{FB}", "value": hf.y / bf.y},
     )
     w6 = float(direction)  # θ̇'s sign: the arm turns ccw while the balls rise (right half)
     senses = {
@@ -189,8 +192,22 @@ def build(p: Mapping[str, ParamValue]) -> Build[Geometry]:
         "F": _sign(w3 * w6 - w6),  # ω_36 = ω_3 − ω_6
         "H": _sign(w6),  # ω_67 = ω_6 − ω_7, the collar does not turn in the plane
     }
-    for joint, what in (("B", "ω_32"), ("F", "ω_36"), ("H", "ω_67")):
-        c.value(f"sense {what}", float(senses[joint]), f"sign of {what} (+1 ccw, −1 cw)")
+    for joint, what, expr in (
+        ("B", "ω_32", "ω_3 – ω_2 = ω_3"),
+        ("F", "ω_36", "ω_3 – ω_6"),
+        ("H", "ω_67", "ω_6 – ω_7 = ω_6"),
+    ):
+        c.value(
+            f"sense {what}",
+            float(senses[joint]),
+            f"sign of {what} (+1 ccw, −1 cw)",
+            kind="sense",
+            args={
+                "w": _markup(what),
+                "expr": expr,
+                "turn": {1: "@ccw", -1: "@cw", 0: "@still"}[senses[joint]],
+            },
+        )
 
     run = _forces(c, v, B, F, D, H, senses, v["f"], "")
     free = _forces(c, v, B, F, D, H, senses, 0.0, "f=0: ")
@@ -223,6 +240,11 @@ def _sign(x: float) -> int:
     return (x > 0.0) - (x < 0.0)
 
 
+def _markup(name: str) -> str:
+    """A protocol name (``R_32``, ``ω_67``) as label markup (``R_{32}``)."""
+    return re.sub(r"_(\w{2,})", r"_{\1}", name)
+
+
 def _forces(
     c: Construction,
     v: dict[str, float],
@@ -237,7 +259,13 @@ def _forces(
     """Steps 2–6 of the seed's solution with friction coefficient ``f``; step names start with
     ``pre`` (the frictionless run repeats them)."""
     d = v["d"]
-    rho = c.value(f"{pre}ρ", friction_radius(d, f), "(d/2)·sin(arctan f)")
+    rho = c.value(
+        f"{pre}ρ",
+        friction_radius(d, f),
+        "(d/2)·sin(arctan f)",
+        kind="friction_radius" if f > 0.0 else "no_friction",
+        args={"d": d * 1000.0, "f": f, "rho": friction_radius(d, f) * 1000.0, "at": "B, F, H"},
+    )
     fcs: dict[str, FrictionCircle] = {}
     for joint, centre, what in (("B", B, "ω_32"), ("F", F, "ω_36"), ("H", H, "ω_67")):
         fcs[joint] = c.record(
@@ -245,6 +273,8 @@ def _forces(
             f"friction circle of {joint}, radius ρ, opposing {what}",
             friction_circle(centre, d, f, senses[joint], joint),
             (centre,),
+            kind="friction_circle",
+            args={"j": joint, "w": _markup(what)},
         )
     fc_B, fc_F, fc_H = fcs["B"], fcs["F"], fcs["H"]
 
@@ -256,7 +286,22 @@ def _forces(
         lambda: two_force_line(fc_B, fc_F, tension=True),
         (fc_B, fc_F),
     )
-    alpha = c.value(f"{pre}α", abs(link3.alpha), "angle between link 3's line of action and BF")
+    # the order of construction writes the line by this step: the tangent of the kind the
+    # senses of the relative rotations at its ends ask for, at α to the centre line
+    alpha = c.value(
+        f"{pre}α",
+        abs(link3.alpha),
+        "angle between link 3's line of action and BF",
+        kind=f"two_force_{link3.kind.replace(' ', '_')}",
+        args={
+            "link": 3,
+            "a": "B",
+            "b": "F",
+            "wa": "ω_{32}",
+            "wb": "ω_{36}",
+            "alpha": math.degrees(abs(link3.alpha)),
+        },
+    )
     u32 = -link3.line.d  # link 3 pulls the sleeve towards F
     if u32.y <= 0.0:
         up = math.degrees(math.acos(max(-1.0, min(1.0, u32.y))))
@@ -276,6 +321,7 @@ def _forces(
         f"{pre}plan 2",
         [Known("G_2", G2), Unknown("R_32", u32), Unknown("R_42", u42)],
         equation="G_2 + R_32 + R_42 = 0",
+        words={"G_2": "G_2", "R_32": "R_{32}", "R_42": "R_{42}"},
     )
     R32 = tri2.signed("R_32")
     if R32 <= 0.0:
@@ -294,11 +340,32 @@ def _forces(
     line36 = c.record(f"{pre}line R_36", "link 3's line of action, directed as R_36", link3.line)
     line_g6 = c.line(f"{pre}line G_6", D, (0.0, -1.0), "vertical through D")
     line_fi = c.line(f"{pre}line F_i", D, (1.0, 0.0), "horizontal through D, outwards")
-    Q = c.intersect(f"{pre}Q", line36, line_g6, op="line of R_36 ∩ line of G_6")
+    Q = c.intersect(
+        f"{pre}Q",
+        line36,
+        line_g6,
+        op="line of R_36 ∩ line of G_6",
+        kind="action_meet",
+        args={"a": "R_{36}", "b": "G_6"},
+    )
     P_vec = G6 + u36 * R32
     c.value(f"{pre}P", P_vec.norm, "|G_6 + R_36| off the plan", ())
-    P_line = c.line(f"{pre}line P", Q, P_vec, "through Q parallel to P = G_6 + R_36")
-    K = c.intersect(f"{pre}K", P_line, line_fi, op="line of P ∩ line of F_i")
+    P_line = c.line(
+        f"{pre}line P",
+        Q,
+        P_vec,
+        "through Q parallel to P = G_6 + R_36",
+        kind="resultant_line",
+        args={"F": "P", "sum": "G_6 + R_{36}", "value": P_vec.norm, "p": "Q"},
+    )
+    K = c.intersect(
+        f"{pre}K",
+        P_line,
+        line_fi,
+        op="line of P ∩ line of F_i",
+        kind="three_force",
+        args={"a": "P", "b": "Ф_6", "c": "R_{76}", "link": 6},
+    )
     # the sense of R_76: the polygon closed on the frictionless line KH
     estimate = close_polygon(
         [Known("P", P_vec), Unknown("F_i", Vec(1.0, 0.0)), Unknown("R_76", H - K)]
@@ -309,6 +376,8 @@ def _forces(
         "tangent from K to the friction circle at H whose moment opposes ω_67",
         lambda: tangent_reaction(K, fc_H, hint),
         (K, fc_H),
+        kind="tangent_reaction" if fc_H.arm > 0.0 else "centre_reaction",
+        args={"F": "R_{76}", "p": "K", "j": "H", "w": "ω_{67}"},
     )
 
     # --- 6. the polygon of arm 6: G_6 + R_36 + F_i + R_76 = 0 ----------------------------------
@@ -322,6 +391,7 @@ def _forces(
             Unknown("R_76", R76_line.d),
         ],
         equation="G_6 + R_36 + F_i + R_76 = 0",
+        words={"G_6": "G_6", "R_36": "R_{36}", "F_i": "Ф_6", "R_76": "R_{76}"},
     )
     F_i = poly6.signed("F_i")
     R76 = poly6.signed("R_76")
@@ -342,7 +412,13 @@ def _forces(
         f"{pre}β", inclination_to_horizontal(R76_line.d), "R_76's line to the horizontal"
     )
     r_D = D.x
-    omega = c.value(f"{pre}ω", math.sqrt(F_i / (v["m_ball"] * r_D)), "√(F_i/(m·r_D))")
+    omega = c.value(
+        f"{pre}ω",
+        math.sqrt(F_i / (v["m_ball"] * r_D)),
+        "√(F_i/(m·r_D))",
+        kind="omega_inertia" if not pre else "omega_no_friction",
+        args={"F": F_i, "m": v["m_ball"], "r": r_D, "value": math.sqrt(F_i / (v["m_ball"] * r_D))},
+    )
     return Forces(
         f,
         rho,

@@ -22,6 +22,7 @@ Every word comes from ``strings/<lang>/sheets_2013_7.toml``.
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 from typing import TYPE_CHECKING
 
 from geomcad.forces import ForcePolygon, FrictionCircle
@@ -40,11 +41,11 @@ from geomcad.sheet.compose import (
     compose,
 )
 from geomcad.sheet.lang import Words, current
-from geomcad.sheet.text import wrap
 
 from .p2013_7 import Geometry
 
 if TYPE_CHECKING:
+    from geomcad.construction.recorder import Step
     from geomcad.problem import Solution
 
 WORDS = Words(__package__, "sheets_2013_7")
@@ -52,6 +53,8 @@ WORDS = Words(__package__, "sheets_2013_7")
 #: Force arrows on the mechanism drawing are this long (mm): they show lines and senses only,
 #: the magnitudes are read off the force plans.
 ARROW_MM = 14.0
+#: The reactions on the enlarged joints are at least this long (mm): two arrowheads and more.
+INSET_ARROW_MM = 8.0
 
 
 def _n(x: float, digits: int = 4) -> str:
@@ -171,9 +174,9 @@ def _tree(sol: Solution[Geometry]) -> tuple[Node, dict[str, View]]:
         Column(
             Row(mech, plan6, plan2, weights=(0.42, 0.34, 0.24)),
             joint_row,
-            Row(_steps(geo), Spacer((TITLE_BLOCK[0] - 70.0, 10.0))),
+            Row(_steps(sol), Spacer((TITLE_BLOCK[0] - 70.0, 10.0))),
         ),
-        Column(_given(sol), _compare(geo), _results(sol), low),
+        Column(_given(sol), _compare(geo), _results(sol), _note(), low),
         weights=(0.82, 0.18),
     )
     return tree, {"mech": mech, "plan6": plan6, "plan2": plan2}
@@ -234,7 +237,12 @@ def _mechanism(v: Viewport, geo: Geometry) -> None:
     _force(v, D, D + Vec(0.0, -m), "G_6", (1.0, -1.0))
     _force(v, D, D + Vec(m, 0.0), WORDS("Phi6"), (1.0, 1.0))
     # R_36 and R_32 act along link 3's line: drawn beyond F and below B, off the link
-    _force(v, run.link3.touch_b - u36 * m, run.link3.touch_b, "R_{36}", (1.0, 1.0))
+    # R_36 named beside its shaft's middle, on the side away from arm 6 (its head at F is
+    # crowded by the arm, link 3 and F's name)
+    tail36 = run.link3.touch_b - u36 * m
+    v.arrow(tail36, run.link3.touch_b, "vector")
+    side = u36.perp() if u36.perp().dot(D - F) < 0.0 else -u36.perp()
+    v.label((tail36 + run.link3.touch_b) * 0.5, "R_{36}", prefer=(side.x, side.y), clear=1.0)
     _force(v, run.link3.touch_a - run.u32 * m, run.link3.touch_a, "R_{32}", (-1.0, -1.0))
     u76 = run.R76_line.d
     _force(v, t76, t76 + u76 * m, "R_{76}", (-1.0, 1.0))
@@ -246,7 +254,9 @@ def _mechanism(v: Viewport, geo: Geometry) -> None:
     v.label(H, "H", prefer=(1.0, 1.0), clear=3.0)
     v.label(F, "F", prefer=(1.0, 0.0), clear=3.0)
     v.label(B, "B", prefer=(1.0, -1.0), clear=3.0)
-    v.label(D, "D", prefer=(1.0, -1.0), clear=k.mm(ball_radius(geo.D.dist(H))) + 1.0)
+    # the ball is named at its rim (its centre is inside the drawn circle)
+    rim = D + Vec(1.0, -1.0).unit() * ball_radius(geo.D.dist(H))
+    v.label(rim, "D", prefer=(1.0, -1.0), clear=1.0)
     v.label(run.Q, "Q", prefer=(1.0, 0.0))
     v.label(run.K, "K", prefer=(0.0, -1.0), clear=2.0)
     # the links' numbers (GOST 2.770): sleeve 2, link 3, arm 6, shaft 7
@@ -294,12 +304,18 @@ def _inset(
     if len(chord) == 2:
         v.seg(chord[0], chord[1], "result")
     u = force.unit()
-    tip = touch + u * 0.45 * reach
+    # the reaction's sense only (its magnitude is on the plans): an arrow at least
+    # INSET_ARROW_MM long at any scale of the enlarged views, its head just outside the pin
+    # (where its name has room)
+    out = [q for q in line_circle(Line(touch, u), Circle(J, pin_d / 2.0)) if (q - touch).dot(u) > 0]
+    exit_ = (out[0] - touch).dot(u) + k.model(2.0) if out else 0.0
+    tip = touch + u * max(exit_, k.model(INSET_ARROW_MM))
     v.arrow(touch, tip, "vector")
     v.dot(touch, "result")
     v.label(tip, fname, prefer=(u.x, u.y), clear=0.5)
     # ρ: a radius of the friction circle in a free direction
-    taken = [*dirs, (touch - J).unit(), u, -u]
+    taken = [*dirs, (touch - J).unit(), u, -u, (tip - J).unit(), ((touch + tip) * 0.5 - J).unit()]
+    taken += [(q - J).unit() for q in chord]  # the reaction's line where it leaves the view
     a_rho = _free_angle(taken)
     v.seg(J, J + Vec.polar(fc.arm, a_rho), "dimension")
     v.label(
@@ -312,9 +328,9 @@ def _inset(
         if k.mm(pin_d / 2.0 - fc.arm) > 8.0
         else pin_d / 2.0 + k.model(3.0)
     )
-    _turn_arrow(v, J, r_w, a_w, sense)
-    v.label(J + Vec.polar(r_w, a_w), wname, height=2.5, prefer=(math.cos(a_w), math.sin(a_w)),
-            clear=0.5)  # fmt: skip
+    # a curved arrow (an arc with its head, as the textbooks draw a rotation), 90° long
+    start = math.degrees(a_w) - math.copysign(45.0, sense)
+    v.turn(J, sense, start, wname, k.mm(r_w), 90.0, "dimension", 2.5)
 
 
 def _free_angle(taken: list[Vec]) -> float:
@@ -327,17 +343,6 @@ def _free_angle(taken: list[Vec]) -> float:
         if gap > best_gap:
             best, best_gap = a, gap
     return best
-
-
-def _turn_arrow(v: Viewport, c: Vec, r: float, mid: float, sense: int) -> None:
-    """A curved arrow of radius r about c, 70° long, centred on the direction ``mid``, turning
-    counter-clockwise for sense +1 and clockwise for −1."""
-    half = math.radians(35.0)
-    s = 1.0 if sense >= 0 else -1.0
-    n = 24
-    pts = [c + Vec.polar(r, mid - s * half + s * 2.0 * half * i / n) for i in range(n + 1)]
-    v.polyline(pts[:-1], "dimension")
-    v.arrow(pts[-3], pts[-1], "dimension")
 
 
 # -- the force plans ------------------------------------------------------------------------------
@@ -438,51 +443,47 @@ def _results(sol: Solution[Geometry]) -> View:
     return V.Table(rows, title=WORDS("results"))
 
 
-def _steps(geo: Geometry) -> View:
-    """The order of construction, one worded line per step of the seed's solution with its
-    value (the recorded steps' own words are the protocol's, in English)."""
-    run, free = geo.run, geo.free
-    turn = {1: WORDS("ccw"), -1: WORDS("cw"), 0: WORDS("none")}
-    mode = WORDS("speeding_up" if geo.direction > 0 else "slowing_down")
-    kinds = {"internal": WORDS("internal"), "external": WORDS("external")}
-    friction = run.rho > 0.0
-    if friction:
-        circles = WORDS("step_circles", rho=_n(run.rho * 1000.0))
-        line3 = WORDS(
-            "step_line3",
-            kind=kinds.get(run.link3.kind, WORDS("common")),
-            alpha=_n(math.degrees(run.alpha), 3),
+#: The steps the order of construction lists, by name, in their recorded order: with friction,
+#: the senses of the relative rotations, the friction circles, link 3's line, the sleeve's
+#: polygon, Q, P, K, R_76's line, the arm's polygon, ω, and ω of the same construction with f = 0;
+#: without friction the steps that remain.
+ORDER = ("ω_3/ω_6", "sense ω_32", "sense ω_36", "sense ω_67", "ρ", "α", "plan 2", "Q",
+         "line P", "K", "line R_76", "plan 6", "ω", "f=0: ω")  # fmt: skip
+ORDER_NO_FRICTION = ("ρ", "α", "plan 2", "Q", "line P", "K", "line R_76", "plan 6", "ω")
+
+
+def order_steps(sol: Solution[Geometry]) -> list[Step]:
+    """The steps of the order of construction, their operands in the language being drawn (the
+    inertia force's letter: Ф in Russian, Φ in English)."""
+    geo: Geometry = sol.data
+    names = ORDER if geo.run.rho > 0.0 else ORDER_NO_FRICTION
+    phi = WORDS("Phi6")[0]
+    out = []
+    for name in names:
+        st = sol.construction.step(name)
+        args = tuple(
+            (k, a.replace(chr(0x424), phi) if isinstance(a, str) else a) for k, a in st.args
         )
-        line76 = WORDS("step_line76")
-    else:
-        circles = WORDS("step_circles_0")
-        line3 = WORDS("step_line3_0")
-        line76 = WORDS("step_line76_0")
-    steps = (
-        WORDS(
-            "step_senses",
-            mode=mode,
-            b=turn[run.fc_B.sense],
-            f=turn[run.fc_F.sense],
-            h=turn[run.fc_H.sense],
-        ),
-        circles,
-        line3,
-        WORDS("step_plan2", R32=_n(run.R32), u=_u("N")),
-        WORDS("step_P", P=_n(run.P), u=_u("N")),
-        line76,
-        WORDS("step_plan6", F_i=_n(run.F_i), u=_u("N")),
-        WORDS("step_omega", omega=_n(run.omega), u=_u("rad_s"))
-        + (WORDS("step_omega_0", omega=_n(free.omega)) if friction else "."),
-        WORDS("step_note"),
-    )
-    lines: list[str] = []
-    for i, step in enumerate(steps):
-        lines += wrap(f"{i + 1}. {step}", STEPS_WIDTH, 3.0)
-    return V.Text(lines=lines, width=STEPS_WIDTH, height=3.0, title=WORDS("order"))
+        out.append(replace(st, args=args))
+    return out
+
+
+def _steps(sol: Solution[Geometry]) -> View:
+    """The order of construction written from the recorded steps (their kinds' templates in
+    ``strings/<lang>/sheets_2013_7.toml``)."""
+    steps = order_steps(sol)
+    return V.Steps(steps, STEPS_WIDTH, only=[st.name for st in steps], words=WORDS,
+                   title=WORDS("order"))  # fmt: skip
+
+
+def _note() -> View:
+    """The one note no step records: how the forces are drawn on the scheme."""
+    return V.Text(paragraph=WORDS("note"), width=NOTE_WIDTH, height=2.5)
 
 
 #: The room the title block takes in the field's lower right corner (mm, with its margin).
 TITLE_BLOCK = (188.0, 58.0)
 #: The width (mm) of the order of construction.
-STEPS_WIDTH = 195.0
+STEPS_WIDTH = 200.0
+#: The width (mm) of the note under the tables.
+NOTE_WIDTH = 68.0

@@ -574,3 +574,48 @@ def test_variant_sheets(changes: dict[str, float]) -> None:
     check_layout(sheet)
     words = [t.text for t in sheet.texts()]
     assert kl.ratio_text() in words
+
+
+# -- the order of construction, written from the recorded steps --------------------------------
+
+
+def _order_lines(sheet: Sheet) -> list[str]:
+    """The numbered lines of the sheet's order of construction (their first lines)."""
+    return [t.text for t in sheet.texts() if t.role == "title" and t.text[:1].isdigit()
+            and ". " in t.text[:4]]  # fmt: skip
+
+
+@pytest.mark.parametrize(
+    ("changes", "lang"),
+    [({}, "ru"), ({}, "en"), ({"f": 0.0}, "ru"), ({"direction": -1}, "en")],
+    ids=["seed-ru", "seed-en", "no-friction", "slowing-en"],
+)
+def test_the_order_is_written_from_the_recorded_steps(changes: dict[str, float], lang: str) -> None:
+    from constructions.sheets_2013_7 import ORDER, ORDER_NO_FRICTION, WORDS, order_steps
+    from geomcad.sheet.lang import language
+    from geomcad.sheet.views import num
+
+    sol = geomcad.solve(PID, **changes)
+    with language(lang):
+        ((_, sheet),) = sol.sheets()
+        rho = num(sol.results["rho"] * 1000.0)
+        omega = num(sol.results["omega"])
+        R32 = num(sol.results["R32"])
+    names = ORDER if sol.results["rho"] > 0.0 else ORDER_NO_FRICTION
+    steps = order_steps(sol)
+    # one numbered line per listed step, each a recorded step with its kind
+    assert [s.name for s in steps] == list(names)
+    assert all(s.kind for s in steps)
+    lines = _order_lines(sheet)
+    assert [ln.split(". ", 1)[0] for ln in lines] == [str(i) for i in range(1, len(names) + 1)]
+    text = " ".join(t.text for t in sheet.texts() if t.role == "title")
+    # the values a student writes there are the recorded ones, in the language drawn
+    assert f"= {omega} " in text
+    assert f"R32 = {R32} " in text
+    if sol.results["rho"] > 0.0:
+        assert f"= {rho} " in text
+        assert sol.construction.step("α").kind == "two_force_internal"
+    else:
+        assert "BF" in text
+    # no hand-written order is left in the words
+    assert not [k for k in WORDS.table() if k.startswith("step_")]

@@ -648,3 +648,50 @@ def test_solve_json_of_every_example_with_masses(capsys: pytest.CaptureFixture[s
                 assert isinstance(res[key], float), (path.name, key)
             delta = data["dynamics"]["delta"]
             assert math.isclose(res["delta_achieved"], delta, rel_tol=1e-4), path.name
+
+
+# --- the order of the force analysis, written from the recorded steps ----------------------
+
+
+@pytest.mark.parametrize("lang", ["ru", "en"])
+def test_the_order_of_the_analysis_is_the_recorded_steps(solved: Solved, lang: str) -> None:
+    """Every position's order: the loads, each group cut out from the last (its kind's
+    template), its moment equations and polygons, the crank's M_bal and Zhukovsky's lever, each
+    line one recorded step through its kind's template, the values the recorded ones."""
+    from geomcad.sheet.lang import language
+    from geomcad.sheet.linkage_forces import WORDS, order_steps
+    from geomcad.sheet.views import num, step_text
+
+    lk = solved.linkage
+    a = analyse(solved)
+    assert a.forces is not None
+    for f in a.forces[:2]:
+        with language(lang):
+            steps = order_steps(f)
+        assert [s.name for s in steps] == f.order
+        kinds = [s.kind for s in steps]
+        groups = [dict(s.args)["type"] for s in steps if s.kind == "group"]
+        assert groups == [f"@{g.kind.lower()}" for g in reversed(lk.groups)]
+        assert kinds[-4:] == ["polygon_closing", "balancing_moment", "zhukovsky", "lever_check"]
+        with language(lang):
+            texts = [step_text(s, WORDS) for s in steps]
+            m_bal, lever = num(f.M_bal), num(f.lever.M_bal)
+        assert f"= {m_bal} " in texts[kinds.index("balancing_moment")]
+        assert f"= {lever} " in texts[kinds.index("zhukovsky")]
+        if lang == "en":
+            assert not any(chr(0x424) in t for t in texts)  # Φ, not the Cyrillic Ф
+
+
+def test_the_force_sheet_lists_the_order() -> None:
+    """Sheet 2 writes one numbered line per step of the order (the composition places it)."""
+    from geomcad.sheet.linkage_forces import force_position, force_sheets
+
+    s = solve(load(FILES["yoke"]))
+    sheet = force_sheets(s)[0][1]
+    f = analyse(s).forces
+    assert f is not None
+    n = len(f[force_position(s)].order)
+    numbered = [t.text for t in sheet.texts() if t.role == "title" and t.text[:1].isdigit()
+                and t.text.split(". ", 1)[0].isdigit()]  # fmt: skip
+    assert [t.split(". ", 1)[0] for t in numbered][-n:] == [str(i) for i in range(1, n + 1)]
+    assert any(t.text == "Порядок силового расчёта" for t in sheet.texts())

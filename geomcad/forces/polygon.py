@@ -17,7 +17,7 @@ The plan's coordinates are the forces' components in newtons (the plan's own fra
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 
 from geomcad.construction import Construction, fmt
@@ -186,13 +186,17 @@ def force_polygon(
     terms: Sequence[Term],
     pole: PointLike = (0.0, 0.0),
     equation: str = "",
+    words: Mapping[str, str] | None = None,
 ) -> ForcePolygon:
     """Close the force polygon of ``terms`` as recorded steps of ``c``.
 
     Records: the two closing lines (``name: ∥ U``), their intersection (``name: closing
     vertex``; a :class:`ParallelLines` error names it), every side of the polygon as a segment
     (``name: F``), the signed magnitude of each unknown (``name: |U|``, a value) and the polygon
-    itself (``name``). ``equation`` is ΣF = 0 in words, for the protocol.
+    itself (``name``, of kind ``force_polygon`` for the order of construction: its operands the
+    equation ``eq`` as label markup, the unknowns ``a``, ``b`` and their magnitudes ``Fa``,
+    ``Fb``). ``equation`` is ΣF = 0 in words, for the protocol; ``words`` gives the terms'
+    names as label markup where they are not (``R_32`` → ``R_{32}``).
     """
     o = vec(pole)
     l1, l2 = closing_lines(terms, o)
@@ -212,7 +216,25 @@ def force_polygon(
         c.record(f"{name}: {v.name}", f"plan vector {v.name}", v, role="hidden")
     for n, value in poly.solved:
         c.value(f"{name}: |{n}|", value, f"closing side of {name}, signed along the assumed sense")
-    return c.record(name, f"force polygon {eq}, head to tail from the pole", poly, role="hidden")
+    mark = dict(words or {})
+    names = [mark.get(t.name, t.name) for t in terms]
+    # a magnitude at the level of rounding (a force the equation makes zero) is written as 0
+    size = max((v.force.norm for v in poly.vectors), default=0.0)
+    solved = {n: (0.0 if abs(x) <= 1e-12 * size else x) for n, x in poly.solved}
+    return c.record(
+        name,
+        f"force polygon {eq}, head to tail from the pole",
+        poly,
+        role="hidden",
+        kind="force_polygon",
+        args={
+            "eq": " + ".join(names) + " = 0",
+            "a": mark.get(n1, n1),
+            "b": mark.get(n2, n2),
+            "Fa": abs(solved[n1]),
+            "Fb": abs(solved[n2]),
+        },
+    )
 
 
 def three_force_point(line1: Line, line2: Line) -> Vec:

@@ -55,9 +55,33 @@ from geomcad.linkage.loads import (
     slider_group,
 )
 from geomcad.linkage.model import Group, Linkage
-from geomcad.linkage.plans import Position
+from geomcad.linkage.plans import Position, plan_name
 
 LoadKind = Literal["weight", "inertia", "given", "reaction"]
+
+#: The kinds of the steps the order of the kinetostatic analysis lists (:attr:`Forces.order`):
+#: the loads, each group cut out (from the last), its equations of moments, its polygons, the
+#: points of the sliding pairs' reactions, the crank's balancing moment and Zhukovsky's lever.
+ORDER_KINDS = frozenset(
+    {
+        "weight",
+        "inertia_force",
+        "inertia_moment",
+        "given_force",
+        "given_moment",
+        "group",
+        "tangential",
+        "slot_normal",
+        "force_polygon",
+        "polygon_closing",
+        "slide_arm",
+        "slide_couple",
+        "crank",
+        "balancing_moment",
+        "zhukovsky",
+        "lever_check",
+    }
+)
 
 #: A sliding pair's reaction lies at most this many crank lengths from its joint; beyond, the
 #: normal force is about zero and the pair carries a couple (see :class:`Reaction`).
@@ -169,6 +193,11 @@ class Forces:
         return total
 
     @property
+    def order(self) -> list[str]:
+        """The names of the steps of the order of the analysis, in their recorded order."""
+        return [s.name for s in self.c.steps if s.kind in ORDER_KINDS]
+
+    @property
     def pairs(self) -> list[tuple[int, int]]:
         return sorted({r.key for r in self.reactions})
 
@@ -198,6 +227,15 @@ def applied_loads(
                 f"the weight of link {i}: m·g = {m.mass:g}·{g:g} N, down, at {sn}",
                 Vec(0.0, -m.mass * g),
                 role="hidden",
+                kind="weight",
+                args={
+                    "F": f"G_{{{i}}}",
+                    "i": i,
+                    "m": m.mass,
+                    "g": g,
+                    "value": m.mass * g,
+                    "at": sn,
+                },
             )
             out[i].append(Applied(f"G_{{{i}}}", i, "weight", G, S, 0.0, pt, VS))
         if m.mass > 0.0 and aS.norm > 0.0:
@@ -206,11 +244,34 @@ def applied_loads(
                 f"the inertia force of link {i}: −m·a_{sn} at {sn}",
                 aS * -m.mass,
                 role="hidden",
+                kind="inertia_force",
+                args={
+                    "F": f"Ф_{{{i}}}",
+                    "i": i,
+                    "a": f"a_{{{sn}}}",
+                    "m": m.mass,
+                    "av": aS.norm,
+                    "value": m.mass * aS.norm,
+                    "at": sn,
+                },
             )
             out[i].append(Applied(f"Ф_{{{i}}}", i, "inertia", F, S, 0.0, pt, VS))
         eps = P.eps[i]
         if m.J > 0.0 and eps != 0.0:
-            M = c.value(f"M_Ф{i}", -m.J * eps, f"the inertia moment of link {i}: −J·ε{i}")
+            M = c.value(
+                f"M_Ф{i}",
+                -m.J * eps,
+                f"the inertia moment of link {i}: −J·ε{i}",
+                kind="inertia_moment",
+                args={
+                    "M": f"M_{{Ф{i}}}",
+                    "i": i,
+                    "e": f"ε_{{{i}}}",
+                    "J": m.J,
+                    "ev": eps,
+                    "value": -m.J * eps,
+                },
+            )
             out[i].append(Applied(f"M_{{Ф{i}}}", i, "inertia", None, None, M))
     for ld in lk.loads:
         if ld.point:
@@ -231,12 +292,20 @@ def applied_loads(
                 f"against V; s = {s_w:.6g} m from the working stroke's start, H = {r.H:.6g} m",
                 line.d * f,
                 role="hidden",
+                kind="given_force",
+                args={"F": f"F_{{{ld.point}}}", "at": ld.point, "value": abs(f)},
             )
             out[link].append(
                 Applied(f"F_{{{ld.point}}}", link, "given", F, J, 0.0, ld.point, P.vel[ld.point])
             )
         else:
-            c.value(f"M_{ld.index}", ld.moment, f"load {ld.index}: a moment on link {ld.link}")
+            c.value(
+                f"M_{ld.index}",
+                ld.moment,
+                f"load {ld.index}: a moment on link {ld.link}",
+                kind="given_moment",
+                args={"M": f"M_{{{ld.link}}}", "link": ld.link, "value": ld.moment},
+            )
             out[ld.link].append(
                 Applied(f"M_{{{ld.link}}}", ld.link, "given", None, None, ld.moment)
             )
@@ -277,12 +346,37 @@ def _closing(
         at = at + k.force
     vectors.append(PlanVector(unknown, at, Vec(0.0, 0.0)))
     poly = ForcePolygon(Vec(0.0, 0.0), tuple(vectors), ())
-    c.record(name, f"force polygon {eq}, closed by {unknown}", poly, role="hidden")
+    c.record(
+        name,
+        f"force polygon {eq}, closed by {unknown}",
+        poly,
+        role="hidden",
+        kind="polygon_closing",
+        args={"eq": eq, "F": unknown, "value": at.norm},
+    )
     gf.polygons.append((name, poly))
     return -at
 
 
 # --- groups -------------------------------------------------------------------------------
+
+
+def _clean(x: float, scale: float) -> float:
+    """``x`` for the order of the analysis: 0 where it is at the level of rounding of ``scale``."""
+    return 0.0 if abs(x) <= 1e-12 * scale else x
+
+
+def _tangential(o: int, link: int, E: str, J: str, M: float, length: float) -> dict[str, object]:
+    """The operands of a tangential component found by a link's ΣM_J = 0 (kind ``tangential``)."""
+    return {
+        "R": f"R^τ_{{{o}{link}}}",
+        "link": link,
+        "J": J,
+        "l": f"l_{{{E}{J}}}",
+        "M": M,
+        "lv": length,
+        "value": M / length,
+    }
 
 
 def _name(i: int, j: int) -> str:
@@ -350,6 +444,8 @@ class _Solver:
                 f"{g.key}: R^τ_{own[E]}{link}",
                 M / length,
                 f"ΣM_{J}(link {link}) = 0: R^τ·l_{E}{J} = ΣM_{J} of its loads = {M:.6g} N·m",
+                kind="tangential",
+                args=_tangential(own[E], link, E, J, M, length),
             )
             out.append((u, t, Rt))
         (u1, t1, Rt1), (u2, t2, Rt2) = out
@@ -394,6 +490,8 @@ class _Solver:
             f"{g.key}: R^τ_{own[E]}{a}",
             M / g.lengths[0],
             f"ΣM_{J}(link {a}) = 0: R^τ·l_{E}{J} = ΣM_{J} of its loads = {M:.6g} N·m",
+            kind="tangential",
+            args=_tangential(own[E], a, E, J, M, g.lengths[0]),
         )
         o, gl = own[E], g.guide.link
         terms: list[Term] = [
@@ -418,13 +516,13 @@ class _Solver:
         )
         # the slider about J: ΣM_J(loads) + h·n = 0
         Mb = _moment(Lb, pJ)
-        h, m = self._arm(f"{g.key}: h_{gl}{b}", -Mb, n, J, b)
+        h, m = self._arm(f"{g.key}: h_{gl}{b}", -Mb, n, J, b, _name(gl, b))
         self._react(gf, o, a, R, pE, E, loads)
         self._react(gf, a, b, Rab, pJ, J, loads)
         self._react(gf, gl, b, N, pJ + d * h, J, loads, sliding=True, h=h, couple=m)
 
     def _arm(
-        self, name: str, couple: float, n: float, joint: str, link: int
+        self, name: str, couple: float, n: float, joint: str, link: int, force: str = "N"
     ) -> tuple[float, float]:
         """h with h·n = couple: the point of a sliding pair's reaction along the slide, and no
         couple; where that point would lie farther than :data:`ARM_MAX` crank lengths (a normal
@@ -436,6 +534,8 @@ class _Solver:
                 h,
                 f"ΣM_{joint}(link {link}) = 0: the reaction's point, h m along the slide from "
                 f"{joint}",
+                kind="slide_arm",
+                args={"F": force, "J": joint, "link": link, "value": abs(h)},
             )
             return h, 0.0
         self.c.value(
@@ -443,6 +543,8 @@ class _Solver:
             couple,
             f"ΣM_{joint}(link {link}) = 0: the normal force is about zero, the slide carries a "
             "couple",
+            kind="slide_couple",
+            args={"F": force, "J": joint, "link": link, "value": couple},
         )
         return 0.0, couple
 
@@ -462,9 +564,20 @@ class _Solver:
             (MC + MA) / arm,
             f"ΣM_{C}(link {b}) = 0 with the block's ΣM_{A} = 0: "
             f"N·{arm:.6g} m = ΣM_{C}(link {b}) + ΣM_{A}(block {a})",
+            kind="slot_normal",
+            args={
+                "N": _name(b, a),
+                "a": a,
+                "b": b,
+                "A": A,
+                "C": C,
+                "M": (MC + MA) if arm > 0.0 else -(MC + MA),
+                "arm": abs(arm),
+                "value": (MC + MA) / arm,
+            },
         )
         N = n_dir * n
-        h, m = self._arm(f"{g.key}: h_{b}{a}", -MA, n, A, a)
+        h, m = self._arm(f"{g.key}: h_{b}{a}", -MA, n, A, a, _name(b, a))
         RC = _closing(
             c,
             gf,
@@ -513,26 +626,42 @@ class _Solver:
         )
         # the block about A: ΣM_A + h1·n_ba = 0, N_ba = −N_ab along the slot's normal
         n_ba = -poly.signed(_name(a, b))
-        h1, m1 = self._arm(f"{g.key}: h_{b}{a}", -_moment(La, pA), n_ba, A, a)
+        h1, m1 = self._arm(f"{g.key}: h_{b}{a}", -_moment(La, pA), n_ba, A, a, _name(b, a))
         at1 = pA + sdir * h1
         # the yoke about E: ΣM_E(loads) + (at1 − E) × N_ab − m1 + h2·n_0b (+ m2) = 0
         Mb = _moment(Lb, pE) + (at1 - pE).cross(Nab) - m1
-        h2, m2 = self._arm(f"{g.key}: h_0{b}", -Mb, poly.signed(_name(0, b)), E, b)
+        h2, m2 = self._arm(f"{g.key}: h_0{b}", -Mb, poly.signed(_name(0, b)), E, b, _name(0, b))
         self._react(gf, own[A], a, RA, pA, A, loads)
         self._react(gf, b, a, -Nab, at1, A, loads, sliding=True, h=h1, couple=m1)
         self._react(gf, 0, b, N0b, pE + gdir * h2, E, loads, sliding=True, h=h2, couple=m2)
+
+    def moment_scale(self, *more: Vec) -> float:
+        """The moments' scale (N·m) of the analysis: the largest reaction on the crank's arm (a
+        moment below 1e-12 of it is written as 0 in the order of the analysis)."""
+        forces = [r.force.norm for r in self.reactions] + [F.norm for F in more]
+        return max(forces, default=0.0) * self.lk.length
 
     def crank(self, gf: GroupForces) -> float:
         c, P, lk = self.c, self.P, self.lk
         pO = P.pos[lk.pivot]
         L1 = gf.loads[1]
+        c.record(
+            "crank",
+            "the crank 1 with the reaction of link 2 and its own loads",
+            (1,),
+            role="hidden",
+            kind="crank",
+            args={"O": lk.pivot, "A": lk.joint},
+        )
         R01 = _closing(
-            c, gf, "crank: polygon of link 1", _knowns(L1), _name(0, 1), "ΣF_1 + R_01 = 0"
+            c, gf, "crank: polygon of link 1", _knowns(L1), _name(0, 1), f"ΣF_1 + {_name(0, 1)} = 0"
         )
         M = c.value(
             "M_bal",
             -_moment(L1, pO),
             f"ΣM_{lk.pivot}(link 1) = 0: M_bal = −ΣM_{lk.pivot} of the loads on the crank",
+            kind="balancing_moment",
+            args={"O": lk.pivot, "value": _clean(-_moment(L1, pO), self.moment_scale(R01))},
         )
         self._react(gf, 0, 1, R01, pO, lk.pivot, {})
         return M
@@ -548,18 +677,46 @@ def kinetostatics(lk: Linkage, P: Position, cyc: Cycle | None = None) -> Forces:
     sv = _Solver(lk, P, c)
     groups: list[GroupForces] = []
     for g in reversed(lk.groups):
+        c.record(
+            g.key,
+            f"Assur group {g.kind} of links {g.links[0]}, {g.links[1]} cut out with the loads "
+            "and the reactions of the links it is cut from",
+            g.links,
+            role="hidden",
+            kind="group",
+            args={"a": g.links[0], "b": g.links[1], "type": f"@{g.kind.lower()}"},
+        )
         gf = GroupForces(g, g.links, {i: list(loads[i]) for i in g.links})
         {"RRR": sv.rrr, "RRP": sv.rrp, "RPR": sv.rpr, "PRP": sv.prp}[g.kind](g, gf, loads)
         groups.append(gf)
     gf1 = GroupForces(None, (1,), {1: list(loads[1])})
     M_bal = sv.crank(gf1)
     groups.append(gf1)
-    lever = zhukovsky(lk, P, given, c)
+    scale = sv.moment_scale()
+    lever = zhukovsky(lk, P, given, c, scale)
+    # relative to M_bal, or to the moments of the analysis where M_bal is about zero (a dead
+    # position, where the lever's plan collapses to its pole)
+    off = abs(lever.M_bal - M_bal) / max(abs(M_bal), abs(lever.M_bal), 1e-9 * scale, 1e-300)
+    off *= 100.0
+    c.value(
+        "M_bal check",
+        off,
+        "Zhukovsky's lever against the force analysis: |M_bal_lever − M_bal|/|M_bal|, %",
+        kind="lever_check",
+        args={"a": _clean(M_bal, scale), "b": _clean(lever.M_bal, scale), "value": round(off, 2)},
+    )
     return Forces(P.phi, c, given, groups, sv.reactions, M_bal, lever)
 
 
-def zhukovsky(lk: Linkage, P: Position, given: dict[int, list[Applied]], c: Construction) -> Lever:
-    """Zhukovsky's lever of position P under the given loads (module docstring)."""
+def zhukovsky(
+    lk: Linkage,
+    P: Position,
+    given: dict[int, list[Applied]],
+    c: Construction,
+    scale: float = 0.0,
+) -> Lever:
+    """Zhukovsky's lever of position P under the given loads (module docstring); ``scale``
+    (N·m): moments below 1e-12 of it are written as 0 in the order of the analysis."""
     images = {name: v.perp() for name, v in P.vel.items()}
     for name, im in images.items():
         c.record(f"lever: {name.lower()}", f"image of {name}: V_{name} turned 90° ccw", im,
@@ -605,5 +762,13 @@ def zhukovsky(lk: Linkage, P: Position, given: dict[int, list[Applied]], c: Cons
         f * lk.length,
         "Zhukovsky's lever: Σ moments about p of the loads at their images + that of the "
         "balancing force ⊥ OA at the image of the crank's joint = 0; M = F_bal·l_OA",
+        kind="zhukovsky",
+        args={
+            "a": plan_name(lk.joint),
+            "OA": f"{lk.pivot}{lk.joint}",
+            "F": _clean(f * lk.length, scale) / lk.length,
+            "l": lk.length,
+            "value": _clean(f * lk.length, scale),
+        },
     )
     return Lever(images, items, F_bal, M, power)

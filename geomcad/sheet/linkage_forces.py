@@ -23,10 +23,15 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
+from dataclasses import replace
 
 import numpy as np
 import numpy.typing as npt
+from shapely.geometry import LineString, Point
+from shapely.geometry import Polygon as Outline
+from shapely.ops import nearest_points
 
+from geomcad.construction.recorder import Step
 from geomcad.forces import ForcePolygon
 from geomcad.geom import Vec
 from geomcad.linkage.analysis import analyse
@@ -44,10 +49,12 @@ from geomcad.sheet.lang import Words, current
 from geomcad.sheet.linkage import WORDS as KIN_WORDS
 from geomcad.sheet.linkage import file_title, link_bodies, table_number
 from geomcad.sheet.loads import force, moment
+from geomcad.sheet.model import XY, Polyline
+from geomcad.sheet.placer import text_outline
 from geomcad.sheet.plans import markup_of
 from geomcad.sheet.scale import Scale
 from geomcad.sheet.scheme import draw_scheme
-from geomcad.sheet.views import AxisSpec, Curve, Diagram, Polygon, Table, Text
+from geomcad.sheet.views import AxisSpec, Curve, Diagram, Polygon, Steps, Table, Text
 from geomcad.structure import Mechanism
 from geomcad.structure.model import Link
 
@@ -59,6 +66,8 @@ LOAD_MM = 24.0
 LEVER_LOAD_MM = 40.0
 #: The width of the note under the table of loads (mm).
 TABLE2_W = 60.0
+#: The width of the order of the force analysis (mm).
+ORDER_W = 170.0
 
 
 def force_position(s: Solved) -> int:
@@ -90,7 +99,9 @@ def force_sheets(
         k = force_position(s)
         d = start(FORMAT, _title(lk, WORDS("forces"), designation, no, count))
         _sheet2(d, s, s.positions[k], a.forces[k], k)
-        out.append(("forces", d.finish()))
+        sheet = d.finish()
+        leaders(sheet)
+        out.append(("forces", sheet))
         no += 1
     if a.flywheel is not None:
         d = start(FORMAT, _title(lk, WORDS("dynamics"), designation, no, count))
@@ -135,13 +146,29 @@ def _sheet2(d: Drawing, s: Solved, P: Position, f: Forces, k: int) -> None:
     if mech.short or lever.short or any(b.short for b in bodies):
         note = WORDS("short", mm=fmt_number(SHORT_MM))
         table = Column(table, Text(paragraph=note, width=TABLE2_W))
+    steps = order_steps(f)
+    order = Steps(steps, ORDER_W, only=[st.name for st in steps], words=WORDS,
+                  title=WORDS("order"))  # fmt: skip
+    right = Column(table, order)
     compose(
         d,
         Choice(
-            Column(Row(mech, Grid(*bodies)), Row(lever, Grid(*polys), table)),
-            Row(Column(mech, lever), Column(Grid(*bodies), Row(Grid(*polys), table))),
+            Column(Row(mech, Grid(*bodies)), Row(lever, Grid(*polys), right)),
+            Row(Column(mech, lever), Column(Grid(*bodies), Row(Grid(*polys), right))),
         ),
     )
+
+
+def order_steps(f: Forces) -> list[Step]:
+    """The steps of the order of the kinetostatic analysis (:attr:`Forces.order`: the loads,
+    the groups from the last, the crank, Zhukovsky's lever), their operands in the language
+    drawn (the inertia force's letter)."""
+    out = []
+    for name in f.order:
+        st = f.c.step(name)
+        args = tuple((k, load_name(a) if isinstance(a, str) else a) for k, a in st.args)
+        out.append(replace(st, args=args))
+    return out
 
 
 def load_name(name: str) -> str:
@@ -185,10 +212,53 @@ def _force(
 
 
 def _draw_points(v: Viewport, points: Points) -> None:
-    """The forces too short for an arrow: a dot per point, their names in one label."""
+    """The forces too short for an arrow: a dot per point, their names in one label (a leader
+    joins a label placed away from its dot: :func:`leaders`)."""
     for at, labels in points.values():
         v.dot(at)
-        v.label(at, f"{', '.join(labels)} (·)", 2.5, clear=1.0)
+        v.label(at, f"{', '.join(labels)} (·)", 2.5, clear=1.0, id=POINTS_ID)
+
+
+#: The id of the labels of the forces drawn as points (they get a leader where placed away).
+POINTS_ID = "forces-as-points"
+#: A label of forces drawn as points farther than this from its dot gets a leader (mm).
+LEADER_MM = 2.5
+
+
+def leaders(sheet: Sheet) -> None:
+    """A leader (GOST 2.316: a thin line from the dot on the point to the label) for every label
+    of forces drawn as points that the placer put more than :data:`LEADER_MM` from its dot (a
+    dot inside a slider's block, or crowded by a moment's arrow); the label then names the
+    leader's end, which the leader joins to the point. A leader that would cross another text
+    is not drawn."""
+    others = [text_outline(t) for t in sheet.texts()]
+    for i, (t, a) in enumerate(sheet.anchors):
+        if t.id != POINTS_ID:
+            continue
+        box = text_outline(t)
+        if box.distance(Point(a)) <= LEADER_MM:
+            continue
+        # the leader's end 0.5 mm off the label's box: the nearest point, else the nearest of
+        # points round the box whose leader crosses no other text
+        ring = box.exterior
+        near, _ = nearest_points(box, Point(a))
+        ends = [near] + [ring.interpolate(k / 24.0, normalized=True) for k in range(24)]
+        ends.sort(key=lambda q: q.distance(Point(a)))
+
+        def end_of(q: Point, a: XY = a) -> XY:
+            ux, uy = a[0] - q.x, a[1] - q.y
+            n = math.hypot(ux, uy)
+            return (q.x + ux / n * 0.5, q.y + uy / n * 0.5)
+
+        def clear(e: XY, a: XY = a, box: Outline = box) -> bool:
+            seg = LineString([a, e])
+            return not any(o is not box and o.intersects(seg) for o in others)
+
+        end = next((end_of(q) for q in ends if clear(end_of(q))), None)
+        if end is None:  # a leader would cross a text: the label stays without one
+            continue
+        sheet.add(Polyline((a, end), "dimension"))
+        sheet.anchors[i] = (t, end)
 
 
 def _has_short(forces: Sequence[float], k_F: float) -> bool:
@@ -242,7 +312,7 @@ class _Loaded(View):
                     label_height=3.5)  # fmt: skip
         for name in P.pos:
             if name in lk.owner and lk.owner[name] != 0:
-                v.label(P.pos[name], name, 3.5, clear=1.0)
+                v.label(P.pos[name], markup_of(name), 3.5, clear=1.0)
         points: Points = {}
         _draw_loads(v, lk, P, self.loads, self.kF.k, "vector", points)
         _draw_points(v, points)
