@@ -171,6 +171,8 @@ def _construction(v: Viewport, geo: Geometry, c: Construction) -> None:
             "B0": "B_0",
             "B1": "B_1",
             "θ-arcs": names,
+            "n0": "n_0",
+            "r1": "r_1",
             "m−": "y = l_3 – e",
             "m+": "y = l_3 + e",
             **{n: f"O_1^{{({n[3:-1]})}}" for n in others},
@@ -183,6 +185,7 @@ def _construction(v: Viewport, geo: Geometry, c: Construction) -> None:
             "m+": (-1.0, 1.0),
         },
         over={"m−": 14.0, "m+": 14.0, "B0B1": 0.0, "n0": 0.0, "r1": 0.0},
+        along={"m−": 1.0, "m+": 1.0},
         box=extent(geo, c),
     )
     _right_angle(v, B0, B1, Op)
@@ -404,7 +407,10 @@ def _panel(sol: Solution[Geometry], k: float) -> tuple[View | Node, ...]:
         ("K_check", WORDS("K_check"), "", 1.0),
     ):
         exact = float(r[name]) / scale if scale else 0.0
-        rows.append([label, f"{num(exact, 4)} {unit}".strip()])
+        # a degree sign follows its number without a space
+        rows.append(
+            [label, f"{num(exact, 4)}{unit}" if unit == "°" else f"{num(exact, 4)} {unit}".strip()]
+        )
     results = Table(rows, widths=(30.0, 38.0), title=WORDS("results"))
     note = Text(lines=[WORDS("on_drawing", k=factor(Scale(k or 0.001, "l")))])
     rows = [["№", f"O_1 (x; y), {m_}", f"l_1, {m_}", f"l_2, {m_}", WORDS("crank")]]

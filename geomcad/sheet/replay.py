@@ -159,6 +159,7 @@ def replay(
     prefer: Mapping[str, tuple[float, float]] | None = None,
     over: float | Mapping[str, float] = 4.0,
     box: Extent | None = None,
+    along: Mapping[str, float] | None = None,
 ) -> None:
     """Draw the steps of ``construction`` (``names`` or every drawn role) into ``v`` by their
     roles (:data:`STROKE`, :data:`DOT`).
@@ -168,8 +169,11 @@ def replay(
     ``O_1``), other steps not. ``prefer`` gives a label's preferred model direction; ``over``
     (mm, one number or per line) how far a line runs past its outermost recorded point; ``box``
     the model box lines are clipped to when fewer than two recorded points lie on them
-    (default: :func:`extent`)."""
+    (default: :func:`extent`); ``along`` where a line's label stands, as a fraction of its drawn
+    piece from its start (default: the placer's choice of its middle or a quarter from an
+    end)."""
     steps = list(construction)
+    along = along or {}
     shown = drawn(steps, names)
     labels = labels or {}
     prefer = prefer or {}
@@ -184,11 +188,15 @@ def replay(
         height: float,
         default: str = "",
         out: tuple[float, float] | None = None,
+        others: Sequence[Vec] = (),
     ) -> None:
         given = labels.get(step.name)
         text = (given if isinstance(given, str) else given[i]) if given is not None else default
         if text:
-            v.label(at, text, height, prefer=prefer.get(step.name, out), clear=0.8)
+            pref = prefer.get(step.name, out)
+            paper = None if pref is None else v.paper_dir(pref)
+            more = tuple(v.p(q) for q in others)
+            v.d.label(v.p(at), text, height, paper, 0.8, others=more)
 
     for s in shown:
         stroke, dot = STROKE.get(s.role), DOT.get(s.role)
@@ -220,7 +228,12 @@ def replay(
                         continue
                     t0, t1 = got
                 v.seg(line.at(t0), line.at(t1), stroke)
-                label(s, line.at(t1), i, LINE_H)
+                f = along.get(s.name)
+                if f is not None:
+                    label(s, line.at(t0 + f * (t1 - t0)), i, LINE_H)
+                else:  # beside the middle, or a quarter from either end
+                    q = [line.at(t0 + g * (t1 - t0)) for g in (0.5, 0.3, 0.7)]
+                    label(s, q[0], i, LINE_H, others=q[1:])
             elif isinstance(item, Segment):
                 v.seg(item.a, item.b, stroke)
                 label(s, item.midpoint, i, LINE_H)
@@ -247,6 +260,7 @@ class Replay(Figure):
         prefer: Mapping[str, tuple[float, float]] | None = None,
         over: float | Mapping[str, float] = 4.0,
         box: Extent | None = None,
+        along: Mapping[str, float] | None = None,
         extra: Callable[[Viewport], None] | None = None,
         **kw: Any,
     ) -> None:
@@ -255,7 +269,7 @@ class Replay(Figure):
         bounds = box or extent(steps, names)
 
         def draw(v: Viewport) -> None:
-            replay(v, steps, names, labels, prefer, over, bounds)
+            replay(v, steps, names, labels, prefer, over, bounds, along)
             if extra is not None:
                 extra(v)
 
