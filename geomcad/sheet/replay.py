@@ -36,7 +36,7 @@ from typing import Any
 from geomcad.construction.recorder import Construction, Step
 from geomcad.geom import Arc, Circle, Line, Ray, Segment, Vec
 from geomcad.sheet.compose import Extent, Figure
-from geomcad.sheet.drawing import Viewport
+from geomcad.sheet.drawing import JOINT_R, Viewport
 from geomcad.sheet.views import name_markup
 
 #: The sheet role of a line, circle or arc per step role.
@@ -189,6 +189,7 @@ def replay(
         default: str = "",
         out: tuple[float, float] | None = None,
         others: Sequence[Vec] = (),
+        clear: float = 0.8,
     ) -> None:
         given = labels.get(step.name)
         text = (given if isinstance(given, str) else given[i]) if given is not None else default
@@ -196,7 +197,7 @@ def replay(
             pref = prefer.get(step.name, out)
             paper = None if pref is None else v.paper_dir(pref)
             more = tuple(v.p(q) for q in others)
-            v.d.label(v.p(at), text, height, paper, 0.8, others=more)
+            v.d.label(v.p(at), text, height, paper, clear, others=more)
 
     for s in shown:
         stroke, dot = STROKE.get(s.role), DOT.get(s.role)
@@ -207,7 +208,8 @@ def replay(
             if isinstance(item, Vec):
                 v.dot(item, dot)
                 own = name_markup(s.name) if _POINT_NAME.fullmatch(s.name) else ""
-                label(s, item, i, POINT_H, own if len(items) == 1 else "")
+                # clear of a joint's circle, as a point named on a mechanism is
+                label(s, item, i, POINT_H, own if len(items) == 1 else "", clear=JOINT_R)
             elif isinstance(item, Line | Ray):
                 line = item if isinstance(item, Line) else item.line
                 ts = sorted(
