@@ -7,8 +7,12 @@ chord B0B1, the perpendicular at B0 and the ray at 90° − θ meeting in O, the
 O, B0, B1 and its mirror image Γ′ (only their arcs that see B0B1 under θ: the others hug the chord),
 the lines at e from the path, every solution O1, and the seed's solution built out: the crank's
 dead-centre positions O1A0B0 and O1A1B1, the crank circle, the linkage in its mid position, and
-the dimensions O1B0 and O1B1. Right: the given data, the results, all solutions and the order
-of construction.
+the dimensions O1B0 and O1B1. The synthesis (B0, B1, the chord, the perpendicular n0 and the ray
+r1, O, the θ-arcs, the lines at e and the other solutions) is the recorded construction replayed
+by its steps' roles (geomcad.sheet.replay); the mechanism, the angles and the dimensions are
+drawn here. Right: the given data beside the results, all solutions and the order of
+construction written from the recorded steps (:data:`ORDER`, templates in
+strings/<lang>/sheets_2013_6.toml).
 """
 
 from __future__ import annotations

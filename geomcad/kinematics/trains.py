@@ -24,6 +24,14 @@ passes through two known velocity ends; the fixed link's line is the axis v = 0.
 of a link's line is its angular velocity. The angle diagram (:func:`ray_plan`) draws from one
 pole a ray parallel to each link's line; the rays cut a line at distance H from the pole in
 intercepts H·ω, so their ratios are the ratios of the train.
+
+Every step the plan and the diagram record carries its kind and operands for the order of
+construction (templates ``step.<kind>`` in geomcad/sheet/strings/<lang>/views.toml): the radii
+laid off (``train_radii``), the points at rest (``train_rest``), the velocity taken
+(``train_start``), each link's velocity line through two ends (``train_line``) and the points found
+on it (``train_point``), the pole and the rays of the angle diagram (``ray_pole``,
+``ray_parallel``, ``ray_cut``) and the diagram as a whole (``ray_plan``); the links are named as
+the sheets name them (:func:`link_markup`).
 """
 
 from __future__ import annotations
