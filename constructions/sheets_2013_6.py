@@ -189,7 +189,7 @@ def _construction(v: Viewport, geo: Geometry, c: Construction) -> None:
             "m+": (-1.0, 1.0),
         },
         over={"m−": 14.0, "m+": 14.0, "B0B1": 0.0, "n0": 0.0, "r1": 0.0},
-        along={"m−": 1.0, "m+": 1.0},
+        along={"m−": 1.0, "m+": 1.0, "r1": 0.8},
         box=extent(geo, c),
     )
     _right_angle(v, B0, B1, Op)
