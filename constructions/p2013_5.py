@@ -52,6 +52,7 @@ from geomcad.kinematics.trains import (
     VelocityPlan,
     chain_ratio,
     coaxial_count,
+    link_markup,
     mobility,
     ray_plan,
     solve_speeds,
@@ -222,8 +223,11 @@ def build(p: Mapping[str, ParamValue]) -> Build[Geometry]:
     S = Vec(0.0, y_lo - 2.0 * a)
     rays = ray_plan(c, plan, S, a, links)
     u_rays = rays.ratio(SUN, H2)
-    c.value("u1H2 (plan)", u_plan, "slope of line 1 / slope of line H2")
-    c.value("u1H2 (angle diagram)", u_rays, "intercept of ray 1 / intercept of ray H2")
+    ratio = {"a": link_markup(SUN), "b": link_markup(H2)}
+    c.value("u1H2 (plan)", u_plan, "slope of line 1 / slope of line H2", kind="ratio_slopes",
+            args={**ratio, "u": u_plan})  # fmt: skip
+    c.value("u1H2 (angle diagram)", u_rays, "intercept of ray 1 / intercept of ray H2",
+            kind="ratio_rays", args={**ratio, "u": u_rays})  # fmt: skip
     for name, got in (("u1H2 (plan)", u_plan), ("u1H2 (angle diagram)", u_rays)):
         if not math.isclose(got, float(u1h2), rel_tol=tol.DERIVED):
             raise ConstructionError(

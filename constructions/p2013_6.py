@@ -72,7 +72,7 @@ class Candidate:
     l2: float
     crank_rocker: bool
     line: int  # 0: y = l3 − e, 1: y = l3 + e
-    arc: str  # "Γ" or "Γ′"
+    arc: str  # "Γ" or "Γ'"
 
     def as_result(self) -> dict[str, Any]:
         return {
@@ -133,8 +133,10 @@ def build(p: Mapping[str, ParamValue]) -> Build[Geometry]:
     path = c.line("path", Vec(0.0, l3), (1.0, 0.0), "slider path y = l3", role="given")
     c.point("B", (0.0, l3), role="link", op="mid position: rocker vertical, B = (0, l3)")
     C = c.point("C", (l4, l3), role="link", op="mid position: C = B + (l4, 0) on the path")
-    C0 = c.point("C0", C - Vec(H / 2.0, 0.0), role="given", op="C − H/2 along the path")
-    C1 = c.point("C1", C + Vec(H / 2.0, 0.0), role="given", op="C + H/2 along the path")
+    C0 = c.point("C0", C - Vec(H / 2.0, 0.0), role="given", op="C − H/2 along the path",
+                 kind="stroke_end", args={"p": C, "sign": "–", "h": H / 2.0})  # fmt: skip
+    C1 = c.point("C1", C + Vec(H / 2.0, 0.0), role="given", op="C + H/2 along the path",
+                 kind="stroke_end", args={"p": C, "sign": "+", "h": H / 2.0})  # fmt: skip
     k3 = c.circle("k3", O2, l3, role="aux", r_name="l3", note="path of B")
     kC0 = c.circle("kC0", C0, l4, role="hidden", r_name="l4")
     kC1 = c.circle("kC1", C1, l4, role="hidden", r_name="l4")
@@ -145,6 +147,8 @@ def build(p: Mapping[str, ParamValue]) -> Build[Geometry]:
         left_of(O2, C0, "O2→C0 (the mid position's branch)"),
         role="result",
         op="circle(O2, l3) ∩ circle(C0, l4)",
+        kind="extreme_joint",
+        args={"o": O2, "r": "l3", "c": C0, "l": "l4"},
     )
     B1 = c.intersect(
         "B1",
@@ -153,8 +157,12 @@ def build(p: Mapping[str, ParamValue]) -> Build[Geometry]:
         left_of(O2, C1, "O2→C1 (the mid position's branch)"),
         role="result",
         op="circle(O2, l3) ∩ circle(C1, l4)",
+        kind="extreme_joint",
+        args={"o": O2, "r": "l3", "c": C1, "l": "l4"},
     )
-    theta = c.value("θ", math.pi * (K - 1.0) / (K + 1.0), "180°·(K − 1)/(K + 1), in radians")
+    theta = math.pi * (K - 1.0) / (K + 1.0)
+    c.value("θ", theta, "180°·(K − 1)/(K + 1), in radians", kind="theta_k",
+            args={"K": K, "deg": to_deg(theta)})  # fmt: skip
     chord = c.line_through("B0B1", B0, B1)
     n0 = c.perpendicular("n0", chord, B0, note="perpendicular to B0B1 at B0")
     # the ray from B1 turns towards O2's side of the chord (left of B1→B0 when O2 is there)
@@ -164,17 +172,29 @@ def build(p: Mapping[str, ParamValue]) -> Build[Geometry]:
         B1,
         B0,
         toward_o2 * (math.pi / 2.0 - theta),
-        "90° − θ",
+        "90° – θ",
         note="towards O2's side of B0B1",
     )
     O_ = c.intersect("O", n0, ray, role="construction")
     gamma = c.circle_through("Γ", O_, B0, B1, note="OB1 is a diameter: ∠OB0B1 = 90°")
     gamma_m = c.record(
-        "Γ′",
+        "Γ'",
         "mirror of Γ over B0B1",
         mirror_circle(gamma, chord),
         (gamma, chord),
         note="the other arc that sees B0B1 under θ",
+        kind="mirror",
+        args={"a": gamma, "line": chord},
+    )
+    # the loci of O1 drawn: the arcs of Γ and Γ′ that see B0B1 under θ (their other arcs, of
+    # 180° − θ, hug the chord and carry no solution)
+    c.run(
+        "θ-arcs",
+        "the arcs of Γ and Γ′ that see B0B1 under θ",
+        lambda: angle_arcs(B0, B1, theta),
+        (B0, B1),
+        kind="locus_arcs",
+        args={"a": "Γ", "b": "Γ'", "chord": chord, "angle": "θ"},
     )
     o_side = chord.side(O_)
 
@@ -187,14 +207,21 @@ def build(p: Mapping[str, ParamValue]) -> Build[Geometry]:
             f"on the arc that sees B0B1 under θ ({side_text} of B0B1)",
         )
 
-    lines = (
-        c.parallel("m−", path, offset=-e, op="line ∥ path at e, y = l3 − e", role="construction"),
-        c.parallel("m+", path, offset=e, op="line ∥ path at e, y = l3 + e", role="construction"),
+    lines = tuple(
+        c.parallel(
+            f"m{tag}",
+            path,
+            offset=sign * e,
+            op=f"line ∥ path at e, y = l3 {tag} e",
+            kind="offset_line",
+            args={"sign": text, "e": e},
+        )
+        for tag, sign, text in (("−", -1.0, "–"), ("+", 1.0, "+"))
     )
     cands: list[Candidate] = []
     for li, (m_line, tag) in enumerate(zip(lines, ("−", "+"), strict=True)):
         found: list[tuple[Vec, str]] = []
-        for circ, arc_name, mirrored in ((gamma, "Γ", False), (gamma_m, "Γ′", True)):
+        for circ, arc_name, mirrored in ((gamma, "Γ", False), (gamma_m, "Γ'", True)):
             pts = c.intersections(
                 f"{arc_name}∩m{tag}",
                 circ,
@@ -222,14 +249,22 @@ def build(p: Mapping[str, ParamValue]) -> Build[Geometry]:
             f"(they span y = {y_lo:.6g} … {y_hi:.6g} m); for this H and K, {reach}",
         )
     chosen = lower[0]
-    O1 = c.point("O1", chosen.O1, role="result", op=O1_OP)
+    O1 = c.point("O1", chosen.O1, role="result", op=O1_OP, kind="pick_centre",
+                 args={"n": len(cands)})  # fmt: skip
     for i, cd in enumerate(cands):
         if cd is not chosen:
             c.point(f"O1({i + 1})", cd.O1, role="aux", op=f"solution {i + 1} on {cd.arc}")
     o1b0 = c.value("O1B0", chosen.O1B0, "|O1B0|", (O1, B0))
     o1b1 = c.value("O1B1", chosen.O1B1, "|O1B1|", (O1, B1))
-    l1 = c.value("l1", chosen.l1, "|O1B1 − O1B0| / 2")
-    l2 = c.value("l2", chosen.l2, "(O1B1 + O1B0) / 2")
+    # the dead centres: the longer distance is the extended one (crank and rod in line)
+    far, near = (
+        (("O1B1", o1b1), ("O1B0", o1b0)) if o1b1 >= o1b0 else (("O1B0", o1b0), ("O1B1", o1b1))
+    )
+    ends = {"a": far[0], "b": near[0], "va": far[1], "vb": near[1]}
+    l1 = c.value("l1", chosen.l1, "|O1B1 − O1B0| / 2", kind="half_difference",
+                 args={**ends, "v": chosen.l1})  # fmt: skip
+    l2 = c.value("l2", chosen.l2, "(O1B1 + O1B0) / 2", kind="half_sum",
+                 args={**ends, "v": chosen.l2})  # fmt: skip
 
     notes = list(NOTES)
     mech: SixBar | None = None
@@ -250,8 +285,9 @@ def build(p: Mapping[str, ParamValue]) -> Build[Geometry]:
         )
     mech = _mechanism(chosen, B0, B1, O2, l3, l4)
     h_check, k_check, phi_min, phi_max = mech.stroke_and_k()
-    c.value("H_check", h_check, H_CHECK_OP)
-    c.value("K_check", k_check, "ratio of the crank angles between C's extremes")
+    c.value("H_check", h_check, H_CHECK_OP, kind="check_stroke", args={"H": h_check})
+    c.value("K_check", k_check, "ratio of the crank angles between C's extremes",
+            kind="check_turn", args={"H": h_check, "K": k_check})  # fmt: skip
     results["H_check"] = h_check
     results["K_check"] = k_check
     results["solutions"] = [cd.as_result() for cd in cands]

@@ -38,6 +38,7 @@ from geomcad.sheet import (
 )
 
 if TYPE_CHECKING:
+    from geomcad.construction import Construction
     from geomcad.problem import Solution
 
     from .p2013_5 import Geometry
@@ -75,6 +76,20 @@ SCHEME_H = 140.0
 SCHEME_UNITS = 14.5
 RAY_W = 177.0
 RAY_H = 40.0
+#: Width (mm) of the order of construction.
+ORDER_W = 148.0
+
+#: The kinds of the steps the order of construction lists (geomcad.kinematics.trains' plan of
+#: linear velocities and its angle diagram, then the ratio read off the diagram).
+ORDER_KINDS = (
+    "train_radii",
+    "train_rest",
+    "train_start",
+    "train_line",
+    "train_point",
+    "ray_plan",
+    "ratio_rays",
+)
 
 WORDS = Words(__package__, "sheets_2013_5")
 
@@ -545,8 +560,11 @@ def _panel(sol: Solution[Geometry], rays: RayPlan, k_v: float) -> list[View]:
             ]
         )
     omegas = V.Table(rows, widths=(18.0, 58.0, 36.0, 34.0), row_h=5.5, title=WORDS("omegas"))
-    u_txt = num(float(r["u1H2"]), 4)
-    steps = [WORDS(f"step_{i}") for i in range(1, 5)] + [WORDS("step_5", u=u_txt)]
-    order = V.Text(paragraphs=[f"{i + 1}. {s}" for i, s in enumerate(steps)], width=148.0,
-                   indent=4.0, title=WORDS("order"))  # fmt: skip
+    order = V.Steps(sol.construction, ORDER_W, only=order_steps(sol.construction), words=WORDS)
     return [data, coaxial, results, omegas, order]
+
+
+def order_steps(c: Construction) -> list[str]:
+    """The steps the order of construction lists: the plan of linear velocities and the plan
+    of angular velocities as recorded (:data:`ORDER_KINDS`), in their recorded order."""
+    return [s.name for s in c if s.kind in ORDER_KINDS]

@@ -7,8 +7,12 @@ chord B0B1, the perpendicular at B0 and the ray at 90° − θ meeting in O, the
 O, B0, B1 and its mirror image Γ′ (only their arcs that see B0B1 under θ: the others hug the chord),
 the lines at e from the path, every solution O1, and the seed's solution built out: the crank's
 dead-centre positions O1A0B0 and O1A1B1, the crank circle, the linkage in its mid position, and
-the dimensions O1B0 and O1B1. Right: the given data, the results, all solutions and the order
-of construction.
+the dimensions O1B0 and O1B1. The synthesis (B0, B1, the chord, the perpendicular n0 and the ray
+r1, O, the θ-arcs, the lines at e and the other solutions) is the recorded construction replayed
+by its steps' roles (geomcad.sheet.replay); the mechanism, the angles and the dimensions are
+drawn here. Right: the given data beside the results, all solutions and the order of
+construction written from the recorded steps (:data:`ORDER`, templates in
+strings/<lang>/sheets_2013_6.toml).
 """
 
 from __future__ import annotations
@@ -21,16 +25,27 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from geomcad.construction import Construction
-from geomcad.geom import Arc, Circle, Line, Vec, angle_arcs, circle_circle
+from geomcad.geom import Arc, Circle, Vec, circle_circle
 from geomcad.kinematics import branch_sign
 from geomcad.sheet import Scale, Sheet, TitleBlock, Viewport, start
-from geomcad.sheet.compose import Column, Field, Figure, Layout, Row, View, arrange, compose
+from geomcad.sheet.compose import (
+    Column,
+    Field,
+    Figure,
+    Layout,
+    Node,
+    Row,
+    View,
+    arrange,
+    compose,
+)
 from geomcad.sheet.lang import Words, current
 from geomcad.sheet.model import ArcItem, CircleItem, Polyline
+from geomcad.sheet.replay import replay
 from geomcad.sheet.scheme import GUIDE_HALF
 from geomcad.sheet.text import box as text_box
 from geomcad.sheet.text import parse
-from geomcad.sheet.views import Table, Text
+from geomcad.sheet.views import Steps, Table, Text
 
 from .sheets_2013_6_kin import factor, kinematics_sheet, num, six_bar
 from .spec_2013_6 import SEED_K_L
@@ -48,6 +63,11 @@ SWING_PAD = 0.25
 #: Width (mm) of the order of construction's text.
 ORDER_W = 146.0
 
+#: The steps the order of construction lists, in their recorded order (geomcad/sheet/views.py
+#: Steps; the kinds' templates are in strings/<lang>/sheets_2013_6.toml and views.toml).
+ORDER = ("C0", "C1", "B0", "B1", "θ", "n0", "r1", "O", "Γ", "θ-arcs", "m−", "m+", "O1",
+         "l1", "l2", "K_check")  # fmt: skip
+
 
 def extent(geo: Geometry, c: Construction) -> tuple[float, float, float, float]:
     """The model box the sheet draws (x0, y0, x1, y1): the θ-circles, the mechanism and every
@@ -55,7 +75,7 @@ def extent(geo: Geometry, c: Construction) -> tuple[float, float, float, float]:
     l3, l4 = geo.l3, geo.l4
     xs: list[float] = [-l3, l3]
     ys: list[float] = [-0.05 * l3]
-    for circ in (c["Γ"], c["Γ′"]):
+    for circ in (c["Γ"], c["Γ'"]):
         xs += [circ.c.x - circ.r, circ.c.x + circ.r]
         ys += [circ.c.y - circ.r, circ.c.y + circ.r]
     for q in [
@@ -127,7 +147,6 @@ def _drawing(v: Viewport, geo: Geometry, c: Construction) -> None:
 
 def _construction(v: Viewport, geo: Geometry, c: Construction) -> None:
     B0, B1, Op, O2 = c["B0"], c["B1"], c["O"], c["O2"]
-    theta = geo.theta
     # the rocker's arc and the slider's path
     swing = Arc(Circle(O2, geo.l3), B1.angle - SWING_PAD, B0.angle + SWING_PAD)
     v.arc(swing, "centre")
@@ -139,38 +158,42 @@ def _construction(v: Viewport, geo: Geometry, c: Construction) -> None:
         v.seg(Vec(left, y), Vec(B0.x - v.scale.model(4.0), y), "centre")
     stub = c["C1"].x + v.scale.model(8.0)
     v.seg(Vec(stub, y), Vec(max(right, stub + v.scale.model(10.0)), y), "centre")
-    # B0B1, the perpendicular at B0 and the ray from B1 at 90° − θ, meeting in O
-    v.seg(B0, B1, "construction")
-    v.seg(B0, Op, "construction")
-    v.seg(B1, Op, "construction")
+    # the synthesis as recorded, by its steps' roles (geomcad.sheet.replay): the chord B0B1,
+    # the perpendicular at B0 and the ray from B1 at 90° − θ meeting in O, the θ-arcs of Γ and
+    # Γ' (their arcs of 180° − θ hug the chord and carry no solution), the lines at e from the
+    # path and every other solution; the chosen O1 and B0, B1 with the mechanism
+    others = [s.name for s in c if s.name.startswith("O1(")]
+    # the θ-arcs in the order recorded (left of B0 → B1 first), each named by its circle
+    arcs = c["θ-arcs"]
+    names = tuple("Γ" if a.circle.c.dist(c["Γ"].c) < a.circle.c.dist(c["Γ'"].c) else "Γ'"
+                  for a in arcs)  # fmt: skip
+    replay(
+        v,
+        c,
+        ("B0", "B1", "B0B1", "n0", "r1", "O", "θ-arcs", "m−", "m+", *others),
+        labels={
+            "B0": "B_0",
+            "B1": "B_1",
+            "θ-arcs": names,
+            "n0": "n_0",
+            "r1": "r_1",
+            "m−": "y = l_3 – e",
+            "m+": "y = l_3 + e",
+            **{n: f"O_1^{{({n[3:-1]})}}" for n in others},
+        },
+        prefer={
+            "B0": (-1.0, 1.0),
+            "B1": (1.0, 1.0),
+            "O": (-1.0, -1.0),
+            "m−": (-1.0, 1.0),
+            "m+": (-1.0, 1.0),
+        },
+        over={"m−": 14.0, "m+": 14.0, "B0B1": 0.0, "n0": 0.0, "r1": 0.0},
+        along={"m−": 1.0, "m+": 1.0, "r1": 0.8},
+        box=extent(geo, c),
+    )
     _right_angle(v, B0, B1, Op)
-    v.dot(Op, "result")
-    v.label(Op, "O", prefer=(-1.0, -1.0))
-    # the θ-circle Γ and its mirror Γ′: only their arcs that see B0B1 under θ (the arcs of
-    # 180° − θ hug the chord and carry no solution)
-    chord = Line.through(B0, B1)
-    for arc in angle_arcs(B0, B1, theta):
-        v.arc(arc, "construction")
-    gamma, gamma_m = c["Γ"], c["Γ′"]
-    v.dot(gamma.c, "construction")
-    for circ, name in ((gamma, "Γ"), (gamma_m, "Γ'")):
-        # the label sits on the θ-arc, at its point furthest from the chord
-        side = 1.0 if chord.side(circ.c) > 0.0 else -1.0
-        far = circ.c + chord.normal * (side * circ.r)
-        v.label(far, name, prefer=(0.0, side))
-    # the lines at e from the path, and every solution
-    for line_no, (step, tag) in enumerate((("m−", "–"), ("m+", "+"))):
-        m = c[step]
-        pts = [*(cd.O1 for cd in geo.candidates if cd.line == line_no), m.p]
-        v.line_over(m, pts, "construction", over=14.0)
-        # the line's name above its right end
-        far_end = Vec(max(q.x for q in pts) + v.scale.model(14.0), m.p.y)
-        v.label(far_end, f"y = l_3 {tag} e", height=2.5, prefer=(-1.0, 1.0), clear=0.5)
-    for i, cd in enumerate(geo.candidates):
-        if cd is geo.chosen:
-            continue
-        v.dot(cd.O1, "result")
-        v.label(cd.O1, f"O_1^{{({i + 1})}}", height=3.5)
+    v.dot(c["Γ"].c, "construction")
 
 
 def _ink(items: Sequence[Any]) -> np.ndarray:
@@ -338,8 +361,6 @@ def _mechanism(v: Viewport, geo: Geometry, c: Construction) -> None:
     six_bar(v, pts, Vec(1.0, 0.0), labels, number_at={"4": 0.58})
     for q, name in ((C0, "C_0"), (C1, "C_1")):
         v.label(q, name, prefer=(0.0, 1.0), clear=4.0)
-    v.label(B0, "B_0", prefer=(-1.0, 1.0))
-    v.label(B1, "B_1", prefer=(1.0, 1.0))
     for Ax, name in ((A0, "A_0"), (A1, "A_1")):
         out = (Ax - O1).unit()  # outside the crank circle, away from O1's label
         v.label(Ax, name, height=2.5, prefer=(out.x, out.y))
@@ -363,7 +384,7 @@ def _mid_A(O1: Vec, l1: float, l2: float, B: Vec, O2: Vec, branch: int) -> Vec:
     return pts[0]
 
 
-def _panel(sol: Solution[Geometry], k: float) -> tuple[View, ...]:
+def _panel(sol: Solution[Geometry], k: float) -> tuple[View | Node, ...]:
     """The tables on the right: given data, results (O1B0, O1B1 in mm at the factor k; none
     yet when 0), every solution, the order of construction."""
     p = sol.params
@@ -378,7 +399,7 @@ def _panel(sol: Solution[Geometry], k: float) -> tuple[View, ...]:
         ("e", "e", m_),
     ):
         rows.append([label, f"{num(float(p[name]))} {unit}".strip()])
-    given = Table(rows, widths=(40.0, 40.0), title=WORDS("data"))
+    given = Table(rows, widths=(30.0, 36.0), title=WORDS("data"))
     rows = [[WORDS("quantity"), WORDS("value")]]
     for name, label, unit, scale in (
         ("theta_deg", "θ", "°", 1.0),
@@ -390,8 +411,11 @@ def _panel(sol: Solution[Geometry], k: float) -> tuple[View, ...]:
         ("K_check", WORDS("K_check"), "", 1.0),
     ):
         exact = float(r[name]) / scale if scale else 0.0
-        rows.append([label, f"{num(exact, 4)} {unit}".strip()])
-    results = Table(rows, widths=(40.0, 40.0), title=WORDS("results"))
+        # a degree sign follows its number without a space
+        rows.append(
+            [label, f"{num(exact, 4)}{unit}" if unit == "°" else f"{num(exact, 4)} {unit}".strip()]
+        )
+    results = Table(rows, widths=(30.0, 38.0), title=WORDS("results"))
     note = Text(lines=[WORDS("on_drawing", k=factor(Scale(k or 0.001, "l")))])
     rows = [["№", f"O_1 (x; y), {m_}", f"l_1, {m_}", f"l_2, {m_}", WORDS("crank")]]
     for i, s in enumerate(r["solutions"]):
@@ -406,9 +430,6 @@ def _panel(sol: Solution[Geometry], k: float) -> tuple[View, ...]:
             ]
         )
     every = Table(rows, widths=(10.0, 48.0, 26.0, 26.0, 36.0), title=WORDS("all"))
-    steps = [WORDS(f"step_{i}") for i in range(1, 8)]
-    steps[1] = WORDS("step_2", theta=num(float(r["theta_deg"]), 4))
-    steps[6] = WORDS("step_7", H=num(float(r["H_check"]), 4), K=num(float(r["K_check"]), 4))
-    order = Text(paragraphs=[f"{i + 1}. {st}" for i, st in enumerate(steps)], width=ORDER_W,
-                 indent=4.0, title=WORDS("order"))  # fmt: skip
-    return given, results, note, every, order
+    order = Steps(sol.construction, ORDER_W, only=ORDER, words=WORDS)
+    # the data and the results side by side, so that the order of construction has its room
+    return Row(given, Column(results, note)), every, order

@@ -24,11 +24,20 @@ passes through two known velocity ends; the fixed link's line is the axis v = 0.
 of a link's line is its angular velocity. The angle diagram (:func:`ray_plan`) draws from one
 pole a ray parallel to each link's line; the rays cut a line at distance H from the pole in
 intercepts H·ω, so their ratios are the ratios of the train.
+
+Every step the plan and the diagram record carries its kind and operands for the order of
+construction (templates ``step.<kind>`` in geomcad/sheet/strings/<lang>/views.toml): the radii
+laid off (``train_radii``), the points at rest (``train_rest``), the velocity taken
+(``train_start``), each link's velocity line through two ends (``train_line``) and the points found
+on it (``train_point``), the pole and the rays of the angle diagram (``ray_pole``,
+``ray_parallel``, ``ray_cut``) and the diagram as a whole (``ray_plan``); the links are named as
+the sheets name them (:func:`link_markup`).
 """
 
 from __future__ import annotations
 
 import math
+import re
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from fractions import Fraction
@@ -219,6 +228,28 @@ def _slope(line: Line) -> float:
     return line.d.x / line.d.y
 
 
+def link_markup(link: str) -> str:
+    """A link's name as label markup for the order of construction: ``H2-7`` → ``H_2–7``,
+    ``2-5`` → ``2–5`` (the sheet's names of the blocks)."""
+    return re.sub(r"([A-Za-z])(\d)", r"\1_\2", link).replace("-", "–")
+
+
+def _link_line(
+    c: Construction, link: str, ends: Mapping[str, Vec], a: str, b: str, note: str
+) -> Line:
+    """Record the velocity line of ``link`` through the ends of its points ``a`` and ``b``."""
+    pa, pb = ends[a], ends[b]
+    return c.run(
+        f"v({link})",
+        f"line {a.lower()}{b.lower()}",
+        lambda: Line.through(pa, pb),
+        (pa, pb),
+        note=note,
+        kind="train_line",
+        args={"link": link_markup(link), "a": a.lower(), "b": b.lower()},
+    )
+
+
 def velocity_plan(
     c: Construction,
     points: Sequence[PlanPoint],
@@ -245,8 +276,22 @@ def velocity_plan(
     lines: dict[str, Line] = {}
     ends: dict[str, Vec] = {}
     order: list[str] = []
+    c.record(
+        "radii",
+        "the points' radii on one vertical",
+        tuple(Vec(0.0, p.y) for p in points),
+        role="hidden",
+        kind="train_radii",
+        args={"points": ", ".join(p.name for p in points)},
+    )
     axis = c.line(
-        f"v({fixed})", Vec(0.0, 0.0), (0.0, 1.0), f"axis v = 0: the fixed link {fixed}", "given"
+        f"v({fixed})",
+        Vec(0.0, 0.0),
+        (0.0, 1.0),
+        f"axis v = 0: the fixed link {fixed}",
+        "given",
+        kind="train_axis",
+        args={"link": link_markup(fixed)},
     )
     lines[fixed] = axis
     fixed_pts = [p for p in points if fixed in p.links and start in p.links]
@@ -259,14 +304,30 @@ def velocity_plan(
         raise ConstructionError(f"v({start})", f"{start_point} is not a point of {start}")
     for p in points:
         if fixed in p.links:
-            ends[p.name] = c.point(p.name.lower(), (0.0, p.y), "construction", op="on v = 0")
-    ends[sp.name] = c.point(
-        sp.name.lower(), (v_start, sp.y), "construction", op=f"V_{sp.name} taken"
-    )
+            ends[p.name] = c.point(
+                p.name.lower(),
+                (0.0, p.y),
+                "construction",
+                op="on v = 0",
+                kind="train_rest",
+                args={"p": p.name, "link": link_markup(fixed)},
+            )
     anchor = fixed_pts[0]
-    lines[start] = c.line_through(
-        f"v({start})", ends[anchor.name], ends[sp.name], note=f"line of {start}"
+    ends[sp.name] = c.point(
+        sp.name.lower(),
+        (v_start, sp.y),
+        "construction",
+        op=f"V_{sp.name} taken",
+        kind="train_start",
+        args={
+            "p": sp.name,
+            "link": link_markup(start),
+            "r": sp.y - anchor.y,
+            "w": v_start / (sp.y - anchor.y) if sp.y != anchor.y else 0.0,
+            "v": v_start,
+        },
     )
+    lines[start] = _link_line(c, start, ends, anchor.name, sp.name, f"line of {start}")
     order.append(start)
 
     def spread() -> None:
@@ -276,7 +337,12 @@ def velocity_plan(
             for link in p.links:
                 if link in lines:
                     level = c.line(
-                        f"y_{p.name}", Vec(0.0, p.y), (1.0, 0.0), f"horizontal at y_{p.name}"
+                        f"y_{p.name}",
+                        Vec(0.0, p.y),
+                        (1.0, 0.0),
+                        f"horizontal at y_{p.name}",
+                        kind="train_level",
+                        args={"p": p.name},
                     )
                     ends[p.name] = c.intersect(
                         p.name.lower(),
@@ -284,6 +350,8 @@ def velocity_plan(
                         level,
                         role="construction",
                         op=f"line of {link} ∩ horizontal at y_{p.name}",
+                        kind="train_point",
+                        args={"p": p.name, "link": link_markup(link)},
                     )
                     break
 
@@ -296,12 +364,9 @@ def velocity_plan(
             known = [p for p in points if link in p.links and p.name in ends]
             known.sort(key=lambda p: p.y)
             if len(known) >= 2 and known[-1].y != known[0].y:
-                a, b = known[0], known[-1]
-                lines[link] = c.line_through(
-                    f"v({link})",
-                    ends[a.name],
-                    ends[b.name],
-                    note=f"line of {link} through {a.name.lower()} and {b.name.lower()}",
+                a, b = known[0].name, known[-1].name
+                lines[link] = _link_line(
+                    c, link, ends, a, b, f"line of {link} through {a.lower()} and {b.lower()}"
                 )
                 order.append(link)
                 spread()
@@ -342,10 +407,32 @@ def ray_plan(
     the horizontal at distance H above S (a ray with slope dv/dy = ω meets it at v = S.v + H·ω)."""
     if not (H > 0.0 and math.isfinite(H)):
         raise ParameterError("H", H, "the pole distance must be > 0")
-    pole = c.point("S", S, "construction", op="pole of the angle diagram")
-    base = c.line("ω-line", S + Vec(0.0, H), (1.0, 0.0), "horizontal at H above S")
+    pole = c.point("S", S, "construction", op="pole of the angle diagram", kind="ray_pole")
+    base = c.line("ω-line", S + Vec(0.0, H), (1.0, 0.0), "horizontal at H above S", kind="ray_base")
     ends: dict[str, Vec] = {}
     for link in links:
-        ray = c.parallel(f"ray {link}", plan.lines[link], through=pole, note=f"∥ line of {link}")
-        ends[link] = c.intersect(f"ω{link}", ray, base, role="construction")
+        ray = c.parallel(
+            f"ray {link}",
+            plan.lines[link],
+            through=pole,
+            note=f"∥ line of {link}",
+            kind="ray_parallel",
+            args={"link": link_markup(link)},
+        )
+        ends[link] = c.intersect(
+            f"ω{link}",
+            ray,
+            base,
+            role="construction",
+            kind="ray_cut",
+            args={"link": link_markup(link)},
+        )
+    c.record(
+        "ω",
+        "the rays' intercepts on the line at H: H·ω of each link",
+        tuple(ends.values()),
+        role="hidden",
+        kind="ray_plan",
+        args={"links": ", ".join(link_markup(k) for k in links)},
+    )
     return RayPlan(S, H, ends)
