@@ -612,6 +612,8 @@ def _printable(text: str) -> str:
     w = metrics().widths
     for sign, key in (("⊥", "sign.perp"), ("∥", "sign.par"), ("∩", "sign.cap")):
         text = text.replace(sign, WORDS(key))
+    # the minus sign and the prime the font lacks, as the sheets' own en dash and apostrophe
+    text = text.replace("\u2212", "\u2013").replace("\u2032", "'")
     return "".join(c if ord(c) in w or c in "_{}^" else "?" for c in text)
 
 
