@@ -106,16 +106,19 @@ def write_atomic(path: Path, data: bytes) -> None:
     file system) and is removed if anything fails before the rename.
     """
     tmp = path.with_name(f".{path.name}.{os.getpid()}-{uuid.uuid4().hex[:12]}.tmp")
-    # O_EXCL: never write through someone else's file; 0o666 lets the umask decide the mode.
-    fd = os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o666)
+    # The file is created inside the ``try``: a signal that arrives as soon as it exists (and is
+    # raised at the next bytecode) still removes it. O_EXCL: never write through someone else's
+    # file (its FileExistsError leaves that file alone); 0o666 lets the umask decide the mode.
     try:
+        fd = os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o666)
         with os.fdopen(fd, "wb") as f:
             f.write(data)
             f.flush()
             os.fsync(f.fileno())
         os.replace(tmp, path)
-    except BaseException:
-        tmp.unlink(missing_ok=True)
+    except BaseException as exc:
+        if not isinstance(exc, FileExistsError):
+            tmp.unlink(missing_ok=True)
         raise
 
 
