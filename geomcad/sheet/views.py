@@ -27,7 +27,7 @@ import re
 import sys
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass
-from typing import Any, Protocol
+from typing import Any, Literal, Protocol
 
 import numpy as np
 import numpy.typing as npt
@@ -46,6 +46,7 @@ from geomcad.sheet.scale import fmt_number
 from geomcad.sheet.scheme import Body, draw_scheme
 from geomcad.sheet.text import metrics, wrap
 from geomcad.structure import Mechanism
+from geomcad.units import to_display
 
 WORDS = Words(__package__, "views")
 
@@ -457,21 +458,85 @@ class Table(View):
         specs: Iterable[Spec],
         values: Mapping[str, Any],
         labels: Mapping[str, str] | None = None,
-        digits: int = 4,
+        digits: int | None = None,
+        style: TableStyle = "column",
+        pairs: int = 1,
+        extra: tuple[str, Callable[[Spec, Any], str]] | None = None,
+        first: str = "",
+        head: Sequence[str] | None = None,
         **kw: Any,
     ) -> Table:
-        """A table of the values of ``specs`` (a problem's ``Param`` or ``ResultSpec``: a
-        ``name`` and a ``unit``) found in ``values``; ``labels`` maps a name to label markup
-        (default: the name as markup, ``l_AB`` → ``l_{AB}``). A unit ``deg`` is written °, and
-        values in SI are printed as they are."""
-        entries: list[tuple[str, float | str, str]] = []
+        """A table of the values of ``specs`` (a problem's ``Param`` or ``ResultSpec``) found in
+        ``values``, each written as its spec says: its ``symbol`` (default: the name as markup,
+        ``l_AB`` → ``l_{AB}``; ``labels`` maps a name to other markup, e.g. words of the
+        sheet's language), its value in its ``display`` unit (default its SI ``unit``; a
+        unit ``deg`` is written °) to its ``digits`` significant figures (``digits`` here
+        overrides every spec's). An integer is written whole; a text value (a choice, or a
+        value the sheet has written itself) as it is, without a unit.
+
+        ``style``: ``"column"`` quantity | value | unit; ``"value"`` quantity | value with its
+        unit; ``"label"`` "quantity, unit" | value; ``"equation"`` one cell "l_{AB} = 0,1 м".
+        ``pairs`` > 1 sets that many groups of columns side by side (read down the first, then
+        the next). ``extra = (heading, cell(spec, value))`` adds a column (e.g. a length on the
+        plan). ``first`` is the first column's heading (default "Величина"); ``head`` replaces
+        the whole heading row of one group.
+        """
+        entries: list[list[str]] = []
         for s in specs:
             if s.name not in values:
                 continue
             x = values[s.name]
-            value: float | str = float(x) if isinstance(x, int | float) else str(x)
-            entries.append(((labels or {}).get(s.name, name_markup(s.name)), value, s.unit))
-        return Table.of_values(entries, digits, **kw)
+            label = (labels or {}).get(s.name) or s.symbol or name_markup(s.name)
+            shown = s.display or s.unit
+            if isinstance(x, str):
+                text, unit = x, ""
+            elif isinstance(x, int) and not isinstance(x, bool):
+                text, unit = str(x), unit_text(shown)
+            else:
+                y = to_display(float(x), s.unit, shown)
+                text, unit = num(y, digits or s.digits), unit_text(shown)
+            if style == "column":
+                row = [label, text, unit]
+            elif style == "value":
+                row = [label, with_unit(text, unit)]
+            elif style == "label":
+                row = [f"{label}, {unit}" if unit else label, text]
+            else:
+                row = [f"{label} = {with_unit(text, unit)}"]
+            if extra is not None:
+                row.append(extra[1](s, x))
+            entries.append(row)
+        if head is None:
+            names = {"column": ("quantity", "value", "unit"), "value": ("quantity", "value"),
+                     "label": ("quantity", "value"), "equation": ("quantity",)}[style]  # fmt: skip
+            head = [WORDS(n) for n in names]
+            if first:
+                head[0] = first
+            if extra is not None:
+                head.append(extra[0])
+        group = list(head)
+        n = max(1, pairs)
+        per = -(-len(entries) // n)
+        blank = [""] * len(group)
+        rows = [group * n]
+        for i in range(per):
+            row: list[str] = []
+            for j in range(n):
+                k = j * per + i
+                row += entries[k] if k < len(entries) else blank
+            rows.append(row)
+        if not kw.get("header", True):
+            rows = rows[1:]
+        return Table(rows, **kw)
+
+
+#: How :meth:`Table.of_specs` sets a value and its unit.
+TableStyle = Literal["column", "value", "label", "equation"]
+
+
+def with_unit(value: str, unit: str) -> str:
+    """A value with its unit: ``0,15 м``, ``45°`` (no space before the degree sign)."""
+    return value + unit if unit in ("°", "") else f"{value} {unit}"
 
 
 class Spec(Protocol):
@@ -481,6 +546,12 @@ class Spec(Protocol):
     def name(self) -> str: ...
     @property
     def unit(self) -> str: ...
+    @property
+    def symbol(self) -> str: ...
+    @property
+    def display(self) -> str: ...
+    @property
+    def digits(self) -> int: ...
 
 
 def unit_text(unit: str) -> str:
