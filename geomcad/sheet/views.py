@@ -472,20 +472,24 @@ class Table(View):
         sheet's language), its value in its ``display`` unit (default its SI ``unit``; a
         unit ``deg`` is written °) to its ``digits`` significant figures (``digits`` here
         overrides every spec's). An integer is written whole; a text value (a choice, or a
-        value the sheet has written itself) as it is, without a unit.
+        value the sheet has written itself) as it is, without a unit; a list is left out.
 
         ``style``: ``"column"`` quantity | value | unit; ``"value"`` quantity | value with its
         unit; ``"label"`` "quantity, unit" | value; ``"equation"`` one cell "l_{AB} = 0,1 м".
         ``pairs`` > 1 sets that many groups of columns side by side (read down the first, then
         the next). ``extra = (heading, cell(spec, value))`` adds a column (e.g. a length on the
-        plan). ``first`` is the first column's heading (default "Величина"); ``head`` replaces
+        plan). ``first`` is the first column's heading (default "Параметр" for a problem's
+        ``Param``, else "Величина"); ``head`` replaces
         the whole heading row of one group.
         """
+        specs = list(specs)
         entries: list[list[str]] = []
         for s in specs:
             if s.name not in values:
                 continue
             x = values[s.name]
+            if isinstance(x, list | tuple | dict):
+                continue  # a list of values is a table of its own
             label = (labels or {}).get(s.name) or s.symbol or name_markup(s.name)
             shown = s.display or s.unit
             if isinstance(x, str):
@@ -510,8 +514,8 @@ class Table(View):
             names = {"column": ("quantity", "value", "unit"), "value": ("quantity", "value"),
                      "label": ("quantity", "value"), "equation": ("quantity",)}[style]  # fmt: skip
             head = [WORDS(n) for n in names]
-            if first:
-                head[0] = first
+            given = bool(specs) and all(hasattr(s, "default") for s in specs)  # a problem's data
+            head[0] = first or (WORDS("parameter") if given and style != "equation" else head[0])
             if extra is not None:
                 head.append(extra[0])
         group = list(head)
