@@ -479,8 +479,7 @@ class Table(View):
         ``pairs`` > 1 sets that many groups of columns side by side (read down the first, then
         the next). ``extra = (heading, cell(spec, value))`` adds a column (e.g. a length on the
         plan). ``first`` is the first column's heading (default "Параметр" for a problem's
-        ``Param``, else "Величина"); ``head`` replaces
-        the whole heading row of one group.
+        ``Param``, else "Величина"); ``head`` replaces the whole heading row (every group's).
         """
         specs = list(specs)
         entries: list[list[str]] = []
@@ -510,6 +509,7 @@ class Table(View):
             if extra is not None:
                 row.append(extra[1](s, x))
             entries.append(row)
+        n = max(1, pairs)
         if head is None:
             names = {"column": ("quantity", "value", "unit"), "value": ("quantity", "value"),
                      "label": ("quantity", "value"), "equation": ("quantity",)}[style]  # fmt: skip
@@ -518,11 +518,10 @@ class Table(View):
             head[0] = first or (WORDS("parameter") if given and style != "equation" else head[0])
             if extra is not None:
                 head.append(extra[0])
-        group = list(head)
-        n = max(1, pairs)
+            head = list(head) * n
         per = -(-len(entries) // n)
-        blank = [""] * len(group)
-        rows = [group * n]
+        blank = [""] * len(entries[0]) if entries else []
+        rows = [list(head)]
         for i in range(per):
             row: list[str] = []
             for j in range(n):
