@@ -464,6 +464,7 @@ class Table(View):
         extra: tuple[str, Callable[[Spec, Any], str]] | None = None,
         first: str = "",
         head: Sequence[str] | None = None,
+        transpose: bool = False,
         **kw: Any,
     ) -> Table:
         """A table of the values of ``specs`` (a problem's ``Param`` or ``ResultSpec``) found in
@@ -480,6 +481,8 @@ class Table(View):
         the next). ``extra = (heading, cell(spec, value))`` adds a column (e.g. a length on the
         plan). ``first`` is the first column's heading (default "Параметр" for a problem's
         ``Param``, else "Величина"); ``head`` replaces the whole heading row (every group's).
+        ``transpose``: the quantities in a heading row, their values in the row under it (use
+        with ``style="label"``).
         """
         specs = list(specs)
         entries: list[list[str]] = []
@@ -530,6 +533,8 @@ class Table(View):
             rows.append(row)
         if not kw.get("header", True):
             rows = rows[1:]
+        if transpose:  # the quantities across, their values (and extra cells) under them
+            rows = [list(col) for col in zip(*entries, strict=True)]
         return Table(rows, **kw)
 
 
