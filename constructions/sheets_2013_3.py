@@ -181,8 +181,10 @@ def _block(v: Viewport, q: Vec, along: Vec) -> None:
 def _results(sol: Solution[Geometry], kv: Scale | None) -> V.Table:
     """The results with their lengths on the plan (velocities) at ``kv``."""
 
-    def on_plan(spec: V.Spec, x: Any) -> str:
-        return _n(kv.mm(float(x)), 3) if kv is not None and spec.unit == "m/s" else ""
+    def on_plan(spec: V.Spec, x: object) -> str:
+        if kv is None or spec.unit != "m/s" or not isinstance(x, int | float):
+            return ""
+        return _n(kv.mm(float(x)), 3)
 
     return V.Table.of_specs(
         RESULTS, sol.results, labels={"F_red": WORDS("F_red")}, style="value",

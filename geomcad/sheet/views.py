@@ -516,7 +516,7 @@ class Table(View):
         if head is None:
             names = {"column": ("quantity", "value", "unit"), "value": ("quantity", "value"),
                      "label": ("quantity", "value"), "equation": ("quantity",)}[style]  # fmt: skip
-            head = [WORDS(n) for n in names]
+            head = [WORDS(w) for w in names]
             given = bool(specs) and all(hasattr(s, "default") for s in specs)  # a problem's data
             head[0] = first or (WORDS("parameter") if given and style != "equation" else head[0])
             if extra is not None:
@@ -526,11 +526,11 @@ class Table(View):
         blank = [""] * len(entries[0]) if entries else []
         rows = [list(head)]
         for i in range(per):
-            row: list[str] = []
+            line: list[str] = []
             for j in range(n):
                 k = j * per + i
-                row += entries[k] if k < len(entries) else blank
-            rows.append(row)
+                line += entries[k] if k < len(entries) else blank
+            rows.append(line)
         if not kw.get("header", True):
             rows = rows[1:]
         if transpose:  # the quantities across, their values (and extra cells) under them
