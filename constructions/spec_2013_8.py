@@ -25,8 +25,8 @@ if TYPE_CHECKING:
 ID = "2013-8"
 
 PARAMS = (
-    Param("d_hole", 0.05, "diameter of the hole", "m", gt=0.0, symbol="d"),
-    Param("h_plate", 0.03, "thickness of the plate", "m", gt=0.0, symbol="h"),
+    Param("d_hole", 0.05, "diameter of the hole", "m", gt=0.0, symbol="d", display="mm"),
+    Param("h_plate", 0.03, "thickness of the plate", "m", gt=0.0, symbol="h", display="mm"),
     Param("tau", 6e7, "shear strength of the plate's steel", "Pa", gt=0.0, display="MPa"),
     Param("n_rpm", 1500, "nominal (largest) speed of the motor shaft", "rpm", gt=0.0, symbol="n"),
     Param("delta", 0.1, "coefficient of speed fluctuation δ (0 < δ < 2)", "1"),
