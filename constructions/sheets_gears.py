@@ -40,7 +40,6 @@ from geomcad.sheet.lang import Words, per_language
 from geomcad.sheet.views import AxisSpec, Curve, Diagram, Table, Text
 
 from .file_common import sheet_formats
-from .file_gears import RESULTS
 
 if TYPE_CHECKING:
     from geomcad.problem import Solution
@@ -328,6 +327,8 @@ def _pair_tables(p: gd.GearPair, me: gd.Meshing) -> tuple[Table, Table]:
         ["|λ|_{max}", fmt_number(p.lambda1, digits=4), fmt_number(p.lambda2, digits=4)],
     ]
     sizes = Table(rows, widths=(30.0, 40.0, 40.0), title=WORDS("sizes_title", m=mm(p.m)))
+    from .file_gears import RESULTS
+
     p_b = ResultSpec("p_b", "m", "base pitch", display="mm", digits=5)
     values = {"a": p.a, "a_w": p.a_w, "alpha_w_deg": math.degrees(p.alpha_w), "y": p.y,
               "delta_y": p.dy, "eps_alpha": p.eps_alpha, "eps_alpha_drawn": me.eps_drawn,
