@@ -442,16 +442,20 @@ class Table(View):
 
     @staticmethod
     def of_values(
-        entries: Iterable[tuple[str, float | str, str]], digits: int = 4, **kw: Any
+        entries: Iterable[tuple[str, float | str, str]],
+        digits: int = 4,
+        first: str = "",
+        **kw: Any,
     ) -> Table:
-        """A table "quantity | value | unit" of (label markup, value, unit) entries; numbers to
-        ``digits`` significant figures."""
-        head = [WORDS("quantity"), WORDS("value"), WORDS("unit")]
+        """A table "quantity | value | unit" of (label markup, value, SI unit) entries; numbers
+        to ``digits`` significant figures, a text value as it is; ``first`` heads the first
+        column (default "Величина"); ``header=False``: no heading row."""
+        head = [first or WORDS("quantity"), WORDS("value"), WORDS("unit")]
         rows = [
             [label, value if isinstance(value, str) else num(value, digits), unit_text(unit)]
             for label, value, unit in entries
         ]
-        return Table([head, *rows], **kw)
+        return Table([head, *rows] if kw.get("header", True) else rows, **kw)
 
     @staticmethod
     def of_specs(
