@@ -78,6 +78,8 @@ def test_a_display_unit_is_checked_against_the_si_unit() -> None:
     assert to_display(0.0025, "m", "mm") == 2.5
     assert to_display(37600.0, "N", "kN") == 37.6
     assert to_display(2.0, "m", "") == 2.0
+    with language("ru"):  # an integer in another unit is converted too
+        assert Table.of_specs(RESULTS[:1], {"F_max": 1500}).rows[1] == ["F_{max}", "1,5", "кН"]
     with pytest.raises(ValueError, match="cannot write a quantity in 'N' in 'mm'"):
         ResultSpec("F", "N", "force", display="mm")
     with pytest.raises(ValueError, match="F"):

@@ -500,7 +500,7 @@ class Table(View):
             shown = s.display or s.unit
             if isinstance(x, str):
                 text, unit = x, ""
-            elif isinstance(x, int) and not isinstance(x, bool):
+            elif isinstance(x, int) and not isinstance(x, bool) and shown == s.unit:
                 text, unit = str(x), unit_text(shown)
             else:
                 y = to_display(float(x), s.unit, shown)
