@@ -23,6 +23,7 @@ import numpy as np
 from geomcad import tol
 from geomcad.geom import Arc, Circle, Vec
 from geomcad.kinematics.cams import CamProfile, evert
+from geomcad.problem import ResultSpec
 from geomcad.sheet import Scale, Sheet, TitleBlock, Viewport, fmt_number, start
 from geomcad.sheet import views as V
 from geomcad.sheet.compose import (
@@ -42,7 +43,7 @@ from geomcad.sheet.graph import Graph
 from geomcad.sheet.lang import Words, current, per_language
 from geomcad.sheet.text import wrap
 
-from .spec_2013_2 import PARAMS
+from .spec_2013_2 import PARAMS, RESULTS
 
 if TYPE_CHECKING:
     from geomcad.construction.recorder import Step
@@ -485,22 +486,23 @@ def _tables(sol: Solution[Geometry]) -> list[V.Table]:
         [by[n] for n in names], shown, labels=labels, style="value", pairs=4, header=False,
         height=3.5, row_h=7.0, title=WORDS("data_title"), title_height=5.0,
     )  # fmt: skip
-    rows = [[WORDS(f"h_{q}") for q in ("i", "phi", "S", "S1", "r")]]
-    n = len(r["phi"])
-    for i in _rows(n):
-        rows.append(
-            [
-                str(i),
-                _n(math.degrees(float(r["phi"][i]))),
-                _n(_clean(float(r["S"][i]), geo.program.H) * MM),
-                _n(_clean(float(geo.divisions.S1[i]), geo.program.H) * MM),
-                _n(float(r["r"][i]) * MM),
-            ]
-        )
-    rows.append(["a", "", "", "", _n(float(r["a"]) * MM)])
+    spec = {s.name: s for s in RESULTS}
+    s1 = ResultSpec("S1", "m", "S′ at the division points", symbol="S'_i", display="mm")
+    idx = _rows(len(r["phi"]))
+    H = geo.program.H
+    table = V.Table.of_series(
+        [
+            (spec["phi"], [float(r["phi"][i]) for i in idx]),
+            (spec["S"], [_clean(float(r["S"][i]), H) for i in idx]),
+            (s1, [_clean(float(geo.divisions.S1[i]), H) for i in idx]),
+            (spec["r"], [float(r["r"][i]) for i in idx]),
+        ],
+        index=("i", [str(i) for i in idx]),
+    )
+    a = V.Table.of_specs([spec["a"]], r, style="label", header=False).rows[0]
     results = V.Table(
-        rows, widths=(24.0, 64.0, 64.0, 64.0, 64.0), height=3.5, row_h=6.5,
-        title=WORDS("results_title"), title_height=5.0,
+        [*table.rows, [a[0], "", "", "", a[1]]], widths=(24.0, 64.0, 64.0, 64.0, 64.0),
+        height=3.5, row_h=6.5, title=WORDS("results_title"), title_height=5.0,
     )  # fmt: skip
     return [data, results]
 

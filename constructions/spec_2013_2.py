@@ -67,10 +67,24 @@ PARAMS = (
 )
 
 RESULTS = (
-    ResultSpec("phi", "rad", "cam angles φ_i of the division points"),
-    ResultSpec("S", "m", "follower displacement S_i at the division points", "l"),
-    ResultSpec("r", "m", "radius vectors r_i of the profile at the division points", "l"),
-    ResultSpec("a", "m", "H/φ_rise (= S′ of the linear law)", "l"),
+    ResultSpec("phi", "rad", "cam angles φ_i of the division points", symbol="φ_i", display="deg"),
+    ResultSpec(
+        "S",
+        "m",
+        "follower displacement S_i at the division points",
+        "l",
+        symbol="S_i",
+        display="mm",
+    ),
+    ResultSpec(
+        "r",
+        "m",
+        "radius vectors r_i of the profile at the division points",
+        "l",
+        symbol="r_i",
+        display="mm",
+    ),
+    ResultSpec("a", "m", "H/φ_rise (= S′ of the linear law)", "l", display="mm"),
     ResultSpec("pressure_angle_max_deg", "deg", "largest pressure angle along the profile"),
     ResultSpec("rho_min", "m", "smallest radius of curvature of the profile", "l"),
     ResultSpec("profile", "m", "profile points [x, y] in the cam's frame"),

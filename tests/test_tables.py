@@ -101,3 +101,11 @@ def test_every_spec_has_a_unit_the_tables_write(pid: str) -> None:
             continue
         for lang in ("ru", "en"):
             assert f"unit.{unit}" in WORDS.table(lang), (pid, spec.name, unit)
+
+
+def test_a_series_table_heads_each_column_with_its_symbol_and_display_unit() -> None:
+    phi = ResultSpec("phi", "rad", "angles", symbol="φ_i", display="deg")
+    S = ResultSpec("S", "m", "displacements", symbol="S_i", display="mm")
+    with language("ru"):
+        t = Table.of_series([(phi, [0.0, 0.3926990817]), (S, [0.0, 0.005])], index=("i", "01"))
+    assert t.rows == [["i", "φ_i, °", "S_i, мм"], ["0", "0", "0"], ["1", "22,5", "5"]]

@@ -541,6 +541,30 @@ class Table(View):
             rows = [list(col) for col in zip(*entries, strict=True)]
         return Table(rows, **kw)
 
+    @staticmethod
+    def of_series(
+        columns: Sequence[tuple[Spec, Sequence[float]]],
+        index: tuple[str, Sequence[str]] | None = None,
+        digits: int | None = None,
+        **kw: Any,
+    ) -> Table:
+        """A table of series (values at the division points, the positions …): a column per
+        ``(spec, values)``, headed "symbol, unit" (its display unit), each value in that unit to
+        the spec's ``digits`` (or ``digits``); ``index = (heading, cells)`` is a first column."""
+        head = [index[0]] if index else []
+        cells: list[list[str]] = [list(index[1])] if index else []
+        for spec, values in columns:
+            shown = spec.display or spec.unit
+            unit = unit_text(shown)
+            label = spec.symbol or name_markup(spec.name)
+            head.append(f"{label}, {unit}" if unit else label)
+            cells.append(
+                [num(to_display(float(v), spec.unit, shown), digits or spec.digits) for v in values]
+            )
+        n = max((len(c) for c in cells), default=0)
+        rows = [head] + [[c[i] if i < len(c) else "" for c in cells] for i in range(n)]
+        return Table(rows, **kw)
+
 
 #: How :meth:`Table.of_specs` sets a value and its unit.
 TableStyle = Literal["column", "value", "label", "equation"]
