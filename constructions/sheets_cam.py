@@ -33,9 +33,8 @@ from geomcad.sheet.text import box as text_box
 from geomcad.sheet.text import parse
 from geomcad.sheet.views import AxisSpec, Curve, Diagram, Steps, Table, Text
 
-from .file_common import sheet_formats
-
 from .file_cam import RESULTS
+from .file_common import sheet_formats
 
 if TYPE_CHECKING:
     from geomcad.problem import Solution
