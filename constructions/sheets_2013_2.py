@@ -462,6 +462,10 @@ def _clean(x: float, size: float) -> float:
     return 0.0 if abs(x) <= tol.DERIVED * size else x
 
 
+#: The columns of the results table (mm); the data table above it is as wide.
+RESULTS_W = (24.0, 64.0, 64.0, 64.0, 64.0)
+
+
 def _tables(sol: Solution[Geometry]) -> list[V.Table]:
     """The given data and the results at the division points."""
     p, r, geo = sol.params, sol.results, sol.data
@@ -484,7 +488,7 @@ def _tables(sol: Solution[Geometry]) -> list[V.Table]:
     )}  # fmt: skip
     data = V.Table.of_specs(
         [by[n] for n in names], shown, labels=labels, style="value", pairs=4, header=False,
-        height=3.5, row_h=7.0, title=WORDS("data_title"), title_height=5.0,
+        height=3.5, row_h=6.0, fill=sum(RESULTS_W), title=WORDS("data_title"), title_height=5.0,
     )  # fmt: skip
     spec = {s.name: s for s in RESULTS}
     s1 = ResultSpec("S1", "m", "S′ at the division points", symbol="S'_i", display="mm")
@@ -501,7 +505,7 @@ def _tables(sol: Solution[Geometry]) -> list[V.Table]:
     )
     a = V.Table.of_specs([spec["a"]], r, style="label", header=False).rows[0]
     results = V.Table(
-        [*table.rows, [a[0], "", "", "", a[1]]], widths=(24.0, 64.0, 64.0, 64.0, 64.0),
+        [*table.rows, [a[0], "", "", "", a[1]]], widths=RESULTS_W,
         height=3.5, row_h=6.5, title=WORDS("results_title"), title_height=5.0,
     )  # fmt: skip
     return [data, results]

@@ -406,7 +406,8 @@ CELL_PAD = 1.2
 
 class Table(View):
     """A ruled table of ``rows`` of label markup (the first the header unless ``header`` is
-    False), its columns as wide as their widest text (or ``widths``)."""
+    False), its columns as wide as their widest text (or ``widths``), widened in proportion
+    to ``fill`` mm in all when that is wider (a table as wide as the one under it)."""
 
     def __init__(
         self,
@@ -415,6 +416,7 @@ class Table(View):
         header: bool = True,
         height: float = 2.5,
         row_h: float = 6.0,
+        fill: float = 0.0,
         **kw: Any,
     ) -> None:
         kw.setdefault("margin", 1.0)
@@ -431,7 +433,8 @@ class Table(View):
                 + 1.0
                 for i in range(n)
             ]
-        self.widths = list(widths)
+        total = sum(widths)
+        self.widths = [w * fill / total for w in widths] if 0.0 < total < fill else list(widths)
 
     def natural(self) -> tuple[float, float] | None:
         return sum(self.widths), self.row_h * len(self.rows)
