@@ -109,3 +109,10 @@ def test_a_series_table_heads_each_column_with_its_symbol_and_display_unit() -> 
     with language("ru"):
         t = Table.of_series([(phi, [0.0, 0.3926990817]), (S, [0.0, 0.005])], index=("i", "01"))
     assert t.rows == [["i", "φ_i, °", "S_i, мм"], ["0", "0", "0"], ["1", "22,5", "5"]]
+
+
+def test_a_table_filled_to_a_width_keeps_its_columns_in_proportion() -> None:
+    narrow = Table([["a", "bb"], ["1", "22"]])
+    wide = Table([["a", "bb"], ["1", "22"]], fill=3.0 * sum(narrow.widths))
+    assert wide.widths == pytest.approx([3.0 * w for w in narrow.widths])
+    assert Table([["a", "bb"]], fill=1.0).widths == narrow.widths  # never narrower
