@@ -56,19 +56,24 @@ ROLLER_R0 = 0.4
 STEP_R0 = "r0 = r0_min rounded up (or the file's r0)"
 STEP_ROLLER = "r_roller from the pitch curve's smallest radius of curvature"
 
+#: A radius on the sheet: in mm, to 0.01 mm or so (5 significant figures).
+_MM: dict[str, Any] = {"display": "mm", "digits": 5}
+
 RESULTS = (
-    ResultSpec("r0_min", "m", "least radius of the theoretical profile's base circle", "l"),
-    ResultSpec("r0", "m", "the chosen base radius (r0_min rounded up)", "l"),
-    ResultSpec("e", "m", "offset of the follower's axis from O (translating)", "l"),
-    ResultSpec("a_w", "m", "distance from the cam's centre to the rocker's pivot", "l"),
+    ResultSpec("r0_min", "m", "least radius of the theoretical profile's base circle", "l", **_MM),
+    ResultSpec("r0", "m", "the chosen base radius (r0_min rounded up)", "l", **_MM),
+    ResultSpec("e", "m", "offset of the follower's axis from O (translating)", "l", **_MM),
+    ResultSpec("a_w", "m", "distance from the cam's centre to the rocker's pivot", "l", **_MM),
     ResultSpec("pressure_angle_allowed_deg", "deg", "allowed pressure angle on the rise"),
     ResultSpec("return_pressure_angle_allowed_deg", "deg", "allowed pressure angle on the return"),
     ResultSpec("pressure_angle_max_deg", "deg", "largest pressure angle of the built cam"),
     ResultSpec("pressure_angle_max_rise_deg", "deg", "largest pressure angle on the rise"),
     ResultSpec("pressure_angle_max_return_deg", "deg", "largest pressure angle on the return"),
-    ResultSpec("rho_min", "m", "smallest radius of curvature of the working profile", "l"),
-    ResultSpec("rho_pitch_min", "m", "smallest convex radius of curvature of the pitch curve", "l"),
-    ResultSpec("r_roller", "m", "roller radius", "l"),
+    ResultSpec("rho_min", "m", "smallest radius of curvature of the working profile", "l", **_MM),
+    ResultSpec(
+        "rho_pitch_min", "m", "smallest convex radius of curvature of the pitch curve", "l", **_MM
+    ),
+    ResultSpec("r_roller", "m", "roller radius", "l", **_MM),
     ResultSpec("H", "m", "stroke (translating)", "l"),
     ResultSpec("swing_deg", "deg", "swing of the rocker"),
 )

@@ -27,17 +27,20 @@ from .file_common import Table, check_top
 
 KIND = "gears"
 
+#: A length on the sheet: in mm, to 5 significant figures.
+_MM: dict[str, Any] = {"display": "mm", "digits": 5}
+
 RESULTS = (
     ResultSpec("z1", "1", "teeth of the pinion"),
     ResultSpec("z2", "1", "teeth of the wheel"),
     ResultSpec("m", "m", "module"),
     ResultSpec("x1", "1", "shift coefficient of the pinion"),
     ResultSpec("x2", "1", "shift coefficient of the wheel"),
-    ResultSpec("a", "m", "standard centre distance m(z1 + z2)/2", "l"),
-    ResultSpec("a_w", "m", "centre distance", "l"),
-    ResultSpec("alpha_w_deg", "deg", "pressure angle of the mesh"),
+    ResultSpec("a", "m", "standard centre distance m(z1 + z2)/2", "l", **_MM),
+    ResultSpec("a_w", "m", "centre distance", "l", **_MM),
+    ResultSpec("alpha_w_deg", "deg", "pressure angle of the mesh", digits=5),
     ResultSpec("y", "1", "centre-distance coefficient"),
-    ResultSpec("delta_y", "1", "equalising shift Δy"),
+    ResultSpec("delta_y", "1", "equalising shift Δy", symbol="Δy"),
     ResultSpec("d1", "m", "pitch diameter of the pinion", "l"),
     ResultSpec("d2", "m", "pitch diameter of the wheel", "l"),
     ResultSpec("d_b1", "m", "base diameter of the pinion", "l"),

@@ -23,6 +23,7 @@ import numpy as np
 from geomcad import tol
 from geomcad.geom import Arc, Circle, Vec
 from geomcad.kinematics.cams import CamProfile, evert
+from geomcad.problem import ResultSpec
 from geomcad.sheet import Scale, Sheet, TitleBlock, Viewport, fmt_number, start
 from geomcad.sheet import views as V
 from geomcad.sheet.compose import (
@@ -41,6 +42,8 @@ from geomcad.sheet.drawing import ARROW_LEN, SHORT_MM
 from geomcad.sheet.graph import Graph
 from geomcad.sheet.lang import Words, current, per_language
 from geomcad.sheet.text import wrap
+
+from .spec_2013_2 import PARAMS, RESULTS
 
 if TYPE_CHECKING:
     from geomcad.construction.recorder import Step
@@ -459,44 +462,51 @@ def _clean(x: float, size: float) -> float:
     return 0.0 if abs(x) <= tol.DERIVED * size else x
 
 
+#: The columns of the results table (mm); the data table above it is as wide.
+RESULTS_W = (24.0, 64.0, 64.0, 64.0, 64.0)
+
+
 def _tables(sol: Solution[Geometry]) -> list[V.Table]:
     """The given data and the results at the division points."""
     p, r, geo = sol.params, sol.results, sol.data
     law = str(p["law"])
-    mm = WORDS("mm")
-    rise, dwell, ret = (_n(float(p[n])) for n in ("phi_rise_deg", "phi_dwell_deg",
-                                                  "phi_return_deg"))  # fmt: skip
     step_deg = _n(math.degrees(geo.span) / int(p["n_div"]), 3)
-    e_mm, rr_mm = (_n(float(p[n]) * MM) for n in ("e", "r_roller"))
-    rows = [
-        [WORDS("c_H"), f"{_n(float(p['H']) * MM)} {mm}", WORDS("c_rise"), f"{rise}°",
-         WORDS("c_law"), WORDS(f"short_{law}")],
-        [WORDS("c_r0"), f"{_n(float(p['r0']) * MM)} {mm}", WORDS("c_dwell_ret"),
-         f"{dwell}° / {ret}°", WORDS("c_follower"), WORDS(f"f_{p['follower']}")],
-        [WORDS("c_intervals"), f"{p['n_div']} × {step_deg}°", WORDS("c_omega"),
-         WORDS("ccw" if int(p["omega_sign"]) > 0 else "cw"), WORDS("c_offsets"),
-         f"{e_mm} / {rr_mm} {mm}"],
-    ]  # fmt: skip
-    data = V.Table(
-        rows, widths=(34.0, 43.0, 34.0, 62.0, 45.0, 62.0), height=3.5, row_h=6.0, header=False,
-        title=WORDS("data_title"), title_height=5.0,
+    shown = {
+        **p,
+        "law": WORDS(f"short_{law}"),
+        "follower": WORDS(f"f_{p['follower']}"),
+        "omega_sign": WORDS("ccw" if int(p["omega_sign"]) > 0 else "cw"),
+        "n_div": f"{p['n_div']} × {step_deg}°",
+    }
+    by = {s.name: s for s in PARAMS}
+    names = ("H", "r0", "n_div", "phi_rise_deg", "phi_dwell_deg", "phi_return_deg", "law",
+             "follower", "omega_sign", "e", "r_roller")  # fmt: skip
+    labels = {n: WORDS(k) for n, k in (
+        ("r0", "c_r0"), ("n_div", "c_intervals"), ("phi_rise_deg", "c_rise"),
+        ("phi_dwell_deg", "c_dwell"), ("phi_return_deg", "c_return"), ("law", "c_law"),
+        ("follower", "c_follower"), ("r_roller", "c_roller"),
+    )}  # fmt: skip
+    data = V.Table.of_specs(
+        [by[n] for n in names], shown, labels=labels, style="value", pairs=4, header=False,
+        height=3.5, row_h=6.0, fill=sum(RESULTS_W), title=WORDS("data_title"), title_height=5.0,
     )  # fmt: skip
-    rows = [[WORDS(f"h_{q}") for q in ("i", "phi", "S", "S1", "r")]]
-    n = len(r["phi"])
-    for i in _rows(n):
-        rows.append(
-            [
-                str(i),
-                _n(math.degrees(float(r["phi"][i]))),
-                _n(_clean(float(r["S"][i]), geo.program.H) * MM),
-                _n(_clean(float(geo.divisions.S1[i]), geo.program.H) * MM),
-                _n(float(r["r"][i]) * MM),
-            ]
-        )
-    rows.append(["a", "", "", "", _n(float(r["a"]) * MM)])
+    spec = {s.name: s for s in RESULTS}
+    s1 = ResultSpec("S1", "m", "S′ at the division points", symbol="S'_i", display="mm")
+    idx = _rows(len(r["phi"]))
+    H = geo.program.H
+    table = V.Table.of_series(
+        [
+            (spec["phi"], [float(r["phi"][i]) for i in idx]),
+            (spec["S"], [_clean(float(r["S"][i]), H) for i in idx]),
+            (s1, [_clean(float(geo.divisions.S1[i]), H) for i in idx]),
+            (spec["r"], [float(r["r"][i]) for i in idx]),
+        ],
+        index=("i", [str(i) for i in idx]),
+    )
+    a = V.Table.of_specs([spec["a"]], r, style="label", header=False).rows[0]
     results = V.Table(
-        rows, widths=(24.0, 64.0, 64.0, 64.0, 64.0), height=3.5, row_h=6.5,
-        title=WORDS("results_title"), title_height=5.0,
+        [*table.rows, [a[0], "", "", "", a[1]]], widths=RESULTS_W,
+        height=3.5, row_h=6.5, title=WORDS("results_title"), title_height=5.0,
     )  # fmt: skip
     return [data, results]
 

@@ -30,6 +30,8 @@ from geomcad.sheet.drawing import SLIDER_SIZE
 from geomcad.sheet.lang import Words, current, per_language
 from geomcad.sheet.model import Polyline
 
+from .spec_2013_3 import PARAMS, RESULTS
+
 if TYPE_CHECKING:
     from geomcad.construction import Construction
     from geomcad.problem import Solution
@@ -178,34 +180,18 @@ def _block(v: Viewport, q: Vec, along: Vec) -> None:
 
 def _results(sol: Solution[Geometry], kv: Scale | None) -> V.Table:
     """The results with their lengths on the plan (velocities) at ``kv``."""
-    r = sol.results
-    rows = [[WORDS("h_quantity"), WORDS("h_value"), WORDS("h_on_plan")]]
-    for name, label, unit in (
-        ("V_B3", "V_{B3}", "u_ms"),
-        ("V_B3B2", "V_{B3B2}", "u_ms"),
-        ("omega3", "ω_3", "u_rads"),
-        ("V_C3", "V_{C3}", "u_ms"),
-        ("omega5", "ω_5", "u_rads"),
-        ("V_C5", "V_{C5}", "u_ms"),
-        ("V_C4", "V_{C4}", "u_ms"),
-        ("F_red", WORDS("F_red"), "u_n"),
-    ):
-        exact = float(r[name])
-        on_plan = _n(kv.mm(exact), 3) if unit == "u_ms" and kv is not None else ""
-        rows.append([label, f"{_n(exact)} {WORDS(unit)}", on_plan])
-    return V.Table(rows, widths=(30.0, 40.0, 36.0), row_h=5.5, title=WORDS("results_title"))
+
+    def on_plan(spec: V.Spec, x: object) -> str:
+        if kv is None or spec.unit != "m/s" or not isinstance(x, int | float):
+            return ""
+        return _n(kv.mm(float(x)), 3)
+
+    return V.Table.of_specs(
+        RESULTS, sol.results, labels={"F_red": WORDS("F_red")}, style="value",
+        extra=(WORDS("h_on_plan"), on_plan), row_h=5.5, title=WORDS("results_title"),
+    )  # fmt: skip
 
 
 def _data(sol: Solution[Geometry]) -> V.Table:
-    p = sol.params
-    rows = [[WORDS("h_param"), WORDS("h_value")]]
-    for name, label, unit in (
-        ("v_A", "v_A", "u_ms"),
-        ("l_AB", "l_{AB}", "u_m"),
-        ("l_O1O2", "l_{O1O2}", "u_m"),
-        ("alpha_deg", "α", ""),
-        ("M", "M", "u_nm"),
-    ):
-        value = _n(float(p[name]), 6)
-        rows.append([label, f"{value} {WORDS(unit)}" if unit else f"{value}°"])
-    return V.Table(rows, widths=(22.0, 30.0), row_h=5.5, title=WORDS("data_title"))
+    return V.Table.of_specs(PARAMS, sol.params, style="value",
+                            row_h=5.5, title=WORDS("data_title"))  # fmt: skip

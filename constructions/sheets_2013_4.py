@@ -40,6 +40,8 @@ from geomcad.sheet.lang import Words, current, per_language
 from geomcad.sheet.text import SUB_DROP, SUB_SCALE, SUP_RISE, metrics, run_size
 from geomcad.sheet.text import width as text_width
 
+from .spec_2013_4 import PARAMS, RESULTS
+
 if TYPE_CHECKING:
     from geomcad.construction import Construction
     from geomcad.problem import Solution
@@ -357,32 +359,14 @@ def _tables(sol: Solution[Geometry]) -> tuple[V.Table, V.Table, V.Table]:
     p, r, geo = sol.params, sol.results, sol.data
     gear: SpurGear = geo.gear
     mm = WORDS("mm")
-    rows = [[WORDS("h_param"), WORDS("h_value")]]
-    for label, text in (
-        ("m", f"{_num(float(p['m']) * MM)} {mm}"),
-        ("α", f"{_num(float(p['alpha_deg']))}°"),
-        ("z", str(p["z"])),
-        ("d_a", f"{_num(float(p['d_a']) * MM)} {mm}"),
-        (WORDS("chord"), f"{_num(float(p['s_chord']) * MM)} {mm}"),
-        (WORDS("height"), f"{_num(float(p['h_chord']) * MM)} {mm}"),
-    ):
-        rows.append([label, text])
-    data = V.Table(rows, widths=(30.0, 24.0), row_h=ROW_H, title=WORDS("data_title"))
-    rows = [[WORDS("h_quantity"), WORDS("h_value")]]
-    for name, label, scale in (
-        ("d", f"d, {mm}", MM),
-        ("d_b", f"d_b, {mm}", MM),
-        ("d_y", f"d_y, {mm}", MM),
-        ("psi_y", f"ψ_y, {WORDS('rad')}", 1.0),
-        ("alpha_y_deg", "α_y, °", 1.0),
-        ("s", f"s, {mm}", MM),
-        ("x", "x", 1.0),
-    ):
-        exact = float(r[name]) * scale
-        if name == "x" and abs(exact) < tol.DERIVED:
-            exact = 0.0  # a shift of 10^-16 is no shift
-        rows.append([label, _num(exact, digits=4)])
-    results = V.Table(rows, widths=(24.0, 22.0), row_h=ROW_H, title=WORDS("results_title"))
+    data = V.Table.of_specs(
+        PARAMS, p, labels={"s_chord": WORDS("chord"), "h_chord": WORDS("height")},
+        style="value", row_h=ROW_H, title=WORDS("data_title"),
+    )  # fmt: skip
+    x = float(r["x"])
+    shown = {**r, "x": 0.0 if abs(x) < tol.DERIVED else x}  # a shift of 10^-16 is no shift
+    results = V.Table.of_specs(RESULTS, shown, style="value", row_h=ROW_H,
+                               title=WORDS("results_title"))  # fmt: skip
     k_span = geo.k_span
     rows = [[WORDS("h_quantity"), WORDS("h_value")]]
     for label, value in (

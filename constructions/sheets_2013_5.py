@@ -65,6 +65,7 @@ from geomcad.sheet.text import box as text_box
 from geomcad.sheet.text import parse
 
 from .p2013_5 import BLOCK25, FRAME, H1, H2, PLANET, SUN
+from .spec_2013_5 import PARAMS, RESULTS
 
 #: Sizes (mm): the gap between the scheme and the plan; the room kept for labels left of the
 #: scheme, right of the plan, under them (the axis' name and the note) and over them (the
@@ -511,40 +512,18 @@ def _panel(sol: Solution[Geometry], rays: RayPlan, k_v: float) -> list[View]:
     """The data, the results (Willis), the angular velocities three ways, the order of
     construction."""
     p, r, geo = sol.params, sol.results, sol.data
-    rows = [["z_1", "z_2", "z_3", "z_4", "z_5", "z_6", "z_7", WORDS("m_mm")]]
-    derived = {n: n not in p for n in ("z4", "z7")}
-    rows.append(
-        [
-            str(p["z1"]),
-            str(p["z2"]),
-            str(p["z3"]),
-            str(r["z4"]) + ("*" if derived["z4"] else ""),
-            str(p["z5"]),
-            str(p["z6"]),
-            str(r["z7"]) + ("*" if derived["z7"] else ""),
-            num(float(p["m"]) * 1000.0),
-        ]
-    )
-    data = V.Table(rows, widths=(18.0,) * 7 + (24.0,), row_h=5.5, title=WORDS("data"))
+    by = {s.name: s for s in PARAMS}
+    given = {**p, **{n: str(r[n]) + ("*" if n not in p else "") for n in ("z4", "z7")}}
+    data = V.Table.of_specs(
+        [by[n] for n in ("z1", "z2", "z3", "z4", "z5", "z6", "z7", "m")], given, style="label",
+        transpose=True, widths=(18.0,) * 7 + (24.0,), row_h=5.5, title=WORDS("data"),
+    )  # fmt: skip
     coaxial = V.Text(lines=[WORDS("coaxial")])
-    rows = [[WORDS("quantity"), WORDS("value")]]
     top, den = r["u1H2_fraction"]
-    for name, label in (
-        ("W", "W"),
-        ("z4", "z_4"),
-        ("z7", "z_7"),
-        ("u12", "u_{12}"),
-        ("u5H1_7", "u_{5H1}^{(7)}"),
-        ("u43", "u_{43}"),
-        ("u13_H2", "u_{13}^{(H2)}"),
-        ("u1H2", "u_{1H2}"),
-    ):
-        exact = r[name]
-        text = str(exact) if isinstance(exact, int) else num(float(exact), digits=4)
-        if name == "u1H2" and den != 1:
-            text = f"{top}/{den} = {text}"
-        rows.append([label, text])
-    results = V.Table(rows, widths=(36.0, 60.0), row_h=5.5, title=WORDS("results"))
+    u = num(float(r["u1H2"]), digits=4)
+    shown = {**r, "u1H2": f"{top}/{den} = {u}" if den != 1 else u}
+    results = V.Table.of_specs(RESULTS, shown, style="value", widths=(36.0, 60.0), row_h=5.5,
+                               title=WORDS("results"))  # fmt: skip
     rows = [[WORDS("link"), WORDS("by_meshes"), WORDS("by_slopes"), WORDS("by_rays")]]
     for link in (SUN, BLOCK25, PLANET, H1, H2):
         exact = geo.omega_exact[link]

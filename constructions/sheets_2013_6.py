@@ -48,7 +48,7 @@ from geomcad.sheet.text import parse
 from geomcad.sheet.views import Steps, Table, Text
 
 from .sheets_2013_6_kin import factor, kinematics_sheet, num, six_bar
-from .spec_2013_6 import SEED_K_L
+from .spec_2013_6 import PARAMS, RESULTS, SEED_K_L
 
 if TYPE_CHECKING:
     from geomcad.problem import Solution
@@ -390,32 +390,14 @@ def _panel(sol: Solution[Geometry], k: float) -> tuple[View | Node, ...]:
     p = sol.params
     r = sol.results
     m_ = WORDS("m")
-    rows = [[WORDS("param"), WORDS("value")]]
-    for name, label, unit in (
-        ("H", "H", m_),
-        ("K", "K", ""),
-        ("l3", "l_3", m_),
-        ("l4", "l_4", m_),
-        ("e", "e", m_),
-    ):
-        rows.append([label, f"{num(float(p[name]))} {unit}".strip()])
-    given = Table(rows, widths=(30.0, 36.0), title=WORDS("data"))
-    rows = [[WORDS("quantity"), WORDS("value")]]
-    for name, label, unit, scale in (
-        ("theta_deg", "θ", "°", 1.0),
-        ("O1B0", "O_1B_0", WORDS("mm") + "*", k),
-        ("O1B1", "O_1B_1", WORDS("mm") + "*", k),
-        ("l1", "l_1", m_, 1.0),
-        ("l2", "l_2", m_, 1.0),
-        ("H_check", WORDS("H_check"), m_, 1.0),
-        ("K_check", WORDS("K_check"), "", 1.0),
-    ):
-        exact = float(r[name]) / scale if scale else 0.0
-        # a degree sign follows its number without a space
-        rows.append(
-            [label, f"{num(exact, 4)}{unit}" if unit == "°" else f"{num(exact, 4)} {unit}".strip()]
-        )
-    results = Table(rows, widths=(30.0, 38.0), title=WORDS("results"))
+    given = Table.of_specs(PARAMS, p, style="value", widths=(30.0, 36.0), title=WORDS("data"))
+    shown = dict(r)
+    for name in ("O1B0", "O1B1"):  # lengths on the drawing, in mm at k
+        shown[name] = f"{num(float(r[name]) / k if k else 0.0, 4)} {WORDS('mm')}*"
+    results = Table.of_specs(
+        RESULTS, shown, labels={"H_check": WORDS("H_check"), "K_check": WORDS("K_check")},
+        style="value", widths=(30.0, 38.0), title=WORDS("results"),
+    )  # fmt: skip
     note = Text(lines=[WORDS("on_drawing", k=factor(Scale(k or 0.001, "l")))])
     rows = [["№", f"O_1 (x; y), {m_}", f"l_1, {m_}", f"l_2, {m_}", WORDS("crank")]]
     for i, s in enumerate(r["solutions"]):

@@ -43,6 +43,7 @@ from geomcad.sheet.compose import (
 from geomcad.sheet.lang import Words, current
 
 from .p2013_7 import Geometry
+from .spec_2013_7 import PARAMS, RESULTS
 
 if TYPE_CHECKING:
     from geomcad.construction.recorder import Step
@@ -385,30 +386,10 @@ def _u(key: str) -> str:
 
 def _given(sol: Solution[Geometry]) -> View:
     p = sol.params
-    given = [
-        ("m_2", _n(float(p["m2"]), 6), _u("kg")),
-        (WORDS("m_ball"), _n(float(p["m_ball"]), 6), _u("kg")),
-        ("f", _n(float(p["f"]), 6), ""),
-        ("d", _n(float(p["d"]), 6), _u("m")),
-        ("AB", _n(float(p["l_AB"]), 6), _u("m")),
-        ("GH", _n(float(p["l_GH"]), 6), _u("m")),
-        ("FH", _n(float(p["l_FH"]), 6), _u("m")),
-        ("DH", _n(float(p["l_DH"]), 6), _u("m")),
-        ("BF", _n(float(p["l_BF"]), 6), _u("m")),
-        ("θ", _n(float(p["theta_deg"]), 6), "°"),
-        ("g", _n(float(p["g"]), 6), _u("m_s2")),
-        (WORDS("mode"), WORDS("speeding_up" if int(p["direction"]) > 0 else "slowing_down"), ""),
-    ]
-    half = (len(given) + 1) // 2
-    rows = []
-    for i in range(half):
-        row: list[str] = []
-        for j in (i, i + half):
-            name, val, unit = given[j]
-            row += [name, _with_unit(val, unit)]
-        rows.append(row)
-    q, val = WORDS("q_short"), WORDS("value")
-    return V.Table([[q, val, q, val], *rows], title=WORDS("given"))
+    mode = WORDS("speeding_up" if int(p["direction"]) > 0 else "slowing_down")
+    labels = {"m_ball": WORDS("m_ball"), "direction": WORDS("mode")}
+    return V.Table.of_specs(PARAMS, {**p, "direction": mode}, labels=labels, style="value",
+                            pairs=2, title=WORDS("given"))  # fmt: skip
 
 
 def _compare(geo: Geometry) -> View:
@@ -426,21 +407,8 @@ def _compare(geo: Geometry) -> View:
 
 
 def _results(sol: Solution[Geometry]) -> View:
-    r = sol.results
-    rows = [[WORDS("quantity"), WORDS("value")]]
-    for name, label, unit in (
-        ("rho", "ρ", _u("m")),
-        ("alpha_deg", "α", "°"),
-        ("R32", "R_{32}", _u("N")),
-        ("P", "P", _u("N")),
-        ("beta_deg", "β", "°"),
-        ("F_i", f"F_i = {WORDS('Phi6')}", _u("N")),
-        ("r_D", "r_D", _u("m")),
-        ("omega", "ω", _u("rad_s")),
-        ("omega_no_friction", "ω (f = 0)", _u("rad_s")),
-    ):
-        rows.append([label, _with_unit(_n(float(r[name])), unit)])
-    return V.Table(rows, title=WORDS("results"))
+    return V.Table.of_specs(RESULTS, sol.results, labels={"F_i": f"F_i = {WORDS('Phi6')}"},
+                            style="value", title=WORDS("results"))  # fmt: skip
 
 
 #: The steps the order of construction lists, by name, in their recorded order: with friction,

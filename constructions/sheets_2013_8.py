@@ -26,6 +26,7 @@ from geomcad.sheet.model import CircleItem, Polyline
 from geomcad.sheet.views import AxisSpec, Curve, Diagram, Steps, Table, Text
 
 from .p2013_8 import Data
+from .spec_2013_8 import PARAMS, RESULTS
 
 if TYPE_CHECKING:
     from collections.abc import Mapping
@@ -162,28 +163,8 @@ def _energy_balance(data: Data) -> Diagram:
 def _panel(sol: Solution[Data]) -> tuple[Table, Table, Steps]:
     """The given data, the results and the solution step by step."""
     p, r = sol.params, sol.results
-    rows = [[WORDS("param"), WORDS("value")]]
-    for name, label, unit in (
-        ("d_hole", "d", WORDS("m")),
-        ("h_plate", "h", WORDS("m")),
-        ("tau", "τ", WORDS("Pa")),
-        ("n_rpm", "n", WORDS("rpm")),
-        ("delta", "δ", ""),
-        ("holes_per_s", "z", WORDS("holes_per_s")),
-    ):
-        rows.append([label, f"{f(float(p[name]))} {unit}".strip()])
-    given = Table(rows, widths=(30.0, 40.0), title=WORDS("data"))
-    rows = [[WORDS("quantity"), WORDS("value")]]
-    for name, label, unit, scale in (
-        ("F_max", "F_{max}", WORDS("kN"), KN),
-        ("E", "E", WORDS("J"), 1.0),
-        ("N", "N", WORDS("W"), 1.0),
-        ("omega_max", "ω_{max}", WORDS("rad_s"), 1.0),
-        ("omega_min", "ω_{min}", WORDS("rad_s"), 1.0),
-        ("J", "J", WORDS("kgm2"), 1.0),
-    ):
-        rows.append([label, f"{f(float(r[name]) / scale)} {unit}"])
-    results = Table(rows, widths=(30.0, 40.0), title=WORDS("results"))
+    given = Table.of_specs(PARAMS, p, style="value", title=WORDS("data"))
+    results = Table.of_specs(RESULTS, r, style="value", title=WORDS("results"))
     solution = Steps(sol.construction, SOLUTION_W, only=SOLUTION, words=WORDS,
                      title=WORDS("solution"))  # fmt: skip
     return given, results, solution

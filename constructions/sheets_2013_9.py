@@ -22,6 +22,7 @@ import numpy as np
 
 from geomcad import tol
 from geomcad.geom import Vec
+from geomcad.problem import ResultSpec
 from geomcad.sheet import Scale, Sheet, TitleBlock, Viewport, start
 from geomcad.sheet import views as V
 from geomcad.sheet.compose import (
@@ -44,6 +45,7 @@ from geomcad.sheet.text import wrap
 
 from .dyn_common import Where, draw_loads, f, load, short_note, small
 from .p2013_9 import ROD, Data
+from .spec_2013_9 import PARAMS, RESULTS
 
 if TYPE_CHECKING:
     from geomcad.problem import Solution
@@ -323,17 +325,9 @@ def _zero(x: float, scale: float) -> float:
 
 def _given(sol: Solution[Data]) -> View:
     """The given data as a table."""
-    p = sol.params
-    items = [
-        ("J", "J", "kgm2"), ("m", "m", "kg"), ("r", "r", "m"), ("c", "c", "N_m"),
-        ("k", "k", "Ns_m"), ("M0", "M_0", "Nm"), ("M1", "M_1", "Nm"), ("Omega", "Ω", "rad_s"),
-        ("t", "t", "s"), ("phi_deg", "φ", "deg"), ("phi_dot", "φ'", "rad_s"), ("T", "T", "s"),
-    ]  # fmt: skip
-    cells = [f"{lab} = {f(float(p[n]), 6)}{'' if u == 'deg' else ' '}{_unit(u)}"
-             for n, lab, u in items]  # fmt: skip
-    rows = [[WORDS("param"), "M(t) = M_0 + M_1·sin Ωt"]]
-    rows += [[cells[i], cells[i + 1]] for i in range(0, len(cells), 2)]
-    return V.Table(rows, widths=(73.0, 73.0), title=WORDS("given"))
+    head = [WORDS("param"), "M(t) = M_0 + M_1·sin Ωt"]
+    return V.Table.of_specs(PARAMS, sol.params, style="equation", pairs=2, head=head,
+                            widths=(73.0, 73.0), title=WORDS("given"))  # fmt: skip
 
 
 def _paragraphs(head: str, items: list[str], dash: bool = True) -> View:
@@ -347,26 +341,32 @@ def _paragraphs(head: str, items: list[str], dash: bool = True) -> View:
 def _panel_main(sol: Solution[Data], data: Data) -> Node:
     res = sol.results
     R = data.reactions
-    qty, val = WORDS("quantity"), WORDS("value")
-    rows = [[qty, val, qty, val]]
-    n, nm = _unit("N"), _unit("Nm")
-    pairs = [
-        (WORDS("J_pr"), f"{f(res['J_pr'], 4)} {_unit('kgm2')}"),
-        (WORDS("dJ_pr"), f"{f(res['dJ_pr'], 4)} {_unit('kgm2')}"),
-        (WORDS("M_pr"), f"{f(res['M_pr'], 4)} {nm}"),
-        ("φ''", f"{f(res['phi_ddot'], 4)} {_unit('rad_s2')}"),
-        ("R_{12} = R_{21}", f"{f(res['N_pin'], 4)} {n}"),
-        ("R_{01}", f"{f(R.force('R_{01}').norm, 4)} {n}"),
-        (f"{WORDS('F_spring')} = c|x|", f"{f(res['F_spring'], 4)} {n}"),
-        (f"{WORDS('F_damper')} = k|x'|", f"{f(res['F_damper'], 4)} {n}"),
-        (f"{WORDS('Phi2')} = m|x''|", f"{f(res['F_inertia_rod'], 4)} {n}"),
-        (f"{WORDS('M_in1')} = J|φ''|", f"{f(res['M_inertia_disc'], 4)} {nm}"),
-        ("M_{02}", f"{f(abs(R.moment('M_{02}')), 4)} {nm}"),
-        ("R_{02}", f"{f(_zero(R.magnitudes['R_{02}'], res['N_pin']), 3)} {n}"),
-    ]
-    for i in range(0, len(pairs), 2):
-        rows.append([pairs[i][0], pairs[i][1], pairs[i + 1][0], pairs[i + 1][1]])
-    results = V.Table(rows, widths=(29.0, 44.0, 29.0, 44.0), title=WORDS("results_state"))
+    nm = _unit("Nm")
+    # the reactions the problem does not report, read off its model, written like its results
+    read = (
+        ResultSpec("R_01", "N", "", symbol="R_{01}"),
+        ResultSpec("M_02", "N·m", "", symbol="M_{02}"),
+        ResultSpec("R_02", "N", "", symbol="R_{02}", digits=3),
+    )
+    values = {
+        **res,
+        "R_01": R.force("R_{01}").norm,
+        "M_02": abs(R.moment("M_{02}")),
+        "R_02": _zero(R.magnitudes["R_{02}"], res["N_pin"]),
+    }
+    by = {s.name: s for s in (*RESULTS, *read)}
+    order = ("J_pr", "dJ_pr", "M_pr", "phi_ddot", "N_pin", "R_01", "F_spring", "F_damper",
+             "F_inertia_rod", "M_inertia_disc", "M_02", "R_02")  # fmt: skip
+    labels = {
+        "J_pr": WORDS("J_pr"), "dJ_pr": WORDS("dJ_pr"), "M_pr": WORDS("M_pr"),
+        "N_pin": "R_{12} = R_{21}", "F_spring": f"{WORDS('F_spring')} = c|x|",
+        "F_damper": f"{WORDS('F_damper')} = k|x'|", "F_inertia_rod": f"{WORDS('Phi2')} = m|x''|",
+        "M_inertia_disc": f"{WORDS('M_in1')} = J|φ''|",
+    }  # fmt: skip
+    results = V.Table.of_specs(
+        [by[n] for n in order], values, labels=labels, style="value", pairs=2,
+        widths=(29.0, 44.0, 29.0, 44.0), title=WORDS("results_state"),
+    )  # fmt: skip
     eq = _paragraphs(WORDS("eq_head"), [WORDS(k) for k in ("eq_1", "eq_2", "eq_3", "eq_4")],
                      dash=False)  # fmt: skip
     mb = R.moment("M_b")

@@ -33,6 +33,7 @@ from geomcad.sheet.text import box as text_box
 from geomcad.sheet.text import parse
 from geomcad.sheet.views import AxisSpec, Curve, Diagram, Steps, Table, Text
 
+from .file_cam import RESULTS
 from .file_common import sheet_formats
 
 if TYPE_CHECKING:
@@ -472,21 +473,16 @@ def _tables(des: CamDesign, r: dict[str, Any]) -> tuple[Table, Table]:
     else:
         rows.append([WORDS("row_rho"), f"{fmt_number(spec.rho_allowed * MM, digits=4)} {u}"])
     data = Table(rows, header=False, title=WORDS("data_title"))
-    res = [[WORDS("h_quantity"), WORDS("h_value")]]
-
-    def mm(key: str, name: str) -> None:
-        if key in r:
-            res.append([WORDS(name), f"{fmt_number(float(r[key]) * MM, digits=5)} {u}"])
-
-    def dg(key: str, name: str) -> None:
-        if key in r:
-            res.append([WORDS(name), f"{fmt_number(float(r[key]), digits=4)}°"])
-
-    for key in ("r0_min", "r0", "e", "a_w", "r_roller", "rho_pitch_min", "rho_min"):
-        mm(key, key)
-    dg("pressure_angle_max_rise_deg", "alpha_rise")
-    dg("pressure_angle_max_return_deg", "alpha_return")
-    return data, Table(res, title=WORDS("results_title"))
+    names = ("r0_min", "r0", "e", "a_w", "r_roller", "rho_pitch_min", "rho_min",
+             "pressure_angle_max_rise_deg", "pressure_angle_max_return_deg")  # fmt: skip
+    by = {s.name: s for s in RESULTS}
+    labels = {n: WORDS(n) for n in names[:7]} | {
+        "pressure_angle_max_rise_deg": WORDS("alpha_rise"),
+        "pressure_angle_max_return_deg": WORDS("alpha_return"),
+    }
+    res = Table.of_specs([by[n] for n in names], r, labels=labels, style="value",
+                         title=WORDS("results_title"))  # fmt: skip
+    return data, res
 
 
 def _notes(des: CamDesign) -> Text:

@@ -26,6 +26,7 @@ from geomcad.construction import Construction
 from geomcad.geom import Arc, Circle, Vec
 from geomcad.kinematics import gear_design as gd
 from geomcad.kinematics.trains import PlanPoint, ray_plan, velocity_plan
+from geomcad.problem import ResultSpec
 from geomcad.sheet import (
     TitleBlock,
     Viewport,
@@ -326,17 +327,15 @@ def _pair_tables(p: gd.GearPair, me: gd.Meshing) -> tuple[Table, Table]:
         ["|λ|_{max}", fmt_number(p.lambda1, digits=4), fmt_number(p.lambda2, digits=4)],
     ]
     sizes = Table(rows, widths=(30.0, 40.0, 40.0), title=WORDS("sizes_title", m=mm(p.m)))
-    rows2 = [
-        [f"a, {u}", mm(p.a)],
-        [f"a_w, {u}", mm(p.a_w)],
-        ["α_w", f"{fmt_number(math.degrees(p.alpha_w), digits=5)}°"],
-        ["y", fmt_number(p.y, digits=4)],
-        ["Δy", fmt_number(p.dy, digits=4)],
-        [WORDS("eps_exact"), fmt_number(p.eps_alpha, digits=4)],
-        [WORDS("eps_drawn"), fmt_number(me.eps_drawn, digits=4)],
-        [f"p_b, {u}", mm(p.p_b)],
-    ]
-    return sizes, Table(rows2, header=False)
+    from .file_gears import RESULTS
+
+    p_b = ResultSpec("p_b", "m", "base pitch", display="mm", digits=5)
+    values = {"a": p.a, "a_w": p.a_w, "alpha_w_deg": math.degrees(p.alpha_w), "y": p.y,
+              "delta_y": p.dy, "eps_alpha": p.eps_alpha, "eps_alpha_drawn": me.eps_drawn,
+              "p_b": p.p_b}  # fmt: skip
+    labels = {"eps_alpha": WORDS("eps_exact"), "eps_alpha_drawn": WORDS("eps_drawn")}
+    specs = [*(s for s in RESULTS if s.name in values), p_b]
+    return sizes, Table.of_specs(specs, values, labels=labels, style="label", header=False)
 
 
 # -- the planetary train ---------------------------------------------------------------------------

@@ -49,7 +49,7 @@ from geomcad.sheet.text import wrap
 
 from .dyn_common import Where, draw_loads, f, load, mu, short_note, small
 from .p_kulisa import Data, mechanism, sweep, turns
-from .spec_kulisa import PROBLEM
+from .spec_kulisa import PARAMS, PROBLEM, RESULTS
 
 if TYPE_CHECKING:
     from geomcad.problem import Solution
@@ -368,25 +368,17 @@ def _notes(items: list[str], width: float = 0.0, dash: bool = False) -> View:
     return V.Text(lines=lines, width=width)
 
 
-def _results_rows(sol: Solution[Data], names: tuple[tuple[str, str, str], ...]) -> list[list[str]]:
-    rows = [[WORDS("quantity"), WORDS("value")]]
-    for name, label, unit in names:
-        rows.append([label, f"{f(float(sol.results[name]), 4)} {_u(unit) if unit else ''}".strip()])
-    return rows
+def _results(sol: Solution[Data], names: tuple[str, ...], **kw: Any) -> V.Table:
+    """The results ``names`` as a table "quantity | value"."""
+    by = {s.name: s for s in RESULTS}
+    labels = {"I_pr": WORDS("I_pr"), "dI_pr": WORDS("dI_pr"), "omega_ode": WORDS("omega_ode")}
+    return V.Table.of_specs([by[n] for n in names], sol.results, labels=labels, style="value", **kw)
 
 
 def _given(sol: Solution[Data]) -> View:
-    p = _p(sol)
-    items = [
-        ("m1", "m_1", "kg"), ("R1", "R_1", "m"), ("OA", "OA", "m"), ("m2", "m_2", "kg"),
-        ("m3", "m_3", "kg"), ("R3", "R_3", "m"), ("r3", "r_3", "m"), ("rho3", "ρ_3", "m"),
-        ("M", "M", "Nm"), ("phi_deg", "φ", "deg"), ("phi0_deg", "φ_0", "deg"),
-    ]  # fmt: skip
-    cells = [f"{lab} = {f(p[n], 6)}{'' if u == 'deg' else ' '}{_u(u)}" for n, lab, u in items]
-    cells.append("")
     par = WORDS("param")
-    rows = [[par, par]] + [[cells[i], cells[i + 1]] for i in range(0, 12, 2)]
-    return V.Table(rows, widths=(59.0, 59.0), title=WORDS("given"))
+    return V.Table.of_specs(PARAMS, sol.params, style="equation", pairs=2, head=[par, par],
+                            widths=(59.0, 59.0), title=WORDS("given"))  # fmt: skip
 
 
 def _panel_main(sol: Solution[Data], data: Data, short: bool) -> tuple[Node, View]:
@@ -401,23 +393,10 @@ def _panel_main(sol: Solution[Data], data: Data, short: bool) -> tuple[Node, Vie
         ["V_{C3}", f"{f(vc.norm, 4)} {ms}", "ω_3", f"{f(abs(w3), 4)} {_u('rad_s')}"],
     ]
     vel = V.Table(rows, widths=(20.0, 39.0, 20.0, 39.0), title=WORDS("velocities_head"))
-    res = V.Table(
-        _results_rows(
-            sol,
-            (
-                ("I_pr_A", "A", "kgm2"),
-                ("I_pr_B", "B", "kgm2"),
-                ("I_pr", WORDS("I_pr"), "kgm2"),
-                ("dI_pr", WORDS("dI_pr"), "kgm2"),
-                ("omega1", "ω_1", "rad_s"),
-                ("eps1", "ε_1", "rad_s2"),
-                ("t_reach", "t(φ)", "s"),
-                ("omega_ode", WORDS("omega_ode"), "rad_s"),
-            ),
-        ),
-        widths=(40.0, 78.0),
-        title=WORDS("results_head"),
-    )
+    res = _results(
+        sol, ("I_pr_A", "I_pr_B", "I_pr", "dI_pr", "omega1", "eps1", "t_reach", "omega_ode"),
+        widths=(40.0, 78.0), title=WORDS("results_head"),
+    )  # fmt: skip
     notes = [WORDS("note_1"), WORDS("note_2")]
     if short:
         notes.append(WORDS("short_plan", mm=f(SHORT_MM)))
@@ -730,20 +709,8 @@ _INERTIA = {"M_Phi1": "M_Phi1", "Phi_2": "Phi2", "Phi_3": "Phi3", "M_Phi3": "M_P
 
 def _panel_fbd(sol: Solution[Data], data: Data, width: float = 140.0) -> tuple[Node, View]:
     """The tables of the loads, and the notes (``width`` mm wide)."""
-    reactions = V.Table(
-        _results_rows(
-            sol,
-            (
-                ("N_A", "N_A", "N"),
-                ("X_O", "X_O", "N"),
-                ("Y_O", "Y_O", "N"),
-                ("F_x", "F_x", "N"),
-            ),
-        ),
-        widths=(50.0, 90.0),
-        row_h=5.5,
-        title=WORDS("fbd_table_head"),
-    )
+    reactions = _results(sol, ("N_A", "X_O", "Y_O", "F_x"), widths=(50.0, 90.0), row_h=5.5,
+                         title=WORDS("fbd_table_head"))  # fmt: skip
     R = data.dynamic
     n, nm = _u("N"), _u("Nm")
     vals = []

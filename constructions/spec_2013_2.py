@@ -39,9 +39,9 @@ ID = "2013-2"
 SEED_K_L = 0.0005
 
 PARAMS = (
-    Param("H", 0.04, "stroke of the follower on the rise", "m", gt=0.0),
+    Param("H", 0.04, "stroke of the follower on the rise", "m", gt=0.0, display="mm"),
     Param("phi_rise_deg", 180.0, "rise angle φ_у", "deg", gt=0.0, le=360.0),
-    Param("r0", 0.04, "base circle radius of the theoretical profile", "m", gt=0.0),
+    Param("r0", 0.04, "base circle radius of the theoretical profile", "m", gt=0.0, display="mm"),
     Param("n_div", 4, "number of equal intervals of the span", "1", integer=True, ge=1, le=360),
     Param(
         "span_fraction",
@@ -51,20 +51,40 @@ PARAMS = (
         gt=0.0,
         le=1.0,
     ),
-    Param("omega_sign", 1, "+1: the cam turns counter-clockwise, −1: clockwise", integer=True),
+    Param(
+        "omega_sign",
+        1,
+        "+1: the cam turns counter-clockwise, −1: clockwise",
+        integer=True,
+        symbol="ω",
+    ),
     Param("phi_dwell_deg", 0.0, "outer dwell after the rise", "deg", ge=0.0, lt=360.0),
     Param("phi_return_deg", 0.0, "return angle (0: no return phase)", "deg", ge=0.0, lt=360.0),
     Param("law", "linear", "the follower's motion law (rise and return)", choices=LAWS),
     Param("follower", "flat", "the follower", choices=("flat", "knife", "roller")),
-    Param("e", 0.0, "offset of the follower's axis from O", "m"),
-    Param("r_roller", 0.0, "roller radius (roller follower)", "m", ge=0.0),
+    Param("e", 0.0, "offset of the follower's axis from O", "m", display="mm"),
+    Param("r_roller", 0.0, "roller radius (roller follower)", "m", ge=0.0, display="mm"),
 )
 
 RESULTS = (
-    ResultSpec("phi", "rad", "cam angles φ_i of the division points"),
-    ResultSpec("S", "m", "follower displacement S_i at the division points", "l"),
-    ResultSpec("r", "m", "radius vectors r_i of the profile at the division points", "l"),
-    ResultSpec("a", "m", "H/φ_rise (= S′ of the linear law)", "l"),
+    ResultSpec("phi", "rad", "cam angles φ_i of the division points", symbol="φ_i", display="deg"),
+    ResultSpec(
+        "S",
+        "m",
+        "follower displacement S_i at the division points",
+        "l",
+        symbol="S_i",
+        display="mm",
+    ),
+    ResultSpec(
+        "r",
+        "m",
+        "radius vectors r_i of the profile at the division points",
+        "l",
+        symbol="r_i",
+        display="mm",
+    ),
+    ResultSpec("a", "m", "H/φ_rise (= S′ of the linear law)", "l", display="mm"),
     ResultSpec("pressure_angle_max_deg", "deg", "largest pressure angle along the profile"),
     ResultSpec("rho_min", "m", "smallest radius of curvature of the profile", "l"),
     ResultSpec("profile", "m", "profile points [x, y] in the cam's frame"),

@@ -29,7 +29,7 @@ if TYPE_CHECKING:
 ID = "2013-4"
 
 PARAMS = (
-    Param("m", 0.01, "module", "m", gt=0.0),
+    Param("m", 0.01, "module", "m", gt=0.0, display="mm"),
     Param(
         "alpha_deg",
         20.0,
@@ -39,18 +39,34 @@ PARAMS = (
         lt=90.0,
     ),
     Param("z", 40, "number of teeth", "1", integer=True, ge=1),
-    Param("d_a", 0.42, "tip diameter", "m", gt=0.0),
-    Param("s_chord", 0.0181, "chordal thickness s̄ read by the caliper", "m", gt=0.0),
-    Param("h_chord", 0.0091, "chordal height h̄ (from the tip circle to the chord)", "m", gt=0.0),
+    Param("d_a", 0.42, "tip diameter", "m", gt=0.0, display="mm"),
+    Param(
+        "s_chord",
+        0.0181,
+        "chordal thickness s̄ read by the caliper",
+        "m",
+        gt=0.0,
+        symbol="s̄",
+        display="mm",
+    ),
+    Param(
+        "h_chord",
+        0.0091,
+        "chordal height h̄ (from the tip circle to the chord)",
+        "m",
+        gt=0.0,
+        symbol="h̄",
+        display="mm",
+    ),
 )
 
 RESULTS = (
-    ResultSpec("d", "m", "pitch diameter m·z", "l"),
-    ResultSpec("d_b", "m", "base diameter d·cos α", "l"),
-    ResultSpec("d_y", "m", "diameter of the circle through the chord's ends", "l"),
+    ResultSpec("d", "m", "pitch diameter m·z", "l", display="mm"),
+    ResultSpec("d_b", "m", "base diameter d·cos α", "l", display="mm"),
+    ResultSpec("d_y", "m", "diameter of the circle through the chord's ends", "l", display="mm"),
     ResultSpec("psi_y", "rad", "half the tooth's angular thickness at d_y: tan ψ_y = s̄/(d_a − 2h̄)"),
     ResultSpec("alpha_y_deg", "deg", "pressure angle of the involute at d_y: cos α_y = d_b/d_y"),
-    ResultSpec("s", "m", "tooth thickness on the pitch circle", "l"),
+    ResultSpec("s", "m", "tooth thickness on the pitch circle", "l", display="mm"),
     ResultSpec("x", "1", "profile shift coefficient"),
 )
 

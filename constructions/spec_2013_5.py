@@ -50,7 +50,7 @@ PARAMS = (
         ge=1,
         optional=True,
     ),
-    Param("m", 0.002, "module (sizes the drawing only)", "m", gt=0.0),
+    Param("m", 0.002, "module (sizes the drawing only)", "m", gt=0.0, display="mm"),
 )
 
 RESULTS = (
@@ -58,9 +58,9 @@ RESULTS = (
     ResultSpec("z4", "1", "teeth of gear 4 (coaxiality of 1–2 and 4–3)"),
     ResultSpec("z7", "1", "teeth of the ring 7 (coaxiality of 5–6 and 6–7)"),
     ResultSpec("u12", "1", "u_12 = z2/z1 (internal pair, carrier H2 held)"),
-    ResultSpec("u5H1_7", "1", "u_5H1^(7) = 1 + z7/z5 (ring 7 held)"),
+    ResultSpec("u5H1_7", "1", "u_5H1^(7) = 1 + z7/z5 (ring 7 held)", symbol="u_{5H1}^{(7)}"),
     ResultSpec("u43", "1", "u_43 = −z3/z4 (external pair, carrier H2 held)"),
-    ResultSpec("u13_H2", "1", "u_13^(H2) = u_12·u_5H1^(7)·u_43"),
+    ResultSpec("u13_H2", "1", "u_13^(H2) = u_12·u_5H1^(7)·u_43", symbol="u_{13}^{(H2)}"),
     ResultSpec("u1H2", "1", "u_1H2 = ω_1/ω_H2 = 1 − u_13^(H2)"),
     ResultSpec("u1H2_fraction", "1", "u_1H2 exactly, as [numerator, denominator]"),
 )

@@ -40,8 +40,20 @@ PARAMS = (
 
 RESULTS = (
     ResultSpec("theta_deg", "deg", "angle θ = 180°·(K − 1)/(K + 1) between the rod's dead centres"),
-    ResultSpec("O1B0", "m", "distance O1B0 (folded dead centre for the seed's solution)", "l"),
-    ResultSpec("O1B1", "m", "distance O1B1 (extended dead centre for the seed's solution)", "l"),
+    ResultSpec(
+        "O1B0",
+        "m",
+        "distance O1B0 (folded dead centre for the seed's solution)",
+        "l",
+        symbol="O_1B_0",
+    ),
+    ResultSpec(
+        "O1B1",
+        "m",
+        "distance O1B1 (extended dead centre for the seed's solution)",
+        "l",
+        symbol="O_1B_1",
+    ),
     ResultSpec("l1", "m", "crank O1A", "l"),
     ResultSpec("l2", "m", "connecting rod AB", "l"),
     ResultSpec("H_check", "m", "slider stroke of the synthesized six-bar over a crank turn", "l"),

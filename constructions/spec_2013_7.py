@@ -47,11 +47,11 @@ PARAMS = (
     Param("m_ball", 1.0, "mass of each ball (C, D)", "kg", gt=0.0),
     Param("f", 0.3, "friction coefficient in the six joints A, B, E, F, G, H", "1", ge=0.0),
     Param("d", 0.032, "pin diameter of each joint", "m", gt=0.0),
-    Param("l_AB", 0.1, "distance AB between the sleeve's pivots", "m", gt=0.0),
-    Param("l_GH", 0.1, "distance GH between the collar's pivots", "m", gt=0.0),
-    Param("l_FH", 0.15, "arm 6: H to F", "m", gt=0.0),
-    Param("l_DH", 0.22, "arm 6: H to the ball's centre D", "m", gt=0.0),
-    Param("l_BF", 0.15, "link 3, BF", "m", gt=0.0),
+    Param("l_AB", 0.1, "distance AB between the sleeve's pivots", "m", gt=0.0, symbol="AB"),
+    Param("l_GH", 0.1, "distance GH between the collar's pivots", "m", gt=0.0, symbol="GH"),
+    Param("l_FH", 0.15, "arm 6: H to F", "m", gt=0.0, symbol="FH"),
+    Param("l_DH", 0.22, "arm 6: H to the ball's centre D", "m", gt=0.0, symbol="DH"),
+    Param("l_BF", 0.15, "link 3, BF", "m", gt=0.0, symbol="BF"),
     Param("theta_deg", 45.0, "angle of the arm HD to the vertical", "deg", gt=0.0, lt=90.0),
     Param("g", 9.81, "gravitational acceleration", "m/s²", gt=0.0),
     Param(
@@ -72,7 +72,9 @@ RESULTS = (
     ResultSpec("F_i", "N", "inertia force of the ball D, m·r_D·ω² (Ф_6)", "F"),
     ResultSpec("r_D", "m", "radius at which the ball D turns", "l"),
     ResultSpec("omega", "rad/s", "angular velocity of the shaft"),
-    ResultSpec("omega_no_friction", "rad/s", "the same governor's ω with f = 0"),
+    ResultSpec(
+        "omega_no_friction", "rad/s", "the same governor's ω with f = 0", symbol="ω (f = 0)"
+    ),
 )
 
 

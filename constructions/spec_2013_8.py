@@ -25,16 +25,16 @@ if TYPE_CHECKING:
 ID = "2013-8"
 
 PARAMS = (
-    Param("d_hole", 0.05, "diameter of the hole", "m", gt=0.0),
-    Param("h_plate", 0.03, "thickness of the plate", "m", gt=0.0),
-    Param("tau", 6e7, "shear strength of the plate's steel", "Pa", gt=0.0),
-    Param("n_rpm", 1500, "nominal (largest) speed of the motor shaft", "rpm", gt=0.0),
+    Param("d_hole", 0.05, "diameter of the hole", "m", gt=0.0, symbol="d", display="mm"),
+    Param("h_plate", 0.03, "thickness of the plate", "m", gt=0.0, symbol="h", display="mm"),
+    Param("tau", 6e7, "shear strength of the plate's steel", "Pa", gt=0.0, display="MPa"),
+    Param("n_rpm", 1500, "nominal (largest) speed of the motor shaft", "rpm", gt=0.0, symbol="n"),
     Param("delta", 0.1, "coefficient of speed fluctuation δ (0 < δ < 2)", "1"),
-    Param("holes_per_s", 1, "holes punched per second", "1/s", gt=0.0),
+    Param("holes_per_s", 1, "holes punched per second", "1/s", gt=0.0, symbol="z"),
 )
 
 RESULTS = (
-    ResultSpec("F_max", "N", "largest punching force π·d·h·τ", "F"),
+    ResultSpec("F_max", "N", "largest punching force π·d·h·τ", "F", display="kN"),
     ResultSpec("E", "J", "work of one hole: the area under F(s)"),
     ResultSpec("N", "W", "mean power of the motor, E per cycle"),
     ResultSpec("omega_max", "rad/s", "nominal (largest) angular velocity π·n/30"),

@@ -35,7 +35,7 @@ PARAMS = (
     Param("Omega", 0.0, "circular frequency Ω of the driving moment", "rad/s"),
     Param("t", 0.0, "time of the state", "s"),
     Param("phi_deg", 30.0, "disc angle φ at the state", "deg", turn=True),
-    Param("phi_dot", 10.0, "angular velocity φ' at the state", "rad/s"),
+    Param("phi_dot", 10.0, "angular velocity φ' at the state", "rad/s", symbol="φ'"),
     Param("T", 0.5, "duration of the motion from rest at φ = 0", "s", gt=0.0),
 )
 
@@ -43,7 +43,9 @@ RESULTS = (
     ResultSpec("J_pr", "kg·m²", "reduced moment of inertia J + m·r²·cos²φ at the state"),
     ResultSpec("dJ_pr", "kg·m²", "dJ_pr/dφ = −m·r²·sin 2φ at the state (signed)"),
     ResultSpec("M_pr", "N·m", "reduced moment of the loads at the state (signed)"),
-    ResultSpec("phi_ddot", "rad/s²", "φ'' from the equation of motion at the state (signed)"),
+    ResultSpec(
+        "phi_ddot", "rad/s²", "φ'' from the equation of motion at the state (signed)", symbol="φ''"
+    ),
     ResultSpec("N_pin", "N", "force of the pin on the rod", "F"),
     ResultSpec("F_spring", "N", "spring force c·|x|", "F"),
     # forces shorter than two arrowheads at μ_F are drawn as points, so they are not read off

@@ -40,19 +40,19 @@ PARAMS = (
 )
 
 RESULTS = (
-    ResultSpec("I_pr_A", "kg·m²", "A in I_pr = A + B·sin²φ: the flywheel's I1"),
-    ResultSpec("I_pr_B", "kg·m²", "B in I_pr = A + B·sin²φ"),
+    ResultSpec("I_pr_A", "kg·m²", "A in I_pr = A + B·sin²φ: the flywheel's I1", symbol="A"),
+    ResultSpec("I_pr_B", "kg·m²", "B in I_pr = A + B·sin²φ", symbol="B"),
     ResultSpec("I_pr", "kg·m²", "reduced moment of inertia at φ"),
     ResultSpec("dI_pr", "kg·m²", "dI_pr/dφ at φ (signed)"),
     ResultSpec("omega1", "rad/s", "flywheel's angular velocity at φ (kinetic-energy theorem)"),
-    ResultSpec("eps1", "rad/s²", "flywheel's angular acceleration φ'' at φ (signed)"),
+    ResultSpec("eps1", "rad/s²", "flywheel's angular acceleration φ'' at φ (signed)", symbol="ε_1"),
     ResultSpec("N_A", "N", "force between the pin A and the yoke's slot", "F"),
     ResultSpec("X_O", "N", "bearing reaction at O along x (magnitude)", "F"),
     ResultSpec("Y_O", "N", "bearing reaction at O along y (magnitude)", "F"),
     ResultSpec(
         "F_x", "N", "horizontal force at the roller's axis that balances M (equal power)", "F"
     ),
-    ResultSpec("t_reach", "s", "time from rest at φ0 to φ (solve_ivp)"),
+    ResultSpec("t_reach", "s", "time from rest at φ0 to φ (solve_ivp)", symbol="t(φ)"),
     ResultSpec("omega_ode", "rad/s", "ω1 at φ from integrating the equation of motion"),
 )
 

@@ -30,7 +30,7 @@ from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any, Generic, Literal, TypeVar
 
 from geomcad.errors import ConstructionError, ParameterError
-from geomcad.units import PHYSICAL, wrap_deg
+from geomcad.units import PHYSICAL, check_display, wrap_deg
 
 if TYPE_CHECKING:
     from geomcad.construction import Construction
@@ -76,6 +76,11 @@ class Param:
     length from a micron to a kilometre) and, for an integer, at most :data:`MAX_COUNT`.
     A ``turn`` angle means a direction or a position on a turn: it is reduced into [0°, 360°).
 
+    On a sheet's table (:meth:`geomcad.sheet.views.Table.of_specs`) it is written as ``symbol``
+    (label markup; default: the name as markup, ``l_AB`` → ``l_{AB}``), in ``display`` (a unit of
+    :data:`geomcad.units.DISPLAY` the subject writes it in, e.g. "mm" for a module; default: its
+    SI ``unit``), to ``digits`` significant figures.
+
     >>> Param("H", 0.2, "stroke", "m", gt=0.0).check(1e-308)
     Traceback (most recent call last):
     ...
@@ -97,8 +102,12 @@ class Param:
     optional: bool = False
     span: tuple[float, float] | None = None
     turn: bool = False
+    symbol: str = ""
+    display: str = ""
+    digits: int = 4
 
     def __post_init__(self) -> None:
+        check_display(self.name, self.unit, self.display)
         if self.optional != (self.default is None):
             raise ValueError(
                 f"parameter {self.name}: an optional parameter has the default None, "
@@ -269,12 +278,19 @@ class ResultSpec:
 
     ``drawn`` names the plan scale it is drawn at on the project's own sheet: "l" (mechanism,
     k_l), "v", "a", "F"; ``None`` when it is not drawn (a ratio, a count).
+    ``symbol``, ``display``, ``digits``: how a sheet's table writes it, as :class:`Param`'s.
     """
 
     name: str
     unit: str
     doc: str
     drawn: str | None = None
+    symbol: str = ""
+    display: str = ""
+    digits: int = 4
+
+    def __post_init__(self) -> None:
+        check_display(self.name, self.unit, self.display)
 
 
 @dataclass

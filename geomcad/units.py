@@ -49,3 +49,36 @@ def wrap_deg(x_deg: float) -> float:
     if r < 0.0:
         r += 360.0
     return 0.0 if r == 360.0 else r
+
+
+#: The units a sheet may write a quantity in other than its SI unit, as the subject does (a module
+#: in mm, a force in kN, an energy in kJ): display unit → (its SI unit, display units per SI unit).
+DISPLAY: dict[str, tuple[str, float]] = {
+    "mm": ("m", 1e3),
+    "kN": ("N", 1e-3),
+    "kN·m": ("N·m", 1e-3),
+    "kJ": ("J", 1e-3),
+    "kW": ("W", 1e-3),
+    "MPa": ("Pa", 1e-6),
+    "deg": ("rad", 180.0 / math.pi),
+}
+
+
+def check_display(name: str, unit: str, display: str) -> None:
+    """Refuse a display unit that is not one of :data:`DISPLAY` for ``unit`` (a spec's mistake,
+    found when its module loads)."""
+    if display and display != unit and DISPLAY.get(display, ("", 0.0))[0] != unit:
+        raise ValueError(f"{name}: cannot write a quantity in {unit!r} in {display!r}")
+
+
+def to_display(x: float, unit: str, display: str) -> float:
+    """``x`` in the SI ``unit`` written in ``display`` (the same number when it is ``unit``).
+
+    >>> to_display(0.0025, "m", "mm"), to_display(37600.0, "N", "kN")
+    (2.5, 37.6)
+    """
+    if not display or display == unit:
+        return x
+    check_display("a value", unit, display)
+    f = DISPLAY[display][1]
+    return x * f if f >= 1.0 else x / round(1.0 / f)  # kN: x / 1000, exact where x·0.001 is not

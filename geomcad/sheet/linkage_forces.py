@@ -435,24 +435,23 @@ class _Lever(View):
 
 
 def _table2(f: Forces) -> Table:
-    N, Nm = WORDS("N"), WORDS("Nm")
-    rows: list[list[str]] = [[WORDS("load"), WORDS("value"), WORDS("unit")]]
+    rows: list[tuple[str, float | str, str]] = []
     for lds in f.loads.values():
         for ld in lds:
             if ld.force is not None:
-                rows.append([load_name(ld.name), _num(ld.force.norm), N])
+                rows.append((load_name(ld.name), _num(ld.force.norm), "N"))
             else:
-                rows.append([load_name(ld.name), _num(ld.moment), Nm])
+                rows.append((load_name(ld.name), _num(ld.moment), "N·m"))
     big = max(r.force.norm for r in f.reactions)
     for i, j in f.pairs:
         name = f"R_{{{i}{j}}}" if j < 10 else f"R_{{{i},{j}}}"
-        rows.append([name, _num(f.R(i, j).norm, scale=big), N])
+        rows.append((name, _num(f.R(i, j).norm, scale=big), "N"))
     for r in f.reactions:
         if r.couple:
-            rows.append([f"M_{{{r.of}{r.on}}}", _num(r.couple), Nm])
-    rows.append([WORDS("m_bal_forces"), _num(f.M_bal), Nm])
-    rows.append([WORDS("m_bal_lever"), _num(f.lever.M_bal), Nm])
-    return Table(rows, title=WORDS("loads"), row_h=6.0)
+            rows.append((f"M_{{{r.of}{r.on}}}", _num(r.couple), "N·m"))
+    rows.append((WORDS("m_bal_forces"), _num(f.M_bal), "N·m"))
+    rows.append((WORDS("m_bal_lever"), _num(f.lever.M_bal), "N·m"))
+    return Table.of_values(rows, first=WORDS("load"), title=WORDS("loads"), row_h=6.0)
 
 
 # --- sheet 3 ------------------------------------------------------------------------------
@@ -620,19 +619,18 @@ def _tables3(lk: Linkage, fw: Flywheel) -> list[Table]:
                 _num(fw.M_pr[i], scale=sm),
             ]
         )
-    J, Nm, per_s, kgm2 = WORDS("J"), WORDS("Nm"), WORDS("per_s"), WORDS("kgm2")
-    res = [
-        [WORDS("A_c"), _num(fw.A_cycle), J],
-        [WORDS("M_dr"), _num(fw.M_drive), Nm],
-        ["ω_{max}", _num(fw.omega_max), per_s],
-        ["ω_{min}", _num(fw.omega_min), per_s],
-        [WORDS("J_fw"), _num(fw.J_flywheel), kgm2],
+    res: list[tuple[str, float | str, str]] = [
+        (WORDS("A_c"), _num(fw.A_cycle), "J"),
+        (WORDS("M_dr"), _num(fw.M_drive), "N·m"),
+        ("ω_{max}", _num(fw.omega_max), "1/s"),
+        ("ω_{min}", _num(fw.omega_min), "1/s"),
+        (WORDS("J_fw"), _num(fw.J_flywheel), "kg·m²"),
     ]
     if fw.D > 0.0 and lk.dynamics is not None:
         kind = WORDS("disc") if lk.dynamics.flywheel == "disc" else WORDS("rim")
-        res += [[f"D ({kind})", _num(fw.D), WORDS("m")], ["b", _num(fw.b), WORDS("m")],
-                ["m", _num(fw.mass), WORDS("kg")]]  # fmt: skip
+        res += [(f"D ({kind})", _num(fw.D), "m"), ("b", _num(fw.b), "m"),
+                ("m", _num(fw.mass), "kg")]  # fmt: skip
     return [
         Table(rows, title=WORDS("table3"), row_h=5.0),
-        Table(res, header=False, title=WORDS("results3"), row_h=5.0),
+        Table.of_values(res, header=False, title=WORDS("results3"), row_h=5.0),
     ]

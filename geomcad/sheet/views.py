@@ -27,7 +27,7 @@ import re
 import sys
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass
-from typing import Any, Protocol
+from typing import Any, Literal, Protocol
 
 import numpy as np
 import numpy.typing as npt
@@ -46,6 +46,7 @@ from geomcad.sheet.scale import fmt_number
 from geomcad.sheet.scheme import Body, draw_scheme
 from geomcad.sheet.text import metrics, wrap
 from geomcad.structure import Mechanism
+from geomcad.units import to_display
 
 WORDS = Words(__package__, "views")
 
@@ -405,7 +406,8 @@ CELL_PAD = 1.2
 
 class Table(View):
     """A ruled table of ``rows`` of label markup (the first the header unless ``header`` is
-    False), its columns as wide as their widest text (or ``widths``)."""
+    False), its columns as wide as their widest text (or ``widths``), widened in proportion
+    to ``fill`` mm in all when that is wider (a table as wide as the one under it)."""
 
     def __init__(
         self,
@@ -414,6 +416,7 @@ class Table(View):
         header: bool = True,
         height: float = 2.5,
         row_h: float = 6.0,
+        fill: float = 0.0,
         **kw: Any,
     ) -> None:
         kw.setdefault("margin", 1.0)
@@ -430,7 +433,8 @@ class Table(View):
                 + 1.0
                 for i in range(n)
             ]
-        self.widths = list(widths)
+        total = sum(widths)
+        self.widths = [w * fill / total for w in widths] if 0.0 < total < fill else list(widths)
 
     def natural(self) -> tuple[float, float] | None:
         return sum(self.widths), self.row_h * len(self.rows)
@@ -441,37 +445,137 @@ class Table(View):
 
     @staticmethod
     def of_values(
-        entries: Iterable[tuple[str, float | str, str]], digits: int = 4, **kw: Any
+        entries: Iterable[tuple[str, float | str, str]],
+        digits: int = 4,
+        first: str = "",
+        **kw: Any,
     ) -> Table:
-        """A table "quantity | value | unit" of (label markup, value, unit) entries; numbers to
-        ``digits`` significant figures."""
-        head = [WORDS("quantity"), WORDS("value"), WORDS("unit")]
+        """A table "quantity | value | unit" of (label markup, value, SI unit) entries; numbers
+        to ``digits`` significant figures, a text value as it is; ``first`` heads the first
+        column (default "Величина"); ``header=False``: no heading row."""
+        head = [first or WORDS("quantity"), WORDS("value"), WORDS("unit")]
         rows = [
             [label, value if isinstance(value, str) else num(value, digits), unit_text(unit)]
             for label, value, unit in entries
         ]
-        return Table([head, *rows], **kw)
+        return Table([head, *rows] if kw.get("header", True) else rows, **kw)
 
     @staticmethod
     def of_specs(
         specs: Iterable[Spec],
         values: Mapping[str, Any],
         labels: Mapping[str, str] | None = None,
-        digits: int = 4,
+        digits: int | None = None,
+        style: TableStyle = "column",
+        pairs: int = 1,
+        extra: tuple[str, Callable[[Spec, Any], str]] | None = None,
+        first: str = "",
+        head: Sequence[str] | None = None,
+        transpose: bool = False,
         **kw: Any,
     ) -> Table:
-        """A table of the values of ``specs`` (a problem's ``Param`` or ``ResultSpec``: a
-        ``name`` and a ``unit``) found in ``values``; ``labels`` maps a name to label markup
-        (default: the name as markup, ``l_AB`` → ``l_{AB}``). A unit ``deg`` is written °, and
-        values in SI are printed as they are."""
-        entries: list[tuple[str, float | str, str]] = []
+        """A table of the values of ``specs`` (a problem's ``Param`` or ``ResultSpec``) found in
+        ``values``, each written as its spec says: its ``symbol`` (default: the name as markup,
+        ``l_AB`` → ``l_{AB}``; ``labels`` maps a name to other markup, e.g. words of the
+        sheet's language), its value in its ``display`` unit (default its SI ``unit``; a
+        unit ``deg`` is written °) to its ``digits`` significant figures (``digits`` here
+        overrides every spec's). An integer is written whole; a text value (a choice, or a
+        value the sheet has written itself) as it is, without a unit; a list is left out.
+
+        ``style``: ``"column"`` quantity | value | unit; ``"value"`` quantity | value with its
+        unit; ``"label"`` "quantity, unit" | value; ``"equation"`` one cell "l_{AB} = 0,1 м".
+        ``pairs`` > 1 sets that many groups of columns side by side (read down the first, then
+        the next). ``extra = (heading, cell(spec, value))`` adds a column (e.g. a length on the
+        plan). ``first`` is the first column's heading (default "Параметр" for a problem's
+        ``Param``, else "Величина"); ``head`` replaces the whole heading row (every group's).
+        ``transpose``: the quantities in a heading row, their values in the row under it (use
+        with ``style="label"``).
+        """
+        specs = list(specs)
+        entries: list[list[str]] = []
         for s in specs:
             if s.name not in values:
                 continue
             x = values[s.name]
-            value: float | str = float(x) if isinstance(x, int | float) else str(x)
-            entries.append(((labels or {}).get(s.name, name_markup(s.name)), value, s.unit))
-        return Table.of_values(entries, digits, **kw)
+            if isinstance(x, list | tuple | dict):
+                continue  # a list of values is a table of its own
+            label = (labels or {}).get(s.name) or s.symbol or name_markup(s.name)
+            shown = s.display or s.unit
+            if isinstance(x, str):
+                text, unit = x, ""
+            elif isinstance(x, int) and not isinstance(x, bool) and shown == s.unit:
+                text, unit = str(x), unit_text(shown)
+            else:
+                y = to_display(float(x), s.unit, shown)
+                text, unit = num(y, digits or s.digits), unit_text(shown)
+            if style == "column":
+                row = [label, text, unit]
+            elif style == "value":
+                row = [label, with_unit(text, unit)]
+            elif style == "label":
+                row = [f"{label}, {unit}" if unit else label, text]
+            else:
+                row = [f"{label} = {with_unit(text, unit)}"]
+            if extra is not None:
+                row.append(extra[1](s, x))
+            entries.append(row)
+        n = max(1, pairs)
+        if head is None:
+            names = {"column": ("quantity", "value", "unit"), "value": ("quantity", "value"),
+                     "label": ("quantity", "value"), "equation": ("quantity",)}[style]  # fmt: skip
+            head = [WORDS(w) for w in names]
+            given = bool(specs) and all(hasattr(s, "default") for s in specs)  # a problem's data
+            head[0] = first or (WORDS("parameter") if given and style != "equation" else head[0])
+            if extra is not None:
+                head.append(extra[0])
+            head = list(head) * n
+        per = -(-len(entries) // n)
+        blank = [""] * len(entries[0]) if entries else []
+        rows = [list(head)]
+        for i in range(per):
+            line: list[str] = []
+            for j in range(n):
+                k = j * per + i
+                line += entries[k] if k < len(entries) else blank
+            rows.append(line)
+        if not kw.get("header", True):
+            rows = rows[1:]
+        if transpose:  # the quantities across, their values (and extra cells) under them
+            rows = [list(col) for col in zip(*entries, strict=True)]
+        return Table(rows, **kw)
+
+    @staticmethod
+    def of_series(
+        columns: Sequence[tuple[Spec, Sequence[float]]],
+        index: tuple[str, Sequence[str]] | None = None,
+        digits: int | None = None,
+        **kw: Any,
+    ) -> Table:
+        """A table of series (values at the division points, the positions …): a column per
+        ``(spec, values)``, headed "symbol, unit" (its display unit), each value in that unit to
+        the spec's ``digits`` (or ``digits``); ``index = (heading, cells)`` is a first column."""
+        head = [index[0]] if index else []
+        cells: list[list[str]] = [list(index[1])] if index else []
+        for spec, values in columns:
+            shown = spec.display or spec.unit
+            unit = unit_text(shown)
+            label = spec.symbol or name_markup(spec.name)
+            head.append(f"{label}, {unit}" if unit else label)
+            cells.append(
+                [num(to_display(float(v), spec.unit, shown), digits or spec.digits) for v in values]
+            )
+        n = max((len(c) for c in cells), default=0)
+        rows = [head] + [[c[i] if i < len(c) else "" for c in cells] for i in range(n)]
+        return Table(rows, **kw)
+
+
+#: How :meth:`Table.of_specs` sets a value and its unit.
+TableStyle = Literal["column", "value", "label", "equation"]
+
+
+def with_unit(value: str, unit: str) -> str:
+    """A value with its unit: ``0,15 м``, ``45°`` (no space before the degree sign)."""
+    return value + unit if unit in ("°", "") else f"{value} {unit}"
 
 
 class Spec(Protocol):
@@ -481,6 +585,12 @@ class Spec(Protocol):
     def name(self) -> str: ...
     @property
     def unit(self) -> str: ...
+    @property
+    def symbol(self) -> str: ...
+    @property
+    def display(self) -> str: ...
+    @property
+    def digits(self) -> int: ...
 
 
 def unit_text(unit: str) -> str:
