@@ -46,7 +46,7 @@ PARAMS = (
     Param("m2", 10.0, "mass of the sleeve 2", "kg", gt=0.0),
     Param("m_ball", 1.0, "mass of each ball (C, D)", "kg", gt=0.0),
     Param("f", 0.3, "friction coefficient in the six joints A, B, E, F, G, H", "1", ge=0.0),
-    Param("d", 0.032, "pin diameter of each joint", "m", gt=0.0),
+    Param("d", 0.032, "pin diameter of each joint", "m", gt=0.0, display="mm"),
     Param("l_AB", 0.1, "distance AB between the sleeve's pivots", "m", gt=0.0, symbol="AB"),
     Param("l_GH", 0.1, "distance GH between the collar's pivots", "m", gt=0.0, symbol="GH"),
     Param("l_FH", 0.15, "arm 6: H to F", "m", gt=0.0, symbol="FH"),
@@ -64,7 +64,7 @@ PARAMS = (
 )
 
 RESULTS = (
-    ResultSpec("rho", "m", "friction-circle radius ρ = (d/2)·sin(arctan f)", "l"),
+    ResultSpec("rho", "m", "friction-circle radius ρ = (d/2)·sin(arctan f)", "l", display="mm"),
     ResultSpec("alpha_deg", "deg", "inclination α of link 3's line of action to BF"),
     ResultSpec("R32", "N", "reaction of link 3 on the sleeve 2", "F"),
     ResultSpec("P", "N", "P = G_6 + R_36 (the ball's weight and link 3's pull on the arm)", "F"),
