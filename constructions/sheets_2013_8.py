@@ -142,7 +142,7 @@ def _energy_balance(data: Data) -> Diagram:
     dts = [E, 0.0, data.N * T, 0.0, data.N * T]
 
     def extra(g: Graph) -> None:
-        g.hatch([0.0, T], [0.0, data.N * T])
+        # the motor's work over a cycle is the rise of ΔT (an ordinate, in J), not an area
         g.curve(ts, dts, "result")
         g.curve([0.0, 2.1 * T], [E, E], "centre")
         g.span_y(2.1 * T, 0.0, E, f"E = {f(E)} {WORDS('J')}")
