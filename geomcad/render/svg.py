@@ -27,7 +27,7 @@ import svgwrite
 
 from geomcad.sheet.model import XY, ArcItem, CircleItem, Dash, Item, Polyline, Sheet, TextItem
 from geomcad.sheet.style import MAIN_LINE, STYLES, Style, for_language, style
-from geomcad.sheet.text import FONT_FAMILY, placed_runs
+from geomcad.sheet.text import FONT_FAMILY, parse, placed_runs
 
 #: Main line S (mm) for a sheet whose format is not in MAIN_LINE (GOST 2.303: 0.7 on A3/A4).
 DEFAULT_MAIN_LINE = 0.7
@@ -217,8 +217,8 @@ def to_svg(sheet: Sheet, colour: bool = False) -> str:
         debug=False,
     )
     dwg.attribs["xmlns:inkscape"] = INKSCAPE_NS
-    if sheet.title:
-        dwg.set_desc(title=sheet.title)
+    if sheet.title:  # the title block's markup (u_{1H2}) as plain text
+        dwg.set_desc(title="".join(r.text for r in parse(sheet.title)))
     s = main_line(sheet.format)
     by_role: dict[str, list[Item]] = {}
     for item in sheet.items:
