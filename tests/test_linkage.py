@@ -476,3 +476,20 @@ def test_slanted_prp_stroke() -> None:
     cyc = cycle(parse(copy.deepcopy(ODD["slanted_prp"])))
     assert cyc is not None
     assert cyc.stroke == pytest.approx(2 * 0.05 / math.sin(math.radians(60.0)), rel=1e-12)
+
+
+@pytest.mark.parametrize("path", LINKAGES, ids=lambda p: p.stem)
+def test_the_output_diagrams_exact_curves_are_the_derivatives_of_s(path: Path) -> None:
+    """The kinematic sheet's exact v and a (or ω and ε) of the output are ds/dt and dv/dt of its
+    exact coordinate, for every example (a PRP yoke's velocity was taken across its slot: 0)."""
+    from geomcad.sheet.linkage import _output_curves
+
+    s = documents.solve(str(path)).data
+    psi = np.linspace(0.0, 2.0 * math.pi, 4001)
+    _names, s_m, v_m, a_m = _output_curves(s, psi)
+    w = abs(s.linkage.omega)
+    inner = slice(2, -2)
+    for y, dy in ((s_m, v_m), (v_m, a_m)):
+        num = np.gradient(y, psi) * w
+        assert float(np.abs(dy).max()) > 0.0
+        assert np.allclose(num[inner], dy[inner], atol=1e-3 * float(np.abs(dy).max()))

@@ -24,7 +24,7 @@ from geomcad.geom import Vec
 from geomcad.linkage.model import Linkage
 from geomcad.linkage.plans import Position, construct
 from geomcad.linkage.solution import Solved
-from geomcad.linkage.sweep import output_coordinate, sweep
+from geomcad.linkage.sweep import output_coordinate, prp_frame, sweep
 from geomcad.sheet import Drawing, Sheet, TitleBlock, fmt_number, start
 from geomcad.sheet.compose import (
     Choice,
@@ -399,10 +399,22 @@ def _output_curves(
         coord = output_coordinate(lk, st)
         assert coord is not None
         fwd = 1.0 if lk.working == "forward" else -1.0
-        sl = st.slide[g.links[1]]
+        # s is measured along the guide: a PRP's yoke runs on its fixed guide (its slide row is
+        # the slot's direction, across which the yoke does not move), an RRP's slider along its
+        # guide; on a moving guide s is the slider's place on it, and v, a its motion relative
+        # to the guide's link (the slider's less that of the guide's point under it)
+        sl = prp_frame(g)[1] if g.kind == "PRP" else st.slide[g.links[1]]
+        vel, acc = st.vel[lk.output], st.acc[lk.output]
+        gd = g.guide
+        if g.kind == "RRP" and gd is not None and not gd.fixed:
+            r = st.pos[lk.output] - st.pos[gd.frm]
+            w, e = st.omega[gd.link][:, None], st.eps[gd.link][:, None]
+            turn = np.stack([-r[:, 1], r[:, 0]], axis=1)
+            vel = vel - st.vel[gd.frm] - w * turn
+            acc = acc - st.acc[gd.frm] - e * turn + w * w * r
         s_m = fwd * (coord - (s.cycle.s_min if fwd > 0 else s.cycle.s_max))
-        v_m = fwd * (st.vel[lk.output] * sl).sum(axis=1)
-        a_m = fwd * (st.acc[lk.output] * sl).sum(axis=1)
+        v_m = fwd * (vel * sl).sum(axis=1)
+        a_m = fwd * (acc * sl).sum(axis=1)
         names = [("S", WORDS("m"), "s"), ("v", WORDS("m_s"), "v"), ("a", WORDS("m_s2"), "a")]
         return names, s_m, v_m, a_m
     link = lk.owner[lk.output]
