@@ -576,7 +576,7 @@ def _fbd_draw(sol: Solution[Data], data: Data) -> dict[str, Callable[[Viewport],
         # moment's opening at the bottom
         draw_loads(v1, R, k_F, "1", {
             "M": Where("M", radius=7.0, start_deg=facing(moment_of(R, "1", "M"), 270.0)),
-            "M_Phi1": Where(WORDS("M_Phi1"), radius=16.0,
+            "M_Phi1": Where(WORDS("M_Phi1"), radius=19.0,
                             start_deg=facing(moment_of(R, "1", "M_Phi1"), 270.0, True)),
             "R_{01}": Where("X_O", prefer=(0.0, 1.0)),
             "N_A": Where("N_A", prefer=(0.0, 1.0)),
