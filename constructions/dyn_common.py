@@ -15,7 +15,7 @@ from geomcad.geom import Vec
 from geomcad.sheet import Scale, Viewport, fmt_number
 from geomcad.sheet.drawing import SHORT_MM
 from geomcad.sheet.lang import Words, current
-from geomcad.sheet.loads import force, moment
+from geomcad.sheet.loads import MOMENT_SWEEP, force, moment
 from geomcad.sheet.scale import ScaleStyle
 
 ORIGIN = Vec(0.0, 0.0)
@@ -37,13 +37,27 @@ def mu(k: Scale) -> str:
     return k.label(ScaleStyle(lang=current()))
 
 
-def small(x: float, scale: float, unit: str = "") -> str:
-    """A quantity that should vanish: its value, or "|…| < 10^{–9}·scale" when it is round-off
-    (so that the sheet does not print noise that differs from machine to machine)."""
+def small(x: float, scale: float, unit: str = "", symbol: str = "") -> str:
+    """A quantity that should vanish, written after its ``symbol``: "M_у = 0,012 Н·м", or
+    "|M_у| < 2·10^{–9} Н·м" when it is round-off (so that the sheet does not print noise that
+    differs from machine to machine). Non-breaking spaces keep the symbol, the value and the
+    unit on one line when the text is wrapped."""
+    nb = "\u00a0"
+    tail = f"{nb}{unit}" if unit else ""
     bound = tol.DERIVED * abs(scale)
     if abs(x) <= bound:
-        return f"|·| < {f(bound, 1)}{(' ' + unit) if unit else ''}"
-    return f"{f(x, 3)}{(' ' + unit) if unit else ''}"
+        return f"|{symbol}|{nb}<{nb}{f(bound, 1)}{tail}" if symbol else f"<{nb}{f(bound, 1)}{tail}"
+    return f"{symbol}{nb}={nb}{f(x, 3)}{tail}" if symbol else f"{f(x, 3)}{tail}"
+
+
+def facing(sense: float, at_deg: float, open_: bool = False) -> float:
+    """The start angle (model degrees) of a moment's arc (:data:`MOMENT_SWEEP` long, in the
+    sense of ``sense``) whose middle, or with ``open_`` whose opening, faces ``at_deg``: two
+    moments about one point, drawn on radii far apart, the inner one's middle (where its label
+    goes) facing the outer one's opening, can be told apart."""
+    s = 1.0 if sense >= 0.0 else -1.0
+    half = math.degrees(MOMENT_SWEEP) / 2.0
+    return at_deg - s * (180.0 + half if open_ else half)
 
 
 def short_note(k_F: float) -> str:
@@ -73,6 +87,11 @@ def load(reactions: Any, body: str, name: str) -> Vec | None:
         if ld.name == name and ld.force is not None:
             return ld.force  # type: ignore[no-any-return]
     return None
+
+
+def moment_of(reactions: Any, body: str, name: str) -> float:
+    """The moment of the load ``name`` on ``body`` (0: no such moment)."""
+    return sum(float(ld.moment) for ld in reactions.loads.get(body, ()) if ld.name == name)
 
 
 def draw_loads(

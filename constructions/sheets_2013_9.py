@@ -40,10 +40,10 @@ from geomcad.sheet.compose import (
 from geomcad.sheet.graph import Graph, nice_step
 from geomcad.sheet.lang import Words, current
 from geomcad.sheet.loads import damper, ground, moment, spring
-from geomcad.sheet.scale import nice_factor
+from geomcad.sheet.scale import fmt_column, nice_factor
 from geomcad.sheet.text import wrap
 
-from .dyn_common import Where, draw_loads, f, load, short_note, small
+from .dyn_common import Where, draw_loads, f, facing, load, moment_of, short_note, small
 from .p2013_9 import ROD, Data
 from .spec_2013_9 import PARAMS, RESULTS
 
@@ -247,14 +247,22 @@ def _disc(v: Viewport, data: Data, k_F: float) -> None:
     v.joint(A)
     v.label(A, "A", 3.5, prefer=(1.0, 1.0))
     v.label((0.0, 0.0), "O", 3.5, prefer=(-1.0, 1.0))
+    # the two moments about O on two radii far apart: the inertia moment's arc open at the
+    # lower left, the driving moment's inner arc and its label in that opening
     draw_loads(
         v,
         data.reactions,
         k_F,
         "1",
         {
-            "M(t)": Where("M(t)", radius=5.0, start_deg=200.0),
-            "M_Phi1": Where(WORDS("M_in1"), radius=9.5, start_deg=-20.0),
+            "M(t)": Where(
+                "M(t)", radius=7.0, start_deg=facing(moment_of(data.reactions, "1", "M(t)"), 225.0)
+            ),
+            "M_Phi1": Where(
+                WORDS("M_in1"),
+                radius=16.0,
+                start_deg=facing(moment_of(data.reactions, "1", "M_Phi1"), 225.0, True),
+            ),
             "R_{01}": Where("R_{01}", prefer=(-1.0, 0.0)),
             "R_{12}": Where("R_{21}", prefer=(1.0, 0.0)),
         },
@@ -323,11 +331,11 @@ def _zero(x: float, scale: float) -> float:
     return 0.0 if abs(x) <= tol.DERIVED * max(abs(scale), 1.0) else abs(x)
 
 
-def _given(sol: Solution[Data]) -> View:
-    """The given data as a table."""
+def _given(sol: Solution[Data], title: str = "given") -> View:
+    """The given data as a table, under the words ``title``."""
     head = [WORDS("param"), "M(t) = M_0 + M_1·sin Ωt"]
     return V.Table.of_specs(PARAMS, sol.params, style="equation", pairs=2, head=head,
-                            widths=(73.0, 73.0), title=WORDS("given"))  # fmt: skip
+                            widths=(73.0, 73.0), title=WORDS(title))  # fmt: skip
 
 
 def _paragraphs(head: str, items: list[str], dash: bool = True) -> View:
@@ -372,7 +380,11 @@ def _panel_main(sol: Solution[Data], data: Data) -> Node:
     mb = R.moment("M_b")
     loads = _paragraphs(
         WORDS("loads_head"),
-        [WORDS("loads_1"), WORDS("loads_2"), WORDS("loads_3", mb=small(mb, data.M_t or 1.0, nm))],
+        [
+            WORDS("loads_1"),
+            WORDS("loads_2"),
+            WORDS("loads_3", mb=small(mb, data.M_t or 1.0, nm, WORDS("M_bal"))),
+        ],
     )
     return Column(_given(sol), results, eq, loads, Spacer((10.0, TITLE_BLOCK_H)))
 
@@ -419,6 +431,7 @@ def _motion(sol: Solution[Data]) -> Sheet:
         WORDS("int_head"),
         [
             WORDS("int_1"),
+            WORDS("int_2"),
             WORDS("int_rk") if tr.method == "DOP853" else WORDS("int_lsoda"),
             WORDS("int_3", phi=f(res["phi_T"]), omega=f(res["omega_T"]), T=f(T)),
         ],
@@ -426,15 +439,16 @@ def _motion(sol: Solution[Data]) -> Sheet:
     phis, omegas = state
     rows = [[f"t, {_unit('s')}", f"φ, {_unit('rad')}", f"φ, {_unit('deg')}",
              f"φ', {_unit('rad_s')}"]]  # fmt: skip
-    for tt, ph, om in zip(times, phis, omegas, strict=True):
-        rows.append([f(float(tt), 4), f(float(ph), 4), f(math.degrees(float(ph)), 4),
-                     f(float(om), 4)])  # fmt: skip
+    # each column of one quantity with one count of decimals
+    cols = [fmt_column([float(x) for x in xs]) for xs in (times, phis, np.degrees(phis), omegas)]
+    rows += [list(r) for r in zip(*cols, strict=True)]
     table = V.Table(rows, widths=(PANEL_W / 4.0,) * 4, title=WORDS("table_head"))
     deriv = _paragraphs(WORDS("deriv_head"), [WORDS(k) for k in ("deriv_1", "deriv_2", "deriv_3",
                                                                   "deriv_4")])  # fmt: skip
-    right = Column(integ, table, deriv, _given(sol), Spacer((10.0, TITLE_BLOCK_H)))
-    # the lower diagram keeps clear of the title block's corner on its right
-    left = Column(diagrams[0], Row(diagrams[1], Spacer((30.0, 10.0))))
+    right = Column(integ, table, deriv, _given(sol, "given_motion"), Spacer((10.0, TITLE_BLOCK_H)))
+    # the lower diagram keeps clear of the title block's corner on its right, and the upper one
+    # is as wide: one μ_t, their t ticks one above the other
+    left = Column(*(Row(dg, Spacer((30.0, 10.0))) for dg in diagrams))
     tree = Row(left, right, weights=(0.6, 0.4))
     d = start("A3", _title(sol, "tb_motion", 2))
     compose(d, tree)

@@ -44,10 +44,10 @@ from geomcad.sheet.lang import Words, current
 from geomcad.sheet.loads import force, ground, moment
 from geomcad.sheet.motion import Frames, turn
 from geomcad.sheet.placer import centre_line
-from geomcad.sheet.scale import nice_factor
+from geomcad.sheet.scale import fmt_column, nice_factor
 from geomcad.sheet.text import wrap
 
-from .dyn_common import Where, draw_loads, f, load, mu, short_note, small
+from .dyn_common import Where, draw_loads, f, facing, load, moment_of, mu, short_note, small
 from .p_kulisa import Data, mechanism, sweep, turns
 from .spec_kulisa import PARAMS, PROBLEM, RESULTS
 
@@ -456,7 +456,9 @@ def _graphs(sol: Solution[Data]) -> Sheet:
         least=(150.0, 70.0),
         prefer=(230.0, 110.0),
     )
-    left = Column(d1, Row(d2, Spacer((30.0, 10.0))))
+    # both diagrams as wide (the lower one clear of the title block's corner): one μ_φ, their φ
+    # ticks one above the other
+    left = Column(Row(d1, Spacer((30.0, 10.0))), Row(d2, Spacer((30.0, 10.0))))
     tree = Row(left, _panel_graphs(sol, data, ode), weights=(0.6, 0.4))
     d = start("A3", _tb("tb_graphs", 2))
     compose(d, tree)
@@ -506,9 +508,10 @@ def _panel_graphs(sol: Solution[Data], data: Data, ode: tuple[list[float], list[
     from geomcad.dynamics import omega_curve
 
     om = omega_curve(data.model, data.phi0, phis)
-    for a, ip, w_e, w_o in zip(phis, i_pr, om, ode[1], strict=True):
-        rows.append([f(math.degrees(float(a)), 5), f(float(ip), 4), f(float(w_e), 4),
-                     f(float(w_o), 4)])  # fmt: skip
+    # each column of one quantity with one count of decimals
+    cols = [fmt_column([float(x) for x in xs], digits=dg)
+            for xs, dg in ((np.degrees(phis), 5), (i_pr, 4), (om, 4), (ode[1], 4))]  # fmt: skip
+    rows += [list(r) for r in zip(*cols, strict=True)]
     table = V.Table(rows, widths=(GRAPHS_PANEL_W / 4.0,) * 4, title=WORDS("table_head"))
     return Column(eq, table, Spacer((10.0, TITLE_BLOCK_H)))
 
@@ -569,9 +572,12 @@ def _fbd_draw(sol: Solution[Data], data: Data) -> dict[str, Callable[[Viewport],
         _flywheel(v1, sol, data, pivot=False)
         v1.label(A, "A", 3.5, prefer=(-1.0, 1.0))
         v1.label((0.0, 0.0), "O", 3.5, prefer=(-1.0, -1.0))
+        # the two moments about O on radii far apart, the driving one's label in the inertia
+        # moment's opening at the bottom
         draw_loads(v1, R, k_F, "1", {
-            "M": Where("M", radius=6.0, start_deg=160.0),
-            "M_Phi1": Where(WORDS("M_Phi1"), radius=11.0, start_deg=-20.0),
+            "M": Where("M", radius=7.0, start_deg=facing(moment_of(R, "1", "M"), 270.0)),
+            "M_Phi1": Where(WORDS("M_Phi1"), radius=19.0,
+                            start_deg=facing(moment_of(R, "1", "M_Phi1"), 270.0, True)),
             "R_{01}": Where("X_O", prefer=(0.0, 1.0)),
             "N_A": Where("N_A", prefer=(0.0, 1.0)),
         })  # fmt: skip
@@ -733,7 +739,7 @@ def _panel_fbd(sol: Solution[Data], data: Data, width: float = 140.0) -> tuple[N
     lines = (
         WORDS("fbd_1"),
         WORDS("fbd_2"),
-        WORDS("fbd_3", mb=small(mb, float(sol.params["M"]), nm)),
+        WORDS("fbd_3", mb=small(mb, float(sol.params["M"]), nm, WORDS("M_bal"))),
         " ".join(_step_lines(sol, "F_x", "|F_x| (kinetostatics)")),
     )
     notes = V.Text(paragraphs=[f"– {ln}" for ln in lines], width=width, indent=3.0)

@@ -221,3 +221,8 @@ def test_the_sheets() -> None:
                   "M02 = "):  # fmt: skip
         assert any(w.startswith(start) for w in words), start
     assert not any(w.startswith("Mb") for w in words)  # the check moment is not a load
+    assert "|·|" not in " ".join(t.text for t in main_sheet.texts())
+    # the stacked diagrams share one μ_t, so their t ticks line up
+    motion = sheets[1][1]
+    mu_t = {t.text.split(";")[-1].strip() for t in motion.texts() if t.text.startswith("μ")}
+    assert len(mu_t) == 1 and next(iter(mu_t)).startswith("μt = ")

@@ -228,5 +228,9 @@ def test_the_sheets() -> None:
                   "MФ3 = ", "Fx = "):  # fmt: skip
         assert any(w.startswith(start) for w in words), start
     texts = " ".join(t.text for t in graphs.texts())
+    # the stacked diagrams share one μ_φ, so their φ ticks line up
+    mu_phi = {t.text.split(";")[-1].strip() for t in graphs.texts() if t.text.startswith("μ")}
+    assert len(mu_phi) == 1 and next(iter(mu_phi)).startswith("μφ = ")
+    assert "|·|" not in " ".join(t.text for t in fbd.texts())
     # the audit (solver, the report's errata) is on the review sheet only
     assert "solve_ivp" not in texts and "Замечания к отчёту" not in texts

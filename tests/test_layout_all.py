@@ -53,7 +53,7 @@ BASELINE: dict[tuple[str, str], dict[str, int]] = {
     # the 3 mm kept under графа 26 (a view's title no longer touches the form) costs the two
     # diagrams beside it one step of their μ: 51 % of the field empty
     ("2013-8", ""): {"empty": 1},
-    ("2013-9", "motion"): {"empty": 1},
+    ("2013-9", "motion"): {},
     ("kulisa-23110713", ""): {},
     ("kulisa-23110713", "graphs"): {},
     ("kulisa-23110713", "fbd"): {},

@@ -55,8 +55,10 @@ HATCH_LEN = symbols.HATCH_LEN
 
 #: Fixed text moved off a box of the form keeps this far from it (mm).
 RESERVED_GAP = 3.0
-#: A curved arrow's shaft stops this far (rad) short of its head's tip.
+#: A curved arrow's shaft stops this far (rad) short of its head's tip …
 TURN_HEAD_GAP = 0.35
+#: … but never more than this (mm) along the arc, so that on a large arc the head stays on it.
+TURN_HEAD_GAP_MM = 0.9 * ARROW_LEN
 #: Baseline-to-baseline distance of wrapped text, in cap heights (GOST 2.304, type B: 17/10 h).
 LINE_SPACING = 1.7
 
@@ -326,6 +328,7 @@ class Viewport:
         sweep = math.radians(sweep_deg)
         a0 = math.radians(start_deg)
         a1 = a0 + s * sweep
+        gap = min(TURN_HEAD_GAP, TURN_HEAD_GAP_MM / r_mm)
 
         def at(a: float) -> XY:
             return (cx + r_mm * math.cos(a), cy - r_mm * math.sin(a))
@@ -335,8 +338,8 @@ class Viewport:
                 (cx, cy),
                 r_mm,
                 at(a0),
-                at(a1 - s * TURN_HEAD_GAP),
-                -s * (sweep - TURN_HEAD_GAP),
+                at(a1 - s * gap),
+                -s * (sweep - gap),
                 role,
             )
         )

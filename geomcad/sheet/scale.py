@@ -10,6 +10,7 @@ direction a setting.
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 from fractions import Fraction
 from typing import Literal
@@ -63,6 +64,29 @@ def fmt_number(x: float, lang: str | None = None, digits: int = 6) -> str:
         s = f"{mant}·10^{{{int(exp)}}}"
     s = s.replace("-", "\u2013")
     return s.replace(".", ",") if (lang or current()) == "ru" else s
+
+
+def fmt_column(xs: Sequence[float], lang: str | None = None, digits: int = 4) -> list[str]:
+    """A table column of one quantity, every number with the same count of decimals: the
+    largest magnitude gets ``digits`` significant digits (1,830 / 3,870 / 9,078), or fewer
+    where they write every value exactly (0 / 15 / 30; 0,05 / 0,10); a decimal comma in Russian
+    (a point in English), a typographic minus."""
+    big = max((abs(x) for x in xs), default=0.0)
+    if big == 0.0:
+        return ["0" for _ in xs]
+    cap = max(0, digits - 1 - math.floor(math.log10(big)))
+    need = next(
+        (d for d in range(cap) if all(abs(x - round(x, d)) <= tol.DERIVED * big for x in xs)),
+        cap,
+    )
+    out = []
+    for x in xs:
+        s = f"{x:.{need}f}"
+        if float(s) == 0.0:
+            s = s.lstrip("-")
+        s = s.replace("-", "\u2013")
+        out.append(s.replace(".", ",") if (lang or current()) == "ru" else s)
+    return out
 
 
 @dataclass(frozen=True)
