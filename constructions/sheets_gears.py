@@ -16,7 +16,6 @@ other candidates in a table.
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -155,18 +154,17 @@ def _pair_sheet(sol: Solution[GearsDesign], des: GearsDesign) -> Sheet:
 
 
 def _mesh(v: Viewport, p: gd.GearPair, me: gd.Meshing) -> None:
-    """The meshing drawing: the circles as arcs over the drawn field (the tip circle thick only
-    along the drawn teeth, thin beyond them), the teeth, the working parts of the flanks, the
-    line of centres and the line of action with its active part."""
+    """The meshing drawing: the circles as thin arcs over the drawn field, the teeth, the
+    working parts of the flanks, the line of centres, the line of action with its active part
+    and the angle α_w between it and the common tangent at P, the wheels' numbers and their
+    angular velocities (the pinion driving clockwise: the contact runs from a to b)."""
     x0, _, x1, _ = _mesh_box(p, me)
     O1, O2 = Vec(0.0, 0.0), Vec(0.0, p.a_w)
     half_w = max(abs(x0), abs(x1)) * 1.05
-    for centre, g, d_w, up, teeth in (
-        (O1, p.gear1, p.d_w1, True, me.teeth1),
-        (O2, p.gear2, p.d_w2, False, me.teeth2),
-    ):
+    for centre, g, d_w, up in ((O1, p.gear1, p.d_w1, True), (O2, p.gear2, p.d_w2, False)):
         mid = math.pi / 2.0 if up else -math.pi / 2.0
-        span = _teeth_span(teeth, centre)
+        # every circle thin (the pitch and rolling circles dash-dot): the tip lands are drawn
+        # with the teeth, and a thick tip arc across a space would cross the other wheel's tooth
         for r, role in (
             (g.r_a, "thin"),
             (g.d / 2.0, "centre"),
@@ -177,17 +175,7 @@ def _mesh(v: Viewport, p: gd.GearPair, me: gd.Meshing) -> None:
             if r <= half_w:
                 continue
             half = math.asin(min(1.0, half_w / r))
-            lo_a, hi_a = mid - half, mid + half
-            if r == g.r_a:
-                # thin beyond the drawn teeth, thick (their tip lands and the gaps) along them
-                t0, t1 = max(lo_a, span[0]), min(hi_a, span[1])
-                if t0 < t1:
-                    v.arc(Arc(Circle(centre, r), t0, t1), "link")
-                    for u0, u1 in ((lo_a, t0), (t1, hi_a)):
-                        if u1 > u0:
-                            v.arc(Arc(Circle(centre, r), u0, u1), "thin")
-                    continue
-            v.arc(Arc(Circle(centre, r), lo_a, hi_a), role)
+            v.arc(Arc(Circle(centre, r), mid - half, mid + half), role)
         v.centre_cross(centre, 6.0)
     for tooth in [*me.teeth1, *me.teeth2]:
         v.polyline(list(tooth), "link")
@@ -214,16 +202,21 @@ def _mesh(v: Viewport, p: gd.GearPair, me: gd.Meshing) -> None:
     ):
         v.dot(q, "point")
         v.label(q, name, prefer=pref)
+    # the common tangent of the rolling circles at P and the angle α_w from it to the line of
+    # action, dimensioned by an arc
+    r_dim = 30.0
+    v.seg(P - Vec(v.scale.model(12.0), 0.0), P + Vec(v.scale.model(r_dim + 8.0), 0.0), "thin")
     a_w = fmt_number(math.degrees(p.alpha_w), digits=4)
-    # the angle of action, written along the line of action beyond P (P itself is crowded)
-    v.label(P + t * v.scale.model(30.0), f"α_w = {a_w}°", 2.5, prefer=(1.0, -1.0), clear=0.5)
-
-
-def _teeth_span(teeth: Sequence[np.ndarray], centre: Vec) -> tuple[float, float]:
-    """The angles (from the centre, counter-clockwise) between which the teeth are drawn."""
-    pts = np.vstack(list(teeth))
-    ang = np.arctan2(pts[:, 1] - centre.y, pts[:, 0] - centre.x)
-    return float(ang.min()), float(ang.max())
+    v.dim_angle(P, P + t, P + Vec(1.0, 0.0), f"α_w = {a_w}°", r_mm=r_dim, height=2.5)
+    # the wheels' numbers and angular velocities: the pinion 1 clockwise drives the contact
+    # point from a (on the wheel's tip circle) to b (on its own); the wheel 2 turns back
+    off = v.scale.model(16.0)
+    for centre, name, sense, start, side in (
+        (O1, "1", -1.0, 250.0, 1.0),
+        (O2, "2", 1.0, 160.0, -1.0),
+    ):
+        v.label(centre + Vec(off, side * off), name, 5.0, prefer=(1.0, side))
+        v.turn(centre, sense, start, f"ω_{name}", r_mm=12.0, sweep_deg=90.0)
 
 
 #: Labels of the blocking contour's lines: formulas, or a key of the table (``limit_*``).
@@ -252,7 +245,12 @@ def _contour(p: gd.GearPair, sa_min: float, eps_min: float) -> Diagram:
                 continue
             for a1, a2, b1, b2 in segs:
                 g.curve([a1, b1], [a2, b2], "construction")
-            mid = segs[len(segs) // 2]
+            # the label by the line's middle segment, or the nearest to it clear of the chosen
+            # shifts (the point x1, x2 has its own label)
+            n = len(segs)
+            order = sorted(range(n), key=lambda i: abs(i - n // 2))
+            clear = [i for i in order if math.hypot(segs[i][0] - p.x1, segs[i][1] - p.x2) > 0.25]
+            mid = segs[(clear or order)[0]]
             g.point(mid[0], mid[1], _limit_text(key), role="construction")
         g.point(p.x1, p.x2, "x_1, x_2", role="result", prefer=(1.0, 1.0))
 
