@@ -110,6 +110,15 @@ def _sized(sol: Solution[CamDesign]) -> tuple[Tree, Figure, Figure, Sized]:
     return tree, profile, diagram, sized
 
 
+def designation(sol: Solution[Any]) -> str:
+    """The document's designation from its file's name (as a linkage file's), so that every
+    design file is its own document; ``designation`` in [sheet] or ``--designation`` override
+    it."""
+    from geomcad.documents import stem
+
+    return WORDS("designation", stem=stem(sol.problem.id))
+
+
 def scales(sol: Solution[CamDesign]) -> dict[str, float]:
     """k_l of the profile view: the GOST scale the layout gives it (``Problem.scales``)."""
     _, profile, _, sized = _sized(sol)
@@ -122,7 +131,7 @@ def sheets(sol: Solution[CamDesign]) -> list[tuple[str, Sheet]]:
     tree, profile, _, sized = _sized(sol)
     k = sized.layout[profile].scale
     assert k is not None
-    tb = TitleBlock(title=WORDS("tb_title"), designation=WORDS("designation"), scale=k.ratio_text())
+    tb = TitleBlock(title=WORDS("tb_title"), designation=designation(sol), scale=k.ratio_text())
     d = sized.start(tb)
     compose(d, tree, layout=sized.layout)
     return [("", d.finish())]

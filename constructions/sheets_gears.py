@@ -112,6 +112,15 @@ def _planetary_sized(sol: Solution[GearsDesign]) -> tuple[Tree, Figure, Sized]:
     return tree, scheme, choose(tree, {scheme: want}, sheet_formats(sol.problem.inputs or {}))
 
 
+def designation(sol: Solution[Any]) -> str:
+    """The document's designation from its file's name (as a linkage file's), so that every
+    design file is its own document; ``designation`` in [sheet] or ``--designation`` override
+    it."""
+    from geomcad.documents import stem
+
+    return WORDS("designation", stem=stem(sol.problem.id))
+
+
 def scales(sol: Solution[GearsDesign]) -> dict[str, float]:
     """k_l of the meshing drawing (or of the planetary scheme), as the layout chooses it
     (``Problem.scales``)."""
@@ -144,7 +153,7 @@ def _pair_sheet(sol: Solution[GearsDesign], des: GearsDesign) -> Sheet:
     assert k is not None
     tb = TitleBlock(
         title=WORDS("tb_pair"),
-        designation=WORDS("designation"),
+        designation=designation(sol),
         scale=k.ratio_text(),
         sheets=2 if des.spec.planetary is not None else 1,
     )
@@ -467,7 +476,7 @@ def _planetary_sheet(sol: Solution[GearsDesign], des: GearsDesign, no: int) -> S
     assert k is not None
     tb = TitleBlock(
         title=WORDS("tb_planetary"),
-        designation=WORDS("designation"),
+        designation=designation(sol),
         scale=k.ratio_text(),
         sheet_no=no,
         sheets=no,

@@ -451,3 +451,21 @@ def test_cam_order_of_construction_is_the_recorded_steps(name: str) -> None:
         assert len(numbered) == len(listed)
         value = f"{float(sol.results['r0']) * 1000:g}"  # type: ignore[arg-type]
         assert r0.format(value) in text
+
+
+def test_every_design_file_is_its_own_document() -> None:
+    """The designation (графа 2) from the file's name, one per file, in either language."""
+    from geomcad_constructions import sheets_cam, sheets_gears
+
+    from geomcad.sheet.lang import language
+
+    for lang in ("ru", "en"):
+        with language(lang):
+            got = {
+                n: (sheets_gears if n in ("gear-pair", "planetary") else sheets_cam).designation(
+                    solution(n)
+                )
+                for n in ALL
+            }
+        assert len(set(got.values())) == len(ALL)
+        assert all(n in d for n, d in got.items())
