@@ -213,7 +213,9 @@ def _mesh(v: Viewport, p: gd.GearPair, me: gd.Meshing) -> None:
         v.label(q, name, prefer=pref)
     # the common tangent of the rolling circles at P and the angle α_w from it to the line of
     # action, dimensioned by an arc
-    r_dim = 30.0
+    # (its arc beyond the tooth next to P, where the wedge between the two lines is wide
+    # enough for the text: 3.75 modules, ≈ 1.7 tooth heights)
+    r_dim = max(25.0, v.scale.mm(3.75 * p.m))
     v.seg(P - Vec(v.scale.model(12.0), 0.0), P + Vec(v.scale.model(r_dim + 8.0), 0.0), "thin")
     a_w = fmt_number(math.degrees(p.alpha_w), digits=4)
     v.dim_angle(P, P + t, P + Vec(1.0, 0.0), f"α_w = {a_w}°", r_mm=r_dim, height=2.5)
@@ -400,19 +402,15 @@ def _planetary_tree(des: GearsDesign) -> tuple[Tree, Figure]:
     top, span = _radii(des)
     pts, start_link, start_pt = _plan_points(pp.scheme, z, m)
     by = {q.name: q.y for q in pts}
-    scheme = Figure(
-        (-0.1 * span, -top, span * 1.08, top),
-        lambda v: _scheme(v, pp.scheme, z, m, by, span),
-        group="l",
-        weight=2.0,
-    )
-    plan = Figure(
-        (-0.6 * top, -top, 0.6 * top, top),
-        lambda v: _plan(v, pp, pts, start_link, start_pt, by, (0.6 * top, top)),
-        title=WORDS("plan_title"),
-        show_scale=False,
-        group="l",
-    )
+    # Smirnov's plan in projection from the scheme: one view, one length scale, the plan's
+    # points o, a, b, c at the heights of O, A, B, C, its axis beside the scheme
+    x_plan = span * 1.08 + 0.75 * top
+
+    def draw(v: Viewport) -> None:
+        _scheme(v, pp.scheme, z, m, by, span)
+        _plan(v, pp, pts, start_link, start_pt, by, (0.6 * top, top), x_plan)
+
+    scheme = Figure((-0.1 * span, -top, x_plan + 0.6 * top, top), draw, group="l", weight=2.0)
     names = ["z_1", "z_2", "z_3"] if pp.scheme == "A" else ["z_1", "z_2", "z_3", "z_4"]
     rows = [["", *names, "u", WORDS("h_error")]]
     for cand in des.candidates:
@@ -427,9 +425,7 @@ def _planetary_tree(des: GearsDesign) -> tuple[Tree, Figure]:
     texts = (_willis(des, pts, start_link, start_pt), WORDS("conditions"))
     notes = [Text(paragraph=t, width=PLANETARY_NOTE_W) for t in texts]
     # the scheme's title over both views: it states their one length scale
-    views = Row(
-        scheme, plan, title=WORDS("scheme_title", scheme=pp.scheme, k=pp.planets), group="l"
-    )
+    views = Column(scheme, title=WORDS("scheme_title", scheme=pp.scheme, k=pp.planets), group="l")
     # the tables beside the views, or under them
     beside = Row(views, Column(teeth, *notes))
     return Choice(beside, Column(views, Row(teeth, Column(*notes)))), scheme
@@ -494,14 +490,17 @@ def _plan(
     start_pt: str,
     by: dict[str, float],
     room: tuple[float, float],
+    x0: float,
 ) -> None:
-    """Smirnov's plan on the scheme's radii (its axis at the view's centre), the velocity
-    factor written over it, and the angle diagram below the central axis."""
+    """Smirnov's plan on the scheme's radii (its axis at the model abscissa ``x0`` beside the
+    scheme, each point at its point's height), the velocity factor and the title written over
+    it, each link's velocity line named, and the angle diagram below the central axis with its
+    pole distance H and factor μ_ω."""
     d = pv.d
     k = pv.scale
     half = room[0]
     half_mm = k.mm(half)
-    px, y_base = pv.p(Vec(0.0, 0.0))
+    px, y_base = pv.p(Vec(x0, 0.0))
     H_mm = 35.0
     plan, rp, fixed = _angles(pp, pts, start_link, start_pt, by, H_mm * k.k)
     vmax = max(abs(e.x) for e in plan.ends.values()) or 1.0
@@ -514,7 +513,9 @@ def _plan(
     top_y = min(sheet_y.values()) - 10.0
     # the factor over the plan's axis (not at the top of the view's room: the plan spans the
     # radii of the train, the room the whole scheme's height)
-    d.text(WORDS("plan_factor", label=kv.label()), (pv.p(Vec(-half, 0.0))[0], top_y - 3.0), 3.5)
+    left = pv.p(Vec(x0 - half, 0.0))[0]
+    d.text(WORDS("plan_factor", label=kv.label()), (left, top_y - 3.0), 3.5)
+    d.text(WORDS("plan_title"), (left, top_y - 9.0), 3.5)
     d.sheet.add(_line((px, y_base + 5.0), (px, top_y)))
     for name, e in plan.ends.items():
         sx = px + e.x / kv.k
@@ -530,8 +531,11 @@ def _plan(
         if len(ends) >= 2:
             lo_e = min(ends, key=lambda e: e.y)
             hi_e = max(ends, key=lambda e: e.y)
-            d.sheet.add(_line((px + lo_e.x / kv.k, sheet_y_of(pv, lo_e.y)),
-                              (px + hi_e.x / kv.k, sheet_y_of(pv, hi_e.y)), "link"))  # fmt: skip
+            a = (px + lo_e.x / kv.k, sheet_y_of(pv, lo_e.y))
+            b = (px + hi_e.x / kv.k, sheet_y_of(pv, hi_e.y))
+            d.sheet.add(_line(a, b, "link"))
+            # the link's name by the middle of its velocity line
+            d.label(((a[0] + b[0]) / 2.0, (a[1] + b[1]) / 2.0), link, 3.5)
     # the angle diagram below the plan: rays ∥ each link's line from the pole S
     S_sheet = (px, y_base + 15.0 + H_mm)
     for link in rp.ends:
@@ -539,8 +543,13 @@ def _plan(
         end = (px + w * H_model / kv.k, S_sheet[1] - H_mm)
         d.sheet.add(_line(S_sheet, end, "construction"))
         d.label(end, f"ω_{{{link}}}", 2.5)
-    d.sheet.add(_line((px - 60.0, S_sheet[1] - H_mm), (px + 60.0, S_sheet[1] - H_mm), "thin"))
+    axis_y = S_sheet[1] - H_mm
+    d.sheet.add(_line((px - half_mm, axis_y), (px + half_mm, axis_y), "thin"))
     d.label(S_sheet, "S", 3.5)
+    # the pole distance and the angular-velocity factor μ_ω = μ_V / (μ_l·H)
+    mu_w = fmt_number(kv.k / (k.k * H_mm), digits=3)
+    d.text(WORDS("rays_factor", H=fmt_number(H_mm, digits=3), mu=mu_w),
+           (px - half_mm, S_sheet[1] + 8.0), 3.5)  # fmt: skip
 
 
 def _scheme(

@@ -469,3 +469,42 @@ def test_every_design_file_is_its_own_document() -> None:
             }
         assert len(set(got.values())) == len(ALL)
         assert all(n in d for n, d in got.items())
+
+
+def test_planetary_plan_is_projected_from_the_scheme() -> None:
+    """Smirnov's plan in the scheme's viewport: o, a, b, c at the heights of O, A, B, C, each
+    link's velocity line named, the ray diagram's H and μ_ω written."""
+    from geomcad_constructions import sheets_gears as sg
+
+    sol = solution("planetary")
+    des = sol.data
+    pp = des.spec.planetary
+    pts, link, pt = sg._plan_points(pp.scheme, des.candidates[0].z, pp.m)
+    by = {q.name: q.y for q in pts}
+    k = Scale(0.002, "l")
+    labels: list[tuple[tuple[float, float], str]] = []
+    texts: list[str] = []
+
+    class D:
+        sheet = type("S", (), {"add": staticmethod(lambda item: None)})()
+
+        def label(self, at: tuple[float, float], text: str, *a: object, **kw: object) -> None:
+            labels.append((at, text))
+
+        def text(self, text: str, *a: object, **kw: object) -> None:
+            texts.append(text)
+
+    class V:
+        d = D()
+        scale = k
+
+        def p(self, q: object) -> tuple[float, float]:
+            return (100.0 + k.mm(q.x), 200.0 - k.mm(q.y))  # type: ignore[attr-defined]
+
+    top = 0.2
+    sg._plan(V(), pp, pts, link, pt, by, (0.6 * top, top), 0.5)  # type: ignore[arg-type]
+    at = {t: xy for xy, t in labels}
+    for name, y in by.items():
+        assert at[name.lower()][1] == pytest.approx(200.0 - k.mm(y))
+    assert {"1", "2", "H"} <= set(at)
+    assert any("μ_ω" in t and "H = " in t for t in texts)
