@@ -508,3 +508,34 @@ def test_planetary_plan_is_projected_from_the_scheme() -> None:
         assert at[name.lower()][1] == pytest.approx(200.0 - k.mm(y))
     assert {"1", "2", "H"} <= set(at)
     assert any("μ_ω" in t and "H = " in t for t in texts)
+
+
+@pytest.mark.parametrize("name", ["cam-rocking-roller", "cam-translating-roller"])
+def test_cam_profile_shows_omega_and_the_inversion_and_names_the_pivots(name: str) -> None:
+    """ω in the cam's sense (the data table's), −ω against it; a rocker's turned pivots A_i."""
+    from geomcad_constructions import sheets_cam
+
+    class Recorder:
+        def __init__(self) -> None:
+            self.calls: list[tuple[str, tuple[object, ...]]] = []
+            self.scale = Scale(0.001, "l")
+
+        def __getattr__(self, attr: str) -> object:
+            return lambda *a, **k: self.calls.append((attr, a))
+
+    sol = solution(name)
+    des = sol.data
+    v = Recorder()
+    sheets_cam._profile(v, des)  # type: ignore[arg-type]
+    labels = [str(a[1]) for n, a in v.calls if n == "label"]
+    arrows = [a for n, a in v.calls if n == "arrow"]
+    senses = []
+    for tail, tip in ((a[0], a[1]) for a in arrows):
+        senses.append(np.sign(tail.x * tip.y - tail.y * tip.x))  # type: ignore[attr-defined]
+    named = [lab for lab in labels if lab in ("ω", "−ω")]
+    assert named == ["ω", "−ω"] and senses == [des.spec.sigma, -des.spec.sigma]
+    n = len(des.divisions.phi) - 1
+    pivots = {f"A_{{{i}}}" for i in range(n)}
+    assert (pivots <= set(labels)) == (des.spec.motion == "rocking")
+    _, _, *units, _ = sheets_cam._law_values(des)
+    assert "°/" not in "".join(units)  # no mixed ° and rad in the analogues' units
