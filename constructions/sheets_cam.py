@@ -51,6 +51,11 @@ NOTE_W = 130.0
 O_ROOM = 6.0
 #: The flat face drawn this far (mm) past its point of contact in each turned position.
 FACE_MM = 6.0
+#: A division point within this fraction of the stroke of the φ axis is drawn on it; its number
+#: is written NUMBER_LIFT mm above the axis.
+ON_AXIS, NUMBER_LIFT = 0.005, 4.0
+#: The arcs of ω and −ω about the cam's centre this many times its outer reach (the rollers').
+SENSE_OUT = 1.06
 #: The law graphs' least and preferred sizes (mm).
 LAW_LEAST, LAW_PREFER = (130.0, 70.0), (280.0, 120.0)
 
@@ -110,6 +115,15 @@ def _sized(sol: Solution[CamDesign]) -> tuple[Tree, Figure, Figure, Sized]:
     return tree, profile, diagram, sized
 
 
+def designation(sol: Solution[Any]) -> str:
+    """The document's designation from its file's name (as a linkage file's), so that every
+    design file is its own document; ``designation`` in [sheet] or ``--designation`` override
+    it."""
+    from geomcad.documents import stem
+
+    return WORDS("designation", stem=stem(sol.problem.id))
+
+
 def scales(sol: Solution[CamDesign]) -> dict[str, float]:
     """k_l of the profile view: the GOST scale the layout gives it (``Problem.scales``)."""
     _, profile, _, sized = _sized(sol)
@@ -122,7 +136,7 @@ def sheets(sol: Solution[CamDesign]) -> list[tuple[str, Sheet]]:
     tree, profile, _, sized = _sized(sol)
     k = sized.layout[profile].scale
     assert k is not None
-    tb = TitleBlock(title=WORDS("tb_title"), designation=WORDS("designation"), scale=k.ratio_text())
+    tb = TitleBlock(title=WORDS("tb_title"), designation=designation(sol), scale=k.ratio_text())
     d = sized.start(tb)
     compose(d, tree, layout=sized.layout)
     return [("", d.finish())]
@@ -131,12 +145,14 @@ def sheets(sol: Solution[CamDesign]) -> list[tuple[str, Sheet]]:
 # -- the law and its analogues ---------------------------------------------------------------------
 
 
-def _law_values(des: CamDesign) -> tuple[float, str, str, str, str]:
-    """(factor to the drawn unit, unit of S, of S′, of S″, the symbol)."""
+def _law_values(des: CamDesign) -> tuple[float, float, str, str, str, str]:
+    """(factor of S to its drawn unit, of the analogues to theirs, unit of S, of S′, of S″, the
+    symbol). A rocker's ψ in degrees, its analogues dψ/dφ, d²ψ/dφ² with both angles in radians:
+    pure numbers (rad/rad), no mixed °/rad."""
     if des.spec.motion == "rocking":
-        return math.degrees(1.0), "°", WORDS("u_deg_rad"), WORDS("u_deg_rad2"), "ψ"
+        return math.degrees(1.0), 1.0, "°", "1", "1", "ψ"
     mm = WORDS("u_mm")
-    return MM, mm, mm, mm, "S"
+    return MM, MM, mm, mm, mm, "S"
 
 
 def _phi_axis() -> AxisSpec:
@@ -145,7 +161,7 @@ def _phi_axis() -> AxisSpec:
 
 def _laws(des: CamDesign) -> list[Diagram]:
     prog = des.spec.program
-    f, u0, u1, u2, sym = _law_values(des)
+    f0, f1, u0, u1, u2, sym = _law_values(des)
     phi = np.linspace(0.0, 2.0 * math.pi, 1441)
     m = prog.motion(phi)
     div = des.divisions
@@ -156,21 +172,29 @@ def _laws(des: CamDesign) -> list[Diagram]:
     s2_g = np.diff(s1_g) / np.diff(mid)
     mid2 = (mid[:-1] + mid[1:]) / 2.0
     rows = [
-        (f"{sym}(φ)", u0, m.S, None, None, WORDS("what_S")),
-        (f"d{sym}/dφ", u1, m.S1, mid, s1_g, WORDS("what_S1")),
-        (f"d^2{sym}/dφ^2", u2, m.S2, mid2, s2_g, WORDS("what_S2")),
+        (f"{sym}(φ)", u0, f0, m.S, None, None, WORDS("what_S")),
+        (f"d{sym}/dφ", u1, f1, m.S1, mid, s1_g, WORDS("what_S1")),
+        (f"d^2{sym}/dφ^2", u2, f1, m.S2, mid2, s2_g, WORDS("what_S2")),
     ]
     out = []
-    for name, unit, exact, gx, gy, what in rows:
+    for name, unit, f, exact, gx, gy, what in rows:
         curves = [Curve(np.degrees(phi), exact * f, "link")]
         extra = None
         if gy is not None and gx is not None:
             curves.append(Curve(np.degrees(gx), gy * f, "locus", points=True))
         else:
 
-            def extra(g: Graph) -> None:
+            def extra(g: Graph, f: float = f) -> None:
+                top = float(np.max(np.abs(div.S))) * f
                 for i, (a, b) in enumerate(zip(np.degrees(div.phi), div.S * f, strict=True)):
-                    g.ordinate(float(a), float(b), str(i) if i < len(div.phi) - 1 else "")
+                    text = str(i) if i < len(div.phi) - 1 else ""
+                    if abs(float(b)) > ON_AXIS * top:
+                        g.ordinate(float(a), float(b), text)
+                    elif text:
+                        # a point on the axis (a dwell at the bottom): its number lifted off
+                        # the axis, clear of the row of the tick labels under it
+                        x, y = g.p(float(a), float(b))
+                        g.d.label((x, y - NUMBER_LIFT), text, 2.5, prefer=(0.0, -1.0))
 
         key = "graph_exact" if gy is not None else "graph_plain"
         out.append(
@@ -404,6 +428,8 @@ def _profile(v: Viewport, des: CamDesign) -> None:
         for i in range(n):
             v.seg(Vec(*Ai[i]), Vec(*pitch[i]), "construction")
             v.dot(Vec(*Ai[i]), "point")
+            # the pivot A turned back by −φ_i (the order of construction's A_i), outward
+            v.label(Vec(*Ai[i]), f"A_{{{i}}}", height=2.5, prefer=(Ai[i][0], Ai[i][1]))
     # the radius vectors run from the centre's letter to the division points: where twenty of
     # them meet, O sits in their widest gap with the rays begun just past it
     start = k.model(O_ROOM)
@@ -415,11 +441,47 @@ def _profile(v: Viewport, des: CamDesign) -> None:
         v.dot(B, "point")
         # outward first: inside the roller's circle, clear of the crowd of rays near O
         v.label(B, str(i), height=2.5, prefer=(B.x, B.y))
+    _senses(v, des)
     ang = np.sort(np.arctan2(contact[:n, 1], contact[:n, 0]))
     gaps = np.diff(np.append(ang, ang[0] + 2.0 * math.pi))
     j = int(np.argmax(gaps))
     mid = float(ang[j] + gaps[j] / 2.0)
     v.label(o, "O", prefer=(math.cos(mid), math.sin(mid)), clear=1.0)
+
+
+def _sense_radius(des: CamDesign, angle: float) -> float:
+    """The radius (model) of an arc of ω or −ω about ``angle``: just outside the rollers (the
+    faces) within 45° of that direction."""
+    prof = des.profile
+    pts = np.vstack([prof.contact, prof.pitch])
+    r = np.hypot(pts[:, 0], pts[:, 1])
+    off = np.abs(np.remainder(np.arctan2(pts[:, 1], pts[:, 0]) - angle + math.pi, 2 * math.pi))
+    near = np.abs(off - math.pi) <= math.radians(45.0)
+    reach = float(np.max(r[near] if near.any() else r))
+    return SENSE_OUT * (reach + des.r_roller)
+
+
+def _senses(v: Viewport, des: CamDesign) -> None:
+    """The cam's ω (its sense of rotation, as the data table gives it) and −ω, the sense in
+    which the follower is turned back in the inversion: arcs about O just outside the profile
+    with its rollers, towards the view's empty corners (upper left, lower right)."""
+    from geomcad.geom import Arc, Circle
+    from geomcad.sheet.drawing import ARROW_LEN
+
+    k = v.scale
+    o = Vec(0.0, 0.0)
+    s = des.spec.sigma
+    sweep = math.radians(30.0)
+    for sense, start, name in ((s, math.radians(135.0), "ω"), (-s, math.radians(315.0), "−ω")):
+        r = _sense_radius(des, start)
+        # the arrow's last straight piece (a vector twice its head and more), as an angle
+        head = 2.2 * k.model(ARROW_LEN) / r
+        a0 = start - sense * sweep / 2.0
+        a1 = start + sense * sweep / 2.0
+        lo, hi = sorted((a0, a1 - sense * head))
+        v.arc(Arc(Circle(o, r), lo, hi), "vector")
+        v.arrow(Vec.polar(r, a1 - sense * head), Vec.polar(r, a1))
+        v.label(Vec.polar(r, start), name, prefer=(math.cos(start), math.sin(start)))
 
 
 def _ray(v: Viewport, a: Vec, b: Vec, room: float) -> None:

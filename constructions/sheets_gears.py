@@ -16,7 +16,6 @@ other candidates in a table.
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -113,6 +112,15 @@ def _planetary_sized(sol: Solution[GearsDesign]) -> tuple[Tree, Figure, Sized]:
     return tree, scheme, choose(tree, {scheme: want}, sheet_formats(sol.problem.inputs or {}))
 
 
+def designation(sol: Solution[Any]) -> str:
+    """The document's designation from its file's name (as a linkage file's), so that every
+    design file is its own document; ``designation`` in [sheet] or ``--designation`` override
+    it."""
+    from geomcad.documents import stem
+
+    return WORDS("designation", stem=stem(sol.problem.id))
+
+
 def scales(sol: Solution[GearsDesign]) -> dict[str, float]:
     """k_l of the meshing drawing (or of the planetary scheme), as the layout chooses it
     (``Problem.scales``)."""
@@ -145,7 +153,7 @@ def _pair_sheet(sol: Solution[GearsDesign], des: GearsDesign) -> Sheet:
     assert k is not None
     tb = TitleBlock(
         title=WORDS("tb_pair"),
-        designation=WORDS("designation"),
+        designation=designation(sol),
         scale=k.ratio_text(),
         sheets=2 if des.spec.planetary is not None else 1,
     )
@@ -155,18 +163,17 @@ def _pair_sheet(sol: Solution[GearsDesign], des: GearsDesign) -> Sheet:
 
 
 def _mesh(v: Viewport, p: gd.GearPair, me: gd.Meshing) -> None:
-    """The meshing drawing: the circles as arcs over the drawn field (the tip circle thick only
-    along the drawn teeth, thin beyond them), the teeth, the working parts of the flanks, the
-    line of centres and the line of action with its active part."""
+    """The meshing drawing: the circles as thin arcs over the drawn field, the teeth, the
+    working parts of the flanks, the line of centres, the line of action with its active part
+    and the angle α_w between it and the common tangent at P, the wheels' numbers and their
+    angular velocities (the pinion driving clockwise: the contact runs from a to b)."""
     x0, _, x1, _ = _mesh_box(p, me)
     O1, O2 = Vec(0.0, 0.0), Vec(0.0, p.a_w)
     half_w = max(abs(x0), abs(x1)) * 1.05
-    for centre, g, d_w, up, teeth in (
-        (O1, p.gear1, p.d_w1, True, me.teeth1),
-        (O2, p.gear2, p.d_w2, False, me.teeth2),
-    ):
+    for centre, g, d_w, up in ((O1, p.gear1, p.d_w1, True), (O2, p.gear2, p.d_w2, False)):
         mid = math.pi / 2.0 if up else -math.pi / 2.0
-        span = _teeth_span(teeth, centre)
+        # every circle thin (the pitch and rolling circles dash-dot): the tip lands are drawn
+        # with the teeth, and a thick tip arc across a space would cross the other wheel's tooth
         for r, role in (
             (g.r_a, "thin"),
             (g.d / 2.0, "centre"),
@@ -177,17 +184,7 @@ def _mesh(v: Viewport, p: gd.GearPair, me: gd.Meshing) -> None:
             if r <= half_w:
                 continue
             half = math.asin(min(1.0, half_w / r))
-            lo_a, hi_a = mid - half, mid + half
-            if r == g.r_a:
-                # thin beyond the drawn teeth, thick (their tip lands and the gaps) along them
-                t0, t1 = max(lo_a, span[0]), min(hi_a, span[1])
-                if t0 < t1:
-                    v.arc(Arc(Circle(centre, r), t0, t1), "link")
-                    for u0, u1 in ((lo_a, t0), (t1, hi_a)):
-                        if u1 > u0:
-                            v.arc(Arc(Circle(centre, r), u0, u1), "thin")
-                    continue
-            v.arc(Arc(Circle(centre, r), lo_a, hi_a), role)
+            v.arc(Arc(Circle(centre, r), mid - half, mid + half), role)
         v.centre_cross(centre, 6.0)
     for tooth in [*me.teeth1, *me.teeth2]:
         v.polyline(list(tooth), "link")
@@ -214,16 +211,23 @@ def _mesh(v: Viewport, p: gd.GearPair, me: gd.Meshing) -> None:
     ):
         v.dot(q, "point")
         v.label(q, name, prefer=pref)
+    # the common tangent of the rolling circles at P and the angle α_w from it to the line of
+    # action, dimensioned by an arc
+    # (its arc beyond the tooth next to P, where the wedge between the two lines is wide
+    # enough for the text: 3.75 modules, ≈ 1.7 tooth heights)
+    r_dim = max(25.0, v.scale.mm(3.75 * p.m))
+    v.seg(P - Vec(v.scale.model(12.0), 0.0), P + Vec(v.scale.model(r_dim + 8.0), 0.0), "thin")
     a_w = fmt_number(math.degrees(p.alpha_w), digits=4)
-    # the angle of action, written along the line of action beyond P (P itself is crowded)
-    v.label(P + t * v.scale.model(30.0), f"α_w = {a_w}°", 2.5, prefer=(1.0, -1.0), clear=0.5)
-
-
-def _teeth_span(teeth: Sequence[np.ndarray], centre: Vec) -> tuple[float, float]:
-    """The angles (from the centre, counter-clockwise) between which the teeth are drawn."""
-    pts = np.vstack(list(teeth))
-    ang = np.arctan2(pts[:, 1] - centre.y, pts[:, 0] - centre.x)
-    return float(ang.min()), float(ang.max())
+    v.dim_angle(P, P + t, P + Vec(1.0, 0.0), f"α_w = {a_w}°", r_mm=r_dim, height=2.5)
+    # the wheels' numbers and angular velocities: the pinion 1 clockwise drives the contact
+    # point from a (on the wheel's tip circle) to b (on its own); the wheel 2 turns back
+    off = v.scale.model(16.0)
+    for centre, name, sense, start, side in (
+        (O1, "1", -1.0, 250.0, 1.0),
+        (O2, "2", 1.0, 160.0, -1.0),
+    ):
+        v.label(centre + Vec(off, side * off), name, 5.0, prefer=(1.0, side))
+        v.turn(centre, sense, start, f"ω_{name}", r_mm=12.0, sweep_deg=90.0)
 
 
 #: Labels of the blocking contour's lines: formulas, or a key of the table (``limit_*``).
@@ -252,7 +256,12 @@ def _contour(p: gd.GearPair, sa_min: float, eps_min: float) -> Diagram:
                 continue
             for a1, a2, b1, b2 in segs:
                 g.curve([a1, b1], [a2, b2], "construction")
-            mid = segs[len(segs) // 2]
+            # the label by the line's middle segment, or the nearest to it clear of the chosen
+            # shifts (the point x1, x2 has its own label)
+            n = len(segs)
+            order = sorted(range(n), key=lambda i: abs(i - n // 2))
+            clear = [i for i in order if math.hypot(segs[i][0] - p.x1, segs[i][1] - p.x2) > 0.25]
+            mid = segs[(clear or order)[0]]
             g.point(mid[0], mid[1], _limit_text(key), role="construction")
         g.point(p.x1, p.x2, "x_1, x_2", role="result", prefer=(1.0, 1.0))
 
@@ -393,19 +402,15 @@ def _planetary_tree(des: GearsDesign) -> tuple[Tree, Figure]:
     top, span = _radii(des)
     pts, start_link, start_pt = _plan_points(pp.scheme, z, m)
     by = {q.name: q.y for q in pts}
-    scheme = Figure(
-        (-0.1 * span, -top, span * 1.08, top),
-        lambda v: _scheme(v, pp.scheme, z, m, by, span),
-        group="l",
-        weight=2.0,
-    )
-    plan = Figure(
-        (-0.6 * top, -top, 0.6 * top, top),
-        lambda v: _plan(v, pp, pts, start_link, start_pt, by, (0.6 * top, top)),
-        title=WORDS("plan_title"),
-        show_scale=False,
-        group="l",
-    )
+    # Smirnov's plan in projection from the scheme: one view, one length scale, the plan's
+    # points o, a, b, c at the heights of O, A, B, C, its axis beside the scheme
+    x_plan = span * 1.08 + 0.75 * top
+
+    def draw(v: Viewport) -> None:
+        _scheme(v, pp.scheme, z, m, by, span)
+        _plan(v, pp, pts, start_link, start_pt, by, (0.6 * top, top), x_plan)
+
+    scheme = Figure((-0.1 * span, -top, x_plan + 0.6 * top, top), draw, group="l", weight=2.0)
     names = ["z_1", "z_2", "z_3"] if pp.scheme == "A" else ["z_1", "z_2", "z_3", "z_4"]
     rows = [["", *names, "u", WORDS("h_error")]]
     for cand in des.candidates:
@@ -420,9 +425,7 @@ def _planetary_tree(des: GearsDesign) -> tuple[Tree, Figure]:
     texts = (_willis(des, pts, start_link, start_pt), WORDS("conditions"))
     notes = [Text(paragraph=t, width=PLANETARY_NOTE_W) for t in texts]
     # the scheme's title over both views: it states their one length scale
-    views = Row(
-        scheme, plan, title=WORDS("scheme_title", scheme=pp.scheme, k=pp.planets), group="l"
-    )
+    views = Column(scheme, title=WORDS("scheme_title", scheme=pp.scheme, k=pp.planets), group="l")
     # the tables beside the views, or under them
     beside = Row(views, Column(teeth, *notes))
     return Choice(beside, Column(views, Row(teeth, Column(*notes)))), scheme
@@ -469,7 +472,7 @@ def _planetary_sheet(sol: Solution[GearsDesign], des: GearsDesign, no: int) -> S
     assert k is not None
     tb = TitleBlock(
         title=WORDS("tb_planetary"),
-        designation=WORDS("designation"),
+        designation=designation(sol),
         scale=k.ratio_text(),
         sheet_no=no,
         sheets=no,
@@ -487,14 +490,17 @@ def _plan(
     start_pt: str,
     by: dict[str, float],
     room: tuple[float, float],
+    x0: float,
 ) -> None:
-    """Smirnov's plan on the scheme's radii (its axis at the view's centre), the velocity
-    factor written over it, and the angle diagram below the central axis."""
+    """Smirnov's plan on the scheme's radii (its axis at the model abscissa ``x0`` beside the
+    scheme, each point at its point's height), the velocity factor and the title written over
+    it, each link's velocity line named, and the angle diagram below the central axis with its
+    pole distance H and factor μ_ω."""
     d = pv.d
     k = pv.scale
     half = room[0]
     half_mm = k.mm(half)
-    px, y_base = pv.p(Vec(0.0, 0.0))
+    px, y_base = pv.p(Vec(x0, 0.0))
     H_mm = 35.0
     plan, rp, fixed = _angles(pp, pts, start_link, start_pt, by, H_mm * k.k)
     vmax = max(abs(e.x) for e in plan.ends.values()) or 1.0
@@ -507,7 +513,9 @@ def _plan(
     top_y = min(sheet_y.values()) - 10.0
     # the factor over the plan's axis (not at the top of the view's room: the plan spans the
     # radii of the train, the room the whole scheme's height)
-    d.text(WORDS("plan_factor", label=kv.label()), (pv.p(Vec(-half, 0.0))[0], top_y - 3.0), 3.5)
+    left = pv.p(Vec(x0 - half, 0.0))[0]
+    d.text(WORDS("plan_factor", label=kv.label()), (left, top_y - 3.0), 3.5)
+    d.text(WORDS("plan_title"), (left, top_y - 9.0), 3.5)
     d.sheet.add(_line((px, y_base + 5.0), (px, top_y)))
     for name, e in plan.ends.items():
         sx = px + e.x / kv.k
@@ -523,8 +531,11 @@ def _plan(
         if len(ends) >= 2:
             lo_e = min(ends, key=lambda e: e.y)
             hi_e = max(ends, key=lambda e: e.y)
-            d.sheet.add(_line((px + lo_e.x / kv.k, sheet_y_of(pv, lo_e.y)),
-                              (px + hi_e.x / kv.k, sheet_y_of(pv, hi_e.y)), "link"))  # fmt: skip
+            a = (px + lo_e.x / kv.k, sheet_y_of(pv, lo_e.y))
+            b = (px + hi_e.x / kv.k, sheet_y_of(pv, hi_e.y))
+            d.sheet.add(_line(a, b, "link"))
+            # the link's name by the middle of its velocity line
+            d.label(((a[0] + b[0]) / 2.0, (a[1] + b[1]) / 2.0), link, 3.5)
     # the angle diagram below the plan: rays ∥ each link's line from the pole S
     S_sheet = (px, y_base + 15.0 + H_mm)
     for link in rp.ends:
@@ -532,8 +543,13 @@ def _plan(
         end = (px + w * H_model / kv.k, S_sheet[1] - H_mm)
         d.sheet.add(_line(S_sheet, end, "construction"))
         d.label(end, f"ω_{{{link}}}", 2.5)
-    d.sheet.add(_line((px - 60.0, S_sheet[1] - H_mm), (px + 60.0, S_sheet[1] - H_mm), "thin"))
+    axis_y = S_sheet[1] - H_mm
+    d.sheet.add(_line((px - half_mm, axis_y), (px + half_mm, axis_y), "thin"))
     d.label(S_sheet, "S", 3.5)
+    # the pole distance and the angular-velocity factor μ_ω = μ_V / (μ_l·H)
+    mu_w = fmt_number(kv.k / (k.k * H_mm), digits=3)
+    d.text(WORDS("rays_factor", H=fmt_number(H_mm, digits=3), mu=mu_w),
+           (px - half_mm, S_sheet[1] + 8.0), 3.5)  # fmt: skip
 
 
 def _scheme(

@@ -344,36 +344,79 @@ def test_a_format_the_file_asks_for_is_checked(capsys: pytest.CaptureFixture[str
     assert code == 2 and err.startswith("error: ") and "sheet.format" in err and "A1" in err
 
 
-def test_gear_tip_circle_is_thick_only_along_the_drawn_teeth() -> None:
-    from geomcad_constructions.sheets_gears import _mesh, _teeth_span
+def test_meshed_teeth_touch_on_the_line_of_action_and_never_overlap() -> None:
+    """The drawn teeth of the two wheels (each closed to its centre) share no area, touch
+    (backlash-free meshing: the pinion's middle tooth on both flanks) and the contact of the
+    drawn line of action lies on it; a wheel turned by a tenth of a pitch overlaps (the check
+    can fail)."""
+    from shapely.geometry import MultiLineString, Polygon
+    from shapely.ops import nearest_points, unary_union
+
+    from geomcad.kinematics import gear_design as gd
+
+    sol = solution("gear-pair")
+    p, me = sol.data.pair, sol.data.meshing
+    m = p.m
+
+    def body(teeth: list[np.ndarray], centre: tuple[float, float]) -> object:
+        return unary_union([Polygon([*t.tolist(), centre]) for t in teeth])
+
+    one = body(me.teeth1, (0.0, 0.0))
+    two = body(me.teeth2, (0.0, p.a_w))
+    assert one.intersection(two).area < 1e-6 * m * m
+    mid = me.teeth1[1]
+    P = me.P
+    for side in (1.0, -1.0):  # each flank of the middle tooth touches the wheel
+        flank = MultiLineString([mid[mid[:, 0] * side > 0.0].tolist()])
+        wheel = MultiLineString([t.tolist() for t in me.teeth2])
+        assert flank.distance(wheel) < 1e-3 * m
+        if side > 0.0:  # the right flank's contact is on the drawn line N1N2 (the flanks are
+            # tangent there: the nearest points of the polylines find it to a few µm)
+            d = np.array(nearest_points(flank, wheel)[0].coords[0]) - P
+            assert abs(float(me.t[0] * d[1] - me.t[1] * d[0])) < 0.02 * m
+    # gd.place turns the tooth's frame (+y) to the given angle: +y → +y turned by a tenth pitch
+    turned = gd.place(
+        me.teeth2[1] - [0.0, p.a_w], (0.0, p.a_w), math.pi / 2.0 + 0.2 * math.pi / p.z2
+    )
+    assert one.intersection(Polygon([*turned.tolist(), (0.0, p.a_w)])).area > 1e-3 * m * m
+
+
+def test_gear_circles_are_thin_and_alpha_w_is_an_angle_dimension() -> None:
+    """No thick tip arc across a space (it would read as the other wheel's outline crossing
+    the teeth); α_w dimensioned at P; both wheels numbered with their ω."""
+    from geomcad_constructions.sheets_gears import _mesh
 
     from geomcad.geom import Arc
 
     class Recorder:
-        """A viewport that keeps the arcs drawn and ignores the rest."""
+        """A viewport that keeps the arcs, angle dimensions, labels and turns drawn."""
 
         def __init__(self) -> None:
             self.arcs: list[tuple[Arc, str]] = []
+            self.calls: list[tuple[str, tuple[object, ...]]] = []
             self.scale = Scale(0.00025, "l")
 
         def arc(self, arc: Arc, role: str) -> None:
             self.arcs.append((arc, role))
 
         def __getattr__(self, name: str) -> object:
-            return lambda *a, **k: None
+            return lambda *a, **k: self.calls.append((name, a))
 
     sol = solution("gear-pair")
     p, me = sol.data.pair, sol.data.meshing
     v = Recorder()
     _mesh(v, p, me)  # type: ignore[arg-type]
-    for gear, teeth in ((p.gear1, me.teeth1), (p.gear2, me.teeth2)):
-        tips = [(a, r) for a, r in v.arcs if abs(a.circle.r - gear.r_a) < 1e-12]
-        lo, hi = _teeth_span(teeth, tips[0][0].circle.c)
-        thick = [a for a, r in tips if r == "link"]
-        assert thick, "no thick tip arc"
-        for a in thick:  # thick only along the teeth
-            assert lo - 1e-9 <= a.start and a.end <= hi + 1e-9
-        assert {r for _, r in tips} == {"link", "thin"}  # thin beyond them
+    assert v.arcs and {r for _, r in v.arcs} <= {"thin", "centre"}
+    dims = [a for n, a in v.calls if n == "dim_angle"]
+    assert len(dims) == 1 and "α_w" in str(dims[0][3])
+    vertex, q1, q2 = (np.array([float(c.x), float(c.y)]) for c in dims[0][:3])  # type: ignore[attr-defined]
+    u1, u2 = q1 - vertex, q2 - vertex
+    ang = math.acos(float(u1 @ u2) / float(np.hypot(*u1) * np.hypot(*u2)))
+    assert np.allclose(vertex, me.P) and ang == pytest.approx(p.alpha_w, abs=1e-12)
+    labels = {str(a[1]) for n, a in v.calls if n == "label"}
+    assert {"1", "2"} <= labels
+    turns = sorted((str(a[3]), float(a[1])) for n, a in v.calls if n == "turn")  # type: ignore[arg-type]
+    assert turns == [("ω_1", -1.0), ("ω_2", 1.0)]
 
 
 def test_library_solve_takes_a_file_and_its_sheet_scales_come_from_the_sheet() -> None:
@@ -408,3 +451,91 @@ def test_cam_order_of_construction_is_the_recorded_steps(name: str) -> None:
         assert len(numbered) == len(listed)
         value = f"{float(sol.results['r0']) * 1000:g}"  # type: ignore[arg-type]
         assert r0.format(value) in text
+
+
+def test_every_design_file_is_its_own_document() -> None:
+    """The designation (графа 2) from the file's name, one per file, in either language."""
+    from geomcad_constructions import sheets_cam, sheets_gears
+
+    from geomcad.sheet.lang import language
+
+    for lang in ("ru", "en"):
+        with language(lang):
+            got = {
+                n: (sheets_gears if n in ("gear-pair", "planetary") else sheets_cam).designation(
+                    solution(n)
+                )
+                for n in ALL
+            }
+        assert len(set(got.values())) == len(ALL)
+        assert all(n in d for n, d in got.items())
+
+
+def test_planetary_plan_is_projected_from_the_scheme() -> None:
+    """Smirnov's plan in the scheme's viewport: o, a, b, c at the heights of O, A, B, C, each
+    link's velocity line named, the ray diagram's H and μ_ω written."""
+    from geomcad_constructions import sheets_gears as sg
+
+    sol = solution("planetary")
+    des = sol.data
+    pp = des.spec.planetary
+    pts, link, pt = sg._plan_points(pp.scheme, des.candidates[0].z, pp.m)
+    by = {q.name: q.y for q in pts}
+    k = Scale(0.002, "l")
+    labels: list[tuple[tuple[float, float], str]] = []
+    texts: list[str] = []
+
+    class D:
+        sheet = type("S", (), {"add": staticmethod(lambda item: None)})()
+
+        def label(self, at: tuple[float, float], text: str, *a: object, **kw: object) -> None:
+            labels.append((at, text))
+
+        def text(self, text: str, *a: object, **kw: object) -> None:
+            texts.append(text)
+
+    class V:
+        d = D()
+        scale = k
+
+        def p(self, q: object) -> tuple[float, float]:
+            return (100.0 + k.mm(q.x), 200.0 - k.mm(q.y))  # type: ignore[attr-defined]
+
+    top = 0.2
+    sg._plan(V(), pp, pts, link, pt, by, (0.6 * top, top), 0.5)  # type: ignore[arg-type]
+    at = {t: xy for xy, t in labels}
+    for name, y in by.items():
+        assert at[name.lower()][1] == pytest.approx(200.0 - k.mm(y))
+    assert {"1", "2", "H"} <= set(at)
+    assert any("μ_ω" in t and "H = " in t for t in texts)
+
+
+@pytest.mark.parametrize("name", ["cam-rocking-roller", "cam-translating-roller"])
+def test_cam_profile_shows_omega_and_the_inversion_and_names_the_pivots(name: str) -> None:
+    """ω in the cam's sense (the data table's), −ω against it; a rocker's turned pivots A_i."""
+    from geomcad_constructions import sheets_cam
+
+    class Recorder:
+        def __init__(self) -> None:
+            self.calls: list[tuple[str, tuple[object, ...]]] = []
+            self.scale = Scale(0.001, "l")
+
+        def __getattr__(self, attr: str) -> object:
+            return lambda *a, **k: self.calls.append((attr, a))
+
+    sol = solution(name)
+    des = sol.data
+    v = Recorder()
+    sheets_cam._profile(v, des)  # type: ignore[arg-type]
+    labels = [str(a[1]) for n, a in v.calls if n == "label"]
+    arrows = [a for n, a in v.calls if n == "arrow"]
+    senses = []
+    for tail, tip in ((a[0], a[1]) for a in arrows):
+        senses.append(np.sign(tail.x * tip.y - tail.y * tip.x))  # type: ignore[attr-defined]
+    named = [lab for lab in labels if lab in ("ω", "−ω")]
+    assert named == ["ω", "−ω"] and senses == [des.spec.sigma, -des.spec.sigma]
+    n = len(des.divisions.phi) - 1
+    pivots = {f"A_{{{i}}}" for i in range(n)}
+    assert (pivots <= set(labels)) == (des.spec.motion == "rocking")
+    _, _, *units, _ = sheets_cam._law_values(des)
+    assert "°/" not in "".join(units)  # no mixed ° and rad in the analogues' units
