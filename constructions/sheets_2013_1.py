@@ -348,7 +348,7 @@ def _position(v: Viewport, geo: Geometry) -> None:
     path = Line(up.perp() * geo.h, up)
     v.line_over(path, [q.M for q in geo.zeros] + [path.foot(O_)], "centre", over=18.0)
     # the other zero position (GOST 2.303: thin two-dot lines): lever 1's slot outline and its
-    # arm from O, the slot's axis, the point M* where it touches the circle
+    # arm from O, the point M* where it touches the circle (named inside the outline)
     for i, q in enumerate(geo.zeros):
         if i == geo.built:
             continue
@@ -357,11 +357,10 @@ def _position(v: Viewport, geo: Geometry) -> None:
         a, b = q.M - q.u1 * (0.6 * e), q.L
         v.polyline(_slot_corners(a, b, r), "extreme", closed=True)
         v.seg(O_, q.M - nq * (sq * r), "extreme")
-        v.seg(a - q.u1 * (0.3 * e), b + q.u1 * (0.3 * e), "centre")
         v.dot(q.M, "result")
-        v.label(q.M, "M*", prefer=(1.0, 0.0), clear=r / k.k + 0.5)
+        v.label(q.M, "M*", height=2.5, prefer=(q.u1.x, q.u1.y))
         tq = _num(math.degrees(q.theta1) % 360.0, digits=5)
-        v.label(b + q.u1 * (0.3 * e), f"θ_1 = {tq}°", height=2.5, prefer=(1.0, -1.0))
+        v.label(b, f"θ_1 = {tq}°", height=2.5, prefer=(1.0, -1.0))
     # the built position: lever 1 with its slot tangent to the circle at M
     n1 = z.u1.perp()
     side = 1.0 if n1.dot(z.M) > 0.0 else -1.0
