@@ -87,7 +87,7 @@ def _position_points(geo: Geometry) -> list[Vec]:
     out = [Vec(-e, -e), Vec(e, e), z.L, z.M - z.u1 * (0.6 * e)]
     out += [z.M + up * (1.7 * e), z.M - up * (0.4 * e)]
     for q in geo.zeros:
-        out += [q.M + q.u1 * (0.9 * e), q.M - q.u1 * (0.9 * e)]
+        out += [q.L + q.u1 * (0.3 * e), q.M - q.u1 * (0.9 * e)]
     return out
 
 
@@ -142,9 +142,11 @@ class _Views:
             self.before, WORDS("before_title", n=geo.before.n, p5=geo.before.p5, p4=geo.before.p4)
         )
         _caption(self.after, WORDS("after_title", n=rep.n, p5=rep.p5, p4=rep.p4))  # fmt: skip
+        t1 = _num(math.degrees(geo.theta1) % 360.0, digits=5)
         schemes = Row(
-            self.before, self.after, weights=(1.0, 1.0), title=WORDS("schemes_title"), group="s"
-        )
+            self.before, self.after, weights=(1.0, 1.0), title=WORDS("schemes_title", th=t1),
+            group="s",
+        )  # fmt: skip
         groups = Column(*_groups(geo), title=WORDS("groups_title"), group="g")
         self.position = Figure(
             _box(_position_points(geo)),
@@ -157,7 +159,6 @@ class _Views:
         pts = geo.points
         z = geo.zeros[geo.built]
         th = _num(math.degrees(z.theta1) % 360.0, digits=5)
-        t1 = _num(math.degrees(geo.theta1) % 360.0, digits=5)
         vt = _num(float(pts["m6"].dot(Vec(math.cos(geo.psi), math.sin(geo.psi)))), digits=5)
         origin = Vec(0.0, 0.0)
         self.plan_zero = Figure(
@@ -273,7 +274,7 @@ def _groups(geo: Geometry) -> list[V.Scheme]:
         (WORDS("primary", frame=dec.frame, link=p.link), (p.link,)) for p in dec.primary
     ]
     for g in dec.groups:
-        kind = f", {g.kind}" if g.kind else ""
+        kind = f", {_group_kind(g.kind)}" if g.kind else ""
         caption = WORDS("group", links=", ".join(g.links), cls=g.roman, order=g.order, kind=kind)
         parts.append((caption, g.links))
     bodies = _bodies(geo, roller=False)
@@ -346,15 +347,20 @@ def _position(v: Viewport, geo: Geometry) -> None:
     v.circle(O_, e, "construction")
     path = Line(up.perp() * geo.h, up)
     v.line_over(path, [q.M for q in geo.zeros] + [path.foot(O_)], "centre", over=18.0)
-    # the other zero position: its slot as a two-dot line
+    # the other zero position (GOST 2.303: thin two-dot lines): lever 1's slot outline and its
+    # arm from O, the point M* where it touches the circle (named inside the outline)
     for i, q in enumerate(geo.zeros):
         if i == geo.built:
             continue
-        v.seg(q.M - q.u1 * (0.9 * e), q.M + q.u1 * (0.9 * e), "extreme")
+        nq = q.u1.perp()
+        sq = 1.0 if nq.dot(q.M) > 0.0 else -1.0
+        a, b = q.M - q.u1 * (0.6 * e), q.L
+        v.polyline(_slot_corners(a, b, r), "extreme", closed=True)
+        v.seg(O_, q.M - nq * (sq * r), "extreme")
         v.dot(q.M, "result")
-        v.label(q.M, "M'", prefer=(1.0, 0.0))
+        v.label(q.M, "M*", height=2.5, prefer=(q.u1.x, q.u1.y))
         tq = _num(math.degrees(q.theta1) % 360.0, digits=5)
-        v.label(q.M + q.u1 * (0.9 * e), f"θ_1 = {tq}°", height=2.5, prefer=(1.0, -1.0))
+        v.label(b, f"θ_1 = {tq}°", height=2.5, prefer=(1.0, -1.0))
     # the built position: lever 1 with its slot tangent to the circle at M
     n1 = z.u1.perp()
     side = 1.0 if n1.dot(z.M) > 0.0 else -1.0
@@ -375,7 +381,7 @@ def _position(v: Viewport, geo: Geometry) -> None:
     _right_angle(v, z.M, O_, z.L, r / k.k + 5.0)
     v.dot(z.L, "result")
     v.label(O_, "O", prefer=(-1.0, -1.0), clear=3.0)
-    v.label(z.M, "M", prefer=(1.0, 1.0), clear=r / k.k + 0.5)
+    v.label(z.M, "M*", prefer=(1.0, 1.0), clear=r / k.k + 0.5)
     v.label(z.L, "L", prefer=(0.0, 1.0))
     v.label(z.M + up * (1.6 * e), "7", prefer=(1.0, 0.0))
     v.label(z.M - z.u1 * r, "6", prefer=(-z.u1.x, -z.u1.y), clear=0.5)
@@ -431,6 +437,11 @@ def _plan_given(v: Viewport, geo: Geometry) -> None:
 
 def _kind(kind: str) -> str:
     return WORDS(f"kind_{kind}")
+
+
+def _group_kind(kind: str) -> str:
+    """An Assur group's kind (RRR, PRP, …) in the language's letters (ВВВ, ПВП, … in Russian)."""
+    return "".join(WORDS(f"pair_letter_{ch}") for ch in kind)
 
 
 def _link_name(lk: Link) -> str:
@@ -490,7 +501,7 @@ def _panel(sol: Solution[Geometry], geo: Geometry) -> list[View]:
     for pm in dec.primary:
         rows.append([WORDS("primary_row"), f"0, {pm.link}", pm.pair, "I", "–", "–"])
     for i, g in enumerate(dec.groups):
-        kind = f"{g.kind} ({g.kind_no})" if g.kind else "–"
+        kind = f"{_group_kind(g.kind)} ({g.kind_no})" if g.kind else "–"
         rows.append(
             [f"{i + 1}", ", ".join(g.links), ", ".join(g.pairs), g.roman, str(g.order), kind]
         )

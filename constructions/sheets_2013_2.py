@@ -38,7 +38,7 @@ from geomcad.sheet.compose import (
     arrange,
     compose,
 )
-from geomcad.sheet.drawing import ARROW_LEN, SHORT_MM
+from geomcad.sheet.drawing import ARROW_LEN, DOT_R, SHORT_MM
 from geomcad.sheet.graph import Graph
 from geomcad.sheet.lang import Words, current, per_language
 from geomcad.sheet.text import wrap
@@ -199,7 +199,8 @@ def _profile(v: Viewport, sol: Solution[Geometry]) -> None:
         elif f.kind == "roller":
             v.circle(C, f.r_roller, "construction")
         v.dot(C, "point")
-        v.arrow(o, B, "result")
+        # the radius vector r_i = OB_i: a thin construction line (its length is written on it)
+        v.seg(o, B, "construction")
         if i in shown:
             v.label(B, f"B_{{{i}}}", height=2.5, prefer=(up.x, up.y))
     if f.kind != "flat" and f.e != 0.0:
@@ -212,7 +213,7 @@ def _profile(v: Viewport, sol: Solution[Geometry]) -> None:
     v.label(o, "O", prefer=(-1.0, -1.0), clear=1.0)
     # the inversion: the follower turns about O against the cam's rotation
     _turn_arrow(v, 0.55 * f.r0, 125.0, 165.0, -f.sigma, WORDS("minus_omega"))
-    # the radius vectors, dimensioned as radii: the line from o, its arrow at B_i, the value
+    # the radius vectors' lengths, written along them
     for i in sorted(shown):
         B = Vec(*div.contact[i])
         text = f"r_{{{i}}} = {_n(float(div.radius[i]) * MM)}"
@@ -281,7 +282,16 @@ def _diagrams(sol: Solution[Geometry]) -> list[V.Diagram]:
 
         def ordinates(g: Graph, at_div: np.ndarray = at_div) -> None:
             for i in range(n):
-                g.ordinate(float(div.phi[i]), float(at_div[i]), str(i) if i % step == 0 else "")
+                x, y = float(div.phi[i]), float(at_div[i])
+                mark = str(i) if i % step == 0 else ""
+                if x != g.x.zero or not mark:
+                    g.ordinate(x, y, mark)
+                    continue
+                # a division point on the ordinate axis: its number inside, right of the axis, not
+                # over it where it would read as a tick value
+                g.ordinate(x, y)
+                up = -1.0 if y >= g.y.zero else 1.0
+                g.d.label(g.p(x, y), mark, 2.5, prefer=(1.0, -up), clear=DOT_R)
 
         out.append(
             V.Diagram(

@@ -111,11 +111,13 @@ def _views(sol: Solution[Geometry]) -> tuple[Tree, Figure]:
     main = Figure(box, tooth, title=WORDS("view_title"), title_height=5.0, margin=3.0, weight=3.0)
     inset = Figure(
         _inset_extent(c, gear), lambda v: _inset(v, c, gear, geo),
-        title=WORDS("inset_title"), title_height=2.5, margin=4.0,
+        title=WORDS("inset_title"), title_height=3.5, margin=4.0,
     )  # fmt: skip
     data, results, teeth = _tables(sol)
     order = V.Steps(c, ORDER_W, only=ORDER, words=WORDS)
-    side = Column(Row(inset, Column(data, results)), teeth, order, Spacer((10.0, BLOCK_H)))
+    # the inset beside all three tables: its row as tall as they are, so the construction at the
+    # tip (far from O) is drawn large enough to read
+    side = Column(Row(inset, Column(data, results, teeth)), order, Spacer((10.0, BLOCK_H)))
     return Row(main, side, weights=(5.0, 3.0)), main
 
 
@@ -154,7 +156,7 @@ def _inset(v: Viewport, c: Construction, gear: SpurGear, geo: Geometry) -> None:
     v.dot(CENTRE)
     for q in (K, N, T):
         v.dot(q, "result")
-    v.label(CENTRE, "O", 2.5, prefer=(1.0, -1.0))
+    v.label(CENTRE, "O", 3.5, prefer=(1.0, -1.0), clear=1.5)
     v.label(K, "K", 2.5, prefer=(1.0, 0.0))
     v.label(N, "N", 2.5, prefer=(-1.0, 0.0))
     v.label(T, "T", 2.5, prefer=(-1.0, 1.0))
@@ -277,7 +279,8 @@ def _rack(v: Viewport, gear: SpurGear, x_lo: float, x_hi: float) -> None:
         v.polyline([Vec(px, py) for px, py in piece], "extreme")
     y_d = gear.r + gear.x * m
     v.seg(Vec(x_lo, y_d), Vec(x_hi, y_d), "centre")
-    v.label(Vec(x_lo, y_d), WORDS("rack_datum"), 2.5, prefer=(1.0, 1.0))
+    # the datum line's name right of the x·m dimension (whose text may run past its arrow)
+    v.label(Vec(0.8 * x_lo, y_d), WORDS("rack_datum"), 2.5, prefer=(1.0, 1.0))
     v.seg(Vec(x_lo, gear.r), Vec(0.6 * x_lo, gear.r), "centre")
     if abs(gear.x) > tol.DERIVED:  # no shift to dimension for x = 0
         xd = 0.93 * x_lo
@@ -377,5 +380,5 @@ def _tables(sol: Solution[Geometry]) -> tuple[V.Table, V.Table, V.Table]:
         (f"W_{k_span} (z_W = {k_span})", f"{_num(geo.W * MM, digits=4)} {mm}"),
     ):
         rows.append([label, value])
-    teeth = V.Table(rows, widths=(40.0, 30.0), row_h=ROW_H, title=WORDS("tooth_title"))
+    teeth = V.Table(rows, widths=(30.0, 18.0), row_h=ROW_H, title=WORDS("tooth_title"))
     return data, results, teeth

@@ -363,6 +363,20 @@ def test_order_of_construction_is_the_recorded_steps() -> None:
             text = " ".join(steps.lines)
             for deg in sol.results["zero_theta1_deg"]:
                 assert f"θ_1 = {V.num(deg)}°" in text
-            assert f"pm_6 = {V.num(sol.results['VT_over_omega1'])}" in text
+            # pm6 is a plan segment (mm): V_T = pm6·μ_V at ω1 = 1 rad/s, V_T/ω1 in metres
+            vt = V.num(sol.results["VT_over_omega1"])
+            assert f"pm_6·μ_V = {vt}" in text and f"V_T/ω_1 = {vt}" in text
             # the dead position first, then the plan at the given θ1
-            assert text.index("M*") < text.index("pm_6 =")
+            assert text.index("M*") < text.index("pm_6·μ_V =")
+
+
+def test_assur_kinds_in_the_sheets_letters() -> None:
+    """The groups' kinds in the language's pair letters: ВВВ/ПВП on Russian sheets."""
+    from geomcad_constructions.sheets_2013_1 import _group_kind
+
+    from geomcad.sheet.lang import language
+
+    with language("ru"):
+        assert (_group_kind("RRR"), _group_kind("PRP")) == ("ВВВ", "ПВП")
+    with language("en"):
+        assert (_group_kind("RRR"), _group_kind("PRP")) == ("RRR", "PRP")

@@ -344,16 +344,19 @@ def test_seed_sheet_radius_vectors_are_true_to_scale() -> None:
     sol = geomcad.solve(PID)
     k = sol.scales["l"]
     sheet = sol.sheets()[0][1]
-    lines = [it for it in sheet.items if isinstance(it, Polyline) and it.role == "result"]
-    shafts = [ln for ln in lines if not ln.closed]  # the arrowheads are closed
-    assert len(shafts) == 5
-    ends = [ln.points for ln in shafts]
-    o = ends[0][0]
-    assert all(pts[0] == o for pts in ends)
-    for pts, r in zip(ends, sol.results["r"], strict=True):
-        # the shaft stops 0.8 × the arrowhead short of B_i, whose tip is on the profile
-        length = math.dist(*pts) + 3.5 * 0.8
-        assert length * k == pytest.approx(r, rel=1e-9)
+    # the radius vectors r_i = OB_i: thin construction segments from O (no arrowheads), each
+    # as long as r_i at k_l
+    segs = [
+        it.points
+        for it in sheet.items
+        if isinstance(it, Polyline) and it.role == "construction" and len(it.points) == 2
+    ]
+    found = []
+    for r in sol.results["r"]:
+        hits = [pts for pts in segs if math.dist(*pts) * k == pytest.approx(r, rel=1e-9)]
+        assert hits, r
+        found.append(hits[0][0])
+    assert all(o == found[0] for o in found)
 
 
 @pytest.mark.parametrize(
