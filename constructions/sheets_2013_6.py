@@ -329,12 +329,12 @@ def _mechanism(v: Viewport, geo: Geometry, c: Construction) -> None:
     # O1B1): extreme positions, drawn with them below in thin two-dot lines (GOST 2.770)
     v.dim_angle(O1, B0, B1, "θ", r_mm=22.0)
     v.circle(O1, ch.l1, "centre")
-    # extreme positions (two-dot lines)
+    # extreme positions (two-dot lines); the crank and the rod at a dead centre lie on one
+    # line, drawn once: A·O1·B at the folded one (A beyond O1), O1·A·B at the extended one
     for Bx, Cx, Ax in ((B0, C0, A0), (B1, C1, A1)):
         v.seg(O2, Bx, "extreme")
         v.seg(Bx, Cx, "extreme")
-        v.seg(Ax, Bx, "extreme")
-        v.seg(O1, Ax, "extreme")
+        v.seg(Ax if Bx is folded else O1, Bx, "extreme")
         v.dot(Ax)
     for q in (C0, C1):
         v.slider(q, role="extreme")
