@@ -146,12 +146,11 @@ def _tree(sol: Solution[Geometry]) -> tuple[Node, dict[str, View]]:
             def draw(v: Viewport, fc: FrictionCircle = fc, towards: list[Vec] = towards,
                      line: Line = line, force: Vec = force, fname: str = fname,
                      wname: str = wname) -> None:  # fmt: skip
-                _inset(v, fc, towards, line, force, fname, fc.sense, wname, geo.d)
-                r = inset_reach(geo.d, fc.arm)
+                top = _inset(v, fc, towards, line, force, fname, fc.sense, wname, geo.d)
                 caption = WORDS("joint", name=fc.name)
                 w = text_box(parse(caption), 3.5)[0]
-                x, y = v.p(fc.c + Vec(0.0, r * (1.0 + CAPTION_ROOM)))
-                v.d.text(caption, (x - w / 2.0, y + 3.5), 3.5)
+                x, y = v.p(fc.c + Vec(0.0, top))
+                v.d.text(caption, (x - w / 2.0, y - 2.0), 3.5)
 
             joints.append(Figure(box, draw, group="joints", show_scale=False, margin=2.0))
         joint_row: Node | View = Row(
@@ -298,10 +297,11 @@ def _inset(
     sense: int,
     wname: str,
     pin_d: float,
-) -> None:
+) -> float:
     """One enlarged joint: its friction circle, pin, links, the reaction and the rotation it
     opposes (``sense`` of the rotation of the link the reaction acts on, relative to the other).
-    """
+    Returns how far (model) over the joint's centre the drawing reaches (its caption goes
+    above)."""
     k = v.scale
     reach = inset_reach(pin_d, fc.arm)
     J = fc.c
@@ -345,6 +345,7 @@ def _inset(
     # a curved arrow (an arc with its head, as the textbooks draw a rotation), 90° long
     start = math.degrees(a_w) - math.copysign(45.0, sense)
     v.turn(J, sense, start, wname, k.mm(r_w), 90.0, "dimension", 2.5)
+    return max(reach, r_w + k.model(2.0))
 
 
 def _free_angle(taken: list[Vec]) -> float:
