@@ -184,7 +184,12 @@ def build(p: Mapping[str, ParamValue]) -> Build[Geometry]:
         "from V_F = V_B + ω_3 × BF with V_B vertical (per unit ω_6)",
         (H, F, B),
         kind="velocity_ratio",
-        args={"w": "ω_3/ω_6", "eq": "V_F = V_B + V_{FB}", "value": hf.y / bf.y},
+        args={
+            "w": "ω_3/ω_6",
+            "eq": "V_F = ω_6 × HF = V_B + ω_3 × BF",
+            "ratio": "(y_F – y_H)/(y_F – y_B)",
+            "value": hf.y / bf.y,
+        },
     )
     w6 = float(direction)  # θ̇'s sign: the arm turns ccw while the balls rise (right half)
     senses = {

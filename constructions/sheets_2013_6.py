@@ -324,17 +324,17 @@ def _mechanism(v: Viewport, geo: Geometry, c: Construction) -> None:
     # side of O1, at the extended one between O1 and B
     folded = B0 if ch.O1B0 <= ch.O1B1 else B1
     A0, A1 = (O1 + (Bx - O1).unit() * (-ch.l1 if Bx is folded else ch.l1) for Bx in (B0, B1))
-    # the seed's solution: O1B0 and O1B1, the angle θ between them, the crank circle
-    v.seg(O1, B0, "result")
-    v.seg(O1, B1, "result")
+    # the seed's solution: O1B0 and O1B1, the angle θ between them, the crank circle. O1B0
+    # and O1B1 are the crank and the rod at the dead centres (A0B0 runs through O1, A1 lies on
+    # O1B1): extreme positions, drawn with them below in thin two-dot lines (GOST 2.770)
     v.dim_angle(O1, B0, B1, "θ", r_mm=22.0)
     v.circle(O1, ch.l1, "centre")
-    # extreme positions (two-dot lines)
+    # extreme positions (two-dot lines); the crank and the rod at a dead centre lie on one
+    # line, drawn once: A·O1·B at the folded one (A beyond O1), O1·A·B at the extended one
     for Bx, Cx, Ax in ((B0, C0, A0), (B1, C1, A1)):
         v.seg(O2, Bx, "extreme")
         v.seg(Bx, Cx, "extreme")
-        v.seg(Ax, Bx, "extreme")
-        v.seg(O1, Ax, "extreme")
+        v.seg(Ax if Bx is folded else O1, Bx, "extreme")
         v.dot(Ax)
     for q in (C0, C1):
         v.slider(q, role="extreme")
@@ -357,8 +357,12 @@ def _mechanism(v: Viewport, geo: Geometry, c: Construction) -> None:
         "C": ((1.0, 0.0), 4.7),
     }
     pts = {"O1": O1, "A": A, "B": B, "O2": O2, "C": C}
-    # link 4's number past B1's label, before C0's block
-    six_bar(v, pts, Vec(1.0, 0.0), labels, number_at={"4": 0.58})
+    # link 4's number on BC's own stretch between B and the nearer of B0, B1 ahead of it, where
+    # no extreme position of BC runs beside it on that side (past B1 the line B1C1 is there)
+    u = (C - B).unit()
+    ahead = [(q - B).dot(u) for q in (B0, B1) if (q - B).dot(u) > 0.0]
+    share = min([0.5, *(0.5 * a / B.dist(C) for a in ahead)])
+    six_bar(v, pts, Vec(1.0, 0.0), labels, number_at={"4": share})
     for q, name in ((C0, "C_0"), (C1, "C_1")):
         v.label(q, name, prefer=(0.0, 1.0), clear=4.0)
     for Ax, name in ((A0, "A_0"), (A1, "A_1")):
@@ -392,11 +396,14 @@ def _panel(sol: Solution[Geometry], k: float) -> tuple[View | Node, ...]:
     m_ = WORDS("m")
     given = Table.of_specs(PARAMS, p, style="value", widths=(30.0, 36.0), title=WORDS("data"))
     shown = dict(r)
-    for name in ("O1B0", "O1B1"):  # lengths on the drawing, in mm at k
-        shown[name] = f"{num(float(r[name]) / k if k else 0.0, 4)} {WORDS('mm')}*"
+    for name in ("O1B0", "O1B1"):
+        # the real length (as the drawing's dimension gives it, in mm there) and, marked, the
+        # length on the drawing in mm at k, which the published solution measures
+        drawn = num(float(r[name]) / k if k else 0.0, 4)
+        shown[name] = f"{num(float(r[name]), 4)} {m_} ({drawn} {WORDS('mm')}*)"
     results = Table.of_specs(
         RESULTS, shown, labels={"H_check": WORDS("H_check"), "K_check": WORDS("K_check")},
-        style="value", widths=(30.0, 38.0), title=WORDS("results"),
+        style="value", widths=(30.0, 46.0), title=WORDS("results"),
     )  # fmt: skip
     note = Text(lines=[WORDS("on_drawing", k=factor(Scale(k or 0.001, "l")))])
     rows = [["№", f"O_1 (x; y), {m_}", f"l_1, {m_}", f"l_2, {m_}", WORDS("crank")]]

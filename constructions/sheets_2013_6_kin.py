@@ -252,8 +252,11 @@ def _mechanism(v: Viewport, c: Construction, m: SixBar, an: Analysis) -> None:
         "C": ((1.0, 0.0), 4.7),
     }
     six_bar(v, pts, d, labels)
-    a1 = math.degrees(an.phi1) + 25.0  # ω1's arrow spans 90° just past the crank
-    v.turn(O1, an.omega1, a1 if an.omega1 > 0 else a1 + 90.0, "ω_1", r_mm=11.0, sweep_deg=90.0)
+    # ω1's arrow spans 90° just past the crank, outside A's path (inside it the crank's number,
+    # the support and O1's name have the room)
+    a1 = math.degrees(an.phi1) + 25.0
+    r_w = v.scale.mm(m.l1) + 4.0
+    v.turn(O1, an.omega1, a1 if an.omega1 > 0 else a1 + 90.0, "ω_1", r_mm=r_w, sweep_deg=90.0)
 
 
 class _Diagrams(View):

@@ -41,6 +41,8 @@ from geomcad.sheet.compose import (
     compose,
 )
 from geomcad.sheet.lang import Words, current
+from geomcad.sheet.text import box as text_box
+from geomcad.sheet.text import parse
 
 from .p2013_7 import Geometry
 from .spec_2013_7 import PARAMS, RESULTS
@@ -56,6 +58,8 @@ WORDS = Words(__package__, "sheets_2013_7")
 ARROW_MM = 14.0
 #: The reactions on the enlarged joints are at least this long (mm): two arrowheads and more.
 INSET_ARROW_MM = 8.0
+#: Room over an enlarged joint for its caption, as a share of the view's half-size.
+CAPTION_ROOM = 0.6
 
 
 def _n(x: float, digits: int = 4) -> str:
@@ -127,24 +131,28 @@ def _tree(sol: Solution[Geometry]) -> tuple[Node, dict[str, View]]:
         S = Vec(0.0, geo.B.y)
         u76 = run.R76_line.d
         specs = (
-            (run.fc_B, [geo.F, S], run.link3.line, run.u32, "R_{32}", -1, "ω_{23}"),
-            (run.fc_F, [geo.B, geo.H, geo.D], run.link3.line, run.link3.line.d, "R_{36}", -1,
-             "ω_{63}"),
-            (run.fc_H, [Vec(0.0, 0.0), geo.D], run.R76_line, u76, "R_{76}", 1, "ω_{67}"),
+            (run.fc_B, [geo.F, S], run.link3.line, run.u32, "R_{32}", "ω_{32}"),
+            (run.fc_F, [geo.B, geo.H, geo.D], run.link3.line, run.link3.line.d, "R_{36}",
+             "ω_{36}"),
+            (run.fc_H, [Vec(0.0, 0.0), geo.D], run.R76_line, u76, "R_{76}", "ω_{67}"),
         )  # fmt: skip
-        for fc, towards, line, force, fname, flip, wname in specs:
+        # R_ij acts on link j from link i and its moment opposes ω_ji = ω_j − ω_i (the order's
+        # notation): the rotation drawn is that one, in its own sense
+        for fc, towards, line, force, fname, wname in specs:
             r = inset_reach(geo.d, fc.arm)
-            box = (fc.c.x - r, fc.c.y - r, fc.c.x + r, fc.c.y + r)
+            # room over the pin for the joint's caption, drawn over its own view
+            box = (fc.c.x - r, fc.c.y - r, fc.c.x + r, fc.c.y + r * (1.0 + CAPTION_ROOM))
 
             def draw(v: Viewport, fc: FrictionCircle = fc, towards: list[Vec] = towards,
                      line: Line = line, force: Vec = force, fname: str = fname,
-                     sense: int = flip * fc.sense, wname: str = wname) -> None:  # fmt: skip
-                _inset(v, fc, towards, line, force, fname, sense, wname, geo.d)
+                     wname: str = wname) -> None:  # fmt: skip
+                top = _inset(v, fc, towards, line, force, fname, fc.sense, wname, geo.d)
+                caption = WORDS("joint", name=fc.name)
+                w = text_box(parse(caption), 3.5)[0]
+                x, y = v.p(fc.c + Vec(0.0, top))
+                v.d.text(caption, (x - w / 2.0, y - 2.0), 3.5)
 
-            joints.append(
-                Figure(box, draw, title=WORDS("joint", name=fc.name), group="joints",
-                       show_scale=False, margin=2.0)
-            )  # fmt: skip
+            joints.append(Figure(box, draw, group="joints", show_scale=False, margin=2.0))
         joint_row: Node | View = Row(
             *joints, title=WORDS("joints"), group="joints", title_height=3.5
         )
@@ -262,7 +270,11 @@ def _mechanism(v: Viewport, geo: Geometry) -> None:
     v.label(run.K, "K", prefer=(0.0, -1.0), clear=2.0)
     # the links' numbers (GOST 2.770): sleeve 2, link 3, arm 6, shaft 7
     v.label(S, "2", prefer=(-1.0, -1.0), clear=5.0)
-    v.label((B + F) * 0.5, "3", prefer=(1.0, -1.0), clear=1.5)
+    # link 3's number on its stretch below F_i's line through D and K (the line, K, P's line
+    # and the angle β crowd BF where it crosses it), on the side away from its line of action
+    t = (D.y - B.y) / (F.y - B.y) if F.y != B.y else 1.0
+    at3 = B + (F - B) * (0.5 * t if 0.2 < t < 1.0 else 0.5)
+    v.label(at3, "3", prefer=(1.0, -1.0), clear=1.5)
     v.label((H + F) * 0.5, "6", prefer=(1.0, 1.0), clear=1.5)
     v.label(top, "7", prefer=(1.0, 0.0))
 
@@ -285,10 +297,11 @@ def _inset(
     sense: int,
     wname: str,
     pin_d: float,
-) -> None:
+) -> float:
     """One enlarged joint: its friction circle, pin, links, the reaction and the rotation it
     opposes (``sense`` of the rotation of the link the reaction acts on, relative to the other).
-    """
+    Returns how far (model) over the joint's centre the drawing reaches (its caption goes
+    above)."""
     k = v.scale
     reach = inset_reach(pin_d, fc.arm)
     J = fc.c
@@ -332,6 +345,7 @@ def _inset(
     # a curved arrow (an arc with its head, as the textbooks draw a rotation), 90° long
     start = math.degrees(a_w) - math.copysign(45.0, sense)
     v.turn(J, sense, start, wname, k.mm(r_w), 90.0, "dimension", 2.5)
+    return max(reach, r_w + k.model(2.0))
 
 
 def _free_angle(taken: list[Vec]) -> float:
@@ -350,13 +364,14 @@ def _free_angle(taken: list[Vec]) -> float:
 
 
 def _plan6(v: Viewport, geo: Geometry, names: dict[str, str]) -> None:
-    """The polygon of arm 6 by the one polygon drawer, over the frictionless one (dashed, from
-    the same pole: G_6 is common), with P = G_6 + R_36 as its diagonal."""
+    """The polygon of arm 6 by the one polygon drawer, over the frictionless one (a second
+    variant in thin lines, from the same pole: G_6 is common), with P = G_6 + R_36 as its
+    diagonal."""
     run, free = geo.run, geo.free
     if run.rho > 0.0:
         for vec_ in free.poly6.vectors:
             if vec_.name != "G_6":
-                v.seg(vec_.tail, vec_.head, "locus")
+                v.seg(vec_.tail, vec_.head, "construction")
     # P = G_6 + R_36 runs beside R_36: P's label goes outside, R_36's inside the polygon
     V.draw_polygon(v, run.poly6, names, "vector", inward=("R_36",))
     p = run.poly6.diagonal("G_6", "R_36", "P")
@@ -367,9 +382,14 @@ def _plan6(v: Viewport, geo: Geometry, names: dict[str, str]) -> None:
     if n.dot(mid - c) < 0.0:
         n = -n
     u = n.unit()
-    v.label(mid, "P", prefer=(u.x, u.y))
+    v.label(mid, "P", height=2.5, prefer=(u.x, u.y))
     if run.rho > 0.0:
-        v.label(free.poly6["F_i"].head, "f = 0", height=2.5, prefer=(1.0, -1.0))
+        # the frictionless variant named beside its own side R_76 (the one apart from the
+        # polygon with friction), inside the polygon
+        r76 = free.poly6["R_76"]
+        at = (r76.tail + r76.head) * 0.5
+        inner = (c - at).unit()
+        v.label(at, "f = 0", height=2.5, prefer=(inner.x, inner.y), clear=0.8)
 
 
 # -- the tables and the order of construction ----------------------------------------------------

@@ -522,7 +522,7 @@ def test_sheet_layout_and_scales(seed_sheet: Sheet) -> None:
 def test_sheet_labels_name_the_points_and_forces(seed_sheet: Sheet) -> None:
     labels = {t.text for t in seed_sheet.texts() if t.role == "label"}
     for name in ("H", "F", "B", "D", "Q", "K", "G6", "Ф6", "R36", "R32", "R42", "R76", "G2", "P",
-                 "ρ", "ω23", "ω63", "ω67", "f = 0"):  # fmt: skip
+                 "ρ", "ω32", "ω36", "ω67", "f = 0"):  # fmt: skip
         assert name in labels, name
     assert any(t.startswith("β = 63,2") for t in labels)
 

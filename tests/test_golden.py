@@ -183,9 +183,9 @@ def _with_items(sheet: Sheet, items: list[Item]) -> Sheet:
 
 
 def _moved(sheet: Sheet, dx: float) -> tuple[Sheet, int]:
-    """The sheet with the first point of its first result line moved ``dx`` mm to the right."""
+    """The sheet with the first point of its first link line moved ``dx`` mm to the right."""
     items = list(sheet.items)
-    i = next(j for j, it in enumerate(items) if isinstance(it, Polyline) and it.role == "result")
+    i = next(j for j, it in enumerate(items) if isinstance(it, Polyline) and it.role == "link")
     line = items[i]
     assert isinstance(line, Polyline)
     (x, y), *rest = line.points
@@ -201,7 +201,7 @@ def test_comparison_sees_a_moved_point(sheet_2013_6: Sheet) -> None:
     moved, _ = _moved(sheet_2013_6, 0.5)
     diff = svg_difference(to_svg(moved), to_svg(sheet_2013_6))
     assert diff is not None
-    assert "layer-result" in diff and "polyline[1]/@points" in diff, diff
+    assert "layer-link" in diff and "polyline[1]/@points" in diff, diff
 
 
 def test_comparison_tolerates_half_a_micrometre(sheet_2013_6: Sheet) -> None:
