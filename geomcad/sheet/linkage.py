@@ -68,6 +68,9 @@ PA_MM = 40.0
 #: format a file asks for, :data:`SMALL_TEXT_H`.
 TEXT_H = 3.5
 SMALL_TEXT_H = 2.5
+#: How much of the layout search's score (Σ weight·log(drawn area)) the larger text may cost
+#: the views on the largest format before the text is written :data:`SMALL_TEXT_H` high.
+TEXT_COST = 1.0
 #: The views' titles (mm).
 TITLE_H = 5.0
 #: At most this many velocity plans share the first sheet with the mechanism.
@@ -103,23 +106,31 @@ def fit(
     smallest of ``fmts`` on which it fits with the scales it wants
     (:func:`geomcad.sheet.formats.choose`), its text :func:`text_height` high, else
     :data:`SMALL_TEXT_H` (GOST 2.304's least) where only the text keeps it from fitting. On the
-    largest format the tree is taken as it fits best."""
+    largest format every view is drawn as large as it can be (the wanted scales no longer
+    weigh in the search: they only decide whether a smaller format will do), and the text is
+    :data:`SMALL_TEXT_H` high where the larger text would cost the views more than
+    :data:`TEXT_COST` of the search's score (Σ weight·log(drawn area): a mechanism drawn at
+    1:4 instead of 1:2.5 costs about 1.9). ``make`` builds new views each time (the search
+    marks the views it arranges)."""
     order = sorted(fmts, key=lambda f: FORMATS[f][0] * FORMATS[f][1])
-    for fmt in order:
-        last = fmt == order[-1]
-        tried: list[tuple[Tree, formats.Sized]] = []
+    for fmt in order[:-1]:
         for h in dict.fromkeys((text_height((fmt,)), SMALL_TEXT_H)):
             tree, wants = make(h)
             z = formats.choose(tree, wants, (fmt,))
-            tried.append((tree, z))
             reached = formats.meets(z.layout, wants)
-            if z.layout.fits and (reached or last):
+            if z.layout.fits and reached:
                 return tree, z
-            if not reached and not last:
+            if not reached:
                 break  # smaller text does not bring the views to their scales
-        if last:
-            return tried[0]
-    raise AssertionError("no format")  # pragma: no cover - fmts is never empty
+    tried: list[tuple[Tree, formats.Sized]] = []
+    for h in dict.fromkeys((text_height(order[-1:]), SMALL_TEXT_H)):
+        tree, _ = make(h)
+        tried.append((tree, formats.choose(tree, {}, order[-1:])))
+    # the larger text where it fits and costs the views at most TEXT_COST of the search's score
+    big, small = tried[0][1].layout, tried[-1][1].layout
+    if big.fits and (not small.fits or big.score[1] >= small.score[1] - TEXT_COST):
+        return tried[0]
+    return tried[-1] if small.fits else tried[0]
 
 
 def order_width(h: float) -> float:
@@ -182,7 +193,9 @@ def _trees(
         vdetail = PlanView(detail.vp, title=WORDS("vplan_detail", phi=_deg(detail.phi)),
                            group="v", weight=2.0, min_mm=SHORT_MM)  # fmt: skip
         aplans = Row(vdetail, aplans)
-    diagrams = Column(*_diagrams(s), title=_through(s), title_height=TITLE_H)
+    diagrams = Column(
+        Text([_through(s)], height=h), *_diagrams(s), title=WORDS("diagrams"), title_height=TITLE_H
+    )
     width = order_width(h)
     tables = Column(*_tables(s, accel, h), _Note(WORDS("short", mm=fmt_number(SHORT_MM)), h))
     # the velocity plan's steps, then the acceleration plan's
@@ -196,8 +209,8 @@ def _trees(
         title_height=TITLE_H,
     )
     wants: dict[View, float] = {mech: lk.length / CRANK_MM}
-    if vviews:
-        wants[vviews[0]] = abs(lk.omega) * lk.length / PA_MM
+    for view in vviews:  # one scale for them all: each needs its room at it
+        wants[view] = abs(lk.omega) * lk.length / PA_MM
     if second:
         trees = (Column(mech, Row(diagrams, aplans, Column(tables, order))), vplans)
         return trees, mech, True, wants
@@ -205,7 +218,6 @@ def _trees(
         Column(Row(mech, vplans), Row(diagrams, aplans, Column(tables, order))),
         Row(Column(mech, diagrams), Column(vplans, Row(aplans, Column(tables, order)))),
         Column(Row(mech, vplans), Row(diagrams, aplans), Row(tables, order)),
-        Row(Column(mech, diagrams), Column(vplans, aplans), Column(tables, order)),
     )
     return (sheet,), mech, False, wants
 
@@ -255,19 +267,18 @@ def _arranged(s: Solved) -> tuple[Layout, tuple[Arranged, ...]]:
     format of the file's on which its views reach the scales :func:`_trees` wants."""
     accel = _accel_positions(s)
     fmts = sheet_formats(s.linkage)
-    made: dict[float, tuple[tuple[Tree, ...], _Mechanism, bool, dict[View, float]]] = {}
+    made: list[tuple[tuple[Tree, ...], _Mechanism, bool, dict[View, float]]] = []
 
     def make(i: int) -> Callable[[float], tuple[Tree, Mapping[View, float]]]:
         def tree(h: float) -> tuple[Tree, Mapping[View, float]]:
-            if h not in made:
-                made[h] = _trees(s, accel, h)
-            t, _, _, wants = made[h]
+            made.append(_trees(s, accel, h))
+            t, _, _, wants = made[-1]
             return t[i], {v: k for v, k in wants.items() if v in _views(t[i])}
 
         return tree
 
     first = fit(make(0), fmts)
-    trees_all, mech, second, _ = next(m for m in made.values() if m[0][0] is first[0])
+    trees_all, mech, second, _ = next(m for m in made if m[0][0] is first[0])
     fitted = [first] + [fit(make(i), fmts) for i in range(1, len(trees_all))]
     trees = tuple(t for t, _ in fitted)
     sized = tuple(z for _, z in fitted)
@@ -344,7 +355,7 @@ def _through(s: Solved) -> str:
         if lk.phi is None
         else WORDS("through_divisions", n=n)
     )
-    return WORDS("diagrams", through=through)
+    return WORDS("diagrams_note", through=through)
 
 
 def _divisions(s: Solved) -> int:
