@@ -158,16 +158,21 @@ def _sheet2(s: Solved, P: Position, f: Forces, k: int, h: float) -> tuple[Tree, 
     lk = s.linkage
     mech = _Loaded(lk, P, f, WORDS("mech", k=k, phi=_num(math.degrees(P.phi) % 360.0)))
     bodies = [_FreeBody(lk, P, gf) for gf in f.groups]
-    polys = [
-        Polygon(
-            poly,
-            title=_poly_title(gf, name),
-            margin=8.0,
-            names={pv.name: load_name(pv.name) for pv in poly.vectors},
-        )
+    # each group's polygons under the group cut out (the crank's under the crank)
+    per_group = [
+        [
+            Polygon(
+                poly,
+                title=_poly_title(gf, name),
+                margin=8.0,
+                names={pv.name: load_name(pv.name) for pv in poly.vectors},
+            )
+            for name, poly in gf.polygons
+        ]
         for gf in f.groups
-        for name, poly in gf.polygons
     ]
+    polys = [p for ps in per_group for p in ps]
+    groups = Row(*[Column(b, *ps) for b, ps in zip(bodies, per_group, strict=True)])
     lever = _Lever(lk, P, f)
     table: Table | Column = _table2(f, h)
     if mech.short or lever.short or any(b.short for b in bodies):
@@ -180,6 +185,8 @@ def _sheet2(s: Solved, P: Position, f: Forces, k: int, h: float) -> tuple[Tree, 
     tree = Choice(
         Column(Row(mech, Grid(*bodies)), Row(lever, Grid(*polys), right)),
         Row(Column(mech, lever), Column(Grid(*bodies), Row(Grid(*polys), right))),
+        Row(Column(mech, lever), groups, right),
+        Column(Row(mech, lever, right), groups),
     )
     return tree, {mech: lk.length / CRANK_MM}
 
