@@ -290,7 +290,7 @@ def test_a_file_asks_for_its_sheets_format(tmp_path: Path) -> None:
     sheets = documents.from_data("four-bar.toml", data).solve().sheets()
     assert [sh.format for _, sh in sheets] == ["A1"]
     data["sheet"] = {"format": "B5"}
-    with pytest.raises(ParameterError, match="sheet.format"):
+    with pytest.raises(ParameterError, match=r"sheet\.format"):
         documents.from_data("four-bar.toml", data).solve().sheets()
 
 
