@@ -27,6 +27,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from geomcad import tol
+from geomcad.errors import ParameterError
 from geomcad.geom import Vec
 from geomcad.linkage.model import Linkage
 from geomcad.linkage.plans import Position, construct
@@ -36,11 +37,13 @@ from geomcad.sheet import Drawing, Sheet, TitleBlock, fmt_number, formats
 from geomcad.sheet.compose import (
     Choice,
     Column,
+    Field,
     Grid,
     Placed,
     Row,
     Tree,
     View,
+    arrange,
     compose,
 )
 from geomcad.sheet.compose import (
@@ -99,24 +102,48 @@ def text_height(fmts: Sequence[str]) -> float:
     return TEXT_H if all(f in ("A2", "A1", "A0") for f in fmts) else SMALL_TEXT_H
 
 
+def _on(tree: Tree, wants: Mapping[View, float], fmt: str) -> tuple[Tree, formats.Sized] | None:
+    """``tree`` arranged on ``fmt`` in landscape (A4 upright), as a course project's sheets are,
+    the search seeking the wanted scales (as :func:`geomcad.sheet.formats.choose` does); a
+    :class:`Choice`'s arrangements one by one, the best kept (a quicker test of a format than
+    their joint search); ``None`` where a view finds no room at all."""
+    for v, k in wants.items():
+        v.readable = max(v.readable, k * v.readable_mm)
+    fmt, land = next(formats.candidates((fmt,)))
+    field = Field.of_format(fmt, land)
+    best: tuple[Tree, formats.Sized] | None = None
+    for alt in _alternatives(tree):
+        try:
+            lay = arrange(alt, field)
+        except ParameterError:
+            continue
+        if best is None or lay.score > best[1].layout.score:
+            best = alt, formats.Sized(fmt, land, lay)
+    return best
+
+
 def fit(
     make: Callable[[float], tuple[Tree, Mapping[View, float]]], fmts: Sequence[str]
 ) -> tuple[Tree, formats.Sized]:
     """The tree ``make(h)`` builds, its tables and texts written ``h`` high, and its format: the
-    smallest of ``fmts`` on which it fits with the scales it wants
-    (:func:`geomcad.sheet.formats.choose`), its text :func:`text_height` high, else
+    smallest of ``fmts`` (in landscape) on which it fits with the scales it wants
+    (:func:`geomcad.sheet.formats.meets`), its text :func:`text_height` high, else
     :data:`SMALL_TEXT_H` (GOST 2.304's least) where only the text keeps it from fitting. On the
     largest format every view is drawn as large as it can be (the wanted scales no longer
     weigh in the search: they only decide whether a smaller format will do), and the text is
     :data:`SMALL_TEXT_H` high where the larger text would cost the views more than
     :data:`TEXT_COST` of the search's score (Σ weight·log(drawn area): a mechanism drawn at
     1:4 instead of 1:2.5 costs about 1.9). ``make`` builds new views each time (the search
-    marks the views it arranges)."""
+    marks the views it arranges). The largest format's arrangement is the joint search of a
+    :class:`Choice` (it finds better splits than its arrangements one by one)."""
     order = sorted(fmts, key=lambda f: FORMATS[f][0] * FORMATS[f][1])
     for fmt in order[:-1]:
         for h in dict.fromkeys((text_height((fmt,)), SMALL_TEXT_H)):
             tree, wants = make(h)
-            z = formats.choose(tree, wants, (fmt,))
+            on = _on(tree, wants, fmt)
+            if on is None:
+                break
+            tree, z = on
             reached = formats.meets(z.layout, wants)
             if z.layout.fits and reached:
                 return tree, z
@@ -125,7 +152,8 @@ def fit(
     tried: list[tuple[Tree, formats.Sized]] = []
     for h in dict.fromkeys((text_height(order[-1:]), SMALL_TEXT_H)):
         tree, _ = make(h)
-        tried.append((tree, formats.choose(tree, {}, order[-1:])))
+        fmt, land = next(formats.candidates(order[-1:]))
+        tried.append((tree, formats.Sized(fmt, land, arrange(tree, Field.of_format(fmt, land)))))
     # the larger text where it fits and costs the views at most TEXT_COST of the search's score
     big, small = tried[0][1].layout, tried[-1][1].layout
     if big.fits and (not small.fits or big.score[1] >= small.score[1] - TEXT_COST):
@@ -278,7 +306,9 @@ def _arranged(s: Solved) -> tuple[Layout, tuple[Arranged, ...]]:
         return tree
 
     first = fit(make(0), fmts)
-    trees_all, mech, second, _ = next(m for m in made if m[0][0] is first[0])
+    trees_all, mech, second, _ = next(
+        m for m in made if any(first[0] is t for t in (m[0][0], *_alternatives(m[0][0])))
+    )
     fitted = [first] + [fit(make(i), fmts) for i in range(1, len(trees_all))]
     trees = tuple(t for t, _ in fitted)
     sized = tuple(z for _, z in fitted)
@@ -292,6 +322,11 @@ def _arranged(s: Solved) -> tuple[Layout, tuple[Arranged, ...]]:
     out = Layout(lays[0][mech].scale or Scale(1.0), k_v, lays[0].scale("a"), second, accel,
                  trees, mech, sized)  # fmt: skip
     return out, lays
+
+
+def _alternatives(tree: Tree) -> tuple[Tree, ...]:
+    """A :class:`Choice`'s arrangements; any other tree is its own one."""
+    return tree.items if isinstance(tree, Choice) else (tree,)
 
 
 def _views(tree: Tree) -> list[View]:

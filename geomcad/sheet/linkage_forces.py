@@ -185,7 +185,6 @@ def _sheet2(s: Solved, P: Position, f: Forces, k: int, h: float) -> tuple[Tree, 
     tree = Choice(
         Column(Row(mech, Grid(*bodies)), Row(lever, Grid(*polys), right)),
         Row(Column(mech, lever), Column(Grid(*bodies), Row(Grid(*polys), right))),
-        Row(Column(mech, lever), groups, right),
         Column(Row(mech, lever, right), groups),
     )
     return tree, {mech: lk.length / CRANK_MM}
