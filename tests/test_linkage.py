@@ -269,15 +269,29 @@ def test_cli_trace_shows_the_plans(capsys: pytest.CaptureFixture[str]) -> None:
     assert "d3 = " in out and "k_D'" in out and "a^k = 2ω3 × V_rel" in out
 
 
-@pytest.mark.parametrize("name", ["shaper", "four-bar"])
-def test_kinematic_sheet_layout(name: str) -> None:
+@pytest.mark.parametrize(("name", "fmt"), [("shaper", "A1"), ("four-bar", "A2")])
+def test_kinematic_sheet_layout(name: str, fmt: str) -> None:
+    """The format by content: the shaper's twelve positions need A1 for its crank at 30 mm
+    and its plans' pa at 40 mm; the four-bar's two positions reach them on A2."""
     sol = documents.solve(str(Path(__file__).resolve().parents[1] / "examples" / f"{name}.toml"))
     sheets = sol.sheets()
     assert sheets[0][0] == ""
     for _, sheet in sheets:
-        assert sheet.width == 841.0
+        assert sheet.format == fmt
         assert layout_problems(sheet) == []
     assert set(sol.scales) == {"l", "v", "a"}
+
+
+def test_a_file_asks_for_its_sheets_format(tmp_path: Path) -> None:
+    from geomcad.errors import ParameterError
+
+    data = load(Path(__file__).resolve().parents[1] / "examples" / "four-bar.toml")
+    data["sheet"] = {"format": "A1"}
+    sheets = documents.from_data("four-bar.toml", data).solve().sheets()
+    assert [sh.format for _, sh in sheets] == ["A1"]
+    data["sheet"] = {"format": "B5"}
+    with pytest.raises(ParameterError, match=r"sheet\.format"):
+        documents.from_data("four-bar.toml", data).solve().sheets()
 
 
 def test_verify_reads_a_plan_vector_at_its_scale(capsys: pytest.CaptureFixture[str]) -> None:

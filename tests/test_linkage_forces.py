@@ -607,7 +607,7 @@ def test_force_and_dynamics_sheets(name: str, update_golden: bool) -> None:
     )
     for _, sheet in sheets:
         assert isinstance(sheet, Sheet)
-        assert sheet.width == 841.0
+        assert sheet.format in ("A2", "A1")  # by content (geomcad.sheet.linkage.fit)
         assert layout_problems(sheet) == []
     first = sheets[0][1]
     assert isinstance(first, Sheet)

@@ -1,4 +1,4 @@
-"""The kinematic sheet of a linkage file (A1), composed for any mechanism.
+"""The kinematic sheet of a linkage file (A2 or A1 by its content), composed for any mechanism.
 
 The sheet is one tree of views (:mod:`geomcad.sheet.compose`), whatever the mechanism: the
 mechanism in all its numbered positions and the velocity plan of every position in a grid (on a
@@ -8,24 +8,32 @@ the numbered positions), the acceleration plans of two positions and the tables 
 The layout chooses the splits and each view's scale: a GOST 2.302 ratio for the mechanism, one
 factor 1, 2, 2.5, 4, 5 × 10^n for all velocity plans and one for the acceleration plans, so
 every vector is drawn at the stated μ. Its words come from ``strings/<lang>/linkage.toml``.
+
+The format is chosen by the content (:mod:`geomcad.sheet.formats`): the smaller of
+:data:`SIZES` on which the crank is drawn at least :data:`CRANK_MM` long and the velocity plans'
+crank vector pa at least :data:`PA_MM` (a file with few positions, a small mechanism: A2), else
+A1; a file's ``[sheet] format`` overrides it. Tables, orders and notes are written
+:data:`TEXT_H` high on A2 and A1 (2.5 mm, GOST 2.304's least, on a smaller format the file
+asks for), the views' titles 5 mm.
 """
 
 from __future__ import annotations
 
 import math
 import re
-from collections.abc import Sequence
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, replace
 
 import numpy as np
 
 from geomcad import tol
+from geomcad.errors import ParameterError
 from geomcad.geom import Vec
 from geomcad.linkage.model import Linkage
 from geomcad.linkage.plans import Position, construct
 from geomcad.linkage.solution import Solved
 from geomcad.linkage.sweep import output_coordinate, prp_frame, sweep
-from geomcad.sheet import Drawing, Sheet, TitleBlock, fmt_number, start
+from geomcad.sheet import Drawing, Sheet, TitleBlock, fmt_number, formats
 from geomcad.sheet.compose import (
     Choice,
     Column,
@@ -42,6 +50,7 @@ from geomcad.sheet.compose import (
     Layout as Arranged,
 )
 from geomcad.sheet.drawing import SHORT_MM
+from geomcad.sheet.frame import FORMATS
 from geomcad.sheet.lang import Words, current, per_language
 from geomcad.sheet.motion import Frames, turn
 from geomcad.sheet.scale import Scale
@@ -50,10 +59,27 @@ from geomcad.sheet.views import AxisSpec, Curve, Diagram, PlanView, Steps, Table
 
 WORDS = Words(__package__, "linkage")
 
-FORMAT = "A1"
+#: The formats a linkage file's sheets take by their content, smallest first (a course
+#: project's sheets: A1, or A2 where the views reach their scales on it).
+SIZES: tuple[str, ...] = ("A2", "A1")
+#: The crank's least length on the mechanism's drawing (mm): the format is the smallest on which
+#: the mechanism is drawn at a GOST scale giving it this much.
+CRANK_MM = 30.0
+#: The velocity plans' crank vector pa (V_A = ω1·l_OA) at least this long (mm), likewise.
+PA_MM = 40.0
+#: The cap height of tables, orders and notes on A2 and A1 (mm; GOST 2.304); on a smaller
+#: format a file asks for, :data:`SMALL_TEXT_H`.
+TEXT_H = 3.5
+SMALL_TEXT_H = 2.5
+#: How much of the layout search's score (Σ weight·log(drawn area)) the larger text may cost
+#: the views on the largest format before the text is written :data:`SMALL_TEXT_H` high.
+TEXT_COST = 1.0
+#: The views' titles (mm).
+TITLE_H = 5.0
 #: At most this many velocity plans share the first sheet with the mechanism.
 PLANS_ON_SHEET = 12
-#: The width of the order of construction and of the notes (mm).
+#: The width of the order of construction and of the notes (mm), for 2.5 mm text; wider in
+#: proportion to the square root of a larger text's height.
 ORDER_W = 190.0
 #: Samples of the exact diagrams over a turn.
 DIAGRAM_SAMPLES = 361
@@ -61,6 +87,83 @@ DIAGRAM_SAMPLES = 361
 
 def _deg(phi: float) -> str:
     return fmt_number(math.degrees(phi) % 360, current(), digits=4)
+
+
+def sheet_formats(lk: Linkage) -> tuple[str, ...]:
+    """The formats the file's sheets may take: its ``[sheet] format`` (checked: one of
+    :data:`geomcad.sheet.formats.SIZES`), else :data:`SIZES`."""
+    fmt = lk.sheet.get("format") if lk.sheet else None
+    return SIZES if fmt is None else (formats.check(fmt, "sheet.format"),)
+
+
+def text_height(fmts: Sequence[str]) -> float:
+    """The cap height of tables, orders and notes on sheets of ``fmts``: :data:`TEXT_H` on A2
+    and A1, else :data:`SMALL_TEXT_H`."""
+    return TEXT_H if all(f in ("A2", "A1", "A0") for f in fmts) else SMALL_TEXT_H
+
+
+def _on(tree: Tree, wants: Mapping[View, float], fmt: str) -> tuple[Tree, formats.Sized] | None:
+    """``tree`` arranged on ``fmt`` in landscape (A4 upright), as a course project's sheets are,
+    the search seeking the wanted scales (as :func:`geomcad.sheet.formats.choose` does); a
+    :class:`Choice`'s arrangements one by one, the best kept (a quicker test of a format than
+    their joint search); ``None`` where a view finds no room at all."""
+    for v, k in wants.items():
+        v.readable = max(v.readable, k * v.readable_mm)
+    fmt, land = next(formats.candidates((fmt,)))
+    field = Field.of_format(fmt, land)
+    best: tuple[Tree, formats.Sized] | None = None
+    for alt in _alternatives(tree):
+        try:
+            lay = arrange(alt, field)
+        except ParameterError:
+            continue
+        if best is None or lay.score > best[1].layout.score:
+            best = alt, formats.Sized(fmt, land, lay)
+    return best
+
+
+def fit(
+    make: Callable[[float], tuple[Tree, Mapping[View, float]]], fmts: Sequence[str]
+) -> tuple[Tree, formats.Sized]:
+    """The tree ``make(h)`` builds, its tables and texts written ``h`` high, and its format: the
+    smallest of ``fmts`` (in landscape) on which it fits with the scales it wants
+    (:func:`geomcad.sheet.formats.meets`), its text :func:`text_height` high, else
+    :data:`SMALL_TEXT_H` (GOST 2.304's least) where only the text keeps it from fitting. On the
+    largest format every view is drawn as large as it can be (the wanted scales no longer
+    weigh in the search: they only decide whether a smaller format will do), and the text is
+    :data:`SMALL_TEXT_H` high where the larger text would cost the views more than
+    :data:`TEXT_COST` of the search's score (Σ weight·log(drawn area): a mechanism drawn at
+    1:4 instead of 1:2.5 costs about 1.9). ``make`` builds new views each time (the search
+    marks the views it arranges). The largest format's arrangement is the joint search of a
+    :class:`Choice` (it finds better splits than its arrangements one by one)."""
+    order = sorted(fmts, key=lambda f: FORMATS[f][0] * FORMATS[f][1])
+    for fmt in order[:-1]:
+        for h in dict.fromkeys((text_height((fmt,)), SMALL_TEXT_H)):
+            tree, wants = make(h)
+            on = _on(tree, wants, fmt)
+            if on is None:
+                break
+            tree, z = on
+            reached = formats.meets(z.layout, wants)
+            if z.layout.fits and reached:
+                return tree, z
+            if not reached:
+                break  # smaller text does not bring the views to their scales
+    tried: list[tuple[Tree, formats.Sized]] = []
+    for h in dict.fromkeys((text_height(order[-1:]), SMALL_TEXT_H)):
+        tree, _ = make(h)
+        fmt, land = next(formats.candidates(order[-1:]))
+        tried.append((tree, formats.Sized(fmt, land, arrange(tree, Field.of_format(fmt, land)))))
+    # the larger text where it fits and costs the views at most TEXT_COST of the search's score
+    big, small = tried[0][1].layout, tried[-1][1].layout
+    if big.fits and (not small.fits or big.score[1] >= small.score[1] - TEXT_COST):
+        return tried[0]
+    return tried[-1] if small.fits else tried[0]
+
+
+def order_width(h: float) -> float:
+    """The width of an order of construction or a note written ``h`` high (mm)."""
+    return round(ORDER_W * math.sqrt(h / SMALL_TEXT_H))
 
 
 @dataclass(frozen=True)
@@ -74,6 +177,7 @@ class Layout:
     accel: tuple[Position, ...]
     trees: tuple[Tree, ...]  # one per sheet
     mech: View  # the mechanism's view (on the first sheet)
+    sized: tuple[formats.Sized, ...] = ()  # each sheet's format and arrangement
 
 
 def _accel_positions(s: Solved) -> tuple[Position, ...]:
@@ -84,21 +188,23 @@ def _accel_positions(s: Solved) -> tuple[Position, ...]:
     )
 
 
-def _trees(s: Solved, accel: Sequence[Position]) -> tuple[tuple[Tree, ...], _Mechanism, bool]:
-    """The sheets' view trees (see the module's docstring)."""
+def _trees(
+    s: Solved, accel: Sequence[Position], h: float = TEXT_H
+) -> tuple[tuple[Tree, ...], _Mechanism, bool, dict[View, float]]:
+    """The sheets' view trees (see the module's docstring), tables and orders written ``h``
+    high, and the scales (model units per mm) the format is chosen to reach: the mechanism's
+    and the velocity plans'."""
+    lk = s.linkage
     n = len(s.positions)
     second = n > PLANS_ON_SHEET
     mech = _Mechanism(s)
     # vectors shorter than two arrowheads are drawn as their lettered end point (a note says so)
-    vplans = Grid(
-        *[
-            PlanView(P.vp, title=WORDS("position", i=i, phi=_deg(P.phi)), group="v",
-                     show_scale=False, weight=2.0, min_mm=SHORT_MM)
-            for i, P in enumerate(s.positions)
-        ],
-        title=WORDS("vplans"),
-        group="v",
-    )  # fmt: skip
+    vviews = [
+        PlanView(P.vp, title=WORDS("position", i=i, phi=_deg(P.phi)), group="v",
+                 show_scale=False, weight=2.0, min_mm=SHORT_MM)
+        for i, P in enumerate(s.positions)
+    ]  # fmt: skip
+    vplans = Grid(*vviews, title=WORDS("vplans"), group="v", title_height=TITLE_H)
     detail = accel[0] if accel else s.positions[0]
     aplans: Tree = Grid(
         *[
@@ -108,38 +214,48 @@ def _trees(s: Solved, accel: Sequence[Position]) -> tuple[tuple[Tree, ...], _Mec
         ],
         title=WORDS("aplans"),
         group="a",
+        title_height=TITLE_H,
     )  # fmt: skip
     if all(P is not detail for P in s.positions):
         # the velocity plan of the position drawn in detail, beside its acceleration plans
         vdetail = PlanView(detail.vp, title=WORDS("vplan_detail", phi=_deg(detail.phi)),
                            group="v", weight=2.0, min_mm=SHORT_MM)  # fmt: skip
         aplans = Row(vdetail, aplans)
-    diagrams = Column(*_diagrams(s), title=_through(s), title_height=3.5)
-    tables = Column(*_tables(s, accel), _Note(WORDS("short", mm=fmt_number(SHORT_MM))))
+    diagrams = Column(
+        Text([_through(s)], height=h), *_diagrams(s), title=WORDS("diagrams"), title_height=TITLE_H
+    )
+    width = order_width(h)
+    tables = Column(*_tables(s, accel, h), _Note(WORDS("short", mm=fmt_number(SHORT_MM)), h))
     # the velocity plan's steps, then the acceleration plan's
     names = [detail.vp.pole, *detail.vp.order, detail.ap.pole, *detail.ap.order]
     order = Steps(
         [detail.c.step(n) for n in names],
-        ORDER_W,
+        width,
         only=names,
+        height=h,
         title=_order_title(s, detail),
+        title_height=TITLE_H,
     )
+    wants: dict[View, float] = {mech: lk.length / CRANK_MM}
+    for view in vviews:  # one scale for them all: each needs its room at it
+        wants[view] = abs(lk.omega) * lk.length / PA_MM
     if second:
-        return (Column(mech, Row(diagrams, aplans, Column(tables, order))), vplans), mech, True
+        trees = (Column(mech, Row(diagrams, aplans, Column(tables, order))), vplans)
+        return trees, mech, True, wants
     sheet = Choice(
         Column(Row(mech, vplans), Row(diagrams, aplans, Column(tables, order))),
         Row(Column(mech, diagrams), Column(vplans, Row(aplans, Column(tables, order)))),
         Column(Row(mech, vplans), Row(diagrams, aplans), Row(tables, order)),
     )
-    return (sheet,), mech, False
+    return (sheet,), mech, False, wants
 
 
 class _Note(Text):
     """The note on plan vectors drawn as points: its room is kept in the layout, its words
     drawn only where a plan has such a vector at the scales arranged (:attr:`shown`)."""
 
-    def __init__(self, text: str) -> None:
-        super().__init__(paragraph=text, width=ORDER_W)
+    def __init__(self, text: str, h: float) -> None:
+        super().__init__(paragraph=text, width=order_width(h), height=h)
         self.shown = True
 
     def draw(self, d: Drawing, at: Placed) -> None:
@@ -175,20 +291,46 @@ def layout(s: Solved) -> Layout:
 @per_language
 def _arranged(s: Solved) -> tuple[Layout, tuple[Arranged, ...]]:
     """The arrangement of the sheets, once per solution and language (the build asks for the
-    scales and its draw for the sheets: the search runs once)."""
+    scales and its draw for the sheets: the search runs once). Each sheet takes the smallest
+    format of the file's on which its views reach the scales :func:`_trees` wants."""
     accel = _accel_positions(s)
-    trees, mech, second = _trees(s, accel)
-    field = Field.of_format(FORMAT)
-    lays = tuple(arrange(t, field) for t in trees)
+    fmts = sheet_formats(s.linkage)
+    made: list[tuple[tuple[Tree, ...], _Mechanism, bool, dict[View, float]]] = []
+
+    def make(i: int) -> Callable[[float], tuple[Tree, Mapping[View, float]]]:
+        def tree(h: float) -> tuple[Tree, Mapping[View, float]]:
+            made.append(_trees(s, accel, h))
+            t, _, _, wants = made[-1]
+            return t[i], {v: k for v, k in wants.items() if v in _views(t[i])}
+
+        return tree
+
+    first = fit(make(0), fmts)
+    trees_all, mech, second, _ = next(
+        m for m in made if any(first[0] is t for t in (m[0][0], *_alternatives(m[0][0])))
+    )
+    fitted = [first] + [fit(make(i), fmts) for i in range(1, len(trees_all))]
+    trees = tuple(t for t, _ in fitted)
+    sized = tuple(z for _, z in fitted)
+    lays = tuple(z.layout for z in sized)
     short = _short(s, accel, lays)
     for tree in trees:  # the note, where a plan needs it
-        for view in [tree] if isinstance(tree, View) else tree.views():
+        for view in _views(tree):
             if isinstance(view, _Note):
                 view.shown = short
     k_v = lays[-1].scale("v")
     out = Layout(lays[0][mech].scale or Scale(1.0), k_v, lays[0].scale("a"), second, accel,
-                 trees, mech)  # fmt: skip
+                 trees, mech, sized)  # fmt: skip
     return out, lays
+
+
+def _alternatives(tree: Tree) -> tuple[Tree, ...]:
+    """A :class:`Choice`'s arrangements; any other tree is its own one."""
+    return tree.items if isinstance(tree, Choice) else (tree,)
+
+
+def _views(tree: Tree) -> list[View]:
+    return [tree] if isinstance(tree, View) else list(tree.views())
 
 
 def sheet_scales(s: Solved) -> dict[str, float]:
@@ -203,13 +345,13 @@ def kinematic_sheets(s: Solved, stem: str = "") -> list[tuple[str, Sheet]]:
     lay, lays = _arranged(s)
     count = len(lay.trees)
     designation = WORDS("designation", stem=stem or WORDS("stem"))
-    d = start(FORMAT, _title(lk, WORDS("kinematics"), designation, None, 1, count))
+    d = lay.sized[0].start(_title(lk, WORDS("kinematics"), designation, None, 1, count))
     compose(d, lay.trees[0], layout=lays[0])
     if d.sheet.block is not None:
         d.sheet.block = replace(d.sheet.block, scale=lay.k_l.ratio_text())
     out: list[tuple[str, Sheet]] = [("", d.finish())]
     if lay.second:
-        d2 = start(FORMAT, _title(lk, WORDS("vplans_sheet"), designation, None, 2, count))
+        d2 = lay.sized[1].start(_title(lk, WORDS("vplans_sheet"), designation, None, 2, count))
         compose(d2, lay.trees[1], layout=lays[1])
         out.append(("plans", d2.finish()))
     return out
@@ -248,7 +390,7 @@ def _through(s: Solved) -> str:
         if lk.phi is None
         else WORDS("through_divisions", n=n)
     )
-    return WORDS("diagrams", through=through)
+    return WORDS("diagrams_note", through=through)
 
 
 def _divisions(s: Solved) -> int:
@@ -460,9 +602,10 @@ def _diagrams(s: Solved) -> list[Diagram]:
 # --- the tables -------------------------------------------------------------------------------
 
 
-def _tables(s: Solved, accel: Sequence[Position]) -> list[Table]:
+def _tables(s: Solved, accel: Sequence[Position], h: float = TEXT_H) -> list[Table]:
     """The angular velocities of the turning links in every position, and their angular
-    accelerations (with the output's) in the positions of the acceleration plans."""
+    accelerations (with the output's) in the positions of the acceleration plans, written ``h``
+    high."""
     lk = s.linkage
     links = [i for i in lk.moving_links if i != 1 and _turns(lk, i)]
     per_s, per_s2 = WORDS("per_s"), WORDS("per_s2")
@@ -492,10 +635,16 @@ def _tables(s: Solved, accel: Sequence[Position]) -> list[Table]:
                 *[table_number(P.eps[j], lk.omega**2) for j in links],
             ]
         )
+    row_h = row_height(h)
     return [
-        Table(rows, title=WORDS("omega_table"), row_h=6.0),
-        Table(rows2, title=WORDS("eps_table"), row_h=6.0),
+        Table(rows, title=WORDS("omega_table"), height=h, row_h=row_h, title_height=TITLE_H),
+        Table(rows2, title=WORDS("eps_table"), height=h, row_h=row_h, title_height=TITLE_H),
     ]
+
+
+def row_height(h: float) -> float:
+    """A table's row height for text ``h`` high: 6 mm for 2.5 mm, 8 mm for 3.5 mm."""
+    return 2.0 * h + 1.0
 
 
 def _turns(lk: Linkage, link: int) -> bool:

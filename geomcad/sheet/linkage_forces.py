@@ -1,4 +1,4 @@
-"""Sheets 2 and 3 of a linkage file's course project (A1): the force analysis and the flywheel.
+"""Sheets 2 and 3 of a linkage file's course project: the force analysis and the flywheel.
 
 :func:`force_sheets` returns them for the lead's list of linkage sheets, named ``forces`` and
 ``dynamics``:
@@ -16,7 +16,11 @@
 
 The sheets are trees of views (:mod:`geomcad.sheet.compose`): the layout chooses the splits
 and each view's scale (the largest of its series that fits its box), and every vector is drawn at
-the μ its view states. The words come from ``strings/<lang>/linkage_forces.toml``.
+the μ its view states. Each sheet takes the smallest format on which it fits
+(:func:`geomcad.sheet.linkage.fit`: A2 or A1, or the file's ``[sheet] format``; the force
+sheet's mechanism with its crank at least :data:`~geomcad.sheet.linkage.CRANK_MM` long), its
+tables, orders and notes 3.5 mm high on A2 and A1, its views' titles 5 mm. The words come from
+``strings/<lang>/linkage_forces.toml``.
 """
 
 from __future__ import annotations
@@ -41,13 +45,33 @@ from geomcad.linkage.loads import centre_vec
 from geomcad.linkage.model import Linkage
 from geomcad.linkage.plans import Position, plan_name
 from geomcad.linkage.solution import Solved, scheme
-from geomcad.sheet import Drawing, Sheet, TitleBlock, fmt_number, nice_factor, start
-from geomcad.sheet.compose import Choice, Column, Grid, Placed, Row, View, compose, scale_text
+from geomcad.sheet import Drawing, Sheet, TitleBlock, fmt_number, nice_factor
+from geomcad.sheet.compose import (
+    Choice,
+    Column,
+    Grid,
+    Placed,
+    Row,
+    Tree,
+    View,
+    compose,
+    scale_text,
+)
 from geomcad.sheet.drawing import SHORT_MM, Viewport
 from geomcad.sheet.graph import Axis, Graph
 from geomcad.sheet.lang import Words, current
+from geomcad.sheet.linkage import (
+    CRANK_MM,
+    TITLE_H,
+    file_title,
+    fit,
+    link_bodies,
+    order_width,
+    row_height,
+    sheet_formats,
+    table_number,
+)
 from geomcad.sheet.linkage import WORDS as KIN_WORDS
-from geomcad.sheet.linkage import file_title, link_bodies, table_number
 from geomcad.sheet.loads import force, moment
 from geomcad.sheet.model import XY, Polyline
 from geomcad.sheet.placer import text_outline
@@ -59,15 +83,12 @@ from geomcad.structure import Mechanism
 from geomcad.structure.model import Link
 
 WORDS = Words(__package__, "linkage_forces")
-FORMAT = "A1"
 #: The longest load arrow on a drawing of links (mm).
 LOAD_MM = 24.0
 #: The longest load arrow on Zhukovsky's lever (mm); shorter than 1 mm are left out.
 LEVER_LOAD_MM = 40.0
-#: The width of the note under the table of loads (mm).
+#: The width of the note under the table of loads (mm), for 2.5 mm text.
 TABLE2_W = 60.0
-#: The width of the order of the force analysis (mm).
-ORDER_W = 170.0
 
 
 def force_position(s: Solved) -> int:
@@ -95,17 +116,22 @@ def force_sheets(
     designation = KIN_WORDS("designation", stem=stem or KIN_WORDS("stem"))
     out: list[tuple[str, Sheet]] = []
     no = first_no
+    fmts = sheet_formats(lk)
     if a.forces is not None:
         k = force_position(s)
-        d = start(FORMAT, _title(lk, WORDS("forces"), designation, no, count))
-        _sheet2(d, s, s.positions[k], a.forces[k], k)
+        forces = a.forces[k]
+        tree, z = fit(lambda h: _sheet2(s, s.positions[k], forces, k, h), fmts)
+        d = z.start(_title(lk, WORDS("forces"), designation, no, count))
+        compose(d, tree, layout=z.layout)
         sheet = d.finish()
         leaders(sheet)
         out.append(("forces", sheet))
         no += 1
     if a.flywheel is not None:
-        d = start(FORMAT, _title(lk, WORDS("dynamics"), designation, no, count))
-        _sheet3(d, s, a.flywheel)
+        flywheel = a.flywheel
+        tree, z = fit(lambda h: (_sheet3(s, flywheel, h), {}), fmts)
+        d = z.start(_title(lk, WORDS("dynamics"), designation, no, count))
+        compose(d, tree, layout=z.layout)
         out.append(("dynamics", d.finish()))
     return out
 
@@ -127,36 +153,41 @@ def _num(x: float, digits: int = 4, scale: float = 0.0) -> str:
 # --- sheet 2 ------------------------------------------------------------------------------
 
 
-def _sheet2(d: Drawing, s: Solved, P: Position, f: Forces, k: int) -> None:
+def _sheet2(s: Solved, P: Position, f: Forces, k: int, h: float) -> tuple[Tree, dict[View, float]]:
+    """Sheet 2's tree, its tables and texts ``h`` high, and the scale its mechanism wants."""
     lk = s.linkage
     mech = _Loaded(lk, P, f, WORDS("mech", k=k, phi=_num(math.degrees(P.phi) % 360.0)))
     bodies = [_FreeBody(lk, P, gf) for gf in f.groups]
-    polys = [
-        Polygon(
-            poly,
-            title=_poly_title(gf, name),
-            margin=8.0,
-            names={pv.name: load_name(pv.name) for pv in poly.vectors},
-        )
+    # each group's polygons under the group cut out (the crank's under the crank)
+    per_group = [
+        [
+            Polygon(
+                poly,
+                title=_poly_title(gf, name),
+                margin=8.0,
+                names={pv.name: load_name(pv.name) for pv in poly.vectors},
+            )
+            for name, poly in gf.polygons
+        ]
         for gf in f.groups
-        for name, poly in gf.polygons
     ]
+    polys = [p for ps in per_group for p in ps]
+    groups = Row(*[Column(b, *ps) for b, ps in zip(bodies, per_group, strict=True)])
     lever = _Lever(lk, P, f)
-    table: Table | Column = _table2(f)
+    table: Table | Column = _table2(f, h)
     if mech.short or lever.short or any(b.short for b in bodies):
         note = WORDS("short", mm=fmt_number(SHORT_MM))
-        table = Column(table, Text(paragraph=note, width=TABLE2_W))
+        table = Column(table, Text(paragraph=note, width=TABLE2_W * h / 2.5, height=h))
     steps = order_steps(f)
-    order = Steps(steps, ORDER_W, only=[st.name for st in steps], words=WORDS,
-                  title=WORDS("order"))  # fmt: skip
+    order = Steps(steps, order_width(h) * 170.0 / 190.0, only=[st.name for st in steps],
+                  words=WORDS, height=h, title=WORDS("order"), title_height=TITLE_H)  # fmt: skip
     right = Column(table, order)
-    compose(
-        d,
-        Choice(
-            Column(Row(mech, Grid(*bodies)), Row(lever, Grid(*polys), right)),
-            Row(Column(mech, lever), Column(Grid(*bodies), Row(Grid(*polys), right))),
-        ),
+    tree = Choice(
+        Column(Row(mech, Grid(*bodies)), Row(lever, Grid(*polys), right)),
+        Row(Column(mech, lever), Column(Grid(*bodies), Row(Grid(*polys), right))),
+        Column(Row(mech, lever, right), groups),
     )
+    return tree, {mech: lk.length / CRANK_MM}
 
 
 def order_steps(f: Forces) -> list[Step]:
@@ -434,7 +465,7 @@ class _Lever(View):
         _draw_points(v, points)
 
 
-def _table2(f: Forces) -> Table:
+def _table2(f: Forces, h: float) -> Table:
     rows: list[tuple[str, float | str, str]] = []
     for lds in f.loads.values():
         for ld in lds:
@@ -451,13 +482,15 @@ def _table2(f: Forces) -> Table:
             rows.append((f"M_{{{r.of}{r.on}}}", _num(r.couple), "N·m"))
     rows.append((WORDS("m_bal_forces"), _num(f.M_bal), "N·m"))
     rows.append((WORDS("m_bal_lever"), _num(f.lever.M_bal), "N·m"))
-    return Table.of_values(rows, first=WORDS("load"), title=WORDS("loads"), row_h=6.0)
+    return Table.of_values(rows, first=WORDS("load"), title=WORDS("loads"),
+                           height=h, row_h=row_height(h), title_height=TITLE_H)  # fmt: skip
 
 
 # --- sheet 3 ------------------------------------------------------------------------------
 
 
-def _sheet3(d: Drawing, s: Solved, fw: Flywheel) -> None:
+def _sheet3(s: Solved, fw: Flywheel, h: float) -> Tree:
+    """Sheet 3's tree, its tables ``h`` high."""
     lk = s.linkage
     sign = 1.0 if lk.omega > 0 else -1.0
     psi = fw.psi
@@ -488,16 +521,13 @@ def _sheet3(d: Drawing, s: Solved, fw: Flywheel) -> None:
         cs.append(Curve(np.degrees(psi_k), gy, "construction", points=True))
         graphs.append(Diagram(x, AxisSpec(sym, unit, name), cs, least=(120.0, 45.0),
                               prefer=(600.0, 150.0)))  # fmt: skip
-    column = Column(*graphs, title=WORDS("graphs"), title_height=3.5)
+    column = Column(*graphs, title=WORDS("graphs"), title_height=TITLE_H)
     witt = _Wittenbauer(fw)
     omega = _omega(lk, fw)
-    tables = Column(*_tables3(lk, fw))
-    compose(
-        d,
-        Choice(
-            Row(column, Column(witt, Row(omega, tables))),
-            Column(Row(column, witt), Row(omega, tables)),
-        ),
+    tables = Column(*_tables3(lk, fw, h))
+    return Choice(
+        Row(column, Column(witt, Row(omega, tables))),
+        Column(Row(column, witt), Row(omega, tables)),
     )
 
 
@@ -602,7 +632,7 @@ def _omega(lk: Linkage, fw: Flywheel) -> Diagram:
     )
 
 
-def _tables3(lk: Linkage, fw: Flywheel) -> list[Table]:
+def _tables3(lk: Linkage, fw: Flywheel, h: float) -> list[Table]:
     n = len(fw.phis)
     step = max(1, math.ceil(n / 12))
     rows: list[list[str]] = [
@@ -630,7 +660,9 @@ def _tables3(lk: Linkage, fw: Flywheel) -> list[Table]:
         kind = WORDS("disc") if lk.dynamics.flywheel == "disc" else WORDS("rim")
         res += [(f"D ({kind})", _num(fw.D), "m"), ("b", _num(fw.b), "m"),
                 ("m", _num(fw.mass), "kg")]  # fmt: skip
+    row_h = row_height(h)
     return [
-        Table(rows, title=WORDS("table3"), row_h=5.0),
-        Table.of_values(res, header=False, title=WORDS("results3"), row_h=5.0),
-    ]
+        Table(rows, title=WORDS("table3"), height=h, row_h=row_h, title_height=TITLE_H),
+        Table.of_values(res, header=False, title=WORDS("results3"), height=h, row_h=row_h,
+                        title_height=TITLE_H),
+    ]  # fmt: skip
