@@ -33,6 +33,7 @@ import re
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from typing import Any
 
+from geomcad import tol
 from geomcad.construction.recorder import Construction, Step
 from geomcad.geom import Arc, Circle, Line, Ray, Segment, Vec
 from geomcad.sheet.compose import Extent, Figure
@@ -179,7 +180,7 @@ def replay(
     prefer = prefer or {}
     every = [q for s in steps for q in _points(s.result)]
     clip_box = box or extent(steps, names)
-    span = max(clip_box[2] - clip_box[0], clip_box[3] - clip_box[1], 1e-12)
+    span = max(clip_box[2] - clip_box[0], clip_box[3] - clip_box[1], tol.REL_LENGTH)
 
     def label(
         step: Step,
@@ -215,10 +216,10 @@ def replay(
                 ts = sorted(
                     line.param(q)
                     for q in every
-                    if abs(line.side(q)) <= 1e-9 * span
-                    and (isinstance(item, Line) or line.param(q) >= -1e-9 * span)
+                    if abs(line.side(q)) <= tol.DERIVED * span
+                    and (isinstance(item, Line) or line.param(q) >= -tol.DERIVED * span)
                 )
-                if len(ts) >= 2 and ts[-1] - ts[0] > 1e-9 * span:
+                if len(ts) >= 2 and ts[-1] - ts[0] > tol.DERIVED * span:
                     mm = over if isinstance(over, float | int) else over.get(s.name, 4.0)
                     extra = v.scale.model(mm)
                     t0, t1 = ts[0] - extra, ts[-1] + extra
