@@ -247,7 +247,10 @@ def _draw_points(v: Viewport, points: Points) -> None:
     joins a label placed away from its dot: :func:`leaders`)."""
     for at, labels in points.values():
         v.dot(at)
-        v.label(at, f"{', '.join(labels)} (·)", 2.5, clear=1.0, id=POINTS_ID)
+        # a couple's two forces can land on one point (on a lever in a dead position): its
+        # name is written once
+        names = ", ".join(dict.fromkeys(labels))
+        v.label(at, f"{names} (·)", 2.5, clear=1.0, id=POINTS_ID)
 
 
 #: The id of the labels of the forces drawn as points (they get a leader where placed away).
