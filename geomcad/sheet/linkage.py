@@ -53,7 +53,7 @@ from geomcad.sheet.drawing import SHORT_MM
 from geomcad.sheet.frame import FORMATS
 from geomcad.sheet.lang import Words, current, per_language
 from geomcad.sheet.motion import Frames, turn
-from geomcad.sheet.scale import Scale
+from geomcad.sheet.scale import Scale, fmt_column
 from geomcad.sheet.scheme import Body, draw_scheme
 from geomcad.sheet.views import AxisSpec, Curve, Diagram, PlanView, Steps, Table, Text
 
@@ -613,33 +613,41 @@ def _tables(s: Solved, accel: Sequence[Position], h: float = TEXT_H) -> list[Tab
         "№", "φ_1, °", f"V_{{{lk.output}}}, {WORDS('m_s')}",
         *[f"ω_{{{i}}}, {per_s}" for i in links],
     ]  # fmt: skip
-    rows: list[list[str]] = [head]
-    for i, P in enumerate(s.positions):
-        rows.append(
-            [
-                str(i),
-                _deg(P.phi),
-                table_number(P.vel[lk.output].norm, abs(lk.omega) * lk.length),
-                *[table_number(P.omega[j], abs(lk.omega)) for j in links],
-            ]
-        )
+    rows = [head, *_columns(
+        [float(i) for i in range(len(s.positions))],
+        [math.degrees(P.phi) % 360 for P in s.positions],
+        _zeroed([P.vel[lk.output].norm for P in s.positions], abs(lk.omega) * lk.length),
+        *[_zeroed([P.omega[j] for P in s.positions], abs(lk.omega)) for j in links],
+        angle=1,
+    )]  # fmt: skip
     head2 = [
         "φ_1, °", f"a_{{{lk.output}}}, {WORDS('m_s2')}", *[f"ε_{{{i}}}, {per_s2}" for i in links]
     ]  # fmt: skip
-    rows2: list[list[str]] = [head2]
-    for P in accel:
-        rows2.append(
-            [
-                _deg(P.phi),
-                table_number(P.acc[lk.output].norm, lk.omega**2 * lk.length),
-                *[table_number(P.eps[j], lk.omega**2) for j in links],
-            ]
-        )
+    rows2 = [head2, *_columns(
+        [math.degrees(P.phi) % 360 for P in accel],
+        _zeroed([P.acc[lk.output].norm for P in accel], lk.omega**2 * lk.length),
+        *[_zeroed([P.eps[j] for P in accel], lk.omega**2) for j in links],
+        angle=0,
+    )]  # fmt: skip
     row_h = row_height(h)
     return [
         Table(rows, title=WORDS("omega_table"), height=h, row_h=row_h, title_height=TITLE_H),
         Table(rows2, title=WORDS("eps_table"), height=h, row_h=row_h, title_height=TITLE_H),
     ]
+
+
+def _zeroed(xs: Sequence[float], scale: float) -> list[float]:
+    """Round-off of a zero (at most :data:`ZERO` of ``scale``, its quantity's size) as 0."""
+    return [0.0 if abs(x) <= ZERO * scale else float(x) for x in xs]
+
+
+def _columns(*cols: Sequence[float], angle: int = -1) -> list[list[str]]:
+    """Table rows from columns of one quantity each, a column's numbers with the same count of
+    decimals (:func:`~geomcad.sheet.scale.fmt_column`): 3 significant figures at its largest,
+    as the plans are read, 4 for the crank angle (column ``angle``)."""
+    n = len(cols)
+    texts = [fmt_column(c, current(), 4 if i == angle % n else 3) for i, c in enumerate(cols)]
+    return [list(r) for r in zip(*texts, strict=True)]
 
 
 def row_height(h: float) -> float:
