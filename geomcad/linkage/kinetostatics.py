@@ -36,12 +36,14 @@ the equation of powers: M_bal_lever = −ΣP/ω1 over the same loads, inertia lo
 from __future__ import annotations
 
 import math
+import sys
 from collections.abc import Iterable
 from dataclasses import dataclass, field
 from typing import Literal
 
 import numpy as np
 
+from geomcad import tol
 from geomcad.construction import Construction
 from geomcad.forces import ForcePolygon, Known, PlanVector, Term, Unknown, force_polygon
 from geomcad.geom import Vec
@@ -363,7 +365,7 @@ def _closing(
 
 def _clean(x: float, scale: float) -> float:
     """``x`` for the order of the analysis: 0 where it is at the level of rounding of ``scale``."""
-    return 0.0 if abs(x) <= 1e-12 * scale else x
+    return 0.0 if abs(x) <= tol.REL_LENGTH * scale else x
 
 
 def _tangential(o: int, link: int, E: str, J: str, M: float, length: float) -> dict[str, object]:
@@ -637,7 +639,7 @@ class _Solver:
 
     def moment_scale(self, *more: Vec) -> float:
         """The moments' scale (N·m) of the analysis: the largest reaction on the crank's arm (a
-        moment below 1e-12 of it is written as 0 in the order of the analysis)."""
+        moment within ``tol.REL_LENGTH`` of it is written as 0 in the order of the analysis)."""
         forces = [r.force.norm for r in self.reactions] + [F.norm for F in more]
         return max(forces, default=0.0) * self.lk.length
 
@@ -696,7 +698,8 @@ def kinetostatics(lk: Linkage, P: Position, cyc: Cycle | None = None) -> Forces:
     lever = zhukovsky(lk, P, given, c, scale)
     # relative to M_bal, or to the moments of the analysis where M_bal is about zero (a dead
     # position, where the lever's plan collapses to its pole)
-    off = abs(lever.M_bal - M_bal) / max(abs(M_bal), abs(lever.M_bal), 1e-9 * scale, 1e-300)
+    floor = max(tol.DERIVED * scale, sys.float_info.min)
+    off = abs(lever.M_bal - M_bal) / max(abs(M_bal), abs(lever.M_bal), floor)
     off *= 100.0
     c.value(
         "M_bal check",

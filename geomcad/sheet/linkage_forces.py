@@ -319,7 +319,21 @@ def _draw_loads(
             )
 
 
-class _Loaded(View):
+class _Forces(View):
+    """A mechanism view with loads drawn at their own μ_F (``kF``, stated after the length
+    scale in the caption) over the model box ``_ext``."""
+
+    _ext: tuple[float, float, float, float]
+    kF: Scale
+
+    def extent(self) -> tuple[float, float, float, float]:
+        return self._ext
+
+    def caption(self, scale: Scale | None) -> str:
+        return f"{super().caption(scale)};  {scale_text(self.kF)}"
+
+
+class _Loaded(_Forces):
     """The mechanism in the force position with every load drawn at its μ_F."""
 
     def __init__(self, lk: Linkage, P: Position, f: Forces, title: str) -> None:
@@ -331,12 +345,6 @@ class _Loaded(View):
         self._ext = _bbox(list(P.pos.values()), lk.length)
         drawn = [ld.force.norm for ld in self.loads if ld.force is not None and ld.at is not None]
         self.short = _has_short(drawn, self.kF.k)
-
-    def extent(self) -> tuple[float, float, float, float]:
-        return self._ext
-
-    def caption(self, scale: Scale | None) -> str:
-        return f"{super().caption(scale)};  {scale_text(self.kF)}"
 
     def draw(self, d: Drawing, at: Placed) -> None:
         v = at.viewport
@@ -353,7 +361,7 @@ class _Loaded(View):
         v.turn(P.pos[lk.pivot], self.f.M_bal, 30.0, WORDS("M_bal"), 8.0, 250.0, "result", 2.5)
 
 
-class _FreeBody(View):
+class _FreeBody(_Forces):
     """An Assur group (or the crank) cut out, with its loads and the reactions found."""
 
     def __init__(self, lk: Linkage, P: Position, gf: GroupForces) -> None:
@@ -371,12 +379,6 @@ class _FreeBody(View):
         forces += [r.force.norm for r in gf.reactions]
         self.kF = nice_factor(max(forces, default=0.0) or 1.0, LOAD_MM, "F")
         self.short = _has_short(forces, self.kF.k)
-
-    def extent(self) -> tuple[float, float, float, float]:
-        return self._ext
-
-    def caption(self, scale: Scale | None) -> str:
-        return f"{super().caption(scale)};  {scale_text(self.kF)}"
 
     def draw(self, d: Drawing, at: Placed) -> None:
         v = at.viewport
