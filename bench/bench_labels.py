@@ -20,11 +20,11 @@ import time
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
-sys.path[:0] = [str(ROOT / "tests"), str(ROOT)]
+sys.path[:0] = [str(ROOT / "tests")]
 
-from tree import use_working_tree  # noqa: E402
+from installed import use_installed  # noqa: E402
 
-use_working_tree()
+use_installed()
 
 import layout  # noqa: E402
 from shapely.geometry import Point  # noqa: E402

@@ -90,7 +90,13 @@ def main(argv: Sequence[str] | None = None) -> int:
     except _UsageError as exc:
         return _fail(str(exc))
     except SystemExit as exc:  # --help
+        if _HELP_FAILED:  # the help was printed, one part of it with an error: line
+            return EXIT_INTERNAL
         return exc.code if isinstance(exc.code, int) else EXIT_OK
+    except Exception as exc:
+        if os.environ.get("GEOMCAD_TRACEBACK"):
+            raise
+        return _internal(argparse.Namespace(command=args[0] if args else "geomcad"), None, exc)
     pid: str | None = getattr(ns, "id", None)
     try:
         status: int = ns.func(ns)
@@ -347,6 +353,10 @@ def _help_topic(args: Sequence[str]) -> tuple[str, str] | None:
     return None
 
 
+#: Set when a part of a --help could not be built (its error: line is written; exit 70).
+_HELP_FAILED: list[Exception] = []
+
+
 def _help_epilog(command: str, help_for: tuple[str, str] | None) -> str:
     """The lists of the problem whose help is asked for, or how to get them."""
     if help_for is None or help_for[0] != command:
@@ -355,11 +365,26 @@ def _help_epilog(command: str, help_for: tuple[str, str] | None) -> str:
 
     try:
         problem = _problem(help_for[1])
+        text = reference.params_text(problem)
+        if command == "verify":
+            text += "\n" + reference.results_text(problem)
     except GeomcadError as exc:
         return f"{_one_line(str(exc))}\n"
-    text = reference.params_text(problem)
-    if command == "verify":
-        text += "\n" + reference.results_text(problem)
+    except Exception as exc:
+        # the help is printed all the same; what could not be listed is one error: line
+        if os.environ.get("GEOMCAD_TRACEBACK"):
+            raise
+        _HELP_FAILED.append(exc)
+        text = _one_line(f"{type(exc).__name__}: {exc}")[:300]
+        with contextlib.suppress(OSError, ValueError):
+            _write(
+                sys.stderr,
+                _error_line(
+                    f"internal error listing the parameters of {help_for[1]} for --help: "
+                    f"{text} (please report)"
+                ),
+            )
+        return "geomcad params ID lists ID's parameters.\n"
     return text
 
 

@@ -1,7 +1,8 @@
 """Shared pytest options: ``--update-golden`` regenerates the golden sheets in ``tests/golden/``.
 
-The tests run the working tree: ``geomcad`` and ``geomcad_constructions`` (the ``constructions/``
-folder) are imported from this checkout, not from an installed copy (``tests/tree.py``).
+The tests run the installed package, as a user gets it: ``geomcad`` and ``geomcad_constructions``
+are imported from what ``pip install .`` (or a developer's ``pip install -e .``) installed, never
+from the checkout's folders (``tests/installed.py``).
 
 Hypothesis runs derandomized, so CI and a developer's machine try the same examples: a failure is
 reproducible, never a coin toss on one run (``HYPOTHESIS_PROFILE=explore`` draws new examples).
@@ -13,9 +14,12 @@ import os
 
 import pytest
 from hypothesis import settings
-from tree import use_working_tree
+from installed import NotInstalled, use_installed
 
-use_working_tree()
+try:
+    use_installed()
+except NotInstalled as exc:
+    raise pytest.UsageError(str(exc)) from None
 
 settings.register_profile("ci", derandomize=True)
 settings.register_profile("explore", derandomize=False)

@@ -456,3 +456,27 @@ def test_build_writes_real_svg(capsys: pytest.CaptureFixture[str], tmp_path: Pat
     assert out.splitlines()[0] == str(tmp_path / f"{PID}.svg")
     for line in out.splitlines():
         assert Path(line).read_text(encoding="utf-8").lstrip().startswith(("<?xml", "<svg"))
+
+
+def test_a_help_whose_problem_fails_to_load_prints_the_help_and_one_error_line(
+    monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """Whatever fails while a file's --help is built (once: a module missing from the wheel),
+    the help is printed with one error: line and no traceback."""
+    from geomcad import cli as cli_module
+    from geomcad import reference
+
+    def missing(problem: object) -> str:
+        raise ModuleNotFoundError("No module named 'geomcad.linkage'")
+
+    monkeypatch.setattr(reference, "params_text", missing)
+    monkeypatch.setattr(cli_module, "_HELP_FAILED", [])
+    status = cli_module.main(
+        ["solve", str(Path(__file__).resolve().parents[1] / "examples" / "shaper.toml"), "--help"]
+    )
+    out, err = capsys.readouterr()
+    assert status == 70
+    assert out.startswith("usage: geomcad solve")
+    lines = err.splitlines()
+    assert len(lines) == 1 and lines[0].startswith("error: internal error listing the parameters")
+    assert "geomcad.linkage" in lines[0] and "Traceback" not in err

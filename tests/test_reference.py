@@ -112,8 +112,6 @@ def test_listing_every_problem_imports_no_construction_code() -> None:
     times them)."""
     code = (
         "import sys\n"
-        f"sys.path.insert(0, {str(ROOT / 'tests')!r})\n"
-        "from tree import use_working_tree; use_working_tree()\n"
         "from geomcad.cli import main\n"
         "from geomcad import registry\n"
         "main(['list'])\n"
