@@ -591,7 +591,8 @@ def _order_lines(sheet: Sheet) -> list[str]:
     ids=["seed-ru", "seed-en", "no-friction", "slowing-en"],
 )
 def test_the_order_is_written_from_the_recorded_steps(changes: dict[str, float], lang: str) -> None:
-    from constructions.sheets_2013_7 import ORDER, ORDER_NO_FRICTION, WORDS, order_steps
+    from geomcad_constructions.sheets_2013_7 import ORDER, ORDER_NO_FRICTION, WORDS, order_steps
+
     from geomcad.sheet.lang import language
     from geomcad.sheet.views import num
 

@@ -7,8 +7,8 @@ from __future__ import annotations
 import math
 
 import pytest
+from geomcad_constructions.dyn_common import facing, small
 
-from constructions.dyn_common import facing, small
 from geomcad.sheet import Scale, TitleBlock, start
 from geomcad.sheet.drawing import ARROW_LEN, Viewport
 from geomcad.sheet.lang import language

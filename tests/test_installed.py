@@ -75,6 +75,11 @@ def test_the_installed_package_holds_every_file_of_the_tree() -> None:
     installed = {line.split(",")[0] for line in record.splitlines() if line}
     missing = sorted(set(tree_files()) - installed)
     assert not missing, f"pip install . left out {missing}"
+    # a file the tree has not came from a stale build/ folder (setuptools reuses build/lib),
+    # which can also hide a file the package would leave out
+    ours = {n for n in installed if n.split("/")[0] in PACKAGES and "__pycache__" not in n}
+    extra = sorted(ours - set(tree_files()))
+    assert not extra, f"the install holds files the tree has not (rm -rf build, reinstall): {extra}"
 
 
 @pytest.fixture(scope="module")
