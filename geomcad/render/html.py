@@ -300,9 +300,9 @@ def _flat(xs: Arr, ys: Arr) -> list[float]:
     return out
 
 
-def _sig(x: float) -> float:
-    """A value for the table: 7 significant figures."""
-    return float(f"{float(x):.7g}") + 0.0
+def _sig(x: float, digits: int = 7) -> float:
+    """A value for the table: 7 significant figures (the crank angle: 10, as ``solve``)."""
+    return float(f"{float(x):.{digits}g}") + 0.0
 
 
 def _svg_markup(markup: str) -> str:
@@ -340,19 +340,20 @@ def _point_markup(name: str) -> str:
     return stem if stem == name or not stem else f"{stem}_{{{name[len(stem) :]}}}"
 
 
-def _mech(page: Page) -> tuple[str, dict[str, Any]]:
-    """The mechanism's field: its static SVG and the moving points' data."""
+def _mech(page: Page) -> tuple[str, str, dict[str, Any]]:
+    """The mechanism's field: its caption (HTML), its static SVG and the moving points'
+    data."""
     m = page.motion
     xmin, ymin, xmax, ymax = m.extent()
     k = gost_scale_to_fit(xmax - xmin, ymax - ymin, *MECH_ROOM)
-    w, h = k.mm(xmax - xmin) + 2 * PAD, k.mm(ymax - ymin) + 2 * PAD + 8.0
+    w, h = k.mm(xmax - xmin) + 2 * PAD, k.mm(ymax - ymin) + 2 * PAD
 
     def xy(arr: Arr) -> tuple[Arr, Arr]:
-        return PAD + (arr[:, 0] - xmin) / k.k, 8.0 + PAD + (ymax - arr[:, 1]) / k.k
+        return PAD + (arr[:, 0] - xmin) / k.k, PAD + (ymax - arr[:, 1]) / k.k
 
     pts = {name: _flat(*xy(arr)) for name, arr in m.points.items()}
-    parts = [f'<text class="title" x="2" y="6">{_svg_markup(k.label())}'
-             f"{html.escape(_ratio(k))}</text>"]  # fmt: skip
+    caption = f"{html.escape(WORDS('mech'))}, {_html_markup(k.label())}{html.escape(_ratio(k))}"
+    parts: list[str] = []
     for (ax, ay), (bx, by) in m.guides:
         (x1, x2), (y1, y2) = xy(np.array([[ax, ay], [bx, by]]))
         parts.append(f'<line class="guide" x1="{num(x1)}" y1="{num(y1)}" x2="{num(x2)}" '
@@ -395,7 +396,7 @@ def _mech(page: Page) -> tuple[str, dict[str, Any]]:
                      f"{_svg_markup(_point_markup(p))}</text>")  # fmt: skip
     svg = (f'<svg id="mech" viewBox="0 0 {num(w)} {num(h)}" data-k="{k.k!r}" role="img" '
            f'aria-label="{html.escape(WORDS("mech"))}">' + "".join(parts) + "</svg>")  # fmt: skip
-    return svg, {"points": pts, "links": links, "closed": list(m.closed_links),
+    return caption, svg, {"points": pts, "links": links, "closed": list(m.closed_links),
                  "sliders": sliders, "joints": joints, "labels": named}  # fmt: skip
 
 
@@ -404,14 +405,14 @@ def _ratio(k: Scale) -> str:
     return f"   (M {r})" if r else ""
 
 
-def _plan(i: int, plan: PlanFrames) -> tuple[str, dict[str, Any]]:
-    """A plan's field: its title with μ and the points' data (the pole in the middle of the
-    turn's extent)."""
+def _plan(i: int, plan: PlanFrames) -> tuple[str, str, dict[str, Any]]:
+    """A plan's field: its title with μ (HTML), its SVG and the points' data (the pole in the
+    middle of the turn's extent)."""
     allp = np.concatenate(list(plan.points.values()))
     cx = (float(allp[:, 0].min()) + float(allp[:, 0].max())) / 2.0
     cy = (float(allp[:, 1].min()) + float(allp[:, 1].max())) / 2.0
     k = plan.scale.k
-    ox, oy = PLAN_ROOM / 2.0 - cx / k, 8.0 + PLAN_ROOM / 2.0 + cy / k
+    ox, oy = PLAN_ROOM / 2.0 - cx / k, PLAN_ROOM / 2.0 + cy / k
     from geomcad.sheet.plans import markup_of
 
     pts = {}
@@ -419,8 +420,8 @@ def _plan(i: int, plan: PlanFrames) -> tuple[str, dict[str, Any]]:
         if name not in plan.at_pole:
             pts[name] = _flat(ox + arr[:, 0] / k, oy - arr[:, 1] / k)
     pole = [_r(ox), _r(oy)]
-    parts = [f'<text class="title" x="2" y="6">{html.escape(plan.title)}, '
-             f"{_svg_markup(plan.scale.label())}</text>"]  # fmt: skip
+    caption = f"{html.escape(plan.title)}, {_html_markup(plan.scale.label())}"
+    parts: list[str] = []
     for j, (_, _, known) in enumerate(plan.vectors):
         cls = "vec known" if known else "vec"
         parts.append(f'<g class="{cls}" id="p{i}-v{j}"><line/><polygon/></g>')
@@ -432,12 +433,12 @@ def _plan(i: int, plan: PlanFrames) -> tuple[str, dict[str, Any]]:
         parts.append(f'<circle class="dot" id="p{i}-d-{html.escape(name)}" r="0.8"/>')
         parts.append(f'<text class="label" id="p{i}-l-{html.escape(name)}">'
                      f"{_svg_markup(markup_of(name))}</text>")  # fmt: skip
-    h = PLAN_ROOM + 8.0
+    h = PLAN_ROOM
     svg = (f'<svg id="plan{i}" class="plan" viewBox="0 0 {num(PLAN_ROOM)} {num(h)}" '
            f'data-k="{k!r}" data-pole="{num(pole[0])} {num(pole[1])}" role="img" '
            f'aria-label="{html.escape(plan.title)}">' + "".join(parts) + "</svg>")  # fmt: skip
     vectors = [[t, hd] for t, hd, _ in plan.vectors]
-    return svg, {"points": pts, "pole": pole, "vectors": vectors}
+    return caption, svg, {"points": pts, "pole": pole, "vectors": vectors}
 
 
 def _diagram(i: int, d: Series, psi_deg: Arr, stops: Sequence[tuple[int, int]]) -> tuple[str, Any]:
@@ -492,11 +493,11 @@ def _font() -> str:
 def to_html(page: Page) -> str:
     """The page as one HTML document (UTF-8 text), in the language being drawn."""
     lang = current()
-    mech_svg, mech = _mech(page)
-    plan_svgs, plans = [], []
+    mech_caption, mech_svg, mech = _mech(page)
+    plan_figures, plans = [], []
     for i, plan in enumerate(page.plans):
-        svg, data = _plan(i, plan)
-        plan_svgs.append(svg)
+        caption, svg, data = _plan(i, plan)
+        plan_figures.append(f"<figure><figcaption>{caption}</figcaption>{svg}</figure>")
         plans.append(data)
     psi_deg = np.degrees(page.psi)
     diag_svgs, diags = [], []
@@ -505,12 +506,18 @@ def to_html(page: Page) -> str:
         diag_svgs.append(svg)
         diags.append(data)
     n = page.motion.frames
-    table = [{"key": s.key, "values": [_sig(v) for v in s.values.tolist()]} for s in page.table]
+    table = [
+        {
+            "key": s.key,
+            "values": [_sig(v, 10 if s.key == "phi_deg" else 7) for v in s.values.tolist()],
+        }
+        for s in page.table
+    ]
     frames = {
         "n": n,
         "lang": lang,
         "period": PERIOD_S,
-        "phi": [round(float(v), 4) for v in np.degrees(page.motion.phi) % 360.0],
+        "phi": [_sig(v, 10) for v in np.degrees(page.motion.phi) % 360.0],
         "stops": [list(s) for s in page.stops],
         "mech": mech,
         "plans": plans,
@@ -581,8 +588,8 @@ def to_html(page: Page) -> str:
 {html.escape(WORDS("stops"))}: {stops}</span>
 </div>
 <div class="grid">
-<figure class="mech">{mech_svg}</figure>
-<div class="plans">{"".join(f"<figure>{s}</figure>" for s in plan_svgs)}</div>
+<figure class="mech"><figcaption>{mech_caption}</figcaption>{mech_svg}</figure>
+<div class="plans">{"".join(plan_figures)}</div>
 <div class="diagrams">{"".join(diag_svgs)}</div>
 <table id="values"><caption>{html.escape(WORDS("values"))}</caption>
 <thead><tr><th>{html.escape(WORDS("quantity"))}</th><th>{html.escape(WORDS("value"))}</th>\

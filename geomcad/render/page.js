@@ -120,11 +120,12 @@
     const tag = e.target && e.target.tagName;
     if (tag === "SELECT" || (tag === "BUTTON" && (e.key === " " || e.key === "Enter"))) return;
     if ($("panel-motion").hidden) return;
-    const k = Number(slider.value), native = e.target === slider;
+    // the same steps on the slider and elsewhere (a range input's own Page Up is 10 % of it)
+    const k = Number(slider.value);
     const step = { ArrowRight: 1, ArrowUp: 1, ArrowLeft: -1, ArrowDown: -1, PageUp: 10, PageDown: -10 }[e.key];
-    if (step !== undefined) { if (!native) { e.preventDefault(); go(k + step); } else setPlaying(false); return; }
-    if (e.key === "Home" && !native) { e.preventDefault(); go(0); }
-    else if (e.key === "End" && !native) { e.preventDefault(); go(N - 1); }
+    if (step !== undefined) { e.preventDefault(); go(k + step); return; }
+    if (e.key === "Home") { e.preventDefault(); go(0); }
+    else if (e.key === "End") { e.preventDefault(); go(N - 1); }
     else if (e.key === " ") { e.preventDefault(); setPlaying(!playing); }
     else if (e.key === "]") { e.preventDefault(); stop(1); }
     else if (e.key === "[") { e.preventDefault(); stop(-1); }
