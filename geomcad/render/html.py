@@ -134,7 +134,7 @@ def page_of(sol: Any, sheets: Sequence[tuple[str, Any]] = (), source: str = "") 
         return linkage_page(sol.data, svgs, data)
     assert sol.problem.motion is not None
     motion = sol.problem.motion(sol, FRAMES)
-    return motion_page(motion, svgs, data)
+    return motion_page(motion, svgs, data, f"{sol.problem.id}. {sol.problem.title}")
 
 
 def check(sol: Any) -> None:
@@ -176,9 +176,11 @@ def motion_page(
     motion: Frames,
     sheets: tuple[tuple[str, str], ...] = (),
     data: tuple[tuple[str, str], ...] = (),
+    title: str = "",
 ) -> Page:
     """The page of a problem's motion: the mechanism and, where the motion has velocities, the
-    velocity plan (its absolute vectors from the pole and the relative ones of its edges)."""
+    velocity plan (its absolute vectors from the pole and the relative ones of its edges);
+    ``title`` defaults to the motion's."""
     n = motion.frames
     sense = 1.0 if motion.omega1 > 0 else -1.0
     psi = (motion.phi - motion.phi[0]) * sense
@@ -201,7 +203,7 @@ def motion_page(
                     np.hypot(v[:, 0], v[:, 1]),
                 )
             )
-    return Page(motion.title, motion, psi, ((0, 0),), tuple(plans), (), tuple(table),
+    return Page(title or motion.title, motion, psi, ((0, 0),), tuple(plans), (), tuple(table),
                 {}, sheets, data)  # fmt: skip
 
 
@@ -542,7 +544,7 @@ def to_html(page: Page) -> str:
     tabs.append(("data", WORDS("tab_data")))
     tab_buttons = "".join(
         f'<button type="button" role="tab" id="tab-{t}" aria-controls="panel-{t}" '
-        f'aria-selected="{"true" if i == 0 else "false"}">{html.escape(title)}</button>'
+        f'aria-selected="{"true" if i == 0 else "false"}">{_html_markup(title)}</button>'
         for i, (t, title) in enumerate(tabs)
     )
     sheet_panels = "".join(
