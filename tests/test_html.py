@@ -413,3 +413,15 @@ def test_every_linkage_file_turns_in_chromium(
         assert not _errors(browser), name
         if name == "offset-slotted.toml":
             _shot(browser, tmp_path, "html-unseen-11.png")
+
+
+def test_the_page_speaks_the_language_being_drawn() -> None:
+    from geomcad.sheet.lang import language
+
+    s = _solved((EXAMPLES / "slider-crank.toml").read_text(encoding="utf-8"))
+    with language("en"):
+        en = to_html(linkage_page(s))
+    with language("ru"):
+        ru = to_html(linkage_page(s))
+    assert '<html lang="en">' in en and "Velocity plan" in en and "μ<sub>V</sub> = 0." in en
+    assert '<html lang="ru">' in ru and "План скоростей" in ru and "μ<sub>V</sub> = 0," in ru

@@ -32,7 +32,7 @@ import html
 import json
 import math
 from collections.abc import Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from importlib import resources
 from typing import Any
 
@@ -257,6 +257,7 @@ def linkage_page(
                                 WORDS("omega", i=i), st.omega[i]))  # fmt: skip
             table.append(Series(f"eps_{i}", f"ε_{{{i}}}", UNITS("per_s2"),
                                 WORDS("eps", i=i), st.eps[i]))  # fmt: skip
+    table = _once(table)
     stops = []
     for i, P in enumerate(s.positions):
         k = round(((P.phi - P0.phi) * sense) % (2.0 * math.pi) / (2.0 * math.pi / n)) % n
@@ -269,6 +270,21 @@ def linkage_page(
     title = file_title(lk) or lk.title
     return Page(title, motion, psi, tuple(stops), plans, diagrams, tuple(table), slide,
                 sheets, data)  # fmt: skip
+
+
+def _once(rows: list[Series]) -> list[Series]:
+    """The table with each label once: a rocker output's ω and ε are its link's, so the
+    output's row keeps its place and takes the link's name in ``solve --json``."""
+    first: dict[str, int] = {}
+    out: list[Series] = []
+    for row in rows:
+        j = first.get(row.label)
+        if j is None:
+            first[row.label] = len(out)
+            out.append(row)
+        elif out[j].key.startswith("out_"):
+            out[j] = replace(out[j], key=row.key)
+    return out
 
 
 def _plan_frames(kind: str, title: str, plan: Any, points: dict[str, Arr]) -> PlanFrames:
@@ -404,7 +420,7 @@ def _mech(page: Page) -> tuple[str, str, dict[str, Any]]:
 
 def _ratio(k: Scale) -> str:
     r = k.ratio_text()
-    return f"   (M {r})" if r else ""
+    return Words("geomcad.sheet", "animate")("ratio", ratio=r) if r else ""
 
 
 def _plan(i: int, plan: PlanFrames) -> tuple[str, str, dict[str, Any]]:
