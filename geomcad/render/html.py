@@ -263,10 +263,16 @@ def linkage_page(
         k = round(((P.phi - P0.phi) * sense) % (2.0 * math.pi) / (2.0 * math.pi / n)) % n
         stops.append((i, int(k)))
     slide = {}
+    blocks = dict(motion.sliders)
     for g in lk.groups:
         if g.kind in ("RRP", "PRP") and g.guide is not None and not g.guide.fixed:
             d = st.slide[g.links[1]]
             slide[g.joint] = np.arctan2(d[:, 1], d[:, 0])
+        elif g.kind == "RPR":  # the block on the slotted link, along its slide
+            d = st.slide[g.links[0]]
+            slide[g.slider] = np.arctan2(d[:, 1], d[:, 0])
+            blocks[g.slider] = (float(d[0, 0]), float(d[0, 1]))
+    motion = replace(motion, sliders=blocks)
     title = file_title(lk) or lk.title
     return Page(title, motion, psi, tuple(stops), plans, diagrams, tuple(table), slide,
                 sheets, data)  # fmt: skip
