@@ -425,3 +425,17 @@ def test_the_page_speaks_the_language_being_drawn() -> None:
         ru = to_html(linkage_page(s))
     assert '<html lang="en">' in en and "Velocity plan" in en and "μ<sub>V</sub> = 0." in en
     assert '<html lang="ru">' in ru and "План скоростей" in ru and "μ<sub>V</sub> = 0," in ru
+
+
+def test_a_round_off_of_zero_is_written_0() -> None:
+    """A value at most 1e-9 of its quantity's largest is 0 on the page (as on the sheet); the
+    crank angle keeps 10 figures, the rest 7."""
+    from geomcad.render.html import Series, _column
+
+    row = Series("out_1", "v", "m/s", "", np.array([9.6e-17, 0.8617123456, -1.5]))
+    assert _column(row) == [0.0, 0.8617123, -1.5]
+    phi = Series("phi_deg", "φ_1", "°", "", np.array([242.7412345678912, 1e-17]))
+    assert _column(phi) == [242.7412346, 1e-17]
+    s = _solved((EXAMPLES / "sixbar-2013-6.toml").read_text(encoding="utf-8"))
+    text = to_html(linkage_page(s))  # position 0: the slider at rest, v written 0
+    assert '"key":"out_1","values":[0.0,' in text

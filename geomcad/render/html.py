@@ -329,6 +329,16 @@ def _sig(x: float, digits: int = 7) -> float:
     return float(f"{float(x):.{digits}g}") + 0.0
 
 
+def _column(s: Series) -> list[float]:
+    """A table row's values over the frames: 7 significant figures (the crank angle 10, as
+    ``solve`` gives it), the round-off of a zero (at most ``tol.DERIVED`` of the quantity's
+    largest value over the turn) as 0, as the sheet's tables write it."""
+    if s.key == "phi_deg":
+        return [_sig(v, 10) for v in s.values.tolist()]
+    zero = tol.DERIVED * float(np.abs(s.values).max())
+    return [0.0 if abs(v) <= zero else _sig(v) for v in s.values.tolist()]
+
+
 def _svg_markup(markup: str) -> str:
     """Label markup as SVG text content: sub- and superscripts as smaller shifted tspans."""
     out: list[str] = []
@@ -530,13 +540,7 @@ def to_html(page: Page) -> str:
         diag_svgs.append(svg)
         diags.append(data)
     n = page.motion.frames
-    table = [
-        {
-            "key": s.key,
-            "values": [_sig(v, 10 if s.key == "phi_deg" else 7) for v in s.values.tolist()],
-        }
-        for s in page.table
-    ]
+    table = [{"key": s.key, "values": _column(s)} for s in page.table]
     frames = {
         "n": n,
         "lang": lang,
