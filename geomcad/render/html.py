@@ -495,6 +495,11 @@ def _diagram(i: int, d: Series, psi_deg: Arr, stops: Sequence[tuple[int, int]]) 
         f'<line class="axis" x1="{num(left)}" y1="{num(top)}" x2="{num(left)}" '
         f'y2="{num(h - bottom)}"/>',
     ]
+    if len(stops) < 6:  # few positions (a file's list of angles): a light tick each 30°
+        for deg in range(30, 360, 30):
+            x = left + deg / 360.0 * (w - left - 4.0)
+            parts.append(f'<line class="tick" x1="{num(x)}" y1="{num(h - bottom)}" '
+                         f'x2="{num(x)}" y2="{num(top)}"/>')  # fmt: skip
     for no, k in stops:
         x = float(xs[k])
         parts.append(f'<line class="tick" x1="{num(x)}" y1="{num(h - bottom)}" x2="{num(x)}" '
@@ -539,6 +544,12 @@ def to_html(page: Page) -> str:
         svg, data = _diagram(i, d, psi_deg, page.stops)
         diag_svgs.append(svg)
         diags.append(data)
+    diagrams_caption = (
+        f"<figcaption>{html.escape(WORDS('diagrams'))}; {html.escape(WORDS('diagrams_x'))}"
+        "</figcaption>"
+        if page.diagrams
+        else ""
+    )
     n = page.motion.frames
     table = [{"key": s.key, "values": _column(s)} for s in page.table]
     frames = {
@@ -618,7 +629,7 @@ def to_html(page: Page) -> str:
 <div class="grid">
 <figure class="mech"><figcaption>{mech_caption}</figcaption>{mech_svg}</figure>
 <div class="plans">{"".join(plan_figures)}</div>
-<div class="diagrams">{"".join(diag_svgs)}</div>
+<figure class="diagrams">{diagrams_caption}{"".join(diag_svgs)}</figure>
 <table id="values"><caption>{html.escape(WORDS("values"))}</caption>
 <thead><tr><th>{html.escape(WORDS("quantity"))}</th><th>{html.escape(WORDS("value"))}</th>\
 <th>{html.escape(WORDS("unit"))}</th></tr></thead><tbody>{rows}</tbody></table>
