@@ -45,7 +45,7 @@ if TYPE_CHECKING:
     from geomcad.problem import ParamValue, Problem, Solution
     from geomcad.verify import Item, Report
 
-FORMATS = ("svg", "pdf", "png", "dxf")
+FORMATS = ("svg", "pdf", "png", "dxf", "html")
 DEFAULT_FORMATS = ("svg", "pdf", "png")
 #: Formats that need no system library (the fallback when libcairo is missing).
 PLAIN_FORMATS = ("svg", "dxf")
@@ -232,7 +232,8 @@ def _parser(help_for: tuple[str, str] | None = None) -> _Parser:
     s.add_argument(
         "--format",
         default=",".join(DEFAULT_FORMATS),
-        help="comma-separated svg,pdf,png,dxf (default: svg,pdf,png)",
+        help="comma-separated svg,pdf,png,dxf,html (default: svg,pdf,png); html: one interactive "
+        "page per linkage file or problem with a crank mechanism",
     )
     s.add_argument(
         "--review",
@@ -445,6 +446,10 @@ def _cmd_build(ns: argparse.Namespace) -> int:
     from geomcad.teach import jobs
 
     n_jobs = jobs.check_jobs(ns.jobs)
+    pages: dict[str, str] | None = None
+    if "html" in formats:  # the pages are made in this process, beside the sheets
+        formats.remove("html")
+        pages, n_jobs = {}, 1
     for pid in ids:
         if not documents.is_file_id(pid):
             registry.get(pid)  # an unknown id fails before anything is written
@@ -461,20 +466,39 @@ def _cmd_build(ns: argparse.Namespace) -> int:
     prepared: list[tuple[str, Any]] = []
     with jobs.bar(2 * len(ids), "step", "build") as tick:
         for pid in ids:
-            prepared.append(_prepare(pid, options, workdir, ns.review))
+            prepared.append(_prepare(pid, options, workdir, ns.review, pages, bool(ns.ids)))
             tick(1)
-        return _write_prepared(ns, prepared, formats, plain, tick, started)
+        return _write_prepared(ns, prepared, formats, plain, tick, started, pages)
 
 
-def _prepare(pid: str, options: Any, workdir: Any, review: bool) -> tuple[str, Any]:
+def _prepare(
+    pid: str,
+    options: Any,
+    workdir: Any,
+    review: bool,
+    pages: dict[str, str] | None = None,
+    strict: bool = True,
+) -> tuple[str, Any]:
     """Solve and draw one problem or file for ``build``: (its file stem, its sheets), in the
-    language the title data name (``--lang``, else the file's or ./geomcad.toml's)."""
+    language the title data name (``--lang``, else the file's or ./geomcad.toml's); with
+    ``pages``, its interactive page too (geomcad.render.html), by its stem (a problem with no
+    motion is bad input, or, not ``strict``, gets no page)."""
     from geomcad import documents
     from geomcad.sheet.lang import language
 
     try:
         sol = documents.solve(pid) if documents.is_file_id(pid) else geomcad.solve(pid)
         own = _file_title(pid, sol)
+        paged = pages is not None
+        if paged:
+            from geomcad.render.html import check
+
+            try:
+                check(sol)  # before the sheets are drawn
+            except GeomcadError:
+                if strict:
+                    raise
+                paged = False  # `build --format html` of every id: pages where there is a motion
         # the options over the file's own [sheet] table over ./geomcad.toml's
         title = options.over(workdir if own is None else own.over(workdir))
         with language(title.lang or "ru"):
@@ -483,9 +507,15 @@ def _prepare(pid: str, options: Any, workdir: Any, review: bool) -> tuple[str, A
                 from geomcad.review import review_sheets
 
                 sheets += review_sheets(sol, title)
+            stem = documents.stem(pid) if documents.is_file_id(pid) else pid
+            if pages is not None and paged:
+                from geomcad.render.html import page_of, to_html
+
+                source = Path(pid).read_text(encoding="utf-8") if documents.is_file_id(pid) else ""
+                pages[stem] = to_html(page_of(sol, sheets, source))
     except GeomcadError as exc:
         raise _Failed(_prefixed(pid, exc)) from exc
-    return (documents.stem(pid) if documents.is_file_id(pid) else pid, sheets)
+    return (stem, sheets)
 
 
 def _write_prepared(
@@ -495,8 +525,10 @@ def _write_prepared(
     plain: list[str],
     tick: Any,
     started: float,
+    pages: dict[str, str] | None = None,
 ) -> int:
     from geomcad.render import write_sheets
+    from geomcad.render.files import write_atomic
 
     out = Path(ns.out)
     missing: MissingDependency | None = None
@@ -513,6 +545,9 @@ def _write_prepared(
                     paths = write_sheets(pid, sheets, out, plain, colour=ns.color)
             else:
                 paths = write_sheets(pid, sheets, out, plain, colour=ns.color)
+            if pages is not None and pid in pages:
+                paths.append(out / f"{pid}.html")
+                write_atomic(paths[-1], pages[pid].encode("utf-8"))
             _write(sys.stdout, "".join(f"{p}\n" for p in paths))
             tick(1)
     except BrokenPipeError:

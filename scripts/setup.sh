@@ -2,7 +2,8 @@
 # Install geomcad, and whatever a fresh Debian machine lacks for it.
 #   sh scripts/setup.sh        the library, the `geomcad` command and the PDF/PNG renderer
 #   sh scripts/setup.sh test   the same, plus the test tools (pytest, hypothesis, ruff, mypy, pypdf)
-#                              and a second SVG renderer (rsvg-convert) and pdftoppm for the tests
+#                              and a second SVG renderer (rsvg-convert) and pdftoppm for the tests,
+#                              and headless Chromium with its driver for the interactive page's test
 # The lettering font (osifont) ships inside the package, so no font is installed system-wide.
 set -eu
 extra="${1:-}"
@@ -11,6 +12,8 @@ ldconfig -p 2>/dev/null | grep -q 'libcairo\.so\.2' || need="$need libcairo2"
 if [ "$extra" = test ]; then
     command -v rsvg-convert >/dev/null 2>&1 || need="$need librsvg2-bin"
     command -v pdftoppm >/dev/null 2>&1 || need="$need poppler-utils"
+    command -v chromium >/dev/null 2>&1 || need="$need chromium"
+    command -v chromedriver >/dev/null 2>&1 || need="$need chromium-driver"
 fi
 if [ -n "$need" ]; then
     if [ "$(id -u)" = 0 ] && command -v apt-get >/dev/null 2>&1; then
