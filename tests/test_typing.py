@@ -20,6 +20,7 @@ from geomcad_constructions import wiring
 
 import geomcad.problem
 from geomcad import documents, registry
+from geomcad.files import wiring as file_wiring
 from geomcad.problem import Problem, _Lazy
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -112,4 +113,4 @@ def test_the_wiring_is_the_registered_problems() -> None:
 def test_the_wiring_of_the_file_kinds(kind: str, example: str) -> None:
     assert {ep.name for ep in entry_points(group=documents.GROUP)} == {"cam", "gears"}
     problem = documents.load(str(ROOT / "examples" / example))
-    _wiring_of(problem, getattr(wiring, kind)(problem))
+    _wiring_of(problem, getattr(file_wiring, kind)(problem))
