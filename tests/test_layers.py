@@ -111,3 +111,64 @@ ABOVE_SEEDS = ("geomcad.files", "geomcad.documents", "geomcad.cli", "geomcad.tea
 def test_seed_problems_import_no_file_kind(path: Path) -> None:
     for mod in imports(path):
         assert not mod.startswith(ABOVE_SEEDS), f"{path.name} imports {mod}"
+
+
+def seed_imports(path: Path) -> set[str]:
+    """The modules of constructions/ that ``path`` imports (relative or as
+    ``geomcad_constructions.x``, at load time or inside a function), by file stem."""
+    tree = ast.parse(path.read_text(encoding="utf-8"))
+    out: set[str] = set()
+    for node in ast.walk(tree):
+        if isinstance(node, ast.ImportFrom):
+            if node.level == 1:
+                if node.module:
+                    out.add(node.module.split(".")[0])
+                else:  # from . import a, b
+                    out |= {a.name for a in node.names}
+            elif node.module and node.module.startswith("geomcad_constructions"):
+                rest = node.module.split(".")[1:]
+                out |= {rest[0]} if rest else {a.name for a in node.names}
+        elif isinstance(node, ast.Import):
+            out |= {
+                a.name.split(".")[1]
+                for a in node.names
+                if a.name.startswith("geomcad_constructions.")
+            }
+    return out - {path.stem}
+
+
+def import_circles(graph: dict[str, set[str]]) -> list[tuple[str, ...]]:
+    """Each pair of modules of ``graph`` (name → the names it imports) that import each other,
+    directly or through others: (a, b) with a < b, b reachable from a and a from b."""
+
+    def reach(start: str) -> set[str]:
+        seen: set[str] = set()
+        todo = [start]
+        while todo:
+            for nxt in graph.get(todo.pop(), set()):
+                if nxt not in seen:
+                    seen.add(nxt)
+                    todo.append(nxt)
+        return seen
+
+    reached = {name: reach(name) for name in graph}
+    return sorted(
+        (a, b) for a in graph for b in reached[a] if a < b and b in graph and a in reached[b]
+    )
+
+
+def test_no_import_circles_in_constructions() -> None:
+    """No module of constructions/ imports another that imports it back (a spec names the
+    parameters and results; the geometry module takes values and imports no spec)."""
+    graph = {p.stem: seed_imports(p) for p in SEED_MODULES}
+    assert {"spec_2013_1", "p2013_1"} <= graph.keys()
+    assert not import_circles(graph)
+
+
+def test_the_circle_check_sees_a_circle() -> None:
+    assert import_circles({"a": {"b"}, "b": {"c"}, "c": {"a"}, "d": {"a"}}) == [
+        ("a", "b"),
+        ("a", "c"),
+        ("b", "c"),
+    ]
+    assert import_circles({"spec": {"geo"}, "geo": set()}) == []
