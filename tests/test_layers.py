@@ -1,4 +1,4 @@
-"""Imports flow one way (README, "Architecture"): a layer imports only the layers below it.
+"""Imports flow one way (README, "Layout"): a layer imports only the layers below it.
 
     errors, tol, units ← geom ← construction ← kinematics / forces / structure ← dynamics
         ← linkage ← sheet ← render ← problem (with notebook) ← files
