@@ -328,12 +328,6 @@ def _part(mech: Mechanism, part: tuple[str, ...]) -> Mechanism:
 # -- the dead position and the plans ----------------------------------------------------------
 
 
-def _right_angle(v: Viewport, vertex: Vec, a: Vec, b: Vec, size_mm: float = 3.0) -> None:
-    s = v.scale.model(size_mm)
-    ua, ub = (a - vertex).unit() * s, (b - vertex).unit() * s
-    v.polyline([vertex + ua, vertex + ua + ub, vertex + ub], "construction")
-
-
 def _position(v: Viewport, geo: Geometry) -> None:
     """The position with ML ⊥ MO built: circle(O, |e|), the pusher's path, M, the slot as the
     tangent there, OM and the right angle at M; the other zero position in two-dot lines."""
@@ -378,7 +372,7 @@ def _position(v: Viewport, geo: Geometry) -> None:
     v.guide(g1, g0, (-n.x, -n.y))
     v.joint(z.M)
     # OM ⊥ ML: the lever's arm is OM itself
-    _right_angle(v, z.M, O_, z.L, r / k.k + 5.0)
+    v.right_angle(z.M, O_, z.L, r / k.k + 5.0)
     v.dot(z.L, "result")
     v.label(O_, "O", prefer=(-1.0, -1.0), clear=3.0)
     v.label(z.M, "M*", prefer=(1.0, 1.0), clear=r / k.k + 0.5)

@@ -397,7 +397,7 @@ def _scheme(v: Viewport, sol: Solution[Geometry]) -> None:
     v.seg(o, Bp, "construction")
     if f.kind == "flat":
         v.seg(o, C, "construction")
-    _right_angle(v, Bp, o, B)
+    v.right_angle(Bp, o, B, 2.5)
     for q in (o, B, Bp):
         v.dot(q, "point")
     v.label(o, "O", prefer=(-away, 1.0), clear=1.5)
@@ -446,14 +446,6 @@ def _turn_arrow(v: Viewport, r: float, a0_deg: float, a1_deg: float, sense: int,
     v.arrow(Vec.polar(r, before), Vec.polar(r, end), "dimension")
     mid = (a0 + a1) / 2.0
     v.label(Vec.polar(r, mid), text, height=3.5, prefer=(math.cos(mid), math.sin(mid)), clear=0.5)
-
-
-def _right_angle(v: Viewport, vertex: Vec, a: Vec, b: Vec, size_mm: float = 2.5) -> None:
-    s = v.scale.model(size_mm)
-    if (a - vertex).norm == 0.0 or (b - vertex).norm == 0.0:
-        return
-    ua, ub = (a - vertex).unit() * s, (b - vertex).unit() * s
-    v.polyline([vertex + ua, vertex + ua + ub, vertex + ub], "construction")
 
 
 # -- tables ----------------------------------------------------------------------------------------

@@ -26,9 +26,7 @@ from geomcad.sheet.compose import (
     arrange,
     compose,
 )
-from geomcad.sheet.drawing import SLIDER_SIZE
 from geomcad.sheet.lang import Words, current, per_language
-from geomcad.sheet.model import Polyline
 
 from .spec_2013_3 import PARAMS, RESULTS
 
@@ -111,16 +109,16 @@ def _mechanism(v: Viewport, geo: Geometry, c: Construction, sol: Solution[Geomet
     # link 1: the body AB sliding along O1O2 on its guide
     v.guide(A - Vec(v.scale.model(14.0), 0.0), A + Vec(v.scale.model(14.0), 0.0), (0.0, -1.0))
     v.seg(A, B, "link")
-    _block(v, A, Vec(1.0, 0.0))
+    v.slider(A, Vec(1.0, 0.0), with_joint=False)
     # link 3: the slotted rocker B–O1–C, run past B and C
     v.seg(B - u3 * ext, C + u3 * ext, "link")
     # link 5: O2 through C and on
     v.seg(O2, C + u5 * ext, "link")
     v.seg(O1, O2, "centre")
-    # block 2 in the slot at B; the cross 4 at C, one slide on each link
+    # block 2 in the slot at B; the cross 4 at C, one slide on each link (no joint inside)
     v.slider(B, u3)
-    _block(v, C, u3)
-    _block(v, C, u5)
+    v.slider(C, u3, with_joint=False)
+    v.slider(C, u5, with_joint=False)
     # O1's support turned away from the rocker that passes through it and from O1O2: along the
     # bisector of the angle between the rocker's lower half (towards B) and O1O2
     n3 = ((B - O1).unit() + (O2 - O1).unit()).unit()
@@ -160,22 +158,6 @@ def _mechanism(v: Viewport, geo: Geometry, c: Construction, sol: Solution[Geomet
     )
     v.dim_linear(A, B, f"l_{{AB}} = {l_ab}", offset=-10.0, height=2.5)
     v.dim_linear(O1, O2, f"l_{{O1O2}} = {l12}", offset=-22.0, height=2.5)
-
-
-def _block(v: Viewport, q: Vec, along: Vec) -> None:
-    """A slider block on its guide with no revolute joint inside (GOST 2.770): link 1's block at
-    A, the cross's two slides at C."""
-    x, y = v.p(q)
-    d = along.unit()
-    ux, uy = d.x, -d.y
-    px, py = -uy, ux
-    hw, hh = SLIDER_SIZE[0] / 2.0, SLIDER_SIZE[1] / 2.0
-    corners = tuple(
-        (x + ux * sx * hw + px * sy * hh, y + uy * sx * hw + py * sy * hh)
-        for sx, sy in ((-1, -1), (1, -1), (1, 1), (-1, 1))
-    )
-    v.sheet.add(Polyline(corners, "joint", closed=True, fill=True))
-    v.sheet.add(Polyline(corners, "link", closed=True))
 
 
 def _results(sol: Solution[Geometry], kv: Scale | None) -> V.Table:

@@ -192,7 +192,7 @@ def _construction(v: Viewport, geo: Geometry, c: Construction) -> None:
         along={"m−": 1.0, "m+": 1.0, "r1": 0.8},
         box=extent(geo, c),
     )
-    _right_angle(v, B0, B1, Op)
+    v.right_angle(B0, B1, Op)
     v.dot(c["Γ"].c, "construction")
 
 
@@ -306,13 +306,6 @@ def _angle_with_leader(
         v.sheet.add(Polyline((mid, end), "dimension"))
         v.sheet.add(Polyline(((cx - w / 2.0, end[1]), (cx + w / 2.0, end[1])), "dimension"))
     v.d.text(text, (cx - w / 2.0, cy + rise / 2.0), height)
-
-
-def _right_angle(v: Viewport, vertex: Vec, a: Vec, b: Vec, size_mm: float = 3.0) -> None:
-    """The right-angle mark at ``vertex`` between the directions to a and b."""
-    s = v.scale.model(size_mm)
-    ua, ub = (a - vertex).unit() * s, (b - vertex).unit() * s
-    v.polyline([vertex + ua, vertex + ua + ub, vertex + ub], "construction")
 
 
 def _mechanism(v: Viewport, geo: Geometry, c: Construction) -> None:

@@ -27,7 +27,7 @@ from typing import TYPE_CHECKING
 
 from geomcad.forces import ForcePolygon, FrictionCircle
 from geomcad.geom import Circle, Line, Vec, line_circle
-from geomcad.sheet import Sheet, TitleBlock, Viewport, fmt_number, start, symbols
+from geomcad.sheet import Sheet, TitleBlock, Viewport, fmt_number, start
 from geomcad.sheet import views as V
 from geomcad.sheet.compose import (
     Column,
@@ -217,7 +217,7 @@ def _mechanism(v: Viewport, geo: Geometry) -> None:
     v.seg(Vec(0.0, 0.0), H, "link")
     v.seg(S, B, "link")
     # the sleeve slides on the shaft: a block without a joint circle (GOST 2.770)
-    symbols.block(v.sheet, v.p(S), v.paper_dir(Vec(0.0, 1.0)), with_joint=False)
+    v.slider(S, Vec(0.0, 1.0), with_joint=False)
     # arm 6 with the ball D, link 3
     v.seg(H, D, "link")
     v.seg(B, F, "link")
