@@ -14,7 +14,7 @@ import math
 from typing import TYPE_CHECKING
 
 from geomcad.geom import Vec
-from geomcad.sheet import Scale, Sheet, TitleBlock, Viewport, fmt_number, start
+from geomcad.sheet import Scale, Sheet, TitleBlock, Viewport, start
 from geomcad.sheet import views as V
 from geomcad.sheet.compose import (
     Column,
@@ -26,7 +26,8 @@ from geomcad.sheet.compose import (
     arrange,
     compose,
 )
-from geomcad.sheet.lang import Words, current, per_language
+from geomcad.sheet.lang import Words, per_language
+from geomcad.sheet.views import num
 
 from .spec_2013_3 import PARAMS, RESULTS
 
@@ -45,16 +46,9 @@ BLOCK_H = 52.0
 WORDS = Words(__package__, "sheets_2013_3")
 
 
-def _n(x: float, digits: int = 4) -> str:
-    return fmt_number(x, current(), digits)
-
-
 def extent(c: Construction, l_ab: float) -> tuple[float, float, float, float]:
     """The model box the mechanism drawing needs: the links, the slots run past C and O2."""
-    pts = [c[n] for n in ("O1", "O2", "A", "B", "C")]
-    pad = 0.35 * l_ab
-    xs, ys = [q.x for q in pts], [q.y for q in pts]
-    return min(xs) - pad, min(ys) - pad, max(xs) + pad, max(ys) + pad
+    return V.extent_of((c[n] for n in ("O1", "O2", "A", "B", "C")), 0.35 * l_ab)
 
 
 def _views(sol: Solution[Geometry], kv: Scale | None = None) -> tuple[Tree, Figure, V.PlanView]:
@@ -153,8 +147,8 @@ def _mechanism(v: Viewport, geo: Geometry, c: Construction, sol: Solution[Geomet
     # the given geometry, dimensioned
     v.dim_angle(O1, O2, C, "α", r_mm=16.0, height=3.5)
     l_ab, l12 = (
-        _n(A.dist(B) * 1000.0),
-        _n(O1.dist(O2) * 1000.0),
+        num(A.dist(B) * 1000.0),
+        num(O1.dist(O2) * 1000.0),
     )
     v.dim_linear(A, B, f"l_{{AB}} = {l_ab}", offset=-10.0, height=2.5)
     v.dim_linear(O1, O2, f"l_{{O1O2}} = {l12}", offset=-22.0, height=2.5)
@@ -166,7 +160,7 @@ def _results(sol: Solution[Geometry], kv: Scale | None) -> V.Table:
     def on_plan(spec: V.Spec, x: object) -> str:
         if kv is None or spec.unit != "m/s" or not isinstance(x, int | float):
             return ""
-        return _n(kv.mm(float(x)), 3)
+        return num(kv.mm(float(x)), 3)
 
     return V.Table.of_specs(
         RESULTS, sol.results, labels={"F_red": WORDS("F_red")}, style="value",

@@ -33,9 +33,9 @@ from geomcad.sheet import (
     Sheet,
     TitleBlock,
     Viewport,
-    fmt_number,
     start,
 )
+from geomcad.sheet.views import num
 
 if TYPE_CHECKING:
     from geomcad.construction import Construction
@@ -94,11 +94,6 @@ ORDER_KINDS = (
 )
 
 WORDS = Words(__package__, "sheets_2013_5")
-
-
-def num(x: float, digits: int = 6) -> str:
-    """A number in the language being drawn."""
-    return fmt_number(x, current(), digits)
 
 
 def factor(k: Scale) -> str:
@@ -173,12 +168,12 @@ def _tree(sol: Solution[Geometry], k_l: float, k_v: float) -> tuple[Node, dict[s
                    margin=0.5, weight=2.0)  # fmt: skip
     ray_view = Figure(_rays_box(geo, rays, k_l, k_v),
                       lambda v: _rays(v, geo, rays, kv, k_omega), group="l", margin=1.0,
-                      title=WORDS("rays_title", k=num(k_omega)), show_scale=False)  # fmt: skip
+                      title=WORDS("rays_title", k=num(k_omega, 6)), show_scale=False)  # fmt: skip
     head = V.Text(paragraph=WORDS("title"), width=160.0, height=5.0)
     factors = V.Text(
         lines=[
             f"{factor(k)} (M {k.ratio_text() or '—'});  {factor(kv)};  "
-            f"μ_ω = {num(k_omega)} {WORDS('rad_s_mm')}"
+            f"μ_ω = {num(k_omega, 6)} {WORDS('rad_s_mm')}"
         ],
         height=3.5,
     )
@@ -467,7 +462,7 @@ def _panel(sol: Solution[Geometry], rays: RayPlan, k_v: float) -> list[View]:
     )  # fmt: skip
     coaxial = V.Text(lines=[WORDS("coaxial")])
     top, den = r["u1H2_fraction"]
-    u = num(float(r["u1H2"]), digits=4)
+    u = num(float(r["u1H2"]), 4)
     shown = {**r, "u1H2": f"{top}/{den} = {u}" if den != 1 else u}
     results = V.Table.of_specs(RESULTS, shown, style="value", widths=(36.0, 60.0), row_h=5.5,
                                title=WORDS("results"))  # fmt: skip
@@ -478,11 +473,9 @@ def _panel(sol: Solution[Geometry], rays: RayPlan, k_v: float) -> list[View]:
         rows.append(
             [
                 LINK_LABEL[link],
-                str(exact)
-                if exact.denominator == 1
-                else f"{exact} = {num(float(exact), digits=4)}",
-                num(geo.plan.omega[link], digits=4),
-                num(ray_mm, digits=4),
+                str(exact) if exact.denominator == 1 else f"{exact} = {num(float(exact), 4)}",
+                num(geo.plan.omega[link], 4),
+                num(ray_mm, 4),
             ]
         )
     omegas = V.Table(rows, widths=(18.0, 58.0, 36.0, 34.0), row_h=5.5, title=WORDS("omegas"))

@@ -63,6 +63,13 @@ def _bbox(pts: Iterable[Vec]) -> Extent:
     return (min(xs), min(ys), max(xs), max(ys))
 
 
+def extent_of(pts: Iterable[Vec], pad: float = 0.0) -> Extent:
+    """A figure's extent: the model box of ``pts`` grown by ``pad`` (model units) on every side
+    (room for the supports, arrows and labels drawn round the points)."""
+    x0, y0, x1, y1 = _bbox(pts)
+    return (x0 - pad, y0 - pad, x1 + pad, y1 + pad)
+
+
 # --- the scheme -----------------------------------------------------------------------------------
 
 
