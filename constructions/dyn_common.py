@@ -12,11 +12,10 @@ from typing import Any
 
 from geomcad import tol
 from geomcad.geom import Vec
-from geomcad.sheet import Scale, Viewport
+from geomcad.sheet import Viewport
 from geomcad.sheet.drawing import SHORT_MM
-from geomcad.sheet.lang import Words, current
+from geomcad.sheet.lang import Words
 from geomcad.sheet.loads import MOMENT_SWEEP, force, moment
-from geomcad.sheet.scale import ScaleStyle
 from geomcad.sheet.views import num
 
 ORIGIN = Vec(0.0, 0.0)
@@ -25,11 +24,6 @@ WORDS = Words(__package__, "dyn_common")
 #: A force arrow shorter than this (mm) is drawn this long, so that its head shows.
 #: A force shorter than this at μ_F (two arrowheads) cannot be read as an arrow: it is drawn as
 #: a point with its label, and the sheet says so (SHEETS.md).
-
-
-def mu(k: Scale) -> str:
-    """A scale factor as the subject writes it, in the language being drawn: μ_l = 0,002 м/мм."""
-    return k.label(ScaleStyle(lang=current()))
 
 
 def small(x: float, scale: float, unit: str = "", symbol: str = "") -> str:

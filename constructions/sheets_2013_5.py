@@ -35,7 +35,7 @@ from geomcad.sheet import (
     Viewport,
     start,
 )
-from geomcad.sheet.views import num
+from geomcad.sheet.views import factor, num
 
 if TYPE_CHECKING:
     from geomcad.construction import Construction
@@ -61,7 +61,7 @@ from geomcad.sheet.compose import (
 from geomcad.sheet.drawing import SHORT_MM
 from geomcad.sheet.gearing import gear_web, ground_line, ring_gear, shaft_bearing
 from geomcad.sheet.lang import Words, current
-from geomcad.sheet.scale import ScaleStyle, gost_length_scale, nice_factor
+from geomcad.sheet.scale import gost_length_scale, nice_factor
 from geomcad.sheet.text import box as text_box
 from geomcad.sheet.text import parse
 
@@ -94,11 +94,6 @@ ORDER_KINDS = (
 )
 
 WORDS = Words(__package__, "sheets_2013_5")
-
-
-def factor(k: Scale) -> str:
-    """A scale factor as the language being drawn writes it."""
-    return k.label(ScaleStyle(lang=current()))
 
 
 #: How the links are named on the sheet.

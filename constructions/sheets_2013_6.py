@@ -45,9 +45,9 @@ from geomcad.sheet.replay import replay
 from geomcad.sheet.scheme import GUIDE_HALF
 from geomcad.sheet.text import box as text_box
 from geomcad.sheet.text import parse
-from geomcad.sheet.views import Steps, Table, Text, num
+from geomcad.sheet.views import Steps, Table, Text, factor, num
 
-from .sheets_2013_6_kin import factor, kinematics_sheet, six_bar
+from .sheets_2013_6_kin import kinematics_sheet, six_bar
 from .spec_2013_6 import PARAMS, RESULTS, SEED_K_L
 
 if TYPE_CHECKING:

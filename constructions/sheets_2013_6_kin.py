@@ -22,7 +22,7 @@ import numpy as np
 
 from geomcad.geom import Vec
 from geomcad.kinematics.plan import Plan
-from geomcad.sheet import Drawing, Scale, Sheet, TitleBlock, Viewport, start
+from geomcad.sheet import Drawing, Sheet, TitleBlock, Viewport, start
 from geomcad.sheet.compose import (
     GAP,
     Column,
@@ -43,7 +43,6 @@ from geomcad.sheet.lang import Words, current
 from geomcad.sheet.model import Polyline
 from geomcad.sheet.motion import Frames, turn
 from geomcad.sheet.plans import markup_of
-from geomcad.sheet.scale import ScaleStyle
 from geomcad.sheet.scheme import draw_scheme
 from geomcad.sheet.text import box as text_box
 from geomcad.sheet.text import parse
@@ -86,11 +85,6 @@ GRAPH_HEAD = 4.0
 #: How far (m) the guide is drawn either side of the slider, as a share of l4.
 GUIDE_EXT = 0.3
 #: A vector shorter than this (mm) is drawn as its end point (it would be all arrowhead).
-
-
-def factor(k: Scale) -> str:
-    """A scale factor as the language being drawn writes it."""
-    return k.label(ScaleStyle(lang=current()))
 
 
 def mechanism(pts: Mapping[str, Vec], along: Vec) -> Mechanism:

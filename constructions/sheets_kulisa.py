@@ -46,9 +46,9 @@ from geomcad.sheet.motion import Frames, turn
 from geomcad.sheet.placer import centre_line
 from geomcad.sheet.scale import fmt_column, nice_factor
 from geomcad.sheet.text import wrap
-from geomcad.sheet.views import num
+from geomcad.sheet.views import factor, num
 
-from .dyn_common import Where, draw_loads, facing, load, moment_of, mu, short_note, small
+from .dyn_common import Where, draw_loads, facing, load, moment_of, short_note, small
 from .p_kulisa import Data, mechanism, sweep, turns
 from .spec_kulisa import PARAMS, PROBLEM, RESULTS
 
@@ -265,7 +265,7 @@ def _scheme(v: Viewport, sol: Solution[Data], data: Data) -> None:
 def _main_layout(sol: Solution[Data], data: Data, scheme: View, short: bool) -> tuple[Node, View]:
     p = _p(sol)
     kv = Scale(sol.scales["v"], "v")
-    state_line = WORDS("state", phi=num(p["phi_deg"]), omega=num(data.omega), mu_v=mu(kv))
+    state_line = WORDS("state", phi=num(p["phi_deg"]), omega=num(data.omega), mu_v=factor(kv))
     state = V.Text(lines=[state_line], height=3.5)
     plan, order = _plan(sol, data)
     tables, notes = _panel_main(sol, data, short)
@@ -654,7 +654,7 @@ def _fbd_tree(sol: Solution[Data], k: Scale, k3: Scale) -> tuple[Node, dict[str,
                         title=WORDS("view_3", ratio=k3.ratio_text()), show_scale=False)  # fmt: skip
     head = V.Text(lines=[WORDS("head_fbd")], height=5.0)
     state = Column(
-        V.Text(lines=[WORDS("state_fbd", mu_l=mu(k), ratio=k.ratio_text(), eps=num(data.eps))],
+        V.Text(lines=[WORDS("state_fbd", mu_l=factor(k), ratio=k.ratio_text(), eps=num(data.eps))],
                height=3.5),
         V.Text(paragraph=f"{short_note(sol.scales['F'])}.", width=NOTES_W),
     )  # fmt: skip

@@ -42,7 +42,7 @@ from geomcad.sheet.drawing import LINE_SPACING, SHORT_MM, Drawing, Viewport
 from geomcad.sheet.graph import Axis, Graph, nice_step
 from geomcad.sheet.lang import Words, current
 from geomcad.sheet.plans import LINE_OVER_MM, markup_of, plan_lines
-from geomcad.sheet.scale import fmt_number
+from geomcad.sheet.scale import Scale, ScaleStyle, fmt_number
 from geomcad.sheet.scheme import Body, draw_scheme
 from geomcad.sheet.text import metrics, wrap
 from geomcad.structure import Mechanism
@@ -54,6 +54,11 @@ WORDS = Words(__package__, "views")
 def num(x: float, digits: int = 4) -> str:
     """A number to ``digits`` significant figures in the language being drawn."""
     return fmt_number(x, current(), digits)
+
+
+def factor(k: Scale) -> str:
+    """A scale factor as the language being drawn writes it (``μ_l = 0,005 м/мм``)."""
+    return k.label(ScaleStyle(lang=current()))
 
 
 def _bbox(pts: Iterable[Vec]) -> Extent:
