@@ -338,7 +338,7 @@ def _given(sol: Solution[Data], title: str = "given") -> View:
     """The given data as a table, under the words ``title``."""
     head = [WORDS("param"), "M(t) = M_0 + M_1·sin Ωt"]
     return V.Table.of_specs(PARAMS, sol.params, style="equation", pairs=2, head=head,
-                            widths=(73.0, 73.0), title=WORDS(title))  # fmt: skip
+                            fill=PANEL_W, title=WORDS(title))  # fmt: skip
 
 
 def _paragraphs(head: str, items: list[str], dash: bool = True) -> View:
@@ -376,7 +376,7 @@ def _panel_main(sol: Solution[Data], data: Data) -> Node:
     }  # fmt: skip
     results = V.Table.of_specs(
         [by[n] for n in order], values, labels=labels, style="value", pairs=2,
-        widths=(29.0, 44.0, 29.0, 44.0), title=WORDS("results_state"),
+        fill=PANEL_W, title=WORDS("results_state"),
     )  # fmt: skip
     eq = _paragraphs(WORDS("eq_head"), [WORDS(k) for k in ("eq_1", "eq_2", "eq_3", "eq_4")],
                      dash=False)  # fmt: skip

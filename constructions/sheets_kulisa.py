@@ -379,7 +379,7 @@ def _results(sol: Solution[Data], names: tuple[str, ...], **kw: Any) -> V.Table:
 def _given(sol: Solution[Data]) -> View:
     par = WORDS("param")
     return V.Table.of_specs(PARAMS, sol.params, style="equation", pairs=2, head=[par, par],
-                            widths=(59.0, 59.0), title=WORDS("given"))  # fmt: skip
+                            fill=PANEL_W, title=WORDS("given"))  # fmt: skip
 
 
 def _panel_main(sol: Solution[Data], data: Data, short: bool) -> tuple[Node, View]:
@@ -393,10 +393,10 @@ def _panel_main(sol: Solution[Data], data: Data, short: bool) -> tuple[Node, Vie
         ["V_A", f"{num(va.norm, 4)} {ms}", "V_2 = V_D", f"{num(v2.norm, 4)} {ms}"],
         ["V_{C3}", f"{num(vc.norm, 4)} {ms}", "ω_3", f"{num(abs(w3), 4)} {_u('rad_s')}"],
     ]
-    vel = V.Table(rows, widths=(20.0, 39.0, 20.0, 39.0), title=WORDS("velocities_head"))
+    vel = V.Table(rows, fill=PANEL_W, title=WORDS("velocities_head"))
     res = _results(
         sol, ("I_pr_A", "I_pr_B", "I_pr", "dI_pr", "omega1", "eps1", "t_reach", "omega_ode"),
-        widths=(40.0, 78.0), title=WORDS("results_head"),
+        fill=PANEL_W, title=WORDS("results_head"),
     )  # fmt: skip
     notes = [WORDS("note_1"), WORDS("note_2")]
     if short:
