@@ -411,7 +411,7 @@ def _panel(sol: Solution[Geometry], k: float) -> tuple[View | Node, ...]:
                 WORDS("yes" if s["crank_rocker"] else "no"),
             ]
         )
-    every = Table(rows, widths=(10.0, 48.0, 26.0, 26.0, 36.0), title=WORDS("all"))
+    every = Table(rows, fill=ORDER_W, title=WORDS("all"))
     order = Steps(sol.construction, ORDER_W, only=ORDER, words=WORDS)
     # the data and the results side by side, so that the order of construction has its room
     return Row(given, Column(results, note)), every, order
