@@ -458,9 +458,7 @@ def _panel(sol: Solution[Geometry], geo: Geometry) -> list[View]:
         for name in (s.pair_a, s.pair_b):
             q = geo.replaced.mechanism.pair(name)
             rows.append([f"{name}*", f"{q.a}–{q.b}", _kind(q.kind), f"p_{q.pair_class}"])
-    out.append(
-        V.Table(rows, widths=(18.0, 22.0, 30.0, 18.0), row_h=5.0, title=WORDS("pairs_title"))
-    )
+    out.append(V.Table(rows, row_h=5.0, title=WORDS("pairs_title")))
     text(WORDS("pairs_note"))
     n, p5, p4, _local = geo.counts
     rows = [[WORDS("h_quantity"), WORDS("h_count"), "W"]]
@@ -478,7 +476,7 @@ def _panel(sol: Solution[Geometry], geo: Geometry) -> list[View]:
         ("W_after_replacement", WORDS("w_after"), after),
     ):
         rows.append([label, how, str(r[name])])
-    out.append(V.Table(rows, widths=(56.0, 62.0, 20.0), row_h=5.0, title=WORDS("mobility_title")))
+    out.append(V.Table(rows, fill=PANEL_W, row_h=5.0, title=WORDS("mobility_title")))
     text(WORDS("mobility_note"))
     dec = geo.decomposition
     heads = ("h_group", "h_links", "h_pairs", "h_class", "h_order", "h_kind")
@@ -492,7 +490,7 @@ def _panel(sol: Solution[Geometry], geo: Geometry) -> list[View]:
         )
     out.append(
         V.Table(
-            rows, widths=(34.0, 18.0, 32.0, 16.0, 20.0, 26.0), row_h=5.0,
+            rows, fill=PANEL_W, row_h=5.0,
             title=WORDS("groups_table"),
         )
     )  # fmt: skip
@@ -518,7 +516,7 @@ def _panel(sol: Solution[Geometry], geo: Geometry) -> list[View]:
         [WORDS("zero_sweep"), sweep],
         [WORDS("vt_at", th=t1), f"{vt} {WORDS('metre')}"],
     ]
-    out.append(V.Table(rows, widths=(80.0, 70.0), row_h=5.0, title=WORDS("pusher_title")))
+    out.append(V.Table(rows, fill=PANEL_W, row_h=5.0, title=WORDS("pusher_title")))
     steps = [sol.construction.step(n) for n in ORDER]
     out.append(V.Steps(steps, PANEL_W, only=ORDER, words=WORDS))
     text(WORDS("four_bar_note"))
