@@ -12,11 +12,11 @@ from typing import Any
 
 from geomcad import tol
 from geomcad.geom import Vec
-from geomcad.sheet import Scale, Viewport, fmt_number
+from geomcad.sheet import Viewport
 from geomcad.sheet.drawing import SHORT_MM
-from geomcad.sheet.lang import Words, current
+from geomcad.sheet.lang import Words
 from geomcad.sheet.loads import MOMENT_SWEEP, force, moment
-from geomcad.sheet.scale import ScaleStyle
+from geomcad.sheet.views import num
 
 ORIGIN = Vec(0.0, 0.0)
 WORDS = Words(__package__, "dyn_common")
@@ -24,17 +24,6 @@ WORDS = Words(__package__, "dyn_common")
 #: A force arrow shorter than this (mm) is drawn this long, so that its head shows.
 #: A force shorter than this at μ_F (two arrowheads) cannot be read as an arrow: it is drawn as
 #: a point with its label, and the sheet says so (SHEETS.md).
-
-
-def f(x: float, digits: int = 4) -> str:
-    """A number for a sheet in the language being drawn (a decimal comma in Russian, a point in
-    English), ``digits`` significant digits."""
-    return fmt_number(x, current(), digits=digits)
-
-
-def mu(k: Scale) -> str:
-    """A scale factor as the subject writes it, in the language being drawn: μ_l = 0,002 м/мм."""
-    return k.label(ScaleStyle(lang=current()))
 
 
 def small(x: float, scale: float, unit: str = "", symbol: str = "") -> str:
@@ -46,8 +35,10 @@ def small(x: float, scale: float, unit: str = "", symbol: str = "") -> str:
     tail = f"{nb}{unit}" if unit else ""
     bound = tol.DERIVED * abs(scale)
     if abs(x) <= bound:
-        return f"|{symbol}|{nb}<{nb}{f(bound, 1)}{tail}" if symbol else f"<{nb}{f(bound, 1)}{tail}"
-    return f"{symbol}{nb}={nb}{f(x, 3)}{tail}" if symbol else f"{f(x, 3)}{tail}"
+        return (
+            f"|{symbol}|{nb}<{nb}{num(bound, 1)}{tail}" if symbol else f"<{nb}{num(bound, 1)}{tail}"
+        )
+    return f"{symbol}{nb}={nb}{num(x, 3)}{tail}" if symbol else f"{num(x, 3)}{tail}"
 
 
 def facing(sense: float, at_deg: float, open_: bool = False) -> float:
@@ -62,7 +53,7 @@ def facing(sense: float, at_deg: float, open_: bool = False) -> float:
 
 def short_note(k_F: float) -> str:
     """The sheet's words for the forces drawn as points."""
-    return WORDS("short_note", mm=f(SHORT_MM), k_F=f(k_F))
+    return WORDS("short_note", mm=num(SHORT_MM), k_F=num(k_F))
 
 
 @dataclass(frozen=True)
@@ -116,7 +107,7 @@ def draw_loads(
         if ld.force is not None:
             if ld.force.norm <= tol.DERIVED * biggest:
                 continue
-            text = f"{w.label} = {f(ld.force.norm)} {WORDS('N')}"
+            text = f"{w.label} = {num(ld.force.norm)} {WORDS('N')}"
             if ld.force.norm / k_F < SHORT_MM:
                 dot = w.short_at or w.at or ld.at
                 v.dot(dot)
@@ -125,6 +116,6 @@ def draw_loads(
             force(v, w.at or ld.at, ld.force, k_F, text, w.arrive,
                   role="result", height=2.5, prefer=w.prefer)  # fmt: skip
         elif abs(ld.moment) > 0.0:
-            text = f"{w.label} = {f(abs(ld.moment))} {WORDS('Nm')}"
+            text = f"{w.label} = {num(abs(ld.moment))} {WORDS('Nm')}"
             moment(v, w.at or centre, ld.moment, w.radius, text, role="result",
                    start=math.radians(w.start_deg), height=2.5)  # fmt: skip

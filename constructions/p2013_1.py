@@ -68,8 +68,6 @@ from geomcad.structure import (
 )
 from geomcad.units import to_deg, wrap_deg
 
-from .spec_2013_1 import PROBLEM as PROBLEM
-
 EXPLAIN = (
     "before 2, after 1 (the seed) against 2 and 2 (the standard rule): replacing a higher pair "
     "adds one link and two lower pairs, 3 − 2·2 + 1 = 0, so W cannot change. The seed's 2 counts "

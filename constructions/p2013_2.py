@@ -60,8 +60,6 @@ from geomcad.kinematics.plan import velocity_plan as plan_of
 from geomcad.problem import Build, ParamValue
 from geomcad.units import deg, to_deg
 
-from .spec_2013_2 import PROBLEM as PROBLEM
-
 #: m → mm for the operands of the order of construction
 MM = 1000.0
 

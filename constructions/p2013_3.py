@@ -37,8 +37,6 @@ from geomcad.geom import Vec
 from geomcad.kinematics.plan import Plan, Side, velocity_plan
 from geomcad.problem import Build, ParamValue
 
-from .spec_2013_3 import PROBLEM as PROBLEM
-
 
 @dataclass(frozen=True)
 class Geometry:

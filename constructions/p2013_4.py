@@ -46,24 +46,8 @@ from geomcad.problem import (
 )
 from geomcad.units import to_deg
 
-from .spec_2013_4 import PARAMS
-from .spec_2013_4 import PROBLEM as PROBLEM
-
 #: m → mm for the operands of the order of construction
 MM = 1000.0
-
-#: What the seed should have written for the half angular thickness (its formula is garbled).
-CORRECT_PSI_FORMULA = "tg ψ_y = (s̄_y/2)/(d_a/2 − h̄_ay) = s̄_y/(d_a − 2h̄_ay) = 18,1/401,8 = 0,04505"
-#: The seed's text as printed (LaTeX): tan φ_y/2 over (d_a − 2h̄) = 18,1/(420 − 2·9,1).
-SEED_PSI_FORMULA = r"\frac{\tan \phi_y / 2}{d_a - 2\bar{h}_{ay}} = \frac{18,1}{420 - 2 \cdot 9,1}"
-
-
-NOTES = [
-    "seed formula garbled: for the half angular thickness it prints "
-    "«tan φ_y/2 / (d_a − 2h̄_ay) = 18,1/(420 − 2·9,1)»; the geometry (the chord's ends lie "
-    "s̄/2 either side of the tooth's axis, r_a − h̄ from the centre) gives "
-    f"«{CORRECT_PSI_FORMULA}», which is the number the seed then uses",
-]
 
 
 @dataclass(frozen=True)
@@ -214,8 +198,7 @@ def build(p: Mapping[str, ParamValue]) -> Build[Geometry]:
         "s": s,
         "x": x,
     }
-    seed_data = all(p[q.name] == q.default for q in PARAMS)
-    notes = list(NOTES) if seed_data else []
+    notes: list[str] = []  # the seed's misprinted formula: the spec's seed_notes
     d_a_std = gear.d + 2.0 * (rack.ha + x) * m
     if not math.isclose(d_a, d_a_std, rel_tol=tol.DERIVED):
         notes.append(

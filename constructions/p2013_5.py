@@ -61,23 +61,8 @@ from geomcad.kinematics.trains import (
 )
 from geomcad.problem import Build, ParamValue
 
-from .spec_2013_5 import PARAMS
-from .spec_2013_5 import PROBLEM as PROBLEM
-
 #: The links: the frame (with the fixed gear 3) and the five moving links.
 FRAME, SUN, BLOCK25, PLANET, H1, H2 = "0", "1", "2-5", "6", "H1-4", "H2-7"
-
-
-#: The seed's coaxiality condition as printed, and as the geometry has it.
-SEED_Z4_FORMULA = "z1 − z2 = z4 + z3"
-CORRECT_Z4_FORMULA = "z2 − z1 = z3 + z4"
-
-NOTES = [
-    "seed misprint in the coaxiality condition for z4: it prints «z1 − z2 = z4 + z3; "
-    "100 − 20 = z4 + 60»; the centre distance of the internal pair 1–2 is m(z2 − z1)/2 and of "
-    "the external pair 4–3 m(z3 + z4)/2, so the condition is «z2 − z1 = z3 + z4» (its numbers "
-    "already use it, so z4 = 20 is right)",
-]
 
 
 @dataclass(frozen=True)
@@ -245,12 +230,10 @@ def build(p: Mapping[str, ParamValue]) -> Build[Geometry]:
         "u1H2": float(u1h2),
         "u1H2_fraction": [u1h2.numerator, u1h2.denominator],
     }
-    seed_data = all(p.get(q.name) == q.default for q in PARAMS)
-    notes = list(NOTES) if seed_data else []
-    notes.append(
+    notes = [  # the seed's misprint comes before them (the spec's seed_notes)
         f"checks: the mesh equations give ω_1/ω_H2 = {1 / speeds[H2]} exactly; the plan of "
         f"linear velocities gives {u_plan:.12g} (slopes) and {u_rays:.12g} (angle diagram)"
-    )
+    ]
     zs = {"1": z1, "2": z2, "3": z3, "4": z4, "5": z5, "6": z6, "7": z7}
     geo = Geometry(zs, m, a, points, plan, rays, omega_exact, (y_lo, y_hi))
     return Build(results, c, notes, data=geo)

@@ -42,7 +42,6 @@ from geomcad.problem import (
 from geomcad.units import to_deg
 
 from .kin_2013_6 import Analysis, analyse
-from .spec_2013_6 import PROBLEM as PROBLEM
 
 #: The position the kinematic analysis is made at (a choice that changes no published number,
 #: the same for every variant): the crank turns ccw at ω1 = 10 rad/s and stands 60° past its

@@ -75,9 +75,6 @@ from geomcad.problem import (
 )
 from geomcad.units import deg, to_deg
 
-from .spec_2013_7 import PARAMS
-from .spec_2013_7 import PROBLEM as PROBLEM
-
 
 @dataclass(frozen=True)
 class Forces:
@@ -128,7 +125,7 @@ class Geometry:
 
 
 def _check_params(p: Mapping[str, ParamValue]) -> dict[str, float]:
-    v = {q.name: float(p[q.name]) for q in PARAMS}
+    v = {name: float(x) for name, x in p.items()}  # every parameter of 2013-7 is a number
     if v["direction"] not in (1.0, -1.0):
         raise ParameterError(
             "direction",

@@ -29,8 +29,6 @@ from geomcad.construction import Construction
 from geomcad.dynamics import cycle_work, flywheel_inertia, speeds_from_max
 from geomcad.problem import Build, ParamValue
 
-from .spec_2013_8 import PROBLEM as PROBLEM
-
 NOTES = [
     "restored: the seed's text lost the energy formula; the work of one hole is the area of the "
     "load diagram, E = F_max·h/2",

@@ -51,8 +51,6 @@ from geomcad.geom import Vec
 from geomcad.problem import Build, ParamValue
 from geomcad.units import deg
 
-from .spec_2013_9 import PROBLEM as PROBLEM
-
 NOTES = [
     "seed slip: the spring's power is written N = −c·x'·x'; it is −c·x·x' (the seed's next "
     "expression, −c·r·sin φ·r·cos φ·φ', is right)",

@@ -59,8 +59,6 @@ from geomcad.kinematics.plan import Plan, Side, velocity_plan
 from geomcad.problem import Build, ParamValue
 from geomcad.units import deg
 
-from .spec_kulisa import PROBLEM as PROBLEM
-
 #: The farthest φ may lie from φ0: the run-up is integrated and its diagrams drawn turn by turn.
 MAX_TURNS = 5
 

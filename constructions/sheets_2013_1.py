@@ -17,7 +17,7 @@ import math
 from typing import TYPE_CHECKING
 
 from geomcad.geom import Line, Vec
-from geomcad.sheet import Scale, Sheet, TitleBlock, Viewport, fmt_number, start
+from geomcad.sheet import Scale, Sheet, TitleBlock, Viewport, start
 from geomcad.sheet import views as V
 from geomcad.sheet.compose import (
     Column,
@@ -29,8 +29,9 @@ from geomcad.sheet.compose import (
     arrange,
     compose,
 )
-from geomcad.sheet.lang import Words, current, per_language
+from geomcad.sheet.lang import Words, per_language
 from geomcad.sheet.scheme import Body
+from geomcad.sheet.views import num
 from geomcad.structure import Link, Mechanism, Pair
 
 if TYPE_CHECKING:
@@ -49,16 +50,6 @@ WORDS = Words(__package__, "sheets_2013_1")
 #: The order of construction (the steps constructions/p2013_1.py records with their kinds): the
 #: position with V_T = 0 and its plan, then the plan at the given θ1.
 ORDER = ("M", "k_e", "M*", "slot*1", "slot*2", "m1*", "m6*", "m1", "m6", "V_T/ω1")
-
-
-def _num(x: float, digits: int = 6) -> str:
-    return fmt_number(x, current(), digits)
-
-
-def _box(points: list[Vec], pad: float = 0.0) -> tuple[float, float, float, float]:
-    xs = [q.x for q in points]
-    ys = [q.y for q in points]
-    return min(xs) - pad, min(ys) - pad, max(xs) + pad, max(ys) + pad
 
 
 def _lid_end(pts: dict[str, Vec]) -> Vec:
@@ -142,14 +133,14 @@ class _Views:
             self.before, WORDS("before_title", n=geo.before.n, p5=geo.before.p5, p4=geo.before.p4)
         )
         _caption(self.after, WORDS("after_title", n=rep.n, p5=rep.p5, p4=rep.p4))  # fmt: skip
-        t1 = _num(math.degrees(geo.theta1) % 360.0, digits=5)
+        t1 = num(math.degrees(geo.theta1) % 360.0, 5)
         schemes = Row(
             self.before, self.after, weights=(1.0, 1.0), title=WORDS("schemes_title", th=t1),
             group="s",
         )  # fmt: skip
         groups = Column(*_groups(geo), title=WORDS("groups_title"), group="g")
         self.position = Figure(
-            _box(_position_points(geo)),
+            V.extent_of(_position_points(geo)),
             lambda v: _position(v, geo),
             title=WORDS("position_title"),
             title_height=5.0,
@@ -158,11 +149,11 @@ class _Views:
         )
         pts = geo.points
         z = geo.zeros[geo.built]
-        th = _num(math.degrees(z.theta1) % 360.0, digits=5)
-        vt = _num(float(pts["m6"].dot(Vec(math.cos(geo.psi), math.sin(geo.psi)))), digits=5)
+        th = num(math.degrees(z.theta1) % 360.0, 5)
+        vt = num(float(pts["m6"].dot(Vec(math.cos(geo.psi), math.sin(geo.psi)))), 5)
         origin = Vec(0.0, 0.0)
         self.plan_zero = Figure(
-            _box([origin, pts["m1*"]]),
+            V.extent_of([origin, pts["m1*"]]),
             lambda v: _plan_zero(v, geo),
             title=WORDS("plan_zero", th=th),
             show_scale=False,
@@ -173,7 +164,7 @@ class _Views:
             readable=pts["m1*"].norm,
         )
         self.plan_given = Figure(
-            _box([origin, pts["m1"], pts["m6"]]),
+            V.extent_of([origin, pts["m1"], pts["m6"]]),
             lambda v: _plan_given(v, geo),
             title=WORDS("plan_given", th=t1, vt=vt),
             show_scale=False,
@@ -328,12 +319,6 @@ def _part(mech: Mechanism, part: tuple[str, ...]) -> Mechanism:
 # -- the dead position and the plans ----------------------------------------------------------
 
 
-def _right_angle(v: Viewport, vertex: Vec, a: Vec, b: Vec, size_mm: float = 3.0) -> None:
-    s = v.scale.model(size_mm)
-    ua, ub = (a - vertex).unit() * s, (b - vertex).unit() * s
-    v.polyline([vertex + ua, vertex + ua + ub, vertex + ub], "construction")
-
-
 def _position(v: Viewport, geo: Geometry) -> None:
     """The position with ML ⊥ MO built: circle(O, |e|), the pusher's path, M, the slot as the
     tangent there, OM and the right angle at M; the other zero position in two-dot lines."""
@@ -342,7 +327,7 @@ def _position(v: Viewport, geo: Geometry) -> None:
     e = abs(geo.e)
     r = geo.points["R"].x
     up = Vec(math.cos(geo.psi), math.sin(geo.psi))
-    th = _num(math.degrees(z.theta1) % 360.0, digits=5)
+    th = num(math.degrees(z.theta1) % 360.0, 5)
     O_ = Vec(0.0, 0.0)
     v.circle(O_, e, "construction")
     path = Line(up.perp() * geo.h, up)
@@ -359,7 +344,7 @@ def _position(v: Viewport, geo: Geometry) -> None:
         v.seg(O_, q.M - nq * (sq * r), "extreme")
         v.dot(q.M, "result")
         v.label(q.M, "M*", height=2.5, prefer=(q.u1.x, q.u1.y))
-        tq = _num(math.degrees(q.theta1) % 360.0, digits=5)
+        tq = num(math.degrees(q.theta1) % 360.0, 5)
         v.label(b, f"θ_1 = {tq}°", height=2.5, prefer=(1.0, -1.0))
     # the built position: lever 1 with its slot tangent to the circle at M
     n1 = z.u1.perp()
@@ -378,7 +363,7 @@ def _position(v: Viewport, geo: Geometry) -> None:
     v.guide(g1, g0, (-n.x, -n.y))
     v.joint(z.M)
     # OM ⊥ ML: the lever's arm is OM itself
-    _right_angle(v, z.M, O_, z.L, r / k.k + 5.0)
+    v.right_angle(z.M, O_, z.L, r / k.k + 5.0)
     v.dot(z.L, "result")
     v.label(O_, "O", prefer=(-1.0, -1.0), clear=3.0)
     v.label(z.M, "M*", prefer=(1.0, 1.0), clear=r / k.k + 0.5)
@@ -393,7 +378,7 @@ def _position(v: Viewport, geo: Geometry) -> None:
     foot = path.foot(O_)
     if foot.norm > 0.0:
         mm = 1000.0
-        v.dim_linear(O_, foot, f"|h| = {_num(abs(geo.h) * mm, digits=4)}", 8.0, 2.5)
+        v.dim_linear(O_, foot, f"|h| = {num(abs(geo.h) * mm, 4)}", 8.0, 2.5)
 
 
 def _plan_zero(v: Viewport, geo: Geometry) -> None:
@@ -473,9 +458,7 @@ def _panel(sol: Solution[Geometry], geo: Geometry) -> list[View]:
         for name in (s.pair_a, s.pair_b):
             q = geo.replaced.mechanism.pair(name)
             rows.append([f"{name}*", f"{q.a}–{q.b}", _kind(q.kind), f"p_{q.pair_class}"])
-    out.append(
-        V.Table(rows, widths=(18.0, 22.0, 30.0, 18.0), row_h=5.0, title=WORDS("pairs_title"))
-    )
+    out.append(V.Table(rows, row_h=5.0, title=WORDS("pairs_title")))
     text(WORDS("pairs_note"))
     n, p5, p4, _local = geo.counts
     rows = [[WORDS("h_quantity"), WORDS("h_count"), "W"]]
@@ -493,7 +476,7 @@ def _panel(sol: Solution[Geometry], geo: Geometry) -> list[View]:
         ("W_after_replacement", WORDS("w_after"), after),
     ):
         rows.append([label, how, str(r[name])])
-    out.append(V.Table(rows, widths=(56.0, 62.0, 20.0), row_h=5.0, title=WORDS("mobility_title")))
+    out.append(V.Table(rows, fill=PANEL_W, row_h=5.0, title=WORDS("mobility_title")))
     text(WORDS("mobility_note"))
     dec = geo.decomposition
     heads = ("h_group", "h_links", "h_pairs", "h_class", "h_order", "h_kind")
@@ -507,7 +490,7 @@ def _panel(sol: Solution[Geometry], geo: Geometry) -> list[View]:
         )
     out.append(
         V.Table(
-            rows, widths=(34.0, 18.0, 32.0, 16.0, 20.0, 26.0), row_h=5.0,
+            rows, fill=PANEL_W, row_h=5.0,
             title=WORDS("groups_table"),
         )
     )  # fmt: skip
@@ -518,14 +501,14 @@ def _panel(sol: Solution[Geometry], geo: Geometry) -> list[View]:
             cls=["", "I", "II", "III", "IV"][min(dec.mechanism_class, 4)],
         )
     )
-    zs = ", ".join(f"{_num(t, digits=6)}°" for t in r["zero_theta1_deg"])
+    zs = ", ".join(f"{num(t, 6)}°" for t in r["zero_theta1_deg"])
     e, h_ = geo.e, geo.h
     psi = math.degrees(geo.psi)
     acos = math.degrees(math.acos(max(-1.0, min(1.0, h_ / e))))
-    sweep = ", ".join(f"{_num(t, digits=6)}°" for t in geo.sweep_zeros_deg) or WORDS("none")
-    t1 = _num(math.degrees(geo.theta1) % 360.0, digits=5)
-    vt = _num(float(r["VT_over_omega1"]), digits=6)
-    check = f"{_num(psi, digits=6)}° ± {_num(acos, digits=6)}°"
+    sweep = ", ".join(f"{num(t, 6)}°" for t in geo.sweep_zeros_deg) or WORDS("none")
+    t1 = num(math.degrees(geo.theta1) % 360.0, 5)
+    vt = num(float(r["VT_over_omega1"]), 6)
+    check = f"{num(psi, 6)}° ± {num(acos, 6)}°"
     rows = [
         [WORDS("h_quantity"), WORDS("h_value")],
         [WORDS("zero_built"), zs],
@@ -533,7 +516,7 @@ def _panel(sol: Solution[Geometry], geo: Geometry) -> list[View]:
         [WORDS("zero_sweep"), sweep],
         [WORDS("vt_at", th=t1), f"{vt} {WORDS('metre')}"],
     ]
-    out.append(V.Table(rows, widths=(80.0, 70.0), row_h=5.0, title=WORDS("pusher_title")))
+    out.append(V.Table(rows, fill=PANEL_W, row_h=5.0, title=WORDS("pusher_title")))
     steps = [sol.construction.step(n) for n in ORDER]
     out.append(V.Steps(steps, PANEL_W, only=ORDER, words=WORDS))
     text(WORDS("four_bar_note"))

@@ -24,7 +24,7 @@ from geomcad import tol
 from geomcad.geom import Arc, Circle, Vec
 from geomcad.kinematics.cams import CamProfile, evert
 from geomcad.problem import ResultSpec
-from geomcad.sheet import Scale, Sheet, TitleBlock, Viewport, fmt_number, start
+from geomcad.sheet import Scale, Sheet, TitleBlock, Viewport, start
 from geomcad.sheet import views as V
 from geomcad.sheet.compose import (
     Column,
@@ -40,8 +40,9 @@ from geomcad.sheet.compose import (
 )
 from geomcad.sheet.drawing import ARROW_LEN, DOT_R, SHORT_MM
 from geomcad.sheet.graph import Graph
-from geomcad.sheet.lang import Words, current, per_language
+from geomcad.sheet.lang import Words, per_language
 from geomcad.sheet.text import wrap
+from geomcad.sheet.views import num
 
 from .spec_2013_2 import PARAMS, RESULTS
 
@@ -68,10 +69,6 @@ PANEL_W = 250.0
 ORDER_W = 280.0
 ORDER_H = 2.5
 BLOCK_H = 52.0
-
-
-def _n(x: float, digits: int = 4) -> str:
-    return fmt_number(x, current(), digits)
 
 
 # -- views and scales ------------------------------------------------------------------------------
@@ -105,7 +102,7 @@ class _Views:
         left: list[View | Node] = [self.profile]
         if geo.rest is not None:
             span, end = math.degrees(float(geo.span)), math.degrees(float(geo.rest.phi[-1]))
-            left.append(V.Text([WORDS("rest_note", span=_n(span), end=_n(end))], height=2.5))
+            left.append(V.Text([WORDS("rest_note", span=num(span), end=num(end))], height=2.5))
         law = WORDS(f"law_{sol.params['law']}")
         left.append(Row(*_diagrams(sol), weights=(1.0, 1.0), title=WORDS("graph_title", law=law)))
         steps = order_steps(sol)
@@ -113,7 +110,7 @@ class _Views:
         phi = math.degrees(plan.phi)
         self.scheme = Figure(
             _scheme_extent(sol), lambda v: _scheme(v, sol),
-            title=WORDS("scheme_title", i=geo.plan_index, phi=_n(phi)), margin=6.0, weight=2.0,
+            title=WORDS("scheme_title", i=geo.plan_index, phi=num(phi)), margin=6.0, weight=2.0,
         )  # fmt: skip
         vectors = [plan.V_B1, plan.V_B2, plan.V_B2 - plan.V_B1]
         shortest = min((q.norm for q in vectors if q.norm > 0.0), default=0.0)
@@ -216,7 +213,7 @@ def _profile(v: Viewport, sol: Solution[Geometry]) -> None:
     # the radius vectors' lengths, written along them
     for i in sorted(shown):
         B = Vec(*div.contact[i])
-        text = f"r_{{{i}}} = {_n(float(div.radius[i]) * MM)}"
+        text = f"r_{{{i}}} = {num(float(div.radius[i]) * MM)}"
         spots = tuple(v.p(B * t) for t in (0.6, 0.8, 0.5, 0.9, 0.4))
         v.d.label(v.p(B * 0.7), text, 2.5, others=spots)
     # the angle of one interval, between the last two axes
@@ -224,7 +221,7 @@ def _profile(v: Viewport, sol: Solution[Geometry]) -> None:
         a0 = Vec(0.0, 1.0).rotated(-f.sigma * float(div.phi[-2]))
         a1 = Vec(0.0, 1.0).rotated(-f.sigma * float(div.phi[-1]))
         dphi = math.degrees(float(div.phi[-1] - div.phi[-2]))
-        v.dim_angle(o, a0, a1, f"{_n(dphi)}°", r_mm=k.mm(f.r0) * 0.55, height=2.5)
+        v.dim_angle(o, a0, a1, f"{num(dphi)}°", r_mm=k.mm(f.r0) * 0.55, height=2.5)
 
 
 def _rest(v: Viewport, sol: Solution[Geometry], rest: CamProfile, over: float) -> None:
@@ -240,7 +237,7 @@ def _rest(v: Viewport, sol: Solution[Geometry], rest: CamProfile, over: float) -
     foot = Vec(1.0, 0.0).rotated(-f.sigma * end) * (f.e if f.kind != "flat" else 0.0)
     C = Vec(*rest.pitch[-1])
     v.seg(foot, C + up * over, "construction")
-    v.label(C + up * over, WORDS("rest_end", phi=_n(math.degrees(end))), 2.5,
+    v.label(C + up * over, WORDS("rest_end", phi=num(math.degrees(end))), 2.5,
             prefer=(up.x, up.y), clear=0.5)  # fmt: skip
 
 
@@ -397,7 +394,7 @@ def _scheme(v: Viewport, sol: Solution[Geometry]) -> None:
     v.seg(o, Bp, "construction")
     if f.kind == "flat":
         v.seg(o, C, "construction")
-    _right_angle(v, Bp, o, B)
+    v.right_angle(Bp, o, B, 2.5)
     for q in (o, B, Bp):
         v.dot(q, "point")
     v.label(o, "O", prefer=(-away, 1.0), clear=1.5)
@@ -422,7 +419,7 @@ def _plan(pv: Viewport, sol: Solution[Geometry]) -> None:
             pv.arrow(a, b, "vector")
         elif length > 0.0:
             pv.dot(b, "point")
-            pv.label(b, WORDS("plan_short", name=name, value=_n(length, 3)), 2.5)
+            pv.label(b, WORDS("plan_short", name=name, value=num(length, 3)), 2.5)
     pv.dot(pole, "point")
     pv.label(pole, "p", height=3.5, prefer=(1.0, -1.0))
     pv.label(b1, "b_1", height=3.5, prefer=(-1.0, 0.0))
@@ -446,14 +443,6 @@ def _turn_arrow(v: Viewport, r: float, a0_deg: float, a1_deg: float, sense: int,
     v.arrow(Vec.polar(r, before), Vec.polar(r, end), "dimension")
     mid = (a0 + a1) / 2.0
     v.label(Vec.polar(r, mid), text, height=3.5, prefer=(math.cos(mid), math.sin(mid)), clear=0.5)
-
-
-def _right_angle(v: Viewport, vertex: Vec, a: Vec, b: Vec, size_mm: float = 2.5) -> None:
-    s = v.scale.model(size_mm)
-    if (a - vertex).norm == 0.0 or (b - vertex).norm == 0.0:
-        return
-    ua, ub = (a - vertex).unit() * s, (b - vertex).unit() * s
-    v.polyline([vertex + ua, vertex + ua + ub, vertex + ub], "construction")
 
 
 # -- tables ----------------------------------------------------------------------------------------
@@ -480,7 +469,7 @@ def _tables(sol: Solution[Geometry]) -> list[V.Table]:
     """The given data and the results at the division points."""
     p, r, geo = sol.params, sol.results, sol.data
     law = str(p["law"])
-    step_deg = _n(math.degrees(geo.span) / int(p["n_div"]), 3)
+    step_deg = num(math.degrees(geo.span) / int(p["n_div"]), 3)
     shown = {
         **p,
         "law": WORDS(f"short_{law}"),
@@ -546,11 +535,11 @@ def _notes(sol: Solution[Geometry]) -> list[str]:
     f = geo.follower
     r = sol.results
     out: list[str] = [
-        WORDS("summary", rho=_n(float(r["rho_min"]) * MM),
-              alpha=_n(float(r["pressure_angle_max_deg"]))),
+        WORDS("summary", rho=num(float(r["rho_min"]) * MM),
+              alpha=num(float(r["pressure_angle_max_deg"]))),
     ]  # fmt: skip
     if f.kind == "flat":
         out.append(WORDS("note_radius"))
     if np.any(geo.profile.corner) and f.kind == "flat" and sol.params["law"] == "linear":
-        out.append(WORDS("note_jump", a=_n(float(sol.results["a"]) * MM)))
+        out.append(WORDS("note_jump", a=num(float(sol.results["a"]) * MM)))
     return [line for par in out for line in wrap(par, PANEL_W, 3.0)]

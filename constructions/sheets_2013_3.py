@@ -14,7 +14,7 @@ import math
 from typing import TYPE_CHECKING
 
 from geomcad.geom import Vec
-from geomcad.sheet import Scale, Sheet, TitleBlock, Viewport, fmt_number, start
+from geomcad.sheet import Scale, Sheet, TitleBlock, Viewport, start
 from geomcad.sheet import views as V
 from geomcad.sheet.compose import (
     Column,
@@ -26,9 +26,8 @@ from geomcad.sheet.compose import (
     arrange,
     compose,
 )
-from geomcad.sheet.drawing import SLIDER_SIZE
-from geomcad.sheet.lang import Words, current, per_language
-from geomcad.sheet.model import Polyline
+from geomcad.sheet.lang import Words, per_language
+from geomcad.sheet.views import num
 
 from .spec_2013_3 import PARAMS, RESULTS
 
@@ -47,16 +46,9 @@ BLOCK_H = 52.0
 WORDS = Words(__package__, "sheets_2013_3")
 
 
-def _n(x: float, digits: int = 4) -> str:
-    return fmt_number(x, current(), digits)
-
-
 def extent(c: Construction, l_ab: float) -> tuple[float, float, float, float]:
     """The model box the mechanism drawing needs: the links, the slots run past C and O2."""
-    pts = [c[n] for n in ("O1", "O2", "A", "B", "C")]
-    pad = 0.35 * l_ab
-    xs, ys = [q.x for q in pts], [q.y for q in pts]
-    return min(xs) - pad, min(ys) - pad, max(xs) + pad, max(ys) + pad
+    return V.extent_of((c[n] for n in ("O1", "O2", "A", "B", "C")), 0.35 * l_ab)
 
 
 def _views(sol: Solution[Geometry], kv: Scale | None = None) -> tuple[Tree, Figure, V.PlanView]:
@@ -111,16 +103,16 @@ def _mechanism(v: Viewport, geo: Geometry, c: Construction, sol: Solution[Geomet
     # link 1: the body AB sliding along O1O2 on its guide
     v.guide(A - Vec(v.scale.model(14.0), 0.0), A + Vec(v.scale.model(14.0), 0.0), (0.0, -1.0))
     v.seg(A, B, "link")
-    _block(v, A, Vec(1.0, 0.0))
+    v.slider(A, Vec(1.0, 0.0), with_joint=False)
     # link 3: the slotted rocker B–O1–C, run past B and C
     v.seg(B - u3 * ext, C + u3 * ext, "link")
     # link 5: O2 through C and on
     v.seg(O2, C + u5 * ext, "link")
     v.seg(O1, O2, "centre")
-    # block 2 in the slot at B; the cross 4 at C, one slide on each link
+    # block 2 in the slot at B; the cross 4 at C, one slide on each link (no joint inside)
     v.slider(B, u3)
-    _block(v, C, u3)
-    _block(v, C, u5)
+    v.slider(C, u3, with_joint=False)
+    v.slider(C, u5, with_joint=False)
     # O1's support turned away from the rocker that passes through it and from O1O2: along the
     # bisector of the angle between the rocker's lower half (towards B) and O1O2
     n3 = ((B - O1).unit() + (O2 - O1).unit()).unit()
@@ -155,27 +147,11 @@ def _mechanism(v: Viewport, geo: Geometry, c: Construction, sol: Solution[Geomet
     # the given geometry, dimensioned
     v.dim_angle(O1, O2, C, "α", r_mm=16.0, height=3.5)
     l_ab, l12 = (
-        _n(A.dist(B) * 1000.0),
-        _n(O1.dist(O2) * 1000.0),
+        num(A.dist(B) * 1000.0),
+        num(O1.dist(O2) * 1000.0),
     )
     v.dim_linear(A, B, f"l_{{AB}} = {l_ab}", offset=-10.0, height=2.5)
     v.dim_linear(O1, O2, f"l_{{O1O2}} = {l12}", offset=-22.0, height=2.5)
-
-
-def _block(v: Viewport, q: Vec, along: Vec) -> None:
-    """A slider block on its guide with no revolute joint inside (GOST 2.770): link 1's block at
-    A, the cross's two slides at C."""
-    x, y = v.p(q)
-    d = along.unit()
-    ux, uy = d.x, -d.y
-    px, py = -uy, ux
-    hw, hh = SLIDER_SIZE[0] / 2.0, SLIDER_SIZE[1] / 2.0
-    corners = tuple(
-        (x + ux * sx * hw + px * sy * hh, y + uy * sx * hw + py * sy * hh)
-        for sx, sy in ((-1, -1), (1, -1), (1, 1), (-1, 1))
-    )
-    v.sheet.add(Polyline(corners, "joint", closed=True, fill=True))
-    v.sheet.add(Polyline(corners, "link", closed=True))
 
 
 def _results(sol: Solution[Geometry], kv: Scale | None) -> V.Table:
@@ -184,7 +160,7 @@ def _results(sol: Solution[Geometry], kv: Scale | None) -> V.Table:
     def on_plan(spec: V.Spec, x: object) -> str:
         if kv is None or spec.unit != "m/s" or not isinstance(x, int | float):
             return ""
-        return _n(kv.mm(float(x)), 3)
+        return num(kv.mm(float(x)), 3)
 
     return V.Table.of_specs(
         RESULTS, sol.results, labels={"F_red": WORDS("F_red")}, style="value",

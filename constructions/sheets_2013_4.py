@@ -30,15 +30,15 @@ from geomcad.sheet import (
     TextItem,
     TitleBlock,
     Viewport,
-    fmt_number,
     start,
 )
 from geomcad.sheet import views as V
 from geomcad.sheet.compose import Column, Field, Figure, Row, Spacer, Tree, arrange, compose
 from geomcad.sheet.drawing import ARROW_LEN
-from geomcad.sheet.lang import Words, current, per_language
+from geomcad.sheet.lang import Words, per_language
 from geomcad.sheet.text import SUB_DROP, SUB_SCALE, SUP_RISE, metrics, run_size
 from geomcad.sheet.text import width as text_width
+from geomcad.sheet.views import num
 
 from .spec_2013_4 import PARAMS, RESULTS
 
@@ -89,10 +89,6 @@ ORDER = (
 )  # fmt: skip
 #: The title block's height (mm): the right-hand column keeps it free.
 BLOCK_H = 52.0
-
-
-def _num(x: float, digits: int = 6) -> str:
-    return fmt_number(x, current(), digits)
 
 
 def _views(sol: Solution[Geometry]) -> tuple[Tree, Figure]:
@@ -252,7 +248,7 @@ def _circles(v: Viewport, gear: SpurGear, geo: Geometry, half: float) -> None:
     for r, role, name, dia, side in items:
         v.arc(_arc(r, span), role)
         end = Vec.polar(r, math.pi / 2.0 + side * span)
-        v.label(end, f"{name} = ⌀{_num(dia * MM, digits=4)}", 2.5, prefer=(-side, 1.0))
+        v.label(end, f"{name} = ⌀{num(dia * MM, 4)}", 2.5, prefer=(-side, 1.0))
     # the tooth's axis
     low = min(gear.r_b, gear.d_f / 2.0) - 0.3 * gear.m
     v.seg(Vec(0.0, low), Vec(0.0, extent(gear)[3]), "centre")
@@ -287,7 +283,7 @@ def _rack(v: Viewport, gear: SpurGear, x_lo: float, x_hi: float) -> None:
         v.dim_linear(
             Vec(xd, gear.r),
             Vec(xd, y_d),
-            f"xm = {_num(gear.x * m * MM, digits=4)}",
+            f"xm = {num(gear.x * m * MM, 4)}",
             offset=6.0,
             height=2.5,
         )
@@ -349,9 +345,9 @@ def _caliper(v: Viewport, c: Construction, geo: Geometry) -> None:
     v.label(K_, "K'", prefer=(-1.0, -1.0), clear=1.0)
     v.label(T, "T", prefer=(-1.0, 1.0), clear=1.0)
     rise = v.mm(T.y - K.y)
-    s_txt = _num(float(c["K"].dist(c["K'"])) * MM, digits=4)
+    s_txt = num(float(c["K"].dist(c["K'"])) * MM, 4)
     v.dim_linear(K_, K, f"s̄ = {s_txt}", offset=rise + 14.0, height=3.5)
-    h_txt = _num((T.y - H.y) * MM, digits=4)
+    h_txt = num((T.y - H.y) * MM, 4)
     side = v.mm(K.x) + 12.0
     v.dim_linear(T, H, f"h̄ = {h_txt}", offset=side, height=3.5)
     del gear
@@ -373,11 +369,11 @@ def _tables(sol: Solution[Geometry]) -> tuple[V.Table, V.Table, V.Table]:
     k_span = geo.k_span
     rows = [[WORDS("h_quantity"), WORDS("h_value")]]
     for label, value in (
-        (WORDS("d_f"), f"{_num(gear.d_f * MM, digits=4)} {mm}"),
-        (WORDS("d_l"), f"{_num(gear.limit_diameter() * MM, digits=4)} {mm}"),
-        (WORDS("s_a"), f"{_num(gear.s_a * MM, digits=4)} {mm}"),
-        (WORDS("x_min"), f"{_num(gear.x_min, digits=4)}"),
-        (f"W_{k_span} (z_W = {k_span})", f"{_num(geo.W * MM, digits=4)} {mm}"),
+        (WORDS("d_f"), f"{num(gear.d_f * MM, 4)} {mm}"),
+        (WORDS("d_l"), f"{num(gear.limit_diameter() * MM, 4)} {mm}"),
+        (WORDS("s_a"), f"{num(gear.s_a * MM, 4)} {mm}"),
+        (WORDS("x_min"), f"{num(gear.x_min, 4)}"),
+        (f"W_{k_span} (z_W = {k_span})", f"{num(geo.W * MM, 4)} {mm}"),
     ):
         rows.append([label, value])
     teeth = V.Table(rows, widths=(30.0, 18.0), row_h=ROW_H, title=WORDS("tooth_title"))

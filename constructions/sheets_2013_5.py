@@ -33,9 +33,9 @@ from geomcad.sheet import (
     Sheet,
     TitleBlock,
     Viewport,
-    fmt_number,
     start,
 )
+from geomcad.sheet.views import factor, num
 
 if TYPE_CHECKING:
     from geomcad.construction import Construction
@@ -59,8 +59,9 @@ from geomcad.sheet.compose import (
     compose,
 )
 from geomcad.sheet.drawing import SHORT_MM
+from geomcad.sheet.gearing import gear_web, ground_line, ring_gear, shaft_bearing
 from geomcad.sheet.lang import Words, current
-from geomcad.sheet.scale import ScaleStyle, gost_length_scale, nice_factor
+from geomcad.sheet.scale import gost_length_scale, nice_factor
 from geomcad.sheet.text import box as text_box
 from geomcad.sheet.text import parse
 
@@ -93,16 +94,6 @@ ORDER_KINDS = (
 )
 
 WORDS = Words(__package__, "sheets_2013_5")
-
-
-def num(x: float, digits: int = 6) -> str:
-    """A number in the language being drawn."""
-    return fmt_number(x, current(), digits)
-
-
-def factor(k: Scale) -> str:
-    """A scale factor as the language being drawn writes it."""
-    return k.label(ScaleStyle(lang=current()))
 
 
 #: How the links are named on the sheet.
@@ -172,12 +163,12 @@ def _tree(sol: Solution[Geometry], k_l: float, k_v: float) -> tuple[Node, dict[s
                    margin=0.5, weight=2.0)  # fmt: skip
     ray_view = Figure(_rays_box(geo, rays, k_l, k_v),
                       lambda v: _rays(v, geo, rays, kv, k_omega), group="l", margin=1.0,
-                      title=WORDS("rays_title", k=num(k_omega)), show_scale=False)  # fmt: skip
+                      title=WORDS("rays_title", k=num(k_omega, 6)), show_scale=False)  # fmt: skip
     head = V.Text(paragraph=WORDS("title"), width=160.0, height=5.0)
     factors = V.Text(
         lines=[
             f"{factor(k)} (M {k.ratio_text() or '—'});  {factor(kv)};  "
-            f"μ_ω = {num(k_omega)} {WORDS('rad_s_mm')}"
+            f"μ_ω = {num(k_omega, 6)} {WORDS('rad_s_mm')}"
         ],
         height=3.5,
     )
@@ -248,60 +239,6 @@ def _build(v: Viewport, geo: Geometry, kv: Scale) -> None:
 # -- the scheme ----------------------------------------------------------------------------------
 
 
-def _gear(
-    v: Viewport,
-    x: float,
-    y_c: float,
-    r: float,
-    b: float,
-    halves: tuple[int, ...] = (1, -1),
-    hub: float = 0.0,
-) -> None:
-    """An external gear (GOST 2.770): its web from the hub (``hub`` off the axis) to the rim at
-    the pitch radius r, the rim of width b."""
-    for s in halves:
-        v.seg(Vec(x, y_c + s * hub), Vec(x, y_c + s * r), "link")
-        v.seg(Vec(x - b / 2.0, y_c + s * r), Vec(x + b / 2.0, y_c + s * r), "link")
-
-
-def _ring(v: Viewport, x: float, x_web: float, y_c: float, r: float, b: float) -> None:
-    """An internal gear: the rim at the pitch radius from x − b/2 to the web at ``x_web`` (a cup
-    open towards its mesh), the web across the axis."""
-    for s in (1, -1):
-        v.seg(Vec(x - b / 2.0, y_c + s * r), Vec(x_web, y_c + s * r), "link")
-    v.seg(Vec(x_web, y_c - r), Vec(x_web, y_c + r), "link")
-
-
-def _ground(v: Viewport, at: Vec, half_mm: float = 5.0) -> None:
-    """The frame under a support: a ground line hatched below (sheet mm from the model point)."""
-    x, y = v.p(at)
-    s = v.sheet
-    s.add(Polyline(((x - half_mm, y), (x + half_mm, y)), "link"))
-    n = int(2.0 * half_mm / 2.0)
-    for i in range(n + 1):
-        hx = x - half_mm + i * 2.0 * half_mm / n
-        s.add(Polyline(((hx, y), (hx - 2.0, y + 2.5)), "ground"))
-
-
-def _bearing(v: Viewport, at: Vec, on_frame: bool, drop: float = 0.0) -> None:
-    """A revolute pair on a shaft: a small box round it; on the frame, a post down to the ground
-    (``drop`` model units long)."""
-    x, y = v.p(at)
-    w, h = 4.0, 3.0
-    box = (
-        (x - w / 2, y - h / 2),
-        (x + w / 2, y - h / 2),
-        (x + w / 2, y + h / 2),
-        (x - w / 2, y + h / 2),
-    )
-    v.sheet.add(Polyline(box, "joint", closed=True, fill=True))
-    v.sheet.add(Polyline(box, "link", closed=True))
-    if on_frame:
-        foot = Vec(at.x, at.y - drop)
-        v.sheet.add(Polyline(((x, y + h / 2), v.p(foot)), "link"))
-        _ground(v, foot)
-
-
 def _x_end(u: float) -> float:
     """The output shaft's free end (model x) on the scheme of unit u."""
     return 10.8 * u + 0.35 * u + 0.6 * u + 2.6 * u
@@ -326,33 +263,33 @@ def _scheme(v: Viewport, geo: Geometry, u: float) -> tuple[float, dict[str, Vec]
     v.seg(Vec(xh1 - 0.3 * u, y_e), Vec(x5 + b / 2.0 + 0.3 * u, y_e), "centre")
     # input shaft 1 and the sun 1
     v.seg(Vec(0.0, 0.0), Vec(x1, 0.0), "link")
-    _gear(v, x1, 0.0, r["1"], b)
-    _bearing(v, Vec(1.2 * u, 0.0), True, -y_ground)
+    gear_web(v, x1, 0.0, r["1"], b)
+    shaft_bearing(v, Vec(1.2 * u, 0.0), True, -y_ground)
     # block 2-5: the ring 2, the shaft along O_25, the pinion 5
-    _ring(v, x1, xw2, a, r["2"], b)
+    ring_gear(v, x1, xw2, a, r["2"], b)
     v.seg(Vec(xw2, a), Vec(xw7, a), "link")
-    _gear(v, x5, a, r["5"], b)
+    gear_web(v, x5, a, r["5"], b)
     # gear 3, fixed: its web on a post to the frame
-    _gear(v, x3, 0.0, r["3"], b)
+    gear_web(v, x3, 0.0, r["3"], b)
     post = Vec(x3, y_ground)
     v.seg(Vec(x3, -r["3"]), post, "link")
-    _ground(v, post)
+    ground_line(v, post)
     # block H1-4: the sleeve round the shaft 2-5, gear 4, the arm H1 and the planet's axle
     for s in (1, -1):
         v.seg(Vec(x3 - b / 2.0, a + s * dlt), Vec(xh1, a + s * dlt), "link")
-    _gear(v, x3, a, r["4"], b, hub=dlt)
+    gear_web(v, x3, a, r["4"], b, hub=dlt)
     v.seg(Vec(xh1, a + dlt), Vec(xh1, y_e), "link")
     v.seg(Vec(xh1, y_e), Vec(x5, y_e), "link")
     # the planet 6 (the one on the far side of O_25)
-    _gear(v, x5, y_e, r["6"], b)
-    _bearing(v, Vec(0.5 * (xh1 + x5), y_e), False)
+    gear_web(v, x5, y_e, r["6"], b)
+    shaft_bearing(v, Vec(0.5 * (xh1 + x5), y_e), False)
     # block H2-7: the ring 7, its web carrying the shaft 2-5, the arm to the central axis and
     # the output shaft
-    _ring(v, x5, xw7, a, r["7"], b)
+    ring_gear(v, x5, xw7, a, r["7"], b)
     v.seg(Vec(xw7, min(a - r["7"], 0.0)), Vec(xw7, max(a - r["7"], 0.0)), "link")
     v.seg(Vec(xw7, 0.0), Vec(x_end, 0.0), "link")
-    _bearing(v, Vec(xw7, a), False)
-    _bearing(v, Vec(xw7 + 1.4 * u, 0.0), True, -y_ground)
+    shaft_bearing(v, Vec(xw7, a), False)
+    shaft_bearing(v, Vec(xw7 + 1.4 * u, 0.0), True, -y_ground)
     # pitch lines through the pitch points, and the points of the plan
     ext = b / 2.0 + 0.35 * u
     meshes = {"A": x1, "C": x3, "D": x5, "F": x5}
@@ -520,7 +457,7 @@ def _panel(sol: Solution[Geometry], rays: RayPlan, k_v: float) -> list[View]:
     )  # fmt: skip
     coaxial = V.Text(lines=[WORDS("coaxial")])
     top, den = r["u1H2_fraction"]
-    u = num(float(r["u1H2"]), digits=4)
+    u = num(float(r["u1H2"]), 4)
     shown = {**r, "u1H2": f"{top}/{den} = {u}" if den != 1 else u}
     results = V.Table.of_specs(RESULTS, shown, style="value", widths=(36.0, 60.0), row_h=5.5,
                                title=WORDS("results"))  # fmt: skip
@@ -531,11 +468,9 @@ def _panel(sol: Solution[Geometry], rays: RayPlan, k_v: float) -> list[View]:
         rows.append(
             [
                 LINK_LABEL[link],
-                str(exact)
-                if exact.denominator == 1
-                else f"{exact} = {num(float(exact), digits=4)}",
-                num(geo.plan.omega[link], digits=4),
-                num(ray_mm, digits=4),
+                str(exact) if exact.denominator == 1 else f"{exact} = {num(float(exact), 4)}",
+                num(geo.plan.omega[link], 4),
+                num(ray_mm, 4),
             ]
         )
     omegas = V.Table(rows, widths=(18.0, 58.0, 36.0, 34.0), row_h=5.5, title=WORDS("omegas"))

@@ -45,9 +45,9 @@ from geomcad.sheet.replay import replay
 from geomcad.sheet.scheme import GUIDE_HALF
 from geomcad.sheet.text import box as text_box
 from geomcad.sheet.text import parse
-from geomcad.sheet.views import Steps, Table, Text
+from geomcad.sheet.views import Steps, Table, Text, factor, num
 
-from .sheets_2013_6_kin import factor, kinematics_sheet, num, six_bar
+from .sheets_2013_6_kin import kinematics_sheet, six_bar
 from .spec_2013_6 import PARAMS, RESULTS, SEED_K_L
 
 if TYPE_CHECKING:
@@ -192,7 +192,7 @@ def _construction(v: Viewport, geo: Geometry, c: Construction) -> None:
         along={"m−": 1.0, "m+": 1.0, "r1": 0.8},
         box=extent(geo, c),
     )
-    _right_angle(v, B0, B1, Op)
+    v.right_angle(B0, B1, Op)
     v.dot(c["Γ"].c, "construction")
 
 
@@ -308,13 +308,6 @@ def _angle_with_leader(
     v.d.text(text, (cx - w / 2.0, cy + rise / 2.0), height)
 
 
-def _right_angle(v: Viewport, vertex: Vec, a: Vec, b: Vec, size_mm: float = 3.0) -> None:
-    """The right-angle mark at ``vertex`` between the directions to a and b."""
-    s = v.scale.model(size_mm)
-    ua, ub = (a - vertex).unit() * s, (b - vertex).unit() * s
-    v.polyline([vertex + ua, vertex + ua + ub, vertex + ub], "construction")
-
-
 def _mechanism(v: Viewport, geo: Geometry, c: Construction) -> None:
     O2, B, C, B0, B1, C0, C1 = (c[n] for n in ("O2", "B", "C", "B0", "B1", "C0", "C1"))
     ch = geo.chosen
@@ -418,7 +411,7 @@ def _panel(sol: Solution[Geometry], k: float) -> tuple[View | Node, ...]:
                 WORDS("yes" if s["crank_rocker"] else "no"),
             ]
         )
-    every = Table(rows, widths=(10.0, 48.0, 26.0, 26.0, 36.0), title=WORDS("all"))
+    every = Table(rows, fill=ORDER_W, title=WORDS("all"))
     order = Steps(sol.construction, ORDER_W, only=ORDER, words=WORDS)
     # the data and the results side by side, so that the order of construction has its room
     return Row(given, Column(results, note)), every, order

@@ -22,7 +22,7 @@ import numpy as np
 
 from geomcad.geom import Vec
 from geomcad.kinematics.plan import Plan
-from geomcad.sheet import Drawing, Scale, Sheet, TitleBlock, Viewport, fmt_number, start
+from geomcad.sheet import Drawing, Sheet, TitleBlock, Viewport, start
 from geomcad.sheet.compose import (
     GAP,
     Column,
@@ -43,11 +43,10 @@ from geomcad.sheet.lang import Words, current
 from geomcad.sheet.model import Polyline
 from geomcad.sheet.motion import Frames, turn
 from geomcad.sheet.plans import markup_of
-from geomcad.sheet.scale import ScaleStyle
 from geomcad.sheet.scheme import draw_scheme
 from geomcad.sheet.text import box as text_box
 from geomcad.sheet.text import parse
-from geomcad.sheet.views import PlanView, Steps, Table, Text
+from geomcad.sheet.views import PlanView, Steps, Table, Text, extent_of, num
 from geomcad.structure import Link, Mechanism, prismatic, revolute
 
 if TYPE_CHECKING:
@@ -86,16 +85,6 @@ GRAPH_HEAD = 4.0
 #: How far (m) the guide is drawn either side of the slider, as a share of l4.
 GUIDE_EXT = 0.3
 #: A vector shorter than this (mm) is drawn as its end point (it would be all arrowhead).
-
-
-def num(x: float, digits: int = 6) -> str:
-    """A number in the language being drawn."""
-    return fmt_number(x, current(), digits)
-
-
-def factor(k: Scale) -> str:
-    """A scale factor as the language being drawn writes it."""
-    return k.label(ScaleStyle(lang=current()))
 
 
 def mechanism(pts: Mapping[str, Vec], along: Vec) -> Mechanism:
@@ -153,10 +142,8 @@ class _Kin:
         # the mechanism's box: its joints, the crank's circle, the guide past C, with room for
         # the supports and labels
         ext = GUIDE_EXT * m.l4
-        xs = [q.x for q in pts] + [m.O1.x - m.l1, m.O1.x + m.l1, c["C"].x + ext]
-        ys = [q.y for q in pts] + [m.O1.y - m.l1, m.O1.y + m.l1]
-        pad = 0.04 * m.l3
-        box = (min(xs) - pad, min(ys) - pad, max(xs) + pad, max(ys) + pad)
+        round_crank = [m.O1 - Vec(m.l1, m.l1), m.O1 + Vec(m.l1, m.l1)]
+        box = extent_of([*pts, *round_crank, c["C"] + Vec(ext, 0.0)], 0.04 * m.l3)
         self.mech = Figure(box, lambda v: _mechanism(v, c, m, an), weight=2.0,
                            title=WORDS("title", phi=num(math.degrees(an.phi1), 4)))  # fmt: skip
         self.vplan = PlanView(

@@ -27,7 +27,7 @@ from typing import TYPE_CHECKING
 
 from geomcad.forces import ForcePolygon, FrictionCircle
 from geomcad.geom import Circle, Line, Vec, line_circle
-from geomcad.sheet import Sheet, TitleBlock, Viewport, fmt_number, start, symbols
+from geomcad.sheet import Sheet, TitleBlock, Viewport, fmt_number, start
 from geomcad.sheet import views as V
 from geomcad.sheet.compose import (
     Column,
@@ -43,6 +43,7 @@ from geomcad.sheet.compose import (
 from geomcad.sheet.lang import Words, current
 from geomcad.sheet.text import box as text_box
 from geomcad.sheet.text import parse
+from geomcad.sheet.views import num
 
 from .p2013_7 import Geometry
 from .spec_2013_7 import PARAMS, RESULTS
@@ -60,11 +61,6 @@ ARROW_MM = 14.0
 INSET_ARROW_MM = 8.0
 #: Room over an enlarged joint for its caption, as a share of the view's half-size.
 CAPTION_ROOM = 0.6
-
-
-def _n(x: float, digits: int = 4) -> str:
-    """A number in the language being drawn."""
-    return fmt_number(x, current(), digits=digits)
 
 
 def scales(sol: Solution[Geometry]) -> dict[str, float]:
@@ -85,10 +81,8 @@ def extent(geo: Geometry) -> tuple[float, float, float, float]:
     rb = ball_radius(geo.D.dist(geo.H))
     B, F, D, H = geo.B, geo.F, geo.D, geo.H
     pts = [B, F, H, run.Q, run.K, Vec(0.0, 0.0), Vec(0.0, B.y), D + Vec(rb, rb), D - Vec(rb, rb)]
-    xs = [q.x for q in pts]
-    ys = [q.y for q in pts]
-    pad = 0.08 * max(max(xs) - min(xs), max(ys) - min(ys))
-    return min(xs) - pad, min(ys) - pad, max(xs) + pad, max(ys) + pad
+    x0, y0, x1, y1 = V.extent_of(pts)
+    return V.extent_of(pts, 0.08 * max(x1 - x0, y1 - y0))
 
 
 def ball_radius(l_DH: float) -> float:
@@ -217,7 +211,7 @@ def _mechanism(v: Viewport, geo: Geometry) -> None:
     v.seg(Vec(0.0, 0.0), H, "link")
     v.seg(S, B, "link")
     # the sleeve slides on the shaft: a block without a joint circle (GOST 2.770)
-    symbols.block(v.sheet, v.p(S), v.paper_dir(Vec(0.0, 1.0)), with_joint=False)
+    v.slider(S, Vec(0.0, 1.0), with_joint=False)
     # arm 6 with the ball D, link 3
     v.seg(H, D, "link")
     v.seg(B, F, "link")
@@ -414,7 +408,7 @@ def _given(sol: Solution[Geometry]) -> View:
 
 def _compare(geo: Geometry) -> View:
     run, free = geo.run, geo.free
-    rows = [["", f"f = {_n(run.f)}", "f = 0"]]
+    rows = [["", f"f = {num(run.f)}", "f = 0"]]
     for label, a, b, unit in (
         ("R_{32}", run.R32, free.R32, _u("N")),
         ("P", run.P, free.P, _u("N")),
@@ -422,7 +416,7 @@ def _compare(geo: Geometry) -> View:
         ("F_i", run.F_i, free.F_i, _u("N")),
         ("ω", run.omega, free.omega, _u("rad_s")),
     ):
-        rows.append([label, _with_unit(_n(a), unit), _with_unit(_n(b), unit)])
+        rows.append([label, _with_unit(num(a), unit), _with_unit(num(b), unit)])
     return V.Table(rows, title=WORDS("compare"))
 
 

@@ -18,12 +18,12 @@ import math
 from typing import TYPE_CHECKING
 
 from geomcad.geom import Vec
-from geomcad.sheet import Sheet, TitleBlock, fmt_number, start
+from geomcad.sheet import Sheet, TitleBlock, start
 from geomcad.sheet.compose import Column, Field, Figure, Layout, Row, arrange, compose
 from geomcad.sheet.graph import Graph, nice_step
 from geomcad.sheet.lang import Words, current
 from geomcad.sheet.model import CircleItem, Polyline
-from geomcad.sheet.views import AxisSpec, Curve, Diagram, Steps, Table, Text
+from geomcad.sheet.views import AxisSpec, Curve, Diagram, Steps, Table, Text, num
 
 from .p2013_8 import Data
 from .spec_2013_8 import PARAMS, RESULTS
@@ -50,10 +50,6 @@ HEADING_W = 170.0
 KN = 1000.0
 
 
-def f(x: float, digits: int = 4) -> str:
-    return fmt_number(x, current(), digits)
-
-
 class _Sheet:
     """The sheet's views and their arrangement (one tree for the sheet and the scales hook)."""
 
@@ -63,7 +59,7 @@ class _Sheet:
         self.balance = _energy_balance(data)
         # one sentence (the cycle and the motor's return of E), then its formula on a line
         keys = ("balance_1", "balance_2", "balance_3")
-        w = [WORDS(k, T=f(data.cycle), N=f(data.N)) for k in keys]
+        w = [WORDS(k, T=num(data.cycle), N=num(data.N)) for k in keys]
         note = Text(paragraphs=[f"{w[0]} {w[1]}", w[2]], width=NOTE_W)
         given, results, solution = _panel(sol)
         # the press's scheme is not to scale: it takes whatever enlargement its place allows
@@ -107,10 +103,10 @@ def _load_diagram(data: Data) -> Diagram:
         g.hatch(list(data.s), ks)
         g.curve(list(data.s), ks, "result")
         # the peak and the plate's thickness named inside the field, clear of the tick values
-        _note(g, 0.0, f_max, f"F_{{max}} = {f(f_max)} {WORDS('kN')}", (8.0, 1.2))
+        _note(g, 0.0, f_max, f"F_{{max}} = {num(f_max)} {WORDS('kN')}", (8.0, 1.2))
         g.point(h, 0.0, "s = h", prefer=(0.0, -1.0))
         mid = g.p(h / 2.0, f_max / 2.0)
-        g.d.text(f"E = F_{{max}}·h/2 = {f(data.E)} {WORDS('J')}", (mid[0] + 4.0, mid[1] - 3.0),
+        g.d.text(f"E = F_{{max}}·h/2 = {num(data.E)} {WORDS('J')}", (mid[0] + 4.0, mid[1] - 3.0),
                  3.5)  # fmt: skip
         g.d.text(WORDS("area"), (mid[0] + 8.0, mid[1] + 2.5), 2.5)
 
@@ -145,7 +141,7 @@ def _energy_balance(data: Data) -> Diagram:
         # the motor's work over a cycle is the rise of ΔT (an ordinate, in J), not an area
         g.curve(ts, dts, "result")
         g.curve([0.0, 2.1 * T], [E, E], "centre")
-        g.span_y(2.1 * T, 0.0, E, f"E = {f(E)} {WORDS('J')}")
+        g.span_y(2.1 * T, 0.0, E, f"E = {num(E)} {WORDS('J')}")
         # the speeds named at the top and the foot of the drop, inside the field, as
         # "ω = ω_max", so that they cannot be read as tick values
         g.point(T, E, "ω = ω_{max}", prefer=(1.0, -1.0), height=3.5)

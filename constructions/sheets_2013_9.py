@@ -42,8 +42,9 @@ from geomcad.sheet.lang import Words, current
 from geomcad.sheet.loads import damper, ground, moment, spring
 from geomcad.sheet.scale import fmt_column, nice_factor
 from geomcad.sheet.text import wrap
+from geomcad.sheet.views import num
 
-from .dyn_common import Where, draw_loads, f, facing, load, moment_of, short_note, small
+from .dyn_common import Where, draw_loads, facing, load, moment_of, short_note, small
 from .p2013_9 import ROD, Data
 from .spec_2013_9 import PARAMS, RESULTS
 
@@ -145,15 +146,17 @@ def _main_views(
     ]
     state = WORDS(
         "state",
-        phi=f(math.degrees(data.phi)),
-        dphi=f(data.dphi),
-        ddphi=f(data.ddphi),
-        t=f(float(sol.params["t"])),
-        k_F=f(k_F),
+        phi=num(math.degrees(data.phi)),
+        dphi=num(data.dphi),
+        ddphi=num(data.ddphi),
+        t=num(float(sol.params["t"])),
+        k_F=num(k_F),
     )
     notes = V.Text(
         lines=[
-            *wrap(WORDS("rod_motion", x=f(data.x), xd=f(data.xd), xdd=f(data.xdd)), 200.0, 3.0),
+            *wrap(
+                WORDS("rod_motion", x=num(data.x), xd=num(data.xd), xdd=num(data.xdd)), 200.0, 3.0
+            ),
             *wrap(WORDS("forces_at_mu", note=short_note(k_F)), 200.0, 3.0),
         ],
         width=200.0,
@@ -335,7 +338,7 @@ def _given(sol: Solution[Data], title: str = "given") -> View:
     """The given data as a table, under the words ``title``."""
     head = [WORDS("param"), "M(t) = M_0 + M_1·sin Ωt"]
     return V.Table.of_specs(PARAMS, sol.params, style="equation", pairs=2, head=head,
-                            widths=(73.0, 73.0), title=WORDS(title))  # fmt: skip
+                            fill=PANEL_W, title=WORDS(title))  # fmt: skip
 
 
 def _paragraphs(head: str, items: list[str], dash: bool = True) -> View:
@@ -373,7 +376,7 @@ def _panel_main(sol: Solution[Data], data: Data) -> Node:
     }  # fmt: skip
     results = V.Table.of_specs(
         [by[n] for n in order], values, labels=labels, style="value", pairs=2,
-        widths=(29.0, 44.0, 29.0, 44.0), title=WORDS("results_state"),
+        fill=PANEL_W, title=WORDS("results_state"),
     )  # fmt: skip
     eq = _paragraphs(WORDS("eq_head"), [WORDS(k) for k in ("eq_1", "eq_2", "eq_3", "eq_4")],
                      dash=False)  # fmt: skip
@@ -413,7 +416,7 @@ def _motion(sol: Solution[Data]) -> Sheet:
             for tt, val in zip(times, state[i], strict=True):
                 if val > 0.0:  # ordinates on the t axis's upper side, clear of its values
                     g.curve([tt, tt], [0.0, val], "construction")
-            g.point(T, vals[-1], f"{sym}(T) = {f(vals[-1])}", prefer=(1.0, -1.0))
+            g.point(T, vals[-1], f"{sym}(T) = {num(vals[-1])}", prefer=(1.0, -1.0))
 
         diagrams.append(
             V.Diagram(
@@ -433,7 +436,7 @@ def _motion(sol: Solution[Data]) -> Sheet:
             WORDS("int_1"),
             WORDS("int_2"),
             WORDS("int_rk") if tr.method == "DOP853" else WORDS("int_lsoda"),
-            WORDS("int_3", phi=f(res["phi_T"]), omega=f(res["omega_T"]), T=f(T)),
+            WORDS("int_3", phi=num(res["phi_T"]), omega=num(res["omega_T"]), T=num(T)),
         ],
     )
     phis, omegas = state

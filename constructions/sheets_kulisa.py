@@ -46,8 +46,9 @@ from geomcad.sheet.motion import Frames, turn
 from geomcad.sheet.placer import centre_line
 from geomcad.sheet.scale import fmt_column, nice_factor
 from geomcad.sheet.text import wrap
+from geomcad.sheet.views import factor, num
 
-from .dyn_common import Where, draw_loads, f, facing, load, moment_of, mu, short_note, small
+from .dyn_common import Where, draw_loads, facing, load, moment_of, short_note, small
 from .p_kulisa import Data, mechanism, sweep, turns
 from .spec_kulisa import PARAMS, PROBLEM, RESULTS
 
@@ -264,8 +265,8 @@ def _scheme(v: Viewport, sol: Solution[Data], data: Data) -> None:
 def _main_layout(sol: Solution[Data], data: Data, scheme: View, short: bool) -> tuple[Node, View]:
     p = _p(sol)
     kv = Scale(sol.scales["v"], "v")
-    state = V.Text(lines=[WORDS("state", phi=f(p["phi_deg"]), omega=f(data.omega), mu_v=mu(kv))],
-                   height=3.5)  # fmt: skip
+    state_line = WORDS("state", phi=num(p["phi_deg"]), omega=num(data.omega), mu_v=factor(kv))
+    state = V.Text(lines=[state_line], height=3.5)
     plan, order = _plan(sol, data)
     tables, notes = _panel_main(sol, data, short)
     # the title block's box at the bottom right (with its margin): the notes go above it
@@ -378,7 +379,7 @@ def _results(sol: Solution[Data], names: tuple[str, ...], **kw: Any) -> V.Table:
 def _given(sol: Solution[Data]) -> View:
     par = WORDS("param")
     return V.Table.of_specs(PARAMS, sol.params, style="equation", pairs=2, head=[par, par],
-                            widths=(59.0, 59.0), title=WORDS("given"))  # fmt: skip
+                            fill=PANEL_W, title=WORDS("given"))  # fmt: skip
 
 
 def _panel_main(sol: Solution[Data], data: Data, short: bool) -> tuple[Node, View]:
@@ -389,17 +390,17 @@ def _panel_main(sol: Solution[Data], data: Data, short: bool) -> tuple[Node, Vie
     ms = _u("m_s")
     rows = [
         [qty, val, qty, val],
-        ["V_A", f"{f(va.norm, 4)} {ms}", "V_2 = V_D", f"{f(v2.norm, 4)} {ms}"],
-        ["V_{C3}", f"{f(vc.norm, 4)} {ms}", "ω_3", f"{f(abs(w3), 4)} {_u('rad_s')}"],
+        ["V_A", f"{num(va.norm, 4)} {ms}", "V_2 = V_D", f"{num(v2.norm, 4)} {ms}"],
+        ["V_{C3}", f"{num(vc.norm, 4)} {ms}", "ω_3", f"{num(abs(w3), 4)} {_u('rad_s')}"],
     ]
-    vel = V.Table(rows, widths=(20.0, 39.0, 20.0, 39.0), title=WORDS("velocities_head"))
+    vel = V.Table(rows, fill=PANEL_W, title=WORDS("velocities_head"))
     res = _results(
         sol, ("I_pr_A", "I_pr_B", "I_pr", "dI_pr", "omega1", "eps1", "t_reach", "omega_ode"),
-        widths=(40.0, 78.0), title=WORDS("results_head"),
+        fill=PANEL_W, title=WORDS("results_head"),
     )  # fmt: skip
     notes = [WORDS("note_1"), WORDS("note_2")]
     if short:
-        notes.append(WORDS("short_plan", mm=f(SHORT_MM)))
+        notes.append(WORDS("short_plan", mm=num(SHORT_MM)))
     return Column(_given(sol), vel, res), _notes(notes, NOTES_MAIN_W)
 
 
@@ -429,14 +430,14 @@ def _graphs(sol: Solution[Data]) -> Sheet:
     def extra_i(g: Graph) -> None:
         _ordinates(g, ode[0], data.model.J_pr(np.asarray(ode[0])))
         g.curve([phi_deg, phi_deg], [0.0, i_pr], "centre")
-        g.point(phi_deg, i_pr, f"{WORDS('I_pr')} = {f(i_pr)}", prefer=(1.0, -1.0))
+        g.point(phi_deg, i_pr, f"{WORDS('I_pr')} = {num(i_pr)}", prefer=(1.0, -1.0))
 
     def extra_w(g: Graph) -> None:
         _ordinates(g, ode[0], ode[1])
         for a, wv in zip(ode[0], ode[1], strict=True):
             g.point(float(np.degrees(a)), float(wv))
         g.curve([phi_deg, phi_deg], [0.0, w1], "centre")
-        g.point(phi_deg, w1, f"ω_1 = {f(w1)}", prefer=(1.0, -1.0))
+        g.point(phi_deg, w1, f"ω_1 = {num(w1)}", prefer=(1.0, -1.0))
 
     d1 = V.Diagram(
         V.AxisSpec("φ", "°", tick=tick),
@@ -493,7 +494,7 @@ def _panel_graphs(sol: Solution[Data], data: Data, ode: tuple[list[float], list[
     eq = _notes(
         [
             WORDS("eq_1"),
-            WORDS("eq_2", a=f(a_, 4), b=f(b_, 4), half=f(b_ / 2.0, 4), M=f(p["M"], 4)),
+            WORDS("eq_2", a=num(a_, 4), b=num(b_, 4), half=num(b_ / 2.0, 4), M=num(p["M"], 4)),
             *_step_lines(sol, "ω1", "ε1"),
             WORDS("graph_2_note"),
         ],
@@ -629,10 +630,10 @@ def _fbd_draw(sol: Solution[Data], data: Data) -> dict[str, Callable[[Viewport],
         _numbers(v4, sol, data)
         v4.label((0.0, 0.0), "O", 3.5, prefer=(-1.0, -1.0))
         v4.label(c3, "C_3", 3.5, prefer=(0.0, -1.0))
-        moment(v4, (0.0, 0.0), p["M"], 6.0, f"M = {f(abs(p['M']))} {_u('Nm')}", role="result",
+        moment(v4, (0.0, 0.0), p["M"], 6.0, f"M = {num(abs(p['M']))} {_u('Nm')}", role="result",
                start=math.radians(160.0), height=2.5)  # fmt: skip
         fx = data.static.force("F_x")
-        force(v4, c3, fx, k_F, f"F_x = {f(fx.norm)} {_u('N')}", role="result", height=2.5)
+        force(v4, c3, fx, k_F, f"F_x = {num(fx.norm)} {_u('N')}", role="result", height=2.5)
 
     return {"1": flywheel, "2": yoke, "3": roller, "all": balanced}
 
@@ -653,7 +654,7 @@ def _fbd_tree(sol: Solution[Data], k: Scale, k3: Scale) -> tuple[Node, dict[str,
                         title=WORDS("view_3", ratio=k3.ratio_text()), show_scale=False)  # fmt: skip
     head = V.Text(lines=[WORDS("head_fbd")], height=5.0)
     state = Column(
-        V.Text(lines=[WORDS("state_fbd", mu_l=mu(k), ratio=k.ratio_text(), eps=f(data.eps))],
+        V.Text(lines=[WORDS("state_fbd", mu_l=factor(k), ratio=k.ratio_text(), eps=num(data.eps))],
                height=3.5),
         V.Text(paragraph=f"{short_note(sol.scales['F'])}.", width=NOTES_W),
     )  # fmt: skip
@@ -725,10 +726,10 @@ def _panel_fbd(sol: Solution[Data], data: Data, width: float = 140.0) -> tuple[N
             if ld.kind == "inertia":
                 val = ld.force.norm if ld.force is not None else abs(ld.moment)
                 label = WORDS(_INERTIA[ld.name]) if ld.name in _INERTIA else ld.name
-                vals.append((label, f"{f(val, 4)} {n if ld.force is not None else nm}"))
-    vals.append(("R_{32} = R_{23}", f"{f(abs(R.magnitudes['R_{32}']), 4)} {n}"))
-    vals.append(("R_{03}", f"{f(abs(R.magnitudes['R_{03}']), 4)} {n}"))
-    vals.append(("M_{02}", f"{f(abs(R.moment('M_{02}')), 4)} {nm}"))
+                vals.append((label, f"{num(val, 4)} {n if ld.force is not None else nm}"))
+    vals.append(("R_{32} = R_{23}", f"{num(abs(R.magnitudes['R_{32}']), 4)} {n}"))
+    vals.append(("R_{03}", f"{num(abs(R.magnitudes['R_{03}']), 4)} {n}"))
+    vals.append(("M_{02}", f"{num(abs(R.moment('M_{02}')), 4)} {nm}"))
     if len(vals) % 2:
         vals.append(("", ""))
     load_, value = WORDS("load"), WORDS("value")

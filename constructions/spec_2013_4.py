@@ -90,12 +90,28 @@ SEED = {
     "x": rounded(0.43, 2, "x = 0,43"),
 }
 
+#: What the seed should have written for the half angular thickness (its formula is garbled).
+CORRECT_PSI_FORMULA = "tg ψ_y = (s̄_y/2)/(d_a/2 − h̄_ay) = s̄_y/(d_a − 2h̄_ay) = 18,1/401,8 = 0,04505"
+#: The seed's text as printed (LaTeX): tan φ_y/2 over (d_a − 2h̄) = 18,1/(420 − 2·9,1).
+SEED_PSI_FORMULA = r"\frac{\tan \phi_y / 2}{d_a - 2\bar{h}_{ay}} = \frac{18,1}{420 - 2 \cdot 9,1}"
+
+
+#: The seed's misprinted formula: a note with every solve of the seed's data.
+SEED_NOTES = (
+    "seed formula garbled: for the half angular thickness it prints "
+    "«tan φ_y/2 / (d_a − 2h̄_ay) = 18,1/(420 − 2·9,1)»; the geometry (the chord's ends lie "
+    "s̄/2 either side of the tooth's axis, r_a − h̄ from the centre) gives "
+    f"«{CORRECT_PSI_FORMULA}», which is the number the seed then uses",
+)
+
+
 PROBLEM: Problem[Geometry] = Problem(
     id=ID,
     title="Profile shift from a gear-tooth caliper measurement",
     params=PARAMS,
     results=RESULTS,
     seed=SEED,
+    seed_notes=SEED_NOTES,
     build=lazy(".p2013_4:build", __package__),
     draw=lazy(".sheets_2013_4:sheets", __package__),
     scales=lazy(".sheets_2013_4:scales", __package__),

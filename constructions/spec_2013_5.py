@@ -80,12 +80,26 @@ SEED = {
     ),
 }
 
+#: The seed's coaxiality condition as printed, and as the geometry has it.
+SEED_Z4_FORMULA = "z1 − z2 = z4 + z3"
+CORRECT_Z4_FORMULA = "z2 − z1 = z3 + z4"
+
+#: The seed's misprinted condition: a note with every solve of the seed's data.
+SEED_NOTES = (
+    "seed misprint in the coaxiality condition for z4: it prints «z1 − z2 = z4 + z3; "
+    "100 − 20 = z4 + 60»; the centre distance of the internal pair 1–2 is m(z2 − z1)/2 and of "
+    "the external pair 4–3 m(z3 + z4)/2, so the condition is «z2 − z1 = z3 + z4» (its numbers "
+    "already use it, so z4 = 20 is right)",
+)
+
+
 PROBLEM: Problem[Geometry] = Problem(
     id=ID,
     title="Planetary gear ratio u_1H2 (Willis; plan of linear velocities)",
     params=PARAMS,
     results=RESULTS,
     seed=SEED,
+    seed_notes=SEED_NOTES,
     build=lazy(".p2013_5:build", __package__),
     draw=lazy(".sheets_2013_5:sheets", __package__),
     scales=lazy(".sheets_2013_5:scales", __package__),

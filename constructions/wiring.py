@@ -19,9 +19,6 @@ from typing import TYPE_CHECKING, Any
 if TYPE_CHECKING:
     from geomcad.problem import Problem
 
-    from .file_cam import CamDesign
-    from .file_gears import GearsDesign
-
 
 def wired() -> list[Problem[Any]]:
     """Each registered problem with its lazy references replaced by the functions they name."""
@@ -123,17 +120,3 @@ def wired() -> list[Problem[Any]]:
             scales=sheets_kulisa.scales,
         ),
     ]
-
-
-def cam(problem: Problem[CamDesign]) -> Problem[CamDesign]:
-    """A cam file's problem (``file_cam.make_problem``) with its sheet functions themselves."""
-    from . import sheets_cam
-
-    return replace(problem, draw=sheets_cam.sheets, scales=sheets_cam.scales)
-
-
-def gears(problem: Problem[GearsDesign]) -> Problem[GearsDesign]:
-    """A gear file's problem (``file_gears.make_problem``) with its sheet functions themselves."""
-    from . import sheets_gears
-
-    return replace(problem, draw=sheets_gears.sheets, scales=sheets_gears.scales)

@@ -24,66 +24,30 @@ from __future__ import annotations
 
 import math
 import tomllib
-from collections.abc import Callable, Mapping, Sequence
+from collections.abc import Callable, Sequence
 from functools import cache
 from importlib.metadata import entry_points
 from pathlib import Path
-from typing import TYPE_CHECKING, Any, TypeVar
+from typing import TYPE_CHECKING, Any
 
 from geomcad.errors import FileKeyError, ParameterError
 
+# a file kind's problem and its sheets' name live with the kinds; kept here for the callers
+from geomcad.files import file_problem as file_problem
+from geomcad.files import stem as stem
+
 if TYPE_CHECKING:
-    from geomcad.problem import Build, Problem, ResultSpec, Solution
-    from geomcad.sheet import Sheet
-    from geomcad.sheet.motion import Frames
+    from geomcad.problem import Problem, Solution
 
 GROUP = "geomcad.files"
 SUFFIX = ".toml"
 
 Maker = Callable[[str, dict[str, Any]], "Problem[Any]"]
 
-#: The type of a file kind's model (``Build.data``), as :data:`geomcad.problem.D`.
-D = TypeVar("D")
-
-
-def file_problem(
-    file_id: str,
-    data: dict[str, Any],
-    title: str,
-    results: tuple[ResultSpec, ...],
-    build: Callable[[Mapping[str, Any]], Build[D]],
-    draw: Callable[[Solution[D]], Sequence[tuple[str, Sheet]]],
-    motion: Callable[[Solution[D], int], Frames] | None = None,
-    cls: type[Problem[D]] | None = None,
-    scales: Callable[[Solution[D]], Mapping[str, float]] | None = None,
-) -> Problem[D]:
-    """The problem of a file kind, as this module's docstring says it is: no parameters (the
-    file is the data), no seed, the file's data as its ``inputs``; ``cls`` a subclass of
-    :class:`~geomcad.problem.Problem` where the kind needs one."""
-    from geomcad.problem import Problem
-
-    return (cls or Problem)(
-        id=file_id,
-        title=title,
-        params=(),
-        results=results,
-        seed={},
-        build=build,
-        draw=draw,
-        inputs=data,
-        motion=motion,
-        scales=scales,
-    )
-
 
 def is_file_id(pid: str) -> bool:
     """True when ``pid`` names a file (a path ending in ``.toml``) rather than a problem id."""
     return pid.lower().endswith(SUFFIX)
-
-
-def stem(pid: str) -> str:
-    """The name a file's sheets are written under: its stem (``mech.toml`` → ``mech``)."""
-    return Path(pid).stem
 
 
 def read(pid: str) -> dict[str, Any]:

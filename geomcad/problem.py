@@ -372,6 +372,10 @@ class Problem(Generic[D]):
     #: layer from the solved model, for ``verify`` to turn a student's millimetres into values;
     #: ``None`` when the build itself states them (``Build.scales``) or the sheet has none.
     scales: Callable[[Solution[D]], Mapping[str, float]] | None = None
+    #: Notes on the seed's own statement (a misprinted formula), given before the construction's
+    #: notes by every solve with the seed's data; the problem's spec states them, so the
+    #: construction takes values and never asks whether they are the seed's.
+    seed_notes: tuple[str, ...] = ()
 
     def param(self, name: str, value: object = "?") -> Param:
         """The declared parameter ``name``; an unknown name is a :class:`ParameterError` that
@@ -486,9 +490,11 @@ class Solution(Generic[D]):
 
     @property
     def notes(self) -> list[str]:
-        """The construction's notes, plus every seed erratum when the seed's data are used."""
-        notes = list(self._notes)
-        if self.is_seed:
+        """The construction's notes, plus the notes on the seed's statement and every seed
+        erratum when the seed's data are used."""
+        seed = self.is_seed
+        notes = [*self.problem.seed_notes, *self._notes] if seed else list(self._notes)
+        if seed:
             for k, entry in self.problem.seed.items():
                 for name, _, v in _seed_items(k, entry):
                     if v.kind == "erratum":

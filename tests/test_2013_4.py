@@ -6,7 +6,7 @@ from __future__ import annotations
 import math
 
 import pytest
-from geomcad_constructions import p2013_4
+from geomcad_constructions import spec_2013_4
 
 import geomcad
 from geomcad.cli import main
@@ -74,8 +74,8 @@ def test_seed_erratum_the_half_angular_thickness_formula_is_garbled() -> None:
     sol = geomcad.solve("2013-4")
     assert sol.construction.step("ψ_y").op == "∠TOK: tan ψ_y = s̄/(d_a − 2h̄)"
     note = next(n for n in sol.notes if "garbled" in n)
-    assert p2013_4.CORRECT_PSI_FORMULA in note
-    assert "s̄_y/(d_a − 2h̄_ay)" in p2013_4.CORRECT_PSI_FORMULA
+    assert spec_2013_4.CORRECT_PSI_FORMULA in note
+    assert "s̄_y/(d_a − 2h̄_ay)" in spec_2013_4.CORRECT_PSI_FORMULA
 
 
 def test_seed_erratum_d_y_and_alpha_y_carry_the_rounded_psi() -> None:
@@ -288,3 +288,12 @@ def test_bars_belong_to_their_labels() -> None:
     mid = ((x0 + x1) / 2.0, (y0 + y1) / 2.0)
     for pts in (((x0 - 3.0, mid[1]), (x1 + 3.0, mid[1])), ((mid[0], y0 - 3.0), (mid[0], y1 + 3.0))):
         assert not is_bar_of(Polyline(pts, "thin"), t)
+
+
+def test_the_seed_notes_come_with_the_seed_data_only() -> None:
+    """The note on the seed's garbled formula is the spec's (``seed_notes``): first among the
+    notes of the seed's solve, absent from a variant's (its numbers are not the seed's)."""
+    seed = geomcad.solve("2013-4")
+    assert seed.notes[: len(spec_2013_4.SEED_NOTES)] == list(spec_2013_4.SEED_NOTES)
+    variant = geomcad.solve("2013-4", s_chord=0.0182)
+    assert not any("garbled" in n for n in variant.notes)

@@ -7,7 +7,7 @@ import json
 from fractions import Fraction
 
 import pytest
-from geomcad_constructions import p2013_5
+from geomcad_constructions import p2013_5, spec_2013_5
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -62,8 +62,8 @@ def test_seed_erratum_the_coaxiality_condition_for_z4_is_misprinted() -> None:
     must agree: z2 − z1 = z3 + z4, which gives the seed's own z4 = 20."""
     assert 20 - 100 - 60 == -140
     assert 100 - 20 - 60 == 20
-    assert p2013_5.SEED_Z4_FORMULA == "z1 − z2 = z4 + z3"
-    assert p2013_5.CORRECT_Z4_FORMULA == "z2 − z1 = z3 + z4"
+    assert spec_2013_5.SEED_Z4_FORMULA == "z1 − z2 = z4 + z3"
+    assert spec_2013_5.CORRECT_Z4_FORMULA == "z2 − z1 = z3 + z4"
     sol = geomcad.solve("2013-5")
     assert any("misprint" in n and "z2 − z1 = z3 + z4" in n for n in sol.notes)
     assert sol.construction.step("a_12").result == 40.0
@@ -214,7 +214,7 @@ def test_optional_parameters_of_the_problem_machinery() -> None:
     build() receives unless given; None through the API means "not given"."""
     from geomcad.problem import Param
 
-    problem = p2013_5.PROBLEM
+    problem = spec_2013_5.PROBLEM
     assert "z4" not in problem.defaults and "z7" not in problem.defaults
     assert problem.param("z4").optional and problem.param("z4").default is None
     with pytest.raises(ValueError, match="optional parameter has the default None"):

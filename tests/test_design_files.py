@@ -318,8 +318,8 @@ def test_the_format_is_the_smallest_that_reaches_the_subjects_scale() -> None:
     """A cam sheet on the smallest format where its profile and diagram reach 1:1: every
     smaller candidate fails (a view under 1:1 or something overflowing), and the views grow on
     the format taken; a format the file asks for is the only one tried."""
-    from geomcad_constructions import file_common, sheets_cam
-
+    from geomcad.files import cam_sheets as sheets_cam
+    from geomcad.files import common as file_common
     from geomcad.sheet import formats
     from geomcad.sheet.compose import Field, arrange
 
@@ -384,8 +384,7 @@ def test_meshed_teeth_touch_on_the_line_of_action_and_never_overlap() -> None:
 def test_gear_circles_are_thin_and_alpha_w_is_an_angle_dimension() -> None:
     """No thick tip arc across a space (it would read as the other wheel's outline crossing
     the teeth); α_w dimensioned at P; both wheels numbered with their ω."""
-    from geomcad_constructions.sheets_gears import _mesh
-
+    from geomcad.files.gears_sheets import _mesh
     from geomcad.geom import Arc
 
     class Recorder:
@@ -436,8 +435,7 @@ def test_library_solve_takes_a_file_and_its_sheet_scales_come_from_the_sheet() -
 def test_cam_order_of_construction_is_the_recorded_steps(name: str) -> None:
     """The cam sheet's order of construction: one numbered item per recorded design step (by
     its kind's template), with the recorded values in the language drawn."""
-    from geomcad_constructions import sheets_cam
-
+    from geomcad.files import cam_sheets as sheets_cam
     from geomcad.sheet.lang import language
 
     sol = solution(name)
@@ -455,8 +453,8 @@ def test_cam_order_of_construction_is_the_recorded_steps(name: str) -> None:
 
 def test_every_design_file_is_its_own_document() -> None:
     """The designation (графа 2) from the file's name, one per file, in either language."""
-    from geomcad_constructions import sheets_cam, sheets_gears
-
+    from geomcad.files import cam_sheets as sheets_cam
+    from geomcad.files import gears_sheets as sheets_gears
     from geomcad.sheet.lang import language
 
     for lang in ("ru", "en"):
@@ -474,7 +472,7 @@ def test_every_design_file_is_its_own_document() -> None:
 def test_planetary_plan_is_projected_from_the_scheme() -> None:
     """Smirnov's plan in the scheme's viewport: o, a, b, c at the heights of O, A, B, C, each
     link's velocity line named, the ray diagram's H and μ_ω written."""
-    from geomcad_constructions import sheets_gears as sg
+    from geomcad.files import gears_sheets as sg
 
     sol = solution("planetary")
     des = sol.data
@@ -513,7 +511,7 @@ def test_planetary_plan_is_projected_from_the_scheme() -> None:
 @pytest.mark.parametrize("name", ["cam-rocking-roller", "cam-translating-roller"])
 def test_cam_profile_shows_omega_and_the_inversion_and_names_the_pivots(name: str) -> None:
     """ω in the cam's sense (the data table's), −ω against it; a rocker's turned pivots A_i."""
-    from geomcad_constructions import sheets_cam
+    from geomcad.files import cam_sheets as sheets_cam
 
     class Recorder:
         def __init__(self) -> None:

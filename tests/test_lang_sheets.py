@@ -61,9 +61,8 @@ PROBLEM_MODULES = {
 }
 #: The modules that draw each kind of example file (by its marking table; none: a linkage file).
 FILE_MODULES = {
-    "cam": ["constructions/sheets_cam.py"],
-    # the planetary scheme borrows 2013-5's gear symbols, which draw no words
-    "gears": ["constructions/sheets_gears.py"],
+    "cam": ["geomcad/files/cam_sheets.py"],
+    "gears": ["geomcad/files/gears_sheets.py"],
     "": ["geomcad/sheet/linkage.py", "geomcad/sheet/linkage_forces.py"],
 }
 #: Drawing code every sheet goes through (its frame, scales, graphs, plans, text).

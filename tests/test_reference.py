@@ -134,9 +134,9 @@ def test_the_registry_still_gives_a_full_problem() -> None:
     sol = problem.solve(K=1.4)
     assert sol.results["theta_deg"] == pytest.approx(30.0)
     assert sol.sheets()[0][0] == ""
-    from geomcad_constructions import p2013_6
+    from geomcad_constructions import spec_2013_6
 
-    assert p2013_6.PROBLEM is problem
+    assert spec_2013_6.PROBLEM is problem
 
 
 def test_the_light_spec_and_the_library_agree_on_the_cam_laws() -> None:

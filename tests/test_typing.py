@@ -19,6 +19,7 @@ import pytest
 from geomcad_constructions import wiring
 
 from geomcad import documents, registry
+from geomcad.files import wiring as file_wiring
 from geomcad.problem import Problem, _Lazy
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -117,4 +118,4 @@ def test_the_wiring_is_the_registered_problems() -> None:
 def test_the_wiring_of_the_file_kinds(kind: str, example: str) -> None:
     assert {ep.name for ep in entry_points(group=documents.GROUP)} == {"cam", "gears"}
     problem = documents.load(str(ROOT / "examples" / example))
-    _wiring_of(problem, getattr(wiring, kind)(problem))
+    _wiring_of(problem, getattr(file_wiring, kind)(problem))

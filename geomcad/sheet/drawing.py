@@ -237,6 +237,24 @@ class Viewport:
         )
         self.sheet.add(Polyline(sp, role, closed=closed, dash=dash))
 
+    def right_angle(
+        self,
+        vertex: PointLike,
+        a: PointLike,
+        b: PointLike,
+        size_mm: float = 3.0,
+        role: str = "construction",
+    ) -> None:
+        """The right-angle mark at ``vertex`` between the directions to ``a`` and ``b``: the
+        square's two far sides, ``size_mm`` long on the paper; nothing where a direction is
+        undefined (``a`` or ``b`` at the vertex)."""
+        o, pa, pb = vec(vertex), vec(a), vec(b)
+        if (pa - o).norm == 0.0 or (pb - o).norm == 0.0:
+            return
+        s = self.scale.model(size_mm)
+        ua, ub = (pa - o).unit() * s, (pb - o).unit() * s
+        self.polyline([o + ua, o + ua + ub, o + ub], role)
+
     def line_over(
         self,
         line: Line,
@@ -301,10 +319,19 @@ class Viewport:
         clear of the slider block."""
         symbols.guide(self.sheet, self.p(a), self.p(b), self.paper_dir(side))
 
-    def slider(self, q: PointLike, along: PointLike = (1.0, 0.0), role: str = "link") -> None:
-        """A slider block on its guide, with the joint of the link that drives it; ``role``
-        "extreme" draws an extreme position in thin two-dot lines."""
-        symbols.block(self.sheet, self.p(q), self.paper_dir(vec(along).unit()), role)
+    def slider(
+        self,
+        q: PointLike,
+        along: PointLike = (1.0, 0.0),
+        role: str = "link",
+        with_joint: bool = True,
+    ) -> None:
+        """A slider block on its guide, with the joint of the link that drives it (none
+        ``with_joint=False``: a block rigid with its link, a cross's slide); ``role`` "extreme"
+        draws an extreme position in thin two-dot lines."""
+        symbols.block(
+            self.sheet, self.p(q), self.paper_dir(vec(along).unit()), role, with_joint=with_joint
+        )
 
     def turn(
         self,

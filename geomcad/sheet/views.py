@@ -42,7 +42,7 @@ from geomcad.sheet.drawing import LINE_SPACING, SHORT_MM, Drawing, Viewport
 from geomcad.sheet.graph import Axis, Graph, nice_step
 from geomcad.sheet.lang import Words, current
 from geomcad.sheet.plans import LINE_OVER_MM, markup_of, plan_lines
-from geomcad.sheet.scale import fmt_number
+from geomcad.sheet.scale import Scale, ScaleStyle, fmt_number
 from geomcad.sheet.scheme import Body, draw_scheme
 from geomcad.sheet.text import metrics, wrap
 from geomcad.structure import Mechanism
@@ -56,11 +56,23 @@ def num(x: float, digits: int = 4) -> str:
     return fmt_number(x, current(), digits)
 
 
+def factor(k: Scale) -> str:
+    """A scale factor as the language being drawn writes it (``μ_l = 0,005 м/мм``)."""
+    return k.label(ScaleStyle(lang=current()))
+
+
 def _bbox(pts: Iterable[Vec]) -> Extent:
     ps = list(pts)
     xs = [q.x for q in ps]
     ys = [q.y for q in ps]
     return (min(xs), min(ys), max(xs), max(ys))
+
+
+def extent_of(pts: Iterable[Vec], pad: float = 0.0) -> Extent:
+    """A figure's extent: the model box of ``pts`` grown by ``pad`` (model units) on every side
+    (room for the supports, arrows and labels drawn round the points)."""
+    x0, y0, x1, y1 = _bbox(pts)
+    return (x0 - pad, y0 - pad, x1 + pad, y1 + pad)
 
 
 # --- the scheme -----------------------------------------------------------------------------------

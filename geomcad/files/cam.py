@@ -26,8 +26,8 @@ import numpy as np
 
 from geomcad import tol
 from geomcad.construction import Construction
-from geomcad.documents import file_problem
 from geomcad.errors import ConstructionError, ParameterError
+from geomcad.files import file_problem
 from geomcad.kinematics import cam_design as cd
 from geomcad.kinematics.cams import (
     CamProfile,
@@ -42,7 +42,7 @@ from geomcad.kinematics.motion_laws import ALL_LAWS, CamProgram, Motion, Phase
 from geomcad.problem import Build, Problem, ResultSpec, lazy
 from geomcad.units import deg, to_deg
 
-from .file_common import Table, check_top
+from .common import Table, check_top
 
 KIND = "cam"
 FOLLOWERS = ("knife", "roller", "flat")
@@ -517,6 +517,6 @@ def make_problem(file_id: str, data: dict[str, Any]) -> Problem[CamDesign]:
     def build(_: Mapping[str, Any]) -> Build[CamDesign]:
         return build_file(file_id, data)
 
-    draw = lazy(".sheets_cam:sheets", __package__)
-    scales = lazy(".sheets_cam:scales", __package__)
+    draw = lazy(".cam_sheets:sheets", __package__)
+    scales = lazy(".cam_sheets:scales", __package__)
     return file_problem(file_id, data, spec.title, RESULTS, build, draw, scales=scales)

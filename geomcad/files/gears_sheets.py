@@ -38,16 +38,16 @@ from geomcad.sheet.graph import Graph
 from geomcad.sheet.lang import Words, per_language
 from geomcad.sheet.views import AxisSpec, Curve, Diagram, Table, Text
 
-from .file_common import sheet_formats
+from .common import sheet_formats
 
 if TYPE_CHECKING:
     from geomcad.problem import Solution
     from geomcad.sheet import Sheet
 
-    from .file_gears import GearsDesign
+    from .gears import GearsDesign
 
-#: The sheets' words, per language (constructions/strings/<lang>/sheets_gears.toml).
-WORDS = Words(__package__, "sheets_gears")
+#: The sheets' words, per language (geomcad/files/strings/<lang>/gears_sheets.toml).
+WORDS = Words(__package__, "gears_sheets")
 MM = 1000.0
 #: Width (mm) of the notes under the tables (the pair's; the train's).
 NOTE_W = 200.0
@@ -116,7 +116,7 @@ def designation(sol: Solution[Any]) -> str:
     """The document's designation from its file's name (as a linkage file's), so that every
     design file is its own document; ``designation`` in [sheet] or ``--designation`` override
     it."""
-    from geomcad.documents import stem
+    from geomcad.files import stem
 
     return WORDS("designation", stem=stem(sol.problem.id))
 
@@ -336,7 +336,7 @@ def _pair_tables(p: gd.GearPair, me: gd.Meshing) -> tuple[Table, Table]:
         ["|λ|_{max}", fmt_number(p.lambda1, digits=4), fmt_number(p.lambda2, digits=4)],
     ]
     sizes = Table(rows, widths=(30.0, 40.0, 40.0), title=WORDS("sizes_title", m=mm(p.m)))
-    from .file_gears import RESULTS
+    from .gears import RESULTS
 
     p_b = ResultSpec("p_b", "m", "base pitch", display="mm", digits=5)
     values = {"a": p.a, "a_w": p.a_w, "alpha_w_deg": math.degrees(p.alpha_w), "y": p.y,
@@ -558,7 +558,7 @@ def _scheme(
     """The kinematic scheme (GOST 2.770, as in 2013-5): gears as webs with rims at their pitch
     radii, rings as cups, the planet block on its axle in the carrier H, the held gear on the
     frame; both halves about the central axis, the planets drawn in both."""
-    from .sheets_2013_5 import _bearing, _gear, _ground, _ring
+    from geomcad.sheet.gearing import gear_web, ground_line, ring_gear, shaft_bearing
 
     k = v.scale
     b = k.model(6.0)
@@ -569,20 +569,20 @@ def _scheme(
     # gear 1 on the input (or output) shaft from the left
     v.seg(Vec(-k.model(5.0), 0.0), Vec(c1, 0.0), "link")
     if scheme == "D":
-        _ring(v, c1, c1 - 1.5 * b, 0.0, r1, b)
+        ring_gear(v, c1, c1 - 1.5 * b, 0.0, r1, b)
     else:
-        _gear(v, c1, 0.0, r1, b)
+        gear_web(v, c1, 0.0, r1, b)
     v.label(Vec(c1, -r1), "1", prefer=(-1.0, -1.0))
     # the planet block: 2 at c1, 3 at c2 on one axle, both halves
     r2 = m * z[1] / 2.0
     for s_ in (1.0, -1.0):
         yc = s_ * aw
-        _gear(v, c1, yc, r2, b)
+        gear_web(v, c1, yc, r2, b)
         if scheme != "A":
-            _gear(v, c2, yc, m * z[2] / 2.0, b)
+            gear_web(v, c2, yc, m * z[2] / 2.0, b)
         x_end = c2 if scheme != "A" else c1
         v.seg(Vec(c1 - b, yc), Vec(x_end + b, yc), "link")
-        _bearing(v, Vec(x_end + 1.5 * b, yc), False)
+        shaft_bearing(v, Vec(x_end + 1.5 * b, yc), False)
         # the carrier H: from its shaft up to the planets' axle
         v.polyline([Vec(cH, 0.0), Vec(cH, yc), Vec(x_end + 1.5 * b, yc)], "link")
     v.label(Vec(c1, aw + r2), "2", prefer=(-1.0, 1.0))
@@ -595,9 +595,9 @@ def _scheme(
     r_h = m * z[-1] / 2.0
     name = "3" if scheme == "A" else "4"
     if scheme == "C":
-        _gear(v, held_c, 0.0, r_h, b)
+        gear_web(v, held_c, 0.0, r_h, b)
         v.seg(Vec(held_c, 0.0), Vec(held_c + 1.2 * b, 0.0), "link")
-        _ground(v, Vec(held_c + 1.2 * b, -k.model(8.0)))
+        ground_line(v, Vec(held_c + 1.2 * b, -k.model(8.0)))
         v.seg(Vec(held_c + 1.2 * b, 0.0), Vec(held_c + 1.2 * b, -k.model(8.0)), "link")
         v.label(Vec(held_c, r_h), name, prefer=(1.0, 1.0))
     else:
@@ -605,7 +605,7 @@ def _scheme(
         for s_ in (1.0, -1.0):
             v.seg(Vec(held_c - b / 2.0, s_ * r_h), Vec(x_web, s_ * r_h), "link")
             v.seg(Vec(x_web, s_ * r_h), Vec(x_web, s_ * (r_h + k.model(6.0))), "link")
-            _ground(v, Vec(x_web, s_ * (r_h + k.model(6.0))))
+            ground_line(v, Vec(x_web, s_ * (r_h + k.model(6.0))))
         v.label(Vec(held_c, r_h), name, prefer=(-1.0, 1.0))
     # the points of the radial line: pitch points and the planets' axle
     for q, x in (("A", c1), ("B", c1), ("C", held_c)):

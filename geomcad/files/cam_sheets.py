@@ -33,17 +33,17 @@ from geomcad.sheet.text import box as text_box
 from geomcad.sheet.text import parse
 from geomcad.sheet.views import AxisSpec, Curve, Diagram, Steps, Table, Text
 
-from .file_cam import RESULTS
-from .file_common import sheet_formats
+from .cam import RESULTS
+from .common import sheet_formats
 
 if TYPE_CHECKING:
     from geomcad.problem import Solution
     from geomcad.sheet import Sheet
 
-    from .file_cam import CamDesign
+    from .cam import CamDesign
 
-#: The sheet's words, per language (constructions/strings/<lang>/sheets_cam.toml).
-WORDS = Words(__package__, "sheets_cam")
+#: The sheet's words, per language (geomcad/files/strings/<lang>/cam_sheets.toml).
+WORDS = Words(__package__, "cam_sheets")
 MM = 1000.0
 #: Width (mm) of the notes under the tables.
 NOTE_W = 130.0
@@ -119,7 +119,7 @@ def designation(sol: Solution[Any]) -> str:
     """The document's designation from its file's name (as a linkage file's), so that every
     design file is its own document; ``designation`` in [sheet] or ``--designation`` override
     it."""
-    from geomcad.documents import stem
+    from geomcad.files import stem
 
     return WORDS("designation", stem=stem(sol.problem.id))
 
@@ -557,7 +557,7 @@ def _notes(des: CamDesign) -> Text:
     return Text(paragraph=WORDS("phases", laws=laws), width=NOTE_W)
 
 
-#: The recorded steps the order of construction lists (constructions/file_cam.py), in order.
+#: The recorded steps the order of construction lists (geomcad/files/cam.py), in order.
 ORDER = ("S(φ)", "zone", "ρ-condition", "O_min", "r0_min", "r0", "r_roller", "profile")
 
 

@@ -15,15 +15,15 @@ from dataclasses import dataclass
 from typing import Any
 
 from geomcad.construction import Construction
-from geomcad.documents import file_problem
 from geomcad.errors import ConstructionError, ParameterError
+from geomcad.files import file_problem
 from geomcad.kinematics import gear_design as gd
 from geomcad.kinematics import planetary as pl
 from geomcad.kinematics.gears import GOST_13755, BasicRack
 from geomcad.problem import Build, Problem, ResultSpec, lazy
 from geomcad.units import deg, to_deg
 
-from .file_common import Table, check_top
+from .common import Table, check_top
 
 KIND = "gears"
 
@@ -254,6 +254,6 @@ def make_problem(file_id: str, data: dict[str, Any]) -> Problem[GearsDesign]:
         des, c, results = design(spec)
         return Build(results, c, [], data=des)
 
-    draw = lazy(".sheets_gears:sheets", __package__)
-    scales = lazy(".sheets_gears:scales", __package__)
+    draw = lazy(".gears_sheets:sheets", __package__)
+    scales = lazy(".gears_sheets:scales", __package__)
     return file_problem(file_id, data, spec.title, RESULTS, build, draw, scales=scales)

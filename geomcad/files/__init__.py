@@ -1,0 +1,69 @@
+"""File kinds: problems given as TOML files, one module per kind, and what they share.
+
+A file kind is registered in the ``geomcad.files`` entry-point group (``pyproject.toml``; the
+name is the file's marking table) as a callable ``make_problem(file_id, data) -> Problem``;
+:mod:`geomcad.documents` reads the file, tells its kind and calls it.
+
+- :mod:`geomcad.files.common`: the shared reader (typed values with their dotted keys in every
+  error, unknown keys refused by name; the top level and the ``[sheet]`` table);
+- :mod:`geomcad.files.cam` (``[cam]``) with its sheet :mod:`geomcad.files.cam_sheets`;
+- :mod:`geomcad.files.gears` (``[gears]``) with its sheets :mod:`geomcad.files.gears_sheets`;
+- the linkage file (no marking table, ``../shared/linkages.md``) is to become
+  :mod:`geomcad.files.linkage` (now :mod:`geomcad.linkage_problem`); its sheets are the sheet
+  layer's own (:mod:`geomcad.sheet.linkage`), as they need nothing of the file.
+
+Layers (``tests/test_layers.py``): a kind imports the library below it (up to ``render``) and
+:mod:`geomcad.problem`; :mod:`geomcad.documents`, ``verify``, ``teach`` and ``cli`` are above
+it. A kind's model module imports no sheet at load time: its sheets are reached through
+:func:`~geomcad.problem.lazy` references, so a solve draws nothing. This module imports nothing
+heavy: ``geomcad list`` and a file's kind are told without numpy.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Mapping, Sequence
+from pathlib import Path
+from typing import TYPE_CHECKING, Any, TypeVar
+
+if TYPE_CHECKING:
+    from geomcad.problem import Build, Problem, ResultSpec, Solution
+    from geomcad.sheet import Sheet
+    from geomcad.sheet.motion import Frames
+
+#: The type of a file kind's model (``Build.data``), as :data:`geomcad.problem.D`.
+D = TypeVar("D")
+
+
+def file_problem(
+    file_id: str,
+    data: dict[str, Any],
+    title: str,
+    results: tuple[ResultSpec, ...],
+    build: Callable[[Mapping[str, Any]], Build[D]],
+    draw: Callable[[Solution[D]], Sequence[tuple[str, Sheet]]],
+    motion: Callable[[Solution[D], int], Frames] | None = None,
+    cls: type[Problem[D]] | None = None,
+    scales: Callable[[Solution[D]], Mapping[str, float]] | None = None,
+) -> Problem[D]:
+    """The problem of a file kind, as :mod:`geomcad.documents` says it is: no parameters (the
+    file is the data), no seed, the file's data as its ``inputs``; ``cls`` a subclass of
+    :class:`~geomcad.problem.Problem` where the kind needs one."""
+    from geomcad.problem import Problem
+
+    return (cls or Problem)(
+        id=file_id,
+        title=title,
+        params=(),
+        results=results,
+        seed={},
+        build=build,
+        draw=draw,
+        inputs=data,
+        motion=motion,
+        scales=scales,
+    )
+
+
+def stem(pid: str) -> str:
+    """The name a file's sheets are written under: its stem (``mech.toml`` → ``mech``)."""
+    return Path(pid).stem
