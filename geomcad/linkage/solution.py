@@ -7,12 +7,14 @@
 from __future__ import annotations
 
 import math
+import re
 from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
 
 from geomcad import tol
+from geomcad.errors import ConstructionError
 from geomcad.geom import Vec
 from geomcad.linkage.cycle import Cycle, cycle, numbered, stroke_middles
 from geomcad.linkage.model import Linkage
@@ -90,7 +92,14 @@ def scheme(lk: Linkage, P: Position) -> Mechanism:
 def solve(lk: Linkage) -> Solved:
     """Solve the linkage: its cycle, its numbered (and listed) positions, their plans."""
     # the whole turn first: a group that cannot close anywhere is named with its crank angle
-    sweep(lk, np.linspace(0.0, 2.0 * math.pi, TURN_SAMPLES, endpoint=False), order=2)
+    # (the angle the user can find, not the sweep's internal index)
+    try:
+        sweep(lk, np.linspace(0.0, 2.0 * math.pi, TURN_SAMPLES, endpoint=False), order=2)
+    except ConstructionError as e:
+        why = re.sub(
+            r"first at position index \d+, at the crank angle", "first at the crank angle", e.why
+        )
+        raise type(e)(e.step, why) from None
     cyc = cycle(lk)
     if cyc is None and lk.rocker:
         bad = next((ld for ld in lk.loads if ld.on_stroke), None)
@@ -108,8 +117,6 @@ def solve(lk: Linkage) -> Solved:
     W = chebyshev(m.n, m.p5, m.p4)
     mob = mobility(m)
     if W != 1 or mob.true != 1:
-        from geomcad.errors import ConstructionError
-
         raise ConstructionError(
             "structure",
             f"the mechanism has W = {W} (true mobility {mob.true}); a crank drives W = 1",
