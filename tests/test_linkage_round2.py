@@ -138,11 +138,11 @@ def test_output_names_a_link_or_a_point() -> None:
     assert lk.output == "B" and lk.rocker == 0
     # the coupler is neither a slider nor a rocker: refused as a link; a point on it is an
     # output with no stroke, swing or K, numbered from φ = 0
-    with pytest.raises(FileKeyError, match="drive.output"):
+    with pytest.raises(FileKeyError, match=r"drive\.output"):
         parse(four_bar(output=2))
     with pytest.raises(FileKeyError, match="frame point"):
         parse(four_bar(output="C"))
-    with pytest.raises(FileKeyError, match="drive.output"):
+    with pytest.raises(FileKeyError, match=r"drive\.output"):
         parse(four_bar(output=1))
     data = four_bar(positions=4)
     data["point"] = [{"name": "M", "link": 2, "from": "A", "toward": "B", "along": 0.1}]
@@ -297,7 +297,7 @@ def test_force_position_and_phi() -> None:
     want = results(solve(parse(at)))["positions"][0]
     for key, v in r["forces"].items():
         assert want[key] == pytest.approx(v, abs=1e-9 * max(1.0, abs(v))), key
-    with pytest.raises(FileKeyError, match="forces.position"):
+    with pytest.raises(FileKeyError, match=r"forces\.position"):
         parse(dict(data, forces={"position": 12}))
     with pytest.raises(FileKeyError, match="not both"):
         parse(dict(data, forces={"position": 1, "phi": 3.0}))
@@ -333,7 +333,7 @@ def test_bad_combinations_are_named(edit: Any, key: str) -> None:
 def test_working_keys_must_agree() -> None:
     data = load("slider-crank.toml")
     data["drive"]["working"] = "forward"  # the load says backward
-    with pytest.raises(FileKeyError, match="disagrees with drive.working"):
+    with pytest.raises(FileKeyError, match=r"disagrees with drive\.working"):
         parse(data)
     data["drive"]["working"] = "backward"
     assert parse(data).working == "backward"
