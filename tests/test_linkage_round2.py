@@ -378,3 +378,33 @@ def test_errors_name_a_crank_angle_not_an_index() -> None:
         solve(parse(data))
     msg = str(info.value)
     assert "group 1" in msg and "crank angle φ = " in msg and "index" not in msg
+
+
+@pytest.mark.parametrize("offset", [0.0, 0.03, -0.05])
+@pytest.mark.parametrize("omega", [10.0, -10.0])
+def test_an_oscillating_cylinder_against_a_dense_sweep(offset: float, omega: float) -> None:
+    """Link 3 of an RPR at a frame pivot, its angle the slide line's direction: ψ = ∠(A − C) −
+    asin(o/|A − C|). Its swing and K against the extremes of ψ over 200 000 crank angles (an
+    independent statement of the geometry, no root refinement)."""
+    r, C = 0.08, (0.25, 0.1)
+    data = {
+        "frame": {"O": [0.0, 0.0], "C": list(C)},
+        "drive": {"pivot": "O", "joint": "A", "length": r, "omega": omega, "positions": 8,
+                  "working": "backward"},
+        "group": [{"kind": "RPR", "links": [2, 3], "slider": "A", "pivot": "C",
+                   "offset": offset}],
+    }  # fmt: skip
+    res = results(solve(parse(data)))
+    n = 200_000
+    psi, phis = [], []
+    for i in range(n):
+        phi = TWO_PI * i / n
+        ax, ay = r * math.cos(phi) - C[0], r * math.sin(phi) - C[1]
+        psi.append(math.atan2(ay, ax) - math.asin(offset / math.hypot(ax, ay)))
+        phis.append(phi)
+    hi, lo = psi.index(max(psi)), psi.index(min(psi))
+    assert res["swing_deg"] == pytest.approx(math.degrees(psi[hi] - psi[lo]), abs=1e-6)
+    sign = 1.0 if omega > 0 else -1.0
+    turn = (sign * (phis[lo] - phis[hi])) % TWO_PI  # backward: from ψ_max down to ψ_min
+    assert res["K"] == pytest.approx(turn / (TWO_PI - turn), abs=1e-3)
+    assert res["positions"][0]["phi_deg"] == pytest.approx(math.degrees(phis[hi]), abs=0.01)

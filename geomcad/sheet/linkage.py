@@ -31,7 +31,7 @@ from geomcad.errors import ParameterError
 from geomcad.geom import Vec
 from geomcad.linkage.model import Linkage
 from geomcad.linkage.plans import Position, construct
-from geomcad.linkage.solution import Solved
+from geomcad.linkage.solution import Solved, scheme
 from geomcad.linkage.sweep import output_coordinate, prp_frame, rocker_angle, sweep
 from geomcad.sheet import Drawing, Sheet, TitleBlock, fmt_number, formats
 from geomcad.sheet.compose import (
@@ -488,8 +488,9 @@ def _paths(lk: Linkage) -> dict[str, list[Vec]]:
 
 
 class _Mechanism(View):
-    """The mechanism in all its numbered positions: position 0 in main lines with its scheme's
-    symbols, the others in thin lines, the crank circle and the paths of the named points."""
+    """The mechanism in all its numbered positions: the principal one (:func:`_principal`) in
+    main lines with its scheme's symbols, the others in thin lines, the crank circle and the
+    paths of the named points."""
 
     def __init__(self, s: Solved) -> None:
         super().__init__(
@@ -522,11 +523,12 @@ class _Mechanism(View):
                 v.dot(P.pos[name])
                 v.label(P.pos[name], f"{name}_{{{i}}}", 2.5, clear=1.0)
         labels = {}
-        for pair in s.scheme.pairs:
+        mech = scheme(lk, P0)  # the pairs where the principal position has them
+        for pair in mech.pairs:
             name = pair.name.split(":")[0]
             if name in P0.pos and name not in (lk.joint, lk.output):
                 labels[pair.name] = name
-        draw_scheme(v, s.scheme, bodies=link_bodies(lk, P0), pair_labels=labels, label_height=3.5)
+        draw_scheme(v, mech, bodies=link_bodies(lk, P0), pair_labels=labels, label_height=3.5)
         for p in lk.points:
             if p.name not in labels.values():
                 v.dot(P0.pos[p.name])
