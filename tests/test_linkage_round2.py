@@ -158,6 +158,13 @@ def test_a_double_crank_has_no_swing() -> None:
     r = results(solve(parse(data)))
     assert "K" not in r and "swing_deg" not in r
     assert r["positions"][0]["phi_deg"] == 0.0
+    data["drive"]["working"] = "forward"  # a working stroke it cannot have is named
+    with pytest.raises(FileKeyError, match=r"drive\.working.*turns fully"):
+        solve(parse(data))
+    data["drive"].pop("working")
+    data["load"] = [{"link": 3, "moment": 1.0, "stroke": "both"}]
+    with pytest.raises(FileKeyError, match="load 1: stroke"):
+        solve(parse(data))
 
 
 def rocker_with_moment(stroke: str | None, moment: float = 10.0, **drive: Any) -> dict[str, Any]:

@@ -229,6 +229,9 @@ class Linkage:
     #: ``[forces] position`` (a numbered position) or ``[forces] phi`` (rad); None: the default
     forces_position: int | None = None
     forces_phi: float | None = None
+    #: the key that says the output's working stroke (``drive.working``, ``load 2: working``),
+    #: "" where it is the default
+    working_key: str = ""
 
     # -- structure -------------------------------------------------------------------------
     @property
@@ -544,7 +547,7 @@ def parse(data: Mapping[str, Any]) -> Linkage:
     lk = _replace(lk, output=output, rocker=rocker)
 
     masses = _masses(lk, _table(data, "links", "", required=False))
-    loads, working = _loads(lk, _tables(data, "load"), output, _drive_working(drive))
+    loads, working, working_key = _loads(lk, _tables(data, "load"), output, _drive_working(drive))
     fpos, fphi = _forces(_table(data, "forces", "", required=False), positions)
     if (fpos is not None or fphi is not None) and not masses and not loads:
         raise FileKeyError(
@@ -559,6 +562,7 @@ def parse(data: Mapping[str, Any]) -> Linkage:
         masses=masses,
         loads=loads,
         working=working,
+        working_key=working_key,
         dynamics=dynamics,
         forces_position=fpos,
         forces_phi=fphi,
@@ -914,7 +918,7 @@ def _masses(lk: Linkage, t: Mapping[str, Any]) -> dict[int, Mass]:
 
 def _loads(
     lk: Linkage, tables: list[dict[str, Any]], output: str, drive_working: str | None
-) -> tuple[tuple[Load, ...], Literal["forward", "backward"]]:
+) -> tuple[tuple[Load, ...], Literal["forward", "backward"], str]:
     out: list[Load] = []
     working = drive_working or "forward"
     said = "drive.working" if drive_working is not None else ""
@@ -995,7 +999,7 @@ def _loads(
             drive_working,
             f'the output "{output}" is neither a slider nor a rocker: it has no working stroke',
         )
-    return tuple(out), working  # type: ignore[return-value]
+    return tuple(out), working, said  # type: ignore[return-value]
 
 
 def _shape(where: str, v: object) -> tuple[tuple[float, float], ...]:

@@ -102,15 +102,14 @@ def solve(lk: Linkage) -> Solved:
         raise type(e)(e.step, why) from None
     cyc = cycle(lk)
     if cyc is None and lk.rocker:
+        from geomcad.errors import FileKeyError
+
+        why = f"the output link {lk.rocker} turns fully (a crank): it has no strokes"
         bad = next((ld for ld in lk.loads if ld.on_stroke), None)
         if bad is not None:
-            from geomcad.errors import FileKeyError
-
-            raise FileKeyError(
-                f"load {bad.index}: stroke",
-                bad.stroke,
-                f"the output link {lk.rocker} turns fully (a crank): it has no strokes",
-            )
+            raise FileKeyError(f"load {bad.index}: stroke", bad.stroke, why)
+        if lk.working_key:
+            raise FileKeyError(lk.working_key, lk.working, why)
     drawn = tuple(construct(lk, phi) for phi in numbered(lk, cyc, lk.positions))
     positions = drawn if lk.phi is None else tuple(construct(lk, phi) for phi in lk.phi)
     m = scheme(lk, positions[0])
