@@ -32,6 +32,22 @@ def _num(x: float, scale: float) -> str:
     return f"{x:.6g}"
 
 
+#: The lists that the dynamics' table shows.
+DYNAMICS_LISTS = ("I_pr", "M_pr", "dynamics_phi_deg")
+
+
+def _value(v: object) -> str:
+    if isinstance(v, bool):
+        return "yes" if v else "no"
+    if isinstance(v, float):
+        return _num(v, abs(v))
+    if isinstance(v, list):
+        nums = [abs(x) for x in v if isinstance(x, float) and math.isfinite(x)]
+        scale = max(nums, default=0.0)
+        return "[" + ", ".join(_num(x, scale) if isinstance(x, float) else str(x) for x in v) + "]"
+    return str(v)
+
+
 def _unit(u: str) -> str:
     if u in ("", "1"):
         return ""
@@ -154,11 +170,14 @@ def report(
     for name, value in results.items():
         if name in ("positions", "forces", "structure"):
             continue
-        if isinstance(value, list) and all(isinstance(v, int | float) for v in value):
+        if name in DYNAMICS_LISTS and isinstance(value, list):
             lists[name] = value
             continue
-        text = _num(value, abs(value)) if isinstance(value, float) else str(value)
-        lines.append(f"  {name} = {text}{_unit(unit_of(name))}")
+        if isinstance(value, dict):  # a table of results (a synthesis' data)
+            lines.append(f"  {name}:")
+            lines += [f"    {k} = {_value(v)}{_unit(unit_of(k))}" for k, v in value.items()]
+            continue
+        lines.append(f"  {name} = {_value(value)}{_unit(unit_of(name))}")
     objs = results.get("positions") or []
     if objs:
         what = "the numbered positions" if numbered else "the positions of drive.phi, as listed"

@@ -415,3 +415,13 @@ def test_an_oscillating_cylinder_against_a_dense_sweep(offset: float, omega: flo
     turn = (sign * (phis[lo] - phis[hi])) % TWO_PI  # backward: from ψ_max down to ψ_min
     assert res["K"] == pytest.approx(turn / (TWO_PI - turn), abs=1e-3)
     assert res["positions"][0]["phi_deg"] == pytest.approx(math.degrees(phis[hi]), abs=0.01)
+
+
+def test_the_report_prints_round_off_as_zero() -> None:
+    from geomcad.linkage_report import table
+
+    lines = table(["a, m/s", "b, N"], [[4.0, 1500.0], [5.022e-16, 1e-3], [-2.0, -0.5]])
+    cells = [ln.split() for ln in lines[2:]]
+    assert cells[1] == ["0", "0.001"]  # 5e-16 of 4 m/s is round-off; 1e-3 of 1500 N is not
+    assert cells[2] == ["-2", "-0.5"]
+    assert lines[0].split() == ["a,", "m/s", "b,", "N"]
