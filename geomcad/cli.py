@@ -754,7 +754,12 @@ def _formats(text: str) -> list[str]:
 def _solve_report(sol: Solution[Any]) -> str:
     """The readable ``solve`` report: parameters, results, the seed comparison, notes."""
     problem = sol.problem
-    lines = [f"{problem.id} · {problem.title}", "", "parameters:"]
+    own = getattr(problem, "report", None)  # a problem with its own report (a linkage file)
+    if callable(own):
+        return str(own(sol))
+    lines = [f"{problem.id} · {problem.title}", ""]
+    if problem.params:
+        lines.append("parameters:")
     for p in problem.params:
         if p.name not in sol.params:
             lines.append(f"  {p.name}: not set (derived by the problem)")
@@ -763,7 +768,7 @@ def _solve_report(sol: Solution[Any]) -> str:
         default = "derived by the problem" if p.default is None else _fmt(p.default)
         mark = "" if value == p.default else f"   (set; default {default})"
         lines.append(f"  {p.name} = {_fmt(value)}{_unit(p.unit)}{mark}")
-    lines += ["", "results:"]
+    lines += ["", "results:"] if problem.params else ["results:"]
     specs = {r.name: r for r in problem.results}
     for name, value in sol.results.items():
         spec = specs.get(name)

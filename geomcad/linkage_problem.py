@@ -59,6 +59,8 @@ SPECS: tuple[tuple[str, str, str | None, str], ...] = (
 TOP: tuple[ResultSpec, ...] = (
     ResultSpec("W", "1", "Chebyshev's mobility"),
     ResultSpec("stroke", "m", "the output's stroke H", "l"),
+    ResultSpec("swing_deg", "deg", "a rocker output's swing ψ_max − ψ_min"),
+    ResultSpec("forces_phi_deg", "deg", "the crank angle of the force analysis"),
     ResultSpec("K", "1", "the coefficient of velocity change"),
     ResultSpec("phi_deg", "deg", "the crank angle"),
     ResultSpec("I_pr", "kg·m²", "the reduced moment of inertia at the numbered positions"),
@@ -119,3 +121,20 @@ class _FileProblem(Problem[Solved]):
 
     def result_spec(self, name: str) -> ResultSpec | None:
         return spec_of(name)
+
+    def report(self, sol: Solution[Solved]) -> str:
+        """The readable ``solve`` report: tables per group of quantities
+        (:mod:`geomcad.linkage_report`)."""
+        from geomcad.linkage_report import report
+
+        def unit(name: str) -> str:
+            spec = spec_of(name)
+            return spec.unit if spec is not None else ""
+
+        from geomcad.linkage.analysis import analyse
+
+        s = sol.data
+        force_no = analyse(s).force_index
+        return report(
+            self.id, self.title, sol.results, unit, sol.notes, s.linkage.phi is None, force_no
+        )

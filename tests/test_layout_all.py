@@ -59,10 +59,15 @@ BASELINE: dict[tuple[str, str], dict[str, int]] = {
     ("kulisa-23110713", "fbd"): {},
     # the golden linkage files (tests/test_golden.py): plan vectors under two arrowheads are
     # lettered points (with a note)
-    ("linkage-shaper", ""): {"anchor": 2, "empty": 1},
-    ("linkage-shaper", "forces"): {"empty": 1},
+    # the principal position is the force position (1): the ram's symbol at D1 crowds D2, D11
+    ("linkage-shaper", ""): {"anchor": 4, "empty": 1},
+    # the forces sheet at the default force position (position 1, the ram at the start of its
+    # cut, the rod 4 nearly along the guide): the labels 4 and D crowded at 7 mm
+    ("linkage-shaper", "forces"): {"anchor": 2, "empty": 1},
     ("linkage-shaper", "dynamics"): {"empty": 1},
-    ("linkage-four-bar", ""): {"empty": 1},
+    # the twelve numbered positions drawn beside the file's phi: B's labels crowd near the
+    # rocker's extreme (7 … 11 mm)
+    ("linkage-four-bar", ""): {"anchor": 6, "empty": 1},
 }
 
 

@@ -1,6 +1,8 @@
-"""The output over a crank turn: its extremes, the stroke H, K, and the numbered positions.
+"""The output over a crank turn: its extremes, the stroke H (or a rocker's swing), K, and the
+numbered positions.
 
-The output slider's coordinate s(φ) along its guide is swept over a turn; each extreme is a root
+The output slider's coordinate s(φ) along its guide (a rocker's angle ψ, unwrapped) is swept
+over a turn; a "rocker" whose angle gains a whole turn is a crank: no cycle; each extreme is a root
 of ds/dφ between two samples of opposite sign, refined by :func:`scipy.optimize.brentq`. The
 working stroke runs from s_min to s_max (``working = "forward"``) or from s_max to s_min; the
 crank's turn during it, measured in the crank's sense of rotation, is φ_w, and K = φ_w / (2π − φ_w).
@@ -48,6 +50,11 @@ class Cycle:
         return self.phi_working / (2.0 * math.pi - self.phi_working)
 
     @property
+    def swing_deg(self) -> float:
+        """A rocker's swing ψ_max − ψ_min in degrees (its ``stroke`` is in radians)."""
+        return math.degrees(self.stroke)
+
+    @property
     def phi_end(self) -> float:
         """The crank angle where the working stroke ends (the idle stroke begins)."""
         return self.phi_min if self.phi_start == self.phi_max else self.phi_max
@@ -57,14 +64,18 @@ def cycle(lk: Linkage) -> Cycle | None:
     """The output slider's cycle, or ``None`` when the output is no slider.
 
     Raises :class:`ConstructionError` when the output does not move (H = 0)."""
-    if lk.output_guide is None:
+    if lk.output_guide is None and not lk.rocker:
         return None
-    phi = np.linspace(0.0, 2.0 * math.pi, SAMPLES, endpoint=False)
+    phi = np.linspace(0.0, 2.0 * math.pi, SAMPLES + 1)
     st = sweep(lk, phi, order=1)
-    s = output_coordinate(lk, st)
-    assert s is not None
+    s_all = output_coordinate(lk, st)
+    assert s_all is not None
+    if lk.rocker and abs(s_all[-1] - s_all[0]) > math.pi:
+        return None  # the link turns fully: a crank, no swing
+    s = s_all[:-1]
+    phi = phi[:-1]
     i_min, i_max = int(np.argmin(s)), int(np.argmax(s))
-    scale = lk.length
+    scale = 1.0 if lk.rocker else lk.length
     if s[i_max] - s[i_min] <= tol.REL_LENGTH * 1.0e3 * scale:
         raise ConstructionError(f"output {lk.output}", "the output does not move over a turn")
 
@@ -88,6 +99,10 @@ def cycle(lk: Linkage) -> Cycle | None:
     p_min, p_max = refine(i_min), refine(i_max)
     sm = output_coordinate(lk, sweep(lk, [p_min, p_max], order=0))
     assert sm is not None
+    if lk.rocker:  # the refined angles on the sweep's unwrapped branch
+        two = 2.0 * math.pi
+        refs = (s[i_min], s[i_max])
+        sm = np.array([x + two * round((r - x) / two) for x, r in zip(sm, refs, strict=True)])
     sign = 1.0 if lk.omega > 0 else -1.0
     start, end = (p_min, p_max) if lk.working == "forward" else (p_max, p_min)
     working = (sign * (end - start)) % (2.0 * math.pi)

@@ -52,11 +52,13 @@ from geomcad.linkage.loads import (
     centre_arrays,
     force_value,
     guide_coordinate,
+    moment_value,
     ranges,
     slider_group,
+    stroke_sign,
 )
 from geomcad.linkage.model import Linkage
-from geomcad.linkage.sweep import State, sweep
+from geomcad.linkage.sweep import State, output_velocity, sweep
 
 Arr = npt.NDArray[np.float64]
 
@@ -82,7 +84,7 @@ class Reduced:
     M_pr: Arr
 
 
-def reduce(lk: Linkage, st: State, rng: dict[str, Range]) -> Reduced:
+def reduce(lk: Linkage, st: State, rng: dict[str, Range], cyc: Cycle | None = None) -> Reduced:
     """The reduced inertia and moment of the loads over a sweep (module docstring)."""
     w1 = lk.omega
     n = st.phi.shape[0]
@@ -99,14 +101,15 @@ def reduce(lk: Linkage, st: State, rng: dict[str, Range]) -> Reduced:
         energy += m.mass * np.einsum("ij,ij->i", V, V) + m.J * w * w
         denergy += 2.0 * (m.mass * np.einsum("ij,ij->i", V, a) + m.J * w * e)
         power += -m.mass * lk.gravity * V[:, 1]
+    moving = stroke_sign(lk, cyc, st.phi, output_velocity(lk, st)) if cyc is not None else None
     for ld in lk.loads:
         if ld.point:
             g = slider_group(lk, ld.point)
             s, d = guide_coordinate(lk, g, st)
-            f = force_value(lk, ld, rng[ld.point], s, st.v_rel[ld.point])
+            f = force_value(lk, ld, rng[ld.point], s, st.v_rel[ld.point], moving)
             power += f * np.einsum("ij,ij->i", d, st.vel[ld.point])
         else:
-            power += ld.moment * st.omega[ld.link]
+            power += moment_value(ld, st.omega[ld.link], moving) * st.omega[ld.link]
     return Reduced(st.phi, energy / w1**2, denergy / w1**3, power / w1)
 
 
@@ -147,13 +150,13 @@ def dynamics(lk: Linkage, cyc: Cycle | None, positions: int) -> Flywheel:
     rng = ranges(lk, cyc)
     sign = 1.0 if lk.omega > 0 else -1.0
     phis = numbered(lk, cyc, positions)
-    red_n = reduce(lk, sweep(lk, phis, order=2), rng)
+    red_n = reduce(lk, sweep(lk, phis, order=2), rng, cyc)
     phi0 = phis[0]
     psi = np.linspace(0.0, 2.0 * math.pi, DENSE + 1)
 
     def at(psi_: npt.ArrayLike) -> Reduced:
         ph = phi0 + sign * np.atleast_1d(np.asarray(psi_, dtype=np.float64))
-        return reduce(lk, sweep(lk, ph, order=2), rng)
+        return reduce(lk, sweep(lk, ph, order=2), rng, cyc)
 
     dense = at(psi)
     W = cumulative_trapezoid(dense.M_pr, psi, initial=0.0) * sign  # the loads' work from ψ = 0

@@ -53,8 +53,10 @@ from geomcad.linkage.loads import (
     centre_name,
     centre_vec,
     force_value,
+    moment_value,
     ranges,
     slider_group,
+    stroke_sign,
 )
 from geomcad.linkage.model import Group, Linkage
 from geomcad.linkage.plans import Position, plan_name
@@ -207,8 +209,19 @@ class Forces:
 # --- loads --------------------------------------------------------------------------------
 
 
+def output_velocity_at(lk: Linkage, P: Position) -> float:
+    """The output's velocity at position P: a slider's along its guide, a rocker's ω."""
+    if lk.rocker:
+        return P.omega[lk.rocker]
+    return P.v_rel[lk.output]
+
+
 def applied_loads(
-    lk: Linkage, P: Position, rng: dict[str, Range], c: Construction
+    lk: Linkage,
+    P: Position,
+    rng: dict[str, Range],
+    c: Construction,
+    cyc: Cycle | None = None,
 ) -> dict[int, list[Applied]]:
     """The given loads of every moving link at position P: weights, inertia loads and the
     file's loads (module docstring of :mod:`geomcad.linkage.loads`), recorded in ``c``."""
@@ -275,6 +288,13 @@ def applied_loads(
                 },
             )
             out[i].append(Applied(f"M_{{Ф{i}}}", i, "inertia", None, None, M))
+    # the file's loads: several on one point (one link) act together, as their sum
+    moving = None
+    if cyc is not None:
+        v_out = output_velocity_at(lk, P)
+        moving = stroke_sign(lk, cyc, np.array([P.phi]), np.array([v_out]))
+    forces: dict[str, Vec] = {}
+    moments: dict[int, float] = {}
     for ld in lk.loads:
         if ld.point:
             grp = slider_group(lk, ld.point)
@@ -282,10 +302,9 @@ def applied_loads(
             J = P.pos[ld.point]
             s = (J - line.p).dot(line.d)
             v = P.v_rel[ld.point]
-            f = float(force_value(lk, ld, rng[ld.point], np.array([s]), np.array([v]))[0])
+            f = float(force_value(lk, ld, rng[ld.point], np.array([s]), np.array([v]), moving)[0])
             if f == 0.0:
                 continue
-            link = lk.owner[ld.point]
             r = rng[ld.point]
             s_w = s - r.s_min if lk.working == "forward" else r.s_max - s
             F = c.record(
@@ -297,20 +316,31 @@ def applied_loads(
                 kind="given_force",
                 args={"F": f"F_{{{ld.point}}}", "at": ld.point, "value": abs(f)},
             )
-            out[link].append(
-                Applied(f"F_{{{ld.point}}}", link, "given", F, J, 0.0, ld.point, P.vel[ld.point])
-            )
+            forces[ld.point] = forces.get(ld.point, Vec(0.0, 0.0)) + F
         else:
+            mv = float(moment_value(ld, np.array([P.omega[ld.link]]), moving)[0])
+            if ld.on_stroke and mv == 0.0:
+                continue
+            what = (
+                f"|M| against ω{ld.link} on the {ld.stroke} stroke"
+                if ld.on_stroke
+                else "a constant moment"
+            )
             c.value(
                 f"M_{ld.index}",
-                ld.moment,
-                f"load {ld.index}: a moment on link {ld.link}",
+                mv,
+                f"load {ld.index}: a moment on link {ld.link}, {what}",
                 kind="given_moment",
-                args={"M": f"M_{{{ld.link}}}", "link": ld.link, "value": ld.moment},
+                args={"M": f"M_{{{ld.link}}}", "link": ld.link, "value": mv},
             )
-            out[ld.link].append(
-                Applied(f"M_{{{ld.link}}}", ld.link, "given", None, None, ld.moment)
-            )
+            moments[ld.link] = moments.get(ld.link, 0.0) + mv
+    for point, F in forces.items():
+        link = lk.owner[point]
+        out[link].append(
+            Applied(f"F_{{{point}}}", link, "given", F, P.pos[point], 0.0, point, P.vel[point])
+        )
+    for link, total in moments.items():
+        out[link].append(Applied(f"M_{{{link}}}", link, "given", None, None, total))
     return out
 
 
@@ -674,7 +704,7 @@ def kinetostatics(lk: Linkage, P: Position, cyc: Cycle | None = None) -> Forces:
     deg = math.degrees(P.phi) % 360.0
     c = Construction(f"{lk.title}: kinetostatics at φ1 = {deg:.6g}°")
     rng = ranges(lk, cyc)
-    given = applied_loads(lk, P, rng, c)
+    given = applied_loads(lk, P, rng, c, cyc)
     loads = {i: list(v) for i, v in given.items()}
     sv = _Solver(lk, P, c)
     groups: list[GroupForces] = []

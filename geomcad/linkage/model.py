@@ -48,9 +48,11 @@ TOP_KEYS = (
     "links",
     "load",
     "dynamics",
+    "forces",
     "sheet",
 )
-DRIVE_KEYS = ("pivot", "joint", "length", "omega", "phi", "positions", "output")
+DRIVE_KEYS = ("pivot", "joint", "length", "omega", "phi", "positions", "output", "working")
+FORCES_KEYS = ("position", "phi")
 GROUP_KEYS: dict[str, tuple[str, ...]] = {
     "RRR": ("kind", "links", "joint", "ends", "lengths", "assembly"),
     "RRP": ("kind", "links", "joint", "end", "length", "guide", "assembly"),
@@ -185,6 +187,8 @@ class Load:
     shape: tuple[tuple[float, float], ...] = ()
     link: int = 0
     moment: float = 0.0
+    #: a moment load with a ``stroke``: |moment| against the link's ω on that stroke only
+    on_stroke: bool = False
 
 
 @dataclass(frozen=True)
@@ -220,6 +224,14 @@ class Linkage:
     dynamics: Dynamics | None
     sheet: Mapping[str, Any]
     owner: Mapping[str, int] = field(default_factory=dict)
+    #: the output's link when the output is a rocker (a link turning about a frame point), else 0
+    rocker: int = 0
+    #: ``[forces] position`` (a numbered position) or ``[forces] phi`` (rad); None: the default
+    forces_position: int | None = None
+    forces_phi: float | None = None
+    #: the key that says the output's working stroke (``drive.working``, ``load 2: working``),
+    #: "" where it is the default
+    working_key: str = ""
 
     # -- structure -------------------------------------------------------------------------
     @property
@@ -271,6 +283,19 @@ class Linkage:
             return m.centre
         joints = self.link_points(link)
         return joints[0] if len(joints) == 1 else ""
+
+    def frame_pivot(self, link: int) -> str:
+        """The frame point a moving link (not the crank) turns about, or ``""``: an RRR's link
+        whose end is a frame point, link 3 of an RPR whose pivot is one."""
+        g = self.group_of(link)
+        if g is None or link == 1:
+            return ""
+        if g.kind == "RRR":
+            end = g.ends[0] if link == g.links[0] else g.ends[1]
+            return end if self.owner.get(end) == 0 else ""
+        if g.kind == "RPR" and link == g.links[1]:
+            return g.pivot if self.owner.get(g.pivot) == 0 else ""
+        return ""
 
     @property
     def output_guide(self) -> Group | None:
@@ -518,22 +543,115 @@ def parse(data: Mapping[str, Any]) -> Linkage:
         raise FileKeyError("group", None, "missing: a mechanism needs at least one [[group]]")
     lk = _take_points(lk, pending, owner, final=True)
 
-    default_out = groups[-1].joint or (groups[-1].slider if groups[-1].kind == "RPR" else "")
-    output = _name("drive", drive, "output", default=default_out)
-    if output not in owner:
-        raise FileKeyError(
-            "drive.output", output, f'point "{output}" is not a point of the mechanism'
-        )
+    output, rocker = _output(lk, drive)
+    lk = _replace(lk, output=output, rocker=rocker)
 
     masses = _masses(lk, _table(data, "links", "", required=False))
-    loads, working = _loads(lk, _tables(data, "load"), output)
+    loads, working, working_key = _loads(lk, _tables(data, "load"), output, _drive_working(drive))
+    fpos, fphi = _forces(_table(data, "forces", "", required=False), positions)
+    if (fpos is not None or fphi is not None) and not masses and not loads:
+        raise FileKeyError(
+            "forces", "", "the force analysis needs the links' masses ([links.N]) or loads"
+        )
     dyn_t = _table(data, "dynamics", "", required=False)
     dynamics = _dynamics(dyn_t) if dyn_t else None
     if dynamics is not None and not masses:
         raise FileKeyError("dynamics", "", "needs the links' masses ([links.N] tables)")
     return _replace(
-        lk, output=output, masses=masses, loads=loads, working=working, dynamics=dynamics
+        lk,
+        masses=masses,
+        loads=loads,
+        working=working,
+        working_key=working_key,
+        dynamics=dynamics,
+        forces_position=fpos,
+        forces_phi=fphi,
     )
+
+
+def _drive_working(drive: Mapping[str, Any]) -> str | None:
+    """``[drive] working`` when the file gives it."""
+    if "working" not in drive:
+        return None
+    return _word("drive", drive, "working", ("forward", "backward"), "forward")
+
+
+def _output(lk: Linkage, drive: Mapping[str, Any]) -> tuple[str, int]:
+    """The output point and, for a rocker output, its link (linkages.md, second round).
+
+    ``output`` names a point or a link number; without it the last group's slider (RRP,
+    PRP), or for RRR/RPR its second link when that link turns about a frame point (else, as in
+    the first round, its joint or slider, a point with no strokes)."""
+    last = lk.groups[-1]
+    if "output" not in drive:
+        b = last.links[1]
+        if last.kind in ("RRR", "RPR") and lk.frame_pivot(b):
+            return _rocker_point(lk, b), b
+        return last.joint or last.slider, 0
+    v = drive["output"]
+    if isinstance(v, int) and not isinstance(v, bool):
+        if v not in lk.moving_links or v == 1:
+            them = ", ".join(map(str, lk.moving_links[1:]))
+            raise FileKeyError(
+                "drive.output", v, f"link {v} is not a link of a group (they are {them})"
+            )
+        g = lk.group_of(v)
+        assert g is not None
+        if g.kind in ("RRP", "PRP") and v == g.links[1]:
+            return g.joint, 0  # a slider's link: its joint
+        if not lk.frame_pivot(v):
+            raise FileKeyError(
+                "drive.output",
+                v,
+                f"link {v} is neither a slider nor a rocker (a link turning about a frame point)",
+            )
+        return _rocker_point(lk, v), v
+    output = _name("drive", drive, "output")
+    if output not in lk.owner:
+        raise FileKeyError(
+            "drive.output", output, f'point "{output}" is not a point of the mechanism'
+        )
+    link = lk.owner[output]
+    if link == 0:
+        raise FileKeyError(
+            "drive.output", output, f'point "{output}" is a frame point: it does not move'
+        )
+    if any(g.joint == output and g.kind in ("RRP", "PRP") for g in lk.groups):
+        return output, 0
+    return output, (link if lk.frame_pivot(link) else 0)
+
+
+def _rocker_point(lk: Linkage, link: int) -> str:
+    """The point that stands for a rocker output on the drawings: its moving joint (an RRR's
+    joint), else its first [[point]], else the block's joint (an RPR's slider)."""
+    g = lk.group_of(link)
+    assert g is not None
+    if g.kind == "RRR":
+        return g.joint
+    own = [p.name for p in lk.points if p.link == link]
+    return own[0] if own else g.slider
+
+
+def _forces(t: Mapping[str, Any], positions: int) -> tuple[int | None, float | None]:
+    """``[forces] position`` or ``phi`` (rad in [0, 2π))."""
+    if not t:
+        return None, None
+    _check_keys("forces", t, FORCES_KEYS)
+    if "position" in t and "phi" in t:
+        raise FileKeyError("forces", "", "give position or phi, not both")
+    if "position" in t:
+        v = t["position"]
+        if isinstance(v, bool) or not isinstance(v, int) or not 0 <= v < positions:
+            raise FileKeyError(
+                "forces.position",
+                v,
+                f"must be a numbered position 0 … {positions - 1} (drive.positions = {positions})",
+            )
+        return v, None
+    if "phi" in t:
+        a = _number(t, "phi", "forces", ge=-1.0e6, le=1.0e6, unit="°")
+        return None, math.radians(a % 360.0) % (2.0 * math.pi)
+    return None, None
 
 
 def _replace(lk: Linkage, **kw: Any) -> Linkage:
@@ -799,10 +917,12 @@ def _masses(lk: Linkage, t: Mapping[str, Any]) -> dict[int, Mass]:
 
 
 def _loads(
-    lk: Linkage, tables: list[dict[str, Any]], output: str
-) -> tuple[tuple[Load, ...], Literal["forward", "backward"]]:
+    lk: Linkage, tables: list[dict[str, Any]], output: str, drive_working: str | None
+) -> tuple[tuple[Load, ...], Literal["forward", "backward"], str]:
     out: list[Load] = []
-    working: Literal["forward", "backward"] = "forward"
+    working = drive_working or "forward"
+    said = "drive.working" if drive_working is not None else ""
+    has_strokes = lk.rocker != 0 or lk.output_guide is not None
     for i, t in enumerate(tables, start=1):
         where = f"load {i}"
         _check_keys(where, t, LOAD_KEYS)
@@ -817,7 +937,36 @@ def _loads(
             if link not in lk.moving_links:
                 raise FileKeyError(where, link, f"link: {link} is not a moving link")
             moment = _number(t, "moment", where, ge=-MAX_FORCE, le=MAX_FORCE, unit="N·m")
-            out.append(Load(i, link=link, moment=moment))
+            if "shape" in t:
+                raise FileKeyError(
+                    f"{where}: shape", t["shape"], "a moment load has no shape (a force's only)"
+                )
+            on_stroke = "stroke" in t
+            if "working" in t and not on_stroke:
+                raise FileKeyError(
+                    f"{where}: working",
+                    t["working"],
+                    "a moment load without stroke is a constant moment: working has no meaning",
+                )
+            stroke = _word(where, t, "stroke", ("working", "idle", "both"), "working")
+            if on_stroke and not has_strokes:
+                raise FileKeyError(
+                    f"{where}: stroke",
+                    stroke,
+                    f'the output "{output}" is neither a slider nor a rocker: it has no strokes',
+                )
+            if "working" in t:
+                w = _word(where, t, "working", ("forward", "backward"), "forward")
+                if said and w != working:
+                    raise FileKeyError(
+                        f"{where}: working",
+                        w,
+                        f"disagrees with {said} = {working!r} (the output has one working stroke)",
+                    )
+                working, said = w, f"{where}: working"
+            out.append(
+                Load(i, link=link, moment=moment, stroke=stroke, on_stroke=on_stroke)  # type: ignore[arg-type]
+            )
             continue
         point = _name(where, t, "point")
         if point not in lk.owner:
@@ -831,12 +980,26 @@ def _loads(
             )
         value = _number(t, "value", where, ge=0.0, le=MAX_FORCE, unit="N")
         stroke = _word(where, t, "stroke", ("working", "idle", "both"), "working")
-        w = _word(where, t, "working", ("forward", "backward"), "forward")
-        if point == output:
-            working = w  # type: ignore[assignment]
+        if point == output and "working" in t:
+            w = _word(where, t, "working", ("forward", "backward"), "forward")
+            if said and w != working:
+                raise FileKeyError(
+                    f"{where}: working",
+                    w,
+                    f"disagrees with {said} = {working!r} (the output has one working stroke)",
+                )
+            working, said = w, f"{where}: working"
+        elif "working" in t:
+            _word(where, t, "working", ("forward", "backward"), "forward")
         shape = _shape(where, t.get("shape"))
         out.append(Load(i, point=point, value=value, stroke=stroke, shape=shape))  # type: ignore[arg-type]
-    return tuple(out), working
+    if drive_working is not None and not has_strokes:
+        raise FileKeyError(
+            "drive.working",
+            drive_working,
+            f'the output "{output}" is neither a slider nor a rocker: it has no working stroke',
+        )
+    return tuple(out), working, said  # type: ignore[return-value]
 
 
 def _shape(where: str, v: object) -> tuple[tuple[float, float], ...]:

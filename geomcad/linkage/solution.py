@@ -7,11 +7,14 @@
 from __future__ import annotations
 
 import math
+import re
 from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
 
+from geomcad import tol
+from geomcad.errors import ConstructionError
 from geomcad.geom import Vec
 from geomcad.linkage.cycle import Cycle, cycle, numbered, stroke_middles
 from geomcad.linkage.model import Linkage
@@ -36,6 +39,9 @@ class Solved:
     cycle: Cycle | None
     positions: tuple[Position, ...]
     accel_phis: tuple[float, ...]
+    #: the numbered positions 0 … N−1 (``positions = N``, default 12), always solved and drawn;
+    #: the same objects as ``positions`` when the file lists no ``phi``
+    drawn: tuple[Position, ...] = ()
 
     @property
     def numbered(self) -> bool:
@@ -84,18 +90,32 @@ def scheme(lk: Linkage, P: Position) -> Mechanism:
 
 
 def solve(lk: Linkage) -> Solved:
-    """Solve the linkage: its cycle, its numbered (or listed) positions, their plans."""
+    """Solve the linkage: its cycle, its numbered (and listed) positions, their plans."""
     # the whole turn first: a group that cannot close anywhere is named with its crank angle
-    sweep(lk, np.linspace(0.0, 2.0 * math.pi, TURN_SAMPLES, endpoint=False), order=2)
+    # (the angle the user can find, not the sweep's internal index)
+    try:
+        sweep(lk, np.linspace(0.0, 2.0 * math.pi, TURN_SAMPLES, endpoint=False), order=2)
+    except ConstructionError as e:
+        why = re.sub(
+            r"first at position index \d+, at the crank angle", "first at the crank angle", e.why
+        )
+        raise type(e)(e.step, why) from None
     cyc = cycle(lk)
-    phis = list(lk.phi) if lk.phi is not None else numbered(lk, cyc, lk.positions)
-    positions = tuple(construct(lk, phi) for phi in phis)
+    if cyc is None and lk.rocker:
+        from geomcad.errors import FileKeyError
+
+        why = f"the output link {lk.rocker} turns fully (a crank): it has no strokes"
+        bad = next((ld for ld in lk.loads if ld.on_stroke), None)
+        if bad is not None:
+            raise FileKeyError(f"load {bad.index}: stroke", bad.stroke, why)
+        if lk.working_key:
+            raise FileKeyError(lk.working_key, lk.working, why)
+    drawn = tuple(construct(lk, phi) for phi in numbered(lk, cyc, lk.positions))
+    positions = drawn if lk.phi is None else tuple(construct(lk, phi) for phi in lk.phi)
     m = scheme(lk, positions[0])
     W = chebyshev(m.n, m.p5, m.p4)
     mob = mobility(m)
     if W != 1 or mob.true != 1:
-        from geomcad.errors import ConstructionError
-
         raise ConstructionError(
             "structure",
             f"the mechanism has W = {W} (true mobility {mob.true}); a crank drives W = 1",
@@ -103,10 +123,60 @@ def solve(lk: Linkage) -> Solved:
     if lk.phi is not None:
         accel = tuple(lk.phi[:2])
     elif cyc is not None:
-        accel = stroke_middles(lk, cyc)
+        accel = largest_accelerations(lk, cyc, drawn)
     else:
-        accel = (phis[0], phis[len(phis) // 2])
-    return Solved(lk, m, W, cyc, positions, accel)
+        accel = (drawn[0].phi, drawn[len(drawn) // 2].phi)
+    return Solved(lk, m, W, cyc, positions, accel, drawn)
+
+
+def output_acceleration(lk: Linkage, P: Position) -> float:
+    """The output's acceleration at P: a slider's along its guide (relative to a moving
+    guide's link), a rocker's ε."""
+    if lk.rocker:
+        return P.eps[lk.rocker]
+    g = lk.output_guide
+    assert g is not None
+    if g.kind == "PRP":
+        assert g.guide is not None
+        return P.acc[lk.output].dot(g.guide.direction)
+    d = P.slide[g.links[1]]
+    a = P.acc[lk.output]
+    gd = g.guide
+    if gd is not None and not gd.fixed:
+        r = P.pos[lk.output] - P.pos[gd.frm]
+        w, e = P.omega[gd.link], P.eps[gd.link]
+        a = a - P.acc[gd.frm] - Vec(-r.y, r.x) * e + r * (w * w)
+    return a.dot(d)
+
+
+def largest_accelerations(
+    lk: Linkage, cyc: Cycle, drawn: tuple[Position, ...]
+) -> tuple[float, ...]:
+    """The crank angles of the acceleration plans by default: in each stroke (working, then
+    idle) the first numbered position where |the output's acceleration| is largest (within
+    :data:`~geomcad.tol.DERIVED` of the maximum, relative); a stroke with no numbered position
+    inside it gives its middle."""
+    n = len(drawn)
+    step = 2.0 * math.pi / n
+    edge = tol.DERIVED
+    working: list[int] = []
+    idle: list[int] = []
+    for k in range(n):
+        turn = k * step  # the crank's turn from position 0, the working stroke's start
+        if edge < turn < cyc.phi_working - edge:
+            working.append(k)
+        elif cyc.phi_working + edge < turn:
+            idle.append(k)
+    mids = stroke_middles(lk, cyc)
+    out = []
+    for ks, mid in ((working, mids[0]), (idle, mids[1])):
+        if not ks:
+            out.append(mid)
+            continue
+        a = [abs(output_acceleration(lk, drawn[k])) for k in ks]
+        top = max(a)
+        out.append(drawn[next(k for k, x in zip(ks, a, strict=True) if x >= top * (1 - edge))].phi)
+    return tuple(out)
 
 
 def _xy(out: dict[str, Any], key: str, v: Vec) -> None:
@@ -157,7 +227,10 @@ def results(s: Solved) -> dict[str, Any]:
         "formula": formula(lk),
     }
     if s.cycle is not None:
-        out["stroke"] = s.cycle.stroke
+        if lk.rocker:
+            out["swing_deg"] = s.cycle.swing_deg
+        else:
+            out["stroke"] = s.cycle.stroke
         out["K"] = s.cycle.K
     out["positions"] = [position_results(lk, P) for P in s.positions]
     from geomcad.linkage.analysis import add_results  # forces and dynamics (issue 15)

@@ -50,6 +50,7 @@ __all__ = [
     "output_velocity",
     "plan",
     "prp_frame",
+    "rocker_angle",
     "rpr_direction",
     "sweep",
 ]
@@ -180,8 +181,24 @@ def prp_frame(g: Group) -> tuple[Arr, Arr, Arr]:
     return q, np.array([gdir.x, gdir.y]), np.array([sdir.x, sdir.y])
 
 
+def rocker_angle(lk: Linkage, s: State) -> Arr:
+    """The rocker output's angle ψ (rad, ccw > 0, in (−π, π]): an RRR link's direction from its
+    frame pivot to its joint, an RPR link 3's slide line's direction."""
+    link = lk.rocker
+    if lk.has_slide(link):
+        d = s.slide[link]
+    else:
+        pivot = lk.frame_pivot(link)
+        other = next(p for p in lk.link_points(link) if p != pivot)
+        d = s.pos[other] - s.pos[pivot]
+    return np.asarray(np.arctan2(d[:, 1], d[:, 0]), dtype=np.float64)
+
+
 def output_coordinate(lk: Linkage, s: State) -> Arr | None:
-    """s of the output slider along its guide (m), or ``None`` when the output is no slider."""
+    """s of the output slider along its guide (m), or the rocker's angle ψ (rad, unwrapped
+    along the sweep), or ``None`` when the output is neither."""
+    if lk.rocker:
+        return np.asarray(np.unwrap(rocker_angle(lk, s)), dtype=np.float64)
     g = lk.output_guide
     if g is None:
         return None
@@ -193,7 +210,10 @@ def output_coordinate(lk: Linkage, s: State) -> Arr | None:
 
 
 def output_velocity(lk: Linkage, s: State) -> Arr | None:
-    """ds/dt of the output slider along its guide (its relative velocity on a moving guide)."""
+    """ds/dt of the output slider along its guide (its relative velocity on a moving guide), or
+    the rocker's ω."""
+    if lk.rocker:
+        return np.asarray(s.omega[lk.rocker], dtype=np.float64)
     g = lk.output_guide
     if g is None:
         return None

@@ -31,8 +31,8 @@ from geomcad.errors import ParameterError
 from geomcad.geom import Vec
 from geomcad.linkage.model import Linkage
 from geomcad.linkage.plans import Position, construct
-from geomcad.linkage.solution import Solved
-from geomcad.linkage.sweep import output_coordinate, prp_frame, sweep
+from geomcad.linkage.solution import Solved, scheme
+from geomcad.linkage.sweep import output_coordinate, prp_frame, rocker_angle, sweep
 from geomcad.sheet import Drawing, Sheet, TitleBlock, fmt_number, formats
 from geomcad.sheet.compose import (
     Choice,
@@ -183,7 +183,7 @@ class Layout:
 def _accel_positions(s: Solved) -> tuple[Position, ...]:
     lk = s.linkage
     return tuple(
-        next((P for P in s.positions if abs(P.phi - phi) <= tol.ANGLE), None) or construct(lk, phi)
+        next((P for P in s.drawn if abs(P.phi - phi) <= tol.ANGLE), None) or construct(lk, phi)
         for phi in s.accel_phis
     )
 
@@ -195,17 +195,17 @@ def _trees(
     high, and the scales (model units per mm) the format is chosen to reach: the mechanism's
     and the velocity plans'."""
     lk = s.linkage
-    n = len(s.positions)
+    n = len(s.drawn)
     second = n > PLANS_ON_SHEET
     mech = _Mechanism(s)
     # vectors shorter than two arrowheads are drawn as their lettered end point (a note says so)
     vviews = [
         PlanView(P.vp, title=WORDS("position", i=i, phi=_deg(P.phi)), group="v",
                  show_scale=False, weight=2.0, min_mm=SHORT_MM)
-        for i, P in enumerate(s.positions)
+        for i, P in enumerate(s.drawn)
     ]  # fmt: skip
     vplans = Grid(*vviews, title=WORDS("vplans"), group="v", title_height=TITLE_H)
-    detail = accel[0] if accel else s.positions[0]
+    detail = accel[0] if accel else s.drawn[0]
     aplans: Tree = Grid(
         *[
             PlanView(P.ap, title=WORDS("aplan", phi=_deg(P.phi)), group="a", show_scale=False,
@@ -216,7 +216,7 @@ def _trees(
         group="a",
         title_height=TITLE_H,
     )  # fmt: skip
-    if all(P is not detail for P in s.positions):
+    if all(P is not detail for P in s.drawn):
         # the velocity plan of the position drawn in detail, beside its acceleration plans
         vdetail = PlanView(detail.vp, title=WORDS("vplan_detail", phi=_deg(detail.phi)),
                            group="v", weight=2.0, min_mm=SHORT_MM)  # fmt: skip
@@ -266,7 +266,7 @@ class _Note(Text):
 def _order_title(s: Solved, P: Position) -> str:
     """The order's title: the position's angle, and its number where its velocity plan is one
     of the numbered ones."""
-    i = next((i for i, Q in enumerate(s.positions) if Q is P), None)
+    i = next((i for i, Q in enumerate(s.drawn) if Q is P), None)
     if i is None:
         return WORDS("order", phi=_deg(P.phi))
     return WORDS("order_at", i=i, phi=_deg(P.phi))
@@ -275,7 +275,7 @@ def _order_title(s: Solved, P: Position) -> str:
 def _short(s: Solved, accel: Sequence[Position], lays: Sequence[Arranged]) -> bool:
     """Whether a plan vector comes out shorter than two arrowheads at the arranged scales."""
     k_v, k_a = lays[-1].scale("v"), lays[0].scale("a")
-    plans = [(P.vp, k_v) for P in [*s.positions, *accel]] + [(P.ap, k_a) for P in accel]
+    plans = [(P.vp, k_v) for P in [*s.drawn, *accel]] + [(P.ap, k_a) for P in accel]
     return any(
         k.mm((plan.points[v.head] - plan.points[v.tail]).norm) < SHORT_MM
         for plan, k in plans
@@ -385,19 +385,29 @@ def file_title(lk: Linkage) -> str:
 def _through(s: Solved) -> str:
     lk = s.linkage
     n = _divisions(s)
-    through = (
-        WORDS("through_positions", last=n - 1)
-        if lk.phi is None
-        else WORDS("through_divisions", n=n)
-    )
+    del lk
+    through = WORDS("through_positions", last=n - 1)
     return WORDS("diagrams_note", through=through)
 
 
 def _divisions(s: Solved) -> int:
-    return max(len(s.positions), 12) if s.linkage.phi is not None else len(s.positions)
+    return len(s.drawn)
 
 
 # --- the mechanism ----------------------------------------------------------------------------
+
+
+def _principal(s: Solved) -> tuple[Position, int | None]:
+    """The position drawn in main lines and its number (``None``: not a numbered one): the
+    force analysis' position where the file gives masses or loads, else position 0."""
+    lk = s.linkage
+    if lk.masses or lk.loads:
+        from geomcad.linkage.analysis import analyse
+
+        a = analyse(s)
+        if a.force_position is not None:
+            return a.force_position, a.force_index
+    return s.drawn[0], 0
 
 
 def link_bodies(
@@ -454,7 +464,7 @@ def _mechanism_extent(s: Solved) -> tuple[float, float, float, float]:
     bodies, the crank circle and the traced paths, with a little room round them."""
     lk = s.linkage
     pts: list[Vec] = []
-    for P in s.positions:
+    for P in (*s.drawn, _principal(s)[0]):
         pts += list(P.pos.values())
         for bodies in link_bodies(lk, P).values():
             for b in bodies:
@@ -478,12 +488,13 @@ def _paths(lk: Linkage) -> dict[str, list[Vec]]:
 
 
 class _Mechanism(View):
-    """The mechanism in all its numbered positions: position 0 in main lines with its scheme's
-    symbols, the others in thin lines, the crank circle and the paths of the named points."""
+    """The mechanism in all its numbered positions: the principal one (:func:`_principal`) in
+    main lines with its scheme's symbols, the others in thin lines, the crank circle and the
+    paths of the named points."""
 
     def __init__(self, s: Solved) -> None:
         super().__init__(
-            title=WORDS("mech", last=len(s.positions) - 1), title_height=5.0, margin=6.0,
+            title=WORDS("mech", last=len(s.drawn) - 1), title_height=5.0, margin=6.0,
             weight=2.0,
         )  # fmt: skip
         self.s = s
@@ -500,10 +511,11 @@ class _Mechanism(View):
         v.circle(lk.frame[lk.pivot], lk.length, "centre")
         for path in _paths(lk).values():
             v.polyline(path, "centre")
-        # every other position in thin lines, numbered at the crank's joint and the output
-        P0 = s.positions[0]
-        for i, P in enumerate(s.positions):
-            if i > 0:
+        # every other position in thin lines, numbered at the crank's joint and the output; the
+        # principal one (the force analysis' position, else position 0) in main lines
+        P0, k0 = _principal(s)
+        for i, P in enumerate(s.drawn):
+            if i != k0:
                 for bodies in link_bodies(lk, P).values():
                     for b in bodies:
                         v.polyline(b.points, "thin", closed=b.closed)
@@ -511,11 +523,12 @@ class _Mechanism(View):
                 v.dot(P.pos[name])
                 v.label(P.pos[name], f"{name}_{{{i}}}", 2.5, clear=1.0)
         labels = {}
-        for pair in s.scheme.pairs:
+        mech = scheme(lk, P0)  # the pairs where the principal position has them
+        for pair in mech.pairs:
             name = pair.name.split(":")[0]
             if name in P0.pos and name not in (lk.joint, lk.output):
                 labels[pair.name] = name
-        draw_scheme(v, s.scheme, bodies=link_bodies(lk, P0), pair_labels=labels, label_height=3.5)
+        draw_scheme(v, mech, bodies=link_bodies(lk, P0), pair_labels=labels, label_height=3.5)
         for p in lk.points:
             if p.name not in labels.values():
                 v.dot(P0.pos[p.name])
@@ -534,7 +547,7 @@ def _output_curves(
     ccw > 0, rad), ω and ε."""
     lk = s.linkage
     sign = 1.0 if lk.omega > 0 else -1.0
-    phi = s.positions[0].phi + sign * psi
+    phi = s.drawn[0].phi + sign * psi
     st = sweep(lk, phi, order=2)
     g = lk.output_guide
     if g is not None and s.cycle is not None:
@@ -559,10 +572,13 @@ def _output_curves(
         a_m = fwd * (acc * sl).sum(axis=1)
         names = [("S", WORDS("m"), "s"), ("v", WORDS("m_s"), "v"), ("a", WORDS("m_s2"), "a")]
         return names, s_m, v_m, a_m
-    link = lk.owner[lk.output]
-    base = next(p for p in lk.points_on(link) if p != lk.output)
-    r = st.pos[lk.output] - st.pos[base]
-    ang = np.unwrap(np.arctan2(r[:, 1], r[:, 0]))
+    link = lk.rocker or lk.owner[lk.output]
+    if lk.rocker:
+        ang = np.unwrap(rocker_angle(lk, st))
+    else:
+        base = next(p for p in lk.points_on(link) if p != lk.output)
+        r = st.pos[lk.output] - st.pos[base]
+        ang = np.unwrap(np.arctan2(r[:, 1], r[:, 0]))
     names = [
         (f"ψ_{{{link}}}", WORDS("rad"), "ψ"),
         (f"ω_{{{link}}}", WORDS("per_s"), "ω"),
@@ -607,25 +623,33 @@ def _tables(s: Solved, accel: Sequence[Position], h: float = TEXT_H) -> list[Tab
     accelerations (with the output's) in the positions of the acceleration plans, written ``h``
     high."""
     lk = s.linkage
-    links = [i for i in lk.moving_links if i != 1 and _turns(lk, i)]
     per_s, per_s2 = WORDS("per_s"), WORDS("per_s2")
-    head = [
-        "№", "φ_1, °", f"V_{{{lk.output}}}, {WORDS('m_s')}",
-        *[f"ω_{{{i}}}, {per_s}" for i in links],
-    ]  # fmt: skip
+    r = lk.rocker
+    # a rocker output: its ω (its ε) first, in place of the output point's V (a)
+    links = [i for i in lk.moving_links if i not in (1, r) and _turns(lk, i)]
+    if r:
+        out_v = f"ω_{{{r}}}, {per_s}"
+        first = [_zeroed([P.omega[r] for P in s.drawn], abs(lk.omega))]
+        out_a = f"ε_{{{r}}}, {per_s2}"
+        first_a = [_zeroed([P.eps[r] for P in accel], lk.omega**2)]
+    else:
+        out_v = f"V_{{{lk.output}}}, {WORDS('m_s')}"
+        scale_v = abs(lk.omega) * lk.length
+        first = [_zeroed([P.vel[lk.output].norm for P in s.drawn], scale_v)]
+        out_a = f"a_{{{lk.output}}}, {WORDS('m_s2')}"
+        first_a = [_zeroed([P.acc[lk.output].norm for P in accel], lk.omega**2 * lk.length)]
+    head = ["№", "φ_1, °", out_v, *[f"ω_{{{i}}}, {per_s}" for i in links]]
     rows = [head, *_columns(
-        [float(i) for i in range(len(s.positions))],
-        [math.degrees(P.phi) % 360 for P in s.positions],
-        _zeroed([P.vel[lk.output].norm for P in s.positions], abs(lk.omega) * lk.length),
-        *[_zeroed([P.omega[j] for P in s.positions], abs(lk.omega)) for j in links],
+        [float(i) for i in range(len(s.drawn))],
+        [math.degrees(P.phi) % 360 for P in s.drawn],
+        *first,
+        *[_zeroed([P.omega[j] for P in s.drawn], abs(lk.omega)) for j in links],
         angle=1,
     )]  # fmt: skip
-    head2 = [
-        "φ_1, °", f"a_{{{lk.output}}}, {WORDS('m_s2')}", *[f"ε_{{{i}}}, {per_s2}" for i in links]
-    ]  # fmt: skip
+    head2 = ["φ_1, °", out_a, *[f"ε_{{{i}}}, {per_s2}" for i in links]]
     rows2 = [head2, *_columns(
         [math.degrees(P.phi) % 360 for P in accel],
-        _zeroed([P.acc[lk.output].norm for P in accel], lk.omega**2 * lk.length),
+        *first_a,
         *[_zeroed([P.eps[j] for P in accel], lk.omega**2) for j in links],
         angle=0,
     )]  # fmt: skip
@@ -684,7 +708,7 @@ def motion(s: Solved, frames: int) -> Frames:
     their guides, the paths of the named points and the output, and the velocity plan with its
     relative velocities along each link."""
     lk = s.linkage
-    phi = turn(frames, s.positions[0].phi, 1.0 if lk.omega > 0 else -1.0)
+    phi = turn(frames, s.drawn[0].phi, 1.0 if lk.omega > 0 else -1.0)
     st = sweep(lk, phi, order=1)
     pos, vel = st.pos, st.vel
     names = [*lk.frame, *(n for n in lk.owner if n not in lk.frame)]

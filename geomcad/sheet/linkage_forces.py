@@ -91,17 +91,13 @@ LEVER_LOAD_MM = 40.0
 TABLE2_W = 60.0
 
 
-def force_position(s: Solved) -> int:
-    """The index of the position drawn on sheet 2: the file's first ``phi``, else the numbered
-    position nearest the middle of the working stroke (its first acceleration plan's angle)."""
-    if s.linkage.phi is not None or not s.accel_phis:
-        return 0
-    mid = s.accel_phis[0]
-
-    def off(P: Position) -> float:
-        return abs(math.remainder(P.phi - mid, 2.0 * math.pi))
-
-    return min(range(len(s.positions)), key=lambda i: off(s.positions[i]))
+def force_position(s: Solved) -> tuple[Position, Forces, int | None]:
+    """The position drawn on sheet 2, its forces and its number (``None``: a ``[forces] phi``
+    that is none of the numbered positions): the force analysis' position of
+    :func:`~geomcad.linkage.analysis.analyse` (``[forces]``, else its default)."""
+    a = analyse(s)
+    assert a.force_position is not None and a.force_forces is not None
+    return a.force_position, a.force_forces, a.force_index
 
 
 def force_sheets(
@@ -118,9 +114,8 @@ def force_sheets(
     no = first_no
     fmts = sheet_formats(lk)
     if a.forces is not None:
-        k = force_position(s)
-        forces = a.forces[k]
-        tree, z = fit(lambda h: _sheet2(s, s.positions[k], forces, k, h), fmts)
+        P, forces, k = force_position(s)
+        tree, z = fit(lambda h: _sheet2(s, P, forces, k, h), fmts)
         d = z.start(_title(lk, WORDS("forces"), designation, no, count))
         compose(d, tree, layout=z.layout)
         sheet = d.finish()
@@ -153,10 +148,14 @@ def _num(x: float, digits: int = 4, scale: float = 0.0) -> str:
 # --- sheet 2 ------------------------------------------------------------------------------
 
 
-def _sheet2(s: Solved, P: Position, f: Forces, k: int, h: float) -> tuple[Tree, dict[View, float]]:
+def _sheet2(
+    s: Solved, P: Position, f: Forces, k: int | None, h: float
+) -> tuple[Tree, dict[View, float]]:
     """Sheet 2's tree, its tables and texts ``h`` high, and the scale its mechanism wants."""
     lk = s.linkage
-    mech = _Loaded(lk, P, f, WORDS("mech", k=k, phi=_num(math.degrees(P.phi) % 360.0)))
+    phi = _num(math.degrees(P.phi) % 360.0)
+    title = WORDS("mech", k=k, phi=phi) if k is not None else WORDS("mech_phi", phi=phi)
+    mech = _Loaded(lk, P, f, title)
     bodies = [_FreeBody(lk, P, gf) for gf in f.groups]
     # each group's polygons under the group cut out (the crank's under the crank)
     per_group = [
