@@ -83,7 +83,10 @@ def spec_of(name: str) -> ResultSpec | None:
 def make_problem(file_id: str, data: dict[str, Any]) -> Problem[Solved]:
     """The problem a linkage file states (raises :class:`~geomcad.errors.FileKeyError` for a
     bad file)."""
-    lk = parse(data)
+    from geomcad.linkage import synthesis  # a [synthesis] table: the explicit file it finds
+
+    syn = synthesis.synthesize(data) if synthesis.is_synthesis(data) else None
+    lk = parse(syn.linkage if syn is not None else data)
 
     def build(values: Mapping[str, ParamValue]) -> Build[Solved]:
         s = solve(lk)
@@ -92,6 +95,8 @@ def make_problem(file_id: str, data: dict[str, Any]) -> Problem[Solved]:
         from geomcad.sheet.linkage import sheet_scales
 
         proto = Protocol(lk.title, [P.c for P in s.positions] + analyse(s).constructions)
+        if syn is not None:
+            synthesis.attach(s, syn, res, proto)
         return Build(res, proto, [], sheet_scales(s), data=s)
 
     def draw(sol: Solution[Solved]) -> list[tuple[str, Sheet]]:
@@ -102,7 +107,10 @@ def make_problem(file_id: str, data: dict[str, Any]) -> Problem[Solved]:
         from geomcad.sheet.linkage_forces import force_sheets  # sheets 2 and 3 (issue 15)
 
         kinematic = kinematic_sheets(solved, stem(file_id))
-        return kinematic + force_sheets(solved, stem(file_id), first_no=len(kinematic) + 1)
+        sheets = kinematic + force_sheets(solved, stem(file_id), first_no=len(kinematic) + 1)
+        from geomcad.sheet.synthesis import with_sheet  # the synthesis' own sheet, first
+
+        return with_sheet(solved, stem(file_id), sheets)
 
     def motion(sol: Solution[Solved], frames: int) -> Frames:
         from geomcad.sheet.linkage import motion as linkage_motion
