@@ -65,6 +65,12 @@ TOP: tuple[ResultSpec, ...] = (
     ResultSpec("M_pr", "N·m", "the reduced moment of the loads at the numbered positions"),
     ResultSpec("omega_max", "rad/s", "the largest crank speed allowed by δ"),
     ResultSpec("omega_min", "rad/s", "the smallest crank speed allowed by δ"),
+    # results.synthesis (issue 31): the lengths found, θ, γ_min
+    ResultSpec("l1", "m", "the crank's length found by the synthesis", "ls"),
+    ResultSpec("l2", "m", "the rod's (coupler's) length found by the synthesis", "ls"),
+    ResultSpec("l3", "m", "the lever's length C–B found by the synthesis", "ls"),
+    ResultSpec("theta_deg", "deg", "the angle of overlap θ = 180°·(K − 1)/(K + 1)"),
+    ResultSpec("gamma_min_deg", "deg", "the least transmission angle over a turn"),
 )
 
 
@@ -95,9 +101,13 @@ def make_problem(file_id: str, data: dict[str, Any]) -> Problem[Solved]:
         from geomcad.sheet.linkage import sheet_scales
 
         proto = Protocol(lk.title, [P.c for P in s.positions] + analyse(s).constructions)
-        if syn is not None:
+        scales = sheet_scales(s)
+        if syn is not None:  # and k_l of the synthesis sheet, "ls" (verify's synthesis.l1_mm)
+            from geomcad.sheet.synthesis import synthesis_scale
+
             synthesis.attach(s, syn, res, proto)
-        return Build(res, proto, [], sheet_scales(s), data=s)
+            scales = {**scales, "ls": synthesis_scale(syn)}
+        return Build(res, proto, [], scales, data=s)
 
     def draw(sol: Solution[Solved]) -> list[tuple[str, Sheet]]:
         from geomcad.sheet.linkage import kinematic_sheets

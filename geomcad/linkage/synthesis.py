@@ -57,7 +57,7 @@ from scipy.optimize import brentq, minimize_scalar
 
 from geomcad import tol
 from geomcad.construction import Construction, Where, nearest
-from geomcad.errors import FileKeyError
+from geomcad.errors import FileKeyError, GeomcadError
 from geomcad.geom import Arc, Circle, Line, Vec, mirror_circle
 from geomcad.linkage.model import DRIVE_KEYS, MAX_LENGTH, MIN_LENGTH, _check_keys, _number
 
@@ -696,6 +696,15 @@ def emit(syn: Synthesis) -> str:
     that it loads to the same mechanism)."""
     found = ", ".join(f"{k} = {v:.9g}" for k, v in syn.results.items())
     return f"# The mechanism found by the synthesis ({syn.kind}): {found}\n" + dumps(syn.linkage)
+
+
+def emitted(file_id: str, solved: object) -> str:
+    """``solve FILE --emit-linkage``: the explicit file of the synthesis that found ``solved``;
+    a :class:`GeomcadError` for anything that is no file with ``[synthesis]``."""
+    syn = of(solved)
+    if syn is None:
+        raise GeomcadError("--emit-linkage: the file has no [synthesis] table to find a linkage by")
+    return emit(syn)
 
 
 def dumps(data: Mapping[str, Any]) -> str:

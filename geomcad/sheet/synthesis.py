@@ -100,8 +100,12 @@ def _extras(syn: Synthesis) -> object:
     return draw
 
 
-def synthesis_sheet(syn: Synthesis, stem: str = "") -> Sheet:
-    """The synthesis sheet (A3 landscape, composed; see the module's docstring)."""
+def synthesis_scale(syn: Synthesis) -> float:
+    """k_l (m/mm) of the synthesis sheet's drawing."""
+    return _arranged(syn)[2].k
+
+
+def _arranged(syn: Synthesis) -> tuple[Row, Layout, Scale]:
     c: Construction = syn.construction
     box = extent(c)
     pad = 0.08 * max(box[2] - box[0], box[3] - box[1])
@@ -116,7 +120,12 @@ def synthesis_sheet(syn: Synthesis, stem: str = "") -> Sheet:
     tree = Row(fig, Column(Row(given, found), order))
     lay: Layout = arrange(tree, Field.of_format("A3"))
     got = lay[fig].scale
-    k = got if got is not None else Scale(0.001, "l")
+    return tree, lay, got if got is not None else Scale(0.001, "l")
+
+
+def synthesis_sheet(syn: Synthesis, stem: str = "") -> Sheet:
+    """The synthesis sheet (A3 landscape, composed; see the module's docstring)."""
+    tree, lay, k = _arranged(syn)
     tb = TitleBlock(
         title=WORDS("tb_title"),
         designation=KIN_WORDS("designation", stem=stem or KIN_WORDS("stem")),
