@@ -604,7 +604,7 @@ def _slotted_lever(H: float, K: float, l0: float, rod: float, sense: float) -> S
     side = 1.0 if _slow_forward(sense, (A0 - Op).angle, (A1 - Op).angle) else -1.0
     c = first if side > 0 else _lever_construction(H, K, l0, rod, side)
     res = {"theta_deg": math.degrees(theta), "l1": c["l1"], "l3": c["l3"]}
-    Op, C, yg = c["O"], c["C"], c["guide"].p.y
+    Op, C, yg = c["O"], c["C"], c["x-x"].p.y
     lk = {
         "frame": {"O": [Op.x, Op.y], "C": [C.x, C.y]},
         "drive": {"pivot": "O", "joint": "A", "length": c["l1"], "output": "D"},
@@ -649,7 +649,7 @@ def _lever_construction(H: float, K: float, l0: float, rod: float, side: float) 
              role="aux", kind="syn_arc", args={"c": C})  # fmt: skip
     sag = l3 * (1.0 - math.cos(theta / 2.0))
     yg = side * (l3 - sag / 2.0)
-    guide = c.line("guide", Vec(0.0, yg), (1.0, 0.0), "the ram's guide ⊥ CO at half the sagitta",
+    guide = c.line("x-x", Vec(0.0, yg), (1.0, 0.0), "the ram's guide ⊥ CO at half the sagitta",
                    role="aux", kind="syn_ram_guide", args={"f": sag})  # fmt: skip
     ahead = Where(lambda q: True, "ahead of B along the guide")  # the text of the rule below
     D0 = c.intersect("D0", guide, c.circle("kD0", B0, rod, role="hidden", r_name="l_BD"),

@@ -37,7 +37,7 @@ ORDER_W = 150.0
 
 #: The steps the order of construction lists (those a kind records, in their recorded order).
 ORDER = ("θ", "l1", "l2", "C", "O", "B0", "B1", "x-x", "n0", "r1", "P", "Γ", "Γ'", "kO", "m",
-         "t0", "t1", "A0", "A1", "OB0", "OB1", "p0", "p1", "l3", "guide", "D0", "D1",
+         "t0", "t1", "A0", "A1", "OB0", "OB1", "p0", "p1", "l3", "D0", "D1",
          "γmin", "H_check")  # fmt: skip
 
 #: The given data and results as the sheet writes them: key → (symbol, unit).
@@ -49,7 +49,7 @@ SYMBOLS: dict[str, tuple[str, str]] = {
     "swing_deg": ("ψ", "°"),
     "rocker": ("l_3", "m"),
     "frame": ("l_0", "m"),
-    "rod": ("l_BD", "m"),
+    "rod": ("l_{BD}", "m"),
     "theta_deg": ("θ", "°"),
     "l1": ("l_1", "m"),
     "l2": ("l_2", "m"),
@@ -93,8 +93,11 @@ def _extras(syn: Synthesis) -> object:
         if syn.kind == "slider-crank" and e > 0.0:
             foot = Vec(pivot.x, 0.0)
             v.dim_linear(foot, pivot, f"e = {num(e, 4)}", offset=-8.0 if pivot.y > 0 else 8.0)
-        if syn.kind == "slider-crank":
-            for name in ("B0", "B1"):
+        if syn.kind == "crank-rocker":
+            psi = syn.given["swing_deg"]
+            v.dim_angle(c["C"], c["B0"], c["B1"], f"ψ = {num(psi, 4)}°", r_mm=12.0)
+        for name in ("B0", "B1") if syn.kind == "slider-crank" else ("D0", "D1"):
+            if name in c:
                 v.slider(c[name])
 
     return draw
@@ -111,7 +114,7 @@ def _arranged(syn: Synthesis) -> tuple[Row, Layout, Scale]:
     pad = 0.08 * max(box[2] - box[0], box[3] - box[1])
     box = (box[0] - pad, box[1] - pad, box[2] + pad, box[3] + pad)
     title = WORDS("title_lambda" if "lambda" in syn.given else "title")
-    labels = {"Γ": "Γ", "Γ'": "Γ'", "x-x": "x–x", "m": "m", "guide": "x–x"}
+    labels = {"Γ": "Γ", "Γ'": "Γ'", "x-x": "x–x", "m": "m"}
     fig = Replay(c, labels=labels, box=box, extra=_extras(syn), title=title, weight=2.0)  # type: ignore[arg-type]
     given = Table(_rows(syn.given), title=WORDS("data"))
     found = Table(_rows(syn.results), title=WORDS("results"))
