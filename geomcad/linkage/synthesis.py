@@ -419,9 +419,9 @@ def _slider_lambda_construction(
     k0 = c.circle("k0", Op, l2 - l1, role="hidden", r_name="l2 – l1")
     kk = c.circle("k2", Op, l1 + l2, role="hidden", r_name="l1 + l2")
     B0 = c.intersect("B0", guide, k0, ahead, role="result", kind="syn_extreme",
-                     args={"r": "l2 – l1", "o": Op})  # fmt: skip
+                     args={"r": "l_{2} – l_{1}", "o": Op})  # fmt: skip
     B1 = c.intersect("B1", guide, kk, ahead, role="result", kind="syn_extreme",
-                     args={"r": "l1 + l2", "o": Op})  # fmt: skip
+                     args={"r": "l_{1} + l_{2}", "o": Op})  # fmt: skip
     u0, u1 = B0 - Op, B1 - Op
     th = abs(math.atan2(u0.cross(u1), u0.dot(u1)))
     c.value("θ", th, "∠B0OB1", (B0, Op, B1), kind="syn_angle", args={"deg": math.degrees(th)})

@@ -2,7 +2,8 @@
 
 The kinematic sheet of a linkage is full (the mechanism in its numbered positions, a velocity
 plan for each, the acceleration plans, the diagrams), so the synthesis is a sheet of its own,
-the first of the set, as a course project starts with it. Left: the construction replayed by
+the first of the set, as a course project starts with it: A3, or A2 where A3 would draw the
+crank shorter than the kinematic sheet's 30 mm. Left: the construction replayed by
 its steps' roles (:mod:`geomcad.sheet.replay`): the output's extreme positions, the chord and
 the θ-circle (the perpendicular at B0 and the ray at 90° − θ meeting in P), the offset line,
 the pivot found, the crank and rod at both dead centres in phantom lines and the crank's
@@ -22,6 +23,7 @@ from geomcad.linkage import synthesis as syn_mod
 from geomcad.sheet import Scale, Sheet, TitleBlock, Viewport, start
 from geomcad.sheet.compose import Column, Field, Layout, Row, arrange, compose
 from geomcad.sheet.lang import Words, current
+from geomcad.sheet.linkage import CRANK_MM
 from geomcad.sheet.replay import Replay, extent
 from geomcad.sheet.views import Steps, Table, num
 
@@ -31,6 +33,12 @@ if TYPE_CHECKING:
 
 WORDS = Words("geomcad.sheet", "synthesis")
 KIN_WORDS = Words("geomcad.sheet", "linkage")
+
+#: The formats tried, smallest first, and the crank's least length on the drawing (mm), as the
+#: kinematic sheet asks it (geomcad/sheet/linkage.py).
+FORMATS = ("A3", "A2", "A1")
+FALLBACK = "A2"
+
 
 #: Width (mm) of the order of construction's text.
 ORDER_W = 150.0
@@ -92,7 +100,7 @@ def _extras(syn: Synthesis) -> object:
         e = syn.given.get("offset", 0.0)
         if syn.kind == "slider-crank" and e > 0.0:
             foot = Vec(pivot.x, 0.0)
-            v.dim_linear(foot, pivot, f"e = {num(e, 4)}", offset=-8.0 if pivot.y > 0 else 8.0)
+            v.dim_linear(foot, pivot, f"e = {num(e, 4)}", offset=10.0 if pivot.y > 0 else -10.0)
         if syn.kind == "crank-rocker":
             psi = syn.given["swing_deg"]
             v.dim_angle(c["C"], c["B0"], c["B1"], f"ψ = {num(psi, 4)}°", r_mm=12.0)
@@ -108,34 +116,44 @@ def synthesis_scale(syn: Synthesis) -> float:
     return _arranged(syn)[2].k
 
 
-def _arranged(syn: Synthesis) -> tuple[Row, Layout, Scale]:
+def _arranged(syn: Synthesis) -> tuple[Row, Layout, Scale, str]:
+    """The sheet's tree, its arrangement, k_l of the drawing and the format: the smallest of
+    :data:`FORMATS` on which the crank is drawn at least :data:`CRANK_MM` long, else
+    :data:`FALLBACK`."""
     c: Construction = syn.construction
     box = extent(c)
     pad = 0.08 * max(box[2] - box[0], box[3] - box[1])
     box = (box[0] - pad, box[1] - pad, box[2] + pad, box[3] + pad)
     title = WORDS("title_lambda" if "lambda" in syn.given else "title")
     labels = {"Γ": "Γ", "Γ'": "Γ'", "x-x": "x–x", "m": "m"}
-    fig = Replay(c, labels=labels, box=box, extra=_extras(syn), title=title, weight=2.0)  # type: ignore[arg-type]
-    given = Table(_rows(syn.given), title=WORDS("data"))
-    found = Table(_rows(syn.results), title=WORDS("results"))
     only: Sequence[str] = [n for n in ORDER if n in c]
-    order = Steps(c, ORDER_W, only=only, words=WORDS)
-    tree = Row(fig, Column(Row(given, found), order))
-    lay: Layout = arrange(tree, Field.of_format("A3"))
-    got = lay[fig].scale
-    return tree, lay, got if got is not None else Scale(0.001, "l")
+    made: dict[str, tuple[Row, Layout, Scale]] = {}
+    for fmt in FORMATS:
+        fig = Replay(c, labels=labels, box=box, extra=_extras(syn), title=title, weight=2.0)  # type: ignore[arg-type]
+        given = Table(_rows(syn.given), title=WORDS("data"))
+        found = Table(_rows(syn.results), title=WORDS("results"))
+        order = Steps(c, ORDER_W, only=only, words=WORDS)
+        tree = Row(fig, Column(Row(given, found), order))
+        lay: Layout = arrange(tree, Field.of_format(fmt))
+        got = lay[fig].scale
+        k = got if got is not None else Scale(0.001, "l")
+        made[fmt] = (tree, lay, k)
+        if syn.results["l1"] / k.k >= CRANK_MM:
+            return tree, lay, k, fmt
+    # no format draws the crank that long: A2, as A1 would stay half empty
+    return (*made[FALLBACK], FALLBACK)
 
 
 def synthesis_sheet(syn: Synthesis, stem: str = "") -> Sheet:
-    """The synthesis sheet (A3 landscape, composed; see the module's docstring)."""
-    tree, lay, k = _arranged(syn)
+    """The synthesis sheet (landscape, composed; see the module's docstring)."""
+    tree, lay, k, fmt = _arranged(syn)
     tb = TitleBlock(
         title=WORDS("tb_title"),
         designation=KIN_WORDS("designation", stem=stem or KIN_WORDS("stem")),
         scale=k.ratio_text(),
         lang=current(),
     )
-    d = start("A3", tb)
+    d = start(fmt, tb)
     compose(d, tree, layout=lay)
     return d.finish()
 
