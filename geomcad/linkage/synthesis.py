@@ -272,7 +272,8 @@ def _theta_circle(
 def _theta_step(c: Construction, K: float) -> float:
     theta = theta_of(K)
     c.value("θ", theta, "180°·(K − 1)/(K + 1), in radians", kind="syn_theta",
-            args={"K": K, "deg": math.degrees(theta)})  # fmt: skip
+            args={"K": K, "deg": math.degrees(theta)},
+            note=f"θ = {math.degrees(theta):.6g}° at K = {K:g}")  # fmt: skip
     return theta
 
 
@@ -677,7 +678,10 @@ def _arc_span(C: Vec, B0: Vec, B1: Vec, pad: float) -> tuple[float, float]:
 def attach(s: Any, syn: Synthesis, results: dict[str, Any], protocol: Any) -> None:
     """Keep the synthesis with the solved linkage ``s`` (:func:`of`): ``results.synthesis``,
     and its construction first in the protocol (``protocol.parts``)."""
-    results["synthesis"] = dict(syn.results)
+    rest = dict(results)
+    results.clear()
+    results["synthesis"] = dict(syn.results)  # first, as the solution starts with it
+    results.update(rest)
     protocol.parts.insert(0, syn.construction)
     object.__setattr__(s, "_synthesis", syn)
 
