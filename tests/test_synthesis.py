@@ -121,14 +121,16 @@ def crank_rocker(psi_deg: float, K: float, l3: float, l0: float) -> tuple[float,
 
 def output_cycle(lk: Any, rocker: bool) -> tuple[float, float]:
     """H (or ψ in rad) and K of the parsed linkage by a dense sweep: the output's two extremes
-    (roots of its velocity), K = the crank's turn while the output rises / while it falls."""
+    (roots of its velocity), K = the crank's turn while the output rises (along its guide's
+    direction, or ψ) / while it falls."""
 
     def at(phis: Any) -> tuple[np.ndarray, np.ndarray]:
         st = sweep(lk, np.asarray(phis, float), order=1)
         if rocker:
             d = st.pos["B"] - st.pos["C"]
             return np.arctan2(d[:, 1], d[:, 0]), st.omega[3] * np.ones(len(d))
-        return st.pos[lk.output][:, 0], st.vel[lk.output][:, 0]
+        u = lk.output_guide.guide.direction  # forward along the guide
+        return st.pos[lk.output] @ [u.x, u.y], st.vel[lk.output] @ [u.x, u.y]
 
     phi = np.linspace(0.0, 2.0 * math.pi, 3601)
     _, v = at(phi)

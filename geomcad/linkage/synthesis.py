@@ -35,13 +35,13 @@ file (``[frame]``, ``[drive]``, ``[[group]]``) that :func:`geomcad.linkage.parse
     sagitta of B's arc, so that the ram's stroke D0D1 is B0B1 = H.
 
 Where the mechanism sits (documented choices; the checks use lengths, angles, H/ψ and K):
-the slider-crank's guide is the x-axis (forward = +x), its pivot above it, or below it where
-the crank's sense of rotation makes the stroke towards +x the fast one; the slotted lever's C
-at the origin, O on the y-axis above (or below, by the same rule), the ram's guide along +x; the
-crank-rocker's C at the origin with the rocker's swing about +y. So the slider's working stroke
-(the slow one) is always ``forward``; the rocker's is ``forward`` (ψ rising) or ``backward`` as
-the crank's sense gives it, written in the emitted file where the loader knows ``[drive]
-working``. Point names: O, A, B (and C for the rocker, C, B, D for the slotted lever).
+the slider-crank's guide is the x-axis with the pivot above it; the slotted lever's C at the
+origin, O on the y-axis above it, the ram's guide above O. The guide's direction is +x where the
+stroke towards +x is the slow one for the crank's sense of rotation, else −x (``angle = 180``),
+so the slider's working (slow) stroke is always ``forward``. The crank-rocker's C is at the
+origin with the rocker's swing about +y; its slow swing is ``forward`` (ψ rising) or
+``backward`` as the crank's sense gives it, written in the emitted file where the loader knows
+``[drive] working``. Point names: O, A, B (and C for the rocker; C, B, D for the slotted lever).
 """
 
 from __future__ import annotations
@@ -299,10 +299,12 @@ def _slider_by_K(H: float, K: float, e: float, sense: float) -> Synthesis:
     first = _slider_K_construction(H, K, e, 1.0)
     Op, A0, A1 = (first[n] for n in ("O", "A0", "A1"))
     # the slow stroke runs forward (+x, B0 → B1): the pivot below the guide where it would not
-    side = 1.0 if _slow_forward(sense, (A0 - Op).angle, (A1 - Op).angle) else -1.0
-    c = first if side > 0 else _slider_K_construction(H, K, e, side)
+    # the slow stroke is the working one: forward along the guide's direction, +x where the
+    # stroke B0 → B1 is the slow one, else −x
+    way = 1.0 if _slow_forward(sense, (A0 - Op).angle, (A1 - Op).angle) else -1.0
+    c = first
     res = {"theta_deg": math.degrees(theta), "l1": c["l1"], "l2": c["l2"]}
-    return Synthesis("slider-crank", c, res, _slider_file(c, side), "forward",
+    return Synthesis("slider-crank", c, res, _slider_file(c, way), "forward",
                      {"stroke": H, "K": K, "offset": e})  # fmt: skip
 
 
@@ -398,10 +400,10 @@ def _slider_by_lambda(H: float, lam: float, e: float, sense: float) -> Synthesis
         raise FileKeyError("synthesis.lambda", lam, why)
     first = _slider_lambda_construction(H, lam, e, l1, 1.0)
     Op, A0, A1 = (first[n] for n in ("O", "A0", "A1"))
-    side = 1.0 if e == 0.0 or _slow_forward(sense, (A0 - Op).angle, (A1 - Op).angle) else -1.0
-    c = first if side > 0 else _slider_lambda_construction(H, lam, e, l1, side)
+    way = 1.0 if e == 0.0 or _slow_forward(sense, (A0 - Op).angle, (A1 - Op).angle) else -1.0
+    c = first
     res = {"theta_deg": math.degrees(c["θ"]), "l1": c["l1"], "l2": c["l2"]}
-    return Synthesis("slider-crank", c, res, _slider_file(c, side), "forward",
+    return Synthesis("slider-crank", c, res, _slider_file(c, way), "forward",
                      {"stroke": H, "lambda": lam, "offset": e})  # fmt: skip
 
 
@@ -432,14 +434,17 @@ def _slider_lambda_construction(
     return c
 
 
-def _slider_file(c: Construction, side: float) -> dict[str, Any]:
+def _slider_file(c: Construction, way: float) -> dict[str, Any]:
+    """The explicit file: the guide along +x (``way`` > 0) or −x, so that its forward stroke
+    is the slow one; B ahead of A's foot is then "forward" or "backward"."""
     Op = c["O"]
     return {
         "frame": {"O": [Op.x, Op.y]},
         "drive": {"pivot": "O", "joint": "A", "length": c["l1"], "output": "B"},
         "group": [
             {"kind": "RRP", "links": [2, 3], "joint": "B", "end": "A", "length": c["l2"],
-             "guide": {"through": [0.0, 0.0], "angle": 0.0}, "assembly": "forward"},
+             "guide": {"through": [0.0, 0.0], "angle": 0.0 if way > 0 else 180.0},
+             "assembly": "forward" if way > 0 else "backward"},
         ],
     }  # fmt: skip
 
@@ -602,8 +607,8 @@ def _slotted_lever(H: float, K: float, l0: float, rod: float, sense: float) -> S
         )
     first = _lever_construction(H, K, l0, rod, 1.0)
     Op, A0, A1 = (first[n] for n in ("O", "A0", "A1"))
-    side = 1.0 if _slow_forward(sense, (A0 - Op).angle, (A1 - Op).angle) else -1.0
-    c = first if side > 0 else _lever_construction(H, K, l0, rod, side)
+    way = 1.0 if _slow_forward(sense, (A0 - Op).angle, (A1 - Op).angle) else -1.0
+    c = first
     res = {"theta_deg": math.degrees(theta), "l1": c["l1"], "l3": c["l3"]}
     Op, C, yg = c["O"], c["C"], c["x-x"].p.y
     lk = {
@@ -612,7 +617,8 @@ def _slotted_lever(H: float, K: float, l0: float, rod: float, sense: float) -> S
         "group": [
             {"kind": "RPR", "links": [2, 3], "slider": "A", "pivot": "C", "offset": 0.0},
             {"kind": "RRP", "links": [4, 5], "joint": "D", "end": "B", "length": rod,
-             "guide": {"through": [0.0, yg], "angle": 0.0}, "assembly": "forward"},
+             "guide": {"through": [0.0, yg], "angle": 0.0 if way > 0 else 180.0},
+             "assembly": "forward" if way > 0 else "backward"},
         ],
         "point": [{"name": "B", "link": 3, "from": "C", "toward": "A", "along": c["l3"]}],
     }  # fmt: skip
