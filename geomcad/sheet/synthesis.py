@@ -104,7 +104,14 @@ def _extras(syn: Synthesis) -> object:
         if syn.kind == "crank-rocker":
             psi = syn.given["swing_deg"]
             v.dim_angle(c["C"], c["B0"], c["B1"], f"ψ = {num(psi, 4)}°", r_mm=12.0)
-        for name in ("B0", "B1") if syn.kind == "slider-crank" else ("D0", "D1"):
+        H = syn.given.get("stroke")
+        ends = ("B0", "B1") if syn.kind == "slider-crank" else ("D0", "D1")
+        if H is not None and all(n in c for n in ends):  # the stroke between the extremes
+            a, b = sorted((c[n] for n in ends), key=lambda q: q.x)
+            v.dim_linear(
+                a, b, f"H = {num(H, 4)}", offset=12.0 if syn.kind != "slider-crank" else -12.0
+            )
+        for name in ends:
             if name in c:
                 v.slider(c[name])
 
