@@ -361,7 +361,7 @@ def test_the_protocol_reads_as_the_solution() -> None:
     sol = solved(data("slider-crank", stroke=0.2, K=1.2, offset=0.04))
     first = sol.trace().split("\n\n")[0]
     names = [line.split(" = ")[0].split(". ", 1)[1] for line in first.splitlines()[1:]]
-    order = ["θ", "B0", "B1", "x-x", "B0B1", "n0", "r1", "P", "Γ", "m", "O", "OB0", "OB1", "l1"]
+    order = ["θ", "B0", "B1", "x-x", "n0", "r1", "P", "Γ", "m", "O", "OB0", "OB1", "l1"]
     assert names[: len(order)] == order
 
 

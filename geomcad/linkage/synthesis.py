@@ -255,11 +255,18 @@ def _dead_centres(c: Construction, Op: Vec, l1: float, B_fold: Vec, B_ext: Vec) 
 
 
 def _theta_circle(
-    c: Construction, B0: Vec, B1: Vec, theta: float, side: float, role: str = "construction"
+    c: Construction,
+    B0: Vec,
+    B1: Vec,
+    theta: float,
+    side: float,
+    role: str = "construction",
+    chord: Line | None = None,
 ) -> tuple[Line, Vec, Circle]:
     """The chord B0B1, the perpendicular n0 at B0, the ray r1 from B1 at 90° − θ to B1B0 (to
     the left of B0 → B1 where ``side`` > 0) meeting it in P, and the circle Γ through P, B0, B1."""
-    chord = c.line_through("B0B1", B0, B1, role="hidden")
+    if chord is None:  # the slider's guide is the chord already
+        chord = c.line_through("B0B1", B0, B1, role="hidden")
     n0 = c.perpendicular("n0", chord, B0, note="perpendicular to B0B1 at B0")
     # B1 → B0 turned cw by 90° − θ points to the left of B0 → B1
     r1 = c.ray_at_angle("r1", B1, B0, -side * (math.pi / 2.0 - theta), "90° – θ")
@@ -316,7 +323,7 @@ def _slider_K_construction(H: float, K: float, e: float, side: float) -> Constru
     B1 = c.point("B1", (H, 0.0), role="given", op="B0 + H along the guide", kind="syn_stroke",
                  args={"p": B0, "h": H})  # fmt: skip
     guide = c.line_through("x-x", B0, B1, role="aux", note="the slider's guide")
-    _, _, gamma = _theta_circle(c, B0, B1, theta, side)
+    _, _, gamma = _theta_circle(c, B0, B1, theta, side, chord=guide)
     m = c.parallel("m", guide, offset=side * e, op="line ∥ the guide at e",
                    kind="syn_offset_line", args={"e": e})  # fmt: skip
     Op = c.intersect("O", gamma, m, nearest(B0, "B0 (its foot outside the stroke)"),
