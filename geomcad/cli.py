@@ -222,6 +222,11 @@ def _parser(help_for: tuple[str, str] | None = None) -> _Parser:
         help="after the results, print the construction protocol, one line per named step "
         "(with --json: to stderr)",
     )
+    s.add_argument(
+        "--emit-linkage",
+        action="store_true",
+        help="a file with [synthesis]: print the explicit linkage file it found (TOML)",
+    )
     s.set_defaults(func=_cmd_solve)
 
     s = sub.add_parser("build", help="draw the sheets of problems")
@@ -423,6 +428,11 @@ def _cmd_params(ns: argparse.Namespace) -> int:
 
 def _cmd_solve(ns: argparse.Namespace) -> int:
     sol = _solve(ns.id, ns.set)
+    if ns.emit_linkage:  # the explicit linkage file a [synthesis] found (issue 31)
+        from geomcad.linkage import synthesis
+
+        _write(sys.stdout, synthesis.emitted(ns.id, sol.data))
+        return EXIT_OK
     if ns.json:
         text = _dumps(sol.to_json()) + "\n"
         trace = sol.trace().rstrip("\n") + "\n" if ns.trace else ""

@@ -67,6 +67,12 @@ TOP: tuple[ResultSpec, ...] = (
     ResultSpec("M_pr", "N·m", "the reduced moment of the loads at the numbered positions"),
     ResultSpec("omega_max", "rad/s", "the largest crank speed allowed by δ"),
     ResultSpec("omega_min", "rad/s", "the smallest crank speed allowed by δ"),
+    # results.synthesis (issue 31): the lengths found, θ, γ_min
+    ResultSpec("l1", "m", "the crank's length found by the synthesis", "ls"),
+    ResultSpec("l2", "m", "the rod's (coupler's) length found by the synthesis", "ls"),
+    ResultSpec("l3", "m", "the lever's length C–B found by the synthesis", "ls"),
+    ResultSpec("theta_deg", "deg", "the angle of overlap θ = 180°·(K − 1)/(K + 1)"),
+    ResultSpec("gamma_min_deg", "deg", "the least transmission angle over a turn"),
 )
 
 
@@ -85,7 +91,10 @@ def spec_of(name: str) -> ResultSpec | None:
 def make_problem(file_id: str, data: dict[str, Any]) -> Problem[Solved]:
     """The problem a linkage file states (raises :class:`~geomcad.errors.FileKeyError` for a
     bad file)."""
-    lk = parse(data)
+    from geomcad.linkage import synthesis  # a [synthesis] table: the explicit file it finds
+
+    syn = synthesis.synthesize(data) if synthesis.is_synthesis(data) else None
+    lk = parse(syn.linkage if syn is not None else data)
 
     def build(values: Mapping[str, ParamValue]) -> Build[Solved]:
         s = solve(lk)
@@ -94,7 +103,13 @@ def make_problem(file_id: str, data: dict[str, Any]) -> Problem[Solved]:
         from geomcad.sheet.linkage import sheet_scales
 
         proto = Protocol(lk.title, [P.c for P in s.positions] + analyse(s).constructions)
-        return Build(res, proto, [], sheet_scales(s), data=s)
+        scales = sheet_scales(s)
+        if syn is not None:  # and k_l of the synthesis sheet, "ls" (verify's synthesis.l1_mm)
+            from geomcad.sheet.synthesis import synthesis_scale
+
+            synthesis.attach(s, syn, res, proto)
+            scales = {**scales, "ls": synthesis_scale(syn)}
+        return Build(res, proto, [], scales, data=s)
 
     def draw(sol: Solution[Solved]) -> list[tuple[str, Sheet]]:
         from geomcad.sheet.linkage import kinematic_sheets
@@ -104,7 +119,10 @@ def make_problem(file_id: str, data: dict[str, Any]) -> Problem[Solved]:
         from geomcad.sheet.linkage_forces import force_sheets  # sheets 2 and 3 (issue 15)
 
         kinematic = kinematic_sheets(solved, stem(file_id))
-        return kinematic + force_sheets(solved, stem(file_id), first_no=len(kinematic) + 1)
+        sheets = kinematic + force_sheets(solved, stem(file_id), first_no=len(kinematic) + 1)
+        from geomcad.sheet.synthesis import with_sheet  # the synthesis' own sheet, first
+
+        return with_sheet(solved, stem(file_id), sheets)
 
     def motion(sol: Solution[Solved], frames: int) -> Frames:
         from geomcad.sheet.linkage import motion as linkage_motion

@@ -60,6 +60,7 @@ PLAN_SCALES: dict[str, tuple[str, str]] = {
     "v": ("k_v", "(m/s)/mm"),
     "a": ("k_a", "(m/s²)/mm"),
     "F": ("k_F", "N/mm"),
+    "ls": ("k_l", "m/mm"),  # the synthesis drawing of a linkage file (issue 31)
 }
 
 Rule = Literal["drawing", "angle", "relative"]
@@ -171,7 +172,7 @@ def _item(solution: Solution[Any], name: str, raw: float | str, scale: float | N
     leaf = next((p for p in reversed(parts) if not p.isdecimal()), parts[0])
 
     plan = spec.drawn if spec is not None else None
-    if from_mm and plan in ("v", "a", "F"):
+    if from_mm and plan in ("v", "a", "F", "ls"):  # ls: the synthesis drawing's k_l
         # a vector read off its plan (V_B_mm, a_B_mm, R_3_4_mm): mm at that plan's factor
         k_plan = solution.scales.get(plan)
         if k_plan is None or not k_plan > 0.0:

@@ -456,6 +456,10 @@ def parse(data: Mapping[str, Any]) -> Linkage:
     """The :class:`Linkage` a linkage file's data states; see the module's docstring."""
     if not isinstance(data, Mapping):
         raise FileKeyError("file", data, "must be a TOML table")
+    if "synthesis" in data:  # the variant's design data: the explicit file it finds (issue 31)
+        from geomcad.linkage.synthesis import synthesize
+
+        data = synthesize(data).linkage
     _check_keys("", data, TOP_KEYS)
     title = data.get("title", "Рычажный механизм")
     if not isinstance(title, str):
