@@ -148,8 +148,9 @@ def test_a_fresh_install_works_from_an_empty_folder(wheel: Path, tmp_path: Path)
     for example in EXAMPLES:
         assert run("solve", example).strip()
     run("build", *EXAMPLES, "--out", "sheets", "--format", "svg", "--jobs", "2")
-    drawn = {p.stem.split("-forces")[0].split("-dynamics")[0] for p in work.glob("sheets/*.svg")}
-    assert drawn == {e.stem for e in EXAMPLES}
+    drawn = [p.stem for p in work.glob("sheets/*.svg")]
+    for example in EXAMPLES:
+        assert any(d == example.stem or d.startswith(example.stem + "-") for d in drawn), example
     run("build", "2013-6", "--out", "seed", "--format", "pdf,png")
     assert (work / "seed" / "2013-6.pdf").stat().st_size > 0
     run("variants", ROOT / "examples" / "slider-crank.toml", "--count", "2", "--seed", "1",
