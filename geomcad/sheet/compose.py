@@ -39,6 +39,7 @@ into the title block or графа 26 is cut back to the larger of its parts cle
 from __future__ import annotations
 
 import bisect
+import functools
 import itertools
 import math
 from collections.abc import Callable, Iterator, Mapping, Sequence
@@ -82,6 +83,7 @@ THIN = 0.15
 _GOST_K = tuple(sorted(float(Fraction(1, 1000) / g) for g in GOST_RATIOS))
 
 
+@functools.lru_cache(maxsize=4096)
 def round_scale(raw: float, q: Quantity, series: Series) -> Scale:
     """The smallest factor of ``series`` that is at least ``raw`` (model units per mm): the
     largest drawing of the series that fits.
@@ -685,6 +687,7 @@ class _Solver:
         self.sub: dict[int, list[int]] = {}
         self._subtree(tree)
         self.memo: dict[tuple[object, ...], _Eval] = {}
+        self.options: dict[tuple[object, ...], list[tuple[float, ...] | int]] = {}
 
     def _collect(self, t: Tree) -> None:
         if isinstance(t, Node):
@@ -718,6 +721,9 @@ class _Solver:
         coarse = {2: 12, 3: 8, 4: 6}.get(len(flex), 4)
         steps = coarse * (4 if fine else 1)
         cur = self.choice[id(nd)]
+        known = self.options.get((id(nd), fine, cur))
+        if known is not None:  # the rounds come back to a node whose split has not moved
+            return known
         assert isinstance(cur, tuple)
         total = sum(cur[i] for i in flex)
         share = [cur[i] / total for i in flex]
@@ -735,6 +741,7 @@ class _Solver:
             for i, c in zip(flex, parts, strict=True):
                 w[i] = float(c)
             out.append(tuple(w))
+        self.options[(id(nd), fine, cur)] = out
         return out
 
     def run(self, t: Tree, box: Box, ev: _Eval) -> None:
