@@ -115,3 +115,26 @@ def test_workers_die_with_a_killed_parent(tmp_path: Path) -> None:
         assert _gone(pids)
     finally:
         parent.kill()
+
+
+EX = Path(__file__).resolve().parents[1] / "examples"
+
+
+def test_a_parallel_build_writes_what_was_finished_and_names_what_failed(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """A file that loads but cannot be solved (its group never closes) fails in its worker; the
+    other problems' files are written all the same, and the error names the file."""
+    from geomcad.cli import main
+
+    text = (EX / "slider-crank.toml").read_text(encoding="utf-8")
+    broken = tmp_path / "open.toml"
+    broken.write_text(text.replace("length = 0.30", "length = 0.02"), encoding="utf-8")
+    assert broken.read_text(encoding="utf-8") != text
+    out_dir = tmp_path / "o"
+    argv = ["build", "2013-8", str(broken), "--out", str(out_dir), "--format", "svg"]
+    code = main([*argv, "--jobs", "2"])
+    out, err = capsys.readouterr()
+    assert code == 2 and err.startswith("error: ") and "open.toml" in err and "close" in err
+    assert sorted(p.name for p in out_dir.iterdir()) == ["2013-8.svg"]
+    assert out == f"{out_dir / '2013-8.svg'}\n"
