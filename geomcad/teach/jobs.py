@@ -58,7 +58,9 @@ _PR_SET_PDEATHSIG = 1
 
 def _die_with(parent: int) -> None:
     """A worker's initializer: be killed when ``parent`` dies (Linux), and exit at once if it is
-    already gone (it died before the request was made)."""
+    already gone (it died before the request was made). Ctrl-C is the parent's to handle: it
+    ends the workers itself (:func:`pool`), without a traceback from each."""
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
     if sys.platform.startswith("linux"):
         import ctypes
 
