@@ -591,31 +591,50 @@ def _build_parallel(
     title: tuple[Any, Any],
 ) -> int:
     """``build --jobs N``: solve, draw and render in worker processes (each through
-    ``write_sheets``, as a serial build), then write in the order of the ids."""
+    ``write_sheets``, as a serial build); each problem's files are written as soon as its worker
+    is done (a killed build keeps what was finished), their paths printed in the order of the
+    ids. Files that do not load fail before any work starts; a problem that fails later is
+    reported after the others are written."""
     from geomcad import documents
     from geomcad.teach import build, jobs
 
-    jobs.warm([pid for pid in ids if documents.is_file_id(pid)], set(formats) - set(plain) != set())
+    files_ids = [pid for pid in ids if documents.is_file_id(pid)]
+    for pid in files_ids:  # bad input (a file that does not load) writes nothing
+        try:
+            documents.load(pid)
+        except GeomcadError as exc:
+            raise _Failed(_prefixed(pid, exc)) from exc
+    jobs.warm(files_ids, set(formats) - set(plain) != set())
     args = [(pid, tuple(formats), tuple(plain), ns.color, *title, ns.review) for pid in ids]
-    with jobs.bar(len(ids), "problem", "build") as tick, jobs.pool(n_jobs, tick) as run:
-        done = run(build.build_one, args)
-    for pid, (_stem, _n, _files, error, _missing) in zip(ids, done, strict=True):
-        if error:
-            raise _Failed(_prefixed(pid, GeomcadError(error)))
     out = Path(ns.out)
-    missing = ""
+    missing, failed, n_sheets = "", "", 0
+    done: dict[int, list[Path]] = {}
+    shown = 0
+    old = _catch_signals()
     try:
-        for _stem, _n, files, _error, lacking in done:
-            missing = missing or lacking
-            paths = build.write(out, files)
-            _write(sys.stdout, "".join(f"{p}\n" for p in paths))
+        with jobs.bar(len(ids), "problem", "build") as tick, jobs.pool(n_jobs, tick) as run:
+            for i, (_stem, n, files, error, lacking) in run.stream(build.build_one, args):
+                if error:
+                    failed = failed or _prefixed(ids[i], GeomcadError(error))
+                    done[i] = []
+                else:
+                    missing = missing or lacking
+                    n_sheets += n
+                    done[i] = build.write(out, files)
+                while shown in done:  # the paths in the order of the ids
+                    _write(sys.stdout, "".join(f"{p}\n" for p in done.pop(shown)))
+                    shown += 1
     except OSError as exc:
         raise _Failed(f"cannot write to {out}: {exc.strerror or exc}") from exc
+    finally:
+        _restore_signals(old)
+    if failed:
+        raise _Failed(failed)
     if missing:
         what = "SVG and DXF files" if "dxf" in plain else "SVGs"
         _write(sys.stderr, _error_line(f"{_one_line(missing)}; only the {what} were written"))
         return EXIT_BAD_INPUT
-    _build_summary(sum(n for _, n, _, _, _ in done), len(ids), started)
+    _build_summary(n_sheets, len(ids), started)
     return EXIT_OK
 
 

@@ -2,8 +2,9 @@
 
 The file is the data: the problem has no parameters (``--set`` edits the file's keys), no seed,
 and its ``inputs`` are the file's data. Its results are those of ``../shared/linkages.md``, and
-``scales`` are the sheet's own (k_l of the mechanism, k_v and k_a of the plans), so that
-``geomcad verify`` reads drawn values at the scales they are drawn at.
+``scales`` are the sheet's own (k_l of the mechanism, k_v and k_a of the plans), asked of the sheet
+layer lazily, only where ``geomcad verify`` reads drawn values at the scales they are drawn at: a
+solve loads no sheet module and lays out no sheet.
 """
 
 from __future__ import annotations
@@ -100,16 +101,23 @@ def make_problem(file_id: str, data: dict[str, Any]) -> Problem[Solved]:
         s = solve(lk)
         res = results(s)
         from geomcad.linkage.analysis import analyse
-        from geomcad.sheet.linkage import sheet_scales
 
         proto = Protocol(lk.title, [P.c for P in s.positions] + analyse(s).constructions)
-        scales = sheet_scales(s)
-        if syn is not None:  # and k_l of the synthesis sheet, "ls" (verify's synthesis.l1_mm)
+        if syn is not None:
+            synthesis.attach(s, syn, res, proto)
+        return Build(res, proto, [], data=s)
+
+    def scales(sol: Solution[Solved]) -> Mapping[str, float]:
+        """The sheets' scales, asked (once, by ``Solution.scales``) where mm↔SI is needed: the
+        kinematic sheet's, and k_l of the synthesis sheet as "ls" (verify's synthesis.l1_mm)."""
+        from geomcad.sheet.linkage import sheet_scales
+
+        found = dict(sheet_scales(sol.data))
+        if syn is not None:
             from geomcad.sheet.synthesis import synthesis_scale
 
-            synthesis.attach(s, syn, res, proto)
-            scales = {**scales, "ls": synthesis_scale(syn)}
-        return Build(res, proto, [], scales, data=s)
+            found["ls"] = synthesis_scale(syn)
+        return found
 
     def draw(sol: Solution[Solved]) -> list[tuple[str, Sheet]]:
         from geomcad.sheet.linkage import kinematic_sheets
@@ -131,7 +139,9 @@ def make_problem(file_id: str, data: dict[str, Any]) -> Problem[Solved]:
 
     from geomcad.documents import file_problem
 
-    return file_problem(file_id, data, lk.title, TOP, build, draw, motion, cls=_FileProblem)
+    return file_problem(
+        file_id, data, lk.title, TOP, build, draw, motion, cls=_FileProblem, scales=scales
+    )
 
 
 class _FileProblem(Problem[Solved]):

@@ -116,9 +116,7 @@ def check_top(
 ) -> str:
     """The file's top level: the marking table ``kind`` and, optionally, a ``title`` string and
     a ``[sheet]`` table of title-block data (``lang = "en"`` among them) and the sheet
-    ``format`` (:func:`sheet_formats`), checked here."""
-    from geomcad.sheet.titleblock import TitleData
-
+    ``format`` (:func:`sheet_formats`), checked here (by the sheet layer, loaded only then)."""
     ok = {kind, *allowed}
     for k in data:
         if k not in ok:
@@ -126,6 +124,8 @@ def check_top(
                 k, data[k], f"unknown top-level key in a [{kind}] file (it knows {', '.join(ok)})"
             )
     if "sheet" in data:
+        from geomcad.sheet.titleblock import TitleData
+
         TitleData.from_mapping(title_fields(data["sheet"]), "sheet")
         sheet_formats(data)
     title = data.get("title", "")

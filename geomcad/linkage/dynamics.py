@@ -254,16 +254,17 @@ def check(lk: Linkage, fw: Flywheel) -> None:
     ``delta_achieved``, ``omega_psi`` and ``omega_t`` (ω over the last turn)."""
     sign = 1.0 if lk.omega > 0 else -1.0
     psi = fw.psi
-    I_s = CubicSpline(psi, _periodic(fw.dense.I_pr), bc_type="periodic")
-    dI_s = CubicSpline(psi, _periodic(fw.dense.dI_pr * sign), bc_type="periodic")
-    Q_s = CubicSpline(psi, _periodic(fw.M_drive + sign * fw.dense.M_pr), bc_type="periodic")
+    # I, dI/dφ and Q as the columns of one periodic spline: one call per step of the ODE
+    columns = (fw.dense.I_pr, fw.dense.dI_pr * sign, fw.M_drive + sign * fw.dense.M_pr)
+    IdIQ = CubicSpline(psi, np.column_stack([_periodic(c) for c in columns]), bc_type="periodic")
     J = fw.J_flywheel
     two_pi = 2.0 * math.pi
 
     def rhs(_t: float, y: npt.NDArray[np.float64]) -> list[float]:
         x = float(y[0]) % two_pi
         w = float(y[1])
-        return [w, (float(Q_s(x)) - 0.5 * float(dI_s(x)) * w * w) / (J + float(I_s(x)))]
+        i, di, q = IdIQ(x).tolist()
+        return [w, (q - 0.5 * di * w * w) / (J + i)]
 
     w0 = math.sqrt(2.0 * fw.T0 / (J + float(fw.dense.I_pr[0])))
 

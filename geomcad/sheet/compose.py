@@ -39,6 +39,7 @@ into the title block or графа 26 is cut back to the larger of its parts cle
 from __future__ import annotations
 
 import bisect
+import functools
 import itertools
 import math
 from collections.abc import Callable, Iterator, Mapping, Sequence
@@ -82,6 +83,7 @@ THIN = 0.15
 _GOST_K = tuple(sorted(float(Fraction(1, 1000) / g) for g in GOST_RATIOS))
 
 
+@functools.lru_cache(maxsize=4096)
 def round_scale(raw: float, q: Quantity, series: Series) -> Scale:
     """The smallest factor of ``series`` that is at least ``raw`` (model units per mm): the
     largest drawing of the series that fits.
@@ -685,6 +687,10 @@ class _Solver:
         self.sub: dict[int, list[int]] = {}
         self._subtree(tree)
         self.memo: dict[tuple[object, ...], _Eval] = {}
+        self.options: dict[tuple[object, ...], list[tuple[float, ...] | int]] = {}
+        self.scored: dict[tuple[object, ...], tuple[_Eval, tuple[float, ...]]] = {}
+        #: Layouts scored (for the benchmark and the tests).
+        self.evaluations = 0
 
     def _collect(self, t: Tree) -> None:
         if isinstance(t, Node):
@@ -718,6 +724,9 @@ class _Solver:
         coarse = {2: 12, 3: 8, 4: 6}.get(len(flex), 4)
         steps = coarse * (4 if fine else 1)
         cur = self.choice[id(nd)]
+        known = self.options.get((id(nd), fine, cur))
+        if known is not None:  # the rounds come back to a node whose split has not moved
+            return known
         assert isinstance(cur, tuple)
         total = sum(cur[i] for i in flex)
         share = [cur[i] / total for i in flex]
@@ -735,6 +744,7 @@ class _Solver:
             for i, c in zip(flex, parts, strict=True):
                 w[i] = float(c)
             out.append(tuple(w))
+        self.options[(id(nd), fine, cur)] = out
         return out
 
     def run(self, t: Tree, box: Box, ev: _Eval) -> None:
@@ -770,19 +780,41 @@ class _Solver:
             self.run(it, cell, ev)
 
     def evaluate(self) -> tuple[_Eval, tuple[float, ...]]:
-        ev = _Eval(self.field)
-        self.run(self.tree, self.field.box, ev)
-        return ev, _score(ev)
+        """The layout of the current choices and its score; a set of choices the search
+        comes back to (the next round's sweep of an unmoved node) is scored once."""
+        key = tuple(self.choice[id(nd)] for nd in self._active(self.tree))
+        done = self.scored.get(key)
+        if done is None:
+            ev = _Eval(self.field)
+            self.run(self.tree, self.field.box, ev)
+            done = self.scored[key] = (ev, _score(ev))
+            self.evaluations += 1
+        return done
+
+    def _active(self, t: Tree) -> Iterator[Node]:
+        """The nodes the current choices lay out (a :class:`Choice`'s other arrangements are
+        not on the sheet: moving their splits changes nothing)."""
+        if isinstance(t, Node):
+            yield t
+            ch = self.choice[id(t)]
+            for it in [t.items[ch]] if isinstance(t, Choice) and isinstance(ch, int) else t.items:
+                yield from self._active(it)
 
     def _descend(self) -> tuple[_Eval, tuple[float, ...]]:
         """Coordinate search over the splits and grid shapes, the choices held: in coarse
-        steps, then in fine steps near the coarse optimum."""
+        steps, then in fine steps near the coarse optimum. Only the nodes laid out are swept,
+        in the order of :attr:`nodes` (a node that two arrangements share is swept twice)."""
         best_ev, best = self.evaluate()
+        laid = {id(nd) for nd in self._active(self.tree)}
         for fine, rounds in ((False, 3), (True, 2)):
             for _ in range(rounds):
                 improved = False
                 for nd in self.nodes:
-                    if isinstance(nd, Choice) or (fine and isinstance(nd, Grid)):
+                    if (
+                        id(nd) not in laid
+                        or isinstance(nd, Choice)
+                        or (fine and isinstance(nd, Grid))
+                    ):
                         continue
                     opts = self._options(nd, fine)
                     if len(opts) <= 1:

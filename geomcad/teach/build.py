@@ -3,9 +3,10 @@
 Each worker prepares one problem or file as a serial build does (:func:`geomcad.cli._prepare`:
 the same title-block data, the review sheets when asked) and writes its files with
 :func:`geomcad.render.write_sheets` itself, into a private temporary folder, then hands back
-their names and bytes. The parent writes them into the output folder in the order of the ids,
-after every worker has finished: bad input writes nothing, and the output is byte-identical to a
-serial build whatever formats ``write_sheets`` knows.
+their names and bytes. The parent writes each problem's files into the output folder as soon as
+its worker is done (a killed build keeps what was finished); a file that does not load fails
+before any work starts, and the output is byte-identical to a serial build whatever formats
+``write_sheets`` knows.
 """
 
 from __future__ import annotations

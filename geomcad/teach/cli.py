@@ -169,10 +169,25 @@ def cmd_variants(ns: argparse.Namespace) -> int:
             (template, v.values, v.number, width, tuple(columns), info, formats, str(out / name))
             for v, name in zip(drawn.variants, names, strict=True)
         ]
-        with jobs.bar(len(args), "card", "cards") as tick:
-            relay.to = tick
-            rendered: list[dict[str, bytes]] = run(render_card, args)
-            relay.to = None
+        # each variant's file and cards written as soon as its card is rendered (a killed run
+        # keeps what was finished); the bar counts the files
+        written: list[Path] = []
+        with jobs.bar(len(args) * (1 + len(formats)), "file", "cards") as tick:
+            for i, files in run.stream(render_card, args):
+                v = drawn.variants[i]
+                try:
+                    out.mkdir(parents=True, exist_ok=True)
+                    path = out / names[i]
+                    write_atomic(path, variants.variant_file(template, v, width))
+                    written.append(path)
+                    tick(1)
+                    for fmt, data in files.items():
+                        card = out / f"card-{v.number:0{width}d}.{fmt}"
+                        write_atomic(card, data)
+                        written.append(card)
+                        tick(1)
+                except OSError as exc:
+                    raise GeomcadError(f"cannot write to {out}: {exc.strerror or exc}") from exc
 
         numbers = [f"{v.number:0{width}d}" for v in drawn.variants]
         rows = keys.rows([v.results for v in drawn.variants], columns, numbers)
@@ -184,15 +199,6 @@ def cmd_variants(ns: argparse.Namespace) -> int:
 
     try:
         out.mkdir(parents=True, exist_ok=True)
-        written: list[Path] = []
-        for v, name, files in zip(drawn.variants, names, rendered, strict=True):
-            path = out / name
-            write_atomic(path, variants.variant_file(template, v, width))
-            written.append(path)
-            for fmt, data in files.items():
-                card = out / f"card-{v.number:0{width}d}.{fmt}"
-                write_atomic(card, data)
-                written.append(card)
         csv_path = out / "answers.csv"
         write_atomic(csv_path, _answers_csv(columns, rows, names).encode("utf-8"))
         json_path = out / "answers.json"

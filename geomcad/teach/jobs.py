@@ -5,21 +5,28 @@
 did the work, the output is the same, so a parallel build writes the same bytes as a serial one.
 ``jobs`` = 1 works in this process.
 
+:meth:`Runner.stream` hands each result back as soon as it is done (its index with it), so a
+batch writes every file when it is finished and a killed batch keeps what was finished.
+
+The workers die with their parent (Linux: ``PR_SET_PDEATHSIG``; a worker that finds its parent
+gone exits), and the pool is torn down on every way out of :func:`pool` (an error, a signal
+turned into an exception, Ctrl-C): the queued calls are cancelled and the workers terminated, so
+no worker outlives the command that started it.
+
 :func:`bar` is a tqdm progress bar on stderr, shown only when stderr is a terminal.
 """
 
 from __future__ import annotations
 
 import os
+import signal
 import sys
 from collections.abc import Callable, Iterator, Sequence
-from concurrent.futures import Future, ProcessPoolExecutor
+from concurrent.futures import FIRST_COMPLETED, Future, ProcessPoolExecutor, wait
 from contextlib import contextmanager, suppress
 from typing import Any
 
 from geomcad.errors import ParameterError
-
-Map = Callable[[Callable[..., Any], Sequence[tuple[Any, ...]]], list[Any]]
 
 
 def check_jobs(jobs: int) -> int:
@@ -45,31 +52,88 @@ def _call(fn: Callable[..., Any], args: tuple[Any, ...]) -> Any:
     return fn(*args)
 
 
-@contextmanager
-def pool(jobs: int, tick: Callable[[int], None] | None = None) -> Iterator[Map]:
-    """A mapper over ``jobs`` processes; ``tick(1)`` is called as each call finishes."""
+#: prctl(2)'s option that sends the calling process a signal when its parent dies.
+_PR_SET_PDEATHSIG = 1
 
-    def serial(fn: Callable[..., Any], args: Sequence[tuple[Any, ...]]) -> list[Any]:
-        out = []
-        for a in args:
-            out.append(fn(*a))
-            if tick is not None:
-                tick(1)
+
+def _die_with(parent: int) -> None:
+    """A worker's initializer: be killed when ``parent`` dies (Linux), and exit at once if it is
+    already gone (it died before the request was made). Ctrl-C is the parent's to handle: it
+    ends the workers itself (:func:`pool`), without a traceback from each."""
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    if sys.platform.startswith("linux"):
+        import ctypes
+
+        with suppress(OSError, AttributeError):
+            ctypes.CDLL(None).prctl(_PR_SET_PDEATHSIG, signal.SIGKILL, 0, 0, 0)
+    if os.getppid() != parent:
+        os._exit(1)
+
+
+class Runner:
+    """What :func:`pool` gives: called as ``run(fn, args)``, the results in the order of
+    ``args``; :meth:`stream` the same results as each is done."""
+
+    def __init__(self, ex: ProcessPoolExecutor | None, tick: Callable[[int], None] | None) -> None:
+        self.ex = ex
+        self.tick = tick
+
+    def __call__(self, fn: Callable[..., Any], args: Sequence[tuple[Any, ...]]) -> list[Any]:
+        out: list[Any] = [None] * len(args)
+        for i, r in self.stream(fn, args):
+            out[i] = r
         return out
 
+    def stream(
+        self, fn: Callable[..., Any], args: Sequence[tuple[Any, ...]]
+    ) -> Iterator[tuple[int, Any]]:
+        """``(i, fn(*args[i]))`` as each call finishes (in order in this process, in the order
+        they finish in workers); ``tick(1)`` after each."""
+        if self.ex is None:
+            for i, a in enumerate(args):
+                r = fn(*a)
+                if self.tick is not None:
+                    self.tick(1)
+                yield i, r
+            return
+        ex = self.ex
+        index: dict[Future[Any], int] = {ex.submit(_call, fn, a): i for i, a in enumerate(args)}
+        pending = set(index)
+        while pending:
+            done, pending = wait(pending, return_when=FIRST_COMPLETED)
+            for f in sorted(done, key=index.__getitem__):
+                r = f.result()
+                if self.tick is not None:
+                    self.tick(1)
+                yield index[f], r
+
+
+def _tear_down(ex: ProcessPoolExecutor) -> None:
+    """Cancel what is queued and end the workers now (not after their current call)."""
+    procs = list(getattr(ex, "_processes", {}).values())
+    ex.shutdown(wait=False, cancel_futures=True)
+    for p in procs:
+        with suppress(OSError, ValueError, AttributeError):
+            p.terminate()
+    for p in procs:
+        with suppress(OSError, ValueError, AttributeError, AssertionError):
+            p.join(1.0)
+
+
+@contextmanager
+def pool(jobs: int, tick: Callable[[int], None] | None = None) -> Iterator[Runner]:
+    """A :class:`Runner` over ``jobs`` processes (``jobs`` ≤ 1: in this process); ``tick(1)`` is
+    called as each call finishes. Every way out ends the workers (module docstring)."""
     if jobs <= 1:
-        yield serial
+        yield Runner(None, tick)
         return
-    with ProcessPoolExecutor(max_workers=jobs) as ex:
-
-        def parallel(fn: Callable[..., Any], args: Sequence[tuple[Any, ...]]) -> list[Any]:
-            futures: list[Future[Any]] = [ex.submit(_call, fn, a) for a in args]
-            if tick is not None:
-                for f in futures:
-                    f.add_done_callback(lambda _f: tick(1))
-            return [f.result() for f in futures]
-
-        yield parallel
+    ex = ProcessPoolExecutor(max_workers=jobs, initializer=_die_with, initargs=(os.getpid(),))
+    try:
+        yield Runner(ex, tick)
+    except BaseException:
+        _tear_down(ex)
+        raise
+    ex.shutdown(wait=True)
 
 
 @contextmanager
