@@ -23,7 +23,7 @@ from geomcad.sheet.drawing import Drawing
 from geomcad.sheet.frame import fill_title_blocks
 from geomcad.sheet.lang import Lang
 from geomcad.sheet.text import box, parse
-from geomcad.teach import keys
+from geomcad.teach import keys, quantities
 
 if TYPE_CHECKING:
     from geomcad.problem import Problem, Solution
@@ -53,6 +53,8 @@ class CardInfo:
     course: str = "TMM"
     teacher: str = ""
     lang: Lang = "en"
+    student: str = ""
+    group: str = ""
 
 
 #: The cards' own words per language (a problem's parameter and result texts are its own).
@@ -74,6 +76,8 @@ WORDS: dict[str, dict[str, str]] = {
         "answers": "answers",
         "no": "No.",
         "pos": "pos.",
+        "student": "Student",
+        "group": "group",
     },
     "ru": {
         "variant": "Вариант",
@@ -92,6 +96,8 @@ WORDS: dict[str, dict[str, str]] = {
         "answers": "ответы",
         "no": "№",
         "pos": "пол.",
+        "student": "Студент",
+        "group": "группа",
     },
 }
 
@@ -115,8 +121,16 @@ def _esc(text: str) -> str:
     return text.replace("\\", "\\\\").replace("_", "\\_").replace("^", "\\^")
 
 
-def _fit(text: str, width: float, height: float = TEXT_H) -> str:
-    """The text cut with an ellipsis to fit ``width`` mm."""
+def _fit(text: str, width: float, height: float = TEXT_H, markup: bool = False) -> str:
+    """The text cut with an ellipsis to fit ``width`` mm (markup only at spaces: its braces
+    hold none)."""
+    if markup:
+        if box(parse(text), height)[0] <= width:
+            return text
+        words = text.split(" ")
+        while len(words) > 1 and box(parse(" ".join(words) + "..."), height)[0] > width:
+            words.pop()
+        return " ".join(words) + "..."
     if box(parse(_esc(text)), height)[0] <= width:
         return text
     while text and box(parse(_esc(text + "...")), height)[0] > width:
@@ -124,32 +138,48 @@ def _fit(text: str, width: float, height: float = TEXT_H) -> str:
     return text.rstrip() + "..."
 
 
-def _wrap(text: str, width: float, height: float = TEXT_H) -> list[str]:
+def _wrap(text: str, width: float, height: float = TEXT_H, markup: bool = False) -> list[str]:
     lines: list[list[str]] = [[]]
     for word in text.split(" "):
         trial = " ".join([*lines[-1], word])
-        if lines[-1] and box(parse(_esc(trial)), height)[0] > width:
+        if lines[-1] and box(parse(trial if markup else _esc(trial)), height)[0] > width:
             lines.append([])
         lines[-1].append(word)
     return [" ".join(w) for w in lines]
 
 
 def _table(
-    d: Drawing, x: float, y: float, widths: Sequence[float], rows: Sequence[Sequence[str]]
+    d: Drawing,
+    x: float,
+    y: float,
+    widths: Sequence[float],
+    rows: Sequence[Sequence[str]],
+    markup: bool = False,
 ) -> float:
-    """A ruled table of plain text (cut to fit its cells); returns the y below it."""
+    """A ruled table of plain text (cut to fit its cells), or of label markup (not cut);
+    returns the y below it."""
     cut = [
-        [_esc(_fit(cell, w - 2.0)) if cell else "" for w, cell in zip(widths, row, strict=True)]
+        [
+            (_fit(cell, w - 2.0, markup=True) if markup else _esc(_fit(cell, w - 2.0)))
+            if cell
+            else ""
+            for w, cell in zip(widths, row, strict=True)
+        ]
         for row in rows
     ]
     _, height = d.table(x, y, widths, cut, TEXT_H, ROW_H)
     return y + height
 
 
-def _col_widths(rows: Sequence[Sequence[str]], room: float, flex: int) -> list[float]:
+def _col_widths(
+    rows: Sequence[Sequence[str]], room: float, flex: int, markup: bool = False
+) -> list[float]:
     """Column widths that fit each column's text; column ``flex`` takes what room is left."""
     n = len(rows[0])
-    natural = [max(box(parse(_esc(r[i])), TEXT_H)[0] for r in rows) + 2.5 for i in range(n)]
+    natural = [
+        max(box(parse(r[i] if markup else _esc(r[i])), TEXT_H)[0] for r in rows) + 2.5
+        for i in range(n)
+    ]
     fixed = sum(w for i, w in enumerate(natural) if i != flex)
     natural[flex] = max(20.0, min(natural[flex], room - fixed))
     if sum(natural) > room:  # still too wide: the widest column gives in, its cells cut to fit
@@ -396,6 +426,8 @@ def task_card(
         designation=f"{info.course} {stem or problem.id} V{number:0{width}d}",
         scale=k.ratio_text() if k is not None else "",
         organisation=info.course,
+        developer=info.student,
+        group=info.group,
         checker=info.teacher,
         lang=info.lang,
     )
@@ -403,29 +435,49 @@ def task_card(
     x0, room = LEFT + PAD, RIGHT - LEFT - 2 * PAD
     d.text(f"{words['variant']} {number:0{width}d}", (x0, TOP + 11.0), 7.0)
     y = TOP + 15.0
+    if info.student:
+        who = f"{words['student']}: {info.student}"
+        who += f", {words['group']} {info.group}" if info.group else ""
+        y += 6.0
+        d.text(_esc(_fit(who, room, 5.0)), (x0, y), 5.0)
     for line in _wrap(title, room, 3.5):
         y += 5.5
         d.text(_esc(line), (x0, y), 3.5)
     y += 3.0
     if data is not None and isinstance(first, Mapping):
         y = linkage_scheme(d, data, first, y, info.lang) + 2.0
-    rows = problem_rows(sol, info.lang) if data is None else file_rows(data, info.lang)
+    linkage = data is not None and _is_linkage(data)
+    markup = data is None or linkage
+    head = [words["quantity"], words["symbol"], words["value"], words["unit"]]
+    if data is None:
+        rows = [head, *map(list, quantities.problem_rows(problem, sol.params, info.lang))]
+    elif linkage:
+        rows = [head, *map(list, quantities.linkage_rows(data, info.lang))]
+    else:
+        rows = file_rows(data, info.lang)
+    pos = positions if isinstance(positions, list) else []
+    lines = (
+        quantities.find_lines(problem, columns, pos, info.lang, linkage, words["at"], words["each"])
+        if markup
+        else find_lines(problem, columns, sol, info.lang)
+    )
     find: list[tuple[float, str]] = []  # (indent, text) of each line of "Find"
-    for i, line in enumerate(find_lines(problem, columns, sol, info.lang), start=1):
-        find += [(4.0 if j else 0.0, t) for j, t in enumerate(_wrap(f"{i}. {line}", room - 4.0))]
+    for i, line in enumerate(lines, start=1):
+        wrapped = _wrap(f"{i}. {line}", room - 4.0, markup=markup)
+        find += [(4.0 if j else 0.0, t if markup else _esc(t)) for j, t in enumerate(wrapped)]
     lead = TEXT_H * 1.7
     find_h = 8.0 + 8.0 + lead * len(find) + 2.0
     d.text(words["given"], (x0, y + 5.0), 3.5)
     y += 8.0
-    y = _given(d, rows, x0, y, room, BOTTOM - y - find_h) + 4.0
+    y = _given(d, rows, x0, y, room, BOTTOM - y - find_h, markup) + 4.0
     d.text(words["find"], (x0, y + 5.0), 3.5)
     y += 8.0
     fits = int((BOTTOM - 1.0 - y) / lead)
     if len(find) > fits:  # never into the title block: the answer key lists the rest
-        find = [*find[: max(fits - 1, 0)], (0.0, words["rest"])]
+        find = [*find[: max(fits - 1, 0)], (0.0, _esc(words["rest"]))]
     for indent, text in find:
         y += lead
-        d.text(_esc(text), (x0 + indent, y), TEXT_H)
+        d.text(text, (x0 + indent, y), TEXT_H)
     return _filled([d.finish()])[0]
 
 
@@ -435,8 +487,19 @@ def _filled(sheets: list[Sheet]) -> list[Sheet]:
     return sheets
 
 
+def _is_linkage(data: Mapping[str, Any]) -> bool:
+    """True for a linkage file's data (a drive or a synthesis table)."""
+    return isinstance(data.get("drive"), Mapping) or isinstance(data.get("synthesis"), Mapping)
+
+
 def _given(
-    d: Drawing, rows: list[list[str]], x0: float, y: float, room: float, space: float
+    d: Drawing,
+    rows: list[list[str]],
+    x0: float,
+    y: float,
+    room: float,
+    space: float,
+    markup: bool = False,
 ) -> float:
     """The data table, cut into two or three parts side by side when it is taller than
     ``space`` mm (a linkage file's many values); returns the y below it."""
@@ -450,8 +513,10 @@ def _given(
         part = [rows[0], *body[k * per : (k + 1) * per]]
         # a problem's quantity text gives way first; a file's key stays whole, its value gives way
         flex = 0 if len(part[0]) > 2 else len(part[0]) - 1
-        widths = _col_widths(part, col, flex)
-        bottoms.append(_table(d, x0 + k * (col + gap), y, widths, part))
+        if markup:
+            part = [[_esc(c) for c in part[0]], *part[1:]]
+        widths = _col_widths(part, col, flex, markup)
+        bottoms.append(_table(d, x0 + k * (col + gap), y, widths, part, markup))
     return max(bottoms)
 
 

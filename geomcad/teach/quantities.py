@@ -1,0 +1,463 @@
+"""A task card's given data and what to find, as a student reads them.
+
+The card names each quantity in the subject's notation: words, a symbol (label markup: ``l_{OA}``,
+``ω_1``, ``F_{пс}``), a value with the language's decimal sign (``0,08`` on a Russian card) and a
+unit (``с^{-1}``, ``Н·м``). A linkage file's data are named from the meaning of its keys
+(linkages.md): the crank's length is ``l_{OA}``, its speed ``ω_1``, a point load ``F_{пс}``; a
+key this module does not name is left off the card rather than shown as a file key. A problem
+id's parameters and results take their words from its package's ``cards`` table
+(:func:`geomcad.registry.card_words`), else, on an English card, their own docs; on a card in
+another language a name without words is shown by its symbol alone.
+
+    >>> symbol("theta_deg"), symbol("O1B0"), symbol("omega_3"), symbol("l_AB")
+    ('θ', 'O_{1}B_{0}', 'ω_{3}', 'l_{AB}')
+    >>> number(0.08, "ru"), number(2500.0, "en"), number(-10.0, "ru")
+    ('0,08', '2500', '-10')
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Mapping, Sequence
+from typing import TYPE_CHECKING, Any
+
+if TYPE_CHECKING:
+    from geomcad.problem import Problem
+
+#: A row of the data table: words, symbol (markup), value (markup), unit (markup).
+Row = tuple[str, str, str, str]
+
+GREEK = {
+    "theta": "θ", "omega": "ω", "eps": "ε", "epsilon": "ε", "phi": "φ", "psi": "ψ",
+    "alpha": "α", "beta": "β", "gamma": "γ", "delta": "δ", "lambda": "λ", "mu": "μ",
+    "rho": "ρ", "tau": "τ", "Omega": "Ω",
+}  # fmt: skip
+
+UNITS: dict[str, dict[str, str]] = {
+    "ru": {
+        "m": "м", "m/s": "м/с", "m/s²": "м/с^{2}", "rad/s": "с^{-1}", "rad/s²": "с^{-2}",
+        "N": "Н", "N·m": "Н·м", "kg": "кг", "kg·m²": "кг·м^{2}", "deg": "°", "1": "", "": "",
+        "s": "с", "Pa": "Па", "rpm": "об/мин", "1/s": "с^{-1}", "N/m": "Н/м", "N·s/m": "Н·с/м",
+        "J": "Дж", "W": "Вт",
+    },
+    "en": {
+        "m/s²": "m/s^{2}", "rad/s": "s^{-1}", "rad/s²": "s^{-2}", "kg·m²": "kg·m^{2}",
+        "deg": "°", "1": "", "": "", "1/s": "s^{-1}",
+    },
+}  # fmt: skip
+
+
+def unit(u: str, lang: str) -> str:
+    """A SI unit as the card writes it (markup)."""
+    return UNITS.get(lang, {}).get(u, u)
+
+
+def number(x: object, lang: str) -> str:
+    """A value as the card prints it: up to six significant figures, a decimal comma in
+    Russian."""
+    if isinstance(x, bool):
+        return str(x)
+    if isinstance(x, int):
+        return str(x)
+    if isinstance(x, float):
+        text = format(x, ".6g")
+        if "e" in text:
+            text = format(x, ".6f").rstrip("0").rstrip(".")
+        return text.replace(".", ",") if lang == "ru" else text
+    return str(x)
+
+
+def escape(text: str) -> str:
+    """Plain words as label markup."""
+    return text.replace("\\", "\\\\").replace("_", "\\_").replace("^", "\\^")
+
+
+def point(name: str) -> str:
+    """A point's name with its digits as subscripts: ``O1`` → ``O_{1}`` (markup)."""
+    return re.sub(r"(\d+)", r"_{\1}", escape(name)).replace("\\_{", "_{")
+
+
+def symbol(name: str) -> str:
+    """A parameter's or result's name as its symbol: Greek letters spelt out become letters,
+    ``_deg`` goes, a trailing index or ``_X`` becomes a subscript (markup)."""
+    base = name.removesuffix("_deg")
+    head, sep, tail = base.partition("_")
+    if sep:
+        return f"{GREEK.get(head, escape(head))}_{{{escape(tail)}}}"
+    for word, letter in sorted(GREEK.items(), key=lambda kv: -len(kv[0])):
+        if base.startswith(word) and (base[len(word) :].isdecimal() or base == word):
+            rest = base[len(word) :]
+            return letter + (f"_{{{rest}}}" if rest else "")
+    m = re.fullmatch(r"([A-Za-z]+)(\d+)", base)
+    if m and len(m.group(1)) == 1:
+        return f"{m.group(1)}_{{{m.group(2)}}}"
+    return point(base)
+
+
+# --- words ------------------------------------------------------------------------------------
+
+WORDS: dict[str, dict[str, str]] = {
+    "ru": {
+        "crank": "длина кривошипа {a}{b}",
+        "omega": "угловая скорость кривошипа ({sense})",
+        "cw": "по часовой стрелке",
+        "ccw": "против часовой стрелки",
+        "link": "длина звена {a}{b}",
+        "frame": "координаты неподвижной точки {p}",
+        "guide": "направляющая ползуна {p} проходит через точку",
+        "guide_angle": "угол наклона направляющей ползуна {p} к оси x",
+        "guide_link": "смещение направляющей ползуна {p} от линии {a}{b} (влево)",
+        "rpr_offset": "смещение линии кулисы от центра {p}",
+        "slot": "угол паза кулисы к направляющей",
+        "along": "положение точки {p} на звене {a}{b} (от {a})",
+        "left": "смещение точки {p} влево от линии {a}{b}",
+        "mass": "масса звена {i}",
+        "J": "момент инерции звена {i} относительно центра масс",
+        "force": "сила полезного сопротивления на ползуне {p} ({stroke})",
+        "moment": "момент сопротивления на звене {i}",
+        "moment_stroke": "момент сопротивления на звене {i} ({stroke})",
+        "working": "на рабочем ходу",
+        "idle": "на холостом ходу",
+        "both": "на обоих ходах",
+        "shape": ", по графику нагрузки",
+        "delta": "коэффициент неравномерности хода",
+        "gravity": "ускорение свободного падения",
+        "no_gravity": "силы тяжести не учитывать",
+        "positions": "число положений кривошипа",
+        "phi": "положения кривошипа",
+        "forces_k": "положение для силового анализа",
+        "forces_phi": "угол кривошипа для силового анализа",
+        "stroke": "ход ползуна",
+        "swing": "угол размаха коромысла",
+        "K": "коэффициент изменения средней скорости",
+        "offset": "смещение (дезаксиал) направляющей",
+        "lambda": "отношение длин шатуна и кривошипа",
+        "rocker": "длина коромысла",
+        "sframe": "межосевое расстояние",
+        "rod": "длина шатуна",
+        "kind_slider-crank": "кривошипно-ползунный механизм",
+        "kind_crank-rocker": "кривошипно-коромысловый механизм",
+        "kind_slotted-lever": "кулисный механизм",
+        "kind": "тип механизма",
+        # results
+        "r_stroke": "ход выходного звена",
+        "r_swing_deg": "угол размаха выходного звена",
+        "r_K": "коэффициент изменения средней скорости",
+        "r_omega": "угловую скорость звена {i}",
+        "r_eps": "угловое ускорение звена {i}",
+        "r_V": "скорость точки {p}",
+        "r_a": "ускорение точки {p}",
+        "r_M_bal": "уравновешивающий момент на кривошипе",
+        "r_M_bal_lever": "уравновешивающий момент по рычагу Жуковского",
+        "r_J_flywheel": "момент инерции маховика",
+        "r_R": "реакцию в кинематической паре {i}–{j}",
+        "r_A_cycle": "работу сил сопротивления за цикл",
+        "r_M_drive": "момент движущих сил",
+        "r_I_pr": "приведённый момент инерции",
+        "r_M_pr": "приведённый момент сил",
+        "r_V_rel": "относительную скорость в точке {p}",
+        "r_a_cor": "кориолисово ускорение в точке {p}",
+        "r_omega_max": "наибольшую угловую скорость кривошипа",
+        "r_omega_min": "наименьшую угловую скорость кривошипа",
+    },
+    "en": {
+        "crank": "length of the crank {a}{b}",
+        "omega": "angular velocity of the crank ({sense})",
+        "cw": "clockwise",
+        "ccw": "counter-clockwise",
+        "link": "length of the link {a}{b}",
+        "frame": "coordinates of the fixed point {p}",
+        "guide": "the guide of the slider {p} passes through the point",
+        "guide_angle": "angle of the guide of the slider {p} to the x axis",
+        "guide_link": "offset of the guide of the slider {p} from the line {a}{b} (to the left)",
+        "rpr_offset": "offset of the slide line from the centre {p}",
+        "slot": "angle of the slot to the guide",
+        "along": "position of the point {p} on the link {a}{b} (from {a})",
+        "left": "offset of the point {p} to the left of the line {a}{b}",
+        "mass": "mass of the link {i}",
+        "J": "moment of inertia of the link {i} about its centre of mass",
+        "force": "resistance force on the slider {p} ({stroke})",
+        "moment": "resisting moment on the link {i}",
+        "moment_stroke": "resisting moment on the link {i} ({stroke})",
+        "working": "on the working stroke",
+        "idle": "on the idle stroke",
+        "both": "on both strokes",
+        "shape": ", by the load diagram",
+        "delta": "coefficient of speed fluctuation",
+        "gravity": "acceleration of gravity",
+        "no_gravity": "weights are neglected",
+        "positions": "number of crank positions",
+        "phi": "crank positions",
+        "forces_k": "position for the force analysis",
+        "forces_phi": "crank angle for the force analysis",
+        "stroke": "stroke of the slider",
+        "swing": "swing angle of the rocker",
+        "K": "coefficient of velocity change",
+        "offset": "offset of the guide",
+        "lambda": "ratio of the rod to the crank",
+        "rocker": "length of the rocker",
+        "sframe": "distance between the fixed pivots",
+        "rod": "length of the rod",
+        "kind_slider-crank": "slider-crank mechanism",
+        "kind_crank-rocker": "crank-rocker mechanism",
+        "kind_slotted-lever": "slotted-lever mechanism",
+        "kind": "mechanism",
+        "r_stroke": "the stroke of the output",
+        "r_swing_deg": "the swing angle of the output",
+        "r_K": "the coefficient of velocity change",
+        "r_omega": "the angular velocity of the link {i}",
+        "r_eps": "the angular acceleration of the link {i}",
+        "r_V": "the velocity of the point {p}",
+        "r_a": "the acceleration of the point {p}",
+        "r_M_bal": "the balancing moment on the crank",
+        "r_M_bal_lever": "the balancing moment by Zhukovsky's lever",
+        "r_J_flywheel": "the flywheel's moment of inertia",
+        "r_R": "the reaction in the pair {i}–{j}",
+        "r_A_cycle": "the work of the resistances per cycle",
+        "r_M_drive": "the driving moment",
+        "r_I_pr": "the reduced moment of inertia",
+        "r_M_pr": "the reduced moment of the forces",
+        "r_V_rel": "the relative velocity at the point {p}",
+        "r_a_cor": "the Coriolis acceleration at the point {p}",
+        "r_omega_max": "the largest angular velocity of the crank",
+        "r_omega_min": "the smallest angular velocity of the crank",
+    },
+}
+
+#: Symbols of a point load and of a resisting moment, per language.
+LOAD_SYMBOLS = {"ru": ("F_{пс}", "M_{пс}"), "en": ("F_{r}", "M_{r}")}
+
+
+def _f(x: Any) -> float | None:
+    return float(x) if isinstance(x, int | float) and not isinstance(x, bool) else None
+
+
+def linkage_rows(data: Mapping[str, Any], lang: str) -> list[Row]:
+    """The given data of a linkage file as named quantities (see the module's docstring)."""
+    w = WORDS[lang]
+    rows: list[Row] = []
+
+    def add(words: str, sym: str, value: Any, u: str = "") -> None:
+        text = number(value, lang) if not isinstance(value, str) else value
+        rows.append((escape(words), sym, text, unit(u, lang)))
+
+    def pair(xy: Any) -> str | None:
+        if isinstance(xy, list | tuple) and len(xy) == 2 and all(_f(v) is not None for v in xy):
+            sep = "; " if lang == "ru" else ", "
+            return f"({number(float(xy[0]), lang)}{sep}{number(float(xy[1]), lang)})"
+        return None
+
+    synthesis = data.get("synthesis")
+    if isinstance(synthesis, Mapping):
+        kind = str(synthesis.get("kind", ""))
+        add(w["kind"], "", escape(w.get(f"kind_{kind}", kind)))
+        names = {"stroke": ("stroke", "H", "m"), "swing_deg": ("swing", "ψ", "deg"),
+                 "K": ("K", "K", "1"), "offset": ("offset", "e", "m"),
+                 "lambda": ("lambda", "λ", "1"), "rocker": ("rocker", "l_{BC}", "m"),
+                 "frame": ("sframe", "l_{OC}", "m"), "rod": ("rod", "l_{BD}", "m")}  # fmt: skip
+        for key, (word, sym, u) in names.items():
+            if _f(synthesis.get(key)) is not None:
+                add(w[word], sym, float(synthesis[key]), u)
+    frame = data.get("frame")
+    if isinstance(frame, Mapping):
+        for name, xy in frame.items():
+            if (text := pair(xy)) is not None:
+                add(w["frame"].format(p=name), f"({point('x')}; {point('y')})"
+                    if lang == "ru" else "(x, y)", text, "m")  # fmt: skip
+    drive = data.get("drive")
+    if isinstance(drive, Mapping):
+        a, b = str(drive.get("pivot", "")), str(drive.get("joint", ""))
+        if _f(drive.get("length")) is not None:
+            add(w["crank"].format(a=a, b=b), f"l_{{{a}{b}}}", float(drive["length"]), "m")
+        if (om := _f(drive.get("omega"))) is not None:
+            add(w["omega"].format(sense=w["cw" if om < 0 else "ccw"]), "ω_{1}", abs(om), "rad/s")
+        if isinstance(drive.get("positions"), int):
+            add(w["positions"], "n", int(drive["positions"]))
+        phi = drive.get("phi")
+        if isinstance(phi, list) and all(_f(p) is not None for p in phi):
+            add(w["phi"], "φ_{1}", "; ".join(number(float(p), lang) for p in phi), "deg")
+    for g in data.get("group", []) or []:
+        if not isinstance(g, Mapping):
+            continue
+        kind, joint = str(g.get("kind", "")), str(g.get("joint", ""))
+        if kind == "RRR":
+            ends, lengths = g.get("ends", []), g.get("lengths", [])
+            for e, ln in zip(ends, lengths, strict=False):
+                if _f(ln) is not None:
+                    add(w["link"].format(a=e, b=joint), f"l_{{{e}{joint}}}", float(ln), "m")
+        elif kind == "RRP":
+            end = str(g.get("end", ""))
+            if _f(g.get("length")) is not None:
+                add(
+                    w["link"].format(a=end, b=joint), f"l_{{{end}{joint}}}", float(g["length"]), "m"
+                )
+            guide = g.get("guide")
+            if isinstance(guide, Mapping) and "link" not in guide:
+                if (text := pair(guide.get("through"))) is not None:
+                    add(w["guide"].format(p=joint), "(x; y)" if lang == "ru" else "(x, y)",
+                        text, "m")  # fmt: skip
+                if (ang := _f(guide.get("angle"))) is not None and ang != 0.0:
+                    add(w["guide_angle"].format(p=joint), f"α_{{{joint}}}", ang, "deg")
+            elif isinstance(guide, Mapping):
+                off = _f(guide.get("offset"))
+                if off:
+                    fa, tb = guide.get("from", ""), guide.get("toward", "")
+                    add(w["guide_link"].format(p=joint, a=fa, b=tb), "e", off, "m")
+        elif kind == "RPR":
+            off = _f(g.get("offset"))
+            if off:
+                add(w["rpr_offset"].format(p=g.get("pivot", "")), "e", off, "m")
+        elif kind == "PRP":
+            if (ang := _f(g.get("slot_angle"))) is not None:
+                add(w["slot"], "β", ang, "deg")
+            guide = g.get("guide")
+            if isinstance(guide, Mapping) and (text := pair(guide.get("through"))) is not None:
+                add(w["guide"].format(p=g.get("point", "")), "(x; y)" if lang == "ru"
+                    else "(x, y)", text, "m")  # fmt: skip
+    for p in data.get("point", []) or []:
+        if not isinstance(p, Mapping):
+            continue
+        name, fa, tb = str(p.get("name", "")), str(p.get("from", "")), str(p.get("toward", ""))
+        if _f(p.get("along")) is not None:
+            add(w["along"].format(p=name, a=fa, b=tb), f"l_{{{fa}{name}}}", float(p["along"]), "m")
+        if _f(p.get("left")):
+            add(w["left"].format(p=name, a=fa, b=tb), f"h_{{{name}}}", float(p["left"]), "m")
+    links = data.get("links")
+    if isinstance(links, Mapping):
+        for i, link in links.items():
+            if not isinstance(link, Mapping):
+                continue
+            if _f(link.get("mass")) is not None:
+                add(w["mass"].format(i=i), f"m_{{{i}}}", float(link["mass"]), "kg")
+            if _f(link.get("J")) is not None:
+                add(w["J"].format(i=i), f"J_{{S{i}}}", float(link["J"]), "kg·m²")
+    f_sym, m_sym = LOAD_SYMBOLS[lang]
+    loads = [ld for ld in data.get("load", []) or [] if isinstance(ld, Mapping)]
+    for ld in loads:
+        stroke = w.get(str(ld.get("stroke", "working")), str(ld.get("stroke", "")))
+        if "point" in ld and _f(ld.get("value")) is not None:
+            words = w["force"].format(p=ld["point"], stroke=stroke)
+            add(words + (w["shape"] if "shape" in ld else ""), f_sym, float(ld["value"]), "N")
+        elif "link" in ld and _f(ld.get("moment")) is not None:
+            key = "moment_stroke" if "stroke" in ld else "moment"
+            add(w[key].format(i=ld["link"], stroke=stroke), m_sym, float(ld["moment"]), "N·m")
+    dyn = data.get("dynamics")
+    if isinstance(dyn, Mapping) and _f(dyn.get("delta")) is not None:
+        add(w["delta"], "δ", float(dyn["delta"]))
+    if loads or isinstance(links, Mapping):
+        g = _f(data.get("gravity"))
+        if g == 0.0:
+            add(w["no_gravity"], "", "")
+        else:
+            add(w["gravity"], "g", 9.81 if g is None else g, "m/s²")
+    forces = data.get("forces")
+    if isinstance(forces, Mapping):
+        if isinstance(forces.get("position"), int):
+            add(w["forces_k"], "k", int(forces["position"]))
+        if _f(forces.get("phi")) is not None:
+            add(w["forces_phi"], "φ_{1}", float(forces["phi"]), "deg")
+    return rows
+
+
+def problem_rows(problem: Problem[Any], params: Mapping[str, Any], lang: str) -> list[Row]:
+    """The given data of a problem id's variant (see the module's docstring)."""
+    from geomcad.registry import card_words
+
+    words = card_words(problem, lang)
+    rows: list[Row] = []
+    for p in problem.params:
+        if p.name not in params:
+            continue
+        text = words.get(p.name, p.doc if lang == "en" else "")
+        value = params[p.name]
+        shown = number(value, lang) if isinstance(value, int | float) else escape(str(value))
+        rows.append((text if p.name in words else escape(text), symbol(p.name), shown,
+                     unit(p.unit, lang)))  # fmt: skip
+    return rows
+
+
+# --- what to find -----------------------------------------------------------------------------
+
+
+def result_words(
+    problem: Problem[Any], name: str, lang: str, linkage: bool
+) -> tuple[str, str, str]:
+    """(words as markup, symbol, unit) of a result ``name`` (a path's leaf)."""
+    spec = problem.result_spec(name)
+    u = unit("deg" if name.endswith("_deg") else (spec.unit if spec is not None else ""), lang)
+    if linkage:
+        w = WORDS[lang]
+        m = re.fullmatch(r"(omega|eps)_(\d+)", name)
+        if m:
+            return escape(w[f"r_{m.group(1)}"].format(i=m.group(2))), symbol(name), u
+        m = re.fullmatch(r"R_(\d+)_(\d+)", name)
+        if m:
+            return (escape(w["r_R"].format(i=m.group(1), j=m.group(2))),
+                    f"R_{{{m.group(1)}{m.group(2)}}}", u)  # fmt: skip
+        m = re.fullmatch(r"(V_rel|a_cor|V|a)_([A-Za-z]\w*)", name)
+        if m and not m.group(2).endswith(("_x", "_y")):
+            sym = {"V_rel": "V_{rel,", "a_cor": "a_{cor,"}.get(m.group(1))
+            p = m.group(2)
+            symbol_text = f"{sym}{p}}}" if sym else f"{m.group(1)}_{{{p}}}"
+            return escape(w[f"r_{m.group(1)}"].format(p=p)), symbol_text, u
+        if f"r_{name}" in w:
+            ru = lang == "ru"
+            syms = {"stroke": "H", "swing_deg": "ψ", "K": "K",
+                    "M_bal": "M_{ур}" if ru else "M_{bal}",
+                    "J_flywheel": "J_{м}" if ru else "J_{fw}"}  # fmt: skip
+            return escape(w[f"r_{name}"]), syms.get(name, symbol(name)), u
+        return "", symbol(name), u
+    from geomcad.registry import card_words
+
+    words = card_words(problem, lang)
+    if name in words:
+        return words[name], symbol(name), u
+    doc = spec.doc if spec is not None and spec.name == name and lang == "en" else ""
+    return escape(doc), symbol(name), u
+
+
+def is_internal(name: str) -> bool:
+    """A result that checks the solver (``H_check``, ``K_check``), never asked of a student."""
+    return name.endswith("_check")
+
+
+def find_lines(
+    problem: Problem[Any],
+    columns: Sequence[str],
+    positions: Sequence[Mapping[str, Any]],
+    lang: str,
+    linkage: bool,
+    at: str,
+    each: str,
+) -> list[str]:
+    """What to find, one markup line per quantity: words, symbol, unit and where it is asked
+    (the crank angles of its positions), each quantity once."""
+    order: dict[str, list[str]] = {}
+    for c in columns:
+        parts = c.split(".")
+        leaf = next((p for p in reversed(parts) if not p.isdecimal()), c)
+        if is_internal(leaf):
+            continue
+        order.setdefault(leaf, []).append(c)
+    lines = []
+    for leaf, paths in order.items():
+        words, sym, u = result_words(problem, leaf, lang, linkage)
+        where = ""
+        if paths[0].startswith("positions."):
+            phis = []
+            for p in paths:
+                i = p.split(".")[1]
+                if i.isdecimal() and int(i) < len(positions):
+                    phi = positions[int(i)].get("phi_deg")
+                    if isinstance(phi, int | float):
+                        phis.append(number(round(float(phi), 1), lang) + "°")
+            where = (
+                f" {at} φ_{{1}} = {', '.join(phis)}"
+                if 0 < len(phis) <= 4
+                else f" {each.format(n=len(paths))}"
+            )
+        elif len(paths) > 1:
+            where = f" ({', '.join(escape(p.rsplit('.', 1)[1]) for p in paths)})"
+        head = f"{words} {sym}" if words else sym
+        lines.append(head + (f", {u}" if u else "") + where)
+    return lines
