@@ -278,7 +278,19 @@ def _parser(help_for: tuple[str, str] | None = None) -> _Parser:
     s.add_argument(
         "--batch", metavar="ANSWERS.csv", help="grade a class: the answers.csv of geomcad variants"
     )
-    s.add_argument("--out", metavar="FILE", help="with --batch: the verdicts CSV (default stdout)")
+    s.add_argument(
+        "--out",
+        metavar="FILE",
+        help="with --batch: the register, FILE.xlsx or FILE.csv (default: the verdicts on stdout)",
+    )
+    s.add_argument(
+        "--tol",
+        action="append",
+        default=[],
+        metavar="[NAME=]2%|1mm|1deg",
+        help="with --batch: a tolerance for each value or NAME (default 0.5 mm, 0.5°, 0.5 %%)",
+    )
+    _add_lang(s, "with --batch: the register's language (default ru)")
     s.set_defaults(func=_cmd_verify)
 
     from geomcad.teach.cli import add_variants
@@ -331,7 +343,7 @@ def _title_data(ns: argparse.Namespace) -> tuple[Any, Any]:
 ID_HELP = "a problem id (geomcad list), e.g. 2013-6, or a file FILE.toml"
 
 #: Options of solve and verify that take a value (skipped when looking for the ID).
-_VALUED = ("--set", "--measured", "--scale", "--out", "--format", "--batch")
+_VALUED = ("--set", "--measured", "--scale", "--out", "--format", "--batch", "--tol", "--lang")
 
 
 def _help_topic(args: Sequence[str]) -> tuple[str, str] | None:
@@ -615,10 +627,13 @@ def _cmd_verify(ns: argparse.Namespace) -> int:
     from geomcad.verify import verify
 
     if ns.batch is not None:
-        from geomcad.teach.batch import run_batch
+        from geomcad.teach.batch import parse_tol, run_batch
 
         scale = None if ns.scale is None else _scale(ns.scale)
-        return run_batch(ns.batch, ns.id, ns.out, scale, sys.stdout, sys.stderr)
+        tols = [parse_tol(t) for t in ns.tol]
+        return run_batch(
+            ns.batch, ns.id, ns.out, scale, sys.stdout, sys.stderr, tols, ns.lang or "ru"
+        )
     if not ns.measured:
         raise _UsageError("geomcad verify: the following arguments are required: --measured")
     measured = dict(_pair(text, "--measured") for text in ns.measured)
