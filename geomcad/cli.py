@@ -220,8 +220,12 @@ def _parser(help_for: tuple[str, str] | None = None) -> _Parser:
 
     s = sub.add_parser("build", help="draw the sheets of problems")
     s.add_argument(
-        "ids", nargs="*", metavar="ID", help="problem ids or FILE.toml (default: every id)"
+        "ids",
+        nargs="*",
+        metavar="ID",
+        help="problem ids, FILE.toml or a variant file DIR/variant-NN.json (default: every id)",
     )
+    _add_set(s)
     s.add_argument("--out", default="out", help="output folder (default: out)")
     s.add_argument(
         "--format",
@@ -432,8 +436,12 @@ def _cmd_build(ns: argparse.Namespace) -> int:
     from geomcad.teach import jobs
 
     n_jobs = jobs.check_jobs(ns.jobs)
+    if ns.set and not ns.ids:
+        raise _Failed("build --set: name the problem ids or files it applies to")
+    for text in ns.set:
+        _pair(text, "--set")
     for pid in ids:
-        if not documents.is_file_id(pid):
+        if not documents.is_file_id(pid) and not _is_variant_file(pid):
             registry.get(pid)  # an unknown id fails before anything is written
     out = Path(ns.out)
     if out.exists() and not out.is_dir():
@@ -448,20 +456,36 @@ def _cmd_build(ns: argparse.Namespace) -> int:
     prepared: list[tuple[str, Any]] = []
     with jobs.bar(2 * len(ids), "step", "build") as tick:
         for pid in ids:
-            prepared.append(_prepare(pid, options, workdir, ns.review))
+            prepared.append(_prepare(pid, options, workdir, ns.review, tuple(ns.set)))
             tick(1)
         return _write_prepared(ns, prepared, formats, plain, tick, started)
 
 
-def _prepare(pid: str, options: Any, workdir: Any, review: bool) -> tuple[str, Any]:
-    """Solve and draw one problem or file for ``build``: (its file stem, its sheets), in the
-    language the title data name (``--lang``, else the file's or ./geomcad.toml's)."""
+def _is_variant_file(pid: str) -> bool:
+    """True for a problem id's variant file that ``geomcad variants`` wrote (``.json``)."""
+    return pid.lower().endswith(".json")
+
+
+def _prepare(
+    pid: str, options: Any, workdir: Any, review: bool, sets: tuple[str, ...] = ()
+) -> tuple[str, Any]:
+    """Solve and draw one problem, file or variant file for ``build`` (with the ``--set``
+    pairs): (its file stem, its sheets), in the language the title data name (``--lang``, else
+    the file's or ./geomcad.toml's)."""
     from geomcad import documents
     from geomcad.sheet.lang import language
 
     try:
-        sol = documents.solve(pid) if documents.is_file_id(pid) else geomcad.solve(pid)
-        own = _file_title(pid, sol)
+        if _is_variant_file(pid):
+            from geomcad.teach.variants import variant_sets
+
+            vid, pairs = variant_sets(Path(pid))
+            pairs += [_pair(t, "--set") for t in sets]
+            sol = _solve(vid, [f"{k}={v}" for k, v in pairs])
+            own = _variant_title(pid)
+        else:
+            sol = _solve(pid, sets)
+            own = _file_title(pid, sol)
         # the options over the file's own [sheet] table over ./geomcad.toml's
         title = options.over(workdir if own is None else own.over(workdir))
         with language(title.lang or "ru"):
@@ -472,7 +496,8 @@ def _prepare(pid: str, options: Any, workdir: Any, review: bool) -> tuple[str, A
                 sheets += review_sheets(sol, title)
     except GeomcadError as exc:
         raise _Failed(_prefixed(pid, exc)) from exc
-    return (documents.stem(pid) if documents.is_file_id(pid) else pid, sheets)
+    named = documents.is_file_id(pid) or _is_variant_file(pid)
+    return (documents.stem(pid) if named else pid, sheets)
 
 
 def _write_prepared(
@@ -538,7 +563,10 @@ def _build_parallel(
     from geomcad.teach import build, jobs
 
     jobs.warm([pid for pid in ids if documents.is_file_id(pid)], set(formats) - set(plain) != set())
-    args = [(pid, tuple(formats), tuple(plain), ns.color, *title, ns.review) for pid in ids]
+    args = [
+        (pid, tuple(formats), tuple(plain), ns.color, *title, ns.review, tuple(ns.set))
+        for pid in ids
+    ]
     with jobs.bar(len(ids), "problem", "build") as tick, jobs.pool(n_jobs, tick) as run:
         done = run(build.build_one, args)
     for pid, (_stem, _n, _files, error, _missing) in zip(ids, done, strict=True):
@@ -559,6 +587,17 @@ def _build_parallel(
         return EXIT_BAD_INPUT
     _build_summary(sum(n for _, n, _, _, _ in done), len(ids), started)
     return EXIT_OK
+
+
+def _variant_title(path: str) -> Any:
+    """A variant file's ``"sheet"`` object (the student, the group), or ``None``."""
+    import json
+
+    from geomcad.sheet.titleblock import TitleData
+
+    obj = json.loads(Path(path).read_text(encoding="utf-8"))
+    table = obj.get("sheet") if isinstance(obj, dict) else None
+    return None if table is None else TitleData.from_mapping(table, f"{path}: sheet")
 
 
 def _file_title(pid: str, sol: Solution[Any]) -> Any:
