@@ -45,8 +45,9 @@ def decode(raw: bytes) -> str:
         return raw[3:].decode("utf-8")
     if raw.startswith((b"\xff\xfe", b"\xfe\xff")):
         return raw.decode("utf-16")
-    if len(raw) >= 2 and raw.count(0) * 4 >= len(raw):
-        # ASCII in UTF-16: every other byte is NUL, the even ones for big-endian
+    if 0 in raw and len(raw) % 2 == 0:
+        # UTF-8 and cp1251 text has no NUL; in UTF-16 the separators, digits and line ends
+        # are ASCII, whose high byte is NUL: at even offsets for big-endian
         even, odd = raw[0::2].count(0), raw[1::2].count(0)
         return raw.decode("utf-16-be" if even > odd else "utf-16-le")
     try:
