@@ -117,7 +117,7 @@ def test_only_reissues_one_card_byte_for_byte(
     klass: Path, capsys: pytest.CaptureFixture[str], which: str
 ) -> None:
     again = klass / f"again-{which}"
-    code, out, _ = run(capsys, "variants", "2013-6", "--students", str(klass.parent / "roster.csv"),
+    code, _, _ = run(capsys, "variants", "2013-6", "--students", str(klass.parent / "roster.csv"),
                        "--seed", "1", "--out", str(again), *VARY, "--format", "svg",
                        "--teacher", "Петрова", "--only", which)  # fmt: skip
     assert code == 0
@@ -129,7 +129,7 @@ def test_only_reissues_one_card_byte_for_byte(
 def test_only_names_a_variant_that_exists(
     tmp_path: Path, capsys: pytest.CaptureFixture[str]
 ) -> None:
-    code, out, err = run(capsys, "variants", "2013-6", "--count", "2", "--seed", "1", "--out",
+    code, _, err = run(capsys, "variants", "2013-6", "--count", "2", "--seed", "1", "--out",
                          str(tmp_path), *VARY, "--only", "3")  # fmt: skip
     assert code == 2 and err.startswith("error:") and "--only" in err
     assert not list(tmp_path.iterdir())
@@ -210,7 +210,7 @@ def test_one_scale_per_row_for_mm_and_si_lengths(klass: Path) -> None:
 def test_build_with_set_draws_the_variant(
     tmp_path: Path, capsys: pytest.CaptureFixture[str]
 ) -> None:
-    code, out, _ = run(capsys, "build", "2013-6", "--set", "K=1.4", "--format", "svg",
+    code, _, _ = run(capsys, "build", "2013-6", "--set", "K=1.4", "--format", "svg",
                        "--out", str(tmp_path))  # fmt: skip
     assert code == 0
     sheet = (tmp_path / "2013-6.svg").read_text(encoding="utf-8")
@@ -228,7 +228,7 @@ def test_a_variant_file_builds_with_its_student(
 
 
 def test_build_set_on_no_ids_is_refused(capsys: pytest.CaptureFixture[str]) -> None:
-    code, out, err = run(capsys, "build", "--set", "K=1.4")
+    code, _, err = run(capsys, "build", "--set", "K=1.4")
     assert code == 2 and err.startswith("error:") and "--set" in err
 
 
