@@ -483,8 +483,11 @@ def _prepare(
             pairs += [_pair(t, "--set") for t in sets]
             sol = _solve(vid, [f"{k}={v}" for k, v in pairs])
             own = _variant_title(pid)
-        else:
+        elif sets or documents.is_file_id(pid):
             sol = _solve(pid, sets)
+            own = _file_title(pid, sol)
+        else:
+            sol = geomcad.solve(pid)
             own = _file_title(pid, sol)
         # the options over the file's own [sheet] table over ./geomcad.toml's
         title = options.over(workdir if own is None else own.over(workdir))
