@@ -92,6 +92,7 @@ def klass(tmp_path_factory: pytest.TempPathFactory) -> Path:
 def test_five_names_give_five_cards_with_one_name_each(klass: Path) -> None:
     v = klass / "v"
     cards = sorted(v.glob("card-*.svg"))
+    schemes: set[str] = set()
     assert [c.name for c in cards] == [f"card-0{i}.svg" for i in range(1, 6)]
     for card, name in zip(cards, NAMES, strict=True):
         text = card.read_text(encoding="utf-8")
@@ -100,6 +101,11 @@ def test_five_names_give_five_cards_with_one_name_each(klass: Path) -> None:
         for word in ("seed", "H_check", "K_check", "H\\_check", "Determine", "slider stroke"):
             assert word not in text
         assert "ход ползуна" in text and ">м<" in text
+        # the scheme with its letters, the same on every card (not the variant's answer)
+        assert "Схема механизма (без масштаба)" in text and ">C<" in text and ">B<" in text
+        link = text.index('id="layer-link"')
+        schemes.add(text[link : text.index("</g>", link)])
+    assert len(schemes) == 1
     rows = list(csv.DictReader(io.StringIO((v / "answers.csv").read_text(encoding="utf-8"))))
     assert [r["student"] for r in rows] == NAMES
     assert "H_check" not in rows[0] and "l1" in rows[0]
@@ -248,4 +254,4 @@ def test_a_linkage_files_data_are_named_quantities() -> None:
     assert sym["δ"] == ("0,05", "")
     en = {r[1]: r for r in quantities.linkage_rows(data, "en")}
     assert en["F_{r}"][2] == "2000" and en["ω_{1}"][3] == "s^{-1}"
-    assert "clockwise" in en["ω_{1}"][0]
+    assert en["ω_{1}"][0] == "crank, clockwise"

@@ -13,11 +13,14 @@ four significant figures; columns that do not fit an A3 sheet go on to further s
 
 from __future__ import annotations
 
+import functools
+import itertools
 import math
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
+from geomcad.errors import GeomcadError
 from geomcad.sheet import Scale, ScaleStyle, Sheet, TitleBlock, gost_scale_to_fit, start
 from geomcad.sheet.drawing import Drawing
 from geomcad.sheet.frame import fill_title_blocks
@@ -77,6 +80,7 @@ WORDS: dict[str, dict[str, str]] = {
         "no": "No.",
         "pos": "pos.",
         "student": "Student",
+        "scheme": "Scheme of the mechanism (not to scale)",
         "group": "group",
     },
     "ru": {
@@ -97,6 +101,7 @@ WORDS: dict[str, dict[str, str]] = {
         "no": "№",
         "pos": "пол.",
         "student": "Студент",
+        "scheme": "Схема механизма (без масштаба)",
         "group": "группа",
     },
 }
@@ -398,6 +403,67 @@ def linkage_scheme(d: Drawing, data: Mapping[str, Any], position: Mapping[str, A
     return top + height
 
 
+@functools.cache
+def _seed_frames(pid: str) -> Any:
+    """The first frames of a problem id's mechanism as its defaults (the seed's) solve it."""
+    from geomcad import registry
+
+    problem = registry.get(pid)
+    assert problem.motion is not None
+    return problem.motion(problem.solve(), 2)
+
+
+def motion_scheme(d: Drawing, sol: Solution[Any], top: float, lang: Lang = "en") -> float:
+    """A problem id's mechanism as a scheme with its letters, from ``top``; returns the y below
+    (``top`` when the problem has no :attr:`Problem.motion`, the mechanism ``geomcad animate``
+    draws). It is the mechanism of the problem's own defaults, marked "not to scale": every
+    variant's card shows the same scheme, and a synthesis problem's answers (2013-6's crank and
+    rod) cannot be measured off it. Links as lines, frame points as supports, sliders as
+    blocks on their guides, every point labelled."""
+    if sol.problem.motion is None:
+        return top
+    try:
+        frames = _seed_frames(sol.problem.id)
+    except GeomcadError:
+        return top
+    pts = {n: (float(a[0, 0]), float(a[0, 1])) for n, a in frames.points.items()}
+    if len(pts) < 2:
+        return top
+    x_min, y_min, w, h, pad = _extent(pts)
+    k = gost_scale_to_fit(w + 2 * pad, h + 2 * pad, SCHEME_W, SCHEME_H - 8.0)
+    height = min(SCHEME_H, (h + 2 * pad) / k.k + 8.0)
+    centre = (x_min + w / 2, y_min + h / 2)
+    v = d.viewport(k, centre, ((LEFT + RIGHT) / 2, top + 8.0 + (height - 8.0) / 2))
+    d.text(_esc(WORDS[lang]["scheme"]), (LEFT + PAD, top + 4.0), TEXT_H)
+    for name, u in frames.sliders.items():
+        q = pts.get(name)
+        if q is None:
+            continue
+        span = k.model(25.0)
+        v.seg((q[0] - u[0] * span, q[1] - u[1] * span),
+              (q[0] + u[0] * span, q[1] + u[1] * span), "centre")  # fmt: skip
+    for chain in frames.links:
+        for a, b in itertools.pairwise(chain):
+            if a in pts and b in pts and pts[a] != pts[b]:
+                v.seg(pts[a], pts[b], "link")
+    for name, u in frames.sliders.items():
+        if name in pts:
+            v.slider(pts[name], u)
+    for n in frames.fixed:
+        if n in pts:
+            v.pivot(pts[n])
+    joints = frames.joints if frames.joints is not None else tuple(
+        n for chain in frames.links for n in chain)  # fmt: skip
+    for n in dict.fromkeys(joints):
+        if n in pts and n not in frames.fixed and n not in frames.sliders:
+            v.joint(pts[n])
+    labelled = frames.labelled if frames.labelled is not None else tuple(pts)
+    for n in labelled:
+        if n in pts:
+            v.label(pts[n], n, height=3.5)
+    return top + height
+
+
 # --- sheets -----------------------------------------------------------------------------------
 
 
@@ -446,6 +512,8 @@ def task_card(
     y += 3.0
     if data is not None and isinstance(first, Mapping):
         y = linkage_scheme(d, data, first, y, info.lang) + 2.0
+    elif data is None:
+        y = motion_scheme(d, sol, y, info.lang) + 2.0
     linkage = data is not None and _is_linkage(data)
     markup = data is None or linkage
     head = [words["quantity"], words["symbol"], words["value"], words["unit"]]
