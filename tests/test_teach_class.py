@@ -255,3 +255,19 @@ def test_a_linkage_files_data_are_named_quantities() -> None:
     en = {r[1]: r for r in quantities.linkage_rows(data, "en")}
     assert en["F_{r}"][2] == "2000" and en["ω_{1}"][3] == "s^{-1}"
     assert en["ω_{1}"][0] == "crank, clockwise"
+
+
+def test_a_class_csv_may_name_students_without_their_variant(
+    klass: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    rows = list(csv.DictReader(io.StringIO((klass / "v" / "answers.csv").read_text("utf-8"))))
+    path = klass / "by-name.csv"
+    path.write_text("student;l1\n" + "".join(f"{r['student']};{r['l1']}\n" for r in rows[::-1])
+                    + "Никто;0,1\n", encoding="utf-8")  # fmt: skip
+    code, verdicts, _ = run(capsys, "verify", "--batch", str(klass / "v" / "answers.csv"),
+                            str(path))  # fmt: skip
+    got = {r["student"]: r for r in csv.DictReader(io.StringIO(verdicts))}
+    assert code == 1 and all(got[n]["ok"] == "yes" for n in NAMES)
+    assert got[NAMES[0]]["variant"] == "1" and got["Никто"]["error"] == "no variant"
+    meta = json.loads((klass / "v" / "answers.json").read_text(encoding="utf-8"))
+    assert [v["student"] for v in meta["variants"]] == NAMES

@@ -82,6 +82,11 @@ class Answers:
         self.base = Path(path).parent
         self.files = {_variant_no(r["variant"]): r["file"] for _, r in rows if r.get("variant")}
         self.groups = {_variant_no(r["variant"]): r.get("group", "") for _, r in rows}
+        self.by_student = {
+            " ".join(r["student"].split()).casefold(): _variant_no(r["variant"])
+            for _, r in rows
+            if r.get("student") and r.get("variant")
+        }
         self._solved: dict[str, Solution[Any] | GeomcadError] = {}
 
     def solution(self, variant: str) -> Solution[Any]:
@@ -250,7 +255,7 @@ def grade(
     answers = Answers(answers_path)
     header, rows = _read_csv(students_path, "students")
     for col in ("student", "variant"):
-        if col not in header:
+        if col not in header and not (col == "variant" and answers.by_student):
             raise GeomcadError(f"students {students_path}: no {col!r} column")
     names = [h for h in header if h and h not in ("student", "variant", "scale", "group")]
     lines: list[dict[str, str]] = []
@@ -259,6 +264,8 @@ def grade(
     n_ok = n_values = n_errors = 0
     for line, cells in rows:
         student, variant = cells.get("student", ""), _variant_no(cells.get("variant", ""))
+        if "variant" not in header:  # the roster's answers know each student's variant
+            variant = answers.by_student.get(" ".join(student.split()).casefold(), "")
         base = {"row": str(line), "student": student, "variant": variant}
         who = f"row {line} {student or '?'} (variant {variant or '?'})"
         entry = Entry(student, variant, cells.get("group", "") or answers.groups.get(variant, ""))

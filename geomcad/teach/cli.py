@@ -237,6 +237,8 @@ def cmd_variants(ns: argparse.Namespace) -> int:
         )
         json_path = out / "answers.json"
         obj = _answers_json(ns, template, min_tr, drawn, columns, units, names, rows)
+        for entry, person in zip(obj["variants"], people or [], strict=False):
+            entry["student"], entry["group"] = person
         text = json.dumps(obj, ensure_ascii=False, indent=2, allow_nan=False) + "\n"
         write_atomic(json_path, text.encode("utf-8"))
         pdf_path = out / "answers.pdf"
