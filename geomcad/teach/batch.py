@@ -6,8 +6,17 @@ column, then one column per measured value, named as ``verify --measured`` names
 ``O1B1_mm``, ``positions.0.V_D_mm``, ``r.2``); an empty cell is a value not measured. Commas,
 semicolons or tabs separate the cells; a decimal comma is accepted.
 
+Against a key made from a roster (answers.csv with a ``student`` column) the ``variant`` column
+may be left out: each student's variant is found by name. An optional ``scale`` column gives the
+k_l the student drew at (``0.005`` or ``1:5``); else ``--scale``, else the variant's own sheet's.
+That one k_l converts the row's ``NAME_mm`` readings and judges its lengths given in metres.
+
 Each student's values are graded by :func:`geomcad.verify.verify` against the exact solution of
-that student's variant, with the same precision rules. The verdicts CSV has one line per value:
+that student's variant, with the same precision rules, unless a ``--tol`` says otherwise
+(:class:`Tolerance`: ``2%`` of the exact value, ``1mm`` on the sheet at the value's own plan
+scale, ``1deg``; ``NAME=…`` for one quantity). ``--out FILE.xlsx`` or ``FILE.csv`` writes the
+register (:func:`register_rows`): a row per student, per quantity the reading, its deviation in %
+and ✓/✗, the count right and an empty mark column for the teacher. The verdicts CSV has one line per value:
 row, student, variant, name, reading, measured, exact, deviation, deviation_mm, precision,
 unit, ok, error; ``reading`` is the cell as written (sheet mm for a ``NAME_mm`` value), every
 other number is in the result's SI unit. A row that cannot be graded (no student, an unknown
