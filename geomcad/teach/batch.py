@@ -282,6 +282,8 @@ def grade(
         try:
             if not student:
                 raise GeomcadError("no student name")
+            if not variant and "variant" not in header:
+                raise GeomcadError("no variant: the key's roster has no student of that name")
             if not variant:
                 raise GeomcadError("no variant")
             if "\0extra" in cells:
