@@ -16,8 +16,9 @@ that student's variant, with the same precision rules, unless a ``--tol`` says o
 (:class:`Tolerance`: ``2%`` of the exact value, ``1mm`` on the sheet at the value's own plan
 scale, ``1deg``; ``NAME=…`` for one quantity). ``--out FILE.xlsx`` or ``FILE.csv`` writes the
 register (:func:`register_rows`): a row per student, per quantity the reading, its deviation in %
-and ✓/✗, the count right and an empty mark column for the teacher. The verdicts CSV has one line per value:
-row, student, variant, name, reading, measured, exact, deviation, deviation_mm, precision,
+and ✓/✗, the count right and an empty mark column for the teacher.
+
+The verdicts CSV (stdout) has one line per value: row, student, variant, name, reading, measured, exact, deviation, deviation_mm, precision,
 unit, ok, error; ``reading`` is the cell as written (sheet mm for a ``NAME_mm`` value), every
 other number is in the result's SI unit. A row that cannot be graded (no student, an unknown
 variant, no values) gets one line with its error, and a value that cannot be read gets its own
