@@ -18,8 +18,9 @@ scale, ``1deg``; ``NAME=…`` for one quantity). ``--out FILE.xlsx`` or ``FILE.c
 register (:func:`register_rows`): a row per student, per quantity the reading, its deviation in %
 and ✓/✗, the count right and an empty mark column for the teacher.
 
-The verdicts CSV (stdout) has one line per value: row, student, variant, name, reading, measured, exact, deviation, deviation_mm, precision,
-unit, ok, error; ``reading`` is the cell as written (sheet mm for a ``NAME_mm`` value), every
+The verdicts CSV (stdout; the register workbook's second sheet) has one line per value: row,
+student, variant, name, reading, measured, exact, deviation, deviation_mm, precision, unit, ok,
+error; ``reading`` is the cell as written (sheet mm for a ``NAME_mm`` value), every
 other number is in the result's SI unit. A row that cannot be graded (no student, an unknown
 variant, no values) gets one line with its error, and a value that cannot be read gets its own
 error; every other value is still graded.
