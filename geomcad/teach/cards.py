@@ -39,7 +39,7 @@ TEXT_H = 2.5
 #: The largest room the scheme takes on a card (mm).
 SCHEME_W, SCHEME_H = RIGHT - LEFT - 2 * PAD, 75.0
 
-UNIT_TEXT = {"1": "", "": "", "deg": "°", "m/s²": "m/s^2", "rad/s²": "rad/s^2"}
+UNIT_TEXT = {"1": "", "": "", "deg": "°"}
 
 
 def _title(problem: Problem[Any], lang: Lang) -> str:

@@ -9,8 +9,8 @@ id's parameters and results take their words from its package's ``cards`` table
 (:func:`geomcad.registry.card_words`), else, on an English card, their own docs; on a card in
 another language a name without words is shown by its symbol alone.
 
-    >>> symbol("theta_deg"), symbol("O1B0"), symbol("omega_3"), symbol("l_AB")
-    ('θ', 'O_{1}B_{0}', 'ω_{3}', 'l_{AB}')
+    >>> symbol("theta_deg"), symbol("O1B0"), symbol("omega_3"), symbol("l_AB"), symbol("I_pr_A")
+    ('θ', 'O_{1}B_{0}', 'ω_{3}', 'l_{AB}', 'I_{pr,A}')
     >>> number(0.08, "ru"), number(2500.0, "en"), number(-10.0, "ru")
     ('0,08', '2500', '-10')
 """
@@ -83,7 +83,7 @@ def symbol(name: str) -> str:
     base = name.removesuffix("_deg")
     head, sep, tail = base.partition("_")
     if sep:
-        return f"{GREEK.get(head, escape(head))}_{{{escape(tail)}}}"
+        return f"{GREEK.get(head, escape(head))}_{{{escape(tail.replace('_', ','))}}}"
     for word, letter in sorted(GREEK.items(), key=lambda kv: -len(kv[0])):
         if base.startswith(word) and (base[len(word) :].isdecimal() or base == word):
             rest = base[len(word) :]
