@@ -271,3 +271,19 @@ def test_a_class_csv_may_name_students_without_their_variant(
     assert got[NAMES[0]]["variant"] == "1" and "no student of that name" in got["Никто"]["error"]
     meta = json.loads((klass / "v" / "answers.json").read_text(encoding="utf-8"))
     assert [v["student"] for v in meta["variants"]] == NAMES
+
+
+@pytest.mark.parametrize("name", ["cam-translating-roller.toml", "gear-pair.toml"])
+def test_cam_and_gear_files_data_are_named_quantities(name: str) -> None:
+    with open(ROOT / "examples" / name, "rb") as f:
+        data = tomllib.load(f)
+    for lang in ("ru", "en"):
+        rows = quantities.file_rows(data, lang)
+        text = " ".join(" ".join(r) for r in rows)
+        assert "cam." not in text and "gears." not in text and "\\_" not in text
+        assert all(r[0] for r in rows)  # every quantity has its words
+    sym = {r[1]: r for r in quantities.file_rows(data, "ru")}
+    if name.startswith("cam"):
+        assert sym["H"][2] == "0,03" and sym["φ_{1}"][0].startswith("фаза 1: подъём")
+    else:
+        assert sym["z_{1}"][2] == "12" and sym["m"][3] == "м"

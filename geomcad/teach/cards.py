@@ -26,7 +26,7 @@ from geomcad.sheet.drawing import Drawing
 from geomcad.sheet.frame import fill_title_blocks
 from geomcad.sheet.lang import Lang
 from geomcad.sheet.text import box, parse
-from geomcad.teach import keys, quantities
+from geomcad.teach import quantities
 
 if TYPE_CHECKING:
     from geomcad.problem import Problem, Solution
@@ -132,7 +132,7 @@ def _fit(text: str, width: float, height: float = TEXT_H, markup: bool = False) 
     if markup:
         if box(parse(text), height)[0] <= width:
             return text
-        words = text.split(" ")
+        words = _words(text)
         while len(words) > 1 and box(parse(" ".join(words) + "..."), height)[0] > width:
             words.pop()
         return " ".join(words) + "..."
@@ -143,9 +143,22 @@ def _fit(text: str, width: float, height: float = TEXT_H, markup: bool = False) 
     return text.rstrip() + "..."
 
 
+def _words(markup: str) -> list[str]:
+    """Markup split at its spaces, never inside braces (``r_{0 min}`` stays one word)."""
+    out, depth, word = [], 0, ""
+    for ch in markup:
+        depth += {"{": 1, "}": -1}.get(ch, 0)
+        if ch == " " and depth == 0:
+            out.append(word)
+            word = ""
+        else:
+            word += ch
+    return [*out, word]
+
+
 def _wrap(text: str, width: float, height: float = TEXT_H, markup: bool = False) -> list[str]:
     lines: list[list[str]] = [[]]
-    for word in text.split(" "):
+    for word in _words(text) if markup else text.split(" "):
         trial = " ".join([*lines[-1], word])
         if lines[-1] and box(parse(trial if markup else _esc(trial)), height)[0] > width:
             lines.append([])
@@ -191,85 +204,6 @@ def _col_widths(
         i = max(range(n), key=natural.__getitem__)
         natural[i] = max(12.0, room - (sum(natural) - natural[i]))
     return natural
-
-
-# --- data of a variant ------------------------------------------------------------------------
-
-
-def problem_rows(sol: Solution[Any], lang: str = "en") -> list[list[str]]:
-    """The data table of a problem id's variant: quantity, symbol, value, unit."""
-    w = WORDS[lang]
-    rows = [[w["quantity"], w["symbol"], w["value"], w["unit"]]]
-    for p in sol.problem.params:
-        if p.name not in sol.params:
-            continue
-        rows.append([p.doc, p.name, _value(sol.params[p.name]), _unit(p.unit)])
-    return rows
-
-
-def file_rows(data: Mapping[str, Any], lang: str = "en") -> list[list[str]]:
-    """The data table of a file's variant: every value under its dotted key (lists counted
-    from 1, as ``--set`` names them)."""
-    rows = [[WORDS[lang]["keycol"], WORDS[lang]["value"]]]
-
-    def walk(node: Any, path: str) -> None:
-        if isinstance(node, Mapping):
-            for k, v in node.items():
-                walk(v, f"{path}.{k}" if path else str(k))
-        elif isinstance(node, list) and node and all(isinstance(v, Mapping) for v in node):
-            for i, v in enumerate(node, start=1):
-                walk(v, f"{path}.{i}")
-        elif path != "title":
-            rows.append([path, _value(node)])
-
-    walk(data, "")
-    return rows
-
-
-def find_lines(
-    problem: Problem[Any], columns: Sequence[str], sol: Solution[Any], lang: str = "en"
-) -> list[str]:
-    """What to find: each key result once, with its meaning, and where it is asked."""
-    groups: dict[str, list[str]] = {}
-    for c in columns:
-        groups.setdefault(_generic(c), []).append(c)
-    # results with the same meaning, unit and positions share a line: ω_2, ω_3, ω_4 …
-    merged: dict[tuple[str, str, str], list[str]] = {}
-    for generic, paths in groups.items():
-        name = keys.leaf(generic)
-        spec = problem.result_spec(name) or problem.result_spec(generic.split(".")[0])
-        doc = spec.doc if spec is not None and spec.name == name else ""
-        unit = _unit(spec.unit) if spec is not None and spec.name == name else ""
-        merged.setdefault((unit, doc, _where(generic, paths, sol, lang)), []).append(name)
-    return [
-        ", ".join(names) + (f", {unit}" if unit else "") + (f": {doc}" if doc else "") + where
-        for (unit, doc, where), names in merged.items()
-    ]
-
-
-def _generic(path: str) -> str:
-    """``positions.3.V_D`` → ``positions.*.V_D``; ``r.2`` → ``r``."""
-    parts = path.split(".")
-    if parts[-1].isdecimal():
-        return ".".join(parts[:-1])
-    return ".".join("*" if p.isdecimal() else p for p in parts)
-
-
-def _where(generic: str, paths: Sequence[str], sol: Solution[Any], lang: str) -> str:
-    w = WORDS[lang]
-    if generic.startswith("positions.*."):
-        phis = []
-        for p in paths:
-            i = int(p.split(".")[1])
-            pos = sol.results.get("positions", [])
-            if i < len(pos) and isinstance(pos[i], Mapping) and "phi_deg" in pos[i]:
-                phis.append(keys.fmt(float(pos[i]["phi_deg"])).rstrip("0").rstrip(".") + "°")
-        if phis and len(phis) <= 4:
-            return f" ({w['at']} φ_1 = {', '.join(phis)})"
-        return " (" + w["each"].format(n=len(paths)) + ")"
-    if len(paths) > 1 or paths[0] != generic:
-        return f" ({w['items']} {', '.join(p.rsplit('.', 1)[1] for p in paths)})"
-    return ""
 
 
 # --- the linkage scheme -----------------------------------------------------------------------
@@ -515,29 +449,26 @@ def task_card(
     elif data is None:
         y = motion_scheme(d, sol, y, info.lang) + 2.0
     linkage = data is not None and _is_linkage(data)
-    markup = data is None or linkage
     head = [words["quantity"], words["symbol"], words["value"], words["unit"]]
     if data is None:
         rows = [head, *map(list, quantities.problem_rows(problem, sol.params, info.lang))]
     elif linkage:
         rows = [head, *map(list, quantities.linkage_rows(data, info.lang))]
     else:
-        rows = file_rows(data, info.lang)
+        rows = [head, *map(list, quantities.file_rows(data, info.lang))]
     pos = positions if isinstance(positions, list) else []
-    lines = (
-        quantities.find_lines(problem, columns, pos, info.lang, linkage, words["at"], words["each"])
-        if markup
-        else find_lines(problem, columns, sol, info.lang)
+    lines = quantities.find_lines(
+        problem, columns, pos, info.lang, linkage, words["at"], words["each"]
     )
     find: list[tuple[float, str]] = []  # (indent, text) of each line of "Find"
     for i, line in enumerate(lines, start=1):
-        wrapped = _wrap(f"{i}. {line}", room - 4.0, markup=markup)
-        find += [(4.0 if j else 0.0, t if markup else _esc(t)) for j, t in enumerate(wrapped)]
+        wrapped = _wrap(f"{i}. {line}", room - 4.0, markup=True)
+        find += [(4.0 if j else 0.0, t) for j, t in enumerate(wrapped)]
     lead = TEXT_H * 1.7
     find_h = 8.0 + 8.0 + lead * len(find) + 2.0
     d.text(words["given"], (x0, y + 5.0), 3.5)
     y += 8.0
-    y = _given(d, rows, x0, y, room, BOTTOM - y - find_h, markup) + 4.0
+    y = _given(d, rows, x0, y, room, BOTTOM - y - find_h, markup=True) + 4.0
     d.text(words["find"], (x0, y + 5.0), 3.5)
     y += 8.0
     fits = int((BOTTOM - 1.0 - y) / lead)

@@ -410,10 +410,15 @@ def result_words(
     from geomcad.registry import card_words
 
     words = card_words(problem, lang)
+    own = spec.symbol if spec is not None and spec.name == name and spec.symbol else ""
     if name in words:
-        return words[name], symbol(name), u
+        return words[name], own or symbol(name), u
+    if problem.id.lower().endswith(".toml") and name in FILE_RESULTS:
+        ru_words, sym = FILE_RESULTS[name]
+        doc = spec.doc if spec is not None and spec.name == name else ""
+        return escape(ru_words if lang == "ru" else doc), own or sym, u
     doc = spec.doc if spec is not None and spec.name == name and lang == "en" else ""
-    return escape(doc), symbol(name), u
+    return escape(doc), own or symbol(name), u
 
 
 def is_internal(name: str) -> bool:
@@ -461,3 +466,140 @@ def find_lines(
         head = f"{words} {sym}" if words else sym
         lines.append(head + (f", {u}" if u else "") + where)
     return lines
+
+
+# --- cam and gear files -----------------------------------------------------------------------
+
+#: A cam or gear file's keys (a table's key, a list's items counted apart): (ru words, en words,
+#: symbol, SI unit).
+FILE_KEYS: dict[str, tuple[str, str, str, str]] = {
+    "cam.follower": ("толкатель", "follower", "", ""),
+    "cam.motion": ("движение толкателя", "follower's motion", "", ""),
+    "cam.rotation": ("вращение кулачка", "cam's rotation", "", ""),
+    "cam.stroke": ("ход толкателя", "stroke of the follower", "H", "m"),
+    "cam.swing_deg": ("угол размаха коромысла", "swing of the rocker", "ψ_{max}", "deg"),
+    "cam.arm": ("длина коромысла", "length of the rocker", "l_{AB}", "m"),
+    "cam.pressure_angle_deg": ("допустимый угол давления (подъём)",
+                               "allowed pressure angle (rise)", "ϑ_{доп}", "deg"),
+    "cam.return_pressure_angle_deg": ("допустимый угол давления (опускание)",
+                                      "allowed pressure angle (return)", "ϑ'_{доп}", "deg"),
+    "cam.offset": ("эксцентриситет", "offset", "e", "m"),
+    "cam.r0_step": ("шаг округления радиуса r0", "rounding step of r0", "", "m"),
+    "cam.roller_radius": ("радиус ролика", "roller's radius", "r_{р}", "m"),
+    "cam.rho_allowed": ("наименьший радиус кривизны", "smallest radius of curvature", "ρ_{min}",
+                        "m"),
+    "cam.divisions": ("число делений фаз", "divisions of each phase", "n", ""),
+    "gears.pair.z1": ("число зубьев шестерни", "teeth of the pinion", "z_{1}", ""),
+    "gears.pair.z2": ("число зубьев колеса", "teeth of the wheel", "z_{2}", ""),
+    "gears.pair.m": ("модуль", "module", "m", "m"),
+    "gears.pair.shift": ("смещение", "shift", "", ""),
+    "gears.pair.x1": ("коэффициент смещения шестерни", "shift of the pinion", "x_{1}", ""),
+    "gears.pair.x2": ("коэффициент смещения колеса", "shift of the wheel", "x_{2}", ""),
+    "gears.pair.x_sum": ("сумма коэффициентов смещения", "sum of the shifts", "x_{Σ}", ""),
+    "gears.pair.alpha_deg": ("угол профиля", "pressure angle", "α", "deg"),
+    "gears.pair.ha": ("коэффициент высоты головки", "addendum coefficient", "h^{*}_{a}", ""),
+    "gears.pair.c": ("коэффициент радиального зазора", "clearance coefficient", "c^{*}", ""),
+    "gears.planetary.scheme": ("схема редуктора", "scheme", "", ""),
+    "gears.planetary.ratio": ("передаточное отношение", "gear ratio", "u", ""),
+    "gears.planetary.tolerance": ("допуск передаточного отношения", "tolerance of the ratio",
+                                  "Δu", ""),
+    "gears.planetary.planets": ("число сателлитов", "planets", "k", ""),
+    "gears.planetary.m": ("модуль", "module", "m", "m"),
+}  # fmt: skip
+
+#: Word values of a cam or gear file, per language (others are shown as written).
+FILE_WORDS = {
+    "ru": {"roller": "роликовый", "knife": "острый", "flat": "тарельчатый",
+           "translating": "поступательное", "rocking": "качательное", "cw": "по часовой",
+           "ccw": "против часовой", "best": "наилучший", "rise": "подъём", "dwell": "выстой",
+           "return": "опускание", "equal_sliding": "равные скольжения",
+           "no_undercut": "без подрезания", "max_contact_ratio": "наибольшее перекрытие",
+           "given": "задано", "linear": "линейный", "constant_acceleration": "равноускоренный",
+           "harmonic": "косинусоидальный", "cycloidal": "синусоидальный",
+           "poly345": "полином 3-4-5", "modified_trapezoid": "модифицированная трапеция",
+           "phase": "фаза {i}: {kind}"},
+    "en": {"constant_acceleration": "constant acceleration", "equal_sliding": "equal sliding",
+           "no_undercut": "no undercut", "max_contact_ratio": "largest contact ratio",
+           "modified_trapezoid": "modified trapezoid", "phase": "phase {i}: {kind}"},
+}  # fmt: skip
+
+
+def file_rows(data: Mapping[str, Any], lang: str) -> list[Row]:
+    """The given data of a cam or gear file as named quantities (a key not in
+    :data:`FILE_KEYS` is named by its own name as a symbol)."""
+    words = FILE_WORDS[lang]
+    rows: list[Row] = []
+
+    def word(v: Any) -> str:
+        return escape(words.get(str(v), str(v))) if isinstance(v, str) else number(v, lang)
+
+    def walk(node: Any, path: str) -> None:
+        if isinstance(node, Mapping):
+            for k, v in node.items():
+                walk(v, f"{path}.{k}" if path else str(k))
+            return
+        if path in ("title",) or path.startswith("sheet"):
+            return
+        if path.endswith(".phases") and isinstance(node, list):
+            for i, ph in enumerate(node, start=1):
+                if not isinstance(ph, Mapping):
+                    continue
+                kind = words.get(str(ph.get("kind", "")), str(ph.get("kind", "")))
+                law = ph.get("law")
+                text = words["phase"].format(i=i, kind=kind)
+                text += f", {words.get(str(law), str(law))}" if law else ""
+                rows.append((escape(text), f"φ_{{{i}}}", word(ph.get("angle_deg", "")), "°"))
+            return
+        ru, en, sym, u = FILE_KEYS.get(path, ("", "", symbol(path.rsplit(".", 1)[-1]), ""))
+        value = word(node) if not isinstance(node, list) else "; ".join(word(v) for v in node)
+        rows.append((escape(ru if lang == "ru" else en), sym, value, unit(u, lang)))
+
+    walk(data, "")
+    return rows
+
+
+#: What a cam or gear file's results are, in Russian, and their symbols.
+FILE_RESULTS: dict[str, tuple[str, str]] = {
+    "H": ("ход толкателя", "H"),
+    "swing_deg": ("угол размаха коромысла", "ψ_{max}"),
+    "e": ("эксцентриситет", "e"),
+    "r0_min": ("наименьший радиус основной шайбы", "r_{0,min}"),
+    "r0": ("принятый радиус основной шайбы", "r_{0}"),
+    "r_roller": ("радиус ролика", "r_{р}"),
+    "rho_min": ("наименьший радиус кривизны профиля", "ρ_{min}"),
+    "rho_pitch_min": ("наименьший радиус кривизны центрового профиля", "ρ_{0,min}"),
+    "pressure_angle_allowed_deg": ("допустимый угол давления (подъём)", "ϑ_{доп}"),
+    "return_pressure_angle_allowed_deg": ("допустимый угол давления (опускание)", "ϑ'_{доп}"),
+    "pressure_angle_max_deg": ("наибольший угол давления", "ϑ_{max}"),
+    "pressure_angle_max_rise_deg": ("наибольший угол давления на подъёме", "ϑ_{max}"),
+    "pressure_angle_max_return_deg": ("наибольший угол давления на опускании", "ϑ'_{max}"),
+    "a": ("делительное межосевое расстояние", "a"),
+    "a_w": ("межосевое расстояние", "a_{w}"),
+    "alpha_w_deg": ("угол зацепления", "α_{w}"),
+    "y": ("коэффициент воспринимаемого смещения", "y"),
+    "delta_y": ("коэффициент уравнительного смещения", "Δy"),
+    "x1": ("коэффициент смещения шестерни", "x_{1}"),
+    "x2": ("коэффициент смещения колеса", "x_{2}"),
+    "d1": ("делительный диаметр шестерни", "d_{1}"),
+    "d2": ("делительный диаметр колеса", "d_{2}"),
+    "d_b1": ("основной диаметр шестерни", "d_{b1}"),
+    "d_b2": ("основной диаметр колеса", "d_{b2}"),
+    "d_w1": ("начальный диаметр шестерни", "d_{w1}"),
+    "d_w2": ("начальный диаметр колеса", "d_{w2}"),
+    "d_a1": ("диаметр вершин шестерни", "d_{a1}"),
+    "d_a2": ("диаметр вершин колеса", "d_{a2}"),
+    "d_f1": ("диаметр впадин шестерни", "d_{f1}"),
+    "d_f2": ("диаметр впадин колеса", "d_{f2}"),
+    "s_a1": ("толщина зуба шестерни по окружности вершин", "s_{a1}"),
+    "s_a2": ("толщина зуба колеса по окружности вершин", "s_{a2}"),
+    "eps_alpha": ("коэффициент торцового перекрытия", "ε_{α}"),
+    "eps_alpha_drawn": ("коэффициент перекрытия по чертежу зацепления", "ε'_{α}"),
+    "lambda1_max": ("наибольшее удельное скольжение шестерни", "λ_{1,max}"),
+    "lambda2_max": ("наибольшее удельное скольжение колеса", "λ_{2,max}"),
+    "u": ("достигнутое передаточное отношение", "u"),
+    "u_error": ("относительная ошибка передаточного отношения", "δu"),
+    "z": ("числа зубьев колёс", "z"),
+    "z1": ("число зубьев шестерни", "z_{1}"),
+    "z2": ("число зубьев колеса", "z_{2}"),
+    "m": ("модуль", "m"),
+}
