@@ -1,11 +1,13 @@
 """The sheets of a set of variants: an A4 task card per variant and the answer-key table.
 
-A task card (A4 portrait, frame and title block form 1) says what a student gets: the variant's
-number, the problem's title, for a linkage file the scheme of the mechanism in its first position
-at a GOST scale, the data table (every parameter, or every value of the file, with its unit),
-and what to find (the key's results by name). The title block carries the course (organisation
-field), the variant in the designation, the teacher as "Checked", and leaves "Drawn" blank for the
-student. No answer is on the card.
+A task card (A4 portrait, frame and title block form 1) says what a student gets, in one
+language: the variant's number, the student's name and group (a roster's), the problem's title,
+a scheme of the mechanism with its letters (a linkage file's in its first position at a GOST
+scale; a problem id's from its ``motion`` at its defaults, not to scale), the given data as named
+quantities with symbols, values and units, and what to find in words
+(:mod:`geomcad.teach.quantities`). The title block carries the course (organisation field), the
+variant in the designation, the student as "Drawn" with the group, and the teacher as "Checked".
+No answer, file key, seed or solver check is on the card.
 
 The answer-key sheet is a ruled table: one row per variant, one column per key result, values to
 four significant figures; columns that do not fit an A3 sheet go on to further sheets.
