@@ -456,7 +456,7 @@ def _cmd_build(ns: argparse.Namespace) -> int:
     prepared: list[tuple[str, Any]] = []
     with jobs.bar(2 * len(ids), "step", "build") as tick:
         for pid in ids:
-            prepared.append(_prepare(pid, options, workdir, ns.review, tuple(ns.set)))
+            prepared.append(_prepare(pid, options, workdir, ns.review, sets=tuple(ns.set)))
             tick(1)
         return _write_prepared(ns, prepared, formats, plain, tick, started)
 

@@ -37,7 +37,7 @@ def build_one(
     from geomcad.render import write_sheets
 
     try:
-        stem, sheets = cli._prepare(pid, options, workdir, review, sets)
+        stem, sheets = cli._prepare(pid, options, workdir, review, sets=sets)
     except (GeomcadError, cli._Failed) as exc:
         return pid, 0, [], str(exc), ""
     missing = ""
