@@ -231,8 +231,12 @@ def _parser(help_for: tuple[str, str] | None = None) -> _Parser:
 
     s = sub.add_parser("build", help="draw the sheets of problems")
     s.add_argument(
-        "ids", nargs="*", metavar="ID", help="problem ids or FILE.toml (default: every id)"
+        "ids",
+        nargs="*",
+        metavar="ID",
+        help="problem ids, FILE.toml or a variant file DIR/variant-NN.json (default: every id)",
     )
+    _add_set(s)
     s.add_argument("--out", default="out", help="output folder (default: out)")
     s.add_argument(
         "--format",
@@ -290,7 +294,19 @@ def _parser(help_for: tuple[str, str] | None = None) -> _Parser:
     s.add_argument(
         "--batch", metavar="ANSWERS.csv", help="grade a class: the answers.csv of geomcad variants"
     )
-    s.add_argument("--out", metavar="FILE", help="with --batch: the verdicts CSV (default stdout)")
+    s.add_argument(
+        "--out",
+        metavar="FILE",
+        help="with --batch: the register, FILE.xlsx or FILE.csv (default: the verdicts on stdout)",
+    )
+    s.add_argument(
+        "--tol",
+        action="append",
+        default=[],
+        metavar="[NAME=]2%|1mm|1deg",
+        help="with --batch: a tolerance for each value or NAME (default 0.5 mm, 0.5°, 0.5 %%)",
+    )
+    _add_lang(s, "with --batch: the register's language (default ru)")
     s.set_defaults(func=_cmd_verify)
 
     from geomcad.teach.cli import add_variants
@@ -343,7 +359,7 @@ def _title_data(ns: argparse.Namespace) -> tuple[Any, Any]:
 ID_HELP = "a problem id (geomcad list), e.g. 2013-6, or a file FILE.toml"
 
 #: Options of solve and verify that take a value (skipped when looking for the ID).
-_VALUED = ("--set", "--measured", "--scale", "--out", "--format", "--batch")
+_VALUED = ("--set", "--measured", "--scale", "--out", "--format", "--batch", "--tol", "--lang")
 
 
 def _help_topic(args: Sequence[str]) -> tuple[str, str] | None:
@@ -460,8 +476,12 @@ def _cmd_build(ns: argparse.Namespace) -> int:
     if "html" in formats:  # the pages are made in this process, beside the sheets
         formats.remove("html")
         pages, n_jobs = {}, 1
+    if ns.set and not ns.ids:
+        raise _Failed("build --set: name the problem ids or files it applies to")
+    for text in ns.set:
+        _pair(text, "--set")
     for pid in ids:
-        if not documents.is_file_id(pid):
+        if not documents.is_file_id(pid) and not _is_variant_file(pid):
             registry.get(pid)  # an unknown id fails before anything is written
     out = Path(ns.out)
     if out.exists() and not out.is_dir():
@@ -476,9 +496,16 @@ def _cmd_build(ns: argparse.Namespace) -> int:
     prepared: list[tuple[str, Any]] = []
     with jobs.bar(2 * len(ids), "step", "build") as tick:
         for pid in ids:
-            prepared.append(_prepare(pid, options, workdir, ns.review, pages, bool(ns.ids)))
+            prepared.append(
+                _prepare(pid, options, workdir, ns.review, pages, bool(ns.ids), tuple(ns.set))
+            )
             tick(1)
         return _write_prepared(ns, prepared, formats, plain, tick, started, pages)
+
+
+def _is_variant_file(pid: str) -> bool:
+    """True for a problem id's variant file that ``geomcad variants`` wrote (``.json``)."""
+    return pid.lower().endswith(".json")
 
 
 def _prepare(
@@ -488,17 +515,30 @@ def _prepare(
     review: bool,
     pages: dict[str, str] | None = None,
     strict: bool = True,
+    sets: tuple[str, ...] = (),
 ) -> tuple[str, Any]:
-    """Solve and draw one problem or file for ``build``: (its file stem, its sheets), in the
-    language the title data name (``--lang``, else the file's or ./geomcad.toml's); with
-    ``pages``, its interactive page too (geomcad.render.html), by its stem (a problem with no
-    motion is bad input, or, not ``strict``, gets no page)."""
+    """Solve and draw one problem, file or variant file for ``build`` (with the ``--set``
+    pairs): (its file stem, its sheets), in the language the title data name (``--lang``, else
+    the file's or ./geomcad.toml's); with ``pages``, its interactive page too
+    (geomcad.render.html), by its stem (a problem with no motion is bad input, or, not
+    ``strict``, gets no page)."""
     from geomcad import documents
     from geomcad.sheet.lang import language
 
     try:
-        sol = documents.solve(pid) if documents.is_file_id(pid) else geomcad.solve(pid)
-        own = _file_title(pid, sol)
+        if _is_variant_file(pid):
+            from geomcad.teach.variants import variant_sets
+
+            vid, pairs = variant_sets(Path(pid))
+            pairs += [_pair(t, "--set") for t in sets]
+            sol = _solve(vid, [f"{k}={v}" for k, v in pairs])
+            own = _variant_title(pid)
+        elif sets or documents.is_file_id(pid):
+            sol = _solve(pid, sets)
+            own = _file_title(pid, sol)
+        else:
+            sol = geomcad.solve(pid)
+            own = _file_title(pid, sol)
         paged = pages is not None
         if paged:
             from geomcad.render.html import check
@@ -517,7 +557,8 @@ def _prepare(
                 from geomcad.review import review_sheets
 
                 sheets += review_sheets(sol, title)
-            stem = documents.stem(pid) if documents.is_file_id(pid) else pid
+            named = documents.is_file_id(pid) or _is_variant_file(pid)
+            stem = documents.stem(pid) if named else pid
             if pages is not None and paged:
                 from geomcad.render.html import page_of, to_html
 
@@ -605,7 +646,10 @@ def _build_parallel(
         except GeomcadError as exc:
             raise _Failed(_prefixed(pid, exc)) from exc
     jobs.warm(files_ids, set(formats) - set(plain) != set())
-    args = [(pid, tuple(formats), tuple(plain), ns.color, *title, ns.review) for pid in ids]
+    args = [
+        (pid, tuple(formats), tuple(plain), ns.color, *title, ns.review, tuple(ns.set))
+        for pid in ids
+    ]
     out = Path(ns.out)
     missing, failed, n_sheets = "", "", 0
     done: dict[int, list[Path]] = {}
@@ -636,6 +680,17 @@ def _build_parallel(
         return EXIT_BAD_INPUT
     _build_summary(n_sheets, len(ids), started)
     return EXIT_OK
+
+
+def _variant_title(path: str) -> Any:
+    """A variant file's ``"sheet"`` object (the student, the group), or ``None``."""
+    import json
+
+    from geomcad.sheet.titleblock import TitleData
+
+    obj = json.loads(Path(path).read_text(encoding="utf-8"))
+    table = obj.get("sheet") if isinstance(obj, dict) else None
+    return None if table is None else TitleData.from_mapping(table, f"{path}: sheet")
 
 
 def _file_title(pid: str, sol: Solution[Any]) -> Any:
@@ -704,10 +759,13 @@ def _cmd_verify(ns: argparse.Namespace) -> int:
     from geomcad.verify import verify
 
     if ns.batch is not None:
-        from geomcad.teach.batch import run_batch
+        from geomcad.teach.batch import parse_tol, run_batch
 
         scale = None if ns.scale is None else _scale(ns.scale)
-        return run_batch(ns.batch, ns.id, ns.out, scale, sys.stdout, sys.stderr)
+        tols = [parse_tol(t) for t in ns.tol]
+        return run_batch(
+            ns.batch, ns.id, ns.out, scale, sys.stdout, sys.stderr, tols, ns.lang or "ru"
+        )
     if not ns.measured:
         raise _UsageError("geomcad verify: the following arguments are required: --measured")
     measured = dict(_pair(text, "--measured") for text in ns.measured)

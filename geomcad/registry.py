@@ -80,3 +80,30 @@ def title(problem: Problem[Any], lang: str | None = None) -> str:
     if not has:
         return problem.title
     return Words(package, TITLES).table(lang_).get(problem.id, problem.title)
+
+
+#: The table of the task cards' words per language (``<package>/strings/<lang>/cards.toml``).
+CARDS = "cards"
+
+
+def card_words(problem: Problem[Any], lang: str) -> dict[str, str]:
+    """``problem``'s entries of its package's ``cards`` table in ``lang``, by parameter or
+    result name (``ID.NAME`` keys with the id taken off); empty where there is none."""
+    from importlib import resources
+
+    from geomcad.sheet.lang import Words, check_lang
+
+    ep = _entry_points().get(problem.id)
+    if ep is None or ep.module is None:
+        return {}
+    package = ep.module.rpartition(".")[0]
+    lang_ = check_lang(lang)
+    try:
+        has = resources.files(package).joinpath("strings", lang_, f"{CARDS}.toml").is_file()
+    except ModuleNotFoundError:
+        has = False
+    if not has:
+        return {}
+    head = f"{problem.id}."
+    table = Words(package, CARDS).table(lang_)
+    return {k.removeprefix(head): v for k, v in table.items() if k.startswith(head)}

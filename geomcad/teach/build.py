@@ -26,6 +26,7 @@ def build_one(
     options: Any,
     workdir: Any,
     review: bool,
+    sets: tuple[str, ...] = (),
 ) -> tuple[str, int, list[tuple[str, bytes]], str, str]:
     """Prepare and render ``pid``: (stem, number of sheets, [(file name, bytes)], error,
     missing dependency).
@@ -37,7 +38,7 @@ def build_one(
     from geomcad.render import write_sheets
 
     try:
-        stem, sheets = cli._prepare(pid, options, workdir, review)
+        stem, sheets = cli._prepare(pid, options, workdir, review, sets=sets)
     except (GeomcadError, cli._Failed) as exc:
         return pid, 0, [], str(exc), ""
     missing = ""

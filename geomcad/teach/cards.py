@@ -1,11 +1,13 @@
 """The sheets of a set of variants: an A4 task card per variant and the answer-key table.
 
-A task card (A4 portrait, frame and title block form 1) says what a student gets: the variant's
-number, the problem's title, for a linkage file the scheme of the mechanism in its first position
-at a GOST scale, the data table (every parameter, or every value of the file, with its unit),
-and what to find (the key's results by name). The title block carries the course (organisation
-field), the variant in the designation, the teacher as "Checked", and leaves "Drawn" blank for the
-student. No answer is on the card.
+A task card (A4 portrait, frame and title block form 1) says what a student gets, in one
+language: the variant's number, the student's name and group (a roster's), the problem's title,
+a scheme of the mechanism with its letters (a linkage file's in its first position at a GOST
+scale; a problem id's from its ``motion`` at its defaults, not to scale), the given data as named
+quantities with symbols, values and units, and what to find in words
+(:mod:`geomcad.teach.quantities`). The title block carries the course (organisation field), the
+variant in the designation, the student as "Drawn" with the group, and the teacher as "Checked".
+No answer, file key, seed or solver check is on the card.
 
 The answer-key sheet is a ruled table: one row per variant, one column per key result, values to
 four significant figures; columns that do not fit an A3 sheet go on to further sheets.
@@ -13,17 +15,20 @@ four significant figures; columns that do not fit an A3 sheet go on to further s
 
 from __future__ import annotations
 
+import functools
+import itertools
 import math
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
+from geomcad.errors import GeomcadError
 from geomcad.sheet import Scale, ScaleStyle, Sheet, TitleBlock, gost_scale_to_fit, start
 from geomcad.sheet.drawing import Drawing
 from geomcad.sheet.frame import fill_title_blocks
 from geomcad.sheet.lang import Lang
 from geomcad.sheet.text import box, parse
-from geomcad.teach import keys
+from geomcad.teach import quantities
 
 if TYPE_CHECKING:
     from geomcad.problem import Problem, Solution
@@ -36,7 +41,7 @@ TEXT_H = 2.5
 #: The largest room the scheme takes on a card (mm).
 SCHEME_W, SCHEME_H = RIGHT - LEFT - 2 * PAD, 75.0
 
-UNIT_TEXT = {"1": "", "": "", "deg": "°", "m/s²": "m/s^2", "rad/s²": "rad/s^2"}
+UNIT_TEXT = {"1": "", "": "", "deg": "°"}
 
 
 def _title(problem: Problem[Any], lang: Lang) -> str:
@@ -53,6 +58,8 @@ class CardInfo:
     course: str = "TMM"
     teacher: str = ""
     lang: Lang = "en"
+    student: str = ""
+    group: str = ""
 
 
 #: The cards' own words per language (a problem's parameter and result texts are its own).
@@ -74,6 +81,9 @@ WORDS: dict[str, dict[str, str]] = {
         "answers": "answers",
         "no": "No.",
         "pos": "pos.",
+        "student": "Student",
+        "scheme": "Scheme of the mechanism (not to scale)",
+        "group": "group",
     },
     "ru": {
         "variant": "Вариант",
@@ -92,6 +102,9 @@ WORDS: dict[str, dict[str, str]] = {
         "answers": "ответы",
         "no": "№",
         "pos": "пол.",
+        "student": "Студент",
+        "scheme": "Схема механизма (без масштаба)",
+        "group": "группа",
     },
 }
 
@@ -115,8 +128,16 @@ def _esc(text: str) -> str:
     return text.replace("\\", "\\\\").replace("_", "\\_").replace("^", "\\^")
 
 
-def _fit(text: str, width: float, height: float = TEXT_H) -> str:
-    """The text cut with an ellipsis to fit ``width`` mm."""
+def _fit(text: str, width: float, height: float = TEXT_H, markup: bool = False) -> str:
+    """The text cut with an ellipsis to fit ``width`` mm (markup only at spaces: its braces
+    hold none)."""
+    if markup:
+        if box(parse(text), height)[0] <= width:
+            return text
+        words = _words(text)
+        while len(words) > 1 and box(parse(" ".join(words) + "..."), height)[0] > width:
+            words.pop()
+        return " ".join(words) + "..."
     if box(parse(_esc(text)), height)[0] <= width:
         return text
     while text and box(parse(_esc(text + "...")), height)[0] > width:
@@ -124,117 +145,67 @@ def _fit(text: str, width: float, height: float = TEXT_H) -> str:
     return text.rstrip() + "..."
 
 
-def _wrap(text: str, width: float, height: float = TEXT_H) -> list[str]:
+def _words(markup: str) -> list[str]:
+    """Markup split at its spaces, never inside braces (``r_{0 min}`` stays one word)."""
+    out, depth, word = [], 0, ""
+    for ch in markup:
+        depth += {"{": 1, "}": -1}.get(ch, 0)
+        if ch == " " and depth == 0:
+            out.append(word)
+            word = ""
+        else:
+            word += ch
+    return [*out, word]
+
+
+def _wrap(text: str, width: float, height: float = TEXT_H, markup: bool = False) -> list[str]:
     lines: list[list[str]] = [[]]
-    for word in text.split(" "):
+    for word in _words(text) if markup else text.split(" "):
         trial = " ".join([*lines[-1], word])
-        if lines[-1] and box(parse(_esc(trial)), height)[0] > width:
+        if lines[-1] and box(parse(trial if markup else _esc(trial)), height)[0] > width:
             lines.append([])
         lines[-1].append(word)
     return [" ".join(w) for w in lines]
 
 
 def _table(
-    d: Drawing, x: float, y: float, widths: Sequence[float], rows: Sequence[Sequence[str]]
+    d: Drawing,
+    x: float,
+    y: float,
+    widths: Sequence[float],
+    rows: Sequence[Sequence[str]],
+    markup: bool = False,
 ) -> float:
-    """A ruled table of plain text (cut to fit its cells); returns the y below it."""
+    """A ruled table of plain text (cut to fit its cells), or of label markup (not cut);
+    returns the y below it."""
     cut = [
-        [_esc(_fit(cell, w - 2.0)) if cell else "" for w, cell in zip(widths, row, strict=True)]
+        [
+            (_fit(cell, w - 2.0, markup=True) if markup else _esc(_fit(cell, w - 2.0)))
+            if cell
+            else ""
+            for w, cell in zip(widths, row, strict=True)
+        ]
         for row in rows
     ]
     _, height = d.table(x, y, widths, cut, TEXT_H, ROW_H)
     return y + height
 
 
-def _col_widths(rows: Sequence[Sequence[str]], room: float, flex: int) -> list[float]:
+def _col_widths(
+    rows: Sequence[Sequence[str]], room: float, flex: int, markup: bool = False
+) -> list[float]:
     """Column widths that fit each column's text; column ``flex`` takes what room is left."""
     n = len(rows[0])
-    natural = [max(box(parse(_esc(r[i])), TEXT_H)[0] for r in rows) + 2.5 for i in range(n)]
+    natural = [
+        max(box(parse(r[i] if markup else _esc(r[i])), TEXT_H)[0] for r in rows) + 2.5
+        for i in range(n)
+    ]
     fixed = sum(w for i, w in enumerate(natural) if i != flex)
     natural[flex] = max(20.0, min(natural[flex], room - fixed))
     if sum(natural) > room:  # still too wide: the widest column gives in, its cells cut to fit
         i = max(range(n), key=natural.__getitem__)
         natural[i] = max(12.0, room - (sum(natural) - natural[i]))
     return natural
-
-
-# --- data of a variant ------------------------------------------------------------------------
-
-
-def problem_rows(sol: Solution[Any], lang: str = "en") -> list[list[str]]:
-    """The data table of a problem id's variant: quantity, symbol, value, unit."""
-    w = WORDS[lang]
-    rows = [[w["quantity"], w["symbol"], w["value"], w["unit"]]]
-    for p in sol.problem.params:
-        if p.name not in sol.params:
-            continue
-        rows.append([p.doc, p.name, _value(sol.params[p.name]), _unit(p.unit)])
-    return rows
-
-
-def file_rows(data: Mapping[str, Any], lang: str = "en") -> list[list[str]]:
-    """The data table of a file's variant: every value under its dotted key (lists counted
-    from 1, as ``--set`` names them)."""
-    rows = [[WORDS[lang]["keycol"], WORDS[lang]["value"]]]
-
-    def walk(node: Any, path: str) -> None:
-        if isinstance(node, Mapping):
-            for k, v in node.items():
-                walk(v, f"{path}.{k}" if path else str(k))
-        elif isinstance(node, list) and node and all(isinstance(v, Mapping) for v in node):
-            for i, v in enumerate(node, start=1):
-                walk(v, f"{path}.{i}")
-        elif path != "title":
-            rows.append([path, _value(node)])
-
-    walk(data, "")
-    return rows
-
-
-def find_lines(
-    problem: Problem[Any], columns: Sequence[str], sol: Solution[Any], lang: str = "en"
-) -> list[str]:
-    """What to find: each key result once, with its meaning, and where it is asked."""
-    groups: dict[str, list[str]] = {}
-    for c in columns:
-        groups.setdefault(_generic(c), []).append(c)
-    # results with the same meaning, unit and positions share a line: ω_2, ω_3, ω_4 …
-    merged: dict[tuple[str, str, str], list[str]] = {}
-    for generic, paths in groups.items():
-        name = keys.leaf(generic)
-        spec = problem.result_spec(name) or problem.result_spec(generic.split(".")[0])
-        doc = spec.doc if spec is not None and spec.name == name else ""
-        unit = _unit(spec.unit) if spec is not None and spec.name == name else ""
-        merged.setdefault((unit, doc, _where(generic, paths, sol, lang)), []).append(name)
-    return [
-        ", ".join(names) + (f", {unit}" if unit else "") + (f": {doc}" if doc else "") + where
-        for (unit, doc, where), names in merged.items()
-    ]
-
-
-def _generic(path: str) -> str:
-    """``positions.3.V_D`` → ``positions.*.V_D``; ``r.2`` → ``r``."""
-    parts = path.split(".")
-    if parts[-1].isdecimal():
-        return ".".join(parts[:-1])
-    return ".".join("*" if p.isdecimal() else p for p in parts)
-
-
-def _where(generic: str, paths: Sequence[str], sol: Solution[Any], lang: str) -> str:
-    w = WORDS[lang]
-    if generic.startswith("positions.*."):
-        phis = []
-        for p in paths:
-            i = int(p.split(".")[1])
-            pos = sol.results.get("positions", [])
-            if i < len(pos) and isinstance(pos[i], Mapping) and "phi_deg" in pos[i]:
-                phis.append(keys.fmt(float(pos[i]["phi_deg"])).rstrip("0").rstrip(".") + "°")
-        if phis and len(phis) <= 4:
-            return f" ({w['at']} φ_1 = {', '.join(phis)})"
-        return " (" + w["each"].format(n=len(paths)) + ")"
-    if len(paths) > 1 or paths[0] != generic:
-        return f" ({w['items']} {', '.join(p.rsplit('.', 1)[1] for p in paths)})"
-    return ""
 
 
 # --- the linkage scheme -----------------------------------------------------------------------
@@ -368,6 +339,67 @@ def linkage_scheme(d: Drawing, data: Mapping[str, Any], position: Mapping[str, A
     return top + height
 
 
+@functools.cache
+def _seed_frames(pid: str) -> Any:
+    """The first frames of a problem id's mechanism as its defaults (the seed's) solve it."""
+    from geomcad import registry
+
+    problem = registry.get(pid)
+    assert problem.motion is not None
+    return problem.motion(problem.solve(), 2)
+
+
+def motion_scheme(d: Drawing, sol: Solution[Any], top: float, lang: Lang = "en") -> float:
+    """A problem id's mechanism as a scheme with its letters, from ``top``; returns the y below
+    (``top`` when the problem has no :attr:`Problem.motion`, the mechanism ``geomcad animate``
+    draws). It is the mechanism of the problem's own defaults, marked "not to scale": every
+    variant's card shows the same scheme, and a synthesis problem's answers (2013-6's crank and
+    rod) cannot be measured off it. Links as lines, frame points as supports, sliders as
+    blocks on their guides, every point labelled."""
+    if sol.problem.motion is None:
+        return top
+    try:
+        frames = _seed_frames(sol.problem.id)
+    except GeomcadError:
+        return top
+    pts = {n: (float(a[0, 0]), float(a[0, 1])) for n, a in frames.points.items()}
+    if len(pts) < 2:
+        return top
+    x_min, y_min, w, h, pad = _extent(pts)
+    k = gost_scale_to_fit(w + 2 * pad, h + 2 * pad, SCHEME_W, SCHEME_H - 8.0)
+    height = min(SCHEME_H, (h + 2 * pad) / k.k + 8.0)
+    centre = (x_min + w / 2, y_min + h / 2)
+    v = d.viewport(k, centre, ((LEFT + RIGHT) / 2, top + 8.0 + (height - 8.0) / 2))
+    d.text(_esc(WORDS[lang]["scheme"]), (LEFT + PAD, top + 4.0), TEXT_H)
+    for name, u in frames.sliders.items():
+        q = pts.get(name)
+        if q is None:
+            continue
+        span = k.model(25.0)
+        v.seg((q[0] - u[0] * span, q[1] - u[1] * span),
+              (q[0] + u[0] * span, q[1] + u[1] * span), "centre")  # fmt: skip
+    for chain in frames.links:
+        for a, b in itertools.pairwise(chain):
+            if a in pts and b in pts and pts[a] != pts[b]:
+                v.seg(pts[a], pts[b], "link")
+    for name, u in frames.sliders.items():
+        if name in pts:
+            v.slider(pts[name], u)
+    for n in frames.fixed:
+        if n in pts:
+            v.pivot(pts[n])
+    joints = frames.joints if frames.joints is not None else tuple(
+        n for chain in frames.links for n in chain)  # fmt: skip
+    for n in dict.fromkeys(joints):
+        if n in pts and n not in frames.fixed and n not in frames.sliders:
+            v.joint(pts[n])
+    labelled = frames.labelled if frames.labelled is not None else tuple(pts)
+    for n in labelled:
+        if n in pts:
+            v.label(pts[n], n, height=3.5)
+    return top + height
+
+
 # --- sheets -----------------------------------------------------------------------------------
 
 
@@ -396,6 +428,8 @@ def task_card(
         designation=f"{info.course} {stem or problem.id} V{number:0{width}d}",
         scale=k.ratio_text() if k is not None else "",
         organisation=info.course,
+        developer=info.student,
+        group=info.group,
         checker=info.teacher,
         lang=info.lang,
     )
@@ -403,29 +437,48 @@ def task_card(
     x0, room = LEFT + PAD, RIGHT - LEFT - 2 * PAD
     d.text(f"{words['variant']} {number:0{width}d}", (x0, TOP + 11.0), 7.0)
     y = TOP + 15.0
+    if info.student:
+        who = f"{words['student']}: {info.student}"
+        who += f", {words['group']} {info.group}" if info.group else ""
+        y += 6.0
+        d.text(_esc(_fit(who, room, 5.0)), (x0, y), 5.0)
     for line in _wrap(title, room, 3.5):
         y += 5.5
         d.text(_esc(line), (x0, y), 3.5)
     y += 3.0
     if data is not None and isinstance(first, Mapping):
         y = linkage_scheme(d, data, first, y, info.lang) + 2.0
-    rows = problem_rows(sol, info.lang) if data is None else file_rows(data, info.lang)
+    elif data is None:
+        y = motion_scheme(d, sol, y, info.lang) + 2.0
+    linkage = data is not None and _is_linkage(data)
+    head = [words["quantity"], words["symbol"], words["value"], words["unit"]]
+    if data is None:
+        rows = [head, *map(list, quantities.problem_rows(problem, sol.params, info.lang))]
+    elif linkage:
+        rows = [head, *map(list, quantities.linkage_rows(data, info.lang))]
+    else:
+        rows = [head, *map(list, quantities.file_rows(data, info.lang))]
+    pos = positions if isinstance(positions, list) else []
+    lines = quantities.find_lines(
+        problem, columns, pos, info.lang, linkage, words["at"], words["each"]
+    )
     find: list[tuple[float, str]] = []  # (indent, text) of each line of "Find"
-    for i, line in enumerate(find_lines(problem, columns, sol, info.lang), start=1):
-        find += [(4.0 if j else 0.0, t) for j, t in enumerate(_wrap(f"{i}. {line}", room - 4.0))]
+    for i, line in enumerate(lines, start=1):
+        wrapped = _wrap(f"{i}. {line}", room - 4.0, markup=True)
+        find += [(4.0 if j else 0.0, t) for j, t in enumerate(wrapped)]
     lead = TEXT_H * 1.7
     find_h = 8.0 + 8.0 + lead * len(find) + 2.0
     d.text(words["given"], (x0, y + 5.0), 3.5)
     y += 8.0
-    y = _given(d, rows, x0, y, room, BOTTOM - y - find_h) + 4.0
+    y = _given(d, rows, x0, y, room, BOTTOM - y - find_h, markup=True) + 4.0
     d.text(words["find"], (x0, y + 5.0), 3.5)
     y += 8.0
     fits = int((BOTTOM - 1.0 - y) / lead)
     if len(find) > fits:  # never into the title block: the answer key lists the rest
-        find = [*find[: max(fits - 1, 0)], (0.0, words["rest"])]
+        find = [*find[: max(fits - 1, 0)], (0.0, _esc(words["rest"]))]
     for indent, text in find:
         y += lead
-        d.text(_esc(text), (x0 + indent, y), TEXT_H)
+        d.text(text, (x0 + indent, y), TEXT_H)
     return _filled([d.finish()])[0]
 
 
@@ -435,8 +488,19 @@ def _filled(sheets: list[Sheet]) -> list[Sheet]:
     return sheets
 
 
+def _is_linkage(data: Mapping[str, Any]) -> bool:
+    """True for a linkage file's data (a drive or a synthesis table)."""
+    return isinstance(data.get("drive"), Mapping) or isinstance(data.get("synthesis"), Mapping)
+
+
 def _given(
-    d: Drawing, rows: list[list[str]], x0: float, y: float, room: float, space: float
+    d: Drawing,
+    rows: list[list[str]],
+    x0: float,
+    y: float,
+    room: float,
+    space: float,
+    markup: bool = False,
 ) -> float:
     """The data table, cut into two or three parts side by side when it is taller than
     ``space`` mm (a linkage file's many values); returns the y below it."""
@@ -450,8 +514,10 @@ def _given(
         part = [rows[0], *body[k * per : (k + 1) * per]]
         # a problem's quantity text gives way first; a file's key stays whole, its value gives way
         flex = 0 if len(part[0]) > 2 else len(part[0]) - 1
-        widths = _col_widths(part, col, flex)
-        bottoms.append(_table(d, x0 + k * (col + gap), y, widths, part))
+        if markup:
+            part = [[_esc(c) for c in part[0]], *part[1:]]
+        widths = _col_widths(part, col, flex, markup)
+        bottoms.append(_table(d, x0 + k * (col + gap), y, widths, part, markup))
     return max(bottoms)
 
 

@@ -9,6 +9,7 @@ from __future__ import annotations
 import argparse
 import contextlib
 import csv
+import dataclasses
 import io
 import json
 import sys
@@ -18,7 +19,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from geomcad.errors import GeomcadError, ParameterError
-from geomcad.teach import MIN_TRANSMISSION_DEG, jobs
+from geomcad.teach import MIN_TRANSMISSION_DEG, jobs, roster
 
 if TYPE_CHECKING:
     from geomcad.teach import cards, variants
@@ -35,7 +36,18 @@ def add_variants(sub: Any, add_set: Callable[[argparse.ArgumentParser], None]) -
         help="make N variants of a problem or file: variant files, task cards, answer key",
     )
     s.add_argument("template", help="problem id (e.g. 2013-6) or a file FILE.toml")
-    s.add_argument("--count", type=int, required=True, metavar="N", help="variants to make")
+    s.add_argument("--count", type=int, metavar="N", help="variants to make (an anonymous set)")
+    s.add_argument(
+        "--students",
+        metavar="ROSTER.csv",
+        help="a variant per student of the roster (names; optionally a group and a number)",
+    )
+    s.add_argument(
+        "--only",
+        metavar="N|NAME",
+        help="re-issue one variant's card and file as the full run makes them (a number, or a "
+        "student's name with --students)",
+    )
     s.add_argument("--seed", type=int, required=True, metavar="S", help="seed of the draws")
     s.add_argument("--out", required=True, metavar="DIR", help="output folder")
     s.add_argument(
@@ -141,6 +153,12 @@ def cmd_variants(ns: argparse.Namespace) -> int:
                 "--min-transmission-deg", ns.min_transmission_deg, "applies to linkage files only"
             )
     info = cards.CardInfo(course=ns.course, teacher=ns.teacher, lang=ns.lang)
+    students = roster.read(ns.students) if ns.students is not None else None
+    if students is None and ns.count is None:
+        raise GeomcadError("variants: give --count N or --students ROSTER.csv")
+    if students is not None and ns.count is not None and ns.count != len(students):
+        raise ParameterError("--count", ns.count, f"the roster has {len(students)} students")
+    count = len(students) if students is not None else ns.count
 
     # what every variant needs is imported here, once, before the workers fork
     with contextlib.suppress(GeomcadError):
@@ -148,8 +166,11 @@ def cmd_variants(ns: argparse.Namespace) -> int:
     jobs.warm([], raster=formats != ("svg",))
     relay = jobs.Relay()
     with jobs.pool(n_jobs, relay) as run:
-        with jobs.bar(ns.count, "variant", "solve") as tick:
-            drawn = variants.draw(template, varies, ns.count, ns.seed, min_tr, run, tick)
+        with jobs.bar(count, "variant", "solve") as tick:
+            drawn = variants.draw(template, varies, count, ns.seed, min_tr, run, tick)
+        for v, student in zip(drawn.variants, students or [], strict=False):
+            v.number = student.number  # the roster's numbering carries over to the cards
+        only = _only(ns.only, students, count)
         patterns = keys.parse_patterns(ns.key or "") or variants.default_key(
             template, drawn.variants[0].results
         )
@@ -157,28 +178,40 @@ def cmd_variants(ns: argparse.Namespace) -> int:
         if not ns.key:  # the default key asks for results, not for the data given back
             given = set(variants.echoes(template, drawn.variants, columns))
             columns = [c for c in columns if c not in given] or columns
-        width = variants.number_width(ns.count)
+        width = variants.number_width(max(v.number for v in drawn.variants))
         out = Path(ns.out)
         names = [variants.variant_name(template, v.number, width) for v in drawn.variants]
+        who = {s.number: s for s in students or []}
+        infos = [
+            dataclasses.replace(info, student=who[v.number].name, group=who[v.number].group)
+            if v.number in who
+            else info
+            for v in drawn.variants
+        ]
         first = drawn.variants[0]
         # a file's result specs follow from its solution (a file names its own points)
         problem = template.solve(first.values, str(out / names[0])).problem
         units = {c: variants.unit_of(problem, c) for c in columns}
 
+        chosen = [i for i, v in enumerate(drawn.variants) if only in (None, v.number)]
         args = [
-            (template, v.values, v.number, width, tuple(columns), info, formats, str(out / name))
-            for v, name in zip(drawn.variants, names, strict=True)
-        ]
+            (template, v.values, v.number, width, tuple(columns), infos[i], formats,
+             str(out / names[i]))
+            for i, v in ((i, drawn.variants[i]) for i in chosen)
+        ]  # fmt: skip
         # each variant's file and cards written as soon as its card is rendered (a killed run
         # keeps what was finished); the bar counts the files
         written: list[Path] = []
         with jobs.bar(len(args) * (1 + len(formats)), "file", "cards") as tick:
-            for i, files in run.stream(render_card, args):
+            for k, files in run.stream(render_card, args):
+                i = chosen[k]
                 v = drawn.variants[i]
                 try:
                     out.mkdir(parents=True, exist_ok=True)
                     path = out / names[i]
-                    write_atomic(path, variants.variant_file(template, v, width))
+                    write_atomic(
+                        path, variants.variant_file(template, v, width, _title_data(infos[i]))
+                    )
                     written.append(path)
                     tick(1)
                     for fmt, data in files.items():
@@ -188,6 +221,9 @@ def cmd_variants(ns: argparse.Namespace) -> int:
                         tick(1)
                 except OSError as exc:
                     raise GeomcadError(f"cannot write to {out}: {exc.strerror or exc}") from exc
+        if only is not None:
+            sys.stdout.write("".join(f"{p}\n" for p in written))
+            return 0
 
         numbers = [f"{v.number:0{width}d}" for v in drawn.variants]
         rows = keys.rows([v.results for v in drawn.variants], columns, numbers)
@@ -195,14 +231,23 @@ def cmd_variants(ns: argparse.Namespace) -> int:
         sheets = cards.answer_sheets(
             title or cards._title(problem, info.lang), columns, units, rows, info, template.stem
         )
-        answer_pdfs: list[bytes] = run(_sheet_pdf, [(sh,) for sh in sheets])
+        answer_pdfs: list[bytes] = (
+            [] if only is not None else run(_sheet_pdf, [(sh,) for sh in sheets])
+        )
 
     try:
         out.mkdir(parents=True, exist_ok=True)
+        people = [(f.student, f.group) for f in infos] if students is not None else None
         csv_path = out / "answers.csv"
-        write_atomic(csv_path, _answers_csv(columns, rows, names).encode("utf-8"))
+        write_atomic(csv_path, _answers_csv(columns, rows, names, people).encode("utf-8"))
+        xlsx_path = out / "answers.xlsx"
+        write_atomic(
+            xlsx_path, _answers_xlsx(columns, units, rows, names, people, template, info.lang)
+        )
         json_path = out / "answers.json"
         obj = _answers_json(ns, template, min_tr, drawn, columns, units, names, rows)
+        for entry, person in zip(obj["variants"], people or [], strict=False):
+            entry["student"], entry["group"] = person
         text = json.dumps(obj, ensure_ascii=False, indent=2, allow_nan=False) + "\n"
         write_atomic(json_path, text.encode("utf-8"))
         pdf_path = out / "answers.pdf"
@@ -211,7 +256,7 @@ def cmd_variants(ns: argparse.Namespace) -> int:
         raise GeomcadError(f"cannot write to {out}: {exc.strerror or exc}") from exc
     report = variants.summary(drawn, template, ns.seed, out)
     pages = f" ({len(answer_pdfs)} sheets)" if len(answer_pdfs) > 1 else ""
-    report += f"answer key: {csv_path}, {json_path}, {pdf_path}{pages}\n"
+    report += f"answer key: {csv_path}, {xlsx_path}, {json_path}, {pdf_path}{pages}\n"
     report += f"{len(written)} variant files and cards, {time.perf_counter() - started:.1f} s\n"
     sys.stdout.write(report)
     sys.stdout.flush()
@@ -240,14 +285,73 @@ def _one_pdf(pdfs: Sequence[bytes]) -> bytes:
 
 
 def _answers_csv(
-    columns: Sequence[str], rows: Sequence[Sequence[str]], names: Sequence[str]
+    columns: Sequence[str],
+    rows: Sequence[Sequence[str]],
+    names: Sequence[str],
+    people: Sequence[tuple[str, str]] | None = None,
 ) -> str:
+    """answers.csv: variant, (student, group,) file, then the key's columns."""
     buf = io.StringIO()
     w = csv.writer(buf, lineterminator="\n")
-    w.writerow(["variant", "file", *columns])
-    for row, name in zip(rows, names, strict=True):
-        w.writerow([row[0], name, *row[1:]])
+    who = ["student", "group"] if people is not None else []
+    w.writerow(["variant", *who, "file", *columns])
+    for k, (row, name) in enumerate(zip(rows, names, strict=True)):
+        w.writerow([row[0], *(people[k] if people is not None else ()), name, *row[1:]])
     return buf.getvalue()
+
+
+def _answers_xlsx(
+    columns: Sequence[str],
+    units: dict[str, str],
+    rows: Sequence[Sequence[str]],
+    names: Sequence[str],
+    people: Sequence[tuple[str, str]] | None,
+    template: variants.Template,
+    lang: str,
+) -> bytes:
+    """answers.xlsx: the key as answers.csv has it, with readable headers and units (``θ, °``,
+    ``V_D, пол. 3, м/с``) and the values as numbers."""
+    from geomcad.teach import keys, tables
+
+    words = XLSX_WORDS[lang]
+    who = [words["student"], words["group"]] if people is not None else []
+    head = [words["variant"], *who, *(keys.header(c, units.get(c, ""), lang) for c in columns),
+            words["file"]]  # fmt: skip
+    body: list[list[object]] = []
+    for k, (row, name) in enumerate(zip(rows, names, strict=True)):
+        cells: list[object] = [int(row[0])]
+        cells += list(people[k]) if people is not None else []
+        cells += [tables.cell_number(t) for t in row[1:]]
+        body.append([*cells, name])
+    widths = [9.0, *([28.0, 10.0] if people is not None else []), *([13.0] * len(columns)), 16.0]
+    return tables.xlsx([(words["key"], [head, *body], widths)])
+
+
+#: The headers of answers.xlsx, per language.
+XLSX_WORDS = {
+    "ru": {"variant": "Вариант", "student": "Студент", "group": "Группа", "file": "Файл",
+           "key": "Ключ"},
+    "en": {"variant": "Variant", "student": "Student", "group": "Group", "file": "File",
+           "key": "Key"},
+}  # fmt: skip
+
+
+def _only(which: str | None, students: Sequence[roster.Student] | None, count: int) -> int | None:
+    """The variant number ``--only`` names (``None``: every variant)."""
+    if which is None:
+        return None
+    if students is not None:
+        return roster.pick(list(students), which).number
+    t = which.strip()
+    if not t.isdecimal() or not 1 <= int(t) <= count:
+        raise ParameterError("--only", which[:40], f"must be a variant number, 1 … {count}")
+    return int(t)
+
+
+def _title_data(info: cards.CardInfo) -> dict[str, str]:
+    """The title-block data a variant's file carries (its [sheet] table)."""
+    data = {"student": info.student, "group": info.group, "checker": info.teacher}
+    return {k: v for k, v in data.items() if v}
 
 
 def _answers_json(

@@ -137,3 +137,33 @@ def rows(
             row.append(fmt(x))
         out.append(row)
     return out
+
+
+#: Units as a spreadsheet's header writes them (plain text), per language.
+HEADER_UNITS = {
+    "ru": {"m": "м", "m/s": "м/с", "m/s²": "м/с²", "rad/s": "1/с", "rad/s²": "1/с²", "N": "Н",
+           "N·m": "Н·м", "kg": "кг", "kg·m²": "кг·м²", "deg": "°", "s": "с", "J": "Дж"},
+    "en": {"rad/s": "1/s", "rad/s²": "1/s²", "deg": "°"},
+}  # fmt: skip
+
+#: How a header says "position", per language.
+POSITION = {"ru": "пол.", "en": "pos."}
+
+
+def header(column: str, unit: str, lang: str) -> str:
+    """A key column's spreadsheet header: its name, the position or item it is at, its unit.
+
+    >>> header("positions.3.V_D", "m/s", "ru"), header("theta_deg", "deg", "en")
+    ('V_D, пол. 3, м/с', 'theta, °')
+    >>> header("r.2", "m", "en"), header("K", "1", "ru")
+    ('r[2], m', 'K')
+    """
+    parts = column.split(".")
+    name = leaf(column)
+    where = ""
+    if parts[0] == "positions" and len(parts) == 3 and parts[1].isdecimal():
+        where = f", {POSITION.get(lang, 'pos.')} {parts[1]}"
+    elif parts[-1].isdecimal():
+        name = f"{column.rsplit('.', 1)[0]}[{parts[-1]}]"
+    u = HEADER_UNITS.get(lang, {}).get(unit, "" if unit == "1" else unit)
+    return name.removesuffix("_deg") + where + (f", {u}" if u else "")

@@ -37,7 +37,7 @@ import numpy as np
 
 from geomcad import documents, registry
 from geomcad.errors import GeomcadError, ParameterError
-from geomcad.teach import MIN_TRANSMISSION_DEG, keys, transmission
+from geomcad.teach import MIN_TRANSMISSION_DEG, keys, quantities, transmission
 
 if TYPE_CHECKING:
     from geomcad.problem import ParamValue, Problem, Solution
@@ -417,7 +417,8 @@ def default_key(template: Template, results: Mapping[str, float | int]) -> list[
 
     A linkage file: stroke, K, ω and ε of each link, the output's V and a at the plans'
     positions, M_bal and J_flywheel (those the results have). Any other: every result that is
-    a number or a short list of numbers (a problem's other solutions and curves left out).
+    a number or a short list of numbers (a problem's other solutions and curves left out, and
+    the solver's own checks, ``H_check``).
     """
     if template.kind != "linkage":
         names: list[str] = []
@@ -429,6 +430,7 @@ def default_key(template: Template, results: Mapping[str, float | int]) -> list[
             n
             for n in names
             if not any(p.startswith(f"{n}.") and not p[len(n) + 1 :].isdecimal() for p in results)
+            and not quantities.is_internal(n)
         ]
     data = template.data or {}
     drive = data.get("drive", {}) if isinstance(data.get("drive"), Mapping) else {}
@@ -493,14 +495,25 @@ def variant_name(template: Template, number: int, width: int) -> str:
     return f"variant-{number:0{width}d}." + ("toml" if template.is_file else "json")
 
 
-def variant_file(template: Template, variant: Variant, width: int) -> bytes:
-    """The variant as a file: the TOML with its values set, or the id with its ``--set`` list."""
+def variant_file(
+    template: Template, variant: Variant, width: int, sheet: Mapping[str, str] | None = None
+) -> bytes:
+    """The variant as a file: the TOML with its values set, or the id with its ``--set`` list;
+    ``sheet``: its title-block data (the student, the group, the teacher), the file's
+    ``[sheet]`` table (a problem id's: ``"sheet"``), which ``geomcad build`` puts in the title
+    block of the variant's sheets."""
     if template.is_file:
         import tomli_w
 
-        return tomli_w.dumps(template.variant_data(variant.values)).encode("utf-8")
+        data = template.variant_data(variant.values)
+        if sheet:
+            own = data.get("sheet")
+            data["sheet"] = {**(own if isinstance(own, Mapping) else {}), **sheet}
+        return tomli_w.dumps(data).encode("utf-8")
     sets = {**template.fixed, **dict(variant.values)}
-    obj = {"id": template.ref, "variant": variant.number, "set": sets}
+    obj: dict[str, Any] = {"id": template.ref, "variant": variant.number, "set": sets}
+    if sheet:
+        obj["sheet"] = dict(sheet)
     return (json.dumps(obj, ensure_ascii=False, indent=2) + "\n").encode("utf-8")
 
 
