@@ -227,14 +227,16 @@ def linkage_page(
     from geomcad.sheet.linkage import motion as linkage_motion
 
     lk: Linkage = s.linkage
-    numbered = s.linkage.phi is None
-    n = frame_count(len(s.positions) if numbered else 12)
+    # the numbered positions are always solved (linkages.md, second round); `phi` only lists
+    # angles of interest, so the stops are the numbered positions
+    numbered = s.drawn or s.positions
+    n = frame_count(len(numbered))
     motion = linkage_motion(s, n)
     sense = 1.0 if lk.omega > 0 else -1.0
     psi = np.arange(n, dtype=np.float64) * (2.0 * math.pi / n)
     st = sweep(lk, motion.phi, order=2)
     vp, ap = plan_points(lk, st)
-    P0 = s.positions[0]
+    P0 = numbered[0]
     plans = (
         _plan_frames("v", WORDS("vplan"), P0.vp, vp),
         _plan_frames("a", WORDS("aplan"), P0.ap, ap),
@@ -259,7 +261,7 @@ def linkage_page(
                                 WORDS("eps", i=i), st.eps[i]))  # fmt: skip
     table = _once(table)
     stops = []
-    for i, P in enumerate(s.positions):
+    for i, P in enumerate(numbered):
         k = round(((P.phi - P0.phi) * sense) % (2.0 * math.pi) / (2.0 * math.pi / n)) % n
         stops.append((i, int(k)))
     slide = {}
