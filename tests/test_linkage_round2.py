@@ -418,7 +418,7 @@ def test_an_oscillating_cylinder_against_a_dense_sweep(offset: float, omega: flo
 
 
 def test_the_report_prints_round_off_as_zero() -> None:
-    from geomcad.linkage_report import table
+    from geomcad.files.linkage_report import table
 
     lines = table(["a, m/s", "b, N"], [[4.0, 1500.0], [5.022e-16, 1e-3], [-2.0, -0.5]])
     cells = [ln.split() for ln in lines[2:]]

@@ -1,6 +1,6 @@
 """For teachers: geomcad variants, verify --batch, build --jobs (issue 16).
 
-Linkage files are the lead's (geomcad.linkage_problem); here a small slider-crank maker that
+Linkage files are the lead's (geomcad.files.linkage); here a small slider-crank maker that
 follows ../shared/linkages.md (an RRP group on a fixed guide) stands in for it, solved in closed
 form, so the variants' linkage path (TOML variant files, transmission angle, default key, plan
 readings in mm) is tested on its own.

@@ -8,8 +8,8 @@ name is the file's marking table) as a callable ``make_problem(file_id, data) ->
   error, unknown keys refused by name; the top level and the ``[sheet]`` table);
 - :mod:`geomcad.files.cam` (``[cam]``) with its sheet :mod:`geomcad.files.cam_sheets`;
 - :mod:`geomcad.files.gears` (``[gears]``) with its sheets :mod:`geomcad.files.gears_sheets`;
-- the linkage file (no marking table, ``../shared/linkages.md``) is to become
-  :mod:`geomcad.files.linkage` (now :mod:`geomcad.linkage_problem`); its sheets are the sheet
+- :mod:`geomcad.files.linkage`: the linkage file (no marking table, ``../shared/linkages.md``;
+  :mod:`geomcad.documents` calls it for a file of no registered kind); its sheets are the sheet
   layer's own (:mod:`geomcad.sheet.linkage`), as they need nothing of the file.
 
 Layers (``tests/test_layers.py``): a kind imports the library below it (up to ``render``) and

@@ -123,7 +123,7 @@ def make_problem(file_id: str, data: dict[str, Any]) -> Problem[Solved]:
         from geomcad.sheet.linkage import kinematic_sheets
 
         solved = sol.data
-        from geomcad.documents import stem
+        from geomcad.files import stem
         from geomcad.sheet.linkage_forces import force_sheets  # sheets 2 and 3 (issue 15)
 
         kinematic = kinematic_sheets(solved, stem(file_id))
@@ -137,7 +137,7 @@ def make_problem(file_id: str, data: dict[str, Any]) -> Problem[Solved]:
 
         return linkage_motion(sol.data, frames)
 
-    from geomcad.documents import file_problem
+    from geomcad.files import file_problem
 
     return file_problem(
         file_id, data, lk.title, TOP, build, draw, motion, cls=_FileProblem, scales=scales
@@ -152,8 +152,8 @@ class _FileProblem(Problem[Solved]):
 
     def report(self, sol: Solution[Solved]) -> str:
         """The readable ``solve`` report: tables per group of quantities
-        (:mod:`geomcad.linkage_report`)."""
-        from geomcad.linkage_report import report
+        (:mod:`geomcad.files.linkage_report`)."""
+        from geomcad.files.linkage_report import report
 
         def unit(name: str) -> str:
             spec = spec_of(name)
