@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import os
 import shutil
+import site
 import subprocess
 import sys
 import tomllib
@@ -113,14 +114,20 @@ def test_the_wheel_holds_every_file_of_the_tree(wheel: Path) -> None:
 
 def test_a_fresh_install_works_from_an_empty_folder(wheel: Path, tmp_path: Path) -> None:
     """A new user's first commands, with the wheel in a fresh virtual environment (the
-    dependencies from this Python's, so no download) and an empty working folder."""
+    dependencies from the running Python's, so no download) and an empty working folder."""
     venv = tmp_path / "venv"
-    subprocess.run([sys.executable, "-m", "venv", "--system-site-packages", str(venv)], check=True)
+    subprocess.run([sys.executable, "-m", "venv", str(venv)], check=True)
     python, geomcad_cmd = venv / "bin" / "python", venv / "bin" / "geomcad"
     subprocess.run(
         [python, "-m", "pip", "install", "-q", "--no-deps", "--no-index", str(wheel)],
         check=True,
         capture_output=True,
+    )
+    # then the dependencies: the running Python's site folders after the venv's own (so the
+    # wheel's geomcad comes first; a folder named in a .pth runs none of its own .pth files)
+    (own,) = (venv / "lib").glob("python*/site-packages")
+    (own / "_dependencies.pth").write_text(
+        "".join(f"{p}\n" for p in site.getsitepackages() if Path(p).is_dir()), encoding="utf-8"
     )
     work = tmp_path / "work"
     work.mkdir()
