@@ -154,7 +154,7 @@ def _main_views(
     notes = V.Text(
         lines=[
             *wrap(WORDS("rod_motion", x=f(data.x), xd=f(data.xd), xdd=f(data.xdd)), 200.0, 3.0),
-            *wrap(WORDS("forces_at_mu", note=short_note(k_F)), 200.0, 3.0),
+            *wrap(WORDS("forces_at_mu", note=short_note(k_F, data.reactions)), 200.0, 3.0),
         ],
         width=200.0,
         height=3.0,

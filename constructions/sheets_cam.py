@@ -119,9 +119,9 @@ def designation(sol: Solution[Any]) -> str:
     """The document's designation from its file's name (as a linkage file's), so that every
     design file is its own document; ``designation`` in [sheet] or ``--designation`` override
     it."""
-    from geomcad.documents import stem
+    from geomcad.documents import code
 
-    return WORDS("designation", stem=stem(sol.problem.id))
+    return WORDS("designation", stem=code(sol.problem.id) or "CAM")
 
 
 def scales(sol: Solution[CamDesign]) -> dict[str, float]:

@@ -98,11 +98,11 @@ def make_problem(file_id: str, data: dict[str, Any]) -> Problem[Solved]:
         from geomcad.sheet.linkage import kinematic_sheets
 
         solved = sol.data
-        from geomcad.documents import stem
+        from geomcad.documents import code
         from geomcad.sheet.linkage_forces import force_sheets  # sheets 2 and 3 (issue 15)
 
-        kinematic = kinematic_sheets(solved, stem(file_id))
-        return kinematic + force_sheets(solved, stem(file_id), first_no=len(kinematic) + 1)
+        kinematic = kinematic_sheets(solved, code(file_id))
+        return kinematic + force_sheets(solved, code(file_id), first_no=len(kinematic) + 1)
 
     def motion(sol: Solution[Solved], frames: int) -> Frames:
         from geomcad.sheet.linkage import motion as linkage_motion

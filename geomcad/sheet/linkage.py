@@ -49,7 +49,7 @@ from geomcad.sheet.compose import (
 from geomcad.sheet.compose import (
     Layout as Arranged,
 )
-from geomcad.sheet.drawing import SHORT_MM
+from geomcad.sheet.drawing import SHORT_MM, Viewport
 from geomcad.sheet.frame import FORMATS
 from geomcad.sheet.lang import Words, current, per_language
 from geomcad.sheet.motion import Frames, turn
@@ -520,6 +520,26 @@ class _Mechanism(View):
             if p.name not in labels.values():
                 v.dot(P0.pos[p.name])
                 v.label(P0.pos[p.name], p.name, 3.5, clear=1.0)
+        omega_arrow(v, lk, P0)
+
+
+#: ω1's arrow: an arc of this fraction of the crank's drawn length, between the least and the
+#: largest radius (mm: within a view's margin round the pivot), over this many degrees,
+#: starting this many degrees past the crank (in its sense).
+OMEGA_R, OMEGA_MIN_MM, OMEGA_MAX_MM, OMEGA_SWEEP_DEG, OMEGA_PAST_DEG = 0.6, 10.0, 18.0, 90.0, 25.0
+
+
+def omega_arrow(v: Viewport, lk: Linkage, P: Position) -> None:
+    """ω1 as an arc arrow about the crank's pivot, inside the path of the crank's joint (so
+    that it stays in the view's box however long the crank is drawn) and just ahead of the
+    crank in position ``P``, in the crank's sense of rotation, labelled ω_1."""
+    pivot = lk.frame[lk.pivot]
+    a = P.pos[lk.joint] - pivot
+    crank = math.degrees(math.atan2(a.y, a.x))
+    sense = 1.0 if lk.omega > 0 else -1.0
+    start = crank + sense * OMEGA_PAST_DEG
+    r_mm = min(max(OMEGA_R * v.scale.mm(lk.length), OMEGA_MIN_MM), OMEGA_MAX_MM)
+    v.turn(pivot, sense, start, "ω_1", r_mm=r_mm, sweep_deg=OMEGA_SWEEP_DEG)
 
 
 # --- the diagrams -----------------------------------------------------------------------------

@@ -31,9 +31,6 @@ from dataclasses import replace
 
 import numpy as np
 import numpy.typing as npt
-from shapely.geometry import LineString, Point
-from shapely.geometry import Polygon as Outline
-from shapely.ops import nearest_points
 
 from geomcad.construction.recorder import Step
 from geomcad.forces import ForcePolygon
@@ -45,8 +42,9 @@ from geomcad.linkage.loads import centre_vec
 from geomcad.linkage.model import Linkage
 from geomcad.linkage.plans import Position, plan_name
 from geomcad.linkage.solution import Solved, scheme
-from geomcad.sheet import Drawing, Sheet, TitleBlock, fmt_number, nice_factor
+from geomcad.sheet import Drawing, Sheet, TitleBlock, fmt_number
 from geomcad.sheet.compose import (
+    TITLE_LEAD,
     Choice,
     Column,
     Grid,
@@ -55,7 +53,6 @@ from geomcad.sheet.compose import (
     Tree,
     View,
     compose,
-    scale_text,
 )
 from geomcad.sheet.drawing import SHORT_MM, Viewport
 from geomcad.sheet.graph import Axis, Graph
@@ -66,15 +63,14 @@ from geomcad.sheet.linkage import (
     file_title,
     fit,
     link_bodies,
+    omega_arrow,
     order_width,
     row_height,
     sheet_formats,
     table_number,
 )
 from geomcad.sheet.linkage import WORDS as KIN_WORDS
-from geomcad.sheet.loads import force, moment
-from geomcad.sheet.model import XY, Polyline
-from geomcad.sheet.placer import text_outline
+from geomcad.sheet.loads import ForceScales, force, force_scales, moment
 from geomcad.sheet.plans import markup_of
 from geomcad.sheet.scale import Scale
 from geomcad.sheet.scheme import draw_scheme
@@ -85,7 +81,7 @@ from geomcad.structure.model import Link
 WORDS = Words(__package__, "linkage_forces")
 #: The longest load arrow on a drawing of links (mm).
 LOAD_MM = 24.0
-#: The longest load arrow on Zhukovsky's lever (mm); shorter than 1 mm are left out.
+#: The longest load arrow on Zhukovsky's lever (mm).
 LEVER_LOAD_MM = 40.0
 #: The width of the note under the table of loads (mm), for 2.5 mm text.
 TABLE2_W = 60.0
@@ -123,9 +119,11 @@ def force_sheets(
         tree, z = fit(lambda h: _sheet2(s, s.positions[k], forces, k, h), fmts)
         d = z.start(_title(lk, WORDS("forces"), designation, no, count))
         compose(d, tree, layout=z.layout)
-        sheet = d.finish()
-        leaders(sheet)
-        out.append(("forces", sheet))
+        main = [pl.scale for pl in z.layout if isinstance(pl.view, _Loaded)]
+        if d.sheet.block is not None and main and main[0] is not None:
+            # the title block's Масштаб: the main view's, the loaded mechanism's
+            d.sheet.block = replace(d.sheet.block, scale=main[0].ratio_text())
+        out.append(("forces", d.finish()))
         no += 1
     if a.flywheel is not None:
         flywheel = a.flywheel
@@ -224,89 +222,26 @@ def _bbox(pts: Sequence[Vec], minimum: float) -> tuple[float, float, float, floa
     return x0 - pad, y0 - pad, x1 + pad, y1 + pad
 
 
-#: Forces drawn as points, by the point they act at: one dot and one label for them all.
-Points = dict[tuple[float, float], tuple[Vec, list[str]]]
-
-
 def _force(
-    v: Viewport, at: Vec, F: Vec, k_F: float, label: str, points: Points, arrive: bool = False,
+    v: Viewport, at: Vec, F: Vec, fs: ForceScales, label: str, arrive: bool = False,
     role: str = "vector",
 ) -> None:  # fmt: skip
-    """A force at its μ_F; one shorter than :data:`SHORT_MM` goes to ``points`` (drawn by
-    :func:`_draw_points` as a dot with its label and the sign (·))."""
-    if F.norm / k_F < SHORT_MM:
-        if F.norm > 0.0:
-            x, y = v.p(at)
-            points.setdefault((round(x, 1), round(y, 1)), (at, []))[1].append(label)
+    """A force as an arrow at the view's μ_F, or, shorter than :data:`SHORT_MM` there, at the
+    view's next stated μ_F with its label marked (:class:`~geomcad.sheet.loads.ForceScales`);
+    never a dot. A zero force draws nothing."""
+    tier = fs.tier(F.norm)
+    if tier is None:
         return
-    force(v, at, F, k_F, label, arrive=arrive, role=role, height=2.5)
-
-
-def _draw_points(v: Viewport, points: Points) -> None:
-    """The forces too short for an arrow: a dot per point, their names in one label (a leader
-    joins a label placed away from its dot: :func:`leaders`)."""
-    for at, labels in points.values():
-        v.dot(at)
-        # a couple's two forces can land on one point (on a lever in a dead position): its
-        # name is written once
-        names = ", ".join(dict.fromkeys(labels))
-        v.label(at, f"{names} (·)", 2.5, clear=1.0, id=POINTS_ID)
-
-
-#: The id of the labels of the forces drawn as points (they get a leader where placed away).
-POINTS_ID = "forces-as-points"
-#: A label of forces drawn as points farther than this from its dot gets a leader (mm).
-LEADER_MM = 2.5
-
-
-def leaders(sheet: Sheet) -> None:
-    """A leader (GOST 2.316: a thin line from the dot on the point to the label) for every label
-    of forces drawn as points that the placer put more than :data:`LEADER_MM` from its dot (a
-    dot inside a slider's block, or crowded by a moment's arrow); the label then names the
-    leader's end, which the leader joins to the point. A leader that would cross another text
-    is not drawn."""
-    others = [text_outline(t) for t in sheet.texts()]
-    for i, (t, a) in enumerate(sheet.anchors):
-        if t.id != POINTS_ID:
-            continue
-        box = text_outline(t)
-        if box.distance(Point(a)) <= LEADER_MM:
-            continue
-        # the leader's end 0.5 mm off the label's box: the nearest point, else the nearest of
-        # points round the box whose leader crosses no other text
-        ring = box.exterior
-        near, _ = nearest_points(box, Point(a))
-        ends = [near] + [ring.interpolate(k / 24.0, normalized=True) for k in range(24)]
-        ends.sort(key=lambda q: q.distance(Point(a)))
-
-        def end_of(q: Point, a: XY = a) -> XY:
-            ux, uy = a[0] - q.x, a[1] - q.y
-            n = math.hypot(ux, uy)
-            return (q.x + ux / n * 0.5, q.y + uy / n * 0.5)
-
-        def clear(e: XY, a: XY = a, box: Outline = box) -> bool:
-            seg = LineString([a, e])
-            return not any(o is not box and o.intersects(seg) for o in others)
-
-        end = next((end_of(q) for q in ends if clear(end_of(q))), None)
-        if end is None:  # a leader would cross a text: the label stays without one
-            continue
-        sheet.add(Polyline((a, end), "dimension"))
-        sheet.anchors[i] = (t, end)
-
-
-def _has_short(forces: Sequence[float], k_F: float) -> bool:
-    """True when some of ``forces`` (N) are drawn as points at ``k_F`` (the sheet says so)."""
-    return any(0.0 < F / k_F < SHORT_MM for F in forces)
+    force(v, at, F, fs.scales[tier].k, label + fs.mark(tier), arrive=arrive, role=role,
+          height=2.5)  # fmt: skip
 
 
 def _draw_loads(
-    v: Viewport, lk: Linkage, P: Position, loads: Sequence[Applied], k_F: float, role: str,
-    points: Points,
+    v: Viewport, lk: Linkage, P: Position, loads: Sequence[Applied], fs: ForceScales, role: str
 ) -> None:  # fmt: skip
     for ld in loads:
         if ld.force is not None and ld.at is not None:
-            _force(v, ld.at, ld.force, k_F, load_name(ld.name), points, role=role)
+            _force(v, ld.at, ld.force, fs, load_name(ld.name), role=role)
         elif ld.moment != 0.0:
             moment(
                 v,
@@ -319,18 +254,49 @@ def _draw_loads(
             )
 
 
+#: The height (mm) of the line under a view's caption that states the further μ_F.
+SCALES_H = 2.5
+
+
+def further_room(fs: ForceScales) -> float:
+    """The room (mm) of the line under a view's caption that states the view's further μ_F
+    (:meth:`ForceScales.further`); 0 when every force is at the view's own μ_F."""
+    return SCALES_H * TITLE_LEAD if fs.tiered else 0.0
+
+
+def draw_further(d: Drawing, at: Placed, view: View, fs: ForceScales) -> None:
+    """The view's further μ_F, on a line of its own under its caption."""
+    if fs.tiered:
+        top = at.box[1] + view.title_height * TITLE_LEAD + SCALES_H
+        d.text(fs.further(), (at.box[0], top), SCALES_H)
+
+
 class _Forces(View):
-    """A mechanism view with loads drawn at their own μ_F (``kF``, stated after the length
-    scale in the caption) over the model box ``_ext``."""
+    """A mechanism view with loads drawn at their own μ_F (``fs``: the view's μ_F, stated after
+    the length scale in the caption, and those of its short forces, on a line under it) over
+    the model box ``_ext``."""
 
     _ext: tuple[float, float, float, float]
-    kF: Scale
+    fs: ForceScales
+
+    def title_room(self) -> float:
+        return super().title_room() + further_room(self.fs)
+
+    @property
+    def kF(self) -> Scale:
+        """The view's own μ_F."""
+        return self.fs.scales[0]
+
+    @property
+    def short(self) -> bool:
+        """Whether some forces are drawn at a second μ_F (the sheet explains the mark)."""
+        return self.fs.tiered
 
     def extent(self) -> tuple[float, float, float, float]:
         return self._ext
 
     def caption(self, scale: Scale | None) -> str:
-        return f"{super().caption(scale)};  {scale_text(self.kF)}"
+        return f"{super().caption(scale)};  {self.fs.caption()}"
 
 
 class _Loaded(_Forces):
@@ -340,24 +306,22 @@ class _Loaded(_Forces):
         super().__init__(title=title, title_height=5.0, margin=LOAD_MM, weight=2.0)
         self.lk, self.P, self.f = lk, P, f
         self.loads = [ld for lds in f.loads.values() for ld in lds]
-        big = max([ld.force.norm for ld in self.loads if ld.force is not None], default=0.0)
-        self.kF = nice_factor(big or 1.0, LOAD_MM, "F")
         self._ext = _bbox(list(P.pos.values()), lk.length)
         drawn = [ld.force.norm for ld in self.loads if ld.force is not None and ld.at is not None]
-        self.short = _has_short(drawn, self.kF.k)
+        self.fs = force_scales(drawn, LOAD_MM)
 
     def draw(self, d: Drawing, at: Placed) -> None:
         v = at.viewport
         assert v is not None
+        draw_further(d, at, self, self.fs)
         lk, P = self.lk, self.P
         draw_scheme(v, scheme(lk, P), bodies=link_bodies(lk, P), pair_labels={},
                     label_height=3.5)  # fmt: skip
         for name in P.pos:
             if name in lk.owner and lk.owner[name] != 0:
                 v.label(P.pos[name], markup_of(name), 3.5, clear=1.0)
-        points: Points = {}
-        _draw_loads(v, lk, P, self.loads, self.kF.k, "vector", points)
-        _draw_points(v, points)
+        _draw_loads(v, lk, P, self.loads, self.fs, "vector")
+        omega_arrow(v, lk, P)
         v.turn(P.pos[lk.pivot], self.f.M_bal, 30.0, WORDS("M_bal"), 8.0, 250.0, "result", 2.5)
 
 
@@ -376,13 +340,13 @@ class _FreeBody(_Forces):
         pts += [r.at for r in gf.reactions]
         self._ext = _bbox(pts, lk.length * 0.5)
         forces = [ld.force.norm for i in links for ld in gf.loads[i] if ld.force is not None]
-        forces += [r.force.norm for r in gf.reactions]
-        self.kF = nice_factor(max(forces, default=0.0) or 1.0, LOAD_MM, "F")
-        self.short = _has_short(forces, self.kF.k)
+        forces += [r.force.norm for r in gf.reactions if r.on in links]
+        self.fs = force_scales(forces, LOAD_MM)
 
     def draw(self, d: Drawing, at: Placed) -> None:
         v = at.viewport
         assert v is not None
+        draw_further(d, at, self, self.fs)
         lk, P, gf = self.lk, self.P, self.gf
         links = gf.links
         full = scheme(lk, P)
@@ -392,12 +356,11 @@ class _FreeBody(_Forces):
         mech = Mechanism(tuple(Link(x) for x in sorted(own | near)), pairs, full.frame)
         draw_scheme(v, mech, bodies=link_bodies(lk, P, links), pair_labels={},
                     ghosts=sorted(near))  # fmt: skip
-        points: Points = {}
         for i in links:
-            _draw_loads(v, lk, P, gf.loads[i], self.kF.k, "vector", points)
+            _draw_loads(v, lk, P, gf.loads[i], self.fs, "vector")
         for r in gf.reactions:
             if r.on in links:
-                _force(v, r.at, r.force, self.kF.k, load_name(r.name), points, True, "result")
+                _force(v, r.at, r.force, self.fs, load_name(r.name), True, "result")
                 if r.couple:
                     label = f"M_{{{r.of}{r.on}}}"
                     moment(v, P.pos[r.joint], r.couple, 6.0, label, "result", height=2.5)
@@ -409,7 +372,6 @@ class _FreeBody(_Forces):
                 for ld in gf.loads[1]
             )
             v.turn(P.pos[lk.pivot], M, 30.0, WORDS("M_bal"), 7.0, 250.0, "result", 2.5)
-        _draw_points(v, points)
 
 
 def polygon_points(poly: ForcePolygon) -> list[Vec]:
@@ -424,8 +386,8 @@ class _Lever(View):
     def __init__(self, lk: Linkage, P: Position, f: Forces) -> None:
         lev = f.lever
         forces = [it.force.norm for it in lev.items] + [lev.F_bal.norm]
-        self.kF = nice_factor(max(forces, default=0.0) or 1.0, LEVER_LOAD_MM, "F")
-        self.short = _has_short([F for F in forces if self.kF.mm(F) >= 1.0], self.kF.k)
+        self.fs = force_scales(forces, LEVER_LOAD_MM)
+        self.short = self.fs.tiered
         super().__init__(title=WORDS("lever"), title_height=5.0, quantity="v", series="nice",
                          margin=LEVER_LOAD_MM)  # fmt: skip
         self.lk, self.P, self.f = lk, P, f
@@ -437,13 +399,17 @@ class _Lever(View):
     def extent(self) -> tuple[float, float, float, float]:
         return self._ext
 
+    def title_room(self) -> float:
+        return super().title_room() + further_room(self.fs)
+
     def caption(self, scale: Scale | None) -> str:
         m = WORDS("m_bal", value=_num(self.f.lever.M_bal))
-        return f"{super().caption(scale)};  {scale_text(self.kF)};  {m}"
+        return f"{super().caption(scale)};  {self.fs.caption()};  {m}"
 
     def draw(self, d: Drawing, at: Placed) -> None:
         v = at.viewport
         assert v is not None
+        draw_further(d, at, self, self.fs)
         kv = v.scale
         lk, P, lev = self.lk, self.P, self.f.lever
         for vec in P.vp.vectors:
@@ -461,13 +427,9 @@ class _Lever(View):
         for q, names in groups:
             v.dot(q)
             v.label(q, ", ".join(names), 2.5, clear=0.8)
-        points: Points = {}
         for it in lev.items:
-            if self.kF.mm(it.force.norm) >= 1.0:
-                _force(v, it.image, it.force, self.kF.k, load_name(it.name), points)
-        _force(v, lev.images[lk.joint], lev.F_bal, self.kF.k, WORDS("P_bal"), points,
-               role="result")  # fmt: skip
-        _draw_points(v, points)
+            _force(v, it.image, it.force, self.fs, load_name(it.name))
+        _force(v, lev.images[lk.joint], lev.F_bal, self.fs, WORDS("P_bal"), role="result")
 
 
 def _table2(f: Forces, h: float) -> Table:

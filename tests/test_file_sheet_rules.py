@@ -1,0 +1,123 @@
+"""The rules a teacher checks on every generated sheet of a linkage file (issue 27), measured on
+the project's examples and on files written here: a force is an arrow at a stated μ_F (never a
+dot), the designation is printed exactly as typed, every mechanism view shows ω1, and the plans
+carry every named point."""
+
+from __future__ import annotations
+
+import math
+import re
+import shutil
+from pathlib import Path
+
+import pytest
+
+import geomcad
+from geomcad.documents import code
+from geomcad.linkage.analysis import analyse
+from geomcad.linkage.solution import solve
+from geomcad.sheet.drawing import SHORT_MM
+from geomcad.sheet.linkage_forces import force_position, load_name
+from geomcad.sheet.loads import force_scales
+from geomcad.sheet.model import ArcItem, Sheet
+from geomcad.sheet.text import literal, parse
+from geomcad.sheet.titleblock import TitleData
+
+EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
+LINKAGES = [
+    p
+    for p in sorted(EXAMPLES.glob("*.toml"))
+    if "[drive]" in p.read_text(encoding="utf-8") and "[[group]]" in p.read_text(encoding="utf-8")
+]
+
+
+def plain(markup: str) -> str:
+    return "".join(r.text for r in parse(markup))
+
+
+def test_force_scales_never_leave_a_force_too_short() -> None:
+    forces = [2576.0, 2200.0, 245.0, 29.4, 24.0, 3.6, 0.5, 1e-14]
+    fs = force_scales(forces, 24.0)
+    assert len(fs.scales) > 1
+    for F in forces[:-1]:
+        tier = fs.tier(F)
+        assert tier is not None
+        mm = F / fs.scales[tier].k
+        assert SHORT_MM * (1.0 - 1e-9) <= mm <= 24.0 * (1.0 + 1e-9), (F, mm)
+    assert fs.tier(forces[-1]) is None  # round-off of a zero force
+    # every scale is stated in the caption, the marks in order
+    assert fs.caption() == "μ_F = 200 Н/мм"
+    assert fs.further().startswith("μ_F* = 20, μ_F** = 2, ") and fs.further().endswith(" Н/мм")
+    # forces within one μ: one scale, no mark
+    one = force_scales([100.0, 60.0, 40.0], 24.0)
+    assert len(one.scales) == 1 and not one.tiered and one.mark(0) == ""
+
+
+@pytest.mark.parametrize("path", LINKAGES, ids=lambda p: p.stem)
+def test_no_force_is_a_dot(path: Path) -> None:
+    """Every non-zero load and reaction of the forces sheet is a labelled arrow, no label says
+    it is drawn as a point, and every scale its marks use is stated."""
+    s = solve(geomcad.solve(str(path)).data.linkage)
+    a = analyse(s)
+    if a.forces is None:
+        pytest.skip("no force analysis")
+    sheets = dict(geomcad.solve(str(path)).sheets())
+    sheet = sheets["forces"]
+    texts = [t.text for t in sheet.texts()]
+    assert not any("(·)" in t for t in texts)
+    names = {t.text.rstrip("*") for t in sheet.texts() if t.role == "label"}
+
+    f = a.forces[force_position(s)]
+    big = max(r.force.norm for r in f.reactions)
+    for lds in f.loads.values():
+        for ld in lds:
+            if ld.force is not None and ld.at is not None and ld.force.norm > 1e-9 * big:
+                assert plain(load_name(ld.name)) in names, ld.name
+    for r in f.reactions:
+        if r.force.norm > 1e-9 * big:
+            assert plain(load_name(r.name)) in names, r.name
+    labels = [t.text.split(" = ")[0] for t in sheet.texts() if t.role == "label"]
+    marks = {len(t) - len(t.rstrip("*")) for t in labels}
+    caption = " ".join(texts)
+    for m in range(1, max(marks, default=0) + 1):
+        assert re.search(rf"μF\*{{{m}}} = \d", caption), m
+
+
+def test_designation_printed_as_typed(tmp_path: Path) -> None:
+    """A designation with an underscore keeps it (no subscript) in графа 2 and 26, and a file's
+    default designation is a code of its stem's letters and digits."""
+    src = EXAMPLES / "slider-crank.toml"
+    path = tmp_path / "sixbar_press.toml"
+    shutil.copy(src, path)
+    assert code(str(path)) == "SIXBARPRESS"
+    sol = geomcad.solve(str(path))
+    default = sol.sheets()
+    des = {t.text for _, sh in default for t in sh.texts() if "SIXBARPRESS" in t.text}
+    assert des and all("_" not in d for d in des)
+    typed = "ТММ.press_01.000 ^x{y}"
+    sheets = sol.sheets(TitleData(designation=typed))
+    for _, sheet in sheets:
+        hits = [t for t in sheet.texts() if t.text == typed]
+        assert len(hits) == 2  # графа 2 and графа 26 (turned)
+        assert all(r.shift == "base" for t in hits for r in t.runs)
+    assert plain(literal("a_b^c{d}\\e")) == "a_b^c{d}\\e"
+
+
+def _omega_arcs(sheet: Sheet) -> list[ArcItem]:
+    """The arcs that carry the label ω1 next to them."""
+    labels = [t for t in sheet.texts() if t.text == "ω1"]
+    arcs = [it for it in sheet.items if isinstance(it, ArcItem)]
+    out = []
+    for a in arcs:
+        mid = ((a.start[0] + a.end[0]) / 2.0, (a.start[1] + a.end[1]) / 2.0)
+        if any(math.dist(mid, t.at) < a.r + 10.0 for t in labels):
+            out.append(a)
+    return out
+
+
+@pytest.mark.parametrize("path", LINKAGES, ids=lambda p: p.stem)
+def test_omega_arrow_on_every_mechanism(path: Path) -> None:
+    sheets = dict(geomcad.solve(str(path)).sheets())
+    assert _omega_arcs(sheets[""]), "kinematic sheet"
+    if "forces" in sheets:
+        assert _omega_arcs(sheets["forces"]), "forces sheet"
