@@ -121,3 +121,71 @@ def test_omega_arrow_on_every_mechanism(path: Path) -> None:
     assert _omega_arcs(sheets[""]), "kinematic sheet"
     if "forces" in sheets:
         assert _omega_arcs(sheets["forces"]), "forces sheet"
+
+
+COUPLER = """
+title = "four-bar with a coupler point"
+[frame]
+O = [0.0, 0.0]
+C = [0.30, 0.0]
+[drive]
+pivot = "O"
+joint = "A"
+length = 0.08
+omega = 12.0
+positions = 12
+[[group]]
+kind = "RRR"
+links = [2, 3]
+joint = "B"
+ends = ["A", "C"]
+lengths = [0.28, 0.20]
+assembly = "left"
+[[point]]
+name = "M"
+link = 2
+from = "A"
+toward = "B"
+along = 0.14
+left = 0.08
+"""
+
+
+def _named_points_complete(path: Path) -> None:
+    """On every velocity and acceleration plan of the file, every moving named point of the
+    mechanism has its plan point and its absolute vector from the pole: a recorded vector
+    from the pole, or an image by similarity (drawn with its triangle and its pole vector)."""
+    from geomcad.linkage.plans import plan_name
+
+    s = solve(geomcad.solve(str(path)).data.linkage)
+    lk = s.linkage
+    moving = [n for n, link in lk.owner.items() if link != 0]
+    assert moving
+    for P in s.positions:
+        for plan in (P.vp, P.ap):
+            from_pole = {v.head for v in plan.vectors if v.tail in {plan.pole, *plan.at_pole}}
+            imaged = {q for _, _, q in plan.images}
+            for n in moving:
+                q = plan.name(plan_name(n))
+                assert q in plan.points, (path.name, n, q)
+                assert q in from_pole | imaged, (path.name, n, q, plan.kind)
+
+
+@pytest.mark.parametrize("path", LINKAGES, ids=lambda p: p.stem)
+def test_every_named_point_on_the_plans(path: Path) -> None:
+    _named_points_complete(path)
+
+
+def test_coupler_point_by_similarity(tmp_path: Path) -> None:
+    path = tmp_path / "coupler.toml"
+    path.write_text(COUPLER, encoding="utf-8")
+    _named_points_complete(path)
+    s = solve(geomcad.solve(str(path)).data.linkage)
+    P = s.positions[1]
+    # m is an image of the coupler's a, b (the triangle abm is similar to ABM)
+    a, b, m = next((a, b, q) for a, b, q in P.vp.images if q == "m")
+    A, B, M = P.pos["A"], P.pos["B"], P.pos["M"]
+    ab, am = P.vp.points[b] - P.vp.points[a], P.vp.points[m] - P.vp.points[a]
+    assert math.isclose(am.norm / ab.norm, (M - A).norm / (B - A).norm, rel_tol=1e-9)
+    assert math.isclose(ab.cross(am) / ab.norm**2, (B - A).cross(M - A) / (B - A).norm ** 2,
+                        rel_tol=1e-9)  # fmt: skip
