@@ -189,3 +189,27 @@ def test_coupler_point_by_similarity(tmp_path: Path) -> None:
     assert math.isclose(am.norm / ab.norm, (M - A).norm / (B - A).norm, rel_tol=1e-9)
     assert math.isclose(ab.cross(am) / ab.norm**2, (B - A).cross(M - A) / (B - A).norm ** 2,
                         rel_tol=1e-9)  # fmt: skip
+
+
+def test_dynamics_table_has_the_diagrams_sign_and_one_format_per_column() -> None:
+    """The M_пр column reads as the diagram does (> 0 in the sense of ω1: ΣP/|ω1|), also for a
+    crank turning clockwise, and each column writes its numbers with one count of decimals."""
+    from geomcad.sheet.lang import language
+    from geomcad.sheet.linkage_forces import _tables3
+
+    path = EXAMPLES / "sixbar-2013-6.toml"
+    s = solve(geomcad.solve(str(path)).data.linkage)
+    assert s.linkage.omega < 0
+    fw = analyse(s).flywheel
+    assert fw is not None
+    with language("en"):
+        table = _tables3(s.linkage, fw, 3.5)[0]
+    body = table.rows[1:]
+    for row, M in zip(body, fw.M_pr, strict=False):
+        value = float(row[3].replace("\u2013", "-"))
+        assert value == pytest.approx(-M, abs=0.06 * max(abs(x) for x in fw.M_pr)), row
+    for col in range(1, 4):
+        decimals = {len(r[col].split(".")[1]) if "." in r[col] else 0 for r in body}
+        assert len(decimals) == 1 or (
+            decimals == {0, max(decimals)} and all(r[col] == "0" for r in body if "." not in r[col])
+        ), (col, decimals)

@@ -390,7 +390,8 @@ def _through(s: Solved) -> str:
         if lk.phi is None
         else WORDS("through_divisions", n=n)
     )
-    return WORDS("diagrams_note", through=through)
+    phi0 = fmt_number(round(math.degrees(s.positions[0].phi) % 360.0, 2), current())
+    return WORDS("diagrams_note", through=through, phi0=phi0)
 
 
 def _divisions(s: Solved) -> int:

@@ -60,6 +60,7 @@ from geomcad.sheet.lang import Words, current
 from geomcad.sheet.linkage import (
     CRANK_MM,
     TITLE_H,
+    ZERO,
     file_title,
     fit,
     link_bodies,
@@ -72,7 +73,7 @@ from geomcad.sheet.linkage import (
 from geomcad.sheet.linkage import WORDS as KIN_WORDS
 from geomcad.sheet.loads import ForceScales, force, force_scales, moment
 from geomcad.sheet.plans import markup_of
-from geomcad.sheet.scale import Scale
+from geomcad.sheet.scale import Scale, fmt_column
 from geomcad.sheet.scheme import draw_scheme
 from geomcad.sheet.views import AxisSpec, Curve, Diagram, Polygon, Steps, Table, Text
 from geomcad.structure import Mechanism
@@ -488,7 +489,20 @@ def _sheet3(s: Solved, fw: Flywheel, h: float) -> Tree:
         cs.append(Curve(np.degrees(psi_k), gy, "construction", points=True))
         graphs.append(Diagram(x, AxisSpec(sym, unit, name), cs, least=(120.0, 45.0),
                               prefer=(600.0, 150.0)))  # fmt: skip
-    column = Column(*graphs, title=WORDS("graphs"), title_height=TITLE_H)
+
+    # M_дв's line named on the M_пр diagram, near its right end
+    def drive_label(gr: Graph) -> None:
+        gr.d.label(gr.p(345.0, fw.M_drive), WORDS("M_dr"), 2.5, prefer=(0.0, -1.0), clear=0.5)
+
+    graphs[0].extra = drive_label
+    origin = WORDS(
+        "phi_origin",
+        phi0=_num(math.degrees(s.positions[0].phi) % 360.0),
+        last=n - 1,
+        step=_num(360.0 / n),
+    )
+    note = Text(paragraph=origin, width=order_width(h), height=h)
+    column = Column(note, *graphs, title=WORDS("graphs"), title_height=TITLE_H)
     witt = _Wittenbauer(fw)
     omega = _omega(lk, fw)
     tables = Column(*_tables3(lk, fw, h))
@@ -607,15 +621,21 @@ def _tables3(lk: Linkage, fw: Flywheel, h: float) -> list[Table]:
     ]
     si = max(abs(x) for x in fw.I_pr)
     sm = max(abs(x) for x in fw.M_pr)
-    for i in range(0, n, step):
-        rows.append(
-            [
-                str(i),
-                _num(math.degrees(fw.phis[i]) % 360.0),
-                _num(fw.I_pr[i], scale=si),
-                _num(fw.M_pr[i], scale=sm),
-            ]
-        )
+    # M_пр in the diagram's convention (> 0 in the crank's sense of rotation: ΣP/|ω1|); each
+    # column one count of decimals
+    sign = 1.0 if lk.omega > 0 else -1.0
+    idx = list(range(0, n, step))
+    cols = [
+        fmt_column([math.degrees(fw.phis[i]) % 360.0 for i in idx], current(), 4),
+        fmt_column(
+            [0.0 if abs(fw.I_pr[i]) <= ZERO * si else fw.I_pr[i] for i in idx], current(), 4
+        ),
+        fmt_column(
+            [0.0 if abs(fw.M_pr[i]) <= ZERO * sm else sign * fw.M_pr[i] for i in idx], current(), 4
+        ),
+    ]
+    for j, i in enumerate(idx):
+        rows.append([str(i), cols[0][j], cols[1][j], cols[2][j]])
     res: list[tuple[str, float | str, str]] = [
         (WORDS("A_c"), _num(fw.A_cycle), "J"),
         (WORDS("M_dr"), _num(fw.M_drive), "N·m"),
