@@ -213,3 +213,26 @@ def test_dynamics_table_has_the_diagrams_sign_and_one_format_per_column() -> Non
         assert len(decimals) == 1 or (
             decimals == {0, max(decimals)} and all(r[col] == "0" for r in body if "." not in r[col])
         ), (col, decimals)
+
+
+def _ratios(sheet: Sheet) -> list[str]:
+    return [t.text.split("(M ")[1].split(")")[0] for t in sheet.texts() if "μl = " in t.text]
+
+
+def test_forces_sheet_scales_from_geometry(tmp_path: Path) -> None:
+    """The forces sheet's drawings of links are never finer than the kinematic sheet's μ_l,
+    its Масштаб cell is the loaded mechanism's, and a change of ω alone rescales no drawing of
+    links (the shaper at ω1 = −8 and −12 1/s)."""
+    src = (EXAMPLES / "shaper.toml").read_text(encoding="utf-8")
+    seen = []
+    for omega in ("-8.0", "-12.0"):
+        path = tmp_path / f"shaper{omega}.toml"
+        path.write_text(src.replace("omega = -8.0", f"omega = {omega}"), encoding="utf-8")
+        sheets = dict(geomcad.solve(str(path)).sheets())
+        kin, forces = _ratios(sheets[""]), _ratios(sheets["forces"])
+        k_kin = float(kin[0].split(":")[1].replace(",", "."))
+        assert all(float(r.split(":")[1].replace(",", ".")) >= k_kin for r in forces), forces
+        block = forces[0]
+        assert block in {t.text for t in sheets["forces"].texts() if t.role == "title"}
+        seen.append(forces)
+    assert seen[0][0] == seen[1][0]  # the loaded mechanism

@@ -63,6 +63,7 @@ from geomcad.sheet.linkage import (
     ZERO,
     file_title,
     fit,
+    layout,
     link_bodies,
     omega_arrow,
     order_width,
@@ -155,8 +156,15 @@ def _num(x: float, digits: int = 4, scale: float = 0.0) -> str:
 def _sheet2(s: Solved, P: Position, f: Forces, k: int, h: float) -> tuple[Tree, dict[View, float]]:
     """Sheet 2's tree, its tables and texts ``h`` high, and the scale its mechanism wants."""
     lk = s.linkage
+    # the length scales from the geometry alone: never finer than the kinematic sheet's μ_l
+    # (a change of ω or of the loads rescales no drawing of links; no group finer than the
+    # mechanism it is cut out of)
+    k_l = layout(s).k_l.k
     mech = _Loaded(lk, P, f, WORDS("mech", k=k, phi=_num(math.degrees(P.phi) % 360.0)))
+    mech.least_k = k_l
     bodies = [_FreeBody(lk, P, gf) for gf in f.groups]
+    for b in bodies:
+        b.least_k = k_l
     # each group's polygons under the group cut out (the crank's under the crank)
     per_group = [
         [
