@@ -236,3 +236,27 @@ def test_forces_sheet_scales_from_geometry(tmp_path: Path) -> None:
         assert block in {t.text for t in sheets["forces"].texts() if t.role == "title"}
         seen.append(forces)
     assert seen[0][0] == seen[1][0]  # the loaded mechanism
+
+
+def test_drafting_rules() -> None:
+    """Frame hinges' supports stand square to the sheet; a slotted link ends at its last joint
+    where that is beyond its block (the shaper's link 3 at B, not 0.09 m past it)."""
+    from geomcad.linkage.solution import scheme
+    from geomcad.sheet.linkage import link_bodies
+    from geomcad.sheet.scheme import _support_direction
+
+    s = solve(geomcad.solve(str(EXAMPLES / "shaper.toml")).data.linkage)
+    lk = s.linkage
+    checked = 0
+    for P in s.positions:
+        mech = scheme(lk, P)
+        for pair in mech.pairs:
+            if mech.frame in pair.links and pair.kind == "R":
+                dx, dy = _support_direction(mech, pair)
+                assert (abs(dx), abs(dy)) in {(0.0, 1.0), (1.0, 0.0)}, (dx, dy)
+                checked += 1
+        (body,) = link_bodies(lk, P, [3])["3"]
+        end = body.points[-1]
+        far = max(P.pos["B"].dist(P.pos["C"]), 1.15 * P.pos["A"].dist(P.pos["C"]))
+        assert end.dist(P.pos["C"]) == pytest.approx(far, rel=1e-9)
+    assert checked >= 2 * len(s.positions)  # O and C in every position

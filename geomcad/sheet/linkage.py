@@ -401,6 +401,10 @@ def _divisions(s: Solved) -> int:
 # --- the mechanism ----------------------------------------------------------------------------
 
 
+#: A slotted link runs on past its block by this fraction of the block's distance from the pivot.
+SLOT_PAST = 1.15
+
+
 def link_bodies(
     lk: Linkage, P: Position, links: Sequence[int] | None = None
 ) -> dict[str, list[Body]]:
@@ -418,12 +422,12 @@ def link_bodies(
         if g is not None and g.kind == "RPR" and link == g.links[1]:
             d = P.slide[link]
             C = P.pos[g.pivot]
-            far = max([(q - C).dot(d) for q in [P.pos[g.slider], *uniq]])
+            # to the farthest of its points, or a little past the block where the block is
+            # farther (a slot runs on past its block; a link ends at its last joint)
+            far = max([(q - C).dot(d) for q in uniq] + [(P.pos[g.slider] - C).dot(d) * SLOT_PAST])
             foot = C + d.perp() * g.offset
             out[str(link)] = (
-                [Body.of([C, foot, foot + d * (far * 1.15)])]
-                if g.offset
-                else [Body.of([C, C + d * (far * 1.15)])]
+                [Body.of([C, foot, foot + d * far])] if g.offset else [Body.of([C, C + d * far])]
             )
             continue
         if len(uniq) == 2:
@@ -527,7 +531,7 @@ class _Mechanism(View):
 #: ω1's arrow: an arc of this fraction of the crank's drawn length, between the least and the
 #: largest radius (mm: within a view's margin round the pivot), over this many degrees,
 #: starting this many degrees past the crank (in its sense).
-OMEGA_R, OMEGA_MIN_MM, OMEGA_MAX_MM, OMEGA_SWEEP_DEG, OMEGA_PAST_DEG = 0.6, 10.0, 18.0, 90.0, 25.0
+OMEGA_R, OMEGA_MIN_MM, OMEGA_MAX_MM, OMEGA_SWEEP_DEG, OMEGA_PAST_DEG = 0.6, 14.0, 18.0, 90.0, 25.0
 
 
 def omega_arrow(v: Viewport, lk: Linkage, P: Position) -> None:

@@ -42,7 +42,7 @@ from geomcad.linkage.loads import centre_vec
 from geomcad.linkage.model import Linkage
 from geomcad.linkage.plans import Position, plan_name
 from geomcad.linkage.solution import Solved, scheme
-from geomcad.sheet import Drawing, Sheet, TitleBlock, fmt_number
+from geomcad.sheet import Drawing, Sheet, TitleBlock, fmt_number, symbols
 from geomcad.sheet.compose import (
     TITLE_LEAD,
     Choice,
@@ -83,6 +83,9 @@ from geomcad.structure.model import Link
 WORDS = Words(__package__, "linkage_forces")
 #: The longest load arrow on a drawing of links (mm).
 LOAD_MM = 24.0
+#: The radius (mm) of M_ур's arc about the crank's pivot: clear of the support's stand and
+#: hatching (symbols.STAND_DEPTH + HATCH_LEN) round the pivot.
+M_BAL_MM = symbols.STAND_DEPTH + symbols.HATCH_LEN + 3.0
 #: The longest load arrow on Zhukovsky's lever (mm).
 LEVER_LOAD_MM = 40.0
 #: The width of the note under the table of loads (mm), for 2.5 mm text.
@@ -326,12 +329,12 @@ class _Loaded(_Forces):
         lk, P = self.lk, self.P
         draw_scheme(v, scheme(lk, P), bodies=link_bodies(lk, P), pair_labels={},
                     label_height=3.5)  # fmt: skip
-        for name in P.pos:
-            if name in lk.owner and lk.owner[name] != 0:
+        for name in P.pos:  # every named point, the frame's (O, C) too
+            if name in lk.owner:
                 v.label(P.pos[name], markup_of(name), 3.5, clear=1.0)
         _draw_loads(v, lk, P, self.loads, self.fs, "vector")
         omega_arrow(v, lk, P)
-        v.turn(P.pos[lk.pivot], self.f.M_bal, 30.0, WORDS("M_bal"), 8.0, 250.0, "result", 2.5)
+        v.turn(P.pos[lk.pivot], self.f.M_bal, 30.0, WORDS("M_bal"), M_BAL_MM, 250.0, "result", 2.5)
 
 
 class _FreeBody(_Forces):
@@ -380,7 +383,7 @@ class _FreeBody(_Forces):
                 else ld.moment
                 for ld in gf.loads[1]
             )
-            v.turn(P.pos[lk.pivot], M, 30.0, WORDS("M_bal"), 7.0, 250.0, "result", 2.5)
+            v.turn(P.pos[lk.pivot], M, 30.0, WORDS("M_bal"), M_BAL_MM, 250.0, "result", 2.5)
 
 
 def polygon_points(poly: ForcePolygon) -> list[Vec]:
