@@ -32,6 +32,7 @@ from dataclasses import replace
 import numpy as np
 import numpy.typing as npt
 
+from geomcad import tol
 from geomcad.construction.recorder import Step
 from geomcad.forces import ForcePolygon
 from geomcad.geom import Vec
@@ -43,6 +44,7 @@ from geomcad.linkage.model import Linkage
 from geomcad.linkage.plans import Position, plan_name
 from geomcad.linkage.solution import Solved, scheme
 from geomcad.sheet import Drawing, Sheet, TitleBlock, fmt_number, symbols
+from geomcad.sheet.compose import _GOST_K as GOST_K
 from geomcad.sheet.compose import (
     TITLE_LEAD,
     Choice,
@@ -63,7 +65,6 @@ from geomcad.sheet.linkage import (
     ZERO,
     file_title,
     fit,
-    layout,
     link_bodies,
     omega_arrow,
     order_width,
@@ -159,10 +160,9 @@ def _num(x: float, digits: int = 4, scale: float = 0.0) -> str:
 def _sheet2(s: Solved, P: Position, f: Forces, k: int, h: float) -> tuple[Tree, dict[View, float]]:
     """Sheet 2's tree, its tables and texts ``h`` high, and the scale its mechanism wants."""
     lk = s.linkage
-    # the length scales from the geometry alone: never finer than the kinematic sheet's μ_l
-    # (a change of ω or of the loads rescales no drawing of links; no group finer than the
-    # mechanism it is cut out of)
-    k_l = layout(s).k_l.k
+    # the length scales from the geometry alone: never finer than the GOST scale that draws
+    # the crank CRANK_MM long (a change of ω or of the loads rescales no drawing of links)
+    k_l = crank_scale(lk).k
     mech = _Loaded(lk, P, f, WORDS("mech", k=k, phi=_num(math.degrees(P.phi) % 360.0)))
     mech.least_k = k_l
     bodies = [_FreeBody(lk, P, gf) for gf in f.groups]
@@ -198,6 +198,14 @@ def _sheet2(s: Solved, P: Position, f: Forces, k: int, h: float) -> tuple[Tree, 
         Column(Row(mech, lever, right), groups),
     )
     return tree, {mech: lk.length / CRANK_MM}
+
+
+def crank_scale(lk: Linkage) -> Scale:
+    """The finest length scale a drawing of the force sheet's links takes: the coarsest GOST
+    2.302 scale at which the crank is still :data:`~geomcad.sheet.linkage.CRANK_MM` long (from
+    the dimensions alone, so that ω and the loads never rescale a drawing of links)."""
+    fits = [k for k in GOST_K if lk.length / k >= CRANK_MM * (1.0 - tol.REL_LENGTH)]
+    return Scale(max(fits) if fits else min(GOST_K), "l")
 
 
 def order_steps(f: Forces) -> list[Step]:
