@@ -12,10 +12,10 @@ from typing import Any
 
 from geomcad import tol
 from geomcad.geom import Vec
-from geomcad.sheet import Viewport
+from geomcad.sheet import Scale, Viewport
 from geomcad.sheet.drawing import SHORT_MM
 from geomcad.sheet.lang import Words
-from geomcad.sheet.loads import MOMENT_SWEEP, force, moment
+from geomcad.sheet.loads import MOMENT_SWEEP, ForceScales, force, force_scales, moment
 from geomcad.sheet.views import num
 
 ORIGIN = Vec(0.0, 0.0)
@@ -51,9 +51,30 @@ def facing(sense: float, at_deg: float, open_: bool = False) -> float:
     return at_deg - s * (180.0 + half if open_ else half)
 
 
-def short_note(k_F: float) -> str:
-    """The sheet's words for the forces drawn as points."""
-    return WORDS("short_note", mm=num(SHORT_MM), k_F=num(k_F))
+#: The longest arrow of a force drawn at a second μ_F (mm).
+LOAD_ROOM_MM = 24.0
+
+
+def scales_of(reactions: Any, k_F: float) -> ForceScales:
+    """The sheet's force scales: μ_F = ``k_F``, and for the forces shorter than
+    :data:`SHORT_MM` at it the larger μ_F* (μ_F** …) they are drawn at, marked ``*``; the
+    balancing check moment's forces and round-off forces are left out."""
+    mags = [
+        a.force.norm
+        for lds in reactions.loads.values()
+        for a in lds
+        if a.force is not None and a.kind != "balancing"
+    ]
+    return force_scales(mags, LOAD_ROOM_MM, first=Scale(k_F, "F"))
+
+
+def short_note(k_F: float, reactions: Any = None) -> str:
+    """The sheet's words for the scales of the forces: every force an arrow at μ_F, those
+    too short there at the stated μ_F* (their labels marked *)."""
+    fs = scales_of(reactions, k_F) if reactions is not None else None
+    if fs is None or not fs.tiered:
+        return WORDS("short_none", k_F=num(k_F))
+    return WORDS("short_note", mm=num(SHORT_MM), k_F=num(k_F), scales=fs.caption())
 
 
 @dataclass(frozen=True)
@@ -94,26 +115,20 @@ def draw_loads(
     centre: Vec = ORIGIN,
 ) -> None:
     """Every solved load on ``body``: forces at their points exactly at k_F (one shorter than
-    :data:`SHORT_MM` as a point with its label), moments about their points; the balancing
-    check moment and round-off forces are left out."""
-    biggest = max(
-        (a.force.norm for lds in reactions.loads.values() for a in lds if a.force),
-        default=0.0,
-    )
+    :data:`SHORT_MM` at the larger μ_F* of :func:`scales_of`, its label marked *; never a
+    dot), moments about their points; the balancing check moment and round-off forces are left
+    out."""
+    fs = scales_of(reactions, k_F)
     for ld in reactions.loads[body]:
         if ld.kind == "balancing":
             continue
         w = where.get(ld.name, Where(ld.name))
         if ld.force is not None:
-            if ld.force.norm <= tol.DERIVED * biggest:
+            tier = fs.tier(ld.force.norm)
+            if tier is None:
                 continue
-            text = f"{w.label} = {num(ld.force.norm)} {WORDS('N')}"
-            if ld.force.norm / k_F < SHORT_MM:
-                dot = w.short_at or w.at or ld.at
-                v.dot(dot)
-                v.label(dot, f"{text} (·)", 2.5, prefer=w.prefer, clear=1.0)
-                continue
-            force(v, w.at or ld.at, ld.force, k_F, text, w.arrive,
+            text = f"{w.label}{fs.mark(tier)} = {num(ld.force.norm)} {WORDS('N')}"
+            force(v, w.at or ld.at, ld.force, fs.scales[tier].k, text, w.arrive,
                   role="result", height=2.5, prefer=w.prefer)  # fmt: skip
         elif abs(ld.moment) > 0.0:
             text = f"{w.label} = {num(abs(ld.moment))} {WORDS('Nm')}"

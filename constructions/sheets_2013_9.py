@@ -157,7 +157,7 @@ def _main_views(
             *wrap(
                 WORDS("rod_motion", x=num(data.x), xd=num(data.xd), xdd=num(data.xdd)), 200.0, 3.0
             ),
-            *wrap(WORDS("forces_at_mu", note=short_note(k_F)), 200.0, 3.0),
+            *wrap(WORDS("forces_at_mu", note=short_note(k_F, data.reactions)), 200.0, 3.0),
         ],
         width=200.0,
         height=3.0,

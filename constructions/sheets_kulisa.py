@@ -656,7 +656,7 @@ def _fbd_tree(sol: Solution[Data], k: Scale, k3: Scale) -> tuple[Node, dict[str,
     state = Column(
         V.Text(lines=[WORDS("state_fbd", mu_l=factor(k), ratio=k.ratio_text(), eps=num(data.eps))],
                height=3.5),
-        V.Text(paragraph=f"{short_note(sol.scales['F'])}.", width=NOTES_W),
+        V.Text(paragraph=f"{short_note(sol.scales['F'], data.dynamic)}.", width=NOTES_W),
     )  # fmt: skip
     tables, notes = _panel_fbd(sol, data, NOTES_W)
     a, b, c, dd = views["1"], views["2"], views["3"], views["all"]

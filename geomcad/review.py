@@ -46,9 +46,12 @@ BOTTOM = 230.0
 
 def review_sheets(sol: Solution[Any], title: TitleData | None = None) -> list[tuple[str, Sheet]]:
     """The review sheets of a solution: ``[("review", sheet), ("review-2", sheet) …]``, one
-    document with its own sheet numbers; none for a variant (no published solution to compare).
-    Drawn in ``title.lang`` when given, else in the language being drawn."""
-    if not sol.is_seed or not sol.problem.seed:
+    document with its own sheet numbers: the comparison with the published values, and the
+    notes (the seed's errata, the numerical method and its settings), so a seed problem without
+    printed values (2013-9) still gets its errata and solver settings on a review sheet; none for
+    a variant or where there is nothing to compare or note. Drawn in ``title.lang`` when given,
+    else in the language being drawn."""
+    if not sol.is_seed or not (sol.problem.seed or sol.notes):
         return []
     with language((title.lang if title is not None else "") or current()):
         return _review_sheets(sol, title)

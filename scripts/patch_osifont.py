@@ -1,4 +1,5 @@
-"""Rebuild the Cyrillic Э э Ё ё that osifont 0.1.20220224 replaced by filled boxes.
+"""Rebuild the Cyrillic Э э Ё ё that osifont 0.1.20220224 replaced by filled boxes, and redraw
+ь and з at lowercase height.
 
 Usage: ``python3 scripts/patch_osifont.py [SRC] [DST]`` (defaults: Debian bookworm's
 fonts-osifont file and the package's pinned copy, ``geomcad/fonts/osifont.ttf``).
@@ -13,6 +14,16 @@ are each a single four-point box. This script draws them again from the font's o
 * э, Э: с/С mirrored left to right (contours reversed to keep the TrueType winding), plus a
   horizontal bar of the font's stroke thickness (the hyphen's) at mid-height of the bowl,
   with a round end like the font's stroke ends, stopping short of the open side.
+
+Two lowercase letters upstream draws at the wrong height (GOST 2.304 type B sets them at the
+height of the other lowercase letters without ascenders, the font's x-height):
+
+* ь: upstream's is the capital Ь (cap height: "СкоростЬ"). The font's own ы holds a lowercase ь
+  as its first contours (everything left of the stem): ь is those, moved to ь's own side
+  bearing, with ь's advance.
+* з: upstream's stands between x-height and cap height and reads as the digit 3. It is scaled
+  vertically about the baseline to the x-height (the height of в, the lowercase letter of the
+  same build), its width and advance kept.
 
 Everything else is kept byte for byte: the other glyphs (and their stored bounds), advance
 widths and side bearings, the other tables, the family name. The version string (nameID 5)
@@ -40,9 +51,11 @@ from fontTools.ttLib.tables.DefaultTable import DefaultTable
 DEFAULT_SRC = Path("/usr/share/fonts/truetype/osifont/osifont.ttf")
 DEFAULT_DST = Path(__file__).resolve().parent.parent / "geomcad" / "fonts" / "osifont.ttf"
 
-VERSION_SUFFIX = "; geomcad: Э э Ё ё restored"
+VERSION_SUFFIX = "; geomcad: Э э Ё ё restored, ь з at x-height"
 #: For name records in an 8-bit (Mac Roman) encoding, which has no Cyrillic.
-VERSION_SUFFIX_ASCII = "; geomcad: U+042D U+044D U+0401 U+0451 restored"
+VERSION_SUFFIX_ASCII = "; geomcad: U+042D U+044D U+0401 U+0451 restored, U+044C U+0437 at x-height"
+#: The version suffixes of earlier runs of this script (replaced, not appended to).
+OLD_SUFFIXES = ("; geomcad: Э э Ё ё restored", "; geomcad: U+042D U+044D U+0401 U+0451 restored")
 
 #: Where the bar of э/Э starts: this fraction of the way from the open side's tips to the
 #: inner edge of the closed side.
@@ -219,6 +232,47 @@ def _mirrored_with_bar(font: TTFont, cmap: Mapping[int, str], target: str, sourc
         raise AssertionError(f"{target}: contour direction differs from {source}")
 
 
+def _soft_sign_from_yeru(font: TTFont, cmap: Mapping[int, str]) -> None:
+    """Draw ь as the contours of ы left of its stem (ы = ь + І), at ь's side bearing."""
+    glyf, hmtx = font["glyf"], font["hmtx"]
+    target, yeru = cmap[0x044C], cmap[0x044B]
+    coords, ends, _ = glyf[yeru].getCoordinates(glyf)
+    # the stem: ы's last contour
+    stem_left = min(x for x, _ in list(coords)[ends[-2] + 1 : ends[-1] + 1])
+    # keep the on-curve flags: replay the outline through a pen, contour by contour
+    rec = RecordingPen()
+    font.getGlyphSet()[yeru].draw(rec)
+    kept: list[tuple[str, tuple[Any, ...]]] = []
+    contour: list[tuple[str, tuple[Any, ...]]] = []
+    for op, args in rec.value:
+        contour.append((op, args))
+        if op in ("closePath", "endPath"):
+            xs = [pt[0] for _, a in contour for pt in a]
+            if xs and max(xs) < stem_left:
+                kept += contour
+            contour = []
+    if not kept:
+        raise ValueError(f"{yeru}: no contours left of its stem")
+    x_min = min(pt[0] for _, a in kept for pt in a)
+    dx = hmtx[target][1] - x_min  # ь's own left side bearing
+    pen = TTGlyphPen(font.getGlyphSet())
+    shifted = TransformPen(pen, (1, 0, 0, 1, dx, 0))
+    for op, args in kept:
+        getattr(shifted, op)(*args)
+    _set_glyph(font, target, pen, hmtx[target][0])
+
+
+def _ze_at_x_height(font: TTFont, cmap: Mapping[int, str]) -> None:
+    """Scale з vertically about the baseline to the height of в (the x-height)."""
+    target = cmap[0x0437]
+    _, y0, _, y1 = _box(font, target)
+    _, _, _, x_height = _box(font, cmap[0x0432])
+    k = (x_height - y0) / (y1 - y0)
+    pen = TTGlyphPen(font.getGlyphSet())
+    font.getGlyphSet()[target].draw(TransformPen(pen, (1, 0, 0, k, 0, y0 * (1 - k))))
+    _set_glyph(font, target, pen, font["hmtx"][target][0])
+
+
 def _append_version(font: TTFont) -> None:
     for record in font["name"].names:
         if record.nameID != 5:
@@ -226,12 +280,14 @@ def _append_version(font: TTFont) -> None:
         text = record.toUnicode().rstrip()
         if VERSION_SUFFIX in text or VERSION_SUFFIX_ASCII in text:
             continue
+        for old in OLD_SUFFIXES:
+            text = text.replace(old, "")
         suffix = VERSION_SUFFIX if record.isUnicode() else VERSION_SUFFIX_ASCII
         record.string = text + suffix
 
 
 def patch(src: Path, dst: Path) -> None:
-    """Read ``src``, rebuild Э э Ё ё, write ``dst``."""
+    """Read ``src``, rebuild Э э Ё ё and ь з, write ``dst``."""
     # recalcBBoxes=False: fontTools would otherwise recompute (and change by a unit) the stored
     # bounds of every glyph it decompiles; only the four new glyphs get fresh bounds (below, and
     # in _set_glyph), then the font-wide values that depend on them.
@@ -256,6 +312,8 @@ def patch(src: Path, dst: Path) -> None:
     _with_diaeresis(font, cmap, glyph_for(0x0401), cyr_E, lat_E, lat_Edier)
     _mirrored_with_bar(font, cmap, glyph_for(0x044D), glyph_for(0x0441, 0x0063))
     _mirrored_with_bar(font, cmap, glyph_for(0x042D), glyph_for(0x0421, 0x0043))
+    _soft_sign_from_yeru(font, cmap)
+    _ze_at_x_height(font, cmap)
     _append_version(font)
     font["maxp"].recalc(font)  # also head's bounding box and its "lsb = xMin" flag
     font["hhea"].recalc(font)

@@ -117,3 +117,35 @@ def test_version_string_names_the_patch(font: TTFont) -> None:
     assert versions
     assert all("geomcad" in v for v in versions), versions
     assert font["name"].getDebugName(1) == "osifont"
+
+
+def _bounds(font: TTFont, char: str) -> tuple[float, float, float, float]:
+    from fontTools.pens.boundsPen import ControlBoundsPen
+
+    pen = ControlBoundsPen(font.getGlyphSet())
+    font.getGlyphSet()[font.getBestCmap()[ord(char)]].draw(pen)
+    assert pen.bounds is not None
+    x0, y0, x1, y1 = pen.bounds
+    return (x0, y0, x1, y1)
+
+
+@pytest.mark.parametrize("char", ["ь", "з"])
+def test_lowercase_at_x_height(font: TTFont, char: str) -> None:
+    """ь and з stand as high as the other lowercase letters without ascenders (в, ы), not at
+    the capitals' height (upstream's ь is Ь, its з a small digit 3)."""
+    x_height = _bounds(font, "в")[3]
+    cap = font["OS/2"].sCapHeight
+    top = _bounds(font, char)[3]
+    assert abs(top - x_height) <= 0.02 * cap, (char, top, x_height)
+    assert _outline(font, char) != _outline(font, char.upper())
+
+
+@pytest.mark.skipif(not UPSTREAM.exists(), reason="Debian's fonts-osifont is not installed")
+def test_patch_script_makes_the_shipped_font(tmp_path: Path) -> None:
+    import subprocess
+    import sys
+
+    script = FONT.parents[2] / "scripts" / "patch_osifont.py"
+    out = tmp_path / "osifont.ttf"
+    subprocess.run([sys.executable, str(script), str(UPSTREAM), str(out)], check=True)
+    assert out.read_bytes() == FONT.read_bytes()

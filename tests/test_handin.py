@@ -66,7 +66,19 @@ def test_hand_in_sheets_carry_no_audit(pid: str) -> None:
         assert not [w for w in AUDIT if w in text], pid
         assert not colours(to_svg(sheet))
     for _, sheet in review_sheets(sol):
-        assert "Опубликовано" in _words(sheet)
+        if sol.problem.seed:  # a table of the published values
+            assert "Опубликовано" in _words(sheet)
+
+
+def test_review_sheet_without_published_values() -> None:
+    """2013-9 prints no values to compare, yet its errata and the solver's settings go to a
+    review sheet (issue 27), never to the hand-in sheets."""
+    sol = geomcad.solve("2013-9")
+    assert not sol.problem.seed and sol.notes
+    sheets = review_sheets(sol)
+    assert [n for n, _ in sheets] == ["review"]
+    text = " ".join(_words(sheets[0][1]))
+    assert "rtol" in text and "seed error" in text
 
 
 def test_colour_only_when_asked() -> None:

@@ -44,6 +44,9 @@ BASELINE: dict[tuple[str, str], dict[str, int]] = {
     # the 10 mm cells empty (the open profile and the plan leave white inside their boxes)
     ("2013-2", ""): {"empty": 1},
     ("2013-3", ""): {"empty": 1},
+    # issue 27: O1's support stands upright now (it was skewed with the crank); O1's letter,
+    # crowded by the support, the crank and the O1B0 dimension, lands 15 mm off
+    ("2013-6", ""): {"anchor": 1},
     # the bars over s̄, h̄ are part of their labels (layout.is_bar_of)
     ("2013-4", ""): {},
     # composed (sheet.compose): the mechanism 1:2.5, the joints 1:1, the plans 1 N/mm; 54 % empty
@@ -62,8 +65,10 @@ BASELINE: dict[tuple[str, str], dict[str, int]] = {
     # the principal position is the force position (1): the ram's symbol at D1 crowds D2, D11
     ("linkage-shaper", ""): {"anchor": 4, "empty": 1},
     # the forces sheet at the default force position (position 1, the ram at the start of its
-    # cut, the rod 4 nearly along the guide): the labels 4 and D crowded at 7 mm
-    ("linkage-shaper", "forces"): {"anchor": 2, "empty": 1},
+    # cut, the rod 4 nearly along the guide); issue 27: the short forces at the slider D are
+    # arrows at μ_F* … (they were dots): the letters 4, D, 5 by the crowded slider land 7–9 mm
+    # off, on the mechanism and on group (4, 5)
+    ("linkage-shaper", "forces"): {"anchor": 4, "empty": 1},
     ("linkage-shaper", "dynamics"): {"empty": 1},
     # the twelve numbered positions drawn beside the file's phi: B's labels crowd near the
     # rocker's extreme (7 … 11 mm)

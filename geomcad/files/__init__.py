@@ -67,3 +67,14 @@ def file_problem(
 def stem(pid: str) -> str:
     """The name a file's sheets are written under: its stem (``mech.toml`` → ``mech``)."""
     return Path(pid).stem
+
+
+#: The longest code a file's stem gives a default designation (графа 26 is 70 mm wide).
+CODE_CHARS = 12
+
+
+def code(pid: str) -> str:
+    """The file's stem as a part of a designation that reads as an ESKD code: its letters and
+    digits only, upper case, at most :data:`CODE_CHARS` of them (``sixbar_press.toml`` →
+    ``SIXBARPRESS``); a stem without any gives ``""``."""
+    return "".join(ch for ch in stem(pid) if ch.isalnum()).upper()[:CODE_CHARS]

@@ -119,9 +119,9 @@ def designation(sol: Solution[Any]) -> str:
     """The document's designation from its file's name (as a linkage file's), so that every
     design file is its own document; ``designation`` in [sheet] or ``--designation`` override
     it."""
-    from geomcad.files import stem
+    from geomcad.files import code
 
-    return WORDS("designation", stem=stem(sol.problem.id))
+    return WORDS("designation", stem=code(sol.problem.id) or "CAM")
 
 
 def scales(sol: Solution[CamDesign]) -> dict[str, float]:
@@ -439,8 +439,14 @@ def _profile(v: Viewport, des: CamDesign) -> None:
         B = Vec(*contact[i])
         _ray(v, o, B, start)
         v.dot(B, "point")
-        # outward first: inside the roller's circle, clear of the crowd of rays near O
-        v.label(B, str(i), height=2.5, prefer=(B.x, B.y))
+        if spec.follower == "roller":
+            # the number outside its roller's circle: by the roller's point farthest from O
+            P = Vec(*pitch[i])
+            u = (P - o).unit() if (P - o).norm > 0.0 else Vec(B.x, B.y).unit()
+            v.label(P + u * des.r_roller, str(i), height=2.5, prefer=(u.x, u.y), clear=0.5)
+        else:
+            # outward first, clear of the crowd of rays near O
+            v.label(B, str(i), height=2.5, prefer=(B.x, B.y))
     _senses(v, des)
     ang = np.sort(np.arctan2(contact[:n, 1], contact[:n, 0]))
     gaps = np.diff(np.append(ang, ang[0] + 2.0 * math.pi))

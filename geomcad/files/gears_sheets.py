@@ -116,9 +116,9 @@ def designation(sol: Solution[Any]) -> str:
     """The document's designation from its file's name (as a linkage file's), so that every
     design file is its own document; ``designation`` in [sheet] or ``--designation`` override
     it."""
-    from geomcad.files import stem
+    from geomcad.files import code
 
-    return WORDS("designation", stem=stem(sol.problem.id))
+    return WORDS("designation", stem=code(sol.problem.id) or "GEAR")
 
 
 def scales(sol: Solution[GearsDesign]) -> dict[str, float]:
@@ -586,8 +586,12 @@ def _scheme(
         # the carrier H: from its shaft up to the planets' axle
         v.polyline([Vec(cH, 0.0), Vec(cH, yc), Vec(x_end + 1.5 * b, yc)], "link")
     v.label(Vec(c1, aw + r2), "2", prefer=(-1.0, 1.0))
+    # each gear's number on a rim point of its own, never at a pitch point two gears share
+    r3, r_held = m * z[2] / 2.0, m * z[-1] / 2.0
     if scheme != "A":
-        v.label(Vec(c2, aw + m * z[2] / 2.0), "3", prefer=(1.0, 1.0))
+        top_shared = math.isclose(aw + r3, r_held, rel_tol=1e-9)
+        y3 = aw - r3 if top_shared else aw + r3
+        v.label(Vec(c2, y3), "3", prefer=(1.0, -1.0) if top_shared else (1.0, 1.0))
     v.seg(Vec(cH, 0.0), Vec(span + k.model(5.0), 0.0), "link")
     v.label(Vec(cH, aw * 0.5), "H", prefer=(1.0, 0.0))
     # the held gear, on the frame
@@ -599,14 +603,14 @@ def _scheme(
         v.seg(Vec(held_c, 0.0), Vec(held_c + 1.2 * b, 0.0), "link")
         ground_line(v, Vec(held_c + 1.2 * b, -k.model(8.0)))
         v.seg(Vec(held_c + 1.2 * b, 0.0), Vec(held_c + 1.2 * b, -k.model(8.0)), "link")
-        v.label(Vec(held_c, r_h), name, prefer=(1.0, 1.0))
+        v.label(Vec(held_c, -r_h), name, prefer=(1.0, -1.0))
     else:
         x_web = held_c + 1.5 * b
         for s_ in (1.0, -1.0):
             v.seg(Vec(held_c - b / 2.0, s_ * r_h), Vec(x_web, s_ * r_h), "link")
             v.seg(Vec(x_web, s_ * r_h), Vec(x_web, s_ * (r_h + k.model(6.0))), "link")
             ground_line(v, Vec(x_web, s_ * (r_h + k.model(6.0))))
-        v.label(Vec(held_c, r_h), name, prefer=(-1.0, 1.0))
+        v.label(Vec(x_web, r_h + k.model(3.0)), name, prefer=(1.0, 0.0))
     # the points of the radial line: pitch points and the planets' axle
     for q, x in (("A", c1), ("B", c1), ("C", held_c)):
         v.dot(Vec(x, by[q]), "point")

@@ -127,6 +127,8 @@ class Plan:
     values: list[str] = field(default_factory=list)
     #: the step names of the fixed points (at the pole)
     at_pole: set[str] = field(default_factory=set)
+    #: the points found by similarity: (a, b, point), the image triangle of a link's points
+    images: list[tuple[str, str, str]] = field(default_factory=list)
     #: an acceleration plan's velocity plan: the size against which a relative velocity
     #: (of a Coriolis term) is rounding noise
     velocity: Plan | None = None
@@ -388,6 +390,7 @@ class Plan:
             kind = "plan_image_line" if t >= 0.0 else "plan_image_beyond"
             args["ratio"] = abs(t)
         self._add(point, value, op + (f" ({why})" if why else ""), kind, args)
+        self.images.append((self.name(a), self.name(b), self.name(point)))
         if label:
             self._vec(a, point, label, why or label, True)
         return self[point]

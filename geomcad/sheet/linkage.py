@@ -49,7 +49,7 @@ from geomcad.sheet.compose import (
 from geomcad.sheet.compose import (
     Layout as Arranged,
 )
-from geomcad.sheet.drawing import SHORT_MM
+from geomcad.sheet.drawing import SHORT_MM, Viewport
 from geomcad.sheet.frame import FORMATS
 from geomcad.sheet.lang import Words, current, per_language
 from geomcad.sheet.motion import Frames, turn
@@ -387,7 +387,8 @@ def _through(s: Solved) -> str:
     n = _divisions(s)
     del lk
     through = WORDS("through_positions", last=n - 1)
-    return WORDS("diagrams_note", through=through)
+    phi0 = fmt_number(round(math.degrees(s.drawn[0].phi) % 360.0, 2), current())
+    return WORDS("diagrams_note", through=through, phi0=phi0)
 
 
 def _divisions(s: Solved) -> int:
@@ -410,6 +411,10 @@ def _principal(s: Solved) -> tuple[Position, int | None]:
     return s.drawn[0], 0
 
 
+#: A slotted link runs on past its block by this fraction of the block's distance from the pivot.
+SLOT_PAST = 1.15
+
+
 def link_bodies(
     lk: Linkage, P: Position, links: Sequence[int] | None = None
 ) -> dict[str, list[Body]]:
@@ -427,12 +432,12 @@ def link_bodies(
         if g is not None and g.kind == "RPR" and link == g.links[1]:
             d = P.slide[link]
             C = P.pos[g.pivot]
-            far = max([(q - C).dot(d) for q in [P.pos[g.slider], *uniq]])
+            # to the farthest of its points, or a little past the block where the block is
+            # farther (a slot runs on past its block; a link ends at its last joint)
+            far = max([(q - C).dot(d) for q in uniq] + [(P.pos[g.slider] - C).dot(d) * SLOT_PAST])
             foot = C + d.perp() * g.offset
             out[str(link)] = (
-                [Body.of([C, foot, foot + d * (far * 1.15)])]
-                if g.offset
-                else [Body.of([C, C + d * (far * 1.15)])]
+                [Body.of([C, foot, foot + d * far])] if g.offset else [Body.of([C, C + d * far])]
             )
             continue
         if len(uniq) == 2:
@@ -533,6 +538,26 @@ class _Mechanism(View):
             if p.name not in labels.values():
                 v.dot(P0.pos[p.name])
                 v.label(P0.pos[p.name], p.name, 3.5, clear=1.0)
+        omega_arrow(v, lk, P0)
+
+
+#: ω1's arrow: an arc of this fraction of the crank's drawn length, between the least and the
+#: largest radius (mm: within a view's margin round the pivot), over this many degrees,
+#: starting this many degrees past the crank (in its sense).
+OMEGA_R, OMEGA_MIN_MM, OMEGA_MAX_MM, OMEGA_SWEEP_DEG, OMEGA_PAST_DEG = 0.6, 14.0, 18.0, 90.0, 25.0
+
+
+def omega_arrow(v: Viewport, lk: Linkage, P: Position) -> None:
+    """ω1 as an arc arrow about the crank's pivot, inside the path of the crank's joint (so
+    that it stays in the view's box however long the crank is drawn) and just ahead of the
+    crank in position ``P``, in the crank's sense of rotation, labelled ω_1."""
+    pivot = lk.frame[lk.pivot]
+    a = P.pos[lk.joint] - pivot
+    crank = math.degrees(math.atan2(a.y, a.x))
+    sense = 1.0 if lk.omega > 0 else -1.0
+    start = crank + sense * OMEGA_PAST_DEG
+    r_mm = min(max(OMEGA_R * v.scale.mm(lk.length), OMEGA_MIN_MM), OMEGA_MAX_MM)
+    v.turn(pivot, sense, start, "ω_1", r_mm=r_mm, sweep_deg=OMEGA_SWEEP_DEG)
 
 
 # --- the diagrams -----------------------------------------------------------------------------

@@ -31,10 +31,8 @@ from dataclasses import replace
 
 import numpy as np
 import numpy.typing as npt
-from shapely.geometry import LineString, Point
-from shapely.geometry import Polygon as Outline
-from shapely.ops import nearest_points
 
+from geomcad import tol
 from geomcad.construction.recorder import Step
 from geomcad.forces import ForcePolygon
 from geomcad.geom import Vec
@@ -45,8 +43,10 @@ from geomcad.linkage.loads import centre_vec
 from geomcad.linkage.model import Linkage
 from geomcad.linkage.plans import Position, plan_name
 from geomcad.linkage.solution import Solved, scheme
-from geomcad.sheet import Drawing, Sheet, TitleBlock, fmt_number, nice_factor
+from geomcad.sheet import Drawing, Sheet, TitleBlock, fmt_number, symbols
+from geomcad.sheet.compose import _GOST_K as GOST_K
 from geomcad.sheet.compose import (
+    TITLE_LEAD,
     Choice,
     Column,
     Grid,
@@ -55,7 +55,6 @@ from geomcad.sheet.compose import (
     Tree,
     View,
     compose,
-    scale_text,
 )
 from geomcad.sheet.drawing import SHORT_MM, Viewport
 from geomcad.sheet.graph import Axis, Graph
@@ -63,20 +62,20 @@ from geomcad.sheet.lang import Words, current
 from geomcad.sheet.linkage import (
     CRANK_MM,
     TITLE_H,
+    ZERO,
     file_title,
     fit,
     link_bodies,
+    omega_arrow,
     order_width,
     row_height,
     sheet_formats,
     table_number,
 )
 from geomcad.sheet.linkage import WORDS as KIN_WORDS
-from geomcad.sheet.loads import force, moment
-from geomcad.sheet.model import XY, Polyline
-from geomcad.sheet.placer import text_outline
+from geomcad.sheet.loads import ForceScales, force, force_scales, moment
 from geomcad.sheet.plans import markup_of
-from geomcad.sheet.scale import Scale
+from geomcad.sheet.scale import Scale, fmt_column
 from geomcad.sheet.scheme import draw_scheme
 from geomcad.sheet.views import AxisSpec, Curve, Diagram, Polygon, Steps, Table, Text
 from geomcad.structure import Mechanism
@@ -85,7 +84,10 @@ from geomcad.structure.model import Link
 WORDS = Words(__package__, "linkage_forces")
 #: The longest load arrow on a drawing of links (mm).
 LOAD_MM = 24.0
-#: The longest load arrow on Zhukovsky's lever (mm); shorter than 1 mm are left out.
+#: The radius (mm) of M_ур's arc about the crank's pivot: clear of the support's stand and
+#: hatching (symbols.STAND_DEPTH + HATCH_LEN) round the pivot.
+M_BAL_MM = symbols.STAND_DEPTH + symbols.HATCH_LEN + 3.0
+#: The longest load arrow on Zhukovsky's lever (mm).
 LEVER_LOAD_MM = 40.0
 #: The width of the note under the table of loads (mm), for 2.5 mm text.
 TABLE2_W = 60.0
@@ -118,9 +120,11 @@ def force_sheets(
         tree, z = fit(lambda h: _sheet2(s, P, forces, k, h), fmts)
         d = z.start(_title(lk, WORDS("forces"), designation, no, count))
         compose(d, tree, layout=z.layout)
-        sheet = d.finish()
-        leaders(sheet)
-        out.append(("forces", sheet))
+        main = [pl.scale for pl in z.layout if isinstance(pl.view, _Loaded)]
+        if d.sheet.block is not None and main and main[0] is not None:
+            # the title block's Масштаб: the main view's, the loaded mechanism's
+            d.sheet.block = replace(d.sheet.block, scale=main[0].ratio_text())
+        out.append(("forces", d.finish()))
         no += 1
     if a.flywheel is not None:
         flywheel = a.flywheel
@@ -153,10 +157,16 @@ def _sheet2(
 ) -> tuple[Tree, dict[View, float]]:
     """Sheet 2's tree, its tables and texts ``h`` high, and the scale its mechanism wants."""
     lk = s.linkage
+    # the length scales from the geometry alone: never finer than the GOST scale that draws
+    # the crank CRANK_MM long (a change of ω or of the loads rescales no drawing of links)
+    k_l = crank_scale(lk).k
     phi = _num(math.degrees(P.phi) % 360.0)
     title = WORDS("mech", k=k, phi=phi) if k is not None else WORDS("mech_phi", phi=phi)
     mech = _Loaded(lk, P, f, title)
+    mech.least_k = k_l
     bodies = [_FreeBody(lk, P, gf) for gf in f.groups]
+    for b in bodies:
+        b.least_k = k_l
     # each group's polygons under the group cut out (the crank's under the crank)
     per_group = [
         [
@@ -187,6 +197,14 @@ def _sheet2(
         Column(Row(mech, lever, right), groups),
     )
     return tree, {mech: lk.length / CRANK_MM}
+
+
+def crank_scale(lk: Linkage) -> Scale:
+    """The finest length scale a drawing of the force sheet's links takes: the coarsest GOST
+    2.302 scale at which the crank is still :data:`~geomcad.sheet.linkage.CRANK_MM` long (from
+    the dimensions alone, so that ω and the loads never rescale a drawing of links)."""
+    fits = [k for k in GOST_K if lk.length / k >= CRANK_MM * (1.0 - tol.REL_LENGTH)]
+    return Scale(max(fits) if fits else min(GOST_K), "l")
 
 
 def order_steps(f: Forces) -> list[Step]:
@@ -223,89 +241,26 @@ def _bbox(pts: Sequence[Vec], minimum: float) -> tuple[float, float, float, floa
     return x0 - pad, y0 - pad, x1 + pad, y1 + pad
 
 
-#: Forces drawn as points, by the point they act at: one dot and one label for them all.
-Points = dict[tuple[float, float], tuple[Vec, list[str]]]
-
-
 def _force(
-    v: Viewport, at: Vec, F: Vec, k_F: float, label: str, points: Points, arrive: bool = False,
+    v: Viewport, at: Vec, F: Vec, fs: ForceScales, label: str, arrive: bool = False,
     role: str = "vector",
 ) -> None:  # fmt: skip
-    """A force at its μ_F; one shorter than :data:`SHORT_MM` goes to ``points`` (drawn by
-    :func:`_draw_points` as a dot with its label and the sign (·))."""
-    if F.norm / k_F < SHORT_MM:
-        if F.norm > 0.0:
-            x, y = v.p(at)
-            points.setdefault((round(x, 1), round(y, 1)), (at, []))[1].append(label)
+    """A force as an arrow at the view's μ_F, or, shorter than :data:`SHORT_MM` there, at the
+    view's next stated μ_F with its label marked (:class:`~geomcad.sheet.loads.ForceScales`);
+    never a dot. A zero force draws nothing."""
+    tier = fs.tier(F.norm)
+    if tier is None:
         return
-    force(v, at, F, k_F, label, arrive=arrive, role=role, height=2.5)
-
-
-def _draw_points(v: Viewport, points: Points) -> None:
-    """The forces too short for an arrow: a dot per point, their names in one label (a leader
-    joins a label placed away from its dot: :func:`leaders`)."""
-    for at, labels in points.values():
-        v.dot(at)
-        # a couple's two forces can land on one point (on a lever in a dead position): its
-        # name is written once
-        names = ", ".join(dict.fromkeys(labels))
-        v.label(at, f"{names} (·)", 2.5, clear=1.0, id=POINTS_ID)
-
-
-#: The id of the labels of the forces drawn as points (they get a leader where placed away).
-POINTS_ID = "forces-as-points"
-#: A label of forces drawn as points farther than this from its dot gets a leader (mm).
-LEADER_MM = 2.5
-
-
-def leaders(sheet: Sheet) -> None:
-    """A leader (GOST 2.316: a thin line from the dot on the point to the label) for every label
-    of forces drawn as points that the placer put more than :data:`LEADER_MM` from its dot (a
-    dot inside a slider's block, or crowded by a moment's arrow); the label then names the
-    leader's end, which the leader joins to the point. A leader that would cross another text
-    is not drawn."""
-    others = [text_outline(t) for t in sheet.texts()]
-    for i, (t, a) in enumerate(sheet.anchors):
-        if t.id != POINTS_ID:
-            continue
-        box = text_outline(t)
-        if box.distance(Point(a)) <= LEADER_MM:
-            continue
-        # the leader's end 0.5 mm off the label's box: the nearest point, else the nearest of
-        # points round the box whose leader crosses no other text
-        ring = box.exterior
-        near, _ = nearest_points(box, Point(a))
-        ends = [near] + [ring.interpolate(k / 24.0, normalized=True) for k in range(24)]
-        ends.sort(key=lambda q: q.distance(Point(a)))
-
-        def end_of(q: Point, a: XY = a) -> XY:
-            ux, uy = a[0] - q.x, a[1] - q.y
-            n = math.hypot(ux, uy)
-            return (q.x + ux / n * 0.5, q.y + uy / n * 0.5)
-
-        def clear(e: XY, a: XY = a, box: Outline = box) -> bool:
-            seg = LineString([a, e])
-            return not any(o is not box and o.intersects(seg) for o in others)
-
-        end = next((end_of(q) for q in ends if clear(end_of(q))), None)
-        if end is None:  # a leader would cross a text: the label stays without one
-            continue
-        sheet.add(Polyline((a, end), "dimension"))
-        sheet.anchors[i] = (t, end)
-
-
-def _has_short(forces: Sequence[float], k_F: float) -> bool:
-    """True when some of ``forces`` (N) are drawn as points at ``k_F`` (the sheet says so)."""
-    return any(0.0 < F / k_F < SHORT_MM for F in forces)
+    force(v, at, F, fs.scales[tier].k, label + fs.mark(tier), arrive=arrive, role=role,
+          height=2.5)  # fmt: skip
 
 
 def _draw_loads(
-    v: Viewport, lk: Linkage, P: Position, loads: Sequence[Applied], k_F: float, role: str,
-    points: Points,
+    v: Viewport, lk: Linkage, P: Position, loads: Sequence[Applied], fs: ForceScales, role: str
 ) -> None:  # fmt: skip
     for ld in loads:
         if ld.force is not None and ld.at is not None:
-            _force(v, ld.at, ld.force, k_F, load_name(ld.name), points, role=role)
+            _force(v, ld.at, ld.force, fs, load_name(ld.name), role=role)
         elif ld.moment != 0.0:
             moment(
                 v,
@@ -318,18 +273,49 @@ def _draw_loads(
             )
 
 
+#: The height (mm) of the line under a view's caption that states the further μ_F.
+SCALES_H = 2.5
+
+
+def further_room(fs: ForceScales) -> float:
+    """The room (mm) of the line under a view's caption that states the view's further μ_F
+    (:meth:`ForceScales.further`); 0 when every force is at the view's own μ_F."""
+    return SCALES_H * TITLE_LEAD if fs.tiered else 0.0
+
+
+def draw_further(d: Drawing, at: Placed, view: View, fs: ForceScales) -> None:
+    """The view's further μ_F, on a line of its own under its caption."""
+    if fs.tiered:
+        top = at.box[1] + view.title_height * TITLE_LEAD + SCALES_H
+        d.text(fs.further(), (at.box[0], top), SCALES_H)
+
+
 class _Forces(View):
-    """A mechanism view with loads drawn at their own μ_F (``kF``, stated after the length
-    scale in the caption) over the model box ``_ext``."""
+    """A mechanism view with loads drawn at their own μ_F (``fs``: the view's μ_F, stated after
+    the length scale in the caption, and those of its short forces, on a line under it) over
+    the model box ``_ext``."""
 
     _ext: tuple[float, float, float, float]
-    kF: Scale
+    fs: ForceScales
+
+    def title_room(self) -> float:
+        return super().title_room() + further_room(self.fs)
+
+    @property
+    def kF(self) -> Scale:
+        """The view's own μ_F."""
+        return self.fs.scales[0]
+
+    @property
+    def short(self) -> bool:
+        """Whether some forces are drawn at a second μ_F (the sheet explains the mark)."""
+        return self.fs.tiered
 
     def extent(self) -> tuple[float, float, float, float]:
         return self._ext
 
     def caption(self, scale: Scale | None) -> str:
-        return f"{super().caption(scale)};  {scale_text(self.kF)}"
+        return f"{super().caption(scale)};  {self.fs.caption()}"
 
 
 class _Loaded(_Forces):
@@ -339,25 +325,23 @@ class _Loaded(_Forces):
         super().__init__(title=title, title_height=5.0, margin=LOAD_MM, weight=2.0)
         self.lk, self.P, self.f = lk, P, f
         self.loads = [ld for lds in f.loads.values() for ld in lds]
-        big = max([ld.force.norm for ld in self.loads if ld.force is not None], default=0.0)
-        self.kF = nice_factor(big or 1.0, LOAD_MM, "F")
         self._ext = _bbox(list(P.pos.values()), lk.length)
         drawn = [ld.force.norm for ld in self.loads if ld.force is not None and ld.at is not None]
-        self.short = _has_short(drawn, self.kF.k)
+        self.fs = force_scales(drawn, LOAD_MM)
 
     def draw(self, d: Drawing, at: Placed) -> None:
         v = at.viewport
         assert v is not None
+        draw_further(d, at, self, self.fs)
         lk, P = self.lk, self.P
         draw_scheme(v, scheme(lk, P), bodies=link_bodies(lk, P), pair_labels={},
                     label_height=3.5)  # fmt: skip
-        for name in P.pos:
-            if name in lk.owner and lk.owner[name] != 0:
+        for name in P.pos:  # every named point, the frame's (O, C) too
+            if name in lk.owner:
                 v.label(P.pos[name], markup_of(name), 3.5, clear=1.0)
-        points: Points = {}
-        _draw_loads(v, lk, P, self.loads, self.kF.k, "vector", points)
-        _draw_points(v, points)
-        v.turn(P.pos[lk.pivot], self.f.M_bal, 30.0, WORDS("M_bal"), 8.0, 250.0, "result", 2.5)
+        _draw_loads(v, lk, P, self.loads, self.fs, "vector")
+        omega_arrow(v, lk, P)
+        v.turn(P.pos[lk.pivot], self.f.M_bal, 30.0, WORDS("M_bal"), M_BAL_MM, 250.0, "result", 2.5)
 
 
 class _FreeBody(_Forces):
@@ -375,13 +359,13 @@ class _FreeBody(_Forces):
         pts += [r.at for r in gf.reactions]
         self._ext = _bbox(pts, lk.length * 0.5)
         forces = [ld.force.norm for i in links for ld in gf.loads[i] if ld.force is not None]
-        forces += [r.force.norm for r in gf.reactions]
-        self.kF = nice_factor(max(forces, default=0.0) or 1.0, LOAD_MM, "F")
-        self.short = _has_short(forces, self.kF.k)
+        forces += [r.force.norm for r in gf.reactions if r.on in links]
+        self.fs = force_scales(forces, LOAD_MM)
 
     def draw(self, d: Drawing, at: Placed) -> None:
         v = at.viewport
         assert v is not None
+        draw_further(d, at, self, self.fs)
         lk, P, gf = self.lk, self.P, self.gf
         links = gf.links
         full = scheme(lk, P)
@@ -391,12 +375,11 @@ class _FreeBody(_Forces):
         mech = Mechanism(tuple(Link(x) for x in sorted(own | near)), pairs, full.frame)
         draw_scheme(v, mech, bodies=link_bodies(lk, P, links), pair_labels={},
                     ghosts=sorted(near))  # fmt: skip
-        points: Points = {}
         for i in links:
-            _draw_loads(v, lk, P, gf.loads[i], self.kF.k, "vector", points)
+            _draw_loads(v, lk, P, gf.loads[i], self.fs, "vector")
         for r in gf.reactions:
             if r.on in links:
-                _force(v, r.at, r.force, self.kF.k, load_name(r.name), points, True, "result")
+                _force(v, r.at, r.force, self.fs, load_name(r.name), True, "result")
                 if r.couple:
                     label = f"M_{{{r.of}{r.on}}}"
                     moment(v, P.pos[r.joint], r.couple, 6.0, label, "result", height=2.5)
@@ -407,8 +390,7 @@ class _FreeBody(_Forces):
                 else ld.moment
                 for ld in gf.loads[1]
             )
-            v.turn(P.pos[lk.pivot], M, 30.0, WORDS("M_bal"), 7.0, 250.0, "result", 2.5)
-        _draw_points(v, points)
+            v.turn(P.pos[lk.pivot], M, 30.0, WORDS("M_bal"), M_BAL_MM, 250.0, "result", 2.5)
 
 
 def polygon_points(poly: ForcePolygon) -> list[Vec]:
@@ -423,8 +405,8 @@ class _Lever(View):
     def __init__(self, lk: Linkage, P: Position, f: Forces) -> None:
         lev = f.lever
         forces = [it.force.norm for it in lev.items] + [lev.F_bal.norm]
-        self.kF = nice_factor(max(forces, default=0.0) or 1.0, LEVER_LOAD_MM, "F")
-        self.short = _has_short([F for F in forces if self.kF.mm(F) >= 1.0], self.kF.k)
+        self.fs = force_scales(forces, LEVER_LOAD_MM)
+        self.short = self.fs.tiered
         super().__init__(title=WORDS("lever"), title_height=5.0, quantity="v", series="nice",
                          margin=LEVER_LOAD_MM)  # fmt: skip
         self.lk, self.P, self.f = lk, P, f
@@ -436,13 +418,17 @@ class _Lever(View):
     def extent(self) -> tuple[float, float, float, float]:
         return self._ext
 
+    def title_room(self) -> float:
+        return super().title_room() + further_room(self.fs)
+
     def caption(self, scale: Scale | None) -> str:
         m = WORDS("m_bal", value=_num(self.f.lever.M_bal))
-        return f"{super().caption(scale)};  {scale_text(self.kF)};  {m}"
+        return f"{super().caption(scale)};  {self.fs.caption()};  {m}"
 
     def draw(self, d: Drawing, at: Placed) -> None:
         v = at.viewport
         assert v is not None
+        draw_further(d, at, self, self.fs)
         kv = v.scale
         lk, P, lev = self.lk, self.P, self.f.lever
         for vec in P.vp.vectors:
@@ -460,13 +446,9 @@ class _Lever(View):
         for q, names in groups:
             v.dot(q)
             v.label(q, ", ".join(names), 2.5, clear=0.8)
-        points: Points = {}
         for it in lev.items:
-            if self.kF.mm(it.force.norm) >= 1.0:
-                _force(v, it.image, it.force, self.kF.k, load_name(it.name), points)
-        _force(v, lev.images[lk.joint], lev.F_bal, self.kF.k, WORDS("P_bal"), points,
-               role="result")  # fmt: skip
-        _draw_points(v, points)
+            _force(v, it.image, it.force, self.fs, load_name(it.name))
+        _force(v, lev.images[lk.joint], lev.F_bal, self.fs, WORDS("P_bal"), role="result")
 
 
 def _table2(f: Forces, h: float) -> Table:
@@ -525,7 +507,20 @@ def _sheet3(s: Solved, fw: Flywheel, h: float) -> Tree:
         cs.append(Curve(np.degrees(psi_k), gy, "construction", points=True))
         graphs.append(Diagram(x, AxisSpec(sym, unit, name), cs, least=(120.0, 45.0),
                               prefer=(600.0, 150.0)))  # fmt: skip
-    column = Column(*graphs, title=WORDS("graphs"), title_height=TITLE_H)
+
+    # M_дв's line named on the M_пр diagram, near its right end
+    def drive_label(gr: Graph) -> None:
+        gr.d.label(gr.p(345.0, fw.M_drive), WORDS("M_dr"), 2.5, prefer=(0.0, -1.0), clear=0.5)
+
+    graphs[0].extra = drive_label
+    origin = WORDS(
+        "phi_origin",
+        phi0=_num(math.degrees(s.positions[0].phi) % 360.0),
+        last=n - 1,
+        step=_num(360.0 / n),
+    )
+    note = Text(paragraph=origin, width=order_width(h), height=h)
+    column = Column(note, *graphs, title=WORDS("graphs"), title_height=TITLE_H)
     witt = _Wittenbauer(fw)
     omega = _omega(lk, fw)
     tables = Column(*_tables3(lk, fw, h))
@@ -644,15 +639,21 @@ def _tables3(lk: Linkage, fw: Flywheel, h: float) -> list[Table]:
     ]
     si = max(abs(x) for x in fw.I_pr)
     sm = max(abs(x) for x in fw.M_pr)
-    for i in range(0, n, step):
-        rows.append(
-            [
-                str(i),
-                _num(math.degrees(fw.phis[i]) % 360.0),
-                _num(fw.I_pr[i], scale=si),
-                _num(fw.M_pr[i], scale=sm),
-            ]
-        )
+    # M_пр in the diagram's convention (> 0 in the crank's sense of rotation: ΣP/|ω1|); each
+    # column one count of decimals
+    sign = 1.0 if lk.omega > 0 else -1.0
+    idx = list(range(0, n, step))
+    cols = [
+        fmt_column([math.degrees(fw.phis[i]) % 360.0 for i in idx], current(), 4),
+        fmt_column(
+            [0.0 if abs(fw.I_pr[i]) <= ZERO * si else fw.I_pr[i] for i in idx], current(), 4
+        ),
+        fmt_column(
+            [0.0 if abs(fw.M_pr[i]) <= ZERO * sm else sign * fw.M_pr[i] for i in idx], current(), 4
+        ),
+    ]
+    for j, i in enumerate(idx):
+        rows.append([str(i), cols[0][j], cols[1][j], cols[2][j]])
     res: list[tuple[str, float | str, str]] = [
         (WORDS("A_c"), _num(fw.A_cycle), "J"),
         (WORDS("M_dr"), _num(fw.M_drive), "N·m"),

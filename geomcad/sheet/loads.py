@@ -9,14 +9,104 @@ into the body). A moment is an arc around its point with an arrowhead giving its
 from __future__ import annotations
 
 import math
+from collections.abc import Iterable
+from dataclasses import dataclass
 
+from geomcad import tol
 from geomcad.geom import PointLike, Vec
 from geomcad.sheet import symbols
-from geomcad.sheet.drawing import Viewport, _arrow
+from geomcad.sheet.drawing import SHORT_MM, Viewport, _arrow
 from geomcad.sheet.model import XY, Polyline
+from geomcad.sheet.scale import Scale, nice_factor
 
 #: A moment arrow's sweep (rad) and the gap between its ends.
 MOMENT_SWEEP = math.radians(250.0)
+
+
+#: The mark of a force drawn at the view's second, third … μ_F (appended to its label and to
+#: the symbol of that μ_F in the view's caption).
+MARK = "*"
+
+
+@dataclass(frozen=True)
+class ForceScales:
+    """The force scales of one view: a force is always an arrow at a stated μ_F, never a dot.
+
+    ``scales[0]`` is the view's μ_F. The forces that come out shorter than :data:`SHORT_MM`
+    (two arrowheads) at it are drawn at ``scales[1]`` (larger arrows, their labels marked
+    ``*``), those still too short there at ``scales[2]`` (``**``), and so on: each tier's μ_F is
+    stated in the view's caption (:meth:`caption`). A force under ``zero`` N is round-off of a
+    zero force and is not drawn (its value, 0, is in the table).
+    """
+
+    scales: tuple[Scale, ...]
+    zero: float = 0.0
+
+    @property
+    def k(self) -> float:
+        """The view's own μ_F (N/mm)."""
+        return self.scales[0].k
+
+    def tier(self, F: float) -> int | None:
+        """The index of the scale a force of ``F`` N is drawn at (``None``: a zero force)."""
+        if self.zero >= F:
+            return None
+        for i, sc in enumerate(self.scales):
+            if F / sc.k >= SHORT_MM * (1.0 - tol.DERIVED):
+                return i
+        return len(self.scales) - 1
+
+    @staticmethod
+    def mark(tier: int) -> str:
+        """The mark of a label drawn at scale ``tier`` ("" at the view's own μ_F)."""
+        return MARK * tier
+
+    def caption(self) -> str:
+        """The view's own μ_F as its caption states it: ``μ_F = 100 Н/мм``."""
+        from geomcad.sheet.compose import scale_text
+
+        return scale_text(self.scales[0])
+
+    def further(self) -> str:
+        """The further scales, by their marks, the unit written once: ``μ_F* = 10,
+        μ_F** = 2 Н/мм`` ("" when every force is at the view's own μ_F)."""
+        from geomcad.sheet.compose import scale_text
+
+        texts = [scale_text(sc) for sc in self.scales[1:]]
+        if not texts:
+            return ""
+        unit = texts[-1].rsplit(" ", 1)[-1]
+        parts = [t.replace(" = ", f"{self.mark(i)} = ", 1) for i, t in enumerate(texts, 1)]
+        heads = [p[: -len(unit)].rstrip() if p.endswith(unit) else p for p in parts[:-1]]
+        return ", ".join([*heads, parts[-1]])
+
+    @property
+    def tiered(self) -> bool:
+        """Whether some forces are drawn at a second μ_F (the sheet says what the mark means)."""
+        return len(self.scales) > 1
+
+
+def force_scales(
+    forces: Iterable[float], room_mm: float, first: Scale | None = None
+) -> ForceScales:
+    """The force scales of a view whose forces have the magnitudes ``forces`` (N): the first
+    so that the largest is at most ``room_mm`` long, then one more (the largest remaining at
+    most ``room_mm``) while some force would be shorter than :data:`SHORT_MM`. Forces under
+    ``tol.DERIVED`` of the largest are zero. ``room_mm`` is at least 2.5 · :data:`SHORT_MM`
+    (a rounded μ_F draws the largest force at least ``room_mm``/2.5 long), so every tier takes
+    at least its largest force. ``first``: the view's μ_F where the sheet has chosen it."""
+    mags = sorted((abs(F) for F in forces), reverse=True)
+    big = mags[0] if mags else 0.0
+    room = max(room_mm, 2.5 * SHORT_MM)
+    if big <= 0.0:
+        return ForceScales((first or nice_factor(1.0, room, "F"),))
+    zero = tol.DERIVED * big
+    scales = [first or nice_factor(big, room, "F")]
+    rest = [F for F in mags if zero < F and F / scales[-1].k < SHORT_MM * (1.0 - tol.DERIVED)]
+    while rest:
+        scales.append(nice_factor(rest[0], room, "F"))
+        rest = [F for F in rest if F / scales[-1].k < SHORT_MM * (1.0 - tol.DERIVED)]
+    return ForceScales(tuple(scales), zero)
 
 
 def force(

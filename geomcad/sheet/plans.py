@@ -82,6 +82,7 @@ def plan_lines(v: Viewport, plan: Plan, min_mm: float = 0.5, over_mm: float = LI
         a, b = plan.points[vec.tail], plan.points[vec.head]
         if scale.mm((b - a).norm) >= min_mm:
             v.arrow(a, b, "vector" if vec.known else "result")
+    images(v, plan, min_mm)
     groups: list[list[str]] = []
     for name, p in plan.points.items():
         for g in groups:
@@ -94,6 +95,24 @@ def plan_lines(v: Viewport, plan: Plan, min_mm: float = 0.5, over_mm: float = LI
         q = plan.points[g[0]]
         v.dot(q)
         v.label(q, ", ".join(markup_of(n) for n in g), 3.5, clear=1.0)
+
+
+def images(v: Viewport, plan: Plan, min_mm: float = 0.5) -> None:
+    """Every point the plan finds by similarity drawn complete: the image triangle ``abm`` of
+    the link's points in thin lines (similar to ABM, turned the same way) and the point's
+    absolute vector from the pole (``pm`` = V_M, ``πm′`` = a_M), unless a vector from the pole
+    to it is drawn already or it is shorter than ``min_mm`` on the paper."""
+    scale = v.scale
+    pole = plan.pole
+    drawn = {vec.head for vec in plan.vectors if vec.tail in {pole, *plan.at_pole}}
+    for a, b, q in plan.images:
+        pa, pb, pq = plan.points[a], plan.points[b], plan.points[q]
+        for u, w in ((pa, pq), (pb, pq), (pa, pb)):
+            if scale.mm((w - u).norm) >= min_mm:
+                v.seg(u, w, "construction")
+        if q not in drawn and scale.mm((pq - plan.points[pole]).norm) >= min_mm:
+            v.arrow(plan.points[pole], pq, "result")
+            drawn.add(q)
 
 
 def vector_rows(plan: Plan, scale: Scale, digits: int = 4) -> list[tuple[str, str, float, float]]:

@@ -121,18 +121,28 @@ def draw_scheme(
     _labels(v, mech, drawn, size, pair_labels, link_labels, label_height, ghosts)
 
 
+#: A frame hinge's support stands upright (pointing down) unless a link it carries comes
+#: closer than this to that direction (rad); then it takes the axis direction farthest from them.
+SUPPORT_CLEAR = math.radians(50.0)
+#: The axis directions a support may point in (model), the upright one first.
+_SUPPORT_AXES = (Vec(0.0, -1.0), Vec(0.0, 1.0), Vec(-1.0, 0.0), Vec(1.0, 0.0))
+
+
 def _support_direction(mech: Mechanism, p: Pair) -> tuple[float, float]:
-    """The direction (model) of a frame hinge's support: away from the links it carries."""
+    """The direction (model) of a frame hinge's support: drawn square to the sheet (its hatch
+    horizontal or vertical, never skewed with the links), down where the links it carries leave
+    :data:`SUPPORT_CLEAR` of room there, else the axis direction farthest from them."""
     link = p.other(mech.frame)
-    s = Vec(0.0, 0.0)
-    for q in _points(mech, link):
-        d = q - p.at
-        if d.norm > 0.0:
-            s = s + d.unit()
-    if s.norm <= _REL:
+    dirs = [(q - p.at).unit() for q in _points(mech, link) if (q - p.at).norm > 0.0]
+    if not dirs:
         return (0.0, -1.0)
-    u = -s.unit()
-    return (u.x, u.y)
+
+    def clearance(u: Vec) -> float:
+        return min(math.acos(max(-1.0, min(1.0, u.dot(d)))) for d in dirs)
+
+    down = _SUPPORT_AXES[0]
+    best = down if clearance(down) >= SUPPORT_CLEAR else max(_SUPPORT_AXES, key=clearance)
+    return (best.x, best.y)
 
 
 def _block(v: Viewport, q: Vec, along: Vec, role: str) -> None:

@@ -84,6 +84,16 @@ def metrics() -> FontMetrics:
         )
 
 
+#: The characters that label markup gives a meaning to (:func:`parse`).
+MARKUP_CHARS = "\\_^{}"
+
+
+def literal(text: str) -> str:
+    """``text`` as markup that prints exactly as typed: every markup character escaped (a
+    designation ``sixbar_press`` stays one line of plain letters, no subscript)."""
+    return "".join("\\" + ch if ch in MARKUP_CHARS else ch for ch in text)
+
+
 def parse(markup: str) -> tuple[Run, ...]:
     """Split label markup into runs: ``V_{B3B2}`` → V, B3B2 (sub); ``O_1`` → O, 1 (sub)."""
     runs: list[Run] = []
