@@ -67,7 +67,7 @@ def test_no_force_is_a_dot(path: Path) -> None:
     assert not any("(·)" in t for t in texts)
     names = {t.text.rstrip("*") for t in sheet.texts() if t.role == "label"}
 
-    f = a.forces[force_position(s)]
+    _, f, _ = force_position(s)
     big = max(r.force.norm for r in f.reactions)
     for lds in f.loads.values():
         for ld in lds:
