@@ -21,7 +21,7 @@ from dataclasses import dataclass, field, replace
 from geomcad.errors import ParameterError
 from geomcad.sheet.lang import Lang, Words, current
 from geomcad.sheet.model import XY, Polyline, Sheet, TextItem
-from geomcad.sheet.text import HEIGHTS, box, metrics, parse
+from geomcad.sheet.text import HEIGHTS, box, escape, metrics, parse
 from geomcad.sheet.titleblock import STUDENT_STAGE, TitleData
 
 #: Paper sizes (short side, long side) in mm.
@@ -82,22 +82,23 @@ class TitleBlock:
     def with_user(self, data: TitleData) -> TitleBlock:
         """This block with the user's data: their designation (one for the whole document)
         replaces the sheet module's, their people and places fill the empty cells."""
+        # the user's words are plain text, not label markup (a name may hold an underscore)
         return replace(
             self,
-            designation=data.designation or self.designation,
-            developer=data.student or self.developer,
-            checker=data.checker or self.checker,
-            tcontrol=data.tcontrol or self.tcontrol,
-            ncontrol=data.ncontrol or self.ncontrol,
-            approver=data.approver or self.approver,
-            organisation=data.org or self.organisation,
-            group=data.group or self.group,
-            date=data.date or self.date,
-            revision=data.revision or self.revision,
+            designation=escape(data.designation) or self.designation,
+            developer=escape(data.student) or self.developer,
+            checker=escape(data.checker) or self.checker,
+            tcontrol=escape(data.tcontrol) or self.tcontrol,
+            ncontrol=escape(data.ncontrol) or self.ncontrol,
+            approver=escape(data.approver) or self.approver,
+            organisation=escape(data.org) or self.organisation,
+            group=escape(data.group) or self.group,
+            date=escape(data.date) or self.date,
+            revision=escape(data.revision) or self.revision,
             # Лит. "У" is a Russian letter: an English sheet (its document status) takes only a
             # stage given to it in other words
             stage=self.stage
-            or (data.stage if self.lang == "ru" or data.stage != STUDENT_STAGE else ""),
+            or (escape(data.stage) if self.lang == "ru" or data.stage != STUDENT_STAGE else ""),
         )
 
 

@@ -46,6 +46,14 @@ if TYPE_CHECKING:
 #: Draws allowed per variant asked for, before the run gives up (rejections included).
 DRAWS_PER_VARIANT = 50
 
+#: The most variants one run makes (a class, or a course's several classes).
+MAX_COUNT = 1000
+
+#: The most values one ``--vary`` range may hold (multiples of its step), and the largest and
+#: smallest size of LO, HI and STEP: a range is printed data, not a stream of digits.
+MAX_VALUES = 10**9
+MAX_EXPONENT = 30
+
 #: Rejection reasons, in the order they are reported.
 REASONS = ("duplicate", "unsolvable", "transmission")
 
@@ -76,6 +84,12 @@ def _decimal(key: str, text: str, what: str) -> Decimal:
         raise ParameterError(f"--vary {key}", text, f"{what} must be a number") from None
     if not d.is_finite():
         raise ParameterError(f"--vary {key}", text, f"{what} must be a finite number")
+    if d and not -MAX_EXPONENT <= d.adjusted() < MAX_EXPONENT:
+        raise ParameterError(
+            f"--vary {key}",
+            text,
+            f"{what} must lie between 1e-{MAX_EXPONENT} and 1e{MAX_EXPONENT} in size",
+        )
     return d
 
 
@@ -105,6 +119,10 @@ def parse_vary(text: str) -> Vary:
         step = Decimal(1).scaleb(-places)
     if not lo < hi:
         raise ParameterError(f"--vary {key}", spec, "LO must be less than HI")
+    if (hi - lo) / step > MAX_VALUES:
+        raise ParameterError(
+            f"--vary {key}", spec, f"the range holds over {MAX_VALUES:,} steps: take a coarser STEP"
+        )
     first = math.ceil(lo / step)
     last = math.floor(hi / step)
     if last - first < 1:
