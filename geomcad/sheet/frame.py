@@ -281,11 +281,13 @@ def _split(words: list[str], n: int) -> list[str]:
     target = total / n
     lines: list[str] = []
     cur: list[str] = []
+    length = 0  # of " ".join(cur), kept as words are added (a long text stays linear)
     for w in words:
-        if cur and len(" ".join([*cur, w])) > target and len(lines) < n - 1:
+        if cur and length + 1 + len(w) > target and len(lines) < n - 1:
             lines.append(" ".join(cur))
-            cur = [w]
+            cur, length = [w], len(w)
         else:
+            length += (1 if cur else 0) + len(w)
             cur.append(w)
     lines.append(" ".join(cur))
     return lines
