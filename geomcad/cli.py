@@ -14,7 +14,9 @@ out of precision, 2 bad input. Bad input prints nothing on stdout and exactly on
 ``error: ...``, naming the parameter or the construction step (prefixed with the problem id).
 Anything else that goes wrong is a bug of geomcad's: one line ``error: internal error in STEP:
 TYPE: message (please report)`` and exit status 70 (EX_SOFTWARE), never a traceback
-(``GEOMCAD_TRACEBACK=1`` shows it, for a developer).
+(``GEOMCAD_TRACEBACK=1`` shows it, for a developer). stdout or stderr that cannot be written is
+the OS's reason in one line and exit status 74 (EX_IOERR); SIGINT, SIGTERM and SIGHUP stop a
+command with one line and the status 130, 143 or 129 (:mod:`geomcad.interrupts`).
 """
 
 from __future__ import annotations
@@ -41,6 +43,7 @@ from geomcad.errors import (
     MissingDependency,
     ParameterError,
     UnknownProblem,
+    shorten_name,
 )
 
 if TYPE_CHECKING:
@@ -211,7 +214,8 @@ examples:
 
 ID is a problem id from `geomcad list`, or a file FILE.toml that states a problem.
 exit status: 0 done, 1 (verify) a measurement out of precision, 2 bad input (one error: line),
-70 an internal error of geomcad's (one error: line; please report).
+70 an internal error of geomcad's (one error: line; please report), 74 stdout or stderr cannot be
+written, 130/143/129 stopped by SIGINT/SIGTERM/SIGHUP.
 """
 
 VERIFY_RULES = """\
@@ -971,8 +975,10 @@ def _json_default(obj: object) -> Any:
 
 def _prefixed(pid: str | None, exc: GeomcadError) -> str:
     msg = _one_line(str(exc))
-    if pid and not isinstance(exc, UnknownProblem) and not msg.startswith(f"{pid}:"):
-        return f"{pid}: {msg}"
+    if pid and not isinstance(exc, UnknownProblem):
+        short = shorten_name(pid)
+        if not msg.startswith((f"{pid}:", f"{short}:")):
+            return f"{short}: {msg}"
     return msg
 
 

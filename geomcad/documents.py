@@ -23,6 +23,7 @@ a TOML value (a number, a string with or without quotes, ``true``/``false``, an 
 from __future__ import annotations
 
 import math
+import sys
 import tomllib
 from collections.abc import Callable, Mapping, Sequence
 from functools import cache
@@ -104,8 +105,10 @@ def read(pid: str) -> dict[str, Any]:
         return tomllib.loads(text)
     except RecursionError:  # tomllib reads nested arrays and inline tables recursively
         raise FileKeyError(pid, "", TOO_DEEP) from None
-    except ValueError as exc:  # TOMLDecodeError, or an integer of over 4300 digits
+    except tomllib.TOMLDecodeError as exc:
         raise FileKeyError(pid, "", f"is not valid TOML: {exc}") from None
+    except ValueError:  # Python reads no integer of over 4300 digits
+        raise FileKeyError(pid, "", f"is not valid TOML: {HUGE_INTEGER}") from None
 
 
 def parse_value(text: str) -> Any:
@@ -191,6 +194,8 @@ def load(pid: str, sets: Sequence[tuple[str, str]] = ()) -> Problem[Any]:
 
 #: TOML's integers are 64-bit (the specification); :mod:`tomllib` reads longer ones too.
 INT_MIN, INT_MAX = -(2**63), 2**63 - 1
+
+HUGE_INTEGER = f"an integer of over {sys.get_int_max_str_digits()} digits"
 
 #: The deepest nesting of tables and arrays a file may have (a linkage file needs 4).
 MAX_DEPTH = 32

@@ -22,6 +22,18 @@ def shorten(text: str, limit: int = QUOTE_CHARS) -> str:
     return text if len(text) <= limit else text[:limit] + "…"
 
 
+def shorten_name(name: str, limit: int = QUOTE_CHARS) -> str:
+    """A name for an error message: a file's path keeps its end (the file's own name), anything
+    else its start (:func:`shorten`).
+
+    >>> shorten_name("/tmp/" + "d" * 80 + "/mech.toml", 16)
+    '…dddddd/mech.toml'
+    """
+    if len(name) > limit and ("/" in name or name.lower().endswith(".toml")):
+        return "…" + name[len(name) - limit :]
+    return shorten(name, limit)
+
+
 def quote(value: object, limit: int = QUOTE_CHARS) -> str:
     """``repr(value)`` for an error message, at most about ``limit`` characters of it: a long
     string or a deeply nested list is quoted by its start (``reprlib`` bounds the nesting).
@@ -63,7 +75,7 @@ class ParameterError(GeomcadError):
         self.name = name
         self.value = value
         self.why = why
-        super().__init__(f"parameter {shorten(name)} = {quote(value)}: {why}")
+        super().__init__(f"parameter {shorten_name(name)} = {quote(value)}: {why}")
 
 
 class ConstructionError(GeomcadError):
@@ -109,7 +121,7 @@ class FileKeyError(ParameterError):
 
     def __init__(self, key: str, value: object, why: str) -> None:
         super().__init__(key, value, why)
-        self.args = (f"{shorten(key)}: {why}",)
+        self.args = (f"{shorten_name(key)}: {why}",)
 
     def __str__(self) -> str:
-        return f"{shorten(self.name)}: {self.why}"
+        return f"{shorten_name(self.name)}: {self.why}"

@@ -104,9 +104,11 @@ def test_a_title_word_is_plain_text_not_markup(tmp_path: Path) -> None:
     assert parse(escape("Ivan_ov^2 a_{b")) == parse("Ivan\\_ov\\^2 a\\_{b")
     assert [r.text for r in parse(escape("Ivan_ov^2 a_{b"))] == ["Ivan_ov^2 a_{b"]
     code, _, err = run("build", "2013-6", "--out", str(tmp_path), "--format", "svg",
-                       "--student", "Ivan_ov a_{b")  # fmt: skip
+                       "--student", "Ivan_ov a_{b", "--designation", "ТММ.01 ^2")  # fmt: skip
     assert code == 0, err
-    assert ">Ivan_ov a_{b<" in (tmp_path / "2013-6.svg").read_text(encoding="utf-8")
+    svg = (tmp_path / "2013-6.svg").read_text(encoding="utf-8")
+    assert ">Ivan_ov a_{b<" in svg
+    assert svg.count(">ТММ.01 ^2<") == 2  # графы 2 and 26
 
 
 # --- files: a byte-order mark, other encodings, deep nesting, infinities -------------------------
@@ -141,7 +143,7 @@ def test_a_geomcad_toml_with_a_bom_or_not_utf8(
     [
         ("title = 'x'\nv = " + "[" * 3000 + "]" * 3000 + "\n", "nested too deeply"),
         ("[" + ".".join(["a"] * 5000) + "]\n", "nested too deeply"),
-        ("title = 'x'\nv = " + "9" * 5000 + "\n", "not valid TOML"),
+        ("title = 'x'\nv = " + "9" * 5000 + "\n", "an integer of over 4300 digits"),
         ("title = 'x'\nv = " + "9" * 30 + "\n", "beyond TOML's 64 bits"),
     ],
     ids=["array-3000-deep", "header-5000-deep", "int-5000-digits", "int-30-digits"],

@@ -155,7 +155,7 @@ def fill_title_blocks(sheets: list[Sheet], data: TitleData | None = None) -> Non
     blocks = [s.block for s in sheets if s.block is not None]
     if not blocks:
         return
-    designation = data.designation or blocks[0].designation
+    designation = escape(data.designation) or blocks[0].designation  # plain text, as with_user
     n = len(blocks)
     i = 0
     for sheet in sheets:
