@@ -525,9 +525,11 @@ def variant_file(template: Template, variant: Variant, width: int) -> bytes:
 def variant_sets(path: Path) -> tuple[str, list[tuple[str, str]]]:
     """A problem-id variant file read back: the id and its ``--set`` pairs."""
     try:
-        obj = json.loads(path.read_text(encoding="utf-8"))
+        obj = json.loads(path.read_text(encoding="utf-8-sig"))  # a BOM (Notepad's) is dropped
     except FileNotFoundError:
         raise ParameterError(str(path), "", "no such file") from None
+    except RecursionError:
+        raise ParameterError(str(path), "", "is not a variant file (nested too deeply)") from None
     except (OSError, UnicodeDecodeError, json.JSONDecodeError) as exc:
         raise ParameterError(str(path), "", f"is not a variant file ({exc})") from None
     if (
