@@ -123,7 +123,7 @@ def _run(args: list[str]) -> int:
         return exc.code if isinstance(exc.code, int) else EXIT_OK
     pid: str | None = getattr(ns, "id", None)
     try:
-        status: int = ns.func(ns)
+        status: int = _call(ns)
     except (_Failed, _UsageError) as exc:
         return _fail(str(exc))
     except UnknownProblem as exc:
@@ -149,6 +149,19 @@ def _run(args: list[str]) -> int:
         if os.environ.get("GEOMCAD_TRACEBACK"):
             raise
         return _internal(ns, pid, exc)
+    return status
+
+
+def _call(ns: argparse.Namespace) -> int:
+    """Run the command; an exception that a signal caused (raised inside a C extension's
+    import, which turns it into an ImportError, or a library that wraps it) is the signal's."""
+    try:
+        status: int = ns.func(ns)
+    except Exception:
+        signum = interrupts.received()
+        if signum is not None:
+            raise interrupts.Interrupted(signum) from None
+        raise
     return status
 
 

@@ -36,7 +36,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from geomcad import documents, registry
-from geomcad.errors import GeomcadError, ParameterError
+from geomcad.errors import GeomcadError, ParameterError, shorten
 from geomcad.teach import MIN_TRANSMISSION_DEG, keys, transmission
 
 if TYPE_CHECKING:
@@ -481,8 +481,11 @@ def key_columns(variants: Sequence[Variant], patterns: Sequence[str], explicit: 
     if explicit:
         for pat in patterns:
             if not any(keys.matches(p, pat) for v in variants for p in v.results):
-                known = ", ".join(list(variants[0].results)[:40]) if variants else ""
-                raise GeomcadError(f"--key {pat}: no result matches it; the results are {known}")
+                names = list(variants[0].results) if variants else []
+                known = ", ".join(names[:12]) + (f" … ({len(names)} in all)" * (len(names) > 12))
+                raise GeomcadError(
+                    f"--key {shorten(pat)}: no result matches it; the results are {known}"
+                )
     if not paths:
         raise GeomcadError("variants: the key is empty (no result matches --key)")
     return paths
