@@ -37,7 +37,8 @@ from geomcad.cli import main
 
 ROOT = Path(__file__).resolve().parents[1]
 FILES = sorted((ROOT / "examples").glob("*.toml"))
-GEOMCAD = shutil.which("geomcad") or "geomcad"
+_BESIDE = Path(sys.executable).with_name("geomcad")  # the venv's console script
+GEOMCAD = str(_BESIDE) if _BESIDE.exists() else shutil.which("geomcad") or "geomcad"
 HANG_SECONDS = 60.0
 
 VALUES: list[object] = [
