@@ -14,7 +14,9 @@ out of precision, 2 bad input. Bad input prints nothing on stdout and exactly on
 ``error: ...``, naming the parameter or the construction step (prefixed with the problem id).
 Anything else that goes wrong is a bug of geomcad's: one line ``error: internal error in STEP:
 TYPE: message (please report)`` and exit status 70 (EX_SOFTWARE), never a traceback
-(``GEOMCAD_TRACEBACK=1`` shows it, for a developer).
+(``GEOMCAD_TRACEBACK=1`` shows it, for a developer). stdout or stderr that cannot be written is
+the OS's reason in one line and exit status 74 (EX_IOERR); SIGINT, SIGTERM and SIGHUP stop a
+command with one line and the status 130, 143 or 129 (:mod:`geomcad.interrupts`).
 """
 
 from __future__ import annotations
@@ -24,6 +26,7 @@ import contextlib
 import json
 import math
 import os
+import re
 import signal
 import sys
 import time
@@ -32,13 +35,15 @@ from pathlib import Path
 from typing import IO, TYPE_CHECKING, Any, NoReturn
 
 import geomcad
-from geomcad import registry
+from geomcad import interrupts, registry
 from geomcad.errors import (
+    QUOTE_CHARS,
     STEP_NOTE,
     GeomcadError,
     MissingDependency,
     ParameterError,
     UnknownProblem,
+    shorten_name,
 )
 
 if TYPE_CHECKING:
@@ -64,16 +69,13 @@ class _Failed(Exception):
     """Bad input, already worded as the text of the ``error:`` line."""
 
 
-class _Terminated(BaseException):
-    """SIGTERM or SIGHUP during a build: unwinds like Ctrl-C, so no temporary file stays."""
+class _StreamError(Exception):
+    """stdout or stderr cannot be written (closed, a full disk, an I/O error): exit status 74."""
 
-    def __init__(self, signum: int) -> None:
-        self.signum = signum
-        super().__init__(signum)
-
-
-def _on_signal(signum: int, frame: object) -> NoReturn:
-    raise _Terminated(signum)
+    def __init__(self, name: str, why: str) -> None:
+        self.name = name
+        self.why = why
+        super().__init__(f"cannot write to {name}: {why}")
 
 
 class _Parser(argparse.ArgumentParser):
@@ -83,8 +85,36 @@ class _Parser(argparse.ArgumentParser):
 
 
 def main(argv: Sequence[str] | None = None) -> int:
-    """Run the command line ``argv`` (default ``sys.argv[1:]``); return the exit status."""
+    """Run the command line ``argv`` (default ``sys.argv[1:]``); return the exit status.
+
+    SIGINT, SIGTERM and SIGHUP stop the command at any moment with one ``error:`` line and the
+    status 130, 143 or 129 (:mod:`geomcad.interrupts`); stdout or stderr that cannot be written
+    gives the OS's reason in one line (when stderr can take it) and the status 74.
+    """
     args = list(sys.argv[1:] if argv is None else argv)
+    old = interrupts.catch()
+    try:
+        try:
+            status = _run(args)
+            _flush(sys.stdout)
+            signum = interrupts.received()
+            if signum is not None:  # its exception was swallowed (a finaliser's)
+                raise interrupts.Interrupted(signum)
+            return status
+        except interrupts.Interrupted as exc:
+            return _stopped(args, exc.signum)
+        except KeyboardInterrupt:
+            return _stopped(args, signal.SIGINT)
+        except _StreamError as exc:
+            return _stream_failed(exc)
+        except BrokenPipeError:
+            _quiet(sys.stdout)
+            return EXIT_OK
+    finally:
+        interrupts.restore(old)
+
+
+def _run(args: list[str]) -> int:
     try:
         ns = _parser(_help_topic(args)).parse_args(args)
     except _UsageError as exc:
@@ -99,33 +129,96 @@ def main(argv: Sequence[str] | None = None) -> int:
         return _internal(argparse.Namespace(command=args[0] if args else "geomcad"), None, exc)
     pid: str | None = getattr(ns, "id", None)
     try:
-        status: int = ns.func(ns)
+        status: int = _call(ns)
     except (_Failed, _UsageError) as exc:
         return _fail(str(exc))
     except UnknownProblem as exc:
         return _fail(str(exc))
     except GeomcadError as exc:
         return _fail(_prefixed(pid, exc))
-    except _Terminated as exc:
-        name = signal.Signals(exc.signum).name
-        _write(
-            sys.stderr,
-            _error_line(
-                f"{ns.command}: stopped by {name}; every file written is "
-                "complete, no partial or temporary file is left"
-            ),
-        )
-        return 128 + exc.signum
+    except _StreamError:
+        raise
     except BrokenPipeError:
         # the reader (e.g. `| head`) went away; keep the interpreter's last flush quiet too
-        with contextlib.suppress(OSError, ValueError):
-            os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        _quiet(sys.stdout)
         return EXIT_OK
+    except OSError as exc:
+        # an OSError that no command caught: stdout or stderr written past a command's back
+        # (a full disk) is the user's trouble, anything else is a bug
+        stream = _failing_stream()
+        if stream is not None:
+            raise _StreamError(stream, exc.strerror or str(exc)) from exc
+        if os.environ.get("GEOMCAD_TRACEBACK"):
+            raise
+        return _internal(ns, pid, exc)
     except Exception as exc:
         if os.environ.get("GEOMCAD_TRACEBACK"):
             raise
         return _internal(ns, pid, exc)
     return status
+
+
+def _call(ns: argparse.Namespace) -> int:
+    """Run the command; an exception that a signal caused (raised inside a C extension's
+    import, which turns it into an ImportError, or a library that wraps it) is the signal's."""
+    try:
+        status: int = ns.func(ns)
+    except Exception:
+        signum = interrupts.received()
+        if signum is not None:
+            raise interrupts.Interrupted(signum) from None
+        raise
+    return status
+
+
+def _stopped(args: Sequence[str], signum: int) -> int:
+    """The line a signal ends a command with; the status 128 + its number."""
+    command = args[0] if args and not args[0].startswith("-") else "geomcad"
+    name = signal.Signals(signum).name
+    with contextlib.suppress(_StreamError):
+        _write(
+            sys.stderr,
+            _error_line(
+                f"{command[:40]}: stopped by {name}; every file written is complete, no partial "
+                "or temporary file is left"
+            ),
+        )
+    return 128 + signum
+
+
+#: sysexits.h's EX_IOERR: an input/output error (stdout or stderr cannot be written).
+EXIT_IO = 74
+
+
+def _stream_failed(exc: _StreamError) -> int:
+    """stdout or stderr failed: say so on stderr when it can take it; exit status 74."""
+    _quiet(sys.stdout)
+    if exc.name != "stderr":
+        with contextlib.suppress(_StreamError):
+            _write(sys.stderr, _error_line(str(exc)))
+    return EXIT_IO
+
+
+def _failing_stream() -> str | None:
+    """``stdout`` or ``stderr`` when it cannot be written (closed, or its buffered text cannot
+    be flushed), else ``None``."""
+    for name, stream in (("stdout", sys.stdout), ("stderr", sys.stderr)):
+        try:
+            _flush(stream)
+        except _StreamError:
+            return name
+    return None
+
+
+def _quiet(stream: IO[str] | None) -> None:
+    """Point the process's own stdout at /dev/null, so that the interpreter's last flush of
+    text that could not be written fails no more (it would print "Exception ignored" and exit
+    120). A stream put in its place (a test's capture) is left alone."""
+    own = sys.__stdout__
+    if own is None or stream is not own:
+        return
+    with contextlib.suppress(OSError, ValueError):
+        os.dup2(os.open(os.devnull, os.O_WRONLY), own.fileno())
 
 
 EXAMPLES = """\
@@ -140,7 +233,8 @@ examples:
 
 ID is a problem id from `geomcad list`, or a file FILE.toml that states a problem.
 exit status: 0 done, 1 (verify) a measurement out of precision, 2 bad input (one error: line),
-70 an internal error of geomcad's (one error: line; please report).
+70 an internal error of geomcad's (one error: line; please report), 74 stdout or stderr cannot be
+written, 130/143/129 stopped by SIGINT/SIGTERM/SIGHUP.
 """
 
 VERIFY_RULES = """\
@@ -177,7 +271,7 @@ def _internal(ns: argparse.Namespace, pid: str | None, exc: Exception) -> int:
     if len(text) > 300:
         text = text[:300] + " …"
     msg = f"internal error in {where}: {type(exc).__name__}: {text} (please report)"
-    with contextlib.suppress(OSError, ValueError):
+    with contextlib.suppress(_StreamError, OSError):
         _write(sys.stderr, _error_line(msg))
     return EXIT_INTERNAL
 
@@ -290,7 +384,9 @@ def _parser(help_for: tuple[str, str] | None = None) -> _Parser:
     )
     _add_set(s)
     s.add_argument("--scale", metavar="K", help="k_l in m/mm for NAME_mm readings")
-    s.add_argument("--json", action="store_true", help="print one JSON object")
+    s.add_argument(
+        "--json", action="store_true", help="print one JSON object (with --batch: the verdicts)"
+    )
     s.add_argument(
         "--batch", metavar="ANSWERS.csv", help="grade a class: the answers.csv of geomcad variants"
     )
@@ -350,9 +446,15 @@ def _title_data(ns: argparse.Namespace) -> tuple[Any, Any]:
 
     given = {dest: getattr(ns, f"tb_{dest}") for _, dest, _ in _TITLE_OPTIONS}
     given["lang"] = ns.lang
-    options = TitleData.from_mapping(
-        {k: v for k, v in given.items() if v is not None}, "title-block option"
-    )
+    try:
+        options = TitleData.from_mapping(
+            {k: v for k, v in given.items() if v is not None}, "title-block option"
+        )
+    except ParameterError as exc:  # named as the command line writes it: --student
+        option = {dest: opt for opt, dest, _ in _TITLE_OPTIONS}.get(exc.name.rpartition(".")[2])
+        if option is None:
+            raise
+        raise ParameterError(option, exc.value, exc.why) from None
     return options, TitleData.from_workdir()
 
 
@@ -583,7 +685,6 @@ def _write_prepared(
 
     out = Path(ns.out)
     missing: MissingDependency | None = None
-    old = _catch_signals()
     try:
         out.mkdir(parents=True, exist_ok=True)
         for pid, sheets in prepared:
@@ -606,8 +707,6 @@ def _write_prepared(
     except OSError as exc:
         where = exc.filename if exc.filename else out
         raise _Failed(f"cannot write to {where}: {exc.strerror or exc}") from exc
-    finally:
-        _restore_signals(old)
     if missing is not None:
         what = "SVG and DXF files" if "dxf" in plain else "SVGs"
         _write(sys.stderr, _error_line(f"{_one_line(str(missing))}; only the {what} were written"))
@@ -654,8 +753,7 @@ def _build_parallel(
     missing, failed, n_sheets = "", "", 0
     done: dict[int, list[Path]] = {}
     shown = 0
-    old = _catch_signals()
-    try:
+    try:  # a signal unwinds through here as geomcad.interrupts.Interrupted: the pool is torn down
         with jobs.bar(len(ids), "problem", "build") as tick, jobs.pool(n_jobs, tick) as run:
             for i, (_stem, n, files, error, lacking) in run.stream(build.build_one, args):
                 if error:
@@ -670,8 +768,6 @@ def _build_parallel(
                     shown += 1
     except OSError as exc:
         raise _Failed(f"cannot write to {out}: {exc.strerror or exc}") from exc
-    finally:
-        _restore_signals(old)
     if failed:
         raise _Failed(failed)
     if missing:
@@ -740,21 +836,6 @@ def _cmd_animate(ns: argparse.Namespace) -> int:
     return EXIT_OK
 
 
-def _catch_signals() -> dict[int, Any]:
-    """SIGTERM and SIGHUP unwind as :class:`_Terminated` (so write_atomic removes its temporary
-    file); returns the handlers they had. Outside the main thread nothing changes."""
-    old: dict[int, Any] = {}
-    with contextlib.suppress(ValueError):
-        for sig in (signal.SIGTERM, signal.SIGHUP):
-            old[sig] = signal.signal(sig, _on_signal)
-    return old
-
-
-def _restore_signals(old: dict[int, Any]) -> None:
-    for sig, handler in old.items():
-        signal.signal(sig, handler)
-
-
 def _cmd_verify(ns: argparse.Namespace) -> int:
     from geomcad.verify import verify
 
@@ -763,6 +844,8 @@ def _cmd_verify(ns: argparse.Namespace) -> int:
 
         scale = None if ns.scale is None else _scale(ns.scale)
         tols = [parse_tol(t) for t in ns.tol]
+        if ns.json:
+            return _batch_json(ns, scale, tols)
         return run_batch(
             ns.batch, ns.id, ns.out, scale, sys.stdout, sys.stderr, tols, ns.lang or "ru"
         )
@@ -777,6 +860,48 @@ def _cmd_verify(ns: argparse.Namespace) -> int:
     else:
         _write(sys.stdout, _verify_report(report))
     return EXIT_OK if report.ok else EXIT_OUT_OF_PRECISION
+
+
+#: The verdict fields that are numbers (the rest are text; ``ok`` is true or false).
+_BATCH_NUMBERS = ("measured", "exact", "deviation", "deviation_mm", "precision")
+
+
+def _batch_json(ns: argparse.Namespace, scale: float | None, tols: Sequence[Any] = ()) -> int:
+    """``verify --batch … --json``: the verdicts as one JSON object (to ``--out`` when given,
+    else stdout), the summary as ``verify --batch`` writes it (stderr, or stdout with --out)."""
+    from geomcad.teach.batch import COLUMNS, grade
+
+    graded = grade(ns.batch, ns.id, scale, tols)
+    verdicts: list[dict[str, Any]] = []
+    for line in graded.lines:
+        v: dict[str, Any] = {c: line.get(c, "") for c in COLUMNS}
+        v["row"] = int(v["row"]) if str(v["row"]).isdecimal() else v["row"]
+        for c in _BATCH_NUMBERS:
+            v[c] = float(v[c]) if v[c] else None
+        v["ok"] = {"yes": True, "no": False}.get(v["ok"])
+        v["error"] = v["error"] or None
+        verdicts.append(v)
+    obj = {
+        "answers": ns.batch,
+        "students": ns.id,
+        "ok": graded.ok,
+        "verdicts": verdicts,
+        "summary": graded.summary,
+    }
+    text = _dumps(obj) + "\n"
+    summary = "\n".join(graded.summary) + "\n"
+    if ns.out is None:
+        _write(sys.stdout, text)
+        _write(sys.stderr, summary)
+    else:
+        from geomcad.render.files import write_atomic
+
+        try:
+            write_atomic(Path(ns.out), text.encode("utf-8"))
+        except OSError as exc:
+            raise _Failed(f"--out {ns.out}: cannot write ({exc.strerror or exc})") from exc
+        _write(sys.stdout, summary + f"verdicts: {ns.out}\n")
+    return EXIT_OK if graded.ok else EXIT_OUT_OF_PRECISION
 
 
 # --- input ------------------------------------------------------------------------------------
@@ -1012,8 +1137,10 @@ def _json_default(obj: object) -> Any:
 
 def _prefixed(pid: str | None, exc: GeomcadError) -> str:
     msg = _one_line(str(exc))
-    if pid and not isinstance(exc, UnknownProblem) and not msg.startswith(f"{pid}:"):
-        return f"{pid}: {msg}"
+    if pid and not isinstance(exc, UnknownProblem):
+        short = shorten_name(pid)
+        if not msg.startswith((f"{pid}:", f"{short}:")):
+            return f"{short}: {msg}"
     return msg
 
 
@@ -1021,20 +1148,72 @@ def _one_line(text: str) -> str:
     return " ".join(text.split())
 
 
+#: An ``error:`` line longer than this has its long quoted values and words cut to their
+#: start (:data:`QUOTE_CHARS`) …
+LONG_ERROR_LINE = 300
+#: … and one still longer than this (characters, the prefix included) keeps its start and its
+#: end (the reason), with "…" for the middle.
+MAX_ERROR_LINE = 400
+
+_N = QUOTE_CHARS + 1
+_LONG_QUOTE = re.compile(rf"""(['"])([^'"]{{{_N}}})[^'"]+\1""")
+_LONG_WORD = re.compile(rf"\S{{{_N}}}\S+")
+
+
 def _error_line(msg: str) -> str:
-    return f"error: {_one_line(msg)}\n"
+    """``error: MSG`` as one line of about :data:`LONG_ERROR_LINE` characters at most: a value
+    an error repeats is quoted by its start (most errors quote at most that much already)."""
+    text = f"error: {_one_line(msg)}"
+    if len(text) > LONG_ERROR_LINE:
+        text = _LONG_QUOTE.sub(lambda m: f"{m[1]}{m[2]}…{m[1]}", text)
+        text = _LONG_WORD.sub(lambda m: m[0][:QUOTE_CHARS] + "…", text)
+    if len(text) > MAX_ERROR_LINE:
+        tail = MAX_ERROR_LINE // 3
+        text = text[: MAX_ERROR_LINE - tail - 3] + " … " + text[-tail:]
+    return text + "\n"
 
 
 def _fail(msg: str) -> int:
-    _write(sys.stderr, _error_line(msg))
+    try:
+        _write(sys.stderr, _error_line(msg))
+    except _StreamError:
+        return EXIT_IO  # the error cannot be told: stderr is closed or full
     return EXIT_BAD_INPUT
 
 
-def _write(stream: IO[str], text: str) -> None:
+def _stream_name(stream: object) -> str:
+    return "stderr" if stream is sys.stderr else "stdout"
+
+
+def _write(stream: IO[str] | None, text: str) -> None:
+    """Write and flush ``text``; a stream that cannot take it is a :class:`_StreamError`
+    (a reader that went away stays a :class:`BrokenPipeError`)."""
+    if stream is None:  # started with the descriptor closed (`>&-`)
+        raise _StreamError(_stream_name(stream), "it is closed")
     try:
-        stream.write(text)
-    except UnicodeEncodeError:
-        # a terminal that cannot show θ or Cyrillic still gets every line (and valid JSON)
-        enc = getattr(stream, "encoding", None) or "ascii"
-        stream.write(text.encode(enc, "backslashreplace").decode(enc))
-    stream.flush()
+        try:
+            stream.write(text)
+        except UnicodeEncodeError:
+            # a terminal that cannot show θ or Cyrillic still gets every line (and valid JSON)
+            enc = getattr(stream, "encoding", None) or "ascii"
+            stream.write(text.encode(enc, "backslashreplace").decode(enc))
+    except BrokenPipeError:
+        raise
+    except (OSError, ValueError) as exc:  # ValueError: the stream was closed
+        raise _StreamError(_stream_name(stream), _os_reason(exc)) from exc
+    _flush(stream)
+
+
+def _flush(stream: IO[str] | None) -> None:
+    if stream is None:
+        raise _StreamError(_stream_name(stream), "it is closed")
+    try:
+        stream.flush()
+    except BrokenPipeError:
+        raise
+    except (OSError, ValueError) as exc:
+        raise _StreamError(_stream_name(stream), _os_reason(exc)) from exc
+
+
+def _os_reason(exc: Exception) -> str:
+    return (exc.strerror if isinstance(exc, OSError) else None) or str(exc) or type(exc).__name__

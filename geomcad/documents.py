@@ -23,6 +23,7 @@ a TOML value (a number, a string with or without quotes, ``true``/``false``, an 
 from __future__ import annotations
 
 import math
+import sys
 import tomllib
 from collections.abc import Callable, Sequence
 from functools import cache
@@ -51,22 +52,27 @@ def is_file_id(pid: str) -> bool:
 
 
 def read(pid: str) -> dict[str, Any]:
-    """The file's TOML data; a missing file or a syntax error is a :class:`ParameterError`."""
+    """The file's TOML data (UTF-8, a byte-order mark allowed); a missing file, a syntax error
+    or data nested deeper than :data:`MAX_DEPTH` is a :class:`FileKeyError` naming the file."""
     path = Path(pid)
     try:
-        text = path.read_bytes().decode("utf-8")
+        text = path.read_bytes().decode("utf-8-sig")  # a byte-order mark, if any, is dropped
     except FileNotFoundError:
-        raise ParameterError(pid, "", "no such file") from None
+        raise FileKeyError(pid, "", "no such file") from None
     except IsADirectoryError:
-        raise ParameterError(pid, "", "is a folder, not a file") from None
+        raise FileKeyError(pid, "", "is a folder, not a file") from None
     except UnicodeDecodeError as exc:
-        raise ParameterError(pid, "", f"is not UTF-8 text ({exc.reason})") from None
+        raise FileKeyError(pid, "", f"is not UTF-8 text ({exc.reason})") from None
     except OSError as exc:
-        raise ParameterError(pid, "", f"cannot be read ({exc.strerror or exc})") from None
+        raise FileKeyError(pid, "", f"cannot be read ({exc.strerror or exc})") from None
     try:
         return tomllib.loads(text)
+    except RecursionError:  # tomllib reads nested arrays and inline tables recursively
+        raise FileKeyError(pid, "", TOO_DEEP) from None
     except tomllib.TOMLDecodeError as exc:
-        raise ParameterError(pid, "", f"is not valid TOML: {exc}") from None
+        raise FileKeyError(pid, "", f"is not valid TOML: {exc}") from None
+    except ValueError:  # Python reads no integer of over 4300 digits
+        raise FileKeyError(pid, "", f"is not valid TOML: {HUGE_INTEGER}") from None
 
 
 def parse_value(text: str) -> Any:
@@ -74,7 +80,9 @@ def parse_value(text: str) -> Any:
     t = text.strip()
     try:
         value = tomllib.loads(f"v = {t}")["v"]
-    except tomllib.TOMLDecodeError:
+    except RecursionError:
+        raise ParameterError(t, text, TOO_DEEP) from None
+    except ValueError:  # TOMLDecodeError, or an integer of over 4300 digits
         if t.count(",") == 1 and "." not in t:  # a decimal comma
             try:
                 return float(t.replace(",", "."))
@@ -151,19 +159,35 @@ def load(pid: str, sets: Sequence[tuple[str, str]] = ()) -> Problem[Any]:
 #: TOML's integers are 64-bit (the specification); :mod:`tomllib` reads longer ones too.
 INT_MIN, INT_MAX = -(2**63), 2**63 - 1
 
+HUGE_INTEGER = f"an integer of over {sys.get_int_max_str_digits()} digits"
+
+#: The deepest nesting of tables and arrays a file may have (a linkage file needs 4).
+MAX_DEPTH = 32
+TOO_DEEP = f"is nested too deeply: a file's tables and arrays go at most {MAX_DEPTH} levels deep"
+
 
 def check_integers(node: object, path: str = "") -> None:
     """Refuse an integer outside TOML's 64-bit range anywhere in the data (it would overflow
-    the float it is read as): a :class:`FileKeyError` naming its key."""
-    if isinstance(node, dict):
-        for k, v in node.items():
-            check_integers(v, f"{path}.{k}" if path else str(k))
-    elif isinstance(node, list):
-        for i, v in enumerate(node, start=1):
-            check_integers(v, f"{path}.{i}")
-    elif isinstance(node, int) and not isinstance(node, bool) and not INT_MIN <= node <= INT_MAX:
-        digits = len(str(abs(node)))
-        raise FileKeyError(path, "", f"a whole number of {digits} digits is beyond TOML's 64 bits")
+    the float it is read as), and tables or arrays nested deeper than :data:`MAX_DEPTH`: a
+    :class:`FileKeyError` naming its key. The walk keeps its own stack (no recursion)."""
+    stack: list[tuple[object, str, int]] = [(node, path, 0)]
+    while stack:
+        item, where, depth = stack.pop()
+        if isinstance(item, dict | list):
+            if depth > MAX_DEPTH:
+                raise FileKeyError(where.split(".", 1)[0], "", TOO_DEEP)
+            pairs = item.items() if isinstance(item, dict) else enumerate(item, start=1)
+            # in the file's order: the first bad key is the one named
+            stack += reversed(
+                [(v, f"{where}.{k}" if where else str(k), depth + 1) for k, v in pairs]
+            )
+        elif (
+            isinstance(item, int) and not isinstance(item, bool) and not INT_MIN <= item <= INT_MAX
+        ):
+            digits = len(str(abs(item))) if abs(item) < 10**4000 else "thousands of"
+            raise FileKeyError(
+                where, "", f"a whole number of {digits} digits is beyond TOML's 64 bits"
+            )
 
 
 def from_data(pid: str, data: dict[str, Any]) -> Problem[Any]:

@@ -8,6 +8,53 @@ turns any of them into one ``error:`` line and exit status 2.
 
 from __future__ import annotations
 
+#: The most of a bad value (or of a name) an error message quotes, in characters: a 5 MB
+#: string given as a parameter is named by its start, not repeated.
+QUOTE_CHARS = 60
+
+
+def shorten(text: str, limit: int = QUOTE_CHARS) -> str:
+    """``text``, or its first ``limit`` characters and "…" when it is longer.
+
+    >>> shorten("x" * 100, 5)
+    'xxxxx…'
+    """
+    return text if len(text) <= limit else text[:limit] + "…"
+
+
+def shorten_name(name: str, limit: int = QUOTE_CHARS) -> str:
+    """A name for an error message: a file's path keeps its end (the file's own name), anything
+    else its start (:func:`shorten`).
+
+    >>> shorten_name("/tmp/" + "d" * 80 + "/mech.toml", 16)
+    '…dddddd/mech.toml'
+    """
+    if len(name) > limit and ("/" in name or name.lower().endswith(".toml")):
+        return "…" + name[len(name) - limit :]
+    return shorten(name, limit)
+
+
+def quote(value: object, limit: int = QUOTE_CHARS) -> str:
+    """``repr(value)`` for an error message, at most about ``limit`` characters of it: a long
+    string or a deeply nested list is quoted by its start (``reprlib`` bounds the nesting).
+
+    >>> quote("abc")
+    "'abc'"
+    >>> quote("y" * 100, 8)
+    "'yyyyyyy…"
+    >>> quote([[[[[[1]]]]]], 20)
+    '[[[[[...]]]]]'
+    """
+    if isinstance(value, str):
+        return shorten(repr(value[: limit + 1]), limit)
+    import reprlib
+
+    r = reprlib.Repr()
+    r.maxlevel = 4
+    r.maxstring = r.maxother = r.maxlong = limit
+    return shorten(r.repr(value), limit)
+
+
 #: The prefix of the note that a solve adds to an unexpected exception (not a GeomcadError): the
 #: step that was running, which the CLI's "internal error in STEP" line quotes.
 STEP_NOTE = "geomcad step: "
@@ -28,7 +75,7 @@ class ParameterError(GeomcadError):
         self.name = name
         self.value = value
         self.why = why
-        super().__init__(f"parameter {name} = {value!r}: {why}")
+        super().__init__(f"parameter {shorten_name(name)} = {quote(value)}: {why}")
 
 
 class ConstructionError(GeomcadError):
@@ -74,7 +121,7 @@ class FileKeyError(ParameterError):
 
     def __init__(self, key: str, value: object, why: str) -> None:
         super().__init__(key, value, why)
-        self.args = (f"{key}: {why}",)
+        self.args = (f"{shorten_name(key)}: {why}",)
 
     def __str__(self) -> str:
-        return f"{self.name}: {self.why}"
+        return f"{shorten_name(self.name)}: {self.why}"

@@ -1,5 +1,6 @@
-"""Fuzzing every problem's parameters and mutated example files (linkage, cam and gear files):
-a result with only finite numbers, or a GeomcadError.
+"""Fuzzing every problem's parameters, mutated example files (linkage, cam and gear files), the
+arguments of ``variants`` and ``verify --batch``, and signals at any moment of a command: a result
+with only finite numbers, or a GeomcadError (one clean ``error:`` line at the command line).
 
 Never another exception, never a warning, never a hang: each call must answer within
 :data:`CALL_SECONDS` (an alarm stops a call that does not). The values mix the ordinary (a
@@ -15,9 +16,13 @@ from __future__ import annotations
 
 import copy
 import io
+import json
 import math
 import os
 import signal
+import subprocess
+import sys
+import tempfile
 import time
 import tomllib
 import warnings
@@ -33,8 +38,9 @@ from hypothesis import strategies as st
 
 import geomcad
 from geomcad import registry
-from geomcad.cli import main
+from geomcad.cli import MAX_ERROR_LINE, main
 from geomcad.problem import Param
+from geomcad.render.files import TEMP_NAME
 
 IDS = registry.problem_ids()
 EXAMPLES = int(os.environ.get("GEOMCAD_FUZZ_EXAMPLES", "40"))
@@ -229,7 +235,7 @@ def test_the_cli_takes_any_text_without_a_traceback(
 
 FILES = sorted((Path(__file__).resolve().parents[1] / "examples").glob("*.toml"))
 FILE_VALUES: list[object] = [
-    *(v for v in HOSTILE if not (isinstance(v, float) and not math.isfinite(v)) and v is not None),
+    *(v for v in HOSTILE if v is not None),  # TOML writes inf and nan too
     -1,
     0,
     1e-9,
@@ -239,6 +245,9 @@ FILE_VALUES: list[object] = [
     "O",
     "x",
     "",
+    "E💥",  # a character the sheet font lacks
+    "a_{b",  # label markup left open
+    "\t",
     [0.0, 0.0],
     [1e308, 0.0],
     [1, 2, 3],
@@ -313,3 +322,204 @@ def test_mutated_files_give_a_finite_result_or_a_geomcad_error(
         finally:
             elapsed = time.monotonic() - start
         assert elapsed < CALL_SECONDS
+
+
+# --- variants and verify --batch: their arguments, a class's CSV ----------------------------------
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+def _cli(argv: list[str]) -> tuple[int, str, str]:
+    """``main(argv)`` under the time bound, warnings as errors: its status, stdout, stderr."""
+    out_io, err_io = io.StringIO(), io.StringIO()
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        with _time_bound(CALL_SECONDS), redirect_stdout(out_io), redirect_stderr(err_io):
+            code = main(argv)
+    return code, out_io.getvalue(), err_io.getvalue()
+
+
+def _clean(argv: list[str], code: int, out: str, err: str, results: tuple[int, ...]) -> None:
+    assert code in (*results, 2), (argv, code, err[-2000:])
+    if code == 2:
+        assert err.startswith("error: ") and err.count("\n") == 1, (argv, err[-2000:])
+        assert len(err) <= MAX_ERROR_LINE + 1, (argv, len(err))
+
+
+ARG_TEXTS = st.one_of(
+    st.sampled_from(
+        ["0", "1", "2", "-1", "3", "1e9", "9" * 30, "nan", "", " ", "x", "😀", "1,5", "0.5", "-0"]
+    ),
+    st.text(max_size=8),
+)
+VARY_TEXTS = st.one_of(
+    st.sampled_from(
+        [
+            "K=1.2..1.6:0.05",
+            "K=1.2..1.6",
+            "K=1.6..1.2",
+            "K=1.2..1.6:1e-300",
+            "K=1.2..1.6:0",
+            "K=1.2..1.6:-0.1",
+            "K=1e999999999..2e999999999",
+            "K=a|b|b",
+            "K=1.3|1.5",
+            "H=0.1..0.2:0.01",
+            "nope=1..2",
+            "K=..",
+            "=1..2",
+            "K=nan..inf",
+            "K=1.2..1.6:1e-12",
+        ]
+    ),
+    st.builds(lambda k, t: f"{k}={t}", st.sampled_from(["K", "H", "l3"]), st.text(max_size=10)),
+)
+
+
+#: A run that works, option by option; the fuzz spoils one or two of them.
+GOOD_VARIANTS = {
+    "template": "2013-6",
+    "--count": "2",
+    "--seed": "7",
+    "--vary": "K=1.2..1.6:0.05",
+    "--set": "H=0.2",
+    "--min-transmission-deg": "0",
+    "--key": "theta_deg,l1",
+    "--course": "ТММ",
+    "--jobs": "1",
+    "--format": "svg",
+}
+BAD_VARIANTS: dict[str, st.SearchStrategy[str]] = {
+    "template": st.sampled_from(["2013-1", "nope", "x.toml", "", "-"]),
+    "--count": st.sampled_from(["0", "-1", "x", "1", "1001", "9" * 30]),
+    "--seed": ARG_TEXTS,
+    "--vary": VARY_TEXTS,
+    "--set": st.sampled_from(["K=0", "K=", "=", "H=1e308", "x", "K=nan", "H=😀"]),
+    "--min-transmission-deg": ARG_TEXTS,
+    "--key": st.sampled_from(["*", "nope", ",", "", "r.*", "😀"]),
+    "--course": ARG_TEXTS,
+    "--jobs": st.sampled_from(["0", "-1", "100000", "x", "2"]),
+    "--format": st.sampled_from(["pdf", "x", "", "svg,svg", "SVG"]),
+}
+
+
+@st.composite
+def _variants_argv(draw: st.DrawFn) -> list[str]:
+    spoilt = draw(st.lists(st.sampled_from(sorted(GOOD_VARIANTS)), max_size=2, unique=True))
+    values = {k: draw(BAD_VARIANTS[k]) if k in spoilt else v for k, v in GOOD_VARIANTS.items()}
+    argv = ["variants", values.pop("template")]
+    for option, value in values.items():
+        argv += [option, value]
+    return argv
+
+
+@settings(
+    max_examples=max(EXAMPLES // 3, 10),
+    deadline=None,
+    suppress_health_check=[HealthCheck.too_slow, HealthCheck.function_scoped_fixture],
+)
+@given(argv=_variants_argv())
+def test_variants_takes_any_arguments(argv: list[str], tmp_path: Path) -> None:
+    out = tmp_path / "v"
+    code, _, err = _cli([*argv, "--out", str(out)])
+    _clean(argv, code, "", err, (0,))
+    if code == 0:
+        assert (out / "answers.csv").is_file()
+
+
+_ANSWERS: list[Path] = []
+
+
+def _answers() -> Path:
+    """An answers.csv of ``geomcad variants`` (made once per session)."""
+    if not _ANSWERS:
+        folder = Path(tempfile.mkdtemp(prefix="geomcad-fuzz-")) / "v"
+        argv = ["variants", "2013-6", "--count", "2", "--seed", "1", "--out", str(folder)]
+        code, _, err = _cli([*argv, "--vary", "K=1.2..1.6:0.05", "--format", "svg"])
+        assert code == 0, err
+        _ANSWERS.append(folder / "answers.csv")
+    return _ANSWERS[0]
+
+
+CELLS = st.one_of(
+    st.sampled_from(["", "1", "2", "01", "3", "30", "0,03", "nan", "inf", "-1e308", "9" * 400]),
+    st.text(max_size=6),
+)
+
+
+@st.composite
+def _class_csv(draw: st.DrawFn) -> str:
+    sep = draw(st.sampled_from([",", ";", "\t"]))
+    head = draw(
+        st.lists(
+            st.sampled_from(["student", "variant", "theta_deg", "l1", "O1B1_mm", "nope", "", "x"]),
+            min_size=1,
+            max_size=6,
+        )
+    )
+    rows = draw(st.lists(st.lists(CELLS, max_size=7), max_size=4))
+    return "\n".join(sep.join(r) for r in [head, *rows]) + "\n"
+
+
+@settings(
+    max_examples=max(EXAMPLES // 2, 10),
+    deadline=None,
+    suppress_health_check=[HealthCheck.too_slow, HealthCheck.function_scoped_fixture],
+)
+@given(
+    text=_class_csv(),
+    raw=st.sampled_from([None, b"\xff\xfe\x00", b"\xef\xbb\xbf", b"", b"a\x00b"]),
+    extra=st.lists(
+        st.sampled_from(["--json", "--scale", "0.002", "--scale", "nan", "--out", "OUT"]),
+        max_size=3,
+    ),
+)
+def test_verify_batch_takes_any_class_csv(
+    text: str, raw: bytes | None, extra: list[str], tmp_path: Path
+) -> None:
+    students = tmp_path / "class.csv"
+    data = text.encode("utf-8")
+    students.write_bytes(data if raw is None else raw + data)
+    extra = [str(tmp_path / "verdicts") if a == "OUT" else a for a in extra]
+    argv = ["verify", str(students), "--batch", str(_answers()), *extra]
+    code, out, err = _cli(argv)
+    _clean(argv, code, out, err, (0, 1))
+    if code in (0, 1) and "--json" in argv and "--out" not in argv:
+        assert isinstance(json.loads(out)["verdicts"], list)
+
+
+# --- signals at any moment: one line, 128 + the signal, nothing partial ---------------------------
+
+
+@settings(max_examples=3, deadline=None)
+@given(
+    sig=st.sampled_from([signal.SIGINT, signal.SIGTERM, signal.SIGHUP]),
+    delay=st.floats(0.4, 3.0),
+    argv=st.sampled_from(
+        [
+            ["build", "2013-3", "--format", "svg,pdf,png"],
+            ["build", str(ROOT / "examples" / "four-bar.toml"), "--format", "svg,pdf"],
+            ["variants", "2013-6", "--count", "3", "--seed", "1", "--vary", "K=1.2..1.6:0.05"],
+            ["animate", "kulisa-23110713", "--frames", "600"],
+        ]
+    ),
+)
+def test_a_signal_at_any_moment(sig: int, delay: float, argv: list[str]) -> None:
+    with tempfile.TemporaryDirectory(prefix="geomcad-sig-") as tmp:
+        out = Path(tmp) / "out"
+        proc = subprocess.Popen(
+            [sys.executable, "-m", "geomcad", *argv, "--out", str(out)],
+            stdout=subprocess.PIPE,
+            stderr=subprocess.PIPE,
+            text=True,
+        )
+        time.sleep(delay)
+        proc.send_signal(sig)
+        _, err = proc.communicate(timeout=120)
+        assert "Traceback" not in err and "Exception ignored" not in err, err
+        # 0: done before the signal; -sig: done, and the interpreter was ending
+        if proc.returncode not in (0, -sig) or "error:" in err:
+            assert proc.returncode == 128 + sig, err
+            assert err.count("\n") == 1 and f"stopped by {signal.Signals(sig).name}" in err
+        left = [n for n in (os.listdir(out) if out.exists() else []) if TEMP_NAME.match(n)]
+        assert not left, left

@@ -22,6 +22,7 @@ import pytest
 ROOT = Path(__file__).resolve().parents[1] / "geomcad"
 LEVEL = {
     "errors": 0,
+    "interrupts": 0,
     "tol": 0,
     "units": 0,
     "geom": 1,

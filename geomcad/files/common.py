@@ -76,7 +76,12 @@ class Table:
             if default is None:
                 raise ParameterError(self.key(name), "missing", "this key is required")
             return default
-        if isinstance(v, bool) or not isinstance(v, int | float) or v != int(v):
+        if (
+            isinstance(v, bool)
+            or not isinstance(v, int | float)
+            or not math.isfinite(v)  # inf has no int(); NaN ≠ itself
+            or v != int(v)
+        ):
             raise ParameterError(self.key(name), v, "must be a whole number")
         if not ge <= int(v) <= le:
             raise ParameterError(self.key(name), v, f"must lie between {ge} and {le}")

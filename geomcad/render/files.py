@@ -19,6 +19,7 @@ import uuid
 from collections.abc import Callable, Sequence
 from pathlib import Path
 
+from geomcad import interrupts
 from geomcad.errors import ParameterError
 from geomcad.render.raster import to_pdf, to_png
 from geomcad.render.svg import to_svg
@@ -105,6 +106,7 @@ def write_atomic(path: Path, data: bytes) -> None:
     The temporary file lives in the same directory (``os.replace`` is atomic only within one
     file system) and is removed if anything fails before the rename.
     """
+    interrupts.check()  # a signal whose exception was swallowed: no new file
     tmp = path.with_name(f".{path.name}.{os.getpid()}-{uuid.uuid4().hex[:12]}.tmp")
     # The file is created inside the ``try``: a signal that arrives as soon as it exists (and is
     # raised at the next bytecode) still removes it. O_EXCL: never write through someone else's

@@ -20,6 +20,7 @@ from importlib import resources
 from pathlib import Path
 from types import ModuleType
 
+from geomcad import interrupts
 from geomcad.errors import MissingDependency
 
 #: The one line a user sees when libcairo is missing (``geomcad build`` adds that it wrote the
@@ -72,7 +73,9 @@ def to_pdf(svg: str) -> bytes:
     offsets stay right): the same sheet gives the same bytes.
     """
     cairosvg = _cairosvg()
-    pdf = bytes(cairosvg.svg2pdf(bytestring=svg.encode("utf-8")))
+    # cairo writes through a Python callback, where a signal's exception would be lost
+    with interrupts.deferred():
+        pdf = bytes(cairosvg.svg2pdf(bytestring=svg.encode("utf-8")))
     return _CREATION_DATE.sub(_EPOCH_DATE, pdf, count=1)
 
 
@@ -80,7 +83,10 @@ def to_png(svg: str, dpi: int = 150) -> bytes:
     """The SVG as a PNG at ``dpi`` pixels per inch, on a white background, with its resolution
     recorded (a pHYs chunk), so that it prints at the sheet's true size."""
     cairosvg = _cairosvg()
-    png = bytes(cairosvg.svg2png(bytestring=svg.encode("utf-8"), dpi=dpi, background_color="white"))
+    with interrupts.deferred():  # as in to_pdf
+        png = bytes(
+            cairosvg.svg2png(bytestring=svg.encode("utf-8"), dpi=dpi, background_color="white")
+        )
     return with_resolution(png, dpi)
 
 

@@ -21,7 +21,7 @@ from dataclasses import dataclass, field, replace
 from geomcad.errors import ParameterError
 from geomcad.sheet.lang import Lang, Words, current
 from geomcad.sheet.model import XY, Polyline, Sheet, TextItem
-from geomcad.sheet.text import HEIGHTS, box, literal, metrics, parse
+from geomcad.sheet.text import HEIGHTS, box, escape, metrics, parse
 from geomcad.sheet.titleblock import STUDENT_STAGE, TitleData
 
 #: Paper sizes (short side, long side) in mm.
@@ -82,22 +82,23 @@ class TitleBlock:
     def with_user(self, data: TitleData) -> TitleBlock:
         """This block with the user's data: their designation (one for the whole document)
         replaces the sheet module's, their people and places fill the empty cells."""
+        # the user's words are plain text, not label markup (a name may hold an underscore)
         return replace(
             self,
-            designation=data.designation or self.designation,
-            developer=data.student or self.developer,
-            checker=data.checker or self.checker,
-            tcontrol=data.tcontrol or self.tcontrol,
-            ncontrol=data.ncontrol or self.ncontrol,
-            approver=data.approver or self.approver,
-            organisation=data.org or self.organisation,
-            group=data.group or self.group,
-            date=data.date or self.date,
-            revision=data.revision or self.revision,
+            designation=escape(data.designation) or self.designation,
+            developer=escape(data.student) or self.developer,
+            checker=escape(data.checker) or self.checker,
+            tcontrol=escape(data.tcontrol) or self.tcontrol,
+            ncontrol=escape(data.ncontrol) or self.ncontrol,
+            approver=escape(data.approver) or self.approver,
+            organisation=escape(data.org) or self.organisation,
+            group=escape(data.group) or self.group,
+            date=escape(data.date) or self.date,
+            revision=escape(data.revision) or self.revision,
             # Лит. "У" is a Russian letter: an English sheet (its document status) takes only a
             # stage given to it in other words
             stage=self.stage
-            or (data.stage if self.lang == "ru" or data.stage != STUDENT_STAGE else ""),
+            or (escape(data.stage) if self.lang == "ru" or data.stage != STUDENT_STAGE else ""),
         )
 
 
@@ -154,7 +155,7 @@ def fill_title_blocks(sheets: list[Sheet], data: TitleData | None = None) -> Non
     blocks = [s.block for s in sheets if s.block is not None]
     if not blocks:
         return
-    designation = data.designation or blocks[0].designation
+    designation = escape(data.designation) or blocks[0].designation  # plain text, as with_user
     n = len(blocks)
     i = 0
     for sheet in sheets:
@@ -198,7 +199,7 @@ def _text26(sheet: Sheet, x0: float, y0: float, designation: str) -> None:
         return
     cx, cy = (x0 + x1) / 2.0, (y0 + y1) / 2.0
     for hh in (*(hh for hh in reversed(HEIGHTS) if hh <= 5.0), SMALLEST_HEIGHT):
-        runs = parse(literal(designation))
+        runs = parse(designation)
         w, _, _ = box(runs, hh)
         if w <= G26_WIDTH - 2.0:
             # turned 180° about its baseline's left end: the text runs leftwards, above it
@@ -280,11 +281,13 @@ def _split(words: list[str], n: int) -> list[str]:
     target = total / n
     lines: list[str] = []
     cur: list[str] = []
+    length = 0  # of " ".join(cur), kept as words are added (a long text stays linear)
     for w in words:
-        if cur and len(" ".join([*cur, w])) > target and len(lines) < n - 1:
+        if cur and length + 1 + len(w) > target and len(lines) < n - 1:
             lines.append(" ".join(cur))
-            cur = [w]
+            cur, length = [w], len(w)
         else:
+            length += (1 if cur else 0) + len(w)
             cur.append(w)
     lines.append(" ".join(cur))
     return lines
@@ -367,7 +370,7 @@ def _title_fill(sheet: Sheet, bx: float, by: float, tb: TitleBlock) -> None:
     for row, (name, key) in enumerate(people):
         if name:
             c = cell(17, 25 - 5 * row, 40, 30 - 5 * row)
-            fit_text(sheet, literal(name), c, small, anchor="left", param=key)
+            fit_text(sheet, name, c, small, anchor="left", param=key)
     if tb.date:
         fit_text(sheet, short_date(tb.date), cell(55, 25, 65, 30), small, param="date")
     if tb.stage:
@@ -376,17 +379,17 @@ def _title_fill(sheet: Sheet, bx: float, by: float, tb: TitleBlock) -> None:
     fit_text(sheet, f"{cap['sheets']} {tb.sheets}", cell(155, 15, 185, 20), small)
     if tb.scale:
         fit_text(sheet, tb.scale, cell(167, 20, 185, 35), 5.0)
-    fit_text(sheet, literal(tb.designation), cell(65, 40, 185, 55), 7.0, param="designation")
+    fit_text(sheet, tb.designation, cell(65, 40, 185, 55), 7.0, param="designation")
     fit_text(sheet, tb.title, cell(65, 15, 135, 40), 5.0)
     if tb.material:
         fit_text(sheet, tb.material, cell(65, 0, 135, 15), 5.0)
     # графа 9: the organisation, and under it the student's group
     if tb.organisation and tb.group:
-        fit_text(sheet, literal(tb.organisation), cell(135, 6, 185, 15), 3.5, param="org")
-        fit_text(sheet, literal(tb.group), cell(135, 0, 185, 6), 2.5, param="group")
+        fit_text(sheet, tb.organisation, cell(135, 6, 185, 15), 3.5, param="org")
+        fit_text(sheet, tb.group, cell(135, 0, 185, 6), 2.5, param="group")
     elif tb.organisation or tb.group:
         key = "org" if tb.organisation else "group"
-        fit_text(sheet, literal(tb.organisation or tb.group), cell(135, 0, 185, 15), 3.5, param=key)
+        fit_text(sheet, tb.organisation or tb.group, cell(135, 0, 185, 15), 3.5, param=key)
 
 
 #: ISO 7200's data fields on the English block: (caption key, x0, y0, x1, y1) in mm from the
@@ -448,7 +451,7 @@ def _iso_fill(sheet: Sheet, bx: float, by: float, tb: TitleBlock) -> None:
         "iso_type": (cap["iso_type_value"], 2.5, "document type"),
         "iso_title": (tb.title, 5.0, "title"),
         "iso_status": (tb.stage, 2.5, "stage"),
-        "iso_id": (literal(tb.designation), 5.0, "designation"),
+        "iso_id": (tb.designation, 5.0, "designation"),
         "iso_scale": (tb.scale, 3.5, "scale"),
         "iso_format": (sheet.format, 3.5, "format"),
         "iso_rev": (tb.revision, 3.5, "revision"),

@@ -7,7 +7,11 @@ kerning. A cap height (GOST 2.304: 2.5, 3.5, 5, 7, 10, 14 mm) becomes a font siz
 font's own cap-height/em.
 
 Label markup: ``O_1``, ``V_{B3B2}`` (subscript), ``x^2`` (superscript); ``\\_`` is a literal
-underscore. A character the font lacks is an error at drawing time, never an empty box.
+underscore. A character the font lacks is bad input (a :class:`~geomcad.errors.GeomcadError`
+naming the character and the text) at drawing time, never an empty box: an ESKD sheet is lettered
+in its one font (GOST 2.304), and a fallback font would put a different letter shape on it. The
+user's own words (a title block's names) are checked as they are read (:func:`lacking`) and
+written as plain text (:func:`escape`), never as markup.
 """
 
 from __future__ import annotations
@@ -18,6 +22,7 @@ from functools import cache
 from importlib import resources
 from pathlib import Path
 
+from geomcad.errors import GeomcadError, quote
 from geomcad.sheet.model import Run, Shift, TextItem
 
 FONT_FAMILY = "osifont"
@@ -56,14 +61,40 @@ class FontMetrics:
         return cap_height_mm * self.units_per_em / self.cap_height
 
     def advance(self, text: str, font_size: float) -> float:
-        """The advance width (mm) of ``text`` set at ``font_size`` mm; no kerning."""
-        missing = [c for c in text if ord(c) not in self.widths]
-        if missing:
-            raise ValueError(
-                f"the sheet font {FONT_FAMILY} has no glyph for {''.join(sorted(set(missing)))!r}"
-                f" in {text!r}: draw it as geometry or write it with other characters"
-            )
+        """The advance width (mm) of ``text`` set at ``font_size`` mm; no kerning. A character
+        the font lacks is a :class:`~geomcad.errors.GeomcadError` naming it and the text."""
+        if any(ord(c) not in self.widths for c in text):
+            raise GeomcadError(f"the text {quote(text)} {no_glyph(text)}")
         return sum(self.widths[ord(c)] for c in text) * font_size / self.units_per_em
+
+
+def lacking(text: str) -> str:
+    """The characters of ``text`` (as a label writes them) that the sheet font has no glyph
+    for, each once, in order; ``""`` when it has them all."""
+    widths = metrics().widths
+    out = ""
+    for c in text:
+        c = SUBSTITUTE.get(c, c)
+        if ord(c[0]) not in widths and c not in out:
+            out += c
+    return out
+
+
+def no_glyph(text: str) -> str:
+    """The words for ``text``'s characters that the sheet font lacks (see :func:`lacking`)."""
+    chars = lacking(text)
+    shown = ", ".join(f"{c!r} (U+{ord(c):04X})" for c in chars[:5])
+    more = f" and {len(chars) - 5} more" if len(chars) > 5 else ""
+    return (
+        f"has {'a character' if len(chars) == 1 else 'characters'} the sheet font "
+        f"{FONT_FAMILY} lacks: {shown}{more}; an ESKD sheet is lettered in its one font, so "
+        "write it with other characters"
+    )
+
+
+def escape(text: str) -> str:
+    """``text`` as label markup that draws it as it is (``_``, ``^`` and ``\\`` escaped)."""
+    return "".join("\\" + c if c in "\\_^" else c for c in text)
 
 
 @cache
@@ -117,7 +148,7 @@ def parse(markup: str) -> tuple[Run, ...]:
             if markup[i + 1] == "{":
                 end = markup.find("}", i + 2)
                 if end < 0:
-                    raise ValueError(f"unclosed brace in label {markup!r}")
+                    raise GeomcadError(f"the label {quote(markup)} has an unclosed brace")
                 buf.extend(markup[i + 2 : end])
                 i = end + 1
             else:

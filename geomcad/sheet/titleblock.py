@@ -23,7 +23,7 @@ from contextvars import ContextVar
 from dataclasses import dataclass, fields, replace
 from pathlib import Path
 
-from geomcad.errors import ParameterError
+from geomcad.errors import FileKeyError, ParameterError
 from geomcad.sheet.lang import LANGS, Words, check_lang
 
 #: The file in the working directory whose ``[sheet]`` table ``geomcad build`` reads.
@@ -99,14 +99,19 @@ class TitleData:
     @classmethod
     def from_toml(cls, path: Path) -> TitleData:
         """The ``[sheet]`` table of a TOML file (no table: no data). A file that is not TOML is a
-        :class:`~geomcad.errors.ParameterError` naming the file."""
+        :class:`~geomcad.errors.FileKeyError` naming the file."""
+        here = path.parent.resolve() == Path.cwd().resolve()
+        name = path.name if here else str(path)  # errors name a file of the working directory
         try:
-            with path.open("rb") as f:
-                doc = tomllib.load(f)
-        except tomllib.TOMLDecodeError as exc:
-            raise ParameterError(str(path), "", f"is not valid TOML: {exc}") from None
+            doc = tomllib.loads(path.read_bytes().decode("utf-8-sig"))  # a BOM is dropped
+        except UnicodeDecodeError as exc:
+            raise FileKeyError(name, "", f"is not UTF-8 text ({exc.reason})") from None
+        except RecursionError:  # tomllib reads nested arrays recursively
+            raise FileKeyError(name, "", "is not valid TOML: nested too deeply") from None
+        except ValueError as exc:  # TOMLDecodeError, or an integer of over 4300 digits
+            raise FileKeyError(name, "", f"is not valid TOML: {exc}") from None
         except OSError as exc:
-            raise ParameterError(str(path), "", f"cannot be read: {exc.strerror or exc}") from None
+            raise FileKeyError(name, "", f"cannot be read: {exc.strerror or exc}") from None
         table = doc.get("sheet")
         if table is None:
             return cls()
@@ -132,6 +137,12 @@ class TitleData:
         )
 
 
+#: The longest text a title-block field takes (the widest cell, графа 2, holds about 40
+#: characters at the smallest GOST height on two lines; the rest is refused by
+#: :func:`~geomcad.sheet.frame.fit_text` as not fitting).
+MAX_TEXT = 200
+
+
 def _text(key: str, value: object) -> str:
     if isinstance(value, _dt.datetime):
         value = value.date()
@@ -140,6 +151,16 @@ def _text(key: str, value: object) -> str:
     if isinstance(value, str):
         if "\n" in value:
             raise ParameterError(key, value, "must be one line of text")
+        if len(value) > MAX_TEXT:
+            raise ParameterError(
+                key,
+                value,
+                f"is {len(value)} characters long: a title-block cell holds at most {MAX_TEXT}",
+            )
+        from geomcad.sheet.text import lacking, no_glyph
+
+        if lacking(value.strip()):
+            raise ParameterError(key, value, no_glyph(value.strip()))
         return value.strip()
     raise ParameterError(key, value, "must be text")
 

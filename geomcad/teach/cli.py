@@ -87,6 +87,17 @@ def _pairs(texts: Sequence[str]) -> list[tuple[str, str]]:
     return out
 
 
+def _check_words(*options: tuple[str, str]) -> None:
+    """The title blocks' words given on the command line: one line, in the sheet font."""
+    from geomcad.sheet.text import lacking, no_glyph
+
+    for option, text in options:
+        if "\n" in text:
+            raise ParameterError(option, text, "must be one line of text")
+        if lacking(text):
+            raise ParameterError(option, text, no_glyph(text))
+
+
 def _formats(text: str) -> tuple[str, ...]:
     fs = [f.strip().lower() for f in text.split(",") if f.strip()]
     for f in fs:
@@ -136,6 +147,11 @@ def cmd_variants(ns: argparse.Namespace) -> int:
 
     started = time.perf_counter()
     n_jobs = jobs.check_jobs(ns.jobs)
+    if ns.seed < 0:
+        raise ParameterError("--seed", ns.seed, "must be a whole number ≥ 0")
+    if not 1 <= ns.count <= variants.MAX_COUNT:
+        raise ParameterError("--count", ns.count, f"must be from 1 to {variants.MAX_COUNT}")
+    _check_words(("--course", ns.course), ("--teacher", ns.teacher))
     formats = _formats(ns.format)
     template = variants.load_template(ns.template, _pairs(ns.set))
     varies = [variants.parse_vary(t) for t in ns.vary]

@@ -28,11 +28,14 @@ from typing import Any
 
 from geomcad.errors import ParameterError
 
+#: The most worker processes ``--jobs`` starts (a pool of forked workers starts them all).
+MAX_JOBS = 64
+
 
 def check_jobs(jobs: int) -> int:
-    """``--jobs N``: a whole number ≥ 1, or 0 for every core."""
-    if jobs < 0:
-        raise ParameterError("--jobs", jobs, "must be ≥ 1 (or 0: one per core)")
+    """``--jobs N``: a whole number from 1 to :data:`MAX_JOBS`, or 0 for every core."""
+    if not 0 <= jobs <= MAX_JOBS:
+        raise ParameterError("--jobs", jobs, f"must be from 1 to {MAX_JOBS} (or 0: one per core)")
     return jobs or (os.cpu_count() or 1)
 
 

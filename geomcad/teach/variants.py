@@ -36,7 +36,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from geomcad import documents, registry
-from geomcad.errors import GeomcadError, ParameterError
+from geomcad.errors import GeomcadError, ParameterError, shorten
 from geomcad.teach import MIN_TRANSMISSION_DEG, keys, quantities, transmission
 
 if TYPE_CHECKING:
@@ -45,6 +45,14 @@ if TYPE_CHECKING:
 
 #: Draws allowed per variant asked for, before the run gives up (rejections included).
 DRAWS_PER_VARIANT = 50
+
+#: The most variants one run makes (a class, or a course's several classes).
+MAX_COUNT = 1000
+
+#: The most values one ``--vary`` range may hold (multiples of its step), and the largest and
+#: smallest size of LO, HI and STEP: a range is printed data, not a stream of digits.
+MAX_VALUES = 10**9
+MAX_EXPONENT = 30
 
 #: Rejection reasons, in the order they are reported.
 REASONS = ("duplicate", "unsolvable", "transmission")
@@ -76,6 +84,12 @@ def _decimal(key: str, text: str, what: str) -> Decimal:
         raise ParameterError(f"--vary {key}", text, f"{what} must be a number") from None
     if not d.is_finite():
         raise ParameterError(f"--vary {key}", text, f"{what} must be a finite number")
+    if d and not -MAX_EXPONENT <= d.adjusted() < MAX_EXPONENT:
+        raise ParameterError(
+            f"--vary {key}",
+            text,
+            f"{what} must lie between 1e-{MAX_EXPONENT} and 1e{MAX_EXPONENT} in size",
+        )
     return d
 
 
@@ -105,6 +119,10 @@ def parse_vary(text: str) -> Vary:
         step = Decimal(1).scaleb(-places)
     if not lo < hi:
         raise ParameterError(f"--vary {key}", spec, "LO must be less than HI")
+    if (hi - lo) / step > MAX_VALUES:
+        raise ParameterError(
+            f"--vary {key}", spec, f"the range holds over {MAX_VALUES:,} steps: take a coarser STEP"
+        )
     first = math.ceil(lo / step)
     last = math.floor(hi / step)
     if last - first < 1:
@@ -465,8 +483,11 @@ def key_columns(variants: Sequence[Variant], patterns: Sequence[str], explicit: 
     if explicit:
         for pat in patterns:
             if not any(keys.matches(p, pat) for v in variants for p in v.results):
-                known = ", ".join(list(variants[0].results)[:40]) if variants else ""
-                raise GeomcadError(f"--key {pat}: no result matches it; the results are {known}")
+                names = list(variants[0].results) if variants else []
+                known = ", ".join(names[:12]) + (f" … ({len(names)} in all)" * (len(names) > 12))
+                raise GeomcadError(
+                    f"--key {shorten(pat)}: no result matches it; the results are {known}"
+                )
     if not paths:
         raise GeomcadError("variants: the key is empty (no result matches --key)")
     return paths
@@ -520,9 +541,11 @@ def variant_file(
 def variant_sets(path: Path) -> tuple[str, list[tuple[str, str]]]:
     """A problem-id variant file read back: the id and its ``--set`` pairs."""
     try:
-        obj = json.loads(path.read_text(encoding="utf-8"))
+        obj = json.loads(path.read_text(encoding="utf-8-sig"))  # a BOM (Notepad's) is dropped
     except FileNotFoundError:
         raise ParameterError(str(path), "", "no such file") from None
+    except RecursionError:
+        raise ParameterError(str(path), "", "is not a variant file (nested too deeply)") from None
     except (OSError, UnicodeDecodeError, json.JSONDecodeError) as exc:
         raise ParameterError(str(path), "", f"is not a variant file ({exc})") from None
     if (
