@@ -149,7 +149,7 @@ def cmd_variants(ns: argparse.Namespace) -> int:
     n_jobs = jobs.check_jobs(ns.jobs)
     if ns.seed < 0:
         raise ParameterError("--seed", ns.seed, "must be a whole number ≥ 0")
-    if not 1 <= ns.count <= variants.MAX_COUNT:
+    if ns.count is not None and not 1 <= ns.count <= variants.MAX_COUNT:
         raise ParameterError("--count", ns.count, f"must be from 1 to {variants.MAX_COUNT}")
     _check_words(("--course", ns.course), ("--teacher", ns.teacher))
     formats = _formats(ns.format)
@@ -175,6 +175,8 @@ def cmd_variants(ns: argparse.Namespace) -> int:
     if students is not None and ns.count is not None and ns.count != len(students):
         raise ParameterError("--count", ns.count, f"the roster has {len(students)} students")
     count = len(students) if students is not None else ns.count
+    if students is not None and not 1 <= count <= variants.MAX_COUNT:
+        raise ParameterError("--students", ns.students, f"must list 1 to {variants.MAX_COUNT}")
 
     # what every variant needs is imported here, once, before the workers fork
     with contextlib.suppress(GeomcadError):
