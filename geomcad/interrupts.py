@@ -99,6 +99,8 @@ def catch() -> dict[int, Any]:
     old: dict[int, Any] = {}
     with contextlib.suppress(ValueError):
         for sig in SIGNALS:
+            if sig == signal.SIGHUP and signal.getsignal(sig) is signal.SIG_IGN:
+                continue  # `nohup geomcad build …`: a hangup stays ignored, as the user asked
             old[sig] = signal.signal(sig, _handler)
     if old:
         _owner = os.getpid()

@@ -125,12 +125,13 @@ def test_main_ends_with_the_signal_status_when_its_exception_was_swallowed(
         return 0
 
     monkeypatch.setattr(cli, "_cmd_list", swallowing)
+    before = signal.getsignal(signal.SIGINT)  # Python's own, or SIG_IGN under a background shell
     err = io.StringIO()
     with redirect_stdout(io.StringIO()), redirect_stderr(err):
         code = main(["list"])
     assert code == 130
     assert err.getvalue().startswith("error: list: stopped by SIGINT;")
-    assert signal.getsignal(signal.SIGINT) is signal.default_int_handler
+    assert signal.getsignal(signal.SIGINT) is before
 
 
 # --- the command: at any moment, in the first tenth of a second, inside cairo ------------------
@@ -299,3 +300,21 @@ def test_an_exception_a_signal_caused_is_the_signal(monkeypatch: pytest.MonkeyPa
     assert code == 129
     assert err.getvalue().count("\n") == 1
     assert err.getvalue().startswith("error: list: stopped by SIGHUP;")
+
+
+def test_a_hangup_ignored_by_nohup_stays_ignored(tmp_path: Path) -> None:
+    """``nohup geomcad build …``: SIGHUP was ignored when the command started, so a hangup
+    neither stops it nor is caught; SIGTERM still is."""
+    code = (
+        "import signal, sys\n"
+        "signal.signal(signal.SIGHUP, signal.SIG_IGN)\n"
+        "from geomcad import interrupts\n"
+        "old = interrupts.catch()\n"
+        "print(signal.getsignal(signal.SIGHUP) is signal.SIG_IGN,"
+        " signal.getsignal(signal.SIGTERM) is not signal.SIG_DFL)\n"
+        "interrupts.restore(old)\n"
+    )
+    out = subprocess.run(
+        [sys.executable, "-c", code], capture_output=True, text=True, check=True, cwd=tmp_path
+    ).stdout.split()
+    assert out == ["True", "True"]
