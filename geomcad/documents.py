@@ -180,6 +180,6 @@ def solve(pid: str, sets: Sequence[tuple[str, str]] = ()) -> Solution[Any]:
 
 def _linkage_problem(file_id: str, data: dict[str, Any]) -> Problem[Any]:
     """A linkage file (``../shared/linkages.md``) as a problem: model, solution and sheets."""
-    from geomcad.linkage_problem import make_problem
+    from geomcad.files.linkage import make_problem
 
     return make_problem(file_id, data)
