@@ -691,6 +691,8 @@ class _Solver:
         self.scored: dict[tuple[object, ...], tuple[_Eval, tuple[float, ...]]] = {}
         #: Layouts scored (for the benchmark and the tests).
         self.evaluations = 0
+        self._choices = [id(nd) for nd in self.nodes if isinstance(nd, Choice)]
+        self._laid_ids: dict[tuple[object, ...], list[int]] = {}
 
     def _collect(self, t: Tree) -> None:
         if isinstance(t, Node):
@@ -782,7 +784,7 @@ class _Solver:
     def evaluate(self) -> tuple[_Eval, tuple[float, ...]]:
         """The layout of the current choices and its score; a set of choices the search
         comes back to (the next round's sweep of an unmoved node) is scored once."""
-        key = tuple(self.choice[id(nd)] for nd in self._active(self.tree))
+        key = tuple(self.choice[i] for i in self._laid())
         done = self.scored.get(key)
         if done is None:
             ev = _Eval(self.field)
@@ -790,6 +792,15 @@ class _Solver:
             done = self.scored[key] = (ev, _score(ev))
             self.evaluations += 1
         return done
+
+    def _laid(self) -> list[int]:
+        """The ids of the nodes :meth:`_active` yields, found once per choice of the
+        :class:`Choice` nodes (the only choices that change which nodes are laid out)."""
+        which = tuple(self.choice[i] for i in self._choices)
+        ids = self._laid_ids.get(which)
+        if ids is None:
+            ids = self._laid_ids[which] = [id(nd) for nd in self._active(self.tree)]
+        return ids
 
     def _active(self, t: Tree) -> Iterator[Node]:
         """The nodes the current choices lay out (a :class:`Choice`'s other arrangements are
@@ -876,23 +887,32 @@ def _fill_of(v: View, cell: Box, k: float) -> float:
     return (cw / k + 2 * v.margin) * (ch / k + 2 * v.margin) / area
 
 
-def _areas(ev: _Eval, scales: Mapping[str, float]) -> dict[str, tuple[float, float]]:
-    """The drawn area (mm²) of each flexible view, a scale group counting once (the sum of its
-    members'), a stretch view's as it really draws; with each one's weight."""
-    out: dict[str, tuple[float, float]] = {}
+def _areas2(
+    ev: _Eval, first: Mapping[str, float], second: Mapping[str, float]
+) -> tuple[dict[str, tuple[float, float]], dict[str, tuple[float, float]]]:
+    """The drawn area (mm²) of each flexible view at the scales ``first`` and at ``second``, a
+    scale group counting once (the sum of its members'), a stretch view's as it really draws;
+    with each one's weight."""
+    out1: dict[str, tuple[float, float]] = {}
+    out2: dict[str, tuple[float, float]] = {}
+    views = ev.views
+    small = tol.SHEET_AREA
     for key, leaf in ev.leaves.items():
-        if leaf.kind == "fixed":
+        kind = leaf.kind
+        if kind == "fixed":
             continue
-        w = ev.views[key].weight
-        if leaf.kind == "stretch":
-            out[f"#{key}"] = (max(leaf.area, tol.SHEET_AREA), w)
+        w = views[key].weight
+        if kind == "stretch":
+            out1[f"#{key}"] = out2[f"#{key}"] = (max(leaf.area, small), w)
             continue
-        k = scales[leaf.group]
+        g = leaf.group
         cw, ch = leaf.content
-        area = (cw / k) * (ch / k) if math.isfinite(k) and k > 0.0 and cw > 0.0 else tol.SHEET_AREA
-        prev = out.get(leaf.group, (0.0, 0.0))
-        out[leaf.group] = (prev[0] + max(area, tol.SHEET_AREA), max(prev[1], w))
-    return out
+        for scales, out in ((first, out1), (second, out2)):
+            k = scales[g]
+            area = (cw / k) * (ch / k) if math.isfinite(k) and k > 0.0 and cw > 0.0 else small
+            prev = out.get(g, (0.0, 0.0))
+            out[g] = (prev[0] + max(area, small), max(prev[1], w))
+    return out1, out2
 
 
 def _title_width(v: View) -> float:
@@ -955,8 +975,9 @@ def _score(ev: _Eval) -> tuple[float, ...]:
             short += bisect.bisect_left(leaf.lengths, v.readable_mm * k) - bisect.bisect_right(
                 leaf.lengths, 0.5 * k
             )
-    score_r = sum(w * math.log(a) for a, w in _areas(ev, rounded).values())
-    score_c = sum(w * math.log(a) for a, w in _areas(ev, raw).values())
+    areas_r, areas_c = _areas2(ev, rounded, raw)
+    score_r = sum(w * math.log(a) for a, w in areas_r.values())
+    score_c = sum(w * math.log(a) for a, w in areas_c.values())
     return (-round(bad, 6), score_r + 0.1 * score_c - SHORT_COST * short)
 
 

@@ -14,7 +14,7 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 from dataclasses import dataclass
-from functools import cache
+from functools import cache, lru_cache
 from importlib import resources
 from pathlib import Path
 
@@ -84,8 +84,10 @@ def metrics() -> FontMetrics:
         )
 
 
+@lru_cache(maxsize=8192)
 def parse(markup: str) -> tuple[Run, ...]:
-    """Split label markup into runs: ``V_{B3B2}`` → V, B3B2 (sub); ``O_1`` → O, 1 (sub)."""
+    """Split label markup into runs: ``V_{B3B2}`` → V, B3B2 (sub); ``O_1`` → O, 1 (sub).
+    (Runs are frozen: a label drawn again, or measured by the layout and drawn, is parsed once.)"""
     runs: list[Run] = []
     buf: list[str] = []
     i = 0
