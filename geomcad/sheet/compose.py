@@ -489,28 +489,35 @@ def _raw_k(v: View, cell: Box) -> float:
     return need if need > 0.0 else 0.0
 
 
+#: A laid-out subtree: its views with their leaves, in the order of the tree, and its titled
+#: nodes' boxes. The search joins its subtrees' parts (tuples: a memoised part is shared).
+_Part = tuple[tuple[tuple["View", "_Leaf"], ...], tuple[tuple[Box, "Node"], ...]]
+
+
+def _place(v: View, cell: Box, obstacles: tuple[Box, ...]) -> _Leaf:
+    """The view's leaf in ``cell``: the part of the cell clear of the obstacles where it does
+    best (computed once per view and cell)."""
+    key = ("leaf", cell, obstacles)
+    leaf: _Leaf | None = v._memo.get(key)
+    if leaf is None:
+        parts = _cut(cell, obstacles)
+        best = max(
+            parts, key=lambda c: (round(_leaf_score(v, c), 9), (c[2] - c[0]) * (c[3] - c[1]))
+        )
+        leaf = v._memo[key] = _Leaf.of(v, best)
+    return leaf
+
+
 class _Eval:
-    """One candidate layout: cells by view, the scales, the score."""
+    """One candidate layout: its views' leaves (cells, scales' needs) and titled boxes, by
+    view."""
 
-    def __init__(self, field_: Field) -> None:
-        self.field = field_
-        self.cells: dict[int, Box] = {}
-        self.views: dict[int, View] = {}
-        self.leaves: dict[int, _Leaf] = {}
-        self.titles: list[tuple[Box, Node]] = []
-
-    def place(self, v: View, cell: Box) -> None:
-        key = ("leaf", cell, self.field.obstacles)
-        leaf = v._memo.get(key)
-        if leaf is None:
-            parts = _cut(cell, self.field.obstacles)
-            best = max(
-                parts, key=lambda c: (round(_leaf_score(v, c), 9), (c[2] - c[0]) * (c[3] - c[1]))
-            )
-            leaf = v._memo[key] = _Leaf.of(v, best)
-        self.views[id(v)] = v
-        self.cells[id(v)] = leaf.cell
-        self.leaves[id(v)] = leaf
+    def __init__(self, part: _Part) -> None:
+        self.items, titles = part
+        self.titles = list(titles)
+        self.views: dict[int, View] = {id(v): v for v, _ in self.items}
+        self.leaves: dict[int, _Leaf] = {id(v): leaf for v, leaf in self.items}
+        self.cells: dict[int, Box] = {id(v): leaf.cell for v, leaf in self.items}
 
 
 @dataclass(frozen=True)
@@ -686,9 +693,9 @@ class _Solver:
         #: of the tree is replayed from here.
         self.sub: dict[int, list[int]] = {}
         self._subtree(tree)
-        self.memo: dict[tuple[object, ...], _Eval] = {}
+        self.memo: dict[tuple[object, ...], _Part] = {}
         self.options: dict[tuple[object, ...], list[tuple[float, ...] | int]] = {}
-        self.scored: dict[tuple[object, ...], tuple[_Eval, tuple[float, ...]]] = {}
+        self.scored: dict[tuple[object, ...], tuple[_Part, tuple[float, ...]]] = {}
         #: Layouts scored (for the benchmark and the tests).
         self.evaluations = 0
         self._choices = [id(nd) for nd in self.nodes if isinstance(nd, Choice)]
@@ -749,47 +756,45 @@ class _Solver:
         self.options[(id(nd), fine, cur)] = out
         return out
 
-    def run(self, t: Tree, box: Box, ev: _Eval) -> None:
+    def run(self, t: Tree, box: Box) -> _Part:
+        """The subtree laid out in ``box`` at the current choices (memoised)."""
         if isinstance(t, View):
-            ev.place(t, box)
-            return
+            return ((t, _place(t, box, self.field.obstacles)),), ()
         key = (id(t), box, *(self.choice[i] for i in self.sub[id(t)]))
         part = self.memo.get(key)
         if part is None:
-            part = _Eval(self.field)
-            self._run(t, box, part)
-            self.memo[key] = part
-        ev.views.update(part.views)
-        ev.cells.update(part.cells)
-        ev.leaves.update(part.leaves)
-        ev.titles += part.titles
+            part = self.memo[key] = self._run(t, box)
+        return part
 
-    def _run(self, t: Node, box: Box, ev: _Eval) -> None:
-        if t.title:
-            ev.titles.append((box, t))
+    def _run(self, t: Node, box: Box) -> _Part:
+        titles: tuple[tuple[Box, Node], ...] = ((box, t),) if t.title else ()
         ch = self.choice[id(t)]
         if isinstance(t, Choice):
             assert isinstance(ch, int)
-            self.run(t.items[ch], box, ev)
-            return
+            items, inner = self.run(t.items[ch], box)
+            return items, titles + inner
         if isinstance(t, Grid):
             assert isinstance(ch, int)
             kids = _grid_cells(t, box, ch)
         else:
             assert isinstance(ch, tuple)
             kids = _split(t, box, ch, isinstance(t, Row))
+        items = ()
         for it, cell in kids:
-            self.run(it, cell, ev)
+            more, inner = self.run(it, cell)
+            items += more
+            if inner:
+                titles += inner
+        return items, titles
 
-    def evaluate(self) -> tuple[_Eval, tuple[float, ...]]:
+    def evaluate(self) -> tuple[_Part, tuple[float, ...]]:
         """The layout of the current choices and its score; a set of choices the search
         comes back to (the next round's sweep of an unmoved node) is scored once."""
         key = tuple(self.choice[i] for i in self._laid())
         done = self.scored.get(key)
         if done is None:
-            ev = _Eval(self.field)
-            self.run(self.tree, self.field.box, ev)
-            done = self.scored[key] = (ev, _score(ev))
+            part = self.run(self.tree, self.field.box)
+            done = self.scored[key] = (part, _score(part))
             self.evaluations += 1
         return done
 
@@ -811,7 +816,7 @@ class _Solver:
             for it in [t.items[ch]] if isinstance(t, Choice) and isinstance(ch, int) else t.items:
                 yield from self._active(it)
 
-    def _descend(self) -> tuple[_Eval, tuple[float, ...]]:
+    def _descend(self) -> tuple[_Part, tuple[float, ...]]:
         """Coordinate search over the splits and grid shapes, the choices held: in coarse
         steps, then in fine steps near the coarse optimum. Only the nodes laid out are swept,
         in the order of :attr:`nodes` (a node that two arrangements share is swept twice)."""
@@ -847,7 +852,7 @@ class _Solver:
         """The best layout over every combination of the :class:`Choice` nodes' options."""
         choices = [nd for nd in self.nodes if isinstance(nd, Choice)]
         start = dict(self.choice)
-        found: tuple[_Eval, tuple[float, ...]] | None = None
+        found: tuple[_Part, tuple[float, ...]] | None = None
         for combo in itertools.product(*(range(len(c.items)) for c in choices)):
             self.choice = dict(start)
             for c, i in zip(choices, combo, strict=True):
@@ -856,7 +861,7 @@ class _Solver:
             if found is None or sc > found[1]:
                 found = (ev, sc)
         assert found is not None
-        return found[0]
+        return _Eval(found[0])
 
 
 def _scales(ev: _Eval) -> dict[str, Scale]:
@@ -888,22 +893,21 @@ def _fill_of(v: View, cell: Box, k: float) -> float:
 
 
 def _areas2(
-    ev: _Eval, first: Mapping[str, float], second: Mapping[str, float]
+    items: Sequence[tuple[View, _Leaf]], first: Mapping[str, float], second: Mapping[str, float]
 ) -> tuple[dict[str, tuple[float, float]], dict[str, tuple[float, float]]]:
     """The drawn area (mm²) of each flexible view at the scales ``first`` and at ``second``, a
     scale group counting once (the sum of its members'), a stretch view's as it really draws;
     with each one's weight."""
     out1: dict[str, tuple[float, float]] = {}
     out2: dict[str, tuple[float, float]] = {}
-    views = ev.views
     small = tol.SHEET_AREA
-    for key, leaf in ev.leaves.items():
+    for v, leaf in items:
         kind = leaf.kind
         if kind == "fixed":
             continue
-        w = views[key].weight
+        w = v.weight
         if kind == "stretch":
-            out1[f"#{key}"] = out2[f"#{key}"] = (max(leaf.area, small), w)
+            out1[f"#{id(v)}"] = out2[f"#{id(v)}"] = (max(leaf.area, small), w)
             continue
         g = leaf.group
         cw, ch = leaf.content
@@ -936,19 +940,20 @@ def _node_title_width(node: Node) -> float:
     return node._title_w
 
 
-def _score(ev: _Eval) -> tuple[float, ...]:
+def _score(part: _Part) -> tuple[float, ...]:
     """(−infeasibility, Σ weight·log(drawn area)): larger is better. The sum of logarithms
     shares the field fairly: a view gains only where its drawing grows, so no view keeps a
     large box its drawing does not use while another could grow into it."""
-    bad = sum(leaf.bad for leaf in ev.leaves.values())
-    for cell, node in ev.titles:
+    items, titles = part
+    bad = sum(leaf.bad for _, leaf in items)
+    for cell, node in titles:
         bad += max(0.0, _node_title_width(node) - (cell[2] - cell[0]))
     raw: dict[str, float] = {}
     first: dict[str, View] = {}
-    for key, leaf in ev.leaves.items():
+    for v, leaf in items:
         if leaf.kind == "scaled":
             raw[leaf.group] = max(raw.get(leaf.group, 0.0), leaf.raw_k)
-            first.setdefault(leaf.group, ev.views[key])
+            first.setdefault(leaf.group, v)
     rounded: dict[str, float] = {}
     for g, k in raw.items():
         if not math.isfinite(k):
@@ -963,10 +968,9 @@ def _score(ev: _Eval) -> tuple[float, ...]:
             rounded[g] = math.inf
             continue
     short = 0
-    for key, leaf in ev.leaves.items():
+    for v, leaf in items:
         if leaf.kind != "scaled" or not math.isfinite(rounded[leaf.group]):
             continue
-        v = ev.views[key]
         k = rounded[leaf.group]
         if v.readable > 0.0 and v.readable / k < v.readable_mm:
             bad += v.readable_mm - v.readable / k
@@ -975,7 +979,7 @@ def _score(ev: _Eval) -> tuple[float, ...]:
             short += bisect.bisect_left(leaf.lengths, v.readable_mm * k) - bisect.bisect_right(
                 leaf.lengths, 0.5 * k
             )
-    areas_r, areas_c = _areas2(ev, rounded, raw)
+    areas_r, areas_c = _areas2(items, rounded, raw)
     score_r = sum(w * math.log(a) for a, w in areas_r.values())
     score_c = sum(w * math.log(a) for a, w in areas_c.values())
     return (-round(bad, 6), score_r + 0.1 * score_c - SHORT_COST * short)
@@ -998,7 +1002,11 @@ def arrange(tree: Tree, field_: Field) -> Layout:
     docstring). :class:`ParameterError` when a view has no room at all."""
     ev = _Solver(tree, field_).solve()
     scales = _scales(ev)
-    lay = Layout(titles=ev.titles, groups={g: s for g, s in scales.items()}, score=_score(ev))
+    lay = Layout(
+        titles=ev.titles,
+        groups={g: s for g, s in scales.items()},
+        score=_score((ev.items, tuple(ev.titles))),
+    )
     for key, v in ev.views.items():
         cell = ev.cells[key]
         top = cell[1] + v.title_room()
