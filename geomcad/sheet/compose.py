@@ -278,6 +278,7 @@ class Node:
         self.group = group
         self._title_w: float | None = None
         self._natural: tuple[float, float] | Literal[False] | None = False
+        self._fixed: dict[bool, tuple[dict[int, float], list[int]]] = {}
 
     def views(self) -> Iterator[View]:
         for it in self.items:
@@ -619,6 +620,21 @@ def _natural_node(t: Node) -> tuple[float, float] | None:
     return None  # a grid of fixed views shares its box
 
 
+def _fixed(node: Node, horizontal: bool) -> tuple[dict[int, float], list[int]]:
+    """The natural lengths along the split of a node's fixed children, by index, and the
+    indices of the others (asked once per node)."""
+    known = node._fixed.get(horizontal)
+    if known is None:
+        fixed: dict[int, float] = {}
+        for i, it in enumerate(node.items):
+            nat = natural_of(it)
+            if nat is not None:
+                fixed[i] = nat[0] if horizontal else nat[1]
+        flex = [i for i in range(len(node.items)) if i not in fixed]
+        known = node._fixed[horizontal] = (fixed, flex)
+    return known
+
+
 def _split(
     node: Node, box: Box, weights: Sequence[float], horizontal: bool
 ) -> list[tuple[Tree, Box]]:
@@ -629,12 +645,7 @@ def _split(
     length = (x1 - x0) if horizontal else (y1 - y0)
     n = len(node.items)
     free = length - node.gap * (n - 1)
-    fixed: dict[int, float] = {}
-    for i, it in enumerate(node.items):
-        nat = natural_of(it)
-        if nat is not None:
-            fixed[i] = nat[0] if horizontal else nat[1]
-    flex = [i for i in range(n) if i not in fixed]
+    fixed, flex = _fixed(node, horizontal)
     share = free - sum(fixed.values())
     total_w = sum(weights[i] for i in flex) or 1.0
     out = []
