@@ -1060,3 +1060,59 @@ def compose(
 def text_width(markup: str, height: float) -> float:
     """The width (mm) of a line of label markup at cap height ``height``."""
     return text_box(parse(markup), height)[0]
+
+
+def least_room(tree: Tree, wants: Mapping[View, float]) -> list[tuple[float, float]]:
+    """The sizes (mm; width, height) of which a box must have one, at least, for every view of
+    ``wants`` to be drawn at its scale (model units per mm) or larger in ``tree``, whatever the
+    search chooses: the wanted views at those scales with their margins and titles, the lengths
+    a split always gives (its fixed children's natural lengths, its gaps, its title), a grid's
+    equal cells in each of its shapes, either arrangement of a :class:`Choice`; everything else
+    as small as it may get, the form's boxes ignored. A necessary test: where no size of the
+    list fits a field, no arrangement there draws the wanted views at their scales."""
+    return _pareto(_least(tree, wants))
+
+
+def _pareto(sizes: Sequence[tuple[float, float]]) -> list[tuple[float, float]]:
+    out: list[tuple[float, float]] = []
+    for w, h in sorted(set(sizes)):
+        if not out or h < out[-1][1]:
+            out.append((w, h))
+    return out
+
+
+def _least(t: Tree, wants: Mapping[View, float]) -> list[tuple[float, float]]:
+    if isinstance(t, View):
+        k = wants.get(t)
+        if k is None:
+            return [(0.0, 0.0)]
+        ext = _ext(t)
+        assert ext is not None
+        k *= 1.0 + tol.REL_LENGTH  # as formats.meets allows
+        w = (ext[2] - ext[0]) / k + 2.0 * t.margin
+        return [(w, (ext[3] - ext[1]) / k + 2.0 * t.margin + t.title_room())]
+    if isinstance(t, Choice):
+        return _pareto([sz for it in t.items for sz in _least(it, wants)])
+    kids = [_least(it, wants) for it in t.items]
+    top = t.title_room()
+    if isinstance(t, Grid):
+        n = len(t.items)
+        out = []
+        for cols in [t.cols] if t.cols else range(1, n + 1):
+            rows = math.ceil(n / cols)
+            # each cell holds one child: the largest least width and height of any child
+            cw = max(min(w for w, _ in kid) for kid in kids)
+            ch = max(min(h for _, h in kid) for kid in kids)
+            out.append((cols * cw + t.gap * (cols - 1), rows * ch + t.gap * (rows - 1) + top))
+        return _pareto(out)
+    horizontal = isinstance(t, Row)
+    fixed, _ = _fixed(t, horizontal)
+    acc = [(t.gap * (len(t.items) - 1), 0.0)]  # (along the split, across it)
+    for i, kid in enumerate(kids):
+        opts = [(w, h) if horizontal else (h, w) for w, h in kid]
+        if i in fixed:  # a fixed child takes its natural length along the split, whatever
+            opts = [(max(fixed[i], a), c) for a, c in opts]
+        acc = _pareto([(a0 + a, max(c0, c)) for a0, c0 in acc for a, c in opts])
+    if horizontal:
+        return _pareto([(a, c + top) for a, c in acc])
+    return _pareto([(c, a + top) for a, c in acc])
