@@ -502,8 +502,12 @@ def _place(v: View, cell: Box, obstacles: tuple[Box, ...]) -> _Leaf:
     leaf: _Leaf | None = v._memo.get(key)
     if leaf is None:
         parts = _cut(cell, obstacles)
-        best = max(
-            parts, key=lambda c: (round(_leaf_score(v, c), 9), (c[2] - c[0]) * (c[3] - c[1]))
+        best = (
+            parts[0]
+            if len(parts) == 1
+            else max(
+                parts, key=lambda c: (round(_leaf_score(v, c), 9), (c[2] - c[0]) * (c[3] - c[1]))
+            )
         )
         leaf = v._memo[key] = _Leaf.of(v, best)
     return leaf
