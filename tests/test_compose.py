@@ -258,3 +258,50 @@ def test_the_checker_finds_a_vector_at_a_scale_the_sheet_does_not_state() -> Non
     d.text("План скоростей, μ_V = 0,02 (м/с)/мм", (60.0, 40.0), 3.5)
     d.text("μ_V = 0,05 (м/с)/мм", (60.0, 50.0), 3.5)  # another μ does not count
     assert layout_problems(d.finish()) == []
+
+
+def test_least_room_is_necessary_for_the_wanted_scales() -> None:
+    """Where no least size of a tree fits a field (formats.may_reach is False), the search's
+    arrangement there does not draw the wanted views at their scales; and the test does say
+    False for some of these trees (it saves searches) and True for others."""
+    from geomcad.sheet.compose import Choice, Field, Grid, Row, Spacer, arrange, least_room
+    from geomcad.sheet.formats import may_reach, meets
+
+    said = set()
+    for fmt, k, cols in itertools.product(("A4", "A3", "A2"), (0.001, 0.002, 0.004), (None, 2)):
+        mech = Figure((0.0, 0.0, 0.5, 0.3), lambda v: None, title="M")
+        plans = [Figure((0.0, 0.0, 0.2, 0.2), lambda v: None, title=f"P{i}") for i in range(4)]
+        table = Spacer((120.0, 60.0))
+        tree = Choice(
+            Row(mech, Grid(*plans, cols=cols)),
+            Column(Row(mech, table), Grid(*plans, cols=cols)),
+        )
+        wants = {mech: k, plans[0]: 2 * k}
+        field = Field.of_format(fmt, fmt != "A4")
+        ok = may_reach(tree, wants, field)
+        said.add(ok)
+        assert least_room(tree, wants)
+        if not ok:
+            for v, kk in wants.items():
+                v.readable = kk * v.readable_mm
+            try:
+                lay = arrange(tree, field)
+            except ParameterError:
+                continue
+            assert not meets(lay, wants), (fmt, k, cols)
+    assert said == {True, False}
+
+
+def test_least_room_of_a_row() -> None:
+    """A wanted view's drawing at its scale with margins and title, a fixed child's natural
+    width and the gap along a row; the tallest child across it."""
+    from geomcad.sheet.compose import GAP, Row, Spacer, least_room, natural_of
+
+    a = Figure((0.0, 0.0, 0.2, 0.1), lambda v: None, title="A", margin=4.0)
+    s = Spacer((50.0, 300.0))
+    k = 0.002 * (1 + 1e-9)
+    ((w, h),) = least_room(Row(a, s), {a: 0.002})
+    nat = natural_of(s)
+    assert nat is not None
+    assert w == pytest.approx(0.2 / k + 8.0 + nat[0] + GAP, rel=1e-6)
+    assert h == pytest.approx(0.1 / k + 8.0 + a.title_room(), rel=1e-6)

@@ -256,10 +256,10 @@ def test_build_writes_dxf_beside_the_svg(
 def test_dxf_needs_no_cairo(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
     from geomcad.render import files
 
-    def no_cairo(svg: str) -> bytes:
+    def no_cairo(*args: object) -> bytes:
         raise MissingDependency("no libcairo")
 
-    monkeypatch.setattr(files, "to_pdf", no_cairo)
+    monkeypatch.setattr(files, "sheet_pdf", no_cairo)
     sheets = [("", _sheets("2013-3")[0][1])]
     with pytest.raises(MissingDependency):
         write_sheets("p", sheets, tmp_path, ["pdf", "dxf", "svg"])
@@ -271,10 +271,10 @@ def test_build_without_cairo_still_writes_the_svg_and_the_dxf(
 ) -> None:
     from geomcad.render import files
 
-    def no_cairo(svg: str) -> bytes:
+    def no_cairo(*args: object) -> bytes:
         raise MissingDependency("PDF and PNG output need the cairo library")
 
-    monkeypatch.setattr(files, "to_pdf", no_cairo)
+    monkeypatch.setattr(files, "sheet_pdf", no_cairo)
     code = main(["build", "2013-3", "--out", str(tmp_path), "--format", "pdf,dxf"])
     out, err = capsys.readouterr()
     assert code == 2

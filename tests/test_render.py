@@ -18,6 +18,7 @@ import pytest
 
 from geomcad.errors import GeomcadError, MissingDependency, ParameterError
 from geomcad.render import FORMATS, raster, svg, to_pdf, to_png, to_svg, write_sheets
+from geomcad.render.pdf import sheet_pdf
 from geomcad.sheet.model import ArcItem, CircleItem, Polyline, Sheet, TextItem
 from geomcad.sheet.style import MAIN_LINE, STYLES, circle_length, fit_closed, style
 from geomcad.sheet.text import SUB_DROP, font_path, metrics, parse, run_size, width
@@ -228,11 +229,20 @@ def text_sheet() -> Sheet:
     return sheet
 
 
-def test_pdf_page_size_text_and_embedded_font() -> None:
+def _svg_pdf(sheet: Sheet) -> bytes:
+    return to_pdf(to_svg(sheet))
+
+
+#: The two ways to a PDF: the SVG through cairosvg, and the sheet straight into cairo.
+PDF_WAYS = pytest.mark.parametrize("pdf_of", [_svg_pdf, sheet_pdf], ids=["cairosvg", "direct"])
+
+
+@PDF_WAYS
+def test_pdf_page_size_text_and_embedded_font(pdf_of: Callable[[Sheet], bytes]) -> None:
     from pypdf import PdfReader
     from pypdf.generic import DictionaryObject
 
-    pdf = to_pdf(to_svg(text_sheet()))
+    pdf = pdf_of(text_sheet())
     reader = PdfReader(io.BytesIO(pdf))
     assert len(reader.pages) == 1
     page = reader.pages[0]
@@ -255,17 +265,18 @@ def test_pdf_page_size_text_and_embedded_font() -> None:
     assert names and all("osifont" in n.lower() for n in names), names
 
 
-def test_pdf_is_byte_stable_and_still_valid() -> None:
+@PDF_WAYS
+def test_pdf_is_byte_stable_and_still_valid(pdf_of: Callable[[Sheet], bytes]) -> None:
     """cairo stamps the time of writing (to the second); to_pdf pins it, so the same sheet
     written a second later gives the same bytes."""
     import time
 
     from pypdf import PdfReader
 
-    svg = to_svg(text_sheet())
-    first = to_pdf(svg)
+    sheet = text_sheet()
+    first = pdf_of(sheet)
     time.sleep(1.1)
-    second = to_pdf(svg)
+    second = pdf_of(sheet)
     assert first == second
     assert b"/CreationDate (D:19700101000000Z)" in first
     reader = PdfReader(io.BytesIO(first), strict=True)
@@ -363,6 +374,44 @@ def test_cairosvg_and_rsvg_agree(make: Callable[[], Sheet], tmp_path: Path) -> N
     tol_px = 0.2 / px_mm + 1
     for ea, eb in zip(box_a, box_b, strict=True):
         assert abs(ea - eb) <= tol_px, (box_a, box_b)
+
+
+def _pdf_raster(pdf: bytes, tmp_path: Path, name: str, dpi: int) -> np.ndarray:
+    from PIL import Image
+
+    src = tmp_path / f"{name}.pdf"
+    src.write_bytes(pdf)
+    subprocess.run(
+        ["pdftoppm", "-r", str(dpi), "-gray", "-singlefile", str(src), str(tmp_path / name)],
+        check=True,
+    )
+    return np.asarray(Image.open(tmp_path / f"{name}.pgm").convert("L"), dtype=float)
+
+
+def _kinematic_sheet() -> Sheet:
+    import geomcad
+
+    return geomcad.solve("2013-3").sheets()[0][1]
+
+
+@pytest.mark.skipif(shutil.which("pdftoppm") is None, reason="pdftoppm is not installed")
+@pytest.mark.parametrize(
+    "make", [sample_sheet, text_sheet, _kinematic_sheet], ids=["mixed", "text", "2013-3"]
+)
+def test_direct_pdf_draws_what_the_svg_draws(make: Callable[[], Sheet], tmp_path: Path) -> None:
+    """The sheet written straight into cairo and its SVG through cairosvg: the same ink, the
+    same places (rasterised by poppler at 100 dpi), in colour and in black."""
+    dpi = 100
+    for colour in (False, True):
+        sheet = make()
+        a = _pdf_raster(to_pdf(to_svg(sheet, colour)), tmp_path, f"svg{colour:d}", dpi)
+        b = _pdf_raster(sheet_pdf(sheet, colour), tmp_path, f"direct{colour:d}", dpi)
+        assert a.shape == b.shape
+        assert float(np.mean(np.abs(a - b))) < 0.5  # grey levels out of 255, page mean
+        assert abs(float(np.sum(255.0 - a)) / float(np.sum(255.0 - b)) - 1.0) < 0.02  # ink
+        tol_px = 0.2 / (25.4 / dpi) + 1
+        for ea, eb in zip(_ink_box(a), _ink_box(b), strict=True):
+            assert abs(ea - eb) <= tol_px
 
 
 def _glyph_ink_box(text: str, at: tuple[float, float], font_size: float) -> tuple[float, ...]:

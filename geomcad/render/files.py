@@ -21,7 +21,8 @@ from pathlib import Path
 
 from geomcad import interrupts
 from geomcad.errors import ParameterError
-from geomcad.render.raster import to_pdf, to_png
+from geomcad.render.pdf import sheet_pdf
+from geomcad.render.raster import to_png
 from geomcad.render.svg import to_svg
 from geomcad.sheet.model import Sheet
 
@@ -175,15 +176,17 @@ def write_sheets(
             write_atomic(path, to_dxf(sheet, colour=colour))
             written.append(path)
 
-    def png(svg: str) -> bytes:
-        return to_png(svg, dpi=dpi)
-
-    converters: dict[str, Callable[[str], bytes]] = {"pdf": to_pdf, "png": png}
+    # the PDF straight from the sheet (geomcad.render.pdf: the same drawing, without parsing
+    # the SVG back), the PNG from the SVG (cairosvg)
+    converters: dict[str, Callable[[Sheet, str], bytes]] = {
+        "pdf": lambda sheet, _svg: sheet_pdf(sheet, colour),
+        "png": lambda _sheet, svg: to_png(svg, dpi=dpi),
+    }
     for fmt in ("pdf", "png"):
         if fmt not in wanted:
             continue
-        for stem, svg in zip(stems, svgs, strict=True):
+        for stem, (_name, sheet), svg in zip(stems, sheets, svgs, strict=True):
             path = out_dir / f"{stem}.{fmt}"
-            write_atomic(path, converters[fmt](svg))
+            write_atomic(path, converters[fmt](sheet, svg))
             written.append(path)
     return written

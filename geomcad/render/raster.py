@@ -37,17 +37,31 @@ def fonts_conf() -> Path:
     return Path(str(resources.files("geomcad.fonts").joinpath(FONTS_CONF)))
 
 
+def cairo() -> ModuleType:
+    """Import cairocffi with fontconfig pointed at the shipped font.
+
+    Raises :class:`MissingDependency` when cairocffi or libcairo cannot be loaded.
+    """
+    # fontconfig reads this once, when cairo first sets text; set it before anything loads cairo.
+    os.environ["FONTCONFIG_FILE"] = str(fonts_conf())
+    try:
+        import cairocffi
+    except (ImportError, OSError) as exc:
+        # cairocffi raises OSError from dlopen when libcairo.so.2 is absent.
+        raise MissingDependency(CAIRO_MISSING) from exc
+    module: ModuleType = cairocffi
+    return module
+
+
 def _cairosvg() -> ModuleType:
     """Import cairosvg with fontconfig pointed at the shipped font.
 
     Raises :class:`MissingDependency` when cairosvg or libcairo cannot be loaded.
     """
-    # fontconfig reads this once, when cairo first sets text; set it before anything loads cairo.
-    os.environ["FONTCONFIG_FILE"] = str(fonts_conf())
+    cairo()
     try:
         import cairosvg
     except (ImportError, OSError) as exc:
-        # cairocffi raises OSError from dlopen when libcairo.so.2 is absent.
         raise MissingDependency(CAIRO_MISSING) from exc
     # Text without a text-rendering attribute gets unhinted metrics (its outlines stay hinted):
     # cairo's image surfaces otherwise round each glyph's advance to whole pixels, and at
@@ -76,6 +90,11 @@ def to_pdf(svg: str) -> bytes:
     # cairo writes through a Python callback, where a signal's exception would be lost
     with interrupts.deferred():
         pdf = bytes(cairosvg.svg2pdf(bytestring=svg.encode("utf-8")))
+    return pin_creation_date(pdf)
+
+
+def pin_creation_date(pdf: bytes) -> bytes:
+    """``pdf`` with cairo's creation date set to the epoch (same length: the offsets hold)."""
     return _CREATION_DATE.sub(_EPOCH_DATE, pdf, count=1)
 
 

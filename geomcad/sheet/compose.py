@@ -278,6 +278,7 @@ class Node:
         self.group = group
         self._title_w: float | None = None
         self._natural: tuple[float, float] | Literal[False] | None = False
+        self._fixed: dict[bool, tuple[dict[int, float], list[int]]] = {}
 
     def views(self) -> Iterator[View]:
         for it in self.items:
@@ -489,28 +490,39 @@ def _raw_k(v: View, cell: Box) -> float:
     return need if need > 0.0 else 0.0
 
 
-class _Eval:
-    """One candidate layout: cells by view, the scales, the score."""
+#: A laid-out subtree: its views with their leaves, in the order of the tree, and its titled
+#: nodes' boxes. The search joins its subtrees' parts (tuples: a memoised part is shared).
+_Part = tuple[tuple[tuple["View", "_Leaf"], ...], tuple[tuple[Box, "Node"], ...]]
 
-    def __init__(self, field_: Field) -> None:
-        self.field = field_
-        self.cells: dict[int, Box] = {}
-        self.views: dict[int, View] = {}
-        self.leaves: dict[int, _Leaf] = {}
-        self.titles: list[tuple[Box, Node]] = []
 
-    def place(self, v: View, cell: Box) -> None:
-        key = ("leaf", cell, self.field.obstacles)
-        leaf = v._memo.get(key)
-        if leaf is None:
-            parts = _cut(cell, self.field.obstacles)
-            best = max(
+def _place(v: View, cell: Box, obstacles: tuple[Box, ...]) -> _Leaf:
+    """The view's leaf in ``cell``: the part of the cell clear of the obstacles where it does
+    best (computed once per view and cell)."""
+    key = ("leaf", cell, obstacles)
+    leaf: _Leaf | None = v._memo.get(key)
+    if leaf is None:
+        parts = _cut(cell, obstacles)
+        best = (
+            parts[0]
+            if len(parts) == 1
+            else max(
                 parts, key=lambda c: (round(_leaf_score(v, c), 9), (c[2] - c[0]) * (c[3] - c[1]))
             )
-            leaf = v._memo[key] = _Leaf.of(v, best)
-        self.views[id(v)] = v
-        self.cells[id(v)] = leaf.cell
-        self.leaves[id(v)] = leaf
+        )
+        leaf = v._memo[key] = _Leaf.of(v, best)
+    return leaf
+
+
+class _Eval:
+    """One candidate layout: its views' leaves (cells, scales' needs) and titled boxes, by
+    view."""
+
+    def __init__(self, part: _Part) -> None:
+        self.items, titles = part
+        self.titles = list(titles)
+        self.views: dict[int, View] = {id(v): v for v, _ in self.items}
+        self.leaves: dict[int, _Leaf] = {id(v): leaf for v, leaf in self.items}
+        self.cells: dict[int, Box] = {id(v): leaf.cell for v, leaf in self.items}
 
 
 @dataclass(frozen=True)
@@ -612,6 +624,21 @@ def _natural_node(t: Node) -> tuple[float, float] | None:
     return None  # a grid of fixed views shares its box
 
 
+def _fixed(node: Node, horizontal: bool) -> tuple[dict[int, float], list[int]]:
+    """The natural lengths along the split of a node's fixed children, by index, and the
+    indices of the others (asked once per node)."""
+    known = node._fixed.get(horizontal)
+    if known is None:
+        fixed: dict[int, float] = {}
+        for i, it in enumerate(node.items):
+            nat = natural_of(it)
+            if nat is not None:
+                fixed[i] = nat[0] if horizontal else nat[1]
+        flex = [i for i in range(len(node.items)) if i not in fixed]
+        known = node._fixed[horizontal] = (fixed, flex)
+    return known
+
+
 def _split(
     node: Node, box: Box, weights: Sequence[float], horizontal: bool
 ) -> list[tuple[Tree, Box]]:
@@ -622,12 +649,7 @@ def _split(
     length = (x1 - x0) if horizontal else (y1 - y0)
     n = len(node.items)
     free = length - node.gap * (n - 1)
-    fixed: dict[int, float] = {}
-    for i, it in enumerate(node.items):
-        nat = natural_of(it)
-        if nat is not None:
-            fixed[i] = nat[0] if horizontal else nat[1]
-    flex = [i for i in range(n) if i not in fixed]
+    fixed, flex = _fixed(node, horizontal)
     share = free - sum(fixed.values())
     total_w = sum(weights[i] for i in flex) or 1.0
     out = []
@@ -686,11 +708,13 @@ class _Solver:
         #: of the tree is replayed from here.
         self.sub: dict[int, list[int]] = {}
         self._subtree(tree)
-        self.memo: dict[tuple[object, ...], _Eval] = {}
+        self.memo: dict[tuple[object, ...], _Part] = {}
         self.options: dict[tuple[object, ...], list[tuple[float, ...] | int]] = {}
-        self.scored: dict[tuple[object, ...], tuple[_Eval, tuple[float, ...]]] = {}
+        self.scored: dict[tuple[object, ...], tuple[_Part, tuple[float, ...]]] = {}
         #: Layouts scored (for the benchmark and the tests).
         self.evaluations = 0
+        self._choices = [id(nd) for nd in self.nodes if isinstance(nd, Choice)]
+        self._laid_ids: dict[tuple[object, ...], list[int]] = {}
 
     def _collect(self, t: Tree) -> None:
         if isinstance(t, Node):
@@ -747,49 +771,56 @@ class _Solver:
         self.options[(id(nd), fine, cur)] = out
         return out
 
-    def run(self, t: Tree, box: Box, ev: _Eval) -> None:
+    def run(self, t: Tree, box: Box) -> _Part:
+        """The subtree laid out in ``box`` at the current choices (memoised)."""
         if isinstance(t, View):
-            ev.place(t, box)
-            return
+            return ((t, _place(t, box, self.field.obstacles)),), ()
         key = (id(t), box, *(self.choice[i] for i in self.sub[id(t)]))
         part = self.memo.get(key)
         if part is None:
-            part = _Eval(self.field)
-            self._run(t, box, part)
-            self.memo[key] = part
-        ev.views.update(part.views)
-        ev.cells.update(part.cells)
-        ev.leaves.update(part.leaves)
-        ev.titles += part.titles
+            part = self.memo[key] = self._run(t, box)
+        return part
 
-    def _run(self, t: Node, box: Box, ev: _Eval) -> None:
-        if t.title:
-            ev.titles.append((box, t))
+    def _run(self, t: Node, box: Box) -> _Part:
+        titles: tuple[tuple[Box, Node], ...] = ((box, t),) if t.title else ()
         ch = self.choice[id(t)]
         if isinstance(t, Choice):
             assert isinstance(ch, int)
-            self.run(t.items[ch], box, ev)
-            return
+            items, inner = self.run(t.items[ch], box)
+            return items, titles + inner
         if isinstance(t, Grid):
             assert isinstance(ch, int)
             kids = _grid_cells(t, box, ch)
         else:
             assert isinstance(ch, tuple)
             kids = _split(t, box, ch, isinstance(t, Row))
+        items = ()
         for it, cell in kids:
-            self.run(it, cell, ev)
+            more, inner = self.run(it, cell)
+            items += more
+            if inner:
+                titles += inner
+        return items, titles
 
-    def evaluate(self) -> tuple[_Eval, tuple[float, ...]]:
+    def evaluate(self) -> tuple[_Part, tuple[float, ...]]:
         """The layout of the current choices and its score; a set of choices the search
         comes back to (the next round's sweep of an unmoved node) is scored once."""
-        key = tuple(self.choice[id(nd)] for nd in self._active(self.tree))
+        key = tuple(self.choice[i] for i in self._laid())
         done = self.scored.get(key)
         if done is None:
-            ev = _Eval(self.field)
-            self.run(self.tree, self.field.box, ev)
-            done = self.scored[key] = (ev, _score(ev))
+            part = self.run(self.tree, self.field.box)
+            done = self.scored[key] = (part, _score(part))
             self.evaluations += 1
         return done
+
+    def _laid(self) -> list[int]:
+        """The ids of the nodes :meth:`_active` yields, found once per choice of the
+        :class:`Choice` nodes (the only choices that change which nodes are laid out)."""
+        which = tuple(self.choice[i] for i in self._choices)
+        ids = self._laid_ids.get(which)
+        if ids is None:
+            ids = self._laid_ids[which] = [id(nd) for nd in self._active(self.tree)]
+        return ids
 
     def _active(self, t: Tree) -> Iterator[Node]:
         """The nodes the current choices lay out (a :class:`Choice`'s other arrangements are
@@ -800,7 +831,7 @@ class _Solver:
             for it in [t.items[ch]] if isinstance(t, Choice) and isinstance(ch, int) else t.items:
                 yield from self._active(it)
 
-    def _descend(self) -> tuple[_Eval, tuple[float, ...]]:
+    def _descend(self) -> tuple[_Part, tuple[float, ...]]:
         """Coordinate search over the splits and grid shapes, the choices held: in coarse
         steps, then in fine steps near the coarse optimum. Only the nodes laid out are swept,
         in the order of :attr:`nodes` (a node that two arrangements share is swept twice)."""
@@ -836,7 +867,7 @@ class _Solver:
         """The best layout over every combination of the :class:`Choice` nodes' options."""
         choices = [nd for nd in self.nodes if isinstance(nd, Choice)]
         start = dict(self.choice)
-        found: tuple[_Eval, tuple[float, ...]] | None = None
+        found: tuple[_Part, tuple[float, ...]] | None = None
         for combo in itertools.product(*(range(len(c.items)) for c in choices)):
             self.choice = dict(start)
             for c, i in zip(choices, combo, strict=True):
@@ -845,7 +876,7 @@ class _Solver:
             if found is None or sc > found[1]:
                 found = (ev, sc)
         assert found is not None
-        return found[0]
+        return _Eval(found[0])
 
 
 def _scales(ev: _Eval) -> dict[str, Scale]:
@@ -876,23 +907,31 @@ def _fill_of(v: View, cell: Box, k: float) -> float:
     return (cw / k + 2 * v.margin) * (ch / k + 2 * v.margin) / area
 
 
-def _areas(ev: _Eval, scales: Mapping[str, float]) -> dict[str, tuple[float, float]]:
-    """The drawn area (mm²) of each flexible view, a scale group counting once (the sum of its
-    members'), a stretch view's as it really draws; with each one's weight."""
-    out: dict[str, tuple[float, float]] = {}
-    for key, leaf in ev.leaves.items():
-        if leaf.kind == "fixed":
+def _areas2(
+    items: Sequence[tuple[View, _Leaf]], first: Mapping[str, float], second: Mapping[str, float]
+) -> tuple[dict[str, tuple[float, float]], dict[str, tuple[float, float]]]:
+    """The drawn area (mm²) of each flexible view at the scales ``first`` and at ``second``, a
+    scale group counting once (the sum of its members'), a stretch view's as it really draws;
+    with each one's weight."""
+    out1: dict[str, tuple[float, float]] = {}
+    out2: dict[str, tuple[float, float]] = {}
+    small = tol.SHEET_AREA
+    for v, leaf in items:
+        kind = leaf.kind
+        if kind == "fixed":
             continue
-        w = ev.views[key].weight
-        if leaf.kind == "stretch":
-            out[f"#{key}"] = (max(leaf.area, tol.SHEET_AREA), w)
+        w = v.weight
+        if kind == "stretch":
+            out1[f"#{id(v)}"] = out2[f"#{id(v)}"] = (max(leaf.area, small), w)
             continue
-        k = scales[leaf.group]
+        g = leaf.group
         cw, ch = leaf.content
-        area = (cw / k) * (ch / k) if math.isfinite(k) and k > 0.0 and cw > 0.0 else tol.SHEET_AREA
-        prev = out.get(leaf.group, (0.0, 0.0))
-        out[leaf.group] = (prev[0] + max(area, tol.SHEET_AREA), max(prev[1], w))
-    return out
+        for scales, out in ((first, out1), (second, out2)):
+            k = scales[g]
+            area = (cw / k) * (ch / k) if math.isfinite(k) and k > 0.0 and cw > 0.0 else small
+            prev = out.get(g, (0.0, 0.0))
+            out[g] = (prev[0] + max(area, small), max(prev[1], w))
+    return out1, out2
 
 
 def _title_width(v: View) -> float:
@@ -916,19 +955,20 @@ def _node_title_width(node: Node) -> float:
     return node._title_w
 
 
-def _score(ev: _Eval) -> tuple[float, ...]:
+def _score(part: _Part) -> tuple[float, ...]:
     """(−infeasibility, Σ weight·log(drawn area)): larger is better. The sum of logarithms
     shares the field fairly: a view gains only where its drawing grows, so no view keeps a
     large box its drawing does not use while another could grow into it."""
-    bad = sum(leaf.bad for leaf in ev.leaves.values())
-    for cell, node in ev.titles:
+    items, titles = part
+    bad = sum(leaf.bad for _, leaf in items)
+    for cell, node in titles:
         bad += max(0.0, _node_title_width(node) - (cell[2] - cell[0]))
     raw: dict[str, float] = {}
     first: dict[str, View] = {}
-    for key, leaf in ev.leaves.items():
+    for v, leaf in items:
         if leaf.kind == "scaled":
             raw[leaf.group] = max(raw.get(leaf.group, 0.0), leaf.raw_k)
-            first.setdefault(leaf.group, ev.views[key])
+            first.setdefault(leaf.group, v)
     rounded: dict[str, float] = {}
     for g, k in raw.items():
         if not math.isfinite(k):
@@ -943,10 +983,9 @@ def _score(ev: _Eval) -> tuple[float, ...]:
             rounded[g] = math.inf
             continue
     short = 0
-    for key, leaf in ev.leaves.items():
+    for v, leaf in items:
         if leaf.kind != "scaled" or not math.isfinite(rounded[leaf.group]):
             continue
-        v = ev.views[key]
         k = rounded[leaf.group]
         if v.readable > 0.0 and v.readable / k < v.readable_mm:
             bad += v.readable_mm - v.readable / k
@@ -955,8 +994,9 @@ def _score(ev: _Eval) -> tuple[float, ...]:
             short += bisect.bisect_left(leaf.lengths, v.readable_mm * k) - bisect.bisect_right(
                 leaf.lengths, 0.5 * k
             )
-    score_r = sum(w * math.log(a) for a, w in _areas(ev, rounded).values())
-    score_c = sum(w * math.log(a) for a, w in _areas(ev, raw).values())
+    areas_r, areas_c = _areas2(items, rounded, raw)
+    score_r = sum(w * math.log(a) for a, w in areas_r.values())
+    score_c = sum(w * math.log(a) for a, w in areas_c.values())
     return (-round(bad, 6), score_r + 0.1 * score_c - SHORT_COST * short)
 
 
@@ -977,7 +1017,11 @@ def arrange(tree: Tree, field_: Field) -> Layout:
     docstring). :class:`ParameterError` when a view has no room at all."""
     ev = _Solver(tree, field_).solve()
     scales = _scales(ev)
-    lay = Layout(titles=ev.titles, groups={g: s for g, s in scales.items()}, score=_score(ev))
+    lay = Layout(
+        titles=ev.titles,
+        groups={g: s for g, s in scales.items()},
+        score=_score((ev.items, tuple(ev.titles))),
+    )
     for key, v in ev.views.items():
         cell = ev.cells[key]
         top = cell[1] + v.title_room()
@@ -1020,3 +1064,59 @@ def compose(
 def text_width(markup: str, height: float) -> float:
     """The width (mm) of a line of label markup at cap height ``height``."""
     return text_box(parse(markup), height)[0]
+
+
+def least_room(tree: Tree, wants: Mapping[View, float]) -> list[tuple[float, float]]:
+    """The sizes (mm; width, height) of which a box must have one, at least, for every view of
+    ``wants`` to be drawn at its scale (model units per mm) or larger in ``tree``, whatever the
+    search chooses: the wanted views at those scales with their margins and titles, the lengths
+    a split always gives (its fixed children's natural lengths, its gaps, its title), a grid's
+    equal cells in each of its shapes, either arrangement of a :class:`Choice`; everything else
+    as small as it may get, the form's boxes ignored. A necessary test: where no size of the
+    list fits a field, no arrangement there draws the wanted views at their scales."""
+    return _pareto(_least(tree, wants))
+
+
+def _pareto(sizes: Sequence[tuple[float, float]]) -> list[tuple[float, float]]:
+    out: list[tuple[float, float]] = []
+    for w, h in sorted(set(sizes)):
+        if not out or h < out[-1][1]:
+            out.append((w, h))
+    return out
+
+
+def _least(t: Tree, wants: Mapping[View, float]) -> list[tuple[float, float]]:
+    if isinstance(t, View):
+        k = wants.get(t)
+        if k is None:
+            return [(0.0, 0.0)]
+        ext = _ext(t)
+        assert ext is not None
+        k *= 1.0 + tol.REL_LENGTH  # as formats.meets allows
+        w = (ext[2] - ext[0]) / k + 2.0 * t.margin
+        return [(w, (ext[3] - ext[1]) / k + 2.0 * t.margin + t.title_room())]
+    if isinstance(t, Choice):
+        return _pareto([sz for it in t.items for sz in _least(it, wants)])
+    kids = [_least(it, wants) for it in t.items]
+    top = t.title_room()
+    if isinstance(t, Grid):
+        n = len(t.items)
+        out = []
+        for cols in [t.cols] if t.cols else range(1, n + 1):
+            rows = math.ceil(n / cols)
+            # each cell holds one child: the largest least width and height of any child
+            cw = max(min(w for w, _ in kid) for kid in kids)
+            ch = max(min(h for _, h in kid) for kid in kids)
+            out.append((cols * cw + t.gap * (cols - 1), rows * ch + t.gap * (rows - 1) + top))
+        return _pareto(out)
+    horizontal = isinstance(t, Row)
+    fixed, _ = _fixed(t, horizontal)
+    acc = [(t.gap * (len(t.items) - 1), 0.0)]  # (along the split, across it)
+    for i, kid in enumerate(kids):
+        opts = [(w, h) if horizontal else (h, w) for w, h in kid]
+        if i in fixed:  # a fixed child takes its natural length along the split, whatever
+            opts = [(max(fixed[i], a), c) for a, c in opts]
+        acc = _pareto([(a0 + a, max(c0, c)) for a0, c0 in acc for a, c in opts])
+    if horizontal:
+        return _pareto([(a, c + top) for a, c in acc])
+    return _pareto([(c, a + top) for a, c in acc])

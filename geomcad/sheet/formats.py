@@ -29,7 +29,7 @@ from dataclasses import dataclass
 
 from geomcad import tol
 from geomcad.errors import ParameterError
-from geomcad.sheet.compose import Field, Layout, Tree, View, arrange
+from geomcad.sheet.compose import Field, Layout, Tree, View, arrange, least_room
 from geomcad.sheet.drawing import Drawing
 from geomcad.sheet.frame import FORMATS, TitleBlock
 
@@ -103,6 +103,18 @@ def _may_fit(tree: Tree, wants: Mapping[View, float], field: Field) -> bool:
     return need <= area
 
 
+def may_reach(tree: Tree, wants: Mapping[View, float], field: Field) -> bool:
+    """A necessary test before arranging: whether the field's box has room for one of the
+    least sizes at which ``tree`` draws every view of ``wants`` at its scale
+    (:func:`~geomcad.sheet.compose.least_room`). False: no arrangement on this field
+    :func:`meets` the wants, so the search need not run to find that out."""
+    if not wants:
+        return True
+    x0, y0, x1, y1 = field.box
+    fw, fh = x1 - x0 + tol.SHEET_MM, y1 - y0 + tol.SHEET_MM
+    return any(w <= fw and h <= fh for w, h in least_room(tree, wants))
+
+
 def meets(lay: Layout, wants: Mapping[View, float]) -> bool:
     """Whether every wanted view is drawn at its scale or larger."""
     for v, k in wants.items():
@@ -128,7 +140,7 @@ def choose(
     fallback: list[Sized] = []
     for fmt, land in candidates(formats):
         field = Field.of_format(fmt, land)
-        if fmt != largest and not _may_fit(tree, wants, field):
+        if fmt != largest and not (_may_fit(tree, wants, field) and may_reach(tree, wants, field)):
             continue
         try:
             lay = arrange(tree, field)

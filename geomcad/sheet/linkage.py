@@ -111,6 +111,8 @@ def _on(tree: Tree, wants: Mapping[View, float], fmt: str) -> tuple[Tree, format
         v.readable = max(v.readable, k * v.readable_mm)
     fmt, land = next(formats.candidates((fmt,)))
     field = Field.of_format(fmt, land)
+    if not formats.may_reach(tree, wants, field):
+        return None  # no arrangement reaches the wanted scales: the search would say no
     best: tuple[Tree, formats.Sized] | None = None
     for alt in _alternatives(tree):
         try:

@@ -18,7 +18,7 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 from dataclasses import dataclass
-from functools import cache
+from functools import cache, lru_cache
 from importlib import resources
 from pathlib import Path
 
@@ -125,8 +125,10 @@ def literal(text: str) -> str:
     return "".join("\\" + ch if ch in MARKUP_CHARS else ch for ch in text)
 
 
+@lru_cache(maxsize=8192)
 def parse(markup: str) -> tuple[Run, ...]:
-    """Split label markup into runs: ``V_{B3B2}`` → V, B3B2 (sub); ``O_1`` → O, 1 (sub)."""
+    """Split label markup into runs: ``V_{B3B2}`` → V, B3B2 (sub); ``O_1`` → O, 1 (sub).
+    (Runs are frozen: a label drawn again, or measured by the layout and drawn, is parsed once.)"""
     runs: list[Run] = []
     buf: list[str] = []
     i = 0

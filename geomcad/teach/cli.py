@@ -119,7 +119,7 @@ def render_card(
     file_id: str,
 ) -> dict[str, bytes]:
     """One variant's task card rendered to each format (run in a worker process)."""
-    from geomcad.render import to_pdf, to_png, to_svg
+    from geomcad.render import sheet_pdf, to_png, to_svg
     from geomcad.render.files import PNG_DPI
     from geomcad.teach import cards
 
@@ -134,7 +134,7 @@ def render_card(
     if "svg" in formats:
         out["svg"] = svg.encode("utf-8")
     if "pdf" in formats:
-        out["pdf"] = to_pdf(svg)
+        out["pdf"] = sheet_pdf(sheet)
     if "png" in formats:
         out["png"] = to_png(svg, dpi=PNG_DPI)
     return out
@@ -282,9 +282,10 @@ def cmd_variants(ns: argparse.Namespace) -> int:
 
 
 def _sheet_pdf(sheet: Any) -> bytes:
-    from geomcad.render import to_pdf, to_svg
+    from geomcad.render import sheet_pdf
 
-    return to_pdf(to_svg(sheet))
+    pdf: bytes = sheet_pdf(sheet)
+    return pdf
 
 
 def _one_pdf(pdfs: Sequence[bytes]) -> bytes:
