@@ -164,7 +164,9 @@ class SlowIO(io.BytesIO):
             marker.touch()
             time.sleep(0.05)
         return super().write(data)
-cairosvg.surface.io = types.SimpleNamespace(BytesIO=SlowIO)
+cairosvg.surface.io = types.SimpleNamespace(BytesIO=SlowIO)  # PNG (and PDF through cairosvg)
+import geomcad.render.pdf
+geomcad.render.pdf.io = types.SimpleNamespace(BytesIO=SlowIO)  # the PDF drawn from the sheet
 from geomcad.__main__ import run
 sys.argv = ["geomcad", *sys.argv[2:]]
 sys.exit(run())
