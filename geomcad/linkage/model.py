@@ -402,6 +402,19 @@ def _name(where: str, t: Mapping[str, Any], key: str, *, default: str | None = N
     return v.strip()
 
 
+def _working(where: str, t: dict[str, Any], working: str, said: str) -> tuple[str, str]:
+    """A load's ``working``, which must agree with the one ``said`` before (the output has one
+    working stroke): (the working stroke, where it was said)."""
+    w = _word(where, t, "working", ("forward", "backward"), "forward")
+    if said and w != working:
+        raise FileKeyError(
+            f"{where}: working",
+            w,
+            f"disagrees with {said} = {working!r} (the output has one working stroke)",
+        )
+    return w, f"{where}: working"
+
+
 def _word(where: str, t: Mapping[str, Any], key: str, choices: Sequence[str], default: str) -> str:
     label = _label(where, key)
     v = t.get(key, default)
@@ -960,14 +973,7 @@ def _loads(
                     f'the output "{output}" is neither a slider nor a rocker: it has no strokes',
                 )
             if "working" in t:
-                w = _word(where, t, "working", ("forward", "backward"), "forward")
-                if said and w != working:
-                    raise FileKeyError(
-                        f"{where}: working",
-                        w,
-                        f"disagrees with {said} = {working!r} (the output has one working stroke)",
-                    )
-                working, said = w, f"{where}: working"
+                working, said = _working(where, t, working, said)
             out.append(
                 Load(i, link=link, moment=moment, stroke=stroke, on_stroke=on_stroke)  # type: ignore[arg-type]
             )
@@ -985,14 +991,7 @@ def _loads(
         value = _number(t, "value", where, ge=0.0, le=MAX_FORCE, unit="N")
         stroke = _word(where, t, "stroke", ("working", "idle", "both"), "working")
         if point == output and "working" in t:
-            w = _word(where, t, "working", ("forward", "backward"), "forward")
-            if said and w != working:
-                raise FileKeyError(
-                    f"{where}: working",
-                    w,
-                    f"disagrees with {said} = {working!r} (the output has one working stroke)",
-                )
-            working, said = w, f"{where}: working"
+            working, said = _working(where, t, working, said)
         elif "working" in t:
             _word(where, t, "working", ("forward", "backward"), "forward")
         shape = _shape(where, t.get("shape"))
