@@ -13,10 +13,9 @@ plan.
 
 from __future__ import annotations
 
-import itertools
 import math
-from collections.abc import Mapping, Sequence
-from typing import TYPE_CHECKING, Any
+from collections.abc import Mapping
+from typing import TYPE_CHECKING
 
 import numpy as np
 
@@ -38,12 +37,11 @@ from geomcad.sheet.compose import (
 )
 from geomcad.sheet.drawing import SHORT_MM
 from geomcad.sheet.frame import TB_HEIGHT
-from geomcad.sheet.graph import Axis, Graph, nice_step
 from geomcad.sheet.lang import Words, current
-from geomcad.sheet.model import Polyline
 from geomcad.sheet.motion import Frames, turn
 from geomcad.sheet.plans import markup_of
 from geomcad.sheet.scheme import draw_scheme
+from geomcad.sheet.stacked import Stacked, StackedDiagrams
 from geomcad.sheet.text import box as text_box
 from geomcad.sheet.text import parse
 from geomcad.sheet.views import PlanView, Steps, Table, Text, extent_of, num
@@ -74,14 +72,6 @@ PLAN_MARGIN = 4.0
 PLAN_OVER = 6.0
 #: Width (mm) of the plans' vector equations.
 EQUATIONS_W = 150.0
-#: The diagrams' room: left of the φ axis's origin for the tick values and the symbols, right
-#: of its end for the arrow and φ, and each row's room beyond its curve (the arrow, the symbol,
-#: the tick values).
-GRAPH_LEFT = 20.0
-GRAPH_RIGHT = 20.0
-GRAPH_PAD = 15.0
-#: Room (mm) over the diagrams for their sub-title.
-GRAPH_HEAD = 4.0
 #: How far (m) the guide is drawn either side of the slider, as a share of l4.
 GUIDE_EXT = 0.3
 #: A vector shorter than this (mm) is drawn as its end point (it would be all arrowhead).
@@ -163,7 +153,7 @@ class _Kin:
             over_mm=PLAN_OVER,
         )
         self.vnote, self.anote = Spacer((10.0, NOTE_H)), Spacer((10.0, NOTE_H))
-        self.diagrams = _Diagrams(an, m, title=WORDS("diagrams"), weight=2.0)
+        self.diagrams = _diagrams(an, m)
         # the order of construction of each plan, under the plan (ω and ε read off the plans
         # are in the links' table: on an A3 their lines would halve the plans' scales)
         vorder, aorder = ([n for n in p.order if c.step(n).kind != "plan_omega"]
@@ -246,84 +236,20 @@ def _mechanism(v: Viewport, c: Construction, m: SixBar, an: Analysis) -> None:
     v.turn(O1, an.omega1, a1 if an.omega1 > 0 else a1 + 90.0, "ω_1", r_mm=r_w, sweep_deg=90.0)
 
 
-class _Diagrams(View):
-    """s(φ), v(φ), a(φ) stacked in the box the layout gives them, one φ axis scale, φ1
-    marked, the plans' values as dots."""
-
-    def __init__(self, an: Analysis, m: SixBar, **kw: Any) -> None:
-        kw.setdefault("margin", 0.0)
-        super().__init__(**kw)
-        self.an, self.m = an, m
-
-    def stretch(self) -> tuple[tuple[float, float], tuple[float, float]]:
-        return (150.0, 120.0), (240.0, 170.0)
-
-    def used(self, w: float, h: float) -> tuple[float, float]:
-        """The width the φ axis really takes at its rounded factor, and all the height."""
-        room = w - GRAPH_LEFT - GRAPH_RIGHT
-        if room <= 1.0:
-            return 0.0, 0.0
-        k = Axis.fit("φ", "", 0.0, 2.0 * math.pi, room).k
-        return 2.0 * math.pi / k + GRAPH_LEFT + GRAPH_RIGHT, h
-
-    def draw(self, d: Drawing, at: Placed) -> None:
-        _diagrams(d, self.an, self.m, at.inner)
-
-
-def _diagrams(d: Drawing, an: Analysis, m: SixBar, box: tuple[float, float, float, float]) -> None:
-    lang = current()
-    x0, y0, x1, y1 = box
-    gx = (x0 + GRAPH_LEFT, x1 - GRAPH_RIGHT)
-    x_axis = Axis.fit("φ", WORDS("rad"), 0.0, 2.0 * math.pi, gx[1] - gx[0])
+def _diagrams(an: Analysis, m: SixBar) -> StackedDiagrams:
+    """s(φ), v(φ), a(φ) of the slider over a crank turn, φ1 marked, the plans' values as
+    dots."""
     g_dir = m.guide_d.unit()
-    phi1 = an.phi1 % (2.0 * math.pi)
-    s_at = float(np.interp(phi1, an.phi, an.s))
     mark = WORDS("by_plan")
-    curves = (
-        ("S", WORDS("m"), an.s, s_at, ""),
-        ("V_C", WORDS("m_s"), an.v, an.vp["c"].dot(g_dir), mark),
-        ("a_C", WORDS("m_s2"), an.a, an.ap["c"].dot(g_dir), mark),
+    phi1 = an.phi1 % (2.0 * math.pi)
+    rows = (
+        Stacked("S", WORDS("m"), an.s, float(np.interp(phi1, an.phi, an.s))),
+        Stacked("V_C", WORDS("m_s"), an.v, an.vp["c"].dot(g_dir), mark),
+        Stacked("a_C", WORDS("m_s2"), an.a, an.ap["c"].dot(g_dir), mark),
     )
-    d.text(WORDS("diagrams_2", w=num(an.omega1, 4)), (x0, y0 + 2.5), 2.5)
-    top = y0 + GRAPH_HEAD
-    spans = [(min(float(np.min(c[2])), 0.0), max(float(np.max(c[2])), 0.0)) for c in curves]
-    factors = _row_factors([hi - lo for lo, hi in spans], y1 - top)
-    for (sym, unit, ys, at_phi1, label), (lo, hi), k in zip(curves, spans, factors, strict=True):
-        y_axis = Axis(sym, unit, lo, hi, k, sym.split("_")[0])
-        bottom = top + GRAPH_PAD + (hi - lo) / k
-        zero_y = top + 9.0 + y_axis.mm(y_axis.hi)
-        g = Graph(d, x_axis, y_axis, (gx[0], zero_y))
-        g.axes(lang, tick_labels=True)
-        g.curve(an.phi, ys, "result")
-        # φ1 marked from the top of the field down to the axis or the point (not through the
-        # tick values under the axis)
-        xm, y_axis0 = g.p(phi1, 0.0)
-        y_pt = g.p(phi1, float(at_phi1))[1]
-        d.sheet.add(Polyline(((xm, top + 8.0), (xm, max(y_axis0, y_pt))), "construction"))
-        g.point(phi1, float(at_phi1), label)
-        g.factors((gx[0] + 26.0, top + 4.0), lang)
-        top = bottom
-
-
-def _row_factors(ranges: Sequence[float], span: float) -> list[float]:
-    """The diagrams' factors (nice, units per mm): of the few finest each range allows, the
-    choice whose curves, stacked with their rows' room, fill ``span`` mm with the largest
-    least height."""
-    total = span - GRAPH_PAD * len(ranges)
-    options = []
-    for r in ranges:
-        r = r if r > 0.0 else 1.0
-        ks = [nice_step(r / max(total, 1.0))]
-        while len(ks) < 6:
-            ks.append(nice_step(ks[-1] * 1.001))
-        options.append(ks)
-    best: tuple[tuple[float, float], list[float]] | None = None
-    for combo in itertools.product(*options):
-        h = [(r if r > 0.0 else 1.0) / k for r, k in zip(ranges, combo, strict=True)]
-        if best is None or (sum(h) <= total and (min(h), sum(h)) > best[0]):
-            best = ((min(h), sum(h)) if sum(h) <= total else (-1.0, 0.0), list(combo))
-    assert best is not None, "at least one choice"
-    return best[1]
+    return StackedDiagrams("φ", WORDS("rad"), 0.0, 2.0 * math.pi, an.phi, rows, phi1,
+                           heading=WORDS("diagrams_2", w=num(an.omega1, 4)),
+                           title=WORDS("diagrams"), weight=2.0)  # fmt: skip
 
 
 def _panel(an: Analysis, m: SixBar, kv: float, ka: float) -> tuple[View, ...]:

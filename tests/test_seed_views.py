@@ -1,0 +1,70 @@
+"""General views appended for the seed sheets (geomcad.sheet.leaders, stacked, …): each on
+data of its own, not on a seed problem."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from geomcad.geom import Vec
+from geomcad.sheet import Scale, TitleBlock, start
+from geomcad.sheet.compose import Field, Row, arrange, compose
+from geomcad.sheet.leaders import angle_with_leader, crossed, ink
+from geomcad.sheet.model import Polyline, TextItem
+from geomcad.sheet.stacked import ROW_PAD_MM, Stacked, StackedDiagrams, row_factors
+
+
+def test_a_segment_crosses_a_box_only_where_it_runs_through_it() -> None:
+    segs = np.array([[0.0, 0.0, 10.0, 10.0]])
+    assert crossed(segs, (4.0, 4.0, 6.0, 6.0))
+    assert not crossed(segs, (6.0, 0.0, 9.0, 3.0))
+    assert not crossed(np.zeros((0, 4)), (0.0, 0.0, 1.0, 1.0))
+
+
+def test_an_angles_value_stands_clear_of_every_line_drawn_round_it() -> None:
+    d = start("A4", TitleBlock(title="t", designation="d"))
+    v = d.viewport(Scale(0.01, "l"), (0.0, 0.0), (100.0, 150.0))
+    o = Vec(0.0, 0.0)
+    # a fan of links crowding the angle's arc
+    for a in range(0, 91, 10):
+        v.seg(o, Vec.polar(0.4, math.radians(a)), "link")
+    first = len(d.sheet.items)
+    angle_with_leader(v, o, Vec(1.0, 0.0), Vec(0.0, 1.0), "90°", 8.0)
+    texts = [it for it in d.sheet.items[first:] if isinstance(it, TextItem)]
+    assert [t.text for t in texts] == ["90°"]
+    t = texts[0]
+    links = ink([it for it in d.sheet.items[:first] if isinstance(it, Polyline)])
+    # the text's box (at its base line, 2.5 mm high) crosses no link
+    x, y = t.at
+    assert not crossed(links, (x, y - 2.5, x + 4.0, y))
+
+
+def test_row_factors_fill_the_height_with_the_largest_least_row() -> None:
+    ranges = [0.1, 2.0, 40.0]
+    ks = row_factors(ranges, 150.0)
+    heights = [r / k for r, k in zip(ranges, ks, strict=True)]
+    assert sum(heights) <= 150.0 - ROW_PAD_MM * len(ranges)
+    # no finer factor of the smallest row fits with the others
+    i = int(np.argmin(heights))
+    finer = list(ks)
+    finer[i] = ks[i] / 2.0
+    assert sum(r / k for r, k in zip(ranges, finer, strict=True)) > 150.0 - ROW_PAD_MM * 3
+
+
+def test_stacked_diagrams_draw_one_row_per_curve_with_the_mark_on_each() -> None:
+    xs = np.linspace(0.0, 2.0 * math.pi, 73)
+    rows = [Stacked("S", "м", np.sin(xs), math.sin(1.0)),
+            Stacked("V", "м/с", np.cos(xs), math.cos(1.0), "p")]  # fmt: skip
+    view = StackedDiagrams("φ", "рад", 0.0, 2.0 * math.pi, xs, rows, 1.0, heading="h")
+    d = start("A3", TitleBlock(title="t", designation="d"))
+    first = len(d.sheet.items)
+    compose(d, Row(view), layout=arrange(Row(view), Field.of_format("A3")))
+    items = d.finish().items[first:]
+    texts = [it.text for it in items if isinstance(it, TextItem)]
+    assert "h" in texts and "p" in texts
+    marks = [it for it in items if isinstance(it, Polyline)
+             and it.role == "construction" and len(it.points) == 2
+             and it.points[0][0] == it.points[1][0]]  # fmt: skip
+    assert len({round(m.points[0][0], 6) for m in marks}) == 1  # one abscissa down both rows
+    assert len(marks) >= 2
