@@ -6,6 +6,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
+import pytest
 
 from geomcad.geom import Vec
 from geomcad.sheet import Scale, TitleBlock, start
@@ -68,3 +69,36 @@ def test_stacked_diagrams_draw_one_row_per_curve_with_the_mark_on_each() -> None
              and it.points[0][0] == it.points[1][0]]  # fmt: skip
     assert len({round(m.points[0][0], 6) for m in marks}) == 1  # one abscissa down both rows
     assert len(marks) >= 2
+
+
+def test_the_title_blocks_room_is_the_forms_box_with_the_fields_margin() -> None:
+    from geomcad.sheet.compose import FIELD_MARGIN
+    from geomcad.sheet.form import title_block_room
+    from geomcad.sheet.frame import TB_HEIGHT, TB_WIDTH
+
+    assert title_block_room("A3") == (TB_WIDTH + FIELD_MARGIN, TB_HEIGHT + FIELD_MARGIN)
+    assert title_block_room("A1") == title_block_room("A3")
+
+
+def test_an_enlarged_joints_reaction_touches_its_friction_circle_and_rho_is_free() -> None:
+    from geomcad.forces import FrictionCircle
+    from geomcad.geom import Line
+    from geomcad.sheet.friction import FrictionJoint, free_angle
+    from geomcad.sheet.model import ArcItem, CircleItem
+
+    # ρ's direction is the one farthest from every taken direction
+    a = free_angle([Vec(1.0, 0.0), Vec(0.0, 1.0), Vec(-1.0, 0.0)])
+    assert abs(math.remainder(a - math.radians(270.0), 2.0 * math.pi)) < 1e-9
+    fc = FrictionCircle(Vec(0.0, 0.0), rho=0.002, sense=1, r=0.01, name="B")
+    line = Line(Vec(0.0, 0.002), Vec(1.0, 0.0))  # tangent to the friction circle
+    view = FrictionJoint(fc, [Vec(0.05, 0.05)], line, Vec(1.0, 0.0), "R", "ω", 0.02, "B")
+    d = start("A3", TitleBlock(title="t", designation="d"))
+    first = len(d.sheet.items)
+    compose(d, Row(view), layout=arrange(Row(view), Field.of_format("A3")))
+    items = d.finish().items[first:]
+    circles = sorted(it.r for it in items if isinstance(it, CircleItem) and it.r > 1.0)
+    k = circles[-1] / 0.01  # the pin's paper radius over its model radius
+    assert circles[-2] == pytest.approx(0.002 * k)  # ρ drawn to scale
+    texts = [it.text for it in items if isinstance(it, TextItem)]
+    assert {"R", "ρ", "ω", "B"} <= set(texts)
+    assert any(isinstance(it, ArcItem) for it in items)  # the rotation's curved arrow
