@@ -102,3 +102,34 @@ def test_an_enlarged_joints_reaction_touches_its_friction_circle_and_rho_is_free
     texts = [it.text for it in items if isinstance(it, TextItem)]
     assert {"R", "ρ", "ω", "B"} <= set(texts)
     assert any(isinstance(it, ArcItem) for it in items)  # the rotation's curved arrow
+
+
+def test_a_press_scheme_is_not_to_scale_and_names_its_parts() -> None:
+    from geomcad.sheet.drives import Press, PressScheme
+
+    names = {"flywheel": "fw", "motor": "mo", "plate": "pl", "die": "di"}
+    view = PressScheme(names)
+    assert view.extent() == Press().box
+    d = start("A3", TitleBlock(title="t", designation="d"))
+    first = len(d.sheet.items)
+    compose(d, Row(view), layout=arrange(Row(view), Field.of_format("A3")))
+    texts = {it.text for it in d.finish().items[first:] if isinstance(it, TextItem)}
+    assert {"fw", "mo", "pl", "di", "1", "2", "3", "ω"} <= texts
+    assert not any("1:" in t or ":1" in t for t in texts)  # no scale shown
+
+
+def test_a_point_set_off_is_joined_to_its_text_by_a_leader() -> None:
+    from geomcad.sheet.graph import Axis, Graph
+    from geomcad.sheet.graph_notes import set_off
+
+    d = start("A3", TitleBlock(title="t", designation="d"))
+    g = Graph(d, Axis("x", "", 0.0, 10.0, 0.1), Axis("y", "", 0.0, 10.0, 0.1), (50.0, 150.0))
+    first = len(d.sheet.items)
+    set_off(g, 5.0, 5.0, "P", (8.0, 1.2))
+    set_off(g, 2.0, 2.0, "Q", (3.0, -1.4), leader=False)
+    items = d.sheet.items[first:]
+    leaders = [it for it in items if isinstance(it, Polyline)]
+    assert len(leaders) == 1 and leaders[0].points[0] == g.p(5.0, 5.0)
+    texts = {it.text: it.at for it in items if isinstance(it, TextItem)}
+    px, py = g.p(5.0, 5.0)
+    assert texts["P"] == (px + 8.0, py + 1.2)
