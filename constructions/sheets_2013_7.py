@@ -39,7 +39,7 @@ from geomcad.sheet.compose import (
     arrange,
     compose,
 )
-from geomcad.sheet.form import title_block_room
+from geomcad.sheet.form import title_block_room, title_block_spacer
 from geomcad.sheet.friction import FrictionJoint
 from geomcad.sheet.lang import Words, current
 from geomcad.sheet.views import num
@@ -153,7 +153,6 @@ def _tree(sol: Solution[Geometry]) -> tuple[Node, dict[str, View]]:
         weight=2.0,
     )
     corner = title_block_room()
-    low = Spacer((10.0, corner[1]))
     # the middle and the right columns keep the title block's corner free
     tree = Row(
         Column(
@@ -161,7 +160,7 @@ def _tree(sol: Solution[Geometry]) -> tuple[Node, dict[str, View]]:
             joint_row,
             Row(_steps(sol), Spacer((corner[0] - STEPS_CLEAR, 10.0))),
         ),
-        Column(_given(sol), _compare(geo), _results(sol), _note(), low),
+        Column(_given(sol), _compare(geo), _results(sol), _note(), title_block_spacer()),
         weights=(0.82, 0.18),
     )
     return tree, {"mech": mech, "plan6": plan6, "plan2": plan2}

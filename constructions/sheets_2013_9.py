@@ -37,11 +37,11 @@ from geomcad.sheet.compose import (
     arrange,
     compose,
 )
+from geomcad.sheet.form import title_block_spacer
 from geomcad.sheet.graph import Graph, nice_step
 from geomcad.sheet.lang import Words, current
 from geomcad.sheet.loads import damper, ground, moment, spring
 from geomcad.sheet.scale import fmt_column, nice_factor
-from geomcad.sheet.text import wrap
 from geomcad.sheet.views import num
 
 from .dyn_common import Where, draw_loads, facing, load, moment_of, short_note, small
@@ -58,6 +58,9 @@ PANEL_W = 146.0
 DISC = 1.3  # the disc's drawn radius, in units of r
 #: Force arrows on the sheet: the largest force gets at most this many mm.
 FORCE_ROOM_MM = 40.0
+#: The notes under the views: their width and cap height (mm).
+NOTES_W = 200.0
+NOTES_H = 3.0
 #: A load drawn beyond its body keeps this gap (mm) from the body's outline.
 GAP_MM = 3.0
 
@@ -91,13 +94,11 @@ def _unit(u: str) -> str:
 
 
 def _main(sol: Solution[Data]) -> Sheet:
-    data = sol.data
-    tree, views = _main_tree(sol)
+    tree, _views = _main_tree(sol)
     lay = arrange(tree, Field.of_format("A3"))
     k = lay.scale("l")
     d = start("A3", _title(sol, "tb_main", 1, k.ratio_text()))
     compose(d, tree)
-    del data, views
     return d.finish()
 
 
@@ -153,14 +154,12 @@ def _main_views(
         k_F=num(k_F),
     )
     notes = V.Text(
-        lines=[
-            *wrap(
-                WORDS("rod_motion", x=num(data.x), xd=num(data.xd), xdd=num(data.xdd)), 200.0, 3.0
-            ),
-            *wrap(WORDS("forces_at_mu", note=short_note(k_F, data.reactions)), 200.0, 3.0),
+        paragraphs=[
+            WORDS("rod_motion", x=num(data.x), xd=num(data.xd), xdd=num(data.xdd)),
+            WORDS("forces_at_mu", note=short_note(k_F, data.reactions)),
         ],
-        width=200.0,
-        height=3.0,
+        width=NOTES_W,
+        height=NOTES_H,
     )
     left = Column(
         V.Text(lines=[state], height=3.5),
@@ -343,10 +342,8 @@ def _given(sol: Solution[Data], title: str = "given") -> View:
 
 def _paragraphs(head: str, items: list[str], dash: bool = True) -> View:
     """A titled block of paragraphs, each wrapped to the panel's width."""
-    lines: list[str] = []
-    for it in items:
-        lines += wrap(f"– {it}" if dash else it, PANEL_W, 2.5)
-    return V.Text(lines=lines, width=PANEL_W, title=head)
+    pars = [f"– {it}" if dash else it for it in items]
+    return V.Text(paragraphs=pars, width=PANEL_W, title=head)
 
 
 def _panel_main(sol: Solution[Data], data: Data) -> Node:
@@ -389,11 +386,7 @@ def _panel_main(sol: Solution[Data], data: Data) -> Node:
             WORDS("loads_3", mb=small(mb, data.M_t or 1.0, nm, WORDS("M_bal"))),
         ],
     )
-    return Column(_given(sol), results, eq, loads, Spacer((10.0, TITLE_BLOCK_H)))
-
-
-#: The height (mm) the title block takes at the bottom of the field, with its margin.
-TITLE_BLOCK_H = 58.0
+    return Column(_given(sol), results, eq, loads, title_block_spacer())
 
 
 def _motion(sol: Solution[Data]) -> Sheet:
@@ -448,7 +441,7 @@ def _motion(sol: Solution[Data]) -> Sheet:
     table = V.Table(rows, widths=(PANEL_W / 4.0,) * 4, title=WORDS("table_head"))
     deriv = _paragraphs(WORDS("deriv_head"), [WORDS(k) for k in ("deriv_1", "deriv_2", "deriv_3",
                                                                   "deriv_4")])  # fmt: skip
-    right = Column(integ, table, deriv, _given(sol, "given_motion"), Spacer((10.0, TITLE_BLOCK_H)))
+    right = Column(integ, table, deriv, _given(sol, "given_motion"), title_block_spacer())
     # the lower diagram keeps clear of the title block's corner on its right, and the upper one
     # is as wide: one μ_t, their t ticks one above the other
     left = Column(*(Row(dg, Spacer((30.0, 10.0))) for dg in diagrams))

@@ -133,3 +133,9 @@ def test_a_point_set_off_is_joined_to_its_text_by_a_leader() -> None:
     texts = {it.text: it.at for it in items if isinstance(it, TextItem)}
     px, py = g.p(5.0, 5.0)
     assert texts["P"] == (px + 8.0, py + 1.2)
+
+
+def test_the_title_blocks_spacer_is_as_tall_as_its_room() -> None:
+    from geomcad.sheet.form import title_block_room, title_block_spacer
+
+    assert title_block_spacer("A2").natural() == (10.0, title_block_room("A2")[1])
