@@ -39,13 +39,14 @@ from geomcad.sheet.compose import (
     compose,
 )
 from geomcad.sheet.drawing import SHORT_MM
+from geomcad.sheet.form import title_block_spacer
 from geomcad.sheet.graph import Graph
 from geomcad.sheet.lang import Words, current
 from geomcad.sheet.loads import force, ground, moment
 from geomcad.sheet.motion import Frames, turn
-from geomcad.sheet.placer import centre_line
+from geomcad.sheet.reach import drawn_extent
 from geomcad.sheet.scale import fmt_column, nice_factor
-from geomcad.sheet.text import wrap
+from geomcad.sheet.velocities import relative, tip, velocity
 from geomcad.sheet.views import factor, num
 
 from .dyn_common import Where, draw_loads, facing, load, moment_of, short_note, small
@@ -283,44 +284,27 @@ def _plan_values(sol: Solution[Data], data: Data) -> tuple[Vec, Vec, Vec, float]
     return vp.vector("a1"), vp.vector("a2"), vp.vector("c3"), float(sol.construction["ω3"])
 
 
-def _vector(v: Viewport, a: Vec, b: Vec, mm: float, role: str) -> None:
-    """A velocity ``mm`` long at μ_V: an arrow, or its end point if shorter than two arrowheads
-    (a note says so)."""
-    if mm >= SHORT_MM:
-        v.arrow(a, b, role)
-    else:
-        v.dot(b)
-
-
 def _velocities(v: Viewport, sol: Solution[Data], data: Data) -> None:
     """V_A ⊥ OA, V_A2 = V_A1 + V_A2A1 along x, V_D = V_2 at the contact, V_C3 from P; each from
     its point at μ_V, V_D along the contact line below the yoke's bar."""
     p = _p(sol)
     w = data.omega
     kv = sol.scales["v"]
-    km = v.scale.k
     A = data.yoke.pin.point()
     c3 = data.C3
     D = Vec(c3.x, 0.0)
     P = Vec(c3.x, -p["r3"] - p["R3"])
     va, v2, vc, w3 = _plan_values(sol, data)
-
-    def tip(q: Vec, vel: Vec) -> Vec:
-        # a velocity drawn from its point: |V|/μ_V mm, i.e. |V|·μ_l/μ_V metres on the drawing
-        return q + vel * (km / kv)
-
-    for q, vel, name in ((A, va, "V_A"), (A, v2, "V_{A2}"), (D, v2, "V_D = V_2"),
-                         (c3, vc, "V_{C3}")):  # fmt: skip
-        if vel.norm > 0.0:
-            _vector(v, q, tip(q, vel), vel.norm / kv, "result")
-            v.label(tip(q, vel), name, 2.5, prefer=(vel.x, vel.y) if q != D else (0.0, -1.0))
+    velocity(v, A, va, kv, "V_A")
+    velocity(v, A, v2, kv, "V_{A2}")
+    # V_D named under its tip: the yoke's bar is over it
+    velocity(v, D, v2, kv, "V_D = V_2", prefer=(0.0, -1.0))
+    velocity(v, c3, vc, kv, "V_{C3}")
     # V_A2A1 along the slot: from V_A's tip to V_A2's tip
-    if (v2 - va).norm > 0.0:
-        _vector(v, tip(A, va), tip(A, v2), (v2 - va).norm / kv, "construction")
-        v.label(0.5 * (tip(A, va) + tip(A, v2)), "V_{A2A1}", 2.5, prefer=(1.0, 0.0))
+    relative(v, A, va, v2, kv, "V_{A2A1}")
     # the roller's velocities grow linearly from its instantaneous centre P
     if v2.norm > 0.0:
-        v.seg(P, tip(D, v2), "construction")
+        v.seg(P, tip(v, D, v2, kv), "construction")
     v.dot(P)
     v.label(P, "P_3", 2.5, prefer=(1.0, -1.0))
     v.dot(D)
@@ -361,12 +345,8 @@ def _step_lines(sol: Solution[Data], *names: str) -> list[str]:
     return [V.step_text(sol.construction.step(n), WORDS) for n in names]
 
 
-def _notes(items: list[str], width: float = 0.0, dash: bool = False) -> View:
-    width = width or PANEL_W
-    lines: list[str] = []
-    for it in items:
-        lines += wrap(f"– {it}" if dash else it, width, 2.5)
-    return V.Text(lines=lines, width=width)
+def _notes(items: list[str], width: float) -> View:
+    return V.Text(paragraphs=items, width=width)
 
 
 def _results(sol: Solution[Data], names: tuple[str, ...], **kw: Any) -> V.Table:
@@ -406,10 +386,6 @@ def _panel_main(sol: Solution[Data], data: Data, short: bool) -> tuple[Node, Vie
 
 #: The width (mm) of the main sheet's notes (above the title block).
 NOTES_MAIN_W = 180.0
-
-
-#: The height (mm) the title block takes at the bottom of the field, with its margin.
-TITLE_BLOCK_H = 58.0
 
 
 # -- graphs --------------------------------------------------------------------------------------
@@ -514,7 +490,7 @@ def _panel_graphs(sol: Solution[Data], data: Data, ode: tuple[list[float], list[
             for xs, dg in ((np.degrees(phis), 5), (i_pr, 4), (om, 4), (ode[1], 4))]  # fmt: skip
     rows += [list(r) for r in zip(*cols, strict=True)]
     table = V.Table(rows, widths=(GRAPHS_PANEL_W / 4.0,) * 4, title=WORDS("table_head"))
-    return Column(eq, table, Spacer((10.0, TITLE_BLOCK_H)))
+    return Column(eq, table, title_block_spacer())
 
 
 #: The width (mm) of the graphs sheet's right panel.
@@ -539,23 +515,6 @@ def _fbd_boxes(sol: Solution[Data], data: Data) -> dict[str, Box]:
         "3": (c3.x - R3, c3.y - R3, c3.x + R3, c3.y + R3),
         "all": _extent(sol, data),
     }
-
-
-def _reach(box: Box, draw_fn: Callable[[Viewport], None], k: Scale) -> Box:
-    """The model box a view really takes at scale k: its body's ``box`` with the loads, their
-    values and the labels drawn round it at μ_F (paper mm) taken in, measured on a scratch
-    sheet (the loads' arrows have their own scale, so a view's extent depends on k)."""
-    d = start("A3", _tb("tb_fbd", 3))
-    first = len(d.sheet.items)
-    at = (210.0, 148.0)
-    draw_fn(d.viewport(k, (box[0], box[3]), at))
-    sheet = d.finish()
-    x0, y0, x1, y1 = box
-    for it in sheet.items[first:]:
-        bx0, by0, bx1, by1 = centre_line(it).bounds
-        x0, x1 = min(x0, box[0] + (bx0 - at[0]) * k.k), max(x1, box[0] + (bx1 - at[0]) * k.k)
-        y0, y1 = min(y0, box[3] - (by1 - at[1]) * k.k), max(y1, box[3] - (by0 - at[1]) * k.k)
-    return (x0, y0, x1, y1)
 
 
 def _fbd_draw(sol: Solution[Data], data: Data) -> dict[str, Callable[[Viewport], None]]:
@@ -648,9 +607,9 @@ def _fbd_tree(sol: Solution[Data], k: Scale, k3: Scale) -> tuple[Node, dict[str,
     views: dict[str, View] = {}
     # the loads' reach is measured, so the margins only keep the views apart
     for name, key in (("1", "view_1"), ("2", "view_2"), ("all", "view_4")):
-        views[name] = Figure(_reach(boxes[name], draw[name], k), draw[name], title=WORDS(key),
+        views[name] = Figure(drawn_extent(boxes[name], draw[name], k), draw[name], title=WORDS(key),
                              group="fbd", show_scale=False, margin=0.5, weight=3.0)  # fmt: skip
-    views["3"] = Figure(_reach(boxes["3"], draw["3"], k3), draw["3"], margin=0.5,
+    views["3"] = Figure(drawn_extent(boxes["3"], draw["3"], k3), draw["3"], margin=0.5,
                         title=WORDS("view_3", ratio=k3.ratio_text()), show_scale=False)  # fmt: skip
     head = V.Text(lines=[WORDS("head_fbd")], height=5.0)
     state = Column(

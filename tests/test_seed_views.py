@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 from geomcad.geom import Vec
-from geomcad.sheet import Scale, TitleBlock, start
+from geomcad.sheet import Scale, TitleBlock, Viewport, start
 from geomcad.sheet.compose import Field, Row, arrange, compose
 from geomcad.sheet.leaders import angle_with_leader, crossed, ink
 from geomcad.sheet.model import Polyline, TextItem
@@ -139,3 +139,42 @@ def test_the_title_blocks_spacer_is_as_tall_as_its_room() -> None:
     from geomcad.sheet.form import title_block_room, title_block_spacer
 
     assert title_block_spacer("A2").natural() == (10.0, title_block_room("A2")[1])
+
+
+def test_a_velocity_is_drawn_at_its_factor_or_as_its_end_point_when_short() -> None:
+    from geomcad.sheet.drawing import SHORT_MM
+    from geomcad.sheet.model import CircleItem
+    from geomcad.sheet.velocities import relative, tip, velocity
+
+    d = start("A3", TitleBlock(title="t", designation="d"))
+    v = d.viewport(Scale(0.01, "l"), (0.0, 0.0), (100.0, 150.0))
+    a = Vec(0.1, 0.1)
+    assert v.mm((tip(v, a, Vec(2.0, 0.0), 0.1) - a).norm) == pytest.approx(20.0)  # 2 m/s at 0.1
+    first = len(d.sheet.items)
+    velocity(v, a, Vec(2.0, 0.0), 0.1, "V")
+    arrows = [it for it in d.sheet.items[first:] if isinstance(it, Polyline)]
+    reach = max(q[0] for it in arrows for q in it.points)
+    assert reach == pytest.approx(v.p(a)[0] + 20.0)
+    first = len(d.sheet.items)
+    slow = Vec(0.5 * SHORT_MM * 0.1, 0.0)  # half of two arrowheads on the paper
+    velocity(v, a, slow, 0.1, "W")
+    dots = [it for it in d.sheet.items[first:] if isinstance(it, CircleItem)]
+    assert len(dots) == 1 and dots[0].c == pytest.approx(v.p(tip(v, a, slow, 0.1)))
+    first = len(d.sheet.items)
+    velocity(v, a, Vec(0.0, 0.0), 0.1, "0")
+    relative(v, a, Vec(1.0, 0.0), Vec(1.0, 0.0), 0.1, "R")
+    assert len(d.sheet.items) == first  # a point at rest, no relative velocity: nothing drawn
+
+
+def test_a_views_drawn_extent_takes_in_what_it_draws_round_its_body() -> None:
+    from geomcad.sheet.reach import drawn_extent
+
+    box = (0.0, 0.0, 1.0, 1.0)
+
+    def draw(v: Viewport) -> None:
+        v.seg(Vec(0.5, 0.5), Vec(0.5, 0.5) + Vec(v.scale.model(30.0), 0.0), "vector")
+
+    for k in (0.01, 0.02):
+        got = drawn_extent(box, draw, Scale(k, "l"))
+        assert got[:2] == pytest.approx(box[:2]) and got[3] == pytest.approx(box[3])
+        assert got[2] == pytest.approx(max(1.0, 0.5 + 30.0 * k), abs=1e-3 * k + 1e-9)
