@@ -28,17 +28,16 @@ from geomcad.sheet.compose import (
     Column,
     Field,
     Figure,
-    Layout,
     Node,
     Row,
     View,
-    arrange,
     compose,
 )
 from geomcad.sheet.lang import Words, current
 from geomcad.sheet.leaders import angle_with_leader
 from geomcad.sheet.replay import replay
 from geomcad.sheet.scheme import GUIDE_HALF
+from geomcad.sheet.settle import factor_of, settle
 from geomcad.sheet.views import Steps, Table, Text, factor, num
 
 from .sheets_2013_6_kin import kinematics_sheet, six_bar
@@ -94,16 +93,13 @@ class _Main:
         least = SEED_K_L if sol.is_seed else 0.0
         self.view = Figure(extent(geo, c), lambda v: _drawing(v, geo, c), weight=2.0,
                            title=WORDS("title"), least_k=least)  # fmt: skip
-        k = 0.0
-        for _ in range(3):
-            self.tree = Row(self.view, Column(*_panel(sol, k)))
-            self.layout: Layout = arrange(self.tree, Field.of_format("A3"))
-            got = self.layout[self.view].scale
-            assert got is not None
-            if got.k == k:
-                break
-            k = got.k
-        self.k = k
+        s = settle(
+            lambda k: (Row(self.view, Column(*_panel(sol, k))), None),
+            lambda lay, _: factor_of(lay, self.view),
+            0.0,
+            Field.of_format("A3"),
+        )
+        self.tree, self.layout, self.k = s.tree, s.layout, s.key
 
 
 def scales(sol: Solution[Geometry]) -> Mapping[str, float]:

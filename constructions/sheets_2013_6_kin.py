@@ -27,12 +27,10 @@ from geomcad.sheet.compose import (
     Column,
     Field,
     Figure,
-    Layout,
     Placed,
     Row,
     Spacer,
     View,
-    arrange,
     compose,
 )
 from geomcad.sheet.drawing import SHORT_MM
@@ -41,6 +39,7 @@ from geomcad.sheet.lang import Words, current
 from geomcad.sheet.motion import Frames, turn
 from geomcad.sheet.plans import markup_of
 from geomcad.sheet.scheme import draw_scheme
+from geomcad.sheet.settle import factor_of, settle
 from geomcad.sheet.stacked import Stacked, StackedDiagrams
 from geomcad.sheet.text import box as text_box
 from geomcad.sheet.text import parse
@@ -161,15 +160,13 @@ class _Kin:
         self.vorder = Steps(c, EQUATIONS_W, only=vorder, title=WORDS("vorder"))
         self.aorder = Steps(c, EQUATIONS_W, only=aorder, title=WORDS("aorder"))
         self.an, self.m = an, m
-        kv = ka = 0.0
-        for _ in range(3):
-            self.tree = self._tree(kv, ka)
-            self.layout: Layout = arrange(self.tree, Field.of_format(FORMAT))
-            got = (self.layout[self.vplan].scale, self.layout[self.aplan].scale)
-            assert got[0] is not None and got[1] is not None
-            if (got[0].k, got[1].k) == (kv, ka):
-                break
-            kv, ka = got[0].k, got[1].k
+        s = settle(
+            lambda k: (self._tree(*k), None),
+            lambda lay, _: (factor_of(lay, self.vplan), factor_of(lay, self.aplan)),
+            (0.0, 0.0),
+            Field.of_format(FORMAT),
+        )
+        self.tree, self.layout = s.tree, s.layout
 
     def _tree(self, kv: float, ka: float) -> Column:
         panel = Column(*_panel(self.an, self.m, kv, ka))

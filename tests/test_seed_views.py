@@ -178,3 +178,23 @@ def test_a_views_drawn_extent_takes_in_what_it_draws_round_its_body() -> None:
         got = drawn_extent(box, draw, Scale(k, "l"))
         assert got[:2] == pytest.approx(box[:2]) and got[3] == pytest.approx(box[3])
         assert got[2] == pytest.approx(max(1.0, 0.5 + 30.0 * k), abs=1e-3 * k + 1e-9)
+
+
+def test_a_tree_is_built_again_until_its_scales_are_the_ones_it_gets() -> None:
+    from geomcad.sheet.compose import Figure
+    from geomcad.sheet.settle import factor_of, settle
+
+    built: list[float] = []
+
+    def build(k: float) -> tuple[Row, Figure]:
+        built.append(k)
+        # a view whose model grows with the scale it was built for (loads drawn at their μ)
+        fig = Figure((0.0, 0.0, 1.0 + 10.0 * k, 1.0), lambda v: None)
+        return Row(fig), fig
+
+    s = settle(build, factor_of, 0.0, Field.of_format("A3"), rounds=6)
+    assert built[0] == 0.0 and len(built) >= 2
+    assert s.key == factor_of(s.layout, s.parts) == built[-1]  # settled: built with what it got
+    once: list[float] = []
+    settle(lambda k: (once.append(k), build(k))[1], factor_of, 0.0, Field.of_format("A3"), 1)
+    assert once == [0.0]  # at most ``rounds`` builds
