@@ -33,6 +33,7 @@ from geomcad.sheet.compose import (
     Node,
     Row,
     Spacer,
+    Tree,
     View,
     arrange,
     compose,
@@ -42,6 +43,7 @@ from geomcad.sheet.graph import Graph, nice_step
 from geomcad.sheet.lang import Words, current
 from geomcad.sheet.loads import damper, ground, moment, spring
 from geomcad.sheet.scale import fmt_column, nice_factor
+from geomcad.sheet.settle import settle
 from geomcad.sheet.views import num
 
 from .dyn_common import Where, draw_loads, facing, load, moment_of, short_note, small
@@ -61,6 +63,8 @@ FORCE_ROOM_MM = 40.0
 #: The notes under the views: their width and cap height (mm).
 NOTES_W = 200.0
 NOTES_H = 3.0
+#: Room (mm) past the longest load's head for its name.
+LABEL_MM = 6.0
 #: A load drawn beyond its body keeps this gap (mm) from the body's outline.
 GAP_MM = 3.0
 
@@ -113,21 +117,20 @@ def _extents(data: Data, pad: float) -> tuple[Extent, Extent, Extent]:
     return scheme, disc, rod
 
 
-def _main_tree(sol: Solution[Data]) -> tuple[Node, dict[str, View]]:
+def _main_tree(sol: Solution[Data]) -> tuple[Tree, dict[str, View]]:
     """The three views at one GOST scale (the loads' room above and below the disc and the rod
     found by arranging twice: it depends on that scale), the notes under them, the tables and
     the equations on the right, clear of the title block."""
     data = sol.data
     k_F = sol.scales["F"]
-    longest = max(float(sol.results["N_pin"]), float(sol.results["F_spring"])) / k_F + 6.0
-    pad = 0.0
-    for _ in range(3):
-        tree, views = _main_views(sol, _extents(data, pad))
-        k = arrange(tree, Field.of_format("A3")).scale("l").k
-        if abs(longest * k - pad) <= 1e-12:
-            break
-        pad = longest * k
-    return tree, views
+    longest = max(float(sol.results["N_pin"]), float(sol.results["F_spring"])) / k_F + LABEL_MM
+    s = settle(
+        lambda k: _main_views(sol, _extents(data, longest * k)),
+        lambda lay, _: lay.scale("l").k,
+        0.0,
+        Field.of_format("A3"),
+    )
+    return s.tree, s.parts
 
 
 def _main_views(
