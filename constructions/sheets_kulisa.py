@@ -34,6 +34,7 @@ from geomcad.sheet.compose import (
     Node,
     Row,
     Spacer,
+    Tree,
     View,
     arrange,
     compose,
@@ -46,6 +47,7 @@ from geomcad.sheet.loads import force, ground, moment
 from geomcad.sheet.motion import Frames, turn
 from geomcad.sheet.reach import drawn_extent
 from geomcad.sheet.scale import fmt_column, nice_factor
+from geomcad.sheet.settle import settle
 from geomcad.sheet.velocities import relative, tip, velocity
 from geomcad.sheet.views import factor, num
 
@@ -640,21 +642,29 @@ def _width(v: View) -> float:
     return box[2] - box[0]
 
 
-def _fbd_scales(sol: Solution[Data]) -> tuple[Node, dict[str, View], Layout]:
+def _fbd_scales(sol: Solution[Data]) -> tuple[Tree, dict[str, View], Layout]:
     """The tree rebuilt until its scales settle: the loads' arrows are drawn at μ_F, so the
-    room a view needs depends on its length scale."""
-    k, k3 = Scale(0.01, "l"), Scale(0.0025, "l")
-    tree, views = _fbd_tree(sol, k, k3)
-    lay = arrange(tree, Field.of_format("A3"))
-    for _ in range(4):
-        nk, nk3 = lay[views["all"]].scale, lay[views["3"]].scale
-        assert nk is not None and nk3 is not None
-        if (nk.k, nk3.k) == (k.k, k3.k):
-            break
-        k, k3 = nk, nk3
-        tree, views = _fbd_tree(sol, k, k3)
-        lay = arrange(tree, Field.of_format("A3"))
-    return tree, views, lay
+    room a view needs depends on its length scale. It starts from 1:10 for the bodies and
+    1:2.5 for the roller."""
+
+    def got(lay: Layout, views: dict[str, View]) -> tuple[Scale, Scale]:
+        k, k3 = lay[views["all"]].scale, lay[views["3"]].scale
+        assert k is not None and k3 is not None
+        return k, k3
+
+    s = settle(
+        lambda ks: _fbd_tree(sol, *ks),
+        got,
+        (Scale(0.01, "l"), Scale(0.0025, "l")),
+        Field.of_format("A3"),
+        rounds=FBD_ROUNDS,
+        same=lambda a, b: (a[0].k, a[1].k) == (b[0].k, b[1].k),
+    )
+    return s.tree, s.parts, s.layout
+
+
+#: Builds of the free-body sheet at most (its scales settle within them).
+FBD_ROUNDS = 5
 
 
 def _fbd(sol: Solution[Data]) -> Sheet:
