@@ -39,6 +39,7 @@ from geomcad.sheet.compose import (
     compose,
 )
 from geomcad.sheet.form import title_block_spacer
+from geomcad.sheet.free_body import Where, draw_loads, facing, load, moment_of, short_note, small
 from geomcad.sheet.graph import Graph, nice_step
 from geomcad.sheet.lang import Words, current
 from geomcad.sheet.loads import damper, ground, moment, spring
@@ -46,7 +47,6 @@ from geomcad.sheet.scale import fmt_column, nice_factor
 from geomcad.sheet.settle import settle
 from geomcad.sheet.views import num
 
-from .dyn_common import Where, draw_loads, facing, load, moment_of, short_note, small
 from .p2013_9 import ROD, Data
 from .spec_2013_9 import PARAMS, RESULTS
 

@@ -41,6 +41,7 @@ from geomcad.sheet.compose import (
 )
 from geomcad.sheet.drawing import SHORT_MM
 from geomcad.sheet.form import title_block_spacer
+from geomcad.sheet.free_body import Where, draw_loads, facing, load, moment_of, short_note, small
 from geomcad.sheet.graph import Graph
 from geomcad.sheet.lang import Words, current
 from geomcad.sheet.loads import force, ground, moment
@@ -51,7 +52,6 @@ from geomcad.sheet.settle import settle
 from geomcad.sheet.velocities import relative, tip, velocity
 from geomcad.sheet.views import factor, num
 
-from .dyn_common import Where, draw_loads, facing, load, moment_of, short_note, small
 from .p_kulisa import Data, mechanism, sweep, turns
 from .spec_kulisa import PARAMS, PROBLEM, RESULTS
 
