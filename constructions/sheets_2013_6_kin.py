@@ -40,6 +40,7 @@ from geomcad.sheet.motion import Frames, turn
 from geomcad.sheet.plans import markup_of
 from geomcad.sheet.scheme import draw_scheme
 from geomcad.sheet.settle import factor_of, settle
+from geomcad.sheet.short import short_vectors
 from geomcad.sheet.stacked import Stacked, StackedDiagrams
 from geomcad.sheet.text import box as text_box
 from geomcad.sheet.text import parse
@@ -199,13 +200,9 @@ def _short_note(d: Drawing, plan: Plan, at: Placed, room: Placed) -> None:
     two arrowheads, each with its value and length."""
     scale = at.scale
     assert scale is not None
-    short = []
-    for vec in plan.vectors:
-        value = (plan.points[vec.head] - plan.points[vec.tail]).norm
-        mm = scale.mm(value)
-        if 0.0 < mm < SHORT_MM:
-            unit = WORDS("unit_v" if plan.kind == "v" else "unit_a")
-            short.append(f"{vec.label} = {num(value, 3)} {unit} ({num(mm, 2)} {WORDS('mm')})")
+    unit = WORDS("unit_v" if plan.kind == "v" else "unit_a")
+    short = [f"{s.vector.label} = {num(s.value, 3)} {unit} ({num(s.mm, 2)} {WORDS('mm')})"
+             for s in short_vectors(plan, scale)]  # fmt: skip
     if short:
         text = WORDS("short", vectors="; ".join(short), mm=num(SHORT_MM, 2))
         d.paragraph(text, at.box[0], room.box[1] + 2.5, at.box[2] - at.box[0], 2.5)

@@ -49,6 +49,7 @@ from geomcad.sheet.motion import Frames, turn
 from geomcad.sheet.reach import drawn_extent
 from geomcad.sheet.scale import fmt_column, nice_factor
 from geomcad.sheet.settle import settle
+from geomcad.sheet.short import short_vectors
 from geomcad.sheet.velocities import relative, tip, velocity
 from geomcad.sheet.views import factor, num
 
@@ -236,9 +237,7 @@ def _short(sol: Solution[Data], k: Scale | None) -> bool:
     """Whether a vector of the velocity plan at its scale ``k``, or a velocity on the scheme at
     its μ_V, comes out shorter than two arrowheads (drawn as its lettered end point)."""
     assert k is not None
-    plan = sol.data.vplan
-    pts = plan.points
-    if any(k.mm((pts[v.head] - pts[v.tail]).norm) < SHORT_MM for v in plan.vectors):
+    if short_vectors(sol.data.vplan, k, zero=True):
         return True
     va, v2, vc, _ = _plan_values(sol, sol.data)
     kv = sol.scales["v"]

@@ -198,3 +198,20 @@ def test_a_tree_is_built_again_until_its_scales_are_the_ones_it_gets() -> None:
     once: list[float] = []
     settle(lambda k: (once.append(k), build(k))[1], factor_of, 0.0, Field.of_format("A3"), 1)
     assert once == [0.0]  # at most ``rounds`` builds
+
+
+def test_a_plans_short_vectors_are_those_under_two_arrowheads_at_its_scale() -> None:
+    import geomcad
+    from geomcad.sheet.drawing import SHORT_MM
+    from geomcad.sheet.short import short_vectors
+
+    plan = geomcad.solve("kulisa-23110713").data.vplan
+    lengths = [(plan.points[v.head] - plan.points[v.tail]).norm for v in plan.vectors]
+    longest = max(lengths)
+    every = short_vectors(plan, Scale(longest, "v"), zero=True)  # the longest 1 mm long
+    assert len(every) == len(plan.vectors)
+    k = Scale(longest / SHORT_MM * 0.999, "v")  # the longest just over two arrowheads
+    got = short_vectors(plan, k, zero=True)
+    assert all(s.mm < SHORT_MM for s in got)
+    assert len(got) == sum(1 for x in lengths if k.mm(x) < SHORT_MM)
+    assert all(s.mm > 0.0 for s in short_vectors(plan, Scale(longest, "v")))
