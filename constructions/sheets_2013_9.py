@@ -233,14 +233,14 @@ def _scheme(v: Viewport, data: Data) -> None:
     # the rod's coordinate x along its axis, from the spring's free position
     xs = -(DISC + 0.15) * r
     v.arrow((xs, 0.0), (xs, 1.3 * r), "dimension")
-    v.label((xs, 1.3 * r), "x", 3.5, prefer=(-1.0, 0.0))
-    v.label(A, "A", 3.5, prefer=(1.0, -1.0))
-    v.label((0.0, 0.0), "O", 3.5, prefer=(-1.0, -1.0))
-    v.label((-b, 0.5 * (top + gy)), "c", 3.5, prefer=(-1.0, 0.0), clear=3.0)
-    v.label((b, 0.5 * (top + gy)), "k", 3.5, prefer=(1.0, 0.0), clear=3.5)
+    v.label((xs, 1.3 * r), "x", prefer=(-1.0, 0.0))
+    v.label(A, "A", prefer=(1.0, -1.0))
+    v.label((0.0, 0.0), "O", prefer=(-1.0, -1.0))
+    v.label((-b, 0.5 * (top + gy)), "c", prefer=(-1.0, 0.0), clear=3.0)
+    v.label((b, 0.5 * (top + gy)), "k", prefer=(1.0, 0.0), clear=3.5)
     # the links' numbers (GOST 2.770): the disc 1, the rod 2; the frame 0 at its supports
-    v.label(Vec.polar(DISC * r, math.radians(-60.0)), "1", 3.5, prefer=(1.0, -1.0), clear=1.5)
-    v.label((0.0, 0.5 * (x + ROD.frame * r + g0)), "2", 3.5, prefer=(1.0, 0.0), clear=1.5)
+    v.label(Vec.polar(DISC * r, math.radians(-60.0)), "1", prefer=(1.0, -1.0), clear=1.5)
+    v.label((0.0, 0.5 * (x + ROD.frame * r + g0)), "2", prefer=(1.0, 0.0), clear=1.5)
 
 
 def _disc(v: Viewport, data: Data, k_F: float) -> None:
@@ -250,8 +250,8 @@ def _disc(v: Viewport, data: Data, k_F: float) -> None:
     v.seg((0.0, 0.0), A, "link")
     v.joint((0.0, 0.0))
     v.joint(A)
-    v.label(A, "A", 3.5, prefer=(1.0, 1.0))
-    v.label((0.0, 0.0), "O", 3.5, prefer=(-1.0, 1.0))
+    v.label(A, "A", prefer=(1.0, 1.0))
+    v.label((0.0, 0.0), "O", prefer=(-1.0, 1.0))
     # the two moments about O on two radii far apart: the inertia moment's arc open at the
     # lower left, the driving moment's inner arc and its label in that opening
     draw_loads(
@@ -283,7 +283,7 @@ def _rod(v: Viewport, data: Data, k_F: float) -> None:
     A = Vec(r * math.cos(phi), x)
     _crosshead(v, data)
     v.dot(A)
-    v.label(A, "A", 3.5, prefer=(1.0, -1.0))
+    v.label(A, "A", prefer=(1.0, -1.0))
     gm = Vec(0.0, 0.5 * sum(ROD.guide) * r)
     v.dot(gm)
     gap = v.scale.model(GAP_MM)
