@@ -209,9 +209,9 @@ def _numbers(v: Viewport, sol: Solution[Data], data: Data) -> None:
     A = data.yoke.pin.point()
     w = SLOT_W * p["OA"]
     c3 = data.C3
-    v.label(Vec.polar(p["R1"], math.radians(-60.0)), "1", 3.5, prefer=(1.0, -1.0), clear=1.5)
-    v.label((A.x - 2.0 * w, -0.8 * p["OA"]), "2", 3.5, prefer=(-1.0, 0.0), clear=1.5)
-    v.label(c3 + Vec.polar(p["R3"], math.radians(-40.0)), "3", 3.5, prefer=(1.0, -1.0),
+    v.label(Vec.polar(p["R1"], math.radians(-60.0)), "1", prefer=(1.0, -1.0), clear=1.5)
+    v.label((A.x - 2.0 * w, -0.8 * p["OA"]), "2", prefer=(-1.0, 0.0), clear=1.5)
+    v.label(c3 + Vec.polar(p["R3"], math.radians(-40.0)), "3", prefer=(1.0, -1.0),
             clear=1.5)  # fmt: skip
 
 
@@ -310,11 +310,11 @@ def _velocities(v: Viewport, sol: Solution[Data], data: Data) -> None:
     v.label(P, "P_3", 2.5, prefer=(1.0, -1.0))
     v.dot(D)
     v.label(D, "D", 2.5, prefer=(1.0, -1.0))
-    v.label(A, "A", 3.5, prefer=(-1.0, 1.0))
-    v.label((0.0, 0.0), "O", 3.5, prefer=(-1.0, -1.0))
-    v.label(c3, "C_3", 3.5, prefer=(1.0, -1.0))
+    v.label(A, "A", prefer=(-1.0, 1.0))
+    v.label((0.0, 0.0), "O", prefer=(-1.0, -1.0))
+    v.label(c3, "C_3", prefer=(1.0, -1.0))
     v.dot(data.C2)
-    v.label(data.C2, "C_2", 3.5, prefer=(0.0, -1.0))
+    v.label(data.C2, "C_2", prefer=(0.0, -1.0))
     # ω1 and ω3 as curved arrows, the angle φ
     moment(v, (0.0, 0.0), w, 9.0, "ω_1", role="result", start=math.radians(200.0), height=2.5)
     moment(v, c3, w3, 0.55 * v.mm(p["R3"]), "ω_3", role="result", start=math.radians(110.0),
@@ -531,8 +531,8 @@ def _fbd_draw(sol: Solution[Data], data: Data) -> dict[str, Callable[[Viewport],
     # a) the flywheel
     def flywheel(v1: Viewport) -> None:
         _flywheel(v1, sol, data, pivot=False)
-        v1.label(A, "A", 3.5, prefer=(-1.0, 1.0))
-        v1.label((0.0, 0.0), "O", 3.5, prefer=(-1.0, -1.0))
+        v1.label(A, "A", prefer=(-1.0, 1.0))
+        v1.label((0.0, 0.0), "O", prefer=(-1.0, -1.0))
         # the two moments about O on radii far apart, the driving one's label in the inertia
         # moment's opening at the bottom
         draw_loads(v1, R, k_F, "1", {
@@ -548,10 +548,10 @@ def _fbd_draw(sol: Solution[Data], data: Data) -> dict[str, Callable[[Viewport],
     def yoke(v2: Viewport) -> None:
         _yoke(v2, sol, data, guides=False)
         v2.dot(data.C2)
-        v2.label(data.C2, "C_2", 3.5, prefer=(0.0, 1.0))
+        v2.label(data.C2, "C_2", prefer=(0.0, 1.0))
         v2.dot(D)
-        v2.label(D, "D", 3.5, prefer=(1.0, -1.0))
-        v2.label(A, "A", 3.5, prefer=(-1.0, 1.0))
+        v2.label(D, "D", prefer=(1.0, -1.0))
+        v2.label(A, "A", prefer=(-1.0, 1.0))
         r32 = load(R, "2", "R_{32}")
         draw_loads(v2, R, k_F, "2", {
             # the pin's push arrives at A through the frame's outer side, clear of the bar
@@ -569,8 +569,8 @@ def _fbd_draw(sol: Solution[Data], data: Data) -> dict[str, Callable[[Viewport],
         _roller(v3, sol, data, base=False, foot=False)
         for q, name, pref in ((D, "D", (-1.0, 1.0)), (P, "P", (-1.0, -1.0))):
             v3.dot(q)
-            v3.label(q, name, 3.5, prefer=pref)
-        v3.label(c3, "C_3", 3.5, prefer=(-1.0, -1.0))
+            v3.label(q, name, prefer=pref)
+        v3.label(c3, "C_3", prefer=(-1.0, -1.0))
         rim_mm, hub_mm = v3.mm(p["R3"]), v3.mm(p["r3"])
         r_m3 = rim_mm - 8.0 if rim_mm - 8.0 > hub_mm + 6.0 else rim_mm + 4.0
         gap = v3.scale.model(3.0)
@@ -588,8 +588,8 @@ def _fbd_draw(sol: Solution[Data], data: Data) -> dict[str, Callable[[Viewport],
         _yoke(v4, sol, data)
         _roller(v4, sol, data)
         _numbers(v4, sol, data)
-        v4.label((0.0, 0.0), "O", 3.5, prefer=(-1.0, -1.0))
-        v4.label(c3, "C_3", 3.5, prefer=(0.0, -1.0))
+        v4.label((0.0, 0.0), "O", prefer=(-1.0, -1.0))
+        v4.label(c3, "C_3", prefer=(0.0, -1.0))
         moment(v4, (0.0, 0.0), p["M"], 6.0, f"M = {num(abs(p['M']))} {_u('Nm')}", role="result",
                start=math.radians(160.0), height=2.5)  # fmt: skip
         fx = data.static.force("F_x")
