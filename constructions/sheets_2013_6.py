@@ -131,7 +131,8 @@ def main_sheet(sol: Solution[Geometry]) -> tuple[str, Sheet]:
 def _drawing(v: Viewport, geo: Geometry, c: Construction) -> None:
     _construction(v, geo, c)
     _mechanism(v, geo, c)
-    # the angle at B1 last, when every line it must keep clear of is drawn
+    # the angle at B1 last, when every line it must keep clear of is drawn; its arc 12 mm round
+    # B1 (hand-set: outside B1's joint and name, the value goes where the leader finds room)
     angle_with_leader(v, c["B1"], c["B0"], c["O"], "90° – θ", 12.0)
 
 
@@ -141,6 +142,8 @@ def _construction(v: Viewport, geo: Geometry, c: Construction) -> None:
     swing = Arc(Circle(O2, geo.l3), B1.angle - SWING_PAD, B0.angle + SWING_PAD)
     v.arc(swing, "centre")
     # the path's centre line where no link runs along it: left of B0, and past C1's block
+    # (hand-set paper mm: 12 past the outermost point, stopped 4 short of B0's joint, resumed
+    # 8 past C1's block and at least 10 long; GOST 2.303's axes run 2–5 mm past a contour)
     xs = [q.x for q in (c["C0"], c["C1"], c["B"], *(cd.O1 for cd in geo.candidates))]
     y = geo.l3
     left, right = min(xs) - v.scale.model(12.0), max(xs) + v.scale.model(12.0)
@@ -198,6 +201,7 @@ def _mechanism(v: Viewport, geo: Geometry, c: Construction) -> None:
     # the seed's solution: O1B0 and O1B1, the angle θ between them, the crank circle. O1B0
     # and O1B1 are the crank and the rod at the dead centres (A0B0 runs through O1, A1 lies on
     # O1B1): extreme positions, drawn with them below in thin two-dot lines (GOST 2.770)
+    # θ's arc 22 mm round O1 (hand-set: outside O1's support and name and the crank's number)
     v.dim_angle(O1, B0, B1, "θ", r_mm=22.0)
     v.circle(O1, ch.l1, "centre")
     # extreme positions (two-dot lines); the crank and the rod at a dead centre lie on one
@@ -220,6 +224,8 @@ def _mechanism(v: Viewport, geo: Geometry, c: Construction) -> None:
     for a, b in ((C0.x - 0.06 * geo.l4, C.x - half), (C.x + half, C1.x + 0.06 * geo.l4)):
         if b > a:
             v.guide(Vec(a, geo.l3), Vec(b, geo.l3), (0.0, -1.0))
+    # each point's name: (preferred direction, clearance mm), hand-set away from its links and
+    # supports (O1, O2: beside the support's hatching; C: past the slider's block)
     labels = {
         "O2": ((1.0, -1.0), 4.0),
         "O1": ((1.0, -1.0), 4.5),
@@ -244,6 +250,8 @@ def _mechanism(v: Viewport, geo: Geometry, c: Construction) -> None:
     # so that it never runs through the joint
     n = (B0 - O1).unit().perp()  # left of O1 → B0 in the model
     side_a = (A - O1).dot(n)
+    # 12 mm from the line measured (GOST 2.307: at least 10 from the contour), and 6 mm beyond
+    # the pin A where A lies farther out
     off = max(12.0, v.mm(abs(side_a)) + 6.0)
     offset = off if side_a > 0.0 else -off  # dim_linear's offset: left of a → b on the paper
     v.dim_linear(O1, B0, f"O_1B_0 = {num(ch.O1B0 * mm, 4)}", offset=offset, height=2.5)

@@ -111,7 +111,7 @@ def six_bar(
     ends = {"1": ("O1", "A"), "2": ("A", "B"), "3": ("O2", "B"), "4": ("B", "C")}
     at = {"1": 0.5, "2": 0.5, "3": 0.5, "4": 0.5, **(number_at or {})}
     numbers = {n: pts[a] + (pts[b] - pts[a]) * at[n] for n, (a, b) in ends.items()}
-    # the slider's number by its block's top edge
+    # the slider's number by its block's top edge (3 mm: the block's half height)
     numbers["5"] = pts["C"] + along.unit().perp() * v.scale.model(3.0)
     draw_scheme(v, mech, pair_labels={}, link_labels=numbers)
     for name, (pref, clear) in labels.items():
@@ -204,6 +204,8 @@ def _short_note(d: Drawing, plan: Plan, at: Placed, room: Placed) -> None:
     short = [f"{s.vector.label} = {num(s.value, 3)} {unit} ({num(s.mm, 2)} {WORDS('mm')})"
              for s in short_vectors(plan, scale)]  # fmt: skip
     if short:
+        # placed by hand in the room kept under the plan (its text depends on the plan's
+        # factor, known only once the sheet is arranged): one line's rise below the room's top
         text = WORDS("short", vectors="; ".join(short), mm=num(SHORT_MM, 2))
         d.paragraph(text, at.box[0], room.box[1] + 2.5, at.box[2] - at.box[0], 2.5)
 
@@ -215,6 +217,8 @@ def _mechanism(v: Viewport, c: Construction, m: SixBar, an: Analysis) -> None:
     v.circle(O1, m.l1, "centre")
     v.line_over(c["path"], [C - d * ext, C + d * ext], "centre")
     pts = {n: c[n] for n in ("O1", "A", "B", "O2", "C")}
+    # each point's name: (preferred direction, clearance mm), hand-set clear of its joint and
+    # support (C: past the slider's block)
     labels = {
         "O1": ((-1.0, -1.0), 4.0),
         "O2": ((1.0, -1.0), 4.0),
@@ -224,7 +228,7 @@ def _mechanism(v: Viewport, c: Construction, m: SixBar, an: Analysis) -> None:
     }
     six_bar(v, pts, d, labels)
     # ω1's arrow spans 90° just past the crank, outside A's path (inside it the crank's number,
-    # the support and O1's name have the room)
+    # the support and O1's name have the room): 25° ahead of the crank, 4 mm outside A's path
     a1 = math.degrees(an.phi1) + 25.0
     r_w = v.scale.mm(m.l1) + 4.0
     v.turn(O1, an.omega1, a1 if an.omega1 > 0 else a1 + 90.0, "ω_1", r_mm=r_w, sweep_deg=90.0)
