@@ -178,6 +178,7 @@ def _mechanism(v: Viewport, geo: Geometry) -> None:
     _x0, y0, _x1, y1 = extent(geo)
     B, F, D, H = geo.B, geo.F, geo.D, geo.H
     S = Vec(0.0, B.y)  # the sleeve's centre on the shaft
+    # the shaft stops 4 mm inside the view's box, its axis runs 4 mm past it (GOST 2.303)
     over = k.model(4.0)
     # the shaft 7 and its axis, the collar, the sleeve 2 (a slider on the shaft)
     top, bottom = Vec(0.0, y1 - over), Vec(0.0, y0 + over)
@@ -197,11 +198,13 @@ def _mechanism(v: Viewport, geo: Geometry) -> None:
     for fc in (run.fc_B, run.fc_F, run.fc_H):
         if fc.arm > 0.0:
             v.circle(fc.c, fc.arm, "construction")
-    # the lines of action: link 3's (the common tangent), G_6's and F_i's through D, P's, R_76's
+    # the lines of action: link 3's (the common tangent), G_6's and F_i's through D, P's, R_76's,
+    # each run a few mm (6, 8) past its last point so that its end reads as a line, not a side
     ends3 = [run.link3.touch_a, run.link3.touch_b, run.Q]
     v.line_over(run.link3.line, ends3, "result", over=6.0)
     v.seg(D, run.Q, "construction")
-    # F_i's line from D to K and on past K, where the angle β is marked
+    # F_i's line from D to K and on 17 mm past K, where the angle β is marked (its arc 13 mm,
+    # its sides 16 mm long: hand-set, the value outside P's line)
     past = k.model(17.0) * (1.0 if run.K.x >= D.x else -1.0)
     v.seg(D, Vec(run.K.x + past, D.y), "construction")
     v.line_over(run.P_line, [run.Q, run.K], "construction", over=8.0)
@@ -228,7 +231,7 @@ def _mechanism(v: Viewport, geo: Geometry) -> None:
     left = run.K + Vec(-1.0 if u76.x < 0.0 else 1.0, 0.0) * k.model(16.0)
     up = run.K + (u76 if u76.y > 0.0 else -u76) * k.model(16.0)
     v.dim_angle(run.K, left, up, f"β = {fmt_number(math.degrees(run.beta), digits=3)}°", 13.0, 2.5)
-    # labels
+    # labels: preferred direction and clearance (mm), hand-set clear of the friction circles
     v.label(H, "H", prefer=(1.0, 1.0), clear=3.0)
     v.label(F, "F", prefer=(1.0, 0.0), clear=3.0)
     v.label(B, "B", prefer=(1.0, -1.0), clear=3.0)
