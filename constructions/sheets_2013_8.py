@@ -98,7 +98,7 @@ def _load_diagram(data: Data) -> Diagram:
         g.curve(list(data.s), ks, "result")
         # the peak and the plate's thickness named inside the field, clear of the tick values;
         # hand-set offset (mm): right of the peak and just under it, where the label keeps off
-        # the axis's title above it (the label placer put it into the title)
+        # the axis's title above it (an earlier placement ran it into the title)
         set_off(g, 0.0, f_max, f"F_{{max}} = {num(f_max)} {WORDS('kN')}", (8.0, 1.2))
         g.point(h, 0.0, "s = h", prefer=(0.0, -1.0))
         # the work written on the hatched triangle's hypotenuse, hand-set (mm) from its middle
