@@ -111,6 +111,8 @@ def _extents(data: Data, pad: float) -> tuple[Extent, Extent, Extent]:
     below the disc and the rod is room for their loads at μ_F."""
     r, x = data.r, data.x
     half = max(DISC, ROD.slot_half + ROD.frame) * r
+    # the scheme's box: the disc with room (in units of r) left of it for the coordinate x's
+    # arrow, under it for O's support, over the support of the spring and the damper
     scheme = (-(DISC + 0.25) * r, -(DISC + 0.1) * r, half, (ROD.ground + 0.15) * r)
     disc = (-DISC * r, -DISC * r - pad, DISC * r, DISC * r + pad)
     rod = (-half, x - ROD.frame * r - pad, half, x + ROD.top * r + pad)
@@ -167,7 +169,7 @@ def _main_views(
     left = Column(
         V.Text(lines=[state], height=3.5),
         Row(*figs, title=WORDS("views_head"), group="l", title_height=3.5),
-        Row(notes, Spacer((20.0, 10.0))),
+        Row(notes, Spacer((20.0, 10.0))),  # the notes kept 20 mm short of the panel
         weights=(1.0, 0.86, 0.14),
     )
     tree = Row(left, _panel_main(sol, data), weights=(0.62, 0.38))
@@ -214,7 +216,7 @@ def _scheme(v: Viewport, data: Data) -> None:
     _crosshead(v, data)
     # the fixed guide: two bushings either side of the stem
     g0, g1 = ROD.guide[0] * r, ROD.guide[1] * r
-    gap = v.scale.model(1.2)
+    gap = v.scale.model(1.2)  # the bushings 1.2 mm off the stem: the stem reads as free in them
     for s in (-1.0, 1.0):
         ground(v, (s * gap, g0), (s * gap, g1), (s, 0.0))
     # the spring (left) and the damper (right) between the crossbar and the support
@@ -223,19 +225,22 @@ def _scheme(v: Viewport, data: Data) -> None:
     b = ROD.bar_half * r
     spring(v, (-b, top), (-b, gy))
     damper(v, (b, top), (b, gy))
+    # the support under the spring and the damper, a little wider than the crossbar
     ground(v, (-1.3 * b - 0.1 * r, gy), (1.3 * b + 0.1 * r, gy), (0.0, 1.0))
     v.pivot((0.0, 0.0))
     v.joint(A)
     rho = phi_arc_radius(data, v.scale)
     v.dim_angle((0.0, 0.0), (rho, 0.0), A, "φ", r_mm=v.mm(rho), height=2.5)
     v.seg((0.0, 0.0), (1.25 * DISC * r, 0.0), "centre")
+    # M(t) on a 5 mm arc about O from 150° (hand-set: above O's support, under the arc of φ)
     moment(v, (0.0, 0.0), data.M_t, 5.0, "M(t)", role="vector", start=math.radians(150.0))
-    # the rod's coordinate x along its axis, from the spring's free position
+    # the rod's coordinate x along its axis, from the spring's free position, left of the disc
     xs = -(DISC + 0.15) * r
     v.arrow((xs, 0.0), (xs, 1.3 * r), "dimension")
     v.label((xs, 1.3 * r), "x", prefer=(-1.0, 0.0))
     v.label(A, "A", prefer=(1.0, -1.0))
     v.label((0.0, 0.0), "O", prefer=(-1.0, -1.0))
+    # the spring's and the damper's constants beside their symbols' middles, clear of the coils
     v.label((-b, 0.5 * (top + gy)), "c", prefer=(-1.0, 0.0), clear=3.0)
     v.label((b, 0.5 * (top + gy)), "k", prefer=(1.0, 0.0), clear=3.5)
     # the links' numbers (GOST 2.770): the disc 1, the rod 2; the frame 0 at its supports
