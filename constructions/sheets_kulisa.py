@@ -175,6 +175,8 @@ def _yoke(v: Viewport, sol: Solution[Data], data: Data, guides: bool = True) -> 
         "link",
     )  # fmt: skip
     if guides:
+        # the bar's two guides over it, at a third and two thirds of its free length (a scheme:
+        # the problem gives no guide positions)
         for gx in (0.35, 0.7):
             xg = xa + 2 * w + gx * (xd - xa - 2 * w)
             half = 0.08 * (xd - xa)
@@ -209,6 +211,8 @@ def _numbers(v: Viewport, sol: Solution[Data], data: Data) -> None:
     A = data.yoke.pin.point()
     w = SLOT_W * p["OA"]
     c3 = data.C3
+    # each number at its link's outline where no other link runs: the flywheel's rim low right,
+    # the yoke's frame low left, the roller's rim low right
     v.label(Vec.polar(p["R1"], math.radians(-60.0)), "1", prefer=(1.0, -1.0), clear=1.5)
     v.label((A.x - 2.0 * w, -0.8 * p["OA"]), "2", prefer=(-1.0, 0.0), clear=1.5)
     v.label(c3 + Vec.polar(p["R3"], math.radians(-40.0)), "3", prefer=(1.0, -1.0),
@@ -315,12 +319,14 @@ def _velocities(v: Viewport, sol: Solution[Data], data: Data) -> None:
     v.label(c3, "C_3", prefer=(1.0, -1.0))
     v.dot(data.C2)
     v.label(data.C2, "C_2", prefer=(0.0, -1.0))
-    # ω1 and ω3 as curved arrows, the angle φ
+    # ω1 and ω3 as curved arrows, the angle φ: hand-set where the links leave room, ω1 on a
+    # 9 mm arc from 200° (left of O, clear of the crank and the yoke's bar), ω3 inside the
+    # roller's rim from 110° (clear of the yoke's foot at the top)
     moment(v, (0.0, 0.0), w, 9.0, "ω_1", role="result", start=math.radians(200.0), height=2.5)
     moment(v, c3, w3, 0.55 * v.mm(p["R3"]), "ω_3", role="result", start=math.radians(110.0),
            height=2.5)  # fmt: skip
     v.seg((0.0, 0.0), (0.6 * p["R1"], 0.0), "centre")
-    # the φ arc under the yoke's bar (and outside ω1's arrow)
+    # the φ arc under the yoke's bar (2.5 mm under it) and outside ω1's arrow (at least 12 mm)
     r_phi = max(12.0, min(0.45 * v.mm(p["OA"]), v.mm(bar_level(p)) - 2.5))
     v.dim_angle((0.0, 0.0), (p["OA"], 0.0), A, "φ", r_mm=r_phi, height=2.5)
 
@@ -436,7 +442,7 @@ def _graphs(sol: Solution[Data]) -> Sheet:
     )
     # both diagrams as wide (the lower one clear of the title block's corner): one μ_φ, their φ
     # ticks one above the other
-    left = Column(Row(d1, Spacer((30.0, 10.0))), Row(d2, Spacer((30.0, 10.0))))
+    left = Column(Row(d1, Spacer((30.0, 10.0))), Row(d2, Spacer((30.0, 10.0))))  # 30 mm free
     tree = Row(left, _panel_graphs(sol, data, ode), weights=(0.6, 0.4))
     d = start("A3", _tb("tb_graphs", 2))
     compose(d, tree)
@@ -572,6 +578,7 @@ def _fbd_draw(sol: Solution[Data], data: Data) -> dict[str, Callable[[Viewport],
             v3.label(q, name, prefer=pref)
         v3.label(c3, "C_3", prefer=(-1.0, -1.0))
         rim_mm, hub_mm = v3.mm(p["R3"]), v3.mm(p["r3"])
+        # M_Φ3's arc 8 mm inside the rim where 6 mm clear of the hub, else 4 mm outside it
         r_m3 = rim_mm - 8.0 if rim_mm - 8.0 > hub_mm + 6.0 else rim_mm + 4.0
         gap = v3.scale.model(3.0)
         draw_loads(v3, R, k_F, "3", {
