@@ -17,12 +17,8 @@ strings/<lang>/sheets_2013_6.toml).
 
 from __future__ import annotations
 
-import itertools
-import math
-from collections.abc import Mapping, Sequence
-from typing import TYPE_CHECKING, Any
-
-import numpy as np
+from collections.abc import Mapping
+from typing import TYPE_CHECKING
 
 from geomcad.construction import Construction
 from geomcad.geom import Arc, Circle, Vec, circle_circle
@@ -32,19 +28,16 @@ from geomcad.sheet.compose import (
     Column,
     Field,
     Figure,
-    Layout,
     Node,
     Row,
     View,
-    arrange,
     compose,
 )
 from geomcad.sheet.lang import Words, current
-from geomcad.sheet.model import ArcItem, CircleItem, Polyline
+from geomcad.sheet.leaders import angle_with_leader
 from geomcad.sheet.replay import replay
 from geomcad.sheet.scheme import GUIDE_HALF
-from geomcad.sheet.text import box as text_box
-from geomcad.sheet.text import parse
+from geomcad.sheet.settle import factor_of, settle
 from geomcad.sheet.views import Steps, Table, Text, factor, num
 
 from .sheets_2013_6_kin import kinematics_sheet, six_bar
@@ -100,16 +93,13 @@ class _Main:
         least = SEED_K_L if sol.is_seed else 0.0
         self.view = Figure(extent(geo, c), lambda v: _drawing(v, geo, c), weight=2.0,
                            title=WORDS("title"), least_k=least)  # fmt: skip
-        k = 0.0
-        for _ in range(3):
-            self.tree = Row(self.view, Column(*_panel(sol, k)))
-            self.layout: Layout = arrange(self.tree, Field.of_format("A3"))
-            got = self.layout[self.view].scale
-            assert got is not None
-            if got.k == k:
-                break
-            k = got.k
-        self.k = k
+        s = settle(
+            lambda k: (Row(self.view, Column(*_panel(sol, k))), None),
+            lambda lay, _: factor_of(lay, self.view),
+            0.0,
+            Field.of_format("A3"),
+        )
+        self.tree, self.layout, self.k = s.tree, s.layout, s.key
 
 
 def scales(sol: Solution[Geometry]) -> Mapping[str, float]:
@@ -141,8 +131,9 @@ def main_sheet(sol: Solution[Geometry]) -> tuple[str, Sheet]:
 def _drawing(v: Viewport, geo: Geometry, c: Construction) -> None:
     _construction(v, geo, c)
     _mechanism(v, geo, c)
-    # the angle at B1 last, when every line it must keep clear of is drawn
-    _angle_with_leader(v, c["B1"], c["B0"], c["O"], "90° – θ", 12.0)
+    # the angle at B1 last, when every line it must keep clear of is drawn; its arc 12 mm round
+    # B1 (hand-set: outside B1's joint and name, the value goes where the leader finds room)
+    angle_with_leader(v, c["B1"], c["B0"], c["O"], "90° – θ", 12.0)
 
 
 def _construction(v: Viewport, geo: Geometry, c: Construction) -> None:
@@ -151,6 +142,8 @@ def _construction(v: Viewport, geo: Geometry, c: Construction) -> None:
     swing = Arc(Circle(O2, geo.l3), B1.angle - SWING_PAD, B0.angle + SWING_PAD)
     v.arc(swing, "centre")
     # the path's centre line where no link runs along it: left of B0, and past C1's block
+    # (hand-set paper mm: 12 past the outermost point, stopped 4 short of B0's joint, resumed
+    # 8 past C1's block and at least 10 long; GOST 2.303's axes run 2–5 mm past a contour)
     xs = [q.x for q in (c["C0"], c["C1"], c["B"], *(cd.O1 for cd in geo.candidates))]
     y = geo.l3
     left, right = min(xs) - v.scale.model(12.0), max(xs) + v.scale.model(12.0)
@@ -196,118 +189,6 @@ def _construction(v: Viewport, geo: Geometry, c: Construction) -> None:
     v.dot(c["Γ"].c, "construction")
 
 
-def _ink(items: Sequence[Any]) -> np.ndarray:
-    """The drawn lines of ``items`` as paper segments (x1, y1, x2, y2): polylines by their
-    sides, circles and arcs by chords of at most about 1.5 mm."""
-    out: list[tuple[float, float, float, float]] = []
-    for it in items:
-        if isinstance(it, Polyline):
-            pts = [*it.points, *([it.points[0]] if it.closed else [])]
-            out += [(*a, *b) for a, b in itertools.pairwise(pts)]
-        elif isinstance(it, CircleItem | ArcItem):
-            if isinstance(it, CircleItem):
-                a0, sweep = 0.0, 2.0 * math.pi
-            else:
-                a0 = math.atan2(it.start[1] - it.c[1], it.start[0] - it.c[0])
-                sweep = it.sweep
-            n = max(8, int(abs(sweep) * it.r / 1.5) + 1)
-            t = a0 + np.linspace(0.0, sweep, n + 1)
-            xs, ys = it.c[0] + it.r * np.cos(t), it.c[1] + it.r * np.sin(t)
-            out += [(xs[i], ys[i], xs[i + 1], ys[i + 1]) for i in range(n)]
-    return np.array(out, dtype=np.float64).reshape(-1, 4)
-
-
-def _crossed(segs: np.ndarray, b: tuple[float, float, float, float]) -> bool:
-    """Whether a segment crosses or lies in the box b = (x0, y0, x1, y1) (Liang–Barsky, all
-    segments at once)."""
-    if segs.size == 0:
-        return False
-    x1, y1, x2, y2 = segs.T
-    dx, dy = x2 - x1, y2 - y1
-    t0, t1 = np.zeros_like(x1), np.ones_like(x1)
-    ok = np.ones(x1.shape, dtype=bool)
-    for p, q in ((-dx, x1 - b[0]), (dx, b[2] - x1), (-dy, y1 - b[1]), (dy, b[3] - y1)):
-        zero = p == 0.0
-        ok &= ~(zero & (q < 0.0))
-        r = q / np.where(zero, 1.0, p)
-        t0 = np.where(~zero & (p < 0.0), np.maximum(t0, r), t0)
-        t1 = np.where(~zero & (p > 0.0), np.minimum(t1, r), t1)
-    return bool(np.any(ok & (t0 <= t1)))
-
-
-def _angle_with_leader(
-    v: Viewport, vertex: Vec, p1: Vec, p2: Vec, text: str, r_mm: float, height: float = 2.5
-) -> None:
-    """An angle's arc at ``vertex`` whose value stands where no line crosses it, as near the
-    arc as that allows, joined to the arc's middle by a thin leader when it stands apart (the
-    angle at B1 sits among the links and the construction, where no place beside it is free)."""
-    v.dim_angle(vertex, p1, p2, text, r_mm=r_mm, height=height)
-    mid = v.d.pending.pop().anchor  # the arc's middle; the value is placed here instead
-    w, rise, down = text_box(parse(text), height)
-    segs = _ink(v.sheet.items)
-    links = _ink([it for it in v.sheet.items if it.role in ("link", "joint")])
-    # the arc's points on the paper, its middle first (as dim_angle draws it)
-    a1, a2 = (p1 - vertex).angle, (p2 - vertex).angle
-    sweep = math.remainder(a2 - a1, 2.0 * math.pi)
-    start, sweep = (a1, sweep) if sweep > 0 else (a2, -sweep)
-    c = v.p(vertex)
-    on_arc = [
-        (c[0] + r_mm * math.cos(start + sweep * t), c[1] - r_mm * math.sin(start + sweep * t))
-        for t in (0.5, 0.35, 0.65, 0.2, 0.8)
-    ]
-    # the dimensions' texts, placed at the finish, keep the places they would take now (the
-    # first candidate that crosses no line): each as a disc round its text's middle
-    # the dimensions' texts are placed at the finish, anywhere along their lines: every place
-    # they may take is kept free (a disc round the text's middle at each candidate)
-    dims = []
-    for dt in v.d.dims:
-        dw, rise = dt.box[0], dt.box[1]
-        for at in dt.candidates:
-            dims.append((at[0] + dt.t[0] * dw / 2.0, at[1] + dt.t[1] * dw / 2.0, rise + 1.0))
-
-    def near_dim(x: float, y: float, pad: float) -> bool:
-        return any(math.hypot(x - dx, y - dy) < rr + pad for dx, dy, rr in dims)
-
-    best = None
-    for r in (3.0, 5.0, 7.0, 9.0, 12.0, 15.0, 18.0, 22.0, 27.0, 33.0, 40.0):
-        for p0 in on_arc:
-            out = math.atan2(-(p0[1] - c[1]), p0[0] - c[0])  # outward through the arc
-            for k in sorted(
-                range(24), key=lambda k: abs(math.remainder(k * math.pi / 12.0 - out, 2 * math.pi))
-            ):
-                a = k * math.pi / 12.0
-                cx, cy = p0[0] + r * math.cos(a), p0[1] - r * math.sin(a)
-                box = (cx - w / 2.0 - 0.8, cy - rise / 2.0 - 0.8, cx + w / 2.0 + 0.8,
-                       cy + rise / 2.0 + down + 0.8)  # fmt: skip
-                if _crossed(segs, box) or near_dim(cx, cy, w / 2.0):
-                    continue
-                # the leader crosses no link (thin lines it may)
-                steps = [(p0[0] + (cx - p0[0]) * t / 80.0, p0[1] + (cy - p0[1]) * t / 80.0)
-                         for t in range(81)]  # fmt: skip
-                if not any(_crossed(links, (x - 0.3, y - 0.3, x + 0.3, y + 0.3))
-                           or near_dim(x, y, 0.5) for x, y in steps):  # fmt: skip
-                    best, mid = (cx, cy), p0
-                    break
-            if best is not None:
-                break
-        if best is not None:
-            break
-    if best is None:  # nowhere free: beside the arc as the label placer would
-        v.d.label(mid, text, height, clear=0.5)
-        return
-    cx, cy = best
-    if math.dist(best, mid) > w / 2.0 + 2.0:
-        # the leader from the arc to the nearer end of the text's underline
-        end = (
-            (cx - w / 2.0, cy + rise / 2.0 + 0.6)
-            if mid[0] < cx
-            else (cx + w / 2.0, cy + rise / 2.0 + 0.6)
-        )
-        v.sheet.add(Polyline((mid, end), "dimension"))
-        v.sheet.add(Polyline(((cx - w / 2.0, end[1]), (cx + w / 2.0, end[1])), "dimension"))
-    v.d.text(text, (cx - w / 2.0, cy + rise / 2.0), height)
-
-
 def _mechanism(v: Viewport, geo: Geometry, c: Construction) -> None:
     O2, B, C, B0, B1, C0, C1 = (c[n] for n in ("O2", "B", "C", "B0", "B1", "C0", "C1"))
     ch = geo.chosen
@@ -320,6 +201,7 @@ def _mechanism(v: Viewport, geo: Geometry, c: Construction) -> None:
     # the seed's solution: O1B0 and O1B1, the angle θ between them, the crank circle. O1B0
     # and O1B1 are the crank and the rod at the dead centres (A0B0 runs through O1, A1 lies on
     # O1B1): extreme positions, drawn with them below in thin two-dot lines (GOST 2.770)
+    # θ's arc 22 mm round O1 (hand-set: outside O1's support and name and the crank's number)
     v.dim_angle(O1, B0, B1, "θ", r_mm=22.0)
     v.circle(O1, ch.l1, "centre")
     # extreme positions (two-dot lines); the crank and the rod at a dead centre lie on one
@@ -342,6 +224,8 @@ def _mechanism(v: Viewport, geo: Geometry, c: Construction) -> None:
     for a, b in ((C0.x - 0.06 * geo.l4, C.x - half), (C.x + half, C1.x + 0.06 * geo.l4)):
         if b > a:
             v.guide(Vec(a, geo.l3), Vec(b, geo.l3), (0.0, -1.0))
+    # each point's name: (preferred direction, clearance mm), hand-set away from its links and
+    # supports (O1, O2: beside the support's hatching; C: past the slider's block)
     labels = {
         "O2": ((1.0, -1.0), 4.0),
         "O1": ((1.0, -1.0), 4.5),
@@ -366,6 +250,8 @@ def _mechanism(v: Viewport, geo: Geometry, c: Construction) -> None:
     # so that it never runs through the joint
     n = (B0 - O1).unit().perp()  # left of O1 → B0 in the model
     side_a = (A - O1).dot(n)
+    # 12 mm from the line measured (GOST 2.307: at least 10 from the contour), and 6 mm beyond
+    # the pin A where A lies farther out
     off = max(12.0, v.mm(abs(side_a)) + 6.0)
     offset = off if side_a > 0.0 else -off  # dim_linear's offset: left of a → b on the paper
     v.dim_linear(O1, B0, f"O_1B_0 = {num(ch.O1B0 * mm, 4)}", offset=offset, height=2.5)

@@ -13,10 +13,9 @@ plan.
 
 from __future__ import annotations
 
-import itertools
 import math
-from collections.abc import Mapping, Sequence
-from typing import TYPE_CHECKING, Any
+from collections.abc import Mapping
+from typing import TYPE_CHECKING
 
 import numpy as np
 
@@ -28,22 +27,21 @@ from geomcad.sheet.compose import (
     Column,
     Field,
     Figure,
-    Layout,
     Placed,
     Row,
     Spacer,
     View,
-    arrange,
     compose,
 )
 from geomcad.sheet.drawing import SHORT_MM
 from geomcad.sheet.frame import TB_HEIGHT
-from geomcad.sheet.graph import Axis, Graph, nice_step
 from geomcad.sheet.lang import Words, current
-from geomcad.sheet.model import Polyline
 from geomcad.sheet.motion import Frames, turn
 from geomcad.sheet.plans import markup_of
 from geomcad.sheet.scheme import draw_scheme
+from geomcad.sheet.settle import factor_of, settle
+from geomcad.sheet.short import short_vectors
+from geomcad.sheet.stacked import Stacked, StackedDiagrams
 from geomcad.sheet.text import box as text_box
 from geomcad.sheet.text import parse
 from geomcad.sheet.views import PlanView, Steps, Table, Text, extent_of, num
@@ -74,14 +72,6 @@ PLAN_MARGIN = 4.0
 PLAN_OVER = 6.0
 #: Width (mm) of the plans' vector equations.
 EQUATIONS_W = 150.0
-#: The diagrams' room: left of the φ axis's origin for the tick values and the symbols, right
-#: of its end for the arrow and φ, and each row's room beyond its curve (the arrow, the symbol,
-#: the tick values).
-GRAPH_LEFT = 20.0
-GRAPH_RIGHT = 20.0
-GRAPH_PAD = 15.0
-#: Room (mm) over the diagrams for their sub-title.
-GRAPH_HEAD = 4.0
 #: How far (m) the guide is drawn either side of the slider, as a share of l4.
 GUIDE_EXT = 0.3
 #: A vector shorter than this (mm) is drawn as its end point (it would be all arrowhead).
@@ -121,7 +111,7 @@ def six_bar(
     ends = {"1": ("O1", "A"), "2": ("A", "B"), "3": ("O2", "B"), "4": ("B", "C")}
     at = {"1": 0.5, "2": 0.5, "3": 0.5, "4": 0.5, **(number_at or {})}
     numbers = {n: pts[a] + (pts[b] - pts[a]) * at[n] for n, (a, b) in ends.items()}
-    # the slider's number by its block's top edge
+    # the slider's number by its block's top edge (3 mm: the block's half height)
     numbers["5"] = pts["C"] + along.unit().perp() * v.scale.model(3.0)
     draw_scheme(v, mech, pair_labels={}, link_labels=numbers)
     for name, (pref, clear) in labels.items():
@@ -163,7 +153,7 @@ class _Kin:
             over_mm=PLAN_OVER,
         )
         self.vnote, self.anote = Spacer((10.0, NOTE_H)), Spacer((10.0, NOTE_H))
-        self.diagrams = _Diagrams(an, m, title=WORDS("diagrams"), weight=2.0)
+        self.diagrams = _diagrams(an, m)
         # the order of construction of each plan, under the plan (ω and ε read off the plans
         # are in the links' table: on an A3 their lines would halve the plans' scales)
         vorder, aorder = ([n for n in p.order if c.step(n).kind != "plan_omega"]
@@ -171,15 +161,13 @@ class _Kin:
         self.vorder = Steps(c, EQUATIONS_W, only=vorder, title=WORDS("vorder"))
         self.aorder = Steps(c, EQUATIONS_W, only=aorder, title=WORDS("aorder"))
         self.an, self.m = an, m
-        kv = ka = 0.0
-        for _ in range(3):
-            self.tree = self._tree(kv, ka)
-            self.layout: Layout = arrange(self.tree, Field.of_format(FORMAT))
-            got = (self.layout[self.vplan].scale, self.layout[self.aplan].scale)
-            assert got[0] is not None and got[1] is not None
-            if (got[0].k, got[1].k) == (kv, ka):
-                break
-            kv, ka = got[0].k, got[1].k
+        s = settle(
+            lambda k: (self._tree(*k), None),
+            lambda lay, _: (factor_of(lay, self.vplan), factor_of(lay, self.aplan)),
+            (0.0, 0.0),
+            Field.of_format(FORMAT),
+        )
+        self.tree, self.layout = s.tree, s.layout
 
     def _tree(self, kv: float, ka: float) -> Column:
         panel = Column(*_panel(self.an, self.m, kv, ka))
@@ -212,14 +200,12 @@ def _short_note(d: Drawing, plan: Plan, at: Placed, room: Placed) -> None:
     two arrowheads, each with its value and length."""
     scale = at.scale
     assert scale is not None
-    short = []
-    for vec in plan.vectors:
-        value = (plan.points[vec.head] - plan.points[vec.tail]).norm
-        mm = scale.mm(value)
-        if 0.0 < mm < SHORT_MM:
-            unit = WORDS("unit_v" if plan.kind == "v" else "unit_a")
-            short.append(f"{vec.label} = {num(value, 3)} {unit} ({num(mm, 2)} {WORDS('mm')})")
+    unit = WORDS("unit_v" if plan.kind == "v" else "unit_a")
+    short = [f"{s.vector.label} = {num(s.value, 3)} {unit} ({num(s.mm, 2)} {WORDS('mm')})"
+             for s in short_vectors(plan, scale)]  # fmt: skip
     if short:
+        # placed by hand in the room kept under the plan (its text depends on the plan's
+        # factor, known only once the sheet is arranged): one line's rise below the room's top
         text = WORDS("short", vectors="; ".join(short), mm=num(SHORT_MM, 2))
         d.paragraph(text, at.box[0], room.box[1] + 2.5, at.box[2] - at.box[0], 2.5)
 
@@ -231,6 +217,8 @@ def _mechanism(v: Viewport, c: Construction, m: SixBar, an: Analysis) -> None:
     v.circle(O1, m.l1, "centre")
     v.line_over(c["path"], [C - d * ext, C + d * ext], "centre")
     pts = {n: c[n] for n in ("O1", "A", "B", "O2", "C")}
+    # each point's name: (preferred direction, clearance mm), hand-set clear of its joint and
+    # support (C: past the slider's block)
     labels = {
         "O1": ((-1.0, -1.0), 4.0),
         "O2": ((1.0, -1.0), 4.0),
@@ -240,90 +228,26 @@ def _mechanism(v: Viewport, c: Construction, m: SixBar, an: Analysis) -> None:
     }
     six_bar(v, pts, d, labels)
     # ω1's arrow spans 90° just past the crank, outside A's path (inside it the crank's number,
-    # the support and O1's name have the room)
+    # the support and O1's name have the room): 25° ahead of the crank, 4 mm outside A's path
     a1 = math.degrees(an.phi1) + 25.0
     r_w = v.scale.mm(m.l1) + 4.0
     v.turn(O1, an.omega1, a1 if an.omega1 > 0 else a1 + 90.0, "ω_1", r_mm=r_w, sweep_deg=90.0)
 
 
-class _Diagrams(View):
-    """s(φ), v(φ), a(φ) stacked in the box the layout gives them, one φ axis scale, φ1
-    marked, the plans' values as dots."""
-
-    def __init__(self, an: Analysis, m: SixBar, **kw: Any) -> None:
-        kw.setdefault("margin", 0.0)
-        super().__init__(**kw)
-        self.an, self.m = an, m
-
-    def stretch(self) -> tuple[tuple[float, float], tuple[float, float]]:
-        return (150.0, 120.0), (240.0, 170.0)
-
-    def used(self, w: float, h: float) -> tuple[float, float]:
-        """The width the φ axis really takes at its rounded factor, and all the height."""
-        room = w - GRAPH_LEFT - GRAPH_RIGHT
-        if room <= 1.0:
-            return 0.0, 0.0
-        k = Axis.fit("φ", "", 0.0, 2.0 * math.pi, room).k
-        return 2.0 * math.pi / k + GRAPH_LEFT + GRAPH_RIGHT, h
-
-    def draw(self, d: Drawing, at: Placed) -> None:
-        _diagrams(d, self.an, self.m, at.inner)
-
-
-def _diagrams(d: Drawing, an: Analysis, m: SixBar, box: tuple[float, float, float, float]) -> None:
-    lang = current()
-    x0, y0, x1, y1 = box
-    gx = (x0 + GRAPH_LEFT, x1 - GRAPH_RIGHT)
-    x_axis = Axis.fit("φ", WORDS("rad"), 0.0, 2.0 * math.pi, gx[1] - gx[0])
+def _diagrams(an: Analysis, m: SixBar) -> StackedDiagrams:
+    """s(φ), v(φ), a(φ) of the slider over a crank turn, φ1 marked, the plans' values as
+    dots."""
     g_dir = m.guide_d.unit()
-    phi1 = an.phi1 % (2.0 * math.pi)
-    s_at = float(np.interp(phi1, an.phi, an.s))
     mark = WORDS("by_plan")
-    curves = (
-        ("S", WORDS("m"), an.s, s_at, ""),
-        ("V_C", WORDS("m_s"), an.v, an.vp["c"].dot(g_dir), mark),
-        ("a_C", WORDS("m_s2"), an.a, an.ap["c"].dot(g_dir), mark),
+    phi1 = an.phi1 % (2.0 * math.pi)
+    rows = (
+        Stacked("S", WORDS("m"), an.s, float(np.interp(phi1, an.phi, an.s))),
+        Stacked("V_C", WORDS("m_s"), an.v, an.vp["c"].dot(g_dir), mark),
+        Stacked("a_C", WORDS("m_s2"), an.a, an.ap["c"].dot(g_dir), mark),
     )
-    d.text(WORDS("diagrams_2", w=num(an.omega1, 4)), (x0, y0 + 2.5), 2.5)
-    top = y0 + GRAPH_HEAD
-    spans = [(min(float(np.min(c[2])), 0.0), max(float(np.max(c[2])), 0.0)) for c in curves]
-    factors = _row_factors([hi - lo for lo, hi in spans], y1 - top)
-    for (sym, unit, ys, at_phi1, label), (lo, hi), k in zip(curves, spans, factors, strict=True):
-        y_axis = Axis(sym, unit, lo, hi, k, sym.split("_")[0])
-        bottom = top + GRAPH_PAD + (hi - lo) / k
-        zero_y = top + 9.0 + y_axis.mm(y_axis.hi)
-        g = Graph(d, x_axis, y_axis, (gx[0], zero_y))
-        g.axes(lang, tick_labels=True)
-        g.curve(an.phi, ys, "result")
-        # φ1 marked from the top of the field down to the axis or the point (not through the
-        # tick values under the axis)
-        xm, y_axis0 = g.p(phi1, 0.0)
-        y_pt = g.p(phi1, float(at_phi1))[1]
-        d.sheet.add(Polyline(((xm, top + 8.0), (xm, max(y_axis0, y_pt))), "construction"))
-        g.point(phi1, float(at_phi1), label)
-        g.factors((gx[0] + 26.0, top + 4.0), lang)
-        top = bottom
-
-
-def _row_factors(ranges: Sequence[float], span: float) -> list[float]:
-    """The diagrams' factors (nice, units per mm): of the few finest each range allows, the
-    choice whose curves, stacked with their rows' room, fill ``span`` mm with the largest
-    least height."""
-    total = span - GRAPH_PAD * len(ranges)
-    options = []
-    for r in ranges:
-        r = r if r > 0.0 else 1.0
-        ks = [nice_step(r / max(total, 1.0))]
-        while len(ks) < 6:
-            ks.append(nice_step(ks[-1] * 1.001))
-        options.append(ks)
-    best: tuple[tuple[float, float], list[float]] | None = None
-    for combo in itertools.product(*options):
-        h = [(r if r > 0.0 else 1.0) / k for r, k in zip(ranges, combo, strict=True)]
-        if best is None or (sum(h) <= total and (min(h), sum(h)) > best[0]):
-            best = ((min(h), sum(h)) if sum(h) <= total else (-1.0, 0.0), list(combo))
-    assert best is not None, "at least one choice"
-    return best[1]
+    return StackedDiagrams("φ", WORDS("rad"), 0.0, 2.0 * math.pi, an.phi, rows, phi1,
+                           heading=WORDS("diagrams_2", w=num(an.omega1, 4)),
+                           title=WORDS("diagrams"), weight=2.0)  # fmt: skip
 
 
 def _panel(an: Analysis, m: SixBar, kv: float, ka: float) -> tuple[View, ...]:

@@ -25,8 +25,7 @@ import math
 from dataclasses import replace
 from typing import TYPE_CHECKING
 
-from geomcad.forces import ForcePolygon, FrictionCircle
-from geomcad.geom import Circle, Line, Vec, line_circle
+from geomcad.geom import Vec
 from geomcad.sheet import Sheet, TitleBlock, Viewport, fmt_number, start
 from geomcad.sheet import views as V
 from geomcad.sheet.compose import (
@@ -40,9 +39,9 @@ from geomcad.sheet.compose import (
     arrange,
     compose,
 )
+from geomcad.sheet.form import title_block_room, title_block_spacer
+from geomcad.sheet.friction import FrictionJoint
 from geomcad.sheet.lang import Words, current
-from geomcad.sheet.text import box as text_box
-from geomcad.sheet.text import parse
 from geomcad.sheet.views import num
 
 from .p2013_7 import Geometry
@@ -57,10 +56,6 @@ WORDS = Words(__package__, "sheets_2013_7")
 #: Force arrows on the mechanism drawing are this long (mm): they show lines and senses only,
 #: the magnitudes are read off the force plans.
 ARROW_MM = 14.0
-#: The reactions on the enlarged joints are at least this long (mm): two arrowheads and more.
-INSET_ARROW_MM = 8.0
-#: Room over an enlarged joint for its caption, as a share of the view's half-size.
-CAPTION_ROOM = 0.6
 
 
 def scales(sol: Solution[Geometry]) -> dict[str, float]:
@@ -90,11 +85,6 @@ def ball_radius(l_DH: float) -> float:
     return 0.06 * l_DH
 
 
-def inset_reach(pin_d: float, rho: float) -> float:
-    """The half-size (model units) of a joint's enlarged view: the pin with room round it."""
-    return max(0.52 * pin_d, 2.5 * rho)
-
-
 def sheets(sol: Solution[Geometry]) -> list[tuple[str, Sheet]]:
     """The main sheet of 2013-7."""
     tree, views = _tree(sol)
@@ -120,7 +110,6 @@ def _tree(sol: Solution[Geometry]) -> tuple[Node, dict[str, View]]:
         extent(geo), lambda v: _mechanism(v, geo), title=WORDS("mech"), margin=5.0, weight=4.0
     )
     # the joints enlarged (one scale), or a note where there are no friction circles
-    joints: list[View] = []
     if run.rho > 0.0:
         S = Vec(0.0, geo.B.y)
         u76 = run.R76_line.d
@@ -132,21 +121,11 @@ def _tree(sol: Solution[Geometry]) -> tuple[Node, dict[str, View]]:
         )  # fmt: skip
         # R_ij acts on link j from link i and its moment opposes ω_ji = ω_j − ω_i (the order's
         # notation): the rotation drawn is that one, in its own sense
-        for fc, towards, line, force, fname, wname in specs:
-            r = inset_reach(geo.d, fc.arm)
-            # room over the pin for the joint's caption, drawn over its own view
-            box = (fc.c.x - r, fc.c.y - r, fc.c.x + r, fc.c.y + r * (1.0 + CAPTION_ROOM))
-
-            def draw(v: Viewport, fc: FrictionCircle = fc, towards: list[Vec] = towards,
-                     line: Line = line, force: Vec = force, fname: str = fname,
-                     wname: str = wname) -> None:  # fmt: skip
-                top = _inset(v, fc, towards, line, force, fname, fc.sense, wname, geo.d)
-                caption = WORDS("joint", name=fc.name)
-                w = text_box(parse(caption), 3.5)[0]
-                x, y = v.p(fc.c + Vec(0.0, top))
-                v.d.text(caption, (x - w / 2.0, y - 2.0), 3.5)
-
-            joints.append(Figure(box, draw, group="joints", show_scale=False, margin=2.0))
+        joints: list[View] = [
+            FrictionJoint(fc, towards, line, force, fname, wname, geo.d,
+                          WORDS("joint", name=fc.name), group="joints", margin=2.0)
+            for fc, towards, line, force, fname, wname in specs
+        ]  # fmt: skip
         joint_row: Node | View = Row(
             *joints, title=WORDS("joints"), group="joints", title_height=3.5
         )
@@ -154,7 +133,9 @@ def _tree(sol: Solution[Geometry]) -> tuple[Node, dict[str, View]]:
         joint_row = V.Text(paragraph=WORDS("no_friction"), width=150.0, height=3.5)
     names = {"G_6": "G_6", "R_36": "R_{36}", "F_i": WORDS("Phi6"), "R_76": "R_{76}"}
     plan6 = Figure(
-        _polys_box([run.poly6, free.poly6]),
+        V.extent_of(
+            q for p in (run.poly6, free.poly6) for vv in p.vectors for q in (vv.tail, vv.head)
+        ),
         lambda v: _plan6(v, geo, names),
         title=WORDS("plan6"),
         quantity="F",
@@ -171,24 +152,18 @@ def _tree(sol: Solution[Geometry]) -> tuple[Node, dict[str, View]]:
         margin=5.0,
         weight=2.0,
     )
-    low = Spacer((10.0, TITLE_BLOCK[1]))
+    corner = title_block_room()
     # the middle and the right columns keep the title block's corner free
     tree = Row(
         Column(
             Row(mech, plan6, plan2, weights=(0.42, 0.34, 0.24)),
             joint_row,
-            Row(_steps(sol), Spacer((TITLE_BLOCK[0] - 70.0, 10.0))),
+            Row(_steps(sol), Spacer((corner[0] - STEPS_CLEAR, 10.0))),
         ),
-        Column(_given(sol), _compare(geo), _results(sol), _note(), low),
+        Column(_given(sol), _compare(geo), _results(sol), _note(), title_block_spacer()),
         weights=(0.82, 0.18),
     )
     return tree, {"mech": mech, "plan6": plan6, "plan2": plan2}
-
-
-def _polys_box(polys: list[ForcePolygon]) -> tuple[float, float, float, float]:
-    xs = [q.x for p in polys for vv in p.vectors for q in (vv.tail, vv.head)]
-    ys = [q.y for p in polys for vv in p.vectors for q in (vv.tail, vv.head)]
-    return min(xs), min(ys), max(xs), max(ys)
 
 
 # -- the mechanism --------------------------------------------------------------------------------
@@ -203,6 +178,7 @@ def _mechanism(v: Viewport, geo: Geometry) -> None:
     _x0, y0, _x1, y1 = extent(geo)
     B, F, D, H = geo.B, geo.F, geo.D, geo.H
     S = Vec(0.0, B.y)  # the sleeve's centre on the shaft
+    # the shaft stops 4 mm inside the view's box, its axis runs 4 mm past it (GOST 2.303)
     over = k.model(4.0)
     # the shaft 7 and its axis, the collar, the sleeve 2 (a slider on the shaft)
     top, bottom = Vec(0.0, y1 - over), Vec(0.0, y0 + over)
@@ -222,11 +198,13 @@ def _mechanism(v: Viewport, geo: Geometry) -> None:
     for fc in (run.fc_B, run.fc_F, run.fc_H):
         if fc.arm > 0.0:
             v.circle(fc.c, fc.arm, "construction")
-    # the lines of action: link 3's (the common tangent), G_6's and F_i's through D, P's, R_76's
+    # the lines of action: link 3's (the common tangent), G_6's and F_i's through D, P's, R_76's,
+    # each run a few mm (6, 8) past its last point so that its end reads as a line, not a side
     ends3 = [run.link3.touch_a, run.link3.touch_b, run.Q]
     v.line_over(run.link3.line, ends3, "result", over=6.0)
     v.seg(D, run.Q, "construction")
-    # F_i's line from D to K and on past K, where the angle β is marked
+    # F_i's line from D to K and on 17 mm past K, where the angle β is marked (its arc 13 mm,
+    # its sides 16 mm long: hand-set, the value outside P's line)
     past = k.model(17.0) * (1.0 if run.K.x >= D.x else -1.0)
     v.seg(D, Vec(run.K.x + past, D.y), "construction")
     v.line_over(run.P_line, [run.Q, run.K], "construction", over=8.0)
@@ -253,7 +231,7 @@ def _mechanism(v: Viewport, geo: Geometry) -> None:
     left = run.K + Vec(-1.0 if u76.x < 0.0 else 1.0, 0.0) * k.model(16.0)
     up = run.K + (u76 if u76.y > 0.0 else -u76) * k.model(16.0)
     v.dim_angle(run.K, left, up, f"β = {fmt_number(math.degrees(run.beta), digits=3)}°", 13.0, 2.5)
-    # labels
+    # labels: preferred direction and clearance (mm), hand-set clear of the friction circles
     v.label(H, "H", prefer=(1.0, 1.0), clear=3.0)
     v.label(F, "F", prefer=(1.0, 0.0), clear=3.0)
     v.label(B, "B", prefer=(1.0, -1.0), clear=3.0)
@@ -276,82 +254,6 @@ def _mechanism(v: Viewport, geo: Geometry) -> None:
 def _force(v: Viewport, tail: Vec, head: Vec, name: str, prefer: tuple[float, float]) -> None:
     v.arrow(tail, head, "vector")
     v.label(head, name, prefer=prefer, clear=0.5)
-
-
-# -- the enlarged joints --------------------------------------------------------------------------
-
-
-def _inset(
-    v: Viewport,
-    fc: FrictionCircle,
-    towards: list[Vec],
-    line: Line,
-    force: Vec,
-    fname: str,
-    sense: int,
-    wname: str,
-    pin_d: float,
-) -> float:
-    """One enlarged joint: its friction circle, pin, links, the reaction and the rotation it
-    opposes (``sense`` of the rotation of the link the reaction acts on, relative to the other).
-    Returns how far (model) over the joint's centre the drawing reaches (its caption goes
-    above)."""
-    k = v.scale
-    reach = inset_reach(pin_d, fc.arm)
-    J = fc.c
-    # the links' centre lines through the joint, the pin, the friction circle
-    dirs = [(q - J).unit() for q in towards]
-    for u in dirs:
-        v.seg(J, J + u * reach, "centre")
-    v.circle(J, pin_d / 2.0, "dimension")
-    v.circle(J, fc.arm, "construction")
-    v.dot(J)
-    # the reaction's line inside the inset, and the reaction from its point of contact
-    chord = line_circle(line, Circle(J, reach))
-    touch = line.foot(J)
-    if len(chord) == 2:
-        v.seg(chord[0], chord[1], "result")
-    u = force.unit()
-    # the reaction's sense only (its magnitude is on the plans): an arrow at least
-    # INSET_ARROW_MM long at any scale of the enlarged views, its head just outside the pin
-    # (where its name has room)
-    out = [q for q in line_circle(Line(touch, u), Circle(J, pin_d / 2.0)) if (q - touch).dot(u) > 0]
-    exit_ = (out[0] - touch).dot(u) + k.model(2.0) if out else 0.0
-    tip = touch + u * max(exit_, k.model(INSET_ARROW_MM))
-    v.arrow(touch, tip, "vector")
-    v.dot(touch, "result")
-    v.label(tip, fname, prefer=(u.x, u.y), clear=0.5)
-    # ρ: a radius of the friction circle in a free direction
-    taken = [*dirs, (touch - J).unit(), u, -u, (tip - J).unit(), ((touch + tip) * 0.5 - J).unit()]
-    taken += [(q - J).unit() for q in chord]  # the reaction's line where it leaves the view
-    a_rho = _free_angle(taken)
-    v.seg(J, J + Vec.polar(fc.arm, a_rho), "dimension")
-    v.label(
-        J + Vec.polar(fc.arm, a_rho), "ρ", height=2.5, prefer=(math.cos(a_rho), math.sin(a_rho))
-    )
-    # the relative rotation the reaction opposes, as a curved arrow outside the pin
-    a_w = _free_angle([*taken, Vec.polar(1.0, a_rho)])
-    r_w = (
-        (fc.arm + pin_d / 2.0) / 2.0
-        if k.mm(pin_d / 2.0 - fc.arm) > 8.0
-        else pin_d / 2.0 + k.model(3.0)
-    )
-    # a curved arrow (an arc with its head, as the textbooks draw a rotation), 90° long
-    start = math.degrees(a_w) - math.copysign(45.0, sense)
-    v.turn(J, sense, start, wname, k.mm(r_w), 90.0, "dimension", 2.5)
-    return max(reach, r_w + k.model(2.0))
-
-
-def _free_angle(taken: list[Vec]) -> float:
-    """The direction (rad) farthest, in angle, from every direction in ``taken``."""
-    angles = [t.angle for t in taken]
-    best, best_gap = 0.0, -1.0
-    for i in range(72):
-        a = i * math.pi / 36.0
-        gap = min(abs(math.remainder(a - b, 2.0 * math.pi)) for b in angles)
-        if gap > best_gap:
-            best, best_gap = a, gap
-    return best
 
 
 # -- the force plans ------------------------------------------------------------------------------
@@ -463,8 +365,9 @@ def _note() -> View:
     return V.Text(paragraph=WORDS("note"), width=NOTE_WIDTH, height=2.5)
 
 
-#: The room the title block takes in the field's lower right corner (mm, with its margin).
-TITLE_BLOCK = (188.0, 58.0)
+#: How much (mm) of the title block's width the order of construction may run over: the
+#: middle column is above the title block, so the order's row need not keep all of it free.
+STEPS_CLEAR = 70.0
 #: The width (mm) of the order of construction.
 STEPS_WIDTH = 200.0
 #: The width (mm) of the note under the tables.

@@ -14,15 +14,14 @@ on its die.
 
 from __future__ import annotations
 
-import math
 from typing import TYPE_CHECKING
 
-from geomcad.geom import Vec
 from geomcad.sheet import Sheet, TitleBlock, start
-from geomcad.sheet.compose import Column, Field, Figure, Layout, Row, arrange, compose
+from geomcad.sheet.compose import Column, Field, Layout, Row, arrange, compose
+from geomcad.sheet.drives import PressScheme
 from geomcad.sheet.graph import Graph, nice_step
+from geomcad.sheet.graph_notes import set_off
 from geomcad.sheet.lang import Words, current
-from geomcad.sheet.model import CircleItem, Polyline
 from geomcad.sheet.views import AxisSpec, Curve, Diagram, Steps, Table, Text, num
 
 from .p2013_8 import Data
@@ -32,14 +31,9 @@ if TYPE_CHECKING:
     from collections.abc import Mapping
 
     from geomcad.problem import Solution
-    from geomcad.sheet.drawing import Viewport
 
 WORDS = Words(__package__, "sheets_2013_8")
 
-#: The scheme's model: sheet millimetres of a drawing not to scale (flywheel rim, crank, rod).
-RIM, CRANK, ROD = 19.0, 7.0, 30.0
-#: The scheme's model box (x0, y0, x1, y1), round the motor, the flywheel and the die.
-SCHEME_BOX = (-60.0, -55.0, 30.0, 27.0)
 #: Width (mm) of the solution's text and of the notes beside the energy balance.
 SOLUTION_W = 146.0
 #: The recorded steps the solution lists, in their order.
@@ -63,8 +57,8 @@ class _Sheet:
         note = Text(paragraphs=[f"{w[0]} {w[1]}", w[2]], width=NOTE_W)
         given, results, solution = _panel(sol)
         # the press's scheme is not to scale: it takes whatever enlargement its place allows
-        scheme = Figure(SCHEME_BOX, _scheme, title=WORDS("scheme_title"), show_scale=False,
-                        series="free", margin=6.0)  # fmt: skip
+        names = {k: WORDS(k) for k in ("flywheel", "motor", "plate", "die")}
+        scheme = PressScheme(names, title=WORDS("scheme_title"), margin=6.0)
         heading = Text(paragraph=WORDS("title"), width=HEADING_W, height=5.0)
         left = Column(self.load, self.balance, weights=(1.33, 1.0))
         right = Column(heading, Row(given, results), solution, note, scheme)
@@ -102,9 +96,13 @@ def _load_diagram(data: Data) -> Diagram:
     def extra(g: Graph) -> None:
         g.hatch(list(data.s), ks)
         g.curve(list(data.s), ks, "result")
-        # the peak and the plate's thickness named inside the field, clear of the tick values
-        _note(g, 0.0, f_max, f"F_{{max}} = {num(f_max)} {WORDS('kN')}", (8.0, 1.2))
+        # the peak and the plate's thickness named inside the field, clear of the tick values;
+        # hand-set offset (mm): right of the peak and just under it, where the label keeps off
+        # the axis's title above it (an earlier placement ran it into the title)
+        set_off(g, 0.0, f_max, f"F_{{max}} = {num(f_max)} {WORDS('kN')}", (8.0, 1.2))
         g.point(h, 0.0, "s = h", prefer=(0.0, -1.0))
+        # the work written on the hatched triangle's hypotenuse, hand-set (mm) from its middle
+        # outward: inside the area the hatching would run through it
         mid = g.p(h / 2.0, f_max / 2.0)
         g.d.text(f"E = F_{{max}}·h/2 = {num(data.E)} {WORDS('J')}", (mid[0] + 4.0, mid[1] - 3.0),
                  3.5)  # fmt: skip
@@ -117,18 +115,6 @@ def _load_diagram(data: Data) -> Diagram:
         extra=extra, least=(120.0, 80.0), prefer=(200.0, 130.0), margin=0.0,
         title=WORDS("load_title"), weight=2.0,
     )  # fmt: skip
-
-
-def _note(
-    g: Graph, x: float, y: float, markup: str, off: tuple[float, float], leader: bool = True
-) -> None:
-    """A marked data point named by a text at ``off`` (mm, y down) from it, inside the field
-    where no tick value stands, with a thin leader to the text when it is set apart."""
-    px, py = g.p(x, y)
-    g.d.sheet.add(CircleItem((px, py), 0.6, "point", fill=True))
-    if leader:
-        g.d.sheet.add(Polyline(((px, py), (px + off[0] - 0.8, py + off[1] - 1.0)), "dimension"))
-    g.d.text(markup, (px + off[0], py + off[1]), 2.5)
 
 
 def _energy_balance(data: Data) -> Diagram:
@@ -145,7 +131,7 @@ def _energy_balance(data: Data) -> Diagram:
         # the speeds named at the top and the foot of the drop, inside the field, as
         # "ω = ω_max", so that they cannot be read as tick values
         g.point(T, E, "ω = ω_{max}", prefer=(1.0, -1.0), height=3.5)
-        _note(g, T, 0.0, "ω = ω_{min}", (3.0, -1.4), leader=False)
+        set_off(g, T, 0.0, "ω = ω_{min}", (3.0, -1.4), leader=False)
 
     return Diagram(
         AxisSpec("t", WORDS("s"), lo=0.0, hi=2.2 * T),
@@ -164,65 +150,3 @@ def _panel(sol: Solution[Data]) -> tuple[Table, Table, Steps]:
     solution = Steps(sol.construction, SOLUTION_W, only=SOLUTION, words=WORDS,
                      title=WORDS("solution"))  # fmt: skip
     return given, results, solution
-
-
-def _scheme(v: Viewport) -> None:
-    """The press's kinematic scheme (GOST 2.770), not to scale: the motor's pulley and the
-    flywheel joined by a belt, the flywheel on the crankshaft 1 with the crank, the connecting rod
-    2, the punch 3 in its guides, the plate on the die. Model units are sheet millimetres, drawn
-    at the enlargement its place allows."""
-    R, r1, l2 = RIM, CRANK, ROD
-    O1 = Vec(0.0, 0.0)
-    z = 1.0 / v.scale.k
-    s = v.sheet
-    # the motor on its foot, its pulley on the shaft
-    Mo = Vec(-50.0, -4.0)
-    rp = 4.0
-    v.circle(Mo, 7.0, "construction")
-    v.circle(Mo, rp, "link")
-    v.seg(Mo, Mo + Vec(0.0, -9.0 - 3.1 / z), "link")
-    v.guide(Mo + Vec(-6.0, -9.0 - 3.1 / z), Mo + Vec(6.0, -9.0 - 3.1 / z))
-    # the belt: the outer common tangents of the pulley and the flywheel's rim
-    dv = O1 - Mo
-    u = dv.unit()
-    n = u.perp()
-    c = (R - rp) / dv.norm
-    sn = math.sqrt(1.0 - c * c)
-    for sg in (1.0, -1.0):
-        w = u * (-c) + n * (sg * sn)
-        v.seg(Mo + w * rp, O1 + w * R, "link")
-    # the flywheel (its rim) on the crankshaft 1, the crank O1 A, the rod 2
-    v.circle(O1, R, "link")
-    v.circle(O1, R - 2.5, "link")
-    phi = math.radians(-60.0)
-    A = O1 + Vec.polar(r1, phi)
-    B = Vec(0.0, A.y - math.sqrt(l2 * l2 - A.x * A.x))
-    v.seg(O1, A, "link")
-    v.seg(A, B, "link")
-    # the punch 3: a slider at B between vertical guides, the punch below it down to the plate
-    tip = B - Vec(0.0, 9.0)
-    v.seg(B, tip, "link")
-    v.slider(B, (0.0, 1.0))
-    for side in (-1.0, 1.0):
-        v.guide(B + Vec(0.0, -6.0), B + Vec(0.0, 6.0), (side, 0.0))
-    # the plate over the die's two blocks (hatched), the die's hole under the punch
-    py = tip.y
-    plate = [Vec(-13.0, py), Vec(13.0, py), Vec(13.0, py - 2.5), Vec(-13.0, py - 2.5)]
-    v.polyline(plate, "link", closed=True)
-    for x0, x1 in ((-15.0, -2.5), (2.5, 15.0)):
-        y0, y1 = py - 2.5, py - 8.0
-        v.polyline([Vec(x0, y0), Vec(x1, y0), Vec(x1, y1), Vec(x0, y1)], "link", closed=True)
-        for i in range(1, 6):
-            xa = x0 + (x1 - x0) * i / 6.0
-            s.add(Polyline((v.p(Vec(xa - 1.8, y1)), v.p(Vec(xa + 1.8, y0))), "ground"))
-    v.joint(A)
-    v.pivot(O1, (0.0, 1.0))
-    v.turn(O1, 1.0, -25.0, "ω", r_mm=(R + 3.0) * z, sweep_deg=40.0)
-    # the links' numbers and names
-    v.label(O1 + (A - O1) * 0.5, "1", 3.5, prefer=(1.0, 0.3), clear=0.8)
-    v.label(A + (B - A) * 0.5, "2", 3.5, prefer=(1.0, 0.0), clear=0.8)
-    v.label(B + Vec(0.0, 4.5), "3", 3.5, prefer=(1.0, 0.0), clear=4.0)
-    v.label(O1 + Vec(R * 0.71, R * 0.71), WORDS("flywheel"), 2.5, prefer=(1.0, 1.0), clear=1.0)
-    v.label(Mo + Vec(0.0, 7.0), WORDS("motor"), 2.5, prefer=(0.0, 1.0), clear=1.0)
-    v.label(Vec(13.0, py - 1.25), WORDS("plate"), 2.5, prefer=(1.0, 0.0), clear=1.0)
-    v.label(Vec(15.0, py - 6.0), WORDS("die"), 2.5, prefer=(1.0, 0.0), clear=1.0)

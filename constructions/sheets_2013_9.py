@@ -33,18 +33,20 @@ from geomcad.sheet.compose import (
     Node,
     Row,
     Spacer,
+    Tree,
     View,
     arrange,
     compose,
 )
+from geomcad.sheet.form import title_block_spacer
+from geomcad.sheet.free_body import Where, draw_loads, facing, load, moment_of, short_note, small
 from geomcad.sheet.graph import Graph, nice_step
 from geomcad.sheet.lang import Words, current
 from geomcad.sheet.loads import damper, ground, moment, spring
 from geomcad.sheet.scale import fmt_column, nice_factor
-from geomcad.sheet.text import wrap
+from geomcad.sheet.settle import settle
 from geomcad.sheet.views import num
 
-from .dyn_common import Where, draw_loads, facing, load, moment_of, short_note, small
 from .p2013_9 import ROD, Data
 from .spec_2013_9 import PARAMS, RESULTS
 
@@ -58,6 +60,11 @@ PANEL_W = 146.0
 DISC = 1.3  # the disc's drawn radius, in units of r
 #: Force arrows on the sheet: the largest force gets at most this many mm.
 FORCE_ROOM_MM = 40.0
+#: The notes under the views: their width and cap height (mm).
+NOTES_W = 200.0
+NOTES_H = 3.0
+#: Room (mm) past the longest load's head for its name.
+LABEL_MM = 6.0
 #: A load drawn beyond its body keeps this gap (mm) from the body's outline.
 GAP_MM = 3.0
 
@@ -91,13 +98,11 @@ def _unit(u: str) -> str:
 
 
 def _main(sol: Solution[Data]) -> Sheet:
-    data = sol.data
-    tree, views = _main_tree(sol)
+    tree, _views = _main_tree(sol)
     lay = arrange(tree, Field.of_format("A3"))
     k = lay.scale("l")
     d = start("A3", _title(sol, "tb_main", 1, k.ratio_text()))
     compose(d, tree)
-    del data, views
     return d.finish()
 
 
@@ -106,27 +111,28 @@ def _extents(data: Data, pad: float) -> tuple[Extent, Extent, Extent]:
     below the disc and the rod is room for their loads at μ_F."""
     r, x = data.r, data.x
     half = max(DISC, ROD.slot_half + ROD.frame) * r
+    # the scheme's box: the disc with room (in units of r) left of it for the coordinate x's
+    # arrow, under it for O's support, over the support of the spring and the damper
     scheme = (-(DISC + 0.25) * r, -(DISC + 0.1) * r, half, (ROD.ground + 0.15) * r)
     disc = (-DISC * r, -DISC * r - pad, DISC * r, DISC * r + pad)
     rod = (-half, x - ROD.frame * r - pad, half, x + ROD.top * r + pad)
     return scheme, disc, rod
 
 
-def _main_tree(sol: Solution[Data]) -> tuple[Node, dict[str, View]]:
+def _main_tree(sol: Solution[Data]) -> tuple[Tree, dict[str, View]]:
     """The three views at one GOST scale (the loads' room above and below the disc and the rod
     found by arranging twice: it depends on that scale), the notes under them, the tables and
     the equations on the right, clear of the title block."""
     data = sol.data
     k_F = sol.scales["F"]
-    longest = max(float(sol.results["N_pin"]), float(sol.results["F_spring"])) / k_F + 6.0
-    pad = 0.0
-    for _ in range(3):
-        tree, views = _main_views(sol, _extents(data, pad))
-        k = arrange(tree, Field.of_format("A3")).scale("l").k
-        if abs(longest * k - pad) <= 1e-12:
-            break
-        pad = longest * k
-    return tree, views
+    longest = max(float(sol.results["N_pin"]), float(sol.results["F_spring"])) / k_F + LABEL_MM
+    s = settle(
+        lambda k: _main_views(sol, _extents(data, longest * k)),
+        lambda lay, _: lay.scale("l").k,
+        0.0,
+        Field.of_format("A3"),
+    )
+    return s.tree, s.parts
 
 
 def _main_views(
@@ -153,19 +159,17 @@ def _main_views(
         k_F=num(k_F),
     )
     notes = V.Text(
-        lines=[
-            *wrap(
-                WORDS("rod_motion", x=num(data.x), xd=num(data.xd), xdd=num(data.xdd)), 200.0, 3.0
-            ),
-            *wrap(WORDS("forces_at_mu", note=short_note(k_F, data.reactions)), 200.0, 3.0),
+        paragraphs=[
+            WORDS("rod_motion", x=num(data.x), xd=num(data.xd), xdd=num(data.xdd)),
+            WORDS("forces_at_mu", note=short_note(k_F, data.reactions)),
         ],
-        width=200.0,
-        height=3.0,
+        width=NOTES_W,
+        height=NOTES_H,
     )
     left = Column(
         V.Text(lines=[state], height=3.5),
         Row(*figs, title=WORDS("views_head"), group="l", title_height=3.5),
-        Row(notes, Spacer((20.0, 10.0))),
+        Row(notes, Spacer((20.0, 10.0))),  # the notes kept 20 mm short of the panel
         weights=(1.0, 0.86, 0.14),
     )
     tree = Row(left, _panel_main(sol, data), weights=(0.62, 0.38))
@@ -212,7 +216,7 @@ def _scheme(v: Viewport, data: Data) -> None:
     _crosshead(v, data)
     # the fixed guide: two bushings either side of the stem
     g0, g1 = ROD.guide[0] * r, ROD.guide[1] * r
-    gap = v.scale.model(1.2)
+    gap = v.scale.model(1.2)  # the bushings 1.2 mm off the stem: the stem reads as free in them
     for s in (-1.0, 1.0):
         ground(v, (s * gap, g0), (s * gap, g1), (s, 0.0))
     # the spring (left) and the damper (right) between the crossbar and the support
@@ -221,24 +225,27 @@ def _scheme(v: Viewport, data: Data) -> None:
     b = ROD.bar_half * r
     spring(v, (-b, top), (-b, gy))
     damper(v, (b, top), (b, gy))
+    # the support under the spring and the damper, a little wider than the crossbar
     ground(v, (-1.3 * b - 0.1 * r, gy), (1.3 * b + 0.1 * r, gy), (0.0, 1.0))
     v.pivot((0.0, 0.0))
     v.joint(A)
     rho = phi_arc_radius(data, v.scale)
     v.dim_angle((0.0, 0.0), (rho, 0.0), A, "φ", r_mm=v.mm(rho), height=2.5)
     v.seg((0.0, 0.0), (1.25 * DISC * r, 0.0), "centre")
+    # M(t) on a 5 mm arc about O from 150° (hand-set: above O's support, under the arc of φ)
     moment(v, (0.0, 0.0), data.M_t, 5.0, "M(t)", role="vector", start=math.radians(150.0))
-    # the rod's coordinate x along its axis, from the spring's free position
+    # the rod's coordinate x along its axis, from the spring's free position, left of the disc
     xs = -(DISC + 0.15) * r
     v.arrow((xs, 0.0), (xs, 1.3 * r), "dimension")
-    v.label((xs, 1.3 * r), "x", 3.5, prefer=(-1.0, 0.0))
-    v.label(A, "A", 3.5, prefer=(1.0, -1.0))
-    v.label((0.0, 0.0), "O", 3.5, prefer=(-1.0, -1.0))
-    v.label((-b, 0.5 * (top + gy)), "c", 3.5, prefer=(-1.0, 0.0), clear=3.0)
-    v.label((b, 0.5 * (top + gy)), "k", 3.5, prefer=(1.0, 0.0), clear=3.5)
+    v.label((xs, 1.3 * r), "x", prefer=(-1.0, 0.0))
+    v.label(A, "A", prefer=(1.0, -1.0))
+    v.label((0.0, 0.0), "O", prefer=(-1.0, -1.0))
+    # the spring's and the damper's constants beside their symbols' middles, clear of the coils
+    v.label((-b, 0.5 * (top + gy)), "c", prefer=(-1.0, 0.0), clear=3.0)
+    v.label((b, 0.5 * (top + gy)), "k", prefer=(1.0, 0.0), clear=3.5)
     # the links' numbers (GOST 2.770): the disc 1, the rod 2; the frame 0 at its supports
-    v.label(Vec.polar(DISC * r, math.radians(-60.0)), "1", 3.5, prefer=(1.0, -1.0), clear=1.5)
-    v.label((0.0, 0.5 * (x + ROD.frame * r + g0)), "2", 3.5, prefer=(1.0, 0.0), clear=1.5)
+    v.label(Vec.polar(DISC * r, math.radians(-60.0)), "1", prefer=(1.0, -1.0), clear=1.5)
+    v.label((0.0, 0.5 * (x + ROD.frame * r + g0)), "2", prefer=(1.0, 0.0), clear=1.5)
 
 
 def _disc(v: Viewport, data: Data, k_F: float) -> None:
@@ -248,8 +255,8 @@ def _disc(v: Viewport, data: Data, k_F: float) -> None:
     v.seg((0.0, 0.0), A, "link")
     v.joint((0.0, 0.0))
     v.joint(A)
-    v.label(A, "A", 3.5, prefer=(1.0, 1.0))
-    v.label((0.0, 0.0), "O", 3.5, prefer=(-1.0, 1.0))
+    v.label(A, "A", prefer=(1.0, 1.0))
+    v.label((0.0, 0.0), "O", prefer=(-1.0, 1.0))
     # the two moments about O on two radii far apart: the inertia moment's arc open at the
     # lower left, the driving moment's inner arc and its label in that opening
     draw_loads(
@@ -281,7 +288,7 @@ def _rod(v: Viewport, data: Data, k_F: float) -> None:
     A = Vec(r * math.cos(phi), x)
     _crosshead(v, data)
     v.dot(A)
-    v.label(A, "A", 3.5, prefer=(1.0, -1.0))
+    v.label(A, "A", prefer=(1.0, -1.0))
     gm = Vec(0.0, 0.5 * sum(ROD.guide) * r)
     v.dot(gm)
     gap = v.scale.model(GAP_MM)
@@ -343,10 +350,8 @@ def _given(sol: Solution[Data], title: str = "given") -> View:
 
 def _paragraphs(head: str, items: list[str], dash: bool = True) -> View:
     """A titled block of paragraphs, each wrapped to the panel's width."""
-    lines: list[str] = []
-    for it in items:
-        lines += wrap(f"– {it}" if dash else it, PANEL_W, 2.5)
-    return V.Text(lines=lines, width=PANEL_W, title=head)
+    pars = [f"– {it}" if dash else it for it in items]
+    return V.Text(paragraphs=pars, width=PANEL_W, title=head)
 
 
 def _panel_main(sol: Solution[Data], data: Data) -> Node:
@@ -389,11 +394,7 @@ def _panel_main(sol: Solution[Data], data: Data) -> Node:
             WORDS("loads_3", mb=small(mb, data.M_t or 1.0, nm, WORDS("M_bal"))),
         ],
     )
-    return Column(_given(sol), results, eq, loads, Spacer((10.0, TITLE_BLOCK_H)))
-
-
-#: The height (mm) the title block takes at the bottom of the field, with its margin.
-TITLE_BLOCK_H = 58.0
+    return Column(_given(sol), results, eq, loads, title_block_spacer())
 
 
 def _motion(sol: Solution[Data]) -> Sheet:
@@ -448,7 +449,7 @@ def _motion(sol: Solution[Data]) -> Sheet:
     table = V.Table(rows, widths=(PANEL_W / 4.0,) * 4, title=WORDS("table_head"))
     deriv = _paragraphs(WORDS("deriv_head"), [WORDS(k) for k in ("deriv_1", "deriv_2", "deriv_3",
                                                                   "deriv_4")])  # fmt: skip
-    right = Column(integ, table, deriv, _given(sol, "given_motion"), Spacer((10.0, TITLE_BLOCK_H)))
+    right = Column(integ, table, deriv, _given(sol, "given_motion"), title_block_spacer())
     # the lower diagram keeps clear of the title block's corner on its right, and the upper one
     # is as wide: one μ_t, their t ticks one above the other
     left = Column(*(Row(dg, Spacer((30.0, 10.0))) for dg in diagrams))

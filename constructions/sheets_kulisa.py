@@ -34,21 +34,25 @@ from geomcad.sheet.compose import (
     Node,
     Row,
     Spacer,
+    Tree,
     View,
     arrange,
     compose,
 )
 from geomcad.sheet.drawing import SHORT_MM
+from geomcad.sheet.form import title_block_spacer
+from geomcad.sheet.free_body import Where, draw_loads, facing, load, moment_of, short_note, small
 from geomcad.sheet.graph import Graph
 from geomcad.sheet.lang import Words, current
 from geomcad.sheet.loads import force, ground, moment
 from geomcad.sheet.motion import Frames, turn
-from geomcad.sheet.placer import centre_line
+from geomcad.sheet.reach import drawn_extent
 from geomcad.sheet.scale import fmt_column, nice_factor
-from geomcad.sheet.text import wrap
+from geomcad.sheet.settle import settle
+from geomcad.sheet.short import short_vectors
+from geomcad.sheet.velocities import relative, tip, velocity
 from geomcad.sheet.views import factor, num
 
-from .dyn_common import Where, draw_loads, facing, load, moment_of, short_note, small
 from .p_kulisa import Data, mechanism, sweep, turns
 from .spec_kulisa import PARAMS, PROBLEM, RESULTS
 
@@ -171,6 +175,8 @@ def _yoke(v: Viewport, sol: Solution[Data], data: Data, guides: bool = True) -> 
         "link",
     )  # fmt: skip
     if guides:
+        # the bar's two guides over it, at a third and two thirds of its free length (a scheme:
+        # the problem gives no guide positions)
         for gx in (0.35, 0.7):
             xg = xa + 2 * w + gx * (xd - xa - 2 * w)
             half = 0.08 * (xd - xa)
@@ -205,9 +211,11 @@ def _numbers(v: Viewport, sol: Solution[Data], data: Data) -> None:
     A = data.yoke.pin.point()
     w = SLOT_W * p["OA"]
     c3 = data.C3
-    v.label(Vec.polar(p["R1"], math.radians(-60.0)), "1", 3.5, prefer=(1.0, -1.0), clear=1.5)
-    v.label((A.x - 2.0 * w, -0.8 * p["OA"]), "2", 3.5, prefer=(-1.0, 0.0), clear=1.5)
-    v.label(c3 + Vec.polar(p["R3"], math.radians(-40.0)), "3", 3.5, prefer=(1.0, -1.0),
+    # each number at its link's outline where no other link runs: the flywheel's rim low right,
+    # the yoke's frame low left, the roller's rim low right
+    v.label(Vec.polar(p["R1"], math.radians(-60.0)), "1", prefer=(1.0, -1.0), clear=1.5)
+    v.label((A.x - 2.0 * w, -0.8 * p["OA"]), "2", prefer=(-1.0, 0.0), clear=1.5)
+    v.label(c3 + Vec.polar(p["R3"], math.radians(-40.0)), "3", prefer=(1.0, -1.0),
             clear=1.5)  # fmt: skip
 
 
@@ -233,9 +241,7 @@ def _short(sol: Solution[Data], k: Scale | None) -> bool:
     """Whether a vector of the velocity plan at its scale ``k``, or a velocity on the scheme at
     its μ_V, comes out shorter than two arrowheads (drawn as its lettered end point)."""
     assert k is not None
-    plan = sol.data.vplan
-    pts = plan.points
-    if any(k.mm((pts[v.head] - pts[v.tail]).norm) < SHORT_MM for v in plan.vectors):
+    if short_vectors(sol.data.vplan, k, zero=True):
         return True
     va, v2, vc, _ = _plan_values(sol, sol.data)
     kv = sol.scales["v"]
@@ -283,59 +289,44 @@ def _plan_values(sol: Solution[Data], data: Data) -> tuple[Vec, Vec, Vec, float]
     return vp.vector("a1"), vp.vector("a2"), vp.vector("c3"), float(sol.construction["ω3"])
 
 
-def _vector(v: Viewport, a: Vec, b: Vec, mm: float, role: str) -> None:
-    """A velocity ``mm`` long at μ_V: an arrow, or its end point if shorter than two arrowheads
-    (a note says so)."""
-    if mm >= SHORT_MM:
-        v.arrow(a, b, role)
-    else:
-        v.dot(b)
-
-
 def _velocities(v: Viewport, sol: Solution[Data], data: Data) -> None:
     """V_A ⊥ OA, V_A2 = V_A1 + V_A2A1 along x, V_D = V_2 at the contact, V_C3 from P; each from
     its point at μ_V, V_D along the contact line below the yoke's bar."""
     p = _p(sol)
     w = data.omega
     kv = sol.scales["v"]
-    km = v.scale.k
     A = data.yoke.pin.point()
     c3 = data.C3
     D = Vec(c3.x, 0.0)
     P = Vec(c3.x, -p["r3"] - p["R3"])
     va, v2, vc, w3 = _plan_values(sol, data)
-
-    def tip(q: Vec, vel: Vec) -> Vec:
-        # a velocity drawn from its point: |V|/μ_V mm, i.e. |V|·μ_l/μ_V metres on the drawing
-        return q + vel * (km / kv)
-
-    for q, vel, name in ((A, va, "V_A"), (A, v2, "V_{A2}"), (D, v2, "V_D = V_2"),
-                         (c3, vc, "V_{C3}")):  # fmt: skip
-        if vel.norm > 0.0:
-            _vector(v, q, tip(q, vel), vel.norm / kv, "result")
-            v.label(tip(q, vel), name, 2.5, prefer=(vel.x, vel.y) if q != D else (0.0, -1.0))
+    velocity(v, A, va, kv, "V_A")
+    velocity(v, A, v2, kv, "V_{A2}")
+    # V_D named under its tip: the yoke's bar is over it
+    velocity(v, D, v2, kv, "V_D = V_2", prefer=(0.0, -1.0))
+    velocity(v, c3, vc, kv, "V_{C3}")
     # V_A2A1 along the slot: from V_A's tip to V_A2's tip
-    if (v2 - va).norm > 0.0:
-        _vector(v, tip(A, va), tip(A, v2), (v2 - va).norm / kv, "construction")
-        v.label(0.5 * (tip(A, va) + tip(A, v2)), "V_{A2A1}", 2.5, prefer=(1.0, 0.0))
+    relative(v, A, va, v2, kv, "V_{A2A1}")
     # the roller's velocities grow linearly from its instantaneous centre P
     if v2.norm > 0.0:
-        v.seg(P, tip(D, v2), "construction")
+        v.seg(P, tip(v, D, v2, kv), "construction")
     v.dot(P)
     v.label(P, "P_3", 2.5, prefer=(1.0, -1.0))
     v.dot(D)
     v.label(D, "D", 2.5, prefer=(1.0, -1.0))
-    v.label(A, "A", 3.5, prefer=(-1.0, 1.0))
-    v.label((0.0, 0.0), "O", 3.5, prefer=(-1.0, -1.0))
-    v.label(c3, "C_3", 3.5, prefer=(1.0, -1.0))
+    v.label(A, "A", prefer=(-1.0, 1.0))
+    v.label((0.0, 0.0), "O", prefer=(-1.0, -1.0))
+    v.label(c3, "C_3", prefer=(1.0, -1.0))
     v.dot(data.C2)
-    v.label(data.C2, "C_2", 3.5, prefer=(0.0, -1.0))
-    # ω1 and ω3 as curved arrows, the angle φ
+    v.label(data.C2, "C_2", prefer=(0.0, -1.0))
+    # ω1 and ω3 as curved arrows, the angle φ: hand-set where the links leave room, ω1 on a
+    # 9 mm arc from 200° (left of O, clear of the crank and the yoke's bar), ω3 inside the
+    # roller's rim from 110° (clear of the yoke's foot at the top)
     moment(v, (0.0, 0.0), w, 9.0, "ω_1", role="result", start=math.radians(200.0), height=2.5)
     moment(v, c3, w3, 0.55 * v.mm(p["R3"]), "ω_3", role="result", start=math.radians(110.0),
            height=2.5)  # fmt: skip
     v.seg((0.0, 0.0), (0.6 * p["R1"], 0.0), "centre")
-    # the φ arc under the yoke's bar (and outside ω1's arrow)
+    # the φ arc under the yoke's bar (2.5 mm under it) and outside ω1's arrow (at least 12 mm)
     r_phi = max(12.0, min(0.45 * v.mm(p["OA"]), v.mm(bar_level(p)) - 2.5))
     v.dim_angle((0.0, 0.0), (p["OA"], 0.0), A, "φ", r_mm=r_phi, height=2.5)
 
@@ -361,12 +352,8 @@ def _step_lines(sol: Solution[Data], *names: str) -> list[str]:
     return [V.step_text(sol.construction.step(n), WORDS) for n in names]
 
 
-def _notes(items: list[str], width: float = 0.0, dash: bool = False) -> View:
-    width = width or PANEL_W
-    lines: list[str] = []
-    for it in items:
-        lines += wrap(f"– {it}" if dash else it, width, 2.5)
-    return V.Text(lines=lines, width=width)
+def _notes(items: list[str], width: float) -> View:
+    return V.Text(paragraphs=items, width=width)
 
 
 def _results(sol: Solution[Data], names: tuple[str, ...], **kw: Any) -> V.Table:
@@ -406,10 +393,6 @@ def _panel_main(sol: Solution[Data], data: Data, short: bool) -> tuple[Node, Vie
 
 #: The width (mm) of the main sheet's notes (above the title block).
 NOTES_MAIN_W = 180.0
-
-
-#: The height (mm) the title block takes at the bottom of the field, with its margin.
-TITLE_BLOCK_H = 58.0
 
 
 # -- graphs --------------------------------------------------------------------------------------
@@ -459,7 +442,7 @@ def _graphs(sol: Solution[Data]) -> Sheet:
     )
     # both diagrams as wide (the lower one clear of the title block's corner): one μ_φ, their φ
     # ticks one above the other
-    left = Column(Row(d1, Spacer((30.0, 10.0))), Row(d2, Spacer((30.0, 10.0))))
+    left = Column(Row(d1, Spacer((30.0, 10.0))), Row(d2, Spacer((30.0, 10.0))))  # 30 mm free
     tree = Row(left, _panel_graphs(sol, data, ode), weights=(0.6, 0.4))
     d = start("A3", _tb("tb_graphs", 2))
     compose(d, tree)
@@ -514,7 +497,7 @@ def _panel_graphs(sol: Solution[Data], data: Data, ode: tuple[list[float], list[
             for xs, dg in ((np.degrees(phis), 5), (i_pr, 4), (om, 4), (ode[1], 4))]  # fmt: skip
     rows += [list(r) for r in zip(*cols, strict=True)]
     table = V.Table(rows, widths=(GRAPHS_PANEL_W / 4.0,) * 4, title=WORDS("table_head"))
-    return Column(eq, table, Spacer((10.0, TITLE_BLOCK_H)))
+    return Column(eq, table, title_block_spacer())
 
 
 #: The width (mm) of the graphs sheet's right panel.
@@ -541,23 +524,6 @@ def _fbd_boxes(sol: Solution[Data], data: Data) -> dict[str, Box]:
     }
 
 
-def _reach(box: Box, draw_fn: Callable[[Viewport], None], k: Scale) -> Box:
-    """The model box a view really takes at scale k: its body's ``box`` with the loads, their
-    values and the labels drawn round it at μ_F (paper mm) taken in, measured on a scratch
-    sheet (the loads' arrows have their own scale, so a view's extent depends on k)."""
-    d = start("A3", _tb("tb_fbd", 3))
-    first = len(d.sheet.items)
-    at = (210.0, 148.0)
-    draw_fn(d.viewport(k, (box[0], box[3]), at))
-    sheet = d.finish()
-    x0, y0, x1, y1 = box
-    for it in sheet.items[first:]:
-        bx0, by0, bx1, by1 = centre_line(it).bounds
-        x0, x1 = min(x0, box[0] + (bx0 - at[0]) * k.k), max(x1, box[0] + (bx1 - at[0]) * k.k)
-        y0, y1 = min(y0, box[3] - (by1 - at[1]) * k.k), max(y1, box[3] - (by0 - at[1]) * k.k)
-    return (x0, y0, x1, y1)
-
-
 def _fbd_draw(sol: Solution[Data], data: Data) -> dict[str, Callable[[Viewport], None]]:
     """How each of the four views is drawn through the viewport the layout gives it."""
     p = _p(sol)
@@ -571,8 +537,8 @@ def _fbd_draw(sol: Solution[Data], data: Data) -> dict[str, Callable[[Viewport],
     # a) the flywheel
     def flywheel(v1: Viewport) -> None:
         _flywheel(v1, sol, data, pivot=False)
-        v1.label(A, "A", 3.5, prefer=(-1.0, 1.0))
-        v1.label((0.0, 0.0), "O", 3.5, prefer=(-1.0, -1.0))
+        v1.label(A, "A", prefer=(-1.0, 1.0))
+        v1.label((0.0, 0.0), "O", prefer=(-1.0, -1.0))
         # the two moments about O on radii far apart, the driving one's label in the inertia
         # moment's opening at the bottom
         draw_loads(v1, R, k_F, "1", {
@@ -588,10 +554,10 @@ def _fbd_draw(sol: Solution[Data], data: Data) -> dict[str, Callable[[Viewport],
     def yoke(v2: Viewport) -> None:
         _yoke(v2, sol, data, guides=False)
         v2.dot(data.C2)
-        v2.label(data.C2, "C_2", 3.5, prefer=(0.0, 1.0))
+        v2.label(data.C2, "C_2", prefer=(0.0, 1.0))
         v2.dot(D)
-        v2.label(D, "D", 3.5, prefer=(1.0, -1.0))
-        v2.label(A, "A", 3.5, prefer=(-1.0, 1.0))
+        v2.label(D, "D", prefer=(1.0, -1.0))
+        v2.label(A, "A", prefer=(-1.0, 1.0))
         r32 = load(R, "2", "R_{32}")
         draw_loads(v2, R, k_F, "2", {
             # the pin's push arrives at A through the frame's outer side, clear of the bar
@@ -609,9 +575,10 @@ def _fbd_draw(sol: Solution[Data], data: Data) -> dict[str, Callable[[Viewport],
         _roller(v3, sol, data, base=False, foot=False)
         for q, name, pref in ((D, "D", (-1.0, 1.0)), (P, "P", (-1.0, -1.0))):
             v3.dot(q)
-            v3.label(q, name, 3.5, prefer=pref)
-        v3.label(c3, "C_3", 3.5, prefer=(-1.0, -1.0))
+            v3.label(q, name, prefer=pref)
+        v3.label(c3, "C_3", prefer=(-1.0, -1.0))
         rim_mm, hub_mm = v3.mm(p["R3"]), v3.mm(p["r3"])
+        # M_Φ3's arc 8 mm inside the rim where 6 mm clear of the hub, else 4 mm outside it
         r_m3 = rim_mm - 8.0 if rim_mm - 8.0 > hub_mm + 6.0 else rim_mm + 4.0
         gap = v3.scale.model(3.0)
         draw_loads(v3, R, k_F, "3", {
@@ -628,8 +595,8 @@ def _fbd_draw(sol: Solution[Data], data: Data) -> dict[str, Callable[[Viewport],
         _yoke(v4, sol, data)
         _roller(v4, sol, data)
         _numbers(v4, sol, data)
-        v4.label((0.0, 0.0), "O", 3.5, prefer=(-1.0, -1.0))
-        v4.label(c3, "C_3", 3.5, prefer=(0.0, -1.0))
+        v4.label((0.0, 0.0), "O", prefer=(-1.0, -1.0))
+        v4.label(c3, "C_3", prefer=(0.0, -1.0))
         moment(v4, (0.0, 0.0), p["M"], 6.0, f"M = {num(abs(p['M']))} {_u('Nm')}", role="result",
                start=math.radians(160.0), height=2.5)  # fmt: skip
         fx = data.static.force("F_x")
@@ -648,9 +615,9 @@ def _fbd_tree(sol: Solution[Data], k: Scale, k3: Scale) -> tuple[Node, dict[str,
     views: dict[str, View] = {}
     # the loads' reach is measured, so the margins only keep the views apart
     for name, key in (("1", "view_1"), ("2", "view_2"), ("all", "view_4")):
-        views[name] = Figure(_reach(boxes[name], draw[name], k), draw[name], title=WORDS(key),
+        views[name] = Figure(drawn_extent(boxes[name], draw[name], k), draw[name], title=WORDS(key),
                              group="fbd", show_scale=False, margin=0.5, weight=3.0)  # fmt: skip
-    views["3"] = Figure(_reach(boxes["3"], draw["3"], k3), draw["3"], margin=0.5,
+    views["3"] = Figure(drawn_extent(boxes["3"], draw["3"], k3), draw["3"], margin=0.5,
                         title=WORDS("view_3", ratio=k3.ratio_text()), show_scale=False)  # fmt: skip
     head = V.Text(lines=[WORDS("head_fbd")], height=5.0)
     state = Column(
@@ -681,21 +648,29 @@ def _width(v: View) -> float:
     return box[2] - box[0]
 
 
-def _fbd_scales(sol: Solution[Data]) -> tuple[Node, dict[str, View], Layout]:
+def _fbd_scales(sol: Solution[Data]) -> tuple[Tree, dict[str, View], Layout]:
     """The tree rebuilt until its scales settle: the loads' arrows are drawn at μ_F, so the
-    room a view needs depends on its length scale."""
-    k, k3 = Scale(0.01, "l"), Scale(0.0025, "l")
-    tree, views = _fbd_tree(sol, k, k3)
-    lay = arrange(tree, Field.of_format("A3"))
-    for _ in range(4):
-        nk, nk3 = lay[views["all"]].scale, lay[views["3"]].scale
-        assert nk is not None and nk3 is not None
-        if (nk.k, nk3.k) == (k.k, k3.k):
-            break
-        k, k3 = nk, nk3
-        tree, views = _fbd_tree(sol, k, k3)
-        lay = arrange(tree, Field.of_format("A3"))
-    return tree, views, lay
+    room a view needs depends on its length scale. It starts from 1:10 for the bodies and
+    1:2.5 for the roller."""
+
+    def got(lay: Layout, views: dict[str, View]) -> tuple[Scale, Scale]:
+        k, k3 = lay[views["all"]].scale, lay[views["3"]].scale
+        assert k is not None and k3 is not None
+        return k, k3
+
+    s = settle(
+        lambda ks: _fbd_tree(sol, *ks),
+        got,
+        (Scale(0.01, "l"), Scale(0.0025, "l")),
+        Field.of_format("A3"),
+        rounds=FBD_ROUNDS,
+        same=lambda a, b: (a[0].k, a[1].k) == (b[0].k, b[1].k),
+    )
+    return s.tree, s.parts, s.layout
+
+
+#: Builds of the free-body sheet at most (its scales settle within them).
+FBD_ROUNDS = 5
 
 
 def _fbd(sol: Solution[Data]) -> Sheet:

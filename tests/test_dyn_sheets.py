@@ -7,10 +7,10 @@ from __future__ import annotations
 import math
 
 import pytest
-from geomcad_constructions.dyn_common import facing, small
 
 from geomcad.sheet import Scale, TitleBlock, start
 from geomcad.sheet.drawing import ARROW_LEN, Viewport
+from geomcad.sheet.free_body import facing, small
 from geomcad.sheet.lang import language
 from geomcad.sheet.loads import MOMENT_SWEEP
 from geomcad.sheet.model import ArcItem, Polyline

@@ -19,7 +19,6 @@ DRAWING_CODE = (
     sorted((ROOT / "geomcad" / "sheet").glob("*.py"))
     + sorted((ROOT / "geomcad" / "render").glob("*.py"))
     + sorted((ROOT / "constructions").glob("sheets_*.py"))
-    + [ROOT / "constructions" / "dyn_common.py"]
 )
 #: Files that still hold Russian literals, with how many; a count may only fall, and a file not
 #: listed must hold none.

@@ -56,8 +56,8 @@ PROBLEM_MODULES = {
     "2013-6": ["sheets_2013_6", "sheets_2013_6_kin"],
     "2013-7": ["sheets_2013_7"],
     "2013-8": ["sheets_2013_8"],
-    "2013-9": ["sheets_2013_9", "dyn_common"],
-    "kulisa-23110713": ["sheets_kulisa", "dyn_common"],
+    "2013-9": ["sheets_2013_9"],
+    "kulisa-23110713": ["sheets_kulisa"],
 }
 #: The modules that draw each kind of example file (by its marking table; none: a linkage file).
 FILE_MODULES = {

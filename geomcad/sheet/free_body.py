@@ -1,8 +1,11 @@
-"""Drawing helpers shared by the dynamics sheets (2013-9, kulisa-23110713): loads on free-body
-diagrams at a force scale, with their values.
+"""Free-body diagrams: every solved load on a body (a kinetostatic solution's reactions,
+inertia loads and driving loads) drawn on its line of action at a force scale μ_F, each force an
+arrow exactly at μ_F (one too short there at a stated larger μ_F*, its label marked *), each
+moment a curved arrow about its point, with their values; and the sheet's words on the scales.
 
-Sheet side: it draws through :mod:`geomcad.sheet` and only sheet modules (``sheets_*.py``) import
-it; no problem module (``p*.py``) may. Its words are in ``strings/<lang>/dyn_common.toml``."""
+Moved here from the seed problems' package (it was ``constructions/dyn_common.py``, shared by the
+sheets of 2013-9 and kulisa-23110713), so that any dynamics sheet draws its free bodies the
+same way. Its words are in ``strings/<lang>/free_body.toml``."""
 
 from __future__ import annotations
 
@@ -19,7 +22,7 @@ from geomcad.sheet.loads import MOMENT_SWEEP, ForceScales, force, force_scales, 
 from geomcad.sheet.views import num
 
 ORIGIN = Vec(0.0, 0.0)
-WORDS = Words(__package__, "dyn_common")
+WORDS = Words(__package__, "free_body")
 
 #: A force arrow shorter than this (mm) is drawn this long, so that its head shows.
 #: A force shorter than this at μ_F (two arrowheads) cannot be read as an arrow: it is drawn as
