@@ -20,12 +20,13 @@ PLAIN = {0, 1, 2, 0.5}
 
 def literals(source: str) -> int:
     """The int and float constants of ``source`` other than :data:`PLAIN`."""
-    n = 0
-    for node in ast.walk(ast.parse(source)):
-        if isinstance(node, ast.Constant) and type(node.value) in (int, float):
-            if node.value not in PLAIN:
-                n += 1
-    return n
+    return sum(
+        1
+        for node in ast.walk(ast.parse(source))
+        if isinstance(node, ast.Constant)
+        and type(node.value) in (int, float)
+        and node.value not in PLAIN
+    )
 
 
 def main(paths: list[str]) -> int:
