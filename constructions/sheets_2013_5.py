@@ -224,6 +224,10 @@ def _build(v: Viewport, geo: Geometry, kv: Scale) -> None:
 
 
 # -- the scheme ----------------------------------------------------------------------------------
+# Hand-laid, on purpose, from the general symbols of geomcad.sheet.gearing: the radii are the
+# model's (r = m·z/2), but where each gear sits along its shaft is the drawing's choice (the
+# model has no axial dimension), so the axial positions are multiples of the unit u (the radii
+# spanned / SCHEME_UNITS), laid as the seed draws the train.
 
 
 def _x_end(u: float) -> float:
