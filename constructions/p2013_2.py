@@ -84,6 +84,9 @@ class Geometry:
     closed: bool
     plan: VelocityPlan
     plan_index: int
+    #: The velocity plan at the plan's division point as recorded (its vector equation
+    #: V_B2 = V_B1 + V_B2B1, the lines it was solved on), for the sheet's plan view.
+    recorded: Plan
     #: The profile on from the span's end to the program's end (the rest of the program, which
     #: the sheet draws in thin lines so that the cam's shape is seen whole); ``None`` when the
     #: span covers the program (or the profile is closed), or when the rest has a cusp.
@@ -140,7 +143,7 @@ def build(p: Mapping[str, ParamValue]) -> Build[Geometry]:
     _record_divisions(c, f, div, span)
     k = _plan_index(div.S1)
     plan = velocity_plan(program, f, float(div.phi[k]))
-    _record_plan(c, f, plan, k)
+    recorded = _record_plan(c, f, plan, k)
 
     r = [float(x) for x in div.radius]
     results: dict[str, Any] = {
@@ -154,7 +157,7 @@ def build(p: Mapping[str, ParamValue]) -> Build[Geometry]:
     }
     notes = list(NOTES) + _jump_notes(prof, program, f)
     rest = _rest(program, f, span, closed)
-    geo = Geometry(program, f, prof, div, span, closed, plan, k, rest)
+    geo = Geometry(program, f, prof, div, span, closed, plan, k, recorded, rest)
     return Build(results, c, notes, {}, geo)
 
 
@@ -251,6 +254,7 @@ def _record_plan(c: Construction, f: Follower, plan: VelocityPlan, k: int) -> Pl
              line="BC" if f.kind == "flat" else "@tangent", unknown="V_{B2B1}"),
         Side("p", Vec(0.0, 1.0), "∥ the motion", line="@guide"),
     )  # fmt: skip
+    vp.unknown("b1", "b2", "V_{B2B1}", "the follower's velocity relative to the cam")
     b2 = vp.absolute("b2", "V_{B2}", "the follower's velocity")
     if b2.dist(plan.V_B2) > tol.DERIVED * max(plan.V_B1.norm, plan.V_B2.norm):
         raise ConstructionError(

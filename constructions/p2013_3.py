@@ -36,6 +36,7 @@ from geomcad.errors import ParameterError
 from geomcad.geom import Vec
 from geomcad.kinematics.plan import Plan, Side, velocity_plan
 from geomcad.problem import Build, ParamValue
+from geomcad.structure import Link, Mechanism, Pair
 
 
 @dataclass(frozen=True)
@@ -46,6 +47,8 @@ class Geometry:
     M: float
     l_AB: float
     plan: Plan
+    #: The mechanism as links and pairs in the given position (its scheme is drawn from it).
+    mechanism: Mechanism
 
 
 def _check(p: Mapping[str, ParamValue]) -> tuple[float, float, float, float, float]:
@@ -131,4 +134,22 @@ def build(p: Mapping[str, ParamValue]) -> Build[Geometry]:
         "V_C4": v_c4.norm,
         "F_red": f_red,
     }
-    return Build(results, c, [], {}, Geometry(v_a, m, l_ab, vp))
+    return Build(results, c, [], {}, Geometry(v_a, m, l_ab, vp, mechanism(c)))
+
+
+def mechanism(c: Construction) -> Mechanism:
+    """The mechanism with a cross as links and pairs (GOST 2.770's symbols come from them):
+    1 slides on the frame at A and carries B; block 2, hinged to 1 at B, slides in the slot of
+    the rocker 3 (pivot O1); the cross 4 slides on 3 and on 5 at C; 5 turns about O2."""
+    O1, O2, A, B, C = (c[n] for n in ("O1", "O2", "A", "B", "C"))
+    u3, u5 = (C - B).unit(), (C - O2).unit()
+    pairs = (
+        Pair("A", "P", "0", "1", A, Vec(1.0, 0.0)),
+        Pair("B", "R", "1", "2", B),
+        Pair("B'", "P", "2", "3", B, u3),
+        Pair("O1", "R", "3", "0", O1),
+        Pair("C", "P", "3", "4", C, u3),
+        Pair("C'", "P", "4", "5", C, u5),
+        Pair("O2", "R", "5", "0", O2),
+    )
+    return Mechanism(tuple(Link(str(i)) for i in range(1, 6)), pairs)

@@ -19,6 +19,7 @@ from typing import TYPE_CHECKING
 from geomcad.geom import Line, Vec
 from geomcad.sheet import Scale, Sheet, TitleBlock, Viewport, start
 from geomcad.sheet import views as V
+from geomcad.sheet.assur import group_schemes, groups_table, pairs_table
 from geomcad.sheet.compose import (
     Column,
     Field,
@@ -32,7 +33,7 @@ from geomcad.sheet.compose import (
 from geomcad.sheet.lang import Words, per_language
 from geomcad.sheet.scheme import Body
 from geomcad.sheet.views import num
-from geomcad.structure import Link, Mechanism, Pair
+from geomcad.structure import Link
 
 if TYPE_CHECKING:
     from geomcad.problem import Solution
@@ -138,7 +139,12 @@ class _Views:
             self.before, self.after, weights=(1.0, 1.0), title=WORDS("schemes_title", th=t1),
             group="s",
         )  # fmt: skip
-        groups = Column(*_groups(geo), title=WORDS("groups_title"), group="g")
+        groups = Column(
+            *group_schemes(geo.seed_route, geo.decomposition, _bodies(geo, roller=False),
+                           label_height=2.5, title_height=2.5, group="g", show_scale=False,
+                           margin=6.0),
+            title=WORDS("groups_title"), group="g",
+        )  # fmt: skip
         self.position = Figure(
             V.extent_of(_position_points(geo)),
             lambda v: _position(v, geo),
@@ -255,67 +261,6 @@ def _link_at(geo: Geometry) -> dict[str, Vec]:
     }
 
 
-def _groups(geo: Geometry) -> list[V.Scheme]:
-    """The seed's replaced mechanism (no roller: the block is link 6), split into the primary
-    mechanism and its Assur groups, each drawn on its own with its outer pairs, all at one
-    scale (group "g")."""
-    mech = geo.seed_route
-    dec = geo.decomposition
-    parts: list[tuple[str, tuple[str, ...]]] = [
-        (WORDS("primary", frame=dec.frame, link=p.link), (p.link,)) for p in dec.primary
-    ]
-    for g in dec.groups:
-        kind = f", {_group_kind(g.kind)}" if g.kind else ""
-        caption = WORDS("group", links=", ".join(g.links), cls=g.roman, order=g.order, kind=kind)
-        parts.append((caption, g.links))
-    bodies = _bodies(geo, roller=False)
-    out = []
-    for caption, part in parts:
-        sub = _part(mech, part)
-        out.append(
-            V.Scheme(
-                sub,
-                {lk: bodies[lk] for lk in part if lk in bodies},
-                pair_labels={q.name: q.name for q in sub.pairs},
-                ghosts=[lk.id for lk in sub.links if lk.id not in part],
-                also=[x for lk in part for b in bodies.get(lk, []) for x in b.points],
-                label_height=2.5,
-                title=caption,
-                title_height=2.5,
-                group="g",
-                show_scale=False,
-                margin=6.0,
-            )
-        )
-    return out
-
-
-def _part(mech: Mechanism, part: tuple[str, ...]) -> Mechanism:
-    """One group (or the primary mechanism) on its own: its pairs with moving links outside it
-    join it to placeholder links (drawn as ghosts), its pairs with the frame stay."""
-    links = [lk for lk in mech.links if lk.id in part]
-    pairs: list[Pair] = []
-    outside: dict[str, str] = {}
-    for p in mech.pairs:
-        if not set(p.links) & set(part):
-            continue
-        for lk in p.links:
-            if lk not in part and lk != mech.frame:
-                outside.setdefault(lk, f"{lk}'")
-        pairs.append(
-            Pair(
-                p.name,
-                p.kind,
-                outside.get(p.a, p.a),
-                outside.get(p.b, p.b),
-                p.at,
-                p.axis,
-            )
-        )
-    links += [Link(x) for x in outside.values()]
-    return Mechanism(tuple(links), tuple(pairs), mech.frame)
-
-
 # -- the dead position and the plans ----------------------------------------------------------
 
 
@@ -420,15 +365,6 @@ def _plan_given(v: Viewport, geo: Geometry) -> None:
 # -- the panel --------------------------------------------------------------------------------
 
 
-def _kind(kind: str) -> str:
-    return WORDS(f"kind_{kind}")
-
-
-def _group_kind(kind: str) -> str:
-    """An Assur group's kind (RRR, PRP, …) in the language's letters (ВВВ, ПВП, … in Russian)."""
-    return "".join(WORDS(f"pair_letter_{ch}") for ch in kind)
-
-
 def _link_name(lk: Link) -> str:
     """A link's name in the language being drawn (the model's own name for a link the table
     does not know)."""
@@ -451,14 +387,9 @@ def _panel(sol: Solution[Geometry], geo: Geometry) -> list[View]:
     out.append(
         V.Text(paragraph=f"{names}; {WORDS('link_8')}", width=PANEL_W, title=WORDS("links_title"))
     )
-    rows = [[WORDS(k) for k in ("h_pair", "h_links", "h_kind", "h_class")]]
-    for p in geo.before.pairs:
-        rows.append([p.name, f"{p.a}–{p.b}", _kind(p.kind), f"p_{p.pair_class}"])
-    for s in geo.replaced.substitutes:
-        for name in (s.pair_a, s.pair_b):
-            q = geo.replaced.mechanism.pair(name)
-            rows.append([f"{name}*", f"{q.a}–{q.b}", _kind(q.kind), f"p_{q.pair_class}"])
-    out.append(V.Table(rows, row_h=5.0, title=WORDS("pairs_title")))
+    subs = [geo.replaced.mechanism.pair(n) for s in geo.replaced.substitutes
+            for n in (s.pair_a, s.pair_b)]  # fmt: skip
+    out.append(pairs_table(geo.before, subs, row_h=5.0, title=WORDS("pairs_title")))
     text(WORDS("pairs_note"))
     n, p5, p4, _local = geo.counts
     rows = [[WORDS("h_quantity"), WORDS("h_count"), "W"]]
@@ -479,21 +410,7 @@ def _panel(sol: Solution[Geometry], geo: Geometry) -> list[View]:
     out.append(V.Table(rows, fill=PANEL_W, row_h=5.0, title=WORDS("mobility_title")))
     text(WORDS("mobility_note"))
     dec = geo.decomposition
-    heads = ("h_group", "h_links", "h_pairs", "h_class", "h_order", "h_kind")
-    rows = [[WORDS(k) for k in heads]]
-    for pm in dec.primary:
-        rows.append([WORDS("primary_row"), f"0, {pm.link}", pm.pair, "I", "–", "–"])
-    for i, g in enumerate(dec.groups):
-        kind = f"{_group_kind(g.kind)} ({g.kind_no})" if g.kind else "–"
-        rows.append(
-            [f"{i + 1}", ", ".join(g.links), ", ".join(g.pairs), g.roman, str(g.order), kind]
-        )
-    out.append(
-        V.Table(
-            rows, fill=PANEL_W, row_h=5.0,
-            title=WORDS("groups_table"),
-        )
-    )  # fmt: skip
+    out.append(groups_table(dec, fill=PANEL_W, row_h=5.0, title=WORDS("groups_table")))
     text(
         WORDS(
             "formula",

@@ -6,9 +6,12 @@ face, or its tip, or its roller), the profile, and the radius vectors r_i dimens
 the program past the span (the seed's second half of the rise) in thin lines, so that the cam's
 shape is seen whole; a closed program is drawn as its full turn. Below it the follower's law S(φ)
 with the ordinates of the division points. Right: the mechanism at the plan's division point with
-the velocity plan Bb₁b₂ and the similar triangle OBB′ (OB′ = BC = S′), the given data, the
-results and the order of construction.
+the velocity plan pb₁b₂ (with the lines of its equation) and the similar triangle OBB′
+(OB′ = BC = S′), the given data, the results and the order of construction.
 
+Composed from the general views: the profile by inversion and the mechanism at a position
+(:mod:`geomcad.sheet.cams`), the plan (:class:`~geomcad.sheet.views.PlanView` of the recorded
+plan), the diagrams, tables and the order of construction (:mod:`geomcad.sheet.views`).
 Scale choice lives here (:func:`scales`): the problem's build returns only its model.
 """
 
@@ -21,15 +24,13 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from geomcad import tol
-from geomcad.geom import Arc, Circle, Vec
-from geomcad.kinematics.cams import CamProfile, evert
 from geomcad.problem import ResultSpec
-from geomcad.sheet import Scale, Sheet, TitleBlock, Viewport, start
+from geomcad.sheet import Scale, Sheet, TitleBlock, start
 from geomcad.sheet import views as V
+from geomcad.sheet.cams import CamAt, Inversion, label_step
 from geomcad.sheet.compose import (
     Column,
     Field,
-    Figure,
     Layout,
     Node,
     Row,
@@ -38,7 +39,7 @@ from geomcad.sheet.compose import (
     arrange,
     compose,
 )
-from geomcad.sheet.drawing import ARROW_LEN, DOT_R, SHORT_MM
+from geomcad.sheet.drawing import DOT_R
 from geomcad.sheet.graph import Graph
 from geomcad.sheet.lang import Words, per_language
 from geomcad.sheet.text import wrap
@@ -56,13 +57,8 @@ WORDS = Words(__package__, "sheets_2013_2")
 MM = 1000.0
 #: Paper margin (mm) the face lines and labels take beyond the profile.
 VIEW_PAD = 6.0
-#: Division points closer than this on the paper (mm) are not all labelled.
-LABEL_APART = 5.0
 #: Rows a results table shows at most (the first, the last and evenly spaced ones between).
 MAX_ROWS = 7
-#: The face lines run this far (paper mm) past the contact point and the follower's axis.
-FACE_OVER = 6.0
-#: A plan vector shorter than this (mm) is drawn as a point with its label (twice the head).
 #: Width (mm) of the panel's text, and the title block's height (kept free under the panel).
 PANEL_W = 250.0
 #: Width and letter height (mm) of the order of construction.
@@ -74,30 +70,18 @@ BLOCK_H = 52.0
 # -- views and scales ------------------------------------------------------------------------------
 
 
-def extent(sol: Solution[Geometry]) -> tuple[float, float, float, float]:
-    """The model box the profile view draws: the base circle, the profile (and the rest of the
-    program past the span), the division points."""
-    geo = sol.data
-    f = geo.follower
-    parts = [geo.profile.contact, geo.divisions.pitch, geo.divisions.contact, geo.profile.pitch]
-    if geo.rest is not None:
-        parts += [geo.rest.contact, geo.rest.pitch]
-    pts = np.vstack(parts)
-    ext = f.r_roller if f.kind == "roller" else 0.0
-    xs = [float(pts[:, 0].min()) - ext, float(pts[:, 0].max()) + ext, -f.r0, f.r0]
-    ys = [float(pts[:, 1].min()) - ext, float(pts[:, 1].max()) + ext, -f.r0, f.r0]
-    return min(xs), min(ys), max(xs), max(ys)
-
-
 class _Views:
     """The sheet's views and their tree (composed by :mod:`geomcad.sheet.compose`)."""
 
     def __init__(self, sol: Solution[Geometry]) -> None:
         geo = sol.data
         f = geo.follower
-        self.profile = Figure(
-            extent(sol), lambda v: _profile(v, sol), title=WORDS("profile_title"),
-            title_height=5.0, margin=VIEW_PAD, weight=3.0,
+        rest_text = ""
+        if geo.rest is not None:
+            rest_text = WORDS("rest_end", phi=num(math.degrees(float(geo.rest.phi[-1]))))
+        self.profile = Inversion(
+            f, geo.profile, geo.divisions, geo.closed, geo.rest, rest_text,
+            title=WORDS("profile_title"), title_height=5.0, margin=VIEW_PAD, weight=3.0,
         )  # fmt: skip
         left: list[View | Node] = [self.profile]
         if geo.rest is not None:
@@ -108,16 +92,11 @@ class _Views:
         steps = order_steps(sol)
         plan = geo.plan
         phi = math.degrees(plan.phi)
-        self.scheme = Figure(
-            _scheme_extent(sol), lambda v: _scheme(v, sol),
+        self.scheme = CamAt(
+            f, geo.profile, plan, geo.closed, geo.rest,
             title=WORDS("scheme_title", i=geo.plan_index, phi=num(phi)), margin=6.0, weight=2.0,
         )  # fmt: skip
-        vectors = [plan.V_B1, plan.V_B2, plan.V_B2 - plan.V_B1]
-        shortest = min((q.norm for q in vectors if q.norm > 0.0), default=0.0)
-        self.plan = Figure(
-            _plan_extent(sol), lambda v: _plan(v, sol), title=WORDS("plan_title"),
-            quantity="v", series="nice", margin=8.0, readable=shortest,
-        )  # fmt: skip
+        self.plan = V.PlanView(geo.recorded, title=WORDS("plan_title"), margin=8.0)
         eq = "OB' = BC = S'" if f.kind == "flat" else "OB' = S'"
         right: list[View | Node] = [
             Row(self.scheme, self.plan),
@@ -155,111 +134,6 @@ def sheets(sol: Solution[Geometry]) -> list[tuple[str, Sheet]]:
     return [("", d.finish())]
 
 
-# -- the profile by inversion ----------------------------------------------------------------------
-
-
-def _profile(v: Viewport, sol: Solution[Geometry]) -> None:
-    """The profile by inversion (see the module's docstring)."""
-    geo = sol.data
-    f = geo.follower
-    prof, div = geo.profile, geo.divisions
-    k = v.scale
-    o = Vec(0.0, 0.0)
-    # the theoretical profile's base circle r0 (for a roller its prime circle, dash-dot, and the
-    # working profile's base circle r0 − r_roller)
-    v.circle(o, f.r0, "centre" if f.kind == "roller" else "construction")
-    if f.kind == "roller":
-        v.circle(o, f.base_radius, "construction")
-    v.centre_cross(o, 6.0)
-    over = k.model(FACE_OVER)
-    n = len(div.phi)
-    if n > 1 and math.isclose(float(div.phi[-1] - div.phi[0]), 2.0 * math.pi):
-        n -= 1  # the last point of a full turn is the first one again
-    shown = _labelled(v, div, n)
-    for i in range(n):
-        turn = -f.sigma * float(div.phi[i])
-        up = Vec(0.0, 1.0).rotated(turn)
-        across = Vec(1.0, 0.0).rotated(turn)
-        C = Vec(*div.pitch[i])
-        B = Vec(*div.contact[i])
-        # the follower's axis turned back by φ_i (for the flat face the line through O along
-        # the motion, on which C_i lies), from O or its foot on the circle of radius e to past C_i
-        foot = across * f.e if f.kind != "flat" else o
-        tip = C + up * over
-        v.seg(foot, tip, "construction")
-        if i in shown:
-            v.label(tip, str(i), height=2.5, prefer=(up.x, up.y), clear=0.5)
-        if f.kind == "flat":
-            t_b = (B - C).dot(across)
-            lo, hi = min(0.0, t_b) - over, max(0.0, t_b) + over
-            v.seg(C + across * lo, C + across * hi, "construction")
-        elif f.kind == "roller":
-            v.circle(C, f.r_roller, "construction")
-        v.dot(C, "point")
-        # the radius vector r_i = OB_i: a thin construction line (its length is written on it)
-        v.seg(o, B, "construction")
-        if i in shown:
-            v.label(B, f"B_{{{i}}}", height=2.5, prefer=(up.x, up.y))
-    if f.kind != "flat" and f.e != 0.0:
-        v.circle(o, abs(f.e), "centre")
-    if f.kind == "roller":
-        v.polyline(list(prof.pitch), "centre", closed=geo.closed)
-    v.polyline(list(prof.contact), "link", closed=geo.closed)
-    if geo.rest is not None:
-        _rest(v, sol, geo.rest, over)
-    v.label(o, "O", prefer=(-1.0, -1.0), clear=1.0)
-    # the inversion: the follower turns about O against the cam's rotation
-    _turn_arrow(v, 0.55 * f.r0, 125.0, 165.0, -f.sigma, WORDS("minus_omega"))
-    # the radius vectors' lengths, written along them
-    for i in sorted(shown):
-        B = Vec(*div.contact[i])
-        text = f"r_{{{i}}} = {num(float(div.radius[i]) * MM)}"
-        spots = tuple(v.p(B * t) for t in (0.6, 0.8, 0.5, 0.9, 0.4))
-        v.d.label(v.p(B * 0.7), text, 2.5, others=spots)
-    # the angle of one interval, between the last two axes
-    if n >= 2:
-        a0 = Vec(0.0, 1.0).rotated(-f.sigma * float(div.phi[-2]))
-        a1 = Vec(0.0, 1.0).rotated(-f.sigma * float(div.phi[-1]))
-        dphi = math.degrees(float(div.phi[-1] - div.phi[-2]))
-        v.dim_angle(o, a0, a1, f"{num(dphi)}°", r_mm=k.mm(f.r0) * 0.55, height=2.5)
-
-
-def _rest(v: Viewport, sol: Solution[Geometry], rest: CamProfile, over: float) -> None:
-    """The profile past the span to the program's end in thin lines, with the follower's axis at
-    the end (thin) and a note of where the program ends (a note under the view says what the
-    thin line is)."""
-    f = sol.data.follower
-    if f.kind == "roller":
-        v.polyline(list(rest.pitch), "centre")
-    v.polyline(list(rest.contact), "thin")
-    end = float(rest.phi[-1])
-    up = Vec(0.0, 1.0).rotated(-f.sigma * end)
-    foot = Vec(1.0, 0.0).rotated(-f.sigma * end) * (f.e if f.kind != "flat" else 0.0)
-    C = Vec(*rest.pitch[-1])
-    v.seg(foot, C + up * over, "construction")
-    v.label(C + up * over, WORDS("rest_end", phi=num(math.degrees(end))), 2.5,
-            prefer=(up.x, up.y), clear=0.5)  # fmt: skip
-
-
-def _labelled(v: Viewport, div: CamProfile, n: int) -> set[int]:
-    """The division points that get labels: every ``_label_step``-th one, and of those only
-    points at least LABEL_APART mm on the paper from the ones already taken (the last one is
-    preferred to its neighbour)."""
-    step = _label_step(n)
-    want = [i for i in range(n) if i % step == 0 or i == n - 1]
-    taken: list[int] = []
-    for i in [want[-1], *want[:-1]] if len(want) > 1 else want:
-        q = v.p(div.contact[i])
-        if all(math.dist(q, v.p(div.contact[j])) >= LABEL_APART for j in taken):
-            taken.append(i)
-    return set(taken)
-
-
-def _label_step(n: int) -> int:
-    """Label every point up to 13 of them, else every second, third …"""
-    return max(1, math.ceil(n / 13))
-
-
 # -- the law S(φ) ----------------------------------------------------------------------------------
 
 
@@ -273,7 +147,7 @@ def _diagrams(sol: Solution[Geometry]) -> list[V.Diagram]:
     motion = prog.motion(phi)
     div = geo.divisions
     n = len(div.phi)
-    step = _label_step(n)
+    step = label_step(n)
     out = []
     for sym, ys, at_div in (("S", motion.S, div.S), ("S'", motion.S1, div.S1)):
 
@@ -304,145 +178,6 @@ def _diagrams(sol: Solution[Geometry]) -> list[V.Diagram]:
 
 
 # -- the scheme and the velocity plan --------------------------------------------------------------
-
-
-def _cam_now(sol: Solution[Geometry]) -> tuple[np.ndarray, np.ndarray]:
-    """The cam's built profile and the rest of the program, turned to the plan's φ."""
-    geo = sol.data
-    f = geo.follower
-    phi = geo.plan.phi
-    cam = evert(geo.profile.contact, np.full(len(geo.profile.phi), phi), f.sigma)
-    rest = (
-        evert(geo.rest.contact, np.full(len(geo.rest.phi), phi), f.sigma)
-        if geo.rest is not None
-        else np.zeros((0, 2))
-    )
-    return cam, rest
-
-
-def _follower_size(sol: Solution[Geometry]) -> tuple[float, float, float]:
-    """The face's half width, the stem's base (the face, the knife's tip or the roller's top)
-    and the stem's length, in model units."""
-    geo = sol.data
-    f = geo.follower
-    width = float(np.max(np.abs(geo.profile.S1))) + 0.2 * f.r0
-    base = float(geo.plan.B.y) + (f.r_roller if f.kind == "roller" else 0.0)
-    return width, base, 0.35 * f.r0
-
-
-def _scheme_extent(sol: Solution[Geometry]) -> tuple[float, float, float, float]:
-    f = sol.data.follower
-    cam, rest = _cam_now(sol)
-    every = np.vstack([cam, rest]) if len(rest) else cam
-    width, base, stem = _follower_size(sol)
-    xs = [*every[:, 0], -f.r0, f.r0, -width, width]
-    ys = [*every[:, 1], -f.r0, base + stem]
-    return min(xs), min(ys), max(xs), max(ys)
-
-
-def _plan_extent(sol: Solution[Geometry]) -> tuple[float, float, float, float]:
-    plan = sol.data.plan
-    pts = [Vec(0.0, 0.0), plan.V_B1, plan.V_B2]
-    xs, ys = [q.x for q in pts], [q.y for q in pts]
-    return min(xs), min(ys), max(xs), max(ys)
-
-
-def _scheme(v: Viewport, sol: Solution[Geometry]) -> None:
-    """The mechanism at the plan's division point, in the fixed frame: the cam (the built profile
-    thick, the rest of the program thin), the follower, the triangle OBB′ (and C); links numbered
-    (1 the cam, 2 the follower, 3 the roller); beside it the velocity plan pb₁b₂ at its own
-    factor."""
-    geo = sol.data
-    f = geo.follower
-    plan = geo.plan
-    kl = v.scale
-    cam, rest = _cam_now(sol)
-    width, base, stem = _follower_size(sol)
-    h = float(plan.B.y)
-    o = Vec(0.0, 0.0)
-    # the cam: its built profile and the base circle, turned to φ; the rest of the program thin
-    v.circle(o, f.base_radius, "construction")
-    v.polyline(list(cam), "link", closed=geo.closed)
-    if len(rest):
-        v.polyline(list(rest), "thin")
-    Bp, C, B = plan.B_prime, plan.C, plan.B
-    away = -1.0 if Bp.x >= 0.0 else 1.0
-    v.pivot(o, down=(away, -1.0))
-    _omega_arrow(v, max(f.r0 * 0.35, kl.model(13.0)), f.sigma, away)
-    # the follower: flat face (or knife, roller), stem, its guide on the frame (hatched both sides)
-    top = Vec(f.e, base + stem)
-    if f.kind == "flat":
-        v.seg(Vec(-width, h), Vec(width, h), "link")
-        v.seg(Vec(f.e, h), top, "link")
-    elif f.kind == "roller":
-        v.circle(B, f.r_roller, "link")
-        v.seg(B, top, "link")
-        v.joint(B)
-    else:
-        v.seg(B, top, "link")
-    g_lo, g_hi = Vec(f.e, base + stem * 0.45), Vec(f.e, base + stem * 0.95)
-    v.guide(g_lo, g_hi, (1.0, 0.0))
-    v.guide(g_lo, g_hi, (-1.0, 0.0))
-    # link numbers: the cam 1 inside its base circle, the follower 2 by its stem, the roller 3
-    v.label(Vec(0.0, -0.6 * f.base_radius), "1", 3.5, clear=0.5)
-    v.label(Vec(f.e, base + stem * 0.22), "2", 3.5, prefer=(-away, 0.0), clear=1.0)
-    if f.kind == "roller":
-        v.label(B + Vec(f.r_roller, 0.0) * (-away), "3", 3.5, prefer=(-away, 0.0), clear=1.0)
-    # the triangle OBB′ similar to the plan, and C (BC = OB′ = S′)
-    v.seg(o, B, "construction")
-    v.seg(B, Bp, "construction")
-    v.seg(o, Bp, "construction")
-    if f.kind == "flat":
-        v.seg(o, C, "construction")
-    v.right_angle(Bp, o, B, 2.5)
-    for q in (o, B, Bp):
-        v.dot(q, "point")
-    v.label(o, "O", prefer=(-away, 1.0), clear=1.5)
-    v.label(B, "B", prefer=(-away, 1.0))
-    v.label(Bp, "B'", prefer=(-away, -1.0))
-    if f.kind == "flat":
-        v.label(C, "C", prefer=(away, -1.0))
-    if abs(plan.S1) > 0.0:
-        v.dim_linear(o, Bp, "S'", offset=-3.0 if Bp.x > 0 else 3.0, height=2.5)
-
-
-def _plan(pv: Viewport, sol: Solution[Geometry]) -> None:
-    """The velocity plan: pb1 = V_B1 ⊥ OB, pb2 = V_B2 along the motion, b1b2 = V_B2B1, each at
-    μ_V exactly; a vector under two arrowheads is drawn as a point with its name."""
-    plan = sol.data.plan
-    kv = pv.scale
-    pole = Vec(0.0, 0.0)
-    b1, b2 = plan.V_B1, plan.V_B2
-    for a, b, name in ((pole, b1, "V_{B1}"), (pole, b2, "V_{B2}"), (b1, b2, "V_{B2B1}")):
-        length = kv.mm((b - a).norm)
-        if length >= SHORT_MM:
-            pv.arrow(a, b, "vector")
-        elif length > 0.0:
-            pv.dot(b, "point")
-            pv.label(b, WORDS("plan_short", name=name, value=num(length, 3)), 2.5)
-    pv.dot(pole, "point")
-    pv.label(pole, "p", height=3.5, prefer=(1.0, -1.0))
-    pv.label(b1, "b_1", height=3.5, prefer=(-1.0, 0.0))
-    pv.label(b2, "b_2", height=3.5, prefer=(1.0, 1.0))
-
-
-def _omega_arrow(v: Viewport, r: float, sigma: int, side: float) -> None:
-    """The cam's sense of rotation: an arc about O below it, on ``side`` (±1 in x), with an
-    arrowhead, labelled ω."""
-    a0, a1 = (200.0, 290.0) if side <= 0.0 else (250.0, 340.0)
-    _turn_arrow(v, r, a0, a1, sigma, WORDS("omega"))
-
-
-def _turn_arrow(v: Viewport, r: float, a0_deg: float, a1_deg: float, sense: int, text: str) -> None:
-    """An arc about O from a0 to a1 (degrees, counter-clockwise) with an arrowhead at the end the
-    ``sense`` (+1 counter-clockwise) points to, and its label."""
-    a0, a1 = math.radians(a0_deg), math.radians(a1_deg)
-    v.arc(Arc(Circle(Vec(0.0, 0.0), r), a0, a1), "dimension")
-    chord = 2.2 * ARROW_LEN / v.mm(r)  # the head's arc: more than two arrowheads long
-    end, before = (a1, a1 - chord) if sense > 0 else (a0, a0 + chord)
-    v.arrow(Vec.polar(r, before), Vec.polar(r, end), "dimension")
-    mid = (a0 + a1) / 2.0
-    v.label(Vec.polar(r, mid), text, height=3.5, prefer=(math.cos(mid), math.sin(mid)), clear=0.5)
 
 
 # -- tables ----------------------------------------------------------------------------------------

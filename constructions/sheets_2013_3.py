@@ -6,6 +6,10 @@ dimensioned, the given velocity V_A and the senses of ω3, ω5 and M; the veloci
 vector equation drawn as its two lines meeting, at a factor 1, 2, 2.5, 4 or 5 × 10^n; the given
 data, the results and the vector equations in the order they were solved. :func:`scales` gives
 the layout's factors without drawing (``Problem.scales``).
+
+The mechanism is :class:`~geomcad.sheet.views.Scheme` of the model's
+:class:`~geomcad.structure.Mechanism` (its symbols, supports and numbers as every scheme
+draws them); what the scheme adds (the given V_A, the senses, the dimensions) is drawn on it.
 """
 
 from __future__ import annotations
@@ -19,7 +23,6 @@ from geomcad.sheet import views as V
 from geomcad.sheet.compose import (
     Column,
     Field,
-    Figure,
     Row,
     Spacer,
     Tree,
@@ -27,6 +30,7 @@ from geomcad.sheet.compose import (
     compose,
 )
 from geomcad.sheet.lang import Words, per_language
+from geomcad.sheet.scheme import Body
 from geomcad.sheet.views import num
 
 from .spec_2013_3 import PARAMS, RESULTS
@@ -37,8 +41,8 @@ if TYPE_CHECKING:
 
     from .p2013_3 import Geometry
 
-#: Paper sizes of the symbols drawn beside the mechanism (mm).
-VA_LEN = 14.0
+#: The given velocity's arrow: its length and its height over A (paper mm).
+VA_LEN, VA_LIFT = 14.0, 7.0
 #: Width (mm) of the order of construction's text.
 ORDER_W = 150.0
 #: The title block's height (mm): the right-hand column keeps it free.
@@ -51,14 +55,20 @@ def extent(c: Construction, l_ab: float) -> tuple[float, float, float, float]:
     return V.extent_of((c[n] for n in ("O1", "O2", "A", "B", "C")), 0.35 * l_ab)
 
 
-def _views(sol: Solution[Geometry], kv: Scale | None = None) -> tuple[Tree, Figure, V.PlanView]:
+def _views(sol: Solution[Geometry], kv: Scale | None = None) -> tuple[Tree, V.Scheme, V.PlanView]:
     """The sheet's tree: the mechanism over the data and the order of construction, the plan
     over the results (their lengths on the plan at ``kv``; the table's size does not depend on
     it, so the layout can be arranged before the scales are known)."""
     geo, c = sol.data, sol.construction
-    scheme = Figure(
-        extent(c, geo.l_AB),
-        lambda v: _mechanism(v, geo, c, sol),
+    x0, y0, x1, y1 = extent(c, geo.l_AB)
+    scheme = V.Scheme(
+        geo.mechanism,
+        _bodies(c, geo.l_AB),
+        pair_labels=PAIR_LABELS,
+        link_labels=_link_at(c, geo.l_AB),
+        supports={"O1": _o1_support(c)},
+        extra=lambda v: _given(v, geo, c),
+        also=[Vec(x0, y0), Vec(x1, y1)],
         title=WORDS("scheme_title"),
         title_height=5.0,
         margin=8.0,
@@ -95,61 +105,67 @@ def sheets(sol: Solution[Geometry]) -> list[tuple[str, Sheet]]:
     return [("", d.finish())]
 
 
-def _mechanism(v: Viewport, geo: Geometry, c: Construction, sol: Solution[Geometry]) -> None:
-    O1, O2, A, B, C = (c[n] for n in ("O1", "O2", "A", "B", "C"))
-    u3 = (C - B).unit()  # along the slot, from B through O1 to C
-    u5 = (C - O2).unit()
-    ext = v.scale.model(14.0)
-    # link 1: the body AB sliding along O1O2 on its guide
-    v.guide(A - Vec(v.scale.model(14.0), 0.0), A + Vec(v.scale.model(14.0), 0.0), (0.0, -1.0))
-    v.seg(A, B, "link")
-    v.slider(A, Vec(1.0, 0.0), with_joint=False)
-    # link 3: the slotted rocker B–O1–C, run past B and C
-    v.seg(B - u3 * ext, C + u3 * ext, "link")
-    # link 5: O2 through C and on
-    v.seg(O2, C + u5 * ext, "link")
-    v.seg(O1, O2, "centre")
-    # block 2 in the slot at B; the cross 4 at C, one slide on each link (no joint inside)
-    v.slider(B, u3)
-    v.slider(C, u3, with_joint=False)
-    v.slider(C, u5, with_joint=False)
-    # O1's support turned away from the rocker that passes through it and from O1O2: along the
-    # bisector of the angle between the rocker's lower half (towards B) and O1O2
+#: The mechanism's pairs named by the scheme (one name per point; A and C are named beside
+#: their blocks, see :func:`_given`).
+PAIR_LABELS = {"O1": "O_1", "O2": "O_2", "B": "B"}
+#: The slotted link 3 runs past B and C, link 5 past C, by this share of l_AB; the numbers of
+#: the block 2 and the cross 4 stand this far along the slot from B and from C.
+RUN, BLOCK_NO, CROSS_NO = 0.28, 0.16, 0.18
+
+
+def _o1_support(c: Construction) -> tuple[float, float]:
+    """O1's support turned away from the rocker that passes through it and from O1O2 (the sense
+    of ω3 is drawn on the other side): along the bisector of the angle between the rocker's
+    lower half (towards B) and O1O2."""
+    O1, O2, B = (c[n] for n in ("O1", "O2", "B"))
     n3 = ((B - O1).unit() + (O2 - O1).unit()).unit()
-    v.pivot(O1, (n3.x, n3.y))
-    v.pivot(O2)
-    # the given velocity, and the senses of ω3 (= ω5) and of M
+    return (n3.x, n3.y)
+
+
+def _bodies(c: Construction, l_ab: float) -> dict[str, list[Body]]:
+    """The rocker 3 as the slot's line B–O1–C run past B and C; link 5 run past C."""
+    O2, B, C = (c[n] for n in ("O2", "B", "C"))
+    u3, u5 = (C - B).unit(), (C - O2).unit()
+    ext = RUN * l_ab
+    return {"3": [Body.of([B - u3 * ext, C + u3 * ext])], "5": [Body.of([O2, C + u5 * ext])]}
+
+
+def _link_at(c: Construction, l_ab: float) -> dict[str, Vec]:
+    """Where the links' numbers stand: 2 and 4 along the slot from their blocks."""
+    O1, O2, A, B, C = (c[n] for n in ("O1", "O2", "A", "B", "C"))
+    u3 = (C - B).unit()
+    return {
+        "1": A + (B - A) * 0.5,
+        "2": B + u3 * (BLOCK_NO * l_ab),
+        "3": O1 + (C - O1) * 0.55,
+        "4": C + u3 * (CROSS_NO * l_ab),
+        "5": O2 + (C - O2) * 0.5,
+    }
+
+
+def _given(v: Viewport, geo: Geometry, c: Construction) -> None:
+    """What the scheme adds to the mechanism: link 1's block on its guide (named A), C's name
+    beside the cross, the given
+    V_A, the senses of ω3 (= ω5) and of M, the line O1O2, and the given angle and lengths
+    dimensioned."""
+    O1, O2, A, B, C = (c[n] for n in ("O1", "O2", "A", "B", "C"))
+    v.slider(A, Vec(1.0, 0.0), with_joint=False)
+    v.label(A, "A", prefer=(-1.0, 1.0), clear=3.0)
+    v.label(C, "C", prefer=(-1.0, 1.0), clear=5.0)  # clear of the cross's two blocks
+    v.seg(O1, O2, "centre")
     sgn = 1.0 if geo.v_A > 0 else -1.0
     tip = A + Vec(sgn * v.scale.model(VA_LEN), 0.0)
-    va_from = A + Vec(0.0, v.scale.model(7.0))
-    v.arrow(va_from, tip + Vec(0.0, v.scale.model(7.0)), "result")
-    v.label(tip + Vec(0.0, v.scale.model(7.0)), "V_A", 3.5, prefer=(0.0, 1.0), clear=1.0)
+    lift = Vec(0.0, v.scale.model(VA_LIFT))
+    v.arrow(A + lift, tip + lift, "result")
+    v.label(tip + lift, "V_A", 3.5, prefer=(0.0, 1.0), clear=1.0)
     w3 = c["ω3"]
     # each arrow keeps its 100° span whatever its sense: it starts at the span's far end
     a3 = math.degrees((C - O1).angle) + 20.0
     v.turn(O1, w3, a3 if w3 > 0 else a3 + 100.0, "ω_3")
     m_sense = -w3 * (1.0 if geo.M >= 0 else -1.0)  # M resists the motion when M > 0
     v.turn(O2, m_sense, -60.0 if m_sense > 0 else 40.0, "M")
-    # letters and link numbers
-    v.label(O1, "O_1", prefer=(1.0, -1.0), clear=2.5)
-    v.label(O2, "O_2", prefer=(1.0, -1.0), clear=4.0)
-    v.label(A, "A", prefer=(-1.0, -1.0), clear=3.0)
-    v.label(B, "B", prefer=(-1.0, -1.0), clear=3.5)
-    v.label(C, "C", prefer=(-1.0, 1.0), clear=5.0)
-    for q, n in (
-        (A + (B - A) * 0.5, "1"),
-        (B + u3 * v.scale.model(8.0), "2"),
-        (O1 + (C - O1) * 0.55, "3"),
-        (C + u3 * v.scale.model(9.0), "4"),
-        (O2 + (C - O2) * 0.5, "5"),
-    ):
-        v.label(q, n, 3.5, clear=0.8)
-    # the given geometry, dimensioned
     v.dim_angle(O1, O2, C, "α", r_mm=16.0, height=3.5)
-    l_ab, l12 = (
-        num(A.dist(B) * 1000.0),
-        num(O1.dist(O2) * 1000.0),
-    )
+    l_ab, l12 = num(A.dist(B) * 1000.0), num(O1.dist(O2) * 1000.0)
     v.dim_linear(A, B, f"l_{{AB}} = {l_ab}", offset=-10.0, height=2.5)
     v.dim_linear(O1, O2, f"l_{{O1O2}} = {l12}", offset=-22.0, height=2.5)
 

@@ -8,75 +8,42 @@ circles d_b and d_y (thin); the producing rack in its central position (two-dot 
 tool) with its datum line shifted x·m from the rolling line; the caliper's chord K′K with s̄ and h̄
 dimensioned. Right: the given data, the results beside the seed's, the tooth's other sizes, the
 order of construction and the seed's errata.
+
+Composed from the general views: the tooth and the inset of the chord's construction
+(:mod:`geomcad.sheet.teeth`, from the gear, its flank and the recorded points), the tables and
+the order of construction (:mod:`geomcad.sheet.views`); the caliper's s̄ and h̄ barred by
+:func:`geomcad.sheet.overline.overline_marks`.
 """
 
 from __future__ import annotations
 
-import dataclasses
-import itertools
-import math
 from typing import TYPE_CHECKING
 
-import numpy as np
-
 from geomcad import tol
-from geomcad.geom import Arc, Circle, Vec
 from geomcad.kinematics.gears import SpurGear
 from geomcad.sheet import (
-    Polyline,
-    Run,
     Scale,
     Sheet,
-    TextItem,
     TitleBlock,
-    Viewport,
     start,
 )
 from geomcad.sheet import views as V
-from geomcad.sheet.compose import Column, Field, Figure, Row, Spacer, Tree, arrange, compose
-from geomcad.sheet.drawing import ARROW_LEN
+from geomcad.sheet.compose import Column, Field, Row, Spacer, Tree, arrange, compose
 from geomcad.sheet.lang import Words, per_language
-from geomcad.sheet.text import SUB_DROP, SUB_SCALE, SUP_RISE, metrics, run_size
-from geomcad.sheet.text import width as text_width
+from geomcad.sheet.overline import overline_marks
+from geomcad.sheet.teeth import Caliper, ChordInset, CutTooth
 from geomcad.sheet.views import num
 
 from .spec_2013_4 import PARAMS, RESULTS
 
 if TYPE_CHECKING:
-    from geomcad.construction import Construction
     from geomcad.problem import Solution
 
     from .p2013_4 import Geometry
 
 
-def view_half_angle(gear: SpurGear) -> float:
-    """Half the angle the tooth view spans about the tooth's axis: the tooth, half a space either
-    side, and a little of the circles beyond."""
-    return min(1.3 * math.pi / gear.z, math.pi / 2.0)
-
-
-def extent(gear: SpurGear) -> tuple[float, float, float, float]:
-    """The model box of the tooth view: the tooth with half a space either side, the circles
-    a little beyond, down to the lower of the base and root circles, up past the rack's top."""
-    half = view_half_angle(gear)
-    r_top = max(gear.r_a, gear.r + (gear.x + gear.rack.ha + gear.rack.c) * gear.m)
-    r_low = min(gear.r_b, gear.d_f / 2.0)
-    w = r_top * math.sin(half)
-    pad = 0.35 * gear.m
-    return (-w, r_low * math.cos(half) - pad, w, r_top + 1.5 * pad)
-
-
-def _inset_extent(c: Construction, gear: SpurGear) -> tuple[float, float, float, float]:
-    """The model box of the inset: O, the axis up past the tip, K and N."""
-    K, N = c["K"], c["N"]
-    x_lo = min(N.x, 0.0) - 0.1 * gear.r_a
-    x_hi = max(K.x, 0.0) + 0.1 * gear.r_a
-    return (x_lo, -0.06 * gear.r_a, x_hi, 1.08 * gear.r_a)
-
-
 WORDS = Words(__package__, "sheets_2013_4")
 MM = 1000.0  # m → mm for the tables
-CENTRE = Vec(0.0, 0.0)  # the gear's centre O
 #: Width (mm) of the order of construction's text.
 ORDER_W = 144.0
 #: The tables' row height (mm).
@@ -91,22 +58,18 @@ ORDER = (
 BLOCK_H = 52.0
 
 
-def _views(sol: Solution[Geometry]) -> tuple[Tree, Figure]:
+def _views(sol: Solution[Geometry]) -> tuple[Tree, CutTooth]:
     """The sheet's tree: the tooth (the sheet's main view) beside a column of the inset, the
     tables and the order of construction."""
     geo, c = sol.data, sol.construction
     gear: SpurGear = geo.gear
-    x0, _y0, x1, _y1 = box = extent(gear)
-
-    def tooth(v: Viewport) -> None:
-        _circles(v, gear, geo, view_half_angle(gear))
-        _rack(v, gear, x0, x1)
-        _tooth(v, gear, geo)
-        _caliper(v, c, geo)
-
-    main = Figure(box, tooth, title=WORDS("view_title"), title_height=5.0, margin=3.0, weight=3.0)
-    inset = Figure(
-        _inset_extent(c, gear), lambda v: _inset(v, c, gear, geo),
+    caliper = Caliper(c["K"], c["K'"], c["T"], c["H"])
+    main = CutTooth(
+        gear, geo.flank, [(geo.r_y, "d_y")], caliper,
+        title=WORDS("view_title"), title_height=5.0, margin=3.0, weight=3.0,
+    )  # fmt: skip
+    inset = ChordInset(
+        gear, c["K"], c["N"], c["T"], geo.r_y,
         title=WORDS("inset_title"), title_height=3.5, margin=4.0,
     )  # fmt: skip
     data, results, teeth = _tables(sol)
@@ -136,221 +99,6 @@ def sheets(sol: Solution[Geometry]) -> list[tuple[str, Sheet]]:
     sheet = d.finish()
     overline_marks(sheet)
     return [("", sheet)]
-
-
-def _inset(v: Viewport, c: Construction, gear: SpurGear, geo: Geometry) -> None:
-    """A small view of the whole construction about O: the axis OT, OK, the circles d_b, d_y,
-    d_a, the thread KN tangent to the base circle, and the angles ψ_y = ∠TOK, α_y = ∠KON."""
-    K, N, T = c["K"], c["N"], c["T"]
-    a_lo, a_hi = math.pi / 2.0 - 0.12, N.angle + 0.12
-    for r, role in ((gear.r_b, "construction"), (geo.r_y, "construction"), (gear.r_a, "link")):
-        v.arc(Arc(Circle(CENTRE, r), a_lo, a_hi), role)
-    v.seg(CENTRE, T, "centre")
-    v.seg(CENTRE, K, "construction")
-    v.seg(CENTRE, N, "construction")
-    v.seg(K, N, "result")
-    v.dot(CENTRE)
-    for q in (K, N, T):
-        v.dot(q, "result")
-    v.label(CENTRE, "O", 3.5, prefer=(1.0, -1.0), clear=1.5)
-    v.label(K, "K", 2.5, prefer=(1.0, 0.0))
-    v.label(N, "N", 2.5, prefer=(-1.0, 0.0))
-    v.label(T, "T", 2.5, prefer=(-1.0, 1.0))
-    v.dim_angle(CENTRE, N, K, "α_y", r_mm=0.55 * v.mm(gear.r_b), height=2.5)
-    _small_angle(v, CENTRE, K, T, "ψ_y", 0.85 * v.mm(gear.r_b))
-
-
-def _small_angle(v: Viewport, vertex: Vec, p1: Vec, p2: Vec, text: str, r_mm: float) -> None:
-    """An angle too small for arrows inside its arc: the arc, and two arrows outside it pointing
-    at its ends (GOST 2.307)."""
-    a1, a2 = (p1 - vertex).angle, (p2 - vertex).angle
-    lo, hi = min(a1, a2), max(a1, a2)
-    r = v.scale.model(r_mm)
-    v.arc(Arc(Circle(vertex, r), lo, hi), "dimension")
-    step = 2.2 * ARROW_LEN / r_mm  # arrows outside the arc, each over two heads long
-    for a_end, a_out in ((lo, lo - step), (hi, hi + step)):
-        v.arrow(vertex + Vec.polar(r, a_out), vertex + Vec.polar(r, a_end), "dimension")
-    v.label(vertex + Vec.polar(r, hi + step), text, 2.5, prefer=(-1.0, 0.0))
-
-
-MACRON = "\u0304"
-
-
-def overline_marks(sheet: Sheet) -> None:
-    """Turn each combining macron (s̄, h̄) into a bar drawn over the letter before it.
-
-    The lettering font sets U+0304 as a spacing glyph after its letter; the caliper's symbols
-    need the bar over the letter, so the bar is drawn as a thin line and the mark is dropped."""
-    m = metrics()
-    for i, it in enumerate(sheet.items):
-        if not isinstance(it, TextItem) or MACRON not in it.text:
-            continue
-        x = 0.0  # along the baseline from ``it.at``
-        runs: list[Run] = []
-        bars: list[tuple[tuple[float, float], tuple[float, float]]] = []
-        for run in it.runs:
-            fs = run_size(it.font_size, run.shift)
-            cap = it.height * (1.0 if run.shift == "base" else SUB_SCALE)
-            dy = {"base": 0.0, "sub": SUB_DROP * it.font_size, "sup": -SUP_RISE * it.font_size}
-            kept = ""
-            for ch in run.text:
-                if ch == MACRON and kept:
-                    # the barred letter becomes a run of its own, so that the renderer sets it
-                    # exactly where the bar goes; the bar spans the letter's ink (about
-                    # 0.27 … 0.9 of its advance), clear of an ascender or of the x-height
-                    letter = kept[-1]
-                    w = m.advance(letter, fs)
-                    if kept[:-1]:
-                        runs.append(Run(kept[:-1], run.shift))
-                    runs.append(Run(letter, run.shift))
-                    kept = ""
-                    tall = letter.isupper() or letter in "bdfhklt"
-                    y_bar = dy[run.shift] - (1.15 if tall else 0.92) * cap
-                    bars.append((_turned(it, x - 0.73 * w, y_bar), _turned(it, x - 0.1 * w, y_bar)))
-                    continue
-                kept += ch
-                x += m.advance(ch, fs)
-            if kept:
-                runs.append(Run(kept, run.shift))
-        new_runs = tuple(runs)
-        sheet.items[i] = dataclasses.replace(
-            it, runs=new_runs, width=text_width(new_runs, it.font_size)
-        )
-        # a bar belongs with its text: the tables' thin line, or a dimension's
-        role = "frame_thin" if it.role == "title" else "dimension"
-        for a, b in bars:
-            sheet.add(Polyline((a, b), role))
-
-
-def _turned(it: TextItem, x: float, y: float) -> tuple[float, float]:
-    """A point given in the text's own frame (x along its baseline from ``it.at``, y down across
-    it) on the paper: turned with the text by its angle (counter-clockwise on the paper)."""
-    c, s = math.cos(math.radians(it.angle)), math.sin(math.radians(it.angle))
-    return (it.at[0] + x * c + y * s, it.at[1] - x * s + y * c)
-
-
-def _arc(r: float, half: float) -> Arc:
-    """The arc of radius r about O over the view, from the right edge to the left."""
-    return Arc(Circle(CENTRE, r), math.pi / 2.0 - half, math.pi / 2.0 + half)
-
-
-def _circles(v: Viewport, gear: SpurGear, geo: Geometry, half: float) -> None:
-    """The gear's circles across the view, labelled at their ends."""
-    span = 0.97 * half
-    r_y = geo.r_y
-    items = (
-        (gear.r_a, "link", "d_a", gear.tip_diameter, -1.0),
-        (gear.r, "centre", "d", gear.d, 1.0),
-        (gear.d_f / 2.0, "thin", "d_f", gear.d_f, 1.0),
-        (gear.r_b, "construction", "d_b", gear.d_b, -1.0),
-        (r_y, "construction", "d_y", 2.0 * r_y, -1.0),
-    )
-    for r, role, name, dia, side in items:
-        v.arc(_arc(r, span), role)
-        end = Vec.polar(r, math.pi / 2.0 + side * span)
-        v.label(end, f"{name} = ⌀{num(dia * MM, 4)}", 2.5, prefer=(-side, 1.0))
-    # the tooth's axis
-    low = min(gear.r_b, gear.d_f / 2.0) - 0.3 * gear.m
-    v.seg(Vec(0.0, low), Vec(0.0, extent(gear)[3]), "centre")
-
-
-def _rack(v: Viewport, gear: SpurGear, x_lo: float, x_hi: float) -> None:
-    """The producing rack at φ = 0 (its space straddles the tooth), its datum line and the shift."""
-    m, a = gear.m, gear.alpha
-    c0, y_t, rho, c_x, y_c = gear.rack_frame()
-    y_top = gear.r + gear.x * m + (gear.rack.ha + gear.rack.c) * m
-    pts: list[tuple[float, float]] = []
-    for kk in range(-3, 3):
-        shift = kk * math.pi * m  # tooth centred at π·m/2 + shift
-        # left flank from the top down to the fillet, the fillet, the tip, and back up mirrored
-        xc = math.pi * m / 2.0 + shift
-        top_left = c0 + shift - y_top * math.tan(a)
-        b = np.linspace(math.pi + a, 1.5 * math.pi, 12)
-        fil = np.stack([c_x + shift + rho * np.cos(b), y_c + rho * np.sin(b)], axis=-1)
-        left = [(top_left, y_top), *map(tuple, fil)]
-        right = [(2.0 * xc - px, py) for px, py in reversed(left)]
-        pts += [(float(px), float(py)) for px, py in left + right]
-    band = _clip(pts, x_lo, x_hi)
-    for piece in band:
-        v.polyline([Vec(px, py) for px, py in piece], "extreme")
-    y_d = gear.r + gear.x * m
-    v.seg(Vec(x_lo, y_d), Vec(x_hi, y_d), "centre")
-    # the datum line's name right of the x·m dimension (whose text may run past its arrow)
-    v.label(Vec(0.8 * x_lo, y_d), WORDS("rack_datum"), 2.5, prefer=(1.0, 1.0))
-    v.seg(Vec(x_lo, gear.r), Vec(0.6 * x_lo, gear.r), "centre")
-    if abs(gear.x) > tol.DERIVED:  # no shift to dimension for x = 0
-        xd = 0.93 * x_lo
-        v.dim_linear(
-            Vec(xd, gear.r),
-            Vec(xd, y_d),
-            f"xm = {num(gear.x * m * MM, 4)}",
-            offset=6.0,
-            height=2.5,
-        )
-    del y_t
-
-
-def _clip(pts: list[tuple[float, float]], lo: float, hi: float) -> list[list[tuple[float, float]]]:
-    """The parts of a polyline inside the band lo ≤ x ≤ hi, cut where it crosses its edges."""
-    out: list[list[tuple[float, float]]] = []
-    cur: list[tuple[float, float]] = []
-    for (xa, ya), (xb, yb) in itertools.pairwise(pts):
-        ina, inb = lo <= xa <= hi, lo <= xb <= hi
-        if ina and not cur:
-            cur.append((xa, ya))
-        if ina and inb:
-            cur.append((xb, yb))
-            continue
-        for edge in (lo, hi):
-            if (xa - edge) * (xb - edge) < 0.0:
-                t = (edge - xa) / (xb - xa)
-                q = (edge, ya + t * (yb - ya))
-                if ina:
-                    cur.append(q)
-                    out.append(cur)
-                    cur = []
-                else:
-                    cur = [q, (xb, yb)] if inb else []
-    if len(cur) > 1:
-        out.append(cur)
-    return [p for p in out if len(p) > 1]
-
-
-def _tooth(v: Viewport, gear: SpurGear, geo: Geometry) -> None:
-    """The tooth's outline (main line): both flanks, the tip land and the root in the spaces."""
-    fl = geo.flank
-    right = np.concatenate([fl.involute, fl.fillet[1:]])
-    left = right * np.array([-1.0, 1.0])
-    v.polyline([Vec(float(px), float(py)) for px, py in right], "link")
-    v.polyline([Vec(float(px), float(py)) for px, py in left], "link")
-    r_a, r_f = gear.r_a, gear.d_f / 2.0
-    v.arc(Arc(Circle(CENTRE, r_a), math.pi / 2.0 - fl.tip_to, math.pi / 2.0 + fl.tip_to), "link")
-    for sgn in (1.0, -1.0):
-        lo, hi = fl.root_from, fl.root_to
-        if sgn > 0:
-            v.arc(Arc(Circle(CENTRE, r_f), math.pi / 2.0 - hi, math.pi / 2.0 - lo), "link")
-        else:
-            v.arc(Arc(Circle(CENTRE, r_f), math.pi / 2.0 + lo, math.pi / 2.0 + hi), "link")
-
-
-def _caliper(v: Viewport, c: Construction, geo: Geometry) -> None:
-    """The caliper's chord K′K, its height below the tip T, and their dimensions."""
-    K, K_, T, H = c["K"], c["K'"], c["T"], c["H"]
-    gear = geo.gear
-    v.seg(K_, K, "result")
-    v.seg(T, H, "result")
-    for q in (K, K_, T):
-        v.dot(q, "result")
-    v.label(K, "K", prefer=(1.0, -1.0), clear=1.0)
-    v.label(K_, "K'", prefer=(-1.0, -1.0), clear=1.0)
-    v.label(T, "T", prefer=(-1.0, 1.0), clear=1.0)
-    rise = v.mm(T.y - K.y)
-    s_txt = num(float(c["K"].dist(c["K'"])) * MM, 4)
-    v.dim_linear(K_, K, f"s̄ = {s_txt}", offset=rise + 14.0, height=3.5)
-    h_txt = num((T.y - H.y) * MM, 4)
-    side = v.mm(K.x) + 12.0
-    v.dim_linear(T, H, f"h̄ = {h_txt}", offset=side, height=3.5)
-    del gear
 
 
 def _tables(sol: Solution[Geometry]) -> tuple[V.Table, V.Table, V.Table]:

@@ -22,13 +22,11 @@ leaves in its box) settle; μ_ω follows from them.
 
 from __future__ import annotations
 
-import math
 from collections.abc import Mapping
 from typing import TYPE_CHECKING
 
 from geomcad.geom import Vec
 from geomcad.sheet import (
-    Polyline,
     Scale,
     Sheet,
     TitleBlock,
@@ -62,8 +60,7 @@ from geomcad.sheet.drawing import SHORT_MM
 from geomcad.sheet.gearing import gear_web, ground_line, ring_gear, shaft_bearing
 from geomcad.sheet.lang import Words, current
 from geomcad.sheet.scale import gost_length_scale, nice_factor
-from geomcad.sheet.text import box as text_box
-from geomcad.sheet.text import parse
+from geomcad.sheet.trains import AngleDiagram, linear_velocities, scaled_rays
 
 from .p2013_5 import BLOCK25, FRAME, H1, H2, PLANET, SUN
 from .spec_2013_5 import PARAMS, RESULTS
@@ -140,17 +137,6 @@ def _build_box(geo: Geometry, k_l: float, k_v: float) -> Extent:
             y_hi + PAD_T * k_l)  # fmt: skip
 
 
-def _rays_box(geo: Geometry, rays: RayPlan, k_l: float, k_v: float) -> Extent:
-    """The model box (at k_l) of the angle diagram, its labels' rows and the ratio under it."""
-    ends = [_pv(geo, k_l, k_v, e) for e in rays.ends.values()]
-    S = _pv(geo, k_l, k_v, rays.S)
-    xs = [e.x for e in ends] + [S.x]
-    text = text_box(parse("u_{1H2} = ω_1/ω_{H2} = 000,0/00,00 = 00,0"), 3.5)[0]
-    lo = min(xs) - 20.0 * k_l
-    hi = max(max(xs) + 4.0 * k_l, S.x + text * k_l)
-    return (lo, S.y - 0.55 * rays.H - 3.0 * k_l, hi, S.y + rays.H + 3.0 * 6.5 * k_l)
-
-
 def _tree(sol: Solution[Geometry], k_l: float, k_v: float) -> tuple[Node, dict[str, View], float]:
     """The sheet's views at the factors k_l, k_v: the heading, the scheme with the plan, the
     angle diagram under them, the panel on the right; and μ_ω of the angle diagram."""
@@ -158,12 +144,13 @@ def _tree(sol: Solution[Geometry], k_l: float, k_v: float) -> tuple[Node, dict[s
     k, kv = Scale(k_l, "l"), Scale(k_v, "v")
     om = [abs(w) for w in geo.plan.omega.values()]
     k_omega = max(nice_factor(max(om), RAY_W, "v").k, nice_factor(k_v / k_l, RAY_H, "v").k)
-    rays = _scaled_rays(geo, k_v, k_omega)
+    rays = scaled_rays(geo.rays, k_v, k_omega)
     build = Figure(_build_box(geo, k_l, k_v), lambda v: _build(v, geo, kv), group="l",
                    margin=0.5, weight=2.0)  # fmt: skip
-    ray_view = Figure(_rays_box(geo, rays, k_l, k_v),
-                      lambda v: _rays(v, geo, rays, kv, k_omega), group="l", margin=1.0,
-                      title=WORDS("rays_title", k=num(k_omega, 6)), show_scale=False)  # fmt: skip
+    ray_view = AngleDiagram(
+        rays, k_l, kv, LINK_LABEL, (SUN, H2, "u_{1H2} = ω_1/ω_{H2}"), group="l", margin=1.0,
+        title=WORDS("rays_title", k=num(k_omega, 6)), show_scale=False,
+    )  # fmt: skip
     head = V.Text(paragraph=WORDS("title"), width=160.0, height=5.0)
     factors = V.Text(
         lines=[
@@ -225,7 +212,7 @@ def _build(v: Viewport, geo: Geometry, kv: Scale) -> None:
     x_axis = right + GAP + (-min(0.0, *(e.x for e in geo.plan.ends.values()))) / kv.k
     vp = d.viewport(v.scale, (0.0, y_hi), (x_axis, top))
     d.text(WORDS("plan"), (right + GAP, top - 12.0), 3.5)
-    short = _plan(v, vp, geo, kv, spots)
+    short = linear_velocities(v, vp, geo.points, geo.plan, kv, spots, LINK_LABEL, WORDS("v0"))
     if short:
         names = ", ".join(n.lower() for n in short)
         # the note under the plan, below the axis' own label
@@ -237,6 +224,10 @@ def _build(v: Viewport, geo: Geometry, kv: Scale) -> None:
 
 
 # -- the scheme ----------------------------------------------------------------------------------
+# Hand-laid, on purpose, from the general symbols of geomcad.sheet.gearing: the radii are the
+# model's (r = m·z/2), but where each gear sits along its shaft is the drawing's choice (the
+# model has no axial dimension), so the axial positions are multiples of the unit u (the radii
+# spanned / SCHEME_UNITS), laid as the seed draws the train.
 
 
 def _x_end(u: float) -> float:
@@ -322,124 +313,6 @@ def _scheme(v: Viewport, geo: Geometry, u: float) -> tuple[float, dict[str, Vec]
     v.label(Vec(-0.4 * u, 0.0), WORDS("input"), 2.5, prefer=(-1.0, 0.0), clear=0.5)
     v.label(Vec(x_end + 0.4 * u, 0.0), WORDS("output"), 2.5, prefer=(1.0, -1.0), clear=0.8)
     return v.p(Vec(x_end + 0.4 * u, 0.0))[0], geo_spots
-
-
-# -- the plan of linear velocities ---------------------------------------------------------------
-
-
-def _pv(geo: Geometry, k_l: float, k_v: float, q: Vec) -> Vec:
-    """A plan point (v in m/s, y in m) as a model point of the viewport at k_l: v drawn at k_v."""
-    return Vec(q.x * k_l / k_v, q.y)
-
-
-def _plan(
-    v_scheme: Viewport, vp: Viewport, geo: Geometry, kv: Scale, spots: dict[str, Vec]
-) -> list[str]:
-    """Draw the plan; return the points whose velocity is shorter than two arrowheads (drawn
-    as their ends only, at μ_V, and named in a note)."""
-    short: list[str] = []
-    k_l = vp.scale.k
-    plan = geo.plan
-    ys = [p.y for p in geo.points]
-    y_min, y_max = min(ys), max(ys)
-    pad = 0.06 * (y_max - y_min)
-
-    def P(q: Vec) -> Vec:
-        return _pv(geo, k_l, kv.k, q)
-
-    # the axis v = 0: the line of the fixed link (and of the points at rest)
-    vp.seg(Vec(0.0, y_min - pad), Vec(0.0, y_max + pad), "link")
-    vp.label(Vec(0.0, y_min - pad), WORDS("v0"), 2.5, prefer=(0.0, -1.0), clear=0.0)
-    for p in geo.points:
-        end = P(plan.ends[p.name])
-        level = vp.p(Vec(0.0, p.y))[1]
-        # the level of the point carried across from the scheme
-        x0 = v_scheme.p(spots[p.name])[0]
-        x_end = max(vp.p(end)[0], vp.p(Vec(0.0, p.y))[0]) + 3.0
-        vp.d.sheet.add(Polyline(((x0, level), (x_end, level)), "construction"))
-        length = abs(vp.mm(end.x))
-        if length >= SHORT_MM:
-            vp.arrow(Vec(0.0, p.y), end, "vector")
-        elif length > 0.0:
-            short.append(p.name)
-        vp.dot(end, "result")
-        vp.label(end, p.name.lower(), 3.5, prefer=(1.0 if end.x >= 0 else -1.0, 1.0), clear=0.8)
-    # each link's line through the ends of its points, 5 mm beyond the outermost ones
-    for link in plan.order:
-        pts = sorted(
-            (vp.p(P(plan.ends[p.name])) for p in geo.points if link in p.links), key=lambda q: q[1]
-        )
-        (xa, ya), (xb, yb) = pts[-1], pts[0]
-        length = math.hypot(xb - xa, yb - ya)
-        ux, uy = (xb - xa) / length, (yb - ya) / length
-        a_ = (xa - 5.0 * ux, ya - 5.0 * uy)
-        b_ = (xb + 5.0 * ux, yb + 5.0 * uy)
-        vp.d.sheet.add(Polyline((a_, b_), "result"))
-        # the link's name just past the line's upper end, along the line, off every other line
-        vp.d.label(a_, LINK_LABEL[link], 3.5, prefer=(-ux, -uy), clear=1.0)
-    return short
-
-
-# -- the angle diagram ---------------------------------------------------------------------------
-
-
-def _scaled_rays(geo: Geometry, k_v: float, k_omega: float) -> RayPlan:
-    """The recorded angle diagram enlarged about its pole S so that its pole distance is
-    k_v/k_ω (the rays keep their directions, so the intercepts read ω_i at μ_ω = k_ω)."""
-    rays = geo.rays
-    H = k_v / k_omega
-    f = H / rays.H
-    return RayPlan(rays.S, H, {k: rays.S + (e - rays.S) * f for k, e in rays.ends.items()})
-
-
-def _rays(v: Viewport, geo: Geometry, rays: RayPlan, kv: Scale, k_omega: float) -> None:
-    """The angle diagram: from S, rays parallel to the links' lines; they cut the line H above S
-    in segments ω_i/k_ω."""
-    k_l = v.scale.k
-    d = v.d
-    ends = {kk: _pv(geo, k_l, kv.k, e) for kk, e in rays.ends.items()}
-    S = _pv(geo, k_l, kv.k, rays.S)
-    xs = [e.x for e in ends.values()] + [S.x]
-    lo, hi = min(xs), max(xs)
-    h_mm = rays.H / k_l
-    width = (hi - lo) / k_l
-    base_lo = Vec(lo - 0.02 * (hi - lo), S.y + rays.H)
-    base_hi = Vec(hi + 0.02 * (hi - lo), S.y + rays.H)
-    v.seg(base_lo, base_hi, "construction")
-    v.seg(S, Vec(S.x, S.y + rays.H), "construction")
-    v.dot(S)
-    v.label(S, "S", 3.5, prefer=(0.0, -1.0))
-    # the intercepts' names above the line, staggered upwards where they would collide
-    rows: list[float] = []
-    for link, e in sorted(ends.items(), key=lambda kv_: kv_[1].x):
-        v.seg(S, e, "result")
-        v.dot(e, "result")
-        x_mm, y_mm = v.p(e)
-        label = LINK_LABEL[link]
-        w = text_box(parse(label), 3.5)[0]
-        row = next((i for i, right in enumerate(rows) if right < x_mm - w / 2.0 - 1.0), len(rows))
-        if row == len(rows):
-            rows.append(0.0)
-        rows[row] = x_mm + w / 2.0
-        y_text = y_mm - 2.0 - 6.0 * row
-        if row:
-            d.sheet.add(Polyline(((x_mm, y_mm - 0.8), (x_mm, y_text + 1.0)), "dimension"))
-        d.text(label, (x_mm, y_text), 3.5, anchor="centre")
-    # the ratio of the two intercepts as read off the diagram: the quotient of the printed
-    # segments (4 significant figures), printed to 3 so that the figures agree
-    x1, x2 = (float(f"{(rays.ends[kk].x - rays.S.x) / kv.k:.4g}") for kk in (SUN, H2))
-    d.text(
-        f"u_{{1H2}} = ω_1/ω_{{H2}} = {num(x1, 4)}/{num(x2, 4)} = {num(x1 / x2, 3)}",
-        v.p(Vec(S.x, S.y - 0.55 * rays.H)),
-        3.5,
-    )
-    v.dim_linear(
-        S,
-        Vec(S.x, S.y + rays.H),
-        f"H = {num(h_mm, 4)}",
-        offset=-(min(12.0, 0.5 * width) + 4.0) if (S.x - lo) > (hi - S.x) else 12.0,
-        height=2.5,
-    )
 
 
 # -- the tables ----------------------------------------------------------------------------------

@@ -372,11 +372,10 @@ def test_order_of_construction_is_the_recorded_steps() -> None:
 
 def test_assur_kinds_in_the_sheets_letters() -> None:
     """The groups' kinds in the language's pair letters: ВВВ/ПВП on Russian sheets."""
-    from geomcad_constructions.sheets_2013_1 import _group_kind
-
+    from geomcad.sheet.assur import group_kind
     from geomcad.sheet.lang import language
 
     with language("ru"):
-        assert (_group_kind("RRR"), _group_kind("PRP")) == ("ВВВ", "ПВП")
+        assert (group_kind("RRR"), group_kind("PRP")) == ("ВВВ", "ПВП")
     with language("en"):
-        assert (_group_kind("RRR"), _group_kind("PRP")) == ("RRR", "PRP")
+        assert (group_kind("RRR"), group_kind("PRP")) == ("RRR", "PRP")

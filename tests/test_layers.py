@@ -1,7 +1,7 @@
 """Imports flow one way (README, "Layout"): a layer imports only the layers below it.
 
-    errors, tol, units ← geom ← construction ← kinematics / forces / structure ← dynamics
-        ← linkage ← sheet ← render ← problem (with notebook) ← files
+    errors, tol, units ← geom | titlefields ← construction ← kinematics / forces / structure
+        ← dynamics ← linkage ← sheet ← render ← problem (with notebook) ← files
         ← (registry, documents, verify, review, reference, teach, cli)
 
 (dynamics above kinematics: its velocity analogues come from the kinematics' sweep kernel;
@@ -25,6 +25,7 @@ LEVEL = {
     "interrupts": 0,
     "tol": 0,
     "units": 0,
+    "titlefields": 1,  # a user's [sheet] table as data (beside geom)
     "geom": 1,
     "construction": 2,
     "kinematics": 3,

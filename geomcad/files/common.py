@@ -8,6 +8,7 @@ from collections.abc import Iterable, Mapping
 from typing import Any
 
 from geomcad.errors import ParameterError
+from geomcad.titlefields import SHEET_FORMATS, check_format, title_values
 
 
 class Table:
@@ -121,7 +122,8 @@ def check_top(
 ) -> str:
     """The file's top level: the marking table ``kind`` and, optionally, a ``title`` string and
     a ``[sheet]`` table of title-block data (``lang = "en"`` among them) and the sheet
-    ``format`` (:func:`sheet_formats`), checked here (by the sheet layer, loaded only then)."""
+    ``format`` (:func:`sheet_formats`), checked here as data (:mod:`geomcad.titlefields`: no
+    sheet module is loaded; whether the font draws every character is the sheet's check)."""
     ok = {kind, *allowed}
     for k in data:
         if k not in ok:
@@ -129,9 +131,7 @@ def check_top(
                 k, data[k], f"unknown top-level key in a [{kind}] file (it knows {', '.join(ok)})"
             )
     if "sheet" in data:
-        from geomcad.sheet.titleblock import TitleData
-
-        TitleData.from_mapping(title_fields(data["sheet"]), "sheet")
+        title_values(title_fields(data["sheet"]), "sheet")
         sheet_formats(data)
     title = data.get("title", "")
     if not isinstance(title, str):
@@ -153,11 +153,9 @@ def title_fields(table: Any) -> Any:
 
 def sheet_formats(data: Mapping[str, Any]) -> tuple[str, ...]:
     """The formats a file's sheets may take: the one its ``[sheet]`` table asks for
-    (``format = "A2"``), else every one of :data:`geomcad.sheet.formats.SIZES` (the sheet module
-    takes the smallest its content allows)."""
-    from geomcad.sheet import formats
-
+    (``format = "A2"``), else every one of :data:`geomcad.titlefields.SHEET_FORMATS` (the sheet
+    module takes the smallest its content allows)."""
     table = data.get("sheet")
     if isinstance(table, Mapping) and table.get(FORMAT_KEY) is not None:
-        return (formats.check(table[FORMAT_KEY], f"sheet.{FORMAT_KEY}"),)
-    return formats.SIZES
+        return (check_format(table[FORMAT_KEY], f"sheet.{FORMAT_KEY}"),)
+    return SHEET_FORMATS

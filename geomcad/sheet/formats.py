@@ -32,9 +32,10 @@ from geomcad.errors import ParameterError
 from geomcad.sheet.compose import Field, Layout, Tree, View, arrange, least_room
 from geomcad.sheet.drawing import Drawing
 from geomcad.sheet.frame import FORMATS, TitleBlock
+from geomcad.titlefields import SHEET_FORMATS, check_format
 
 #: The formats a composed sheet may take, smallest first (A0 is a sheet no course asks for).
-SIZES: tuple[str, ...] = ("A4", "A3", "A2", "A1")
+SIZES: tuple[str, ...] = SHEET_FORMATS
 
 
 @dataclass(frozen=True)
@@ -55,9 +56,7 @@ class Sized:
 def check(fmt: str, key: str = "sheet.format") -> str:
     """A format a user asks for (``[sheet] format = "A2"``), checked: one of :data:`SIZES`; a
     :class:`~geomcad.errors.ParameterError` naming ``key`` otherwise."""
-    if not isinstance(fmt, str) or fmt not in SIZES:
-        raise ParameterError(key, fmt, f"must be one of {', '.join(SIZES)}")
-    return fmt
+    return check_format(fmt, key)
 
 
 def candidates(formats: Sequence[str] = SIZES) -> Iterator[tuple[str, bool]]:

@@ -23,10 +23,11 @@ from contextlib import contextmanager
 from contextvars import ContextVar
 from functools import cache
 from importlib import resources
-from typing import Literal, TypeVar, get_args
+from typing import TypeVar
 
-Lang = Literal["ru", "en"]
-LANGS: tuple[Lang, ...] = get_args(Lang)
+# the languages: a user's [sheet] table is checked against them without the sheet layer
+from geomcad.titlefields import LANGS as LANGS
+from geomcad.titlefields import Lang as Lang
 
 _CURRENT: ContextVar[Lang] = ContextVar("geomcad_lang", default="ru")
 

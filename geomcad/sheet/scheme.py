@@ -85,6 +85,7 @@ def draw_scheme(
     link_labels: Mapping[str, PointLike] | None = None,
     label_height: float = 3.5,
     ghosts: Collection[str] = (),
+    supports: Mapping[str, tuple[float, float]] | None = None,
 ) -> None:
     """Draw ``mech`` in viewport ``v`` (see the module docstring).
 
@@ -93,7 +94,9 @@ def draw_scheme(
     label per point); ``link_labels`` places each link's number at a model point (default: the
     middle of the link's first body line). ``ghosts`` are links left undrawn and unlabelled: the
     links an Assur group hangs on, when the group is drawn on its own; their pairs with the drawn
-    links still get their symbols (a joint, a block with a stub of its guide).
+    links still get their symbols (a joint, a block with a stub of its guide). ``supports`` maps
+    a frame hinge's pair name to the model direction its support points in, where the drawing
+    needs that side free (default: :func:`_support_direction`'s).
     """
     bodies = dict(bodies or {})
     size = mech.size()
@@ -115,7 +118,7 @@ def draw_scheme(
     for p in mech.pairs:
         if p.kind == "R":
             if mech.frame in p.links:
-                v.pivot(p.at, _support_direction(mech, p))
+                v.pivot(p.at, (supports or {}).get(p.name) or _support_direction(mech, p))
             else:
                 v.joint(p.at)
     _labels(v, mech, drawn, size, pair_labels, link_labels, label_height, ghosts)

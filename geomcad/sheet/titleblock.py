@@ -16,7 +16,6 @@ name is never written where a person signs.
 from __future__ import annotations
 
 import contextlib
-import datetime as _dt
 import tomllib
 from collections.abc import Iterator, Mapping
 from contextvars import ContextVar
@@ -24,7 +23,8 @@ from dataclasses import dataclass, fields, replace
 from pathlib import Path
 
 from geomcad.errors import FileKeyError, ParameterError
-from geomcad.sheet.lang import LANGS, Words, check_lang
+from geomcad.sheet.lang import Words
+from geomcad.titlefields import title_values
 
 #: The file in the working directory whose ``[sheet]`` table ``geomcad build`` reads.
 CONFIG_FILE = "geomcad.toml"
@@ -75,25 +75,9 @@ class TitleData:
         Values are strings (a TOML date is written ``YYYY-MM-DD`` → ``DD.MM.YYYY``); an unknown
         key or another type is a :class:`~geomcad.errors.ParameterError` naming ``where.KEY``.
         """
-        if not isinstance(data, Mapping):
-            raise ParameterError(where, data, "must be a table of title-block fields")
-        known = cls.keys()
-        values: dict[str, str] = {}
-        for key, value in data.items():
-            if key not in known:
-                raise ParameterError(
-                    f"{where}.{key}",
-                    value,
-                    f"is not a title-block field (known: {', '.join(known)})",
-                )
-            values[key] = _text(f"{where}.{key}", value)
-        if values.get("lang"):
-            try:
-                check_lang(values["lang"])
-            except ValueError:
-                raise ParameterError(
-                    f"{where}.lang", values["lang"], f"must be one of {', '.join(LANGS)}"
-                ) from None
+        values = title_values(data, where)  # the keys and values as data (geomcad.titlefields)
+        for key, value in values.items():
+            _drawable(f"{where}.{key}", value)
         return cls(**values)
 
     @classmethod
@@ -137,32 +121,14 @@ class TitleData:
         )
 
 
-#: The longest text a title-block field takes (the widest cell, графа 2, holds about 40
-#: characters at the smallest GOST height on two lines; the rest is refused by
-#: :func:`~geomcad.sheet.frame.fit_text` as not fitting).
-MAX_TEXT = 200
+def _drawable(key: str, text: str) -> str:
+    """``text`` if the sheet font has a glyph for each of its characters; else a
+    :class:`~geomcad.errors.ParameterError` naming ``key``."""
+    from geomcad.sheet.text import lacking, no_glyph
 
-
-def _text(key: str, value: object) -> str:
-    if isinstance(value, _dt.datetime):
-        value = value.date()
-    if isinstance(value, _dt.date):
-        return value.strftime("%d.%m.%Y")
-    if isinstance(value, str):
-        if "\n" in value:
-            raise ParameterError(key, value, "must be one line of text")
-        if len(value) > MAX_TEXT:
-            raise ParameterError(
-                key,
-                value,
-                f"is {len(value)} characters long: a title-block cell holds at most {MAX_TEXT}",
-            )
-        from geomcad.sheet.text import lacking, no_glyph
-
-        if lacking(value.strip()):
-            raise ParameterError(key, value, no_glyph(value.strip()))
-        return value.strip()
-    raise ParameterError(key, value, "must be text")
+    if lacking(text):
+        raise ParameterError(key, text, no_glyph(text))
+    return text
 
 
 _CURRENT: ContextVar[TitleData | None] = ContextVar("geomcad_title_data", default=None)

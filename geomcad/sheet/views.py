@@ -81,7 +81,7 @@ def extent_of(pts: Iterable[Vec], pad: float = 0.0) -> Extent:
 class Scheme(View):
     """The kinematic scheme of ``mech`` at a GOST 2.302 scale; every link is numbered.
 
-    ``bodies``, ``highlight``, ``pair_labels``, ``link_labels``, ``ghosts`` are
+    ``bodies``, ``highlight``, ``pair_labels``, ``link_labels``, ``ghosts``, ``supports`` are
     :func:`~geomcad.sheet.scheme.draw_scheme`'s; ``extra(viewport)`` draws more on the same
     viewport (loads, paths, positions); ``also`` are further model points the drawing covers.
     Keywords as :class:`~geomcad.sheet.compose.View` (default margin: room for a support).
@@ -98,6 +98,7 @@ class Scheme(View):
         extra: Callable[[Viewport], None] | None = None,
         also: Iterable[Vec] = (),
         label_height: float = 3.5,
+        supports: Mapping[str, tuple[float, float]] | None = None,
         **kw: Any,
     ) -> None:
         kw.setdefault("margin", 9.0)
@@ -110,6 +111,7 @@ class Scheme(View):
         self.ghosts = tuple(ghosts)
         self.extra = extra
         self.label_height = label_height
+        self.supports = supports
         pts = [p.at for p in mech.pairs]
         pts += [c for p in mech.pairs for c in (p.centre_a, p.centre_b) if c is not None]
         for bs in (bodies or {}).values():
@@ -133,6 +135,7 @@ class Scheme(View):
             link_labels=self.link_labels,
             label_height=self.label_height,
             ghosts=self.ghosts,
+            supports=self.supports,
         )
         if self.extra is not None:
             self.extra(v)
