@@ -116,10 +116,13 @@ class Drawing:
         role: str = "label",
         id: str = "",
         others: tuple[XY, ...] = (),
+        space: float = 0.0,
     ) -> None:
         """Ask for a label next to a sheet point (or one of ``others``); :meth:`finish` places
-        it."""
-        self.pending.append(LabelRequest(anchor, markup, height, role, prefer, clear, id, others))
+        it, ``space`` mm further than usual from other texts."""
+        self.pending.append(
+            LabelRequest(anchor, markup, height, role, prefer, clear, id, others, space)
+        )
 
     def table(
         self,
@@ -478,10 +481,12 @@ class Viewport:
         prefer: tuple[float, float] | None = None,
         clear: float = JOINT_R,
         id: str = "",
+        space: float = 0.0,
     ) -> None:
-        """A label next to a model point; ``prefer`` is a model direction to try first."""
+        """A label next to a model point; ``prefer`` is a model direction to try first;
+        ``space``: mm kept further than usual from other texts."""
         pref = None if prefer is None else (prefer[0], -prefer[1])
-        self.d.label(self.p(q), markup, height, pref, clear, id=id)
+        self.d.label(self.p(q), markup, height, pref, clear, id=id, space=space)
 
 
 def _head(sheet: Sheet, tip: XY, u: tuple[float, float], role: str) -> None:

@@ -21,7 +21,7 @@ from dataclasses import dataclass, field, replace
 from geomcad.errors import ParameterError
 from geomcad.sheet.lang import Lang, Words, current
 from geomcad.sheet.model import XY, Polyline, Sheet, TextItem
-from geomcad.sheet.text import HEIGHTS, box, escape, metrics, parse
+from geomcad.sheet.text import HEIGHTS, balanced, box, break_points, escape, metrics, parse
 from geomcad.sheet.titleblock import STUDENT_STAGE, TitleData
 
 #: Paper sizes (short side, long side) in mm.
@@ -237,6 +237,17 @@ def text_at(
     return item
 
 
+#: Baseline-to-baseline distance of a cell's lines, in cap heights (GOST 2.304, type B: 17/10 h).
+CELL_LEAD = 1.7
+
+
+def clearance(height: float) -> float:
+    """The room (mm) a filled title-block cell keeps between its text and its lines, for text
+    ``height`` mm high: 0.3 of the height and 0.25 mm more (1.75 mm at 5 mm, 1 mm at 2.5), so
+    that no letter touches a line, as a drawing office letters a form."""
+    return 0.3 * height + 0.25
+
+
 def fit_text(
     sheet: Sheet,
     markup: str,
@@ -246,23 +257,30 @@ def fit_text(
     anchor: str = "centre",
     param: str = "title block",
     max_lines: int = 0,
+    clear: bool = False,
 ) -> list[TextItem]:
-    """Text centred in a cell (x0, y0 top, x1, y1 bottom), shrunk to a smaller GOST height and
-    then broken into lines (at most ``max_lines``, when given) until it fits; else a
-    :class:`ParameterError` naming ``param``."""
+    """Text centred in a cell (x0, y0 top, x1, y1 bottom) at the largest GOST height up to
+    ``height`` at which it fits, broken into as few lines as it needs at that height (at most
+    ``max_lines``, when given; lines of about equal width, broken at spaces or after a
+    compound's hyphen, ``поперечно-`` / ``строгального``); else a :class:`ParameterError`
+    naming ``param``. ``clear``: the text keeps :func:`clearance` from the cell's lines (the
+    filled cells); else 0.4 mm across and 0.5 mm up and down (the form's own captions, as
+    GOST 2.104 prints them in its narrow columns)."""
     x0, y0, x1, y1 = cell
-    room_w, room_h = x1 - x0 - 0.8, y1 - y0 - 1.0
     heights = [*(hh for hh in reversed(HEIGHTS) if hh <= height), SMALLEST_HEIGHT]
-    words = markup.split(" ")
+    tokens = break_points(markup)
     for hh in heights:
-        for n_lines in range(1, min(len(words), max_lines or len(words)) + 1):
-            lines = _split(words, n_lines)
-            lead = hh * 1.6
+        c = clearance(hh) if clear else 0.0
+        room_w = x1 - x0 - 2.0 * c - (0.0 if clear else 0.8)
+        room_h = y1 - y0 - 2.0 * c - (0.0 if clear else 1.0)
+        lead = hh * CELL_LEAD
+        for n_lines in range(1, min(len(tokens), max_lines or len(tokens)) + 1):
             total = hh + (n_lines - 1) * lead
             if total > room_h:
                 break
-            if all(box(parse(ln), hh)[0] <= room_w for ln in lines):
-                cx = (x0 + x1) / 2.0 if anchor == "centre" else x0 + 1.0
+            lines = balanced(tokens, n_lines, hh)
+            if max(box(parse(ln), hh)[0] for ln in lines) <= room_w:
+                cx = (x0 + x1) / 2.0 if anchor == "centre" else x0 + max(c, 1.0)
                 top = (y0 + y1) / 2.0 - total / 2.0 + hh
                 return [
                     text_at(sheet, ln, (cx, top + i * lead), hh, role, anchor)
@@ -271,26 +289,6 @@ def fit_text(
     raise ParameterError(
         param, markup, f"does not fit its title-block cell ({x1 - x0:g} × {y1 - y0:g} mm)"
     )
-
-
-def _split(words: list[str], n: int) -> list[str]:
-    """Words split into ``n`` lines of about equal length (greedy on character counts)."""
-    if n == 1:
-        return [" ".join(words)]
-    total = sum(len(w) for w in words) + len(words) - 1
-    target = total / n
-    lines: list[str] = []
-    cur: list[str] = []
-    length = 0  # of " ".join(cur), kept as words are added (a long text stays linear)
-    for w in words:
-        if cur and length + 1 + len(w) > target and len(lines) < n - 1:
-            lines.append(" ".join(cur))
-            cur, length = [w], len(w)
-        else:
-            length += (1 if cur else 0) + len(w)
-            cur.append(w)
-    lines.append(" ".join(cur))
-    return lines
 
 
 @dataclass(frozen=True)
@@ -378,18 +376,20 @@ def _title_fill(sheet: Sheet, bx: float, by: float, tb: TitleBlock) -> None:
     fit_text(sheet, f"{cap['sheet']} {tb.sheet_no}", cell(135, 15, 155, 20), small)
     fit_text(sheet, f"{cap['sheets']} {tb.sheets}", cell(155, 15, 185, 20), small)
     if tb.scale:
-        fit_text(sheet, tb.scale, cell(167, 20, 185, 35), 5.0)
-    fit_text(sheet, tb.designation, cell(65, 40, 185, 55), 7.0, param="designation")
-    fit_text(sheet, tb.title, cell(65, 15, 135, 40), 5.0)
+        fit_text(sheet, tb.scale, cell(167, 20, 185, 35), 5.0, clear=True)
+    fit_text(sheet, tb.designation, cell(65, 40, 185, 55), 7.0, param="designation", clear=True)
+    fit_text(sheet, tb.title, cell(65, 15, 135, 40), 5.0, clear=True)
     if tb.material:
-        fit_text(sheet, tb.material, cell(65, 0, 135, 15), 5.0)
+        fit_text(sheet, tb.material, cell(65, 0, 135, 15), 5.0, clear=True)
     # графа 9: the organisation, and under it the student's group
     if tb.organisation and tb.group:
-        fit_text(sheet, tb.organisation, cell(135, 6, 185, 15), 3.5, param="org")
+        fit_text(sheet, tb.organisation, cell(135, 6, 185, 15), 3.5, param="org", clear=True)
         fit_text(sheet, tb.group, cell(135, 0, 185, 6), 2.5, param="group")
     elif tb.organisation or tb.group:
         key = "org" if tb.organisation else "group"
-        fit_text(sheet, tb.organisation or tb.group, cell(135, 0, 185, 15), 3.5, param=key)
+        fit_text(
+            sheet, tb.organisation or tb.group, cell(135, 0, 185, 15), 3.5, param=key, clear=True
+        )
 
 
 #: ISO 7200's data fields on the English block: (caption key, x0, y0, x1, y1) in mm from the
