@@ -16,6 +16,8 @@ take 5 mm off three sides of it.
 
 from __future__ import annotations
 
+import itertools
+import re
 from dataclasses import dataclass, field, replace
 
 from geomcad.errors import ParameterError
@@ -278,7 +280,7 @@ def fit_text(
             total = hh + (n_lines - 1) * lead
             if total > room_h:
                 break
-            lines = balanced(tokens, n_lines, hh)
+            lines = _by_sentences(markup, n_lines, hh, room_w)
             if max(box(parse(ln), hh)[0] for ln in lines) <= room_w:
                 cx = (x0 + x1) / 2.0 if anchor == "centre" else x0 + max(c, 1.0)
                 top = (y0 + y1) / 2.0 - total / 2.0 + hh
@@ -289,6 +291,26 @@ def fit_text(
     raise ParameterError(
         param, markup, f"does not fit its title-block cell ({x1 - x0:g} × {y1 - y0:g} mm)"
     )
+
+
+def _by_sentences(markup: str, n: int, height: float, room: float) -> list[str]:
+    """``markup`` in ``n`` lines, each sentence (a sheet's subject, then its mechanism)
+    beginning a line where that fits in ``room`` mm (the sentences' lines shared so that the
+    widest is narrowest); else in lines of about equal width (:func:`balanced`)."""
+    sentences = re.split(r"(?<=\.) ", markup)
+    best: tuple[float, list[str]] | None = None
+    if 1 < len(sentences) <= n:
+        parts = [break_points(t) for t in sentences]
+        for shares in itertools.product(range(1, n + 1), repeat=len(parts)):
+            if sum(shares) != n or any(k > len(p) for k, p in zip(shares, parts, strict=True)):
+                continue
+            lines = [
+                ln for k, p in zip(shares, parts, strict=True) for ln in balanced(p, k, height)
+            ]
+            wide = max(box(parse(ln), height)[0] for ln in lines)
+            if wide <= room and (best is None or wide < best[0]):
+                best = (wide, lines)
+    return best[1] if best else balanced(break_points(markup), n, height)
 
 
 @dataclass(frozen=True)

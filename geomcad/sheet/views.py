@@ -44,7 +44,7 @@ from geomcad.sheet.lang import Words, current
 from geomcad.sheet.plans import LINE_OVER_MM, markup_of, plan_lines
 from geomcad.sheet.scale import Scale, ScaleStyle, fmt_number
 from geomcad.sheet.scheme import Body, draw_scheme
-from geomcad.sheet.text import metrics, wrap, wrap_balanced
+from geomcad.sheet.text import balanced, break_points, metrics, wrap, wrap_balanced
 from geomcad.structure import Mechanism
 from geomcad.units import to_display
 
@@ -414,6 +414,8 @@ class Diagram(View):
 
 #: Cell padding (mm) either side of a cell's text.
 CELL_PAD = 1.2
+#: A table's heading takes at most this many lines; a narrower table is widened to it.
+HEADING_LINES = 3
 
 
 class Table(View):
@@ -452,10 +454,15 @@ class Table(View):
             ]
         total = sum(widths)
         self.widths = [w * fill / total for w in widths] if 0.0 < total < fill else list(widths)
-        #: the heading's lines (the view draws its heading itself, within its own width)
+        #: the heading's lines (the view draws its heading itself, within its own width): at
+        #: most HEADING_LINES of them, the table widened where its columns are narrower
         self.heading = (
             wrap_balanced(heading, sum(self.widths), self.title_height) if heading else []
         )
+        if len(self.heading) > HEADING_LINES:
+            tokens = break_points(heading)
+            n = min(HEADING_LINES, len(tokens))
+            self.heading = balanced(tokens, n, self.title_height)
         wide = max((text_width(t, self.title_height) for t in self.heading), default=0.0)
         if wide > sum(self.widths):
             self.widths = [w * wide / sum(self.widths) for w in self.widths]
