@@ -38,7 +38,14 @@ from geomcad.forces import ForcePolygon
 from geomcad.geom import Vec
 from geomcad.kinematics.plan import Plan
 from geomcad.sheet.compose import TITLE_GAP, TITLE_LEAD, Extent, Placed, View, text_width
-from geomcad.sheet.drawing import LINE_SPACING, SHORT_MM, Drawing, Viewport
+from geomcad.sheet.drawing import (
+    LINE_SPACING,
+    SHORT_MM,
+    Drawing,
+    Viewport,
+    number_columns,
+    number_parts,
+)
 from geomcad.sheet.graph import Axis, Graph, nice_step
 from geomcad.sheet.lang import Words, current
 from geomcad.sheet.plans import LINE_OVER_MM, markup_of, plan_lines
@@ -446,8 +453,19 @@ class Table(View):
         self.row_h = row_h
         if widths is None:
             n = max(len(r) for r in self.rows)
+            # numbers aligned on their separator take their widest whole and decimal parts
+            body = self.rows[1:] if header else self.rows
+            aligned = number_columns(body, height)
             widths = [
-                max(text_width(r[i], height) if i < len(r) else 0.0 for r in self.rows)
+                max(
+                    sum(aligned[i]),
+                    *(
+                        text_width(r[i], height)
+                        for j, r in enumerate(self.rows)
+                        if i < len(r) and (number_parts(r[i]) is None or (header and j == 0))
+                    ),
+                    0.0,
+                )
                 + 2 * CELL_PAD
                 + 1.0
                 for i in range(n)
