@@ -188,3 +188,20 @@ def test_large_numbers_in_plain_grouped_digits() -> None:
     assert fmt_number(-1.2345e6, "en", 4) == "\u20131\u00a0234\u00a0000"
     assert "10^" in fmt_number(2e-9, "ru", 4)  # a round-off stays a power of ten
     assert fmt_column([12345.6, 2.5], "ru", 4) == ["12\u00a0346", "2"]
+
+
+def test_the_names_of_one_document_share_one_height() -> None:
+    """Every sheet's name (графа 1) of a document is lettered at one height: the least the
+    longest name needs, not 5 mm on one sheet and 3.5 mm on the next."""
+    import geomcad
+
+    heights = set()
+    for _, sheet in geomcad.solve("kulisa-23110713").sheets():
+        x0 = sheet.width - 5.0 - 185.0 + 65.0
+        y0 = sheet.height - 5.0 - 40.0
+        names = [
+            t for t in sheet.texts() if x0 <= t.at[0] <= x0 + 70.0 and y0 <= t.at[1] <= y0 + 25.0
+        ]
+        assert names
+        heights |= {t.height for t in names}
+    assert len(heights) == 1

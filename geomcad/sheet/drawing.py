@@ -77,11 +77,13 @@ def number_parts(cell: str) -> tuple[str, str] | None:
     return (cell, "") if i < 0 else (cell[:i], cell[i:])
 
 
-def number_columns(rows: Sequence[Sequence[str]], height: float) -> list[tuple[float, float]]:
-    """Per column of ``rows``: the widths (mm, text ``height`` high) of its number cells'
-    widest whole part and widest decimal part (0, 0 for a column without numbers): the room
-    the numbers aligned on their separator take."""
-    n = max((len(r) for r in rows), default=0)
+def number_columns(
+    rows: Sequence[Sequence[str]], height: float, columns: int = 0
+) -> list[tuple[float, float]]:
+    """Per column of ``rows`` (at least ``columns`` of them): the widths (mm, text ``height``
+    high) of its number cells' widest whole part and widest decimal part (0, 0 for a column
+    without numbers): the room the numbers aligned on their separator take."""
+    n = max([columns, *(len(r) for r in rows)])
     out = [(0.0, 0.0)] * n
     for r in rows:
         for c, cell in enumerate(r):
@@ -190,7 +192,7 @@ class Drawing:
             xx += w
             s.add(Polyline(((xx, y), (xx, y + total_h)), "frame_thin"))
         body = rows[1:] if header else rows
-        whole = [w for w, _ in number_columns(body, height)]
+        whole = [w for w, _ in number_columns(body, height, len(widths))]
         for i, row in enumerate(rows):
             xx = x
             for c, (w, cell) in enumerate(zip(widths, row, strict=True)):

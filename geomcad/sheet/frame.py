@@ -159,6 +159,13 @@ def fill_title_blocks(sheets: list[Sheet], data: TitleData | None = None) -> Non
         return
     designation = escape(data.designation) or blocks[0].designation  # plain text, as with_user
     n = len(blocks)
+    # one height for the names of the document's sheets: the least any of them needs
+    scratch = Sheet(1.0, 1.0, "A4", "")
+    title_h = min(
+        (fit_text(scratch, b.title, _NAME_CELL, 5.0, clear=True)[0].height for b in blocks
+         if b.lang == "ru" and b.title),
+        default=5.0,
+    )  # fmt: skip
     i = 0
     for sheet in sheets:
         tb = sheet.block
@@ -168,7 +175,7 @@ def fill_title_blocks(sheets: list[Sheet], data: TitleData | None = None) -> Non
         tb = replace(tb.with_user(data), designation=designation, sheet_no=i, sheets=n)
         x1, y1 = sheet.width - MARGIN, sheet.height - MARGIN
         if tb.lang == "ru":
-            _title_fill(sheet, x1 - TB_WIDTH, y1, tb)
+            _title_fill(sheet, x1 - TB_WIDTH, y1, tb, title_h)
             _text26(sheet, LEFT_MARGIN, MARGIN, tb.designation)
         else:
             _iso_fill(sheet, x1 - ISO_WIDTH, y1, tb)
@@ -374,8 +381,14 @@ def _title_form(sheet: Sheet, bx: float, by: float, lang: Lang) -> None:
         fit_text(sheet, cap[key], cell(x_a, 35, x_b, 40), small)
 
 
-def _title_fill(sheet: Sheet, bx: float, by: float, tb: TitleBlock) -> None:
-    """Fill form 1's cells (lower-left corner at sheet point (bx, by)) from ``tb``."""
+#: The sheet's name cell of form 1 (графа 1: x 65–135, y 15–40 from the block's lower-left
+#: corner), as (x0, y0 top, x1, y1 bottom) of a block whose lower-left corner is at (0, 55).
+_NAME_CELL = (65.0, 15.0, 135.0, 40.0)
+
+
+def _title_fill(sheet: Sheet, bx: float, by: float, tb: TitleBlock, title_h: float = 5.0) -> None:
+    """Fill form 1's cells (lower-left corner at sheet point (bx, by)) from ``tb``, the sheet's
+    name at most ``title_h`` high (the height the whole document's names share)."""
     cell = _Block(sheet, bx, by).cell
     cap = WORDS.table(tb.lang)
     small = 2.5
@@ -400,7 +413,7 @@ def _title_fill(sheet: Sheet, bx: float, by: float, tb: TitleBlock) -> None:
     if tb.scale:
         fit_text(sheet, tb.scale, cell(167, 20, 185, 35), 5.0, clear=True)
     fit_text(sheet, tb.designation, cell(65, 40, 185, 55), 7.0, param="designation", clear=True)
-    fit_text(sheet, tb.title, cell(65, 15, 135, 40), 5.0, clear=True)
+    fit_text(sheet, tb.title, cell(65, 15, 135, 40), title_h, clear=True)
     if tb.material:
         fit_text(sheet, tb.material, cell(65, 0, 135, 15), 5.0, clear=True)
     # графа 9: the organisation, and under it the student's group

@@ -455,7 +455,7 @@ class Table(View):
             n = max(len(r) for r in self.rows)
             # numbers aligned on their separator take their widest whole and decimal parts
             body = self.rows[1:] if header else self.rows
-            aligned = number_columns(body, height)
+            aligned = number_columns(body, height, n)
             widths = [
                 max(
                     sum(aligned[i]),
