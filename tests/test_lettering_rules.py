@@ -205,3 +205,16 @@ def test_the_names_of_one_document_share_one_height() -> None:
         assert names
         heights |= {t.height for t in names}
     assert len(heights) == 1
+
+
+def test_a_position_numbered_by_another_point_is_not_numbered_again() -> None:
+    """Where a point's position falls on the same position of a point numbered before (a
+    scotch yoke's slider at the crank's extremes), its number stands once."""
+    pts = [Vec(0.05 * math.cos(a), 0.0) for a in (0.0, 1.0, 2.0, math.pi)]
+    crank = [Vec(0.05 * math.cos(a), 0.05 * math.sin(a)) for a in (0.0, 1.0, 2.0, math.pi)]
+    vels = [Vec(1.0, 0.0)] * 4
+    d: Drawing = start("A3", TitleBlock(title="t", designation="x"))
+    v = d.viewport(Scale(0.001, "l"), (0.0, 0.0), (200.0, 150.0))
+    position_numbers(v, pts, vels, Vec(0.0, 0.0), crank)
+    sheet = d.finish()
+    assert sorted(_numbers([t.text for t in sheet.texts() if t.role == "label"])) == [1, 2]

@@ -526,11 +526,14 @@ class _Mechanism(View):
                 for bodies in link_bodies(lk, P).values():
                     for b in bodies:
                         v.polyline(b.points, "thin", closed=b.closed)
+        numbered: list[Vec] = []
         for name in dict.fromkeys((lk.joint, lk.output)):
             pts = [P.pos[name] for P in s.drawn]
             for q in pts:
                 v.dot(q)
-            position_numbers(v, pts, [P.vel[name] for P in s.drawn], lk.frame[lk.pivot])
+            vels = [P.vel[name] for P in s.drawn]
+            position_numbers(v, pts, vels, lk.frame[lk.pivot], numbered)
+            numbered = pts
         labels = {}
         mech = scheme(lk, P0)  # the pairs where the principal position has them
         for pair in mech.pairs:
@@ -554,7 +557,13 @@ NUMBER_H = 2.5
 NUMBER_SPACE = 0.8
 
 
-def position_numbers(v: Viewport, pts: Sequence[Vec], vels: Sequence[Vec], pivot: Vec) -> None:
+def position_numbers(
+    v: Viewport,
+    pts: Sequence[Vec],
+    vels: Sequence[Vec],
+    pivot: Vec,
+    numbered: Sequence[Vec] = (),
+) -> None:
     """Number the positions ``pts`` of one point on its path (``vels``: its velocities there),
     as a drawing of the mechanism in its positions does: the point's letter stands once (at the
     principal position, by the scheme), each position gets only its number, placed by the
@@ -565,9 +574,14 @@ def position_numbers(v: Viewport, pts: Sequence[Vec], vels: Sequence[Vec], pivot
     runs one way round, on the inner side where it runs back (a rocker's or a slider's return
     stroke), so that a position of the return stroke that falls on one of the working stroke is
     numbered on the other side. Consecutive positions nearer each other than :data:`SHARE_MM`
-    share one label, ``4–6`` (never a list: "3, 9" beside "10" would read as one number)."""
+    share one label, ``4–6`` (never a list: "3, 9" beside "10" would read as one number).
+    ``numbered``: the same positions of a point numbered before; where this point's position
+    falls on that one's (a scotch yoke's slider at the crank's extremes), its number stands
+    once."""
     groups: list[list[int]] = []
     for i, q in enumerate(pts):
+        if i < len(numbered) and v.mm((q - numbered[i]).norm) < SHARE_MM:
+            continue
         g = groups[-1] if groups else []
         if g and g[-1] == i - 1 and all(v.mm((q - pts[j]).norm) < SHARE_MM for j in g):
             g.append(i)
