@@ -7,6 +7,7 @@ from __future__ import annotations
 import itertools
 import math
 import re
+from pathlib import Path
 
 import pytest
 from layout import layout_problems
@@ -218,3 +219,46 @@ def test_a_position_numbered_by_another_point_is_not_numbered_again() -> None:
     position_numbers(v, pts, vels, Vec(0.0, 0.0), crank)
     sheet = d.finish()
     assert sorted(_numbers([t.text for t in sheet.texts() if t.role == "label"])) == [1, 2]
+
+
+INVERTED = """
+title = "Кулисный механизм с вращающейся кулисой"
+[frame]
+O = [0.0, 0.0]
+C = [0.0, -0.06]
+[drive]
+pivot = "O"
+joint = "A"
+length = 0.12
+omega = 20.0
+positions = 12
+[[group]]
+kind = "RPR"
+links = [2, 3]
+slider = "A"
+pivot = "C"
+offset = 0.0
+[links.2]
+mass = 2.0
+J = 0.002
+[links.3]
+mass = 6.0
+J = 0.04
+[[load]]
+link = 3
+moment = -60.0
+"""
+
+
+def test_a_vanishing_load_is_written_0_in_the_loads_table(tmp_path: Path) -> None:
+    """An inverted slider-crank whose forces position has ε = 0: its inertia moments are
+    round-off (10^-13 N·m) and the table writes them 0, never as a power of ten."""
+    from geomcad import documents
+
+    path = tmp_path / "inverted.toml"
+    path.write_text(INVERTED, encoding="utf-8")
+    sheets = dict(documents.solve(str(path)).sheets())
+    forces = next(sh for name, sh in sheets.items() if "forces" in name)
+    cells = [t.text for t in forces.texts()]
+    assert not [c for c in cells if re.fullmatch(r"[–-]?[\d,]+·10.*", c)]
+    assert "0" in cells

@@ -490,14 +490,18 @@ def _table2(f: Forces, h: float) -> Table:
     order += [("M", len(moments) - 2), ("M", len(moments) - 1)]
     kf, uf = _unit([x for _, x, _ in forces], "N")
     km, um = _unit([x for _, x in moments], "N·m")
+    # a value that is round-off against the largest of its kind is 0 (an ε that vanishes in
+    # this position gives M_Φ = 10^-13 N·m, not a number to print)
+    big_f = max((x for _, x, _ in forces), default=0.0)
+    big_m = max((abs(m) for _, m in moments), default=0.0)
     rows: list[tuple[str, float | str, str]] = []
     for kind, i in order:
         if kind == "F":
             name, x, sc = forces[i]
-            rows.append((name, _num(x * kf, scale=sc * kf), uf))
+            rows.append((name, _num(x * kf, scale=max(sc, big_f) * kf), uf))
         else:
             name, m = moments[i]
-            rows.append((name, _num(m * km), um))
+            rows.append((name, _num(m * km, scale=big_m * km), um))
     return Table.of_values(rows, first=WORDS("load"), title=WORDS("loads"),
                            height=h, row_h=row_height(h), title_height=TITLE_H)  # fmt: skip
 
