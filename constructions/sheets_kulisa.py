@@ -364,8 +364,9 @@ def _results(sol: Solution[Data], names: tuple[str, ...], **kw: Any) -> V.Table:
 
 
 def _given(sol: Solution[Data]) -> View:
-    par = WORDS("param")
-    return V.Table.of_specs(PARAMS, sol.params, style="equation", pairs=2, head=[par, par],
+    # each cell says what it holds ("m_1 = 80 кг") under the table's title: a heading row
+    # would only repeat one word over both columns
+    return V.Table.of_specs(PARAMS, sol.params, style="equation", pairs=2, header=False,
                             fill=PANEL_W, title=WORDS("given"))  # fmt: skip
 
 

@@ -21,6 +21,7 @@ heavy: ``geomcad list`` and a file's kind are told without numpy.
 
 from __future__ import annotations
 
+import re
 from collections.abc import Callable, Mapping, Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, TypeVar
@@ -73,8 +74,35 @@ def stem(pid: str) -> str:
 CODE_CHARS = 12
 
 
+def _words(name: str) -> list[str]:
+    """A stem's words: its runs of letters and of digits, a camelCase word split at its capitals
+    (``sixBar_press-2`` → six, Bar, press, 2)."""
+    out: list[str] = []
+    for run in re.findall(r"\d+|[^\W\d_]+", name):
+        out += re.findall(r"\d+|[^\W\d_][^\W\d_A-ZА-ЯЁ]*|[A-ZА-ЯЁ]+(?![a-zа-яё])", run) or [run]
+    return out
+
+
 def code(pid: str) -> str:
-    """The file's stem as a part of a designation that reads as an ESKD code: its letters and
-    digits only, upper case, at most :data:`CODE_CHARS` of them (``sixbar_press.toml`` →
-    ``SIXBARPRESS``); a stem without any gives ``""``."""
-    return "".join(ch for ch in stem(pid) if ch.isalnum()).upper()[:CODE_CHARS]
+    """The file's stem as a part of a designation that reads as an ESKD code (letters and
+    digits only, upper case, at most :data:`CODE_CHARS`), as a drawing office shortens a name:
+
+    - the whole stem's letters and digits where they fit (``sixbar_press.toml`` →
+      ``SIXBARPRESS``, ``sixbar-2013-6`` → ``SIXBAR20136``);
+    - else each word's initial, its numbers kept whole (``synthesis-slider-crank`` → ``SSC``,
+      ``synthesis-slotted-lever`` → ``SSL``, ``kulisa-23110713`` → ``K23110713``): two stems
+      that share a long first word stay apart, as a cut at :data:`CODE_CHARS` letters does not
+      keep them;
+    - a single word longer than that, its first :data:`CODE_CHARS` letters.
+
+    A stem without letters or digits gives ``""``.
+
+    >>> code("sixbar_press.toml"), code("synthesis-slotted-lever.toml"), code("a/kulisa-23110713")
+    ('SIXBARPRESS', 'SSL', 'K23110713')
+    """
+    words = _words(stem(pid))
+    whole = "".join(words).upper()
+    if len(whole) <= CODE_CHARS or len(words) == 1:
+        return whole[:CODE_CHARS]
+    initials = "".join(w if w.isdigit() else w[0] for w in words).upper()
+    return initials[:CODE_CHARS]

@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import itertools
 import math
+import re
 from collections.abc import Sequence
 from dataclasses import dataclass, field
 
@@ -61,6 +62,37 @@ TURN_HEAD_GAP = 0.35
 TURN_HEAD_GAP_MM = 0.9 * ARROW_LEN
 #: Baseline-to-baseline distance of wrapped text, in cap heights (GOST 2.304, type B: 17/10 h).
 LINE_SPACING = 1.7
+
+
+#: A table cell that is a number: sign, digits (grouped by no-break spaces), a decimal part.
+NUMBER = re.compile(r"[\u2013+-]?\d[\d\u00a0]*(?:[.,]\d+)?")
+
+
+def number_parts(cell: str) -> tuple[str, str] | None:
+    """A number cell's whole part (with its sign) and its decimal part (with the separator,
+    ``""`` for a whole number); None for a cell that is not a plain number."""
+    if not NUMBER.fullmatch(cell):
+        return None
+    i = max(cell.find(","), cell.find("."))
+    return (cell, "") if i < 0 else (cell[:i], cell[i:])
+
+
+def number_columns(
+    rows: Sequence[Sequence[str]], height: float, columns: int = 0
+) -> list[tuple[float, float]]:
+    """Per column of ``rows`` (at least ``columns`` of them): the widths (mm, text ``height``
+    high) of its number cells' widest whole part and widest decimal part (0, 0 for a column
+    without numbers): the room the numbers aligned on their separator take."""
+    n = max([columns, *(len(r) for r in rows)])
+    out = [(0.0, 0.0)] * n
+    for r in rows:
+        for c, cell in enumerate(r):
+            parts = number_parts(cell)
+            if parts is not None:
+                a = box(parse(parts[0]), height)[0]
+                b = box(parse(parts[1]), height)[0] if parts[1] else 0.0
+                out[c] = (max(out[c][0], a), max(out[c][1], b))
+    return out
 
 
 def _dist(a: XY, b: XY) -> float:
@@ -116,10 +148,13 @@ class Drawing:
         role: str = "label",
         id: str = "",
         others: tuple[XY, ...] = (),
+        space: float = 0.0,
     ) -> None:
         """Ask for a label next to a sheet point (or one of ``others``); :meth:`finish` places
-        it."""
-        self.pending.append(LabelRequest(anchor, markup, height, role, prefer, clear, id, others))
+        it, ``space`` mm further than usual from other texts."""
+        self.pending.append(
+            LabelRequest(anchor, markup, height, role, prefer, clear, id, others, space)
+        )
 
     def table(
         self,
@@ -133,8 +168,10 @@ class Drawing:
     ) -> tuple[float, float]:
         """A ruled table with its top-left corner at (x, y); returns its (width, height).
 
-        The first row is the header (ruled off with a main line), unless ``header`` is False;
-        numbers align left in cells.
+        The first row is the header (ruled off with a main line), unless ``header`` is False.
+        Text stands at a cell's left; the numbers of a column below its header are aligned on
+        their decimal separator (GOST 2.105: by their digits), whole numbers ending where the
+        others' separator stands (:func:`number_columns`).
         """
         total_w = sum(widths)
         total_h = row_h * len(rows)
@@ -154,13 +191,19 @@ class Drawing:
         for w in widths[:-1]:
             xx += w
             s.add(Polyline(((xx, y), (xx, y + total_h)), "frame_thin"))
+        body = rows[1:] if header else rows
+        whole = [w for w, _ in number_columns(body, height, len(widths))]
         for i, row in enumerate(rows):
             xx = x
-            for w, cell in zip(widths, row, strict=True):
+            for c, (w, cell) in enumerate(zip(widths, row, strict=True)):
                 if cell:
+                    dx = 0.0
+                    parts = number_parts(cell) if i or not header else None
+                    if parts is not None:
+                        dx = whole[c] - box(parse(parts[0]), height)[0]
                     self.text(
                         cell,
-                        (xx + 1.2, y + i * row_h + row_h / 2 + height / 2),
+                        (xx + 1.2 + dx, y + i * row_h + row_h / 2 + height / 2),
                         height,
                         role="title",
                     )
@@ -478,10 +521,12 @@ class Viewport:
         prefer: tuple[float, float] | None = None,
         clear: float = JOINT_R,
         id: str = "",
+        space: float = 0.0,
     ) -> None:
-        """A label next to a model point; ``prefer`` is a model direction to try first."""
+        """A label next to a model point; ``prefer`` is a model direction to try first;
+        ``space``: mm kept further than usual from other texts."""
         pref = None if prefer is None else (prefer[0], -prefer[1])
-        self.d.label(self.p(q), markup, height, pref, clear, id=id)
+        self.d.label(self.p(q), markup, height, pref, clear, id=id, space=space)
 
 
 def _head(sheet: Sheet, tip: XY, u: tuple[float, float], role: str) -> None:

@@ -16,12 +16,14 @@ take 5 mm off three sides of it.
 
 from __future__ import annotations
 
+import itertools
+import re
 from dataclasses import dataclass, field, replace
 
 from geomcad.errors import ParameterError
 from geomcad.sheet.lang import Lang, Words, current
 from geomcad.sheet.model import XY, Polyline, Sheet, TextItem
-from geomcad.sheet.text import HEIGHTS, box, escape, metrics, parse
+from geomcad.sheet.text import HEIGHTS, balanced, box, break_points, escape, metrics, parse
 from geomcad.sheet.titleblock import STUDENT_STAGE, TitleData
 
 #: Paper sizes (short side, long side) in mm.
@@ -157,6 +159,13 @@ def fill_title_blocks(sheets: list[Sheet], data: TitleData | None = None) -> Non
         return
     designation = escape(data.designation) or blocks[0].designation  # plain text, as with_user
     n = len(blocks)
+    # one height for the names of the document's sheets: the least any of them needs
+    scratch = Sheet(1.0, 1.0, "A4", "")
+    title_h = min(
+        (fit_text(scratch, b.title, _NAME_CELL, 5.0, clear=True)[0].height for b in blocks
+         if b.lang == "ru" and b.title),
+        default=5.0,
+    )  # fmt: skip
     i = 0
     for sheet in sheets:
         tb = sheet.block
@@ -166,7 +175,7 @@ def fill_title_blocks(sheets: list[Sheet], data: TitleData | None = None) -> Non
         tb = replace(tb.with_user(data), designation=designation, sheet_no=i, sheets=n)
         x1, y1 = sheet.width - MARGIN, sheet.height - MARGIN
         if tb.lang == "ru":
-            _title_fill(sheet, x1 - TB_WIDTH, y1, tb)
+            _title_fill(sheet, x1 - TB_WIDTH, y1, tb, title_h)
             _text26(sheet, LEFT_MARGIN, MARGIN, tb.designation)
         else:
             _iso_fill(sheet, x1 - ISO_WIDTH, y1, tb)
@@ -237,6 +246,17 @@ def text_at(
     return item
 
 
+#: Baseline-to-baseline distance of a cell's lines, in cap heights (GOST 2.304, type B: 17/10 h).
+CELL_LEAD = 1.7
+
+
+def clearance(height: float) -> float:
+    """The room (mm) a filled title-block cell keeps between its text and its lines, for text
+    ``height`` mm high: 0.3 of the height and 0.25 mm more (1.75 mm at 5 mm, 1 mm at 2.5), so
+    that no letter touches a line, as a drawing office letters a form."""
+    return 0.3 * height + 0.25
+
+
 def fit_text(
     sheet: Sheet,
     markup: str,
@@ -246,23 +266,30 @@ def fit_text(
     anchor: str = "centre",
     param: str = "title block",
     max_lines: int = 0,
+    clear: bool = False,
 ) -> list[TextItem]:
-    """Text centred in a cell (x0, y0 top, x1, y1 bottom), shrunk to a smaller GOST height and
-    then broken into lines (at most ``max_lines``, when given) until it fits; else a
-    :class:`ParameterError` naming ``param``."""
+    """Text centred in a cell (x0, y0 top, x1, y1 bottom) at the largest GOST height up to
+    ``height`` at which it fits, broken into as few lines as it needs at that height (at most
+    ``max_lines``, when given; lines of about equal width, broken at spaces or after a
+    compound's hyphen, ``поперечно-`` / ``строгального``); else a :class:`ParameterError`
+    naming ``param``. ``clear``: the text keeps :func:`clearance` from the cell's lines (the
+    filled cells); else 0.4 mm across and 0.5 mm up and down (the form's own captions, as
+    GOST 2.104 prints them in its narrow columns)."""
     x0, y0, x1, y1 = cell
-    room_w, room_h = x1 - x0 - 0.8, y1 - y0 - 1.0
     heights = [*(hh for hh in reversed(HEIGHTS) if hh <= height), SMALLEST_HEIGHT]
-    words = markup.split(" ")
+    tokens = break_points(markup)
     for hh in heights:
-        for n_lines in range(1, min(len(words), max_lines or len(words)) + 1):
-            lines = _split(words, n_lines)
-            lead = hh * 1.6
+        c = clearance(hh) if clear else 0.0
+        room_w = x1 - x0 - 2.0 * c - (0.0 if clear else 0.8)
+        room_h = y1 - y0 - 2.0 * c - (0.0 if clear else 1.0)
+        lead = hh * CELL_LEAD
+        for n_lines in range(1, min(len(tokens), max_lines or len(tokens)) + 1):
             total = hh + (n_lines - 1) * lead
             if total > room_h:
                 break
-            if all(box(parse(ln), hh)[0] <= room_w for ln in lines):
-                cx = (x0 + x1) / 2.0 if anchor == "centre" else x0 + 1.0
+            lines = _by_sentences(markup, n_lines, hh, room_w)
+            if max(box(parse(ln), hh)[0] for ln in lines) <= room_w:
+                cx = (x0 + x1) / 2.0 if anchor == "centre" else x0 + max(c, 1.0)
                 top = (y0 + y1) / 2.0 - total / 2.0 + hh
                 return [
                     text_at(sheet, ln, (cx, top + i * lead), hh, role, anchor)
@@ -273,24 +300,24 @@ def fit_text(
     )
 
 
-def _split(words: list[str], n: int) -> list[str]:
-    """Words split into ``n`` lines of about equal length (greedy on character counts)."""
-    if n == 1:
-        return [" ".join(words)]
-    total = sum(len(w) for w in words) + len(words) - 1
-    target = total / n
-    lines: list[str] = []
-    cur: list[str] = []
-    length = 0  # of " ".join(cur), kept as words are added (a long text stays linear)
-    for w in words:
-        if cur and length + 1 + len(w) > target and len(lines) < n - 1:
-            lines.append(" ".join(cur))
-            cur, length = [w], len(w)
-        else:
-            length += (1 if cur else 0) + len(w)
-            cur.append(w)
-    lines.append(" ".join(cur))
-    return lines
+def _by_sentences(markup: str, n: int, height: float, room: float) -> list[str]:
+    """``markup`` in ``n`` lines, each sentence (a sheet's subject, then its mechanism)
+    beginning a line where that fits in ``room`` mm (the sentences' lines shared so that the
+    widest is narrowest); else in lines of about equal width (:func:`balanced`)."""
+    sentences = re.split(r"(?<=\.) ", markup)
+    best: tuple[float, list[str]] | None = None
+    if 1 < len(sentences) <= n:
+        parts = [break_points(t) for t in sentences]
+        for shares in itertools.product(range(1, n + 1), repeat=len(parts)):
+            if sum(shares) != n or any(k > len(p) for k, p in zip(shares, parts, strict=True)):
+                continue
+            lines = [
+                ln for k, p in zip(shares, parts, strict=True) for ln in balanced(p, k, height)
+            ]
+            wide = max(box(parse(ln), height)[0] for ln in lines)
+            if wide <= room and (best is None or wide < best[0]):
+                best = (wide, lines)
+    return best[1] if best else balanced(break_points(markup), n, height)
 
 
 @dataclass(frozen=True)
@@ -354,8 +381,14 @@ def _title_form(sheet: Sheet, bx: float, by: float, lang: Lang) -> None:
         fit_text(sheet, cap[key], cell(x_a, 35, x_b, 40), small)
 
 
-def _title_fill(sheet: Sheet, bx: float, by: float, tb: TitleBlock) -> None:
-    """Fill form 1's cells (lower-left corner at sheet point (bx, by)) from ``tb``."""
+#: The sheet's name cell of form 1 (графа 1: x 65–135, y 15–40 from the block's lower-left
+#: corner), as (x0, y0 top, x1, y1 bottom) of a block whose lower-left corner is at (0, 55).
+_NAME_CELL = (65.0, 15.0, 135.0, 40.0)
+
+
+def _title_fill(sheet: Sheet, bx: float, by: float, tb: TitleBlock, title_h: float = 5.0) -> None:
+    """Fill form 1's cells (lower-left corner at sheet point (bx, by)) from ``tb``, the sheet's
+    name at most ``title_h`` high (the height the whole document's names share)."""
     cell = _Block(sheet, bx, by).cell
     cap = WORDS.table(tb.lang)
     small = 2.5
@@ -378,18 +411,20 @@ def _title_fill(sheet: Sheet, bx: float, by: float, tb: TitleBlock) -> None:
     fit_text(sheet, f"{cap['sheet']} {tb.sheet_no}", cell(135, 15, 155, 20), small)
     fit_text(sheet, f"{cap['sheets']} {tb.sheets}", cell(155, 15, 185, 20), small)
     if tb.scale:
-        fit_text(sheet, tb.scale, cell(167, 20, 185, 35), 5.0)
-    fit_text(sheet, tb.designation, cell(65, 40, 185, 55), 7.0, param="designation")
-    fit_text(sheet, tb.title, cell(65, 15, 135, 40), 5.0)
+        fit_text(sheet, tb.scale, cell(167, 20, 185, 35), 5.0, clear=True)
+    fit_text(sheet, tb.designation, cell(65, 40, 185, 55), 7.0, param="designation", clear=True)
+    fit_text(sheet, tb.title, cell(65, 15, 135, 40), title_h, clear=True)
     if tb.material:
-        fit_text(sheet, tb.material, cell(65, 0, 135, 15), 5.0)
+        fit_text(sheet, tb.material, cell(65, 0, 135, 15), 5.0, clear=True)
     # графа 9: the organisation, and under it the student's group
     if tb.organisation and tb.group:
-        fit_text(sheet, tb.organisation, cell(135, 6, 185, 15), 3.5, param="org")
+        fit_text(sheet, tb.organisation, cell(135, 6, 185, 15), 3.5, param="org", clear=True)
         fit_text(sheet, tb.group, cell(135, 0, 185, 6), 2.5, param="group")
     elif tb.organisation or tb.group:
         key = "org" if tb.organisation else "group"
-        fit_text(sheet, tb.organisation or tb.group, cell(135, 0, 185, 15), 3.5, param=key)
+        fit_text(
+            sheet, tb.organisation or tb.group, cell(135, 0, 185, 15), 3.5, param=key, clear=True
+        )
 
 
 #: ISO 7200's data fields on the English block: (caption key, x0, y0, x1, y1) in mm from the

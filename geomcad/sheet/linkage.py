@@ -526,14 +526,19 @@ class _Mechanism(View):
                 for bodies in link_bodies(lk, P).values():
                     for b in bodies:
                         v.polyline(b.points, "thin", closed=b.closed)
-            for name in dict.fromkeys((lk.joint, lk.output)):
-                v.dot(P.pos[name])
-                v.label(P.pos[name], f"{name}_{{{i}}}", 2.5, clear=1.0)
+        numbered: list[Vec] = []
+        for name in dict.fromkeys((lk.joint, lk.output)):
+            pts = [P.pos[name] for P in s.drawn]
+            for q in pts:
+                v.dot(q)
+            vels = [P.vel[name] for P in s.drawn]
+            position_numbers(v, pts, vels, lk.frame[lk.pivot], numbered)
+            numbered = pts
         labels = {}
         mech = scheme(lk, P0)  # the pairs where the principal position has them
         for pair in mech.pairs:
             name = pair.name.split(":")[0]
-            if name in P0.pos and name not in (lk.joint, lk.output):
+            if name in P0.pos:
                 labels[pair.name] = name
         draw_scheme(v, mech, bodies=link_bodies(lk, P0), pair_labels=labels, label_height=3.5)
         for p in lk.points:
@@ -541,6 +546,88 @@ class _Mechanism(View):
                 v.dot(P0.pos[p.name])
                 v.label(P0.pos[p.name], p.name, 3.5, clear=1.0)
         omega_arrow(v, lk, P0)
+
+
+#: Consecutive positions of one point nearer each other than this (mm on the drawing) share one
+#: number label ("4–6"): labels there could not each stand next to their own point.
+SHARE_MM = 2.5
+#: The numbers of the positions are written this high (mm; GOST 2.304's least) and kept this
+#: much further than other labels from each other (mm), so that two numbers never read as one.
+NUMBER_H = 2.5
+NUMBER_SPACE = 0.8
+
+
+def position_numbers(
+    v: Viewport,
+    pts: Sequence[Vec],
+    vels: Sequence[Vec],
+    pivot: Vec,
+    numbered: Sequence[Vec] = (),
+) -> None:
+    """Number the positions ``pts`` of one point on its path (``vels``: its velocities there),
+    as a drawing of the mechanism in its positions does: the point's letter stands once (at the
+    principal position, by the scheme), each position gets only its number, placed by the
+    sheet's label placer clear of the lines and of the other numbers.
+
+    A number is set off the path across it: on the outer side (away from the centre of the
+    circle through the positions; on a line, away from the crank's ``pivot``) where the point
+    runs one way round, on the inner side where it runs back (a rocker's or a slider's return
+    stroke), so that a position of the return stroke that falls on one of the working stroke is
+    numbered on the other side. Consecutive positions nearer each other than :data:`SHARE_MM`
+    share one label, ``4–6`` (never a list: "3, 9" beside "10" would read as one number).
+    ``numbered``: the same positions of a point numbered before; where this point's position
+    falls on that one's (a scotch yoke's slider at the crank's extremes), its number stands
+    once."""
+    groups: list[list[int]] = []
+    for i, q in enumerate(pts):
+        if i < len(numbered) and v.mm((q - numbered[i]).norm) < SHARE_MM:
+            continue
+        g = groups[-1] if groups else []
+        if g and g[-1] == i - 1 and all(v.mm((q - pts[j]).norm) < SHARE_MM for j in g):
+            g.append(i)
+        else:
+            groups.append([i])
+    centre = _centre_of(pts)
+    if centre is None:  # along a line: across it, on the side away from the pivot
+        t = max((q - pts[0] for q in pts), key=lambda d: d.norm)
+        n = Vec(-t.y, t.x)
+        if n.x * (pts[0].x - pivot.x) + n.y * (pts[0].y - pivot.y) < 0.0:
+            n = Vec(t.y, -t.x)
+    marks: list[tuple[list[int], Vec, Vec, float]] = []
+    for g in groups:
+        at = Vec(sum(pts[j].x for j in g) / len(g), sum(pts[j].y for j in g) / len(g))
+        if centre is not None:
+            n = at - centre
+            t = Vec(-n.y, n.x)  # counter-clockwise round the centre
+        runs = sum(vels[j].x * t.x + vels[j].y * t.y for j in g)
+        marks.append((g, at, n, math.copysign(len(g), runs) if runs else 0.0))
+    # the sense most positions run in (a crank's whole turn, a rocker's working stroke) outside
+    ahead = sum(m[3] for m in marks) >= 0.0
+    for g, at, n, runs in marks:
+        side = -1.0 if runs and (runs > 0.0) != ahead else 1.0
+        prefer = (side * n.x, side * n.y) if n.norm > 0.0 else None
+        text = str(g[0]) if len(g) == 1 else f"{g[0]}\u2013{g[-1]}"
+        v.label(at, text, NUMBER_H, prefer=prefer, clear=1.0, space=NUMBER_SPACE)
+
+
+def _centre_of(pts: Sequence[Vec]) -> Vec | None:
+    """The centre of the circle that best fits ``pts`` (least squares), or None where they lie
+    on a line (or the circle is much larger than their spread: a nearly straight path)."""
+    xy = np.array([(q.x, q.y) for q in pts], dtype=float)
+    span = float(np.ptp(xy, axis=0).max()) if len(xy) else 0.0
+    if len(xy) < 3 or span <= 0.0:
+        return None
+    c0 = xy.mean(axis=0)
+    d = (xy - c0) / span
+    a = np.column_stack([2.0 * d, np.ones(len(d))])
+    sol, *_ = np.linalg.lstsq(a, (d**2).sum(axis=1), rcond=None)
+    r2 = sol[2] + sol[0] ** 2 + sol[1] ** 2
+    if not np.isfinite(sol).all() or abs(sol[0]) + abs(sol[1]) > 20.0 or r2 <= 0.0:
+        return None
+    resid = np.abs(np.hypot(*(d - sol[:2]).T) - math.sqrt(r2)).max()
+    if resid > 0.05:  # not on one circle (a coupler curve): no centre to turn away from
+        return None
+    return Vec(float(c0[0] + sol[0] * span), float(c0[1] + sol[1] * span))
 
 
 #: ω1's arrow: an arc of this fraction of the crank's drawn length, between the least and the

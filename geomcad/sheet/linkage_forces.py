@@ -451,23 +451,57 @@ class _Lever(View):
         _force(v, lev.images[lk.joint], lev.F_bal, self.fs, WORDS("P_bal"), role="result")
 
 
+#: Forces (moments) are written in kN (kN·m) in a table where one of them reaches this many N
+#: (N·m): its values keep four digits before the comma at most, as a teacher reads them.
+KILO_FROM = 1.0e4
+
+
+def _unit(values: Sequence[float], unit: str) -> tuple[float, str]:
+    """The factor from SI and the unit a table writes its values of ``unit`` (N, N·m) in: the
+    kilo-unit where the largest reaches :data:`KILO_FROM`, one unit for all of them."""
+    if max((abs(x) for x in values), default=0.0) >= KILO_FROM:
+        return 1.0e-3, f"k{unit}"
+    return 1.0, unit
+
+
 def _table2(f: Forces, h: float) -> Table:
-    rows: list[tuple[str, float | str, str]] = []
+    forces: list[tuple[str, float, float]] = []  # (name, value, scale of round-off)
+    moments: list[tuple[str, float]] = []
+    order: list[tuple[str, int]] = []
     for lds in f.loads.values():
         for ld in lds:
             if ld.force is not None:
-                rows.append((load_name(ld.name), _num(ld.force.norm), "N"))
+                forces.append((load_name(ld.name), ld.force.norm, 0.0))
+                order.append(("F", len(forces) - 1))
             else:
-                rows.append((load_name(ld.name), _num(ld.moment), "N·m"))
+                moments.append((load_name(ld.name), ld.moment))
+                order.append(("M", len(moments) - 1))
     big = max(r.force.norm for r in f.reactions)
     for i, j in f.pairs:
         name = f"R_{{{i}{j}}}" if j < 10 else f"R_{{{i},{j}}}"
-        rows.append((name, _num(f.R(i, j).norm, scale=big), "N"))
+        forces.append((name, f.R(i, j).norm, big))
+        order.append(("F", len(forces) - 1))
     for r in f.reactions:
         if r.couple:
-            rows.append((f"M_{{{r.of}{r.on}}}", _num(r.couple), "N·m"))
-    rows.append((WORDS("m_bal_forces"), _num(f.M_bal), "N·m"))
-    rows.append((WORDS("m_bal_lever"), _num(f.lever.M_bal), "N·m"))
+            moments.append((f"M_{{{r.of}{r.on}}}", r.couple))
+            order.append(("M", len(moments) - 1))
+    moments.append((WORDS("m_bal_forces"), f.M_bal))
+    moments.append((WORDS("m_bal_lever"), f.lever.M_bal))
+    order += [("M", len(moments) - 2), ("M", len(moments) - 1)]
+    kf, uf = _unit([x for _, x, _ in forces], "N")
+    km, um = _unit([x for _, x in moments], "N·m")
+    # a value that is round-off against the largest of its kind is 0 (an ε that vanishes in
+    # this position gives M_Φ = 10^-13 N·m, not a number to print)
+    big_f = max((x for _, x, _ in forces), default=0.0)
+    big_m = max((abs(m) for _, m in moments), default=0.0)
+    rows: list[tuple[str, float | str, str]] = []
+    for kind, i in order:
+        if kind == "F":
+            name, x, sc = forces[i]
+            rows.append((name, _num(x * kf, scale=max(sc, big_f) * kf), uf))
+        else:
+            name, m = moments[i]
+            rows.append((name, _num(m * km, scale=big_m * km), um))
     return Table.of_values(rows, first=WORDS("load"), title=WORDS("loads"),
                            height=h, row_h=row_height(h), title_height=TITLE_H)  # fmt: skip
 

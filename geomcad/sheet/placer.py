@@ -90,6 +90,7 @@ class LabelRequest:
     clear: float  # the radius around the anchor the label keeps clear of (a joint's circle)
     id: str
     others: tuple[XY, ...] = ()  # further anchors to try, each at a small extra cost
+    space: float = 0.0  # mm kept from other texts beyond PAD (labels that must read apart)
 
 
 @dataclass
@@ -384,7 +385,11 @@ def _candidates(req: LabelRequest, index: Index, points: npt.NDArray[np.float64]
     extra = np.full(len(base), W_LINE)
     extra[best] = W_INK * index.ink_inside(inner)
     base += extra
-    return _Candidates(at, core, boxes.padded, base, which)
+    padded = boxes.padded
+    if req.space > 0.0:
+        g = PAD + req.space
+        padded = shapely.box(*(shapely.bounds(core) + np.array([-g, -g, g, g])).T)
+    return _Candidates(at, core, padded, base, which)
 
 
 def place_labels(sheet: Sheet, index: Index, requests: Sequence[LabelRequest]) -> None:

@@ -52,16 +52,39 @@ class ScaleStyle:
     lang: Lang = field(default_factory=current)
 
 
+#: A number this large or larger is written in plain digits (grouped by threes), never as a
+#: power of ten: a sheet's values are in units that keep them short (kN for large forces).
+PLAIN_FROM = 1.0
+
+
+def group_digits(s: str) -> str:
+    """A plain number's whole part of five or more digits in groups of three, parted by a
+    no-break space (GOST 8.417: ``11 130``, ``1 250 000``); four digits stay whole (``8544``)."""
+    sign = s[0] if s[:1] in "-\u2013" else ""
+    body = s[len(sign) :]
+    whole, dot, frac = body.partition(".")
+    if len(whole) < 5 or not whole.isdigit():
+        return s
+    groups = [whole[max(0, i - 3) : i] for i in range(len(whole), 0, -3)][::-1]
+    return sign + "\u00a0".join(groups) + dot + frac
+
+
 def fmt_number(x: float, lang: str | None = None, digits: int = 6) -> str:
     """A number for a sheet: up to ``digits`` significant digits, no trailing zeros, a decimal
     comma in Russian (a point in English), a typographic minus; ``lang`` defaults to the
-    language being drawn."""
+    language being drawn. A large number is written in plain digits, its whole part grouped by
+    threes (``11 130``, not ``1,113·10⁴``); only a number below 10^−``digits`` takes a power of
+    ten."""
     if x == 0.0:
         return "0"
     s = f"{x:.{digits}g}"
+    if "e" in s and abs(x) >= PLAIN_FROM:
+        s = group_digits(f"{float(s):.0f}")
     if "e" in s:
         mant, exp = s.split("e")
         s = f"{mant}·10^{{{int(exp)}}}"
+    else:
+        s = group_digits(s)
     s = s.replace("-", "\u2013")
     return s.replace(".", ",") if (lang or current()) == "ru" else s
 
@@ -84,7 +107,7 @@ def fmt_column(xs: Sequence[float], lang: str | None = None, digits: int = 4) ->
         s = f"{x:.{need}f}"
         if float(s) == 0.0:
             s = s.lstrip("-")
-        s = s.replace("-", "\u2013")
+        s = group_digits(s).replace("-", "\u2013")
         out.append(s.replace(".", ",") if (lang or current()) == "ru" else s)
     return out
 

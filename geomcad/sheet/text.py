@@ -16,7 +16,9 @@ written as plain text (:func:`escape`), never as markup.
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+import math
+import re
+from collections.abc import Iterator, Sequence
 from dataclasses import dataclass
 from functools import cache, lru_cache
 from importlib import resources
@@ -232,3 +234,60 @@ def placed_runs(t: TextItem) -> Iterator[tuple[Run, float, float, float]]:
             y -= SUP_RISE * t.font_size
         yield run, x, y, size
         x += m.advance(run.text, size)
+
+
+def break_points(markup: str) -> list[tuple[str, str]]:
+    """The pieces a text may be broken between, each with what joins it to the next on one line:
+    its words (joined by a space), a compound word's parts (``поперечно-`` joined to
+    ``строгального`` by nothing: the hyphen stays at the line's end)."""
+    out: list[tuple[str, str]] = []
+    for word in markup.split(" "):
+        parts = re.split(r"(?<=[^\W\d_]{2}-)(?=[^\W\d_]{2})", word)
+        out += [(p, "") for p in parts[:-1]] + [(parts[-1], " ")]
+    return out
+
+
+def _join(tokens: Sequence[tuple[str, str]]) -> str:
+    return "".join(t + j for t, j in tokens[:-1]) + tokens[-1][0]
+
+
+def balanced(tokens: list[tuple[str, str]], n: int, height: float) -> list[str]:
+    """The pieces set in ``n`` lines whose widest line is as narrow as it can be (exactly, over
+    every way to break them: a title has a few words)."""
+    if n == 1:
+        return [_join(tokens)]
+    k = len(tokens)
+    width = {
+        (i, j): box(parse(_join(tokens[i:j])), height)[0]
+        for i in range(k)
+        for j in range(i + 1, k + 1)
+    }
+    # best[m][j]: the least widest line setting tokens[:j] in m lines, with its last break
+    inf = (math.inf, 0)
+    best = [[inf] * (k + 1) for _ in range(n + 1)]
+    best[0][0] = (0.0, 0)
+    for m in range(1, n + 1):
+        for j in range(m, k + 1):
+            best[m][j] = min(
+                ((max(best[m - 1][i][0], width[i, j]), i) for i in range(m - 1, j)),
+                default=inf,
+            )
+    lines: list[str] = []
+    j = k
+    for m in range(n, 0, -1):
+        i = best[m][j][1]
+        lines.append(_join(tokens[i:j]))
+        j = i
+    return lines[::-1]
+
+
+def wrap_balanced(markup: str, width: float, height: float) -> list[str]:
+    """``markup`` in as few lines of at most ``width`` mm (at cap height ``height``) as it
+    takes, the lines of about equal width (:func:`balanced`; a word wider than ``width`` stands
+    on a line of its own)."""
+    tokens = break_points(markup)
+    for n in range(1, len(tokens) + 1):
+        lines = balanced(tokens, n, height)
+        if max(box(parse(ln), height)[0] for ln in lines) <= width:
+            return lines
+    return [t for t, _ in tokens]

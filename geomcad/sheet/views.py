@@ -37,14 +37,21 @@ from geomcad.construction.recorder import Step
 from geomcad.forces import ForcePolygon
 from geomcad.geom import Vec
 from geomcad.kinematics.plan import Plan
-from geomcad.sheet.compose import Extent, Placed, View, text_width
-from geomcad.sheet.drawing import LINE_SPACING, SHORT_MM, Drawing, Viewport
+from geomcad.sheet.compose import TITLE_GAP, TITLE_LEAD, Extent, Placed, View, text_width
+from geomcad.sheet.drawing import (
+    LINE_SPACING,
+    SHORT_MM,
+    Drawing,
+    Viewport,
+    number_columns,
+    number_parts,
+)
 from geomcad.sheet.graph import Axis, Graph, nice_step
 from geomcad.sheet.lang import Words, current
 from geomcad.sheet.plans import LINE_OVER_MM, markup_of, plan_lines
 from geomcad.sheet.scale import Scale, ScaleStyle, fmt_number
 from geomcad.sheet.scheme import Body, draw_scheme
-from geomcad.sheet.text import metrics, wrap
+from geomcad.sheet.text import balanced, break_points, metrics, wrap, wrap_balanced
 from geomcad.structure import Mechanism
 from geomcad.units import to_display
 
@@ -417,12 +424,18 @@ class Diagram(View):
 
 #: Cell padding (mm) either side of a cell's text.
 CELL_PAD = 1.2
+#: A table's heading takes at most this many lines; a narrower table is widened to it.
+HEADING_LINES = 3
 
 
 class Table(View):
     """A ruled table of ``rows`` of label markup (the first the header unless ``header`` is
     False), its columns as wide as their widest text (or ``widths``), widened in proportion
-    to ``fill`` mm in all when that is wider (a table as wide as the one under it)."""
+    to ``fill`` mm in all when that is wider (a table as wide as the one under it).
+
+    Its ``title`` is its heading (GOST 2.105: above the table, from its left edge), broken
+    into lines no wider than the table (a word longer than that widens the table): a heading
+    never runs past its table into the next view or the frame."""
 
     def __init__(
         self,
@@ -435,6 +448,7 @@ class Table(View):
         **kw: Any,
     ) -> None:
         kw.setdefault("margin", 1.0)
+        heading = kw.pop("title", "")
         super().__init__(**kw)
         self.rows = [list(r) for r in rows]
         self.header = header
@@ -442,20 +456,55 @@ class Table(View):
         self.row_h = row_h
         if widths is None:
             n = max(len(r) for r in self.rows)
+            # numbers aligned on their separator take their widest whole and decimal parts
+            body = self.rows[1:] if header else self.rows
+            aligned = number_columns(body, height, n)
             widths = [
-                max(text_width(r[i], height) if i < len(r) else 0.0 for r in self.rows)
+                max(
+                    sum(aligned[i]),
+                    *(
+                        text_width(r[i], height)
+                        for j, r in enumerate(self.rows)
+                        if i < len(r) and (number_parts(r[i]) is None or (header and j == 0))
+                    ),
+                    0.0,
+                )
                 + 2 * CELL_PAD
                 + 1.0
                 for i in range(n)
             ]
         total = sum(widths)
         self.widths = [w * fill / total for w in widths] if 0.0 < total < fill else list(widths)
+        #: the heading's lines (the view draws its heading itself, within its own width): at
+        #: most HEADING_LINES of them, the table widened where its columns are narrower
+        self.heading = (
+            wrap_balanced(heading, sum(self.widths), self.title_height) if heading else []
+        )
+        if len(self.heading) > HEADING_LINES:
+            tokens = break_points(heading)
+            n = min(HEADING_LINES, len(tokens))
+            self.heading = balanced(tokens, n, self.title_height)
+        wide = max((text_width(t, self.title_height) for t in self.heading), default=0.0)
+        if wide > sum(self.widths):
+            self.widths = [w * wide / sum(self.widths) for w in self.widths]
+
+    def heading_room(self) -> float:
+        """The height (mm) of the heading's lines above the table (0 without a heading): as
+        a view's one-line title, and a line spacing more for each further line."""
+        if not self.heading:
+            return 0.0
+        h = self.title_height
+        return h * TITLE_LEAD + TITLE_GAP + (len(self.heading) - 1) * h * LINE_SPACING
 
     def natural(self) -> tuple[float, float] | None:
-        return sum(self.widths), self.row_h * len(self.rows)
+        return sum(self.widths), self.heading_room() + self.row_h * len(self.rows)
 
     def draw(self, d: Drawing, at: Placed) -> None:
-        d.table(at.inner[0], at.inner[1], self.widths, self.rows, self.height, self.row_h,
+        x, y = at.inner[0], at.inner[1]
+        h = self.title_height
+        for i, line in enumerate(self.heading):
+            d.text(line, (x, y + h + i * h * LINE_SPACING), h)
+        d.table(x, y + self.heading_room(), self.widths, self.rows, self.height, self.row_h,
                 self.header)  # fmt: skip
 
     @staticmethod
