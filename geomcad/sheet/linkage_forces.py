@@ -77,7 +77,16 @@ from geomcad.sheet.loads import ForceScales, force, force_scales, moment
 from geomcad.sheet.plans import markup_of
 from geomcad.sheet.scale import Scale, fmt_column
 from geomcad.sheet.scheme import draw_scheme
-from geomcad.sheet.views import AxisSpec, Curve, Diagram, Polygon, Steps, Table, Text
+from geomcad.sheet.views import (
+    DETAIL_LETTERS,
+    AxisSpec,
+    Curve,
+    Diagram,
+    Polygon,
+    Steps,
+    Table,
+    Text,
+)
 from geomcad.structure import Mechanism
 from geomcad.structure.model import Link
 
@@ -167,14 +176,21 @@ def _sheet2(
     bodies = [_FreeBody(lk, P, gf) for gf in f.groups]
     for b in bodies:
         b.least_k = k_l
-    # each group's polygons under the group cut out (the crank's under the crank)
+    # each group's polygons under the group cut out (the crank's under the crank); a
+    # polygon's vectors too short for its μ_F are drawn again, enlarged, in a detail at its
+    # own stated μ_F beside it (one letter each on the sheet)
+    letters = iter(DETAIL_LETTERS)
     per_group = [
         [
-            Polygon(
-                poly,
-                title=_poly_title(gf, name),
-                margin=8.0,
-                names={pv.name: load_name(pv.name) for pv in poly.vectors},
+            _with_details(
+                Polygon(
+                    poly,
+                    title=_poly_title(gf, name),
+                    margin=8.0,
+                    names={pv.name: load_name(pv.name) for pv in poly.vectors},
+                    detail=True,
+                    letters=letters,
+                )
             )
             for name, poly in gf.polygons
         ]
@@ -197,6 +213,11 @@ def _sheet2(
         Column(Row(mech, lever, right), groups),
     )
     return tree, {mech: lk.length / CRANK_MM}
+
+
+def _with_details(p: Polygon) -> Polygon | Row:
+    """A polygon with its details (:class:`~geomcad.sheet.views.PolygonDetail`) beside it."""
+    return Row(p, Grid(*(x for dt in p.details for x in dt.all_details()))) if p.details else p
 
 
 def crank_scale(lk: Linkage) -> Scale:

@@ -23,9 +23,10 @@ Every view's words come from the tables of :mod:`geomcad.sheet.lang`; numbers ar
 
 from __future__ import annotations
 
+import math
 import re
 import sys
-from collections.abc import Callable, Iterable, Mapping, Sequence
+from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass
 from typing import Any, Literal, Protocol
 
@@ -34,15 +35,16 @@ import numpy.typing as npt
 
 from geomcad.construction import Construction
 from geomcad.construction.recorder import Step
-from geomcad.forces import ForcePolygon
+from geomcad.forces import ForcePolygon, PlanVector
 from geomcad.geom import Vec
 from geomcad.kinematics.plan import Plan
-from geomcad.sheet.compose import Extent, Placed, View, text_width
+from geomcad.sheet.compose import Extent, Placed, View, scale_text, text_width
 from geomcad.sheet.drawing import LINE_SPACING, SHORT_MM, Drawing, Viewport
 from geomcad.sheet.graph import Axis, Graph, nice_step
 from geomcad.sheet.lang import Words, current
+from geomcad.sheet.model import Polyline
 from geomcad.sheet.plans import LINE_OVER_MM, markup_of, plan_lines
-from geomcad.sheet.scale import Scale, ScaleStyle, fmt_number
+from geomcad.sheet.scale import Scale, ScaleStyle, fmt_number, nice_factor
 from geomcad.sheet.scheme import Body, draw_scheme
 from geomcad.sheet.text import metrics, wrap
 from geomcad.structure import Mechanism
@@ -206,40 +208,200 @@ def draw_polygon(
     found: Iterable[str] | None = None,
     inward: Iterable[str] = (),
     height: float = 2.5,
+    details: Sequence[PolygonDetail] = (),
 ) -> list[str]:
     """Draw ``poly`` through ``v`` at the viewport's μ_F: each vector head to tail, labelled
     beside its middle (``names`` maps a vector's name to label markup; default: the name),
     outside the polygon (inside for the names in ``inward``); the vectors ``found`` (default:
     the polygon's solved unknowns, or its closing vector) in the result role, the others in
-    ``role``; a vector shorter than two arrowheads on the paper is drawn as a point with its
-    label. Returns the names drawn as points (for a note), and marks the pole."""
+    ``role``. The vectors of a ``details`` run are drawn as thin lines, circled and lettered
+    (ESKD выносной элемент): the detail draws them as arrows at its larger μ_F. Never a dot: a
+    vector outside every detail is an arrow however short. Returns the names of the vectors
+    left shorter than two arrowheads (none when the details hold every short one)."""
     if found is None:
         known = {n for n, _ in poly.solved}
         found = known or ({poly.vectors[-1].name} if poly.vectors else set())
     found = set(found)
     inward = set(inward)
-    points: list[str] = []
+    in_detail = {n for dt in details for n in dt.run}
+    short: list[str] = []
     for pv in poly.vectors:
         text = (names or {}).get(pv.name, pv.name)
-        if v.mm(pv.magnitude) < SHORT_MM:
-            if v.mm(pv.magnitude) > 0.0 or pv.magnitude == 0.0:
-                v.dot(pv.tail)
-                v.label(pv.tail, text, height, clear=0.8)
-                points.append(pv.name)
+        if pv.name in in_detail:
+            if v.mm(pv.magnitude) > 0.0:
+                v.seg(pv.tail, pv.head, "construction")
             continue
+        if pv.magnitude == 0.0:
+            continue
+        if v.mm(pv.magnitude) < SHORT_MM:
+            short.append(pv.name)
         v.arrow(pv.tail, pv.head, "result" if pv.name in found else role)
         mid = (pv.tail + pv.head) * 0.5
         v.label(mid, text, height, prefer=_outward(poly, pv.tail, pv.head, pv.name in inward),
                 clear=0.5)  # fmt: skip
+    for dt in details:
+        mark_detail(v, poly, dt)
     v.dot(poly.pole)
-    return points
+    return short
+
+
+def mark_detail(v: Viewport, poly: ForcePolygon, dt: PolygonDetail) -> None:
+    """Circle the run of ``dt`` (thin) and letter it on a short leader (ESKD выносной элемент)."""
+    pts = [v.p(q) for n in dt.run for q in (poly[n].tail, poly[n].head)]
+    cx = (min(q[0] for q in pts) + max(q[0] for q in pts)) / 2.0
+    cy = (min(q[1] for q in pts) + max(q[1] for q in pts)) / 2.0
+    r = max(DETAIL_CIRCLE_MM, *(math.hypot(q[0] - cx, q[1] - cy) + 1.5 for q in pts))
+    k = v.scale.k
+    v.circle(Vec(v.ox + (cx - v.at[0]) * k, v.oy - (cy - v.at[1]) * k), r * k, "construction")
+    edge = (cx + r * 0.7071, cy - r * 0.7071)
+    leader = (edge[0] + 3.0, edge[1] - 3.0)
+    v.sheet.add(Polyline((edge, leader), "construction"))
+    v.d.label(leader, dt.letter, 3.5, prefer=(1.0, -1.0), clear=0.5)
+
+
+#: The least radius (mm) of the thin circle that marks a polygon's detail.
+DETAIL_CIRCLE_MM = 3.0
+
+#: A polygon's vectors shorter than this share of its largest go to a detail (a polygon's
+#: largest vector is drawn about :data:`POLY_MM` long: the short ones would be under two
+#: arrowheads there).
+POLY_MM = 50.0
+
+#: The letters of the details (ESKD: Cyrillic capitals without Ё, З, Й, О, Ч, Ъ, Ы, Ь).
+DETAIL_LETTERS = "АБВГДЕЖИКЛМНПРСТУФШЭЮЯ"
+
+
+def short_runs(
+    vectors: Sequence[PlanVector], share: float = SHORT_MM / POLY_MM, closed: bool = True
+) -> list[list[str]]:
+    """The runs (head to tail; round the polygon when ``closed``) of the nonzero vectors
+    shorter than ``share`` of the largest: each is drawn enlarged in one detail."""
+    vs = list(vectors)
+    big = max((pv.magnitude for pv in vs), default=0.0)
+    if big <= 0.0:
+        return []
+    small = [0.0 < pv.magnitude < share * big for pv in vs]
+    if not any(small):
+        return []
+    start = small.index(False) if closed else 0  # a closed run never wraps past a long one
+    runs: list[list[str]] = []
+    cur: list[str] = []
+    for i in range(len(vs)):
+        j = (start + i) % len(vs)
+        if small[j]:
+            cur.append(vs[j].name)
+        elif vs[j].magnitude > 0.0 and cur:
+            runs.append(cur)
+            cur = []
+    if cur:
+        runs.append(cur)
+    return runs
+
+
+def nice_below(value_min: float, mm: float, q: Literal["F"] = "F") -> Scale:
+    """The largest factor 1, 2, 2.5, 4, 5 × 10^n at which ``value_min`` is at least ``mm``."""
+    raw = value_min / mm
+    e = math.floor(math.log10(raw))
+    for exp in (e, e - 1):
+        for m in (5.0, 4.0, 2.5, 2.0, 1.0):
+            k = m * 10.0**exp
+            if k <= raw * (1.0 + 1e-12):
+                return Scale(k, q)
+    return Scale(10.0 ** (e - 1), q)  # unreachable
+
+
+class PolygonDetail(View):
+    """The enlarged detail of a force polygon: the ``run`` of its short vectors head to tail at
+    a larger μ_F (the largest factor at which the shortest is :data:`DETAIL_MM` long), with
+    the lines of the long vectors it joins (thin), captioned with its letter and μ_F. A fixed
+    view: its μ_F is its own, stated, and never changed by the layout."""
+
+    def __init__(
+        self,
+        poly: ForcePolygon,
+        run: Sequence[str],
+        letter: str,
+        names: Mapping[str, str] | None = None,
+        found: Iterable[str] | None = None,
+        label_height: float = 2.5,
+        letters: Iterator[str] | None = None,
+        **kw: Any,
+    ) -> None:
+        vs = [poly[n] for n in run]
+        it = letters if letters is not None else iter(DETAIL_LETTERS)
+        #: the runs still too short here, drawn in further details (their letters next)
+        inner = short_runs(vs, DETAIL_MM / DETAIL_MAX_MM, closed=False)
+        nested = {n for r in inner for n in r}
+        self.scale = nice_below(min(pv.magnitude for pv in vs if pv.name not in nested), DETAIL_MM)
+        self.details = [
+            PolygonDetail(poly, r, next(it), names, found, label_height, letters=it) for r in inner
+        ]
+        kw.setdefault("margin", 5.0)
+        kw.setdefault("title_height", 3.5)
+        super().__init__(title=f"{letter} ({scale_text(self.scale)})", **kw)
+        self.poly, self.run, self.letter = poly, list(run), letter
+        self.names = names
+        if found is None:
+            known = {n for n, _ in poly.solved}
+            found = known or ({poly.vectors[-1].name} if poly.vectors else set())
+        self.found = set(found)
+        self.label_height = label_height
+        self._box = _bbox(q for pv in vs for q in (pv.tail, pv.head))
+
+    def all_details(self) -> list[PolygonDetail]:
+        """This detail and its further ones, in the order of their letters."""
+        return [self, *(x for dt in self.details for x in dt.all_details())]
+
+    def natural(self) -> tuple[float, float] | None:
+        x0, y0, x1, y1 = self._box
+        k = self.scale.k
+        tw = text_width(self.title, self.title_height)
+        return max((x1 - x0) / k + 2.0 * STUB_MM, tw), (y1 - y0) / k + 2.0 * STUB_MM
+
+    def draw(self, d: Drawing, at: Placed) -> None:
+        x0, y0, x1, y1 = self._box
+        ix0, iy0, ix1, iy1 = at.inner
+        centre = ((ix0 + ix1) / 2.0, (iy0 + iy1) / 2.0)
+        v = Viewport(d, self.scale, (x0 + x1) / 2.0, (y0 + y1) / 2.0, centre)
+        names = self.names or {}
+        order = list(self.poly.names)
+        first, last = self.poly[self.run[0]], self.poly[self.run[-1]]
+        i, j = order.index(self.run[0]), order.index(self.run[-1])
+        before = self.poly.vectors[(i - 1) % len(order)]
+        after = self.poly.vectors[(j + 1) % len(order)]
+        for pv, q, sign in ((before, first.tail, -1.0), (after, last.head, 1.0)):
+            if pv.magnitude > 0.0:
+                u = (pv.head - pv.tail).unit() * (sign * STUB_MM * self.scale.k)
+                v.seg(q, q + u, "construction")
+                v.label(q + u, names.get(pv.name, pv.name), self.label_height, clear=0.5)
+        nested = {n for dt in self.details for n in dt.run}
+        for dt in self.details:
+            mark_detail(v, self.poly, dt)
+        for n in self.run:
+            pv = self.poly[n]
+            if n in nested:
+                v.seg(pv.tail, pv.head, "construction")
+                continue
+            v.arrow(pv.tail, pv.head, "result" if n in self.found else "vector")
+            v.label((pv.tail + pv.head) * 0.5, names.get(n, n), self.label_height,
+                    prefer=_outward(self.poly, pv.tail, pv.head, False), clear=0.5)  # fmt: skip
+
+
+#: The length (mm) of a detail's shortest vector, and of the stubs of the lines it joins.
+DETAIL_MM = SHORT_MM * 1.5
+#: A detail's vectors shorter than :data:`DETAIL_MM` / this share of its largest go to a
+#: further detail (a detail stays within about twice this size).
+DETAIL_MAX_MM = 30.0
+STUB_MM = 5.0
 
 
 class Polygon(View):
     """Force polygons at one μ_F (a factor 1, 2, 2.5, 4, 5 × 10^n) in one viewport: the
     first in ``layers`` drawn first (a frictionless polygon dashed under the one with friction).
     Each layer is (polygon, role); ``names``, ``found``, ``inward`` as :func:`draw_polygon`.
-    ``readable`` defaults to the shortest vector the caller must read (0: none)."""
+    ``detail``: the runs of the last layer's vectors too short for the polygon's μ_F are drawn
+    enlarged in :attr:`details` (the caller places them beside the polygon; letters from
+    ``letters``)."""
 
     def __init__(
         self,
@@ -248,6 +410,8 @@ class Polygon(View):
         found: Iterable[str] | None = None,
         inward: Iterable[str] = (),
         label_height: float = 2.5,
+        detail: bool = False,
+        letters: Iterator[str] | None = None,
         **kw: Any,
     ) -> None:
         kw.setdefault("title", WORDS("force_polygon"))
@@ -261,6 +425,17 @@ class Polygon(View):
         self.inward = tuple(inward)
         self.label_height = label_height
         self.points: list[str] = []
+        self.details: list[PolygonDetail] = []
+        if detail and self.layers:
+            poly = self.layers[-1][0]
+            it = letters if letters is not None else iter(DETAIL_LETTERS)
+            self.details = [
+                PolygonDetail(poly, run, next(it), names, found, label_height, letters=it)
+                for run in short_runs(poly.vectors)
+            ]
+            if self.details:  # the polygon is never drawn as large as its details
+                finest = max(dt.scale.k for dt in self.details)
+                self.least_k = max(self.least_k, nice_factor(finest * 1.001, 1.0, "F").k)
         self._ext = _bbox(
             q for poly, _ in self.layers for pv in poly.vectors for q in (pv.tail, pv.head)
         )
@@ -269,14 +444,18 @@ class Polygon(View):
         return self._ext
 
     def lengths(self) -> Sequence[float]:
-        return [pv.magnitude for poly, _ in self.layers for pv in poly.vectors]
+        inset = {n for dt in self.details for n in dt.run}
+        return [pv.magnitude for poly, _ in self.layers for pv in poly.vectors
+                if pv.name not in inset]  # fmt: skip
 
     def draw(self, d: Drawing, at: Placed) -> None:
         assert at.viewport is not None
-        for poly, role in self.layers:
+        for i, (poly, role) in enumerate(self.layers):
+            last = i == len(self.layers) - 1
             self.points += draw_polygon(
-                at.viewport, poly, self.names, role, self.found, self.inward, self.label_height
-            )
+                at.viewport, poly, self.names, role, self.found, self.inward, self.label_height,
+                self.details if last else (),
+            )  # fmt: skip
 
 
 # --- diagrams -------------------------------------------------------------------------------------
