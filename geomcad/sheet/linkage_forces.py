@@ -78,7 +78,6 @@ from geomcad.sheet.plans import markup_of
 from geomcad.sheet.scale import Scale, fmt_column
 from geomcad.sheet.scheme import draw_scheme
 from geomcad.sheet.views import (
-    DETAIL_LETTERS,
     AxisSpec,
     Curve,
     Diagram,
@@ -86,6 +85,7 @@ from geomcad.sheet.views import (
     Steps,
     Table,
     Text,
+    detail_letters,
 )
 from geomcad.structure import Mechanism
 from geomcad.structure.model import Link
@@ -179,7 +179,7 @@ def _sheet2(
     # each group's polygons under the group cut out (the crank's under the crank); a
     # polygon's vectors too short for its μ_F are drawn again, enlarged, in a detail at its
     # own stated μ_F beside it (one letter each on the sheet)
-    letters = iter(DETAIL_LETTERS)
+    letters = detail_letters()
     per_group = [
         [
             _with_details(

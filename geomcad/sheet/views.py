@@ -267,8 +267,11 @@ DETAIL_CIRCLE_MM = 3.0
 #: arrowheads there).
 POLY_MM = 50.0
 
-#: The letters of the details (ESKD: Cyrillic capitals without Ё, З, Й, О, Ч, Ъ, Ы, Ь).
-DETAIL_LETTERS = "АБВГДЕЖИКЛМНПРСТУФШЭЮЯ"
+
+def detail_letters() -> Iterator[str]:
+    """The letters of a sheet's details in the language drawn (ESKD: capitals, those that
+    read as digits or as other letters left out)."""
+    return iter(WORDS("detail_letters"))
 
 
 def short_runs(
@@ -328,7 +331,7 @@ class PolygonDetail(View):
         **kw: Any,
     ) -> None:
         vs = [poly[n] for n in run]
-        it = letters if letters is not None else iter(DETAIL_LETTERS)
+        it = letters if letters is not None else detail_letters()
         #: the runs still too short here, drawn in further details (their letters next)
         inner = short_runs(vs, DETAIL_MM / DETAIL_MAX_MM, closed=False)
         nested = {n for r in inner for n in r}
@@ -428,7 +431,7 @@ class Polygon(View):
         self.details: list[PolygonDetail] = []
         if detail and self.layers:
             poly = self.layers[-1][0]
-            it = letters if letters is not None else iter(DETAIL_LETTERS)
+            it = letters if letters is not None else detail_letters()
             self.details = [
                 PolygonDetail(poly, run, next(it), names, found, label_height, letters=it)
                 for run in short_runs(poly.vectors)
