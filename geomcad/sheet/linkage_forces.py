@@ -177,20 +177,18 @@ def _sheet2(
     for b in bodies:
         b.least_k = k_l
     # each group's polygons under the group cut out (the crank's under the crank); a
-    # polygon's vectors too short for its μ_F are drawn again, enlarged, in a detail at its
-    # own stated μ_F beside it (one letter each on the sheet)
+    # polygon's vectors too short for its μ_F are drawn again, enlarged, in details at their
+    # own stated μ_F beside it in its view (one letter each on the sheet)
     letters = detail_letters()
     per_group = [
         [
-            _with_details(
-                Polygon(
-                    poly,
-                    title=_poly_title(gf, name),
-                    margin=8.0,
-                    names={pv.name: load_name(pv.name) for pv in poly.vectors},
-                    detail=True,
-                    letters=letters,
-                )
+            Polygon(
+                poly,
+                title=_poly_title(gf, name),
+                margin=8.0,
+                names={pv.name: load_name(pv.name) for pv in poly.vectors},
+                detail=True,
+                letters=letters,
             )
             for name, poly in gf.polygons
         ]
@@ -213,11 +211,6 @@ def _sheet2(
         Column(Row(mech, lever, right), groups),
     )
     return tree, {mech: lk.length / CRANK_MM}
-
-
-def _with_details(p: Polygon) -> Polygon | Row:
-    """A polygon with its details (:class:`~geomcad.sheet.views.PolygonDetail`) beside it."""
-    return Row(p, Grid(*(x for dt in p.details for x in dt.all_details()))) if p.details else p
 
 
 def crank_scale(lk: Linkage) -> Scale:

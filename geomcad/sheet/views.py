@@ -33,12 +33,19 @@ from typing import Any, Literal, Protocol
 import numpy as np
 import numpy.typing as npt
 
+from geomcad import tol
 from geomcad.construction import Construction
 from geomcad.construction.recorder import Step
 from geomcad.forces import ForcePolygon, PlanVector
 from geomcad.geom import Vec
 from geomcad.kinematics.plan import Plan
-from geomcad.sheet.compose import Extent, Placed, View, scale_text, text_width
+from geomcad.sheet.compose import (
+    Extent,
+    Placed,
+    View,
+    scale_text,
+    text_width,
+)
 from geomcad.sheet.drawing import LINE_SPACING, SHORT_MM, Drawing, Viewport
 from geomcad.sheet.graph import Axis, Graph, nice_step
 from geomcad.sheet.lang import Words, current
@@ -208,44 +215,87 @@ def draw_polygon(
     found: Iterable[str] | None = None,
     inward: Iterable[str] = (),
     height: float = 2.5,
-    details: Sequence[PolygonDetail] = (),
+    details: Sequence[Detail] = (),
+    thin: bool = False,
 ) -> list[str]:
     """Draw ``poly`` through ``v`` at the viewport's μ_F: each vector head to tail, labelled
     beside its middle (``names`` maps a vector's name to label markup; default: the name),
     outside the polygon (inside for the names in ``inward``); the vectors ``found`` (default:
     the polygon's solved unknowns, or its closing vector) in the result role, the others in
-    ``role``. The vectors of a ``details`` run are drawn as thin lines, circled and lettered
-    (ESKD выносной элемент): the detail draws them as arrows at its larger μ_F. Never a dot: a
-    vector outside every detail is an arrow however short. Returns the names of the vectors
-    left shorter than two arrowheads (none when the details hold every short one)."""
+    ``role``. The runs of ``details`` are drawn thin, circled and lettered (ESKD выносной
+    элемент; :func:`draw_detail` draws them enlarged). ``thin``: the polygon lies along one
+    line (two opposite reactions): its vectors are drawn side by side :data:`OFFSET_MM` apart,
+    joined by thin lines, as a textbook draws them. Never a dot: a vector outside every detail
+    is an arrow however short. Returns the names of the vectors left shorter than two
+    arrowheads."""
     if found is None:
         known = {n for n, _ in poly.solved}
         found = known or ({poly.vectors[-1].name} if poly.vectors else set())
     found = set(found)
     inward = set(inward)
     in_detail = {n for dt in details for n in dt.run}
+    zero = _zero(poly)
+    shift = _shifts(v, poly, in_detail) if thin else {}
     short: list[str] = []
-    for pv in poly.vectors:
-        text = (names or {}).get(pv.name, pv.name)
+    drawn = [pv for pv in poly.vectors if pv.magnitude > zero]
+    for i, pv in enumerate(drawn):
+        s = shift.get(pv.name, Vec(0.0, 0.0))
+        nxt = drawn[(i + 1) % len(drawn)]
+        s2 = shift.get(nxt.name, Vec(0.0, 0.0))
+        if thin and (s - s2).norm > 0.0:  # the vectors side by side joined where they meet
+            v.seg(pv.head + s, nxt.tail + s2, "construction")
         if pv.name in in_detail:
-            if v.mm(pv.magnitude) > 0.0:
-                v.seg(pv.tail, pv.head, "construction")
-            continue
-        if pv.magnitude == 0.0:
+            v.seg(pv.tail + s, pv.head + s, "construction")
             continue
         if v.mm(pv.magnitude) < SHORT_MM:
             short.append(pv.name)
-        v.arrow(pv.tail, pv.head, "result" if pv.name in found else role)
-        mid = (pv.tail + pv.head) * 0.5
-        v.label(mid, text, height, prefer=_outward(poly, pv.tail, pv.head, pv.name in inward),
-                clear=0.5)  # fmt: skip
+        tail, head = pv.tail + s, pv.head + s
+        v.arrow(tail, head, "result" if pv.name in found else role)
+        text = (names or {}).get(pv.name, pv.name)
+        if s.norm > 0.0:
+            prefer = (s.unit().x, s.unit().y)
+        else:
+            prefer = _outward(poly, pv.tail, pv.head, pv.name in inward)
+        v.label((tail + head) * 0.5, text, height, prefer=prefer, clear=0.5)
     for dt in details:
         mark_detail(v, poly, dt)
     v.dot(poly.pole)
     return short
 
 
-def mark_detail(v: Viewport, poly: ForcePolygon, dt: PolygonDetail) -> None:
+def _zero(poly: ForcePolygon) -> float:
+    """A vector of a polygon under this magnitude is round-off of a zero one (not drawn)."""
+    return tol.DERIVED * max((pv.magnitude for pv in poly.vectors), default=0.0)
+
+
+def _shifts(v: Viewport, poly: ForcePolygon, skip: Iterable[str] = ()) -> dict[str, Vec]:
+    """The sideways shifts (model units) of a thin polygon's vectors: each next one
+    :data:`OFFSET_MM` further across the line of the longest, the set centred on it."""
+    skip = set(skip)
+    zero = _zero(poly)
+    vs = [pv for pv in poly.vectors if pv.magnitude > zero and pv.name not in skip]
+    if len(vs) < 2:
+        return {}
+    big = max(vs, key=lambda pv: pv.magnitude)
+    n = (big.head - big.tail).unit().perp()
+    step = OFFSET_MM * v.scale.k
+    return {pv.name: n * ((i - (len(vs) - 1) / 2.0) * step) for i, pv in enumerate(vs)}
+
+
+def is_thin(poly: ForcePolygon, k: float) -> bool:
+    """Whether the polygon, drawn at μ_F ``k``, lies within :data:`THIN_MM` of the line of its
+    longest vector (its vectors would be drawn over one another)."""
+    zero = _zero(poly)
+    vs = [pv for pv in poly.vectors if pv.magnitude > zero]
+    if len(vs) < 2:
+        return False
+    big = max(vs, key=lambda pv: pv.magnitude)
+    u = (big.head - big.tail).unit()
+    far = max(abs(u.cross(q - big.tail)) for pv in vs for q in (pv.tail, pv.head))
+    return far / k < THIN_MM
+
+
+def mark_detail(v: Viewport, poly: ForcePolygon, dt: Detail) -> None:
     """Circle the run of ``dt`` (thin) and letter it on a short leader (ESKD выносной элемент)."""
     pts = [v.p(q) for n in dt.run for q in (poly[n].tail, poly[n].head)]
     cx = (min(q[0] for q in pts) + max(q[0] for q in pts)) / 2.0
@@ -261,11 +311,31 @@ def mark_detail(v: Viewport, poly: ForcePolygon, dt: PolygonDetail) -> None:
 
 #: The least radius (mm) of the thin circle that marks a polygon's detail.
 DETAIL_CIRCLE_MM = 3.0
-
-#: A polygon's vectors shorter than this share of its largest go to a detail (a polygon's
-#: largest vector is drawn about :data:`POLY_MM` long: the short ones would be under two
-#: arrowheads there).
-POLY_MM = 50.0
+#: A polygon's largest vector is drawn at most this long at its reference μ_F (mm), at which
+#: the room of its details is reckoned for the layout.
+POLY_MM = 110.0
+#: A detail's shortest vector is drawn at least this long (mm) …
+DETAIL_MM = 8.0
+#: … and its longest at most this long, else its vectors still too short go to a further
+#: detail (nested).
+DETAIL_MAX_MM = 25.0
+#: A detail enlarges the view it is taken from at least this many times (a detail barely
+#: larger than its polygon is not worth its room).
+DETAIL_LEAST = 4.0
+#: The enlargements of a detail over its polygon: m × 10^n, m of 1, 2, 4 (the detail's μ_F is
+#: the largest factor 1, 2, 2.5, 4, 5 × 10^n at most the polygon's / m: m to 1.25 m times).
+ENLARGE = tuple(m * 10.0**n for n in range(9) for m in (1.0, 2.0, 4.0) if m * 10.0**n >= 4.0)
+#: The lines of the long vectors a detail joins are drawn this long (mm).
+STUB_MM = 4.0
+#: The room (mm) round a detail's drawing for its labels, and its caption's height.
+DETAIL_PAD_MM = 3.0
+DETAIL_CAPTION_H = 2.5
+#: The gap (mm) between a polygon and its details.
+DETAIL_GAP_MM = 4.0
+#: A thin polygon's vectors are drawn side by side this far apart (mm) …
+OFFSET_MM = 2.5
+#: … a polygon is thin when all of it lies within this (mm) of its longest vector's line.
+THIN_MM = 1.2
 
 
 def detail_letters() -> Iterator[str]:
@@ -274,26 +344,23 @@ def detail_letters() -> Iterator[str]:
     return iter(WORDS("detail_letters"))
 
 
-def short_runs(
-    vectors: Sequence[PlanVector], share: float = SHORT_MM / POLY_MM, closed: bool = True
-) -> list[list[str]]:
-    """The runs (head to tail; round the polygon when ``closed``) of the nonzero vectors
-    shorter than ``share`` of the largest: each is drawn enlarged in one detail."""
+def short_runs(vectors: Sequence[PlanVector], limit: float, closed: bool = True) -> list[list[str]]:
+    """The runs (head to tail; round the polygon when ``closed``) of the vectors shorter than
+    ``limit`` (and longer than round-off of zero): each is drawn enlarged in one detail."""
     vs = list(vectors)
-    big = max((pv.magnitude for pv in vs), default=0.0)
-    if big <= 0.0:
-        return []
-    small = [0.0 < pv.magnitude < share * big for pv in vs]
+    zero = tol.DERIVED * max((pv.magnitude for pv in vs), default=0.0)
+    small = [zero < pv.magnitude < limit for pv in vs]
     if not any(small):
         return []
-    start = small.index(False) if closed else 0  # a closed run never wraps past a long one
+    long = [not s and pv.magnitude > zero for s, pv in zip(small, vs, strict=True)]
+    start = long.index(True) if closed and any(long) else 0  # a run never wraps past a long one
     runs: list[list[str]] = []
     cur: list[str] = []
     for i in range(len(vs)):
         j = (start + i) % len(vs)
         if small[j]:
             cur.append(vs[j].name)
-        elif vs[j].magnitude > 0.0 and cur:
+        elif long[j] and cur:
             runs.append(cur)
             cur = []
     if cur:
@@ -313,98 +380,207 @@ def nice_below(value_min: float, mm: float, q: Literal["F"] = "F") -> Scale:
     return Scale(10.0 ** (e - 1), q)  # unreachable
 
 
-class PolygonDetail(View):
-    """The enlarged detail of a force polygon: the ``run`` of its short vectors head to tail at
-    a larger μ_F (the largest factor at which the shortest is :data:`DETAIL_MM` long), with
-    the lines of the long vectors it joins (thin), captioned with its letter and μ_F. A fixed
-    view: its μ_F is its own, stated, and never changed by the layout."""
+def detail_scale(k: float, m: float) -> Scale:
+    """The μ_F of a detail that enlarges a polygon drawn at ``k`` about ``m`` times: the
+    largest factor 1, 2, 2.5, 4, 5 × 10^n at most k/m."""
+    return nice_below(k / m, 1.0)
 
-    def __init__(
-        self,
-        poly: ForcePolygon,
-        run: Sequence[str],
-        letter: str,
-        names: Mapping[str, str] | None = None,
-        found: Iterable[str] | None = None,
-        label_height: float = 2.5,
-        letters: Iterator[str] | None = None,
-        **kw: Any,
-    ) -> None:
-        vs = [poly[n] for n in run]
-        it = letters if letters is not None else detail_letters()
-        #: the runs still too short here, drawn in further details (their letters next)
-        inner = short_runs(vs, DETAIL_MM / DETAIL_MAX_MM, closed=False)
-        nested = {n for r in inner for n in r}
-        self.scale = nice_below(min(pv.magnitude for pv in vs if pv.name not in nested), DETAIL_MM)
-        self.details = [
-            PolygonDetail(poly, r, next(it), names, found, label_height, letters=it) for r in inner
-        ]
-        kw.setdefault("margin", 5.0)
-        kw.setdefault("title_height", 3.5)
-        super().__init__(title=f"{letter} ({scale_text(self.scale)})", **kw)
-        self.poly, self.run, self.letter = poly, list(run), letter
-        self.names = names
-        if found is None:
-            known = {n for n, _ in poly.solved}
-            found = known or ({poly.vectors[-1].name} if poly.vectors else set())
-        self.found = set(found)
-        self.label_height = label_height
-        self._box = _bbox(q for pv in vs for q in (pv.tail, pv.head))
 
-    def all_details(self) -> list[PolygonDetail]:
+def most_enlarged(m: float) -> float:
+    """The most a detail of enlargement ``m`` enlarges its polygon, whatever its μ_F."""
+    return max(x / detail_scale(x, m).k for x in (1.0, 2.0, 2.5, 4.0, 5.0))
+
+
+@dataclass
+class Detail:
+    """An enlarged detail of a force polygon (ESKD выносной элемент): its ``run`` of short
+    vectors head to tail at about ``m`` times the polygon's μ_F (:func:`detail_scale`, stated
+    in its caption with its ``letter``), with the lines of the long vectors it joins; its
+    vectors still too short there in ``inner`` details. ``slot``: where it is drawn, in the
+    polygon's units (its caption's room ``cap`` at the top)."""
+
+    run: tuple[str, ...]
+    m: float
+    letter: str
+    inner: list[Detail]
+    box: Extent
+    slot: Extent = (0.0, 0.0, 0.0, 0.0)
+    cap: float = 0.0
+
+    def all(self) -> list[Detail]:
         """This detail and its further ones, in the order of their letters."""
-        return [self, *(x for dt in self.details for x in dt.all_details())]
+        return [self, *(x for dt in self.inner for x in dt.all())]
 
-    def natural(self) -> tuple[float, float] | None:
-        x0, y0, x1, y1 = self._box
-        k = self.scale.k
-        tw = text_width(self.title, self.title_height)
-        return max((x1 - x0) / k + 2.0 * STUB_MM, tw), (y1 - y0) / k + 2.0 * STUB_MM
 
-    def draw(self, d: Drawing, at: Placed) -> None:
-        x0, y0, x1, y1 = self._box
-        ix0, iy0, ix1, iy1 = at.inner
-        centre = ((ix0 + ix1) / 2.0, (iy0 + iy1) / 2.0)
-        v = Viewport(d, self.scale, (x0 + x1) / 2.0, (y0 + y1) / 2.0, centre)
-        names = self.names or {}
-        order = list(self.poly.names)
-        first, last = self.poly[self.run[0]], self.poly[self.run[-1]]
-        i, j = order.index(self.run[0]), order.index(self.run[-1])
-        before = self.poly.vectors[(i - 1) % len(order)]
-        after = self.poly.vectors[(j + 1) % len(order)]
-        for pv, q, sign in ((before, first.tail, -1.0), (after, last.head, 1.0)):
-            if pv.magnitude > 0.0:
-                u = (pv.head - pv.tail).unit() * (sign * STUB_MM * self.scale.k)
-                v.seg(q, q + u, "construction")
-                v.label(q + u, names.get(pv.name, pv.name), self.label_height, clear=0.5)
-        nested = {n for dt in self.details for n in dt.run}
-        for dt in self.details:
-            mark_detail(v, self.poly, dt)
-        for n in self.run:
-            pv = self.poly[n]
-            if n in nested:
-                v.seg(pv.tail, pv.head, "construction")
+def plan_details(poly: ForcePolygon, k_ref: float, letters: Iterator[str]) -> list[Detail]:
+    """The details of ``poly`` drawn at μ_F ``k_ref``: one per run of its vectors shorter than
+    two arrowheads there, each at the least enlargement (:data:`ENLARGE`, at least
+    :data:`DETAIL_LEAST` times) that draws its shortest :data:`DETAIL_MM` long, or, where its
+    longest would then exceed :data:`DETAIL_MAX_MM`, at the most that keeps the longest within
+    it and its own short vectors in further details."""
+    return [
+        _plan(poly, run, k_ref, 1.0, letters) for run in short_runs(poly.vectors, SHORT_MM * k_ref)
+    ]
+
+
+def _plan(
+    poly: ForcePolygon, run: Sequence[str], k_ref: float, parent: float, letters: Iterator[str]
+) -> Detail:
+    letter = next(letters)
+    mags = [poly[n].magnitude for n in run]
+    lo, hi = min(mags), max(mags)
+    cands = [m for m in ENLARGE if m >= DETAIL_LEAST * parent * (1.0 - tol.DERIVED)]
+    m = next((m for m in cands if lo * m / k_ref >= DETAIL_MM), cands[-1])
+    inner: list[Detail] = []
+    if hi * most_enlarged(m) / k_ref > DETAIL_MAX_MM:
+        fit = [x for x in cands if hi * most_enlarged(x) / k_ref <= DETAIL_MAX_MM]
+        m = fit[-1] if fit else cands[0]
+        vs = [poly[n] for n in run]
+        inner = [_plan(poly, r, k_ref, m, letters)
+                 for r in short_runs(vs, SHORT_MM * k_ref / m, closed=False)]  # fmt: skip
+    box = _bbox(q for n in run for q in (poly[n].tail, poly[n].head))
+    return Detail(tuple(run), m, letter, inner, box)
+
+
+def place_details(poly: ForcePolygon, details: Sequence[Detail], k: float, ext: Extent) -> Extent:
+    """Give each detail its slot beside the polygon's extent ``ext`` (model units; sizes in mm
+    at the polygon's μ_F ``k``): stacked in a column or a row, beside, below, above the
+    polygon or in a corner of its box clear of its sides; the placement that keeps the whole
+    smallest. Returns the extent of the polygon with its details."""
+    flat = [x for dt in details for x in dt.all()]
+    if not flat:
+        return ext
+    pad, cap = DETAIL_PAD_MM * k, (DETAIL_CAPTION_H * 1.5 + 1.5) * k
+    sizes = []
+    for dt in flat:
+        e = most_enlarged(dt.m)
+        bw, bh = dt.box[2] - dt.box[0], dt.box[3] - dt.box[1]
+        w = max(bw * e + 2.0 * (STUB_MM * k + pad),
+                text_width(_detail_caption(dt, Scale(1.0, "F")), DETAIL_CAPTION_H) * k)  # fmt: skip
+        h = bh * e + 2.0 * (STUB_MM * k + pad) + cap
+        sizes.append((w, h))
+        dt.cap = cap
+    gap = DETAIL_GAP_MM * k
+    x0, y0, x1, y1 = ext
+    segs = [(pv.tail, pv.head) for pv in poly.vectors]
+    placed: list[Extent] = []
+    union = ext
+    for dt, (w, h) in zip(flat, sizes, strict=True):
+        best: tuple[float, float, Extent] | None = None
+        anchors = [ext, *placed]
+        spots = [(x0, y1 - h), (x1 - w, y1 - h), (x0, y0), (x1 - w, y0)]  # the box's corners
+        for ax0, ay0, ax1, ay1 in anchors:
+            spots += [
+                (ax1 + gap, ay1 - h), (ax1 + gap, ay0), (ax0 - gap - w, ay1 - h),
+                (ax0 - gap - w, ay0), (ax0, ay0 - gap - h), (ax1 - w, ay0 - gap - h),
+                (ax0, ay1 + gap), (ax1 - w, ay1 + gap),
+            ]  # fmt: skip
+        for bx, by in spots:
+            slot = (bx, by, bx + w, by + h)
+            if any(_crosses(a, b, slot, gap) for a, b in segs):
                 continue
-            v.arrow(pv.tail, pv.head, "result" if n in self.found else "vector")
-            v.label((pv.tail + pv.head) * 0.5, names.get(n, n), self.label_height,
-                    prefer=_outward(self.poly, pv.tail, pv.head, False), clear=0.5)  # fmt: skip
+            if any(_overlap(slot, q, gap) for q in placed):
+                continue
+            u = (min(union[0], slot[0]), min(union[1], slot[1]),
+                 max(union[2], slot[2]), max(union[3], slot[3]))  # fmt: skip
+            uw, uh = u[2] - u[0], u[3] - u[1]
+            key = (uw * uh, max(uw, uh))
+            if best is None or key < best[:2]:
+                best = (key[0], key[1], slot)
+        assert best is not None  # a spot beside the last placed is always free
+        dt.slot = best[2]
+        placed.append(best[2])
+        union = (min(union[0], dt.slot[0]), min(union[1], dt.slot[1]),
+                 max(union[2], dt.slot[2]), max(union[3], dt.slot[3]))  # fmt: skip
+    return union
 
 
-#: The length (mm) of a detail's shortest vector, and of the stubs of the lines it joins.
-DETAIL_MM = SHORT_MM * 1.5
-#: A detail's vectors shorter than :data:`DETAIL_MM` / this share of its largest go to a
-#: further detail (a detail stays within about twice this size).
-DETAIL_MAX_MM = 30.0
-STUB_MM = 5.0
+def _overlap(a: Extent, b: Extent, gap: float) -> bool:
+    """Whether two boxes come closer than ``gap``."""
+    return a[0] < b[2] + gap and b[0] < a[2] + gap and a[1] < b[3] + gap and b[1] < a[3] + gap
+
+
+def _crosses(a: Vec, b: Vec, box: Extent, clear: float) -> bool:
+    """Whether segment ab comes within ``clear`` of the box (Liang–Barsky on the grown box)."""
+    x0, y0, x1, y1 = box[0] - clear, box[1] - clear, box[2] + clear, box[3] + clear
+    t0, t1 = 0.0, 1.0
+    d = b - a
+    for p, q in ((-d.x, a.x - x0), (d.x, x1 - a.x), (-d.y, a.y - y0), (d.y, y1 - a.y)):
+        if p == 0.0:
+            if q < 0.0:
+                return False
+        else:
+            t = q / p
+            if p < 0.0:
+                t0 = max(t0, t)
+            else:
+                t1 = min(t1, t)
+            if t0 > t1:
+                return False
+    return True
+
+
+def _detail_caption(dt: Detail, sc: Scale) -> str:
+    return f"{dt.letter} ({scale_text(sc)})"
+
+
+def draw_detail(
+    v: Viewport,
+    poly: ForcePolygon,
+    dt: Detail,
+    names: Mapping[str, str] | None = None,
+    found: Iterable[str] = (),
+    height: float = 2.5,
+) -> None:
+    """Draw detail ``dt`` of ``poly`` in its slot of the polygon's viewport ``v``: its run at
+    its μ_F (:func:`detail_scale`), captioned with its letter and μ_F, the lines of the long
+    vectors it joins, its inner details' runs circled and lettered."""
+    sc = detail_scale(v.scale.k, dt.m)
+    sx0, sy0, sx1, sy1 = dt.slot
+    names = names or {}
+    found = set(found)
+    top = v.p((sx0, sy1))
+    v.d.text(_detail_caption(dt, sc), (top[0], top[1] + DETAIL_CAPTION_H), DETAIL_CAPTION_H)
+    at = v.p(((sx0 + sx1) / 2.0, (sy0 + sy1 - dt.cap) / 2.0))
+    bx0, by0, bx1, by1 = dt.box
+    sub = Viewport(v.d, sc, (bx0 + bx1) / 2.0, (by0 + by1) / 2.0, at)
+    order = list(poly.names)
+    first, last = poly[dt.run[0]], poly[dt.run[-1]]
+    i, j = order.index(dt.run[0]), order.index(dt.run[-1])
+    zero = _zero(poly)
+    before = next(poly.vectors[(i - s) % len(order)] for s in range(1, len(order) + 1)
+                  if poly.vectors[(i - s) % len(order)].magnitude > zero)  # fmt: skip
+    after = next(poly.vectors[(j + s) % len(order)] for s in range(1, len(order) + 1)
+                 if poly.vectors[(j + s) % len(order)].magnitude > zero)  # fmt: skip
+    for pv, q, sign in ((before, first.tail, -1.0), (after, last.head, 1.0)):
+        if pv.name not in dt.run:
+            u = (pv.head - pv.tail).unit() * (sign * STUB_MM * sc.k)
+            sub.seg(q, q + u, "construction")
+            sub.label(q + u, names.get(pv.name, pv.name), height, clear=0.5)
+    nested = {n for x in dt.inner for n in x.run}
+    for x in dt.inner:
+        mark_detail(sub, poly, x)
+    for n in dt.run:
+        pv = poly[n]
+        if pv.magnitude <= zero:
+            continue
+        if n in nested:
+            sub.seg(pv.tail, pv.head, "construction")
+            continue
+        sub.arrow(pv.tail, pv.head, "result" if n in found else "vector")
+        sub.label((pv.tail + pv.head) * 0.5, names.get(n, n), height,
+                  prefer=_outward(poly, pv.tail, pv.head, False), clear=0.5)  # fmt: skip
 
 
 class Polygon(View):
     """Force polygons at one μ_F (a factor 1, 2, 2.5, 4, 5 × 10^n) in one viewport: the
     first in ``layers`` drawn first (a frictionless polygon dashed under the one with friction).
     Each layer is (polygon, role); ``names``, ``found``, ``inward`` as :func:`draw_polygon`.
-    ``detail``: the runs of the last layer's vectors too short for the polygon's μ_F are drawn
-    enlarged in :attr:`details` (the caller places them beside the polygon; letters from
-    ``letters``)."""
+    ``detail``: the last layer's vectors too short for the polygon's μ_F (at its reference
+    μ_F, the largest drawn at most :data:`POLY_MM` long) are drawn enlarged in lettered
+    :attr:`details` beside it, in the same view (their μ_F a fixed share of the polygon's,
+    stated in their captions; letters from ``letters``), and a polygon along one line is
+    drawn with its vectors side by side (:func:`draw_polygon`'s ``thin``)."""
 
     def __init__(
         self,
@@ -428,37 +604,75 @@ class Polygon(View):
         self.inward = tuple(inward)
         self.label_height = label_height
         self.points: list[str] = []
-        self.details: list[PolygonDetail] = []
-        if detail and self.layers:
-            poly = self.layers[-1][0]
-            it = letters if letters is not None else detail_letters()
-            self.details = [
-                PolygonDetail(poly, run, next(it), names, found, label_height, letters=it)
-                for run in short_runs(poly.vectors)
-            ]
-            if self.details:  # the polygon is never drawn as large as its details
-                finest = max(dt.scale.k for dt in self.details)
-                self.least_k = max(self.least_k, nice_factor(finest * 1.001, 1.0, "F").k)
+        self.details: list[Detail] = []
+        self.thin = False
         self._ext = _bbox(
             q for poly, _ in self.layers for pv in poly.vectors for q in (pv.tail, pv.head)
         )
+        self.detail = detail and bool(self.layers)
+        self.letters = letters
+        if self.detail:
+            # the room of the details as at the reference μ_F (they are planned again, and
+            # lettered, at the μ_F the layout chooses)
+            big = max((pv.magnitude for pv in self.layers[-1][0].vectors), default=0.0)
+            if big > 0.0:
+                k_ref = nice_factor(big, POLY_MM, "F").k
+                self.details, self.thin, self._ext = self._with_details(k_ref, iter(_ANY))
+
+    def _with_details(self, k: float, letters: Iterator[str]) -> tuple[list[Detail], bool, Extent]:
+        """The details, thinness and extent (with the details' slots) of the polygon at
+        μ_F ``k``."""
+        poly = self.layers[-1][0]
+        details = plan_details(poly, k, letters)
+        thin = len(self.layers) == 1 and is_thin(poly, k)
+        x0, y0, x1, y1 = _bbox(q for pv in poly.vectors for q in (pv.tail, pv.head))
+        if thin:  # the room of the vectors side by side and their labels
+            grow = (len(poly.vectors) * OFFSET_MM / 2.0 + 2.0) * k
+            x0, y0, x1, y1 = x0 - grow, y0 - grow, x1 + grow, y1 + grow
+        for poly2, _ in self.layers[:-1]:
+            b = _bbox(q for pv in poly2.vectors for q in (pv.tail, pv.head))
+            x0, y0, x1, y1 = min(x0, b[0]), min(y0, b[1]), max(x1, b[2]), max(y1, b[3])
+        return details, thin, place_details(poly, details, k, (x0, y0, x1, y1))
 
     def extent(self) -> Extent | None:
         return self._ext
 
     def lengths(self) -> Sequence[float]:
+        out = []
         inset = {n for dt in self.details for n in dt.run}
-        return [pv.magnitude for poly, _ in self.layers for pv in poly.vectors
-                if pv.name not in inset]  # fmt: skip
+        for poly, _ in self.layers:
+            out += [pv.magnitude for pv in poly.vectors if pv.name not in inset]
+        for dt in (x for d0 in self.details for x in d0.all()):
+            nested = {n for x in dt.inner for n in x.run}
+            out += [self.layers[-1][0][n].magnitude * dt.m for n in dt.run if n not in nested]
+        return out
 
     def draw(self, d: Drawing, at: Placed) -> None:
-        assert at.viewport is not None
+        v = at.viewport
+        assert v is not None
+        if self.detail:
+            # the details planned and placed again for the μ_F drawn (their run, their room
+            # in mm), lettered in the order drawn, the whole centred in the box
+            letters = self.letters if self.letters is not None else detail_letters()
+            self.details, self.thin, ext = self._with_details(v.scale.k, letters)
+            centre = ((ext[0] + ext[2]) / 2.0, (ext[1] + ext[3]) / 2.0)
+            v = Viewport(d, v.scale, centre[0], centre[1], v.at)
+            at.viewport = v
         for i, (poly, role) in enumerate(self.layers):
             last = i == len(self.layers) - 1
             self.points += draw_polygon(
-                at.viewport, poly, self.names, role, self.found, self.inward, self.label_height,
-                self.details if last else (),
+                v, poly, self.names, role, self.found, self.inward, self.label_height,
+                self.details if last else (), self.thin and last,
             )  # fmt: skip
+        if self.details:
+            poly = self.layers[-1][0]
+            found = self.found if self.found is not None else {n for n, _ in poly.solved}
+            for dt in (x for d0 in self.details for x in d0.all()):
+                draw_detail(v, poly, dt, self.names, found, self.label_height)
+
+
+#: The letters of the details while their room is reckoned (those drawn come from the sheet's).
+_ANY = "Ж" * 99
 
 
 # --- diagrams -------------------------------------------------------------------------------------
