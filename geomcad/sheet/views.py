@@ -442,11 +442,18 @@ def _plan(
     return Detail(tuple(run), m, letter, inner, box)
 
 
-def place_details(poly: ForcePolygon, details: Sequence[Detail], k: float, ext: Extent) -> Extent:
-    """Give each detail its slot beside the polygon's extent ``ext`` (model units; sizes in mm
-    at the polygon's μ_F ``k``): stacked in a column or a row, beside, below, above the
-    polygon or in a corner of its box clear of its sides; the placement that keeps the whole
-    smallest. Returns the extent of the polygon with its details."""
+def place_details(
+    poly: ForcePolygon,
+    details: Sequence[Detail],
+    k: float,
+    ext: Extent,
+    room: tuple[float, float] | None = None,
+) -> Extent:
+    """Give each detail its slot beside the polygon's extent ``ext`` (model units; their room
+    in mm at the polygon's μ_F ``k``), one after another: in a corner of the polygon's box
+    clear of its sides, or beside, below or above the polygon or a detail placed before; the
+    spot that keeps the whole within ``room`` (model units: the view's box), then smallest.
+    Returns the extent of the polygon with its details."""
     flat = [x for dt in details for x in dt.all()]
     if not flat:
         return ext
@@ -466,7 +473,7 @@ def place_details(poly: ForcePolygon, details: Sequence[Detail], k: float, ext: 
     placed: list[Extent] = []
     union = ext
     for dt, (w, h) in zip(flat, sizes, strict=True):
-        best: tuple[float, float, Extent] | None = None
+        best: tuple[float, float, float, Extent] | None = None
         anchors = [ext, *placed]
         spots = [(x0, y1 - h), (x1 - w, y1 - h), (x0, y0), (x1 - w, y0)]  # the box's corners
         for ax0, ay0, ax1, ay1 in anchors:
@@ -484,12 +491,13 @@ def place_details(poly: ForcePolygon, details: Sequence[Detail], k: float, ext: 
             u = (min(union[0], slot[0]), min(union[1], slot[1]),
                  max(union[2], slot[2]), max(union[3], slot[3]))  # fmt: skip
             uw, uh = u[2] - u[0], u[3] - u[1]
-            key = (uw * uh, max(uw, uh))
-            if best is None or key < best[:2]:
-                best = (key[0], key[1], slot)
+            over = 0.0 if room is None else max(uw - room[0], 0.0) + max(uh - room[1], 0.0)
+            key = (over, uw * uh, max(uw, uh))
+            if best is None or key < best[:3]:
+                best = (*key, slot)
         assert best is not None  # a spot beside the last placed is always free
-        dt.slot = best[2]
-        placed.append(best[2])
+        dt.slot = best[3]
+        placed.append(best[3])
         union = (min(union[0], dt.slot[0]), min(union[1], dt.slot[1]),
                  max(union[2], dt.slot[2]), max(union[3], dt.slot[3]))  # fmt: skip
     return union
@@ -619,7 +627,9 @@ class Polygon(View):
                 k_ref = nice_factor(big, POLY_MM, "F").k
                 self.details, self.thin, self._ext = self._with_details(k_ref, iter(_ANY))
 
-    def _with_details(self, k: float, letters: Iterator[str]) -> tuple[list[Detail], bool, Extent]:
+    def _with_details(
+        self, k: float, letters: Iterator[str], room: tuple[float, float] | None = None
+    ) -> tuple[list[Detail], bool, Extent]:
         """The details, thinness and extent (with the details' slots) of the polygon at
         μ_F ``k``."""
         poly = self.layers[-1][0]
@@ -632,7 +642,7 @@ class Polygon(View):
         for poly2, _ in self.layers[:-1]:
             b = _bbox(q for pv in poly2.vectors for q in (pv.tail, pv.head))
             x0, y0, x1, y1 = min(x0, b[0]), min(y0, b[1]), max(x1, b[2]), max(y1, b[3])
-        return details, thin, place_details(poly, details, k, (x0, y0, x1, y1))
+        return details, thin, place_details(poly, details, k, (x0, y0, x1, y1), room)
 
     def extent(self) -> Extent | None:
         return self._ext
@@ -654,7 +664,9 @@ class Polygon(View):
             # the details planned and placed again for the μ_F drawn (their run, their room
             # in mm), lettered in the order drawn, the whole centred in the box
             letters = self.letters if self.letters is not None else detail_letters()
-            self.details, self.thin, ext = self._with_details(v.scale.k, letters)
+            x0, y0, x1, y1 = at.inner
+            room = ((x1 - x0) * v.scale.k, (y1 - y0) * v.scale.k)
+            self.details, self.thin, ext = self._with_details(v.scale.k, letters, room)
             centre = ((ext[0] + ext[2]) / 2.0, (ext[1] + ext[3]) / 2.0)
             v = Viewport(d, v.scale, centre[0], centre[1], v.at)
             at.viewport = v
@@ -672,7 +684,7 @@ class Polygon(View):
 
 
 #: The letters of the details while their room is reckoned (those drawn come from the sheet's).
-_ANY = "Ж" * 99
+_ANY = "W" * 99
 
 
 # --- diagrams -------------------------------------------------------------------------------------
