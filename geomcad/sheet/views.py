@@ -584,11 +584,13 @@ class Polygon(View):
     """Force polygons at one μ_F (a factor 1, 2, 2.5, 4, 5 × 10^n) in one viewport: the
     first in ``layers`` drawn first (a frictionless polygon dashed under the one with friction).
     Each layer is (polygon, role); ``names``, ``found``, ``inward`` as :func:`draw_polygon`.
-    ``detail``: the last layer's vectors too short for the polygon's μ_F (at its reference
-    μ_F, the largest drawn at most :data:`POLY_MM` long) are drawn enlarged in lettered
-    :attr:`details` beside it, in the same view (their μ_F a fixed share of the polygon's,
-    stated in their captions; letters from ``letters``), and a polygon along one line is
-    drawn with its vectors side by side (:func:`draw_polygon`'s ``thin``)."""
+    ``detail``: the last layer's vectors too short for the polygon's μ_F are drawn enlarged in
+    lettered :attr:`details` in the same view, in the room the polygon leaves free or beside
+    it (their μ_F a fixed share of the polygon's, stated in their captions; letters from
+    ``letters``); their room is reckoned at ``k_ref`` (default: the μ_F that draws the largest
+    vector at most :data:`POLY_MM` long), and they are planned again at the μ_F drawn. A
+    polygon along one line is drawn with its vectors side by side
+    (:func:`draw_polygon`'s ``thin``)."""
 
     def __init__(
         self,
@@ -599,6 +601,7 @@ class Polygon(View):
         label_height: float = 2.5,
         detail: bool = False,
         letters: Iterator[str] | None = None,
+        k_ref: float | None = None,
         **kw: Any,
     ) -> None:
         kw.setdefault("title", WORDS("force_polygon"))
@@ -624,7 +627,7 @@ class Polygon(View):
             # lettered, at the μ_F the layout chooses)
             big = max((pv.magnitude for pv in self.layers[-1][0].vectors), default=0.0)
             if big > 0.0:
-                k_ref = nice_factor(big, POLY_MM, "F").k
+                k_ref = k_ref or nice_factor(big, POLY_MM, "F").k
                 self.details, self.thin, self._ext = self._with_details(k_ref, iter(_ANY))
 
     def _with_details(
