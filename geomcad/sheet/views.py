@@ -476,6 +476,8 @@ def place_details(
         best: tuple[float, float, float, Extent] | None = None
         anchors = [ext, *placed]
         spots = [(x0, y1 - h), (x1 - w, y1 - h), (x0, y0), (x1 - w, y0)]  # the box's corners
+        # beside the whole so far (always clear of it)
+        spots += [(union[2] + 1.5 * gap, union[3] - h), (union[0], union[1] - 1.5 * gap - h)]
         for ax0, ay0, ax1, ay1 in anchors:
             spots += [
                 (ax1 + gap, ay1 - h), (ax1 + gap, ay0), (ax0 - gap - w, ay1 - h),
@@ -495,7 +497,7 @@ def place_details(
             key = (over, uw * uh, max(uw, uh))
             if best is None or key < best[:3]:
                 best = (*key, slot)
-        assert best is not None  # a spot beside the last placed is always free
+        assert best is not None  # a spot beside the whole is always free
         dt.slot = best[3]
         placed.append(best[3])
         union = (min(union[0], dt.slot[0]), min(union[1], dt.slot[1]),
