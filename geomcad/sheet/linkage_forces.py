@@ -130,7 +130,7 @@ def force_sheets(
         # with their details reckoned at the μ_F each got there: the details take the room
         # the polygon leaves free where they can
         tree, z = fit(lambda h: _sheet2(s, P, forces, k, h), fmts)
-        refs = {pl.view.title: pl.scale.k for pl in z.layout
+        refs = {pl.view.title: (pl.scale.k, pl.size) for pl in z.layout
                 if isinstance(pl.view, Polygon) and pl.scale}  # fmt: skip
         tree, z = fit(lambda h: _sheet2(s, P, forces, k, h, refs), [z.fmt])
         d = z.start(_title(lk, WORDS("forces"), designation, no, count))
@@ -169,11 +169,11 @@ def _num(x: float, digits: int = 4, scale: float = 0.0) -> str:
 
 def _sheet2(
     s: Solved, P: Position, f: Forces, k: int | None, h: float,
-    refs: Mapping[str, float] | None = None,
+    refs: Mapping[str, tuple[float, tuple[float, float]]] | None = None,
 ) -> tuple[Tree, dict[View, float]]:  # fmt: skip
     """Sheet 2's tree, its tables and texts ``h`` high, and the scale its mechanism wants. The
-    force polygons are drawn with their details where ``refs`` gives their reference μ_F (in
-    their titles), else alone (for a first arrangement)."""
+    force polygons are drawn with their details where ``refs`` gives their reference μ_F and
+    room (mm; by their titles), else alone (for a first arrangement)."""
     lk = s.linkage
     # the length scales from the geometry alone: never finer than the GOST scale that draws
     # the crank CRANK_MM long (a change of ω or of the loads rescales no drawing of links)
@@ -198,7 +198,7 @@ def _sheet2(
                 names={pv.name: load_name(pv.name) for pv in poly.vectors},
                 detail=refs is not None,
                 letters=letters,
-                k_ref=(refs or {}).get(_poly_title(gf, name)),
+                ref=(refs or {}).get(_poly_title(gf, name)),
             )
             for name, poly in gf.polygons
         ]

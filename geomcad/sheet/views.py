@@ -328,7 +328,7 @@ ENLARGE = tuple(m * 10.0**n for n in range(9) for m in (1.0, 2.0, 4.0) if m * 10
 #: The lines of the long vectors a detail joins are drawn this long (mm).
 STUB_MM = 4.0
 #: The room (mm) round a detail's drawing for its labels, and its caption's height.
-DETAIL_PAD_MM = 3.0
+DETAIL_PAD_MM = 4.0
 DETAIL_CAPTION_H = 2.5
 #: The gap (mm) between a polygon and its details.
 DETAIL_GAP_MM = 4.0
@@ -460,12 +460,14 @@ def place_details(
     pad, cap = DETAIL_PAD_MM * k, (DETAIL_CAPTION_H * 1.5 + 1.5) * k
     sizes = []
     for dt in flat:
-        e = most_enlarged(dt.m)
-        bw, bh = dt.box[2] - dt.box[0], dt.box[3] - dt.box[1]
-        w = max(bw * e + 2.0 * (STUB_MM * k + pad),
-                text_width(_detail_caption(dt, Scale(1.0, "F")), DETAIL_CAPTION_H) * k)  # fmt: skip
-        h = bh * e + 2.0 * (STUB_MM * k + pad) + cap
-        sizes.append((w, h))
+        kd = detail_scale(k, dt.m).k
+        pts = [q for n in dt.run for q in (poly[n].tail, poly[n].head)]
+        pts += [b for _, _, b in _stubs(poly, dt, kd)]
+        dt.box = _bbox(pts)
+        bw, bh = (dt.box[2] - dt.box[0]) * k / kd, (dt.box[3] - dt.box[1]) * k / kd
+        w = max(bw + 2.0 * pad,
+                text_width(_detail_caption(dt, Scale(kd, "F")), DETAIL_CAPTION_H) * k)  # fmt: skip
+        sizes.append((w, bh + 2.0 * pad + cap))
         dt.cap = cap
     gap = DETAIL_GAP_MM * k
     x0, y0, x1, y1 = ext
@@ -534,6 +536,24 @@ def _detail_caption(dt: Detail, sc: Scale) -> str:
     return f"{dt.letter} ({scale_text(sc)})"
 
 
+def _stubs(poly: ForcePolygon, dt: Detail, kd: float) -> list[tuple[PlanVector, Vec, Vec]]:
+    """The lines (vector, from, to; :data:`STUB_MM` long at the detail's μ_F ``kd``) of the
+    long vectors a detail's run joins, before its first and after its last."""
+    order = list(poly.names)
+    zero = _zero(poly)
+    i, j = order.index(dt.run[0]), order.index(dt.run[-1])
+    n = len(order)
+    before = next(poly.vectors[(i - s) % n] for s in range(1, n + 1)
+                  if poly.vectors[(i - s) % n].magnitude > zero)  # fmt: skip
+    after = next(poly.vectors[(j + s) % n] for s in range(1, n + 1)
+                 if poly.vectors[(j + s) % n].magnitude > zero)  # fmt: skip
+    out = []
+    for pv, q, sign in ((before, poly[dt.run[0]].tail, -1.0), (after, poly[dt.run[-1]].head, 1.0)):
+        if pv.name not in dt.run:
+            out.append((pv, q, q + (pv.head - pv.tail).unit() * (sign * STUB_MM * kd)))
+    return out
+
+
 def draw_detail(
     v: Viewport,
     poly: ForcePolygon,
@@ -554,25 +574,15 @@ def draw_detail(
     at = v.p(((sx0 + sx1) / 2.0, (sy0 + sy1 - dt.cap) / 2.0))
     bx0, by0, bx1, by1 = dt.box
     sub = Viewport(v.d, sc, (bx0 + bx1) / 2.0, (by0 + by1) / 2.0, at)
-    order = list(poly.names)
-    first, last = poly[dt.run[0]], poly[dt.run[-1]]
-    i, j = order.index(dt.run[0]), order.index(dt.run[-1])
-    zero = _zero(poly)
-    before = next(poly.vectors[(i - s) % len(order)] for s in range(1, len(order) + 1)
-                  if poly.vectors[(i - s) % len(order)].magnitude > zero)  # fmt: skip
-    after = next(poly.vectors[(j + s) % len(order)] for s in range(1, len(order) + 1)
-                 if poly.vectors[(j + s) % len(order)].magnitude > zero)  # fmt: skip
-    for pv, q, sign in ((before, first.tail, -1.0), (after, last.head, 1.0)):
-        if pv.name not in dt.run:
-            u = (pv.head - pv.tail).unit() * (sign * STUB_MM * sc.k)
-            sub.seg(q, q + u, "construction")
-            sub.label(q + u, names.get(pv.name, pv.name), height, clear=0.5)
+    for pv, a, b in _stubs(poly, dt, sc.k):
+        sub.seg(a, b, "construction")
+        sub.label(b, names.get(pv.name, pv.name), height, clear=0.5)
     nested = {n for x in dt.inner for n in x.run}
     for x in dt.inner:
         mark_detail(sub, poly, x)
     for n in dt.run:
         pv = poly[n]
-        if pv.magnitude <= zero:
+        if pv.magnitude <= _zero(poly):
             continue
         if n in nested:
             sub.seg(pv.tail, pv.head, "construction")
@@ -589,8 +599,9 @@ class Polygon(View):
     ``detail``: the last layer's vectors too short for the polygon's μ_F are drawn enlarged in
     lettered :attr:`details` in the same view, in the room the polygon leaves free or beside
     it (their μ_F a fixed share of the polygon's, stated in their captions; letters from
-    ``letters``); their room is reckoned at ``k_ref`` (default: the μ_F that draws the largest
-    vector at most :data:`POLY_MM` long), and they are planned again at the μ_F drawn. A
+    ``letters``); their room is reckoned at the μ_F of ``ref`` (default: the one that draws
+    the largest vector at most :data:`POLY_MM` long), within its room (w, h mm) where they
+    can, and they are planned again at the μ_F drawn, within the box drawn. A
     polygon along one line is drawn with its vectors side by side
     (:func:`draw_polygon`'s ``thin``)."""
 
@@ -603,7 +614,7 @@ class Polygon(View):
         label_height: float = 2.5,
         detail: bool = False,
         letters: Iterator[str] | None = None,
-        k_ref: float | None = None,
+        ref: tuple[float, tuple[float, float]] | None = None,
         **kw: Any,
     ) -> None:
         kw.setdefault("title", WORDS("force_polygon"))
@@ -629,8 +640,9 @@ class Polygon(View):
             # lettered, at the μ_F the layout chooses)
             big = max((pv.magnitude for pv in self.layers[-1][0].vectors), default=0.0)
             if big > 0.0:
-                k_ref = k_ref or nice_factor(big, POLY_MM, "F").k
-                self.details, self.thin, self._ext = self._with_details(k_ref, iter(_ANY))
+                k_ref, room = ref or (nice_factor(big, POLY_MM, "F").k, None)
+                within = None if room is None else (room[0] * k_ref, room[1] * k_ref)
+                self.details, self.thin, self._ext = self._with_details(k_ref, iter(_ANY), within)
 
     def _with_details(
         self, k: float, letters: Iterator[str], room: tuple[float, float] | None = None
@@ -641,8 +653,8 @@ class Polygon(View):
         details = plan_details(poly, k, letters)
         thin = len(self.layers) == 1 and is_thin(poly, k)
         x0, y0, x1, y1 = _bbox(q for pv in poly.vectors for q in (pv.tail, pv.head))
-        if thin:  # the room of the vectors side by side and their labels
-            grow = (len(poly.vectors) * OFFSET_MM / 2.0 + 2.0) * k
+        if thin:  # the room of the vectors side by side (their labels in the margin)
+            grow = (len(poly.vectors) - 1) * OFFSET_MM / 2.0 * k
             x0, y0, x1, y1 = x0 - grow, y0 - grow, x1 + grow, y1 + grow
         for poly2, _ in self.layers[:-1]:
             b = _bbox(q for pv in poly2.vectors for q in (pv.tail, pv.head))
