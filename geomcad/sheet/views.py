@@ -225,9 +225,9 @@ def draw_polygon(
     ``role``. The runs of ``details`` are drawn thin, circled and lettered (ESKD выносной
     элемент; :func:`draw_detail` draws them enlarged). ``thin``: the polygon lies along one
     line (two opposite reactions): its vectors are drawn side by side :data:`OFFSET_MM` apart,
-    joined by thin lines, as a textbook draws them. Never a dot: a vector outside every detail
-    is an arrow however short. Returns the names of the vectors left shorter than two
-    arrowheads."""
+    joined by thin lines, as a textbook draws them (two such: labelled "R₀₁ = −R₂₁"). Never
+    a dot: a vector outside every detail is an arrow however short. Returns the names of the
+    vectors left shorter than two arrowheads."""
     if found is None:
         known = {n for n, _ in poly.solved}
         found = known or ({poly.vectors[-1].name} if poly.vectors else set())
@@ -259,6 +259,14 @@ def draw_polygon(
         v.label((tail + head) * 0.5, text, height, prefer=prefer, clear=0.5)
     for dt in details:
         mark_detail(v, poly, dt)
+    if thin and len(drawn) == 2 and not in_detail:
+        # two forces in balance: the polygon closes on one line, and says so
+        a, b = ((names or {}).get(pv.name, pv.name) for pv in drawn)
+        big = max(drawn, key=lambda pv: pv.magnitude)
+        n = (big.head - big.tail).unit().perp()
+        far = n * (OFFSET_MM * 2.0 * v.scale.k)
+        v.label((big.tail + big.head) * 0.5 + far, f"{b} = −{a}", height, prefer=(n.x, n.y),
+                clear=0.5)  # fmt: skip
     v.dot(poly.pole)
     return short
 
