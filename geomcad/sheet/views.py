@@ -39,13 +39,7 @@ from geomcad.construction.recorder import Step
 from geomcad.forces import ForcePolygon, PlanVector
 from geomcad.geom import Vec
 from geomcad.kinematics.plan import Plan
-from geomcad.sheet.compose import (
-    Extent,
-    Placed,
-    View,
-    scale_text,
-    text_width,
-)
+from geomcad.sheet.compose import Extent, Placed, View, scale_text, text_width
 from geomcad.sheet.drawing import LINE_SPACING, SHORT_MM, Drawing, Viewport
 from geomcad.sheet.graph import Axis, Graph, nice_step
 from geomcad.sheet.lang import Words, current
