@@ -26,7 +26,7 @@ tables, orders and notes 3.5 mm high on A2 and A1, its views' titles 5 mm. The w
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from dataclasses import replace
 
 import numpy as np
@@ -77,7 +77,16 @@ from geomcad.sheet.loads import ForceScales, force, force_scales, moment
 from geomcad.sheet.plans import markup_of
 from geomcad.sheet.scale import Scale, fmt_column
 from geomcad.sheet.scheme import draw_scheme
-from geomcad.sheet.views import AxisSpec, Curve, Diagram, Polygon, Steps, Table, Text
+from geomcad.sheet.views import (
+    AxisSpec,
+    Curve,
+    Diagram,
+    Polygon,
+    Steps,
+    Table,
+    Text,
+    detail_letters,
+)
 from geomcad.structure import Mechanism
 from geomcad.structure.model import Link
 
@@ -117,7 +126,13 @@ def force_sheets(
     fmts = sheet_formats(lk)
     if a.forces is not None:
         P, forces, k = force_position(s)
+        # first the polygons alone (as large as the sheet draws them), then, on that format,
+        # with their details reckoned at the μ_F each got there: the details take the room
+        # the polygon leaves free where they can
         tree, z = fit(lambda h: _sheet2(s, P, forces, k, h), fmts)
+        refs = {pl.view.title: (pl.scale.k, pl.size) for pl in z.layout
+                if isinstance(pl.view, Polygon) and pl.scale}  # fmt: skip
+        tree, z = fit(lambda h: _sheet2(s, P, forces, k, h, refs), [z.fmt])
         d = z.start(_title(lk, WORDS("forces"), designation, no, count))
         compose(d, tree, layout=z.layout)
         main = [pl.scale for pl in z.layout if isinstance(pl.view, _Loaded)]
@@ -153,9 +168,12 @@ def _num(x: float, digits: int = 4, scale: float = 0.0) -> str:
 
 
 def _sheet2(
-    s: Solved, P: Position, f: Forces, k: int | None, h: float
-) -> tuple[Tree, dict[View, float]]:
-    """Sheet 2's tree, its tables and texts ``h`` high, and the scale its mechanism wants."""
+    s: Solved, P: Position, f: Forces, k: int | None, h: float,
+    refs: Mapping[str, tuple[float, tuple[float, float]]] | None = None,
+) -> tuple[Tree, dict[View, float]]:  # fmt: skip
+    """Sheet 2's tree, its tables and texts ``h`` high, and the scale its mechanism wants. The
+    force polygons are drawn with their details where ``refs`` gives their reference μ_F and
+    room (mm; by their titles), else alone (for a first arrangement)."""
     lk = s.linkage
     # the length scales from the geometry alone: never finer than the GOST scale that draws
     # the crank CRANK_MM long (a change of ω or of the loads rescales no drawing of links)
@@ -167,7 +185,10 @@ def _sheet2(
     bodies = [_FreeBody(lk, P, gf) for gf in f.groups]
     for b in bodies:
         b.least_k = k_l
-    # each group's polygons under the group cut out (the crank's under the crank)
+    # each group's polygons under the group cut out (the crank's under the crank); a
+    # polygon's vectors too short for its μ_F are drawn again, enlarged, in details at their
+    # own stated μ_F beside it in its view (one letter each on the sheet)
+    letters = detail_letters()
     per_group = [
         [
             Polygon(
@@ -175,6 +196,9 @@ def _sheet2(
                 title=_poly_title(gf, name),
                 margin=8.0,
                 names={pv.name: load_name(pv.name) for pv in poly.vectors},
+                detail=refs is not None,
+                letters=letters,
+                ref=(refs or {}).get(_poly_title(gf, name)),
             )
             for name, poly in gf.polygons
         ]

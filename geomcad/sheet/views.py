@@ -23,21 +23,31 @@ Every view's words come from the tables of :mod:`geomcad.sheet.lang`; numbers ar
 
 from __future__ import annotations
 
+import math
 import re
 import sys
-from collections.abc import Callable, Iterable, Mapping, Sequence
+from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass
 from typing import Any, Literal, Protocol
 
 import numpy as np
 import numpy.typing as npt
 
+from geomcad import tol
 from geomcad.construction import Construction
 from geomcad.construction.recorder import Step
-from geomcad.forces import ForcePolygon
+from geomcad.forces import ForcePolygon, PlanVector
 from geomcad.geom import Vec
 from geomcad.kinematics.plan import Plan
-from geomcad.sheet.compose import TITLE_GAP, TITLE_LEAD, Extent, Placed, View, text_width
+from geomcad.sheet.compose import (
+    TITLE_GAP,
+    TITLE_LEAD,
+    Extent,
+    Placed,
+    View,
+    scale_text,
+    text_width,
+)
 from geomcad.sheet.drawing import (
     LINE_SPACING,
     SHORT_MM,
@@ -48,8 +58,9 @@ from geomcad.sheet.drawing import (
 )
 from geomcad.sheet.graph import Axis, Graph, nice_step
 from geomcad.sheet.lang import Words, current
+from geomcad.sheet.model import Polyline
 from geomcad.sheet.plans import LINE_OVER_MM, markup_of, plan_lines
-from geomcad.sheet.scale import Scale, ScaleStyle, fmt_number
+from geomcad.sheet.scale import Scale, ScaleStyle, fmt_number, nice_factor
 from geomcad.sheet.scheme import Body, draw_scheme
 from geomcad.sheet.text import balanced, break_points, metrics, wrap, wrap_balanced
 from geomcad.structure import Mechanism
@@ -216,40 +227,403 @@ def draw_polygon(
     found: Iterable[str] | None = None,
     inward: Iterable[str] = (),
     height: float = 2.5,
+    details: Sequence[Detail] = (),
+    thin: bool = False,
 ) -> list[str]:
     """Draw ``poly`` through ``v`` at the viewport's μ_F: each vector head to tail, labelled
     beside its middle (``names`` maps a vector's name to label markup; default: the name),
     outside the polygon (inside for the names in ``inward``); the vectors ``found`` (default:
     the polygon's solved unknowns, or its closing vector) in the result role, the others in
-    ``role``; a vector shorter than two arrowheads on the paper is drawn as a point with its
-    label. Returns the names drawn as points (for a note), and marks the pole."""
+    ``role``. The runs of ``details`` are drawn thin, circled and lettered (ESKD выносной
+    элемент; :func:`draw_detail` draws them enlarged). ``thin``: the polygon lies along one
+    line (two opposite reactions): its vectors are drawn side by side :data:`OFFSET_MM` apart,
+    joined by thin lines, as a textbook draws them (two such: labelled "R₀₁ = −R₂₁"). Never
+    a dot: a vector outside every detail is an arrow however short. Returns the names of the
+    vectors left shorter than two arrowheads."""
     if found is None:
         known = {n for n, _ in poly.solved}
         found = known or ({poly.vectors[-1].name} if poly.vectors else set())
     found = set(found)
     inward = set(inward)
-    points: list[str] = []
-    for pv in poly.vectors:
-        text = (names or {}).get(pv.name, pv.name)
-        if v.mm(pv.magnitude) < SHORT_MM:
-            if v.mm(pv.magnitude) > 0.0 or pv.magnitude == 0.0:
-                v.dot(pv.tail)
-                v.label(pv.tail, text, height, clear=0.8)
-                points.append(pv.name)
+    in_detail = {n for dt in details for n in dt.run}
+    zero = _zero(poly)
+    shift = _shifts(v, poly, in_detail) if thin else {}
+    short: list[str] = []
+    drawn = [pv for pv in poly.vectors if pv.magnitude > zero]
+    for i, pv in enumerate(drawn):
+        s = shift.get(pv.name, Vec(0.0, 0.0))
+        nxt = drawn[(i + 1) % len(drawn)]
+        s2 = shift.get(nxt.name, Vec(0.0, 0.0))
+        if thin and (s - s2).norm > 0.0:  # the vectors side by side joined where they meet
+            v.seg(pv.head + s, nxt.tail + s2, "construction")
+        if pv.name in in_detail:
+            v.seg(pv.tail + s, pv.head + s, "construction")
             continue
-        v.arrow(pv.tail, pv.head, "result" if pv.name in found else role)
-        mid = (pv.tail + pv.head) * 0.5
-        v.label(mid, text, height, prefer=_outward(poly, pv.tail, pv.head, pv.name in inward),
+        if v.mm(pv.magnitude) < SHORT_MM:
+            short.append(pv.name)
+        tail, head = pv.tail + s, pv.head + s
+        v.arrow(tail, head, "result" if pv.name in found else role)
+        text = (names or {}).get(pv.name, pv.name)
+        if s.norm > 0.0:
+            prefer = (s.unit().x, s.unit().y)
+        else:
+            prefer = _outward(poly, pv.tail, pv.head, pv.name in inward)
+        v.label((tail + head) * 0.5, text, height, prefer=prefer, clear=0.5)
+    for dt in details:
+        mark_detail(v, poly, dt)
+    if thin and len(drawn) == 2 and not in_detail:
+        # two forces in balance: the polygon closes on one line, and says so
+        a, b = ((names or {}).get(pv.name, pv.name) for pv in drawn)
+        big = max(drawn, key=lambda pv: pv.magnitude)
+        n = (big.head - big.tail).unit().perp()
+        far = n * (OFFSET_MM * 2.0 * v.scale.k)
+        v.label((big.tail + big.head) * 0.5 + far, f"{b} = −{a}", height, prefer=(n.x, n.y),
                 clear=0.5)  # fmt: skip
     v.dot(poly.pole)
-    return points
+    return short
+
+
+def _zero(poly: ForcePolygon) -> float:
+    """A vector of a polygon under this magnitude is round-off of a zero one (not drawn)."""
+    return tol.DERIVED * max((pv.magnitude for pv in poly.vectors), default=0.0)
+
+
+def _shifts(v: Viewport, poly: ForcePolygon, skip: Iterable[str] = ()) -> dict[str, Vec]:
+    """The sideways shifts (model units) of a thin polygon's vectors: each next one
+    :data:`OFFSET_MM` further across the line of the longest, the set centred on it."""
+    skip = set(skip)
+    zero = _zero(poly)
+    vs = [pv for pv in poly.vectors if pv.magnitude > zero and pv.name not in skip]
+    if len(vs) < 2:
+        return {}
+    big = max(vs, key=lambda pv: pv.magnitude)
+    n = (big.head - big.tail).unit().perp()
+    step = OFFSET_MM * v.scale.k
+    return {pv.name: n * ((i - (len(vs) - 1) / 2.0) * step) for i, pv in enumerate(vs)}
+
+
+def is_thin(poly: ForcePolygon, k: float) -> bool:
+    """Whether the polygon, drawn at μ_F ``k``, lies within :data:`THIN_MM` of the line of its
+    longest vector (its vectors would be drawn over one another)."""
+    zero = _zero(poly)
+    vs = [pv for pv in poly.vectors if pv.magnitude > zero]
+    if len(vs) < 2:
+        return False
+    big = max(vs, key=lambda pv: pv.magnitude)
+    u = (big.head - big.tail).unit()
+    far = max(abs(u.cross(q - big.tail)) for pv in vs for q in (pv.tail, pv.head))
+    return far / k < THIN_MM
+
+
+def mark_detail(v: Viewport, poly: ForcePolygon, dt: Detail) -> None:
+    """Circle the run of ``dt`` (thin) and letter it on a short leader (ESKD выносной элемент)."""
+    pts = [v.p(q) for n in dt.run for q in (poly[n].tail, poly[n].head)]
+    cx = (min(q[0] for q in pts) + max(q[0] for q in pts)) / 2.0
+    cy = (min(q[1] for q in pts) + max(q[1] for q in pts)) / 2.0
+    r = max(DETAIL_CIRCLE_MM, *(math.hypot(q[0] - cx, q[1] - cy) + 1.5 for q in pts))
+    k = v.scale.k
+    v.circle(Vec(v.ox + (cx - v.at[0]) * k, v.oy - (cy - v.at[1]) * k), r * k, "construction")
+    edge = (cx + r * 0.7071, cy - r * 0.7071)
+    leader = (edge[0] + 3.0, edge[1] - 3.0)
+    v.sheet.add(Polyline((edge, leader), "construction"))
+    v.d.label(leader, dt.letter, 3.5, prefer=(1.0, -1.0), clear=0.5)
+
+
+#: The least radius (mm) of the thin circle that marks a polygon's detail.
+DETAIL_CIRCLE_MM = 3.0
+#: A polygon's largest vector is drawn at most this long at its reference μ_F (mm), at which
+#: the room of its details is reckoned for the layout.
+POLY_MM = 110.0
+#: A detail's shortest vector is drawn at least this long (mm) …
+DETAIL_MM = 8.0
+#: … and its longest at most this long, else its vectors still too short go to a further
+#: detail (nested).
+DETAIL_MAX_MM = 25.0
+#: A detail enlarges the view it is taken from at least this many times (a detail barely
+#: larger than its polygon is not worth its room).
+DETAIL_LEAST = 4.0
+#: The enlargements of a detail over its polygon: m × 10^n, m of 1, 2, 4 (the detail's μ_F is
+#: the largest factor 1, 2, 2.5, 4, 5 × 10^n at most the polygon's / m: m to 1.25 m times).
+ENLARGE = tuple(m * 10.0**n for n in range(9) for m in (1.0, 2.0, 4.0) if m * 10.0**n >= 4.0)
+#: The lines of the long vectors a detail joins are drawn this long (mm).
+STUB_MM = 4.0
+#: The room (mm) round a detail's drawing for its labels, and its caption's height.
+DETAIL_PAD_MM = 4.0
+DETAIL_CAPTION_H = 2.5
+#: The gap (mm) between a polygon and its details.
+DETAIL_GAP_MM = 4.0
+#: A thin polygon's vectors are drawn side by side this far apart (mm) …
+OFFSET_MM = 2.5
+#: … a polygon is thin when all of it lies within this (mm) of its longest vector's line.
+THIN_MM = 1.2
+
+
+def detail_letters() -> Iterator[str]:
+    """The letters of a sheet's details in the language drawn (ESKD: capitals, those that
+    read as digits or as other letters left out)."""
+    return iter(WORDS("detail_letters"))
+
+
+def short_runs(vectors: Sequence[PlanVector], limit: float, closed: bool = True) -> list[list[str]]:
+    """The runs (head to tail; round the polygon when ``closed``) of the vectors shorter than
+    ``limit`` (and longer than round-off of zero): each is drawn enlarged in one detail."""
+    vs = list(vectors)
+    zero = tol.DERIVED * max((pv.magnitude for pv in vs), default=0.0)
+    small = [zero < pv.magnitude < limit for pv in vs]
+    if not any(small):
+        return []
+    long = [not s and pv.magnitude > zero for s, pv in zip(small, vs, strict=True)]
+    start = long.index(True) if closed and any(long) else 0  # a run never wraps past a long one
+    runs: list[list[str]] = []
+    cur: list[str] = []
+    for i in range(len(vs)):
+        j = (start + i) % len(vs)
+        if small[j]:
+            cur.append(vs[j].name)
+        elif long[j] and cur:
+            runs.append(cur)
+            cur = []
+    if cur:
+        runs.append(cur)
+    return runs
+
+
+def nice_below(value_min: float, mm: float, q: Literal["F"] = "F") -> Scale:
+    """The largest factor 1, 2, 2.5, 4, 5 × 10^n at which ``value_min`` is at least ``mm``."""
+    raw = value_min / mm
+    e = math.floor(math.log10(raw))
+    for exp in (e, e - 1):
+        for m in (5.0, 4.0, 2.5, 2.0, 1.0):
+            k = m * 10.0**exp
+            if k <= raw * (1.0 + 1e-12):
+                return Scale(k, q)
+    return Scale(10.0 ** (e - 1), q)  # unreachable
+
+
+def detail_scale(k: float, m: float) -> Scale:
+    """The μ_F of a detail that enlarges a polygon drawn at ``k`` about ``m`` times: the
+    largest factor 1, 2, 2.5, 4, 5 × 10^n at most k/m."""
+    return nice_below(k / m, 1.0)
+
+
+def most_enlarged(m: float) -> float:
+    """The most a detail of enlargement ``m`` enlarges its polygon, whatever its μ_F."""
+    return max(x / detail_scale(x, m).k for x in (1.0, 2.0, 2.5, 4.0, 5.0))
+
+
+@dataclass
+class Detail:
+    """An enlarged detail of a force polygon (ESKD выносной элемент): its ``run`` of short
+    vectors head to tail at about ``m`` times the polygon's μ_F (:func:`detail_scale`, stated
+    in its caption with its ``letter``), with the lines of the long vectors it joins; its
+    vectors still too short there in ``inner`` details. ``slot``: where it is drawn, in the
+    polygon's units (its caption's room ``cap`` at the top)."""
+
+    run: tuple[str, ...]
+    m: float
+    letter: str
+    inner: list[Detail]
+    box: Extent
+    slot: Extent = (0.0, 0.0, 0.0, 0.0)
+    cap: float = 0.0
+
+    def all(self) -> list[Detail]:
+        """This detail and its further ones, in the order of their letters."""
+        return [self, *(x for dt in self.inner for x in dt.all())]
+
+
+def plan_details(poly: ForcePolygon, k_ref: float, letters: Iterator[str]) -> list[Detail]:
+    """The details of ``poly`` drawn at μ_F ``k_ref``: one per run of its vectors shorter than
+    two arrowheads there, each at the least enlargement (:data:`ENLARGE`, at least
+    :data:`DETAIL_LEAST` times) that draws its shortest :data:`DETAIL_MM` long, or, where its
+    longest would then exceed :data:`DETAIL_MAX_MM`, at the most that keeps the longest within
+    it and its own short vectors in further details."""
+    return [
+        _plan(poly, run, k_ref, 1.0, letters) for run in short_runs(poly.vectors, SHORT_MM * k_ref)
+    ]
+
+
+def _plan(
+    poly: ForcePolygon, run: Sequence[str], k_ref: float, parent: float, letters: Iterator[str]
+) -> Detail:
+    letter = next(letters)
+    mags = [poly[n].magnitude for n in run]
+    lo, hi = min(mags), max(mags)
+    cands = [m for m in ENLARGE if m >= DETAIL_LEAST * parent * (1.0 - tol.DERIVED)]
+    m = next((m for m in cands if lo * m / k_ref >= DETAIL_MM), cands[-1])
+    inner: list[Detail] = []
+    if hi * most_enlarged(m) / k_ref > DETAIL_MAX_MM:
+        fit = [x for x in cands if hi * most_enlarged(x) / k_ref <= DETAIL_MAX_MM]
+        m = fit[-1] if fit else cands[0]
+        vs = [poly[n] for n in run]
+        inner = [_plan(poly, r, k_ref, m, letters)
+                 for r in short_runs(vs, SHORT_MM * k_ref / m, closed=False)]  # fmt: skip
+    box = _bbox(q for n in run for q in (poly[n].tail, poly[n].head))
+    return Detail(tuple(run), m, letter, inner, box)
+
+
+def place_details(
+    poly: ForcePolygon,
+    details: Sequence[Detail],
+    k: float,
+    ext: Extent,
+    room: tuple[float, float] | None = None,
+) -> Extent:
+    """Give each detail its slot beside the polygon's extent ``ext`` (model units; their room
+    in mm at the polygon's μ_F ``k``), one after another: in a corner of the polygon's box
+    clear of its sides, or beside, below or above the polygon or a detail placed before; the
+    spot that keeps the whole within ``room`` (model units: the view's box), then smallest.
+    Returns the extent of the polygon with its details."""
+    flat = [x for dt in details for x in dt.all()]
+    if not flat:
+        return ext
+    pad, cap = DETAIL_PAD_MM * k, (DETAIL_CAPTION_H * 1.5 + 1.5) * k
+    sizes = []
+    for dt in flat:
+        kd = detail_scale(k, dt.m).k
+        pts = [q for n in dt.run for q in (poly[n].tail, poly[n].head)]
+        pts += [b for _, _, b in _stubs(poly, dt, kd)]
+        dt.box = _bbox(pts)
+        bw, bh = (dt.box[2] - dt.box[0]) * k / kd, (dt.box[3] - dt.box[1]) * k / kd
+        w = max(bw + 2.0 * pad,
+                text_width(_detail_caption(dt, Scale(kd, "F")), DETAIL_CAPTION_H) * k)  # fmt: skip
+        sizes.append((w, bh + 2.0 * pad + cap))
+        dt.cap = cap
+    gap = DETAIL_GAP_MM * k
+    x0, y0, x1, y1 = ext
+    segs = [(pv.tail, pv.head) for pv in poly.vectors]
+    placed: list[Extent] = []
+    union = ext
+    for dt, (w, h) in zip(flat, sizes, strict=True):
+        best: tuple[float, float, float, Extent] | None = None
+        anchors = [ext, *placed]
+        spots = [(x0, y1 - h), (x1 - w, y1 - h), (x0, y0), (x1 - w, y0)]  # the box's corners
+        # beside the whole so far (always clear of it)
+        spots += [(union[2] + 1.5 * gap, union[3] - h), (union[0], union[1] - 1.5 * gap - h)]
+        for ax0, ay0, ax1, ay1 in anchors:
+            spots += [
+                (ax1 + gap, ay1 - h), (ax1 + gap, ay0), (ax0 - gap - w, ay1 - h),
+                (ax0 - gap - w, ay0), (ax0, ay0 - gap - h), (ax1 - w, ay0 - gap - h),
+                (ax0, ay1 + gap), (ax1 - w, ay1 + gap),
+            ]  # fmt: skip
+        for bx, by in spots:
+            slot = (bx, by, bx + w, by + h)
+            if any(_crosses(a, b, slot, gap) for a, b in segs):
+                continue
+            if any(_overlap(slot, q, gap) for q in placed):
+                continue
+            u = (min(union[0], slot[0]), min(union[1], slot[1]),
+                 max(union[2], slot[2]), max(union[3], slot[3]))  # fmt: skip
+            uw, uh = u[2] - u[0], u[3] - u[1]
+            over = 0.0 if room is None else max(uw - room[0], 0.0) + max(uh - room[1], 0.0)
+            key = (over, uw * uh, max(uw, uh))
+            if best is None or key < best[:3]:
+                best = (*key, slot)
+        assert best is not None  # a spot beside the whole is always free
+        dt.slot = best[3]
+        placed.append(best[3])
+        union = (min(union[0], dt.slot[0]), min(union[1], dt.slot[1]),
+                 max(union[2], dt.slot[2]), max(union[3], dt.slot[3]))  # fmt: skip
+    return union
+
+
+def _overlap(a: Extent, b: Extent, gap: float) -> bool:
+    """Whether two boxes come closer than ``gap``."""
+    return a[0] < b[2] + gap and b[0] < a[2] + gap and a[1] < b[3] + gap and b[1] < a[3] + gap
+
+
+def _crosses(a: Vec, b: Vec, box: Extent, clear: float) -> bool:
+    """Whether segment ab comes within ``clear`` of the box (Liang–Barsky on the grown box)."""
+    x0, y0, x1, y1 = box[0] - clear, box[1] - clear, box[2] + clear, box[3] + clear
+    t0, t1 = 0.0, 1.0
+    d = b - a
+    for p, q in ((-d.x, a.x - x0), (d.x, x1 - a.x), (-d.y, a.y - y0), (d.y, y1 - a.y)):
+        if p == 0.0:
+            if q < 0.0:
+                return False
+        else:
+            t = q / p
+            if p < 0.0:
+                t0 = max(t0, t)
+            else:
+                t1 = min(t1, t)
+            if t0 > t1:
+                return False
+    return True
+
+
+def _detail_caption(dt: Detail, sc: Scale) -> str:
+    return f"{dt.letter} ({scale_text(sc)})"
+
+
+def _stubs(poly: ForcePolygon, dt: Detail, kd: float) -> list[tuple[PlanVector, Vec, Vec]]:
+    """The lines (vector, from, to; :data:`STUB_MM` long at the detail's μ_F ``kd``) of the
+    long vectors a detail's run joins, before its first and after its last."""
+    order = list(poly.names)
+    zero = _zero(poly)
+    i, j = order.index(dt.run[0]), order.index(dt.run[-1])
+    n = len(order)
+    before = next(poly.vectors[(i - s) % n] for s in range(1, n + 1)
+                  if poly.vectors[(i - s) % n].magnitude > zero)  # fmt: skip
+    after = next(poly.vectors[(j + s) % n] for s in range(1, n + 1)
+                 if poly.vectors[(j + s) % n].magnitude > zero)  # fmt: skip
+    out = []
+    for pv, q, sign in ((before, poly[dt.run[0]].tail, -1.0), (after, poly[dt.run[-1]].head, 1.0)):
+        if pv.name not in dt.run:
+            out.append((pv, q, q + (pv.head - pv.tail).unit() * (sign * STUB_MM * kd)))
+    return out
+
+
+def draw_detail(
+    v: Viewport,
+    poly: ForcePolygon,
+    dt: Detail,
+    names: Mapping[str, str] | None = None,
+    found: Iterable[str] = (),
+    height: float = 2.5,
+) -> None:
+    """Draw detail ``dt`` of ``poly`` in its slot of the polygon's viewport ``v``: its run at
+    its μ_F (:func:`detail_scale`), captioned with its letter and μ_F, the lines of the long
+    vectors it joins, its inner details' runs circled and lettered."""
+    sc = detail_scale(v.scale.k, dt.m)
+    sx0, sy0, sx1, sy1 = dt.slot
+    names = names or {}
+    found = set(found)
+    top = v.p((sx0, sy1))
+    v.d.text(_detail_caption(dt, sc), (top[0], top[1] + DETAIL_CAPTION_H), DETAIL_CAPTION_H)
+    at = v.p(((sx0 + sx1) / 2.0, (sy0 + sy1 - dt.cap) / 2.0))
+    bx0, by0, bx1, by1 = dt.box
+    sub = Viewport(v.d, sc, (bx0 + bx1) / 2.0, (by0 + by1) / 2.0, at)
+    for pv, a, b in _stubs(poly, dt, sc.k):
+        sub.seg(a, b, "construction")
+        sub.label(b, names.get(pv.name, pv.name), height, clear=0.5)
+    nested = {n for x in dt.inner for n in x.run}
+    for x in dt.inner:
+        mark_detail(sub, poly, x)
+    for n in dt.run:
+        pv = poly[n]
+        if pv.magnitude <= _zero(poly):
+            continue
+        if n in nested:
+            sub.seg(pv.tail, pv.head, "construction")
+            continue
+        sub.arrow(pv.tail, pv.head, "result" if n in found else "vector")
+        sub.label((pv.tail + pv.head) * 0.5, names.get(n, n), height,
+                  prefer=_outward(poly, pv.tail, pv.head, False), clear=0.5)  # fmt: skip
 
 
 class Polygon(View):
     """Force polygons at one μ_F (a factor 1, 2, 2.5, 4, 5 × 10^n) in one viewport: the
     first in ``layers`` drawn first (a frictionless polygon dashed under the one with friction).
     Each layer is (polygon, role); ``names``, ``found``, ``inward`` as :func:`draw_polygon`.
-    ``readable`` defaults to the shortest vector the caller must read (0: none)."""
+    ``detail``: the last layer's vectors too short for the polygon's μ_F are drawn enlarged in
+    lettered :attr:`details` in the same view, in the room the polygon leaves free or beside
+    it (their μ_F a fixed share of the polygon's, stated in their captions; letters from
+    ``letters``); their room is reckoned at the μ_F of ``ref`` (default: the one that draws
+    the largest vector at most :data:`POLY_MM` long), within its room (w, h mm) where they
+    can, and they are planned again at the μ_F drawn, within the box drawn. A
+    polygon along one line is drawn with its vectors side by side
+    (:func:`draw_polygon`'s ``thin``)."""
 
     def __init__(
         self,
@@ -258,6 +632,9 @@ class Polygon(View):
         found: Iterable[str] | None = None,
         inward: Iterable[str] = (),
         label_height: float = 2.5,
+        detail: bool = False,
+        letters: Iterator[str] | None = None,
+        ref: tuple[float, tuple[float, float]] | None = None,
         **kw: Any,
     ) -> None:
         kw.setdefault("title", WORDS("force_polygon"))
@@ -271,22 +648,80 @@ class Polygon(View):
         self.inward = tuple(inward)
         self.label_height = label_height
         self.points: list[str] = []
+        self.details: list[Detail] = []
+        self.thin = False
         self._ext = _bbox(
             q for poly, _ in self.layers for pv in poly.vectors for q in (pv.tail, pv.head)
         )
+        self.detail = detail and bool(self.layers)
+        self.letters = letters
+        if self.detail:
+            # the room of the details as at the reference μ_F (they are planned again, and
+            # lettered, at the μ_F the layout chooses)
+            big = max((pv.magnitude for pv in self.layers[-1][0].vectors), default=0.0)
+            if big > 0.0:
+                k_ref, room = ref or (nice_factor(big, POLY_MM, "F").k, None)
+                within = None if room is None else (room[0] * k_ref, room[1] * k_ref)
+                self.details, self.thin, self._ext = self._with_details(k_ref, iter(_ANY), within)
+
+    def _with_details(
+        self, k: float, letters: Iterator[str], room: tuple[float, float] | None = None
+    ) -> tuple[list[Detail], bool, Extent]:
+        """The details, thinness and extent (with the details' slots) of the polygon at
+        μ_F ``k``."""
+        poly = self.layers[-1][0]
+        details = plan_details(poly, k, letters)
+        thin = len(self.layers) == 1 and is_thin(poly, k)
+        x0, y0, x1, y1 = _bbox(q for pv in poly.vectors for q in (pv.tail, pv.head))
+        if thin:  # the room of the vectors side by side (their labels in the margin)
+            grow = (len(poly.vectors) - 1) * OFFSET_MM / 2.0 * k
+            x0, y0, x1, y1 = x0 - grow, y0 - grow, x1 + grow, y1 + grow
+        for poly2, _ in self.layers[:-1]:
+            b = _bbox(q for pv in poly2.vectors for q in (pv.tail, pv.head))
+            x0, y0, x1, y1 = min(x0, b[0]), min(y0, b[1]), max(x1, b[2]), max(y1, b[3])
+        return details, thin, place_details(poly, details, k, (x0, y0, x1, y1), room)
 
     def extent(self) -> Extent | None:
         return self._ext
 
     def lengths(self) -> Sequence[float]:
-        return [pv.magnitude for poly, _ in self.layers for pv in poly.vectors]
+        out = []
+        inset = {n for dt in self.details for n in dt.run}
+        for poly, _ in self.layers:
+            out += [pv.magnitude for pv in poly.vectors if pv.name not in inset]
+        for dt in (x for d0 in self.details for x in d0.all()):
+            nested = {n for x in dt.inner for n in x.run}
+            out += [self.layers[-1][0][n].magnitude * dt.m for n in dt.run if n not in nested]
+        return out
 
     def draw(self, d: Drawing, at: Placed) -> None:
-        assert at.viewport is not None
-        for poly, role in self.layers:
+        v = at.viewport
+        assert v is not None
+        if self.detail:
+            # the details planned and placed again for the μ_F drawn (their run, their room
+            # in mm), lettered in the order drawn, the whole centred in the box
+            letters = self.letters if self.letters is not None else detail_letters()
+            x0, y0, x1, y1 = at.inner
+            room = ((x1 - x0) * v.scale.k, (y1 - y0) * v.scale.k)
+            self.details, self.thin, ext = self._with_details(v.scale.k, letters, room)
+            centre = ((ext[0] + ext[2]) / 2.0, (ext[1] + ext[3]) / 2.0)
+            v = Viewport(d, v.scale, centre[0], centre[1], v.at)
+            at.viewport = v
+        for i, (poly, role) in enumerate(self.layers):
+            last = i == len(self.layers) - 1
             self.points += draw_polygon(
-                at.viewport, poly, self.names, role, self.found, self.inward, self.label_height
-            )
+                v, poly, self.names, role, self.found, self.inward, self.label_height,
+                self.details if last else (), self.thin and last,
+            )  # fmt: skip
+        if self.details:
+            poly = self.layers[-1][0]
+            found = self.found if self.found is not None else {n for n, _ in poly.solved}
+            for dt in (x for d0 in self.details for x in d0.all()):
+                draw_detail(v, poly, dt, self.names, found, self.label_height)
+
+
+#: The letters of the details while their room is reckoned (those drawn come from the sheet's).
+_ANY = "W" * 99
 
 
 # --- diagrams -------------------------------------------------------------------------------------
