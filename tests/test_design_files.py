@@ -9,6 +9,7 @@ import functools
 import math
 from fractions import Fraction
 from pathlib import Path
+from types import SimpleNamespace
 
 import numpy as np
 import pytest
@@ -526,7 +527,8 @@ def test_cam_profile_shows_omega_and_the_inversion_and_names_the_pivots(name: st
     sol = solution(name)
     des = sol.data
     v = Recorder()
-    sheets_cam._profile(v, des)  # type: ignore[arg-type]
+    view = sheets_cam._profile(des)  # the sheet's view of the profile, drawn through v
+    view.draw(None, SimpleNamespace(viewport=v))  # type: ignore[arg-type]
     labels = [str(a[1]) for n, a in v.calls if n == "label"]
     arrows = [a for n, a in v.calls if n == "arrow"]
     senses = []
