@@ -414,8 +414,7 @@ def _planetary_tree(des: GearsDesign) -> tuple[Tree, Figure]:
     # points o, a, b, c at the heights of O, A, B, C, its axis beside the scheme
     x_plan = span * 1.08 + 0.75 * top
     # where each point of the radial line lies on the scheme (O at the shafts' end)
-    c1, c2 = span * 0.3, span * 0.55
-    held_c = c1 if pp.scheme == "A" else c2
+    c1, _, _, held_c = _columns(pp.scheme, span)
     spots = {"O": Vec(span, 0.0), "A": Vec(c1, by["A"]), "B": Vec(c1, by["B"]),
              "C": Vec(held_c, by["C"])}  # fmt: skip
 
@@ -556,6 +555,13 @@ def _plan(
                (left, y_s + 17.0), 2.5)  # fmt: skip
 
 
+def _columns(scheme: str, span: float) -> tuple[float, float, float, float]:
+    """Where the scheme's gears stand along the central axis: gear 1 with the first planet,
+    the second planet, the carrier's arm, and the held gear (model abscissae)."""
+    c1, c2 = span * 0.3, span * 0.55
+    return c1, c2, span * 0.85, c1 if scheme == "A" else c2
+
+
 def _scheme(
     v: Viewport, scheme: str, z: tuple[int, ...], m: float, by: dict[str, float], span: float
 ) -> None:
@@ -567,7 +573,7 @@ def _scheme(
     k = v.scale
     b = k.model(6.0)
     aw = by["B"]
-    c1, c2, cH = span * 0.3, span * 0.55, span * 0.85
+    c1, c2, cH, held_c = _columns(scheme, span)
     v.seg(Vec(-k.model(10.0), 0.0), Vec(span + k.model(10.0), 0.0), "centre")
     r1 = m * z[0] / 2.0
     # gear 1 on the input (or output) shaft from the left
@@ -599,7 +605,6 @@ def _scheme(
     v.seg(Vec(cH, 0.0), Vec(span + k.model(5.0), 0.0), "link")
     v.label(Vec(cH, aw * 0.5), "H", prefer=(1.0, 0.0))
     # the held gear, on the frame
-    held_c = c1 if scheme == "A" else c2
     r_h = m * z[-1] / 2.0
     name = "3" if scheme == "A" else "4"
     if scheme == "C":
@@ -619,13 +624,3 @@ def _scheme(
     for q, x in (("A", c1), ("B", c1), ("C", held_c)):
         v.dot(Vec(x, by[q]), "point")
         v.label(Vec(x, by[q]), q, height=2.5, prefer=(-1.0, 0.3))
-
-
-def sheet_y_of(vp: Any, y: float) -> float:
-    return float(vp.p(Vec(0.0, y))[1])
-
-
-def _line(a: tuple[float, float], b: tuple[float, float], role: str = "dimension") -> Any:
-    from geomcad.sheet import Polyline
-
-    return Polyline((a, b), role)
