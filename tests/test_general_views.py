@@ -167,3 +167,19 @@ def test_a_design_files_profile_is_the_inversion_view(name: str) -> None:
     assert {"ω", "".join(r.text for r in parse("−ω"))} <= texts  # the minus as the font sets it
     pivots = {f"A{i}" for i in range(n)}
     assert (pivots <= texts) == (des.spec.motion == "rocking")
+
+
+def test_composed_names_the_sheet_from_its_words_and_scale() -> None:
+    """form.composed: the tree composed under the title block the sheet's words name, with the
+    main view's scale in Масштаб."""
+    from geomcad.sheet.compose import Spacer
+    from geomcad.sheet.form import composed
+    from geomcad.sheet.lang import Words
+
+    words = Words("geomcad_constructions", "sheets_2013_3")
+    with language("en"):
+        sheet = composed("A3", Column(Spacer((40.0, 30.0))), words, "1:2")
+        title, designation = words("tb_title"), words("designation")
+    assert sheet.format == "A3" and sheet.lang == "en" and sheet.title == title
+    assert sheet.block is not None
+    assert (sheet.block.designation, sheet.block.scale) == (designation, "1:2")
