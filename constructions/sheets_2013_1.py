@@ -17,7 +17,7 @@ import math
 from typing import TYPE_CHECKING
 
 from geomcad.geom import Line, Vec
-from geomcad.sheet import Scale, Sheet, TitleBlock, Viewport, start
+from geomcad.sheet import Scale, Sheet, Viewport
 from geomcad.sheet import views as V
 from geomcad.sheet.assur import group_schemes, groups_table, pairs_table
 from geomcad.sheet.compose import (
@@ -28,8 +28,8 @@ from geomcad.sheet.compose import (
     Row,
     View,
     arrange,
-    compose,
 )
+from geomcad.sheet.form import composed
 from geomcad.sheet.lang import Words, per_language
 from geomcad.sheet.scheme import Body
 from geomcad.sheet.views import num
@@ -208,10 +208,7 @@ def sheets(sol: Solution[Geometry]) -> list[tuple[str, Sheet]]:
     got = scales(sol)  # this layout's (in the language being drawn), which compose() repeats
     ks, kp = Scale(got["l"], "l"), Scale(got["l_pos"], "l")
     ratio = ks.ratio_text() + ("" if kp.k == ks.k else f"; {kp.ratio_text()}")
-    tb = TitleBlock(title=WORDS("tb_title"), designation=WORDS("designation"), scale=ratio)
-    d = start("A2", tb)
-    compose(d, _Views(sol).tree)
-    return [("", d.finish())]
+    return [("", composed("A2", _Views(sol).tree, WORDS, ratio))]
 
 
 # -- the schemes ------------------------------------------------------------------------------

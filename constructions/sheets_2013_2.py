@@ -25,7 +25,7 @@ import numpy as np
 
 from geomcad import tol
 from geomcad.problem import ResultSpec
-from geomcad.sheet import Scale, Sheet, TitleBlock, start
+from geomcad.sheet import Scale, Sheet
 from geomcad.sheet import views as V
 from geomcad.sheet.cams import CamAt, Inversion, label_step
 from geomcad.sheet.compose import (
@@ -37,9 +37,9 @@ from geomcad.sheet.compose import (
     Spacer,
     View,
     arrange,
-    compose,
 )
 from geomcad.sheet.drawing import DOT_R
+from geomcad.sheet.form import composed
 from geomcad.sheet.graph import Graph
 from geomcad.sheet.lang import Words, per_language
 from geomcad.sheet.text import wrap
@@ -128,10 +128,7 @@ def scales(sol: Solution[Geometry]) -> dict[str, float]:
 def sheets(sol: Solution[Geometry]) -> list[tuple[str, Sheet]]:
     """The main sheet of 2013-2."""
     k = Scale(scales(sol)["l"], "l")  # this layout's (in the language being drawn)
-    tb = TitleBlock(title=WORDS("tb_title"), designation=WORDS("designation"), scale=k.ratio_text())
-    d = start("A2", tb)
-    compose(d, _Views(sol).tree)
-    return [("", d.finish())]
+    return [("", composed("A2", _Views(sol).tree, WORDS, k.ratio_text()))]
 
 
 # -- the law S(φ) ----------------------------------------------------------------------------------

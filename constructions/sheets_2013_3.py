@@ -18,7 +18,7 @@ import math
 from typing import TYPE_CHECKING
 
 from geomcad.geom import Vec
-from geomcad.sheet import Scale, Sheet, TitleBlock, Viewport, start
+from geomcad.sheet import Scale, Sheet, Viewport
 from geomcad.sheet import views as V
 from geomcad.sheet.compose import (
     Column,
@@ -27,8 +27,8 @@ from geomcad.sheet.compose import (
     Spacer,
     Tree,
     arrange,
-    compose,
 )
+from geomcad.sheet.form import composed
 from geomcad.sheet.lang import Words, per_language
 from geomcad.sheet.scheme import Body
 from geomcad.sheet.views import num
@@ -99,10 +99,7 @@ def sheets(sol: Solution[Geometry]) -> list[tuple[str, Sheet]]:
     got = scales(sol)  # this layout's (in the language being drawn), which compose() repeats
     tree, _scheme, _plan = _views(sol, Scale(got["v"], "v"))
     k = Scale(got["l"], "l")
-    tb = TitleBlock(title=WORDS("tb_title"), designation=WORDS("designation"), scale=k.ratio_text())
-    d = start("A3", tb)
-    compose(d, tree)
-    return [("", d.finish())]
+    return [("", composed("A3", tree, WORDS, k.ratio_text()))]
 
 
 #: The mechanism's pairs named by the scheme (one name per point; A and C are named beside

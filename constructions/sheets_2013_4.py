@@ -24,11 +24,10 @@ from geomcad.kinematics.gears import SpurGear
 from geomcad.sheet import (
     Scale,
     Sheet,
-    TitleBlock,
-    start,
 )
 from geomcad.sheet import views as V
-from geomcad.sheet.compose import Column, Field, Row, Spacer, Tree, arrange, compose
+from geomcad.sheet.compose import Column, Field, Row, Spacer, Tree, arrange
+from geomcad.sheet.form import composed
 from geomcad.sheet.lang import Words, per_language
 from geomcad.sheet.overline import overline_marks
 from geomcad.sheet.teeth import Caliper, ChordInset, CutTooth
@@ -92,11 +91,8 @@ def scales(sol: Solution[Geometry]) -> dict[str, float]:
 def sheets(sol: Solution[Geometry]) -> list[tuple[str, Sheet]]:
     """The main sheet of 2013-4."""
     k = Scale(scales(sol)["l"], "l")  # this layout's (in the language being drawn)
-    tb = TitleBlock(title=WORDS("tb_title"), designation=WORDS("designation"), scale=k.ratio_text())
-    d = start("A3", tb)
     tree, _main = _views(sol)
-    compose(d, tree)
-    sheet = d.finish()
+    sheet = composed("A3", tree, WORDS, k.ratio_text())
     overline_marks(sheet)
     return [("", sheet)]
 

@@ -29,9 +29,7 @@ from geomcad.geom import Vec
 from geomcad.sheet import (
     Scale,
     Sheet,
-    TitleBlock,
     Viewport,
-    start,
 )
 from geomcad.sheet.views import factor, num
 
@@ -54,11 +52,11 @@ from geomcad.sheet.compose import (
     Spacer,
     View,
     arrange,
-    compose,
 )
 from geomcad.sheet.drawing import SHORT_MM
+from geomcad.sheet.form import composed
 from geomcad.sheet.gearing import gear_web, ground_line, ring_gear, shaft_bearing
-from geomcad.sheet.lang import Words, current
+from geomcad.sheet.lang import Words
 from geomcad.sheet.scale import gost_length_scale, nice_factor
 from geomcad.sheet.trains import AngleDiagram, linear_velocities, scaled_rays
 
@@ -112,15 +110,7 @@ def sheets(sol: Solution[Geometry]) -> list[tuple[str, Sheet]]:
     """The main sheet of 2013-5."""
     tree, lay, k_l, _, _ = _arranged(sol)
     k = Scale(k_l, "l")
-    tb = TitleBlock(
-        title=WORDS("tb_title"),
-        designation=WORDS("designation"),
-        scale=k.ratio_text(),
-        lang=current(),
-    )
-    d = start("A3", tb)
-    compose(d, tree, layout=lay)
-    return [("", d.finish())]
+    return [("", composed("A3", tree, WORDS, k.ratio_text(), lay))]
 
 
 def _build_box(geo: Geometry, k_l: float, k_v: float) -> Extent:

@@ -201,3 +201,27 @@ def test_plan_fits_its_field_and_vectors_end_on_points() -> None:
     assert (y1 - y0) / kv <= iy1 - iy0 + 1e-9
     assert sol.sheets()  # draws without error for a variant
     assert Vec(0, 0) == vp["p"]
+
+
+@pytest.mark.parametrize("v_A, M", [(1.0, 10.0), (-1.0, -10.0), (-1.0, 10.0), (1.0, -10.0)])
+@pytest.mark.parametrize("lang", ["ru", "en"])
+def test_the_moment_and_omega_are_named_by_their_arcs(v_A: float, M: float, lang: str) -> None:
+    """Whatever the signs of v_A and M (the variant v_A = −1, M = −10, α = 45° among them), M is
+    named at O2 and ω3 at O1: each label within 3 mm of its arc's middle, over no other text."""
+    import shapely
+    from geomcad_constructions.sheets_2013_3 import sheets
+
+    from geomcad.sheet.lang import language
+    from geomcad.sheet.model import TextItem
+    from geomcad.sheet.placer import text_outline
+
+    sol = geomcad.solve(PID, v_A=v_A, M=M, alpha_deg=45.0)
+    with language(lang):
+        sheet = sheets(sol)[0][1]
+    texts = [it for it in sheet.items if isinstance(it, TextItem)]
+    for name in ("M", "ω3"):
+        (item, anchor), *more = [(it, p) for it, p in sheet.anchors if it.text == name]
+        assert not more
+        box = text_outline(item)
+        assert box.distance(shapely.Point(anchor)) <= 3.0
+        assert not [t.text for t in texts if t is not item and text_outline(t).overlaps(box)]

@@ -9,6 +9,7 @@ import functools
 import math
 from fractions import Fraction
 from pathlib import Path
+from types import SimpleNamespace
 
 import numpy as np
 import pytest
@@ -473,8 +474,12 @@ def test_every_design_file_is_its_own_document() -> None:
 
 def test_planetary_plan_is_projected_from_the_scheme() -> None:
     """Smirnov's plan in the scheme's viewport: o, a, b, c at the heights of O, A, B, C, each
-    link's velocity line named, the ray diagram's H and μ_ω written."""
+    level carried across from its point on the scheme, each link's velocity line named, the
+    ray diagram's H and μ_ω written (μ_ω a round factor)."""
     from geomcad.files import gears_sheets as sg
+    from geomcad.geom import Vec
+    from geomcad.sheet import TitleBlock, start
+    from geomcad.sheet.model import Polyline, TextItem
 
     sol = solution("planetary")
     des = sol.data
@@ -482,32 +487,24 @@ def test_planetary_plan_is_projected_from_the_scheme() -> None:
     pts, link, pt = sg._plan_points(pp.scheme, des.candidates[0].z, pp.m)
     by = {q.name: q.y for q in pts}
     k = Scale(0.002, "l")
-    labels: list[tuple[tuple[float, float], str]] = []
-    texts: list[str] = []
-
-    class D:
-        sheet = type("S", (), {"add": staticmethod(lambda item: None)})()
-
-        def label(self, at: tuple[float, float], text: str, *a: object, **kw: object) -> None:
-            labels.append((at, text))
-
-        def text(self, text: str, *a: object, **kw: object) -> None:
-            texts.append(text)
-
-    class V:
-        d = D()
-        scale = k
-
-        def p(self, q: object) -> tuple[float, float]:
-            return (100.0 + k.mm(q.x), 200.0 - k.mm(q.y))  # type: ignore[attr-defined]
-
+    d = start("A3", TitleBlock(title="t", designation="d"))
+    v = d.viewport(k, (0.0, 0.0), (60.0, 150.0))
+    spots = {q.name: Vec(0.1 + 0.01 * i, q.y) for i, q in enumerate(pts)}
     top = 0.2
-    sg._plan(V(), pp, pts, link, pt, by, (0.6 * top, top), 0.5)  # type: ignore[arg-type]
-    at = {t: xy for xy, t in labels}
+    sg._plan(v, pp, pts, link, pt, by, (0.6 * top, top), 0.5, spots)
+    sheet = d.finish()
+    at = {it.text: xy for it, xy in sheet.anchors}
     for name, y in by.items():
-        assert at[name.lower()][1] == pytest.approx(200.0 - k.mm(y))
+        assert at[name.lower()][1] == pytest.approx(v.p(Vec(0.0, y))[1])
+        level = v.p(spots[name])
+        assert any(
+            isinstance(it, Polyline) and it.points[0] == pytest.approx(level) for it in sheet.items
+        )
     assert {"1", "2", "H"} <= set(at)
-    assert any("μ_ω" in t and "H = " in t for t in texts)
+    texts = [it.text for it in sheet.items if isinstance(it, TextItem)]
+    factor = next(t for t in texts if "μω" in t and "H = " in t)
+    mu = float(factor.rsplit("=", 1)[1].split()[0].replace(",", "."))
+    assert f"{mu:.1e}"[0] in "1245"  # μ_ω = m × 10^n, m one of 1, 2, 2.5, 4, 5
 
 
 @pytest.mark.parametrize("name", ["cam-rocking-roller", "cam-translating-roller"])
@@ -526,7 +523,8 @@ def test_cam_profile_shows_omega_and_the_inversion_and_names_the_pivots(name: st
     sol = solution(name)
     des = sol.data
     v = Recorder()
-    sheets_cam._profile(v, des)  # type: ignore[arg-type]
+    view = sheets_cam._profile(des)  # the sheet's view of the profile, drawn through v
+    view.draw(None, SimpleNamespace(viewport=v))  # type: ignore[arg-type]
     labels = [str(a[1]) for n, a in v.calls if n == "label"]
     arrows = [a for n, a in v.calls if n == "arrow"]
     senses = []

@@ -19,6 +19,7 @@ from geomcad.sheet.lang import language
 from geomcad.sheet.model import Item, Polyline, TextItem
 from geomcad.sheet.overline import MACRON, overline_marks
 from geomcad.sheet.teeth import CutTooth, clip_band, tooth_extent
+from geomcad.sheet.text import parse
 from geomcad.sheet.trains import at_kl, scaled_rays
 
 
@@ -140,3 +141,45 @@ def test_the_views_place_at_the_layouts_scale() -> None:
     lay = arrange(Column(view), Field.of_format("A3"))
     k = lay[view].scale
     assert k is not None and math.isfinite(k.k) and k.k > 0.0
+
+
+@pytest.mark.parametrize("name", ["cam-rocking-roller", "cam-translating-roller", "cam-flat"])
+def test_a_design_files_profile_is_the_inversion_view(name: str) -> None:
+    """The cam file's profile is drawn by the same Inversion view as 2013-2's: a rocker's arms
+    hang on its pivots A_i turned back round the circle of radius OA (inside the view's
+    extent); every division point is numbered; ω and −ω stand outside the profile."""
+    from pathlib import Path
+
+    from geomcad.files import cam_sheets
+
+    path = Path(__file__).resolve().parents[1] / "examples" / f"{name}.toml"
+    des = geomcad.solve(str(path)).data
+    inv = cam_sheets._profile(des)
+    assert isinstance(inv, Inversion) and not inv.lettered
+    ext = inv.extent()
+    assert ext is not None
+    a_w = math.hypot(*des.pivot) if des.spec.motion == "rocking" else des.r0
+    x0, y0, x1, y1 = ext
+    assert min(-x0, -y0, x1, y1) >= a_w * (1.0 - 1e-12)
+    texts = {it.text for it in _drawn(inv) if isinstance(it, TextItem)}
+    n = len(des.divisions.phi) - 1
+    assert {str(i) for i in range(n)} <= texts
+    assert {"ω", "".join(r.text for r in parse("−ω"))} <= texts  # the minus as the font sets it
+    pivots = {f"A{i}" for i in range(n)}
+    assert (pivots <= texts) == (des.spec.motion == "rocking")
+
+
+def test_composed_names_the_sheet_from_its_words_and_scale() -> None:
+    """form.composed: the tree composed under the title block the sheet's words name, with the
+    main view's scale in Масштаб."""
+    from geomcad.sheet.compose import Spacer
+    from geomcad.sheet.form import composed
+    from geomcad.sheet.lang import Words
+
+    words = Words("geomcad_constructions", "sheets_2013_3")
+    with language("en"):
+        sheet = composed("A3", Column(Spacer((40.0, 30.0))), words, "1:2")
+        title, designation = words("tb_title"), words("designation")
+    assert sheet.format == "A3" and sheet.lang == "en" and sheet.title == title
+    assert sheet.block is not None
+    assert (sheet.block.designation, sheet.block.scale) == (designation, "1:2")

@@ -21,9 +21,9 @@ import numpy as np
 from geomcad import tol
 from geomcad.geom import Vec
 from geomcad.kinematics import cam_design as cd
-from geomcad.kinematics.cams import Follower, at_angles, invert
-from geomcad.kinematics.motion_laws import Motion
+from geomcad.kinematics.cams import CamProfile, Follower, at_angles
 from geomcad.sheet import TitleBlock, Viewport, fmt_number
+from geomcad.sheet.cams import Division, Inversion
 from geomcad.sheet.compose import Choice, Column, Figure, Row, Tree, compose
 from geomcad.sheet.formats import Sized, choose
 from geomcad.sheet.graph import Graph
@@ -47,44 +47,19 @@ WORDS = Words(__package__, "cam_sheets")
 MM = 1000.0
 #: Width (mm) of the notes under the tables.
 NOTE_W = 130.0
-#: Paper room (mm) round the cam's centre kept for its letter: the radius vectors begin there.
-O_ROOM = 6.0
-#: The flat face drawn this far (mm) past its point of contact in each turned position.
-FACE_MM = 6.0
 #: A division point within this fraction of the stroke of the φ axis is drawn on it; its number
 #: is written NUMBER_LIFT mm above the axis.
 ON_AXIS, NUMBER_LIFT = 0.005, 4.0
-#: The arcs of ω and −ω about the cam's centre this many times its outer reach (the rollers').
-SENSE_OUT = 1.06
 #: The law graphs' least and preferred sizes (mm).
 LAW_LEAST, LAW_PREFER = (130.0, 70.0), (280.0, 120.0)
 
 
-def _profile_box(des: CamDesign) -> tuple[float, float, float, float]:
-    prof = des.profile
-    pts = np.vstack([prof.contact, prof.pitch])
-    r = des.r_roller
-    xs = [float(pts[:, 0].min()) - r, float(pts[:, 0].max()) + r, -des.r0, des.r0]
-    ys = [float(pts[:, 1].min()) - r, float(pts[:, 1].max()) + r, -des.r0, des.r0]
-    if des.spec.motion == "rocking":
-        a_w = math.hypot(*des.pivot)
-        xs += [-a_w, a_w]
-        ys += [-a_w, a_w]
-    return min(xs), min(ys), max(xs), max(ys)
-
-
-def _tree(sol: Solution[CamDesign]) -> tuple[Tree, Figure, Figure]:
+def _tree(sol: Solution[CamDesign]) -> tuple[Tree, Inversion, Figure]:
     """The sheet as a composition: the law and its analogues with the pressure angle (or the
     curvature) in a column, the diagram of the cam's size over the tables and notes, and the
     profile (the main view, at the GOST scale the layout picks)."""
     des = sol.data
-    profile = Figure(
-        _profile_box(des),
-        lambda v: _profile(v, des),
-        title=WORDS("profile_title"),
-        margin=8.0,
-        weight=3.0,
-    )
+    profile = _profile(des)
     graphs = [*_laws(des), _pressure(des)]
     laws = Column(*graphs)
     data, res = _tables(des, sol.results)
@@ -105,7 +80,7 @@ WANT_K = 0.001
 
 
 @per_language
-def _sized(sol: Solution[CamDesign]) -> tuple[Tree, Figure, Figure, Sized]:
+def _sized(sol: Solution[CamDesign]) -> tuple[Tree, Inversion, Figure, Sized]:
     """The views and the format they take: the smallest on which the profile and the diagram
     reach 1:1 and the laws their least size (or the file's ``[sheet] format``)."""
     tree, profile, diagram = _tree(sol)
@@ -387,135 +362,34 @@ def _along(v: Viewport, a: Vec, b: Vec, text: str, height: float) -> None:
 # -- the profile -----------------------------------------------------------------------------------
 
 
-def _profile(v: Viewport, des: CamDesign) -> None:
+def _profile(des: CamDesign) -> Inversion:
+    """The profile by inversion (:class:`~geomcad.sheet.cams.Inversion`, a design's many points):
+    the full turn with the follower turned back to each division point — its axis (translating)
+    or its arm from the pivot A_i (rocking)."""
     spec = des.spec
-    k = v.scale
-    prof = des.profile
-    o = Vec(0.0, 0.0)
-    v.centre_cross(o, 6.0)
-    v.circle(o, des.r0, "centre" if spec.follower == "roller" else "construction")
-    if spec.follower == "roller":
-        v.circle(o, des.r0 - des.r_roller, "construction")
-        v.polyline(list(prof.pitch), "centre", closed=True)
-    v.polyline(list(prof.contact), "link", closed=True)
+    rocking = spec.motion == "rocking"
+    f = Follower(spec.follower, des.r0, 0.0 if rocking else des.e, des.r_roller, spec.sigma)
     div = des.divisions
-    n = len(div.phi) - 1
-    if spec.motion == "translating":
-        f = Follower(spec.follower, des.r0, des.e, des.r_roller, spec.sigma)
-        pts = at_angles(spec.program, f, div.phi[:n], 2.0 * math.pi)
-        pitch, contact = pts.pitch, pts.contact
-        if spec.follower != "flat" and des.e != 0.0:
-            v.circle(o, abs(des.e), "centre")
-        for i in range(n):
-            up = Vec(0.0, 1.0).rotated(-spec.sigma * float(div.phi[i]))
-            foot = Vec(1.0, 0.0).rotated(-spec.sigma * float(div.phi[i])) * (
-                des.e if spec.follower != "flat" else 0.0
-            )
-            _ray(v, foot, Vec(*pitch[i]) + up * k.model(5.0), k.model(O_ROOM))
-            if spec.follower == "flat":
-                # the face in its turned position (⊥ the axis, r0 + S_i from O), out past its
-                # point of contact: the profile is the envelope of these lines
-                P, C = Vec(*pitch[i]), Vec(*contact[i])
-                side = up.perp()
-                reach = abs((C - P).dot(side)) + k.model(FACE_MM)
-                v.seg(P - side * reach, P + side * reach, "construction")
+    n = len(div.phi) - 1  # the last division point of the turn is the first one again
+    points: Division | CamProfile
+    if rocking:
+        pitch, contact = _rocker_points(des, div.phi[:n])
+        points = Division(div.phi[:n], pitch, contact)
     else:
-        A = np.asarray(des.pivot)
-        m = spec.program.motion(div.phi[:n])
-        pos = _rocker_points(des, A, m)
-        pitch, contact, Ai = pos
-        v.circle(o, math.hypot(*des.pivot), "centre")
-        for i in range(n):
-            v.seg(Vec(*Ai[i]), Vec(*pitch[i]), "construction")
-            v.dot(Vec(*Ai[i]), "point")
-            # the pivot A turned back by −φ_i (the order of construction's A_i), outward
-            v.label(Vec(*Ai[i]), f"A_{{{i}}}", height=2.5, prefer=(Ai[i][0], Ai[i][1]))
-    # the radius vectors run from the centre's letter to the division points: where twenty of
-    # them meet, O sits in their widest gap with the rays begun just past it
-    start = k.model(O_ROOM)
-    for i in range(n):
-        if spec.follower == "roller":
-            v.circle(Vec(*pitch[i]), des.r_roller, "construction")
-        B = Vec(*contact[i])
-        _ray(v, o, B, start)
-        v.dot(B, "point")
-        if spec.follower == "roller":
-            # the number outside its roller's circle: by the roller's point farthest from O
-            P = Vec(*pitch[i])
-            u = (P - o).unit() if (P - o).norm > 0.0 else Vec(B.x, B.y).unit()
-            v.label(P + u * des.r_roller, str(i), height=2.5, prefer=(u.x, u.y), clear=0.5)
-        else:
-            # outward first, clear of the crowd of rays near O
-            v.label(B, str(i), height=2.5, prefer=(B.x, B.y))
-    _senses(v, des)
-    ang = np.sort(np.arctan2(contact[:n, 1], contact[:n, 0]))
-    gaps = np.diff(np.append(ang, ang[0] + 2.0 * math.pi))
-    j = int(np.argmax(gaps))
-    mid = float(ang[j] + gaps[j] / 2.0)
-    v.label(o, "O", prefer=(math.cos(mid), math.sin(mid)), clear=1.0)
+        points = at_angles(spec.program, f, div.phi[:n], 2.0 * math.pi)
+    return Inversion(
+        f, des.profile, points, closed=True, pivot=des.pivot if rocking else None,
+        lettered=False, title=WORDS("profile_title"), margin=8.0, weight=3.0,
+    )  # fmt: skip
 
 
-def _sense_radius(des: CamDesign, angle: float) -> float:
-    """The radius (model) of an arc of ω or −ω about ``angle``: just outside the rollers (the
-    faces) within 45° of that direction."""
-    prof = des.profile
-    pts = np.vstack([prof.contact, prof.pitch])
-    r = np.hypot(pts[:, 0], pts[:, 1])
-    off = np.abs(np.remainder(np.arctan2(pts[:, 1], pts[:, 0]) - angle + math.pi, 2 * math.pi))
-    near = np.abs(off - math.pi) <= math.radians(45.0)
-    reach = float(np.max(r[near] if near.any() else r))
-    return SENSE_OUT * (reach + des.r_roller)
-
-
-def _senses(v: Viewport, des: CamDesign) -> None:
-    """The cam's ω (its sense of rotation, as the data table gives it) and −ω, the sense in
-    which the follower is turned back in the inversion: arcs about O just outside the profile
-    with its rollers, towards the view's empty corners (upper left, lower right)."""
-    from geomcad.geom import Arc, Circle
-    from geomcad.sheet.drawing import ARROW_LEN
-
-    k = v.scale
-    o = Vec(0.0, 0.0)
-    s = des.spec.sigma
-    sweep = math.radians(30.0)
-    for sense, start, name in ((s, math.radians(135.0), "ω"), (-s, math.radians(315.0), "−ω")):
-        r = _sense_radius(des, start)
-        # the arrow's last straight piece (a vector twice its head and more), as an angle
-        head = 2.2 * k.model(ARROW_LEN) / r
-        a0 = start - sense * sweep / 2.0
-        a1 = start + sense * sweep / 2.0
-        lo, hi = sorted((a0, a1 - sense * head))
-        v.arc(Arc(Circle(o, r), lo, hi), "vector")
-        v.arrow(Vec.polar(r, a1 - sense * head), Vec.polar(r, a1))
-        v.label(Vec.polar(r, start), name, prefer=(math.cos(start), math.sin(start)))
-
-
-def _ray(v: Viewport, a: Vec, b: Vec, room: float) -> None:
-    """The construction segment ``ab`` less its part within ``room`` of the cam's centre (where
-    the radius vectors and the follower's axes meet, the room of the letter O)."""
-    d = b - a
-    t0 = 0.0
-    if d.norm > 0.0:
-        # the segment's points at distance ``room`` from O: |a + t·d| = room
-        p, q = a.dot(d) / d.dot(d), (a.dot(a) - room * room) / d.dot(d)
-        disc = p * p - q
-        if disc > 0.0:
-            lo, hi = -p - math.sqrt(disc), -p + math.sqrt(disc)
-            if lo <= 0.0 < hi:
-                t0 = hi
-    if t0 < 1.0:
-        v.seg(a + d * t0, b, "construction")
-
-
-def _rocker_points(
-    des: CamDesign, A: np.ndarray, m: Motion
-) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """The rocker turned back to the division points: roller centres, contact points, pivots."""
+def _rocker_points(des: CamDesign, phi: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The rocker turned back to the angles ``phi``: its roller's centres and contact points."""
     spec = des.spec
+    A = np.asarray(des.pivot)
     prof = cd.rocker_profile(spec.program, A, spec.arm, spec.program.H, spec.sigma, des.r_roller)
-    idx = [int(np.argmin(np.abs(prof.phi - p) + 10.0 * prof.corner)) for p in m.phi]
-    Ai = invert(np.repeat(A[None, :], len(m.phi), axis=0), m.phi, spec.sigma)
-    return prof.pitch[idx], prof.contact[idx], Ai
+    idx = [int(np.argmin(np.abs(prof.phi - p) + 10.0 * prof.corner)) for p in phi]
+    return prof.pitch[idx], prof.contact[idx]
 
 
 # -- tables ----------------------------------------------------------------------------------------

@@ -33,9 +33,11 @@ from geomcad.sheet import (
     nice_factor,
 )
 from geomcad.sheet.compose import Choice, Column, Figure, Row, Tree, compose
+from geomcad.sheet.drawing import SHORT_MM
 from geomcad.sheet.formats import Sized, choose
 from geomcad.sheet.graph import Graph
 from geomcad.sheet.lang import Words, per_language
+from geomcad.sheet.trains import RATIO_BELOW, angle_diagram, linear_velocities
 from geomcad.sheet.views import AxisSpec, Curve, Diagram, Table, Text
 
 from .common import sheet_formats
@@ -52,6 +54,12 @@ MM = 1000.0
 #: Width (mm) of the notes under the tables (the pair's; the train's).
 NOTE_W = 200.0
 PLANETARY_NOTE_W = 140.0
+#: The angle diagram under the plan: its line this far (mm) under the central axis, its pole
+#: distance H at most RAY_H mm.
+RAYS_BELOW, RAY_H = 20.0, 35.0
+#: The scheme's view reaches this many times the scheme's half height under the central axis
+#: (the angle diagram's room under the plan).
+RAYS_ROOM = 1.5
 
 
 def _mesh_box(p: gd.GearPair, me: gd.Meshing) -> tuple[float, float, float, float]:
@@ -405,12 +413,18 @@ def _planetary_tree(des: GearsDesign) -> tuple[Tree, Figure]:
     # Smirnov's plan in projection from the scheme: one view, one length scale, the plan's
     # points o, a, b, c at the heights of O, A, B, C, its axis beside the scheme
     x_plan = span * 1.08 + 0.75 * top
+    # where each point of the radial line lies on the scheme (O at the shafts' end)
+    c1, _, _, held_c = _columns(pp.scheme, span)
+    spots = {"O": Vec(span, 0.0), "A": Vec(c1, by["A"]), "B": Vec(c1, by["B"]),
+             "C": Vec(held_c, by["C"])}  # fmt: skip
 
     def draw(v: Viewport) -> None:
         _scheme(v, pp.scheme, z, m, by, span)
-        _plan(v, pp, pts, start_link, start_pt, by, (0.6 * top, top), x_plan)
+        _plan(v, pp, pts, start_link, start_pt, by, (0.6 * top, low), x_plan, spots)
 
-    scheme = Figure((-0.1 * span, -top, x_plan + 0.6 * top, top), draw, group="l", weight=2.0)
+    # under the lower half, room for the angle diagram below the plan
+    low = RAYS_ROOM * top
+    scheme = Figure((-0.1 * span, -low, x_plan + 0.6 * top, top), draw, group="l", weight=2.0)
     names = ["z_1", "z_2", "z_3"] if pp.scheme == "A" else ["z_1", "z_2", "z_3", "z_4"]
     rows = [["", *names, "u", WORDS("h_error")]]
     for cand in des.candidates:
@@ -432,16 +446,22 @@ def _planetary_tree(des: GearsDesign) -> tuple[Tree, Figure]:
 
 
 def _angles(
-    pp: Any, pts: list[PlanPoint], start_link: str, start_pt: str, by: dict[str, float], H: float
+    pp: Any,
+    pts: list[PlanPoint],
+    start_link: str,
+    start_pt: str,
+    by: dict[str, float],
+    H: float,
+    below: float = 0.0,
 ) -> tuple[Any, Any, str]:
-    """Smirnov's plan and the angle diagram with the pole distance H (model): (plan, rays,
-    the held gear)."""
+    """Smirnov's plan and the angle diagram with the pole distance H (model), its line
+    ``below`` the central axis: (plan, rays, the held gear)."""
     c = Construction("plan")
     w_in = 1.0
     v_start = w_in * (by[start_pt] if start_link == "1" else by["B"])
     fixed = "3" if pp.scheme == "A" else "4"
     plan = velocity_plan(c, pts, fixed, start_link, start_pt, v_start)
-    rp = ray_plan(c, plan, Vec(0.0, -H), H, [q for q in plan.lines if q != fixed])
+    rp = ray_plan(c, plan, Vec(0.0, -below - H), H, [q for q in plan.lines if q != fixed])
     return plan, rp, fixed
 
 
@@ -491,65 +511,55 @@ def _plan(
     by: dict[str, float],
     room: tuple[float, float],
     x0: float,
+    spots: dict[str, Vec],
 ) -> None:
-    """Smirnov's plan on the scheme's radii (its axis at the model abscissa ``x0`` beside the
-    scheme, each point at its point's height), the velocity factor and the title written over
-    it, each link's velocity line named, and the angle diagram below the central axis with its
-    pole distance H and factor μ_ω."""
+    """Smirnov's plan on the scheme's radii (:func:`~geomcad.sheet.trains.linear_velocities`,
+    its axis at the model abscissa ``x0`` beside the scheme, each point's level carried across
+    from ``spots`` on the scheme), the velocity factor and the title written over it, and the
+    angle diagram (:func:`~geomcad.sheet.trains.angle_diagram`) below the central axis at a
+    round μ_ω with its pole distance H."""
     d = pv.d
     k = pv.scale
-    half = room[0]
-    half_mm = k.mm(half)
-    px, y_base = pv.p(Vec(x0, 0.0))
-    H_mm = 35.0
-    plan, rp, fixed = _angles(pp, pts, start_link, start_pt, by, H_mm * k.k)
+    half_mm = k.mm(room[0])
+    low_mm = k.mm(room[1])
+    plan, _, fixed = _angles(pp, pts, start_link, start_pt, by, 1.0)
     vmax = max(abs(e.x) for e in plan.ends.values()) or 1.0
     kv = nice_factor(vmax, half_mm - 10.0, "v")
-    # the pole distance: the rays' ends within the view
-    wmax = max(abs(rp.omega(ln)) for ln in rp.ends) or 1.0
-    H_mm = min(H_mm, (half_mm - 5.0) * kv.k / (wmax * k.k))
-    H_model = H_mm * k.k
-    sheet_y = {name: pv.p(Vec(0.0, e.y))[1] for name, e in plan.ends.items()}
-    top_y = min(sheet_y.values()) - 10.0
+    # μ_ω round, the intercepts ω_i/μ_ω within the plan's width and the pole distance
+    # H = μ_V/(μ_l·μ_ω) within the lower half, under the diagram's line RAYS_BELOW mm down
+    wmax = max(abs(w) for ln, w in plan.omega.items() if ln != fixed) or 1.0
+    h_room = min(RAY_H, (low_mm - RAYS_BELOW - 20.0) / (1.0 + RATIO_BELOW))
+    k_omega = max(nice_factor(wmax, half_mm - 5.0, "v").k, nice_factor(kv.k / k.k, h_room, "v").k)
+    H = kv.k / k_omega  # model (m): the pole distance at k_l
+    _, rp, _ = _angles(pp, pts, start_link, start_pt, by, H, k.model(RAYS_BELOW))
+    vp = Viewport(d, k, 0.0, 0.0, pv.p(Vec(x0, 0.0)))
+    short = linear_velocities(
+        pv, vp, pts, plan, kv, spots, {ln: ln for ln in plan.order}, WORDS("v0", link=fixed)
+    )
+    angle_diagram(vp, rp, kv, {ln: f"ω_{{{ln}}}" for ln in rp.ends})
+    px, _ = vp.p(Vec(0.0, 0.0))
+    top_y = min(vp.p(Vec(0.0, e.y))[1] for e in plan.ends.values()) - 10.0
+    left = px - half_mm
     # the factor over the plan's axis (not at the top of the view's room: the plan spans the
     # radii of the train, the room the whole scheme's height)
-    left = pv.p(Vec(x0 - half, 0.0))[0]
     d.text(WORDS("plan_factor", label=kv.label()), (left, top_y - 3.0), 3.5)
     d.text(WORDS("plan_title"), (left, top_y - 9.0), 3.5)
-    d.sheet.add(_line((px, y_base + 5.0), (px, top_y)))
-    for name, e in plan.ends.items():
-        sx = px + e.x / kv.k
-        sy = sheet_y[name]
-        d.sheet.add(_line((px - 3.0, sy), (sx, sy), "construction"))
-        d.label((sx, sy), name.lower(), 3.5)
-    for link in plan.lines:
-        if link == fixed:
-            continue
-        ends = [
-            e for n, e in plan.ends.items() if link in next(q.links for q in pts if q.name == n)
-        ]
-        if len(ends) >= 2:
-            lo_e = min(ends, key=lambda e: e.y)
-            hi_e = max(ends, key=lambda e: e.y)
-            a = (px + lo_e.x / kv.k, sheet_y_of(pv, lo_e.y))
-            b = (px + hi_e.x / kv.k, sheet_y_of(pv, hi_e.y))
-            d.sheet.add(_line(a, b, "link"))
-            # the link's name by the middle of its velocity line
-            d.label(((a[0] + b[0]) / 2.0, (a[1] + b[1]) / 2.0), link, 3.5)
-    # the angle diagram below the plan: rays ∥ each link's line from the pole S
-    S_sheet = (px, y_base + 15.0 + H_mm)
-    for link in rp.ends:
-        w = rp.omega(link)
-        end = (px + w * H_model / kv.k, S_sheet[1] - H_mm)
-        d.sheet.add(_line(S_sheet, end, "construction"))
-        d.label(end, f"ω_{{{link}}}", 2.5)
-    axis_y = S_sheet[1] - H_mm
-    d.sheet.add(_line((px - half_mm, axis_y), (px + half_mm, axis_y), "thin"))
-    d.label(S_sheet, "S", 3.5)
-    # the pole distance and the angular-velocity factor μ_ω = μ_V / (μ_l·H)
-    mu_w = fmt_number(kv.k / (k.k * H_mm), digits=3)
-    d.text(WORDS("rays_factor", H=fmt_number(H_mm, digits=3), mu=mu_w),
-           (px - half_mm, S_sheet[1] + 8.0), 3.5)  # fmt: skip
+    # the pole distance and the angular-velocity factor μ_ω = μ_V / (μ_l·H) under the pole
+    h_mm = H / k.k
+    mu_w = fmt_number(k_omega, digits=3)
+    y_s = vp.p(rp.S)[1]
+    d.text(WORDS("rays_factor", H=fmt_number(h_mm, digits=3), mu=mu_w), (left, y_s + 11.0), 3.5)
+    if short:
+        names = ", ".join(n.lower() for n in short)
+        d.text(WORDS("short", names=names, mm=fmt_number(SHORT_MM, digits=2)),
+               (left, y_s + 17.0), 2.5)  # fmt: skip
+
+
+def _columns(scheme: str, span: float) -> tuple[float, float, float, float]:
+    """Where the scheme's gears stand along the central axis: gear 1 with the first planet,
+    the second planet, the carrier's arm, and the held gear (model abscissae)."""
+    c1, c2 = span * 0.3, span * 0.55
+    return c1, c2, span * 0.85, c1 if scheme == "A" else c2
 
 
 def _scheme(
@@ -563,7 +573,7 @@ def _scheme(
     k = v.scale
     b = k.model(6.0)
     aw = by["B"]
-    c1, c2, cH = span * 0.3, span * 0.55, span * 0.85
+    c1, c2, cH, held_c = _columns(scheme, span)
     v.seg(Vec(-k.model(10.0), 0.0), Vec(span + k.model(10.0), 0.0), "centre")
     r1 = m * z[0] / 2.0
     # gear 1 on the input (or output) shaft from the left
@@ -595,7 +605,6 @@ def _scheme(
     v.seg(Vec(cH, 0.0), Vec(span + k.model(5.0), 0.0), "link")
     v.label(Vec(cH, aw * 0.5), "H", prefer=(1.0, 0.0))
     # the held gear, on the frame
-    held_c = c1 if scheme == "A" else c2
     r_h = m * z[-1] / 2.0
     name = "3" if scheme == "A" else "4"
     if scheme == "C":
@@ -615,13 +624,3 @@ def _scheme(
     for q, x in (("A", c1), ("B", c1), ("C", held_c)):
         v.dot(Vec(x, by[q]), "point")
         v.label(Vec(x, by[q]), q, height=2.5, prefer=(-1.0, 0.3))
-
-
-def sheet_y_of(vp: Any, y: float) -> float:
-    return float(vp.p(Vec(0.0, y))[1])
-
-
-def _line(a: tuple[float, float], b: tuple[float, float], role: str = "dimension") -> Any:
-    from geomcad.sheet import Polyline
-
-    return Polyline((a, b), role)

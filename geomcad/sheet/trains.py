@@ -149,55 +149,64 @@ class AngleDiagram(View):
         return (lo, S.y - RATIO_BELOW * rays.H - 3.0 * k_l, hi, top)
 
     def draw(self, d: Drawing, at: Placed) -> None:
-        v = at.viewport
-        assert v is not None
-        rays, kv = self.rays, self.kv
-        k_l = v.scale.k
-        ends = {kk: at_kl(e, k_l, kv.k) for kk, e in rays.ends.items()}
-        S = at_kl(rays.S, k_l, kv.k)
-        xs = [e.x for e in ends.values()] + [S.x]
-        lo, hi = min(xs), max(xs)
-        h_mm = rays.H / k_l
-        width = (hi - lo) / k_l
-        base_lo = Vec(lo - BASE_OVER * (hi - lo), S.y + rays.H)
-        base_hi = Vec(hi + BASE_OVER * (hi - lo), S.y + rays.H)
-        v.seg(base_lo, base_hi, "construction")
-        v.seg(S, Vec(S.x, S.y + rays.H), "construction")
-        v.dot(S)
-        v.label(S, "S", 3.5, prefer=(0.0, -1.0))
-        # the intercepts' names above the line, staggered upwards where they would collide
-        rows: list[float] = []
-        for link, e in sorted(ends.items(), key=lambda kv_: kv_[1].x):
-            v.seg(S, e, "result")
-            v.dot(e, "result")
-            x_mm, y_mm = v.p(e)
-            label = self.link_label[link]
-            w = text_box(parse(label), 3.5)[0]
-            row = next(
-                (i for i, right in enumerate(rows) if right < x_mm - w / 2.0 - 1.0), len(rows)
-            )
-            if row == len(rows):
-                rows.append(0.0)
-            rows[row] = x_mm + w / 2.0
-            y_text = y_mm - ROW_LIFT - ROW_STEP * row
-            if row:
-                d.sheet.add(Polyline(((x_mm, y_mm - 0.8), (x_mm, y_text + 1.0)), "dimension"))
-            d.text(label, (x_mm, y_text), 3.5, anchor="centre")
-        if self.ratio is not None:
-            # the ratio of the two intercepts as read off the diagram: the quotient of the
-            # printed segments (4 significant figures), printed to 3 so that the figures agree
-            a, b, markup = self.ratio
-            x1, x2 = (float(f"{(rays.ends[kk].x - rays.S.x) / kv.k:.4g}") for kk in (a, b))
-            d.text(
-                f"{markup} = {num(x1, 4)}/{num(x2, 4)} = {num(x1 / x2, 3)}",
-                v.p(Vec(S.x, S.y - RATIO_BELOW * rays.H)),
-                3.5,
-            )
-        beside = min(H_BESIDE_MAX, 0.5 * width) + 4.0
-        v.dim_linear(
-            S,
-            Vec(S.x, S.y + rays.H),
-            f"H = {num(h_mm, 4)}",
-            offset=-beside if (S.x - lo) > (hi - S.x) else H_BESIDE,
-            height=2.5,
+        assert at.viewport is not None
+        angle_diagram(at.viewport, self.rays, self.kv, self.link_label, self.ratio)
+
+
+def angle_diagram(
+    v: Viewport,
+    rays: RayPlan,
+    kv: Scale,
+    link_label: Mapping[str, str],
+    ratio: tuple[str, str, str] | None = None,
+) -> None:
+    """Draw the angle diagram of ``rays`` (at its pole distance k_v/k_ω) in ``v`` at k_l with
+    velocities at ``kv``: what :class:`AngleDiagram` draws, in any viewport (under a plan)."""
+    d = v.d
+    k_l = v.scale.k
+    ends = {kk: at_kl(e, k_l, kv.k) for kk, e in rays.ends.items()}
+    S = at_kl(rays.S, k_l, kv.k)
+    xs = [e.x for e in ends.values()] + [S.x]
+    lo, hi = min(xs), max(xs)
+    h_mm = rays.H / k_l
+    width = (hi - lo) / k_l
+    base_lo = Vec(lo - BASE_OVER * (hi - lo), S.y + rays.H)
+    base_hi = Vec(hi + BASE_OVER * (hi - lo), S.y + rays.H)
+    v.seg(base_lo, base_hi, "construction")
+    v.seg(S, Vec(S.x, S.y + rays.H), "construction")
+    v.dot(S)
+    v.label(S, "S", 3.5, prefer=(0.0, -1.0))
+    # the intercepts' names above the line, staggered upwards where they would collide
+    rows: list[float] = []
+    for link, e in sorted(ends.items(), key=lambda kv_: kv_[1].x):
+        v.seg(S, e, "result")
+        v.dot(e, "result")
+        x_mm, y_mm = v.p(e)
+        label = link_label[link]
+        w = text_box(parse(label), 3.5)[0]
+        row = next((i for i, right in enumerate(rows) if right < x_mm - w / 2.0 - 1.0), len(rows))
+        if row == len(rows):
+            rows.append(0.0)
+        rows[row] = x_mm + w / 2.0
+        y_text = y_mm - ROW_LIFT - ROW_STEP * row
+        if row:
+            d.sheet.add(Polyline(((x_mm, y_mm - 0.8), (x_mm, y_text + 1.0)), "dimension"))
+        d.text(label, (x_mm, y_text), 3.5, anchor="centre")
+    if ratio is not None:
+        # the ratio of the two intercepts as read off the diagram: the quotient of the
+        # printed segments (4 significant figures), printed to 3 so that the figures agree
+        a, b, markup = ratio
+        x1, x2 = (float(f"{(rays.ends[kk].x - rays.S.x) / kv.k:.4g}") for kk in (a, b))
+        d.text(
+            f"{markup} = {num(x1, 4)}/{num(x2, 4)} = {num(x1 / x2, 3)}",
+            v.p(Vec(S.x, S.y - RATIO_BELOW * rays.H)),
+            3.5,
         )
+    beside = min(H_BESIDE_MAX, 0.5 * width) + 4.0
+    v.dim_linear(
+        S,
+        Vec(S.x, S.y + rays.H),
+        f"H = {num(h_mm, 4)}",
+        offset=-beside if (S.x - lo) > (hi - S.x) else H_BESIDE,
+        height=2.5,
+    )
