@@ -75,11 +75,11 @@ def scales_of(reactions: Any, k_F: float) -> ForceScales:
 
 def short_note(k_F: float, reactions: Any = None) -> str:
     """The sheet's words for the scales of the forces: every force an arrow at μ_F, those
-    too short there at the stated μ_F* (their labels marked *)."""
+    too short there at the larger μ_F* (μ_F** …) it states by value (their labels starred)."""
     fs = scales_of(reactions, k_F) if reactions is not None else None
     if fs is None or not fs.tiered:
         return WORDS("short_none", k_F=num(k_F))
-    return WORDS("short_note", mm=num(SHORT_MM), k_F=num(k_F), scales=fs.caption())
+    return WORDS("short_note", mm=num(SHORT_MM), k_F=num(k_F), scales=fs.further())
 
 
 #: The height (mm) of the line under a view's caption that states its further μ_F.

@@ -58,8 +58,10 @@ class ForceScales:
 
     @staticmethod
     def mark(tier: int) -> str:
-        """The mark of a label drawn at scale ``tier`` ("" at the view's own μ_F)."""
-        return MARK * tier
+        """The mark of a label drawn at scale ``tier`` ("" at the view's own μ_F): its stars as
+        a superscript (``R_{03}^{*}``), where a star reads as one; on the line osifont sets
+        ``*`` at the height of ``=``."""
+        return f"^{{{MARK * tier}}}" if tier > 0 else ""
 
     def caption(self) -> str:
         """The view's own μ_F as its caption states it: ``μ_F = 100 Н/мм``."""
