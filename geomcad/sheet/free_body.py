@@ -100,14 +100,21 @@ class LoadedFigure(Figure):
         self.fs = fs
 
     def title_room(self) -> float:
-        return super().title_room() + (FURTHER_H * TITLE_LEAD if self.fs.tiered else 0.0)
+        if not self.fs.tiered:
+            return super().title_room()
+        return (
+            super().title_room()
+            + FURTHER_H * TITLE_LEAD
+            + self.fs.further_rise(FURTHER_H)
+            - FURTHER_H
+        )
 
     def caption(self, scale: Scale | None) -> str:
         return f"{super().caption(scale)};  {self.fs.caption()}"
 
     def draw(self, d: Drawing, at: Placed) -> None:
         if self.fs.tiered:
-            top = at.box[1] + self.title_height * TITLE_LEAD + FURTHER_H
+            top = at.box[1] + self.title_height * TITLE_LEAD + self.fs.further_rise(FURTHER_H)
             d.text(self.fs.further(), (at.box[0], top), FURTHER_H)
         super().draw(d, at)
 

@@ -82,6 +82,13 @@ class ForceScales:
         heads = [p[: -len(unit)].rstrip() if p.endswith(unit) else p for p in parts[:-1]]
         return ", ".join([*heads, parts[-1]])
 
+    def further_rise(self, height: float) -> float:
+        """How far (mm) the line of :meth:`further` at cap height ``height`` reaches above its
+        baseline: its stars are superscripts, above the capitals."""
+        from geomcad.sheet.text import box, parse
+
+        return box(parse(self.further()), height)[1] if self.tiered else height
+
     @property
     def tiered(self) -> bool:
         """Whether some forces are drawn at a second μ_F (the sheet says what the mark means)."""
