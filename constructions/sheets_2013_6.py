@@ -279,7 +279,7 @@ def _panel(sol: Solution[Geometry], k: float) -> tuple[View | Node, ...]:
         # the real length (as the drawing's dimension gives it, in mm there) and, marked, the
         # length on the drawing in mm at k, which the published solution measures
         drawn = num(float(r[name]) / k if k else 0.0, 4)
-        shown[name] = f"{num(float(r[name]), 4)} {m_} ({drawn} {WORDS('mm')}*)"
+        shown[name] = f"{num(float(r[name]), 4)} {m_} ({drawn} {WORDS('mm')}^{{*}})"
     results = Table.of_specs(
         RESULTS, shown, labels={"H_check": WORDS("H_check"), "K_check": WORDS("K_check")},
         style="value", widths=(30.0, 46.0), title=WORDS("results"),

@@ -8,7 +8,7 @@ velocity v and acceleration a over a crank turn, from the sweep, with φ1 marked
 values at φ1 as dots on the curves (they must lie on them); beside them the velocity plan (pole
 p) and the plans' vector equations. Each vector equation is drawn as its two lines meeting; a
 vector shorter than two arrowheads is drawn as its end point only, named in a note under its
-plan.
+plan (a text view whose words follow the plan's factor, as the values table's lengths do).
 """
 
 from __future__ import annotations
@@ -21,13 +21,12 @@ import numpy as np
 
 from geomcad.geom import Vec
 from geomcad.kinematics.plan import Plan
-from geomcad.sheet import Drawing, Sheet, TitleBlock, Viewport, start
+from geomcad.sheet import Scale, Sheet, TitleBlock, Viewport, start
 from geomcad.sheet.compose import (
     GAP,
     Column,
     Field,
     Figure,
-    Placed,
     Row,
     Spacer,
     View,
@@ -59,7 +58,7 @@ WORDS = Words(__package__, "sheets_2013_6_kin")
 
 #: The sheet's format.
 FORMAT = "A3"
-#: Room (mm) under a plan for its note on short vectors.
+#: Room (mm) under a plan for its note on short vectors before the plan's factor is known.
 NOTE_H = 11.0
 #: The splits of the top row (the mechanism, the tables, the acceleration plan; None: the
 #: layout's choice) and of the bottom row (the diagrams, the velocity plan over the equations:
@@ -152,7 +151,6 @@ class _Kin:
             margin=PLAN_MARGIN,
             over_mm=PLAN_OVER,
         )
-        self.vnote, self.anote = Spacer((10.0, NOTE_H)), Spacer((10.0, NOTE_H))
         self.diagrams = _diagrams(an, m)
         # the order of construction of each plan, under the plan (ω and ε read off the plans
         # are in the links' table: on an A3 their lines would halve the plans' scales)
@@ -171,9 +169,10 @@ class _Kin:
 
     def _tree(self, kv: float, ka: float) -> Column:
         panel = Column(*_panel(self.an, self.m, kv, ka))
-        top = Row(self.mech, panel, Column(self.aplan, self.anote, self.aorder), weights=TOP_W)
+        anote, vnote = _short_note(self.an.ap, ka), _short_note(self.an.vp, kv)
+        top = Row(self.mech, panel, Column(self.aplan, *anote, self.aorder), weights=TOP_W)
         # the title block under the right-hand column
-        right = Column(self.vplan, self.vnote, self.vorder, Spacer((10.0, TB_HEIGHT - GAP)))
+        right = Column(self.vplan, *vnote, self.vorder, Spacer((10.0, TB_HEIGHT - GAP)))
         return Column(top, Row(self.diagrams, right, weights=BOTTOM_W))
 
 
@@ -190,24 +189,26 @@ def kinematics_sheet(sol: Solution[Geometry]) -> tuple[str, Sheet]:
     )
     d = start(FORMAT, tb)
     compose(d, kin.tree, layout=lay)
-    for plan, view, note in ((kin.an.vp, kin.vplan, kin.vnote), (kin.an.ap, kin.aplan, kin.anote)):
-        _short_note(d, plan, lay[view], lay[note])
     return ("kinematics", d.finish())
 
 
-def _short_note(d: Drawing, plan: Plan, at: Placed, room: Placed) -> None:
-    """Under a plan (in ``room``): the vectors drawn as points because they are shorter than
-    two arrowheads, each with its value and length."""
-    scale = at.scale
-    assert scale is not None
+def _short_note(plan: Plan, k: float) -> tuple[View, ...]:
+    """The note under a plan drawn at the factor ``k``: the vectors drawn as points because
+    they are shorter than two arrowheads, each with its value and length (none when every
+    vector is an arrow, or ``k`` is not known yet, 0: its room)."""
+    # the room is kept when no vector is short, so that whether a note is there does not swing
+    # the plans' factors from one arrangement to the next
+    if k == 0.0:
+        return (Spacer((10.0, NOTE_H)),)
     unit = WORDS("unit_v" if plan.kind == "v" else "unit_a")
-    short = [f"{s.vector.label} = {num(s.value, 3)} {unit} ({num(s.mm, 2)} {WORDS('mm')})"
-             for s in short_vectors(plan, scale)]  # fmt: skip
-    if short:
-        # placed by hand in the room kept under the plan (its text depends on the plan's
-        # factor, known only once the sheet is arranged): one line's rise below the room's top
-        text = WORDS("short", vectors="; ".join(short), mm=num(SHORT_MM, 2))
-        d.paragraph(text, at.box[0], room.box[1] + 2.5, at.box[2] - at.box[0], 2.5)
+    nb = "\u00a0"  # a value, its unit and its length in mm stay on one line
+    short = [f"{s.vector.label}{nb}={nb}{num(s.value, 3)}{nb}{unit} "
+             f"({num(s.mm, 2)}{nb}{WORDS('mm')})"
+             for s in short_vectors(plan, Scale(k, plan.kind))]  # fmt: skip
+    if not short:
+        return (Spacer((10.0, NOTE_H)),)
+    text = WORDS("short", vectors="; ".join(short), mm=num(SHORT_MM, 2))
+    return (Text(paragraph=text, width=EQUATIONS_W),)
 
 
 def _mechanism(v: Viewport, c: Construction, m: SixBar, an: Analysis) -> None:
@@ -268,6 +269,8 @@ def _panel(an: Analysis, m: SixBar, kv: float, ka: float) -> tuple[View, ...]:
     )
     for name, val, kk, check in vals:
         rows.append([name, num(val, 4), num(abs(val) / kk, 4) if kk else "0000", num(check, 4)])
+    # its columns as wide as their words plus 3 mm, not the general table's 3.4 mm: those
+    # 1.6 mm across the four columns are what the mechanism needs beside it for 1:5 (else 1:10)
     widths = [max(text_box(parse(row[i]), 2.5)[0] for row in rows) + 3.0 for i in range(4)]
     values = Table(rows, widths=widths, row_h=5.0, title=WORDS("values"))
     # the links' angular velocities and accelerations under it

@@ -7,8 +7,9 @@ A3 landscape:
   B, F and H drawn to scale, link 3's line of action (their common tangent), the lines of G_6
   and F_i through D, the point Q where R_36's line meets G_6's, P's line through Q, the point K
   where it meets F_i's line, and R_76's line from K tangent to the friction circle at H; the
-  forces as arrows along their lines (their senses), each outside the link it acts on; the angle
-  β; the links numbered;
+  forces as arrows on their lines at the view's stated μ_F (one too short there at a stated
+  larger μ_F*, its label starred), each outside the link it acts on; the angle β; the links
+  numbered;
 - the joints B, F, H enlarged at one GOST scale, each with the friction circle, the pin, the
   links' centre lines, the reaction touching the circle and the relative rotation it opposes;
 - the force triangle of the sleeve 2 (G_2 + R_32 + R_42 = 0) and the force polygon of arm 6
@@ -25,6 +26,7 @@ import math
 from dataclasses import replace
 from typing import TYPE_CHECKING
 
+from geomcad.forces import ForcePolygon
 from geomcad.geom import Vec
 from geomcad.sheet import Sheet, TitleBlock, Viewport, fmt_number, start
 from geomcad.sheet import views as V
@@ -39,9 +41,12 @@ from geomcad.sheet.compose import (
     arrange,
     compose,
 )
+from geomcad.sheet.drawing import SHORT_MM
 from geomcad.sheet.form import title_block_room, title_block_spacer
+from geomcad.sheet.free_body import LoadedFigure
 from geomcad.sheet.friction import FrictionJoint
 from geomcad.sheet.lang import Words, current
+from geomcad.sheet.loads import ForceScales, force_scales
 from geomcad.sheet.views import num
 
 from .p2013_7 import Geometry
@@ -53,9 +58,9 @@ if TYPE_CHECKING:
 
 WORDS = Words(__package__, "sheets_2013_7")
 
-#: Force arrows on the mechanism drawing are this long (mm): they show lines and senses only,
-#: the magnitudes are read off the force plans.
-ARROW_MM = 14.0
+#: The longest force arrow on the mechanism drawing (mm): its μ_F is the smallest nice one at
+#: which the largest force is at most this long.
+LOAD_MM = 20.0
 
 
 def scales(sol: Solution[Geometry]) -> dict[str, float]:
@@ -64,6 +69,7 @@ def scales(sol: Solution[Geometry]) -> dict[str, float]:
     tree, views = _tree(sol)
     lay = arrange(tree, Field.of_format("A3"))
     out = {"l": lay[views["mech"]].scale.k, "F": lay.scale("F").k}  # type: ignore[union-attr]
+    out["F_mech"] = mech_forces(sol.data).k
     if "joints" in lay.groups:
         out["j"] = lay.scale("joints").k
     return out
@@ -78,6 +84,29 @@ def extent(geo: Geometry) -> tuple[float, float, float, float]:
     pts = [B, F, H, run.Q, run.K, Vec(0.0, 0.0), Vec(0.0, B.y), D + Vec(rb, rb), D - Vec(rb, rb)]
     x0, y0, x1, y1 = V.extent_of(pts)
     return V.extent_of(pts, 0.08 * max(x1 - x0, y1 - y0))
+
+
+def _magnitudes(geo: Geometry) -> dict[str, float]:
+    """The forces drawn on the mechanism (N), by name: their magnitudes off the force plans."""
+    run = geo.run
+
+    def size(poly: ForcePolygon, name: str) -> float:
+        vec_ = poly[name]
+        return float((vec_.head - vec_.tail).norm)
+
+    return {
+        "G_6": size(run.poly6, "G_6"),
+        "F_i": size(run.poly6, "F_i"),
+        "R_36": size(run.poly6, "R_36"),
+        "R_76": size(run.poly6, "R_76"),
+        "R_32": size(run.tri2, "R_32"),
+    }
+
+
+def mech_forces(geo: Geometry) -> ForceScales:
+    """The force scales of the mechanism drawing: μ_F so that the largest force is at most
+    :data:`LOAD_MM` long, and a larger μ_F* for those shorter than two arrowheads there."""
+    return force_scales(_magnitudes(geo).values(), LOAD_MM)
 
 
 def ball_radius(l_DH: float) -> float:
@@ -106,9 +135,11 @@ def _tree(sol: Solution[Geometry]) -> tuple[Node, dict[str, View]]:
     """The sheet's views and how they share the field."""
     geo = sol.data
     run, free = geo.run, geo.free
-    mech = Figure(
-        extent(geo), lambda v: _mechanism(v, geo), title=WORDS("mech"), margin=5.0, weight=4.0
-    )
+    fs = mech_forces(geo)
+    mech = LoadedFigure(
+        extent(geo), lambda v: _mechanism(v, geo, fs), fs, title=WORDS("mech"), margin=5.0,
+        weight=4.0,
+    )  # fmt: skip
     # the joints enlarged (one scale), or a note where there are no friction circles
     if run.rho > 0.0:
         S = Vec(0.0, geo.B.y)
@@ -169,10 +200,10 @@ def _tree(sol: Solution[Geometry]) -> tuple[Node, dict[str, View]]:
 # -- the mechanism --------------------------------------------------------------------------------
 
 
-def _mechanism(v: Viewport, geo: Geometry) -> None:
+def _mechanism(v: Viewport, geo: Geometry, fs: ForceScales) -> None:
     """The half-governor with its friction circles, the lines of action, Q, K and β; the
-    forces as arrows of one length along their lines (their senses; their magnitudes are on
-    the plans), each on its line outside the link it acts on, its head at its point."""
+    forces as arrows at the view's μ_F (a short one at the stated μ_F*, its label starred),
+    each on its line outside the link it acts on, its head at its point."""
     run = geo.run
     k = v.scale
     _x0, y0, _x1, y1 = extent(geo)
@@ -212,21 +243,35 @@ def _mechanism(v: Viewport, geo: Geometry) -> None:
     v.line_over(run.R76_line, [run.K, t76], "result", over=8.0)
     for q in (run.Q, run.K):
         v.dot(q, "result")
-    # the forces, drawn along their lines at a fixed length (senses, not magnitudes)
-    m = k.model(ARROW_MM)
+    # the forces on their lines, each |F|/μ_F long at its tier's μ_F (the label starred there)
+    mags = _magnitudes(geo)
+
+    def m(name: str) -> tuple[float, str]:
+        tier = fs.tier(mags[name])
+        if tier is None:  # a zero force (round-off): nothing drawn, its 0 is in the tables
+            return 0.0, ""
+        return k.model(mags[name] / fs.scales[tier].k), fs.mark(tier)
+
     u36 = run.link3.line.d
-    _force(v, D, D + Vec(0.0, -m), "G_6", (1.0, -1.0))
-    _force(v, D, D + Vec(m, 0.0), WORDS("Phi6"), (1.0, 1.0))
+    m6, s6 = m("G_6")
+    _force(v, D, D + Vec(0.0, -m6), "G_6" + s6, (1.0, -1.0))
+    mi, si = m("F_i")
+    _force(v, D, D + Vec(mi, 0.0), WORDS("Phi6") + si, (1.0, 1.0))
     # R_36 and R_32 act along link 3's line: drawn beyond F and below B, off the link
     # R_36 named beside its shaft's middle, on the side away from arm 6 (its head at F is
     # crowded by the arm, link 3 and F's name)
-    tail36 = run.link3.touch_b - u36 * m
-    v.arrow(tail36, run.link3.touch_b, "vector")
-    side = u36.perp() if u36.perp().dot(D - F) < 0.0 else -u36.perp()
-    v.label((tail36 + run.link3.touch_b) * 0.5, "R_{36}", prefer=(side.x, side.y), clear=1.0)
-    _force(v, run.link3.touch_a - run.u32 * m, run.link3.touch_a, "R_{32}", (-1.0, -1.0))
+    m36, s36 = m("R_36")
+    if m36 > 0.0:
+        tail36 = run.link3.touch_b - u36 * m36
+        v.arrow(tail36, run.link3.touch_b, "vector")
+        side = u36.perp() if u36.perp().dot(D - F) < 0.0 else -u36.perp()
+        v.label((tail36 + run.link3.touch_b) * 0.5, "R_{36}" + s36, prefer=(side.x, side.y),
+                clear=1.0)  # fmt: skip
+    m32, s32 = m("R_32")
+    _force(v, run.link3.touch_a - run.u32 * m32, run.link3.touch_a, "R_{32}" + s32, (-1.0, -1.0))
     u76 = run.R76_line.d
-    _force(v, t76, t76 + u76 * m, "R_{76}", (-1.0, 1.0))
+    m76, s76 = m("R_76")
+    _force(v, t76, t76 + u76 * m76, "R_{76}" + s76, (-1.0, 1.0))
     # the angle β between R_76's line and the horizontal, at K
     left = run.K + Vec(-1.0 if u76.x < 0.0 else 1.0, 0.0) * k.model(16.0)
     up = run.K + (u76 if u76.y > 0.0 else -u76) * k.model(16.0)
@@ -252,6 +297,8 @@ def _mechanism(v: Viewport, geo: Geometry) -> None:
 
 
 def _force(v: Viewport, tail: Vec, head: Vec, name: str, prefer: tuple[float, float]) -> None:
+    if tail == head:  # a zero force
+        return
     v.arrow(tail, head, "vector")
     v.label(head, name, prefer=prefer, clear=0.5)
 
@@ -361,8 +408,8 @@ def _steps(sol: Solution[Geometry]) -> View:
 
 
 def _note() -> View:
-    """The one note no step records: how the forces are drawn on the scheme."""
-    return V.Text(paragraph=WORDS("note"), width=NOTE_WIDTH, height=2.5)
+    """The one note no step records: how the forces are drawn on the scheme (at its μ_F)."""
+    return V.Text(paragraph=WORDS("note", mm=num(SHORT_MM)), width=NOTE_WIDTH, height=2.5)
 
 
 #: How much (mm) of the title block's width the order of construction may run over: the

@@ -706,12 +706,10 @@ def _panel_fbd(sol: Solution[Data], data: Data, width: float = 140.0) -> tuple[N
     vals.append(("R_{32} = R_{23}", f"{num(abs(R.magnitudes['R_{32}']), 4)} {n}"))
     vals.append(("R_{03}", f"{num(abs(R.magnitudes['R_{03}']), 4)} {n}"))
     vals.append(("M_{02}", f"{num(abs(R.moment('M_{02}')), 4)} {nm}"))
-    if len(vals) % 2:
-        vals.append(("", ""))
-    load_, value = WORDS("load"), WORDS("value")
-    rows = [[load_, value, load_, value]]
-    rows += [[*vals[i], *vals[i + 1]] for i in range(0, len(vals), 2)]
-    others = V.Table(rows, widths=(28.0, 42.0, 28.0, 42.0), row_h=5.5, title=WORDS("other_loads"))
+    # read along the rows: each body's loads side by side, in the order they act
+    others = V.Table.of_entries(vals, (WORDS("load"), WORDS("value")), pairs=2, across=True,
+                                widths=(28.0, 42.0, 28.0, 42.0), row_h=5.5,
+                                title=WORDS("other_loads"))  # fmt: skip
     mb = R.moment("M_b")
     lines = (
         WORDS("fbd_1"),

@@ -103,3 +103,28 @@ def test_a_position_where_the_dyad_cannot_close_names_the_step() -> None:
     # and a coupler too short to reach the rocker's circle
     with pytest.raises(ConstructionError, match=r'step "B = circle\(A, l2\) ∩ circle\(O2, l3\)"'):
         analyse(replace(m, l2=0.01), 1.0, 1.0)
+
+
+def test_short_vector_notes_follow_the_plans_factors() -> None:
+    """Under each plan the note names exactly the vectors shorter than two arrowheads at the
+    factor the plan is drawn at, each with its length there (a text view of the layout)."""
+    from geomcad_constructions.sheets_2013_6_kin import _Kin
+
+    from geomcad.sheet import Scale
+    from geomcad.sheet.lang import language
+    from geomcad.sheet.settle import factor_of
+    from geomcad.sheet.short import short_vectors
+    from geomcad.sheet.views import num
+
+    sol = geomcad.solve("2013-6")
+    with language("ru"):
+        kin = _Kin(sol)
+        sheet = dict(sol.sheets())["kinematics"]
+    text = " ".join(t.text for t in sheet.texts())
+    total = 0
+    for plan, view in ((kin.an.vp, kin.vplan), (kin.an.ap, kin.aplan)):
+        shorts = short_vectors(plan, Scale(factor_of(kin.layout, view), plan.kind))
+        total += len(shorts)
+        for s in shorts:
+            assert f"({num(s.mm, 2)}\u00a0мм)" in text, s.vector.label
+    assert total > 0 and text.count("\u00a0мм)") == total

@@ -620,3 +620,29 @@ def test_the_order_is_written_from_the_recorded_steps(changes: dict[str, float],
         assert "BF" in text
     # no hand-written order is left in the words
     assert not [k for k in WORDS.table() if k.startswith("step_")]
+
+
+def test_mechanism_forces_are_drawn_at_the_stated_mu_F(seed_sheet: Sheet) -> None:
+    """Each force on the half-governor is an arrow |F|/μ_F long at the μ_F its caption states,
+    the weight G_6 (under two arrowheads at it) at the stated larger μ_F*, its label starred."""
+    sol = geomcad.solve(PID)
+    run, k_F = sol.data.run, sol.scales["F_mech"]
+    words = [t.text for t in seed_sheet.texts()]
+    assert k_F == 5.0
+    assert any(w.startswith("Правая половина") and w.endswith("μF = 5 Н/мм") for w in words)
+    assert "μF* = 0,5 Н/мм" in words
+    mags = {
+        "G_6": (9.81, 0.5),
+        "F_i": (run.F_i, k_F),
+        "R_76": (run.R76, k_F),
+        "R_32": (run.R32, k_F),
+        "R_36": (run.R32, k_F),
+    }  # link 3 is a two-force link
+    vec = [it for it in seed_sheet.items if isinstance(it, Polyline) and it.role == "vector"]
+    shafts = [it for it in vec if not it.closed and len(it.points) == 2]
+    heads = [it for it in vec if it.closed]
+    lengths = [math.dist(s.points[0], hd.points[0]) for s in shafts for hd in heads]
+    for name, (F, k) in mags.items():
+        assert any(abs(x - F / k) < 1e-9 for x in lengths), name
+    labels = {t.text for t in seed_sheet.texts() if t.role == "label"}
+    assert "G6*" in labels and "Ф6" in labels

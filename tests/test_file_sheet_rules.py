@@ -17,6 +17,7 @@ import geomcad
 from geomcad.files import code
 from geomcad.linkage.analysis import analyse
 from geomcad.linkage.solution import solve
+from geomcad.sheet import fmt_number
 from geomcad.sheet.drawing import SHORT_MM
 from geomcad.sheet.linkage_forces import force_position, load_name
 from geomcad.sheet.loads import force_scales
@@ -48,7 +49,8 @@ def test_force_scales_never_leave_a_force_too_short() -> None:
     assert fs.tier(forces[-1]) is None  # round-off of a zero force
     # every scale is stated in the caption, the marks in order
     assert fs.caption() == "μ_F = 200 Н/мм"
-    assert fs.further().startswith("μ_F* = 20, μ_F** = 2, ") and fs.further().endswith(" Н/мм")
+    further = fs.further()
+    assert further.startswith("μ_F^{*} = 20, μ_F^{**} = 2, ") and further.endswith(" Н/мм")
     # forces within one μ: one scale, no mark
     one = force_scales([100.0, 60.0, 40.0], 24.0)
     assert len(one.scales) == 1 and not one.tiered and one.mark(0) == ""
@@ -323,3 +325,25 @@ def test_drafting_rules() -> None:
         far = max(P.pos["B"].dist(P.pos["C"]), 1.15 * P.pos["A"].dist(P.pos["C"]))
         assert end.dist(P.pos["C"]) == pytest.approx(far, rel=1e-9)
     assert checked >= 2 * len(s.positions)  # O and C in every position
+
+
+def test_the_star_of_a_further_scale_is_a_superscript() -> None:
+    """The mark of a force at a larger μ_F is a raised star (osifont sets ``*`` on the line at
+    the height of ``=``), in the force's label and in the μ_F* it is drawn at."""
+    fs = force_scales([1000.0, 100.0, 10.0], 24.0)
+    assert [r.shift for r in parse("R_{03}" + fs.mark(1))] == ["base", "sub", "sup"]
+    assert parse("R_{03}" + fs.mark(2))[-1].text == "**"
+    assert all(r.shift == "sup" for r in parse(fs.further()) if "*" in r.text)
+
+
+def test_the_free_body_note_states_both_force_scales() -> None:
+    """The dynamics sheets' note names μ_F and, by value, the μ_F* of the short forces."""
+    from geomcad.sheet.free_body import scales_of, short_note
+
+    sol = geomcad.solve("kulisa-23110713")
+    k_F = sol.scales["F"]
+    fs = scales_of(sol.data.dynamic, k_F)
+    assert fs.tiered
+    note = short_note(k_F, sol.data.dynamic)
+    assert note.startswith(f"μ_F = {fmt_number(k_F)} ")
+    assert f"μ_F^{{*}} = {fmt_number(fs.scales[1].k)} " in note

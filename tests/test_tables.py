@@ -116,3 +116,19 @@ def test_a_table_filled_to_a_width_keeps_its_columns_in_proportion() -> None:
     wide = Table([["a", "bb"], ["1", "22"]], fill=3.0 * sum(narrow.widths))
     assert wide.widths == pytest.approx([3.0 * w for w in narrow.widths])
     assert Table([["a", "bb"]], fill=1.0).widths == narrow.widths  # never narrower
+
+
+def test_groups_side_by_side_read_down_or_across() -> None:
+    """Five entries in two groups of columns: read down the first group, then the next (the
+    default), or along the rows (``across``); a blank pair fills the last row either way."""
+    from geomcad.sheet.views import side_by_side
+
+    entries = [[f"q{i}", str(i)] for i in range(1, 6)]
+    down = side_by_side(entries, 2)
+    assert [r[0::2] for r in down] == [["q1", "q4"], ["q2", "q5"], ["q3", ""]]
+    across = side_by_side(entries, 2, across=True)
+    assert [r[0::2] for r in across] == [["q1", "q2"], ["q3", "q4"], ["q5", ""]]
+    t = Table.of_entries(entries, ("Нагрузка", "Значение"), pairs=2, across=True)
+    assert t.rows[0] == ["Нагрузка", "Значение"] * 2
+    assert t.rows[1:] == across
+    assert Table.of_entries(entries, ("a", "b"), pairs=2).rows[1:] == down

@@ -10,12 +10,14 @@ same way. Its words are in ``strings/<lang>/free_body.toml``."""
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
 
 from geomcad import tol
 from geomcad.geom import Vec
-from geomcad.sheet import Scale, Viewport
+from geomcad.sheet import Drawing, Scale, Viewport
+from geomcad.sheet.compose import TITLE_LEAD, Extent, Figure, Placed
 from geomcad.sheet.drawing import SHORT_MM
 from geomcad.sheet.lang import Words
 from geomcad.sheet.loads import MOMENT_SWEEP, ForceScales, force, force_scales, moment
@@ -73,11 +75,48 @@ def scales_of(reactions: Any, k_F: float) -> ForceScales:
 
 def short_note(k_F: float, reactions: Any = None) -> str:
     """The sheet's words for the scales of the forces: every force an arrow at μ_F, those
-    too short there at the stated μ_F* (their labels marked *)."""
+    too short there at the larger μ_F* (μ_F** …) it states by value (their labels starred)."""
     fs = scales_of(reactions, k_F) if reactions is not None else None
     if fs is None or not fs.tiered:
         return WORDS("short_none", k_F=num(k_F))
-    return WORDS("short_note", mm=num(SHORT_MM), k_F=num(k_F), scales=fs.caption())
+    return WORDS("short_note", mm=num(SHORT_MM), k_F=num(k_F), scales=fs.further())
+
+
+#: The height (mm) of the line under a view's caption that states its further μ_F.
+FURTHER_H = 2.5
+
+
+class LoadedFigure(Figure):
+    """A problem's own figure (:class:`~geomcad.sheet.compose.Figure`) with forces drawn on it
+    at the force scales ``fs``: its caption states the view's μ_F after the length scale, and a
+    line under it the larger μ_F* (μ_F** …) of the forces too short at μ_F (their labels
+    starred); ``draw_fn`` draws each force at ``fs.scales[fs.tier(F)]``, never a dot, never a
+    fixed length."""
+
+    def __init__(
+        self, box: Extent, draw_fn: Callable[[Viewport], None], fs: ForceScales, **kw: Any
+    ) -> None:
+        super().__init__(box, draw_fn, **kw)
+        self.fs = fs
+
+    def title_room(self) -> float:
+        if not self.fs.tiered:
+            return super().title_room()
+        return (
+            super().title_room()
+            + FURTHER_H * TITLE_LEAD
+            + self.fs.further_rise(FURTHER_H)
+            - FURTHER_H
+        )
+
+    def caption(self, scale: Scale | None) -> str:
+        return f"{super().caption(scale)};  {self.fs.caption()}"
+
+    def draw(self, d: Drawing, at: Placed) -> None:
+        if self.fs.tiered:
+            top = at.box[1] + self.title_height * TITLE_LEAD + self.fs.further_rise(FURTHER_H)
+            d.text(self.fs.further(), (at.box[0], top), FURTHER_H)
+        super().draw(d, at)
 
 
 @dataclass(frozen=True)

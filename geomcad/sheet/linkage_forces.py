@@ -304,13 +304,13 @@ SCALES_H = 2.5
 def further_room(fs: ForceScales) -> float:
     """The room (mm) of the line under a view's caption that states the view's further μ_F
     (:meth:`ForceScales.further`); 0 when every force is at the view's own μ_F."""
-    return SCALES_H * TITLE_LEAD if fs.tiered else 0.0
+    return SCALES_H * TITLE_LEAD + fs.further_rise(SCALES_H) - SCALES_H if fs.tiered else 0.0
 
 
 def draw_further(d: Drawing, at: Placed, view: View, fs: ForceScales) -> None:
     """The view's further μ_F, on a line of its own under its caption."""
     if fs.tiered:
-        top = at.box[1] + view.title_height * TITLE_LEAD + SCALES_H
+        top = at.box[1] + view.title_height * TITLE_LEAD + fs.further_rise(SCALES_H)
         d.text(fs.further(), (at.box[0], top), SCALES_H)
 
 

@@ -58,8 +58,10 @@ class ForceScales:
 
     @staticmethod
     def mark(tier: int) -> str:
-        """The mark of a label drawn at scale ``tier`` ("" at the view's own μ_F)."""
-        return MARK * tier
+        """The mark of a label drawn at scale ``tier`` ("" at the view's own μ_F): its stars as
+        a superscript (``R_{03}^{*}``), where a star reads as one; on the line osifont sets
+        ``*`` at the height of ``=``."""
+        return f"^{{{MARK * tier}}}" if tier > 0 else ""
 
     def caption(self) -> str:
         """The view's own μ_F as its caption states it: ``μ_F = 100 Н/мм``."""
@@ -79,6 +81,13 @@ class ForceScales:
         parts = [t.replace(" = ", f"{self.mark(i)} = ", 1) for i, t in enumerate(texts, 1)]
         heads = [p[: -len(unit)].rstrip() if p.endswith(unit) else p for p in parts[:-1]]
         return ", ".join([*heads, parts[-1]])
+
+    def further_rise(self, height: float) -> float:
+        """How far (mm) the line of :meth:`further` at cap height ``height`` reaches above its
+        baseline: its stars are superscripts, above the capitals."""
+        from geomcad.sheet.text import box, parse
+
+        return box(parse(self.further()), height)[1] if self.tiered else height
 
     @property
     def tiered(self) -> bool:

@@ -971,6 +971,7 @@ class Table(View):
         first: str = "",
         head: Sequence[str] | None = None,
         transpose: bool = False,
+        across: bool = False,
         **kw: Any,
     ) -> Table:
         """A table of the values of ``specs`` (a problem's ``Param`` or ``ResultSpec``) found in
@@ -984,7 +985,8 @@ class Table(View):
         ``style``: ``"column"`` quantity | value | unit; ``"value"`` quantity | value with its
         unit; ``"label"`` "quantity, unit" | value; ``"equation"`` one cell "l_{AB} = 0,1 м".
         ``pairs`` > 1 sets that many groups of columns side by side (read down the first, then
-        the next). ``extra = (heading, cell(spec, value))`` adds a column (e.g. a length on the
+        the next; ``across``: along the rows, left to right). ``extra = (heading, cell(spec,
+        value))`` adds a column (e.g. a length on the
         plan). ``first`` is the first column's heading (default "Параметр" for a problem's
         ``Param``, else "Величина"); ``head`` replaces the whole heading row (every group's).
         ``transpose``: the quantities in a heading row, their values in the row under it (use
@@ -1028,20 +1030,27 @@ class Table(View):
             if extra is not None:
                 head.append(extra[0])
             head = list(head) * n
-        per = -(-len(entries) // n)
-        blank = [""] * len(entries[0]) if entries else []
-        rows = [list(head)]
-        for i in range(per):
-            line: list[str] = []
-            for j in range(n):
-                k = j * per + i
-                line += entries[k] if k < len(entries) else blank
-            rows.append(line)
+        rows = [list(head), *side_by_side(entries, n, across)]
         if not kw.get("header", True):
             rows = rows[1:]
         if transpose:  # the quantities across, their values (and extra cells) under them
             rows = [list(col) for col in zip(*entries, strict=True)]
         return Table(rows, **kw)
+
+    @staticmethod
+    def of_entries(
+        entries: Sequence[Sequence[str]],
+        head: Sequence[str],
+        pairs: int = 1,
+        across: bool = False,
+        **kw: Any,
+    ) -> Table:
+        """A table of ready-written entries (each a row's cells: ``(label, value)`` …) under
+        the heading ``head`` of one group, set in ``pairs`` groups of columns side by side as
+        :meth:`of_specs` sets them (read down, or with ``across`` along the rows)."""
+        n = max(1, pairs)
+        rows = [list(head) * n, *side_by_side([list(e) for e in entries], n, across)]
+        return Table(rows if kw.get("header", True) else rows[1:], **kw)
 
     @staticmethod
     def of_series(
@@ -1066,6 +1075,22 @@ class Table(View):
         n = max((len(c) for c in cells), default=0)
         rows = [head] + [[c[i] if i < len(c) else "" for c in cells] for i in range(n)]
         return Table(rows, **kw)
+
+
+def side_by_side(entries: Sequence[list[str]], n: int, across: bool = False) -> list[list[str]]:
+    """``entries`` (rows of cells) in ``n`` groups of columns side by side: the first group
+    read down, then the next; with ``across`` along the rows, left to right. Blank cells fill
+    the last row."""
+    per = -(-len(entries) // n)
+    blank = [""] * len(entries[0]) if entries else []
+    rows = []
+    for i in range(per):
+        line: list[str] = []
+        for j in range(n):
+            k = i * n + j if across else j * per + i
+            line += entries[k] if k < len(entries) else blank
+        rows.append(line)
+    return rows
 
 
 #: How :meth:`Table.of_specs` sets a value and its unit.
