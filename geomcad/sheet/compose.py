@@ -686,56 +686,8 @@ def _grid_cells(node: Grid, box: Box, cols: int) -> list[tuple[Tree, Box]]:
     ]
 
 
-#: A size a subtree needs (mm: width, height) and the decisions that give it: per node, a
-#: :class:`Choice`'s item, a :class:`Grid`'s columns or a split's lengths along it.
-_Size = tuple[float, float, tuple[tuple[int, "tuple[float, ...] | int"], ...]]
-#: At most this many sizes of a subtree are kept (the Pareto front, thinned evenly).
-FRONT = 12
-#: Rounds of the last touch on the open splits (:meth:`_Solver._polish`).
-POLISH_ROUNDS = 2
-#: Steps of the bisection on the common level (a drawing's share of its size alone on the field).
-LEVEL_STEPS = 12
-
-
-def _front(sizes: Sequence[_Size]) -> list[_Size]:
-    """The sizes no other is smaller than in both directions, narrowest first (at most
-    :data:`FRONT`, evenly thinned, the extremes kept)."""
-    out: list[_Size] = []
-    for s in sorted(sizes, key=lambda s: (s[0], s[1])):
-        if not out or s[1] < out[-1][1] - tol.SHEET_MM:
-            out.append(s)
-    if len(out) > FRONT:
-        step = (len(out) - 1) / (FRONT - 1)
-        out = [out[round(i * step)] for i in range(FRONT)]
-    return out
-
-
-def _finer(k: float, series: Series) -> float:
-    """The next factor of ``series`` finer (a larger drawing) than ``k``, or ``k`` itself at
-    the end of GOST's list."""
-    if series == "free":
-        return k / 1.25
-    if series == "gost":
-        i = bisect.bisect_left(_GOST_K, k * (1 - tol.REL_LENGTH))
-        return _GOST_K[i - 1] if i > 0 else k
-    mantissas = NICE if series == "nice" else PLAN_NICE
-    e = math.floor(math.log10(k))
-    below = [m * 10.0**x for x in (e - 1, e) for m in mantissas]
-    return max(c for c in below if c < k * (1 - tol.REL_LENGTH))
-
-
-def _at_most(k: float, q: Quantity, series: Series) -> float:
-    """The coarsest factor of ``series`` that is at most ``k`` (a scale a view must reach)."""
-    r = round_scale(k, q, series).k
-    return r if r <= k * (1 + tol.REL_LENGTH) else _finer(r, series)
-
-
 class _Solver:
-    """The layout decided from the views' extents (see the module's docstring): the sizes each
-    subtree needs at given scales (:meth:`need`), the largest common level at which the tree
-    fits the field (a bisection), the scales rounded to their series and then grown step by
-    step while the field has room; each trial laid out once (:meth:`run`) to see that it fits
-    the field with its form's boxes."""
+    """The search over the open splits (see the module's docstring)."""
 
     def __init__(self, tree: Tree, field_: Field) -> None:
         self.tree = tree
@@ -750,52 +702,19 @@ class _Solver:
                 self.choice[id(nd)] = nd.cols or 1
             else:
                 self.choice[id(nd)] = nd.weights or (1.0,) * len(nd.items)
-        #: Each node's subtree's nodes, and the placements of subtrees already laid out (by
-        #: node, box and the subtree's choices).
+
+        #: Each node's subtree's nodes, and the placements of subtrees already evaluated (by
+        #: node, box and the subtree's choices): a search step changes one node, and the rest
+        #: of the tree is replayed from here.
         self.sub: dict[int, list[int]] = {}
         self._subtree(tree)
         self.memo: dict[tuple[object, ...], _Part] = {}
-        #: Layouts laid out and checked (for the benchmark and the tests).
+        self.options: dict[tuple[object, ...], list[tuple[float, ...] | int]] = {}
+        self.scored: dict[tuple[object, ...], tuple[_Part, tuple[float, ...]]] = {}
+        #: Layouts scored (for the benchmark and the tests).
         self.evaluations = 0
-        x0, y0, x1, y1 = field_.box
-        self.fw, self.fh = x1 - x0, y1 - y0
-        # each scale group: its series, its scale alone on the field, the scale the task
-        # fixes as the finest, and the scale its readable lengths ask for
-        self.fill: dict[str, float] = {}
-        self.least: dict[str, float] = {}
-        self.floor: dict[str, float] = {}
-        self.series: dict[str, tuple[Quantity, Series]] = {}
-        self.weight: dict[str, float] = {}
-        #: the overflow (mm) a trial may have: 0 unless nothing fits whole
-        self.allow = 0.0
-        #: the choices of the last trial that fitted, and the box it was laid out in: the
-        #: field, or one of its parts clear of the form's boxes
-        self.taken: dict[int, tuple[float, ...] | int] = {}
-        self.box = field_.box
-        clear = sorted(_cut(field_.box, field_.obstacles), key=lambda b: -_area(b))
-        self.boxes = [field_.box, *(b for b in clear if b != field_.box)]
-        #: the stretch views (by group): the share of its preferred size each has on the
-        #: field alone
-        self.stretch: dict[str, float] = {}
-        for v in _unique_views(tree):
-            if v.kind == "stretch":
-                pw, ph = v.stretch()[1]
-                self.stretch[_group(v)] = min(1.0, self.fw / pw, self.fh / ph)
-                self.weight[_group(v)] = v.weight
-            if v.kind != "scaled":
-                continue
-            g = _group(v)
-            ext = _ext(v)
-            assert ext is not None
-            w, h = self.fw - 2 * v.margin, self.fh - 2 * v.margin - v.title_room()
-            k = max((ext[2] - ext[0]) / max(w, 1.0), (ext[3] - ext[1]) / max(h, 1.0))
-            self.fill[g] = max(self.fill.get(g, 0.0), k)
-            self.least[g] = max(self.least.get(g, 0.0), v.least_k)
-            self.series.setdefault(g, (v.quantity, v.series))
-            self.weight[g] = max(self.weight.get(g, 0.0), v.weight)
-            if v.readable > 0.0:
-                f = v.readable / v.readable_mm
-                self.floor[g] = min(self.floor.get(g, math.inf), f)
+        self._choices = [id(nd) for nd in self.nodes if isinstance(nd, Choice)]
+        self._laid_ids: dict[tuple[object, ...], list[int]] = {}
 
     def _collect(self, t: Tree) -> None:
         if isinstance(t, Node):
@@ -812,251 +731,45 @@ class _Solver:
         self.sub[id(t)] = ids
         return ids
 
-    # --- sizes -----------------------------------------------------------------------------
-
-    def need(self, t: Tree, ks: Mapping[str, float]) -> list[_Size]:
-        """The sizes (mm) in which ``t`` draws its scaled views at the scales ``ks`` (by
-        group), its stretch views at their shares ``ks`` of their preferred size (never below
-        their least), its fixed views and titles whole."""
-        if isinstance(t, View):
-            return [self._need_view(t, ks)]
-        if isinstance(t, Choice):
-            ch = self.choice[id(t)]
-            assert isinstance(ch, int)
-            return self.need(t.items[ch], ks)
-        kids = [self.need(it, ks) for it in t.items]
-        top = t.title_room()
-        least_w = _node_title_width(t) if t.title else 0.0
-        out: list[_Size] = []
-        if isinstance(t, Grid):
-            n = len(t.items)
-            # every cell holds the largest child: each child at its smallest size
-            best = [min(kid, key=lambda s: s[0] * s[1]) for kid in kids]
-            cw, chh = max(s[0] for s in best), max(s[1] for s in best)
-            decs = tuple(d for s in best for d in s[2])
-            for cols in [t.cols] if t.cols else range(1, n + 1):
-                rows = math.ceil(n / cols)
-                w = max(cols * cw + t.gap * (cols - 1), least_w)
-                out.append((w, rows * chh + t.gap * (rows - 1) + top, ((id(t), cols), *decs)))
-            return _front(out)
-        horizontal = isinstance(t, Row)
-        fixed, flex = _fixed(t, horizontal)
-        gaps = t.gap * (len(t.items) - 1)
-        # (along, across, the lengths along so far, decisions)
-        acc: list[tuple[float, float, tuple[float, ...], tuple[Any, ...]]] = [(0.0, 0.0, (), ())]
-        for kid in kids:
-            opts = [(w, h, d) if horizontal else (h, w, d) for w, h, d in kid]
-            nxt = [(a0 + a, max(c0, c), (*lens, a), d0 + d)
-                   for a0, c0, lens, d0 in acc for a, c, d in opts]  # fmt: skip
-            nxt.sort(key=lambda s: (s[0], s[1]))
-            acc = []
-            for s in nxt:
-                if not acc or s[1] < acc[-1][1] - tol.SHEET_MM:
-                    acc.append(s)
-            if len(acc) > FRONT:
-                step = (len(acc) - 1) / (FRONT - 1)
-                acc = [acc[round(j * step)] for j in range(FRONT)]
-        for _, across, lens, decs in acc:
-            if t.weights is not None and flex:
-                total_w = sum(t.weights[i] for i in flex)
-                share = max(lens[i] * total_w / t.weights[i] for i in flex)
-                along = gaps + sum(fixed.values()) + share
-                dec: tuple[Any, ...] = decs
-            else:
-                along = gaps + sum(lens)
-                w8 = tuple(max(ln, tol.SHEET_MM) for ln in lens)
-                dec = ((id(t), w8), *decs)
-            w, h = (along, across) if horizontal else (across, along)
-            out.append((max(w, least_w), h + top, dec))
-        return _front(out)
-
-    def _need_view(self, v: View, ks: Mapping[str, float]) -> _Size:
-        kind = v.kind
-        tw = _title_width(v)
-        if kind == "fixed":
-            nat = natural_of(v)
-            assert nat is not None
-            return nat[0], nat[1], ()
-        if kind == "stretch":
-            (lw, lh), (pw, ph) = v.stretch()
-            s = ks[_group(v)]  # the share of its preferred size
-            w, h = max(lw, min(pw, pw * s)), max(lh, min(ph, ph * s))
-        else:
-            ext = _ext(v)
-            assert ext is not None
-            k = ks[_group(v)]
-            w, h = (ext[2] - ext[0]) / k, (ext[3] - ext[1]) / k
-        return max(w + 2 * v.margin, tw), h + 2 * v.margin + v.title_room(), ()
-
-    # --- trials ----------------------------------------------------------------------------
-
-    def trial(self, ks: Mapping[str, float]) -> _Part | None:
-        """The tree laid out at the scales ``ks`` (and its stretch views at their shares), if
-        an arrangement of the sizes it needs fits the field with its form's boxes (overflowing
-        no more than :attr:`allow`), else None."""
-        sizes = self.need(self.tree, ks)
-        # the sizes that fit first, those with the most room to spare (the form's boxes may
-        # take some) before the others
-        sizes.sort(key=lambda s: (max(0.0, s[0] - self.fw) + max(0.0, s[1] - self.fh),
-                                  -min(self.fw - s[0], self.fh - s[1])))  # fmt: skip
-        for w, h, decs in sizes[:3]:
-            if self.allow <= 0.0 and (w > self.fw + tol.SHEET_MM or h > self.fh + tol.SHEET_MM):
-                break
-            for i, d in decs:
-                self.choice[i] = d
-            # the whole field (its form's boxes cut from the views they meet), else a part of
-            # it clear of them (the room beside the title block left empty)
-            for box in self.boxes:
-                if box is not self.field.box and (
-                    w > box[2] - box[0] + tol.SHEET_MM or h > box[3] - box[1] + tol.SHEET_MM
-                ):
-                    continue
-                part = self.run(self.tree, box)
-                self.evaluations += 1
-                if _overflow(part) <= self.allow + tol.SHEET_MM and self._reaches(part, ks):
-                    self.taken = dict(self.choice)
-                    self.box = box
-                    return part
-        return None
-
-    def _reaches(self, part: _Part, ks: Mapping[str, float]) -> bool:
-        for _, leaf in part[0]:
-            if leaf.kind == "scaled" and leaf.raw_k > ks[leaf.group] * (1 + tol.REL_LENGTH):
-                return False
-        return True
-
-    def _level_ks(self, level: float, floors: bool) -> dict[str, float]:
-        """Every scale at ``level`` of the view's scale alone on the field (never finer than
-        its ``least_k``; with ``floors``, at least as fine as its readable lengths ask), every
-        stretch view at ``level`` of its share alone."""
-        out = {}
-        for g, k in self.fill.items():
-            k = k / level if k > 0.0 else 0.0
-            if floors and g in self.floor:
-                k = min(k, self.floor[g])
-            out[g] = max(k, self.least[g], tol.SHEET_AREA)
-        for g, share in self.stretch.items():
-            out[g] = share * level
+    def _options(self, nd: Node, fine: bool = False) -> list[tuple[float, ...] | int]:
+        """A node's options: a Choice's items, a Grid's column counts, or the splits of a row
+        or column: its flexible items' shares in coarse steps, or (``fine``) in quarter steps
+        within half a coarse step of the current split."""
+        if isinstance(nd, Choice):
+            return list(range(len(nd.items)))
+        if isinstance(nd, Grid):
+            return [nd.cols] if nd.cols else list(range(1, len(nd.items) + 1))
+        if nd.weights is not None:
+            return [nd.weights]
+        n = len(nd.items)
+        flex = [i for i, it in enumerate(nd.items) if natural_of(it) is None]
+        if len(flex) <= 1:
+            return [(1.0,) * n]
+        coarse = {2: 12, 3: 8, 4: 6}.get(len(flex), 4)
+        steps = coarse * (4 if fine else 1)
+        cur = self.choice[id(nd)]
+        known = self.options.get((id(nd), fine, cur))
+        if known is not None:  # the rounds come back to a node whose split has not moved
+            return known
+        assert isinstance(cur, tuple)
+        total = sum(cur[i] for i in flex)
+        share = [cur[i] / total for i in flex]
+        out: list[tuple[float, ...] | int] = []
+        for combo in itertools.product(range(1, steps), repeat=len(flex) - 1):
+            if sum(combo) >= steps:
+                continue
+            parts = (*combo, steps - sum(combo))
+            if fine and any(
+                abs(c / steps - sh) > 0.5 / coarse + tol.SHEET_MM
+                for c, sh in zip(parts, share, strict=True)
+            ):
+                continue
+            w = [1.0] * n
+            for i, c in zip(flex, parts, strict=True):
+                w[i] = float(c)
+            out.append(tuple(w))
+        self.options[(id(nd), fine, cur)] = out
         return out
-
-    def _rounded(self, ks: Mapping[str, float], floors: bool) -> dict[str, float]:
-        """The scales rounded to their series: up (coarser), or down where a floor asks."""
-        out = dict(ks)
-        for g in self.fill:
-            k = ks[g]
-            q, series = self.series[g]
-            if floors and g in self.floor and k <= self.floor[g] * (1 + tol.REL_LENGTH):
-                r = _at_most(k, q, series)
-                out[g] = r if r >= self.least[g] * (1 - tol.REL_LENGTH) else k
-            else:
-                try:
-                    out[g] = round_scale(k, q, series).k
-                except ParameterError:
-                    out[g] = k
-        return out
-
-    def _grow(self, ks: dict[str, float], g: str) -> dict[str, float] | None:
-        """``ks`` with group ``g`` a step larger: a scale the next of its series, a stretch
-        view's share by a quarter (at most its preferred size); None at the end."""
-        more = dict(ks)
-        if g in self.stretch:
-            if ks[g] >= 1.0 - tol.REL_LENGTH:
-                return None
-            more[g] = min(1.0, ks[g] * 1.25)
-            return more
-        if self.fill[g] <= 0.0:
-            return None
-        k = _finer(ks[g], self.series[g][1])
-        if k >= ks[g] or k < self.least[g] * (1 - tol.REL_LENGTH):
-            return None
-        more[g] = k
-        return more
-
-    def solve_once(self) -> tuple[_Part, tuple[float, ...]]:
-        """The layout at the current :class:`Choice` items: the common level (a bisection),
-        the scales rounded to their series, then each view a step larger while the field has
-        room (in rounds, the heavier views first)."""
-        lo, hi = 1e-3, 1.0
-        self.allow = 0.0
-        floors = bool(self.floor) and self.trial(self._level_ks(lo, True)) is not None
-        part = self.trial(self._level_ks(lo, floors))
-        if part is None:
-            # nothing fits whole even at the smallest scales: the least overflow allowed
-            sizes = self.need(self.tree, self._level_ks(lo, floors))
-            least: tuple[float, _Part] | None = None
-            for *_, decs in sizes:
-                for i, d in decs:
-                    self.choice[i] = d
-                p = self.run(self.tree, self.field.box)
-                if least is None or _overflow(p) < least[0]:
-                    least = _overflow(p), p
-            assert least is not None
-            self.allow = least[0]
-            part = self.trial(self._level_ks(lo, floors))
-            if part is None:
-                return least[1], _score(least[1])
-        self.taken = dict(self.choice)
-        for _ in range(LEVEL_STEPS):
-            mid = math.sqrt(lo * hi)
-            if self.trial(self._level_ks(mid, floors)) is not None:
-                lo = mid
-            else:
-                hi = mid
-        ks = self._rounded(self._level_ks(lo, floors), floors)
-        got = self.trial(ks)
-        if got is None:
-            ks = self._level_ks(lo, floors)
-            got = self.trial(ks)
-        part = got or part
-        order = sorted(self.weight, key=lambda g: (-self.weight[g], g in self.stretch))
-        for _ in range(12):
-            grown = False
-            for g in order:
-                more = self._grow(ks, g)
-                got = self.trial(more) if more is not None else None
-                if more is not None and got is not None:
-                    ks, part, grown = more, got, True
-            if not grown:
-                break
-        self.choice = dict(self.taken)
-        return self._polish(part)
-
-    def _polish(self, part: _Part) -> tuple[_Part, tuple[float, ...]]:
-        """The room left over shared along each open split as the score likes best: each
-        flexible child's share a fifth smaller or a quarter larger, kept where the score
-        (:func:`_score`) rises; :data:`POLISH_ROUNDS` rounds over the splits laid out."""
-        best = _score(part)
-        for _ in range(POLISH_ROUNDS):
-            improved = False
-            for nd in self._laid(self.tree):
-                if isinstance(nd, Choice | Grid) or nd.weights is not None:
-                    continue
-                flex = _fixed(nd, isinstance(nd, Row))[1]
-                if len(flex) < 2:
-                    continue
-                cur = self.choice[id(nd)]
-                assert isinstance(cur, tuple)
-                for i in flex:
-                    for f in (0.8, 1.25):
-                        w8 = (*cur[:i], cur[i] * f, *cur[i + 1 :])
-                        self.choice[id(nd)] = w8
-                        p = self.run(self.tree, self.box)
-                        self.evaluations += 1
-                        sc = _score(p)
-                        if sc > best:
-                            best, part, improved, cur = sc, p, True, w8
-                self.choice[id(nd)] = cur
-            if not improved:
-                break
-        return part, best
-
-    def _laid(self, t: Tree) -> Iterator[Node]:
-        """The nodes the current choices lay out."""
-        if isinstance(t, Node):
-            yield t
-            ch = self.choice[id(t)]
-            for it in [t.items[ch]] if isinstance(t, Choice) and isinstance(ch, int) else t.items:
-                yield from self._laid(it)
 
     def run(self, t: Tree, box: Box) -> _Part:
         """The subtree laid out in ``box`` at the current choices (memoised)."""
@@ -1089,40 +802,81 @@ class _Solver:
                 titles += inner
         return items, titles
 
+    def evaluate(self) -> tuple[_Part, tuple[float, ...]]:
+        """The layout of the current choices and its score; a set of choices the search
+        comes back to (the next round's sweep of an unmoved node) is scored once."""
+        key = tuple(self.choice[i] for i in self._laid())
+        done = self.scored.get(key)
+        if done is None:
+            part = self.run(self.tree, self.field.box)
+            done = self.scored[key] = (part, _score(part))
+            self.evaluations += 1
+        return done
+
+    def _laid(self) -> list[int]:
+        """The ids of the nodes :meth:`_active` yields, found once per choice of the
+        :class:`Choice` nodes (the only choices that change which nodes are laid out)."""
+        which = tuple(self.choice[i] for i in self._choices)
+        ids = self._laid_ids.get(which)
+        if ids is None:
+            ids = self._laid_ids[which] = [id(nd) for nd in self._active(self.tree)]
+        return ids
+
+    def _active(self, t: Tree) -> Iterator[Node]:
+        """The nodes the current choices lay out (a :class:`Choice`'s other arrangements are
+        not on the sheet: moving their splits changes nothing)."""
+        if isinstance(t, Node):
+            yield t
+            ch = self.choice[id(t)]
+            for it in [t.items[ch]] if isinstance(t, Choice) and isinstance(ch, int) else t.items:
+                yield from self._active(it)
+
+    def _descend(self) -> tuple[_Part, tuple[float, ...]]:
+        """Coordinate search over the splits and grid shapes, the choices held: in coarse
+        steps, then in fine steps near the coarse optimum. Only the nodes laid out are swept,
+        in the order of :attr:`nodes` (a node that two arrangements share is swept twice)."""
+        best_ev, best = self.evaluate()
+        laid = {id(nd) for nd in self._active(self.tree)}
+        for fine, rounds in ((False, 3), (True, 2)):
+            for _ in range(rounds):
+                improved = False
+                for nd in self.nodes:
+                    if (
+                        id(nd) not in laid
+                        or isinstance(nd, Choice)
+                        or (fine and isinstance(nd, Grid))
+                    ):
+                        continue
+                    opts = self._options(nd, fine)
+                    if len(opts) <= 1:
+                        continue
+                    keep = self.choice[id(nd)]
+                    for o in opts:
+                        if o == keep:
+                            continue
+                        self.choice[id(nd)] = o
+                        ev, sc = self.evaluate()
+                        if sc > best:
+                            best, best_ev, keep, improved = sc, ev, o, True
+                    self.choice[id(nd)] = keep
+                if not improved:
+                    break
+        return best_ev, best
+
     def solve(self) -> _Eval:
-        """The best layout over the :class:`Choice` nodes' items, each combination decided
-        once (:meth:`solve_once`) and the results compared by :func:`_score`."""
+        """The best layout over every combination of the :class:`Choice` nodes' options."""
         choices = [nd for nd in self.nodes if isinstance(nd, Choice)]
+        start = dict(self.choice)
         found: tuple[_Part, tuple[float, ...]] | None = None
         for combo in itertools.product(*(range(len(c.items)) for c in choices)):
+            self.choice = dict(start)
             for c, i in zip(choices, combo, strict=True):
                 self.choice[id(c)] = i
-            part, sc = self.solve_once()
+            ev, sc = self._descend()
             if found is None or sc > found[1]:
-                found = (part, sc)
+                found = (ev, sc)
         assert found is not None
         return _Eval(found[0])
-
-
-def _area(b: Box) -> float:
-    return (b[2] - b[0]) * (b[3] - b[1])
-
-
-def _overflow(part: _Part) -> float:
-    """How far (mm) the fixed views, the diagrams' least sizes and the titles overflow their
-    boxes."""
-    items, titles = part
-    bad = sum(leaf.bad for _, leaf in items)
-    for cell, node in titles:
-        bad += max(0.0, _node_title_width(node) - (cell[2] - cell[0]))
-    return bad
-
-
-def _unique_views(t: Tree) -> Iterator[View]:
-    if isinstance(t, View):
-        yield t
-    else:
-        yield from t.views()
 
 
 def _scales(ev: _Eval) -> dict[str, Scale]:

@@ -151,21 +151,11 @@ def fit(
                 return tree, z
             if not reached:
                 break  # smaller text does not bring the views to their scales
-    fmt, land = next(formats.candidates(order[-1:]))
-    field = Field.of_format(fmt, land)
-    # the size rules hold on the largest format too where they can: the wanted scales sought
-    # (the larger text first), and only where no text height reaches them given up
-    for h in dict.fromkeys((text_height(order[-1:]), SMALL_TEXT_H)):
-        tree, wants = make(h)
-        for v, k in wants.items():
-            v.readable = max(v.readable, k * v.readable_mm)
-        lay = arrange(tree, field)
-        if lay.fits and formats.meets(lay, wants):
-            return tree, formats.Sized(fmt, land, lay)
     tried: list[tuple[Tree, formats.Sized]] = []
     for h in dict.fromkeys((text_height(order[-1:]), SMALL_TEXT_H)):
         tree, _ = make(h)
-        tried.append((tree, formats.Sized(fmt, land, arrange(tree, field))))
+        fmt, land = next(formats.candidates(order[-1:]))
+        tried.append((tree, formats.Sized(fmt, land, arrange(tree, Field.of_format(fmt, land)))))
     # the larger text where it fits and costs the views at most TEXT_COST of the search's score
     big, small = tried[0][1].layout, tried[-1][1].layout
     if big.fits and (not small.fits or big.score[1] >= small.score[1] - TEXT_COST):
