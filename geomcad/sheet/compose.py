@@ -522,6 +522,7 @@ class _Info:
         "nat",
         "obst",
         "prefer",
+        "sized",
         "spacer",
         "title_room",
         "title_w",
@@ -548,11 +549,20 @@ class _Info:
         self.lengths: tuple[float, ...] = lengths
         self.obst = obstacles
         self.leaves: dict[Box, _Leaf] = v._memo.setdefault(("leaves", obstacles), {})
+        self.sized: dict[tuple[float, float], tuple[float, float, float]]
+        self.sized = v._memo.setdefault("sized", {})
 
     def place(self, cell: Box) -> _Leaf:
         """The leaf in ``cell`` (see :func:`_place`)."""
         leaf = self.leaves.get(cell)
         if leaf is None:
+            x0, y0, x1, y1 = cell
+            for o in self.obst:
+                if x0 < o[2] and o[0] < x1 and y0 < o[3] and o[1] < y1:
+                    break
+            else:  # clear of the form's boxes: the cell itself (as _cut gives it)
+                leaf = self.leaves[cell] = self.leaf(cell)
+                return leaf
             parts = _cut(cell, self.obst)
             best = (
                 parts[0]
@@ -566,13 +576,23 @@ class _Info:
         return leaf
 
     def leaf(self, cell: Box) -> _Leaf:
-        """The view's leaf in exactly ``cell`` (the arithmetic of :func:`_room`, :func:`_raw_k`,
+        """The view's leaf in exactly ``cell``: what it needs depends on the cell's size only
+        (asked once per size)."""
+        size = (cell[2] - cell[0], cell[3] - cell[1])
+        known = self.sized.get(size)
+        if known is None:
+            known = self.sized[size] = self.needs(*size)
+        bad, raw_k, area = known
+        return _Leaf(cell, self.kind, self.group, bad, raw_k, self.content, area, self.lengths)
+
+    def needs(self, width: float, height: float) -> tuple[float, float, float]:
+        """The overflow, the raw scale and the drawn area (stretch) of the view in a cell of
+        ``width`` × ``height`` (the arithmetic of :func:`_room`, :func:`_raw_k`,
         :func:`_stretch_fill`)."""
         kind = self.kind
-        width = cell[2] - cell[0]
         bad = max(0.0, self.title_w - width)
         w = width - 2.0 * self.margin
-        h = cell[3] - cell[1] - self.title_room - 2.0 * self.margin
+        h = height - self.title_room - 2.0 * self.margin
         raw_k, area = 0.0, 0.0
         if kind == "fixed":
             # (a spacer keeps room free of views: the form's boxes may fill it)
@@ -589,7 +609,7 @@ class _Info:
                 area = max(uw, 0.0) * max(uh, 0.0)
         else:
             raw_k = self.raw_k(w, h)
-        return _Leaf(cell, kind, self.group, bad, raw_k, self.content, area, self.lengths)
+        return bad, raw_k, area
 
     def room(self, cell: Box) -> tuple[float, float]:
         """:func:`_room`."""
@@ -773,17 +793,11 @@ def _grid_cells(node: Grid, box: Box, cols: int) -> list[tuple[Tree, Box]]:
     rows = math.ceil(n / cols)
     cw = (x1 - x0 - node.gap * (cols - 1)) / cols
     ch = (y1 - y0 - node.gap * (rows - 1)) / rows
+    xs = [x0 + c * (cw + node.gap) for c in range(cols)]
+    ys = [y0 + r * (ch + node.gap) for r in range(rows)]
     return [
-        (
-            it,
-            (
-                x0 + c * (cw + node.gap),
-                y0 + r * (ch + node.gap),
-                x0 + c * (cw + node.gap) + cw,
-                y0 + r * (ch + node.gap) + ch,
-            ),
-        )
-        for it, (r, c) in zip(node.items, (divmod(i, cols) for i in range(n)), strict=True)
+        (it, (xs[i % cols], ys[i // cols], xs[i % cols] + cw, ys[i // cols] + ch))
+        for i, it in enumerate(node.items)
     ]
 
 
