@@ -40,6 +40,7 @@ from __future__ import annotations
 
 import bisect
 import functools
+import gc
 import itertools
 import math
 import operator
@@ -1232,7 +1233,15 @@ def _fills(lay: Layout) -> list[float]:
 def arrange(tree: Tree, field_: Field) -> Layout:
     """Pack ``tree`` into ``field_`` and choose every scale (no drawing; see the module's
     docstring). :class:`ParameterError` when a view has no room at all."""
-    ev = _Solver(tree, field_).solve()
+    # the search allocates many small tuples and no cycles: the cyclic collector, which would
+    # scan the whole heap again and again meanwhile, waits till it is done
+    collect = gc.isenabled()
+    gc.disable()
+    try:
+        ev = _Solver(tree, field_).solve()
+    finally:
+        if collect:
+            gc.enable()
     scales = _scales(ev)
     lay = Layout(
         titles=ev.titles,
