@@ -40,8 +40,11 @@ from __future__ import annotations
 
 import bisect
 import functools
+import gc
 import itertools
 import math
+import operator
+import typing
 from collections.abc import Callable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
 from fractions import Fraction
@@ -498,19 +501,156 @@ _Part = tuple[tuple[tuple["View", "_Leaf"], ...], tuple[tuple[Box, "Node"], ...]
 def _place(v: View, cell: Box, obstacles: tuple[Box, ...]) -> _Leaf:
     """The view's leaf in ``cell``: the part of the cell clear of the obstacles where it does
     best (computed once per view and cell)."""
-    key = ("leaf", cell, obstacles)
-    leaf: _Leaf | None = v._memo.get(key)
-    if leaf is None:
-        parts = _cut(cell, obstacles)
-        best = (
-            parts[0]
-            if len(parts) == 1
-            else max(
-                parts, key=lambda c: (round(_leaf_score(v, c), 9), (c[2] - c[0]) * (c[3] - c[1]))
+    return _Info(v, obstacles).place(cell)
+
+
+class _Info:
+    """What the search needs of a view that no cell changes (asked once per search), and the
+    view's leaves on this field (by cell, kept on the view: another search of the same field
+    finds them)."""
+
+    __slots__ = (
+        "content",
+        "ext_h",
+        "ext_w",
+        "group",
+        "kind",
+        "least",
+        "least_k",
+        "leaves",
+        "lengths",
+        "margin",
+        "nat",
+        "obst",
+        "prefer",
+        "sized",
+        "spacer",
+        "title_room",
+        "title_w",
+        "view",
+    )
+
+    def __init__(self, v: View, obstacles: tuple[Box, ...]) -> None:
+        self.view = v
+        self.kind = kind = v.kind
+        self.group = _group(v)
+        self.title_w = _title_width(v)
+        self.title_room = v.title_room()
+        self.margin = v.margin
+        self.nat = _nat(v)
+        self.spacer = isinstance(v, Spacer)
+        self.least, self.prefer = v.stretch() if kind == "stretch" else ((0.0, 0.0), (0.0, 0.0))
+        ext = _ext(v)
+        self.ext_w, self.ext_h = (ext[2] - ext[0], ext[3] - ext[1]) if ext else (0.0, 0.0)
+        self.least_k = v.least_k
+        self.content = _content(ext) if ext is not None and kind == "scaled" else (0.0, 0.0)
+        lengths = v._memo.get("lengths")
+        if lengths is None:
+            lengths = v._memo["lengths"] = tuple(sorted(v.lengths())) if kind == "scaled" else ()
+        self.lengths: tuple[float, ...] = lengths
+        self.obst = obstacles
+        self.leaves: dict[Box, _Leaf] = v._memo.setdefault(("leaves", obstacles), {})
+        self.sized: dict[tuple[float, float], tuple[float, float, float]]
+        self.sized = v._memo.setdefault("sized", {})
+
+    def place(self, cell: Box) -> _Leaf:
+        """The leaf in ``cell`` (see :func:`_place`)."""
+        leaf = self.leaves.get(cell)
+        if leaf is None:
+            x0, y0, x1, y1 = cell
+            for o in self.obst:
+                if x0 < o[2] and o[0] < x1 and y0 < o[3] and o[1] < y1:
+                    break
+            else:  # clear of the form's boxes: the cell itself (as _cut gives it)
+                leaf = self.leaves[cell] = self.leaf(cell)
+                return leaf
+            parts = _cut(cell, self.obst)
+            best = (
+                parts[0]
+                if len(parts) == 1
+                else max(
+                    parts,
+                    key=lambda c: (round(self.score(c), 9), (c[2] - c[0]) * (c[3] - c[1])),
+                )
             )
+            leaf = self.leaves[cell] = self.leaf(best)
+        return leaf
+
+    def leaf(self, cell: Box) -> _Leaf:
+        """The view's leaf in exactly ``cell``: what it needs depends on the cell's size only
+        (asked once per size)."""
+        size = (cell[2] - cell[0], cell[3] - cell[1])
+        known = self.sized.get(size)
+        if known is None:
+            known = self.sized[size] = self.needs(*size)
+        bad, raw_k, area = known
+        return _Leaf(cell, self.kind, self.group, bad, raw_k, self.content, area, self.lengths)
+
+    def needs(self, width: float, height: float) -> tuple[float, float, float]:
+        """The overflow, the raw scale and the drawn area (stretch) of the view in a cell of
+        ``width`` × ``height`` (the arithmetic of :func:`_room`, :func:`_raw_k`,
+        :func:`_stretch_fill`)."""
+        kind = self.kind
+        bad = max(0.0, self.title_w - width)
+        w = width - 2.0 * self.margin
+        h = height - self.title_room - 2.0 * self.margin
+        raw_k, area = 0.0, 0.0
+        if kind == "fixed":
+            # (a spacer keeps room free of views: the form's boxes may fill it)
+            if not self.spacer:
+                nat = self.nat
+                assert nat is not None
+                bad += max(0.0, nat[0] - w) + max(0.0, nat[1] - h)
+        elif kind == "stretch":
+            lw, lh = self.least
+            # a stretch view narrower or lower than its least is as bad as a fixed one
+            bad += max(0.0, lw - w) + max(0.0, lh - h)
+            if self.fill(w, h) > 0.0:
+                uw, uh = self.view.used(w, h)
+                area = max(uw, 0.0) * max(uh, 0.0)
+        else:
+            raw_k = self.raw_k(w, h)
+        return bad, raw_k, area
+
+    def room(self, cell: Box) -> tuple[float, float]:
+        """:func:`_room`."""
+        return (
+            cell[2] - cell[0] - 2.0 * self.margin,
+            cell[3] - cell[1] - self.title_room - 2.0 * self.margin,
         )
-        leaf = v._memo[key] = _Leaf.of(v, best)
-    return leaf
+
+    def raw_k(self, w: float, h: float) -> float:
+        """:func:`_raw_k` in a room of w × h."""
+        if w <= 1.0 or h <= 1.0:
+            return math.inf
+        need = max(self.ext_w / w, self.ext_h / h, self.least_k)
+        return need if need > 0.0 else 0.0
+
+    def fill(self, w: float, h: float) -> float:
+        """:func:`_stretch_fill` in a room of w × h."""
+        lw, lh = self.least
+        pw, ph = self.prefer
+        if w < lw or h < lh:
+            return -1.0 + min(w / lw, h / lh) * 0.5
+        return min(1.0, w / pw) * min(1.0, h / ph)
+
+    def score(self, cell: Box) -> float:
+        """:func:`_leaf_score`."""
+        kind = self.kind
+        w, h = self.room(cell)
+        if kind == "fixed":
+            nat = self.nat
+            assert nat is not None
+            fits = nat[0] <= w + tol.SHEET_MM and nat[1] <= h + tol.SHEET_MM
+            return (1.0 if fits else -1.0) * (cell[2] - cell[0]) * (cell[3] - cell[1])
+        if kind == "stretch":
+            return self.fill(w, h)
+        k = self.raw_k(w, h)
+        if k == 0.0:
+            return 1.0
+        if not math.isfinite(k):
+            return -1.0
+        return 1.0 / k
 
 
 class _Eval:
@@ -525,48 +665,30 @@ class _Eval:
         self.cells: dict[int, Box] = {id(v): leaf.cell for v, leaf in self.items}
 
 
-@dataclass(frozen=True)
 class _Leaf:
     """What the search needs of a view in a cell, computed once per cell."""
 
-    cell: Box
-    kind: Kind
-    group: str
-    bad: float  # mm a fixed view or a title overflows its cell
-    raw_k: float  # scaled: the continuous scale that fits
-    content: tuple[float, float]  # scaled: the content's model size (thin ones widened)
-    area: float  # stretch: the area it really draws (mm²)
-    lengths: tuple[float, ...] = ()  # scaled: its vectors' lengths, sorted
+    __slots__ = ("area", "bad", "cell", "content", "group", "kind", "lengths", "raw_k")
 
-    @staticmethod
-    def of(v: View, cell: Box) -> _Leaf:
-        kind = v.kind
-        bad = max(0.0, _title_width(v) - (cell[2] - cell[0]))
-        raw_k, content, area = 0.0, (0.0, 0.0), 0.0
-        if kind == "fixed":
-            nat = _nat(v)
-            assert nat is not None
-            w, h = _room(v, cell)
-            # (a spacer keeps room free of views: the form's boxes may fill it)
-            if not isinstance(v, Spacer):
-                bad += max(0.0, nat[0] - w) + max(0.0, nat[1] - h)
-        elif kind == "stretch":
-            f = _stretch_fill(v, cell)
-            w, h = _room(v, cell)
-            # a stretch view narrower or lower than its least is as bad as a fixed one
-            least = v.stretch()[0]
-            bad += max(0.0, least[0] - w) + max(0.0, least[1] - h)
-            uw, uh = v.used(w, h) if f > 0.0 else (0.0, 0.0)
-            area = max(uw, 0.0) * max(uh, 0.0)
-        else:
-            raw_k = _raw_k(v, cell)
-            ext = _ext(v)
-            assert ext is not None
-            content = _content(ext)
-        lengths = v._memo.get("lengths")
-        if lengths is None:
-            lengths = v._memo["lengths"] = tuple(sorted(v.lengths())) if kind == "scaled" else ()
-        return _Leaf(cell, kind, _group(v), bad, raw_k, content, area, lengths)
+    def __init__(
+        self,
+        cell: Box,
+        kind: Kind,
+        group: str,
+        bad: float,
+        raw_k: float,
+        content: tuple[float, float],
+        area: float,
+        lengths: tuple[float, ...] = (),
+    ) -> None:
+        self.cell = cell
+        self.kind = kind
+        self.group = group
+        self.bad = bad  # mm a fixed view or a title overflows its cell
+        self.raw_k = raw_k  # scaled: the continuous scale that fits
+        self.content = content  # scaled: the content's model size (thin ones widened)
+        self.area = area  # stretch: the area it really draws (mm²)
+        self.lengths = lengths  # scaled: its vectors' lengths, sorted
 
 
 def _leaf_score(v: View, cell: Box) -> float:
@@ -672,18 +794,22 @@ def _grid_cells(node: Grid, box: Box, cols: int) -> list[tuple[Tree, Box]]:
     rows = math.ceil(n / cols)
     cw = (x1 - x0 - node.gap * (cols - 1)) / cols
     ch = (y1 - y0 - node.gap * (rows - 1)) / rows
+    xs = [x0 + c * (cw + node.gap) for c in range(cols)]
+    ys = [y0 + r * (ch + node.gap) for r in range(rows)]
     return [
-        (
-            it,
-            (
-                x0 + c * (cw + node.gap),
-                y0 + r * (ch + node.gap),
-                x0 + c * (cw + node.gap) + cw,
-                y0 + r * (ch + node.gap) + ch,
-            ),
-        )
-        for it, (r, c) in zip(node.items, (divmod(i, cols) for i in range(n)), strict=True)
+        (it, (xs[i % cols], ys[i // cols], xs[i % cols] + cw, ys[i // cols] + ch))
+        for i, it in enumerate(node.items)
     ]
+
+
+def _getter(ids: Sequence[int]) -> Callable[[Mapping[int, object]], object]:
+    """A function giving the tuple of a mapping's values at ``ids``."""
+    if not ids:
+        return lambda m: ()
+    if len(ids) == 1:
+        one = ids[0]
+        return lambda m: (m[one],)
+    return operator.itemgetter(*ids)
 
 
 class _Solver:
@@ -710,11 +836,17 @@ class _Solver:
         self._subtree(tree)
         self.memo: dict[tuple[object, ...], _Part] = {}
         self.options: dict[tuple[object, ...], list[tuple[float, ...] | int]] = {}
-        self.scored: dict[tuple[object, ...], tuple[_Part, tuple[float, ...]]] = {}
+        self.scored: dict[object, tuple[_Part, tuple[float, ...]]] = {}
         #: Layouts scored (for the benchmark and the tests).
         self.evaluations = 0
         self._choices = [id(nd) for nd in self.nodes if isinstance(nd, Choice)]
         self._laid_ids: dict[tuple[object, ...], list[int]] = {}
+        self._laid_getters: dict[tuple[object, ...], Callable[[Mapping[int, object]], object]] = {}
+        self._sub_get = {i: _getter(ids) for i, ids in self.sub.items()}
+        self.infos: dict[int, _Info] = {}
+        self._splits: dict[int, Any] = {}
+        #: Each node's children's cells, by node, box and the node's own choice.
+        self._cells: dict[tuple[object, ...], list[tuple[Tree, Box]]] = {}
 
     def _collect(self, t: Tree) -> None:
         if isinstance(t, Node):
@@ -741,31 +873,38 @@ class _Solver:
             return [nd.cols] if nd.cols else list(range(1, len(nd.items) + 1))
         if nd.weights is not None:
             return [nd.weights]
-        n = len(nd.items)
-        flex = [i for i, it in enumerate(nd.items) if natural_of(it) is None]
-        if len(flex) <= 1:
-            return [(1.0,) * n]
-        coarse = {2: 12, 3: 8, 4: 6}.get(len(flex), 4)
-        steps = coarse * (4 if fine else 1)
         cur = self.choice[id(nd)]
         known = self.options.get((id(nd), fine, cur))
         if known is not None:  # the rounds come back to a node whose split has not moved
             return known
+        n = len(nd.items)
+        flex = [i for i, it in enumerate(nd.items) if natural_of(it) is None]
+        out: list[tuple[float, ...] | int] = []
+        if len(flex) <= 1:
+            out.append((1.0,) * n)
+            self.options[(id(nd), fine, cur)] = out
+            return out
+        coarse = {2: 12, 3: 8, 4: 6}.get(len(flex), 4)
+        steps = coarse * (4 if fine else 1)
         assert isinstance(cur, tuple)
         total = sum(cur[i] for i in flex)
         share = [cur[i] / total for i in flex]
-        out: list[tuple[float, ...] | int] = []
-        for combo in itertools.product(range(1, steps), repeat=len(flex) - 1):
-            if sum(combo) >= steps:
+        near = 0.5 / coarse + tol.SHEET_MM
+        # in fine steps, each part within half a coarse step of the current share: the first
+        # parts' steps chosen from their own ranges, the last part checked
+        ranges = [
+            [c for c in range(1, steps) if not (fine and abs(c / steps - sh) > near)]
+            for sh in share[:-1]
+        ]
+        for combo in itertools.product(*ranges):
+            used = sum(combo)
+            if used >= steps:
                 continue
-            parts = (*combo, steps - sum(combo))
-            if fine and any(
-                abs(c / steps - sh) > 0.5 / coarse + tol.SHEET_MM
-                for c, sh in zip(parts, share, strict=True)
-            ):
+            last = steps - used
+            if fine and abs(last / steps - share[-1]) > near:
                 continue
             w = [1.0] * n
-            for i, c in zip(flex, parts, strict=True):
+            for i, c in zip(flex, (*combo, last), strict=True):
                 w[i] = float(c)
             out.append(tuple(w))
         self.options[(id(nd), fine, cur)] = out
@@ -774,12 +913,49 @@ class _Solver:
     def run(self, t: Tree, box: Box) -> _Part:
         """The subtree laid out in ``box`` at the current choices (memoised)."""
         if isinstance(t, View):
-            return ((t, _place(t, box, self.field.obstacles)),), ()
-        key = (id(t), box, *(self.choice[i] for i in self.sub[id(t)]))
+            return ((t, self._info(t).place(box)),), ()
+        key = (id(t), box, self._sub_get[id(t)](self.choice))
         part = self.memo.get(key)
         if part is None:
             part = self.memo[key] = self._run(t, box)
         return part
+
+    def _split(self, node: Node, box: Box, weights: tuple[float, ...]) -> list[tuple[Tree, Box]]:
+        """:func:`_split` with what does not depend on the box asked once per node."""
+        known = self._splits.get(id(node))
+        if known is None:
+            horizontal = isinstance(node, Row)
+            fixed, flex = _fixed(node, horizontal)
+            lens = tuple(fixed.get(i) for i in range(len(node.items)))
+            gaps = node.gap * (len(node.items) - 1)
+            known = (horizontal, node.title_room(), gaps, sum(fixed.values()), lens, flex)
+            self._splits[id(node)] = known
+        horizontal, top, gaps, fixed_sum, lens, flex = known
+        x0, y0, x1, y1 = box
+        y0 += top
+        length = (x1 - x0) if horizontal else (y1 - y0)
+        share = max(length - gaps - fixed_sum, 0.0)
+        total_w = sum([weights[i] for i in flex]) or 1.0
+        gap = node.gap
+        out = []
+        pos = x0 if horizontal else y0
+        stop = x1 if horizontal else y1
+        for it, fixed_len, wt in zip(node.items, lens, weights, strict=True):
+            ln = fixed_len if fixed_len is not None else share * wt / total_w
+            # fixed children that overrun the box are cut back at its end (and count as not
+            # fitting), not laid past it
+            end = pos + ln
+            if end > stop:
+                end = stop
+            out.append((it, (pos, y0, end, y1) if horizontal else (x0, pos, x1, end)))
+            pos += ln + gap
+        return out
+
+    def _info(self, v: View) -> _Info:
+        info = self.infos.get(id(v))
+        if info is None:
+            info = self.infos[id(v)] = _Info(v, self.field.obstacles)
+        return info
 
     def _run(self, t: Node, box: Box) -> _Part:
         titles: tuple[tuple[Box, Node], ...] = ((box, t),) if t.title else ()
@@ -788,30 +964,52 @@ class _Solver:
             assert isinstance(ch, int)
             items, inner = self.run(t.items[ch], box)
             return items, titles + inner
-        if isinstance(t, Grid):
-            assert isinstance(ch, int)
-            kids = _grid_cells(t, box, ch)
-        else:
-            assert isinstance(ch, tuple)
-            kids = _split(t, box, ch, isinstance(t, Row))
-        items = ()
+        cells_key = (id(t), box, ch)
+        kids = self._cells.get(cells_key)
+        if kids is None:
+            if isinstance(t, Grid):
+                assert isinstance(ch, int)
+                kids = _grid_cells(t, box, ch)
+            else:
+                assert isinstance(ch, tuple)
+                kids = self._split(t, box, ch)
+            self._cells[cells_key] = kids
+        out: list[tuple[View, _Leaf]] = []
+        more_titles: list[tuple[Box, Node]] = list(titles)
         for it, cell in kids:
+            if isinstance(it, View):
+                out.append((it, self._info(it).place(cell)))
+                continue
             more, inner = self.run(it, cell)
-            items += more
+            out += more
             if inner:
-                titles += inner
-        return items, titles
+                more_titles += inner
+        return tuple(out), tuple(more_titles)
 
-    def evaluate(self) -> tuple[_Part, tuple[float, ...]]:
+    def evaluate(self, floor: tuple[float, ...] | None = None) -> tuple[_Part, tuple[float, ...]]:
         """The layout of the current choices and its score; a set of choices the search
-        comes back to (the next round's sweep of an unmoved node) is scored once."""
-        key = tuple(self.choice[i] for i in self._laid())
+        comes back to (the next round's sweep of an unmoved node) is scored once. With a
+        ``floor`` (the best score so far), a layout whose overflow alone already makes it
+        worse is not scored: its score is given as the floor's overflow less one (it loses)."""
+        key = self._laid_get(self.choice)
         done = self.scored.get(key)
         if done is None:
             part = self.run(self.tree, self.field.box)
-            done = self.scored[key] = (part, _score(part))
+            sc = _score(part, floor)
             self.evaluations += 1
+            if sc is None:
+                assert floor is not None
+                return part, (floor[0] - 1.0,)
+            done = self.scored[key] = (part, sc)
         return done
+
+    def _laid_get(self, choice: Mapping[int, object]) -> object:
+        """The current choices of the nodes laid out (the key of :attr:`scored`)."""
+        which = tuple(choice[i] for i in self._choices)
+        get = self._laid_getters.get(which)
+        if get is None:
+            get = self._laid_getters[which] = _getter(self._laid())
+        return get(choice)
 
     def _laid(self) -> list[int]:
         """The ids of the nodes :meth:`_active` yields, found once per choice of the
@@ -834,10 +1032,12 @@ class _Solver:
     def _descend(self) -> tuple[_Part, tuple[float, ...]]:
         """Coordinate search over the splits and grid shapes, the choices held: in coarse
         steps, then in fine steps near the coarse optimum. Only the nodes laid out are swept,
-        in the order of :attr:`nodes` (a node that two arrangements share is swept twice)."""
+        in the order of :attr:`nodes` (a node that two arrangements share is swept twice).
+        Two coarse rounds: a third changed no sheet of the problems and examples
+        (bench/bench_layout.py's dump) and cost a tenth of the evaluations."""
         best_ev, best = self.evaluate()
         laid = {id(nd) for nd in self._active(self.tree)}
-        for fine, rounds in ((False, 3), (True, 2)):
+        for fine, rounds in ((False, 2), (True, 2)):
             for _ in range(rounds):
                 improved = False
                 for nd in self.nodes:
@@ -855,7 +1055,7 @@ class _Solver:
                         if o == keep:
                             continue
                         self.choice[id(nd)] = o
-                        ev, sc = self.evaluate()
+                        ev, sc = self.evaluate(best)
                         if sc > best:
                             best, best_ev, keep, improved = sc, ev, o, True
                     self.choice[id(nd)] = keep
@@ -907,33 +1107,6 @@ def _fill_of(v: View, cell: Box, k: float) -> float:
     return (cw / k + 2 * v.margin) * (ch / k + 2 * v.margin) / area
 
 
-def _areas2(
-    items: Sequence[tuple[View, _Leaf]], first: Mapping[str, float], second: Mapping[str, float]
-) -> tuple[dict[str, tuple[float, float]], dict[str, tuple[float, float]]]:
-    """The drawn area (mm²) of each flexible view at the scales ``first`` and at ``second``, a
-    scale group counting once (the sum of its members'), a stretch view's as it really draws;
-    with each one's weight."""
-    out1: dict[str, tuple[float, float]] = {}
-    out2: dict[str, tuple[float, float]] = {}
-    small = tol.SHEET_AREA
-    for v, leaf in items:
-        kind = leaf.kind
-        if kind == "fixed":
-            continue
-        w = v.weight
-        if kind == "stretch":
-            out1[f"#{id(v)}"] = out2[f"#{id(v)}"] = (max(leaf.area, small), w)
-            continue
-        g = leaf.group
-        cw, ch = leaf.content
-        for scales, out in ((first, out1), (second, out2)):
-            k = scales[g]
-            area = (cw / k) * (ch / k) if math.isfinite(k) and k > 0.0 and cw > 0.0 else small
-            prev = out.get(g, (0.0, 0.0))
-            out[g] = (prev[0] + max(area, small), max(prev[1], w))
-    return out1, out2
-
-
 def _title_width(v: View) -> float:
     """The width (mm) of a view's title with a typical scale label after it."""
     if not v.title:
@@ -955,20 +1128,43 @@ def _node_title_width(node: Node) -> float:
     return node._title_w
 
 
-def _score(part: _Part) -> tuple[float, ...]:
+@functools.lru_cache(maxsize=4096)
+def _rounded(k: float, q: Quantity, series: Series) -> float:
+    """The factor :func:`round_scale` gives (inf where it refuses ``k``)."""
+    try:
+        return round_scale(k, q, series).k
+    except ParameterError:
+        return math.inf
+
+
+@typing.overload
+def _score(part: _Part) -> tuple[float, ...]: ...
+@typing.overload
+def _score(part: _Part, floor: tuple[float, ...] | None) -> tuple[float, ...] | None: ...
+def _score(part: _Part, floor: tuple[float, ...] | None = None) -> tuple[float, ...] | None:
     """(−infeasibility, Σ weight·log(drawn area)): larger is better. The sum of logarithms
     shares the field fairly: a view gains only where its drawing grows, so no view keeps a
-    large box its drawing does not use while another could grow into it."""
+    large box its drawing does not use while another could grow into it. With a ``floor``:
+    None where the overflow of the boxes alone already scores below it (the rest of the
+    infeasibility only adds)."""
     items, titles = part
-    bad = sum(leaf.bad for _, leaf in items)
+    bad = sum([leaf.bad for _, leaf in items])
     for cell, node in titles:
         bad += max(0.0, _node_title_width(node) - (cell[2] - cell[0]))
+    if floor is not None and -round(bad, 6) < floor[0]:
+        return None
     raw: dict[str, float] = {}
     first: dict[str, View] = {}
     for v, leaf in items:
         if leaf.kind == "scaled":
-            raw[leaf.group] = max(raw.get(leaf.group, 0.0), leaf.raw_k)
-            first.setdefault(leaf.group, v)
+            g = leaf.group
+            k = leaf.raw_k
+            if g in raw:
+                if k > raw[g]:
+                    raw[g] = k
+            else:
+                raw[g] = 0.0 if k < 0.0 else k
+                first[g] = v
     rounded: dict[str, float] = {}
     for g, k in raw.items():
         if not math.isfinite(k):
@@ -976,27 +1172,51 @@ def _score(part: _Part) -> tuple[float, ...]:
             rounded[g] = math.inf
             continue
         v = first[g]
-        try:
-            rounded[g] = round_scale(k, v.quantity, v.series).k if k > 0.0 else 1.0
-        except ParameterError:  # a candidate too small even for the smallest scale
+        r = rounded[g] = _rounded(k, v.quantity, v.series) if k > 0.0 else 1.0
+        if r == math.inf:  # a candidate too small even for the smallest scale
             bad += 1000.0
-            rounded[g] = math.inf
-            continue
     short = 0
+    small = tol.SHEET_AREA
+    # the drawn area (mm²) of each flexible view at the rounded scales and at the raw ones, a
+    # scale group counting once (the sum of its members'), a stretch view's as it really
+    # draws; with each one's weight
+    areas_r: dict[object, list[float]] = {}
+    areas_c: dict[object, list[float]] = {}
+    log = math.log
     for v, leaf in items:
-        if leaf.kind != "scaled" or not math.isfinite(rounded[leaf.group]):
+        kind = leaf.kind
+        if kind == "fixed":
             continue
-        k = rounded[leaf.group]
-        if v.readable > 0.0 and v.readable / k < v.readable_mm:
-            bad += v.readable_mm - v.readable / k
-        if leaf.lengths:
-            # drawn (over half a millimetre) yet shorter than two arrowheads
-            short += bisect.bisect_left(leaf.lengths, v.readable_mm * k) - bisect.bisect_right(
-                leaf.lengths, 0.5 * k
-            )
-    areas_r, areas_c = _areas2(items, rounded, raw)
-    score_r = sum(w * math.log(a) for a, w in areas_r.values())
-    score_c = sum(w * math.log(a) for a, w in areas_c.values())
+        if kind == "stretch":
+            a = leaf.area
+            a = a if a > small else small
+            areas_r[v] = areas_c[v] = [a, v.weight]
+            continue
+        g = leaf.group
+        k = rounded[g]
+        if k != math.inf:
+            if v.readable > 0.0 and v.readable / k < v.readable_mm:
+                bad += v.readable_mm - v.readable / k
+            lengths = leaf.lengths
+            if lengths:
+                # drawn (over half a millimetre) yet shorter than two arrowheads
+                short += bisect.bisect_left(lengths, v.readable_mm * k) - bisect.bisect_right(
+                    lengths, 0.5 * k
+                )
+        cw, ch = leaf.content
+        w = v.weight
+        for kk, out in ((k, areas_r), (raw[g], areas_c)):
+            area = (cw / kk) * (ch / kk) if math.isfinite(kk) and kk > 0.0 and cw > 0.0 else small
+            area = area if area > small else small
+            prev = out.get(g)
+            if prev is None:
+                out[g] = [0.0 + area, w if w > 0.0 else 0.0]
+            else:
+                prev[0] += area
+                if w > prev[1]:
+                    prev[1] = w
+    score_r = sum([w * log(a) for a, w in areas_r.values()])
+    score_c = sum([w * log(a) for a, w in areas_c.values()])
     return (-round(bad, 6), score_r + 0.1 * score_c - SHORT_COST * short)
 
 
@@ -1015,7 +1235,15 @@ def _fills(lay: Layout) -> list[float]:
 def arrange(tree: Tree, field_: Field) -> Layout:
     """Pack ``tree`` into ``field_`` and choose every scale (no drawing; see the module's
     docstring). :class:`ParameterError` when a view has no room at all."""
-    ev = _Solver(tree, field_).solve()
+    # the search allocates many small tuples and no cycles: the cyclic collector, which would
+    # scan the whole heap again and again meanwhile, waits till it is done
+    collect = gc.isenabled()
+    gc.disable()
+    try:
+        ev = _Solver(tree, field_).solve()
+    finally:
+        if collect:
+            gc.enable()
     scales = _scales(ev)
     lay = Layout(
         titles=ev.titles,
