@@ -262,3 +262,29 @@ def test_a_vanishing_load_is_written_0_in_the_loads_table(tmp_path: Path) -> Non
     cells = [t.text for t in forces.texts()]
     assert not [c for c in cells if re.fullmatch(r"[–-]?[\d,]+·10.*", c)]
     assert "0" in cells
+
+
+def test_a_short_heading_stands_on_one_line_over_a_narrow_table() -> None:
+    """A two-word heading over a narrow table is written on one line (the view as wide as the
+    heading, the table keeping its columns), never broken over a table with room beside it;
+    a long heading wrapped for its table is drawn on one line where the layout gives room."""
+    from geomcad.sheet.compose import Field, compose, text_width
+
+    rows = [["Параметр", "Значение"], ["v_A", "1 м/с"], ["α", "60°"]]
+    plain = Table(rows, height=2.5)
+    t = Table(rows, height=2.5, title="Исходные данные", title_height=5.0)
+    assert text_width("Исходные данные", 5.0) > sum(plain.widths)  # it is wider than the table
+    assert t.heading == ["Исходные данные"]
+    assert t.widths == plain.widths
+    nat = t.natural()
+    assert nat is not None and nat[0] == pytest.approx(text_width("Исходные данные", 5.0))
+    # a long heading over a narrow table is still wrapped to the table ...
+    heading = "Приведённый момент инерции и приведённый момент сил"
+    long = Table(rows, height=2.5, title=heading, title_height=5.0)
+    assert len(long.heading) >= 2
+    # ... and drawn on one line where its box has room for that line
+    d = start("A3", TitleBlock(title="t", designation="x"))
+    compose(d, long, Field((20.0, 30.0, 400.0, 200.0), ()))
+    sheet = d.finish()
+    assert [x.text for x in sheet.texts() if x.text == heading] == [heading]
+    assert not any(x.text in long.heading for x in sheet.texts())
