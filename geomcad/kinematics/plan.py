@@ -506,7 +506,8 @@ class Plan:
         model: tuple[str, str] = ("", ""),
         rel: str = "",
     ) -> float:
-        """The angular velocity (acceleration) of link AB read off the plan, ccw > 0.
+        """The angular velocity (acceleration) of link AB read off the plan, ccw > 0; 0 where
+        the vector read is rounding noise beside the plan's size (:data:`NOISE`).
 
         On a velocity plan: ω = (AB × ab)/AB², i.e. ω = |ab|/l_AB with the sense that turns
         AB towards ab. On an acceleration plan pass the tangential vector's ends: ε = a^τ/l.
@@ -517,10 +518,14 @@ class Plan:
         """
         AB = B - A
         w = AB.cross(self.between(a, b)) / AB.dot(AB)
+        length = AB.norm
+        if self._noise(w * length):
+            # the relative vector vanishes in this position (a dead or symmetric position):
+            # ω (ε) is 0 to the plan's tolerance, not 4·10^-13, for every view and the JSON
+            w = 0.0
         if name:
             MA, MB = model if all(model) else (model_of(a), model_of(b))
-            length = AB.norm
-            shown = 0.0 if self._noise(w * length) else abs(w)
+            shown = abs(w)
             rel = rel or (_sub("V", MB + MA) if self.kind == "v" else _sub("a^τ", MB + MA))
             sym = "ω" if self.kind == "v" else "ε"
             self.c.value(
