@@ -41,7 +41,7 @@ from geomcad.linkage.dynamics import Flywheel
 from geomcad.linkage.kinetostatics import Applied, Forces, GroupForces
 from geomcad.linkage.loads import centre_vec
 from geomcad.linkage.model import Linkage
-from geomcad.linkage.plans import Position, plan_name
+from geomcad.linkage.plans import Position
 from geomcad.linkage.solution import Solved, scheme
 from geomcad.sheet import Drawing, Sheet, TitleBlock, fmt_number, symbols
 from geomcad.sheet.compose import _GOST_K as GOST_K
@@ -439,10 +439,10 @@ class _Lever(View):
         for name, im in lev.images.items():
             for q, names in groups:
                 if kv.mm(im.dist(q)) < 0.8:
-                    names.append(markup_of(plan_name(name)))
+                    names.append(markup_of(P.pn(name)))
                     break
             else:
-                groups.append((im, [markup_of(plan_name(name))]))
+                groups.append((im, [markup_of(P.pn(name))]))
         for q, names in groups:
             v.dot(q)
             v.label(q, ", ".join(names), 2.5, clear=0.8)
