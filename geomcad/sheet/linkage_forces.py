@@ -47,6 +47,7 @@ from geomcad.sheet import Drawing, Sheet, TitleBlock, fmt_number, symbols
 from geomcad.sheet.compose import _GOST_K as GOST_K
 from geomcad.sheet.compose import (
     TITLE_LEAD,
+    TITLE_SPACING,
     Choice,
     Column,
     Grid,
@@ -286,7 +287,8 @@ def further_room(fs: ForceScales) -> float:
 def draw_further(d: Drawing, at: Placed, view: View, fs: ForceScales) -> None:
     """The view's further μ_F, on a line of its own under its caption."""
     if fs.tiered:
-        top = at.box[1] + view.title_height * TITLE_LEAD + SCALES_H
+        lines = (view.title_lines - 1) * TITLE_SPACING  # a caption broken into lines
+        top = at.box[1] + view.title_height * (TITLE_LEAD + lines) + SCALES_H
         d.text(fs.further(), (at.box[0], top), SCALES_H)
 
 
