@@ -290,3 +290,17 @@ def test_a_short_heading_stands_on_one_line_over_a_narrow_table() -> None:
     sheet = d.finish()
     assert [x.text for x in sheet.texts() if x.text == heading] == [heading]
     assert not any(x.text in long.heading for x in sheet.texts())
+
+
+def test_a_names_sentences_each_begin_a_line_before_one_is_broken_mid_line() -> None:
+    """ "Силовой анализ. Шестизвенный механизм с ползуном" fits in two lines only by breaking
+    after "Шестизвенный"; the cell holds three: each sentence begins a line."""
+    sheet, _ = new_sheet("A3", TitleBlock(title="t", designation="x"))
+    items = fit_text(
+        sheet, "Силовой анализ. Шестизвенный механизм с ползуном", CELL, 5.0, clear=True
+    )
+    assert items[0].text == "Силовой анализ."
+    assert items[1].text.startswith("Шестизвенный")
+    # a name of one sentence is still set in balanced lines
+    one = fit_text(sheet, "Шестизвенный механизм с ползуном и кулисой", CELL, 5.0, clear=True)
+    assert " ".join(t.text for t in one) == "Шестизвенный механизм с ползуном и кулисой"
