@@ -65,7 +65,7 @@ def _views(sol: Solution[Geometry]) -> tuple[Tree, CutTooth]:
     caliper = Caliper(c["K"], c["K'"], c["T"], c["H"])
     main = CutTooth(
         gear, geo.flank, [(geo.r_y, "d_y")], caliper,
-        title=WORDS("view_title"), title_height=5.0, margin=3.0, weight=3.0,
+        title=WORDS("view_title"), title_height=3.5, margin=3.0, weight=3.0,
     )  # fmt: skip
     inset = ChordInset(
         gear, c["K"], c["N"], c["T"], geo.r_y,

@@ -305,3 +305,34 @@ def test_least_room_of_a_row() -> None:
     assert nat is not None
     assert w == pytest.approx(0.2 / k + 8.0 + nat[0] + GAP, rel=1e-6)
     assert h == pytest.approx(0.1 / k + 8.0 + a.title_room(), rel=1e-6)
+
+
+def test_a_title_wider_than_its_box_breaks_into_lines_whose_room_counts() -> None:
+    """A view's (or a node's) title wider than the box it gets is written in lines within the
+    box, never past it into the next view; the drawing starts under the last line; a short
+    title stays on one line."""
+    from geomcad.sheet.compose import TITLE_SPACING, text_width
+
+    long = "Приведённые моменты, работы, приращение кинетической энергии, момент инерции"
+    a = _fig(0.2, 0.3, title=long, quantity="v", series="nice", show_scale=False)
+    b = _fig(0.2, 0.3, title="B", show_scale=False)
+    node_title = "Диаграммы выходного звена и угловые скорости звеньев механизма по положениям"
+    c = _fig(0.2, 0.1, show_scale=False)
+    tree = Row(a, b, Column(c, title=node_title))
+    d = start("A4", TitleBlock(title="t", designation="x"))
+    lay = compose(d, tree, Field.of(d.frame))
+    sheet = d.finish()
+    box = lay[a].box
+    assert text_width(long, a.title_height) > box[2] - box[0]  # it cannot stand on one line
+    lines = [t for t in sheet.texts() if t.text in long and t.text != "B" and len(t.text) > 3]
+    assert len(lines) >= 2 and " ".join(t.text for t in lines) == long
+    assert all(box[0] - 1e-6 <= t.at[0] and t.at[0] + t.width <= box[2] + 1e-6 for t in lines)
+    last = max(t.at[1] for t in lines)
+    assert lay[a].inner[1] >= last  # the drawing under the title's last line
+    assert a.title_lines == len(lines)
+    assert lay[a].inner[1] - box[1] >= a.title_height * (1 + (len(lines) - 1) * TITLE_SPACING)
+    assert b.title_lines == 1
+    cell = next(cl for cl, node in lay.titles if node.title == node_title)
+    parts = [t for t in sheet.texts() if t.text in node_title and len(t.text) > 3]
+    assert len(parts) >= 2 and all(t.at[0] + t.width <= cell[2] + 1e-6 for t in parts)
+    assert lay[c].box[1] >= max(t.at[1] for t in parts)

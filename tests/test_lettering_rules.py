@@ -251,8 +251,9 @@ moment = -60.0
 
 
 def test_a_vanishing_load_is_written_0_in_the_loads_table(tmp_path: Path) -> None:
-    """An inverted slider-crank whose forces position has ε = 0: its inertia moments are
-    round-off (10^-13 N·m) and the table writes them 0, never as a power of ten."""
+    """An inverted slider-crank whose forces position has ε = 0: its inertia moments vanish
+    (ε is 0 to the plan's tolerance, not 10^-13): no row, no step and no arrow of M_Ф, and
+    never a power of ten."""
     from geomcad import documents
 
     path = tmp_path / "inverted.toml"
@@ -261,4 +262,45 @@ def test_a_vanishing_load_is_written_0_in_the_loads_table(tmp_path: Path) -> Non
     forces = next(sh for name, sh in sheets.items() if "forces" in name)
     cells = [t.text for t in forces.texts()]
     assert not [c for c in cells if re.fullmatch(r"[–-]?[\d,]+·10.*", c)]
-    assert "0" in cells
+    assert not [c for c in cells if "MФ" in c or "M_{Ф" in c]
+    assert "Ф2" in cells  # the inertia force is there
+
+
+def test_a_short_heading_stands_on_one_line_over_a_narrow_table() -> None:
+    """A two-word heading over a narrow table is written on one line (the view as wide as the
+    heading, the table keeping its columns), never broken over a table with room beside it;
+    a long heading wrapped for its table is drawn on one line where the layout gives room."""
+    from geomcad.sheet.compose import Field, compose, text_width
+
+    rows = [["Параметр", "Значение"], ["v_A", "1 м/с"], ["α", "60°"]]
+    plain = Table(rows, height=2.5)
+    t = Table(rows, height=2.5, title="Исходные данные", title_height=5.0)
+    assert text_width("Исходные данные", 5.0) > sum(plain.widths)  # it is wider than the table
+    assert t.heading == ["Исходные данные"]
+    assert t.widths == plain.widths
+    nat = t.natural()
+    assert nat is not None and nat[0] == pytest.approx(text_width("Исходные данные", 5.0))
+    # a long heading over a narrow table is still wrapped to the table ...
+    heading = "Приведённый момент инерции и приведённый момент сил"
+    long = Table(rows, height=2.5, title=heading, title_height=5.0)
+    assert len(long.heading) >= 2
+    # ... and drawn on one line where its box has room for that line
+    d = start("A3", TitleBlock(title="t", designation="x"))
+    compose(d, long, Field((20.0, 30.0, 400.0, 200.0), ()))
+    sheet = d.finish()
+    assert [x.text for x in sheet.texts() if x.text == heading] == [heading]
+    assert not any(x.text in long.heading for x in sheet.texts())
+
+
+def test_a_names_sentences_each_begin_a_line_before_one_is_broken_mid_line() -> None:
+    """ "Силовой анализ. Шестизвенный механизм с ползуном" fits in two lines only by breaking
+    after "Шестизвенный"; the cell holds three: each sentence begins a line."""
+    sheet, _ = new_sheet("A3", TitleBlock(title="t", designation="x"))
+    items = fit_text(
+        sheet, "Силовой анализ. Шестизвенный механизм с ползуном", CELL, 5.0, clear=True
+    )
+    assert items[0].text == "Силовой анализ."
+    assert items[1].text.startswith("Шестизвенный")
+    # a name of one sentence is still set in balanced lines
+    one = fit_text(sheet, "Шестизвенный механизм с ползуном и кулисой", CELL, 5.0, clear=True)
+    assert " ".join(t.text for t in one) == "Шестизвенный механизм с ползуном и кулисой"

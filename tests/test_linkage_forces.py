@@ -693,3 +693,53 @@ def test_the_force_sheet_lists_the_order() -> None:
                 and t.text.split(". ", 1)[0].isdigit()]  # fmt: skip
     assert [t.split(". ", 1)[0] for t in numbered][-n:] == [str(i) for i in range(1, n + 1)]
     assert any(t.text == "Порядок силового расчёта" for t in sheet.texts())
+
+
+INVERTED = """
+title = "inverted slider-crank"
+[frame]
+O = [0.0, 0.0]
+C = [0.0, -0.06]
+[drive]
+pivot = "O"
+joint = "A"
+length = 0.12
+omega = 20.0
+phi = [90.0, 270.0, 30.0]
+[[group]]
+kind = "RPR"
+links = [2, 3]
+slider = "A"
+pivot = "C"
+offset = 0.0
+[links.2]
+mass = 2.0
+J = 0.002
+[links.3]
+mass = 6.0
+J = 0.04
+[[load]]
+link = 3
+moment = -60.0
+"""
+
+
+def test_a_vanishing_angular_acceleration_is_zero_in_every_result() -> None:
+    """With the crank along the line of the pivots, the rotating guide's ε vanishes: the plan
+    reads ε = 0 (not 4·10^-13), the analysis has no inertia moment of 10^-16 N·m, and the
+    JSON says 0; where ε does not vanish it is read as before."""
+    from geomcad.linkage.plans import construct
+
+    lk = load(INVERTED)
+    for deg in (90.0, 270.0):
+        P = construct(lk, math.radians(deg))
+        assert P.eps[2] == 0.0 and P.eps[3] == 0.0
+        f = kinetostatics(lk, P)
+        inertia = [a for ls in f.loads.values() for a in ls if a.kind == "inertia"]
+        assert inertia and all(a.force is not None for a in inertia)
+    P = construct(lk, math.radians(30.0))
+    assert abs(P.eps[3]) > 1.0  # a real ε is kept
+    out = results(solve(lk))["positions"]
+    vanishing = [p for p in out if round(p["phi_deg"]) % 180 == 90]
+    assert len(vanishing) == 2
+    assert all(p["eps_2"] == 0.0 and p["eps_3"] == 0.0 for p in vanishing)

@@ -132,6 +132,9 @@ class Plan:
     #: an acceleration plan's velocity plan: the size against which a relative velocity
     #: (of a Coriolis term) is rounding noise
     velocity: Plan | None = None
+    #: the mechanism point of a plan point whose name is not its letter lower-cased (the image
+    #: ``p2`` of point P of link 2, where p is the pole): plan name → mechanism name
+    models: dict[str, str] = field(default_factory=dict)
 
     def __post_init__(self) -> None:
         pole = self.pole
@@ -177,7 +180,11 @@ class Plan:
     def label_of(self, point: str) -> str:
         """The absolute vector of a plan point as label markup: ``b`` → ``V_B``, ``o2`` →
         ``a_{O2}`` on an acceleration plan."""
-        return _sub(_SYMBOL[self.kind], model_of(point))
+        return _sub(_SYMBOL[self.kind], self.model(point))
+
+    def model(self, point: str) -> str:
+        """The mechanism point a plan point stands for (:attr:`models`, else :func:`model_of`)."""
+        return self.models.get(point.rstrip("'")) or model_of(point)
 
     def _noise(self, x: float) -> bool:
         """Whether a magnitude of plan units is rounding noise beside the plan's size (a
@@ -281,7 +288,7 @@ class Plan:
     def _turning(
         self, point: str, base: str, r: Vec, link: str | int, model: tuple[str, str]
     ) -> dict[str, str | float]:
-        B, P = model if all(model) else (model_of(base), model_of(point))
+        B, P = model if all(model) else (self.model(base), self.model(point))
         return {
             "base": self.origin(base),
             "w": _sub("ω", str(link)),
@@ -376,7 +383,7 @@ class Plan:
         r = P - A
         value = self[a] + Vec(re * r.x - im * r.y, re * r.y + im * r.x)
         op = f"image of {point}: triangle {self.name(a)}{self.name(b)}{self.name(point)} ~ link"
-        names = model if all(model) else (model_of(a), model_of(b), model_of(point))
+        names = model if all(model) else (self.model(a), self.model(b), self.model(point))
         args: dict[str, str | float] = {
             "a": self.mark(a),
             "b": self.mark(b),
@@ -385,10 +392,18 @@ class Plan:
             "P": names[2],
         }
         kind = "plan_image"
+        own = self.models.get(point.rstrip("'"))
+        if own and own != names[2]:
+            own = ""
         if abs(AB.cross(r)) <= tol.REL_LENGTH * 1.0e3 * math.sqrt(L2) * max(r.norm, 1.0e-300):
             t = r.dot(AB) / L2  # P on line AB: its image on line ab at the same ratio
             kind = "plan_image_line" if t >= 0.0 else "plan_image_beyond"
             args["ratio"] = abs(t)
+        if own:
+            # a letter other than the point's own: the step says whose image it is
+            kind += "_own"
+            args["pole"] = _POLE["v"]  # the letter taken is the velocity plan's pole
+            args["link"] = why.removeprefix("link ")
         self._add(point, value, op + (f" ({why})" if why else ""), kind, args)
         self.images.append((self.name(a), self.name(b), self.name(point)))
         if label:
@@ -478,7 +493,7 @@ class Plan:
         return v
 
     def _relative(self, point: str, side: Side) -> str:
-        P, S = model_of(point), model_of(side.start)
+        P, S = self.model(point), self.model(side.start)
         if self.kind == "v":
             return _sub("V", P + S)
         return _sub("a^τ" if side.perpendicular else "a^r", P + S)
@@ -506,7 +521,8 @@ class Plan:
         model: tuple[str, str] = ("", ""),
         rel: str = "",
     ) -> float:
-        """The angular velocity (acceleration) of link AB read off the plan, ccw > 0.
+        """The angular velocity (acceleration) of link AB read off the plan, ccw > 0; 0 where
+        the vector read is rounding noise beside the plan's size (:data:`NOISE`).
 
         On a velocity plan: ω = (AB × ab)/AB², i.e. ω = |ab|/l_AB with the sense that turns
         AB towards ab. On an acceleration plan pass the tangential vector's ends: ε = a^τ/l.
@@ -517,10 +533,14 @@ class Plan:
         """
         AB = B - A
         w = AB.cross(self.between(a, b)) / AB.dot(AB)
+        length = AB.norm
+        if self._noise(w * length):
+            # the relative vector vanishes in this position (a dead or symmetric position):
+            # ω (ε) is 0 to the plan's tolerance, not 4·10^-13, for every view and the JSON
+            w = 0.0
         if name:
-            MA, MB = model if all(model) else (model_of(a), model_of(b))
-            length = AB.norm
-            shown = 0.0 if self._noise(w * length) else abs(w)
+            MA, MB = model if all(model) else (self.model(a), self.model(b))
+            shown = abs(w)
             rel = rel or (_sub("V", MB + MA) if self.kind == "v" else _sub("a^τ", MB + MA))
             sym = "ω" if self.kind == "v" else "ε"
             self.c.value(

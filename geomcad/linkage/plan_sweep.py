@@ -61,8 +61,9 @@ def plan_points(lk: Linkage, st: State) -> tuple[dict[str, Arr], dict[str, Arr]]
     ap: dict[str, Arr] = {"π": zero}
     pos, vel, acc, w, e = st.pos, st.vel, st.acc, st.omega, st.eps
     for name in pos:
-        vp[plan_name(name, taken)] = np.asarray(vel[name])
-        ap[plan_name(name, taken) + "'"] = np.asarray(acc[name])
+        own = plan_name(name, taken, lk.owner.get(name, 0))
+        vp[own] = np.asarray(vel[name])
+        ap[own + "'"] = np.asarray(acc[name])
     base = _bases(lk)
 
     def on_link(link: int, x: str) -> tuple[Arr, Arr]:
@@ -85,13 +86,13 @@ def plan_points(lk: Linkage, st: State) -> tuple[dict[str, Arr], dict[str, Arr]]
             j, end = g.joint, g.ends[0]
             normal(f"n_{j}{end}", j, end, g.links[0])
             if not gd.fixed:
-                jg = f"{plan_name(j, taken)}{gd.link}"
+                jg = f"{plan_name(j, taken, lk.owner.get(j, 0))}{gd.link}"
                 vp[jg], ap[jg + "'"] = on_link(gd.link, j)
                 v_rel = vel[j] - vp[jg]
                 ap[f"k_{j}'"] = ap[jg + "'"] + 2.0 * w[gd.link][:, None] * _perp(v_rel)
         elif g.kind == "RPR":
             s, c, rocker = g.slider, g.pivot, g.links[1]
-            s3 = f"{plan_name(s, taken)}{rocker}"
+            s3 = f"{plan_name(s, taken, lk.owner.get(s, 0))}{rocker}"
             vp[s3], ap[s3 + "'"] = on_link(rocker, s)
             v_rel = vel[s] - vp[s3]  # V_S about the slotted link's point under it
             ap[f"k_{s}'"] = acc[s] - 2.0 * w[rocker][:, None] * _perp(v_rel)

@@ -33,11 +33,19 @@ from geomcad.linkage.model import Group, Linkage, PointDef
 from geomcad.linkage.sweep import rpr_direction
 
 
-def plan_name(point: str, taken: frozenset[str] = frozenset()) -> str:
-    """The plan point of a mechanism point: ``B`` → ``b``; ``p_P`` where the lower-case name is
-    the pole's (p) or a mechanism point's own name (``taken``)."""
+def plan_name(point: str, taken: frozenset[str] = frozenset(), link: int = 0) -> str:
+    """The plan point of a mechanism point: ``B`` → ``b``. Where the lower-case letter is the
+    pole's (p) or a mechanism point's own name (``taken``), the letter with the number of the
+    point's ``link`` as its index, as the images of a slider's coincident points are written
+    (P of link 2 → ``p2``, drawn p₂; its step says whose image it is); ``p_P`` where that is
+    taken too (or the point is the frame's)."""
     low = point.lower()
-    return f"p_{point}" if low in ("p", "π") or low in taken else low
+    if low not in ("p", "π") and low not in taken:
+        return low
+    indexed = f"{low}{link}"
+    if link > 0 and not low[-1:].isdigit() and indexed not in {t.lower() for t in taken}:
+        return indexed
+    return f"p_{point}"
 
 
 def _sub(name: str) -> str:
@@ -71,10 +79,15 @@ class Position:
     lines: dict[int, Line] = field(default_factory=dict)
     #: the mechanism's point names, which plan points must not take
     taken: frozenset[str] = frozenset()
+    #: the link of each mechanism point (0: the frame's)
+    owner: dict[str, int] = field(default_factory=dict)
 
     def pn(self, point: str) -> str:
         """The plan point of a mechanism point (:func:`plan_name`)."""
-        return plan_name(point, self.taken)
+        name = plan_name(point, self.taken, self.owner.get(point, 0))
+        if name != point.lower():
+            self.vp.models[name] = self.ap.models[name] = point
+        return name
 
 
 def construct(lk: Linkage, phi: float, title: str = "") -> Position:
@@ -85,6 +98,7 @@ def construct(lk: Linkage, phi: float, title: str = "") -> Position:
     vp = velocity_plan(c)
     P = Position(phi, c, vp, acceleration_plan(c, velocity=vp))
     P.taken = frozenset(lk.owner)
+    P.owner = dict(lk.owner)
     P.pos.update(frame)
     _crank(lk, P)
     _points(lk, P, 1)

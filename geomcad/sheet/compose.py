@@ -56,8 +56,8 @@ from geomcad.sheet.drawing import Drawing, Viewport
 from geomcad.sheet.frame import Frame
 from geomcad.sheet.lang import current
 from geomcad.sheet.scale import GOST_RATIOS, NICE, PLAN_NICE, Quantity, Scale, ScaleStyle
+from geomcad.sheet.text import balanced, break_points, parse
 from geomcad.sheet.text import box as text_box
-from geomcad.sheet.text import parse
 
 #: A rectangle on the sheet: x0, y0 (top), x1, y1 (bottom), mm.
 Box = tuple[float, float, float, float]
@@ -74,6 +74,10 @@ FIELD_MARGIN = 3.0
 #: A title line's room: its cap height times this, plus :data:`TITLE_GAP`.
 TITLE_LEAD = 1.5
 TITLE_GAP = 1.5
+#: A title wider than its box is broken into lines (at most this many) this many cap heights
+#: apart (GOST 2.304, type B: 17/10 h); their room counts in the layout.
+TITLE_SPACING = 1.7
+TITLE_LINES = 3
 #: What a vector shorter than two arrowheads costs the search, against log(drawn area): a view
 #: drawn 1.4 times larger (twice the area) is worth about two more short vectors.
 SHORT_COST = 0.35
@@ -161,6 +165,8 @@ class View:
         self.weight = weight
         self.least_k = least_k
         self._title_w: float | None = None
+        #: the lines the title takes (more than one where it is wider than its box)
+        self.title_lines = 1
         self._memo: dict[object, Any] = {}
 
     @property
@@ -197,8 +203,8 @@ class View:
         return min(w, pw), min(h, ph)
 
     def title_room(self) -> float:
-        """The height (mm) of the title line above the drawing (0 without a title)."""
-        return self.title_height * TITLE_LEAD + TITLE_GAP if self.title else 0.0
+        """The height (mm) of the title's lines above the drawing (0 without a title)."""
+        return _title_room(self.title, self.title_height, self.title_lines)
 
     def caption(self, scale: Scale | None) -> str:
         """The title as drawn: the title, then the scale's label (and a length scale's GOST
@@ -280,6 +286,8 @@ class Node:
         #: The scale group whose scale the title shows (default: the first view's).
         self.group = group
         self._title_w: float | None = None
+        #: the lines the title takes (more than one where it is wider than its box)
+        self.title_lines = 1
         self._natural: tuple[float, float] | Literal[False] | None = False
         self._fixed: dict[bool, tuple[dict[int, float], list[int]]] = {}
 
@@ -291,7 +299,7 @@ class Node:
                 yield from it.views()
 
     def title_room(self) -> float:
-        return self.title_height * TITLE_LEAD + TITLE_GAP if self.title else 0.0
+        return _title_room(self.title, self.title_height, self.title_lines)
 
 
 class Row(Node):
@@ -399,6 +407,8 @@ class Layout:
     groups: dict[str, Scale] = field(default_factory=dict)
     #: the search's score of this arrangement: (−overflow in mm, Σ weight·log(drawn area))
     score: tuple[float, ...] = ()
+    #: the lines of each title broken to its box (by id of the view or node), as laid out
+    title_lines: dict[int, int] = field(default_factory=dict)
 
     @property
     def fits(self) -> bool:
@@ -1113,7 +1123,7 @@ def _title_width(v: View) -> float:
         return 0.0
     if v._title_w is None:
         sample = Scale(0.0025, v.quantity) if v.kind == "scaled" else None
-        v._title_w = text_width(v.caption(sample), v.title_height)
+        v._title_w = _lines_width(v.caption(sample), v.title_height, v.title_lines)
     return v._title_w
 
 
@@ -1124,8 +1134,32 @@ def _node_title_width(node: Node) -> float:
     text = node.title
     if node.group or any(v.group for v in node.views()):
         text += ", " + scale_text(Scale(0.0025, next(iter(node.views())).quantity))
-    node._title_w = text_width(text, node.title_height)
+    node._title_w = _lines_width(text, node.title_height, node.title_lines)
     return node._title_w
+
+
+def _lines_width(text: str, height: float, lines: int) -> float:
+    """The width (mm) of a title set in ``lines`` balanced lines (one: the whole line)."""
+    if lines <= 1:
+        return text_width(text, height)
+    tokens = _title_tokens(text)
+    return max(text_width(t, height) for t in balanced(tokens, min(lines, len(tokens)), height))
+
+
+def _title_tokens(text: str) -> list[tuple[str, str]]:
+    """The pieces a title may be broken between (:func:`break_points`), an equation and a
+    number with its unit kept on one line (``δ = 0,04``, ``μ_l = 0,002 м/мм``), a short
+    preposition with the word after it (``с маховиком``, never "по" at a line's end)."""
+    out: list[tuple[str, str]] = []
+    for t, j in break_points(text):
+        prev = out[-1][0] if out else ""
+        short = prev.isalpha() and prev.islower() and len(prev) <= 2
+        last = prev.rsplit(" ", 1)[-1]  # the number of ``μ_l = 0,0025`` keeps its unit
+        if out and (t == "=" or prev.endswith("=") or last[:1].isdigit() or short):
+            out[-1] = (out[-1][0] + out[-1][1] + t, j)
+        else:
+            out.append((t, j))
+    return out
 
 
 @functools.lru_cache(maxsize=4096)
@@ -1232,9 +1266,12 @@ def _fills(lay: Layout) -> list[float]:
     return list(out.values())
 
 
-def arrange(tree: Tree, field_: Field) -> Layout:
+def arrange(tree: Tree, field_: Field, _titles_broken: bool = False) -> Layout:
     """Pack ``tree`` into ``field_`` and choose every scale (no drawing; see the module's
-    docstring). :class:`ParameterError` when a view has no room at all."""
+    docstring). :class:`ParameterError` when a view has no room at all. A title wider than
+    the box it gets is broken into lines and the tree laid out again with their room."""
+    if not _titles_broken:
+        _set_title_lines(tree, {})
     # the search allocates many small tuples and no cycles: the cyclic collector, which would
     # scan the whole heap again and again meanwhile, waits till it is done
     collect = gc.isenabled()
@@ -1259,7 +1296,93 @@ def arrange(tree: Tree, field_: Field) -> Layout:
     for g in list(lay.groups):
         if g.startswith("#"):
             continue
+    if _break_titles(tree, lay):
+        return arrange(tree, field_, _titles_broken=True)
+    lay.title_lines = {id(t): t.title_lines for t in _titled(tree) if t.title_lines > 1}
     return lay
+
+
+# --- titles broken into lines ---------------------------------------------------------------
+
+
+def _title_room(title: str, height: float, lines: int) -> float:
+    """The room (mm) of a title of ``lines`` lines at cap height ``height`` (0 without one)."""
+    if not title:
+        return 0.0
+    return height * TITLE_LEAD + TITLE_GAP + (lines - 1) * height * TITLE_SPACING
+
+
+def title_text_lines(text: str, width: float, height: float) -> list[str]:
+    """A title as drawn in a box ``width`` mm wide: one line where it fits, else broken at
+    spaces into lines of about equal width (at most :data:`TITLE_LINES`)."""
+    if not text or text_width(text, height) <= width:
+        return [text]
+    tokens = _title_tokens(text)
+    for n in range(2, min(TITLE_LINES, len(tokens)) + 1):
+        lines = balanced(tokens, n, height)
+        if max(text_width(ln, height) for ln in lines) <= width:
+            return lines
+    return [text]
+
+
+def _titled(tree: Tree) -> Iterator[View | Node]:
+    """The tree's views and nodes (each once), those with a title."""
+    if tree.title:
+        yield tree
+    if isinstance(tree, Node):
+        for it in tree.items:
+            yield from _titled(it)
+
+
+def _set_title_lines(tree: Tree, lines: Mapping[int, int]) -> None:
+    """Set the lines of every title of the tree (1 unless ``lines`` says otherwise), dropping
+    what the layout remembered of the old room where a count changed."""
+    changed = False
+    for t in _titled(tree):
+        n = lines.get(id(t), 1)
+        if n != t.title_lines:
+            t.title_lines, t._title_w, changed = n, None, True
+    if changed:
+        _forget(tree)
+
+
+def _forget(tree: Tree) -> None:
+    """Drop the layout's memory of boxes and natural sizes that counted the titles' room."""
+    if isinstance(tree, View):
+        for key in [k for k in tree._memo if k not in ("ext", "nat", "lengths")]:
+            del tree._memo[key]
+        return
+    tree._natural, tree._fixed = False, {}
+    for it in tree.items:
+        _forget(it)
+
+
+def _break_titles(tree: Tree, lay: Layout) -> bool:
+    """Give each title wider than its box in ``lay`` the lines it takes there (never fewer
+    than it had); whether any count grew (the tree is then laid out again)."""
+    want: dict[int, int] = {}
+    for pl in lay:
+        v = pl.view
+        if v.title:
+            want[id(v)] = len(
+                title_text_lines(v.caption(pl.scale), pl.box[2] - pl.box[0], v.title_height)
+            )
+    for cell, node in lay.titles:
+        text = _node_caption(node, lay)
+        want[id(node)] = len(title_text_lines(text, cell[2] - cell[0], node.title_height))
+    grown = {id(t): max(t.title_lines, want.get(id(t), 1)) for t in _titled(tree)}
+    if all(grown[id(t)] == t.title_lines for t in _titled(tree)):
+        return False
+    _set_title_lines(tree, grown)
+    return True
+
+
+def _node_caption(node: Node, lay: Layout) -> str:
+    """A node's title as drawn: with its scale group's scale where it shows one."""
+    g = node.group or next((v.group for v in node.views() if v.group), "")
+    if g and g in lay.groups:
+        return f"{node.title}, {scale_text(lay.groups[g])}"
+    return node.title
 
 
 def compose(
@@ -1269,16 +1392,13 @@ def compose(
     arrangement of this same tree), then draw every title and every view; returns the layout
     (each view's box, scale and viewport)."""
     lay = layout or arrange(tree, field_ or Field.of(d.frame))
+    _set_title_lines(tree, lay.title_lines)  # the room this layout gave the titles
     for cell, node in lay.titles:
-        g = node.group or next((v.group for v in node.views() if v.group), "")
-        text = node.title
-        if g and g in lay.groups:
-            text = f"{text}, {scale_text(lay.groups[g])}"
-        d.text(text, (cell[0], cell[1] + node.title_height), node.title_height)
+        _draw_title(d, _node_caption(node, lay), cell, node.title_height, node.title_lines)
     for pl in lay:
         v = pl.view
         if v.title:
-            d.text(v.caption(pl.scale), (pl.box[0], pl.box[1] + v.title_height), v.title_height)
+            _draw_title(d, v.caption(pl.scale), pl.box, v.title_height, v.title_lines)
         if pl.scale is not None:
             ext = _ext(v)
             assert ext is not None
@@ -1287,6 +1407,16 @@ def compose(
             pl.viewport = d.viewport(pl.scale, centre, at)
         v.draw(d, pl)
     return lay
+
+
+def _draw_title(d: Drawing, text: str, box: Box, height: float, room: int) -> None:
+    """A title on its box's top edge, broken into lines within the box's width where it is
+    wider (at most the ``room`` lines the layout gave it)."""
+    lines = title_text_lines(text, box[2] - box[0], height)
+    if len(lines) > room:
+        lines = [text]
+    for i, line in enumerate(lines):
+        d.text(line, (box[0], box[1] + height + i * height * TITLE_SPACING), height)
 
 
 def text_width(markup: str, height: float) -> float:

@@ -283,12 +283,17 @@ def fit_text(
         room_w = x1 - x0 - 2.0 * c - (0.0 if clear else 0.8)
         room_h = y1 - y0 - 2.0 * c - (0.0 if clear else 1.0)
         lead = hh * CELL_LEAD
-        for n_lines in range(1, min(len(tokens), max_lines or len(tokens)) + 1):
+        # each sentence beginning a line in as few lines as the cell holds, before lines
+        # broken mid-sentence ("Силовой анализ." / "Шестизвенный механизм" / "с ползуном",
+        # not "Силовой анализ. Шестизвенный" / "механизм с ползуном")
+        tries = [(n, True) for n in range(1, min(len(tokens), max_lines or len(tokens)) + 1)]
+        tries += [(n, False) for n, _ in tries]
+        for n_lines, whole in tries:
             total = hh + (n_lines - 1) * lead
             if total > room_h:
-                break
-            lines = _by_sentences(markup, n_lines, hh, room_w)
-            if max(box(parse(ln), hh)[0] for ln in lines) <= room_w:
+                continue
+            lines = _by_sentences(markup, n_lines, hh, room_w, whole)
+            if lines and max(box(parse(ln), hh)[0] for ln in lines) <= room_w:
                 cx = (x0 + x1) / 2.0 if anchor == "centre" else x0 + max(c, 1.0)
                 top = (y0 + y1) / 2.0 - total / 2.0 + hh
                 return [
@@ -300,10 +305,13 @@ def fit_text(
     )
 
 
-def _by_sentences(markup: str, n: int, height: float, room: float) -> list[str]:
+def _by_sentences(
+    markup: str, n: int, height: float, room: float, whole: bool = False
+) -> list[str]:
     """``markup`` in ``n`` lines, each sentence (a sheet's subject, then its mechanism)
     beginning a line where that fits in ``room`` mm (the sentences' lines shared so that the
-    widest is narrowest); else in lines of about equal width (:func:`balanced`)."""
+    widest is narrowest); else in lines of about equal width (:func:`balanced`), or none
+    with ``whole`` (a text of several sentences that cannot begin each on a line)."""
     sentences = re.split(r"(?<=\.) ", markup)
     best: tuple[float, list[str]] | None = None
     if 1 < len(sentences) <= n:
@@ -317,7 +325,11 @@ def _by_sentences(markup: str, n: int, height: float, room: float) -> list[str]:
             wide = max(box(parse(ln), height)[0] for ln in lines)
             if wide <= room and (best is None or wide < best[0]):
                 best = (wide, lines)
-    return best[1] if best else balanced(break_points(markup), n, height)
+    if best:
+        return best[1]
+    if whole and len(sentences) > 1:
+        return []
+    return balanced(break_points(markup), n, height)
 
 
 @dataclass(frozen=True)

@@ -17,7 +17,7 @@ from typing import Any
 from geomcad import tol
 from geomcad.geom import Vec
 from geomcad.sheet import Drawing, Scale, Viewport
-from geomcad.sheet.compose import TITLE_LEAD, Extent, Figure, Placed
+from geomcad.sheet.compose import TITLE_LEAD, TITLE_SPACING, Extent, Figure, Placed
 from geomcad.sheet.drawing import SHORT_MM
 from geomcad.sheet.lang import Words
 from geomcad.sheet.loads import MOMENT_SWEEP, ForceScales, force, force_scales, moment
@@ -114,7 +114,9 @@ class LoadedFigure(Figure):
 
     def draw(self, d: Drawing, at: Placed) -> None:
         if self.fs.tiered:
-            top = at.box[1] + self.title_height * TITLE_LEAD + self.fs.further_rise(FURTHER_H)
+            lines = (self.title_lines - 1) * TITLE_SPACING  # a caption broken into lines
+            lead = self.title_height * (TITLE_LEAD + lines)
+            top = at.box[1] + lead + self.fs.further_rise(FURTHER_H)
             d.text(self.fs.further(), (at.box[0], top), FURTHER_H)
         super().draw(d, at)
 

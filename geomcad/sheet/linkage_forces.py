@@ -41,12 +41,13 @@ from geomcad.linkage.dynamics import Flywheel
 from geomcad.linkage.kinetostatics import Applied, Forces, GroupForces
 from geomcad.linkage.loads import centre_vec
 from geomcad.linkage.model import Linkage
-from geomcad.linkage.plans import Position, plan_name
+from geomcad.linkage.plans import Position
 from geomcad.linkage.solution import Solved, scheme
 from geomcad.sheet import Drawing, Sheet, TitleBlock, fmt_number, symbols
 from geomcad.sheet.compose import _GOST_K as GOST_K
 from geomcad.sheet.compose import (
     TITLE_LEAD,
+    TITLE_SPACING,
     Choice,
     Column,
     Grid,
@@ -310,7 +311,8 @@ def further_room(fs: ForceScales) -> float:
 def draw_further(d: Drawing, at: Placed, view: View, fs: ForceScales) -> None:
     """The view's further μ_F, on a line of its own under its caption."""
     if fs.tiered:
-        top = at.box[1] + view.title_height * TITLE_LEAD + fs.further_rise(SCALES_H)
+        lines = (view.title_lines - 1) * TITLE_SPACING  # a caption broken into lines
+        top = at.box[1] + view.title_height * (TITLE_LEAD + lines) + fs.further_rise(SCALES_H)
         d.text(fs.further(), (at.box[0], top), SCALES_H)
 
 
@@ -463,10 +465,10 @@ class _Lever(View):
         for name, im in lev.images.items():
             for q, names in groups:
                 if kv.mm(im.dist(q)) < 0.8:
-                    names.append(markup_of(plan_name(name)))
+                    names.append(markup_of(P.pn(name)))
                     break
             else:
-                groups.append((im, [markup_of(plan_name(name))]))
+                groups.append((im, [markup_of(P.pn(name))]))
         for q, names in groups:
             v.dot(q)
             v.label(q, ", ".join(names), 2.5, clear=0.8)

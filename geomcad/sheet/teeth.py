@@ -186,7 +186,7 @@ class CutTooth(View):
         y_d = gear.r + gear.x * m
         v.seg(Vec(x_lo, y_d), Vec(x_hi, y_d), "centre")
         # the datum line's name right of the x·m dimension (whose text may run past its arrow)
-        v.label(Vec(0.8 * x_lo, y_d), WORDS("rack_datum"), 2.5, prefer=(1.0, 1.0))
+        v.label(Vec(0.7 * x_lo, y_d), WORDS("rack_datum"), 2.5, prefer=(1.0, 1.0))
         v.seg(Vec(x_lo, gear.r), Vec(0.6 * x_lo, gear.r), "centre")
         if abs(gear.x) > tol.DERIVED:  # no shift to dimension for x = 0
             xd = 0.93 * x_lo

@@ -861,6 +861,10 @@ class Diagram(View):
 CELL_PAD = 1.2
 #: A table's heading takes at most this many lines; a narrower table is widened to it.
 HEADING_LINES = 3
+#: A heading stands on one line over its table (running past the table's right edge, over the
+#: room beside it) where the line is at most this many times the table's width: a drawing
+#: office writes "Исходные данные" on one line over a narrow table, never broken in two.
+HEADING_SPAN = 2.0
 
 
 class Table(View):
@@ -868,9 +872,12 @@ class Table(View):
     False), its columns as wide as their widest text (or ``widths``), widened in proportion
     to ``fill`` mm in all when that is wider (a table as wide as the one under it).
 
-    Its ``title`` is its heading (GOST 2.105: above the table, from its left edge), broken
-    into lines no wider than the table (a word longer than that widens the table): a heading
-    never runs past its table into the next view or the frame."""
+    Its ``title`` is its heading (GOST 2.105: above the table, from its left edge), on one
+    line where that line is at most HEADING_SPAN times the table's width (the view is then as
+    wide as its heading, the table under its left part), else broken into lines no wider than
+    the table (a word longer than that widens the table); a heading the layout gives room for
+    on one line is drawn on one line. A heading never runs past its view into the next view
+    or the frame."""
 
     def __init__(
         self,
@@ -910,18 +917,24 @@ class Table(View):
             ]
         total = sum(widths)
         self.widths = [w * fill / total for w in widths] if 0.0 < total < fill else list(widths)
-        #: the heading's lines (the view draws its heading itself, within its own width): at
-        #: most HEADING_LINES of them, the table widened where its columns are narrower
-        self.heading = (
-            wrap_balanced(heading, sum(self.widths), self.title_height) if heading else []
-        )
+        #: the heading's lines (the view draws its heading itself, within its own width): one
+        #: line where it costs little room, else at most HEADING_LINES of them, the table
+        #: widened where its columns are narrower
+        self.heading_line = heading
+        one = text_width(heading, self.title_height) if heading else 0.0
+        if one <= HEADING_SPAN * sum(self.widths):
+            self.heading = [heading] if heading else []
+        else:
+            self.heading = wrap_balanced(heading, sum(self.widths), self.title_height)
         if len(self.heading) > HEADING_LINES:
             tokens = break_points(heading)
             n = min(HEADING_LINES, len(tokens))
             self.heading = balanced(tokens, n, self.title_height)
         wide = max((text_width(t, self.title_height) for t in self.heading), default=0.0)
-        if wide > sum(self.widths):
+        if wide > sum(self.widths) and len(self.heading) > 1:
             self.widths = [w * wide / sum(self.widths) for w in self.widths]
+        #: the view's width: the table's, or its one-line heading's where that is wider
+        self.span = max(sum(self.widths), wide)
 
     def heading_room(self) -> float:
         """The height (mm) of the heading's lines above the table (0 without a heading): as
@@ -932,13 +945,19 @@ class Table(View):
         return h * TITLE_LEAD + TITLE_GAP + (len(self.heading) - 1) * h * LINE_SPACING
 
     def natural(self) -> tuple[float, float] | None:
-        return sum(self.widths), self.heading_room() + self.row_h * len(self.rows)
+        return self.span, self.heading_room() + self.row_h * len(self.rows)
 
     def draw(self, d: Drawing, at: Placed) -> None:
         x, y = at.inner[0], at.inner[1]
         h = self.title_height
-        for i, line in enumerate(self.heading):
-            d.text(line, (x, y + h + i * h * LINE_SPACING), h)
+        lines = self.heading
+        if len(lines) > 1 and text_width(self.heading_line, h) <= at.inner[2] - x:
+            # the layout gave the view room beside the table: the heading on one line, next
+            # to the table as its last line would be
+            lines = [""] * (len(lines) - 1) + [self.heading_line]
+        for i, line in enumerate(lines):
+            if line:
+                d.text(line, (x, y + h + i * h * LINE_SPACING), h)
         d.table(x, y + self.heading_room(), self.widths, self.rows, self.height, self.row_h,
                 self.header)  # fmt: skip
 
