@@ -629,7 +629,9 @@ def test_mechanism_forces_are_drawn_at_the_stated_mu_F(seed_sheet: Sheet) -> Non
     run, k_F = sol.data.run, sol.scales["F_mech"]
     words = [t.text for t in seed_sheet.texts()]
     assert k_F == 5.0
-    assert any(w.startswith("Правая половина") and w.endswith("μF = 5 Н/мм") for w in words)
+    # the caption, on one line or broken into lines within its box (compose._draw_title)
+    caption = " ".join(w for w in words if w.startswith("Правая половина") or "μF = 5" in w)
+    assert caption.startswith("Правая половина") and caption.endswith("μF = 5 Н/мм")
     assert "μF* = 0,5 Н/мм" in words
     mags = {
         "G_6": (9.81, 0.5),
