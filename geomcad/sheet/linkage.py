@@ -39,6 +39,7 @@ from geomcad.sheet.compose import (
     Column,
     Field,
     Grid,
+    Node,
     Placed,
     Row,
     Tree,
@@ -208,21 +209,19 @@ def _trees(
     ]  # fmt: skip
     vplans = Grid(*vviews, title=WORDS("vplans"), group="v", title_height=TITLE_H)
     detail = accel[0] if accel else s.drawn[0]
-    aplans: Tree = Grid(
-        *[
-            PlanView(P.ap, title=WORDS("aplan", phi=_deg(P.phi)), group="a", show_scale=False,
-                     weight=2.0, min_mm=SHORT_MM)
-            for P in accel
-        ],
-        title=WORDS("aplans"),
-        group="a",
-        title_height=TITLE_H,
-    )  # fmt: skip
-    if all(P is not detail for P in s.drawn):
-        # the velocity plan of the position drawn in detail, beside its acceleration plans
-        vdetail = PlanView(detail.vp, title=WORDS("vplan_detail", phi=_deg(detail.phi)),
-                           group="v", weight=2.0, min_mm=SHORT_MM)  # fmt: skip
-        aplans = Row(vdetail, aplans)
+    cells: list[View | Node] = []
+    for P in accel:
+        ap = PlanView(P.ap, title=WORDS("aplan", phi=_deg(P.phi)), group="a", show_scale=False,
+                      weight=2.0, min_mm=SHORT_MM)  # fmt: skip
+        if any(P is Q for Q in s.drawn):
+            cells.append(ap)
+            continue
+        # a position of an acceleration plan that is not a numbered one: its velocity plan
+        # beside its acceleration plan (every plan's position has both, linkages.md)
+        vp = PlanView(P.vp, title=WORDS("vplan_detail", phi=_deg(P.phi)), group="v",
+                      weight=2.0, min_mm=SHORT_MM)  # fmt: skip
+        cells.append(Row(vp, ap))
+    aplans: Tree = Grid(*cells, title=WORDS("aplans"), group="a", title_height=TITLE_H)
     diagrams = Column(
         Text([_through(s)], height=h), *_diagrams(s), title=WORDS("diagrams"), title_height=TITLE_H
     )
