@@ -29,7 +29,7 @@ import numpy as np
 from geomcad import tol
 from geomcad.errors import ParameterError
 from geomcad.geom import Vec
-from geomcad.linkage.model import Linkage
+from geomcad.linkage.model import Group, Linkage
 from geomcad.linkage.plans import Position, construct
 from geomcad.linkage.solution import Solved, scheme
 from geomcad.linkage.sweep import output_coordinate, prp_frame, rocker_angle, sweep
@@ -39,6 +39,7 @@ from geomcad.sheet.compose import (
     Column,
     Field,
     Grid,
+    Node,
     Placed,
     Row,
     Tree,
@@ -208,21 +209,19 @@ def _trees(
     ]  # fmt: skip
     vplans = Grid(*vviews, title=WORDS("vplans"), group="v", title_height=TITLE_H)
     detail = accel[0] if accel else s.drawn[0]
-    aplans: Tree = Grid(
-        *[
-            PlanView(P.ap, title=WORDS("aplan", phi=_deg(P.phi)), group="a", show_scale=False,
-                     weight=2.0, min_mm=SHORT_MM)
-            for P in accel
-        ],
-        title=WORDS("aplans"),
-        group="a",
-        title_height=TITLE_H,
-    )  # fmt: skip
-    if all(P is not detail for P in s.drawn):
-        # the velocity plan of the position drawn in detail, beside its acceleration plans
-        vdetail = PlanView(detail.vp, title=WORDS("vplan_detail", phi=_deg(detail.phi)),
-                           group="v", weight=2.0, min_mm=SHORT_MM)  # fmt: skip
-        aplans = Row(vdetail, aplans)
+    cells: list[View | Node] = []
+    for P in accel:
+        ap = PlanView(P.ap, title=WORDS("aplan", phi=_deg(P.phi)), group="a", show_scale=False,
+                      weight=2.0, min_mm=SHORT_MM)  # fmt: skip
+        if any(P is Q for Q in s.drawn):
+            cells.append(ap)
+            continue
+        # a position of an acceleration plan that is not a numbered one: its velocity plan
+        # beside its acceleration plan (every plan's position has both, linkages.md)
+        vp = PlanView(P.vp, title=WORDS("vplan_detail", phi=_deg(P.phi)), group="v",
+                      weight=2.0, min_mm=SHORT_MM)  # fmt: skip
+        cells.append(Row(vp, ap))
+    aplans: Tree = Grid(*cells, title=WORDS("aplans"), group="a", title_height=TITLE_H)
     diagrams = Column(
         Text([_through(s)], height=h), *_diagrams(s), title=WORDS("diagrams"), title_height=TITLE_H
     )
@@ -413,6 +412,8 @@ def _principal(s: Solved) -> tuple[Position, int | None]:
     return s.drawn[0], 0
 
 
+#: Points nearer than this fraction of the crank's length are at one place (one label).
+_SAME = 1e-6
 #: A slotted link runs on past its block by this fraction of the block's distance from the pivot.
 SLOT_PAST = 1.15
 
@@ -449,11 +450,14 @@ def link_bodies(
             cy = sum(q.y for q in uniq) / len(uniq)
             ring = sorted(uniq, key=lambda q: math.atan2(q.y - cy, q.x - cx))
             out[str(link)] = [Body.of(ring, closed=True)]
-        if g is not None and g.kind == "PRP" and link == g.links[1]:
-            # the yoke's slot: from its reference point through the block, a little past it
-            E, A = P.pos[g.joint], P.pos[g.slider]
-            if E.dist(A) > 0.0:
-                out.setdefault(str(link), []).append(Body.of([E, A + (A - E) * 0.15]))
+        if g is not None and g.kind == "PRP" and link == g.links[1] and g.guide is not None:
+            # the yoke: its rod along the fixed guide (first: the link's number goes there) and
+            # its slot across it, over the block's whole travel, in every position alike
+            yk = yoke(lk, g)
+            E, d = P.pos[g.joint], g.guide.direction
+            rod = Body.of([E, E + d * yk.rod])
+            slot = Body.of([E - P.slide[g.links[0]] * yk.slot, E + P.slide[g.links[0]] * yk.slot])
+            out[str(link)] = [rod, slot, *(out.get(str(link), []) if len(uniq) > 2 else [])]
         # a guide on this link runs on to the slider it carries
         for g2 in lk.groups:
             gd = g2.guide
@@ -464,6 +468,53 @@ def link_bodies(
                 if gd.offset:
                     out[str(link)].append(Body.of([P.pos[gd.frm], line.p]))
     return out
+
+
+@dataclass(frozen=True)
+class Yoke:
+    """How a PRP group's yoke is drawn: ``rod`` (model units, signed along the guide's
+    direction) from its point on the guide to the rod's end, ``slot`` the slot's half length,
+    ``guide`` the point of the fixed guide (the frame's, the same in every position) the rod
+    slides in, clear of the yoke's travel on the side away from the crank's pivot."""
+
+    rod: float
+    slot: float
+    guide: Vec
+
+
+_YOKES: dict[int, tuple[Linkage, dict[int, Yoke]]] = {}
+
+
+def yoke(lk: Linkage, g: Group) -> Yoke:
+    """The yoke of the PRP group ``g`` (:class:`Yoke`), from the linkage's whole turn."""
+    held = _YOKES.get(id(lk))
+    if held is None or held[0] is not lk:
+        held = (lk, {})
+        _YOKES.clear()
+        _YOKES[id(lk)] = held
+    if g.index not in held[1]:
+        assert g.guide is not None
+        st = sweep(lk, np.linspace(0.0, 2.0 * math.pi, DIAGRAM_SAMPLES), order=0)
+        q, d = g.guide.through, g.guide.direction
+        E, A = np.asarray(st.pos[g.joint]), np.asarray(st.pos[g.slider])
+        t = (E - [q.x, q.y]) @ [d.x, d.y]
+        t0, t1 = float(t.min()), float(t.max())
+        side = -1.0 if (lk.frame[lk.pivot] - q).dot(d) >= 0.5 * (t0 + t1) else 1.0
+        clear = 0.5 * lk.length  # the guide this far past the yoke's travel
+        tg = t0 - clear if side < 0.0 else t1 + clear
+        rod = side * (max(abs(t1 - tg), abs(t0 - tg)) + 0.3 * lk.length)
+        slot = SLOT_PAST * max(float(np.max(np.hypot(*(A - E).T))), lk.length)
+        held[1][g.index] = Yoke(rod, slot, q + d * tg)
+    return held[1][g.index]
+
+
+def frame_guides(lk: Linkage) -> dict[str, Vec]:
+    """Where the scheme draws the frame's guide of each yoke (``draw_scheme``'s ``guides``)."""
+    return {
+        f"{g.joint}:{g.links[1]}": yoke(lk, g).guide
+        for g in lk.groups
+        if g.kind == "PRP" and g.guide is not None
+    }
 
 
 def _mechanism_extent(s: Solved) -> tuple[float, float, float, float]:
@@ -534,13 +585,21 @@ class _Mechanism(View):
             vels = [P.vel[name] for P in s.drawn]
             position_numbers(v, pts, vels, lk.frame[lk.pivot], numbered)
             numbered = pts
-        labels = {}
+        labels: dict[str, str] = {}
         mech = scheme(lk, P0)  # the pairs where the principal position has them
+        first: dict[str, str] = {}  # the names of the points at one place, on its first pair
         for pair in mech.pairs:
             name = pair.name.split(":")[0]
-            if name in P0.pos:
-                labels[pair.name] = name
-        draw_scheme(v, mech, bodies=link_bodies(lk, P0), pair_labels=labels, label_height=3.5)
+            if name not in P0.pos:
+                continue
+            there = next((k for k in first if P0.pos[k].dist(P0.pos[name]) <= _SAME * lk.length),
+                      None)  # fmt: skip
+            if there is None:
+                first[name], labels[pair.name] = pair.name, name
+            elif name not in labels[first[there]].split(", "):
+                labels[first[there]] += f", {name}"  # a yoke's E on the block's A: "A, E"
+        draw_scheme(v, mech, bodies=link_bodies(lk, P0), pair_labels=labels, label_height=3.5,
+                    guides=frame_guides(lk))  # fmt: skip
         for p in lk.points:
             if p.name not in labels.values():
                 v.dot(P0.pos[p.name])

@@ -66,6 +66,7 @@ from geomcad.sheet.linkage import (
     ZERO,
     file_title,
     fit,
+    frame_guides,
     link_bodies,
     omega_arrow,
     order_width,
@@ -351,7 +352,8 @@ class _Loaded(_Forces):
         super().__init__(title=title, title_height=5.0, margin=LOAD_MM, weight=2.0)
         self.lk, self.P, self.f = lk, P, f
         self.loads = [ld for lds in f.loads.values() for ld in lds]
-        self._ext = _bbox(list(P.pos.values()), lk.length)
+        bodies = [q for bs in link_bodies(lk, P).values() for b in bs for q in b.points]
+        self._ext = _bbox([*P.pos.values(), *bodies], lk.length)
         drawn = [ld.force.norm for ld in self.loads if ld.force is not None and ld.at is not None]
         self.fs = force_scales(drawn, LOAD_MM)
 
@@ -361,7 +363,7 @@ class _Loaded(_Forces):
         draw_further(d, at, self, self.fs)
         lk, P = self.lk, self.P
         draw_scheme(v, scheme(lk, P), bodies=link_bodies(lk, P), pair_labels={},
-                    label_height=3.5)  # fmt: skip
+                    label_height=3.5, guides=frame_guides(lk))  # fmt: skip
         for name in P.pos:  # every named point, the frame's (O, C) too
             if name in lk.owner:
                 v.label(P.pos[name], markup_of(name), 3.5, clear=1.0)
@@ -383,6 +385,7 @@ class _FreeBody(_Forces):
             pts += [P.pos[n] for n in lk.points_on(i)]
             pts += [ld.at for ld in gf.loads[i] if ld.at is not None]
         pts += [r.at for r in gf.reactions]
+        pts += [q for bs in link_bodies(lk, P, links).values() for b in bs for q in b.points]
         self._ext = _bbox(pts, lk.length * 0.5)
         forces = [ld.force.norm for i in links for ld in gf.loads[i] if ld.force is not None]
         forces += [r.force.norm for r in gf.reactions if r.on in links]
@@ -400,7 +403,7 @@ class _FreeBody(_Forces):
         near = {x for p in pairs for x in p.links} - own - {full.frame}
         mech = Mechanism(tuple(Link(x) for x in sorted(own | near)), pairs, full.frame)
         draw_scheme(v, mech, bodies=link_bodies(lk, P, links), pair_labels={},
-                    ghosts=sorted(near))  # fmt: skip
+                    ghosts=sorted(near), guides=frame_guides(lk))  # fmt: skip
         for i in links:
             _draw_loads(v, lk, P, gf.loads[i], self.fs, "vector")
         for r in gf.reactions:

@@ -86,6 +86,7 @@ def draw_scheme(
     label_height: float = 3.5,
     ghosts: Collection[str] = (),
     supports: Mapping[str, tuple[float, float]] | None = None,
+    guides: Mapping[str, PointLike] | None = None,
 ) -> None:
     """Draw ``mech`` in viewport ``v`` (see the module docstring).
 
@@ -96,7 +97,10 @@ def draw_scheme(
     links an Assur group hangs on, when the group is drawn on its own; their pairs with the drawn
     links still get their symbols (a joint, a block with a stub of its guide). ``supports`` maps
     a frame hinge's pair name to the model direction its support points in, where the drawing
-    needs that side free (default: :func:`_support_direction`'s).
+    needs that side free (default: :func:`_support_direction`'s). ``guides`` maps a prismatic
+    pair on the frame to the model point on its axis where its hatched guide is drawn (default:
+    the pair's point), for a link that slides on the frame by a rod off its other pairs (a
+    yoke). A link given a body is drawn as that body, never as a block.
     """
     bodies = dict(bodies or {})
     size = mech.size()
@@ -114,7 +118,8 @@ def draw_scheme(
             _higher(v, mech, p, role)
     for p in mech.pairs:
         if p.kind == "P":
-            _prismatic(v, mech, p, role, ghosts)
+            at = (guides or {}).get(p.name)
+            _prismatic(v, mech, p, role, ghosts, drawn, None if at is None else vec(at))
     for p in mech.pairs:
         if p.kind == "R":
             if mech.frame in p.links:
@@ -155,30 +160,41 @@ def _block(v: Viewport, q: Vec, along: Vec, role: str) -> None:
 
 
 def _prismatic(
-    v: Viewport, mech: Mechanism, p: Pair, role: Mapping[str, str], ghosts: Collection[str]
+    v: Viewport,
+    mech: Mechanism,
+    p: Pair,
+    role: Mapping[str, str],
+    ghosts: Collection[str],
+    drawn: Mapping[str, Sequence[Body]],
+    guide_at: Vec | None = None,
 ) -> None:
     assert p.axis is not None
     u = p.axis
+
+    def block(lk: str) -> bool:  # a link of one point, not given a body of its own
+        return is_block(mech, lk) and not drawn.get(lk)
+
     if any(lk in ghosts for lk in p.links):
         # a group drawn on its own: its block with a stub of the guide it slides on
         k = v.scale.model(GUIDE_HALF * 1.6)
         v.seg(p.at - u * k, p.at + u * k, "centre")
         for lk in p.links:
-            if lk not in ghosts and is_block(mech, lk):
+            if lk not in ghosts and block(lk):
                 _block(v, p.at, u, role[lk])
         return
     if mech.frame in p.links:
         k = v.scale.model(GUIDE_HALF)
-        a, b = p.at - u * k, p.at + u * k
+        g = p.at if guide_at is None else guide_at
+        a, b = g - u * k, g + u * k
         n = u.perp()
         v.guide(a, b, (n.x, n.y))
         v.guide(b, a, (-n.x, -n.y))
         link = p.other(mech.frame)
-        if is_block(mech, link):
+        if block(link):
             _block(v, p.at, u, role[link])
         return
     for lk in p.links:
-        if is_block(mech, lk):
+        if block(lk):
             _block(v, p.at, u, role[lk])
             return
 
