@@ -693,3 +693,71 @@ def test_the_force_sheet_lists_the_order() -> None:
                 and t.text.split(". ", 1)[0].isdigit()]  # fmt: skip
     assert [t.split(". ", 1)[0] for t in numbered][-n:] == [str(i) for i in range(1, n + 1)]
     assert any(t.text == "Порядок силового расчёта" for t in sheet.texts())
+
+
+# --- Zhukovsky's lever: the links' images joined, every load's point lettered ------------------
+
+
+@pytest.mark.parametrize("name", [*FILES, "example", "shaper"])
+def test_the_lever_joins_each_links_images_and_letters_every_load_point(
+    name: str, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """On Zhukovsky's lever every moving link's image is drawn as on the velocity plan: a
+    segment joins the images of any two of its points (its points on the plans, a3 of a
+    sliding pair included, and the points its force loads act at), and every point a load
+    (a couple's two forces too) or the balancing force acts at carries a label."""
+    from geomcad.sheet import linkage_forces as lf
+    from geomcad.sheet.drawing import Viewport
+
+    if name == "shaper":
+        lk = parse(tomllib.loads((EXAMPLE.parent / "shaper.toml").read_text(encoding="utf-8")))
+    else:
+        lk = example() if name == "example" else load(FILES[name])
+    s = solve(lk)
+    P, f, _ = lf.force_position(s)
+    segs: list[tuple[Vec, Vec, float]] = []  # (a, b, mm per model unit)
+    anchors: list[tuple[Vec, str, float]] = []
+    inside = [False]
+    seg, label, draw = Viewport.seg, Viewport.label, lf._Lever.draw
+
+    def rec_seg(v: Viewport, a: Any, b: Any, role: str = "link") -> None:
+        if inside[0]:
+            segs.append((Vec(*a), Vec(*b), v.mm(1.0)))
+        seg(v, a, b, role)
+
+    def rec_label(v: Viewport, q: Any, markup: str, *args: Any, **kw: Any) -> None:
+        if inside[0]:
+            anchors.append((Vec(*q), markup, v.mm(1.0)))
+        label(v, q, markup, *args, **kw)
+
+    def rec_draw(self: Any, d: Any, at: Any) -> None:
+        inside[0] = True
+        try:
+            draw(self, d, at)
+        finally:
+            inside[0] = False
+
+    monkeypatch.setattr(Viewport, "seg", rec_seg)
+    monkeypatch.setattr(Viewport, "label", rec_label)
+    monkeypatch.setattr(lf._Lever, "draw", rec_draw)
+    lf.force_sheets(s, name, first_no=2)
+    assert segs and anchors
+
+    def joined(x: Vec, y: Vec) -> bool:
+        return any(
+            (a.dist(x) * k < 0.05 and b.dist(y) * k < 0.05)
+            or (a.dist(y) * k < 0.05 and b.dist(x) * k < 0.05)
+            for a, b, k in segs
+        )
+
+    k = segs[0][2]
+    for link in lk.moving_links:
+        pts = [P.vp.points[n].perp() for _, n in P.handles.get(link, [])]
+        pts += [ld.velocity.perp() for ld in f.loads.get(link, []) if ld.velocity is not None]
+        for i, x in enumerate(pts):
+            for y in pts[i + 1 :]:
+                if x.dist(y) * k > 0.3:
+                    assert joined(x, y), (name, link, x, y)
+    lev = f.lever
+    for q in [*(it.image for it in lev.items), lev.images[lk.joint]]:
+        assert any(a.dist(q) * k < 0.85 and m.strip() for a, m, k in anchors), (name, q)

@@ -38,10 +38,10 @@ from geomcad.forces import ForcePolygon
 from geomcad.geom import Vec
 from geomcad.linkage.analysis import analyse
 from geomcad.linkage.dynamics import Flywheel
-from geomcad.linkage.kinetostatics import Applied, Forces, GroupForces
+from geomcad.linkage.kinetostatics import Applied, Forces, GroupForces, Lever
 from geomcad.linkage.loads import centre_vec
 from geomcad.linkage.model import Linkage
-from geomcad.linkage.plans import Position, plan_name
+from geomcad.linkage.plans import Position
 from geomcad.linkage.solution import Solved, scheme
 from geomcad.sheet import Drawing, Sheet, TitleBlock, fmt_number, symbols
 from geomcad.sheet.compose import _GOST_K as GOST_K
@@ -422,6 +422,29 @@ def polygon_points(poly: ForcePolygon) -> list[Vec]:
     return [q for pv in poly.vectors for q in (pv.tail, pv.head)]
 
 
+def lever_images(P: Position, lev: Lever) -> dict[str, Vec]:
+    """The lettered points of Zhukovsky's lever by the plan's names: every point of the
+    velocity plan turned 90° (the pole p, a sliding pair's a3 …), then every load's point off
+    the plan (a centre of mass s2 …)."""
+    out = {name: q.perp() for name, q in P.vp.points.items()}
+    for it in lev.items:
+        if it.point:
+            out.setdefault(P.pn(it.point), it.image)
+    return out
+
+
+def lever_links(lk: Linkage, P: Position, lev: Lever) -> dict[int, list[str]]:
+    """Each moving link's points on the lever (plan names): its points on the plans (its
+    joints, its [[point]] points, the point of a sliding pair on it) and the points its loads
+    act at; the image of the link is the figure they make, joined as on the velocity plan."""
+    out: dict[int, list[str]] = {}
+    for link in lk.moving_links:
+        names = [n for _, n in P.handles.get(link, [])]
+        names += [P.pn(it.point) for it in lev.items if it.link == link and it.point]
+        out[link] = list(dict.fromkeys(names))
+    return out
+
+
 class _Lever(View):
     """Zhukovsky's lever: the velocity plan turned 90° with the loads at their points'
     images and the balancing force at the crank's joint."""
@@ -434,7 +457,7 @@ class _Lever(View):
         super().__init__(title=WORDS("lever"), title_height=5.0, quantity="v", series="nice",
                          margin=LEVER_LOAD_MM)  # fmt: skip
         self.lk, self.P, self.f = lk, P, f
-        pts = [Vec(0.0, 0.0), *lev.images.values(), *(it.image for it in lev.items)]
+        pts = [Vec(0.0, 0.0), *lever_images(P, lev).values(), *(it.image for it in lev.items)]
         xs = [q.x for q in pts]
         ys = [q.y for q in pts]
         self._ext = (min(xs), min(ys), max(xs), max(ys))
@@ -459,14 +482,20 @@ class _Lever(View):
             a, b = P.vp.points[vec.tail].perp(), P.vp.points[vec.head].perp()
             if kv.mm((b - a).norm) > 0.3:
                 v.seg(a, b, "construction")
-        groups: list[tuple[Vec, list[str]]] = [(Vec(0.0, 0.0), ["p"])]
-        for name, im in lev.images.items():
+        images = lever_images(P, lev)
+        for figure in lever_links(lk, P, lev).values():
+            for i, x in enumerate(figure):
+                for y in figure[i + 1 :]:
+                    if kv.mm(images[x].dist(images[y])) > 0.3:
+                        v.seg(images[x], images[y], "construction")
+        groups: list[tuple[Vec, list[str]]] = []
+        for name, im in images.items():
             for q, names in groups:
                 if kv.mm(im.dist(q)) < 0.8:
-                    names.append(markup_of(plan_name(name)))
+                    names.append(markup_of(name))
                     break
             else:
-                groups.append((im, [markup_of(plan_name(name))]))
+                groups.append((im, [markup_of(name)]))
         for q, names in groups:
             v.dot(q)
             v.label(q, ", ".join(names), 2.5, clear=0.8)
