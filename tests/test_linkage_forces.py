@@ -698,13 +698,39 @@ def test_the_force_sheet_lists_the_order() -> None:
 # --- Zhukovsky's lever: the links' images joined, every load's point lettered ------------------
 
 
+def joined_up(pts: list[Vec], segs: list[tuple[Vec, Vec, float]], k: float) -> bool:
+    """Whether the segments ``segs`` (drawn at ``k`` mm per model unit) running from point to
+    point of ``pts`` (those within 0.3 mm of each other one point) join them all."""
+    uniq: list[Vec] = []
+    for q in pts:
+        if all(q.dist(u) * k > 0.3 for u in uniq):
+            uniq.append(q)
+
+    def at(q: Vec) -> int:
+        return next((i for i, u in enumerate(uniq) if u.dist(q) * k < 0.05), -1)
+
+    parent = list(range(len(uniq)))
+
+    def root(i: int) -> int:
+        while parent[i] != i:
+            i = parent[i]
+        return i
+
+    for a, b, _ in segs:
+        i, j = at(a), at(b)
+        if i >= 0 and j >= 0 and i != j:
+            parent[root(i)] = root(j)
+    return len({root(i) for i in range(len(uniq))}) <= 1
+
+
 @pytest.mark.parametrize("name", [*FILES, "example", "shaper"])
 def test_the_lever_joins_each_links_images_and_letters_every_load_point(
     name: str, monkeypatch: pytest.MonkeyPatch
 ) -> None:
     """On Zhukovsky's lever every moving link's image is drawn as on the velocity plan: a
-    segment joins the images of any two of its points (its points on the plans, a3 of a
-    sliding pair included, and the points its force loads act at), and every point a load
+    figure of segments from image to image joins the images of all its points (its points on
+    the plans, a3 of a sliding pair included, and the points its force loads act at), and
+    every point a load
     (a couple's two forces too) or the balancing force acts at carries a label."""
     from geomcad.sheet import linkage_forces as lf
     from geomcad.sheet.drawing import Viewport
@@ -743,21 +769,28 @@ def test_the_lever_joins_each_links_images_and_letters_every_load_point(
     lf.force_sheets(s, name, first_no=2)
     assert segs and anchors
 
-    def joined(x: Vec, y: Vec) -> bool:
-        return any(
-            (a.dist(x) * k < 0.05 and b.dist(y) * k < 0.05)
-            or (a.dist(y) * k < 0.05 and b.dist(x) * k < 0.05)
-            for a, b, k in segs
-        )
-
     k = segs[0][2]
     for link in lk.moving_links:
         pts = [P.vp.points[n].perp() for _, n in P.handles.get(link, [])]
         pts += [ld.velocity.perp() for ld in f.loads.get(link, []) if ld.velocity is not None]
-        for i, x in enumerate(pts):
-            for y in pts[i + 1 :]:
-                if x.dist(y) * k > 0.3:
-                    assert joined(x, y), (name, link, x, y)
+        # the images closer than 0.3 mm are one point; segments between them join them all
+        assert joined_up(pts, segs, k), (name, link, pts)
     lev = f.lever
     for q in [*(it.image for it in lev.items), lev.images[lk.joint]]:
         assert any(a.dist(q) * k < 0.85 and m.strip() for a, m, k in anchors), (name, q)
+
+
+def test_a_links_figure_is_its_outline_through_its_points() -> None:
+    """A link ABM with its centre S on AB: the outline a–s–b–m–a, no diagonal s–m; points in
+    a line: consecutive segments; a point inside: joined to every corner."""
+    from geomcad.sheet.linkage_forces import figure_edges
+
+    a, b, m, s = Vec(0.0, 0.0), Vec(4.0, 0.0), Vec(1.0, 3.0), Vec(2.0, 0.0)
+    pairs = {frozenset((x, y)) for x, y in figure_edges([a, b, m, s], 1e-6)}
+    assert pairs == {frozenset(p) for p in [(a, s), (s, b), (b, m), (m, a)]}
+    line = {frozenset((x, y)) for x, y in figure_edges([b, a, s], 1e-6)}
+    assert line == {frozenset((a, s)), frozenset((s, b))}
+    inside = Vec(1.5, 1.0)
+    got = {frozenset((x, y)) for x, y in figure_edges([a, b, m, inside], 1e-6)}
+    assert {frozenset((inside, q)) for q in (a, b, m)} <= got
+    assert figure_edges([a, Vec(0.0, 1e-9)], 1e-6) == []

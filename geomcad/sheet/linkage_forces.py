@@ -25,6 +25,7 @@ tables, orders and notes 3.5 mm high on A2 and A1, its views' titles 5 mm. The w
 
 from __future__ import annotations
 
+import itertools
 import math
 from collections.abc import Mapping, Sequence
 from dataclasses import replace
@@ -445,6 +446,54 @@ def lever_links(lk: Linkage, P: Position, lev: Lever) -> dict[int, list[str]]:
     return out
 
 
+def figure_edges(pts: Sequence[Vec], eps: float) -> list[tuple[Vec, Vec]]:
+    """The segments that draw the image of a link through its points ``pts``: its outline
+    (the convex hull, with the points on an edge as the edge's vertices: a–s2–b, not a–b and
+    s2–m) and a point inside it joined to every corner; points closer than ``eps`` are one."""
+    uniq: list[Vec] = []
+    for q in pts:
+        if all(q.dist(u) > eps for u in uniq):
+            uniq.append(q)
+    if len(uniq) < 2:
+        return []
+    uniq.sort(key=lambda q: (q.x, q.y))
+
+    def half(seq: Sequence[Vec]) -> list[Vec]:
+        out: list[Vec] = []
+        for q in seq:
+            while len(out) >= 2 and (out[-1] - out[-2]).cross(q - out[-2]) <= 0.0:
+                out.pop()
+            out.append(q)
+        return out
+
+    lo, hi = half(uniq), half(uniq[::-1])
+    corners = lo[:-1] + hi[:-1] if len(uniq) > 2 else uniq
+    # all in line: the hull is the segment between the two extremes
+    ring = len(corners) > 2
+    edges: list[tuple[Vec, Vec]] = []
+    on_edge: set[int] = set()
+    sides = (
+        list(zip(corners, corners[1:] + corners[:1], strict=True))
+        if ring
+        else [(uniq[0], uniq[-1])]
+    )
+    for a, b in sides:
+        u = b - a
+        n2 = u.dot(u)
+        chain = []
+        for i, q in enumerate(uniq):
+            t = (q - a).dot(u) / n2
+            if -1e-9 <= t <= 1.0 + 1e-9 and abs(u.cross(q - a)) / math.sqrt(n2) <= eps:
+                chain.append((t, q))
+                on_edge.add(i)
+        chain.sort(key=lambda tq: tq[0])
+        edges += [(x, y) for (_, x), (_, y) in itertools.pairwise(chain)]
+    for i, q in enumerate(uniq):
+        if i not in on_edge:
+            edges += [(c, q) for c in corners]
+    return edges
+
+
 class _Lever(View):
     """Zhukovsky's lever: the velocity plan turned 90° with the loads at their points'
     images and the balancing force at the crank's joint."""
@@ -484,10 +533,8 @@ class _Lever(View):
                 v.seg(a, b, "construction")
         images = lever_images(P, lev)
         for figure in lever_links(lk, P, lev).values():
-            for i, x in enumerate(figure):
-                for y in figure[i + 1 :]:
-                    if kv.mm(images[x].dist(images[y])) > 0.3:
-                        v.seg(images[x], images[y], "construction")
+            for x, y in figure_edges([images[n] for n in figure], kv.model(0.3)):
+                v.seg(x, y, "construction")
         groups: list[tuple[Vec, list[str]]] = []
         for name, im in images.items():
             for q, names in groups:
