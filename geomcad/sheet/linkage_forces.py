@@ -527,14 +527,19 @@ class _Lever(View):
         draw_further(d, at, self, self.fs)
         kv = v.scale
         lk, P, lev = self.lk, self.P, self.f.lever
+        drawn: list[tuple[Vec, Vec]] = []
         for vec in P.vp.vectors:
             a, b = P.vp.points[vec.tail].perp(), P.vp.points[vec.head].perp()
             if kv.mm((b - a).norm) > 0.3:
                 v.seg(a, b, "construction")
+                drawn.append((a, b))
         images = lever_images(P, lev)
         for figure in lever_links(lk, P, lev).values():
             for x, y in figure_edges([images[n] for n in figure], kv.model(0.3)):
-                v.seg(x, y, "construction")
+                # a side the plan draws already (pa, a3a …) is not drawn twice
+                if not any({x, y} == {a, b} for a, b in drawn):
+                    v.seg(x, y, "construction")
+                    drawn.append((x, y))
         groups: list[tuple[Vec, list[str]]] = []
         for name, im in images.items():
             for q, names in groups:
