@@ -743,3 +743,104 @@ def test_a_vanishing_angular_acceleration_is_zero_in_every_result() -> None:
     vanishing = [p for p in out if round(p["phi_deg"]) % 180 == 90]
     assert len(vanishing) == 2
     assert all(p["eps_2"] == 0.0 and p["eps_3"] == 0.0 for p in vanishing)
+
+
+# --- Zhukovsky's lever: the links' images joined, every load's point lettered ------------------
+
+
+def joined_up(pts: list[Vec], segs: list[tuple[Vec, Vec, float]], k: float) -> bool:
+    """Whether the segments ``segs`` (drawn at ``k`` mm per model unit) running from point to
+    point of ``pts`` (those within 0.3 mm of each other one point) join them all."""
+    uniq: list[Vec] = []
+    for q in pts:
+        if all(q.dist(u) * k > 0.3 for u in uniq):
+            uniq.append(q)
+
+    def at(q: Vec) -> int:
+        return next((i for i, u in enumerate(uniq) if u.dist(q) * k < 0.05), -1)
+
+    parent = list(range(len(uniq)))
+
+    def root(i: int) -> int:
+        while parent[i] != i:
+            i = parent[i]
+        return i
+
+    for a, b, _ in segs:
+        i, j = at(a), at(b)
+        if i >= 0 and j >= 0 and i != j:
+            parent[root(i)] = root(j)
+    return len({root(i) for i in range(len(uniq))}) <= 1
+
+
+@pytest.mark.parametrize("name", [*FILES, "example", "shaper"])
+def test_the_lever_joins_each_links_images_and_letters_every_load_point(
+    name: str, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """On Zhukovsky's lever every moving link's image is drawn as on the velocity plan: a
+    figure of segments from image to image joins the images of all its points (its points on
+    the plans, a3 of a sliding pair included, and the points its force loads act at), and
+    every point a load
+    (a couple's two forces too) or the balancing force acts at carries a label."""
+    from geomcad.sheet import linkage_forces as lf
+    from geomcad.sheet.drawing import Viewport
+
+    if name == "shaper":
+        lk = parse(tomllib.loads((EXAMPLE.parent / "shaper.toml").read_text(encoding="utf-8")))
+    else:
+        lk = example() if name == "example" else load(FILES[name])
+    s = solve(lk)
+    P, f, _ = lf.force_position(s)
+    segs: list[tuple[Vec, Vec, float]] = []  # (a, b, mm per model unit)
+    anchors: list[tuple[Vec, str, float]] = []
+    inside = [False]
+    seg, label, draw = Viewport.seg, Viewport.label, lf._Lever.draw
+
+    def rec_seg(v: Viewport, a: Any, b: Any, role: str = "link") -> None:
+        if inside[0]:
+            segs.append((Vec(*a), Vec(*b), v.mm(1.0)))
+        seg(v, a, b, role)
+
+    def rec_label(v: Viewport, q: Any, markup: str, *args: Any, **kw: Any) -> None:
+        if inside[0]:
+            anchors.append((Vec(*q), markup, v.mm(1.0)))
+        label(v, q, markup, *args, **kw)
+
+    def rec_draw(self: Any, d: Any, at: Any) -> None:
+        inside[0] = True
+        try:
+            draw(self, d, at)
+        finally:
+            inside[0] = False
+
+    monkeypatch.setattr(Viewport, "seg", rec_seg)
+    monkeypatch.setattr(Viewport, "label", rec_label)
+    monkeypatch.setattr(lf._Lever, "draw", rec_draw)
+    lf.force_sheets(s, name, first_no=2)
+    assert segs and anchors
+
+    k = segs[0][2]
+    for link in lk.moving_links:
+        pts = [P.vp.points[n].perp() for _, n in P.handles.get(link, [])]
+        pts += [ld.velocity.perp() for ld in f.loads.get(link, []) if ld.velocity is not None]
+        # the images closer than 0.3 mm are one point; segments between them join them all
+        assert joined_up(pts, segs, k), (name, link, pts)
+    lev = f.lever
+    for q in [*(it.image for it in lev.items), lev.images[lk.joint]]:
+        assert any(a.dist(q) * k < 0.85 and m.strip() for a, m, k in anchors), (name, q)
+
+
+def test_a_links_figure_is_its_outline_through_its_points() -> None:
+    """A link ABM with its centre S on AB: the outline a–s–b–m–a, no diagonal s–m; points in
+    a line: consecutive segments; a point inside: joined to every corner."""
+    from geomcad.sheet.linkage_forces import figure_edges
+
+    a, b, m, s = Vec(0.0, 0.0), Vec(4.0, 0.0), Vec(1.0, 3.0), Vec(2.0, 0.0)
+    pairs = {frozenset((x, y)) for x, y in figure_edges([a, b, m, s], 1e-6)}
+    assert pairs == {frozenset(p) for p in [(a, s), (s, b), (b, m), (m, a)]}
+    line = {frozenset((x, y)) for x, y in figure_edges([b, a, s], 1e-6)}
+    assert line == {frozenset((a, s)), frozenset((s, b))}
+    inside = Vec(1.5, 1.0)
+    got = {frozenset((x, y)) for x, y in figure_edges([a, b, m, inside], 1e-6)}
+    assert {frozenset((inside, q)) for q in (a, b, m)} <= got
+    assert figure_edges([a, Vec(0.0, 1e-9)], 1e-6) == []

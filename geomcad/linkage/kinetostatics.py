@@ -150,12 +150,16 @@ class GroupForces:
 @dataclass(frozen=True)
 class LeverItem:
     """One load on Zhukovsky's lever: its force at the image ``image`` (the turned velocity of
-    its point), its arm about the pole and its moment (the couples of a moment load too)."""
+    its point), its arm about the pole and its moment (the couples of a moment load too);
+    ``link`` carries it at the mechanism point ``point`` (``C2``: the point of link 2 at C;
+    "" for a couple's computed point)."""
 
     name: str
     force: Vec
     image: Vec
     moment: float
+    link: int = 0
+    point: str = ""
 
 
 @dataclass
@@ -762,22 +766,34 @@ def zhukovsky(
                 assert ld.velocity is not None
                 im = ld.velocity.perp()
                 m = im.cross(ld.force)
-                items.append(LeverItem(ld.name, ld.force, im, m))
+                pt = ld.point or (centre_name(lk, link) if ld.kind in ("weight", "inertia") else "")
+                items.append(LeverItem(ld.name, ld.force, im, m, link, pt))
                 power += ld.force.dot(ld.velocity)
             else:
-                # the couple: ±F ⊥ a segment X–Y of the link at the images of X and Y
+                # the couple: ±F ⊥ a segment X–Y of the link at the images of X and Y (its
+                # point farthest from X: the couple's arm as long as the link allows)
                 w = P.omega[link]
-                pts = lk.link_points(link)
+                pts = lk.points_on(link)
                 X = P.pos[pts[0]]
-                if len(pts) > 1 and P.pos[pts[1]].dist(X) > 0.0:
-                    u = P.pos[pts[1]] - X
+                far = max(pts[1:], key=lambda q: P.pos[q].dist(X), default="")
+                # a block with one joint: its point coinciding with the farthest point of its
+                # group's other link (c2 of block 2 on link 3 at C), lettered so
+                g = lk.group_of(link)
+                mates = [q for j in (g.links if g else ()) if j != link for q in lk.points_on(j)]
+                mate = max(mates, key=lambda q: P.pos[q].dist(X), default="")
+                if far and P.pos[far].dist(X) > 0.0:
+                    u = P.pos[far] - X
+                elif mate and P.pos[mate].dist(X) > 0.0:
+                    u = P.pos[mate] - X
+                    far = f"{mate}{link}"
                 else:
+                    far = ""
                     u = (P.slide[link] if link in P.slide else Vec(1.0, 0.0)) * lk.length
                 F = u.perp() * (ld.moment / u.dot(u))
                 vX = P.vel[pts[0]]
                 vY = vX + u.perp() * w
-                items.append(LeverItem(ld.name, F, vY.perp(), vY.perp().cross(F)))
-                items.append(LeverItem(ld.name, -F, vX.perp(), vX.perp().cross(-F)))
+                items.append(LeverItem(ld.name, F, vY.perp(), vY.perp().cross(F), link, far))
+                items.append(LeverItem(ld.name, -F, vX.perp(), vX.perp().cross(-F), link, pts[0]))
                 power += ld.moment * w
     for k, it in enumerate(items, start=1):
         c.value(

@@ -25,6 +25,7 @@ tables, orders and notes 3.5 mm high on A2 and A1, its views' titles 5 mm. The w
 
 from __future__ import annotations
 
+import itertools
 import math
 from collections.abc import Mapping, Sequence
 from dataclasses import replace
@@ -38,7 +39,7 @@ from geomcad.forces import ForcePolygon
 from geomcad.geom import Vec
 from geomcad.linkage.analysis import analyse
 from geomcad.linkage.dynamics import Flywheel
-from geomcad.linkage.kinetostatics import Applied, Forces, GroupForces
+from geomcad.linkage.kinetostatics import Applied, Forces, GroupForces, Lever
 from geomcad.linkage.loads import centre_vec
 from geomcad.linkage.model import Linkage
 from geomcad.linkage.plans import Position
@@ -427,6 +428,77 @@ def polygon_points(poly: ForcePolygon) -> list[Vec]:
     return [q for pv in poly.vectors for q in (pv.tail, pv.head)]
 
 
+def lever_images(P: Position, lev: Lever) -> dict[str, Vec]:
+    """The lettered points of Zhukovsky's lever by the plan's names: every point of the
+    velocity plan turned 90° (the pole p, a sliding pair's a3 …), then every load's point off
+    the plan (a centre of mass s2 …)."""
+    out = {name: q.perp() for name, q in P.vp.points.items()}
+    for it in lev.items:
+        if it.point:
+            out.setdefault(P.pn(it.point), it.image)
+    return out
+
+
+def lever_links(lk: Linkage, P: Position, lev: Lever) -> dict[int, list[str]]:
+    """Each moving link's points on the lever (plan names): its points on the plans (its
+    joints, its [[point]] points, the point of a sliding pair on it) and the points its loads
+    act at; the image of the link is the figure they make, joined as on the velocity plan."""
+    out: dict[int, list[str]] = {}
+    for link in lk.moving_links:
+        names = [n for _, n in P.handles.get(link, [])]
+        names += [P.pn(it.point) for it in lev.items if it.link == link and it.point]
+        out[link] = list(dict.fromkeys(names))
+    return out
+
+
+def figure_edges(pts: Sequence[Vec], eps: float) -> list[tuple[Vec, Vec]]:
+    """The segments that draw the image of a link through its points ``pts``: its outline
+    (the convex hull, with the points on an edge as the edge's vertices: a–s2–b, not a–b and
+    s2–m) and a point inside it joined to every corner; points closer than ``eps`` are one."""
+    uniq: list[Vec] = []
+    for q in pts:
+        if all(q.dist(u) > eps for u in uniq):
+            uniq.append(q)
+    if len(uniq) < 2:
+        return []
+    uniq.sort(key=lambda q: (q.x, q.y))
+
+    def half(seq: Sequence[Vec]) -> list[Vec]:
+        out: list[Vec] = []
+        for q in seq:
+            while len(out) >= 2 and (out[-1] - out[-2]).cross(q - out[-2]) <= 0.0:
+                out.pop()
+            out.append(q)
+        return out
+
+    lo, hi = half(uniq), half(uniq[::-1])
+    corners = lo[:-1] + hi[:-1] if len(uniq) > 2 else uniq
+    # all in line: the hull is the segment between the two extremes
+    ring = len(corners) > 2
+    edges: list[tuple[Vec, Vec]] = []
+    on_edge: set[int] = set()
+    sides = (
+        list(zip(corners, corners[1:] + corners[:1], strict=True))
+        if ring
+        else [(uniq[0], uniq[-1])]
+    )
+    for a, b in sides:
+        u = b - a
+        n2 = u.dot(u)
+        chain = []
+        for i, q in enumerate(uniq):
+            t = (q - a).dot(u) / n2
+            if -1e-9 <= t <= 1.0 + 1e-9 and abs(u.cross(q - a)) / math.sqrt(n2) <= eps:
+                chain.append((t, q))
+                on_edge.add(i)
+        chain.sort(key=lambda tq: tq[0])
+        edges += [(x, y) for (_, x), (_, y) in itertools.pairwise(chain)]
+    for i, q in enumerate(uniq):
+        if i not in on_edge:
+            edges += [(c, q) for c in corners]
+    return edges
+
+
 class _Lever(View):
     """Zhukovsky's lever: the velocity plan turned 90° with the loads at their points'
     images and the balancing force at the crank's joint."""
@@ -439,7 +511,7 @@ class _Lever(View):
         super().__init__(title=WORDS("lever"), title_height=5.0, quantity="v", series="nice",
                          margin=LEVER_LOAD_MM)  # fmt: skip
         self.lk, self.P, self.f = lk, P, f
-        pts = [Vec(0.0, 0.0), *lev.images.values(), *(it.image for it in lev.items)]
+        pts = [Vec(0.0, 0.0), *lever_images(P, lev).values(), *(it.image for it in lev.items)]
         xs = [q.x for q in pts]
         ys = [q.y for q in pts]
         self._ext = (min(xs), min(ys), max(xs), max(ys))
@@ -460,18 +532,27 @@ class _Lever(View):
         draw_further(d, at, self, self.fs)
         kv = v.scale
         lk, P, lev = self.lk, self.P, self.f.lever
+        drawn: list[tuple[Vec, Vec]] = []
         for vec in P.vp.vectors:
             a, b = P.vp.points[vec.tail].perp(), P.vp.points[vec.head].perp()
             if kv.mm((b - a).norm) > 0.3:
                 v.seg(a, b, "construction")
-        groups: list[tuple[Vec, list[str]]] = [(Vec(0.0, 0.0), ["p"])]
-        for name, im in lev.images.items():
+                drawn.append((a, b))
+        images = lever_images(P, lev)
+        for figure in lever_links(lk, P, lev).values():
+            for x, y in figure_edges([images[n] for n in figure], kv.model(0.3)):
+                # a side the plan draws already (pa, a3a …) is not drawn twice
+                if not any({x, y} == {a, b} for a, b in drawn):
+                    v.seg(x, y, "construction")
+                    drawn.append((x, y))
+        groups: list[tuple[Vec, list[str]]] = []
+        for name, im in images.items():
             for q, names in groups:
                 if kv.mm(im.dist(q)) < 0.8:
-                    names.append(markup_of(P.pn(name)))
+                    names.append(markup_of(name))
                     break
             else:
-                groups.append((im, [markup_of(P.pn(name))]))
+                groups.append((im, [markup_of(name)]))
         for q, names in groups:
             v.dot(q)
             v.label(q, ", ".join(names), 2.5, clear=0.8)
