@@ -25,6 +25,7 @@ from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, replace
 
 import numpy as np
+import numpy.typing as npt
 
 from geomcad import tol
 from geomcad.errors import ParameterError
@@ -711,22 +712,40 @@ def _diagrams(s: Solved) -> list[Diagram]:
     psi_k = np.array([2.0 * math.pi * k / n for k in range(n + 1)])
     s_k = np.interp(psi_k, psi, s_m)
     dt = (2.0 * math.pi / n) / abs(lk.omega)
-    v_ch = np.diff(s_k) / dt
-    psi_v = (psi_k[:-1] + psi_k[1:]) / 2.0
-    a_ch = np.diff(np.concatenate([v_ch, v_ch[:1]])) / dt
-    psi_a = (psi_v + math.pi / n) % (2.0 * math.pi)
+    psi_v, v_ch, psi_a, a_ch = chord_derivatives(psi_k, s_k, dt)
     rows = [(s_m, psi_k, s_k), (v_m, psi_v, v_ch), (a_m, psi_a, a_ch)]
     x = AxisSpec("φ", WORDS("deg"), "φ", 0.0, 360.0, 30.0)
     out = []
     for (sym, unit, name), (exact, gx, gy) in zip(names, rows, strict=True):
-        order = np.argsort(gx)
         curves = [
             Curve(np.degrees(psi), exact, "result"),
-            Curve(np.degrees(gx[order]), gy[order], "construction", points=True),
+            Curve(np.degrees(gx), gy, "construction", points=True),
         ]
         out.append(Diagram(x, AxisSpec(sym, unit, name), curves, least=(120.0, 50.0),
                            prefer=(600.0, 160.0)))  # fmt: skip
     return out
+
+
+def chord_derivatives(
+    psi_k: npt.NDArray[np.float64], s_k: npt.NDArray[np.float64], dt: float
+) -> tuple[
+    npt.NDArray[np.float64], npt.NDArray[np.float64], npt.NDArray[np.float64],
+    npt.NDArray[np.float64],
+]:  # fmt: skip
+    """The graphical differentiation of a periodic s(ψ) by chords over a cycle: s at the
+    division points ``psi_k`` (0 … 2π, the last the first again), ``dt`` the time of an
+    interval. Each chord's slope is the derivative at its interval's middle, v_{k+½} =
+    (s_{k+1} − s_k)/Δt; the acceleration by the chords of v's polyline, a_k = (v_{k+½} −
+    v_{k−½})/Δt at the division points. Both polylines cover the whole cycle: v's reaches ψ =
+    0 and 2π on the chord between its last and first points (the cycle repeats), a's ends on
+    position N = position 0. Returns (ψ_v, v, ψ_a, a)."""
+    v_mid = np.diff(s_k) / dt
+    psi_mid = (psi_k[:-1] + psi_k[1:]) / 2.0
+    v_ends = 0.5 * (v_mid[-1] + v_mid[0])  # the chord from ψ_{N−½} to ψ_{N+½}, halfway
+    psi_v = np.concatenate([[psi_k[0]], psi_mid, [psi_k[-1]]])
+    v_ch = np.concatenate([[v_ends], v_mid, [v_ends]])
+    a_k = np.diff(np.concatenate([v_mid[-1:], v_mid])) / dt  # positions 0 … N−1
+    return psi_v, v_ch, psi_k.copy(), np.append(a_k, a_k[0])
 
 
 # --- the tables -------------------------------------------------------------------------------
