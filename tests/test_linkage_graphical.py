@@ -84,30 +84,54 @@ def test_every_curve_of_a_diagram_of_several_is_named(path: Path) -> None:
 @pytest.mark.parametrize("path", LINKAGES, ids=lambda p: p.stem)
 def test_chord_polylines_cover_the_cycle(path: Path) -> None:
     """The output's diagrams: the chord polylines of v and a run from 0 to 360° and end where
-    they start (the cycle repeats), a's points at the numbered positions 0 … N."""
-    from geomcad.sheet.linkage import _diagrams
+    they start (the cycle repeats); s and a have a point at every numbered position 0 … N."""
+    from geomcad.sheet.linkage import _diagrams, _divisions
 
     s = geomcad.solve(str(path)).data
     diagrams = _diagrams(s)
-    n = len(_xy(_graphical(diagrams[0]))[0]) - 1
-    for d in diagrams[1:]:
+    positions = np.linspace(0.0, 360.0, _divisions(s) + 1)
+    for d in diagrams:
         gx, gy = _xy(_graphical(d))
         assert gx[0] == 0.0 and gx[-1] == pytest.approx(360.0, abs=1e-9), d.y.name
         assert np.all(np.diff(gx) > 0.0)
-        assert gy[-1] == pytest.approx(gy[0], abs=1e-12 * max(1.0, float(np.abs(gy).max())))
-    ax, _ = _xy(_graphical(diagrams[2]))
-    assert np.allclose(ax, np.linspace(0.0, 360.0, n + 1))
+        assert gy[-1] == pytest.approx(gy[0], abs=1e-9 * max(1.0, float(np.abs(gy).max())))
+    for d in (diagrams[0], diagrams[2]):
+        gx = _xy(_graphical(d))[0]
+        assert all(np.any(np.abs(gx - p) < 1e-9) for p in positions), d.y.name
+
+
+def _s_of(f):  # type: ignore[no-untyped-def]
+    return lambda psi: f(np.asarray(psi, dtype=np.float64))
 
 
 def test_chords_of_a_harmonic_motion() -> None:
-    """The chord method on s = cos ψ (a harmonic motion) at 12 divisions: v at the intervals'
-    middles is sin(Δ/2)/(Δ/2) of the exact, and a at the divisions (sin(Δ/2)/(Δ/2))² of it."""
+    """The chord method on s = cos ψ at 12 divisions and ω = 1: v at the intervals' middles is
+    sin(Δ/2)/(Δ/2) of the exact, and a at the divisions (sin(Δ/2)/(Δ/2))² of it."""
     from geomcad.sheet.linkage import chord_derivatives
 
     n = 12
-    psi = np.linspace(0.0, 2.0 * math.pi, n + 1)
     h = 2.0 * math.pi / n
-    pv, v, pa, a = chord_derivatives(psi, np.cos(psi), h)
+    _ps, _s, pv, v, pa, a = chord_derivatives(_s_of(np.cos), n, 1.0)
     k = math.sin(h / 2) / (h / 2)
-    assert np.allclose(v, -k * np.sin(pv), atol=1e-12)
+    assert np.allclose(v[1:-1], -k * np.sin(pv[1:-1]), atol=1e-12)
     assert np.allclose(a, -(k**2) * np.cos(pa), atol=1e-12)
+    assert len(pa) == n + 1
+
+
+def test_chords_take_smaller_intervals_at_a_sharp_peak() -> None:
+    """A narrow acceleration peak at position 0 (s = −exp(−(ψ/0.2)²) periodically, a(0) =
+    2ω²/0.2²): at 30° the second chord gives a fraction of it; the halved intervals about it
+    come within 10 %, and a smooth stretch keeps its 30° divisions."""
+    from geomcad.sheet.linkage import chord_derivatives
+
+    def s(psi: np.ndarray) -> np.ndarray:
+        d = np.mod(psi + math.pi, 2.0 * math.pi) - math.pi
+        return np.asarray(-np.exp(-((d / 0.2) ** 2)), dtype=np.float64)
+
+    exact = 2.0 / 0.2**2
+    coarse = chord_derivatives(s, 12, 1.0)
+    fine = chord_derivatives(s, 12, 1.0, refine=3)
+    assert abs(coarse[5][0] - exact) > 0.5 * exact
+    assert abs(fine[5][0] - exact) < 0.1 * exact
+    assert np.any(np.isclose(fine[0], math.radians(180.0)))
+    assert not np.any(np.isclose(fine[0], math.radians(165.0)))
