@@ -135,3 +135,17 @@ def test_chords_take_smaller_intervals_at_a_sharp_peak() -> None:
     assert abs(fine[5][0] - exact) < 0.1 * exact
     assert np.any(np.isclose(fine[0], math.radians(180.0)))
     assert not np.any(np.isclose(fine[0], math.radians(165.0)))
+
+
+def test_positions_numbered_under_the_phi_axes() -> None:
+    """The kinematic and dynamics sheets number the positions 0 … N−1 under each diagram's φ
+    axis, one row per diagram, each number under its crank angle from position 0."""
+    path = EXAMPLES / "shaper.toml"
+    sheets = dict(geomcad.solve(str(path)).sheets())
+    for key, diagrams in (("", 3), ("dynamics", 4)):
+        texts = [t for t in sheets[key].texts() if t.text in {str(k) for k in range(12)}]
+        rows: dict[float, list[str]] = {}
+        for t in texts:
+            rows.setdefault(round(t.at[1], 3), []).append(t.text)
+        full = [r for r in rows.values() if sorted(r, key=int) == [str(k) for k in range(12)]]
+        assert len(full) >= diagrams, (key, rows)

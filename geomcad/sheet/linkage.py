@@ -723,7 +723,7 @@ def _diagrams(s: Solved) -> list[Diagram]:
             Curve(np.degrees(gx), gy, "construction", points=True),
         ]
         out.append(Diagram(x, AxisSpec(sym, unit, name), curves, least=(120.0, 50.0),
-                           prefer=(600.0, 160.0)))  # fmt: skip
+                           prefer=(600.0, 160.0), marks=position_marks(n)))  # fmt: skip
     return out
 
 
@@ -789,6 +789,12 @@ def _periodic(
     if x[0] == 0.0:  # a point at 0: it closes the cycle at 2π
         return np.append(x, 2.0 * math.pi), np.append(y, y[0])
     return np.concatenate([[0.0], x, [2.0 * math.pi]]), np.concatenate([[y0], y, [y0]])
+
+
+def position_marks(n: int) -> list[tuple[float, str]]:
+    """The numbered positions 0 … n−1 at their crank angles from position 0 (degrees), the
+    marks under a diagram's φ axis."""
+    return [(360.0 * k / n, str(k)) for k in range(n)]
 
 
 # --- the tables -------------------------------------------------------------------------------

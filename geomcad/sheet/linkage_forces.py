@@ -68,6 +68,7 @@ from geomcad.sheet.linkage import (
     link_bodies,
     omega_arrow,
     order_width,
+    position_marks,
     row_height,
     sheet_formats,
     table_number,
@@ -565,7 +566,7 @@ def _sheet3(s: Solved, fw: Flywheel, h: float) -> Tree:
         ]  # fmt: skip
         cs.append(Curve(np.degrees(psi_k), gy, "construction", points=True))
         graphs.append(Diagram(x, AxisSpec(sym, unit, name), cs, least=(120.0, 45.0),
-                              prefer=(600.0, 150.0)))  # fmt: skip
+                              prefer=(600.0, 150.0), marks=position_marks(n)))  # fmt: skip
     origin = WORDS(
         "phi_origin",
         phi0=_num(math.degrees(s.positions[0].phi) % 360.0),

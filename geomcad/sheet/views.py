@@ -774,11 +774,14 @@ class Diagram(View):
         least: tuple[float, float] = (80.0, 45.0),
         prefer: tuple[float, float] = (240.0, 110.0),
         zero: bool = True,
+        marks: Sequence[tuple[float, str]] = (),
         **kw: Any,
     ) -> None:
         kw.setdefault("margin", 2.0)
         super().__init__(**kw)
         self.zero = zero
+        #: (x, markup) written in a row under the x axis's values (the numbered positions)
+        self.marks = list(marks)
         self.x, self.y = x, y
         self.curves = list(curves)
         self.extra = extra
@@ -841,6 +844,14 @@ class Diagram(View):
             if c.points:
                 for xx, yy in zip(np.asarray(c.xs), np.asarray(c.ys), strict=True):
                     gr.point(float(xx), float(yy))
+        bottom = max(gr.at[1], gr.box[3]) + 1.5 + 2.5 + 0.8 + 1.2 + MARK_H
+        right_of_last = -math.inf
+        for xx, mark in self.marks:
+            px = gr.p(xx, ay.zero)[0]
+            half = text_width(mark, MARK_H) / 2.0
+            if px - half >= right_of_last + 1.0:
+                d.text(mark, (px, bottom), MARK_H, anchor="centre")
+                right_of_last = px + half
         for c, (xx, yy), up in self._label_points(ay):
             d.label(gr.p(xx, yy), c.label, 2.5, prefer=(0.3, -1.0 if up else 1.0), clear=0.5)
         # the factors: right of the title, or on a line of their own under a long title
@@ -890,6 +901,8 @@ class Diagram(View):
         return out
 
 
+#: The height (mm) of a diagram's marks under its x axis (the numbered positions' numbers).
+MARK_H = 3.5
 #: A curve's name is written within this share of the x range from its end.
 LABEL_SPAN = 0.2
 #: Curves farther apart than this (mm) at their ends are named there.
