@@ -25,6 +25,7 @@ from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, replace
 
 import numpy as np
+import numpy.typing as npt
 
 from geomcad import tol
 from geomcad.errors import ParameterError
@@ -767,25 +768,92 @@ def _diagrams(s: Solved) -> list[Diagram]:
     psi = np.linspace(0.0, 2.0 * math.pi, DIAGRAM_SAMPLES)
     names, s_m, v_m, a_m = _output_curves(s, psi)
     n = _divisions(s)
-    psi_k = np.array([2.0 * math.pi * k / n for k in range(n + 1)])
-    s_k = np.interp(psi_k, psi, s_m)
-    dt = (2.0 * math.pi / n) / abs(lk.omega)
-    v_ch = np.diff(s_k) / dt
-    psi_v = (psi_k[:-1] + psi_k[1:]) / 2.0
-    a_ch = np.diff(np.concatenate([v_ch, v_ch[:1]])) / dt
-    psi_a = (psi_v + math.pi / n) % (2.0 * math.pi)
+
+    def s_of(at: npt.NDArray[np.float64]) -> npt.NDArray[np.float64]:
+        return np.asarray(_output_curves(s, at)[1], dtype=np.float64)
+
+    psi_k, s_k, psi_v, v_ch, psi_a, a_ch = chord_derivatives(s_of, n, abs(lk.omega), REFINE_STEPS)
     rows = [(s_m, psi_k, s_k), (v_m, psi_v, v_ch), (a_m, psi_a, a_ch)]
     x = AxisSpec("φ", WORDS("deg"), "φ", 0.0, 360.0, 30.0)
     out = []
     for (sym, unit, name), (exact, gx, gy) in zip(names, rows, strict=True):
-        order = np.argsort(gx)
         curves = [
             Curve(np.degrees(psi), exact, "result"),
-            Curve(np.degrees(gx[order]), gy[order], "construction", points=True),
+            Curve(np.degrees(gx), gy, "construction", points=True),
         ]
         out.append(Diagram(x, AxisSpec(sym, unit, name), curves, least=(120.0, 50.0),
-                           prefer=(600.0, 160.0)))  # fmt: skip
+                           prefer=(600.0, 160.0), marks=position_marks(n)))  # fmt: skip
     return out
+
+
+def chord_derivatives(
+    s_of: Callable[[npt.NDArray[np.float64]], npt.NDArray[np.float64]],
+    n: int,
+    omega: float,
+    refine: int = 0,
+) -> tuple[npt.NDArray[np.float64], ...]:
+    """The graphical differentiation by chords of a periodic s(ψ) over a cycle, ``s_of`` giving
+    s at crank turns ψ from position 0, divided first at the ``n`` numbered positions; ``omega``
+    the crank's |ω|. Each chord's slope is the derivative at its interval's middle, v = Δs/Δt;
+    the acceleration by the chords of v's polyline, at the division point between two of its
+    points.
+    Where a's points change by more than :data:`REFINE_SHARE` of their range from a division
+    point to the next, the intervals beside it are halved (the textbook's smaller intervals
+    where the curve is steep), at most ``refine`` times. Both polylines cover the whole cycle:
+    at ψ = 0 and 2π each takes the chord between its last and first points (the cycle
+    repeats), so it ends where it starts. Returns (ψ_s, s, ψ_v, v, ψ_a, a)."""
+    nodes = np.linspace(0.0, 2.0 * math.pi, n + 1)
+    for level in range(refine + 1):
+        s_k = s_of(nodes)
+        dpsi = np.diff(nodes)
+        v_mid = np.diff(s_k) / (dpsi / omega)
+        x_mid = nodes[:-1] + dpsi / 2.0
+        x_prev = np.concatenate([[x_mid[-1] - 2.0 * math.pi], x_mid[:-1]])
+        v_prev = np.concatenate([v_mid[-1:], v_mid[:-1]])
+        a_k = (v_mid - v_prev) / ((x_mid - x_prev) / omega)  # about the nodes 0 … m−1
+        x_a = nodes[:-1]  # the division point between the two chords' middles
+        span = float(a_k.max() - a_k.min())
+        jump = np.abs(a_k - np.roll(a_k, -1)) > REFINE_SHARE * span  # node j to node j+1
+        steep = jump | np.roll(jump, 1)
+        if level == refine or not steep.any():
+            break
+        m = len(nodes) - 1
+        halves = {(j - 1) % m for j in np.flatnonzero(steep)} | set(np.flatnonzero(steep))
+        extra = [nodes[i] + dpsi[i] / 2.0 for i in sorted(halves)]
+        nodes = np.sort(np.concatenate([nodes, extra]))
+    psi_v, v = _periodic(x_mid, v_mid)
+    psi_a, a = _periodic(x_a, a_k)
+    return nodes, s_k, psi_v, v, psi_a, a
+
+
+#: A division point's neighbours are halved where a changes by more than this share of its
+#: range from it to the next (see :func:`chord_derivatives`).
+REFINE_SHARE = 1.0 / 3.0
+#: At most this many halvings (a 30° interval down to 3.75°).
+REFINE_STEPS = 3
+
+
+def _periodic(
+    x: npt.NDArray[np.float64], y: npt.NDArray[np.float64]
+) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]:
+    """Points of a cycle's derivative, sorted on [0, 2π), closed at 0 and 2π by the chord from
+    the last point to the first (one cycle on)."""
+    x = np.mod(x, 2.0 * math.pi)
+    x[np.abs(x - 2.0 * math.pi) <= 1e-9] = 0.0
+    x[np.abs(x) <= 1e-9] = 0.0
+    o = np.argsort(x)
+    x, y = x[o], y[o]
+    t = (2.0 * math.pi - x[-1]) / (x[0] + 2.0 * math.pi - x[-1])
+    y0 = y[-1] + t * (y[0] - y[-1])
+    if x[0] == 0.0:  # a point at 0: it closes the cycle at 2π
+        return np.append(x, 2.0 * math.pi), np.append(y, y[0])
+    return np.concatenate([[0.0], x, [2.0 * math.pi]]), np.concatenate([[y0], y, [y0]])
+
+
+def position_marks(n: int) -> list[tuple[float, str]]:
+    """The numbered positions 0 … n−1 at their crank angles from position 0 (degrees), the
+    marks under a diagram's φ axis."""
+    return [(360.0 * k / n, str(k)) for k in range(n)]
 
 
 # --- the tables -------------------------------------------------------------------------------

@@ -71,6 +71,7 @@ from geomcad.sheet.linkage import (
     link_bodies,
     omega_arrow,
     order_width,
+    position_marks,
     row_height,
     sheet_formats,
     table_number,
@@ -629,34 +630,29 @@ def _sheet3(s: Solved, fw: Flywheel, h: float) -> Tree:
     psi_k = np.array([2.0 * math.pi * i / n for i in range(n + 1)])
     M_k = np.array([*fw.M_pr, fw.M_pr[0]])
     I_k = np.array([*fw.I_pr, fw.I_pr[0]])
-    # the graphical integration through the numbered positions (trapezoids)
-    A_k = sign * np.concatenate([[0.0], np.cumsum(0.5 * (M_k[1:] + M_k[:-1]) * np.diff(psi_k))])
     W = fw.dA - fw.M_drive * psi  # the loads' work, exact
+    A_k = graphical_work(psi, W, psi_k)
     drive = fw.M_drive * psi
     J, Nm = WORDS("J"), WORDS("Nm")
     rows = [
-        (WORDS("M_pr"), Nm, [fw.dense.M_pr * sign, np.full_like(psi, fw.M_drive)], M_k * sign,
-         "M"),
-        ("A", J, [-W, drive], -A_k, "A"),
-        ("ΔT", J, [fw.dA], A_k + fw.M_drive * psi_k, "T"),
-        (WORDS("I_pr"), WORDS("kgm2"), [fw.dense.I_pr], I_k, "I"),
+        (WORDS("M_pr"), Nm, [(fw.dense.M_pr * sign, WORDS("M_pr")),
+                             (np.full_like(psi, fw.M_drive), WORDS("M_dr"))], M_k * sign, "M"),
+        ("A", J, [(-W, WORDS("A_res")), (drive, WORDS("A_dr"))], -A_k, "A"),
+        ("ΔT", J, [(fw.dA, "")], A_k + fw.M_drive * psi_k, "T"),
+        (WORDS("I_pr"), WORDS("kgm2"), [(fw.dense.I_pr, "")], I_k, "I"),
     ]  # fmt: skip
     x = AxisSpec("φ", WORDS("deg"), "φ", 0.0, 360.0, 30.0)
     graphs = []
     for sym, unit, curves, gy, name in rows:
+        # a diagram of one curve is named by its axis; of more, each curve at its end
         cs = [
-            Curve(_thin(deg), _thin(c), "result" if j == 0 else "construction")
-            for j, c in enumerate(curves)
-        ]
+            Curve(_thin(deg), _thin(c), "result" if j == 0 else "construction",
+                  label=lab if len(curves) > 1 else "")
+            for j, (c, lab) in enumerate(curves)
+        ]  # fmt: skip
         cs.append(Curve(np.degrees(psi_k), gy, "construction", points=True))
         graphs.append(Diagram(x, AxisSpec(sym, unit, name), cs, least=(120.0, 45.0),
-                              prefer=(600.0, 150.0)))  # fmt: skip
-
-    # M_дв's line named on the M_пр diagram, near its right end
-    def drive_label(gr: Graph) -> None:
-        gr.d.label(gr.p(345.0, fw.M_drive), WORDS("M_dr"), 2.5, prefer=(0.0, -1.0), clear=0.5)
-
-    graphs[0].extra = drive_label
+                              prefer=(600.0, 150.0), marks=position_marks(n)))  # fmt: skip
     origin = WORDS(
         "phi_origin",
         phi0=_num(math.degrees(s.positions[0].phi) % 360.0),
@@ -672,6 +668,17 @@ def _sheet3(s: Solved, fw: Flywheel, h: float) -> Tree:
         Row(column, Column(witt, Row(omega, tables))),
         Column(Row(column, witt), Row(omega, tables)),
     )
+
+
+def graphical_work(
+    psi: npt.NDArray[np.float64], W: npt.NDArray[np.float64], psi_k: npt.NDArray[np.float64]
+) -> npt.NDArray[np.float64]:
+    """The graphical integration of M_пр through the division points ``psi_k`` (from 0 to a
+    full turn): each interval's M_пр replaced by its mean ordinate, the step of equal area
+    under the curve (the textbook's rule), so that the integral's polyline passes through the
+    work ``W`` of the curve (sampled at ``psi``) at every division point and, over the cycle,
+    ends at its whole work A_ц: A_д = A_с there, and ΔT returns to 0."""
+    return np.asarray(np.interp(psi_k, psi, W), dtype=np.float64)
 
 
 #: At most about this many points of a curve are drawn.
@@ -760,9 +767,9 @@ def _omega(lk: Linkage, fw: Flywheel) -> Diagram:
         achieved=_num(fw.delta_achieved, 4),
     )
     curves = [
-        Curve(_thin(np.degrees(fw.omega_psi)), _thin(fw.omega_t), "result"),
-        Curve([0.0, 360.0], [fw.omega_max, fw.omega_max], "construction"),
-        Curve([0.0, 360.0], [fw.omega_min, fw.omega_min], "construction"),
+        Curve(_thin(np.degrees(fw.omega_psi)), _thin(fw.omega_t), "result", label="ω_1"),
+        Curve([0.0, 360.0], [fw.omega_max, fw.omega_max], "construction", label="ω_{max}"),
+        Curve([0.0, 360.0], [fw.omega_min, fw.omega_min], "construction", label="ω_{min}"),
     ]
     return Diagram(
         AxisSpec("φ", WORDS("deg"), "φ", 0.0, 360.0, 60.0),

@@ -729,12 +729,14 @@ _ANY = "W" * 99
 
 @dataclass(frozen=True)
 class Curve:
-    """A curve of a diagram: data ``xs``, ``ys``, its role; ``points`` marks the samples."""
+    """A curve of a diagram: data ``xs``, ``ys``, its role; ``points`` marks the samples;
+    ``label`` (markup) names it at its end (by the label placer)."""
 
     xs: npt.ArrayLike
     ys: npt.ArrayLike
     role: str = "result"
     points: bool = False
+    label: str = ""
 
 
 @dataclass(frozen=True)
@@ -772,11 +774,14 @@ class Diagram(View):
         least: tuple[float, float] = (80.0, 45.0),
         prefer: tuple[float, float] = (240.0, 110.0),
         zero: bool = True,
+        marks: Sequence[tuple[float, str]] = (),
         **kw: Any,
     ) -> None:
         kw.setdefault("margin", 2.0)
         super().__init__(**kw)
         self.zero = zero
+        #: (x, markup) written in a row under the x axis's values (the numbered positions)
+        self.marks = list(marks)
         self.x, self.y = x, y
         self.curves = list(curves)
         self.extra = extra
@@ -839,6 +844,16 @@ class Diagram(View):
             if c.points:
                 for xx, yy in zip(np.asarray(c.xs), np.asarray(c.ys), strict=True):
                     gr.point(float(xx), float(yy))
+        bottom = max(gr.at[1], gr.box[3]) + 1.5 + 2.5 + 0.8 + 1.2 + MARK_H
+        right_of_last = -math.inf
+        for xx, mark in self.marks:
+            px = gr.p(xx, ay.zero)[0]
+            half = text_width(mark, MARK_H) / 2.0
+            if px - half >= right_of_last + 1.0:
+                d.text(mark, (px, bottom), MARK_H, anchor="centre")
+                right_of_last = px + half
+        for c, (xx, yy), up in self._label_points(ay):
+            d.label(gr.p(xx, yy), c.label, 2.5, prefer=(0.3, -1.0 if up else 1.0), clear=0.5)
         # the factors: right of the title, or on a line of their own under a long title
         factors = f"{ay.factor_text(current())};  {ax.factor_text(current())}"
         right = min(at.box[2], x0 + self.used(x1 - x0, y1 - y0)[0])
@@ -853,6 +868,45 @@ class Diagram(View):
         if self.extra is not None:
             self.extra(gr)
         self.graph = gr
+
+    def _label_points(self, ay: Axis) -> list[tuple[Curve, tuple[float, float], bool]]:
+        """Where each labelled curve is named: at its end, or, where other labelled curves
+        end near it (a drive's work meeting the resistances' at the cycle's end), at the
+        point of its last :data:`LABEL_SPAN` of x farthest (on the paper) from theirs; and
+        whether above it (the side away from the nearest other curve)."""
+        named = [c for c in self.curves if c.label]
+        out = []
+        for c in named:
+            xs = np.asarray(c.xs, dtype=np.float64)
+            ys = np.asarray(c.ys, dtype=np.float64)
+            others = [o for o in named if o is not c]
+            if not others:
+                out.append((c, (float(xs[-1]), float(ys[-1])), True))
+                continue
+            span = LABEL_SPAN * (float(xs.max()) - float(xs.min()))
+            k = np.flatnonzero(np.abs(xs - xs[-1]) <= span)
+            diff = np.array(
+                [
+                    ys[k] - np.interp(xs[k], np.asarray(o.xs, dtype=np.float64),
+                                      np.asarray(o.ys, dtype=np.float64))
+                    for o in others
+                ]
+            )  # fmt: skip
+            near = np.argmin(np.abs(diff), axis=0)
+            signed = diff[near, np.arange(len(k))]
+            gap = np.abs(signed)
+            j = len(k) - 1 if ay.mm(float(gap[-1])) >= LABEL_GAP_MM else int(np.argmax(gap))
+            i = int(k[j])
+            out.append((c, (float(xs[i]), float(ys[i])), bool(signed[j] >= 0.0)))
+        return out
+
+
+#: The height (mm) of a diagram's marks under its x axis (the numbered positions' numbers).
+MARK_H = 3.5
+#: A curve's name is written within this share of the x range from its end.
+LABEL_SPAN = 0.2
+#: Curves farther apart than this (mm) at their ends are named there.
+LABEL_GAP_MM = 6.0
 
 
 # --- tables and text ------------------------------------------------------------------------------
