@@ -165,13 +165,15 @@ class Drawing:
         height: float = 2.5,
         row_h: float = 6.0,
         header: bool = True,
+        center: bool = False,
     ) -> tuple[float, float]:
         """A ruled table with its top-left corner at (x, y); returns its (width, height).
 
         The first row is the header (ruled off with a main line), unless ``header`` is False.
         Text stands at a cell's left; the numbers of a column below its header are aligned on
         their decimal separator (GOST 2.105: by their digits), whole numbers ending where the
-        others' separator stands (:func:`number_columns`).
+        others' separator stands (:func:`number_columns`); ``center``: the block of them in
+        the middle of the column (not at the left of a column its heading widens).
         """
         total_w = sum(widths)
         total_h = row_h * len(rows)
@@ -192,7 +194,12 @@ class Drawing:
             xx += w
             s.add(Polyline(((xx, y), (xx, y + total_h)), "frame_thin"))
         body = rows[1:] if header else rows
-        whole = [w for w, _ in number_columns(body, height, len(widths))]
+        parts_w = number_columns(body, height, len(widths))
+        whole = [w for w, _ in parts_w]
+        shift = [
+            max(0.0, (w - 2.4 - a - b) / 2.0) if center else 0.0
+            for w, (a, b) in zip(widths, parts_w, strict=True)
+        ]
         for i, row in enumerate(rows):
             xx = x
             for c, (w, cell) in enumerate(zip(widths, row, strict=True)):
@@ -200,7 +207,7 @@ class Drawing:
                     dx = 0.0
                     parts = number_parts(cell) if i or not header else None
                     if parts is not None:
-                        dx = whole[c] - box(parse(parts[0]), height)[0]
+                        dx = shift[c] + whole[c] - box(parse(parts[0]), height)[0]
                     self.text(
                         cell,
                         (xx + 1.2 + dx, y + i * row_h + row_h / 2 + height / 2),

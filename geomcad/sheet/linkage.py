@@ -55,7 +55,7 @@ from geomcad.sheet.drawing import SHORT_MM, Viewport
 from geomcad.sheet.frame import FORMATS
 from geomcad.sheet.lang import Words, current, per_language
 from geomcad.sheet.motion import Frames, turn
-from geomcad.sheet.scale import Scale, fmt_column
+from geomcad.sheet.scale import Scale, angle_places, fmt_column, fmt_fixed
 from geomcad.sheet.scheme import Body, draw_scheme
 from geomcad.sheet.views import AxisSpec, Curve, Diagram, PlanView, Steps, Table, Text
 
@@ -87,8 +87,19 @@ ORDER_W = 190.0
 DIAGRAM_SAMPLES = 361
 
 
-def _deg(phi: float) -> str:
-    return fmt_number(math.degrees(phi) % 360, current(), digits=4)
+def _deg(phi: float, s: Solved) -> str:
+    """A crank angle (degrees) with the one count of decimals of the sheets' angles."""
+    return fmt_fixed(_wrap_deg(phi), _places(s), current())
+
+
+def _wrap_deg(phi: float) -> float:
+    d = math.degrees(phi) % 360.0
+    return 0.0 if abs(d - 360.0) <= 1e-9 else d
+
+
+def _places(s: Solved) -> int:
+    """The decimals of every crank angle on the linkage's sheets (titles and tables)."""
+    return angle_places([_wrap_deg(phi) for phi in (*(P.phi for P in s.drawn), *s.accel_phis)])
 
 
 def sheet_formats(lk: Linkage) -> tuple[str, ...]:
@@ -204,7 +215,7 @@ def _trees(
     mech = _Mechanism(s)
     # vectors shorter than two arrowheads are drawn as their lettered end point (a note says so)
     vviews = [
-        PlanView(P.vp, title=WORDS("position", i=i, phi=_deg(P.phi)), group="v",
+        PlanView(P.vp, title=WORDS("position", i=i, phi=_deg(P.phi, s)), group="v",
                  show_scale=False, weight=2.0, min_mm=SHORT_MM)
         for i, P in enumerate(s.drawn)
     ]  # fmt: skip
@@ -212,14 +223,14 @@ def _trees(
     detail = accel[0] if accel else s.drawn[0]
     cells: list[View | Node] = []
     for P in accel:
-        ap = PlanView(P.ap, title=WORDS("aplan", phi=_deg(P.phi)), group="a", show_scale=False,
+        ap = PlanView(P.ap, title=WORDS("aplan", phi=_deg(P.phi, s)), group="a", show_scale=False,
                       weight=2.0, min_mm=SHORT_MM)  # fmt: skip
         if any(P is Q for Q in s.drawn):
             cells.append(ap)
             continue
         # a position of an acceleration plan that is not a numbered one: its velocity plan
         # beside its acceleration plan (every plan's position has both, linkages.md)
-        vp = PlanView(P.vp, title=WORDS("vplan_detail", phi=_deg(P.phi)), group="v",
+        vp = PlanView(P.vp, title=WORDS("vplan_detail", phi=_deg(P.phi, s)), group="v",
                       weight=2.0, min_mm=SHORT_MM)  # fmt: skip
         cells.append(Row(vp, ap))
     aplans: Tree = Grid(*cells, title=WORDS("aplans"), group="a", title_height=TITLE_H)
@@ -227,7 +238,10 @@ def _trees(
         Text([_through(s)], height=h), *_diagrams(s), title=WORDS("diagrams"), title_height=TITLE_H
     )
     width = order_width(h)
-    tables = Column(*_tables(s, accel, h), _Note(WORDS("short", mm=fmt_number(SHORT_MM)), h))
+    notes: list[View] = [_Note(WORDS("short", mm=fmt_number(SHORT_MM)), h)]
+    if _along_guide(s, s.drawn[:1]) is not None:  # a slider's signed V, a: which way is +
+        notes.append(Text(paragraph=WORDS("out_sign", p=lk.output), width=width, height=h))
+    tables = Column(*_tables(s, accel, h), *notes)
     # the velocity plan's steps, then the acceleration plan's
     names = [detail.vp.pole, *detail.vp.order, detail.ap.pole, *detail.ap.order]
     order = Steps(
@@ -270,8 +284,8 @@ def _order_title(s: Solved, P: Position) -> str:
     of the numbered ones."""
     i = next((i for i, Q in enumerate(s.drawn) if Q is P), None)
     if i is None:
-        return WORDS("order", phi=_deg(P.phi))
-    return WORDS("order_at", i=i, phi=_deg(P.phi))
+        return WORDS("order", phi=_deg(P.phi, s))
+    return WORDS("order_at", i=i, phi=_deg(P.phi, s))
 
 
 def _short(s: Solved, accel: Sequence[Position], lays: Sequence[Arranged]) -> bool:
@@ -389,7 +403,7 @@ def _through(s: Solved) -> str:
     n = _divisions(s)
     del lk
     through = WORDS("through_positions", last=n - 1)
-    phi0 = fmt_number(round(math.degrees(s.drawn[0].phi) % 360.0, 2), current())
+    phi0 = _deg(s.drawn[0].phi, s)
     return WORDS("diagrams_note", through=through, phi0=phi0)
 
 
@@ -876,9 +890,15 @@ def _tables(s: Solved, accel: Sequence[Position], h: float = TEXT_H) -> list[Tab
     else:
         out_v = f"V_{{{lk.output}}}, {WORDS('m_s')}"
         scale_v = abs(lk.omega) * lk.length
-        first = [_zeroed([P.vel[lk.output].norm for P in s.drawn], scale_v)]
         out_a = f"a_{{{lk.output}}}, {WORDS('m_s2')}"
-        first_a = [_zeroed([P.acc[lk.output].norm for P in accel], lk.omega**2 * lk.length)]
+        scale_a = lk.omega**2 * lk.length
+        along_v, along_a = _along_guide(s, s.drawn), _along_guide(s, accel)
+        # a slider's V, a: their projections on its guide, signed as on the v(φ), a(φ)
+        # diagrams (a note under the tables says which way is +); else the point's speed
+        first = [_zeroed(along_v[0] if along_v else
+                         [P.vel[lk.output].norm for P in s.drawn], scale_v)]  # fmt: skip
+        first_a = [_zeroed(along_a[1] if along_a else
+                           [P.acc[lk.output].norm for P in accel], scale_a)]  # fmt: skip
     head = ["№", "φ_1, °", out_v, *[f"ω_{{{i}}}, {per_s}" for i in links]]
     rows = [head, *_columns(
         [float(i) for i in range(len(s.drawn))],
@@ -886,6 +906,7 @@ def _tables(s: Solved, accel: Sequence[Position], h: float = TEXT_H) -> list[Tab
         *first,
         *[_zeroed([P.omega[j] for P in s.drawn], abs(lk.omega)) for j in links],
         angle=1,
+        places=_places(s),
     )]  # fmt: skip
     head2 = ["φ_1, °", out_a, *[f"ε_{{{i}}}, {per_s2}" for i in links]]
     rows2 = [head2, *_columns(
@@ -893,12 +914,42 @@ def _tables(s: Solved, accel: Sequence[Position], h: float = TEXT_H) -> list[Tab
         *first_a,
         *[_zeroed([P.eps[j] for P in accel], lk.omega**2) for j in links],
         angle=0,
+        places=_places(s),
     )]  # fmt: skip
     row_h = row_height(h)
     return [
-        Table(rows, title=WORDS("omega_table"), height=h, row_h=row_h, title_height=TITLE_H),
-        Table(rows2, title=WORDS("eps_table"), height=h, row_h=row_h, title_height=TITLE_H),
+        Table(
+            rows,
+            title=WORDS("omega_table"),
+            height=h,
+            row_h=row_h,
+            title_height=TITLE_H,
+            center=True,
+        ),
+        Table(
+            rows2,
+            title=WORDS("eps_table"),
+            height=h,
+            row_h=row_h,
+            title_height=TITLE_H,
+            center=True,
+        ),
     ]
+
+
+def _along_guide(
+    s: Solved, positions: Sequence[Position]
+) -> tuple[list[float], list[float]] | None:
+    """A slider output's velocity and acceleration in ``positions`` as its v(φ), a(φ)
+    diagrams give them (their projections on its guide, + in the working stroke's direction),
+    or None for an output that has no such diagrams."""
+    lk = s.linkage
+    if lk.rocker or lk.output_guide is None or s.cycle is None or not positions:
+        return None
+    sign = 1.0 if lk.omega > 0 else -1.0
+    psi = np.array([(sign * (P.phi - s.drawn[0].phi)) % (2.0 * math.pi) for P in positions])
+    _, _, v, a = _output_curves(s, psi)
+    return [float(x) for x in v], [float(x) for x in a]
 
 
 def _zeroed(xs: Sequence[float], scale: float) -> list[float]:
@@ -906,12 +957,17 @@ def _zeroed(xs: Sequence[float], scale: float) -> list[float]:
     return [0.0 if abs(x) <= ZERO * scale else float(x) for x in xs]
 
 
-def _columns(*cols: Sequence[float], angle: int = -1) -> list[list[str]]:
+def _columns(*cols: Sequence[float], angle: int = -1, places: int = 1) -> list[list[str]]:
     """Table rows from columns of one quantity each, a column's numbers with the same count of
     decimals (:func:`~geomcad.sheet.scale.fmt_column`): 3 significant figures at its largest,
-    as the plans are read, 4 for the crank angle (column ``angle``)."""
+    as the plans are read; the crank angle (column ``angle``) with the sheets' ``places``."""
     n = len(cols)
-    texts = [fmt_column(c, current(), 4 if i == angle % n else 3) for i, c in enumerate(cols)]
+    texts = [
+        [fmt_fixed(x, places, current()) for x in c]
+        if i == angle % n
+        else fmt_column(c, current(), 3)
+        for i, c in enumerate(cols)
+    ]
     return [list(r) for r in zip(*texts, strict=True)]
 
 

@@ -79,7 +79,7 @@ from geomcad.sheet.linkage import (
 from geomcad.sheet.linkage import WORDS as KIN_WORDS
 from geomcad.sheet.loads import ForceScales, force, force_scales, moment
 from geomcad.sheet.plans import markup_of
-from geomcad.sheet.scale import Scale, fmt_column
+from geomcad.sheet.scale import ANGLE_PLACES, Scale, angle_places, fmt_column, fmt_fixed
 from geomcad.sheet.scheme import draw_scheme
 from geomcad.sheet.views import (
     AxisSpec,
@@ -182,7 +182,8 @@ def _sheet2(
     # the length scales from the geometry alone: never finer than the GOST scale that draws
     # the crank CRANK_MM long (a change of ω or of the loads rescales no drawing of links)
     k_l = crank_scale(lk).k
-    phi = _num(math.degrees(P.phi) % 360.0)
+    deg = math.degrees(P.phi) % 360.0
+    phi = fmt_fixed(deg, angle_places([deg]), current())
     title = WORDS("mech", k=k, phi=phi) if k is not None else WORDS("mech_phi", phi=phi)
     mech = _Loaded(lk, P, f, title)
     mech.least_k = k_l
@@ -562,19 +563,6 @@ class _Lever(View):
         _force(v, lev.images[lk.joint], lev.F_bal, self.fs, WORDS("P_bal"), role="result")
 
 
-#: Forces (moments) are written in kN (kN·m) in a table where one of them reaches this many N
-#: (N·m): its values keep four digits before the comma at most, as a teacher reads them.
-KILO_FROM = 1.0e4
-
-
-def _unit(values: Sequence[float], unit: str) -> tuple[float, str]:
-    """The factor from SI and the unit a table writes its values of ``unit`` (N, N·m) in: the
-    kilo-unit where the largest reaches :data:`KILO_FROM`, one unit for all of them."""
-    if max((abs(x) for x in values), default=0.0) >= KILO_FROM:
-        return 1.0e-3, f"k{unit}"
-    return 1.0, unit
-
-
 def _table2(f: Forces, h: float) -> Table:
     forces: list[tuple[str, float, float]] = []  # (name, value, scale of round-off)
     moments: list[tuple[str, float]] = []
@@ -599,21 +587,23 @@ def _table2(f: Forces, h: float) -> Table:
     moments.append((WORDS("m_bal_forces"), f.M_bal))
     moments.append((WORDS("m_bal_lever"), f.lever.M_bal))
     order += [("M", len(moments) - 2), ("M", len(moments) - 1)]
-    kf, uf = _unit([x for _, x, _ in forces], "N")
-    km, um = _unit([x for _, x in moments], "N·m")
-    # a value that is round-off against the largest of its kind is 0 (an ε that vanishes in
-    # this position gives M_Φ = 10^-13 N·m, not a number to print)
+    # one unit per quantity on the sheet: N and N·m, as its order of calculation writes them;
+    # each quantity's numbers with one count of decimals (4 significant figures at its
+    # largest), a value that is round-off against the largest of its kind as 0 (an ε that
+    # vanishes in this position gives M_Φ = 10^-13 N·m, not a number to print)
     big_f = max((x for _, x, _ in forces), default=0.0)
     big_m = max((abs(m) for _, m in moments), default=0.0)
+    f_text = fmt_column(
+        [0.0 if abs(x) <= ZERO * max(sc, big_f) else x for _, x, sc in forces], current(), 4
+    )
+    m_text = fmt_column([0.0 if abs(m) <= ZERO * big_m else m for _, m in moments], current(), 4)
     rows: list[tuple[str, float | str, str]] = []
     for kind, i in order:
         if kind == "F":
-            name, x, sc = forces[i]
-            rows.append((name, _num(x * kf, scale=max(sc, big_f) * kf), uf))
+            rows.append((forces[i][0], f_text[i], "N"))
         else:
-            name, m = moments[i]
-            rows.append((name, _num(m * km, scale=big_m * km), um))
-    return Table.of_values(rows, first=WORDS("load"), title=WORDS("loads"),
+            rows.append((moments[i][0], m_text[i], "N·m"))
+    return Table.of_values(rows, first=WORDS("load"), title=WORDS("loads"), center=True,
                            height=h, row_h=row_height(h), title_height=TITLE_H)  # fmt: skip
 
 
@@ -653,11 +643,12 @@ def _sheet3(s: Solved, fw: Flywheel, h: float) -> Tree:
         cs.append(Curve(np.degrees(psi_k), gy, "construction", points=True))
         graphs.append(Diagram(x, AxisSpec(sym, unit, name), cs, least=(120.0, 45.0),
                               prefer=(600.0, 150.0), marks=position_marks(n)))  # fmt: skip
+    phi0 = math.degrees(s.positions[0].phi) % 360.0
     origin = WORDS(
         "phi_origin",
-        phi0=_num(math.degrees(s.positions[0].phi) % 360.0),
+        phi0=fmt_fixed(phi0, angle_places([phi0, 360.0 / n]), current()),
         last=n - 1,
-        step=_num(360.0 / n),
+        step=fmt_fixed(360.0 / n, angle_places([phi0, 360.0 / n]), current()),
     )
     note = Text(paragraph=origin, width=order_width(h), height=h)
     column = Column(note, *graphs, title=WORDS("graphs"), title_height=TITLE_H)
@@ -735,8 +726,8 @@ class _Wittenbauer(View):
         tan_lo = k_min * ax.k / ay.k
         angles = WORDS(
             "witt_angles",
-            hi=_num(math.degrees(math.atan(tan_hi))),
-            lo=_num(math.degrees(math.atan(tan_lo))),
+            hi=fmt_fixed(math.degrees(math.atan(tan_hi)), ANGLE_PLACES, current()),
+            lo=fmt_fixed(math.degrees(math.atan(tan_lo)), ANGLE_PLACES, current()),
         )
         # ab, the segment the tangents cut on the ΔT axis, is read in the heading: a label on
         # the axis itself would stand among its tick values
@@ -794,8 +785,9 @@ def _tables3(lk: Linkage, fw: Flywheel, h: float) -> list[Table]:
     # column one count of decimals
     sign = 1.0 if lk.omega > 0 else -1.0
     idx = list(range(0, n, step))
+    degs = [math.degrees(fw.phis[i]) % 360.0 for i in idx]
     cols = [
-        fmt_column([math.degrees(fw.phis[i]) % 360.0 for i in idx], current(), 4),
+        [fmt_fixed(x, angle_places(degs), current()) for x in degs],
         fmt_column(
             [0.0 if abs(fw.I_pr[i]) <= ZERO * si else fw.I_pr[i] for i in idx], current(), 4
         ),
@@ -818,7 +810,8 @@ def _tables3(lk: Linkage, fw: Flywheel, h: float) -> list[Table]:
                 ("m", _num(fw.mass), "kg")]  # fmt: skip
     row_h = row_height(h)
     return [
-        Table(rows, title=WORDS("table3"), height=h, row_h=row_h, title_height=TITLE_H),
+        Table(rows, title=WORDS("table3"), height=h, row_h=row_h, title_height=TITLE_H,
+              center=True),
         Table.of_values(res, header=False, title=WORDS("results3"), height=h, row_h=row_h,
                         title_height=TITLE_H),
     ]  # fmt: skip

@@ -112,6 +112,29 @@ def fmt_column(xs: Sequence[float], lang: str | None = None, digits: int = 4) ->
     return out
 
 
+#: An angle on a sheet is written to this many decimals of a degree where one of the sheet's
+#: angles is not whole (0,1°: as a protractor reads it).
+ANGLE_PLACES = 1
+
+
+def angle_places(degrees: Sequence[float]) -> int:
+    """The one count of decimals every angle of a sheet is written with: none where all of
+    ``degrees`` are whole, else :data:`ANGLE_PLACES` (``3,7°`` beside ``92,5°``, never
+    ``3,749°`` beside ``92,51°``)."""
+    whole = all(abs(x - round(x)) <= 10.0**-ANGLE_PLACES / 2.0 for x in degrees)
+    return 0 if whole else ANGLE_PLACES
+
+
+def fmt_fixed(x: float, places: int, lang: str | None = None) -> str:
+    """A number with exactly ``places`` decimals, a decimal comma in Russian (a point in
+    English), a typographic minus, a whole part of five or more digits grouped by threes."""
+    s = f"{x:.{places}f}"
+    if float(s) == 0.0:
+        s = s.lstrip("-")
+    s = group_digits(s).replace("-", "\u2013")
+    return s.replace(".", ",") if (lang or current()) == "ru" else s
+
+
 @dataclass(frozen=True)
 class Scale:
     """``k`` model units per sheet millimetre for quantity ``q`` (l, v, a or F)."""

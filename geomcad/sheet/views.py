@@ -924,7 +924,8 @@ HEADING_SPAN = 2.0
 class Table(View):
     """A ruled table of ``rows`` of label markup (the first the header unless ``header`` is
     False), its columns as wide as their widest text (or ``widths``), widened in proportion
-    to ``fill`` mm in all when that is wider (a table as wide as the one under it).
+    to ``fill`` mm in all when that is wider (a table as wide as the one under it); ``center``:
+    each column's numbers, aligned on their separator, as a block in its middle.
 
     Its ``title`` is its heading (GOST 2.105: above the table, from its left edge), on one
     line where that line is at most HEADING_SPAN times the table's width (the view is then as
@@ -941,10 +942,12 @@ class Table(View):
         height: float = 2.5,
         row_h: float = 6.0,
         fill: float = 0.0,
+        center: bool = False,
         **kw: Any,
     ) -> None:
         kw.setdefault("margin", 1.0)
         heading = kw.pop("title", "")
+        self.center = center
         super().__init__(**kw)
         self.rows = [list(r) for r in rows]
         self.header = header
@@ -1013,7 +1016,7 @@ class Table(View):
             if line:
                 d.text(line, (x, y + h + i * h * LINE_SPACING), h)
         d.table(x, y + self.heading_room(), self.widths, self.rows, self.height, self.row_h,
-                self.header)  # fmt: skip
+                self.header, self.center)  # fmt: skip
 
     @staticmethod
     def of_values(
