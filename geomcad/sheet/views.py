@@ -265,14 +265,15 @@ def draw_polygon(
         s2 = shift.get(nxt.name, Vec(0.0, 0.0))
         if thin and (s - s2).norm > 0.0:  # the vectors side by side joined where they meet
             v.seg(pv.head + s, nxt.tail + s2, "construction")
-        if pv.name in in_detail:  # in the chain as an arrow, however short (named in its detail)
-            v.arrow(pv.tail + s, pv.head + s, role)
-            continue
-        if v.mm(pv.magnitude) < SHORT_MM:
-            short.append(pv.name)
         tail, head = pv.tail + s, pv.head + s
-        v.arrow(tail, head, "result" if pv.name in found else role)
         text = (names or {}).get(pv.name, pv.name)
+        if pv.name in in_detail:
+            # its line, named, keeps the chain whole (its arrow is drawn in its detail)
+            v.seg(tail, head, "construction")
+        else:
+            if v.mm(pv.magnitude) < SHORT_MM:
+                short.append(pv.name)
+            v.arrow(tail, head, "result" if pv.name in found else role)
         if s.norm > 0.0:
             prefer = (s.unit().x, s.unit().y)
         elif pv.name in away:
@@ -284,12 +285,16 @@ def draw_polygon(
         v.label((tail + head) * 0.5, text, height, prefer=prefer, clear=0.5)
     for r, corner in res:
         # a reaction found by its components: their resultant closes them, the label on the
-        # side away from the components' corner
-        v.arrow(r.tail, r.head, "result")
+        # side away from the components' corner, a third of the way along (clear of the
+        # label of a long component drawn next to it)
+        if v.mm(r.magnitude) < SHORT_MM:  # its components in a detail: its line, named
+            v.seg(r.tail, r.head, "construction")
+        else:
+            v.arrow(r.tail, r.head, "result")
         n = (r.head - r.tail).perp().unit()
         if n.dot(corner - r.tail) > 0.0:
             n = -n
-        v.label((r.tail + r.head) * 0.5, (names or {}).get(r.name, r.name), height,
+        v.label(r.tail + (r.head - r.tail) * 0.3, (names or {}).get(r.name, r.name), height,
                 prefer=(n.x, n.y), clear=0.5)  # fmt: skip
     for dt in details:
         mark_detail(v, poly, dt)
@@ -421,7 +426,7 @@ def detail_letters(used: Iterable[str] = ()) -> Iterator[str]:
     letter of a name in ``used`` (the sheet's points and forces), so that a detail never reads
     as a point; past the last, the letters again with a number (Б1, Г1, …)."""
     taken = {n[0].upper() for n in used if n}
-    base = [c for c in WORDS("detail_letters") if c not in taken and _LATIN_LIKE.get(c) not in taken]
+    base = [c for c in WORDS("detail_letters") if not {c, _LATIN_LIKE.get(c)} & taken]
     yield from base
     for i in range(1, 100):
         yield from (f"{c}{i}" for c in base)
