@@ -192,7 +192,7 @@ def _sheet2(
     # each group's polygons under the group cut out (the crank's under the crank); a
     # polygon's vectors too short for its μ_F are drawn again, enlarged, in details at their
     # own stated μ_F beside it in its view (one letter each on the sheet)
-    letters = detail_letters([*P.pos, *_FORCE_LETTERS])
+    letters = detail_letters([*P.pos, *_FORCE_LETTERS, load_name(chr(0x424))])
     per_group = [
         [
             Polygon(
@@ -227,8 +227,9 @@ def _sheet2(
     return tree, {mech: lk.length / CRANK_MM}
 
 
-#: The letters of the forces and moments on a forces sheet (no detail is lettered with one).
-_FORCE_LETTERS = ("F", "G", "M", "R", "Ф", "Φ")
+#: The letters of the forces and moments on a forces sheet (no detail is lettered with one;
+#: nor with the inertia force's, in the language drawn).
+_FORCE_LETTERS = ("F", "G", "M", "R")
 
 
 def crank_scale(lk: Linkage) -> Scale:

@@ -416,8 +416,10 @@ THIN_MM = 1.2
 
 
 #: The Cyrillic capitals drawn as Latin ones (a detail lettered with one reads as a point).
-_LATIN_LIKE = {"А": "A", "В": "B", "Е": "E", "К": "K", "М": "M", "Н": "H", "О": "O", "Р": "P",
-               "С": "C", "Т": "T", "У": "Y", "Х": "X"}  # fmt: skip
+_LATIN_LIKE = {
+    chr(0x410 + i): c
+    for i, c in zip((0, 2, 5, 10, 12, 13, 14, 16, 17, 18, 19, 21), "ABEKMHOPCTYX", strict=True)
+}
 
 
 def detail_letters(used: Iterable[str] = ()) -> Iterator[str]:
