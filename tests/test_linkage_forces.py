@@ -962,7 +962,7 @@ def test_no_detail_letter_reads_as_a_point_or_a_force(
     from geomcad.sheet import linkage_forces as lf
 
     P, _, _ = lf.force_position(solve(lk))
-    taken = {n[0] for n in P.pos} | set("FGMRФΦ")
+    taken = {n[0] for n in P.pos} | set("FGMPRSФΦ")
     letters = rec["letters"]
     assert letters, name
     assert len(set(letters)) == len(letters), letters

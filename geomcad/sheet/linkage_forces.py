@@ -227,9 +227,10 @@ def _sheet2(
     return tree, {mech: lk.length / CRANK_MM}
 
 
-#: The letters of the forces and moments on a forces sheet (no detail is lettered with one;
-#: nor with the inertia force's, in the language drawn).
-_FORCE_LETTERS = ("F", "G", "M", "R")
+#: The letters of the forces and moments on a forces sheet, the balancing force's and the
+#: centres of mass' (no detail is lettered with one; nor with the inertia force's, in the
+#: language drawn).
+_FORCE_LETTERS = ("F", "G", "M", "P", "R", "S")
 
 
 def crank_scale(lk: Linkage) -> Scale:
