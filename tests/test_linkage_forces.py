@@ -844,3 +844,136 @@ def test_a_links_figure_is_its_outline_through_its_points() -> None:
     got = {frozenset((x, y)) for x, y in figure_edges([a, b, m, inside], 1e-6)}
     assert {frozenset((inside, q)) for q in (a, b, m)} <= got
     assert figure_edges([a, Vec(0.0, 1e-9)], 1e-6) == []
+
+
+def _drawn_polygons(name: str, monkeypatch: pytest.MonkeyPatch) -> tuple[Linkage, Forces, Any]:
+    """The forces sheet of ``name`` built with each group polygon's arrows and labels and
+    each detail's letter recorded: (linkage, forces, record)."""
+    from geomcad.sheet import linkage_forces as lf
+    from geomcad.sheet import views
+    from geomcad.sheet.drawing import Viewport
+
+    if name in ("shaper", "crusher", "slider-crank-example"):
+        stem = "slider-crank" if name == "slider-crank-example" else name
+        lk = parse(tomllib.loads((EXAMPLE.parent / f"{stem}.toml").read_text(encoding="utf-8")))
+    else:
+        lk = example() if name == "example" else load(FILES[name])
+    rec: dict[str, Any] = {k: [] for k in ("arrows", "lines", "labels", "letters", "polys")}
+    rec["in"] = [False]
+    arrow, label, draw, mark = Viewport.arrow, Viewport.label, views.draw_polygon, views.mark_detail
+    seg = Viewport.seg
+
+    def rec_seg(v: Viewport, a: Any, b: Any, role: str = "link") -> None:
+        if rec["in"][0]:
+            rec["lines"][-1].append((Vec(*a), Vec(*b)))
+        seg(v, a, b, role)
+
+    def rec_arrow(v: Viewport, a: Any, b: Any, role: str = "vector") -> None:
+        if rec["in"][0]:
+            rec["arrows"][-1].append((Vec(*a), Vec(*b)))
+        arrow(v, a, b, role)
+
+    def rec_label(v: Viewport, q: Any, markup: str, *args: Any, **kw: Any) -> None:
+        if rec["in"][0]:
+            rec["labels"][-1].append(markup)
+        label(v, q, markup, *args, **kw)
+
+    def rec_draw(v: Viewport, poly: Any, *args: Any, **kw: Any) -> list[str]:
+        rec["in"][0] = True
+        rec["arrows"].append([])
+        rec["lines"].append([])
+        rec["labels"].append([])
+        rec["polys"].append((poly, kw.get("details", args[5] if len(args) > 5 else ())))
+        try:
+            return draw(v, poly, *args, **kw)
+        finally:
+            rec["in"][0] = False
+
+    def rec_mark(v: Viewport, poly: Any, dt: Any) -> None:
+        rec["letters"].append(dt.letter)
+        mark(v, poly, dt)
+
+    monkeypatch.setattr(Viewport, "arrow", rec_arrow)
+    monkeypatch.setattr(Viewport, "seg", rec_seg)
+    monkeypatch.setattr(Viewport, "label", rec_label)
+    monkeypatch.setattr(views, "draw_polygon", rec_draw)
+    monkeypatch.setattr(views, "mark_detail", rec_mark)
+    s = solve(lk)
+    lf.force_sheets(s, name, first_no=2)
+    _, f, _ = lf.force_position(s)
+    return lk, f, rec
+
+
+@pytest.mark.parametrize("name", ["example", "slider-crank", "crusher", "shaper"])
+def test_a_reaction_split_into_components_is_drawn_as_their_resultant(
+    name: str, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """In a group's force polygon every reaction found by its components R^n, R^τ is drawn as
+    well as their resultant, an arrow labelled R_{12} that closes them (from the tail of the
+    one to the head of the other) and is the reaction's force; and every vector a detail
+    enlarges is still in the main polygon's chain, drawn and named there."""
+    _, f, rec = _drawn_polygons(name, monkeypatch)
+    reactions = {r.name: r.force for gf in f.groups for r in gf.reactions}
+    split = 0
+    for (poly, details), arrows, lines, labels in zip(
+        rec["polys"], rec["arrows"], rec["lines"], rec["labels"], strict=True
+    ):
+        big = max(pv.magnitude for pv in poly.vectors)
+        comps: dict[str, list[Any]] = {}
+        for pv in poly.vectors:
+            if "^n" in pv.name or "^τ" in pv.name:
+                comps.setdefault(pv.name.replace("^n", "").replace("^τ", ""), []).append(pv)
+        for rname, (a, b) in comps.items():
+            if min(a.magnitude, b.magnitude) <= 1e-9 * big:
+                continue
+            split += 1
+            assert rname in labels, (name, rname, labels)
+            total = a.force + b.force
+            assert rname in reactions and reactions[rname].dist(total) <= 1e-6 * big, rname
+            tails, heads = {a.tail, b.tail}, {a.head, b.head}
+            assert any(
+                (q - p).dist(total) <= 1e-6 * big
+                and any(p.dist(t) <= 1e-6 * big for t in tails)
+                and any(q.dist(h) <= 1e-6 * big for h in heads)
+                for p, q in arrows
+            ), (name, rname)
+        for dt in details:
+            for n in dt.run:
+                pv = poly[n]
+                assert any(
+                    p.dist(pv.tail) <= 1e-6 * big and q.dist(pv.head) <= 1e-6 * big
+                    for p, q in arrows + lines
+                ), (name, n)
+                assert n in labels, (name, n, labels)
+    assert split >= 1
+
+
+_LATIN_LIKE = dict(zip("АВЕКМНОРСТУХ", "ABEKMHOPCTYX", strict=True))
+
+
+@pytest.mark.parametrize("name", ["example", "slider-crank-example", "crusher", "shaper"])
+def test_no_detail_letter_reads_as_a_point_or_a_force(
+    name: str, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """The letters of the polygons' details (ESKD выносной элемент) are never a point's letter
+    on the sheet, nor a Cyrillic capital drawn as one, nor a force's letter, and each is used
+    once."""
+    lk, _, rec = _drawn_polygons(name, monkeypatch)
+    from geomcad.sheet import linkage_forces as lf
+
+    P, _, _ = lf.force_position(solve(lk))
+    taken = {n[0] for n in P.pos} | set("FGMPRSФΦ")
+    letters = rec["letters"]
+    assert letters, name
+    assert len(set(letters)) == len(letters), letters
+    for c in letters:
+        assert c[0] not in taken and _LATIN_LIKE.get(c[0]) not in taken, (name, c, sorted(taken))
+
+
+def test_detail_letters_leave_out_the_used_ones_and_never_run_out() -> None:
+    from geomcad.sheet.views import detail_letters
+
+    it = detail_letters(["A", "B", "E", "O1", "Б"])
+    first = [next(it) for _ in range(40)]
+    assert not {"А", "В", "Е", "О", "Б", "A", "B", "E", "O"} & {c[0] for c in first}
+    assert len(set(first)) == 40

@@ -193,7 +193,7 @@ def _sheet2(
     # each group's polygons under the group cut out (the crank's under the crank); a
     # polygon's vectors too short for its μ_F are drawn again, enlarged, in details at their
     # own stated μ_F beside it in its view (one letter each on the sheet)
-    letters = detail_letters()
+    letters = detail_letters([*P.pos, *_FORCE_LETTERS, load_name(chr(0x424))])
     per_group = [
         [
             Polygon(
@@ -226,6 +226,12 @@ def _sheet2(
         Column(Row(mech, lever, right), groups),
     )
     return tree, {mech: lk.length / CRANK_MM}
+
+
+#: The letters of the forces and moments on a forces sheet, the balancing force's and the
+#: centres of mass' (no detail is lettered with one; nor with the inertia force's, in the
+#: language drawn).
+_FORCE_LETTERS = ("F", "G", "M", "P", "R", "S")
 
 
 def crank_scale(lk: Linkage) -> Scale:

@@ -250,25 +250,52 @@ def draw_polygon(
     shift = _shifts(v, poly, in_detail) if thin else {}
     short: list[str] = []
     drawn = [pv for pv in poly.vectors if pv.magnitude > zero]
+    res = resultants(poly)
+    # a component is labelled outside the triangle it makes with its resultant
+    away: dict[str, Vec] = {}
+    for r, _ in res:
+        for pv in drawn:
+            m = _COMPONENT.fullmatch(pv.name)
+            if m is not None and m[1] + m[2] == r.name:
+                at_tail = min((q - r.tail).norm for q in (pv.tail, pv.head)) <= zero
+                away[pv.name] = r.head if at_tail else r.tail
     for i, pv in enumerate(drawn):
         s = shift.get(pv.name, Vec(0.0, 0.0))
         nxt = drawn[(i + 1) % len(drawn)]
         s2 = shift.get(nxt.name, Vec(0.0, 0.0))
         if thin and (s - s2).norm > 0.0:  # the vectors side by side joined where they meet
             v.seg(pv.head + s, nxt.tail + s2, "construction")
-        if pv.name in in_detail:
-            v.seg(pv.tail + s, pv.head + s, "construction")
-            continue
-        if v.mm(pv.magnitude) < SHORT_MM:
-            short.append(pv.name)
         tail, head = pv.tail + s, pv.head + s
-        v.arrow(tail, head, "result" if pv.name in found else role)
         text = (names or {}).get(pv.name, pv.name)
+        if pv.name in in_detail:
+            # its line, named, keeps the chain whole (its arrow is drawn in its detail)
+            v.seg(tail, head, "construction")
+        else:
+            if v.mm(pv.magnitude) < SHORT_MM:
+                short.append(pv.name)
+            v.arrow(tail, head, "result" if pv.name in found else role)
         if s.norm > 0.0:
             prefer = (s.unit().x, s.unit().y)
+        elif pv.name in away:
+            n = (pv.head - pv.tail).perp().unit()
+            n = -n if n.dot(away[pv.name] - pv.tail) > 0.0 else n
+            prefer = (n.x, n.y)
         else:
             prefer = _outward(poly, pv.tail, pv.head, pv.name in inward)
         v.label((tail + head) * 0.5, text, height, prefer=prefer, clear=0.5)
+    for r, corner in res:
+        # a reaction found by its components: their resultant closes them, the label on the
+        # side away from the components' corner, a third of the way along (clear of the
+        # label of a long component drawn next to it)
+        if v.mm(r.magnitude) < SHORT_MM:  # its components in a detail: its line, named
+            v.seg(r.tail, r.head, "construction")
+        else:
+            v.arrow(r.tail, r.head, "result")
+        n = (r.head - r.tail).perp().unit()
+        if n.dot(corner - r.tail) > 0.0:
+            n = -n
+        v.label(r.tail + (r.head - r.tail) * 0.3, (names or {}).get(r.name, r.name), height,
+                prefer=(n.x, n.y), clear=0.5)  # fmt: skip
     for dt in details:
         mark_detail(v, poly, dt)
     if thin and len(drawn) == 2 and not in_detail:
@@ -281,6 +308,36 @@ def draw_polygon(
                 clear=0.5)  # fmt: skip
     v.dot(poly.pole)
     return short
+
+
+#: A reaction's component: R^n_{12}, R^τ_{12} (its resultant R_{12}).
+_COMPONENT = re.compile(r"(.+)\^(?:n|τ|t)(_.+)")
+
+
+def resultants(poly: ForcePolygon) -> list[tuple[PlanVector, Vec]]:
+    """The resultants of the reactions ``poly`` has split into two components (R^n_{12} and
+    R^τ_{12} → R_{12}), each with the corner where its components meet: the vector closing
+    the components, from the tail of the one to the head of the other that follows it in the
+    chain (else laid off from the tail of the first by their sum). A component of zero length
+    leaves none (the other is the reaction)."""
+    zero = _zero(poly)
+    parts: dict[str, list[PlanVector]] = {}
+    for pv in poly.vectors:
+        m = _COMPONENT.fullmatch(pv.name)
+        if m is not None:
+            parts.setdefault(m[1] + m[2], []).append(pv)
+    out = []
+    for name, ps in parts.items():
+        if len(ps) != 2 or min(pv.magnitude for pv in ps) <= zero:
+            continue
+        a, b = ps
+        if (b.head - a.tail).norm <= zero < (a.head - b.tail).norm:
+            a, b = b, a  # b's head meets a's tail: the chain runs b → a
+        if (a.head - b.tail).norm <= zero:
+            out.append((PlanVector(name, a.tail, b.head), a.head))
+        else:
+            out.append((PlanVector(name, a.tail, a.head + (b.head - b.tail)), a.head))
+    return out
 
 
 def _zero(poly: ForcePolygon) -> float:
@@ -358,10 +415,23 @@ OFFSET_MM = 2.5
 THIN_MM = 1.2
 
 
-def detail_letters() -> Iterator[str]:
+#: The Cyrillic capitals drawn as Latin ones (a detail lettered with one reads as a point).
+_LATIN_LIKE = {
+    chr(0x410 + i): c
+    for i, c in zip((0, 2, 5, 10, 12, 13, 14, 16, 17, 18, 19, 21), "ABEKMHOPCTYX", strict=True)
+}
+
+
+def detail_letters(used: Iterable[str] = ()) -> Iterator[str]:
     """The letters of a sheet's details in the language drawn (ESKD: capitals, those that
-    read as digits or as other letters left out)."""
-    return iter(WORDS("detail_letters"))
+    read as digits or as other letters left out), none that is, or is drawn as, the first
+    letter of a name in ``used`` (the sheet's points and forces), so that a detail never reads
+    as a point; past the last, the letters again with a number (Б1, Г1, …)."""
+    taken = {n[0].upper() for n in used if n}
+    base = [c for c in WORDS("detail_letters") if not {c, _LATIN_LIKE.get(c)} & taken]
+    yield from base
+    for i in range(1, 100):
+        yield from (f"{c}{i}" for c in base)
 
 
 def short_runs(vectors: Sequence[PlanVector], limit: float, closed: bool = True) -> list[list[str]]:
@@ -492,6 +562,7 @@ def place_details(
     gap = DETAIL_GAP_MM * k
     x0, y0, x1, y1 = ext
     segs = [(pv.tail, pv.head) for pv in poly.vectors]
+    segs += [(r.tail, r.head) for r, _ in resultants(poly)]
     placed: list[Extent] = []
     union = ext
     for dt, (w, h) in zip(flat, sizes, strict=True):
