@@ -8,11 +8,14 @@ import math
 import tomllib
 from pathlib import Path
 
+import pytest
+
 from geomcad.linkage import parse
 from geomcad.linkage.solution import Solved, scheme, solve
 from geomcad.sheet.drawing import Viewport
 from geomcad.sheet.linkage import _principal, kinematic_sheets, layout
 from geomcad.sheet.model import Polyline, TextItem
+from geomcad.sheet.text import metrics, placed_runs, run_size
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
 
@@ -105,3 +108,27 @@ def test_a_named_points_index_is_a_subscript_on_the_mechanism() -> None:
     assert any(
         [(r.text, r.shift) for r in it.runs] == [("S", "base"), ("2", "sub")] for it in near
     ), [it.text for it in near]
+
+
+def test_no_index_is_smaller_than_the_least_gost_height() -> None:
+    # SHEETS.md (GOST 2.304): indices no smaller than 2.5 mm, on every label of a file's sheet
+    # (a subscript; an exponent keeps 0.7 of its text)
+    m = metrics()
+    small = set()
+    for _, sheet in kinematic_sheets(_solved("slider-crank")):
+        for it in sheet.items:
+            if not isinstance(it, TextItem) or it.height < 2.5:
+                continue
+            for run, _x, _y, size in placed_runs(it):
+                cap = size * m.cap_height / m.units_per_em
+                if run.shift == "sub" and cap < 2.5 - 1e-6:
+                    small.add((it.text, it.height, round(cap, 2)))
+    assert not small, sorted(small)[:5]
+
+
+def test_an_index_keeps_its_scale_above_the_least_height() -> None:
+    m = metrics()
+    fs = m.font_size(5.0)
+    assert run_size(fs, "sub") == pytest.approx(0.7 * fs)
+    assert run_size(m.font_size(2.5), "sub") == pytest.approx(m.font_size(2.5))
+    assert run_size(fs, "base") == fs
