@@ -62,8 +62,10 @@ BASELINE: dict[tuple[str, str], dict[str, int]] = {
     ("kulisa-23110713", "fbd"): {},
     # the golden linkage files (tests/test_golden.py): plan vectors under two arrowheads are
     # lettered points (with a note)
-    # the principal position is the force position (1): the ram's symbol at D1 crowds D2, D11
-    ("linkage-shaper", ""): {"anchor": 4, "empty": 1},
+    # the principal position is the force position (1): the ram's symbol at D1 crowds D2, D11;
+    # the ram's guide drawn over its whole travel (GOST 2.770) puts D1's and D11's numbers past
+    # the block's hatching (9 mm)
+    ("linkage-shaper", ""): {"anchor": 6, "empty": 1},
     # the forces sheet at the default force position (position 1, the ram at the start of its
     # cut, the rod 4 nearly along the guide); issue 27: the short forces at the slider D are
     # arrows at μ_F* … (they were dots): the letters 4, D, 5 by the crowded slider land 7–9 mm

@@ -55,6 +55,7 @@ from geomcad.sheet.drawing import SHORT_MM, Viewport
 from geomcad.sheet.frame import FORMATS
 from geomcad.sheet.lang import Words, current, per_language
 from geomcad.sheet.motion import Frames, turn
+from geomcad.sheet.plans import markup_of
 from geomcad.sheet.scale import Scale, angle_places, fmt_column, fmt_fixed
 from geomcad.sheet.scheme import Body, draw_scheme
 from geomcad.sheet.views import AxisSpec, Curve, Diagram, PlanView, Steps, Table, Text
@@ -593,7 +594,8 @@ class _Mechanism(View):
                     for b in bodies:
                         v.polyline(b.points, "thin", closed=b.closed)
         numbered: list[Vec] = []
-        for name in dict.fromkeys((lk.joint, lk.output)):
+        # the crank's joint, the output and every named point whose path is traced
+        for name in dict.fromkeys((lk.joint, lk.output, *(p.name for p in lk.points))):
             pts = [P.pos[name] for P in s.drawn]
             for q in pts:
                 v.dot(q)
@@ -613,12 +615,21 @@ class _Mechanism(View):
                 first[name], labels[pair.name] = pair.name, name
             elif name not in labels[first[there]].split(", "):
                 labels[first[there]] += f", {name}"  # a yoke's E on the block's A: "A, E"
-        draw_scheme(v, mech, bodies=link_bodies(lk, P0), pair_labels=labels, label_height=3.5,
-                    guides=frame_guides(lk))  # fmt: skip
+        guides = frame_guides(lk)
+        travel = {  # a slider's guide on the frame drawn over its travel in the positions drawn
+            pair.name: [P.pos[pair.name.split(":")[0]] for P in s.drawn]
+            for pair in mech.pairs
+            if pair.kind == "P" and mech.frame in pair.links and pair.name not in guides
+            and pair.name.split(":")[0] in P0.pos
+        }  # fmt: skip
+        lettered = set(labels.values())
+        marked = {k: ", ".join(markup_of(n) for n in t.split(", ")) for k, t in labels.items()}
+        draw_scheme(v, mech, bodies=link_bodies(lk, P0), pair_labels=marked, label_height=3.5,
+                    guides=guides, travel=travel)  # fmt: skip
         for p in lk.points:
-            if p.name not in labels.values():
+            if p.name not in lettered:
                 v.dot(P0.pos[p.name])
-                v.label(P0.pos[p.name], p.name, 3.5, clear=1.0)
+                v.label(P0.pos[p.name], markup_of(p.name), 3.5, clear=1.0)
         omega_arrow(v, lk, P0)
 
 

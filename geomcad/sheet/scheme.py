@@ -87,6 +87,7 @@ def draw_scheme(
     ghosts: Collection[str] = (),
     supports: Mapping[str, tuple[float, float]] | None = None,
     guides: Mapping[str, PointLike] | None = None,
+    travel: Mapping[str, Sequence[PointLike]] | None = None,
 ) -> None:
     """Draw ``mech`` in viewport ``v`` (see the module docstring).
 
@@ -100,7 +101,10 @@ def draw_scheme(
     needs that side free (default: :func:`_support_direction`'s). ``guides`` maps a prismatic
     pair on the frame to the model point on its axis where its hatched guide is drawn (default:
     the pair's point), for a link that slides on the frame by a rod off its other pairs (a
-    yoke). A link given a body is drawn as that body, never as a block.
+    yoke). ``travel`` maps a prismatic pair on the frame to the points its slider takes in the
+    positions drawn: the guide's axis is drawn as a line over that whole travel (GOST 2.770),
+    its hatched marks where the pair is. A link given a body is drawn as that body, never as a
+    block.
     """
     bodies = dict(bodies or {})
     size = mech.size()
@@ -119,7 +123,8 @@ def draw_scheme(
     for p in mech.pairs:
         if p.kind == "P":
             at = (guides or {}).get(p.name)
-            _prismatic(v, mech, p, role, ghosts, drawn, None if at is None else vec(at))
+            run = [vec(q) for q in (travel or {}).get(p.name, ())]
+            _prismatic(v, mech, p, role, ghosts, drawn, None if at is None else vec(at), run)
     for p in mech.pairs:
         if p.kind == "R":
             if mech.frame in p.links:
@@ -167,6 +172,7 @@ def _prismatic(
     ghosts: Collection[str],
     drawn: Mapping[str, Sequence[Body]],
     guide_at: Vec | None = None,
+    run: Sequence[Vec] = (),
 ) -> None:
     assert p.axis is not None
     u = p.axis
@@ -189,6 +195,10 @@ def _prismatic(
         n = u.perp()
         v.guide(a, b, (n.x, n.y))
         v.guide(b, a, (-n.x, -n.y))
+        if run:  # the guide's axis over the slider's whole travel, a little past both ends
+            ts = [(q - g).dot(u) for q in run]
+            lo, hi = min(*ts, -k) - k, max(*ts, k) + k
+            v.seg(g + u * lo, g + u * hi, "thin")
         link = p.other(mech.frame)
         if block(link):
             _block(v, p.at, u, role[link])

@@ -33,8 +33,12 @@ FONT_FILE = "osifont.ttf"
 #: GOST 2.304 cap heights (mm).
 HEIGHTS = (2.5, 3.5, 5.0, 7.0, 10.0, 14.0)
 
-#: Subscripts and superscripts are set at this fraction of the font size …
+#: Subscripts and superscripts are set at this fraction of the font size; a subscript (an index:
+#: O_1, V_B, S_2) never with a cap height under :data:`INDEX_MIN_H` (GOST 2.304's least size, as
+#: SHEETS.md asks of indices), nor larger than its text. A superscript (an exponent, a^n) keeps
+#: the fraction: set larger it would reach into the line above at the sheets' line pitch …
 SUB_SCALE = 0.7
+INDEX_MIN_H = 2.5
 #: … and shifted by these fractions of the base font size (down for sub, up for sup).
 SUB_DROP = 0.25
 SUP_RISE = 0.45
@@ -178,8 +182,13 @@ def _merge(runs: list[Run]) -> list[Run]:
 
 
 def run_size(font_size: float, shift: Shift) -> float:
-    """The font size of a run: smaller for a subscript or a superscript."""
-    return font_size if shift == "base" else font_size * SUB_SCALE
+    """The font size of a run: smaller for a subscript or a superscript (:data:`SUB_SCALE`), a
+    subscript at least :data:`INDEX_MIN_H` high (never larger than the text's own size)."""
+    if shift == "base":
+        return font_size
+    if shift == "sup":
+        return font_size * SUB_SCALE
+    return min(font_size, max(font_size * SUB_SCALE, metrics().font_size(INDEX_MIN_H)))
 
 
 def width(runs: tuple[Run, ...], font_size: float) -> float:
@@ -201,7 +210,7 @@ def box(runs: tuple[Run, ...], cap_height: float) -> tuple[float, float, float]:
         if r.shift == "sub":
             down = max(down, SUB_DROP * fs)
         elif r.shift == "sup":
-            up = max(up, SUP_RISE * fs + cap_height * SUB_SCALE)
+            up = max(up, SUP_RISE * fs + cap_height * run_size(fs, "sup") / fs)
     return w, up, down
 
 
