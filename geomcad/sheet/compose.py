@@ -1293,9 +1293,6 @@ def arrange(tree: Tree, field_: Field, _titles_broken: bool = False) -> Layout:
         inner = (cell[0] + v.margin, top + v.margin, cell[2] - v.margin, cell[3] - v.margin)
         scale = scales.get(_group(v)) if v.kind == "scaled" else None
         lay.placed[key] = Placed(v, cell, inner, scale)
-    for g in list(lay.groups):
-        if g.startswith("#"):
-            continue
     if _break_titles(tree, lay):
         return arrange(tree, field_, _titles_broken=True)
     lay.title_lines = {id(t): t.title_lines for t in _titled(tree) if t.title_lines > 1}
