@@ -75,3 +75,11 @@ SHEET_MM = 1.0e-9
 
 #: The least drawn area (mm²) a view counts with in the layout's score (a log): an empty view.
 SHEET_AREA = 1.0e-6
+
+#: A crank angle on a sheet (degrees, or radians) within this of a full turn is the turn's start,
+#: so that round-off never writes 360° for 0° nor sorts a cycle's last point before its first.
+TURN_START = 1.0e-9
+
+#: Points of a mechanism view nearer than this fraction of the crank's length are at one place
+#: (named by one label).
+SAME_PLACE = 1.0e-6

@@ -95,7 +95,7 @@ def _deg(phi: float, s: Solved) -> str:
 
 def _wrap_deg(phi: float) -> float:
     d = math.degrees(phi) % 360.0
-    return 0.0 if abs(d - 360.0) <= 1e-9 else d
+    return 0.0 if abs(d - 360.0) <= tol.TURN_START else d
 
 
 def _places(s: Solved) -> int:
@@ -429,7 +429,7 @@ def _principal(s: Solved) -> tuple[Position, int | None]:
 
 
 #: Points nearer than this fraction of the crank's length are at one place (one label).
-_SAME = 1e-6
+_SAME = tol.SAME_PLACE
 #: A slotted link runs on past its block by this fraction of the block's distance from the pivot.
 SLOT_PAST = 1.15
 
@@ -864,8 +864,8 @@ def _periodic(
     """Points of a cycle's derivative, sorted on [0, 2π), closed at 0 and 2π by the chord from
     the last point to the first (one cycle on)."""
     x = np.mod(x, 2.0 * math.pi)
-    x[np.abs(x - 2.0 * math.pi) <= 1e-9] = 0.0
-    x[np.abs(x) <= 1e-9] = 0.0
+    x[np.abs(x - 2.0 * math.pi) <= tol.TURN_START] = 0.0
+    x[np.abs(x) <= tol.TURN_START] = 0.0
     o = np.argsort(x)
     x, y = x[o], y[o]
     t = (2.0 * math.pi - x[-1]) / (x[0] + 2.0 * math.pi - x[-1])
