@@ -496,7 +496,10 @@ def figure_edges(pts: Sequence[Vec], eps: float) -> list[tuple[Vec, Vec]]:
         chain = []
         for i, q in enumerate(uniq):
             t = (q - a).dot(u) / n2
-            if -1e-9 <= t <= 1.0 + 1e-9 and abs(u.cross(q - a)) / math.sqrt(n2) <= eps:
+            if (
+                -tol.DERIVED <= t <= 1.0 + tol.DERIVED
+                and abs(u.cross(q - a)) / math.sqrt(n2) <= eps
+            ):
                 chain.append((t, q))
                 on_edge.add(i)
         chain.sort(key=lambda tq: tq[0])

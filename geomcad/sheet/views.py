@@ -465,7 +465,7 @@ def nice_below(value_min: float, mm: float, q: Literal["F"] = "F") -> Scale:
     for exp in (e, e - 1):
         for m in (5.0, 4.0, 2.5, 2.0, 1.0):
             k = m * 10.0**exp
-            if k <= raw * (1.0 + 1e-12):
+            if k <= raw * (1.0 + tol.REL_LENGTH):
                 return Scale(k, q)
     return Scale(10.0 ** (e - 1), q)  # unreachable
 
