@@ -77,7 +77,7 @@ from geomcad.sheet.linkage import (
     table_number,
 )
 from geomcad.sheet.linkage import WORDS as KIN_WORDS
-from geomcad.sheet.loads import ForceScales, force, force_scales, moment
+from geomcad.sheet.loads import NEGLIGIBLE, ForceScales, force, force_tiers, moment
 from geomcad.sheet.plans import markup_of
 from geomcad.sheet.scale import ANGLE_PLACES, Scale, angle_places, fmt_column, fmt_fixed
 from geomcad.sheet.scheme import draw_scheme
@@ -102,6 +102,11 @@ LOAD_MM = 24.0
 M_BAL_MM = symbols.STAND_DEPTH + symbols.HATCH_LEN + 3.0
 #: The longest load arrow on Zhukovsky's lever (mm).
 LEVER_LOAD_MM = 40.0
+#: The least length (mm) of a force plan's longest vector (a course project draws its plans
+#: 100–200 mm long): the sheet takes a larger format rather than draw them smaller.
+PLAN_MM = 100.0
+#: … and on the largest format, where nothing larger is left, the search's aim for it.
+PLAN_SEEK_MM = 80.0
 #: The width of the note under the table of loads (mm), for 2.5 mm text.
 TABLE2_W = 60.0
 
@@ -225,7 +230,16 @@ def _sheet2(
         Row(Column(mech, lever), Column(Grid(*bodies), Row(Grid(*polys), right))),
         Column(Row(mech, lever, right), groups),
     )
-    return tree, {mech: lk.length / CRANK_MM}
+    # a force plan is drawn large (its longest vector at least PLAN_MM): a format too small
+    # for that is passed over for the next, as one too small for the mechanism's scale
+    wants: dict[View, float] = {mech: lk.length / CRANK_MM}
+    for p in polys:
+        big = max(pv.magnitude for poly, _ in p.layers for pv in poly.vectors)
+        if big > 0.0:
+            wants[p] = big / PLAN_MM
+            # and on the largest format the search seeks it (its longest vector PLAN_SEEK_MM)
+            p.readable = max(p.readable, big * p.readable_mm / PLAN_SEEK_MM)
+    return tree, wants
 
 
 #: The letters of the forces and moments on a forces sheet, the balancing force's and the
@@ -318,12 +332,26 @@ def further_room(fs: ForceScales) -> float:
     return SCALES_H * TITLE_LEAD + fs.further_rise(SCALES_H) - SCALES_H if fs.tiered else 0.0
 
 
-def draw_further(d: Drawing, at: Placed, view: View, fs: ForceScales) -> None:
-    """The view's further μ_F, on a line of its own under its caption."""
+def left_out(fs: ForceScales, named: Sequence[tuple[str, float]]) -> list[str]:
+    """The names (drawn, once each) of the forces ``named`` (name, N) that the view leaves out
+    as negligible (:attr:`ForceScales.negligible`)."""
+    out = [load_name(n) for n, F in named if fs.zero < abs(F) <= fs.negligible]
+    return list(dict.fromkeys(out))
+
+
+def draw_further(
+    d: Drawing, at: Placed, view: View, fs: ForceScales, omitted: Sequence[str] = ()
+) -> None:
+    """The view's further μ_F, on a line of its own under its caption, and the forces it
+    leaves out as negligible (named)."""
     if fs.tiered:
         lines = (view.title_lines - 1) * TITLE_SPACING  # a caption broken into lines
         top = at.box[1] + view.title_height * (TITLE_LEAD + lines) + fs.further_rise(SCALES_H)
-        d.text(fs.further(), (at.box[0], top), SCALES_H)
+        text = fs.further()
+        if omitted:
+            share = fmt_number(NEGLIGIBLE * 100.0)
+            text += ";  " + WORDS("negligible", names=", ".join(omitted), share=share)
+        d.text(text, (at.box[0], top), SCALES_H)
 
 
 class _Forces(View):
@@ -333,6 +361,7 @@ class _Forces(View):
 
     _ext: tuple[float, float, float, float]
     fs: ForceScales
+    omitted: list[str]
 
     def title_room(self) -> float:
         return super().title_room() + further_room(self.fs)
@@ -363,13 +392,15 @@ class _Loaded(_Forces):
         self.loads = [ld for lds in f.loads.values() for ld in lds]
         bodies = [q for bs in link_bodies(lk, P).values() for b in bs for q in b.points]
         self._ext = _bbox([*P.pos.values(), *bodies], lk.length)
-        drawn = [ld.force.norm for ld in self.loads if ld.force is not None and ld.at is not None]
-        self.fs = force_scales(drawn, LOAD_MM)
+        named = [(ld.name, ld.force.norm) for ld in self.loads
+                 if ld.force is not None and ld.at is not None]  # fmt: skip
+        self.fs = force_tiers([F for _, F in named], LOAD_MM)
+        self.omitted = left_out(self.fs, named)
 
     def draw(self, d: Drawing, at: Placed) -> None:
         v = at.viewport
         assert v is not None
-        draw_further(d, at, self, self.fs)
+        draw_further(d, at, self, self.fs, self.omitted)
         lk, P = self.lk, self.P
         draw_scheme(v, scheme(lk, P), bodies=link_bodies(lk, P), pair_labels={},
                     label_height=3.5, guides=frame_guides(lk))  # fmt: skip
@@ -396,14 +427,16 @@ class _FreeBody(_Forces):
         pts += [r.at for r in gf.reactions]
         pts += [q for bs in link_bodies(lk, P, links).values() for b in bs for q in b.points]
         self._ext = _bbox(pts, lk.length * 0.5)
-        forces = [ld.force.norm for i in links for ld in gf.loads[i] if ld.force is not None]
-        forces += [r.force.norm for r in gf.reactions if r.on in links]
-        self.fs = force_scales(forces, LOAD_MM)
+        named = [(ld.name, ld.force.norm) for i in links for ld in gf.loads[i]
+                 if ld.force is not None]  # fmt: skip
+        named += [(r.name, r.force.norm) for r in gf.reactions if r.on in links]
+        self.fs = force_tiers([F for _, F in named], LOAD_MM)
+        self.omitted = left_out(self.fs, named)
 
     def draw(self, d: Drawing, at: Placed) -> None:
         v = at.viewport
         assert v is not None
-        draw_further(d, at, self, self.fs)
+        draw_further(d, at, self, self.fs, self.omitted)
         lk, P, gf = self.lk, self.P, self.gf
         links = gf.links
         full = scheme(lk, P)
@@ -510,6 +543,58 @@ def figure_edges(pts: Sequence[Vec], eps: float) -> list[tuple[Vec, Vec]]:
     return edges
 
 
+#: Two forces at one point of the lever closer in direction than this (degrees) would be drawn
+#: over one another: the second is drawn arriving at the point.
+SAME_LINE_DEG = 20.0
+
+
+def lever_sides(
+    loads: Sequence[tuple[Vec, Vec, str, str]],
+    k: float,
+    lengths: Sequence[float] = (),
+    ext: tuple[float, float, float, float] | None = None,
+) -> list[bool]:
+    """Whether each load (point, force, …) of the lever is drawn arriving at its point (else
+    leaving it): the longest first, each on the side of its point that no arrow drawn there
+    already lies on (within :data:`SAME_LINE_DEG`): two forces of one sense along one line lie
+    end to end, of opposite senses back to back, their labels apart (Φ₃ along F_B at b); where
+    both sides are free, a force that, ``lengths`` mm long, would leave the lever's extent
+    ``ext`` (model units) arrives where that keeps more of it over the lever. ``k``: the
+    lever's μ_V (points within 0.8 mm on the paper are one)."""
+    side: dict[int, bool] = {}
+    cos = math.cos(math.radians(SAME_LINE_DEG))
+
+    def past(q: Vec) -> float:
+        if ext is None:
+            return 0.0
+        return max(ext[0] - q.x, q.x - ext[2], 0.0) + max(ext[1] - q.y, q.y - ext[3], 0.0)
+
+    # the longest first: it takes the side that keeps it over the lever, the shorter ones
+    # along its line the other side
+    order = sorted(range(len(loads)), key=lambda i: -(lengths[i] if i < len(lengths) else 0.0))
+    for i in order:
+        q, F = loads[i][0], loads[i][1]
+        if F.norm == 0.0:
+            side[i] = False
+            continue
+        # the rays from the point the arrows drawn there already lie on
+        rays = [
+            loads[j][1].unit() * (-1.0 if a else 1.0)
+            for j, a in side.items()
+            if loads[j][1].norm > 0.0 and (loads[j][0] - q).norm / k < 0.8
+        ]
+        u = F.unit()
+        free = [not any(r.dot(u * sgn) > cos for r in rays) for sgn in (1.0, -1.0)]
+        if free[0] != free[1]:
+            side[i] = free[1]  # the free side (arriving: its ray is −F)
+        elif i < len(lengths):
+            run = u * (lengths[i] * k)
+            side[i] = past(q - run) < past(q + run) - 1.0 * k
+        else:
+            side[i] = False
+    return [side[i] for i in range(len(loads))]
+
+
 class _Lever(View):
     """Zhukovsky's lever: the velocity plan turned 90° with the loads at their points'
     images and the balancing force at the crank's joint."""
@@ -517,11 +602,12 @@ class _Lever(View):
     def __init__(self, lk: Linkage, P: Position, f: Forces) -> None:
         lev = f.lever
         forces = [it.force.norm for it in lev.items] + [lev.F_bal.norm]
-        self.fs = force_scales(forces, LEVER_LOAD_MM)
+        self.fs = force_tiers(forces, LEVER_LOAD_MM)
         self.short = self.fs.tiered
         super().__init__(title=WORDS("lever"), title_height=5.0, quantity="v", series="nice",
                          margin=LEVER_LOAD_MM)  # fmt: skip
         self.lk, self.P, self.f = lk, P, f
+        self.omitted = left_out(self.fs, [(it.name, it.force.norm) for it in lev.items])
         pts = [Vec(0.0, 0.0), *lever_images(P, lev).values(), *(it.image for it in lev.items)]
         xs = [q.x for q in pts]
         ys = [q.y for q in pts]
@@ -540,7 +626,7 @@ class _Lever(View):
     def draw(self, d: Drawing, at: Placed) -> None:
         v = at.viewport
         assert v is not None
-        draw_further(d, at, self, self.fs)
+        draw_further(d, at, self, self.fs, self.omitted)
         kv = v.scale
         lk, P, lev = self.lk, self.P, self.f.lever
         drawn: list[tuple[Vec, Vec]] = []
@@ -567,9 +653,13 @@ class _Lever(View):
         for q, names in groups:
             v.dot(q)
             v.label(q, ", ".join(names), 2.5, clear=0.8)
-        for it in lev.items:
-            _force(v, it.image, it.force, self.fs, load_name(it.name))
-        _force(v, lev.images[lk.joint], lev.F_bal, self.fs, WORDS("P_bal"), role="result")
+        loads = [(it.image, it.force, load_name(it.name), "vector") for it in lev.items]
+        loads.append((lev.images[lk.joint], lev.F_bal, WORDS("P_bal"), "result"))
+        lengths = [F.norm / self.fs.scales[t].k if (t := self.fs.tier(F.norm)) is not None
+                   else 0.0 for _, F, _, _ in loads]  # fmt: skip
+        sides = lever_sides(loads, kv.k, lengths, self._ext)
+        for (at_, F, name, role), arrive in zip(loads, sides, strict=True):
+            _force(v, at_, F, self.fs, name, arrive, role)
 
 
 def _table2(f: Forces, h: float) -> Table:
