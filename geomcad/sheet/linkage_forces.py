@@ -407,7 +407,15 @@ class _Loaded(_Forces):
         for name in P.pos:  # every named point, the frame's (O, C) too
             if name in lk.owner:
                 v.label(P.pos[name], markup_of(name), 3.5, clear=1.0)
-        _draw_loads(v, lk, P, self.loads, self.fs, "vector")
+        # the forces, none over another at one point, then the moments
+        named = [(ld.at, ld.force, load_name(ld.name), "vector") for ld in self.loads
+                 if ld.force is not None and ld.at is not None]  # fmt: skip
+        lengths = [self.fs.longest([F.norm]) for _, F, _, _ in named]
+        starts = chain_starts(named, v.scale.k, lengths)
+        for (_, F, name, role), at_ in zip(named, starts, strict=True):
+            _force(v, at_, F, self.fs, name, False, role)
+        moments = [ld for ld in self.loads if ld.force is None or ld.at is None]
+        _draw_loads(v, lk, P, moments, self.fs, "vector")
         omega_arrow(v, lk, P)
         v.turn(P.pos[lk.pivot], self.f.M_bal, 30.0, WORDS("M_bal"), M_BAL_MM, 250.0, "result", 2.5)
 
@@ -548,19 +556,20 @@ def figure_edges(pts: Sequence[Vec], eps: float) -> list[tuple[Vec, Vec]]:
 SAME_LINE_DEG = 20.0
 
 
-def lever_sides(
+def load_sides(
     loads: Sequence[tuple[Vec, Vec, str, str]],
     k: float,
     lengths: Sequence[float] = (),
     ext: tuple[float, float, float, float] | None = None,
 ) -> list[bool]:
-    """Whether each load (point, force, …) of the lever is drawn arriving at its point (else
-    leaving it): the longest first, each on the side of its point that no arrow drawn there
-    already lies on (within :data:`SAME_LINE_DEG`): two forces of one sense along one line lie
-    end to end, of opposite senses back to back, their labels apart (Φ₃ along F_B at b); where
-    both sides are free, a force that, ``lengths`` mm long, would leave the lever's extent
-    ``ext`` (model units) arrives where that keeps more of it over the lever. ``k``: the
-    lever's μ_V (points within 0.8 mm on the paper are one)."""
+    """Whether each load (point, force, …) of the lever (or of the mechanism) is drawn
+    arriving at its point (else leaving it): the longest first, each on the side of its point
+    that no arrow drawn there already lies on (within :data:`SAME_LINE_DEG`): two forces of
+    one sense along one line lie end to end, of opposite senses back to back, their labels
+    apart (Φ₃ along F_B at b); where both sides are free, a force that, ``lengths`` mm long,
+    would leave the view's extent ``ext`` (model units) arrives where that keeps more of it
+    over the drawing. ``k``: the view's scale (model units per mm; points within 0.8 mm on
+    the paper are one)."""
     side: dict[int, bool] = {}
     cos = math.cos(math.radians(SAME_LINE_DEG))
 
@@ -593,6 +602,33 @@ def lever_sides(
         else:
             side[i] = False
     return [side[i] for i in range(len(loads))]
+
+
+def chain_starts(
+    loads: Sequence[tuple[Vec, Vec, str, str]], k: float, lengths: Sequence[float]
+) -> list[Vec]:
+    """Where each load (point, force, …) of the mechanism is drawn from (model units): its
+    point, or, for a force along the line of a longer one at the same point and of its sense
+    (within :data:`SAME_LINE_DEG`: Φ₅ along F_D at D), the tip of that one's arrow, the two
+    head to tail on their common line of action (an arrow arriving at a slider's point would
+    end hidden in the block). ``lengths``: the arrows' lengths (mm), ``k``: the view's scale
+    (model units per mm; points within 0.8 mm on the paper are one)."""
+    cos = math.cos(math.radians(SAME_LINE_DEG))
+    start: dict[int, Vec] = {}
+    order = sorted(range(len(loads)), key=lambda i: -lengths[i])
+    for i in order:
+        q, F = loads[i][0], loads[i][1]
+        start[i] = q
+        if F.norm == 0.0:
+            continue
+        for j in order[: order.index(i)]:
+            q2, F2 = loads[j][0], loads[j][1]
+            if F2.norm > 0.0 and (q2 - q).norm / k < 0.8 and F2.unit().dot(F.unit()) > cos:
+                # from the tip of the last one along this line
+                tip = start[j] + F2.unit() * (lengths[j] * k)
+                if (tip - q).dot(F.unit()) > (start[i] - q).dot(F.unit()):
+                    start[i] = tip
+    return [start[i] for i in range(len(loads))]
 
 
 class _Lever(View):
@@ -657,7 +693,7 @@ class _Lever(View):
         loads.append((lev.images[lk.joint], lev.F_bal, WORDS("P_bal"), "result"))
         lengths = [F.norm / self.fs.scales[t].k if (t := self.fs.tier(F.norm)) is not None
                    else 0.0 for _, F, _, _ in loads]  # fmt: skip
-        sides = lever_sides(loads, kv.k, lengths, self._ext)
+        sides = load_sides(loads, kv.k, lengths, self._ext)
         for (at_, F, name, role), arrive in zip(loads, sides, strict=True):
             _force(v, at_, F, self.fs, name, arrive, role)
 

@@ -759,12 +759,14 @@ class Polygon(View):
     """Force polygons at one μ_F (a factor 1, 2, 2.5, 4, 5 × 10^n) in one viewport: the
     first in ``layers`` drawn first (a frictionless polygon dashed under the one with friction).
     Each layer is (polygon, role); ``names``, ``found``, ``inward`` as :func:`draw_polygon`.
-    ``detail``: the last layer's vectors too short for the polygon's μ_F are drawn enlarged in
-    lettered :attr:`details` in the same view, in the room the polygon leaves free or beside
-    it (their μ_F a fixed share of the polygon's, stated in their captions; letters from
-    ``letters``); their room is reckoned at the μ_F of ``ref`` (default: the one that draws
-    the largest vector at most :data:`POLY_MM` long), within its room (w, h mm) where they
-    can, and they are planned again at the μ_F drawn, within the box drawn. A
+    ``detail``: the last layer's known loads are laid off in the order that makes its vectors
+    too short for the polygon's μ_F one run (:func:`regroup`), and those vectors are drawn
+    enlarged in lettered :attr:`details` of one level in the same view, near the circle that
+    marks them, in the room the polygon leaves free or beside it (each at its own μ_F,
+    :func:`detail_k`, stated in its caption; letters from ``letters``); their room is reckoned
+    at the μ_F of ``ref`` (default: the one that draws the largest vector at most
+    :data:`POLY_MM` long), within its room (w, h mm) where they can, and they are planned
+    again at the μ_F drawn, within the box drawn. A
     polygon along one line is drawn with its vectors side by side
     (:func:`draw_polygon`'s ``thin``)."""
 
