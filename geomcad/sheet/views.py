@@ -296,8 +296,13 @@ def draw_polygon(
         n = (r.head - r.tail).perp().unit()
         if n.dot(corner - r.tail) > 0.0:
             n = -n
+        prefer = (n.x, n.y)
+        if v.mm(abs(n.dot(corner - r.tail))) < SHORT_MM:
+            # a component too short to tell the side: the label outside the polygon (not
+            # inside it, by the head of another vector: R_12 by R_43's)
+            prefer = _outward(poly, r.tail, r.head, False)
         v.label(r.tail + (r.head - r.tail) * 0.3, (names or {}).get(r.name, r.name), height,
-                prefer=(n.x, n.y), clear=0.5)  # fmt: skip
+                prefer=prefer, clear=0.5)  # fmt: skip
     sides = [(v.p(pv.tail + shift.get(pv.name, Vec(0.0, 0.0))),
               v.p(pv.head + shift.get(pv.name, Vec(0.0, 0.0)))) for pv in drawn]  # fmt: skip
     sides += [(v.p(r.tail), v.p(r.head)) for r, _ in res]
