@@ -176,11 +176,13 @@ def test_forces_sheet_plans_are_large_and_tiers_few(path: Path) -> None:
 
 
 def test_forces_at_one_lever_point_never_lie_over_one_another() -> None:
-    """Two forces of one sense along one line at one point lie end to end (the second
-    arrives), two of opposite senses back to back (both leave); a long force at the lever's
-    edge pointing out of it arrives from inside it."""
+    """Two forces of one sense along one line at one point are drawn head to tail (the
+    shorter from the tip of the longer), two of opposite senses back to back (both leave the
+    point); a long force at the lever's edge pointing out of it, past the view's margin,
+    arrives from inside it, and a force along it of the other sense then leaves the point from
+    its tail."""
     b, c, a = Vec(0.3, 0.1), Vec(0.0, 0.2), Vec(0.0, 0.0)
-    right, left = Vec(1500.0, 0.0), Vec(-200.0, 0.0)
+    right, left, k = Vec(1500.0, 0.0), Vec(-200.0, 0.0), 0.01
     loads = [
         (b, right, "F_B", "vector"),
         (b, Vec(600.0, 20.0), "Ф_3", "vector"),  # nearly along F_B
@@ -188,12 +190,22 @@ def test_forces_at_one_lever_point_never_lie_over_one_another() -> None:
         (c, left, "Ф_c", "vector"),
         (a, right, "F_a", "vector"),
     ]
-    assert load_sides(loads, 0.02) == [False, True, False, False, False]
-    # μ_V 0.01 m/s per mm: F_B 60 mm long from b, at the right edge of the lever, leaves it
-    # by 0.6 m/s drawn leaving, lies over it drawn arriving
+    lengths = [37.5, 15.0, 30.0, 10.0, 20.0]
+    out = load_sides(loads, k, lengths)
+    assert [arrive for arrive, _ in out] == [False] * 5
+    assert out[1][1].dist(b + Vec(1.0, 0.0) * (37.5 * k)) <= 1e-12  # from F_B's tip
+    assert [start for _, start in out[2:]] == [c, c, a]
+    # F_B 60 mm long from b, at the right edge of the lever, runs 60 mm out of it: past a
+    # margin of 40 mm it arrives from inside, within one of 70 mm it leaves as usual
     ext = (0.0, 0.0, 0.3, 0.2)
-    assert load_sides(loads[:1], 0.01, [60.0], ext) == [True]
-    assert load_sides([(a, right, "F_a", "vector")], 0.01, [60.0], ext) == [False]
+    pair = [(b, right, "F_B", "vector"), (b, left, "Ф_3", "vector")]
+    out = load_sides(pair, k, [60.0, 20.0], ext, slack=40.0)
+    assert out[0] == (True, b)
+    assert out[1][0] is False and out[1][1].dist(b + Vec(-1.0, 0.0) * (60.0 * k)) <= 1e-12
+    assert load_sides(pair[:1], k, [60.0], ext, slack=70.0) == [(False, b)]
+    # one of its sense goes on from its tip: the point itself, where it arrives
+    same = [(b, right, "F_B", "vector"), (b, Vec(600.0, 20.0), "Ф_3", "vector")]
+    assert load_sides(same, k, [60.0, 20.0], ext, slack=40.0) == [(True, b), (False, b)]
 
 
 def test_forces_along_one_line_at_a_mechanism_point_are_drawn_head_to_tail() -> None:

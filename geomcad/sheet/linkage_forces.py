@@ -100,6 +100,8 @@ LOAD_MM = 24.0
 #: The radius (mm) of M_ур's arc about the crank's pivot: clear of the support's stand and
 #: hatching (symbols.STAND_DEPTH + HATCH_LEN) round the pivot.
 M_BAL_MM = symbols.STAND_DEPTH + symbols.HATCH_LEN + 3.0
+#: The room (mm) an arrow's label takes past its tip.
+LABEL_ROOM_MM = 6.0
 #: The longest load arrow on Zhukovsky's lever (mm).
 LEVER_LOAD_MM = 40.0
 #: The least length (mm) of a force plan's longest vector (a course project draws its plans
@@ -559,17 +561,19 @@ SAME_LINE_DEG = 20.0
 def load_sides(
     loads: Sequence[tuple[Vec, Vec, str, str]],
     k: float,
-    lengths: Sequence[float] = (),
+    lengths: Sequence[float],
     ext: tuple[float, float, float, float] | None = None,
-) -> list[bool]:
-    """Whether each load (point, force, …) of the lever (or of the mechanism) is drawn
-    arriving at its point (else leaving it): the longest first, each on the side of its point
-    that no arrow drawn there already lies on (within :data:`SAME_LINE_DEG`): two forces of
-    one sense along one line lie end to end, of opposite senses back to back, their labels
-    apart (Φ₃ along F_B at b); where both sides are free, a force that, ``lengths`` mm long,
-    would leave the view's extent ``ext`` (model units) arrives where that keeps more of it
-    over the drawing. ``k``: the view's scale (model units per mm; points within 0.8 mm on
-    the paper are one)."""
+    slack: float = 0.0,
+) -> list[tuple[bool, Vec]]:
+    """How each load (point, force, …) of the lever is drawn: whether it arrives at its point
+    (else leaves it), and from where (model units). A force along the line of a longer one at
+    the same point and of its sense (within :data:`SAME_LINE_DEG`) goes on from that one's
+    tip (Φ₃ after F_B at b); of opposite senses they leave the point
+    back to back; a force that, ``lengths`` mm long, would run more than ``slack`` mm (the
+    view's margin) past the view's extent ``ext`` (model units) arrives at its point where
+    that keeps more of it over the drawing and no arrow there lies on that side. ``k``: the
+    view's scale (model units per mm; points within 0.8 mm on the paper are one)."""
+    starts = [q for q, _, _, _ in loads]
     side: dict[int, bool] = {}
     cos = math.cos(math.radians(SAME_LINE_DEG))
 
@@ -578,30 +582,43 @@ def load_sides(
             return 0.0
         return max(ext[0] - q.x, q.x - ext[2], 0.0) + max(ext[1] - q.y, q.y - ext[3], 0.0)
 
-    # the longest first: it takes the side that keeps it over the lever, the shorter ones
-    # along its line the other side
-    order = sorted(range(len(loads)), key=lambda i: -(lengths[i] if i < len(lengths) else 0.0))
-    for i in order:
+    for i in sorted(range(len(loads)), key=lambda i: -lengths[i]):
         q, F = loads[i][0], loads[i][1]
+        side[i] = False
         if F.norm == 0.0:
-            side[i] = False
             continue
-        # the rays from the point the arrows drawn there already lie on
-        rays = [
-            loads[j][1].unit() * (-1.0 if a else 1.0)
-            for j, a in side.items()
-            if loads[j][1].norm > 0.0 and (loads[j][0] - q).norm / k < 0.8
-        ]
         u = F.unit()
-        free = [not any(r.dot(u * sgn) > cos for r in rays) for sgn in (1.0, -1.0)]
-        if free[0] != free[1]:
-            side[i] = free[1]  # the free side (arriving: its ray is −F)
-        elif i < len(lengths):
-            run = u * (lengths[i] * k)
-            side[i] = past(q - run) < past(q + run) - 1.0 * k
-        else:
-            side[i] = False
-    return [side[i] for i in range(len(loads))]
+        # on from the tip of the longer ones of its sense along its line there
+        tips = [
+            starts[j] + (Vec(0.0, 0.0) if side[j] else loads[j][1].unit() * (lengths[j] * k))
+            for j in side
+            if j != i and loads[j][1].norm > 0.0 and (loads[j][0] - q).norm / k < 0.8
+            and loads[j][1].unit().dot(u) > cos
+        ]  # fmt: skip
+        if tips:
+            starts[i] = max(tips, key=lambda t: (t - q).dot(u))
+            continue
+        # the rays from the point that the arrows drawn from it lie on
+        rays = [
+            (j, loads[j][1].unit() * (-1.0 if a else 1.0))
+            for j, a in side.items()
+            if j != i and starts[j] == loads[j][0] and loads[j][1].norm > 0.0
+            and (loads[j][0] - q).norm / k < 0.8
+        ]  # fmt: skip
+        run = u * (lengths[i] * k)
+        out = past(q + run)
+        if (
+            out > slack * k
+            and past(q - run) < out - 1.0 * k
+            and not any(r.dot(-u) > cos for _, r in rays)
+        ):
+            side[i] = True
+            continue
+        # leaving along an arrow that arrives there (of the opposite sense): from its tail
+        ahead = [lengths[j] for j, r in rays if r.dot(u) > cos]
+        if ahead:
+            starts[i] = q + u * (max(ahead) * k)
+    return [(side[i], starts[i]) for i in range(len(loads))]
 
 
 def chain_starts(
@@ -693,8 +710,10 @@ class _Lever(View):
         loads.append((lev.images[lk.joint], lev.F_bal, WORDS("P_bal"), "result"))
         lengths = [F.norm / self.fs.scales[t].k if (t := self.fs.tier(F.norm)) is not None
                    else 0.0 for _, F, _, _ in loads]  # fmt: skip
-        sides = load_sides(loads, kv.k, lengths, self._ext)
-        for (at_, F, name, role), arrive in zip(loads, sides, strict=True):
+        # an arrow leaves its point unless it would run out of the view (past its margin,
+        # less a label's room)
+        sides = load_sides(loads, kv.k, lengths, self._ext, self.margin - LABEL_ROOM_MM)
+        for (_, F, name, role), (arrive, at_) in zip(loads, sides, strict=True):
             _force(v, at_, F, self.fs, name, arrive, role)
 
 
