@@ -5,7 +5,6 @@ carry every named point."""
 
 from __future__ import annotations
 
-import itertools
 import math
 import re
 import shutil
@@ -109,40 +108,6 @@ def test_no_polygon_vector_is_a_dot(path: Path) -> None:
             if pv.magnitude > 1e-9 * big:
                 at = [k for mm, k in arrows if math.isclose(mm * k, pv.magnitude, rel_tol=1e-6)]
                 assert at, (pv.name, pv.magnitude)
-
-
-def test_polygon_details_nest_until_every_vector_is_long() -> None:
-    """A chain of forces spanning four decades: each detail draws its run at one stated μ_F at
-    least DETAIL_LEAST times the polygon's, its shortest arrow at least two arrowheads, its own
-    too short ones in a further detail; every vector is an arrow at its μ_F somewhere."""
-    from geomcad.forces import ForcePolygon, PlanVector
-    from geomcad.geom import Vec
-    from geomcad.sheet import start
-    from geomcad.sheet.compose import compose
-    from geomcad.sheet.frame import TitleBlock
-    from geomcad.sheet.views import DETAIL_LEAST, Polygon
-
-    mags = [5000.0, 3.0, 40.0, 400.0, 7.0]
-    pts, q = [Vec(0.0, 0.0)], Vec(0.0, 0.0)
-    for i, F in enumerate(mags):
-        q = q + Vec(math.cos(i * 1.1), math.sin(i * 1.1)) * F
-        pts.append(q)
-    vs = [PlanVector(f"F{i}", a, b) for i, (a, b) in enumerate(itertools.pairwise(pts))]
-    vs.append(PlanVector("R", pts[-1], pts[0]))
-    poly = ForcePolygon(Vec(0.0, 0.0), tuple(vs), ())
-    p = Polygon(poly, detail=True)
-    d = start("A3", TitleBlock("t", "d"))
-    lay = compose(d, p)
-    sheet = d.finish()
-    k = lay[p].scale.k
-    details = [x for dt in p.details for x in dt.all()]
-    assert len(details) >= 2 and len({dt.letter for dt in details}) == len(details)
-    assert any(dt.inner for dt in details)
-    arrows = [(math.dist(t, h), sc.k) for t, h, sc in sheet.scaled]
-    assert min(mm for mm, _ in arrows) >= SHORT_MM * (1.0 - 1e-9)
-    assert all(kd == k or kd * DETAIL_LEAST <= k * (1.0 + 1e-9) for _, kd in arrows)
-    for pv in poly.vectors:
-        assert any(math.isclose(mm * kd, pv.magnitude, rel_tol=1e-6) for mm, kd in arrows), pv
 
 
 def test_designation_printed_as_typed(tmp_path: Path) -> None:

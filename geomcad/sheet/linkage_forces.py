@@ -77,7 +77,7 @@ from geomcad.sheet.linkage import (
     table_number,
 )
 from geomcad.sheet.linkage import WORDS as KIN_WORDS
-from geomcad.sheet.loads import ForceScales, force, force_scales, moment
+from geomcad.sheet.loads import NEGLIGIBLE, ForceScales, force, force_tiers, moment
 from geomcad.sheet.plans import markup_of
 from geomcad.sheet.scale import ANGLE_PLACES, Scale, angle_places, fmt_column, fmt_fixed
 from geomcad.sheet.scheme import draw_scheme
@@ -100,8 +100,15 @@ LOAD_MM = 24.0
 #: The radius (mm) of M_ур's arc about the crank's pivot: clear of the support's stand and
 #: hatching (symbols.STAND_DEPTH + HATCH_LEN) round the pivot.
 M_BAL_MM = symbols.STAND_DEPTH + symbols.HATCH_LEN + 3.0
+#: The room (mm) an arrow's label takes past its tip.
+LABEL_ROOM_MM = 6.0
 #: The longest load arrow on Zhukovsky's lever (mm).
 LEVER_LOAD_MM = 40.0
+#: The least length (mm) of a force plan's longest vector (a course project draws its plans
+#: 100–200 mm long): the sheet takes a larger format rather than draw them smaller.
+PLAN_MM = 100.0
+#: … and on the largest format, where nothing larger is left, the search's aim for it.
+PLAN_SEEK_MM = 80.0
 #: The width of the note under the table of loads (mm), for 2.5 mm text.
 TABLE2_W = 60.0
 
@@ -225,7 +232,16 @@ def _sheet2(
         Row(Column(mech, lever), Column(Grid(*bodies), Row(Grid(*polys), right))),
         Column(Row(mech, lever, right), groups),
     )
-    return tree, {mech: lk.length / CRANK_MM}
+    # a force plan is drawn large (its longest vector at least PLAN_MM): a format too small
+    # for that is passed over for the next, as one too small for the mechanism's scale
+    wants: dict[View, float] = {mech: lk.length / CRANK_MM}
+    for p in polys:
+        big = max(pv.magnitude for poly, _ in p.layers for pv in poly.vectors)
+        if big > 0.0:
+            wants[p] = big / PLAN_MM
+            # and on the largest format the search seeks it (its longest vector PLAN_SEEK_MM)
+            p.readable = max(p.readable, big * p.readable_mm / PLAN_SEEK_MM)
+    return tree, wants
 
 
 #: The letters of the forces and moments on a forces sheet, the balancing force's and the
@@ -318,12 +334,26 @@ def further_room(fs: ForceScales) -> float:
     return SCALES_H * TITLE_LEAD + fs.further_rise(SCALES_H) - SCALES_H if fs.tiered else 0.0
 
 
-def draw_further(d: Drawing, at: Placed, view: View, fs: ForceScales) -> None:
-    """The view's further μ_F, on a line of its own under its caption."""
+def left_out(fs: ForceScales, named: Sequence[tuple[str, float]]) -> list[str]:
+    """The names (drawn, once each) of the forces ``named`` (name, N) that the view leaves out
+    as negligible (:attr:`ForceScales.negligible`)."""
+    out = [load_name(n) for n, F in named if fs.zero < abs(F) <= fs.negligible]
+    return list(dict.fromkeys(out))
+
+
+def draw_further(
+    d: Drawing, at: Placed, view: View, fs: ForceScales, omitted: Sequence[str] = ()
+) -> None:
+    """The view's further μ_F, on a line of its own under its caption, and the forces it
+    leaves out as negligible (named)."""
     if fs.tiered:
         lines = (view.title_lines - 1) * TITLE_SPACING  # a caption broken into lines
         top = at.box[1] + view.title_height * (TITLE_LEAD + lines) + fs.further_rise(SCALES_H)
-        d.text(fs.further(), (at.box[0], top), SCALES_H)
+        text = fs.further()
+        if omitted:
+            share = fmt_number(NEGLIGIBLE * 100.0)
+            text += ";  " + WORDS("negligible", names=", ".join(omitted), share=share)
+        d.text(text, (at.box[0], top), SCALES_H)
 
 
 class _Forces(View):
@@ -333,6 +363,7 @@ class _Forces(View):
 
     _ext: tuple[float, float, float, float]
     fs: ForceScales
+    omitted: list[str]
 
     def title_room(self) -> float:
         return super().title_room() + further_room(self.fs)
@@ -363,20 +394,30 @@ class _Loaded(_Forces):
         self.loads = [ld for lds in f.loads.values() for ld in lds]
         bodies = [q for bs in link_bodies(lk, P).values() for b in bs for q in b.points]
         self._ext = _bbox([*P.pos.values(), *bodies], lk.length)
-        drawn = [ld.force.norm for ld in self.loads if ld.force is not None and ld.at is not None]
-        self.fs = force_scales(drawn, LOAD_MM)
+        named = [(ld.name, ld.force.norm) for ld in self.loads
+                 if ld.force is not None and ld.at is not None]  # fmt: skip
+        self.fs = force_tiers([F for _, F in named], LOAD_MM)
+        self.omitted = left_out(self.fs, named)
 
     def draw(self, d: Drawing, at: Placed) -> None:
         v = at.viewport
         assert v is not None
-        draw_further(d, at, self, self.fs)
+        draw_further(d, at, self, self.fs, self.omitted)
         lk, P = self.lk, self.P
         draw_scheme(v, scheme(lk, P), bodies=link_bodies(lk, P), pair_labels={},
                     label_height=3.5, guides=frame_guides(lk))  # fmt: skip
         for name in P.pos:  # every named point, the frame's (O, C) too
             if name in lk.owner:
                 v.label(P.pos[name], markup_of(name), 3.5, clear=1.0)
-        _draw_loads(v, lk, P, self.loads, self.fs, "vector")
+        # the forces, none over another at one point, then the moments
+        named = [(ld.at, ld.force, load_name(ld.name), "vector") for ld in self.loads
+                 if ld.force is not None and ld.at is not None]  # fmt: skip
+        lengths = [self.fs.longest([F.norm]) for _, F, _, _ in named]
+        starts = chain_starts(named, v.scale.k, lengths)
+        for (_, F, name, role), at_ in zip(named, starts, strict=True):
+            _force(v, at_, F, self.fs, name, False, role)
+        moments = [ld for ld in self.loads if ld.force is None or ld.at is None]
+        _draw_loads(v, lk, P, moments, self.fs, "vector")
         omega_arrow(v, lk, P)
         v.turn(P.pos[lk.pivot], self.f.M_bal, 30.0, WORDS("M_bal"), M_BAL_MM, 250.0, "result", 2.5)
 
@@ -396,14 +437,16 @@ class _FreeBody(_Forces):
         pts += [r.at for r in gf.reactions]
         pts += [q for bs in link_bodies(lk, P, links).values() for b in bs for q in b.points]
         self._ext = _bbox(pts, lk.length * 0.5)
-        forces = [ld.force.norm for i in links for ld in gf.loads[i] if ld.force is not None]
-        forces += [r.force.norm for r in gf.reactions if r.on in links]
-        self.fs = force_scales(forces, LOAD_MM)
+        named = [(ld.name, ld.force.norm) for i in links for ld in gf.loads[i]
+                 if ld.force is not None]  # fmt: skip
+        named += [(r.name, r.force.norm) for r in gf.reactions if r.on in links]
+        self.fs = force_tiers([F for _, F in named], LOAD_MM)
+        self.omitted = left_out(self.fs, named)
 
     def draw(self, d: Drawing, at: Placed) -> None:
         v = at.viewport
         assert v is not None
-        draw_further(d, at, self, self.fs)
+        draw_further(d, at, self, self.fs, self.omitted)
         lk, P, gf = self.lk, self.P, self.gf
         links = gf.links
         full = scheme(lk, P)
@@ -510,6 +553,101 @@ def figure_edges(pts: Sequence[Vec], eps: float) -> list[tuple[Vec, Vec]]:
     return edges
 
 
+#: Two forces at one point of the lever closer in direction than this (degrees) would be drawn
+#: over one another: the second is drawn arriving at the point.
+SAME_LINE_DEG = 20.0
+
+
+def load_sides(
+    loads: Sequence[tuple[Vec, Vec, str, str]],
+    k: float,
+    lengths: Sequence[float],
+    ext: tuple[float, float, float, float] | None = None,
+    slack: float = 0.0,
+) -> list[tuple[bool, Vec]]:
+    """How each load (point, force, …) of the lever is drawn: whether it arrives at its point
+    (else leaves it), and from where (model units). A force along the line of a longer one at
+    the same point and of its sense (within :data:`SAME_LINE_DEG`) goes on from that one's
+    tip (Φ₃ after F_B at b); of opposite senses they leave the point
+    back to back; a force that, ``lengths`` mm long, would run more than ``slack`` mm (the
+    view's margin) past the view's extent ``ext`` (model units) arrives at its point where
+    that keeps more of it over the drawing and no arrow there lies on that side. ``k``: the
+    view's scale (model units per mm; points within 0.8 mm on the paper are one)."""
+    starts = [q for q, _, _, _ in loads]
+    side: dict[int, bool] = {}
+    cos = math.cos(math.radians(SAME_LINE_DEG))
+
+    def past(q: Vec) -> float:
+        if ext is None:
+            return 0.0
+        return max(ext[0] - q.x, q.x - ext[2], 0.0) + max(ext[1] - q.y, q.y - ext[3], 0.0)
+
+    for i in sorted(range(len(loads)), key=lambda i: -lengths[i]):
+        q, F = loads[i][0], loads[i][1]
+        side[i] = False
+        if F.norm == 0.0:
+            continue
+        u = F.unit()
+        # on from the tip of the longer ones of its sense along its line there
+        tips = [
+            starts[j] + (Vec(0.0, 0.0) if side[j] else loads[j][1].unit() * (lengths[j] * k))
+            for j in side
+            if j != i and loads[j][1].norm > 0.0 and (loads[j][0] - q).norm / k < 0.8
+            and loads[j][1].unit().dot(u) > cos
+        ]  # fmt: skip
+        if tips:
+            starts[i] = max(tips, key=lambda t: (t - q).dot(u))
+            continue
+        # the rays from the point that the arrows drawn from it lie on
+        rays = [
+            (j, loads[j][1].unit() * (-1.0 if a else 1.0))
+            for j, a in side.items()
+            if j != i and starts[j] == loads[j][0] and loads[j][1].norm > 0.0
+            and (loads[j][0] - q).norm / k < 0.8
+        ]  # fmt: skip
+        run = u * (lengths[i] * k)
+        out = past(q + run)
+        if (
+            out > slack * k
+            and past(q - run) < out - 1.0 * k
+            and not any(r.dot(-u) > cos for _, r in rays)
+        ):
+            side[i] = True
+            continue
+        # leaving along an arrow that arrives there (of the opposite sense): from its tail
+        ahead = [lengths[j] for j, r in rays if r.dot(u) > cos]
+        if ahead:
+            starts[i] = q + u * (max(ahead) * k)
+    return [(side[i], starts[i]) for i in range(len(loads))]
+
+
+def chain_starts(
+    loads: Sequence[tuple[Vec, Vec, str, str]], k: float, lengths: Sequence[float]
+) -> list[Vec]:
+    """Where each load (point, force, …) of the mechanism is drawn from (model units): its
+    point, or, for a force along the line of a longer one at the same point and of its sense
+    (within :data:`SAME_LINE_DEG`: Φ₅ along F_D at D), the tip of that one's arrow, the two
+    head to tail on their common line of action (an arrow arriving at a slider's point would
+    end hidden in the block). ``lengths``: the arrows' lengths (mm), ``k``: the view's scale
+    (model units per mm; points within 0.8 mm on the paper are one)."""
+    cos = math.cos(math.radians(SAME_LINE_DEG))
+    start: dict[int, Vec] = {}
+    order = sorted(range(len(loads)), key=lambda i: -lengths[i])
+    for i in order:
+        q, F = loads[i][0], loads[i][1]
+        start[i] = q
+        if F.norm == 0.0:
+            continue
+        for j in order[: order.index(i)]:
+            q2, F2 = loads[j][0], loads[j][1]
+            if F2.norm > 0.0 and (q2 - q).norm / k < 0.8 and F2.unit().dot(F.unit()) > cos:
+                # from the tip of the last one along this line
+                tip = start[j] + F2.unit() * (lengths[j] * k)
+                if (tip - q).dot(F.unit()) > (start[i] - q).dot(F.unit()):
+                    start[i] = tip
+    return [start[i] for i in range(len(loads))]
+
+
 class _Lever(View):
     """Zhukovsky's lever: the velocity plan turned 90° with the loads at their points'
     images and the balancing force at the crank's joint."""
@@ -517,11 +655,12 @@ class _Lever(View):
     def __init__(self, lk: Linkage, P: Position, f: Forces) -> None:
         lev = f.lever
         forces = [it.force.norm for it in lev.items] + [lev.F_bal.norm]
-        self.fs = force_scales(forces, LEVER_LOAD_MM)
+        self.fs = force_tiers(forces, LEVER_LOAD_MM)
         self.short = self.fs.tiered
         super().__init__(title=WORDS("lever"), title_height=5.0, quantity="v", series="nice",
                          margin=LEVER_LOAD_MM)  # fmt: skip
         self.lk, self.P, self.f = lk, P, f
+        self.omitted = left_out(self.fs, [(it.name, it.force.norm) for it in lev.items])
         pts = [Vec(0.0, 0.0), *lever_images(P, lev).values(), *(it.image for it in lev.items)]
         xs = [q.x for q in pts]
         ys = [q.y for q in pts]
@@ -540,7 +679,7 @@ class _Lever(View):
     def draw(self, d: Drawing, at: Placed) -> None:
         v = at.viewport
         assert v is not None
-        draw_further(d, at, self, self.fs)
+        draw_further(d, at, self, self.fs, self.omitted)
         kv = v.scale
         lk, P, lev = self.lk, self.P, self.f.lever
         drawn: list[tuple[Vec, Vec]] = []
@@ -567,9 +706,15 @@ class _Lever(View):
         for q, names in groups:
             v.dot(q)
             v.label(q, ", ".join(names), 2.5, clear=0.8)
-        for it in lev.items:
-            _force(v, it.image, it.force, self.fs, load_name(it.name))
-        _force(v, lev.images[lk.joint], lev.F_bal, self.fs, WORDS("P_bal"), role="result")
+        loads = [(it.image, it.force, load_name(it.name), "vector") for it in lev.items]
+        loads.append((lev.images[lk.joint], lev.F_bal, WORDS("P_bal"), "result"))
+        lengths = [F.norm / self.fs.scales[t].k if (t := self.fs.tier(F.norm)) is not None
+                   else 0.0 for _, F, _, _ in loads]  # fmt: skip
+        # an arrow leaves its point unless it would run out of the view (past its margin,
+        # less a label's room)
+        sides = load_sides(loads, kv.k, lengths, self._ext, self.margin - LABEL_ROOM_MM)
+        for (_, F, name, role), (arrive, at_) in zip(loads, sides, strict=True):
+            _force(v, at_, F, self.fs, name, arrive, role)
 
 
 def _table2(f: Forces, h: float) -> Table:

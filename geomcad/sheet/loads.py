@@ -41,6 +41,9 @@ class ForceScales:
 
     scales: tuple[Scale, ...]
     zero: float = 0.0
+    #: forces up to this (N), a negligible share of the view's largest, are not drawn where
+    #: drawing them would take a fourth μ_F (:func:`force_tiers`; the view names them)
+    negligible: float = 0.0
 
     @property
     def k(self) -> float:
@@ -49,7 +52,7 @@ class ForceScales:
 
     def tier(self, F: float) -> int | None:
         """The index of the scale a force of ``F`` N is drawn at (``None``: a zero force)."""
-        if self.zero >= F:
+        if max(self.zero, self.negligible) >= F:
             return None
         for i, sc in enumerate(self.scales):
             if F / sc.k >= SHORT_MM * (1.0 - tol.DERIVED):
@@ -89,6 +92,15 @@ class ForceScales:
 
         return box(parse(self.further()), height)[1] if self.tiered else height
 
+    def longest(self, forces: Iterable[float]) -> float:
+        """The longest arrow (mm) of forces of magnitudes ``forces`` (N), each at its tier."""
+        out = 0.0
+        for F in forces:
+            tier = self.tier(abs(F))
+            if tier is not None:
+                out = max(out, abs(F) / self.scales[tier].k)
+        return out
+
     @property
     def tiered(self) -> bool:
         """Whether some forces are drawn at a second μ_F (the sheet says what the mark means)."""
@@ -116,6 +128,82 @@ def force_scales(
         scales.append(nice_factor(rest[0], room, "F"))
         rest = [F for F in rest if F / scales[-1].k < SHORT_MM * (1.0 - tol.DERIVED)]
     return ForceScales(tuple(scales), zero)
+
+
+#: A view draws its forces at most at this many μ_F (its own and one stated μ_F*, a third
+#: only where two cannot draw every force between SHORT_MM and the view's limit; never four).
+MOST_TIERS = 3
+#: A force drawn at a further μ_F is at most this many times the view's room long (the room
+#: its largest force takes at the view's own μ_F).
+TIER_LIMIT = 1.5
+#: Forces under this share of a view's largest are left out (and named) where drawing them
+#: would take a fourth μ_F: they change no result drawn (0,1 % of the largest).
+NEGLIGIBLE = 1e-3
+
+
+def _coarsest(value_min: float, mm: float) -> Scale:
+    """The largest factor 1, 2, 2.5, 4, 5 × 10^n at which ``value_min`` is at least ``mm``."""
+    raw = value_min / mm
+    e = math.floor(math.log10(raw))
+    for exp in (e, e - 1):
+        for m in (5.0, 4.0, 2.5, 2.0, 1.0):
+            k = m * 10.0**exp
+            if k <= raw * (1.0 + tol.REL_LENGTH):
+                return Scale(k, "F")
+    return Scale(10.0 ** (e - 1), "F")  # unreachable: 10^e ≤ raw always
+
+
+def force_tiers(forces: Iterable[float], room_mm: float) -> ForceScales:
+    """The force scales of a view with few tiers (a teacher accepts the view's μ_F and one
+    μ_F* stated under its caption): every force an arrow at least :data:`SHORT_MM` long at a
+    stated μ_F, at most :data:`MOST_TIERS` of them (forces under :data:`NEGLIGIBLE` of the
+    largest that would take a fourth are left out: ``negligible``, the view names them).
+
+    The forces are cut into bands from the smallest up: each band's μ_F draws its smallest
+    force :data:`SHORT_MM` long (the coarsest factor that does) and takes every larger force
+    it draws at most ``TIER_LIMIT · room_mm`` long; the top band is drawn at the μ_F that puts
+    the view's largest force into ``room_mm`` where that draws the band's smallest at least
+    :data:`SHORT_MM`. Where more than :data:`MOST_TIERS` bands would be needed (forces over
+    four decades), the two neighbouring bands whose union draws its longest force shortest are
+    joined (a longer arrow, at its stated μ_F, rather than a fourth tier). Forces under
+    ``tol.DERIVED`` of the largest are zero (not drawn)."""
+    mags = sorted((abs(F) for F in forces), reverse=True)
+    big = mags[0] if mags else 0.0
+    room = max(room_mm, 2.5 * SHORT_MM)
+    if big <= 0.0:
+        return ForceScales((nice_factor(1.0, room, "F"),))
+    zero = tol.DERIVED * big
+    live = sorted(F for F in mags if zero < F)
+    limit = TIER_LIMIT * room
+    short = SHORT_MM * (1.0 - tol.DERIVED)
+    top = nice_factor(big, room, "F")
+    if live[0] / top.k >= short:
+        return ForceScales((top,), zero)
+    # bands from the smallest force up: (their smallest, their largest)
+    bands: list[list[float]] = []
+    for F in live:
+        if bands and F / _coarsest(bands[-1][0], SHORT_MM).k <= limit * (1.0 + tol.DERIVED):
+            bands[-1][1] = F
+        else:
+            bands.append([F, F])
+    # the top band at the view's own μ_F where that draws all of it long enough
+    lo = next((b[0] for b in bands if big / top.k >= short and b[0] / top.k >= short), None)
+    if lo is not None:
+        bands = [b for b in bands if b[0] < lo]
+        bands.append([lo, big])
+    negligible = 0.0
+    if len(bands) > MOST_TIERS:
+        # forces too small to matter are named, not drawn at a fourth μ_F
+        low = [b for b in bands if b[1] < NEGLIGIBLE * big]
+        if low:
+            negligible = low[-1][1]
+            bands = bands[len(low) :]
+    while len(bands) > MOST_TIERS:
+        i = min(range(len(bands) - 1),
+                key=lambda j: bands[j + 1][1] / _coarsest(bands[j][0], SHORT_MM).k)  # fmt: skip
+        bands[i : i + 2] = [[bands[i][0], bands[i + 1][1]]]
+    scales = [top if b[0] / top.k >= short else _coarsest(b[0], SHORT_MM) for b in reversed(bands)]
+    return ForceScales(tuple(dict.fromkeys(scales)), zero, negligible)
 
 
 def force(

@@ -268,8 +268,10 @@ def draw_polygon(
         tail, head = pv.tail + s, pv.head + s
         text = (names or {}).get(pv.name, pv.name)
         if pv.name in in_detail:
-            # its line, named, keeps the chain whole (its arrow is drawn in its detail)
+            # its line keeps the chain whole (its arrow, named, is drawn in its detail: the
+            # circle round it is clear of labels)
             v.seg(tail, head, "construction")
+            continue
         else:
             if v.mm(pv.magnitude) < SHORT_MM:
                 short.append(pv.name)
@@ -294,10 +296,18 @@ def draw_polygon(
         n = (r.head - r.tail).perp().unit()
         if n.dot(corner - r.tail) > 0.0:
             n = -n
+        prefer = (n.x, n.y)
+        if v.mm(abs(n.dot(corner - r.tail))) < SHORT_MM:
+            # a component too short to tell the side: the label outside the polygon (not
+            # inside it, by the head of another vector: R_12 by R_43's)
+            prefer = _outward(poly, r.tail, r.head, False)
         v.label(r.tail + (r.head - r.tail) * 0.3, (names or {}).get(r.name, r.name), height,
-                prefer=(n.x, n.y), clear=0.5)  # fmt: skip
-    for dt in details:
-        mark_detail(v, poly, dt)
+                prefer=prefer, clear=0.5)  # fmt: skip
+    sides = [(v.p(pv.tail + shift.get(pv.name, Vec(0.0, 0.0))),
+              v.p(pv.head + shift.get(pv.name, Vec(0.0, 0.0)))) for pv in drawn]  # fmt: skip
+    sides += [(v.p(r.tail), v.p(r.head)) for r, _ in res]
+    for spot in detail_spots(v, poly, details):
+        mark_detail(v, *spot, segs=sides)
     if thin and len(drawn) == 2 and not in_detail:
         # two forces in balance: the polygon closes on one line, and says so
         a, b = ((names or {}).get(pv.name, pv.name) for pv in drawn)
@@ -372,18 +382,65 @@ def is_thin(poly: ForcePolygon, k: float) -> bool:
     return far / k < THIN_MM
 
 
-def mark_detail(v: Viewport, poly: ForcePolygon, dt: Detail) -> None:
-    """Circle the run of ``dt`` (thin) and letter it on a short leader (ESKD выносной элемент)."""
-    pts = [v.p(q) for n in dt.run for q in (poly[n].tail, poly[n].head)]
+def detail_spots(
+    v: Viewport, poly: ForcePolygon, details: Sequence[Detail]
+) -> list[tuple[tuple[float, float], float, str]]:
+    """The circles (centre and radius on the paper, letters) that mark the details' runs on
+    the polygon drawn through ``v``: one per detail, or one round the runs of details whose
+    circles would overlap (a run cut into two details), lettered with both ("Б, В")."""
+    out: list[tuple[list[tuple[float, float]], str]] = []
+    for dt in details:
+        pts = [v.p(q) for n in dt.run for q in (poly[n].tail, poly[n].head)]
+        for i, (other, letters) in enumerate(out):
+            c0, r0 = _circle(other)
+            c1, r1 = _circle(pts)
+            if math.dist(c0, c1) < r0 + r1 + 1.0:
+                out[i] = ([*other, *pts], f"{letters}, {dt.letter}")
+                break
+        else:
+            out.append((pts, dt.letter))
+    return [(*_circle(pts), letters) for pts, letters in out]
+
+
+def _circle(pts: Sequence[tuple[float, float]]) -> tuple[tuple[float, float], float]:
     cx = (min(q[0] for q in pts) + max(q[0] for q in pts)) / 2.0
     cy = (min(q[1] for q in pts) + max(q[1] for q in pts)) / 2.0
     r = max(DETAIL_CIRCLE_MM, *(math.hypot(q[0] - cx, q[1] - cy) + 1.5 for q in pts))
+    return (cx, cy), r
+
+
+def mark_detail(
+    v: Viewport,
+    c: tuple[float, float],
+    r: float,
+    letter: str,
+    segs: Sequence[tuple[tuple[float, float], tuple[float, float]]] = (),
+) -> None:
+    """Circle (thin) the spot of radius ``r`` mm round ``c`` (paper) and letter it on a short
+    leader (ESKD выносной элемент): of the eight ways round the circle (up-right first), the
+    one whose letter is farthest from the polygon's sides ``segs`` (paper)."""
+    cx, cy = c
     k = v.scale.k
     v.circle(Vec(v.ox + (cx - v.at[0]) * k, v.oy - (cy - v.at[1]) * k), r * k, "construction")
-    edge = (cx + r * 0.7071, cy - r * 0.7071)
-    leader = (edge[0] + 3.0, edge[1] - 3.0)
+    ways = [(math.cos(math.radians(a)), -math.sin(math.radians(a))) for a in range(45, 405, 45)]
+
+    def clearance(u: tuple[float, float]) -> float:
+        at = (cx + u[0] * (r + 5.5), cy + u[1] * (r + 5.5))  # about the letter's middle
+        return min((_seg_dist(at, a, b) for a, b in segs), default=math.inf)
+
+    u = max(ways, key=lambda w: min(clearance(w), 6.0))  # 6 mm clear is clear enough
+    edge = (cx + r * u[0], cy + r * u[1])
+    leader = (edge[0] + 4.2 * u[0], edge[1] + 4.2 * u[1])
     v.sheet.add(Polyline((edge, leader), "construction"))
-    v.d.label(leader, dt.letter, 3.5, prefer=(1.0, -1.0), clear=0.5)
+    v.d.label(leader, letter, 3.5, prefer=u, clear=0.5)
+
+
+def _seg_dist(q: tuple[float, float], a: tuple[float, float], b: tuple[float, float]) -> float:
+    """The distance (mm) from point q to segment ab (paper)."""
+    dx, dy = b[0] - a[0], b[1] - a[1]
+    n2 = dx * dx + dy * dy
+    t = 0.0 if n2 == 0.0 else max(0.0, min(1.0, ((q[0] - a[0]) * dx + (q[1] - a[1]) * dy) / n2))
+    return math.hypot(q[0] - a[0] - t * dx, q[1] - a[1] - t * dy)
 
 
 #: The least radius (mm) of the thin circle that marks a polygon's detail.
@@ -393,20 +450,20 @@ DETAIL_CIRCLE_MM = 3.0
 POLY_MM = 110.0
 #: A detail's shortest vector is drawn at least this long (mm) …
 DETAIL_MM = 8.0
-#: … and its longest at most this long, else its vectors still too short go to a further
-#: detail (nested).
-DETAIL_MAX_MM = 25.0
+#: … and its longest at most this long, else its run is cut into two details side by side
+#: (one level: no detail is taken from a detail).
+DETAIL_MAX_MM = 60.0
 #: A detail enlarges the view it is taken from at least this many times (a detail barely
 #: larger than its polygon is not worth its room).
 DETAIL_LEAST = 4.0
-#: The enlargements of a detail over its polygon: m × 10^n, m of 1, 2, 4 (the detail's μ_F is
-#: the largest factor 1, 2, 2.5, 4, 5 × 10^n at most the polygon's / m: m to 1.25 m times).
-ENLARGE = tuple(m * 10.0**n for n in range(9) for m in (1.0, 2.0, 4.0) if m * 10.0**n >= 4.0)
 #: The lines of the long vectors a detail joins are drawn this long (mm).
 STUB_MM = 4.0
 #: The room (mm) round a detail's drawing for its labels, and its caption's height.
 DETAIL_PAD_MM = 4.0
 DETAIL_CAPTION_H = 2.5
+#: How much (mm² of the polygon's view per mm) a detail's distance from the spot it enlarges
+#: weighs against the size of the view (:func:`place_details`).
+DETAIL_NEAR = 100.0
 #: The gap (mm) between a polygon and its details.
 DETAIL_GAP_MM = 4.0
 #: A thin polygon's vectors are drawn side by side this far apart (mm) …
@@ -476,60 +533,83 @@ def detail_scale(k: float, m: float) -> Scale:
     return nice_below(k / m, 1.0)
 
 
-def most_enlarged(m: float) -> float:
-    """The most a detail of enlargement ``m`` enlarges its polygon, whatever its μ_F."""
-    return max(x / detail_scale(x, m).k for x in (1.0, 2.0, 2.5, 4.0, 5.0))
-
-
 @dataclass
 class Detail:
     """An enlarged detail of a force polygon (ESKD выносной элемент): its ``run`` of short
-    vectors head to tail at about ``m`` times the polygon's μ_F (:func:`detail_scale`, stated
-    in its caption with its ``letter``), with the lines of the long vectors it joins; its
-    vectors still too short there in ``inner`` details. ``slot``: where it is drawn, in the
-    polygon's units (its caption's room ``cap`` at the top)."""
+    vectors head to tail at its own μ_F ``k`` (stated in its caption with its ``letter``),
+    with the lines of the long vectors it joins; one level: every vector of the run is an
+    arrow in it. ``slot``: where it is drawn, in the polygon's units (its caption's room
+    ``cap`` at the top)."""
 
     run: tuple[str, ...]
-    m: float
+    k: float
     letter: str
-    inner: list[Detail]
     box: Extent
     slot: Extent = (0.0, 0.0, 0.0, 0.0)
     cap: float = 0.0
 
-    def all(self) -> list[Detail]:
-        """This detail and its further ones, in the order of their letters."""
-        return [self, *(x for dt in self.inner for x in dt.all())]
+
+def detail_k(mags: Sequence[float], k: float) -> float:
+    """The μ_F of a detail of vectors of magnitudes ``mags`` taken from a polygon drawn at
+    ``k``: the coarsest factor 1, 2, 2.5, 4, 5 × 10^n that draws the shortest at least
+    :data:`DETAIL_MM` long, and enlarges the polygon at least :data:`DETAIL_LEAST` times."""
+    return min(nice_below(min(mags), DETAIL_MM).k, detail_scale(k, DETAIL_LEAST).k)
 
 
 def plan_details(poly: ForcePolygon, k_ref: float, letters: Iterator[str]) -> list[Detail]:
-    """The details of ``poly`` drawn at μ_F ``k_ref``: one per run of its vectors shorter than
-    two arrowheads there, each at the least enlargement (:data:`ENLARGE`, at least
-    :data:`DETAIL_LEAST` times) that draws its shortest :data:`DETAIL_MM` long, or, where its
-    longest would then exceed :data:`DETAIL_MAX_MM`, at the most that keeps the longest within
-    it and its own short vectors in further details."""
-    return [
-        _plan(poly, run, k_ref, 1.0, letters) for run in short_runs(poly.vectors, SHORT_MM * k_ref)
-    ]
+    """The details of ``poly`` drawn at μ_F ``k_ref``, all of one level: one per run of its
+    vectors shorter than two arrowheads there (:func:`regroup` makes it one run where the
+    polygon's order allows), at :func:`detail_k`; a run whose longest would then exceed
+    :data:`DETAIL_MAX_MM` is cut, along the chain, into the fewest pieces that each keep
+    within it, each piece a detail of its own drawn beside the others (never inside)."""
+    out = []
+    for run in short_runs(poly.vectors, SHORT_MM * k_ref):
+        pieces: list[list[str]] = []
+        for n in run:
+            piece = [*pieces[-1], n] if pieces else [n]
+            mags = [poly[x].magnitude for x in piece]
+            if pieces and max(mags) / detail_k(mags, k_ref) <= DETAIL_MAX_MM:
+                pieces[-1] = piece
+            else:
+                pieces.append([n])
+        for piece in pieces:
+            kd = detail_k([poly[n].magnitude for n in piece], k_ref)
+            box = _bbox(q for n in piece for q in (poly[n].tail, poly[n].head))
+            out.append(Detail(tuple(piece), kd, next(letters), box))
+    return out
 
 
-def _plan(
-    poly: ForcePolygon, run: Sequence[str], k_ref: float, parent: float, letters: Iterator[str]
-) -> Detail:
-    letter = next(letters)
-    mags = [poly[n].magnitude for n in run]
-    lo, hi = min(mags), max(mags)
-    cands = [m for m in ENLARGE if m >= DETAIL_LEAST * parent * (1.0 - tol.DERIVED)]
-    m = next((m for m in cands if lo * m / k_ref >= DETAIL_MM), cands[-1])
-    inner: list[Detail] = []
-    if hi * most_enlarged(m) / k_ref > DETAIL_MAX_MM:
-        fit = [x for x in cands if hi * most_enlarged(x) / k_ref <= DETAIL_MAX_MM]
-        m = fit[-1] if fit else cands[0]
-        vs = [poly[n] for n in run]
-        inner = [_plan(poly, r, k_ref, m, letters)
-                 for r in short_runs(vs, SHORT_MM * k_ref / m, closed=False)]  # fmt: skip
-    box = _bbox(q for n in run for q in (poly[n].tail, poly[n].head))
-    return Detail(tuple(run), m, letter, inner, box)
+def regroup(poly: ForcePolygon, k: float) -> ForcePolygon:
+    """The polygon with its known loads laid off in the order that makes its vectors shorter
+    than two arrowheads at μ_F ``k`` one run, where it can (a polygon may take its known
+    forces in any order: only the closing of its unknowns is fixed): the unknowns (or the
+    closing vector), the components of a reaction split in two (their resultant closes
+    them) stay where they are, the other vectors take their places by magnitude, rising or
+    falling, whichever leaves fewer runs (the polygon's own order on a tie). The same
+    vectors head to tail from the same pole; the polygon closes as before."""
+    fixed = {n for n, _ in poly.solved} or {poly.vectors[-1].name} if poly.vectors else set()
+    free = [i for i, pv in enumerate(poly.vectors)
+            if pv.name not in fixed and _COMPONENT.fullmatch(pv.name) is None]  # fmt: skip
+    if len(free) < 2:
+        return poly
+    limit = SHORT_MM * k
+    best = (len(short_runs(poly.vectors, limit)), poly)
+    for down in (False, True):
+        ordered = sorted((poly.vectors[i] for i in free), key=lambda pv: pv.magnitude,
+                         reverse=down)  # fmt: skip
+        vs = list(poly.vectors)
+        for i, pv in zip(free, ordered, strict=True):
+            vs[i] = pv
+        out: list[PlanVector] = []
+        tail = poly.pole
+        for pv in vs:
+            out.append(PlanVector(pv.name, tail, tail + pv.force))
+            tail = out[-1].head
+        cand = ForcePolygon(poly.pole, tuple(out), poly.solved)
+        runs = len(short_runs(cand.vectors, limit))
+        if runs < best[0]:
+            best = (runs, cand)
+    return best[1]
 
 
 def place_details(
@@ -544,13 +624,13 @@ def place_details(
     clear of its sides, or beside, below or above the polygon or a detail placed before; the
     spot that keeps the whole within ``room`` (model units: the view's box), then smallest.
     Returns the extent of the polygon with its details."""
-    flat = [x for dt in details for x in dt.all()]
+    flat = list(details)
     if not flat:
         return ext
     pad, cap = DETAIL_PAD_MM * k, (DETAIL_CAPTION_H * 1.5 + 1.5) * k
     sizes = []
     for dt in flat:
-        kd = detail_scale(k, dt.m).k
+        kd = dt.k
         pts = [q for n in dt.run for q in (poly[n].tail, poly[n].head)]
         pts += [b for _, _, b in _stubs(poly, dt, kd)]
         dt.box = _bbox(pts)
@@ -566,6 +646,7 @@ def place_details(
     placed: list[Extent] = []
     union = ext
     for dt, (w, h) in zip(flat, sizes, strict=True):
+        at = ((dt.box[0] + dt.box[2]) / 2.0, (dt.box[1] + dt.box[3]) / 2.0)  # its run's spot
         best: tuple[float, float, float, Extent] | None = None
         anchors = [ext, *placed]
         spots = [(x0, y1 - h), (x1 - w, y1 - h), (x0, y0), (x1 - w, y0)]  # the box's corners
@@ -587,7 +668,10 @@ def place_details(
                  max(union[2], slot[2]), max(union[3], slot[3]))  # fmt: skip
             uw, uh = u[2] - u[0], u[3] - u[1]
             over = 0.0 if room is None else max(uw - room[0], 0.0) + max(uh - room[1], 0.0)
-            key = (over, uw * uh, max(uw, uh))
+            # the smallest whole, and the detail near the spot it enlarges: moving it
+            # DETAIL_NEAR mm farther weighs as much as a square mm more of the whole
+            far = math.dist(at, (bx + w / 2.0, by + h / 2.0))
+            key = (over, uw * uh + DETAIL_NEAR * far * k, max(uw, uh))
             if best is None or key < best[:3]:
                 best = (*key, slot)
         assert best is not None  # a spot beside the whole is always free
@@ -654,9 +738,8 @@ def draw_detail(
     height: float = 2.5,
 ) -> None:
     """Draw detail ``dt`` of ``poly`` in its slot of the polygon's viewport ``v``: its run at
-    its μ_F (:func:`detail_scale`), captioned with its letter and μ_F, the lines of the long
-    vectors it joins, its inner details' runs circled and lettered."""
-    sc = detail_scale(v.scale.k, dt.m)
+    its μ_F, captioned with its letter and μ_F, the lines of the long vectors it joins."""
+    sc = Scale(dt.k, "F")
     sx0, sy0, sx1, sy1 = dt.slot
     names = names or {}
     found = set(found)
@@ -668,15 +751,9 @@ def draw_detail(
     for pv, a, b in _stubs(poly, dt, sc.k):
         sub.seg(a, b, "construction")
         sub.label(b, names.get(pv.name, pv.name), height, clear=0.5)
-    nested = {n for x in dt.inner for n in x.run}
-    for x in dt.inner:
-        mark_detail(sub, poly, x)
     for n in dt.run:
         pv = poly[n]
         if pv.magnitude <= _zero(poly):
-            continue
-        if n in nested:
-            sub.seg(pv.tail, pv.head, "construction")
             continue
         sub.arrow(pv.tail, pv.head, "result" if n in found else "vector")
         sub.label((pv.tail + pv.head) * 0.5, names.get(n, n), height,
@@ -687,12 +764,14 @@ class Polygon(View):
     """Force polygons at one μ_F (a factor 1, 2, 2.5, 4, 5 × 10^n) in one viewport: the
     first in ``layers`` drawn first (a frictionless polygon dashed under the one with friction).
     Each layer is (polygon, role); ``names``, ``found``, ``inward`` as :func:`draw_polygon`.
-    ``detail``: the last layer's vectors too short for the polygon's μ_F are drawn enlarged in
-    lettered :attr:`details` in the same view, in the room the polygon leaves free or beside
-    it (their μ_F a fixed share of the polygon's, stated in their captions; letters from
-    ``letters``); their room is reckoned at the μ_F of ``ref`` (default: the one that draws
-    the largest vector at most :data:`POLY_MM` long), within its room (w, h mm) where they
-    can, and they are planned again at the μ_F drawn, within the box drawn. A
+    ``detail``: the last layer's known loads are laid off in the order that makes its vectors
+    too short for the polygon's μ_F one run (:func:`regroup`), and those vectors are drawn
+    enlarged in lettered :attr:`details` of one level in the same view, near the circle that
+    marks them, in the room the polygon leaves free or beside it (each at its own μ_F,
+    :func:`detail_k`, stated in its caption; letters from ``letters``); their room is reckoned
+    at the μ_F of ``ref`` (default: the one that draws the largest vector at most
+    :data:`POLY_MM` long), within its room (w, h mm) where they can, and they are planned
+    again at the μ_F drawn, within the box drawn. A
     polygon along one line is drawn with its vectors side by side
     (:func:`draw_polygon`'s ``thin``)."""
 
@@ -726,12 +805,17 @@ class Polygon(View):
         )
         self.detail = detail and bool(self.layers)
         self.letters = letters
+        self.k_ref = 1.0
         if self.detail:
             # the room of the details as at the reference μ_F (they are planned again, and
             # lettered, at the μ_F the layout chooses)
             big = max((pv.magnitude for pv in self.layers[-1][0].vectors), default=0.0)
             if big > 0.0:
                 k_ref, room = ref or (nice_factor(big, POLY_MM, "F").k, None)
+                self.k_ref = k_ref
+                # its known forces in the order that keeps its short vectors one run
+                last, role = self.layers[-1]
+                self.layers[-1] = (regroup(last, k_ref), role)
                 within = None if room is None else (room[0] * k_ref, room[1] * k_ref)
                 self.details, self.thin, self._ext = self._with_details(k_ref, iter(_ANY), within)
 
@@ -760,9 +844,9 @@ class Polygon(View):
         inset = {n for dt in self.details for n in dt.run}
         for poly, _ in self.layers:
             out += [pv.magnitude for pv in poly.vectors if pv.name not in inset]
-        for dt in (x for d0 in self.details for x in d0.all()):
-            nested = {n for x in dt.inner for n in x.run}
-            out += [self.layers[-1][0][n].magnitude * dt.m for n in dt.run if n not in nested]
+        for dt in self.details:
+            # drawn |F|/k_d mm long in its detail: |F|·k_ref/k_d at the reference μ_F
+            out += [self.layers[-1][0][n].magnitude * self.k_ref / dt.k for n in dt.run]
         return out
 
     def draw(self, d: Drawing, at: Placed) -> None:
@@ -787,7 +871,7 @@ class Polygon(View):
         if self.details:
             poly = self.layers[-1][0]
             found = self.found if self.found is not None else {n for n, _ in poly.solved}
-            for dt in (x for d0 in self.details for x in d0.all()):
+            for dt in self.details:
                 draw_detail(v, poly, dt, self.names, found, self.label_height)
 
 

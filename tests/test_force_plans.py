@@ -1,0 +1,227 @@
+"""The force plans, their details and the μ_F tiers of a linkage file's forces sheet (issue 27):
+a plan drawn large, its short vectors laid off as one run and shown in details of one level
+beside it, at most three μ_F per view (two where two can draw every force), and forces along
+one line at one point of Zhukovsky's lever drawn end to end."""
+
+from __future__ import annotations
+
+import itertools
+import math
+import re
+from pathlib import Path
+
+import pytest
+
+import geomcad
+from geomcad.forces import ForcePolygon, PlanVector
+from geomcad.geom import Vec
+from geomcad.linkage.analysis import analyse
+from geomcad.linkage.solution import solve
+from geomcad.sheet import start
+from geomcad.sheet.compose import compose
+from geomcad.sheet.drawing import SHORT_MM
+from geomcad.sheet.frame import TitleBlock
+from geomcad.sheet.linkage_forces import PLAN_SEEK_MM, chain_starts, force_position, load_sides
+from geomcad.sheet.loads import MOST_TIERS, NEGLIGIBLE, TIER_LIMIT, force_tiers
+from geomcad.sheet.views import (
+    DETAIL_LEAST,
+    DETAIL_MAX_MM,
+    Polygon,
+    detail_spots,
+    plan_details,
+    regroup,
+    short_runs,
+)
+
+EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
+LINKAGES = [
+    p
+    for p in sorted(EXAMPLES.glob("*.toml"))
+    if "[drive]" in p.read_text(encoding="utf-8") and "[[group]]" in p.read_text(encoding="utf-8")
+]
+
+
+def chain(mags: list[float], names: list[str], turn: float = 1.1) -> list[PlanVector]:
+    """Vectors of the magnitudes ``mags`` head to tail from the origin, each turned ``turn``
+    rad from the one before."""
+    out, q = [], Vec(0.0, 0.0)
+    for i, (F, name) in enumerate(zip(mags, names, strict=True)):
+        nxt = q + Vec(math.cos(i * turn), math.sin(i * turn)) * F
+        out.append(PlanVector(name, q, nxt))
+        q = nxt
+    return out
+
+
+def group_polygon() -> ForcePolygon:
+    """A group's polygon as the kinetostatics builds it: R^τ_12 first, the loads in the order
+    of their links (short ones between long ones), then the two unknowns closing it."""
+    known = chain([30.0, 5000.0, 40.0, 4000.0, 60.0, 3000.0],
+                  ["R^τ_{12}", "F_{B}", "G_{2}", "Ф_{2}", "G_{3}", "Ф_{3}"])  # fmt: skip
+    end = known[-1].head
+    corner = Vec(end.x, 0.0)
+    vs = [*known, PlanVector("R_{03}", end, corner), PlanVector("R^n_{12}", corner, Vec(0, 0))]
+    return ForcePolygon(Vec(0.0, 0.0), tuple(vs), (("R_{03}", 1.0), ("R^n_{12}", 1.0)))
+
+
+def test_regroup_lays_the_short_loads_off_as_one_run() -> None:
+    """The known loads take the order that makes the short vectors one run; the unknowns and
+    a reaction's component keep their places, every vector keeps its force, the polygon
+    closes, and one detail shows the run."""
+    poly = group_polygon()
+    k = 5000.0 / 110.0
+    assert len(short_runs(poly.vectors, SHORT_MM * k)) == 3  # R^τ+… , G_2, G_3 apart
+    new = regroup(poly, k)
+    assert len(short_runs(new.vectors, SHORT_MM * k)) == 1
+    assert new.vectors[0].name == "R^τ_{12}"
+    assert [pv.name for pv in new.vectors[-2:]] == ["R_{03}", "R^n_{12}"]
+    assert sorted(new.names) == sorted(poly.names)
+    for pv in new.vectors:
+        assert (pv.force - poly[pv.name].force).norm <= 1e-9 * 5000.0
+    for a, b in itertools.pairwise([*new.vectors, new.vectors[0]]):
+        assert (a.head - b.tail).norm <= 1e-9 * 5000.0  # head to tail, closed
+    assert len(plan_details(new, k, iter("БВГД"))) == 1
+    # a polygon whose short vectors are one run already keeps its order
+    assert regroup(new, k) is new
+
+
+def test_details_are_one_level_beside_the_polygon() -> None:
+    """A run of forces over three decades: cut into details of one level (no detail is taken
+    from a detail), each at one stated μ_F at least DETAIL_LEAST times the polygon's with its
+    shortest arrow at least two arrowheads and its longest at most DETAIL_MAX_MM; their circles
+    on the polygon, one spot lettered with both; every vector an arrow at its stated μ_F."""
+    vs = chain([5000.0, 3.0, 40.0, 400.0, 7.0], ["F0", "F1", "F2", "F3", "F4"])
+    vs.append(PlanVector("R", vs[-1].head, Vec(0.0, 0.0)))
+    poly = ForcePolygon(Vec(0.0, 0.0), tuple(vs), ())
+    p = Polygon(poly, detail=True)
+    d = start("A3", TitleBlock("t", "d"))
+    lay = compose(d, p)
+    sheet = d.finish()
+    k = lay[p].scale.k
+    assert len(p.details) >= 2 and len({dt.letter for dt in p.details}) == len(p.details)
+    assert not any(hasattr(dt, "inner") for dt in p.details)
+    drawn = p.layers[-1][0]
+    runs = [n for dt in p.details for n in dt.run]
+    assert len(runs) == len(set(runs))  # each short vector in exactly one detail
+    for dt in p.details:
+        assert dt.k * DETAIL_LEAST <= k * (1.0 + 1e-9)
+        mags = [drawn[n].magnitude for n in dt.run]
+        assert min(mags) / dt.k >= SHORT_MM and max(mags) / dt.k <= DETAIL_MAX_MM
+        # its slot is clear of every other detail's
+        for other in p.details:
+            if other is not dt:
+                a, b = dt.slot, other.slot
+                assert a[2] <= b[0] or b[2] <= a[0] or a[3] <= b[1] or b[3] <= a[1]
+    arrows = [(math.dist(t, h), sc.k) for t, h, sc in sheet.scaled]
+    assert min(mm for mm, _ in arrows) >= SHORT_MM * (1.0 - 1e-9)
+    for pv in poly.vectors:
+        assert any(math.isclose(mm * kd, pv.magnitude, rel_tol=1e-6) for mm, kd in arrows), pv
+    # the pieces of one run are marked by one circle lettered with both
+    v = lay[p].viewport
+    assert v is not None
+    spots = detail_spots(v, drawn, p.details)
+    assert len(spots) < len(p.details)
+    assert any(", " in letters for _, _, letters in spots)
+
+
+@pytest.mark.parametrize(
+    ("forces", "room", "tiers"),
+    [
+        ([100.0, 60.0, 40.0], 24.0, 1),
+        ([1000.0, 300.0, 20.0, 10.0], 24.0, 2),  # 1000 N 25 mm at μ_F*, not a third tier
+        ([120.0, 88.3, 58.9, 32.2], 24.0, 1),  # one μ_F, the largest 30 mm (not 24 + μ_F*)
+        ([1e5, 1e4, 1e3, 100.0, 10.0, 1.0], 24.0, MOST_TIERS),  # five decades: never four
+        ([1e4, 3000.0, 400.0, 50.0, 12.0], 24.0, MOST_TIERS),  # four bands: two joined
+    ],
+)
+def test_force_tiers_are_few_and_never_leave_a_force_short(
+    forces: list[float], room: float, tiers: int
+) -> None:
+    fs = force_tiers([*forces, 1e-14], room)
+    assert len(fs.scales) == tiers
+    assert [sc.k for sc in fs.scales] == sorted((sc.k for sc in fs.scales), reverse=True)
+    assert fs.tier(1e-14) is None  # round-off of a zero force
+    # left out only where a fourth μ_F would be needed, and only a negligible share
+    assert fs.negligible < NEGLIGIBLE * max(forces)
+    assert (fs.negligible > 0.0) == (min(forces) < NEGLIGIBLE * max(forces))
+    for F in forces:
+        tier = fs.tier(F)
+        if fs.negligible >= F:
+            assert tier is None
+            continue
+        assert tier is not None
+        mm = F / fs.scales[tier].k
+        assert mm >= SHORT_MM * (1.0 - 1e-9), (F, mm)
+        if tiers < MOST_TIERS:
+            assert mm <= TIER_LIMIT * room * (1.0 + 1e-9), (F, mm)
+
+
+@pytest.mark.parametrize("path", LINKAGES, ids=lambda p: p.stem)
+def test_forces_sheet_plans_are_large_and_tiers_few(path: Path) -> None:
+    """On every example's forces sheet: each force plan's longest vector at least
+    PLAN_SEEK_MM long, no view with more than MOST_TIERS μ_F (at most two stars in a label),
+    and every detail's caption right by its drawing."""
+    s = solve(geomcad.solve(str(path)).data.linkage)
+    if analyse(s).forces is None:
+        pytest.skip("no force analysis")
+    sheet = dict(geomcad.solve(str(path)).sheets())["forces"]
+    arrows = [(math.dist(t, h), sc.k) for t, h, sc in sheet.scaled if sc.q == "F"]
+    _, f, _ = force_position(s)
+    for gf in f.groups:
+        for name, poly in gf.polygons:
+            big = max(pv.magnitude for pv in poly.vectors)
+            at = [mm for mm, k in arrows if math.isclose(mm * k, big, rel_tol=1e-6)]
+            assert at and max(at) >= PLAN_SEEK_MM, (name, at)
+    stars = [len(m) for t in sheet.texts() for m in re.findall(r"\*+", t.text)]
+    assert max(stars, default=0) <= MOST_TIERS - 1
+
+
+def test_forces_at_one_lever_point_never_lie_over_one_another() -> None:
+    """Two forces of one sense along one line at one point are drawn head to tail (the
+    shorter from the tip of the longer), two of opposite senses back to back (both leave the
+    point); a long force at the lever's edge pointing out of it, past the view's margin,
+    arrives from inside it, and a force along it of the other sense then leaves the point from
+    its tail."""
+    b, c, a = Vec(0.3, 0.1), Vec(0.0, 0.2), Vec(0.0, 0.0)
+    right, left, k = Vec(1500.0, 0.0), Vec(-200.0, 0.0), 0.01
+    loads = [
+        (b, right, "F_B", "vector"),
+        (b, Vec(600.0, 20.0), "Ф_3", "vector"),  # nearly along F_B
+        (c, right, "F_c", "vector"),
+        (c, left, "Ф_c", "vector"),
+        (a, right, "F_a", "vector"),
+    ]
+    lengths = [37.5, 15.0, 30.0, 10.0, 20.0]
+    out = load_sides(loads, k, lengths)
+    assert [arrive for arrive, _ in out] == [False] * 5
+    assert out[1][1].dist(b + Vec(1.0, 0.0) * (37.5 * k)) <= 1e-12  # from F_B's tip
+    assert [start for _, start in out[2:]] == [c, c, a]
+    # F_B 60 mm long from b, at the right edge of the lever, runs 60 mm out of it: past a
+    # margin of 40 mm it arrives from inside, within one of 70 mm it leaves as usual
+    ext = (0.0, 0.0, 0.3, 0.2)
+    pair = [(b, right, "F_B", "vector"), (b, left, "Ф_3", "vector")]
+    out = load_sides(pair, k, [60.0, 20.0], ext, slack=40.0)
+    assert out[0] == (True, b)
+    assert out[1][0] is False and out[1][1].dist(b + Vec(-1.0, 0.0) * (60.0 * k)) <= 1e-12
+    assert load_sides(pair[:1], k, [60.0], ext, slack=70.0) == [(False, b)]
+    # one of its sense goes on from its tip: the point itself, where it arrives
+    same = [(b, right, "F_B", "vector"), (b, Vec(600.0, 20.0), "Ф_3", "vector")]
+    assert load_sides(same, k, [60.0, 20.0], ext, slack=40.0) == [(True, b), (False, b)]
+
+
+def test_forces_along_one_line_at_a_mechanism_point_are_drawn_head_to_tail() -> None:
+    """On the mechanism two forces of one sense along one line at one point (Φ₅ along F_D at
+    the slider D) are drawn head to tail on their line of action, the shorter from the tip of
+    the longer; a force across them, or at another point, from its own point."""
+    d, s = Vec(0.5, 0.3), Vec(0.2, 0.2)
+    left = Vec(-1.0, 0.0)
+    loads = [
+        (d, Vec(0.0, -245.0), "G_5", "vector"),
+        (d, left * 148.0, "Ф_5", "vector"),
+        (d, left * 2200.0, "F_D", "vector"),
+        (s, left * 30.0, "Ф_4", "vector"),
+    ]
+    k = 0.0025  # m per mm
+    lengths = [24.5, 14.8, 22.0, 12.0]
+    starts = chain_starts(loads, k, lengths)
+    assert starts[0] == d and starts[2] == d and starts[3] == s
+    assert starts[1].dist(d + left * (22.0 * k)) <= 1e-12
