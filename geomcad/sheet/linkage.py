@@ -19,6 +19,7 @@ asks for), the views' titles 5 mm.
 
 from __future__ import annotations
 
+import itertools
 import math
 import re
 from collections.abc import Callable, Mapping, Sequence
@@ -52,12 +53,15 @@ from geomcad.sheet.compose import (
     Layout as Arranged,
 )
 from geomcad.sheet.drawing import SHORT_MM, Viewport
-from geomcad.sheet.frame import FORMATS
+from geomcad.sheet.frame import FORMATS, text_at
 from geomcad.sheet.lang import Words, current, per_language
+from geomcad.sheet.model import Polyline
 from geomcad.sheet.motion import Frames, turn
 from geomcad.sheet.plans import markup_of
 from geomcad.sheet.scale import Scale, angle_places, fmt_column, fmt_fixed
-from geomcad.sheet.scheme import Body, draw_scheme
+from geomcad.sheet.scheme import Body, draw_scheme, is_block
+from geomcad.sheet.symbols import HATCH_LEN, SLIDER_SIZE
+from geomcad.sheet.text import box, parse
 from geomcad.sheet.views import AxisSpec, Curve, Diagram, PlanView, Steps, Table, Text
 
 WORDS = Words(__package__, "linkage")
@@ -428,6 +432,9 @@ def _principal(s: Solved) -> tuple[Position, int | None]:
     return s.drawn[0], 0
 
 
+#: A yoke's slot on the mechanism view: its sides this far (mm) either side of its axis, clear
+#: of the block that slides in it (GOST 2.770's slotted link).
+SLOT_HALF_MM = SLIDER_SIZE[1] / 2.0 + 0.5
 #: Points nearer than this fraction of the crank's length are at one place (one label).
 _SAME = tol.SAME_PLACE
 #: A slotted link runs on past its block by this fraction of the block's distance from the pivot.
@@ -435,11 +442,14 @@ SLOT_PAST = 1.15
 
 
 def link_bodies(
-    lk: Linkage, P: Position, links: Sequence[int] | None = None
+    lk: Linkage, P: Position, links: Sequence[int] | None = None, slot_half: float = 0.0
 ) -> dict[str, list[Body]]:
     """Each link's body in position P through all its points: a slotted link along its slide,
     past the block; a PRP yoke with its slot through the block; a link carrying a guide with
-    the guide run on to its slider. ``links``: those to draw (default: every moving link)."""
+    the guide run on to its slider. ``links``: those to draw (default: every moving link).
+    ``slot_half`` (model units): a yoke's slot drawn as a slot, the outline of its two sides
+    this far either side of its axis (the block slides between them), its rod from the slot's
+    side; 0: the slot as its axis line."""
     out: dict[str, list[Body]] = {}
     for link in lk.moving_links if links is None else links:
         uniq: list[Vec] = []
@@ -471,8 +481,16 @@ def link_bodies(
             # its slot across it, over the block's whole travel, in every position alike
             yk = yoke(lk, g)
             E, d = P.pos[g.joint], g.guide.direction
-            rod = Body.of([E, E + d * yk.rod])
-            slot = Body.of([E - P.slide[g.links[0]] * yk.slot, E + P.slide[g.links[0]] * yk.slot])
+            u = P.slide[g.links[0]]
+            if slot_half > 0.0:
+                w = u.perp() * slot_half
+                e0, e1 = E - u * yk.slot, E + u * yk.slot
+                slot = Body.of([e0 + w, e1 + w, e1 - w, e0 - w], closed=True)
+                side = slot_half / max(abs(d.cross(u)), 0.2)  # the slot's side along the rod
+                rod = Body.of([E + d * math.copysign(side, yk.rod), E + d * yk.rod])
+            else:
+                slot = Body.of([E - u * yk.slot, E + u * yk.slot])
+                rod = Body.of([E, E + d * yk.rod])
             out[str(link)] = [rod, slot, *(out.get(str(link), []) if len(uniq) > 2 else [])]
         # a guide on this link runs on to the slider it carries
         for g2 in lk.groups:
@@ -490,12 +508,14 @@ def link_bodies(
 class Yoke:
     """How a PRP group's yoke is drawn: ``rod`` (model units, signed along the guide's
     direction) from its point on the guide to the rod's end, ``slot`` the slot's half length,
-    ``guide`` the point of the fixed guide (the frame's, the same in every position) the rod
-    slides in, clear of the yoke's travel on the side away from the crank's pivot."""
+    ``guide`` the middle of the fixed guide (the frame's, the same in every position) the rod
+    slides in, clear of the yoke's travel on the side away from the crank's pivot, and
+    ``half`` the guide's half length: the rod's travel, so that the guide is drawn over it."""
 
     rod: float
     slot: float
     guide: Vec
+    half: float = 0.0
 
 
 _YOKES: dict[int, tuple[Linkage, dict[int, Yoke]]] = {}
@@ -516,11 +536,12 @@ def yoke(lk: Linkage, g: Group) -> Yoke:
         t = (E - [q.x, q.y]) @ [d.x, d.y]
         t0, t1 = float(t.min()), float(t.max())
         side = -1.0 if (lk.frame[lk.pivot] - q).dot(d) >= 0.5 * (t0 + t1) else 1.0
-        clear = 0.5 * lk.length  # the guide this far past the yoke's travel
-        tg = t0 - clear if side < 0.0 else t1 + clear
-        rod = side * (max(abs(t1 - tg), abs(t0 - tg)) + 0.3 * lk.length)
+        # the guide over the rod's travel (the yoke's), this far past the yoke's travel
+        clear, half = 0.5 * lk.length, 0.5 * (t1 - t0)
+        tg = t0 - clear - half if side < 0.0 else t1 + clear + half
+        rod = side * (max(abs(t1 - tg), abs(t0 - tg)) + half + 0.2 * lk.length)
         slot = SLOT_PAST * max(float(np.max(np.hypot(*(A - E).T))), lk.length)
-        held[1][g.index] = Yoke(rod, slot, q + d * tg)
+        held[1][g.index] = Yoke(rod, slot, q + d * tg, half)
     return held[1][g.index]
 
 
@@ -590,20 +611,12 @@ class _Mechanism(View):
         P0, k0 = _principal(s)
         for i, P in enumerate(s.drawn):
             if i != k0:
-                for bodies in link_bodies(lk, P).values():
-                    for b in bodies:
+                for bs in link_bodies(lk, P).values():
+                    for b in bs:
                         v.polyline(b.points, "thin", closed=b.closed)
-        numbered: list[Vec] = []
-        # the crank's joint, the output and every named point whose path is traced
-        for name in dict.fromkeys((lk.joint, lk.output, *(p.name for p in lk.points))):
-            pts = [P.pos[name] for P in s.drawn]
-            for q in pts:
-                v.dot(q)
-            vels = [P.vel[name] for P in s.drawn]
-            position_numbers(v, pts, vels, lk.frame[lk.pivot], numbered)
-            numbered = pts
         labels: dict[str, str] = {}
         mech = scheme(lk, P0)  # the pairs where the principal position has them
+        bodies = link_bodies(lk, P0, slot_half=v.scale.model(SLOT_HALF_MM))
         first: dict[str, str] = {}  # the names of the points at one place, on its first pair
         for pair in mech.pairs:
             name = pair.name.split(":")[0]
@@ -622,10 +635,41 @@ class _Mechanism(View):
             if pair.kind == "P" and mech.frame in pair.links and pair.name not in guides
             and pair.name.split(":")[0] in P0.pos
         }  # fmt: skip
+        guided = {name.split(":")[0] for name in travel}
+        for g in lk.groups:  # a yoke's guide over its rod's travel
+            if g.kind == "PRP" and g.guide is not None:
+                yk, gd = yoke(lk, g), g.guide.direction
+                travel[f"{g.joint}:{g.links[1]}"] = [yk.guide - gd * yk.half,
+                                                     yk.guide + gd * yk.half]  # fmt: skip
+        blocks = [
+            (v.p(pair.at), v.paper_dir(pair.axis))
+            for pair in mech.pairs
+            if pair.kind == "P" and pair.axis is not None
+            and any(is_block(mech, k) and k not in bodies for k in pair.links)
+        ]  # fmt: skip
+        numbered: list[Vec] = []
+        taken: list[Box] = []
+        # the crank's joint, the output and every named point whose path is traced
+        for name in dict.fromkeys((lk.joint, lk.output, *(p.name for p in lk.points))):
+            pts = [P.pos[name] for P in s.drawn]
+            for q in pts:
+                if not any(_in_block(v.p(q), c, u) for c, u in blocks):
+                    v.dot(q)
+            vels = [P.vel[name] for P in s.drawn]
+            clear = GUIDE_CLEAR_MM if name in guided else 0.0
+            position_numbers(v, pts, vels, lk.frame[lk.pivot], numbered, clear, taken)
+            numbered = pts
         lettered = set(labels.values())
         marked = {k: ", ".join(markup_of(n) for n in t.split(", ")) for k, t in labels.items()}
-        draw_scheme(v, mech, bodies=link_bodies(lk, P0), pair_labels=marked, label_height=3.5,
-                    guides=guides, travel=travel)  # fmt: skip
+        numbers: dict[str, Vec] = {}
+        for g in lk.groups:  # a yoke's number on its rod between the slot and the guide
+            if g.kind == "PRP" and g.guide is not None:
+                yk, gd = yoke(lk, g), g.guide.direction
+                near = yk.guide - gd * math.copysign(yk.half, yk.rod)
+                numbers[str(g.links[1])] = (P0.pos[g.joint] + near) * 0.5
+        draw_scheme(v, mech, bodies=bodies, pair_labels=marked, label_height=3.5,
+                    guides=guides, travel=travel, link_space=LINK_SPACE,
+                    link_labels=numbers)  # fmt: skip
         for p in lk.points:
             if p.name not in lettered:
                 v.dot(P0.pos[p.name])
@@ -633,13 +677,42 @@ class _Mechanism(View):
         omega_arrow(v, lk, P0)
 
 
-#: Consecutive positions of one point nearer each other than this (mm on the drawing) share one
-#: number label ("4–6"): labels there could not each stand next to their own point.
+#: A position of one point that falls within this (mm on the drawing) of the same position of a
+#: point numbered before is numbered once (a scotch yoke's slider at the crank's extremes).
 SHARE_MM = 2.5
 #: The numbers of the positions are written this high (mm; GOST 2.304's least) and kept this
 #: much further than other labels from each other (mm), so that two numbers never read as one.
 NUMBER_H = 2.5
 NUMBER_SPACE = 0.8
+#: The links' numbers (3.5 mm) keep this much further (mm) from other texts, so that a link's
+#: number never reads as a position's.
+LINK_SPACE = 1.6
+#: Positions of one point on one side of its path nearer each other than this (mm) are a crowd:
+#: their numbers cannot each stand beside their own point, so they stand in a row off the path,
+#: each joined to its point by a leader.
+CROWD_MM = 3.6
+#: A row's numbers stand this far (mm) off the outermost point of their crowd, this far apart.
+ROW_OFF_MM, ROW_GAP_MM = 2.2, 1.2
+#: A number shifted along its row more than this (mm) from straight across its point gets a
+#: leader even off a crowd (a slider's number beyond its hatched guide).
+ROW_SHIFT_MM = 0.8
+#: A leader starts this far (mm) from its point (clear of the dot) and stops this far short of
+#: its number's box.
+LEADER_FROM_MM, LEADER_TO_MM = 0.6, 0.4
+
+Box = tuple[float, float, float, float]
+#: The room (mm) a slider's numbers keep from its path: its hatched guide (GOST 2.770) on either
+#: side of the block.
+GUIDE_CLEAR_MM = SLIDER_SIZE[1] / 2.0 + 0.6 + HATCH_LEN + 0.3
+
+
+def _in_block(q: tuple[float, float], c: tuple[float, float], u: tuple[float, float]) -> bool:
+    """Whether the paper point ``q`` falls inside a slider block drawn at ``c`` along ``u``
+    (:data:`~geomcad.sheet.symbols.SLIDER_SIZE`): a mark there would be hidden in the block."""
+    dx, dy = q[0] - c[0], q[1] - c[1]
+    a = abs(dx * u[0] + dy * u[1])
+    b = abs(-dx * u[1] + dy * u[0])
+    return a <= SLIDER_SIZE[0] / 2.0 and b <= SLIDER_SIZE[1] / 2.0
 
 
 def position_numbers(
@@ -648,51 +721,201 @@ def position_numbers(
     vels: Sequence[Vec],
     pivot: Vec,
     numbered: Sequence[Vec] = (),
+    clear: float = 0.0,
+    taken: list[Box] | None = None,
 ) -> None:
     """Number the positions ``pts`` of one point on its path (``vels``: its velocities there),
     as a drawing of the mechanism in its positions does: the point's letter stands once (at the
-    principal position, by the scheme), each position gets only its number, placed by the
-    sheet's label placer clear of the lines and of the other numbers.
+    principal position, by the scheme), each position gets its own number next to its point.
 
     A number is set off the path across it: on the outer side (away from the centre of the
     circle through the positions; on a line, away from the crank's ``pivot``) where the point
     runs one way round, on the inner side where it runs back (a rocker's or a slider's return
     stroke), so that a position of the return stroke that falls on one of the working stroke is
-    numbered on the other side. Consecutive positions nearer each other than :data:`SHARE_MM`
-    share one label, ``4–6`` (never a list: "3, 9" beside "10" would read as one number).
+    numbered on the other side. A number standing alone is placed by the sheet's label placer
+    clear of the lines and the other labels. Positions on one side nearer each other than
+    :data:`CROWD_MM` are a crowd (a slider near its dead point, a rocker at its extreme): their
+    numbers stand in a row off the crowd, in the order of their points along it, each joined to
+    its point by a thin leader, never a shared "4–8". ``clear`` (mm): room the numbers keep from
+    the path (a slider's hatched guide): every number then stands in its side's row beyond it.
+    ``taken``: the boxes (paper mm) of the rows numbered before in this view, pushed clear of.
     ``numbered``: the same positions of a point numbered before; where this point's position
     falls on that one's (a scotch yoke's slider at the crank's extremes), its number stands
     once."""
-    groups: list[list[int]] = []
-    for i, q in enumerate(pts):
-        if i < len(numbered) and v.mm((q - numbered[i]).norm) < SHARE_MM:
-            continue
-        g = groups[-1] if groups else []
-        if g and g[-1] == i - 1 and all(v.mm((q - pts[j]).norm) < SHARE_MM for j in g):
-            g.append(i)
-        else:
-            groups.append([i])
+    keep = [
+        i
+        for i, q in enumerate(pts)
+        if not (i < len(numbered) and v.mm((q - numbered[i]).norm) < SHARE_MM)
+    ]
+    if not keep:
+        return
     centre = _centre_of(pts)
+    line_n = Vec(0.0, 0.0)
     if centre is None:  # along a line: across it, on the side away from the pivot
         t = max((q - pts[0] for q in pts), key=lambda d: d.norm)
-        n = Vec(-t.y, t.x)
-        if n.x * (pts[0].x - pivot.x) + n.y * (pts[0].y - pivot.y) < 0.0:
-            n = Vec(t.y, -t.x)
-    marks: list[tuple[list[int], Vec, Vec, float]] = []
-    for g in groups:
-        at = Vec(sum(pts[j].x for j in g) / len(g), sum(pts[j].y for j in g) / len(g))
-        if centre is not None:
-            n = at - centre
-            t = Vec(-n.y, n.x)  # counter-clockwise round the centre
-        runs = sum(vels[j].x * t.x + vels[j].y * t.y for j in g)
-        marks.append((g, at, n, math.copysign(len(g), runs) if runs else 0.0))
+        line_n = Vec(-t.y, t.x)
+        if line_n.x * (pts[0].x - pivot.x) + line_n.y * (pts[0].y - pivot.y) < 0.0:
+            line_n = Vec(t.y, -t.x)
+    normal: dict[int, Vec] = {}
+    runs: dict[int, float] = {}
+    for i in keep:
+        n = line_n if centre is None else pts[i] - centre
+        t = Vec(-n.y, n.x)  # counter-clockwise round the centre
+        normal[i] = n.unit() if n.norm > 0.0 else n
+        runs[i] = vels[i].x * t.x + vels[i].y * t.y
     # the sense most positions run in (a crank's whole turn, a rocker's working stroke) outside
-    ahead = sum(m[3] for m in marks) >= 0.0
-    for g, at, n, runs in marks:
-        side = -1.0 if runs and (runs > 0.0) != ahead else 1.0
-        prefer = (side * n.x, side * n.y) if n.norm > 0.0 else None
-        text = str(g[0]) if len(g) == 1 else f"{g[0]}\u2013{g[-1]}"
-        v.label(at, text, NUMBER_H, prefer=prefer, clear=1.0, space=NUMBER_SPACE)
+    ahead = sum(math.copysign(1.0, r) for r in runs.values() if r) >= 0.0
+    out: dict[int, tuple[float, float]] = {}  # each number's side, a paper direction
+    for i in keep:
+        side = -1.0 if runs[i] and (runs[i] > 0.0) != ahead else 1.0
+        out[i] = v.paper_dir(normal[i] * side)
+    paper = {i: v.p(pts[i]) for i in keep}
+    # the crowds: positions on one side within CROWD_MM of each other (single linkage)
+    crowd = {i: i for i in keep}
+
+    def root(i: int) -> int:
+        while crowd[i] != i:
+            i = crowd[i]
+        return i
+
+    for a, b in itertools.combinations(keep, 2):
+        same_side = out[a][0] * out[b][0] + out[a][1] * out[b][1] > 0.0
+        if same_side and math.dist(paper[a], paper[b]) < CROWD_MM:
+            crowd[root(b)] = root(a)
+    members: dict[int, list[int]] = {}
+    for i in keep:
+        members.setdefault(root(i), []).append(i)
+    rows: list[list[int]] = []
+    for g in members.values():
+        if clear > 0.0 or len(g) > 1:
+            rows.append(g)
+        else:
+            i = g[0]
+            v.label(pts[i], str(i), NUMBER_H, prefer=(out[i][0], -out[i][1]), clear=1.0,
+                    space=NUMBER_SPACE)  # fmt: skip
+    if clear > 0.0 and rows:  # beyond a guide: one row a side, whatever the spacing
+        by_side: dict[bool, list[int]] = {}
+        ref = out[keep[0]]
+        for g in rows:
+            for i in g:
+                by_side.setdefault(out[i][0] * ref[0] + out[i][1] * ref[1] > 0.0, []).append(i)
+        rows = list(by_side.values())
+    held = taken if taken is not None else []
+    for g in rows:
+        _number_row(v, g, paper, out, clear, held, leaders=len(g) > 1 and clear <= 0.0)
+
+
+def _number_row(
+    v: Viewport,
+    g: Sequence[int],
+    paper: Mapping[int, tuple[float, float]],
+    out: Mapping[int, tuple[float, float]],
+    clear: float,
+    taken: list[Box],
+    leaders: bool,
+) -> None:
+    """The numbers of the positions ``g`` in a row off their points (paper ``paper``, each
+    number's side ``out``): the row runs across the crowd's mean side, :data:`ROW_OFF_MM`
+    beyond its outermost point (and ``clear``), each number as near straight across its point as
+    the numbers' widths let it, pushed out past the rows ``taken``; a number joined to its point
+    by a leader where the row is a crowd's (``leaders``) or it stands shifted along the row."""
+    nx = sum(out[i][0] for i in g)
+    ny = sum(out[i][1] for i in g)
+    ln = math.hypot(nx, ny)
+    if ln == 0.0:
+        nx, ny, ln = out[g[0]][0], out[g[0]][1], 1.0
+    n = (nx / ln, ny / ln)
+    t = (-n[1], n[0])
+    sizes = {i: box(parse(str(i)), NUMBER_H) for i in g}
+    along = {i: abs(t[0]) * sizes[i][0] + abs(t[1]) * (sizes[i][1] + sizes[i][2]) for i in g}
+    across = {i: abs(n[0]) * sizes[i][0] + abs(n[1]) * (sizes[i][1] + sizes[i][2]) for i in g}
+    order = sorted(g, key=lambda i: paper[i][0] * t[0] + paper[i][1] * t[1])
+    want = [paper[i][0] * t[0] + paper[i][1] * t[1] for i in order]
+    # the numbers' centres along the row: as near their points as their widths allow (runs of
+    # touching numbers centred on their points' mean)
+    runs_: list[list[int]] = []
+    for k in range(len(order)):
+        runs_.append([k])
+        while len(runs_) > 1:
+            a, b = runs_[-2], runs_[-1]
+            ca, cb = _run_at(a, order, want, along), _run_at(b, order, want, along)
+            end_a = ca + sum(along[order[k2]] + ROW_GAP_MM for k2 in a) - ROW_GAP_MM
+            if end_a + ROW_GAP_MM <= cb:
+                break
+            runs_[-2:] = [a + b]
+    at: dict[int, float] = {}
+    for r in runs_:
+        x = _run_at(r, order, want, along)
+        for k in r:
+            i = order[k]
+            at[i] = x + along[i] / 2.0
+            x += along[i] + ROW_GAP_MM
+    depth = max(paper[i][0] * n[0] + paper[i][1] * n[1] for i in g) + ROW_OFF_MM + clear
+    for _ in range(12):  # out past the rows numbered before
+        boxes = {i: _row_box(t, n, at[i], depth, sizes[i], across[i]) for i in g}
+        if not any(_overlaps(b, o) for b in boxes.values() for o in taken):
+            break
+        depth += NUMBER_H
+    sheet = v.sheet
+    for i in g:
+        x0, y0 = boxes[i][0], boxes[i][1]
+        text_at(sheet, str(i), (x0, y0 + sizes[i][1]), NUMBER_H, role="label")
+        taken.append(boxes[i])
+        shift = abs(at[i] - (paper[i][0] * t[0] + paper[i][1] * t[1]))
+        if leaders or shift > ROW_SHIFT_MM:
+            _leader(sheet, paper[i], boxes[i])
+
+
+def _run_at(
+    r: Sequence[int], order: Sequence[int], want: Sequence[float], along: Mapping[int, float]
+) -> float:
+    """Where a run of touching numbers starts along the row: its numbers' centres as near, on
+    the mean, as they can be to their points."""
+    x, offs = 0.0, []
+    for k in r:
+        offs.append(x + along[order[k]] / 2.0)
+        x += along[order[k]] + ROW_GAP_MM
+    return sum(want[k] - o for k, o in zip(r, offs, strict=True)) / len(r)
+
+
+def _row_box(
+    t: tuple[float, float],
+    n: tuple[float, float],
+    s: float,
+    depth: float,
+    size: tuple[float, float, float],
+    across: float,
+) -> Box:
+    """The paper box of a number centred ``s`` along the row's direction ``t`` and with its
+    near side ``depth`` along ``n``."""
+    c = depth + across / 2.0
+    cx, cy = t[0] * s + n[0] * c, t[1] * s + n[1] * c
+    w, h = size[0], size[1] + size[2]
+    return (cx - w / 2.0, cy - h / 2.0, cx + w / 2.0, cy + h / 2.0)
+
+
+def _overlaps(a: Box, b: Box) -> bool:
+    g = NUMBER_SPACE
+    return a[0] < b[2] + g and b[0] < a[2] + g and a[1] < b[3] + g and b[1] < a[3] + g
+
+
+def _leader(sheet: Sheet, p: tuple[float, float], b: Box) -> None:
+    """A thin leader from point ``p`` (paper) to the box ``b`` of its number: from
+    :data:`LEADER_FROM_MM` off the point to :data:`LEADER_TO_MM` short of the box."""
+    cx, cy = (b[0] + b[2]) / 2.0, (b[1] + b[3]) / 2.0
+    dx, dy = cx - p[0], cy - p[1]
+    d = math.hypot(dx, dy)
+    if d == 0.0:
+        return
+    # where the line to the centre leaves the box, grown by LEADER_TO_MM
+    hw, hh = (b[2] - b[0]) / 2.0 + LEADER_TO_MM, (b[3] - b[1]) / 2.0 + LEADER_TO_MM
+    k = min(hw / abs(dx) if dx else math.inf, hh / abs(dy) if dy else math.inf)
+    end = (cx - dx * k, cy - dy * k)
+    if math.dist(p, end) <= LEADER_FROM_MM + 0.3:
+        return
+    u = (dx / d, dy / d)
+    sheet.add(Polyline(((p[0] + u[0] * LEADER_FROM_MM, p[1] + u[1] * LEADER_FROM_MM), end),
+                       "dimension"))  # fmt: skip
 
 
 def _centre_of(pts: Sequence[Vec]) -> Vec | None:
