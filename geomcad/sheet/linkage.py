@@ -55,7 +55,7 @@ from geomcad.sheet.compose import (
 from geomcad.sheet.drawing import SHORT_MM, Viewport
 from geomcad.sheet.frame import FORMATS, text_at
 from geomcad.sheet.lang import Words, current, per_language
-from geomcad.sheet.model import Polyline
+from geomcad.sheet.model import CircleItem, Polyline
 from geomcad.sheet.motion import Frames, turn
 from geomcad.sheet.plans import markup_of
 from geomcad.sheet.scale import Scale, angle_places, fmt_column, fmt_fixed
@@ -209,15 +209,24 @@ def _accel_positions(s: Solved) -> tuple[Position, ...]:
 
 
 def _trees(
-    s: Solved, accel: Sequence[Position], h: float = TEXT_H
+    s: Solved, accel: Sequence[Position], h: float = TEXT_H, enlarge: bool = False
 ) -> tuple[tuple[Tree, ...], _Mechanism, bool, dict[View, float]]:
     """The sheets' view trees (see the module's docstring), tables and orders written ``h``
     high, and the scales (model units per mm) the format is chosen to reach: the mechanism's
-    and the velocity plans'."""
+    and the velocity plans'. ``enlarge``: the crank in its positions enlarged beside the
+    mechanism (:class:`_CrankDetail`), where the mechanism's scale leaves it short."""
     lk = s.linkage
     n = len(s.drawn)
     second = n > PLANS_ON_SHEET
     mech = _Mechanism(s)
+    crank: _CrankDetail | None = None
+    if enlarge:
+        crank = _CrankDetail(s, detail_letter(s))
+        mech.detail = crank.letter
+
+    def mech_node() -> Tree:  # the mechanism, and its crank enlarged beside it
+        return mech if crank is None else Row(mech, crank)
+
     # vectors shorter than two arrowheads are drawn as their lettered end point (a note says so)
     vviews = [
         PlanView(P.vp, title=WORDS("position", i=i, phi=_deg(P.phi, s)), group="v",
@@ -258,15 +267,18 @@ def _trees(
         title_height=TITLE_H,
     )
     wants: dict[View, float] = {mech: lk.length / CRANK_MM}
+    if crank is not None:  # the detail reaches the crank's length the mechanism cannot
+        del wants[mech]
+        wants[crank] = lk.length / CRANK_MM
     for view in vviews:  # one scale for them all: each needs its room at it
         wants[view] = abs(lk.omega) * lk.length / PA_MM
     if second:
-        trees = (Column(mech, Row(diagrams, aplans, Column(tables, order))), vplans)
+        trees = (Column(mech_node(), Row(diagrams, aplans, Column(tables, order))), vplans)
         return trees, mech, True, wants
     sheet = Choice(
-        Column(Row(mech, vplans), Row(diagrams, aplans, Column(tables, order))),
-        Row(Column(mech, diagrams), Column(vplans, Row(aplans, Column(tables, order)))),
-        Column(Row(mech, vplans), Row(diagrams, aplans), Row(tables, order)),
+        Column(Row(mech_node(), vplans), Row(diagrams, aplans, Column(tables, order))),
+        Row(Column(mech_node(), diagrams), Column(vplans, Row(aplans, Column(tables, order)))),
+        Column(Row(mech_node(), vplans), Row(diagrams, aplans), Row(tables, order)),
     )
     return (sheet,), mech, False, wants
 
@@ -317,19 +329,29 @@ def _arranged(s: Solved) -> tuple[Layout, tuple[Arranged, ...]]:
     accel = _accel_positions(s)
     fmts = sheet_formats(s.linkage)
     made: list[tuple[tuple[Tree, ...], _Mechanism, bool, dict[View, float]]] = []
+    detail = False
 
     def make(i: int) -> Callable[[float], tuple[Tree, Mapping[View, float]]]:
         def tree(h: float) -> tuple[Tree, Mapping[View, float]]:
-            made.append(_trees(s, accel, h))
+            made.append(_trees(s, accel, h, detail))
             t, _, _, wants = made[-1]
             return t[i], {v: k for v, k in wants.items() if v in _views(t[i])}
 
         return tree
 
+    def made_of(t0: Tree) -> tuple[tuple[Tree, ...], _Mechanism, bool, dict[View, float]]:
+        return next(m for m in made if any(t0 is t for t in (m[0][0], *_alternatives(m[0][0]))))
+
     first = fit(make(0), fmts)
-    trees_all, mech, second, _ = next(
-        m for m in made if any(first[0] is t for t in (m[0][0], *_alternatives(m[0][0])))
-    )
+    trees_all, mech, second, _ = made_of(first[0])
+    k_mech = first[1].layout[mech].scale
+    if k_mech is not None and k_mech.mm(s.linkage.length) < DETAIL_BELOW * CRANK_MM:
+        # the long links set the mechanism's scale and leave the crank short: the crank with
+        # its numbered positions enlarged beside it (ESKD 2.305's detail view)
+        detail = True
+        made.clear()
+        first = fit(make(0), fmts)
+        trees_all, mech, second, _ = made_of(first[0])
     fitted = [first] + [fit(make(i), fmts) for i in range(1, len(trees_all))]
     trees = tuple(t for t, _ in fitted)
     sized = tuple(z for _, z in fitted)
@@ -594,6 +616,8 @@ class _Mechanism(View):
         )  # fmt: skip
         self.s = s
         self._ext = _mechanism_extent(s)
+        #: the letter of the crank's detail view (:class:`_CrankDetail`), where there is one
+        self.detail: str | None = None
 
     def extent(self) -> tuple[float, float, float, float]:
         return self._ext
@@ -655,6 +679,9 @@ class _Mechanism(View):
             for q in pts:
                 if not any(_in_block(v.p(q), c, u) for c, u in blocks):
                     v.dot(q)
+            if name == lk.joint and self.detail is not None:
+                mark_detail(v, lk.frame[lk.pivot], lk.length, self.detail)
+                continue  # the crank's positions are numbered on its detail view
             vels = [P.vel[name] for P in s.drawn]
             clear = GUIDE_CLEAR_MM if name in guided else 0.0
             position_numbers(v, pts, vels, lk.frame[lk.pivot], numbered, clear, taken)
@@ -677,6 +704,129 @@ class _Mechanism(View):
         omega_arrow(v, lk, P0)
 
 
+#: The letters of a detail view (ESKD 2.316: Cyrillic capitals, not Й О Х Ъ Ы Ь), and the Latin
+#: letters the first of them look like (a detail is never lettered like a point of the mechanism).
+DETAIL_LETTERS = "АБВГДЕЖИКЛМНПРСТУФЦЧШЭЮЯ"
+LOOKS_LIKE = {"А": "A", "В": "B", "Е": "E", "К": "K", "М": "M", "Н": "H", "Р": "P", "С": "C",
+              "Т": "T", "У": "Y"}  # fmt: skip
+#: The crank is drawn enlarged on a detail view of its own where the mechanism's scale draws it
+#: shorter than this share of :data:`CRANK_MM`: the detail then shows it at least twice as large
+#: (a crank a little short of the rule is left to the mechanism's view: a detail at the next
+#: GOST scale would show nothing more).
+DETAIL_BELOW = 0.5
+#: The crank's detail: its drawing reaches this many crank lengths round the pivot (the crank
+#: circle, the stubs of the links at the crank's joint, ω1 and the numbers).
+DETAIL_REACH = 1.9
+#: On the mechanism, the detail's circle round the crank: this much (mm) beyond the crank's
+#: circle; its leader and shelf (mm).
+DETAIL_RING_MM, DETAIL_LEADER_MM, DETAIL_SHELF_MM = 3.0, 6.0, 5.0
+
+
+def detail_letter(s: Solved) -> str:
+    """The letter of the crank's detail view: the first of :data:`DETAIL_LETTERS` that does not
+    look like the name of a point of the mechanism (Б where the crank's joint is A)."""
+    names = {*s.linkage.frame, *s.drawn[0].pos}
+    return next(c for c in DETAIL_LETTERS if LOOKS_LIKE.get(c, c) not in names)
+
+
+def mark_detail(v: Viewport, pivot: Vec, r: float, letter: str) -> None:
+    """The crank's detail marked on the mechanism (ESKD 2.305): a thin circle round the crank's
+    circle (radius ``r`` about ``pivot``), a leader from it up and to the right to a shelf
+    carrying the detail's ``letter``."""
+    ring = v.mm(r) + DETAIL_RING_MM
+    c = v.p(pivot)
+    v.sheet.add(CircleItem(c, ring, "thin"))
+    u = (math.cos(math.radians(45.0)), -math.sin(math.radians(45.0)))
+    a = (c[0] + u[0] * ring, c[1] + u[1] * ring)
+    b = (a[0] + u[0] * DETAIL_LEADER_MM, a[1] + u[1] * DETAIL_LEADER_MM)
+    e = (b[0] + DETAIL_SHELF_MM, b[1])
+    v.sheet.add(Polyline((a, b, e), "thin"))
+    text_at(v.sheet, letter, (b[0] + 0.8, b[1] - 0.8), TITLE_H, role="label")
+
+
+class _CrankDetail(View):
+    """The crank in its numbered positions enlarged (ESKD 2.305's detail view, titled by its
+    letter and its own μ_l): the crank's circle and its positions numbered, the crank in the
+    principal position in main lines with its support, the others thin, the links at the
+    crank's joint as stubs, ω1. Drawn where the long links set the mechanism's scale and leave
+    the crank under :data:`CRANK_MM` there."""
+
+    def __init__(self, s: Solved, letter: str) -> None:
+        super().__init__(
+            title=WORDS("crank_detail", letter=letter, last=len(s.drawn) - 1), group="crank",
+            title_height=5.0, margin=6.0, weight=0.5,
+        )  # fmt: skip
+        self.s = s
+        self.letter = letter
+        lk = s.linkage
+        O1, r = lk.frame[lk.pivot], DETAIL_REACH * lk.length
+        self._ext = (O1.x - r, O1.y - r, O1.x + r, O1.y + r)
+
+    def extent(self) -> tuple[float, float, float, float]:
+        return self._ext
+
+    def draw(self, d: Drawing, at: Placed) -> None:
+        v = at.viewport
+        assert v is not None
+        s = self.s
+        lk = s.linkage
+        O1 = lk.frame[lk.pivot]
+        reach = DETAIL_REACH * lk.length * 0.95
+        P0, k0 = _principal(s)
+        v.circle(O1, lk.length, "centre")
+        for i, P in enumerate(s.drawn):
+            A = P.pos[lk.joint]
+            role = "link" if i == k0 else "thin"
+            v.seg(O1, A, role)
+            # the links at the crank's joint, as far as the detail reaches
+            for q in _neighbours(lk, P, lk.joint):
+                u = (q - A).unit()
+                t = _ray_to_circle(A - O1, u, reach)
+                v.seg(A, A + u * t, role)
+        pts = [P.pos[lk.joint] for P in s.drawn]
+        for q in pts:
+            v.dot(q)
+        position_numbers(v, pts, [P.vel[lk.joint] for P in s.drawn], O1)
+        v.pivot(O1, _support_down(lk, P0))
+        v.joint(P0.pos[lk.joint])
+        v.label(O1, markup_of(lk.pivot), 3.5, clear=2.0)
+        v.label(P0.pos[lk.joint], markup_of(lk.joint), 3.5, clear=2.0)
+        v.label((O1 + P0.pos[lk.joint]) * 0.5, "1", 3.5, clear=1.0, space=LINK_SPACE)
+        omega_arrow(v, lk, P0)
+
+
+def _neighbours(lk: Linkage, P: Position, joint: str) -> list[Vec]:
+    """The points of position P that the links at ``joint`` (other than the crank) run to."""
+    out: list[Vec] = []
+    A = P.pos[joint]
+    for link in lk.moving_links:
+        names = list(lk.points_on(link))
+        if joint not in names or link == 1:
+            continue
+        for n in names:
+            q = P.pos[n]
+            if n != joint and q.dist(A) > tol.DERIVED * max(1.0, A.norm):
+                out.append(q)
+                break
+    return out
+
+
+def _ray_to_circle(p: Vec, u: Vec, r: float) -> float:
+    """How far along the unit ``u`` from ``p`` (relative to the circle's centre) the circle of
+    radius ``r`` is (0 where ``p`` lies outside it)."""
+    b = p.dot(u)
+    c = p.dot(p) - r * r
+    disc = b * b - c
+    return max(0.0, -b + math.sqrt(disc)) if disc >= 0.0 else 0.0
+
+
+def _support_down(lk: Linkage, P: Position) -> tuple[float, float]:
+    """The crank's support on the detail: pointing away from the crank (down where it leaves
+    room)."""
+    a = P.pos[lk.joint] - lk.frame[lk.pivot]
+    return (0.0, -1.0) if a.y >= -0.5 * a.norm else (0.0, 1.0)
+
+
 #: A position of one point that falls within this (mm on the drawing) of the same position of a
 #: point numbered before is numbered once (a scotch yoke's slider at the crank's extremes).
 SHARE_MM = 2.5
@@ -693,6 +843,9 @@ LINK_SPACE = 1.6
 CROWD_MM = 3.6
 #: A row's numbers stand this far (mm) off the outermost point of their crowd, this far apart.
 ROW_OFF_MM, ROW_GAP_MM = 2.2, 1.2
+#: A crowd's row stands at least this share of its numbers' largest shift along it off the
+#: crowd, so that no leader runs flatter than about 55° to the row.
+ROW_STEEP = 0.7
 #: A number shifted along its row more than this (mm) from straight across its point gets a
 #: leader even off a crowd (a slider's number beyond its hatched guide).
 ROW_SHIFT_MM = 0.8
@@ -770,7 +923,8 @@ def position_numbers(
         side = -1.0 if runs[i] and (runs[i] > 0.0) != ahead else 1.0
         out[i] = v.paper_dir(normal[i] * side)
     paper = {i: v.p(pts[i]) for i in keep}
-    # the crowds: positions on one side within CROWD_MM of each other (single linkage)
+    # the crowds: positions within CROWD_MM of each other (single linkage); on a slider's
+    # guide (``clear``), each stroke's positions a row on its own side
     crowd = {i: i for i in keep}
 
     def root(i: int) -> int:
@@ -779,52 +933,76 @@ def position_numbers(
         return i
 
     for a, b in itertools.combinations(keep, 2):
-        same_side = out[a][0] * out[b][0] + out[a][1] * out[b][1] > 0.0
-        if same_side and math.dist(paper[a], paper[b]) < CROWD_MM:
+        if clear > 0.0:
+            near = out[a][0] * out[b][0] + out[a][1] * out[b][1] > 0.0
+        else:
+            near = math.dist(paper[a], paper[b]) < CROWD_MM
+        if near:
             crowd[root(b)] = root(a)
     members: dict[int, list[int]] = {}
     for i in keep:
         members.setdefault(root(i), []).append(i)
-    rows: list[list[int]] = []
+    held = taken if taken is not None else []
     for g in members.values():
-        if clear > 0.0 or len(g) > 1:
-            rows.append(g)
-        else:
+        if clear <= 0.0 and len(g) == 1:
             i = g[0]
             v.label(pts[i], str(i), NUMBER_H, prefer=(out[i][0], -out[i][1]), clear=1.0,
                     space=NUMBER_SPACE)  # fmt: skip
-    if clear > 0.0 and rows:  # beyond a guide: one row a side, whatever the spacing
-        by_side: dict[bool, list[int]] = {}
-        ref = out[keep[0]]
-        for g in rows:
-            for i in g:
-                by_side.setdefault(out[i][0] * ref[0] + out[i][1] * ref[1] > 0.0, []).append(i)
-        rows = list(by_side.values())
-    held = taken if taken is not None else []
-    for g in rows:
-        _number_row(v, g, paper, out, clear, held, leaders=len(g) > 1 and clear <= 0.0)
+            continue
+        # the row's side: the crowd's mean side of its path, else the other where fewer lines
+        # cross it (a crowd at a rocker's extreme, its links on one side)
+        sx, sy = sum(out[i][0] for i in g), sum(out[i][1] for i in g)
+        if math.hypot(sx, sy) < 0.5 * len(g):  # both strokes: the path's outer side
+            o = v.paper_dir(normal[g[0]])
+            sx, sy = o[0], o[1]
+        ln = math.hypot(sx, sy) or 1.0
+        mean = (sx / ln, sy / ln)
+        sides = [mean] if clear > 0.0 else [mean, (-mean[0], -mean[1])]
+        _number_row(v, g, paper, sides, clear, held, leaders=clear <= 0.0)
 
 
 def _number_row(
     v: Viewport,
     g: Sequence[int],
     paper: Mapping[int, tuple[float, float]],
-    out: Mapping[int, tuple[float, float]],
+    sides: Sequence[tuple[float, float]],
     clear: float,
     taken: list[Box],
     leaders: bool,
 ) -> None:
-    """The numbers of the positions ``g`` in a row off their points (paper ``paper``, each
-    number's side ``out``): the row runs across the crowd's mean side, :data:`ROW_OFF_MM`
-    beyond its outermost point (and ``clear``), each number as near straight across its point as
-    the numbers' widths let it, pushed out past the rows ``taken``; a number joined to its point
-    by a leader where the row is a crowd's (``leaders``) or it stands shifted along the row."""
-    nx = sum(out[i][0] for i in g)
-    ny = sum(out[i][1] for i in g)
-    ln = math.hypot(nx, ny)
-    if ln == 0.0:
-        nx, ny, ln = out[g[0]][0], out[g[0]][1], 1.0
-    n = (nx / ln, ny / ln)
+    """The numbers of the positions ``g`` in a row off their points (paper ``paper``): the row
+    runs across the first of the paper directions ``sides`` that crosses the fewest drawn lines
+    (a crowd's two sides of its path), :data:`ROW_OFF_MM` beyond its outermost point (and
+    ``clear``), each number as near straight across its point as the numbers' widths let it,
+    pushed out past the rows ``taken``; a number joined to its point by a leader where the row
+    is a crowd's (``leaders``) or it stands shifted along the row."""
+    best: tuple[float, dict[int, Box], dict[int, float], tuple[float, float]] | None = None
+    for k, n in enumerate(sides):
+        boxes, shifts = _row_boxes(g, paper, n, clear, taken)
+        cost = _ink_crossed(v.sheet, list(boxes.values())) + 0.5 * k
+        if best is None or cost < best[0]:
+            best = cost, boxes, shifts, n
+    assert best is not None
+    _, boxes, shifts, _ = best
+    sheet = v.sheet
+    for i in g:
+        up = box(parse(str(i)), NUMBER_H)[1]
+        text_at(sheet, str(i), (boxes[i][0], boxes[i][1] + up), NUMBER_H, role="label")
+        taken.append(boxes[i])
+        if leaders or shifts[i] > ROW_SHIFT_MM:
+            _leader(sheet, paper[i], boxes[i])
+
+
+def _row_boxes(
+    g: Sequence[int],
+    paper: Mapping[int, tuple[float, float]],
+    n: tuple[float, float],
+    clear: float,
+    taken: Sequence[Box],
+) -> tuple[dict[int, Box], dict[int, float]]:
+    """The boxes of a row of the numbers of ``g`` on the side ``n`` (a paper unit vector) of
+    their points, and how far (mm) each stands shifted along the row from straight across its
+    point."""
     t = (-n[1], n[0])
     sizes = {i: box(parse(str(i)), NUMBER_H) for i in g}
     along = {i: abs(t[0]) * sizes[i][0] + abs(t[1]) * (sizes[i][1] + sizes[i][2]) for i in g}
@@ -850,20 +1028,45 @@ def _number_row(
             i = order[k]
             at[i] = x + along[i] / 2.0
             x += along[i] + ROW_GAP_MM
-    depth = max(paper[i][0] * n[0] + paper[i][1] * n[1] for i in g) + ROW_OFF_MM + clear
+    shifts = {i: abs(at[i] - (paper[i][0] * t[0] + paper[i][1] * t[1])) for i in g}
+    # far enough out that the leaders to the numbers shifted most stay steep (a leader run
+    # nearly along the row would pass under its neighbours)
+    off = max(ROW_OFF_MM, ROW_STEEP * max(shifts.values())) if len(g) > 1 else ROW_OFF_MM
+    depth = max(paper[i][0] * n[0] + paper[i][1] * n[1] for i in g) + off + clear
     for _ in range(12):  # out past the rows numbered before
         boxes = {i: _row_box(t, n, at[i], depth, sizes[i], across[i]) for i in g}
         if not any(_overlaps(b, o) for b in boxes.values() for o in taken):
             break
         depth += NUMBER_H
-    sheet = v.sheet
-    for i in g:
-        x0, y0 = boxes[i][0], boxes[i][1]
-        text_at(sheet, str(i), (x0, y0 + sizes[i][1]), NUMBER_H, role="label")
-        taken.append(boxes[i])
-        shift = abs(at[i] - (paper[i][0] * t[0] + paper[i][1] * t[1]))
-        if leaders or shift > ROW_SHIFT_MM:
-            _leader(sheet, paper[i], boxes[i])
+    return boxes, shifts
+
+
+def _ink_crossed(sheet: Sheet, boxes: Sequence[Box]) -> float:
+    """How many drawn line segments of ``sheet`` cross the ``boxes`` (paper mm), all told
+    (Liang–Barsky's clipping of every segment against each box)."""
+    segs = [
+        (*a, *b)
+        for it in sheet.items
+        if isinstance(it, Polyline) and not it.fill
+        for a, b in itertools.pairwise((*it.points, *it.points[:1]) if it.closed else it.points)
+    ]
+    if not segs or not boxes:
+        return 0.0
+    x0, y0, x1, y1 = np.asarray(segs, dtype=float).T
+    dx, dy = x1 - x0, y1 - y0
+    total = 0
+    for bx0, by0, bx1, by1 in boxes:
+        lo, hi = np.zeros_like(x0), np.ones_like(x0)
+        ok = np.ones_like(x0, dtype=bool)
+        for p, q in ((-dx, x0 - bx0), (dx, bx1 - x0), (-dy, y0 - by0), (dy, by1 - y0)):
+            par = p == 0.0
+            ok &= ~(par & (q < 0.0))
+            with np.errstate(divide="ignore", invalid="ignore"):
+                r = np.where(par, 0.0, q / np.where(par, 1.0, p))
+            lo = np.where(~par & (p < 0.0), np.maximum(lo, r), lo)
+            hi = np.where(~par & (p > 0.0), np.minimum(hi, r), hi)
+        total += int(np.count_nonzero(ok & (lo <= hi)))
+    return float(total)
 
 
 def _run_at(
