@@ -176,6 +176,16 @@ def test_a_sliders_guide_is_hatched_over_its_travel_on_both_sides() -> None:
     assert set(spans) == {1, -1}, "the guide is not hatched on both sides"
     for side in spans.values():
         assert min(side) <= min(ts) and max(side) >= max(ts), (min(side), max(side), ts)
+    # no number stands in the guide or its hatching: B's numbers beyond it
+    inside = []
+    for ts_ in _numbers(sheet).values():
+        for t in ts_:
+            c = _centre(t)
+            along = (c[0] - ref[0]) * u[0] + (c[1] - ref[1]) * u[1]
+            off = abs((c[0] - ref[0]) * u[1] - (c[1] - ref[1]) * u[0])
+            if min(ts) <= along <= max(ts) and off < GUIDE_CLEAR_MM + t.height / 2.0 - 0.1:
+                inside.append(t.text)
+    assert not inside, inside
 
 
 def test_no_position_mark_is_hidden_inside_a_block() -> None:
