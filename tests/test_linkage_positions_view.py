@@ -10,7 +10,7 @@ import math
 import tomllib
 from pathlib import Path
 
-from layout import layout_problems
+from layout import findings, layout_problems
 
 from geomcad.geom import Vec
 from geomcad.linkage import parse
@@ -113,6 +113,27 @@ def test_a_crowds_numbers_stand_in_a_row_each_with_a_leader_to_its_point() -> No
     for k, (a, b) in enumerate(segs):
         for c, e in segs[k + 1 :]:
             assert not _crosses(a, b, c, e)
+
+
+def test_a_rows_number_moves_off_a_line_that_crosses_it() -> None:
+    """Lines drawn across a crowd's row (other positions of the links): each number moves to
+    the nearest place no line crosses, still joined to its point by a leader."""
+    pts, vels = _crowd()
+    d: Drawing = start("A3", TitleBlock(title="t", designation="x"))
+    v = d.viewport(Scale(0.001, "l"), (0.0, 0.0), (200.0, 200.0))
+    for q in pts:
+        v.dot(q)
+    # lines fanning out across both sides of the crowd, where the rows would stand
+    for k in range(-2, 3):
+        a = math.radians(61.5 + 2.5 * k)
+        u = Vec(math.cos(a), math.sin(a))
+        v.seg(u * 0.06, u * 0.11, "thin")
+    position_numbers(v, pts, vels, Vec(0.0, 0.0))
+    sheet = d.finish()
+    nums = _numbers(sheet)
+    assert sorted(nums) == list(range(len(pts)))
+    assert not [f for f in findings(sheet) if f.kind in ("tick-label", "label-line")]
+    assert layout_problems(sheet) == []
 
 
 def _crosses(a: tuple[float, float], b: tuple[float, float], c: tuple[float, float],

@@ -55,7 +55,7 @@ from geomcad.sheet.compose import (
 from geomcad.sheet.drawing import SHORT_MM, Viewport
 from geomcad.sheet.frame import FORMATS, text_at
 from geomcad.sheet.lang import Words, current, per_language
-from geomcad.sheet.model import CircleItem, Polyline
+from geomcad.sheet.model import ArcItem, CircleItem, Polyline
 from geomcad.sheet.motion import Frames, turn
 from geomcad.sheet.plans import markup_of
 from geomcad.sheet.scale import Scale, angle_places, fmt_column, fmt_fixed
@@ -671,21 +671,12 @@ class _Mechanism(View):
             if pair.kind == "P" and pair.axis is not None
             and any(is_block(mech, k) and k not in bodies for k in pair.links)
         ]  # fmt: skip
-        numbered: list[Vec] = []
-        taken: list[Box] = []
         # the crank's joint, the output and every named point whose path is traced
-        for name in dict.fromkeys((lk.joint, lk.output, *(p.name for p in lk.points))):
-            pts = [P.pos[name] for P in s.drawn]
-            for q in pts:
-                if not any(_in_block(v.p(q), c, u) for c, u in blocks):
-                    v.dot(q)
-            if name == lk.joint and self.detail is not None:
-                mark_detail(v, lk.frame[lk.pivot], lk.length, self.detail)
-                continue  # the crank's positions are numbered on its detail view
-            vels = [P.vel[name] for P in s.drawn]
-            clear = GUIDE_CLEAR_MM if name in guided else 0.0
-            position_numbers(v, pts, vels, lk.frame[lk.pivot], numbered, clear, taken)
-            numbered = pts
+        traced = list(dict.fromkeys((lk.joint, lk.output, *(p.name for p in lk.points))))
+        for name in traced:
+            for P in s.drawn:
+                if not any(_in_block(v.p(P.pos[name]), c, u) for c, u in blocks):
+                    v.dot(P.pos[name])
         lettered = set(labels.values())
         marked = {k: ", ".join(markup_of(n) for n in t.split(", ")) for k, t in labels.items()}
         numbers: dict[str, Vec] = {}
@@ -702,13 +693,20 @@ class _Mechanism(View):
                 v.dot(P0.pos[p.name])
                 v.label(P0.pos[p.name], markup_of(p.name), 3.5, clear=1.0)
         omega_arrow(v, lk, P0)
+        # the positions numbered last, clear of every line drawn
+        numbered: list[Vec] = []
+        taken: list[Box] = []
+        for name in traced:
+            pts = [P.pos[name] for P in s.drawn]
+            if name == lk.joint and self.detail is not None:
+                mark_detail(v, lk.frame[lk.pivot], lk.length, self.detail)
+                continue  # the crank's positions are numbered on its detail view
+            vels = [P.vel[name] for P in s.drawn]
+            clear = GUIDE_CLEAR_MM if name in guided else 0.0
+            position_numbers(v, pts, vels, lk.frame[lk.pivot], numbered, clear, taken)
+            numbered = pts
 
 
-#: The letters of a detail view (ESKD 2.316: Cyrillic capitals, not Й О Х Ъ Ы Ь), and the Latin
-#: letters the first of them look like (a detail is never lettered like a point of the mechanism).
-DETAIL_LETTERS = "АБВГДЕЖИКЛМНПРСТУФЦЧШЭЮЯ"
-LOOKS_LIKE = {"А": "A", "В": "B", "Е": "E", "К": "K", "М": "M", "Н": "H", "Р": "P", "С": "C",
-              "Т": "T", "У": "Y"}  # fmt: skip
 #: The crank is drawn enlarged on a detail view of its own where the mechanism's scale draws it
 #: shorter than this share of :data:`CRANK_MM`: the detail then shows it at least twice as large
 #: (a crank a little short of the rule is left to the mechanism's view: a detail at the next
@@ -723,10 +721,12 @@ DETAIL_RING_MM, DETAIL_LEADER_MM, DETAIL_SHELF_MM = 3.0, 6.0, 5.0
 
 
 def detail_letter(s: Solved) -> str:
-    """The letter of the crank's detail view: the first of :data:`DETAIL_LETTERS` that does not
-    look like the name of a point of the mechanism (Б where the crank's joint is A)."""
+    """The letter of the crank's detail view: the first of the sheet's language's letters (the
+    word table's ``detail_letters``; ESKD 2.316: not Й О Х Ъ Ы Ь) that neither is nor looks like
+    (``detail_like``) the name of a point of the mechanism (Б where the crank's joint is A)."""
     names = {*s.linkage.frame, *s.drawn[0].pos}
-    return next(c for c in DETAIL_LETTERS if LOOKS_LIKE.get(c, c) not in names)
+    letters, like = WORDS("detail_letters"), WORDS("detail_like")
+    return next(c for c, k in zip(letters, like, strict=True) if k not in names and c not in names)
 
 
 def mark_detail(v: Viewport, pivot: Vec, r: float, letter: str) -> None:
@@ -840,12 +840,21 @@ LINK_SPACE = 1.6
 #: Positions of one point on one side of its path nearer each other than this (mm) are a crowd:
 #: their numbers cannot each stand beside their own point, so they stand in a row off the path,
 #: each joined to its point by a leader.
-CROWD_MM = 3.6
+CROWD_MM = 5.0
 #: A row's numbers stand this far (mm) off the outermost point of their crowd, this far apart.
 ROW_OFF_MM, ROW_GAP_MM = 2.2, 1.2
 #: A crowd's row stands at least this share of its numbers' largest shift along it off the
 #: crowd, so that no leader runs flatter than about 55° to the row.
 ROW_STEEP = 0.7
+#: A row's number that a drawn line crosses moves out from its row in steps of this much (mm),
+#: at most this many, to the first place no line crosses (joined to its point by a leader); a
+#: line within INK_GROW_MM of a number's box crosses it.
+ROW_STEP_MM, ROW_STEPS, INK_GROW_MM = 0.8, 16, 0.3
+#: The moves a row's number may make (outward, along the row; in ROW_STEP_MM), nearest first.
+_ROW_MOVES = sorted(
+    ((o, a) for o in range(ROW_STEPS + 1) for a in range(-6, 7)),
+    key=lambda m: (math.hypot(m[0], 1.5 * m[1]), abs(m[1]), m[1]),
+)
 #: A number shifted along its row more than this (mm) from straight across its point gets a
 #: leader even off a crowd (a slider's number beyond its hatched guide).
 ROW_SHIFT_MM = 0.8
@@ -974,22 +983,42 @@ def _number_row(
     runs across the first of the paper directions ``sides`` that crosses the fewest drawn lines
     (a crowd's two sides of its path), :data:`ROW_OFF_MM` beyond its outermost point (and
     ``clear``), each number as near straight across its point as the numbers' widths let it,
-    pushed out past the rows ``taken``; a number joined to its point by a leader where the row
-    is a crowd's (``leaders``) or it stands shifted along the row."""
+    pushed out past the rows ``taken``; a number a drawn line crosses moved to the nearest place
+    no line crosses (:data:`_ROW_MOVES`); a number joined to its point by a leader where the row
+    is a crowd's (``leaders``), or it was moved, or it stands shifted along the row."""
+    ink = _Ink(v.sheet)
     best: tuple[float, dict[int, Box], dict[int, float], tuple[float, float]] | None = None
     for k, n in enumerate(sides):
         boxes, shifts = _row_boxes(g, paper, n, clear, taken)
-        cost = _ink_crossed(v.sheet, list(boxes.values())) + 0.5 * k
+        cost = ink.crossed(list(boxes.values())) + 0.5 * k
         if best is None or cost < best[0]:
             best = cost, boxes, shifts, n
     assert best is not None
-    _, boxes, shifts, _ = best
+    _, boxes, shifts, n = best
     sheet = v.sheet
     for i in g:
+        # a number a line crosses moves to the nearest place no line crosses: further out and
+        # a little along its row (never onto a number); else it stays where fewest cross it
+        b = boxes[i]
+        best_at: tuple[int, float, Box] | None = None
+        for out_k, along_k in _ROW_MOVES:
+            dx = n[0] * out_k * ROW_STEP_MM - n[1] * along_k * ROW_STEP_MM
+            dy = n[1] * out_k * ROW_STEP_MM + n[0] * along_k * ROW_STEP_MM
+            cand = (b[0] + dx, b[1] + dy, b[2] + dx, b[3] + dy)
+            if any(_overlaps(cand, o) for o in taken):
+                continue
+            hits = ink.crossed([cand])
+            if best_at is None or hits < best_at[0]:
+                best_at = hits, math.hypot(out_k, along_k), cand
+            if not hits:
+                break
+        moved = best_at is not None and best_at[1] > 0.0
+        if best_at is not None:
+            boxes[i] = best_at[2]
         up = box(parse(str(i)), NUMBER_H)[1]
         text_at(sheet, str(i), (boxes[i][0], boxes[i][1] + up), NUMBER_H, role="label")
         taken.append(boxes[i])
-        if leaders or shifts[i] > ROW_SHIFT_MM:
+        if leaders or moved or shifts[i] > ROW_SHIFT_MM:
             _leader(sheet, paper[i], boxes[i])
 
 
@@ -1041,32 +1070,52 @@ def _row_boxes(
     return boxes, shifts
 
 
-def _ink_crossed(sheet: Sheet, boxes: Sequence[Box]) -> float:
-    """How many drawn line segments of ``sheet`` cross the ``boxes`` (paper mm), all told
-    (Liang–Barsky's clipping of every segment against each box)."""
-    segs = [
-        (*a, *b)
-        for it in sheet.items
-        if isinstance(it, Polyline) and not it.fill
-        for a, b in itertools.pairwise((*it.points, *it.points[:1]) if it.closed else it.points)
-    ]
-    if not segs or not boxes:
-        return 0.0
-    x0, y0, x1, y1 = np.asarray(segs, dtype=float).T
-    dx, dy = x1 - x0, y1 - y0
-    total = 0
-    for bx0, by0, bx1, by1 in boxes:
-        lo, hi = np.zeros_like(x0), np.ones_like(x0)
-        ok = np.ones_like(x0, dtype=bool)
-        for p, q in ((-dx, x0 - bx0), (dx, bx1 - x0), (-dy, y0 - by0), (dy, by1 - y0)):
-            par = p == 0.0
-            ok &= ~(par & (q < 0.0))
-            with np.errstate(divide="ignore", invalid="ignore"):
-                r = np.where(par, 0.0, q / np.where(par, 1.0, p))
-            lo = np.where(~par & (p < 0.0), np.maximum(lo, r), lo)
-            hi = np.where(~par & (p > 0.0), np.minimum(hi, r), hi)
-        total += int(np.count_nonzero(ok & (lo <= hi)))
-    return float(total)
+class _Ink:
+    """The lines drawn on a sheet so far as paper segments (polylines by their sides, circles
+    and arcs by chords), for counting the lines that cross a number's box."""
+
+    def __init__(self, sheet: Sheet) -> None:
+        segs: list[tuple[float, float, float, float]] = []
+        for it in sheet.items:
+            if isinstance(it, Polyline):
+                pts = (*it.points, *it.points[:1]) if it.closed else it.points
+                segs += [(*a, *b) for a, b in itertools.pairwise(pts)]
+            elif isinstance(it, CircleItem | ArcItem):
+                a0, sweep = 0.0, 2.0 * math.pi
+                if isinstance(it, ArcItem):
+                    a0 = math.atan2(it.start[1] - it.c[1], it.start[0] - it.c[0])
+                    sweep = it.sweep
+                m = max(8, int(abs(sweep) * it.r) + 1)
+                ts = [a0 + sweep * k / m for k in range(m + 1)]
+                ring = [(it.c[0] + it.r * math.cos(t), it.c[1] + it.r * math.sin(t)) for t in ts]
+                segs += [(*a, *b) for a, b in itertools.pairwise(ring)]
+        self.segs = np.asarray(segs, dtype=float).reshape(-1, 4)
+
+    def crossed(self, boxes: Sequence[Box], grow: float = INK_GROW_MM) -> int:
+        """How many segments cross the ``boxes`` (paper mm, each grown by ``grow``), all told
+        (Liang–Barsky's clipping of every segment against each box)."""
+        if not len(self.segs) or not boxes:
+            return 0
+        x0, y0, x1, y1 = self.segs.T
+        dx, dy = x1 - x0, y1 - y0
+        total = 0
+        for bx0, by0, bx1, by1 in boxes:
+            bx0, by0, bx1, by1 = bx0 - grow, by0 - grow, bx1 + grow, by1 + grow
+            near = (np.minimum(x0, x1) <= bx1) & (np.maximum(x0, x1) >= bx0)
+            near &= (np.minimum(y0, y1) <= by1) & (np.maximum(y0, y1) >= by0)
+            if not near.any():
+                continue
+            px, py, qx, qy = x0[near], y0[near], dx[near], dy[near]
+            lo, hi = np.zeros_like(px), np.ones_like(px)
+            ok = np.ones_like(px, dtype=bool)
+            for pp, qq in ((-qx, px - bx0), (qx, bx1 - px), (-qy, py - by0), (qy, by1 - py)):
+                par = pp == 0.0
+                ok &= ~(par & (qq < 0.0))
+                r = np.where(par, 0.0, qq / np.where(par, 1.0, pp))
+                lo = np.where(~par & (pp < 0.0), np.maximum(lo, r), lo)
+                hi = np.where(~par & (pp > 0.0), np.minimum(hi, r), hi)
+            total += int(np.count_nonzero(ok & (lo <= hi)))
+        return total
 
 
 def _run_at(
