@@ -19,6 +19,7 @@ asks for), the views' titles 5 mm.
 
 from __future__ import annotations
 
+import itertools
 import math
 import re
 from collections.abc import Callable, Mapping, Sequence
@@ -52,12 +53,15 @@ from geomcad.sheet.compose import (
     Layout as Arranged,
 )
 from geomcad.sheet.drawing import SHORT_MM, Viewport
-from geomcad.sheet.frame import FORMATS
+from geomcad.sheet.frame import FORMATS, text_at
 from geomcad.sheet.lang import Words, current, per_language
+from geomcad.sheet.model import ArcItem, CircleItem, Polyline
 from geomcad.sheet.motion import Frames, turn
 from geomcad.sheet.plans import markup_of
 from geomcad.sheet.scale import Scale, angle_places, fmt_column, fmt_fixed
-from geomcad.sheet.scheme import Body, draw_scheme
+from geomcad.sheet.scheme import Body, draw_scheme, is_block
+from geomcad.sheet.symbols import HATCH_LEN, SLIDER_SIZE
+from geomcad.sheet.text import box, parse
 from geomcad.sheet.views import AxisSpec, Curve, Diagram, PlanView, Steps, Table, Text
 
 WORDS = Words(__package__, "linkage")
@@ -205,15 +209,24 @@ def _accel_positions(s: Solved) -> tuple[Position, ...]:
 
 
 def _trees(
-    s: Solved, accel: Sequence[Position], h: float = TEXT_H
+    s: Solved, accel: Sequence[Position], h: float = TEXT_H, enlarge: bool = False
 ) -> tuple[tuple[Tree, ...], _Mechanism, bool, dict[View, float]]:
     """The sheets' view trees (see the module's docstring), tables and orders written ``h``
     high, and the scales (model units per mm) the format is chosen to reach: the mechanism's
-    and the velocity plans'."""
+    and the velocity plans'. ``enlarge``: the crank in its positions enlarged beside the
+    mechanism (:class:`_CrankDetail`), where the mechanism's scale leaves it short."""
     lk = s.linkage
     n = len(s.drawn)
     second = n > PLANS_ON_SHEET
     mech = _Mechanism(s)
+    crank: _CrankDetail | None = None
+    if enlarge:
+        crank = _CrankDetail(s, detail_letter(s))
+        mech.detail = crank.letter
+
+    def mech_node() -> Tree:  # the mechanism, and its crank enlarged beside it
+        return mech if crank is None else Row(mech, crank)
+
     # vectors shorter than two arrowheads are drawn as their lettered end point (a note says so)
     vviews = [
         PlanView(P.vp, title=WORDS("position", i=i, phi=_deg(P.phi, s)), group="v",
@@ -254,15 +267,18 @@ def _trees(
         title_height=TITLE_H,
     )
     wants: dict[View, float] = {mech: lk.length / CRANK_MM}
+    if crank is not None:  # the detail reaches the crank's length the mechanism cannot
+        del wants[mech]
+        wants[crank] = lk.length / CRANK_MM
     for view in vviews:  # one scale for them all: each needs its room at it
         wants[view] = abs(lk.omega) * lk.length / PA_MM
     if second:
-        trees = (Column(mech, Row(diagrams, aplans, Column(tables, order))), vplans)
+        trees = (Column(mech_node(), Row(diagrams, aplans, Column(tables, order))), vplans)
         return trees, mech, True, wants
     sheet = Choice(
-        Column(Row(mech, vplans), Row(diagrams, aplans, Column(tables, order))),
-        Row(Column(mech, diagrams), Column(vplans, Row(aplans, Column(tables, order)))),
-        Column(Row(mech, vplans), Row(diagrams, aplans), Row(tables, order)),
+        Column(Row(mech_node(), vplans), Row(diagrams, aplans, Column(tables, order))),
+        Row(Column(mech_node(), diagrams), Column(vplans, Row(aplans, Column(tables, order)))),
+        Column(Row(mech_node(), vplans), Row(diagrams, aplans), Row(tables, order)),
     )
     return (sheet,), mech, False, wants
 
@@ -313,19 +329,29 @@ def _arranged(s: Solved) -> tuple[Layout, tuple[Arranged, ...]]:
     accel = _accel_positions(s)
     fmts = sheet_formats(s.linkage)
     made: list[tuple[tuple[Tree, ...], _Mechanism, bool, dict[View, float]]] = []
+    detail = False
 
     def make(i: int) -> Callable[[float], tuple[Tree, Mapping[View, float]]]:
         def tree(h: float) -> tuple[Tree, Mapping[View, float]]:
-            made.append(_trees(s, accel, h))
+            made.append(_trees(s, accel, h, detail))
             t, _, _, wants = made[-1]
             return t[i], {v: k for v, k in wants.items() if v in _views(t[i])}
 
         return tree
 
+    def made_of(t0: Tree) -> tuple[tuple[Tree, ...], _Mechanism, bool, dict[View, float]]:
+        return next(m for m in made if any(t0 is t for t in (m[0][0], *_alternatives(m[0][0]))))
+
     first = fit(make(0), fmts)
-    trees_all, mech, second, _ = next(
-        m for m in made if any(first[0] is t for t in (m[0][0], *_alternatives(m[0][0])))
-    )
+    trees_all, mech, second, _ = made_of(first[0])
+    k_mech = first[1].layout[mech].scale
+    if k_mech is not None and k_mech.mm(s.linkage.length) < DETAIL_BELOW * CRANK_MM:
+        # the long links set the mechanism's scale and leave the crank short: the crank with
+        # its numbered positions enlarged beside it (ESKD 2.305's detail view)
+        detail = True
+        made.clear()
+        first = fit(make(0), fmts)
+        trees_all, mech, second, _ = made_of(first[0])
     fitted = [first] + [fit(make(i), fmts) for i in range(1, len(trees_all))]
     trees = tuple(t for t, _ in fitted)
     sized = tuple(z for _, z in fitted)
@@ -428,6 +454,9 @@ def _principal(s: Solved) -> tuple[Position, int | None]:
     return s.drawn[0], 0
 
 
+#: A yoke's slot on the mechanism view: its sides this far (mm) either side of its axis, clear
+#: of the block that slides in it (GOST 2.770's slotted link).
+SLOT_HALF_MM = SLIDER_SIZE[1] / 2.0 + 0.5
 #: Points nearer than this fraction of the crank's length are at one place (one label).
 _SAME = tol.SAME_PLACE
 #: A slotted link runs on past its block by this fraction of the block's distance from the pivot.
@@ -435,11 +464,14 @@ SLOT_PAST = 1.15
 
 
 def link_bodies(
-    lk: Linkage, P: Position, links: Sequence[int] | None = None
+    lk: Linkage, P: Position, links: Sequence[int] | None = None, slot_half: float = 0.0
 ) -> dict[str, list[Body]]:
     """Each link's body in position P through all its points: a slotted link along its slide,
     past the block; a PRP yoke with its slot through the block; a link carrying a guide with
-    the guide run on to its slider. ``links``: those to draw (default: every moving link)."""
+    the guide run on to its slider. ``links``: those to draw (default: every moving link).
+    ``slot_half`` (model units): a yoke's slot drawn as a slot, the outline of its two sides
+    this far either side of its axis (the block slides between them), its rod from the slot's
+    side; 0: the slot as its axis line."""
     out: dict[str, list[Body]] = {}
     for link in lk.moving_links if links is None else links:
         uniq: list[Vec] = []
@@ -471,8 +503,16 @@ def link_bodies(
             # its slot across it, over the block's whole travel, in every position alike
             yk = yoke(lk, g)
             E, d = P.pos[g.joint], g.guide.direction
-            rod = Body.of([E, E + d * yk.rod])
-            slot = Body.of([E - P.slide[g.links[0]] * yk.slot, E + P.slide[g.links[0]] * yk.slot])
+            u = P.slide[g.links[0]]
+            if slot_half > 0.0:
+                w = u.perp() * slot_half
+                e0, e1 = E - u * yk.slot, E + u * yk.slot
+                slot = Body.of([e0 + w, e1 + w, e1 - w, e0 - w], closed=True)
+                side = slot_half / max(abs(d.cross(u)), 0.2)  # the slot's side along the rod
+                rod = Body.of([E + d * math.copysign(side, yk.rod), E + d * yk.rod])
+            else:
+                slot = Body.of([E - u * yk.slot, E + u * yk.slot])
+                rod = Body.of([E, E + d * yk.rod])
             out[str(link)] = [rod, slot, *(out.get(str(link), []) if len(uniq) > 2 else [])]
         # a guide on this link runs on to the slider it carries
         for g2 in lk.groups:
@@ -490,12 +530,14 @@ def link_bodies(
 class Yoke:
     """How a PRP group's yoke is drawn: ``rod`` (model units, signed along the guide's
     direction) from its point on the guide to the rod's end, ``slot`` the slot's half length,
-    ``guide`` the point of the fixed guide (the frame's, the same in every position) the rod
-    slides in, clear of the yoke's travel on the side away from the crank's pivot."""
+    ``guide`` the middle of the fixed guide (the frame's, the same in every position) the rod
+    slides in, clear of the yoke's travel on the side away from the crank's pivot, and
+    ``half`` the guide's half length: the rod's travel, so that the guide is drawn over it."""
 
     rod: float
     slot: float
     guide: Vec
+    half: float = 0.0
 
 
 _YOKES: dict[int, tuple[Linkage, dict[int, Yoke]]] = {}
@@ -516,11 +558,12 @@ def yoke(lk: Linkage, g: Group) -> Yoke:
         t = (E - [q.x, q.y]) @ [d.x, d.y]
         t0, t1 = float(t.min()), float(t.max())
         side = -1.0 if (lk.frame[lk.pivot] - q).dot(d) >= 0.5 * (t0 + t1) else 1.0
-        clear = 0.5 * lk.length  # the guide this far past the yoke's travel
-        tg = t0 - clear if side < 0.0 else t1 + clear
-        rod = side * (max(abs(t1 - tg), abs(t0 - tg)) + 0.3 * lk.length)
+        # the guide over the rod's travel (the yoke's), this far past the yoke's travel
+        clear, half = 0.5 * lk.length, 0.5 * (t1 - t0)
+        tg = t0 - clear - half if side < 0.0 else t1 + clear + half
+        rod = side * (max(abs(t1 - tg), abs(t0 - tg)) + half + 0.2 * lk.length)
         slot = SLOT_PAST * max(float(np.max(np.hypot(*(A - E).T))), lk.length)
-        held[1][g.index] = Yoke(rod, slot, q + d * tg)
+        held[1][g.index] = Yoke(rod, slot, q + d * tg, half)
     return held[1][g.index]
 
 
@@ -573,6 +616,8 @@ class _Mechanism(View):
         )  # fmt: skip
         self.s = s
         self._ext = _mechanism_extent(s)
+        #: the letter of the crank's detail view (:class:`_CrankDetail`), where there is one
+        self.detail: str | None = None
 
     def extent(self) -> tuple[float, float, float, float]:
         return self._ext
@@ -590,20 +635,12 @@ class _Mechanism(View):
         P0, k0 = _principal(s)
         for i, P in enumerate(s.drawn):
             if i != k0:
-                for bodies in link_bodies(lk, P).values():
-                    for b in bodies:
+                for bs in link_bodies(lk, P).values():
+                    for b in bs:
                         v.polyline(b.points, "thin", closed=b.closed)
-        numbered: list[Vec] = []
-        # the crank's joint, the output and every named point whose path is traced
-        for name in dict.fromkeys((lk.joint, lk.output, *(p.name for p in lk.points))):
-            pts = [P.pos[name] for P in s.drawn]
-            for q in pts:
-                v.dot(q)
-            vels = [P.vel[name] for P in s.drawn]
-            position_numbers(v, pts, vels, lk.frame[lk.pivot], numbered)
-            numbered = pts
         labels: dict[str, str] = {}
         mech = scheme(lk, P0)  # the pairs where the principal position has them
+        bodies = link_bodies(lk, P0, slot_half=v.scale.model(SLOT_HALF_MM))
         first: dict[str, str] = {}  # the names of the points at one place, on its first pair
         for pair in mech.pairs:
             name = pair.name.split(":")[0]
@@ -622,24 +659,222 @@ class _Mechanism(View):
             if pair.kind == "P" and mech.frame in pair.links and pair.name not in guides
             and pair.name.split(":")[0] in P0.pos
         }  # fmt: skip
+        guided = {name.split(":")[0] for name in travel}
+        for g in lk.groups:  # a yoke's guide over its rod's travel
+            if g.kind == "PRP" and g.guide is not None:
+                yk, gd = yoke(lk, g), g.guide.direction
+                travel[f"{g.joint}:{g.links[1]}"] = [yk.guide - gd * yk.half,
+                                                     yk.guide + gd * yk.half]  # fmt: skip
+        blocks = [
+            (v.p(pair.at), v.paper_dir(pair.axis))
+            for pair in mech.pairs
+            if pair.kind == "P" and pair.axis is not None
+            and any(is_block(mech, k) and k not in bodies for k in pair.links)
+        ]  # fmt: skip
+        # the crank's joint, the output and every named point whose path is traced
+        traced = list(dict.fromkeys((lk.joint, lk.output, *(p.name for p in lk.points))))
+        for name in traced:
+            for P in s.drawn:
+                if not any(_in_block(v.p(P.pos[name]), c, u) for c, u in blocks):
+                    v.dot(P.pos[name])
         lettered = set(labels.values())
         marked = {k: ", ".join(markup_of(n) for n in t.split(", ")) for k, t in labels.items()}
-        draw_scheme(v, mech, bodies=link_bodies(lk, P0), pair_labels=marked, label_height=3.5,
-                    guides=guides, travel=travel)  # fmt: skip
+        numbers: dict[str, Vec] = {}
+        for g in lk.groups:  # a yoke's number on its rod between the slot and the guide
+            if g.kind == "PRP" and g.guide is not None:
+                yk, gd = yoke(lk, g), g.guide.direction
+                near = yk.guide - gd * math.copysign(yk.half, yk.rod)
+                numbers[str(g.links[1])] = (P0.pos[g.joint] + near) * 0.5
+        draw_scheme(v, mech, bodies=bodies, pair_labels=marked, label_height=3.5,
+                    guides=guides, travel=travel, link_space=LINK_SPACE,
+                    link_labels=numbers)  # fmt: skip
         for p in lk.points:
             if p.name not in lettered:
                 v.dot(P0.pos[p.name])
                 v.label(P0.pos[p.name], markup_of(p.name), 3.5, clear=1.0)
         omega_arrow(v, lk, P0)
+        # the positions numbered last, clear of every line drawn
+        numbered: list[Vec] = []
+        taken: list[Box] = []
+        for name in traced:
+            pts = [P.pos[name] for P in s.drawn]
+            if name == lk.joint and self.detail is not None:
+                mark_detail(v, lk.frame[lk.pivot], lk.length, self.detail)
+                continue  # the crank's positions are numbered on its detail view
+            vels = [P.vel[name] for P in s.drawn]
+            clear = GUIDE_CLEAR_MM if name in guided else 0.0
+            position_numbers(v, pts, vels, lk.frame[lk.pivot], numbered, clear, taken)
+            numbered = pts
 
 
-#: Consecutive positions of one point nearer each other than this (mm on the drawing) share one
-#: number label ("4–6"): labels there could not each stand next to their own point.
+#: The crank is drawn enlarged on a detail view of its own where the mechanism's scale draws it
+#: shorter than this share of :data:`CRANK_MM`: the detail then shows it at least twice as large
+#: (a crank a little short of the rule is left to the mechanism's view: a detail at the next
+#: GOST scale would show nothing more).
+DETAIL_BELOW = 0.5
+#: The crank's detail: its drawing reaches this many crank lengths round the pivot (the crank
+#: circle, the stubs of the links at the crank's joint, ω1 and the numbers).
+DETAIL_REACH = 1.9
+#: On the mechanism, the detail's circle round the crank: this much (mm) beyond the crank's
+#: circle; its leader and shelf (mm).
+DETAIL_RING_MM, DETAIL_LEADER_MM, DETAIL_SHELF_MM = 3.0, 6.0, 5.0
+
+
+def detail_letter(s: Solved) -> str:
+    """The letter of the crank's detail view: the first of the sheet's language's letters (the
+    word table's ``detail_letters``; ESKD 2.316: not Й О Х Ъ Ы Ь) that neither is nor looks like
+    (``detail_like``) the name of a point of the mechanism (Б where the crank's joint is A)."""
+    names = {*s.linkage.frame, *s.drawn[0].pos}
+    letters, like = WORDS("detail_letters"), WORDS("detail_like")
+    return next(c for c, k in zip(letters, like, strict=True) if k not in names and c not in names)
+
+
+def mark_detail(v: Viewport, pivot: Vec, r: float, letter: str) -> None:
+    """The crank's detail marked on the mechanism (ESKD 2.305): a thin circle round the crank's
+    circle (radius ``r`` about ``pivot``), a leader from it up and to the right to a shelf
+    carrying the detail's ``letter``."""
+    ring = v.mm(r) + DETAIL_RING_MM
+    c = v.p(pivot)
+    v.sheet.add(CircleItem(c, ring, "thin"))
+    u = (math.cos(math.radians(45.0)), -math.sin(math.radians(45.0)))
+    a = (c[0] + u[0] * ring, c[1] + u[1] * ring)
+    b = (a[0] + u[0] * DETAIL_LEADER_MM, a[1] + u[1] * DETAIL_LEADER_MM)
+    e = (b[0] + DETAIL_SHELF_MM, b[1])
+    v.sheet.add(Polyline((a, b, e), "thin"))
+    text_at(v.sheet, letter, (b[0] + 0.8, b[1] - 0.8), TITLE_H, role="label")
+
+
+class _CrankDetail(View):
+    """The crank in its numbered positions enlarged (ESKD 2.305's detail view, titled by its
+    letter and its own μ_l): the crank's circle and its positions numbered, the crank in the
+    principal position in main lines with its support, the others thin, the links at the
+    crank's joint as stubs, ω1. Drawn where the long links set the mechanism's scale and leave
+    the crank under :data:`CRANK_MM` there."""
+
+    def __init__(self, s: Solved, letter: str) -> None:
+        super().__init__(
+            title=WORDS("crank_detail", letter=letter, last=len(s.drawn) - 1), group="crank",
+            title_height=5.0, margin=6.0, weight=0.5,
+        )  # fmt: skip
+        self.s = s
+        self.letter = letter
+        lk = s.linkage
+        O1, r = lk.frame[lk.pivot], DETAIL_REACH * lk.length
+        self._ext = (O1.x - r, O1.y - r, O1.x + r, O1.y + r)
+
+    def extent(self) -> tuple[float, float, float, float]:
+        return self._ext
+
+    def draw(self, d: Drawing, at: Placed) -> None:
+        v = at.viewport
+        assert v is not None
+        s = self.s
+        lk = s.linkage
+        O1 = lk.frame[lk.pivot]
+        reach = DETAIL_REACH * lk.length * 0.95
+        P0, k0 = _principal(s)
+        v.circle(O1, lk.length, "centre")
+        for i, P in enumerate(s.drawn):
+            A = P.pos[lk.joint]
+            role = "link" if i == k0 else "thin"
+            v.seg(O1, A, role)
+            # the links at the crank's joint, as far as the detail reaches
+            for q in _neighbours(lk, P, lk.joint):
+                u = (q - A).unit()
+                t = _ray_to_circle(A - O1, u, reach)
+                v.seg(A, A + u * t, role)
+        pts = [P.pos[lk.joint] for P in s.drawn]
+        for q in pts:
+            v.dot(q)
+        position_numbers(v, pts, [P.vel[lk.joint] for P in s.drawn], O1)
+        v.pivot(O1, _support_down(lk, P0))
+        v.joint(P0.pos[lk.joint])
+        v.label(O1, markup_of(lk.pivot), 3.5, clear=2.0)
+        v.label(P0.pos[lk.joint], markup_of(lk.joint), 3.5, clear=2.0)
+        v.label((O1 + P0.pos[lk.joint]) * 0.5, "1", 3.5, clear=1.0, space=LINK_SPACE)
+        omega_arrow(v, lk, P0)
+
+
+def _neighbours(lk: Linkage, P: Position, joint: str) -> list[Vec]:
+    """The points of position P that the links at ``joint`` (other than the crank) run to."""
+    out: list[Vec] = []
+    A = P.pos[joint]
+    for link in lk.moving_links:
+        names = list(lk.points_on(link))
+        if joint not in names or link == 1:
+            continue
+        for n in names:
+            q = P.pos[n]
+            if n != joint and q.dist(A) > tol.DERIVED * max(1.0, A.norm):
+                out.append(q)
+                break
+    return out
+
+
+def _ray_to_circle(p: Vec, u: Vec, r: float) -> float:
+    """How far along the unit ``u`` from ``p`` (relative to the circle's centre) the circle of
+    radius ``r`` is (0 where ``p`` lies outside it)."""
+    b = p.dot(u)
+    c = p.dot(p) - r * r
+    disc = b * b - c
+    return max(0.0, -b + math.sqrt(disc)) if disc >= 0.0 else 0.0
+
+
+def _support_down(lk: Linkage, P: Position) -> tuple[float, float]:
+    """The crank's support on the detail: pointing away from the crank (down where it leaves
+    room)."""
+    a = P.pos[lk.joint] - lk.frame[lk.pivot]
+    return (0.0, -1.0) if a.y >= -0.5 * a.norm else (0.0, 1.0)
+
+
+#: A position of one point that falls within this (mm on the drawing) of the same position of a
+#: point numbered before is numbered once (a scotch yoke's slider at the crank's extremes).
 SHARE_MM = 2.5
 #: The numbers of the positions are written this high (mm; GOST 2.304's least) and kept this
 #: much further than other labels from each other (mm), so that two numbers never read as one.
 NUMBER_H = 2.5
 NUMBER_SPACE = 0.8
+#: The links' numbers (3.5 mm) keep this much further (mm) from other texts, so that a link's
+#: number never reads as a position's.
+LINK_SPACE = 1.6
+#: Positions of one point on one side of its path nearer each other than this (mm) are a crowd:
+#: their numbers cannot each stand beside their own point, so they stand in a row off the path,
+#: each joined to its point by a leader.
+CROWD_MM = 5.0
+#: A row's numbers stand this far (mm) off the outermost point of their crowd, this far apart.
+ROW_OFF_MM, ROW_GAP_MM = 2.2, 1.2
+#: A crowd's row stands at least this share of its numbers' largest shift along it off the
+#: crowd, so that no leader runs flatter than about 55° to the row.
+ROW_STEEP = 0.7
+#: A row's number that a drawn line crosses moves out from its row in steps of this much (mm),
+#: at most this many, to the first place no line crosses (joined to its point by a leader); a
+#: line within INK_GROW_MM of a number's box crosses it.
+ROW_STEP_MM, ROW_STEPS, INK_GROW_MM = 0.8, 16, 0.3
+#: The moves a row's number may make (outward, along the row; in ROW_STEP_MM), nearest first.
+_ROW_MOVES = sorted(
+    ((o, a) for o in range(ROW_STEPS + 1) for a in range(-6, 7)),
+    key=lambda m: (math.hypot(m[0], 1.5 * m[1]), abs(m[1]), m[1]),
+)
+#: A number shifted along its row more than this (mm) from straight across its point gets a
+#: leader even off a crowd (a slider's number beyond its hatched guide).
+ROW_SHIFT_MM = 0.8
+#: A leader starts this far (mm) from its point (clear of the dot) and stops this far short of
+#: its number's box.
+LEADER_FROM_MM, LEADER_TO_MM = 0.6, 0.4
+
+Box = tuple[float, float, float, float]
+#: The room (mm) a slider's numbers keep from its path: its hatched guide (GOST 2.770) on either
+#: side of the block.
+GUIDE_CLEAR_MM = SLIDER_SIZE[1] / 2.0 + 0.6 + HATCH_LEN + 0.3
+
+
+def _in_block(q: tuple[float, float], c: tuple[float, float], u: tuple[float, float]) -> bool:
+    """Whether the paper point ``q`` falls inside a slider block drawn at ``c`` along ``u``
+    (:data:`~geomcad.sheet.symbols.SLIDER_SIZE`): a mark there would be hidden in the block."""
+    dx, dy = q[0] - c[0], q[1] - c[1]
+    a = abs(dx * u[0] + dy * u[1])
+    b = abs(-dx * u[1] + dy * u[0])
+    return a <= SLIDER_SIZE[0] / 2.0 and b <= SLIDER_SIZE[1] / 2.0
 
 
 def position_numbers(
@@ -648,51 +883,291 @@ def position_numbers(
     vels: Sequence[Vec],
     pivot: Vec,
     numbered: Sequence[Vec] = (),
+    clear: float = 0.0,
+    taken: list[Box] | None = None,
 ) -> None:
     """Number the positions ``pts`` of one point on its path (``vels``: its velocities there),
     as a drawing of the mechanism in its positions does: the point's letter stands once (at the
-    principal position, by the scheme), each position gets only its number, placed by the
-    sheet's label placer clear of the lines and of the other numbers.
+    principal position, by the scheme), each position gets its own number next to its point.
 
     A number is set off the path across it: on the outer side (away from the centre of the
     circle through the positions; on a line, away from the crank's ``pivot``) where the point
     runs one way round, on the inner side where it runs back (a rocker's or a slider's return
     stroke), so that a position of the return stroke that falls on one of the working stroke is
-    numbered on the other side. Consecutive positions nearer each other than :data:`SHARE_MM`
-    share one label, ``4–6`` (never a list: "3, 9" beside "10" would read as one number).
+    numbered on the other side. A number standing alone is placed by the sheet's label placer
+    clear of the lines and the other labels. Positions on one side nearer each other than
+    :data:`CROWD_MM` are a crowd (a slider near its dead point, a rocker at its extreme): their
+    numbers stand in a row off the crowd, in the order of their points along it, each joined to
+    its point by a thin leader, never a shared "4–8". ``clear`` (mm): room the numbers keep from
+    the path (a slider's hatched guide): every number then stands in its side's row beyond it.
+    ``taken``: the boxes (paper mm) of the rows numbered before in this view, pushed clear of.
     ``numbered``: the same positions of a point numbered before; where this point's position
     falls on that one's (a scotch yoke's slider at the crank's extremes), its number stands
     once."""
-    groups: list[list[int]] = []
-    for i, q in enumerate(pts):
-        if i < len(numbered) and v.mm((q - numbered[i]).norm) < SHARE_MM:
-            continue
-        g = groups[-1] if groups else []
-        if g and g[-1] == i - 1 and all(v.mm((q - pts[j]).norm) < SHARE_MM for j in g):
-            g.append(i)
-        else:
-            groups.append([i])
+    keep = [
+        i
+        for i, q in enumerate(pts)
+        if not (i < len(numbered) and v.mm((q - numbered[i]).norm) < SHARE_MM)
+    ]
+    if not keep:
+        return
     centre = _centre_of(pts)
+    line_n = Vec(0.0, 0.0)
     if centre is None:  # along a line: across it, on the side away from the pivot
         t = max((q - pts[0] for q in pts), key=lambda d: d.norm)
-        n = Vec(-t.y, t.x)
-        if n.x * (pts[0].x - pivot.x) + n.y * (pts[0].y - pivot.y) < 0.0:
-            n = Vec(t.y, -t.x)
-    marks: list[tuple[list[int], Vec, Vec, float]] = []
-    for g in groups:
-        at = Vec(sum(pts[j].x for j in g) / len(g), sum(pts[j].y for j in g) / len(g))
-        if centre is not None:
-            n = at - centre
-            t = Vec(-n.y, n.x)  # counter-clockwise round the centre
-        runs = sum(vels[j].x * t.x + vels[j].y * t.y for j in g)
-        marks.append((g, at, n, math.copysign(len(g), runs) if runs else 0.0))
+        line_n = Vec(-t.y, t.x)
+        if line_n.x * (pts[0].x - pivot.x) + line_n.y * (pts[0].y - pivot.y) < 0.0:
+            line_n = Vec(t.y, -t.x)
+    normal: dict[int, Vec] = {}
+    runs: dict[int, float] = {}
+    for i in keep:
+        n = line_n if centre is None else pts[i] - centre
+        t = Vec(-n.y, n.x)  # counter-clockwise round the centre
+        normal[i] = n.unit() if n.norm > 0.0 else n
+        runs[i] = vels[i].x * t.x + vels[i].y * t.y
     # the sense most positions run in (a crank's whole turn, a rocker's working stroke) outside
-    ahead = sum(m[3] for m in marks) >= 0.0
-    for g, at, n, runs in marks:
-        side = -1.0 if runs and (runs > 0.0) != ahead else 1.0
-        prefer = (side * n.x, side * n.y) if n.norm > 0.0 else None
-        text = str(g[0]) if len(g) == 1 else f"{g[0]}\u2013{g[-1]}"
-        v.label(at, text, NUMBER_H, prefer=prefer, clear=1.0, space=NUMBER_SPACE)
+    ahead = sum(math.copysign(1.0, r) for r in runs.values() if r) >= 0.0
+    out: dict[int, tuple[float, float]] = {}  # each number's side, a paper direction
+    for i in keep:
+        side = -1.0 if runs[i] and (runs[i] > 0.0) != ahead else 1.0
+        out[i] = v.paper_dir(normal[i] * side)
+    paper = {i: v.p(pts[i]) for i in keep}
+    # the crowds: positions within CROWD_MM of each other (single linkage); on a slider's
+    # guide (``clear``), each stroke's positions a row on its own side
+    crowd = {i: i for i in keep}
+
+    def root(i: int) -> int:
+        while crowd[i] != i:
+            i = crowd[i]
+        return i
+
+    for a, b in itertools.combinations(keep, 2):
+        if clear > 0.0:
+            near = out[a][0] * out[b][0] + out[a][1] * out[b][1] > 0.0
+        else:
+            near = math.dist(paper[a], paper[b]) < CROWD_MM
+        if near:
+            crowd[root(b)] = root(a)
+    members: dict[int, list[int]] = {}
+    for i in keep:
+        members.setdefault(root(i), []).append(i)
+    held = taken if taken is not None else []
+    for g in members.values():
+        if clear <= 0.0 and len(g) == 1:
+            i = g[0]
+            v.label(pts[i], str(i), NUMBER_H, prefer=(out[i][0], -out[i][1]), clear=1.0,
+                    space=NUMBER_SPACE)  # fmt: skip
+            continue
+        # the row's side: the crowd's mean side of its path, else the other where fewer lines
+        # cross it (a crowd at a rocker's extreme, its links on one side)
+        sx, sy = sum(out[i][0] for i in g), sum(out[i][1] for i in g)
+        if math.hypot(sx, sy) < 0.5 * len(g):  # both strokes: the path's outer side
+            o = v.paper_dir(normal[g[0]])
+            sx, sy = o[0], o[1]
+        ln = math.hypot(sx, sy) or 1.0
+        mean = (sx / ln, sy / ln)
+        sides = [mean] if clear > 0.0 else [mean, (-mean[0], -mean[1])]
+        _number_row(v, g, paper, sides, clear, held, leaders=clear <= 0.0)
+
+
+def _number_row(
+    v: Viewport,
+    g: Sequence[int],
+    paper: Mapping[int, tuple[float, float]],
+    sides: Sequence[tuple[float, float]],
+    clear: float,
+    taken: list[Box],
+    leaders: bool,
+) -> None:
+    """The numbers of the positions ``g`` in a row off their points (paper ``paper``): the row
+    runs across the first of the paper directions ``sides`` that crosses the fewest drawn lines
+    (a crowd's two sides of its path), :data:`ROW_OFF_MM` beyond its outermost point (and
+    ``clear``), each number as near straight across its point as the numbers' widths let it,
+    pushed out past the rows ``taken``; a number a drawn line crosses moved to the nearest place
+    no line crosses (:data:`_ROW_MOVES`); a number joined to its point by a leader where the row
+    is a crowd's (``leaders``), or it was moved, or it stands shifted along the row."""
+    ink = _Ink(v.sheet)
+    best: tuple[float, dict[int, Box], dict[int, float], tuple[float, float]] | None = None
+    for k, n in enumerate(sides):
+        boxes, shifts = _row_boxes(g, paper, n, clear, taken)
+        cost = ink.crossed(list(boxes.values())) + 0.5 * k
+        if best is None or cost < best[0]:
+            best = cost, boxes, shifts, n
+    assert best is not None
+    _, boxes, shifts, n = best
+    sheet = v.sheet
+    for i in g:
+        # a number a line crosses moves to the nearest place no line crosses: further out and
+        # a little along its row (never onto a number); else it stays where fewest cross it
+        b = boxes[i]
+        best_at: tuple[int, float, Box] | None = None
+        for out_k, along_k in _ROW_MOVES:
+            dx = n[0] * out_k * ROW_STEP_MM - n[1] * along_k * ROW_STEP_MM
+            dy = n[1] * out_k * ROW_STEP_MM + n[0] * along_k * ROW_STEP_MM
+            cand = (b[0] + dx, b[1] + dy, b[2] + dx, b[3] + dy)
+            if any(_overlaps(cand, o) for o in taken):
+                continue
+            hits = ink.crossed([cand])
+            if best_at is None or hits < best_at[0]:
+                best_at = hits, math.hypot(out_k, along_k), cand
+            if not hits:
+                break
+        moved = best_at is not None and best_at[1] > 0.0
+        if best_at is not None:
+            boxes[i] = best_at[2]
+        up = box(parse(str(i)), NUMBER_H)[1]
+        text_at(sheet, str(i), (boxes[i][0], boxes[i][1] + up), NUMBER_H, role="label")
+        taken.append(boxes[i])
+        if leaders or moved or shifts[i] > ROW_SHIFT_MM:
+            _leader(sheet, paper[i], boxes[i])
+
+
+def _row_boxes(
+    g: Sequence[int],
+    paper: Mapping[int, tuple[float, float]],
+    n: tuple[float, float],
+    clear: float,
+    taken: Sequence[Box],
+) -> tuple[dict[int, Box], dict[int, float]]:
+    """The boxes of a row of the numbers of ``g`` on the side ``n`` (a paper unit vector) of
+    their points, and how far (mm) each stands shifted along the row from straight across its
+    point."""
+    t = (-n[1], n[0])
+    sizes = {i: box(parse(str(i)), NUMBER_H) for i in g}
+    along = {i: abs(t[0]) * sizes[i][0] + abs(t[1]) * (sizes[i][1] + sizes[i][2]) for i in g}
+    across = {i: abs(n[0]) * sizes[i][0] + abs(n[1]) * (sizes[i][1] + sizes[i][2]) for i in g}
+    order = sorted(g, key=lambda i: paper[i][0] * t[0] + paper[i][1] * t[1])
+    want = [paper[i][0] * t[0] + paper[i][1] * t[1] for i in order]
+    # the numbers' centres along the row: as near their points as their widths allow (runs of
+    # touching numbers centred on their points' mean)
+    runs_: list[list[int]] = []
+    for k in range(len(order)):
+        runs_.append([k])
+        while len(runs_) > 1:
+            a, b = runs_[-2], runs_[-1]
+            ca, cb = _run_at(a, order, want, along), _run_at(b, order, want, along)
+            end_a = ca + sum(along[order[k2]] + ROW_GAP_MM for k2 in a) - ROW_GAP_MM
+            if end_a + ROW_GAP_MM <= cb:
+                break
+            runs_[-2:] = [a + b]
+    at: dict[int, float] = {}
+    for r in runs_:
+        x = _run_at(r, order, want, along)
+        for k in r:
+            i = order[k]
+            at[i] = x + along[i] / 2.0
+            x += along[i] + ROW_GAP_MM
+    shifts = {i: abs(at[i] - (paper[i][0] * t[0] + paper[i][1] * t[1])) for i in g}
+    # far enough out that the leaders to the numbers shifted most stay steep (a leader run
+    # nearly along the row would pass under its neighbours)
+    off = max(ROW_OFF_MM, ROW_STEEP * max(shifts.values())) if len(g) > 1 else ROW_OFF_MM
+    depth = max(paper[i][0] * n[0] + paper[i][1] * n[1] for i in g) + off + clear
+    for _ in range(12):  # out past the rows numbered before
+        boxes = {i: _row_box(t, n, at[i], depth, sizes[i], across[i]) for i in g}
+        if not any(_overlaps(b, o) for b in boxes.values() for o in taken):
+            break
+        depth += NUMBER_H
+    return boxes, shifts
+
+
+class _Ink:
+    """The lines drawn on a sheet so far as paper segments (polylines by their sides, circles
+    and arcs by chords), for counting the lines that cross a number's box."""
+
+    def __init__(self, sheet: Sheet) -> None:
+        segs: list[tuple[float, float, float, float]] = []
+        for it in sheet.items:
+            if isinstance(it, Polyline):
+                pts = (*it.points, *it.points[:1]) if it.closed else it.points
+                segs += [(*a, *b) for a, b in itertools.pairwise(pts)]
+            elif isinstance(it, CircleItem | ArcItem):
+                a0, sweep = 0.0, 2.0 * math.pi
+                if isinstance(it, ArcItem):
+                    a0 = math.atan2(it.start[1] - it.c[1], it.start[0] - it.c[0])
+                    sweep = it.sweep
+                m = max(8, int(abs(sweep) * it.r) + 1)
+                ts = [a0 + sweep * k / m for k in range(m + 1)]
+                ring = [(it.c[0] + it.r * math.cos(t), it.c[1] + it.r * math.sin(t)) for t in ts]
+                segs += [(*a, *b) for a, b in itertools.pairwise(ring)]
+        self.segs = np.asarray(segs, dtype=float).reshape(-1, 4)
+
+    def crossed(self, boxes: Sequence[Box], grow: float = INK_GROW_MM) -> int:
+        """How many segments cross the ``boxes`` (paper mm, each grown by ``grow``), all told
+        (Liang–Barsky's clipping of every segment against each box)."""
+        if not len(self.segs) or not boxes:
+            return 0
+        x0, y0, x1, y1 = self.segs.T
+        dx, dy = x1 - x0, y1 - y0
+        total = 0
+        for bx0, by0, bx1, by1 in boxes:
+            bx0, by0, bx1, by1 = bx0 - grow, by0 - grow, bx1 + grow, by1 + grow
+            near = (np.minimum(x0, x1) <= bx1) & (np.maximum(x0, x1) >= bx0)
+            near &= (np.minimum(y0, y1) <= by1) & (np.maximum(y0, y1) >= by0)
+            if not near.any():
+                continue
+            px, py, qx, qy = x0[near], y0[near], dx[near], dy[near]
+            lo, hi = np.zeros_like(px), np.ones_like(px)
+            ok = np.ones_like(px, dtype=bool)
+            for pp, qq in ((-qx, px - bx0), (qx, bx1 - px), (-qy, py - by0), (qy, by1 - py)):
+                par = pp == 0.0
+                ok &= ~(par & (qq < 0.0))
+                r = np.where(par, 0.0, qq / np.where(par, 1.0, pp))
+                lo = np.where(~par & (pp < 0.0), np.maximum(lo, r), lo)
+                hi = np.where(~par & (pp > 0.0), np.minimum(hi, r), hi)
+            total += int(np.count_nonzero(ok & (lo <= hi)))
+        return total
+
+
+def _run_at(
+    r: Sequence[int], order: Sequence[int], want: Sequence[float], along: Mapping[int, float]
+) -> float:
+    """Where a run of touching numbers starts along the row: its numbers' centres as near, on
+    the mean, as they can be to their points."""
+    x, offs = 0.0, []
+    for k in r:
+        offs.append(x + along[order[k]] / 2.0)
+        x += along[order[k]] + ROW_GAP_MM
+    return sum(want[k] - o for k, o in zip(r, offs, strict=True)) / len(r)
+
+
+def _row_box(
+    t: tuple[float, float],
+    n: tuple[float, float],
+    s: float,
+    depth: float,
+    size: tuple[float, float, float],
+    across: float,
+) -> Box:
+    """The paper box of a number centred ``s`` along the row's direction ``t`` and with its
+    near side ``depth`` along ``n``."""
+    c = depth + across / 2.0
+    cx, cy = t[0] * s + n[0] * c, t[1] * s + n[1] * c
+    w, h = size[0], size[1] + size[2]
+    return (cx - w / 2.0, cy - h / 2.0, cx + w / 2.0, cy + h / 2.0)
+
+
+def _overlaps(a: Box, b: Box) -> bool:
+    g = NUMBER_SPACE
+    return a[0] < b[2] + g and b[0] < a[2] + g and a[1] < b[3] + g and b[1] < a[3] + g
+
+
+def _leader(sheet: Sheet, p: tuple[float, float], b: Box) -> None:
+    """A thin leader from point ``p`` (paper) to the box ``b`` of its number: from
+    :data:`LEADER_FROM_MM` off the point to :data:`LEADER_TO_MM` short of the box."""
+    cx, cy = (b[0] + b[2]) / 2.0, (b[1] + b[3]) / 2.0
+    dx, dy = cx - p[0], cy - p[1]
+    d = math.hypot(dx, dy)
+    if d == 0.0:
+        return
+    # where the line to the centre leaves the box, grown by LEADER_TO_MM
+    hw, hh = (b[2] - b[0]) / 2.0 + LEADER_TO_MM, (b[3] - b[1]) / 2.0 + LEADER_TO_MM
+    k = min(hw / abs(dx) if dx else math.inf, hh / abs(dy) if dy else math.inf)
+    end = (cx - dx * k, cy - dy * k)
+    if math.dist(p, end) <= LEADER_FROM_MM + 0.3:
+        return
+    u = (dx / d, dy / d)
+    sheet.add(Polyline(((p[0] + u[0] * LEADER_FROM_MM, p[1] + u[1] * LEADER_FROM_MM), end),
+                       "dimension"))  # fmt: skip
 
 
 def _centre_of(pts: Sequence[Vec]) -> Vec | None:

@@ -63,6 +63,7 @@ from geomcad.sheet.graph import Axis, Graph
 from geomcad.sheet.lang import Words, current
 from geomcad.sheet.linkage import (
     CRANK_MM,
+    SMALL_TEXT_H,
     TITLE_H,
     ZERO,
     file_title,
@@ -815,6 +816,27 @@ def _sheet3(s: Solved, fw: Flywheel, h: float) -> Tree:
     )
 
 
+def _sig(x: float, digits: int = 4) -> str:
+    """``x`` to ``digits`` significant figures with its trailing zeros and at least one decimal
+    (367,0; 0,5105; 1100,0); a number of more than ``digits`` whole digits whole."""
+    if x == 0.0 or not math.isfinite(x):
+        return fmt_number(x, current(), digits)
+    if abs(x) >= 10.0**digits:
+        return fmt_number(x, current(), digits)
+    places = max(1, digits - 1 - math.floor(math.log10(abs(x))))
+    return fmt_fixed(x, places, current())
+
+
+def _nonzero(xs: Sequence[float], lang: str, digits: int = 4) -> list[str]:
+    """A table column (:func:`fmt_column`) in which a value that is not 0 but would print as
+    0,000 at the column's decimals is written to two significant figures instead."""
+    out = fmt_column(xs, lang, digits)
+    return [
+        fmt_number(x, lang, 2) if x != 0.0 and not any(c in "123456789" for c in t) else t
+        for x, t in zip(xs, out, strict=True)
+    ]
+
+
 def graphical_work(
     psi: npt.NDArray[np.float64], W: npt.NDArray[np.float64], psi_k: npt.NDArray[np.float64]
 ) -> npt.NDArray[np.float64]:
@@ -891,14 +913,17 @@ class _Wittenbauer(View):
         gr = Graph(d, ax, ay, (x0 + self.LEFT, y0 + self.ABOVE + 6.0 + ay.mm(ay.hi - ay.zero)))
         gr.axes(current(), tick_labels=True)
         gr.curve(_thin(fw.dense.I_pr), _thin(fw.dA), "result")
-        for yy, slope in ((a, k_max), (b, k_min)):
+        gr.point(0.0, a, "a", prefer=(-1.0, 0.0))
+        gr.point(0.0, b, "b", prefer=(-1.0, 0.0))
+        # each tangent named at its far end, clear of the axes, of a and b and of the curve
+        # (a touching point near the ΔT axis leaves no room there); its touching point a dot
+        for (yy, slope), (x, y), name in zip(((a, k_max), (b, k_min)), fw.touch,
+                                             ("ω_{max}", "ω_{min}"), strict=True):  # fmt: skip
             x_end = min(i_hi, (ay.hi - yy) / slope) if slope > 0.0 else i_hi
             if x_end > 0.0:
                 gr.curve([0.0, x_end], [yy, yy + slope * x_end], "construction")
-        gr.point(0.0, a, "a", prefer=(-1.0, 0.0))
-        gr.point(0.0, b, "b", prefer=(-1.0, 0.0))
-        for (x, y), name in zip(fw.touch, ("ω_{max}", "ω_{min}"), strict=True):
-            gr.point(x, y, name)
+                d.label(gr.p(x_end, yy + slope * x_end), name, 2.5, prefer=(1.0, 0.0))
+            gr.point(x, y)
 
 
 def _omega(lk: Linkage, fw: Flywheel) -> Diagram:
@@ -927,7 +952,7 @@ def _omega(lk: Linkage, fw: Flywheel) -> Diagram:
     )
 
 
-def _tables3(lk: Linkage, fw: Flywheel, h: float) -> list[Table]:
+def _tables3(lk: Linkage, fw: Flywheel, h: float) -> list[View]:
     n = len(fw.phis)
     step = max(1, math.ceil(n / 12))
     rows: list[list[str]] = [
@@ -942,30 +967,36 @@ def _tables3(lk: Linkage, fw: Flywheel, h: float) -> list[Table]:
     degs = [math.degrees(fw.phis[i]) % 360.0 for i in idx]
     cols = [
         [fmt_fixed(x, angle_places(degs), current()) for x in degs],
-        fmt_column(
-            [0.0 if abs(fw.I_pr[i]) <= ZERO * si else fw.I_pr[i] for i in idx], current(), 4
-        ),
+        _nonzero([0.0 if abs(fw.I_pr[i]) <= ZERO * si else fw.I_pr[i] for i in idx], current(), 4),
         fmt_column(
             [0.0 if abs(fw.M_pr[i]) <= ZERO * sm else sign * fw.M_pr[i] for i in idx], current(), 4
         ),
     ]
     for j, i in enumerate(idx):
         rows.append([str(i), cols[0][j], cols[1][j], cols[2][j]])
+    # the results to four significant figures each, trailing zeros kept (367,0 and 0,5105:
+    # every value has its decimal comma, so that the column reads aligned on it)
     res: list[tuple[str, float | str, str]] = [
-        (WORDS("A_c"), _num(fw.A_cycle), "J"),
-        (WORDS("M_dr"), _num(fw.M_drive), "N·m"),
-        ("ω_{max}", _num(fw.omega_max), "1/s"),
-        ("ω_{min}", _num(fw.omega_min), "1/s"),
-        (WORDS("J_fw"), _num(fw.J_flywheel), "kg·m²"),
+        (WORDS("A_c"), _sig(fw.A_cycle), "J"),
+        (WORDS("M_dr"), _sig(fw.M_drive), "N·m"),
+        ("ω_{max}", _sig(fw.omega_max), "1/s"),
+        ("ω_{min}", _sig(fw.omega_min), "1/s"),
+        (WORDS("J_fw"), _sig(fw.J_flywheel), "kg·m²"),
     ]
     if fw.D > 0.0 and lk.dynamics is not None:
         kind = WORDS("disc") if lk.dynamics.flywheel == "disc" else WORDS("rim")
-        res += [(f"D ({kind})", _num(fw.D), "m"), ("b", _num(fw.b), "m"),
-                ("m", _num(fw.mass), "kg")]  # fmt: skip
+        res += [(f"D ({kind})", _sig(fw.D), "m"), ("b", _sig(fw.b), "m"),
+                ("m", _sig(fw.mass), "kg")]  # fmt: skip
     row_h = row_height(h)
+    table = Table(rows, title=WORDS("table3"), height=h, row_h=row_h, title_height=TITLE_H,
+                  center=True)  # fmt: skip
+    # a reduced moment of inertia of 0 explained under the table: the driven links stand still
+    zeros = [str(i) for i in idx if abs(fw.I_pr[i]) <= ZERO * si]
+    note = [Text(paragraph=WORDS("I_zero", at=", ".join(zeros)), width=table.span,
+                 height=SMALL_TEXT_H)] if zeros else []  # fmt: skip
     return [
-        Table(rows, title=WORDS("table3"), height=h, row_h=row_h, title_height=TITLE_H,
-              center=True),
+        table,
+        *note,
         Table.of_values(res, header=False, title=WORDS("results3"), height=h, row_h=row_h,
                         title_height=TITLE_H),
     ]  # fmt: skip

@@ -88,6 +88,7 @@ def draw_scheme(
     supports: Mapping[str, tuple[float, float]] | None = None,
     guides: Mapping[str, PointLike] | None = None,
     travel: Mapping[str, Sequence[PointLike]] | None = None,
+    link_space: float = 0.0,
 ) -> None:
     """Draw ``mech`` in viewport ``v`` (see the module docstring).
 
@@ -102,9 +103,10 @@ def draw_scheme(
     pair on the frame to the model point on its axis where its hatched guide is drawn (default:
     the pair's point), for a link that slides on the frame by a rod off its other pairs (a
     yoke). ``travel`` maps a prismatic pair on the frame to the points its slider takes in the
-    positions drawn: the guide's axis is drawn as a line over that whole travel (GOST 2.770),
-    its hatched marks where the pair is. A link given a body is drawn as that body, never as a
-    block.
+    positions drawn: the guide's axis is drawn as a line over that whole travel and the fixed
+    guide hatched along it (GOST 2.770: the frame's guide over the slider's travel). A link
+    given a body is drawn as that body, never as a block. ``link_space``: mm the links'
+    numbers keep further than usual from other texts (where position numbers stand near them).
     """
     bodies = dict(bodies or {})
     size = mech.size()
@@ -131,7 +133,7 @@ def draw_scheme(
                 v.pivot(p.at, (supports or {}).get(p.name) or _support_direction(mech, p))
             else:
                 v.joint(p.at)
-    _labels(v, mech, drawn, size, pair_labels, link_labels, label_height, ghosts)
+    _labels(v, mech, drawn, size, pair_labels, link_labels, label_height, ghosts, link_space)
 
 
 #: A frame hinge's support stands upright (pointing down) unless a link it carries comes
@@ -191,14 +193,16 @@ def _prismatic(
     if mech.frame in p.links:
         k = v.scale.model(GUIDE_HALF)
         g = p.at if guide_at is None else guide_at
-        a, b = g - u * k, g + u * k
-        n = u.perp()
-        v.guide(a, b, (n.x, n.y))
-        v.guide(b, a, (-n.x, -n.y))
+        lo, hi = -k, k
         if run:  # the guide's axis over the slider's whole travel, a little past both ends
             ts = [(q - g).dot(u) for q in run]
             lo, hi = min(*ts, -k) - k, max(*ts, k) + k
             v.seg(g + u * lo, g + u * hi, "thin")
+        # the fixed guide hatched on both sides over that travel (at least the slider's length)
+        a, b = g + u * lo, g + u * hi
+        n = u.perp()
+        v.guide(a, b, (n.x, n.y))
+        v.guide(b, a, (-n.x, -n.y))
         link = p.other(mech.frame)
         if block(link):
             _block(v, p.at, u, role[link])
@@ -227,6 +231,7 @@ def _labels(
     link_labels: Mapping[str, PointLike] | None,
     height: float,
     ghosts: Collection[str],
+    space: float = 0.0,
 ) -> None:
     seen: list[Vec] = []
     for p in mech.pairs:
@@ -248,4 +253,4 @@ def _labels(
             if not pts:
                 continue
             at = pts[0]
-        v.label(at, lk, height, clear=1.0)
+        v.label(at, lk, height, clear=1.0, space=space)

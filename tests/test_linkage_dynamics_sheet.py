@@ -1,0 +1,84 @@
+"""The dynamics sheet of a linkage file as a teacher reads it (issue 27, review 3): Wittenbauer's
+tangents named at their far ends, not at touching points jammed against the ΔT axis; the
+flywheel's results each with its decimal comma (one column read on it); a reduced moment of
+inertia that rounds to 0 printed with its digits, a true 0 explained."""
+
+from __future__ import annotations
+
+import functools
+import math
+from pathlib import Path
+
+from geomcad import documents
+from geomcad.sheet.lang import language
+from geomcad.sheet.linkage_forces import _nonzero, _sig
+from geomcad.sheet.model import CircleItem, Polyline, Sheet, TextItem
+
+EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
+
+
+@functools.cache
+def _dynamics(stem: str) -> Sheet:
+    sheets = dict(documents.solve(str(EXAMPLES / f"{stem}.toml")).sheets())
+    return sheets["dynamics"]
+
+
+def test_results_keep_four_figures_and_a_decimal_each() -> None:
+    with language("ru"):
+        assert _sig(367.04) == "367,0"
+        assert _sig(163.0) == "163,0"
+        assert _sig(0.510519) == "0,5105"
+        assert _sig(58.4) == "58,40"
+        assert _sig(5.3114) == "5,311"
+        assert _sig(1100.2) == "1100,2"
+        assert "," not in _sig(123456.0)  # a large number whole, grouped
+        assert _sig(0.0) == "0"
+
+
+def test_a_value_that_is_not_zero_never_prints_as_zero() -> None:
+    with language("ru"):
+        col = _nonzero([0.00031, 1.353, 0.4], "ru", 4)
+        assert col[1:] == ["1,353", "0,400"]
+        assert any(c in "123456789" for c in col[0]), col
+        assert _nonzero([0.0, 1.353], "ru", 4)[0].strip("0,") == ""  # a true 0 stays 0
+
+
+def test_a_true_zero_of_the_reduced_inertia_is_explained() -> None:
+    """The shaper's I_пр is 0 at its dead position 0 (every link with a mass at rest, the
+    crank's J not given): the sheet says so under the table."""
+    sheet = _dynamics("shaper")
+    text = " ".join(t.text for t in sheet.texts())
+    assert "= 0 в положениях 0" in text, text[:300]
+
+
+def test_the_flywheel_results_are_read_on_their_commas() -> None:
+    sheet = _dynamics("crusher")
+    texts = [t.text for t in sheet.texts()]
+    i = texts.index("Маховик")
+    values = [t for t in texts[i + 1 : i + 40] if t and (t[0].isdigit() or t[0] == "\u2013")]
+    assert len(values) >= 5, texts[i : i + 30]
+    assert all("," in v for v in values), values
+
+
+def _near_end(t: TextItem, sheet: Sheet, mm: float) -> bool:
+    c = (t.at[0] + t.width / 2.0, t.at[1] - t.height / 2.0)
+    ends = [
+        p
+        for it in sheet.items
+        if isinstance(it, Polyline) and it.role == "construction" and len(it.points) == 2
+        for p in (it.points[0], it.points[-1])
+    ]
+    return any(math.dist(c, p) < mm + t.width / 2.0 for p in ends)
+
+
+def test_wittenbauers_tangents_are_named_at_their_far_ends() -> None:
+    for stem in ("shaper", "crusher"):
+        sheet = _dynamics(stem)
+        names = [t for t in sheet.texts() if t.role == "label" and t.text in ("ωmax", "ωmin")]
+        assert len(names) >= 4  # the tangents' and the ω diagram's lines
+        dots = [it.c for it in sheet.items if isinstance(it, CircleItem) and it.role == "point"]
+        for t in names:
+            c = (t.at[0] + t.width / 2.0, t.at[1] - t.height / 2.0)
+            assert _near_end(t, sheet, 4.0), (stem, t.text, t.at)
+            # not beside a touching point (a dot), where it would jam against the axis
+            assert all(math.dist(c, q) > 5.0 for q in dots), (stem, t.text, t.at)
