@@ -52,6 +52,7 @@ from geomcad.sheet.compose import (
     Choice,
     Column,
     Grid,
+    Layout,
     Placed,
     Row,
     Tree,
@@ -104,6 +105,10 @@ M_BAL_MM = symbols.STAND_DEPTH + symbols.HATCH_LEN + 3.0
 LEVER_LOAD_MM = 40.0
 #: The width of the note under the table of loads (mm), for 2.5 mm text.
 TABLE2_W = 60.0
+#: The scale group of the force sheet's drawings of links: the mechanism, its groups, its crank.
+L_GROUP = "l"
+#: The scale group of the groups and the crank cut out where they cannot share the mechanism's.
+GROUPS_L = "lg"
 
 
 def force_position(s: Solved) -> tuple[Position, Forces, int | None]:
@@ -133,10 +138,16 @@ def force_sheets(
         # first the polygons alone (as large as the sheet draws them), then, on that format,
         # with their details reckoned at the μ_F each got there: the details take the room
         # the polygon leaves free where they can
+        # the groups and the crank at the mechanism's μ_l where the sheet then still draws
+        # the crank CRANK_MM long, else at one μ_l of their own (issue 27, point 7)
+        shared = True
         tree, z = fit(lambda h: _sheet2(s, P, forces, k, h), fmts)
+        if not _crank_kept(z.layout):
+            shared = False
+            tree, z = fit(lambda h: _sheet2(s, P, forces, k, h, shared=False), fmts)
         refs = {pl.view.title: (pl.scale.k, pl.size) for pl in z.layout
                 if isinstance(pl.view, Polygon) and pl.scale}  # fmt: skip
-        tree, z = fit(lambda h: _sheet2(s, P, forces, k, h, refs), [z.fmt])
+        tree, z = fit(lambda h: _sheet2(s, P, forces, k, h, refs, shared), [z.fmt])
         d = z.start(_title(lk, WORDS("forces"), designation, no, count))
         compose(d, tree, layout=z.layout)
         main = [pl.scale for pl in z.layout if isinstance(pl.view, _Loaded)]
@@ -152,6 +163,16 @@ def force_sheets(
         compose(d, tree, layout=z.layout)
         out.append(("dynamics", d.finish()))
     return out
+
+
+def _crank_kept(lay: Layout) -> bool:
+    """Whether the layout draws the loaded mechanism's crank as long as it wants (its
+    ``readable`` length at least ``readable_mm``; true where the sweep forbids that want)."""
+    for pl in lay:
+        v = pl.view
+        if isinstance(v, _Loaded) and pl.scale is not None and v.readable > 0.0:
+            return v.readable / pl.scale.k >= v.readable_mm * (1.0 - tol.REL_LENGTH)
+    return True
 
 
 def _title(lk: Linkage, what: str, designation: str, no: int, count: int) -> TitleBlock:
@@ -173,23 +194,37 @@ def _num(x: float, digits: int = 4, scale: float = 0.0) -> str:
 
 def _sheet2(
     s: Solved, P: Position, f: Forces, k: int | None, h: float,
-    refs: Mapping[str, tuple[float, tuple[float, float]]] | None = None,
+    refs: Mapping[str, tuple[float, tuple[float, float]]] | None = None, shared: bool = True,
 ) -> tuple[Tree, dict[View, float]]:  # fmt: skip
-    """Sheet 2's tree, its tables and texts ``h`` high, and the scale its mechanism wants. The
+    """Sheet 2's tree, its tables and texts ``h`` high, and the scales its views want. The
     force polygons are drawn with their details where ``refs`` gives their reference μ_F and
-    room (mm; by their titles), else alone (for a first arrangement)."""
+    room (mm; by their titles), else alone (for a first arrangement). The groups and the crank
+    cut out are drawn at the mechanism's μ_l (``shared``), else at one μ_l of their own."""
     lk = s.linkage
-    # the length scales from the geometry alone: never finer than the GOST scale that draws
-    # the crank CRANK_MM long (a change of ω or of the loads rescales no drawing of links)
-    k_l = crank_scale(lk).k
+    # the length scales from the geometry alone (a change of ω or of the loads rescales no
+    # drawing of links): never finer than links_scale; the crank CRANK_MM long where the
+    # mechanism's sweep allows it on the sheet
+    k_l = links_scale(s).k
     deg = math.degrees(P.phi) % 360.0
     phi = fmt_fixed(deg, angle_places([deg]), current())
     title = WORDS("mech", k=k, phi=phi) if k is not None else WORDS("mech_phi", phi=phi)
     mech = _Loaded(lk, P, f, title)
-    mech.least_k = k_l
+    if sweep_mm(s, crank_scale(lk).k) <= SWEEP_MAX_MM:
+        mech.readable, mech.readable_mm = lk.length, CRANK_MM
     bodies = [_FreeBody(lk, P, gf) for gf in f.groups]
-    for b in bodies:
-        b.least_k = k_l
+    # one μ_l for the mechanism and its cut-out groups and crank (issue 27, point 7): one scale
+    # group, the coarsest any of them needs, stated in every caption
+    for v in (mech, *bodies):
+        v.least_k = k_l
+        v.group = L_GROUP if shared else GROUPS_L
+    mech.group = L_GROUP
+    # the search counts a scale group once, at its heaviest member's weight: the mechanism's
+    # (2) and one for each drawing of links it draws at its scale, as each had on its own
+    if shared:
+        mech.weight = 2.0 + len(bodies)
+    else:
+        for b in bodies:
+            b.weight = 2.0
     # each group's polygons under the group cut out (the crank's under the crank); a
     # polygon's vectors too short for its μ_F are drawn again, enlarged, in details at their
     # own stated μ_F beside it in its view (one letter each on the sheet)
@@ -225,13 +260,60 @@ def _sheet2(
         Row(Column(mech, lever), Column(Grid(*bodies), Row(Grid(*polys), right))),
         Column(Row(mech, lever, right), groups),
     )
-    return tree, {mech: lk.length / CRANK_MM}
+    # the format: the smallest on which the crank is CRANK_MM long (where the sweep allows it)
+    # and every force polygon at least POLY_MM across
+    wants: dict[View, float] = {p: max(_side(p)) / POLY_MM for p in polys if max(_side(p)) > 0.0}
+    if mech.readable > 0.0:
+        wants[mech] = lk.length / CRANK_MM
+    return tree, wants
+
+
+def _side(v: View) -> tuple[float, float]:
+    ext = v.extent()
+    assert ext is not None
+    return ext[2] - ext[0], ext[3] - ext[1]
 
 
 #: The letters of the forces and moments on a forces sheet, the balancing force's and the
 #: centres of mass' (no detail is lettered with one; nor with the inertia force's, in the
 #: language drawn).
 _FORCE_LETTERS = ("F", "G", "M", "P", "R", "S")
+
+
+#: A force polygon's larger side (mm) on the smallest format the force sheet may take.
+POLY_MM = 60.0
+#: The larger side (mm) of the box the mechanism sweeps over a turn that its drawing on the
+#: force sheet is scaled up to (the finest GOST scale at which it is at most this): the main
+#: view is large where the crank alone would leave it small (a long crank, short links).
+SWEEP_MM = 200.0
+#: Where the mechanism's sweep would be larger than this (mm) with its crank CRANK_MM long (a
+#: crusher's short crank on long links), the crank's length is no rule of the layout.
+SWEEP_MAX_MM = 400.0
+
+
+def sweep_box(s: Solved) -> tuple[float, float]:
+    """The width and height (m) of the box every named point of the mechanism sweeps over
+    its numbered positions (the geometry alone: no ω, no load)."""
+    pts = [q for P in s.drawn or s.positions for q in P.pos.values()]
+    xs = [q.x for q in pts]
+    ys = [q.y for q in pts]
+    return max(xs) - min(xs), max(ys) - min(ys)
+
+
+def sweep_mm(s: Solved, k: float) -> float:
+    """The larger side (mm) of the mechanism's sweep (:func:`sweep_box`) at ``k`` m/mm."""
+    return max(sweep_box(s)) / k
+
+
+def links_scale(s: Solved) -> Scale:
+    """The finest length scale a drawing of the force sheet's links takes: the finer of
+    :func:`crank_scale` and the finest GOST 2.302 scale at which the mechanism's sweep is at
+    most :data:`SWEEP_MM` (from the dimensions alone, so that ω and the loads never rescale a
+    drawing of links; the layout takes it where the sheet has room, a coarser one else)."""
+    big = max(sweep_box(s))
+    fits = [k for k in GOST_K if big / k <= SWEEP_MM * (1.0 + tol.REL_LENGTH)]
+    sweep = min(fits) if fits else max(GOST_K)
+    return Scale(min(crank_scale(s.linkage).k, sweep), "l")
 
 
 def crank_scale(lk: Linkage) -> Scale:

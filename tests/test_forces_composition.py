@@ -1,0 +1,106 @@
+"""The forces sheet's composition (issue 27): its length scales, its format, its field.
+
+Every example with masses or loads is drawn through :func:`force_sheets` with the layout
+recorded, and checked as a teacher checks the sheet: one μ_l for the mechanism and its cut-out
+groups (or one stated μ_l shared by all the groups), the title block's Масштаб the mechanism's,
+the crank at least CRANK_MM long where the mechanism's sweep allows it, the force polygons at
+least POLY_MM across on the smaller format, and no large part of the field left empty.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from pathlib import Path
+
+import pytest
+from layout import empty_share
+
+import geomcad
+from geomcad.sheet import linkage_forces as lf
+from geomcad.sheet.compose import Layout, Placed
+from geomcad.sheet.linkage import CRANK_MM
+from geomcad.sheet.model import Sheet
+from geomcad.sheet.views import Polygon
+
+EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
+FILES = [
+    p
+    for p in sorted(EXAMPLES.glob("*.toml"))
+    if "[links." in p.read_text(encoding="utf-8") or "[[load]]" in p.read_text(encoding="utf-8")
+]
+#: The share of the field (10 mm cells, tests/layout.py) a forces sheet may leave empty: its
+#: drawings are sparse (links, polygons of thin vectors), but never most of an A1 blank.
+EMPTY_MAX = 0.85
+
+
+def _forces_sheet(path: Path, monkeypatch: pytest.MonkeyPatch) -> tuple[Sheet, Layout, object]:
+    drawn: list[Layout] = []
+    real = lf.compose
+
+    def recorded(d: object, tree: object, field_: object = None, layout: object = None) -> Layout:
+        lay = real(d, tree, field_, layout)  # type: ignore[arg-type]
+        drawn.append(lay)
+        return lay
+
+    monkeypatch.setattr(lf, "compose", recorded)
+    s = geomcad.solve(str(path)).data
+    sheets = dict(lf.force_sheets(s, path.stem))
+    return sheets["forces"], drawn[0], s
+
+
+def _links(lay: Layout) -> Iterator[Placed]:
+    for pl in lay:
+        if isinstance(pl.view, lf._Forces):
+            yield pl
+
+
+@pytest.mark.parametrize("path", FILES, ids=[p.stem for p in FILES])
+def test_one_length_scale_for_the_mechanism_and_one_for_its_groups(
+    path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    sheet, lay, s = _forces_sheet(path, monkeypatch)
+    mech = [pl for pl in _links(lay) if isinstance(pl.view, lf._Loaded)]
+    bodies = [pl for pl in _links(lay) if isinstance(pl.view, lf._FreeBody)]
+    assert len(mech) == 1 and bodies
+    main = mech[0].scale
+    assert main is not None
+    # the groups and the crank share one μ_l: the mechanism's, or one of their own
+    assert len({pl.scale for pl in bodies}) == 1, [pl.scale for pl in bodies]
+    # each view states its μ_l in its caption (the sheet says so next to each view)
+    for pl in [*mech, *bodies]:
+        assert pl.scale is not None
+        assert pl.scale.ratio_text() in pl.view.caption(pl.scale)
+    assert sheet.block is not None and sheet.block.scale == main.ratio_text()
+    # never coarser than the shared scale where the crank keeps its length with it
+    lk = s.linkage  # type: ignore[attr-defined]
+    if bodies[0].scale != main:
+        assert lk.length / main.k >= CRANK_MM * 0.999
+
+
+@pytest.mark.parametrize("path", FILES, ids=[p.stem for p in FILES])
+def test_the_crank_and_the_field(path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    sheet, lay, s = _forces_sheet(path, monkeypatch)
+    (mech,) = [pl for pl in _links(lay) if isinstance(pl.view, lf._Loaded)]
+    lk = s.linkage  # type: ignore[attr-defined]
+    assert mech.scale is not None
+    if lf.sweep_mm(s, lf.crank_scale(lk).k) <= lf.SWEEP_MAX_MM:  # type: ignore[arg-type]
+        assert lk.length / mech.scale.k >= CRANK_MM * 0.999, mech.scale
+    # the main view never finer than the geometry's scale (ω rescales no drawing of links)
+    assert mech.scale.k >= lf.links_scale(s).k * 0.999  # type: ignore[arg-type]
+    share = empty_share(sheet)
+    assert share <= EMPTY_MAX, f"{share:.0%} of the field empty"
+
+
+@pytest.mark.parametrize("path", FILES, ids=[p.stem for p in FILES])
+def test_polygons_on_the_smaller_format_are_drawn_large(
+    path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    sheet, lay, _s = _forces_sheet(path, monkeypatch)
+    if sheet.format == "A1":
+        return  # the largest format: every view as large as the search can draw it
+    for pl in lay:
+        if isinstance(pl.view, Polygon) and pl.scale is not None:
+            ext = pl.view.extent()
+            assert ext is not None
+            side = max(ext[2] - ext[0], ext[3] - ext[1]) / pl.scale.k
+            assert side >= lf.POLY_MM * 0.999, (pl.view.title, side)
