@@ -44,26 +44,32 @@ from geomcad.linkage.loads import centre_vec
 from geomcad.linkage.model import Linkage
 from geomcad.linkage.plans import Position
 from geomcad.linkage.solution import Solved, scheme
-from geomcad.sheet import Drawing, Sheet, TitleBlock, fmt_number, symbols
+from geomcad.sheet import Drawing, Sheet, TitleBlock, fmt_number, formats, symbols
 from geomcad.sheet.compose import _GOST_K as GOST_K
 from geomcad.sheet.compose import (
     TITLE_LEAD,
     TITLE_SPACING,
     Choice,
     Column,
+    Field,
     Grid,
     Layout,
     Placed,
     Row,
     Tree,
     View,
+    arrange,
     compose,
 )
 from geomcad.sheet.drawing import SHORT_MM, Viewport
+from geomcad.sheet.frame import FORMATS
 from geomcad.sheet.graph import Axis, Graph
 from geomcad.sheet.lang import Words, current
 from geomcad.sheet.linkage import (
     CRANK_MM,
+    SMALL_TEXT_H,
+    TEXT_COST,
+    TEXT_H,
     TITLE_H,
     ZERO,
     file_title,
@@ -135,19 +141,7 @@ def force_sheets(
     fmts = sheet_formats(lk)
     if a.forces is not None:
         P, forces, k = force_position(s)
-        # first the polygons alone (as large as the sheet draws them), then, on that format,
-        # with their details reckoned at the μ_F each got there: the details take the room
-        # the polygon leaves free where they can
-        # the groups and the crank at the mechanism's μ_l where the sheet then still draws
-        # the crank CRANK_MM long, else at one μ_l of their own (issue 27, point 7)
-        shared = True
-        tree, z = fit(lambda h: _sheet2(s, P, forces, k, h), fmts)
-        if not _crank_kept(z.layout):
-            shared = False
-            tree, z = fit(lambda h: _sheet2(s, P, forces, k, h, shared=False), fmts)
-        refs = {pl.view.title: (pl.scale.k, pl.size) for pl in z.layout
-                if isinstance(pl.view, Polygon) and pl.scale}  # fmt: skip
-        tree, z = fit(lambda h: _sheet2(s, P, forces, k, h, refs, shared), [z.fmt])
+        tree, z = _compose2(s, P, forces, k, fmts)
         d = z.start(_title(lk, WORDS("forces"), designation, no, count))
         compose(d, tree, layout=z.layout)
         main = [pl.scale for pl in z.layout if isinstance(pl.view, _Loaded)]
@@ -163,6 +157,89 @@ def force_sheets(
         compose(d, tree, layout=z.layout)
         out.append(("dynamics", d.finish()))
     return out
+
+
+def _compose2(
+    s: Solved, P: Position, f: Forces, k: int | None, fmts: Sequence[str]
+) -> tuple[Tree, formats.Sized]:
+    """Sheet 2's tree and its format and arrangement.
+
+    The format: the smallest of ``fmts`` on which the sheet fits with its crank
+    :data:`~geomcad.sheet.linkage.CRANK_MM` long and its polygons :data:`POLY_MM` across
+    (:func:`~geomcad.sheet.linkage.fit`), the groups and the crank cut out at the mechanism's
+    μ_l; where that takes a larger format than the groups at one μ_l of their own would (or
+    does not keep the crank's length), at their own μ_l: the views share less before a larger
+    format is taken (issue 27). First the polygons alone (as large as the sheet draws them),
+    then, on that format, with their details reckoned at the μ_F each got there (the details
+    take the room the polygon leaves free where they can); the tables and texts
+    :data:`~geomcad.sheet.linkage.TEXT_H` high where that fits on the format and draws the
+    links at the scales the smaller text gives them (an A1 with room to spare never has its
+    tables at 2.5 mm), or costs the views at most :data:`~geomcad.sheet.linkage.TEXT_COST`,
+    else :data:`~geomcad.sheet.linkage.SMALL_TEXT_H`."""
+    wants: list[dict[View, float]] = []
+
+    def make(h: float, shared: bool) -> tuple[Tree, dict[View, float]]:
+        tree, w = _sheet2(s, P, f, k, h, shared=shared)
+        wants.append(w)
+        return tree, w
+
+    def reached(z: formats.Sized) -> bool:
+        lay = z.layout
+        (w,) = [w for w in wants if all(id(v) in lay.placed for v in w)]
+        return lay.fits and formats.meets(lay, w) and _crank_kept(lay) and _groups_kept(lay)
+
+    def area(fmt: str) -> float:
+        return FORMATS[fmt][0] * FORMATS[fmt][1]
+
+    order = sorted(fmts, key=area)
+    shared = True
+    tree, z = fit(lambda h: make(h, True), order)
+    ok = reached(z)
+    if not ok or z.fmt != order[0]:
+        smaller = [fm for fm in order if area(fm) < area(z.fmt)] if ok else order
+        if smaller:
+            tree2, z2 = fit(lambda h: make(h, False), smaller)
+            if reached(z2) or (not ok and _crank_kept(z2.layout)):
+                shared, tree, z = False, tree2, z2
+    refs = {pl.view.title: (pl.scale.k, pl.size) for pl in z.layout
+            if isinstance(pl.view, Polygon) and pl.scale}  # fmt: skip
+    field = Field.of_format(z.fmt, z.landscape)
+    tried: list[tuple[Tree, formats.Sized]] = []
+    for h in (TEXT_H, SMALL_TEXT_H):
+        tree, _ = _sheet2(s, P, f, k, h, refs, shared)
+        lay = arrange(tree, field)
+        tried.append((tree, formats.Sized(z.fmt, z.landscape, lay)))
+    big, small = (t[1].layout for t in tried)
+    # the larger text where it fits and draws the links at the smaller text's scales, or costs
+    # the views at most TEXT_COST of the search's score (as linkage.fit weighs it)
+    good = big.fits and _crank_kept(big) and _groups_kept(big)
+    if good and (
+        not small.fits
+        or _l_scales(big) == _l_scales(small)
+        or big.score[1] >= small.score[1] - TEXT_COST
+    ):
+        return tried[0]
+    return tried[1] if small.fits else tried[0]
+
+
+def _l_scales(lay: Layout) -> tuple[float, float]:
+    """The μ_l (m/mm) of the loaded mechanism and of the groups cut out."""
+    main = [pl.scale.k for pl in lay if isinstance(pl.view, _Loaded) and pl.scale is not None]
+    own = [pl.scale.k for pl in lay if isinstance(pl.view, _FreeBody) and pl.scale is not None]
+    return (main[0] if main else 0.0), max(own, default=0.0)
+
+
+#: The groups and the crank cut out at a μ_l of their own are drawn at least this share of
+#: the mechanism's size (1:5 beside 1:2.5).
+GROUPS_SHARE = 0.5
+
+
+def _groups_kept(lay: Layout) -> bool:
+    """Whether the groups cut out are drawn at least :data:`GROUPS_SHARE` of the mechanism's
+    size (where they have a μ_l of their own)."""
+    main = [pl.scale.k for pl in lay if isinstance(pl.view, _Loaded) and pl.scale is not None]
+    own = [pl.scale.k for pl in lay if isinstance(pl.view, _FreeBody) and pl.scale is not None]
+    return not main or all(main[0] / kk >= GROUPS_SHARE * (1.0 - tol.REL_LENGTH) for kk in own)
 
 
 def _crank_kept(lay: Layout) -> bool:
