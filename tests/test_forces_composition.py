@@ -104,3 +104,32 @@ def test_polygons_on_the_smaller_format_are_drawn_large(
             assert ext is not None
             side = max(ext[2] - ext[0], ext[3] - ext[1]) / pl.scale.k
             assert side >= lf.POLY_MM * 0.999, (pl.view.title, side)
+
+
+@pytest.mark.parametrize("path", FILES, ids=[p.stem for p in FILES])
+def test_a_larger_format_only_where_the_smaller_one_fails_the_rules(path: Path) -> None:
+    """The views grow (and the groups take a μ_l of their own) before a larger format is
+    taken: where the forces sheet is A1, no arrangement on A2 keeps its rules (the crank, the
+    polygons' size, the groups at least half the mechanism's size), whichever μ_l the groups
+    take and whichever text height."""
+    from geomcad.sheet import formats
+    from geomcad.sheet.linkage import _on
+
+    s = geomcad.solve(str(path)).data
+    _tree, z = lf.force_layout(s)
+    if z.fmt != "A1":
+        return
+    P, forces, k = lf.force_position(s)
+    for shared in (True, False):
+        for h in (3.5, 2.5):
+            tree, wants = lf._sheet2(s, P, forces, k, h, shared=shared)
+            on = _on(tree, wants, "A2")
+            if on is None:
+                continue
+            lay = on[1].layout
+            assert not (
+                lay.fits
+                and formats.meets(lay, wants)
+                and lf._crank_kept(lay)
+                and lf._groups_kept(lay)
+            ), (shared, h)

@@ -17,10 +17,22 @@
 The sheets are trees of views (:mod:`geomcad.sheet.compose`): the layout chooses the splits
 and each view's scale (the largest of its series that fits its box), and every vector is drawn at
 the μ its view states. Each sheet takes the smallest format on which it fits
-(:func:`geomcad.sheet.linkage.fit`: A2 or A1, or the file's ``[sheet] format``; the force
-sheet's mechanism with its crank at least :data:`~geomcad.sheet.linkage.CRANK_MM` long), its
-tables, orders and notes 3.5 mm high on A2 and A1, its views' titles 5 mm. The words come from
-``strings/<lang>/linkage_forces.toml``.
+(:func:`geomcad.sheet.linkage.fit`: A2 or A1, or the file's ``[sheet] format``), its tables,
+orders and notes 3.5 mm high on A2 and A1, its views' titles 5 mm. The force sheet's
+composition (:func:`force_layout`, issue 27):
+
+- one μ_l for the mechanism and its groups and crank cut out (one scale group, stated in every
+  caption; the title block's Масштаб is the mechanism's), or, where the crank would then be
+  shorter than :data:`~geomcad.sheet.linkage.CRANK_MM` or a smaller format would do, one μ_l of
+  the groups' own, shared by all of them and at least half the mechanism's size;
+- the drawings of links never finer than :func:`links_scale` (the geometry alone: ω and the
+  loads rescale none of them), the crank at least CRANK_MM long where the mechanism's sweep
+  allows it (:data:`SWEEP_MAX_MM`);
+- the smallest format on which, besides, every force polygon is :data:`POLY_MM` across: the
+  views grow, and the groups take their own μ_l, before a larger format is taken; on the format
+  taken the tables are 3.5 mm high where the drawings of links keep their scales with it.
+
+The words come from ``strings/<lang>/linkage_forces.toml``.
 """
 
 from __future__ import annotations
@@ -140,8 +152,7 @@ def force_sheets(
     no = first_no
     fmts = sheet_formats(lk)
     if a.forces is not None:
-        P, forces, k = force_position(s)
-        tree, z = _compose2(s, P, forces, k, fmts)
+        tree, z = force_layout(s)
         d = z.start(_title(lk, WORDS("forces"), designation, no, count))
         compose(d, tree, layout=z.layout)
         main = [pl.scale for pl in z.layout if isinstance(pl.view, _Loaded)]
@@ -157,6 +168,13 @@ def force_sheets(
         compose(d, tree, layout=z.layout)
         out.append(("dynamics", d.finish()))
     return out
+
+
+def force_layout(s: Solved) -> tuple[Tree, formats.Sized]:
+    """Sheet 2's tree and its format and arrangement (:func:`_compose2`; for the size rules'
+    bench and the tests: the scales and the format without drawing)."""
+    P, forces, k = force_position(s)
+    return _compose2(s, P, forces, k, sheet_formats(s.linkage))
 
 
 def _compose2(
@@ -205,21 +223,28 @@ def _compose2(
             if isinstance(pl.view, Polygon) and pl.scale}  # fmt: skip
     field = Field.of_format(z.fmt, z.landscape)
     tried: list[tuple[Tree, formats.Sized]] = []
+    good: list[bool] = []
     for h in (TEXT_H, SMALL_TEXT_H):
-        tree, _ = _sheet2(s, P, f, k, h, refs, shared)
+        tree, w = _sheet2(s, P, f, k, h, refs, shared)
         lay = arrange(tree, field)
         tried.append((tree, formats.Sized(z.fmt, z.landscape, lay)))
+        # on a smaller format than the largest, its polygons POLY_MM across as it was chosen
+        # for (their details take some of their room: where neither text keeps them, the
+        # smaller)
+        wanted = formats.meets(lay, w) or z.fmt == order[-1]
+        good.append(lay.fits and _crank_kept(lay) and _groups_kept(lay) and wanted)
     big, small = (t[1].layout for t in tried)
-    # the larger text where it fits and draws the links at the smaller text's scales, or costs
-    # the views at most TEXT_COST of the search's score (as linkage.fit weighs it)
-    good = big.fits and _crank_kept(big) and _groups_kept(big)
-    if good and (
-        not small.fits
+    # the larger text where it keeps the rules and draws the links at the smaller text's
+    # scales, or costs the views at most TEXT_COST of the search's score (as linkage.fit)
+    if good[0] and (
+        not good[1]
         or _l_scales(big) == _l_scales(small)
         or big.score[1] >= small.score[1] - TEXT_COST
     ):
         return tried[0]
-    return tried[1] if small.fits else tried[0]
+    if good[1] or small.fits:
+        return tried[1]
+    return tried[0]
 
 
 def _l_scales(lay: Layout) -> tuple[float, float]:
