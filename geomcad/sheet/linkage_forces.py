@@ -327,6 +327,8 @@ def _sheet2(
     else:
         for b in bodies:
             b.weight = 2.0
+            # at least GROUPS_SHARE of the mechanism's size, which is never finer than k_l
+            b.readable, b.readable_mm = lk.length, GROUPS_SHARE * lk.length / k_l
     # each group's polygons under the group cut out (the crank's under the crank); a
     # polygon's vectors too short for its μ_F are drawn again, enlarged, in details at their
     # own stated μ_F beside it in its view (one letter each on the sheet)
