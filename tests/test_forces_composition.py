@@ -4,7 +4,8 @@ Every example with masses or loads is drawn through :func:`force_sheets` with th
 recorded, and checked as a teacher checks the sheet: one μ_l for the mechanism and its cut-out
 groups (or one stated μ_l shared by all the groups), the title block's Масштаб the mechanism's,
 the crank at least CRANK_MM long where the mechanism's sweep allows it, the force polygons at
-least POLY_MM across on the smaller format, and no large part of the field left empty.
+least POLY_MM across on the smaller format, and no large part of the field left empty (no
+empty rectangle of a quarter of it).
 """
 
 from __future__ import annotations
@@ -13,11 +14,15 @@ from collections.abc import Iterator
 from pathlib import Path
 
 import pytest
-from layout import empty_share
+import shapely
+from layout import _area, block_part, empty_share, frame_box
+from shapely.geometry import Point
+from shapely.geometry import box as sbox
 
 import geomcad
 from geomcad.sheet import linkage_forces as lf
 from geomcad.sheet.compose import Layout, Placed
+from geomcad.sheet.frame import reserved
 from geomcad.sheet.linkage import CRANK_MM
 from geomcad.sheet.model import Sheet
 from geomcad.sheet.views import Polygon
@@ -31,6 +36,37 @@ FILES = [
 #: The share of the field (10 mm cells, tests/layout.py) a forces sheet may leave empty: its
 #: drawings are sparse (links, polygons of thin vectors), but never most of an A1 blank.
 EMPTY_MAX = 0.85
+#: The largest empty rectangle of the field (10 mm cells) a forces sheet may have: no quarter of
+#: the sheet left blank.
+HOLE_MAX = 0.25
+
+
+def largest_hole(sheet: Sheet, cell: float = 10.0) -> float:
+    """The largest axis-parallel rectangle of the field's ``cell`` mm squares that nothing
+    drawn reaches (as :func:`layout.empty_share` counts them), as a share of all the frame's
+    squares (the title block's and графа 26's count as filled)."""
+    _form, drawn = block_part(sheet)
+    ink = shapely.union_all([_area(it).buffer(cell / 2.0) for it in drawn])
+    form = shapely.union_all([sbox(*f) for f in reserved(sheet.width, sheet.height)])
+    x0, y0, x1, y1 = frame_box(sheet)
+    nx, ny = int((x1 - x0) // cell), int((y1 - y0) // cell)
+    heights = [0] * nx
+    best = 0
+    for j in range(ny):
+        for i in range(nx):
+            c = Point(x0 + (i + 0.5) * cell, y0 + (j + 0.5) * cell)
+            free = not ink.contains(c) and not form.contains(c)
+            heights[i] = heights[i] + 1 if free else 0
+        # the largest rectangle under the histogram of free cells ending at this row
+        stack: list[tuple[int, int]] = []
+        for i, hh in enumerate([*heights, 0]):
+            start = i
+            while stack and stack[-1][1] >= hh:
+                s0, h0 = stack.pop()
+                best = max(best, h0 * (i - s0))
+                start = s0
+            stack.append((start, hh))
+    return best / (nx * ny)
 
 
 def _forces_sheet(path: Path, monkeypatch: pytest.MonkeyPatch) -> tuple[Sheet, Layout, object]:
@@ -89,6 +125,8 @@ def test_the_crank_and_the_field(path: Path, monkeypatch: pytest.MonkeyPatch) ->
     assert mech.scale.k >= lf.links_scale(s).k * 0.999  # type: ignore[arg-type]
     share = empty_share(sheet)
     assert share <= EMPTY_MAX, f"{share:.0%} of the field empty"
+    hole = largest_hole(sheet)
+    assert hole <= HOLE_MAX, f"an empty rectangle of {hole:.0%} of the field"
 
 
 @pytest.mark.parametrize("path", FILES, ids=[p.stem for p in FILES])
