@@ -1,6 +1,9 @@
 """The linkage sheets' size rules, file by file (run on demand): the crank's drawn length on the
 kinematic sheet's mechanism (rule: at least ``CRANK_MM``), the velocity plans' pa (at least
-``PA_MM``), the format and the tables' text height.
+``PA_MM``), the format and the tables' text height; then, for a file with masses or loads, the
+forces sheet's: its format, the crank on its mechanism (at least ``CRANK_MM`` where the sweep
+allows it), the μ_l of the mechanism and of its groups cut out, the smallest force polygon's
+larger side and the tables' text height.
 
     python3 bench/size_rules.py [FILE.toml …]   (default: every examples/*.toml with a linkage)
 """
@@ -11,7 +14,10 @@ import sys
 from pathlib import Path
 
 import geomcad
+from geomcad.linkage.analysis import analyse
 from geomcad.sheet import linkage as kin
+from geomcad.sheet import linkage_forces as lf
+from geomcad.sheet.views import Polygon
 
 ROOT = Path(__file__).resolve().parent.parent
 
@@ -40,7 +46,32 @@ def main() -> int:
         bad += not ok
         print(f"{Path(f).stem:24s} {fmt:6s} crank {crank:6.1f} mm ({lay.k_l.ratio_text():6s}{on})"
               f" pa {pa:6.1f} mm  text {hs}  {'ok' if ok else 'RULE BROKEN'}")  # fmt: skip
+        if analyse(s).forces is not None:
+            bad += not _forces(s)
     return 1 if bad else 0
+
+
+def _forces(s: object) -> bool:
+    """Print the forces sheet's size rules; whether they hold."""
+    tree, z = lf.force_layout(s)  # type: ignore[arg-type]
+    lk = s.linkage  # type: ignore[attr-defined]
+    placed = list(z.layout)
+    (mech,) = [pl for pl in placed if isinstance(pl.view, lf._Loaded)]
+    groups = {pl.scale.ratio_text() for pl in placed if isinstance(pl.view, lf._FreeBody)}
+    sides = [
+        max(e[2] - e[0], e[3] - e[1]) / pl.scale.k
+        for pl in placed
+        if isinstance(pl.view, Polygon) and pl.scale and (e := pl.view.extent())
+    ]
+    hs = sorted({v.height for v in kin._views(tree) if hasattr(v, "height")})
+    crank = lk.length / mech.scale.k
+    wanted = lf.sweep_mm(s, lf.crank_scale(lk).k) <= lf.SWEEP_MAX_MM  # type: ignore[arg-type]
+    ok = (crank >= kin.CRANK_MM - 0.05 or not wanted) and len(groups) == 1
+    print(f"{'  forces':24s} {z.fmt:6s} crank {crank:6.1f} mm ({mech.scale.ratio_text():6s})"
+          f" groups {'/'.join(sorted(groups)):6s} polygons ≥ {min(sides, default=0):5.1f} mm"
+          f"  text {hs}  {'ok' if ok else 'RULE BROKEN'}"
+          f"{'' if wanted else ' (crank: the sweep forbids 30 mm)'}")  # fmt: skip
+    return ok
 
 
 if __name__ == "__main__":

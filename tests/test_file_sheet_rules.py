@@ -247,10 +247,11 @@ def _ratios(sheet: Sheet) -> list[str]:
 
 
 def test_forces_sheet_scales_from_geometry(tmp_path: Path) -> None:
-    """The forces sheet's drawings of links are never finer than the GOST scale that draws
-    the crank 30 mm long, its Масштаб cell is the loaded mechanism's, and a change of ω alone
-    rescales no drawing of links (the shaper at ω1 = −8 and −12 1/s)."""
-    from geomcad.sheet.linkage_forces import crank_scale
+    """The forces sheet's drawings of links are never finer than the scale the geometry gives
+    them (links_scale: the crank 30 mm long, or the mechanism's sweep 200 mm), its Масштаб
+    cell is the loaded mechanism's, and a change of ω alone rescales no drawing of links (the
+    shaper at ω1 = −8 and −12 1/s)."""
+    from geomcad.sheet.linkage_forces import links_scale
 
     src = (EXAMPLES / "shaper.toml").read_text(encoding="utf-8")
     seen = []
@@ -260,7 +261,7 @@ def test_forces_sheet_scales_from_geometry(tmp_path: Path) -> None:
         sol = geomcad.solve(str(path))
         sheets = dict(sol.sheets())
         forces = _ratios(sheets["forces"])
-        least = float(crank_scale(sol.data.linkage).ratio_text().split(":")[1].replace(",", "."))
+        least = float(links_scale(sol.data).ratio_text().split(":")[1].replace(",", "."))
         assert all(float(r.split(":")[1].replace(",", ".")) >= least for r in forces), forces
         block = forces[0]
         assert block in {t.text for t in sheets["forces"].texts() if t.role == "title"}

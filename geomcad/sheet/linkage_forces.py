@@ -17,10 +17,22 @@
 The sheets are trees of views (:mod:`geomcad.sheet.compose`): the layout chooses the splits
 and each view's scale (the largest of its series that fits its box), and every vector is drawn at
 the μ its view states. Each sheet takes the smallest format on which it fits
-(:func:`geomcad.sheet.linkage.fit`: A2 or A1, or the file's ``[sheet] format``; the force
-sheet's mechanism with its crank at least :data:`~geomcad.sheet.linkage.CRANK_MM` long), its
-tables, orders and notes 3.5 mm high on A2 and A1, its views' titles 5 mm. The words come from
-``strings/<lang>/linkage_forces.toml``.
+(:func:`geomcad.sheet.linkage.fit`: A2 or A1, or the file's ``[sheet] format``), its tables,
+orders and notes 3.5 mm high on A2 and A1, its views' titles 5 mm. The force sheet's
+composition (:func:`force_layout`, issue 27):
+
+- one μ_l for the mechanism and its groups and crank cut out (one scale group, stated in every
+  caption; the title block's Масштаб is the mechanism's), or, where the crank would then be
+  shorter than :data:`~geomcad.sheet.linkage.CRANK_MM` or a smaller format would do, one μ_l of
+  the groups' own, shared by all of them and at least half the mechanism's size;
+- the drawings of links never finer than :func:`links_scale` (the geometry alone: ω and the
+  loads rescale none of them), the crank at least CRANK_MM long where the mechanism's sweep
+  allows it (:data:`SWEEP_MAX_MM`);
+- the smallest format on which, besides, every force polygon is :data:`POLY_MM` across: the
+  views grow, and the groups take their own μ_l, before a larger format is taken; on the format
+  taken the tables are 3.5 mm high where the drawings of links keep their scales with it.
+
+The words come from ``strings/<lang>/linkage_forces.toml``.
 """
 
 from __future__ import annotations
@@ -44,26 +56,32 @@ from geomcad.linkage.loads import centre_vec
 from geomcad.linkage.model import Linkage
 from geomcad.linkage.plans import Position
 from geomcad.linkage.solution import Solved, scheme
-from geomcad.sheet import Drawing, Sheet, TitleBlock, fmt_number, symbols
+from geomcad.sheet import Drawing, Sheet, TitleBlock, fmt_number, formats, symbols
 from geomcad.sheet.compose import _GOST_K as GOST_K
 from geomcad.sheet.compose import (
     TITLE_LEAD,
     TITLE_SPACING,
     Choice,
     Column,
+    Field,
     Grid,
+    Layout,
     Placed,
     Row,
     Tree,
     View,
+    arrange,
     compose,
 )
 from geomcad.sheet.drawing import SHORT_MM, Viewport
+from geomcad.sheet.frame import FORMATS
 from geomcad.sheet.graph import Axis, Graph
 from geomcad.sheet.lang import Words, current
 from geomcad.sheet.linkage import (
     CRANK_MM,
     SMALL_TEXT_H,
+    TEXT_COST,
+    TEXT_H,
     TITLE_H,
     ZERO,
     file_title,
@@ -112,6 +130,10 @@ PLAN_MM = 100.0
 PLAN_SEEK_MM = 80.0
 #: The width of the note under the table of loads (mm), for 2.5 mm text.
 TABLE2_W = 60.0
+#: The scale group of the force sheet's drawings of links: the mechanism, its groups, its crank.
+L_GROUP = "l"
+#: The scale group of the groups and the crank cut out where they cannot share the mechanism's.
+GROUPS_L = "lg"
 
 
 def force_position(s: Solved) -> tuple[Position, Forces, int | None]:
@@ -137,14 +159,7 @@ def force_sheets(
     no = first_no
     fmts = sheet_formats(lk)
     if a.forces is not None:
-        P, forces, k = force_position(s)
-        # first the polygons alone (as large as the sheet draws them), then, on that format,
-        # with their details reckoned at the μ_F each got there: the details take the room
-        # the polygon leaves free where they can
-        tree, z = fit(lambda h: _sheet2(s, P, forces, k, h), fmts)
-        refs = {pl.view.title: (pl.scale.k, pl.size) for pl in z.layout
-                if isinstance(pl.view, Polygon) and pl.scale}  # fmt: skip
-        tree, z = fit(lambda h: _sheet2(s, P, forces, k, h, refs), [z.fmt])
+        tree, z = force_layout(s)
         d = z.start(_title(lk, WORDS("forces"), designation, no, count))
         compose(d, tree, layout=z.layout)
         main = [pl.scale for pl in z.layout if isinstance(pl.view, _Loaded)]
@@ -160,6 +175,113 @@ def force_sheets(
         compose(d, tree, layout=z.layout)
         out.append(("dynamics", d.finish()))
     return out
+
+
+def force_layout(s: Solved) -> tuple[Tree, formats.Sized]:
+    """Sheet 2's tree and its format and arrangement (:func:`_compose2`; for the size rules'
+    bench and the tests: the scales and the format without drawing)."""
+    P, forces, k = force_position(s)
+    return _compose2(s, P, forces, k, sheet_formats(s.linkage))
+
+
+def _compose2(
+    s: Solved, P: Position, f: Forces, k: int | None, fmts: Sequence[str]
+) -> tuple[Tree, formats.Sized]:
+    """Sheet 2's tree and its format and arrangement.
+
+    The format: the smallest of ``fmts`` on which the sheet fits with its crank
+    :data:`~geomcad.sheet.linkage.CRANK_MM` long and its polygons :data:`POLY_MM` across
+    (:func:`~geomcad.sheet.linkage.fit`), the groups and the crank cut out at the mechanism's
+    μ_l; where that takes a larger format than the groups at one μ_l of their own would (or
+    does not keep the crank's length), at their own μ_l: the views share less before a larger
+    format is taken (issue 27). First the polygons alone (as large as the sheet draws them),
+    then, on that format, with their details reckoned at the μ_F each got there (the details
+    take the room the polygon leaves free where they can); the tables and texts
+    :data:`~geomcad.sheet.linkage.TEXT_H` high where that fits on the format and draws the
+    links at the scales the smaller text gives them (an A1 with room to spare never has its
+    tables at 2.5 mm), or costs the views at most :data:`~geomcad.sheet.linkage.TEXT_COST`,
+    else :data:`~geomcad.sheet.linkage.SMALL_TEXT_H`."""
+    wants: list[dict[View, float]] = []
+
+    def make(h: float, shared: bool) -> tuple[Tree, dict[View, float]]:
+        tree, w = _sheet2(s, P, f, k, h, shared=shared)
+        wants.append(w)
+        return tree, w
+
+    def reached(z: formats.Sized) -> bool:
+        lay = z.layout
+        (w,) = [w for w in wants if all(id(v) in lay.placed for v in w)]
+        return lay.fits and formats.meets(lay, w) and _crank_kept(lay) and _groups_kept(lay)
+
+    def area(fmt: str) -> float:
+        return FORMATS[fmt][0] * FORMATS[fmt][1]
+
+    order = sorted(fmts, key=area)
+    shared = True
+    tree, z = fit(lambda h: make(h, True), order)
+    ok = reached(z)
+    if not ok or z.fmt != order[0]:
+        smaller = [fm for fm in order if area(fm) < area(z.fmt)] if ok else order
+        if smaller:
+            tree2, z2 = fit(lambda h: make(h, False), smaller)
+            if reached(z2) or (not ok and _crank_kept(z2.layout)):
+                shared, tree, z = False, tree2, z2
+    refs = {pl.view.title: (pl.scale.k, pl.size) for pl in z.layout
+            if isinstance(pl.view, Polygon) and pl.scale}  # fmt: skip
+    field = Field.of_format(z.fmt, z.landscape)
+    tried: list[tuple[Tree, formats.Sized]] = []
+    good: list[bool] = []
+    for h in (TEXT_H, SMALL_TEXT_H):
+        tree, w = _sheet2(s, P, f, k, h, refs, shared)
+        lay = arrange(tree, field)
+        tried.append((tree, formats.Sized(z.fmt, z.landscape, lay)))
+        # on a smaller format than the largest, its polygons POLY_MM across as it was chosen
+        # for (their details take some of their room: where neither text keeps them, the
+        # smaller)
+        wanted = formats.meets(lay, w) or z.fmt == order[-1]
+        good.append(lay.fits and _crank_kept(lay) and _groups_kept(lay) and wanted)
+    big, small = (t[1].layout for t in tried)
+    # the larger text where it keeps the rules and draws the links at the smaller text's
+    # scales, or costs the views at most TEXT_COST of the search's score (as linkage.fit)
+    if good[0] and (
+        not good[1]
+        or _l_scales(big) == _l_scales(small)
+        or big.score[1] >= small.score[1] - TEXT_COST
+    ):
+        return tried[0]
+    if good[1] or small.fits:
+        return tried[1]
+    return tried[0]
+
+
+def _l_scales(lay: Layout) -> tuple[float, float]:
+    """The μ_l (m/mm) of the loaded mechanism and of the groups cut out."""
+    main = [pl.scale.k for pl in lay if isinstance(pl.view, _Loaded) and pl.scale is not None]
+    own = [pl.scale.k for pl in lay if isinstance(pl.view, _FreeBody) and pl.scale is not None]
+    return (main[0] if main else 0.0), max(own, default=0.0)
+
+
+#: The groups and the crank cut out at a μ_l of their own are drawn at least this share of
+#: the mechanism's size (1:5 beside 1:2.5).
+GROUPS_SHARE = 0.5
+
+
+def _groups_kept(lay: Layout) -> bool:
+    """Whether the groups cut out are drawn at least :data:`GROUPS_SHARE` of the mechanism's
+    size (where they have a μ_l of their own)."""
+    main = [pl.scale.k for pl in lay if isinstance(pl.view, _Loaded) and pl.scale is not None]
+    own = [pl.scale.k for pl in lay if isinstance(pl.view, _FreeBody) and pl.scale is not None]
+    return not main or all(main[0] / kk >= GROUPS_SHARE * (1.0 - tol.REL_LENGTH) for kk in own)
+
+
+def _crank_kept(lay: Layout) -> bool:
+    """Whether the layout draws the loaded mechanism's crank as long as it wants (its
+    ``readable`` length at least ``readable_mm``; true where the sweep forbids that want)."""
+    for pl in lay:
+        v = pl.view
+        if isinstance(v, _Loaded) and pl.scale is not None and v.readable > 0.0:
+            return v.readable / pl.scale.k >= v.readable_mm * (1.0 - tol.REL_LENGTH)
+    return True
 
 
 def _title(lk: Linkage, what: str, designation: str, no: int, count: int) -> TitleBlock:
@@ -181,23 +303,39 @@ def _num(x: float, digits: int = 4, scale: float = 0.0) -> str:
 
 def _sheet2(
     s: Solved, P: Position, f: Forces, k: int | None, h: float,
-    refs: Mapping[str, tuple[float, tuple[float, float]]] | None = None,
+    refs: Mapping[str, tuple[float, tuple[float, float]]] | None = None, shared: bool = True,
 ) -> tuple[Tree, dict[View, float]]:  # fmt: skip
-    """Sheet 2's tree, its tables and texts ``h`` high, and the scale its mechanism wants. The
+    """Sheet 2's tree, its tables and texts ``h`` high, and the scales its views want. The
     force polygons are drawn with their details where ``refs`` gives their reference μ_F and
-    room (mm; by their titles), else alone (for a first arrangement)."""
+    room (mm; by their titles), else alone (for a first arrangement). The groups and the crank
+    cut out are drawn at the mechanism's μ_l (``shared``), else at one μ_l of their own."""
     lk = s.linkage
-    # the length scales from the geometry alone: never finer than the GOST scale that draws
-    # the crank CRANK_MM long (a change of ω or of the loads rescales no drawing of links)
-    k_l = crank_scale(lk).k
+    # the length scales from the geometry alone (a change of ω or of the loads rescales no
+    # drawing of links): never finer than links_scale; the crank CRANK_MM long where the
+    # mechanism's sweep allows it on the sheet
+    k_l = links_scale(s).k
     deg = math.degrees(P.phi) % 360.0
     phi = fmt_fixed(deg, angle_places([deg]), current())
     title = WORDS("mech", k=k, phi=phi) if k is not None else WORDS("mech_phi", phi=phi)
     mech = _Loaded(lk, P, f, title)
-    mech.least_k = k_l
+    if sweep_mm(s, crank_scale(lk).k) <= SWEEP_MAX_MM:
+        mech.readable, mech.readable_mm = lk.length, CRANK_MM
     bodies = [_FreeBody(lk, P, gf) for gf in f.groups]
-    for b in bodies:
-        b.least_k = k_l
+    # one μ_l for the mechanism and its cut-out groups and crank (issue 27, point 7): one scale
+    # group, the coarsest any of them needs, stated in every caption
+    for v in (mech, *bodies):
+        v.least_k = k_l
+        v.group = L_GROUP if shared else GROUPS_L
+    mech.group = L_GROUP
+    # the search counts a scale group once, at its heaviest member's weight: the mechanism's
+    # (2) and one for each drawing of links it draws at its scale, as each had on its own
+    if shared:
+        mech.weight = 2.0 + len(bodies)
+    else:
+        for b in bodies:
+            b.weight = 2.0
+            # at least GROUPS_SHARE of the mechanism's size, which is never finer than k_l
+            b.readable, b.readable_mm = lk.length, GROUPS_SHARE * lk.length / k_l
     # each group's polygons under the group cut out (the crank's under the crank); a
     # polygon's vectors too short for its μ_F are drawn again, enlarged, in details at their
     # own stated μ_F beside it in its view (one letter each on the sheet)
@@ -233,22 +371,70 @@ def _sheet2(
         Row(Column(mech, lever), Column(Grid(*bodies), Row(Grid(*polys), right))),
         Column(Row(mech, lever, right), groups),
     )
-    # a force plan is drawn large (its longest vector at least PLAN_MM): a format too small
-    # for that is passed over for the next, as one too small for the mechanism's scale
-    wants: dict[View, float] = {mech: lk.length / CRANK_MM}
+    # the format: the smallest on which the crank is CRANK_MM long (where the sweep allows it),
+    # every force polygon at least POLY_MM across and its longest vector at least PLAN_MM (a
+    # course project draws its plans large): a format too small for that is passed over
+    wants: dict[View, float] = {}
     for p in polys:
         big = max(pv.magnitude for poly, _ in p.layers for pv in poly.vectors)
+        side = max(_side(p))
+        want = max(big / PLAN_MM, side / POLY_MM)
+        if want > 0.0:
+            wants[p] = want
         if big > 0.0:
-            wants[p] = big / PLAN_MM
             # and on the largest format the search seeks it (its longest vector PLAN_SEEK_MM)
             p.readable = max(p.readable, big * p.readable_mm / PLAN_SEEK_MM)
+    if mech.readable > 0.0:
+        wants[mech] = lk.length / CRANK_MM
     return tree, wants
+
+
+def _side(v: View) -> tuple[float, float]:
+    ext = v.extent()
+    assert ext is not None
+    return ext[2] - ext[0], ext[3] - ext[1]
 
 
 #: The letters of the forces and moments on a forces sheet, the balancing force's and the
 #: centres of mass' (no detail is lettered with one; nor with the inertia force's, in the
 #: language drawn).
 _FORCE_LETTERS = ("F", "G", "M", "P", "R", "S")
+
+
+#: A force polygon's larger side (mm) on the smallest format the force sheet may take.
+POLY_MM = 60.0
+#: The larger side (mm) of the box the mechanism sweeps over a turn that its drawing on the
+#: force sheet is scaled up to (the finest GOST scale at which it is at most this): the main
+#: view is large where the crank alone would leave it small (a long crank, short links).
+SWEEP_MM = 200.0
+#: Where the mechanism's sweep would be larger than this (mm) with its crank CRANK_MM long (a
+#: crusher's short crank on long links), the crank's length is no rule of the layout.
+SWEEP_MAX_MM = 400.0
+
+
+def sweep_box(s: Solved) -> tuple[float, float]:
+    """The width and height (m) of the box every named point of the mechanism sweeps over
+    its numbered positions (the geometry alone: no ω, no load)."""
+    pts = [q for P in s.drawn or s.positions for q in P.pos.values()]
+    xs = [q.x for q in pts]
+    ys = [q.y for q in pts]
+    return max(xs) - min(xs), max(ys) - min(ys)
+
+
+def sweep_mm(s: Solved, k: float) -> float:
+    """The larger side (mm) of the mechanism's sweep (:func:`sweep_box`) at ``k`` m/mm."""
+    return max(sweep_box(s)) / k
+
+
+def links_scale(s: Solved) -> Scale:
+    """The finest length scale a drawing of the force sheet's links takes: the finer of
+    :func:`crank_scale` and the finest GOST 2.302 scale at which the mechanism's sweep is at
+    most :data:`SWEEP_MM` (from the dimensions alone, so that ω and the loads never rescale a
+    drawing of links; the layout takes it where the sheet has room, a coarser one else)."""
+    big = max(sweep_box(s))
+    fits = [k for k in GOST_K if big / k <= SWEEP_MM * (1.0 + tol.REL_LENGTH)]
+    sweep = min(fits) if fits else max(GOST_K)
+    return Scale(min(crank_scale(s.linkage).k, sweep), "l")
 
 
 def crank_scale(lk: Linkage) -> Scale:

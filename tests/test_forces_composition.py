@@ -1,0 +1,174 @@
+"""The forces sheet's composition (issue 27): its length scales, its format, its field.
+
+Every example with masses or loads is drawn through :func:`force_sheets` with the layout
+recorded, and checked as a teacher checks the sheet: one μ_l for the mechanism and its cut-out
+groups (or one stated μ_l shared by all the groups), the title block's Масштаб the mechanism's,
+the crank at least CRANK_MM long where the mechanism's sweep allows it, the force polygons at
+least POLY_MM across on the smaller format, and no large part of the field left empty (no
+empty rectangle of a quarter of it).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from pathlib import Path
+
+import pytest
+import shapely
+from layout import _area, block_part, empty_share, frame_box
+from shapely.geometry import Point
+from shapely.geometry import box as sbox
+
+import geomcad
+from geomcad.sheet import linkage_forces as lf
+from geomcad.sheet.compose import Layout, Placed
+from geomcad.sheet.frame import reserved
+from geomcad.sheet.linkage import CRANK_MM
+from geomcad.sheet.model import Sheet
+from geomcad.sheet.views import Polygon
+
+EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
+FILES = [
+    p
+    for p in sorted(EXAMPLES.glob("*.toml"))
+    if "[links." in p.read_text(encoding="utf-8") or "[[load]]" in p.read_text(encoding="utf-8")
+]
+#: The share of the field (10 mm cells, tests/layout.py) a forces sheet may leave empty: its
+#: drawings are sparse (links, polygons of thin vectors), but never most of an A1 blank.
+EMPTY_MAX = 0.85
+#: The largest empty rectangle of the field (10 mm cells) a forces sheet may have: no quarter of
+#: the sheet left blank.
+HOLE_MAX = 0.25
+
+
+def largest_hole(sheet: Sheet, cell: float = 10.0) -> float:
+    """The largest axis-parallel rectangle of the field's ``cell`` mm squares that nothing
+    drawn reaches (as :func:`layout.empty_share` counts them), as a share of all the frame's
+    squares (the title block's and графа 26's count as filled)."""
+    _form, drawn = block_part(sheet)
+    ink = shapely.union_all([_area(it).buffer(cell / 2.0) for it in drawn])
+    form = shapely.union_all([sbox(*f) for f in reserved(sheet.width, sheet.height)])
+    x0, y0, x1, y1 = frame_box(sheet)
+    nx, ny = int((x1 - x0) // cell), int((y1 - y0) // cell)
+    heights = [0] * nx
+    best = 0
+    for j in range(ny):
+        for i in range(nx):
+            c = Point(x0 + (i + 0.5) * cell, y0 + (j + 0.5) * cell)
+            free = not ink.contains(c) and not form.contains(c)
+            heights[i] = heights[i] + 1 if free else 0
+        # the largest rectangle under the histogram of free cells ending at this row
+        stack: list[tuple[int, int]] = []
+        for i, hh in enumerate([*heights, 0]):
+            start = i
+            while stack and stack[-1][1] >= hh:
+                s0, h0 = stack.pop()
+                best = max(best, h0 * (i - s0))
+                start = s0
+            stack.append((start, hh))
+    return best / (nx * ny)
+
+
+def _forces_sheet(path: Path, monkeypatch: pytest.MonkeyPatch) -> tuple[Sheet, Layout, object]:
+    drawn: list[Layout] = []
+    real = lf.compose
+
+    def recorded(d: object, tree: object, field_: object = None, layout: object = None) -> Layout:
+        lay = real(d, tree, field_, layout)  # type: ignore[arg-type]
+        drawn.append(lay)
+        return lay
+
+    monkeypatch.setattr(lf, "compose", recorded)
+    s = geomcad.solve(str(path)).data
+    sheets = dict(lf.force_sheets(s, path.stem))
+    return sheets["forces"], drawn[0], s
+
+
+def _links(lay: Layout) -> Iterator[Placed]:
+    for pl in lay:
+        if isinstance(pl.view, lf._Forces):
+            yield pl
+
+
+@pytest.mark.parametrize("path", FILES, ids=[p.stem for p in FILES])
+def test_one_length_scale_for_the_mechanism_and_one_for_its_groups(
+    path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    sheet, lay, s = _forces_sheet(path, monkeypatch)
+    mech = [pl for pl in _links(lay) if isinstance(pl.view, lf._Loaded)]
+    bodies = [pl for pl in _links(lay) if isinstance(pl.view, lf._FreeBody)]
+    assert len(mech) == 1 and bodies
+    main = mech[0].scale
+    assert main is not None
+    # the groups and the crank share one μ_l: the mechanism's, or one of their own
+    assert len({pl.scale for pl in bodies}) == 1, [pl.scale for pl in bodies]
+    # each view states its μ_l in its caption (the sheet says so next to each view)
+    for pl in [*mech, *bodies]:
+        assert pl.scale is not None
+        assert pl.scale.ratio_text() in pl.view.caption(pl.scale)
+    assert sheet.block is not None and sheet.block.scale == main.ratio_text()
+    # never coarser than the shared scale where the crank keeps its length with it
+    lk = s.linkage  # type: ignore[attr-defined]
+    if bodies[0].scale != main:
+        assert lk.length / main.k >= CRANK_MM * 0.999
+
+
+@pytest.mark.parametrize("path", FILES, ids=[p.stem for p in FILES])
+def test_the_crank_and_the_field(path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    sheet, lay, s = _forces_sheet(path, monkeypatch)
+    (mech,) = [pl for pl in _links(lay) if isinstance(pl.view, lf._Loaded)]
+    lk = s.linkage  # type: ignore[attr-defined]
+    assert mech.scale is not None
+    if lf.sweep_mm(s, lf.crank_scale(lk).k) <= lf.SWEEP_MAX_MM:  # type: ignore[arg-type]
+        assert lk.length / mech.scale.k >= CRANK_MM * 0.999, mech.scale
+    # the main view never finer than the geometry's scale (ω rescales no drawing of links)
+    assert mech.scale.k >= lf.links_scale(s).k * 0.999  # type: ignore[arg-type]
+    share = empty_share(sheet)
+    assert share <= EMPTY_MAX, f"{share:.0%} of the field empty"
+    hole = largest_hole(sheet)
+    assert hole <= HOLE_MAX, f"an empty rectangle of {hole:.0%} of the field"
+
+
+@pytest.mark.parametrize("path", FILES, ids=[p.stem for p in FILES])
+def test_polygons_on_the_smaller_format_are_drawn_large(
+    path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    sheet, lay, _s = _forces_sheet(path, monkeypatch)
+    if sheet.format == "A1":
+        return  # the largest format: every view as large as the search can draw it
+    for pl in lay:
+        if isinstance(pl.view, Polygon) and pl.scale is not None:
+            ext = pl.view.extent()
+            assert ext is not None
+            side = max(ext[2] - ext[0], ext[3] - ext[1]) / pl.scale.k
+            assert side >= lf.POLY_MM * 0.999, (pl.view.title, side)
+
+
+@pytest.mark.parametrize("path", FILES, ids=[p.stem for p in FILES])
+def test_a_larger_format_only_where_the_smaller_one_fails_the_rules(path: Path) -> None:
+    """The views grow (and the groups take a μ_l of their own) before a larger format is
+    taken: where the forces sheet is A1, no arrangement on A2 keeps its rules (the crank, the
+    polygons' size, the groups at least half the mechanism's size), whichever μ_l the groups
+    take and whichever text height."""
+    from geomcad.sheet import formats
+    from geomcad.sheet.linkage import _on
+
+    s = geomcad.solve(str(path)).data
+    _tree, z = lf.force_layout(s)
+    if z.fmt != "A1":
+        return
+    P, forces, k = lf.force_position(s)
+    for shared in (True, False):
+        for h in (3.5, 2.5):
+            tree, wants = lf._sheet2(s, P, forces, k, h, shared=shared)
+            on = _on(tree, wants, "A2")
+            if on is None:
+                continue
+            lay = on[1].layout
+            reached = formats.meets(lay, wants)
+            assert not (lay.fits and reached and lf._crank_kept(lay) and lf._groups_kept(lay)), (
+                shared,
+                h,
+            )
+            if not reached:
+                break  # as linkage.fit: the smaller text is tried only where the scales hold
