@@ -12,11 +12,15 @@ import math
 from collections.abc import Iterable
 from dataclasses import dataclass
 
+import numpy as np
+import shapely
+
 from geomcad import tol
 from geomcad.geom import PointLike, Vec
 from geomcad.sheet import symbols
-from geomcad.sheet.drawing import SHORT_MM, Viewport, _arrow
-from geomcad.sheet.model import XY, Polyline
+from geomcad.sheet.drawing import ARROW_HALF_WIDTH, ARROW_LEN, JOINT_R, SHORT_MM, Viewport, _arrow
+from geomcad.sheet.model import XY, Polyline, Sheet, TextItem
+from geomcad.sheet.placer import centre_line
 from geomcad.sheet.scale import Scale, nice_factor
 
 #: A moment arrow's sweep (rad) and the gap between its ends.
@@ -118,6 +122,133 @@ def force_scales(
     return ForceScales(tuple(scales), zero)
 
 
+#: A force's arrow on a free body keeps this far (mm) from the centre lines of what is drawn
+#: there (the links, the symbols of their pairs, the hatching, the arrows drawn before it) …
+CLEAR_MM = 2.0
+#: … and this far from the force arrows drawn before it (two arrows on one line of action, tail
+#: to tail, would read as one double-headed arrow); its head this much farther from a line
+#: (the head's half width and a gap): no head in a hatch. Near its point of application, within
+#: AT_POINT_MM (a joint's circle), it may touch the body.
+ARROW_GAP_MM = 4.0
+HEAD_CLEAR_MM = ARROW_HALF_WIDTH + 0.4
+AT_POINT_MM = JOINT_R + 0.5
+#: The costs of an arrow's place (per mm): of its shaft on a line, of its head on one, of it
+#: outside its view's box or within ARROW_GAP_MM of another arrow, of the gap between its
+#: point of application and its nearer end; and the cost of the end the caller did not ask for
+#: (leaving instead of arriving, or back).
+_W_LINE, _W_HEAD, _W_OUT, _W_GAP, _W_END = 1.0, 4.0, 3.0, 0.1, 0.5
+#: How far (mm) an arrow may be moved along its line of action beyond either of its ends
+#: (at least; as far as its view's box reaches where that is farther).
+SLIDE_MM = 40.0
+_STEP = 0.25
+
+
+@dataclass
+class Clearance:
+    """Where the force arrows of a free body go: each on its line of action, at its point of
+    application (leaving it, or arriving at it) where that is clear, else moved along its line
+    of action (a force on a rigid body acts anywhere on its line) until it is: an arrow never
+    runs along a link or a guide, nor ends in a hatch.
+
+    Everything drawn on ``sheet`` from item ``start`` on is in the way (the scheme of the body,
+    its moments' arcs, the arrows placed before); ``box`` (sheet mm) is the view's, which the
+    arrows keep inside where they can.
+    """
+
+    sheet: Sheet
+    start: int
+    box: tuple[float, float, float, float] | None = None
+    #: The first of the sheet's vectors drawn on this free body (set from ``sheet``).
+    first_vector: int = -1
+
+    def __post_init__(self) -> None:
+        if self.first_vector < 0:
+            self.first_vector = len(self.sheet.vectors)
+
+    def ink(self, p: XY) -> shapely.Geometry | None:
+        """The centre lines of what is drawn from ``start`` on (a filled head: its outline),
+        less their parts within :data:`AT_POINT_MM` of the point of application ``p`` (the
+        joint there, the link's end); ``None``: nothing."""
+        lines = []
+        for it in self.sheet.items[self.start :]:
+            if isinstance(it, TextItem):
+                continue
+            g = centre_line(it)
+            if isinstance(g, shapely.Polygon):
+                g = g.exterior
+            if isinstance(g, shapely.LineString):
+                lines.append(g)
+        if not lines:
+            return None
+        near = shapely.Point(p).buffer(AT_POINT_MM)
+        ink = shapely.difference(shapely.MultiLineString(lines), near)
+        return None if ink.is_empty else ink
+
+    def place(self, p: XY, u: XY, length: float, arrive: bool) -> tuple[XY, XY]:
+        """The (tail, tip) in sheet mm of an arrow ``length`` mm long along the paper unit
+        direction ``u`` on the line through ``p``: the cheapest place by the costs above
+        (``arrive``: the arrow the caller would draw ends at ``p``)."""
+        return self.best(p, u, length, arrive)[1:]
+
+    def best(self, p: XY, u: XY, length: float, arrive: bool) -> tuple[float, XY, XY]:
+        """:meth:`place`'s arrow with its cost (0: at its point and clear of everything)."""
+        reach = SLIDE_MM
+        if self.box is not None:
+            x0, y0, x1, y1 = self.box
+            reach = max(reach, math.hypot(x1 - x0, y1 - y0))
+        lo, hi = -length - reach, length + reach
+        ts = np.arange(lo, hi + _STEP / 2.0, _STEP)
+        pts = np.column_stack([p[0] + ts * u[0], p[1] + ts * u[1]])
+        ink = self.ink(p)
+        if ink is None:
+            d = np.full(len(ts), np.inf)
+        else:
+            d = np.asarray(shapely.distance(shapely.points(pts), ink), dtype=float)
+        arrows = [shapely.LineString([a, b]) for a, b in self.sheet.vectors[self.first_vector :]]
+        on_arrow = np.zeros(len(ts), dtype=bool)
+        if arrows:
+            da = shapely.distance(shapely.points(pts), shapely.MultiLineString(arrows))
+            on_arrow = np.asarray(da, dtype=float) < ARROW_GAP_MM
+        free = np.abs(ts) <= AT_POINT_MM  # the point of application: the body is there
+        on_line = (d < CLEAR_MM) & ~free
+        on_head = (d < CLEAR_MM + HEAD_CLEAR_MM) & ~free
+        out = np.zeros(len(ts), dtype=bool)
+        if self.box is not None:
+            x0, y0, x1, y1 = self.box
+            out = (pts[:, 0] < x0) | (pts[:, 0] > x1) | (pts[:, 1] < y0) | (pts[:, 1] > y1)
+        cum = {
+            k: np.concatenate([[0.0], np.cumsum(a.astype(float))])
+            for k, a in (("line", on_line), ("head", on_head), ("out", out), ("arrow", on_arrow))
+        }
+
+        def run(key: str, a: float, b: float) -> float:
+            i = int(np.searchsorted(ts, a, "left"))
+            j = int(np.searchsorted(ts, b, "right"))
+            return float(cum[key][j] - cum[key][i]) * _STEP
+
+        slide = np.arange(0.0, reach + _STEP, 1.0)
+        starts = sorted({0.0, -length, *slide, *(-length - slide)})
+        best: tuple[float, float] | None = None
+        for s in starts:
+            e = s + length
+            cost = (
+                _W_LINE * run("line", s, e)
+                + _W_HEAD * run("head", e - ARROW_LEN, e)
+                + _W_OUT * run("out", s, e)
+                + _W_OUT * run("arrow", s, e)
+                + _W_GAP * min(abs(s), abs(e))
+            )
+            if (s >= 0.0 and arrive) or (e <= 0.0 and not arrive):
+                cost += _W_END
+            if best is None or cost < best[0] - tol.DERIVED:
+                best = (cost, s)
+        assert best is not None
+        s = best[1]
+        tail = (p[0] + u[0] * s, p[1] + u[1] * s)
+        tip = (p[0] + u[0] * (s + length), p[1] + u[1] * (s + length))
+        return best[0], tail, tip
+
+
 def force(
     v: Viewport,
     at: PointLike,
@@ -128,26 +259,33 @@ def force(
     role: str = "vector",
     height: float = 3.5,
     prefer: tuple[float, float] | None = None,
+    clear: Clearance | None = None,
 ) -> tuple[XY, XY] | None:
     """The force ``F`` (N, model directions) at model point ``at``, |F|/k_F mm long.
 
-    ``arrive`` draws it ending at the point instead of leaving it. Returns the (tail, tip) in
-    sheet mm, or ``None`` for a zero force (nothing is drawn then).
+    ``arrive`` draws it ending at the point instead of leaving it; ``clear`` (a free body's
+    :class:`Clearance`) draws it where its line of action is clear of the drawing instead. The
+    label goes at the arrow's end away from the point. Returns the (tail, tip) in sheet mm, or
+    ``None`` for a zero force (nothing is drawn then).
     """
     length = F.norm / k_F
     if length <= 0.0:
         return None
     p = v.p(at)
     ux, uy = F.x / F.norm, -F.y / F.norm  # paper direction (y down)
-    if arrive:
+    if clear is not None:
+        tail, tip = clear.place(p, (ux, uy), length, arrive)
+    elif arrive:
         tail, tip = (p[0] - ux * length, p[1] - uy * length), p
     else:
         tail, tip = p, (p[0] + ux * length, p[1] + uy * length)
     _arrow(v.sheet, tail, tip, role)
     if label:
-        end = tail if arrive else tip
+        # the end farther from the point of application, the label beyond it
+        back = math.dist(tail, p) > math.dist(tip, p)
+        end = tail if back else tip
         mid = ((tail[0] + tip[0]) / 2.0, (tail[1] + tip[1]) / 2.0)
-        away = (-ux, -uy) if arrive else (ux, uy)
+        away = (-ux, -uy) if back else (ux, uy)
         v.d.label(end, label, height, prefer=prefer or away, clear=1.0, others=(mid,))
     return tail, tip
 
