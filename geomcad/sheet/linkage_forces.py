@@ -164,6 +164,24 @@ def _title(lk: Linkage, what: str, designation: str, no: int, count: int) -> Tit
     )
 
 
+#: The significant figures of a value in the table of loads and in the order of the analysis
+#: (:func:`geomcad.sheet.views.num`): the two round a value the same way.
+TABLE_DIGITS = 4
+
+
+def _figures(x: float, scale: float) -> str:
+    """A value of the table of loads to :data:`TABLE_DIGITS` significant figures, its trailing
+    zeros kept (89,00 and 17,70, as 4 figures; the order of the analysis writes the same
+    numbers, 89 and 17,7); round-off of a zero (at most ``ZERO`` of ``scale``) as 0."""
+    if abs(x) <= ZERO * scale:
+        return "0"
+    text = f"{x:#.{TABLE_DIGITS}g}"
+    if "e" in text:  # 10^4 and more (whole, grouped) or a power of ten
+        return fmt_number(x, current(), TABLE_DIGITS)
+    text = text.rstrip(".").replace("-", "\u2013")
+    return text.replace(".", ",") if current() == "ru" else text
+
+
 def _num(x: float, digits: int = 4, scale: float = 0.0) -> str:
     return table_number(x, scale, digits)
 
@@ -668,15 +686,15 @@ def _table2(f: Forces, h: float) -> Table:
     moments.append((WORDS("m_bal_lever"), f.lever.M_bal))
     order += [("M", len(moments) - 2), ("M", len(moments) - 1)]
     # one unit per quantity on the sheet: N and N·m, as its order of calculation writes them;
-    # each quantity's numbers with one count of decimals (4 significant figures at its
-    # largest), a value that is round-off against the largest of its kind as 0 (an ε that
-    # vanishes in this position gives M_Φ = 10^-13 N·m, not a number to print)
+    # each value (a load or a reaction of its own, not one quantity over positions) to 4
+    # significant figures, as the order of the analysis writes it (G_2 = 88,29 in both, never
+    # 88 beside 2200; M_Ф4 = 0,06814, never 0,1 beside 161,5), the column aligned on its
+    # decimal comma; a value that is round-off against the largest of its kind as 0 (an ε
+    # that vanishes in this position gives M_Φ = 10^-13 N·m, not a number to print)
     big_f = max((x for _, x, _ in forces), default=0.0)
     big_m = max((abs(m) for _, m in moments), default=0.0)
-    f_text = fmt_column(
-        [0.0 if abs(x) <= ZERO * max(sc, big_f) else x for _, x, sc in forces], current(), 4
-    )
-    m_text = fmt_column([0.0 if abs(m) <= ZERO * big_m else m for _, m in moments], current(), 4)
+    f_text = [_figures(x, max(sc, big_f)) for _, x, sc in forces]
+    m_text = [_figures(m, big_m) for _, m in moments]
     rows: list[tuple[str, float | str, str]] = []
     for kind, i in order:
         if kind == "F":
