@@ -332,10 +332,16 @@ def _draw_loads(
         # the forces that are clear at their own points take them first; those that must be
         # moved along their lines of action (a load along its link) find room after them
         # (the larger first among those about as clear: the main load before a small weight)
-        forces.sort(key=lambda ld: (round(_cost(v, ld, fs, clear)), -_norm(ld)))
+        forces.sort(key=lambda ld: (_cost(v, ld, fs, clear) // CLEAR_BAND, -_norm(ld)))
     for ld in forces:
         assert ld.force is not None and ld.at is not None
         _force(v, ld.at, ld.force, fs, load_name(ld.name), role=role, clear=clear)
+
+
+#: Loads whose arrows are about as clear at their points (their costs,
+#: :meth:`~geomcad.sheet.loads.Clearance.best`, in one band this wide) are drawn the larger
+#: first: the main load takes the free place before a weight on the same line.
+CLEAR_BAND = 10.0
 
 
 def _norm(ld: Applied) -> float:

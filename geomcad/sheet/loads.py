@@ -8,19 +8,20 @@ into the body). A moment is an arc around its point with an arrowhead giving its
 
 from __future__ import annotations
 
+import itertools
 import math
 from collections.abc import Iterable
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
-import shapely
+import numpy.typing as npt
 
 from geomcad import tol
 from geomcad.geom import PointLike, Vec
 from geomcad.sheet import symbols
 from geomcad.sheet.drawing import ARROW_HALF_WIDTH, ARROW_LEN, JOINT_R, SHORT_MM, Viewport, _arrow
-from geomcad.sheet.model import XY, Polyline, Sheet, TextItem
-from geomcad.sheet.placer import centre_line
+from geomcad.sheet.model import XY, CircleItem, Polyline, Sheet, TextItem
 from geomcad.sheet.scale import Scale, nice_factor
 
 #: A moment arrow's sweep (rad) and the gap between its ends.
@@ -130,6 +131,10 @@ CLEAR_MM = 2.0
 #: (the head's half width and a gap): no head in a hatch. Near its point of application, within
 #: AT_POINT_MM (a joint's circle), it may touch the body.
 ARROW_GAP_MM = 4.0
+#: A line within this angle of the arrow runs with it; one at a larger angle crosses it, and
+#: only its nearest CROSS_MM count.
+PARALLEL = math.radians(25.0)
+CROSS_MM = 0.6
 HEAD_CLEAR_MM = ARROW_HALF_WIDTH + 0.4
 AT_POINT_MM = JOINT_R + 0.5
 #: The costs of an arrow's place (per mm): of its shaft on a line, of its head on one, of it
@@ -140,7 +145,7 @@ _W_LINE, _W_HEAD, _W_OUT, _W_GAP, _W_END = 1.0, 4.0, 3.0, 0.1, 0.5
 #: How far (mm) an arrow may be moved along its line of action beyond either of its ends
 #: (at least; as far as its view's box reaches where that is farther).
 SLIDE_MM = 40.0
-_STEP = 0.25
+_STEP = 0.5
 
 
 @dataclass
@@ -164,25 +169,33 @@ class Clearance:
     def __post_init__(self) -> None:
         if self.first_vector < 0:
             self.first_vector = len(self.sheet.vectors)
+        # the pieces of the items drawn so far, kept as the drawing grows
+        self._segments: tuple[int, npt.NDArray[np.float64]] = (0, np.zeros((0, 2, 2)))
 
-    def ink(self, p: XY) -> shapely.Geometry | None:
-        """The centre lines of what is drawn from ``start`` on (a filled head: its outline),
-        less their parts within :data:`AT_POINT_MM` of the point of application ``p`` (the
-        joint there, the link's end); ``None``: nothing."""
-        lines = []
-        for it in self.sheet.items[self.start :]:
+    def segments(self) -> npt.NDArray[np.float64]:
+        """The straight pieces (n, 2, 2) in sheet mm of what is drawn from ``start`` on: lines,
+        outlines (a filled head's too), circles and arcs as chords."""
+        done, known = self._segments
+        items = self.sheet.items
+        if done == len(items):
+            return known
+        out: list[tuple[XY, XY]] = []
+        for it in items[max(done, self.start) :]:
             if isinstance(it, TextItem):
                 continue
-            g = centre_line(it)
-            if isinstance(g, shapely.Polygon):
-                g = g.exterior
-            if isinstance(g, shapely.LineString):
-                lines.append(g)
-        if not lines:
-            return None
-        near = shapely.Point(p).buffer(AT_POINT_MM)
-        ink = shapely.difference(shapely.MultiLineString(lines), near)
-        return None if ink.is_empty else ink
+            if isinstance(it, Polyline):
+                pts = list(it.points) + ([it.points[0]] if it.closed else [])
+            elif isinstance(it, CircleItem):
+                a = np.linspace(0.0, 2.0 * math.pi, 25)
+                pts = [(it.c[0] + it.r * math.cos(t), it.c[1] + it.r * math.sin(t)) for t in a]
+            else:
+                a0 = math.atan2(it.start[1] - it.c[1], it.start[0] - it.c[0])
+                a = np.linspace(a0, a0 + it.sweep, 17)
+                pts = [(it.c[0] + it.r * math.cos(t), it.c[1] + it.r * math.sin(t)) for t in a]
+            out += [(a_, b_) for a_, b_ in itertools.pairwise(pts) if a_ != b_]
+        found = np.concatenate([known, np.array(out, dtype=float).reshape(-1, 2, 2)])
+        self._segments = (len(items), found)
+        return found
 
     def place(self, p: XY, u: XY, length: float, arrive: bool) -> tuple[XY, XY]:
         """The (tail, tip) in sheet mm of an arrow ``length`` mm long along the paper unit
@@ -199,19 +212,24 @@ class Clearance:
         lo, hi = -length - reach, length + reach
         ts = np.arange(lo, hi + _STEP / 2.0, _STEP)
         pts = np.column_stack([p[0] + ts * u[0], p[1] + ts * u[1]])
-        ink = self.ink(p)
-        if ink is None:
-            d = np.full(len(ts), np.inf)
-        else:
-            d = np.asarray(shapely.distance(shapely.points(pts), ink), dtype=float)
-        arrows = [shapely.LineString([a, b]) for a, b in self.sheet.vectors[self.first_vector :]]
-        on_arrow = np.zeros(len(ts), dtype=bool)
-        if arrows:
-            da = shapely.distance(shapely.points(pts), shapely.MultiLineString(arrows))
-            on_arrow = np.asarray(da, dtype=float) < ARROW_GAP_MM
+        segs = _near_line(self.segments(), p, u)
+        d, along = _distances(pts, segs, u)
+        # near a line that runs with the arrow (within PARALLEL), or on one it crosses
+        on_line = ((d < CLEAR_MM) & along).any(axis=1) | (d < CROSS_MM).any(axis=1)
+        # a head clear of every line but those through the point of application (the body
+        # the force acts on: the joint there, the links that meet in it)
+        body = (
+            _distances(np.array([p], dtype=float), segs, u)[0][0] <= AT_POINT_MM
+            if len(segs)
+            else np.zeros(0, dtype=bool)
+        )
+        on_head = (d[:, ~body] < CLEAR_MM + HEAD_CLEAR_MM).any(axis=1)
+        arrows = np.array(self.sheet.vectors[self.first_vector :], dtype=float).reshape(-1, 2, 2)
+        arrows = _near_line(arrows, p, u)
+        on_arrow = (_distances(pts, arrows, u)[0] < ARROW_GAP_MM).any(axis=1)
         free = np.abs(ts) <= AT_POINT_MM  # the point of application: the body is there
-        on_line = (d < CLEAR_MM) & ~free
-        on_head = (d < CLEAR_MM + HEAD_CLEAR_MM) & ~free
+        on_line &= ~free
+        on_head &= ~free
         out = np.zeros(len(ts), dtype=bool)
         if self.box is not None:
             x0, y0, x1, y1 = self.box
@@ -221,32 +239,57 @@ class Clearance:
             for k, a in (("line", on_line), ("head", on_head), ("out", out), ("arrow", on_arrow))
         }
 
-        def run(key: str, a: float, b: float) -> float:
-            i = int(np.searchsorted(ts, a, "left"))
-            j = int(np.searchsorted(ts, b, "right"))
-            return float(cum[key][j] - cum[key][i]) * _STEP
+        def run(key: str, a: npt.NDArray[np.float64], b: npt.NDArray[np.float64]) -> Any:
+            i = np.searchsorted(ts, a, "left")
+            j = np.searchsorted(ts, b, "right")
+            return (cum[key][j] - cum[key][i]) * _STEP
 
         slide = np.arange(0.0, reach + _STEP, 1.0)
-        starts = sorted({0.0, -length, *slide, *(-length - slide)})
-        best: tuple[float, float] | None = None
-        for s in starts:
-            e = s + length
-            cost = (
-                _W_LINE * run("line", s, e)
-                + _W_HEAD * run("head", e - ARROW_LEN, e)
-                + _W_OUT * run("out", s, e)
-                + _W_OUT * run("arrow", s, e)
-                + _W_GAP * min(abs(s), abs(e))
-            )
-            if (s >= 0.0 and arrive) or (e <= 0.0 and not arrive):
-                cost += _W_END
-            if best is None or cost < best[0] - tol.DERIVED:
-                best = (cost, s)
+        S = np.array(sorted({0.0, -length, *slide, *(-length - slide)}))
+        E = S + length
+        cost = (
+            _W_LINE * run("line", S, E)
+            + _W_HEAD * run("head", E - ARROW_LEN, E)
+            + _W_OUT * run("out", S, E)
+            + _W_OUT * run("arrow", S, E)
+            + _W_GAP * np.minimum(np.abs(S), np.abs(E))
+            + _W_END * (((S >= 0.0) & arrive) | ((E <= 0.0) & (not arrive)))
+        )
+        # the cheapest; of equal ones (within round-off) the first, nearest the far back
+        k = int(np.flatnonzero(cost <= cost.min() + tol.DERIVED)[0])
+        best = (float(cost[k]), float(S[k]))
         assert best is not None
         s = best[1]
         tail = (p[0] + u[0] * s, p[1] + u[1] * s)
         tip = (p[0] + u[0] * (s + length), p[1] + u[1] * (s + length))
         return best[0], tail, tip
+
+
+def _near_line(segs: npt.NDArray[np.float64], p: XY, u: XY) -> npt.NDArray[np.float64]:
+    """The segments (n, 2, 2) that come near the line through ``p`` along ``u``: within the
+    largest clearance of it, or across it (the others cost an arrow on it nothing)."""
+    if len(segs) == 0:
+        return segs
+    reach = max(CLEAR_MM + HEAD_CLEAR_MM, ARROW_GAP_MM) + _STEP
+    side = (segs[..., 0] - p[0]) * u[1] - (segs[..., 1] - p[1]) * u[0]  # (n, 2)
+    keep = (np.abs(side).min(axis=1) < reach) | (side[:, 0] * side[:, 1] < 0.0)
+    return np.asarray(segs[keep], dtype=np.float64)
+
+
+def _distances(
+    pts: npt.NDArray[np.float64], segs: npt.NDArray[np.float64], u: XY
+) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.bool_]]:
+    """The distance (mm) of each point (m, 2) to each segment (n, 2, 2), (m, n), and which
+    segments run within :data:`PARALLEL` of the direction ``u`` (n,)."""
+    if len(segs) == 0:
+        return np.full((len(pts), 0), np.inf), np.zeros(0, dtype=bool)
+    a, ab = segs[:, 0], segs[:, 1] - segs[:, 0]
+    n2 = (ab**2).sum(axis=1)
+    t = np.clip(((pts[:, None, :] - a[None]) * ab[None]).sum(axis=2) / n2, 0.0, 1.0)
+    foot = a[None] + t[..., None] * ab[None]
+    d = np.linalg.norm(pts[:, None, :] - foot, axis=2)
+    sin = np.abs(ab[:, 0] * u[1] - ab[:, 1] * u[0]) / np.sqrt(n2)
+    return d, sin <= math.sin(PARALLEL)
 
 
 def force(
