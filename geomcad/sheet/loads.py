@@ -143,8 +143,8 @@ AT_POINT_MM = JOINT_R + 0.5
 #: (leaving instead of arriving, or back).
 _W_LINE, _W_HEAD, _W_OUT, _W_GAP, _W_END = 1.0, 4.0, 3.0, 0.1, 0.5
 #: How far (mm) an arrow may be moved along its line of action beyond either of its ends
-#: (at least; as far as its view's box reaches where that is farther).
-SLIDE_MM = 40.0
+#: (farther, it would no longer read as acting at its point).
+SLIDE_MM = 60.0
 _STEP = 0.5
 
 
@@ -206,9 +206,6 @@ class Clearance:
     def best(self, p: XY, u: XY, length: float, arrive: bool) -> tuple[float, XY, XY]:
         """:meth:`place`'s arrow with its cost (0: at its point and clear of everything)."""
         reach = SLIDE_MM
-        if self.box is not None:
-            x0, y0, x1, y1 = self.box
-            reach = max(reach, math.hypot(x1 - x0, y1 - y0))
         lo, hi = -length - reach, length + reach
         ts = np.arange(lo, hi + _STEP / 2.0, _STEP)
         pts = np.column_stack([p[0] + ts * u[0], p[1] + ts * u[1]])
