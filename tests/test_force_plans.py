@@ -21,7 +21,7 @@ from geomcad.sheet import start
 from geomcad.sheet.compose import compose
 from geomcad.sheet.drawing import SHORT_MM
 from geomcad.sheet.frame import TitleBlock
-from geomcad.sheet.linkage_forces import POLY_MM, chain_starts, force_position, load_sides
+from geomcad.sheet.linkage_forces import POLY_MM, force_position, load_sides
 from geomcad.sheet.loads import MOST_TIERS, NEGLIGIBLE, TIER_LIMIT, force_tiers
 from geomcad.sheet.views import (
     DETAIL_LEAST,
@@ -207,22 +207,3 @@ def test_forces_at_one_lever_point_never_lie_over_one_another() -> None:
     # one of its sense goes on from its tip: the point itself, where it arrives
     same = [(b, right, "F_B", "vector"), (b, Vec(600.0, 20.0), "Ф_3", "vector")]
     assert load_sides(same, k, [60.0, 20.0], ext, slack=40.0) == [(True, b), (False, b)]
-
-
-def test_forces_along_one_line_at_a_mechanism_point_are_drawn_head_to_tail() -> None:
-    """On the mechanism two forces of one sense along one line at one point (Φ₅ along F_D at
-    the slider D) are drawn head to tail on their line of action, the shorter from the tip of
-    the longer; a force across them, or at another point, from its own point."""
-    d, s = Vec(0.5, 0.3), Vec(0.2, 0.2)
-    left = Vec(-1.0, 0.0)
-    loads = [
-        (d, Vec(0.0, -245.0), "G_5", "vector"),
-        (d, left * 148.0, "Ф_5", "vector"),
-        (d, left * 2200.0, "F_D", "vector"),
-        (s, left * 30.0, "Ф_4", "vector"),
-    ]
-    k = 0.0025  # m per mm
-    lengths = [24.5, 14.8, 22.0, 12.0]
-    starts = chain_starts(loads, k, lengths)
-    assert starts[0] == d and starts[2] == d and starts[3] == s
-    assert starts[1].dist(d + left * (22.0 * k)) <= 1e-12

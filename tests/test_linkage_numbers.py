@@ -124,7 +124,11 @@ def test_the_force_sheet_writes_each_quantity_in_one_unit_with_one_count_of_deci
         by_unit.setdefault(unit, []).append(value)
     assert set(by_unit) == {"Н", "Н·м"}, set(by_unit)
     for unit, values in by_unit.items():
-        assert len({_decimals(v) for v in values}) == 1, f"{unit}: {values}"
+        # each value (a load of its own) to 4 significant figures, as the order writes it,
+        # the column aligned on its decimal comma (issue 27: 88,29 never 88 beside 2200)
+        for v in values:
+            digits = v.replace("\u2013", "").replace("\u00a0", "").replace(",", "")
+            assert v == "0" or len(digits.lstrip("0")) >= 4, f"{unit}: {values}"
     texts = " ".join(t.text for t in sheet.texts())
     assert "кН" not in texts
     assert max(_value(v) for v in by_unit["Н"]) >= 1.0e4  # where the table wrote кН before

@@ -51,7 +51,7 @@ from geomcad.forces import ForcePolygon
 from geomcad.geom import Vec
 from geomcad.linkage.analysis import analyse
 from geomcad.linkage.dynamics import Flywheel
-from geomcad.linkage.kinetostatics import Applied, Forces, GroupForces, Lever
+from geomcad.linkage.kinetostatics import Applied, Forces, GroupForces, Lever, Reaction
 from geomcad.linkage.loads import centre_vec
 from geomcad.linkage.model import Linkage
 from geomcad.linkage.plans import Position
@@ -96,7 +96,14 @@ from geomcad.sheet.linkage import (
     table_number,
 )
 from geomcad.sheet.linkage import WORDS as KIN_WORDS
-from geomcad.sheet.loads import NEGLIGIBLE, ForceScales, force, force_tiers, moment
+from geomcad.sheet.loads import (
+    NEGLIGIBLE,
+    Clearance,
+    ForceScales,
+    force,
+    force_tiers,
+    moment,
+)
 from geomcad.sheet.plans import markup_of
 from geomcad.sheet.scale import ANGLE_PLACES, Scale, angle_places, fmt_column, fmt_fixed
 from geomcad.sheet.scheme import draw_scheme
@@ -294,6 +301,24 @@ def _title(lk: Linkage, what: str, designation: str, no: int, count: int) -> Tit
     )
 
 
+#: The significant figures of a value in the table of loads and in the order of the analysis
+#: (:func:`geomcad.sheet.views.num`): the two round a value the same way.
+TABLE_DIGITS = 4
+
+
+def _figures(x: float, scale: float) -> str:
+    """A value of the table of loads to :data:`TABLE_DIGITS` significant figures, its trailing
+    zeros kept (89,00 and 17,70, as 4 figures; the order of the analysis writes the same
+    numbers, 89 and 17,7); round-off of a zero (at most ``ZERO`` of ``scale``) as 0."""
+    if abs(x) <= ZERO * scale:
+        return "0"
+    text = f"{x:#.{TABLE_DIGITS}g}"
+    if "e" in text:  # 10^4 and more (whole, grouped) or a power of ten
+        return fmt_number(x, current(), TABLE_DIGITS)
+    text = text.rstrip(".").replace("-", "\u2013")
+    return text.replace(".", ",") if current() == "ru" else text
+
+
 def _num(x: float, digits: int = 4, scale: float = 0.0) -> str:
     return table_number(x, scale, digits)
 
@@ -481,34 +506,79 @@ def _bbox(pts: Sequence[Vec], minimum: float) -> tuple[float, float, float, floa
 
 def _force(
     v: Viewport, at: Vec, F: Vec, fs: ForceScales, label: str, arrive: bool = False,
-    role: str = "vector",
+    role: str = "vector", clear: Clearance | None = None,
 ) -> None:  # fmt: skip
     """A force as an arrow at the view's μ_F, or, shorter than :data:`SHORT_MM` there, at the
     view's next stated μ_F with its label marked (:class:`~geomcad.sheet.loads.ForceScales`);
-    never a dot. A zero force draws nothing."""
+    never a dot. A zero force draws nothing. ``clear``: on a drawing of links, the arrow goes
+    where its line of action is clear of them (:class:`~geomcad.sheet.loads.Clearance`)."""
     tier = fs.tier(F.norm)
     if tier is None:
         return
     force(v, at, F, fs.scales[tier].k, label + fs.mark(tier), arrive=arrive, role=role,
-          height=2.5)  # fmt: skip
+          height=2.5, clear=clear)  # fmt: skip
+
+
+#: The radius (mm) of a moment's arc about its point, and how much larger each further
+#: moment's arc about the same point is (M_Φ3 and a given M_3 on one link: two arcs, not one).
+MOMENT_MM = 6.0
+MOMENT_STEP_MM = 3.0
 
 
 def _draw_loads(
-    v: Viewport, lk: Linkage, P: Position, loads: Sequence[Applied], fs: ForceScales, role: str
+    v: Viewport, lk: Linkage, P: Position, loads: Sequence[Applied], fs: ForceScales, role: str,
+    clear: Clearance | None = None, arcs: dict[tuple[float, float], int] | None = None,
 ) -> None:  # fmt: skip
+    """The loads: the moments first (their arcs, each point's further ones larger, counted in
+    ``arcs``), then the forces, clear of the drawing and of each other with ``clear``."""
+    arcs = {} if arcs is None else arcs
     for ld in loads:
-        if ld.force is not None and ld.at is not None:
-            _force(v, ld.at, ld.force, fs, load_name(ld.name), role=role)
-        elif ld.moment != 0.0:
-            moment(
-                v,
-                centre_vec(lk, ld.link, P.pos),
-                ld.moment,
-                6.0,
-                load_name(ld.name),
-                role,
-                height=2.5,
-            )
+        if ld.force is None and ld.moment != 0.0:
+            c = centre_vec(lk, ld.link, P.pos)
+            r = _moment_radius(v, c, arcs)
+            moment(v, c, ld.moment, r, load_name(ld.name), role, height=2.5)
+    forces = [ld for ld in loads if ld.force is not None and ld.at is not None]
+    if clear is not None:
+        # the forces that are clear at their own points take them first; those that must be
+        # moved along their lines of action (a load along its link) find room after them
+        # (the larger first among those about as clear: the main load before a small weight)
+        forces.sort(key=lambda ld: (_cost(v, ld, fs, clear) // CLEAR_BAND, -_norm(ld)))
+    for ld in forces:
+        assert ld.force is not None and ld.at is not None
+        _force(v, ld.at, ld.force, fs, load_name(ld.name), role=role, clear=clear)
+
+
+#: Loads whose arrows are about as clear at their points (their costs,
+#: :meth:`~geomcad.sheet.loads.Clearance.best`, in one band this wide) are drawn the larger
+#: first: the main load takes the free place before a weight on the same line.
+CLEAR_BAND = 10.0
+
+
+def _norm(ld: Applied) -> float:
+    return ld.force.norm if ld.force is not None else 0.0
+
+
+def _cost(v: Viewport, ld: Applied, fs: ForceScales, clear: Clearance) -> float:
+    """How far from clear at its own point a load's arrow is on the drawing so far
+    (:meth:`~geomcad.sheet.loads.Clearance.best`)."""
+    assert ld.force is not None and ld.at is not None
+    tier = fs.tier(ld.force.norm)
+    if tier is None:
+        return 0.0
+    F = ld.force
+    u = (F.x / F.norm, -F.y / F.norm)
+    return clear.best(v.p(ld.at), u, F.norm / fs.scales[tier].k, False)[0]
+
+
+def _moment_radius(v: Viewport, c: Vec, arcs: dict[tuple[float, float], int]) -> float:
+    """The radius (mm) of the next moment's arc about model point ``c``: :data:`MOMENT_MM`,
+    each further one about the same point (within 0.5 mm on the sheet) :data:`MOMENT_STEP_MM`
+    larger."""
+    x, y = v.p(c)
+    key = next((q for q in arcs if math.hypot(q[0] - x, q[1] - y) < 0.5), (x, y))
+    n = arcs.get(key, 0)
+    arcs[key] = n + 1
+    return MOMENT_MM + MOMENT_STEP_MM * n
 
 
 #: The height (mm) of the line under a view's caption that states the further μ_F.
@@ -591,26 +661,24 @@ class _Loaded(_Forces):
         assert v is not None
         draw_further(d, at, self, self.fs, self.omitted)
         lk, P = self.lk, self.P
+        clear = Clearance(d.sheet, len(d.sheet.items), _field(at))
         draw_scheme(v, scheme(lk, P), bodies=link_bodies(lk, P), pair_labels={},
                     label_height=3.5, guides=frame_guides(lk))  # fmt: skip
         for name in P.pos:  # every named point, the frame's (O, C) too
             if name in lk.owner:
                 v.label(P.pos[name], markup_of(name), 3.5, clear=1.0)
-        # the forces, none over another at one point, then the moments
-        named = [(ld.at, ld.force, load_name(ld.name), "vector") for ld in self.loads
-                 if ld.force is not None and ld.at is not None]  # fmt: skip
-        lengths = [self.fs.longest([F.norm]) for _, F, _, _ in named]
-        starts = chain_starts(named, v.scale.k, lengths)
-        for (_, F, name, role), at_ in zip(named, starts, strict=True):
-            _force(v, at_, F, self.fs, name, False, role)
-        moments = [ld for ld in self.loads if ld.force is None or ld.at is None]
-        _draw_loads(v, lk, P, moments, self.fs, "vector")
+        # the moments, then the forces, each clear of the links and of the arrows before it
+        _draw_loads(v, lk, P, self.loads, self.fs, "vector", clear)
         omega_arrow(v, lk, P)
         v.turn(P.pos[lk.pivot], self.f.M_bal, 30.0, WORDS("M_bal"), M_BAL_MM, 250.0, "result", 2.5)
 
 
 class _FreeBody(_Forces):
-    """An Assur group (or the crank) cut out, with its loads and the reactions found."""
+    """An Assur group (or the crank) cut out, its joints lettered as on the mechanism, with its
+    loads and the reactions of the links it is cut from (the external forces of its free body:
+    R_12 of the crank on link 2, R_03 of the frame …; a reaction between the group's own links,
+    found from one link's polygon, is internal and is not drawn here), each arrow clear of the
+    links (:class:`~geomcad.sheet.loads.Clearance`)."""
 
     def __init__(self, lk: Linkage, P: Position, gf: GroupForces) -> None:
         links = gf.links
@@ -626,7 +694,7 @@ class _FreeBody(_Forces):
         self._ext = _bbox(pts, lk.length * 0.5)
         named = [(ld.name, ld.force.norm) for i in links for ld in gf.loads[i]
                  if ld.force is not None]  # fmt: skip
-        named += [(r.name, r.force.norm) for r in gf.reactions if r.on in links]
+        named += [(r.name, r.force.norm) for r in external(gf)]
         self.fs = force_tiers([F for _, F in named], LOAD_MM)
         self.omitted = left_out(self.fs, named)
 
@@ -641,16 +709,25 @@ class _FreeBody(_Forces):
         pairs = tuple(p for p in full.pairs if own & set(p.links))
         near = {x for p in pairs for x in p.links} - own - {full.frame}
         mech = Mechanism(tuple(Link(x) for x in sorted(own | near)), pairs, full.frame)
+        clear = Clearance(d.sheet, len(d.sheet.items), _field(at))
         draw_scheme(v, mech, bodies=link_bodies(lk, P, links), pair_labels={},
                     ghosts=sorted(near), guides=frame_guides(lk))  # fmt: skip
-        for i in links:
-            _draw_loads(v, lk, P, gf.loads[i], self.fs, "vector")
-        for r in gf.reactions:
-            if r.on in links:
-                _force(v, r.at, r.force, self.fs, load_name(r.name), True, "result")
-                if r.couple:
-                    label = f"M_{{{r.of}{r.on}}}"
-                    moment(v, P.pos[r.joint], r.couple, 6.0, label, "result", height=2.5)
+        for name in joint_names(lk, links):  # lettered as on the mechanism
+            v.label(P.pos[name], markup_of(name), 3.5, clear=1.0)
+        arcs: dict[tuple[float, float], int] = {}
+        for r in external(gf):
+            if r.couple:
+                label = f"M_{{{r.of}{r.on}}}"
+                c = P.pos[r.joint]
+                moment(v, c, r.couple, _moment_radius(v, c, arcs), label, "result", height=2.5)
+        loads = [ld for i in links for ld in gf.loads[i]]
+        _draw_loads(v, lk, P, [ld for ld in loads if ld.force is None], self.fs, "vector",
+                    arcs=arcs)  # fmt: skip
+        # the reactions found at their joints first, then the loads where they are clear
+        for r in external(gf):
+            _force(v, r.at, r.force, self.fs, load_name(r.name), True, "result", clear)
+        _draw_loads(v, lk, P, [ld for ld in loads if ld.force is not None], self.fs, "vector",
+                    clear)  # fmt: skip
         if gf.group is None:
             M = -sum(
                 (ld.at - P.pos[lk.pivot]).cross(ld.force)
@@ -659,6 +736,24 @@ class _FreeBody(_Forces):
                 for ld in gf.loads[1]
             )
             v.turn(P.pos[lk.pivot], M, 30.0, WORDS("M_bal"), M_BAL_MM, 250.0, "result", 2.5)
+
+
+def _field(at: Placed) -> tuple[float, float, float, float]:
+    """Where a view's force arrows go: its box below its caption."""
+    return at.box[0], at.inner[1], at.box[2], at.box[3]
+
+
+def external(gf: GroupForces) -> list[Reaction]:
+    """The reactions on a group's (or the crank's) free body: those of the links it is cut
+    from and of the frame on its links; a reaction between two of its own links (R_32 of an
+    RRR) is internal to it."""
+    return [r for r in gf.reactions if r.on in gf.links and r.of not in gf.links]
+
+
+def joint_names(lk: Linkage, links: Sequence[int]) -> list[str]:
+    """The lettered points of a cut-out group or the crank: every joint and point of its links
+    (the frame's joints it hangs on, O and C, among them), each once."""
+    return list(dict.fromkeys(n for i in links for n in lk.points_on(i)))
 
 
 def polygon_points(poly: ForcePolygon) -> list[Vec]:
@@ -808,33 +903,6 @@ def load_sides(
     return [(side[i], starts[i]) for i in range(len(loads))]
 
 
-def chain_starts(
-    loads: Sequence[tuple[Vec, Vec, str, str]], k: float, lengths: Sequence[float]
-) -> list[Vec]:
-    """Where each load (point, force, …) of the mechanism is drawn from (model units): its
-    point, or, for a force along the line of a longer one at the same point and of its sense
-    (within :data:`SAME_LINE_DEG`: Φ₅ along F_D at D), the tip of that one's arrow, the two
-    head to tail on their common line of action (an arrow arriving at a slider's point would
-    end hidden in the block). ``lengths``: the arrows' lengths (mm), ``k``: the view's scale
-    (model units per mm; points within 0.8 mm on the paper are one)."""
-    cos = math.cos(math.radians(SAME_LINE_DEG))
-    start: dict[int, Vec] = {}
-    order = sorted(range(len(loads)), key=lambda i: -lengths[i])
-    for i in order:
-        q, F = loads[i][0], loads[i][1]
-        start[i] = q
-        if F.norm == 0.0:
-            continue
-        for j in order[: order.index(i)]:
-            q2, F2 = loads[j][0], loads[j][1]
-            if F2.norm > 0.0 and (q2 - q).norm / k < 0.8 and F2.unit().dot(F.unit()) > cos:
-                # from the tip of the last one along this line
-                tip = start[j] + F2.unit() * (lengths[j] * k)
-                if (tip - q).dot(F.unit()) > (start[i] - q).dot(F.unit()):
-                    start[i] = tip
-    return [start[i] for i in range(len(loads))]
-
-
 class _Lever(View):
     """Zhukovsky's lever: the velocity plan turned 90° with the loads at their points'
     images and the balancing force at the crank's joint."""
@@ -929,15 +997,15 @@ def _table2(f: Forces, h: float) -> Table:
     moments.append((WORDS("m_bal_lever"), f.lever.M_bal))
     order += [("M", len(moments) - 2), ("M", len(moments) - 1)]
     # one unit per quantity on the sheet: N and N·m, as its order of calculation writes them;
-    # each quantity's numbers with one count of decimals (4 significant figures at its
-    # largest), a value that is round-off against the largest of its kind as 0 (an ε that
-    # vanishes in this position gives M_Φ = 10^-13 N·m, not a number to print)
+    # each value (a load or a reaction of its own, not one quantity over positions) to 4
+    # significant figures, as the order of the analysis writes it (G_2 = 88,29 in both, never
+    # 88 beside 2200; M_Ф4 = 0,06814, never 0,1 beside 161,5), the column aligned on its
+    # decimal comma; a value that is round-off against the largest of its kind as 0 (an ε
+    # that vanishes in this position gives M_Φ = 10^-13 N·m, not a number to print)
     big_f = max((x for _, x, _ in forces), default=0.0)
     big_m = max((abs(m) for _, m in moments), default=0.0)
-    f_text = fmt_column(
-        [0.0 if abs(x) <= ZERO * max(sc, big_f) else x for _, x, sc in forces], current(), 4
-    )
-    m_text = fmt_column([0.0 if abs(m) <= ZERO * big_m else m for _, m in moments], current(), 4)
+    f_text = [_figures(x, max(sc, big_f)) for _, x, sc in forces]
+    m_text = [_figures(m, big_m) for _, m in moments]
     rows: list[tuple[str, float | str, str]] = []
     for kind, i in order:
         if kind == "F":

@@ -8,15 +8,20 @@ into the body). A moment is an arc around its point with an arrowhead giving its
 
 from __future__ import annotations
 
+import itertools
 import math
 from collections.abc import Iterable
 from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+import numpy.typing as npt
 
 from geomcad import tol
 from geomcad.geom import PointLike, Vec
 from geomcad.sheet import symbols
-from geomcad.sheet.drawing import SHORT_MM, Viewport, _arrow
-from geomcad.sheet.model import XY, Polyline
+from geomcad.sheet.drawing import ARROW_HALF_WIDTH, ARROW_LEN, JOINT_R, SHORT_MM, Viewport, _arrow
+from geomcad.sheet.model import XY, CircleItem, Polyline, Sheet, TextItem
 from geomcad.sheet.scale import Scale, nice_factor
 
 #: A moment arrow's sweep (rad) and the gap between its ends.
@@ -206,6 +211,172 @@ def force_tiers(forces: Iterable[float], room_mm: float) -> ForceScales:
     return ForceScales(tuple(dict.fromkeys(scales)), zero, negligible)
 
 
+#: A force's arrow on a free body keeps this far (mm) from the centre lines of what is drawn
+#: there (the links, the symbols of their pairs, the hatching, the arrows drawn before it) …
+CLEAR_MM = 2.0
+#: … and this far from the force arrows drawn before it (two arrows on one line of action, tail
+#: to tail, would read as one double-headed arrow); its head this much farther from a line
+#: (the head's half width and a gap): no head in a hatch. Near its point of application, within
+#: AT_POINT_MM (a joint's circle), it may touch the body.
+ARROW_GAP_MM = 4.0
+#: A line within this angle of the arrow runs with it; one at a larger angle crosses it, and
+#: only its nearest CROSS_MM count.
+PARALLEL = math.radians(25.0)
+CROSS_MM = 0.6
+HEAD_CLEAR_MM = ARROW_HALF_WIDTH + 0.4
+AT_POINT_MM = JOINT_R + 0.5
+#: The costs of an arrow's place (per mm): of its shaft on a line, of its head on one, of it
+#: outside its view's box or within ARROW_GAP_MM of another arrow, of the gap between its
+#: point of application and its nearer end; and the cost of the end the caller did not ask for
+#: (leaving instead of arriving, or back).
+_W_LINE, _W_HEAD, _W_OUT, _W_GAP, _W_END = 1.0, 4.0, 3.0, 0.1, 0.5
+#: How far (mm) an arrow may be moved along its line of action beyond either of its ends
+#: (farther, it would no longer read as acting at its point).
+SLIDE_MM = 60.0
+_STEP = 0.5
+
+
+@dataclass
+class Clearance:
+    """Where the force arrows of a free body go: each on its line of action, at its point of
+    application (leaving it, or arriving at it) where that is clear, else moved along its line
+    of action (a force on a rigid body acts anywhere on its line) until it is: an arrow never
+    runs along a link or a guide, nor ends in a hatch.
+
+    Everything drawn on ``sheet`` from item ``start`` on is in the way (the scheme of the body,
+    its moments' arcs, the arrows placed before); ``box`` (sheet mm) is the view's, which the
+    arrows keep inside where they can.
+    """
+
+    sheet: Sheet
+    start: int
+    box: tuple[float, float, float, float] | None = None
+    #: The first of the sheet's vectors drawn on this free body (set from ``sheet``).
+    first_vector: int = -1
+
+    def __post_init__(self) -> None:
+        if self.first_vector < 0:
+            self.first_vector = len(self.sheet.vectors)
+        # the pieces of the items drawn so far, kept as the drawing grows
+        self._segments: tuple[int, npt.NDArray[np.float64]] = (0, np.zeros((0, 2, 2)))
+
+    def segments(self) -> npt.NDArray[np.float64]:
+        """The straight pieces (n, 2, 2) in sheet mm of what is drawn from ``start`` on: lines,
+        outlines (a filled head's too), circles and arcs as chords."""
+        done, known = self._segments
+        items = self.sheet.items
+        if done == len(items):
+            return known
+        out: list[tuple[XY, XY]] = []
+        for it in items[max(done, self.start) :]:
+            if isinstance(it, TextItem):
+                continue
+            if isinstance(it, Polyline):
+                pts = list(it.points) + ([it.points[0]] if it.closed else [])
+            elif isinstance(it, CircleItem):
+                a = np.linspace(0.0, 2.0 * math.pi, 25)
+                pts = [(it.c[0] + it.r * math.cos(t), it.c[1] + it.r * math.sin(t)) for t in a]
+            else:
+                a0 = math.atan2(it.start[1] - it.c[1], it.start[0] - it.c[0])
+                a = np.linspace(a0, a0 + it.sweep, 17)
+                pts = [(it.c[0] + it.r * math.cos(t), it.c[1] + it.r * math.sin(t)) for t in a]
+            out += [(a_, b_) for a_, b_ in itertools.pairwise(pts) if a_ != b_]
+        found = np.concatenate([known, np.array(out, dtype=float).reshape(-1, 2, 2)])
+        self._segments = (len(items), found)
+        return found
+
+    def place(self, p: XY, u: XY, length: float, arrive: bool) -> tuple[XY, XY]:
+        """The (tail, tip) in sheet mm of an arrow ``length`` mm long along the paper unit
+        direction ``u`` on the line through ``p``: the cheapest place by the costs above
+        (``arrive``: the arrow the caller would draw ends at ``p``)."""
+        return self.best(p, u, length, arrive)[1:]
+
+    def best(self, p: XY, u: XY, length: float, arrive: bool) -> tuple[float, XY, XY]:
+        """:meth:`place`'s arrow with its cost (0: at its point and clear of everything)."""
+        reach = SLIDE_MM
+        lo, hi = -length - reach, length + reach
+        ts = np.arange(lo, hi + _STEP / 2.0, _STEP)
+        pts = np.column_stack([p[0] + ts * u[0], p[1] + ts * u[1]])
+        segs = _near_line(self.segments(), p, u)
+        d, along = _distances(pts, segs, u)
+        # near a line that runs with the arrow (within PARALLEL), or on one it crosses
+        on_line = ((d < CLEAR_MM) & along).any(axis=1) | (d < CROSS_MM).any(axis=1)
+        # a head clear of every line but those through the point of application (the body
+        # the force acts on: the joint there, the links that meet in it)
+        body = (
+            _distances(np.array([p], dtype=float), segs, u)[0][0] <= AT_POINT_MM
+            if len(segs)
+            else np.zeros(0, dtype=bool)
+        )
+        on_head = (d[:, ~body] < CLEAR_MM + HEAD_CLEAR_MM).any(axis=1)
+        arrows = np.array(self.sheet.vectors[self.first_vector :], dtype=float).reshape(-1, 2, 2)
+        arrows = _near_line(arrows, p, u)
+        on_arrow = (_distances(pts, arrows, u)[0] < ARROW_GAP_MM).any(axis=1)
+        free = np.abs(ts) <= AT_POINT_MM  # the point of application: the body is there
+        on_line &= ~free
+        on_head &= ~free
+        out = np.zeros(len(ts), dtype=bool)
+        if self.box is not None:
+            x0, y0, x1, y1 = self.box
+            out = (pts[:, 0] < x0) | (pts[:, 0] > x1) | (pts[:, 1] < y0) | (pts[:, 1] > y1)
+        cum = {
+            k: np.concatenate([[0.0], np.cumsum(a.astype(float))])
+            for k, a in (("line", on_line), ("head", on_head), ("out", out), ("arrow", on_arrow))
+        }
+
+        def run(key: str, a: npt.NDArray[np.float64], b: npt.NDArray[np.float64]) -> Any:
+            i = np.searchsorted(ts, a, "left")
+            j = np.searchsorted(ts, b, "right")
+            return (cum[key][j] - cum[key][i]) * _STEP
+
+        slide = np.arange(0.0, reach + _STEP, 1.0)
+        S = np.array(sorted({0.0, -length, *slide, *(-length - slide)}))
+        E = S + length
+        cost = (
+            _W_LINE * run("line", S, E)
+            + _W_HEAD * run("head", E - ARROW_LEN, E)
+            + _W_OUT * run("out", S, E)
+            + _W_OUT * run("arrow", S, E)
+            + _W_GAP * np.minimum(np.abs(S), np.abs(E))
+            + _W_END * (((S >= 0.0) & arrive) | ((E <= 0.0) & (not arrive)))
+        )
+        # the cheapest; of equal ones (within round-off) the first, nearest the far back
+        k = int(np.flatnonzero(cost <= cost.min() + tol.DERIVED)[0])
+        best = (float(cost[k]), float(S[k]))
+        assert best is not None
+        s = best[1]
+        tail = (p[0] + u[0] * s, p[1] + u[1] * s)
+        tip = (p[0] + u[0] * (s + length), p[1] + u[1] * (s + length))
+        return best[0], tail, tip
+
+
+def _near_line(segs: npt.NDArray[np.float64], p: XY, u: XY) -> npt.NDArray[np.float64]:
+    """The segments (n, 2, 2) that come near the line through ``p`` along ``u``: within the
+    largest clearance of it, or across it (the others cost an arrow on it nothing)."""
+    if len(segs) == 0:
+        return segs
+    reach = max(CLEAR_MM + HEAD_CLEAR_MM, ARROW_GAP_MM) + _STEP
+    side = (segs[..., 0] - p[0]) * u[1] - (segs[..., 1] - p[1]) * u[0]  # (n, 2)
+    keep = (np.abs(side).min(axis=1) < reach) | (side[:, 0] * side[:, 1] < 0.0)
+    return np.asarray(segs[keep], dtype=np.float64)
+
+
+def _distances(
+    pts: npt.NDArray[np.float64], segs: npt.NDArray[np.float64], u: XY
+) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.bool_]]:
+    """The distance (mm) of each point (m, 2) to each segment (n, 2, 2), (m, n), and which
+    segments run within :data:`PARALLEL` of the direction ``u`` (n,)."""
+    if len(segs) == 0:
+        return np.full((len(pts), 0), np.inf), np.zeros(0, dtype=bool)
+    a, ab = segs[:, 0], segs[:, 1] - segs[:, 0]
+    n2 = (ab**2).sum(axis=1)
+    t = np.clip(((pts[:, None, :] - a[None]) * ab[None]).sum(axis=2) / n2, 0.0, 1.0)
+    foot = a[None] + t[..., None] * ab[None]
+    d = np.linalg.norm(pts[:, None, :] - foot, axis=2)
+    sin = np.abs(ab[:, 0] * u[1] - ab[:, 1] * u[0]) / np.sqrt(n2)
+    return d, sin <= math.sin(PARALLEL)
+
+
 def force(
     v: Viewport,
     at: PointLike,
@@ -216,26 +387,33 @@ def force(
     role: str = "vector",
     height: float = 3.5,
     prefer: tuple[float, float] | None = None,
+    clear: Clearance | None = None,
 ) -> tuple[XY, XY] | None:
     """The force ``F`` (N, model directions) at model point ``at``, |F|/k_F mm long.
 
-    ``arrive`` draws it ending at the point instead of leaving it. Returns the (tail, tip) in
-    sheet mm, or ``None`` for a zero force (nothing is drawn then).
+    ``arrive`` draws it ending at the point instead of leaving it; ``clear`` (a free body's
+    :class:`Clearance`) draws it where its line of action is clear of the drawing instead. The
+    label goes at the arrow's end away from the point. Returns the (tail, tip) in sheet mm, or
+    ``None`` for a zero force (nothing is drawn then).
     """
     length = F.norm / k_F
     if length <= 0.0:
         return None
     p = v.p(at)
     ux, uy = F.x / F.norm, -F.y / F.norm  # paper direction (y down)
-    if arrive:
+    if clear is not None:
+        tail, tip = clear.place(p, (ux, uy), length, arrive)
+    elif arrive:
         tail, tip = (p[0] - ux * length, p[1] - uy * length), p
     else:
         tail, tip = p, (p[0] + ux * length, p[1] + uy * length)
     _arrow(v.sheet, tail, tip, role)
     if label:
-        end = tail if arrive else tip
+        # the end farther from the point of application, the label beyond it
+        back = math.dist(tail, p) > math.dist(tip, p)
+        end = tail if back else tip
         mid = ((tail[0] + tip[0]) / 2.0, (tail[1] + tip[1]) / 2.0)
-        away = (-ux, -uy) if arrive else (ux, uy)
+        away = (-ux, -uy) if back else (ux, uy)
         v.d.label(end, label, height, prefer=prefer or away, clear=1.0, others=(mid,))
     return tail, tip
 

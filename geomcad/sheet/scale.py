@@ -89,15 +89,27 @@ def fmt_number(x: float, lang: str | None = None, digits: int = 6) -> str:
     return s.replace(".", ",") if (lang or current()) == "ru" else s
 
 
-def fmt_column(xs: Sequence[float], lang: str | None = None, digits: int = 4) -> list[str]:
+def fmt_column(
+    xs: Sequence[float], lang: str | None = None, digits: int = 4, least: int = 3, most: int = 6
+) -> list[str]:
     """A table column of one quantity, every number with the same count of decimals: the
-    largest magnitude gets ``digits`` significant digits (1,830 / 3,870 / 9,078), or fewer
-    where they write every value exactly (0 / 15 / 30; 0,05 / 0,10); a decimal comma in Russian
-    (a point in English), a typographic minus."""
+    largest magnitude gets ``digits`` significant digits (1,830 / 3,870 / 9,078), and more
+    decimals where a smaller value would keep fewer than ``least`` (25,00 beside 1,30, never
+    25,0 beside 1,3; 88,29 beside 2200,00, never 88), as long as the largest keeps at most
+    ``most``; or fewer decimals where they write every value exactly (0 / 15 / 30; 0,05 /
+    0,10). A value within ``tol.DERIVED`` of the largest is round-off of a zero and asks for
+    nothing. A decimal comma in Russian (a point in English), a typographic minus."""
     big = max((abs(x) for x in xs), default=0.0)
     if big == 0.0:
         return ["0" for _ in xs]
-    cap = max(0, digits - 1 - math.floor(math.log10(big)))
+
+    def places(x: float, sig: int) -> int:
+        """The decimals that write ``x`` to ``sig`` significant digits."""
+        return max(0, sig - 1 - math.floor(math.log10(abs(x))))
+
+    cap = places(big, digits)
+    small = [places(x, least) for x in xs if abs(x) > tol.DERIVED * big]
+    cap = max(cap, min(max(small, default=0), places(big, most)))
     need = next(
         (d for d in range(cap) if all(abs(x - round(x, d)) <= tol.DERIVED * big for x in xs)),
         cap,
