@@ -176,34 +176,53 @@ def ink(it: Item, fmt: str) -> shapely.Geometry:
 
 @dataclass
 class _Boxes:
-    """Candidate boxes of a text: each ``core`` box, ``grown`` by :data:`HALF`, ``padded`` by
-    :data:`PAD`, and its ``middle`` (less a quarter of its height all round)."""
+    """Candidate boxes of a text: each ``core`` box, ``padded`` by :data:`PAD`, and, for the
+    rows asked (:meth:`grown_middle`), the box ``grown`` by :data:`HALF` and its ``middle``
+    (less a quarter of its height all round). Upright boxes keep their baseline starts and
+    sizes (``at``; ``size``: width, rise, depth per row) and make those two only for the rows
+    that need them; turned ones have all four made."""
 
     core: npt.NDArray[np.object_]
-    grown: npt.NDArray[np.object_]
     padded: npt.NDArray[np.object_]
-    middle: npt.NDArray[np.object_]
+    grown: npt.NDArray[np.object_] | None = None
+    middle: npt.NDArray[np.object_] | None = None
+    at: npt.NDArray[np.float64] | None = None
+    size: npt.NDArray[np.float64] | None = None
 
     @classmethod
     def turned(cls, ats: Sequence[XY], w: float, up: float, down: float, angle: float) -> _Boxes:
         """The boxes of a text turned by ``angle`` with its baseline starting at each of
         ``ats``."""
         q = min(w, up + down) / 4.0
-        return cls(
-            *(
-                np.array([_turned_box(a, w, up, down, angle, g) for a in ats], dtype=object)
-                for g in (0.0, HALF, PAD, -q)
-            )
+        core, grown, padded, middle = (
+            np.array([_turned_box(a, w, up, down, angle, g) for a in ats], dtype=object)
+            for g in (0.0, HALF, PAD, -q)
         )
+        return cls(core, padded, grown, middle)
 
     @classmethod
-    def upright(cls, at: npt.NDArray[np.float64], w: float, up: float, down: float) -> _Boxes:
-        """The boxes of an upright text with its baseline starting at each row of ``at``."""
+    def upright(cls, at: npt.NDArray[np.float64], size: npt.NDArray[np.float64]) -> _Boxes:
+        """The boxes of upright texts with their baselines starting at the rows of ``at`` and
+        the sizes (width, rise, depth) of the rows of ``size``."""
         x, y = at[:, 0], at[:, 1]
-        q = min(w, up + down) / 4.0
-        return cls(
-            *(shapely.box(x - g, y - up - g, x + w + g, y + down + g) for g in (0.0, HALF, PAD, -q))
+        w, up, down = size[:, 0], size[:, 1], size[:, 2]
+        core, padded = (shapely.box(x - g, y - up - g, x + w + g, y + down + g) for g in (0.0, PAD))
+        return cls(core, padded, at=at, size=size)
+
+    def grown_middle(
+        self, rows: npt.NDArray[np.int64]
+    ) -> tuple[npt.NDArray[np.object_], npt.NDArray[np.object_]]:
+        """The grown boxes and the middles of ``rows``."""
+        if self.grown is not None and self.middle is not None:
+            return self.grown[rows], self.middle[rows]
+        assert self.at is not None and self.size is not None
+        x, y = self.at[rows, 0], self.at[rows, 1]
+        w, up, down = self.size[rows, 0], self.size[rows, 1], self.size[rows, 2]
+        q = np.minimum(w, up + down) / 4.0
+        grown, middle = (
+            shapely.box(x - g, y - up - g, x + w + g, y + down + g) for g in (HALF, -q)
         )
+        return grown, middle
 
 
 class Index:
@@ -279,7 +298,7 @@ class Index:
     def cost(self, boxes: _Boxes, texts: bool = True) -> npt.NDArray[np.float64]:
         """The overlap cost of each box: lines crossed, lines through its middle, lines near,
         texts overlapped (unless not ``texts``), and leaving the field."""
-        core, grown, padded, middle = boxes.core, boxes.grown, boxes.padded, boxes.middle
+        core, padded = boxes.core, boxes.padded
         n = len(core)
         out = np.zeros(n)
         # a line crosses a box whose outline grown by a line's half width its centre line meets;
@@ -287,11 +306,13 @@ class Index:
         # than one that cuts a corner. The grown box and the middle lie inside the padded one, so
         # the lines they meet are among the padded box's: one tree query, then those pairs.
         i, j = self.tree.query(padded, predicate="intersects")
+        rows, back = np.unique(i, return_inverse=True)
+        grown, middle = boxes.grown_middle(rows)
         lines = self.lines[j]
-        crossed = np.bincount(i[shapely.intersects(grown[i], lines)], minlength=n)
+        crossed = np.bincount(i[shapely.intersects(grown[back], lines)], minlength=n)
         near = np.bincount(i, minlength=n)
         out += W_LINE * crossed + W_NEAR * np.maximum(near - crossed, 0)
-        out += W_MIDDLE * np.bincount(i[shapely.intersects(middle[i], lines)], minlength=n)
+        out += W_MIDDLE * np.bincount(i[shapely.intersects(middle[back], lines)], minlength=n)
         if texts:
             out += self.text_cost(padded)
         out[self.outside(core)] += 1e6
@@ -350,25 +371,25 @@ def _free_directions(
 
 def _boxes_around(
     anchor: XY, w: float, up: float, down: float, dirs: Sequence[tuple[float, float]], gap0: float
-) -> tuple[list[XY], list[int]]:
+) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.int64]]:
     """Baseline starts of a ``w`` × (up + down) box ``gap`` from the anchor along each direction:
     the box's nearest corner (or the middle of its nearest edge, for a direction within 22.5° of
-    an axis) on the ray, the box beyond it; with each one's direction index."""
+    an axis) on the ray, the box beyond it; with each one's direction index (rows: each gap of
+    :data:`GAPS`, each direction)."""
     h = up + down
-    ats: list[XY] = []
-    dis: list[int] = []
-    for gap in GAPS:
-        g = gap + gap0
-        for di, (dx, dy) in enumerate(dirs):
-            n = math.hypot(dx, dy)
-            ux, uy = dx / n, dy / n
-            sx = 1.0 if ux > ALIGN else -1.0 if ux < -ALIGN else 0.0
-            sy = 1.0 if uy > ALIGN else -1.0 if uy < -ALIGN else 0.0
-            cx = anchor[0] + ux * g + sx * w / 2.0
-            cy = anchor[1] + uy * g + sy * h / 2.0
-            ats.append((cx - w / 2.0, cy - h / 2.0 + up))
-            dis.append(di)
-    return ats, dis
+    u: list[tuple[float, float, float, float]] = []
+    for dx, dy in dirs:
+        n = math.hypot(dx, dy)
+        ux, uy = dx / n, dy / n
+        sx = 1.0 if ux > ALIGN else -1.0 if ux < -ALIGN else 0.0
+        sy = 1.0 if uy > ALIGN else -1.0 if uy < -ALIGN else 0.0
+        u.append((ux, uy, sx * w / 2.0, sy * h / 2.0))
+    ua = np.array(u, dtype=np.float64)
+    g = (np.array(GAPS, dtype=np.float64) + gap0)[:, None]
+    cx = anchor[0] + ua[:, 0] * g + ua[:, 2]
+    cy = anchor[1] + ua[:, 1] * g + ua[:, 3]
+    at = np.stack([cx - w / 2.0, cy - h / 2.0 + up], axis=-1).reshape(-1, 2)
+    return at, np.tile(np.arange(len(u), dtype=np.int64), len(GAPS))
 
 
 def _candidates(
@@ -381,10 +402,10 @@ def _candidates(
     free = _free_directions(
         index, [a for _, a in anchors], [requests[ri].clear + 1.5 for ri, _ in anchors]
     )
-    all_at: list[XY] = []
-    owner: list[int] = []
-    anchor_of: list[int] = []
-    order: list[float] = []
+    all_at: list[npt.NDArray[np.float64]] = []
+    owner: list[npt.NDArray[np.int64]] = []
+    anchor_of: list[npt.NDArray[np.int64]] = []
+    order: list[npt.NDArray[np.float64]] = []
     ai = 0
     for ri, req in enumerate(requests):
         w, up, down = sizes[ri]
@@ -398,21 +419,15 @@ def _candidates(
             first = len(dirs)
             dirs += DIRECTIONS
             ats, dis = _boxes_around(a, w, up, down, dirs, req.clear)
-            all_at += ats
-            owner += [ri] * len(ats)
-            anchor_of += [k] * len(ats)
-            order += [0.05 * d if d < first else 0.3 + 0.1 * (d - first) for d in dis]
-    at = np.array(all_at, dtype=np.float64)
-    who = np.array(owner, dtype=np.int64)
-    which = np.array(anchor_of, dtype=np.int64)
+            all_at.append(ats)
+            owner.append(np.full(len(ats), ri, dtype=np.int64))
+            anchor_of.append(np.full(len(ats), k, dtype=np.int64))
+            order.append(np.where(dis < first, 0.05 * dis, 0.3 + 0.1 * (dis - first)))
+    at = np.concatenate(all_at)
+    who = np.concatenate(owner)
+    which = np.concatenate(anchor_of)
     starts = np.searchsorted(who, np.arange(len(requests) + 1))
-    size = np.array(sizes, dtype=np.float64)[who]
-    bw, bu, bd = size[:, 0], size[:, 1], size[:, 2]
-    x, y = at[:, 0], at[:, 1]
-    q = np.minimum(bw, bu + bd) / 4.0
-    boxes = _Boxes(
-        *(shapely.box(x - g, y - bu - g, x + bw + g, y + bd + g) for g in (0.0, HALF, PAD, -q))
-    )
+    boxes = _Boxes.upright(at, np.array(sizes, dtype=np.float64)[who])
     core = boxes.core
     clear = np.array([r.clear for r in requests], dtype=np.float64)[who]
     far = np.array([max(FAR_MM, r.clear + 3.0) for r in requests], dtype=np.float64)[who]
@@ -421,21 +436,31 @@ def _candidates(
     own = shapely.points(used[first_anchor[who] + which])
     d = shapely.distance(core, own) - clear
     base = W_DIST * d + W_FAR * np.maximum(d + clear - far, 0.0)
-    base += np.array(order) + W_OTHER * which
-    # nearer another label's point than its own: the label would name the wrong point
+    base += np.concatenate(order) + W_OTHER * which
+    # nearer another label's point than its own: the label would name the wrong point. Only
+    # the points within the box's distance to its own anchor count, so a pair is measured
+    # exactly only where the point's distance to the box's rectangle (numpy) is not more
     if len(points):
+        reach = d + clear
+        bounds = shapely.bounds(core)
         ci: list[npt.NDArray[np.int64]] = []
         pj: list[npt.NDArray[np.int64]] = []
         for ri, req in enumerate(requests):
             r = np.hypot(points[:, 0] - req.anchor[0], points[:, 1] - req.anchor[1])
             near = np.flatnonzero(r < 25.0)
             near = near[~(r[near] < 1.0)]
-            if len(near):
-                rows = np.arange(starts[ri], starts[ri + 1])
-                ci.append(np.repeat(rows, len(near)))
-                pj.append(np.tile(near, len(rows)))
-        if ci:
-            c_i, p_j = np.concatenate(ci), np.concatenate(pj)
+            if not len(near):
+                continue
+            rows = np.arange(starts[ri], starts[ri + 1])
+            b, p = bounds[rows][:, None, :], points[near][None, :, :]
+            gx = np.maximum(np.maximum(b[..., 0] - p[..., 0], p[..., 0] - b[..., 2]), 0.0)
+            gy = np.maximum(np.maximum(b[..., 1] - p[..., 1], p[..., 1] - b[..., 3]), 0.0)
+            ii, jj = np.nonzero(np.hypot(gx, gy) <= reach[rows][:, None] + tol.SHEET_MM)
+            ci.append(rows[ii])
+            pj.append(near[jj])
+        c_i = np.concatenate(ci) if ci else np.zeros(0, dtype=np.int64)
+        p_j = np.concatenate(pj) if pj else np.zeros(0, dtype=np.int64)
+        if len(c_i):
             dq = np.full(len(at), np.inf)
             np.minimum.at(dq, c_i, shapely.distance(core[c_i], shapely.points(points[p_j])))
             hit = np.isfinite(dq)

@@ -19,7 +19,7 @@ from __future__ import annotations
 import math
 import re
 from collections.abc import Iterator, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from functools import cache, lru_cache
 from importlib import resources
 from pathlib import Path
@@ -61,6 +61,9 @@ class FontMetrics:
     ascent: int
     descent: int
     widths: dict[int, int]
+    #: each text's advance in em units, as it was first summed (the layout and the label
+    #: placer measure the same words thousands of times)
+    _units: dict[str, int] = field(default_factory=dict, compare=False, repr=False)
 
     def font_size(self, cap_height_mm: float) -> float:
         """The em size (mm) whose capital letters are ``cap_height_mm`` tall."""
@@ -69,9 +72,12 @@ class FontMetrics:
     def advance(self, text: str, font_size: float) -> float:
         """The advance width (mm) of ``text`` set at ``font_size`` mm; no kerning. A character
         the font lacks is a :class:`~geomcad.errors.GeomcadError` naming it and the text."""
-        if any(ord(c) not in self.widths for c in text):
-            raise GeomcadError(f"the text {quote(text)} {no_glyph(text)}")
-        return sum(self.widths[ord(c)] for c in text) * font_size / self.units_per_em
+        units = self._units.get(text)
+        if units is None:
+            if any(ord(c) not in self.widths for c in text):
+                raise GeomcadError(f"the text {quote(text)} {no_glyph(text)}")
+            units = self._units[text] = sum(self.widths[ord(c)] for c in text)
+        return units * font_size / self.units_per_em
 
 
 def lacking(text: str) -> str:
