@@ -267,13 +267,20 @@ def box(runs: tuple[Run, ...], cap_height: float) -> tuple[float, float, float]:
 def wrap(markup: str, width: float, height: float, indent: float = 0.0) -> list[str]:
     """``markup`` wrapped at spaces into lines of at most ``width`` mm at cap height ``height``
     (lines after the first ``indent`` mm narrower)."""
+    return list(_wrapped(markup, width, height, indent))
+
+
+@lru_cache(maxsize=4096)
+def _wrapped(markup: str, width: float, height: float, indent: float) -> tuple[str, ...]:
+    """:func:`wrap`, once per paragraph and measure (a sheet's tree is built again for each
+    format and text height its layout tries, with the same paragraphs)."""
     lines: list[list[str]] = [[]]
     for word in markup.split(" "):
         room = width - (indent if len(lines) > 1 else 0.0)
         if lines[-1] and box(parse(" ".join([*lines[-1], word])), height)[0] > room:
             lines.append([])
         lines[-1].append(word)
-    return [" ".join(w) for w in lines]
+    return tuple(" ".join(w) for w in lines)
 
 
 def placed_runs(t: TextItem) -> Iterator[tuple[Run, float, float, float]]:
