@@ -744,7 +744,7 @@ def _build_parallel(
             documents.load(pid)
         except GeomcadError as exc:
             raise _Failed(_prefixed(pid, exc)) from exc
-    jobs.warm(files_ids, set(formats) - set(plain) != set())
+    jobs.warm(files_ids, formats)
     args = [
         (pid, tuple(formats), tuple(plain), ns.color, *title, ns.review, tuple(ns.set))
         for pid in ids

@@ -149,3 +149,39 @@ def test_patch_script_makes_the_shipped_font(tmp_path: Path) -> None:
     out = tmp_path / "osifont.ttf"
     subprocess.run([sys.executable, str(script), str(UPSTREAM), str(out)], check=True)
     assert out.read_bytes() == FONT.read_bytes()
+
+
+def test_the_metrics_file_is_the_shipped_fonts() -> None:
+    """geomcad/fonts/osifont-metrics.json holds what fontTools reads from the shipped font
+    (else: ``python scripts/font_metrics.py``), and the sheets' metrics are those."""
+    from geomcad.sheet.text import METRICS_FILE, metrics, metrics_record, read_metrics
+
+    assert FONT.with_name(METRICS_FILE).read_text(encoding="utf-8") == metrics_record(FONT)
+    assert metrics() == read_metrics(FONT)
+
+
+def test_a_metrics_file_of_another_font_is_not_read(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """A metrics file whose SHA-256 is not the font's (a font patched since) is ignored: the
+    widths come from the font itself."""
+    import json
+
+    from geomcad.sheet import text
+
+    font = tmp_path / FONT.name
+    font.write_bytes(FONT.read_bytes())
+    record = json.loads(text.metrics_record(FONT))
+    record["sha256"] = "0" * 64
+    record["widths"]["65"] += 100  # "A", as another font would have it
+    (tmp_path / text.METRICS_FILE).write_text(json.dumps(record), encoding="utf-8")
+    monkeypatch.setattr(text, "font_path", lambda: font)
+    text.metrics.cache_clear()
+    try:
+        assert text.metrics().widths[65] == text.read_metrics(FONT).widths[65]
+        record["sha256"] = text.hashlib.sha256(FONT.read_bytes()).hexdigest()
+        (tmp_path / text.METRICS_FILE).write_text(json.dumps(record), encoding="utf-8")
+        text.metrics.cache_clear()
+        assert text.metrics().widths[65] == text.read_metrics(FONT).widths[65] + 100
+    finally:
+        text.metrics.cache_clear()

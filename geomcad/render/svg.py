@@ -155,9 +155,14 @@ def _text(dwg: svgwrite.Drawing, t: TextItem, st: Style, ids: _Ids) -> svgwrite.
     if t.angle:
         # SVG turns clockwise on the paper (y down); the model's angle is counter-clockwise.
         attrs["transform"] = f"rotate({num(-t.angle)} {num(t.at[0])} {num(t.at[1])})"
-    el = dwg.text("", x=[num(t.at[0])], y=[num(t.at[1])], **attrs)
+    # x and y set as attributes (one number each), not through svgwrite's x= and y= lists,
+    # which flatten and join every value: the same attribute text, a third of the time
+    el = dwg.text("", **attrs)
+    el["x"], el["y"] = num(t.at[0]), num(t.at[1])
     for run, x, y, size in placed_runs(t):
-        el.add(dwg.tspan(run.text, x=[num(x)], y=[num(y)], **{"font-size": num(size)}))
+        span = dwg.tspan(run.text, **{"font-size": num(size)})
+        span["x"], span["y"] = num(x), num(y)
+        el.add(span)
     return el
 
 

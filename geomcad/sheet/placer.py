@@ -18,11 +18,17 @@ The labels with the fewest free positions are placed first, then each is placed 
 all the others in place. A dimension's text tries its own candidates (along its dimension line)
 against the same index, and so do optional texts (a diagram's tick values), left out where a
 line crosses them.
+
+Speed: every label's candidates are measured together (one query of the ink for the boxes of all
+labels, and a box's crossing and middle tests only against the lines its padded box meets); while
+the labels are placed, the placed ones are upright rectangles, compared with each candidate in
+numpy, not through a text index rebuilt after every label.
 """
 
 from __future__ import annotations
 
 import dataclasses
+import itertools
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass
@@ -170,34 +176,53 @@ def ink(it: Item, fmt: str) -> shapely.Geometry:
 
 @dataclass
 class _Boxes:
-    """Candidate boxes of a text: each ``core`` box, ``grown`` by :data:`HALF`, ``padded`` by
-    :data:`PAD`, and its ``middle`` (less a quarter of its height all round)."""
+    """Candidate boxes of a text: each ``core`` box, ``padded`` by :data:`PAD`, and, for the
+    rows asked (:meth:`grown_middle`), the box ``grown`` by :data:`HALF` and its ``middle``
+    (less a quarter of its height all round). Upright boxes keep their baseline starts and
+    sizes (``at``; ``size``: width, rise, depth per row) and make those two only for the rows
+    that need them; turned ones have all four made."""
 
     core: npt.NDArray[np.object_]
-    grown: npt.NDArray[np.object_]
     padded: npt.NDArray[np.object_]
-    middle: npt.NDArray[np.object_]
+    grown: npt.NDArray[np.object_] | None = None
+    middle: npt.NDArray[np.object_] | None = None
+    at: npt.NDArray[np.float64] | None = None
+    size: npt.NDArray[np.float64] | None = None
 
     @classmethod
     def turned(cls, ats: Sequence[XY], w: float, up: float, down: float, angle: float) -> _Boxes:
         """The boxes of a text turned by ``angle`` with its baseline starting at each of
         ``ats``."""
         q = min(w, up + down) / 4.0
-        return cls(
-            *(
-                np.array([_turned_box(a, w, up, down, angle, g) for a in ats], dtype=object)
-                for g in (0.0, HALF, PAD, -q)
-            )
+        core, grown, padded, middle = (
+            np.array([_turned_box(a, w, up, down, angle, g) for a in ats], dtype=object)
+            for g in (0.0, HALF, PAD, -q)
         )
+        return cls(core, padded, grown, middle)
 
     @classmethod
-    def upright(cls, at: npt.NDArray[np.float64], w: float, up: float, down: float) -> _Boxes:
-        """The boxes of an upright text with its baseline starting at each row of ``at``."""
+    def upright(cls, at: npt.NDArray[np.float64], size: npt.NDArray[np.float64]) -> _Boxes:
+        """The boxes of upright texts with their baselines starting at the rows of ``at`` and
+        the sizes (width, rise, depth) of the rows of ``size``."""
         x, y = at[:, 0], at[:, 1]
-        q = min(w, up + down) / 4.0
-        return cls(
-            *(shapely.box(x - g, y - up - g, x + w + g, y + down + g) for g in (0.0, HALF, PAD, -q))
+        w, up, down = size[:, 0], size[:, 1], size[:, 2]
+        core, padded = (shapely.box(x - g, y - up - g, x + w + g, y + down + g) for g in (0.0, PAD))
+        return cls(core, padded, at=at, size=size)
+
+    def grown_middle(
+        self, rows: npt.NDArray[np.int64]
+    ) -> tuple[npt.NDArray[np.object_], npt.NDArray[np.object_]]:
+        """The grown boxes and the middles of ``rows``."""
+        if self.grown is not None and self.middle is not None:
+            return self.grown[rows], self.middle[rows]
+        assert self.at is not None and self.size is not None
+        x, y = self.at[rows, 0], self.at[rows, 1]
+        w, up, down = self.size[rows, 0], self.size[rows, 1], self.size[rows, 2]
+        q = np.minimum(w, up + down) / 4.0
+        grown, middle = (
+            shapely.box(x - g, y - up - g, x + w + g, y + down + g) for g in (HALF, -q)
         )
+        return grown, middle
 
 
 class Index:
@@ -222,19 +247,20 @@ class Index:
         """The area (mm²) of ink inside each box: the exact measure, for a few boxes."""
         out = np.zeros(len(boxes))
         i, j = self.tree.query(boxes, predicate="intersects")
-        for a, b in zip(i.tolist(), j.tolist(), strict=True):
-            g = self._ink.get(b)
-            if g is None:
-                g = self._ink[b] = ink(self._items[b], self._fmt)
-            out[a] += g.intersection(boxes[a]).area
+        if len(i):
+            inks = np.array([self._ink_of(b) for b in j.tolist()], dtype=object)
+            # each box's areas summed in the tree's order, as one box at a time would
+            np.add.at(out, i, shapely.area(shapely.intersection(inks, boxes[i])))
         return out
+
+    def _ink_of(self, b: int) -> shapely.Geometry:
+        g = self._ink.get(b)
+        if g is None:
+            g = self._ink[b] = ink(self._items[b], self._fmt)
+        return g
 
     def add_text(self, p: Polygon) -> None:
         self.texts.append(p)
-        self._text_tree = None
-
-    def remove_text(self, p: Polygon) -> None:
-        self.texts = [q for q in self.texts if q is not p]
         self._text_tree = None
 
     def _tt(self) -> STRtree:
@@ -243,16 +269,20 @@ class Index:
             self._text_tree = STRtree(self._text_arr)
         return self._text_tree
 
-    def text_cost(self, padded: npt.NDArray[np.object_]) -> npt.NDArray[np.float64]:
-        """W_TEXT for each box that overlaps a text."""
+    def text_hits(self, padded: npt.NDArray[np.object_]) -> npt.NDArray[np.int64]:
+        """How many texts each box overlaps (by more than :data:`AREA_EPS`)."""
         n = len(padded)
         if not self.texts:
-            return np.zeros(n)
+            return np.zeros(n, dtype=np.int64)
         tt = self._tt().query(padded, predicate="intersects")
         if not tt.shape[1]:
-            return np.zeros(n)
+            return np.zeros(n, dtype=np.int64)
         area = shapely.area(shapely.intersection(padded[tt[0]], self._text_arr[tt[1]]))
-        return W_TEXT * np.bincount(tt[0][area > AREA_EPS], minlength=n).astype(np.float64)
+        return np.bincount(tt[0][area > AREA_EPS], minlength=n)
+
+    def text_cost(self, padded: npt.NDArray[np.object_]) -> npt.NDArray[np.float64]:
+        """W_TEXT for each box that overlaps a text."""
+        return W_TEXT * self.text_hits(padded).astype(np.float64)
 
     def outside(self, cands: npt.NDArray[np.object_]) -> npt.NDArray[np.bool_]:
         """Which boxes leave the field: the frame (less 0.5 mm) or onto a box of the form."""
@@ -268,17 +298,21 @@ class Index:
     def cost(self, boxes: _Boxes, texts: bool = True) -> npt.NDArray[np.float64]:
         """The overlap cost of each box: lines crossed, lines through its middle, lines near,
         texts overlapped (unless not ``texts``), and leaving the field."""
-        core, grown, padded, middle = boxes.core, boxes.grown, boxes.padded, boxes.middle
+        core, padded = boxes.core, boxes.padded
         n = len(core)
         out = np.zeros(n)
         # a line crosses a box whose outline grown by a line's half width its centre line meets;
         # one through the box's middle (its core less a quarter of its height all round) is worse
-        # than one that cuts a corner
-        crossed = np.bincount(self.tree.query(grown, predicate="intersects")[0], minlength=n)
-        near = np.bincount(self.tree.query(padded, predicate="intersects")[0], minlength=n)
+        # than one that cuts a corner. The grown box and the middle lie inside the padded one, so
+        # the lines they meet are among the padded box's: one tree query, then those pairs.
+        i, j = self.tree.query(padded, predicate="intersects")
+        rows, back = np.unique(i, return_inverse=True)
+        grown, middle = boxes.grown_middle(rows)
+        lines = self.lines[j]
+        crossed = np.bincount(i[shapely.intersects(grown[back], lines)], minlength=n)
+        near = np.bincount(i, minlength=n)
         out += W_LINE * crossed + W_NEAR * np.maximum(near - crossed, 0)
-        out += W_MIDDLE * np.bincount(self.tree.query(middle, predicate="intersects")[0],
-                                      minlength=n)  # fmt: skip
+        out += W_MIDDLE * np.bincount(i[shapely.intersects(middle[back], lines)], minlength=n)
         if texts:
             out += self.text_cost(padded)
         out[self.outside(core)] += 1e6
@@ -297,99 +331,176 @@ class _Candidates:
     anchor: npt.NDArray[np.int64]  # which anchor (0: the request's own, i: others[i − 1])
 
 
-def _free_directions(index: Index, anchor: XY, r: float) -> list[tuple[float, float]]:
-    """The middles of the free sectors around ``anchor``: where the ink crosses a circle of
-    radius ``r`` about it, the widest gaps between the crossings first (a line through the
-    anchor gives its two normals)."""
-    ring = Point(anchor).buffer(r, quad_segs=16).exterior
-    hits = index.tree.query(ring, predicate="intersects")
-    if not len(hits):
-        return []
-    g = index.lines[hits]
-    edges = np.where(index.filled[hits], shapely.boundary(g), g)
-    parts = shapely.get_parts(shapely.intersection(ring, edges))
-    pts = [(c.x, c.y) for c in shapely.centroid(parts[~shapely.is_empty(parts)])]
-    if not pts:
-        return []
-    angles = sorted(math.atan2(y - anchor[1], x - anchor[0]) for x, y in pts)
-    gaps = []
-    for i, a in enumerate(angles):
-        b = angles[(i + 1) % len(angles)] + (2.0 * math.pi if i + 1 == len(angles) else 0.0)
-        gaps.append((b - a, (a + b) / 2.0))
-    gaps.sort(key=lambda g: -g[0])
-    return [(math.cos(m), math.sin(m)) for width, m in gaps[:3] if width > math.radians(40.0)]
+def _free_directions(
+    index: Index, anchors: Sequence[XY], radii: Sequence[float]
+) -> list[list[tuple[float, float]]]:
+    """For each anchor, the middles of the free sectors around it: where the ink crosses a
+    circle of its radius about it, the widest gaps between the crossings first (a line through
+    the anchor gives its two normals)."""
+    out: list[list[tuple[float, float]]] = [[] for _ in anchors]
+    if not len(anchors):
+        return out
+    rings = shapely.get_exterior_ring(
+        shapely.buffer(shapely.points(np.array(anchors, dtype=np.float64)), radii, quad_segs=16)
+    )
+    ri, li = index.tree.query(rings, predicate="intersects")
+    if not len(ri):
+        return out
+    edges = index.lines[li]
+    filled = index.filled[li]
+    edges[filled] = shapely.boundary(edges[filled])
+    parts, pi = shapely.get_parts(shapely.intersection(rings[ri], edges), return_index=True)
+    keep = ~shapely.is_empty(parts)
+    xy = shapely.get_coordinates(shapely.centroid(parts[keep]))
+    crossings: list[list[tuple[float, float]]] = [[] for _ in anchors]
+    for k, (x, y) in zip(ri[pi[keep]].tolist(), xy.tolist(), strict=True):
+        crossings[k].append((x, y))
+    for k, pts in enumerate(crossings):
+        if not pts:
+            continue
+        ax, ay = anchors[k]
+        angles = sorted(math.atan2(y - ay, x - ax) for x, y in pts)
+        gaps = []
+        for i, a in enumerate(angles):
+            b = angles[(i + 1) % len(angles)] + (2.0 * math.pi if i + 1 == len(angles) else 0.0)
+            gaps.append((b - a, (a + b) / 2.0))
+        gaps.sort(key=lambda g: -g[0])
+        out[k] = [(math.cos(m), math.sin(m)) for width, m in gaps[:3] if width > math.radians(40.0)]
+    return out
 
 
 def _boxes_around(
     anchor: XY, w: float, up: float, down: float, dirs: Sequence[tuple[float, float]], gap0: float
-) -> tuple[list[XY], list[int]]:
+) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.int64]]:
     """Baseline starts of a ``w`` × (up + down) box ``gap`` from the anchor along each direction:
     the box's nearest corner (or the middle of its nearest edge, for a direction within 22.5° of
-    an axis) on the ray, the box beyond it; with each one's direction index."""
+    an axis) on the ray, the box beyond it; with each one's direction index (rows: each gap of
+    :data:`GAPS`, each direction)."""
     h = up + down
-    ats: list[XY] = []
-    dis: list[int] = []
-    for gap in GAPS:
-        g = gap + gap0
-        for di, (dx, dy) in enumerate(dirs):
-            n = math.hypot(dx, dy)
-            ux, uy = dx / n, dy / n
-            sx = 1.0 if ux > ALIGN else -1.0 if ux < -ALIGN else 0.0
-            sy = 1.0 if uy > ALIGN else -1.0 if uy < -ALIGN else 0.0
-            cx = anchor[0] + ux * g + sx * w / 2.0
-            cy = anchor[1] + uy * g + sy * h / 2.0
-            ats.append((cx - w / 2.0, cy - h / 2.0 + up))
-            dis.append(di)
-    return ats, dis
+    u: list[tuple[float, float, float, float]] = []
+    for dx, dy in dirs:
+        n = math.hypot(dx, dy)
+        ux, uy = dx / n, dy / n
+        sx = 1.0 if ux > ALIGN else -1.0 if ux < -ALIGN else 0.0
+        sy = 1.0 if uy > ALIGN else -1.0 if uy < -ALIGN else 0.0
+        u.append((ux, uy, sx * w / 2.0, sy * h / 2.0))
+    ua = np.array(u, dtype=np.float64)
+    g = (np.array(GAPS, dtype=np.float64) + gap0)[:, None]
+    cx = anchor[0] + ua[:, 0] * g + ua[:, 2]
+    cy = anchor[1] + ua[:, 1] * g + ua[:, 3]
+    at = np.stack([cx - w / 2.0, cy - h / 2.0 + up], axis=-1).reshape(-1, 2)
+    return at, np.tile(np.arange(len(u), dtype=np.int64), len(GAPS))
 
 
-def _candidates(req: LabelRequest, index: Index, points: npt.NDArray[np.float64]) -> _Candidates:
-    runs = parse(req.markup)
-    w, up, down = box(runs, req.height)
-    all_at: list[XY] = []
-    anchor_of: list[int] = []
-    order: list[float] = []
-    for ai, a in enumerate((req.anchor, *req.others)):
-        dirs: list[tuple[float, float]] = []
-        if req.prefer is not None:
-            dirs.append(req.prefer)
-        dirs += _free_directions(index, a, req.clear + 1.5)
-        first = len(dirs)
-        dirs += DIRECTIONS
-        ats, dis = _boxes_around(a, w, up, down, dirs, req.clear)
-        all_at += ats
-        anchor_of += [ai] * len(ats)
-        order += [0.05 * d if d < first else 0.3 + 0.1 * (d - first) for d in dis]
-    at = np.array(all_at, dtype=np.float64)
-    boxes = _Boxes.upright(at, w, up, down)
+def _candidates(
+    requests: Sequence[LabelRequest], index: Index, points: npt.NDArray[np.float64]
+) -> list[_Candidates]:
+    """Every request's candidate positions and their costs that do not depend on the other
+    labels, all requests' boxes measured together (one query of the index for all of them)."""
+    sizes = [box(parse(r.markup), r.height) for r in requests]
+    anchors = [(ri, a) for ri, r in enumerate(requests) for a in (r.anchor, *r.others)]
+    free = _free_directions(
+        index, [a for _, a in anchors], [requests[ri].clear + 1.5 for ri, _ in anchors]
+    )
+    all_at: list[npt.NDArray[np.float64]] = []
+    owner: list[npt.NDArray[np.int64]] = []
+    anchor_of: list[npt.NDArray[np.int64]] = []
+    order: list[npt.NDArray[np.float64]] = []
+    ai = 0
+    for ri, req in enumerate(requests):
+        w, up, down = sizes[ri]
+        for k in range(1 + len(req.others)):
+            a = anchors[ai][1]
+            dirs: list[tuple[float, float]] = []
+            if req.prefer is not None:
+                dirs.append(req.prefer)
+            dirs += free[ai]
+            ai += 1
+            first = len(dirs)
+            dirs += DIRECTIONS
+            ats, dis = _boxes_around(a, w, up, down, dirs, req.clear)
+            all_at.append(ats)
+            owner.append(np.full(len(ats), ri, dtype=np.int64))
+            anchor_of.append(np.full(len(ats), k, dtype=np.int64))
+            order.append(np.where(dis < first, 0.05 * dis, 0.3 + 0.1 * (dis - first)))
+    at = np.concatenate(all_at)
+    who = np.concatenate(owner)
+    which = np.concatenate(anchor_of)
+    starts = np.searchsorted(who, np.arange(len(requests) + 1))
+    boxes = _Boxes.upright(at, np.array(sizes, dtype=np.float64)[who])
     core = boxes.core
-    which = np.array(anchor_of, dtype=np.int64)
-    anchors = np.array([req.anchor, *req.others], dtype=np.float64)
-    own = shapely.points(anchors[which])
-    d = shapely.distance(core, own) - req.clear
-    base = W_DIST * d + W_FAR * np.maximum(d + req.clear - max(FAR_MM, req.clear + 3.0), 0.0)
-    base += np.array(order) + W_OTHER * which
-    # nearer another label's point than its own: the label would name the wrong point
+    clear = np.array([r.clear for r in requests], dtype=np.float64)[who]
+    far = np.array([max(FAR_MM, r.clear + 3.0) for r in requests], dtype=np.float64)[who]
+    used = np.array([a for _, a in anchors], dtype=np.float64)
+    first_anchor = np.cumsum([0] + [1 + len(r.others) for r in requests])[:-1]
+    own = shapely.points(used[first_anchor[who] + which])
+    d = shapely.distance(core, own) - clear
+    base = W_DIST * d + W_FAR * np.maximum(d + clear - far, 0.0)
+    base += np.concatenate(order) + W_OTHER * which
+    # nearer another label's point than its own: the label would name the wrong point. Only
+    # the points within the box's distance to its own anchor count, so a pair is measured
+    # exactly only where the point's distance to the box's rectangle (numpy) is not more
     if len(points):
-        near = points[np.hypot(points[:, 0] - req.anchor[0], points[:, 1] - req.anchor[1]) < 25.0]
-        mine = np.hypot(near[:, 0] - req.anchor[0], near[:, 1] - req.anchor[1]) < 1.0
-        near = near[~mine]
-        if len(near):
-            dq = shapely.distance(core[:, None], shapely.points(near)[None, :]).min(axis=1)
-            base += W_AMBIGUOUS * np.clip(d + req.clear - dq, 0.0, 2.0)
+        reach = d + clear
+        bounds = shapely.bounds(core)
+        ci: list[npt.NDArray[np.int64]] = []
+        pj: list[npt.NDArray[np.int64]] = []
+        for ri, req in enumerate(requests):
+            r = np.hypot(points[:, 0] - req.anchor[0], points[:, 1] - req.anchor[1])
+            near = np.flatnonzero(r < 25.0)
+            near = near[~(r[near] < 1.0)]
+            if not len(near):
+                continue
+            rows = np.arange(starts[ri], starts[ri + 1])
+            b, p = bounds[rows][:, None, :], points[near][None, :, :]
+            gx = np.maximum(np.maximum(b[..., 0] - p[..., 0], p[..., 0] - b[..., 2]), 0.0)
+            gy = np.maximum(np.maximum(b[..., 1] - p[..., 1], p[..., 1] - b[..., 3]), 0.0)
+            ii, jj = np.nonzero(np.hypot(gx, gy) <= reach[rows][:, None] + tol.SHEET_MM)
+            ci.append(rows[ii])
+            pj.append(near[jj])
+        c_i = np.concatenate(ci) if ci else np.zeros(0, dtype=np.int64)
+        p_j = np.concatenate(pj) if pj else np.zeros(0, dtype=np.int64)
+        if len(c_i):
+            dq = np.full(len(at), np.inf)
+            np.minimum.at(dq, c_i, shapely.distance(core[c_i], shapely.points(points[p_j])))
+            hit = np.isfinite(dq)
+            base[hit] += W_AMBIGUOUS * np.clip(d[hit] + clear[hit] - dq[hit], 0.0, 2.0)
     base += index.cost(boxes, texts=False)
     # the cheapest few measured exactly: the ink inside each (a line through the letters
     # against one that grazes an edge); the others wait behind them
-    best = np.argsort(base, kind="stable")[:REFINE]
+    best = np.concatenate(
+        [s + np.argsort(base[s:e], kind="stable")[:REFINE] for s, e in itertools.pairwise(starts)]
+    )
     inner = shapely.box(*(shapely.bounds(core[best]) + np.array([0.25, 0.25, -0.25, -0.25])).T)
     extra = np.full(len(base), W_LINE)
     extra[best] = W_INK * index.ink_inside(inner)
     base += extra
     padded = boxes.padded
-    if req.space > 0.0:
-        g = PAD + req.space
-        padded = shapely.box(*(shapely.bounds(core) + np.array([-g, -g, g, g])).T)
-    return _Candidates(at, core, padded, base, which)
+    space = np.array([r.space for r in requests], dtype=np.float64)[who]
+    if np.any(space > 0.0):
+        padded = padded.copy()
+        sp = np.flatnonzero(space > 0.0)
+        g = (PAD + space[sp])[:, None] * np.array([-1.0, -1.0, 1.0, 1.0])
+        padded[sp] = shapely.box(*(shapely.bounds(core[sp]) + g).T)
+    return [
+        _Candidates(at[s:e], core[s:e], padded[s:e], base[s:e], which[s:e])
+        for s, e in itertools.pairwise(starts)
+    ]
+
+
+def _overlaps(
+    boxes: npt.NDArray[np.float64], others: npt.NDArray[np.float64]
+) -> npt.NDArray[np.int64]:
+    """How many of the upright rectangles ``others`` (rows x0, y0, x1, y1) each of ``boxes``
+    overlaps by more than :data:`AREA_EPS`."""
+    if not len(others):
+        return np.zeros(len(boxes), dtype=np.int64)
+    b, o = boxes[:, None, :], others[None, :, :]
+    dx = np.minimum(b[..., 2], o[..., 2]) - np.maximum(b[..., 0], o[..., 0])
+    dy = np.minimum(b[..., 3], o[..., 3]) - np.maximum(b[..., 1], o[..., 1])
+    area = np.maximum(dx, 0.0) * np.maximum(dy, 0.0)
+    hits: npt.NDArray[np.int64] = np.count_nonzero(area > AREA_EPS, axis=1)
+    return hits
 
 
 def place_labels(sheet: Sheet, index: Index, requests: Sequence[LabelRequest]) -> None:
@@ -398,24 +509,40 @@ def place_labels(sheet: Sheet, index: Index, requests: Sequence[LabelRequest]) -
     if not requests:
         return
     points = np.array([r.anchor for r in requests], dtype=np.float64).reshape(-1, 2)
-    cands = [_candidates(r, index, points) for r in requests]
+    cands = _candidates(requests, index, points)
+    # the texts already on the sheet, once for every candidate; the labels' own boxes (upright
+    # rectangles) are counted as they are placed
+    hits = index.text_hits(np.concatenate([c.padded for c in cands]))
+    cuts = np.cumsum([len(c.base) for c in cands])[:-1]
+    fixed = np.split(hits, cuts)
+    pads = [shapely.bounds(c.padded) for c in cands]
+    hulls = np.array([(p[:, 0].min(), p[:, 1].min(), p[:, 2].max(), p[:, 3].max()) for p in pads])
     # the fewest free positions first (a label in a crowd before one in the open)
-    free = [int(np.sum(c.base + index.text_cost(c.padded) < FREE)) for c in cands]
+    free = [
+        int(np.sum(c.base + W_TEXT * f.astype(np.float64) < FREE))
+        for c, f in zip(cands, fixed, strict=True)
+    ]
     order = sorted(range(len(requests)), key=lambda i: free[i])
     chosen: dict[int, int] = {}
-    polys: dict[int, Polygon] = {}
+    placed = np.zeros((len(requests), 4))
+    on = np.zeros(len(requests), dtype=bool)
     for rnd in range(2):
         for i in order:
             c = cands[i]
-            if rnd:
-                index.remove_text(polys[i])
-            total = c.base + index.text_cost(c.padded)
+            on[i] = False  # a label is placed again with the others in place, not itself
+            h = hulls[i]
+            near = on & (placed[:, 0] <= h[2]) & (h[0] <= placed[:, 2])
+            near &= (placed[:, 1] <= h[3]) & (h[1] <= placed[:, 3])
+            n = fixed[i] + _overlaps(pads[i], placed[near])
+            total = c.base + W_TEXT * n.astype(np.float64)
             k = int(np.argmin(total))
             if rnd and total[chosen[i]] <= total[k] + tol.SHEET_MM:
                 k = chosen[i]
             chosen[i] = k
-            polys[i] = c.core[k]
-            index.add_text(polys[i])
+            placed[i] = shapely.bounds(c.core[k])
+            on[i] = True
+    for i in order:
+        index.add_text(cands[i].core[chosen[i]])
     fs_cache: dict[float, float] = {}
     for i, req in enumerate(requests):
         c = cands[i]

@@ -181,7 +181,7 @@ def cmd_variants(ns: argparse.Namespace) -> int:
     # what every variant needs is imported here, once, before the workers fork
     with contextlib.suppress(GeomcadError):
         template.solve(())
-    jobs.warm([], raster=formats != ("svg",))
+    jobs.warm([], formats)
     relay = jobs.Relay()
     with jobs.pool(n_jobs, relay) as run:
         with jobs.bar(count, "variant", "solve") as tick:

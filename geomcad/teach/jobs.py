@@ -21,7 +21,7 @@ from __future__ import annotations
 import os
 import signal
 import sys
-from collections.abc import Callable, Iterator, Sequence
+from collections.abc import Callable, Collection, Iterator, Sequence
 from concurrent.futures import FIRST_COMPLETED, Future, ProcessPoolExecutor, wait
 from contextlib import contextmanager, suppress
 from typing import Any
@@ -142,28 +142,37 @@ def pool(jobs: int, tick: Callable[[int], None] | None = None) -> Iterator[Runne
 @contextmanager
 def bar(total: int, unit: str, desc: str = "") -> Iterator[Callable[[int], None]]:
     """A progress bar on stderr when it is a terminal (nothing when piped or in a file)."""
+    show = sys.stderr.isatty()
+    if not show:  # nothing to draw: tqdm is not even imported
+        yield lambda n: None
+        return
     from tqdm import tqdm
 
     # no monitor thread: worker processes are forked while the bar runs
     tqdm.monitor_interval = 0
-    show = sys.stderr.isatty()
     with tqdm(total=total, unit=unit, desc=desc, disable=not show, leave=False,
               file=sys.stderr) as t:  # fmt: skip
         yield t.update
 
 
-def warm(file_ids: Sequence[str], raster: bool) -> None:
+def warm(file_ids: Sequence[str], formats: Collection[str]) -> None:
     """Import in this process what the workers will need, before they are forked: the kinds of
-    the files (their modules load with :func:`geomcad.documents.load`) and, for PDF or PNG,
-    cairosvg; each worker then starts with them instead of importing them again. A file that
-    does not load is left for its worker to report."""
+    the files (their modules load with :func:`geomcad.documents.load`), for PDF the PDF
+    writer's cairo (:mod:`geomcad.render.libcairo`), for PNG cairosvg; each worker then starts
+    with them instead of importing them again. A file that does not load is left for its worker
+    to report."""
     from geomcad import documents
     from geomcad.errors import GeomcadError
 
     for pid in file_ids:
         with suppress(GeomcadError):
             documents.load(pid)
-    if raster:
+    if "pdf" in formats:
+        from geomcad.render import libcairo
+
+        with suppress(GeomcadError):
+            libcairo.load()
+    if "png" in formats:
         from geomcad.render.raster import _cairosvg
 
         with suppress(GeomcadError):
