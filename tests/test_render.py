@@ -696,18 +696,3 @@ def test_a_cairo_error_is_one_geomcad_error() -> None:
     ctx.stroke()
     with pytest.raises(GeomcadError, match="cairo could not write the PDF: error while writing"):
         surface.finish()
-
-
-def test_a_failed_drawing_call_is_said_when_the_pdf_is_finished() -> None:
-    """cairo's status is sticky: a call that fails (a negative dash) makes finishing the PDF
-    one GeomcadError in cairo's words, not a PDF with the rest of the drawing silently lost."""
-    from geomcad.render import libcairo
-
-    surface = libcairo.PDFSurface(io.BytesIO(), 100.0, 100.0)
-    ctx = libcairo.Context(surface)
-    ctx.set_dash([-1.0])
-    ctx.move_to(0.0, 0.0)
-    ctx.line_to(50.0, 50.0)
-    ctx.stroke()
-    with pytest.raises(GeomcadError, match=r"cairo could not write the PDF: .*dash"):
-        surface.finish()

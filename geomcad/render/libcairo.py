@@ -153,7 +153,6 @@ class PDFSurface:
         write = ffi.callback("cairo_write_func_t", put, error=STATUS_WRITE_ERROR)
         _WRITERS.add(write)
         self._write = write
-        self._contexts: list[Context] = []
         self._pointer = ffi.gc(
             lib.cairo_pdf_surface_create_for_stream(write, ffi.NULL, width, height),
             lib.cairo_surface_destroy,
@@ -168,99 +167,114 @@ class PDFSurface:
         self._check()
 
     def finish(self) -> None:
-        """Check the contexts drawn with, and write the rest of the PDF (through ``target``);
-        cairo writes nothing after it."""
-        for ctx in self._contexts:
-            ctx.check()
+        """Write the rest of the PDF (through ``target``); cairo writes nothing after it."""
         _loaded()[1].cairo_surface_finish(self._pointer)
         self._check()
         _WRITERS.discard(self._write)
 
 
 class Context:
-    """A cairo drawing context on ``surface``: the calls of the same names. cairo's status is
-    sticky (a failed call leaves the context in its error, and every later call does nothing),
-    so it is checked once, when the surface is finished (:meth:`PDFSurface.finish`), not after
-    every call as cairocffi does."""
+    """A cairo drawing context on ``surface``: the calls of the same names, each followed by
+    a check of the context's status."""
 
     def __init__(self, surface: PDFSurface) -> None:
         ffi, self._lib = _loaded()
-        # (cairo keeps its own reference to the surface while the context lives)
+        self._surface = surface
         self._pointer = ffi.gc(self._lib.cairo_create(surface._pointer), self._lib.cairo_destroy)
-        surface._contexts.append(self)
-        self.check()
+        self._check()
 
-    def check(self) -> None:
-        """A :class:`GeomcadError` where a call on this context failed."""
+    def _check(self) -> None:
         _check(self._lib.cairo_status(self._pointer))
 
     def save(self) -> None:
         self._lib.cairo_save(self._pointer)
+        self._check()
 
     def restore(self) -> None:
         self._lib.cairo_restore(self._pointer)
+        self._check()
 
     def scale(self, sx: float, sy: float) -> None:
         self._lib.cairo_scale(self._pointer, sx, sy)
+        self._check()
 
     def translate(self, tx: float, ty: float) -> None:
         self._lib.cairo_translate(self._pointer, tx, ty)
+        self._check()
 
     def rotate(self, radians: float) -> None:
         self._lib.cairo_rotate(self._pointer, radians)
+        self._check()
 
     def set_line_cap(self, line_cap: int) -> None:
         self._lib.cairo_set_line_cap(self._pointer, line_cap)
+        self._check()
 
     def set_line_join(self, line_join: int) -> None:
         self._lib.cairo_set_line_join(self._pointer, line_join)
+        self._check()
 
     def set_line_width(self, width: float) -> None:
         self._lib.cairo_set_line_width(self._pointer, width)
+        self._check()
 
     def set_dash(self, dashes: Sequence[float], offset: float = 0.0) -> None:
         ffi = _loaded()[0]
         self._lib.cairo_set_dash(
             self._pointer, ffi.new("double[]", list(dashes)), len(dashes), offset
         )
+        self._check()
 
     def set_source_rgb(self, red: float, green: float, blue: float) -> None:
         self._lib.cairo_set_source_rgb(self._pointer, red, green, blue)
+        self._check()
 
     def new_path(self) -> None:
         self._lib.cairo_new_path(self._pointer)
+        self._check()
 
     def move_to(self, x: float, y: float) -> None:
         self._lib.cairo_move_to(self._pointer, x, y)
+        self._check()
 
     def line_to(self, x: float, y: float) -> None:
         self._lib.cairo_line_to(self._pointer, x, y)
+        self._check()
 
     def close_path(self) -> None:
         self._lib.cairo_close_path(self._pointer)
+        self._check()
 
     def arc(self, xc: float, yc: float, radius: float, angle1: float, angle2: float) -> None:
         self._lib.cairo_arc(self._pointer, xc, yc, radius, angle1, angle2)
+        self._check()
 
     def arc_negative(
         self, xc: float, yc: float, radius: float, angle1: float, angle2: float
     ) -> None:
         self._lib.cairo_arc_negative(self._pointer, xc, yc, radius, angle1, angle2)
+        self._check()
 
     def fill(self) -> None:
         self._lib.cairo_fill(self._pointer)
+        self._check()
 
     def fill_preserve(self) -> None:
         self._lib.cairo_fill_preserve(self._pointer)
+        self._check()
 
     def stroke(self) -> None:
         self._lib.cairo_stroke(self._pointer)
+        self._check()
 
     def select_font_face(self, family: str, slant: int, weight: int) -> None:
         self._lib.cairo_select_font_face(self._pointer, family.encode(), slant, weight)
+        self._check()
 
     def set_font_size(self, size: float) -> None:
         self._lib.cairo_set_font_size(self._pointer, size)
+        self._check()
 
     def show_text(self, text: str) -> None:
         self._lib.cairo_show_text(self._pointer, text.encode())
+        self._check()
