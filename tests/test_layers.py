@@ -42,7 +42,7 @@ LEVEL = {
 #: Layers that are one layer under two module names.
 SAME = {"notebook": "problem"}
 TOP = 10  # registry, documents, verify, review, reference, teach, cli, __init__, __main__
-DRAWING = ("svgwrite", "cairosvg", "cairocffi", "cffi")
+DRAWING = ("svgwrite", "cairosvg", "cairocffi")
 
 
 def layer_of(path: Path) -> tuple[str, int]:

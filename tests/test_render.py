@@ -585,19 +585,11 @@ def test_missing_libcairo_is_one_line_and_svgs_are_still_written(
             raise OSError('no library called "cairo-2" was found')
         return real_import(name, *args, **kwargs)  # type: ignore[arg-type]
 
-    from geomcad.render import libcairo  # the PDF writer's binding opens libcairo itself
-
     monkeypatch.delitem(__import__("sys").modules, "cairosvg", raising=False)
     monkeypatch.setattr(builtins, "__import__", no_cairo)
-    monkeypatch.setattr(libcairo, "SONAMES", ("libno-such-cairo.so.9",))
-    monkeypatch.setattr(libcairo, "LIBRARY_NAMES", ())
-    libcairo._loaded.cache_clear()
     sheets = [("", sample_sheet()), ("b", text_sheet())]
-    try:
-        with pytest.raises(MissingDependency) as info:
-            write_sheets("p", sheets, tmp_path)
-    finally:
-        libcairo._loaded.cache_clear()
+    with pytest.raises(MissingDependency) as info:
+        write_sheets("p", sheets, tmp_path)
     msg = str(info.value)
     assert "\n" not in msg
     assert "apt-get install libcairo2" in msg
@@ -642,57 +634,3 @@ def test_black_by_default() -> None:
     svg = to_svg(sheet)
     assert "#1f4e9c" not in svg and "#b01c1c" not in svg
     assert "#1f4e9c" in to_svg(sheet, colour=True)
-
-
-# --- the PDF writer's own cairo binding (geomcad.render.libcairo) ------------------------------
-
-
-@pytest.mark.parametrize(
-    "make", [sample_sheet, text_sheet, _kinematic_sheet], ids=["mixed", "text", "2013-3"]
-)
-def test_the_pdf_binding_writes_what_cairocffi_writes(
-    make: Callable[[], Sheet], monkeypatch: pytest.MonkeyPatch
-) -> None:
-    """The same drawing calls through cairocffi's whole binding give the same bytes."""
-    from geomcad.render import libcairo, pdf
-
-    for colour in (False, True):
-        sheet = make()
-        ours = sheet_pdf(sheet, colour)
-        with monkeypatch.context() as m:
-            m.setattr(pdf.libcairo, "load", raster.cairo)
-            theirs = sheet_pdf(sheet, colour)
-        assert ours == theirs
-        assert libcairo.load() is libcairo
-
-
-def test_the_pdf_binding_without_libcairo_is_the_missing_cairo_line(
-    monkeypatch: pytest.MonkeyPatch,
-) -> None:
-    from geomcad.render import libcairo
-
-    monkeypatch.setattr(libcairo, "SONAMES", ("libno-such-cairo.so.9",))
-    monkeypatch.setattr(libcairo, "LIBRARY_NAMES", ("no-such-cairo",))
-    libcairo._loaded.cache_clear()
-    try:
-        with pytest.raises(MissingDependency, match="apt-get install libcairo2"):
-            sheet_pdf(sample_sheet())
-    finally:
-        libcairo._loaded.cache_clear()
-
-
-def test_a_cairo_error_is_one_geomcad_error() -> None:
-    """A status cairo reports (here: a write that fails) is a GeomcadError with cairo's words."""
-    from geomcad.render import libcairo
-
-    class Full(io.BytesIO):
-        def write(self, b: object) -> int:
-            raise OSError("disk full")
-
-    surface = libcairo.PDFSurface(Full(), 100.0, 100.0)
-    ctx = libcairo.Context(surface)
-    ctx.move_to(0.0, 0.0)
-    ctx.line_to(50.0, 50.0)
-    ctx.stroke()
-    with pytest.raises(GeomcadError, match="cairo could not write the PDF: error while writing"):
-        surface.finish()

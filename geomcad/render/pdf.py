@@ -6,10 +6,9 @@ text positions (:func:`~geomcad.sheet.text.placed_runs`), but without writing th
 parsing it back: cairosvg set every letter of every label on its own (a text-extents call and
 a text call per letter) and spent most of a sheet's PDF time on it; here a run of text is one
 ``show_text`` in the pinned font, and its glyph advances are the font's, as the SVG's per-run
-positions assume (no kerning). Text stays real text. cairo is called through
-:mod:`geomcad.render.libcairo` (the few calls made here, not cairocffi's whole binding, whose
-import took 0.1 s; fontconfig pointed at the shipped font first); a missing libcairo is the
-same :class:`~geomcad.errors.MissingDependency` line.
+positions assume (no kerning). Text stays real text. cairo is loaded through
+:func:`geomcad.render.raster.cairo` (fontconfig pointed at the shipped font first); a missing
+libcairo is the same :class:`~geomcad.errors.MissingDependency` line.
 """
 
 from __future__ import annotations
@@ -19,8 +18,7 @@ import math
 from typing import Any
 
 from geomcad import interrupts
-from geomcad.render import libcairo
-from geomcad.render.raster import pin_creation_date
+from geomcad.render.raster import cairo, pin_creation_date
 from geomcad.render.svg import _fill_colour, main_line, monochrome
 from geomcad.sheet.model import ArcItem, CircleItem, Dash, Item, Polyline, Sheet, TextItem
 from geomcad.sheet.style import STYLES, Style, for_language, style
@@ -103,7 +101,7 @@ def sheet_pdf(sheet: Sheet, colour: bool = False) -> bytes:
 
 
 def _draw(sheet: Sheet, colour: bool) -> bytes:
-    c = libcairo.load()
+    c = cairo()
     out = io.BytesIO()
     surface = c.PDFSurface(out, sheet.width * PT_PER_MM, sheet.height * PT_PER_MM)
     if sheet.title:  # the title block's markup as plain text, as the SVG's <title>
