@@ -158,9 +158,9 @@ def bar(total: int, unit: str, desc: str = "") -> Iterator[Callable[[int], None]
 def warm(file_ids: Sequence[str], formats: Collection[str]) -> None:
     """Import in this process what the workers will need, before they are forked: the kinds of
     the files (their modules load with :func:`geomcad.documents.load`), for PDF the PDF
-    writer's cairo (:mod:`geomcad.render.libcairo`), for PNG cairosvg; each worker then starts
-    with them instead of importing them again. A file that does not load is left for its worker
-    to report."""
+    writer's cairocffi (:func:`geomcad.render.raster.cairo`), for PNG cairosvg; each worker
+    then starts with them instead of importing them again. A file that does not load is left
+    for its worker to report."""
     from geomcad import documents
     from geomcad.errors import GeomcadError
 
@@ -168,10 +168,10 @@ def warm(file_ids: Sequence[str], formats: Collection[str]) -> None:
         with suppress(GeomcadError):
             documents.load(pid)
     if "pdf" in formats:
-        from geomcad.render import libcairo
+        from geomcad.render.raster import cairo
 
         with suppress(GeomcadError):
-            libcairo.load()
+            cairo()
     if "png" in formats:
         from geomcad.render.raster import _cairosvg
 
