@@ -599,7 +599,7 @@ def _scheme(
     # each gear's number on a rim point of its own, never at a pitch point two gears share
     r3, r_held = m * z[2] / 2.0, m * z[-1] / 2.0
     if scheme != "A":
-        top_shared = math.isclose(aw + r3, r_held, rel_tol=1e-9)
+        top_shared = math.isclose(aw + r3, r_held, rel_tol=tol.DERIVED)
         y3 = aw - r3 if top_shared else aw + r3
         v.label(Vec(c2, y3), "3", prefer=(1.0, -1.0) if top_shared else (1.0, 1.0))
     v.seg(Vec(cH, 0.0), Vec(span + k.model(5.0), 0.0), "link")

@@ -20,6 +20,7 @@ import math
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 
+from geomcad import tol
 from geomcad.construction import Construction, fmt
 from geomcad.errors import DegenerateInput, ParallelLines
 from geomcad.geom import Line, PointLike, Vec, line_line, vec
@@ -220,7 +221,7 @@ def force_polygon(
     names = [mark.get(t.name, t.name) for t in terms]
     # a magnitude at the level of rounding (a force the equation makes zero) is written as 0
     size = max((v.force.norm for v in poly.vectors), default=0.0)
-    solved = {n: (0.0 if abs(x) <= 1e-12 * size else x) for n, x in poly.solved}
+    solved = {n: (0.0 if abs(x) <= tol.REL_LENGTH * size else x) for n, x in poly.solved}
     return c.record(
         name,
         f"force polygon {eq}, head to tail from the pole",

@@ -32,6 +32,7 @@ from __future__ import annotations
 
 import math
 import re as _re
+import sys
 from dataclasses import dataclass, field
 from typing import Literal
 
@@ -395,7 +396,9 @@ class Plan:
         own = self.models.get(point.rstrip("'"))
         if own and own != names[2]:
             own = ""
-        if abs(AB.cross(r)) <= tol.REL_LENGTH * 1.0e3 * math.sqrt(L2) * max(r.norm, 1.0e-300):
+        if abs(AB.cross(r)) <= tol.REL_LENGTH * 1.0e3 * math.sqrt(L2) * max(
+            r.norm, sys.float_info.min
+        ):
             t = r.dot(AB) / L2  # P on line AB: its image on line ab at the same ratio
             kind = "plan_image_line" if t >= 0.0 else "plan_image_beyond"
             args["ratio"] = abs(t)
@@ -570,7 +573,7 @@ class Plan:
 
 
 #: A magnitude at most this share of the plan's size is written 0 in the order of construction.
-NOISE = 1.0e-9
+NOISE = tol.DERIVED
 
 _SYMBOL = {"v": "V", "a": "a"}
 _MU = {"v": "μ_V", "a": "μ_a"}

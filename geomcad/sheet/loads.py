@@ -143,7 +143,7 @@ MOST_TIERS = 3
 TIER_LIMIT = 1.5
 #: Forces under this share of a view's largest are left out (and named) where drawing them
 #: would take a fourth μ_F: they change no result drawn (0,1 % of the largest).
-NEGLIGIBLE = 1e-3
+NEGLIGIBLE = 0.001
 
 
 def _coarsest(value_min: float, mm: float) -> Scale:
