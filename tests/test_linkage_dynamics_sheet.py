@@ -84,3 +84,26 @@ def test_wittenbauers_tangents_are_named_at_their_far_ends() -> None:
             assert _near_end(t, sheet, 4.0), (stem, t.text, t.at)
             # not beside a touching point (a dot), where it would jam against the axis
             assert all(math.dist(c, q) > 5.0 for q in dots), (stem, t.text, t.at)
+
+
+def test_the_diagrams_origin_is_numbered_position_0_where_the_file_lists_phi(
+    tmp_path: Path,
+) -> None:
+    """A file's ``phi`` list (the positions it asks plans for) does not move the diagrams'
+    origin: the note under the diagrams' title names numbered position 0's angle (the
+    flywheel's ψ = 0), never the list's first angle (review 4: "φ1 = 40°" beside a
+    position 0 at 291.1°)."""
+    text = (EXAMPLES / "shaper.toml").read_text(encoding="utf-8")
+    text = text.replace("positions = 12\n", "positions = 12\nphi = [40.0, 250.0]\n", 1)
+    path = tmp_path / "shaper_phi.toml"
+    path.write_text(text, encoding="utf-8")
+    solved = documents.solve(str(path))
+    sheets = dict(solved.sheets())
+    phi0 = math.degrees(solved.data.drawn[0].phi) % 360.0
+    assert abs(phi0 - 40.0) > 1.0  # the test means something: position 0 is not at 40°
+    with language("ru"):
+        notes = [t.text for t in sheets["dynamics"].texts() if "положения 0" in t.text]
+    assert notes, "no origin note on the dynamics sheet"
+    want = f"{phi0:.1f}".replace(".", ",")
+    assert any(want in n for n in notes), (want, notes)
+    assert not any("= 40,0°" in n or "= 40°" in n for n in notes), notes

@@ -1052,7 +1052,7 @@ def _sheet3(s: Solved, fw: Flywheel, h: float) -> Tree:
         cs.append(Curve(np.degrees(psi_k), gy, "construction", points=True))
         graphs.append(Diagram(x, AxisSpec(sym, unit, name), cs, least=(120.0, 45.0),
                               prefer=(600.0, 150.0), marks=position_marks(n)))  # fmt: skip
-    phi0 = math.degrees(s.positions[0].phi) % 360.0
+    phi0 = math.degrees(fw.phis[0]) % 360.0  # the flywheel's ψ = 0: numbered position 0
     origin = WORDS(
         "phi_origin",
         phi0=fmt_fixed(phi0, angle_places([phi0, 360.0 / n]), current()),
