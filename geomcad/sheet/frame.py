@@ -398,6 +398,18 @@ def _title_form(sheet: Sheet, bx: float, by: float, lang: Lang) -> None:
 _NAME_CELL = (65.0, 15.0, 135.0, 40.0)
 
 
+def name_fits(name: str, lang: str) -> bool:
+    """Whether a sheet's name fits its title block's name cell (графа 1 of GOST 2.104, the
+    ISO 7200 block's title field) at some GOST height, as :func:`fit_text` writes it."""
+    x0, y0, x1, y1 = next(f[1:] for f in ISO_FIELDS if f[0] == "iso_title")
+    cell = _NAME_CELL if lang == "ru" else (x0, y0, x1, y1)
+    try:
+        fit_text(Sheet(1.0, 1.0, "A4", ""), name, cell, 5.0, clear=True)
+    except ParameterError:
+        return False
+    return True
+
+
 def _title_fill(sheet: Sheet, bx: float, by: float, tb: TitleBlock, title_h: float = 5.0) -> None:
     """Fill form 1's cells (lower-left corner at sheet point (bx, by)) from ``tb``, the sheet's
     name at most ``title_h`` high (the height the whole document's names share)."""

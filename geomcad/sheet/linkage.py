@@ -53,7 +53,7 @@ from geomcad.sheet.compose import (
     Layout as Arranged,
 )
 from geomcad.sheet.drawing import SHORT_MM, Viewport
-from geomcad.sheet.frame import FORMATS, text_at
+from geomcad.sheet.frame import FORMATS, name_fits, text_at
 from geomcad.sheet.lang import Words, current, per_language
 from geomcad.sheet.model import ArcItem, CircleItem, Polyline
 from geomcad.sheet.motion import Frames, turn
@@ -404,7 +404,7 @@ def _title(
     lk: Linkage, what: str, designation: str, k: Scale | None, no: int, count: int
 ) -> TitleBlock:
     return TitleBlock(
-        title=f"{what}. {file_title(lk)}" if 0 < len(file_title(lk)) < 40 else what,
+        title=sheet_name(lk, what),
         designation=designation,
         scale=k.ratio_text() if k is not None else "",
         sheet_no=no,
@@ -416,6 +416,16 @@ def _title(
 #: Letters of another script than the language's: a file's title in them stays off its sheets
 #: (Cyrillic on an English sheet).
 _FOREIGN = {"en": re.compile(f"[{chr(0x400)}-{chr(0x4FF)}]")}
+
+
+def sheet_name(lk: Linkage, what: str) -> str:
+    """A sheet's name in its title block: what it draws and the file's title ("Силовой
+    анализ. Шестизвенный механизм вертикального пресса"), or what it draws alone where the
+    title is not in the sheet's language or the two do not fit the name's cell at any GOST
+    height (:func:`~geomcad.sheet.frame.name_fits`)."""
+    name = file_title(lk)
+    full = f"{what}. {name}"
+    return full if name and name_fits(full, current()) else what
 
 
 def file_title(lk: Linkage) -> str:

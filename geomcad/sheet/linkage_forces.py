@@ -84,7 +84,6 @@ from geomcad.sheet.linkage import (
     TEXT_H,
     TITLE_H,
     ZERO,
-    file_title,
     fit,
     frame_guides,
     link_bodies,
@@ -93,6 +92,7 @@ from geomcad.sheet.linkage import (
     position_marks,
     row_height,
     sheet_formats,
+    sheet_name,
     table_number,
 )
 from geomcad.sheet.linkage import WORDS as KIN_WORDS
@@ -293,7 +293,7 @@ def _crank_kept(lay: Layout) -> bool:
 
 def _title(lk: Linkage, what: str, designation: str, no: int, count: int) -> TitleBlock:
     return TitleBlock(
-        title=f"{what}. {file_title(lk)}" if 0 < len(file_title(lk)) < 40 else what,
+        title=sheet_name(lk, what),
         designation=designation,
         sheet_no=no,
         sheets=count,
