@@ -118,6 +118,10 @@ def test_one_length_scale_for_the_mechanism_and_one_for_its_groups(
     lk = s.linkage  # type: ignore[attr-defined]
     if groups[0].scale != main:
         assert lk.length / main.k >= CRANK_MM * 0.999
+        # and the groups at least GROUPS_SHARE of the mechanism's size (1:5 beside 1:2.5; the
+        # teacher checks the free bodies on them)
+        assert groups[0].scale is not None
+        assert main.k / groups[0].scale.k >= lf.GROUPS_SHARE * 0.999, (main, groups[0].scale)
 
 
 @pytest.mark.parametrize("path", FILES, ids=[p.stem for p in FILES])
