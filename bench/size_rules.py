@@ -1,9 +1,9 @@
 """The linkage sheets' size rules, file by file (run on demand): the crank's drawn length on the
 kinematic sheet's mechanism (rule: at least ``CRANK_MM``), the velocity plans' pa (at least
 ``PA_MM``), the format and the tables' text height; then, for a file with masses or loads, the
-forces sheet's: its format, the crank on its mechanism (at least ``CRANK_MM`` where the sweep
-allows it), the μ_l of the mechanism and of its groups cut out, the smallest force polygon's
-larger side and the tables' text height.
+forces sheet's: its format, the crank on its mechanism and cut out (at least ``CRANK_MM`` where
+the sweep allows it), the μ_l of the mechanism and of its groups cut out, the smallest force
+polygon's larger side and the tables' text height.
 
     python3 bench/size_rules.py [FILE.toml …]   (default: every examples/*.toml with a linkage)
 """
@@ -57,7 +57,9 @@ def _forces(s: object) -> bool:
     lk = s.linkage  # type: ignore[attr-defined]
     placed = list(z.layout)
     (mech,) = [pl for pl in placed if isinstance(pl.view, lf._Loaded)]
-    groups = {pl.scale.ratio_text() for pl in placed if isinstance(pl.view, lf._FreeBody)}
+    groups = {pl.scale.ratio_text() for pl in placed
+              if isinstance(pl.view, lf._FreeBody) and pl.view.gf.group is not None}  # fmt: skip
+    (cut,) = [pl for pl in placed if isinstance(pl.view, lf._FreeBody) and pl.view.gf.group is None]
     sides = [
         max(e[2] - e[0], e[3] - e[1]) / pl.scale.k
         for pl in placed
@@ -66,9 +68,11 @@ def _forces(s: object) -> bool:
     hs = sorted({v.height for v in kin._views(tree) if hasattr(v, "height")})
     crank = lk.length / mech.scale.k
     wanted = lf.sweep_mm(s, lf.crank_scale(lk).k) <= lf.SWEEP_MAX_MM  # type: ignore[arg-type]
-    ok = (crank >= kin.CRANK_MM - 0.05 or not wanted) and len(groups) == 1
+    cut_mm = lk.length / cut.scale.k
+    ok = (min(crank, cut_mm) >= kin.CRANK_MM - 0.05 or not wanted) and len(groups) == 1
     print(f"{'  forces':24s} {z.fmt:6s} crank {crank:6.1f} mm ({mech.scale.ratio_text():6s})"
-          f" groups {'/'.join(sorted(groups)):6s} polygons ≥ {min(sides, default=0):5.1f} mm"
+          f" groups {'/'.join(sorted(groups)):6s} crank cut out {cut_mm:5.1f} mm"
+          f" polygons ≥ {min(sides, default=0):5.1f} mm"
           f"  text {hs}  {'ok' if ok else 'RULE BROKEN'}"
           f"{'' if wanted else ' (crank: the sweep forbids 30 mm)'}")  # fmt: skip
     return ok

@@ -3,7 +3,8 @@
 Every example with masses or loads is drawn through :func:`force_sheets` with the layout
 recorded, and checked as a teacher checks the sheet: one μ_l for the mechanism and its cut-out
 groups (or one stated μ_l shared by all the groups), the title block's Масштаб the mechanism's,
-the crank at least CRANK_MM long where the mechanism's sweep allows it, the force polygons at
+the crank at least CRANK_MM long where the mechanism's sweep allows it (on the mechanism and
+cut out: the crank cut out at the mechanism's μ_l), the force polygons at
 least POLY_MM across on the smaller format, and no large part of the field left empty (no
 empty rectangle of a quarter of it).
 """
@@ -100,8 +101,14 @@ def test_one_length_scale_for_the_mechanism_and_one_for_its_groups(
     assert len(mech) == 1 and bodies
     main = mech[0].scale
     assert main is not None
-    # the groups and the crank share one μ_l: the mechanism's, or one of their own
-    assert len({pl.scale for pl in bodies}) == 1, [pl.scale for pl in bodies]
+    # the groups share one μ_l: the mechanism's, or one of their own; the crank cut out is at
+    # the mechanism's where that keeps it CRANK_MM long (else at the groups')
+    groups = [pl for pl in bodies if pl.view.gf.group is not None]  # type: ignore[attr-defined]
+    (crank,) = [pl for pl in bodies if pl.view.gf.group is None]  # type: ignore[attr-defined]
+    assert len({pl.scale for pl in groups}) == 1, [pl.scale for pl in groups]
+    assert crank.scale in (main, groups[0].scale)
+    if lf.sweep_mm(s, lf.crank_scale(s.linkage).k) <= lf.SWEEP_MAX_MM:  # type: ignore[attr-defined]
+        assert crank.scale == main
     # each view states its μ_l in its caption (the sheet says so next to each view)
     for pl in [*mech, *bodies]:
         assert pl.scale is not None
@@ -109,8 +116,12 @@ def test_one_length_scale_for_the_mechanism_and_one_for_its_groups(
     assert sheet.block is not None and sheet.block.scale == main.ratio_text()
     # never coarser than the shared scale where the crank keeps its length with it
     lk = s.linkage  # type: ignore[attr-defined]
-    if bodies[0].scale != main:
+    if groups[0].scale != main:
         assert lk.length / main.k >= CRANK_MM * 0.999
+        # and the groups at least GROUPS_SHARE of the mechanism's size (1:5 beside 1:2.5; the
+        # teacher checks the free bodies on them)
+        assert groups[0].scale is not None
+        assert main.k / groups[0].scale.k >= lf.GROUPS_SHARE * 0.999, (main, groups[0].scale)
 
 
 @pytest.mark.parametrize("path", FILES, ids=[p.stem for p in FILES])
@@ -148,8 +159,8 @@ def test_polygons_on_the_smaller_format_are_drawn_large(
 def test_a_larger_format_only_where_the_smaller_one_fails_the_rules(path: Path) -> None:
     """The views grow (and the groups take a μ_l of their own) before a larger format is
     taken: where the forces sheet is A1, no arrangement on A2 keeps its rules (the crank, the
-    polygons' size, the groups at least half the mechanism's size), whichever μ_l the groups
-    take and whichever text height."""
+    polygons' size with their details, the groups at least half the mechanism's size),
+    whichever μ_l the groups take and whichever text height."""
     from geomcad.sheet import formats
     from geomcad.sheet.linkage import _on
 
@@ -166,9 +177,10 @@ def test_a_larger_format_only_where_the_smaller_one_fails_the_rules(path: Path) 
                 continue
             lay = on[1].layout
             reached = formats.meets(lay, wants)
-            assert not (lay.fits and reached and lf._crank_kept(lay) and lf._groups_kept(lay)), (
-                shared,
-                h,
-            )
+            if lay.fits and reached and lf._crank_kept(lay) and lf._groups_kept(lay):
+                # the polygons drawn with their details (at the μ_F they got there) must then
+                # break a rule on A2: their size, the crank's or the groups'
+                _found, kept = lf._final2(s, P, forces, k, on[1], shared, "A1")
+                assert not kept, (shared, h)
             if not reached:
                 break  # as linkage.fit: the smaller text is tried only where the scales hold

@@ -1014,12 +1014,13 @@ class _Solver:
         return done
 
     def _laid_get(self, choice: Mapping[int, object]) -> object:
-        """The current choices of the nodes laid out (the key of :attr:`scored`)."""
+        """The current choices of the nodes laid out, with the :class:`Choice` nodes' (the key
+        of :attr:`scored`: two arrangements whose nodes' splits read alike are two layouts)."""
         which = tuple(choice[i] for i in self._choices)
         get = self._laid_getters.get(which)
         if get is None:
             get = self._laid_getters[which] = _getter(self._laid())
-        return get(choice)
+        return which, get(choice)
 
     def _laid(self) -> list[int]:
         """The ids of the nodes :meth:`_active` yields, found once per choice of the

@@ -24,7 +24,11 @@ composition (:func:`force_layout`, issue 27):
 - one μ_l for the mechanism and its groups and crank cut out (one scale group, stated in every
   caption; the title block's Масштаб is the mechanism's), or, where the crank would then be
   shorter than :data:`~geomcad.sheet.linkage.CRANK_MM` or a smaller format would do, one μ_l of
-  the groups' own, shared by all of them and at least half the mechanism's size;
+  the groups' own, shared by all of them and at least half the mechanism's size; the crank cut
+  out keeps the mechanism's μ_l where that draws it CRANK_MM long;
+- the groups and the crank cut out beside the mechanism (or over the polygons) in one band
+  packed by their sizes (:func:`_band`), or each group over its polygons; the table and the
+  order beside the polygons, or down the right edge over the title block;
 - the drawings of links never finer than :func:`links_scale` (the geometry alone: ω and the
   loads rescale none of them), the crank at least CRANK_MM long where the mechanism's sweep
   allows it (:data:`SWEEP_MAX_MM`);
@@ -73,6 +77,7 @@ from geomcad.sheet.compose import (
     arrange,
     compose,
 )
+from geomcad.sheet.compose import _title_width as title_width
 from geomcad.sheet.drawing import SHORT_MM, Viewport
 from geomcad.sheet.frame import FORMATS
 from geomcad.sheet.graph import Axis, Graph
@@ -84,6 +89,7 @@ from geomcad.sheet.linkage import (
     TEXT_H,
     TITLE_H,
     ZERO,
+    _on,
     fit,
     frame_guides,
     link_bodies,
@@ -224,19 +230,49 @@ def _compose2(
         return FORMATS[fmt][0] * FORMATS[fmt][1]
 
     order = sorted(fmts, key=area)
-    shared = True
-    tree, z = fit(lambda h: make(h, True), order)
+    _tree, z = fit(lambda h: make(h, True), order)
     ok = reached(z)
+    own: formats.Sized | None = None
     if not ok or z.fmt != order[0]:
         smaller = [fm for fm in order if area(fm) < area(z.fmt)] if ok else order
         if smaller:
-            tree2, z2 = fit(lambda h: make(h, False), smaller)
-            if reached(z2) or (not ok and _crank_kept(z2.layout)):
-                shared, tree, z = False, tree2, z2
+            # (the format taken last in the list: fit tries the smaller ones with the scales
+            # sought, as on any but the largest)
+            _tree2, z2 = fit(lambda h: make(h, False), [*smaller, z.fmt] if ok else smaller)
+            if (reached(z2) and (not ok or z2.fmt != z.fmt)) or (not ok and _crank_kept(z2.layout)):
+                own = z2
+    if own is not None:
+        found, kept = _final2(s, P, f, k, own, False, order[-1])
+        if kept or not ok:
+            return found
+    found, kept = _final2(s, P, f, k, z, True, order[-1])
+    larger = [fm for fm in order if area(fm) > area(z.fmt)]
+    if kept or not larger:
+        return found
+    # the polygons' details leave the rules broken on this format: with the smaller text
+    tree_s, wants_s = _sheet2(s, P, f, k, SMALL_TEXT_H, shared=True)
+    on = _on(tree_s, wants_s, z.fmt)
+    if on is not None and on[1].layout.fits and formats.meets(on[1].layout, wants_s):
+        found, kept = _final2(s, P, f, k, on[1], True, order[-1])
+        if kept:
+            return found
+    # the polygons' details leave the rules broken on this format: the next larger one
+    _tree, z3 = fit(lambda h: make(h, True), larger)
+    return _final2(s, P, f, k, z3, True, order[-1])[0]
+
+
+def _final2(
+    s: Solved, P: Position, f: Forces, k: int | None, z: formats.Sized, shared: bool,
+    largest: str,
+) -> tuple[tuple[Tree, formats.Sized], bool]:  # fmt: skip
+    """Sheet 2 on the format of ``z`` with its polygons' details reckoned at the μ_F each got
+    there (see :func:`_compose2`), and whether it keeps the rules (where it does not on a format
+    smaller than the largest, the caller takes the larger format found first)."""
     refs = {pl.view.title: (pl.scale.k, pl.size) for pl in z.layout
             if isinstance(pl.view, Polygon) and pl.scale}  # fmt: skip
     field = Field.of_format(z.fmt, z.landscape)
     tried: list[tuple[Tree, formats.Sized]] = []
+    rules: list[bool] = []
     good: list[bool] = []
     for h in (TEXT_H, SMALL_TEXT_H):
         tree, w = _sheet2(s, P, f, k, h, refs, shared)
@@ -245,8 +281,9 @@ def _compose2(
         # on a smaller format than the largest, its polygons POLY_MM across as it was chosen
         # for (their details take some of their room: where neither text keeps them, the
         # smaller)
-        wanted = formats.meets(lay, w) or z.fmt == order[-1]
-        good.append(lay.fits and _crank_kept(lay) and _groups_kept(lay) and wanted)
+        wanted = formats.meets(lay, w) or z.fmt == largest
+        rules.append(_crank_kept(lay) and _groups_kept(lay) and wanted)
+        good.append(lay.fits and rules[-1])
     big, small = (t[1].layout for t in tried)
     # the larger text where it keeps the rules and draws the links at the smaller text's
     # scales, or costs the views at most TEXT_COST of the search's score (as linkage.fit)
@@ -255,10 +292,12 @@ def _compose2(
         or _l_scales(big) == _l_scales(small)
         or big.score[1] >= small.score[1] - TEXT_COST
     ):
-        return tried[0]
+        return tried[0], True
     if good[1] or small.fits:
-        return tried[1]
-    return tried[0]
+        return tried[1], rules[1]
+    # neither fits: the one that keeps the rules, then the lesser overflow, then the larger text
+    i = max((0, 1), key=lambda j: (rules[j], tried[j][1].layout.score[0]))
+    return tried[i], rules[i]
 
 
 def _l_scales(lay: Layout) -> tuple[float, float]:
@@ -352,15 +391,20 @@ def _sheet2(
         v.least_k = k_l
         v.group = L_GROUP if shared else GROUPS_L
     mech.group = L_GROUP
+    # the crank cut out is at the mechanism's μ_l where that keeps the crank CRANK_MM long (a
+    # small drawing, it costs the sheet little)
+    for b in bodies:
+        if b.gf.group is None and mech.readable > 0.0:
+            b.group = L_GROUP
     # the search counts a scale group once, at its heaviest member's weight: the mechanism's
     # (2) and one for each drawing of links it draws at its scale, as each had on its own
-    if shared:
-        mech.weight = 2.0 + len(bodies)
-    else:
+    mech.weight = 2.0 + sum(b.group == L_GROUP for b in bodies)
+    if not shared:
         for b in bodies:
-            b.weight = 2.0
-            # at least GROUPS_SHARE of the mechanism's size, which is never finer than k_l
-            b.readable, b.readable_mm = lk.length, GROUPS_SHARE * lk.length / k_l
+            if b.group == GROUPS_L:
+                b.weight = 2.0
+                # at least GROUPS_SHARE of the mechanism's size, never finer than k_l
+                b.readable, b.readable_mm = lk.length, GROUPS_SHARE * lk.length / k_l
     # each group's polygons under the group cut out (the crank's under the crank); a
     # polygon's vectors too short for its μ_F are drawn again, enlarged, in details at their
     # own stated μ_F beside it in its view (one letter each on the sheet)
@@ -391,10 +435,16 @@ def _sheet2(
     order = Steps(steps, order_width(h) * 170.0 / 190.0, only=[st.name for st in steps],
                   words=WORDS, height=h, title=WORDS("order"), title_height=TITLE_H)  # fmt: skip
     right = Column(table, order)
+    # the groups cut out beside the mechanism (or over the polygons) in one band packed by
+    # their sizes, or each group over its polygons; the table and the order of the analysis
+    # beside the polygons, or down the right edge over the title block
+    k_b = max(k_l, max(sweep_box(s)) / SWEEP_MM)
+    band = _band(bodies, k_b)
     tree = Choice(
-        Column(Row(mech, Grid(*bodies)), Row(lever, Grid(*polys), right)),
-        Row(Column(mech, lever), Column(Grid(*bodies), Row(Grid(*polys), right))),
+        Column(Row(mech, band), Row(lever, Grid(*polys), right)),
+        Row(Column(mech, lever), Column(band, Row(Grid(*polys), right))),
         Column(Row(mech, lever, right), groups),
+        Row(Column(mech, lever), Column(Grid(*bodies), Grid(*polys)), right),
     )
     # the format: the smallest on which the crank is CRANK_MM long (where the sweep allows it),
     # every force polygon at least POLY_MM across and its longest vector at least PLAN_MM (a
@@ -412,6 +462,23 @@ def _sheet2(
     if mech.readable > 0.0:
         wants[mech] = lk.length / CRANK_MM
     return tree, wants
+
+
+def _band(bodies: Sequence[_FreeBody], k: float) -> Row:
+    """The groups and the crank cut out side by side, packed by their sizes at ``k`` m/mm
+    (margins and captions included): the tallest, and beside it the others one under another
+    where together they are no taller than it (a flat group and the crank beside a tall
+    group), else all in a row; each cell as wide (high) as its drawing, where equal cells would
+    leave the tall one small and the flat one empty, and at least as wide as its caption. The
+    splits are given: the search spends nothing on them."""
+    size = {id(b): (max(_side(b)[0] / k + 2.0 * b.margin, title_width(b)),
+                    _side(b)[1] / k + 2.0 * b.margin + b.title_room()) for b in bodies}  # fmt: skip
+    tall = max(bodies, key=lambda b: size[id(b)][1])
+    rest = [b for b in bodies if b is not tall]
+    if len(rest) > 1 and sum(size[id(b)][1] for b in rest) <= size[id(tall)][1]:
+        col = Column(*rest, weights=[size[id(b)][1] for b in rest])
+        return Row(tall, col, weights=[size[id(tall)][0], max(size[id(b)][0] for b in rest)])
+    return Row(*bodies, weights=[size[id(b)][0] for b in bodies])
 
 
 def _side(v: View) -> tuple[float, float]:
