@@ -403,6 +403,7 @@ def force(
     ux, uy = F.x / F.norm, -F.y / F.norm  # paper direction (y down)
     if clear is not None:
         tail, tip = clear.place(p, (ux, uy), length, arrive)
+        line_of_action(v.sheet, p, tail, tip)
     elif arrive:
         tail, tip = (p[0] - ux * length, p[1] - uy * length), p
     else:
@@ -416,6 +417,24 @@ def force(
         away = (-ux, -uy) if back else (ux, uy)
         v.d.label(end, label, height, prefer=prefer or away, clear=1.0, others=(mid,))
     return tail, tip
+
+
+def line_of_action(sheet: Sheet, p: XY, tail: XY, tip: XY) -> Polyline | None:
+    """An arrow moved along its line of action off its point of application ``p`` (sheet mm)
+    carries that line back to ``p`` as a thin solid line (GOST 2.303), from its nearer end:
+    the force reads as acting at ``p``. An arrow that reaches ``p`` (within
+    :data:`AT_POINT_MM`, a joint's circle) or runs past it draws nothing; returns the line."""
+    length = math.dist(tail, tip)
+    if length <= 0.0:
+        return None
+    u = ((tip[0] - tail[0]) / length, (tip[1] - tail[1]) / length)
+    s = (p[0] - tail[0]) * u[0] + (p[1] - tail[1]) * u[1]  # p's place along the arrow
+    if -AT_POINT_MM <= s <= length + AT_POINT_MM:
+        return None
+    end = tail if s < 0.0 else tip
+    line = Polyline((end, p), "thin")
+    sheet.add(line)
+    return line
 
 
 def moment(
