@@ -86,6 +86,9 @@ FREE = 8.0
 #: a forces sheet: a letter touching a joint's circle, an arc or a hatch reads as part of it)
 #: pays this for each line whose centre line comes within its ``keep`` of its box.
 W_KEEP = 6.0
+#: … for at most this many lines (a hatch's strokes are many lines: a letter beside the hatch
+#: pays no more than beside a joint's circle and its link).
+KEEP_LINES = 2
 
 
 @dataclass
@@ -478,7 +481,7 @@ def _candidates(
         g = keep[kept][:, None] * np.array([-1.0, -1.0, 1.0, 1.0])
         wide = shapely.box(*(shapely.bounds(core[kept]) + g).T)
         ki, _ = index.tree.query(wide, predicate="intersects")
-        base[kept] += W_KEEP * np.bincount(ki, minlength=len(kept))
+        base[kept] += W_KEEP * np.minimum(np.bincount(ki, minlength=len(kept)), KEEP_LINES)
     # the cheapest few measured exactly: the ink inside each (a line through the letters
     # against one that grazes an edge); the others wait behind them
     best = np.concatenate(
