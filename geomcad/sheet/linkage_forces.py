@@ -1123,9 +1123,15 @@ def _sig(x: float, digits: int = 4) -> str:
 
 
 def _nonzero(xs: Sequence[float], lang: str, digits: int = 4) -> list[str]:
-    """A table column (:func:`fmt_column`) in which a value that is not 0 but would print as
-    0,000 at the column's decimals is written to two significant figures instead."""
-    out = fmt_column(xs, lang, digits)
+    """A table column (:func:`fmt_column`) in which a value that is not 0 but negligible
+    beside the column's largest (under :data:`~geomcad.sheet.loads.NEGLIGIBLE` of it), or would
+    print as 0,000 at the column's decimals, is written to two significant figures instead,
+    and asks the others for no further decimals (1,353 and 0,400 beside 0,00031, not
+    1,35300)."""
+    big = max((abs(x) for x in xs), default=0.0)
+    tiny = [x != 0.0 and abs(x) < NEGLIGIBLE * big for x in xs]
+    rest = iter(fmt_column([x for x, t in zip(xs, tiny, strict=True) if not t], lang, digits))
+    out = [fmt_number(x, lang, 2) if t else next(rest) for x, t in zip(xs, tiny, strict=True)]
     return [
         fmt_number(x, lang, 2) if x != 0.0 and not any(c in "123456789" for c in t) else t
         for x, t in zip(xs, out, strict=True)
