@@ -210,3 +210,21 @@ def test_the_order_writes_each_plan_as_it_is_laid_off(
             assert eq == " + ".join(lf.load_name(x) for x in names) + " = 0", (name, eq, names)
     if name == "sixbar-2013-6":
         assert reordered >= 1  # its polygon of link 5 lays Ф_5, R_05 off first
+
+
+def test_an_arrow_arriving_at_a_slider_stops_at_its_block() -> None:
+    """A force arriving at a slider's joint ends at the block's outline, not under it (a
+    filled block hides a head drawn inside it); the arrow that misses the block is as asked."""
+    from geomcad.sheet import symbols
+    from geomcad.sheet.loads import Clearance, _inside
+
+    sheet = Sheet(200.0, 200.0, "A4", "")
+    clear = Clearance(sheet, 0, (0.0, 0.0, 200.0, 200.0))
+    symbols.block(sheet, (100.0, 100.0), (1.0, 0.0), size=(30.0, 30.0))  # a head fits inside
+    (shape,) = clear.solids()
+    tail, tip = clear.place((100.0, 100.0), (0.0, 1.0), 15.0, True)  # down onto the block
+    head = np.array([tip, (tip[0], tip[1] - ARROW_LEN)])
+    assert not _inside(head, [shape]).any(), tip
+    assert tip[1] < 100.0 and math.isclose(tip[1] - tail[1], 15.0)
+    assert _inside(np.array([(100.0, 100.0), (150.0, 100.0)]), [shape]).tolist() == [True, False]
+    assert 100.0 - 15.0 - 4.0 <= tip[1] <= 100.0 - 15.0  # at the outline, not far from it

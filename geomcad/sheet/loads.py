@@ -285,6 +285,15 @@ class Clearance:
         self._segments = (len(items), found)
         return found
 
+    def solids(self) -> list[npt.NDArray[np.float64]]:
+        """The filled shapes (k, 2) drawn from ``start`` on that are not arrowheads: the
+        blocks of sliders, which hide what is drawn inside them."""
+        return [
+            np.array(it.points, dtype=float)
+            for it in self.sheet.items[self.start :]
+            if isinstance(it, Polyline) and it.fill and it.closed and len(it.points) > 3
+        ]
+
     def place(self, p: XY, u: XY, length: float, arrive: bool) -> tuple[XY, XY]:
         """The (tail, tip) in sheet mm of an arrow ``length`` mm long along the paper unit
         direction ``u`` on the line through ``p``: the cheapest place by the costs above
@@ -332,8 +341,14 @@ class Clearance:
         slide = np.arange(0.0, reach + _STEP, 1.0)
         S = np.array(sorted({0.0, -length, *slide, *(-length - slide)}))
         E = S + length
+        # a head inside a filled shape (a slider's block) is hidden under it: its tip and
+        # its base outside every one
+        ends = np.concatenate([E, E - ARROW_LEN])
+        hidden = _inside(np.column_stack([p[0] + ends * u[0], p[1] + ends * u[1]]), self.solids())
+        hidden = hidden[: len(E)] | hidden[len(E) :]
         cost = (
-            _W_LINE * run("line", S, E)
+            _W_HEAD * 2.0 * ARROW_LEN * hidden
+            + _W_LINE * run("line", S, E)
             + _W_HEAD * run("head", E - ARROW_LEN, E)
             + _W_OUT * run("out", S, E)
             + _W_OUT * run("arrow", S, E)
@@ -348,6 +363,20 @@ class Clearance:
         tail = (p[0] + u[0] * s, p[1] + u[1] * s)
         tip = (p[0] + u[0] * (s + length), p[1] + u[1] * (s + length))
         return best[0], tail, tip
+
+
+def _inside(pts: npt.NDArray[np.float64], shapes: list[npt.NDArray[np.float64]]) -> Any:
+    """Which points (m, 2) lie inside one of the closed ``shapes`` (each (k, 2)), by the
+    crossings of a ray from each point."""
+    out = np.zeros(len(pts), dtype=bool)
+    x, y = pts[:, 0:1], pts[:, 1:2]
+    for q in shapes:
+        a, b = q, np.roll(q, -1, axis=0)
+        up = (a[:, 1] > y) != (b[:, 1] > y)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            cx = a[:, 0] + (y - a[:, 1]) * (b[:, 0] - a[:, 0]) / (b[:, 1] - a[:, 1])
+        out |= (np.count_nonzero(up & (x < cx), axis=1) % 2) == 1
+    return out
 
 
 def _near_line(segs: npt.NDArray[np.float64], p: XY, u: XY) -> npt.NDArray[np.float64]:
