@@ -70,7 +70,7 @@ BASELINE: dict[tuple[str, str], dict[str, int]] = {
     # cut, the rod 4 nearly along the guide); issue 27: the short forces at the slider D are
     # arrows at μ_F* … (they were dots): the letters 4, D, 5 by the crowded slider land 7–9 mm
     # off, on the mechanism and on group (4, 5)
-    ("linkage-shaper", "forces"): {"anchor": 4, "empty": 1},
+    ("linkage-shaper", "forces"): {"anchor": 5, "empty": 1},
     ("linkage-shaper", "dynamics"): {"empty": 1},
     # the twelve numbered positions drawn beside the file's phi: B's labels crowd near the
     # rocker's extreme (7 … 11 mm)

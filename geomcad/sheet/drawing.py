@@ -113,6 +113,10 @@ class Drawing:
     #: Fixed texts that may be left out (a diagram's tick values): :meth:`finish` drops each one
     #: a line crosses.
     optional: list[TextItem] = field(default_factory=list)
+    #: The clearance (mm) the labels asked for now keep from every line's centre line where
+    #: they can (:attr:`LabelRequest.keep`), and at least as much further from other texts
+    #: (``space``: "1" beside "O" reads "10"): a view sets it while it draws (0: the placer's).
+    keep: float = 0.0
 
     def viewport(self, scale: Scale, origin: PointLike, at: XY) -> Viewport:
         """A viewport that puts model point ``origin`` at sheet point ``at``."""
@@ -152,8 +156,9 @@ class Drawing:
     ) -> None:
         """Ask for a label next to a sheet point (or one of ``others``); :meth:`finish` places
         it, ``space`` mm further than usual from other texts."""
+        space = max(space, self.keep)
         self.pending.append(
-            LabelRequest(anchor, markup, height, role, prefer, clear, id, others, space)
+            LabelRequest(anchor, markup, height, role, prefer, clear, id, others, space, self.keep)
         )
 
     def table(

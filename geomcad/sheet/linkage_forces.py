@@ -132,6 +132,11 @@ LOAD_MM = 24.0
 #: The radius (mm) of M_ур's arc about the crank's pivot: clear of the support's stand and
 #: hatching (symbols.STAND_DEPTH + HATCH_LEN) round the pivot.
 M_BAL_MM = symbols.STAND_DEPTH + symbols.HATCH_LEN + 3.0
+#: How far (mm) the labels of a drawing of links on the forces sheet keep from the centre
+#: lines of its links, joints, hatching, arcs and arrows where they can (about half a mm of
+#: paper between a letter and a main line's ink): no letter touching a joint's circle, an
+#: arc or a hatch (:attr:`~geomcad.sheet.placer.LabelRequest.keep`).
+LABEL_KEEP_MM = 1.0
 #: The room (mm) an arrow's label takes past its tip.
 LABEL_ROOM_MM = 6.0
 #: The longest load arrow on Zhukovsky's lever (mm).
@@ -431,7 +436,10 @@ def _sheet2(
     if mech.short or lever.short or any(b.short for b in bodies):
         note = WORDS("short", mm=fmt_number(SHORT_MM))
         table = Column(table, Text(paragraph=note, width=TABLE2_W * h / 2.5, height=h))
-    steps = order_steps(f)
+    # the order's equation of each plan lists its terms as the plan lays them off
+    drawn = {name: p.layers[-1][0] for gf, ps in zip(f.groups, per_group, strict=True)
+             for (name, _), p in zip(gf.polygons, ps, strict=True)}  # fmt: skip
+    steps = order_steps(f, drawn)
     order = Steps(steps, order_width(h) * 170.0 / 190.0, only=[st.name for st in steps],
                   words=WORDS, height=h, title=WORDS("order"), title_height=TITLE_H)  # fmt: skip
     right = Column(table, order)
@@ -537,16 +545,37 @@ def crank_scale(lk: Linkage) -> Scale:
     return Scale(max(fits) if fits else min(GOST_K), "l")
 
 
-def order_steps(f: Forces) -> list[Step]:
+def order_steps(f: Forces, drawn: Mapping[str, ForcePolygon] | None = None) -> list[Step]:
     """The steps of the order of the kinetostatic analysis (:attr:`Forces.order`: the loads,
     the groups from the last, the crank, Zhukovsky's lever), their operands in the language
-    drawn (the inertia force's letter)."""
+    drawn (the inertia force's letter). ``drawn``: the force plans as the sheet lays them off,
+    by their steps' names (a plan's known loads may be laid off in another order than the
+    model's, :func:`~geomcad.sheet.views.regroup`): each plan's equation then lists its terms
+    in that order, so that it reads along the plan (:func:`plan_equation`)."""
     out = []
     for name in f.order:
         st = f.c.step(name)
-        args = tuple((k, load_name(a) if isinstance(a, str) else a) for k, a in st.args)
+        poly = (drawn or {}).get(name)
+        args = tuple(
+            (k, load_name(plan_equation(st, poly) if k == "eq" and poly else a))
+            if isinstance(a, str)
+            else (k, a)
+            for k, a in st.args
+        )
         out.append(replace(st, args=args))
     return out
+
+
+def plan_equation(st: Step, poly: ForcePolygon) -> str:
+    """The equation ΣF = 0 of the force plan step ``st`` with its terms in the order the plan
+    ``poly`` lays them off: the recorded one where the plan keeps the model's order (a sum
+    ΣF_5 written as such), else each vector's name in the plan's order."""
+    eq = str(dict(st.args)["eq"])
+    recorded = st.result.vectors if isinstance(st.result, ForcePolygon) else ()
+    names = [pv.name for pv in poly.vectors]
+    if names == [pv.name for pv in recorded]:
+        return eq
+    return " + ".join(names) + " = 0"
 
 
 def load_name(name: str) -> str:
@@ -708,6 +737,18 @@ class _Forces(View):
     def caption(self, scale: Scale | None) -> str:
         return f"{super().caption(scale)};  {self.fs.caption()}"
 
+    def draw(self, d: Drawing, at: Placed) -> None:
+        """The drawing of links (:meth:`links`), its labels clear of its lines by
+        :data:`LABEL_KEEP_MM` where they can."""
+        keep, d.keep = d.keep, LABEL_KEEP_MM
+        try:
+            self.links(d, at)
+        finally:
+            d.keep = keep
+
+    def links(self, d: Drawing, at: Placed) -> None:
+        raise NotImplementedError
+
 
 class _Loaded(_Forces):
     """The mechanism in the force position with every load drawn at its μ_F."""
@@ -723,7 +764,7 @@ class _Loaded(_Forces):
         self.fs = force_tiers([F for _, F in named], LOAD_MM)
         self.omitted = left_out(self.fs, named)
 
-    def draw(self, d: Drawing, at: Placed) -> None:
+    def links(self, d: Drawing, at: Placed) -> None:
         v = at.viewport
         assert v is not None
         draw_further(d, at, self, self.fs, self.omitted)
@@ -765,7 +806,7 @@ class _FreeBody(_Forces):
         self.fs = force_tiers([F for _, F in named], LOAD_MM)
         self.omitted = left_out(self.fs, named)
 
-    def draw(self, d: Drawing, at: Placed) -> None:
+    def links(self, d: Drawing, at: Placed) -> None:
         v = at.viewport
         assert v is not None
         draw_further(d, at, self, self.fs, self.omitted)
@@ -1149,9 +1190,15 @@ def _sig(x: float, digits: int = 4) -> str:
 
 
 def _nonzero(xs: Sequence[float], lang: str, digits: int = 4) -> list[str]:
-    """A table column (:func:`fmt_column`) in which a value that is not 0 but would print as
-    0,000 at the column's decimals is written to two significant figures instead."""
-    out = fmt_column(xs, lang, digits)
+    """A table column (:func:`fmt_column`) in which a value that is not 0 but negligible
+    beside the column's largest (under :data:`~geomcad.sheet.loads.NEGLIGIBLE` of it), or would
+    print as 0,000 at the column's decimals, is written to two significant figures instead,
+    and asks the others for no further decimals (1,353 and 0,400 beside 0,00031, not
+    1,35300)."""
+    big = max((abs(x) for x in xs), default=0.0)
+    tiny = [x != 0.0 and abs(x) < NEGLIGIBLE * big for x in xs]
+    rest = iter(fmt_column([x for x, t in zip(xs, tiny, strict=True) if not t], lang, digits))
+    out = [fmt_number(x, lang, 2) if t else next(rest) for x, t in zip(xs, tiny, strict=True)]
     return [
         fmt_number(x, lang, 2) if x != 0.0 and not any(c in "123456789" for c in t) else t
         for x, t in zip(xs, out, strict=True)

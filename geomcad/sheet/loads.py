@@ -285,6 +285,15 @@ class Clearance:
         self._segments = (len(items), found)
         return found
 
+    def solids(self) -> list[npt.NDArray[np.float64]]:
+        """The filled shapes (k, 2) drawn from ``start`` on that are not arrowheads: the
+        blocks of sliders, which hide what is drawn inside them."""
+        return [
+            np.array(it.points, dtype=float)
+            for it in self.sheet.items[self.start :]
+            if isinstance(it, Polyline) and it.fill and it.closed and len(it.points) > 3
+        ]
+
     def place(self, p: XY, u: XY, length: float, arrive: bool) -> tuple[XY, XY]:
         """The (tail, tip) in sheet mm of an arrow ``length`` mm long along the paper unit
         direction ``u`` on the line through ``p``: the cheapest place by the costs above
@@ -332,8 +341,14 @@ class Clearance:
         slide = np.arange(0.0, reach + _STEP, 1.0)
         S = np.array(sorted({0.0, -length, *slide, *(-length - slide)}))
         E = S + length
+        # a head inside a filled shape (a slider's block) is hidden under it: its tip and
+        # its base outside every one
+        ends = np.concatenate([E, E - ARROW_LEN])
+        hidden = _inside(np.column_stack([p[0] + ends * u[0], p[1] + ends * u[1]]), self.solids())
+        hidden = hidden[: len(E)] | hidden[len(E) :]
         cost = (
-            _W_LINE * run("line", S, E)
+            _W_HEAD * 2.0 * ARROW_LEN * hidden
+            + _W_LINE * run("line", S, E)
             + _W_HEAD * run("head", E - ARROW_LEN, E)
             + _W_OUT * run("out", S, E)
             + _W_OUT * run("arrow", S, E)
@@ -348,6 +363,20 @@ class Clearance:
         tail = (p[0] + u[0] * s, p[1] + u[1] * s)
         tip = (p[0] + u[0] * (s + length), p[1] + u[1] * (s + length))
         return best[0], tail, tip
+
+
+def _inside(pts: npt.NDArray[np.float64], shapes: list[npt.NDArray[np.float64]]) -> Any:
+    """Which points (m, 2) lie inside one of the closed ``shapes`` (each (k, 2)), by the
+    crossings of a ray from each point."""
+    out = np.zeros(len(pts), dtype=bool)
+    x, y = pts[:, 0:1], pts[:, 1:2]
+    for q in shapes:
+        a, b = q, np.roll(q, -1, axis=0)
+        up = (a[:, 1] > y) != (b[:, 1] > y)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            cx = a[:, 0] + (y - a[:, 1]) * (b[:, 0] - a[:, 0]) / (b[:, 1] - a[:, 1])
+        out |= (np.count_nonzero(up & (x < cx), axis=1) % 2) == 1
+    return out
 
 
 def _near_line(segs: npt.NDArray[np.float64], p: XY, u: XY) -> npt.NDArray[np.float64]:
@@ -403,6 +432,7 @@ def force(
     ux, uy = F.x / F.norm, -F.y / F.norm  # paper direction (y down)
     if clear is not None:
         tail, tip = clear.place(p, (ux, uy), length, arrive)
+        line_of_action(v.sheet, p, tail, tip)
     elif arrive:
         tail, tip = (p[0] - ux * length, p[1] - uy * length), p
     else:
@@ -416,6 +446,24 @@ def force(
         away = (-ux, -uy) if back else (ux, uy)
         v.d.label(end, label, height, prefer=prefer or away, clear=1.0, others=(mid,))
     return tail, tip
+
+
+def line_of_action(sheet: Sheet, p: XY, tail: XY, tip: XY) -> Polyline | None:
+    """An arrow moved along its line of action off its point of application ``p`` (sheet mm)
+    carries that line back to ``p`` as a thin solid line (GOST 2.303), from its nearer end:
+    the force reads as acting at ``p``. An arrow that reaches ``p`` (within
+    :data:`AT_POINT_MM`, a joint's circle) or runs past it draws nothing; returns the line."""
+    length = math.dist(tail, tip)
+    if length <= 0.0:
+        return None
+    u = ((tip[0] - tail[0]) / length, (tip[1] - tail[1]) / length)
+    s = (p[0] - tail[0]) * u[0] + (p[1] - tail[1]) * u[1]  # p's place along the arrow
+    if -AT_POINT_MM <= s <= length + AT_POINT_MM:
+        return None
+    end = tail if s < 0.0 else tip
+    line = Polyline((end, p), "thin")
+    sheet.add(line)
+    return line
 
 
 def moment(

@@ -82,6 +82,13 @@ W_OTHER = 0.5
 AREA_EPS = 0.02
 #: A position this cheap is free (no line, no text); the labels with fewest such go first.
 FREE = 8.0
+#: A label that asks to keep clear of lines (:attr:`LabelRequest.keep`, a drawing of links on
+#: a forces sheet: a letter touching a joint's circle, an arc or a hatch reads as part of it)
+#: pays this for each line whose centre line comes within its ``keep`` of its box.
+W_KEEP = 6.0
+#: … for at most this many lines (a hatch's strokes are many lines: a letter beside the hatch
+#: pays no more than beside a joint's circle and its link).
+KEEP_LINES = 2
 
 
 @dataclass
@@ -97,6 +104,7 @@ class LabelRequest:
     id: str
     others: tuple[XY, ...] = ()  # further anchors to try, each at a small extra cost
     space: float = 0.0  # mm kept from other texts beyond PAD (labels that must read apart)
+    keep: float = 0.0  # mm kept from every line's centre line where it can (W_KEEP a line)
 
 
 @dataclass
@@ -466,6 +474,14 @@ def _candidates(
             hit = np.isfinite(dq)
             base[hit] += W_AMBIGUOUS * np.clip(d[hit] + clear[hit] - dq[hit], 0.0, 2.0)
     base += index.cost(boxes, texts=False)
+    keep = np.array([r.keep for r in requests], dtype=np.float64)[who]
+    kept = np.flatnonzero(keep > 0.0)
+    if len(kept):
+        # the labels that keep clear of lines: each line near their box (its ink touching it)
+        g = keep[kept][:, None] * np.array([-1.0, -1.0, 1.0, 1.0])
+        wide = shapely.box(*(shapely.bounds(core[kept]) + g).T)
+        ki, _ = index.tree.query(wide, predicate="intersects")
+        base[kept] += W_KEEP * np.minimum(np.bincount(ki, minlength=len(kept)), KEEP_LINES)
     # the cheapest few measured exactly: the ink inside each (a line through the letters
     # against one that grazes an edge); the others wait behind them
     best = np.concatenate(
