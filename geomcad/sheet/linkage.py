@@ -12,7 +12,10 @@ every vector is drawn at the stated μ. Its words come from ``strings/<lang>/lin
 The format is chosen by the content (:mod:`geomcad.sheet.formats`): the smaller of
 :data:`SIZES` on which the crank is drawn at least :data:`CRANK_MM` long and the velocity plans'
 crank vector pa at least :data:`PA_MM` (a file with few positions, a small mechanism: A2), else
-A1; a file's ``[sheet] format`` overrides it. Tables, orders and notes are written
+A1; a file's ``[sheet] format`` overrides it. Where the largest format's arrangement breaks
+either rule, the search seeks the rules' scales (:func:`~geomcad.sheet.compose.View`'s
+``most_k``): on one sheet, else with the crank on its detail view, else with the velocity plans
+on a sheet of their own (:func:`_rules_hold`). Tables, orders and notes are written
 :data:`TEXT_H` high on A2 and A1 (2.5 mm, GOST 2.304's least, on a smaller format the file
 asks for), the views' titles 5 mm.
 """
@@ -48,6 +51,7 @@ from geomcad.sheet.compose import (
     View,
     arrange,
     compose,
+    round_scale_down,
 )
 from geomcad.sheet.compose import (
     Layout as Arranged,
@@ -209,15 +213,20 @@ def _accel_positions(s: Solved) -> tuple[Position, ...]:
 
 
 def _trees(
-    s: Solved, accel: Sequence[Position], h: float = TEXT_H, enlarge: bool = False
-) -> tuple[tuple[Tree, ...], _Mechanism, bool, dict[View, float]]:
+    s: Solved, accel: Sequence[Position], h: float = TEXT_H, enlarge: bool = False,
+    rules: tuple[bool, bool] = (False, False), apart: bool = False,
+) -> tuple[tuple[Tree, ...], _Mechanism, bool, dict[View, float]]:  # fmt: skip
     """The sheets' view trees (see the module's docstring), tables and orders written ``h``
     high, and the scales (model units per mm) the format is chosen to reach: the mechanism's
     and the velocity plans'. ``enlarge``: the crank in its positions enlarged beside the
-    mechanism (:class:`_CrankDetail`), where the mechanism's scale leaves it short."""
+    mechanism (:class:`_CrankDetail`), where the mechanism's scale leaves it short. ``rules``
+    (the crank's, pa's): the search on every format seeks that rule's scale (the coarsest of
+    its series that keeps it: a view's ``most_k``), its room missing counted as a cost.
+    ``apart``: the velocity plans on a sheet of their own (as with more than
+    :data:`PLANS_ON_SHEET` positions)."""
     lk = s.linkage
     n = len(s.drawn)
-    second = n > PLANS_ON_SHEET
+    second = apart or n > PLANS_ON_SHEET
     mech = _Mechanism(s)
     crank: _CrankDetail | None = None
     if enlarge:
@@ -272,9 +281,23 @@ def _trees(
         wants[crank] = lk.length / CRANK_MM
     for view in vviews:  # one scale for them all: each needs its room at it
         wants[view] = abs(lk.omega) * lk.length / PA_MM
+    if rules[0]:
+        cv: View = mech if crank is None else crank
+        cv.most_k = round_scale_down(lk.length / CRANK_MM, "l", cv.series).k
+    if rules[1]:
+        for view in vviews:
+            view.most_k = round_scale_down(wants[view], view.quantity, view.series).k
     if second:
-        trees = (Column(mech_node(), Row(diagrams, aplans, Column(tables, order))), vplans)
-        return trees, mech, True, wants
+        first: Tree = Column(mech_node(), Row(diagrams, aplans, Column(tables, order)))
+        if apart and n <= PLANS_ON_SHEET:
+            # the plans moved to their own sheet for their size: a tall mechanism may take
+            # the first sheet's whole height
+            first = Choice(
+                first,
+                Row(mech_node(), Column(diagrams, Row(aplans, Column(tables, order)))),
+                Row(Column(mech_node(), diagrams), aplans, Column(tables, order)),
+            )
+        return (first, vplans), mech, True, wants
     sheet = Choice(
         Column(Row(mech_node(), vplans), Row(diagrams, aplans, Column(tables, order))),
         Row(Column(mech_node(), diagrams), Column(vplans, Row(aplans, Column(tables, order)))),
@@ -329,11 +352,11 @@ def _arranged(s: Solved) -> tuple[Layout, tuple[Arranged, ...]]:
     accel = _accel_positions(s)
     fmts = sheet_formats(s.linkage)
     made: list[tuple[tuple[Tree, ...], _Mechanism, bool, dict[View, float]]] = []
-    detail = False
+    detail, rules, apart = False, (False, False), False
 
     def make(i: int) -> Callable[[float], tuple[Tree, Mapping[View, float]]]:
         def tree(h: float) -> tuple[Tree, Mapping[View, float]]:
-            made.append(_trees(s, accel, h, detail))
+            made.append(_trees(s, accel, h, detail, rules, apart))
             t, _, _, wants = made[-1]
             return t[i], {v: k for v, k in wants.items() if v in _views(t[i])}
 
@@ -342,17 +365,34 @@ def _arranged(s: Solved) -> tuple[Layout, tuple[Arranged, ...]]:
     def made_of(t0: Tree) -> tuple[tuple[Tree, ...], _Mechanism, bool, dict[View, float]]:
         return next(m for m in made if any(t0 is t for t in (m[0][0], *_alternatives(m[0][0]))))
 
-    first = fit(make(0), fmts)
-    trees_all, mech, second, _ = made_of(first[0])
-    k_mech = first[1].layout[mech].scale
+    def attempt() -> tuple[list[tuple[Tree, formats.Sized]], _Mechanism, bool]:
+        made.clear()
+        first = fit(make(0), fmts)
+        trees_all, mech, second, _ = made_of(first[0])
+        fitted = [first] + [fit(make(i), fmts) for i in range(1, len(trees_all))]
+        return fitted, mech, second
+
+    fitted, mech, second = attempt()
+    k_mech = fitted[0][1].layout[mech].scale
     if k_mech is not None and k_mech.mm(s.linkage.length) < DETAIL_BELOW * CRANK_MM:
         # the long links set the mechanism's scale and leave the crank short: the crank with
         # its numbered positions enlarged beside it (ESKD 2.305's detail view)
         detail = True
-        made.clear()
-        first = fit(make(0), fmts)
-        trees_all, mech, second, _ = made_of(first[0])
-    fitted = [first] + [fit(make(i), fmts) for i in range(1, len(trees_all))]
+        fitted, mech, second = attempt()
+    if not _rules_hold(s, fitted):
+        # the search seeks the rules' scales (the crank CRANK_MM long, pa PA_MM): on one
+        # sheet, else with the crank on its detail view, else with the velocity plans on a
+        # sheet of their own; where none holds them, the arrangement without them stays
+        rules = (True, True)
+        tries = dict.fromkeys(((detail, False), (True, False), (detail, True), (True, True)))
+        for enlarge, sep in tries:
+            if sep and len(s.drawn) > PLANS_ON_SHEET:
+                continue  # the plans are on their own sheet already
+            detail, apart = enlarge, sep
+            tried = attempt()
+            if _rules_hold(s, tried[0]):
+                fitted, mech, second = tried
+                break
     trees = tuple(t for t, _ in fitted)
     sized = tuple(z for _, z in fitted)
     lays = tuple(z.layout for z in sized)
@@ -365,6 +405,22 @@ def _arranged(s: Solved) -> tuple[Layout, tuple[Arranged, ...]]:
     out = Layout(lays[0][mech].scale or Scale(1.0), k_v, lays[0].scale("a"), second, accel,
                  trees, mech, sized)  # fmt: skip
     return out, lays
+
+
+def _rules_hold(s: Solved, fitted: Sequence[tuple[Tree, formats.Sized]]) -> bool:
+    """Whether every sheet of the arrangement fits and keeps the size rules: the crank at
+    least :data:`CRANK_MM` long on the mechanism or on its detail view, pa at least
+    :data:`PA_MM`."""
+    lk = s.linkage
+    lays = [z.layout for _, z in fitted]
+    if not all(lay.fits for lay in lays):
+        return False
+    crank = 0.0
+    for pl in lays[0]:
+        if isinstance(pl.view, _Mechanism | _CrankDetail) and pl.scale is not None:
+            crank = max(crank, pl.scale.mm(lk.length))
+    pa = lays[-1].scale("v").mm(abs(lk.omega) * lk.length)
+    return crank >= CRANK_MM * (1 - tol.REL_LENGTH) and pa >= PA_MM * (1 - tol.REL_LENGTH)
 
 
 def _alternatives(tree: Tree) -> tuple[Tree, ...]:
