@@ -6,6 +6,7 @@ sheet cannot hold them at that scale."""
 
 from __future__ import annotations
 
+import math
 import tomllib
 from pathlib import Path
 
@@ -16,6 +17,9 @@ from geomcad.linkage.solution import Solved, solve
 from geomcad.sheet.compose import Field, Figure, Row, arrange, round_scale, round_scale_down
 from geomcad.sheet.linkage import (
     CRANK_MM,
+    LINK_ALONG,
+    LINK_CLEAR_MM,
+    NUMBER_H,
     PA_MM,
     _CrankDetail,
     _Mechanism,
@@ -23,6 +27,7 @@ from geomcad.sheet.linkage import (
     kinematic_sheets,
     layout,
 )
+from geomcad.sheet.model import TextItem
 from geomcad.sheet.views import PlanView
 
 ROOT = Path(__file__).resolve().parent
@@ -115,3 +120,38 @@ def test_a_rules_scale_is_sought_before_another_views_area() -> None:
     a, tree = row(want)
     held = arrange(tree, field)[a].scale
     assert held is not None and held.k <= want * (1 + 1e-12) < free.k
+
+
+def _box(t: TextItem) -> tuple[float, float, float, float]:
+    return (t.at[0], t.at[1] - t.height, t.at[0] + t.width, t.at[1] + 0.3 * t.height)
+
+
+@pytest.mark.parametrize(
+    "name", ["shaper", "rocking-slider", "slider-crank", "sixbar-slider", "crank_rocker_mload"]
+)
+def test_a_links_number_never_reads_as_a_positions_number(name: str) -> None:
+    """On the mechanism and on the crank's detail, every link's number (3.5 mm digits) keeps
+    LINK_CLEAR_MM from every position's number (NUMBER_H), LINK_ALONG times that beside it in
+    its line (the shaper's block "5" once stood in B's row "10 3 5 11 4")."""
+    path = FILES.get(name) or ROOT.parent / "examples" / f"{name}.toml"
+    s = solve(parse(tomllib.loads(path.read_text(encoding="utf-8"))))
+    sheet = kinematic_sheets(s, "x")[0][1]
+    lay = layout(s)
+    areas = [pl.box for pl in lay.sized[0].layout
+             if isinstance(pl.view, _Mechanism | _CrankDetail)]  # fmt: skip
+    checked = 0
+    for a in areas:
+        texts = [t for t in sheet.texts() if t.role == "label" and t.text.isdigit()
+                 and a[0] <= t.at[0] <= a[2] and a[1] <= t.at[1] <= a[3]]  # fmt: skip
+        links = [t for t in texts if t.height > NUMBER_H]
+        numbers = [t for t in texts if t.height == NUMBER_H]
+        assert links and numbers
+        for lt in links:
+            b = _box(lt)
+            for n in numbers:
+                c = _box(n)
+                dx = max(b[0] - c[2], c[0] - b[2], 0.0) / LINK_ALONG
+                dy = max(b[1] - c[3], c[1] - b[3], 0.0)
+                assert math.hypot(dx, dy) >= LINK_CLEAR_MM - 1e-9, (lt.text, n.text)
+            checked += 1
+    assert checked >= 3

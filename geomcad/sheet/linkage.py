@@ -59,7 +59,7 @@ from geomcad.sheet.compose import (
 from geomcad.sheet.drawing import SHORT_MM, Viewport
 from geomcad.sheet.frame import FORMATS, text_at
 from geomcad.sheet.lang import Words, current, per_language
-from geomcad.sheet.model import ArcItem, CircleItem, Polyline
+from geomcad.sheet.model import ArcItem, CircleItem, Polyline, TextItem
 from geomcad.sheet.motion import Frames, turn
 from geomcad.sheet.plans import markup_of
 from geomcad.sheet.scale import Scale, angle_places, fmt_column, fmt_fixed
@@ -448,7 +448,11 @@ def kinematic_sheets(s: Solved, stem: str = "") -> list[tuple[str, Sheet]]:
     compose(d, lay.trees[0], layout=lays[0])
     if d.sheet.block is not None:
         d.sheet.block = replace(d.sheet.block, scale=lay.k_l.ratio_text())
-    out: list[tuple[str, Sheet]] = [("", d.finish())]
+    first = d.finish()
+    for pl in lays[0]:  # a link's number never reads as a position's
+        if isinstance(pl.view, _Mechanism | _CrankDetail):
+            keep_link_numbers_clear(first, pl.box)
+    out: list[tuple[str, Sheet]] = [("", first)]
     if lay.second:
         d2 = lay.sized[1].start(_title(lk, WORDS("vplans_sheet"), designation, None, 2, count))
         compose(d2, lay.trees[1], layout=lays[1])
@@ -892,7 +896,7 @@ NUMBER_H = 2.5
 NUMBER_SPACE = 0.8
 #: The links' numbers (3.5 mm) keep this much further (mm) from other texts, so that a link's
 #: number never reads as a position's.
-LINK_SPACE = 1.6
+LINK_SPACE = 2.6
 #: Positions of one point on one side of its path nearer each other than this (mm) are a crowd:
 #: their numbers cannot each stand beside their own point, so they stand in a row off the path,
 #: each joined to its point by a leader.
@@ -1205,6 +1209,101 @@ def _row_box(
 def _overlaps(a: Box, b: Box) -> bool:
     g = NUMBER_SPACE
     return a[0] < b[2] + g and b[0] < a[2] + g and a[1] < b[3] + g and b[1] < a[3] + g
+
+
+#: A link's number (3.5 mm) keeps at least this much (mm) from every position's number, so
+#: that the two never read as one ("5" beside B's "10 3 11 4"); moved round its point in
+#: steps of LINK_STEP_MM up to LINK_REACH_MM, with a leader where it stands further than
+#: LINK_LEADER_MM from its point.
+LINK_CLEAR_MM, LINK_STEP_MM, LINK_REACH_MM, LINK_LEADER_MM = 3.0, 0.5, 20.0, 5.0
+#: Texts side by side read as one line: a link's number keeps LINK_CLEAR_MM times this from a
+#: position's number beside it in its line (a row of numbers is read along).
+LINK_ALONG = 3.0
+#: The directions tried round the point, every 10°.
+_LINK_DIRS = [(math.cos(math.radians(a)), math.sin(math.radians(a))) for a in range(0, 360, 10)]
+
+
+def _text_box(t: TextItem) -> Box:
+    return (t.at[0], t.at[1] - t.height, t.at[0] + t.width, t.at[1] + 0.3 * t.height)
+
+
+def _gap(a: Box, b: Box, along: float = 1.0) -> float:
+    """The distance (mm) between two boxes (0 where they overlap), their horizontal distance
+    divided by ``along``."""
+    dx, dy = max(a[0] - b[2], b[0] - a[2], 0.0), max(a[1] - b[3], b[1] - a[3], 0.0)
+    return math.hypot(dx / along, dy)
+
+
+def _through_text(p: tuple[float, float], b: Box, boxes: Sequence[Box]) -> bool:
+    """Whether the line from ``p`` to the middle of ``b`` runs through one of ``boxes``
+    (grown by :data:`INK_GROW_MM`; sampled every :data:`LINK_STEP_MM` / 2)."""
+    cx, cy = (b[0] + b[2]) / 2.0, (b[1] + b[3]) / 2.0
+    n = max(2, int(math.dist(p, (cx, cy)) / (LINK_STEP_MM / 2.0)))
+    g = INK_GROW_MM
+    for k in range(1, n):
+        x, y = p[0] + (cx - p[0]) * k / n, p[1] + (cy - p[1]) * k / n
+        if any(o[0] - g <= x <= o[2] + g and o[1] - g <= y <= o[3] + g for o in boxes):
+            return True
+    return False
+
+
+def keep_link_numbers_clear(sheet: Sheet, area: Box) -> None:
+    """Each link's number (a label of digits higher than :data:`NUMBER_H`) in ``area`` (a
+    view's box on the finished sheet) that stands nearer than :data:`LINK_CLEAR_MM` to a
+    position's number (:data:`NUMBER_H` high; :data:`LINK_ALONG` times that beside it in its
+    line) moves to the nearest place round the point it
+    names that keeps that much from every number, clear of every other text and of every
+    drawn line; a leader joins it to its point where it stands further than
+    :data:`LINK_LEADER_MM` from it. Where no place within :data:`LINK_REACH_MM` does, it
+    stays."""
+
+    def inside(t: TextItem) -> bool:
+        return area[0] <= t.at[0] <= area[2] and area[1] <= t.at[1] <= area[3]
+
+    texts = [t for t in sheet.texts() if inside(t)]
+    numbers = [_text_box(t) for t in texts
+               if t.role == "label" and t.text.isdigit() and t.height == NUMBER_H]  # fmt: skip
+    anchors = {id(item): at for item, at in sheet.anchors}
+    ink: _Ink | None = None
+    for t in texts:
+        if not (t.role == "label" and t.text.isdigit() and t.height > NUMBER_H):
+            continue
+        b = _text_box(t)
+        if all(_gap(b, n, LINK_ALONG) >= LINK_CLEAR_MM for n in numbers) or id(t) not in anchors:
+            continue
+        ink = ink or _Ink(sheet)
+        p = anchors[id(t)]
+        others = [_text_box(o) for o in texts if o is not t]
+        w, h = b[2] - b[0], b[3] - b[1]
+        found: Box | None = None
+        r, steps = 0.0, round(LINK_REACH_MM / LINK_STEP_MM)
+        for step in range(1, steps + 1):
+            if found is not None:
+                break
+            r = step * LINK_STEP_MM
+            for ux, uy in _LINK_DIRS:
+                cx, cy = p[0] + ux * (r + w / 2.0), p[1] + uy * (r + h / 2.0)
+                c = (cx - w / 2.0, cy - h / 2.0, cx + w / 2.0, cy + h / 2.0)
+                if not (
+                    area[0] <= c[0] and c[2] <= area[2] and area[1] <= c[1] and c[3] <= area[3]
+                ):
+                    continue
+                if any(_gap(c, n, LINK_ALONG) < LINK_CLEAR_MM for n in numbers):
+                    continue
+                if any(_gap(c, o) < NUMBER_SPACE for o in others) or ink.crossed([c]):
+                    continue
+                if r > LINK_LEADER_MM and _through_text(p, c, others):
+                    continue  # its leader would run through another text
+                found = c
+                break
+        if found is None:
+            continue
+        i = next(k for k, it in enumerate(sheet.items) if it is t)
+        moved = replace(t, at=(found[0], found[3] - 0.3 * t.height))
+        sheet.items[i] = moved
+        sheet.anchors = [(moved if it is t else it, at) for it, at in sheet.anchors]
+        if r > LINK_LEADER_MM:
+            _leader(sheet, p, found)
 
 
 def _leader(sheet: Sheet, p: tuple[float, float], b: Box) -> None:
