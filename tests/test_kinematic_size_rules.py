@@ -27,7 +27,7 @@ from geomcad.sheet.linkage import (
     kinematic_sheets,
     layout,
 )
-from geomcad.sheet.model import TextItem
+from geomcad.sheet.model import Polyline, TextItem
 from geomcad.sheet.views import PlanView
 
 ROOT = Path(__file__).resolve().parent
@@ -155,3 +155,44 @@ def test_a_links_number_never_reads_as_a_positions_number(name: str) -> None:
                 assert math.hypot(dx, dy) >= LINK_CLEAR_MM - 1e-9, (lt.text, n.text)
             checked += 1
     assert checked >= 3
+
+
+@pytest.mark.parametrize("name", ["crusher", "compressor", "sixbar-slider"])
+def test_the_mechanism_and_the_crank_detail_stand_right_under_their_titles(name: str) -> None:
+    """The layout centres a drawing in its box: a tall box left the detail's title some 60 mm
+    above its crank. The mechanism and the crank's detail stand at their box's top (under the
+    title), centred across."""
+    path = FILES.get(name) or ROOT.parent / "examples" / f"{name}.toml"
+    s = solve(parse(tomllib.loads(path.read_text(encoding="utf-8"))))
+    kinematic_sheets(s, "x")  # draws: the viewports as drawn
+    lay = layout(s)
+    seen = 0
+    for pl in lay.sized[0].layout:
+        if not isinstance(pl.view, _Mechanism | _CrankDetail):
+            continue
+        ext = pl.view.extent()
+        assert pl.viewport is not None
+        top = pl.viewport.p((ext[0], ext[3]))[1]
+        bottom = pl.viewport.p((ext[0], ext[1]))[1]
+        if bottom - top < pl.inner[3] - pl.inner[1] - 1.0:  # a box taller than its drawing
+            assert abs(top - pl.inner[1]) < 1e-6, (type(pl.view).__name__, top, pl.inner)
+            seen += 1
+    assert seen
+
+
+def test_thin_positions_draw_no_web_to_a_coupler_point() -> None:
+    """The crank-rocker's coupler point M: its triangle AMB only in the principal position;
+    in the others link 2 is the line AB (M's path and numbers show M)."""
+    s = _solved("crank_rocker_mload")
+    lk = s.linkage
+    sheet = kinematic_sheets(s, "x")[0][1]
+    lay = layout(s)
+    v = lay.sized[0].layout[lay.mech].viewport
+    assert v is not None
+    ends = [v.p(P.pos["M"]) for P in s.drawn]
+    thin = [it for it in sheet.items if isinstance(it, Polyline) and it.role == "thin"]
+    touching = {
+        i for it in thin for q in it.points for i, e in enumerate(ends) if math.dist(q, e) < 1e-6
+    }
+    assert len(touching) <= 1, touching  # the principal position's at most (drawn as main lines)
+    assert any(p.name == "M" and p.link == 2 for p in lk.points)

@@ -524,18 +524,30 @@ SLOT_PAST = 1.15
 
 
 def link_bodies(
-    lk: Linkage, P: Position, links: Sequence[int] | None = None, slot_half: float = 0.0
-) -> dict[str, list[Body]]:
+    lk: Linkage, P: Position, links: Sequence[int] | None = None, slot_half: float = 0.0,
+    axes: bool = False,
+) -> dict[str, list[Body]]:  # fmt: skip
     """Each link's body in position P through all its points: a slotted link along its slide,
     past the block; a PRP yoke with its slot through the block; a link carrying a guide with
     the guide run on to its slider. ``links``: those to draw (default: every moving link).
     ``slot_half`` (model units): a yoke's slot drawn as a slot, the outline of its two sides
     this far either side of its axis (the block slides between them), its rod from the slot's
-    side; 0: the slot as its axis line."""
+    side; 0: the slot as its axis line. ``axes``: each link through its pairs only, a point
+    no other link carries (a coupler point M, a centre of mass) left out: a thin position's
+    drawing, where the coupler's triangle in every position would weave a web (the point's
+    path and numbers show it)."""
     out: dict[str, list[Body]] = {}
+    carried: dict[str, int] = {}
+    if axes:
+        for link in lk.moving_links:
+            for n in lk.points_on(link):
+                carried[n] = carried.get(n, 0) + 1
+    lone = {p.name for p in lk.points if carried.get(p.name, 0) == 1}
     for link in lk.moving_links if links is None else links:
         uniq: list[Vec] = []
         for n in lk.points_on(link):
+            if n in lone and len([m for m in lk.points_on(link) if m not in lone]) >= 2:
+                continue
             q = P.pos[n]
             if not any(q.dist(u) <= tol.DERIVED * max(1.0, q.norm) for u in uniq):
                 uniq.append(q)
@@ -664,6 +676,19 @@ def _paths(lk: Linkage) -> dict[str, list[Vec]]:
     return {p.name: [Vec(float(a), float(b)) for a, b in st.pos[p.name]] for p in lk.points}
 
 
+def _under_title(d: Drawing, at: Placed, ext: tuple[float, float, float, float]) -> Viewport:
+    """The view's viewport moved up so that its drawing (model ``ext``) stands right under its
+    title, centred across (the layout centres it in its box: a tall box left the title far
+    above a drawing ruled by its width); kept in ``at`` for whoever reads the view's place."""
+    v = at.viewport
+    assert v is not None and at.scale is not None
+    cx, cy = (ext[0] + ext[2]) / 2.0, (ext[1] + ext[3]) / 2.0
+    h = at.scale.mm(ext[3] - ext[1])
+    top = min(at.inner[1] + h / 2.0, (at.inner[1] + at.inner[3]) / 2.0)
+    at.viewport = d.viewport(at.scale, (cx, cy), ((at.inner[0] + at.inner[2]) / 2.0, top))
+    return at.viewport
+
+
 class _Mechanism(View):
     """The mechanism in all its numbered positions: the principal one (:func:`_principal`) in
     main lines with its scheme's symbols, the others in thin lines, the crank circle and the
@@ -683,8 +708,7 @@ class _Mechanism(View):
         return self._ext
 
     def draw(self, d: Drawing, at: Placed) -> None:
-        v = at.viewport
-        assert v is not None
+        v = _under_title(d, at, self._ext)
         s = self.s
         lk = s.linkage
         v.circle(lk.frame[lk.pivot], lk.length, "centre")
@@ -695,7 +719,7 @@ class _Mechanism(View):
         P0, k0 = _principal(s)
         for i, P in enumerate(s.drawn):
             if i != k0:
-                for bs in link_bodies(lk, P).values():
+                for bs in link_bodies(lk, P, axes=True).values():
                     for b in bs:
                         v.polyline(b.points, "thin", closed=b.closed)
         labels: dict[str, str] = {}
@@ -826,8 +850,7 @@ class _CrankDetail(View):
         return self._ext
 
     def draw(self, d: Drawing, at: Placed) -> None:
-        v = at.viewport
-        assert v is not None
+        v = _under_title(d, at, self._ext)
         s = self.s
         lk = s.linkage
         O1 = lk.frame[lk.pivot]
