@@ -25,7 +25,7 @@ from __future__ import annotations
 import itertools
 import math
 import re
-from collections.abc import Callable, Mapping, Sequence
+from collections.abc import Callable, Collection, Mapping, Sequence
 from dataclasses import dataclass, replace
 
 import numpy as np
@@ -1155,11 +1155,14 @@ def _row_boxes(
 
 class _Ink:
     """The lines drawn on a sheet so far as paper segments (polylines by their sides, circles
-    and arcs by chords), for counting the lines that cross a number's box."""
+    and arcs by chords), for counting the lines that cross a number's box; ``roles``: only
+    the lines of those roles."""
 
-    def __init__(self, sheet: Sheet) -> None:
+    def __init__(self, sheet: Sheet, roles: Collection[str] = ()) -> None:
         segs: list[tuple[float, float, float, float]] = []
         for it in sheet.items:
+            if roles and getattr(it, "role", None) not in roles:
+                continue
             if isinstance(it, Polyline):
                 pts = (*it.points, *it.points[:1]) if it.closed else it.points
                 segs += [(*a, *b) for a, b in itertools.pairwise(pts)]
@@ -1271,14 +1274,14 @@ def _through_text(p: tuple[float, float], b: Box, boxes: Sequence[Box]) -> bool:
 
 
 def keep_link_numbers_clear(sheet: Sheet, area: Box) -> None:
-    """Each link's number (a label of digits higher than :data:`NUMBER_H`) in ``area`` (a
-    view's box on the finished sheet) that stands nearer than :data:`LINK_CLEAR_MM` to a
-    position's number (:data:`NUMBER_H` high; :data:`LINK_ALONG` times that beside it in its
-    line) moves to the nearest place round the point it
-    names that keeps that much from every number, clear of every other text and of every
-    drawn line; a leader joins it to its point where it stands further than
-    :data:`LINK_LEADER_MM` from it. Where no place within :data:`LINK_REACH_MM` does, it
-    stays."""
+    """Each point's letter a thin position's line runs through (the crank's pivot among its
+    twelve positions), and each link's number (a label of digits higher than
+    :data:`NUMBER_H`) that stands nearer than :data:`LINK_CLEAR_MM` to a position's number
+    (:data:`NUMBER_H` high; :data:`LINK_ALONG` times that beside it in its line), in ``area``
+    (a view's box on the finished sheet), moves to the nearest place round the point it names
+    that keeps that much from every number, clear of every other text and of every drawn
+    line; a leader joins it to its point where it stands further than :data:`LINK_LEADER_MM`
+    from it. Where no place within :data:`LINK_REACH_MM` does, it stays."""
 
     def inside(t: TextItem) -> bool:
         return area[0] <= t.at[0] <= area[2] and area[1] <= t.at[1] <= area[3]
@@ -1287,16 +1290,19 @@ def keep_link_numbers_clear(sheet: Sheet, area: Box) -> None:
     numbers = [_text_box(t) for t in texts
                if t.role == "label" and t.text.isdigit() and t.height == NUMBER_H]  # fmt: skip
     anchors = {id(item): at for item, at in sheet.anchors}
-    ink: _Ink | None = None
+    ink, thin = _Ink(sheet), _Ink(sheet, ("thin",))
+    current = {id(o): _text_box(o) for o in texts}  # the boxes as moved so far
     for t in texts:
-        if not (t.role == "label" and t.text.isdigit() and t.height > NUMBER_H):
+        if t.role != "label" or t.height <= NUMBER_H or id(t) not in anchors:
             continue
         b = _text_box(t)
-        if all(_gap(b, n, LINK_ALONG) >= LINK_CLEAR_MM for n in numbers) or id(t) not in anchors:
-            continue
-        ink = ink or _Ink(sheet)
+        if t.text.isdigit():
+            if all(_gap(b, n, LINK_ALONG) >= LINK_CLEAR_MM for n in numbers):
+                continue
+        elif not ("A" <= t.text[:1] <= "Z" and thin.crossed([b], 0.0)):
+            continue  # a point's letter moves only where a thin position's line runs through it
         p = anchors[id(t)]
-        others = [_text_box(o) for o in texts if o is not t]
+        others = [bx for k, bx in current.items() if k != id(t)]
         w, h = b[2] - b[0], b[3] - b[1]
         found: Box | None = None
         r, steps = 0.0, round(LINK_REACH_MM / LINK_STEP_MM)
@@ -1325,8 +1331,10 @@ def keep_link_numbers_clear(sheet: Sheet, area: Box) -> None:
         moved = replace(t, at=(found[0], found[3] - 0.3 * t.height))
         sheet.items[i] = moved
         sheet.anchors = [(moved if it is t else it, at) for it, at in sheet.anchors]
+        current[id(t)] = found
         if r > LINK_LEADER_MM:
             _leader(sheet, p, found)
+            ink = _Ink(sheet)
 
 
 def _leader(sheet: Sheet, p: tuple[float, float], b: Box) -> None:
