@@ -81,6 +81,9 @@ TITLE_LINES = 3
 #: What a vector shorter than two arrowheads costs the search, against log(drawn area): a view
 #: drawn 1.4 times larger (twice the area) is worth about two more short vectors.
 SHORT_COST = 0.35
+#: The search's score lost per millimetre of room a view lacks for the scale a rule asks of it
+#: (its ``most_k``): a view drawn at half its area costs 1.4 at weight 2, a rule 10 mm short 10.
+RULE_COST = 100.0
 #: A content narrower than this share of its larger side counts as this wide (a plan along a
 #: line still needs room for its labels).
 THIN = 0.15
@@ -120,6 +123,22 @@ def round_scale(raw: float, q: Quantity, series: Series) -> Scale:
     return Scale(10.0 ** (e + 2), q)  # pragma: no cover - 10^(e+1) ≥ raw always
 
 
+def round_scale_down(raw: float, q: Quantity, series: Series) -> Scale:
+    """The largest factor of ``series`` that is at most ``raw`` (model units per mm): the
+    smallest drawing of the series that still keeps a length a rule asks for (a crank 30 mm
+    long at k = l/30). ``"free"`` gives ``raw`` itself."""
+    up = round_scale(raw, q, series)
+    if series == "free" or up.k <= raw * (1 + tol.REL_LENGTH):
+        return up
+    # the series' steps are at most 2.5 apart (5 → 10, 1:2.5 → 1:5 … 1:40 → 1:100 at most)
+    k = round_scale(up.k / 2.6, q, series).k
+    while True:
+        nxt = round_scale(k * (1 + 2 * tol.REL_LENGTH), q, series).k
+        if nxt > raw * (1 + tol.REL_LENGTH):
+            return Scale(k, q)
+        k = nxt
+
+
 # --- views --------------------------------------------------------------------------------------
 
 
@@ -136,6 +155,10 @@ class View:
     vector), drawn at least ``readable_mm`` long when the field allows it. ``weight`` is the
     view's share in the search for the splits (a view of weight 2 counts as two). ``least_k``
     (model units per mm): the scale is never finer than this (a scale the task fixes).
+    ``most_k`` (model units per mm, 0: none): a scale a rule asks for at least (a crank 30 mm
+    long): where the cell is too small to draw the view at it, each millimetre missing costs
+    :data:`RULE_COST` of the search's score (a measure the search can follow split by split,
+    where the rounded scale moves in steps; what must fit still comes first).
     """
 
     def __init__(
@@ -152,6 +175,7 @@ class View:
         readable_mm: float = 7.0,
         weight: float = 1.0,
         least_k: float = 0.0,
+        most_k: float = 0.0,
     ) -> None:
         self.title = title
         self.group = group
@@ -164,6 +188,7 @@ class View:
         self.readable_mm = readable_mm
         self.weight = weight
         self.least_k = least_k
+        self.most_k = most_k
         self._title_w: float | None = None
         #: the lines the title takes (more than one where it is wider than its box)
         self.title_lines = 1
@@ -530,6 +555,7 @@ class _Info:
         "leaves",
         "lengths",
         "margin",
+        "most_k",
         "nat",
         "obst",
         "prefer",
@@ -553,6 +579,7 @@ class _Info:
         ext = _ext(v)
         self.ext_w, self.ext_h = (ext[2] - ext[0], ext[3] - ext[1]) if ext else (0.0, 0.0)
         self.least_k = v.least_k
+        self.most_k = v.most_k
         self.content = _content(ext) if ext is not None and kind == "scaled" else (0.0, 0.0)
         lengths = v._memo.get("lengths")
         if lengths is None:
@@ -620,6 +647,9 @@ class _Info:
                 area = max(uw, 0.0) * max(uh, 0.0)
         else:
             raw_k = self.raw_k(w, h)
+            if self.most_k > 0.0:  # the room the rule's scale needs, as a negative area
+                k = self.most_k
+                area = -(max(0.0, self.ext_w / k - w) + max(0.0, self.ext_h / k - h))
         return bad, raw_k, area
 
     def room(self, cell: Box) -> tuple[float, float]:
@@ -697,7 +727,9 @@ class _Leaf:
         self.bad = bad  # mm a fixed view or a title overflows its cell
         self.raw_k = raw_k  # scaled: the continuous scale that fits
         self.content = content  # scaled: the content's model size (thin ones widened)
-        self.area = area  # stretch: the area it really draws (mm²)
+        # stretch: the area it really draws (mm²); scaled: less the room (mm) it lacks for its
+        # most_k (a rule's scale)
+        self.area = area
         self.lengths = lengths  # scaled: its vectors' lengths, sorted
 
 
@@ -1211,6 +1243,7 @@ def _score(part: _Part, floor: tuple[float, ...] | None = None) -> tuple[float, 
         if r == math.inf:  # a candidate too small even for the smallest scale
             bad += 1000.0
     short = 0
+    rule = 0.0
     small = tol.SHEET_AREA
     # the drawn area (mm²) of each flexible view at the rounded scales and at the raw ones, a
     # scale group counting once (the sum of its members'), a stretch view's as it really
@@ -1229,6 +1262,8 @@ def _score(part: _Part, floor: tuple[float, ...] | None = None) -> tuple[float, 
             continue
         g = leaf.group
         k = rounded[g]
+        if leaf.area < 0.0:
+            rule -= leaf.area
         if k != math.inf:
             if v.readable > 0.0 and v.readable / k < v.readable_mm:
                 bad += v.readable_mm - v.readable / k
@@ -1252,7 +1287,7 @@ def _score(part: _Part, floor: tuple[float, ...] | None = None) -> tuple[float, 
                     prev[1] = w
     score_r = sum([w * log(a) for a, w in areas_r.values()])
     score_c = sum([w * log(a) for a, w in areas_c.values()])
-    return (-round(bad, 6), score_r + 0.1 * score_c - SHORT_COST * short)
+    return (-round(bad, 6), score_r + 0.1 * score_c - SHORT_COST * short - RULE_COST * rule)
 
 
 def _fills(lay: Layout) -> list[float]:

@@ -12,7 +12,10 @@ every vector is drawn at the stated μ. Its words come from ``strings/<lang>/lin
 The format is chosen by the content (:mod:`geomcad.sheet.formats`): the smaller of
 :data:`SIZES` on which the crank is drawn at least :data:`CRANK_MM` long and the velocity plans'
 crank vector pa at least :data:`PA_MM` (a file with few positions, a small mechanism: A2), else
-A1; a file's ``[sheet] format`` overrides it. Tables, orders and notes are written
+A1; a file's ``[sheet] format`` overrides it. Where the largest format's arrangement breaks
+either rule, the search seeks the rules' scales (:func:`~geomcad.sheet.compose.View`'s
+``most_k``): on one sheet, else with the crank on its detail view, else with the velocity plans
+on a sheet of their own (:func:`_rules_hold`). Tables, orders and notes are written
 :data:`TEXT_H` high on A2 and A1 (2.5 mm, GOST 2.304's least, on a smaller format the file
 asks for), the views' titles 5 mm.
 """
@@ -22,7 +25,7 @@ from __future__ import annotations
 import itertools
 import math
 import re
-from collections.abc import Callable, Mapping, Sequence
+from collections.abc import Callable, Collection, Mapping, Sequence
 from dataclasses import dataclass, replace
 
 import numpy as np
@@ -48,6 +51,7 @@ from geomcad.sheet.compose import (
     View,
     arrange,
     compose,
+    round_scale_down,
 )
 from geomcad.sheet.compose import (
     Layout as Arranged,
@@ -55,7 +59,7 @@ from geomcad.sheet.compose import (
 from geomcad.sheet.drawing import SHORT_MM, Viewport
 from geomcad.sheet.frame import FORMATS, name_fits, text_at
 from geomcad.sheet.lang import Words, current, per_language
-from geomcad.sheet.model import ArcItem, CircleItem, Polyline
+from geomcad.sheet.model import ArcItem, CircleItem, Polyline, TextItem
 from geomcad.sheet.motion import Frames, turn
 from geomcad.sheet.plans import markup_of
 from geomcad.sheet.scale import Scale, angle_places, fmt_column, fmt_fixed
@@ -209,15 +213,20 @@ def _accel_positions(s: Solved) -> tuple[Position, ...]:
 
 
 def _trees(
-    s: Solved, accel: Sequence[Position], h: float = TEXT_H, enlarge: bool = False
-) -> tuple[tuple[Tree, ...], _Mechanism, bool, dict[View, float]]:
+    s: Solved, accel: Sequence[Position], h: float = TEXT_H, enlarge: bool = False,
+    rules: tuple[bool, bool] = (False, False), apart: bool = False,
+) -> tuple[tuple[Tree, ...], _Mechanism, bool, dict[View, float]]:  # fmt: skip
     """The sheets' view trees (see the module's docstring), tables and orders written ``h``
     high, and the scales (model units per mm) the format is chosen to reach: the mechanism's
     and the velocity plans'. ``enlarge``: the crank in its positions enlarged beside the
-    mechanism (:class:`_CrankDetail`), where the mechanism's scale leaves it short."""
+    mechanism (:class:`_CrankDetail`), where the mechanism's scale leaves it short. ``rules``
+    (the crank's, pa's): the search on every format seeks that rule's scale (the coarsest of
+    its series that keeps it: a view's ``most_k``), its room missing counted as a cost.
+    ``apart``: the velocity plans on a sheet of their own (as with more than
+    :data:`PLANS_ON_SHEET` positions)."""
     lk = s.linkage
     n = len(s.drawn)
-    second = n > PLANS_ON_SHEET
+    second = apart or n > PLANS_ON_SHEET
     mech = _Mechanism(s)
     crank: _CrankDetail | None = None
     if enlarge:
@@ -272,9 +281,23 @@ def _trees(
         wants[crank] = lk.length / CRANK_MM
     for view in vviews:  # one scale for them all: each needs its room at it
         wants[view] = abs(lk.omega) * lk.length / PA_MM
+    if rules[0]:
+        cv: View = mech if crank is None else crank
+        cv.most_k = round_scale_down(lk.length / CRANK_MM, "l", cv.series).k
+    if rules[1]:
+        for view in vviews:
+            view.most_k = round_scale_down(wants[view], view.quantity, view.series).k
     if second:
-        trees = (Column(mech_node(), Row(diagrams, aplans, Column(tables, order))), vplans)
-        return trees, mech, True, wants
+        first: Tree = Column(mech_node(), Row(diagrams, aplans, Column(tables, order)))
+        if apart and n <= PLANS_ON_SHEET:
+            # the plans moved to their own sheet for their size: a tall mechanism may take
+            # the first sheet's whole height
+            first = Choice(
+                first,
+                Row(mech_node(), Column(diagrams, Row(aplans, Column(tables, order)))),
+                Row(Column(mech_node(), diagrams), aplans, Column(tables, order)),
+            )
+        return (first, vplans), mech, True, wants
     sheet = Choice(
         Column(Row(mech_node(), vplans), Row(diagrams, aplans, Column(tables, order))),
         Row(Column(mech_node(), diagrams), Column(vplans, Row(aplans, Column(tables, order)))),
@@ -329,11 +352,11 @@ def _arranged(s: Solved) -> tuple[Layout, tuple[Arranged, ...]]:
     accel = _accel_positions(s)
     fmts = sheet_formats(s.linkage)
     made: list[tuple[tuple[Tree, ...], _Mechanism, bool, dict[View, float]]] = []
-    detail = False
+    detail, rules, apart = False, (False, False), False
 
     def make(i: int) -> Callable[[float], tuple[Tree, Mapping[View, float]]]:
         def tree(h: float) -> tuple[Tree, Mapping[View, float]]:
-            made.append(_trees(s, accel, h, detail))
+            made.append(_trees(s, accel, h, detail, rules, apart))
             t, _, _, wants = made[-1]
             return t[i], {v: k for v, k in wants.items() if v in _views(t[i])}
 
@@ -342,17 +365,34 @@ def _arranged(s: Solved) -> tuple[Layout, tuple[Arranged, ...]]:
     def made_of(t0: Tree) -> tuple[tuple[Tree, ...], _Mechanism, bool, dict[View, float]]:
         return next(m for m in made if any(t0 is t for t in (m[0][0], *_alternatives(m[0][0]))))
 
-    first = fit(make(0), fmts)
-    trees_all, mech, second, _ = made_of(first[0])
-    k_mech = first[1].layout[mech].scale
+    def attempt() -> tuple[list[tuple[Tree, formats.Sized]], _Mechanism, bool]:
+        made.clear()
+        first = fit(make(0), fmts)
+        trees_all, mech, second, _ = made_of(first[0])
+        fitted = [first] + [fit(make(i), fmts) for i in range(1, len(trees_all))]
+        return fitted, mech, second
+
+    fitted, mech, second = attempt()
+    k_mech = fitted[0][1].layout[mech].scale
     if k_mech is not None and k_mech.mm(s.linkage.length) < DETAIL_BELOW * CRANK_MM:
         # the long links set the mechanism's scale and leave the crank short: the crank with
         # its numbered positions enlarged beside it (ESKD 2.305's detail view)
         detail = True
-        made.clear()
-        first = fit(make(0), fmts)
-        trees_all, mech, second, _ = made_of(first[0])
-    fitted = [first] + [fit(make(i), fmts) for i in range(1, len(trees_all))]
+        fitted, mech, second = attempt()
+    if not _rules_hold(s, fitted):
+        # the search seeks the rules' scales (the crank CRANK_MM long, pa PA_MM): on one
+        # sheet, else with the crank on its detail view, else with the velocity plans on a
+        # sheet of their own; where none holds them, the arrangement without them stays
+        rules = (True, True)
+        tries = dict.fromkeys(((detail, False), (True, False), (detail, True), (True, True)))
+        for enlarge, sep in tries:
+            if sep and len(s.drawn) > PLANS_ON_SHEET:
+                continue  # the plans are on their own sheet already
+            detail, apart = enlarge, sep
+            tried = attempt()
+            if _rules_hold(s, tried[0]):
+                fitted, mech, second = tried
+                break
     trees = tuple(t for t, _ in fitted)
     sized = tuple(z for _, z in fitted)
     lays = tuple(z.layout for z in sized)
@@ -365,6 +405,22 @@ def _arranged(s: Solved) -> tuple[Layout, tuple[Arranged, ...]]:
     out = Layout(lays[0][mech].scale or Scale(1.0), k_v, lays[0].scale("a"), second, accel,
                  trees, mech, sized)  # fmt: skip
     return out, lays
+
+
+def _rules_hold(s: Solved, fitted: Sequence[tuple[Tree, formats.Sized]]) -> bool:
+    """Whether every sheet of the arrangement fits and keeps the size rules: the crank at
+    least :data:`CRANK_MM` long on the mechanism or on its detail view, pa at least
+    :data:`PA_MM`."""
+    lk = s.linkage
+    lays = [z.layout for _, z in fitted]
+    if not all(lay.fits for lay in lays):
+        return False
+    crank = 0.0
+    for pl in lays[0]:
+        if isinstance(pl.view, _Mechanism | _CrankDetail) and pl.scale is not None:
+            crank = max(crank, pl.scale.mm(lk.length))
+    pa = lays[-1].scale("v").mm(abs(lk.omega) * lk.length)
+    return crank >= CRANK_MM * (1 - tol.REL_LENGTH) and pa >= PA_MM * (1 - tol.REL_LENGTH)
 
 
 def _alternatives(tree: Tree) -> tuple[Tree, ...]:
@@ -392,7 +448,11 @@ def kinematic_sheets(s: Solved, stem: str = "") -> list[tuple[str, Sheet]]:
     compose(d, lay.trees[0], layout=lays[0])
     if d.sheet.block is not None:
         d.sheet.block = replace(d.sheet.block, scale=lay.k_l.ratio_text())
-    out: list[tuple[str, Sheet]] = [("", d.finish())]
+    first = d.finish()
+    for pl in lays[0]:  # a link's number never reads as a position's
+        if isinstance(pl.view, _Mechanism | _CrankDetail):
+            keep_link_numbers_clear(first, pl.box)
+    out: list[tuple[str, Sheet]] = [("", first)]
     if lay.second:
         d2 = lay.sized[1].start(_title(lk, WORDS("vplans_sheet"), designation, None, 2, count))
         compose(d2, lay.trees[1], layout=lays[1])
@@ -474,18 +534,30 @@ SLOT_PAST = 1.15
 
 
 def link_bodies(
-    lk: Linkage, P: Position, links: Sequence[int] | None = None, slot_half: float = 0.0
-) -> dict[str, list[Body]]:
+    lk: Linkage, P: Position, links: Sequence[int] | None = None, slot_half: float = 0.0,
+    axes: bool = False,
+) -> dict[str, list[Body]]:  # fmt: skip
     """Each link's body in position P through all its points: a slotted link along its slide,
     past the block; a PRP yoke with its slot through the block; a link carrying a guide with
     the guide run on to its slider. ``links``: those to draw (default: every moving link).
     ``slot_half`` (model units): a yoke's slot drawn as a slot, the outline of its two sides
     this far either side of its axis (the block slides between them), its rod from the slot's
-    side; 0: the slot as its axis line."""
+    side; 0: the slot as its axis line. ``axes``: each link through its pairs only, a point
+    no other link carries (a coupler point M, a centre of mass) left out: a thin position's
+    drawing, where the coupler's triangle in every position would weave a web (the point's
+    path and numbers show it)."""
     out: dict[str, list[Body]] = {}
+    carried: dict[str, int] = {}
+    if axes:
+        for link in lk.moving_links:
+            for n in lk.points_on(link):
+                carried[n] = carried.get(n, 0) + 1
+    lone = {p.name for p in lk.points if carried.get(p.name, 0) == 1}
     for link in lk.moving_links if links is None else links:
         uniq: list[Vec] = []
         for n in lk.points_on(link):
+            if n in lone and len([m for m in lk.points_on(link) if m not in lone]) >= 2:
+                continue
             q = P.pos[n]
             if not any(q.dist(u) <= tol.DERIVED * max(1.0, q.norm) for u in uniq):
                 uniq.append(q)
@@ -614,6 +686,19 @@ def _paths(lk: Linkage) -> dict[str, list[Vec]]:
     return {p.name: [Vec(float(a), float(b)) for a, b in st.pos[p.name]] for p in lk.points}
 
 
+def _under_title(d: Drawing, at: Placed, ext: tuple[float, float, float, float]) -> Viewport:
+    """The view's viewport moved up so that its drawing (model ``ext``) stands right under its
+    title, centred across (the layout centres it in its box: a tall box left the title far
+    above a drawing ruled by its width); kept in ``at`` for whoever reads the view's place."""
+    v = at.viewport
+    assert v is not None and at.scale is not None
+    cx, cy = (ext[0] + ext[2]) / 2.0, (ext[1] + ext[3]) / 2.0
+    h = at.scale.mm(ext[3] - ext[1])
+    top = min(at.inner[1] + h / 2.0, (at.inner[1] + at.inner[3]) / 2.0)
+    at.viewport = d.viewport(at.scale, (cx, cy), ((at.inner[0] + at.inner[2]) / 2.0, top))
+    return at.viewport
+
+
 class _Mechanism(View):
     """The mechanism in all its numbered positions: the principal one (:func:`_principal`) in
     main lines with its scheme's symbols, the others in thin lines, the crank circle and the
@@ -633,8 +718,7 @@ class _Mechanism(View):
         return self._ext
 
     def draw(self, d: Drawing, at: Placed) -> None:
-        v = at.viewport
-        assert v is not None
+        v = _under_title(d, at, self._ext)
         s = self.s
         lk = s.linkage
         v.circle(lk.frame[lk.pivot], lk.length, "centre")
@@ -645,7 +729,7 @@ class _Mechanism(View):
         P0, k0 = _principal(s)
         for i, P in enumerate(s.drawn):
             if i != k0:
-                for bs in link_bodies(lk, P).values():
+                for bs in link_bodies(lk, P, axes=True).values():
                     for b in bs:
                         v.polyline(b.points, "thin", closed=b.closed)
         labels: dict[str, str] = {}
@@ -776,8 +860,7 @@ class _CrankDetail(View):
         return self._ext
 
     def draw(self, d: Drawing, at: Placed) -> None:
-        v = at.viewport
-        assert v is not None
+        v = _under_title(d, at, self._ext)
         s = self.s
         lk = s.linkage
         O1 = lk.frame[lk.pivot]
@@ -846,7 +929,7 @@ NUMBER_H = 2.5
 NUMBER_SPACE = 0.8
 #: The links' numbers (3.5 mm) keep this much further (mm) from other texts, so that a link's
 #: number never reads as a position's.
-LINK_SPACE = 1.6
+LINK_SPACE = 2.6
 #: Positions of one point on one side of its path nearer each other than this (mm) are a crowd:
 #: their numbers cannot each stand beside their own point, so they stand in a row off the path,
 #: each joined to its point by a leader.
@@ -1082,11 +1165,14 @@ def _row_boxes(
 
 class _Ink:
     """The lines drawn on a sheet so far as paper segments (polylines by their sides, circles
-    and arcs by chords), for counting the lines that cross a number's box."""
+    and arcs by chords), for counting the lines that cross a number's box; ``roles``: only
+    the lines of those roles."""
 
-    def __init__(self, sheet: Sheet) -> None:
+    def __init__(self, sheet: Sheet, roles: Collection[str] = ()) -> None:
         segs: list[tuple[float, float, float, float]] = []
         for it in sheet.items:
+            if roles and getattr(it, "role", None) not in roles:
+                continue
             if isinstance(it, Polyline):
                 pts = (*it.points, *it.points[:1]) if it.closed else it.points
                 segs += [(*a, *b) for a, b in itertools.pairwise(pts)]
@@ -1159,6 +1245,106 @@ def _row_box(
 def _overlaps(a: Box, b: Box) -> bool:
     g = NUMBER_SPACE
     return a[0] < b[2] + g and b[0] < a[2] + g and a[1] < b[3] + g and b[1] < a[3] + g
+
+
+#: A link's number (3.5 mm) keeps at least this much (mm) from every position's number, so
+#: that the two never read as one ("5" beside B's "10 3 11 4"); moved round its point in
+#: steps of LINK_STEP_MM up to LINK_REACH_MM, with a leader where it stands further than
+#: LINK_LEADER_MM from its point.
+LINK_CLEAR_MM, LINK_STEP_MM, LINK_REACH_MM, LINK_LEADER_MM = 3.0, 0.5, 20.0, 5.0
+#: Texts side by side read as one line: a link's number keeps LINK_CLEAR_MM times this from a
+#: position's number beside it in its line (a row of numbers is read along).
+LINK_ALONG = 3.0
+#: The directions tried round the point, every 10°.
+_LINK_DIRS = [(math.cos(math.radians(a)), math.sin(math.radians(a))) for a in range(0, 360, 10)]
+
+
+def _text_box(t: TextItem) -> Box:
+    return (t.at[0], t.at[1] - t.height, t.at[0] + t.width, t.at[1] + 0.3 * t.height)
+
+
+def _gap(a: Box, b: Box, along: float = 1.0) -> float:
+    """The distance (mm) between two boxes (0 where they overlap), their horizontal distance
+    divided by ``along``."""
+    dx, dy = max(a[0] - b[2], b[0] - a[2], 0.0), max(a[1] - b[3], b[1] - a[3], 0.0)
+    return math.hypot(dx / along, dy)
+
+
+def _through_text(p: tuple[float, float], b: Box, boxes: Sequence[Box]) -> bool:
+    """Whether the line from ``p`` to the middle of ``b`` runs through one of ``boxes``
+    (grown by :data:`INK_GROW_MM`; sampled every :data:`LINK_STEP_MM` / 2)."""
+    cx, cy = (b[0] + b[2]) / 2.0, (b[1] + b[3]) / 2.0
+    n = max(2, int(math.dist(p, (cx, cy)) / (LINK_STEP_MM / 2.0)))
+    g = INK_GROW_MM
+    for k in range(1, n):
+        x, y = p[0] + (cx - p[0]) * k / n, p[1] + (cy - p[1]) * k / n
+        if any(o[0] - g <= x <= o[2] + g and o[1] - g <= y <= o[3] + g for o in boxes):
+            return True
+    return False
+
+
+def keep_link_numbers_clear(sheet: Sheet, area: Box) -> None:
+    """Each point's letter a thin position's line runs through (the crank's pivot among its
+    twelve positions), and each link's number (a label of digits higher than
+    :data:`NUMBER_H`) that stands nearer than :data:`LINK_CLEAR_MM` to a position's number
+    (:data:`NUMBER_H` high; :data:`LINK_ALONG` times that beside it in its line), in ``area``
+    (a view's box on the finished sheet), moves to the nearest place round the point it names
+    that keeps that much from every number, clear of every other text and of every drawn
+    line; a leader joins it to its point where it stands further than :data:`LINK_LEADER_MM`
+    from it. Where no place within :data:`LINK_REACH_MM` does, it stays."""
+
+    def inside(t: TextItem) -> bool:
+        return area[0] <= t.at[0] <= area[2] and area[1] <= t.at[1] <= area[3]
+
+    texts = [t for t in sheet.texts() if inside(t)]
+    numbers = [_text_box(t) for t in texts
+               if t.role == "label" and t.text.isdigit() and t.height == NUMBER_H]  # fmt: skip
+    anchors = {id(item): at for item, at in sheet.anchors}
+    ink, thin = _Ink(sheet), _Ink(sheet, ("thin",))
+    current = {id(o): _text_box(o) for o in texts}  # the boxes as moved so far
+    for t in texts:
+        if t.role != "label" or t.height <= NUMBER_H or id(t) not in anchors:
+            continue
+        b = _text_box(t)
+        if t.text.isdigit():
+            if all(_gap(b, n, LINK_ALONG) >= LINK_CLEAR_MM for n in numbers):
+                continue
+        elif not ("A" <= t.text[:1] <= "Z" and thin.crossed([b], 0.0)):
+            continue  # a point's letter moves only where a thin position's line runs through it
+        p = anchors[id(t)]
+        others = [bx for k, bx in current.items() if k != id(t)]
+        w, h = b[2] - b[0], b[3] - b[1]
+        found: Box | None = None
+        r, steps = 0.0, round(LINK_REACH_MM / LINK_STEP_MM)
+        for step in range(1, steps + 1):
+            if found is not None:
+                break
+            r = step * LINK_STEP_MM
+            for ux, uy in _LINK_DIRS:
+                cx, cy = p[0] + ux * (r + w / 2.0), p[1] + uy * (r + h / 2.0)
+                c = (cx - w / 2.0, cy - h / 2.0, cx + w / 2.0, cy + h / 2.0)
+                if not (
+                    area[0] <= c[0] and c[2] <= area[2] and area[1] <= c[1] and c[3] <= area[3]
+                ):
+                    continue
+                if any(_gap(c, n, LINK_ALONG) < LINK_CLEAR_MM for n in numbers):
+                    continue
+                if any(_gap(c, o) < NUMBER_SPACE for o in others) or ink.crossed([c]):
+                    continue
+                if r > LINK_LEADER_MM and _through_text(p, c, others):
+                    continue  # its leader would run through another text
+                found = c
+                break
+        if found is None:
+            continue
+        i = next(k for k, it in enumerate(sheet.items) if it is t)
+        moved = replace(t, at=(found[0], found[3] - 0.3 * t.height))
+        sheet.items[i] = moved
+        sheet.anchors = [(moved if it is t else it, at) for it, at in sheet.anchors]
+        current[id(t)] = found
+        if r > LINK_LEADER_MM:
+            _leader(sheet, p, found)
+            ink = _Ink(sheet)
 
 
 def _leader(sheet: Sheet, p: tuple[float, float], b: Box) -> None:
