@@ -13,6 +13,7 @@ in the result role.
 
 from __future__ import annotations
 
+import itertools
 import math
 from collections.abc import Collection, Mapping, Sequence
 from dataclasses import dataclass
@@ -20,7 +21,9 @@ from dataclasses import dataclass
 from geomcad.geom import PointLike, Vec, vec
 from geomcad.sheet import symbols
 from geomcad.sheet.drawing import JOINT_R, Viewport
-from geomcad.sheet.model import CircleItem
+from geomcad.sheet.model import CircleItem, Polyline
+from geomcad.sheet.style import MAIN_LINE, STYLES
+from geomcad.sheet.symbols import SLIDER_SIZE
 from geomcad.structure import Mechanism, Pair
 
 #: Half the length (mm) of a guide drawn for a prismatic pair on the frame.
@@ -160,10 +163,35 @@ def _support_direction(mech: Mechanism, p: Pair) -> tuple[float, float]:
     return (best.x, best.y)
 
 
-def _block(v: Viewport, q: Vec, along: Vec, role: str) -> None:
+def _block(
+    v: Viewport, q: Vec, along: Vec, role: str, drawn: Mapping[str, Sequence[Body]] | None = None,
+) -> None:  # fmt: skip
     """A slider block centred on q along the sliding axis (no joint circle: a joint, where
-    there is one, is its own pair); a highlighted block is filled."""
+    there is one, is its own pair); a highlighted block is filled. A line of the ``drawn``
+    bodies that ends at q runs on over the block's fill to q (GOST 2.770: a rod jointed to the
+    block reaches its joint circle, not the block's edge): a strip of the main line's width
+    on the fill's layer, under the joint circle drawn after it."""
     symbols.block(v.sheet, v.p(q), v.paper_dir(along), role, with_joint=False)
+    reach = math.hypot(*SLIDER_SIZE) / 2.0  # mm: the block's half-diagonal
+    c = Vec(*v.p(q))
+    S = MAIN_LINE.get(v.sheet.format, 0.7)
+    half = (STYLES["link"].weight - STYLES["joint"].weight) * S / 2.0
+    for bodies in (drawn or {}).values():
+        for b in bodies:
+            pts = [Vec(*v.p(t)) for t in (*b.points, *b.points[:1])][: len(b.points) + b.closed]
+            for a, e in itertools.pairwise(pts):
+                for end, other in ((a, e), (e, a)):
+                    d = end.dist(other)
+                    if end.dist(c) > ROD_AT or d == 0.0:
+                        continue
+                    u = (other - end) * (1.0 / d)
+                    tip, n = c + u * min(reach, d), u.perp() * half
+                    strip = (c + n, tip + n, tip - n, c - n)
+                    v.sheet.add(Polyline(tuple((w.x, w.y) for w in strip), "joint", closed=True))
+
+
+#: A body's line ends at a block's centre when its end is within this (mm) of it.
+ROD_AT = 0.05
 
 
 def _prismatic(
@@ -188,7 +216,7 @@ def _prismatic(
         v.seg(p.at - u * k, p.at + u * k, "centre")
         for lk in p.links:
             if lk not in ghosts and block(lk):
-                _block(v, p.at, u, role[lk])
+                _block(v, p.at, u, role[lk], drawn)
         return
     if mech.frame in p.links:
         k = v.scale.model(GUIDE_HALF)
@@ -205,11 +233,11 @@ def _prismatic(
         v.guide(b, a, (-n.x, -n.y))
         link = p.other(mech.frame)
         if block(link):
-            _block(v, p.at, u, role[link])
+            _block(v, p.at, u, role[link], drawn)
         return
     for lk in p.links:
         if block(lk):
-            _block(v, p.at, u, role[lk])
+            _block(v, p.at, u, role[lk], drawn)
             return
 
 
