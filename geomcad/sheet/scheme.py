@@ -133,7 +133,7 @@ def draw_scheme(
     for p in mech.pairs:
         if p.kind == "R":
             if mech.frame in p.links:
-                v.pivot(p.at, (supports or {}).get(p.name) or _support_direction(mech, p))
+                v.pivot(p.at, (supports or {}).get(p.name) or _support_direction(mech, p, drawn))
             else:
                 v.joint(p.at)
     _labels(v, mech, drawn, size, pair_labels, link_labels, label_height, ghosts, link_space)
@@ -146,12 +146,36 @@ SUPPORT_CLEAR = math.radians(50.0)
 _SUPPORT_AXES = (Vec(0.0, -1.0), Vec(0.0, 1.0), Vec(-1.0, 0.0), Vec(1.0, 0.0))
 
 
-def _support_direction(mech: Mechanism, p: Pair) -> tuple[float, float]:
+def _support_direction(
+    mech: Mechanism, p: Pair, drawn: Mapping[str, Sequence[Body]] | None = None
+) -> tuple[float, float]:
     """The direction (model) of a frame hinge's support: drawn square to the sheet (its hatch
     horizontal or vertical, never skewed with the links), down where the links it carries leave
-    :data:`SUPPORT_CLEAR` of room there, else the axis direction farthest from them."""
+    :data:`SUPPORT_CLEAR` of room there, else the axis direction farthest from them. The links'
+    directions: to their other pairs, and along each line of their ``drawn`` bodies that leaves
+    the hinge (a lever's offset arm, square to its slide)."""
     link = p.other(mech.frame)
     dirs = [(q - p.at).unit() for q in _points(mech, link) if (q - p.at).norm > 0.0]
+    dirs += body_directions(p.at, (drawn or {}).get(link, ()), mech.size() * _REL)
+    return support_direction(dirs)
+
+
+def body_directions(at: Vec, bodies: Sequence[Body], near: float) -> list[Vec]:
+    """The unit directions of the lines of ``bodies`` that leave the point ``at`` (an end of
+    theirs within ``near`` of it)."""
+    out: list[Vec] = []
+    for b in bodies:
+        pts = (*b.points, *b.points[: int(b.closed)])
+        for a, e in itertools.pairwise(pts):
+            for end, other in ((a, e), (e, a)):
+                if end.dist(at) <= near and other.dist(end) > near:
+                    out.append((other - end).unit())
+    return out
+
+
+def support_direction(dirs: Sequence[Vec]) -> tuple[float, float]:
+    """A frame hinge's support direction (model) clear of the unit directions ``dirs`` of the
+    lines that leave the hinge (see :func:`_support_direction`)."""
     if not dirs:
         return (0.0, -1.0)
 
