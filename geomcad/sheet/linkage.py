@@ -705,9 +705,16 @@ class _Mechanism(View):
     paths of the named points."""
 
     def __init__(self, s: Solved) -> None:
+        # the main lines' position named in the title where it is none of the numbered ones
+        # (``[forces] phi``), as the forces sheet names it, not read as a numbered one beside it
+        P0, k0 = _principal(s)
+        deg = math.degrees(P0.phi) % 360.0
+        phi = fmt_fixed(deg, angle_places([deg]), current())
+        last = len(s.drawn) - 1
         super().__init__(
-            title=WORDS("mech", last=len(s.drawn) - 1), title_height=5.0, margin=6.0,
-            weight=2.0,
+            title=WORDS("mech", last=last) if k0 is not None else WORDS("mech_phi", last=last,
+                                                                         phi=phi),
+            title_height=5.0, margin=6.0, weight=2.0,
         )  # fmt: skip
         self.s = s
         self._ext = _mechanism_extent(s)

@@ -13,6 +13,7 @@ in the result role.
 
 from __future__ import annotations
 
+import itertools
 import math
 from collections.abc import Collection, Mapping, Sequence
 from dataclasses import dataclass
@@ -20,7 +21,9 @@ from dataclasses import dataclass
 from geomcad.geom import PointLike, Vec, vec
 from geomcad.sheet import symbols
 from geomcad.sheet.drawing import JOINT_R, Viewport
-from geomcad.sheet.model import CircleItem
+from geomcad.sheet.model import CircleItem, Polyline
+from geomcad.sheet.style import MAIN_LINE, STYLES
+from geomcad.sheet.symbols import SLIDER_SIZE
 from geomcad.structure import Mechanism, Pair
 
 #: Half the length (mm) of a guide drawn for a prismatic pair on the frame.
@@ -130,7 +133,7 @@ def draw_scheme(
     for p in mech.pairs:
         if p.kind == "R":
             if mech.frame in p.links:
-                v.pivot(p.at, (supports or {}).get(p.name) or _support_direction(mech, p))
+                v.pivot(p.at, (supports or {}).get(p.name) or _support_direction(mech, p, drawn))
             else:
                 v.joint(p.at)
     _labels(v, mech, drawn, size, pair_labels, link_labels, label_height, ghosts, link_space)
@@ -143,12 +146,36 @@ SUPPORT_CLEAR = math.radians(50.0)
 _SUPPORT_AXES = (Vec(0.0, -1.0), Vec(0.0, 1.0), Vec(-1.0, 0.0), Vec(1.0, 0.0))
 
 
-def _support_direction(mech: Mechanism, p: Pair) -> tuple[float, float]:
+def _support_direction(
+    mech: Mechanism, p: Pair, drawn: Mapping[str, Sequence[Body]] | None = None
+) -> tuple[float, float]:
     """The direction (model) of a frame hinge's support: drawn square to the sheet (its hatch
     horizontal or vertical, never skewed with the links), down where the links it carries leave
-    :data:`SUPPORT_CLEAR` of room there, else the axis direction farthest from them."""
+    :data:`SUPPORT_CLEAR` of room there, else the axis direction farthest from them. The links'
+    directions: to their other pairs, and along each line of their ``drawn`` bodies that leaves
+    the hinge (a lever's offset arm, square to its slide)."""
     link = p.other(mech.frame)
     dirs = [(q - p.at).unit() for q in _points(mech, link) if (q - p.at).norm > 0.0]
+    dirs += body_directions(p.at, (drawn or {}).get(link, ()), mech.size() * _REL)
+    return support_direction(dirs)
+
+
+def body_directions(at: Vec, bodies: Sequence[Body], near: float) -> list[Vec]:
+    """The unit directions of the lines of ``bodies`` that leave the point ``at`` (an end of
+    theirs within ``near`` of it)."""
+    out: list[Vec] = []
+    for b in bodies:
+        pts = (*b.points, *b.points[: int(b.closed)])
+        for a, e in itertools.pairwise(pts):
+            for end, other in ((a, e), (e, a)):
+                if end.dist(at) <= near and other.dist(end) > near:
+                    out.append((other - end).unit())
+    return out
+
+
+def support_direction(dirs: Sequence[Vec]) -> tuple[float, float]:
+    """A frame hinge's support direction (model) clear of the unit directions ``dirs`` of the
+    lines that leave the hinge (see :func:`_support_direction`)."""
     if not dirs:
         return (0.0, -1.0)
 
@@ -160,10 +187,35 @@ def _support_direction(mech: Mechanism, p: Pair) -> tuple[float, float]:
     return (best.x, best.y)
 
 
-def _block(v: Viewport, q: Vec, along: Vec, role: str) -> None:
+def _block(
+    v: Viewport, q: Vec, along: Vec, role: str, drawn: Mapping[str, Sequence[Body]] | None = None,
+) -> None:  # fmt: skip
     """A slider block centred on q along the sliding axis (no joint circle: a joint, where
-    there is one, is its own pair); a highlighted block is filled."""
+    there is one, is its own pair); a highlighted block is filled. A line of the ``drawn``
+    bodies that ends at q runs on over the block's fill to q (GOST 2.770: a rod jointed to the
+    block reaches its joint circle, not the block's edge): a strip of the main line's width
+    on the fill's layer, under the joint circle drawn after it."""
     symbols.block(v.sheet, v.p(q), v.paper_dir(along), role, with_joint=False)
+    reach = math.hypot(*SLIDER_SIZE) / 2.0  # mm: the block's half-diagonal
+    c = Vec(*v.p(q))
+    S = MAIN_LINE.get(v.sheet.format, 0.7)
+    half = (STYLES["link"].weight - STYLES["joint"].weight) * S / 2.0
+    for bodies in (drawn or {}).values():
+        for b in bodies:
+            pts = [Vec(*v.p(t)) for t in (*b.points, *b.points[:1])][: len(b.points) + b.closed]
+            for a, e in itertools.pairwise(pts):
+                for end, other in ((a, e), (e, a)):
+                    d = end.dist(other)
+                    if end.dist(c) > ROD_AT or d == 0.0:
+                        continue
+                    u = (other - end) * (1.0 / d)
+                    tip, n = c + u * min(reach, d), u.perp() * half
+                    strip = (c + n, tip + n, tip - n, c - n)
+                    v.sheet.add(Polyline(tuple((w.x, w.y) for w in strip), "joint", closed=True))
+
+
+#: A body's line ends at a block's centre when its end is within this (mm) of it.
+ROD_AT = 0.05
 
 
 def _prismatic(
@@ -188,7 +240,7 @@ def _prismatic(
         v.seg(p.at - u * k, p.at + u * k, "centre")
         for lk in p.links:
             if lk not in ghosts and block(lk):
-                _block(v, p.at, u, role[lk])
+                _block(v, p.at, u, role[lk], drawn)
         return
     if mech.frame in p.links:
         k = v.scale.model(GUIDE_HALF)
@@ -205,11 +257,11 @@ def _prismatic(
         v.guide(b, a, (-n.x, -n.y))
         link = p.other(mech.frame)
         if block(link):
-            _block(v, p.at, u, role[link])
+            _block(v, p.at, u, role[link], drawn)
         return
     for lk in p.links:
         if block(lk):
-            _block(v, p.at, u, role[lk])
+            _block(v, p.at, u, role[lk], drawn)
             return
 
 
