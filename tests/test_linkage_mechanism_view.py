@@ -15,7 +15,8 @@ from geomcad.linkage.solution import Solved, scheme, solve
 from geomcad.sheet.drawing import Viewport
 from geomcad.sheet.linkage import _principal, kinematic_sheets, layout
 from geomcad.sheet.model import Polyline, TextItem
-from geomcad.sheet.text import metrics, placed_runs, run_size
+from geomcad.sheet.text import SUP_RISE, box, metrics, placed_runs, run_size, sup_rise
+from geomcad.sheet.text import parse as markup
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
 
@@ -112,7 +113,7 @@ def test_a_named_points_index_is_a_subscript_on_the_mechanism() -> None:
 
 def test_no_index_is_smaller_than_the_least_gost_height() -> None:
     # SHEETS.md (GOST 2.304): indices no smaller than 2.5 mm, on every label of a file's sheet
-    # (a subscript; an exponent keeps 0.7 of its text)
+    # (a subscript and a superscript: a^n, a^τ, i^{-1}, R^* alike)
     m = metrics()
     small = set()
     for _, sheet in kinematic_sheets(_solved("slider-crank")):
@@ -121,7 +122,7 @@ def test_no_index_is_smaller_than_the_least_gost_height() -> None:
                 continue
             for run, _x, _y, size in placed_runs(it):
                 cap = size * m.cap_height / m.units_per_em
-                if run.shift == "sub" and cap < 2.5 - 1e-6:
+                if run.shift != "base" and cap < 2.5 - 1e-6:
                     small.add((it.text, it.height, round(cap, 2)))
     assert not small, sorted(small)[:5]
 
@@ -132,3 +133,19 @@ def test_an_index_keeps_its_scale_above_the_least_height() -> None:
     assert run_size(fs, "sub") == pytest.approx(0.7 * fs)
     assert run_size(m.font_size(2.5), "sub") == pytest.approx(m.font_size(2.5))
     assert run_size(fs, "base") == fs
+    assert run_size(fs, "sup") == pytest.approx(0.7 * fs)
+    assert run_size(m.font_size(2.5), "sup") == pytest.approx(m.font_size(2.5))
+    assert run_size(m.font_size(3.5), "sup") == pytest.approx(m.font_size(2.5))
+
+
+def test_a_raised_mark_keeps_its_top_and_stays_raised() -> None:
+    # a superscript the least height enlarges rises less: its top (and a label's box, hence the
+    # sheets' line pitch) stays where a 0.7 one's would be, its baseline still above the text's
+    m = metrics()
+    em = m.cap_height / m.units_per_em
+    for cap in (2.5, 3.5, 5.0):
+        fs = m.font_size(cap)
+        top = sup_rise(fs) + run_size(fs, "sup") * em
+        assert top == pytest.approx(SUP_RISE * fs + 0.7 * cap)
+        assert sup_rise(fs) > 0.25 * cap
+        assert box(markup("a^n"), cap)[1] == pytest.approx(top)

@@ -18,7 +18,7 @@ from geomcad.linkage.plans import construct
 from geomcad.linkage.solution import solve
 from geomcad.sheet import linkage as linkage_sheet
 from geomcad.sheet.lang import language
-from geomcad.sheet.views import Steps, num, step_text
+from geomcad.sheet.views import Steps, Table, num, step_text
 
 EXAMPLES = Path(__file__).parent.parent / "examples"
 
@@ -72,12 +72,20 @@ def test_linkage_sheet_lists_both_plans_of_its_detailed_position() -> None:
         names = [P.vp.pole, *P.vp.order, P.ap.pole, *P.ap.order]
         lines = _numbered(order)
         assert len(lines) == len(names)
-        # the velocity plan first, then the acceleration plan; ω3 as recorded, formatted
+        # the velocity plan first, then the acceleration plan; ω3 as recorded, formatted as
+        # the ω table prints it in that position (one rounding per value on a sheet)
         k = names.index("ω3")
         assert names.index("π") > k
         line = order.lines[order.lines.index(lines[k])]
         assert line.startswith(f"{k + 1}. ω_{{3}} = V_{{A3C}}/l_{{CA3}}")
-        assert line.endswith(f"{num(abs(P.c['ω3']))} {'рад/с' if lang == 'ru' else 'rad/s'}")
+        (table,) = [v for t in lay.trees for v in t.views() if isinstance(v, Table) and
+                    v.rows[0][0] == "№"]  # fmt: skip
+        row = table.rows[1 + next(i for i, Q in enumerate(s.drawn) if Q is P)]
+        cell = row[[h.split(", ")[0] for h in table.rows[0]].index("ω_{3}")]
+        assert float(cell.lstrip("\u2013").replace(",", ".")) == pytest.approx(
+            abs(P.c["ω3"]), abs=0.0006
+        )
+        assert line.endswith(f"{cell.lstrip(chr(0x2013))} {'рад/с' if lang == 'ru' else 'rad/s'}")
 
 
 def test_2013_3_order_is_the_plans_steps_and_the_reduced_force() -> None:

@@ -31,7 +31,7 @@ from geomcad.render.svg import num
 from geomcad.sheet.lang import Words
 from geomcad.sheet.motion import Arr, Frames
 from geomcad.sheet.scale import Scale, gost_scale_to_fit, nice_factor
-from geomcad.sheet.text import FONT_FAMILY, SUB_DROP, SUP_RISE, metrics, parse, run_size
+from geomcad.sheet.text import FONT_FAMILY, SUB_DROP, metrics, parse, run_size, sup_rise
 
 SVG_NS = "http://www.w3.org/2000/svg"
 
@@ -126,7 +126,7 @@ def _text(
     shift = 0.0
     last: ET.Element | None = None
     for run in parse(markup):
-        want = {"base": 0.0, "sub": SUB_DROP * fs, "sup": -SUP_RISE * fs}[run.shift]
+        want = {"base": 0.0, "sub": SUB_DROP * fs, "sup": -sup_rise(fs)}[run.shift]
         if want == shift and last is None and run.shift == "base":
             el.text = run.text
             continue

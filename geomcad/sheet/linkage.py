@@ -32,6 +32,7 @@ import numpy as np
 import numpy.typing as npt
 
 from geomcad import tol
+from geomcad.construction.recorder import Step
 from geomcad.errors import ParameterError
 from geomcad.geom import Vec
 from geomcad.linkage.model import Group, Linkage
@@ -264,13 +265,16 @@ def _trees(
     notes: list[View] = [_Note(WORDS("short", mm=fmt_number(SHORT_MM)), h)]
     if _along_guide(s, s.drawn[:1]) is not None:  # a slider's signed V, a: which way is +
         notes.append(Text(paragraph=WORDS("out_sign", p=lk.output), width=width, height=h))
-    tables = Column(*_tables(s, accel, h), *notes)
+    tabled = _tables(s, accel, h)
+    tables = Column(*tabled, *notes)
     # the velocity plan's steps, then the acceleration plan's
     names = [detail.vp.pole, *detail.vp.order, detail.ap.pole, *detail.ap.order]
+    steps = [detail.c.step(n) for n in names]
     order = Steps(
-        [detail.c.step(n) for n in names],
+        steps,
         width,
         only=names,
+        given=_as_tabled(steps, detail, [(tabled[0], s.drawn), (tabled[1], accel)]),
         height=h,
         title=_order_title(s, detail),
         title_height=TITLE_H,
@@ -1624,6 +1628,30 @@ def _tables(s: Solved, accel: Sequence[Position], h: float = TEXT_H) -> list[Tab
             center=True,
         ),
     ]
+
+
+def _as_tabled(
+    steps: Sequence[Step], P: Position, tables: Sequence[tuple[Table, Sequence[Position]]]
+) -> dict[str, dict[str, str]]:
+    """The value of each step that reads off a link's ω or ε (kind ``plan_omega``: its link's
+    ``w``, its magnitude ``value``) as the sheet's table prints it in position ``P``, where a
+    table has ``P``'s row (its rows after the header one per position of ``tables``' second)
+    and a column headed by that ``w``: one rounding per value on a sheet, the column's
+    decimals."""
+    cells: dict[str, str] = {}
+    for table, positions in tables:
+        row = next((i for i, Q in enumerate(positions) if Q is P), None)
+        if row is None:
+            continue
+        head, values = table.rows[0], table.rows[1 + row]
+        cells.update({h.split(", ")[0]: v for h, v in zip(head, values, strict=True)})
+    out: dict[str, dict[str, str]] = {}
+    for step in steps:
+        args = dict(step.args)
+        w = args.get("w")
+        if step.kind == "plan_omega" and isinstance(w, str) and w in cells:
+            out[step.name] = {"value": cells[w].lstrip("\u2212\u2013-")}
+    return out
 
 
 def _along_guide(

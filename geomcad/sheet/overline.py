@@ -13,7 +13,7 @@ import dataclasses
 import math
 
 from geomcad.sheet.model import Polyline, Run, Sheet, TextItem
-from geomcad.sheet.text import SUB_DROP, SUP_RISE, metrics, run_size
+from geomcad.sheet.text import SUB_DROP, metrics, run_size, sup_rise
 from geomcad.sheet.text import width as text_width
 
 MACRON = "\u0304"
@@ -34,7 +34,7 @@ def overline_marks(sheet: Sheet) -> None:
         for run in it.runs:
             fs = run_size(it.font_size, run.shift)
             cap = it.height * fs / it.font_size
-            dy = {"base": 0.0, "sub": SUB_DROP * it.font_size, "sup": -SUP_RISE * it.font_size}
+            dy = {"base": 0.0, "sub": SUB_DROP * it.font_size, "sup": -sup_rise(it.font_size)}
             kept = ""
             for ch in run.text:
                 if ch == MACRON and kept:

@@ -35,13 +35,14 @@ FONT_FILE = "osifont.ttf"
 #: GOST 2.304 cap heights (mm).
 HEIGHTS = (2.5, 3.5, 5.0, 7.0, 10.0, 14.0)
 
-#: Subscripts and superscripts are set at this fraction of the font size; a subscript (an index:
-#: O_1, V_B, S_2) never with a cap height under :data:`INDEX_MIN_H` (GOST 2.304's least size, as
-#: SHEETS.md asks of indices), nor larger than its text. A superscript (an exponent, a^n) keeps
-#: the fraction: set larger it would reach into the line above at the sheets' line pitch …
+#: Subscripts and superscripts are set at this fraction of the font size, never with a cap
+#: height under :data:`INDEX_MIN_H` (GOST 2.304's least size, as SHEETS.md asks of every letter:
+#: an index O_1, V_B, S_2 and a mark a^n, a^τ, R^*, i^{-1} alike), nor larger than their text …
 SUB_SCALE = 0.7
 INDEX_MIN_H = 2.5
-#: … and shifted by these fractions of the base font size (down for sub, up for sup).
+#: … and shifted by these fractions of the base font size (down for sub, up for sup; a
+#: superscript the least height makes larger than :data:`SUB_SCALE` rises less, see
+#: :func:`sup_rise`).
 SUB_DROP = 0.25
 SUP_RISE = 0.45
 
@@ -232,13 +233,21 @@ def _merge(runs: list[Run]) -> list[Run]:
 
 
 def run_size(font_size: float, shift: Shift) -> float:
-    """The font size of a run: smaller for a subscript or a superscript (:data:`SUB_SCALE`), a
-    subscript at least :data:`INDEX_MIN_H` high (never larger than the text's own size)."""
+    """The font size of a run: smaller for a subscript or a superscript (:data:`SUB_SCALE`), at
+    least :data:`INDEX_MIN_H` high (never larger than the text's own size)."""
     if shift == "base":
         return font_size
-    if shift == "sup":
-        return font_size * SUB_SCALE
     return min(font_size, max(font_size * SUB_SCALE, metrics().font_size(INDEX_MIN_H)))
+
+
+def sup_rise(font_size: float) -> float:
+    """How far (mm) a superscript's baseline is raised above its text's: :data:`SUP_RISE` of the
+    font size, less what :data:`INDEX_MIN_H` adds to the superscript's cap height over
+    :data:`SUB_SCALE`, so that its top stays where a :data:`SUB_SCALE` one's would be (a label is
+    no taller, and the sheets' line pitch holds, with every letter at least 2.5 mm)."""
+    m = metrics()
+    grown = (run_size(font_size, "sup") - font_size * SUB_SCALE) * m.cap_height / m.units_per_em
+    return SUP_RISE * font_size - grown
 
 
 def width(runs: tuple[Run, ...], font_size: float) -> float:
@@ -260,7 +269,7 @@ def box(runs: tuple[Run, ...], cap_height: float) -> tuple[float, float, float]:
         if r.shift == "sub":
             down = max(down, SUB_DROP * fs)
         elif r.shift == "sup":
-            up = max(up, SUP_RISE * fs + cap_height * run_size(fs, "sup") / fs)
+            up = max(up, sup_rise(fs) + cap_height * run_size(fs, "sup") / fs)
     return w, up, down
 
 
@@ -297,7 +306,7 @@ def placed_runs(t: TextItem) -> Iterator[tuple[Run, float, float, float]]:
         if run.shift == "sub":
             y += SUB_DROP * t.font_size
         elif run.shift == "sup":
-            y -= SUP_RISE * t.font_size
+            y -= sup_rise(t.font_size)
         yield run, x, y, size
         x += m.advance(run.text, size)
 

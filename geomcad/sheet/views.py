@@ -1421,7 +1421,9 @@ class Text(View):
 LISTED = ("construction", "result", "link", "extreme")
 
 
-def step_text(step: Step, words: Words | None = None) -> str:
+def step_text(
+    step: Step, words: Words | None = None, given: Mapping[str, str] | None = None
+) -> str:
     """One step of the order of construction in the language being drawn: the template of its
     recorded kind (:attr:`Step.kind`), key ``step.<kind>``, looked up in ``words`` (a sheet's
     own table, for a problem's own kinds) and then in ``strings/<lang>/views.toml``, filled
@@ -1429,7 +1431,8 @@ def step_text(step: Step, words: Words | None = None) -> str:
     numbers in the language drawn, ``@key`` the word ``word.key`` of the tables).
 
     A step without a kind, or whose kind no table knows, is an error naming the step: the
-    order of construction is written from the recorded steps or not at all."""
+    order of construction is written from the recorded steps or not at all. ``given`` are
+    fields already written (a value as a table of the sheet prints it, one rounding per value)."""
     key = f"step.{step.kind}"
     table = words.table() if words is not None else {}
     template = table.get(key) or WORDS.table().get(key)
@@ -1446,6 +1449,7 @@ def step_text(step: Step, words: Words | None = None) -> str:
         for k, v in step.args
     }
     fields["name"] = _arg(step.name)
+    fields.update({k: v for k, v in (given or {}).items() if k in fields})
     try:
         return template.format(**fields)
     except (KeyError, IndexError) as exc:
@@ -1485,8 +1489,8 @@ def _printable(text: str) -> str:
 class Steps(View):
     """The order of construction: the listed steps of ``construction`` (roles in
     :data:`LISTED`; ``only`` keeps these names, in their recorded order), numbered, each
-    through its kind's template (:func:`step_text`; ``words`` holds a problem's own kinds)
-    and wrapped to ``width`` mm."""
+    through its kind's template (:func:`step_text`; ``words`` holds a problem's own kinds;
+    ``given``, by step name, fields already written) and wrapped to ``width`` mm."""
 
     def __init__(
         self,
@@ -1495,6 +1499,7 @@ class Steps(View):
         only: Sequence[str] | None = None,
         height: float = 2.5,
         words: Words | None = None,
+        given: Mapping[str, Mapping[str, str]] | None = None,
         **kw: Any,
     ) -> None:
         kw.setdefault("title", WORDS("order"))
@@ -1506,7 +1511,8 @@ class Steps(View):
         self.width = width
         self.lines: list[str] = []
         for i, s in enumerate(keep, 1):
-            self.lines += wrap(f"{i}. {step_text(s, words)}", width, height, indent=4.0)
+            text = step_text(s, words, (given or {}).get(s.name))
+            self.lines += wrap(f"{i}. {text}", width, height, indent=4.0)
 
     def natural(self) -> tuple[float, float] | None:
         lead = self.height * LINE_SPACING
