@@ -123,6 +123,36 @@ def test_details_are_one_level_beside_the_polygon() -> None:
     assert any(", " in letters for _, _, letters in spots)
 
 
+def test_a_negligible_vector_is_named_under_the_caption_not_detailed() -> None:
+    """A plan's vector under NEGLIGIBLE of its largest would need a detail at an absurd μ_F
+    (the review's 0.025 N/mm): it is in no detail, not drawn, and named on a line under the
+    plan's caption; a short vector above that share is still drawn in a detail at its μ_F, and
+    a polygon without the rule details both."""
+    vs = chain([5000.0, 2.0, 40.0, 3000.0], ["F0", "F1", "F2", "F3"])
+    vs.append(PlanVector("R", vs[-1].head, Vec(0.0, 0.0)))
+    poly = ForcePolygon(Vec(0.0, 0.0), tuple(vs), ())
+    assert 2.0 < NEGLIGIBLE * 5000.0 < 40.0
+    plain = Polygon(poly, detail=True)
+    assert {n for dt in plain.details for n in dt.run} >= {"F1", "F2"}
+    p = Polygon(poly, detail=True, negligible=(NEGLIGIBLE, lambda ns: "left out: " + ", ".join(ns)))
+    assert p.omitted == ["F1"] and p.note == "left out: F1"
+    d = start("A3", TitleBlock("t", "d"))
+    lay = compose(d, p)
+    sheet = d.finish()
+    runs = {n for dt in p.details for n in dt.run}
+    assert "F1" not in runs and "F2" in runs
+    assert min(dt.k for dt in p.details) > 2.0 / SHORT_MM  # no detail at the absurd μ_F
+    arrows = [(math.dist(t, h), sc.k) for t, h, sc in sheet.scaled]
+    drawn = [mm * k for mm, k in arrows]
+    assert not any(math.isclose(F, 2.0, rel_tol=1e-6) for F in drawn)
+    assert any(math.isclose(F, 40.0, rel_tol=1e-6) for F in drawn)
+    # the note on its line under the caption, inside the view's box, above the drawing
+    notes = [t for t in sheet.texts() if t.text == "left out: F1"]
+    assert len(notes) == 1
+    box, inner = lay[p].box, lay[p].inner
+    assert box[1] < notes[0].at[1] <= inner[1] and box[0] <= notes[0].at[0] < box[2]
+
+
 @pytest.mark.parametrize(
     ("forces", "room", "tiers"),
     [

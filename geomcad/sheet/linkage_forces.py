@@ -424,6 +424,7 @@ def _sheet2(
                 detail=refs is not None,
                 letters=letters,
                 ref=(refs or {}).get(_poly_title(gf, name)),
+                negligible=(NEGLIGIBLE, _negligible_note),
             )
             for name, poly in gf.polygons
         ]
@@ -692,6 +693,13 @@ def left_out(fs: ForceScales, named: Sequence[tuple[str, float]]) -> list[str]:
     as negligible (:attr:`ForceScales.negligible`)."""
     out = [load_name(n) for n, F in named if fs.zero < abs(F) <= fs.negligible]
     return list(dict.fromkeys(out))
+
+
+def _negligible_note(names: Sequence[str]) -> str:
+    """The line under a force plan's caption that names the vectors it leaves out as
+    negligible (under :data:`~geomcad.sheet.loads.NEGLIGIBLE` of its largest)."""
+    key = "negligible_one" if len(names) == 1 else "negligible"
+    return WORDS(key, names=", ".join(names), share=fmt_number(NEGLIGIBLE * 100.0))
 
 
 def draw_further(
