@@ -9,6 +9,7 @@ import itertools
 import math
 import re
 from pathlib import Path
+from typing import Any
 
 import pytest
 
@@ -23,6 +24,8 @@ from geomcad.sheet.drawing import SHORT_MM
 from geomcad.sheet.frame import TitleBlock
 from geomcad.sheet.linkage_forces import POLY_MM, force_position, load_sides
 from geomcad.sheet.loads import MOST_TIERS, NEGLIGIBLE, TIER_LIMIT, force_tiers
+from geomcad.sheet.model import CircleItem, Polyline, TextItem
+from geomcad.sheet.text import box as text_box
 from geomcad.sheet.views import (
     DETAIL_LEAST,
     DETAIL_MAX_MM,
@@ -34,6 +37,7 @@ from geomcad.sheet.views import (
 )
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
+TESTS = Path(__file__).resolve().parent / "linkages"
 LINKAGES = [
     p
     for p in sorted(EXAMPLES.glob("*.toml"))
@@ -153,6 +157,25 @@ def test_a_negligible_vector_is_named_under_the_caption_not_detailed() -> None:
     assert box[1] < notes[0].at[1] <= inner[1] and box[0] <= notes[0].at[0] < box[2]
 
 
+def test_a_plan_placed_coarser_than_its_details_were_reckoned_at_spills() -> None:
+    """A plan's extent holds its details as reckoned at its reference μ_F; placed at a coarser
+    μ_F in a box that scales that extent, its details (the same size in mm, and more of them)
+    would reach out of the box into the captions round it: :meth:`Polygon.spill` says by how
+    much (the forces sheet then reckons them again at that μ_F), and 0 where it fits."""
+    vs = chain([5000.0, 30.0, 400.0, 3000.0], ["F0", "F1", "F2", "F3"])
+    vs.append(PlanVector("R", vs[-1].head, Vec(0.0, 0.0)))
+    poly = ForcePolygon(Vec(0.0, 0.0), tuple(vs), ())
+    k = 40.0
+    p = Polygon(poly, detail=True, ref=(k, (300.0, 300.0)))
+    x0, y0, x1, y1 = p.extent() or (0.0, 0.0, 0.0, 0.0)
+    assert p.details
+    for kk in (k, 4.0 * k):
+        inner = (0.0, 0.0, (x1 - x0) / kk, (y1 - y0) / kk)
+        spill = p.spill(kk, inner)
+        assert spill <= 1e-6 if kk == k else spill > 5.0, (kk, spill)
+    assert Polygon(poly).spill(4.0 * k, (0.0, 0.0, 1.0, 1.0)) == 0.0  # no details: none
+
+
 @pytest.mark.parametrize(
     ("forces", "room", "tiers"),
     [
@@ -204,6 +227,53 @@ def test_forces_sheet_plans_are_large_and_tiers_few(path: Path) -> None:
             assert at and max(at) >= POLY_MM, (name, at)
     stars = [len(m) for t in sheet.texts() for m in re.findall(r"\*+", t.text)]
     assert max(stars, default=0) <= MOST_TIERS - 1
+
+
+def _reach(it: Any) -> list[tuple[float, float]]:
+    """The corners (sheet mm) of what an item covers: a line's points, a circle's box, a
+    text's box (its cap height above the baseline, a subscript below)."""
+    if isinstance(it, Polyline):
+        return [tuple(q) for q in it.points]
+    if isinstance(it, CircleItem):
+        return [(it.c[0] - it.r, it.c[1] - it.r), (it.c[0] + it.r, it.c[1] + it.r)]
+    if isinstance(it, TextItem):
+        w, up, down = text_box(it.runs, it.height)
+        return [(it.at[0], it.at[1] - up), (it.at[0] + w, it.at[1] + down)]
+    return []
+
+
+@pytest.mark.parametrize("path", [*LINKAGES, *sorted(TESTS.glob("*.toml"))], ids=lambda p: p.stem)
+def test_a_plan_and_its_details_keep_inside_its_box_under_its_caption(
+    path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """On the forces sheet of every example and test file, everything a force plan draws (its
+    vectors, their names, the circles and letters of its details, the details and their
+    captions) lies in the plan's box below its caption (the review's "И, Л" touching the caption
+    of the plan below, a plan running through titles), the line naming what it leaves out
+    under the caption; the boxes of the views never overlap, so it is clear of every title."""
+    from geomcad.sheet import views
+
+    rec: list[tuple[Polygon, Any, list[Any]]] = []
+    draw = views.Polygon.draw
+
+    def rec_draw(self: Polygon, d: Any, at: Any) -> None:
+        i = len(d.sheet.items)
+        draw(self, d, at)
+        rec.append((self, at, d.sheet.items[i:]))
+
+    monkeypatch.setattr(views.Polygon, "draw", rec_draw)
+    s = solve(geomcad.solve(str(path)).data.linkage)
+    if analyse(s).forces is None:
+        pytest.skip("no force analysis")
+    dict(geomcad.solve(str(path)).sheets())
+    assert rec
+    for p, at, items in rec:
+        x0, y0, x1, y1 = at.box
+        below = y0 + p.title_room()
+        for it in items:
+            top = y0 if isinstance(it, TextItem) and it.text.startswith(tuple(p.omitted)) else below
+            for x, y in _reach(it):
+                assert x0 <= x <= x1 and top <= y <= y1, (path.stem, p.title, it)
 
 
 def test_forces_at_one_lever_point_never_lie_over_one_another() -> None:

@@ -870,6 +870,17 @@ class Polygon(View):
     def title_room(self) -> float:
         return super().title_room() + (NOTE_H * TITLE_LEAD if self.note else 0.0)
 
+    def spill(self, k: float, inner: Extent) -> float:
+        """How far (mm) the polygon with its details, planned again at the μ_F ``k`` it is
+        placed at (as :meth:`draw` does), would reach out of the box ``inner`` (sheet mm) it is
+        centred in: 0 where it keeps within. Its extent was reckoned at the reference μ_F, and
+        a detail keeps its size in mm at any μ_F: at a coarser one it takes more of the room."""
+        if not self.detail:
+            return 0.0
+        w, h = inner[2] - inner[0], inner[3] - inner[1]
+        _, _, ext = self._with_details(k, iter(_ANY), (w * k, h * k))
+        return max((ext[2] - ext[0]) / k - w, (ext[3] - ext[1]) / k - h, 0.0)
+
     def lengths(self) -> Sequence[float]:
         out = []
         inset = {n for dt in self.details for n in dt.run} | set(self.omitted)
