@@ -9,6 +9,7 @@ import itertools
 import math
 import re
 from pathlib import Path
+from typing import Any
 
 import pytest
 
@@ -23,6 +24,8 @@ from geomcad.sheet.drawing import SHORT_MM
 from geomcad.sheet.frame import TitleBlock
 from geomcad.sheet.linkage_forces import POLY_MM, force_position, load_sides
 from geomcad.sheet.loads import MOST_TIERS, NEGLIGIBLE, TIER_LIMIT, force_tiers
+from geomcad.sheet.model import CircleItem, Polyline, TextItem
+from geomcad.sheet.text import box as text_box
 from geomcad.sheet.views import (
     DETAIL_LEAST,
     DETAIL_MAX_MM,
@@ -34,6 +37,7 @@ from geomcad.sheet.views import (
 )
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
+TESTS = Path(__file__).resolve().parent / "linkages"
 LINKAGES = [
     p
     for p in sorted(EXAMPLES.glob("*.toml"))
@@ -123,6 +127,55 @@ def test_details_are_one_level_beside_the_polygon() -> None:
     assert any(", " in letters for _, _, letters in spots)
 
 
+def test_a_negligible_vector_is_named_under_the_caption_not_detailed() -> None:
+    """A plan's vector under NEGLIGIBLE of its largest would need a detail at an absurd μ_F
+    (the review's 0.025 N/mm): it is in no detail, not drawn, and named on a line under the
+    plan's caption; a short vector above that share is still drawn in a detail at its μ_F, and
+    a polygon without the rule details both."""
+    vs = chain([5000.0, 2.0, 40.0, 3000.0], ["F0", "F1", "F2", "F3"])
+    vs.append(PlanVector("R", vs[-1].head, Vec(0.0, 0.0)))
+    poly = ForcePolygon(Vec(0.0, 0.0), tuple(vs), ())
+    assert 2.0 < NEGLIGIBLE * 5000.0 < 40.0
+    plain = Polygon(poly, detail=True)
+    assert {n for dt in plain.details for n in dt.run} >= {"F1", "F2"}
+    p = Polygon(poly, detail=True, negligible=(NEGLIGIBLE, lambda ns: "left out: " + ", ".join(ns)))
+    assert p.omitted == ["F1"] and p.note == "left out: F1"
+    d = start("A3", TitleBlock("t", "d"))
+    lay = compose(d, p)
+    sheet = d.finish()
+    runs = {n for dt in p.details for n in dt.run}
+    assert "F1" not in runs and "F2" in runs
+    assert min(dt.k for dt in p.details) > 2.0 / SHORT_MM  # no detail at the absurd μ_F
+    arrows = [(math.dist(t, h), sc.k) for t, h, sc in sheet.scaled]
+    drawn = [mm * k for mm, k in arrows]
+    assert not any(math.isclose(F, 2.0, rel_tol=1e-6) for F in drawn)
+    assert any(math.isclose(F, 40.0, rel_tol=1e-6) for F in drawn)
+    # the note on its line under the caption, inside the view's box, above the drawing
+    notes = [t for t in sheet.texts() if t.text == "left out: F1"]
+    assert len(notes) == 1
+    box, inner = lay[p].box, lay[p].inner
+    assert box[1] < notes[0].at[1] <= inner[1] and box[0] <= notes[0].at[0] < box[2]
+
+
+def test_a_plan_placed_coarser_than_its_details_were_reckoned_at_spills() -> None:
+    """A plan's extent holds its details as reckoned at its reference μ_F; placed at a coarser
+    μ_F in a box that scales that extent, its details (the same size in mm, and more of them)
+    would reach out of the box into the captions round it: :meth:`Polygon.spill` says by how
+    much (the forces sheet then reckons them again at that μ_F), and 0 where it fits."""
+    vs = chain([5000.0, 30.0, 400.0, 3000.0], ["F0", "F1", "F2", "F3"])
+    vs.append(PlanVector("R", vs[-1].head, Vec(0.0, 0.0)))
+    poly = ForcePolygon(Vec(0.0, 0.0), tuple(vs), ())
+    k = 40.0
+    p = Polygon(poly, detail=True, ref=(k, (300.0, 300.0)))
+    x0, y0, x1, y1 = p.extent() or (0.0, 0.0, 0.0, 0.0)
+    assert p.details
+    for kk in (k, 4.0 * k):
+        inner = (0.0, 0.0, (x1 - x0) / kk, (y1 - y0) / kk)
+        spill = p.spill(kk, inner)
+        assert spill <= 1e-6 if kk == k else spill > 5.0, (kk, spill)
+    assert Polygon(poly).spill(4.0 * k, (0.0, 0.0, 1.0, 1.0)) == 0.0  # no details: none
+
+
 @pytest.mark.parametrize(
     ("forces", "room", "tiers"),
     [
@@ -174,6 +227,53 @@ def test_forces_sheet_plans_are_large_and_tiers_few(path: Path) -> None:
             assert at and max(at) >= POLY_MM, (name, at)
     stars = [len(m) for t in sheet.texts() for m in re.findall(r"\*+", t.text)]
     assert max(stars, default=0) <= MOST_TIERS - 1
+
+
+def _reach(it: Any) -> list[tuple[float, float]]:
+    """The corners (sheet mm) of what an item covers: a line's points, a circle's box, a
+    text's box (its cap height above the baseline, a subscript below)."""
+    if isinstance(it, Polyline):
+        return [tuple(q) for q in it.points]
+    if isinstance(it, CircleItem):
+        return [(it.c[0] - it.r, it.c[1] - it.r), (it.c[0] + it.r, it.c[1] + it.r)]
+    if isinstance(it, TextItem):
+        w, up, down = text_box(it.runs, it.height)
+        return [(it.at[0], it.at[1] - up), (it.at[0] + w, it.at[1] + down)]
+    return []
+
+
+@pytest.mark.parametrize("path", [*LINKAGES, *sorted(TESTS.glob("*.toml"))], ids=lambda p: p.stem)
+def test_a_plan_and_its_details_keep_inside_its_box_under_its_caption(
+    path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """On the forces sheet of every example and test file, everything a force plan draws (its
+    vectors, their names, the circles and letters of its details, the details and their
+    captions) lies in the plan's box below its caption (the review's "И, Л" touching the caption
+    of the plan below, a plan running through titles), the line naming what it leaves out
+    under the caption; the boxes of the views never overlap, so it is clear of every title."""
+    from geomcad.sheet import views
+
+    rec: list[tuple[Polygon, Any, list[Any]]] = []
+    draw = views.Polygon.draw
+
+    def rec_draw(self: Polygon, d: Any, at: Any) -> None:
+        i = len(d.sheet.items)
+        draw(self, d, at)
+        rec.append((self, at, d.sheet.items[i:]))
+
+    monkeypatch.setattr(views.Polygon, "draw", rec_draw)
+    s = solve(geomcad.solve(str(path)).data.linkage)
+    if analyse(s).forces is None:
+        pytest.skip("no force analysis")
+    dict(geomcad.solve(str(path)).sheets())
+    assert rec
+    for p, at, items in rec:
+        x0, y0, x1, y1 = at.box
+        below = y0 + p.title_room()
+        for it in items:
+            top = y0 if isinstance(it, TextItem) and it.text.startswith(tuple(p.omitted)) else below
+            for x, y in _reach(it):
+                assert x0 <= x <= x1 and top <= y <= y1, (path.stem, p.title, it)
 
 
 def test_forces_at_one_lever_point_never_lie_over_one_another() -> None:

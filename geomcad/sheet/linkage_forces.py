@@ -282,6 +282,12 @@ def _final2(
     for h in (TEXT_H, SMALL_TEXT_H):
         tree, w = _sheet2(s, P, f, k, h, refs, shared)
         lay = arrange(tree, field)
+        # a plan placed at a coarser μ_F than its details were reckoned at may not hold them
+        # in its box (they would run into the captions round it): reckoned again at that μ_F
+        spilt = _spilt(lay)
+        if spilt:
+            tree, w = _sheet2(s, P, f, k, h, {**refs, **spilt}, shared)
+            lay = arrange(tree, field)
         tried.append((tree, formats.Sized(z.fmt, z.landscape, lay)))
         # on a smaller format than the largest, its polygons POLY_MM across as it was chosen
         # for (their details take some of their room: where neither text keeps them, the
@@ -303,6 +309,16 @@ def _final2(
     # neither fits: the one that keeps the rules, then the lesser overflow, then the larger text
     i = max((0, 1), key=lambda j: (rules[j], tried[j][1].layout.score[0]))
     return tried[i], rules[i]
+
+
+def _spilt(lay: Layout) -> dict[str, tuple[float, tuple[float, float]]]:
+    """The force plans of ``lay`` whose details, planned at the μ_F each got, reach out of
+    the boxes they are centred in past their margins (into the captions round them): their
+    μ_F and size there (new references, as :func:`_final2`'s). A detail's slot holds its
+    labels: one that runs into the margin but not past it is clear of the next caption."""
+    return {pl.view.title: (pl.scale.k, pl.size) for pl in lay
+            if isinstance(pl.view, Polygon) and pl.scale is not None
+            and pl.view.spill(pl.scale.k, pl.inner) > 2.0 * pl.view.margin}  # fmt: skip
 
 
 def _l_scales(lay: Layout) -> tuple[float, float]:
@@ -424,6 +440,7 @@ def _sheet2(
                 detail=refs is not None,
                 letters=letters,
                 ref=(refs or {}).get(_poly_title(gf, name)),
+                negligible=(NEGLIGIBLE, _negligible_note),
             )
             for name, poly in gf.polygons
         ]
@@ -692,6 +709,13 @@ def left_out(fs: ForceScales, named: Sequence[tuple[str, float]]) -> list[str]:
     as negligible (:attr:`ForceScales.negligible`)."""
     out = [load_name(n) for n, F in named if fs.zero < abs(F) <= fs.negligible]
     return list(dict.fromkeys(out))
+
+
+def _negligible_note(names: Sequence[str]) -> str:
+    """The line under a force plan's caption that names the vectors it leaves out as
+    negligible (under :data:`~geomcad.sheet.loads.NEGLIGIBLE` of its largest)."""
+    key = "negligible_one" if len(names) == 1 else "negligible"
+    return WORDS(key, names=", ".join(names), share=fmt_number(NEGLIGIBLE * 100.0))
 
 
 def draw_further(

@@ -42,6 +42,7 @@ from geomcad.kinematics.plan import Plan
 from geomcad.sheet.compose import (
     TITLE_GAP,
     TITLE_LEAD,
+    TITLE_SPACING,
     Extent,
     Placed,
     View,
@@ -229,6 +230,7 @@ def draw_polygon(
     height: float = 2.5,
     details: Sequence[Detail] = (),
     thin: bool = False,
+    omit: Iterable[str] = (),
 ) -> list[str]:
     """Draw ``poly`` through ``v`` at the viewport's μ_F: each vector head to tail, labelled
     beside its middle (``names`` maps a vector's name to label markup; default: the name),
@@ -238,8 +240,9 @@ def draw_polygon(
     элемент; :func:`draw_detail` draws them enlarged). ``thin``: the polygon lies along one
     line (two opposite reactions): its vectors are drawn side by side :data:`OFFSET_MM` apart,
     joined by thin lines, as a textbook draws them (two such: labelled "R₀₁ = −R₂₁"). Never
-    a dot: a vector outside every detail is an arrow however short. Returns the names of the
-    vectors left shorter than two arrowheads."""
+    a dot: a vector outside every detail is an arrow however short; those in ``omit`` (a
+    negligible share of the polygon, named under its caption) are not drawn. Returns the names
+    of the vectors left shorter than two arrowheads."""
     if found is None:
         known = {n for n, _ in poly.solved}
         found = known or ({poly.vectors[-1].name} if poly.vectors else set())
@@ -249,7 +252,8 @@ def draw_polygon(
     zero = _zero(poly)
     shift = _shifts(v, poly, in_detail) if thin else {}
     short: list[str] = []
-    drawn = [pv for pv in poly.vectors if pv.magnitude > zero]
+    omit = set(omit)
+    drawn = [pv for pv in poly.vectors if pv.magnitude > zero and pv.name not in omit]
     res = resultants(poly)
     # a component is labelled outside the triangle it makes with its resultant
     away: dict[str, Vec] = {}
@@ -491,11 +495,14 @@ def detail_letters(used: Iterable[str] = ()) -> Iterator[str]:
         yield from (f"{c}{i}" for c in base)
 
 
-def short_runs(vectors: Sequence[PlanVector], limit: float, closed: bool = True) -> list[list[str]]:
+def short_runs(
+    vectors: Sequence[PlanVector], limit: float, closed: bool = True, floor: float = 0.0
+) -> list[list[str]]:
     """The runs (head to tail; round the polygon when ``closed``) of the vectors shorter than
-    ``limit`` (and longer than round-off of zero): each is drawn enlarged in one detail."""
+    ``limit`` (and longer than round-off of zero, and than ``floor``: those a polygon leaves
+    out as negligible): each is drawn enlarged in one detail."""
     vs = list(vectors)
-    zero = tol.DERIVED * max((pv.magnitude for pv in vs), default=0.0)
+    zero = max(tol.DERIVED * max((pv.magnitude for pv in vs), default=0.0), floor)
     small = [zero < pv.magnitude < limit for pv in vs]
     if not any(small):
         return []
@@ -547,6 +554,8 @@ class Detail:
     box: Extent
     slot: Extent = (0.0, 0.0, 0.0, 0.0)
     cap: float = 0.0
+    #: the vectors up to this magnitude are left out (negligible): no line of them is joined
+    floor: float = 0.0
 
 
 def detail_k(mags: Sequence[float], k: float) -> float:
@@ -556,14 +565,17 @@ def detail_k(mags: Sequence[float], k: float) -> float:
     return min(nice_below(min(mags), DETAIL_MM).k, detail_scale(k, DETAIL_LEAST).k)
 
 
-def plan_details(poly: ForcePolygon, k_ref: float, letters: Iterator[str]) -> list[Detail]:
+def plan_details(
+    poly: ForcePolygon, k_ref: float, letters: Iterator[str], floor: float = 0.0
+) -> list[Detail]:
     """The details of ``poly`` drawn at μ_F ``k_ref``, all of one level: one per run of its
     vectors shorter than two arrowheads there (:func:`regroup` makes it one run where the
     polygon's order allows), at :func:`detail_k`; a run whose longest would then exceed
     :data:`DETAIL_MAX_MM` is cut, along the chain, into the fewest pieces that each keep
-    within it, each piece a detail of its own drawn beside the others (never inside)."""
+    within it, each piece a detail of its own drawn beside the others (never inside). The
+    vectors up to ``floor`` (negligible) are in none."""
     out = []
-    for run in short_runs(poly.vectors, SHORT_MM * k_ref):
+    for run in short_runs(poly.vectors, SHORT_MM * k_ref, floor=floor):
         pieces: list[list[str]] = []
         for n in run:
             piece = [*pieces[-1], n] if pieces else [n]
@@ -575,7 +587,7 @@ def plan_details(poly: ForcePolygon, k_ref: float, letters: Iterator[str]) -> li
         for piece in pieces:
             kd = detail_k([poly[n].magnitude for n in piece], k_ref)
             box = _bbox(q for n in piece for q in (poly[n].tail, poly[n].head))
-            out.append(Detail(tuple(piece), kd, next(letters), box))
+            out.append(Detail(tuple(piece), kd, next(letters), box, floor=floor))
     return out
 
 
@@ -715,7 +727,7 @@ def _stubs(poly: ForcePolygon, dt: Detail, kd: float) -> list[tuple[PlanVector, 
     """The lines (vector, from, to; :data:`STUB_MM` long at the detail's μ_F ``kd``) of the
     long vectors a detail's run joins, before its first and after its last."""
     order = list(poly.names)
-    zero = _zero(poly)
+    zero = max(_zero(poly), dt.floor)
     i, j = order.index(dt.run[0]), order.index(dt.run[-1])
     n = len(order)
     before = next(poly.vectors[(i - s) % n] for s in range(1, n + 1)
@@ -773,7 +785,10 @@ class Polygon(View):
     :data:`POLY_MM` long), within its room (w, h mm) where they can, and they are planned
     again at the μ_F drawn, within the box drawn. A
     polygon along one line is drawn with its vectors side by side
-    (:func:`draw_polygon`'s ``thin``)."""
+    (:func:`draw_polygon`'s ``thin``). ``negligible`` (share, note): with details, the vectors
+    of the last layer under that share of its largest (not zero) are neither drawn nor
+    detailed (a detail of them would be at an absurd μ_F); the note (given their names) says
+    so on a line under the caption (:attr:`omitted`)."""
 
     def __init__(
         self,
@@ -785,6 +800,7 @@ class Polygon(View):
         detail: bool = False,
         letters: Iterator[str] | None = None,
         ref: tuple[float, tuple[float, float]] | None = None,
+        negligible: tuple[float, Callable[[Sequence[str]], str]] | None = None,
         **kw: Any,
     ) -> None:
         kw.setdefault("title", WORDS("force_polygon"))
@@ -806,6 +822,18 @@ class Polygon(View):
         self.detail = detail and bool(self.layers)
         self.letters = letters
         self.k_ref = 1.0
+        #: the names of the last layer's vectors left out as negligible, the note naming them
+        self.omitted: list[str] = []
+        self.note = ""
+        self.floor = 0.0
+        if self.detail and negligible is not None:
+            vs = self.layers[-1][0].vectors
+            big = max((pv.magnitude for pv in vs), default=0.0)
+            zero = tol.DERIVED * big
+            self.floor = negligible[0] * big
+            self.omitted = [pv.name for pv in vs if zero < pv.magnitude <= self.floor]
+            if self.omitted:
+                self.note = negligible[1]([(names or {}).get(n, n) for n in self.omitted])
         if self.detail:
             # the room of the details as at the reference μ_F (they are planned again, and
             # lettered, at the μ_F the layout chooses)
@@ -825,7 +853,7 @@ class Polygon(View):
         """The details, thinness and extent (with the details' slots) of the polygon at
         μ_F ``k``."""
         poly = self.layers[-1][0]
-        details = plan_details(poly, k, letters)
+        details = plan_details(poly, k, letters, self.floor)
         thin = len(self.layers) == 1 and is_thin(poly, k)
         x0, y0, x1, y1 = _bbox(q for pv in poly.vectors for q in (pv.tail, pv.head))
         if thin:  # the room of the vectors side by side (their labels in the margin)
@@ -839,9 +867,23 @@ class Polygon(View):
     def extent(self) -> Extent | None:
         return self._ext
 
+    def title_room(self) -> float:
+        return super().title_room() + (NOTE_H * TITLE_LEAD if self.note else 0.0)
+
+    def spill(self, k: float, inner: Extent) -> float:
+        """How far (mm) the polygon with its details, planned again at the μ_F ``k`` it is
+        placed at (as :meth:`draw` does), would reach out of the box ``inner`` (sheet mm) it is
+        centred in: 0 where it keeps within. Its extent was reckoned at the reference μ_F, and
+        a detail keeps its size in mm at any μ_F: at a coarser one it takes more of the room."""
+        if not self.detail:
+            return 0.0
+        w, h = inner[2] - inner[0], inner[3] - inner[1]
+        _, _, ext = self._with_details(k, iter(_ANY), (w * k, h * k))
+        return max((ext[2] - ext[0]) / k - w, (ext[3] - ext[1]) / k - h, 0.0)
+
     def lengths(self) -> Sequence[float]:
         out = []
-        inset = {n for dt in self.details for n in dt.run}
+        inset = {n for dt in self.details for n in dt.run} | set(self.omitted)
         for poly, _ in self.layers:
             out += [pv.magnitude for pv in poly.vectors if pv.name not in inset]
         for dt in self.details:
@@ -862,11 +904,16 @@ class Polygon(View):
             centre = ((ext[0] + ext[2]) / 2.0, (ext[1] + ext[3]) / 2.0)
             v = Viewport(d, v.scale, centre[0], centre[1], v.at)
             at.viewport = v
+        if self.note:  # on a line of its own under the caption
+            lines = (self.title_lines - 1) * TITLE_SPACING
+            top = at.box[1] + self.title_height * (TITLE_LEAD + lines) + NOTE_H
+            d.text(self.note, (at.box[0], top), NOTE_H)
         for i, (poly, role) in enumerate(self.layers):
             last = i == len(self.layers) - 1
             self.points += draw_polygon(
                 v, poly, self.names, role, self.found, self.inward, self.label_height,
                 self.details if last else (), self.thin and last,
+                self.omitted if last else (),
             )  # fmt: skip
         if self.details:
             poly = self.layers[-1][0]
@@ -875,6 +922,8 @@ class Polygon(View):
                 draw_detail(v, poly, dt, self.names, found, self.label_height)
 
 
+#: The height (mm) of the line under a polygon's caption that names the vectors left out.
+NOTE_H = 2.5
 #: The letters of the details while their room is reckoned (those drawn come from the sheet's).
 _ANY = "W" * 99
 
