@@ -102,6 +102,7 @@ from geomcad.sheet.linkage import (
     table_number,
 )
 from geomcad.sheet.linkage import WORDS as KIN_WORDS
+from geomcad.sheet.linkage import layout as kinematic_layout
 from geomcad.sheet.loads import (
     NEGLIGIBLE,
     Clearance,
@@ -199,11 +200,16 @@ def force_layout(s: Solved) -> tuple[Tree, formats.Sized]:
     """Sheet 2's tree and its format and arrangement (:func:`_compose2`; for the size rules'
     bench and the tests: the scales and the format without drawing)."""
     P, forces, k = force_position(s)
-    return _compose2(s, P, forces, k, sheet_formats(s.linkage))
+    found = _compose2(s, P, forces, k, sheet_formats(s.linkage))
+    if not found[1].layout.fits and sweep_mm(s, crank_scale(s.linkage).k) > SWEEP_MAX_MM:
+        # the kinematic sheet's μ_l keeps the sheet from fitting: the mechanism as large as
+        # the field draws it
+        found = _compose2(s, P, forces, k, sheet_formats(s.linkage), kin=False)
+    return found
 
 
 def _compose2(
-    s: Solved, P: Position, f: Forces, k: int | None, fmts: Sequence[str]
+    s: Solved, P: Position, f: Forces, k: int | None, fmts: Sequence[str], kin: bool = True
 ) -> tuple[Tree, formats.Sized]:
     """Sheet 2's tree and its format and arrangement.
 
@@ -222,7 +228,7 @@ def _compose2(
     wants: list[dict[View, float]] = []
 
     def make(h: float, shared: bool) -> tuple[Tree, dict[View, float]]:
-        tree, w = _sheet2(s, P, f, k, h, shared=shared)
+        tree, w = _sheet2(s, P, f, k, h, shared=shared, kin=kin)
         wants.append(w)
         return tree, w
 
@@ -244,31 +250,33 @@ def _compose2(
             # (the format taken last in the list: fit tries the smaller ones with the scales
             # sought, as on any but the largest)
             _tree2, z2 = fit(lambda h: make(h, False), [*smaller, z.fmt] if ok else smaller)
-            if (reached(z2) and (not ok or z2.fmt != z.fmt)) or (not ok and _crank_kept(z2.layout)):
+            if (reached(z2) and (not ok or z2.fmt != z.fmt)) or (
+                not ok and z2.layout.fits and _crank_kept(z2.layout)
+            ):
                 own = z2
     if own is not None:
-        found, kept = _final2(s, P, f, k, own, False, order[-1])
+        found, kept = _final2(s, P, f, k, own, False, order[-1], kin)
         if kept or not ok:
             return found
-    found, kept = _final2(s, P, f, k, z, True, order[-1])
+    found, kept = _final2(s, P, f, k, z, True, order[-1], kin)
     larger = [fm for fm in order if area(fm) > area(z.fmt)]
     if kept or not larger:
         return found
     # the polygons' details leave the rules broken on this format: with the smaller text
-    tree_s, wants_s = _sheet2(s, P, f, k, SMALL_TEXT_H, shared=True)
+    tree_s, wants_s = _sheet2(s, P, f, k, SMALL_TEXT_H, shared=True, kin=kin)
     on = _on(tree_s, wants_s, z.fmt)
     if on is not None and on[1].layout.fits and formats.meets(on[1].layout, wants_s):
-        found, kept = _final2(s, P, f, k, on[1], True, order[-1])
+        found, kept = _final2(s, P, f, k, on[1], True, order[-1], kin)
         if kept:
             return found
     # the polygons' details leave the rules broken on this format: the next larger one
     _tree, z3 = fit(lambda h: make(h, True), larger)
-    return _final2(s, P, f, k, z3, True, order[-1])[0]
+    return _final2(s, P, f, k, z3, True, order[-1], kin)[0]
 
 
 def _final2(
     s: Solved, P: Position, f: Forces, k: int | None, z: formats.Sized, shared: bool,
-    largest: str,
+    largest: str, kin: bool = True,
 ) -> tuple[tuple[Tree, formats.Sized], bool]:  # fmt: skip
     """Sheet 2 on the format of ``z`` with its polygons' details reckoned at the μ_F each got
     there (see :func:`_compose2`), and whether it keeps the rules (where it does not on a format
@@ -280,13 +288,13 @@ def _final2(
     rules: list[bool] = []
     good: list[bool] = []
     for h in (TEXT_H, SMALL_TEXT_H):
-        tree, w = _sheet2(s, P, f, k, h, refs, shared)
+        tree, w = _sheet2(s, P, f, k, h, refs, shared, kin)
         lay = arrange(tree, field)
         # a plan placed at a coarser μ_F than its details were reckoned at may not hold them
         # in its box (they would run into the captions round it): reckoned again at that μ_F
         spilt = _spilt(lay)
         if spilt:
-            tree, w = _sheet2(s, P, f, k, h, {**refs, **spilt}, shared)
+            tree, w = _sheet2(s, P, f, k, h, {**refs, **spilt}, shared, kin)
             lay = arrange(tree, field)
         tried.append((tree, formats.Sized(z.fmt, z.landscape, lay)))
         # on a smaller format than the largest, its polygons POLY_MM across as it was chosen
@@ -389,11 +397,14 @@ def _num(x: float, digits: int = 4, scale: float = 0.0) -> str:
 def _sheet2(
     s: Solved, P: Position, f: Forces, k: int | None, h: float,
     refs: Mapping[str, tuple[float, tuple[float, float]]] | None = None, shared: bool = True,
+    kin: bool = True,
 ) -> tuple[Tree, dict[View, float]]:  # fmt: skip
     """Sheet 2's tree, its tables and texts ``h`` high, and the scales its views want. The
     force polygons are drawn with their details where ``refs`` gives their reference μ_F and
     room (mm; by their titles), else alone (for a first arrangement). The groups and the crank
-    cut out are drawn at the mechanism's μ_l (``shared``), else at one μ_l of their own."""
+    cut out are drawn at the mechanism's μ_l (``shared``), else at one μ_l of their own. Where
+    the sweep waives the crank's length, the mechanism is sought at the kinematic sheet's μ_l
+    (``kin``: where that fits)."""
     lk = s.linkage
     # the length scales from the geometry alone (a change of ω or of the loads rescales no
     # drawing of links): never finer than links_scale; the crank CRANK_MM long where the
@@ -405,6 +416,10 @@ def _sheet2(
     mech = _Loaded(lk, P, f, title)
     if sweep_mm(s, crank_scale(lk).k) <= SWEEP_MAX_MM:
         mech.readable, mech.readable_mm = lk.length, CRANK_MM
+    elif kin:
+        # the sweep waives the crank's length: the mechanism no coarser than the kinematic
+        # sheet draws it, where the format allows it (review 5: a crusher at 1:15 beside 1:5)
+        mech.readable, mech.readable_mm = lk.length, lk.length / kinematic_scale(s).k
     bodies = [_FreeBody(lk, P, gf) for gf in f.groups]
     # one μ_l for the mechanism and its cut-out groups and crank (issue 27, point 7): one scale
     # group, the coarsest any of them needs, stated in every caption
@@ -485,7 +500,7 @@ def _sheet2(
             # and on the largest format the search seeks it (its longest vector PLAN_SEEK_MM)
             p.readable = max(p.readable, big * p.readable_mm / PLAN_SEEK_MM)
     if mech.readable > 0.0:
-        wants[mech] = lk.length / CRANK_MM
+        wants[mech] = lk.length / mech.readable_mm
     return tree, wants
 
 
@@ -552,6 +567,12 @@ def links_scale(s: Solved) -> Scale:
     fits = [k for k in GOST_K if big / k <= SWEEP_MM * (1.0 + tol.REL_LENGTH)]
     sweep = min(fits) if fits else max(GOST_K)
     return Scale(min(crank_scale(s.linkage).k, sweep), "l")
+
+
+def kinematic_scale(s: Solved) -> Scale:
+    """The μ_l of the mechanism on the kinematic sheet (its layout, searched once per solution
+    and language): the forces sheet's mechanism is drawn no coarser where the format allows."""
+    return kinematic_layout(s).k_l
 
 
 def crank_scale(lk: Linkage) -> Scale:
