@@ -22,7 +22,7 @@ from geomcad.geom import PointLike, Vec
 from geomcad.sheet import symbols
 from geomcad.sheet.drawing import ARROW_HALF_WIDTH, ARROW_LEN, JOINT_R, SHORT_MM, Viewport, _arrow
 from geomcad.sheet.model import XY, CircleItem, Polyline, Sheet, TextItem
-from geomcad.sheet.scale import Scale, nice_factor
+from geomcad.sheet.scale import Scale, nice_below, nice_factor
 
 #: A moment arrow's sweep (rad) and the gap between its ends.
 MOMENT_SWEEP = math.radians(250.0)
@@ -146,18 +146,6 @@ TIER_LIMIT = 1.5
 NEGLIGIBLE = 0.001
 
 
-def _coarsest(value_min: float, mm: float) -> Scale:
-    """The largest factor 1, 2, 2.5, 4, 5 × 10^n at which ``value_min`` is at least ``mm``."""
-    raw = value_min / mm
-    e = math.floor(math.log10(raw))
-    for exp in (e, e - 1):
-        for m in (5.0, 4.0, 2.5, 2.0, 1.0):
-            k = m * 10.0**exp
-            if k <= raw * (1.0 + tol.REL_LENGTH):
-                return Scale(k, "F")
-    return Scale(10.0 ** (e - 1), "F")  # unreachable: 10^e ≤ raw always
-
-
 def force_tiers(forces: Iterable[float], room_mm: float) -> ForceScales:
     """The force scales of a view with few tiers (a teacher accepts the view's μ_F and one
     μ_F* stated under its caption): every force an arrow at least :data:`SHORT_MM` long at a
@@ -187,7 +175,7 @@ def force_tiers(forces: Iterable[float], room_mm: float) -> ForceScales:
     # bands from the smallest force up: (their smallest, their largest)
     bands: list[list[float]] = []
     for F in live:
-        if bands and F / _coarsest(bands[-1][0], SHORT_MM).k <= limit * (1.0 + tol.DERIVED):
+        if bands and F / nice_below(bands[-1][0], SHORT_MM).k <= limit * (1.0 + tol.DERIVED):
             bands[-1][1] = F
         else:
             bands.append([F, F])
@@ -205,9 +193,9 @@ def force_tiers(forces: Iterable[float], room_mm: float) -> ForceScales:
             bands = bands[len(low) :]
     while len(bands) > MOST_TIERS:
         i = min(range(len(bands) - 1),
-                key=lambda j: bands[j + 1][1] / _coarsest(bands[j][0], SHORT_MM).k)  # fmt: skip
+                key=lambda j: bands[j + 1][1] / nice_below(bands[j][0], SHORT_MM).k)  # fmt: skip
         bands[i : i + 2] = [[bands[i][0], bands[i + 1][1]]]
-    scales = [top if b[0] / top.k >= short else _coarsest(b[0], SHORT_MM) for b in reversed(bands)]
+    scales = [top if b[0] / top.k >= short else nice_below(b[0], SHORT_MM) for b in reversed(bands)]
     return ForceScales(tuple(dict.fromkeys(scales)), zero, negligible)
 
 

@@ -232,3 +232,15 @@ def nice_factor(
             if k >= raw:
                 return Scale(k, q)
     return Scale(10.0 ** (e + 2), q)  # unreachable: 10^(e+1) ≥ raw always
+
+
+def nice_below(value_min: float, mm: float, q: Literal["F"] = "F") -> Scale:
+    """The largest factor 1, 2, 2.5, 4, 5 × 10^n at which ``value_min`` is at least ``mm``."""
+    raw = value_min / mm
+    e = math.floor(math.log10(raw))
+    for exp in (e, e - 1):
+        for m in (5.0, 4.0, 2.5, 2.0, 1.0):
+            k = m * 10.0**exp
+            if k <= raw * (1.0 + tol.REL_LENGTH):
+                return Scale(k, q)
+    return Scale(10.0 ** (e - 1), q)  # unreachable

@@ -61,7 +61,7 @@ from geomcad.sheet.graph import Axis, Graph, nice_step
 from geomcad.sheet.lang import Words, current
 from geomcad.sheet.model import Polyline
 from geomcad.sheet.plans import LINE_OVER_MM, markup_of, plan_lines
-from geomcad.sheet.scale import Scale, ScaleStyle, fmt_number, nice_factor
+from geomcad.sheet.scale import Scale, ScaleStyle, fmt_number, nice_below, nice_factor
 from geomcad.sheet.scheme import Body, draw_scheme
 from geomcad.sheet.text import balanced, break_points, metrics, wrap, wrap_balanced
 from geomcad.structure import Mechanism
@@ -520,18 +520,6 @@ def short_runs(
     if cur:
         runs.append(cur)
     return runs
-
-
-def nice_below(value_min: float, mm: float, q: Literal["F"] = "F") -> Scale:
-    """The largest factor 1, 2, 2.5, 4, 5 × 10^n at which ``value_min`` is at least ``mm``."""
-    raw = value_min / mm
-    e = math.floor(math.log10(raw))
-    for exp in (e, e - 1):
-        for m in (5.0, 4.0, 2.5, 2.0, 1.0):
-            k = m * 10.0**exp
-            if k <= raw * (1.0 + tol.REL_LENGTH):
-                return Scale(k, q)
-    return Scale(10.0 ** (e - 1), q)  # unreachable
 
 
 def detail_scale(k: float, m: float) -> Scale:
