@@ -17,6 +17,7 @@ import pytest
 from geomcad.linkage.model import parse
 from geomcad.linkage.solution import solve
 from geomcad.sheet.drawing import ARROW_LEN
+from geomcad.sheet.loads import chord_points
 from geomcad.sheet.model import XY, ArcItem, CircleItem, Polyline, TextItem
 from geomcad.sheet.scale import fmt_column
 
@@ -116,17 +117,8 @@ def _lines(items: list[Any], roles: set[str]) -> list[tuple[XY, XY]]:
     for it in items:
         if isinstance(it, TextItem) or it.role not in roles:
             continue
-        if isinstance(it, Polyline):
-            pts = list(it.points) + ([it.points[0]] if it.closed else [])
-        elif isinstance(it, CircleItem):
-            a = np.linspace(0.0, 2.0 * math.pi, 25)
-            pts = [(it.c[0] + it.r * math.cos(t), it.c[1] + it.r * math.sin(t)) for t in a]
-        else:
-            assert isinstance(it, ArcItem)
-            a0 = math.atan2(it.start[1] - it.c[1], it.start[0] - it.c[0])
-            a = np.linspace(a0, a0 + it.sweep, 17)
-            pts = [(it.c[0] + it.r * math.cos(t), it.c[1] + it.r * math.sin(t)) for t in a]
-        out += list(itertools.pairwise(pts))
+        assert isinstance(it, Polyline | CircleItem | ArcItem)
+        out += list(itertools.pairwise(chord_points(it)))
     return out
 
 

@@ -21,7 +21,7 @@ from geomcad import tol
 from geomcad.geom import PointLike, Vec
 from geomcad.sheet import symbols
 from geomcad.sheet.drawing import ARROW_HALF_WIDTH, ARROW_LEN, JOINT_R, SHORT_MM, Viewport, _arrow
-from geomcad.sheet.model import XY, CircleItem, Polyline, Sheet, TextItem
+from geomcad.sheet.model import XY, ArcItem, CircleItem, Polyline, Sheet, TextItem
 from geomcad.sheet.scale import Scale, nice_below, nice_factor
 
 #: A moment arrow's sweep (rad) and the gap between its ends.
@@ -224,6 +224,19 @@ SLIDE_MM = 60.0
 _STEP = 0.5
 
 
+def chord_points(it: Polyline | CircleItem | ArcItem) -> list[XY]:
+    """A drawn line's points in sheet mm, in order: a polyline's (closed: back to its first), a
+    circle's or an arc's as a chord polygon (24 and 16 chords)."""
+    if isinstance(it, Polyline):
+        return list(it.points) + ([it.points[0]] if it.closed else [])
+    if isinstance(it, CircleItem):
+        a = np.linspace(0.0, 2.0 * math.pi, 25)
+        return [(it.c[0] + it.r * math.cos(t), it.c[1] + it.r * math.sin(t)) for t in a]
+    a0 = math.atan2(it.start[1] - it.c[1], it.start[0] - it.c[0])
+    a = np.linspace(a0, a0 + it.sweep, 17)
+    return [(it.c[0] + it.r * math.cos(t), it.c[1] + it.r * math.sin(t)) for t in a]
+
+
 @dataclass
 class Clearance:
     """Where the force arrows of a free body go: each on its line of action, at its point of
@@ -259,15 +272,7 @@ class Clearance:
         for it in items[max(done, self.start) :]:
             if isinstance(it, TextItem):
                 continue
-            if isinstance(it, Polyline):
-                pts = list(it.points) + ([it.points[0]] if it.closed else [])
-            elif isinstance(it, CircleItem):
-                a = np.linspace(0.0, 2.0 * math.pi, 25)
-                pts = [(it.c[0] + it.r * math.cos(t), it.c[1] + it.r * math.sin(t)) for t in a]
-            else:
-                a0 = math.atan2(it.start[1] - it.c[1], it.start[0] - it.c[0])
-                a = np.linspace(a0, a0 + it.sweep, 17)
-                pts = [(it.c[0] + it.r * math.cos(t), it.c[1] + it.r * math.sin(t)) for t in a]
+            pts = chord_points(it)
             out += [(a_, b_) for a_, b_ in itertools.pairwise(pts) if a_ != b_]
         found = np.concatenate([known, np.array(out, dtype=float).reshape(-1, 2, 2)])
         self._segments = (len(items), found)
