@@ -86,6 +86,8 @@ SMALL_TEXT_H = 2.5
 #: How much of the layout search's score (Σ weight·log(drawn area)) the larger text may cost
 #: the views on the largest format before the text is written :data:`SMALL_TEXT_H` high.
 TEXT_COST = 1.0
+#: The title block's Масштаб on a sheet with no one scale of lengths (ESKD: a dash).
+NO_SCALE = "\u2014"
 #: The views' titles (mm).
 TITLE_H = 5.0
 #: At most this many velocity plans share the first sheet with the mechanism.
@@ -148,7 +150,9 @@ def _on(tree: Tree, wants: Mapping[View, float], fmt: str) -> tuple[Tree, format
 
 
 def fit(
-    make: Callable[[float], tuple[Tree, Mapping[View, float]]], fmts: Sequence[str]
+    make: Callable[[float], tuple[Tree, Mapping[View, float]]],
+    fmts: Sequence[str],
+    readable: bool = False,
 ) -> tuple[Tree, formats.Sized]:
     """The tree ``make(h)`` builds, its tables and texts written ``h`` high, and its format: the
     smallest of ``fmts`` (in landscape) on which it fits with the scales it wants
@@ -160,7 +164,10 @@ def fit(
     :data:`TEXT_COST` of the search's score (Σ weight·log(drawn area): a mechanism drawn at
     1:4 instead of 1:2.5 costs about 1.9). ``make`` builds new views each time (the search
     marks the views it arranges). The largest format's arrangement is the joint search of a
-    :class:`Choice` (it finds better splits than its arrangements one by one)."""
+    :class:`Choice` (it finds better splits than its arrangements one by one). ``readable``:
+    the larger text wherever the views keep their wanted scales with it, whatever it costs
+    them beyond (a kinematic sheet's tables and order read at 3.5 mm where the crank and pa
+    keep their rules' lengths: the blank field is the text's to take)."""
     order = sorted(fmts, key=lambda f: FORMATS[f][0] * FORMATS[f][1])
     for fmt in order[:-1]:
         for h in dict.fromkeys((text_height((fmt,)), SMALL_TEXT_H)):
@@ -175,13 +182,18 @@ def fit(
             if not reached:
                 break  # smaller text does not bring the views to their scales
     tried: list[tuple[Tree, formats.Sized]] = []
+    kept: list[bool] = []
     for h in dict.fromkeys((text_height(order[-1:]), SMALL_TEXT_H)):
-        tree, _ = make(h)
+        tree, wants = make(h)
         fmt, land = next(formats.candidates(order[-1:]))
         tried.append((tree, formats.Sized(fmt, land, arrange(tree, Field.of_format(fmt, land)))))
+        kept.append(bool(wants) and formats.meets(tried[-1][1].layout, wants))
     # the larger text where it fits and costs the views at most TEXT_COST of the search's score
+    # (``readable``: or keeps them at their wanted scales)
     big, small = tried[0][1].layout, tried[-1][1].layout
-    if big.fits and (not small.fits or big.score[1] >= small.score[1] - TEXT_COST):
+    if big.fits and (
+        not small.fits or big.score[1] >= small.score[1] - TEXT_COST or (readable and kept[0])
+    ):
         return tried[0]
     return tried[-1] if small.fits else tried[0]
 
@@ -371,9 +383,9 @@ def _arranged(s: Solved) -> tuple[Layout, tuple[Arranged, ...]]:
 
     def attempt() -> tuple[list[tuple[Tree, formats.Sized]], _Mechanism, bool]:
         made.clear()
-        first = fit(make(0), fmts)
+        first = fit(make(0), fmts, readable=True)
         trees_all, mech, second, _ = made_of(first[0])
-        fitted = [first] + [fit(make(i), fmts) for i in range(1, len(trees_all))]
+        fitted = [first] + [fit(make(i), fmts, True) for i in range(1, len(trees_all))]
         return fitted, mech, second
 
     fitted, mech, second = attempt()
@@ -470,7 +482,9 @@ def _title(
     return TitleBlock(
         title=sheet_name(lk, what),
         designation=designation,
-        scale=k.ratio_text() if k is not None else "",
+        # a sheet with no one scale (the velocity plans' sheet, each plan at μ_V) says so:
+        # a dash, never an empty cell
+        scale=k.ratio_text() if k is not None else NO_SCALE,
         sheet_no=no,
         sheets=count,
         lang=current(),
