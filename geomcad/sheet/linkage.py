@@ -467,6 +467,8 @@ def kinematic_sheets(s: Solved, stem: str = "") -> list[tuple[str, Sheet]]:
     first = d.finish()
     for pl in lays[0]:  # a link's number never reads as a position's
         if isinstance(pl.view, _Mechanism | _CrankDetail):
+            if isinstance(pl.view, _Mechanism):
+                keep_tracks_apart(first, pl.box, pl.view.tracks, pl.view.rows)
             keep_link_numbers_clear(first, pl.box)
     out: list[tuple[str, Sheet]] = [("", first)]
     if lay.second:
@@ -738,6 +740,10 @@ class _Mechanism(View):
         self._ext = _mechanism_extent(s)
         #: the letter of the crank's detail view (:class:`_CrankDetail`), where there is one
         self.detail: str | None = None
+        #: each numbered track's points as drawn (paper mm), for :func:`keep_tracks_apart`
+        self.tracks: dict[str, list[tuple[float, float]]] = {}
+        #: the boxes of each track's numbers set in rows (paper mm)
+        self.rows: dict[str, list[Box]] = {}
 
     def extent(self) -> tuple[float, float, float, float]:
         return self._ext
@@ -815,15 +821,33 @@ class _Mechanism(View):
         # the positions numbered last, clear of every line drawn
         numbered: list[Vec] = []
         taken: list[Box] = []
-        for name in traced:
+        for name in numbered_tracks(lk):
             pts = [P.pos[name] for P in s.drawn]
             if name == lk.joint and self.detail is not None:
                 mark_detail(v, lk.frame[lk.pivot], lk.length, self.detail)
                 continue  # the crank's positions are numbered on its detail view
+            self.tracks[name] = [v.p(q) for q in pts]
             vels = [P.vel[name] for P in s.drawn]
             clear = GUIDE_CLEAR_MM if name in guided else 0.0
+            rowed = len(taken)
             position_numbers(v, pts, vels, lk.frame[lk.pivot], numbered, clear, taken)
+            self.rows[name] = taken[rowed:]
             numbered = pts
+
+
+def numbered_tracks(lk: Linkage) -> tuple[str, ...]:
+    """The points whose positions the mechanism's view numbers: the crank's joint, the output
+    and every named point, but a centre of mass that is nothing more (no group hangs on it, no
+    load acts at it): its path is drawn and dotted, its letter stands at the principal position,
+    and its positions follow from its link's, which are numbered; numbers of its own would only
+    stand among the joints' ones (S3's "9", "10" beside the crank circle's)."""
+    centres = {m.centre for m in lk.masses.values()}
+    hung = {q for g in lk.groups for q in g.known} | {ld.point for ld in lk.loads if ld.point}
+    return tuple(
+        name
+        for name in dict.fromkeys((lk.joint, lk.output, *(p.name for p in lk.points)))
+        if name in (lk.joint, lk.output) or name not in centres or name in hung
+    )
 
 
 #: The crank is drawn enlarged on a detail view of its own where the mechanism's scale draws it
@@ -1276,7 +1300,7 @@ def _overlaps(a: Box, b: Box) -> bool:
 #: that the two never read as one ("5" beside B's "10 3 11 4"); moved round its point in
 #: steps of LINK_STEP_MM up to LINK_REACH_MM, with a leader where it stands further than
 #: LINK_LEADER_MM from its point.
-LINK_CLEAR_MM, LINK_STEP_MM, LINK_REACH_MM, LINK_LEADER_MM = 3.0, 0.5, 20.0, 5.0
+LINK_CLEAR_MM, LINK_STEP_MM, LINK_REACH_MM, LINK_LEADER_MM = 5.0, 0.5, 20.0, 5.0
 #: Texts side by side read as one line: a link's number keeps LINK_CLEAR_MM times this from a
 #: position's number beside it in its line (a row of numbers is read along).
 LINK_ALONG = 3.0
@@ -1293,6 +1317,14 @@ def _gap(a: Box, b: Box, along: float = 1.0) -> float:
     divided by ``along``."""
     dx, dy = max(a[0] - b[2], b[0] - a[2], 0.0), max(a[1] - b[3], b[1] - a[3], 0.0)
     return math.hypot(dx / along, dy)
+
+
+def _apart(a: Box, b: Box) -> float:
+    """How far (mm) a link's number ``a`` stands from a position's number ``b`` as read: in
+    a row of numbers (beside it) or a column of them (over it, along a vertical guide), its
+    distance along that line counts :data:`LINK_ALONG` times less."""
+    return min(_gap(a, b, LINK_ALONG), _gap((a[1], a[0], a[3], a[2]), (b[1], b[0], b[3], b[2]),
+                                            LINK_ALONG))  # fmt: skip
 
 
 def _through_text(p: tuple[float, float], b: Box, boxes: Sequence[Box]) -> bool:
@@ -1332,7 +1364,7 @@ def keep_link_numbers_clear(sheet: Sheet, area: Box) -> None:
             continue
         b = _text_box(t)
         if t.text.isdigit():
-            if all(_gap(b, n, LINK_ALONG) >= LINK_CLEAR_MM for n in numbers):
+            if all(_apart(b, n) >= LINK_CLEAR_MM for n in numbers):
                 continue
         elif not ("A" <= t.text[:1] <= "Z" and thin.crossed([b], 0.0)):
             continue  # a point's letter moves only where a thin position's line runs through it
@@ -1352,13 +1384,119 @@ def keep_link_numbers_clear(sheet: Sheet, area: Box) -> None:
                     area[0] <= c[0] and c[2] <= area[2] and area[1] <= c[1] and c[3] <= area[3]
                 ):
                     continue
-                if any(_gap(c, n, LINK_ALONG) < LINK_CLEAR_MM for n in numbers):
+                if any(_apart(c, n) < LINK_CLEAR_MM for n in numbers):
                     continue
                 if any(_gap(c, o) < NUMBER_SPACE for o in others) or ink.crossed([c]):
                     continue
                 if r > LINK_LEADER_MM and _through_text(p, c, others):
                     continue  # its leader would run through another text
                 found = c
+                break
+        if found is None:
+            continue
+        i = next(k for k, it in enumerate(sheet.items) if it is t)
+        moved = replace(t, at=(found[0], found[3] - 0.3 * t.height))
+        sheet.items[i] = moved
+        sheet.anchors = [(moved if it is t else it, at) for it, at in sheet.anchors]
+        current[id(t)] = found
+        if r > LINK_LEADER_MM:
+            _leader(sheet, p, found)
+            ink = _Ink(sheet)
+
+
+#: A position's number stands at least this much (mm) nearer its own point than any point or
+#: number of another track (S3's "9" beside the crank circle's "9" reads as either); else it
+#: moves round its point, as a link's number does (LINK_STEP_MM up to TRACK_REACH_MM).
+TRACK_MARGIN_MM, TRACK_REACH_MM = 1.5, 12.0
+
+
+def _to_box(p: tuple[float, float], b: Box) -> float:
+    """The distance (mm) from the point ``p`` to the box ``b`` (0 inside it)."""
+    return math.hypot(max(b[0] - p[0], p[0] - b[2], 0.0), max(b[1] - p[1], p[1] - b[3], 0.0))
+
+
+def keep_tracks_apart(
+    sheet: Sheet,
+    area: Box,
+    tracks: Mapping[str, Sequence[tuple[float, float]]],
+    rows: Mapping[str, Sequence[Box]],
+) -> None:
+    """Each position's number in ``area`` (a view's box on the finished sheet) that stands
+    nearer than :data:`TRACK_MARGIN_MM` beyond its own point to a point or a number of another
+    of the ``tracks`` (each track's numbered points, paper mm) moves to the nearest place round
+    its point where it does not, clear of every other text and of every drawn line, with a
+    leader where it stands further than :data:`LINK_LEADER_MM` from its point: the numbers of
+    two paths never interleave (a rocker's centre of mass numbered among the crank circle's
+    numbers). ``rows``: each track's numbers set in rows (their boxes), which stay where they
+    are. Where no place within :data:`TRACK_REACH_MM` does, it stays."""
+
+    def track_of(p: tuple[float, float]) -> str | None:
+        return next((k for k, pts in tracks.items() if any(math.dist(p, q) < 1e-6 for q in pts)),
+                    None)  # fmt: skip
+
+    def inside(t: TextItem) -> bool:
+        return area[0] <= t.at[0] <= area[2] and area[1] <= t.at[1] <= area[3]
+
+    anchors = {id(item): at for item, at in sheet.anchors}
+    texts = [t for t in sheet.texts() if inside(t)]
+    numbers = [t for t in texts if t.role == "label" and t.text.isdigit()
+               and t.height == NUMBER_H and id(t) in anchors]  # fmt: skip
+    owner = {id(t): track_of(anchors[id(t)]) for t in numbers}
+    current = {id(o): _text_box(o) for o in texts}
+    ink = _Ink(sheet)
+    for t in numbers:
+        name = owner[id(t)]
+        if name is None:
+            continue
+        p = anchors[id(t)]
+        foreign_pts = [q for k, pts in tracks.items() if k != name for q in pts
+                       if math.dist(q, p) >= SHARE_MM]  # fmt: skip
+        foreign = [id(o) for o in numbers if owner[id(o)] not in (None, name)]
+        foreign_rows = [b for k, bs in rows.items() if k != name for b in bs]
+
+        def confused(
+            c: Box,
+            p: tuple[float, float] = p,
+            pts: Sequence[tuple[float, float]] = foreign_pts,
+            nums: Sequence[int] = foreign,
+            boxes: Sequence[Box] = foreign_rows,
+        ) -> bool:
+            near = min(
+                (
+                    *(_to_box(q, c) for q in pts),
+                    *(_gap(c, current[k]) for k in nums),
+                    *(_gap(c, b) for b in boxes),
+                ),
+                default=math.inf,
+            )
+            return near < _to_box(p, c) + TRACK_MARGIN_MM
+
+        b = current[id(t)]
+        if not confused(b):
+            continue
+        others = [bx for k, bx in current.items() if k != id(t)]
+        w, h = b[2] - b[0], b[3] - b[1]
+        found: Box | None = None
+        r = 0.0
+        crossed = ink.crossed([b])  # a place crossed by no more lines than its own
+        for step in range(1, round(TRACK_REACH_MM / LINK_STEP_MM) + 1):
+            r = step * LINK_STEP_MM
+            for ux, uy in _LINK_DIRS:
+                cx, cy = p[0] + ux * (r + w / 2.0), p[1] + uy * (r + h / 2.0)
+                c = (cx - w / 2.0, cy - h / 2.0, cx + w / 2.0, cy + h / 2.0)
+                if not (
+                    area[0] <= c[0] and c[2] <= area[2] and area[1] <= c[1] and c[3] <= area[3]
+                ):
+                    continue
+                if confused(c) or any(_gap(c, o) < NUMBER_SPACE for o in others):
+                    continue
+                if ink.crossed([c]) > crossed or (
+                    r > LINK_LEADER_MM and _through_text(p, c, others)
+                ):
+                    continue
+                found = c
+                break
+            if found is not None:
                 break
         if found is None:
             continue
