@@ -108,3 +108,23 @@ def test_a_links_number_stands_off_a_column_of_numbers(name: str) -> None:
     for lt in links:
         b = _text_box(lt)
         assert all(L._apart(b, n) >= L.LINK_CLEAR_MM - 1e-9 for n in numbers), lt.text
+
+
+def test_an_offset_slots_arm_is_drawn_in_the_principal_position_only() -> None:
+    """The thin positions' slots start at their feet on the offset's circle, with no arm from
+    the pivot (twelve arms once melted into one blot at C); the principal position keeps its
+    arm C–foot."""
+    from geomcad.sheet.linkage import link_bodies
+
+    s = _solved("rocking_kulisa_moment")
+    lk = s.linkage
+    C = lk.frame["C"]
+    (g,) = lk.groups
+    e = abs(g.offset)
+    assert e > 0.0
+    for P in s.drawn:
+        (thin,) = link_bodies(lk, P, axes=True)["3"]
+        assert min(q.dist(C) for q in thin.points) >= e * (1.0 - 1e-9)  # from its foot on
+        assert any(abs(q.dist(C) - e) <= 1e-9 * e for q in thin.points)
+        (main,) = link_bodies(lk, P)["3"]
+        assert any(q.dist(C) <= 1e-12 for q in main.points)  # the arm from the pivot

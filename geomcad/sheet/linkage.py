@@ -565,7 +565,9 @@ def link_bodies(
     side; 0: the slot as its axis line. ``axes``: each link through its pairs only, a point
     no other link carries (a coupler point M, a centre of mass) left out: a thin position's
     drawing, where the coupler's triangle in every position would weave a web (the point's
-    path and numbers show it)."""
+    path and numbers show it); an offset slot without its arm from the pivot (the arms of
+    every position would melt into one blot at the pivot: the slots touch the offset's
+    circle, drawn once)."""
     out: dict[str, list[Body]] = {}
     carried: dict[str, int] = {}
     if axes:
@@ -589,9 +591,12 @@ def link_bodies(
             # farther (a slot runs on past its block; a link ends at its last joint)
             far = max([(q - C).dot(d) for q in uniq] + [(P.pos[g.slider] - C).dot(d) * SLOT_PAST])
             foot = C + d.perp() * g.offset
-            out[str(link)] = (
-                [Body.of([C, foot, foot + d * far])] if g.offset else [Body.of([C, C + d * far])]
-            )
+            if not g.offset:
+                out[str(link)] = [Body.of([C, C + d * far])]
+            elif axes:  # a thin position: its slot alone, tangent to the offset's circle
+                out[str(link)] = [Body.of([foot, foot + d * far])]
+            else:
+                out[str(link)] = [Body.of([C, foot, foot + d * far])]
             continue
         if len(uniq) == 2:
             out[str(link)] = [Body.of(uniq)]
@@ -755,6 +760,9 @@ class _Mechanism(View):
         v.circle(lk.frame[lk.pivot], lk.length, "centre")
         for path in _paths(lk).values():
             v.polyline(path, "centre")
+        for g in lk.groups:  # an offset slot's circle: the thin positions' slots touch it
+            if g.kind == "RPR" and g.offset:
+                _offset_arc(v, g, s.drawn)
         # every other position in thin lines, numbered at the crank's joint and the output; the
         # principal one (the force analysis' position, else position 0) in main lines
         P0, k0 = _principal(s)
@@ -848,6 +856,37 @@ def numbered_tracks(lk: Linkage) -> tuple[str, ...]:
         for name in dict.fromkeys((lk.joint, lk.output, *(p.name for p in lk.points)))
         if name in (lk.joint, lk.output) or name not in centres or name in hung
     )
+
+
+#: The offset's arc runs this far (degrees) past the outermost feet of the slots.
+OFFSET_ARC_PAST_DEG = 8.0
+
+
+def _offset_arc(v: Viewport, g: Group, drawn: Sequence[Position]) -> None:
+    """The circle of an RPR group's slot offset e round its pivot, which every position's slot
+    touches at its foot, drawn thin over the feet of the positions ``drawn`` (the arc they
+    span, a little past the outermost; the whole circle where the slot turns round)."""
+    link = g.links[1]
+    C = drawn[0].pos[g.pivot]
+    feet = sorted(
+        math.atan2(f.y, f.x) % (2.0 * math.pi)
+        for f in (P.slide[link].perp() * g.offset for P in drawn)
+    )
+    gaps = [(b - a, a) for a, b in itertools.pairwise([*feet, feet[0] + 2.0 * math.pi])]
+    gap, at = max(gaps)
+    past = math.radians(OFFSET_ARC_PAST_DEG)
+    if gap <= 2.0 * past:
+        v.circle(C, abs(g.offset), "thin")
+        return
+    a0 = at + gap - past  # the arc runs from the far side of the largest gap round to its start
+    sweep = 2.0 * math.pi - gap + 2.0 * past
+    n = max(8, int(math.degrees(sweep) / 3.0))
+    r = abs(g.offset)
+    v.polyline(
+        [C + Vec(math.cos(a0 + sweep * k / n), math.sin(a0 + sweep * k / n)) * r
+         for k in range(n + 1)],
+        "thin",
+    )  # fmt: skip
 
 
 #: The crank is drawn enlarged on a detail view of its own where the mechanism's scale draws it
