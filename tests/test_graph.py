@@ -114,3 +114,47 @@ def test_tick_values_stay_clear_of_the_curves() -> None:
     assert "1,2" not in {t.text for t in values}  # crossed by the marker: left out
     assert {"0,8", "1,6"} <= {t.text for t in row}
     assert not [f for f in findings(sheet) if f.kind in ("tick-label", "label-line")]
+
+
+def _axis_values(sheet_texts: list[tuple[str, float, float]], x: float) -> list[str]:
+    return [t for t, tx, _ in sheet_texts if abs(tx - x) < 1e-6]
+
+
+@pytest.mark.parametrize(
+    ("lo", "hi", "room"), [(0.0, 0.023, 115.0), (13.3, 14.7, 140.0), (-27.0, 1.2, 70.0),
+                           (0.0, 9.04, 60.0), (-0.3, 2.5e-4, 50.0)]
+)  # fmt: skip
+def test_one_decimal_count_per_axis(lo: float, hi: float, room: float) -> None:
+    """Every value written along an axis has its axis's decimals (0,016 and 0,020, never 0,02
+    beside 0,016; 14,0 beside 14,1): those of the tick step, the same for every tick."""
+    d = start("A3", TitleBlock(title="t", designation="x"))
+    ay = Axis.fit("S", "м", lo, hi, room)
+    n = len(d.sheet.items)
+    g = Graph(d, Axis.fit("φ", "град", 0.0, 360.0, 180.0).with_tick(30.0), ay, (60.0, 200.0))
+    g.axes()
+    left = min(g.at[0], g.box[0]) - 1.5 - 0.8
+    texts = [it for it in d.sheet.items[n:] if isinstance(getattr(it, "text", None), str)]
+    ys = [t.text for t in texts if abs(t.at[0] + t.width - left) < 1e-6 or t.at[0] < left - 1.0]
+    ys = [t for t in ys if any(c.isdigit() for c in t) and t != "0"]
+    assert len(ys) >= 3
+    decimals = {len(t.split(",")[1]) if "," in t else 0 for t in ys}
+    assert len(decimals) == 1, ys
+    step = ay.ticks()[1] - ay.ticks()[0]
+    (places,) = decimals
+    assert abs(step - round(step, places)) <= 1e-9 * step  # every tick written exactly
+    assert places == 0 or abs(step - round(step, places - 1)) > 1e-9 * step  # no more
+
+
+def test_zero_is_written_where_the_x_values_stand_on_the_bottom_edge() -> None:
+    """ΔT's "0" on Wittenbauer's diagram: where the plot runs below the I axis (its values on
+    the bottom edge), the y axis writes its zero; where the x values stand on the zero axis,
+    it does not (the origin)."""
+    for lo, zero in ((-27.0, True), (0.0, False)):
+        d = start("A3", TitleBlock(title="t", designation="x"))
+        n = len(d.sheet.items)
+        g = Graph(d, Axis.fit("I", "кг·м²", 0.0, 0.023, 115.0),
+                  Axis.fit("ΔT", "Дж", lo, 1.2 if lo else 27.0, 70.0), (60.0, 100.0))  # fmt: skip
+        g.axes()
+        texts = [it for it in d.sheet.items[n:] if getattr(it, "text", None) == "0"]
+        at_zero = [t for t in texts if abs(t.at[1] - (100.0 + 2.5 / 2.0)) < 1e-6]
+        assert bool(at_zero) is zero

@@ -23,7 +23,7 @@ from geomcad.errors import ParameterError
 from geomcad.sheet.drawing import DOT_R, Drawing, _arrow, _head
 from geomcad.sheet.lang import Lang, Words
 from geomcad.sheet.model import XY, CircleItem, Polyline
-from geomcad.sheet.scale import NICE, fmt_number
+from geomcad.sheet.scale import NICE, fmt_fixed, fmt_number
 from geomcad.sheet.style import fit_open, style
 from geomcad.sheet.text import box, parse
 
@@ -36,6 +36,8 @@ TICK_LEN = 1.5
 TICK_GAP_MM = 1.0
 ARROW_OVER = 7.0  # the axis runs this far past the last value (mm), ending in an arrow
 HATCH_STEP_MM = 2.0
+#: The most decimals a tick's value is written with.
+TICK_PLACES = 6
 
 
 def nice_step(raw: float) -> float:
@@ -110,6 +112,23 @@ class Axis:
         last = math.floor(self.hi / step + tol.DERIVED)
         return [i * step for i in range(first, last + 1)]
 
+    def places(self) -> int:
+        """The decimals of every value written along the axis: those that write its tick step
+        exactly (0,016 and 0,020, never 0,02 beside 0,016; 14,0 beside 14,1), at most
+        :data:`TICK_PLACES`."""
+        step = self.tick or nice_step(TICK_MIN_MM * self.k)
+        return next(
+            (d for d in range(TICK_PLACES) if abs(step - round(step, d)) <= tol.DERIVED * step),
+            TICK_PLACES,
+        )
+
+    def tick_text(self, value: float, lang: Lang | None = None) -> str:
+        """A tick's value as the axis writes it: :meth:`places` decimals (zero as "0")."""
+        step = self.tick or nice_step(TICK_MIN_MM * self.k)
+        if abs(value) <= tol.DERIVED * step:
+            return "0"
+        return fmt_fixed(value, self.places(), lang)
+
     def factor_text(self, lang: Lang | None = None) -> str:
         """``μ_φ = 0,02 рад/мм`` (``lang``: default the language being drawn)."""
         per = WORDS("per_mm", lang)
@@ -165,7 +184,7 @@ class Graph:
             px, _ = self.p(v, self.y.zero)
             for yy in (ay,) if bottom == ay else (ay, bottom):
                 s.add(Polyline(((px, yy), (px, yy + TICK_LEN)), "dimension"))
-            text = fmt_number(v, lang, 4)
+            text = self.x.tick_text(v, lang)
             half = box(parse(text), height)[0] / 2.0
             # a value that would run into the one before it is left out (its tick stays), and
             # so is zero (the origin, or the other axis runs through it)
@@ -177,10 +196,12 @@ class Graph:
             _, py = self.p(self.x.zero, v)
             for xx in (ax,) if left == ax else (ax, left):
                 s.add(Polyline(((xx - TICK_LEN, py), (xx, py)), "dimension"))
-            if tick_labels and v != self.y.zero:
+            # zero too where the x values stand on an edge of their own (ΔT's 0 on
+            # Wittenbauer's diagram, its I_пр axis running through the plot)
+            if tick_labels and (v != self.y.zero or bottom > ay + tol.DERIVED):
                 at = (left - TICK_LEN - 0.8, py + height / 2.0)
                 self.d.optional.append(
-                    self.d.text(fmt_number(v, lang, 4), at, height, anchor="right")
+                    self.d.text(self.y.tick_text(v, lang), at, height, anchor="right")
                 )
         # the symbols by the arrows' tips, placed clear of the curves drawn before the sheet is
         # finished

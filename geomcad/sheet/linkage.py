@@ -86,6 +86,8 @@ SMALL_TEXT_H = 2.5
 #: How much of the layout search's score (Σ weight·log(drawn area)) the larger text may cost
 #: the views on the largest format before the text is written :data:`SMALL_TEXT_H` high.
 TEXT_COST = 1.0
+#: The title block's Масштаб on a sheet with no one scale of lengths (ESKD: a dash).
+NO_SCALE = "\u2014"
 #: The views' titles (mm).
 TITLE_H = 5.0
 #: At most this many velocity plans share the first sheet with the mechanism.
@@ -148,7 +150,9 @@ def _on(tree: Tree, wants: Mapping[View, float], fmt: str) -> tuple[Tree, format
 
 
 def fit(
-    make: Callable[[float], tuple[Tree, Mapping[View, float]]], fmts: Sequence[str]
+    make: Callable[[float], tuple[Tree, Mapping[View, float]]],
+    fmts: Sequence[str],
+    readable: bool = False,
 ) -> tuple[Tree, formats.Sized]:
     """The tree ``make(h)`` builds, its tables and texts written ``h`` high, and its format: the
     smallest of ``fmts`` (in landscape) on which it fits with the scales it wants
@@ -160,7 +164,10 @@ def fit(
     :data:`TEXT_COST` of the search's score (Σ weight·log(drawn area): a mechanism drawn at
     1:4 instead of 1:2.5 costs about 1.9). ``make`` builds new views each time (the search
     marks the views it arranges). The largest format's arrangement is the joint search of a
-    :class:`Choice` (it finds better splits than its arrangements one by one)."""
+    :class:`Choice` (it finds better splits than its arrangements one by one). ``readable``:
+    the larger text wherever the views keep their wanted scales with it, whatever it costs
+    them beyond (a kinematic sheet's tables and order read at 3.5 mm where the crank and pa
+    keep their rules' lengths: the blank field is the text's to take)."""
     order = sorted(fmts, key=lambda f: FORMATS[f][0] * FORMATS[f][1])
     for fmt in order[:-1]:
         for h in dict.fromkeys((text_height((fmt,)), SMALL_TEXT_H)):
@@ -175,13 +182,18 @@ def fit(
             if not reached:
                 break  # smaller text does not bring the views to their scales
     tried: list[tuple[Tree, formats.Sized]] = []
+    kept: list[bool] = []
     for h in dict.fromkeys((text_height(order[-1:]), SMALL_TEXT_H)):
-        tree, _ = make(h)
+        tree, wants = make(h)
         fmt, land = next(formats.candidates(order[-1:]))
         tried.append((tree, formats.Sized(fmt, land, arrange(tree, Field.of_format(fmt, land)))))
+        kept.append(bool(wants) and formats.meets(tried[-1][1].layout, wants))
     # the larger text where it fits and costs the views at most TEXT_COST of the search's score
+    # (``readable``: or keeps them at their wanted scales)
     big, small = tried[0][1].layout, tried[-1][1].layout
-    if big.fits and (not small.fits or big.score[1] >= small.score[1] - TEXT_COST):
+    if big.fits and (
+        not small.fits or big.score[1] >= small.score[1] - TEXT_COST or (readable and kept[0])
+    ):
         return tried[0]
     return tried[-1] if small.fits else tried[0]
 
@@ -371,9 +383,9 @@ def _arranged(s: Solved) -> tuple[Layout, tuple[Arranged, ...]]:
 
     def attempt() -> tuple[list[tuple[Tree, formats.Sized]], _Mechanism, bool]:
         made.clear()
-        first = fit(make(0), fmts)
+        first = fit(make(0), fmts, readable=True)
         trees_all, mech, second, _ = made_of(first[0])
-        fitted = [first] + [fit(make(i), fmts) for i in range(1, len(trees_all))]
+        fitted = [first] + [fit(make(i), fmts, True) for i in range(1, len(trees_all))]
         return fitted, mech, second
 
     fitted, mech, second = attempt()
@@ -455,6 +467,8 @@ def kinematic_sheets(s: Solved, stem: str = "") -> list[tuple[str, Sheet]]:
     first = d.finish()
     for pl in lays[0]:  # a link's number never reads as a position's
         if isinstance(pl.view, _Mechanism | _CrankDetail):
+            if isinstance(pl.view, _Mechanism):
+                keep_tracks_apart(first, pl.box, pl.view.tracks, pl.view.rows)
             keep_link_numbers_clear(first, pl.box)
     out: list[tuple[str, Sheet]] = [("", first)]
     if lay.second:
@@ -470,7 +484,9 @@ def _title(
     return TitleBlock(
         title=sheet_name(lk, what),
         designation=designation,
-        scale=k.ratio_text() if k is not None else "",
+        # a sheet with no one scale (the velocity plans' sheet, each plan at μ_V) says so:
+        # a dash, never an empty cell
+        scale=k.ratio_text() if k is not None else NO_SCALE,
         sheet_no=no,
         sheets=count,
         lang=current(),
@@ -549,7 +565,9 @@ def link_bodies(
     side; 0: the slot as its axis line. ``axes``: each link through its pairs only, a point
     no other link carries (a coupler point M, a centre of mass) left out: a thin position's
     drawing, where the coupler's triangle in every position would weave a web (the point's
-    path and numbers show it)."""
+    path and numbers show it); an offset slot without its arm from the pivot (the arms of
+    every position would melt into one blot at the pivot: the slots touch the offset's
+    circle, drawn once)."""
     out: dict[str, list[Body]] = {}
     carried: dict[str, int] = {}
     if axes:
@@ -573,9 +591,12 @@ def link_bodies(
             # farther (a slot runs on past its block; a link ends at its last joint)
             far = max([(q - C).dot(d) for q in uniq] + [(P.pos[g.slider] - C).dot(d) * SLOT_PAST])
             foot = C + d.perp() * g.offset
-            out[str(link)] = (
-                [Body.of([C, foot, foot + d * far])] if g.offset else [Body.of([C, C + d * far])]
-            )
+            if not g.offset:
+                out[str(link)] = [Body.of([C, C + d * far])]
+            elif axes:  # a thin position: its slot alone, tangent to the offset's circle
+                out[str(link)] = [Body.of([foot, foot + d * far])]
+            else:
+                out[str(link)] = [Body.of([C, foot, foot + d * far])]
             continue
         if len(uniq) == 2:
             out[str(link)] = [Body.of(uniq)]
@@ -724,6 +745,10 @@ class _Mechanism(View):
         self._ext = _mechanism_extent(s)
         #: the letter of the crank's detail view (:class:`_CrankDetail`), where there is one
         self.detail: str | None = None
+        #: each numbered track's points as drawn (paper mm), for :func:`keep_tracks_apart`
+        self.tracks: dict[str, list[tuple[float, float]]] = {}
+        #: the boxes of each track's numbers set in rows (paper mm)
+        self.rows: dict[str, list[Box]] = {}
 
     def extent(self) -> tuple[float, float, float, float]:
         return self._ext
@@ -735,6 +760,9 @@ class _Mechanism(View):
         v.circle(lk.frame[lk.pivot], lk.length, "centre")
         for path in _paths(lk).values():
             v.polyline(path, "centre")
+        for g in lk.groups:  # an offset slot's circle: the thin positions' slots touch it
+            if g.kind == "RPR" and g.offset:
+                _offset_arc(v, g, s.drawn)
         # every other position in thin lines, numbered at the crank's joint and the output; the
         # principal one (the force analysis' position, else position 0) in main lines
         P0, k0 = _principal(s)
@@ -801,15 +829,64 @@ class _Mechanism(View):
         # the positions numbered last, clear of every line drawn
         numbered: list[Vec] = []
         taken: list[Box] = []
-        for name in traced:
+        for name in numbered_tracks(lk):
             pts = [P.pos[name] for P in s.drawn]
             if name == lk.joint and self.detail is not None:
                 mark_detail(v, lk.frame[lk.pivot], lk.length, self.detail)
                 continue  # the crank's positions are numbered on its detail view
+            self.tracks[name] = [v.p(q) for q in pts]
             vels = [P.vel[name] for P in s.drawn]
             clear = GUIDE_CLEAR_MM if name in guided else 0.0
+            rowed = len(taken)
             position_numbers(v, pts, vels, lk.frame[lk.pivot], numbered, clear, taken)
+            self.rows[name] = taken[rowed:]
             numbered = pts
+
+
+def numbered_tracks(lk: Linkage) -> tuple[str, ...]:
+    """The points whose positions the mechanism's view numbers: the crank's joint, the output
+    and every named point, but a centre of mass that is nothing more (no group hangs on it, no
+    load acts at it): its path is drawn and dotted, its letter stands at the principal position,
+    and its positions follow from its link's, which are numbered; numbers of its own would only
+    stand among the joints' ones (S3's "9", "10" beside the crank circle's)."""
+    centres = {m.centre for m in lk.masses.values()}
+    hung = {q for g in lk.groups for q in g.known} | {ld.point for ld in lk.loads if ld.point}
+    return tuple(
+        name
+        for name in dict.fromkeys((lk.joint, lk.output, *(p.name for p in lk.points)))
+        if name in (lk.joint, lk.output) or name not in centres or name in hung
+    )
+
+
+#: The offset's arc runs this far (degrees) past the outermost feet of the slots.
+OFFSET_ARC_PAST_DEG = 8.0
+
+
+def _offset_arc(v: Viewport, g: Group, drawn: Sequence[Position]) -> None:
+    """The circle of an RPR group's slot offset e round its pivot, which every position's slot
+    touches at its foot, drawn thin over the feet of the positions ``drawn`` (the arc they
+    span, a little past the outermost; the whole circle where the slot turns round)."""
+    link = g.links[1]
+    C = drawn[0].pos[g.pivot]
+    feet = sorted(
+        math.atan2(f.y, f.x) % (2.0 * math.pi)
+        for f in (P.slide[link].perp() * g.offset for P in drawn)
+    )
+    gaps = [(b - a, a) for a, b in itertools.pairwise([*feet, feet[0] + 2.0 * math.pi])]
+    gap, at = max(gaps)
+    past = math.radians(OFFSET_ARC_PAST_DEG)
+    if gap <= 2.0 * past:
+        v.circle(C, abs(g.offset), "thin")
+        return
+    a0 = at + gap - past  # the arc runs from the far side of the largest gap round to its start
+    sweep = 2.0 * math.pi - gap + 2.0 * past
+    n = max(8, int(math.degrees(sweep) / 3.0))
+    r = abs(g.offset)
+    v.polyline(
+        [C + Vec(math.cos(a0 + sweep * k / n), math.sin(a0 + sweep * k / n)) * r
+         for k in range(n + 1)],
+        "thin",
+    )  # fmt: skip
 
 
 #: The crank is drawn enlarged on a detail view of its own where the mechanism's scale draws it
@@ -1262,7 +1339,7 @@ def _overlaps(a: Box, b: Box) -> bool:
 #: that the two never read as one ("5" beside B's "10 3 11 4"); moved round its point in
 #: steps of LINK_STEP_MM up to LINK_REACH_MM, with a leader where it stands further than
 #: LINK_LEADER_MM from its point.
-LINK_CLEAR_MM, LINK_STEP_MM, LINK_REACH_MM, LINK_LEADER_MM = 3.0, 0.5, 20.0, 5.0
+LINK_CLEAR_MM, LINK_STEP_MM, LINK_REACH_MM, LINK_LEADER_MM = 5.0, 0.5, 20.0, 5.0
 #: Texts side by side read as one line: a link's number keeps LINK_CLEAR_MM times this from a
 #: position's number beside it in its line (a row of numbers is read along).
 LINK_ALONG = 3.0
@@ -1279,6 +1356,14 @@ def _gap(a: Box, b: Box, along: float = 1.0) -> float:
     divided by ``along``."""
     dx, dy = max(a[0] - b[2], b[0] - a[2], 0.0), max(a[1] - b[3], b[1] - a[3], 0.0)
     return math.hypot(dx / along, dy)
+
+
+def _apart(a: Box, b: Box) -> float:
+    """How far (mm) a link's number ``a`` stands from a position's number ``b`` as read: in
+    a row of numbers (beside it) or a column of them (over it, along a vertical guide), its
+    distance along that line counts :data:`LINK_ALONG` times less."""
+    return min(_gap(a, b, LINK_ALONG), _gap((a[1], a[0], a[3], a[2]), (b[1], b[0], b[3], b[2]),
+                                            LINK_ALONG))  # fmt: skip
 
 
 def _through_text(p: tuple[float, float], b: Box, boxes: Sequence[Box]) -> bool:
@@ -1318,7 +1403,7 @@ def keep_link_numbers_clear(sheet: Sheet, area: Box) -> None:
             continue
         b = _text_box(t)
         if t.text.isdigit():
-            if all(_gap(b, n, LINK_ALONG) >= LINK_CLEAR_MM for n in numbers):
+            if all(_apart(b, n) >= LINK_CLEAR_MM for n in numbers):
                 continue
         elif not ("A" <= t.text[:1] <= "Z" and thin.crossed([b], 0.0)):
             continue  # a point's letter moves only where a thin position's line runs through it
@@ -1338,13 +1423,119 @@ def keep_link_numbers_clear(sheet: Sheet, area: Box) -> None:
                     area[0] <= c[0] and c[2] <= area[2] and area[1] <= c[1] and c[3] <= area[3]
                 ):
                     continue
-                if any(_gap(c, n, LINK_ALONG) < LINK_CLEAR_MM for n in numbers):
+                if any(_apart(c, n) < LINK_CLEAR_MM for n in numbers):
                     continue
                 if any(_gap(c, o) < NUMBER_SPACE for o in others) or ink.crossed([c]):
                     continue
                 if r > LINK_LEADER_MM and _through_text(p, c, others):
                     continue  # its leader would run through another text
                 found = c
+                break
+        if found is None:
+            continue
+        i = next(k for k, it in enumerate(sheet.items) if it is t)
+        moved = replace(t, at=(found[0], found[3] - 0.3 * t.height))
+        sheet.items[i] = moved
+        sheet.anchors = [(moved if it is t else it, at) for it, at in sheet.anchors]
+        current[id(t)] = found
+        if r > LINK_LEADER_MM:
+            _leader(sheet, p, found)
+            ink = _Ink(sheet)
+
+
+#: A position's number stands at least this much (mm) nearer its own point than any point or
+#: number of another track (S3's "9" beside the crank circle's "9" reads as either); else it
+#: moves round its point, as a link's number does (LINK_STEP_MM up to TRACK_REACH_MM).
+TRACK_MARGIN_MM, TRACK_REACH_MM = 1.5, 12.0
+
+
+def _to_box(p: tuple[float, float], b: Box) -> float:
+    """The distance (mm) from the point ``p`` to the box ``b`` (0 inside it)."""
+    return math.hypot(max(b[0] - p[0], p[0] - b[2], 0.0), max(b[1] - p[1], p[1] - b[3], 0.0))
+
+
+def keep_tracks_apart(
+    sheet: Sheet,
+    area: Box,
+    tracks: Mapping[str, Sequence[tuple[float, float]]],
+    rows: Mapping[str, Sequence[Box]],
+) -> None:
+    """Each position's number in ``area`` (a view's box on the finished sheet) that stands
+    nearer than :data:`TRACK_MARGIN_MM` beyond its own point to a point or a number of another
+    of the ``tracks`` (each track's numbered points, paper mm) moves to the nearest place round
+    its point where it does not, clear of every other text and of every drawn line, with a
+    leader where it stands further than :data:`LINK_LEADER_MM` from its point: the numbers of
+    two paths never interleave (a rocker's centre of mass numbered among the crank circle's
+    numbers). ``rows``: each track's numbers set in rows (their boxes), which stay where they
+    are. Where no place within :data:`TRACK_REACH_MM` does, it stays."""
+
+    def track_of(p: tuple[float, float]) -> str | None:
+        return next((k for k, pts in tracks.items() if any(math.dist(p, q) < 1e-6 for q in pts)),
+                    None)  # fmt: skip
+
+    def inside(t: TextItem) -> bool:
+        return area[0] <= t.at[0] <= area[2] and area[1] <= t.at[1] <= area[3]
+
+    anchors = {id(item): at for item, at in sheet.anchors}
+    texts = [t for t in sheet.texts() if inside(t)]
+    numbers = [t for t in texts if t.role == "label" and t.text.isdigit()
+               and t.height == NUMBER_H and id(t) in anchors]  # fmt: skip
+    owner = {id(t): track_of(anchors[id(t)]) for t in numbers}
+    current = {id(o): _text_box(o) for o in texts}
+    ink = _Ink(sheet)
+    for t in numbers:
+        name = owner[id(t)]
+        if name is None:
+            continue
+        p = anchors[id(t)]
+        foreign_pts = [q for k, pts in tracks.items() if k != name for q in pts
+                       if math.dist(q, p) >= SHARE_MM]  # fmt: skip
+        foreign = [id(o) for o in numbers if owner[id(o)] not in (None, name)]
+        foreign_rows = [b for k, bs in rows.items() if k != name for b in bs]
+
+        def confused(
+            c: Box,
+            p: tuple[float, float] = p,
+            pts: Sequence[tuple[float, float]] = foreign_pts,
+            nums: Sequence[int] = foreign,
+            boxes: Sequence[Box] = foreign_rows,
+        ) -> bool:
+            near = min(
+                (
+                    *(_to_box(q, c) for q in pts),
+                    *(_gap(c, current[k]) for k in nums),
+                    *(_gap(c, b) for b in boxes),
+                ),
+                default=math.inf,
+            )
+            return near < _to_box(p, c) + TRACK_MARGIN_MM
+
+        b = current[id(t)]
+        if not confused(b):
+            continue
+        others = [bx for k, bx in current.items() if k != id(t)]
+        w, h = b[2] - b[0], b[3] - b[1]
+        found: Box | None = None
+        r = 0.0
+        crossed = ink.crossed([b])  # a place crossed by no more lines than its own
+        for step in range(1, round(TRACK_REACH_MM / LINK_STEP_MM) + 1):
+            r = step * LINK_STEP_MM
+            for ux, uy in _LINK_DIRS:
+                cx, cy = p[0] + ux * (r + w / 2.0), p[1] + uy * (r + h / 2.0)
+                c = (cx - w / 2.0, cy - h / 2.0, cx + w / 2.0, cy + h / 2.0)
+                if not (
+                    area[0] <= c[0] and c[2] <= area[2] and area[1] <= c[1] and c[3] <= area[3]
+                ):
+                    continue
+                if confused(c) or any(_gap(c, o) < NUMBER_SPACE for o in others):
+                    continue
+                if ink.crossed([c]) > crossed or (
+                    r > LINK_LEADER_MM and _through_text(p, c, others)
+                ):
+                    continue
+                found = c
+                break
+            if found is not None:
                 break
         if found is None:
             continue
