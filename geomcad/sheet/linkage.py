@@ -1468,6 +1468,15 @@ def _output_curves(
     return names, ang - ang[0], st.omega[link], st.eps[link]
 
 
+#: The least height (mm) of each of the output's diagrams on the kinematic sheet: its plot's
+#: room (less the ticks' and the arrow's, :class:`~geomcad.sheet.views.Diagram`) draws the curve
+#: at least :data:`DIAGRAM_SPAN_MM` high at the coarsest rounding of its μ (1, 2, 2.5, 4, 5 ×
+#: 10^n), so that a tall column of plans beside the diagrams never squeezes one to a tick.
+DIAGRAM_H = 60.0
+#: The least height (mm) of a diagram's curve from its lowest to its highest point.
+DIAGRAM_SPAN_MM = 25.0
+
+
 def _diagrams(s: Solved) -> list[Diagram]:
     """The output's diagrams over a turn from position 0: the exact curves of the sweep, and
     the derivatives by chords through the numbered positions (graphical differentiation)."""
@@ -1488,7 +1497,7 @@ def _diagrams(s: Solved) -> list[Diagram]:
             Curve(np.degrees(psi), exact, "result"),
             Curve(np.degrees(gx), gy, "construction", points=True),
         ]
-        out.append(Diagram(x, AxisSpec(sym, unit, name), curves, least=(120.0, 50.0),
+        out.append(Diagram(x, AxisSpec(sym, unit, name), curves, least=(120.0, DIAGRAM_H),
                            prefer=(600.0, 160.0), marks=position_marks(n)))  # fmt: skip
     return out
 
