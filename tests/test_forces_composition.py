@@ -184,3 +184,47 @@ def test_a_larger_format_only_where_the_smaller_one_fails_the_rules(path: Path) 
                 assert not kept, (shared, h)
             if not reached:
                 break  # as linkage.fit: the smaller text is tried only where the scales hold
+
+
+@pytest.mark.parametrize("path", FILES, ids=[p.stem for p in FILES])
+def test_a_short_crank_is_drawn_enlarged_in_a_detail(
+    path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """Review 5: crusher-forces drew its crank 8 mm long (1:5) and nothing larger. Where the
+    mechanism's μ_l draws the crank shorter than DETAIL_BELOW of CRANK_MM, the view draws it
+    enlarged in a detail (ESKD 2.305) at least twice as long and DETAIL_BELOW of CRANK_MM."""
+    from geomcad.sheet.linkage import DETAIL_BELOW
+
+    _sheet, lay, s = _forces_sheet(path, monkeypatch)
+    (mech,) = [pl for pl in _links(lay) if isinstance(pl.view, lf._Loaded)]
+    assert mech.scale is not None
+    lk = s.linkage  # type: ignore[attr-defined]
+    here = lk.length / mech.scale.k
+    detail = mech.view.detail_scale  # type: ignore[attr-defined]
+    if here >= DETAIL_BELOW * CRANK_MM:
+        assert detail is None
+        return
+    assert detail is not None, f"the crank {here:.1f} mm long and no detail"
+    assert lk.length / detail.k >= max(2.0 * here, DETAIL_BELOW * CRANK_MM) * 0.999
+
+
+def test_a_free_spot_keeps_clear_of_what_is_drawn() -> None:
+    """The detail's place: nearest the point asked for, clear of every segment by the gap,
+    inside the box; none where the box is full."""
+    import numpy as np
+
+    box = (0.0, 0.0, 100.0, 100.0)
+    none = np.zeros((0, 2, 2))
+    assert lf.free_spot(none, box, (20.0, 20.0), (50.0, 50.0), 5.0) == pytest.approx(
+        (40.0, 40.0), abs=2.0
+    )
+    # a vertical line through the middle: the spot goes to one side of it, gap kept
+    line = np.array([[[50.0, 0.0], [50.0, 100.0]]])
+    spot = lf.free_spot(line, box, (20.0, 20.0), (50.0, 50.0), 5.0)
+    assert spot is not None
+    x = spot[0]
+    assert x + 20.0 <= 45.0 + 1e-9 or x >= 55.0 - 1e-9
+    assert x >= 5.0 - 1e-9 and x + 20.0 <= 95.0 + 1e-9
+    # a grid of lines every 10 mm: no 20 mm square is clear
+    grid = np.array([[[v, 0.0], [v, 100.0]] for v in range(0, 101, 10)])
+    assert lf.free_spot(grid, box, (20.0, 20.0), (50.0, 50.0), 5.0) is None

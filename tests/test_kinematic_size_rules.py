@@ -17,6 +17,7 @@ from geomcad.linkage.solution import Solved, solve
 from geomcad.sheet.compose import Field, Figure, Row, arrange, round_scale, round_scale_down
 from geomcad.sheet.linkage import (
     CRANK_MM,
+    DIAGRAM_SPAN_MM,
     LINK_ALONG,
     LINK_CLEAR_MM,
     NUMBER_H,
@@ -28,7 +29,7 @@ from geomcad.sheet.linkage import (
     layout,
 )
 from geomcad.sheet.model import Polyline, TextItem
-from geomcad.sheet.views import PlanView
+from geomcad.sheet.views import Diagram, PlanView
 
 ROOT = Path(__file__).resolve().parent
 #: Files the layout once broke the rules on (review 2's four unseen files, three examples), and
@@ -64,6 +65,24 @@ def test_the_crank_and_pa_keep_their_least_lengths(name: str) -> None:
     vplans = [pl for pl in plans if pl.view.group == "v"]
     assert len(vplans) >= len(s.drawn)
     assert {pl.scale.k for pl in vplans if pl.scale is not None} == {lay.k_v.k}
+
+
+@pytest.mark.parametrize("name", sorted(FILES))
+def test_every_output_diagram_draws_its_curve_readably_high(name: str) -> None:
+    """Review 5: offset_slider_gas's a(φ) was squeezed to about 12 mm (one tick) beside a
+    250 mm column of acceleration plans. Each diagram of the output's s, v, a, at the μ its
+    box gives it, draws its curve at least DIAGRAM_SPAN_MM from its lowest to highest point."""
+    s = _solved(name)
+    lay = layout(s)
+    spans = []
+    for pl in lay.sized[0].layout:
+        if isinstance(pl.view, Diagram):
+            x0, y0, x1, y1 = pl.inner
+            _ax, ay = pl.view.axes(x1 - x0, y1 - y0)
+            ys = [float(y) for c in pl.view.curves for y in c.ys]
+            spans.append(ay.mm(max(ys) - min(ys)))
+    assert len(spans) == 3
+    assert min(spans) >= DIAGRAM_SPAN_MM, spans
 
 
 def test_plans_too_large_for_one_sheet_go_on_a_sheet_of_their_own() -> None:

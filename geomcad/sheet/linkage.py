@@ -931,17 +931,23 @@ class _CrankDetail(View):
     letter and its own μ_l): the crank's circle and its positions numbered, the crank in the
     principal position in main lines with its support, the others thin, the links at the
     crank's joint as stubs, ω1. Drawn where the long links set the mechanism's scale and leave
-    the crank under :data:`CRANK_MM` there."""
+    the crank under :data:`CRANK_MM` there. ``only``: the crank in that one position alone,
+    unnumbered, reaching ``reach`` crank lengths round the pivot (the forces sheet's detail)."""
 
-    def __init__(self, s: Solved, letter: str) -> None:
+    def __init__(
+        self, s: Solved, letter: str, only: Position | None = None, reach: float = DETAIL_REACH
+    ) -> None:
         super().__init__(
             title=WORDS("crank_detail", letter=letter, last=len(s.drawn) - 1), group="crank",
             title_height=5.0, margin=6.0, weight=0.5,
         )  # fmt: skip
         self.s = s
         self.letter = letter
+        self.only = only
         lk = s.linkage
-        O1, r = lk.frame[lk.pivot], DETAIL_REACH * lk.length
+        #: how far (m) round the pivot the detail reaches
+        self.reach = reach * lk.length
+        O1, r = lk.frame[lk.pivot], self.reach
         self._ext = (O1.x - r, O1.y - r, O1.x + r, O1.y + r)
 
     def extent(self) -> tuple[float, float, float, float]:
@@ -952,10 +958,11 @@ class _CrankDetail(View):
         s = self.s
         lk = s.linkage
         O1 = lk.frame[lk.pivot]
-        reach = DETAIL_REACH * lk.length * 0.95
-        P0, k0 = _principal(s)
+        reach = self.reach * 0.95
+        P0, k0 = _principal(s) if self.only is None else (self.only, 0)
+        drawn = s.drawn if self.only is None else [self.only]
         v.circle(O1, lk.length, "centre")
-        for i, P in enumerate(s.drawn):
+        for i, P in enumerate(drawn):
             A = P.pos[lk.joint]
             role = "link" if i == k0 else "thin"
             v.seg(O1, A, role)
@@ -964,10 +971,11 @@ class _CrankDetail(View):
                 u = (q - A).unit()
                 t = _ray_to_circle(A - O1, u, reach)
                 v.seg(A, A + u * t, role)
-        pts = [P.pos[lk.joint] for P in s.drawn]
-        for q in pts:
-            v.dot(q)
-        position_numbers(v, pts, [P.vel[lk.joint] for P in s.drawn], O1)
+        if self.only is None:
+            pts = [P.pos[lk.joint] for P in s.drawn]
+            for q in pts:
+                v.dot(q)
+            position_numbers(v, pts, [P.vel[lk.joint] for P in s.drawn], O1)
         v.pivot(O1, _support_down(lk, P0))
         v.joint(P0.pos[lk.joint])
         v.label(O1, markup_of(lk.pivot), 3.5, clear=2.0)
@@ -1659,6 +1667,15 @@ def _output_curves(
     return names, ang - ang[0], st.omega[link], st.eps[link]
 
 
+#: The least height (mm) of each of the output's diagrams on the kinematic sheet: its plot's
+#: room (less the ticks' and the arrow's, :class:`~geomcad.sheet.views.Diagram`) draws the curve
+#: at least :data:`DIAGRAM_SPAN_MM` high at the coarsest rounding of its μ (1, 2, 2.5, 4, 5 ×
+#: 10^n), so that a tall column of plans beside the diagrams never squeezes one to a tick.
+DIAGRAM_H = 60.0
+#: The least height (mm) of a diagram's curve from its lowest to its highest point.
+DIAGRAM_SPAN_MM = 25.0
+
+
 def _diagrams(s: Solved) -> list[Diagram]:
     """The output's diagrams over a turn from position 0: the exact curves of the sweep, and
     the derivatives by chords through the numbered positions (graphical differentiation)."""
@@ -1679,7 +1696,7 @@ def _diagrams(s: Solved) -> list[Diagram]:
             Curve(np.degrees(psi), exact, "result"),
             Curve(np.degrees(gx), gy, "construction", points=True),
         ]
-        out.append(Diagram(x, AxisSpec(sym, unit, name), curves, least=(120.0, 50.0),
+        out.append(Diagram(x, AxisSpec(sym, unit, name), curves, least=(120.0, DIAGRAM_H),
                            prefer=(600.0, 160.0), marks=position_marks(n)))  # fmt: skip
     return out
 

@@ -31,7 +31,8 @@ composition (:func:`force_layout`, issue 27):
   order beside the polygons, or down the right edge over the title block;
 - the drawings of links never finer than :func:`links_scale` (the geometry alone: ω and the
   loads rescale none of them), the crank at least CRANK_MM long where the mechanism's sweep
-  allows it (:data:`SWEEP_MAX_MM`);
+  allows it (:data:`SWEEP_MAX_MM`); where the mechanism's μ_l still draws the crank short, the
+  crank enlarged in a detail in the mechanism view's free room (:meth:`_Loaded.crank_detail`);
 - the smallest format on which, besides, every force polygon is :data:`POLY_MM` across: the
   views grow, and the groups take their own μ_l, before a larger format is taken; on the format
   taken the tables are 3.5 mm high where the drawings of links keep their scales with it.
@@ -84,15 +85,18 @@ from geomcad.sheet.graph import Axis, Graph
 from geomcad.sheet.lang import Words, current
 from geomcad.sheet.linkage import (
     CRANK_MM,
+    DETAIL_BELOW,
     SMALL_TEXT_H,
     TEXT_COST,
     TEXT_H,
     TITLE_H,
     ZERO,
+    _CrankDetail,
     _on,
     fit,
     frame_guides,
     link_bodies,
+    mark_detail,
     omega_arrow,
     order_width,
     position_marks,
@@ -414,12 +418,16 @@ def _sheet2(
     phi = fmt_fixed(deg, angle_places([deg]), current())
     title = WORDS("mech", k=k, phi=phi) if k is not None else WORDS("mech_phi", phi=phi)
     mech = _Loaded(lk, P, f, title)
+    letters = detail_letters([*P.pos, *_FORCE_LETTERS, load_name(chr(0x424))])
     if sweep_mm(s, crank_scale(lk).k) <= SWEEP_MAX_MM:
         mech.readable, mech.readable_mm = lk.length, CRANK_MM
-    elif kin:
-        # the sweep waives the crank's length: the mechanism no coarser than the kinematic
-        # sheet draws it, where the format allows it (review 5: a crusher at 1:15 beside 1:5)
-        mech.readable, mech.readable_mm = lk.length, lk.length / kinematic_scale(s).k
+    else:
+        if kin:
+            # the sweep waives the crank's length: the mechanism no coarser than the kinematic
+            # sheet draws it, where the format allows it (review 5: a crusher at 1:15 beside 1:5)
+            mech.readable, mech.readable_mm = lk.length, lk.length / kinematic_scale(s).k
+        # the crank may come out short on it: its detail's letter, the first of the sheet's
+        mech.solved, mech.detail = s, next(letters)
     bodies = [_FreeBody(lk, P, gf) for gf in f.groups]
     # one μ_l for the mechanism and its cut-out groups and crank (issue 27, point 7): one scale
     # group, the coarsest any of them needs, stated in every caption
@@ -444,7 +452,6 @@ def _sheet2(
     # each group's polygons under the group cut out (the crank's under the crank); a
     # polygon's vectors too short for its μ_F are drawn again, enlarged, in details at their
     # own stated μ_F beside it in its view (one letter each on the sheet)
-    letters = detail_letters([*P.pos, *_FORCE_LETTERS, load_name(chr(0x424))])
     per_group = [
         [
             Polygon(
@@ -808,12 +815,18 @@ class _Loaded(_Forces):
                  if ld.force is not None and ld.at is not None]  # fmt: skip
         self.fs = force_tiers([F for _, F in named], LOAD_MM)
         self.omitted = left_out(self.fs, named)
+        #: the solution and the letter of the crank's detail, where the crank may come out
+        #: short (:meth:`crank_detail`); the detail's μ_l where one is drawn
+        self.solved: Solved | None = None
+        self.detail: str | None = None
+        self.detail_scale: Scale | None = None
 
     def links(self, d: Drawing, at: Placed) -> None:
         v = at.viewport
         assert v is not None
         draw_further(d, at, self, self.fs, self.omitted)
         lk, P = self.lk, self.P
+        start = len(d.sheet.items)
         clear = Clearance(d.sheet, len(d.sheet.items), _field(at))
         draw_scheme(v, scheme(lk, P), bodies=link_bodies(lk, P), pair_labels={},
                     label_height=3.5, guides=frame_guides(lk))  # fmt: skip
@@ -824,6 +837,62 @@ class _Loaded(_Forces):
         _draw_loads(v, lk, P, self.loads, self.fs, "vector", clear)
         omega_arrow(v, lk, P)
         v.turn(P.pos[lk.pivot], self.f.M_bal, 30.0, WORDS("M_bal"), M_BAL_MM, 250.0, "result", 2.5)
+        self.crank_detail(d, at, Clearance(d.sheet, start, _field(at)))
+
+    def crank_detail(self, d: Drawing, at: Placed, drawn: Clearance) -> None:
+        """Where the view's μ_l draws the crank shorter than :data:`DETAIL_BELOW` of
+        :data:`~geomcad.sheet.linkage.CRANK_MM`: the crank enlarged in a detail (ESKD 2.305; the
+        kinematic sheet's :class:`~geomcad.sheet.linkage._CrankDetail` in the force position),
+        lettered by a circle round the crank, at the finest GOST scale that draws the crank at
+        most 1.5 CRANK_MM long, at least twice as long as here and DETAIL_BELOW of CRANK_MM,
+        and finds room in the view's box clear of what it draws (``drawn``); the crank's loads
+        and M_ур on it at the view's μ_F. Nothing where no such room is left."""
+        v, s, letter = at.viewport, self.solved, self.detail
+        if v is None or s is None or letter is None:
+            return
+        lk, P = self.lk, self.P
+        here = v.scale.mm(lk.length)
+        if here >= DETAIL_BELOW * CRANK_MM:
+            return
+        loads = self.f.loads.get(1, [])
+        arrows = [
+            ld.force.norm / self.fs.scales[t].k
+            for ld in loads
+            if ld.force is not None and (t := self.fs.tier(ld.force.norm)) is not None
+        ]
+        least = max(2.0 * here, DETAIL_BELOW * CRANK_MM)
+        O1 = lk.frame[lk.pivot]
+        pivot = v.p(O1)
+        segs = drawn.segments()
+        for k in sorted(GOST_K):
+            crank = lk.length / k
+            if not least * (1.0 - tol.REL_LENGTH) <= crank <= 1.5 * CRANK_MM:
+                continue
+            half = max(CRANK_REACH * crank, M_BAL_MM + LABEL_ROOM_MM,
+                       crank + max(arrows, default=0.0) + LABEL_ROOM_MM)  # fmt: skip
+            w, h = 2.0 * half, 2.0 * half + DETAIL_TITLE_MM
+            spot = free_spot(segs, _field(at), (w, h), pivot, DETAIL_GAP_MM)
+            if spot is None:
+                continue
+            x0, y0 = spot
+            scale = Scale(k, "l")
+            det = _CrankDetail(s, letter, only=P, reach=CRANK_REACH)
+            inner = (x0, y0 + DETAIL_TITLE_MM, x0 + w, y0 + h)
+            pl = Placed(
+                det, inner, inner, scale, d.viewport(scale, O1, (x0 + half, inner[1] + half))
+            )
+            clear = Clearance(d.sheet, len(d.sheet.items), inner)
+            det.draw(d, pl)
+            dv = pl.viewport
+            assert dv is not None
+            _draw_loads(dv, lk, P, loads, self.fs, "vector", clear)
+            dv.turn(O1, self.f.M_bal, 30.0, WORDS("M_bal"), M_BAL_MM, 250.0, "result", 2.5)
+            d.text(WORDS("crank_detail", letter=letter, scale=scale.ratio_text()),
+                   (x0, y0 + TITLE_H), TITLE_H)  # fmt: skip
+            # the circle round the crank and M_ур's arc about its pivot
+            mark_detail(v, O1, max(lk.length, v.scale.k * M_BAL_MM), letter)
+            self.detail_scale = scale
+            return
 
 
 class _FreeBody(_Forces):
@@ -889,6 +958,57 @@ class _FreeBody(_Forces):
                 for ld in gf.loads[1]
             )
             v.turn(P.pos[lk.pivot], M, 30.0, WORDS("M_bal"), M_BAL_MM, 250.0, "result", 2.5)
+
+
+#: The forces sheet's crank detail reaches this many crank lengths round the pivot (the crank,
+#: the stubs of its links, ω1; M_ур's arc and the loads may reach further).
+CRANK_REACH = 1.3
+#: The room (mm) of the crank detail's title line over its drawing.
+DETAIL_TITLE_MM = 8.0
+#: How far (mm) the crank's detail keeps from what its view draws (the view's labels, placed
+#: after, find room in it).
+DETAIL_GAP_MM = 6.0
+#: The cell (mm) of the grid the crank detail's place is sought on.
+SPOT_MM = 2.0
+
+
+def free_spot(
+    segs: npt.NDArray[np.float64], box: tuple[float, float, float, float],
+    size: tuple[float, float], near: tuple[float, float], gap: float,
+) -> tuple[float, float] | None:  # fmt: skip
+    """The top-left corner (sheet mm) of a rectangle ``size`` (w, h) inside ``box`` that keeps
+    ``gap`` mm from every segment of ``segs`` (n, 2, 2; and inside the box by it), its centre
+    nearest ``near``; ``None`` where there is none. The segments are sampled on a grid of
+    :data:`SPOT_MM` cells; a summed-area table tests every corner at once."""
+    x0, y0, x1, y1 = box
+    nx, ny = int((x1 - x0) // SPOT_MM), int((y1 - y0) // SPOT_MM)
+    cw, ch = (
+        math.ceil((size[0] + 2.0 * gap) / SPOT_MM),
+        math.ceil((size[1] + 2.0 * gap) / SPOT_MM),
+    )
+    if nx < cw or ny < ch:
+        return None
+    occ = np.zeros((ny, nx), dtype=np.int32)
+    if len(segs):
+        a, b = segs[:, 0, :], segs[:, 1, :]
+        n = np.maximum(1, np.ceil(np.hypot(*(b - a).T) / (SPOT_MM / 2.0))).astype(int)
+        t = np.concatenate([np.linspace(0.0, 1.0, m + 1) for m in n])
+        i = np.repeat(np.arange(len(segs)), n + 1)
+        pts = a[i] + (b[i] - a[i]) * t[:, None]
+        cx = np.floor((pts[:, 0] - x0) / SPOT_MM).astype(int)
+        cy = np.floor((pts[:, 1] - y0) / SPOT_MM).astype(int)
+        ok = (cx >= 0) & (cx < nx) & (cy >= 0) & (cy < ny)
+        occ[cy[ok], cx[ok]] = 1
+    sat = np.zeros((ny + 1, nx + 1), dtype=np.int64)
+    sat[1:, 1:] = occ.cumsum(0).cumsum(1)
+    used = sat[ch:, cw:] - sat[:-ch, cw:] - sat[ch:, :-cw] + sat[:-ch, :-cw]
+    free = np.argwhere(used == 0)
+    if not len(free):
+        return None
+    corners = np.column_stack([x0 + free[:, 1] * SPOT_MM + gap, y0 + free[:, 0] * SPOT_MM + gap])
+    centres = corners + np.array(size) / 2.0
+    best = int(np.argmin(np.hypot(centres[:, 0] - near[0], centres[:, 1] - near[1])))
+    return float(corners[best, 0]), float(corners[best, 1])
 
 
 def _field(at: Placed) -> tuple[float, float, float, float]:
