@@ -125,3 +125,40 @@ def test_the_rule_on_values() -> None:
     assert fmt_number(8544.0, "ru", 4) == "8544"
     assert fmt_number(89.0, "ru", 4, zeros=True) == "89,00"
     assert math.isclose(_value(fmt_number(-1234567.0, "ru", 7)), -1234567.0)
+
+
+@pytest.mark.parametrize("path", FILES, ids=[p.stem for p in FILES])
+def test_the_forces_sheet_prints_a_tabled_eps_and_a_as_the_kinematic_table(path: Path) -> None:
+    """M_Ф = −J·ε and Ф = m·a in the order of the analysis: an ε or a that the kinematic
+    sheet tables in the force position (its acceleration plan's) reads as its cell there
+    (offset-press: ε2 95,4 in the table, never 95,37 in the text)."""
+    import tomllib
+
+    from geomcad.linkage import parse
+    from geomcad.linkage.analysis import analyse
+    from geomcad.linkage.solution import solve
+    from geomcad.sheet import linkage_forces as lf
+    from geomcad.sheet.lang import language
+    from geomcad.sheet.linkage import tabled_cells
+    from geomcad.sheet.views import step_text
+
+    s = solve(parse(tomllib.loads(path.read_text(encoding="utf-8"))))
+    if analyse(s).force_position is None:
+        pytest.skip("no force analysis")
+    with language("ru"):
+        P, f, _ = lf.force_position(s)
+        cells = tabled_cells(s, P)
+        steps = lf.order_steps(f)
+        given = lf._as_loads(steps, cells)
+        checked = 0
+        for st in steps:
+            args = dict(st.args)
+            text = step_text(st, lf.WORDS, given.get(st.name))
+            if st.kind == "inertia_moment" and args["e"] in cells:
+                assert f"{args['e']} = {cells[str(args['e'])]} " in text, (text, cells)
+                checked += 1
+            if st.kind == "inertia_force" and args["a"] in cells:
+                assert f"·{cells[str(args['a'])].lstrip(chr(0x2013))} = " in text, (text, cells)
+                checked += 1
+    if path.stem == "offset-press":
+        assert checked == 2  # ε2 and a_B at its force position, the first acceleration plan's

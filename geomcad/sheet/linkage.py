@@ -1641,13 +1641,7 @@ def _as_tabled(
     cell is negative (the text's quotient of lengths is a magnitude, the table's value signed);
     a step that uses a link's ω (``w`` and its value ``omega``: a^n = ω²·l, 2ω·V) or gives a
     tabled quantity (``label`` and its ``value``: V_D, a_D) writes the same cell's magnitude."""
-    cells: dict[str, str] = {}
-    for table, positions in tables:
-        row = next((i for i, Q in enumerate(positions) if Q is P), None)
-        if row is None:
-            continue
-        head, values = table.rows[0], table.rows[1 + row]
-        cells.update({h.split(", ")[0]: v for h, v in zip(head, values, strict=True)})
+    cells = _cells(P, tables)
     minus = "\u2212\u2013-"
     out: dict[str, dict[str, str]] = {}
     for step in steps:
@@ -1665,6 +1659,35 @@ def _as_tabled(
         if given:
             out[step.name] = given
     return out
+
+
+def _cells(
+    P: Position, tables: Sequence[tuple[Table, Sequence[Position]]], same: bool = False
+) -> dict[str, str]:
+    """Position ``P``'s cells of ``tables`` (their rows after the header one per position of
+    ``tables``' second), by their column's symbol (``ε_{3}`` of ``ε_{3}, с^{-2}``); ``same``:
+    a position at ``P``'s crank angle is ``P``'s, else only ``P`` itself."""
+
+    def at(Q: Position) -> bool:
+        return Q is P or (same and abs(math.remainder(Q.phi - P.phi, math.tau)) <= tol.ANGLE)
+
+    cells: dict[str, str] = {}
+    for table, positions in tables:
+        row = next((i for i, Q in enumerate(positions) if at(Q)), None)
+        if row is None:
+            continue
+        head, values = table.rows[0], table.rows[1 + row]
+        cells.update({h.split(", ")[0]: v for h, v in zip(head, values, strict=True)})
+    return cells
+
+
+def tabled_cells(s: Solved, P: Position) -> dict[str, str]:
+    """The kinematic sheet's table cells of the position at ``P``'s crank angle, by their
+    column's symbol (``ω_{2}``, ``ε_{3}``, ``a_{B}``): another sheet prints a value the
+    kinematic sheet tables as its cell reads (one rounding per value in a set of sheets)."""
+    accel = _accel_positions(s)
+    omega, eps = _tables(s, accel)
+    return _cells(P, [(omega, s.drawn), (eps, accel)], same=True)
 
 
 def _along_guide(

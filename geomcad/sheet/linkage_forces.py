@@ -100,6 +100,7 @@ from geomcad.sheet.linkage import (
     sheet_formats,
     sheet_name,
     table_number,
+    tabled_cells,
 )
 from geomcad.sheet.linkage import WORDS as KIN_WORDS
 from geomcad.sheet.linkage import layout as kinematic_layout
@@ -403,17 +404,34 @@ RESULT_FIELDS: Mapping[str, tuple[str, ...]] = {
 }
 
 
-def _as_loads(steps: Sequence[Step]) -> dict[str, dict[str, str]]:
+#: The operands of the order of the analysis that the kinematic sheet tables: an operand's
+#: symbol (key) and its value (value), the link's ε of M_Ф = −J·ε (signed, as its table) and
+#: the point's a of Ф = m·a (a magnitude).
+KINEMATIC_FIELDS = {"e": "ev", "a": "av"}
+
+
+def _as_loads(
+    steps: Sequence[Step], cells: Mapping[str, str] | None = None
+) -> dict[str, dict[str, str]]:
     """The result operands (:data:`RESULT_FIELDS`) of ``steps`` as :func:`_load` writes them,
-    by step name: the order of the analysis prints a value as the table of loads does."""
+    by step name: the order of the analysis prints a value as the table of loads does; and an
+    ε or a that the kinematic sheet tables in this position (``cells``,
+    :func:`~geomcad.sheet.linkage.tabled_cells`) as its cell reads (:data:`KINEMATIC_FIELDS`)."""
     out: dict[str, dict[str, str]] = {}
     for st in steps:
         keys = RESULT_FIELDS.get(st.kind, ("value",))
-        out[st.name] = {
+        args = dict(st.args)
+        given = {
             k: _load(float(v))
             for k, v in st.args
             if k in keys and isinstance(v, float | int) and not isinstance(v, bool)
         }
+        for sym, field in KINEMATIC_FIELDS.items():
+            name = args.get(sym)
+            if isinstance(name, str) and name in (cells or {}) and field in args:
+                cell = (cells or {})[name]
+                given[field] = cell if sym == "e" else cell.lstrip("\u2212\u2013-")
+        out[st.name] = given
     return out
 
 
@@ -499,8 +517,8 @@ def _sheet2(
              for (name, _), p in zip(gf.polygons, ps, strict=True)}  # fmt: skip
     steps = order_steps(f, drawn)
     order = Steps(steps, order_width(h) * 170.0 / 190.0, only=[st.name for st in steps],
-                  words=WORDS, given=_as_loads(steps), height=h, title=WORDS("order"),
-                  title_height=TITLE_H)  # fmt: skip
+                  words=WORDS, given=_as_loads(steps, tabled_cells(s, P)), height=h,
+                  title=WORDS("order"), title_height=TITLE_H)  # fmt: skip
     right = Column(table, order)
     # the groups cut out beside the mechanism (or over the polygons) in one band packed by
     # their sizes, or each group over its polygons; the table and the order of the analysis
