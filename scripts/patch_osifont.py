@@ -25,6 +25,11 @@ height of the other lowercase letters without ascenders, the font's x-height):
   vertically about the baseline to the x-height (the height of в, the lowercase letter of the
   same build), its width and advance kept.
 
+One character upstream lacks is added: U+202F NARROW NO-BREAK SPACE, the separator of a long
+number's groups of three digits (GOST 8.417: ``11 130`` reads as one number), an empty glyph
+half as wide as the space, appended after the last glyph (no glyph's index moves) and mapped in
+the Unicode subtables of the character map.
+
 Everything else is kept byte for byte: the other glyphs (and their stored bounds), advance
 widths and side bearings, the other tables, the family name. The version string (nameID 5)
 gets "; geomcad: Э э Ё ё restored" appended. The output is deterministic: head.created and
@@ -46,16 +51,22 @@ from fontTools.pens.reverseContourPen import ReverseContourPen
 from fontTools.pens.transformPen import TransformPen
 from fontTools.pens.ttGlyphPen import TTGlyphPen
 from fontTools.ttLib import TTFont
-from fontTools.ttLib.tables.DefaultTable import DefaultTable
 
 DEFAULT_SRC = Path("/usr/share/fonts/truetype/osifont/osifont.ttf")
 DEFAULT_DST = Path(__file__).resolve().parent.parent / "geomcad" / "fonts" / "osifont.ttf"
 
-VERSION_SUFFIX = "; geomcad: Э э Ё ё restored, ь з at x-height"
+VERSION_SUFFIX = "; geomcad: Э э Ё ё restored, ь з at x-height, U+202F"
 #: For name records in an 8-bit (Mac Roman) encoding, which has no Cyrillic.
-VERSION_SUFFIX_ASCII = "; geomcad: U+042D U+044D U+0401 U+0451 restored, U+044C U+0437 at x-height"
+VERSION_SUFFIX_ASCII = (
+    "; geomcad: U+042D U+044D U+0401 U+0451 restored, U+044C U+0437 at x-height, U+202F"
+)
 #: The version suffixes of earlier runs of this script (replaced, not appended to).
-OLD_SUFFIXES = ("; geomcad: Э э Ё ё restored", "; geomcad: U+042D U+044D U+0401 U+0451 restored")
+OLD_SUFFIXES = (
+    "; geomcad: Э э Ё ё restored, ь з at x-height",
+    "; geomcad: U+042D U+044D U+0401 U+0451 restored, U+044C U+0437 at x-height",
+    "; geomcad: Э э Ё ё restored",
+    "; geomcad: U+042D U+044D U+0401 U+0451 restored",
+)
 
 #: Where the bar of э/Э starts: this fraction of the way from the open side's tips to the
 #: inner edge of the closed side.
@@ -273,6 +284,28 @@ def _ze_at_x_height(font: TTFont, cmap: Mapping[int, str]) -> None:
     _set_glyph(font, target, pen, font["hmtx"][target][0])
 
 
+#: The narrow no-break space (U+202F) is this fraction of the font's space wide.
+NARROW_SPACE = 0.5
+
+
+def _narrow_space(font: TTFont) -> None:
+    """Add U+202F as an empty glyph ``NARROW_SPACE`` of the space's advance wide, appended to
+    the glyph order (the other glyphs keep their indices) and mapped in the Unicode subtables
+    of the character map (platform 0 and platform 3, encoding 1 or 10)."""
+    name = "uni202F"
+    order = font.getGlyphOrder()
+    cmap = font["cmap"]
+    space = cmap.getBestCmap()[0x0020]
+    if name not in order:
+        font.setGlyphOrder([*order, name])
+        font["glyf"].glyphOrder = font.getGlyphOrder()
+        font["glyf"][name] = TTGlyphPen(None).glyph()
+    font["hmtx"][name] = (round(NARROW_SPACE * font["hmtx"][space][0]), 0)
+    for table in cmap.tables:
+        if table.isUnicode():
+            table.cmap[0x202F] = name
+
+
 def _append_version(font: TTFont) -> None:
     for record in font["name"].names:
         if record.nameID != 5:
@@ -293,11 +326,6 @@ def patch(src: Path, dst: Path) -> None:
     # in _set_glyph), then the font-wide values that depend on them.
     font = TTFont(str(src), recalcTimestamp=False, recalcBBoxes=False)
     cmap: dict[int, str] = dict(font.getBestCmap())
-    # write the character map back as it was read: a decompiled cmap table (OS/2's compile
-    # reads it) would be re-encoded by fontTools, the same mapping in other bytes
-    raw_cmap = DefaultTable("cmap")
-    raw_cmap.data = font.reader["cmap"]
-    font["cmap"] = raw_cmap
 
     def glyph_for(*codes: int) -> str:
         for code in codes:
@@ -314,6 +342,7 @@ def patch(src: Path, dst: Path) -> None:
     _mirrored_with_bar(font, cmap, glyph_for(0x042D), glyph_for(0x0421, 0x0043))
     _soft_sign_from_yeru(font, cmap)
     _ze_at_x_height(font, cmap)
+    _narrow_space(font)
     _append_version(font)
     font["maxp"].recalc(font)  # also head's bounding box and its "lsb = xMin" flag
     font["hhea"].recalc(font)

@@ -184,13 +184,12 @@ def test_each_position_is_numbered_once_clear_of_the_others(path: str) -> None:
 
 
 def test_large_numbers_in_plain_grouped_digits() -> None:
-    assert fmt_number(11130.0, "ru", 4) == "11\u00a0130"
+    assert fmt_number(11130.0, "ru", 4) == "11\u202f130"
     assert fmt_number(8544.0, "ru", 4) == "8544"
-    assert fmt_number(-1.2345e6, "en", 4) == "\u20131\u00a0234\u00a0000"
+    assert fmt_number(-1.2345e6, "en", 4) == "\u20131\u202f234\u202f000"
     assert "10^" in fmt_number(2e-9, "ru", 4)  # a round-off stays a power of ten
-    # 2.5 keeps its digits beside 12 345.6 (3 significant figures where the largest can take
-    # the decimal: at most 6 there)
-    assert fmt_column([12345.6, 2.5], "ru", 4) == ["12\u00a0345,6", "2,5"]
+    # a column at its largest value's precision: 12 346 whole, 2.6 then 3
+    assert fmt_column([12345.6, 2.6], "ru", 4) == ["12\u202f346", "3"]
 
 
 def test_the_names_of_one_document_share_one_height() -> None:

@@ -11,8 +11,9 @@ from pathlib import Path
 
 from geomcad import documents
 from geomcad.sheet.lang import language
-from geomcad.sheet.linkage_forces import _nonzero, _sig
+from geomcad.sheet.linkage_forces import _nonzero
 from geomcad.sheet.model import CircleItem, Polyline, Sheet, TextItem
+from geomcad.sheet.scale import fmt_number
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
 
@@ -23,16 +24,22 @@ def _dynamics(stem: str) -> Sheet:
     return sheets["dynamics"]
 
 
-def test_results_keep_four_figures_and_a_decimal_each() -> None:
-    with language("ru"):
-        assert _sig(367.04) == "367,0"
-        assert _sig(163.0) == "163,0"
-        assert _sig(0.510519) == "0,5105"
-        assert _sig(58.4) == "58,40"
-        assert _sig(5.3114) == "5,311"
-        assert _sig(1100.2) == "1100,2"
-        assert "," not in _sig(123456.0)  # a large number whole, grouped
-        assert _sig(0.0) == "0"
+def _sig(x: float) -> str:
+    return fmt_number(x, "ru", 4, zeros=True)
+
+
+def test_results_keep_four_figures_their_zeros_included() -> None:
+    """The flywheel's results: one formatter with the sheet's other single values (4
+    significant figures), its trailing zeros kept (they are figures: 367,0, 58,40)."""
+    assert _sig(367.04) == "367,0"
+    assert _sig(163.0) == "163,0"
+    assert _sig(0.510519) == "0,5105"
+    assert _sig(58.4) == "58,40"
+    assert _sig(5.3114) == "5,311"
+    assert _sig(1100.2) == "1100"  # four figures, never 1100,2
+    assert _sig(123456.0) == "123\u202f500"  # a large number whole, grouped
+    assert _sig(0.0) == "0"
+    assert fmt_number(58.4, "ru", 4) == "58,4"  # without ``zeros``, as the order writes it
 
 
 def test_a_value_that_is_not_zero_never_prints_as_zero() -> None:

@@ -33,7 +33,7 @@ def _solved(name: str) -> Solved:
 
 
 def _value(cell: str) -> float:
-    return float(cell.replace("\u2013", "-").replace("\u00a0", "").replace(",", "."))
+    return float(cell.replace("\u2013", "-").replace("\u202f", "").replace(",", "."))
 
 
 def _decimals(cell: str) -> int:
@@ -47,7 +47,7 @@ def test_an_angle_is_written_with_the_sheets_one_count_of_decimals() -> None:
         assert fmt_fixed(3.749, 1) == "3,7"
         assert fmt_fixed(45.0, 1) == "45,0"
         assert fmt_fixed(-0.01, 1) == "0,0"
-        assert fmt_fixed(11130.4, 0) == "11\u00a0130"
+        assert fmt_fixed(11130.4, 0) == "11\u202f130"
 
 
 def test_a_sliders_velocity_in_the_table_is_signed_as_on_its_diagram() -> None:
@@ -127,7 +127,7 @@ def test_the_force_sheet_writes_each_quantity_in_one_unit_with_one_count_of_deci
         # each value (a load of its own) to 4 significant figures, as the order writes it,
         # the column aligned on its decimal comma (issue 27: 88,29 never 88 beside 2200)
         for v in values:
-            digits = v.replace("\u2013", "").replace("\u00a0", "").replace(",", "")
+            digits = v.replace("\u2013", "").replace("\u202f", "").replace(",", "")
             assert v == "0" or len(digits.lstrip("0")) >= 4, f"{unit}: {values}"
     texts = " ".join(t.text for t in sheet.texts())
     assert "кН" not in texts

@@ -77,11 +77,13 @@ def test_linkage_sheet_lists_both_plans_of_its_detailed_position() -> None:
         k = names.index("ω3")
         assert names.index("π") > k
         line = order.lines[order.lines.index(lines[k])]
-        assert line.startswith(f"{k + 1}. ω_{{3}} = V_{{A3C}}/l_{{CA3}}")
         (table,) = [v for t in lay.trees for v in t.views() if isinstance(v, Table) and
                     v.rows[0][0] == "№"]  # fmt: skip
         row = table.rows[1 + next(i for i, Q in enumerate(s.drawn) if Q is P)]
         cell = row[[h.split(", ")[0] for h in table.rows[0]].index("ω_{3}")]
+        # the text's quotient is a magnitude: |ω_3| where the table's ω_3 is negative
+        w = "|ω_{3}|" if cell.startswith("\u2013") else "ω_{3}"
+        assert line.startswith(f"{k + 1}. {w} = V_{{A3C}}/l_{{CA3}}")
         assert float(cell.lstrip("\u2013").replace(",", ".")) == pytest.approx(
             abs(P.c["ω3"]), abs=0.0006
         )

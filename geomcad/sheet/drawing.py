@@ -65,7 +65,7 @@ LINE_SPACING = 1.7
 
 
 #: A table cell that is a number: sign, digits (grouped by no-break spaces), a decimal part.
-NUMBER = re.compile(r"[\u2013+-]?\d[\d\u00a0]*(?:[.,]\d+)?")
+NUMBER = re.compile(r"[\u2013+-]?\d[\d\u202f\u00a0]*(?:[.,]\d+)?")
 
 
 def number_parts(cell: str) -> tuple[str, str] | None:

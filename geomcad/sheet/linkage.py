@@ -1841,25 +1841,61 @@ def _tables(s: Solved, accel: Sequence[Position], h: float = TEXT_H) -> list[Tab
 def _as_tabled(
     steps: Sequence[Step], P: Position, tables: Sequence[tuple[Table, Sequence[Position]]]
 ) -> dict[str, dict[str, str]]:
-    """The value of each step that reads off a link's ω or ε (kind ``plan_omega``: its link's
-    ``w``, its magnitude ``value``) as the sheet's table prints it in position ``P``, where a
+    """The values of the steps as the sheet's tables print them in position ``P``, where a
     table has ``P``'s row (its rows after the header one per position of ``tables``' second)
-    and a column headed by that ``w``: one rounding per value on a sheet, the column's
-    decimals."""
+    and a column headed by the value's symbol: one rounding per value on a sheet, the column's
+    decimals. A step that reads off a link's ω or ε (kind ``plan_omega``: its ``w``, its
+    magnitude ``value``) writes the cell's magnitude, and ``|ε_4|`` for its symbol where the
+    cell is negative (the text's quotient of lengths is a magnitude, the table's value signed);
+    a step that uses a link's ω (``w`` and its value ``omega``: a^n = ω²·l, 2ω·V) or gives a
+    tabled quantity (``label`` and its ``value``: V_D, a_D) writes the same cell's magnitude."""
+    cells = _cells(P, tables)
+    minus = "\u2212\u2013-"
+    out: dict[str, dict[str, str]] = {}
+    for step in steps:
+        args = dict(step.args)
+        w, label = args.get("w"), args.get("label")
+        given: dict[str, str] = {}
+        if step.kind == "plan_omega" and isinstance(w, str) and w in cells:
+            given["value"] = cells[w].lstrip(minus)
+            if cells[w][:1] in minus:
+                given["w"] = f"|{w}|"
+        elif isinstance(w, str) and w in cells and "omega" in args:
+            given["omega"] = cells[w].lstrip(minus)
+        if isinstance(label, str) and label in cells and "value" in args:
+            given["value"] = cells[label].lstrip(minus)
+        if given:
+            out[step.name] = given
+    return out
+
+
+def _cells(
+    P: Position, tables: Sequence[tuple[Table, Sequence[Position]]], same: bool = False
+) -> dict[str, str]:
+    """Position ``P``'s cells of ``tables`` (their rows after the header one per position of
+    ``tables``' second), by their column's symbol (``ε_{3}`` of ``ε_{3}, с^{-2}``); ``same``:
+    a position at ``P``'s crank angle is ``P``'s, else only ``P`` itself."""
+
+    def at(Q: Position) -> bool:
+        return Q is P or (same and abs(math.remainder(Q.phi - P.phi, math.tau)) <= tol.ANGLE)
+
     cells: dict[str, str] = {}
     for table, positions in tables:
-        row = next((i for i, Q in enumerate(positions) if Q is P), None)
+        row = next((i for i, Q in enumerate(positions) if at(Q)), None)
         if row is None:
             continue
         head, values = table.rows[0], table.rows[1 + row]
         cells.update({h.split(", ")[0]: v for h, v in zip(head, values, strict=True)})
-    out: dict[str, dict[str, str]] = {}
-    for step in steps:
-        args = dict(step.args)
-        w = args.get("w")
-        if step.kind == "plan_omega" and isinstance(w, str) and w in cells:
-            out[step.name] = {"value": cells[w].lstrip("\u2212\u2013-")}
-    return out
+    return cells
+
+
+def tabled_cells(s: Solved, P: Position) -> dict[str, str]:
+    """The kinematic sheet's table cells of the position at ``P``'s crank angle, by their
+    column's symbol (``ω_{2}``, ``ε_{3}``, ``a_{B}``): another sheet prints a value the
+    kinematic sheet tables as its cell reads (one rounding per value in a set of sheets)."""
+    accel = _accel_positions(s)
+    omega, eps = _tables(s, accel)
+    return _cells(P, [(omega, s.drawn), (eps, accel)], same=True)
 
 
 def _along_guide(
@@ -1884,13 +1920,12 @@ def _zeroed(xs: Sequence[float], scale: float) -> list[float]:
 
 def _columns(*cols: Sequence[float], angle: int = -1, places: int = 1) -> list[list[str]]:
     """Table rows from columns of one quantity each, a column's numbers with the same count of
-    decimals (:func:`~geomcad.sheet.scale.fmt_column`): 3 significant figures at its largest,
-    as the plans are read; the crank angle (column ``angle``) with the sheets' ``places``."""
+    decimals (:func:`~geomcad.sheet.scale.fmt_column`): 4 significant figures at its largest
+    (the order of construction prints a value as its cell does); the crank angle (column
+    ``angle``) with the sheets' ``places``."""
     n = len(cols)
     texts = [
-        [fmt_fixed(x, places, current()) for x in c]
-        if i == angle % n
-        else fmt_column(c, current(), 3)
+        [fmt_fixed(x, places, current()) for x in c] if i == angle % n else fmt_column(c, current())
         for i, c in enumerate(cols)
     ]
     return [list(r) for r in zip(*texts, strict=True)]
@@ -1915,10 +1950,11 @@ def _turns(lk: Linkage, link: int) -> bool:
 ZERO = tol.DERIVED
 
 
-def table_number(x: float, scale: float = 0.0, digits: int = 3) -> str:
-    """A table value to ``digits`` significant figures; round-off of a zero (at most
-    :data:`ZERO` of ``scale``, the size of its quantity) as 0."""
-    return "0" if abs(x) <= ZERO * scale else fmt_number(x, current(), digits=digits)
+def table_number(x: float, scale: float = 0.0, digits: int = 3, *, zeros: bool = False) -> str:
+    """A table value to ``digits`` significant figures (``zeros``: its trailing zeros kept,
+    :func:`~geomcad.sheet.scale.fmt_number`); round-off of a zero (at most :data:`ZERO` of
+    ``scale``, the size of its quantity) as 0."""
+    return "0" if abs(x) <= ZERO * scale else fmt_number(x, current(), digits, zeros=zeros)
 
 
 # --- the moving mechanism ---------------------------------------------------------------------

@@ -104,6 +104,7 @@ from geomcad.sheet.linkage import (
     sheet_formats,
     sheet_name,
     table_number,
+    tabled_cells,
 )
 from geomcad.sheet.linkage import WORDS as KIN_WORDS
 from geomcad.sheet.linkage import layout as kinematic_layout
@@ -116,7 +117,14 @@ from geomcad.sheet.loads import (
     moment,
 )
 from geomcad.sheet.plans import markup_of
-from geomcad.sheet.scale import ANGLE_PLACES, Scale, angle_places, fmt_column, fmt_fixed
+from geomcad.sheet.scale import (
+    ANGLE_PLACES,
+    FIGURES,
+    Scale,
+    angle_places,
+    fmt_column,
+    fmt_fixed,
+)
 from geomcad.sheet.scheme import draw_scheme
 from geomcad.sheet.views import (
     AxisSpec,
@@ -373,26 +381,62 @@ def _title(lk: Linkage, what: str, designation: str, no: int, count: int) -> Tit
     )
 
 
-#: The significant figures of a value in the table of loads and in the order of the analysis
-#: (:func:`geomcad.sheet.views.num`): the two round a value the same way.
-TABLE_DIGITS = 4
+def _num(x: float, digits: int = FIGURES, scale: float = 0.0, *, zeros: bool = False) -> str:
+    """A value to ``digits`` significant figures (:func:`~geomcad.sheet.scale.fmt_number`;
+    ``zeros``: its trailing zeros kept); round-off of a zero (at most ``ZERO`` of ``scale``)
+    as 0."""
+    return table_number(x, scale, digits, zeros=zeros)
 
 
-def _figures(x: float, scale: float) -> str:
-    """A value of the table of loads to :data:`TABLE_DIGITS` significant figures, its trailing
-    zeros kept (89,00 and 17,70, as 4 figures; the order of the analysis writes the same
-    numbers, 89 and 17,7); round-off of a zero (at most ``ZERO`` of ``scale``) as 0."""
-    if abs(x) <= ZERO * scale:
-        return "0"
-    text = f"{x:#.{TABLE_DIGITS}g}"
-    if "e" in text:  # 10^4 and more (whole, grouped) or a power of ten
-        return fmt_number(x, current(), TABLE_DIGITS)
-    text = text.rstrip(".").replace("-", "\u2013")
-    return text.replace(".", ",") if current() == "ru" else text
+def _load(x: float, scale: float = 0.0) -> str:
+    """A load, a reaction or M_ур as the forces sheet writes it wherever it is printed (the
+    table of loads, the order of the analysis, the lever's title): one value of its own to
+    :data:`~geomcad.sheet.scale.FIGURES` significant figures, its trailing zeros kept (89,00
+    and 17,70 in the table and in the text alike); round-off of a zero (at most ``ZERO`` of
+    ``scale``) as 0."""
+    return _num(x, FIGURES, scale, zeros=True)
 
 
-def _num(x: float, digits: int = 4, scale: float = 0.0) -> str:
-    return table_number(x, scale, digits)
+#: The operands of the order of the analysis that are its results (a load, a reaction, M_ур,
+#: P_ур), written as the table of loads writes them (:func:`_load`), by the step's kind; a kind
+#: not listed, its ``value``: not a lever arm in m (``slide_arm``), not a discrepancy in %.
+RESULT_FIELDS: Mapping[str, tuple[str, ...]] = {
+    "force_polygon": ("Fa", "Fb"),
+    "zhukovsky": ("F", "value"),
+    "lever_check": ("a", "b"),
+    "slide_arm": (),
+}
+
+
+#: The operands of the order of the analysis that the kinematic sheet tables: an operand's
+#: symbol (key) and its value (value), the link's ε of M_Ф = −J·ε (signed, as its table) and
+#: the point's a of Ф = m·a (a magnitude).
+KINEMATIC_FIELDS = {"e": "ev", "a": "av"}
+
+
+def _as_loads(
+    steps: Sequence[Step], cells: Mapping[str, str] | None = None
+) -> dict[str, dict[str, str]]:
+    """The result operands (:data:`RESULT_FIELDS`) of ``steps`` as :func:`_load` writes them,
+    by step name: the order of the analysis prints a value as the table of loads does; and an
+    ε or a that the kinematic sheet tables in this position (``cells``,
+    :func:`~geomcad.sheet.linkage.tabled_cells`) as its cell reads (:data:`KINEMATIC_FIELDS`)."""
+    out: dict[str, dict[str, str]] = {}
+    for st in steps:
+        keys = RESULT_FIELDS.get(st.kind, ("value",))
+        args = dict(st.args)
+        given = {
+            k: _load(float(v))
+            for k, v in st.args
+            if k in keys and isinstance(v, float | int) and not isinstance(v, bool)
+        }
+        for sym, field in KINEMATIC_FIELDS.items():
+            name = args.get(sym)
+            if isinstance(name, str) and name in (cells or {}) and field in args:
+                cell = (cells or {})[name]
+                given[field] = cell if sym == "e" else cell.lstrip("\u2212\u2013-")
+        out[st.name] = given
+    return out
 
 
 # --- sheet 2 ------------------------------------------------------------------------------
@@ -480,7 +524,8 @@ def _sheet2(
              for (name, _), p in zip(gf.polygons, ps, strict=True)}  # fmt: skip
     steps = order_steps(f, drawn)
     order = Steps(steps, order_width(h) * 170.0 / 190.0, only=[st.name for st in steps],
-                  words=WORDS, height=h, title=WORDS("order"), title_height=TITLE_H)  # fmt: skip
+                  words=WORDS, given=_as_loads(steps, tabled_cells(s, P)), height=h,
+                  title=WORDS("order"), title_height=TITLE_H)  # fmt: skip
     right = Column(table, order)
     # the groups cut out beside the mechanism (or over the polygons) in one band packed by
     # their sizes, or each group over its polygons; the table and the order of the analysis
@@ -1201,7 +1246,7 @@ class _Lever(View):
         return super().title_room() + further_room(self.fs)
 
     def caption(self, scale: Scale | None) -> str:
-        m = WORDS("m_bal", value=_num(self.f.lever.M_bal))
+        m = WORDS("m_bal", value=_load(self.f.lever.M_bal))
         return f"{super().caption(scale)};  {self.fs.caption()};  {m}"
 
     def draw(self, d: Drawing, at: Placed) -> None:
@@ -1277,8 +1322,8 @@ def _table2(f: Forces, h: float) -> Table:
     # that vanishes in this position gives M_Φ = 10^-13 N·m, not a number to print)
     big_f = max((x for _, x, _ in forces), default=0.0)
     big_m = max((abs(m) for _, m in moments), default=0.0)
-    f_text = [_figures(x, max(sc, big_f)) for _, x, sc in forces]
-    m_text = [_figures(m, big_m) for _, m in moments]
+    f_text = [_load(x, max(sc, big_f)) for _, x, sc in forces]
+    m_text = [_load(m, big_m) for _, m in moments]
     rows: list[tuple[str, float | str, str]] = []
     for kind, i in order:
         if kind == "F":
@@ -1341,17 +1386,6 @@ def _sheet3(s: Solved, fw: Flywheel, h: float) -> Tree:
         Row(column, Column(witt, Row(omega, tables))),
         Column(Row(column, witt), Row(omega, tables)),
     )
-
-
-def _sig(x: float, digits: int = 4) -> str:
-    """``x`` to ``digits`` significant figures with its trailing zeros and at least one decimal
-    (367,0; 0,5105; 1100,0); a number of more than ``digits`` whole digits whole."""
-    if x == 0.0 or not math.isfinite(x):
-        return fmt_number(x, current(), digits)
-    if abs(x) >= 10.0**digits:
-        return fmt_number(x, current(), digits)
-    places = max(1, digits - 1 - math.floor(math.log10(abs(x))))
-    return fmt_fixed(x, places, current())
 
 
 def _nonzero(xs: Sequence[float], lang: str, digits: int = 4) -> list[str]:
@@ -1508,18 +1542,18 @@ def _tables3(lk: Linkage, fw: Flywheel, h: float) -> list[View]:
     for j, i in enumerate(idx):
         rows.append([str(i), cols[0][j], cols[1][j], cols[2][j]])
     # the results to four significant figures each, trailing zeros kept (367,0 and 0,5105:
-    # every value has its decimal comma, so that the column reads aligned on it)
+    # the column reads aligned on its decimal commas)
     res: list[tuple[str, float | str, str]] = [
-        (WORDS("A_c"), _sig(fw.A_cycle), "J"),
-        (WORDS("M_dr"), _sig(fw.M_drive), "N·m"),
-        ("ω_{max}", _sig(fw.omega_max), "1/s"),
-        ("ω_{min}", _sig(fw.omega_min), "1/s"),
-        (WORDS("J_fw"), _sig(fw.J_flywheel), "kg·m²"),
+        (WORDS("A_c"), fw.A_cycle, "J"),
+        (WORDS("M_dr"), fw.M_drive, "N·m"),
+        ("ω_{max}", fw.omega_max, "1/s"),
+        ("ω_{min}", fw.omega_min, "1/s"),
+        (WORDS("J_fw"), fw.J_flywheel, "kg·m²"),
     ]
     if fw.D > 0.0 and lk.dynamics is not None:
         kind = WORDS("disc") if lk.dynamics.flywheel == "disc" else WORDS("rim")
-        res += [(f"D ({kind})", _sig(fw.D), "m"), ("b", _sig(fw.b), "m"),
-                ("m", _sig(fw.mass), "kg")]  # fmt: skip
+        res += [(f"D ({kind})", fw.D, "m"), ("b", fw.b, "m"), ("m", fw.mass, "kg")]
+    res = [(n, fmt_number(float(v), current(), FIGURES, zeros=True), u) for n, v, u in res]
     row_h = row_height(h)
     table = Table(rows, title=WORDS("table3"), height=h, row_h=row_h, title_height=TITLE_H,
                   center=True)  # fmt: skip

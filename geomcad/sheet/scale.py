@@ -57,71 +57,79 @@ class ScaleStyle:
 PLAIN_FROM = 1.0
 
 
+#: The separator of a long number's groups of three digits (GOST 8.417-2002, 6.5; ГОСТ 2.105,
+#: 4.2.17): a narrow no-break space (U+202F), so that ``11 130`` reads as one number, never as
+#: two; the shipped font draws it (``scripts/patch_osifont.py``).
+GROUP_SEP = "\u202f"
+
+
 def group_digits(s: str) -> str:
-    """A plain number's whole part of five or more digits in groups of three, parted by a
-    no-break space (GOST 8.417: ``11 130``, ``1 250 000``); four digits stay whole (``8544``)."""
+    """A plain number's whole part of five or more digits in groups of three, parted by
+    :data:`GROUP_SEP` (GOST 8.417: ``11 130``, ``1 250 000``); four digits stay whole
+    (``8544``)."""
     sign = s[0] if s[:1] in "-\u2013" else ""
     body = s[len(sign) :]
     whole, dot, frac = body.partition(".")
     if len(whole) < 5 or not whole.isdigit():
         return s
     groups = [whole[max(0, i - 3) : i] for i in range(len(whole), 0, -3)][::-1]
-    return sign + "\u00a0".join(groups) + dot + frac
+    return sign + GROUP_SEP.join(groups) + dot + frac
 
 
-def fmt_number(x: float, lang: str | None = None, digits: int = 6) -> str:
-    """A number for a sheet: up to ``digits`` significant digits, no trailing zeros, a decimal
-    comma in Russian (a point in English), a typographic minus; ``lang`` defaults to the
-    language being drawn. A large number is written in plain digits, its whole part grouped by
-    threes (``11 130``, not ``1,113·10⁴``); only a number below 10^−``digits`` takes a power of
-    ten."""
+#: The significant figures of a value on a sheet: a table column's largest value, a load, a
+#: result and a value in the order of construction (3–4 figures: a ТММ table reads −149,8,
+#: never −149,806).
+FIGURES = 4
+
+
+def fmt_number(x: float, lang: str | None = None, digits: int = 6, *, zeros: bool = False) -> str:
+    """A number for a sheet: up to ``digits`` significant digits, no trailing zeros (with
+    ``zeros``, exactly ``digits``, trailing zeros kept: 367,0 and 58,40), a decimal comma in
+    Russian (a point in English), a typographic minus; ``lang`` defaults to the language being
+    drawn. A large number is written in plain digits, its whole part grouped by threes
+    (``11 130``, not ``1,113·10⁴``); only a number below 10^−``digits`` takes a power of
+    ten. Every single value of a sheet is written by it (a column of one quantity by
+    :func:`fmt_column`), so that one value reads the same wherever it is printed."""
     if x == 0.0:
         return "0"
-    s = f"{x:.{digits}g}"
+    s = f"{x:#.{digits}g}" if zeros else f"{x:.{digits}g}"
     if "e" in s and abs(x) >= PLAIN_FROM:
-        s = group_digits(f"{float(s):.0f}")
+        s = f"{float(s):.0f}"
     if "e" in s:
         mant, exp = s.split("e")
-        s = f"{mant}·10^{{{int(exp)}}}"
+        s = f"{mant.rstrip('.')}·10^{{{int(exp)}}}"
     else:
-        s = group_digits(s)
+        s = group_digits(s.rstrip("."))
     s = s.replace("-", "\u2013")
     return s.replace(".", ",") if (lang or current()) == "ru" else s
 
 
-def fmt_column(
-    xs: Sequence[float], lang: str | None = None, digits: int = 4, least: int = 3, most: int = 6
-) -> list[str]:
-    """A table column of one quantity, every number with the same count of decimals: the
-    largest magnitude gets ``digits`` significant digits (1,830 / 3,870 / 9,078), and more
-    decimals where a smaller value would keep fewer than ``least`` (25,00 beside 1,30, never
-    25,0 beside 1,3; 88,29 beside 2200,00, never 88), as long as the largest keeps at most
-    ``most``; or fewer decimals where they write every value exactly (0 / 15 / 30; 0,05 /
-    0,10). A value within ``tol.DERIVED`` of the largest is round-off of a zero and asks for
-    nothing. A decimal comma in Russian (a point in English), a typographic minus."""
+def column_places(xs: Sequence[float], digits: int = FIGURES) -> int:
+    """The one count of decimals of a table column of one quantity: those that write its
+    largest magnitude to ``digits`` significant figures (−149,8 beside −0,7; 4,937 beside
+    0,126), or fewer where they write every value exactly (0 / 15 / 30; 0,05 / 0,10). The
+    smaller values keep fewer figures: the column reads at the precision of its largest, as a
+    plan measured at one μ does. A value within ``tol.DERIVED`` of the largest is round-off
+    of a zero and asks for nothing."""
     big = max((abs(x) for x in xs), default=0.0)
-    if big == 0.0:
-        return ["0" for _ in xs]
-
-    def places(x: float, sig: int) -> int:
-        """The decimals that write ``x`` to ``sig`` significant digits."""
-        return max(0, sig - 1 - math.floor(math.log10(abs(x))))
-
-    cap = places(big, digits)
-    small = [places(x, least) for x in xs if abs(x) > tol.DERIVED * big]
-    cap = max(cap, min(max(small, default=0), places(big, most)))
-    need = next(
+    if big == 0.0 or not math.isfinite(big):
+        return 0
+    cap = max(0, digits - 1 - math.floor(math.log10(big)))
+    if cap > 0 and abs(round(big, cap)) >= 10.0 ** (digits - cap):  # 9,9996 → 10,00
+        cap -= 1
+    return next(
         (d for d in range(cap) if all(abs(x - round(x, d)) <= tol.DERIVED * big for x in xs)),
         cap,
     )
-    out = []
-    for x in xs:
-        s = f"{x:.{need}f}"
-        if float(s) == 0.0:
-            s = s.lstrip("-")
-        s = group_digits(s).replace("-", "\u2013")
-        out.append(s.replace(".", ",") if (lang or current()) == "ru" else s)
-    return out
+
+
+def fmt_column(xs: Sequence[float], lang: str | None = None, digits: int = FIGURES) -> list[str]:
+    """A table column of one quantity, every number with the same count of decimals
+    (:func:`column_places`: ``digits`` significant figures at its largest magnitude: 1,830 /
+    3,870 / 9,078; −288,9 / −0,7). A decimal comma in Russian (a point in English), a
+    typographic minus, a whole part of five or more digits grouped by threes."""
+    places = column_places(xs, digits)
+    return [fmt_fixed(x, places, lang) for x in xs]
 
 
 #: An angle on a sheet is written to this many decimals of a degree where one of the sheet's

@@ -61,7 +61,7 @@ from geomcad.sheet.graph import Axis, Graph, nice_step
 from geomcad.sheet.lang import Words, current
 from geomcad.sheet.model import Polyline
 from geomcad.sheet.plans import LINE_OVER_MM, markup_of, plan_lines
-from geomcad.sheet.scale import Scale, ScaleStyle, fmt_number, nice_below, nice_factor
+from geomcad.sheet.scale import FIGURES, Scale, ScaleStyle, fmt_number, nice_below, nice_factor
 from geomcad.sheet.scheme import Body, draw_scheme
 from geomcad.sheet.text import balanced, break_points, metrics, wrap, wrap_balanced
 from geomcad.structure import Mechanism
@@ -70,7 +70,7 @@ from geomcad.units import to_display
 WORDS = Words(__package__, "views")
 
 
-def num(x: float, digits: int = 4) -> str:
+def num(x: float, digits: int = FIGURES) -> str:
     """A number to ``digits`` significant figures in the language being drawn."""
     return fmt_number(x, current(), digits)
 

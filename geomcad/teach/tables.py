@@ -98,7 +98,7 @@ def read_rows(path: str | Path, what: str) -> list[tuple[int, list[str]]]:
 def number(text: str) -> float:
     """A cell as a number: a decimal point or comma, spaces between thousands; ValueError if
     it is not one."""
-    t = text.strip().replace("\u00a0", "").replace(" ", "")
+    t = text.strip().replace("\u00a0", "").replace("\u202f", "").replace(" ", "")
     if t.count(",") == 1 and "." not in t:
         t = t.replace(",", ".")
     x = float(t)
