@@ -110,7 +110,7 @@ class Insets:
             return
         eps = v.scale.model(0.8)
         free = _Free(d, start, field)
-        for q, tiers in self.groups(eps):
+        for q, tiers in self.groups(v.scale.model(2.0 * MARK_R)):
             p = v.p(q)
             mine: list[str] = []
             for sc, shorts in tiers:
@@ -118,8 +118,10 @@ class Insets:
                 mine.append(letter)
                 self.drawn.append((letter, sc))
                 self._one(d, v, free, q, p, letter, sc, shorts, eps)
-            d.sheet.add(CircleItem(p, MARK_R, "thin"))
-            d.label(p, ", ".join(mine), LETTER_H, prefer=(0.7, -0.7), clear=MARK_R)
+            ats = [v.p(s.at) for _, ss in tiers for s in ss]
+            r = MARK_R + max(math.dist(p, a) for a in ats)
+            d.sheet.add(CircleItem(p, r, "thin"))
+            d.label(p, ", ".join(mine), LETTER_H, prefer=(0.7, -0.7), clear=r)
 
     def _one(
         self,
@@ -139,6 +141,9 @@ class Insets:
         starts = side_by_side([s.F for s in shorts], sc.k)
         arrive = pushes([s.F for s in shorts])
         # paper mm from the point: the far ends of the arrows (leaving it, or arriving)
+        # each force at its own point (a detail keeps the view's μ_l): offsets from q
+        rel = [((s.at.x - q.x) / v.scale.k, (q.y - s.at.y) / v.scale.k) for s in shorts]
+        starts = [(o[0] + e[0], o[1] + e[1]) for o, e in zip(starts, rel, strict=True)]
         tips = [
             (o[0] + (-1.0 if a else 1.0) * s.F.x / sc.k, o[1] + (1.0 if a else -1.0) * s.F.y / sc.k)
             for o, a, s in zip(starts, arrive, shorts, strict=True)
@@ -156,14 +161,19 @@ class Insets:
         at = (corner[0] + (w - (x1 - x0)) / 2.0 - x0, corner[1] + cap - y0)
         d.text(caption, (corner[0] + (w - cap_w) / 2.0, corner[1] + CAPTION_H), CAPTION_H)
         iv = Viewport(d, v.scale, q.x, q.y, at)
-        iv.dot(q)
-        name = self.name_of(q, eps)
-        if name:
-            iv.label(q, markup_of(name), CAPTION_H, clear=0.8)
-        for o, a, s in zip(starts, arrive, shorts, strict=True):
+        pts: list[Vec] = []
+        for s in shorts:
+            if all(s.at.dist(u) > eps for u in pts):
+                pts.append(s.at)
+        for u in pts:
+            iv.dot(u)
+            name = self.name_of(u, eps)
+            if name:
+                iv.label(u, markup_of(name), CAPTION_H, clear=0.8)
+        for o, e, a, s in zip(starts, rel, arrive, shorts, strict=True):
             q2 = q + Vec(o[0], -o[1]) * v.scale.k
-            if o != (0.0, 0.0):  # set beside the others on its line: a thin line to its point
-                iv.seg(q, q2, "thin")
+            if o != e:  # set beside the others on its line: a thin line to its point
+                iv.seg(s.at, q2, "thin")
             force(iv, q2, s.F, sc.k, s.label, arrive=a, role=s.role, height=CAPTION_H)
         free.take(corner, w, h)
 
