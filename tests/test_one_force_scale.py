@@ -147,3 +147,49 @@ def test_each_view_draws_its_forces_at_one_scale(
               for x in re.findall(r"μF = ([\d ]+(?:,\d+)?) Н/мм", text_all)}  # fmt: skip
     for k in {r["k"] for r in rec}:
         assert any(math.isclose(k, s, rel_tol=1e-9) for s in stated), (k, sorted(stated))
+
+
+@pytest.mark.parametrize(
+    ("forces", "room"),
+    [
+        ([3500.0, 176.6, 130.4, 58.9, 31.4, 23.3, 14.4, 4.4, 1.6], 40.0),  # a press's lever
+        ([1800.0, 216.0, 28.3, 10.5, 6.9], 40.0),  # a shaper's lever
+        ([39.2, 32.1, 11.8, 7.1], 24.0),  # a light four-bar: all in the view
+        ([1000.0, 999.0, 998.0], 24.0),
+    ],
+)
+def test_view_scales_one_for_the_view_the_short_ones_in_insets(
+    forces: list[float], room: float
+) -> None:
+    from geomcad.sheet.loads import INSET_MM, VIEW_NEGLIGIBLE, view_scales
+
+    fs = view_scales([*forces, 1e-14], room)
+    big = max(forces)
+    assert big / fs.k <= room and fs.insets
+    assert fs.tier(1e-14) is None  # round-off of a zero force
+    for F in forces:
+        t = fs.tier(F)
+        if VIEW_NEGLIGIBLE * big >= F:
+            assert t is None  # named under the caption, not drawn
+            continue
+        assert t is not None
+        # at the view's μ_F exactly where it is long enough there, else at a finer inset one
+        assert (t == 0) == (F / fs.k >= SHORT_MM * (1.0 - 1e-9))
+        mm = F / fs.scales[t].k
+        assert mm >= SHORT_MM * (1.0 - 1e-9)
+        assert t == 0 or mm <= INSET_MM * (1.0 + 1e-9)
+    assert all(a.k > b.k for a, b in itertools.pairwise(fs.scales))  # coarse to fine
+
+
+def test_insets_set_same_line_forces_side_by_side_and_never_tail_to_tail() -> None:
+    from geomcad.geom import Vec
+    from geomcad.sheet.insets import BESIDE_MM, pushes, side_by_side
+
+    down, down2, up, right = Vec(0.0, -10.0), Vec(0.5, -8.0), Vec(0.0, 5.0), Vec(7.0, 0.0)
+    starts = side_by_side([down, down2, right], 1.0)
+    assert starts[0] == (0.0, 0.0) and starts[2] == (0.0, 0.0)
+    # G₅ and Φ₅ both down at d: the second set BESIDE_MM across the first's line
+    assert math.isclose(math.hypot(*starts[1]), BESIDE_MM)
+    assert abs(starts[1][0]) > 0.9 * BESIDE_MM  # across a vertical line: sideways
+    # a force of the opposite sense arrives at the point: no double-headed pair
+    assert pushes([down, up, right]) == [False, True, False]

@@ -733,9 +733,7 @@ SCALES_H = 2.5
 def further_room(fs: ForceScales, omitted: Sequence[str] = ()) -> float:
     """The room (mm) of the line under a view's caption that states its insets' μ_F and the
     forces it leaves out (:func:`draw_insets`); 0 where it has neither."""
-    if fs.insets:
-        return SCALES_H * TITLE_LEAD if fs.tiered or omitted else 0.0
-    return SCALES_H * TITLE_LEAD + fs.further_rise(SCALES_H) - SCALES_H if fs.tiered else 0.0
+    return SCALES_H * TITLE_LEAD if fs.tiered or omitted else 0.0
 
 
 def omitted_values(fs: ForceScales, named: Sequence[tuple[str, float]]) -> list[str]:
@@ -765,33 +763,11 @@ def draw_insets(
         d.text(";  ".join(parts), (at.box[0], top), SCALES_H)
 
 
-def left_out(fs: ForceScales, named: Sequence[tuple[str, float]]) -> list[str]:
-    """The names (drawn, once each) of the forces ``named`` (name, N) that the view leaves out
-    as negligible (:attr:`ForceScales.negligible`)."""
-    out = [load_name(n) for n, F in named if fs.zero < abs(F) <= fs.negligible]
-    return list(dict.fromkeys(out))
-
-
 def _negligible_note(names: Sequence[str]) -> str:
     """The line under a force plan's caption that names the vectors it leaves out as
     negligible (under :data:`~geomcad.sheet.loads.NEGLIGIBLE` of its largest)."""
     key = "negligible_one" if len(names) == 1 else "negligible"
     return WORDS(key, names=", ".join(names), share=fmt_number(NEGLIGIBLE * 100.0))
-
-
-def draw_further(
-    d: Drawing, at: Placed, view: View, fs: ForceScales, omitted: Sequence[str] = ()
-) -> None:
-    """The view's further μ_F, on a line of its own under its caption, and the forces it
-    leaves out as negligible (named)."""
-    if fs.tiered:
-        lines = (view.title_lines - 1) * TITLE_SPACING  # a caption broken into lines
-        top = at.box[1] + view.title_height * (TITLE_LEAD + lines) + fs.further_rise(SCALES_H)
-        text = fs.further()
-        if omitted:
-            share = fmt_number(NEGLIGIBLE * 100.0)
-            text += ";  " + WORDS("negligible", names=", ".join(omitted), share=share)
-        d.text(text, (at.box[0], top), SCALES_H)
 
 
 class _Forces(View):
