@@ -118,10 +118,13 @@ class Insets:
                 mine.append(letter)
                 self.drawn.append((letter, sc))
                 self._one(d, v, free, q, p, letter, sc, shorts, eps)
+            # one thin circle round the points of the insets (centred on them)
             ats = [v.p(s.at) for _, ss in tiers for s in ss]
-            r = MARK_R + max(math.dist(p, a) for a in ats)
-            d.sheet.add(CircleItem(p, r, "thin"))
-            d.label(p, ", ".join(mine), LETTER_H, prefer=(0.7, -0.7), clear=r)
+            xs, ys = [a[0] for a in ats], [a[1] for a in ats]
+            c = ((min(xs) + max(xs)) / 2.0, (min(ys) + max(ys)) / 2.0)
+            r = MARK_R + max(math.dist(c, a) for a in ats)
+            d.sheet.add(CircleItem(c, r, "thin"))
+            d.label(c, ", ".join(mine), LETTER_H, prefer=(0.7, -0.7), clear=r)
 
     def _one(
         self,
