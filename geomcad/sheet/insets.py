@@ -124,7 +124,9 @@ class Insets:
             c = ((min(xs) + max(xs)) / 2.0, (min(ys) + max(ys)) / 2.0)
             r = MARK_R + max(math.dist(c, a) for a in ats)
             d.sheet.add(CircleItem(c, r, "thin"))
-            d.label(c, ", ".join(mine), LETTER_H, prefer=(0.7, -0.7), clear=r)
+            # the letter by the circle (anchored on it, up and to the right where free)
+            edge = (c[0] + r * math.sqrt(0.5), c[1] - r * math.sqrt(0.5))
+            d.label(edge, ", ".join(mine), LETTER_H, prefer=(0.7, -0.7), clear=0.5)
 
     def _one(
         self,
@@ -268,10 +270,10 @@ class _Free:
     def place(self, w: float, h: float, near: tuple[float, float]) -> tuple[float, float]:
         """The top-left corner (sheet mm) of a free w × h rectangle in the field nearest to
         ``near``; where none is free, the one that covers the fewest taken cells."""
-        cw = math.ceil(w / CELL_MM)
-        ch = math.ceil(h / CELL_MM)
-        if cw >= self.nx or ch >= self.ny:
-            return self.field[0], self.field[1]
+        # an inset larger than the field is sought as large as the field (it runs over the
+        # field's edge, never over another inset)
+        cw = max(1, min(math.ceil(w / CELL_MM), self.nx - 1))
+        ch = max(1, min(math.ceil(h / CELL_MM), self.ny - 1))
         s = np.zeros((self.ny + 1, self.nx + 1))
         s[1:, 1:] = self.grid.cumsum(0).cumsum(1)
         taken = s[ch:, cw:] - s[:-ch, cw:] - s[ch:, :-cw] + s[:-ch, :-cw]
