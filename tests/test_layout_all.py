@@ -69,8 +69,9 @@ BASELINE: dict[tuple[str, str], dict[str, int]] = {
     # the forces sheet at the default force position (position 1, the ram at the start of its
     # cut, the rod 4 nearly along the guide); issue 27: the short forces at the slider D are
     # arrows at μ_F* … (they were dots): the letters 4, D, 5 by the crowded slider land 7–9 mm
-    # off, on the mechanism and on group (4, 5)
-    ("linkage-shaper", "forces"): {"anchor": 5, "empty": 1},
+    # off, on the mechanism and on group (4, 5); one μ_F per view (review 5): the thin circle of
+    # the inset of G₃ round C, on the mechanism and on group (2, 3), sets C's letter 9 mm off
+    ("linkage-shaper", "forces"): {"anchor": 7, "empty": 1},
     ("linkage-shaper", "dynamics"): {"empty": 1},
     # the twelve numbered positions drawn beside the file's phi: B's labels crowd near the
     # rocker's extreme (7 … 11 mm)

@@ -44,7 +44,7 @@ from __future__ import annotations
 
 import itertools
 import math
-from collections.abc import Mapping, Sequence
+from collections.abc import Iterator, Mapping, Sequence
 from dataclasses import replace
 
 import numpy as np
@@ -82,6 +82,7 @@ from geomcad.sheet.compose import _title_width as title_width
 from geomcad.sheet.drawing import SHORT_MM, Viewport
 from geomcad.sheet.frame import FORMATS
 from geomcad.sheet.graph import Axis, Graph
+from geomcad.sheet.insets import Insets
 from geomcad.sheet.lang import Words, current
 from geomcad.sheet.linkage import (
     CRANK_MM,
@@ -110,11 +111,12 @@ from geomcad.sheet.linkage import WORDS as KIN_WORDS
 from geomcad.sheet.linkage import layout as kinematic_layout
 from geomcad.sheet.loads import (
     NEGLIGIBLE,
+    VIEW_NEGLIGIBLE,
     Clearance,
     ForceScales,
     force,
-    force_tiers,
     moment,
+    view_scales,
 )
 from geomcad.sheet.plans import markup_of
 from geomcad.sheet.scale import (
@@ -515,6 +517,9 @@ def _sheet2(
     polys = [p for ps in per_group for p in ps]
     groups = Row(*[Column(b, *ps) for b, ps in zip(bodies, per_group, strict=True)])
     lever = _Lever(lk, P, f)
+    mech.letters = lever.letters = letters  # their insets lettered after the polygons' details
+    for b in bodies:
+        b.letters = letters
     table: Table | Column = _table2(f, h)
     if mech.short or lever.short or any(b.short for b in bodies):
         note = WORDS("short", mm=fmt_number(SHORT_MM))
@@ -692,14 +697,18 @@ def _bbox(pts: Sequence[Vec], minimum: float) -> tuple[float, float, float, floa
 
 def _force(
     v: Viewport, at: Vec, F: Vec, fs: ForceScales, label: str, arrive: bool = False,
-    role: str = "vector", clear: Clearance | None = None,
+    role: str = "vector", clear: Clearance | None = None, insets: Insets | None = None,
 ) -> None:  # fmt: skip
-    """A force as an arrow at the view's μ_F, or, shorter than :data:`SHORT_MM` there, at the
-    view's next stated μ_F with its label marked (:class:`~geomcad.sheet.loads.ForceScales`);
-    never a dot. A zero force draws nothing. ``clear``: on a drawing of links, the arrow goes
-    where its line of action is clear of them (:class:`~geomcad.sheet.loads.Clearance`)."""
+    """A force as an arrow at the view's μ_F, or, shorter than :data:`SHORT_MM` there, in the
+    view's ``insets`` at a finer stated μ_F (:func:`~geomcad.sheet.loads.view_scales`); never
+    a dot. A zero force, or a negligible one, draws nothing. ``clear``: on a drawing of links,
+    the arrow goes where its line of action is clear of them
+    (:class:`~geomcad.sheet.loads.Clearance`)."""
     tier = fs.tier(F.norm)
     if tier is None:
+        return
+    if tier > 0 and insets is not None:
+        insets.add(at, F, tier, label, role)
         return
     force(v, at, F, fs.scales[tier].k, label + fs.mark(tier), arrive=arrive, role=role,
           height=2.5, clear=clear)  # fmt: skip
@@ -714,6 +723,7 @@ MOMENT_STEP_MM = 3.0
 def _draw_loads(
     v: Viewport, lk: Linkage, P: Position, loads: Sequence[Applied], fs: ForceScales, role: str,
     clear: Clearance | None = None, arcs: dict[tuple[float, float], int] | None = None,
+    insets: Insets | None = None,
 ) -> None:  # fmt: skip
     """The loads: the moments first (their arcs, each point's further ones larger, counted in
     ``arcs``), then the forces, clear of the drawing and of each other with ``clear``."""
@@ -731,7 +741,8 @@ def _draw_loads(
         forces.sort(key=lambda ld: (_cost(v, ld, fs, clear) // CLEAR_BAND, -_norm(ld)))
     for ld in forces:
         assert ld.force is not None and ld.at is not None
-        _force(v, ld.at, ld.force, fs, load_name(ld.name), role=role, clear=clear)
+        _force(v, ld.at, ld.force, fs, load_name(ld.name), role=role, clear=clear,
+               insets=insets)  # fmt: skip
 
 
 #: Loads whose arrows are about as clear at their points (their costs,
@@ -771,17 +782,37 @@ def _moment_radius(v: Viewport, c: Vec, arcs: dict[tuple[float, float], int]) ->
 SCALES_H = 2.5
 
 
-def further_room(fs: ForceScales) -> float:
-    """The room (mm) of the line under a view's caption that states the view's further μ_F
-    (:meth:`ForceScales.further`); 0 when every force is at the view's own μ_F."""
-    return SCALES_H * TITLE_LEAD + fs.further_rise(SCALES_H) - SCALES_H if fs.tiered else 0.0
+def further_room(fs: ForceScales, omitted: Sequence[str] = ()) -> float:
+    """The room (mm) of the line under a view's caption that states its insets' μ_F and the
+    forces it leaves out (:func:`draw_insets`); 0 where it has neither."""
+    return SCALES_H * TITLE_LEAD if fs.tiered or omitted else 0.0
 
 
-def left_out(fs: ForceScales, named: Sequence[tuple[str, float]]) -> list[str]:
-    """The names (drawn, once each) of the forces ``named`` (name, N) that the view leaves out
-    as negligible (:attr:`ForceScales.negligible`)."""
-    out = [load_name(n) for n, F in named if fs.zero < abs(F) <= fs.negligible]
+def omitted_values(fs: ForceScales, named: Sequence[tuple[str, float]]) -> list[str]:
+    """The forces ``named`` (name, N) that the view leaves out as negligible, each with its
+    value (``G_1 = 11,8 Н``), once each."""
+    out = [f"{load_name(n)} = {_num(abs(F))} {WORDS('newton')}"
+           for n, F in named if fs.zero < abs(F) <= fs.negligible]  # fmt: skip
     return list(dict.fromkeys(out))
+
+
+def draw_insets(
+    d: Drawing, at: Placed, view: View, ins: Insets, start: int, omitted: Sequence[str]
+) -> None:
+    """The view's insets (:class:`~geomcad.sheet.insets.Insets`) where its box is free, then
+    the line under its caption that states their μ_F and names the forces it leaves out."""
+    assert at.viewport is not None
+    letters = getattr(view, "letters", None) or detail_letters()
+    ins.draw(d, at.viewport, _field(at), start, letters)
+    parts = [ins.text()] if ins.drawn else []
+    if omitted:
+        key = "omitted_one" if len(omitted) == 1 else "omitted"
+        share = fmt_number(VIEW_NEGLIGIBLE * 100.0)
+        parts.append(WORDS(key, share=share, items=", ".join(omitted)))
+    if parts:
+        lines = (view.title_lines - 1) * TITLE_SPACING  # a caption broken into lines
+        top = at.box[1] + view.title_height * (TITLE_LEAD + lines) + SCALES_H
+        d.text(";  ".join(parts), (at.box[0], top), SCALES_H)
 
 
 def _negligible_note(names: Sequence[str]) -> str:
@@ -789,21 +820,6 @@ def _negligible_note(names: Sequence[str]) -> str:
     negligible (under :data:`~geomcad.sheet.loads.NEGLIGIBLE` of its largest)."""
     key = "negligible_one" if len(names) == 1 else "negligible"
     return WORDS(key, names=", ".join(names), share=fmt_number(NEGLIGIBLE * 100.0))
-
-
-def draw_further(
-    d: Drawing, at: Placed, view: View, fs: ForceScales, omitted: Sequence[str] = ()
-) -> None:
-    """The view's further μ_F, on a line of its own under its caption, and the forces it
-    leaves out as negligible (named)."""
-    if fs.tiered:
-        lines = (view.title_lines - 1) * TITLE_SPACING  # a caption broken into lines
-        top = at.box[1] + view.title_height * (TITLE_LEAD + lines) + fs.further_rise(SCALES_H)
-        text = fs.further()
-        if omitted:
-            share = fmt_number(NEGLIGIBLE * 100.0)
-            text += ";  " + WORDS("negligible", names=", ".join(omitted), share=share)
-        d.text(text, (at.box[0], top), SCALES_H)
 
 
 class _Forces(View):
@@ -814,9 +830,11 @@ class _Forces(View):
     _ext: tuple[float, float, float, float]
     fs: ForceScales
     omitted: list[str]
+    #: the sheet's detail letters, the insets' taken after the polygons' details
+    letters: Iterator[str] | None = None
 
     def title_room(self) -> float:
-        return super().title_room() + further_room(self.fs)
+        return super().title_room() + further_room(self.fs, self.omitted)
 
     @property
     def kF(self) -> Scale:
@@ -826,7 +844,7 @@ class _Forces(View):
     @property
     def short(self) -> bool:
         """Whether some forces are drawn at a second μ_F (the sheet explains the mark)."""
-        return self.fs.tiered
+        return self.fs.tiered and not self.fs.insets
 
     def extent(self) -> tuple[float, float, float, float]:
         return self._ext
@@ -858,8 +876,8 @@ class _Loaded(_Forces):
         self._ext = _bbox([*P.pos.values(), *bodies], lk.length)
         named = [(ld.name, ld.force.norm) for ld in self.loads
                  if ld.force is not None and ld.at is not None]  # fmt: skip
-        self.fs = force_tiers([F for _, F in named], LOAD_MM)
-        self.omitted = left_out(self.fs, named)
+        self.fs = view_scales([F for _, F in named], LOAD_MM)
+        self.omitted = omitted_values(self.fs, named)
         #: the solution and the letter of the crank's detail, where the crank may come out
         #: short (:meth:`crank_detail`); the detail's μ_l where one is drawn
         self.solved: Solved | None = None
@@ -869,9 +887,9 @@ class _Loaded(_Forces):
     def links(self, d: Drawing, at: Placed) -> None:
         v = at.viewport
         assert v is not None
-        draw_further(d, at, self, self.fs, self.omitted)
-        lk, P = self.lk, self.P
         start = len(d.sheet.items)
+        lk, P = self.lk, self.P
+        ins = Insets(self.fs, P.pos)
         clear = Clearance(d.sheet, len(d.sheet.items), _field(at))
         draw_scheme(v, scheme(lk, P), bodies=link_bodies(lk, P), pair_labels={},
                     label_height=3.5, guides=frame_guides(lk))  # fmt: skip
@@ -879,10 +897,11 @@ class _Loaded(_Forces):
             if name in lk.owner:
                 v.label(P.pos[name], markup_of(name), 3.5, clear=1.0)
         # the moments, then the forces, each clear of the links and of the arrows before it
-        _draw_loads(v, lk, P, self.loads, self.fs, "vector", clear)
+        _draw_loads(v, lk, P, self.loads, self.fs, "vector", clear, insets=ins)
         omega_arrow(v, lk, P)
         v.turn(P.pos[lk.pivot], self.f.M_bal, 30.0, WORDS("M_bal"), M_BAL_MM, 250.0, "result", 2.5)
         self.crank_detail(d, at, Clearance(d.sheet, start, _field(at)))
+        draw_insets(d, at, self, ins, start, self.omitted)
 
     def crank_detail(self, d: Drawing, at: Placed, drawn: Clearance) -> None:
         """Where the view's μ_l draws the crank shorter than :data:`DETAIL_BELOW` of
@@ -899,12 +918,11 @@ class _Loaded(_Forces):
         here = v.scale.mm(lk.length)
         if here >= DETAIL_BELOW * CRANK_MM:
             return
-        loads = self.f.loads.get(1, [])
-        arrows = [
-            ld.force.norm / self.fs.scales[t].k
-            for ld in loads
-            if ld.force is not None and (t := self.fs.tier(ld.force.norm)) is not None
-        ]
+        # the crank's loads at the view's own μ_F (those too short there are in the view's
+        # insets, :func:`draw_insets`, not drawn a second time here)
+        loads = [ld for ld in self.f.loads.get(1, [])
+                 if ld.force is None or self.fs.tier(ld.force.norm) == 0]  # fmt: skip
+        arrows = [ld.force.norm / self.fs.k for ld in loads if ld.force is not None]
         least = max(2.0 * here, DETAIL_BELOW * CRANK_MM)
         O1 = lk.frame[lk.pivot]
         pivot = v.p(O1)
@@ -962,14 +980,15 @@ class _FreeBody(_Forces):
         named = [(ld.name, ld.force.norm) for i in links for ld in gf.loads[i]
                  if ld.force is not None]  # fmt: skip
         named += [(r.name, r.force.norm) for r in external(gf)]
-        self.fs = force_tiers([F for _, F in named], LOAD_MM)
-        self.omitted = left_out(self.fs, named)
+        self.fs = view_scales([F for _, F in named], LOAD_MM)
+        self.omitted = omitted_values(self.fs, named)
 
     def links(self, d: Drawing, at: Placed) -> None:
         v = at.viewport
         assert v is not None
-        draw_further(d, at, self, self.fs, self.omitted)
+        start = len(d.sheet.items)
         lk, P, gf = self.lk, self.P, self.gf
+        ins = Insets(self.fs, P.pos)
         links = gf.links
         full = scheme(lk, P)
         own = {str(i) for i in links}
@@ -992,9 +1011,9 @@ class _FreeBody(_Forces):
                     arcs=arcs)  # fmt: skip
         # the reactions found at their joints first, then the loads where they are clear
         for r in external(gf):
-            _force(v, r.at, r.force, self.fs, load_name(r.name), True, "result", clear)
+            _force(v, r.at, r.force, self.fs, load_name(r.name), True, "result", clear, ins)
         _draw_loads(v, lk, P, [ld for ld in loads if ld.force is not None], self.fs, "vector",
-                    clear)  # fmt: skip
+                    clear, insets=ins)  # fmt: skip
         if gf.group is None:
             M = -sum(
                 (ld.at - P.pos[lk.pivot]).cross(ld.force)
@@ -1003,6 +1022,7 @@ class _FreeBody(_Forces):
                 for ld in gf.loads[1]
             )
             v.turn(P.pos[lk.pivot], M, 30.0, WORDS("M_bal"), M_BAL_MM, 250.0, "result", 2.5)
+        draw_insets(d, at, self, ins, start, self.omitted)
 
 
 #: The forces sheet's crank detail reaches this many crank lengths round the pivot (the crank,
@@ -1225,15 +1245,17 @@ class _Lever(View):
     """Zhukovsky's lever: the velocity plan turned 90° with the loads at their points'
     images and the balancing force at the crank's joint."""
 
+    letters: Iterator[str] | None = None
+
     def __init__(self, lk: Linkage, P: Position, f: Forces) -> None:
         lev = f.lever
         forces = [it.force.norm for it in lev.items] + [lev.F_bal.norm]
-        self.fs = force_tiers(forces, LEVER_LOAD_MM)
-        self.short = self.fs.tiered
+        self.fs = view_scales(forces, LEVER_LOAD_MM)
+        self.short = False
         super().__init__(title=WORDS("lever"), title_height=5.0, quantity="v", series="nice",
                          margin=LEVER_LOAD_MM)  # fmt: skip
         self.lk, self.P, self.f = lk, P, f
-        self.omitted = left_out(self.fs, [(it.name, it.force.norm) for it in lev.items])
+        self.omitted = omitted_values(self.fs, [(it.name, it.force.norm) for it in lev.items])
         pts = [Vec(0.0, 0.0), *lever_images(P, lev).values(), *(it.image for it in lev.items)]
         xs = [q.x for q in pts]
         ys = [q.y for q in pts]
@@ -1243,7 +1265,7 @@ class _Lever(View):
         return self._ext
 
     def title_room(self) -> float:
-        return super().title_room() + further_room(self.fs)
+        return super().title_room() + further_room(self.fs, self.omitted)
 
     def caption(self, scale: Scale | None) -> str:
         m = WORDS("m_bal", value=_load(self.f.lever.M_bal))
@@ -1252,7 +1274,7 @@ class _Lever(View):
     def draw(self, d: Drawing, at: Placed) -> None:
         v = at.viewport
         assert v is not None
-        draw_further(d, at, self, self.fs, self.omitted)
+        start = len(d.sheet.items)
         kv = v.scale
         lk, P, lev = self.lk, self.P, self.f.lever
         drawn: list[tuple[Vec, Vec]] = []
@@ -1281,13 +1303,22 @@ class _Lever(View):
             v.label(q, ", ".join(names), 2.5, clear=0.8)
         loads = [(it.image, it.force, load_name(it.name), "vector") for it in lev.items]
         loads.append((lev.images[lk.joint], lev.F_bal, WORDS("P_bal"), "result"))
-        lengths = [F.norm / self.fs.scales[t].k if (t := self.fs.tier(F.norm)) is not None
-                   else 0.0 for _, F, _, _ in loads]  # fmt: skip
+        # the forces short at the view's μ_F go to its insets, the others are drawn here
+        ins = Insets(self.fs, images)
+        here = []
+        for q, F, name, role in loads:
+            t = self.fs.tier(F.norm)
+            if t is not None and t > 0:
+                ins.add(q, F, t, name, role)
+            elif t is not None:
+                here.append((q, F, name, role))
+        lengths = [F.norm / self.fs.k for _, F, _, _ in here]
         # an arrow leaves its point unless it would run out of the view (past its margin,
         # less a label's room)
-        sides = load_sides(loads, kv.k, lengths, self._ext, self.margin - LABEL_ROOM_MM)
-        for (_, F, name, role), (arrive, at_) in zip(loads, sides, strict=True):
+        sides = load_sides(here, kv.k, lengths, self._ext, self.margin - LABEL_ROOM_MM)
+        for (_, F, name, role), (arrive, at_) in zip(here, sides, strict=True):
             _force(v, at_, F, self.fs, name, arrive, role)
+        draw_insets(d, at, self, ins, start, self.omitted)
 
 
 def _table2(f: Forces, h: float) -> Table:

@@ -49,6 +49,9 @@ class ForceScales:
     #: forces up to this (N), a negligible share of the view's largest, are not drawn where
     #: drawing them would take a fourth μ_F (:func:`force_tiers`; the view names them)
     negligible: float = 0.0
+    #: the scales after the first are those of the view's insets (:func:`view_scales`: the
+    #: view itself draws every force at one μ_F), not of further arrows in the view
+    insets: bool = False
 
     @property
     def k(self) -> float:
@@ -197,6 +200,51 @@ def force_tiers(forces: Iterable[float], room_mm: float) -> ForceScales:
         bands[i : i + 2] = [[bands[i][0], bands[i + 1][1]]]
     scales = [top if b[0] / top.k >= short else nice_below(b[0], SHORT_MM) for b in reversed(bands)]
     return ForceScales(tuple(dict.fromkeys(scales)), zero, negligible)
+
+
+#: Forces under this share of a view's largest are named (with their values) under its
+#: caption, not drawn (:func:`view_scales`): their arrows at the view's μ_F would be shorter
+#: than a 200-mm arrow's drawing error (0,5 mm), and they change no result drawn.
+VIEW_NEGLIGIBLE = 0.005
+#: The longest arrow (mm) in a view's inset (:func:`view_scales`).
+INSET_MM = 24.0
+
+
+def view_scales(forces: Iterable[float], room_mm: float) -> ForceScales:
+    """The force scales of a view that draws all its forces at ONE μ_F (a longer arrow is a
+    larger force everywhere in the view): ``scales[0]`` puts the largest force into
+    ``room_mm``; a force shorter than :data:`SHORT_MM` there is drawn again in an inset (an
+    ESKD detail of its point) at a finer μ_F, ``scales[1:]``, each inset at one of them; a
+    force under :data:`VIEW_NEGLIGIBLE` of the largest is named, not drawn (``negligible``).
+
+    The insets' scales are cut from the smallest short force up: each draws its smallest
+    force at least :data:`SHORT_MM` long (the coarsest factor that does) and takes the larger
+    ones while it draws them at most :data:`INSET_MM` long. :meth:`ForceScales.tier` gives a
+    force's scale (0: the view itself). Forces under ``tol.DERIVED`` of the largest are zero."""
+    mags = sorted((abs(F) for F in forces), reverse=True)
+    big = mags[0] if mags else 0.0
+    room = max(room_mm, 2.5 * SHORT_MM)
+    if big <= 0.0:
+        return ForceScales((nice_factor(1.0, room, "F"),), insets=True)
+    zero = tol.DERIVED * big
+    floor = VIEW_NEGLIGIBLE * big
+    top = nice_factor(big, room, "F")
+    short = SHORT_MM * (1.0 - tol.DERIVED)
+    small = sorted(F for F in mags if floor < F and F / top.k < short)
+    scales = [top, *reversed(inset_bands(small))]
+    return ForceScales(tuple(dict.fromkeys(scales)), zero, floor, insets=True)
+
+
+def inset_bands(forces: Iterable[float]) -> list[Scale]:
+    """The μ_F of the insets that draw forces of magnitudes ``forces`` (N), from the finest:
+    from the smallest force up, each the coarsest factor that draws its smallest force at
+    least :data:`SHORT_MM` long, taking the larger ones while it draws them at most
+    :data:`INSET_MM` long."""
+    bands: list[Scale] = []
+    for F in sorted(forces):
+        if not bands or F / bands[-1].k > INSET_MM * (1.0 + tol.DERIVED):
+            bands.append(nice_below(F, SHORT_MM))
+    return bands
 
 
 #: A force's arrow on a free body keeps this far (mm) from the centre lines of what is drawn

@@ -1,0 +1,195 @@
+"""One μ_F per view on a linkage file's forces sheet (issue 27, review 5 item 1): in the
+mechanism view, in each group's free body and on Zhukovsky's lever a longer arrow is a larger
+force. A force too short to read at the view's μ_F is drawn in an inset (a lettered ESKD
+detail of its point) at a finer μ_F that the sheet states; none is drawn shorter than two
+arrowheads, none is a dot.
+
+Every arrow a force sheet draws goes through ``loads.force``; the test records each one with
+the viewport it was drawn through (a view, or one inset), its force and its drawn length."""
+
+from __future__ import annotations
+
+import itertools
+import math
+import re
+import tomllib
+from pathlib import Path
+from typing import Any
+
+import pytest
+
+from geomcad.linkage import parse
+from geomcad.linkage.solution import solve
+from geomcad.sheet.drawing import SHORT_MM
+from geomcad.sheet.model import TextItem
+
+ROOT = Path(__file__).resolve().parent.parent
+FILES = [
+    ROOT / "examples" / "shaper.toml",
+    ROOT / "examples" / "crusher.toml",
+    ROOT / "examples" / "slider-crank.toml",
+    ROOT / "examples" / "sixbar-2013-6.toml",
+    *sorted((ROOT / "tests" / "linkages").glob("*.toml")),
+]
+
+#: An unseen-style file written for this test: a four-bar whose rocker drives a slider through
+#: a rod (RRP), a heavy ram against a small press force, light links (forces over three
+#: decades in one view), the loads taken at position 7.
+OWN = """
+title = "Пресс с коромыслом и ползуном"
+[frame]
+O = [0.0, 0.0]
+C = [0.32, 0.05]
+[drive]
+pivot = "O"
+joint = "A"
+length = 0.07
+omega = 18.0
+positions = 12
+output = "D"
+[[group]]
+kind = "RRR"
+links = [2, 3]
+joint = "B"
+ends = ["A", "C"]
+lengths = [0.30, 0.18]
+assembly = "left"
+[[group]]
+kind = "RRP"
+links = [4, 5]
+joint = "D"
+end = "B"
+length = 0.26
+guide = { through = [0.55, 0.02], angle = 0.0 }
+assembly = "forward"
+[links.2]
+mass = 2.0
+J = 0.02
+[links.3]
+mass = 5.0
+J = 0.03
+[links.4]
+mass = 1.2
+J = 0.008
+[links.5]
+mass = 40.0
+[[load]]
+point = "D"
+value = 4000.0
+stroke = "working"
+working = "forward"
+[forces]
+position = 7
+"""
+
+
+def _record(lk: Any, monkeypatch: pytest.MonkeyPatch) -> tuple[list[dict[str, Any]], Any]:
+    """The arrows of the forces sheet of ``lk`` (the last arrangement's: the final drawing),
+    each with its viewport's id, |F| (N), drawn length (mm) and μ_F, and the sheet."""
+    from geomcad.sheet import linkage_forces as lf
+
+    rec: list[dict[str, Any]] = []
+    mods: list[Any] = [lf]
+    try:
+        from geomcad.sheet import insets
+
+        mods.append(insets)
+    except ImportError:  # main before issue 27's insets: the views' arrows only
+        pass
+
+    def wrap(orig: Any) -> Any:
+        def rec_force(v: Any, at: Any, F: Any, k_F: float, *a: Any, **kw: Any) -> Any:
+            out = orig(v, at, F, k_F, *a, **kw)
+            if out is not None:
+                # the viewport itself kept: an id is unique only while its object lives
+                rec.append({"v": v, "F": F.norm, "mm": math.dist(*out), "k": k_F})
+            return out
+
+        return rec_force
+
+    for m in mods:
+        monkeypatch.setattr(m, "force", wrap(m.force))
+    s = solve(lk)
+    sheet = lf.force_sheets(s, "x")[0][1]
+    return [r for r in rec if r["v"].sheet is sheet], sheet
+
+
+def _cases() -> list[Any]:
+    out = [pytest.param(p.read_text("utf-8"), id=p.stem) for p in FILES]
+    return [*out, pytest.param(OWN, id="own-press")]
+
+
+@pytest.mark.parametrize("text", _cases())
+def test_each_view_draws_its_forces_at_one_scale(
+    text: str, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    lk = parse(tomllib.loads(text))
+    rec, sheet = _record(lk, monkeypatch)
+    assert rec, "the forces sheet draws forces"
+    by: dict[int, list[dict[str, Any]]] = {}
+    for r in rec:
+        by.setdefault(id(r["v"]), []).append(r)
+    for arrows in by.values():
+        # monotone: a larger force is never drawn shorter (within round-off)
+        arrows.sort(key=lambda r: r["F"])
+        for a, b in itertools.pairwise(arrows):
+            if b["F"] > a["F"] * (1.0 + 1e-9):
+                assert b["mm"] >= a["mm"] - 1e-6, (a, b)
+        # and one μ_F: the drawn length is the force over the view's one factor
+        ks = {r["F"] / r["mm"] for r in arrows}
+        assert max(ks) <= min(ks) * (1.0 + 1e-6), sorted(ks)
+    # no arrow under two arrowheads
+    assert min(r["mm"] for r in rec) >= SHORT_MM * (1.0 - 1e-6)
+    # every μ_F drawn is stated on the sheet: "μ_F = 2,5 Н/мм"
+    text_all = " ".join("".join(run.text for run in it.runs) for it in sheet.items
+                        if isinstance(it, TextItem))  # fmt: skip
+    stated = {float(x.replace(",", ".").replace(" ", ""))
+              for x in re.findall(r"μF = ([\d ]+(?:,\d+)?) Н/мм", text_all)}  # fmt: skip
+    for k in {r["k"] for r in rec}:
+        assert any(math.isclose(k, s, rel_tol=1e-9) for s in stated), (k, sorted(stated))
+
+
+@pytest.mark.parametrize(
+    ("forces", "room"),
+    [
+        ([3500.0, 176.6, 130.4, 58.9, 31.4, 23.3, 14.4, 4.4, 1.6], 40.0),  # a press's lever
+        ([1800.0, 216.0, 28.3, 10.5, 6.9], 40.0),  # a shaper's lever
+        ([39.2, 32.1, 11.8, 7.1], 24.0),  # a light four-bar: all in the view
+        ([1000.0, 999.0, 998.0], 24.0),
+    ],
+)
+def test_view_scales_one_for_the_view_the_short_ones_in_insets(
+    forces: list[float], room: float
+) -> None:
+    from geomcad.sheet.loads import INSET_MM, VIEW_NEGLIGIBLE, view_scales
+
+    fs = view_scales([*forces, 1e-14], room)
+    big = max(forces)
+    assert big / fs.k <= room and fs.insets
+    assert fs.tier(1e-14) is None  # round-off of a zero force
+    for F in forces:
+        t = fs.tier(F)
+        if VIEW_NEGLIGIBLE * big >= F:
+            assert t is None  # named under the caption, not drawn
+            continue
+        assert t is not None
+        # at the view's μ_F exactly where it is long enough there, else at a finer inset one
+        assert (t == 0) == (F / fs.k >= SHORT_MM * (1.0 - 1e-9))
+        mm = F / fs.scales[t].k
+        assert mm >= SHORT_MM * (1.0 - 1e-9)
+        assert t == 0 or mm <= INSET_MM * (1.0 + 1e-9)
+    assert all(a.k > b.k for a, b in itertools.pairwise(fs.scales))  # coarse to fine
+
+
+def test_insets_set_same_line_forces_side_by_side_and_never_tail_to_tail() -> None:
+    from geomcad.geom import Vec
+    from geomcad.sheet.insets import BESIDE_MM, pushes, side_by_side
+
+    down, down2, up, right = Vec(0.0, -10.0), Vec(0.5, -8.0), Vec(0.0, 5.0), Vec(7.0, 0.0)
+    starts = side_by_side([down, down2, right], 1.0)
+    assert starts[0] == (0.0, 0.0) and starts[2] == (0.0, 0.0)
+    # G₅ and Φ₅ both down at d: the second set BESIDE_MM across the first's line
+    assert math.isclose(math.hypot(*starts[1]), BESIDE_MM)
+    assert abs(starts[1][0]) > 0.9 * BESIDE_MM  # across a vertical line: sideways
+    # a force of the opposite sense arrives at the point: no double-headed pair
+    assert pushes([down, up, right]) == [False, True, False]
