@@ -115,6 +115,7 @@ from geomcad.sheet.plans import markup_of
 from geomcad.sheet.scale import ANGLE_PLACES, Scale, angle_places, fmt_column, fmt_fixed
 from geomcad.sheet.scheme import draw_scheme
 from geomcad.sheet.views import (
+    SLIVER_MM,
     AxisSpec,
     Curve,
     Diagram,
@@ -123,6 +124,7 @@ from geomcad.sheet.views import (
     Table,
     Text,
     detail_letters,
+    is_sliver,
 )
 from geomcad.structure import Mechanism
 from geomcad.structure.model import Link
@@ -494,11 +496,17 @@ def _sheet2(
         big = max(pv.magnitude for poly, _ in p.layers for pv in poly.vectors)
         side = max(_side(p))
         want = max(big / PLAN_MM, side / POLY_MM)
+        seek = PLAN_SEEK_MM
+        if is_sliver(p.layers[-1][0]):
+            # a sliver (R01 = -R21) shows no more drawn long: at most SLIVER_MM (at least a
+            # quarter where its details leave it little room)
+            p.least_k = big / SLIVER_MM
+            want, seek = 4.0 * big / SLIVER_MM, SLIVER_MM / 4.0
         if want > 0.0:
             wants[p] = want
         if big > 0.0:
             # and on the largest format the search seeks it (its longest vector PLAN_SEEK_MM)
-            p.readable = max(p.readable, big * p.readable_mm / PLAN_SEEK_MM)
+            p.readable = max(p.readable, big * p.readable_mm / seek)
     if mech.readable > 0.0:
         wants[mech] = lk.length / mech.readable_mm
     return tree, wants
