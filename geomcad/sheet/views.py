@@ -395,16 +395,22 @@ def _lane_vectors(
     return vs + [r for r, _ in resultants(poly) if r.name not in gone]
 
 
-def along(a: PlanVector, b: PlanVector, k: float) -> float:
+def along(a: PlanVector, b: PlanVector, k: float, near_mm: float = 1.2) -> float:
     """How long (mm, drawn at μ_F ``k``) vectors ``a`` and ``b`` run along one another: within
-    :data:`LANE_ANGLE` of each other and :data:`THIN_MM` of one line (one drawn over the
-    other), 0 where they only meet at an end or run apart."""
+    :data:`LANE_ANGLE` of each other and ``near_mm`` (:data:`THIN_MM`) of one line (one drawn
+    over the other); 0 where they only meet at an end or run apart."""
+    return _along(a, b, k, near_mm)[0]
+
+
+def _along(a: PlanVector, b: PlanVector, k: float, near_mm: float) -> tuple[float, Vec]:
+    """:func:`along`, and the middle (model point on ``a``) of the part they run along."""
+    none = (0.0, a.tail)
     la, lb = a.magnitude, b.magnitude
     if la <= 0.0 or lb <= 0.0:
-        return 0.0
+        return none
     u, w = (a.head - a.tail).unit(), (b.head - b.tail).unit()
     if abs(u.cross(w)) > math.sin(LANE_ANGLE):
-        return 0.0
+        return none
     # b's ends along a's line (t) and across it (d); d is linear in t along b
     t0, t1 = u.dot(b.tail - a.tail), u.dot(b.head - a.tail)
     d0, d1 = u.cross(b.tail - a.tail), u.cross(b.head - a.tail)
@@ -412,21 +418,22 @@ def along(a: PlanVector, b: PlanVector, k: float) -> float:
         t0, t1, d0, d1 = t1, t0, d1, d0
     lo, hi = max(t0, 0.0), min(t1, la)
     if hi <= lo:
-        return 0.0
-    near = THIN_MM * k
+        return none
+    near = near_mm * k
 
     def d(t: float) -> float:
         return d0 if t1 == t0 else d0 + (d1 - d0) * (t - t0) / (t1 - t0)
 
     da, db = d(lo), d(hi)
-    if abs(da) < near and abs(db) < near:
-        return (hi - lo) / k
-    if da == db:
-        return 0.0
-    # the part of [lo, hi] where |d| < near
-    ta, tb = (lo + (x - da) * (hi - lo) / (db - da) for x in (-near, near))
-    ta, tb = max(min(ta, tb), lo), min(max(ta, tb), hi)
-    return max(tb - ta, 0.0) / k
+    if not (abs(da) < near and abs(db) < near):
+        if da == db:
+            return none
+        # the part of [lo, hi] where |d| < near
+        ta, tb = (lo + (x - da) * (hi - lo) / (db - da) for x in (-near, near))
+        lo, hi = max(min(ta, tb), lo), min(max(ta, tb), hi)
+        if hi <= lo:
+            return none
+    return (hi - lo) / k, a.tail + u * ((lo + hi) / 2.0)
 
 
 def lanes(k: float, vectors: Sequence[PlanVector]) -> dict[str, Vec]:
@@ -434,11 +441,36 @@ def lanes(k: float, vectors: Sequence[PlanVector]) -> dict[str, Vec]:
     paper at μ_F ``k``, the vectors of a plan that would run along one another (over
     :data:`LANE_OVERLAP_MM`, :func:`along`): each set of such vectors in lanes across the line
     of its longest, the fewest lanes (vectors that only meet end to end share one), in the
-    order they lie across it, centred where they were. A vector along no other is not moved."""
+    order they lie across it, centred where they run along one another; those still along one
+    another once moved (two sides of a thin triangle that meet at a small angle) moved apart
+    again (:data:`LANE_PASSES`). A vector along no other is not moved."""
+    out = _lanes(k, vectors, OFFSET_MM)
+    zero = Vec(0.0, 0.0)
+    for _ in range(LANE_PASSES):
+        moved = [
+            PlanVector(pv.name, pv.tail + out.get(pv.name, zero), pv.head + out.get(pv.name, zero))
+            for pv in vectors
+        ]
+        more = _lanes(k, moved, THIN_MM)
+        if not more:
+            break
+        for name, sv in more.items():
+            out[name] = out.get(name, zero) + sv
+    return out
+
+
+def _lanes(k: float, vectors: Sequence[PlanVector], near_mm: float) -> dict[str, Vec]:
+    """:func:`lanes`' one pass: the vectors within ``near_mm`` of one another over
+    :data:`LANE_OVERLAP_MM` are the sets moved into lanes."""
     vs = list(vectors)
     n = len(vs)
-    over = {(i, j) for i in range(n) for j in range(i + 1, n)
-            if along(vs[i], vs[j], k) > LANE_OVERLAP_MM}  # fmt: skip
+    # (those nearer than a lane's width count: moved into lanes, none lands on another)
+    over: dict[tuple[int, int], Vec] = {}
+    for i in range(n):
+        for j in range(i + 1, n):
+            run, spot = _along(vs[i], vs[j], k, near_mm)
+            if run > LANE_OVERLAP_MM:
+                over[i, j] = spot
     if not over:
         return {}
     root = list(range(n))
@@ -460,7 +492,16 @@ def lanes(k: float, vectors: Sequence[PlanVector]) -> dict[str, Vec]:
             continue
         big = vs[max(members, key=lambda i: vs[i].magnitude)]
         across = (big.head - big.tail).unit().perp()
-        at = {i: across.dot((vs[i].tail + vs[i].head) * 0.5 - big.tail) for i in members}
+        # each across the line where they run along one another (two that meet at a small
+        # angle apart there, not at their middles)
+        spots = [m for (i, j), m in over.items() if i in members]
+        c = Vec(sum(q.x for q in spots) / len(spots), sum(q.y for q in spots) / len(spots))
+        at: dict[int, float] = {}
+        for i in members:
+            pv = vs[i]
+            w = pv.head - pv.tail
+            t = min(max(w.dot(c - pv.tail) / w.dot(w), 0.0), 1.0)
+            at[i] = across.dot(pv.tail + w * t - big.tail)
         lane: dict[int, int] = {}
         for i in sorted(members, key=lambda i: (at[i], i)):
             taken = {lane[j] for j in lane if (min(i, j), max(i, j)) in over}
@@ -605,6 +646,8 @@ SLIVER_MM = 100.0
 LANE_ANGLE = math.radians(4.0)
 #: … that run within THIN_MM of one another longer than this (mm) are drawn side by side.
 LANE_OVERLAP_MM = 3.0
+#: The passes of :func:`lanes` that move apart again the vectors still along one another.
+LANE_PASSES = 2
 
 
 #: The Cyrillic capitals drawn as Latin ones (a detail lettered with one reads as a point).
