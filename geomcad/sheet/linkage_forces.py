@@ -496,17 +496,14 @@ def _sheet2(
         big = max(pv.magnitude for poly, _ in p.layers for pv in poly.vectors)
         side = max(_side(p))
         want = max(big / PLAN_MM, side / POLY_MM)
-        seek = PLAN_SEEK_MM
         if is_sliver(p.layers[-1][0]):
-            # a sliver (R01 = -R21) shows no more drawn long: at most SLIVER_MM (at least a
-            # quarter where its details leave it little room)
-            p.least_k = big / SLIVER_MM
-            want, seek = 4.0 * big / SLIVER_MM, SLIVER_MM / 4.0
+            # a sliver (R01 = -R21) shows no more drawn long: at most SLIVER_MM in its cell
+            p.longest_mm = SLIVER_MM
         if want > 0.0:
             wants[p] = want
         if big > 0.0:
             # and on the largest format the search seeks it (its longest vector PLAN_SEEK_MM)
-            p.readable = max(p.readable, big * p.readable_mm / seek)
+            p.readable = max(p.readable, big * p.readable_mm / PLAN_SEEK_MM)
     if mech.readable > 0.0:
         wants[mech] = lk.length / mech.readable_mm
     return tree, wants

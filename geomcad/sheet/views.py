@@ -993,6 +993,8 @@ class Polygon(View):
         self.omitted: list[str] = []
         self.note = ""
         self.floor = 0.0
+        #: the longest vector drawn at most this long (mm; 0: as placed): a sliver's cap
+        self.longest_mm = 0.0
         if self.detail and negligible is not None:
             vs = self.layers[-1][0].vectors
             big = max((pv.magnitude for pv in vs), default=0.0)
@@ -1034,6 +1036,22 @@ class Polygon(View):
     def extent(self) -> Extent | None:
         return self._ext
 
+    def drawn_k(self, k: float) -> float:
+        """The μ_F the polygon is drawn at where it is placed at ``k``: ``k``, or, where
+        :attr:`longest_mm` caps it (a sliver: :func:`is_sliver`), the finest factor of the
+        series that draws its longest vector no longer than that, as its caption states."""
+        if self.longest_mm <= 0.0 or not (self.show_scale and self.title):
+            return k
+        big = max((pv.magnitude for poly, _ in self.layers for pv in poly.vectors), default=0.0)
+        if big <= 0.0 or big / k <= self.longest_mm:
+            return k
+        return max(k, nice_factor(big, self.longest_mm, "F").k)
+
+    def caption(self, scale: Scale | None) -> str:
+        if scale is not None:
+            scale = Scale(self.drawn_k(scale.k), scale.q)
+        return super().caption(scale)
+
     def title_room(self) -> float:
         return super().title_room() + (NOTE_H * TITLE_LEAD if self.note else 0.0)
 
@@ -1044,6 +1062,7 @@ class Polygon(View):
         a detail keeps its size in mm at any μ_F: at a coarser one it takes more of the room."""
         if not self.detail:
             return 0.0
+        k = self.drawn_k(k)
         w, h = inner[2] - inner[0], inner[3] - inner[1]
         _, _, ext = self._with_details(k, iter(_ANY), (w * k, h * k))
         return max((ext[2] - ext[0]) / k - w, (ext[3] - ext[1]) / k - h, 0.0)
@@ -1061,6 +1080,10 @@ class Polygon(View):
     def draw(self, d: Drawing, at: Placed) -> None:
         v = at.viewport
         assert v is not None
+        k = self.drawn_k(v.scale.k)
+        if k != v.scale.k:  # a sliver drawn short at the μ_F its caption states
+            v = Viewport(d, Scale(k, v.scale.q), v.ox, v.oy, v.at)
+            at.viewport = v
         if self.detail:
             # the details planned and placed again for the μ_F drawn (their run, their room
             # in mm), lettered in the order drawn, the whole centred in the box
