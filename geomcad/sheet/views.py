@@ -1081,7 +1081,8 @@ class Polygon(View):
         v = at.viewport
         assert v is not None
         k = self.drawn_k(v.scale.k)
-        if k != v.scale.k:  # a sliver drawn short at the μ_F its caption states
+        short = k != v.scale.k
+        if short:  # a sliver drawn short at the μ_F its caption states
             v = Viewport(d, Scale(k, v.scale.q), v.ox, v.oy, v.at)
             at.viewport = v
         if self.detail:
@@ -1092,7 +1093,10 @@ class Polygon(View):
             room = ((x1 - x0) * v.scale.k, (y1 - y0) * v.scale.k)
             self.details, self.thin, ext = self._with_details(v.scale.k, letters, room)
             centre = ((ext[0] + ext[2]) / 2.0, (ext[1] + ext[3]) / 2.0)
-            v = Viewport(d, v.scale, centre[0], centre[1], v.at)
+            where = v.at
+            if short:  # drawn short: under its caption, not in the middle of its cell
+                where = (v.at[0], min(v.at[1], y0 + (ext[3] - ext[1]) / v.scale.k / 2.0))
+            v = Viewport(d, v.scale, centre[0], centre[1], where)
             at.viewport = v
         if self.note:  # on a line of its own under the caption
             lines = (self.title_lines - 1) * TITLE_SPACING
