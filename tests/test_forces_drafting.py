@@ -113,11 +113,7 @@ def _tail_to_tail(vectors: list[tuple[XY, XY]]) -> list[tuple[XY, XY, XY, XY]]:
     return out
 
 
-@pytest.mark.parametrize(
-    "name",
-    [pytest.param(n, marks=pytest.mark.xfail(strict=True, reason="a load on the crank's line"))
-     if n == "compressor" else n for n in NAMES],
-)  # fmt: skip
+@pytest.mark.parametrize("name", NAMES)
 def test_the_loaded_mechanism_keeps_the_free_bodies_rules(
     name: str, monkeypatch: pytest.MonkeyPatch
 ) -> None:

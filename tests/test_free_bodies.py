@@ -135,13 +135,10 @@ def _dist(q: np.ndarray, segs: list[tuple[XY, XY]]) -> np.ndarray:
     return np.asarray(np.linalg.norm(q[:, None, :] - foot, axis=2).min(axis=1))
 
 
-#: On these a load along its link is still drawn on it although the view's box has room on its
-#: line past the link's end: the compressor's F_B and G_3 at B run down the rod, Φ_3 taking
-#: the line above the slider. The placement's choice (loads.Clearance), not the composition's
-#: room: margins of LOAD_MM or LOAD_MM + LABEL_ROOM_MM round the group views (instead of
-#: 0.75 LOAD_MM) leave the compressor's as it is. (The crusher's G_2 ran down link 2 from B
-#: while its groups were drawn at 1:15; at the kinematic sheet's 1:5 it is clear.)
-CRAMPED = {"compressor"}
+#: On these a load along its link would still be drawn on it. None since an arrow that runs
+#: along a line wherever it slides on its line of action is drawn beside it, parallel, tied to
+#: its point (loads.Clearance.beside): the compressor's F_B and G_3 at B ran down the rod.
+CRAMPED: set[str] = set()
 
 
 @pytest.mark.parametrize(

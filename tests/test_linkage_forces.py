@@ -924,7 +924,8 @@ def test_a_reaction_split_into_components_is_drawn_as_their_resultant(
 ) -> None:
     """In a group's force polygon every reaction found by its components R^n, R^τ is drawn as
     well as their resultant, an arrow labelled R_{12} that closes them (from the tail of the
-    one to the head of the other) and is the reaction's force; and every vector a detail
+    one to the head of the other, or beside a component it would lie over) and is the
+    reaction's force; and every vector a detail
     enlarges is still in the main polygon's chain, drawn there and named in its detail."""
     _, f, rec = _drawn_polygons(name, monkeypatch)
     reactions = {r.name: r.force for gf in f.groups for r in gf.reactions}
@@ -945,10 +946,16 @@ def test_a_reaction_split_into_components_is_drawn_as_their_resultant(
             total = a.force + b.force
             assert rname in reactions and reactions[rname].dist(total) <= 1e-6 * big, rname
             tails, heads = {a.tail, b.tail}, {a.head, b.head}
+            # from the tail of the one to the head of the other, or (along a component it
+            # would be drawn over) that closing vector moved across its own line beside it
+            u = total.unit()
             assert any(
                 (q - p).dist(total) <= 1e-6 * big
-                and any(p.dist(t) <= 1e-6 * big for t in tails)
-                and any(q.dist(h) <= 1e-6 * big for h in heads)
+                and any(
+                    (p - t).dist(q - h) <= 1e-6 * big and abs(u.dot(p - t)) <= 1e-6 * big
+                    for t in tails
+                    for h in heads
+                )
                 for p, q in arrows
             ), (name, rname)
         for dt in details:

@@ -129,6 +129,7 @@ from geomcad.sheet.scale import (
 )
 from geomcad.sheet.scheme import draw_scheme
 from geomcad.sheet.views import (
+    SLIVER_MM,
     AxisSpec,
     Curve,
     Diagram,
@@ -137,6 +138,7 @@ from geomcad.sheet.views import (
     Table,
     Text,
     detail_letters,
+    is_sliver,
 )
 from geomcad.structure import Mechanism
 from geomcad.structure.model import Link
@@ -551,6 +553,9 @@ def _sheet2(
         big = max(pv.magnitude for poly, _ in p.layers for pv in poly.vectors)
         side = max(_side(p))
         want = max(big / PLAN_MM, side / POLY_MM)
+        if is_sliver(p.layers[-1][0]):
+            # a sliver (R01 = -R21) shows no more drawn long: at most SLIVER_MM in its cell
+            p.longest_mm = SLIVER_MM
         if want > 0.0:
             wants[p] = want
         if big > 0.0:

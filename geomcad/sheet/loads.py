@@ -269,6 +269,11 @@ _W_LINE, _W_HEAD, _W_OUT, _W_GAP, _W_END = 1.0, 4.0, 3.0, 0.1, 0.5
 #: How far (mm) an arrow may be moved along its line of action beyond either of its ends
 #: (farther, it would no longer read as acting at its point).
 SLIDE_MM = 60.0
+#: An arrow that runs along a line drawn wherever it slides on its line of action (a load
+#: along its link) is drawn this far (mm) beside it, parallel, tied to its point by a thin line;
+#: each mm aside costs as much as _W_BESIDE mm of the arrow on a line.
+BESIDE_MM = 3.0
+_W_BESIDE = 1.0
 _STEP = 0.5
 
 
@@ -340,6 +345,24 @@ class Clearance:
         direction ``u`` on the line through ``p``: the cheapest place by the costs above
         (``arrive``: the arrow the caller would draw ends at ``p``)."""
         return self.best(p, u, length, arrive)[1:]
+
+    def beside(self, p: XY, u: XY, length: float, arrive: bool) -> tuple[XY, XY, XY]:
+        """:meth:`place`'s arrow, or, where every place on its line of action runs along a
+        line drawn (a load along its link: the link hides it), the cheapest one on a parallel
+        line :data:`BESIDE_MM` (or twice that) to either side, each mm aside costing
+        :data:`_W_BESIDE`: (foot, tail, tip) in sheet mm, the foot the point beside ``p`` its
+        line passes (``p`` itself on the line of action; the caller ties it to ``p``)."""
+        cost, tail, tip = self.best(p, u, length, arrive)
+        out = (p, tail, tip)
+        if cost <= _W_BESIDE * BESIDE_MM:
+            return out
+        for off in (BESIDE_MM, 2.0 * BESIDE_MM):
+            for side in (1.0, -1.0):
+                q = (p[0] - side * off * u[1], p[1] + side * off * u[0])
+                c, t, h = self.best(q, u, length, arrive)
+                if c + _W_BESIDE * off < cost:
+                    cost, out = c + _W_BESIDE * off, (q, t, h)
+        return out
 
     def best(self, p: XY, u: XY, length: float, arrive: bool) -> tuple[float, XY, XY]:
         """:meth:`place`'s arrow with its cost (0: at its point and clear of everything)."""
@@ -472,8 +495,8 @@ def force(
     p = v.p(at)
     ux, uy = F.x / F.norm, -F.y / F.norm  # paper direction (y down)
     if clear is not None:
-        tail, tip = clear.place(p, (ux, uy), length, arrive)
-        line_of_action(v.sheet, p, tail, tip)
+        foot, tail, tip = clear.beside(p, (ux, uy), length, arrive)
+        line_of_action(v.sheet, p, tail, tip, None if foot == p else foot)
     elif arrive:
         tail, tip = (p[0] - ux * length, p[1] - uy * length), p
     else:
@@ -489,20 +512,30 @@ def force(
     return tail, tip
 
 
-def line_of_action(sheet: Sheet, p: XY, tail: XY, tip: XY) -> Polyline | None:
+def line_of_action(
+    sheet: Sheet, p: XY, tail: XY, tip: XY, beside: XY | None = None
+) -> Polyline | None:
     """An arrow moved along its line of action off its point of application ``p`` (sheet mm)
     carries that line back to ``p`` as a thin solid line (GOST 2.303), from its nearer end:
     the force reads as acting at ``p``. An arrow that reaches ``p`` (within
-    :data:`AT_POINT_MM`, a joint's circle) or runs past it draws nothing; returns the line."""
+    :data:`AT_POINT_MM`, a joint's circle) or runs past it draws nothing; returns the line.
+    ``beside``: the arrow is drawn on a parallel line beside its line of action (off a link
+    that would hide it), through this point across from ``p``: the line runs from its nearer
+    end along its own line to there (where it is off it) and across to ``p``."""
     length = math.dist(tail, tip)
     if length <= 0.0:
         return None
+    q = p if beside is None else beside
     u = ((tip[0] - tail[0]) / length, (tip[1] - tail[1]) / length)
-    s = (p[0] - tail[0]) * u[0] + (p[1] - tail[1]) * u[1]  # p's place along the arrow
+    s = (q[0] - tail[0]) * u[0] + (q[1] - tail[1]) * u[1]  # q's place along the arrow
     if -AT_POINT_MM <= s <= length + AT_POINT_MM:
-        return None
+        if beside is None:
+            return None
+        line = Polyline((beside, p), "thin")
+        sheet.add(line)
+        return line
     end = tail if s < 0.0 else tip
-    line = Polyline((end, p), "thin")
+    line = Polyline((end, p) if beside is None else (end, beside, p), "thin")
     sheet.add(line)
     return line
 

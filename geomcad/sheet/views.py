@@ -250,9 +250,13 @@ def draw_polygon(
     inward = set(inward)
     in_detail = {n for dt in details for n in dt.run}
     zero = _zero(poly)
-    shift = _shifts(v, poly, in_detail) if thin else {}
-    short: list[str] = []
     omit = set(omit)
+    shift = (
+        _shifts(v, poly, in_detail)
+        if thin
+        else lanes(v.scale.k, _lane_vectors(poly, in_detail, omit))
+    )
+    short: list[str] = []
     drawn = [pv for pv in poly.vectors if pv.magnitude > zero and pv.name not in omit]
     res = resultants(poly)
     # a component is labelled outside the triangle it makes with its resultant
@@ -267,7 +271,7 @@ def draw_polygon(
         s = shift.get(pv.name, Vec(0.0, 0.0))
         nxt = drawn[(i + 1) % len(drawn)]
         s2 = shift.get(nxt.name, Vec(0.0, 0.0))
-        if thin and (s - s2).norm > 0.0:  # the vectors side by side joined where they meet
+        if (s - s2).norm > 0.0:  # the vectors side by side joined where they meet
             v.seg(pv.head + s, nxt.tail + s2, "construction")
         tail, head = pv.tail + s, pv.head + s
         text = (names or {}).get(pv.name, pv.name)
@@ -293,6 +297,12 @@ def draw_polygon(
         # a reaction found by its components: their resultant closes them, the label on the
         # side away from the components' corner, a third of the way along (clear of the
         # label of a long component drawn next to it)
+        s = shift.get(r.name, Vec(0.0, 0.0))
+        if s.norm > 0.0:  # beside a component along its line, tied to its ends
+            v.seg(r.tail, r.tail + s, "construction")
+            v.seg(r.head, r.head + s, "construction")
+            r = PlanVector(r.name, r.tail + s, r.head + s)
+            corner = corner + s
         if v.mm(r.magnitude) < SHORT_MM:  # its components in a detail: its line, named
             v.seg(r.tail, r.head, "construction")
         else:
@@ -309,7 +319,8 @@ def draw_polygon(
                 prefer=prefer, clear=0.5)  # fmt: skip
     sides = [(v.p(pv.tail + shift.get(pv.name, Vec(0.0, 0.0))),
               v.p(pv.head + shift.get(pv.name, Vec(0.0, 0.0)))) for pv in drawn]  # fmt: skip
-    sides += [(v.p(r.tail), v.p(r.head)) for r, _ in res]
+    sides += [(v.p(r.tail + shift.get(r.name, Vec(0.0, 0.0))),
+               v.p(r.head + shift.get(r.name, Vec(0.0, 0.0)))) for r, _ in res]  # fmt: skip
     for spot in detail_spots(v, poly, details):
         mark_detail(v, *spot, segs=sides)
     if thin and len(drawn) == 2 and not in_detail:
@@ -317,7 +328,7 @@ def draw_polygon(
         a, b = ((names or {}).get(pv.name, pv.name) for pv in drawn)
         big = max(drawn, key=lambda pv: pv.magnitude)
         n = (big.head - big.tail).unit().perp()
-        far = n * (OFFSET_MM * 2.0 * v.scale.k)
+        far = n * ((OFFSET_MM * 2.0 + height * 1.6) * v.scale.k)  # a line beyond their labels
         v.label((big.tail + big.head) * 0.5 + far, f"{b} = −{a}", height, prefer=(n.x, n.y),
                 clear=0.5)  # fmt: skip
     v.dot(poly.pole)
@@ -371,6 +382,158 @@ def _shifts(v: Viewport, poly: ForcePolygon, skip: Iterable[str] = ()) -> dict[s
     n = (big.head - big.tail).unit().perp()
     step = OFFSET_MM * v.scale.k
     return {pv.name: n * ((i - (len(vs) - 1) / 2.0) * step) for i, pv in enumerate(vs)}
+
+
+def _lane_vectors(
+    poly: ForcePolygon, skip: Iterable[str] = (), omit: Iterable[str] = ()
+) -> list[PlanVector]:
+    """The vectors of ``poly`` drawn as arrows (not zero, not in a detail, not left out) and
+    the resultants of its split reactions: those that may lie along one another."""
+    gone = set(skip) | set(omit)
+    zero = _zero(poly)
+    vs = [pv for pv in poly.vectors if pv.magnitude > zero and pv.name not in gone]
+    return vs + [r for r, _ in resultants(poly) if r.name not in gone]
+
+
+def along(a: PlanVector, b: PlanVector, k: float, near_mm: float = 1.2) -> float:
+    """How long (mm, drawn at μ_F ``k``) vectors ``a`` and ``b`` run along one another: within
+    :data:`LANE_ANGLE` of each other and ``near_mm`` (:data:`THIN_MM`) of one line (one drawn
+    over the other); 0 where they only meet at an end or run apart."""
+    return _along(a, b, k, near_mm)[0]
+
+
+def _along(a: PlanVector, b: PlanVector, k: float, near_mm: float) -> tuple[float, Vec]:
+    """:func:`along`, and the middle (model point on ``a``) of the part they run along."""
+    none = (0.0, a.tail)
+    la, lb = a.magnitude, b.magnitude
+    if la <= 0.0 or lb <= 0.0:
+        return none
+    u, w = (a.head - a.tail).unit(), (b.head - b.tail).unit()
+    if abs(u.cross(w)) > math.sin(LANE_ANGLE):
+        return none
+    # b's ends along a's line (t) and across it (d); d is linear in t along b
+    t0, t1 = u.dot(b.tail - a.tail), u.dot(b.head - a.tail)
+    d0, d1 = u.cross(b.tail - a.tail), u.cross(b.head - a.tail)
+    if t1 < t0:
+        t0, t1, d0, d1 = t1, t0, d1, d0
+    lo, hi = max(t0, 0.0), min(t1, la)
+    if hi <= lo:
+        return none
+    near = near_mm * k
+
+    def d(t: float) -> float:
+        return d0 if t1 == t0 else d0 + (d1 - d0) * (t - t0) / (t1 - t0)
+
+    da, db = d(lo), d(hi)
+    if not (abs(da) < near and abs(db) < near):
+        if da == db:
+            return none
+        # the part of [lo, hi] where |d| < near
+        ta, tb = (lo + (x - da) * (hi - lo) / (db - da) for x in (-near, near))
+        lo, hi = max(min(ta, tb), lo), min(max(ta, tb), hi)
+        if hi <= lo:
+            return none
+    return (hi - lo) / k, a.tail + u * ((lo + hi) / 2.0)
+
+
+def lanes(k: float, vectors: Sequence[PlanVector]) -> dict[str, Vec]:
+    """The sideways shifts (model units) that draw side by side, :data:`OFFSET_MM` apart on the
+    paper at μ_F ``k``, the vectors of a plan that would run along one another (over
+    :data:`LANE_OVERLAP_MM`, :func:`along`): each set of such vectors in lanes across the line
+    of its longest, the fewest lanes (vectors that only meet end to end share one), in the
+    order they lie across it, centred where they run along one another; those still along one
+    another once moved (two sides of a thin triangle that meet at a small angle) moved apart
+    again (:data:`LANE_PASSES`). A vector along no other is not moved."""
+    out = _lanes(k, vectors, OFFSET_MM)
+    zero = Vec(0.0, 0.0)
+    for _ in range(LANE_PASSES):
+        moved = [
+            PlanVector(pv.name, pv.tail + out.get(pv.name, zero), pv.head + out.get(pv.name, zero))
+            for pv in vectors
+        ]
+        more = _lanes(k, moved, THIN_MM)
+        if not more:
+            break
+        for name, sv in more.items():
+            out[name] = out.get(name, zero) + sv
+    return out
+
+
+def _lanes(k: float, vectors: Sequence[PlanVector], near_mm: float) -> dict[str, Vec]:
+    """:func:`lanes`' one pass: the vectors within ``near_mm`` of one another over
+    :data:`LANE_OVERLAP_MM` are the sets moved into lanes."""
+    vs = list(vectors)
+    n = len(vs)
+    # (those nearer than a lane's width count: moved into lanes, none lands on another)
+    over: dict[tuple[int, int], Vec] = {}
+    for i in range(n):
+        for j in range(i + 1, n):
+            run, spot = _along(vs[i], vs[j], k, near_mm)
+            if run > LANE_OVERLAP_MM:
+                over[i, j] = spot
+    if not over:
+        return {}
+    root = list(range(n))
+
+    def find(i: int) -> int:
+        while root[i] != i:
+            root[i] = root[root[i]]
+            i = root[i]
+        return i
+
+    for i, j in over:
+        root[find(i)] = find(j)
+    sets: dict[int, list[int]] = {}
+    for i in range(n):
+        sets.setdefault(find(i), []).append(i)
+    out: dict[str, Vec] = {}
+    for members in sets.values():
+        if len(members) < 2:
+            continue
+        big = vs[max(members, key=lambda i: vs[i].magnitude)]
+        across = (big.head - big.tail).unit().perp()
+        # each across the line where they run along one another (two that meet at a small
+        # angle apart there, not at their middles)
+        spots = [m for (i, j), m in over.items() if i in members]
+        c = Vec(sum(q.x for q in spots) / len(spots), sum(q.y for q in spots) / len(spots))
+        at: dict[int, float] = {}
+        for i in members:
+            pv = vs[i]
+            w = pv.head - pv.tail
+            t = min(max(w.dot(c - pv.tail) / w.dot(w), 0.0), 1.0)
+            at[i] = across.dot(pv.tail + w * t - big.tail)
+        lane: dict[int, int] = {}
+        for i in sorted(members, key=lambda i: (at[i], i)):
+            taken = {lane[j] for j in lane if (min(i, j), max(i, j)) in over}
+            lane[i] = next(x for x in range(n) if x not in taken)
+        # a lane moves as one (vectors end to end in it stay joined), the lanes in the order
+        # they lie across, OFFSET_MM apart, centred where they were
+        count = max(lane.values()) + 1
+        where = [sum(at[i] for i in members if lane[i] == x) / sum(lane[i] == x for i in members)
+                 for x in range(count)]  # fmt: skip
+        rank = {x: r for r, x in enumerate(sorted(range(count), key=lambda x: where[x]))}
+        mid = sum(where) / count
+        for i in members:
+            want = mid + (rank[lane[i]] - (count - 1) / 2.0) * OFFSET_MM * k
+            move = want - where[lane[i]]
+            if move != 0.0:
+                out[vs[i].name] = across * move
+    return out
+
+
+def is_sliver(poly: ForcePolygon) -> bool:
+    """Whether the polygon is a sliver: no wider across the line of its longest vector than
+    :data:`SLIVER_SHARE` of that vector (a two-force member's R₀₁ = −R₂₁, a link's two
+    reactions with a small weight between): drawn large it shows two long lines over one
+    another and nothing more, so a sheet draws it no longer than :data:`SLIVER_MM`."""
+    zero = _zero(poly)
+    vs = [pv for pv in poly.vectors if pv.magnitude > zero]
+    if len(vs) < 2:
+        return False
+    big = max(vs, key=lambda pv: pv.magnitude)
+    u = (big.head - big.tail).unit()
+    across = [u.cross(q - big.tail) for pv in vs for q in (pv.tail, pv.head)]
+    return max(across) - min(across) <= SLIVER_SHARE * big.magnitude
 
 
 def is_thin(poly: ForcePolygon, k: float) -> bool:
@@ -474,6 +637,17 @@ DETAIL_GAP_MM = 4.0
 OFFSET_MM = 2.5
 #: … a polygon is thin when all of it lies within this (mm) of its longest vector's line.
 THIN_MM = 1.2
+#: A plan no wider than this share of its longest vector is a sliver …
+SLIVER_SHARE = 0.125
+#: … drawn with its longest vector at most this long (mm; a μ_F of the series draws it at
+#: least half as long): its long sides side by side.
+SLIVER_MM = 100.0
+#: Two vectors of a plan within this angle of each other …
+LANE_ANGLE = math.radians(4.0)
+#: … that run within THIN_MM of one another longer than this (mm) are drawn side by side.
+LANE_OVERLAP_MM = 3.0
+#: The passes of :func:`lanes` that move apart again the vectors still along one another.
+LANE_PASSES = 2
 
 
 #: The Cyrillic capitals drawn as Latin ones (a detail lettered with one reads as a point).
@@ -751,13 +925,18 @@ def draw_detail(
     for pv, a, b in _stubs(poly, dt, sc.k):
         sub.seg(a, b, "construction")
         sub.label(b, names.get(pv.name, pv.name), height, clear=0.5)
-    for n in dt.run:
-        pv = poly[n]
-        if pv.magnitude <= _zero(poly):
-            continue
-        sub.arrow(pv.tail, pv.head, "result" if n in found else "vector")
-        sub.label((pv.tail + pv.head) * 0.5, names.get(n, n), height,
-                  prefer=_outward(poly, pv.tail, pv.head, False), clear=0.5)  # fmt: skip
+    run = [poly[n] for n in dt.run if poly[n].magnitude > _zero(poly)]
+    shift = lanes(sc.k, run)  # those along one another side by side, tied where they meet
+    for i, pv in enumerate(run):
+        s = shift.get(pv.name, Vec(0.0, 0.0))
+        if i + 1 < len(run) and (s - shift.get(run[i + 1].name, Vec(0.0, 0.0))).norm > 0.0:
+            sub.seg(pv.head + s, run[i + 1].tail + shift.get(run[i + 1].name, Vec(0.0, 0.0)),
+                    "construction")  # fmt: skip
+        n = pv.name
+        tail, head = pv.tail + s, pv.head + s
+        sub.arrow(tail, head, "result" if n in found else "vector")
+        prefer = (s.unit().x, s.unit().y) if s.norm > 0.0 else _outward(poly, tail, head, False)
+        sub.label((tail + head) * 0.5, names.get(n, n), height, prefer=prefer, clear=0.5)
 
 
 class Polygon(View):
@@ -814,6 +993,8 @@ class Polygon(View):
         self.omitted: list[str] = []
         self.note = ""
         self.floor = 0.0
+        #: the longest vector drawn at most this long (mm; 0: as placed): a sliver's cap
+        self.longest_mm = 0.0
         if self.detail and negligible is not None:
             vs = self.layers[-1][0].vectors
             big = max((pv.magnitude for pv in vs), default=0.0)
@@ -855,6 +1036,22 @@ class Polygon(View):
     def extent(self) -> Extent | None:
         return self._ext
 
+    def drawn_k(self, k: float) -> float:
+        """The μ_F the polygon is drawn at where it is placed at ``k``: ``k``, or, where
+        :attr:`longest_mm` caps it (a sliver: :func:`is_sliver`), the finest factor of the
+        series that draws its longest vector no longer than that, as its caption states."""
+        if self.longest_mm <= 0.0 or not (self.show_scale and self.title):
+            return k
+        big = max((pv.magnitude for poly, _ in self.layers for pv in poly.vectors), default=0.0)
+        if big <= 0.0 or big / k <= self.longest_mm:
+            return k
+        return max(k, nice_factor(big, self.longest_mm, "F").k)
+
+    def caption(self, scale: Scale | None) -> str:
+        if scale is not None:
+            scale = Scale(self.drawn_k(scale.k), scale.q)
+        return super().caption(scale)
+
     def title_room(self) -> float:
         return super().title_room() + (NOTE_H * TITLE_LEAD if self.note else 0.0)
 
@@ -865,6 +1062,7 @@ class Polygon(View):
         a detail keeps its size in mm at any μ_F: at a coarser one it takes more of the room."""
         if not self.detail:
             return 0.0
+        k = self.drawn_k(k)
         w, h = inner[2] - inner[0], inner[3] - inner[1]
         _, _, ext = self._with_details(k, iter(_ANY), (w * k, h * k))
         return max((ext[2] - ext[0]) / k - w, (ext[3] - ext[1]) / k - h, 0.0)
@@ -882,6 +1080,11 @@ class Polygon(View):
     def draw(self, d: Drawing, at: Placed) -> None:
         v = at.viewport
         assert v is not None
+        k = self.drawn_k(v.scale.k)
+        short = k != v.scale.k
+        if short:  # a sliver drawn short at the μ_F its caption states
+            v = Viewport(d, Scale(k, v.scale.q), v.ox, v.oy, v.at)
+            at.viewport = v
         if self.detail:
             # the details planned and placed again for the μ_F drawn (their run, their room
             # in mm), lettered in the order drawn, the whole centred in the box
@@ -890,7 +1093,10 @@ class Polygon(View):
             room = ((x1 - x0) * v.scale.k, (y1 - y0) * v.scale.k)
             self.details, self.thin, ext = self._with_details(v.scale.k, letters, room)
             centre = ((ext[0] + ext[2]) / 2.0, (ext[1] + ext[3]) / 2.0)
-            v = Viewport(d, v.scale, centre[0], centre[1], v.at)
+            where = v.at
+            if short:  # drawn short: under its caption, not in the middle of its cell
+                where = (v.at[0], min(v.at[1], y0 + (ext[3] - ext[1]) / v.scale.k / 2.0))
+            v = Viewport(d, v.scale, centre[0], centre[1], where)
             at.viewport = v
         if self.note:  # on a line of its own under the caption
             lines = (self.title_lines - 1) * TITLE_SPACING
