@@ -215,3 +215,31 @@ def test_thin_positions_draw_no_web_to_a_coupler_point() -> None:
     }
     assert len(touching) <= 1, touching  # the principal position's at most (drawn as main lines)
     assert any(p.name == "M" and p.link == 2 for p in lk.points)
+
+
+@pytest.mark.parametrize(
+    "path",
+    [ROOT / "linkages" / "sixbar-slider.toml", ROOT / "linkages_layout" / "tall_rod_press.toml"],
+    ids=lambda p: p.stem,
+)
+def test_the_mechanism_keeps_its_crank_rule_without_a_detail_where_a1_allows_it(
+    path: Path,
+) -> None:
+    """Round 2: sixbar-slider's tall mechanism fell from A1 at 1:2 to A2 at 1:10 with a crank
+    detail: the joint search missed the arrangement beside the diagrams that alone keeps the
+    crank's rule, and the detail was tried before the plans' own sheet. Where the mechanism
+    drawn alone on A1 (one of its sheets' arrangements) keeps the crank CRANK_MM long, the
+    sheet draws it so, with no detail: the detail is the last resort."""
+    s = solve(parse(tomllib.loads(path.read_text(encoding="utf-8"))))
+    lk = s.linkage
+    # A1 allows it: the mechanism alone, at the rule's scale, within A1's field
+    k = round_scale_down(lk.length / CRANK_MM, "l", "gost").k
+    x0, y0, x1, y1 = _Mechanism(s).extent()
+    fx0, fy0, fx1, fy1 = Field.of_format("A1", True).box
+    assert (x1 - x0) / k < fx1 - fx0 and (y1 - y0) / k < fy1 - fy0
+    lay = layout(s)
+    first = lay.sized[0].layout
+    assert not [pl for pl in first if isinstance(pl.view, _CrankDetail)]
+    assert lay.k_l.mm(lk.length) >= CRANK_MM - 1e-9
+    assert lay.sized[0].fmt == "A1"
+    assert all(z.layout.fits for z in lay.sized)

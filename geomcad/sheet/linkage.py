@@ -14,10 +14,10 @@ The format is chosen by the content (:mod:`geomcad.sheet.formats`): the smaller 
 crank vector pa at least :data:`PA_MM` (a file with few positions, a small mechanism: A2), else
 A1; a file's ``[sheet] format`` overrides it. Where the largest format's arrangement breaks
 either rule, the search seeks the rules' scales (:func:`~geomcad.sheet.compose.View`'s
-``most_k``): on one sheet, else with the crank on its detail view, else with the velocity plans
-on a sheet of their own (:func:`_rules_hold`). Tables, orders and notes are written
-:data:`TEXT_H` high on A2 and A1 (2.5 mm, GOST 2.304's least, on a smaller format the file
-asks for), the views' titles 5 mm.
+``most_k``): on one sheet, else with the velocity plans on a sheet of their own, else with the
+crank on its detail view, the last resort (:func:`_rules_hold`). Tables, orders and notes are
+written :data:`TEXT_H` high on A2 and A1 (2.5 mm, GOST 2.304's least, on a smaller format the
+file asks for), the views' titles 5 mm.
 """
 
 from __future__ import annotations
@@ -153,6 +153,7 @@ def fit(
     make: Callable[[float], tuple[Tree, Mapping[View, float]]],
     fmts: Sequence[str],
     readable: bool = False,
+    each: bool = False,
 ) -> tuple[Tree, formats.Sized]:
     """The tree ``make(h)`` builds, its tables and texts written ``h`` high, and its format: the
     smallest of ``fmts`` (in landscape) on which it fits with the scales it wants
@@ -167,7 +168,11 @@ def fit(
     :class:`Choice` (it finds better splits than its arrangements one by one). ``readable``:
     the larger text wherever the views keep their wanted scales with it, whatever it costs
     them beyond (a kinematic sheet's tables and order read at 3.5 mm where the crank and pa
-    keep their rules' lengths: the blank field is the text's to take)."""
+    keep their rules' lengths: the blank field is the text's to take). ``each``: where the joint
+    search on the largest format misses the wanted scales, a :class:`Choice`'s arrangements also
+    one by one, the best kept (the joint search starts them all from the same splits, and a
+    tall mechanism's arrangement beside its diagrams, that alone keeps the crank's rule, lost
+    to one at half its scale)."""
     order = sorted(fmts, key=lambda f: FORMATS[f][0] * FORMATS[f][1])
     for fmt in order[:-1]:
         for h in dict.fromkeys((text_height((fmt,)), SMALL_TEXT_H)):
@@ -186,7 +191,17 @@ def fit(
     for h in dict.fromkeys((text_height(order[-1:]), SMALL_TEXT_H)):
         tree, wants = make(h)
         fmt, land = next(formats.candidates(order[-1:]))
-        tried.append((tree, formats.Sized(fmt, land, arrange(tree, Field.of_format(fmt, land)))))
+        field = Field.of_format(fmt, land)
+        lay = arrange(tree, field)
+        if each and wants and not formats.meets(lay, wants):
+            for alt in _alternatives(tree)[1:] if isinstance(tree, Choice) else ():
+                try:
+                    alone = arrange(alt, field)
+                except ParameterError:
+                    continue
+                if alone.score > lay.score:
+                    tree, lay = alt, alone
+        tried.append((tree, formats.Sized(fmt, land, lay)))
         kept.append(bool(wants) and formats.meets(tried[-1][1].layout, wants))
     # the larger text where it fits and costs the views at most TEXT_COST of the search's score
     # (``readable``: or keeps them at their wanted scales)
@@ -383,9 +398,9 @@ def _arranged(s: Solved) -> tuple[Layout, tuple[Arranged, ...]]:
 
     def attempt() -> tuple[list[tuple[Tree, formats.Sized]], _Mechanism, bool]:
         made.clear()
-        first = fit(make(0), fmts, readable=True)
+        first = fit(make(0), fmts, readable=True, each=rules[0])
         trees_all, mech, second, _ = made_of(first[0])
-        fitted = [first] + [fit(make(i), fmts, True) for i in range(1, len(trees_all))]
+        fitted = [first] + [fit(make(i), fmts, True, rules[0]) for i in range(1, len(trees_all))]
         return fitted, mech, second
 
     fitted, mech, second = attempt()
@@ -397,10 +412,12 @@ def _arranged(s: Solved) -> tuple[Layout, tuple[Arranged, ...]]:
         fitted, mech, second = attempt()
     if not _rules_hold(s, fitted):
         # the search seeks the rules' scales (the crank CRANK_MM long, pa PA_MM): on one
-        # sheet, else with the crank on its detail view, else with the velocity plans on a
-        # sheet of their own; where none holds them, the arrangement without them stays
+        # sheet, else with the velocity plans on a sheet of their own (the mechanism keeps its
+        # rule on the larger room), else with the crank on its detail view (the last resort: a
+        # coarse mechanism on a smaller format); where none holds them, the arrangement without
+        # them stays
         rules = (True, True)
-        tries = dict.fromkeys(((detail, False), (True, False), (detail, True), (True, True)))
+        tries = dict.fromkeys(((detail, False), (detail, True), (True, False), (True, True)))
         for enlarge, sep in tries:
             if sep and len(s.drawn) > PLANS_ON_SHEET:
                 continue  # the plans are on their own sheet already
