@@ -62,9 +62,18 @@ def test_a_true_zero_of_the_reduced_inertia_is_explained() -> None:
 
 def test_the_flywheel_results_are_read_on_their_commas() -> None:
     sheet = _dynamics("crusher")
-    texts = [t.text for t in sheet.texts()]
+    items = list(sheet.texts())
+    texts = [t.text for t in items]
     i = texts.index("Маховик")
-    values = [t for t in texts[i + 1 : i + 40] if t and (t[0].isdigit() or t[0] == "\u2013")]
+    # the table's cells: the texts after its title, row by row, up to the first that is not
+    # on the next row (whatever is drawn after the table)
+    cells, y = [], items[i].at[1]
+    for t in items[i + 1 :]:
+        if not 0.0 <= t.at[1] - y <= 12.0:
+            break
+        cells.append(t.text)
+        y = t.at[1]
+    values = [t for t in cells if t and (t[0].isdigit() or t[0] == "\u2013")]
     assert len(values) >= 5, texts[i : i + 30]
     assert all("," in v for v in values), values
 
@@ -114,3 +123,37 @@ def test_the_diagrams_origin_is_numbered_position_0_where_the_file_lists_phi(
     want = f"{phi0:.1f}".replace(".", ",")
     assert any(want in n for n in notes), (want, notes)
     assert not any("= 40,0°" in n or "= 40°" in n for n in notes), notes
+
+
+def _drawn(stem: str) -> tuple[float, float, float]:
+    """The dynamics sheet's Wittenbauer diagram's drawn area, the ω diagram's box area and
+    the paper's area (mm²), as the layout placed them."""
+    from geomcad.linkage.analysis import analyse
+    from geomcad.sheet import linkage_forces as lf
+    from geomcad.sheet.formats import FORMATS
+    from geomcad.sheet.views import Diagram
+
+    s = documents.solve(str(EXAMPLES / f"{stem}.toml")).data
+    fw = analyse(s).flywheel
+    assert fw is not None
+    _, z = lf.fit(lambda h: (lf._sheet3(s, fw, h), {}), lf.sheet_formats(s.linkage))
+    witt = omega = 0.0
+    for pl in z.layout:
+        x0, y0, x1, y1 = pl.inner
+        if isinstance(pl.view, lf._Wittenbauer):
+            w, h = pl.view.used(x1 - x0, y1 - y0)
+            witt = w * h
+        elif isinstance(pl.view, Diagram) and pl.view.y.symbol.startswith("ω"):
+            omega = (x1 - x0) * (y1 - y0)
+    paper = FORMATS[z.fmt][0] * FORMATS[z.fmt][1]
+    return witt, omega, paper
+
+
+def test_wittenbauers_diagram_takes_the_field_the_omega_diagram_keeps_its_own() -> None:
+    """The energy–mass diagram, from which the flywheel is found, is the sheet's main
+    construction: the layout gives it a large share of the field (beside the tables, over ω(φ),
+    where that draws it larger), and ω(φ) stays a readable diagram, not a strip."""
+    for stem in ("crusher", "shaper", "sixbar-2013-6"):
+        witt, omega, paper = _drawn(stem)
+        assert witt >= 0.08 * paper, (stem, witt, paper)
+        assert omega >= 0.1 * paper, (stem, omega, paper)

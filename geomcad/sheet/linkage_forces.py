@@ -12,7 +12,9 @@
 - **sheet 3, the dynamics**: M_pr(φ), the works A(φ) (the exact integral and the graphical one
   through the numbered positions), ΔT(φ) and I_pr(φ) (left), Wittenbauer's energy–mass diagram
   with its two tangents and the segment ab they cut (top right), ω(φ) of the steady cycle with
-  the flywheel (bottom middle) and the tables (bottom right).
+  the flywheel and the tables: under the diagram, or the tables beside it down the right edge
+  with ω(φ) under both or under the diagram alone, as the layout's search finds the diagram
+  drawn larger (the flywheel is found on it: it weighs 1.5 views in the search).
 
 The sheets are trees of views (:mod:`geomcad.sheet.compose`): the layout chooses the splits
 and each view's scale (the largest of its series that fits its box), and every vector is drawn at
@@ -1418,9 +1420,13 @@ def _sheet3(s: Solved, fw: Flywheel, h: float) -> Tree:
     witt = _Wittenbauer(fw)
     omega = _omega(lk, fw)
     tables = Column(*_tables3(lk, fw, h))
+    # Wittenbauer's diagram over ω(φ) and the tables, or beside the tables (its height no
+    # longer the room the ω/table row leaves): the search takes the one that draws it larger
     return Choice(
         Row(column, Column(witt, Row(omega, tables))),
         Column(Row(column, witt), Row(omega, tables)),
+        Row(column, Column(witt, omega), tables),
+        Row(column, Column(Row(witt, tables), omega)),
     )
 
 
@@ -1464,12 +1470,13 @@ def _thin(y: npt.NDArray[np.float64]) -> npt.NDArray[np.float64]:
 
 class _Wittenbauer(View):
     """The energy–mass diagram ΔT(I_пр) with its two tangents at ψ_max, ψ_min and the segment
-    ab they cut on the ΔT axis; both axes fitted to the box."""
+    ab they cut on the ΔT axis; both axes fitted to the box. The sheet's main construction (the
+    flywheel is found on it): it weighs 1.5 views in the layout's search."""
 
     LEFT, BELOW, ABOVE, RIGHT = 22.0, 14.0, 10.0, 14.0
 
     def __init__(self, fw: Flywheel) -> None:
-        super().__init__(title=WORDS("witt"), title_height=5.0, margin=2.0)
+        super().__init__(title=WORDS("witt"), title_height=5.0, margin=2.0, weight=1.5)
         self.fw = fw
 
     def stretch(self) -> tuple[tuple[float, float], tuple[float, float]]:
