@@ -45,9 +45,9 @@ def _placed(text: str, monkeypatch: pytest.MonkeyPatch) -> list[tuple[Any, Any, 
     rec: list[tuple[Any, Any, Any, Any]] = []
     orig = lf._ByScale.placed
 
-    def placed(self: Any, at: Any, arrows: Any) -> Any:
-        fs = orig(self, at, arrows)
-        rec.append((self, at, list(arrows), fs))
+    def placed(self: Any, at: Any) -> Any:
+        fs = orig(self, at)
+        rec.append((self, at, self.arrows(), fs))
         return fs
 
     monkeypatch.setattr(lf._ByScale, "placed", placed)
@@ -59,7 +59,7 @@ def test_views_draw_their_forces_as_long_as_their_size_allows(
     monkeypatch: pytest.MonkeyPatch,
 ) -> None:
     from geomcad.sheet.drawing import SHORT_MM
-    from geomcad.sheet.linkage_forces import _field, _within, arrow_room
+    from geomcad.sheet.linkage_forces import _within, arrow_room
 
     finer = 0
     for path in FILES:
@@ -77,13 +77,20 @@ def test_views_draw_their_forces_as_long_as_their_size_allows(
             short = [F for F in view._forces if fs.tier(F) not in (0, None)]
             assert len(short) <= len([F for F in view._forces if least.tier(F) not in (0, None)])
             assert all(F / fs.k < SHORT_MM for F in short)
+            # the caption states the μ_F drawn: one function of the view's scale
+            assert view.scales_at(at.scale) is fs
             if fs.k < least.k:
                 finer += 1
-                v, box = at.viewport, _field(at)
-                for p, F in arrows:  # each arrow fits at its point in one sense
-                    if F.norm > 0.0 and fs.tier(F.norm) == 0:
-                        run = F * (v.scale.k / fs.k)
-                        assert _within(v.p(p + run), box) or _within(v.p(p - run), box)
+                # fewer forces in insets than at the least room, and each arrow fits at its
+                # point within the drawing and its margin
+                assert len(short) < len([F for F in view._forces if least.tier(F) not in (0, None)])
+                m = view.margin * at.scale.k
+                box = (x0 - m, y0 - m, x1 + m, y1)  # the caption over the drawing
+                for p, F in arrows:
+                    if fs.tier(F.norm) == 0:
+                        u = F * (at.scale.k / fs.k)
+                        ends = [(p.x + u.x, p.y + u.y), (p.x - u.x, p.y - u.y)]
+                        assert any(_within(e, box, 0.1 * at.scale.k) for e in ends), (path.stem, F)
     assert finer, "some view drawn large takes a finer μ_F than its least room's"
 
 

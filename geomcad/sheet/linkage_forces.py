@@ -183,32 +183,57 @@ class _ByScale:
     _forces: list[float]
     _least: float
 
+    def arrows(self) -> list[tuple[Vec, Vec]]:
+        """The forces the view draws as arrows (point, force; model units)."""
+        raise NotImplementedError
+
     def scales_at(self, scale: Scale | None) -> ForceScales:
-        room = self._least
+        """The view's force scales drawn at ``scale``: of the rooms up to its
+        :func:`arrow_room`, the coarsest μ_F that draws fewest forces in insets, where each of
+        its arrows, drawn at its point (leaving it or arriving at it), keeps within the
+        drawing's extent and margin (none over its top: the caption); else those of its least
+        room (``None``: those)."""
+        memo: dict[float | None, ForceScales] = self.__dict__.setdefault("_by_scale", {})
+        key = None if scale is None else scale.k
+        if key in memo:
+            return memo[key]
+        least = memo.get(None) or view_scales(self._forces, self._least)
+        memo[None] = fs = least
         if scale is not None:
             x0, y0, x1, y1 = self._ext
-            room = arrow_room(room, self.margin, (scale.mm(x1 - x0), scale.mm(y1 - y0)))
-        memo: dict[float, ForceScales] = self.__dict__.setdefault("_by_room", {})
-        if room not in memo:  # view_scales of the view's forces
-            memo[room] = view_scales(self._forces, room)
-        return memo[room]
-
-    def placed(self, at: Placed, arrows: Sequence[tuple[Vec, Vec]]) -> ForceScales:
-        """The view's ``fs`` where it is drawn: those of its drawn size where each of its
-        ``arrows`` (point, force; model units) drawn there at its point, leaving it or arriving
-        at it, keeps inside the view's box, else those of its least room."""
-        fs = self.scales_at(at.scale)
-        v, box = at.viewport, _field(at)
-        if v is not None and fs != self.scales_at(None):
-            for p, F in arrows:
-                if F.norm == 0.0 or fs.tier(F.norm) != 0:
-                    continue
-                run = F * (v.scale.k / fs.k)
-                if not (_within(v.p(p + run), box) or _within(v.p(p - run), box)):
-                    fs = self.scales_at(None)
-                    break
-        self.fs = fs
+            room = arrow_room(self._least, self.margin, (scale.mm(x1 - x0), scale.mm(y1 - y0)))
+            m = self.margin * scale.k
+            box = (x0 - m, y0 - m, x1 + m, y1)  # the caption over the drawing
+            r = self._least
+            while r < room:
+                r = min(room, r * 1.25)
+                at = view_scales(self._forces, r)
+                if self._shorts(at) < self._shorts(fs) and self._fits(at, scale, box):
+                    fs = at
+        memo[key] = fs
         return fs
+
+    def _fits(self, fs: ForceScales, scale: Scale, box: tuple[float, float, float, float]) -> bool:
+        """Whether each arrow of the view at ``fs`` drawn at ``scale`` at its point, leaving
+        it or arriving at it, keeps within ``box`` (model units)."""
+        for p, F in self.arrows():
+            if fs.tier(F.norm) == 0:
+                u = F * (scale.k / fs.k)
+                if not (
+                    _within((p.x + u.x, p.y + u.y), box, 0.1 * scale.k)
+                    or _within((p.x - u.x, p.y - u.y), box, 0.1 * scale.k)
+                ):
+                    return False
+        return True
+
+    def placed(self, at: Placed) -> ForceScales:
+        """The view's ``fs`` where it is drawn (:meth:`scales_at` its scale)."""
+        self.fs = self.scales_at(at.scale)
+        return self.fs
+
+    def _shorts(self, fs: ForceScales) -> int:
+        """How many of the view's forces ``fs`` draws in insets."""
+        return sum(1 for F in self._forces if fs.tier(F) not in (0, None))
 
 
 #: The least length (mm) of a force plan's longest vector (a course project draws its plans
@@ -910,7 +935,7 @@ class _Forces(_ByScale, View):
     def draw(self, d: Drawing, at: Placed) -> None:
         """The drawing of links (:meth:`links`) at the force scales of its drawn size, its
         labels clear of its lines by :data:`LABEL_KEEP_MM` where they can."""
-        self.placed(at, self.arrows())
+        self.placed(at)
         keep, d.keep = d.keep, LABEL_KEEP_MM
         try:
             self.links(d, at)
@@ -918,10 +943,6 @@ class _Forces(_ByScale, View):
             d.keep = keep
 
     def links(self, d: Drawing, at: Placed) -> None:
-        raise NotImplementedError
-
-    def arrows(self) -> list[tuple[Vec, Vec]]:
-        """The forces the view draws as arrows (point, force; model units)."""
         raise NotImplementedError
 
 
@@ -1154,9 +1175,9 @@ def _field(at: Placed) -> tuple[float, float, float, float]:
     return at.box[0], at.inner[1], at.box[2], at.box[3]
 
 
-def _within(p: tuple[float, float], box: tuple[float, float, float, float]) -> bool:
-    """Whether sheet point ``p`` is in ``box`` (to 0.1 mm)."""
-    return box[0] - 0.1 <= p[0] <= box[2] + 0.1 and box[1] - 0.1 <= p[1] <= box[3] + 0.1
+def _within(p: tuple[float, float], box: tuple[float, float, float, float], e: float) -> bool:
+    """Whether point ``p`` is in ``box`` to ``e`` (0.1 mm on the paper)."""
+    return box[0] - e <= p[0] <= box[2] + e and box[1] - e <= p[1] <= box[3] + e
 
 
 def external(gf: GroupForces) -> list[Reaction]:
@@ -1343,6 +1364,49 @@ class _Lever(_ByScale, View):
     def extent(self) -> tuple[float, float, float, float]:
         return self._ext
 
+    def arrows(self) -> list[tuple[Vec, Vec]]:
+        lev = self.f.lever
+        return [(it.image, it.force) for it in lev.items] + [(lev.images[self.lk.joint], lev.F_bal)]
+
+    def _sides(
+        self, k: float, images: Mapping[str, Vec], fs: ForceScales | None = None
+    ) -> tuple[Insets, list[tuple[Vec, Vec, str, str]], list[float], list[tuple[bool, Vec]]]:
+        """The lever's insets (the forces short at ``fs``, the view's by default), the loads
+        drawn in it, their lengths (mm) and how each is drawn (:func:`load_sides`) at scale
+        ``k`` (model units per mm)."""
+        fs = fs or self.fs
+        lev = self.f.lever
+        loads = [(it.image, it.force, load_name(it.name), "vector") for it in lev.items]
+        loads.append((lev.images[self.lk.joint], lev.F_bal, WORDS("P_bal"), "result"))
+        # the forces short at the view's μ_F go to its insets, the others are drawn here
+        ins = Insets(fs, images)
+        here = []
+        for q, F, name, role in loads:
+            t = fs.tier(F.norm)
+            if t is not None and t > 0:
+                ins.add(q, F, t, name, role)
+            elif t is not None:
+                here.append((q, F, name, role))
+        lengths = [F.norm / fs.k for _, F, _, _ in here]
+        # an arrow leaves its point unless it would run out of the view (past its margin,
+        # less a label's room)
+        sides = load_sides(here, k, lengths, self._ext, self.margin - LABEL_ROOM_MM)
+        return ins, here, lengths, sides
+
+    def _fits(self, fs: ForceScales, scale: Scale, box: tuple[float, float, float, float]) -> bool:
+        """As on a drawing of links, each arrow as :func:`load_sides` draws it (a force on from
+        another's tip: the two together)."""
+        _, here, lengths, sides = self._sides(scale.k, {}, fs)
+        for (_, F, _, _), (arrive, p), n in zip(here, sides, lengths, strict=True):
+            if F.norm > 0.0:
+                e = p + F.unit() * (scale.k * n * (-1.0 if arrive else 1.0))
+                if not (
+                    _within((p.x, p.y), box, 0.1 * scale.k)
+                    and _within((e.x, e.y), box, 0.1 * scale.k)
+                ):
+                    return False
+        return True
+
     def title_room(self) -> float:
         return super().title_room() + further_room(self.scales_at(None), self.omitted)
 
@@ -1352,10 +1416,7 @@ class _Lever(_ByScale, View):
 
     def draw(self, d: Drawing, at: Placed) -> None:
         lev = self.f.lever
-        self.placed(
-            at,
-            [(it.image, it.force) for it in lev.items] + [(lev.images[self.lk.joint], lev.F_bal)],
-        )
+        self.placed(at)
         v = at.viewport
         assert v is not None
         start = len(d.sheet.items)
@@ -1385,33 +1446,7 @@ class _Lever(_ByScale, View):
         for q, names in groups:
             v.dot(q)
             v.label(q, ", ".join(names), 2.5, clear=0.8)
-        loads = [(it.image, it.force, load_name(it.name), "vector") for it in lev.items]
-        loads.append((lev.images[lk.joint], lev.F_bal, WORDS("P_bal"), "result"))
-        # the μ_F of the view's drawn size where its arrows keep inside its box, else that of
-        # its least room (a force on from the tip of another one is drawn longer)
-        box = _field(at)
-        for fs in dict.fromkeys((self.fs, self.scales_at(None))):
-            self.fs = fs
-            # the forces short at the view's μ_F go to its insets, the others are drawn here
-            ins = Insets(fs, images)
-            here = []
-            for q, F, name, role in loads:
-                t = fs.tier(F.norm)
-                if t is not None and t > 0:
-                    ins.add(q, F, t, name, role)
-                elif t is not None:
-                    here.append((q, F, name, role))
-            lengths = [F.norm / fs.k for _, F, _, _ in here]
-            # an arrow leaves its point unless it would run out of the view (past its margin,
-            # less a label's room)
-            sides = load_sides(here, kv.k, lengths, self._ext, self.margin - LABEL_ROOM_MM)
-            ends = [
-                p + F.unit() * (kv.k * n * (-1.0 if arrive else 1.0))
-                for (_, F, _, _), (arrive, p), n in zip(here, sides, lengths, strict=True)
-                if F.norm > 0.0
-            ]
-            if all(_within(v.p(p), box) for p in ends):
-                break
+        ins, here, _, sides = self._sides(kv.k, images)
         for (_, F, name, role), (arrive, at_) in zip(here, sides, strict=True):
             _force(v, at_, F, self.fs, name, arrive, role)
         draw_insets(d, at, self, ins, start, self.omitted)
