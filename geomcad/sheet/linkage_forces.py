@@ -160,6 +160,86 @@ LABEL_KEEP_MM = 1.0
 LABEL_ROOM_MM = 6.0
 #: The longest load arrow on Zhukovsky's lever (mm).
 LEVER_LOAD_MM = 40.0
+#: The share of a view's larger drawn side that its longest load arrow may take where that is
+#: more than its least room (LOAD_MM, LEVER_LOAD_MM): a view drawn large draws its forces long,
+#: so that fewer of them are short there and drawn again in insets (:func:`arrow_room`).
+ARROW_SHARE = 1.0 / 3.0
+
+
+def arrow_room(least: float, margin: float, size: tuple[float, float]) -> float:
+    """The room (mm) of the longest load arrow of a view drawn ``size`` (mm, without its
+    margin): :data:`ARROW_SHARE` of its larger side, at least ``least``, at most ``margin`` and
+    half its smaller side (an arrow at a point of the drawing, leaving it or arriving at it,
+    then keeps inside the view's box)."""
+    w, h = size
+    return max(least, min(ARROW_SHARE * max(w, h), margin + 0.5 * min(w, h)))
+
+
+class _ByScale:
+    """A view's force scales as its drawn size makes them (:func:`arrow_room`): ``fs`` those of
+    its least room until it is drawn (:meth:`scales_at` ``None``: the layout reserves its
+    caption's line of insets from them; a larger room draws no more forces short),
+    :meth:`scales_at` those at a length scale, which :meth:`placed` makes the view's ``fs``."""
+
+    fs: ForceScales
+    margin: float
+    _ext: tuple[float, float, float, float]
+    _forces: list[float]
+    _least: float
+
+    def arrows(self) -> list[tuple[Vec, Vec]]:
+        """The forces the view draws as arrows (point, force; model units)."""
+        raise NotImplementedError
+
+    def scales_at(self, scale: Scale | None) -> ForceScales:
+        """The view's force scales drawn at ``scale``: of the rooms up to its
+        :func:`arrow_room`, the coarsest μ_F that draws fewest forces in insets, where each of
+        its arrows, drawn at its point (leaving it or arriving at it), keeps within the
+        drawing's extent and margin (none over its top: the caption); else those of its least
+        room (``None``: those)."""
+        memo: dict[float | None, ForceScales] = self.__dict__.setdefault("_by_scale", {})
+        key = None if scale is None else scale.k
+        if key in memo:
+            return memo[key]
+        least = memo.get(None) or view_scales(self._forces, self._least)
+        memo[None] = fs = least
+        if scale is not None:
+            x0, y0, x1, y1 = self._ext
+            room = arrow_room(self._least, self.margin, (scale.mm(x1 - x0), scale.mm(y1 - y0)))
+            m = self.margin * scale.k
+            box = (x0 - m, y0 - m, x1 + m, y1)  # the caption over the drawing
+            r = self._least
+            while r < room:
+                r = min(room, r * 1.25)
+                at = view_scales(self._forces, r)
+                if self._shorts(at) < self._shorts(fs) and self._fits(at, scale, box):
+                    fs = at
+        memo[key] = fs
+        return fs
+
+    def _fits(self, fs: ForceScales, scale: Scale, box: tuple[float, float, float, float]) -> bool:
+        """Whether each arrow of the view at ``fs`` drawn at ``scale`` at its point, leaving
+        it or arriving at it, keeps within ``box`` (model units)."""
+        for p, F in self.arrows():
+            if fs.tier(F.norm) == 0:
+                u = F * (scale.k / fs.k)
+                if not (
+                    _within((p.x + u.x, p.y + u.y), box, 0.1 * scale.k)
+                    or _within((p.x - u.x, p.y - u.y), box, 0.1 * scale.k)
+                ):
+                    return False
+        return True
+
+    def placed(self, at: Placed) -> ForceScales:
+        """The view's ``fs`` where it is drawn (:meth:`scales_at` its scale)."""
+        self.fs = self.scales_at(at.scale)
+        return self.fs
+
+    def _shorts(self, fs: ForceScales) -> int:
+        """How many of the view's forces ``fs`` draws in insets."""
+        return sum(1 for F in self._forces if fs.tier(F) not in (0, None))
+
+
 #: The least length (mm) of a force plan's longest vector (a course project draws its plans
 #: 100–200 mm long): the sheet takes a larger format rather than draw them smaller.
 PLAN_MM = 100.0
@@ -829,7 +909,7 @@ def _negligible_note(names: Sequence[str]) -> str:
     return WORDS(key, names=", ".join(names), share=fmt_number(NEGLIGIBLE * 100.0))
 
 
-class _Forces(View):
+class _Forces(_ByScale, View):
     """A mechanism view with loads drawn at their own μ_F (``fs``: the view's μ_F, stated after
     the length scale in the caption, and those of its short forces, on a line under it) over
     the model box ``_ext``."""
@@ -841,7 +921,7 @@ class _Forces(View):
     letters: Iterator[str] | None = None
 
     def title_room(self) -> float:
-        return super().title_room() + further_room(self.fs, self.omitted)
+        return super().title_room() + further_room(self.scales_at(None), self.omitted)
 
     @property
     def kF(self) -> Scale:
@@ -857,11 +937,12 @@ class _Forces(View):
         return self._ext
 
     def caption(self, scale: Scale | None) -> str:
-        return f"{super().caption(scale)};  {self.fs.caption()}"
+        return f"{super().caption(scale)};  {self.scales_at(scale).caption()}"
 
     def draw(self, d: Drawing, at: Placed) -> None:
-        """The drawing of links (:meth:`links`), its labels clear of its lines by
-        :data:`LABEL_KEEP_MM` where they can."""
+        """The drawing of links (:meth:`links`) at the force scales of its drawn size, its
+        labels clear of its lines by :data:`LABEL_KEEP_MM` where they can."""
+        self.placed(at)
         keep, d.keep = d.keep, LABEL_KEEP_MM
         try:
             self.links(d, at)
@@ -883,13 +964,19 @@ class _Loaded(_Forces):
         self._ext = _bbox([*P.pos.values(), *bodies], lk.length)
         named = [(ld.name, ld.force.norm) for ld in self.loads
                  if ld.force is not None and ld.at is not None]  # fmt: skip
-        self.fs = view_scales([F for _, F in named], LOAD_MM)
+        self._forces, self._least = [F for _, F in named], LOAD_MM
+        self.fs = view_scales(self._forces, LOAD_MM)
         self.omitted = omitted_values(self.fs, named)
         #: the solution and the letter of the crank's detail, where the crank may come out
         #: short (:meth:`crank_detail`); the detail's μ_l where one is drawn
         self.solved: Solved | None = None
         self.detail: str | None = None
         self.detail_scale: Scale | None = None
+
+    def arrows(self) -> list[tuple[Vec, Vec]]:
+        return [
+            (ld.at, ld.force) for ld in self.loads if ld.force is not None and ld.at is not None
+        ]
 
     def links(self, d: Drawing, at: Placed) -> None:
         v = at.viewport
@@ -987,8 +1074,15 @@ class _FreeBody(_Forces):
         named = [(ld.name, ld.force.norm) for i in links for ld in gf.loads[i]
                  if ld.force is not None]  # fmt: skip
         named += [(r.name, r.force.norm) for r in external(gf)]
-        self.fs = view_scales([F for _, F in named], LOAD_MM)
+        self._forces, self._least = [F for _, F in named], LOAD_MM
+        self.fs = view_scales(self._forces, LOAD_MM)
         self.omitted = omitted_values(self.fs, named)
+
+    def arrows(self) -> list[tuple[Vec, Vec]]:
+        gf = self.gf
+        out = [(ld.at, ld.force) for i in gf.links for ld in gf.loads[i]
+               if ld.force is not None and ld.at is not None]  # fmt: skip
+        return out + [(r.at, r.force) for r in external(self.gf)]
 
     def links(self, d: Drawing, at: Placed) -> None:
         v = at.viewport
@@ -1086,6 +1180,11 @@ def free_spot(
 def _field(at: Placed) -> tuple[float, float, float, float]:
     """Where a view's force arrows go: its box below its caption."""
     return at.box[0], at.inner[1], at.box[2], at.box[3]
+
+
+def _within(p: tuple[float, float], box: tuple[float, float, float, float], e: float) -> bool:
+    """Whether point ``p`` is in ``box`` to ``e`` (0.1 mm on the paper)."""
+    return box[0] - e <= p[0] <= box[2] + e and box[1] - e <= p[1] <= box[3] + e
 
 
 def external(gf: GroupForces) -> list[Reaction]:
@@ -1248,7 +1347,7 @@ def load_sides(
     return [(side[i], starts[i]) for i in range(len(loads))]
 
 
-class _Lever(View):
+class _Lever(_ByScale, View):
     """Zhukovsky's lever: the velocity plan turned 90° with the loads at their points'
     images and the balancing force at the crank's joint."""
 
@@ -1257,6 +1356,7 @@ class _Lever(View):
     def __init__(self, lk: Linkage, P: Position, f: Forces) -> None:
         lev = f.lever
         forces = [it.force.norm for it in lev.items] + [lev.F_bal.norm]
+        self._forces, self._least = forces, LEVER_LOAD_MM
         self.fs = view_scales(forces, LEVER_LOAD_MM)
         self.short = False
         super().__init__(title=WORDS("lever"), title_height=5.0, quantity="v", series="nice",
@@ -1271,14 +1371,59 @@ class _Lever(View):
     def extent(self) -> tuple[float, float, float, float]:
         return self._ext
 
+    def arrows(self) -> list[tuple[Vec, Vec]]:
+        lev = self.f.lever
+        return [(it.image, it.force) for it in lev.items] + [(lev.images[self.lk.joint], lev.F_bal)]
+
+    def _sides(
+        self, k: float, images: Mapping[str, Vec], fs: ForceScales | None = None
+    ) -> tuple[Insets, list[tuple[Vec, Vec, str, str]], list[float], list[tuple[bool, Vec]]]:
+        """The lever's insets (the forces short at ``fs``, the view's by default), the loads
+        drawn in it, their lengths (mm) and how each is drawn (:func:`load_sides`) at scale
+        ``k`` (model units per mm)."""
+        fs = fs or self.fs
+        lev = self.f.lever
+        loads = [(it.image, it.force, load_name(it.name), "vector") for it in lev.items]
+        loads.append((lev.images[self.lk.joint], lev.F_bal, WORDS("P_bal"), "result"))
+        # the forces short at the view's μ_F go to its insets, the others are drawn here
+        ins = Insets(fs, images)
+        here = []
+        for q, F, name, role in loads:
+            t = fs.tier(F.norm)
+            if t is not None and t > 0:
+                ins.add(q, F, t, name, role)
+            elif t is not None:
+                here.append((q, F, name, role))
+        lengths = [F.norm / fs.k for _, F, _, _ in here]
+        # an arrow leaves its point unless it would run out of the view (past its margin,
+        # less a label's room)
+        sides = load_sides(here, k, lengths, self._ext, self.margin - LABEL_ROOM_MM)
+        return ins, here, lengths, sides
+
+    def _fits(self, fs: ForceScales, scale: Scale, box: tuple[float, float, float, float]) -> bool:
+        """As on a drawing of links, each arrow as :func:`load_sides` draws it (a force on from
+        another's tip: the two together)."""
+        _, here, lengths, sides = self._sides(scale.k, {}, fs)
+        for (_, F, _, _), (arrive, p), n in zip(here, sides, lengths, strict=True):
+            if F.norm > 0.0:
+                e = p + F.unit() * (scale.k * n * (-1.0 if arrive else 1.0))
+                if not (
+                    _within((p.x, p.y), box, 0.1 * scale.k)
+                    and _within((e.x, e.y), box, 0.1 * scale.k)
+                ):
+                    return False
+        return True
+
     def title_room(self) -> float:
-        return super().title_room() + further_room(self.fs, self.omitted)
+        return super().title_room() + further_room(self.scales_at(None), self.omitted)
 
     def caption(self, scale: Scale | None) -> str:
         m = WORDS("m_bal", value=_load(self.f.lever.M_bal))
-        return f"{super().caption(scale)};  {self.fs.caption()};  {m}"
+        return f"{super().caption(scale)};  {self.scales_at(scale).caption()};  {m}"
 
     def draw(self, d: Drawing, at: Placed) -> None:
+        lev = self.f.lever
+        self.placed(at)
         v = at.viewport
         assert v is not None
         start = len(d.sheet.items)
@@ -1308,21 +1453,7 @@ class _Lever(View):
         for q, names in groups:
             v.dot(q)
             v.label(q, ", ".join(names), 2.5, clear=0.8)
-        loads = [(it.image, it.force, load_name(it.name), "vector") for it in lev.items]
-        loads.append((lev.images[lk.joint], lev.F_bal, WORDS("P_bal"), "result"))
-        # the forces short at the view's μ_F go to its insets, the others are drawn here
-        ins = Insets(self.fs, images)
-        here = []
-        for q, F, name, role in loads:
-            t = self.fs.tier(F.norm)
-            if t is not None and t > 0:
-                ins.add(q, F, t, name, role)
-            elif t is not None:
-                here.append((q, F, name, role))
-        lengths = [F.norm / self.fs.k for _, F, _, _ in here]
-        # an arrow leaves its point unless it would run out of the view (past its margin,
-        # less a label's room)
-        sides = load_sides(here, kv.k, lengths, self._ext, self.margin - LABEL_ROOM_MM)
+        ins, here, _, sides = self._sides(kv.k, images)
         for (_, F, name, role), (arrive, at_) in zip(here, sides, strict=True):
             _force(v, at_, F, self.fs, name, arrive, role)
         draw_insets(d, at, self, ins, start, self.omitted)
