@@ -80,7 +80,9 @@ def test_linkage_sheet_lists_both_plans_of_its_detailed_position() -> None:
         (table,) = [v for t in lay.trees for v in t.views() if isinstance(v, Table) and
                     v.rows[0][0] == "№"]  # fmt: skip
         row = table.rows[1 + next(i for i, Q in enumerate(s.drawn) if Q is P)]
-        cell = row[[h.split(", ")[0] for h in table.rows[0]].index("ω_{3}")]
+        # ω3's column (headed "ω_{2} = ω_{3}" where the block turns with link 3)
+        col = [i for i, h in enumerate(table.rows[0]) if "ω_{3}" in h.split(", ")[0].split(" = ")]
+        cell = row[col[0]]
         # the text's quotient is a magnitude: |ω_3| where the table's ω_3 is negative
         w = "|ω_{3}|" if cell.startswith("\u2013") else "ω_{3}"
         assert line.startswith(f"{k + 1}. {w} = V_{{A3C}}/l_{{CA3}}")

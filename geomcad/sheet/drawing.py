@@ -534,11 +534,14 @@ class Viewport:
         clear: float = JOINT_R,
         id: str = "",
         space: float = 0.0,
+        others: Sequence[PointLike] = (),
     ) -> None:
-        """A label next to a model point; ``prefer`` is a model direction to try first;
-        ``space``: mm kept further than usual from other texts."""
+        """A label next to a model point (or one of ``others``, where it stands clearer);
+        ``prefer`` is a model direction to try first; ``space``: mm kept further than usual
+        from other texts."""
         pref = None if prefer is None else (prefer[0], -prefer[1])
-        self.d.label(self.p(q), markup, height, pref, clear, id=id, space=space)
+        at = tuple(self.p(o) for o in others)
+        self.d.label(self.p(q), markup, height, pref, clear, id=id, space=space, others=at)
 
 
 def _head(sheet: Sheet, tip: XY, u: tuple[float, float], role: str) -> None:

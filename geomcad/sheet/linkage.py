@@ -1817,7 +1817,14 @@ def _tables(s: Solved, accel: Sequence[Position], h: float = TEXT_H) -> list[Tab
                          [P.vel[lk.output].norm for P in s.drawn], scale_v)]  # fmt: skip
         first_a = [_zeroed(along_a[1] if along_a else
                            [P.acc[lk.output].norm for P in accel], scale_a)]  # fmt: skip
-    head = ["№", "φ_1, °", out_v, *[f"ω_{{{i}}}, {per_s}" for i in links]]
+    # links that turn together (a block and the link it slides on) share one column
+    with_ = together(lk)
+    if r:
+        out_v = f"{_joined('ω', r, with_)}, {per_s}"
+        out_a = f"{_joined('ε', r, with_)}, {per_s2}"
+    links = [i for i in links if r not in with_.get(i, ())
+             and min(j for j in with_.get(i, (i,)) if j in links) == i]  # fmt: skip
+    head = ["№", "φ_1, °", out_v, *[f"{_joined('ω', i, with_)}, {per_s}" for i in links]]
     rows = [head, *_columns(
         [float(i) for i in range(len(s.drawn))],
         [math.degrees(P.phi) % 360 for P in s.drawn],
@@ -1826,7 +1833,7 @@ def _tables(s: Solved, accel: Sequence[Position], h: float = TEXT_H) -> list[Tab
         angle=1,
         places=_places(s),
     )]  # fmt: skip
-    head2 = ["φ_1, °", out_a, *[f"ε_{{{i}}}, {per_s2}" for i in links]]
+    head2 = ["φ_1, °", out_a, *[f"{_joined('ε', i, with_)}, {per_s2}" for i in links]]
     rows2 = [head2, *_columns(
         [math.degrees(P.phi) % 360 for P in accel],
         *first_a,
@@ -1902,8 +1909,39 @@ def _cells(
         if row is None:
             continue
         head, values = table.rows[0], table.rows[1 + row]
-        cells.update({h.split(", ")[0]: v for h, v in zip(head, values, strict=True)})
+        for h, v in zip(head, values, strict=True):
+            cells.update(dict.fromkeys(h.split(", ")[0].split(" = "), v))
     return cells
+
+
+def together(lk: Linkage) -> dict[int, tuple[int, ...]]:
+    """The moving links that turn together, by each of them: a block and the link it slides on
+    (an RPR's two links, an RRP's slider and the moving link its guide is on) have one ω and one
+    ε by the group's kinematics; each such set sorted, the same tuple for each of its links."""
+    parent = {i: i for i in lk.moving_links}
+
+    def root(i: int) -> int:
+        while parent[i] != i:
+            i = parent[i]
+        return i
+
+    for g in lk.groups:
+        pair: tuple[int, int] | None = None
+        if g.kind == "RPR":
+            pair = g.links
+        elif g.kind == "RRP" and g.guide is not None and not g.guide.fixed:
+            pair = (g.links[1], g.guide.link)
+        if pair is not None and pair[0] in parent and pair[1] in parent:
+            parent[root(pair[0])] = root(pair[1])
+    sets: dict[int, list[int]] = {}
+    for i in parent:
+        sets.setdefault(root(i), []).append(i)
+    return {i: tuple(sorted(m)) for m in sets.values() if len(m) > 1 for i in m}
+
+
+def _joined(symbol: str, link: int, with_: Mapping[int, Sequence[int]]) -> str:
+    """A column's symbol for ``link``: ``ω_{2} = ω_{3}`` where links turn together."""
+    return " = ".join(f"{symbol}_{{{i}}}" for i in with_.get(link, (link,)))
 
 
 def tabled_cells(s: Solved, P: Position) -> dict[str, str]:

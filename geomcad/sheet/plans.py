@@ -10,7 +10,9 @@ coincident points share one label, ``p, o_1, o_2``), and a title with the scale 
 from __future__ import annotations
 
 import re
+from collections.abc import Mapping
 
+from geomcad.geom import Vec
 from geomcad.kinematics.plan import Plan
 from geomcad.sheet.drawing import Drawing, Viewport
 from geomcad.sheet.lang import Lang, Words, current
@@ -18,6 +20,9 @@ from geomcad.sheet.scale import PLAN_NICE, Scale, ScaleStyle, nice_factor
 
 #: Points closer than this on the paper (mm) share one label.
 SAME_POINT_MM = 0.8
+#: Distinct points closer than this on the paper (mm, in a chain) are lettered as one list
+#: (``a, s_2``) beside whichever of them it stands clearest at: their letters would crowd.
+NEAR_POINT_MM = 3.0
 #: Construction lines run this far past the points they join (mm).
 LINE_OVER_MM = 8.0
 
@@ -83,18 +88,35 @@ def plan_lines(v: Viewport, plan: Plan, min_mm: float = 0.5, over_mm: float = LI
         if scale.mm((b - a).norm) >= min_mm:
             v.arrow(a, b, "vector" if vec.known else "result")
     images(v, plan, min_mm)
-    groups: list[list[str]] = []
-    for name, p in plan.points.items():
-        for g in groups:
-            if scale.mm((plan.points[g[0]] - p).norm) < SAME_POINT_MM:
-                g.append(name)
-                break
-        else:
-            groups.append([name])
-    for g in groups:
-        q = plan.points[g[0]]
-        v.dot(q)
-        v.label(q, ", ".join(markup_of(n) for n in g), 3.5, clear=1.0)
+    for g in _near(plan.points, scale):
+        places: list[Vec] = []
+        for n in g:
+            q = plan.points[n]
+            if all(scale.mm((q - o).norm) >= SAME_POINT_MM for o in places):
+                places.append(q)
+                v.dot(q)
+        v.label(places[0], ", ".join(markup_of(n) for n in g), 3.5, clear=1.0, others=places[1:])
+
+
+def _near(points: Mapping[str, Vec], scale: Scale) -> list[list[str]]:
+    """A plan's points in the sets lettered as one list: chains of points each closer than
+    :data:`NEAR_POINT_MM` on the paper to the next, in the plan's order."""
+    names = list(points)
+    root = list(range(len(names)))
+
+    def find(i: int) -> int:
+        while root[i] != i:
+            i = root[i]
+        return i
+
+    for i, a in enumerate(names):
+        for j in range(i):
+            if scale.mm((points[a] - points[names[j]]).norm) < NEAR_POINT_MM:
+                root[find(i)] = find(j)
+    groups: dict[int, list[str]] = {}
+    for i, a in enumerate(names):
+        groups.setdefault(find(i), []).append(a)
+    return list(groups.values())
 
 
 def images(v: Viewport, plan: Plan, min_mm: float = 0.5) -> None:
