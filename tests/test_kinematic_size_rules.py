@@ -243,3 +243,23 @@ def test_the_mechanism_keeps_its_crank_rule_without_a_detail_where_a1_allows_it(
     assert lay.k_l.mm(lk.length) >= CRANK_MM - 1e-9
     assert lay.sized[0].fmt == "A1"
     assert all(z.layout.fits for z in lay.sized)
+
+
+def test_where_no_arrangement_keeps_both_rules_the_nearest_is_drawn() -> None:
+    """Review 6: a tangent mechanism (an unseen file, tests/linkages_layout) kept neither rule
+    in any arrangement tried (pa 39 mm at best, μ_V 0.025; 0.02 fits no format), and the sheet
+    fell back to the unruled arrangement: the mechanism at 1:4 (crank 16 mm), pa 19.5 mm. The
+    arrangement nearest to the rules is drawn instead: the crank at its rule, pa within one
+    step of the μ series of its rule."""
+    path = ROOT / "linkages_layout" / "tangent_rocking_slider.toml"
+    s = solve(parse(tomllib.loads(path.read_text(encoding="utf-8"))))
+    lk = s.linkage
+    lay = layout(s)
+    assert all(z.layout.fits for z in lay.sized)
+    crank = max(
+        pl.scale.mm(lk.length)
+        for pl in lay.sized[0].layout
+        if isinstance(pl.view, _Mechanism | _CrankDetail) and pl.scale is not None
+    )
+    assert crank >= CRANK_MM - 1e-9
+    assert lay.k_v.mm(abs(lk.omega) * lk.length) >= 0.9 * PA_MM

@@ -125,8 +125,11 @@ class Insets:
             r = MARK_R + max(math.dist(c, a) for a in ats)
             d.sheet.add(CircleItem(c, r, "thin"))
             # the letter by the circle (anchored on it, up and to the right where free)
+            # (or by another point of the circle, where that one is clearer of the lines)
             edge = (c[0] + r * math.sqrt(0.5), c[1] - r * math.sqrt(0.5))
-            d.label(edge, ", ".join(mine), LETTER_H, prefer=(0.7, -0.7), clear=0.5)
+            turns = [math.radians(a) for a in range(0, 360, 45) if a != 45]
+            round_ = tuple((c[0] + r * math.cos(t), c[1] - r * math.sin(t)) for t in turns)
+            d.label(edge, ", ".join(mine), LETTER_H, prefer=(0.7, -0.7), clear=0.5, others=round_)
 
     def _one(
         self,
