@@ -79,6 +79,7 @@ from geomcad.sheet.compose import (
     View,
     arrange,
     compose,
+    text_width,
 )
 from geomcad.sheet.compose import _title_width as title_width
 from geomcad.sheet.drawing import SHORT_MM, Viewport
@@ -887,7 +888,9 @@ def draw_insets(
     d: Drawing, at: Placed, view: View, ins: Insets, start: int, omitted: Sequence[str]
 ) -> None:
     """The view's insets (:class:`~geomcad.sheet.insets.Insets`) where its box is free, then
-    the line under its caption that states their μ_F and names the forces it leaves out."""
+    the line under its caption that states their μ_F and names the forces it leaves out. Each
+    inset's caption states its own μ_F too: where the line would run past the view's box into
+    the next view, it names only the forces left out."""
     assert at.viewport is not None
     letters = getattr(view, "letters", None) or detail_letters()
     ins.draw(d, at.viewport, _field(at), start, letters)
@@ -896,6 +899,8 @@ def draw_insets(
         key = "omitted_one" if len(omitted) == 1 else "omitted"
         share = fmt_number(VIEW_NEGLIGIBLE * 100.0)
         parts.append(WORDS(key, share=share, items=", ".join(omitted)))
+    if ins.drawn and text_width(";  ".join(parts), SCALES_H) > at.box[2] - at.box[0]:
+        parts = parts[1:]
     if parts:
         lines = (view.title_lines - 1) * TITLE_SPACING  # a caption broken into lines
         top = at.box[1] + view.title_height * (TITLE_LEAD + lines) + SCALES_H
