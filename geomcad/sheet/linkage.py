@@ -1417,6 +1417,17 @@ def _through_text(p: tuple[float, float], b: Box, boxes: Sequence[Box]) -> bool:
     return False
 
 
+#: Beyond this distance (mm) from every place a label may move to, a text box neither stands
+#: too near it (:data:`NUMBER_SPACE`) nor lies on its leader (:data:`INK_GROW_MM`).
+_NEAR_MM = NUMBER_SPACE + 2.0 * INK_GROW_MM + 1.0
+
+
+def _reach(p: tuple[float, float], r: float, w: float, h: float) -> Box:
+    """A box (mm) holding every ``w`` × ``h`` place round ``p`` up to ``r`` from it (as the
+    searches below try them; 1 mm to spare), and ``p``."""
+    return (p[0] - r - w - 1.0, p[1] - r - h - 1.0, p[0] + r + w + 1.0, p[1] + r + h + 1.0)
+
+
 def keep_link_numbers_clear(sheet: Sheet, area: Box) -> None:
     """Each point's letter a thin position's line runs through (the crank's pivot among its
     twelve positions), and each link's number (a label of digits higher than
@@ -1446,10 +1457,14 @@ def keep_link_numbers_clear(sheet: Sheet, area: Box) -> None:
         elif not ("A" <= t.text[:1] <= "Z" and thin.crossed([b], 0.0)):
             continue  # a point's letter moves only where a thin position's line runs through it
         p = anchors[id(t)]
-        others = [bx for k, bx in current.items() if k != id(t)]
         w, h = b[2] - b[0], b[3] - b[1]
-        found: Box | None = None
         r, steps = 0.0, round(LINK_REACH_MM / LINK_STEP_MM)
+        # only the boxes near the places tried can refuse one (the rest, asked of each of
+        # them, cost the sheet a tenth of a second)
+        env = _reach(p, steps * LINK_STEP_MM, w, h)
+        others = [bx for k, bx in current.items() if k != id(t) and _gap(env, bx) < _NEAR_MM]
+        near = [n for n in numbers if _apart(env, n) < LINK_CLEAR_MM + 1.0]
+        found: Box | None = None
         for step in range(1, steps + 1):
             if found is not None:
                 break
@@ -1461,7 +1476,7 @@ def keep_link_numbers_clear(sheet: Sheet, area: Box) -> None:
                     area[0] <= c[0] and c[2] <= area[2] and area[1] <= c[1] and c[3] <= area[3]
                 ):
                     continue
-                if any(_apart(c, n) < LINK_CLEAR_MM for n in numbers):
+                if any(_apart(c, n) < LINK_CLEAR_MM for n in near):
                     continue
                 if any(_gap(c, o) < NUMBER_SPACE for o in others) or ink.crossed([c]):
                     continue
@@ -1551,12 +1566,20 @@ def keep_tracks_apart(
         b = current[id(t)]
         if not confused(b):
             continue
-        others = [bx for k, bx in current.items() if k != id(t)]
         w, h = b[2] - b[0], b[3] - b[1]
+        steps = round(TRACK_REACH_MM / LINK_STEP_MM)
+        # only what stands near the places tried can confuse one or refuse it: a point, a
+        # number or a row further from all of them than any is from ``p`` never does
+        env = _reach(p, steps * LINK_STEP_MM, w, h)
+        far = math.hypot(env[2] - env[0], env[3] - env[1]) + TRACK_MARGIN_MM + 1.0
+        pts_near = [q for q in foreign_pts if _to_box(q, env) < far]
+        nums_near = [k for k in foreign if _gap(env, current[k]) < far]
+        rows_near = [bx for bx in foreign_rows if _gap(env, bx) < far]
+        others = [bx for k, bx in current.items() if k != id(t) and _gap(env, bx) < _NEAR_MM]
         found: Box | None = None
         r = 0.0
         crossed = ink.crossed([b])  # a place crossed by no more lines than its own
-        for step in range(1, round(TRACK_REACH_MM / LINK_STEP_MM) + 1):
+        for step in range(1, steps + 1):
             r = step * LINK_STEP_MM
             for ux, uy in _LINK_DIRS:
                 cx, cy = p[0] + ux * (r + w / 2.0), p[1] + uy * (r + h / 2.0)
@@ -1565,7 +1588,9 @@ def keep_tracks_apart(
                     area[0] <= c[0] and c[2] <= area[2] and area[1] <= c[1] and c[3] <= area[3]
                 ):
                     continue
-                if confused(c) or any(_gap(c, o) < NUMBER_SPACE for o in others):
+                if confused(c, p, pts_near, nums_near, rows_near) or any(
+                    _gap(c, o) < NUMBER_SPACE for o in others
+                ):
                     continue
                 if ink.crossed([c]) > crossed or (
                     r > LINK_LEADER_MM and _through_text(p, c, others)

@@ -67,6 +67,10 @@ class FontMetrics:
     #: each text's advance in em units, as it was first summed (the layout and the label
     #: placer measure the same words thousands of times)
     _units: dict[str, int] = field(default_factory=dict, compare=False, repr=False)
+    #: each label's :func:`box`, by its runs and cap height, as it was first measured
+    _boxes: dict[tuple[tuple[Run, ...], float], tuple[float, float, float]] = field(
+        default_factory=dict, compare=False, repr=False
+    )
 
     def font_size(self, cap_height_mm: float) -> float:
         """The em size (mm) whose capital letters are ``cap_height_mm`` tall."""
@@ -261,7 +265,11 @@ def box(runs: tuple[Run, ...], cap_height: float) -> tuple[float, float, float]:
 
     The height is the cap height (plus a superscript's rise); the depth covers a subscript.
     """
-    fs = metrics().font_size(cap_height)
+    m = metrics()
+    known = m._boxes.get((runs, cap_height))
+    if known is not None:
+        return known  # (the layout and the label placer measure the same labels again)
+    fs = m.font_size(cap_height)
     w = width(runs, fs)
     up = cap_height
     down = 0.0
@@ -270,6 +278,7 @@ def box(runs: tuple[Run, ...], cap_height: float) -> tuple[float, float, float]:
             down = max(down, SUB_DROP * fs)
         elif r.shift == "sup":
             up = max(up, sup_rise(fs) + cap_height * run_size(fs, "sup") / fs)
+    m._boxes[(runs, cap_height)] = w, up, down
     return w, up, down
 
 
