@@ -627,8 +627,7 @@ def link_bodies(
                 out[str(link)] = [Body.of([foot, foot + d * far])]
             else:
                 out[str(link)] = [Body.of([C, foot, foot + d * far])]
-            continue
-        if len(uniq) == 2:
+        elif len(uniq) == 2:
             out[str(link)] = [Body.of(uniq)]
         elif len(uniq) > 2:
             cx = sum(q.x for q in uniq) / len(uniq)
