@@ -414,10 +414,9 @@ def _arranged(s: Solved) -> tuple[Layout, tuple[Arranged, ...]]:
         # the search seeks the rules' scales (the crank CRANK_MM long, pa PA_MM): on one
         # sheet, else with the velocity plans on a sheet of their own (the mechanism keeps its
         # rule on the larger room), else with the crank on its detail view (the last resort: a
-        # coarse mechanism on a smaller format); where none holds them, the arrangement without
-        # them stays
-        # (where none holds them, the one that comes nearest to them: a pa of 39 mm with the
-        # crank at its rule beats the unruled arrangement's crank of 16 mm and pa of 20 mm)
+        # coarse mechanism on a smaller format); where none holds them, the one that comes
+        # nearest to them (a pa of 39 mm with the crank at its rule beats the unruled
+        # arrangement's crank of 16 mm and pa of 20 mm)
         rules = (True, True)
         tries = dict.fromkeys(((detail, False), (detail, True), (True, False), (True, True)))
         near = _rules_share(s, fitted)
