@@ -1484,13 +1484,8 @@ def keep_link_numbers_clear(sheet: Sheet, area: Box) -> None:
                 break
         if found is None:
             continue
-        i = next(k for k, it in enumerate(sheet.items) if it is t)
-        moved = replace(t, at=(found[0], found[3] - 0.3 * t.height))
-        sheet.items[i] = moved
-        sheet.anchors = [(moved if it is t else it, at) for it, at in sheet.anchors]
         current[id(t)] = found
-        if r > LINK_LEADER_MM:
-            _leader(sheet, p, found)
+        if _move_number(sheet, t, found, p, r):
             ink = _Ink(sheet)
 
 
@@ -1521,8 +1516,8 @@ def keep_tracks_apart(
     are. Where no place within :data:`TRACK_REACH_MM` does, it stays."""
 
     def track_of(p: tuple[float, float]) -> str | None:
-        return next((k for k, pts in tracks.items() if any(math.dist(p, q) < 1e-6 for q in pts)),
-                    None)  # fmt: skip
+        near = (k for k, pts in tracks.items() if any(math.dist(p, q) < tol.SHEET_MM for q in pts))
+        return next(near, None)
 
     def inside(t: TextItem) -> bool:
         return area[0] <= t.at[0] <= area[2] and area[1] <= t.at[1] <= area[3]
@@ -1600,14 +1595,23 @@ def keep_tracks_apart(
                 break
         if found is None:
             continue
-        i = next(k for k, it in enumerate(sheet.items) if it is t)
-        moved = replace(t, at=(found[0], found[3] - 0.3 * t.height))
-        sheet.items[i] = moved
-        sheet.anchors = [(moved if it is t else it, at) for it, at in sheet.anchors]
         current[id(t)] = found
-        if r > LINK_LEADER_MM:
-            _leader(sheet, p, found)
+        if _move_number(sheet, t, found, p, r):
             ink = _Ink(sheet)
+
+
+def _move_number(sheet: Sheet, t: TextItem, found: Box, p: tuple[float, float], r: float) -> bool:
+    """The number ``t`` moved into the box ``found`` (its anchor kept), with a leader from its
+    point ``p`` where it stands ``r`` mm off, further than :data:`LINK_LEADER_MM`; whether a
+    leader was drawn (the ink then changed)."""
+    i = next(k for k, it in enumerate(sheet.items) if it is t)
+    moved = replace(t, at=(found[0], found[3] - 0.3 * t.height))
+    sheet.items[i] = moved
+    sheet.anchors = [(moved if it is t else it, at) for it, at in sheet.anchors]
+    if r <= LINK_LEADER_MM:
+        return False
+    _leader(sheet, p, found)
+    return True
 
 
 def _leader(sheet: Sheet, p: tuple[float, float], b: Box) -> None:

@@ -526,27 +526,33 @@ def is_sliver(poly: ForcePolygon) -> bool:
     :data:`SLIVER_SHARE` of that vector (a two-force member's R₀₁ = −R₂₁, a link's two
     reactions with a small weight between): drawn large it shows two long lines over one
     another and nothing more, so a sheet draws it no longer than :data:`SLIVER_MM`."""
-    zero = _zero(poly)
-    vs = [pv for pv in poly.vectors if pv.magnitude > zero]
-    if len(vs) < 2:
+    spread = _across(poly)
+    if spread is None:
         return False
-    big = max(vs, key=lambda pv: pv.magnitude)
-    u = (big.head - big.tail).unit()
-    across = [u.cross(q - big.tail) for pv in vs for q in (pv.tail, pv.head)]
-    return max(across) - min(across) <= SLIVER_SHARE * big.magnitude
+    across, big = spread
+    return max(across) - min(across) <= SLIVER_SHARE * big
 
 
 def is_thin(poly: ForcePolygon, k: float) -> bool:
     """Whether the polygon, drawn at μ_F ``k``, lies within :data:`THIN_MM` of the line of its
     longest vector (its vectors would be drawn over one another)."""
+    spread = _across(poly)
+    if spread is None:
+        return False
+    return max(abs(c) for c in spread[0]) / k < THIN_MM
+
+
+def _across(poly: ForcePolygon) -> tuple[list[float], float] | None:
+    """The signed distances (plan units) of the ends of the polygon's drawn vectors from the
+    line of its longest vector, and that vector's magnitude; ``None`` where fewer than two
+    vectors are drawn."""
     zero = _zero(poly)
     vs = [pv for pv in poly.vectors if pv.magnitude > zero]
     if len(vs) < 2:
-        return False
+        return None
     big = max(vs, key=lambda pv: pv.magnitude)
     u = (big.head - big.tail).unit()
-    far = max(abs(u.cross(q - big.tail)) for pv in vs for q in (pv.tail, pv.head))
-    return far / k < THIN_MM
+    return [u.cross(q - big.tail) for pv in vs for q in (pv.tail, pv.head)], big.magnitude
 
 
 def detail_spots(
