@@ -378,6 +378,15 @@ def _compose2(
                 not ok and z2.layout.fits and _crank_kept(z2.layout)
             ):
                 own = z2
+    if own is None and not ok:
+        # the largest format's search, every view as large as it draws it, left the rules
+        # broken: its arrangements one by one, seeking the wanted scales (review 6: the
+        # compressor's V at 1:1 beside its groups at 1:2, not all at 1:2 with a 22.5 mm crank)
+        for h in (TEXT_H, SMALL_TEXT_H):
+            on = _on(*make(h, False), order[-1])
+            if on is not None and reached(on[1]):
+                own = on[1]
+                break
     if own is not None:
         found, kept = _final2(s, P, f, k, own, False, order[-1], kin)
         if kept or not ok:
