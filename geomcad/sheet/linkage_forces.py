@@ -79,7 +79,6 @@ from geomcad.sheet.compose import (
     View,
     arrange,
     compose,
-    text_width,
 )
 from geomcad.sheet.compose import _title_width as title_width
 from geomcad.sheet.drawing import SHORT_MM, Viewport
@@ -130,6 +129,7 @@ from geomcad.sheet.scale import (
     fmt_fixed,
 )
 from geomcad.sheet.scheme import draw_scheme
+from geomcad.sheet.text import wrap
 from geomcad.sheet.views import (
     SLIVER_MM,
     AxisSpec,
@@ -916,10 +916,26 @@ def _moment_radius(v: Viewport, c: Vec, arcs: dict[tuple[float, float], int]) ->
 SCALES_H = 2.5
 
 
-def further_room(fs: ForceScales, omitted: Sequence[str] = ()) -> float:
-    """The room (mm) of the line under a view's caption that states its insets' μ_F and the
-    forces it leaves out (:func:`draw_insets`); 0 where it has neither."""
-    return SCALES_H * TITLE_LEAD if fs.tiered or omitted else 0.0
+def further_room(fs: ForceScales, omitted: Sequence[str] = (), width: float = 0.0) -> float:
+    """The room (mm) of the lines under a view's caption that state its insets' μ_F and the
+    forces it leaves out (:func:`draw_insets`), those wrapped at ``width`` mm (the caption's:
+    the view's box is never narrower); 0 where it has neither."""
+    if not (fs.tiered or omitted):
+        return 0.0
+    lines = len(_omitted_lines(omitted, width)) if omitted and width > 0.0 else 1
+    return SCALES_H * TITLE_LEAD + (max(lines, 1) - 1) * SCALES_H * TITLE_SPACING
+
+
+def _omitted_text(omitted: Sequence[str]) -> str:
+    """The words that name the forces a view leaves out as negligible, with their values."""
+    key = "omitted_one" if len(omitted) == 1 else "omitted"
+    return WORDS(key, share=fmt_number(VIEW_NEGLIGIBLE * 100.0), items=", ".join(omitted))
+
+
+def _omitted_lines(omitted: Sequence[str], width: float) -> list[str]:
+    """:func:`_omitted_text` in lines at most ``width`` mm wide (review 6: the lever's line ran
+    across the next view's force plan)."""
+    return wrap(_omitted_text(omitted), width, SCALES_H)
 
 
 def omitted_values(fs: ForceScales, named: Sequence[tuple[str, float]]) -> list[str]:
@@ -934,23 +950,25 @@ def draw_insets(
     d: Drawing, at: Placed, view: View, ins: Insets, start: int, omitted: Sequence[str]
 ) -> None:
     """The view's insets (:class:`~geomcad.sheet.insets.Insets`) where its box is free, then
-    the line under its caption that states their μ_F and names the forces it leaves out. Each
-    inset's caption states its own μ_F too: where the line would run past the view's box into
-    the next view, it names only the forces left out."""
+    the lines under its caption that state their μ_F and name the forces it leaves out,
+    wrapped at the box's width into the lines its title's room holds (:func:`further_room`).
+    Each inset's caption states its own μ_F too: where the lines would need more room, they
+    name only the forces left out."""
     assert at.viewport is not None
     letters = getattr(view, "letters", None) or detail_letters()
     ins.draw(d, at.viewport, _field(at), start, letters)
-    parts = [ins.text()] if ins.drawn else []
-    if omitted:
-        key = "omitted_one" if len(omitted) == 1 else "omitted"
-        share = fmt_number(VIEW_NEGLIGIBLE * 100.0)
-        parts.append(WORDS(key, share=share, items=", ".join(omitted)))
-    if ins.drawn and text_width(";  ".join(parts), SCALES_H) > at.box[2] - at.box[0]:
-        parts = parts[1:]
-    if parts:
-        lines = (view.title_lines - 1) * TITLE_SPACING  # a caption broken into lines
-        top = at.box[1] + view.title_height * (TITLE_LEAD + lines) + SCALES_H
-        d.text(";  ".join(parts), (at.box[0], top), SCALES_H)
+    width = at.box[2] - at.box[0]
+    room = max(len(_omitted_lines(omitted, title_width(view))) if omitted else 1, 1)
+    lines: list[str] = []
+    if ins.drawn:
+        text = ins.text() + (";  " + _omitted_text(omitted) if omitted else "")
+        lines = wrap(text, width, SCALES_H)
+    if not ins.drawn or len(lines) > room:
+        lines = _omitted_lines(omitted, width) if omitted else []
+    head = (view.title_lines - 1) * TITLE_SPACING  # a caption broken into lines
+    top = at.box[1] + view.title_height * (TITLE_LEAD + head) + SCALES_H
+    for i, line in enumerate(lines):
+        d.text(line, (at.box[0], top + i * SCALES_H * TITLE_SPACING), SCALES_H)
 
 
 def _negligible_note(names: Sequence[str]) -> str:
@@ -972,7 +990,9 @@ class _Forces(_ByScale, View):
     letters: Iterator[str] | None = None
 
     def title_room(self) -> float:
-        return super().title_room() + further_room(self.scales_at(None), self.omitted)
+        return super().title_room() + further_room(
+            self.scales_at(None), self.omitted, title_width(self)
+        )
 
     @property
     def kF(self) -> Scale:
@@ -1472,7 +1492,9 @@ class _Lever(_ByScale, View):
         return True
 
     def title_room(self) -> float:
-        return super().title_room() + further_room(self.scales_at(None), self.omitted)
+        return super().title_room() + further_room(
+            self.scales_at(None), self.omitted, title_width(self)
+        )
 
     def caption(self, scale: Scale | None) -> str:
         m = WORDS("m_bal", value=_load(self.f.lever.M_bal))
