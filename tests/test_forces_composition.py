@@ -190,6 +190,42 @@ def test_a_larger_format_only_where_the_smaller_one_fails_the_rules(path: Path) 
                 break  # as linkage.fit: the smaller text is tried only where the scales hold
 
 
+def test_the_groups_at_the_mechanisms_scale_where_the_sheet_holds_them() -> None:
+    """Review 6 item 5: the shaper's forces sheet drew its groups at 1:4 beside the mechanism
+    at 1:2.5 (the four arrangements had no room for them at 1:2.5 on A1). With the polygons
+    under the mechanism and the groups over the lever (an arrangement tried only where the
+    groups would leave the mechanism's μ_l), they share its μ_l there, the crank CRANK_MM
+    long, on A1 (no larger format)."""
+    s = geomcad.solve(str(EXAMPLES / "shaper.toml")).data
+    _tree, z = lf.force_layout(s)
+    main, own = lf._l_scales(z.layout)
+    assert z.fmt == "A1" and z.layout.fits
+    assert main == own, (main, own)
+    assert lf._crank_kept(z.layout)
+
+
+@pytest.mark.parametrize("path", FILES, ids=[p.stem for p in FILES])
+def test_groups_of_their_own_only_where_the_shared_scale_breaks_the_rules(path: Path) -> None:
+    """Where the groups are drawn at a μ_l of their own, no arrangement drawing them at the
+    mechanism's (the extra one included) keeps the rules on that format (with the polygons'
+    details, at either text height): the shared μ_l is not given up for a larger score."""
+    from geomcad.sheet.linkage import _on
+
+    s = geomcad.solve(str(path)).data
+    _tree, z = lf.force_layout(s)
+    main, own = lf._l_scales(z.layout)
+    if main == own:
+        return
+    P, forces, k = lf.force_position(s)
+    for h in (3.5, 2.5):
+        tree, wants = lf._sheet2(s, P, forces, k, h, shared=True, under=True)
+        on = _on(tree, wants, z.fmt)
+        if on is None:
+            continue
+        _found, kept = lf._final2(s, P, forces, k, on[1], True, "A1", under=True)
+        assert not kept, h
+
+
 @pytest.mark.parametrize("path", FILES, ids=[p.stem for p in FILES])
 def test_a_short_crank_is_drawn_enlarged_in_a_detail(
     path: Path, monkeypatch: pytest.MonkeyPatch

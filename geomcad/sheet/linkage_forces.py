@@ -251,6 +251,8 @@ TABLE2_W = 60.0
 L_GROUP = "l"
 #: The scale group of the groups and the crank cut out where they cannot share the mechanism's.
 GROUPS_L = "lg"
+#: The arrangements of sheet 2 its layout searches (:func:`_sheet2`; one more where ``under``).
+ARRANGEMENTS = 4
 #: The scale group of the crank cut out where the mechanism's μ_l draws the crank shorter than
 #: CRANK_MM: its own μ_l, stated in its caption, at which the crank is CRANK_MM long.
 CRANK_L = "lc"
@@ -317,7 +319,8 @@ def force_layout(s: Solved) -> tuple[Tree, formats.Sized]:
                          for pl in lay)  # fmt: skip
         fmts = sheet_formats(s.linkage)
         largest = max(fmts, key=lambda fm: FORMATS[fm][0] * FORMATS[fm][1])
-        own, _kept = _final2(s, P, forces, k, found[1], shared, largest, kin, crank_own=True)
+        under = isinstance(found[0], Choice) and len(found[0].items) > ARRANGEMENTS
+        own, _kept = _final2(s, P, forces, k, found[1], shared, largest, kin, True, under)
         if own[1].layout.fits or not lay.fits:
             found = own
     return found
@@ -351,8 +354,8 @@ def _compose2(
     else :data:`~geomcad.sheet.linkage.SMALL_TEXT_H`."""
     wants: list[dict[View, float]] = []
 
-    def make(h: float, shared: bool) -> tuple[Tree, dict[View, float]]:
-        tree, w = _sheet2(s, P, f, k, h, shared=shared, kin=kin)
+    def make(h: float, shared: bool, under: bool = False) -> tuple[Tree, dict[View, float]]:
+        tree, w = _sheet2(s, P, f, k, h, shared=shared, kin=kin, under=under)
         wants.append(w)
         return tree, w
 
@@ -387,6 +390,16 @@ def _compose2(
             if on is not None and reached(on[1]):
                 own = on[1]
                 break
+    if own is not None and (ok or _crank_kept(own.layout)):
+        # the groups would leave the mechanism's μ_l: first one arrangement more that makes
+        # room for them at it (review 6: the shaper's groups at 1:4 beside its mechanism at
+        # 1:2.5), tried only here (a search over more arrangements costs every sheet's layout)
+        at = [fm for fm in order if area(fm) <= area(own.fmt)]
+        _tree5, z5 = fit(lambda h: make(h, True, True), at)
+        if reached(z5):
+            found, kept = _final2(s, P, f, k, z5, True, order[-1], kin, under=True)
+            if kept:
+                return found
     if own is not None:
         found, kept = _final2(s, P, f, k, own, False, order[-1], kin)
         if kept or not ok:
@@ -409,12 +422,13 @@ def _compose2(
 
 def _final2(
     s: Solved, P: Position, f: Forces, k: int | None, z: formats.Sized, shared: bool,
-    largest: str, kin: bool = True, crank_own: bool = False,
+    largest: str, kin: bool = True, crank_own: bool = False, under: bool = False,
 ) -> tuple[tuple[Tree, formats.Sized], bool]:  # fmt: skip
     """Sheet 2 on the format of ``z`` with its polygons' details reckoned at the μ_F each got
     there (see :func:`_compose2`), and whether it keeps the rules (where it does not on a format
     smaller than the largest, the caller takes the larger format found first); the crank cut
-    out at its own μ_l where ``crank_own`` (:func:`_sheet2`)."""
+    out at its own μ_l where ``crank_own``, one arrangement more where ``under``
+    (:func:`_sheet2`)."""
     refs = {pl.view.title: (pl.scale.k, pl.size) for pl in z.layout
             if isinstance(pl.view, Polygon) and pl.scale}  # fmt: skip
     field = Field.of_format(z.fmt, z.landscape)
@@ -422,13 +436,13 @@ def _final2(
     rules: list[bool] = []
     good: list[bool] = []
     for h in (TEXT_H, SMALL_TEXT_H):
-        tree, w = _sheet2(s, P, f, k, h, refs, shared, kin, crank_own)
+        tree, w = _sheet2(s, P, f, k, h, refs, shared, kin, crank_own, under)
         lay = arrange(tree, field)
         # a plan placed at a coarser μ_F than its details were reckoned at may not hold them
         # in its box (they would run into the captions round it): reckoned again at that μ_F
         spilt = _spilt(lay)
         if spilt:
-            tree, w = _sheet2(s, P, f, k, h, {**refs, **spilt}, shared, kin, crank_own)
+            tree, w = _sheet2(s, P, f, k, h, {**refs, **spilt}, shared, kin, crank_own, under)
             lay = arrange(tree, field)
         tried.append((tree, formats.Sized(z.fmt, z.landscape, lay)))
         # on a smaller format than the largest, its polygons POLY_MM across as it was chosen
@@ -567,7 +581,7 @@ def _as_loads(
 def _sheet2(
     s: Solved, P: Position, f: Forces, k: int | None, h: float,
     refs: Mapping[str, tuple[float, tuple[float, float]]] | None = None, shared: bool = True,
-    kin: bool = True, crank_own: bool = False,
+    kin: bool = True, crank_own: bool = False, under: bool = False,
 ) -> tuple[Tree, dict[View, float]]:  # fmt: skip
     """Sheet 2's tree, its tables and texts ``h`` high, and the scales its views want. The
     force polygons are drawn with their details where ``refs`` gives their reference μ_F and
@@ -575,7 +589,9 @@ def _sheet2(
     cut out are drawn at the mechanism's μ_l (``shared``), else at one μ_l of their own. Where
     the sweep waives the crank's length, the mechanism is sought at the kinematic sheet's μ_l
     (``kin``: where that fits). The crank cut out is drawn at a μ_l of its own that draws it
-    CRANK_MM long where ``crank_own`` (where the mechanism's draws it short)."""
+    CRANK_MM long where ``crank_own`` (where the mechanism's draws it short). ``under``: one
+    arrangement more, the polygons under the mechanism and the groups over the lever (room
+    for the groups at the mechanism's μ_l; tried only where the others leave it broken)."""
     lk = s.linkage
     # the length scales from the geometry alone (a change of ω or of the loads rescales no
     # drawing of links): never finer than links_scale; the crank CRANK_MM long where the
@@ -670,6 +686,7 @@ def _sheet2(
         Row(Column(mech, lever), Column(band, Row(Grid(*polys), right))),
         Column(Row(mech, lever, right), groups),
         Row(Column(mech, lever), Column(Grid(*bodies), Grid(*polys)), right),
+        *([Row(Column(mech, Grid(*polys)), Column(band, lever), right)] if under else []),
     )
     # the format: the smallest on which the crank is CRANK_MM long (where the sweep allows it),
     # every force polygon at least POLY_MM across and its longest vector at least PLAN_MM (a
