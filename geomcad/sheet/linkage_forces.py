@@ -394,12 +394,15 @@ def _compose2(
         # the groups would leave the mechanism's μ_l: first one arrangement more that makes
         # room for them at it (review 6: the shaper's groups at 1:4 beside its mechanism at
         # 1:2.5), tried only here (a search over more arrangements costs every sheet's layout)
-        at = [fm for fm in order if area(fm) <= area(own.fmt)]
-        _tree5, z5 = fit(lambda h: make(h, True, True), at)
-        if reached(z5):
-            found, kept = _final2(s, P, f, k, z5, True, order[-1], kin, under=True)
-            if kept:
-                return found
+        # (on the groups' format, its arrangements one by one: a quicker test than their
+        # joint search)
+        for h in (TEXT_H, SMALL_TEXT_H):
+            on = _on(*make(h, True, True), own.fmt)
+            if on is not None and reached(on[1]):
+                found, kept = _final2(s, P, f, k, on[1], True, order[-1], kin, under=True)
+                if kept:
+                    return found
+                break
     if own is not None:
         found, kept = _final2(s, P, f, k, own, False, order[-1], kin)
         if kept or not ok:
