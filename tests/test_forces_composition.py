@@ -102,12 +102,17 @@ def test_one_length_scale_for_the_mechanism_and_one_for_its_groups(
     main = mech[0].scale
     assert main is not None
     # the groups share one μ_l: the mechanism's, or one of their own; the crank cut out is at
-    # the mechanism's where that keeps it CRANK_MM long (else at the groups')
+    # the mechanism's where that keeps it CRANK_MM long (else at the groups', or at its own
+    # that draws it CRANK_MM long)
     groups = [pl for pl in bodies if pl.view.gf.group is not None]  # type: ignore[attr-defined]
     (crank,) = [pl for pl in bodies if pl.view.gf.group is None]  # type: ignore[attr-defined]
     assert len({pl.scale for pl in groups}) == 1, [pl.scale for pl in groups]
-    assert crank.scale in (main, groups[0].scale)
-    if lf.sweep_mm(s, lf.crank_scale(s.linkage).k) <= lf.SWEEP_MAX_MM:  # type: ignore[attr-defined]
+    lk = s.linkage  # type: ignore[attr-defined]
+    assert crank.scale is not None
+    assert crank.scale in (main, groups[0].scale) or (
+        lk.length / crank.scale.k >= CRANK_MM * 0.999 and lk.length / main.k < CRANK_MM
+    )
+    if lk.length / main.k >= CRANK_MM * 0.999:
         assert crank.scale == main
     # each view states its μ_l in its caption (the sheet says so next to each view)
     for pl in [*mech, *bodies]:
@@ -115,7 +120,6 @@ def test_one_length_scale_for_the_mechanism_and_one_for_its_groups(
         assert pl.scale.ratio_text() in pl.view.caption(pl.scale)
     assert sheet.block is not None and sheet.block.scale == main.ratio_text()
     # never coarser than the shared scale where the crank keeps its length with it
-    lk = s.linkage  # type: ignore[attr-defined]
     if groups[0].scale != main:
         assert lk.length / main.k >= CRANK_MM * 0.999
         # and the groups at least GROUPS_SHARE of the mechanism's size (1:5 beside 1:2.5; the
@@ -186,26 +190,60 @@ def test_a_larger_format_only_where_the_smaller_one_fails_the_rules(path: Path) 
                 break  # as linkage.fit: the smaller text is tried only where the scales hold
 
 
+def test_the_groups_at_the_mechanisms_scale_where_the_sheet_holds_them() -> None:
+    """Review 6 item 5: the shaper's forces sheet drew its groups at 1:4 beside the mechanism
+    at 1:2.5 (the four arrangements had no room for them at 1:2.5 on A1). With the polygons
+    under the mechanism and the groups over the lever (an arrangement tried only where the
+    groups would leave the mechanism's μ_l), they share its μ_l there, the crank CRANK_MM
+    long, on A1 (no larger format)."""
+    s = geomcad.solve(str(EXAMPLES / "shaper.toml")).data
+    _tree, z = lf.force_layout(s)
+    main, own = lf._l_scales(z.layout)
+    assert z.fmt == "A1" and z.layout.fits
+    assert main == own, (main, own)
+    assert lf._crank_kept(z.layout)
+
+
+@pytest.mark.parametrize("path", FILES, ids=[p.stem for p in FILES])
+def test_groups_of_their_own_only_where_the_shared_scale_breaks_the_rules(path: Path) -> None:
+    """Where the groups are drawn at a μ_l of their own, no arrangement drawing them at the
+    mechanism's (the extra one included) keeps the rules on that format (with the polygons'
+    details, at either text height): the shared μ_l is not given up for a larger score."""
+    from geomcad.sheet.linkage import _on
+
+    s = geomcad.solve(str(path)).data
+    _tree, z = lf.force_layout(s)
+    main, own = lf._l_scales(z.layout)
+    if main == own:
+        return
+    P, forces, k = lf.force_position(s)
+    for h in (3.5, 2.5):
+        tree, wants = lf._sheet2(s, P, forces, k, h, shared=True, under=True)
+        on = _on(tree, wants, z.fmt)
+        if on is None:
+            continue
+        _found, kept = lf._final2(s, P, forces, k, on[1], True, "A1", under=True)
+        assert not kept, h
+
+
 @pytest.mark.parametrize("path", FILES, ids=[p.stem for p in FILES])
 def test_a_short_crank_is_drawn_enlarged_in_a_detail(
     path: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
     """Review 5: crusher-forces drew its crank 8 mm long (1:5) and nothing larger. Where the
-    mechanism's μ_l draws the crank shorter than DETAIL_BELOW of CRANK_MM, the view draws it
-    enlarged in a detail (ESKD 2.305) at least twice as long and DETAIL_BELOW of CRANK_MM."""
-    from geomcad.sheet.linkage import DETAIL_BELOW
-
+    mechanism's μ_l draws the crank shorter than CRANK_MM, the view draws it enlarged in a
+    detail (ESKD 2.305) at least CRANK_MM long (review 6: the rule itself, not half of it)."""
     _sheet, lay, s = _forces_sheet(path, monkeypatch)
     (mech,) = [pl for pl in _links(lay) if isinstance(pl.view, lf._Loaded)]
     assert mech.scale is not None
     lk = s.linkage  # type: ignore[attr-defined]
     here = lk.length / mech.scale.k
     detail = mech.view.detail_scale  # type: ignore[attr-defined]
-    if here >= DETAIL_BELOW * CRANK_MM:
+    if here >= CRANK_MM * 0.999:
         assert detail is None
         return
     assert detail is not None, f"the crank {here:.1f} mm long and no detail"
-    assert lk.length / detail.k >= max(2.0 * here, DETAIL_BELOW * CRANK_MM) * 0.999
+    assert lk.length / detail.k >= CRANK_MM * 0.999
 
 
 def test_a_free_spot_keeps_clear_of_what_is_drawn() -> None:
@@ -228,3 +266,30 @@ def test_a_free_spot_keeps_clear_of_what_is_drawn() -> None:
     # a grid of lines every 10 mm: no 20 mm square is clear
     grid = np.array([[[v, 0.0], [v, 100.0]] for v in range(0, 101, 10)])
     assert lf.free_spot(grid, box, (20.0, 20.0), (50.0, 50.0), 5.0) is None
+
+
+#: Files whose mechanism the forces sheet cannot draw with its crank CRANK_MM long beside the
+#: groups on A1 (review 6's tangent mechanism: a tall sweep; the compressor's V: a wide one).
+SHORT_CRANKS = [Path(__file__).resolve().parent / "linkages_layout" / n
+                for n in ("tangent_rocking_slider.toml", "v_compressor.toml")]  # fmt: skip
+
+
+@pytest.mark.parametrize("path", [*FILES, *SHORT_CRANKS], ids=lambda p: p.stem)
+def test_the_crank_is_read_at_crank_mm_on_the_mechanism_and_cut_out(
+    path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """Review 6, items 1 and 5: the crank at least CRANK_MM long on the mechanism view or on
+    its detail (tangent: 16 mm at 1:4, no detail), and on the crank cut out at the μ_l its
+    caption states (crusher: 8 mm at 1:5, A, 1, O and M_ур jammed)."""
+    _sheet, lay, s = _forces_sheet(path, monkeypatch)
+    lk = s.linkage  # type: ignore[attr-defined]
+    (mech,) = [pl for pl in _links(lay) if isinstance(pl.view, lf._Loaded)]
+    assert mech.scale is not None
+    detail = mech.view.detail_scale  # type: ignore[attr-defined]
+    best = max(lk.length / mech.scale.k, lk.length / detail.k if detail is not None else 0.0)
+    assert best >= CRANK_MM * 0.999, f"the crank {best:.1f} mm on the mechanism view"
+    (crank,) = [pl for pl in _links(lay) if isinstance(pl.view, lf._FreeBody)
+                and pl.view.gf.group is None]  # fmt: skip
+    assert crank.scale is not None
+    assert lk.length / crank.scale.k >= CRANK_MM * 0.999, crank.scale
+    assert crank.scale.ratio_text() in crank.view.caption(crank.scale)

@@ -70,8 +70,10 @@ BASELINE: dict[tuple[str, str], dict[str, int]] = {
     # cut, the rod 4 nearly along the guide); issue 27: the short forces at the slider D are
     # arrows at μ_F* … (they were dots): the letters 4, D, 5 by the crowded slider land 7–9 mm
     # off, on the mechanism and on group (4, 5); one μ_F per view (review 5): the thin circle of
-    # the inset of G₃ round C, on the mechanism and on group (2, 3), sets C's letter 9 mm off
-    ("linkage-shaper", "forces"): {"anchor": 7, "empty": 1},
+    # the inset of G₃ round C, on the mechanism and on group (2, 3), sets C's letter 9 mm off;
+    # review 6 item 5: group (4, 5) drawn at the mechanism's 1:2.5 (was 1:4) has the
+    # mechanism's crowded slider D, its 4, D and 5 at 7 mm as on the mechanism (7 -> 8)
+    ("linkage-shaper", "forces"): {"anchor": 8, "empty": 1},
     ("linkage-shaper", "dynamics"): {"empty": 1},
     # the twelve numbered positions drawn beside the file's phi: B's labels crowd near the
     # rocker's extreme (7 … 11 mm)

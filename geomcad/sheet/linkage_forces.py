@@ -79,7 +79,6 @@ from geomcad.sheet.compose import (
     View,
     arrange,
     compose,
-    text_width,
 )
 from geomcad.sheet.compose import _title_width as title_width
 from geomcad.sheet.drawing import SHORT_MM, Viewport
@@ -89,7 +88,6 @@ from geomcad.sheet.insets import Insets
 from geomcad.sheet.lang import Words, current
 from geomcad.sheet.linkage import (
     CRANK_MM,
-    DETAIL_BELOW,
     SMALL_TEXT_H,
     TEXT_COST,
     TEXT_H,
@@ -131,6 +129,7 @@ from geomcad.sheet.scale import (
     fmt_fixed,
 )
 from geomcad.sheet.scheme import draw_scheme
+from geomcad.sheet.text import wrap
 from geomcad.sheet.views import (
     SLIVER_MM,
     AxisSpec,
@@ -252,6 +251,11 @@ TABLE2_W = 60.0
 L_GROUP = "l"
 #: The scale group of the groups and the crank cut out where they cannot share the mechanism's.
 GROUPS_L = "lg"
+#: The arrangements of sheet 2 its layout searches (:func:`_sheet2`; one more where ``under``).
+ARRANGEMENTS = 4
+#: The scale group of the crank cut out where the mechanism's μ_l draws the crank shorter than
+#: CRANK_MM: its own μ_l, stated in its caption, at which the crank is CRANK_MM long.
+CRANK_L = "lc"
 
 
 def force_position(s: Solved) -> tuple[Position, Forces, int | None]:
@@ -300,11 +304,35 @@ def force_layout(s: Solved) -> tuple[Tree, formats.Sized]:
     bench and the tests: the scales and the format without drawing)."""
     P, forces, k = force_position(s)
     found = _compose2(s, P, forces, k, sheet_formats(s.linkage))
+    kin = True
     if not found[1].layout.fits and sweep_mm(s, crank_scale(s.linkage).k) > SWEEP_MAX_MM:
         # the kinematic sheet's μ_l keeps the sheet from fitting: the mechanism as large as
         # the field draws it
-        found = _compose2(s, P, forces, k, sheet_formats(s.linkage), kin=False)
+        kin = False
+        found = _compose2(s, P, forces, k, sheet_formats(s.linkage), kin=kin)
+    lay = found[1].layout
+    if _crank_short(lay):
+        # the mechanism's μ_l draws the crank short (its detail enlarges it there): the crank
+        # cut out at a μ_l of its own that draws it CRANK_MM long, on the same format, where
+        # that fits
+        shared = not any(isinstance(pl.view, _FreeBody) and pl.view.group == GROUPS_L
+                         for pl in lay)  # fmt: skip
+        fmts = sheet_formats(s.linkage)
+        largest = max(fmts, key=lambda fm: FORMATS[fm][0] * FORMATS[fm][1])
+        under = isinstance(found[0], Choice) and len(found[0].items) > ARRANGEMENTS
+        own, _kept = _final2(s, P, forces, k, found[1], shared, largest, kin, True, under)
+        if own[1].layout.fits or not lay.fits:
+            found = own
     return found
+
+
+def _crank_short(lay: Layout) -> bool:
+    """Whether ``lay`` draws the crank cut out shorter than
+    :data:`~geomcad.sheet.linkage.CRANK_MM`."""
+    return any(isinstance(pl.view, _FreeBody) and pl.view.gf.group is None
+               and pl.scale is not None
+               and pl.view.lk.length / pl.scale.k < CRANK_MM * (1.0 - tol.REL_LENGTH)
+               for pl in lay)  # fmt: skip
 
 
 def _compose2(
@@ -326,8 +354,8 @@ def _compose2(
     else :data:`~geomcad.sheet.linkage.SMALL_TEXT_H`."""
     wants: list[dict[View, float]] = []
 
-    def make(h: float, shared: bool) -> tuple[Tree, dict[View, float]]:
-        tree, w = _sheet2(s, P, f, k, h, shared=shared, kin=kin)
+    def make(h: float, shared: bool, under: bool = False) -> tuple[Tree, dict[View, float]]:
+        tree, w = _sheet2(s, P, f, k, h, shared=shared, kin=kin, under=under)
         wants.append(w)
         return tree, w
 
@@ -353,6 +381,28 @@ def _compose2(
                 not ok and z2.layout.fits and _crank_kept(z2.layout)
             ):
                 own = z2
+    if own is None and not ok:
+        # the largest format's search, every view as large as it draws it, left the rules
+        # broken: its arrangements one by one, seeking the wanted scales (review 6: the
+        # compressor's V at 1:1 beside its groups at 1:2, not all at 1:2 with a 22.5 mm crank)
+        for h in (TEXT_H, SMALL_TEXT_H):
+            on = _on(*make(h, False), order[-1])
+            if on is not None and reached(on[1]):
+                own = on[1]
+                break
+    if own is not None and (ok or _crank_kept(own.layout)):
+        # the groups would leave the mechanism's μ_l: first one arrangement more that makes
+        # room for them at it (review 6: the shaper's groups at 1:4 beside its mechanism at
+        # 1:2.5), tried only here (a search over more arrangements costs every sheet's layout)
+        # (on the groups' format, its arrangements one by one: a quicker test than their
+        # joint search)
+        for h in (TEXT_H, SMALL_TEXT_H):
+            on = _on(*make(h, True, True), own.fmt)
+            if on is not None and reached(on[1]):
+                found, kept = _final2(s, P, f, k, on[1], True, order[-1], kin, under=True)
+                if kept:
+                    return found
+                break
     if own is not None:
         found, kept = _final2(s, P, f, k, own, False, order[-1], kin)
         if kept or not ok:
@@ -375,11 +425,13 @@ def _compose2(
 
 def _final2(
     s: Solved, P: Position, f: Forces, k: int | None, z: formats.Sized, shared: bool,
-    largest: str, kin: bool = True,
+    largest: str, kin: bool = True, crank_own: bool = False, under: bool = False,
 ) -> tuple[tuple[Tree, formats.Sized], bool]:  # fmt: skip
     """Sheet 2 on the format of ``z`` with its polygons' details reckoned at the μ_F each got
     there (see :func:`_compose2`), and whether it keeps the rules (where it does not on a format
-    smaller than the largest, the caller takes the larger format found first)."""
+    smaller than the largest, the caller takes the larger format found first); the crank cut
+    out at its own μ_l where ``crank_own``, one arrangement more where ``under``
+    (:func:`_sheet2`)."""
     refs = {pl.view.title: (pl.scale.k, pl.size) for pl in z.layout
             if isinstance(pl.view, Polygon) and pl.scale}  # fmt: skip
     field = Field.of_format(z.fmt, z.landscape)
@@ -387,13 +439,13 @@ def _final2(
     rules: list[bool] = []
     good: list[bool] = []
     for h in (TEXT_H, SMALL_TEXT_H):
-        tree, w = _sheet2(s, P, f, k, h, refs, shared, kin)
+        tree, w = _sheet2(s, P, f, k, h, refs, shared, kin, crank_own, under)
         lay = arrange(tree, field)
         # a plan placed at a coarser μ_F than its details were reckoned at may not hold them
         # in its box (they would run into the captions round it): reckoned again at that μ_F
         spilt = _spilt(lay)
         if spilt:
-            tree, w = _sheet2(s, P, f, k, h, {**refs, **spilt}, shared, kin)
+            tree, w = _sheet2(s, P, f, k, h, {**refs, **spilt}, shared, kin, crank_own, under)
             lay = arrange(tree, field)
         tried.append((tree, formats.Sized(z.fmt, z.landscape, lay)))
         # on a smaller format than the largest, its polygons POLY_MM across as it was chosen
@@ -532,14 +584,17 @@ def _as_loads(
 def _sheet2(
     s: Solved, P: Position, f: Forces, k: int | None, h: float,
     refs: Mapping[str, tuple[float, tuple[float, float]]] | None = None, shared: bool = True,
-    kin: bool = True,
+    kin: bool = True, crank_own: bool = False, under: bool = False,
 ) -> tuple[Tree, dict[View, float]]:  # fmt: skip
     """Sheet 2's tree, its tables and texts ``h`` high, and the scales its views want. The
     force polygons are drawn with their details where ``refs`` gives their reference μ_F and
     room (mm; by their titles), else alone (for a first arrangement). The groups and the crank
     cut out are drawn at the mechanism's μ_l (``shared``), else at one μ_l of their own. Where
     the sweep waives the crank's length, the mechanism is sought at the kinematic sheet's μ_l
-    (``kin``: where that fits)."""
+    (``kin``: where that fits). The crank cut out is drawn at a μ_l of its own that draws it
+    CRANK_MM long where ``crank_own`` (where the mechanism's draws it short). ``under``: one
+    arrangement more, the polygons under the mechanism and the groups over the lever (room
+    for the groups at the mechanism's μ_l; tried only where the others leave it broken)."""
     lk = s.linkage
     # the length scales from the geometry alone (a change of ω or of the loads rescales no
     # drawing of links): never finer than links_scale; the crank CRANK_MM long where the
@@ -550,6 +605,9 @@ def _sheet2(
     title = WORDS("mech", k=k, phi=phi) if k is not None else WORDS("mech_phi", phi=phi)
     mech = _Loaded(lk, P, f, title)
     letters = detail_letters([*P.pos, *_FORCE_LETTERS, load_name(chr(0x424))])
+    # the crank drawn short on the mechanism (where the format keeps no μ_l that draws it
+    # CRANK_MM long) is drawn again in a detail (its letter taken where it is drawn)
+    mech.solved = s
     if sweep_mm(s, crank_scale(lk).k) <= SWEEP_MAX_MM:
         mech.readable, mech.readable_mm = lk.length, CRANK_MM
     else:
@@ -558,7 +616,7 @@ def _sheet2(
             # sheet draws it, where the format allows it (review 5: a crusher at 1:15 beside 1:5)
             mech.readable, mech.readable_mm = lk.length, lk.length / kinematic_scale(s).k
         # the crank may come out short on it: its detail's letter, the first of the sheet's
-        mech.solved, mech.detail = s, next(letters)
+        mech.detail = next(letters)
     bodies = [_FreeBody(lk, P, gf) for gf in f.groups]
     # one μ_l for the mechanism and its cut-out groups and crank (issue 27, point 7): one scale
     # group, the coarsest any of them needs, stated in every caption
@@ -573,6 +631,10 @@ def _sheet2(
             b.group = L_GROUP
     # the search counts a scale group once, at its heaviest member's weight: the mechanism's
     # (2) and one for each drawing of links it draws at its scale, as each had on its own
+    for b in bodies:
+        if crank_own and b.gf.group is None:
+            b.group, b.least_k = CRANK_L, crank_scale(lk).k
+            b.readable, b.readable_mm = lk.length, CRANK_MM
     mech.weight = 2.0 + sum(b.group == L_GROUP for b in bodies)
     if not shared:
         for b in bodies:
@@ -627,6 +689,7 @@ def _sheet2(
         Row(Column(mech, lever), Column(band, Row(Grid(*polys), right))),
         Column(Row(mech, lever, right), groups),
         Row(Column(mech, lever), Column(Grid(*bodies), Grid(*polys)), right),
+        *([Row(Column(mech, Grid(*polys)), Column(band, lever), right)] if under else []),
     )
     # the format: the smallest on which the crank is CRANK_MM long (where the sweep allows it),
     # every force polygon at least POLY_MM across and its longest vector at least PLAN_MM (a
@@ -651,13 +714,16 @@ def _sheet2(
 
 def _band(bodies: Sequence[_FreeBody], k: float) -> Row:
     """The groups and the crank cut out side by side, packed by their sizes at ``k`` m/mm
-    (margins and captions included): the tallest, and beside it the others one under another
-    where together they are no taller than it (a flat group and the crank beside a tall
-    group), else all in a row; each cell as wide (high) as its drawing, where equal cells would
-    leave the tall one small and the flat one empty, and at least as wide as its caption. The
-    splits are given: the search spends nothing on them."""
-    size = {id(b): (max(_side(b)[0] / k + 2.0 * b.margin, title_width(b)),
-                    _side(b)[1] / k + 2.0 * b.margin + b.title_room()) for b in bodies}  # fmt: skip
+    (a crank at its own μ_l, :data:`CRANK_L`, at that; margins and captions included): the
+    tallest, and beside it the others one under another where together they are no taller
+    than it (a flat group and the crank beside a tall group), else all in a row; each cell as
+    wide (high) as its drawing, where equal cells would leave the tall one small and the flat
+    one empty, and at least as wide as its caption. The splits are given: the search spends
+    nothing on them."""
+    ks = {id(b): b.least_k if b.group == CRANK_L else k for b in bodies}
+    size = {id(b): (max(_side(b)[0] / ks[id(b)] + 2.0 * b.margin, title_width(b)),
+                    _side(b)[1] / ks[id(b)] + 2.0 * b.margin + b.title_room())
+            for b in bodies}  # fmt: skip
     tall = max(bodies, key=lambda b: size[id(b)][1])
     rest = [b for b in bodies if b is not tall]
     if len(rest) > 1 and sum(size[id(b)][1] for b in rest) <= size[id(tall)][1]:
@@ -870,10 +936,26 @@ def _moment_radius(v: Viewport, c: Vec, arcs: dict[tuple[float, float], int]) ->
 SCALES_H = 2.5
 
 
-def further_room(fs: ForceScales, omitted: Sequence[str] = ()) -> float:
-    """The room (mm) of the line under a view's caption that states its insets' μ_F and the
-    forces it leaves out (:func:`draw_insets`); 0 where it has neither."""
-    return SCALES_H * TITLE_LEAD if fs.tiered or omitted else 0.0
+def further_room(fs: ForceScales, omitted: Sequence[str] = (), width: float = 0.0) -> float:
+    """The room (mm) of the lines under a view's caption that state its insets' μ_F and the
+    forces it leaves out (:func:`draw_insets`), those wrapped at ``width`` mm (the caption's:
+    the view's box is never narrower); 0 where it has neither."""
+    if not (fs.tiered or omitted):
+        return 0.0
+    lines = len(_omitted_lines(omitted, width)) if omitted and width > 0.0 else 1
+    return SCALES_H * TITLE_LEAD + (max(lines, 1) - 1) * SCALES_H * TITLE_SPACING
+
+
+def _omitted_text(omitted: Sequence[str]) -> str:
+    """The words that name the forces a view leaves out as negligible, with their values."""
+    key = "omitted_one" if len(omitted) == 1 else "omitted"
+    return WORDS(key, share=fmt_number(VIEW_NEGLIGIBLE * 100.0), items=", ".join(omitted))
+
+
+def _omitted_lines(omitted: Sequence[str], width: float) -> list[str]:
+    """:func:`_omitted_text` in lines at most ``width`` mm wide (review 6: the lever's line ran
+    across the next view's force plan)."""
+    return wrap(_omitted_text(omitted), width, SCALES_H)
 
 
 def omitted_values(fs: ForceScales, named: Sequence[tuple[str, float]]) -> list[str]:
@@ -888,23 +970,25 @@ def draw_insets(
     d: Drawing, at: Placed, view: View, ins: Insets, start: int, omitted: Sequence[str]
 ) -> None:
     """The view's insets (:class:`~geomcad.sheet.insets.Insets`) where its box is free, then
-    the line under its caption that states their μ_F and names the forces it leaves out. Each
-    inset's caption states its own μ_F too: where the line would run past the view's box into
-    the next view, it names only the forces left out."""
+    the lines under its caption that state their μ_F and name the forces it leaves out,
+    wrapped at the box's width into the lines its title's room holds (:func:`further_room`).
+    Each inset's caption states its own μ_F too: where the lines would need more room, they
+    name only the forces left out."""
     assert at.viewport is not None
     letters = getattr(view, "letters", None) or detail_letters()
     ins.draw(d, at.viewport, _field(at), start, letters)
-    parts = [ins.text()] if ins.drawn else []
-    if omitted:
-        key = "omitted_one" if len(omitted) == 1 else "omitted"
-        share = fmt_number(VIEW_NEGLIGIBLE * 100.0)
-        parts.append(WORDS(key, share=share, items=", ".join(omitted)))
-    if ins.drawn and text_width(";  ".join(parts), SCALES_H) > at.box[2] - at.box[0]:
-        parts = parts[1:]
-    if parts:
-        lines = (view.title_lines - 1) * TITLE_SPACING  # a caption broken into lines
-        top = at.box[1] + view.title_height * (TITLE_LEAD + lines) + SCALES_H
-        d.text(";  ".join(parts), (at.box[0], top), SCALES_H)
+    width = at.box[2] - at.box[0]
+    room = max(len(_omitted_lines(omitted, title_width(view))) if omitted else 1, 1)
+    lines: list[str] = []
+    if ins.drawn:
+        text = ins.text() + (";  " + _omitted_text(omitted) if omitted else "")
+        lines = wrap(text, width, SCALES_H)
+    if not ins.drawn or len(lines) > room:
+        lines = _omitted_lines(omitted, width) if omitted else []
+    head = (view.title_lines - 1) * TITLE_SPACING  # a caption broken into lines
+    top = at.box[1] + view.title_height * (TITLE_LEAD + head) + SCALES_H
+    for i, line in enumerate(lines):
+        d.text(line, (at.box[0], top + i * SCALES_H * TITLE_SPACING), SCALES_H)
 
 
 def _negligible_note(names: Sequence[str]) -> str:
@@ -926,7 +1010,9 @@ class _Forces(_ByScale, View):
     letters: Iterator[str] | None = None
 
     def title_room(self) -> float:
-        return super().title_room() + further_room(self.scales_at(None), self.omitted)
+        return super().title_room() + further_room(
+            self.scales_at(None), self.omitted, title_width(self)
+        )
 
     @property
     def kF(self) -> Scale:
@@ -1003,32 +1089,34 @@ class _Loaded(_Forces):
         draw_insets(d, at, self, ins, start, self.omitted)
 
     def crank_detail(self, d: Drawing, at: Placed, drawn: Clearance) -> None:
-        """Where the view's μ_l draws the crank shorter than :data:`DETAIL_BELOW` of
-        :data:`~geomcad.sheet.linkage.CRANK_MM`: the crank enlarged in a detail (ESKD 2.305; the
-        kinematic sheet's :class:`~geomcad.sheet.linkage._CrankDetail` in the force position),
-        lettered by a circle round the crank, at the finest GOST scale that draws the crank at
-        most 1.5 CRANK_MM long, at least twice as long as here and DETAIL_BELOW of CRANK_MM,
-        and finds room in the view's box clear of what it draws (``drawn``); the crank's loads
-        and M_ур on it at the view's μ_F. Nothing where no such room is left."""
-        v, s, letter = at.viewport, self.solved, self.detail
-        if v is None or s is None or letter is None:
+        """Where the view's μ_l draws the crank shorter than
+        :data:`~geomcad.sheet.linkage.CRANK_MM` (the size rule itself): the crank enlarged in a
+        detail (ESKD 2.305; the kinematic sheet's :class:`~geomcad.sheet.linkage._CrankDetail`
+        in the force position), lettered by a circle round the crank, at the finest GOST scale
+        that draws the crank at most 1.5 CRANK_MM long, at least CRANK_MM (finer than the
+        view's), and finds room in the view's box clear of what it draws (``drawn``); the
+        crank's loads and M_ур on it at the view's μ_F. Its letter is ``detail``, else the next
+        of the sheet's ``letters`` (taken only where the detail is drawn). Nothing where no
+        such room is left."""
+        v, s = at.viewport, self.solved
+        if v is None or s is None or (self.detail is None and self.letters is None):
             return
         lk, P = self.lk, self.P
         here = v.scale.mm(lk.length)
-        if here >= DETAIL_BELOW * CRANK_MM:
+        if here >= CRANK_MM * (1.0 - tol.REL_LENGTH):
             return
         # the crank's loads at the view's own μ_F (those too short there are in the view's
         # insets, :func:`draw_insets`, not drawn a second time here)
         loads = [ld for ld in self.f.loads.get(1, [])
                  if ld.force is None or self.fs.tier(ld.force.norm) == 0]  # fmt: skip
         arrows = [ld.force.norm / self.fs.k for ld in loads if ld.force is not None]
-        least = max(2.0 * here, DETAIL_BELOW * CRANK_MM)
+        least = CRANK_MM
         O1 = lk.frame[lk.pivot]
         pivot = v.p(O1)
         segs = drawn.segments()
         for k in sorted(GOST_K):
             crank = lk.length / k
-            if not least * (1.0 - tol.REL_LENGTH) <= crank <= 1.5 * CRANK_MM:
+            if k >= v.scale.k or not least * (1.0 - tol.REL_LENGTH) <= crank <= 1.5 * CRANK_MM:
                 continue
             half = max(CRANK_REACH * crank, M_BAL_MM + LABEL_ROOM_MM,
                        crank + max(arrows, default=0.0) + LABEL_ROOM_MM)  # fmt: skip
@@ -1038,6 +1126,10 @@ class _Loaded(_Forces):
                 continue
             x0, y0 = spot
             scale = Scale(k, "l")
+            letter = self.detail
+            if letter is None:
+                assert self.letters is not None
+                letter = self.detail = next(self.letters)
             det = _CrankDetail(s, letter, only=P, reach=CRANK_REACH)
             inner = (x0, y0 + DETAIL_TITLE_MM, x0 + w, y0 + h)
             pl = Placed(
@@ -1420,7 +1512,9 @@ class _Lever(_ByScale, View):
         return True
 
     def title_room(self) -> float:
-        return super().title_room() + further_room(self.scales_at(None), self.omitted)
+        return super().title_room() + further_room(
+            self.scales_at(None), self.omitted, title_width(self)
+        )
 
     def caption(self, scale: Scale | None) -> str:
         m = WORDS("m_bal", value=_load(self.f.lever.M_bal))
