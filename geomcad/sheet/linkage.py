@@ -1495,6 +1495,22 @@ def _to_segment(p: tuple[float, float], a: tuple[float, float], b: tuple[float, 
     return math.dist(p, (a[0] + t * dx, a[1] + t * dy))
 
 
+def _leader_off(
+    p: tuple[float, float], q: tuple[float, float], boxes: Sequence[Box], enough: float
+) -> float:
+    """How near (mm) the segment ``p``–``q`` comes to the ``boxes``; any figure below
+    ``enough`` as soon as one is found (the caller asks only whether it is that near)."""
+    env = (min(p[0], q[0]), min(p[1], q[1]), max(p[0], q[0]), max(p[1], q[1]))
+    out = math.inf
+    for n in boxes:
+        if _gap(env, n) >= out:
+            continue
+        out = min(out, _segment_to_box(p, q, n))
+        if out < enough:
+            break
+    return out
+
+
 def keep_link_numbers_clear(sheet: Sheet, area: Box) -> None:
     """Each point's letter a thin position's line runs through (the crank's pivot among its
     twelve positions), and each link's number (a label of digits higher than
@@ -1569,20 +1585,23 @@ def keep_link_numbers_clear(sheet: Sheet, area: Box) -> None:
                         continue
                     if keep_same and any(_gap(c, n) < LINK_SAME_MM for n in same):
                         continue
-                    if any(_gap(c, o) < NUMBER_SPACE for o in others) or ink.crossed([c]):
+                    if any(_gap(c, o) < NUMBER_SPACE for o in others):
+                        continue
+                    off = math.inf
+                    # what its leader must keep: LINK_CLEAR_MM, or (relaxed) more than the best
+                    need = LINK_CLEAR_MM if keep_lead else best + tol.SHEET_MM
+                    if r > LINK_LEADER_MM and t.text.isdigit():
+                        mid = ((c[0] + c[2]) / 2.0, (c[1] + c[3]) / 2.0)
+                        off = _leader_off(p, mid, lead, need)
+                    if off < need or (not keep_lead and off == need):
+                        continue  # its leader would run among the positions' numbers
+                    if ink.crossed([c]):
                         continue
                     if r > LINK_LEADER_MM and _through_text(p, c, others):
                         continue  # its leader would run through another text
-                    mid = ((c[0] + c[2]) / 2.0, (c[1] + c[3]) / 2.0)
-                    off = min((_segment_to_box(p, mid, n) for n in lead), default=math.inf)
-                    off = math.inf if r <= LINK_LEADER_MM or not t.text.isdigit() else off
+                    found, r_found, best = c, r, off
                     if keep_lead:
-                        if off < LINK_CLEAR_MM:
-                            continue  # its leader would run among the positions' numbers
-                        found, r_found = c, r
                         break
-                    if off > best + tol.SHEET_MM:
-                        found, r_found, best = c, r, off
             if found is not None:
                 break
         if found is None:
