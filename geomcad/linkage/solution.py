@@ -155,7 +155,16 @@ def largest_accelerations(
     """The crank angles of the acceleration plans by default: in each stroke (working, then
     idle) the first numbered position where |the output's acceleration| is largest (within
     :data:`~geomcad.tol.DERIVED` of the maximum, relative); a stroke with no numbered position
-    inside it gives its middle."""
+    inside it gives its middle.
+
+    Where the output's strokes are mirror images (the working stroke takes half a turn and
+    |the output's acceleration| at the turn ψ equals that at 2π − ψ in every numbered
+    position: an axial slider-crank, a V engine's cylinders) the idle stroke's largest is the
+    mirror of the working stroke's, and its plan would show nothing new (the same |a|, the
+    same drawing turned over). The idle stroke's plan is then drawn where its output's
+    acceleration is largest among the positions that are not that mirror: the other end of
+    the stroke, where the acceleration has the other sign (review 6 item 7). Files whose
+    picks already differ keep them."""
     n = len(drawn)
     step = 2.0 * math.pi / n
     edge = tol.DERIVED
@@ -167,15 +176,26 @@ def largest_accelerations(
             working.append(k)
         elif cyc.phi_working + edge < turn:
             idle.append(k)
+    acc = {k: abs(output_acceleration(lk, drawn[k])) for k in (*working, *idle)}
+    scale = max(acc.values(), default=0.0)
+    mirrored = (
+        bool(working)
+        and abs(cyc.phi_working - math.pi) <= edge * math.pi
+        and all(n - k in acc and abs(acc[k] - acc[n - k]) <= edge * scale for k in working)
+    )
     mids = stroke_middles(lk, cyc)
-    out = []
+    out: list[float] = []
+    first: int | None = None
     for ks, mid in ((working, mids[0]), (idle, mids[1])):
+        if first is not None and mirrored and len(ks) > 1:
+            ks = [k for k in ks if k != n - first]  # not the mirror of the working stroke's
         if not ks:
             out.append(mid)
             continue
-        a = [abs(output_acceleration(lk, drawn[k])) for k in ks]
-        top = max(a)
-        out.append(drawn[next(k for k, x in zip(ks, a, strict=True) if x >= top * (1 - edge))].phi)
+        top = max(acc[k] for k in ks)
+        pick = next(k for k in ks if acc[k] >= top * (1 - edge))
+        first = pick if first is None else first
+        out.append(drawn[pick].phi)
     return tuple(out)
 
 

@@ -592,9 +592,10 @@ def link_bodies(
     ``slot_half`` (model units): a yoke's slot drawn as a slot, the outline of its two sides
     this far either side of its axis (the block slides between them), its rod from the slot's
     side; 0: the slot as its axis line. ``axes``: each link through its pairs only, a point
-    no other link carries (a coupler point M, a centre of mass) left out: a thin position's
-    drawing, where the coupler's triangle in every position would weave a web (the point's
-    path and numbers show it); an offset slot without its arm from the pivot (the arms of
+    no other link carries (a coupler point M, a centre of mass) left out, a link of three or
+    more joints drawn as one side, between its first two (its own in its group): a thin
+    position's drawing, where the coupler's triangle in every position would weave a web (the
+    points' paths and numbers show it); an offset slot without its arm from the pivot (the arms of
     every position would melt into one blot at the pivot: the slots touch the offset's
     circle, drawn once)."""
     out: dict[str, list[Body]] = {}
@@ -628,6 +629,17 @@ def link_bodies(
                 out[str(link)] = [Body.of([C, foot, foot + d * far])]
         elif len(uniq) == 2:
             out[str(link)] = [Body.of(uniq)]
+        elif len(uniq) > 2 and axes:
+            # a thin position of a rigid triangle (a coupler ABE with a group hung on E): one
+            # side, between the link's own joints in its group; the other points' paths and
+            # numbers show them (twelve whole triangles once wove a web over the view). Points
+            # on one line (a rocker CBE with E beyond B): the line through them all.
+            u = (uniq[1] - uniq[0]).unit()
+            if all(abs(u.cross(q - uniq[0])) <= tol.DERIVED * max(1.0, q.norm) for q in uniq):
+                ends = sorted(uniq, key=lambda q: u.dot(q - uniq[0]))
+                out[str(link)] = [Body.of([ends[0], ends[-1]])]
+            else:
+                out[str(link)] = [Body.of(uniq[:2])]
         elif len(uniq) > 2:
             cx = sum(q.x for q in uniq) / len(uniq)
             cy = sum(q.y for q in uniq) / len(uniq)
@@ -723,7 +735,7 @@ def _mechanism_extent(s: Solved) -> tuple[float, float, float, float]:
                 pts += list(b.points)
     O1 = lk.frame[lk.pivot]
     pts += [O1 + Vec(lk.length, lk.length), O1 - Vec(lk.length, lk.length)]
-    for path in _paths(lk).values():
+    for path in _paths(lk, traced_joints(lk)).values():
         pts += path
     xs = [q.x for q in pts]
     ys = [q.y for q in pts]
@@ -732,11 +744,13 @@ def _mechanism_extent(s: Solved) -> tuple[float, float, float, float]:
     return x0 - pad, y0 - pad, x1 + pad, y1 + pad
 
 
-def _paths(lk: Linkage) -> dict[str, list[Vec]]:
-    """The paths of the named points over a turn (sampled by the sweep)."""
+def _paths(lk: Linkage, joints: Sequence[str] = ()) -> dict[str, list[Vec]]:
+    """The paths of the named points and of the groups' ``joints`` over a turn (sampled by
+    the sweep)."""
     phi = np.linspace(0.0, 2.0 * math.pi, DIAGRAM_SAMPLES)
     st = sweep(lk, phi, order=0)
-    return {p.name: [Vec(float(a), float(b)) for a, b in st.pos[p.name]] for p in lk.points}
+    names = dict.fromkeys((*(p.name for p in lk.points), *joints))
+    return {n: [Vec(float(a), float(b)) for a, b in st.pos[n]] for n in names}
 
 
 def _under_title(d: Drawing, at: Placed, ext: tuple[float, float, float, float]) -> Viewport:
@@ -786,7 +800,7 @@ class _Mechanism(View):
         s = self.s
         lk = s.linkage
         v.circle(lk.frame[lk.pivot], lk.length, "centre")
-        for path in _paths(lk).values():
+        for path in _paths(lk, traced_joints(lk)).values():
             v.polyline(path, "centre")
         for g in lk.groups:  # an offset slot's circle: the thin positions' slots touch it
             if g.kind == "RPR" and g.offset:
@@ -833,7 +847,8 @@ class _Mechanism(View):
             and any(is_block(mech, k) and k not in bodies for k in pair.links)
         ]  # fmt: skip
         # the crank's joint, the output and every named point whose path is traced
-        traced = list(dict.fromkeys((lk.joint, lk.output, *(p.name for p in lk.points))))
+        traced = list(dict.fromkeys((lk.joint, lk.output, *(p.name for p in lk.points),
+                                     *numbered_tracks(lk))))  # fmt: skip
         for name in traced:
             for P in s.drawn:
                 if not any(_in_block(v.p(P.pos[name]), c, u) for c, u in blocks):
@@ -872,17 +887,37 @@ class _Mechanism(View):
 
 
 def numbered_tracks(lk: Linkage) -> tuple[str, ...]:
-    """The points whose positions the mechanism's view numbers: the crank's joint, the output
-    and every named point, but a centre of mass that is nothing more (no group hangs on it, no
-    load acts at it): its path is drawn and dotted, its letter stands at the principal position,
-    and its positions follow from its link's, which are numbered; numbers of its own would only
-    stand among the joints' ones (S3's "9", "10" beside the crank circle's)."""
+    """The points whose positions the mechanism's view numbers: every moving point (the
+    crank's joint, the output, each group's joint, every named point), but a centre of mass
+    that is nothing more (no group hangs on it, no load acts at it): its path is drawn and
+    dotted, its letter stands at the principal position, and its positions follow from its
+    link's, which are numbered; numbers of its own would only stand among the joints' ones
+    (S3's "9", "10" beside the crank circle's). A group's joint is numbered as a named point
+    is (review 6: a V compressor's second piston B once stood in twelve unnumbered places)."""
     centres = {m.centre for m in lk.masses.values()}
     hung = {q for g in lk.groups for q in g.known} | {ld.point for ld in lk.loads if ld.point}
+    joints = (g.joint for g in lk.groups if g.joint)
     return tuple(
         name
-        for name in dict.fromkeys((lk.joint, lk.output, *(p.name for p in lk.points)))
+        for name in dict.fromkeys((lk.joint, lk.output, *(p.name for p in lk.points), *joints))
         if name in (lk.joint, lk.output) or name not in centres or name in hung
+    )
+
+
+def traced_joints(lk: Linkage) -> tuple[str, ...]:
+    """The groups' joints whose paths the mechanism's view draws (as a named point's): every
+    numbered joint but the output, the crank's joint (its circle is drawn) and a slider's
+    joint on the frame's guide (its path is the guide's axis, drawn with the guide)."""
+    named = {p.name for p in lk.points}
+    on_frame = {
+        g.joint
+        for g in lk.groups
+        if g.kind == "PRP" or (g.kind == "RRP" and g.guide is not None and g.guide.fixed)
+    }
+    return tuple(
+        n
+        for n in numbered_tracks(lk)
+        if n not in (lk.joint, lk.output) and n not in named and n not in on_frame
     )
 
 
@@ -1379,6 +1414,12 @@ LINK_CLEAR_MM, LINK_STEP_MM, LINK_REACH_MM, LINK_LEADER_MM = 5.0, 0.5, 20.0, 5.0
 #: Texts side by side read as one line: a link's number keeps LINK_CLEAR_MM times this from a
 #: position's number beside it in its line (a row of numbers is read along).
 LINK_ALONG = 3.0
+#: A link's number keeps this much (mm) from a position's number of the same digits (whitworth's
+#: link "3" once stood among position 3's "3" at A and at B: three "3"s, one of them the link's).
+LINK_SAME_MM = 15.0
+#: A link's number looks this far (mm) for a place that keeps those rules too (a point's letter
+#: only LINK_REACH_MM: it names the point it stands by).
+LINK_NUMBER_REACH_MM = 30.0
 #: The directions tried round the point, every 10°.
 _LINK_DIRS = [(math.cos(math.radians(a)), math.sin(math.radians(a))) for a in range(0, 360, 10)]
 
@@ -1426,6 +1467,50 @@ def _reach(p: tuple[float, float], r: float, w: float, h: float) -> Box:
     return (p[0] - r - w - 1.0, p[1] - r - h - 1.0, p[0] + r + w + 1.0, p[1] + r + h + 1.0)
 
 
+def _segment_to_box(a: tuple[float, float], b: tuple[float, float], x: Box) -> float:
+    """The distance (mm) from the segment ``a``–``b`` to the box ``x`` (0 where they meet)."""
+    corners = ((x[0], x[1]), (x[2], x[1]), (x[2], x[3]), (x[0], x[3]))
+    edges = list(itertools.pairwise((*corners, corners[0])))
+    if _to_box(a, x) == 0.0 or any(_cross(a, b, c, d) for c, d in edges):
+        return 0.0
+    return min(_to_box(a, x), _to_box(b, x), *(_to_segment(c, a, b) for c in corners))
+
+
+def _cross(
+    a: tuple[float, float], b: tuple[float, float], c: tuple[float, float], d: tuple[float, float]
+) -> bool:
+    """Whether the segments a–b and c–d cross."""
+
+    def side(p: tuple[float, float], q: tuple[float, float], r: tuple[float, float]) -> float:
+        return (q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0])
+
+    return side(a, b, c) * side(a, b, d) <= 0.0 and side(c, d, a) * side(c, d, b) <= 0.0
+
+
+def _to_segment(p: tuple[float, float], a: tuple[float, float], b: tuple[float, float]) -> float:
+    """The distance (mm) from the point ``p`` to the segment ``a``–``b``."""
+    dx, dy = b[0] - a[0], b[1] - a[1]
+    n = dx * dx + dy * dy
+    t = 0.0 if n == 0.0 else min(1.0, max(0.0, ((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / n))
+    return math.dist(p, (a[0] + t * dx, a[1] + t * dy))
+
+
+def _leader_off(
+    p: tuple[float, float], q: tuple[float, float], boxes: Sequence[Box], enough: float
+) -> float:
+    """How near (mm) the segment ``p``–``q`` comes to the ``boxes``; any figure below
+    ``enough`` as soon as one is found (the caller asks only whether it is that near)."""
+    env = (min(p[0], q[0]), min(p[1], q[1]), max(p[0], q[0]), max(p[1], q[1]))
+    out = math.inf
+    for n in boxes:
+        if _gap(env, n) >= out:
+            continue
+        out = min(out, _segment_to_box(p, q, n))
+        if out < enough:
+            break
+    return out
+
+
 def keep_link_numbers_clear(sheet: Sheet, area: Box) -> None:
     """Each point's letter a thin position's line runs through (the crank's pivot among its
     twelve positions), and each link's number (a label of digits higher than
@@ -1434,14 +1519,19 @@ def keep_link_numbers_clear(sheet: Sheet, area: Box) -> None:
     (a view's box on the finished sheet), moves to the nearest place round the point it names
     that keeps that much from every number, clear of every other text and of every drawn
     line; a leader joins it to its point where it stands further than :data:`LINK_LEADER_MM`
-    from it. Where no place within :data:`LINK_REACH_MM` does, it stays."""
+    from it. Where no place within :data:`LINK_REACH_MM` does, it stays.
+
+    A link's number also keeps :data:`LINK_SAME_MM` from a position's number of the same
+    digits, and its leader keeps :data:`LINK_CLEAR_MM` from every position's number (a leader
+    run among a row of numbers reads as one of theirs: the shaper's "5" once ran among B's)."""
 
     def inside(t: TextItem) -> bool:
         return area[0] <= t.at[0] <= area[2] and area[1] <= t.at[1] <= area[3]
 
     texts = [t for t in sheet.texts() if inside(t)]
-    numbers = [_text_box(t) for t in texts
-               if t.role == "label" and t.text.isdigit() and t.height == NUMBER_H]  # fmt: skip
+    digits = [(t.text, _text_box(t)) for t in texts
+              if t.role == "label" and t.text.isdigit() and t.height == NUMBER_H]  # fmt: skip
+    numbers = [n for _, n in digits]
     anchors = {id(item): at for item, at in sheet.anchors}
     ink, thin = _Ink(sheet), _Ink(sheet, ("thin",))
     current = {id(o): _text_box(o) for o in texts}  # the boxes as moved so far
@@ -1449,43 +1539,75 @@ def keep_link_numbers_clear(sheet: Sheet, area: Box) -> None:
         if t.role != "label" or t.height <= NUMBER_H or id(t) not in anchors:
             continue
         b = _text_box(t)
+        same = [n for txt, n in digits if txt == t.text]
         if t.text.isdigit():
-            if all(_apart(b, n) >= LINK_CLEAR_MM for n in numbers):
+            if all(_apart(b, n) >= LINK_CLEAR_MM for n in numbers) and all(
+                _gap(b, n) >= LINK_SAME_MM for n in same
+            ):
                 continue
         elif not ("A" <= t.text[:1] <= "Z" and thin.crossed([b], 0.0)):
             continue  # a point's letter moves only where a thin position's line runs through it
         p = anchors[id(t)]
         w, h = b[2] - b[0], b[3] - b[1]
-        r, steps = 0.0, round(LINK_REACH_MM / LINK_STEP_MM)
+        reach = LINK_NUMBER_REACH_MM if t.text.isdigit() else LINK_REACH_MM
+        r, steps = 0.0, round(reach / LINK_STEP_MM)
         # only the boxes near the places tried can refuse one (the rest, asked of each of
         # them, cost the sheet a tenth of a second)
         env = _reach(p, steps * LINK_STEP_MM, w, h)
         others = [bx for k, bx in current.items() if k != id(t) and _gap(env, bx) < _NEAR_MM]
         near = [n for n in numbers if _apart(env, n) < LINK_CLEAR_MM + 1.0]
+        same = [n for n in same if _gap(env, n) < LINK_SAME_MM + 1.0] if t.text.isdigit() else []
+        # the numbers its leader keeps clear of: near enough to matter, but not those at its
+        # point itself (every leader starts there)
+        lead = [n for n in numbers if LINK_CLEAR_MM <= _to_box(p, n) <
+                steps * LINK_STEP_MM + w + h + LINK_CLEAR_MM]  # fmt: skip
         found: Box | None = None
-        for step in range(1, steps + 1):
+        # the places that keep every rule first; then, where the number stands too near a
+        # position's number as it is, those that let its leader pass nearer, then those that
+        # stand nearer a number of its own digits (the rules of before)
+        tiers = [(True, True)]
+        if any(_apart(b, n) < LINK_CLEAR_MM for n in numbers) and t.text.isdigit():
+            tiers += [(True, False), (False, False)]
+        r_found = 0.0
+        for keep_same, keep_lead in tiers:
+            best = -1.0  # a relaxed tier: the place whose leader stands clearest of the numbers
+            for step in range(1, steps + 1):
+                if found is not None and keep_lead:
+                    break
+                r = step * LINK_STEP_MM
+                for ux, uy in _LINK_DIRS:
+                    cx, cy = p[0] + ux * (r + w / 2.0), p[1] + uy * (r + h / 2.0)
+                    c = (cx - w / 2.0, cy - h / 2.0, cx + w / 2.0, cy + h / 2.0)
+                    if not (area[0] <= c[0] and c[2] <= area[2] and area[1] <= c[1]
+                            and c[3] <= area[3]):  # fmt: skip
+                        continue
+                    if any(_apart(c, n) < LINK_CLEAR_MM for n in near):
+                        continue
+                    if keep_same and any(_gap(c, n) < LINK_SAME_MM for n in same):
+                        continue
+                    if any(_gap(c, o) < NUMBER_SPACE for o in others):
+                        continue
+                    off = math.inf
+                    # what its leader must keep: LINK_CLEAR_MM, or (relaxed) more than the best
+                    need = LINK_CLEAR_MM if keep_lead else best + tol.SHEET_MM
+                    if r > LINK_LEADER_MM and t.text.isdigit():
+                        mid = ((c[0] + c[2]) / 2.0, (c[1] + c[3]) / 2.0)
+                        off = _leader_off(p, mid, lead, need)
+                    if off < need or (not keep_lead and off == need):
+                        continue  # its leader would run among the positions' numbers
+                    if ink.crossed([c]):
+                        continue
+                    if r > LINK_LEADER_MM and _through_text(p, c, others):
+                        continue  # its leader would run through another text
+                    found, r_found, best = c, r, off
+                    if keep_lead:
+                        break
             if found is not None:
-                break
-            r = step * LINK_STEP_MM
-            for ux, uy in _LINK_DIRS:
-                cx, cy = p[0] + ux * (r + w / 2.0), p[1] + uy * (r + h / 2.0)
-                c = (cx - w / 2.0, cy - h / 2.0, cx + w / 2.0, cy + h / 2.0)
-                if not (
-                    area[0] <= c[0] and c[2] <= area[2] and area[1] <= c[1] and c[3] <= area[3]
-                ):
-                    continue
-                if any(_apart(c, n) < LINK_CLEAR_MM for n in near):
-                    continue
-                if any(_gap(c, o) < NUMBER_SPACE for o in others) or ink.crossed([c]):
-                    continue
-                if r > LINK_LEADER_MM and _through_text(p, c, others):
-                    continue  # its leader would run through another text
-                found = c
                 break
         if found is None:
             continue
         current[id(t)] = found
-        if _move_number(sheet, t, found, p, r):
+        if _move_number(sheet, t, found, p, r_found):
             ink = _Ink(sheet)
 
 
