@@ -30,8 +30,9 @@ SIXBARS = [
 def test_output_diagrams_share_their_height(path: Path) -> None:
     """Review 6: whitworth's s diagram took 250 mm of its column while v and a kept their
     least 60 mm; the crusher's were 73, 90 and 98 mm, the slider-crank's 107, 119 and 154.
-    Where equal boxes would draw a curve under DIAGRAM_SPAN_MM (its μ rounded coarse), the
-    search splits the column instead, and says so."""
+    Where equal boxes would draw a curve under DIAGRAM_SPAN_MM (its μ rounded coarse), or cost
+    the mechanism its scale beside plans on their own sheet, the search splits the column
+    instead, and says so."""
     s = geomcad.solve(str(path)).data
     lay, lays = _arranged(s)
     placed = [pl for z in lays for pl in z if isinstance(pl.view, Diagram)]
@@ -39,8 +40,9 @@ def test_output_diagrams_share_their_height(path: Path) -> None:
     heights = [pl.box[3] - pl.box[1] for pl in placed]
     if lay.balanced:
         assert max(heights) - min(heights) < 0.5, heights
-    else:
-        assert len(lay.squeezed) == 3 and min(lay.squeezed) < DIAGRAM_SPAN_MM, lay.squeezed
+    else:  # a curve too low at equal heights, or the mechanism finer with the plans apart
+        assert len(lay.squeezed) == 3
+        assert min(lay.squeezed) < DIAGRAM_SPAN_MM or lay.second, lay.squeezed
 
 
 @pytest.mark.parametrize("path", LINKAGES + SIXBARS, ids=lambda p: p.stem)

@@ -231,7 +231,8 @@ class Layout:
     mech: View  # the mechanism's view (on the first sheet)
     sized: tuple[formats.Sized, ...] = ()  # each sheet's format and arrangement
     #: the output's diagrams in equal heights; else their split searched, as the equal one
-    #: drew a curve shorter than DIAGRAM_SPAN_MM (these its curves' heights, mm)
+    #: drew a curve shorter than DIAGRAM_SPAN_MM (these its curves' heights, mm) or the
+    #: mechanism at a coarser scale
     balanced: bool = True
     squeezed: tuple[float, ...] = ()
 
@@ -445,13 +446,18 @@ def _arranged(s: Solved) -> tuple[Layout, tuple[Arranged, ...]]:
                 chosen = (detail, apart)
                 near = share
         detail, apart = chosen
+    # the search's split of the diagrams' column, on the arrangement chosen, where the equal
+    # heights leave a curve too low (its μ rounded coarse), or may cost the mechanism its
+    # scale: with the velocity plans on a sheet of their own, the column shares the first
+    # sheet with the mechanism (a test file's 1:1 became 1:2). Taken where it helps and keeps
+    # the size rules as well.
     squeezed = _spans(fitted)
-    if min(squeezed, default=DIAGRAM_SPAN_MM) < DIAGRAM_SPAN_MM - tol.SHEET_MM:
-        # equal heights leave a curve too low (its μ rounded coarse): the search splits the
-        # column, on the arrangement chosen, where that keeps the size rules as well
+    low = min(squeezed, default=DIAGRAM_SPAN_MM) < DIAGRAM_SPAN_MM - tol.SHEET_MM
+    if low or second:
         balanced = False
         tried = attempt()
-        if _rules_share(s, tried[0]) >= _rules_share(s, fitted) - tol.REL_LENGTH:
+        finer = _mech_k(tried) < _mech_k((fitted, mech, second)) * (1.0 - tol.REL_LENGTH)
+        if (low or finer) and _rules_share(s, tried[0]) >= _rules_share(s, fitted) - tol.REL_LENGTH:
             fitted, mech, second = tried
         else:
             balanced = True
@@ -467,6 +473,12 @@ def _arranged(s: Solved) -> tuple[Layout, tuple[Arranged, ...]]:
     out = Layout(lays[0][mech].scale or Scale(1.0), k_v, lays[0].scale("a"), second, accel,
                  trees, mech, sized, balanced, squeezed)  # fmt: skip
     return out, lays
+
+
+def _mech_k(arranged: tuple[Sequence[tuple[Tree, formats.Sized]], View, bool]) -> float:
+    """The mechanism's length factor (m/mm) in an arrangement (inf where it has none)."""
+    scale = arranged[0][0][1].layout[arranged[1]].scale
+    return math.inf if scale is None else scale.k
 
 
 def _spans(fitted: Sequence[tuple[Tree, formats.Sized]]) -> tuple[float, ...]:
