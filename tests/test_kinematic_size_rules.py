@@ -86,10 +86,11 @@ def test_every_output_diagram_draws_its_curve_readably_high(name: str) -> None:
 
 
 def test_plans_too_large_for_one_sheet_go_on_a_sheet_of_their_own() -> None:
-    """The compressor's 12 velocity plans at pa ≥ 40 mm and its tall mechanism at 1:2 do not
-    share one A1 with the diagrams and tables: a second sheet holds the plans, titled as such,
-    and the first keeps every other view."""
-    s = _solved("compressor")
+    """The tall press's 12 velocity plans at pa ≥ 40 mm and its tall mechanism do not share
+    one A1 with the diagrams and tables: a second sheet holds the plans, titled as such, and
+    the first keeps every other view. (The compressor's did until its diagrams took equal
+    heights, issue 27: its one A1 now keeps both rules, pa 65 mm and the crank 32.5 mm.)"""
+    s = solve(parse(tomllib.loads((ROOT / "linkages_layout" / "tall_rod_press.toml").read_text())))
     lay = layout(s)
     assert lay.second
     sheets = kinematic_sheets(s, "x")

@@ -89,20 +89,32 @@ def code(pid: str) -> str:
 
     - the whole stem's letters and digits where they fit (``sixbar_press.toml`` →
       ``SIXBARPRESS``, ``sixbar-2013-6`` → ``SIXBAR20136``);
-    - else each word's initial, its numbers kept whole (``synthesis-slider-crank`` → ``SSC``,
-      ``synthesis-slotted-lever`` → ``SSL``, ``kulisa-23110713`` → ``K23110713``): two stems
-      that share a long first word stay apart, as a cut at :data:`CODE_CHARS` letters does not
-      keep them;
-    - a single word longer than that, its first :data:`CODE_CHARS` letters.
+    - else each word cut to its first k letters, k the most that fits (the letters left over go
+      one each to the first words still longer), its numbers kept whole, so that the code reads
+      back to the file (``tangent_rocking_slider`` → ``TANGROCKSLID``, not the initials TRS;
+      ``kulisa-23110713`` → ``KULI23110713``); two stems that share a long first word stay
+      apart, as a cut at :data:`CODE_CHARS` letters does not keep them;
+    - a single word longer than that, or numbers alone longer, the first :data:`CODE_CHARS`.
 
     A stem without letters or digits gives ``""``.
 
     >>> code("sixbar_press.toml"), code("synthesis-slotted-lever.toml"), code("a/kulisa-23110713")
-    ('SIXBARPRESS', 'SSL', 'K23110713')
+    ('SIXBARPRESS', 'SYNTSLOTLEVE', 'KULI23110713')
     """
-    words = _words(stem(pid))
-    whole = "".join(words).upper()
-    if len(whole) <= CODE_CHARS or len(words) == 1:
+    words = [w.upper() for w in _words(stem(pid))]
+    whole = "".join(words)
+    letters = [w for w in words if not w.isdigit()]
+    room = CODE_CHARS - sum(len(w) for w in words if w.isdigit())
+    if len(whole) <= CODE_CHARS or len(words) == 1 or room < len(letters):
         return whole[:CODE_CHARS]
-    initials = "".join(w if w.isdigit() else w[0] for w in words).upper()
-    return initials[:CODE_CHARS]
+    k = max(j for j in range(1, room + 1) if sum(min(len(w), j) for w in letters) <= room)
+    spare = room - sum(min(len(w), k) for w in letters)
+    out = []
+    for w in words:
+        if w.isdigit():
+            out.append(w)
+            continue
+        take = min(len(w), k + (1 if spare > 0 and len(w) > k else 0))
+        spare -= take - min(len(w), k)
+        out.append(w[:take])
+    return "".join(out)

@@ -230,6 +230,11 @@ class Layout:
     trees: tuple[Tree, ...]  # one per sheet
     mech: View  # the mechanism's view (on the first sheet)
     sized: tuple[formats.Sized, ...] = ()  # each sheet's format and arrangement
+    #: the output's diagrams in equal heights; else their split searched, as the equal one
+    #: drew a curve shorter than DIAGRAM_SPAN_MM (these its curves' heights, mm) or the
+    #: mechanism at a coarser scale
+    balanced: bool = True
+    squeezed: tuple[float, ...] = ()
 
 
 def _accel_positions(s: Solved) -> tuple[Position, ...]:
@@ -242,7 +247,7 @@ def _accel_positions(s: Solved) -> tuple[Position, ...]:
 
 def _trees(
     s: Solved, accel: Sequence[Position], h: float = TEXT_H, enlarge: bool = False,
-    rules: tuple[bool, bool] = (False, False), apart: bool = False,
+    rules: tuple[bool, bool] = (False, False), apart: bool = False, balanced: bool = True,
 ) -> tuple[tuple[Tree, ...], _Mechanism, bool, dict[View, float]]:  # fmt: skip
     """The sheets' view trees (see the module's docstring), tables and orders written ``h``
     high, and the scales (model units per mm) the format is chosen to reach: the mechanism's
@@ -251,7 +256,8 @@ def _trees(
     (the crank's, pa's): the search on every format seeks that rule's scale (the coarsest of
     its series that keeps it: a view's ``most_k``), its room missing counted as a cost.
     ``apart``: the velocity plans on a sheet of their own (as with more than
-    :data:`PLANS_ON_SHEET` positions)."""
+    :data:`PLANS_ON_SHEET` positions). ``balanced``: the output's s, v and a diagrams in boxes
+    of one height, else the search splits their column."""
     lk = s.linkage
     n = len(s.drawn)
     second = apart or n > PLANS_ON_SHEET
@@ -276,6 +282,8 @@ def _trees(
     for P in accel:
         ap = PlanView(P.ap, title=WORDS("aplan", phi=_deg(P.phi, s)), group="a", show_scale=False,
                       weight=2.0, min_mm=SHORT_MM)  # fmt: skip
+        # πa′ = ω1²·l at least PA_MM, as pa (review 6: sixbar's was 27 mm in a 250 mm column)
+        ap.most_k = round_scale_down(lk.omega**2 * lk.length / PA_MM, "a", ap.series).k
         if any(P is Q for Q in s.drawn):
             cells.append(ap)
             continue
@@ -285,9 +293,12 @@ def _trees(
                       weight=2.0, min_mm=SHORT_MM)  # fmt: skip
         cells.append(Row(vp, ap))
     aplans: Tree = Grid(*cells, title=WORDS("aplans"), group="a", title_height=TITLE_H)
+    # s, v and a share the column's height (review 6: whitworth's s took 250 mm, v and a 60)
+    graphs = _diagrams(s)
     diagrams = Column(
-        Text([_through(s)], height=h), *_diagrams(s), title=WORDS("diagrams"), title_height=TITLE_H
-    )
+        Text([_through(s)], height=h), *graphs, title=WORDS("diagrams"), title_height=TITLE_H,
+        weights=(1.0,) * (len(graphs) + 1) if balanced else None,
+    )  # fmt: skip
     width = order_width(h)
     notes: list[View] = [_Note(WORDS("short", mm=fmt_number(SHORT_MM)), h)]
     if _along_guide(s, s.drawn[:1]) is not None:  # a slider's signed V, a: which way is +
@@ -383,11 +394,11 @@ def _arranged(s: Solved) -> tuple[Layout, tuple[Arranged, ...]]:
     accel = _accel_positions(s)
     fmts = sheet_formats(s.linkage)
     made: list[tuple[tuple[Tree, ...], _Mechanism, bool, dict[View, float]]] = []
-    detail, rules, apart = False, (False, False), False
+    detail, rules, apart, balanced = False, (False, False), False, True
 
     def make(i: int) -> Callable[[float], tuple[Tree, Mapping[View, float]]]:
         def tree(h: float) -> tuple[Tree, Mapping[View, float]]:
-            made.append(_trees(s, accel, h, detail, rules, apart))
+            made.append(_trees(s, accel, h, detail, rules, apart, balanced))
             t, _, _, wants = made[-1]
             return t[i], {v: k for v, k in wants.items() if v in _views(t[i])}
 
@@ -419,6 +430,7 @@ def _arranged(s: Solved) -> tuple[Layout, tuple[Arranged, ...]]:
         # arrangement's crank of 16 mm and pa of 20 mm)
         rules = (True, True)
         tries = dict.fromkeys(((detail, False), (detail, True), (True, False), (True, True)))
+        chosen = (detail, apart)
         near = _rules_share(s, fitted)
         for enlarge, sep in tries:
             if sep and len(s.drawn) > PLANS_ON_SHEET:
@@ -427,10 +439,28 @@ def _arranged(s: Solved) -> tuple[Layout, tuple[Arranged, ...]]:
             tried = attempt()
             if _rules_hold(s, tried[0]):
                 fitted, mech, second = tried
+                chosen = (detail, apart)
                 break
             if (share := _rules_share(s, tried[0])) > near:
                 fitted, mech, second = tried
+                chosen = (detail, apart)
                 near = share
+        detail, apart = chosen
+    # the search's split of the diagrams' column, on the arrangement chosen, where the equal
+    # heights leave a curve too low (its μ rounded coarse), or may cost the mechanism its
+    # scale: with the velocity plans on a sheet of their own, the column shares the first
+    # sheet with the mechanism (a test file's 1:1 became 1:2). Taken where it helps and keeps
+    # the size rules as well.
+    squeezed = _spans(fitted)
+    low = min(squeezed, default=DIAGRAM_SPAN_MM) < DIAGRAM_SPAN_MM - tol.SHEET_MM
+    if low or second:
+        balanced = False
+        tried = attempt()
+        finer = _mech_k(tried) < _mech_k((fitted, mech, second)) * (1.0 - tol.REL_LENGTH)
+        if (low or finer) and _rules_share(s, tried[0]) >= _rules_share(s, fitted) - tol.REL_LENGTH:
+            fitted, mech, second = tried
+        else:
+            balanced = True
     trees = tuple(t for t, _ in fitted)
     sized = tuple(z for _, z in fitted)
     lays = tuple(z.layout for z in sized)
@@ -441,8 +471,28 @@ def _arranged(s: Solved) -> tuple[Layout, tuple[Arranged, ...]]:
                 view.shown = short
     k_v = lays[-1].scale("v")
     out = Layout(lays[0][mech].scale or Scale(1.0), k_v, lays[0].scale("a"), second, accel,
-                 trees, mech, sized)  # fmt: skip
+                 trees, mech, sized, balanced, squeezed)  # fmt: skip
     return out, lays
+
+
+def _mech_k(arranged: tuple[Sequence[tuple[Tree, formats.Sized]], View, bool]) -> float:
+    """The mechanism's length factor (m/mm) in an arrangement (inf where it has none)."""
+    scale = arranged[0][0][1].layout[arranged[1]].scale
+    return math.inf if scale is None else scale.k
+
+
+def _spans(fitted: Sequence[tuple[Tree, formats.Sized]]) -> tuple[float, ...]:
+    """The heights (mm) at which the output's diagrams draw their curves, as arranged."""
+    out = []
+    for _, z in fitted:
+        for pl in z.layout:
+            if isinstance(pl.view, Diagram):
+                x0, y0, x1, y1 = pl.inner
+                ay = pl.view.axes(x1 - x0, y1 - y0)[1]
+                ys = [float(np.max(c.ys)) for c in pl.view.curves]
+                lo = [float(np.min(c.ys)) for c in pl.view.curves]
+                out.append(ay.mm(max(ys) - min(lo)))
+    return tuple(out)
 
 
 def _rules_hold(s: Solved, fitted: Sequence[tuple[Tree, formats.Sized]]) -> bool:
@@ -1864,7 +1914,8 @@ def _diagrams(s: Solved) -> list[Diagram]:
     n = _divisions(s)
 
     def s_of(at: npt.NDArray[np.float64]) -> npt.NDArray[np.float64]:
-        return np.asarray(_output_curves(s, at)[1], dtype=np.float64)
+        # from position 0 (an angle's output counts from its first sample), then ``at`` in order
+        return np.asarray(_output_curves(s, np.append(0.0, at))[1][1:], dtype=np.float64)
 
     psi_k, s_k, psi_v, v_ch, psi_a, a_ch = chord_derivatives(s_of, n, abs(lk.omega), REFINE_STEPS)
     rows = [(s_m, psi_k, s_k), (v_m, psi_v, v_ch), (a_m, psi_a, a_ch)]
@@ -1888,14 +1939,17 @@ def chord_derivatives(
 ) -> tuple[npt.NDArray[np.float64], ...]:
     """The graphical differentiation by chords of a periodic s(ψ) over a cycle, ``s_of`` giving
     s at crank turns ψ from position 0, divided first at the ``n`` numbered positions; ``omega``
-    the crank's |ω|. Each chord's slope is the derivative at its interval's middle, v = Δs/Δt;
-    the acceleration by the chords of v's polyline, at the division point between two of its
-    points.
+    the crank's |ω|. Each chord's slope is the derivative at its interval's middle, v = Δs/Δt,
+    and so is each chord's of v's polyline: a at the middle between two of v's points.
     Where a's points change by more than :data:`REFINE_SHARE` of their range from a division
     point to the next, the intervals beside it are halved (the textbook's smaller intervals
-    where the curve is steep), at most ``refine`` times. Both polylines cover the whole cycle:
-    at ψ = 0 and 2π each takes the chord between its last and first points (the cycle
-    repeats), so it ends where it starts. Returns (ψ_s, s, ψ_v, v, ψ_a, a)."""
+    where the curve is steep), at most ``refine`` times. A numbered position between unequal
+    intervals takes the chords of the shorter's length on its two sides (the longer one's
+    chord drawn from the position), so that its a is the symmetric chord difference at the
+    position itself; any other division point between unequal intervals has its a off it, at
+    the middle. Both polylines cover the whole cycle: at ψ = 0 and 2π each takes the chord
+    between its last and first points (the cycle repeats), so it ends where it starts.
+    Returns (ψ_s, s, ψ_v, v, ψ_a, a)."""
     nodes = np.linspace(0.0, 2.0 * math.pi, n + 1)
     for level in range(refine + 1):
         s_k = s_of(nodes)
@@ -1905,7 +1959,7 @@ def chord_derivatives(
         x_prev = np.concatenate([[x_mid[-1] - 2.0 * math.pi], x_mid[:-1]])
         v_prev = np.concatenate([v_mid[-1:], v_mid[:-1]])
         a_k = (v_mid - v_prev) / ((x_mid - x_prev) / omega)  # about the nodes 0 … m−1
-        x_a = nodes[:-1]  # the division point between the two chords' middles
+        x_a = (x_prev + x_mid) / 2.0  # the middle between the two chords' middles
         span = float(a_k.max() - a_k.min())
         jump = np.abs(a_k - np.roll(a_k, -1)) > REFINE_SHARE * span  # node j to node j+1
         steep = jump | np.roll(jump, 1)
@@ -1915,6 +1969,17 @@ def chord_derivatives(
         halves = {(j - 1) % m for j in np.flatnonzero(steep)} | set(np.flatnonzero(steep))
         extra = [nodes[i] + dpsi[i] / 2.0 for i in sorted(halves)]
         nodes = np.sort(np.concatenate([nodes, extra]))
+    step = 2.0 * math.pi / n
+    before = np.roll(dpsi, 1)
+    odd = np.flatnonzero(
+        (np.abs(nodes[:-1] / step - np.round(nodes[:-1] / step)) * step <= tol.TURN_START)
+        & (np.abs(dpsi - before) > tol.TURN_START)
+    )
+    if len(odd):  # numbered positions between unequal intervals: chords of the shorter's length
+        at, h = nodes[odd], np.minimum(dpsi, before)[odd]
+        s3 = s_of(np.stack([at - h, at, at + h], axis=1).ravel()).reshape(-1, 3).T
+        a_k[odd] = (s3[0] - 2.0 * s3[1] + s3[2]) / (h / omega) ** 2
+        x_a[odd] = at
     psi_v, v = _periodic(x_mid, v_mid)
     psi_a, a = _periodic(x_a, a_k)
     return nodes, s_k, psi_v, v, psi_a, a

@@ -1643,7 +1643,7 @@ def _sheet3(s: Solved, fw: Flywheel, h: float) -> Tree:
         "phi_origin",
         phi0=fmt_fixed(phi0, angle_places([phi0, 360.0 / n]), current()),
         last=n - 1,
-        step=fmt_fixed(360.0 / n, angle_places([phi0, 360.0 / n]), current()),
+        step=fmt_fixed(360.0 / n, angle_places([360.0 / n]), current()),  # 30°, not 30,0°
     )
     note = Text(paragraph=origin, width=order_width(h), height=h)
     column = Column(note, *graphs, title=WORDS("graphs"), title_height=TITLE_H)
