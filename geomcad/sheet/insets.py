@@ -210,12 +210,15 @@ class Insets:
         ``выносные элементы Б, В: μ_F = 2 Н/мм`` ("" without insets)."""
         return self.line([letter for letter, _ in self.drawn])
 
-    def line(self, letters: list[str]) -> str:
-        """:meth:`text` for insets lettered ``letters``."""
+    def line(self, letters: list[str], short: bool = False) -> str:
+        """:meth:`text` for insets lettered ``letters`` (``short``: the μ_F alone, without
+        the letters: ``выносные элементы: μ_F = 2 Н/мм``)."""
         from geomcad.sheet.compose import scale_text
 
         if not letters:
             return ""
+        if short:
+            return WORDS("insets_all", scale=scale_text(self.scale))
         return WORDS("insets", items=f"{', '.join(letters)}: {scale_text(self.scale)}")
 
 

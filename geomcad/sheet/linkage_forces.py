@@ -918,8 +918,10 @@ def draw_insets(
 ) -> None:
     """The view's insets (:class:`~geomcad.sheet.insets.Insets`) where its box is free, then
     the line under its caption that states their one μ_F and names the forces it leaves out.
-    Where that line would run past the view's box into the next view, it names only the
-    forces left out, and each inset's caption states the μ_F instead."""
+    Where that line would run past the view's box into the next view, it states the μ_F
+    without the insets' letters and the forces left out without the share they are under,
+    and where it still would, it names only the forces left out and each inset's caption
+    states the μ_F instead."""
     assert at.viewport is not None
     letters = getattr(view, "letters", None) or detail_letters()
     mine = [next(letters) for _ in range(ins.count(at.viewport))]
@@ -928,7 +930,13 @@ def draw_insets(
         key = "omitted_one" if len(omitted) == 1 else "omitted"
         share = _share_text(getattr(view, "fs", ins.fs).limit or VIEW_NEGLIGIBLE)
         parts.append(WORDS(key, share=share, items=", ".join(omitted)))
-    each = bool(mine) and text_width(";  ".join(parts), SCALES_H) > at.box[2] - at.box[0]
+    room = at.box[2] - at.box[0]
+    if mine and text_width(";  ".join(parts), SCALES_H) > room:
+        parts[0] = ins.line(mine, short=True)  # one μ_F for all: the letters go without saying
+        if omitted and text_width(";  ".join(parts), SCALES_H) > room:
+            key = "omitted_bare_one" if len(omitted) == 1 else "omitted_bare"
+            parts[-1] = WORDS(key, items=", ".join(omitted))
+    each = bool(mine) and text_width(";  ".join(parts), SCALES_H) > room
     if each:
         parts = parts[1:]
     ins.draw(d, at.viewport, _field(at), start, iter(mine), each)
