@@ -156,29 +156,52 @@ def test_each_view_draws_its_forces_at_one_scale(
         ([1800.0, 216.0, 28.3, 10.5, 6.9], 40.0),  # a shaper's lever
         ([39.2, 32.1, 11.8, 7.1], 24.0),  # a light four-bar: all in the view
         ([1000.0, 999.0, 998.0], 24.0),
+        ([4124.0, 446.9, 350.0, 29.4, 15.7, 11.8], 51.3),  # a compressor: weights far below
     ],
 )
 def test_view_scales_one_for_the_view_the_short_ones_in_insets(
     forces: list[float], room: float
 ) -> None:
-    from geomcad.sheet.loads import INSET_MM, VIEW_NEGLIGIBLE, view_scales
+    from geomcad.sheet.loads import INSET_MM, TIER_LIMIT, VIEW_NEGLIGIBLE, view_scales
+    from geomcad.sheet.scale import nice_below, nice_factor
 
     fs = view_scales([*forces, 1e-14], room)
     big = max(forces)
     assert big / fs.k <= room and fs.insets
     assert fs.tier(1e-14) is None  # round-off of a zero force
+    # the view's μ_F and at most ONE more, that of all its insets (issue 27, review 6 item 4)
+    assert len(fs.scales) <= 2
+    inset = max(INSET_MM, TIER_LIMIT * room)
+    drawn: list[float] = []
+    named: list[float] = []
     for F in forces:
         t = fs.tier(F)
-        if VIEW_NEGLIGIBLE * big >= F:
-            assert t is None  # named under the caption, not drawn
+        if t is None:
+            named.append(F)
+            assert F / fs.k < SHORT_MM  # never one the view itself could draw
+            # under the view's threshold, which it states: the share under the caption
+            assert fs.limit * big * (1.0 + 1e-9) >= F
             continue
-        assert t is not None
-        # at the view's μ_F exactly where it is long enough there, else at a finer inset one
+        # at the view's μ_F exactly where it is long enough there, else at the insets' one
         assert (t == 0) == (F / fs.k >= SHORT_MM * (1.0 - 1e-9))
         mm = F / fs.scales[t].k
         assert mm >= SHORT_MM * (1.0 - 1e-9)
-        assert t == 0 or mm <= INSET_MM * (1.0 + 1e-9)
-    assert all(a.k > b.k for a, b in itertools.pairwise(fs.scales))  # coarse to fine
+        assert t == 0 or mm <= inset * (1.0 + 1e-9)
+        drawn.append(F)
+    # a force left out is smaller than every force drawn
+    assert all(F < G for F in named for G in drawn)
+    assert all(VIEW_NEGLIGIBLE * big >= F for F in named) or fs.tiered
+    if fs.tiered:
+        k2 = fs.scales[1].k
+        short = [F for F in forces if VIEW_NEGLIGIBLE * big < F and F / fs.k < SHORT_MM]
+        # the coarsest that draws every short force long enough, where that keeps the
+        # largest in the insets' room; else the finest that keeps it there
+        assert max(short) / k2 <= inset * (1.0 + 1e-9)
+        if named:  # the finest that keeps the largest in the room
+            assert k2 == nice_factor(max(short), inset, "F").k
+        else:  # the coarsest that draws the smallest long enough
+            assert k2 == nice_below(min(short), SHORT_MM).k
+        assert all(a.k > b.k for a, b in itertools.pairwise(fs.scales))  # coarse to fine
 
 
 def test_insets_set_same_line_forces_side_by_side_and_never_tail_to_tail() -> None:
@@ -193,3 +216,20 @@ def test_insets_set_same_line_forces_side_by_side_and_never_tail_to_tail() -> No
     assert abs(starts[1][0]) > 0.9 * BESIDE_MM  # across a vertical line: sideways
     # a force of the opposite sense arrives at the point: no double-headed pair
     assert pushes([down, up, right]) == [False, True, False]
+
+
+def test_view_scales_never_leave_out_a_kept_force() -> None:
+    """A free body's reactions are never named: the insets' μ_F draws the smallest one at
+    least two arrowheads long even where that draws a larger short force past their room (a
+    compressor's group: R_05 = 201 N beside Ф_5 = 1219 N and F_D = 4124 N)."""
+    from geomcad.sheet.loads import view_scales
+
+    forces = [4124.0, 1567.0, 1528.0, 1219.0, 201.4, 15.7, 11.8]
+    free = view_scales(forces, 24.8)
+    assert free.tier(201.4) is None  # without the rule: named, not drawn
+    fs = view_scales(forces, 24.8, keep=[1528.0, 201.4])
+    assert len(fs.scales) == 2
+    t = fs.tier(201.4)
+    assert t == 1 and 201.4 / fs.scales[1].k >= SHORT_MM
+    assert fs.tier(1219.0) == 1  # the larger short one at the same, one inset μ_F
+    assert fs.tier(15.7) is None  # a weight under 0,5 % of the largest is still named

@@ -1,12 +1,15 @@
-"""A view's insets of short forces (ESKD выносные элементы): one μ_F for the view itself.
+"""A view's insets of short forces (ESKD выносные элементы): two μ_F for a view at most.
 
 A view (the mechanism with its loads, a group's free body, Zhukovsky's lever) draws every force
 at its one μ_F (:func:`~geomcad.sheet.loads.view_scales`), so that a longer arrow is a larger
 force everywhere in it. A force that would be shorter than two arrowheads there is drawn
-instead in an inset: a thin circle round its point on the view, lettered, and elsewhere in the
-view's box the point again with its short forces at their own finer μ_F (stated in the inset's
-caption, "Б (μ_F = 2 Н/мм)"), same directions, each inset at one μ_F. The insets go where the
-view's box is free of what is drawn, the nearest such place to their point.
+instead in an inset: a thin circle round its point on the view, lettered beside the circle,
+and elsewhere in the view's box the point again with its short forces at the view's one
+further μ_F, the same for all its insets (stated once under the view's caption, "выносные
+элементы Б, В: μ_F = 2 Н/мм", or in each inset's caption where that line has no room), same
+directions. One inset per point: all the short forces of a point (of points closer than the
+circle) in one inset, under one letter. The insets go where the view's box is free of what is
+drawn, the nearest such place to their point.
 """
 
 from __future__ import annotations
@@ -20,9 +23,9 @@ import numpy as np
 import numpy.typing as npt
 
 from geomcad.geom import Vec
-from geomcad.sheet.drawing import SHORT_MM, Drawing, Viewport
+from geomcad.sheet.drawing import Drawing, Viewport
 from geomcad.sheet.lang import Words
-from geomcad.sheet.loads import ForceScales, chord_points, force, inset_bands
+from geomcad.sheet.loads import ForceScales, _inside, chord_points, force
 from geomcad.sheet.model import ArcItem, CircleItem, Polyline, TextItem
 from geomcad.sheet.plans import markup_of
 from geomcad.sheet.scale import Scale
@@ -40,6 +43,23 @@ LETTER_H = 3.5
 LABEL_PAD = 6.0
 KEEP_MM = 2.0
 CELL_MM = 1.0
+#: The gaps (mm) tried between an inset's circle and its letter: touching it, just outside,
+#: or (where a line drawn round the point, a moment's arc, would run through the letter) a
+#: little further out, each mm further costing _W_GAP.
+LETTER_GAPS = (0.6, 1.6, 2.6, 4.0, 5.5, 7.0)
+#: A letter further than this (mm) off its circle is tied to it by a thin leader (ESKD 2.305).
+LEADER_FROM = 2.0
+#: The directions (degrees, counter-clockwise from the right) tried for the letter round its
+#: circle, the first preferred (up and to the right, as ESKD letters a detail).
+LETTER_TURNS = (45, 90, 0, 135, 315, 180, 270, 225, 68, 22, 112, 338, 158, 292, 202, 248)
+#: The cost of a cell of the letter's box on a line or a text, of one within a label still to
+#: be placed (the placer moves that one), of each later direction tried, and of each mm of gap.
+_W_INK, _W_PENDING, _W_TURN, _W_GAP = 10.0, 0.5, 0.2, 2.0
+#: The cost of a cell of a letter's leader on a line (it crosses the lines at its point), and
+#: of a cell of its box within a cell of one (a letter squeezed between the lines of a guide).
+_W_LEAD, _W_NEAR = 2.0, 3.0
+#: How far (mm) round a label still to be placed the letter counts it (its text's size).
+PENDING_MM = 3.0
 
 
 @dataclass(frozen=True)
@@ -69,31 +89,31 @@ class Insets:
     def add(self, at: Vec, F: Vec, tier: int, label: str, role: str) -> None:
         self.shorts.append(Short(at, F, label, role, tier))
 
-    def groups(self, eps: float) -> list[tuple[Vec, list[tuple[Scale, list[Short]]]]]:
-        """The short forces by their point (points within ``eps`` model units are one), and at
-        each point by the μ_F of its insets (:func:`~geomcad.sheet.loads.inset_bands`, the
-        coarsest first): one inset each, as few at a point as its forces allow."""
+    @property
+    def scale(self) -> Scale:
+        """The one μ_F of the view's insets."""
+        return self.fs.scales[-1]
+
+    def groups(self, eps: float) -> list[tuple[Vec, list[Short]]]:
+        """The short forces by their point (a point within ``eps`` model units of one taken
+        before joins it): one inset each."""
         out: list[tuple[Vec, list[Short]]] = []
         for s in self.shorts:
             for q, ss in out:
-                if s.at.dist(q) <= eps:
+                if any(s.at.dist(u.at) <= eps for u in ss) or s.at.dist(q) <= eps:
                     ss.append(s)
                     break
             else:
                 out.append((s.at, [s]))
-        res = []
-        for q, ss in out:
-            bands = inset_bands([s.F.norm for s in ss])[::-1]
-            by: list[tuple[Scale, list[Short]]] = [(sc, []) for sc in bands]
-            for s in ss:
-                i = next(i for i, (sc, _) in enumerate(by) if s.F.norm / sc.k >= SHORT_MM * 0.999)
-                by[i][1].append(s)
-            res.append((q, [b for b in by if b[1]]))
-        return res
+        return out
 
     def name_of(self, q: Vec, eps: float) -> str:
         """The name of the view's point at ``q`` ("" where none is)."""
         return next((n for n, p in self.points.items() if p.dist(q) <= eps), "")
+
+    def count(self, v: Viewport) -> int:
+        """How many insets the view ``v`` draws (one per point)."""
+        return len(self.groups(v.scale.model(2.0 * MARK_R))) if self.shorts else 0
 
     def draw(
         self,
@@ -102,34 +122,32 @@ class Insets:
         field: tuple[float, float, float, float],
         start: int,
         letters: Iterator[str],
+        each: bool = False,
     ) -> None:
         """The insets into ``field`` (sheet mm), clear of the items drawn since ``start`` (the
         view's first), each lettered from ``letters`` with a thin circle round its point on
-        the view ``v``."""
+        the view ``v`` and the letter just outside the circle where it is clearest; ``each``:
+        every inset's caption states the μ_F too (the view's caption line does not)."""
         if not self.shorts:
             return
         eps = v.scale.model(0.8)
         free = _Free(d, start, field)
-        for q, tiers in self.groups(v.scale.model(2.0 * MARK_R)):
-            p = v.p(q)
-            mine: list[str] = []
-            for sc, shorts in tiers:
-                letter = next(letters)
-                mine.append(letter)
-                self.drawn.append((letter, sc))
-                self._one(d, v, free, q, p, letter, sc, shorts, eps)
-            # one thin circle round the points of the insets (centred on them)
-            ats = [v.p(s.at) for _, ss in tiers for s in ss]
+        marks: list[tuple[str, Vec, list[Short], tuple[float, float]]] = []
+        # the circles and their letters first (each beside its own circle), then the insets
+        for q, shorts in self.groups(v.scale.model(2.0 * MARK_R)):
+            letter = next(letters)
+            self.drawn.append((letter, self.scale))
+            ats = [v.p(s.at) for s in shorts]
             xs, ys = [a[0] for a in ats], [a[1] for a in ats]
             c = ((min(xs) + max(xs)) / 2.0, (min(ys) + max(ys)) / 2.0)
             r = MARK_R + max(math.dist(c, a) for a in ats)
-            d.sheet.add(CircleItem(c, r, "thin"))
-            # the letter by the circle (anchored on it, up and to the right where free)
-            # (or by another point of the circle, where that one is clearer of the lines)
-            edge = (c[0] + r * math.sqrt(0.5), c[1] - r * math.sqrt(0.5))
-            turns = [math.radians(a) for a in range(0, 360, 45) if a != 45]
-            round_ = tuple((c[0] + r * math.cos(t), c[1] - r * math.sin(t)) for t in turns)
-            d.label(edge, ", ".join(mine), LETTER_H, prefer=(0.7, -0.7), clear=0.5, others=round_)
+            circle = CircleItem(c, r, "thin")
+            d.sheet.add(circle)
+            free.letter(d, letter, c, r)  # its own circle is not in its way
+            free.mark(circle)
+            marks.append((letter, q, shorts, c))
+        for letter, q, shorts, c in marks:
+            self._one(d, v, free, q, c, letter, shorts, eps, each)
 
     def _one(
         self,
@@ -139,13 +157,14 @@ class Insets:
         q: Vec,
         p: tuple[float, float],
         letter: str,
-        sc: Scale,
         shorts: list[Short],
         eps: float,
+        each: bool,
     ) -> None:
         from geomcad.sheet.compose import scale_text
 
-        caption = WORDS("inset", letter=letter, scale=scale_text(sc))
+        sc = self.scale
+        caption = WORDS("inset", letter=letter, scale=scale_text(sc)) if each else letter
         starts = side_by_side([s.F for s in shorts], sc.k)
         arrive = pushes([s.F for s in shorts])
         # paper mm from the point: the far ends of the arrows (leaving it, or arriving)
@@ -161,13 +180,14 @@ class Insets:
         x1 = max(0.0, *(t[0] for t in tips)) + LABEL_PAD
         y0 = min(0.0, *(t[1] for t in tips)) - LABEL_PAD
         y1 = max(0.0, *(t[1] for t in tips)) + LABEL_PAD
-        cap_w = box(parse(caption), CAPTION_H)[0]
-        cap = CAPTION_H * 2.0
+        cap_h = CAPTION_H if each else LETTER_H
+        cap_w = box(parse(caption), cap_h)[0]
+        cap = cap_h * 2.0
         w, h = max(x1 - x0, cap_w), (y1 - y0) + cap
         corner = free.place(w, h, p)
         # the point in the inset, its arrows' box under the caption
         at = (corner[0] + (w - (x1 - x0)) / 2.0 - x0, corner[1] + cap - y0)
-        d.text(caption, (corner[0] + (w - cap_w) / 2.0, corner[1] + CAPTION_H), CAPTION_H)
+        d.text(caption, (corner[0] + (w - cap_w) / 2.0, corner[1] + cap_h), cap_h)
         iv = Viewport(d, v.scale, q.x, q.y, at)
         pts: list[Vec] = []
         for s in shorts:
@@ -186,17 +206,20 @@ class Insets:
         free.take(corner, w, h)
 
     def text(self) -> str:
-        """The line under the view's caption that states the insets' μ_F:
-        ``выносные элементы Б, В: μ_F = 2 Н/мм; Г: μ_F = 0,2 Н/мм`` ("" without insets)."""
+        """The line under the view's caption that states its insets' one μ_F:
+        ``выносные элементы Б, В: μ_F = 2 Н/мм`` ("" without insets)."""
+        return self.line([letter for letter, _ in self.drawn])
+
+    def line(self, letters: list[str], short: bool = False) -> str:
+        """:meth:`text` for insets lettered ``letters`` (``short``: the μ_F alone, without
+        the letters: ``выносные элементы: μ_F = 2 Н/мм``)."""
         from geomcad.sheet.compose import scale_text
 
-        by: dict[str, list[str]] = {}
-        for letter, sc in self.drawn:
-            by.setdefault(scale_text(sc), []).append(letter)
-        if not by:
+        if not letters:
             return ""
-        items = "; ".join(f"{', '.join(ls)}: {t}" for t, ls in by.items())
-        return WORDS("insets", items=items)
+        if short:
+            return WORDS("insets_all", scale=scale_text(self.scale))
+        return WORDS("insets", items=f"{', '.join(letters)}: {scale_text(self.scale)}")
 
 
 #: Two forces at one point closer in direction than this (degrees) are set side by side.
@@ -250,10 +273,104 @@ class _Free:
                 xs = np.linspace(a[0], b[0], n)
                 ys = np.linspace(a[1], b[1], n)
                 self._mark(grid, xs, ys)
+            if isinstance(it, Polyline) and it.fill and it.closed and len(it.points) > 3:
+                self._fill(grid, np.array(it.points, dtype=float))  # a slider's block
+        #: the cells of the lines and texts drawn (the letters' raster), and those within
+        #: PENDING_MM of a label still to be placed
+        self.ink = grid
+        self.pending = np.zeros_like(grid)
         self.grid = _grow(grid, math.ceil(KEEP_MM / CELL_MM))
         for rq in d.pending:  # the labels still to be placed take room round their points
             self._rect(self.grid, rq.anchor[0] - LABEL_PAD, rq.anchor[1] - LABEL_PAD,
                        2 * LABEL_PAD, 2 * LABEL_PAD)  # fmt: skip
+            self._rect(self.pending, rq.anchor[0] - PENDING_MM, rq.anchor[1] - PENDING_MM,
+                       2 * PENDING_MM, 2 * PENDING_MM)  # fmt: skip
+
+    def _fill(self, grid: npt.NDArray[np.bool_], poly: npt.NDArray[np.float64]) -> None:
+        """The cells whose centres lie inside the closed outline ``poly`` (k, 2), taken."""
+        x0, y0 = poly.min(axis=0)
+        x1, y1 = poly.max(axis=0)
+        xs = np.arange(x0, x1 + CELL_MM, CELL_MM / 2.0)
+        ys = np.arange(y0, y1 + CELL_MM, CELL_MM / 2.0)
+        gx, gy = np.meshgrid(xs, ys)
+        pts = np.column_stack([gx.ravel(), gy.ravel()])
+        ins = _inside(pts, [poly])
+        self._mark(grid, pts[ins, 0], pts[ins, 1])
+
+    def mark(self, it: Polyline | CircleItem | ArcItem) -> None:
+        """A line drawn since: its cells taken (and those within KEEP_MM for the insets)."""
+        mine = np.zeros_like(self.ink)
+        for a, b in itertools.pairwise(chord_points(it)):
+            n = max(2, int(math.dist(a, b) / (CELL_MM / 2.0)) + 1)
+            self._mark(mine, np.linspace(a[0], b[0], n), np.linspace(a[1], b[1], n))
+        self.ink |= mine
+        self.grid |= _grow(mine, math.ceil(KEEP_MM / CELL_MM))
+
+    def letter(self, d: Drawing, letter: str, c: tuple[float, float], r: float) -> TextItem:
+        """The letter of an inset beside its circle (centre ``c``, radius ``r``, sheet mm):
+        its box one of :data:`LETTER_GAPS` outside the circle in one of the directions
+        :data:`LETTER_TURNS`, where it covers fewest lines and texts drawn (and labels still to
+        be placed), the nearest and first such place; its cells taken."""
+        w, up, down = box(parse(letter), LETTER_H)
+        hw, hh = w / 2.0, (up + down) / 2.0
+        XY = tuple[float, float]
+        best: tuple[float, XY, tuple[XY, XY] | None] | None = None
+        near = _grow(self.ink, 1)
+        for gap in LETTER_GAPS:
+            for i, deg in enumerate(LETTER_TURNS):
+                t = math.radians(deg)
+                u = (math.cos(t), -math.sin(t))
+                # the box's centre along u where its nearest point is ``gap`` off the circle
+                lo, hi = 0.0, r + gap + hw + hh
+                for _ in range(30):
+                    m = (lo + hi) / 2.0
+                    dx = max(abs(u[0] * m) - hw, 0.0)
+                    dy = max(abs(u[1] * m) - hh, 0.0)
+                    if math.hypot(dx, dy) < r + gap:
+                        lo = m
+                    else:
+                        hi = m
+                x, y = c[0] + u[0] * hi - hw, c[1] + u[1] * hi - hh
+                a = (c[0] + u[0] * r, c[1] + u[1] * r)
+                b = (c[0] + u[0] * (r + gap), c[1] + u[1] * (r + gap))
+                lead = self._on_ink(a, b) if gap > LEADER_FROM else 0
+                cost = (
+                    _W_INK * self._count(self.ink, x, y, w, 2.0 * hh)
+                    + _W_NEAR * self._count(near, x, y, w, 2.0 * hh)
+                    + _W_LEAD * lead
+                    + _W_PENDING * self._count(self.pending, x, y, w, 2.0 * hh)
+                    + _W_TURN * i
+                    + _W_GAP * gap
+                )
+                if best is None or cost < best[0]:
+                    best = (cost, (x, y), (a, b) if gap > LEADER_FROM else None)
+        assert best is not None
+        x, y = best[1]
+        if best[2] is not None:  # the leader from the circle to the letter
+            leader = Polyline(best[2], "thin")
+            d.sheet.add(leader)
+            self.mark(leader)
+        item = d.text(letter, (x, y + up), LETTER_H)
+        self._rect(self.ink, x, y, w, 2.0 * hh)
+        self._rect(self.grid, x - KEEP_MM, y - KEEP_MM, w + 2 * KEEP_MM, 2.0 * hh + 2 * KEEP_MM)
+        return item
+
+    def _on_ink(self, a: tuple[float, float], b: tuple[float, float]) -> int:
+        """How many cells of a leader from ``a`` to ``b`` (sheet mm) are on lines or texts."""
+        n = max(2, int(math.dist(a, b) / (CELL_MM / 2.0)) + 1)
+        i = ((np.linspace(a[1], b[1], n) - self.field[1]) / CELL_MM).astype(int)
+        j = ((np.linspace(a[0], b[0], n) - self.field[0]) / CELL_MM).astype(int)
+        ok = (i >= 0) & (i < self.ny) & (j >= 0) & (j < self.nx)
+        return len({(int(p), int(q)) for p, q in zip(i[ok], j[ok], strict=True) if self.ink[p, q]})
+
+    def _count(self, grid: npt.NDArray[np.bool_], x: float, y: float, w: float, h: float) -> int:
+        """How many cells of ``grid`` the rectangle (sheet mm) covers, a cell outside the
+        field (another view's) counted as covered."""
+        i0, j0 = int((y - self.field[1]) / CELL_MM), int((x - self.field[0]) / CELL_MM)
+        i1 = math.ceil((y + h - self.field[1]) / CELL_MM)
+        j1 = math.ceil((x + w - self.field[0]) / CELL_MM)
+        inside = grid[max(0, i0) : max(0, min(self.ny, i1)), max(0, j0) : max(0, min(self.nx, j1))]
+        return int(inside.sum()) + (i1 - i0) * (j1 - j0) - inside.size
 
     def _mark(self, grid: npt.NDArray[np.bool_], xs: npt.NDArray[np.float64],
               ys: npt.NDArray[np.float64]) -> None:  # fmt: skip

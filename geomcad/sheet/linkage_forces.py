@@ -178,14 +178,19 @@ def arrow_room(least: float, margin: float, size: tuple[float, float]) -> float:
 class _ByScale:
     """A view's force scales as its drawn size makes them (:func:`arrow_room`): ``fs`` those of
     its least room until it is drawn (:meth:`scales_at` ``None``: the layout reserves its
-    caption's line of insets from them; a larger room draws no more forces short),
-    :meth:`scales_at` those at a length scale, which :meth:`placed` makes the view's ``fs``."""
+    caption's line of insets from them; a larger room leaves out and draws short no more
+    forces), :meth:`scales_at` those at a length scale, which :meth:`placed` makes the view's
+    ``fs`` (and its ``omitted``, the forces ``_named`` it leaves out)."""
 
     fs: ForceScales
     margin: float
+    omitted: list[str]
     _ext: tuple[float, float, float, float]
     _forces: list[float]
+    _named: list[tuple[str, float]]
     _least: float
+    #: the forces never left out (a free body's reactions, the lever's P_ур)
+    _keep: tuple[float, ...] = ()
 
     def arrows(self) -> list[tuple[Vec, Vec]]:
         """The forces the view draws as arrows (point, force; model units)."""
@@ -193,15 +198,18 @@ class _ByScale:
 
     def scales_at(self, scale: Scale | None) -> ForceScales:
         """The view's force scales drawn at ``scale``: of the rooms up to its
-        :func:`arrow_room`, the coarsest μ_F that draws fewest forces in insets, where each of
-        its arrows, drawn at its point (leaving it or arriving at it), keeps within the
-        drawing's extent and margin (none over its top: the caption); else those of its least
-        room (``None``: those)."""
+        :func:`arrow_room`, the coarsest μ_F that leaves out fewest forces and then draws
+        fewest in insets (a longer arrow in the view gives its insets more room,
+        :func:`~geomcad.sheet.loads.view_scales`), where each of its arrows, drawn at its
+        point (leaving it or arriving at it), keeps within the drawing's extent and margin
+        (none over its top: the caption); where a force is still left out, a room up to
+        :data:`ARROW_SHARE` of the view's larger side that leaves out fewer and keeps within
+        them; else its least room's μ_F (``None``: those)."""
         memo: dict[float | None, ForceScales] = self.__dict__.setdefault("_by_scale", {})
         key = None if scale is None else scale.k
         if key in memo:
             return memo[key]
-        least = memo.get(None) or view_scales(self._forces, self._least)
+        least = memo.get(None) or view_scales(self._forces, self._least, keep=self._keep)
         memo[None] = fs = least
         if scale is not None:
             x0, y0, x1, y1 = self._ext
@@ -209,10 +217,19 @@ class _ByScale:
             m = self.margin * scale.k
             box = (x0 - m, y0 - m, x1 + m, y1)  # the caption over the drawing
             r = self._least
+            fs = view_scales(self._forces, r, self._keep)
             while r < room:
                 r = min(room, r * 1.25)
-                at = view_scales(self._forces, r)
-                if self._shorts(at) < self._shorts(fs) and self._fits(at, scale, box):
+                at = view_scales(self._forces, r, self._keep)
+                if self._cost(at) < self._cost(fs) and self._fits(at, scale, box):
+                    fs = at
+            # a force still left out (a reaction of a free body): longer arrows, up to
+            # ARROW_SHARE of the view's larger side, where they keep within its box
+            far = ARROW_SHARE * max(scale.mm(x1 - x0), scale.mm(y1 - y0))
+            while self._cost(fs)[0] and r < far:
+                r = min(far, r * 1.25)
+                at = view_scales(self._forces, r, self._keep)
+                if self._cost(at)[0] < self._cost(fs)[0] and self._fits(at, scale, box):
                     fs = at
         memo[key] = fs
         return fs
@@ -233,11 +250,25 @@ class _ByScale:
     def placed(self, at: Placed) -> ForceScales:
         """The view's ``fs`` where it is drawn (:meth:`scales_at` its scale)."""
         self.fs = self.scales_at(at.scale)
+        self.omitted = omitted_values(self.fs, self._named)
         return self.fs
+
+    def further_room(self) -> float:
+        """The room (mm) of the lines under the view's caption at its least room's scales,
+        wrapped at its caption's width."""
+        assert isinstance(self, View)  # a mixin of the views
+        fs = self.scales_at(None)
+        return further_room(fs, omitted_values(fs, self._named), title_width(self))
 
     def _shorts(self, fs: ForceScales) -> int:
         """How many of the view's forces ``fs`` draws in insets."""
         return sum(1 for F in self._forces if fs.tier(F) not in (0, None))
+
+    def _cost(self, fs: ForceScales) -> tuple[int, int]:
+        """How many of the view's forces ``fs`` leaves out (named, not drawn), and how many
+        it draws in insets."""
+        left = sum(1 for F in self._forces if fs.zero < F and fs.tier(F) is None)
+        return left, self._shorts(fs)
 
 
 #: The least length (mm) of a force plan's longest vector (a course project draws its plans
@@ -970,25 +1001,52 @@ def draw_insets(
     d: Drawing, at: Placed, view: View, ins: Insets, start: int, omitted: Sequence[str]
 ) -> None:
     """The view's insets (:class:`~geomcad.sheet.insets.Insets`) where its box is free, then
-    the lines under its caption that state their μ_F and name the forces it leaves out,
+    the lines under its caption that state their one μ_F and name the forces it leaves out,
     wrapped at the box's width into the lines its title's room holds (:func:`further_room`).
-    Each inset's caption states its own μ_F too: where the lines would need more room, they
-    name only the forces left out."""
+    Where they would need more lines, they state the μ_F without the insets' letters and the
+    forces left out without the share they are under, and where they still would, they name
+    only the forces left out and each inset's caption states the μ_F instead."""
     assert at.viewport is not None
     letters = getattr(view, "letters", None) or detail_letters()
-    ins.draw(d, at.viewport, _field(at), start, letters)
+    mine = [next(letters) for _ in range(ins.count(at.viewport))]
+    parts = [ins.line(mine)] if mine else []
+    if omitted:
+        key = "omitted_one" if len(omitted) == 1 else "omitted"
+        share = _share_text(getattr(view, "fs", ins.fs).limit or VIEW_NEGLIGIBLE)
+        parts.append(WORDS(key, share=share, items=", ".join(omitted)))
     width = at.box[2] - at.box[0]
     room = max(len(_omitted_lines(omitted, title_width(view))) if omitted else 1, 1)
-    lines: list[str] = []
-    if ins.drawn:
-        text = ins.text() + (";  " + _omitted_text(omitted) if omitted else "")
-        lines = wrap(text, width, SCALES_H)
-    if not ins.drawn or len(lines) > room:
-        lines = _omitted_lines(omitted, width) if omitted else []
+
+    def fits() -> bool:
+        return len(wrap(";  ".join(parts), width, SCALES_H)) <= room
+
+    def bare() -> None:
+        key = "omitted_bare_one" if len(omitted) == 1 else "omitted_bare"
+        parts[-1] = WORDS(key, items=", ".join(omitted))
+
+    if mine and not fits():
+        parts[0] = ins.line(mine, short=True)  # one μ_F for all: the letters go without saying
+        if omitted and not fits():
+            bare()
+    each = bool(mine) and not fits()
+    if each:
+        parts = parts[1:]
+        if parts and not fits():
+            bare()
+    ins.draw(d, at.viewport, _field(at), start, iter(mine), each)
+    lines = wrap(";  ".join(parts), width, SCALES_H) if parts else []
     head = (view.title_lines - 1) * TITLE_SPACING  # a caption broken into lines
     top = at.box[1] + view.title_height * (TITLE_LEAD + head) + SCALES_H
     for i, line in enumerate(lines):
         d.text(line, (at.box[0], top + i * SCALES_H * TITLE_SPACING), SCALES_H)
+
+
+def _share_text(share: float) -> str:
+    """A share of the largest force as the percentage the line of forces left out states:
+    to two significant figures, rounded up (every force named is under it)."""
+    pct = share * 100.0
+    e = math.floor(math.log10(pct)) - 1
+    return fmt_number(math.ceil(pct / 10.0**e * (1.0 - tol.DERIVED)) * 10.0**e)
 
 
 def _negligible_note(names: Sequence[str]) -> str:
@@ -1010,9 +1068,7 @@ class _Forces(_ByScale, View):
     letters: Iterator[str] | None = None
 
     def title_room(self) -> float:
-        return super().title_room() + further_room(
-            self.scales_at(None), self.omitted, title_width(self)
-        )
+        return super().title_room() + self.further_room()
 
     @property
     def kF(self) -> Scale:
@@ -1055,7 +1111,7 @@ class _Loaded(_Forces):
         self._ext = _bbox([*P.pos.values(), *bodies], lk.length)
         named = [(ld.name, ld.force.norm) for ld in self.loads
                  if ld.force is not None and ld.at is not None]  # fmt: skip
-        self._forces, self._least = [F for _, F in named], LOAD_MM
+        self._forces, self._least, self._named = [F for _, F in named], LOAD_MM, named
         self.fs = view_scales(self._forces, LOAD_MM)
         self.omitted = omitted_values(self.fs, named)
         #: the solution and the letter of the crank's detail, where the crank may come out
@@ -1171,8 +1227,9 @@ class _FreeBody(_Forces):
         named = [(ld.name, ld.force.norm) for i in links for ld in gf.loads[i]
                  if ld.force is not None]  # fmt: skip
         named += [(r.name, r.force.norm) for r in external(gf)]
-        self._forces, self._least = [F for _, F in named], LOAD_MM
-        self.fs = view_scales(self._forces, LOAD_MM)
+        self._forces, self._least, self._named = [F for _, F in named], LOAD_MM, named
+        self._keep = tuple(r.force.norm for r in external(gf))
+        self.fs = view_scales(self._forces, LOAD_MM, keep=self._keep)
         self.omitted = omitted_values(self.fs, named)
 
     def arrows(self) -> list[tuple[Vec, Vec]]:
@@ -1453,13 +1510,16 @@ class _Lever(_ByScale, View):
     def __init__(self, lk: Linkage, P: Position, f: Forces) -> None:
         lev = f.lever
         forces = [it.force.norm for it in lev.items] + [lev.F_bal.norm]
-        self._forces, self._least = forces, LEVER_LOAD_MM
-        self.fs = view_scales(forces, LEVER_LOAD_MM)
+        self._forces, self._least, self._keep = forces, LEVER_LOAD_MM, (lev.F_bal.norm,)
+        self.fs = view_scales(forces, LEVER_LOAD_MM, keep=self._keep)
         self.short = False
         super().__init__(title=WORDS("lever"), title_height=5.0, quantity="v", series="nice",
                          margin=LEVER_LOAD_MM)  # fmt: skip
         self.lk, self.P, self.f = lk, P, f
-        self.omitted = omitted_values(self.fs, [(it.name, it.force.norm) for it in lev.items])
+        #: each load's name on the lever: a moment's couple by its pair of forces (P_MФ3)
+        self.names = lever_names(f)
+        self._named = [(n, it.force.norm) for n, it in zip(self.names, lev.items, strict=True)]
+        self.omitted = omitted_values(self.fs, self._named)
         pts = [Vec(0.0, 0.0), *lever_images(P, lev).values(), *(it.image for it in lev.items)]
         xs = [q.x for q in pts]
         ys = [q.y for q in pts]
@@ -1480,7 +1540,8 @@ class _Lever(_ByScale, View):
         ``k`` (model units per mm)."""
         fs = fs or self.fs
         lev = self.f.lever
-        loads = [(it.image, it.force, load_name(it.name), "vector") for it in lev.items]
+        loads = [(it.image, it.force, load_name(n), "vector")
+                 for n, it in zip(self.names, lev.items, strict=True)]  # fmt: skip
         loads.append((lev.images[self.lk.joint], lev.F_bal, WORDS("P_bal"), "result"))
         # the forces short at the view's μ_F go to its insets, the others are drawn here
         ins = Insets(fs, images)
@@ -1512,9 +1573,7 @@ class _Lever(_ByScale, View):
         return True
 
     def title_room(self) -> float:
-        return super().title_room() + further_room(
-            self.scales_at(None), self.omitted, title_width(self)
-        )
+        return super().title_room() + self.further_room()
 
     def caption(self, scale: Scale | None) -> str:
         m = WORDS("m_bal", value=_load(self.f.lever.M_bal))
@@ -1556,6 +1615,20 @@ class _Lever(_ByScale, View):
         for (_, F, name, role), (arrive, at_) in zip(here, sides, strict=True):
             _force(v, at_, F, self.fs, name, arrive, role)
         draw_insets(d, at, self, ins, start, self.omitted)
+
+
+def pair_name(moment: str) -> str:
+    """The name of the pair of forces that stands for the moment ``moment`` on Zhukovsky's
+    lever: P with the moment's name as its index (``M_{Ф3}`` → ``P_{MФ3}``)."""
+    return f"P_{{{moment.replace('_{', '').replace('_', '').replace('}', '')}}}"
+
+
+def lever_names(f: Forces) -> list[str]:
+    """The name of each load of the lever of ``f`` (model names): a force's own, each force
+    of a moment's couple its pair's (:func:`pair_name`), never the moment's (a force in N
+    is not the moment in N·m of the table)."""
+    moments = {ld.name for lds in f.loads.values() for ld in lds if ld.force is None}
+    return [pair_name(it.name) if it.name in moments else it.name for it in f.lever.items]
 
 
 def _table2(f: Forces, h: float) -> Table:

@@ -52,6 +52,9 @@ class ForceScales:
     #: the scales after the first are those of the view's insets (:func:`view_scales`: the
     #: view itself draws every force at one μ_F), not of further arrows in the view
     insets: bool = False
+    #: the share of the view's largest force under which its forces are named, not drawn
+    #: (:func:`view_scales`)
+    limit: float = 0.0
 
     @property
     def k(self) -> float:
@@ -206,21 +209,27 @@ def force_tiers(forces: Iterable[float], room_mm: float) -> ForceScales:
 #: caption, not drawn (:func:`view_scales`): their arrows at the view's μ_F would be shorter
 #: than a 200-mm arrow's drawing error (0,5 mm), and they change no result drawn.
 VIEW_NEGLIGIBLE = 0.005
-#: The longest arrow (mm) in a view's inset (:func:`view_scales`).
+#: The least room (mm) of the longest arrow in a view's insets (:func:`view_scales`).
 INSET_MM = 24.0
 
 
-def view_scales(forces: Iterable[float], room_mm: float) -> ForceScales:
+def view_scales(forces: Iterable[float], room_mm: float, keep: Iterable[float] = ()) -> ForceScales:
     """The force scales of a view that draws all its forces at ONE μ_F (a longer arrow is a
-    larger force everywhere in the view): ``scales[0]`` puts the largest force into
-    ``room_mm``; a force shorter than :data:`SHORT_MM` there is drawn again in an inset (an
-    ESKD detail of its point) at a finer μ_F, ``scales[1:]``, each inset at one of them; a
-    force under :data:`VIEW_NEGLIGIBLE` of the largest is named, not drawn (``negligible``).
-
-    The insets' scales are cut from the smallest short force up: each draws its smallest
-    force at least :data:`SHORT_MM` long (the coarsest factor that does) and takes the larger
-    ones while it draws them at most :data:`INSET_MM` long. :meth:`ForceScales.tier` gives a
-    force's scale (0: the view itself). Forces under ``tol.DERIVED`` of the largest are zero."""
+    larger force everywhere in it) and its short ones at ONE more (a teacher accepts the
+    view's μ_F and one other): ``scales[0]`` puts the largest force into ``room_mm``; a force
+    shorter than :data:`SHORT_MM` there is drawn again in an inset (an ESKD detail of its
+    point) at ``scales[1]``, the one μ_F of all the view's insets: the coarsest that draws the
+    smallest of them at least :data:`SHORT_MM` long where that draws the largest within the
+    insets' room (:data:`TIER_LIMIT` times the view's longest arrow, at least
+    :data:`INSET_MM`: an inset's arrow no more than that much longer than the view's own),
+    else the finest that draws the largest within it. A force shorter than :data:`SHORT_MM`
+    there too, or under :data:`VIEW_NEGLIGIBLE` of the largest, is named, not drawn
+    (``negligible``: the largest such; ``limit``: the share of the largest under which they
+    are). A force of ``keep`` (a free body's reaction: its balance is what the view shows)
+    over :data:`VIEW_NEGLIGIBLE` of the largest is never named: the insets' μ_F draws the
+    smallest of them at least :data:`SHORT_MM` long, their room or not.
+    :meth:`ForceScales.tier` gives a force's scale (0: the view itself, 1: its insets).
+    Forces under ``tol.DERIVED`` of the largest are zero."""
     mags = sorted((abs(F) for F in forces), reverse=True)
     big = mags[0] if mags else 0.0
     room = max(room_mm, 2.5 * SHORT_MM)
@@ -231,20 +240,20 @@ def view_scales(forces: Iterable[float], room_mm: float) -> ForceScales:
     top = nice_factor(big, room, "F")
     short = SHORT_MM * (1.0 - tol.DERIVED)
     small = sorted(F for F in mags if floor < F and F / top.k < short)
-    scales = [top, *reversed(inset_bands(small))]
-    return ForceScales(tuple(dict.fromkeys(scales)), zero, floor, insets=True)
-
-
-def inset_bands(forces: Iterable[float]) -> list[Scale]:
-    """The μ_F of the insets that draw forces of magnitudes ``forces`` (N), from the finest:
-    from the smallest force up, each the coarsest factor that draws its smallest force at
-    least :data:`SHORT_MM` long, taking the larger ones while it draws them at most
-    :data:`INSET_MM` long."""
-    bands: list[Scale] = []
-    for F in sorted(forces):
-        if not bands or F / bands[-1].k > INSET_MM * (1.0 + tol.DERIVED):
-            bands.append(nice_below(F, SHORT_MM))
-    return bands
+    if not small:
+        return ForceScales((top,), zero, floor, insets=True, limit=VIEW_NEGLIGIBLE)
+    inset = max(TIER_LIMIT * big / top.k, INSET_MM)
+    k2 = nice_below(small[0], SHORT_MM)
+    if small[-1] / k2.k > inset * (1.0 + tol.DERIVED):
+        k2 = nice_factor(small[-1], inset, "F")
+        kept = [F for F in keep if floor < F and F / top.k < short]
+        if kept and min(kept) / k2.k < short:
+            k2 = nice_below(min(kept), SHORT_MM)
+    named = [F for F in small if F / k2.k < short]
+    negligible = max([floor, *named])
+    limit = max(VIEW_NEGLIGIBLE, SHORT_MM * k2.k / big) if named else VIEW_NEGLIGIBLE
+    scales = (top, k2) if len(named) < len(small) else (top,)
+    return ForceScales(scales, zero, negligible, insets=True, limit=limit)
 
 
 #: A force's arrow on a free body keeps this far (mm) from the centre lines of what is drawn
