@@ -214,3 +214,33 @@ def test_regroup_lays_the_loads_off_in_an_order_that_does_not_cross() -> None:
                         *poly.names[-2:]])  # fmt: skip
     assert crossings(kept, SHORT_MM * k) == 0
     assert regroup(kept, k).names == kept.names
+
+
+@pytest.mark.parametrize("path", [p for p in FILES if p.parent.name == "linkages_plans"],
+                         ids=lambda p: p.stem)  # fmt: skip
+def test_a_force_is_named_once_in_its_plan(path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """A plan with its details names each of its forces once: a detail's line joining a vector
+    that another detail draws (a run cut in two: sixbar_coupler_slider's Ю1 and Я1 both named
+    Ф4) is lettered with that detail's letter."""
+    from geomcad.sheet import views
+    from geomcad.sheet.drawing import Viewport
+
+    labels: list[list[str]] = []
+    draw, label = views.Polygon.draw, Viewport.label
+
+    def rec_draw(self: Polygon, d: Any, at: Any) -> None:
+        labels.append([])
+        draw(self, d, at)
+
+    def rec_label(v: Viewport, q: Any, markup: str, *args: Any, **kw: Any) -> Any:
+        if labels:
+            labels[-1].append(markup)
+        return label(v, q, markup, *args, **kw)
+
+    monkeypatch.setattr(views.Polygon, "draw", rec_draw)
+    monkeypatch.setattr(Viewport, "label", rec_label)
+    dict(geomcad.solve(str(path)).sheets())
+    assert labels
+    for names in labels:
+        forces = [n for n in names if n.startswith(("R", "G", "F", "Ф")) and "=" not in n]
+        assert len(forces) == len(set(forces)), sorted(forces)

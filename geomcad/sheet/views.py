@@ -1059,9 +1059,12 @@ def draw_detail(
     names: Mapping[str, str] | None = None,
     found: Iterable[str] = (),
     height: float = 2.5,
+    others: Sequence[Detail] = (),
 ) -> None:
     """Draw detail ``dt`` of ``poly`` in its slot of the polygon's viewport ``v``: its run at
-    its μ_F, captioned with its letter and μ_F, the lines of the long vectors it joins."""
+    its μ_F, captioned with its letter and μ_F, the lines of the long vectors it joins (a
+    vector in another of ``others``, the plan's details, lettered with that one's letter;
+    the others unnamed: the plan names them)."""
     sc = Scale(dt.k, "F")
     sx0, sy0, sx1, sy1 = dt.slot
     names = names or {}
@@ -1073,9 +1076,14 @@ def draw_detail(
     at = v.p(((sx0 + sx1) / 2.0, (sy0 + sy1 - dt.cap) / 2.0))
     bx0, by0, bx1, by1 = dt.box
     sub = Viewport(v.d, sc, (bx0 + bx1) / 2.0, (by0 + by1) / 2.0, at)
+    # the lines of the vectors it joins are not named again (a force appears once in a
+    # plan: the plan names them by the circle): one drawn in another detail (a run cut in
+    # two) is lettered with that detail's letter
+    elsewhere = {n: d.letter for d in others if d is not dt for n in d.run}
     for pv, a, b in _stubs(poly, dt, sc.k):
         sub.seg(a, b, "construction")
-        sub.label(b, names.get(pv.name, pv.name), height, clear=0.5)
+        if pv.name in elsewhere:
+            sub.label(b, elsewhere[pv.name], height, clear=0.5)
     run = [poly[n] for n in dt.run if poly[n].magnitude > _zero(poly)]
     shift = lanes(sc.k, run)  # those along one another side by side, tied where they meet
     for i, pv in enumerate(run):
@@ -1272,7 +1280,7 @@ class Polygon(View):
             poly = self.layers[-1][0]
             found = self.found if self.found is not None else {n for n, _ in poly.solved}
             for dt in self.details:
-                draw_detail(v, poly, dt, self.names, found, self.label_height)
+                draw_detail(v, poly, dt, self.names, found, self.label_height, self.details)
 
 
 #: The height (mm) of the line under a polygon's caption that names the vectors left out.
