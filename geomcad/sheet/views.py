@@ -23,6 +23,8 @@ Every view's words come from the tables of :mod:`geomcad.sheet.lang`; numbers ar
 
 from __future__ import annotations
 
+import functools
+import itertools
 import math
 import re
 import sys
@@ -251,14 +253,17 @@ def draw_polygon(
     in_detail = {n for dt in details for n in dt.run}
     zero = _zero(poly)
     omit = set(omit)
+    # a resultant along its long component (the other too short to part them): one line
+    twins = twin_resultants(poly, v.scale.k)
     shift = (
         _shifts(v, poly, in_detail)
         if thin
-        else lanes(v.scale.k, _lane_vectors(poly, in_detail, omit))
+        else lanes(v.scale.k, _lane_vectors(poly, in_detail, omit | set(twins)))
     )
     short: list[str] = []
     drawn = [pv for pv in poly.vectors if pv.magnitude > zero and pv.name not in omit]
-    res = resultants(poly)
+    res = [(r, c) for r, c in resultants(poly) if r.name not in twins]
+    also = {comp: r for r, comp in twins.items()}
     # a component is labelled outside the triangle it makes with its resultant
     away: dict[str, Vec] = {}
     for r, _ in res:
@@ -275,6 +280,8 @@ def draw_polygon(
             v.seg(pv.head + s, nxt.tail + s2, "construction")
         tail, head = pv.tail + s, pv.head + s
         text = (names or {}).get(pv.name, pv.name)
+        if pv.name in also:  # its resultant drawn over it: "Rⁿ₃₄ ≈ R₃₄"
+            text = f"{text} ≈ {(names or {}).get(also[pv.name], also[pv.name])}"
         if pv.name in in_detail:
             # its line keeps the chain whole (its arrow, named, is drawn in its detail: the
             # circle round it is clear of labels)
@@ -337,6 +344,29 @@ def draw_polygon(
 
 #: A reaction's component: R^n_{12}, R^τ_{12} (its resultant R_{12}).
 _COMPONENT = re.compile(r"(.+)\^(?:n|τ|t)(_.+)")
+
+
+def twin_resultants(poly: ForcePolygon, k: float) -> dict[str, str]:
+    """The resultants of ``poly``'s split reactions (:func:`resultants`) that, drawn at μ_F
+    ``k``, would run as a twin line along their long component: the other component is
+    shorter than two arrowheads (drawn in a detail), so the two lines part by less than that
+    over the whole plan. A plan draws the one line, named with both ("Rⁿ₃₄ ≈ R₃₄"). By the
+    resultant's name, its long component's."""
+    out: dict[str, str] = {}
+    for r, _ in resultants(poly):
+        parts = [pv for pv in poly.vectors if _resultant_of(pv.name) == r.name]
+        if len(parts) != 2:
+            continue
+        small, big = sorted(parts, key=lambda pv: pv.magnitude)
+        if small.magnitude / k < SHORT_MM:
+            out[r.name] = big.name
+    return out
+
+
+def _resultant_of(name: str) -> str | None:
+    """The name of the resultant whose component ``name`` is (R^n_{12} → R_{12}), or None."""
+    m = _COMPONENT.fullmatch(name)
+    return None if m is None else m[1] + m[2]
 
 
 def resultants(poly: ForcePolygon) -> list[tuple[PlanVector, Vec]]:
@@ -629,11 +659,15 @@ DETAIL_MAX_MM = 60.0
 #: A detail enlarges the view it is taken from at least this many times (a detail barely
 #: larger than its polygon is not worth its room).
 DETAIL_LEAST = 4.0
+#: A detail is drawn no larger (mm) than its plan, or than this where the plan is smaller.
+DETAIL_BOUND_MM = 40.0
 #: The lines of the long vectors a detail joins are drawn this long (mm).
 STUB_MM = 4.0
 #: The room (mm) round a detail's drawing for its labels, and its caption's height.
 DETAIL_PAD_MM = 4.0
 DETAIL_CAPTION_H = 2.5
+#: The lines under a detail's caption are this many caption heights apart.
+DETAIL_LINES = 1.8
 #: How much (mm² of the polygon's view per mm) a detail's distance from the spot it enlarges
 #: weighs against the size of the view (:func:`place_details`).
 DETAIL_NEAR = 100.0
@@ -724,6 +758,10 @@ class Detail:
     cap: float = 0.0
     #: the vectors up to this magnitude are left out (negligible): no line of them is joined
     floor: float = 0.0
+    #: the vectors of the run shorter than two arrowheads at ``k`` (a detail no larger than
+    #: its plan could not enlarge them more): drawn as lines, listed with their values under
+    #: the detail's caption
+    listed: tuple[str, ...] = ()
 
 
 def detail_k(mags: Sequence[float], k: float) -> float:
@@ -734,14 +772,22 @@ def detail_k(mags: Sequence[float], k: float) -> float:
 
 
 def plan_details(
-    poly: ForcePolygon, k_ref: float, letters: Iterator[str], floor: float = 0.0
+    poly: ForcePolygon,
+    k_ref: float,
+    letters: Iterator[str],
+    floor: float = 0.0,
+    bound: float = 0.0,
 ) -> list[Detail]:
     """The details of ``poly`` drawn at μ_F ``k_ref``, all of one level: one per run of its
     vectors shorter than two arrowheads there (:func:`regroup` makes it one run where the
     polygon's order allows), at :func:`detail_k`; a run whose longest would then exceed
     :data:`DETAIL_MAX_MM` is cut, along the chain, into the fewest pieces that each keep
     within it, each piece a detail of its own drawn beside the others (never inside). The
-    vectors up to ``floor`` (negligible) are in none."""
+    vectors up to ``floor`` (negligible) are in none. ``bound`` (mm, 0: none): no detail is
+    drawn larger than that (its plan's size: a detail never outgrows its plan): where its
+    run at :func:`detail_k` would be, at the finest factor of the series that keeps it within
+    (its joined lines included); the vectors of the run then shorter than two arrowheads are
+    its :attr:`Detail.listed`."""
     out = []
     for run in short_runs(poly.vectors, SHORT_MM * k_ref, floor=floor):
         pieces: list[list[str]] = []
@@ -755,28 +801,44 @@ def plan_details(
         for piece in pieces:
             kd = detail_k([poly[n].magnitude for n in piece], k_ref)
             box = _bbox(q for n in piece for q in (poly[n].tail, poly[n].head))
-            out.append(Detail(tuple(piece), kd, next(letters), box, floor=floor))
+            listed: tuple[str, ...] = ()
+            room = bound - 2.0 * STUB_MM
+            size = max(box[2] - box[0], box[3] - box[1])
+            if bound > 0.0 and room > 0.0 and size / kd > room:
+                kd = nice_factor(size, room, "F").k
+                zero = max(_zero(poly), floor)
+                listed = tuple(n for n in piece
+                               if zero < poly[n].magnitude < SHORT_MM * kd)  # fmt: skip
+            out.append(Detail(tuple(piece), kd, next(letters), box, floor=floor, listed=listed))
     return out
 
 
 def regroup(poly: ForcePolygon, k: float) -> ForcePolygon:
+    """:func:`_regroup`, remembered (a sheet's layout asks it again for each arrangement)."""
+    return _regroup(poly, k)
+
+
+@functools.lru_cache(maxsize=256)
+def _regroup(poly: ForcePolygon, k: float) -> ForcePolygon:
     """The polygon with its known loads laid off in the order that makes its vectors shorter
     than two arrowheads at μ_F ``k`` one run, where it can (a polygon may take its known
     forces in any order: only the closing of its unknowns is fixed): the unknowns (or the
     closing vector), the components of a reaction split in two (their resultant closes
     them) stay where they are, the other vectors take their places by magnitude, rising or
-    falling, whichever leaves fewer runs (the polygon's own order on a tie). The same
-    vectors head to tail from the same pole; the polygon closes as before."""
+    falling, whichever leaves fewer runs (the polygon's own order on a tie). Before the runs
+    comes the polygon not crossing itself (:func:`crossings` of its sides two arrowheads
+    long): where no order by magnitude keeps it one run and uncrossed, its loads are laid
+    off in every order (:data:`REGROUP_ALL`, :data:`REGROUP_LONGS`). A crossing that stays
+    is inherent to the forces (the unknowns' places are fixed). The same vectors head to
+    tail from the same pole; the polygon closes as before."""
     fixed = {n for n, _ in poly.solved} or {poly.vectors[-1].name} if poly.vectors else set()
     free = [i for i, pv in enumerate(poly.vectors)
             if pv.name not in fixed and _COMPONENT.fullmatch(pv.name) is None]  # fmt: skip
     if len(free) < 2:
         return poly
     limit = SHORT_MM * k
-    best = (len(short_runs(poly.vectors, limit)), poly)
-    for down in (False, True):
-        ordered = sorted((poly.vectors[i] for i in free), key=lambda pv: pv.magnitude,
-                         reverse=down)  # fmt: skip
+
+    def laid(ordered: Sequence[PlanVector]) -> ForcePolygon:
         vs = list(poly.vectors)
         for i, pv in zip(free, ordered, strict=True):
             vs[i] = pv
@@ -785,11 +847,77 @@ def regroup(poly: ForcePolygon, k: float) -> ForcePolygon:
         for pv in vs:
             out.append(PlanVector(pv.name, tail, tail + pv.force))
             tail = out[-1].head
-        cand = ForcePolygon(poly.pole, tuple(out), poly.solved)
-        runs = len(short_runs(cand.vectors, limit))
-        if runs < best[0]:
-            best = (runs, cand)
+        return ForcePolygon(poly.pole, tuple(out), poly.solved)
+
+    def key(cand: ForcePolygon) -> tuple[int, int]:
+        # a polygon whose long sides cross reads worse than one with one detail more
+        return crossings(cand, limit), len(short_runs(cand.vectors, limit))
+
+    best = (key(poly), poly)
+    for down in (False, True):
+        cand = laid(sorted((poly.vectors[i] for i in free), key=lambda pv: pv.magnitude,
+                           reverse=down))  # fmt: skip
+        if key(cand) < best[0]:
+            best = (key(cand), cand)
+    longs = [poly.vectors[i] for i in free if poly.vectors[i].magnitude >= limit]
+    if best[0] <= (0, 1) or len(longs) > REGROUP_LONGS:
+        return best[1]
+    # its long sides cross, or its short ones are apart: its loads in every order (ГОСТ,
+    # textbook: any order of the known forces), or, too many for that, the long ones in
+    # every order with the short ones one run among them
+    shorts = sorted((poly.vectors[i] for i in free if poly.vectors[i].magnitude < limit),
+                    key=lambda pv: pv.magnitude)  # fmt: skip
+    if len(free) <= REGROUP_ALL:
+        orders: Iterable[Sequence[PlanVector]] = itertools.permutations(
+            poly.vectors[i] for i in free
+        )
+    else:
+        orders = (
+            [*perm[:at], *shorts, *perm[at:]]
+            for perm in itertools.permutations(longs)
+            for at in range(len(perm) + 1)
+        )
+    for order in orders:
+        cand = laid(order)
+        if key(cand) < best[0]:
+            best = (key(cand), cand)
     return best[1]
+
+
+#: A polygon whose long sides cross has its loads laid off in every order where it has at
+#: most this many of them …
+REGROUP_ALL = 6
+#: … else its long loads in every order (at most this many), its short ones one run.
+REGROUP_LONGS = 5
+
+
+def crossings(poly: ForcePolygon, least: float = 0.0) -> int:
+    """How many times the polygon's sides (its vectors not zero) cross one another: pairs of
+    sides, both at least ``least`` long, that are not neighbours in the chain and cut each
+    other inside both, farther than ``least`` from their ends."""
+    zero = _zero(poly)
+    sides = [(pv.tail, pv.head, pv.magnitude >= least)
+             for pv in poly.vectors if pv.magnitude > zero]  # fmt: skip
+    n = len(sides)
+    out = 0
+    for i in range(n):
+        a, b, long_i = sides[i]
+        for j in range(i + 2, n):
+            if (i == 0 and j == n - 1) or not (long_i and sides[j][2]):
+                continue  # the closing side meets the first at the pole
+            c, d, _ = sides[j]
+            den = (b - a).cross(d - c)
+            if abs(den) <= zero * zero:
+                continue  # parallel: lanes draw them apart
+            t = (c - a).cross(d - c) / den
+            u = (c - a).cross(b - a) / den
+            # sides that only touch at an end do not cross, nor those that cross within
+            # ``least`` of an end (in a detail's circle, where short sides join them)
+            e = max(tol.DERIVED, least / (b - a).norm)
+            f = max(tol.DERIVED, least / (d - c).norm)
+            if e < t < 1.0 - e and f < u < 1.0 - f:
+                out += 1
+    return out
 
 
 def place_details(
@@ -798,6 +926,7 @@ def place_details(
     k: float,
     ext: Extent,
     room: tuple[float, float] | None = None,
+    names: Mapping[str, str] | None = None,
 ) -> Extent:
     """Give each detail its slot beside the polygon's extent ``ext`` (model units; their room
     in mm at the polygon's μ_F ``k``), one after another: in a corner of the polygon's box
@@ -815,10 +944,11 @@ def place_details(
         pts += [b for _, _, b in _stubs(poly, dt, kd)]
         dt.box = _bbox(pts)
         bw, bh = (dt.box[2] - dt.box[0]) * k / kd, (dt.box[3] - dt.box[1]) * k / kd
+        lines = [_detail_caption(dt, Scale(kd, "F")), *_detail_listed(poly, dt, names)]
         w = max(bw + 2.0 * pad,
-                text_width(_detail_caption(dt, Scale(kd, "F")), DETAIL_CAPTION_H) * k)  # fmt: skip
-        sizes.append((w, bh + 2.0 * pad + cap))
-        dt.cap = cap
+                *(text_width(t, DETAIL_CAPTION_H) * k for t in lines))  # fmt: skip
+        dt.cap = cap + (len(lines) - 1) * DETAIL_CAPTION_H * DETAIL_LINES * k
+        sizes.append((w, bh + 2.0 * pad + dt.cap))
     gap = DETAIL_GAP_MM * k
     x0, y0, x1, y1 = ext
     segs = [(pv.tail, pv.head) for pv in poly.vectors]
@@ -891,6 +1021,19 @@ def _detail_caption(dt: Detail, sc: Scale) -> str:
     return f"{dt.letter} ({scale_text(sc)})"
 
 
+def _detail_listed(
+    poly: ForcePolygon, dt: Detail, names: Mapping[str, str] | None = None
+) -> list[str]:
+    """The line under a detail's caption that lists the vectors of its run too short to
+    draw at its μ_F, with their values (none: no line)."""
+    if not dt.listed:
+        return []
+    unit = WORDS("unit.N")
+    items = ", ".join(f"{(names or {}).get(n, n)} = {num(poly[n].magnitude)} {unit}"
+                      for n in dt.listed)  # fmt: skip
+    return [WORDS("detail_listed", items=items, mm=num(SHORT_MM))]
+
+
 def _stubs(poly: ForcePolygon, dt: Detail, kd: float) -> list[tuple[PlanVector, Vec, Vec]]:
     """The lines (vector, from, to; :data:`STUB_MM` long at the detail's μ_F ``kd``) of the
     long vectors a detail's run joins, before its first and after its last."""
@@ -916,21 +1059,31 @@ def draw_detail(
     names: Mapping[str, str] | None = None,
     found: Iterable[str] = (),
     height: float = 2.5,
+    others: Sequence[Detail] = (),
 ) -> None:
     """Draw detail ``dt`` of ``poly`` in its slot of the polygon's viewport ``v``: its run at
-    its μ_F, captioned with its letter and μ_F, the lines of the long vectors it joins."""
+    its μ_F, captioned with its letter and μ_F, the lines of the long vectors it joins (a
+    vector in another of ``others``, the plan's details, lettered with that one's letter;
+    the others unnamed: the plan names them)."""
     sc = Scale(dt.k, "F")
     sx0, sy0, sx1, sy1 = dt.slot
     names = names or {}
     found = set(found)
     top = v.p((sx0, sy1))
-    v.d.text(_detail_caption(dt, sc), (top[0], top[1] + DETAIL_CAPTION_H), DETAIL_CAPTION_H)
+    for i, line in enumerate([_detail_caption(dt, sc), *_detail_listed(poly, dt, names)]):
+        v.d.text(line, (top[0], top[1] + DETAIL_CAPTION_H * (1.0 + DETAIL_LINES * i)),
+                 DETAIL_CAPTION_H)  # fmt: skip
     at = v.p(((sx0 + sx1) / 2.0, (sy0 + sy1 - dt.cap) / 2.0))
     bx0, by0, bx1, by1 = dt.box
     sub = Viewport(v.d, sc, (bx0 + bx1) / 2.0, (by0 + by1) / 2.0, at)
+    # the lines of the vectors it joins are not named again (a force appears once in a
+    # plan: the plan names them by the circle): one drawn in another detail (a run cut in
+    # two) is lettered with that detail's letter
+    elsewhere = {n: d.letter for d in others if d is not dt for n in d.run}
     for pv, a, b in _stubs(poly, dt, sc.k):
         sub.seg(a, b, "construction")
-        sub.label(b, names.get(pv.name, pv.name), height, clear=0.5)
+        if pv.name in elsewhere:
+            sub.label(b, elsewhere[pv.name], height, clear=0.5)
     run = [poly[n] for n in dt.run if poly[n].magnitude > _zero(poly)]
     shift = lanes(sc.k, run)  # those along one another side by side, tied where they meet
     for i, pv in enumerate(run):
@@ -940,6 +1093,9 @@ def draw_detail(
                     "construction")  # fmt: skip
         n = pv.name
         tail, head = pv.tail + s, pv.head + s
+        if n in dt.listed:  # too short to draw at its μ_F: its line, its value listed
+            sub.seg(tail, head, "construction")
+            continue
         sub.arrow(tail, head, "result" if n in found else "vector")
         prefer = (s.unit().x, s.unit().y) if s.norm > 0.0 else _outward(poly, tail, head, False)
         sub.label((tail + head) * 0.5, names.get(n, n), height, prefer=prefer, clear=0.5)
@@ -1028,16 +1184,18 @@ class Polygon(View):
         """The details, thinness and extent (with the details' slots) of the polygon at
         μ_F ``k``."""
         poly = self.layers[-1][0]
-        details = plan_details(poly, k, letters, self.floor)
-        thin = len(self.layers) == 1 and is_thin(poly, k)
         x0, y0, x1, y1 = _bbox(q for pv in poly.vectors for q in (pv.tail, pv.head))
+        # a detail no larger than its plan as drawn (nor than DETAIL_BOUND_MM)
+        bound = max(max(x1 - x0, y1 - y0) / k, DETAIL_BOUND_MM)
+        details = plan_details(poly, k, letters, self.floor, bound)
+        thin = len(self.layers) == 1 and is_thin(poly, k)
         if thin:  # the room of the vectors side by side (their labels in the margin)
             grow = (len(poly.vectors) - 1) * OFFSET_MM / 2.0 * k
             x0, y0, x1, y1 = x0 - grow, y0 - grow, x1 + grow, y1 + grow
         for poly2, _ in self.layers[:-1]:
             b = _bbox(q for pv in poly2.vectors for q in (pv.tail, pv.head))
             x0, y0, x1, y1 = min(x0, b[0]), min(y0, b[1]), max(x1, b[2]), max(y1, b[3])
-        return details, thin, place_details(poly, details, k, (x0, y0, x1, y1), room)
+        return details, thin, place_details(poly, details, k, (x0, y0, x1, y1), room, self.names)
 
     def extent(self) -> Extent | None:
         return self._ext
@@ -1100,8 +1258,11 @@ class Polygon(View):
             self.details, self.thin, ext = self._with_details(v.scale.k, letters, room)
             centre = ((ext[0] + ext[2]) / 2.0, (ext[1] + ext[3]) / 2.0)
             where = v.at
+            half = (ext[3] - ext[1]) / v.scale.k / 2.0
             if short:  # drawn short: under its caption, not in the middle of its cell
-                where = (v.at[0], min(v.at[1], y0 + (ext[3] - ext[1]) / v.scale.k / 2.0))
+                where = (v.at[0], min(v.at[1], y0 + half))
+            if 2.0 * half > y1 - y0:  # taller than its cell: never over its own caption
+                where = (v.at[0], y0 + half)
             v = Viewport(d, v.scale, centre[0], centre[1], where)
             at.viewport = v
         if self.note:  # on a line of its own under the caption
@@ -1119,7 +1280,7 @@ class Polygon(View):
             poly = self.layers[-1][0]
             found = self.found if self.found is not None else {n for n, _ in poly.solved}
             for dt in self.details:
-                draw_detail(v, poly, dt, self.names, found, self.label_height)
+                draw_detail(v, poly, dt, self.names, found, self.label_height, self.details)
 
 
 #: The height (mm) of the line under a polygon's caption that names the vectors left out.
