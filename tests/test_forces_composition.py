@@ -293,3 +293,47 @@ def test_the_crank_is_read_at_crank_mm_on_the_mechanism_and_cut_out(
     assert crank.scale is not None
     assert lk.length / crank.scale.k >= CRANK_MM * 0.999, crank.scale
     assert crank.scale.ratio_text() in crank.view.caption(crank.scale)
+
+
+def _lever_ink(v: lf._Lever, k: float) -> tuple[float, float, float, float]:
+    """The lever's drawing and the arrows it draws at its μ_F (model units)."""
+    x0, y0, x1, y1 = v._ext
+    xs, ys = [x0, x1], [y0, y1]
+    _, here, lengths, sides = v._sides(k, {})
+    for (_, F, _, _), (arrive, p), n in zip(here, sides, lengths, strict=True):
+        e = p + F.unit() * (k * n * (-1.0 if arrive else 1.0))
+        xs += [p.x, e.x]
+        ys += [p.y, e.y]
+    return min(xs), min(ys), max(xs), max(ys)
+
+
+def test_the_lever_grows_into_its_box() -> None:
+    """Issue 27 (round 2): the layout reserves LEVER_LOAD_MM round Zhukovsky's lever for its
+    arrows whatever they are; the sixbar's lever was drawn 108 × 210 mm in a box of
+    269 × 370 (1:250, 70 % blank) where the next step of its series, its arrows with it, fits.
+    It is drawn at the finest step whose drawing keeps the room of its arrows' labels in the
+    box, its arrows inside the box."""
+    from geomcad.sheet.compose import round_scale_down
+
+    s = geomcad.solve(
+        str(Path(__file__).resolve().parent / "linkages_layout" / "sixbar_coupler_slider.toml")
+    ).data
+    _tree, z = lf.force_layout(s)
+    (pl,) = [pl for pl in z.layout if isinstance(pl.view, lf._Lever)]
+    v = pl.view
+    assert isinstance(v, lf._Lever) and pl.scale is not None
+    k = pl.scale.k
+    top = pl.box[1] + v.title_room()
+    x0, y0, x1, y1 = _lever_ink(v, k)
+    # the drawing and its arrows inside the box (centred in pl.inner, under the caption)
+    cx, cy = (pl.inner[0] + pl.inner[2]) / 2.0, (pl.inner[1] + pl.inner[3]) / 2.0
+    ex = v.extent()
+    mx, my = (ex[0] + ex[2]) / 2.0, (ex[1] + ex[3]) / 2.0
+    assert cx + (x0 - mx) / k >= pl.box[0] and cx + (x1 - mx) / k <= pl.box[2]
+    assert cy - (y1 - my) / k >= top and cy - (y0 - my) / k <= pl.box[3]
+    # the next step of the series: the drawing leaves no room for its arrows' labels
+    finer = round_scale_down(k * 0.99, "v", v.series).k
+    room = 2.0 * (lf.LABEL_ROOM_MM + lf.LEVER_EDGE_MM)
+    assert (ex[2] - ex[0]) / finer + room > pl.box[2] - pl.box[0] or (
+        ex[3] - ex[1]
+    ) / finer + room > pl.box[3] - top, (k, finer)

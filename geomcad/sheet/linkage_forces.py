@@ -79,6 +79,7 @@ from geomcad.sheet.compose import (
     View,
     arrange,
     compose,
+    round_scale_down,
 )
 from geomcad.sheet.compose import _title_width as title_width
 from geomcad.sheet.drawing import SHORT_MM, Viewport
@@ -160,6 +161,9 @@ LABEL_KEEP_MM = 1.0
 LABEL_ROOM_MM = 6.0
 #: The longest load arrow on Zhukovsky's lever (mm).
 LEVER_LOAD_MM = 40.0
+#: The paper (mm) the lever drawn larger than the layout drew it (:meth:`_Lever.grow`) keeps
+#: free inside its box's edges.
+LEVER_EDGE_MM = 2.0
 #: The share of a view's larger drawn side that its longest load arrow may take where that is
 #: more than its least room (LOAD_MM, LEVER_LOAD_MM): a view drawn large draws its forces long,
 #: so that fewer of them are short there and drawn again in insets (:func:`arrow_room`).
@@ -354,6 +358,9 @@ def force_layout(s: Solved) -> tuple[Tree, formats.Sized]:
         own, _kept = _final2(s, P, forces, k, found[1], shared, largest, kin, True, under)
         if own[1].layout.fits or not lay.fits:
             found = own
+    for pl in found[1].layout:
+        if isinstance(pl.view, _Lever):
+            pl.view.grow(pl, found[1].layout)
     return found
 
 
@@ -1574,6 +1581,48 @@ class _Lever(_ByScale, View):
 
     def title_room(self) -> float:
         return super().title_room() + self.further_room()
+
+    def grow(self, pl: Placed, lay: Layout) -> None:
+        """The lever drawn larger in its box where its arrows allow: the layout reserves
+        LEVER_LOAD_MM round it for its arrows whatever they are; here the finer steps of its
+        series are tried, each with the margin its box leaves round the drawing, while the
+        arrows drawn at that scale's μ_F (:meth:`scales_at`), their labels' room past them,
+        keep within the box (no more forces in insets than at the layout's scale)."""
+        if pl.scale is None or self.group:
+            return
+        x0, y0, x1, y1 = self._ext
+        top = pl.box[1] + self.title_room()
+        rw, rh = pl.box[2] - pl.box[0] - 2.0 * LEVER_EDGE_MM, pl.box[3] - top - 2.0 * LEVER_EDGE_MM
+        margin, scale, fs = self.margin, pl.scale, self.scales_at(pl.scale)
+        shorts = self._shorts(fs)
+        best: tuple[float, Scale] | None = None
+        k = scale.k
+        while True:
+            k = round_scale_down(k * (1.0 - 4.0 * tol.REL_LENGTH), scale.q, self.series).k
+            m = min(0.5 * (rw - (x1 - x0) / k), 0.5 * (rh - (y1 - y0) / k))
+            if m < LABEL_ROOM_MM + LEVER_EDGE_MM:
+                break
+            at = Scale(k, scale.q)
+            self.margin = m
+            self.__dict__.pop("_by_scale", None)
+            fs_at = self.scales_at(at)
+            inner = (x0 - (m - LABEL_ROOM_MM) * k, y0 - (m - LABEL_ROOM_MM) * k,
+                     x1 + (m - LABEL_ROOM_MM) * k, y1 + (m - LABEL_ROOM_MM) * k)  # fmt: skip
+            if self._shorts(fs_at) > shorts or not self._fits(fs_at, at, inner):
+                break
+            best = (m, at)
+        self.margin = margin
+        self.__dict__.pop("_by_scale", None)
+        if best is None:
+            self.fs = fs
+            return
+        m, at = best
+        self.margin = m
+        e = LEVER_EDGE_MM + m
+        pl.inner = (pl.box[0] + e, top + e, pl.box[2] - e, pl.box[3] - e)
+        pl.scale = at
+        lay.groups[f"#{id(self)}"] = at
+        self.fs = self.scales_at(at)
 
     def caption(self, scale: Scale | None) -> str:
         m = WORDS("m_bal", value=_load(self.f.lever.M_bal))
