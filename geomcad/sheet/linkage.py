@@ -1378,9 +1378,17 @@ class _Ink:
     the lines of those roles."""
 
     def __init__(self, sheet: Sheet, roles: Collection[str] = ()) -> None:
+        self.roles = roles
+        self.segs = self._segments(sheet.items)
+
+    def add(self, items: Sequence[object]) -> None:
+        """The lines of ``items`` (drawn since) added."""
+        self.segs = np.concatenate([self.segs, self._segments(items)])
+
+    def _segments(self, items: Sequence[object]) -> np.ndarray:
         segs: list[tuple[float, float, float, float]] = []
-        for it in sheet.items:
-            if roles and getattr(it, "role", None) not in roles:
+        for it in items:
+            if self.roles and getattr(it, "role", None) not in self.roles:
                 continue
             if isinstance(it, Polyline):
                 pts = (*it.points, *it.points[:1]) if it.closed else it.points
@@ -1394,7 +1402,7 @@ class _Ink:
                 ts = [a0 + sweep * k / m for k in range(m + 1)]
                 ring = [(it.c[0] + it.r * math.cos(t), it.c[1] + it.r * math.sin(t)) for t in ts]
                 segs += [(*a, *b) for a, b in itertools.pairwise(ring)]
-        self.segs = np.asarray(segs, dtype=float).reshape(-1, 4)
+        return np.asarray(segs, dtype=float).reshape(-1, 4)
 
     def crossed(self, boxes: Sequence[Box], grow: float = INK_GROW_MM) -> int:
         """How many segments cross the ``boxes`` (paper mm, each grown by ``grow``), all told
@@ -1561,6 +1569,51 @@ def _leader_off(
     return out
 
 
+#: Within this (mm) of a rule's limit the array test below is not trusted: the exact one decides.
+_HAIR_MM = 1e-9
+
+
+def _tried_places(
+    p: tuple[float, float], steps: int, w: float, h: float
+) -> tuple[np.ndarray, np.ndarray]:
+    """Every ``w`` × ``h`` place round ``p`` in the order the searches below try them (step by
+    step of :data:`LINK_STEP_MM`, direction by direction of :data:`_LINK_DIRS`): their
+    distances from ``p`` and their boxes (K × 4, paper mm)."""
+    rs = np.repeat(np.arange(1, steps + 1) * LINK_STEP_MM, len(_LINK_DIRS))
+    us = np.tile(np.asarray(_LINK_DIRS), (steps, 1))
+    cxs, cys = p[0] + us[:, 0] * (rs + w / 2.0), p[1] + us[:, 1] * (rs + h / 2.0)
+    return rs, np.stack([cxs - w / 2.0, cys - h / 2.0, cxs + w / 2.0, cys + h / 2.0], axis=1)
+
+
+def _box_gaps(cs: np.ndarray, boxes: np.ndarray, along: float = 1.0) -> np.ndarray:
+    """:func:`_gap` of each of the boxes ``cs`` (K × 4) to each of ``boxes`` (N × 4): K × N."""
+    a = cs[:, None, :]
+    dx = np.maximum(np.maximum(a[..., 0] - boxes[:, 2], boxes[:, 0] - a[..., 2]), 0.0)
+    dy = np.maximum(np.maximum(a[..., 1] - boxes[:, 3], boxes[:, 1] - a[..., 3]), 0.0)
+    out: np.ndarray = np.hypot(dx / along, dy)
+    return out
+
+
+def _too_near(
+    cs: np.ndarray, boxes: Sequence[Box], limit: float, read: bool = False
+) -> tuple[np.ndarray, np.ndarray]:
+    """For each of the candidate boxes ``cs`` (K × 4, paper mm): whether it surely stands nearer
+    than ``limit`` to one of ``boxes`` (:func:`_gap`, or :func:`_apart` where ``read``), and
+    whether it may (within :data:`_HAIR_MM` of the limit: the caller asks the exact test). All
+    K × len(``boxes``) distances at once, for the place searches below."""
+    if not boxes:
+        return np.zeros(len(cs), dtype=bool), np.zeros(len(cs), dtype=bool)
+    b = np.asarray(boxes, dtype=float).reshape(-1, 4)
+    d = _box_gaps(cs, b)
+    if read:  # _apart: along a row, or along a column (the boxes' axes swapped)
+        d = np.minimum(
+            _box_gaps(cs, b, LINK_ALONG),
+            _box_gaps(cs[:, [1, 0, 3, 2]], b[:, [1, 0, 3, 2]], LINK_ALONG),
+        )
+    sure = np.asarray((d < limit - _HAIR_MM).any(axis=1))
+    return sure, np.asarray(~sure & (np.abs(d - limit) <= _HAIR_MM).any(axis=1))
+
+
 def keep_link_numbers_clear(sheet: Sheet, area: Box) -> None:
     """Each point's letter a thin position's line runs through (the crank's pivot among its
     twelve positions), and each link's number (a label of digits higher than
@@ -1619,46 +1672,52 @@ def keep_link_numbers_clear(sheet: Sheet, area: Box) -> None:
         if any(_apart(b, n) < LINK_CLEAR_MM for n in numbers) and t.text.isdigit():
             tiers += [(True, False), (False, False)]
         r_found = 0.0
+        # every place tried, in the order tried (step by step, direction by direction), with the
+        # rules of fixed boxes asked of all at once; the exact test only within a hair of a limit
+        rs, cs = _tried_places(p, steps, w, h)
+        inside_area = (area[0] <= cs[:, 0]) & (cs[:, 2] <= area[2])
+        inside_area &= (area[1] <= cs[:, 1]) & (cs[:, 3] <= area[3])
+        out_near, ask_near = _too_near(cs, near, LINK_CLEAR_MM, read=True)
+        out_same, ask_same = _too_near(cs, same, LINK_SAME_MM)
+        out_other, ask_other = _too_near(cs, others, NUMBER_SPACE)
+        maybe = inside_area & ~out_near & ~out_other
         for keep_same, keep_lead in tiers:
             best = -1.0  # a relaxed tier: the place whose leader stands clearest of the numbers
-            for step in range(1, steps + 1):
-                if found is not None and keep_lead:
+            ok = maybe & ~out_same if keep_same else maybe
+            for i in np.flatnonzero(ok).tolist():
+                r = float(rs[i])
+                ux, uy = _LINK_DIRS[i % len(_LINK_DIRS)]
+                cx, cy = p[0] + ux * (r + w / 2.0), p[1] + uy * (r + h / 2.0)
+                c = (cx - w / 2.0, cy - h / 2.0, cx + w / 2.0, cy + h / 2.0)
+                if ask_near[i] and any(_apart(c, n) < LINK_CLEAR_MM for n in near):
+                    continue
+                if keep_same and ask_same[i] and any(_gap(c, n) < LINK_SAME_MM for n in same):
+                    continue
+                if ask_other[i] and any(_gap(c, o) < NUMBER_SPACE for o in others):
+                    continue
+                off = math.inf
+                # what its leader must keep: LINK_CLEAR_MM, or (relaxed) more than the best
+                need = LINK_CLEAR_MM if keep_lead else best + tol.SHEET_MM
+                if r > LINK_LEADER_MM and t.text.isdigit():
+                    mid = ((c[0] + c[2]) / 2.0, (c[1] + c[3]) / 2.0)
+                    off = _leader_off(p, mid, lead, need)
+                if off < need or (not keep_lead and off == need):
+                    continue  # its leader would run among the positions' numbers
+                if ink.crossed([c]):
+                    continue
+                if r > LINK_LEADER_MM and _through_text(p, c, others):
+                    continue  # its leader would run through another text
+                found, r_found, best = c, r, off
+                if keep_lead:
                     break
-                r = step * LINK_STEP_MM
-                for ux, uy in _LINK_DIRS:
-                    cx, cy = p[0] + ux * (r + w / 2.0), p[1] + uy * (r + h / 2.0)
-                    c = (cx - w / 2.0, cy - h / 2.0, cx + w / 2.0, cy + h / 2.0)
-                    if not (area[0] <= c[0] and c[2] <= area[2] and area[1] <= c[1]
-                            and c[3] <= area[3]):  # fmt: skip
-                        continue
-                    if any(_apart(c, n) < LINK_CLEAR_MM for n in near):
-                        continue
-                    if keep_same and any(_gap(c, n) < LINK_SAME_MM for n in same):
-                        continue
-                    if any(_gap(c, o) < NUMBER_SPACE for o in others):
-                        continue
-                    off = math.inf
-                    # what its leader must keep: LINK_CLEAR_MM, or (relaxed) more than the best
-                    need = LINK_CLEAR_MM if keep_lead else best + tol.SHEET_MM
-                    if r > LINK_LEADER_MM and t.text.isdigit():
-                        mid = ((c[0] + c[2]) / 2.0, (c[1] + c[3]) / 2.0)
-                        off = _leader_off(p, mid, lead, need)
-                    if off < need or (not keep_lead and off == need):
-                        continue  # its leader would run among the positions' numbers
-                    if ink.crossed([c]):
-                        continue
-                    if r > LINK_LEADER_MM and _through_text(p, c, others):
-                        continue  # its leader would run through another text
-                    found, r_found, best = c, r, off
-                    if keep_lead:
-                        break
             if found is not None:
                 break
         if found is None:
             continue
         current[id(t)] = found
+        drawn = len(sheet.items)
         if _move_number(sheet, t, found, p, r_found):
-            ink = _Ink(sheet)
+            ink.add(sheet.items[drawn:])  # its leader
 
 
 #: A position's number stands at least this much (mm) nearer its own point than any point or
@@ -1744,32 +1803,40 @@ def keep_tracks_apart(
         found: Box | None = None
         r = 0.0
         crossed = ink.crossed([b])  # a place crossed by no more lines than its own
-        for step in range(1, steps + 1):
-            r = step * LINK_STEP_MM
-            for ux, uy in _LINK_DIRS:
-                cx, cy = p[0] + ux * (r + w / 2.0), p[1] + uy * (r + h / 2.0)
-                c = (cx - w / 2.0, cy - h / 2.0, cx + w / 2.0, cy + h / 2.0)
-                if not (
-                    area[0] <= c[0] and c[2] <= area[2] and area[1] <= c[1] and c[3] <= area[3]
-                ):
-                    continue
-                if confused(c, p, pts_near, nums_near, rows_near) or any(
-                    _gap(c, o) < NUMBER_SPACE for o in others
-                ):
-                    continue
-                if ink.crossed([c]) > crossed or (
-                    r > LINK_LEADER_MM and _through_text(p, c, others)
-                ):
-                    continue
-                found = c
-                break
-            if found is not None:
-                break
+        # every place in the order tried, the fixed rules asked of all at once (the exact test
+        # only within a hair of a limit)
+        rs, cs = _tried_places(p, steps, w, h)
+        inside_area = (area[0] <= cs[:, 0]) & (cs[:, 2] <= area[2])
+        inside_area &= (area[1] <= cs[:, 1]) & (cs[:, 3] <= area[3])
+        foes = [*(current[k] for k in nums_near), *rows_near]
+        gaps = [_box_gaps(cs, np.asarray(foes, dtype=float).reshape(-1, 4))]
+        if pts_near:
+            q = np.asarray(pts_near, dtype=float)
+            gaps.append(_box_gaps(cs, np.column_stack([q, q])))
+        least = np.min(np.concatenate(gaps, axis=1), axis=1, initial=math.inf)
+        lim = _box_gaps(cs, np.asarray([(*p, *p)], dtype=float))[:, 0] + TRACK_MARGIN_MM
+        out_conf = least < lim - _HAIR_MM
+        ask_conf = ~out_conf & (np.abs(least - lim) <= _HAIR_MM)
+        out_other, ask_other = _too_near(cs, others, NUMBER_SPACE)
+        for i in np.flatnonzero(inside_area & ~out_conf & ~out_other).tolist():
+            r = float(rs[i])
+            ux, uy = _LINK_DIRS[i % len(_LINK_DIRS)]
+            cx, cy = p[0] + ux * (r + w / 2.0), p[1] + uy * (r + h / 2.0)
+            c = (cx - w / 2.0, cy - h / 2.0, cx + w / 2.0, cy + h / 2.0)
+            if ask_conf[i] and confused(c, p, pts_near, nums_near, rows_near):
+                continue
+            if ask_other[i] and any(_gap(c, o) < NUMBER_SPACE for o in others):
+                continue
+            if ink.crossed([c]) > crossed or (r > LINK_LEADER_MM and _through_text(p, c, others)):
+                continue
+            found = c
+            break
         if found is None:
             continue
         current[id(t)] = found
+        drawn = len(sheet.items)
         if _move_number(sheet, t, found, p, r):
-            ink = _Ink(sheet)
+            ink.add(sheet.items[drawn:])  # its leader
 
 
 def _move_number(sheet: Sheet, t: TextItem, found: Box, p: tuple[float, float], r: float) -> bool:
