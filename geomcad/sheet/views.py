@@ -944,7 +944,9 @@ def place_details(
         pts += [b for _, _, b in _stubs(poly, dt, kd)]
         dt.box = _bbox(pts)
         bw, bh = (dt.box[2] - dt.box[0]) * k / kd, (dt.box[3] - dt.box[1]) * k / kd
-        lines = [_detail_caption(dt, Scale(kd, "F")), *_detail_listed(poly, dt, names)]
+        # its caption as wide as with the widest letter the sheet may give it, so that the
+        # slots (and whether the whole keeps within ``room``) never hang on the letters drawn
+        lines = [_detail_caption(dt, Scale(kd, "F"), LETTER_ROOM), *_detail_listed(poly, dt, names)]
         w = max(bw + 2.0 * pad,
                 *(text_width(t, DETAIL_CAPTION_H) * k for t in lines))  # fmt: skip
         dt.cap = cap + (len(lines) - 1) * DETAIL_CAPTION_H * DETAIL_LINES * k
@@ -1017,8 +1019,14 @@ def _crosses(a: Vec, b: Vec, box: Extent, clear: float) -> bool:
     return True
 
 
-def _detail_caption(dt: Detail, sc: Scale) -> str:
-    return f"{dt.letter} ({scale_text(sc)})"
+def _detail_caption(dt: Detail, sc: Scale, letter: str | None = None) -> str:
+    """A detail's caption: its letter (or ``letter`` in its place) and μ_F."""
+    return f"{dt.letter if letter is None else letter} ({scale_text(sc)})"
+
+
+#: The room of a detail's letter in its caption: a letter at least as wide as any of
+#: :func:`detail_letters` with a two-digit number (the detail is placed before it is lettered).
+LETTER_ROOM = "W99"
 
 
 def _detail_listed(
