@@ -781,20 +781,27 @@ def plan_details(
     """The details of ``poly`` drawn at μ_F ``k_ref``, all of one level: one per run of its
     vectors shorter than two arrowheads there (:func:`regroup` makes it one run where the
     polygon's order allows), at :func:`detail_k`; a run whose longest would then exceed
-    :data:`DETAIL_MAX_MM` is cut, along the chain, into the fewest pieces that each keep
-    within it, each piece a detail of its own drawn beside the others (never inside). The
-    vectors up to ``floor`` (negligible) are in none. ``bound`` (mm, 0: none): no detail is
-    drawn larger than that (its plan's size: a detail never outgrows its plan): where its
-    run at :func:`detail_k` would be, at the finest factor of the series that keeps it within
-    (its joined lines included); the vectors of the run then shorter than two arrowheads are
-    its :attr:`Detail.listed`."""
+    :data:`DETAIL_MAX_MM` (or whose whole would outgrow ``bound``) is cut, along the chain,
+    into the fewest pieces that each keep within it, each piece a detail of its own drawn
+    beside the others (never inside). The vectors up to ``floor`` (negligible) are in none.
+    ``bound`` (mm, 0: none): no detail is drawn larger than that (its plan's size: a detail
+    never outgrows its plan): where its run at :func:`detail_k` would be, at the finest
+    factor of the series that keeps it within (its joined lines included); the vectors of the
+    run then shorter than two arrowheads are its :attr:`Detail.listed`."""
     out = []
     for run in short_runs(poly.vectors, SHORT_MM * k_ref, floor=floor):
         pieces: list[list[str]] = []
+        room = bound - 2.0 * STUB_MM
         for n in run:
             piece = [*pieces[-1], n] if pieces else [n]
             mags = [poly[x].magnitude for x in piece]
-            if pieces and max(mags) / detail_k(mags, k_ref) <= DETAIL_MAX_MM:
+            kd = detail_k(mags, k_ref)
+            box = _bbox(q for x in piece for q in (poly[x].tail, poly[x].head))
+            # a piece within its bound too, so that none of its vectors is left short
+            within = (
+                bound <= 0.0 or room <= 0.0 or max(box[2] - box[0], box[3] - box[1]) / kd <= room
+            )
+            if pieces and max(mags) / kd <= DETAIL_MAX_MM and within:
                 pieces[-1] = piece
             else:
                 pieces.append([n])
@@ -802,7 +809,6 @@ def plan_details(
             kd = detail_k([poly[n].magnitude for n in piece], k_ref)
             box = _bbox(q for n in piece for q in (poly[n].tail, poly[n].head))
             listed: tuple[str, ...] = ()
-            room = bound - 2.0 * STUB_MM
             size = max(box[2] - box[0], box[3] - box[1])
             if bound > 0.0 and room > 0.0 and size / kd > room:
                 kd = nice_factor(size, room, "F").k
