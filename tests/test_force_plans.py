@@ -177,6 +177,46 @@ def test_a_plan_placed_coarser_than_its_details_were_reckoned_at_spills() -> Non
     assert Polygon(poly).spill(4.0 * k, (0.0, 0.0, 1.0, 1.0)) == 0.0  # no details: none
 
 
+def test_a_run_too_large_for_its_bound_is_cut_not_listed() -> None:
+    """A run whose detail at its μ_F would outgrow its plan (the crusher's group (2, 3): G_2,
+    G_3, Ф_3 and R^τ_12 one under the other, the detail held to the plan's 62 mm at a coarser
+    μ_F that left Ф_3 short and only listed) is cut into pieces each within the bound, and
+    every vector of it is drawn at least two arrowheads long in one of them."""
+    from geomcad.sheet.views import STUB_MM
+
+    vs = chain([5000.0, 470.0, 120.0, 196.0, 588.0, 3000.0],
+               ["F0", "F1", "F2", "F3", "F4", "F5"], turn=0.15)  # fmt: skip
+    vs.append(PlanVector("R", vs[-1].head, Vec(0.0, 0.0)))
+    poly = ForcePolygon(Vec(0.0, 0.0), tuple(vs), ())
+    k, bound = 100.0, 62.0
+    details = plan_details(poly, k, iter("БГДЖИЛ"), bound=bound)
+    assert sorted(n for dt in details for n in dt.run) == ["F1", "F2", "F3", "F4"]
+    assert len(details) >= 2 and not any(dt.listed for dt in details)
+    for dt in details:
+        box = dt.box
+        assert max(box[2] - box[0], box[3] - box[1]) / dt.k <= bound - 2.0 * STUB_MM + 1e-9
+        assert min(poly[n].magnitude for n in dt.run) / dt.k >= SHORT_MM * (1.0 - 1e-9)
+
+
+def test_a_detail_s_slot_never_hangs_on_its_letter() -> None:
+    """The layout reckons a plan with its details before the sheet letters them; drawn with
+    the letters the sheet gives (narrower or wider, with a number or not: the merged sheet's
+    "И1" for "Ш1" that put a detail left of its plan and the plan out of its box), each
+    detail takes the slot reckoned, so the whole keeps the size the layout checked."""
+    vs = chain([5000.0, 3.0, 40.0, 400.0, 7.0, 20.0], ["F0", "F1", "F2", "F3", "F4", "F5"])
+    vs.append(PlanVector("R", vs[-1].head, Vec(0.0, 0.0)))
+    poly = ForcePolygon(Vec(0.0, 0.0), tuple(vs), ())
+    p = Polygon(poly, detail=True)
+    k = p.k_ref
+    for room in (None, (140.0 * k, 100.0 * k)):
+        got = []
+        for letters in ("W" * 9, "ИЛПЭ", ["Ш1", "Ж12", "Ю7", "Л1"], ["Ш99", "Ж99", "Ю99", "Ш98"]):
+            details, _, ext = p._with_details(k, iter(letters), room)
+            assert len(details) >= 2
+            got.append(([dt.slot for dt in details], ext))
+        assert all(g == got[0] for g in got), room
+
+
 @pytest.mark.parametrize(
     ("forces", "room", "tiers"),
     [

@@ -781,20 +781,27 @@ def plan_details(
     """The details of ``poly`` drawn at μ_F ``k_ref``, all of one level: one per run of its
     vectors shorter than two arrowheads there (:func:`regroup` makes it one run where the
     polygon's order allows), at :func:`detail_k`; a run whose longest would then exceed
-    :data:`DETAIL_MAX_MM` is cut, along the chain, into the fewest pieces that each keep
-    within it, each piece a detail of its own drawn beside the others (never inside). The
-    vectors up to ``floor`` (negligible) are in none. ``bound`` (mm, 0: none): no detail is
-    drawn larger than that (its plan's size: a detail never outgrows its plan): where its
-    run at :func:`detail_k` would be, at the finest factor of the series that keeps it within
-    (its joined lines included); the vectors of the run then shorter than two arrowheads are
-    its :attr:`Detail.listed`."""
+    :data:`DETAIL_MAX_MM` (or whose whole would outgrow ``bound``) is cut, along the chain,
+    into the fewest pieces that each keep within it, each piece a detail of its own drawn
+    beside the others (never inside). The vectors up to ``floor`` (negligible) are in none.
+    ``bound`` (mm, 0: none): no detail is drawn larger than that (its plan's size: a detail
+    never outgrows its plan): where its run at :func:`detail_k` would be, at the finest
+    factor of the series that keeps it within (its joined lines included); the vectors of the
+    run then shorter than two arrowheads are its :attr:`Detail.listed`."""
     out = []
     for run in short_runs(poly.vectors, SHORT_MM * k_ref, floor=floor):
         pieces: list[list[str]] = []
+        room = bound - 2.0 * STUB_MM
         for n in run:
             piece = [*pieces[-1], n] if pieces else [n]
             mags = [poly[x].magnitude for x in piece]
-            if pieces and max(mags) / detail_k(mags, k_ref) <= DETAIL_MAX_MM:
+            kd = detail_k(mags, k_ref)
+            box = _bbox(q for x in piece for q in (poly[x].tail, poly[x].head))
+            # a piece within its bound too, so that none of its vectors is left short
+            within = (
+                bound <= 0.0 or room <= 0.0 or max(box[2] - box[0], box[3] - box[1]) / kd <= room
+            )
+            if pieces and max(mags) / kd <= DETAIL_MAX_MM and within:
                 pieces[-1] = piece
             else:
                 pieces.append([n])
@@ -802,7 +809,6 @@ def plan_details(
             kd = detail_k([poly[n].magnitude for n in piece], k_ref)
             box = _bbox(q for n in piece for q in (poly[n].tail, poly[n].head))
             listed: tuple[str, ...] = ()
-            room = bound - 2.0 * STUB_MM
             size = max(box[2] - box[0], box[3] - box[1])
             if bound > 0.0 and room > 0.0 and size / kd > room:
                 kd = nice_factor(size, room, "F").k
@@ -944,7 +950,9 @@ def place_details(
         pts += [b for _, _, b in _stubs(poly, dt, kd)]
         dt.box = _bbox(pts)
         bw, bh = (dt.box[2] - dt.box[0]) * k / kd, (dt.box[3] - dt.box[1]) * k / kd
-        lines = [_detail_caption(dt, Scale(kd, "F")), *_detail_listed(poly, dt, names)]
+        # its caption as wide as with the widest letter the sheet may give it, so that the
+        # slots (and whether the whole keeps within ``room``) never hang on the letters drawn
+        lines = [_detail_caption(dt, Scale(kd, "F"), LETTER_ROOM), *_detail_listed(poly, dt, names)]
         w = max(bw + 2.0 * pad,
                 *(text_width(t, DETAIL_CAPTION_H) * k for t in lines))  # fmt: skip
         dt.cap = cap + (len(lines) - 1) * DETAIL_CAPTION_H * DETAIL_LINES * k
@@ -1017,8 +1025,14 @@ def _crosses(a: Vec, b: Vec, box: Extent, clear: float) -> bool:
     return True
 
 
-def _detail_caption(dt: Detail, sc: Scale) -> str:
-    return f"{dt.letter} ({scale_text(sc)})"
+def _detail_caption(dt: Detail, sc: Scale, letter: str | None = None) -> str:
+    """A detail's caption: its letter (or ``letter`` in its place) and μ_F."""
+    return f"{dt.letter if letter is None else letter} ({scale_text(sc)})"
+
+
+#: The room of a detail's letter in its caption: a letter at least as wide as any of
+#: :func:`detail_letters` with a two-digit number (the detail is placed before it is lettered).
+LETTER_ROOM = "W99"
 
 
 def _detail_listed(
