@@ -1587,14 +1587,15 @@ class _Lever(_ByScale, View):
         LEVER_LOAD_MM round it for its arrows whatever they are; here the finer steps of its
         series are tried, each with the margin its box leaves round the drawing, while the
         arrows drawn at that scale's μ_F (:meth:`scales_at`), their labels' room past them,
-        keep within the box (no more forces in insets than at the layout's scale)."""
+        keep within the box (no more forces left out, then none more in insets, than at the
+        layout's scale)."""
         if pl.scale is None or self.group:
             return
         x0, y0, x1, y1 = self._ext
         top = pl.box[1] + self.title_room()
         rw, rh = pl.box[2] - pl.box[0] - 2.0 * LEVER_EDGE_MM, pl.box[3] - top - 2.0 * LEVER_EDGE_MM
         margin, scale, fs = self.margin, pl.scale, self.scales_at(pl.scale)
-        shorts = self._shorts(fs)
+        cost = self._cost(fs)
         best: tuple[float, Scale] | None = None
         k = scale.k
         while True:
@@ -1603,12 +1604,14 @@ class _Lever(_ByScale, View):
             if m < LABEL_ROOM_MM + LEVER_EDGE_MM:
                 break
             at = Scale(k, scale.q)
-            self.margin = m
+            # the view's μ_F chosen for the room its arrows have short of their labels' room:
+            # the same μ_F the drawing then takes (scales_at with this margin)
+            self.margin = m - LABEL_ROOM_MM
             self.__dict__.pop("_by_scale", None)
             fs_at = self.scales_at(at)
-            inner = (x0 - (m - LABEL_ROOM_MM) * k, y0 - (m - LABEL_ROOM_MM) * k,
-                     x1 + (m - LABEL_ROOM_MM) * k, y1 + (m - LABEL_ROOM_MM) * k)  # fmt: skip
-            if self._shorts(fs_at) > shorts or not self._fits(fs_at, at, inner):
+            inner = (x0 - self.margin * k, y0 - self.margin * k,
+                     x1 + self.margin * k, y1 + self.margin * k)  # fmt: skip
+            if self._cost(fs_at) > cost or not self._fits(fs_at, at, inner):
                 break
             best = (m, at)
         self.margin = margin
@@ -1617,7 +1620,7 @@ class _Lever(_ByScale, View):
             self.fs = fs
             return
         m, at = best
-        self.margin = m
+        self.margin = m - LABEL_ROOM_MM
         e = LEVER_EDGE_MM + m
         pl.inner = (pl.box[0] + e, top + e, pl.box[2] - e, pl.box[3] - e)
         pl.scale = at
