@@ -37,6 +37,7 @@ from __future__ import annotations
 
 import math
 import sys
+from collections import Counter
 from collections.abc import Iterable
 from dataclasses import dataclass, field
 from typing import Literal
@@ -58,7 +59,7 @@ from geomcad.linkage.loads import (
     slider_group,
     stroke_sign,
 )
-from geomcad.linkage.model import Group, Linkage
+from geomcad.linkage.model import Group, Linkage, Load
 from geomcad.linkage.plans import Position, plan_name
 
 LoadKind = Literal["weight", "inertia", "given", "reaction"]
@@ -73,6 +74,8 @@ ORDER_KINDS = frozenset(
         "inertia_moment",
         "given_force",
         "given_moment",
+        "given_sum",
+        "given_moment_sum",
         "group",
         "tangential",
         "slot_normal",
@@ -86,6 +89,21 @@ ORDER_KINDS = frozenset(
         "lever_check",
     }
 )
+
+
+def _part(
+    name: str, key: str | int, many: Counter[str | int], terms: dict[str | int, list[str]]
+) -> str:
+    """A load's name in the order: ``name`` where its point (link) carries it alone, else
+    ``name`` with its number among that point's loads as a superscript (``F_{B}^{(2)}``), kept
+    in ``terms`` for the sum stated after them."""
+    if many[key] < 2:
+        terms.setdefault(key, []).append(name)
+        return name
+    part = f"{name}^{{({len(terms.get(key, ())) + 1})}}"
+    terms.setdefault(key, []).append(part)
+    return part
+
 
 #: A sliding pair's reaction lies at most this many crank lengths from its joint; beyond, the
 #: normal force is about zero and the pair carries a couple (see :class:`Reaction`).
@@ -299,18 +317,32 @@ def applied_loads(
         moving = stroke_sign(lk, cyc, np.array([P.phi]), np.array([v_out]))
     forces: dict[str, Vec] = {}
     moments: dict[int, float] = {}
+    # a point (a link) that carries several loads: each named with its number among them
+    # (F_B^(1), F_B^(2)), their sum F_B stated after them (review 7: two "F_B" of 10 820 and
+    # 250 Н in the order beside one F_B = 11 070 Н in the table and on the drawing)
+    acting: list[tuple[Load, float]] = []
     for ld in lk.loads:
         if ld.point:
             grp = slider_group(lk, ld.point)
             line = P.lines[grp.index]
-            J = P.pos[ld.point]
-            s = (J - line.p).dot(line.d)
+            s = (P.pos[ld.point] - line.p).dot(line.d)
             v = P.v_rel[ld.point]
             f = float(force_value(lk, ld, rng[ld.point], np.array([s]), np.array([v]), moving)[0])
-            if f == 0.0:
-                continue
+            if f != 0.0:
+                acting.append((ld, f))
+        else:
+            mv = float(moment_value(ld, np.array([P.omega[ld.link]]), moving)[0])
+            if not (ld.on_stroke and mv == 0.0):
+                acting.append((ld, mv))
+    many = Counter(ld.point if ld.point else ld.link for ld, _ in acting)
+    terms: dict[str | int, list[str]] = {}
+    for ld, f in acting:
+        if ld.point:
+            line = P.lines[slider_group(lk, ld.point).index]
+            s = (P.pos[ld.point] - line.p).dot(line.d)
             r = rng[ld.point]
             s_w = s - r.s_min if lk.working == "forward" else r.s_max - s
+            name = _part(f"F_{{{ld.point}}}", ld.point, many, terms)
             F = c.record(
                 f"F_{ld.index}",
                 f"load {ld.index} on {ld.point}: {ld.value:g} N·shape(s/H) along the guide, "
@@ -318,26 +350,44 @@ def applied_loads(
                 line.d * f,
                 role="hidden",
                 kind="given_force",
-                args={"F": f"F_{{{ld.point}}}", "at": ld.point, "value": abs(f)},
+                args={"F": name, "at": ld.point, "value": abs(f)},
             )
             forces[ld.point] = forces.get(ld.point, Vec(0.0, 0.0)) + F
         else:
-            mv = float(moment_value(ld, np.array([P.omega[ld.link]]), moving)[0])
-            if ld.on_stroke and mv == 0.0:
-                continue
             what = (
                 f"|M| against ω{ld.link} on the {ld.stroke} stroke"
                 if ld.on_stroke
                 else "a constant moment"
             )
+            name = _part(f"M_{{{ld.link}}}", ld.link, many, terms)
             c.value(
                 f"M_{ld.index}",
-                mv,
+                f,
                 f"load {ld.index}: a moment on link {ld.link}, {what}",
                 kind="given_moment",
-                args={"M": f"M_{{{ld.link}}}", "link": ld.link, "value": mv},
+                args={"M": name, "link": ld.link, "value": f},
             )
-            moments[ld.link] = moments.get(ld.link, 0.0) + mv
+            moments[ld.link] = moments.get(ld.link, 0.0) + f
+    for point, F in forces.items():
+        if len(terms.get(point, ())) > 1:
+            c.value(
+                f"F_{point}_sum",
+                F.norm,
+                f"the loads on {point} act together: their sum",
+                kind="given_sum",
+                args={"F": f"F_{{{point}}}", "terms": " + ".join(terms[point]),
+                      "at": point, "value": F.norm},
+            )  # fmt: skip
+    for link, M in moments.items():
+        if len(terms.get(link, ())) > 1:
+            c.value(
+                f"M_{link}_sum",
+                M,
+                f"the moment loads on link {link} act together: their sum",
+                kind="given_moment_sum",
+                args={"M": f"M_{{{link}}}", "terms": " + ".join(terms[link]),
+                      "link": link, "value": M},
+            )  # fmt: skip
     for point, F in forces.items():
         link = lk.owner[point]
         out[link].append(
