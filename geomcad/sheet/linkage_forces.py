@@ -83,7 +83,7 @@ from geomcad.sheet.compose import (
 )
 from geomcad.sheet.compose import _title_width as title_width
 from geomcad.sheet.drawing import SHORT_MM, Viewport
-from geomcad.sheet.frame import FORMATS
+from geomcad.sheet.frame import FORMATS, LEFT_MARGIN, MARGIN, reserved
 from geomcad.sheet.graph import Axis, Graph
 from geomcad.sheet.insets import Insets
 from geomcad.sheet.lang import Words, current
@@ -120,6 +120,7 @@ from geomcad.sheet.loads import (
     moment,
     view_scales,
 )
+from geomcad.sheet.model import TextItem
 from geomcad.sheet.plans import markup_of
 from geomcad.sheet.scale import (
     ANGLE_PLACES,
@@ -319,6 +320,9 @@ def force_sheets(
         tree, z = force_layout(s)
         d = z.start(_title(lk, WORDS("forces"), designation, no, count))
         compose(d, tree, layout=z.layout)
+        for pl in z.layout:
+            if isinstance(pl.view, _Loaded):
+                pl.view.sheet_detail(d, pl)
         main = [pl.scale for pl in z.layout if isinstance(pl.view, _Loaded)]
         if d.sheet.block is not None and main and main[0] is not None:
             # the title block's Масштаб: the main view's, the loaded mechanism's
@@ -1157,34 +1161,68 @@ class _Loaded(_Forces):
         detail (ESKD 2.305; the kinematic sheet's :class:`~geomcad.sheet.linkage._CrankDetail`
         in the force position), lettered by a circle round the crank, at the finest GOST scale
         that draws the crank at most 1.5 CRANK_MM long, at least CRANK_MM (finer than the
-        view's), and finds room in the view's box clear of what it draws (``drawn``); the
+        view's; where GOST 2.302 has none in that span, the nearest longer), and finds room in
+        the view's box clear of what it draws (``drawn``); the
         crank's loads and M_ур on it at the view's μ_F. Its letter is ``detail``, else the next
         of the sheet's ``letters`` (taken only where the detail is drawn). Nothing where no
         such room is left."""
         v, s = at.viewport, self.solved
         if v is None or s is None or (self.detail is None and self.letters is None):
             return
-        lk, P = self.lk, self.P
-        here = v.scale.mm(lk.length)
-        if here >= CRANK_MM * (1.0 - tol.REL_LENGTH):
+        if v.scale.mm(self.lk.length) >= CRANK_MM * (1.0 - tol.REL_LENGTH):
             return
+        self._place_detail(d, at, drawn.segments(), _field(at))
+
+    def sheet_detail(self, d: Drawing, at: Placed) -> None:
+        """Where the view's box left no room for :meth:`crank_detail` (review 7: a 20 mm crank
+        at 1:2.5 and no detail): the detail in the sheet's free room, once every view is drawn,
+        clear of all that is drawn on it, its texts and the form's boxes (ESKD 2.305: a detail
+        lettered by its circle may stand anywhere on the sheet)."""
+        v = at.viewport
+        if v is None or self.solved is None or self.detail_scale is not None:
+            return
+        if self.detail is None and self.letters is None:
+            return
+        if v.scale.mm(self.lk.length) >= CRANK_MM * (1.0 - tol.REL_LENGTH):
+            return
+        sheet = d.sheet
+        boxes = [*reserved(sheet.width, sheet.height)]
+        for it in sheet.items:
+            if isinstance(it, TextItem):
+                (x, y), hh = it.at, it.height
+                boxes.append((x, y - 1.3 * hh, x + it.width, y + 0.4 * hh))
+        outline = [((x0, y0), (x1, y0)) for x0, y0, x1, _ in boxes]
+        outline += [((x1, y0), (x1, y1)) for _, y0, x1, y1 in boxes]
+        outline += [((x0, y1), (x1, y1)) for x0, _, x1, y1 in boxes]
+        outline += [((x0, y0), (x0, y1)) for x0, y0, _, y1 in boxes]
+        segs = np.concatenate(
+            [Clearance(sheet, 0).segments(), np.array(outline, dtype=float).reshape(-1, 2, 2)]
+        )
+        field = (LEFT_MARGIN, MARGIN, sheet.width - MARGIN, sheet.height - MARGIN)
+        self._place_detail(d, at, segs, field)
+
+    def _place_detail(
+        self, d: Drawing, at: Placed, segs: npt.NDArray[np.float64],
+        box: tuple[float, float, float, float],
+    ) -> None:  # fmt: skip
+        """The crank's detail (:meth:`crank_detail`) at the first of its scales for which
+        ``box`` keeps room clear of ``segs``, nearest the crank's pivot; nothing where none."""
+        v, s = at.viewport, self.solved
+        assert v is not None and s is not None
+        lk, P = self.lk, self.P
         # the crank's loads at the view's own μ_F (those too short there are in the view's
         # insets, :func:`draw_insets`, not drawn a second time here)
         loads = [ld for ld in self.f.loads.get(1, [])
                  if ld.force is None or self.fs.tier(ld.force.norm) == 0]  # fmt: skip
         arrows = [ld.force.norm / self.fs.k for ld in loads if ld.force is not None]
-        least = CRANK_MM
         O1 = lk.frame[lk.pivot]
         pivot = v.p(O1)
-        segs = drawn.segments()
-        for k in sorted(GOST_K):
+        for k in detail_scales(lk.length, v.scale.k):
             crank = lk.length / k
-            if k >= v.scale.k or not least * (1.0 - tol.REL_LENGTH) <= crank <= 1.5 * CRANK_MM:
-                continue
             half = max(CRANK_REACH * crank, M_BAL_MM + LABEL_ROOM_MM,
                        crank + max(arrows, default=0.0) + LABEL_ROOM_MM)  # fmt: skip
             w, h = 2.0 * half, 2.0 * half + DETAIL_TITLE_MM
-            spot = free_spot(segs, _field(at), (w, h), pivot, DETAIL_GAP_MM)
+            spot = free_spot(segs, box, (w, h), pivot, DETAIL_GAP_MM)
             if spot is None:
                 continue
             x0, y0 = spot
@@ -1210,6 +1248,18 @@ class _Loaded(_Forces):
             mark_detail(v, O1, max(lk.length, v.scale.k * M_BAL_MM), letter)
             self.detail_scale = scale
             return
+
+
+def detail_scales(length: float, k_view: float) -> list[float]:
+    """The GOST 2.302 μ_l (m/mm) a crank ``length`` (m) long drawn at ``k_view`` may take in
+    its detail, in the order tried: those finer than ``k_view`` that draw it
+    :data:`~geomcad.sheet.linkage.CRANK_MM` … 1.5 CRANK_MM long, the finest first; then, where
+    the series has none in that span (a 50 mm crank: 1:1 draws it 50 mm, 1:2 25 mm; review 7's
+    oscillator was left with no detail), the nearest that draws it longer."""
+    fine = [k for k in GOST_K
+            if k < k_view and length / k >= CRANK_MM * (1.0 - tol.REL_LENGTH)]  # fmt: skip
+    span = sorted(k for k in fine if length / k <= 1.5 * CRANK_MM)
+    return span or sorted(fine, reverse=True)[:1]
 
 
 class _FreeBody(_Forces):
