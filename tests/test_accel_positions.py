@@ -23,6 +23,7 @@ FILES = {
     "shaper": ROOT.parent / "examples" / "shaper.toml",
     "scotch-yoke": ROOT.parent / "examples" / "scotch-yoke.toml",
     "crusher": ROOT.parent / "examples" / "crusher.toml",
+    "sixbar_oscillator": ROOT / "linkages_positions" / "sixbar_oscillator.toml",
 }
 TWO_PI = 2.0 * math.pi
 
@@ -86,3 +87,33 @@ def test_picks_that_differ_keep_the_largest_in_each_stroke(name: str) -> None:
         top = max(acc[k] for k in ks)
         want.append(next(k for k in ks if acc[k] >= top * (1 - 1e-9)))
     assert got == want
+
+
+def _apart(s: Solved, k: int, j: int) -> float:
+    n = len(s.drawn)
+    d = abs(k - j) % n
+    return min(d, n - d) * TWO_PI / n
+
+
+@pytest.mark.parametrize("name", ["sixbar_oscillator", "sixbar-2013-6"])
+def test_neighbours_about_the_extreme_give_a_second_plan_farther_away(name: str) -> None:
+    """review 7 item 7: a rocker's largest |a| in each stroke lies at the two positions that
+    straddle its extreme (6 and 7), nearly one figure; the idle stroke's plan is then its
+    largest |a| among the positions more than one step (and 45°) from the working pick."""
+    path = {
+        "sixbar_oscillator": ROOT / "linkages_positions" / "sixbar_oscillator.toml",
+        "sixbar-2013-6": ROOT.parent / "examples" / "sixbar-2013-6.toml",
+    }[name]
+    s = solve(parse(tomllib.loads(path.read_text(encoding="utf-8"))))
+    working, idle, acc = _strokes(s)
+    n = len(s.drawn)
+    near = max(TWO_PI / n, math.pi / 4) * (1 + 1e-9)
+    k1, k2 = (_index(s, phi) for phi in s.accel_phis)
+    assert k1 in working and k2 in idle
+    assert acc[k1] == pytest.approx(max(acc[k] for k in working), rel=1e-9)
+    top = max(acc[k] for k in idle)
+    plain = next(k for k in idle if acc[k] >= top * (1 - 1e-9))
+    assert _apart(s, plain, k1) <= near  # the case this rule is for: neighbours
+    assert _apart(s, k2, k1) > near  # the second plan is away from the first
+    far = [k for k in idle if _apart(s, k, k1) > near]
+    assert acc[k2] == pytest.approx(max(acc[k] for k in far), rel=1e-9)

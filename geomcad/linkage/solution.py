@@ -163,8 +163,14 @@ def largest_accelerations(
     mirror of the working stroke's, and its plan would show nothing new (the same |a|, the
     same drawing turned over). The idle stroke's plan is then drawn where its output's
     acceleration is largest among the positions that are not that mirror: the other end of
-    the stroke, where the acceleration has the other sign (review 6 item 7). Files whose
-    picks already differ keep them."""
+    the stroke, where the acceleration has the other sign (review 6 item 7).
+
+    Where the idle stroke's largest lies beside the working stroke's pick (within one step of
+    the numbering or 45° of the crank's turn, the shorter way: two neighbours about the
+    output's extreme, such as a rocker's positions 6 and 7, whose plans are nearly the same
+    figure) the idle stroke's plan is drawn where its output's acceleration is largest among
+    its positions farther than that from the working pick; a stroke with none keeps its
+    largest (review 7 item 7). Files whose picks already differ keep them."""
     n = len(drawn)
     step = 2.0 * math.pi / n
     edge = tol.DERIVED
@@ -186,9 +192,22 @@ def largest_accelerations(
     mids = stroke_middles(lk, cyc)
     out: list[float] = []
     first: int | None = None
+    near = max(step, math.pi / 4) * (1 + edge)  # picks this close show the same figure
+
+    def apart(k: int, j: int) -> float:
+        """The crank's turn between the numbered positions k and j, the shorter way."""
+        d = abs(k - j) % n
+        return min(d, n - d) * step
+
     for ks, mid in ((working, mids[0]), (idle, mids[1])):
         if first is not None and mirrored and len(ks) > 1:
             ks = [k for k in ks if k != n - first]  # not the mirror of the working stroke's
+        if first is not None and ks:
+            top = max(acc[k] for k in ks)
+            best = next(k for k in ks if acc[k] >= top * (1 - edge))
+            far = [k for k in ks if apart(k, first) > near]
+            if apart(best, first) <= near and far:
+                ks = far  # not beside the working stroke's pick (review 7 item 7)
         if not ks:
             out.append(mid)
             continue
