@@ -61,3 +61,24 @@ def test_acceleration_plans_keep_the_size_rule(path: Path) -> None:
     for pl in plans:
         assert pl.scale is not None
         assert pl.scale.mm(lk.omega**2 * lk.length) >= PA_MM - 1e-6, pl.view.title
+
+
+LAYOUT_FILES = sorted((Path(__file__).parent / "linkages_layout").glob("*.toml"))
+
+
+@pytest.mark.parametrize("path", LINKAGES + LAYOUT_FILES, ids=lambda p: p.stem)
+def test_plans_sheet_keeps_pa(path: Path) -> None:
+    """Review 7: tangent's velocity plans on their own A1 drew pa = 39 mm (the tall last plan
+    in the cell the title block cuts set the grid's μ_V). The plans' sheet is the size rule's
+    last resort: wherever the plans go on a sheet of their own, pa = ω1·l_OA at μ_V is at
+    least PA_MM, and the sheet fits."""
+    s = geomcad.solve(str(path)).data
+    lk = s.linkage
+    lay, lays = _arranged(s)
+    if not lay.second:
+        return
+    plans = [pl for pl in lays[-1] if isinstance(pl.view, PlanView)]
+    assert len(plans) == len(s.drawn) and lays[-1].fits
+    for pl in plans:
+        assert pl.scale is not None
+        assert pl.scale.mm(abs(lk.omega) * lk.length) >= PA_MM - 1e-6, pl.view.title

@@ -58,6 +58,7 @@ from geomcad.sheet.compose import (
     Layout as Arranged,
 )
 from geomcad.sheet.drawing import SHORT_MM, Viewport
+from geomcad.sheet.form import title_block_spacer
 from geomcad.sheet.frame import FORMATS, name_fits, text_at
 from geomcad.sheet.lang import Words, current, per_language
 from geomcad.sheet.model import ArcItem, CircleItem, Polyline, TextItem
@@ -339,7 +340,11 @@ def _trees(
                 Row(mech_node(), Column(diagrams, Row(aplans, Column(tables, order)))),
                 Row(Column(mech_node(), diagrams), aplans, Column(tables, order)),
             )
-        return (first, vplans), mech, True, wants
+        # the plans' sheet: its grid over the whole field, or above the title block's height
+        # (review 7: tangent's last plan, tall, in the cell the title block cuts drew all
+        # twelve at pa = 39 mm; a row of cells clear of it keeps pa at its rule)
+        plans_sheet = Choice(vplans, Column(vplans, title_block_spacer()))
+        return (first, plans_sheet), mech, True, wants
     sheet = Choice(
         Column(Row(mech_node(), vplans), Row(diagrams, aplans, Column(tables, order))),
         Row(Column(mech_node(), diagrams), Column(vplans, Row(aplans, Column(tables, order)))),
