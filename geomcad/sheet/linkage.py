@@ -1575,7 +1575,7 @@ def _leader_off(
 
 
 #: Within this (mm) of a rule's limit the array test below is not trusted: the exact one decides.
-_HAIR_MM = 1e-9
+_HAIR_MM = tol.SHEET_MM
 
 
 def _tried_places(
@@ -1720,9 +1720,7 @@ def keep_link_numbers_clear(sheet: Sheet, area: Box) -> None:
         if found is None:
             continue
         current[id(t)] = found
-        drawn = len(sheet.items)
-        if _move_number(sheet, t, found, p, r_found):
-            ink.add(sheet.items[drawn:])  # its leader
+        _move_number(sheet, ink, t, found, p, r_found)
 
 
 #: A position's number stands at least this much (mm) nearer its own point than any point or
@@ -1839,23 +1837,23 @@ def keep_tracks_apart(
         if found is None:
             continue
         current[id(t)] = found
-        drawn = len(sheet.items)
-        if _move_number(sheet, t, found, p, r):
-            ink.add(sheet.items[drawn:])  # its leader
+        _move_number(sheet, ink, t, found, p, r)
 
 
-def _move_number(sheet: Sheet, t: TextItem, found: Box, p: tuple[float, float], r: float) -> bool:
+def _move_number(
+    sheet: Sheet, ink: _Ink, t: TextItem, found: Box, p: tuple[float, float], r: float
+) -> None:
     """The number ``t`` moved into the box ``found`` (its anchor kept), with a leader from its
-    point ``p`` where it stands ``r`` mm off, further than :data:`LINK_LEADER_MM`; whether a
-    leader was drawn (the ink then changed)."""
+    point ``p`` where it stands ``r`` mm off, further than :data:`LINK_LEADER_MM`, added to
+    the ``ink`` the searches test."""
     i = next(k for k, it in enumerate(sheet.items) if it is t)
     moved = replace(t, at=(found[0], found[3] - 0.3 * t.height))
     sheet.items[i] = moved
     sheet.anchors = [(moved if it is t else it, at) for it, at in sheet.anchors]
-    if r <= LINK_LEADER_MM:
-        return False
-    _leader(sheet, p, found)
-    return True
+    if r > LINK_LEADER_MM:
+        drawn = len(sheet.items)
+        _leader(sheet, p, found)
+        ink.add(sheet.items[drawn:])
 
 
 def _leader(sheet: Sheet, p: tuple[float, float], b: Box) -> None:
