@@ -376,7 +376,13 @@ def force_layout(s: Solved) -> tuple[Tree, formats.Sized]:
         # cut out was short (review 7: the oscillator's 20 mm crank, its 1:1 over A1 by a
         # plan's 1.8 mm vector)
         lost = -own[1].layout.score[0] if not own[1].layout.fits else 0.0
-        if not _crank_short(own[1].layout) and (not lay.fits or lost < _crank_shortfall(lay)):
+        # (never at the cost of the mechanism's own crank)
+        kept = _crank_kept(own[1].layout) or not _crank_kept(lay)
+        if (
+            kept
+            and not _crank_short(own[1].layout)
+            and (not lay.fits or lost < _crank_shortfall(lay))
+        ):
             found = own
     for pl in found[1].layout:
         if isinstance(pl.view, _Lever):
