@@ -35,6 +35,10 @@ composition (:func:`force_layout`, issue 27):
   loads rescale none of them), the crank at least CRANK_MM long where the mechanism's sweep
   allows it (:data:`SWEEP_MAX_MM`); where the mechanism's μ_l still draws the crank short, the
   crank enlarged in a detail in the mechanism view's free room (:meth:`_Loaded.crank_detail`);
+  the crank's length a constraint of the search (:data:`CRANK_WEIGHT`, :func:`_held`): a
+  detail only where no arrangement on the largest format holds the mechanism's μ_l with it, and
+  the crank cut out at its own μ_l where that takes less of the other views' room than its
+  crank lost (review 7);
 - the smallest format on which, besides, every force polygon is :data:`POLY_MM` across: the
   views grow, and the groups take their own μ_l, before a larger format is taken; on the format
   taken the tables are 3.5 mm high where the drawings of links keep their scales with it.
@@ -292,6 +296,12 @@ ARRANGEMENTS = 4
 #: The scale group of the crank cut out where the mechanism's μ_l draws the crank shorter than
 #: CRANK_MM: its own μ_l, stated in its caption, at which the crank is CRANK_MM long.
 CRANK_L = "lc"
+#: The weight of a millimetre the crank is drawn short of CRANK_MM on the mechanism (a group of
+#: its own μ_l short of GROUPS_SHARE) in :func:`_held`'s search, against
+#: a millimetre a force plan's longest vector falls short of its seek (:data:`PLAN_SEEK_MM`):
+#: the size rule is a constraint, the plans' seek a wish (review 7: the yoke pump's crank at
+#: 15 mm, 1:4, traded for plans 100 mm longer).
+CRANK_WEIGHT = 20.0
 
 
 def force_position(s: Solved) -> tuple[Position, Forces, int | None]:
@@ -349,6 +359,8 @@ def force_layout(s: Solved) -> tuple[Tree, formats.Sized]:
         # the field draws it
         kin = False
         found = _compose2(s, P, forces, k, sheet_formats(s.linkage), kin=kin)
+    if not _crank_kept(found[1].layout):
+        found = _held(s, P, forces, k, found, kin)
     lay = found[1].layout
     if _crank_short(lay):
         # the mechanism's μ_l draws the crank short (its detail enlarges it there): the crank
@@ -360,12 +372,63 @@ def force_layout(s: Solved) -> tuple[Tree, formats.Sized]:
         largest = max(fmts, key=lambda fm: FORMATS[fm][0] * FORMATS[fm][1])
         under = isinstance(found[0], Choice) and len(found[0].items) > ARRANGEMENTS
         own, _kept = _final2(s, P, forces, k, found[1], shared, largest, kin, True, under)
-        if own[1].layout.fits or not lay.fits:
+        # its own μ_l may take other views' room: where it overflows by less than the crank
+        # cut out was short (review 7: the oscillator's 20 mm crank, its 1:1 over A1 by a
+        # plan's 1.8 mm vector)
+        lost = -own[1].layout.score[0] if not own[1].layout.fits else 0.0
+        # (never at the cost of the mechanism's own crank)
+        kept = _crank_kept(own[1].layout) or not _crank_kept(lay)
+        if (
+            kept
+            and not _crank_short(own[1].layout)
+            and (not lay.fits or lost < _crank_shortfall(lay))
+        ):
             found = own
     for pl in found[1].layout:
         if isinstance(pl.view, _Lever):
             pl.view.grow(pl, found[1].layout)
     return found
+
+
+def _held(
+    s: Solved, P: Position, f: Forces, k: int | None, found: tuple[Tree, formats.Sized],
+    kin: bool,
+) -> tuple[Tree, formats.Sized]:  # fmt: skip
+    """Where the search left the mechanism's crank shorter than its rule (the layout's score
+    trades it against the plans' seek, :data:`PLAN_SEEK_MM`): the crank's length as a
+    constraint (review 7: the yoke pump and the tangent rocking slider at 1:4 with a detail
+    while half of the sheet was blank). On the largest format, every arrangement one by one
+    (the one more of ``under`` too), the groups at the mechanism's μ_l, then at one μ_l of
+    their own (at least :data:`GROUPS_SHARE` of its size); the first whose drawings keep the
+    crank's length and the groups' share, its tables and texts whole in their boxes
+    (:func:`_whole`), is taken. A detail then enlarges the crank only where no arrangement
+    holds its scale."""
+    fmts = sheet_formats(s.linkage)
+    largest = max(fmts, key=lambda fm: FORMATS[fm][0] * FORMATS[fm][1])
+    for shared in (True, False):
+        tree, wants = _sheet2(s, P, f, k, TEXT_H, shared=shared, kin=kin, under=True,
+                              weight=CRANK_WEIGHT)  # fmt: skip
+        on = _on(tree, wants, largest)
+        if on is None or not (_crank_kept(on[1].layout) and _groups_kept(on[1].layout)):
+            continue
+        held, _kept = _final2(s, P, f, k, on[1], shared, largest, kin, under=True,
+                              weight=CRANK_WEIGHT)  # fmt: skip
+        lay = held[1].layout
+        if _crank_kept(lay) and _groups_kept(lay) and _whole(lay):
+            return held
+    return found
+
+
+def _whole(lay: Layout) -> bool:
+    """Whether every table and text of ``lay`` (its fixed views) keeps within its box: the
+    crank's constraint (:func:`_held`) never takes their room."""
+    e = tol.SHEET_MM
+    for pl in lay:
+        nat = pl.view.natural() if pl.view.kind == "fixed" else None
+        if nat is not None and (nat[0] > pl.box[2] - pl.box[0] + e
+                                or nat[1] > pl.box[3] - pl.box[1] + e):  # fmt: skip
+            return False
+    return True
 
 
 def _crank_short(lay: Layout) -> bool:
@@ -375,6 +438,14 @@ def _crank_short(lay: Layout) -> bool:
                and pl.scale is not None
                and pl.view.lk.length / pl.scale.k < CRANK_MM * (1.0 - tol.REL_LENGTH)
                for pl in lay)  # fmt: skip
+
+
+def _crank_shortfall(lay: Layout) -> float:
+    """How much (mm) shorter than :data:`~geomcad.sheet.linkage.CRANK_MM` ``lay`` draws the
+    crank cut out (0 where it keeps the rule)."""
+    return max((CRANK_MM - pl.view.lk.length / pl.scale.k for pl in lay
+                if isinstance(pl.view, _FreeBody) and pl.view.gf.group is None
+                and pl.scale is not None), default=0.0)  # fmt: skip
 
 
 def _compose2(
@@ -468,6 +539,7 @@ def _compose2(
 def _final2(
     s: Solved, P: Position, f: Forces, k: int | None, z: formats.Sized, shared: bool,
     largest: str, kin: bool = True, crank_own: bool = False, under: bool = False,
+    weight: float = 1.0,
 ) -> tuple[tuple[Tree, formats.Sized], bool]:  # fmt: skip
     """Sheet 2 on the format of ``z`` with its polygons' details reckoned at the μ_F each got
     there (see :func:`_compose2`), and whether it keeps the rules (where it does not on a format
@@ -481,13 +553,15 @@ def _final2(
     rules: list[bool] = []
     good: list[bool] = []
     for h in (TEXT_H, SMALL_TEXT_H):
-        tree, w = _sheet2(s, P, f, k, h, refs, shared, kin, crank_own, under)
+        tree, w = _sheet2(s, P, f, k, h, refs, shared, kin, crank_own, under, weight)
         lay = arrange(tree, field)
         # a plan placed at a coarser μ_F than its details were reckoned at may not hold them
         # in its box (they would run into the captions round it): reckoned again at that μ_F
         spilt = _spilt(lay)
         if spilt:
-            tree, w = _sheet2(s, P, f, k, h, {**refs, **spilt}, shared, kin, crank_own, under)
+            tree, w = _sheet2(
+                s, P, f, k, h, {**refs, **spilt}, shared, kin, crank_own, under, weight
+            )
             lay = arrange(tree, field)
         tried.append((tree, formats.Sized(z.fmt, z.landscape, lay)))
         # on a smaller format than the largest, its polygons POLY_MM across as it was chosen
@@ -626,7 +700,7 @@ def _as_loads(
 def _sheet2(
     s: Solved, P: Position, f: Forces, k: int | None, h: float,
     refs: Mapping[str, tuple[float, tuple[float, float]]] | None = None, shared: bool = True,
-    kin: bool = True, crank_own: bool = False, under: bool = False,
+    kin: bool = True, crank_own: bool = False, under: bool = False, weight: float = 1.0,
 ) -> tuple[Tree, dict[View, float]]:  # fmt: skip
     """Sheet 2's tree, its tables and texts ``h`` high, and the scales its views want. The
     force polygons are drawn with their details where ``refs`` gives their reference μ_F and
@@ -636,7 +710,9 @@ def _sheet2(
     (``kin``: where that fits). The crank cut out is drawn at a μ_l of its own that draws it
     CRANK_MM long where ``crank_own`` (where the mechanism's draws it short). ``under``: one
     arrangement more, the polygons under the mechanism and the groups over the lever (room
-    for the groups at the mechanism's μ_l; tried only where the others leave it broken)."""
+    for the groups at the mechanism's μ_l; tried only where the others leave it broken).
+    ``weight``: a millimetre the crank (and a group of its own μ_l) falls short of its rule
+    weighs that many of the plans' seek in the search (:data:`CRANK_WEIGHT`, :func:`_held`)."""
     lk = s.linkage
     # the length scales from the geometry alone (a change of ω or of the loads rescales no
     # drawing of links): never finer than links_scale; the crank CRANK_MM long where the
@@ -651,7 +727,7 @@ def _sheet2(
     # CRANK_MM long) is drawn again in a detail (its letter taken where it is drawn)
     mech.solved = s
     if sweep_mm(s, crank_scale(lk).k) <= SWEEP_MAX_MM:
-        mech.readable, mech.readable_mm = lk.length, CRANK_MM
+        mech.readable, mech.readable_mm = weight * lk.length, weight * CRANK_MM
     else:
         if kin:
             # the sweep waives the crank's length: the mechanism no coarser than the kinematic
@@ -683,7 +759,8 @@ def _sheet2(
             if b.group == GROUPS_L:
                 b.weight = 2.0
                 # at least GROUPS_SHARE of the mechanism's size, never finer than k_l
-                b.readable, b.readable_mm = lk.length, GROUPS_SHARE * lk.length / k_l
+                b.readable = weight * lk.length
+                b.readable_mm = weight * GROUPS_SHARE * lk.length / k_l
     # each group's polygons under the group cut out (the crank's under the crank); a
     # polygon's vectors too short for its μ_F are drawn again, enlarged, in details at their
     # own stated μ_F beside it in its view (one letter each on the sheet)
@@ -750,7 +827,7 @@ def _sheet2(
             # and on the largest format the search seeks it (its longest vector PLAN_SEEK_MM)
             p.readable = max(p.readable, big * p.readable_mm / PLAN_SEEK_MM)
     if mech.readable > 0.0:
-        wants[mech] = lk.length / mech.readable_mm
+        wants[mech] = mech.readable / mech.readable_mm
     return tree, wants
 
 
