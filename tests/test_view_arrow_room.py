@@ -113,11 +113,14 @@ def test_share_of_the_view_is_nice_and_monotone() -> None:
     from geomcad.sheet.loads import view_scales
 
     forces = [6160.0, 5080.0, 3920.0, 1080.0, 1020.0, 580.0, 260.0, 200.0, 140.0, 100.0]
-    counts = []
+    counts, left = [], []
     for room in (40.0, 55.0, 75.0, 100.0):
         fs = view_scales(forces, room)
         assert max(forces) / fs.k <= room
         # not drawn in the view itself: in its insets or named under its caption
         counts.append(sum(1 for F in forces if fs.tier(F) != 0))
+        left.append(sum(1 for F in forces if fs.tier(F) is None))
     assert all(a >= b for a, b in itertools.pairwise(counts)), counts
-    assert counts[-1] < counts[0]
+    # a larger room leaves fewer out: its insets' arrows may be longer (review 7 item 2)
+    assert all(a >= b for a, b in itertools.pairwise(left)), left
+    assert left[-1] < left[0]

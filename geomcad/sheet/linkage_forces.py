@@ -987,8 +987,19 @@ def further_room(fs: ForceScales, omitted: Sequence[str] = (), width: float = 0.
     the view's box is never narrower); 0 where it has neither."""
     if not (fs.tiered or omitted):
         return 0.0
+    omitted = _omitted_fit(omitted, width)
     lines = len(_omitted_lines(omitted, width)) if omitted and width > 0.0 else 1
     return SCALES_H * TITLE_LEAD + (max(lines, 1) - 1) * SCALES_H * TITLE_SPACING
+
+
+def _omitted_fit(omitted: Sequence[str], width: float) -> list[str]:
+    """The forces left out as the line under a view's caption names them: with their values
+    (``G_4 = 29,43 Н``) where that takes one line ``width`` mm wide, else by their names
+    alone (the table of loads gives their values): a long list takes no second line of the
+    view's room (review 7: the insets draw fewer forces, the lists grew)."""
+    if width <= 0.0 or len(_omitted_lines(omitted, width)) <= 1:
+        return list(omitted)
+    return list(dict.fromkeys(o.split(" = ", 1)[0] for o in omitted))
 
 
 def _omitted_text(omitted: Sequence[str]) -> str:
@@ -1024,6 +1035,7 @@ def draw_insets(
     letters = getattr(view, "letters", None) or detail_letters()
     mine = [next(letters) for _ in range(ins.count(at.viewport))]
     parts = [ins.line(mine)] if mine else []
+    omitted = _omitted_fit(omitted, title_width(view))
     if omitted:
         key = "omitted_one" if len(omitted) == 1 else "omitted"
         share = _share_text(getattr(view, "fs", ins.fs).limit or VIEW_NEGLIGIBLE)

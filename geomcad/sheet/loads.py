@@ -223,6 +223,10 @@ VIEW_NEGLIGIBLE = 0.005
 #: (ARROW_LEN) and a shaft that shows its direction. A force at least this long at the view's
 #: μ_F is drawn in the view itself.
 VIEW_SHORT_MM = 5.0
+#: The shortest arrow (mm) at a view's own μ_F: two arrowheads (SHORT_MM), the length the
+#: drawing of links places clear of the links (an arrow 5–7 mm long is set along its link
+#: there, the compressor's F_D); a shorter force goes to the insets.
+VIEW_OWN_MM = SHORT_MM
 #: The longest arrow (mm) of a view's insets, where the view's own shortest arrow is longer
 #: (:func:`view_scales`).
 INSET_CAP_MM = 25.0
@@ -234,7 +238,7 @@ def view_scales(forces: Iterable[float], room_mm: float, keep: Iterable[float] =
     force throughout the view, across both scales as far as the GOST steps allow:
 
     - ``scales[0]``, the view's μ_F, puts the largest force into ``room_mm`` (the coarsest GOST
-      step that does); every force at least :data:`VIEW_SHORT_MM` long there is drawn in the
+      step that does); every force at least :data:`VIEW_OWN_MM` long there is drawn in the
       view itself;
     - a shorter force is drawn again in an inset (an ESKD detail of its point) at
       ``scales[1]``, the one μ_F of all the view's insets: the finest GOST step that draws the
@@ -242,11 +246,11 @@ def view_scales(forces: Iterable[float], room_mm: float, keep: Iterable[float] =
       (so no inset arrow outgrows an arrow of the view), where it draws as many of them as it
       can at least :data:`VIEW_SHORT_MM` long;
     - a force still shorter than :data:`VIEW_SHORT_MM` there is named, not drawn
-      (``negligible``: the largest such; ``limit``: the share of the largest force under which
-      they are, :data:`VIEW_SHORT_MM` at the insets' μ_F). With the view's largest arrow
-      ``L`` mm long, the smallest force drawn in the view is 5/``L`` of the largest, and the
-      insets take forces ``cap``/5 times smaller (``cap``: the insets' longest arrow), so the
-      share left out is about 25/(``L`` · ``cap``): 1 % for ``L`` = 100 mm and ``cap`` = 25 mm;
+      (``negligible``: the largest such; ``limit``: its share of the largest force). With the
+      view's largest arrow ``L`` mm long, the smallest force drawn in the view is 7/``L`` of
+      the largest, and the insets take forces ``cap``/5 times smaller (``cap``: the insets'
+      longest arrow), so the share left out is about 35/(``L`` · ``cap``): 1.4 % for ``L`` =
+      100 mm and ``cap`` = 25 mm, several % in a small free body;
     - a force of ``keep`` (a free body's reaction, the lever's P_ур: what the view shows) over
       :data:`VIEW_NEGLIGIBLE` of the largest is never named: where the insets' μ_F would draw
       the smallest of them shorter than :data:`VIEW_SHORT_MM`, it is the coarsest step that
@@ -264,9 +268,9 @@ def view_scales(forces: Iterable[float], room_mm: float, keep: Iterable[float] =
     short = VIEW_SHORT_MM * (1.0 - tol.DERIVED)
     live = sorted(F for F in mags if zero < F)
     # the view's own forces from ``live[j]`` up, the insets' below it: first every force at
-    # least VIEW_SHORT_MM long in the view, then also those under INSET_CAP_MM, the shortest
+    # least VIEW_OWN_MM long in the view, then also those under INSET_CAP_MM, the shortest
     # first, while that names fewer forces
-    first = next(j for j, F in enumerate(live) if F / top.k >= short)
+    first = next(j for j, F in enumerate(live) if F / top.k >= VIEW_OWN_MM * (1.0 - tol.DERIVED))
     if first == 0:
         return ForceScales((top,), zero, insets=True, short=VIEW_SHORT_MM)
     kept = [F for F in keep if VIEW_NEGLIGIBLE * big < F]
@@ -282,8 +286,8 @@ def view_scales(forces: Iterable[float], room_mm: float, keep: Iterable[float] =
         if mine and min(mine) / k.k < short:
             k, over = nice_below(min(mine), VIEW_SHORT_MM), 1  # a reaction past the cap
         named = [F for F in live[:j] if F / k.k < short]
-        if len(named) == j:  # no inset draws more than the view
-            k = top
+        if len(named) == j or k.k >= top.k * (1.0 - tol.DERIVED):  # no inset draws more
+            k, named = top, live[:j]
         score = (len(named), over, j)
         if best is None or score < best[0]:
             best = (score, k, named, live[j - 1] / k.k / (live[j] / top.k))
