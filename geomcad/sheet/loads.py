@@ -56,7 +56,7 @@ class ForceScales:
     #: (:func:`view_scales`)
     limit: float = 0.0
     #: the shortest arrow (mm) drawn at a scale: a force shorter there goes to the next one
-    #: (:data:`SHORT_MM`, two arrowheads; a view with insets :data:`VIEW_SHORT_MM`)
+    #: (:data:`SHORT_MM`, two arrowheads)
     short: float = SHORT_MM
     #: the least force (N) a view with insets draws at its own μ_F: a smaller one long enough
     #: there too is drawn in its insets where that lets them draw more (:func:`view_scales`)
@@ -219,9 +219,9 @@ def force_tiers(forces: Iterable[float], room_mm: float) -> ForceScales:
 #: the view's μ_F would be shorter than a 200-mm arrow's drawing error (0,5 mm). The view's
 #: other forces have no such floor: its insets draw what their μ_F can.
 VIEW_NEGLIGIBLE = 0.005
-#: The shortest arrow (mm) of a view with insets, at its own μ_F and at its insets' one: a head
-#: (ARROW_LEN) and a shaft that shows its direction. A force at least this long at the view's
-#: μ_F is drawn in the view itself.
+#: The shortest arrow (mm) of a view's insets: a head (ARROW_LEN) and a shaft that shows its
+#: direction (5 mm rather than SHORT_MM's two heads: an inset with its longest arrow no longer
+#: than the view's shortest spans forces cap/5 apart, not cap/7, and leaves fewer out).
 VIEW_SHORT_MM = 5.0
 #: The shortest arrow (mm) at a view's own μ_F: two arrowheads (SHORT_MM), the length the
 #: drawing of links places clear of the links (an arrow 5–7 mm long is set along its link
