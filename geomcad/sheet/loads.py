@@ -286,8 +286,9 @@ def view_scales(forces: Iterable[float], room_mm: float, keep: Iterable[float] =
         if mine and min(mine) / k.k < short:
             k, over = nice_below(min(mine), VIEW_SHORT_MM), 1  # a reaction past the cap
         named = [F for F in live[:j] if F / k.k < short]
-        if len(named) == j or k.k >= top.k * (1.0 - tol.DERIVED):  # no inset draws more
-            k, named = top, live[:j]
+        if len(named) == j or k.k >= top.k * (1.0 - tol.DERIVED):
+            # no inset draws more: those VIEW_SHORT_MM long at the view's μ_F are drawn in it
+            k, named = top, [F for F in live[:j] if F / top.k < short]
         score = (len(named), over, j)
         if best is None or score < best[0]:
             best = (score, k, named, live[j - 1] / k.k / (live[j] / top.k))
