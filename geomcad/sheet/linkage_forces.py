@@ -93,6 +93,7 @@ from geomcad.sheet.insets import Insets
 from geomcad.sheet.lang import Words, current
 from geomcad.sheet.linkage import (
     CRANK_MM,
+    DETAIL_RING_MM,
     SMALL_TEXT_H,
     TEXT_COST,
     TEXT_H,
@@ -124,7 +125,7 @@ from geomcad.sheet.loads import (
     moment,
     view_scales,
 )
-from geomcad.sheet.model import TextItem
+from geomcad.sheet.model import CircleItem, TextItem
 from geomcad.sheet.plans import markup_of
 from geomcad.sheet.scale import (
     ANGLE_PLACES,
@@ -230,7 +231,8 @@ class _ByScale:
             while r < room:
                 r = min(room, r * 1.25)
                 at = view_scales(self._forces, r, self._keep)
-                if self._cost(at) < self._cost(fs) and self._fits(at, scale, box):
+                # as costly: the longer arrows (the view's room used, review 7 item 2)
+                if (self._cost(at), at.k) < (self._cost(fs), fs.k) and self._fits(at, scale, box):
                     fs = at
             # a force still left out (a reaction of a free body): longer arrows, up to
             # ARROW_SHARE of the view's larger side, where they keep within its box
@@ -273,11 +275,12 @@ class _ByScale:
         """How many of the view's forces ``fs`` draws in insets."""
         return sum(1 for F in self._forces if fs.tier(F) not in (0, None))
 
-    def _cost(self, fs: ForceScales) -> tuple[int, int]:
-        """How many of the view's forces ``fs`` leaves out (named, not drawn), and how many
-        it draws in insets."""
+    def _cost(self, fs: ForceScales) -> tuple[int, int, int]:
+        """How many of the view's forces ``fs`` leaves out (named, not drawn), whether its
+        insets' longest arrow outgrows the view's shortest (a reaction drawn past their cap),
+        and how many it draws in insets."""
         left = sum(1 for F in self._forces if fs.zero < F and fs.tier(F) is None)
-        return left, self._shorts(fs)
+        return left, int(fs.over > 1.0 + tol.DERIVED), self._shorts(fs)
 
 
 #: The least length (mm) of a force plan's longest vector (a course project draws its plans
@@ -1061,8 +1064,19 @@ def further_room(fs: ForceScales, omitted: Sequence[str] = (), width: float = 0.
     the view's box is never narrower); 0 where it has neither."""
     if not (fs.tiered or omitted):
         return 0.0
+    omitted = _omitted_fit(omitted, width)
     lines = len(_omitted_lines(omitted, width)) if omitted and width > 0.0 else 1
     return SCALES_H * TITLE_LEAD + (max(lines, 1) - 1) * SCALES_H * TITLE_SPACING
+
+
+def _omitted_fit(omitted: Sequence[str], width: float) -> list[str]:
+    """The forces left out as the line under a view's caption names them: with their values
+    (``G_4 = 29,43 Н``) where that takes one line ``width`` mm wide, else by their names
+    alone (the table of loads gives their values): a long list takes no second line of the
+    view's room (review 7: the insets draw fewer forces, the lists grew)."""
+    if width <= 0.0 or len(_omitted_lines(omitted, width)) <= 1:
+        return list(omitted)
+    return list(dict.fromkeys(o.split(" = ", 1)[0] for o in omitted))
 
 
 def _omitted_text(omitted: Sequence[str]) -> str:
@@ -1098,6 +1112,7 @@ def draw_insets(
     letters = getattr(view, "letters", None) or detail_letters()
     mine = [next(letters) for _ in range(ins.count(at.viewport))]
     parts = [ins.line(mine)] if mine else []
+    omitted = _omitted_fit(omitted, title_width(view))
     if omitted:
         key = "omitted_one" if len(omitted) == 1 else "omitted"
         share = _share_text(getattr(view, "fs", ins.fs).limit or VIEW_NEGLIGIBLE)
@@ -1131,10 +1146,11 @@ def draw_insets(
 
 def _share_text(share: float) -> str:
     """A share of the largest force as the percentage the line of forces left out states:
-    to two significant figures, rounded up (every force named is under it)."""
+    to two significant figures, rounded up past it (every force named is under it, the
+    largest of them too)."""
     pct = share * 100.0
     e = math.floor(math.log10(pct)) - 1
-    return fmt_number(math.ceil(pct / 10.0**e * (1.0 - tol.DERIVED)) * 10.0**e)
+    return fmt_number(math.ceil(pct / 10.0**e * (1.0 + tol.DERIVED)) * 10.0**e)
 
 
 def _negligible_note(names: Sequence[str]) -> str:
@@ -1230,7 +1246,24 @@ class _Loaded(_Forces):
         omega_arrow(v, lk, P)
         v.turn(P.pos[lk.pivot], self.f.M_bal, 30.0, WORDS("M_bal"), M_BAL_MM, 250.0, "result", 2.5)
         self.crank_detail(d, at, Clearance(d.sheet, start, _field(at)))
+        if self._sheet_detail_due(at):
+            # the circle sheet_detail will draw round the crank: no inset over it
+            r = max(lk.length, v.scale.k * M_BAL_MM)
+            ins.reserved.append(CircleItem(v.p(lk.frame[lk.pivot]), v.mm(r) + DETAIL_RING_MM,
+                                           "thin"))  # fmt: skip
         draw_insets(d, at, self, ins, start, self.omitted)
+
+    def _sheet_detail_due(self, at: Placed) -> bool:
+        """Whether :meth:`sheet_detail` may still mark the crank's detail on this view (after
+        its insets are drawn)."""
+        v = at.viewport
+        return not (
+            v is None
+            or self.solved is None
+            or self.detail_scale is not None
+            or (self.detail is None and self.letters is None)
+            or v.scale.mm(self.lk.length) >= CRANK_MM * (1.0 - tol.REL_LENGTH)
+        )
 
     def crank_detail(self, d: Drawing, at: Placed, drawn: Clearance) -> None:
         """Where the view's μ_l draws the crank shorter than
