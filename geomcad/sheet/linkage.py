@@ -63,6 +63,7 @@ from geomcad.sheet.frame import FORMATS, name_fits, text_at
 from geomcad.sheet.lang import Words, current, per_language
 from geomcad.sheet.model import ArcItem, CircleItem, Polyline, TextItem
 from geomcad.sheet.motion import Frames, turn
+from geomcad.sheet.placer import clip_to_circle
 from geomcad.sheet.plans import markup_of
 from geomcad.sheet.scale import Scale, angle_places, fmt_column, fmt_fixed
 from geomcad.sheet.scheme import Body, draw_scheme, is_block
@@ -1012,9 +1013,11 @@ def _offset_arc(v: Viewport, g: Group, drawn: Sequence[Position]) -> None:
 #: (a crank a little short of the rule is left to the mechanism's view: a detail at the next
 #: GOST scale would show nothing more).
 DETAIL_BELOW = 0.5
-#: The crank's detail: its drawing reaches this many crank lengths round the pivot (the crank
-#: circle, the stubs of the links at the crank's joint, ω1 and the numbers).
-DETAIL_REACH = 1.9
+#: The crank's detail: its drawing reaches this many crank lengths round the pivot, to the
+#: detail's circle (the crank circle, its numbers and ω1 inside it; the stubs of the links at the
+#: crank's joint end on it; review 7: at 1.9 the oscillator's stubs ran 45 mm past the crank
+#: circle towards the plans, read as an unclipped drawing).
+DETAIL_REACH = 1.4
 #: On the mechanism, the detail's circle round the crank: this much (mm) beyond the crank's
 #: circle; its leader and shelf (mm).
 DETAIL_RING_MM, DETAIL_LEADER_MM, DETAIL_SHELF_MM = 3.0, 6.0, 5.0
@@ -1076,7 +1079,8 @@ class _CrankDetail(View):
         s = self.s
         lk = s.linkage
         O1 = lk.frame[lk.pivot]
-        reach = self.reach * 0.95
+        reach = self.reach
+        start = len(d.sheet.items)
         P0, k0 = _principal(s) if self.only is None else (self.only, 0)
         drawn = s.drawn if self.only is None else [self.only]
         v.circle(O1, lk.length, "centre")
@@ -1100,6 +1104,15 @@ class _CrankDetail(View):
         v.label(P0.pos[lk.joint], markup_of(lk.joint), 3.5, clear=2.0)
         v.label((O1 + P0.pos[lk.joint]) * 0.5, "1", 3.5, clear=1.0, space=LINK_SPACE)
         omega_arrow(v, lk, P0)
+        # the detail's content ends at its circle (drawn thin where it shows the numbered
+        # positions; the forces sheet's detail adds the crank's loads after it)
+        sheet = d.sheet
+        kept = clip_to_circle(sheet.items[start:], v.p(O1), v.mm(reach))
+        gone = {id(it) for it in sheet.items[start:]} - {id(it) for it in kept}
+        sheet.items[start:] = kept
+        sheet.anchors = [(t, q) for t, q in sheet.anchors if id(t) not in gone]
+        if self.only is None:
+            v.circle(O1, reach, "thin")
 
 
 def _neighbours(lk: Linkage, P: Position, joint: str) -> list[Vec]:
