@@ -1,6 +1,6 @@
 """Review 7's drafting rules (issue 27): a crank's detail view draws nothing beyond its own
 circle (the oscillator's detail once drew its coupler stubs 1.9 crank lengths out, towards the
-plans column)."""
+plans column); the numbers of one track never stand among another's."""
 
 from __future__ import annotations
 
@@ -12,7 +12,16 @@ import pytest
 
 from geomcad.linkage import parse
 from geomcad.linkage.solution import solve
-from geomcad.sheet.linkage import _CrankDetail, kinematic_sheets, layout
+from geomcad.sheet.linkage import (
+    NUMBER_H,
+    TRACK_MARGIN_MM,
+    _CrankDetail,
+    _gap,
+    _Mechanism,
+    _text_box,
+    kinematic_sheets,
+    layout,
+)
 from geomcad.sheet.model import CircleItem, Polyline
 
 ROOT = Path(__file__).resolve().parent
@@ -57,3 +66,62 @@ def test_a_crank_detail_ends_at_its_circle(name: str) -> None:
     for it in lines:
         for q in it.points:
             assert math.dist(q, c) <= r + 0.05, (it.role, q, math.dist(q, c), r)
+
+
+#: Files whose mechanism numbers several tracks near each other: review 7's yoke (its point E
+#: on the guide through the crank's pivot), the six-bars, the slotted levers, the shaper.
+TRACKED = {
+    **{n: ROOT / "linkages_layout" / f"{n}.toml" for n in (
+        "yoke_pump_double_slider", "sixbar_coupler_slider", "tangent_rocking_slider",
+        "v_compressor", "sixbar_oscillator",
+    )},
+    **{n: EXAMPLES / f"{n}.toml" for n in ("shaper", "scotch-yoke", "rocking-slider")},
+}  # fmt: skip
+
+
+def _number_owners(name: str) -> list[tuple[str, tuple[float, float, float, float]]]:
+    """Each position number on the mechanism's view with the track it numbers (by its anchor,
+    or by its row's box) and its box."""
+    s = solve(parse(tomllib.loads(TRACKED[name].read_text(encoding="utf-8"))))
+    sheet = kinematic_sheets(s, "x")[0][1]
+    pl = next(pl for pl in layout(s).sized[0].layout if isinstance(pl.view, _Mechanism))
+    anchors = {id(t): at for t, at in sheet.anchors}
+    a = pl.box
+    out = []
+    for t in sheet.texts():
+        if not (t.role == "label" and t.text.isdigit() and t.height == NUMBER_H):
+            continue
+        if not (a[0] <= t.at[0] <= a[2] and a[1] <= t.at[1] <= a[3]):
+            continue
+        p = anchors.get(id(t))
+        if p is not None:
+            owner = next(k for k, pts in pl.view.tracks.items()
+                         if any(math.dist(p, q) < 1e-6 for q in pts))  # fmt: skip
+        else:
+            rows = pl.view.rows.items()
+            x, y = t.at
+            owner = next(k for k, bs in rows for b in bs
+                         if abs(b[0] - x) < 1e-6 and b[1] <= y <= b[3] + 1.0)  # fmt: skip
+        out.append((owner, _text_box(t)))
+    return out
+
+
+@pytest.mark.parametrize("name", sorted(TRACKED))
+def test_no_number_stands_among_another_tracks_numbers(name: str) -> None:
+    """No position's number stands within TRACK_MARGIN_MM of a number of another track (the
+    yoke's E numbered "9 3", "4 8", "5 7 6" inside the crank circle, its "1" 1.3 mm from the
+    crank's "1"): a degenerate track inside another's numbering zone is left unnumbered where
+    its link is numbered at another point."""
+    owned = _number_owners(name)
+    assert len({k for k, _ in owned}) >= 2
+    for i, (k, b) in enumerate(owned):
+        for m, c in owned[i + 1 :]:
+            if k != m:
+                assert _gap(b, c) >= TRACK_MARGIN_MM, (k, m, b, c)
+
+
+def test_a_degenerate_track_in_another_zone_is_not_numbered() -> None:
+    """The yoke's E (on the guide through the crank's pivot, inside the crank circle) is
+    dotted but not numbered; its link's positions are numbered at the arm's end F."""
+    owned = {k for k, _ in _number_owners("yoke_pump_double_slider")}
+    assert "E" not in owned and {"A", "F", "D"} <= owned

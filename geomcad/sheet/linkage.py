@@ -63,7 +63,7 @@ from geomcad.sheet.frame import FORMATS, name_fits, text_at
 from geomcad.sheet.lang import Words, current, per_language
 from geomcad.sheet.model import ArcItem, CircleItem, Polyline, TextItem
 from geomcad.sheet.motion import Frames, turn
-from geomcad.sheet.placer import clip_to_circle
+from geomcad.sheet.placer import clip_to_circle, within_hull
 from geomcad.sheet.plans import markup_of
 from geomcad.sheet.scale import Scale, angle_places, fmt_column, fmt_fixed
 from geomcad.sheet.scheme import Body, draw_scheme, is_block
@@ -928,18 +928,59 @@ class _Mechanism(View):
         # the positions numbered last, clear of every line drawn
         numbered: list[Vec] = []
         taken: list[Box] = []
+        done: list[list[tuple[float, float]]] = []  # the tracks numbered, as drawn
         for name in numbered_tracks(lk):
             pts = [P.pos[name] for P in s.drawn]
             if name == lk.joint and self.detail is not None:
                 mark_detail(v, lk.frame[lk.pivot], lk.length, self.detail)
                 continue  # the crank's positions are numbered on its detail view
             self.tracks[name] = [v.p(q) for q in pts]
+            if _in_zone(self.tracks[name], done) and _read_elsewhere(lk, name):
+                continue
+            done.append(self.tracks[name])
             vels = [P.vel[name] for P in s.drawn]
             clear = GUIDE_CLEAR_MM if name in guided else 0.0
             rowed = len(taken)
             position_numbers(v, pts, vels, lk.frame[lk.pivot], numbered, clear, taken)
             self.rows[name] = taken[rowed:]
             numbered = pts
+
+
+#: A track's numbering zone: the hull of its points grown by this much (mm), where its numbers
+#: stand (:func:`position_numbers` sets them within a row's depth of their points).
+ZONE_MM = 5.0
+#: A track whose points lie within this (mm) of one line is degenerate: its point runs to and
+#: fro along a segment (a yoke's point on its guide).
+LINE_MM = 0.5
+
+
+def _in_zone(track: Sequence[tuple[float, float]], done: Sequence[Sequence[tuple[float, float]]]
+             ) -> bool:  # fmt: skip
+    """Whether ``track`` (paper points) is degenerate (:data:`LINE_MM`) and lies within the
+    numbering zone (:data:`ZONE_MM`) of one of the tracks ``done``: its numbers could only
+    stand among that track's (review 7: a yoke's point E on its guide through the crank's
+    pivot, numbered "9 3", "4 8", "5 7 6" inside the crank circle among its numbers)."""
+    xy = np.asarray(track, dtype=float)
+    if len(xy) < 2:
+        return False
+    i, j = np.unravel_index(np.argmax(((xy[:, None] - xy[None]) ** 2).sum(axis=2)), (len(xy),) * 2)
+    u = xy[j] - xy[i]
+    span = float(np.hypot(*u))
+    if span > 0.0:
+        d = xy - xy[i]
+        off = np.abs(u[0] * d[:, 1] - u[1] * d[:, 0]) / span
+        if float(off.max()) > LINE_MM:
+            return False
+    return any(within_hull(track, other, ZONE_MM) for other in done if len(other) >= 3)
+
+
+def _read_elsewhere(lk: Linkage, name: str) -> bool:
+    """Whether the positions of the link that carries ``name`` are numbered at another of its
+    points (a yoke's arm end F for its point E on the guide)."""
+    link = lk.owner.get(name)
+    return link is not None and any(
+        k != name and lk.owner.get(k) == link for k in numbered_tracks(lk)
+    )
 
 
 def numbered_tracks(lk: Linkage) -> tuple[str, ...]:

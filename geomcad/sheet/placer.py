@@ -655,3 +655,10 @@ def clip_to_circle(items: Sequence[Item], c: XY, r: float) -> list[Item]:
         else:
             out.append(it)
     return out
+
+
+def within_hull(pts: Sequence[XY], other: Sequence[XY], grow: float) -> bool:
+    """Whether every one of the points ``pts`` lies within the convex hull of ``other`` grown
+    by ``grow`` (paper mm)."""
+    hull = shapely.MultiPoint([tuple(q) for q in other]).convex_hull.buffer(grow)
+    return all(hull.covers(Point(q)) for q in pts)
