@@ -19,10 +19,12 @@ from geomcad.sheet.linkage import (
     _gap,
     _Mechanism,
     _text_box,
+    detail_letter,
     kinematic_sheets,
     layout,
 )
 from geomcad.sheet.model import CircleItem, Polyline
+from geomcad.sheet.views import detail_letters
 
 ROOT = Path(__file__).resolve().parent
 EXAMPLES = ROOT.parent / "examples"
@@ -125,3 +127,25 @@ def test_a_degenerate_track_in_another_zone_is_not_numbered() -> None:
     dotted but not numbered; its link's positions are numbered at the arm's end F."""
     owned = {k for k, _ in _number_owners("yoke_pump_double_slider")}
     assert "E" not in owned and {"A", "F", "D"} <= owned
+
+
+def test_a_detail_letter_never_reads_as_a_points_letter() -> None:
+    """A detail is never lettered with a Cyrillic capital read as a point's Latin one: drawn
+    alike (А–A, В–B, …) or differing by a stroke and read by the same name (Б–B, Д–D; review
+    7: tangent's inset "Д" beside its point "D")."""
+    letters = detail_letters(["A", "B", "D", "O"])
+    first = [next(letters) for _ in range(6)]
+    assert not {"А", "Б", "В", "Д", "О"} & {c[0] for c in first}
+    s = solve(parse(tomllib.loads(TRACKED["sixbar_coupler_slider"].read_text(encoding="utf-8"))))
+    assert detail_letter(s) not in ("А", "Б", "В", "Д")  # its points A, B, C, D, E
+
+
+def test_the_tangent_forces_sheet_letters_no_detail_as_its_point_d() -> None:
+    """On tangent_rocking_slider's forces sheet (a point D, insets lettered), no "Д"."""
+    from geomcad.sheet.linkage_forces import force_sheets
+
+    s = solve(parse(tomllib.loads(TRACKED["tangent_rocking_slider"].read_text(encoding="utf-8"))))
+    assert "D" in s.drawn[0].pos
+    texts = [t.text for _, sh in force_sheets(s, "x") for t in sh.texts()]
+    assert "D" in texts
+    assert not [t for t in texts if t == "Д" or t.startswith("Д ")]  # a detail's mark or title
