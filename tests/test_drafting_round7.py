@@ -32,6 +32,7 @@ EXAMPLES = ROOT.parent / "examples"
 DETAILED = {
     "sixbar_oscillator": ROOT / "linkages_layout" / "sixbar_oscillator.toml",
     "crusher": EXAMPLES / "crusher.toml",
+    "vertical_yoke_rocker": ROOT / "linkages_drafting" / "vertical_yoke_rocker.toml",
 }
 #: The detail's circle reaches no further than this many crank lengths round the pivot: it
 #: holds the crank circle and its numbers, not the links beyond.
@@ -78,6 +79,7 @@ TRACKED = {
         "v_compressor", "sixbar_oscillator",
     )},
     **{n: EXAMPLES / f"{n}.toml" for n in ("shaper", "scotch-yoke", "rocking-slider")},
+    "vertical_yoke_rocker": ROOT / "linkages_drafting" / "vertical_yoke_rocker.toml",
 }  # fmt: skip
 
 
@@ -122,11 +124,16 @@ def test_no_number_stands_among_another_tracks_numbers(name: str) -> None:
                 assert _gap(b, c) >= TRACK_MARGIN_MM, (k, m, b, c)
 
 
-def test_a_degenerate_track_in_another_zone_is_not_numbered() -> None:
-    """The yoke's E (on the guide through the crank's pivot, inside the crank circle) is
-    dotted but not numbered; its link's positions are numbered at the arm's end F."""
-    owned = {k for k, _ in _number_owners("yoke_pump_double_slider")}
-    assert "E" not in owned and {"A", "F", "D"} <= owned
+@pytest.mark.parametrize(
+    ("name", "numbered"),
+    [("yoke_pump_double_slider", {"A", "F", "D"}), ("vertical_yoke_rocker", {"F", "B"})],
+)
+def test_a_degenerate_track_in_another_zone_is_not_numbered(name: str, numbered: set[str]) -> None:
+    """A yoke's E (on its guide through the crank's pivot, inside the crank circle, numbered
+    there or on the crank's detail) is dotted but not numbered; its link's positions are
+    numbered at the arm's end F."""
+    owned = {k for k, _ in _number_owners(name)}
+    assert "E" not in owned and numbered <= owned
 
 
 def test_a_detail_letter_never_reads_as_a_points_letter() -> None:

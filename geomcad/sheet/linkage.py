@@ -933,6 +933,7 @@ class _Mechanism(View):
             pts = [P.pos[name] for P in s.drawn]
             if name == lk.joint and self.detail is not None:
                 mark_detail(v, lk.frame[lk.pivot], lk.length, self.detail)
+                done.append([v.p(q) for q in pts])  # its circle is still the crank's zone
                 continue  # the crank's positions are numbered on its detail view
             self.tracks[name] = [v.p(q) for q in pts]
             if _in_zone(self.tracks[name], done) and _read_elsewhere(lk, name):
@@ -1054,11 +1055,12 @@ def _offset_arc(v: Viewport, g: Group, drawn: Sequence[Position]) -> None:
 #: (a crank a little short of the rule is left to the mechanism's view: a detail at the next
 #: GOST scale would show nothing more).
 DETAIL_BELOW = 0.5
-#: The crank's detail: its drawing reaches this many crank lengths round the pivot, to the
-#: detail's circle (the crank circle, its numbers and ω1 inside it; the stubs of the links at the
-#: crank's joint end on it; review 7: at 1.9 the oscillator's stubs ran 45 mm past the crank
-#: circle towards the plans, read as an unclipped drawing).
-DETAIL_REACH = 1.4
+#: The crank's detail: its box reaches this many crank lengths round the pivot …
+DETAIL_REACH = 1.9
+#: … its drawing this many, to the detail's circle (the crank circle, its numbers and ω1
+#: inside it; the stubs of the links at the crank's joint end on it; review 7: the oscillator's
+#: stubs ran 45 mm past the crank circle towards the plans, read as an unclipped drawing).
+DETAIL_CIRCLE = 1.4
 #: On the mechanism, the detail's circle round the crank: this much (mm) beyond the crank's
 #: circle; its leader and shelf (mm).
 DETAIL_RING_MM, DETAIL_LEADER_MM, DETAIL_SHELF_MM = 3.0, 6.0, 5.0
@@ -1120,7 +1122,7 @@ class _CrankDetail(View):
         s = self.s
         lk = s.linkage
         O1 = lk.frame[lk.pivot]
-        reach = self.reach
+        reach = min(self.reach, DETAIL_CIRCLE * lk.length)
         start = len(d.sheet.items)
         P0, k0 = _principal(s) if self.only is None else (self.only, 0)
         drawn = s.drawn if self.only is None else [self.only]
