@@ -23,7 +23,7 @@ from geomcad.sheet.linkage import (
     kinematic_sheets,
     layout,
 )
-from geomcad.sheet.model import CircleItem, Polyline
+from geomcad.sheet.model import ArcItem, CircleItem, Polyline
 from geomcad.sheet.views import detail_letters
 
 ROOT = Path(__file__).resolve().parent
@@ -156,3 +156,38 @@ def test_the_tangent_forces_sheet_letters_no_detail_as_its_point_d() -> None:
     texts = [t.text for _, sh in force_sheets(s, "x") for t in sh.texts()]
     assert "D" in texts
     assert not [t for t in texts if t == "Д" or t.startswith("Д ")]  # a detail's mark or title
+
+
+def _on_arc(it: ArcItem, q: tuple[float, float]) -> bool:
+    """Whether the paper direction from the arc's centre to ``q`` falls within the arc."""
+    a0 = math.atan2(it.start[1] - it.c[1], it.start[0] - it.c[0])
+    a = math.atan2(q[1] - it.c[1], q[0] - it.c[0])
+    # ArcItem.sweep > 0 turns clockwise on the paper (y down: the angle grows)
+    t = (a - a0) % (2.0 * math.pi) if it.sweep > 0 else (a0 - a) % (2.0 * math.pi)
+    return t <= abs(it.sweep)
+
+
+@pytest.mark.parametrize("name", ["sixbar_coupler_slider", "yoke_pump_double_slider"])
+def test_m_bal_arc_never_crosses_the_crank(name: str) -> None:
+    """On the forces sheet, M_ур's arc about the crank's pivot leaves its gap over the crank
+    (review 7: its 250° arc crossed the crank and its number "1" on yoke's and sixbar's)."""
+    from geomcad.sheet.linkage_forces import M_BAL_MM, force_sheets
+
+    s = solve(parse(tomllib.loads(TRACKED[name].read_text(encoding="utf-8"))))
+    sheet = dict(force_sheets(s, "x"))["forces"]
+    arcs = [it for it in sheet.items if isinstance(it, ArcItem) and it.role == "result"
+            and abs(it.r - M_BAL_MM) < 1e-6]  # fmt: skip
+    assert arcs
+    checked = 0
+    for arc in arcs:
+        for it in sheet.items:
+            if not (isinstance(it, Polyline) and it.role == "link" and len(it.points) == 2):
+                continue
+            a, b = it.points
+            if math.dist(a, arc.c) > 1e-3:
+                a, b = b, a
+            if math.dist(a, arc.c) > 1e-3 or math.dist(a, b) <= arc.r:
+                continue
+            checked += 1
+            assert not _on_arc(arc, b), (arc, it.points)
+    assert checked >= len(arcs)
