@@ -63,6 +63,7 @@ from geomcad.sheet.frame import FORMATS, name_fits, text_at
 from geomcad.sheet.lang import Words, current, per_language
 from geomcad.sheet.model import ArcItem, CircleItem, Polyline, TextItem
 from geomcad.sheet.motion import Frames, turn
+from geomcad.sheet.placer import clip_to_circle, within_hull
 from geomcad.sheet.plans import markup_of
 from geomcad.sheet.scale import Scale, angle_places, fmt_column, fmt_fixed
 from geomcad.sheet.scheme import Body, draw_scheme, is_block
@@ -927,18 +928,60 @@ class _Mechanism(View):
         # the positions numbered last, clear of every line drawn
         numbered: list[Vec] = []
         taken: list[Box] = []
+        done: list[list[tuple[float, float]]] = []  # the tracks numbered, as drawn
         for name in numbered_tracks(lk):
             pts = [P.pos[name] for P in s.drawn]
             if name == lk.joint and self.detail is not None:
                 mark_detail(v, lk.frame[lk.pivot], lk.length, self.detail)
+                done.append([v.p(q) for q in pts])  # its circle is still the crank's zone
                 continue  # the crank's positions are numbered on its detail view
             self.tracks[name] = [v.p(q) for q in pts]
+            if _in_zone(self.tracks[name], done) and _read_elsewhere(lk, name):
+                continue
+            done.append(self.tracks[name])
             vels = [P.vel[name] for P in s.drawn]
             clear = GUIDE_CLEAR_MM if name in guided else 0.0
             rowed = len(taken)
             position_numbers(v, pts, vels, lk.frame[lk.pivot], numbered, clear, taken)
             self.rows[name] = taken[rowed:]
             numbered = pts
+
+
+#: A track's numbering zone: the hull of its points grown by this much (mm), where its numbers
+#: stand (:func:`position_numbers` sets them within a row's depth of their points).
+ZONE_MM = 5.0
+#: A track whose points lie within this (mm) of one line is degenerate: its point runs to and
+#: fro along a segment (a yoke's point on its guide).
+LINE_MM = 0.5
+
+
+def _in_zone(track: Sequence[tuple[float, float]], done: Sequence[Sequence[tuple[float, float]]]
+             ) -> bool:  # fmt: skip
+    """Whether ``track`` (paper points) is degenerate (:data:`LINE_MM`) and lies within the
+    numbering zone (:data:`ZONE_MM`) of one of the tracks ``done``: its numbers could only
+    stand among that track's (review 7: a yoke's point E on its guide through the crank's
+    pivot, numbered "9 3", "4 8", "5 7 6" inside the crank circle among its numbers)."""
+    xy = np.asarray(track, dtype=float)
+    if len(xy) < 2:
+        return False
+    i, j = np.unravel_index(np.argmax(((xy[:, None] - xy[None]) ** 2).sum(axis=2)), (len(xy),) * 2)
+    u = xy[j] - xy[i]
+    span = float(np.hypot(*u))
+    if span > 0.0:
+        d = xy - xy[i]
+        off = np.abs(u[0] * d[:, 1] - u[1] * d[:, 0]) / span
+        if float(off.max()) > LINE_MM:
+            return False
+    return any(within_hull(track, other, ZONE_MM) for other in done if len(other) >= 3)
+
+
+def _read_elsewhere(lk: Linkage, name: str) -> bool:
+    """Whether the positions of the link that carries ``name`` are numbered at another of its
+    points (a yoke's arm end F for its point E on the guide)."""
+    link = lk.owner.get(name)
+    return link is not None and any(
+        k != name and lk.owner.get(k) == link for k in numbered_tracks(lk)
+    )
 
 
 def numbered_tracks(lk: Linkage) -> tuple[str, ...]:
@@ -1012,9 +1055,12 @@ def _offset_arc(v: Viewport, g: Group, drawn: Sequence[Position]) -> None:
 #: (a crank a little short of the rule is left to the mechanism's view: a detail at the next
 #: GOST scale would show nothing more).
 DETAIL_BELOW = 0.5
-#: The crank's detail: its drawing reaches this many crank lengths round the pivot (the crank
-#: circle, the stubs of the links at the crank's joint, ω1 and the numbers).
+#: The crank's detail: its box reaches this many crank lengths round the pivot …
 DETAIL_REACH = 1.9
+#: … its drawing this many, to the detail's circle (the crank circle, its numbers and ω1
+#: inside it; the stubs of the links at the crank's joint end on it; review 7: the oscillator's
+#: stubs ran 45 mm past the crank circle towards the plans, read as an unclipped drawing).
+DETAIL_CIRCLE = 1.4
 #: On the mechanism, the detail's circle round the crank: this much (mm) beyond the crank's
 #: circle; its leader and shelf (mm).
 DETAIL_RING_MM, DETAIL_LEADER_MM, DETAIL_SHELF_MM = 3.0, 6.0, 5.0
@@ -1076,7 +1122,8 @@ class _CrankDetail(View):
         s = self.s
         lk = s.linkage
         O1 = lk.frame[lk.pivot]
-        reach = self.reach * 0.95
+        reach = min(self.reach, DETAIL_CIRCLE * lk.length)
+        start = len(d.sheet.items)
         P0, k0 = _principal(s) if self.only is None else (self.only, 0)
         drawn = s.drawn if self.only is None else [self.only]
         v.circle(O1, lk.length, "centre")
@@ -1100,6 +1147,15 @@ class _CrankDetail(View):
         v.label(P0.pos[lk.joint], markup_of(lk.joint), 3.5, clear=2.0)
         v.label((O1 + P0.pos[lk.joint]) * 0.5, "1", 3.5, clear=1.0, space=LINK_SPACE)
         omega_arrow(v, lk, P0)
+        # the detail's content ends at its circle (drawn thin where it shows the numbered
+        # positions; the forces sheet's detail adds the crank's loads after it)
+        sheet = d.sheet
+        kept = clip_to_circle(sheet.items[start:], v.p(O1), v.mm(reach))
+        gone = {id(it) for it in sheet.items[start:]} - {id(it) for it in kept}
+        sheet.items[start:] = kept
+        sheet.anchors = [(t, q) for t, q in sheet.anchors if id(t) not in gone]
+        if self.only is None:
+            v.circle(O1, reach, "thin")
 
 
 def _neighbours(lk: Linkage, P: Position, joint: str) -> list[Vec]:

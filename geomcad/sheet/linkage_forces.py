@@ -158,6 +158,20 @@ LOAD_MM = 24.0
 #: The radius (mm) of M_ур's arc about the crank's pivot: clear of the support's stand and
 #: hatching (symbols.STAND_DEPTH + HATCH_LEN) round the pivot.
 M_BAL_MM = symbols.STAND_DEPTH + symbols.HATCH_LEN + 3.0
+#: M_ур's arc spans this many degrees, its gap centred on the crank (:func:`m_bal_start`).
+M_BAL_SWEEP_DEG = 250.0
+
+
+def m_bal_start(lk: Linkage, P: Position, sense: float) -> float:
+    """Where (model degrees) M_ур's arc about the crank's pivot starts, turning in the sense
+    of ``sense``: its gap centred on the crank in position ``P``, so that the arc and its head
+    never lie on the crank nor its number, and its label stands across the pivot from the crank
+    (review 7: O, A, 1, 2, M_ур and ω1 cramped at the crank)."""
+    a = P.pos[lk.joint] - lk.frame[lk.pivot]
+    crank = math.degrees(math.atan2(a.y, a.x))
+    return crank + math.copysign(0.5 * (360.0 - M_BAL_SWEEP_DEG), sense)
+
+
 #: How far (mm) the labels of a drawing of links on the forces sheet keep from the centre
 #: lines of its links, joints, hatching, arcs and arrows where they can (about half a mm of
 #: paper between a letter and a main line's ink): no letter touching a joint's circle, an
@@ -1244,7 +1258,8 @@ class _Loaded(_Forces):
         # the moments, then the forces, each clear of the links and of the arrows before it
         _draw_loads(v, lk, P, self.loads, self.fs, "vector", clear, insets=ins)
         omega_arrow(v, lk, P)
-        v.turn(P.pos[lk.pivot], self.f.M_bal, 30.0, WORDS("M_bal"), M_BAL_MM, 250.0, "result", 2.5)
+        v.turn(P.pos[lk.pivot], self.f.M_bal, m_bal_start(lk, P, self.f.M_bal), WORDS("M_bal"),
+               M_BAL_MM, M_BAL_SWEEP_DEG, "result", 2.5)  # fmt: skip
         self.crank_detail(d, at, Clearance(d.sheet, start, _field(at)))
         if self._sheet_detail_due(at):
             # the circle sheet_detail will draw round the crank: no inset over it
@@ -1351,7 +1366,8 @@ class _Loaded(_Forces):
             dv = pl.viewport
             assert dv is not None
             _draw_loads(dv, lk, P, loads, self.fs, "vector", clear)
-            dv.turn(O1, self.f.M_bal, 30.0, WORDS("M_bal"), M_BAL_MM, 250.0, "result", 2.5)
+            dv.turn(O1, self.f.M_bal, m_bal_start(lk, P, self.f.M_bal), WORDS("M_bal"), M_BAL_MM,
+                    M_BAL_SWEEP_DEG, "result", 2.5)  # fmt: skip
             d.text(WORDS("crank_detail", letter=letter, scale=scale.ratio_text()),
                    (x0, y0 + TITLE_H), TITLE_H)  # fmt: skip
             # the circle round the crank and M_ур's arc about its pivot
@@ -1443,7 +1459,8 @@ class _FreeBody(_Forces):
                 else ld.moment
                 for ld in gf.loads[1]
             )
-            v.turn(P.pos[lk.pivot], M, 30.0, WORDS("M_bal"), M_BAL_MM, 250.0, "result", 2.5)
+            v.turn(P.pos[lk.pivot], M, m_bal_start(lk, P, M), WORDS("M_bal"), M_BAL_MM,
+                   M_BAL_SWEEP_DEG, "result", 2.5)  # fmt: skip
         draw_insets(d, at, self, ins, start, self.omitted)
 
 
