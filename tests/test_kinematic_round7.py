@@ -24,7 +24,9 @@ from geomcad.sheet.linkage import (
     _Mechanism,
     _segment_to_box,
     _text_box,
+    detail_letter,
     fit,
+    kinematic_sheets,
     layout,
     sheet_formats,
 )
@@ -146,3 +148,24 @@ def test_no_axis_name_on_a_drawn_line(name: str) -> None:
             _segment_to_box(p, q, b) for pl in lines for p, q in itertools.pairwise(pl.points)
         )
         assert gap > 1.5 * NAME_CLEAR_MM, (t.text, gap)
+
+
+@pytest.mark.parametrize("name", sorted(DETAIL_FILES))
+def test_the_detail_letter_on_the_mechanism_is_crossed_by_no_line(name: str) -> None:
+    """Review 7 (after the oscillator's mechanism grew to 1:2,5): its coupler AB ran through
+    the letter "Б" marking the crank's detail, set up and to the right of the ring whatever
+    was drawn there. The letter takes the first diagonal that no line crosses."""
+    s = _solved(DETAIL_FILES[name])
+    sheet = kinematic_sheets(s)[0][1]
+    letter = detail_letter(s)
+    (mark,) = [t for t in sheet.texts() if t.text == letter and t.role == "label"]
+    b = _text_box(mark)
+    lines = [it.points for it in sheet.items if isinstance(it, Polyline)]
+    segments = [pq for pts in lines for pq in itertools.pairwise(pts)]
+    # the letter's own shelf, 0,8 mm under its baseline, aside
+    crossing = [
+        (p, q) for p, q in segments
+        if _segment_to_box(p, q, b) <= 0.0
+        and not (abs(p[1] - q[1]) < 1e-9 and abs(p[1] - mark.at[1] - 0.8) < 1e-6)
+    ]  # fmt: skip
+    assert not crossing

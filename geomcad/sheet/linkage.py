@@ -1082,13 +1082,32 @@ def mark_detail(v: Viewport, pivot: Vec, r: float, letter: str) -> None:
     carrying the detail's ``letter``."""
     ring = v.mm(r) + DETAIL_RING_MM
     c = v.p(pivot)
+    segments = [
+        pq
+        for it in v.sheet.items
+        if isinstance(it, Polyline)
+        for pq in itertools.pairwise(it.points)
+    ]
     v.sheet.add(CircleItem(c, ring, "thin"))
-    u = (math.cos(math.radians(45.0)), -math.sin(math.radians(45.0)))
-    a = (c[0] + u[0] * ring, c[1] + u[1] * ring)
-    b = (a[0] + u[0] * DETAIL_LEADER_MM, a[1] + u[1] * DETAIL_LEADER_MM)
-    e = (b[0] + DETAIL_SHELF_MM, b[1])
-    v.sheet.add(Polyline((a, b, e), "thin"))
-    text_at(v.sheet, letter, (b[0] + 0.8, b[1] - 0.8), TITLE_H, role="label")
+    w = box(parse(letter), TITLE_H)[0]
+    best: tuple[int, tuple[tuple[float, float], ...], tuple[float, float]] | None = None
+    # up and to the right, else the first diagonal whose letter no line drawn runs through
+    # (review 7: the oscillator's coupler AB crossed its "Б")
+    for deg in (45.0, 135.0, -45.0, -135.0):
+        u = (math.cos(math.radians(deg)), -math.sin(math.radians(deg)))
+        a = (c[0] + u[0] * ring, c[1] + u[1] * ring)
+        b = (a[0] + u[0] * DETAIL_LEADER_MM, a[1] + u[1] * DETAIL_LEADER_MM)
+        e = (b[0] + math.copysign(DETAIL_SHELF_MM, u[0]), b[1])
+        at = (min(b[0], e[0]) + 0.8, b[1] - 0.8)
+        lbox = (at[0], at[1] - TITLE_H, at[0] + w, at[1] + 0.3 * TITLE_H)
+        hits = sum(_segment_to_box(p, q, lbox) <= 0.0 for p, q in segments)
+        if best is None or hits < best[0]:
+            best = (hits, (a, b, e), at)
+        if hits == 0:
+            break
+    assert best is not None
+    v.sheet.add(Polyline(best[1], "thin"))
+    text_at(v.sheet, letter, best[2], TITLE_H, role="label")
 
 
 class _CrankDetail(View):
