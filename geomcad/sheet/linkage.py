@@ -250,6 +250,7 @@ def _accel_positions(s: Solved) -> tuple[Position, ...]:
 def _trees(
     s: Solved, accel: Sequence[Position], h: float = TEXT_H, enlarge: bool = False,
     rules: tuple[bool, bool] = (False, False), apart: bool = False, balanced: bool = True,
+    k_v: float = 0.0, mech_k: float = 0.0,
 ) -> tuple[tuple[Tree, ...], _Mechanism, bool, dict[View, float]]:  # fmt: skip
     """The sheets' view trees (see the module's docstring), tables and orders written ``h``
     high, and the scales (model units per mm) the format is chosen to reach: the mechanism's
@@ -259,7 +260,11 @@ def _trees(
     its series that keeps it: a view's ``most_k``), its room missing counted as a cost.
     ``apart``: the velocity plans on a sheet of their own (as with more than
     :data:`PLANS_ON_SHEET` positions). ``balanced``: the output's s, v and a diagrams in boxes
-    of one height, else the search splits their column."""
+    of one height, else the search splits their column. ``k_v`` ((m/s)/mm, 0: none): the
+    velocity plans' scale on their own sheet, at which the velocity plan of an acceleration
+    plan's position that is not a numbered one is drawn beside it (one μ_V for a file's
+    velocity plans). ``mech_k`` (m/mm, 0: none): with the crank's detail, the scale the
+    mechanism reached without it, which its search still seeks."""
     lk = s.linkage
     n = len(s.drawn)
     second = apart or n > PLANS_ON_SHEET
@@ -292,7 +297,7 @@ def _trees(
         # a position of an acceleration plan that is not a numbered one: its velocity plan
         # beside its acceleration plan (every plan's position has both, linkages.md)
         vp = PlanView(P.vp, title=WORDS("vplan_detail", phi=_deg(P.phi, s)), group="v",
-                      weight=2.0, min_mm=SHORT_MM)  # fmt: skip
+                      weight=2.0, min_mm=SHORT_MM, least_k=k_v)  # fmt: skip
         cells.append(Row(vp, ap))
     aplans: Tree = Grid(*cells, title=WORDS("aplans"), group="a", title_height=TITLE_H)
     # s, v and a share the column's height (review 6: whitworth's s took 250 mm, v and a 60)
@@ -325,6 +330,8 @@ def _trees(
         wants[crank] = lk.length / CRANK_MM
     for view in vviews:  # one scale for them all: each needs its room at it
         wants[view] = abs(lk.omega) * lk.length / PA_MM
+    if crank is not None and mech_k > 0.0:
+        mech.most_k = mech_k  # the detail takes free room, not the mechanism's
     if rules[0]:
         cv: View = mech if crank is None else crank
         cv.most_k = round_scale_down(lk.length / CRANK_MM, "l", cv.series).k
@@ -401,10 +408,12 @@ def _arranged(s: Solved) -> tuple[Layout, tuple[Arranged, ...]]:
     fmts = sheet_formats(s.linkage)
     made: list[tuple[tuple[Tree, ...], _Mechanism, bool, dict[View, float]]] = []
     detail, rules, apart, balanced = False, (False, False), False, True
+    plans_k = 0.0  # the velocity plans' scale on their own sheet, once it is arranged
+    mech_k = 0.0  # the mechanism's finest scale without its crank's detail, once tried
 
     def make(i: int) -> Callable[[float], tuple[Tree, Mapping[View, float]]]:
         def tree(h: float) -> tuple[Tree, Mapping[View, float]]:
-            made.append(_trees(s, accel, h, detail, rules, apart, balanced))
+            made.append(_trees(s, accel, h, detail, rules, apart, balanced, plans_k, mech_k))
             t, _, _, wants = made[-1]
             return t[i], {v: k for v, k in wants.items() if v in _views(t[i])}
 
@@ -414,17 +423,31 @@ def _arranged(s: Solved) -> tuple[Layout, tuple[Arranged, ...]]:
         return next(m for m in made if any(t0 is t for t in (m[0][0], *_alternatives(m[0][0]))))
 
     def attempt() -> tuple[list[tuple[Tree, formats.Sized]], _Mechanism, bool]:
+        nonlocal plans_k
         made.clear()
+        plans_k, plans = 0.0, None
+        if apart or len(s.drawn) > PLANS_ON_SHEET:
+            # the velocity plans' own sheet first: a plan beside an acceleration plan on the
+            # first sheet takes its μ_V (review 7: the press's were drawn at μ_V = 0,004 with
+            # pa = 188 mm beside the plans sheet's 0,01)
+            plans = fit(make(1), fmts, True, rules[0])
+            plans_k = plans[1].layout.scale("v").k
         first = fit(make(0), fmts, readable=True, each=rules[0])
         trees_all, mech, second, _ = made_of(first[0])
-        fitted = [first] + [fit(make(i), fmts, True, rules[0]) for i in range(1, len(trees_all))]
+        fitted = [first] + ([plans] if plans is not None else [])
+        fitted += [fit(make(i), fmts, True, rules[0]) for i in range(len(fitted), len(trees_all))]
         return fitted, mech, second
 
     fitted, mech, second = attempt()
-    k_mech = fitted[0][1].layout[mech].scale
-    if k_mech is not None and k_mech.mm(s.linkage.length) < DETAIL_BELOW * CRANK_MM:
-        # the long links set the mechanism's scale and leave the crank short: the crank with
-        # its numbered positions enlarged beside it (ESKD 2.305's detail view)
+    k_first = _mech_k((fitted, mech, second))
+    if fitted[0][1].layout.fits and math.isfinite(k_first):
+        mech_k = k_first
+    if k_first * CRANK_MM * DETAIL_BELOW > s.linkage.length > 0.0 and not any(
+        _crank_may_keep(s, accel, fmts, sep) for sep in (False, True)
+    ):
+        # the long links set the mechanism's scale and leave the crank short, and no
+        # arrangement draws the mechanism at the crank's rule: the crank with its numbered
+        # positions enlarged beside it (ESKD 2.305's detail view)
         detail = True
         fitted, mech, second = attempt()
     if not _rules_hold(s, fitted):
@@ -435,14 +458,24 @@ def _arranged(s: Solved) -> tuple[Layout, tuple[Arranged, ...]]:
         # nearest to them (a pa of 39 mm with the crank at its rule beats the unruled
         # arrangement's crank of 16 mm and pa of 20 mm)
         rules = (True, True)
-        tries = dict.fromkeys(((detail, False), (detail, True), (True, False), (True, True)))
+        # the crank's rule at the mechanism's own scale first, on one sheet or with the
+        # velocity plans apart; its detail view only where neither holds it (review 7: the
+        # oscillator's mechanism at 1:4 beside a 1:1 detail)
+        tries = dict.fromkeys(((False, False), (False, True), (True, False), (True, True)))
         chosen = (detail, apart)
         near = _rules_share(s, fitted)
         for enlarge, sep in tries:
             if sep and len(s.drawn) > PLANS_ON_SHEET:
                 continue  # the plans are on their own sheet already
+            if not enlarge and not _crank_may_keep(s, accel, fmts, sep):
+                continue  # no arrangement draws the mechanism at the crank's rule: its detail
             detail, apart = enlarge, sep
             tried = attempt()
+            if not enlarge and tried[0][0][1].layout.fits and math.isfinite(_mech_k(tried)):
+                # the finest scale the mechanism reached without the detail: with it, the
+                # mechanism seeks that scale still (the detail takes free room, not the
+                # mechanism's)
+                mech_k = min(mech_k or math.inf, _mech_k(tried))
             if _rules_hold(s, tried[0]):
                 fitted, mech, second = tried
                 chosen = (detail, apart)
@@ -479,6 +512,18 @@ def _arranged(s: Solved) -> tuple[Layout, tuple[Arranged, ...]]:
     out = Layout(lays[0][mech].scale or Scale(1.0), k_v, lays[0].scale("a"), second, accel,
                  trees, mech, sized, balanced, squeezed)  # fmt: skip
     return out, lays
+
+
+def _crank_may_keep(s: Solved, accel: Sequence[Position], fmts: Sequence[str], apart: bool) -> bool:
+    """A necessary test before the search (:func:`geomcad.sheet.formats.may_reach`): whether
+    the first sheet, on the largest of ``fmts``, has room for the mechanism at the crank's
+    rule (:data:`CRANK_MM`) with the other views at their least sizes, without the crank's
+    detail view (a crusher's 0,9 m mechanism at 1:1 has none)."""
+    trees, mech, _, _ = _trees(s, accel, SMALL_TEXT_H, rules=(True, True), apart=apart)
+    k = round_scale_down(s.linkage.length / CRANK_MM, "l", mech.series).k
+    largest = max(fmts, key=lambda f: FORMATS[f][0] * FORMATS[f][1])
+    fmt, land = next(formats.candidates((largest,)))
+    return formats.may_reach(trees[0], {mech: k}, Field.of_format(fmt, land))
 
 
 def _mech_k(arranged: tuple[Sequence[tuple[Tree, formats.Sized]], View, bool]) -> float:
@@ -1050,10 +1095,12 @@ def _offset_arc(v: Viewport, g: Group, drawn: Sequence[Position]) -> None:
     )  # fmt: skip
 
 
-#: The crank is drawn enlarged on a detail view of its own where the mechanism's scale draws it
-#: shorter than this share of :data:`CRANK_MM`: the detail then shows it at least twice as large
-#: (a crank a little short of the rule is left to the mechanism's view: a detail at the next
-#: GOST scale would show nothing more).
+#: The crank is drawn enlarged on a detail view of its own at once where the mechanism's scale
+#: draws it shorter than this share of :data:`CRANK_MM` and no arrangement has room for the
+#: mechanism at the crank's rule (:func:`_crank_may_keep`): the detail then shows it at least
+#: twice as large. Otherwise the search seeks the rule at the mechanism's own scale first, the
+#: detail being the last resort; beside its detail the mechanism keeps the scale it reached
+#: without it (review 7: the oscillator's 1:2,5 became 1:4 beside its 1:1 detail).
 DETAIL_BELOW = 0.5
 #: The crank's detail: its box reaches this many crank lengths round the pivot …
 DETAIL_REACH = 1.9
@@ -1081,13 +1128,32 @@ def mark_detail(v: Viewport, pivot: Vec, r: float, letter: str) -> None:
     carrying the detail's ``letter``."""
     ring = v.mm(r) + DETAIL_RING_MM
     c = v.p(pivot)
+    segments = [
+        pq
+        for it in v.sheet.items
+        if isinstance(it, Polyline)
+        for pq in itertools.pairwise(it.points)
+    ]
     v.sheet.add(CircleItem(c, ring, "thin"))
-    u = (math.cos(math.radians(45.0)), -math.sin(math.radians(45.0)))
-    a = (c[0] + u[0] * ring, c[1] + u[1] * ring)
-    b = (a[0] + u[0] * DETAIL_LEADER_MM, a[1] + u[1] * DETAIL_LEADER_MM)
-    e = (b[0] + DETAIL_SHELF_MM, b[1])
-    v.sheet.add(Polyline((a, b, e), "thin"))
-    text_at(v.sheet, letter, (b[0] + 0.8, b[1] - 0.8), TITLE_H, role="label")
+    w = box(parse(letter), TITLE_H)[0]
+    best: tuple[int, tuple[tuple[float, float], ...], tuple[float, float]] | None = None
+    # up and to the right, else the first diagonal whose letter no line drawn runs through
+    # (review 7: the oscillator's coupler AB crossed its "Б")
+    for deg in (45.0, 135.0, -45.0, -135.0):
+        u = (math.cos(math.radians(deg)), -math.sin(math.radians(deg)))
+        a = (c[0] + u[0] * ring, c[1] + u[1] * ring)
+        b = (a[0] + u[0] * DETAIL_LEADER_MM, a[1] + u[1] * DETAIL_LEADER_MM)
+        e = (b[0] + math.copysign(DETAIL_SHELF_MM, u[0]), b[1])
+        at = (min(b[0], e[0]) + 0.8, b[1] - 0.8)
+        lbox = (at[0], at[1] - TITLE_H, at[0] + w, at[1] + 0.3 * TITLE_H)
+        hits = sum(_segment_to_box(p, q, lbox) <= 0.0 for p, q in segments)
+        if best is None or hits < best[0]:
+            best = (hits, (a, b, e), at)
+        if hits == 0:
+            break
+    assert best is not None
+    v.sheet.add(Polyline(best[1], "thin"))
+    text_at(v.sheet, letter, best[2], TITLE_H, role="label")
 
 
 class _CrankDetail(View):

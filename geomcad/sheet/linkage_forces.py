@@ -88,7 +88,7 @@ from geomcad.sheet.compose import (
 from geomcad.sheet.compose import _title_width as title_width
 from geomcad.sheet.drawing import SHORT_MM, Viewport
 from geomcad.sheet.frame import FORMATS, LEFT_MARGIN, MARGIN, reserved
-from geomcad.sheet.graph import Axis, Graph
+from geomcad.sheet.graph import ARROW_OVER, Axis, Graph
 from geomcad.sheet.insets import Insets
 from geomcad.sheet.lang import Words, current
 from geomcad.sheet.linkage import (
@@ -136,7 +136,8 @@ from geomcad.sheet.scale import (
     fmt_fixed,
 )
 from geomcad.sheet.scheme import draw_scheme
-from geomcad.sheet.text import wrap
+from geomcad.sheet.text import box as text_box
+from geomcad.sheet.text import parse, wrap
 from geomcad.sheet.views import (
     SLIVER_MM,
     AxisSpec,
@@ -2050,8 +2051,10 @@ class _Wittenbauer(View):
         # ab, the segment the tangents cut on the ΔT axis, is read in the heading: a label on
         # the axis itself would stand among its tick values
         ab = WORDS("ab", value=_num(a - b))
+        # at the box's top right, as a diagram's factors (review 7: at its top left it ran on
+        # from the title of the column beside it)
         d.text(f"{ay.factor_text(current())};  {ax.factor_text(current())};  {angles};  {ab}",
-               (x0, y0 + 3.0), 2.5)  # fmt: skip
+               (x1, y0 + 3.0), 2.5, anchor="right")  # fmt: skip
         gr = Graph(d, ax, ay, (x0 + self.LEFT, y0 + self.ABOVE + 6.0 + ay.mm(ay.hi - ay.zero)))
         gr.axes(current(), tick_labels=True)
         gr.curve(_thin(fw.dense.I_pr), _thin(fw.dA), "result")
@@ -2062,17 +2065,72 @@ class _Wittenbauer(View):
         for (yy, slope), (x, y), name in zip(((a, k_max), (b, k_min)), fw.touch,
                                              ("ω_{max}", "ω_{min}"), strict=True):  # fmt: skip
             x_end = min(i_hi, (ay.hi - yy) / slope) if slope > 0.0 else i_hi
+            x_end = _clear_of_axis_name(gr, yy, slope, x_end, x)
             if x_end > 0.0:
                 gr.curve([0.0, x_end], [yy, yy + slope * x_end], "construction")
                 d.label(gr.p(x_end, yy + slope * x_end), name, 2.5, prefer=(1.0, 0.0))
             gr.point(x, y)
 
 
+#: The height (mm) of an axis's symbol by its arrow (:meth:`geomcad.sheet.graph.Graph.axes`),
+#: and the room (mm) a line keeps from it.
+AXIS_NAME_H = 3.5
+NAME_CLEAR_MM = 1.0
+
+
+def _clear_of_axis_name(gr: Graph, y0: float, slope: float, x_end: float, touch: float) -> float:
+    """Where a tangent y = y0 + slope·x drawn from the ΔT axis ends (I_пр units): at ``x_end``,
+    or short of the I_пр axis's symbol by its arrow (written left of the tip, above the axis)
+    where it would run through it, never short of its touching point ``touch`` (review 7: the
+    yoke's ω_max tangent ran over "I_пр, кг·м²")."""
+    name = f"{gr.x.symbol}, {gr.x.unit}"
+    tip = gr.box[2] + ARROW_OVER
+    left = tip - text_box(parse(name), AXIS_NAME_H)[0] - 2.0 * NAME_CLEAR_MM
+    low, high = gr.at[1] + NAME_CLEAR_MM, gr.at[1] - AXIS_NAME_H - 2.0 * NAME_CLEAR_MM
+    end = gr.p(x_end, y0 + slope * x_end)
+    if end[0] <= left:
+        return x_end
+    x_left = gr.x.zero + (left - gr.at[0]) * gr.x.k
+    at_left = gr.p(x_left, y0 + slope * x_left)[1]
+    if max(at_left, end[1]) < high or min(at_left, end[1]) > low:
+        return x_end  # above or below the name all along
+    return max(x_left, touch)
+
+
+#: The ω1 diagram's y range beyond ω_min … ω_max, each side, as a share of it.
+OMEGA_PAD = 0.1
+
+
+class _Filled(Diagram):
+    """A diagram whose y axis (through no zero: ω1 about its mean) is drawn the height of its
+    box: its range widened about its middle to the whole room at the axis's factor (review 7:
+    tangent's ω1 drew 60 mm with 4 ticks in a taller box, its factor rounded coarse). The
+    layout's search sizes it by its curves, as any diagram (:meth:`used`)."""
+
+    filled = False
+
+    def axes(self, w: float, h: float) -> tuple[Axis, Axis]:
+        ax, ay = super().axes(w, h)
+        spare = max(h - self.BELOW - self.ABOVE, 1.0) * ay.k - (ay.hi - ay.lo)
+        if self.filled and spare > 0.0:
+            ay = replace(ay, lo=ay.lo - spare / 2.0, hi=ay.hi + spare / 2.0)
+        return ax, ay
+
+    def draw(self, d: Drawing, at: Placed) -> None:
+        self.filled = True
+        try:
+            super().draw(d, at)
+        finally:
+            self.filled = False
+
+
 def _omega(lk: Linkage, fw: Flywheel) -> Diagram:
     assert fw.omega_psi is not None and fw.omega_t is not None
     lo = float(min(fw.omega_t.min(), fw.omega_min))
     hi = float(max(fw.omega_t.max(), fw.omega_max))
-    pad = 0.25 * (hi - lo)
+    # room for ω_max's and ω_min's names over and under their lines; the axis then takes
+    # the rest of its box (:class:`_Filled`), so a wider pad would only coarsen its μ
+    pad = OMEGA_PAD * (hi - lo)
     delta = WORDS(
         "delta",
         given=_num(lk.dynamics.delta if lk.dynamics else 0.0, 3),
@@ -2083,7 +2141,7 @@ def _omega(lk: Linkage, fw: Flywheel) -> Diagram:
         Curve([0.0, 360.0], [fw.omega_max, fw.omega_max], "construction", label="ω_{max}"),
         Curve([0.0, 360.0], [fw.omega_min, fw.omega_min], "construction", label="ω_{min}"),
     ]
-    return Diagram(
+    return _Filled(
         AxisSpec("φ", WORDS("deg"), "φ", 0.0, 360.0, 60.0),
         AxisSpec("ω_1", WORDS("per_s"), "ω", lo - pad, hi + pad),
         curves,
