@@ -130,6 +130,7 @@ from geomcad.sheet.plans import markup_of
 from geomcad.sheet.scale import (
     ANGLE_PLACES,
     FIGURES,
+    GOST_RATIOS,
     Scale,
     angle_places,
     fmt_column,
@@ -370,13 +371,19 @@ def force_layout(s: Solved) -> tuple[Tree, formats.Sized]:
     """Sheet 2's tree and its format and arrangement (:func:`_compose2`; for the size rules'
     bench and the tests: the scales and the format without drawing)."""
     P, forces, k = force_position(s)
-    found = _compose2(s, P, forces, k, sheet_formats(s.linkage))
-    kin = True
-    if not found[1].layout.fits and sweep_mm(s, crank_scale(s.linkage).k) > SWEEP_MAX_MM:
-        # the kinematic sheet's μ_l keeps the sheet from fitting: the mechanism as large as
-        # the field draws it
-        kin = False
-        found = _compose2(s, P, forces, k, sheet_formats(s.linkage), kin=kin)
+    waived = sweep_mm(s, crank_scale(s.linkage).k) > SWEEP_MAX_MM
+    # where the sweep waives the crank's length, the mechanism sought at the kinematic sheet's μ_l
+    kin: float | None = kinematic_scale(s).k if waived else None
+    found = _compose2(s, P, forces, k, sheet_formats(s.linkage), kin=kin)
+    if not found[1].layout.fits and kin is not None:
+        # the kinematic sheet's μ_l keeps the sheet from fitting: the next coarser GOST steps
+        # one by one, then the mechanism as large as the field draws it (a kinematic sheet at
+        # 1:4 beside a forces sheet at 1:5, not at 1:10)
+        for step in (*_coarser(kin), None):
+            kin = step
+            found = _compose2(s, P, forces, k, sheet_formats(s.linkage), kin=kin)
+            if found[1].layout.fits:
+                break
     if not _crank_kept(found[1].layout):
         found = _held(s, P, forces, k, found, kin)
     lay = found[1].layout
@@ -410,7 +417,7 @@ def force_layout(s: Solved) -> tuple[Tree, formats.Sized]:
 
 def _held(
     s: Solved, P: Position, f: Forces, k: int | None, found: tuple[Tree, formats.Sized],
-    kin: bool,
+    kin: float | None,
 ) -> tuple[Tree, formats.Sized]:  # fmt: skip
     """Where the search left the mechanism's crank shorter than its rule (the layout's score
     trades it against the plans' seek, :data:`PLAN_SEEK_MM`): the crank's length as a
@@ -467,7 +474,7 @@ def _crank_shortfall(lay: Layout) -> float:
 
 
 def _compose2(
-    s: Solved, P: Position, f: Forces, k: int | None, fmts: Sequence[str], kin: bool = True
+    s: Solved, P: Position, f: Forces, k: int | None, fmts: Sequence[str], kin: float | None = None
 ) -> tuple[Tree, formats.Sized]:
     """Sheet 2's tree and its format and arrangement.
 
@@ -556,7 +563,7 @@ def _compose2(
 
 def _final2(
     s: Solved, P: Position, f: Forces, k: int | None, z: formats.Sized, shared: bool,
-    largest: str, kin: bool = True, crank_own: bool = False, under: bool = False,
+    largest: str, kin: float | None = None, crank_own: bool = False, under: bool = False,
     weight: float = 1.0,
 ) -> tuple[tuple[Tree, formats.Sized], bool]:  # fmt: skip
     """Sheet 2 on the format of ``z`` with its polygons' details reckoned at the μ_F each got
@@ -718,7 +725,7 @@ def _as_loads(
 def _sheet2(
     s: Solved, P: Position, f: Forces, k: int | None, h: float,
     refs: Mapping[str, tuple[float, tuple[float, float]]] | None = None, shared: bool = True,
-    kin: bool = True, crank_own: bool = False, under: bool = False, weight: float = 1.0,
+    kin: float | None = None, crank_own: bool = False, under: bool = False, weight: float = 1.0,
 ) -> tuple[Tree, dict[View, float]]:  # fmt: skip
     """Sheet 2's tree, its tables and texts ``h`` high, and the scales its views want. The
     force polygons are drawn with their details where ``refs`` gives their reference μ_F and
@@ -747,10 +754,10 @@ def _sheet2(
     if sweep_mm(s, crank_scale(lk).k) <= SWEEP_MAX_MM:
         mech.readable, mech.readable_mm = weight * lk.length, weight * CRANK_MM
     else:
-        if kin:
+        if kin is not None:
             # the sweep waives the crank's length: the mechanism no coarser than the kinematic
             # sheet draws it, where the format allows it (review 5: a crusher at 1:15 beside 1:5)
-            mech.readable, mech.readable_mm = lk.length, lk.length / kinematic_scale(s).k
+            mech.readable, mech.readable_mm = lk.length, lk.length / kin
         # the crank may come out short on it: its detail's letter, the first of the sheet's
         mech.detail = next(letters)
     bodies = [_FreeBody(lk, P, gf) for gf in f.groups]
@@ -915,6 +922,15 @@ def links_scale(s: Solved) -> Scale:
     fits = [k for k in GOST_K if big / k <= SWEEP_MM * (1.0 + tol.REL_LENGTH)]
     sweep = min(fits) if fits else max(GOST_K)
     return Scale(min(crank_scale(s.linkage).k, sweep), "l")
+
+
+def _coarser(k: float) -> tuple[float, ...]:
+    """The GOST 2.302 reductions coarser than ``k`` (m/mm), the nearest first."""
+    return tuple(
+        float(1 / r) / 1000.0
+        for r in reversed(GOST_RATIOS)
+        if float(1 / r) / 1000.0 > k * (1.0 + tol.DERIVED)
+    )
 
 
 def kinematic_scale(s: Solved) -> Scale:
