@@ -728,6 +728,14 @@ def link_bodies(
                 out[str(link)] = [Body.of([foot, foot + d * far])]
             else:
                 out[str(link)] = [Body.of([C, foot, foot + d * far])]
+            # a point the slot does not pass through (an arm beyond the pivot, a point beside
+            # the slot: review 8, a rocking cylinder's arm CE drawn nowhere, its E hanging
+            # free) joined to the pivot by an arm of the same link
+            for q in uniq:
+                along = (q - foot).dot(d)
+                on = abs(d.cross(q - foot)) <= tol.DERIVED * max(1.0, q.norm)
+                if q.dist(C) > tol.DERIVED * max(1.0, q.norm) and not (on and 0.0 <= along <= far):
+                    out[str(link)].append(Body.of([C, q]))
         elif len(uniq) == 2:
             out[str(link)] = [Body.of(uniq)]
         elif len(uniq) > 2 and axes:
