@@ -1,5 +1,5 @@
-"""A slotted link (the RPR group's rocker) is drawn through every point it carries: an arm
-beyond its pivot or beside its slot is joined to the pivot (review 8: a rocking cylinder's arm
+"""A slotted link (the RPR group's rocker) is drawn through every point it carries: a point
+beyond its pivot is joined to the pivot by an arm (review 8: a rocking cylinder's arm
 CE, beyond the pivot C, was drawn nowhere, its E and link 4 hanging free; a second slotted
 lever's centre of mass S5 beyond its pivot floated detached)."""
 

@@ -728,13 +728,12 @@ def link_bodies(
                 out[str(link)] = [Body.of([foot, foot + d * far])]
             else:
                 out[str(link)] = [Body.of([C, foot, foot + d * far])]
-            # a point the slot does not pass through (an arm beyond the pivot, a point beside
-            # the slot: review 8, a rocking cylinder's arm CE drawn nowhere, its E hanging
-            # free) joined to the pivot by an arm of the same link
-            for q in uniq:
-                along = (q - foot).dot(d)
-                on = abs(d.cross(q - foot)) <= tol.DERIVED * max(1.0, q.norm)
-                if q.dist(C) > tol.DERIVED * max(1.0, q.norm) and not (on and 0.0 <= along <= far):
+            # a point beyond the pivot (an arm the slot does not reach: review 8, a rocking
+            # cylinder's arm CE drawn nowhere, its E hanging free) joined to the pivot by an arm
+            # of the same link; in a thin position only where another link hangs on it
+            for n in lk.points_on(link):
+                q = P.pos[n]
+                if (q - C).dot(d) < -tol.DERIVED * max(1.0, q.norm) and not (axes and n in lone):
                     out[str(link)].append(Body.of([C, q]))
         elif len(uniq) == 2:
             out[str(link)] = [Body.of(uniq)]
