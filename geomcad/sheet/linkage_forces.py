@@ -130,7 +130,6 @@ from geomcad.sheet.plans import markup_of
 from geomcad.sheet.scale import (
     ANGLE_PLACES,
     FIGURES,
-    GOST_RATIOS,
     Scale,
     angle_places,
     fmt_column,
@@ -926,11 +925,7 @@ def links_scale(s: Solved) -> Scale:
 
 def _coarser(k: float) -> tuple[float, ...]:
     """The GOST 2.302 reductions coarser than ``k`` (m/mm), the nearest first."""
-    return tuple(
-        float(1 / r) / 1000.0
-        for r in reversed(GOST_RATIOS)
-        if float(1 / r) / 1000.0 > k * (1.0 + tol.DERIVED)
-    )
+    return tuple(g for g in GOST_K if g > k * (1.0 + tol.DERIVED))
 
 
 def kinematic_scale(s: Solved) -> Scale:
