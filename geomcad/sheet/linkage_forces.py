@@ -458,10 +458,7 @@ def _whole(lay: Layout) -> bool:
 def _crank_short(lay: Layout) -> bool:
     """Whether ``lay`` draws the crank cut out shorter than
     :data:`~geomcad.sheet.linkage.CRANK_MM`."""
-    return any(isinstance(pl.view, _FreeBody) and pl.view.gf.group is None
-               and pl.scale is not None
-               and pl.view.lk.length / pl.scale.k < CRANK_MM * (1.0 - tol.REL_LENGTH)
-               for pl in lay)  # fmt: skip
+    return _crank_shortfall(lay) > CRANK_MM * tol.REL_LENGTH
 
 
 def _crank_shortfall(lay: Layout) -> float:
