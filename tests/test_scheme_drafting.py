@@ -64,16 +64,21 @@ def test_every_moving_joint_is_numbered_in_every_position(name: str) -> None:
 
 
 def test_a_coupler_triangle_is_whole_in_the_principal_position_only() -> None:
-    """The coupler ABK (a group hung on K): the thin positions draw its side AB alone, the
-    principal one the whole triangle (twelve triangles once wove a web)."""
+    """The coupler ABK (a group hung on K): the thin positions draw its side AB and an arm to K
+    from the nearer of A and B (review 9: link 4 hung on free points K), the principal one the
+    whole triangle (twelve triangles once wove a web)."""
     s = _solved("coupler_slider")
     lk = s.linkage
+
+    def at(*names: str) -> set[tuple[float, float]]:
+        return {(round(P.pos[n].x, 12), round(P.pos[n].y, 12)) for n in names}
+
     for P in s.drawn:
-        (thin,) = link_bodies(lk, P, axes=True)["2"]
-        assert len(thin.points) == 2 and not thin.closed
-        assert {(round(q.x, 12), round(q.y, 12)) for q in thin.points} == {
-            (round(P.pos[n].x, 12), round(P.pos[n].y, 12)) for n in ("A", "B")
-        }
+        side, arm = link_bodies(lk, P, axes=True)["2"]
+        assert len(side.points) == 2 and not side.closed and len(arm.points) == 2
+        assert {(round(q.x, 12), round(q.y, 12)) for q in side.points} == at("A", "B")
+        near = min("AB", key=lambda n: P.pos[n].dist(P.pos["K"]))
+        assert {(round(q.x, 12), round(q.y, 12)) for q in arm.points} == at(near, "K")
         (whole,) = link_bodies(lk, P)["2"]
         assert whole.closed and len(whole.points) == 3
 

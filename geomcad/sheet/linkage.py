@@ -683,6 +683,37 @@ _SAME = tol.SAME_PLACE
 SLOT_PAST = 1.15
 
 
+#: A point no other link carries (a centre of mass) is a corner of its link's outline where it lies
+#: farther than this fraction of the link's size outside the outline of the link's joints; nearer,
+#: it is drawn as its dot on the link (a crosshead's centre of mass 1.5 % off its arm was a kink).
+PLATE_NEAR = 0.05
+
+
+def _plate_corners(joints: Sequence[Vec], aside: Sequence[Vec]) -> list[Vec]:
+    """Those of ``aside`` that lie farther than PLATE_NEAR of the joints' size outside the convex
+    outline of ``joints`` (shapely's convex hull: a segment for two joints)."""
+    from shapely.geometry import MultiPoint, Point
+
+    if len(joints) < 2:
+        return list(aside)
+    size = max(a.dist(b) for a, b in itertools.combinations(joints, 2))
+    hull = MultiPoint([(q.x, q.y) for q in joints]).convex_hull
+    out: list[Vec] = []
+    for q in aside:
+        far = hull.distance(Point(q.x, q.y)) > PLATE_NEAR * size
+        if far and not any(q.dist(u) <= tol.DERIVED * max(1.0, q.norm) for u in out):
+            out.append(q)
+    return out
+
+
+def _off_segment(q: Vec, a: Vec, b: Vec) -> float:
+    """The distance (model units) from ``q`` to the segment ``ab``."""
+    d = b - a
+    dd = d.dot(d)
+    t = 0.0 if dd == 0.0 else max(0.0, min(1.0, (q - a).dot(d) / dd))
+    return (a + d * t - q).norm
+
+
 def link_bodies(
     lk: Linkage, P: Position, links: Sequence[int] | None = None, slot_half: float = 0.0,
     axes: bool = False,
@@ -698,29 +729,39 @@ def link_bodies(
     position's drawing, where the coupler's triangle in every position would weave a web (the
     points' paths and numbers show it); an offset slot without its arm from the pivot (the arms of
     every position would melt into one blot at the pivot: the slots touch the offset's
-    circle, drawn once)."""
+    circle, drawn once); a joint beyond the first two (a bell-crank's arm CE that link 4 hangs
+    on) joined to the nearer of them by an arm. In the main position a point no other link
+    carries (a centre of mass, a traced point) is a corner of the link's outline only where it
+    lies farther than PLATE_NEAR of the link's size outside the outline of its joints (review 9:
+    a bell-crank drawn C–S3–E with its centre of mass a corner; a coupler A–S2–B–M)."""
     out: dict[str, list[Body]] = {}
     carried: dict[str, int] = {}
-    if axes:
-        for link in lk.moving_links:
-            for n in lk.points_on(link):
-                carried[n] = carried.get(n, 0) + 1
+    for link in lk.moving_links:
+        for n in lk.points_on(link):
+            carried[n] = carried.get(n, 0) + 1
     lone = {p.name for p in lk.points if carried.get(p.name, 0) == 1}
     for link in lk.moving_links if links is None else links:
         uniq: list[Vec] = []
+        aside: list[Vec] = []
         for n in lk.points_on(link):
-            if n in lone and len([m for m in lk.points_on(link) if m not in lone]) >= 2:
-                continue
             q = P.pos[n]
+            if n in lone and len([m for m in lk.points_on(link) if m not in lone]) >= 2:
+                aside.append(q)
+                continue
             if not any(q.dist(u) <= tol.DERIVED * max(1.0, q.norm) for u in uniq):
                 uniq.append(q)
+        if not axes and aside:
+            uniq += _plate_corners(uniq, aside)
         g = lk.group_of(link)
         if g is not None and g.kind == "RPR" and link == g.links[1]:
             d = P.slide[link]
             C = P.pos[g.pivot]
             # to the farthest of its points, or a little past the block where the block is
             # farther (a slot runs on past its block; a link ends at its last joint)
-            far = max([(q - C).dot(d) for q in uniq] + [(P.pos[g.slider] - C).dot(d) * SLOT_PAST])
+            far = max(
+                [(P.pos[n] - C).dot(d) for n in lk.points_on(link)]
+                + [(P.pos[g.slider] - C).dot(d) * SLOT_PAST]
+            )
             foot = C + d.perp() * g.offset
             if not g.offset:
                 out[str(link)] = [Body.of([C, C + d * far])]
@@ -747,7 +788,10 @@ def link_bodies(
                 ends = sorted(uniq, key=lambda q: u.dot(q - uniq[0]))
                 out[str(link)] = [Body.of([ends[0], ends[-1]])]
             else:
-                out[str(link)] = [Body.of(uniq[:2])]
+                # every further joint on an arm from the nearer of the two (review 9: a
+                # bell-crank's E, link 4 hung on it, drawn free of its C in every thin position)
+                arms = [Body.of([min(uniq[:2], key=q.dist), q]) for q in uniq[2:]]
+                out[str(link)] = [Body.of(uniq[:2]), *arms]
         elif len(uniq) > 2:
             cx = sum(q.x for q in uniq) / len(uniq)
             cy = sum(q.y for q in uniq) / len(uniq)
@@ -768,7 +812,17 @@ def link_bodies(
             else:
                 slot = Body.of([E - u * yk.slot, E + u * yk.slot])
                 rod = Body.of([E, E + d * yk.rod])
-            out[str(link)] = [rod, slot, *(out.get(str(link), []) if len(uniq) > 2 else [])]
+            # the yoke's own outline where it reaches a point off its rod and slot (a crosshead's
+            # arm to the joint F a rocker hangs on: review 9, drawn nowhere in the thin positions)
+            off = any(
+                min(
+                    _off_segment(q, E - u * yk.slot, E + u * yk.slot),
+                    _off_segment(q, E, E + d * yk.rod),
+                )
+                > tol.DERIVED * max(1.0, q.norm)
+                for q in uniq
+            )
+            out[str(link)] = [rod, slot, *(out.get(str(link), []) if off else [])]
         # a guide on this link runs on to the slider it carries
         for g2 in lk.groups:
             gd = g2.guide
