@@ -1424,7 +1424,7 @@ class Polygon(View):
 
 #: The μ_F a plan may be drawn at, as a multiple of its reference μ_F, whose details'
 #: vectors too short to draw reserve their line under its caption (:meth:`Polygon._lists`) …
-LIST_SPAN = 4.0
+LIST_SPAN = 8.0
 #: … tried factor by factor of the series (the next above k(1 + NICE_STEP)).
 NICE_STEP = 0.01
 #: The height (mm) of the line under a polygon's caption that names the vectors left out.
