@@ -137,6 +137,25 @@ def test_details_are_one_level_at_one_scale_beside_the_polygon() -> None:
     assert not any(", " in letters for _, _, letters in spots)
 
 
+def test_runs_at_one_spot_of_the_plan_are_one_detail_with_one_letter() -> None:
+    """Two runs of short vectors whose circles on the plan would overlap (a long vector
+    between them barely two arrowheads long) are one detail, the vector between them
+    included, lettered with one letter (review 7: one circle lettered "П1, Ш1, Э1"); runs
+    far apart stay two details at one μ_F."""
+    from geomcad.sheet.views import short_runs
+
+    k = 50.0
+    for between, spots in ((360.0, 1), (1500.0, 2)):
+        vs = chain([5000.0, 340.0, between, 340.0, 3000.0], ["F0", "F1", "F2", "F3", "F4"])
+        vs.append(PlanVector("R", vs[-1].head, Vec(0.0, 0.0)))
+        poly = ForcePolygon(Vec(0.0, 0.0), tuple(vs), ())
+        assert short_runs(poly.vectors, SHORT_MM * k) == [["F1"], ["F3"]]
+        details = plan_details(poly, k, iter("БГД"))
+        assert len(details) == spots and len({dt.k for dt in details}) == 1
+        if spots == 1:
+            assert details[0].run == ("F1", "F2", "F3") and details[0].letter == "Б"
+
+
 def test_a_negligible_vector_is_named_under_the_caption_not_detailed() -> None:
     """A plan's vector under NEGLIGIBLE of its largest would need a detail at an absurd μ_F
     (the review's 0.025 N/mm): it is in no detail, not drawn, and named on a line under the
