@@ -453,7 +453,7 @@ def test_cam_order_of_construction_is_the_recorded_steps(name: str) -> None:
 
 
 def test_every_design_file_is_its_own_document() -> None:
-    """The designation (графа 2) from the file's name (its letters and digits, as a code),
+    """The designation (графа 2) from the file's name (its first words whole, as a code),
     one per file, in either language."""
     from geomcad.files import cam_sheets as sheets_cam
     from geomcad.files import code
@@ -469,7 +469,7 @@ def test_every_design_file_is_its_own_document() -> None:
                 for n in ALL
             }
         assert len(set(got.values())) == len(ALL)
-        assert all(code(n) in d and "-" not in d.split(".")[1] for n, d in got.items())
+        assert all(d.split(".")[1] == code(n) for n, d in got.items())
 
 
 def test_planetary_plan_is_projected_from_the_scheme() -> None:

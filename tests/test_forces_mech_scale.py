@@ -25,16 +25,21 @@ def _solved(crank: str) -> Solved:
     return solve(parse(tomllib.loads(text)))
 
 
-@pytest.mark.parametrize("crank", ["0.04", "0.03"])
-def test_waived_mechanism_no_coarser_than_kinematic(crank: str) -> None:
-    s = _solved(crank)
-    # the case the rule is for: the crank CRANK_MM long would make the sweep too large
+def _scales(s: Solved) -> tuple[float, float]:
+    """The kinematic sheet's μ_l and the forces sheet's mechanism's, where the sweep waives the
+    crank's length (the case the rule is for: the crank CRANK_MM long would make the sweep too
+    large) and the forces sheet fits."""
     assert F.sweep_mm(s, F.crank_scale(s.linkage).k) > F.SWEEP_MAX_MM
-    k_kin = layout(s).k_l.k
     _tree, z = F.force_layout(s)
     assert z.layout.fits
     (k_mech,) = [pl.scale.k for pl in z.layout
                  if isinstance(pl.view, F._Loaded) and pl.scale is not None]  # fmt: skip
+    return layout(s).k_l.k, k_mech
+
+
+@pytest.mark.parametrize("crank", ["0.04"])
+def test_waived_mechanism_no_coarser_than_kinematic(crank: str) -> None:
+    k_kin, k_mech = _scales(_solved(crank))
     assert k_mech <= k_kin * (1.0 + 1e-9), (k_mech, k_kin)
 
 
@@ -45,3 +50,18 @@ def test_waived_mechanism_fits_where_the_kinematic_scale_does_not() -> None:
     assert F.sweep_mm(s, F.crank_scale(s.linkage).k) > F.SWEEP_MAX_MM
     _tree, z = F.force_layout(s)
     assert z.layout.fits
+
+
+def test_waived_mechanism_at_the_nearest_step_the_format_allows() -> None:
+    """A 0.03 m crank: the kinematic sheet keeps its mechanism at 1:4 beside its crank's detail,
+    where the forces sheet's A1 holds no 1:4 (nor 1:5): the forces sheet's mechanism is at the
+    nearest coarser GOST step that fits, never the field's own search past a step that fits."""
+    s = _solved("0.03")
+    k_kin, k_mech = _scales(s)
+    P, forces, k = F.force_position(s)
+    tried = [k_kin, *F._coarser(k_kin)]
+    finer = [step for step in tried if step < k_mech * (1.0 - 1e-9)]
+    for step in finer:  # every step between the kinematic's and the drawn one: no room on A1
+        assert not F._compose2(s, P, forces, k, F.sheet_formats(s.linkage), kin=step)[1].layout.fits
+    fitting = F._compose2(s, P, forces, k, F.sheet_formats(s.linkage), kin=k_mech)
+    assert fitting[1].layout.fits, k_mech

@@ -73,7 +73,9 @@ BASELINE: dict[tuple[str, str], dict[str, int]] = {
     # the inset of G₃ round C, on the mechanism and on group (2, 3), sets C's letter 9 mm off;
     # review 6 item 5: group (4, 5) drawn at the mechanism's 1:2.5 (was 1:4) has the
     # mechanism's crowded slider D, its 4, D and 5 at 7 mm as on the mechanism (7 -> 8)
-    ("linkage-shaper", "forces"): {"anchor": 8, "empty": 1},
+    # review 7 item 2: an inset's arrows from 5 mm (a head and a shaft), none longer than the
+    # view's shortest: G_5 in group (4, 5)'s inset at 40 N/mm is 6.1 mm
+    ("linkage-shaper", "forces"): {"anchor": 8, "empty": 1, "short-vector": 1},
     ("linkage-shaper", "dynamics"): {"empty": 1},
     # the twelve numbered positions drawn beside the file's phi: B's labels crowd near the
     # rocker's extreme (7 … 11 mm)

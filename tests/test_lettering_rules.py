@@ -16,7 +16,7 @@ from geomcad.files import CODE_CHARS, code
 from geomcad.geom import Vec
 from geomcad.sheet import Scale, TitleBlock, start
 from geomcad.sheet.drawing import Drawing
-from geomcad.sheet.frame import CELL_LEAD, clearance, fit_text, new_sheet
+from geomcad.sheet.frame import CELL_LEAD, clearance, fill_title_blocks, fit_text, new_sheet
 from geomcad.sheet.linkage import SHARE_MM, position_numbers
 from geomcad.sheet.scale import fmt_column, fmt_number
 from geomcad.sheet.text import box, parse
@@ -104,35 +104,61 @@ def test_a_tables_heading_is_wrapped_to_its_width() -> None:
 @pytest.mark.parametrize(
     ("stem", "expected"),
     [
-        ("sixbar_press", "SIXBARPRESS"),
+        ("sixbar_press", "SIXBAR-PRESS"),
         ("shaper", "SHAPER"),
-        ("sixbar-2013-6", "SIXBAR20136"),
-        # review 6: initials (TRS, WQR) did not read back to the file; each word's first
-        # letters do, as many as the 12 characters of графа 26 at 5 mm hold
-        ("synthesis-slider-crank", "SYNTSLIDCRAN"),
-        ("synthesis-slotted-lever", "SYNTSLOTLEVE"),
-        ("tangent_rocking_slider", "TANGROCKSLID"),
-        ("whitworth_quick_return", "WHITQUICRETU"),
-        ("kulisa-23110713", "KULI23110713"),
-        ("myCrankRockerWithPoint", "MYCRAROCWIPO"),
+        ("sixbar-2013-6", "SIXBAR-2013-6"),
+        # review 7: a syllable code (TANGROCKSLID, YOKPUMDOUSLI) did not read back to the file;
+        # whole words do, cut at a word's end, as many as графа 26 holds
+        ("synthesis-slider-crank", "SYNTHESIS-SLIDER"),
+        ("synthesis-slotted-lever", "SYNTHESIS-SLOTTED"),
+        ("tangent_rocking_slider", "TANGENT-ROCKING"),
+        ("yoke_pump_double_slider", "YOKE-PUMP-DOUBLE"),
+        ("whitworth_quick_return", "WHITWORTH-QUICK"),
+        ("kulisa-23110713", "KULISA-23110713"),
+        ("myCrankRockerWithPoint", "MY-CRANK-ROCKER"),
+        ("supercalifragilisticexpialidocious", "SUPERCALIFRAGILIS"),
     ],
 )
 def test_a_default_code_reads_as_a_code(stem: str, expected: str) -> None:
     assert code(f"dir/{stem}.toml") == expected
 
 
+STEMS = [
+    "synthesis-slider-crank",
+    "synthesis-slotted-lever",
+    "synthesis-crank-rocker",
+    "cam-rocking-roller",
+    "cam-translating-roller",
+    "press_offset_long_rod",
+    "sixbar_oscillator",
+    "v_compressor",
+    "кулиса_с_ползуном",
+]
+
+
 def test_default_codes_stay_apart_where_a_cut_would_not() -> None:
-    stems = [
-        "synthesis-slider-crank",
-        "synthesis-slotted-lever",
-        "synthesis-crank-rocker",
-        "cam-rocking-roller",
-        "cam-translating-roller",
-    ]
-    codes = [code(s + ".toml") for s in stems]
-    assert len(set(codes)) == len(stems)
-    assert all(re.fullmatch(rf"[A-Z0-9]{{1,{CODE_CHARS}}}", c) for c in codes)
-    assert len({s[:CODE_CHARS].upper() for s in stems}) < len(stems)  # the old cut collided
+    codes = [code(s + ".toml") for s in STEMS]
+    assert len(set(codes)) == len(STEMS)
+    assert all(re.fullmatch(rf"[A-ZА-ЯЁ0-9-]{{1,{CODE_CHARS}}}", c) for c in codes)
+
+
+@pytest.mark.parametrize("stem", STEMS)
+def test_a_default_code_is_the_stems_first_words_whole(stem: str) -> None:
+    """Each word of the code is a whole word of the stem, in the stem's order from its first:
+    the code is cut at a word's end, never inside a word."""
+    words = re.findall(r"\d+|[^\W\d_]+", stem.upper())
+    got = code(stem + ".toml").split("-")
+    assert got == words[: len(got)]
+
+
+@pytest.mark.parametrize("letter", ["W", "Ш", "M"])
+def test_the_longest_default_designation_fits_графа_2_and_26(letter: str) -> None:
+    """The widest letters, :data:`CODE_CHARS` of them, still fit both cells (at a GOST
+    height), so a default designation never refuses to draw."""
+    designation = f"ТММ.{code(letter * 40)}.05"  # the kinds' template, its widest sheet number
+    sheet, _ = new_sheet("A3", TitleBlock(title="x", designation=designation, scale="1:1"))
+    fill_title_blocks([sheet])
+    assert sum(t.text == designation for t in sheet.texts()) == 2
 
 
 def _numbers(sheet_texts: list[str]) -> list[int]:

@@ -20,7 +20,7 @@ import pytest
 
 from geomcad.linkage import parse
 from geomcad.linkage.solution import solve
-from geomcad.sheet.drawing import SHORT_MM
+from geomcad.sheet.loads import VIEW_SHORT_MM
 from geomcad.sheet.model import TextItem
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -138,8 +138,8 @@ def test_each_view_draws_its_forces_at_one_scale(
         # and one μ_F: the drawn length is the force over the view's one factor
         ks = {r["F"] / r["mm"] for r in arrows}
         assert max(ks) <= min(ks) * (1.0 + 1e-6), sorted(ks)
-    # no arrow under two arrowheads
-    assert min(r["mm"] for r in rec) >= SHORT_MM * (1.0 - 1e-6)
+    # no arrow under VIEW_SHORT_MM (a head and a shaft that shows its direction)
+    assert min(r["mm"] for r in rec) >= VIEW_SHORT_MM * (1.0 - 1e-6)
     # every μ_F drawn is stated on the sheet: "μ_F = 2,5 Н/мм"
     text_all = " ".join("".join(run.text for run in it.runs) for it in sheet.items
                         if isinstance(it, TextItem))  # fmt: skip
@@ -162,8 +162,8 @@ def test_each_view_draws_its_forces_at_one_scale(
 def test_view_scales_one_for_the_view_the_short_ones_in_insets(
     forces: list[float], room: float
 ) -> None:
-    from geomcad.sheet.loads import INSET_MM, TIER_LIMIT, VIEW_NEGLIGIBLE, view_scales
-    from geomcad.sheet.scale import nice_below, nice_factor
+    from geomcad.sheet.loads import INSET_CAP_MM, view_scales
+    from geomcad.sheet.scale import nice_factor
 
     fs = view_scales([*forces, 1e-14], room)
     big = max(forces)
@@ -171,36 +171,24 @@ def test_view_scales_one_for_the_view_the_short_ones_in_insets(
     assert fs.tier(1e-14) is None  # round-off of a zero force
     # the view's μ_F and at most ONE more, that of all its insets (issue 27, review 6 item 4)
     assert len(fs.scales) <= 2
-    inset = max(INSET_MM, TIER_LIMIT * room)
-    drawn: list[float] = []
-    named: list[float] = []
-    for F in forces:
-        t = fs.tier(F)
-        if t is None:
-            named.append(F)
-            assert F / fs.k < SHORT_MM  # never one the view itself could draw
-            # under the view's threshold, which it states: the share under the caption
-            assert fs.limit * big * (1.0 + 1e-9) >= F
-            continue
-        # at the view's μ_F exactly where it is long enough there, else at the insets' one
-        assert (t == 0) == (F / fs.k >= SHORT_MM * (1.0 - 1e-9))
-        mm = F / fs.scales[t].k
-        assert mm >= SHORT_MM * (1.0 - 1e-9)
-        assert t == 0 or mm <= inset * (1.0 + 1e-9)
-        drawn.append(F)
-    # a force left out is smaller than every force drawn
-    assert all(F < G for F in named for G in drawn)
-    assert all(VIEW_NEGLIGIBLE * big >= F for F in named) or fs.tiered
+    own = [F for F in forces if fs.tier(F) == 0]
+    ins = [F for F in forces if fs.tier(F) == 1]
+    named = [F for F in forces if fs.tier(F) is None]
+    for F in own:
+        assert F / fs.k >= VIEW_SHORT_MM * (1.0 - 1e-9)
+    # a force left out is smaller than every force drawn, and under the share stated
+    assert all(F < G for F in named for G in own + ins)
+    assert all(fs.limit * big * (1.0 + 1e-9) >= F for F in named)
+    # every force too short at the view's μ_F is in an inset or named (review 7 item 2)
+    assert all(F in ins + named for F in forces if F / fs.k < VIEW_SHORT_MM * (1.0 - 1e-9))
     if fs.tiered:
         k2 = fs.scales[1].k
-        short = [F for F in forces if VIEW_NEGLIGIBLE * big < F and F / fs.k < SHORT_MM]
-        # the coarsest that draws every short force long enough, where that keeps the
-        # largest in the insets' room; else the finest that keeps it there
-        assert max(short) / k2 <= inset * (1.0 + 1e-9)
-        if named:  # the finest that keeps the largest in the room
-            assert k2 == nice_factor(max(short), inset, "F").k
-        else:  # the coarsest that draws the smallest long enough
-            assert k2 == nice_below(min(short), SHORT_MM).k
+        cap = min(min(own) / fs.k, INSET_CAP_MM)
+        # each inset arrow at least VIEW_SHORT_MM, none longer than the view's shortest
+        assert all(F / k2 >= VIEW_SHORT_MM * (1.0 - 1e-9) for F in ins)
+        assert max(ins) / k2 <= cap * (1.0 + 1e-9)
+        # the finest step that keeps the longest within that: it draws as many as it can
+        assert k2 == nice_factor(max(ins), cap, "F").k
         assert all(a.k > b.k for a, b in itertools.pairwise(fs.scales))  # coarse to fine
 
 
@@ -220,16 +208,17 @@ def test_insets_set_same_line_forces_side_by_side_and_never_tail_to_tail() -> No
 
 def test_view_scales_never_leave_out_a_kept_force() -> None:
     """A free body's reactions are never named: the insets' μ_F draws the smallest one at
-    least two arrowheads long even where that draws a larger short force past their room (a
-    compressor's group: R_05 = 201 N beside Ф_5 = 1219 N and F_D = 4124 N)."""
-    from geomcad.sheet.loads import view_scales
+    least VIEW_SHORT_MM long even where that draws a larger short force past the view's
+    shortest arrow (R_05 = 201 N beside F = 420 N, Ф_5 = 1219 N and F_D = 4124 N)."""
+    from geomcad.sheet.loads import VIEW_SHORT_MM, view_scales
 
-    forces = [4124.0, 1567.0, 1528.0, 1219.0, 201.4, 15.7, 11.8]
+    forces = [4124.0, 1567.0, 1528.0, 1219.0, 420.0, 201.4, 15.7]
     free = view_scales(forces, 24.8)
     assert free.tier(201.4) is None  # without the rule: named, not drawn
     fs = view_scales(forces, 24.8, keep=[1528.0, 201.4])
     assert len(fs.scales) == 2
     t = fs.tier(201.4)
-    assert t == 1 and 201.4 / fs.scales[1].k >= SHORT_MM
-    assert fs.tier(1219.0) == 1  # the larger short one at the same, one inset μ_F
+    assert t == 1 and 201.4 / fs.scales[1].k >= VIEW_SHORT_MM
+    assert fs.tier(420.0) == 1  # the larger short one at the same, one inset μ_F
+    assert fs.over > 1.0  # … past the view's shortest arrow: the cost the reaction takes
     assert fs.tier(15.7) is None  # a weight under 0,5 % of the largest is still named

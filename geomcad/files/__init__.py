@@ -70,8 +70,11 @@ def stem(pid: str) -> str:
     return Path(pid).stem
 
 
-#: The longest code a file's stem gives a default designation (графа 26 is 70 mm wide).
-CODE_CHARS = 12
+#: The longest code a file's stem gives a default designation: "ТММ.<code>.01" fits графа 26
+#: (70 mm) 3.5 mm high in letters of common width, and at GOST's smaller heights in any.
+CODE_CHARS = 17
+#: The mark between a code's words (a drawing office writes the words of a name apart).
+CODE_JOIN = "-"
 
 
 def _words(name: str) -> list[str]:
@@ -84,37 +87,22 @@ def _words(name: str) -> list[str]:
 
 
 def code(pid: str) -> str:
-    """The file's stem as a part of a designation that reads as an ESKD code (letters and
-    digits only, upper case, at most :data:`CODE_CHARS`), as a drawing office shortens a name:
+    """The file's stem as a part of a designation that reads back to the file, as an ESKD code
+    writes it (upper case, letters and digits only, at most :data:`CODE_CHARS`): the stem's
+    words whole, joined by :data:`CODE_JOIN`, as many of its first words as fit; the words are
+    cut at a word's end, never inside one (review 7: the syllables of ``TANGROCKSLID``,
+    ``YOKPUMDOUSLI`` did not read as words); a first word longer than :data:`CODE_CHARS` alone
+    is cut to it. A stem without letters or digits gives ``""``.
 
-    - the whole stem's letters and digits where they fit (``sixbar_press.toml`` →
-      ``SIXBARPRESS``, ``sixbar-2013-6`` → ``SIXBAR20136``);
-    - else each word cut to its first k letters, k the most that fits (the letters left over go
-      one each to the first words still longer), its numbers kept whole, so that the code reads
-      back to the file (``tangent_rocking_slider`` → ``TANGROCKSLID``, not the initials TRS;
-      ``kulisa-23110713`` → ``KULI23110713``); two stems that share a long first word stay
-      apart, as a cut at :data:`CODE_CHARS` letters does not keep them;
-    - a single word longer than that, or numbers alone longer, the first :data:`CODE_CHARS`.
-
-    A stem without letters or digits gives ``""``.
-
-    >>> code("sixbar_press.toml"), code("synthesis-slotted-lever.toml"), code("a/kulisa-23110713")
-    ('SIXBARPRESS', 'SYNTSLOTLEVE', 'KULI23110713')
+    >>> code("sixbar_press.toml"), code("tangent_rocking_slider"), code("a/kulisa-23110713")
+    ('SIXBAR-PRESS', 'TANGENT-ROCKING', 'KULISA-23110713')
     """
     words = [w.upper() for w in _words(stem(pid))]
-    whole = "".join(words)
-    letters = [w for w in words if not w.isdigit()]
-    room = CODE_CHARS - sum(len(w) for w in words if w.isdigit())
-    if len(whole) <= CODE_CHARS or len(words) == 1 or room < len(letters):
-        return whole[:CODE_CHARS]
-    k = max(j for j in range(1, room + 1) if sum(min(len(w), j) for w in letters) <= room)
-    spare = room - sum(min(len(w), k) for w in letters)
-    out = []
-    for w in words:
-        if w.isdigit():
-            out.append(w)
-            continue
-        take = min(len(w), k + (1 if spare > 0 and len(w) > k else 0))
-        spare -= take - min(len(w), k)
-        out.append(w[:take])
-    return "".join(out)
+    if not words:
+        return ""
+    out = words[0][:CODE_CHARS]
+    for w in words[1:]:
+        if len(out) + len(CODE_JOIN) + len(w) > CODE_CHARS:
+            break
+        out += CODE_JOIN + w
+    return out

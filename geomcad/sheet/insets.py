@@ -2,14 +2,15 @@
 
 A view (the mechanism with its loads, a group's free body, Zhukovsky's lever) draws every force
 at its one μ_F (:func:`~geomcad.sheet.loads.view_scales`), so that a longer arrow is a larger
-force everywhere in it. A force that would be shorter than two arrowheads there is drawn
+force everywhere in it. A force that would be shorter than VIEW_SHORT_MM there is drawn
 instead in an inset: a thin circle round its point on the view, lettered beside the circle,
-and elsewhere in the view's box the point again with its short forces at the view's one
+and just beside it in the view's box the point again with its short forces at the view's one
 further μ_F, the same for all its insets (stated once under the view's caption, "выносные
 элементы Б, В: μ_F = 2 Н/мм", or in each inset's caption where that line has no room), same
-directions. One inset per point: all the short forces of a point (of points closer than the
-circle) in one inset, under one letter. The insets go where the view's box is free of what is
-drawn, the nearest such place to their point.
+directions, no inset arrow longer than the view's own shortest. One inset per point: all the
+short forces of a point (of points closer than the circle) in one inset, under one letter. The
+insets go where the view's box is free of what is drawn, the nearest such place to their
+circle (within BESIDE_MAX_MM where the view has room there).
 """
 
 from __future__ import annotations
@@ -60,6 +61,12 @@ _W_INK, _W_PENDING, _W_TURN, _W_GAP = 10.0, 0.5, 0.2, 2.0
 _W_LEAD, _W_NEAR = 2.0, 3.0
 #: How far (mm) round a label still to be placed the letter counts it (its text's size).
 PENDING_MM = 3.0
+#: An inset's copy is placed just beside its circle: its box within this distance (mm) of the
+#: circle's centre where the view has room there; each mm further costs _W_FAR (a tenth of a
+#: cell of its box on what is drawn, within KEEP_MM of a line or a text), so that it goes
+#: further only where it would lie on the drawing there.
+BESIDE_MAX_MM = 12.0
+_W_FAR = 1.0e3
 
 
 @dataclass(frozen=True)
@@ -85,6 +92,8 @@ class Insets:
         self.shorts: list[Short] = []
         #: (letter, μ_F) of each inset drawn, in order
         self.drawn: list[tuple[str, Scale]] = []
+        #: lines the view draws after its insets (a detail's circle): no inset over them
+        self.reserved: list[CircleItem] = []
 
     def add(self, at: Vec, F: Vec, tier: int, label: str, role: str) -> None:
         self.shorts.append(Short(at, F, label, role, tier))
@@ -132,6 +141,8 @@ class Insets:
             return
         eps = v.scale.model(0.8)
         free = _Free(d, start, field)
+        for it in self.reserved:
+            free.mark(it)
         marks: list[tuple[str, Vec, list[Short], tuple[float, float]]] = []
         # the circles and their letters first (each beside its own circle), then the insets
         for q, shorts in self.groups(v.scale.model(2.0 * MARK_R)):
@@ -389,7 +400,9 @@ class _Free:
 
     def place(self, w: float, h: float, near: tuple[float, float]) -> tuple[float, float]:
         """The top-left corner (sheet mm) of a free w × h rectangle in the field nearest to
-        ``near``; where none is free, the one that covers the fewest taken cells."""
+        ``near`` (an inset just beside its circle, within :data:`BESIDE_MAX_MM` of its centre
+        where a free place is: one further costs :data:`_W_FAR` taken cells a mm); where none
+        is free, the one that covers the fewest taken cells."""
         # an inset larger than the field is sought as large as the field (it runs over the
         # field's edge, never over another inset)
         cw = max(1, min(math.ceil(w / CELL_MM), self.nx - 1))
@@ -400,8 +413,12 @@ class _Free:
         ii, jj = np.mgrid[0 : taken.shape[0], 0 : taken.shape[1]]
         cx = self.field[0] + (jj + cw / 2.0) * CELL_MM
         cy = self.field[1] + (ii + ch / 2.0) * CELL_MM
-        dist = np.hypot(cx - near[0], cy - near[1])
-        cost = taken * 1.0e4 + dist
+        # the distance from ``near`` to the rectangle's nearest point: one BESIDE_MAX_MM off
+        # at most costs that much, one further as much as its cells taken besides
+        dx = np.maximum(np.abs(cx - near[0]) - cw * CELL_MM / 2.0, 0.0)
+        dy = np.maximum(np.abs(cy - near[1]) - ch * CELL_MM / 2.0, 0.0)
+        dist = np.hypot(dx, dy)
+        cost = taken * 1.0e4 + dist + np.maximum(dist - BESIDE_MAX_MM, 0.0) * _W_FAR
         k = int(np.argmin(cost))
         i, j = divmod(k, taken.shape[1])
         return self.field[0] + j * CELL_MM, self.field[1] + i * CELL_MM

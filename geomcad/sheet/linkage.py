@@ -63,6 +63,7 @@ from geomcad.sheet.frame import FORMATS, name_fits, text_at
 from geomcad.sheet.lang import Words, current, per_language
 from geomcad.sheet.model import ArcItem, CircleItem, Polyline, TextItem
 from geomcad.sheet.motion import Frames, turn
+from geomcad.sheet.placer import clip_to_circle, within_hull
 from geomcad.sheet.plans import markup_of
 from geomcad.sheet.scale import Scale, angle_places, fmt_column, fmt_fixed
 from geomcad.sheet.scheme import Body, draw_scheme, is_block
@@ -249,6 +250,7 @@ def _accel_positions(s: Solved) -> tuple[Position, ...]:
 def _trees(
     s: Solved, accel: Sequence[Position], h: float = TEXT_H, enlarge: bool = False,
     rules: tuple[bool, bool] = (False, False), apart: bool = False, balanced: bool = True,
+    k_v: float = 0.0, mech_k: float = 0.0,
 ) -> tuple[tuple[Tree, ...], _Mechanism, bool, dict[View, float]]:  # fmt: skip
     """The sheets' view trees (see the module's docstring), tables and orders written ``h``
     high, and the scales (model units per mm) the format is chosen to reach: the mechanism's
@@ -258,7 +260,11 @@ def _trees(
     its series that keeps it: a view's ``most_k``), its room missing counted as a cost.
     ``apart``: the velocity plans on a sheet of their own (as with more than
     :data:`PLANS_ON_SHEET` positions). ``balanced``: the output's s, v and a diagrams in boxes
-    of one height, else the search splits their column."""
+    of one height, else the search splits their column. ``k_v`` ((m/s)/mm, 0: none): the
+    velocity plans' scale on their own sheet, at which the velocity plan of an acceleration
+    plan's position that is not a numbered one is drawn beside it (one μ_V for a file's
+    velocity plans). ``mech_k`` (m/mm, 0: none): with the crank's detail, the scale the
+    mechanism reached without it, which its search still seeks."""
     lk = s.linkage
     n = len(s.drawn)
     second = apart or n > PLANS_ON_SHEET
@@ -291,7 +297,7 @@ def _trees(
         # a position of an acceleration plan that is not a numbered one: its velocity plan
         # beside its acceleration plan (every plan's position has both, linkages.md)
         vp = PlanView(P.vp, title=WORDS("vplan_detail", phi=_deg(P.phi, s)), group="v",
-                      weight=2.0, min_mm=SHORT_MM)  # fmt: skip
+                      weight=2.0, min_mm=SHORT_MM, least_k=k_v)  # fmt: skip
         cells.append(Row(vp, ap))
     aplans: Tree = Grid(*cells, title=WORDS("aplans"), group="a", title_height=TITLE_H)
     # s, v and a share the column's height (review 6: whitworth's s took 250 mm, v and a 60)
@@ -324,6 +330,8 @@ def _trees(
         wants[crank] = lk.length / CRANK_MM
     for view in vviews:  # one scale for them all: each needs its room at it
         wants[view] = abs(lk.omega) * lk.length / PA_MM
+    if crank is not None and mech_k > 0.0:
+        mech.most_k = mech_k  # the detail takes free room, not the mechanism's
     if rules[0]:
         cv: View = mech if crank is None else crank
         cv.most_k = round_scale_down(lk.length / CRANK_MM, "l", cv.series).k
@@ -400,10 +408,12 @@ def _arranged(s: Solved) -> tuple[Layout, tuple[Arranged, ...]]:
     fmts = sheet_formats(s.linkage)
     made: list[tuple[tuple[Tree, ...], _Mechanism, bool, dict[View, float]]] = []
     detail, rules, apart, balanced = False, (False, False), False, True
+    plans_k = 0.0  # the velocity plans' scale on their own sheet, once it is arranged
+    mech_k = 0.0  # the mechanism's finest scale without its crank's detail, once tried
 
     def make(i: int) -> Callable[[float], tuple[Tree, Mapping[View, float]]]:
         def tree(h: float) -> tuple[Tree, Mapping[View, float]]:
-            made.append(_trees(s, accel, h, detail, rules, apart, balanced))
+            made.append(_trees(s, accel, h, detail, rules, apart, balanced, plans_k, mech_k))
             t, _, _, wants = made[-1]
             return t[i], {v: k for v, k in wants.items() if v in _views(t[i])}
 
@@ -413,17 +423,31 @@ def _arranged(s: Solved) -> tuple[Layout, tuple[Arranged, ...]]:
         return next(m for m in made if any(t0 is t for t in (m[0][0], *_alternatives(m[0][0]))))
 
     def attempt() -> tuple[list[tuple[Tree, formats.Sized]], _Mechanism, bool]:
+        nonlocal plans_k
         made.clear()
+        plans_k, plans = 0.0, None
+        if apart or len(s.drawn) > PLANS_ON_SHEET:
+            # the velocity plans' own sheet first: a plan beside an acceleration plan on the
+            # first sheet takes its μ_V (review 7: the press's were drawn at μ_V = 0,004 with
+            # pa = 188 mm beside the plans sheet's 0,01)
+            plans = fit(make(1), fmts, True, rules[0])
+            plans_k = plans[1].layout.scale("v").k
         first = fit(make(0), fmts, readable=True, each=rules[0])
         trees_all, mech, second, _ = made_of(first[0])
-        fitted = [first] + [fit(make(i), fmts, True, rules[0]) for i in range(1, len(trees_all))]
+        fitted = [first] + ([plans] if plans is not None else [])
+        fitted += [fit(make(i), fmts, True, rules[0]) for i in range(len(fitted), len(trees_all))]
         return fitted, mech, second
 
     fitted, mech, second = attempt()
-    k_mech = fitted[0][1].layout[mech].scale
-    if k_mech is not None and k_mech.mm(s.linkage.length) < DETAIL_BELOW * CRANK_MM:
-        # the long links set the mechanism's scale and leave the crank short: the crank with
-        # its numbered positions enlarged beside it (ESKD 2.305's detail view)
+    k_first = _mech_k((fitted, mech, second))
+    if fitted[0][1].layout.fits and math.isfinite(k_first):
+        mech_k = k_first
+    if k_first * CRANK_MM * DETAIL_BELOW > s.linkage.length > 0.0 and not any(
+        _crank_may_keep(s, accel, fmts, sep) for sep in (False, True)
+    ):
+        # the long links set the mechanism's scale and leave the crank short, and no
+        # arrangement draws the mechanism at the crank's rule: the crank with its numbered
+        # positions enlarged beside it (ESKD 2.305's detail view)
         detail = True
         fitted, mech, second = attempt()
     if not _rules_hold(s, fitted):
@@ -434,14 +458,24 @@ def _arranged(s: Solved) -> tuple[Layout, tuple[Arranged, ...]]:
         # nearest to them (a pa of 39 mm with the crank at its rule beats the unruled
         # arrangement's crank of 16 mm and pa of 20 mm)
         rules = (True, True)
-        tries = dict.fromkeys(((detail, False), (detail, True), (True, False), (True, True)))
+        # the crank's rule at the mechanism's own scale first, on one sheet or with the
+        # velocity plans apart; its detail view only where neither holds it (review 7: the
+        # oscillator's mechanism at 1:4 beside a 1:1 detail)
+        tries = dict.fromkeys(((False, False), (False, True), (True, False), (True, True)))
         chosen = (detail, apart)
         near = _rules_share(s, fitted)
         for enlarge, sep in tries:
             if sep and len(s.drawn) > PLANS_ON_SHEET:
                 continue  # the plans are on their own sheet already
+            if not enlarge and not _crank_may_keep(s, accel, fmts, sep):
+                continue  # no arrangement draws the mechanism at the crank's rule: its detail
             detail, apart = enlarge, sep
             tried = attempt()
+            if not enlarge and tried[0][0][1].layout.fits and math.isfinite(_mech_k(tried)):
+                # the finest scale the mechanism reached without the detail: with it, the
+                # mechanism seeks that scale still (the detail takes free room, not the
+                # mechanism's)
+                mech_k = min(mech_k or math.inf, _mech_k(tried))
             if _rules_hold(s, tried[0]):
                 fitted, mech, second = tried
                 chosen = (detail, apart)
@@ -478,6 +512,18 @@ def _arranged(s: Solved) -> tuple[Layout, tuple[Arranged, ...]]:
     out = Layout(lays[0][mech].scale or Scale(1.0), k_v, lays[0].scale("a"), second, accel,
                  trees, mech, sized, balanced, squeezed)  # fmt: skip
     return out, lays
+
+
+def _crank_may_keep(s: Solved, accel: Sequence[Position], fmts: Sequence[str], apart: bool) -> bool:
+    """A necessary test before the search (:func:`geomcad.sheet.formats.may_reach`): whether
+    the first sheet, on the largest of ``fmts``, has room for the mechanism at the crank's
+    rule (:data:`CRANK_MM`) with the other views at their least sizes, without the crank's
+    detail view (a crusher's 0,9 m mechanism at 1:1 has none)."""
+    trees, mech, _, _ = _trees(s, accel, SMALL_TEXT_H, rules=(True, True), apart=apart)
+    k = round_scale_down(s.linkage.length / CRANK_MM, "l", mech.series).k
+    largest = max(fmts, key=lambda f: FORMATS[f][0] * FORMATS[f][1])
+    fmt, land = next(formats.candidates((largest,)))
+    return formats.may_reach(trees[0], {mech: k}, Field.of_format(fmt, land))
 
 
 def _mech_k(arranged: tuple[Sequence[tuple[Tree, formats.Sized]], View, bool]) -> float:
@@ -682,6 +728,13 @@ def link_bodies(
                 out[str(link)] = [Body.of([foot, foot + d * far])]
             else:
                 out[str(link)] = [Body.of([C, foot, foot + d * far])]
+            # a point beyond the pivot (an arm the slot does not reach: review 8, a rocking
+            # cylinder's arm CE drawn nowhere, its E hanging free) joined to the pivot by an arm
+            # of the same link; in a thin position only where another link hangs on it
+            for n in lk.points_on(link):
+                q = P.pos[n]
+                if (q - C).dot(d) < -tol.DERIVED * max(1.0, q.norm) and not (axes and n in lone):
+                    out[str(link)].append(Body.of([C, q]))
         elif len(uniq) == 2:
             out[str(link)] = [Body.of(uniq)]
         elif len(uniq) > 2 and axes:
@@ -927,18 +980,60 @@ class _Mechanism(View):
         # the positions numbered last, clear of every line drawn
         numbered: list[Vec] = []
         taken: list[Box] = []
+        done: list[list[tuple[float, float]]] = []  # the tracks numbered, as drawn
         for name in numbered_tracks(lk):
             pts = [P.pos[name] for P in s.drawn]
             if name == lk.joint and self.detail is not None:
                 mark_detail(v, lk.frame[lk.pivot], lk.length, self.detail)
+                done.append([v.p(q) for q in pts])  # its circle is still the crank's zone
                 continue  # the crank's positions are numbered on its detail view
             self.tracks[name] = [v.p(q) for q in pts]
+            if _in_zone(self.tracks[name], done) and _read_elsewhere(lk, name):
+                continue
+            done.append(self.tracks[name])
             vels = [P.vel[name] for P in s.drawn]
             clear = GUIDE_CLEAR_MM if name in guided else 0.0
             rowed = len(taken)
             position_numbers(v, pts, vels, lk.frame[lk.pivot], numbered, clear, taken)
             self.rows[name] = taken[rowed:]
             numbered = pts
+
+
+#: A track's numbering zone: the hull of its points grown by this much (mm), where its numbers
+#: stand (:func:`position_numbers` sets them within a row's depth of their points).
+ZONE_MM = 5.0
+#: A track whose points lie within this (mm) of one line is degenerate: its point runs to and
+#: fro along a segment (a yoke's point on its guide).
+LINE_MM = 0.5
+
+
+def _in_zone(track: Sequence[tuple[float, float]], done: Sequence[Sequence[tuple[float, float]]]
+             ) -> bool:  # fmt: skip
+    """Whether ``track`` (paper points) is degenerate (:data:`LINE_MM`) and lies within the
+    numbering zone (:data:`ZONE_MM`) of one of the tracks ``done``: its numbers could only
+    stand among that track's (review 7: a yoke's point E on its guide through the crank's
+    pivot, numbered "9 3", "4 8", "5 7 6" inside the crank circle among its numbers)."""
+    xy = np.asarray(track, dtype=float)
+    if len(xy) < 2:
+        return False
+    i, j = np.unravel_index(np.argmax(((xy[:, None] - xy[None]) ** 2).sum(axis=2)), (len(xy),) * 2)
+    u = xy[j] - xy[i]
+    span = float(np.hypot(*u))
+    if span > 0.0:
+        d = xy - xy[i]
+        off = np.abs(u[0] * d[:, 1] - u[1] * d[:, 0]) / span
+        if float(off.max()) > LINE_MM:
+            return False
+    return any(within_hull(track, other, ZONE_MM) for other in done if len(other) >= 3)
+
+
+def _read_elsewhere(lk: Linkage, name: str) -> bool:
+    """Whether the positions of the link that carries ``name`` are numbered at another of its
+    points (a yoke's arm end F for its point E on the guide)."""
+    link = lk.owner.get(name)
+    return link is not None and any(
+        k != name and lk.owner.get(k) == link for k in numbered_tracks(lk)
+    )
 
 
 def numbered_tracks(lk: Linkage) -> tuple[str, ...]:
@@ -1007,14 +1102,19 @@ def _offset_arc(v: Viewport, g: Group, drawn: Sequence[Position]) -> None:
     )  # fmt: skip
 
 
-#: The crank is drawn enlarged on a detail view of its own where the mechanism's scale draws it
-#: shorter than this share of :data:`CRANK_MM`: the detail then shows it at least twice as large
-#: (a crank a little short of the rule is left to the mechanism's view: a detail at the next
-#: GOST scale would show nothing more).
+#: The crank is drawn enlarged on a detail view of its own at once where the mechanism's scale
+#: draws it shorter than this share of :data:`CRANK_MM` and no arrangement has room for the
+#: mechanism at the crank's rule (:func:`_crank_may_keep`): the detail then shows it at least
+#: twice as large. Otherwise the search seeks the rule at the mechanism's own scale first, the
+#: detail being the last resort; beside its detail the mechanism keeps the scale it reached
+#: without it (review 7: the oscillator's 1:2,5 became 1:4 beside its 1:1 detail).
 DETAIL_BELOW = 0.5
-#: The crank's detail: its drawing reaches this many crank lengths round the pivot (the crank
-#: circle, the stubs of the links at the crank's joint, ω1 and the numbers).
+#: The crank's detail: its box reaches this many crank lengths round the pivot …
 DETAIL_REACH = 1.9
+#: … its drawing this many, to the detail's circle (the crank circle, its numbers and ω1
+#: inside it; the stubs of the links at the crank's joint end on it; review 7: the oscillator's
+#: stubs ran 45 mm past the crank circle towards the plans, read as an unclipped drawing).
+DETAIL_CIRCLE = 1.4
 #: On the mechanism, the detail's circle round the crank: this much (mm) beyond the crank's
 #: circle; its leader and shelf (mm).
 DETAIL_RING_MM, DETAIL_LEADER_MM, DETAIL_SHELF_MM = 3.0, 6.0, 5.0
@@ -1035,13 +1135,32 @@ def mark_detail(v: Viewport, pivot: Vec, r: float, letter: str) -> None:
     carrying the detail's ``letter``."""
     ring = v.mm(r) + DETAIL_RING_MM
     c = v.p(pivot)
+    segments = [
+        pq
+        for it in v.sheet.items
+        if isinstance(it, Polyline)
+        for pq in itertools.pairwise(it.points)
+    ]
     v.sheet.add(CircleItem(c, ring, "thin"))
-    u = (math.cos(math.radians(45.0)), -math.sin(math.radians(45.0)))
-    a = (c[0] + u[0] * ring, c[1] + u[1] * ring)
-    b = (a[0] + u[0] * DETAIL_LEADER_MM, a[1] + u[1] * DETAIL_LEADER_MM)
-    e = (b[0] + DETAIL_SHELF_MM, b[1])
-    v.sheet.add(Polyline((a, b, e), "thin"))
-    text_at(v.sheet, letter, (b[0] + 0.8, b[1] - 0.8), TITLE_H, role="label")
+    w = box(parse(letter), TITLE_H)[0]
+    best: tuple[int, tuple[tuple[float, float], ...], tuple[float, float]] | None = None
+    # up and to the right, else the first diagonal whose letter no line drawn runs through
+    # (review 7: the oscillator's coupler AB crossed its "Б")
+    for deg in (45.0, 135.0, -45.0, -135.0):
+        u = (math.cos(math.radians(deg)), -math.sin(math.radians(deg)))
+        a = (c[0] + u[0] * ring, c[1] + u[1] * ring)
+        b = (a[0] + u[0] * DETAIL_LEADER_MM, a[1] + u[1] * DETAIL_LEADER_MM)
+        e = (b[0] + math.copysign(DETAIL_SHELF_MM, u[0]), b[1])
+        at = (min(b[0], e[0]) + 0.8, b[1] - 0.8)
+        lbox = (at[0], at[1] - TITLE_H, at[0] + w, at[1] + 0.3 * TITLE_H)
+        hits = sum(_segment_to_box(p, q, lbox) <= 0.0 for p, q in segments)
+        if best is None or hits < best[0]:
+            best = (hits, (a, b, e), at)
+        if hits == 0:
+            break
+    assert best is not None
+    v.sheet.add(Polyline(best[1], "thin"))
+    text_at(v.sheet, letter, best[2], TITLE_H, role="label")
 
 
 class _CrankDetail(View):
@@ -1076,7 +1195,8 @@ class _CrankDetail(View):
         s = self.s
         lk = s.linkage
         O1 = lk.frame[lk.pivot]
-        reach = self.reach * 0.95
+        reach = min(self.reach, DETAIL_CIRCLE * lk.length)
+        start = len(d.sheet.items)
         P0, k0 = _principal(s) if self.only is None else (self.only, 0)
         drawn = s.drawn if self.only is None else [self.only]
         v.circle(O1, lk.length, "centre")
@@ -1100,6 +1220,15 @@ class _CrankDetail(View):
         v.label(P0.pos[lk.joint], markup_of(lk.joint), 3.5, clear=2.0)
         v.label((O1 + P0.pos[lk.joint]) * 0.5, "1", 3.5, clear=1.0, space=LINK_SPACE)
         omega_arrow(v, lk, P0)
+        # the detail's content ends at its circle (drawn thin where it shows the numbered
+        # positions; the forces sheet's detail adds the crank's loads after it)
+        sheet = d.sheet
+        kept = clip_to_circle(sheet.items[start:], v.p(O1), v.mm(reach))
+        gone = {id(it) for it in sheet.items[start:]} - {id(it) for it in kept}
+        sheet.items[start:] = kept
+        sheet.anchors = [(t, q) for t, q in sheet.anchors if id(t) not in gone]
+        if self.only is None:
+            v.circle(O1, reach, "thin")
 
 
 def _neighbours(lk: Linkage, P: Position, joint: str) -> list[Vec]:

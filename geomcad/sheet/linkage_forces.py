@@ -35,6 +35,10 @@ composition (:func:`force_layout`, issue 27):
   loads rescale none of them), the crank at least CRANK_MM long where the mechanism's sweep
   allows it (:data:`SWEEP_MAX_MM`); where the mechanism's μ_l still draws the crank short, the
   crank enlarged in a detail in the mechanism view's free room (:meth:`_Loaded.crank_detail`);
+  the crank's length a constraint of the search (:data:`CRANK_WEIGHT`, :func:`_held`): a
+  detail only where no arrangement on the largest format holds the mechanism's μ_l with it, and
+  the crank cut out at its own μ_l where that takes less of the other views' room than its
+  crank lost (review 7);
 - the smallest format on which, besides, every force polygon is :data:`POLY_MM` across: the
   views grow, and the groups take their own μ_l, before a larger format is taken; on the format
   taken the tables are 3.5 mm high where the drawings of links keep their scales with it.
@@ -84,11 +88,12 @@ from geomcad.sheet.compose import (
 from geomcad.sheet.compose import _title_width as title_width
 from geomcad.sheet.drawing import SHORT_MM, Viewport
 from geomcad.sheet.frame import FORMATS, LEFT_MARGIN, MARGIN, reserved
-from geomcad.sheet.graph import Axis, Graph
+from geomcad.sheet.graph import ARROW_OVER, Axis, Graph
 from geomcad.sheet.insets import Insets
 from geomcad.sheet.lang import Words, current
 from geomcad.sheet.linkage import (
     CRANK_MM,
+    DETAIL_RING_MM,
     SMALL_TEXT_H,
     TEXT_COST,
     TEXT_H,
@@ -120,7 +125,7 @@ from geomcad.sheet.loads import (
     moment,
     view_scales,
 )
-from geomcad.sheet.model import TextItem
+from geomcad.sheet.model import CircleItem, TextItem
 from geomcad.sheet.plans import markup_of
 from geomcad.sheet.scale import (
     ANGLE_PLACES,
@@ -131,7 +136,8 @@ from geomcad.sheet.scale import (
     fmt_fixed,
 )
 from geomcad.sheet.scheme import draw_scheme
-from geomcad.sheet.text import wrap
+from geomcad.sheet.text import box as text_box
+from geomcad.sheet.text import parse, wrap
 from geomcad.sheet.views import (
     SLIVER_MM,
     AxisSpec,
@@ -153,6 +159,20 @@ LOAD_MM = 24.0
 #: The radius (mm) of M_ур's arc about the crank's pivot: clear of the support's stand and
 #: hatching (symbols.STAND_DEPTH + HATCH_LEN) round the pivot.
 M_BAL_MM = symbols.STAND_DEPTH + symbols.HATCH_LEN + 3.0
+#: M_ур's arc spans this many degrees, its gap centred on the crank (:func:`m_bal_start`).
+M_BAL_SWEEP_DEG = 250.0
+
+
+def m_bal_start(lk: Linkage, P: Position, sense: float) -> float:
+    """Where (model degrees) M_ур's arc about the crank's pivot starts, turning in the sense
+    of ``sense``: its gap centred on the crank in position ``P``, so that the arc and its head
+    never lie on the crank nor its number, and its label stands across the pivot from the crank
+    (review 7: O, A, 1, 2, M_ур and ω1 cramped at the crank)."""
+    a = P.pos[lk.joint] - lk.frame[lk.pivot]
+    crank = math.degrees(math.atan2(a.y, a.x))
+    return crank + math.copysign(0.5 * (360.0 - M_BAL_SWEEP_DEG), sense)
+
+
 #: How far (mm) the labels of a drawing of links on the forces sheet keep from the centre
 #: lines of its links, joints, hatching, arcs and arrows where they can (about half a mm of
 #: paper between a letter and a main line's ink): no letter touching a joint's circle, an
@@ -226,7 +246,8 @@ class _ByScale:
             while r < room:
                 r = min(room, r * 1.25)
                 at = view_scales(self._forces, r, self._keep)
-                if self._cost(at) < self._cost(fs) and self._fits(at, scale, box):
+                # as costly: the longer arrows (the view's room used, review 7 item 2)
+                if (self._cost(at), at.k) < (self._cost(fs), fs.k) and self._fits(at, scale, box):
                     fs = at
             # a force still left out (a reaction of a free body): longer arrows, up to
             # ARROW_SHARE of the view's larger side, where they keep within its box
@@ -269,11 +290,12 @@ class _ByScale:
         """How many of the view's forces ``fs`` draws in insets."""
         return sum(1 for F in self._forces if fs.tier(F) not in (0, None))
 
-    def _cost(self, fs: ForceScales) -> tuple[int, int]:
-        """How many of the view's forces ``fs`` leaves out (named, not drawn), and how many
-        it draws in insets."""
+    def _cost(self, fs: ForceScales) -> tuple[int, int, int]:
+        """How many of the view's forces ``fs`` leaves out (named, not drawn), whether its
+        insets' longest arrow outgrows the view's shortest (a reaction drawn past their cap),
+        and how many it draws in insets."""
         left = sum(1 for F in self._forces if fs.zero < F and fs.tier(F) is None)
-        return left, self._shorts(fs)
+        return left, int(fs.over > 1.0 + tol.DERIVED), self._shorts(fs)
 
 
 #: The least length (mm) of a force plan's longest vector (a course project draws its plans
@@ -292,6 +314,12 @@ ARRANGEMENTS = 4
 #: The scale group of the crank cut out where the mechanism's μ_l draws the crank shorter than
 #: CRANK_MM: its own μ_l, stated in its caption, at which the crank is CRANK_MM long.
 CRANK_L = "lc"
+#: The weight of a millimetre the crank is drawn short of CRANK_MM on the mechanism (a group of
+#: its own μ_l short of GROUPS_SHARE) in :func:`_held`'s search, against
+#: a millimetre a force plan's longest vector falls short of its seek (:data:`PLAN_SEEK_MM`):
+#: the size rule is a constraint, the plans' seek a wish (review 7: the yoke pump's crank at
+#: 15 mm, 1:4, traded for plans 100 mm longer).
+CRANK_WEIGHT = 20.0
 
 
 def force_position(s: Solved) -> tuple[Position, Forces, int | None]:
@@ -342,13 +370,21 @@ def force_layout(s: Solved) -> tuple[Tree, formats.Sized]:
     """Sheet 2's tree and its format and arrangement (:func:`_compose2`; for the size rules'
     bench and the tests: the scales and the format without drawing)."""
     P, forces, k = force_position(s)
-    found = _compose2(s, P, forces, k, sheet_formats(s.linkage))
-    kin = True
-    if not found[1].layout.fits and sweep_mm(s, crank_scale(s.linkage).k) > SWEEP_MAX_MM:
-        # the kinematic sheet's μ_l keeps the sheet from fitting: the mechanism as large as
-        # the field draws it
-        kin = False
-        found = _compose2(s, P, forces, k, sheet_formats(s.linkage), kin=kin)
+    waived = sweep_mm(s, crank_scale(s.linkage).k) > SWEEP_MAX_MM
+    # where the sweep waives the crank's length, the mechanism sought at the kinematic sheet's μ_l
+    kin: float | None = kinematic_scale(s).k if waived else None
+    found = _compose2(s, P, forces, k, sheet_formats(s.linkage), kin=kin)
+    if not found[1].layout.fits and kin is not None:
+        # the kinematic sheet's μ_l keeps the sheet from fitting: the next coarser GOST steps
+        # one by one, then the mechanism as large as the field draws it (a kinematic sheet at
+        # 1:4 beside a forces sheet at 1:5, not at 1:10)
+        for step in (*_coarser(kin), None):
+            kin = step
+            found = _compose2(s, P, forces, k, sheet_formats(s.linkage), kin=kin)
+            if found[1].layout.fits:
+                break
+    if not _crank_kept(found[1].layout):
+        found = _held(s, P, forces, k, found, kin)
     lay = found[1].layout
     if _crank_short(lay):
         # the mechanism's μ_l draws the crank short (its detail enlarges it there): the crank
@@ -360,7 +396,17 @@ def force_layout(s: Solved) -> tuple[Tree, formats.Sized]:
         largest = max(fmts, key=lambda fm: FORMATS[fm][0] * FORMATS[fm][1])
         under = isinstance(found[0], Choice) and len(found[0].items) > ARRANGEMENTS
         own, _kept = _final2(s, P, forces, k, found[1], shared, largest, kin, True, under)
-        if own[1].layout.fits or not lay.fits:
+        # its own μ_l may take other views' room: where it overflows by less than the crank
+        # cut out was short (review 7: the oscillator's 20 mm crank, its 1:1 over A1 by a
+        # plan's 1.8 mm vector)
+        lost = -own[1].layout.score[0] if not own[1].layout.fits else 0.0
+        # (never at the cost of the mechanism's own crank)
+        kept = _crank_kept(own[1].layout) or not _crank_kept(lay)
+        if (
+            kept
+            and not _crank_short(own[1].layout)
+            and (not lay.fits or lost < _crank_shortfall(lay))
+        ):
             found = own
     for pl in found[1].layout:
         if isinstance(pl.view, _Lever):
@@ -368,17 +414,63 @@ def force_layout(s: Solved) -> tuple[Tree, formats.Sized]:
     return found
 
 
+def _held(
+    s: Solved, P: Position, f: Forces, k: int | None, found: tuple[Tree, formats.Sized],
+    kin: float | None,
+) -> tuple[Tree, formats.Sized]:  # fmt: skip
+    """Where the search left the mechanism's crank shorter than its rule (the layout's score
+    trades it against the plans' seek, :data:`PLAN_SEEK_MM`): the crank's length as a
+    constraint (review 7: the yoke pump and the tangent rocking slider at 1:4 with a detail
+    while half of the sheet was blank). On the largest format, every arrangement one by one
+    (the one more of ``under`` too), the groups at the mechanism's μ_l, then at one μ_l of
+    their own (at least :data:`GROUPS_SHARE` of its size); the first whose drawings keep the
+    crank's length and the groups' share, its tables and texts whole in their boxes
+    (:func:`_whole`), is taken. A detail then enlarges the crank only where no arrangement
+    holds its scale."""
+    fmts = sheet_formats(s.linkage)
+    largest = max(fmts, key=lambda fm: FORMATS[fm][0] * FORMATS[fm][1])
+    for shared in (True, False):
+        tree, wants = _sheet2(s, P, f, k, TEXT_H, shared=shared, kin=kin, under=True,
+                              weight=CRANK_WEIGHT)  # fmt: skip
+        on = _on(tree, wants, largest)
+        if on is None or not (_crank_kept(on[1].layout) and _groups_kept(on[1].layout)):
+            continue
+        held, _kept = _final2(s, P, f, k, on[1], shared, largest, kin, under=True,
+                              weight=CRANK_WEIGHT)  # fmt: skip
+        lay = held[1].layout
+        if _crank_kept(lay) and _groups_kept(lay) and _whole(lay):
+            return held
+    return found
+
+
+def _whole(lay: Layout) -> bool:
+    """Whether every table and text of ``lay`` (its fixed views) keeps within its box: the
+    crank's constraint (:func:`_held`) never takes their room."""
+    e = tol.SHEET_MM
+    for pl in lay:
+        nat = pl.view.natural() if pl.view.kind == "fixed" else None
+        if nat is not None and (nat[0] > pl.box[2] - pl.box[0] + e
+                                or nat[1] > pl.box[3] - pl.box[1] + e):  # fmt: skip
+            return False
+    return True
+
+
 def _crank_short(lay: Layout) -> bool:
     """Whether ``lay`` draws the crank cut out shorter than
     :data:`~geomcad.sheet.linkage.CRANK_MM`."""
-    return any(isinstance(pl.view, _FreeBody) and pl.view.gf.group is None
-               and pl.scale is not None
-               and pl.view.lk.length / pl.scale.k < CRANK_MM * (1.0 - tol.REL_LENGTH)
-               for pl in lay)  # fmt: skip
+    return _crank_shortfall(lay) > CRANK_MM * tol.REL_LENGTH
+
+
+def _crank_shortfall(lay: Layout) -> float:
+    """How much (mm) shorter than :data:`~geomcad.sheet.linkage.CRANK_MM` ``lay`` draws the
+    crank cut out (0 where it keeps the rule)."""
+    return max((CRANK_MM - pl.view.lk.length / pl.scale.k for pl in lay
+                if isinstance(pl.view, _FreeBody) and pl.view.gf.group is None
+                and pl.scale is not None), default=0.0)  # fmt: skip
 
 
 def _compose2(
-    s: Solved, P: Position, f: Forces, k: int | None, fmts: Sequence[str], kin: bool = True
+    s: Solved, P: Position, f: Forces, k: int | None, fmts: Sequence[str], kin: float | None = None
 ) -> tuple[Tree, formats.Sized]:
     """Sheet 2's tree and its format and arrangement.
 
@@ -467,7 +559,8 @@ def _compose2(
 
 def _final2(
     s: Solved, P: Position, f: Forces, k: int | None, z: formats.Sized, shared: bool,
-    largest: str, kin: bool = True, crank_own: bool = False, under: bool = False,
+    largest: str, kin: float | None = None, crank_own: bool = False, under: bool = False,
+    weight: float = 1.0,
 ) -> tuple[tuple[Tree, formats.Sized], bool]:  # fmt: skip
     """Sheet 2 on the format of ``z`` with its polygons' details reckoned at the μ_F each got
     there (see :func:`_compose2`), and whether it keeps the rules (where it does not on a format
@@ -481,13 +574,15 @@ def _final2(
     rules: list[bool] = []
     good: list[bool] = []
     for h in (TEXT_H, SMALL_TEXT_H):
-        tree, w = _sheet2(s, P, f, k, h, refs, shared, kin, crank_own, under)
+        tree, w = _sheet2(s, P, f, k, h, refs, shared, kin, crank_own, under, weight)
         lay = arrange(tree, field)
         # a plan placed at a coarser μ_F than its details were reckoned at may not hold them
         # in its box (they would run into the captions round it): reckoned again at that μ_F
         spilt = _spilt(lay)
         if spilt:
-            tree, w = _sheet2(s, P, f, k, h, {**refs, **spilt}, shared, kin, crank_own, under)
+            tree, w = _sheet2(
+                s, P, f, k, h, {**refs, **spilt}, shared, kin, crank_own, under, weight
+            )
             lay = arrange(tree, field)
         tried.append((tree, formats.Sized(z.fmt, z.landscape, lay)))
         # on a smaller format than the largest, its polygons POLY_MM across as it was chosen
@@ -626,7 +721,7 @@ def _as_loads(
 def _sheet2(
     s: Solved, P: Position, f: Forces, k: int | None, h: float,
     refs: Mapping[str, tuple[float, tuple[float, float]]] | None = None, shared: bool = True,
-    kin: bool = True, crank_own: bool = False, under: bool = False,
+    kin: float | None = None, crank_own: bool = False, under: bool = False, weight: float = 1.0,
 ) -> tuple[Tree, dict[View, float]]:  # fmt: skip
     """Sheet 2's tree, its tables and texts ``h`` high, and the scales its views want. The
     force polygons are drawn with their details where ``refs`` gives their reference μ_F and
@@ -636,7 +731,9 @@ def _sheet2(
     (``kin``: where that fits). The crank cut out is drawn at a μ_l of its own that draws it
     CRANK_MM long where ``crank_own`` (where the mechanism's draws it short). ``under``: one
     arrangement more, the polygons under the mechanism and the groups over the lever (room
-    for the groups at the mechanism's μ_l; tried only where the others leave it broken)."""
+    for the groups at the mechanism's μ_l; tried only where the others leave it broken).
+    ``weight``: a millimetre the crank (and a group of its own μ_l) falls short of its rule
+    weighs that many of the plans' seek in the search (:data:`CRANK_WEIGHT`, :func:`_held`)."""
     lk = s.linkage
     # the length scales from the geometry alone (a change of ω or of the loads rescales no
     # drawing of links): never finer than links_scale; the crank CRANK_MM long where the
@@ -651,12 +748,12 @@ def _sheet2(
     # CRANK_MM long) is drawn again in a detail (its letter taken where it is drawn)
     mech.solved = s
     if sweep_mm(s, crank_scale(lk).k) <= SWEEP_MAX_MM:
-        mech.readable, mech.readable_mm = lk.length, CRANK_MM
+        mech.readable, mech.readable_mm = weight * lk.length, weight * CRANK_MM
     else:
-        if kin:
+        if kin is not None:
             # the sweep waives the crank's length: the mechanism no coarser than the kinematic
             # sheet draws it, where the format allows it (review 5: a crusher at 1:15 beside 1:5)
-            mech.readable, mech.readable_mm = lk.length, lk.length / kinematic_scale(s).k
+            mech.readable, mech.readable_mm = lk.length, lk.length / kin
         # the crank may come out short on it: its detail's letter, the first of the sheet's
         mech.detail = next(letters)
     bodies = [_FreeBody(lk, P, gf) for gf in f.groups]
@@ -683,7 +780,8 @@ def _sheet2(
             if b.group == GROUPS_L:
                 b.weight = 2.0
                 # at least GROUPS_SHARE of the mechanism's size, never finer than k_l
-                b.readable, b.readable_mm = lk.length, GROUPS_SHARE * lk.length / k_l
+                b.readable = weight * lk.length
+                b.readable_mm = weight * GROUPS_SHARE * lk.length / k_l
     # each group's polygons under the group cut out (the crank's under the crank); a
     # polygon's vectors too short for its μ_F are drawn again, enlarged, in details at their
     # own stated μ_F beside it in its view (one letter each on the sheet)
@@ -750,7 +848,7 @@ def _sheet2(
             # and on the largest format the search seeks it (its longest vector PLAN_SEEK_MM)
             p.readable = max(p.readable, big * p.readable_mm / PLAN_SEEK_MM)
     if mech.readable > 0.0:
-        wants[mech] = lk.length / mech.readable_mm
+        wants[mech] = mech.readable / mech.readable_mm
     return tree, wants
 
 
@@ -820,6 +918,11 @@ def links_scale(s: Solved) -> Scale:
     fits = [k for k in GOST_K if big / k <= SWEEP_MM * (1.0 + tol.REL_LENGTH)]
     sweep = min(fits) if fits else max(GOST_K)
     return Scale(min(crank_scale(s.linkage).k, sweep), "l")
+
+
+def _coarser(k: float) -> tuple[float, ...]:
+    """The GOST 2.302 reductions coarser than ``k`` (m/mm), the nearest first."""
+    return tuple(g for g in GOST_K if g > k * (1.0 + tol.DERIVED))
 
 
 def kinematic_scale(s: Solved) -> Scale:
@@ -984,8 +1087,19 @@ def further_room(fs: ForceScales, omitted: Sequence[str] = (), width: float = 0.
     the view's box is never narrower); 0 where it has neither."""
     if not (fs.tiered or omitted):
         return 0.0
+    omitted = _omitted_fit(omitted, width)
     lines = len(_omitted_lines(omitted, width)) if omitted and width > 0.0 else 1
     return SCALES_H * TITLE_LEAD + (max(lines, 1) - 1) * SCALES_H * TITLE_SPACING
+
+
+def _omitted_fit(omitted: Sequence[str], width: float) -> list[str]:
+    """The forces left out as the line under a view's caption names them: with their values
+    (``G_4 = 29,43 Н``) where that takes one line ``width`` mm wide, else by their names
+    alone (the table of loads gives their values): a long list takes no second line of the
+    view's room (review 7: the insets draw fewer forces, the lists grew)."""
+    if width <= 0.0 or len(_omitted_lines(omitted, width)) <= 1:
+        return list(omitted)
+    return list(dict.fromkeys(o.split(" = ", 1)[0] for o in omitted))
 
 
 def _omitted_text(omitted: Sequence[str]) -> str:
@@ -1021,6 +1135,7 @@ def draw_insets(
     letters = getattr(view, "letters", None) or detail_letters()
     mine = [next(letters) for _ in range(ins.count(at.viewport))]
     parts = [ins.line(mine)] if mine else []
+    omitted = _omitted_fit(omitted, title_width(view))
     if omitted:
         key = "omitted_one" if len(omitted) == 1 else "omitted"
         share = _share_text(getattr(view, "fs", ins.fs).limit or VIEW_NEGLIGIBLE)
@@ -1054,10 +1169,11 @@ def draw_insets(
 
 def _share_text(share: float) -> str:
     """A share of the largest force as the percentage the line of forces left out states:
-    to two significant figures, rounded up (every force named is under it)."""
+    to two significant figures, rounded up past it (every force named is under it, the
+    largest of them too)."""
     pct = share * 100.0
     e = math.floor(math.log10(pct)) - 1
-    return fmt_number(math.ceil(pct / 10.0**e * (1.0 - tol.DERIVED)) * 10.0**e)
+    return fmt_number(math.ceil(pct / 10.0**e * (1.0 + tol.DERIVED)) * 10.0**e)
 
 
 def _negligible_note(names: Sequence[str]) -> str:
@@ -1151,9 +1267,27 @@ class _Loaded(_Forces):
         # the moments, then the forces, each clear of the links and of the arrows before it
         _draw_loads(v, lk, P, self.loads, self.fs, "vector", clear, insets=ins)
         omega_arrow(v, lk, P)
-        v.turn(P.pos[lk.pivot], self.f.M_bal, 30.0, WORDS("M_bal"), M_BAL_MM, 250.0, "result", 2.5)
+        v.turn(P.pos[lk.pivot], self.f.M_bal, m_bal_start(lk, P, self.f.M_bal), WORDS("M_bal"),
+               M_BAL_MM, M_BAL_SWEEP_DEG, "result", 2.5)  # fmt: skip
         self.crank_detail(d, at, Clearance(d.sheet, start, _field(at)))
+        if self._sheet_detail_due(at):
+            # the circle sheet_detail will draw round the crank: no inset over it
+            r = max(lk.length, v.scale.k * M_BAL_MM)
+            ins.reserved.append(CircleItem(v.p(lk.frame[lk.pivot]), v.mm(r) + DETAIL_RING_MM,
+                                           "thin"))  # fmt: skip
         draw_insets(d, at, self, ins, start, self.omitted)
+
+    def _sheet_detail_due(self, at: Placed) -> bool:
+        """Whether :meth:`sheet_detail` may still mark the crank's detail on this view (after
+        its insets are drawn)."""
+        v = at.viewport
+        return not (
+            v is None
+            or self.solved is None
+            or self.detail_scale is not None
+            or (self.detail is None and self.letters is None)
+            or v.scale.mm(self.lk.length) >= CRANK_MM * (1.0 - tol.REL_LENGTH)
+        )
 
     def crank_detail(self, d: Drawing, at: Placed, drawn: Clearance) -> None:
         """Where the view's μ_l draws the crank shorter than
@@ -1241,7 +1375,8 @@ class _Loaded(_Forces):
             dv = pl.viewport
             assert dv is not None
             _draw_loads(dv, lk, P, loads, self.fs, "vector", clear)
-            dv.turn(O1, self.f.M_bal, 30.0, WORDS("M_bal"), M_BAL_MM, 250.0, "result", 2.5)
+            dv.turn(O1, self.f.M_bal, m_bal_start(lk, P, self.f.M_bal), WORDS("M_bal"), M_BAL_MM,
+                    M_BAL_SWEEP_DEG, "result", 2.5)  # fmt: skip
             d.text(WORDS("crank_detail", letter=letter, scale=scale.ratio_text()),
                    (x0, y0 + TITLE_H), TITLE_H)  # fmt: skip
             # the circle round the crank and M_ур's arc about its pivot
@@ -1333,7 +1468,8 @@ class _FreeBody(_Forces):
                 else ld.moment
                 for ld in gf.loads[1]
             )
-            v.turn(P.pos[lk.pivot], M, 30.0, WORDS("M_bal"), M_BAL_MM, 250.0, "result", 2.5)
+            v.turn(P.pos[lk.pivot], M, m_bal_start(lk, P, M), WORDS("M_bal"), M_BAL_MM,
+                   M_BAL_SWEEP_DEG, "result", 2.5)  # fmt: skip
         draw_insets(d, at, self, ins, start, self.omitted)
 
 
@@ -1923,8 +2059,10 @@ class _Wittenbauer(View):
         # ab, the segment the tangents cut on the ΔT axis, is read in the heading: a label on
         # the axis itself would stand among its tick values
         ab = WORDS("ab", value=_num(a - b))
+        # at the box's top right, as a diagram's factors (review 7: at its top left it ran on
+        # from the title of the column beside it)
         d.text(f"{ay.factor_text(current())};  {ax.factor_text(current())};  {angles};  {ab}",
-               (x0, y0 + 3.0), 2.5)  # fmt: skip
+               (x1, y0 + 3.0), 2.5, anchor="right")  # fmt: skip
         gr = Graph(d, ax, ay, (x0 + self.LEFT, y0 + self.ABOVE + 6.0 + ay.mm(ay.hi - ay.zero)))
         gr.axes(current(), tick_labels=True)
         gr.curve(_thin(fw.dense.I_pr), _thin(fw.dA), "result")
@@ -1935,17 +2073,72 @@ class _Wittenbauer(View):
         for (yy, slope), (x, y), name in zip(((a, k_max), (b, k_min)), fw.touch,
                                              ("ω_{max}", "ω_{min}"), strict=True):  # fmt: skip
             x_end = min(i_hi, (ay.hi - yy) / slope) if slope > 0.0 else i_hi
+            x_end = _clear_of_axis_name(gr, yy, slope, x_end, x)
             if x_end > 0.0:
                 gr.curve([0.0, x_end], [yy, yy + slope * x_end], "construction")
                 d.label(gr.p(x_end, yy + slope * x_end), name, 2.5, prefer=(1.0, 0.0))
             gr.point(x, y)
 
 
+#: The height (mm) of an axis's symbol by its arrow (:meth:`geomcad.sheet.graph.Graph.axes`),
+#: and the room (mm) a line keeps from it.
+AXIS_NAME_H = 3.5
+NAME_CLEAR_MM = 1.0
+
+
+def _clear_of_axis_name(gr: Graph, y0: float, slope: float, x_end: float, touch: float) -> float:
+    """Where a tangent y = y0 + slope·x drawn from the ΔT axis ends (I_пр units): at ``x_end``,
+    or short of the I_пр axis's symbol by its arrow (written left of the tip, above the axis)
+    where it would run through it, never short of its touching point ``touch`` (review 7: the
+    yoke's ω_max tangent ran over "I_пр, кг·м²")."""
+    name = f"{gr.x.symbol}, {gr.x.unit}"
+    tip = gr.box[2] + ARROW_OVER
+    left = tip - text_box(parse(name), AXIS_NAME_H)[0] - 2.0 * NAME_CLEAR_MM
+    low, high = gr.at[1] + NAME_CLEAR_MM, gr.at[1] - AXIS_NAME_H - 2.0 * NAME_CLEAR_MM
+    end = gr.p(x_end, y0 + slope * x_end)
+    if end[0] <= left:
+        return x_end
+    x_left = gr.x.zero + (left - gr.at[0]) * gr.x.k
+    at_left = gr.p(x_left, y0 + slope * x_left)[1]
+    if max(at_left, end[1]) < high or min(at_left, end[1]) > low:
+        return x_end  # above or below the name all along
+    return max(x_left, touch)
+
+
+#: The ω1 diagram's y range beyond ω_min … ω_max, each side, as a share of it.
+OMEGA_PAD = 0.1
+
+
+class _Filled(Diagram):
+    """A diagram whose y axis (through no zero: ω1 about its mean) is drawn the height of its
+    box: its range widened about its middle to the whole room at the axis's factor (review 7:
+    tangent's ω1 drew 60 mm with 4 ticks in a taller box, its factor rounded coarse). The
+    layout's search sizes it by its curves, as any diagram (:meth:`used`)."""
+
+    filled = False
+
+    def axes(self, w: float, h: float) -> tuple[Axis, Axis]:
+        ax, ay = super().axes(w, h)
+        spare = max(h - self.BELOW - self.ABOVE, 1.0) * ay.k - (ay.hi - ay.lo)
+        if self.filled and spare > 0.0:
+            ay = replace(ay, lo=ay.lo - spare / 2.0, hi=ay.hi + spare / 2.0)
+        return ax, ay
+
+    def draw(self, d: Drawing, at: Placed) -> None:
+        self.filled = True
+        try:
+            super().draw(d, at)
+        finally:
+            self.filled = False
+
+
 def _omega(lk: Linkage, fw: Flywheel) -> Diagram:
     assert fw.omega_psi is not None and fw.omega_t is not None
     lo = float(min(fw.omega_t.min(), fw.omega_min))
     hi = float(max(fw.omega_t.max(), fw.omega_max))
-    pad = 0.25 * (hi - lo)
+    # room for ω_max's and ω_min's names over and under their lines; the axis then takes
+    # the rest of its box (:class:`_Filled`), so a wider pad would only coarsen its μ
+    pad = OMEGA_PAD * (hi - lo)
     delta = WORDS(
         "delta",
         given=_num(lk.dynamics.delta if lk.dynamics else 0.0, 3),
@@ -1956,7 +2149,7 @@ def _omega(lk: Linkage, fw: Flywheel) -> Diagram:
         Curve([0.0, 360.0], [fw.omega_max, fw.omega_max], "construction", label="ω_{max}"),
         Curve([0.0, 360.0], [fw.omega_min, fw.omega_min], "construction", label="ω_{min}"),
     ]
-    return Diagram(
+    return _Filled(
         AxisSpec("φ", WORDS("deg"), "φ", 0.0, 360.0, 60.0),
         AxisSpec("ω_1", WORDS("per_s"), "ω", lo - pad, hi + pad),
         curves,

@@ -55,6 +55,15 @@ class ForceScales:
     #: the share of the view's largest force under which its forces are named, not drawn
     #: (:func:`view_scales`)
     limit: float = 0.0
+    #: the shortest arrow (mm) drawn at a scale: a force shorter there goes to the next one
+    #: (:data:`SHORT_MM`, two arrowheads)
+    short: float = SHORT_MM
+    #: the least force (N) a view with insets draws at its own μ_F: a smaller one long enough
+    #: there too is drawn in its insets where that lets them draw more (:func:`view_scales`)
+    least: float = 0.0
+    #: how many times (≥ 1) the insets' longest arrow is as long as the view's own shortest:
+    #: 1 where no inset arrow is longer (:func:`view_scales`)
+    over: float = 1.0
 
     @property
     def k(self) -> float:
@@ -66,7 +75,7 @@ class ForceScales:
         if max(self.zero, self.negligible) >= F:
             return None
         for i, sc in enumerate(self.scales):
-            if F / sc.k >= SHORT_MM * (1.0 - tol.DERIVED):
+            if F / sc.k >= self.short * (1.0 - tol.DERIVED) and (i > 0 or self.least <= F):
                 return i
         return len(self.scales) - 1
 
@@ -205,55 +214,91 @@ def force_tiers(forces: Iterable[float], room_mm: float) -> ForceScales:
     return ForceScales(tuple(dict.fromkeys(scales)), zero, negligible)
 
 
-#: Forces under this share of a view's largest are named (with their values) under its
-#: caption, not drawn (:func:`view_scales`): their arrows at the view's μ_F would be shorter
-#: than a 200-mm arrow's drawing error (0,5 mm), and they change no result drawn.
+#: A reaction of a free body (or the lever's P_ур) under this share of the view's largest force
+#: is named (with its value) under its caption, not drawn (:func:`view_scales`): its arrow at
+#: the view's μ_F would be shorter than a 200-mm arrow's drawing error (0,5 mm). The view's
+#: other forces have no such floor: its insets draw what their μ_F can.
 VIEW_NEGLIGIBLE = 0.005
-#: The least room (mm) of the longest arrow in a view's insets (:func:`view_scales`).
-INSET_MM = 24.0
+#: The shortest arrow (mm) of a view's insets: a head (ARROW_LEN) and a shaft that shows its
+#: direction (5 mm rather than SHORT_MM's two heads: an inset with its longest arrow no longer
+#: than the view's shortest spans forces cap/5 apart, not cap/7, and leaves fewer out).
+VIEW_SHORT_MM = 5.0
+#: The shortest arrow (mm) at a view's own μ_F: two arrowheads (SHORT_MM), the length the
+#: drawing of links places clear of the links (an arrow 5–7 mm long is set along its link
+#: there, the compressor's F_D); a shorter force goes to the insets.
+VIEW_OWN_MM = SHORT_MM
+#: The longest arrow (mm) of a view's insets, where the view's own shortest arrow is longer
+#: (:func:`view_scales`).
+INSET_CAP_MM = 25.0
 
 
 def view_scales(forces: Iterable[float], room_mm: float, keep: Iterable[float] = ()) -> ForceScales:
-    """The force scales of a view that draws all its forces at ONE μ_F (a longer arrow is a
-    larger force everywhere in it) and its short ones at ONE more (a teacher accepts the
-    view's μ_F and one other): ``scales[0]`` puts the largest force into ``room_mm``; a force
-    shorter than :data:`SHORT_MM` there is drawn again in an inset (an ESKD detail of its
-    point) at ``scales[1]``, the one μ_F of all the view's insets: the coarsest that draws the
-    smallest of them at least :data:`SHORT_MM` long where that draws the largest within the
-    insets' room (:data:`TIER_LIMIT` times the view's longest arrow, at least
-    :data:`INSET_MM`: an inset's arrow no more than that much longer than the view's own),
-    else the finest that draws the largest within it. A force shorter than :data:`SHORT_MM`
-    there too, or under :data:`VIEW_NEGLIGIBLE` of the largest, is named, not drawn
-    (``negligible``: the largest such; ``limit``: the share of the largest under which they
-    are). A force of ``keep`` (a free body's reaction: its balance is what the view shows)
-    over :data:`VIEW_NEGLIGIBLE` of the largest is never named: the insets' μ_F draws the
-    smallest of them at least :data:`SHORT_MM` long, their room or not.
-    :meth:`ForceScales.tier` gives a force's scale (0: the view itself, 1: its insets).
-    Forces under ``tol.DERIVED`` of the largest are zero."""
+    """The force scales of a view that draws its forces at ONE μ_F and its short ones at ONE
+    more (a teacher accepts the view's μ_F and one other), so that a longer arrow is a larger
+    force throughout the view, across both scales as far as the GOST steps allow:
+
+    - ``scales[0]``, the view's μ_F, puts the largest force into ``room_mm`` (the coarsest GOST
+      step that does); every force at least :data:`VIEW_OWN_MM` long there is drawn in the
+      view itself;
+    - a shorter force is drawn again in an inset (an ESKD detail of its point) at
+      ``scales[1]``, the one μ_F of all the view's insets: the finest GOST step that draws the
+      largest of them no longer than the view's own shortest arrow nor :data:`INSET_CAP_MM`
+      (so no inset arrow outgrows an arrow of the view), where it draws as many of them as it
+      can at least :data:`VIEW_SHORT_MM` long;
+    - a force still shorter than :data:`VIEW_SHORT_MM` there is named, not drawn
+      (``negligible``: the largest such; ``limit``: its share of the largest force). With the
+      view's largest arrow ``L`` mm long, the smallest force drawn in the view is 7/``L`` of
+      the largest, and the insets take forces ``cap``/5 times smaller (``cap``: the insets'
+      longest arrow), so the share left out is about 35/(``L`` · ``cap``): 1.4 % for ``L`` =
+      100 mm and ``cap`` = 25 mm, several % in a small free body;
+    - a force of ``keep`` (a free body's reaction, the lever's P_ур: what the view shows) over
+      :data:`VIEW_NEGLIGIBLE` of the largest is never named: where the insets' μ_F would draw
+      the smallest of them shorter than :data:`VIEW_SHORT_MM`, it is the coarsest step that
+      draws it that long, the cap or not.
+
+    :meth:`ForceScales.tier` gives a force's scale (0: the view itself, 1: its insets, ``None``:
+    named). Forces under ``tol.DERIVED`` of the largest are zero."""
     mags = sorted((abs(F) for F in forces), reverse=True)
     big = mags[0] if mags else 0.0
     room = max(room_mm, 2.5 * SHORT_MM)
     if big <= 0.0:
-        return ForceScales((nice_factor(1.0, room, "F"),), insets=True)
+        return ForceScales((nice_factor(1.0, room, "F"),), insets=True, short=VIEW_SHORT_MM)
     zero = tol.DERIVED * big
-    floor = VIEW_NEGLIGIBLE * big
     top = nice_factor(big, room, "F")
-    short = SHORT_MM * (1.0 - tol.DERIVED)
-    small = sorted(F for F in mags if floor < F and F / top.k < short)
-    if not small:
-        return ForceScales((top,), zero, floor, insets=True, limit=VIEW_NEGLIGIBLE)
-    inset = max(TIER_LIMIT * big / top.k, INSET_MM)
-    k2 = nice_below(small[0], SHORT_MM)
-    if small[-1] / k2.k > inset * (1.0 + tol.DERIVED):
-        k2 = nice_factor(small[-1], inset, "F")
-        kept = [F for F in keep if floor < F and F / top.k < short]
-        if kept and min(kept) / k2.k < short:
-            k2 = nice_below(min(kept), SHORT_MM)
-    named = [F for F in small if F / k2.k < short]
-    negligible = max([floor, *named])
-    limit = max(VIEW_NEGLIGIBLE, SHORT_MM * k2.k / big) if named else VIEW_NEGLIGIBLE
-    scales = (top, k2) if len(named) < len(small) else (top,)
-    return ForceScales(scales, zero, negligible, insets=True, limit=limit)
+    short = VIEW_SHORT_MM * (1.0 - tol.DERIVED)
+    live = sorted(F for F in mags if zero < F)
+    # the view's own forces from ``live[j]`` up, the insets' below it: first every force at
+    # least VIEW_OWN_MM long in the view, then also those under INSET_CAP_MM, the shortest
+    # first, while that names fewer forces
+    first = next(j for j, F in enumerate(live) if F / top.k >= VIEW_OWN_MM * (1.0 - tol.DERIVED))
+    if first == 0:
+        return ForceScales((top,), zero, insets=True, short=VIEW_SHORT_MM)
+    kept = [F for F in keep if VIEW_NEGLIGIBLE * big < F]
+    best: tuple[tuple[int, int, int], Scale, list[float], float] | None = None
+    for j in range(first, len(live)):
+        if j > first and live[j - 1] / top.k >= INSET_CAP_MM:
+            break
+        # the insets' longest arrow: never longer than the view's own shortest
+        cap = min(live[j] / top.k, INSET_CAP_MM)
+        k = nice_factor(live[j - 1], cap, "F")
+        mine = [F for F in kept if live[j] > F]
+        over = 0
+        if mine and min(mine) / k.k < short:
+            k, over = nice_below(min(mine), VIEW_SHORT_MM), 1  # a reaction past the cap
+        named = [F for F in live[:j] if F / k.k < short]
+        if len(named) == j or k.k >= top.k * (1.0 - tol.DERIVED):
+            # no inset draws more: those VIEW_SHORT_MM long at the view's μ_F are drawn in it
+            k, named = top, [F for F in live[:j] if F / top.k < short]
+        score = (len(named), over, j)
+        if best is None or score < best[0]:
+            best = (score, k, named, live[j - 1] / k.k / (live[j] / top.k))
+    assert best is not None
+    (_, _, j), k2, named, ratio = best
+    scales = (top,) if k2 is top else (top, k2)
+    negligible = max(named, default=0.0)
+    limit = negligible / big
+    return ForceScales(scales, zero, negligible, insets=True, limit=limit, short=VIEW_SHORT_MM,
+                       least=live[j], over=max(1.0, ratio) if k2 is not top else 1.0)  # fmt: skip
 
 
 #: A force's arrow on a free body keeps this far (mm) from the centre lines of what is drawn

@@ -626,3 +626,39 @@ def drop_crossed(sheet: Sheet, index: Index, texts: Sequence[TextItem]) -> None:
         sheet.items[:] = [it for it in sheet.items if id(it) not in crossed]
         index.texts = [text_outline(t) for t in sheet.texts()]
         index._text_tree = None
+
+
+def clip_to_circle(items: Sequence[Item], c: XY, r: float) -> list[Item]:
+    """What of ``items`` (paper mm) lies inside the circle of centre ``c`` and radius ``r`` (a
+    detail view's content ends at its circle, ESKD 2.305): an open line cut where it leaves the
+    circle (each part inside a line of its own); a closed or filled shape, a circle or an arc
+    kept whole where it reaches inside; a text where the middle of its box lies inside; the
+    rest left out."""
+    disc = Point(c).buffer(r, quad_segs=64)
+    out: list[Item] = []
+    for it in items:
+        if isinstance(it, TextItem):
+            if disc.contains(text_outline(it).centroid):
+                out.append(it)
+            continue
+        line = centre_line(it)
+        if disc.contains(line):
+            out.append(it)
+        elif not disc.intersects(line):
+            continue
+        elif isinstance(it, Polyline) and not it.closed and not it.fill:
+            cut = line.intersection(disc)
+            for part in getattr(cut, "geoms", [cut]):
+                if isinstance(part, LineString) and not part.is_empty and part.length > 0.0:
+                    pts = tuple((float(x), float(y)) for x, y in part.coords)
+                    out.append(dataclasses.replace(it, points=pts))
+        else:
+            out.append(it)
+    return out
+
+
+def within_hull(pts: Sequence[XY], other: Sequence[XY], grow: float) -> bool:
+    """Whether every one of the points ``pts`` lies within the convex hull of ``other`` grown
+    by ``grow`` (paper mm)."""
+    hull = shapely.MultiPoint([tuple(q) for q in other]).convex_hull.buffer(grow)
+    return all(hull.covers(Point(q)) for q in pts)

@@ -697,11 +697,14 @@ LANE_OVERLAP_MM = 3.0
 LANE_PASSES = 2
 
 
-#: The Cyrillic capitals drawn as Latin ones (a detail lettered with one reads as a point).
+#: The Cyrillic capitals that read as Latin ones (a detail lettered with one reads as a point):
+#: those drawn alike, and Б, Д, which differ from B, D by a stroke and are read by the same
+#: name (review 7: tangent's detail "Д" beside its point "D").
 _LATIN_LIKE = {
     chr(0x410 + i): c
-    for i, c in zip((0, 2, 5, 10, 12, 13, 14, 16, 17, 18, 19, 21), "ABEKMHOPCTYX", strict=True)
-}
+    for i, c in zip((0, 1, 2, 4, 5, 10, 12, 13, 14, 16, 17, 18, 19, 21), "ABBDEKMHOPCTYX",
+                    strict=True)
+}  # fmt: skip
 
 
 def detail_letters(used: Iterable[str] = ()) -> Iterator[str]:

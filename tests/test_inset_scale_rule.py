@@ -1,0 +1,275 @@
+"""A forces-sheet view's inset μ_F and its "не показаны" share (issue 27, review 7 items 2
+and 3): in the mechanism view, each group's free body and Zhukovsky's lever, no arrow of an
+inset is longer than the view's own shortest arrow (review 7: the oscillator's Φ5 = 4 N drawn
+81.5 mm in an inset beside G2 = 25.5 N at 25.5 mm; the shaper's G5 = 245 N at 61 mm beside
+F_D = 2200 N at 44 mm), so that a longer arrow is a larger force across both scales; and the
+forces left out are a small share of the view's largest (review 7: the yoke's group (4, 5)
+left out G5 and Φ5 "менее 23 %").
+
+Each forces sheet is drawn with its views' force scales and every arrow recorded: the view's
+own through ``linkage_forces.force``, its insets' through ``insets.force``."""
+
+from __future__ import annotations
+
+import math
+import re
+import tomllib
+from pathlib import Path
+from typing import Any
+
+import pytest
+
+from geomcad.linkage import parse
+from geomcad.linkage.solution import solve
+from geomcad.sheet.drawing import SHORT_MM
+from geomcad.sheet.loads import INSET_CAP_MM, VIEW_NEGLIGIBLE, VIEW_SHORT_MM, view_scales
+from geomcad.sheet.model import TextItem
+from geomcad.sheet.scale import nice_below, nice_factor
+
+ROOT = Path(__file__).resolve().parent.parent
+FILES = [
+    *(
+        ROOT / "examples" / f"{n}.toml"
+        for n in ("shaper", "crusher", "slider-crank", "sixbar-2013-6")
+    ),
+    *sorted((ROOT / "tests" / "linkages_layout").glob("*.toml")),
+]
+
+#: The share of a view's largest force under which the forces it leaves out are, on every
+#: view of these files: 5 mm at the insets' μ_F, whose longest arrow is the view's shortest
+#: (a free body's arrows are 12–25 mm long in its small box: about 25/(12 · 25) … 10/12 of
+#: the largest in the worst case, 0.5–2 % where the view's arrows are long). The previous rule
+#: stated 23 % (the yoke's group (4, 5)).
+SHARE_MAX = 0.08
+
+#: An unseen-style file written for this test: a crank-rocker whose rocker's arm drives a
+#: vertical slider through a rod (RRR + RRP), a heavy slider and a moment on the rocker
+#: against light links (forces over three decades in one view), the loads at position 5.
+OWN = """
+title = "Подъёмник с коромыслом и вертикальным ползуном"
+[frame]
+O = [0.0, 0.0]
+C = [0.26, -0.08]
+[drive]
+pivot = "O"
+joint = "A"
+length = 0.06
+omega = 14.0
+positions = 12
+output = "D"
+[[group]]
+kind = "RRR"
+links = [2, 3]
+joint = "B"
+ends = ["A", "C"]
+lengths = [0.24, 0.15]
+assembly = "left"
+[[point]]
+name = "E"
+link = 3
+from = "C"
+toward = "B"
+along = -0.09
+[[group]]
+kind = "RRP"
+links = [4, 5]
+joint = "D"
+end = "E"
+length = 0.22
+guide = { through = [0.30, 0.0], angle = 90.0 }
+assembly = "forward"
+[links.2]
+mass = 1.6
+J = 0.01
+[links.3]
+mass = 4.0
+J = 0.02
+[links.4]
+mass = 1.0
+J = 0.005
+[links.5]
+mass = 60.0
+[[load]]
+point = "D"
+value = 3000.0
+stroke = "working"
+working = "forward"
+[[load]]
+link = 3
+moment = 25.0
+stroke = "working"
+[forces]
+position = 5
+"""
+
+
+def _cases() -> list[Any]:
+    out = [pytest.param(p.read_text("utf-8"), id=p.stem) for p in FILES]
+    return [*out, pytest.param(OWN, id="own-lift")]
+
+
+def _draw(text: str, mp: pytest.MonkeyPatch) -> dict[str, Any] | None:
+    """The forces sheet of ``text`` (``None`` where the file has none) with its views (view,
+    force scales) and their arrows (viewport, |F|, mm, in an inset or not) recorded."""
+    from geomcad.sheet import insets as ins_mod
+    from geomcad.sheet import linkage_forces as lf
+
+    rec: dict[str, Any] = {"views": [], "arrows": []}
+    inside: list[Any] = []
+
+    def wrap(orig: Any) -> Any:
+        def rec_force(v: Any, at: Any, F: Any, k_F: float, *a: Any, **kw: Any) -> Any:
+            out = orig(v, at, F, k_F, *a, **kw)
+            if out is not None:
+                w = inside[-1] if inside else v
+                rec["arrows"].append((w, F.norm, math.dist(*out), bool(inside)))
+            return out
+
+        return rec_force
+
+    mp.setattr(lf, "force", wrap(lf.force))
+    mp.setattr(ins_mod, "force", wrap(ins_mod.force))
+    orig_placed = lf._ByScale.placed
+
+    def placed(self: Any, at: Any) -> Any:
+        fs = orig_placed(self, at)
+        rec["views"].append((self, at, fs))
+        return fs
+
+    mp.setattr(lf._ByScale, "placed", placed)
+    orig_draw = ins_mod.Insets.draw
+
+    def draw(self: Any, d: Any, v: Any, *a: Any, **kw: Any) -> Any:
+        inside.append(v)
+        try:
+            return orig_draw(self, d, v, *a, **kw)
+        finally:
+            inside.pop()
+
+    mp.setattr(ins_mod.Insets, "draw", draw)
+    sheets = lf.force_sheets(solve(parse(tomllib.loads(text))), "x")
+    if not sheets:
+        return None
+    sheet = sheets[0][1]
+    rec["sheet"] = sheet
+    rec["views"] = [r for r in rec["views"] if r[1].viewport.sheet is sheet]
+    rec["arrows"] = [r for r in rec["arrows"] if r[0].sheet is sheet]
+    return rec
+
+
+@pytest.fixture(scope="module", params=_cases())
+def drawn(request: pytest.FixtureRequest) -> dict[str, Any]:
+    with pytest.MonkeyPatch.context() as mp:
+        rec = _draw(request.param, mp)
+    if rec is None:
+        pytest.skip("no forces sheet")
+    return rec
+
+
+def test_no_inset_arrow_outgrows_the_views_own_shortest(drawn: dict[str, Any]) -> None:
+    assert drawn["views"]
+    for view, at, fs in drawn["views"]:
+        v = at.viewport
+        own = [mm for w, _, mm, inset in drawn["arrows"] if w is v and not inset]
+        # the view's own arrows: each at least VIEW_SHORT_MM long
+        assert own, type(view).__name__
+        assert min(own) >= VIEW_SHORT_MM * (1.0 - 1e-6), (type(view).__name__, min(own))
+        if not fs.tiered:
+            continue
+        # the insets' arrows: each force short at the view's μ_F (or under its least) …
+        k2 = fs.scales[1].k
+        mine = [F for F in view._forces if fs.tier(F) == 1]
+        assert mine
+        longest = max(mine) / k2
+        assert min(mine) / k2 >= VIEW_SHORT_MM * (1.0 - 1e-6)
+        # … none longer than the view's shortest, nor than INSET_CAP_MM …
+        kept = [F for F in view._keep if fs.tier(F) == 1]
+        if longest > min(own) * (1.0 + 1e-6) or longest > INSET_CAP_MM * (1.0 + 1e-6):
+            # … but where a reaction (a free body's, the lever's P_ур) needs a finer μ_F to
+            # be drawn at all: the coarsest that draws the smallest of them
+            assert kept, (type(view).__name__, longest, min(own))
+            assert k2 == nice_below(min(kept), VIEW_SHORT_MM).k
+        else:
+            # the finest GOST step that keeps the longest within them: one step finer
+            # would draw it past the view's shortest arrow or the cap
+            cap = min(min(own), INSET_CAP_MM)
+            finer = nice_below(k2 / 1.1, 1.0).k
+            assert max(mine) / finer > cap * (1.0 - 1e-6), (type(view).__name__, k2, finer)
+
+
+def test_insets_drawn_as_their_scales_say(drawn: dict[str, Any]) -> None:
+    """The recorded arrows: in the view at its μ_F, in an inset at the insets' one, and no
+    inset arrow longer than the view's shortest (the drawn lengths, not the rule's)."""
+    for view, at, fs in drawn["views"]:
+        v = at.viewport
+        own = [(F, mm) for w, F, mm, inset in drawn["arrows"] if w is v and not inset]
+        for F, mm in own:
+            assert math.isclose(mm, F / fs.k, rel_tol=1e-6)
+        if not fs.tiered:
+            continue
+        k2 = fs.scales[1].k
+        ins_mm = [F / k2 for F in view._forces if fs.tier(F) == 1]
+        kept = [F for F in view._keep if fs.tier(F) == 1]
+        if not kept or k2 != nice_below(min(kept), VIEW_SHORT_MM).k:
+            assert max(ins_mm) <= min(mm for _, mm in own) * (1.0 + 1e-6)
+
+
+def test_forces_left_out_are_a_small_share_and_stated(drawn: dict[str, Any]) -> None:
+    sheet = drawn["sheet"]
+    texts = " ".join(
+        "".join(r.text for r in it.runs) for it in sheet.items if isinstance(it, TextItem)
+    )
+    for view, _, fs in drawn["views"]:
+        big = max(view._forces)
+        left = [F for F in view._forces if fs.zero < F and fs.tier(F) is None]
+        # a reaction (the lever's P_ур) is never left out unless negligible
+        for F in view._keep:
+            assert fs.tier(F) is not None or VIEW_NEGLIGIBLE * big >= F
+        if not left:
+            continue
+        assert max(left) / big <= SHARE_MAX, (type(view).__name__, max(left) / big)
+        # each one too short at the insets' μ_F (the view's, without insets)
+        k = fs.scales[-1].k
+        assert all(F / k < VIEW_SHORT_MM for F in left)
+        # the share stated is above the largest left out and within 2 figures of it
+        assert fs.limit * (1.0 + 1e-9) >= max(left) / big
+    shares = [float(s.replace(",", ".")) for s in re.findall(r"менее ([\d,]+) %", texts)]
+    assert all(s <= SHARE_MAX * 100.0 for s in shares), shares
+
+
+@pytest.mark.parametrize(
+    ("forces", "room", "keep"),
+    [
+        ([63.8, 25.5, 23.5, 19.6, 11.8, 9.28, 4.08, 3.0, 2.47, 0.68], 64.0, ()),  # oscillator
+        ([2200.0, 245.3, 148.5, 98.1, 29.4, 17.7], 44.0, ()),  # the shaper's mechanism
+        ([6212.0, 5632.0, 2490.0, 45.5, 31.4, 16.7, 15.7], 15.5, (6212.0, 5632.0)),  # yoke
+        ([3924.0, 1087.0, 1025.0, 588.6, 196.2, 147.2, 120.5, 89.0], 24.0, ()),  # crusher
+        ([4200.0, 2571.0, 1617.0, 702.0, 35.3, 21.6, 17.6, 15.7, 14.7], 21.0, (35.3,)),
+    ],
+)
+def test_view_scales_rule(forces: list[float], room: float, keep: tuple[float, ...]) -> None:
+    fs = view_scales([*forces, 1e-14], room, keep)
+    big = max(forces)
+    top = nice_factor(big, max(room, 2.5 * SHORT_MM), "F")  # view_scales' least room
+    assert fs.k == top.k and fs.tier(1e-14) is None
+    assert len(fs.scales) <= 2
+    own = [F for F in forces if fs.tier(F) == 0]
+    ins = [F for F in forces if fs.tier(F) == 1]
+    left = [F for F in forces if fs.tier(F) is None]
+    # every force long enough at the view's μ_F and over INSET_CAP_MM there is the view's own
+    assert all(fs.tier(F) == 0 for F in forces if F / top.k >= INSET_CAP_MM)
+    assert all(F / top.k >= VIEW_SHORT_MM * (1.0 - 1e-9) for F in own)
+    # the tiers are bands: left out < insets < the view's own
+    assert all(a < b for a in left for b in ins + own)
+    assert all(a < b for a in ins for b in own)
+    if ins:
+        k2 = fs.scales[1].k
+        assert all(F / k2 >= VIEW_SHORT_MM * (1.0 - 1e-9) for F in ins)
+        kept = [F for F in keep if F in ins]
+        if not kept or min(kept) / nice_factor(max(ins), min(min(own) / top.k, INSET_CAP_MM),
+                                               "F").k >= VIEW_SHORT_MM:  # fmt: skip
+            assert max(ins) / k2 <= min(min(own) / top.k, INSET_CAP_MM) * (1.0 + 1e-9)
+    # the reactions are drawn
+    assert all(fs.tier(F) is not None for F in keep)
+    if left:
+        assert fs.limit == pytest.approx(max(left) / big)
