@@ -823,6 +823,11 @@ def plan_details(
     return out
 
 
+def _over(ext: Extent, room: tuple[float, float], k: float) -> float:
+    """How far (mm at μ_F ``k``) the extent ``ext`` outgrows ``room`` (model units)."""
+    return max(ext[2] - ext[0] - room[0], ext[3] - ext[1] - room[1], 0.0) / k
+
+
 def _one_spot(poly: ForcePolygon, runs: list[list[str]], k: float) -> list[list[str]]:
     """The runs of ``poly`` drawn at μ_F ``k`` with those whose circles on the plan would
     overlap (:func:`detail_spots`) made one, the vectors between them included: one spot of
@@ -1261,14 +1266,21 @@ class Polygon(View):
                 # its known forces in the order that keeps its short vectors one run
                 last, role = self.layers[-1]
                 self.layers[-1] = (regroup(last, k_ref), role)
-                within = None if room is None else (room[0] * k_ref, room[1] * k_ref)
-                self.details, self.thin, self._ext = self._with_details(k_ref, iter(_ANY), within)
+
+                # the room given is the box's less its caption (:meth:`note_room` not counted
+                # off): the lines this plan adds under its caption take their share of it
+                def within() -> tuple[float, float] | None:
+                    if room is None:
+                        return None
+                    return room[0] * k_ref, max(room[1] - self.note_room(), 0.0) * k_ref
+
+                self.details, self.thin, self._ext = self._with_details(k_ref, iter(_ANY), within())
                 if self._lists(k_ref):
                     # what the details cannot show named under the plan, as a view names
                     # what its insets leave out (review 7, item 4): never a second scale
                     self.listed_line = True
                     self.details, self.thin, self._ext = self._with_details(
-                        k_ref, iter(_ANY), within
+                        k_ref, iter(_ANY), within()
                     )
 
     def _lists(self, k_ref: float) -> bool:
@@ -1291,17 +1303,16 @@ class Polygon(View):
         self, k: float, letters: Iterator[str], room: tuple[float, float] | None = None
     ) -> tuple[list[Detail], bool, Extent]:
         """The details, thinness and extent (with the details' slots) of the polygon at
-        μ_F ``k``."""
+        μ_F ``k``. Where the details at their μ_F leave the whole larger than ``room`` and a
+        coarser one fits them in the room the plan leaves free beside or under it, at that
+        one (the vectors it makes too short are named under the caption): a detail never
+        pushes its plan to a coarser μ_F than the plan's box holds (the crusher's group
+        (4, 5): a detail of G4, Ф4 at 2,5 N/mm, 72 mm high, under a plan 99 mm high in a
+        162 mm box; drawn at 4 N/mm it fits)."""
         poly = self.layers[-1][0]
         x0, y0, x1, y1 = _bbox(q for pv in poly.vectors for q in (pv.tail, pv.head))
         # a detail no larger than its plan as drawn (nor than DETAIL_BOUND_MM)
         bound = max(max(x1 - x0, y1 - y0) / k, DETAIL_BOUND_MM)
-        dropped: list[str] = []
-        # a run with nothing to show makes no detail where the line under the caption is kept
-        details = plan_details(poly, k, letters, self.floor, bound,
-                               dropped if self.listed_line else None)  # fmt: skip
-        self.noted = [n for dt in details for n in dt.listed] if self.listed_line else []
-        self.lined = dropped
         thin = len(self.layers) == 1 and is_thin(poly, k)
         if thin:  # the room of the vectors side by side (their labels in the margin)
             grow = (len(poly.vectors) - 1) * OFFSET_MM / 2.0 * k
@@ -1309,8 +1320,39 @@ class Polygon(View):
         for poly2, _ in self.layers[:-1]:
             b = _bbox(q for pv in poly2.vectors for q in (pv.tail, pv.head))
             x0, y0, x1, y1 = min(x0, b[0]), min(y0, b[1]), max(x1, b[2]), max(y1, b[3])
-        ext = place_details(poly, details, k, (x0, y0, x1, y1), room, self.names, self.noted)
+        plan = (x0, y0, x1, y1)
+        if room is not None:
+            _, ext = self._placed(k, iter(_ANY), bound, plan, room)
+            # the room free beside or under the plan, less a detail's slot round its run
+            free = max(room[0] - (x1 - x0), room[1] - (y1 - y0)) / k
+            cap = DETAIL_CAPTION_H * 1.5 + 1.5 + DETAIL_CAPTION_H * DETAIL_LINES
+            tight = free - 2.0 * DETAIL_PAD_MM - cap - DETAIL_GAP_MM
+            if _over(ext, room, k) > 0.0 and 2.0 * STUB_MM + DETAIL_MM < tight < bound:
+                _, ext2 = self._placed(k, iter(_ANY), tight, plan, room)
+                if _over(ext2, room, k) < _over(ext, room, k):
+                    bound = tight
+        details, ext = self._placed(k, letters, bound, plan, room)
         return details, thin, ext
+
+    def _placed(
+        self,
+        k: float,
+        letters: Iterator[str],
+        bound: float,
+        plan: Extent,
+        room: tuple[float, float] | None,
+    ) -> tuple[list[Detail], Extent]:
+        """The details of the polygon at μ_F ``k``, none larger than ``bound`` (mm), placed
+        round its extent ``plan`` within ``room``, and the whole's extent."""
+        poly = self.layers[-1][0]
+        dropped: list[str] = []
+        # a run with nothing to show makes no detail where the line under the caption is kept
+        details = plan_details(poly, k, letters, self.floor, bound,
+                               dropped if self.listed_line else None)  # fmt: skip
+        self.noted = [n for dt in details for n in dt.listed] if self.listed_line else []
+        self.lined = dropped
+        ext = place_details(poly, details, k, plan, room, self.names, self.noted)
+        return details, ext
 
     def extent(self) -> Extent | None:
         return self._ext
@@ -1332,8 +1374,13 @@ class Polygon(View):
         return super().caption(scale)
 
     def title_room(self) -> float:
+        return super().title_room() + self.note_room()
+
+    def note_room(self) -> float:
+        """The height (mm) of the lines under the caption (the note of the vectors left out,
+        the line naming what the details cannot show)."""
         lines = bool(self.note) + self.listed_line
-        return super().title_room() + (NOTE_H * TITLE_LEAD * lines + NOTE_GAP if lines else 0.0)
+        return NOTE_H * TITLE_LEAD * lines + NOTE_GAP if lines else 0.0
 
     def spill(self, k: float, inner: Extent) -> float:
         """How far (mm) the polygon with its details, planned again at the μ_F ``k`` it is
