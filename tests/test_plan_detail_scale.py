@@ -89,3 +89,41 @@ def test_a_two_force_plan_is_drawn_short(path: Path, monkeypatch: pytest.MonkeyP
         big = max(pv.magnitude for pv in poly.vectors)
         assert big / k <= TWO_FORCE_MM * (1.0 + 1e-9), (path.stem, p.title, big / k)
         assert big / k >= SLIVER_MM / 2.0 * (1.0 - 1e-9), (path.stem, p.title, big / k)
+
+
+#: A detail's longest vector is drawn at most this long (mm; review 8, item 3: the
+#: oscillator's G4 = 24 N drawn 59 mm in a detail beside G5 = 64 N at 16 mm in its plan, the
+#: yoke's G5 = 31 N at 15.7 mm beside F_D = 2490 N at 12.4 mm).
+DETAIL_LONGEST_MM = 30.0
+
+
+@pytest.mark.parametrize("path", FILES, ids=lambda p: p.stem)
+def test_a_detail_is_not_drawn_longer_than_its_plan_needs(
+    path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """A detail enlarges its plan's short run at the coarsest μ_F that keeps its longest
+    vector within DETAIL_LONGEST_MM, never at a finer one: the detail copy of a small force is
+    not drawn several times longer than the plan's own vectors; and at the next coarser μ_F of
+    the series its shortest vector drawn would be shorter than two arrowheads, or none of its
+    vectors would be drawn longer than at that one, or it would enlarge its plan less than
+    DETAIL_LEAST times (it is the coarsest that still reads)."""
+    from geomcad.sheet.drawing import SHORT_MM
+    from geomcad.sheet.scale import nice_factor
+    from geomcad.sheet.views import DETAIL_LEAST
+
+    for p, at, _ in _plans(path, monkeypatch):
+        poly = p.layers[-1][0]
+        for dt in p.details:
+            drawn = [poly[n].magnitude / dt.k for n in dt.run if n not in dt.listed]
+            drawn = [mm for mm in drawn if mm > 0.0]
+            if not drawn:
+                continue
+            assert max(drawn) <= DETAIL_LONGEST_MM * (1.0 + 1e-9), (path.stem, p.title, drawn)
+            coarser = nice_factor(dt.k * 1.01, 1.0, "F").k
+            shortest = min(drawn) * dt.k / coarser
+            least = coarser * DETAIL_LEAST > at.viewport.scale.k * (1.0 + 1e-9)
+            assert (
+                shortest < SHORT_MM * (1.0 - 1e-9)
+                or max(drawn) * dt.k / coarser > DETAIL_LONGEST_MM
+                or least
+            ), (path.stem, p.title, dt.k, coarser, min(drawn))

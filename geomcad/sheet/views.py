@@ -653,11 +653,14 @@ DETAIL_CIRCLE_MM = 3.0
 #: A polygon's largest vector is drawn at most this long at its reference μ_F (mm), at which
 #: the room of its details is reckoned for the layout.
 POLY_MM = 110.0
-#: A detail's shortest vector is drawn at least this long (mm) …
-DETAIL_MM = 8.0
-#: … and its longest at most this long, else its run is cut into two details side by side
-#: (one level: no detail is taken from a detail).
-DETAIL_MAX_MM = 60.0
+#: A detail is drawn at the coarsest μ_F of the series that draws its shortest vector at
+#: least this long (mm; an arrow of two arrowheads, readable), never a finer one …
+DETAIL_MM = SHORT_MM
+#: … and its longest at most this long (mm): a detail copy is not drawn several times longer
+#: than its plan's own vectors (review 8, item 3: the oscillator's G4 = 24 N at 59 mm in a
+#: detail beside G5 = 64 N at 16 mm in its plan); what it then draws too short is named under
+#: the plan's caption (one level: no detail is taken from a detail).
+DETAIL_MAX_MM = 30.0
 #: A detail enlarges the view it is taken from at least this many times (a detail barely
 #: larger than its polygon is not worth its room).
 DETAIL_LEAST = 4.0
@@ -862,13 +865,21 @@ def details_k(
     :data:`DETAIL_MAX_MM`, or outgrow ``bound`` mm (0: none) with its joined lines: the
     finest factor 1, 2, 2.5, 4, 5 × 10^n that keeps every run within both. What is then too
     short in a detail is named under the plan (:attr:`Detail.listed`), never drawn at a
-    second detail μ_F."""
-    kd = detail_k([m for run in mags for m in run], k_ref)
+    second detail μ_F. Where that leaves some too short, the μ_F is the coarsest that still
+    draws the others :data:`DETAIL_MM` long (those it names no longer set it: review 8, item
+    3, the crusher's G4 = 147 N drawn 29 mm at 5 N/mm because R^τ34 = 17 N, named, would have
+    wanted 2 N/mm; at 10 N/mm G4 is 15 mm, Ф4 9 mm)."""
+    every = [m for run in mags for m in run]
+    readable = kd = detail_k(every, k_ref)
     for run, size in zip(mags, sizes, strict=True):
         kd = max(kd, nice_factor(max(run), DETAIL_MAX_MM, "F").k)
         room = bound - 2.0 * STUB_MM
         if bound > 0.0 and room > 0.0 and size > 0.0:
             kd = max(kd, nice_factor(size, room, "F").k)
+    if kd > readable * (1.0 + tol.REL_LENGTH):
+        shown = [m for m in every if m >= DETAIL_MM * kd * (1.0 - tol.REL_LENGTH)]
+        if shown:
+            kd = max(kd, detail_k(shown, k_ref))
     return kd
 
 
