@@ -69,8 +69,9 @@ def test_no_force_is_a_dot(path: Path) -> None:
     assert not any("(·)" in t for t in texts)
     names = {t.text.rstrip("*") for t in sheet.texts() if t.role == "label"}
     # or named, too short in a plan's detail, on the line under the plan's caption
-    noted = " ".join(t.text for t in sheet.texts() if t.text.startswith(_LISTED))
-    names |= _named(noted)
+    for t in sheet.texts():  # each plan's line (one per plan: its names after its own colon)
+        if t.text.startswith(_LISTED):
+            names |= _named(t.text)
 
     _, f, _ = force_position(s)
     big = max(r.force.norm for r in f.reactions)
