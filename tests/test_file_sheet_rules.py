@@ -68,6 +68,10 @@ def test_no_force_is_a_dot(path: Path) -> None:
     texts = [t.text for t in sheet.texts()]
     assert not any("(·)" in t for t in texts)
     names = {t.text.rstrip("*") for t in sheet.texts() if t.role == "label"}
+    # or named, too short in a plan's detail, on the line under the plan's caption
+    for t in sheet.texts():  # each plan's line (one per plan: its names after its own colon)
+        if t.text.startswith(_LISTED):
+            names |= _named(t.text)
 
     _, f, _ = force_position(s)
     big = max(r.force.norm for r in f.reactions)
@@ -85,13 +89,22 @@ def test_no_force_is_a_dot(path: Path) -> None:
         assert re.search(rf"μF\*{{{m}}} = \d", caption), m
 
 
+#: The start of the line under a force plan's caption that names what its details cannot show.
+_LISTED = ("на выносн", "короче ")
+
+
+def _named(text: str) -> set[str]:
+    """The names in the list ("…: G4 = 3,9 Н, Ф4 = 6,1 Н" or "…: G4, Ф4") ending ``text``."""
+    return {item.split(" = ")[0].strip() for item in text.rsplit(": ", 1)[-1].split(", ")}
+
+
 @pytest.mark.parametrize("path", LINKAGES, ids=lambda p: p.stem)
 def test_no_polygon_vector_is_a_dot(path: Path) -> None:
     """Every non-zero vector of every force polygon is an arrow at least two arrowheads long at
     a μ_F the sheet states: at the polygon's own, or, too short there, in a detail at its
     larger μ_F (the vector's length on the paper is |F|/μ_F of that arrow), or, too short
-    even in a detail no larger than its plan, listed with its value under the detail's
-    caption."""
+    even in a detail no larger than its plan (at the plan's one detail μ_F), named with its
+    value under the plan's caption (or the detail's)."""
     from layout import unstated_vectors
 
     from geomcad.sheet.views import WORDS
@@ -108,13 +121,13 @@ def test_no_polygon_vector_is_a_dot(path: Path) -> None:
     polys = [poly for gf in f.groups for _, poly in gf.polygons]
     big = max(pv.magnitude for poly in polys for pv in poly.vectors)
     head = WORDS("detail_listed", mm=fmt_number(SHORT_MM), items="")
-    lists = [t.text for t in sheet.texts() if t.text.startswith(head)]
+    lists = [t.text for t in sheet.texts() if t.text.startswith((head, *_LISTED))]
     for poly in polys:
         for pv in poly.vectors:
             if pv.magnitude > 1e-9 * big:
                 at = [k for mm, k in arrows if math.isclose(mm * k, pv.magnitude, rel_tol=1e-6)]
                 plain = "".join(r.text for r in parse(load_name(pv.name)))
-                listed = [t for t in lists if f"{plain} = " in t]
+                listed = [t for t in lists if f"{plain} = " in t or plain in _named(t)]
                 assert at or listed, (pv.name, pv.magnitude)
 
 

@@ -25,7 +25,9 @@ from geomcad.sheet.frame import TitleBlock
 from geomcad.sheet.linkage_forces import POLY_MM, force_position, load_sides
 from geomcad.sheet.loads import MOST_TIERS, NEGLIGIBLE, TIER_LIMIT, force_tiers
 from geomcad.sheet.model import CircleItem, Polyline, TextItem
+from geomcad.sheet.scale import nice_below
 from geomcad.sheet.text import box as text_box
+from geomcad.sheet.text import parse
 from geomcad.sheet.views import (
     DETAIL_LEAST,
     DETAIL_MAX_MM,
@@ -89,11 +91,13 @@ def test_regroup_lays_the_short_loads_off_as_one_run() -> None:
     assert regroup(new, k) is new
 
 
-def test_details_are_one_level_beside_the_polygon() -> None:
-    """A run of forces over three decades: cut into details of one level (no detail is taken
-    from a detail), each at one stated μ_F at least DETAIL_LEAST times the polygon's with its
-    shortest arrow at least two arrowheads and its longest at most DETAIL_MAX_MM; their circles
-    on the polygon, one spot lettered with both; every vector an arrow at its stated μ_F."""
+def test_details_are_one_level_at_one_scale_beside_the_polygon() -> None:
+    """A run of forces over three decades (review 7, item 4: plans with details at
+    4 / 0,5 / 0,05 / 1 N/mm): its details are of one level (no detail is taken from a
+    detail) and all at ONE stated μ_F, at least DETAIL_LEAST times the polygon's, with the
+    longest at most DETAIL_MAX_MM; each circle on the polygon carries one letter; every vector
+    is an arrow at a μ_F the plan states, or, too short in the detail, named with its value
+    on the line under the plan's caption (never a second detail scale)."""
     vs = chain([5000.0, 3.0, 40.0, 400.0, 7.0], ["F0", "F1", "F2", "F3", "F4"])
     vs.append(PlanVector("R", vs[-1].head, Vec(0.0, 0.0)))
     poly = ForcePolygon(Vec(0.0, 0.0), tuple(vs), ())
@@ -102,30 +106,54 @@ def test_details_are_one_level_beside_the_polygon() -> None:
     lay = compose(d, p)
     sheet = d.finish()
     k = lay[p].scale.k
-    assert len(p.details) >= 2 and len({dt.letter for dt in p.details}) == len(p.details)
-    assert not any(hasattr(dt, "inner") for dt in p.details)
+    assert p.details and len({dt.letter for dt in p.details}) == len(p.details)
+    assert len({dt.k for dt in p.details}) == 1  # one detail μ_F per plan
     drawn = p.layers[-1][0]
     runs = [n for dt in p.details for n in dt.run]
     assert len(runs) == len(set(runs))  # each short vector in exactly one detail
     for dt in p.details:
         assert dt.k * DETAIL_LEAST <= k * (1.0 + 1e-9)
         mags = [drawn[n].magnitude for n in dt.run]
-        assert min(mags) / dt.k >= SHORT_MM and max(mags) / dt.k <= DETAIL_MAX_MM
-        # its slot is clear of every other detail's
-        for other in p.details:
-            if other is not dt:
-                a, b = dt.slot, other.slot
-                assert a[2] <= b[0] or b[2] <= a[0] or a[3] <= b[1] or b[3] <= a[1]
+        assert max(mags) / dt.k <= DETAIL_MAX_MM
+        assert set(dt.listed) == {n for n in dt.run if drawn[n].magnitude / dt.k < SHORT_MM}
+    listed = [n for dt in p.details for n in dt.listed]
+    assert listed == p.noted  # named under the caption, not under a detail's
+    listed += p.lined  # and those of a run with nothing to show in a detail
+    notes = [t.text for t in sheet.texts() if "не показан" in t.text]
+    assert len(notes) == (1 if listed else 0)
+    for n in listed:
+        assert f"{n} = " in notes[0]
     arrows = [(math.dist(t, h), sc.k) for t, h, sc in sheet.scaled]
     assert min(mm for mm, _ in arrows) >= SHORT_MM * (1.0 - 1e-9)
+    assert {sc for _, sc in arrows} <= {k, p.details[0].k}
     for pv in poly.vectors:
-        assert any(math.isclose(mm * kd, pv.magnitude, rel_tol=1e-6) for mm, kd in arrows), pv
-    # the pieces of one run are marked by one circle lettered with both
+        shown = any(math.isclose(mm * kd, pv.magnitude, rel_tol=1e-6) for mm, kd in arrows)
+        assert shown or pv.name in listed, pv
+    # each circle on the plan carries the letter of one detail
     v = lay[p].viewport
     assert v is not None
     spots = detail_spots(v, drawn, p.details)
-    assert len(spots) < len(p.details)
-    assert any(", " in letters for _, _, letters in spots)
+    assert len(spots) == len(p.details)
+    assert not any(", " in letters for _, _, letters in spots)
+
+
+def test_runs_at_one_spot_of_the_plan_are_one_detail_with_one_letter() -> None:
+    """Two runs of short vectors whose circles on the plan would overlap (a long vector
+    between them barely two arrowheads long) are one detail, the vector between them
+    included, lettered with one letter (review 7: one circle lettered "П1, Ш1, Э1"); runs
+    far apart stay two details at one μ_F."""
+    from geomcad.sheet.views import short_runs
+
+    k = 50.0
+    for between, spots in ((360.0, 1), (1500.0, 2)):
+        vs = chain([5000.0, 340.0, between, 340.0, 3000.0], ["F0", "F1", "F2", "F3", "F4"])
+        vs.append(PlanVector("R", vs[-1].head, Vec(0.0, 0.0)))
+        poly = ForcePolygon(Vec(0.0, 0.0), tuple(vs), ())
+        assert short_runs(poly.vectors, SHORT_MM * k) == [["F1"], ["F3"]]
+        details = plan_details(poly, k, iter("БГД"))
+        assert len(details) == spots and len({dt.k for dt in details}) == 1
+        if spots == 1:
+            assert details[0].run == ("F1", "F2", "F3") and details[0].letter == "Б"
 
 
 def test_a_negligible_vector_is_named_under_the_caption_not_detailed() -> None:
@@ -177,11 +205,11 @@ def test_a_plan_placed_coarser_than_its_details_were_reckoned_at_spills() -> Non
     assert Polygon(poly).spill(4.0 * k, (0.0, 0.0, 1.0, 1.0)) == 0.0  # no details: none
 
 
-def test_a_run_too_large_for_its_bound_is_cut_not_listed() -> None:
+def test_a_run_too_large_for_its_bound_is_one_detail_its_short_vectors_named() -> None:
     """A run whose detail at its μ_F would outgrow its plan (the crusher's group (2, 3): G_2,
-    G_3, Ф_3 and R^τ_12 one under the other, the detail held to the plan's 62 mm at a coarser
-    μ_F that left Ф_3 short and only listed) is cut into pieces each within the bound, and
-    every vector of it is drawn at least two arrowheads long in one of them."""
+    G_3, Ф_3 and R^τ_12 one under the other) is one detail within the bound at one μ_F (not
+    cut into pieces at several: review 7, item 4), and the vectors of it then shorter than two
+    arrowheads, and only those, are listed (named under the plan's caption)."""
     from geomcad.sheet.views import STUB_MM
 
     vs = chain([5000.0, 470.0, 120.0, 196.0, 588.0, 3000.0],
@@ -190,12 +218,15 @@ def test_a_run_too_large_for_its_bound_is_cut_not_listed() -> None:
     poly = ForcePolygon(Vec(0.0, 0.0), tuple(vs), ())
     k, bound = 100.0, 62.0
     details = plan_details(poly, k, iter("БГДЖИЛ"), bound=bound)
-    assert sorted(n for dt in details for n in dt.run) == ["F1", "F2", "F3", "F4"]
-    assert len(details) >= 2 and not any(dt.listed for dt in details)
-    for dt in details:
-        box = dt.box
-        assert max(box[2] - box[0], box[3] - box[1]) / dt.k <= bound - 2.0 * STUB_MM + 1e-9
-        assert min(poly[n].magnitude for n in dt.run) / dt.k >= SHORT_MM * (1.0 - 1e-9)
+    assert len(details) == 1
+    dt = details[0]
+    assert sorted(dt.run) == ["F1", "F2", "F3", "F4"]
+    box = dt.box
+    assert max(box[2] - box[0], box[3] - box[1]) / dt.k <= bound - 2.0 * STUB_MM + 1e-9
+    assert set(dt.listed) == {n for n in dt.run if poly[n].magnitude / dt.k < SHORT_MM}
+    # the finest factor of the series within the bound: the next finer outgrows it
+    finer = nice_below(dt.k * 0.999, 1.0).k
+    assert max(box[2] - box[0], box[3] - box[1]) / finer > bound - 2.0 * STUB_MM
 
 
 def test_a_detail_s_slot_never_hangs_on_its_letter() -> None:
@@ -212,7 +243,7 @@ def test_a_detail_s_slot_never_hangs_on_its_letter() -> None:
         got = []
         for letters in ("W" * 9, "ИЛПЭ", ["Ш1", "Ж12", "Ю7", "Л1"], ["Ш99", "Ж99", "Ю99", "Ш98"]):
             details, _, ext = p._with_details(k, iter(letters), room)
-            assert len(details) >= 2
+            assert details
             got.append(([dt.slot for dt in details], ext))
         assert all(g == got[0] for g in got), room
 
@@ -315,7 +346,12 @@ def test_a_plan_and_its_details_keep_inside_its_box_under_its_caption(
         x0, y0, x1, y1 = at.box
         below = y0 + p.title_room()
         for it in items:
-            top = y0 if isinstance(it, TextItem) and it.text.startswith(tuple(p.omitted)) else below
+            notes = [
+                p.note,
+                *([p._listed_note(), p._listed_note(False)] if p.noted or p.lined else []),
+            ]
+            notes = ["".join(r.text for r in parse(n)) for n in notes]
+            top = y0 if isinstance(it, TextItem) and it.text in notes else below
             for x, y in _reach(it):
                 assert x0 <= x <= x1 and top <= y <= y1, (path.stem, p.title, it)
 

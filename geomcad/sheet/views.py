@@ -233,6 +233,7 @@ def draw_polygon(
     details: Sequence[Detail] = (),
     thin: bool = False,
     omit: Iterable[str] = (),
+    lines: Iterable[str] = (),
 ) -> list[str]:
     """Draw ``poly`` through ``v`` at the viewport's μ_F: each vector head to tail, labelled
     beside its middle (``names`` maps a vector's name to label markup; default: the name),
@@ -243,14 +244,15 @@ def draw_polygon(
     line (two opposite reactions): its vectors are drawn side by side :data:`OFFSET_MM` apart,
     joined by thin lines, as a textbook draws them (two such: labelled "R₀₁ = −R₂₁"). Never
     a dot: a vector outside every detail is an arrow however short; those in ``omit`` (a
-    negligible share of the polygon, named under its caption) are not drawn. Returns the names
+    negligible share of the polygon, named under its caption) are not drawn; those in ``lines``
+    (too short even for a detail, named under its caption) are drawn as lines. Returns the names
     of the vectors left shorter than two arrowheads."""
     if found is None:
         known = {n for n, _ in poly.solved}
         found = known or ({poly.vectors[-1].name} if poly.vectors else set())
     found = set(found)
     inward = set(inward)
-    in_detail = {n for dt in details for n in dt.run}
+    in_detail = {n for dt in details for n in dt.run} | set(lines)
     zero = _zero(poly)
     omit = set(omit)
     # a resultant along its long component (the other too short to part them): one line
@@ -651,11 +653,14 @@ DETAIL_CIRCLE_MM = 3.0
 #: A polygon's largest vector is drawn at most this long at its reference μ_F (mm), at which
 #: the room of its details is reckoned for the layout.
 POLY_MM = 110.0
-#: A detail's shortest vector is drawn at least this long (mm) …
-DETAIL_MM = 8.0
-#: … and its longest at most this long, else its run is cut into two details side by side
-#: (one level: no detail is taken from a detail).
-DETAIL_MAX_MM = 60.0
+#: A detail is drawn at the coarsest μ_F of the series that draws its shortest vector at
+#: least this long (mm; an arrow of two arrowheads, readable), never a finer one …
+DETAIL_MM = SHORT_MM
+#: … and its longest at most this long (mm): a detail copy is not drawn several times longer
+#: than its plan's own vectors (review 8, item 3: the oscillator's G4 = 24 N at 59 mm in a
+#: detail beside G5 = 64 N at 16 mm in its plan); what it then draws too short is named under
+#: the plan's caption (one level: no detail is taken from a detail).
+DETAIL_MAX_MM = 30.0
 #: A detail enlarges the view it is taken from at least this many times (a detail barely
 #: larger than its polygon is not worth its room).
 DETAIL_LEAST = 4.0
@@ -680,8 +685,13 @@ THIN_MM = 1.2
 #: A plan no wider than this share of its longest vector is a sliver …
 SLIVER_SHARE = 0.125
 #: … drawn with its longest vector at most this long (mm; a μ_F of the series draws it at
-#: least half as long): its long sides side by side.
-SLIVER_MM = 100.0
+#: least half as long): its long sides side by side. A two-force plan (R₁₂ = −R₃₂, or two
+#: reactions with a small load between) shows nothing its length could: it is the equality
+#: it states, and the table gives |R|. A ТММ teacher accepts it as the two vectors side by
+#: side, joined at their ends into a closed narrow figure, with the equality written under it
+#: and its own μ_F in its caption (|R| can still be measured); drawn 90–100 mm it was a twin
+#: line across its cell (review 7, item 4), so 30–60 mm.
+SLIVER_MM = 60.0
 #: Two vectors of a plan within this angle of each other …
 LANE_ANGLE = math.radians(4.0)
 #: … that run within THIN_MM of one another longer than this (mm) are drawn side by side.
@@ -780,46 +790,97 @@ def plan_details(
     letters: Iterator[str],
     floor: float = 0.0,
     bound: float = 0.0,
+    dropped: list[str] | None = None,
 ) -> list[Detail]:
-    """The details of ``poly`` drawn at μ_F ``k_ref``, all of one level: one per run of its
-    vectors shorter than two arrowheads there (:func:`regroup` makes it one run where the
-    polygon's order allows), at :func:`detail_k`; a run whose longest would then exceed
-    :data:`DETAIL_MAX_MM` (or whose whole would outgrow ``bound``) is cut, along the chain,
-    into the fewest pieces that each keep within it, each piece a detail of its own drawn
-    beside the others (never inside). The vectors up to ``floor`` (negligible) are in none.
-    ``bound`` (mm, 0: none): no detail is drawn larger than that (its plan's size: a detail
-    never outgrows its plan): where its run at :func:`detail_k` would be, at the finest
-    factor of the series that keeps it within (its joined lines included); the vectors of the
-    run then shorter than two arrowheads are its :attr:`Detail.listed`."""
+    """The details of ``poly`` drawn at μ_F ``k_ref``: one per run of its vectors shorter
+    than two arrowheads there (:func:`regroup` makes it one run where the polygon's order
+    allows), all at ONE μ_F (:func:`details_k`), as a view's insets are at one: a plan
+    states at most two scales, its own and its details' (review 7: plans with details at
+    4 / 0,5 / 0,05 / 1 N/mm read as four drawings). A run is never cut into pieces (each
+    circle on the plan marks one run, lettered with one letter). The vectors of a run still
+    shorter than two arrowheads at that μ_F are its :attr:`Detail.listed`: drawn as lines,
+    named with their values under the plan's caption. The vectors up to ``floor``
+    (negligible) are in none. ``bound`` (mm, 0: none): no detail is drawn larger than that
+    (its plan's size: a detail never outgrows its plan), its joined lines included. A run
+    whose every vector would be listed makes no detail (it would show nothing but the lines
+    it joins): its vectors are added to ``dropped`` (drawn as lines on the plan, named under
+    its caption; where ``dropped`` is None, it is a detail all the same)."""
+    runs = _one_spot(poly, short_runs(poly.vectors, SHORT_MM * k_ref, floor=floor), k_ref)
+    if not runs:
+        return []
+    boxes = [_bbox(q for n in run for q in (poly[n].tail, poly[n].head)) for run in runs]
+    kd = details_k(
+        [[poly[n].magnitude for n in run] for run in runs],
+        [max(b[2] - b[0], b[3] - b[1]) for b in boxes],
+        k_ref,
+        bound,
+    )
+    zero = max(_zero(poly), floor)
     out = []
-    for run in short_runs(poly.vectors, SHORT_MM * k_ref, floor=floor):
-        pieces: list[list[str]] = []
-        room = bound - 2.0 * STUB_MM
-        for n in run:
-            piece = [*pieces[-1], n] if pieces else [n]
-            mags = [poly[x].magnitude for x in piece]
-            kd = detail_k(mags, k_ref)
-            box = _bbox(q for x in piece for q in (poly[x].tail, poly[x].head))
-            # a piece within its bound too, so that none of its vectors is left short
-            within = (
-                bound <= 0.0 or room <= 0.0 or max(box[2] - box[0], box[3] - box[1]) / kd <= room
-            )
-            if pieces and max(mags) / kd <= DETAIL_MAX_MM and within:
-                pieces[-1] = piece
-            else:
-                pieces.append([n])
-        for piece in pieces:
-            kd = detail_k([poly[n].magnitude for n in piece], k_ref)
-            box = _bbox(q for n in piece for q in (poly[n].tail, poly[n].head))
-            listed: tuple[str, ...] = ()
-            size = max(box[2] - box[0], box[3] - box[1])
-            if bound > 0.0 and room > 0.0 and size / kd > room:
-                kd = nice_factor(size, room, "F").k
-                zero = max(_zero(poly), floor)
-                listed = tuple(n for n in piece
-                               if zero < poly[n].magnitude < SHORT_MM * kd)  # fmt: skip
-            out.append(Detail(tuple(piece), kd, next(letters), box, floor=floor, listed=listed))
+    for run, box in zip(runs, boxes, strict=True):
+        listed = tuple(n for n in run if zero < poly[n].magnitude < SHORT_MM * kd)
+        if dropped is not None and len(listed) == sum(poly[n].magnitude > zero for n in run):
+            dropped += listed
+            continue
+        out.append(Detail(tuple(run), kd, next(letters), box, floor=floor, listed=listed))
     return out
+
+
+def _over(ext: Extent, room: tuple[float, float], k: float) -> float:
+    """How far (mm at μ_F ``k``) the extent ``ext`` outgrows ``room`` (model units)."""
+    return max(ext[2] - ext[0] - room[0], ext[3] - ext[1] - room[1], 0.0) / k
+
+
+def _one_spot(poly: ForcePolygon, runs: list[list[str]], k: float) -> list[list[str]]:
+    """The runs of ``poly`` drawn at μ_F ``k`` with those whose circles on the plan would
+    overlap (:func:`detail_spots`) made one, the vectors between them included: one spot of
+    the plan is one detail, lettered with one letter (review 7: a circle lettered "П1, Ш1,
+    Э1")."""
+    names = list(poly.names)
+    n = len(names)
+
+    def circle(run: Sequence[str]) -> tuple[tuple[float, float], float]:
+        return _circle([(q.x / k, q.y / k) for x in run for q in (poly[x].tail, poly[x].head)])
+
+    out: list[list[str]] = []
+    for run in runs:
+        if out:
+            (c0, r0), (c1, r1) = circle(out[-1]), circle(run)
+            if math.dist(c0, c1) < r0 + r1 + 1.0:
+                i, j = names.index(out[-1][-1]), names.index(run[0])
+                out[-1] = [*out[-1], *(names[(i + 1 + t) % n] for t in range((j - i - 1) % n)),
+                           *run]  # fmt: skip
+                continue
+        out.append(list(run))
+    return out
+
+
+def details_k(
+    mags: Sequence[Sequence[float]], sizes: Sequence[float], k_ref: float, bound: float = 0.0
+) -> float:
+    """The one μ_F of a plan's details (runs of magnitudes ``mags``, each spanning ``sizes``
+    in plan units) taken from the plan drawn at ``k_ref``: :func:`detail_k` of all their
+    vectors (the shortest at least :data:`DETAIL_MM`, at least :data:`DETAIL_LEAST` times
+    the plan), made coarser where a run would then draw its longest vector over
+    :data:`DETAIL_MAX_MM`, or outgrow ``bound`` mm (0: none) with its joined lines: the
+    finest factor 1, 2, 2.5, 4, 5 × 10^n that keeps every run within both. What is then too
+    short in a detail is named under the plan (:attr:`Detail.listed`), never drawn at a
+    second detail μ_F. Where that leaves some too short, the μ_F is the coarsest that still
+    draws the others :data:`DETAIL_MM` long (those it names no longer set it: review 8, item
+    3, the crusher's G4 = 147 N drawn 29 mm at 5 N/mm because R^τ34 = 17 N, named, would have
+    wanted 2 N/mm; at 10 N/mm G4 is 15 mm, Ф4 9 mm)."""
+    every = [m for run in mags for m in run]
+    readable = kd = detail_k(every, k_ref)
+    for run, size in zip(mags, sizes, strict=True):
+        kd = max(kd, nice_factor(max(run), DETAIL_MAX_MM, "F").k)
+        room = bound - 2.0 * STUB_MM
+        if bound > 0.0 and room > 0.0 and size > 0.0:
+            kd = max(kd, nice_factor(size, room, "F").k)
+    if kd > readable * (1.0 + tol.REL_LENGTH):
+        shown = [m for m in every if m >= DETAIL_MM * kd * (1.0 - tol.REL_LENGTH)]
+        if shown:
+            kd = max(kd, detail_k(shown, k_ref))
+    return kd
 
 
 def regroup(poly: ForcePolygon, k: float) -> ForcePolygon:
@@ -936,6 +997,7 @@ def place_details(
     ext: Extent,
     room: tuple[float, float] | None = None,
     names: Mapping[str, str] | None = None,
+    noted: Iterable[str] = (),
 ) -> Extent:
     """Give each detail its slot beside the polygon's extent ``ext`` (model units; their room
     in mm at the polygon's μ_F ``k``), one after another: in a corner of the polygon's box
@@ -955,7 +1017,10 @@ def place_details(
         bw, bh = (dt.box[2] - dt.box[0]) * k / kd, (dt.box[3] - dt.box[1]) * k / kd
         # its caption as wide as with the widest letter the sheet may give it, so that the
         # slots (and whether the whole keeps within ``room``) never hang on the letters drawn
-        lines = [_detail_caption(dt, Scale(kd, "F"), LETTER_ROOM), *_detail_listed(poly, dt, names)]
+        lines = [
+            _detail_caption(dt, Scale(kd, "F"), LETTER_ROOM),
+            *_detail_listed(poly, dt, names, noted),
+        ]
         w = max(bw + 2.0 * pad,
                 *(text_width(t, DETAIL_CAPTION_H) * k for t in lines))  # fmt: skip
         dt.cap = cap + (len(lines) - 1) * DETAIL_CAPTION_H * DETAIL_LINES * k
@@ -1039,16 +1104,27 @@ LETTER_ROOM = "W99"
 
 
 def _detail_listed(
-    poly: ForcePolygon, dt: Detail, names: Mapping[str, str] | None = None
+    poly: ForcePolygon,
+    dt: Detail,
+    names: Mapping[str, str] | None = None,
+    noted: Iterable[str] = (),
 ) -> list[str]:
     """The line under a detail's caption that lists the vectors of its run too short to
-    draw at its μ_F, with their values (none: no line)."""
-    if not dt.listed:
+    draw at its μ_F, with their values (none: no line; nor for those ``noted``, named under
+    the plan's caption: :func:`listed_items`)."""
+    left = [n for n in dt.listed if n not in set(noted)]
+    if not left:
         return []
+    return [WORDS("detail_listed", items=listed_items(poly, left, names), mm=num(SHORT_MM))]
+
+
+def listed_items(
+    poly: ForcePolygon, listed: Sequence[str], names: Mapping[str, str] | None = None
+) -> str:
+    """The vectors ``listed`` (too short to draw in a detail), each with its value."""
     unit = WORDS("unit.N")
-    items = ", ".join(f"{(names or {}).get(n, n)} = {num(poly[n].magnitude)} {unit}"
-                      for n in dt.listed)  # fmt: skip
-    return [WORDS("detail_listed", items=items, mm=num(SHORT_MM))]
+    return ", ".join(f"{(names or {}).get(n, n)} = {num(poly[n].magnitude)} {unit}"
+                     for n in listed)  # fmt: skip
 
 
 def _stubs(poly: ForcePolygon, dt: Detail, kd: float) -> list[tuple[PlanVector, Vec, Vec]]:
@@ -1077,9 +1153,11 @@ def draw_detail(
     found: Iterable[str] = (),
     height: float = 2.5,
     others: Sequence[Detail] = (),
+    noted: Iterable[str] = (),
 ) -> None:
     """Draw detail ``dt`` of ``poly`` in its slot of the polygon's viewport ``v``: its run at
-    its μ_F, captioned with its letter and μ_F, the lines of the long vectors it joins (a
+    its μ_F, captioned with its letter and μ_F (and the vectors too short in it, but those
+    ``noted`` under the plan's caption), the lines of the long vectors it joins (a
     vector in another of ``others``, the plan's details, lettered with that one's letter;
     the others unnamed: the plan names them)."""
     sc = Scale(dt.k, "F")
@@ -1087,7 +1165,8 @@ def draw_detail(
     names = names or {}
     found = set(found)
     top = v.p((sx0, sy1))
-    for i, line in enumerate([_detail_caption(dt, sc), *_detail_listed(poly, dt, names)]):
+    lines = [_detail_caption(dt, sc), *_detail_listed(poly, dt, names, noted)]
+    for i, line in enumerate(lines):
         v.d.text(line, (top[0], top[1] + DETAIL_CAPTION_H * (1.0 + DETAIL_LINES * i)),
                  DETAIL_CAPTION_H)  # fmt: skip
     at = v.p(((sx0 + sx1) / 2.0, (sy0 + sy1 - dt.cap) / 2.0))
@@ -1174,6 +1253,12 @@ class Polygon(View):
         self.floor = 0.0
         #: the longest vector drawn at most this long (mm; 0: as placed): a sliver's cap
         self.longest_mm = 0.0
+        #: whether the vectors too short in the details are named on a line under the
+        #: caption (:attr:`noted`; where none was at the reference μ_F, under a detail's)
+        self.listed_line = False
+        self.noted: list[str] = []
+        #: the vectors of runs too short even at the details' μ_F (no detail of them): lines
+        self.lined: list[str] = []
         if self.detail and negligible is not None:
             vs = self.layers[-1][0].vectors
             big = max((pv.magnitude for pv in vs), default=0.0)
@@ -1192,19 +1277,53 @@ class Polygon(View):
                 # its known forces in the order that keeps its short vectors one run
                 last, role = self.layers[-1]
                 self.layers[-1] = (regroup(last, k_ref), role)
-                within = None if room is None else (room[0] * k_ref, room[1] * k_ref)
-                self.details, self.thin, self._ext = self._with_details(k_ref, iter(_ANY), within)
+
+                # the room given is the box's less its caption (:meth:`note_room` not counted
+                # off): the lines this plan adds under its caption take their share of it
+                def within() -> tuple[float, float] | None:
+                    if room is None:
+                        return None
+                    return room[0] * k_ref, max(room[1] - self.note_room(), 0.0) * k_ref
+
+                self.details, self.thin, self._ext = self._with_details(k_ref, iter(_ANY), within())
+                if self._lists(k_ref):
+                    # what the details cannot show named under the plan, as a view names
+                    # what its insets leave out (review 7, item 4): never a second scale
+                    self.listed_line = True
+                    self.details, self.thin, self._ext = self._with_details(
+                        k_ref, iter(_ANY), within()
+                    )
+
+    def _lists(self, k_ref: float) -> bool:
+        """Whether the plan's details leave vectors too short to draw (:attr:`Detail.listed`)
+        at ``k_ref`` or at the coarser μ_F a layout may draw it at (up to :data:`LIST_SPAN`
+        times): the line under the caption that names them is reserved before the layout."""
+        poly = self.layers[-1][0]
+        x0, y0, x1, y1 = _bbox(q for pv in poly.vectors for q in (pv.tail, pv.head))
+        k = k_ref
+        while k <= LIST_SPAN * k_ref * (1.0 + tol.REL_LENGTH):
+            bound = max(max(x1 - x0, y1 - y0) / k, DETAIL_BOUND_MM)
+            dropped: list[str] = []
+            details = plan_details(poly, k, iter(_ANY), self.floor, bound, dropped)
+            if dropped or any(dt.listed for dt in details):
+                return True
+            k = nice_factor(k * (1.0 + NICE_STEP), 1.0, "F").k
+        return False
 
     def _with_details(
         self, k: float, letters: Iterator[str], room: tuple[float, float] | None = None
     ) -> tuple[list[Detail], bool, Extent]:
         """The details, thinness and extent (with the details' slots) of the polygon at
-        μ_F ``k``."""
+        μ_F ``k``. Where the details at their μ_F leave the whole larger than ``room`` and a
+        coarser one fits them in the room the plan leaves free beside or under it, at that
+        one (the vectors it makes too short are named under the caption): a detail never
+        pushes its plan to a coarser μ_F than the plan's box holds (the crusher's group
+        (4, 5): a detail of G4, Ф4 at 2,5 N/mm, 72 mm high, under a plan 99 mm high in a
+        162 mm box; drawn at 4 N/mm it fits)."""
         poly = self.layers[-1][0]
         x0, y0, x1, y1 = _bbox(q for pv in poly.vectors for q in (pv.tail, pv.head))
         # a detail no larger than its plan as drawn (nor than DETAIL_BOUND_MM)
         bound = max(max(x1 - x0, y1 - y0) / k, DETAIL_BOUND_MM)
-        details = plan_details(poly, k, letters, self.floor, bound)
         thin = len(self.layers) == 1 and is_thin(poly, k)
         if thin:  # the room of the vectors side by side (their labels in the margin)
             grow = (len(poly.vectors) - 1) * OFFSET_MM / 2.0 * k
@@ -1212,7 +1331,39 @@ class Polygon(View):
         for poly2, _ in self.layers[:-1]:
             b = _bbox(q for pv in poly2.vectors for q in (pv.tail, pv.head))
             x0, y0, x1, y1 = min(x0, b[0]), min(y0, b[1]), max(x1, b[2]), max(y1, b[3])
-        return details, thin, place_details(poly, details, k, (x0, y0, x1, y1), room, self.names)
+        plan = (x0, y0, x1, y1)
+        if room is not None:
+            _, ext = self._placed(k, iter(_ANY), bound, plan, room)
+            # the room free beside or under the plan, less a detail's slot round its run
+            free = max(room[0] - (x1 - x0), room[1] - (y1 - y0)) / k
+            cap = DETAIL_CAPTION_H * 1.5 + 1.5 + DETAIL_CAPTION_H * DETAIL_LINES
+            tight = free - 2.0 * DETAIL_PAD_MM - cap - DETAIL_GAP_MM
+            if _over(ext, room, k) > 0.0 and 2.0 * STUB_MM + DETAIL_MM < tight < bound:
+                _, ext2 = self._placed(k, iter(_ANY), tight, plan, room)
+                if _over(ext2, room, k) < _over(ext, room, k):
+                    bound = tight
+        details, ext = self._placed(k, letters, bound, plan, room)
+        return details, thin, ext
+
+    def _placed(
+        self,
+        k: float,
+        letters: Iterator[str],
+        bound: float,
+        plan: Extent,
+        room: tuple[float, float] | None,
+    ) -> tuple[list[Detail], Extent]:
+        """The details of the polygon at μ_F ``k``, none larger than ``bound`` (mm), placed
+        round its extent ``plan`` within ``room``, and the whole's extent."""
+        poly = self.layers[-1][0]
+        dropped: list[str] = []
+        # a run with nothing to show makes no detail where the line under the caption is kept
+        details = plan_details(poly, k, letters, self.floor, bound,
+                               dropped if self.listed_line else None)  # fmt: skip
+        self.noted = [n for dt in details for n in dt.listed] if self.listed_line else []
+        self.lined = dropped
+        ext = place_details(poly, details, k, plan, room, self.names, self.noted)
+        return details, ext
 
     def extent(self) -> Extent | None:
         return self._ext
@@ -1234,7 +1385,13 @@ class Polygon(View):
         return super().caption(scale)
 
     def title_room(self) -> float:
-        return super().title_room() + (NOTE_H * TITLE_LEAD if self.note else 0.0)
+        return super().title_room() + self.note_room()
+
+    def note_room(self) -> float:
+        """The height (mm) of the lines under the caption (the note of the vectors left out,
+        the line naming what the details cannot show)."""
+        lines = bool(self.note) + self.listed_line
+        return NOTE_H * TITLE_LEAD * lines + NOTE_GAP if lines else 0.0
 
     def spill(self, k: float, inner: Extent) -> float:
         """How far (mm) the polygon with its details, planned again at the μ_F ``k`` it is
@@ -1282,26 +1439,59 @@ class Polygon(View):
                 where = (v.at[0], y0 + half)
             v = Viewport(d, v.scale, centre[0], centre[1], where)
             at.viewport = v
-        if self.note:  # on a line of its own under the caption
-            lines = (self.title_lines - 1) * TITLE_SPACING
-            top = at.box[1] + self.title_height * (TITLE_LEAD + lines) + NOTE_H
-            d.text(self.note, (at.box[0], top), NOTE_H)
+        notes = [self.note] if self.note else []
+        if self.noted or self.lined:  # what the details cannot show, on a line of its own
+            note = self._listed_note()
+            if text_width(note, NOTE_H) > at.box[2] - at.box[0]:
+                note = self._listed_note(values=False)  # their values are in the table
+            notes.append(note)
+        lines = (self.title_lines - 1) * TITLE_SPACING
+        for i, note in enumerate(notes):  # each on a line of its own under the caption
+            top = at.box[1] + self.title_height * (TITLE_LEAD + lines) + NOTE_H + NOTE_GAP
+            d.text(note, (at.box[0], top + i * NOTE_H * TITLE_LEAD), NOTE_H)
         for i, (poly, role) in enumerate(self.layers):
             last = i == len(self.layers) - 1
             self.points += draw_polygon(
                 v, poly, self.names, role, self.found, self.inward, self.label_height,
                 self.details if last else (), self.thin and last,
-                self.omitted if last else (),
+                self.omitted if last else (), self.lined if last else (),
             )  # fmt: skip
         if self.details:
             poly = self.layers[-1][0]
             found = self.found if self.found is not None else {n for n, _ in poly.solved}
             for dt in self.details:
-                draw_detail(v, poly, dt, self.names, found, self.label_height, self.details)
+                draw_detail(v, poly, dt, self.names, found, self.label_height, self.details,
+                            self.noted)  # fmt: skip
+
+    def _listed_note(self, values: bool = True) -> str:
+        """The line under the caption that names the vectors too short in the plan's
+        details (at their one μ_F), with their ``values``, and the letters of their details."""
+        poly = self.layers[-1][0]
+
+        def items(names: Sequence[str]) -> str:
+            if values:
+                return listed_items(poly, names, self.names)
+            return ", ".join((self.names or {}).get(n, n) for n in names)
+
+        if self.lined:  # too short for a detail at the plan's one detail μ_F: lines on the plan
+            return WORDS("plan_lined", mm=num(SHORT_MM), items=items([*self.noted, *self.lined]))
+        letters = ", ".join(dt.letter for dt in self.details if dt.listed)
+        many = sum(bool(dt.listed) for dt in self.details) > 1
+        key = "plan_listed_many" if many else "plan_listed"
+        if len(self.noted) == 1:
+            key += "_one"
+        return WORDS(key, letters=letters, mm=num(SHORT_MM), items=items(self.noted))
 
 
+#: The μ_F a plan may be drawn at, as a multiple of its reference μ_F, whose details'
+#: vectors too short to draw reserve their line under its caption (:meth:`Polygon._lists`) …
+LIST_SPAN = 8.0
+#: … tried factor by factor of the series (the next above k(1 + NICE_STEP)).
+NICE_STEP = 0.01
 #: The height (mm) of the line under a polygon's caption that names the vectors left out.
 NOTE_H = 2.5
+#: … set this much (mm) lower, clear of the caption's subscripts (μ_F).
+NOTE_GAP = 0.6
 #: The letters of the details while their room is reckoned (those drawn come from the sheet's).
 _ANY = "W" * 99
 

@@ -1,0 +1,129 @@
+"""One detail μ_F per force plan, one letter per detail circle, and two-force plans of sane
+length, on the forces sheet of every example and layout test file (issue 27, review 7 item 4:
+the oscillator's group (2, 3) carried details at 0,5 / 0,05 / 1 N/mm beside its own 4 N/mm,
+one circle was lettered "П1, Ш1, Э1", and the plans of two-force links were 90–100 mm twin
+lines)."""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+from typing import Any
+
+import pytest
+
+import geomcad
+from geomcad.sheet.model import TextItem
+from geomcad.sheet.views import SLIVER_MM, Polygon, is_sliver
+
+ROOT = Path(__file__).resolve().parents[1]
+TESTS = Path(__file__).resolve().parent
+TOMLS = [
+    *sorted((ROOT / "examples").glob("*.toml")),
+    *sorted((TESTS / "linkages_layout").glob("*.toml")),
+]
+FILES = [
+    p
+    for p in TOMLS
+    if "[drive]" in p.read_text(encoding="utf-8") and "[[group]]" in p.read_text(encoding="utf-8")
+]
+
+#: A stated μ_F in a caption: "μF = 0,5 Н/мм" (the value, decimal comma).
+MU_F = re.compile(r"μF = ([\d\s]+(?:,\d+)?)")
+#: A two-force plan is at most this long (mm; review 7: "≤ ~60 mm", a sane closed figure).
+TWO_FORCE_MM = 60.0
+#: A circle's lettering that lists several details ("П1, Ш1, Э1").
+LETTER_LIST = re.compile(r"^[А-ЯA-Z]\d*(, [А-ЯA-Z]\d*)+$")
+
+
+def _plans(path: Path, monkeypatch: pytest.MonkeyPatch) -> list[tuple[Polygon, Any, list[Any]]]:
+    """Each force plan of the file's forces sheet as drawn last: (plan, placed, its items)."""
+    from geomcad.sheet import views
+
+    rec: dict[str, tuple[Polygon, Any, list[Any]]] = {}
+    draw = views.Polygon.draw
+
+    def rec_draw(self: Polygon, d: Any, at: Any) -> None:
+        i = len(d.sheet.items)
+        draw(self, d, at)
+        rec[self.title] = (self, at, d.sheet.items[i:])
+
+    monkeypatch.setattr(views.Polygon, "draw", rec_draw)
+    sheets = dict(geomcad.solve(str(path)).sheets())
+    if "forces" not in sheets:
+        pytest.skip("no forces sheet")
+    return list(rec.values())
+
+
+@pytest.mark.parametrize("path", FILES, ids=lambda p: p.stem)
+def test_a_plan_states_one_detail_scale_and_one_letter_per_circle(
+    path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """Every force plan states at most two μ_F: its own (in its caption) and one for all its
+    details (each detail's caption states it); a circle on the plan is lettered with one
+    detail's letter, never a list of them."""
+    plans = _plans(path, monkeypatch)
+    assert plans
+    for p, _, items in plans:
+        texts = [it.text for it in items if isinstance(it, TextItem)]
+        stated = {m for t in texts for m in MU_F.findall(t)}
+        assert len(stated) <= 1, (path.stem, p.title, sorted(stated))
+        assert len({dt.k for dt in p.details}) <= 1, (path.stem, p.title)
+        lists = [t for t in texts if LETTER_LIST.match(t)]
+        assert not lists, (path.stem, p.title, lists)
+
+
+@pytest.mark.parametrize("path", FILES, ids=lambda p: p.stem)
+def test_a_two_force_plan_is_drawn_short(path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """A plan along one line (a two-force link, R₀₁ = −R₂₁, or two reactions with a small
+    load between: :func:`is_sliver`) draws its longest vector at most SLIVER_MM long, at the
+    μ_F its caption states (the shaper's links 2, 3 and crank were 90–100 mm twin lines), and
+    SLIVER_MM is within the review's bound."""
+    assert SLIVER_MM <= TWO_FORCE_MM
+    plans = _plans(path, monkeypatch)
+    for p, at, _ in plans:
+        poly = p.layers[-1][0]
+        if not is_sliver(poly):
+            continue
+        k = at.viewport.scale.k
+        big = max(pv.magnitude for pv in poly.vectors)
+        assert big / k <= TWO_FORCE_MM * (1.0 + 1e-9), (path.stem, p.title, big / k)
+        assert big / k >= SLIVER_MM / 2.0 * (1.0 - 1e-9), (path.stem, p.title, big / k)
+
+
+#: A detail's longest vector is drawn at most this long (mm; review 8, item 3: the
+#: oscillator's G4 = 24 N drawn 59 mm in a detail beside G5 = 64 N at 16 mm in its plan, the
+#: yoke's G5 = 31 N at 15.7 mm beside F_D = 2490 N at 12.4 mm).
+DETAIL_LONGEST_MM = 30.0
+
+
+@pytest.mark.parametrize("path", FILES, ids=lambda p: p.stem)
+def test_a_detail_is_not_drawn_longer_than_its_plan_needs(
+    path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """A detail enlarges its plan's short run at the coarsest μ_F that keeps its longest
+    vector within DETAIL_LONGEST_MM, never at a finer one: the detail copy of a small force is
+    not drawn several times longer than the plan's own vectors; and at the next coarser μ_F of
+    the series its shortest vector drawn would be shorter than two arrowheads, or none of its
+    vectors would be drawn longer than at that one, or it would enlarge its plan less than
+    DETAIL_LEAST times (it is the coarsest that still reads)."""
+    from geomcad.sheet.drawing import SHORT_MM
+    from geomcad.sheet.scale import nice_factor
+    from geomcad.sheet.views import DETAIL_LEAST
+
+    for p, at, _ in _plans(path, monkeypatch):
+        poly = p.layers[-1][0]
+        for dt in p.details:
+            drawn = [poly[n].magnitude / dt.k for n in dt.run if n not in dt.listed]
+            drawn = [mm for mm in drawn if mm > 0.0]
+            if not drawn:
+                continue
+            assert max(drawn) <= DETAIL_LONGEST_MM * (1.0 + 1e-9), (path.stem, p.title, drawn)
+            coarser = nice_factor(dt.k * 1.01, 1.0, "F").k
+            shortest = min(drawn) * dt.k / coarser
+            least = coarser * DETAIL_LEAST > at.viewport.scale.k * (1.0 + 1e-9)
+            assert (
+                shortest < SHORT_MM * (1.0 - 1e-9)
+                or max(drawn) * dt.k / coarser > DETAIL_LONGEST_MM
+                or least
+            ), (path.stem, p.title, dt.k, coarser, min(drawn))
