@@ -1122,8 +1122,9 @@ DETAIL_RING_MM, DETAIL_LEADER_MM, DETAIL_SHELF_MM = 3.0, 6.0, 5.0
 
 def detail_letter(s: Solved) -> str:
     """The letter of the crank's detail view: the first of the sheet's language's letters (the
-    word table's ``detail_letters``; ESKD 2.316: not Й О Х Ъ Ы Ь) that neither is nor looks like
-    (``detail_like``) the name of a point of the mechanism (Б where the crank's joint is A)."""
+    word table's ``detail_letters``; GOST 2.316-2008, 4.17: not Ё З Й О Ч Х Ъ Ы Ь) that neither
+    is nor looks like (``detail_like``) the name of a point of the mechanism (Б where the
+    crank's joint is A)."""
     names = {*s.linkage.frame, *s.drawn[0].pos}
     letters, like = WORDS("detail_letters"), WORDS("detail_like")
     return next(c for c, k in zip(letters, like, strict=True) if k not in names and c not in names)
