@@ -2,10 +2,22 @@
 
 from __future__ import annotations
 
+import itertools
 import tomllib
 from pathlib import Path
 
 import pytest
+
+from geomcad.linkage import parse
+from geomcad.linkage.solution import solve
+from geomcad.sheet.linkage import (
+    LETTER_CLEAR_MM,
+    _gap,
+    _segment_to_box,
+    _text_box,
+    kinematic_sheets,
+)
+from geomcad.sheet.model import CircleItem, Polyline, Sheet, TextItem
 
 STRINGS = Path(__file__).resolve().parent.parent / "geomcad" / "sheet" / "strings"
 #: GOST 2.316-2008, 4.17: the letters not used for views, sections and details (they read as
@@ -22,3 +34,61 @@ def test_detail_letters_leave_out_gost_2316s(lang: str, table: str) -> None:
     assert not set(letters) & NOT_FOR_VIEWS[lang], (lang, table, letters)
     assert len(set(letters)) == len(letters), letters  # no letter twice
     assert all(c.isupper() for c in letters), letters
+
+
+ROOT = Path(__file__).resolve().parent
+#: Files whose forces sheet (and kinematic sheet) mark the crank's detail on the mechanism.
+MARKED = {
+    "sixbar_oscillator": ROOT / "linkages_layout" / "sixbar_oscillator.toml",
+    "crusher": ROOT.parent / "examples" / "crusher.toml",
+    "vertical_yoke_rocker": ROOT / "linkages_drafting" / "vertical_yoke_rocker.toml",
+}
+
+
+def _letter_marks(sheet: Sheet) -> list[int]:
+    """Where a detail's letter stands on its shelf: a label drawn just after a thin ring and a
+    thin three-point leader and shelf (:func:`~geomcad.sheet.linkage.mark_detail`)."""
+    items = sheet.items
+    return [
+        k
+        for k in range(2, len(items))
+        if isinstance(items[k], TextItem)
+        and items[k].role == "label"
+        and isinstance(items[k - 1], Polyline)
+        and items[k - 1].role == "thin"
+        and len(items[k - 1].points) == 3
+        and isinstance(items[k - 2], CircleItem)
+        and items[k - 2].role == "thin"
+    ]
+
+
+@pytest.mark.parametrize("name", sorted(MARKED))
+def test_a_detail_letter_stands_clear_of_its_view(name: str) -> None:
+    """The letter on the detail's shelf keeps LETTER_CLEAR_MM (less its 0.3 mm of rounding)
+    from every line, circle, dot and text drawn before it (review 8: a link ran through the
+    oscillator's "Г", then its "Г" stood on the dot of Φ1's point)."""
+    from geomcad.sheet.linkage_forces import force_sheets
+
+    s = solve(parse(tomllib.loads(MARKED[name].read_text(encoding="utf-8"))))
+    checked = 0
+    for sheet in [sh for _, sh in kinematic_sheets(s, "x")] + [
+        sh for _, sh in force_sheets(s, "x")
+    ]:
+        for k in _letter_marks(sheet):
+            t = sheet.items[k]
+            assert isinstance(t, TextItem)
+            g = LETTER_CLEAR_MM - 0.3
+            x0, y0, x1, y1 = _text_box(t)
+            grown = (x0 - g, y0 - g, x1 + g, y1 + g)
+            for it in sheet.items[: k - 2]:
+                if isinstance(it, Polyline):
+                    pts = (*it.points, *it.points[:1]) if it.closed else it.points
+                    for p, q in itertools.pairwise(pts):
+                        assert _segment_to_box(p, q, grown) > 0.0, (name, it.role, p, q)
+                elif isinstance(it, CircleItem) and it.r <= 2.0 * LETTER_CLEAR_MM:
+                    dot = (it.c[0] - it.r, it.c[1] - it.r, it.c[0] + it.r, it.c[1] + it.r)
+                    assert _gap(grown, dot) > 0.0, (name, it.c)
+                elif isinstance(it, TextItem) and not it.angle:
+                    assert _gap(grown, _text_box(it)) > 0.0, (name, it.text)
+            checked += 1
+    assert checked, name
