@@ -92,3 +92,28 @@ def test_a_detail_letter_stands_clear_of_its_view(name: str) -> None:
                     assert _gap(grown, _text_box(it)) > 0.0, (name, it.text)
             checked += 1
     assert checked, name
+
+
+#: GOST 2.304's space between words: 0.6 of the letters' height. Two titles nearer than this
+#: read as one line.
+WORD_SPACE = 0.6
+
+
+@pytest.mark.parametrize(
+    "name", ["rocking_cylinder_rocker", "crank_rocker_inclined_slide", "sixbar_oscillator"]
+)
+def test_titles_stand_a_word_space_apart(name: str) -> None:
+    """No line of a title comes nearer another title (5 mm letters and more) than a word space
+    (review 8: the dynamics sheet's title, moved right of графа 26 but broken for its whole
+    box, ran to 0.3 mm past the start of Wittenbauer's title over the next column)."""
+    from geomcad.sheet.linkage_forces import force_sheets
+
+    s = solve(parse(tomllib.loads((ROOT / "linkages_layout" / f"{name}.toml").read_text("utf-8"))))
+    sheets = [sh for _, sh in kinematic_sheets(s, "x")] + [sh for _, sh in force_sheets(s, "x")]
+    for sheet in sheets:
+        titles = [t for t in sheet.texts() if t.height >= 5.0 and not t.angle]
+        for a, b in itertools.combinations(titles, 2):
+            if abs(a.at[0] - b.at[0]) < 1e-6:  # the lines of one title, or a column of them
+                continue
+            gap = _gap(_text_box(a), _text_box(b))
+            assert gap >= WORD_SPACE * a.height, (name, a.text, b.text, gap)
