@@ -117,3 +117,34 @@ def test_titles_stand_a_word_space_apart(name: str) -> None:
                 continue
             gap = _gap(_text_box(a), _text_box(b))
             assert gap >= WORD_SPACE * a.height, (name, a.text, b.text, gap)
+
+
+#: A point's letter and a position's number nearer than this (mm) read as one text ("D⁷").
+LETTER_NUMBER_MM = 1.0
+LETTERED = [
+    "crank_rocker_inclined_slide",
+    "sixbar_coupler_slider",
+    "yoke_pump_double_slider",
+    "double_kulisa_screen",
+    "press_offset_long_rod",
+]
+
+
+@pytest.mark.parametrize("name", LETTERED)
+def test_a_points_letter_stands_apart_from_the_position_numbers(name: str) -> None:
+    """On the mechanism in its positions, no position's number (NUMBER_H digits) stands within
+    LETTER_NUMBER_MM of a point's letter (review 8: crank_rocker_inclined_slide's "D⁷", its
+    B beside the row "7 3 6 4 5"; the shaper's "1A", the four-bar's "A⁰")."""
+    from geomcad.sheet.linkage import NUMBER_H
+
+    s = solve(parse(tomllib.loads((ROOT / "linkages_layout" / f"{name}.toml").read_text("utf-8"))))
+    names = set(s.drawn[0].pos)
+    sheet = kinematic_sheets(s, "x")[0][1]
+    texts = [t for t in sheet.texts() if not t.angle]
+    letters = [t for t in texts if t.height == 3.5 and t.runs[0].text[:1] in names]
+    numbers = [t for t in texts if t.height == NUMBER_H and t.text.isdigit()]
+    assert letters and numbers, name
+    for a in letters:
+        for b in numbers:
+            gap = _gap(_text_box(a), _text_box(b))
+            assert gap >= LETTER_NUMBER_MM, (name, a.text, b.text, round(gap, 2))

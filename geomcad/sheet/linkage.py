@@ -971,11 +971,11 @@ class _Mechanism(View):
                 numbers[str(g.links[1])] = (P0.pos[g.joint] + near) * 0.5
         draw_scheme(v, mech, bodies=bodies, pair_labels=marked, label_height=3.5,
                     guides=guides, travel=travel, link_space=LINK_SPACE,
-                    link_labels=numbers)  # fmt: skip
+                    link_labels=numbers, letter_space=LETTER_SPACE)  # fmt: skip
         for p in lk.points:
             if p.name not in lettered:
                 v.dot(P0.pos[p.name])
-                v.label(P0.pos[p.name], markup_of(p.name), 3.5, clear=1.0)
+                v.label(P0.pos[p.name], markup_of(p.name), 3.5, clear=1.0, space=LETTER_SPACE)
         omega_arrow(v, lk, P0)
         # the positions numbered last, clear of every line drawn
         numbered: list[Vec] = []
@@ -999,6 +999,11 @@ class _Mechanism(View):
             numbered = pts
 
 
+#: On the mechanism in its positions, a point's letter keeps this much (mm) further than usual
+#: from other texts: from the position numbers round it (placed before it), nearer, a number
+#: beside it reads as its index ("D⁷") and a row of them ending at it as one text with it ("4 5B";
+#: review 8), GOST 2.304's space between words being 0.6 of the letters' height.
+LETTER_SPACE = 0.6 * 3.5
 #: A track's numbering zone: the hull of its points grown by this much (mm), where its numbers
 #: stand (:func:`position_numbers` sets them within a row's depth of their points).
 ZONE_MM = 5.0
