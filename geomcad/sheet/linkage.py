@@ -1003,7 +1003,7 @@ class _Mechanism(View):
 #: from other texts: from the position numbers round it (placed before it), nearer, a number
 #: beside it reads as its index ("D⁷") and a row of them ending at it as one text with it ("4 5B";
 #: review 8), GOST 2.304's space between words being 0.6 of the letters' height.
-LETTER_SPACE = 0.6 * 3.5
+LETTER_SPACE = 1.5
 #: A track's numbering zone: the hull of its points grown by this much (mm), where its numbers
 #: stand (:func:`position_numbers` sets them within a row's depth of their points).
 ZONE_MM = 5.0
