@@ -1002,7 +1002,9 @@ class _Mechanism(View):
 #: On the mechanism in its positions, a point's letter keeps this much (mm) further than usual
 #: from other texts: from the position numbers round it (placed before it), nearer, a number
 #: beside it reads as its index ("D⁷") and a row of them ending at it as one text with it ("4 5B";
-#: review 8), GOST 2.304's space between words being 0.6 of the letters' height.
+#: review 8). Not GOST 2.304's whole word space (0.6 h, 2.1 mm): that much more drove the placer
+#: to set sixbar_coupler_slider's D on its guide's axis; 1.0–1.25 left crank_rocker_inclined's D
+#: on the hatching.
 LETTER_SPACE = 1.5
 #: A track's numbering zone: the hull of its points grown by this much (mm), where its numbers
 #: stand (:func:`position_numbers` sets them within a row's depth of their points).
