@@ -11,9 +11,12 @@ are each a single four-point box. This script draws them again from the font's o
   font places it in Latin ë/Ë. Latin ë/Ë are copied as they are only when Latin e/E are the
   same outline and advance as Cyrillic е/Е (in 0.1.20220224 they are not: the Latin letters
   have wider side bearings, which would open gaps inside Cyrillic words).
-* э, Э: с/С mirrored left to right (contours reversed to keep the TrueType winding), plus a
+* э, Э: a round bowl open on the left in с/С's box and advance, its top and bottom
+  half-ellipses as round as the font's О, its stroke ends round and turned down/up, plus a
   horizontal bar of the font's stroke thickness (the hyphen's) at mid-height of the bowl,
-  with a round end like the font's stroke ends, stopping short of the open side.
+  with a round end like the font's stroke ends, stopping short of the open side. (The mirror
+  image of osifont's square-cornered С is its digit 3: review 8 read the detail letter Э as
+  "3".)
 
 Two lowercase letters upstream draws at the wrong height (GOST 2.304 type B sets them at the
 height of the other lowercase letters without ascenders, the font's x-height):
@@ -38,13 +41,13 @@ head.modified stay the source's and are not recalculated.
 
 from __future__ import annotations
 
+import math
 import sys
 from collections.abc import Mapping, Sequence
 from pathlib import Path
 from typing import Any
 
 from fontTools.pens.areaPen import AreaPen
-from fontTools.pens.basePen import BasePen
 from fontTools.pens.boundsPen import ControlBoundsPen
 from fontTools.pens.recordingPen import RecordingPen
 from fontTools.pens.reverseContourPen import ReverseContourPen
@@ -70,67 +73,13 @@ OLD_SUFFIXES = (
 
 #: Where the bar of э/Э starts: this fraction of the way from the open side's tips to the
 #: inner edge of the closed side.
-BAR_START = 0.3
+BAR_START = 0.4
+#: Where the bowl of э/Э ends on the open side: this angle (degrees) round its top and bottom
+#: half-ellipses from the right (180: straight down/up, the ends of a half-ellipse).
+TERMINAL_DEG = 145.0
 
 Point = tuple[float, float]
 Box = tuple[float, float, float, float]
-
-
-class _SegmentPen(BasePen):  # type: ignore[misc]
-    """Flattens an outline into straight segments (for measuring, not for output)."""
-
-    def __init__(self, glyph_set: Any, steps: int = 16) -> None:
-        super().__init__(glyph_set)
-        self.segments: list[tuple[Point, Point]] = []
-        self.steps = steps
-
-    def _moveTo(self, pt: Point) -> None:
-        self._start = pt
-
-    def _lineTo(self, pt: Point) -> None:
-        self.segments.append((self._getCurrentPoint(), pt))
-
-    def _curveToOne(self, p1: Point, p2: Point, p3: Point) -> None:
-        p0 = self._getCurrentPoint()
-        prev = p0
-        for i in range(1, self.steps + 1):
-            t = i / self.steps
-            u = 1 - t
-            pt = (
-                u**3 * p0[0] + 3 * u * u * t * p1[0] + 3 * u * t * t * p2[0] + t**3 * p3[0],
-                u**3 * p0[1] + 3 * u * u * t * p1[1] + 3 * u * t * t * p2[1] + t**3 * p3[1],
-            )
-            self.segments.append((prev, pt))
-            prev = pt
-
-    def _qCurveToOne(self, p1: Point, p2: Point) -> None:
-        p0 = self._getCurrentPoint()
-        prev = p0
-        for i in range(1, self.steps + 1):
-            t = i / self.steps
-            u = 1 - t
-            pt = (
-                u * u * p0[0] + 2 * u * t * p1[0] + t * t * p2[0],
-                u * u * p0[1] + 2 * u * t * p1[1] + t * t * p2[1],
-            )
-            self.segments.append((prev, pt))
-            prev = pt
-
-    def _closePath(self) -> None:
-        current = self._getCurrentPoint()
-        if current != self._start:
-            self.segments.append((current, self._start))
-
-
-def _crossings(font: TTFont, name: str, y: float, transform: Sequence[float]) -> list[float]:
-    """The x where glyph ``name`` (after ``transform``) crosses the horizontal line at y."""
-    seg_pen = _SegmentPen(font.getGlyphSet())
-    font.getGlyphSet()[name].draw(TransformPen(seg_pen, tuple(transform)))
-    xs = []
-    for (x0, y0), (x1, y1) in seg_pen.segments:
-        if (y0 <= y < y1) or (y1 <= y < y0):
-            xs.append(x0 + (y - y0) * (x1 - x0) / (y1 - y0))
-    return sorted(xs)
 
 
 def _box(font: TTFont, name: str) -> Box:
@@ -209,38 +158,110 @@ def _with_diaeresis(
     _set_glyph(font, target, pen, advance)
 
 
-def _mirrored_with_bar(font: TTFont, cmap: Mapping[int, str], target: str, source: str) -> None:
-    """Draw ``target`` as ``source`` (с/С) mirrored, with a bar across the middle: э/Э."""
+def _arc(centre: Point, rx: float, ry: float, a0: float, a1: float) -> list[tuple[Point, Point]]:
+    """The elliptic arc about ``centre`` from angle ``a0`` to ``a1`` (degrees) as quadratic
+    segments of at most 30° each: (off-curve, on-curve) pairs after the start point."""
+    n = max(1, math.ceil(abs(a1 - a0) / 30.0))
+    step = math.radians((a1 - a0) / n)
+    out: list[tuple[Point, Point]] = []
+    for i in range(n):
+        t0 = math.radians(a0) + i * step
+        mid, k = t0 + step / 2, 1 / math.cos(step / 2)
+        off = (centre[0] + rx * k * math.cos(mid), centre[1] + ry * k * math.sin(mid))
+        on = (centre[0] + rx * math.cos(t0 + step), centre[1] + ry * math.sin(t0 + step))
+        out.append((off, on))
+    return out
+
+
+def _round_cap(a: Point, b: Point, u: Point) -> list[tuple[Point, Point]]:
+    """A round stroke end from ``a`` to ``b`` bulging along the unit vector ``u``."""
+    r = math.dist(a, b) / 2
+    apex = ((a[0] + b[0]) / 2 + r * u[0], (a[1] + b[1]) / 2 + r * u[1])
+    return [
+        ((a[0] + r * u[0], a[1] + r * u[1]), apex),
+        ((b[0] + r * u[0], b[1] + r * u[1]), b),
+    ]
+
+
+def _reversed_bowl_with_bar(
+    font: TTFont, cmap: Mapping[int, str], target: str, source: str
+) -> None:
+    """Draw ``target`` (э/Э) in the box and advance of ``source`` (с/С) as a round bowl open
+    on the left with a bar (tongue) across the middle: the top and bottom are half-ellipses
+    as round as the font's О (not the square corners of its С, whose mirror image is its
+    digit 3: review 8 read the detail letter Э as "3"), the stroke ends round and turned
+    down/up (``TERMINAL_DEG``), the bar from ``BAR_START`` of the way from the stroke ends to
+    the closed side. The strokes are the font's (the hyphen's thickness)."""
     gs = font.getGlyphSet()
     advance = font["hmtx"][source][0]
-    mirror = (-1, 0, 0, 1, advance, 0)
-    stroke = _stroke(font, cmap)
-    radius = stroke / 2
-    _, sy0, sx1, sy1 = _box(font, source)
-    mid = round((sy0 + sy1) / 2)
-    xs = _crossings(font, source, mid, mirror)
-    if len(xs) < 2:
-        raise ValueError(f"{source}: no closed side to attach the bar to at y={mid}")
-    inner, outer = xs[-2], xs[-1]
-    tips = advance - sx1  # the open side, after mirroring
-    left = round(tips + BAR_START * (inner - tips))
-    right = round((inner + outer) / 2)  # inside the stroke: the overlap hides the bar's end
-    top, bottom = mid + stroke - round(radius), mid - round(radius)
+    t = _stroke(font, cmap)
+    sx0, y0, sx1, y1 = _box(font, source)
+    x0, x1 = advance - sx1, advance - sx0  # mirrored: the open side on the left
+    rx = (x1 - x0) / 2
+    ry = min(rx, (y1 - y0) / 2)
+    cx = x0 + rx
+    top, bottom = (cx, y1 - ry), (cx, y0 + ry)
+    a = TERMINAL_DEG
+
+    def at(c: Point, k: float, deg: float) -> Point:
+        return (c[0] + (rx - k) * math.cos(math.radians(deg)),
+                c[1] + (ry - k) * math.sin(math.radians(deg)))  # fmt: skip
+
+    segs: list[tuple[Point | None, Point]] = []
+    start = at(top, 0, a)
+    segs += _arc(top, rx, ry, a, 0)  # outer: over the top, down the right, round the bottom
+    segs.append((None, at(bottom, 0, 0)))
+    segs += _arc(bottom, rx, ry, 0, -a)
+    down = (math.sin(math.radians(-a)), -math.cos(math.radians(-a)))  # onwards past -a
+    segs += _round_cap(at(bottom, 0, -a), at(bottom, t, -a), down)
+    segs += _arc(bottom, rx - t, ry - t, -a, 0)  # inner, back up
+    segs.append((None, at(top, t, 0)))
+    segs += _arc(top, rx - t, ry - t, 0, a)
+    up = (-math.sin(math.radians(a)), math.cos(math.radians(a)))
+    segs += _round_cap(at(top, t, a), start, up)
+
+    def r(p: Point) -> tuple[int, int]:
+        return (round(p[0]), round(p[1]))
 
     pen = TTGlyphPen(gs)
-    gs[source].draw(TransformPen(ReverseContourPen(pen), mirror))
-    # the bar, drawn in the same direction as the hyphen (clockwise: TrueType's outer contours)
+    rec = RecordingPen()
+    rec.moveTo(r(start))
+    for off, on in segs:
+        if off is None:
+            rec.lineTo(r(on))
+        else:
+            rec.qCurveTo(r(off), r(on))
+    rec.closePath()
+    # the bar, a round end on the open side, its other end inside the closed side's stroke
+    mid = round((y0 + y1) / 2)
+    tips = min(at(top, 0, a)[0], at(top, t, a)[0])
+    inner = x1 - t
+    left = round(tips + BAR_START * (inner - tips))
+    right = round(x1 - t / 2)
+    radius = t / 2
+    btop, bbottom = mid + t - round(radius), mid - round(radius)
     cap = round(left + radius)
-    pen.moveTo((cap, top))
-    pen.lineTo((right, top))
-    pen.lineTo((right, bottom))
-    pen.lineTo((cap, bottom))
-    pen.qCurveTo((left, bottom), (left, mid))
-    pen.qCurveTo((left, top), (cap, top))
-    pen.closePath()
+    rec.moveTo((cap, btop))
+    rec.lineTo((right, btop))
+    rec.lineTo((right, bbottom))
+    rec.lineTo((cap, bbottom))
+    rec.qCurveTo((left, bbottom), (left, mid))
+    rec.qCurveTo((left, btop), (cap, btop))
+    rec.closePath()
+    # each contour drawn in the direction of the source's outer contour (TrueType: clockwise)
+    outward = _signed_area(font, source) > 0
+    contours: list[list[tuple[str, tuple[Any, ...]]]] = [[]]
+    for op, args in rec.value:
+        contours[-1].append((op, args))
+        if op == "closePath":
+            contours.append([])
+    for contour in contours[:-1]:
+        one = RecordingPen()
+        one.value = contour
+        area = AreaPen()
+        one.replay(area)
+        one.replay(ReverseContourPen(pen) if (area.value > 0) != outward else pen)
     _set_glyph(font, target, pen, advance)
-    if (_signed_area(font, target) > 0) != (_signed_area(font, source) > 0):
-        raise AssertionError(f"{target}: contour direction differs from {source}")
 
 
 def _soft_sign_from_yeru(font: TTFont, cmap: Mapping[int, str]) -> None:
@@ -338,8 +359,8 @@ def patch(src: Path, dst: Path) -> None:
     lat_edier, lat_Edier = cmap.get(0x00EB, "edieresis"), cmap.get(0x00CB, "Edieresis")
     _with_diaeresis(font, cmap, glyph_for(0x0451), cyr_e, lat_e, lat_edier)
     _with_diaeresis(font, cmap, glyph_for(0x0401), cyr_E, lat_E, lat_Edier)
-    _mirrored_with_bar(font, cmap, glyph_for(0x044D), glyph_for(0x0441, 0x0063))
-    _mirrored_with_bar(font, cmap, glyph_for(0x042D), glyph_for(0x0421, 0x0043))
+    _reversed_bowl_with_bar(font, cmap, glyph_for(0x044D), glyph_for(0x0441, 0x0063))
+    _reversed_bowl_with_bar(font, cmap, glyph_for(0x042D), glyph_for(0x0421, 0x0043))
     _soft_sign_from_yeru(font, cmap)
     _ze_at_x_height(font, cmap)
     _narrow_space(font)

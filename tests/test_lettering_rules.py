@@ -104,18 +104,19 @@ def test_a_tables_heading_is_wrapped_to_its_width() -> None:
 @pytest.mark.parametrize(
     ("stem", "expected"),
     [
-        ("sixbar_press", "SIXBAR-PRESS"),
+        ("sixbar_press", "SIXBAR.PRESS"),
         ("shaper", "SHAPER"),
-        ("sixbar-2013-6", "SIXBAR-2013-6"),
+        ("sixbar-2013-6", "SIXBAR.2013.6"),
         # review 7: a syllable code (TANGROCKSLID, YOKPUMDOUSLI) did not read back to the file;
-        # whole words do, cut at a word's end, as many as графа 26 holds
-        ("synthesis-slider-crank", "SYNTHESIS-SLIDER"),
-        ("synthesis-slotted-lever", "SYNTHESIS-SLOTTED"),
-        ("tangent_rocking_slider", "TANGENT-ROCKING"),
-        ("yoke_pump_double_slider", "YOKE-PUMP-DOUBLE"),
-        ("whitworth_quick_return", "WHITWORTH-QUICK"),
-        ("kulisa-23110713", "KULISA-23110713"),
-        ("myCrankRockerWithPoint", "MY-CRANK-ROCKER"),
+        # whole words do, cut at a word's end, as many as графа 26 holds; review 8: joined by
+        # dots, as the parts of an ESKD designation (a hyphen marks an execution's number there)
+        ("synthesis-slider-crank", "SYNTHESIS.SLIDER"),
+        ("synthesis-slotted-lever", "SYNTHESIS.SLOTTED"),
+        ("tangent_rocking_slider", "TANGENT.ROCKING"),
+        ("yoke_pump_double_slider", "YOKE.PUMP.DOUBLE"),
+        ("whitworth_quick_return", "WHITWORTH.QUICK"),
+        ("kulisa-23110713", "KULISA.23110713"),
+        ("myCrankRockerWithPoint", "MY.CRANK.ROCKER"),
         ("supercalifragilisticexpialidocious", "SUPERCALIFRAGILIS"),
     ],
 )
@@ -139,7 +140,7 @@ STEMS = [
 def test_default_codes_stay_apart_where_a_cut_would_not() -> None:
     codes = [code(s + ".toml") for s in STEMS]
     assert len(set(codes)) == len(STEMS)
-    assert all(re.fullmatch(rf"[A-ZА-ЯЁ0-9-]{{1,{CODE_CHARS}}}", c) for c in codes)
+    assert all(re.fullmatch(rf"[A-ZА-ЯЁ0-9.]{{1,{CODE_CHARS}}}", c) for c in codes)
 
 
 @pytest.mark.parametrize("stem", STEMS)
@@ -147,7 +148,7 @@ def test_a_default_code_is_the_stems_first_words_whole(stem: str) -> None:
     """Each word of the code is a whole word of the stem, in the stem's order from its first:
     the code is cut at a word's end, never inside a word."""
     words = re.findall(r"\d+|[^\W\d_]+", stem.upper())
-    got = code(stem + ".toml").split("-")
+    got = code(stem + ".toml").split(".")
     assert got == words[: len(got)]
 
 

@@ -73,8 +73,12 @@ def stem(pid: str) -> str:
 #: The longest code a file's stem gives a default designation: "ТММ.<code>.01" fits графа 26
 #: (70 mm) 3.5 mm high in letters of common width, and at GOST's smaller heights in any.
 CODE_CHARS = 17
-#: The mark between a code's words (a drawing office writes the words of a name apart).
-CODE_JOIN = "-"
+#: The mark between a code's words: a dot, as between the parts of an ESKD designation (GOST
+#: 2.201: ``АБВГ.301261.001``); not a hyphen, which there marks an execution's number
+#: (``АБВГ.301261.001-01``), nor nothing (``CRANKROCKER`` does not read as two words). A
+#: default designation is then letters, digits and dots only, as the issue asks of a code:
+#: ``ТММ.CRANK.ROCKER.01`` (review 8 of issue 27).
+CODE_JOIN = "."
 
 
 def _words(name: str) -> list[str]:
@@ -89,13 +93,13 @@ def _words(name: str) -> list[str]:
 def code(pid: str) -> str:
     """The file's stem as a part of a designation that reads back to the file, as an ESKD code
     writes it (upper case, letters and digits only, at most :data:`CODE_CHARS`): the stem's
-    words whole, joined by :data:`CODE_JOIN`, as many of its first words as fit; the words are
-    cut at a word's end, never inside one (review 7: the syllables of ``TANGROCKSLID``,
+    words whole, joined by :data:`CODE_JOIN` (a dot), as many of its first words as fit; the
+    words are cut at a word's end, never inside one (review 7: the syllables of ``TANGROCKSLID``,
     ``YOKPUMDOUSLI`` did not read as words); a first word longer than :data:`CODE_CHARS` alone
     is cut to it. A stem without letters or digits gives ``""``.
 
     >>> code("sixbar_press.toml"), code("tangent_rocking_slider"), code("a/kulisa-23110713")
-    ('SIXBAR-PRESS', 'TANGENT-ROCKING', 'KULISA-23110713')
+    ('SIXBAR.PRESS', 'TANGENT.ROCKING', 'KULISA.23110713')
     """
     words = [w.upper() for w in _words(stem(pid))]
     if not words:

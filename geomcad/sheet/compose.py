@@ -1329,7 +1329,7 @@ def arrange(tree: Tree, field_: Field, _titles_broken: bool = False) -> Layout:
         inner = (cell[0] + v.margin, top + v.margin, cell[2] - v.margin, cell[3] - v.margin)
         scale = scales.get(_group(v)) if v.kind == "scaled" else None
         lay.placed[key] = Placed(v, cell, inner, scale)
-    if _break_titles(tree, lay):
+    if _break_titles(tree, lay, field_.obstacles):
         return arrange(tree, field_, _titles_broken=True)
     lay.title_lines = {id(t): t.title_lines for t in _titled(tree) if t.title_lines > 1}
     return lay
@@ -1390,19 +1390,32 @@ def _forget(tree: Tree) -> None:
         _forget(it)
 
 
-def _break_titles(tree: Tree, lay: Layout) -> bool:
+def _title_start(box: Box, height: float, obstacles: Sequence[Box]) -> float:
+    """Where a title on ``box``'s top edge starts: the box's left edge, else just right of a
+    box of the form its first line would run into (графа 26 in the top-left corner: as
+    :meth:`~geomcad.sheet.drawing.Drawing.text` moves it), every line of it there."""
+    x = box[0]
+    for o in obstacles:
+        if o[0] <= x < o[2] and o[1] < box[1] + height * TITLE_LEAD and box[1] < o[3]:
+            x = o[2]
+    return x
+
+
+def _break_titles(tree: Tree, lay: Layout, obstacles: Sequence[Box] = ()) -> bool:
     """Give each title wider than its box in ``lay`` the lines it takes there (never fewer
-    than it had); whether any count grew (the tree is then laid out again)."""
+    than it had; the width from where it starts, :func:`_title_start`: review 8's dynamics
+    title moved past графа 26 was broken for its whole box and ran to the next view's title);
+    whether any count grew (the tree is then laid out again)."""
     want: dict[int, int] = {}
     for pl in lay:
         v = pl.view
         if v.title:
-            want[id(v)] = len(
-                title_text_lines(v.caption(pl.scale), pl.box[2] - pl.box[0], v.title_height)
-            )
+            w = pl.box[2] - _title_start(pl.box, v.title_height, obstacles)
+            want[id(v)] = len(title_text_lines(v.caption(pl.scale), w, v.title_height))
     for cell, node in lay.titles:
         text = _node_caption(node, lay)
-        want[id(node)] = len(title_text_lines(text, cell[2] - cell[0], node.title_height))
+        w = cell[2] - _title_start(cell, node.title_height, obstacles)
+        want[id(node)] = len(title_text_lines(text, w, node.title_height))
     grown = {id(t): max(t.title_lines, want.get(id(t), 1)) for t in _titled(tree)}
     if all(grown[id(t)] == t.title_lines for t in _titled(tree)):
         return False
@@ -1443,13 +1456,19 @@ def compose(
 
 
 def _draw_title(d: Drawing, text: str, box: Box, height: float, room: int) -> None:
-    """A title on its box's top edge, broken into lines within the box's width where it is
-    wider (at most the ``room`` lines the layout gave it)."""
-    lines = title_text_lines(text, box[2] - box[0], height)
+    """A title on its box's top edge (from :func:`_title_start`), broken into lines within
+    the box's width where it is wider (at most the ``room`` lines the layout gave it)."""
+    from geomcad.sheet.drawing import RESERVED_GAP
+    from geomcad.sheet.frame import reserved
+
+    form = [(x0, y0, x1 + RESERVED_GAP, y1) for x0, y0, x1, y1 in
+            reserved(d.sheet.width, d.sheet.height)]  # fmt: skip
+    x = _title_start(box, height, form)
+    lines = title_text_lines(text, box[2] - x, height)
     if len(lines) > room:
         lines = [text]
     for i, line in enumerate(lines):
-        d.text(line, (box[0], box[1] + height + i * height * TITLE_SPACING), height)
+        d.text(line, (x, box[1] + height + i * height * TITLE_SPACING), height)
 
 
 def text_width(markup: str, height: float) -> float:

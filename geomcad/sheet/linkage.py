@@ -1025,11 +1025,11 @@ class _Mechanism(View):
                 numbers[str(g.links[1])] = (P0.pos[g.joint] + near) * 0.5
         draw_scheme(v, mech, bodies=bodies, pair_labels=marked, label_height=3.5,
                     guides=guides, travel=travel, link_space=LINK_SPACE,
-                    link_labels=numbers)  # fmt: skip
+                    link_labels=numbers, letter_space=LETTER_SPACE)  # fmt: skip
         for p in lk.points:
             if p.name not in lettered:
                 v.dot(P0.pos[p.name])
-                v.label(P0.pos[p.name], markup_of(p.name), 3.5, clear=1.0)
+                v.label(P0.pos[p.name], markup_of(p.name), 3.5, clear=1.0, space=LETTER_SPACE)
         omega_arrow(v, lk, P0)
         # the positions numbered last, clear of every line drawn
         numbered: list[Vec] = []
@@ -1053,6 +1053,13 @@ class _Mechanism(View):
             numbered = pts
 
 
+#: On the mechanism in its positions, a point's letter keeps this much (mm) further than usual
+#: from other texts: from the position numbers round it (placed before it), nearer, a number
+#: beside it reads as its index ("D⁷") and a row of them ending at it as one text with it ("4 5B";
+#: review 8). Not GOST 2.304's whole word space (0.6 h, 2.1 mm): that much more drove the placer
+#: to set sixbar_coupler_slider's D on its guide's axis; 1.0–1.25 left crank_rocker_inclined's D
+#: on the hatching.
+LETTER_SPACE = 1.5
 #: A track's numbering zone: the hull of its points grown by this much (mm), where its numbers
 #: stand (:func:`position_numbers` sets them within a row's depth of their points).
 ZONE_MM = 5.0
@@ -1172,12 +1179,17 @@ DETAIL_CIRCLE = 1.4
 #: On the mechanism, the detail's circle round the crank: this much (mm) beyond the crank's
 #: circle; its leader and shelf (mm).
 DETAIL_RING_MM, DETAIL_LEADER_MM, DETAIL_SHELF_MM = 3.0, 6.0, 5.0
+#: The detail's letter keeps this much (mm) from every line, circle, dot and text drawn before
+#: it, its leader as long as one of these (mm) to find such a place.
+LETTER_CLEAR_MM = 1.0
+DETAIL_LEADERS = (DETAIL_LEADER_MM, 1.5 * DETAIL_LEADER_MM, 2.0 * DETAIL_LEADER_MM)
 
 
 def detail_letter(s: Solved) -> str:
     """The letter of the crank's detail view: the first of the sheet's language's letters (the
-    word table's ``detail_letters``; ESKD 2.316: not Й О Х Ъ Ы Ь) that neither is nor looks like
-    (``detail_like``) the name of a point of the mechanism (Б where the crank's joint is A)."""
+    word table's ``detail_letters``; GOST 2.316-2008, 4.17: not Ё З Й О Ч Х Ъ Ы Ь) that neither
+    is nor looks like (``detail_like``) the name of a point of the mechanism (Б where the
+    crank's joint is A)."""
     names = {*s.linkage.frame, *s.drawn[0].pos}
     letters, like = WORDS("detail_letters"), WORDS("detail_like")
     return next(c for c, k in zip(letters, like, strict=True) if k not in names and c not in names)
@@ -1186,28 +1198,42 @@ def detail_letter(s: Solved) -> str:
 def mark_detail(v: Viewport, pivot: Vec, r: float, letter: str) -> None:
     """The crank's detail marked on the mechanism (ESKD 2.305): a thin circle round the crank's
     circle (radius ``r`` about ``pivot``), a leader from it up and to the right to a shelf
-    carrying the detail's ``letter``."""
+    carrying the detail's ``letter``: the first of the diagonals (up and to the right first)
+    and of the leader's lengths (:data:`DETAIL_LEADERS`) where the letter keeps
+    :data:`LETTER_CLEAR_MM` from everything drawn before it (a line, a circle, a joint's dot,
+    a text), else the one where the fewest are that near (review 7: the oscillator's coupler
+    AB crossed its "Б"; review 8: its "Г" stood on the dot of Φ1's point)."""
     ring = v.mm(r) + DETAIL_RING_MM
     c = v.p(pivot)
-    segments = [
-        pq
-        for it in v.sheet.items
-        if isinstance(it, Polyline)
-        for pq in itertools.pairwise(it.points)
-    ]
+    segments: list[tuple[tuple[float, float], tuple[float, float]]] = []
+    boxes: list[Box] = []
+    for it in v.sheet.items:
+        if isinstance(it, Polyline):
+            segments += itertools.pairwise((*it.points, *it.points[:1]) if it.closed else it.points)
+        elif isinstance(it, CircleItem | ArcItem):
+            if it.r <= 2.0 * LETTER_CLEAR_MM:  # a joint, a dot: its box
+                boxes.append((it.c[0] - it.r, it.c[1] - it.r, it.c[0] + it.r, it.c[1] + it.r))
+            else:  # a circle (an arc: its whole circle, to spare), as a polygon
+                n = max(12, int(2.0 * math.pi * it.r / 2.0))
+                ring_pts = [(it.c[0] + it.r * math.cos(2.0 * math.pi * k / n),
+                             it.c[1] + it.r * math.sin(2.0 * math.pi * k / n))
+                            for k in range(n + 1)]  # fmt: skip
+                segments += itertools.pairwise(ring_pts)
+        elif isinstance(it, TextItem) and not it.angle:
+            boxes.append(_text_box(it))
     v.sheet.add(CircleItem(c, ring, "thin"))
     w = box(parse(letter), TITLE_H)[0]
+    g = LETTER_CLEAR_MM
     best: tuple[int, tuple[tuple[float, float], ...], tuple[float, float]] | None = None
-    # up and to the right, else the first diagonal whose letter no line drawn runs through
-    # (review 7: the oscillator's coupler AB crossed its "Б")
-    for deg in (45.0, 135.0, -45.0, -135.0):
+    for lead, deg in itertools.product(DETAIL_LEADERS, (45.0, 135.0, -45.0, -135.0)):
         u = (math.cos(math.radians(deg)), -math.sin(math.radians(deg)))
         a = (c[0] + u[0] * ring, c[1] + u[1] * ring)
-        b = (a[0] + u[0] * DETAIL_LEADER_MM, a[1] + u[1] * DETAIL_LEADER_MM)
+        b = (a[0] + u[0] * lead, a[1] + u[1] * lead)
         e = (b[0] + math.copysign(DETAIL_SHELF_MM, u[0]), b[1])
         at = (min(b[0], e[0]) + 0.8, b[1] - 0.8)
-        lbox = (at[0], at[1] - TITLE_H, at[0] + w, at[1] + 0.3 * TITLE_H)
+        lbox = (at[0] - g, at[1] - TITLE_H - g, at[0] + w + g, at[1] + g)
         hits = sum(_segment_to_box(p, q, lbox) <= 0.0 for p, q in segments)
+        hits += sum(_gap(lbox, o) <= 0.0 for o in boxes)
         if best is None or hits < best[0]:
             best = (hits, (a, b, e), at)
         if hits == 0:

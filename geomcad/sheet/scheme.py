@@ -92,6 +92,7 @@ def draw_scheme(
     guides: Mapping[str, PointLike] | None = None,
     travel: Mapping[str, Sequence[PointLike]] | None = None,
     link_space: float = 0.0,
+    letter_space: float = 0.0,
 ) -> None:
     """Draw ``mech`` in viewport ``v`` (see the module docstring).
 
@@ -109,7 +110,8 @@ def draw_scheme(
     positions drawn: the guide's axis is drawn as a line over that whole travel and the fixed
     guide hatched along it (GOST 2.770: the frame's guide over the slider's travel). A link
     given a body is drawn as that body, never as a block. ``link_space``: mm the links'
-    numbers keep further than usual from other texts (where position numbers stand near them).
+    numbers keep further than usual from other texts (where position numbers stand near them),
+    ``letter_space`` the pairs' letters.
     """
     bodies = dict(bodies or {})
     size = mech.size()
@@ -136,7 +138,8 @@ def draw_scheme(
                 v.pivot(p.at, (supports or {}).get(p.name) or _support_direction(mech, p, drawn))
             else:
                 v.joint(p.at)
-    _labels(v, mech, drawn, size, pair_labels, link_labels, label_height, ghosts, link_space)
+    _labels(v, mech, drawn, size, pair_labels, link_labels, label_height, ghosts, link_space,
+            letter_space)  # fmt: skip
 
 
 #: A frame hinge's support stands upright (pointing down) unless a link it carries comes
@@ -284,6 +287,7 @@ def _labels(
     height: float,
     ghosts: Collection[str],
     space: float = 0.0,
+    letter_space: float = 0.0,
 ) -> None:
     seen: list[Vec] = []
     for p in mech.pairs:
@@ -291,7 +295,7 @@ def _labels(
         if not text or any(_same(p.at, q, size) for q in seen):
             continue
         seen.append(p.at)
-        v.label(p.at, text, height, clear=JOINT_R + 0.5)
+        v.label(p.at, text, height, clear=JOINT_R + 0.5, space=letter_space)
     for lk in mech.ids:
         if lk in ghosts:
             continue
