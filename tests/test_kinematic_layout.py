@@ -77,11 +77,8 @@ def test_plans_sheet_keeps_pa(path: Path) -> None:
     lay, lays = _arranged(s)
     if not lay.second:
         return
-    # (the acceleration plans join them where the velocity plans alone leave the largest
-    # format mostly blank: lay.both)
-    plans = [pl for pl in lays[-1] if isinstance(pl.view, PlanView) and pl.view.group == "v"]
-    numbered = len(s.drawn) + (len(s.accel_phis) if lay.both else 0)
-    assert len(plans) >= len(s.drawn) and len(plans) <= numbered and lays[-1].fits
+    plans = [pl for pl in lays[-1] if isinstance(pl.view, PlanView)]
+    assert len(plans) == len(s.drawn) and lays[-1].fits
     for pl in plans:
         assert pl.scale is not None
         assert pl.scale.mm(abs(lk.omega) * lk.length) >= PA_MM - 1e-6, pl.view.title

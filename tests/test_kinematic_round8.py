@@ -1,8 +1,9 @@
 """The kinematic sheets' composition, review 8 (issue 27): the size rules on every layout test
 file (the rocking cylinder's mechanism was drawn at 1:2, its 55 mm crank 27.5 mm long, with
 its velocity plans at pa = 38 mm); a crank's detail only beside the finest GOST scale of the
-mechanism that fits (the oscillator's 1:2,5 beside a 1:1 detail on a sheet 51 % blank); and
-no velocity plans' sheet on the largest format left mostly blank."""
+mechanism that fits (the oscillator's 1:2,5 beside a 1:1 detail on a sheet 51 % blank); the
+velocity plans' own sheet on the smallest format that holds them at pa's rule (in cells fitted
+to each column's and row's largest plan)."""
 
 from __future__ import annotations
 
@@ -13,13 +14,14 @@ import pytest
 
 from geomcad.linkage import parse
 from geomcad.linkage.solution import Solved, solve
+from geomcad.sheet import formats
 from geomcad.sheet.compose import _GOST_K, Field, Figure, Grid, arrange
 from geomcad.sheet.frame import FORMATS
 from geomcad.sheet.linkage import (
     CRANK_MM,
     PA_MM,
-    PLANS_BOTH,
     _accel_positions,
+    _alternatives,
     _arranged,
     _CrankDetail,
     _Mechanism,
@@ -77,7 +79,7 @@ def test_a_crank_detail_only_beside_the_finest_mechanism_that_fits(path: Path) -
     h = text_height((z.fmt,))
     trees, mech, _, _ = _trees(
         s, _accel_positions(s), h, True, (True, True), lay.second, lay.balanced,
-        lay.k_v.k, finer, lay.both,
+        lay.k_v.k, finer,
     )  # fmt: skip
     alt = arrange(trees[0], Field.of_format(z.fmt, z.landscape))
     scale = alt[mech].scale
@@ -92,33 +94,35 @@ def test_a_crank_detail_only_beside_the_finest_mechanism_that_fits(path: Path) -
 
 
 @pytest.mark.parametrize("path", LAYOUT_FILES, ids=lambda p: p.stem)
-def test_a_plans_sheet_on_the_largest_format_is_not_mostly_blank(path: Path) -> None:
-    """Review 8: the rocking cylinder's velocity plans took an A1 68 % blank (pa = 77 mm at
-    μ_V 0,01; at 0,02 pa is 38.5 mm, under the rule; in equal cells they fit no A2 at 0,01,
-    in cells fitted to each column's and row's largest plan they do). A plans' sheet on the
-    largest of the file's formats draws at least PLANS_BOTH of its field with its velocity
-    plans, else it carries the acceleration plans too (review 6's tangent: an A1 68 % blank)."""
+def test_a_plans_sheet_takes_a_larger_format_only_where_a_smaller_one_misses_pa(
+    path: Path,
+) -> None:
+    """Review 8: the rocking cylinder's twelve velocity plans took an A1 68 % blank at pa =
+    77 mm (μ_V 0,01; 0,02 draws pa 38.5 mm, under the rule): in equal cells, each as large as
+    the largest plan's width and height, they fit no A2. Where a file's velocity plans have a
+    sheet of their own, no smaller format of the file's holds them all at that sheet's μ_V
+    (pa's rule kept) and fits."""
     s = _solved(path)
-    lay, lays = _arranged(s)
+    lk = s.linkage
+    lay, _ = _arranged(s)
     if not lay.second:
         return
-    fmts = sheet_formats(s.linkage)
     z = lay.sized[-1]
-    if z.fmt != max(fmts, key=lambda f: FORMATS[f][0] * FORMATS[f][1]):
-        return
-    x0, y0, x1, y1 = Field.of_format(z.fmt, z.landscape).box
-    drawn = 0.0
-    for pl in lays[-1]:
-        if isinstance(pl.view, PlanView) and pl.view.group == "v" and pl.scale is not None:
-            e = pl.view.extent()
-            assert e is not None
-            drawn += pl.scale.mm(e[2] - e[0]) * pl.scale.mm(e[3] - e[1])
-    share = drawn / ((x1 - x0) * (y1 - y0))
-    if lay.both:
-        assert any(isinstance(pl.view, PlanView) and pl.view.group == "a" for pl in lays[-1]), share
-        assert not any(isinstance(pl.view, PlanView) for pl in lays[0])
-    else:
-        assert share >= PLANS_BOTH, share
+    assert lay.k_v.mm(abs(lk.omega) * lk.length) >= PA_MM - 1e-9
+    area = FORMATS[z.fmt][0] * FORMATS[z.fmt][1]
+    smaller = [f for f in sheet_formats(lk) if FORMATS[f][0] * FORMATS[f][1] < area]
+    trees, _, _, wants = _trees(
+        s, _accel_positions(s), text_height((z.fmt,)), False, (True, True), True, True
+    )
+    plans = {v: k for v, k in wants.items() if isinstance(v, PlanView)}
+    for f in smaller:
+        field = Field.of_format(f, True)
+        for alt in _alternatives(trees[1]):
+            try:
+                small = arrange(alt, field)
+            except ValueError:
+                continue
+            assert not (small.fits and formats.meets(small, plans)), (path.stem, f)
 
 
 def test_a_fitted_grid_draws_unlike_plans_larger_than_equal_cells() -> None:

@@ -237,8 +237,6 @@ class Layout:
     #: mechanism at a coarser scale
     balanced: bool = True
     squeezed: tuple[float, ...] = ()
-    #: the acceleration plans on the velocity plans' sheet (:data:`PLANS_BOTH`)
-    both: bool = False
 
 
 def _accel_positions(s: Solved) -> tuple[Position, ...]:
@@ -252,7 +250,7 @@ def _accel_positions(s: Solved) -> tuple[Position, ...]:
 def _trees(
     s: Solved, accel: Sequence[Position], h: float = TEXT_H, enlarge: bool = False,
     rules: tuple[bool, bool] = (False, False), apart: bool = False, balanced: bool = True,
-    k_v: float = 0.0, mech_k: float = 0.0, both: bool = False,
+    k_v: float = 0.0, mech_k: float = 0.0,
 ) -> tuple[tuple[Tree, ...], _Mechanism, bool, dict[View, float]]:  # fmt: skip
     """The sheets' view trees (see the module's docstring), tables and orders written ``h``
     high, and the scales (model units per mm) the format is chosen to reach: the mechanism's
@@ -266,8 +264,7 @@ def _trees(
     velocity plans' scale on their own sheet, at which the velocity plan of an acceleration
     plan's position that is not a numbered one is drawn beside it (one μ_V for a file's
     velocity plans). ``mech_k`` (m/mm, 0: none): with the crank's detail, the scale the
-    mechanism reached without it, which its search still seeks. ``both`` (with the velocity
-    plans apart): the acceleration plans on the plans' sheet too (:data:`PLANS_BOTH`)."""
+    mechanism reached without it, which its search still seeks."""
     lk = s.linkage
     n = len(s.drawn)
     second = apart or n > PLANS_ON_SHEET
@@ -344,23 +341,20 @@ def _trees(
     if rules[1]:
         for view in vviews:
             view.most_k = round_scale_down(wants[view], view.quantity, view.series).k
-    # the acceleration plans where they stand: on the first sheet, or (``both``) beside the
-    # velocity plans on theirs
-    ap1: tuple[Tree, ...] = () if second and both else (aplans,)
     if second:
         # the tables and the order in a column of the field's height beside the rest: the
         # mechanism (and its crank's detail) over the diagrams and the acceleration plans
         # (review 8: under a row with that column, 350 mm tall, the mechanism's row kept
         # 155 mm and drew the oscillator at 1:2,5 beside its detail on a sheet 51 % blank)
-        beside = Row(Column(mech_node(), Row(diagrams, *ap1)), Column(tables, order))
-        first: Tree = Column(mech_node(), Row(diagrams, *ap1, Column(tables, order)))
+        beside = Row(Column(mech_node(), Row(diagrams, aplans)), Column(tables, order))
+        first: Tree = Column(mech_node(), Row(diagrams, aplans, Column(tables, order)))
         if apart and n <= PLANS_ON_SHEET:
             # the plans moved to their own sheet for their size: a tall mechanism may take
             # the first sheet's whole height
             first = Choice(
                 first,
-                Row(mech_node(), Column(diagrams, Row(*ap1, Column(tables, order)))),
-                Row(Column(mech_node(), diagrams), *ap1, Column(tables, order)),
+                Row(mech_node(), Column(diagrams, Row(aplans, Column(tables, order)))),
+                Row(Column(mech_node(), diagrams), aplans, Column(tables, order)),
                 beside,
             )
         else:
@@ -369,12 +363,6 @@ def _trees(
         # (review 7: tangent's last plan, tall, in the cell the title block cuts drew all
         # twelve at pa = 39 mm; a row of cells clear of it keeps pa at its rule)
         plans_sheet = Choice(vplans, Column(vplans, title_block_spacer()))
-        if both:
-            plans_sheet = Choice(
-                Row(vplans, aplans),
-                Column(vplans, aplans),
-                Column(Row(vplans, aplans), title_block_spacer()),
-            )
         return (first, plans_sheet), mech, True, wants
     sheet = Choice(
         Column(Row(mech_node(), vplans), Row(diagrams, aplans, Column(tables, order))),
@@ -408,7 +396,7 @@ def _order_title(s: Solved, P: Position) -> str:
 
 def _short(s: Solved, accel: Sequence[Position], lays: Sequence[Arranged]) -> bool:
     """Whether a plan vector comes out shorter than two arrowheads at the arranged scales."""
-    k_v, k_a = lays[-1].scale("v"), _scale_a(lays)
+    k_v, k_a = lays[-1].scale("v"), lays[0].scale("a")
     plans = [(P.vp, k_v) for P in [*s.drawn, *accel]] + [(P.ap, k_a) for P in accel]
     return any(
         k.mm((plan.points[v.head] - plan.points[v.tail]).norm) < SHORT_MM
@@ -430,13 +418,13 @@ def _arranged(s: Solved) -> tuple[Layout, tuple[Arranged, ...]]:
     accel = _accel_positions(s)
     fmts = sheet_formats(s.linkage)
     made: list[tuple[tuple[Tree, ...], _Mechanism, bool, dict[View, float]]] = []
-    detail, rules, apart, balanced, both = False, (False, False), False, True, False
+    detail, rules, apart, balanced = False, (False, False), False, True
     plans_k = 0.0  # the velocity plans' scale on their own sheet, once it is arranged
     mech_k = 0.0  # the mechanism's finest scale without its crank's detail, once tried
 
     def make(i: int) -> Callable[[float], tuple[Tree, Mapping[View, float]]]:
         def tree(h: float) -> tuple[Tree, Mapping[View, float]]:
-            made.append(_trees(s, accel, h, detail, rules, apart, balanced, plans_k, mech_k, both))
+            made.append(_trees(s, accel, h, detail, rules, apart, balanced, plans_k, mech_k))
             t, _, _, wants = made[-1]
             return t[i], {v: k for v, k in wants.items() if v in _views(t[i])}
 
@@ -508,17 +496,6 @@ def _arranged(s: Solved) -> tuple[Layout, tuple[Arranged, ...]]:
                 chosen = (detail, apart)
                 near = share
         detail, apart = chosen
-    if second and _plans_sparse(fmts, fitted):
-        # the velocity plans alone on the largest format, which they leave mostly blank (their
-        # μ_V the finest of its series that keeps pa's rule: the next would not fit): the
-        # acceleration plans join them there, and the first sheet's room is the mechanism's
-        # (review 8: rocking_cylinder's plans sheet, an A1 68 % blank)
-        both = True
-        tried = attempt()
-        if _rules_share(s, tried[0]) >= _rules_share(s, fitted) - tol.REL_LENGTH:
-            fitted, mech, second = tried
-        else:
-            both = False
     # the search's split of the diagrams' column, on the arrangement chosen, where the equal
     # heights leave a curve too low (its μ rounded coarse), or may cost the mechanism its
     # scale: with the velocity plans on a sheet of their own, the column shares the first
@@ -543,38 +520,9 @@ def _arranged(s: Solved) -> tuple[Layout, tuple[Arranged, ...]]:
             if isinstance(view, _Note):
                 view.shown = short
     k_v = lays[-1].scale("v")
-    out = Layout(lays[0][mech].scale or Scale(1.0), k_v, _scale_a(lays), second, accel,
-                 trees, mech, sized, balanced, squeezed, both)  # fmt: skip
+    out = Layout(lays[0][mech].scale or Scale(1.0), k_v, lays[0].scale("a"), second, accel,
+                 trees, mech, sized, balanced, squeezed)  # fmt: skip
     return out, lays
-
-
-#: The velocity plans' own sheet on the largest of the file's formats takes the acceleration
-#: plans too where the plans draw less than this share of its field.
-PLANS_BOTH = 0.35
-
-
-def _plans_sparse(fmts: Sequence[str], fitted: Sequence[tuple[Tree, formats.Sized]]) -> bool:
-    """Whether the velocity plans' own sheet is on the largest of ``fmts`` (a smaller one
-    would not hold them at their μ_V) and its plans' drawings cover less than
-    :data:`PLANS_BOTH` of its field (the drawings' boxes at their scales)."""
-    if len(fitted) < 2 or len(fmts) < 2:
-        return False
-    z = fitted[-1][1]
-    if z.fmt != max(fmts, key=lambda f: FORMATS[f][0] * FORMATS[f][1]):
-        return False
-    x0, y0, x1, y1 = Field.of_format(z.fmt, z.landscape).box
-    drawn = 0.0
-    for pl in z.layout:
-        if isinstance(pl.view, PlanView) and pl.scale is not None:
-            e = pl.view.extent()
-            if e is not None:
-                drawn += pl.scale.mm(e[2] - e[0]) * pl.scale.mm(e[3] - e[1])
-    return drawn < PLANS_BOTH * (x1 - x0) * (y1 - y0)
-
-
-def _scale_a(lays: Sequence[Arranged]) -> Scale:
-    """The acceleration plans' scale, on whichever sheet they stand."""
-    return next(lay.scale("a") for lay in lays if "a" in lay.groups)
 
 
 def _crank_may_keep(s: Solved, accel: Sequence[Position], fmts: Sequence[str], apart: bool) -> bool:
@@ -665,8 +613,7 @@ def kinematic_sheets(s: Solved, stem: str = "") -> list[tuple[str, Sheet]]:
             keep_link_numbers_clear(first, pl.box)
     out: list[tuple[str, Sheet]] = [("", first)]
     if lay.second:
-        what = WORDS("plans_sheet" if lay.both else "vplans_sheet")
-        d2 = lay.sized[1].start(_title(lk, what, designation, None, 2, count))
+        d2 = lay.sized[1].start(_title(lk, WORDS("vplans_sheet"), designation, None, 2, count))
         compose(d2, lay.trees[1], layout=lays[1])
         out.append(("plans", d2.finish()))
     return out
