@@ -337,7 +337,10 @@ class Column(Node):
 
 class Grid(Node):
     """Alike items in equal cells, row by row, in the arrangement (columns × rows) that draws
-    them the largest; ``cols`` fixes the number of columns."""
+    them the largest; ``cols`` fixes the number of columns. ``fitted`` (views of one scale
+    group): each column as wide and each row as high as its largest drawing needs at their one
+    scale, not equal cells (the velocity plans of a turn, long in one position and tall in
+    another: review 8's rocking cylinder's twelve plans fitted no A2 in equal cells)."""
 
     def __init__(
         self,
@@ -347,9 +350,11 @@ class Grid(Node):
         title: str = "",
         title_height: float = 5.0,
         group: str = "",
+        fitted: bool = False,
     ) -> None:
         super().__init__(*items, gap=gap, title=title, title_height=title_height, group=group)
         self.cols = cols
+        self.fitted = fitted
 
 
 class Choice(Node):
@@ -834,14 +839,57 @@ def _grid_cells(node: Grid, box: Box, cols: int) -> list[tuple[Tree, Box]]:
     y0 += node.title_room()
     n = len(node.items)
     rows = math.ceil(n / cols)
-    cw = (x1 - x0 - node.gap * (cols - 1)) / cols
-    ch = (y1 - y0 - node.gap * (rows - 1)) / rows
-    xs = [x0 + c * (cw + node.gap) for c in range(cols)]
-    ys = [y0 + r * (ch + node.gap) for r in range(rows)]
+    ws = [(x1 - x0 - node.gap * (cols - 1)) / cols] * cols
+    hs = [(y1 - y0 - node.gap * (rows - 1)) / rows] * rows
+    fitted = _fitted_lengths(node, cols, x1 - x0, y1 - y0) if node.fitted else None
+    if fitted is not None:
+        ws, hs = fitted
+    xs = [x0 + sum(ws[:c]) + c * node.gap for c in range(cols)]
+    ys = [y0 + sum(hs[:r]) + r * node.gap for r in range(rows)]
     return [
-        (it, (xs[i % cols], ys[i // cols], xs[i % cols] + cw, ys[i // cols] + ch))
+        (
+            it,
+            (
+                xs[i % cols],
+                ys[i // cols],
+                xs[i % cols] + ws[i % cols],
+                ys[i // cols] + hs[i // cols],
+            ),
+        )
         for i, it in enumerate(node.items)
     ]
+
+
+def _fitted_lengths(
+    node: Grid, cols: int, width: float, height: float
+) -> tuple[list[float], list[float]] | None:
+    """A fitted grid's column widths and row heights (mm) in ``width`` × ``height``: each
+    column's (row's) margins and titles, and a share of the rest in proportion to its largest
+    drawing's model width (height), so that one scale draws every cell's drawing to its
+    column's or row's limit; None (equal cells) where an item is no view with an extent or the
+    fixed parts leave no room."""
+    n = len(node.items)
+    rows = math.ceil(n / cols)
+    sizes = []
+    for it in node.items:
+        ext = _ext(it) if isinstance(it, View) else None
+        if ext is None or not isinstance(it, View):
+            return None
+        sizes.append(
+            (ext[2] - ext[0], ext[3] - ext[1], 2.0 * it.margin, 2.0 * it.margin + it.title_room())
+        )
+    cw = [max(sizes[i][0] for i in range(c, n, cols)) for c in range(cols)]
+    cf = [max(sizes[i][2] for i in range(c, n, cols)) for c in range(cols)]
+    rh = [max(sizes[i][1] for i in range(r * cols, min(n, (r + 1) * cols))) for r in range(rows)]
+    rf = [max(sizes[i][3] for i in range(r * cols, min(n, (r + 1) * cols))) for r in range(rows)]
+    free_w = width - node.gap * (cols - 1) - sum(cf)
+    free_h = height - node.gap * (rows - 1) - sum(rf)
+    if free_w <= 0.0 or free_h <= 0.0 or sum(cw) <= 0.0 or sum(rh) <= 0.0:
+        return None
+    return (
+        [f + free_w * w / sum(cw) for f, w in zip(cf, cw, strict=True)],
+        [f + free_h * h / sum(rh) for f, h in zip(rf, rh, strict=True)],
+    )
 
 
 def _getter(ids: Sequence[int]) -> Callable[[Mapping[int, object]], object]:
@@ -1512,12 +1560,19 @@ def _least(t: Tree, wants: Mapping[View, float]) -> list[tuple[float, float]]:
     if isinstance(t, Grid):
         n = len(t.items)
         out = []
+        lw = [min(w for w, _ in kid) for kid in kids]
+        lh = [min(h for _, h in kid) for kid in kids]
         for cols in [t.cols] if t.cols else range(1, n + 1):
             rows = math.ceil(n / cols)
-            # each cell holds one child: the largest least width and height of any child
-            cw = max(min(w for w, _ in kid) for kid in kids)
-            ch = max(min(h for _, h in kid) for kid in kids)
-            out.append((cols * cw + t.gap * (cols - 1), rows * ch + t.gap * (rows - 1) + top))
+            if t.fitted:  # each column (row) as its largest child needs
+                cws = sum(max(lw[i] for i in range(c, n, cols)) for c in range(cols))
+                chs = sum(
+                    max(lh[i] for i in range(r * cols, min(n, r * cols + cols)))
+                    for r in range(rows)
+                )
+            else:  # each cell holds one child: the largest least width and height of any child
+                cws, chs = cols * max(lw), rows * max(lh)
+            out.append((cws + t.gap * (cols - 1), chs + t.gap * (rows - 1) + top))
         return _pareto(out)
     horizontal = isinstance(t, Row)
     fixed, _ = _fixed(t, horizontal)

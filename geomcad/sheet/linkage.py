@@ -283,7 +283,10 @@ def _trees(
                  show_scale=False, weight=2.0, min_mm=SHORT_MM)
         for i, P in enumerate(s.drawn)
     ]  # fmt: skip
-    vplans = Grid(*vviews, title=WORDS("vplans"), group="v", title_height=TITLE_H)
+    # on their own sheet, the plans in cells fitted to each column's and row's largest plan
+    # (review 8: the rocking cylinder's twelve, long in one position and tall in another,
+    # fitted no A2 in equal cells at pa = 77 mm and took an A1 68 % blank)
+    vplans = Grid(*vviews, title=WORDS("vplans"), group="v", title_height=TITLE_H, fitted=second)
     detail = accel[0] if accel else s.drawn[0]
     cells: list[View | Node] = []
     for P in accel:
@@ -339,6 +342,11 @@ def _trees(
         for view in vviews:
             view.most_k = round_scale_down(wants[view], view.quantity, view.series).k
     if second:
+        # the tables and the order in a column of the field's height beside the rest: the
+        # mechanism (and its crank's detail) over the diagrams and the acceleration plans
+        # (review 8: under a row with that column, 350 mm tall, the mechanism's row kept
+        # 155 mm and drew the oscillator at 1:2,5 beside its detail on a sheet 51 % blank)
+        beside = Row(Column(mech_node(), Row(diagrams, aplans)), Column(tables, order))
         first: Tree = Column(mech_node(), Row(diagrams, aplans, Column(tables, order)))
         if apart and n <= PLANS_ON_SHEET:
             # the plans moved to their own sheet for their size: a tall mechanism may take
@@ -347,7 +355,10 @@ def _trees(
                 first,
                 Row(mech_node(), Column(diagrams, Row(aplans, Column(tables, order)))),
                 Row(Column(mech_node(), diagrams), aplans, Column(tables, order)),
+                beside,
             )
+        else:
+            first = Choice(first, beside)
         # the plans' sheet: its grid over the whole field, or above the title block's height
         # (review 7: tangent's last plan, tall, in the cell the title block cuts drew all
         # twelve at pa = 39 mm; a row of cells clear of it keeps pa at its rule)
