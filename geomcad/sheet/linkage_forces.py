@@ -99,6 +99,7 @@ from geomcad.sheet.linkage import (
     TEXT_H,
     TITLE_H,
     ZERO,
+    _alternatives,
     _CrankDetail,
     _on,
     fit,
@@ -426,20 +427,26 @@ def _held(
     their own (at least :data:`GROUPS_SHARE` of its size); the first whose drawings keep the
     crank's length and the groups' share, its tables and texts whole in their boxes
     (:func:`_whole`), is taken. A detail then enlarges the crank only where no arrangement
-    holds its scale."""
+    holds its scale. Where none does, once more with one arrangement more (``held``: the
+    mechanism at its rule's scale with the tables and polygons beside it, the groups and the
+    lever under it; review 8: the rocking cylinder's 55 mm crank at 1:1), that arrangement kept
+    (the joint search would pass it over for a larger score, the crank short again)."""
     fmts = sheet_formats(s.linkage)
     largest = max(fmts, key=lambda fm: FORMATS[fm][0] * FORMATS[fm][1])
-    for shared in (True, False):
-        tree, wants = _sheet2(s, P, f, k, TEXT_H, shared=shared, kin=kin, under=True,
-                              weight=CRANK_WEIGHT)  # fmt: skip
-        on = _on(tree, wants, largest)
-        if on is None or not (_crank_kept(on[1].layout) and _groups_kept(on[1].layout)):
-            continue
-        held, _kept = _final2(s, P, f, k, on[1], shared, largest, kin, under=True,
-                              weight=CRANK_WEIGHT)  # fmt: skip
-        lay = held[1].layout
-        if _crank_kept(lay) and _groups_kept(lay) and _whole(lay):
-            return held
+    for held in (False, True):
+        for shared in (True, False):
+            tree, wants = _sheet2(s, P, f, k, TEXT_H, shared=shared, kin=kin, under=True,
+                                  weight=CRANK_WEIGHT, held=held)  # fmt: skip
+            on = _on(tree, wants, largest)
+            if on is None or not (_crank_kept(on[1].layout) and _groups_kept(on[1].layout)):
+                continue
+            only = next(i for i, alt in enumerate(_alternatives(tree)) if alt is on[0])
+            kept, _rules = _final2(s, P, f, k, on[1], shared, largest, kin, under=True,
+                                   weight=CRANK_WEIGHT, held=held,
+                                   only=only if held else None)  # fmt: skip
+            lay = kept[1].layout
+            if _crank_kept(lay) and _groups_kept(lay) and _whole(lay):
+                return kept
     return found
 
 
@@ -560,13 +567,13 @@ def _compose2(
 def _final2(
     s: Solved, P: Position, f: Forces, k: int | None, z: formats.Sized, shared: bool,
     largest: str, kin: float | None = None, crank_own: bool = False, under: bool = False,
-    weight: float = 1.0,
+    weight: float = 1.0, held: bool = False, only: int | None = None,
 ) -> tuple[tuple[Tree, formats.Sized], bool]:  # fmt: skip
     """Sheet 2 on the format of ``z`` with its polygons' details reckoned at the μ_F each got
     there (see :func:`_compose2`), and whether it keeps the rules (where it does not on a format
     smaller than the largest, the caller takes the larger format found first); the crank cut
-    out at its own μ_l where ``crank_own``, one arrangement more where ``under``
-    (:func:`_sheet2`)."""
+    out at its own μ_l where ``crank_own``, one arrangement more where ``under`` (another
+    where ``held``; :func:`_sheet2`), only the arrangement of index ``only`` where given."""
     refs = {pl.view.title: (pl.scale.k, pl.size) for pl in z.layout
             if isinstance(pl.view, Polygon) and pl.scale}  # fmt: skip
     field = Field.of_format(z.fmt, z.landscape)
@@ -574,15 +581,17 @@ def _final2(
     rules: list[bool] = []
     good: list[bool] = []
     for h in (TEXT_H, SMALL_TEXT_H):
-        tree, w = _sheet2(s, P, f, k, h, refs, shared, kin, crank_own, under, weight)
+        tree, w = _sheet2(s, P, f, k, h, refs, shared, kin, crank_own, under, weight, held)
+        tree = tree if only is None else _alternatives(tree)[only]
         lay = arrange(tree, field)
         # a plan placed at a coarser μ_F than its details were reckoned at may not hold them
         # in its box (they would run into the captions round it): reckoned again at that μ_F
         spilt = _spilt(lay)
         if spilt:
             tree, w = _sheet2(
-                s, P, f, k, h, {**refs, **spilt}, shared, kin, crank_own, under, weight
+                s, P, f, k, h, {**refs, **spilt}, shared, kin, crank_own, under, weight, held
             )
+            tree = tree if only is None else _alternatives(tree)[only]
             lay = arrange(tree, field)
         tried.append((tree, formats.Sized(z.fmt, z.landscape, lay)))
         # on a smaller format than the largest, its polygons POLY_MM across as it was chosen
@@ -722,6 +731,7 @@ def _sheet2(
     s: Solved, P: Position, f: Forces, k: int | None, h: float,
     refs: Mapping[str, tuple[float, tuple[float, float]]] | None = None, shared: bool = True,
     kin: float | None = None, crank_own: bool = False, under: bool = False, weight: float = 1.0,
+    held: bool = False,
 ) -> tuple[Tree, dict[View, float]]:  # fmt: skip
     """Sheet 2's tree, its tables and texts ``h`` high, and the scales its views want. The
     force polygons are drawn with their details where ``refs`` gives their reference μ_F and
@@ -733,7 +743,10 @@ def _sheet2(
     arrangement more, the polygons under the mechanism and the groups over the lever (room
     for the groups at the mechanism's μ_l; tried only where the others leave it broken).
     ``weight``: a millimetre the crank (and a group of its own μ_l) falls short of its rule
-    weighs that many of the plans' seek in the search (:data:`CRANK_WEIGHT`, :func:`_held`)."""
+    weighs that many of the plans' seek in the search (:data:`CRANK_WEIGHT`, :func:`_held`).
+    ``held``: one arrangement more, the last, the mechanism with the tables and the polygons
+    beside it and the groups and the lever under them (room for a mechanism at its crank's
+    scale that takes a third of the sheet; tried only where the others leave the crank short)."""
     lk = s.linkage
     # the length scales from the geometry alone (a change of ω or of the loads rescales no
     # drawing of links): never finer than links_scale; the crank CRANK_MM long where the
@@ -830,6 +843,14 @@ def _sheet2(
         Column(Row(mech, lever, right), groups),
         Row(Column(mech, lever), Column(Grid(*bodies), Grid(*polys)), right),
         *([Row(Column(mech, Grid(*polys)), Column(band, lever), right)] if under else []),
+        # the mechanism at its rule's scale with the tables and the polygons beside it, the
+        # groups and the lever under them (review 8: a 55 mm crank's mechanism at 1:1 holds
+        # only so on A1; tried only where the others leave the crank short, :func:`_held`)
+        *(
+            [Column(Row(mech, Column(Row(*right.items), Grid(*polys))), Row(band, lever))]
+            if held
+            else []
+        ),
     )
     # the format: the smallest on which the crank is CRANK_MM long (where the sweep allows it),
     # every force polygon at least POLY_MM across and its longest vector at least PLAN_MM (a
