@@ -35,9 +35,18 @@ FILES = [
     for p in sorted(EXAMPLES.glob("*.toml"))
     if "[links." in p.read_text(encoding="utf-8") or "[[load]]" in p.read_text(encoding="utf-8")
 ]
+#: The layout test files with loads (review 7's oscillator: a 50 mm crank, 20 mm at 1:2.5, whose
+#: detail found no room in the mechanism's box and no GOST scale between 1:1 and 1:2).
+LAYOUT_FILES = [
+    p
+    for p in sorted((Path(__file__).resolve().parent / "linkages_layout").glob("*.toml"))
+    if "[links." in p.read_text(encoding="utf-8") or "[[load]]" in p.read_text(encoding="utf-8")
+]
 #: The share of the field (10 mm cells, tests/layout.py) a forces sheet may leave empty: its
-#: drawings are sparse (links, polygons of thin vectors), but never most of an A1 blank.
-EMPTY_MAX = 0.85
+#: drawings are sparse (links, polygons of thin vectors), but never most of an A1 blank
+#: (review 8: the press's sheet 84.8 %, its drawings of links and lever stacked in one column
+#: beside plans at 100 N/mm; side by side over the plans, 80.5 %).
+EMPTY_MAX = 0.83
 #: The largest empty rectangle of the field (10 mm cells) a forces sheet may have: no quarter of
 #: the sheet left blank.
 HOLE_MAX = 0.25
@@ -129,7 +138,7 @@ def test_one_length_scale_for_the_mechanism_and_one_for_its_groups(
         assert main.k / groups[0].scale.k >= lf.GROUPS_SHARE * 0.999, (main, groups[0].scale)
 
 
-@pytest.mark.parametrize("path", FILES, ids=[p.stem for p in FILES])
+@pytest.mark.parametrize("path", [*FILES, *LAYOUT_FILES], ids=lambda p: p.stem)
 def test_the_crank_and_the_field(path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
     sheet, lay, s = _forces_sheet(path, monkeypatch)
     (mech,) = [pl for pl in _links(lay) if isinstance(pl.view, lf._Loaded)]
@@ -225,15 +234,6 @@ def test_groups_of_their_own_only_where_the_shared_scale_breaks_the_rules(path: 
             continue
         _found, kept = lf._final2(s, P, forces, k, on[1], True, "A1", under=True)
         assert not kept, h
-
-
-#: The layout test files with loads (review 7's oscillator: a 50 mm crank, 20 mm at 1:2.5, whose
-#: detail found no room in the mechanism's box and no GOST scale between 1:1 and 1:2).
-LAYOUT_FILES = [
-    p
-    for p in sorted((Path(__file__).resolve().parent / "linkages_layout").glob("*.toml"))
-    if "[links." in p.read_text(encoding="utf-8") or "[[load]]" in p.read_text(encoding="utf-8")
-]
 
 
 @pytest.mark.parametrize("path", [*FILES, *LAYOUT_FILES], ids=lambda p: p.stem)

@@ -409,9 +409,48 @@ def force_layout(s: Solved) -> tuple[Tree, formats.Sized]:
             and (not lay.fits or lost < _crank_shortfall(lay))
         ):
             found = own
+    found = _rowed(s, P, forces, k, found, kin)
     for pl in found[1].layout:
         if isinstance(pl.view, _Lever):
             pl.view.grow(pl, found[1].layout)
+    return found
+
+
+def _rowed(
+    s: Solved, P: Position, f: Forces, k: int | None, found: tuple[Tree, formats.Sized],
+    kin: float | None,
+) -> tuple[Tree, formats.Sized]:  # fmt: skip
+    """Once the search has chosen: the arrangement of the drawings of links and the lever side
+    by side over the polygons and the tables (``rowed``, :func:`_sheet2`), on the same format
+    with the groups and the crank cut out at the μ_l they have, where it draws every view at
+    least as large as the one found (no scale coarser), keeps the crank's and the groups'
+    rules, its tables whole and its polygons' details in their boxes, and the search scores it
+    higher (review 8: the press's mechanism 53 mm wide in a 251 mm box over the lever, its
+    plans at 100 N/mm; side by side, two of its plans at 50 N/mm). Tried alone, after the
+    search (a sixth arrangement in the joint search would cost every sheet's layout)."""
+    lay = found[1].layout
+    shared = not any(isinstance(pl.view, _FreeBody) and pl.view.group == GROUPS_L for pl in lay)
+    own = any(isinstance(pl.view, _FreeBody) and pl.view.group == CRANK_L for pl in lay)
+    under = isinstance(found[0], Choice) and len(found[0].items) > ARRANGEMENTS
+    tree, _w = _sheet2(s, P, f, k, TEXT_H, None, shared, kin, own, under, rowed=True)
+    last = len(_alternatives(tree)) - 1
+    cand, _rules = _final2(s, P, f, k, found[1], shared, found[1].fmt, kin, own, under,
+                           only=last, rowed=True)  # fmt: skip
+    got = cand[1].layout
+    was = {(type(pl.view).__name__, pl.view.title): pl.scale.k for pl in lay if pl.scale}
+    now = {(type(pl.view).__name__, pl.view.title): pl.scale.k for pl in got if pl.scale}
+    larger = was.keys() == now.keys() and all(
+        now[key] <= kk * (1.0 + tol.REL_LENGTH) for key, kk in was.items()
+    )
+    if (
+        larger
+        and got.score > lay.score
+        and _crank_kept(got)
+        and _groups_kept(got)
+        and _whole(got)
+        and not _spilt(got)
+    ):
+        return cand
     return found
 
 
@@ -567,7 +606,7 @@ def _compose2(
 def _final2(
     s: Solved, P: Position, f: Forces, k: int | None, z: formats.Sized, shared: bool,
     largest: str, kin: float | None = None, crank_own: bool = False, under: bool = False,
-    weight: float = 1.0, held: bool = False, only: int | None = None,
+    weight: float = 1.0, held: bool = False, only: int | None = None, rowed: bool = False,
 ) -> tuple[tuple[Tree, formats.Sized], bool]:  # fmt: skip
     """Sheet 2 on the format of ``z`` with its polygons' details reckoned at the μ_F each got
     there (see :func:`_compose2`), and whether it keeps the rules (where it does not on a format
@@ -581,16 +620,15 @@ def _final2(
     rules: list[bool] = []
     good: list[bool] = []
     for h in (TEXT_H, SMALL_TEXT_H):
-        tree, w = _sheet2(s, P, f, k, h, refs, shared, kin, crank_own, under, weight, held)
+        tree, w = _sheet2(s, P, f, k, h, refs, shared, kin, crank_own, under, weight, held, rowed)
         tree = tree if only is None else _alternatives(tree)[only]
         lay = arrange(tree, field)
         # a plan placed at a coarser μ_F than its details were reckoned at may not hold them
         # in its box (they would run into the captions round it): reckoned again at that μ_F
         spilt = _spilt(lay)
         if spilt:
-            tree, w = _sheet2(
-                s, P, f, k, h, {**refs, **spilt}, shared, kin, crank_own, under, weight, held
-            )
+            tree, w = _sheet2(s, P, f, k, h, {**refs, **spilt}, shared, kin, crank_own, under,
+                              weight, held, rowed)  # fmt: skip
             tree = tree if only is None else _alternatives(tree)[only]
             lay = arrange(tree, field)
         tried.append((tree, formats.Sized(z.fmt, z.landscape, lay)))
@@ -731,7 +769,7 @@ def _sheet2(
     s: Solved, P: Position, f: Forces, k: int | None, h: float,
     refs: Mapping[str, tuple[float, tuple[float, float]]] | None = None, shared: bool = True,
     kin: float | None = None, crank_own: bool = False, under: bool = False, weight: float = 1.0,
-    held: bool = False,
+    held: bool = False, rowed: bool = False,
 ) -> tuple[Tree, dict[View, float]]:  # fmt: skip
     """Sheet 2's tree, its tables and texts ``h`` high, and the scales its views want. The
     force polygons are drawn with their details where ``refs`` gives their reference μ_F and
@@ -746,7 +784,10 @@ def _sheet2(
     weighs that many of the plans' seek in the search (:data:`CRANK_WEIGHT`, :func:`_held`).
     ``held``: one arrangement more, the last, the mechanism with the tables and the polygons
     beside it and the groups and the lever under them (room for a mechanism at its crank's
-    scale that takes a third of the sheet; tried only where the others leave the crank short)."""
+    scale that takes a third of the sheet; tried only where the others leave the crank short).
+    ``rowed``: one more, the last, the drawings of links and the lever side by side over the
+    polygons and the tables in a row (tall narrow drawings: a press's vertical slider-crank;
+    tried once the search has chosen, :func:`_rowed`)."""
     lk = s.linkage
     # the length scales from the geometry alone (a change of ω or of the loads rescales no
     # drawing of links): never finer than links_scale; the crank CRANK_MM long where the
@@ -851,6 +892,7 @@ def _sheet2(
             if held
             else []
         ),
+        *([Column(Row(mech, band, lever), Row(Grid(*polys), Row(*right.items)))] if rowed else []),
     )
     # the format: the smallest on which the crank is CRANK_MM long (where the sweep allows it),
     # every force polygon at least POLY_MM across and its longest vector at least PLAN_MM (a
