@@ -35,9 +35,18 @@ FILES = [
     for p in sorted(EXAMPLES.glob("*.toml"))
     if "[links." in p.read_text(encoding="utf-8") or "[[load]]" in p.read_text(encoding="utf-8")
 ]
+#: The layout test files with loads (review 7's oscillator: a 50 mm crank, 20 mm at 1:2.5, whose
+#: detail found no room in the mechanism's box and no GOST scale between 1:1 and 1:2).
+LAYOUT_FILES = [
+    p
+    for p in sorted((Path(__file__).resolve().parent / "linkages_layout").glob("*.toml"))
+    if "[links." in p.read_text(encoding="utf-8") or "[[load]]" in p.read_text(encoding="utf-8")
+]
 #: The share of the field (10 mm cells, tests/layout.py) a forces sheet may leave empty: its
-#: drawings are sparse (links, polygons of thin vectors), but never most of an A1 blank.
-EMPTY_MAX = 0.85
+#: drawings are sparse (links, polygons of thin vectors), but never most of an A1 blank
+#: (review 8: the press's sheet 84.8 %, its drawings of links and lever stacked in one column
+#: beside plans at 100 N/mm; side by side over the plans, 80.5 %).
+EMPTY_MAX = 0.83
 #: The largest empty rectangle of the field (10 mm cells) a forces sheet may have: no quarter of
 #: the sheet left blank.
 HOLE_MAX = 0.25
@@ -129,7 +138,7 @@ def test_one_length_scale_for_the_mechanism_and_one_for_its_groups(
         assert main.k / groups[0].scale.k >= lf.GROUPS_SHARE * 0.999, (main, groups[0].scale)
 
 
-@pytest.mark.parametrize("path", FILES, ids=[p.stem for p in FILES])
+@pytest.mark.parametrize("path", [*FILES, *LAYOUT_FILES], ids=lambda p: p.stem)
 def test_the_crank_and_the_field(path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
     sheet, lay, s = _forces_sheet(path, monkeypatch)
     (mech,) = [pl for pl in _links(lay) if isinstance(pl.view, lf._Loaded)]
@@ -227,26 +236,6 @@ def test_groups_of_their_own_only_where_the_shared_scale_breaks_the_rules(path: 
         assert not kept, h
 
 
-#: The layout test files with loads (review 7's oscillator: a 50 mm crank, 20 mm at 1:2.5, whose
-#: detail found no room in the mechanism's box and no GOST scale between 1:1 and 1:2).
-LAYOUT_FILES = [
-    p
-    for p in sorted((Path(__file__).resolve().parent / "linkages_layout").glob("*.toml"))
-    if "[links." in p.read_text(encoding="utf-8") or "[[load]]" in p.read_text(encoding="utf-8")
-]
-
-
-def _open_crank(files: list[Path]) -> list[object]:
-    """Review 8's rocking cylinder: its 55 mm crank drawn 27.5 mm at 1:2 with no detail (issue
-    27, open): a strict xfail, so the fix must take the mark off."""
-    return [
-        pytest.param(p, marks=pytest.mark.xfail(strict=True, reason="review 8: crank 27.5 mm"))
-        if p.stem == "rocking_cylinder_rocker"
-        else p
-        for p in files
-    ]
-
-
 @pytest.mark.parametrize("path", [*FILES, *LAYOUT_FILES], ids=lambda p: p.stem)
 def test_a_short_crank_is_drawn_enlarged_in_a_detail(
     path: Path, monkeypatch: pytest.MonkeyPatch
@@ -289,7 +278,7 @@ def test_a_free_spot_keeps_clear_of_what_is_drawn() -> None:
     assert lf.free_spot(grid, box, (20.0, 20.0), (50.0, 50.0), 5.0) is None
 
 
-@pytest.mark.parametrize("path", _open_crank([*FILES, *LAYOUT_FILES]), ids=lambda p: p.stem)
+@pytest.mark.parametrize("path", [*FILES, *LAYOUT_FILES], ids=lambda p: p.stem)
 def test_the_crank_is_read_at_crank_mm_on_the_mechanism_and_cut_out(
     path: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
@@ -300,7 +289,9 @@ def test_the_crank_is_read_at_crank_mm_on_the_mechanism_and_cut_out(
     allows it (the yoke pump and the tangent rocking slider fell back to 1:4, 15–16 mm, with a
     detail on sheets half blank: every file here holds it on A1), and the crank cut out
     CRANK_MM long at its own μ_l even where that takes other views' room (the oscillator's
-    cut out 20 mm at 1:2.5: its 1:1 overflowed A1 by a plan vector's 1.8 mm)."""
+    cut out 20 mm at 1:2.5: its 1:1 overflowed A1 by a plan vector's 1.8 mm). Review 8: the
+    rocking cylinder's 55 mm crank drawn 27.5 mm at 1:2 with no detail (no arrangement held
+    its mechanism at 1:1: one more, the mechanism beside the tables and plans, now does)."""
     _sheet, lay, s = _forces_sheet(path, monkeypatch)
     lk = s.linkage  # type: ignore[attr-defined]
     (mech,) = [pl for pl in _links(lay) if isinstance(pl.view, lf._Loaded)]

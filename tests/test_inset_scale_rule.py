@@ -214,11 +214,7 @@ def test_insets_drawn_as_their_scales_say(drawn: dict[str, Any]) -> None:
             assert max(ins_mm) <= min(mm for _, mm in own) * (1.0 + 1e-6)
 
 
-def test_forces_left_out_are_a_small_share_and_stated(
-    drawn: dict[str, Any], request: pytest.FixtureRequest
-) -> None:
-    if "[rocking_cylinder_rocker]" in request.node.name:  # review 8: its views leave 8.5 % out
-        request.applymarker(pytest.mark.xfail(strict=True, reason="review 8, issue 27 open"))
+def test_forces_left_out_are_a_small_share_and_stated(drawn: dict[str, Any]) -> None:
     sheet = drawn["sheet"]
     texts = " ".join(
         "".join(r.text for r in it.runs) for it in sheet.items if isinstance(it, TextItem)

@@ -99,6 +99,7 @@ from geomcad.sheet.linkage import (
     TEXT_H,
     TITLE_H,
     ZERO,
+    _alternatives,
     _CrankDetail,
     _on,
     fit,
@@ -408,9 +409,48 @@ def force_layout(s: Solved) -> tuple[Tree, formats.Sized]:
             and (not lay.fits or lost < _crank_shortfall(lay))
         ):
             found = own
+    found = _rowed(s, P, forces, k, found, kin)
     for pl in found[1].layout:
         if isinstance(pl.view, _Lever):
             pl.view.grow(pl, found[1].layout)
+    return found
+
+
+def _rowed(
+    s: Solved, P: Position, f: Forces, k: int | None, found: tuple[Tree, formats.Sized],
+    kin: float | None,
+) -> tuple[Tree, formats.Sized]:  # fmt: skip
+    """Once the search has chosen: the arrangement of the drawings of links and the lever side
+    by side over the polygons and the tables (``rowed``, :func:`_sheet2`), on the same format
+    with the groups and the crank cut out at the μ_l they have, where it draws every view at
+    least as large as the one found (no scale coarser), keeps the crank's and the groups'
+    rules, its tables whole and its polygons' details in their boxes, and the search scores it
+    higher (review 8: the press's mechanism 53 mm wide in a 251 mm box over the lever, its
+    plans at 100 N/mm; side by side, two of its plans at 50 N/mm). Tried alone, after the
+    search (a sixth arrangement in the joint search would cost every sheet's layout)."""
+    lay = found[1].layout
+    shared = not any(isinstance(pl.view, _FreeBody) and pl.view.group == GROUPS_L for pl in lay)
+    own = any(isinstance(pl.view, _FreeBody) and pl.view.group == CRANK_L for pl in lay)
+    under = isinstance(found[0], Choice) and len(found[0].items) > ARRANGEMENTS
+    tree, _w = _sheet2(s, P, f, k, TEXT_H, None, shared, kin, own, under, rowed=True)
+    last = len(_alternatives(tree)) - 1
+    cand, _rules = _final2(s, P, f, k, found[1], shared, found[1].fmt, kin, own, under,
+                           only=last, rowed=True)  # fmt: skip
+    got = cand[1].layout
+    was = {(type(pl.view).__name__, pl.view.title): pl.scale.k for pl in lay if pl.scale}
+    now = {(type(pl.view).__name__, pl.view.title): pl.scale.k for pl in got if pl.scale}
+    larger = was.keys() == now.keys() and all(
+        now[key] <= kk * (1.0 + tol.REL_LENGTH) for key, kk in was.items()
+    )
+    if (
+        larger
+        and got.score > lay.score
+        and _crank_kept(got)
+        and _groups_kept(got)
+        and _whole(got)
+        and not _spilt(got)
+    ):
+        return cand
     return found
 
 
@@ -426,20 +466,26 @@ def _held(
     their own (at least :data:`GROUPS_SHARE` of its size); the first whose drawings keep the
     crank's length and the groups' share, its tables and texts whole in their boxes
     (:func:`_whole`), is taken. A detail then enlarges the crank only where no arrangement
-    holds its scale."""
+    holds its scale. Where none does, once more with one arrangement more (``held``: the
+    mechanism at its rule's scale with the tables and polygons beside it, the groups and the
+    lever under it; review 8: the rocking cylinder's 55 mm crank at 1:1), that arrangement kept
+    (the joint search would pass it over for a larger score, the crank short again)."""
     fmts = sheet_formats(s.linkage)
     largest = max(fmts, key=lambda fm: FORMATS[fm][0] * FORMATS[fm][1])
-    for shared in (True, False):
-        tree, wants = _sheet2(s, P, f, k, TEXT_H, shared=shared, kin=kin, under=True,
-                              weight=CRANK_WEIGHT)  # fmt: skip
-        on = _on(tree, wants, largest)
-        if on is None or not (_crank_kept(on[1].layout) and _groups_kept(on[1].layout)):
-            continue
-        held, _kept = _final2(s, P, f, k, on[1], shared, largest, kin, under=True,
-                              weight=CRANK_WEIGHT)  # fmt: skip
-        lay = held[1].layout
-        if _crank_kept(lay) and _groups_kept(lay) and _whole(lay):
-            return held
+    for held in (False, True):
+        for shared in (True, False):
+            tree, wants = _sheet2(s, P, f, k, TEXT_H, shared=shared, kin=kin, under=True,
+                                  weight=CRANK_WEIGHT, held=held)  # fmt: skip
+            on = _on(tree, wants, largest)
+            if on is None or not (_crank_kept(on[1].layout) and _groups_kept(on[1].layout)):
+                continue
+            only = next(i for i, alt in enumerate(_alternatives(tree)) if alt is on[0])
+            kept, _rules = _final2(s, P, f, k, on[1], shared, largest, kin, under=True,
+                                   weight=CRANK_WEIGHT, held=held,
+                                   only=only if held else None)  # fmt: skip
+            lay = kept[1].layout
+            if _crank_kept(lay) and _groups_kept(lay) and _whole(lay):
+                return kept
     return found
 
 
@@ -560,13 +606,13 @@ def _compose2(
 def _final2(
     s: Solved, P: Position, f: Forces, k: int | None, z: formats.Sized, shared: bool,
     largest: str, kin: float | None = None, crank_own: bool = False, under: bool = False,
-    weight: float = 1.0,
+    weight: float = 1.0, held: bool = False, only: int | None = None, rowed: bool = False,
 ) -> tuple[tuple[Tree, formats.Sized], bool]:  # fmt: skip
     """Sheet 2 on the format of ``z`` with its polygons' details reckoned at the μ_F each got
     there (see :func:`_compose2`), and whether it keeps the rules (where it does not on a format
     smaller than the largest, the caller takes the larger format found first); the crank cut
-    out at its own μ_l where ``crank_own``, one arrangement more where ``under``
-    (:func:`_sheet2`)."""
+    out at its own μ_l where ``crank_own``, one arrangement more where ``under`` (another
+    where ``held``; :func:`_sheet2`), only the arrangement of index ``only`` where given."""
     refs = {pl.view.title: (pl.scale.k, _room(pl)) for pl in z.layout
             if isinstance(pl.view, Polygon) and pl.scale}  # fmt: skip
     field = Field.of_format(z.fmt, z.landscape)
@@ -574,15 +620,16 @@ def _final2(
     rules: list[bool] = []
     good: list[bool] = []
     for h in (TEXT_H, SMALL_TEXT_H):
-        tree, w = _sheet2(s, P, f, k, h, refs, shared, kin, crank_own, under, weight)
+        tree, w = _sheet2(s, P, f, k, h, refs, shared, kin, crank_own, under, weight, held, rowed)
+        tree = tree if only is None else _alternatives(tree)[only]
         lay = arrange(tree, field)
         # a plan placed at a coarser μ_F than its details were reckoned at may not hold them
         # in its box (they would run into the captions round it): reckoned again at that μ_F
         spilt = _spilt(lay)
         if spilt:
-            tree, w = _sheet2(
-                s, P, f, k, h, {**refs, **spilt}, shared, kin, crank_own, under, weight
-            )
+            tree, w = _sheet2(s, P, f, k, h, {**refs, **spilt}, shared, kin, crank_own, under,
+                              weight, held, rowed)  # fmt: skip
+            tree = tree if only is None else _alternatives(tree)[only]
             lay = arrange(tree, field)
         tried.append((tree, formats.Sized(z.fmt, z.landscape, lay)))
         # on a smaller format than the largest, its polygons POLY_MM across as it was chosen
@@ -731,6 +778,7 @@ def _sheet2(
     s: Solved, P: Position, f: Forces, k: int | None, h: float,
     refs: Mapping[str, tuple[float, tuple[float, float]]] | None = None, shared: bool = True,
     kin: float | None = None, crank_own: bool = False, under: bool = False, weight: float = 1.0,
+    held: bool = False, rowed: bool = False,
 ) -> tuple[Tree, dict[View, float]]:  # fmt: skip
     """Sheet 2's tree, its tables and texts ``h`` high, and the scales its views want. The
     force polygons are drawn with their details where ``refs`` gives their reference μ_F and
@@ -742,7 +790,13 @@ def _sheet2(
     arrangement more, the polygons under the mechanism and the groups over the lever (room
     for the groups at the mechanism's μ_l; tried only where the others leave it broken).
     ``weight``: a millimetre the crank (and a group of its own μ_l) falls short of its rule
-    weighs that many of the plans' seek in the search (:data:`CRANK_WEIGHT`, :func:`_held`)."""
+    weighs that many of the plans' seek in the search (:data:`CRANK_WEIGHT`, :func:`_held`).
+    ``held``: one arrangement more, the last, the mechanism with the tables and the polygons
+    beside it and the groups and the lever under them (room for a mechanism at its crank's
+    scale that takes a third of the sheet; tried only where the others leave the crank short).
+    ``rowed``: one more, the last, the drawings of links and the lever side by side over the
+    polygons and the tables in a row (tall narrow drawings: a press's vertical slider-crank;
+    tried once the search has chosen, :func:`_rowed`)."""
     lk = s.linkage
     # the length scales from the geometry alone (a change of ω or of the loads rescales no
     # drawing of links): never finer than links_scale; the crank CRANK_MM long where the
@@ -839,6 +893,15 @@ def _sheet2(
         Column(Row(mech, lever, right), groups),
         Row(Column(mech, lever), Column(Grid(*bodies), Grid(*polys)), right),
         *([Row(Column(mech, Grid(*polys)), Column(band, lever), right)] if under else []),
+        # the mechanism at its rule's scale with the tables and the polygons beside it, the
+        # groups and the lever under them (review 8: a 55 mm crank's mechanism at 1:1 holds
+        # only so on A1; tried only where the others leave the crank short, :func:`_held`)
+        *(
+            [Column(Row(mech, Column(Row(*right.items), Grid(*polys))), Row(band, lever))]
+            if held
+            else []
+        ),
+        *([Column(Row(mech, band, lever), Row(Grid(*polys), Row(*right.items)))] if rowed else []),
     )
     # the format: the smallest on which the crank is CRANK_MM long (where the sweep allows it),
     # every force polygon at least POLY_MM across and its longest vector at least PLAN_MM (a
