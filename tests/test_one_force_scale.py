@@ -243,3 +243,24 @@ def test_view_scales_never_leave_out_a_kept_force() -> None:
     assert fs.tier(420.0) == 1  # the larger short one at the same, one inset μ_F
     assert fs.over > 1.0  # … past the view's shortest arrow: the cost the reaction takes
     assert fs.tier(15.7) is None  # a weight under 0,5 % of the largest is still named
+
+
+def test_insets_set_an_arrow_beside_where_it_ends_on_none() -> None:
+    """An arrow set beside another on its line goes to the side where it keeps clear of the
+    arrows before it (own-lift: Φ5 set beside G5 ended on R05's shaft), and two 5-mm arrows
+    from one point 30° apart are set side by side (their heads would be one blob)."""
+    from geomcad.geom import Vec
+    from geomcad.sheet.insets import ARROWS_APART_MM, BESIDE_MM, _seg_dist, side_by_side
+
+    down, left, down2 = Vec(0.0, -10.0), Vec(-6.0, 0.0), Vec(0.0, -8.0)
+    starts = side_by_side([down, left, down2], 1.0)
+    assert starts[:2] == [(0.0, 0.0), (0.0, 0.0)]
+    assert math.isclose(math.hypot(*starts[2]), BESIDE_MM)
+    seg = (starts[2], (starts[2][0], starts[2][1] + 8.0))
+    assert _seg_dist(seg, ((0.0, 0.0), (-6.0, 0.0))) >= ARROWS_APART_MM
+    # two direction arrows 30° apart (20° < 30° < the angle their 5-mm tips need)
+    a, b = Vec(0.0, -1.0), Vec(math.sin(math.radians(30.0)), -math.cos(math.radians(30.0)))
+    starts = side_by_side([a, b], 1.0, [5.0, 5.0])
+    assert starts[0] == (0.0, 0.0) and math.isclose(math.hypot(*starts[1]), BESIDE_MM)
+    # … but not at their own, distinct points
+    assert side_by_side([a, b], 1.0, [5.0, 5.0], None, [(0.0, 0.0), (8.0, 0.0)])[1] == (0.0, 0.0)

@@ -197,10 +197,10 @@ class Insets:
         ks = [self.fs.k_at(s.F.norm) for s in shorts]
         arrive = pushes([s.F for s in shorts])
         lengths = [s.F.norm / k for s, k in zip(shorts, ks, strict=True)]
-        starts = side_by_side([s.F for s in shorts], sc.k, lengths, arrive)
         # paper mm from the point: the far ends of the arrows (leaving it, or arriving)
         # each force at its own point (a detail keeps the view's μ_l): offsets from q
         rel = [((s.at.x - q.x) / v.scale.k, (q.y - s.at.y) / v.scale.k) for s in shorts]
+        starts = side_by_side([s.F for s in shorts], sc.k, lengths, arrive, rel)
         starts = [(o[0] + e[0], o[1] + e[1]) for o, e in zip(starts, rel, strict=True)]
         tips = [
             (o[0] + (-1.0 if a else 1.0) * s.F.x / k, o[1] + (1.0 if a else -1.0) * s.F.y / k)
@@ -267,7 +267,7 @@ TIPS_APART_MM = 4.0
 
 def side_by_side(
     forces: list[Vec], k: float, lengths: list[float] | None = None,
-    arrive: list[bool] | None = None,
+    arrive: list[bool] | None = None, at: list[tuple[float, float]] | None = None,
 ) -> list[tuple[float, float]]:  # fmt: skip
     """Where (paper mm from their point, y down) the arrows of ``forces`` drawn from one point
     at ``k`` N/mm (or ``lengths`` mm long; those of ``arrive`` arriving at the point, on the
@@ -276,9 +276,12 @@ def side_by_side(
     one's tip would lie closer than :data:`TIPS_APART_MM` to the other's) set a multiple of
     :data:`BESIDE_MM` across its line, the nearest to the point (this side first) at which it
     keeps :data:`ARROWS_APART_MM` from every arrow before it, so that no arrow lies on
-    another (G₅ and Φ₅ both down at d) nor ends on one (Φ₅ set beside G₅ onto R₀₅)."""
+    another (G₅ and Φ₅ both down at d) nor ends on one (Φ₅ set beside G₅ onto R₀₅). ``at``:
+    where (paper mm) each arrow's own point is, where they are not one point (an inset of
+    points closer than its circle): the offsets are from it."""
     lengths = lengths or [F.norm / k for F in forces]
     arrive = arrive or [False] * len(forces)
+    at = at or [(0.0, 0.0)] * len(forces)
     rays = [F.unit() * (-1.0 if a else 1.0) for F, a in zip(forces, arrive, strict=True)]
     out: list[tuple[float, float]] = []
     segs: list[tuple[tuple[float, float], tuple[float, float]]] = []
@@ -286,9 +289,10 @@ def side_by_side(
         u, r, n = F.unit(), rays[i], lengths[i]
 
         def clashes(o: tuple[float, float], i: int = i, r: Vec = r, n: float = n) -> bool:
-            seg = (o, (o[0] + r.x * n, o[1] - r.y * n))
+            a = (at[i][0] + o[0], at[i][1] + o[1])
+            seg = (a, (a[0] + r.x * n, a[1] - r.y * n))
             for j, other in enumerate(segs):
-                if o == out[j] == (0.0, 0.0):  # both from the point: by their angle
+                if o == out[j] == (0.0, 0.0) and at[i] == at[j]:  # from one point: by angle
                     half = TIPS_APART_MM / (2.0 * max(min(n, lengths[j]), 1e-9))
                     turn = max(math.radians(SAME_LINE_DEG), 2.0 * math.asin(min(1.0, half)))
                     if rays[j].dot(r) > math.cos(turn):
@@ -303,7 +307,8 @@ def side_by_side(
                  (u.y * BESIDE_MM * len(forces), u.x * BESIDE_MM * len(forces)))  # fmt: skip
         o = (o[0] + 0.0, o[1] + 0.0)  # no -0.0: the point itself compares equal
         out.append(o)
-        segs.append((o, (o[0] + r.x * n, o[1] - r.y * n)))
+        a = (at[i][0] + o[0], at[i][1] + o[1])
+        segs.append((a, (a[0] + r.x * n, a[1] - r.y * n)))
     return out
 
 
