@@ -109,9 +109,80 @@ position = 5
 """
 
 
+#: A second unseen-style file (review 8 round): a rocking-slot pump, crank 1 drives block 2 in
+#: the slot of rocker 3, the rocker's end B drives an inclined plunger 5 through rod 4; a
+#: 4500 N working force against light links (0.3 kg block, 0.8 kg crank): three decades of
+#: loads on a lever of few mm.
+OWN2 = """title = "Кулисный насос с наклонным плунжером"
+
+[frame]
+O = [0.0, 0.0]
+C = [0.0, -0.16]
+
+[drive]
+pivot = "O"
+joint = "A"
+length = 0.055
+omega = 16.0
+positions = 12
+output = "D"
+
+[[group]]
+kind = "RPR"
+links = [2, 3]
+slider = "A"
+pivot = "C"
+offset = 0.0
+
+[[point]]
+name = "B"
+link = 3
+from = "C"
+toward = "A"
+along = 0.28
+
+[[group]]
+kind = "RRP"
+links = [4, 5]
+joint = "D"
+end = "B"
+length = 0.20
+guide = { through = [0.10, 0.16], angle = 30.0 }
+assembly = "forward"
+
+[links.1]
+mass = 0.8
+J = 0.002
+[links.2]
+mass = 0.3
+[links.3]
+mass = 3.5
+J = 0.025
+[links.4]
+mass = 1.2
+J = 0.006
+[links.5]
+mass = 9.0
+
+[[load]]
+point = "D"
+value = 4500.0
+stroke = "working"
+working = "forward"
+
+[[load]]
+link = 3
+moment = 12.0
+stroke = "working"
+
+[forces]
+position = 4
+"""
+
+
 def _cases() -> list[Any]:
     out = [pytest.param(p.read_text("utf-8"), id=p.stem) for p in FILES]
-    return [*out, pytest.param(OWN, id="own-lift")]
+    return [*out, pytest.param(OWN, id="own-lift"), pytest.param(OWN2, id="own-kulisa-pump")]
 
 
 def _draw(text: str, mp: pytest.MonkeyPatch) -> dict[str, Any] | None:
