@@ -1132,7 +1132,9 @@ def draw_insets(
     d: Drawing, at: Placed, view: View, ins: Insets, start: int, omitted: Sequence[str]
 ) -> None:
     """The view's insets (:class:`~geomcad.sheet.insets.Insets`) where its box is free, then
-    the lines under its caption that state their one μ_F and name the forces it leaves out,
+    the lines under its caption that state their one μ_F, name the forces drawn as direction
+    arrows ("G_1, Ф_1 — стрелки 5 мм без масштаба", else by the share they are under: "силы
+    менее 1,7 % — …") and name the forces it leaves out,
     wrapped at the box's width into the lines its title's room holds (:func:`further_room`).
     Where they would need more lines, they state the μ_F without the insets' letters and the
     forces left out without the share they are under, and where they still would, they name
@@ -1144,9 +1146,11 @@ def draw_insets(
     # the forces drawn as direction arrows: by name, or by their share where the names
     # would not fit
     names = ins.fixed_names()
+    by_name = ""
     if names:
         key = "fixed_one" if len(names) == 1 else "fixed"
-        parts.append(WORDS(key, names=", ".join(names), mm=fmt_number(ins.fs.fixed)))
+        by_name = WORDS(key, names=", ".join(names), mm=fmt_number(ins.fs.fixed))
+        parts.append(by_name)
     omitted = _omitted_fit(omitted, title_width(view))
     if omitted:
         key = "omitted_one" if len(omitted) == 1 else "omitted"
@@ -1175,15 +1179,19 @@ def draw_insets(
         key = "omitted_bare_one" if len(omitted) == 1 else "omitted_bare"
         parts[-1] = WORDS(key, items=", ".join(omitted))
 
-    if mine and not fits():
+    if mine and ins.scaled and not fits():
         parts[0] = ins.line(mine, short=True)  # one μ_F for all: the letters go without saying
         if omitted and not fits():
             bare()
-    each = bool(mine) and not fits()
+    each = bool(mine) and ins.scaled and not fits()
     if each:
         parts = parts[1:]
-        if parts and not fits():
-            bare()
+        if names and parts[0] != by_name:
+            short, parts[0] = parts[0], by_name  # by name where the line has room without
+            if not fits():  # the insets' μ_F
+                parts[0] = short
+    if omitted and not fits():
+        bare()
     ins.draw(d, at.viewport, _field(at), start, iter(mine), each)
     lines = wrap(";  ".join(parts), width, SCALES_H) if parts else []
     head = (view.title_lines - 1) * TITLE_SPACING  # a caption broken into lines
