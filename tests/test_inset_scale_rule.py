@@ -11,6 +11,7 @@ own through ``linkage_forces.force``, its insets' through ``insets.force``."""
 
 from __future__ import annotations
 
+import itertools
 import math
 import re
 import tomllib
@@ -22,7 +23,12 @@ import pytest
 from geomcad.linkage import parse
 from geomcad.linkage.solution import solve
 from geomcad.sheet.drawing import SHORT_MM
-from geomcad.sheet.loads import INSET_CAP_MM, VIEW_NEGLIGIBLE, VIEW_SHORT_MM, view_scales
+from geomcad.sheet.loads import (
+    HIDE_SHARE,
+    INSET_CAP_MM,
+    VIEW_SHORT_MM,
+    view_scales,
+)
 from geomcad.sheet.model import TextItem
 from geomcad.sheet.scale import nice_below, nice_factor
 
@@ -36,11 +42,11 @@ FILES = [
 ]
 
 #: The share of a view's largest force under which the forces it leaves out are, on every
-#: view of these files: 5 mm at the insets' μ_F, whose longest arrow is the view's shortest
-#: (a free body's arrows are 12–25 mm long in its small box: about 25/(12 · 25) … 10/12 of
-#: the largest in the worst case, 0.5–2 % where the view's arrows are long). The previous rule
-#: stated 23 % (the yoke's group (4, 5)).
-SHARE_MAX = 0.08
+#: view of these files: HIDE_SHARE (0.5 %), whatever the view's size (review 8: the rule
+#: before it left out the forces 5 mm short at the insets' μ_F, up to 8.5 % on the rocking
+#: cylinder and 7.5 % of its lever's loads; review 7: 23 %). Every larger load is drawn: to
+#: scale, or as a direction arrow VIEW_SHORT_MM long.
+SHARE_MAX = HIDE_SHARE
 
 #: An unseen-style file written for this test: a crank-rocker whose rocker's arm drives a
 #: vertical slider through a rod (RRR + RRP), a heavy slider and a moment on the rocker
@@ -103,9 +109,80 @@ position = 5
 """
 
 
+#: A second unseen-style file (review 8 round): a rocking-slot pump, crank 1 drives block 2 in
+#: the slot of rocker 3, the rocker's end B drives an inclined plunger 5 through rod 4; a
+#: 4500 N working force against light links (0.3 kg block, 0.8 kg crank): three decades of
+#: loads on a lever of few mm.
+OWN2 = """title = "Кулисный насос с наклонным плунжером"
+
+[frame]
+O = [0.0, 0.0]
+C = [0.0, -0.16]
+
+[drive]
+pivot = "O"
+joint = "A"
+length = 0.055
+omega = 16.0
+positions = 12
+output = "D"
+
+[[group]]
+kind = "RPR"
+links = [2, 3]
+slider = "A"
+pivot = "C"
+offset = 0.0
+
+[[point]]
+name = "B"
+link = 3
+from = "C"
+toward = "A"
+along = 0.28
+
+[[group]]
+kind = "RRP"
+links = [4, 5]
+joint = "D"
+end = "B"
+length = 0.20
+guide = { through = [0.10, 0.16], angle = 30.0 }
+assembly = "forward"
+
+[links.1]
+mass = 0.8
+J = 0.002
+[links.2]
+mass = 0.3
+[links.3]
+mass = 3.5
+J = 0.025
+[links.4]
+mass = 1.2
+J = 0.006
+[links.5]
+mass = 9.0
+
+[[load]]
+point = "D"
+value = 4500.0
+stroke = "working"
+working = "forward"
+
+[[load]]
+link = 3
+moment = 12.0
+stroke = "working"
+
+[forces]
+position = 4
+"""
+
+
 def _cases() -> list[Any]:
     out = [pytest.param(p.read_text("utf-8"), id=p.stem) for p in FILES]
-    return [*out, pytest.param(OWN, id="own-lift")]
+    return [*out, pytest.param(OWN, id="own-lift"), pytest.param(OWN2, id="own-kulisa-pump")]
 
 
 def _draw(text: str, mp: pytest.MonkeyPatch) -> dict[str, Any] | None:
@@ -214,27 +291,62 @@ def test_insets_drawn_as_their_scales_say(drawn: dict[str, Any]) -> None:
             assert max(ins_mm) <= min(mm for _, mm in own) * (1.0 + 1e-6)
 
 
+def _texts(sheet: Any) -> list[str]:
+    return ["".join(r.text for r in it.runs) for it in sheet.items if isinstance(it, TextItem)]
+
+
 def test_forces_left_out_are_a_small_share_and_stated(drawn: dict[str, Any]) -> None:
-    sheet = drawn["sheet"]
-    texts = " ".join(
-        "".join(r.text for r in it.runs) for it in sheet.items if isinstance(it, TextItem)
-    )
+    texts = " ".join(_texts(drawn["sheet"]))
     for view, _, fs in drawn["views"]:
         big = max(view._forces)
         left = [F for F in view._forces if fs.zero < F and fs.tier(F) is None]
-        # a reaction (the lever's P_ур) is never left out unless negligible
+        # a reaction (the lever's P_ур) is never left out
         for F in view._keep:
-            assert fs.tier(F) is not None or VIEW_NEGLIGIBLE * big >= F
+            assert fs.tier(F) is not None or fs.zero >= F
         if not left:
             continue
-        assert max(left) / big <= SHARE_MAX, (type(view).__name__, max(left) / big)
+        # no load of HIDE_SHARE of the view's largest or more is left out
+        assert max(left) / big < SHARE_MAX, (type(view).__name__, max(left) / big)
         # each one too short at the insets' μ_F (the view's, without insets)
         k = fs.scales[-1].k
         assert all(F / k < VIEW_SHORT_MM for F in left)
         # the share stated is above the largest left out and within 2 figures of it
         assert fs.limit * (1.0 + 1e-9) >= max(left) / big
-    shares = [float(s.replace(",", ".")) for s in re.findall(r"менее ([\d,]+) %", texts)]
+    hidden = re.findall(r"не показан[аы]? \(менее ([\d,]+) %", texts)
+    shares = [float(s.replace(",", ".")) for s in hidden]
     assert all(s <= SHARE_MAX * 100.0 for s in shares), shares
+
+
+def test_lengths_monotone_across_the_three_tiers(drawn: dict[str, Any]) -> None:
+    """Per view, the arrows drawn (in the view at its μ_F, in its insets at their μ_F or as
+    direction arrows VIEW_SHORT_MM long): a larger force is never drawn shorter; a direction
+    arrow is a force too short at the insets' μ_F, VIEW_SHORT_MM long, and the view's caption
+    names it (or states the share under which such forces are)."""
+    texts = _texts(drawn["sheet"])
+    for view, at, fs in drawn["views"]:
+        v = at.viewport
+        fixed = [F for F in view._forces if fs.zero < F and fs.is_fixed(F)]
+        arrows = sorted((F, mm) for w, F, mm, _ in drawn["arrows"] if w is v)
+        # where a reaction takes the insets' μ_F past the view's shortest arrow (fs.over,
+        # test_no_inset_arrow_outgrows_the_views_own_shortest), each tier apart
+        bands = [arrows]
+        if fs.over > 1.0 + 1e-9:
+            bands = [[a for a in arrows if fs.tier(a[0]) == t] for t in range(len(fs.scales))]
+        for band in bands:
+            for (F1, mm1), (F2, mm2) in itertools.pairwise(band):
+                assert F1 > F2 * (1.0 - 1e-9) or mm1 <= mm2 * (1.0 + 1e-6) + 1e-6, (
+                    type(view).__name__, (F1, mm1), (F2, mm2))  # fmt: skip
+        # a direction arrow is no longer than any arrow drawn to scale
+        assert all(mm <= min(m for _, m in arrows) + 1e-6 for F, mm in arrows if F in fixed)
+        if not fixed:
+            continue
+        assert fs.fixed == VIEW_SHORT_MM
+        assert all(F / fs.scales[-1].k < VIEW_SHORT_MM for F in fixed)
+        drawn_fixed = [mm for w, F, mm, inset in drawn["arrows"] if w is v and F in fixed]
+        assert drawn_fixed and all(inset for w, F, _, inset in drawn["arrows"]
+                                   if w is v and F in fixed)  # fmt: skip
+        assert all(math.isclose(mm, VIEW_SHORT_MM, rel_tol=1e-6) for mm in drawn_fixed)
+        assert any("стрелк" in t and "без масштаба" in t for t in texts), type(view).__name__
 
 
 @pytest.mark.parametrize(
@@ -254,12 +366,12 @@ def test_view_scales_rule(forces: list[float], room: float, keep: tuple[float, .
     assert fs.k == top.k and fs.tier(1e-14) is None
     assert len(fs.scales) <= 2
     own = [F for F in forces if fs.tier(F) == 0]
-    ins = [F for F in forces if fs.tier(F) == 1]
+    ins = [F for F in forces if fs.tier(F) == 1 and not fs.is_fixed(F)]
     left = [F for F in forces if fs.tier(F) is None]
     # every force long enough at the view's μ_F and over INSET_CAP_MM there is the view's own
     assert all(fs.tier(F) == 0 for F in forces if F / top.k >= INSET_CAP_MM)
     assert all(F / top.k >= VIEW_SHORT_MM * (1.0 - 1e-9) for F in own)
-    # the tiers are bands: left out < insets < the view's own
+    # the tiers are bands: left out < direction arrows < insets < the view's own
     assert all(a < b for a in left for b in ins + own)
     assert all(a < b for a in ins for b in own)
     if ins:
@@ -269,7 +381,52 @@ def test_view_scales_rule(forces: list[float], room: float, keep: tuple[float, .
         if not kept or min(kept) / nice_factor(max(ins), min(min(own) / top.k, INSET_CAP_MM),
                                                "F").k >= VIEW_SHORT_MM:  # fmt: skip
             assert max(ins) / k2 <= min(min(own) / top.k, INSET_CAP_MM) * (1.0 + 1e-9)
-    # the reactions are drawn
+    # the reactions are drawn; a load is left out only under HIDE_SHARE, a larger one too
+    # short at every μ_F is a direction arrow
     assert all(fs.tier(F) is not None for F in keep)
+    assert all(HIDE_SHARE * big > F for F in left)
+    fixed = [F for F in forces if fs.is_fixed(F)]
+    assert all(F / fs.scales[-1].k < VIEW_SHORT_MM for F in fixed)
+    assert all(a < b for a in left for b in fixed) and all(a < b for a in fixed for b in ins)
     if left:
         assert fs.limit == pytest.approx(max(left) / big)
+
+
+def test_arrows_and_labels_at_one_point_apart(drawn: dict[str, Any]) -> None:
+    """What a reviewer sees where several loads act at one point (the lever's pole cluster
+    "p, o, c, d", a mechanism's joint, an inset's 5-mm direction arrows): per view, no two
+    arrowheads closer than their width (review 8 on the new rule: Φ4 and G4 at s4 of the
+    rocking cylinder's lever, 5-mm arrows 25° apart, drawn as one blob), no label of a load
+    over an arrow nor over another label."""
+    from layout import overlapping_texts, text_poly
+    from shapely.geometry import LineString
+
+    from geomcad.sheet.drawing import ARROW_HALF_WIDTH, ARROW_LEN
+
+    sheet = drawn["sheet"]
+    texts = [it for it in sheet.items if isinstance(it, TextItem)]
+
+    def head(a: tuple[float, float], b: tuple[float, float]) -> LineString:
+        n = math.dist(a, b)
+        h = min(n, ARROW_LEN) / n
+        return LineString([(b[0] + (a[0] - b[0]) * h, b[1] + (a[1] - b[1]) * h), b])
+
+    for view, at, _ in drawn["views"]:
+        x0, y0, x1, y1 = at.box
+
+        def within(p: tuple[float, float]) -> bool:
+            return x0 <= p[0] <= x1 and y0 <= p[1] <= y1  # noqa: B023
+
+        arrows = [(a, b) for a, b in sheet.vectors if within(a) and within(b) and a != b]
+        heads = [head(a, b) for a, b in arrows]
+        for i, j in itertools.combinations(range(len(heads)), 2):
+            d = heads[i].distance(heads[j])
+            assert d >= 2.0 * ARROW_HALF_WIDTH, (type(view).__name__, arrows[i], arrows[j], d)
+        # the loads' labels (2.5 mm) of the view
+        mine = [t for t in texts if t.height <= 2.6 and within(text_poly(t).centroid.coords[0])]
+        assert not overlapping_texts(mine), type(view).__name__
+        shafts = [LineString([a, b]) for a, b in arrows]
+        for t in mine:
+            box = text_poly(t)
+            for s in shafts:
+                assert box.intersection(s).length <= 0.3, (type(view).__name__, t.text)

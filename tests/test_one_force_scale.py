@@ -20,7 +20,7 @@ import pytest
 
 from geomcad.linkage import parse
 from geomcad.linkage.solution import solve
-from geomcad.sheet.loads import VIEW_SHORT_MM
+from geomcad.sheet.loads import HIDE_SHARE, VIEW_SHORT_MM
 from geomcad.sheet.model import TextItem
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -109,8 +109,23 @@ def _record(lk: Any, monkeypatch: pytest.MonkeyPatch) -> tuple[list[dict[str, An
 
     for m in mods:
         monkeypatch.setattr(m, "force", wrap(m.force))
+    views: list[Any] = []
+    orig_placed = lf._ByScale.placed
+
+    def placed(self: Any, at: Any) -> Any:
+        fs = orig_placed(self, at)
+        views.append((self, fs))
+        return fs
+
+    monkeypatch.setattr(lf._ByScale, "placed", placed)
     s = solve(lk)
     sheet = lf.force_sheets(s, "x")[0][1]
+    # a direction arrow (a force too short at every μ_F of its view): VIEW_SHORT_MM long at
+    # no scale (the view's caption says so)
+    for r in rec:
+        r["fixed"] = math.isclose(r["mm"], VIEW_SHORT_MM, rel_tol=1e-6) and any(
+            fs.is_fixed(r["F"]) for view, fs in views if r["F"] in view._forces
+        )
     return [r for r in rec if r["v"].sheet is sheet], sheet
 
 
@@ -135,9 +150,10 @@ def test_each_view_draws_its_forces_at_one_scale(
         for a, b in itertools.pairwise(arrows):
             if b["F"] > a["F"] * (1.0 + 1e-9):
                 assert b["mm"] >= a["mm"] - 1e-6, (a, b)
-        # and one μ_F: the drawn length is the force over the view's one factor
-        ks = {r["F"] / r["mm"] for r in arrows}
-        assert max(ks) <= min(ks) * (1.0 + 1e-6), sorted(ks)
+        # and one μ_F: the drawn length is the force over the view's one factor (a
+        # direction arrow is at none)
+        ks = {r["F"] / r["mm"] for r in arrows if not r["fixed"]}
+        assert not ks or max(ks) <= min(ks) * (1.0 + 1e-6), sorted(ks)
     # no arrow under VIEW_SHORT_MM (a head and a shaft that shows its direction)
     assert min(r["mm"] for r in rec) >= VIEW_SHORT_MM * (1.0 - 1e-6)
     # every μ_F drawn is stated on the sheet: "μ_F = 2,5 Н/мм"
@@ -145,7 +161,7 @@ def test_each_view_draws_its_forces_at_one_scale(
                         if isinstance(it, TextItem))  # fmt: skip
     stated = {float(x.replace(",", ".").replace(" ", ""))
               for x in re.findall(r"μF = ([\d ]+(?:,\d+)?) Н/мм", text_all)}  # fmt: skip
-    for k in {r["k"] for r in rec}:
+    for k in {r["k"] for r in rec if not r["fixed"]}:
         assert any(math.isclose(k, s, rel_tol=1e-9) for s in stated), (k, sorted(stated))
 
 
@@ -172,15 +188,20 @@ def test_view_scales_one_for_the_view_the_short_ones_in_insets(
     # the view's μ_F and at most ONE more, that of all its insets (issue 27, review 6 item 4)
     assert len(fs.scales) <= 2
     own = [F for F in forces if fs.tier(F) == 0]
-    ins = [F for F in forces if fs.tier(F) == 1]
+    ins = [F for F in forces if fs.tier(F) == 1 and not fs.is_fixed(F)]
+    fixed = [F for F in forces if fs.is_fixed(F)]
     named = [F for F in forces if fs.tier(F) is None]
     for F in own:
         assert F / fs.k >= VIEW_SHORT_MM * (1.0 - 1e-9)
-    # a force left out is smaller than every force drawn, and under the share stated
-    assert all(F < G for F in named for G in own + ins)
+    # a force left out is smaller than every force drawn, and under the share stated, itself
+    # under HIDE_SHARE; a direction arrow smaller than every force drawn to scale
+    assert all(F < G for F in named for G in own + ins + fixed)
+    assert all(F < G for F in fixed for G in own + ins)
     assert all(fs.limit * big * (1.0 + 1e-9) >= F for F in named)
-    # every force too short at the view's μ_F is in an inset or named (review 7 item 2)
-    assert all(F in ins + named for F in forces if F / fs.k < VIEW_SHORT_MM * (1.0 - 1e-9))
+    assert all(HIDE_SHARE * big > F for F in named)
+    # every force too short at the view's μ_F is in an inset, a direction arrow or named
+    assert all(F in ins + fixed + named for F in forces
+               if F / fs.k < VIEW_SHORT_MM * (1.0 - 1e-9))  # fmt: skip
     if fs.tiered:
         k2 = fs.scales[1].k
         cap = min(min(own) / fs.k, INSET_CAP_MM)
@@ -214,7 +235,7 @@ def test_view_scales_never_leave_out_a_kept_force() -> None:
 
     forces = [4124.0, 1567.0, 1528.0, 1219.0, 420.0, 201.4, 15.7]
     free = view_scales(forces, 24.8)
-    assert free.tier(201.4) is None  # without the rule: named, not drawn
+    assert free.is_fixed(201.4)  # without the rule: a direction arrow, at no scale
     fs = view_scales(forces, 24.8, keep=[1528.0, 201.4])
     assert len(fs.scales) == 2
     t = fs.tier(201.4)
@@ -222,3 +243,24 @@ def test_view_scales_never_leave_out_a_kept_force() -> None:
     assert fs.tier(420.0) == 1  # the larger short one at the same, one inset μ_F
     assert fs.over > 1.0  # … past the view's shortest arrow: the cost the reaction takes
     assert fs.tier(15.7) is None  # a weight under 0,5 % of the largest is still named
+
+
+def test_insets_set_an_arrow_beside_where_it_ends_on_none() -> None:
+    """An arrow set beside another on its line goes to the side where it keeps clear of the
+    arrows before it (own-lift: Φ5 set beside G5 ended on R05's shaft), and two 5-mm arrows
+    from one point 30° apart are set side by side (their heads would be one blob)."""
+    from geomcad.geom import Vec
+    from geomcad.sheet.insets import ARROWS_APART_MM, BESIDE_MM, _seg_dist, side_by_side
+
+    down, left, down2 = Vec(0.0, -10.0), Vec(-6.0, 0.0), Vec(0.0, -8.0)
+    starts = side_by_side([down, left, down2], 1.0)
+    assert starts[:2] == [(0.0, 0.0), (0.0, 0.0)]
+    assert math.isclose(math.hypot(*starts[2]), BESIDE_MM)
+    seg = (starts[2], (starts[2][0], starts[2][1] + 8.0))
+    assert _seg_dist(seg, ((0.0, 0.0), (-6.0, 0.0))) >= ARROWS_APART_MM
+    # two direction arrows 30° apart (20° < 30° < the angle their 5-mm tips need)
+    a, b = Vec(0.0, -1.0), Vec(math.sin(math.radians(30.0)), -math.cos(math.radians(30.0)))
+    starts = side_by_side([a, b], 1.0, [5.0, 5.0])
+    assert starts[0] == (0.0, 0.0) and math.isclose(math.hypot(*starts[1]), BESIDE_MM)
+    # … but not at their own, distinct points
+    assert side_by_side([a, b], 1.0, [5.0, 5.0], None, [(0.0, 0.0), (8.0, 0.0)])[1] == (0.0, 0.0)

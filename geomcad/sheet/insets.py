@@ -7,7 +7,10 @@ instead in an inset: a thin circle round its point on the view, lettered beside 
 and just beside it in the view's box the point again with its short forces at the view's one
 further μ_F, the same for all its insets (stated once under the view's caption, "выносные
 элементы Б, В: μ_F = 2 Н/мм", or in each inset's caption where that line has no room), same
-directions, no inset arrow longer than the view's own shortest. One inset per point: all the
+directions, no inset arrow longer than the view's own shortest; a force too short at that μ_F
+too (and not under the view's HIDE_SHARE) is drawn in its inset as a direction arrow of the
+fixed length VIEW_SHORT_MM, at no scale (the line under the caption names it: "G1, Ф1 —
+стрелки 5 мм без масштаба"), no longer than any arrow drawn to scale. One inset per point: all the
 short forces of a point (of points closer than the circle) in one inset, under one letter. The
 insets go where the view's box is free of what is drawn, the nearest such place to their
 circle (within BESIDE_MAX_MM where the view has room there).
@@ -103,6 +106,19 @@ class Insets:
         """The one μ_F of the view's insets."""
         return self.fs.scales[-1]
 
+    def fixed(self, s: Short) -> bool:
+        """Whether ``s`` is a direction arrow of the fixed length ``fs.fixed``, at no scale."""
+        return s.tier >= len(self.fs.scales)
+
+    @property
+    def scaled(self) -> bool:
+        """Whether some inset draws a force at the insets' μ_F (not only direction arrows)."""
+        return any(not self.fixed(s) for s in self.shorts)
+
+    def fixed_names(self) -> list[str]:
+        """The labels of the forces drawn as direction arrows, once each, in order."""
+        return list(dict.fromkeys(s.label for s in self.shorts if self.fixed(s)))
+
     def groups(self, eps: float) -> list[tuple[Vec, list[Short]]]:
         """The short forces by their point (a point within ``eps`` model units of one taken
         before joins it): one inset each."""
@@ -175,16 +191,20 @@ class Insets:
         from geomcad.sheet.compose import scale_text
 
         sc = self.scale
-        caption = WORDS("inset", letter=letter, scale=scale_text(sc)) if each else letter
-        starts = side_by_side([s.F for s in shorts], sc.k)
+        scaled = any(not self.fixed(s) for s in shorts)
+        caption = WORDS("inset", letter=letter, scale=scale_text(sc)) if each and scaled else letter
+        # each force at the insets' μ_F, or a direction arrow fs.fixed mm long
+        ks = [self.fs.k_at(s.F.norm) for s in shorts]
         arrive = pushes([s.F for s in shorts])
+        lengths = [s.F.norm / k for s, k in zip(shorts, ks, strict=True)]
         # paper mm from the point: the far ends of the arrows (leaving it, or arriving)
         # each force at its own point (a detail keeps the view's μ_l): offsets from q
         rel = [((s.at.x - q.x) / v.scale.k, (q.y - s.at.y) / v.scale.k) for s in shorts]
+        starts = side_by_side([s.F for s in shorts], sc.k, lengths, arrive, rel)
         starts = [(o[0] + e[0], o[1] + e[1]) for o, e in zip(starts, rel, strict=True)]
         tips = [
-            (o[0] + (-1.0 if a else 1.0) * s.F.x / sc.k, o[1] + (1.0 if a else -1.0) * s.F.y / sc.k)
-            for o, a, s in zip(starts, arrive, shorts, strict=True)
+            (o[0] + (-1.0 if a else 1.0) * s.F.x / k, o[1] + (1.0 if a else -1.0) * s.F.y / k)
+            for o, a, s, k in zip(starts, arrive, shorts, ks, strict=True)
         ]
         tips += starts
         x0 = min(0.0, *(t[0] for t in tips)) - LABEL_PAD
@@ -209,11 +229,11 @@ class Insets:
             name = self.name_of(u, eps)
             if name:
                 iv.label(u, markup_of(name), CAPTION_H, clear=0.8)
-        for o, e, a, s in zip(starts, rel, arrive, shorts, strict=True):
+        for o, e, a, s, k in zip(starts, rel, arrive, shorts, ks, strict=True):
             q2 = q + Vec(o[0], -o[1]) * v.scale.k
             if o != e:  # set beside the others on its line: a thin line to its point
                 iv.seg(s.at, q2, "thin")
-            force(iv, q2, s.F, sc.k, s.label, arrive=a, role=s.role, height=CAPTION_H)
+            force(iv, q2, s.F, k, s.label, arrive=a, role=s.role, height=CAPTION_H)
         free.take(corner, w, h)
 
     def text(self) -> str:
@@ -226,7 +246,7 @@ class Insets:
         the letters: ``выносные элементы: μ_F = 2 Н/мм``)."""
         from geomcad.sheet.compose import scale_text
 
-        if not letters:
+        if not letters or not self.scaled:
             return ""
         if short:
             return WORDS("insets_all", scale=scale_text(self.scale))
@@ -239,19 +259,83 @@ SAME_LINE_DEG = 20.0
 BESIDE_MM = 3.0
 
 
-def side_by_side(forces: list[Vec], k: float) -> list[tuple[float, float]]:
+#: Two arrows drawn from one point on about the same side of it are set side by side where
+#: their tips would be closer than this (mm): two 5-mm arrows 45° apart are mostly two
+#: overlapping heads (review 8: Φ4 and G4 at s4 on the rocking cylinder's lever).
+TIPS_APART_MM = 4.0
+
+
+def side_by_side(
+    forces: list[Vec], k: float, lengths: list[float] | None = None,
+    arrive: list[bool] | None = None, at: list[tuple[float, float]] | None = None,
+) -> list[tuple[float, float]]:  # fmt: skip
     """Where (paper mm from their point, y down) the arrows of ``forces`` drawn from one point
-    at ``k`` N/mm start: at the point, but a force of about the sense of a longer one before
-    it (within :data:`SAME_LINE_DEG`) set :data:`BESIDE_MM` across its line for each such
-    one, so that no arrow lies on another (G₅ and Φ₅ both down at d)."""
-    cos = math.cos(math.radians(SAME_LINE_DEG))
+    at ``k`` N/mm (or ``lengths`` mm long; those of ``arrive`` arriving at the point, on the
+    side of it opposite their sense) start: at the point, but an arrow on about the side of
+    one before it (within :data:`SAME_LINE_DEG`, or within the angle at which the shorter
+    one's tip would lie closer than :data:`TIPS_APART_MM` to the other's) set a multiple of
+    :data:`BESIDE_MM` across its line, the nearest to the point (this side first) at which it
+    keeps :data:`ARROWS_APART_MM` from every arrow before it, so that no arrow lies on
+    another (G₅ and Φ₅ both down at d) nor ends on one (Φ₅ set beside G₅ onto R₀₅). ``at``:
+    where (paper mm) each arrow's own point is, where they are not one point (an inset of
+    points closer than its circle): the offsets are from it."""
+    lengths = lengths or [F.norm / k for F in forces]
+    arrive = arrive or [False] * len(forces)
+    at = at or [(0.0, 0.0)] * len(forces)
+    rays = [F.unit() * (-1.0 if a else 1.0) for F, a in zip(forces, arrive, strict=True)]
     out: list[tuple[float, float]] = []
+    segs: list[tuple[tuple[float, float], tuple[float, float]]] = []
     for i, F in enumerate(forces):
-        u = F.unit()
-        n = sum(1 for G in forces[:i] if G.unit().dot(u) > cos)
-        side = BESIDE_MM * n
-        out.append((u.y * side, u.x * side) if n else (0.0, 0.0))
+        u, r, n = F.unit(), rays[i], lengths[i]
+
+        def clashes(o: tuple[float, float], i: int = i, r: Vec = r, n: float = n) -> bool:
+            a = (at[i][0] + o[0], at[i][1] + o[1])
+            seg = (a, (a[0] + r.x * n, a[1] - r.y * n))
+            for j, other in enumerate(segs):
+                if o == out[j] == (0.0, 0.0) and at[i] == at[j]:  # from one point: by angle
+                    half = TIPS_APART_MM / (2.0 * max(min(n, lengths[j]), 1e-9))
+                    turn = max(math.radians(SAME_LINE_DEG), 2.0 * math.asin(min(1.0, half)))
+                    if rays[j].dot(r) > math.cos(turn):
+                        return True
+                elif _seg_dist(seg, other) < ARROWS_APART_MM:
+                    return True
+            return False
+
+        steps = [0, *(m * sgn for m in range(1, len(forces) + 1) for sgn in (1, -1))]
+        o = next(((u.y * BESIDE_MM * m, u.x * BESIDE_MM * m) for m in steps
+                  if not clashes((u.y * BESIDE_MM * m, u.x * BESIDE_MM * m))),
+                 (u.y * BESIDE_MM * len(forces), u.x * BESIDE_MM * len(forces)))  # fmt: skip
+        o = (o[0] + 0.0, o[1] + 0.0)  # no -0.0: the point itself compares equal
+        out.append(o)
+        a = (at[i][0] + o[0], at[i][1] + o[1])
+        segs.append((a, (a[0] + r.x * n, a[1] - r.y * n)))
     return out
+
+
+#: An arrow set beside others keeps this far (mm) from each of them: two heads' widths and a gap.
+ARROWS_APART_MM = 1.8
+
+
+def _seg_dist(
+    a: tuple[tuple[float, float], tuple[float, float]],
+    b: tuple[tuple[float, float], tuple[float, float]],
+) -> float:
+    """The distance (mm) between two segments (0 where they cross)."""
+
+    def pt(p: tuple[float, float], s: tuple[tuple[float, float], tuple[float, float]]) -> float:
+        (x0, y0), (x1, y1) = s
+        dx, dy = x1 - x0, y1 - y0
+        n2 = dx * dx + dy * dy
+        t = 0.0 if n2 <= 0.0 else max(0.0, min(1.0, ((p[0] - x0) * dx + (p[1] - y0) * dy) / n2))
+        return math.hypot(p[0] - x0 - t * dx, p[1] - y0 - t * dy)
+
+    def side(p: tuple[float, float], s: tuple[tuple[float, float], tuple[float, float]]) -> float:
+        (x0, y0), (x1, y1) = s
+        return (x1 - x0) * (p[1] - y0) - (y1 - y0) * (p[0] - x0)
+
+    if side(a[0], b) * side(a[1], b) < 0.0 and side(b[0], a) * side(b[1], a) < 0.0:
+        return 0.0
+    return min(pt(a[0], b), pt(a[1], b), pt(b[0], a), pt(b[1], a))
 
 
 def pushes(forces: list[Vec]) -> list[bool]:

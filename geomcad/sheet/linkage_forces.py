@@ -285,17 +285,18 @@ class _ByScale:
         wrapped at its caption's width."""
         assert isinstance(self, View)  # a mixin of the views
         fs = self.scales_at(None)
-        return further_room(fs, omitted_values(fs, self._named), title_width(self))
+        return further_room(fs, omitted_values(fs, self._named, True), title_width(self))
 
     def _shorts(self, fs: ForceScales) -> int:
         """How many of the view's forces ``fs`` draws in insets."""
         return sum(1 for F in self._forces if fs.tier(F) not in (0, None))
 
     def _cost(self, fs: ForceScales) -> tuple[int, int, int]:
-        """How many of the view's forces ``fs`` leaves out (named, not drawn), whether its
-        insets' longest arrow outgrows the view's shortest (a reaction drawn past their cap),
-        and how many it draws in insets."""
-        left = sum(1 for F in self._forces if fs.zero < F and fs.tier(F) is None)
+        """How many of the view's forces ``fs`` draws to no scale (named, not drawn, or a
+        direction arrow), whether its insets' longest arrow outgrows the view's shortest (a
+        reaction drawn past their cap), and how many it draws in insets."""
+        left = sum(1 for F in self._forces
+                   if fs.zero < F and (fs.tier(F) is None or fs.is_fixed(F)))  # fmt: skip
         return left, int(fs.over > 1.0 + tol.DERIVED), self._shorts(fs)
 
 
@@ -1081,8 +1082,8 @@ def _force(
     if tier > 0 and insets is not None:
         insets.add(at, F, tier, label, role)
         return
-    force(v, at, F, fs.scales[tier].k, label + fs.mark(tier), arrive=arrive, role=role,
-          height=2.5, clear=clear)  # fmt: skip
+    force(v, at, F, fs.k_at(F.norm), label + fs.mark(min(tier, len(fs.scales) - 1)),
+          arrive=arrive, role=role, height=2.5, clear=clear)  # fmt: skip
 
 
 #: The radius (mm) of a moment's arc about its point, and how much larger each further
@@ -1135,7 +1136,7 @@ def _cost(v: Viewport, ld: Applied, fs: ForceScales, clear: Clearance) -> float:
         return 0.0
     F = ld.force
     u = (F.x / F.norm, -F.y / F.norm)
-    return clear.best(v.p(ld.at), u, F.norm / fs.scales[tier].k, False)[0]
+    return clear.best(v.p(ld.at), u, F.norm / fs.k_at(F.norm), False)[0]
 
 
 def _moment_radius(v: Viewport, c: Vec, arcs: dict[tuple[float, float], int]) -> float:
@@ -1155,8 +1156,9 @@ SCALES_H = 2.5
 
 def further_room(fs: ForceScales, omitted: Sequence[str] = (), width: float = 0.0) -> float:
     """The room (mm) of the lines under a view's caption that state its insets' μ_F and the
-    forces it leaves out (:func:`draw_insets`), those wrapped at ``width`` mm (the caption's:
-    the view's box is never narrower); 0 where it has neither."""
+    forces it draws to no scale (``omitted``: those it leaves out and those it draws as
+    direction arrows, :func:`draw_insets`), those wrapped at ``width`` mm (the caption's: the
+    view's box is never narrower) as a list of them would be; 0 where it has neither."""
     if not (fs.tiered or omitted):
         return 0.0
     omitted = _omitted_fit(omitted, width)
@@ -1186,11 +1188,15 @@ def _omitted_lines(omitted: Sequence[str], width: float) -> list[str]:
     return wrap(_omitted_text(omitted), width, SCALES_H)
 
 
-def omitted_values(fs: ForceScales, named: Sequence[tuple[str, float]]) -> list[str]:
-    """The forces ``named`` (name, N) that the view leaves out as negligible, each with its
-    value (``G_1 = 11,8 Н``), once each."""
+def omitted_values(
+    fs: ForceScales, named: Sequence[tuple[str, float]], fixed: bool = False
+) -> list[str]:
+    """The forces ``named`` (name, N) that the view leaves out as negligible (``fixed``: and
+    those it draws as direction arrows, to no scale), each with its value (``G_1 = 11,8 Н``),
+    once each."""
     out = [f"{load_name(n)} = {_num(abs(F))} {WORDS('newton')}"
-           for n, F in named if fs.zero < abs(F) <= fs.negligible]  # fmt: skip
+           for n, F in named if fs.zero < abs(F) <= fs.negligible
+           or (fixed and fs.zero < abs(F) and fs.is_fixed(abs(F)))]  # fmt: skip
     return list(dict.fromkeys(out))
 
 
@@ -1198,7 +1204,9 @@ def draw_insets(
     d: Drawing, at: Placed, view: View, ins: Insets, start: int, omitted: Sequence[str]
 ) -> None:
     """The view's insets (:class:`~geomcad.sheet.insets.Insets`) where its box is free, then
-    the lines under its caption that state their one μ_F and name the forces it leaves out,
+    the lines under its caption that state their one μ_F, name the forces drawn as direction
+    arrows ("G_1, Ф_1 — стрелки 5 мм без масштаба", else by the share they are under: "силы
+    менее 1,7 % — …") and name the forces it leaves out,
     wrapped at the box's width into the lines its title's room holds (:func:`further_room`).
     Where they would need more lines, they state the μ_F without the insets' letters and the
     forces left out without the share they are under, and where they still would, they name
@@ -1206,31 +1214,56 @@ def draw_insets(
     assert at.viewport is not None
     letters = getattr(view, "letters", None) or detail_letters()
     mine = [next(letters) for _ in range(ins.count(at.viewport))]
-    parts = [ins.line(mine)] if mine else []
+    parts = [ins.line(mine)] if mine and ins.scaled else []
+    # the forces drawn as direction arrows: by name, or by their share where the names
+    # would not fit
+    names = ins.fixed_names()
+    by_name = ""
+    if names:
+        key = "fixed_one" if len(names) == 1 else "fixed"
+        by_name = WORDS(key, names=", ".join(names), mm=fmt_number(ins.fs.fixed))
+        parts.append(by_name)
     omitted = _omitted_fit(omitted, title_width(view))
     if omitted:
         key = "omitted_one" if len(omitted) == 1 else "omitted"
         share = _share_text(getattr(view, "fs", ins.fs).limit or VIEW_NEGLIGIBLE)
         parts.append(WORDS(key, share=share, items=", ".join(omitted)))
     width = at.box[2] - at.box[0]
-    room = max(len(_omitted_lines(omitted, title_width(view))) if omitted else 1, 1)
+    # the lines reserved for them (:func:`further_room`): as many as a list of all the
+    # forces drawn to no scale takes
+    fs = getattr(view, "fs", ins.fs)
+    unscaled = omitted_values(fs, getattr(view, "_named", ()), True)
+    unscaled = _omitted_fit(unscaled, title_width(view))
+    room = max(len(_omitted_lines(unscaled, title_width(view))) if unscaled else 1, 1)
 
     def fits() -> bool:
         return len(wrap(";  ".join(parts), width, SCALES_H)) <= room
+
+    if names and not fits():
+        # "силы менее N % — стрелки 5 мм без масштаба": N the largest such one's share
+        big = max(getattr(view, "_forces", [0.0]))
+        top = max(s.F.norm for s in ins.shorts if ins.fixed(s))
+        i = 1 if mine and ins.scaled else 0
+        parts[i] = WORDS("fixed_all", share=_share_text(top / big) if big > 0.0 else "",
+                         mm=fmt_number(ins.fs.fixed))  # fmt: skip
 
     def bare() -> None:
         key = "omitted_bare_one" if len(omitted) == 1 else "omitted_bare"
         parts[-1] = WORDS(key, items=", ".join(omitted))
 
-    if mine and not fits():
+    if mine and ins.scaled and not fits():
         parts[0] = ins.line(mine, short=True)  # one μ_F for all: the letters go without saying
         if omitted and not fits():
             bare()
-    each = bool(mine) and not fits()
+    each = bool(mine) and ins.scaled and not fits()
     if each:
         parts = parts[1:]
-        if parts and not fits():
-            bare()
+        if names and parts[0] != by_name:
+            short, parts[0] = parts[0], by_name  # by name where the line has room without
+            if not fits():  # the insets' μ_F
+                parts[0] = short
+    if omitted and not fits():
+        bare()
     ins.draw(d, at.viewport, _field(at), start, iter(mine), each)
     lines = wrap(";  ".join(parts), width, SCALES_H) if parts else []
     head = (view.title_lines - 1) * TITLE_SPACING  # a caption broken into lines

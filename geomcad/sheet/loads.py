@@ -64,6 +64,11 @@ class ForceScales:
     #: how many times (≥ 1) the insets' longest arrow is as long as the view's own shortest:
     #: 1 where no inset arrow is longer (:func:`view_scales`)
     over: float = 1.0
+    #: the length (mm) of the direction arrows of the forces too short at the last μ_F and
+    #: over ``negligible`` (:func:`view_scales`' third tier, :meth:`tier` ``len(scales)``,
+    #: drawn without a scale: the view's caption says so); 0: no such tier (those forces are
+    #: drawn at the last μ_F)
+    fixed: float = 0.0
 
     @property
     def k(self) -> float:
@@ -77,7 +82,22 @@ class ForceScales:
         for i, sc in enumerate(self.scales):
             if F / sc.k >= self.short * (1.0 - tol.DERIVED) and (i > 0 or self.least <= F):
                 return i
-        return len(self.scales) - 1
+        last = len(self.scales) - 1
+        if self.fixed and F / self.scales[last].k < self.short * (1.0 - tol.DERIVED):
+            return last + 1  # a direction arrow, self.fixed mm long
+        return last
+
+    def is_fixed(self, F: float) -> bool:
+        """Whether a force of ``F`` N is drawn as a direction arrow :attr:`fixed` mm long,
+        without a scale (the third tier of a view, :func:`view_scales`)."""
+        return self.tier(F) == len(self.scales)
+
+    def k_at(self, F: float) -> float:
+        """The μ_F (N/mm) a force of ``F`` N (> 0, not left out) is drawn at: its tier's, or,
+        a direction arrow, the one that draws it :attr:`fixed` mm long."""
+        tier = self.tier(F)
+        assert tier is not None
+        return F / self.fixed if tier == len(self.scales) else self.scales[tier].k
 
     @staticmethod
     def mark(tier: int) -> str:
@@ -116,9 +136,8 @@ class ForceScales:
         """The longest arrow (mm) of forces of magnitudes ``forces`` (N), each at its tier."""
         out = 0.0
         for F in forces:
-            tier = self.tier(abs(F))
-            if tier is not None:
-                out = max(out, abs(F) / self.scales[tier].k)
+            if self.tier(abs(F)) is not None:
+                out = max(out, abs(F) / self.k_at(abs(F)))
         return out
 
     @property
@@ -214,11 +233,16 @@ def force_tiers(forces: Iterable[float], room_mm: float) -> ForceScales:
     return ForceScales(tuple(dict.fromkeys(scales)), zero, negligible)
 
 
-#: A reaction of a free body (or the lever's P_ур) under this share of the view's largest force
-#: is named (with its value) under its caption, not drawn (:func:`view_scales`): its arrow at
-#: the view's μ_F would be shorter than a 200-mm arrow's drawing error (0,5 mm). The view's
-#: other forces have no such floor: its insets draw what their μ_F can.
-VIEW_NEGLIGIBLE = 0.005
+#: A load of a view under this share of the view's largest force is named ("не показаны",
+#: with its value) under its caption, not drawn (:func:`view_scales`): its arrow at the view's
+#: μ_F would be shorter than a 200-mm arrow's drawing error (1 mm). Every load over it is
+#: drawn: to scale in the view or in its insets, else as a direction arrow VIEW_SHORT_MM long
+#: (review 8: a lever that hid 12 of its loads "менее 7,5 %" could not be checked).
+HIDE_SHARE = 0.005
+#: A reaction of a free body (or the lever's P_ур) over this share of the view's largest force
+#: is drawn to scale (the insets' μ_F is the one that draws it, :func:`view_scales`); a smaller
+#: one is a direction arrow, never left out.
+VIEW_NEGLIGIBLE = HIDE_SHARE
 #: The shortest arrow (mm) of a view's insets: a head (ARROW_LEN) and a shaft that shows its
 #: direction (5 mm rather than SHORT_MM's two heads: an inset with its longest arrow no longer
 #: than the view's shortest spans forces cap/5 apart, not cap/7, and leaves fewer out).
@@ -245,19 +269,25 @@ def view_scales(forces: Iterable[float], room_mm: float, keep: Iterable[float] =
       largest of them no longer than the view's own shortest arrow nor :data:`INSET_CAP_MM`
       (so no inset arrow outgrows an arrow of the view), where it draws as many of them as it
       can at least :data:`VIEW_SHORT_MM` long;
-    - a force still shorter than :data:`VIEW_SHORT_MM` there is named, not drawn
-      (``negligible``: the largest such; ``limit``: its share of the largest force). With the
-      view's largest arrow ``L`` mm long, the smallest force drawn in the view is 7/``L`` of
-      the largest, and the insets take forces ``cap``/5 times smaller (``cap``: the insets'
-      longest arrow), so the share left out is about 35/(``L`` · ``cap``): 1.4 % for ``L`` =
-      100 mm and ``cap`` = 25 mm, several % in a small free body;
-    - a force of ``keep`` (a free body's reaction, the lever's P_ур: what the view shows) over
-      :data:`VIEW_NEGLIGIBLE` of the largest is never named: where the insets' μ_F would draw
-      the smallest of them shorter than :data:`VIEW_SHORT_MM`, it is the coarsest step that
-      draws it that long, the cap or not.
+    - a force still shorter than :data:`VIEW_SHORT_MM` there (with the view's largest arrow
+      ``L`` mm long, the smallest force drawn in the view is 7/``L`` of the largest, and the
+      insets take forces ``cap``/5 times smaller, ``cap`` the insets' longest arrow: the
+      forces under about 35/(``L`` · ``cap``) of the largest, 1.4 % for ``L`` = 100 mm and
+      ``cap`` = 25 mm, several % in a small free body or a lever) is drawn in the insets too,
+      as a direction arrow of the fixed length :data:`VIEW_SHORT_MM` (``fixed``, the third
+      tier: no arrow of a scale is shorter, so a longer arrow is never a smaller force), its
+      value in the table of loads, where it is at least :data:`HIDE_SHARE` of the largest;
+    - a smaller force is named, not drawn (``negligible``: the largest such; ``limit``: its
+      share of the largest force, under :data:`HIDE_SHARE`);
+    - a force of ``keep`` (a free body's reaction, the lever's P_ур: what the view shows) is
+      never named: over :data:`VIEW_NEGLIGIBLE` of the largest, where the insets' μ_F would
+      draw the smallest of them shorter than :data:`VIEW_SHORT_MM`, it is the coarsest step
+      that draws it that long, the cap or not; a smaller one is a direction arrow (and so is
+      every load larger than it).
 
-    :meth:`ForceScales.tier` gives a force's scale (0: the view itself, 1: its insets, ``None``:
-    named). Forces under ``tol.DERIVED`` of the largest are zero."""
+    :meth:`ForceScales.tier` gives a force's scale (0: the view itself, 1: its insets, the
+    number of scales: a direction arrow, ``None``: named). Forces under ``tol.DERIVED`` of the
+    largest are zero."""
     mags = sorted((abs(F) for F in forces), reverse=True)
     big = mags[0] if mags else 0.0
     room = max(room_mm, 2.5 * SHORT_MM)
@@ -295,10 +325,15 @@ def view_scales(forces: Iterable[float], room_mm: float, keep: Iterable[float] =
     assert best is not None
     (_, _, j), k2, named, ratio = best
     scales = (top,) if k2 is top else (top, k2)
-    negligible = max(named, default=0.0)
+    # too short at every μ_F: left out under HIDE_SHARE (and under every reaction), else a
+    # direction arrow VIEW_SHORT_MM long
+    floor = min([HIDE_SHARE * big, *(F for F in keep if zero < F)])
+    negligible = max((F for F in named if floor > F), default=0.0)
     limit = negligible / big
+    fixed = VIEW_SHORT_MM if any(negligible < F for F in named) else 0.0
     return ForceScales(scales, zero, negligible, insets=True, limit=limit, short=VIEW_SHORT_MM,
-                       least=live[j], over=max(1.0, ratio) if k2 is not top else 1.0)  # fmt: skip
+                       least=live[j], over=max(1.0, ratio) if k2 is not top else 1.0,
+                       fixed=fixed)  # fmt: skip
 
 
 #: A force's arrow on a free body keeps this far (mm) from the centre lines of what is drawn
