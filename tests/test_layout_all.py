@@ -74,8 +74,10 @@ BASELINE: dict[tuple[str, str], dict[str, int]] = {
     # review 6 item 5: group (4, 5) drawn at the mechanism's 1:2.5 (was 1:4) has the
     # mechanism's crowded slider D, its 4, D and 5 at 7 mm as on the mechanism (7 -> 8)
     # review 7 item 2: an inset's arrows from 5 mm (a head and a shaft), none longer than the
-    # view's shortest: G_5 in group (4, 5)'s inset at 40 N/mm is 6.1 mm
-    ("linkage-shaper", "forces"): {"anchor": 8, "empty": 1, "short-vector": 1},
+    # view's shortest: G_5 in group (4, 5)'s inset at 40 N/mm is 6.1 mm; review 8 item 2: a load
+    # neither tier draws 5 mm long (G_4, Φ_4 on the mechanism, group (4, 5) and the lever) is a
+    # 5 mm direction arrow, stated "стрелки 5 мм без масштаба" under its view's caption (7 × 5.00)
+    ("linkage-shaper", "forces"): {"anchor": 8, "empty": 1, "short-vector": 8},
     ("linkage-shaper", "dynamics"): {"empty": 1},
     # the twelve numbered positions drawn beside the file's phi: B's labels crowd near the
     # rocker's extreme (7 … 11 mm)

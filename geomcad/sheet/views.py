@@ -234,6 +234,7 @@ def draw_polygon(
     thin: bool = False,
     omit: Iterable[str] = (),
     lines: Iterable[str] = (),
+    bound: tuple[float, float, float, float] | None = None,
 ) -> list[str]:
     """Draw ``poly`` through ``v`` at the viewport's μ_F: each vector head to tail, labelled
     beside its middle (``names`` maps a vector's name to label markup; default: the name),
@@ -331,7 +332,7 @@ def draw_polygon(
     sides += [(v.p(r.tail + shift.get(r.name, Vec(0.0, 0.0))),
                v.p(r.head + shift.get(r.name, Vec(0.0, 0.0)))) for r, _ in res]  # fmt: skip
     for spot in detail_spots(v, poly, details):
-        mark_detail(v, *spot, segs=sides)
+        mark_detail(v, *spot, segs=sides, bound=bound)
     if thin and len(drawn) == 2 and not in_detail:
         # two forces in balance: the polygon closes on one line, and says so
         a, b = ((names or {}).get(pv.name, pv.name) for pv in drawn)
@@ -620,14 +621,27 @@ def mark_detail(
     r: float,
     letter: str,
     segs: Sequence[tuple[tuple[float, float], tuple[float, float]]] = (),
+    bound: tuple[float, float, float, float] | None = None,
 ) -> None:
     """Circle (thin) the spot of radius ``r`` mm round ``c`` (paper) and letter it on a short
     leader (ESKD выносной элемент): of the eight ways round the circle (up-right first), the
-    one whose letter is farthest from the polygon's sides ``segs`` (paper)."""
+    one whose letter is farthest from the polygon's sides ``segs`` (paper), among those that
+    keep the letter inside the view's ``bound`` (paper) where any does (CI: sixbar_coupler's
+    "Ю1" 1 mm into the next plan's box)."""
     cx, cy = c
     k = v.scale.k
     v.circle(Vec(v.ox + (cx - v.at[0]) * k, v.oy - (cy - v.at[1]) * k), r * k, "construction")
     ways = [(math.cos(math.radians(a)), -math.sin(math.radians(a))) for a in range(45, 405, 45)]
+    half = text_width(letter, 3.5) / 2.0 + 1.0
+
+    def inside(u: tuple[float, float]) -> bool:
+        if bound is None:
+            return True
+        at = (cx + u[0] * (r + 5.5), cy + u[1] * (r + 5.5))
+        x0, y0, x1, y1 = bound
+        return x0 <= at[0] - half and at[0] + half <= x1 and y0 <= at[1] - 3.0 and at[1] + 3.0 <= y1
+
+    ways = [w for w in ways if inside(w)] or ways
 
     def clearance(u: tuple[float, float]) -> float:
         at = (cx + u[0] * (r + 5.5), cy + u[1] * (r + 5.5))  # about the letter's middle
@@ -1454,7 +1468,7 @@ class Polygon(View):
             self.points += draw_polygon(
                 v, poly, self.names, role, self.found, self.inward, self.label_height,
                 self.details if last else (), self.thin and last,
-                self.omitted if last else (), self.lined if last else (),
+                self.omitted if last else (), self.lined if last else (), bound=at.box,
             )  # fmt: skip
         if self.details:
             poly = self.layers[-1][0]
