@@ -673,8 +673,11 @@ DETAIL_MM = SHORT_MM
 #: … and its longest at most this long (mm): a detail copy is not drawn several times longer
 #: than its plan's own vectors (review 8, item 3: the oscillator's G4 = 24 N at 59 mm in a
 #: detail beside G5 = 64 N at 16 mm in its plan); what it then draws too short is named under
-#: the plan's caption (one level: no detail is taken from a detail).
-DETAIL_MAX_MM = 30.0
+#: the plan's caption (one level: no detail is taken from a detail). Review 9, item 1: at 30 mm
+#: the details named the shaper's G4, Φ4, Rτ34 and a compressor's given F_B instead of drawing
+#: them (the polygon not closed on the sheet): a detail is an enlarged view (ESKD 2.305), its
+#: vectors may outgrow the plan's; a closed polygon comes first.
+DETAIL_MAX_MM = 60.0
 #: A detail enlarges the view it is taken from at least this many times (a detail barely
 #: larger than its polygon is not worth its room).
 DETAIL_LEAST = 4.0
