@@ -157,3 +157,23 @@ def test_wittenbauers_diagram_takes_the_field_the_omega_diagram_keeps_its_own() 
         witt, omega, paper = _drawn(stem)
         assert witt >= 0.08 * paper, (stem, witt, paper)
         assert omega >= 0.1 * paper, (stem, omega, paper)
+
+
+def test_wittenbauers_tangents_are_drawn_steep_enough_in_any_box() -> None:
+    """Review 9: a wide flat box drew the tangents at ψ_max 2.2°, ψ_min 1.9° (a strip no hand
+    could construct): whatever box the layout gives the diagram, its I_пр axis is no longer than
+    draws the ω_min tangent WITT_MIN_DEG steep; the tangent of a tall box is left as it is."""
+    from geomcad.linkage.analysis import analyse
+    from geomcad.sheet import linkage_forces as lf
+
+    root = Path(__file__).resolve().parent
+    files = [EXAMPLES / "crusher.toml", EXAMPLES / "shaper.toml",
+             *sorted((root / "linkages_outlines").glob("*.toml"))]  # fmt: skip
+    for path in files:
+        fw = analyse(documents.solve(str(path)).data).flywheel
+        assert fw is not None
+        witt = lf._Wittenbauer(fw)
+        for w, h in ((400.0, 80.0), (560.0, 120.0), (200.0, 200.0), (120.0, 400.0)):
+            ax, ay = witt._axes(w, h)
+            steep = math.degrees(math.atan(0.5 * fw.omega_min**2 * ax.k / ay.k))
+            assert steep >= lf.WITT_MIN_DEG * (1.0 - 1e-9), (path.stem, w, h, steep)

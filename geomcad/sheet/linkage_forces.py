@@ -2114,6 +2114,10 @@ def _thin(y: npt.NDArray[np.float64]) -> npt.NDArray[np.float64]:
     return out if (len(y) - 1) % k == 0 else np.append(out, y[-1])
 
 
+#: Wittenbauer's tangents are drawn at least this steep (degrees; the ω_min one, the flatter).
+WITT_MIN_DEG = 5.0
+
+
 class _Wittenbauer(View):
     """The energy–mass diagram ΔT(I_пр) with its two tangents at ψ_max, ψ_min and the segment
     ab they cut on the ΔT axis; both axes fitted to the box. The sheet's main construction (the
@@ -2136,8 +2140,13 @@ class _Wittenbauer(View):
         lo = float(min(fw.dA.min(), b, 0.0))
         hi = float(max(fw.dA.max(), a + k_max * i_hi, 0.0))
         ay = Axis.fit("ΔT", WORDS("J"), lo, hi, max(h - self.BELOW - self.ABOVE - 6.0, 1.0), "T")
-        ax = Axis.fit(WORDS("I_pr"), WORDS("kgm2"), 0.0, i_hi,
-                      max(w - self.LEFT - self.RIGHT, 1.0), "I")  # fmt: skip
+        # the I_пр axis no longer than draws the ω_min tangent WITT_MIN_DEG steep (review 9: a
+        # wide flat box drew the tangents at 2.2° and 1.9°, a strip no hand could construct)
+        room = max(w - self.LEFT - self.RIGHT, 1.0)
+        slope = 0.5 * fw.omega_min**2
+        if slope > 0.0 and i_hi > 0.0:
+            room = min(room, max(i_hi * slope / (math.tan(math.radians(WITT_MIN_DEG)) * ay.k), 1.0))
+        ax = Axis.fit(WORDS("I_pr"), WORDS("kgm2"), 0.0, i_hi, room, "I")
         return ax, ay
 
     def used(self, w: float, h: float) -> tuple[float, float]:
