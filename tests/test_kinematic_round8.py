@@ -148,3 +148,31 @@ def test_a_fitted_grid_draws_unlike_plans_larger_than_equal_cells() -> None:
     for f, (w, h) in zip(figs, sizes, strict=True):
         x0, y0, x1, y1 = lay[f].box
         assert lay.scale("v").mm(w) <= x1 - x0 and lay.scale("v").mm(h) <= y1 - y0
+
+
+@pytest.mark.parametrize(
+    ("path", "both"),
+    [
+        (Path(__file__).resolve().parent / "linkages_outlines" / "bellcrank_sixbar.toml", True),
+        (Path(__file__).resolve().parent.parent / "examples" / "shaper.toml", False),
+    ],
+    ids=["phi", "numbered"],
+)
+def test_the_acceleration_section_is_titled_by_what_it_holds(path: Path, both: bool) -> None:
+    """Review 9: "Планы ускорений" stood over the velocity plan of a `phi` position (drawn
+    beside its acceleration plan): that section is "Планы скоростей и ускорений"; a section of
+    acceleration plans alone keeps its title."""
+    from geomcad.sheet.lang import language
+    from geomcad.sheet.linkage import kinematic_sheets
+    from geomcad.sheet.model import TextItem
+
+    s = solve(parse(tomllib.loads(path.read_text(encoding="utf-8"))))
+    with language("ru"):
+        texts = [
+            "".join(r.text for r in it.runs)
+            for _name, sheet in kinematic_sheets(s, "x")
+            for it in sheet.items
+            if isinstance(it, TextItem)
+        ]
+    assert any(t.startswith("Планы скоростей и ускорений") for t in texts) is both
+    assert any(t.startswith("Планы ускорений") for t in texts) is not both

@@ -302,7 +302,11 @@ def _trees(
         vp = PlanView(P.vp, title=WORDS("vplan_detail", phi=_deg(P.phi, s)), group="v",
                       weight=2.0, min_mm=SHORT_MM, least_k=k_v)  # fmt: skip
         cells.append(Row(vp, ap))
-    aplans: Tree = Grid(*cells, title=WORDS("aplans"), group="a", title_height=TITLE_H)
+    # a section holding a position's velocity plan beside its acceleration plan is titled by
+    # both (review 9: "Планы ускорений" over the velocity plan of a `phi` position)
+    both = any(isinstance(c, Row) for c in cells)
+    aplans: Tree = Grid(*cells, title=WORDS("vaplans" if both else "aplans"), group="a",
+                        title_height=TITLE_H)  # fmt: skip
     # s, v and a share the column's height (review 6: whitworth's s took 250 mm, v and a 60)
     graphs = _diagrams(s)
     diagrams = Column(
