@@ -11,9 +11,9 @@ from pathlib import Path
 
 import pytest
 from shapely.geometry import MultiPoint, Point
+from test_slotted_link_arms import _distance
 
 from geomcad import tol
-from geomcad.geom import Vec
 from geomcad.linkage import parse
 from geomcad.linkage.model import Linkage
 from geomcad.linkage.solution import solve
@@ -26,14 +26,6 @@ FILES = [
     *sorted((ROOT / "linkages_layout").glob("*.toml")),
     *(ROOT.parent / "examples" / f"{n}.toml" for n in ("shaper", "sixbar-2013-6", "crusher")),
 ]
-
-
-def _distance(q: Vec, a: Vec, b: Vec) -> float:
-    d = b - a
-    if d.dot(d) == 0.0:
-        return (q - a).norm
-    t = max(0.0, min(1.0, (q - a).dot(d) / d.dot(d)))
-    return (a + d * t - q).norm
 
 
 def _joints(lk: Linkage, link: int) -> list[str]:

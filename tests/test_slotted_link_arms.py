@@ -20,7 +20,10 @@ FILES = sorted((Path(__file__).resolve().parent / "linkages_arms").glob("*.toml"
 
 
 def _distance(q: Vec, a: Vec, b: Vec) -> float:
+    """The distance from ``q`` to the segment ``ab`` (a point where ``a`` is ``b``)."""
     d = b - a
+    if d.dot(d) == 0.0:
+        return (q - a).norm
     t = max(0.0, min(1.0, (q - a).dot(d) / d.dot(d)))
     return (a + d * t - q).norm
 

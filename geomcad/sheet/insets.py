@@ -26,6 +26,7 @@ from dataclasses import dataclass
 import numpy as np
 import numpy.typing as npt
 
+from geomcad import tol
 from geomcad.geom import Vec
 from geomcad.sheet.drawing import Drawing, Viewport
 from geomcad.sheet.lang import Words
@@ -293,7 +294,7 @@ def side_by_side(
             seg = (a, (a[0] + r.x * n, a[1] - r.y * n))
             for j, other in enumerate(segs):
                 if o == out[j] == (0.0, 0.0) and at[i] == at[j]:  # from one point: by angle
-                    half = TIPS_APART_MM / (2.0 * max(min(n, lengths[j]), 1e-9))
+                    half = TIPS_APART_MM / (2.0 * max(min(n, lengths[j]), tol.SHEET_MM))
                     turn = max(math.radians(SAME_LINE_DEG), 2.0 * math.asin(min(1.0, half)))
                     if rays[j].dot(r) > math.cos(turn):
                         return True

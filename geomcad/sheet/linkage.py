@@ -30,6 +30,7 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 import numpy.typing as npt
+from shapely.geometry import MultiPoint, Point
 
 from geomcad import tol
 from geomcad.construction.recorder import Step
@@ -707,8 +708,6 @@ PLATE_NEAR = 0.05
 def _plate_corners(joints: Sequence[Vec], aside: Sequence[Vec]) -> list[Vec]:
     """Those of ``aside`` that lie farther than PLATE_NEAR of the joints' size outside the convex
     outline of ``joints`` (shapely's convex hull: a segment for two joints)."""
-    from shapely.geometry import MultiPoint, Point
-
     if len(joints) < 2:
         return list(aside)
     size = max(a.dist(b) for a, b in itertools.combinations(joints, 2))
@@ -719,14 +718,6 @@ def _plate_corners(joints: Sequence[Vec], aside: Sequence[Vec]) -> list[Vec]:
         if far and not any(q.dist(u) <= tol.DERIVED * max(1.0, q.norm) for u in out):
             out.append(q)
     return out
-
-
-def _off_segment(q: Vec, a: Vec, b: Vec) -> float:
-    """The distance (model units) from ``q`` to the segment ``ab``."""
-    d = b - a
-    dd = d.dot(d)
-    t = 0.0 if dd == 0.0 else max(0.0, min(1.0, (q - a).dot(d) / dd))
-    return (a + d * t - q).norm
 
 
 def link_bodies(
@@ -829,11 +820,9 @@ def link_bodies(
                 rod = Body.of([E, E + d * yk.rod])
             # the yoke's own outline where it reaches a point off its rod and slot (a crosshead's
             # arm to the joint F a rocker hangs on: review 9, drawn nowhere in the thin positions)
+            rod_slot = [(E - u * yk.slot, E + u * yk.slot), (E, E + d * yk.rod)]
             off = any(
-                min(
-                    _off_segment(q, E - u * yk.slot, E + u * yk.slot),
-                    _off_segment(q, E, E + d * yk.rod),
-                )
+                min(_to_segment((q.x, q.y), (p.x, p.y), (r.x, r.y)) for p, r in rod_slot)
                 > tol.DERIVED * max(1.0, q.norm)
                 for q in uniq
             )
@@ -1775,7 +1764,8 @@ def _cross(
 
 
 def _to_segment(p: tuple[float, float], a: tuple[float, float], b: tuple[float, float]) -> float:
-    """The distance (mm) from the point ``p`` to the segment ``a``–``b``."""
+    """The distance from the point ``p`` to the segment ``a``–``b`` (in their units: mm on the
+    paper, model units for a link's outline)."""
     dx, dy = b[0] - a[0], b[1] - a[1]
     n = dx * dx + dy * dy
     t = 0.0 if n == 0.0 else min(1.0, max(0.0, ((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / n))

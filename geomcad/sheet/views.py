@@ -634,18 +634,19 @@ def mark_detail(
     ways = [(math.cos(math.radians(a)), -math.sin(math.radians(a))) for a in range(45, 405, 45)]
     half = text_width(letter, 3.5) / 2.0 + 1.0
 
+    def middle(u: tuple[float, float]) -> tuple[float, float]:
+        return (cx + u[0] * (r + 5.5), cy + u[1] * (r + 5.5))  # about the letter's middle
+
     def inside(u: tuple[float, float]) -> bool:
         if bound is None:
             return True
-        at = (cx + u[0] * (r + 5.5), cy + u[1] * (r + 5.5))
-        x0, y0, x1, y1 = bound
-        return x0 <= at[0] - half and at[0] + half <= x1 and y0 <= at[1] - 3.0 and at[1] + 3.0 <= y1
+        (x, y), (x0, y0, x1, y1) = middle(u), bound
+        return x0 <= x - half and x + half <= x1 and y0 <= y - 3.0 and y + 3.0 <= y1
 
     ways = [w for w in ways if inside(w)] or ways
 
     def clearance(u: tuple[float, float]) -> float:
-        at = (cx + u[0] * (r + 5.5), cy + u[1] * (r + 5.5))  # about the letter's middle
-        return min((_seg_dist(at, a, b) for a, b in segs), default=math.inf)
+        return min((_seg_dist(middle(u), a, b) for a, b in segs), default=math.inf)
 
     u = max(ways, key=lambda w: min(clearance(w), 6.0))  # 6 mm clear is clear enough
     edge = (cx + r * u[0], cy + r * u[1])
