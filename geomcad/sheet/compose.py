@@ -902,6 +902,16 @@ def _getter(ids: Sequence[int]) -> Callable[[Mapping[int, object]], object]:
     return operator.itemgetter(*ids)
 
 
+class _Beaten(Exception):
+    """A layout's overflow so far is already past the best one's (:meth:`_Solver.evaluate`)."""
+
+
+#: A layout laid out so far whose leaves overflow by this much (mm) more than the best one's
+#: total overflow loses to it, whatever the rest adds (only overflow is added; :func:`_score`
+#: compares it rounded to 1e-6 mm).
+BEATEN = 1e-3
+
+
 class _Solver:
     """The search over the open splits (see the module's docstring)."""
 
@@ -925,6 +935,11 @@ class _Solver:
         self.sub: dict[int, list[int]] = {}
         self._subtree(tree)
         self.memo: dict[tuple[object, ...], _Part] = {}
+        #: Each memoised part's overflow (Σ of its leaves' ``bad``), and the overflow of the
+        #: layout being laid out so far against the most it may reach (:meth:`evaluate`).
+        self.bads: dict[tuple[object, ...], float] = {}
+        self._bad = 0.0
+        self._most = math.inf
         self.options: dict[tuple[object, ...], list[tuple[float, ...] | int]] = {}
         self.scored: dict[object, tuple[_Part, tuple[float, ...]]] = {}
         #: Layouts scored (for the benchmark and the tests).
@@ -1007,7 +1022,13 @@ class _Solver:
         key = (id(t), box, self._sub_get[id(t)](self.choice))
         part = self.memo.get(key)
         if part is None:
+            start = self._bad
             part = self.memo[key] = self._run(t, box)
+            self.bads[key] = self._bad - start
+        else:
+            self._bad += self.bads[key]
+            if self._bad > self._most:
+                raise _Beaten
         return part
 
     def _split(self, node: Node, box: Box, weights: tuple[float, ...]) -> list[tuple[Tree, Box]]:
@@ -1068,7 +1089,12 @@ class _Solver:
         more_titles: list[tuple[Box, Node]] = list(titles)
         for it, cell in kids:
             if isinstance(it, View):
-                out.append((it, self._info(it).place(cell)))
+                leaf = self._info(it).place(cell)
+                out.append((it, leaf))
+                if leaf.bad:
+                    self._bad += leaf.bad
+                    if self._bad > self._most:
+                        raise _Beaten
                 continue
             more, inner = self.run(it, cell)
             out += more
@@ -1084,7 +1110,18 @@ class _Solver:
         key = self._laid_get(self.choice)
         done = self.scored.get(key)
         if done is None:
-            part = self.run(self.tree, self.field.box)
+            # the overflow its leaves add up to as they are laid out: one already past the
+            # floor's (by more than the score's rounding) ends the layout there, as _score
+            # would end it
+            self._bad, self._most = 0.0, math.inf if floor is None else BEATEN - floor[0]
+            try:
+                part = self.run(self.tree, self.field.box)
+            except _Beaten:
+                self.evaluations += 1
+                assert floor is not None
+                return ((), ()), (floor[0] - 1.0,)
+            finally:
+                self._most = math.inf
             sc = _score(part, floor)
             self.evaluations += 1
             if sc is None:
