@@ -9,6 +9,7 @@ import os
 import re
 import shutil
 import subprocess
+import sys
 import xml.etree.ElementTree as ET
 from collections.abc import Callable
 from pathlib import Path
@@ -634,3 +635,54 @@ def test_black_by_default() -> None:
     svg = to_svg(sheet)
     assert "#1f4e9c" not in svg and "#b01c1c" not in svg
     assert "#1f4e9c" in to_svg(sheet, colour=True)
+
+
+def test_cairo_ffi_modules_are_the_installed_cairocffis() -> None:
+    """geomcad/render/_cairo_ffi*.py are what cffi generates from the installed cairocffi's
+    declarations, with their SHA-256 (else: ``python scripts/cairo_ffi.py``). In a fresh
+    process: here cairocffi may already run on them."""
+    code = (
+        "import sys\n"
+        "from geomcad.render.raster import cairo_ffi_code\n"
+        "sys.stdout.write('\\x00'.join(cairo_ffi_code()))\n"
+    )
+    out = subprocess.run(
+        [sys.executable, "-c", code], check=True, capture_output=True, text=True
+    ).stdout
+    shipped = [
+        (Path(raster.__file__).parent / f"{name.rsplit('.', 1)[1]}.py").read_text(encoding="utf-8")
+        for name in raster.CAIRO_FFI
+    ]
+    assert out.split("\x00") == shipped
+    assert f'SOURCES = "{raster.cairo_ffi_sources()}"' in shipped[0]
+
+
+def test_a_pdf_through_the_generated_ffi_is_cairocffis_own() -> None:
+    """cairocffi on the generated declarations (no C header parsed: pycparser never loads)
+    writes the same PDF bytes as cairocffi parsing its header itself (imported first, the
+    generated modules are not used)."""
+    code = (
+        "import sys\n"
+        "{first}"
+        "from geomcad.render.pdf import sheet_pdf\n"
+        "from geomcad.render.raster import cairo\n"
+        "from geomcad.sheet import start\n"
+        "from geomcad.sheet.frame import TitleBlock\n"
+        "d = start('A4', TitleBlock('Лист', 'ТММ.01'))\n"
+        "d.text('V_{B3B2}', (60.0, 80.0), 5.0)\n"
+        "pdf = sheet_pdf(d.finish())\n"
+        "generated = type(cairo().ffi).__module__ != 'cffi.api'\n"
+        "print(generated, 'pycparser' in sys.modules, pdf.hex())\n"
+    )
+    runs = []
+    for first in ("", "import cairocffi\n"):
+        out = subprocess.run(
+            [sys.executable, "-c", code.replace("{first}", first)],
+            check=True,
+            capture_output=True,
+            text=True,
+        ).stdout.split()
+        runs.append(out)
+    assert runs[0][:2] == ["True", "False"]  # the generated declarations, no parser
+    assert runs[1][:2] == ["False", "True"]  # cairocffi's own parse
+    assert runs[0][2] == runs[1][2]

@@ -12,9 +12,14 @@ text is set in the same font whose metrics placed it.
 
 from __future__ import annotations
 
+import contextlib
+import hashlib
+import importlib.util
+import io
 import os
 import re
 import struct
+import sys
 import zlib
 from importlib import resources
 from pathlib import Path
@@ -44,6 +49,7 @@ def cairo() -> ModuleType:
     """
     # fontconfig reads this once, when cairo first sets text; set it before anything loads cairo.
     os.environ["FONTCONFIG_FILE"] = str(fonts_conf())
+    _prebuilt_ffi()
     try:
         import cairocffi
     except (ImportError, OSError) as exc:
@@ -51,6 +57,71 @@ def cairo() -> ModuleType:
         raise MissingDependency(CAIRO_MISSING) from exc
     module: ModuleType = cairocffi
     return module
+
+
+#: cffi's out-of-line ABI modules of cairocffi's C declarations (:func:`cairo_ffi_code`), the
+#: second (gdk-pixbuf's) including the first.
+CAIRO_FFI = ("geomcad.render._cairo_ffi", "geomcad.render._cairo_ffi_pixbuf")
+
+
+def cairo_ffi_sources() -> str | None:
+    """The SHA-256 of the installed cairocffi's ``constants.py`` and ``ffi.py``, which declare
+    its C interface (read as bytes, without importing cairocffi); None where they cannot be
+    read."""
+    spec = importlib.util.find_spec("cairocffi")
+    if spec is None or not spec.submodule_search_locations:
+        return None
+    folder = Path(next(iter(spec.submodule_search_locations)))
+    digest = hashlib.sha256()
+    try:
+        for name in ("constants.py", "ffi.py"):
+            digest.update((folder / name).read_bytes())
+    except OSError:
+        return None
+    return digest.hexdigest()
+
+
+def cairo_ffi_code() -> tuple[str, str]:
+    """The texts of the modules :data:`CAIRO_FFI`, generated (cffi's ``emit_python_code``) from
+    the installed cairocffi's own declarations, each ending with the SHA-256 they were
+    generated from (:func:`cairo_ffi_sources`). Call it in a process where cairocffi was not
+    loaded through :func:`cairo` (``python scripts/cairo_ffi.py`` writes them)."""
+    import tempfile
+
+    from cairocffi.ffi import ffi, ffi_pixbuf
+
+    texts = []
+    with tempfile.TemporaryDirectory() as tmp:
+        for name, f in zip(CAIRO_FFI, (ffi, ffi_pixbuf), strict=True):
+            f.set_source(name, None)
+            path = Path(tmp) / "ffi.py"
+            with contextlib.redirect_stdout(io.StringIO()):  # cffi says "generating …"
+                f.emit_python_code(str(path))
+            texts.append(
+                "# ruff: noqa\n"
+                + path.read_text(encoding="utf-8")
+                + "\n#: cairocffi's constants.py and ffi.py (SHA-256) this was generated from\n"
+                + f'SOURCES = "{cairo_ffi_sources()}"\n'
+            )
+    return texts[0], texts[1]
+
+
+def _prebuilt_ffi() -> None:
+    """cairocffi's C declarations from :data:`CAIRO_FFI` (cffi's out-of-line ABI modules,
+    generated from them), not parsed again: cairocffi parses its 2,000 lines of C header
+    through pycparser on every import (0.11 s of a shaper's 2.3 s build). Only where the
+    installed cairocffi declares exactly what they were generated from; else cairocffi parses
+    them itself, as it does alone."""
+    if "cairocffi" in sys.modules:
+        return
+    from geomcad.render import _cairo_ffi, _cairo_ffi_pixbuf
+
+    if cairo_ffi_sources() != _cairo_ffi.SOURCES:
+        return
+    module = ModuleType("cairocffi.ffi", "cairocffi's C interface (geomcad.render._cairo_ffi)")
+    module.ffi = _cairo_ffi.ffi  # type: ignore[attr-defined]
+    module.ffi_pixbuf = _cairo_ffi_pixbuf.ffi  # type: ignore[attr-defined]
+    sys.modules["cairocffi.ffi"] = module
 
 
 def _cairosvg() -> ModuleType:
