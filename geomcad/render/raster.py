@@ -114,8 +114,10 @@ def _prebuilt_ffi() -> None:
     them itself, as it does alone."""
     if "cairocffi" in sys.modules:
         return
-    from geomcad.render import _cairo_ffi, _cairo_ffi_pixbuf
-
+    try:  # (a cffi that no longer reads the generated modules refuses them: ImportError)
+        from geomcad.render import _cairo_ffi, _cairo_ffi_pixbuf
+    except ImportError:
+        return
     if cairo_ffi_sources() != _cairo_ffi.SOURCES:
         return
     module = ModuleType("cairocffi.ffi", "cairocffi's C interface (geomcad.render._cairo_ffi)")
