@@ -40,6 +40,8 @@ WORDS = Words(__package__, "linkage_forces")
 
 #: The radius (mm) of the thin circle round a point whose short forces are in an inset.
 MARK_R = 3.5
+#: Two insets' circles on a view keep at least this far (mm) apart; closer, they are one.
+CIRCLES_APART_MM = 1.0
 #: The cap height (mm) of an inset's caption and of its labels, and the letter's on the view.
 CAPTION_H = 2.5
 LETTER_H = 3.5
@@ -112,6 +114,22 @@ class Insets:
         return s.tier >= len(self.fs.scales)
 
     @property
+    def marked(self) -> bool:
+        """Whether the insets draw at two μ_F of their own (μF*, μF**): each force's label
+        then carries its tier's mark."""
+        return len(self.fs.scales) > 2
+
+    def scale_text(self, shorts: list[Short] | None = None) -> str:
+        """The insets' μ_F as stated (``μ_F = 2 Н/мм``; with two: ``μ_F* = 2, μ_F** =
+        0,5 Н/мм``), of the forces ``shorts`` drawn to scale only where given (an inset's)."""
+        from geomcad.sheet.compose import scale_text
+
+        if not self.marked:
+            return scale_text(self.scale)
+        mine = self.shorts if shorts is None else shorts
+        return self.fs.further([s.tier for s in mine if not self.fixed(s)])
+
+    @property
     def scaled(self) -> bool:
         """Whether some inset draws a force at the insets' μ_F (not only direction arrows)."""
         return any(not self.fixed(s) for s in self.shorts)
@@ -133,13 +151,41 @@ class Insets:
                 out.append((s.at, [s]))
         return out
 
+    def clusters(self, v: Viewport) -> list[tuple[Vec, list[Short], tuple[float, float], float]]:
+        """The insets of the view ``v``: :meth:`groups` of points closer than a circle, then
+        any two whose circles (sheet mm: the centre of their points' box, :data:`MARK_R`
+        round the farthest) would come closer than :data:`CIRCLES_APART_MM` joined, until
+        none do (review 9: the rocking cylinder's lever drew Ж1, И1, Г1 over each other):
+        (point, its short forces, the circle's centre, its radius), one letter each."""
+        out: list[tuple[Vec, list[Short]]] = [(q, list(ss)) for q, ss in
+                                              self.groups(v.scale.model(2.0 * MARK_R))]  # fmt: skip
+
+        def circle(ss: list[Short]) -> tuple[tuple[float, float], float]:
+            ats = [v.p(s.at) for s in ss]
+            xs, ys = [a[0] for a in ats], [a[1] for a in ats]
+            c = ((min(xs) + max(xs)) / 2.0, (min(ys) + max(ys)) / 2.0)
+            return c, MARK_R + max(math.dist(c, a) for a in ats)
+
+        joined = True
+        while joined:
+            joined = False
+            rings = [circle(ss) for _, ss in out]
+            for i, j in itertools.combinations(range(len(out)), 2):
+                (ci, ri), (cj, rj) = rings[i], rings[j]
+                if math.dist(ci, cj) < ri + rj + CIRCLES_APART_MM:
+                    out[i] = (out[i][0], out[i][1] + out[j][1])
+                    del out[j]
+                    joined = True
+                    break
+        return [(q, ss, *circle(ss)) for q, ss in out]
+
     def name_of(self, q: Vec, eps: float) -> str:
         """The name of the view's point at ``q`` ("" where none is)."""
         return next((n for n, p in self.points.items() if p.dist(q) <= eps), "")
 
     def count(self, v: Viewport) -> int:
         """How many insets the view ``v`` draws (one per point)."""
-        return len(self.groups(v.scale.model(2.0 * MARK_R))) if self.shorts else 0
+        return len(self.clusters(v)) if self.shorts else 0
 
     def draw(
         self,
@@ -162,13 +208,9 @@ class Insets:
             free.mark(it)
         marks: list[tuple[str, Vec, list[Short], tuple[float, float]]] = []
         # the circles and their letters first (each beside its own circle), then the insets
-        for q, shorts in self.groups(v.scale.model(2.0 * MARK_R)):
+        for q, shorts, c, r in self.clusters(v):
             letter = next(letters)
             self.drawn.append((letter, self.scale))
-            ats = [v.p(s.at) for s in shorts]
-            xs, ys = [a[0] for a in ats], [a[1] for a in ats]
-            c = ((min(xs) + max(xs)) / 2.0, (min(ys) + max(ys)) / 2.0)
-            r = MARK_R + max(math.dist(c, a) for a in ats)
             circle = CircleItem(c, r, "thin")
             d.sheet.add(circle)
             free.letter(d, letter, c, r)  # its own circle is not in its way
@@ -189,11 +231,10 @@ class Insets:
         eps: float,
         each: bool,
     ) -> None:
-        from geomcad.sheet.compose import scale_text
-
         sc = self.scale
         scaled = any(not self.fixed(s) for s in shorts)
-        caption = WORDS("inset", letter=letter, scale=scale_text(sc)) if each and scaled else letter
+        caption = (WORDS("inset", letter=letter, scale=self.scale_text(shorts))
+                   if each and scaled else letter)  # fmt: skip
         # each force at the insets' μ_F, or a direction arrow fs.fixed mm long
         ks = [self.fs.k_at(s.F.norm) for s in shorts]
         arrive = pushes([s.F for s in shorts])
@@ -234,7 +275,8 @@ class Insets:
             q2 = q + Vec(o[0], -o[1]) * v.scale.k
             if o != e:  # set beside the others on its line: a thin line to its point
                 iv.seg(s.at, q2, "thin")
-            force(iv, q2, s.F, k, s.label, arrive=a, role=s.role, height=CAPTION_H)
+            mark = self.fs.mark(s.tier) if self.marked and not self.fixed(s) else ""
+            force(iv, q2, s.F, k, s.label + mark, arrive=a, role=s.role, height=CAPTION_H)
         free.take(corner, w, h)
 
     def text(self) -> str:
@@ -245,13 +287,11 @@ class Insets:
     def line(self, letters: list[str], short: bool = False) -> str:
         """:meth:`text` for insets lettered ``letters`` (``short``: the μ_F alone, without
         the letters: ``выносные элементы: μ_F = 2 Н/мм``)."""
-        from geomcad.sheet.compose import scale_text
-
         if not letters or not self.scaled:
             return ""
         if short:
-            return WORDS("insets_all", scale=scale_text(self.scale))
-        return WORDS("insets", items=f"{', '.join(letters)}: {scale_text(self.scale)}")
+            return WORDS("insets_all", scale=self.scale_text())
+        return WORDS("insets", items=f"{', '.join(letters)}: {self.scale_text()}")
 
 
 #: Two forces at one point closer in direction than this (degrees) are set side by side.
