@@ -42,6 +42,9 @@ WORDS = Words(__package__, "linkage_forces")
 MARK_R = 3.5
 #: Two insets' circles on a view keep at least this far (mm) apart; closer, they are one.
 CIRCLES_APART_MM = 1.0
+#: An inset draws its points at least this far (mm) apart: one of points closer on the view
+#: is an enlarged detail (its length scale stated in its caption).
+INSET_APART_MM = 10.0
 #: The cap height (mm) of an inset's caption and of its labels, and the letter's on the view.
 CAPTION_H = 2.5
 LETTER_H = 3.5
@@ -231,17 +234,33 @@ class Insets:
         eps: float,
         each: bool,
     ) -> None:
+        from geomcad.sheet.compose import round_scale_down, scale_text
+
         sc = self.scale
         scaled = any(not self.fixed(s) for s in shorts)
-        caption = (WORDS("inset", letter=letter, scale=self.scale_text(shorts))
-                   if each and scaled else letter)  # fmt: skip
+        # points of the view closer than INSET_APART_MM (one inset's circle took them): the
+        # inset enlarges them, at the coarsest step of the view's series that sets them that
+        # far apart, stated in its caption (ESKD 2.305: "Ж1 (2:1)"; review 9: the rocking
+        # cylinder's lever's insets round its pole, its arrows over each other)
+        sl = v.scale
+        paper = [v.p(s.at) for s in shorts]
+        gaps = [g for a, b in itertools.combinations(paper, 2) if (g := math.dist(a, b)) > 0.8]
+        if gaps and min(gaps) < INSET_APART_MM:
+            raw = sl.k * min(gaps) / INSET_APART_MM
+            sl = round_scale_down(raw, sl.q, "gost" if sl.q == "l" else "nice")
+        parts = []
+        if sl is not v.scale:
+            parts.append(sl.ratio_text() or scale_text(sl))
+        if each and scaled:
+            parts.append(self.scale_text(shorts))
+        caption = WORDS("inset", letter=letter, scale="; ".join(parts)) if parts else letter
         # each force at the insets' μ_F, or a direction arrow fs.fixed mm long
         ks = [self.fs.k_at(s.F.norm) for s in shorts]
         arrive = pushes([s.F for s in shorts])
         lengths = [s.F.norm / k for s, k in zip(shorts, ks, strict=True)]
         # paper mm from the point: the far ends of the arrows (leaving it, or arriving)
         # each force at its own point (a detail keeps the view's μ_l): offsets from q
-        rel = [((s.at.x - q.x) / v.scale.k, (q.y - s.at.y) / v.scale.k) for s in shorts]
+        rel = [((s.at.x - q.x) / sl.k, (q.y - s.at.y) / sl.k) for s in shorts]
         starts = side_by_side([s.F for s in shorts], sc.k, lengths, arrive, rel)
         starts = [(o[0] + e[0], o[1] + e[1]) for o, e in zip(starts, rel, strict=True)]
         tips = [
@@ -253,7 +272,7 @@ class Insets:
         x1 = max(0.0, *(t[0] for t in tips)) + LABEL_PAD
         y0 = min(0.0, *(t[1] for t in tips)) - LABEL_PAD
         y1 = max(0.0, *(t[1] for t in tips)) + LABEL_PAD
-        cap_h = CAPTION_H if each else LETTER_H
+        cap_h = CAPTION_H if parts else LETTER_H
         cap_w = box(parse(caption), cap_h)[0]
         cap = cap_h * 2.0
         w, h = max(x1 - x0, cap_w), (y1 - y0) + cap
@@ -261,7 +280,7 @@ class Insets:
         # the point in the inset, its arrows' box under the caption
         at = (corner[0] + (w - (x1 - x0)) / 2.0 - x0, corner[1] + cap - y0)
         d.text(caption, (corner[0] + (w - cap_w) / 2.0, corner[1] + cap_h), cap_h)
-        iv = Viewport(d, v.scale, q.x, q.y, at)
+        iv = Viewport(d, sl, q.x, q.y, at)
         pts: list[Vec] = []
         for s in shorts:
             if all(s.at.dist(u) > eps for u in pts):
@@ -272,7 +291,7 @@ class Insets:
             if name:
                 iv.label(u, markup_of(name), CAPTION_H, clear=0.8)
         for o, e, a, s, k in zip(starts, rel, arrive, shorts, ks, strict=True):
-            q2 = q + Vec(o[0], -o[1]) * v.scale.k
+            q2 = q + Vec(o[0], -o[1]) * sl.k
             if o != e:  # set beside the others on its line: a thin line to its point
                 iv.seg(s.at, q2, "thin")
             mark = self.fs.mark(s.tier) if self.marked and not self.fixed(s) else ""
@@ -334,6 +353,8 @@ def side_by_side(
             seg = (a, (a[0] + r.x * n, a[1] - r.y * n))
             for j, other in enumerate(segs):
                 if o == out[j] == (0.0, 0.0) and at[i] == at[j]:  # from one point: by angle
+                    if arrive[i] and arrive[j]:  # both heads at the point: they would meet
+                        return True
                     half = TIPS_APART_MM / (2.0 * max(min(n, lengths[j]), tol.SHEET_MM))
                     turn = max(math.radians(SAME_LINE_DEG), 2.0 * math.asin(min(1.0, half)))
                     if rays[j].dot(r) > math.cos(turn):
