@@ -1,10 +1,16 @@
 """A forces-sheet view's inset μ_F and its "не показаны" share (issue 27, review 7 items 2
-and 3): in the mechanism view, each group's free body and Zhukovsky's lever, no arrow of an
-inset is longer than the view's own shortest arrow (review 7: the oscillator's Φ5 = 4 N drawn
-81.5 mm in an inset beside G2 = 25.5 N at 25.5 mm; the shaper's G5 = 245 N at 61 mm beside
-F_D = 2200 N at 44 mm), so that a longer arrow is a larger force across both scales; and the
-forces left out are a small share of the view's largest (review 7: the yoke's group (4, 5)
-left out G5 and Φ5 "менее 23 %").
+and 3, review 9 item 2): in the mechanism view, each group's free body and Zhukovsky's lever,
+where one inset μ_F draws them, no arrow of an inset is longer than the view's own shortest
+arrow (review 7: the oscillator's Φ5 = 4 N drawn 81.5 mm in an inset beside G2 = 25.5 N at
+25.5 mm; the shaper's G5 = 245 N at 61 mm beside F_D = 2200 N at 44 mm), so that a longer
+arrow is a larger force across both scales; where it cannot, the insets take a second stated
+μ_F (μF*, μF**) and every load of HIDE_SHARE of the view's largest or more is drawn to a
+stated scale, never as a direction arrow without one (review 9: rocking_cylinder's lever drew
+everything under 7.5 % so, watt2's lever six loads, the compressor's group (2, 3) its given
+F_B), each tier's lengths in the order of the forces; the forces left out are a small share of
+the view's largest (review 7: the yoke's group (4, 5) left out G5 and Φ5 "менее 23 %"); and
+the insets' circles never overlap, each lettered once (review 9: Ж1, И1, Г1 over each other
+round the rocking cylinder's lever's pole).
 
 Each forces sheet is drawn with its views' force scales and every arrow recorded: the view's
 own through ``linkage_forces.force``, its insets' through ``insets.force``."""
@@ -34,12 +40,16 @@ from geomcad.sheet.scale import nice_below, nice_factor
 
 ROOT = Path(__file__).resolve().parent.parent
 FILES = [
+    # every example with a forces sheet (a drive and masses or loads)
     *(
-        ROOT / "examples" / f"{n}.toml"
-        for n in ("shaper", "crusher", "slider-crank", "sixbar-2013-6")
+        p
+        for p in sorted((ROOT / "examples").glob("*.toml"))
+        if "[drive]" in (t := p.read_text("utf-8")) and ("mass" in t or "[[load]]" in t)
     ),
     *sorted((ROOT / "tests" / "linkages_layout").glob("*.toml")),
 ]
+#: The insets of a view draw at most this many μ_F of their own.
+INSET_TIERS = 2
 
 #: The share of a view's largest force under which the forces it leaves out are, on every
 #: view of these files: HIDE_SHARE (0.5 %), whatever the view's size (review 8: the rule
@@ -180,9 +190,61 @@ position = 4
 """
 
 
+#: A third (review 9 round): a press with an offset slider-crank whose rod carries a small
+#: given moment on both strokes (0.6 N·m, its pair of forces on the lever 0.05 % of the 6 kN
+#: working force at position 3: a given load is drawn to scale all the same) and a light
+#: crank against a heavy ram.
+OWN3 = """title = "Пресс с моментом трения на шатуне"
+
+[frame]
+O = [0.0, 0.0]
+
+[drive]
+pivot = "O"
+joint = "A"
+length = 0.045
+omega = 18.0
+positions = 12
+output = "B"
+
+[[group]]
+kind = "RRP"
+links = [2, 3]
+joint = "B"
+end = "A"
+length = 0.19
+guide = { through = [0.0, -0.02], angle = 0.0 }
+assembly = "forward"
+
+[links.1]
+mass = 0.5
+J = 0.001
+[links.2]
+mass = 1.4
+J = 0.006
+[links.3]
+mass = 12.0
+
+[[load]]
+point = "B"
+value = 6000.0
+stroke = "working"
+working = "backward"
+
+[[load]]
+link = 2
+moment = 0.6
+stroke = "both"
+
+[forces]
+position = 3
+"""
+
+
 def _cases() -> list[Any]:
     out = [pytest.param(p.read_text("utf-8"), id=p.stem) for p in FILES]
-    return [*out, pytest.param(OWN, id="own-lift"), pytest.param(OWN2, id="own-kulisa-pump")]
+    return [*out, pytest.param(OWN, id="own-lift"), pytest.param(OWN2, id="own-kulisa-pump"),
+            pytest.param(OWN3, id="own-press-moment")]  # fmt: skip
 
 
 def _draw(text: str, mp: pytest.MonkeyPatch) -> dict[str, Any] | None:
@@ -191,7 +253,7 @@ def _draw(text: str, mp: pytest.MonkeyPatch) -> dict[str, Any] | None:
     from geomcad.sheet import insets as ins_mod
     from geomcad.sheet import linkage_forces as lf
 
-    rec: dict[str, Any] = {"views": [], "arrows": []}
+    rec: dict[str, Any] = {"views": [], "arrows": [], "circles": [], "letters": []}
     inside: list[Any] = []
 
     def wrap(orig: Any) -> Any:
@@ -217,11 +279,17 @@ def _draw(text: str, mp: pytest.MonkeyPatch) -> dict[str, Any] | None:
     orig_draw = ins_mod.Insets.draw
 
     def draw(self: Any, d: Any, v: Any, *a: Any, **kw: Any) -> Any:
+        from geomcad.sheet.model import CircleItem
+
         inside.append(v)
+        n, m = len(d.sheet.items), len(self.drawn)
         try:
             return orig_draw(self, d, v, *a, **kw)
         finally:
             inside.pop()
+            rec["circles"] += [(d.sheet, it) for it in d.sheet.items[n:]
+                               if isinstance(it, CircleItem)]  # fmt: skip
+            rec["letters"] += [(d.sheet, letter) for letter, _ in self.drawn[m:]]
 
     mp.setattr(ins_mod.Insets, "draw", draw)
     sheets = lf.force_sheets(solve(parse(tomllib.loads(text))), "x")
@@ -231,6 +299,8 @@ def _draw(text: str, mp: pytest.MonkeyPatch) -> dict[str, Any] | None:
     rec["sheet"] = sheet
     rec["views"] = [r for r in rec["views"] if r[1].viewport.sheet is sheet]
     rec["arrows"] = [r for r in rec["arrows"] if r[0].sheet is sheet]
+    rec["circles"] = [c for sh, c in rec["circles"] if sh is sheet]
+    rec["letters"] = [c for sh, c in rec["letters"] if sh is sheet]
     return rec
 
 
@@ -253,42 +323,54 @@ def test_no_inset_arrow_outgrows_the_views_own_shortest(drawn: dict[str, Any]) -
         assert min(own) >= VIEW_SHORT_MM * (1.0 - 1e-6), (type(view).__name__, min(own))
         if not fs.tiered:
             continue
-        # the insets' arrows: each force short at the view's μ_F (or under its least) …
+        # the insets' arrows: at most INSET_TIERS μ_F of their own, each drawing its forces
+        # (short at the view's μ_F, or under its least) at least VIEW_SHORT_MM long
+        assert len(fs.scales) <= 1 + INSET_TIERS, (type(view).__name__, fs.scales)
+        big = max(view._forces)
+        for t in range(1, len(fs.scales)):
+            mine = [F for F in view._forces if fs.tier(F) == t]
+            assert mine, (type(view).__name__, t)
+            assert min(mine) / fs.scales[t].k >= VIEW_SHORT_MM * (1.0 - 1e-6)
+        need = [F for F in view._forces if fs.tier(F) not in (0, None)
+                and (HIDE_SHARE * big * (1.0 - 1e-9) <= F or F in view._given)]  # fmt: skip
+        if len(fs.scales) > 2:
+            # a second inset μ_F only for loads of HIDE_SHARE or more (or given) that the
+            # first draws shorter than VIEW_SHORT_MM
+            k1 = fs.scales[1].k
+            assert any(F / k1 < VIEW_SHORT_MM for F in need), type(view).__name__
+            continue
         k2 = fs.scales[1].k
         mine = [F for F in view._forces if fs.tier(F) == 1]
-        assert mine
         longest = max(mine) / k2
-        assert min(mine) / k2 >= VIEW_SHORT_MM * (1.0 - 1e-6)
         # … none longer than the view's shortest, nor than INSET_CAP_MM …
         kept = [F for F in view._keep if fs.tier(F) == 1]
+        cap = min(min(own), INSET_CAP_MM)
         if longest > min(own) * (1.0 + 1e-6) or longest > INSET_CAP_MM * (1.0 + 1e-6):
             # … but where a reaction (a free body's, the lever's P_ур) needs a finer μ_F to
-            # be drawn at all: the coarsest that draws the smallest of them
-            assert kept, (type(view).__name__, longest, min(own))
-            assert k2 == nice_below(min(kept), VIEW_SHORT_MM).k
+            # be drawn at all: the coarsest that draws the smallest of them; or where the one
+            # μ_F that would keep them within the view's shortest would draw a load of
+            # HIDE_SHARE or more shorter than VIEW_SHORT_MM (review 9: a stated scale first)
+            mono = nice_factor(max(mine), cap, "F").k
+            assert (kept and k2 == nice_below(min(kept), VIEW_SHORT_MM).k) or any(
+                F / mono < VIEW_SHORT_MM for F in need
+            ), (type(view).__name__, longest, min(own))
         else:
             # the finest GOST step that keeps the longest within them: one step finer
             # would draw it past the view's shortest arrow or the cap
-            cap = min(min(own), INSET_CAP_MM)
             finer = nice_below(k2 / 1.1, 1.0).k
             assert max(mine) / finer > cap * (1.0 - 1e-6), (type(view).__name__, k2, finer)
 
 
 def test_insets_drawn_as_their_scales_say(drawn: dict[str, Any]) -> None:
-    """The recorded arrows: in the view at its μ_F, in an inset at the insets' one, and no
-    inset arrow longer than the view's shortest (the drawn lengths, not the rule's)."""
+    """The recorded arrows: in the view at its μ_F, in an inset at its tier's μ_F (or a
+    direction arrow VIEW_SHORT_MM long), the drawn lengths, not the rule's."""
     for view, at, fs in drawn["views"]:
         v = at.viewport
-        own = [(F, mm) for w, F, mm, inset in drawn["arrows"] if w is v and not inset]
-        for F, mm in own:
-            assert math.isclose(mm, F / fs.k, rel_tol=1e-6)
-        if not fs.tiered:
-            continue
-        k2 = fs.scales[1].k
-        ins_mm = [F / k2 for F in view._forces if fs.tier(F) == 1]
-        kept = [F for F in view._keep if fs.tier(F) == 1]
-        if not kept or k2 != nice_below(min(kept), VIEW_SHORT_MM).k:
-            assert max(ins_mm) <= min(mm for _, mm in own) * (1.0 + 1e-6)
+        for w, F, mm, inset in drawn["arrows"]:
+            if w is not v:
+                continue
+            assert (fs.tier(F) not in (0, None)) is inset, (type(view).__name__, F)
+            assert math.isclose(mm, F / fs.k_at(F), rel_tol=1e-6), (type(view).__name__, F, mm)
 
 
 def _texts(sheet: Any) -> list[str]:
@@ -312,27 +394,30 @@ def test_forces_left_out_are_a_small_share_and_stated(drawn: dict[str, Any]) -> 
         assert all(F / k < VIEW_SHORT_MM for F in left)
         # the share stated is above the largest left out and within 2 figures of it
         assert fs.limit * (1.0 + 1e-9) >= max(left) / big
+    for view, _, fs in drawn["views"]:
+        big = max(view._forces)
+        # no load of HIDE_SHARE or more, and no given load, without a stated scale
+        unscaled = [F for F in view._forces if fs.zero < F and fs.is_fixed(F)]
+        assert all(HIDE_SHARE * big > F for F in unscaled), (type(view).__name__, unscaled)
+        for F in view._given:
+            assert fs.tier(F) is not None and not fs.is_fixed(F), (type(view).__name__, F)
     hidden = re.findall(r"не показан[аы]? \(менее ([\d,]+) %", texts)
     shares = [float(s.replace(",", ".")) for s in hidden]
     assert all(s <= SHARE_MAX * 100.0 for s in shares), shares
 
 
-def test_lengths_monotone_across_the_three_tiers(drawn: dict[str, Any]) -> None:
-    """Per view, the arrows drawn (in the view at its μ_F, in its insets at their μ_F or as
-    direction arrows VIEW_SHORT_MM long): a larger force is never drawn shorter; a direction
-    arrow is a force too short at the insets' μ_F, VIEW_SHORT_MM long, and the view's caption
-    names it (or states the share under which such forces are)."""
+def test_lengths_monotone_within_each_tier(drawn: dict[str, Any]) -> None:
+    """Per view and per tier (the view's μ_F, each stated inset μ_F, the direction arrows
+    VIEW_SHORT_MM long): a larger force is never drawn shorter; a direction arrow is a force
+    under HIDE_SHARE too short at the insets' finest μ_F, VIEW_SHORT_MM long, and the view's
+    caption names it (or states the share under which such forces are)."""
     texts = _texts(drawn["sheet"])
     for view, at, fs in drawn["views"]:
         v = at.viewport
         fixed = [F for F in view._forces if fs.zero < F and fs.is_fixed(F)]
         arrows = sorted((F, mm) for w, F, mm, _ in drawn["arrows"] if w is v)
-        # where a reaction takes the insets' μ_F past the view's shortest arrow (fs.over,
-        # test_no_inset_arrow_outgrows_the_views_own_shortest), each tier apart
-        bands = [arrows]
-        if fs.over > 1.0 + 1e-9:
-            bands = [[a for a in arrows if fs.tier(a[0]) == t] for t in range(len(fs.scales))]
-        for band in bands:
+        for t in range(len(fs.scales) + 1):
+            band = [a for a in arrows if fs.tier(a[0]) == t]
             for (F1, mm1), (F2, mm2) in itertools.pairwise(band):
                 assert F1 > F2 * (1.0 - 1e-9) or mm1 <= mm2 * (1.0 + 1e-6) + 1e-6, (
                     type(view).__name__, (F1, mm1), (F2, mm2))  # fmt: skip
@@ -349,43 +434,79 @@ def test_lengths_monotone_across_the_three_tiers(drawn: dict[str, Any]) -> None:
         assert any("стрелк" in t and "без масштаба" in t for t in texts), type(view).__name__
 
 
+def test_inset_circles_apart_and_lettered_once(drawn: dict[str, Any]) -> None:
+    """The insets' circles on the sheet: no two overlap (points whose circles would are one
+    inset), and each inset's letter names one inset of the sheet, written once by its circle
+    and once over the inset (review 9: Ж1, И1, Г1 over each other round the rocking
+    cylinder's lever's pole)."""
+    rings = drawn["circles"]
+    for a, b in itertools.combinations(rings, 2):
+        gap = math.dist(a.c, b.c) - a.r - b.r
+        assert gap > 0.0, (a.c, a.r, b.c, b.r)
+    letters = drawn["letters"]
+    assert len(letters) == len(set(letters)), letters
+    texts = _texts(drawn["sheet"])
+    for letter in letters:
+        assert 1 <= texts.count(letter) <= 2, (letter, texts.count(letter))
+
+
+#: The loads of the rocking cylinder's lever (review 9, N): P_M5 twice, P_ур, then G5 … PMФ4.
+ROCKING_LEVER = [
+    *(316.7, 316.7, 104.4, 49.05, 39.24, 30.71, 30.71, 23.72, 21.58, 17.66, 13.73, 7.546),
+    *(4.829, 4.829, 4.123, 3.893, 3.174, 3.174, 2.479, 0.503, 0.503, 0.255),
+]
+
+
 @pytest.mark.parametrize(
-    ("forces", "room", "keep"),
+    ("forces", "room", "keep", "given"),
     [
-        ([63.8, 25.5, 23.5, 19.6, 11.8, 9.28, 4.08, 3.0, 2.47, 0.68], 64.0, ()),  # oscillator
-        ([2200.0, 245.3, 148.5, 98.1, 29.4, 17.7], 44.0, ()),  # the shaper's mechanism
-        ([6212.0, 5632.0, 2490.0, 45.5, 31.4, 16.7, 15.7], 15.5, (6212.0, 5632.0)),  # yoke
-        ([3924.0, 1087.0, 1025.0, 588.6, 196.2, 147.2, 120.5, 89.0], 24.0, ()),  # crusher
-        ([4200.0, 2571.0, 1617.0, 702.0, 35.3, 21.6, 17.6, 15.7, 14.7], 21.0, (35.3,)),
+        ([63.8, 25.5, 23.5, 19.6, 11.8, 9.28, 4.08, 3.0, 2.47, 0.68], 64.0, (), ()),  # osc.
+        ([2200.0, 245.3, 148.5, 98.1, 29.4, 17.7], 44.0, (), (2200.0,)),  # shaper's mechanism
+        ([6212.0, 5632.0, 2490.0, 45.5, 31.4, 16.7, 15.7], 15.5, (6212.0, 5632.0), ()),  # yoke
+        ([3924.0, 1087.0, 1025.0, 588.6, 196.2, 147.2, 120.5, 89.0], 24.0, (), ()),  # crusher
+        ([4200.0, 2571.0, 1617.0, 702.0, 35.3, 21.6, 17.6, 15.7, 14.7], 21.0, (35.3,), ()),
+        # review 9: the rocking cylinder's lever (everything under 7.5 % was a direction
+        # arrow), and a free body whose given load is a small share of its reactions
+        (ROCKING_LEVER, 40.0, (104.4,), (30.71,)),
+        ([9800.0, 8700.0, 3150.0, 450.0, 96.0, 31.0], 24.0, (9800.0, 8700.0), (31.0,)),
     ],
 )
-def test_view_scales_rule(forces: list[float], room: float, keep: tuple[float, ...]) -> None:
-    fs = view_scales([*forces, 1e-14], room, keep)
+def test_view_scales_rule(
+    forces: list[float], room: float, keep: tuple[float, ...], given: tuple[float, ...]
+) -> None:
+    fs = view_scales([*forces, 1e-14], room, keep, given)
     big = max(forces)
     top = nice_factor(big, max(room, 2.5 * SHORT_MM), "F")  # view_scales' least room
     assert fs.k == top.k and fs.tier(1e-14) is None
-    assert len(fs.scales) <= 2
+    assert len(fs.scales) <= 1 + INSET_TIERS
     own = [F for F in forces if fs.tier(F) == 0]
-    ins = [F for F in forces if fs.tier(F) == 1 and not fs.is_fixed(F)]
+    ins = [F for F in forces if fs.tier(F) not in (0, None) and not fs.is_fixed(F)]
     left = [F for F in forces if fs.tier(F) is None]
     # every force long enough at the view's μ_F and over INSET_CAP_MM there is the view's own
     assert all(fs.tier(F) == 0 for F in forces if F / top.k >= INSET_CAP_MM)
     assert all(F / top.k >= VIEW_SHORT_MM * (1.0 - 1e-9) for F in own)
-    # the tiers are bands: left out < direction arrows < insets < the view's own
+    # the tiers are bands: left out < direction arrows < insets (the finer tier the
+    # smaller forces) < the view's own
     assert all(a < b for a in left for b in ins + own)
     assert all(a < b for a in ins for b in own)
-    if ins:
+    for t in range(2, len(fs.scales)):
+        assert all(a < b for a in forces if fs.tier(a) == t
+                   for b in forces if fs.tier(b) == t - 1)  # fmt: skip
+    for F in ins:
+        assert F / fs.k_at(F) >= VIEW_SHORT_MM * (1.0 - 1e-9)
+    if len(fs.scales) == 2:
         k2 = fs.scales[1].k
-        assert all(F / k2 >= VIEW_SHORT_MM * (1.0 - 1e-9) for F in ins)
         kept = [F for F in keep if F in ins]
-        if not kept or min(kept) / nice_factor(max(ins), min(min(own) / top.k, INSET_CAP_MM),
-                                               "F").k >= VIEW_SHORT_MM:  # fmt: skip
-            assert max(ins) / k2 <= min(min(own) / top.k, INSET_CAP_MM) * (1.0 + 1e-9)
-    # the reactions are drawn; a load is left out only under HIDE_SHARE, a larger one too
-    # short at every μ_F is a direction arrow
+        cap = min(min(own) / top.k, INSET_CAP_MM)
+        if not kept or min(kept) / nice_factor(max(ins), cap, "F").k >= VIEW_SHORT_MM:
+            assert max(ins) / k2 <= INSET_CAP_MM * (1.0 + 1e-9)
+    # the reactions and the given loads are drawn, the given ones to scale; a load is left
+    # out only under HIDE_SHARE, and only a force under HIDE_SHARE is a direction arrow
     assert all(fs.tier(F) is not None for F in keep)
+    assert all(fs.tier(F) is not None and not fs.is_fixed(F) for F in given)
     assert all(HIDE_SHARE * big > F for F in left)
     fixed = [F for F in forces if fs.is_fixed(F)]
+    assert all(HIDE_SHARE * big > F for F in fixed)
     assert all(F / fs.scales[-1].k < VIEW_SHORT_MM for F in fixed)
     assert all(a < b for a in left for b in fixed) and all(a < b for a in fixed for b in ins)
     if left:

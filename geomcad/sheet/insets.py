@@ -40,6 +40,11 @@ WORDS = Words(__package__, "linkage_forces")
 
 #: The radius (mm) of the thin circle round a point whose short forces are in an inset.
 MARK_R = 3.5
+#: Two insets' circles on a view keep at least this far (mm) apart; closer, they are one.
+CIRCLES_APART_MM = 1.0
+#: An inset draws its points at least this far (mm) apart: one of points closer on the view
+#: is an enlarged detail (its length scale stated in its caption).
+INSET_APART_MM = 10.0
 #: The cap height (mm) of an inset's caption and of its labels, and the letter's on the view.
 CAPTION_H = 2.5
 LETTER_H = 3.5
@@ -112,6 +117,22 @@ class Insets:
         return s.tier >= len(self.fs.scales)
 
     @property
+    def marked(self) -> bool:
+        """Whether the insets draw at two μ_F of their own (μF*, μF**): each force's label
+        then carries its tier's mark."""
+        return len(self.fs.scales) > 2
+
+    def scale_text(self, shorts: list[Short] | None = None) -> str:
+        """The insets' μ_F as stated (``μ_F = 2 Н/мм``; with two: ``μ_F* = 2, μ_F** =
+        0,5 Н/мм``), of the forces ``shorts`` drawn to scale only where given (an inset's)."""
+        from geomcad.sheet.compose import scale_text
+
+        if not self.marked:
+            return scale_text(self.scale)
+        mine = self.shorts if shorts is None else shorts
+        return self.fs.further([s.tier for s in mine if not self.fixed(s)])
+
+    @property
     def scaled(self) -> bool:
         """Whether some inset draws a force at the insets' μ_F (not only direction arrows)."""
         return any(not self.fixed(s) for s in self.shorts)
@@ -133,13 +154,41 @@ class Insets:
                 out.append((s.at, [s]))
         return out
 
+    def clusters(self, v: Viewport) -> list[tuple[Vec, list[Short], tuple[float, float], float]]:
+        """The insets of the view ``v``: :meth:`groups` of points closer than a circle, then
+        any two whose circles (sheet mm: the centre of their points' box, :data:`MARK_R`
+        round the farthest) would come closer than :data:`CIRCLES_APART_MM` joined, until
+        none do (review 9: the rocking cylinder's lever drew Ж1, И1, Г1 over each other):
+        (point, its short forces, the circle's centre, its radius), one letter each."""
+        out: list[tuple[Vec, list[Short]]] = [(q, list(ss)) for q, ss in
+                                              self.groups(v.scale.model(2.0 * MARK_R))]  # fmt: skip
+
+        def circle(ss: list[Short]) -> tuple[tuple[float, float], float]:
+            ats = [v.p(s.at) for s in ss]
+            xs, ys = [a[0] for a in ats], [a[1] for a in ats]
+            c = ((min(xs) + max(xs)) / 2.0, (min(ys) + max(ys)) / 2.0)
+            return c, MARK_R + max(math.dist(c, a) for a in ats)
+
+        joined = True
+        while joined:
+            joined = False
+            rings = [circle(ss) for _, ss in out]
+            for i, j in itertools.combinations(range(len(out)), 2):
+                (ci, ri), (cj, rj) = rings[i], rings[j]
+                if math.dist(ci, cj) < ri + rj + CIRCLES_APART_MM:
+                    out[i] = (out[i][0], out[i][1] + out[j][1])
+                    del out[j]
+                    joined = True
+                    break
+        return [(q, ss, *circle(ss)) for q, ss in out]
+
     def name_of(self, q: Vec, eps: float) -> str:
         """The name of the view's point at ``q`` ("" where none is)."""
         return next((n for n, p in self.points.items() if p.dist(q) <= eps), "")
 
     def count(self, v: Viewport) -> int:
         """How many insets the view ``v`` draws (one per point)."""
-        return len(self.groups(v.scale.model(2.0 * MARK_R))) if self.shorts else 0
+        return len(self.clusters(v)) if self.shorts else 0
 
     def draw(
         self,
@@ -162,13 +211,9 @@ class Insets:
             free.mark(it)
         marks: list[tuple[str, Vec, list[Short], tuple[float, float]]] = []
         # the circles and their letters first (each beside its own circle), then the insets
-        for q, shorts in self.groups(v.scale.model(2.0 * MARK_R)):
+        for q, shorts, c, r in self.clusters(v):
             letter = next(letters)
             self.drawn.append((letter, self.scale))
-            ats = [v.p(s.at) for s in shorts]
-            xs, ys = [a[0] for a in ats], [a[1] for a in ats]
-            c = ((min(xs) + max(xs)) / 2.0, (min(ys) + max(ys)) / 2.0)
-            r = MARK_R + max(math.dist(c, a) for a in ats)
             circle = CircleItem(c, r, "thin")
             d.sheet.add(circle)
             free.letter(d, letter, c, r)  # its own circle is not in its way
@@ -189,18 +234,33 @@ class Insets:
         eps: float,
         each: bool,
     ) -> None:
-        from geomcad.sheet.compose import scale_text
+        from geomcad.sheet.compose import round_scale_down, scale_text
 
         sc = self.scale
         scaled = any(not self.fixed(s) for s in shorts)
-        caption = WORDS("inset", letter=letter, scale=scale_text(sc)) if each and scaled else letter
+        # points of the view closer than INSET_APART_MM (one inset's circle took them): the
+        # inset enlarges them, at the coarsest step of the view's series that sets them that
+        # far apart, stated in its caption (ESKD 2.305: "Ж1 (2:1)"; review 9: the rocking
+        # cylinder's lever's insets round its pole, its arrows over each other)
+        sl = v.scale
+        paper = [v.p(s.at) for s in shorts]
+        gaps = [g for a, b in itertools.combinations(paper, 2) if (g := math.dist(a, b)) > 0.8]
+        if gaps and min(gaps) < INSET_APART_MM:
+            raw = sl.k * min(gaps) / INSET_APART_MM
+            sl = round_scale_down(raw, sl.q, "gost" if sl.q == "l" else "nice")
+        parts = []
+        if sl is not v.scale:
+            parts.append(sl.ratio_text() or scale_text(sl))
+        if each and scaled:
+            parts.append(self.scale_text(shorts))
+        caption = WORDS("inset", letter=letter, scale="; ".join(parts)) if parts else letter
         # each force at the insets' μ_F, or a direction arrow fs.fixed mm long
         ks = [self.fs.k_at(s.F.norm) for s in shorts]
         arrive = pushes([s.F for s in shorts])
         lengths = [s.F.norm / k for s, k in zip(shorts, ks, strict=True)]
         # paper mm from the point: the far ends of the arrows (leaving it, or arriving)
         # each force at its own point (a detail keeps the view's μ_l): offsets from q
-        rel = [((s.at.x - q.x) / v.scale.k, (q.y - s.at.y) / v.scale.k) for s in shorts]
+        rel = [((s.at.x - q.x) / sl.k, (q.y - s.at.y) / sl.k) for s in shorts]
         starts = side_by_side([s.F for s in shorts], sc.k, lengths, arrive, rel)
         starts = [(o[0] + e[0], o[1] + e[1]) for o, e in zip(starts, rel, strict=True)]
         tips = [
@@ -212,7 +272,7 @@ class Insets:
         x1 = max(0.0, *(t[0] for t in tips)) + LABEL_PAD
         y0 = min(0.0, *(t[1] for t in tips)) - LABEL_PAD
         y1 = max(0.0, *(t[1] for t in tips)) + LABEL_PAD
-        cap_h = CAPTION_H if each else LETTER_H
+        cap_h = CAPTION_H if parts else LETTER_H
         cap_w = box(parse(caption), cap_h)[0]
         cap = cap_h * 2.0
         w, h = max(x1 - x0, cap_w), (y1 - y0) + cap
@@ -220,7 +280,7 @@ class Insets:
         # the point in the inset, its arrows' box under the caption
         at = (corner[0] + (w - (x1 - x0)) / 2.0 - x0, corner[1] + cap - y0)
         d.text(caption, (corner[0] + (w - cap_w) / 2.0, corner[1] + cap_h), cap_h)
-        iv = Viewport(d, v.scale, q.x, q.y, at)
+        iv = Viewport(d, sl, q.x, q.y, at)
         pts: list[Vec] = []
         for s in shorts:
             if all(s.at.dist(u) > eps for u in pts):
@@ -231,10 +291,11 @@ class Insets:
             if name:
                 iv.label(u, markup_of(name), CAPTION_H, clear=0.8)
         for o, e, a, s, k in zip(starts, rel, arrive, shorts, ks, strict=True):
-            q2 = q + Vec(o[0], -o[1]) * v.scale.k
+            q2 = q + Vec(o[0], -o[1]) * sl.k
             if o != e:  # set beside the others on its line: a thin line to its point
                 iv.seg(s.at, q2, "thin")
-            force(iv, q2, s.F, k, s.label, arrive=a, role=s.role, height=CAPTION_H)
+            mark = self.fs.mark(s.tier) if self.marked and not self.fixed(s) else ""
+            force(iv, q2, s.F, k, s.label + mark, arrive=a, role=s.role, height=CAPTION_H)
         free.take(corner, w, h)
 
     def text(self) -> str:
@@ -245,13 +306,11 @@ class Insets:
     def line(self, letters: list[str], short: bool = False) -> str:
         """:meth:`text` for insets lettered ``letters`` (``short``: the μ_F alone, without
         the letters: ``выносные элементы: μ_F = 2 Н/мм``)."""
-        from geomcad.sheet.compose import scale_text
-
         if not letters or not self.scaled:
             return ""
         if short:
-            return WORDS("insets_all", scale=scale_text(self.scale))
-        return WORDS("insets", items=f"{', '.join(letters)}: {scale_text(self.scale)}")
+            return WORDS("insets_all", scale=self.scale_text())
+        return WORDS("insets", items=f"{', '.join(letters)}: {self.scale_text()}")
 
 
 #: Two forces at one point closer in direction than this (degrees) are set side by side.
@@ -294,6 +353,8 @@ def side_by_side(
             seg = (a, (a[0] + r.x * n, a[1] - r.y * n))
             for j, other in enumerate(segs):
                 if o == out[j] == (0.0, 0.0) and at[i] == at[j]:  # from one point: by angle
+                    if arrive[i] and arrive[j]:  # both heads at the point: they would meet
+                        return True
                     half = TIPS_APART_MM / (2.0 * max(min(n, lengths[j]), tol.SHEET_MM))
                     turn = max(math.radians(SAME_LINE_DEG), 2.0 * math.asin(min(1.0, half)))
                     if rays[j].dot(r) > math.cos(turn):

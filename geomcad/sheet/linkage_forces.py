@@ -79,6 +79,7 @@ from geomcad.sheet.compose import (
     Layout,
     Placed,
     Row,
+    Series,
     Tree,
     View,
     arrange,
@@ -217,6 +218,8 @@ class _ByScale:
     _least: float
     #: the forces never left out (a free body's reactions, the lever's P_ур)
     _keep: tuple[float, ...] = ()
+    #: the loads the file gives (F_B, a moment's pair of forces): never without a scale
+    _given: tuple[float, ...] = ()
 
     def arrows(self) -> list[tuple[Vec, Vec]]:
         """The forces the view draws as arrows (point, force; model units)."""
@@ -235,7 +238,7 @@ class _ByScale:
         key = None if scale is None else scale.k
         if key in memo:
             return memo[key]
-        least = memo.get(None) or view_scales(self._forces, self._least, keep=self._keep)
+        least = memo.get(None) or view_scales(self._forces, self._least, self._keep, self._given)
         memo[None] = fs = least
         if scale is not None:
             x0, y0, x1, y1 = self._ext
@@ -243,10 +246,10 @@ class _ByScale:
             m = self.margin * scale.k
             box = (x0 - m, y0 - m, x1 + m, y1)  # the caption over the drawing
             r = self._least
-            fs = view_scales(self._forces, r, self._keep)
+            fs = view_scales(self._forces, r, self._keep, self._given)
             while r < room:
                 r = min(room, r * 1.25)
-                at = view_scales(self._forces, r, self._keep)
+                at = view_scales(self._forces, r, self._keep, self._given)
                 # as costly: the longer arrows (the view's room used, review 7 item 2)
                 if (self._cost(at), at.k) < (self._cost(fs), fs.k) and self._fits(at, scale, box):
                     fs = at
@@ -255,7 +258,7 @@ class _ByScale:
             far = ARROW_SHARE * max(scale.mm(x1 - x0), scale.mm(y1 - y0))
             while self._cost(fs)[0] and r < far:
                 r = min(far, r * 1.25)
-                at = view_scales(self._forces, r, self._keep)
+                at = view_scales(self._forces, r, self._keep, self._given)
                 if self._cost(at)[0] < self._cost(fs)[0] and self._fits(at, scale, box):
                     fs = at
         memo[key] = fs
@@ -1123,6 +1126,16 @@ def _draw_loads(
 CLEAR_BAND = 10.0
 
 
+def _given_loads(loads: Sequence[Applied]) -> list[Applied]:
+    """The loads of ``loads`` that the file gives (F_B, M_3), not weights nor inertia."""
+    return [ld for ld in loads if ld.kind == "given"]
+
+
+def _given(loads: Sequence[Applied]) -> tuple[float, ...]:
+    """The magnitudes (N) of the given forces of ``loads`` (never drawn without a scale)."""
+    return tuple(ld.force.norm for ld in _given_loads(loads) if ld.force is not None)
+
+
 def _norm(ld: Applied) -> float:
     return ld.force.norm if ld.force is not None else 0.0
 
@@ -1163,7 +1176,14 @@ def further_room(fs: ForceScales, omitted: Sequence[str] = (), width: float = 0.
         return 0.0
     omitted = _omitted_fit(omitted, width)
     lines = len(_omitted_lines(omitted, width)) if omitted and width > 0.0 else 1
-    return SCALES_H * TITLE_LEAD + (max(lines, 1) - 1) * SCALES_H * TITLE_SPACING
+    return (SCALES_H * TITLE_LEAD + (max(lines, 1) - 1) * SCALES_H * TITLE_SPACING
+            + _stars_rise(fs))  # fmt: skip
+
+
+def _stars_rise(fs: ForceScales) -> float:
+    """How far (mm) the line under a view's caption rises over its cap height where it states
+    two inset μ_F (their marks ``*``, ``**`` are superscripts): 0 with one."""
+    return max(0.0, fs.further_rise(SCALES_H) - SCALES_H) if len(fs.scales) > 2 else 0.0
 
 
 def _omitted_fit(omitted: Sequence[str], width: float) -> list[str]:
@@ -1267,7 +1287,7 @@ def draw_insets(
     ins.draw(d, at.viewport, _field(at), start, iter(mine), each)
     lines = wrap(";  ".join(parts), width, SCALES_H) if parts else []
     head = (view.title_lines - 1) * TITLE_SPACING  # a caption broken into lines
-    top = at.box[1] + view.title_height * (TITLE_LEAD + head) + SCALES_H
+    top = at.box[1] + view.title_height * (TITLE_LEAD + head) + SCALES_H + _stars_rise(fs)
     for i, line in enumerate(lines):
         d.text(line, (at.box[0], top + i * SCALES_H * TITLE_SPACING), SCALES_H)
 
@@ -1344,7 +1364,8 @@ class _Loaded(_Forces):
         named = [(ld.name, ld.force.norm) for ld in self.loads
                  if ld.force is not None and ld.at is not None]  # fmt: skip
         self._forces, self._least, self._named = [F for _, F in named], LOAD_MM, named
-        self.fs = view_scales(self._forces, LOAD_MM)
+        self._given = _given(self.loads)
+        self.fs = view_scales(self._forces, LOAD_MM, given=self._given)
         self.omitted = omitted_values(self.fs, named)
         #: the solution and the letter of the crank's detail, where the crank may come out
         #: short (:meth:`crank_detail`); the detail's μ_l where one is drawn
@@ -1526,7 +1547,8 @@ class _FreeBody(_Forces):
         named += [(r.name, r.force.norm) for r in external(gf)]
         self._forces, self._least, self._named = [F for _, F in named], LOAD_MM, named
         self._keep = tuple(r.force.norm for r in external(gf))
-        self.fs = view_scales(self._forces, LOAD_MM, keep=self._keep)
+        self._given = _given([ld for i in links for ld in gf.loads[i]])
+        self.fs = view_scales(self._forces, LOAD_MM, self._keep, self._given)
         self.omitted = omitted_values(self.fs, named)
 
     def arrows(self) -> list[tuple[Vec, Vec]]:
@@ -1799,6 +1821,34 @@ def load_sides(
     return [(side[i], starts[i]) for i in range(len(loads))]
 
 
+#: The lever asks the layout for a μ_V that draws the images its loads act at this far (mm)
+#: apart at least (its ``most_k``): two insets' circles round them side by side, their
+#: letters between (review 9: the rocking cylinder's lever, drawn 80 × 60 mm, crowded its
+#: insets Ж1, И1, Г1 round the pole) …
+LEVER_APART_MM = 10.0
+#: … where that draws the lever at most this large (mm); points closer than LEVER_ONE of its
+#: size are one (an inset's circle takes them together).
+LEVER_MOST_MM = 250.0
+LEVER_ONE = 0.01
+
+
+def lever_k(points: Sequence[Vec], ext: tuple[float, float, float, float], series: Series) -> float:
+    """The μ_V (model units per mm) the lever asks of the layout (:data:`LEVER_APART_MM`):
+    the coarsest of ``series`` that draws any two of ``points`` (the images its loads act at)
+    that far apart, or its extent ``ext`` :data:`LEVER_MOST_MM` large where that is coarser;
+    0 (none) for a lever of one point."""
+    size = max(ext[2] - ext[0], ext[3] - ext[1])
+    one: list[Vec] = []
+    for q in points:
+        if all(q.dist(u) > LEVER_ONE * size for u in one):
+            one.append(q)
+    gaps = [a.dist(b) for a, b in itertools.combinations(one, 2)]
+    if not gaps or size <= 0.0:
+        return 0.0
+    k = max(min(gaps) / LEVER_APART_MM, size / LEVER_MOST_MM)
+    return round_scale_down(k, "v", series).k
+
+
 class _Lever(_ByScale, View):
     """Zhukovsky's lever: the velocity plan turned 90° with the loads at their points'
     images and the balancing force at the crank's joint."""
@@ -1809,7 +1859,9 @@ class _Lever(_ByScale, View):
         lev = f.lever
         forces = [it.force.norm for it in lev.items] + [lev.F_bal.norm]
         self._forces, self._least, self._keep = forces, LEVER_LOAD_MM, (lev.F_bal.norm,)
-        self.fs = view_scales(forces, LEVER_LOAD_MM, keep=self._keep)
+        mine = {ld.name for lds in f.loads.values() for ld in _given_loads(lds)}
+        self._given = tuple(it.force.norm for it in lev.items if it.name in mine)
+        self.fs = view_scales(forces, LEVER_LOAD_MM, self._keep, self._given)
         self.short = False
         super().__init__(title=WORDS("lever"), title_height=5.0, quantity="v", series="nice",
                          margin=LEVER_LOAD_MM)  # fmt: skip
@@ -1822,6 +1874,7 @@ class _Lever(_ByScale, View):
         xs = [q.x for q in pts]
         ys = [q.y for q in pts]
         self._ext = (min(xs), min(ys), max(xs), max(ys))
+        self.most_k = lever_k([q for q, _ in self.arrows()], self._ext, self.series)
 
     def extent(self) -> tuple[float, float, float, float]:
         return self._ext

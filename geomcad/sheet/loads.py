@@ -112,16 +112,18 @@ class ForceScales:
 
         return scale_text(self.scales[0])
 
-    def further(self) -> str:
+    def further(self, tiers: Iterable[int] | None = None) -> str:
         """The further scales, by their marks, the unit written once: ``μ_F* = 10,
-        μ_F** = 2 Н/мм`` ("" when every force is at the view's own μ_F)."""
+        μ_F** = 2 Н/мм`` ("" when every force is at the view's own μ_F); ``tiers``: only
+        those (an inset's)."""
         from geomcad.sheet.compose import scale_text
 
-        texts = [scale_text(sc) for sc in self.scales[1:]]
+        mine = range(1, len(self.scales)) if tiers is None else sorted(set(tiers))
+        texts = [(i, scale_text(self.scales[i])) for i in mine if 0 < i < len(self.scales)]
         if not texts:
             return ""
-        unit = texts[-1].rsplit(" ", 1)[-1]
-        parts = [t.replace(" = ", f"{self.mark(i)} = ", 1) for i, t in enumerate(texts, 1)]
+        unit = texts[-1][1].rsplit(" ", 1)[-1]
+        parts = [t.replace(" = ", f"{self.mark(i)} = ", 1) for i, t in texts]
         heads = [p[: -len(unit)].rstrip() if p.endswith(unit) else p for p in parts[:-1]]
         return ", ".join([*heads, parts[-1]])
 
@@ -147,26 +149,27 @@ class ForceScales:
 
 
 def force_scales(
-    forces: Iterable[float], room_mm: float, first: Scale | None = None
+    forces: Iterable[float], room_mm: float, first: Scale | None = None, short: float = SHORT_MM
 ) -> ForceScales:
     """The force scales of a view whose forces have the magnitudes ``forces`` (N): the first
     so that the largest is at most ``room_mm`` long, then one more (the largest remaining at
-    most ``room_mm``) while some force would be shorter than :data:`SHORT_MM`. Forces under
-    ``tol.DERIVED`` of the largest are zero. ``room_mm`` is at least 2.5 · :data:`SHORT_MM`
-    (a rounded μ_F draws the largest force at least ``room_mm``/2.5 long), so every tier takes
-    at least its largest force. ``first``: the view's μ_F where the sheet has chosen it."""
+    most ``room_mm``) while some force would be shorter than ``short`` (:data:`SHORT_MM`, two
+    arrowheads). Forces under ``tol.DERIVED`` of the largest are zero. ``room_mm`` is at least
+    2.5 · ``short`` (a rounded μ_F draws the largest force at least ``room_mm``/2.5 long), so
+    every tier takes at least its largest force. ``first``: the view's μ_F where the sheet has
+    chosen it."""
     mags = sorted((abs(F) for F in forces), reverse=True)
     big = mags[0] if mags else 0.0
-    room = max(room_mm, 2.5 * SHORT_MM)
+    room = max(room_mm, 2.5 * short)
     if big <= 0.0:
-        return ForceScales((first or nice_factor(1.0, room, "F"),))
+        return ForceScales((first or nice_factor(1.0, room, "F"),), short=short)
     zero = tol.DERIVED * big
     scales = [first or nice_factor(big, room, "F")]
-    rest = [F for F in mags if zero < F and F / scales[-1].k < SHORT_MM * (1.0 - tol.DERIVED)]
+    rest = [F for F in mags if zero < F and F / scales[-1].k < short * (1.0 - tol.DERIVED)]
     while rest:
         scales.append(nice_factor(rest[0], room, "F"))
-        rest = [F for F in rest if F / scales[-1].k < SHORT_MM * (1.0 - tol.DERIVED)]
-    return ForceScales(tuple(scales), zero)
+        rest = [F for F in rest if F / scales[-1].k < short * (1.0 - tol.DERIVED)]
+    return ForceScales(tuple(scales), zero, short=short)
 
 
 #: A view draws its forces at most at this many μ_F (its own and one stated μ_F*, a third
@@ -256,7 +259,9 @@ VIEW_OWN_MM = SHORT_MM
 INSET_CAP_MM = 25.0
 
 
-def view_scales(forces: Iterable[float], room_mm: float, keep: Iterable[float] = ()) -> ForceScales:
+def view_scales(
+    forces: Iterable[float], room_mm: float, keep: Iterable[float] = (), given: Iterable[float] = ()
+) -> ForceScales:
     """The force scales of a view that draws its forces at ONE μ_F and its short ones at ONE
     more (a teacher accepts the view's μ_F and one other), so that a longer arrow is a larger
     force throughout the view, across both scales as far as the GOST steps allow:
@@ -285,7 +290,12 @@ def view_scales(forces: Iterable[float], room_mm: float, keep: Iterable[float] =
       that draws it that long, the cap or not; a smaller one is a direction arrow (and so is
       every load larger than it).
 
-    :meth:`ForceScales.tier` gives a force's scale (0: the view itself, 1: its insets, the
+    Where that would draw a load of :data:`HIDE_SHARE` of the largest or more (or one of
+    ``given``, a load the file gives: never without a scale) as a direction arrow, the insets
+    take up to :data:`INSET_SCALES` μ_F of their own instead (:func:`inset_scales`: every such
+    load drawn to a stated scale, review 9).
+
+    :meth:`ForceScales.tier` gives a force's scale (0: the view itself, 1, 2: its insets, the
     number of scales: a direction arrow, ``None``: named). Forces under ``tol.DERIVED`` of the
     largest are zero."""
     mags = sorted((abs(F) for F in forces), reverse=True)
@@ -324,6 +334,12 @@ def view_scales(forces: Iterable[float], room_mm: float, keep: Iterable[float] =
             best = (score, k, named, live[j - 1] / k.k / (live[j] / top.k))
     assert best is not None
     (_, _, j), k2, named, ratio = best
+    floor = HIDE_SHARE * big
+    shown = [F for F in given if zero < F]
+    if any(floor * (1.0 - tol.DERIVED) <= F or F in shown for F in named):
+        # a load of HIDE_SHARE or more (or a given one) too short at the insets' μ_F: the
+        # insets at up to INSET_SCALES μ_F of their own instead (:func:`inset_scales`)
+        return inset_scales(live, top, first, shown, keep)
     scales = (top,) if k2 is top else (top, k2)
     # too short at every μ_F: left out under HIDE_SHARE (and under every reaction), else a
     # direction arrow VIEW_SHORT_MM long
@@ -334,6 +350,62 @@ def view_scales(forces: Iterable[float], room_mm: float, keep: Iterable[float] =
     return ForceScales(scales, zero, negligible, insets=True, limit=limit, short=VIEW_SHORT_MM,
                        least=live[j], over=max(1.0, ratio) if k2 is not top else 1.0,
                        fixed=fixed)  # fmt: skip
+
+
+#: A view's insets draw their forces at most at this many μ_F (μF*, μF**, each stated under
+#: the view's caption; review 9: one μ_F drew 6 of watt2's lever loads as direction arrows).
+INSET_SCALES = 2
+#: How much longer (a factor) each further cap of the insets' longest arrow tried is, where
+#: INSET_SCALES μ_F with their arrows at most INSET_CAP_MM long cannot draw them all.
+CAP_STEP = 1.25
+
+
+def inset_scales(
+    live: list[float], top: Scale, first: int, given: list[float], keep: Iterable[float]
+) -> ForceScales:
+    """:func:`view_scales` where one inset μ_F would leave a load of :data:`HIDE_SHARE` of the
+    view's largest or more (or a ``given`` one) without a scale: the view draws its forces
+    ``live[first:]`` (ascending, N) at its own μ_F ``top``, and its insets every smaller one of
+    HIDE_SHARE or more and every given one at the fewest μ_F (at most :data:`INSET_SCALES`) of
+    :func:`force_scales` with arrows :data:`VIEW_SHORT_MM` … ``cap`` long, each finer tier
+    marked (``*``, ``**``) and stated: ``cap`` no longer than the view's own shortest arrow
+    where that does (a longer arrow a larger force across the view and its insets), else
+    :data:`INSET_CAP_MM`, else (two μ_F still too few) each :data:`CAP_STEP` longer until they
+    are enough. A smaller force too short at the finest is named (under HIDE_SHARE), a
+    reaction among them (``keep``) a direction arrow :data:`VIEW_SHORT_MM` long."""
+    big = live[-1]
+    zero = tol.DERIVED * big
+    floor = HIDE_SHARE * big
+    below = live[:first]
+    draw = [F for F in below if floor * (1.0 - tol.DERIVED) <= F or F in given]
+    own = live[first] / top.k
+    short = VIEW_SHORT_MM * (1.0 - tol.DERIVED)
+    caps = [min(own, INSET_CAP_MM), INSET_CAP_MM]
+    found: ForceScales | None = None
+    for most in range(1, INSET_SCALES + 1):
+        for cap in caps:
+            fs = force_scales(draw, cap, short=VIEW_SHORT_MM)
+            if len(fs.scales) <= most:
+                found = fs
+                break
+        if found is not None:
+            break
+    cap = INSET_CAP_MM
+    while found is None:
+        cap *= CAP_STEP
+        fs = force_scales(draw, cap, short=VIEW_SHORT_MM)
+        found = fs if len(fs.scales) <= INSET_SCALES else None
+    scales = (top, *found.scales)
+    # too short at every μ_F: named under HIDE_SHARE (and under every reaction), else a
+    # direction arrow VIEW_SHORT_MM long
+    left = [F for F in below if all(F / sc.k < short for sc in found.scales)]
+    hide = min([floor, *(F for F in keep if zero < F)])
+    negligible = max((F for F in left if hide > F and F not in given), default=0.0)
+    fixed = VIEW_SHORT_MM if any(negligible < F for F in left) else 0.0
+    # (``over`` stays 1: each inset μ_F is marked and stated, its arrows may outgrow the
+    # view's shortest, and the view's room is taken for the longer arrows in it)
+    return ForceScales(scales, zero, negligible, insets=True, limit=negligible / big,
+                       short=VIEW_SHORT_MM, least=live[first], fixed=fixed)  # fmt: skip
 
 
 #: A force's arrow on a free body keeps this far (mm) from the centre lines of what is drawn
