@@ -696,3 +696,107 @@ def ground(
 ) -> None:
     """A fixed support from model point a to b, hatched on the model side ``side``."""
     symbols.ground(v.sheet, v.p(a), v.p(b), v.paper_dir(side))
+
+
+#: A curved arrow (ω1, a moment's arc) keeps this far (mm) from every line and text drawn
+#: before it; it is tried at these radii (× the asked one) and at starts this many degrees
+#: apart all round its centre, the asked place first (review 9: the compressor's ω1 crossed
+#: rod 2 and its head landed on S2).
+ARC_CLEAR_MM = 1.0
+ARC_RADII = (1.0, 0.8, 1.25, 0.65, 1.5)
+ARC_STEP_DEG = 20.0
+#: The cost of moving the arc off the asked place: per degree of start, per mm of radius.
+_W_ARC_TURN, _W_ARC_R = 0.01, 0.1
+#: A mm of the arc on a link, a joint, a hatch or an arrow (roles ARC_HARD) costs this many of
+#: it on a text (a letter can still move off it), one on a thin line (the positions' lines of a
+#: kinematic sheet, everywhere round the crank) this many.
+ARC_HARD = frozenset({"link", "joint", "ground", "vector", "result"})
+_W_ARC_LINE, _W_ARC_THIN = 3.0, 0.2
+_NO_BOXES, _NO_SEGS = np.zeros((0, 4)), np.zeros((0, 2, 2))
+
+
+def _text_boxes(items: Iterable[Any]) -> npt.NDArray[np.float64]:
+    """The boxes (n, 4: x0, y0, x1, y1, sheet mm) of the upright texts among ``items``."""
+    out = [
+        (t.at[0], t.at[1] - 1.1 * t.height, t.at[0] + t.width, t.at[1] + 0.35 * t.height)
+        for t in items
+        if isinstance(t, TextItem) and t.angle == 0.0 and t.text.strip()
+    ]
+    return np.array(out, dtype=float).reshape(-1, 4)
+
+
+def arc_hits(
+    c: XY, r_mm: float, a0: float, a1: float, segs: npt.NDArray[np.float64],
+    boxes: npt.NDArray[np.float64], gap: float = ARC_CLEAR_MM,
+) -> float:  # fmt: skip
+    """How much (mm) of the arc of radius ``r_mm`` about sheet point ``c`` from model angle
+    ``a0`` to ``a1`` (rad, ccw) runs within ``gap`` of the segments (n, 2, 2) or inside the
+    text boxes (m, 4) grown by ``gap``."""
+    n = max(8, int(abs(a1 - a0) * r_mm / 0.5))
+    a = np.linspace(a0, a1, n)
+    pts = np.column_stack([c[0] + r_mm * np.cos(a), c[1] - r_mm * np.sin(a)])
+    step = abs(a1 - a0) * r_mm / n
+    hit = np.zeros(n, dtype=bool)
+    if len(segs):
+        hit |= (_distances(pts, segs, (1.0, 0.0))[0] < gap).any(axis=1)
+    if len(boxes):
+        x, y = pts[:, 0:1], pts[:, 1:2]
+        hit |= (
+            (x > boxes[:, 0] - gap) & (x < boxes[:, 2] + gap)
+            & (y > boxes[:, 1] - gap) & (y < boxes[:, 3] + gap)
+        ).any(axis=1)  # fmt: skip
+    return float(np.count_nonzero(hit) * step)
+
+
+def clear_turn(
+    sheet: Sheet, c: XY, sense: float, start_deg: float, r_mm: float, sweep_deg: float,
+    r_range: tuple[float, float] | None = None,
+) -> tuple[float, float]:  # fmt: skip
+    """The (start_deg, r_mm) of a curved arrow about sheet point ``c`` (see
+    :meth:`~geomcad.sheet.drawing.Viewport.turn`) clear of what ``sheet`` holds: the asked
+    place where nothing is within :data:`ARC_CLEAR_MM` of it, else the least crossed of the
+    radii :data:`ARC_RADII` (within ``r_range`` mm) and starts all round, each step off the
+    asked place costing a little (:data:`_W_ARC_TURN`, :data:`_W_ARC_R`)."""
+    lo, hi = r_range if r_range is not None else (0.0, math.inf)
+    reach = max(ARC_RADII) * r_mm + ARC_CLEAR_MM + 1.0
+    near: list[tuple[XY, XY]] = []
+    soft: list[tuple[XY, XY]] = []
+    for it in sheet.items:
+        if isinstance(it, TextItem):
+            continue
+        pts = chord_points(it)
+        xs, ys = [q[0] for q in pts], [q[1] for q in pts]
+        if (
+            min(xs) > c[0] + reach or max(xs) < c[0] - reach
+            or min(ys) > c[1] + reach or max(ys) < c[1] - reach
+        ):  # fmt: skip
+            continue
+        pieces = [(a_, b_) for a_, b_ in itertools.pairwise(pts) if a_ != b_]
+        (near if it.role in ARC_HARD else soft).extend(pieces)
+    segs = np.array(near, dtype=float).reshape(-1, 2, 2)
+    thin = np.array(soft, dtype=float).reshape(-1, 2, 2)
+    boxes = _text_boxes(sheet.items)
+    if len(boxes):
+        boxes = boxes[
+            (boxes[:, 2] > c[0] - reach) & (boxes[:, 0] < c[0] + reach)
+            & (boxes[:, 3] > c[1] - reach) & (boxes[:, 1] < c[1] + reach)
+        ]  # fmt: skip
+    s = 1.0 if sense > 0.0 else -1.0
+    best: tuple[float, float, float] | None = None
+    for k in ARC_RADII:
+        r = min(max(k * r_mm, lo), hi)
+        for turn in np.arange(0.0, 360.0, ARC_STEP_DEG):
+            a0 = math.radians(start_deg + s * turn)
+            a1 = a0 + s * math.radians(sweep_deg)
+            hits = (
+                _W_ARC_LINE * arc_hits(c, r, a0, a1, segs, _NO_BOXES)
+                + _W_ARC_THIN * arc_hits(c, r, a0, a1, thin, _NO_BOXES)
+                + arc_hits(c, r, a0, a1, _NO_SEGS, boxes)
+            )
+            cost = hits + _W_ARC_TURN * min(turn, 360.0 - turn) + _W_ARC_R * abs(r - r_mm)
+            if best is None or cost < best[0] - tol.DERIVED:
+                best = (cost, start_deg + s * float(turn), r)
+            if hits == 0.0 and k == 1.0 and turn == 0.0:
+                return start_deg, r
+    assert best is not None
+    return best[1], best[2]
