@@ -101,6 +101,22 @@ def _loaded(name: str, monkeypatch: pytest.MonkeyPatch) -> tuple[Any, list[Any]]
     return sheet, list(rec)
 
 
+@pytest.mark.parametrize("name", FORCES)
+def test_the_loads_of_the_loaded_mechanism_keep_off_the_links(
+    name: str, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """No load arrow of the loaded mechanism, with its line of action back to its point, runs
+    along a link outline (within ALONG_GAP_MM, within ALONG_DEG) over more than ALONG_MAX_MM
+    (review 9: the compressor's Φ1 tied along its crank and slid 25 mm past A, Φ3 2 mm under
+    its rod MB)."""
+    sheet, drawn = _loaded(name, monkeypatch)
+    links = _lines(sheet.items, {"link"})
+    assert drawn
+    bad = [(lab, round(m, 1)) for lab, p, tail, tip in drawn
+           if (m := along_links(p, tail, tip, links)) > ALONG_MAX_MM]  # fmt: skip
+    assert not bad, (name, bad)
+
+
 def _omega_arcs(sheet_of: Any, monkeypatch: pytest.MonkeyPatch) -> tuple[Any, list[Any]]:
     from geomcad.sheet.drawing import Viewport
 

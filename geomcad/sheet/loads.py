@@ -348,6 +348,9 @@ ARROW_GAP_MM = 4.0
 #: only its nearest CROSS_MM count.
 PARALLEL = math.radians(25.0)
 CROSS_MM = 0.6
+#: A line that runs with the arrow this near it reads as the arrow drawn along it (review 9:
+#: the compressor's Φ3 2 mm under its rod MB), so that much of the arrow costs as on it.
+ALONG_MM = 3.0
 HEAD_CLEAR_MM = ARROW_HALF_WIDTH + 0.4
 AT_POINT_MM = JOINT_R + 0.5
 #: The costs of an arrow's place (per mm): of its shaft on a line, of its head on one, of it
@@ -355,13 +358,19 @@ AT_POINT_MM = JOINT_R + 0.5
 #: point of application and its nearer end; and the cost of the end the caller did not ask for
 #: (leaving instead of arriving, or back).
 _W_LINE, _W_HEAD, _W_OUT, _W_GAP, _W_END = 1.0, 4.0, 3.0, 0.1, 0.5
+#: The cost (per mm) of the arrow across a line (a link outline crossed), and of the thin line
+#: of action that ties a moved arrow back to its point where it runs along a line or across
+#: one (review 9: Φ1 slid past A, its line of action along the crank OA, read as the arrow
+#: drawn along the crank).
+_W_CROSS, _W_TIE = 2.0, 1.0
 #: How far (mm) an arrow may be moved along its line of action beyond either of its ends
 #: (farther, it would no longer read as acting at its point).
 SLIDE_MM = 60.0
 #: An arrow that runs along a line drawn wherever it slides on its line of action (a load
 #: along its link) is drawn this far (mm) beside it, parallel, tied to its point by a thin line;
-#: each mm aside costs as much as _W_BESIDE mm of the arrow on a line.
-BESIDE_MM = 3.0
+#: each mm aside costs as much as _W_BESIDE mm of the arrow on a line; room for a link's
+#: 3.5 mm number between them (the crusher's "5" beside G5 at 3 mm or 4 mm touched its link).
+BESIDE_MM = 5.0
 _W_BESIDE = 1.0
 _STEP = 0.5
 
@@ -462,7 +471,8 @@ class Clearance:
         segs = _near_line(self.segments(), p, u)
         d, along = _distances(pts, segs, u)
         # near a line that runs with the arrow (within PARALLEL), or on one it crosses
-        on_line = ((d < CLEAR_MM) & along).any(axis=1) | (d < CROSS_MM).any(axis=1)
+        on_along = ((d < ALONG_MM) & along).any(axis=1)
+        on_cross = (d < CROSS_MM).any(axis=1) & ~on_along
         # a head clear of every line but those through the point of application (the body
         # the force acts on: the joint there, the links that meet in it)
         body = (
@@ -475,7 +485,8 @@ class Clearance:
         arrows = _near_line(arrows, p, u)
         on_arrow = (_distances(pts, arrows, u)[0] < ARROW_GAP_MM).any(axis=1)
         free = np.abs(ts) <= AT_POINT_MM  # the point of application: the body is there
-        on_line &= ~free
+        on_along &= ~free
+        on_cross &= ~free
         on_head &= ~free
         out = np.zeros(len(ts), dtype=bool)
         if self.box is not None:
@@ -483,7 +494,13 @@ class Clearance:
             out = (pts[:, 0] < x0) | (pts[:, 0] > x1) | (pts[:, 1] < y0) | (pts[:, 1] > y1)
         cum = {
             k: np.concatenate([[0.0], np.cumsum(a.astype(float))])
-            for k, a in (("line", on_line), ("head", on_head), ("out", out), ("arrow", on_arrow))
+            for k, a in (
+                ("line", on_along),
+                ("cross", on_cross),
+                ("head", on_head),
+                ("out", out),
+                ("arrow", on_arrow),
+            )
         }
 
         def run(key: str, a: npt.NDArray[np.float64], b: npt.NDArray[np.float64]) -> Any:
@@ -499,9 +516,13 @@ class Clearance:
         ends = np.concatenate([E, E - ARROW_LEN])
         hidden = _inside(np.column_stack([p[0] + ends * u[0], p[1] + ends * u[1]]), self.solids())
         hidden = hidden[: len(E)] | hidden[len(E) :]
+        # the thin line of action from the arrow's nearer end back to its point
+        t0, t1 = np.where(S > 0.0, 0.0, np.minimum(E, 0.0)), np.where(S > 0.0, S, 0.0)
         cost = (
             _W_HEAD * 2.0 * ARROW_LEN * hidden
             + _W_LINE * run("line", S, E)
+            + _W_CROSS * run("cross", S, E)
+            + _W_TIE * (run("line", t0, t1) + run("cross", t0, t1))
             + _W_HEAD * run("head", E - ARROW_LEN, E)
             + _W_OUT * run("out", S, E)
             + _W_OUT * run("arrow", S, E)
