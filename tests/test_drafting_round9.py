@@ -159,3 +159,27 @@ def test_omega_arcs_cross_no_link(name: str, monkeypatch: pytest.MonkeyPatch) ->
         q = np.column_stack([c[0] + r * np.cos(a), c[1] - r * np.sin(a)])
         near = float(_dist(q, _lines(sheet.items, {"link"})).min())
         assert near >= ARC_GAP_MM, (name, c, r, near)
+
+
+def test_a_caption_beside_grafa_26_stays_one_line_clear_of_it() -> None:
+    """A view set just right of графа 26 whose caption is wider than the view's box prints it
+    on one line under графа 26 where the blank paper there holds it, clear of графа 26's box
+    (review 9: sine-plans' "Положение 0, φ1 = 180°" broke onto two lines beside it)."""
+    from geomcad.sheet.frame import reserved
+    from geomcad.sheet.linkage import kinematic_sheets
+    from geomcad.sheet.placer import text_outline
+
+    sheets = dict(kinematic_sheets(solve(_linkage("sine_crosshead_rocker"))))
+    sheet = sheets["plans"]
+    texts = [it for it in sheet.items if getattr(it, "runs", None) and it.angle == 0.0]
+    captions = [t.text for t in texts if t.text.startswith(WORDS_POSITION)]
+    assert len(captions) >= 12
+    assert all("φ" in c for c in captions), captions  # none broken after "Положение"
+    g26 = reserved(sheet.width, sheet.height)[1]
+    import shapely.geometry as sg
+
+    box = sg.box(*g26)
+    assert not any(text_outline(t).intersects(box) for t in texts), "a text over графа 26"
+
+
+WORDS_POSITION = "Положение"
