@@ -350,7 +350,7 @@ PARALLEL = math.radians(25.0)
 CROSS_MM = 0.6
 #: A line that runs with the arrow this near it reads as the arrow drawn along it (review 9:
 #: the compressor's Φ3 2 mm under its rod MB), so that much of the arrow costs as on it.
-ALONG_MM = 3.0
+ALONG_MM = 2.5
 HEAD_CLEAR_MM = ARROW_HALF_WIDTH + 0.4
 AT_POINT_MM = JOINT_R + 0.5
 #: The costs of an arrow's place (per mm): of its shaft on a line, of its head on one, of it
@@ -368,10 +368,11 @@ _W_CROSS, _W_TIE = 2.0, 1.0
 SLIDE_MM = 60.0
 #: An arrow that runs along a line drawn wherever it slides on its line of action (a load
 #: along its link) is drawn this far (mm) beside it, parallel, tied to its point by a thin line;
-#: each mm aside costs as much as _W_BESIDE mm of the arrow on a line; room for a link's
-#: 3.5 mm number between them (the crusher's "5" beside G5 at 3 mm or 4 mm touched its link).
+#: each mm aside costs as much as _W_BESIDE mm of the arrow on a line (half: a short load
+#: wholly on its link, review 4's offset_slider_gas Φ1 7 mm up its crank, goes beside it); room
+#: for a link's 3.5 mm number between them (the crusher's "5" beside G5 at 3 or 4 mm touched it).
 BESIDE_MM = 5.0
-_W_BESIDE = 1.0
+_W_BESIDE = 0.5
 _STEP = 0.5
 
 
