@@ -1526,10 +1526,11 @@ def compose(
     _set_title_lines(tree, lay.title_lines)  # the room this layout gave the titles
     for cell, node in lay.titles:
         _draw_title(d, _node_caption(node, lay), cell, node.title_height, node.title_lines)
+    boxes = [pl.box for pl in lay]
     for pl in lay:
         v = pl.view
         if v.title:
-            _draw_title(d, v.caption(pl.scale), pl.box, v.title_height, v.title_lines)
+            _draw_title(d, v.caption(pl.scale), pl.box, v.title_height, v.title_lines, boxes)
         if pl.scale is not None:
             ext = _ext(v)
             assert ext is not None
@@ -1540,9 +1541,13 @@ def compose(
     return lay
 
 
-def _draw_title(d: Drawing, text: str, box: Box, height: float, room: int) -> None:
+def _draw_title(
+    d: Drawing, text: str, box: Box, height: float, room: int, others: Sequence[Box] = ()
+) -> None:
     """A title on its box's top edge (from :func:`_title_start`), broken into lines within
-    the box's width where it is wider (at most the ``room`` lines the layout gave it)."""
+    the box's width where it is wider (at most the ``room`` lines the layout gave it); a box
+    set beside графа 26 takes it on one line under графа 26 instead, run back left over the
+    blank paper there, where that is clear of the ``others`` boxes and within its room."""
     from geomcad.sheet.drawing import RESERVED_GAP
     from geomcad.sheet.frame import reserved
 
@@ -1552,8 +1557,41 @@ def _draw_title(d: Drawing, text: str, box: Box, height: float, room: int) -> No
     lines = title_text_lines(text, box[2] - x, height)
     if len(lines) > room:
         lines = [text]
+    if len(lines) > 1:
+        one = _under_form(text, box, height, len(lines), form, others)
+        if one is not None:
+            d.text(text, one, height)
+            return
     for i, line in enumerate(lines):
         d.text(line, (x, box[1] + height + i * height * TITLE_SPACING), height)
+
+
+def _under_form(
+    text: str, box: Box, height: float, lines: int, form: Sequence[Box], others: Sequence[Box]
+) -> tuple[float, float] | None:
+    """Where a title broken into ``lines`` lines beside графа 26 (its box set just right of
+    a box of the form, ``form`` grown by the gap kept from it) stands on one line instead:
+    under that box, ending a cap height before its own box's right edge, its baseline within
+    the room of the lines (review 9: sine-plans' "Положение 0, φ1 = 180°" broke beside
+    графа 26 over blank paper); ``None`` where no box of the form is there or the line would
+    meet another box."""
+    w = text_width(text, height)
+    for o in form:
+        if not (o[1] <= box[1] < o[3] and abs(box[0] - o[2]) <= tol.SHEET_MM):
+            continue
+        # a title's gap below графа 26, and a cap height before the next box's title
+        y = o[3] + TITLE_GAP + height
+        x = box[2] - height - w
+        if y > box[1] + height + (lines - 1) * height * TITLE_SPACING + tol.SHEET_MM:
+            return None
+        line = (x, y - height, box[2] - height, y + 0.3 * height)
+        if x < o[0] or any(
+            b != box and line[0] < b[2] and b[0] < line[2] and line[1] < b[3] and b[1] < line[3]
+            for b in others
+        ):
+            return None
+        return x, y
+    return None
 
 
 def text_width(markup: str, height: float) -> float:

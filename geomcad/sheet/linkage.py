@@ -62,6 +62,7 @@ from geomcad.sheet.drawing import SHORT_MM, Viewport
 from geomcad.sheet.form import title_block_spacer
 from geomcad.sheet.frame import FORMATS, name_fits, text_at
 from geomcad.sheet.lang import Words, current, per_language
+from geomcad.sheet.loads import clear_turn
 from geomcad.sheet.model import ArcItem, CircleItem, Polyline, TextItem
 from geomcad.sheet.motion import Frames, turn
 from geomcad.sheet.placer import clip_to_circle, within_hull
@@ -2113,6 +2114,8 @@ def _centre_of(pts: Sequence[Vec]) -> Vec | None:
 #: largest radius (mm: within a view's margin round the pivot), over this many degrees,
 #: starting this many degrees past the crank (in its sense).
 OMEGA_R, OMEGA_MIN_MM, OMEGA_MAX_MM, OMEGA_SWEEP_DEG, OMEGA_PAST_DEG = 0.6, 14.0, 18.0, 90.0, 25.0
+#: … and, moved clear of what is drawn round the pivot, at least this radius (mm).
+OMEGA_LEAST_MM = 9.0
 
 
 def omega_arrow(v: Viewport, lk: Linkage, P: Position) -> None:
@@ -2125,6 +2128,9 @@ def omega_arrow(v: Viewport, lk: Linkage, P: Position) -> None:
     sense = 1.0 if lk.omega > 0 else -1.0
     start = crank + sense * OMEGA_PAST_DEG
     r_mm = min(max(OMEGA_R * v.scale.mm(lk.length), OMEGA_MIN_MM), OMEGA_MAX_MM)
+    # clear of the links, the arrows and the letters drawn before it (review 9)
+    start, r_mm = clear_turn(v.sheet, v.p(pivot), sense, start, r_mm, OMEGA_SWEEP_DEG,
+                             (OMEGA_LEAST_MM, max(r_mm, OMEGA_MAX_MM)))  # fmt: skip
     v.turn(pivot, sense, start, "ω_1", r_mm=r_mm, sweep_deg=OMEGA_SWEEP_DEG)
 
 

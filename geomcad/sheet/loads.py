@@ -420,6 +420,9 @@ ARROW_GAP_MM = 4.0
 #: only its nearest CROSS_MM count.
 PARALLEL = math.radians(25.0)
 CROSS_MM = 0.6
+#: A line that runs with the arrow this near it reads as the arrow drawn along it (review 9:
+#: the compressor's Φ3 2 mm under its rod MB), so that much of the arrow costs as on it.
+ALONG_MM = 2.5
 HEAD_CLEAR_MM = ARROW_HALF_WIDTH + 0.4
 AT_POINT_MM = JOINT_R + 0.5
 #: The costs of an arrow's place (per mm): of its shaft on a line, of its head on one, of it
@@ -427,14 +430,21 @@ AT_POINT_MM = JOINT_R + 0.5
 #: point of application and its nearer end; and the cost of the end the caller did not ask for
 #: (leaving instead of arriving, or back).
 _W_LINE, _W_HEAD, _W_OUT, _W_GAP, _W_END = 1.0, 4.0, 3.0, 0.1, 0.5
+#: The cost (per mm) of the arrow across a line (a link outline crossed), and of the thin line
+#: of action that ties a moved arrow back to its point where it runs along a line or across
+#: one (review 9: Φ1 slid past A, its line of action along the crank OA, read as the arrow
+#: drawn along the crank).
+_W_CROSS, _W_TIE = 2.0, 1.0
 #: How far (mm) an arrow may be moved along its line of action beyond either of its ends
 #: (farther, it would no longer read as acting at its point).
 SLIDE_MM = 60.0
 #: An arrow that runs along a line drawn wherever it slides on its line of action (a load
 #: along its link) is drawn this far (mm) beside it, parallel, tied to its point by a thin line;
-#: each mm aside costs as much as _W_BESIDE mm of the arrow on a line.
-BESIDE_MM = 3.0
-_W_BESIDE = 1.0
+#: each mm aside costs as much as _W_BESIDE mm of the arrow on a line (half: a short load
+#: wholly on its link, review 4's offset_slider_gas Φ1 7 mm up its crank, goes beside it); room
+#: for a link's 3.5 mm number between them (the crusher's "5" beside G5 at 3 or 4 mm touched it).
+BESIDE_MM = 5.0
+_W_BESIDE = 0.5
 _STEP = 0.5
 
 
@@ -534,7 +544,8 @@ class Clearance:
         segs = _near_line(self.segments(), p, u)
         d, along = _distances(pts, segs, u)
         # near a line that runs with the arrow (within PARALLEL), or on one it crosses
-        on_line = ((d < CLEAR_MM) & along).any(axis=1) | (d < CROSS_MM).any(axis=1)
+        on_along = ((d < ALONG_MM) & along).any(axis=1)
+        on_cross = (d < CROSS_MM).any(axis=1) & ~on_along
         # a head clear of every line but those through the point of application (the body
         # the force acts on: the joint there, the links that meet in it)
         body = (
@@ -547,7 +558,8 @@ class Clearance:
         arrows = _near_line(arrows, p, u)
         on_arrow = (_distances(pts, arrows, u)[0] < ARROW_GAP_MM).any(axis=1)
         free = np.abs(ts) <= AT_POINT_MM  # the point of application: the body is there
-        on_line &= ~free
+        on_along &= ~free
+        on_cross &= ~free
         on_head &= ~free
         out = np.zeros(len(ts), dtype=bool)
         if self.box is not None:
@@ -555,7 +567,13 @@ class Clearance:
             out = (pts[:, 0] < x0) | (pts[:, 0] > x1) | (pts[:, 1] < y0) | (pts[:, 1] > y1)
         cum = {
             k: np.concatenate([[0.0], np.cumsum(a.astype(float))])
-            for k, a in (("line", on_line), ("head", on_head), ("out", out), ("arrow", on_arrow))
+            for k, a in (
+                ("line", on_along),
+                ("cross", on_cross),
+                ("head", on_head),
+                ("out", out),
+                ("arrow", on_arrow),
+            )
         }
 
         def run(key: str, a: npt.NDArray[np.float64], b: npt.NDArray[np.float64]) -> Any:
@@ -571,9 +589,13 @@ class Clearance:
         ends = np.concatenate([E, E - ARROW_LEN])
         hidden = _inside(np.column_stack([p[0] + ends * u[0], p[1] + ends * u[1]]), self.solids())
         hidden = hidden[: len(E)] | hidden[len(E) :]
+        # the thin line of action from the arrow's nearer end back to its point
+        t0, t1 = np.where(S > 0.0, 0.0, np.minimum(E, 0.0)), np.where(S > 0.0, S, 0.0)
         cost = (
             _W_HEAD * 2.0 * ARROW_LEN * hidden
             + _W_LINE * run("line", S, E)
+            + _W_CROSS * run("cross", S, E)
+            + _W_TIE * (run("line", t0, t1) + run("cross", t0, t1))
             + _W_HEAD * run("head", E - ARROW_LEN, E)
             + _W_OUT * run("out", S, E)
             + _W_OUT * run("arrow", S, E)
@@ -768,3 +790,107 @@ def ground(
 ) -> None:
     """A fixed support from model point a to b, hatched on the model side ``side``."""
     symbols.ground(v.sheet, v.p(a), v.p(b), v.paper_dir(side))
+
+
+#: A curved arrow (ω1, a moment's arc) keeps this far (mm) from every line and text drawn
+#: before it; it is tried at these radii (× the asked one) and at starts this many degrees
+#: apart all round its centre, the asked place first (review 9: the compressor's ω1 crossed
+#: rod 2 and its head landed on S2).
+ARC_CLEAR_MM = 1.0
+ARC_RADII = (1.0, 0.8, 1.25, 0.65, 1.5)
+ARC_STEP_DEG = 20.0
+#: The cost of moving the arc off the asked place: per degree of start, per mm of radius.
+_W_ARC_TURN, _W_ARC_R = 0.01, 0.1
+#: A mm of the arc on a link, a joint, a hatch or an arrow (roles ARC_HARD) costs this many of
+#: it on a text (a letter can still move off it), one on a thin line (the positions' lines of a
+#: kinematic sheet, everywhere round the crank) this many.
+ARC_HARD = frozenset({"link", "joint", "ground", "vector", "result"})
+_W_ARC_LINE, _W_ARC_THIN = 3.0, 0.2
+_NO_BOXES, _NO_SEGS = np.zeros((0, 4)), np.zeros((0, 2, 2))
+
+
+def _text_boxes(items: Iterable[Any]) -> npt.NDArray[np.float64]:
+    """The boxes (n, 4: x0, y0, x1, y1, sheet mm) of the upright texts among ``items``."""
+    out = [
+        (t.at[0], t.at[1] - 1.1 * t.height, t.at[0] + t.width, t.at[1] + 0.35 * t.height)
+        for t in items
+        if isinstance(t, TextItem) and t.angle == 0.0 and t.text.strip()
+    ]
+    return np.array(out, dtype=float).reshape(-1, 4)
+
+
+def arc_hits(
+    c: XY, r_mm: float, a0: float, a1: float, segs: npt.NDArray[np.float64],
+    boxes: npt.NDArray[np.float64], gap: float = ARC_CLEAR_MM,
+) -> float:  # fmt: skip
+    """How much (mm) of the arc of radius ``r_mm`` about sheet point ``c`` from model angle
+    ``a0`` to ``a1`` (rad, ccw) runs within ``gap`` of the segments (n, 2, 2) or inside the
+    text boxes (m, 4) grown by ``gap``."""
+    n = max(8, int(abs(a1 - a0) * r_mm / 0.5))
+    a = np.linspace(a0, a1, n)
+    pts = np.column_stack([c[0] + r_mm * np.cos(a), c[1] - r_mm * np.sin(a)])
+    step = abs(a1 - a0) * r_mm / n
+    hit = np.zeros(n, dtype=bool)
+    if len(segs):
+        hit |= (_distances(pts, segs, (1.0, 0.0))[0] < gap).any(axis=1)
+    if len(boxes):
+        x, y = pts[:, 0:1], pts[:, 1:2]
+        hit |= (
+            (x > boxes[:, 0] - gap) & (x < boxes[:, 2] + gap)
+            & (y > boxes[:, 1] - gap) & (y < boxes[:, 3] + gap)
+        ).any(axis=1)  # fmt: skip
+    return float(np.count_nonzero(hit) * step)
+
+
+def clear_turn(
+    sheet: Sheet, c: XY, sense: float, start_deg: float, r_mm: float, sweep_deg: float,
+    r_range: tuple[float, float] | None = None,
+) -> tuple[float, float]:  # fmt: skip
+    """The (start_deg, r_mm) of a curved arrow about sheet point ``c`` (see
+    :meth:`~geomcad.sheet.drawing.Viewport.turn`) clear of what ``sheet`` holds: the asked
+    place where nothing is within :data:`ARC_CLEAR_MM` of it, else the least crossed of the
+    radii :data:`ARC_RADII` (within ``r_range`` mm) and starts all round, each step off the
+    asked place costing a little (:data:`_W_ARC_TURN`, :data:`_W_ARC_R`)."""
+    lo, hi = r_range if r_range is not None else (0.0, math.inf)
+    reach = max(ARC_RADII) * r_mm + ARC_CLEAR_MM + 1.0
+    near: list[tuple[XY, XY]] = []
+    soft: list[tuple[XY, XY]] = []
+    for it in sheet.items:
+        if isinstance(it, TextItem):
+            continue
+        pts = chord_points(it)
+        xs, ys = [q[0] for q in pts], [q[1] for q in pts]
+        if (
+            min(xs) > c[0] + reach or max(xs) < c[0] - reach
+            or min(ys) > c[1] + reach or max(ys) < c[1] - reach
+        ):  # fmt: skip
+            continue
+        pieces = [(a_, b_) for a_, b_ in itertools.pairwise(pts) if a_ != b_]
+        (near if it.role in ARC_HARD else soft).extend(pieces)
+    segs = np.array(near, dtype=float).reshape(-1, 2, 2)
+    thin = np.array(soft, dtype=float).reshape(-1, 2, 2)
+    boxes = _text_boxes(sheet.items)
+    if len(boxes):
+        boxes = boxes[
+            (boxes[:, 2] > c[0] - reach) & (boxes[:, 0] < c[0] + reach)
+            & (boxes[:, 3] > c[1] - reach) & (boxes[:, 1] < c[1] + reach)
+        ]  # fmt: skip
+    s = 1.0 if sense > 0.0 else -1.0
+    best: tuple[float, float, float] | None = None
+    for k in ARC_RADII:
+        r = min(max(k * r_mm, lo), hi)
+        for turn in np.arange(0.0, 360.0, ARC_STEP_DEG):
+            a0 = math.radians(start_deg + s * turn)
+            a1 = a0 + s * math.radians(sweep_deg)
+            hits = (
+                _W_ARC_LINE * arc_hits(c, r, a0, a1, segs, _NO_BOXES)
+                + _W_ARC_THIN * arc_hits(c, r, a0, a1, thin, _NO_BOXES)
+                + arc_hits(c, r, a0, a1, _NO_SEGS, boxes)
+            )
+            cost = hits + _W_ARC_TURN * min(turn, 360.0 - turn) + _W_ARC_R * abs(r - r_mm)
+            if best is None or cost < best[0] - tol.DERIVED:
+                best = (cost, start_deg + s * float(turn), r)
+            if hits == 0.0 and k == 1.0 and turn == 0.0:
+                return start_deg, r
+    assert best is not None
+    return best[1], best[2]
