@@ -417,7 +417,46 @@ def force_layout(s: Solved) -> tuple[Tree, formats.Sized]:
     for pl in found[1].layout:
         if isinstance(pl.view, _Lever):
             pl.view.grow(pl, found[1].layout)
+        elif isinstance(pl.view, Polygon):
+            grow_plan(pl)
     return found
+
+
+def grow_plan(pl: Placed) -> None:
+    """A force plan drawn at a finer μ_F of its series where its box holds it (review 9,
+    fix 9: plans 25–60 mm in cells twice their size, the sheets 44–54 % blank): the layout
+    reckoned its extent with its details' slots at its reference μ_F, and a detail keeps its
+    size in mm at any μ_F, so at the μ_F placed the plan with its details, planned again as
+    :meth:`Polygon.draw` plans them, may leave its box room for a finer step. Each finer step
+    is tried while the whole keeps within the box it is centred in (a sliver stays capped:
+    :attr:`Polygon.longest_mm`); the first that does not ends the search."""
+    view = pl.view
+    assert isinstance(view, Polygon)
+    if pl.scale is None or view.drawn_k(pl.scale.k) != pl.scale.k:
+        return
+    x0, y0, x1, y1 = pl.inner
+    w, h = x1 - x0, y1 - y0
+    best = pl.scale.k
+    k = best
+    for _ in range(GROW_STEPS):
+        k = round_scale_down(k * (1.0 - 4.0 * tol.REL_LENGTH), pl.scale.q, view.series).k
+        if view.drawn_k(k) != k:
+            break  # a sliver at its cap
+        if view.detail:
+            _d, _t, ext = view._with_details(k, iter("W" * 99), (w * k, h * k))
+        else:
+            ext = view.extent() or (0.0, 0.0, 0.0, 0.0)
+        if (ext[2] - ext[0]) / k > w + tol.SHEET_MM or (ext[3] - ext[1]) / k > h + tol.SHEET_MM:
+            break
+        best = k
+    if best != pl.scale.k:
+        pl.scale = Scale(best, pl.scale.q)
+    if view.detail:  # the details as at the μ_F placed (drawn again so)
+        view._with_details(pl.scale.k, iter("W" * 99), (w * pl.scale.k, h * pl.scale.k))
+
+
+#: The finer steps of its series :func:`grow_plan` tries for a plan.
+GROW_STEPS = 3
 
 
 def _rowed(

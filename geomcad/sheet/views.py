@@ -258,10 +258,13 @@ def draw_polygon(
     omit = set(omit)
     # a resultant along its long component (the other too short to part them): one line
     twins = twin_resultants(poly, v.scale.k)
+    # a sliver's two long vectors: one line, "R₃₂ = −R₁₂" (review 9, fix 4)
+    pair = sliver_pair(poly, in_detail | omit)
+    paired = {pv.name for pv in pair} if pair else set()
     shift = (
-        _shifts(v, poly, in_detail)
+        _shifts(v, poly, in_detail | paired)
         if thin
-        else lanes(v.scale.k, _lane_vectors(poly, in_detail, omit | set(twins)))
+        else lanes(v.scale.k, _lane_vectors(poly, in_detail | paired, omit | set(twins)))
     )
     short: list[str] = []
     drawn = [pv for pv in poly.vectors if pv.magnitude > zero and pv.name not in omit]
@@ -285,6 +288,8 @@ def draw_polygon(
         text = (names or {}).get(pv.name, pv.name)
         if pv.name in also:  # its resultant drawn over it: "Rⁿ₃₄ ≈ R₃₄"
             text = f"{text} ≈ {(names or {}).get(also[pv.name], also[pv.name])}"
+        if pv.name in paired:
+            continue
         if pv.name in in_detail:
             # its line keeps the chain whole (its arrow, named, is drawn in its detail: the
             # circle round it is clear of labels)
@@ -333,20 +338,67 @@ def draw_polygon(
                v.p(r.head + shift.get(r.name, Vec(0.0, 0.0)))) for r, _ in res]  # fmt: skip
     for spot in detail_spots(v, poly, details):
         mark_detail(v, *spot, segs=sides, bound=bound)
-    if thin and len(drawn) == 2 and not in_detail:
-        # two forces in balance: the polygon closes on one line, and says so
-        a, b = ((names or {}).get(pv.name, pv.name) for pv in drawn)
-        big = max(drawn, key=lambda pv: pv.magnitude)
-        n = (big.head - big.tail).unit().perp()
-        far = n * ((OFFSET_MM * 2.0 + height * 1.6) * v.scale.k)  # a line beyond their labels
-        v.label((big.tail + big.head) * 0.5 + far, f"{b} = −{a}", height, prefer=(n.x, n.y),
-                clear=0.5)  # fmt: skip
+    if pair:
+        # two forces (nearly) in balance: one line, the first's arrow at its head, the
+        # second's back along it to the first's tail, named "R₃₂ = −R₁₂" (a load between them,
+        # in a detail where it closes the gap: "R₃₂ ≈ −R₁₂")
+        a, b = pair
+        u = (a.head - a.tail).unit()
+        # b at its own length on a's line, its head at a's tail (the loads' chain between
+        # its tail and a's head: the difference of the two, closed in the detail)
+        for pv, (tail, head) in ((a, (a.tail, a.head)), (b, (a.tail + u * b.magnitude, a.tail))):
+            if v.mm(pv.magnitude) < SHORT_MM:
+                short.append(pv.name)
+            v.arrow(tail, head, "result" if pv.name in found else role)
+        na, nb = ((names or {}).get(pv.name, pv.name) for pv in pair)
+        exact = (a.head - b.tail).norm <= zero and (b.head - a.tail).norm <= zero
+        n = (a.head - a.tail).unit().perp()
+        mid = (a.tail + a.head) * 0.5
+        v.label(mid, na, height, prefer=(n.x, n.y), clear=0.5)
+        v.label(mid, nb, height, prefer=(-n.x, -n.y), clear=0.5)
+        far = n * (-(OFFSET_MM + height * 1.6) * v.scale.k)  # a line beyond b's label
+        v.label(mid + far, f"{nb} {'=' if exact else '≈'} −{na}", height,
+                prefer=(-n.x, -n.y), clear=0.5)  # fmt: skip
     v.dot(poly.pole)
     return short
 
 
 #: A reaction's component: R^n_{12}, R^τ_{12} (its resultant R_{12}).
 _COMPONENT = re.compile(r"(.+)\^(?:n|τ|t)(_.+)")
+
+
+def sliver_pair(
+    poly: ForcePolygon, hidden: Iterable[str] = ()
+) -> tuple[PlanVector, PlanVector] | None:
+    """The two long vectors of a sliver plan (:func:`is_sliver`: a two-force member's R₁₂,
+    R₃₂, or a link's two reactions with small loads between) that a plan draws as one line:
+    the only two of its vectors drawn as arrows (the others ``hidden``: in its details, drawn
+    as lines or left out), running opposite ways (within :data:`LANE_ANGLE`); ``None`` where
+    there are no such two (a plan with a split reaction's components, or a load drawn large)."""
+    if not is_sliver(poly) or resultants(poly):
+        return None
+    hidden = set(hidden)
+    zero = _zero(poly)
+    rest = [pv for pv in poly.vectors if pv.magnitude > zero and pv.name not in hidden]
+    if len(rest) != 2:
+        return None
+    a, b = rest
+    if (a.head - a.tail).unit().dot((b.head - b.tail).unit()) > -math.cos(LANE_ANGLE):
+        return None
+    return a, b
+
+
+def sliver_loads(poly: ForcePolygon) -> float:
+    """The magnitude under which a sliver plan's vectors go into its detail: all but its two
+    long opposite ones (:func:`sliver_pair`), however long they would be drawn, so that the
+    two are drawn as one line and the loads between them close the gap in the detail at a
+    stated μ_F (review 9, fix 4: R₁₂ and R₃₂ of watt2's link 2 drawn side by side about the
+    7.6 mm arrow of G₂); 0 where the plan is no such sliver."""
+    zero = _zero(poly)
+    vs = sorted((pv for pv in poly.vectors if pv.magnitude > zero), key=lambda pv: -pv.magnitude)
+    if len(vs) < 3 or sliver_pair(poly, [pv.name for pv in vs[2:]]) is None:
+        return 0.0
+    return vs[2].magnitude * (1.0 + tol.REL_LENGTH)
 
 
 def twin_resultants(poly: ForcePolygon, k: float) -> dict[str, str]:
@@ -823,7 +875,11 @@ def plan_details(
     whose every vector would be listed makes no detail (it would show nothing but the lines
     it joins): its vectors are added to ``dropped`` (drawn as lines on the plan, named under
     its caption; where ``dropped`` is None, it is a detail all the same)."""
-    runs = _one_spot(poly, short_runs(poly.vectors, SHORT_MM * k_ref, floor=floor), k_ref)
+    limit = SHORT_MM * k_ref
+    loads = sliver_loads(poly)
+    if loads * DETAIL_LEAST <= DETAIL_MAX_MM * k_ref:  # a detail of them holds them
+        limit = max(limit, loads)
+    runs = _one_spot(poly, short_runs(poly.vectors, limit, floor=floor), k_ref)
     if not runs:
         return []
     boxes = [_bbox(q for n in run for q in (poly[n].tail, poly[n].head)) for run in runs]
