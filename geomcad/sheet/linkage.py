@@ -352,7 +352,11 @@ def _trees(
         # (review 8: under a row with that column, 350 mm tall, the mechanism's row kept
         # 155 mm and drew the oscillator at 1:2,5 beside its detail on a sheet 51 % blank)
         beside = Row(Column(mech_node(), Row(diagrams, aplans)), Column(tables, order))
-        first: Tree = Column(mech_node(), Row(diagrams, aplans, Column(tables, order)))
+        # the tables and the order between the diagrams and the acceleration plans, clear of
+        # the title block's corner, which cuts a scaled plan's box but would cut their column
+        # short (review 9: the sine drive's 1:1 mechanism left 281 mm under it, the column
+        # needs 273 and the corner left it 226: 1:2 beside a detail of the crank instead)
+        first: Tree = Column(mech_node(), Row(diagrams, Column(tables, order), aplans))
         if apart and n <= PLANS_ON_SHEET:
             # the plans moved to their own sheet for their size: a tall mechanism may take
             # the first sheet's whole height
