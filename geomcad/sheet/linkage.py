@@ -210,11 +210,25 @@ def fit(
     # the larger text where it fits and costs the views at most TEXT_COST of the search's score
     # (``readable``: or keeps them at their wanted scales)
     big, small = tried[0][1].layout, tried[-1][1].layout
+    # (``readable``: not where the smaller text alone gives the diagrams their plots' height)
+    lifts = kept[-1] and _plot_low(big) and not _plot_low(small)
     if big.fits and (
-        not small.fits or big.score[1] >= small.score[1] - TEXT_COST or (readable and kept[0])
+        not small.fits
+        or big.score[1] >= small.score[1] - TEXT_COST
+        or (readable and kept[0] and not lifts)
     ):
         return tried[0]
     return tried[-1] if small.fits else tried[0]
+
+
+def _plot_low(lay: Arranged) -> bool:
+    """Whether an output diagram of the arrangement draws its plot lower than
+    :data:`DIAGRAM_PLOT_MM`."""
+    return any(
+        pl.inner[3] - pl.inner[1] - pl.view.BELOW - pl.view.ABOVE < DIAGRAM_PLOT_MM - tol.SHEET_MM
+        for pl in lay
+        if isinstance(pl.view, _OutputDiagram)
+    )
 
 
 def order_width(h: float) -> float:
@@ -291,11 +305,13 @@ def _trees(
     vplans = Grid(*vviews, title=WORDS("vplans"), group="v", title_height=TITLE_H, fitted=second)
     detail = accel[0] if accel else s.drawn[0]
     cells: list[View | Node] = []
+    aviews: list[PlanView] = []
     for P in accel:
         ap = PlanView(P.ap, title=WORDS("aplan", phi=_deg(P.phi, s)), group="a", show_scale=False,
                       weight=2.0, min_mm=SHORT_MM)  # fmt: skip
         # πa′ = ω1²·l at least PA_MM, as pa (review 6: sixbar's was 27 mm in a 250 mm column)
         ap.most_k = round_scale_down(lk.omega**2 * lk.length / PA_MM, "a", ap.series).k
+        aviews.append(ap)
         if any(P is Q for Q in s.drawn):
             cells.append(ap)
             continue
@@ -339,6 +355,10 @@ def _trees(
         wants[crank] = lk.length / CRANK_MM
     for view in vviews:  # one scale for them all: each needs its room at it
         wants[view] = abs(lk.omega) * lk.length / PA_MM
+    # πa′ too: a smaller format is taken only where it keeps it (an A2 offered by an arrangement
+    # that draws the slotted lever's crank at its rule drew πa′ 25 mm)
+    for view in aviews:
+        wants[view] = lk.omega**2 * lk.length / PA_MM
     if crank is not None and mech_k > 0.0:
         mech.most_k = mech_k  # the detail takes free room, not the mechanism's
     if rules[0]:
@@ -353,7 +373,11 @@ def _trees(
         # (review 8: under a row with that column, 350 mm tall, the mechanism's row kept
         # 155 mm and drew the oscillator at 1:2,5 beside its detail on a sheet 51 % blank)
         beside = Row(Column(mech_node(), Row(diagrams, aplans)), Column(tables, order))
-        first: Tree = Column(mech_node(), Row(diagrams, aplans, Column(tables, order)))
+        # the tables and the order between the diagrams and the acceleration plans, clear of
+        # the title block's corner, which cuts a scaled plan's box but would cut their column
+        # short (review 9: the sine drive's 1:1 mechanism left 281 mm under it, the column
+        # needs 273 and the corner left it 226: 1:2 beside a detail of the crank instead)
+        first: Tree = Column(mech_node(), Row(diagrams, Column(tables, order), aplans))
         if apart and n <= PLANS_ON_SHEET:
             # the plans moved to their own sheet for their size: a tall mechanism may take
             # the first sheet's whole height
@@ -362,6 +386,10 @@ def _trees(
                 Row(mech_node(), Column(diagrams, Row(aplans, Column(tables, order)))),
                 Row(Column(mech_node(), diagrams), aplans, Column(tables, order)),
                 beside,
+                # the diagrams beside a tall mechanism, the rest in a row under both (review
+                # 9: the rocking cylinder's 1:1 mechanism, 330 mm tall, left its diagrams'
+                # column 246 mm and their plots 41 mm; beside it they are 81 mm)
+                Column(Row(mech_node(), diagrams), Row(aplans, tables, order)),
             )
         else:
             first = Choice(first, beside)
@@ -2193,6 +2221,25 @@ def _output_curves(
 DIAGRAM_H = 60.0
 #: The least height (mm) of a diagram's curve from its lowest to its highest point.
 DIAGRAM_SPAN_MM = 25.0
+#: The height (mm) of each output diagram's plot (its y axis's room) the layout seeks where the
+#: sheet has room: lower, its drawn area counts in the search as if it shrank by the plot's
+#: shortfall to the power :data:`DIAGRAM_PLOT_POWER` (review 9: the rocking cylinder's ψ, ω,
+#: ε squeezed to 41 mm under a 1:1 mechanism with an arrangement beside it left untried).
+DIAGRAM_PLOT_MM = 60.0
+DIAGRAM_PLOT_POWER = 2.0
+
+
+class _OutputDiagram(Diagram):
+    """An output's diagram on the kinematic sheet: a plot lower than :data:`DIAGRAM_PLOT_MM`
+    counts in the layout's search as a smaller drawing (:meth:`used`), so the search gives
+    the diagrams their height where it costs the other views less."""
+
+    def used(self, w: float, h: float) -> tuple[float, float]:
+        uw, uh = super().used(w, h)
+        plot = h - self.BELOW - self.ABOVE
+        if 0.0 < plot < DIAGRAM_PLOT_MM:
+            uh *= (plot / DIAGRAM_PLOT_MM) ** DIAGRAM_PLOT_POWER
+        return uw, uh
 
 
 def _diagrams(s: Solved) -> list[Diagram]:
@@ -2210,14 +2257,14 @@ def _diagrams(s: Solved) -> list[Diagram]:
     psi_k, s_k, psi_v, v_ch, psi_a, a_ch = chord_derivatives(s_of, n, abs(lk.omega), REFINE_STEPS)
     rows = [(s_m, psi_k, s_k), (v_m, psi_v, v_ch), (a_m, psi_a, a_ch)]
     x = AxisSpec("φ", WORDS("deg"), "φ", 0.0, 360.0, 30.0)
-    out = []
+    out: list[Diagram] = []
     for (sym, unit, name), (exact, gx, gy) in zip(names, rows, strict=True):
         curves = [
             Curve(np.degrees(psi), exact, "result"),
             Curve(np.degrees(gx), gy, "construction", points=True),
         ]
-        out.append(Diagram(x, AxisSpec(sym, unit, name), curves, least=(120.0, DIAGRAM_H),
-                           prefer=(600.0, 160.0), marks=position_marks(n)))  # fmt: skip
+        out.append(_OutputDiagram(x, AxisSpec(sym, unit, name), curves, least=(120.0, DIAGRAM_H),
+                                  prefer=(600.0, 160.0), marks=position_marks(n)))  # fmt: skip
     return out
 
 
