@@ -91,13 +91,15 @@ def test_regroup_lays_the_short_loads_off_as_one_run() -> None:
     assert regroup(new, k) is new
 
 
-def test_details_are_one_level_at_one_scale_beside_the_polygon() -> None:
+def test_details_are_in_tiers_one_scale_each_and_show_every_vector() -> None:
     """A run of forces over three decades (review 7, item 4: plans with details at
-    4 / 0,5 / 0,05 / 1 N/mm): its details are of one level (no detail is taken from a
-    detail) and all at ONE stated μ_F, at least DETAIL_LEAST times the polygon's, with the
-    longest at most DETAIL_MAX_MM; each circle on the polygon carries one letter; every vector
-    is an arrow at a μ_F the plan states, or, too short in the detail, named with its value
-    on the line under the plan's caption (never a second detail scale)."""
+    4 / 0,5 / 0,05 / 1 N/mm; review 9, item 1: "на выносном элементе Л не показаны: Rτ34,
+    G4, Φ4"): the details taken from the plan are all at ONE stated μ_F, at least
+    DETAIL_LEAST times the polygon's, with the longest at most DETAIL_MAX_MM; the vectors
+    still too short there are drawn in details of those details (a circle on the detail, its
+    own letter), all at one finer μ_F: one μ_F per tier. Every vector is an arrow at least
+    two arrowheads long at a μ_F the plan states; nothing is named as not shown; each circle
+    carries one letter."""
     vs = chain([5000.0, 3.0, 40.0, 400.0, 7.0], ["F0", "F1", "F2", "F3", "F4"])
     vs.append(PlanVector("R", vs[-1].head, Vec(0.0, 0.0)))
     poly = ForcePolygon(Vec(0.0, 0.0), tuple(vs), ())
@@ -107,34 +109,51 @@ def test_details_are_one_level_at_one_scale_beside_the_polygon() -> None:
     sheet = d.finish()
     k = lay[p].scale.k
     assert p.details and len({dt.letter for dt in p.details}) == len(p.details)
-    assert len({dt.k for dt in p.details}) == 1  # one detail μ_F per plan
+    first = [dt for dt in p.details if dt.tier == 1]
+    second = [dt for dt in p.details if dt.tier == 2]
+    assert first and second and len(first) + len(second) == len(p.details)
+    assert len({dt.k for dt in first}) == 1 and len({dt.k for dt in second}) == 1
+    assert all(dt.host is None for dt in first) and second[0].k < first[0].k
+    assert all(dt.host is None or dt.host in first for dt in second)
+    assert any(dt.host is not None for dt in second)  # a detail of a detail
     drawn = p.layers[-1][0]
-    runs = [n for dt in p.details for n in dt.run]
-    assert len(runs) == len(set(runs))  # each short vector in exactly one detail
+    runs = [n for dt in first for n in dt.run]
+    assert len(runs) == len(set(runs))  # each short vector in exactly one detail of a tier
     for dt in p.details:
-        assert dt.k * DETAIL_LEAST <= k * (1.0 + 1e-9)
-        mags = [drawn[n].magnitude for n in dt.run]
-        assert max(mags) / dt.k <= DETAIL_MAX_MM
-        assert set(dt.listed) == {n for n in dt.run if drawn[n].magnitude / dt.k < SHORT_MM}
-    listed = [n for dt in p.details for n in dt.listed]
-    assert listed == p.noted  # named under the caption, not under a detail's
-    listed += p.lined  # and those of a run with nothing to show in a detail
-    notes = [t.text for t in sheet.texts() if "не показан" in t.text]
-    assert len(notes) == (1 if listed else 0)
-    for n in listed:
-        assert f"{n} = " in notes[0]
+        # at least DETAIL_LEAST times finer than the drawing it is taken from, or as coarse
+        # as keeps its arrows no longer than that one's shortest (review 9, item 6)
+        from_k = k if dt.tier == 1 else first[0].k
+        assert dt.k < from_k
+        if dt.k * DETAIL_LEAST > from_k * (1.0 + 1e-9):
+            assert dt.tier == 2
+            shortest = min(drawn[n].magnitude / d.k for d in first for n in d.run
+                           if drawn[n].magnitude / d.k >= SHORT_MM * (1.0 - 1e-9))  # fmt: skip
+            assert max(drawn[n].magnitude / dt.k for n in dt.run) <= shortest * (1.0 + 1e-9)
+        assert max(drawn[n].magnitude for n in dt.run) / dt.k <= DETAIL_MAX_MM
+        assert not dt.listed
+        # a vector short in a detail is in a detail taken from it
+        for n in dt.run:
+            if drawn[n].magnitude / dt.k < SHORT_MM * (1.0 - 1e-9):
+                assert any(d2.host is dt and n in d2.run for d2 in p.details), (dt.letter, n)
+    assert not p.noted and not p.lined
+    assert not [t.text for t in sheet.texts() if "не показан" in t.text]
     arrows = [(math.dist(t, h), sc.k) for t, h, sc in sheet.scaled]
     assert min(mm for mm, _ in arrows) >= SHORT_MM * (1.0 - 1e-9)
-    assert {sc for _, sc in arrows} <= {k, p.details[0].k}
+    assert {sc for _, sc in arrows} <= {k, first[0].k, second[0].k}
     for pv in poly.vectors:
-        shown = any(math.isclose(mm * kd, pv.magnitude, rel_tol=1e-6) for mm, kd in arrows)
-        assert shown or pv.name in listed, pv
-    # each circle on the plan carries the letter of one detail
+        assert any(math.isclose(mm * kd, pv.magnitude, rel_tol=1e-6) for mm, kd in arrows), pv
+    captions = [t.text for t in sheet.texts() if "(μ" in t.text]
+    assert len(captions) == len(p.details)
+    # each circle on the plan carries the letter of one detail, and the details of the
+    # details are circled on theirs, not on the plan
     v = lay[p].viewport
     assert v is not None
-    spots = detail_spots(v, drawn, p.details)
-    assert len(spots) == len(p.details)
+    on_plan = [dt for dt in p.details if dt.host is None]
+    spots = detail_spots(v, drawn, on_plan)
+    assert len(spots) == len(on_plan)
     assert not any(", " in letters for _, _, letters in spots)
+    circles = [it for it in sheet.items if isinstance(it, CircleItem) and not it.fill]
+    assert len(circles) == len(p.details)
 
 
 def test_runs_at_one_spot_of_the_plan_are_one_detail_with_one_letter() -> None:
@@ -205,11 +224,12 @@ def test_a_plan_placed_coarser_than_its_details_were_reckoned_at_spills() -> Non
     assert Polygon(poly).spill(4.0 * k, (0.0, 0.0, 1.0, 1.0)) == 0.0  # no details: none
 
 
-def test_a_run_too_large_for_its_bound_is_one_detail_its_short_vectors_named() -> None:
+def test_a_run_too_large_for_its_bound_is_one_detail_its_short_vectors_in_a_finer_one() -> None:
     """A run whose detail at its μ_F would outgrow its plan (the crusher's group (2, 3): G_2,
     G_3, Ф_3 and R^τ_12 one under the other) is one detail within the bound at one μ_F (not
     cut into pieces at several: review 7, item 4), and the vectors of it then shorter than two
-    arrowheads, and only those, are listed (named under the plan's caption)."""
+    arrowheads, and only those, are drawn again in a detail of that detail at a finer μ_F
+    (review 9, item 1: never named instead of drawn)."""
     from geomcad.sheet.views import STUB_MM
 
     vs = chain([5000.0, 470.0, 120.0, 196.0, 588.0, 3000.0],
@@ -218,12 +238,17 @@ def test_a_run_too_large_for_its_bound_is_one_detail_its_short_vectors_named() -
     poly = ForcePolygon(Vec(0.0, 0.0), tuple(vs), ())
     k, bound = 100.0, 62.0
     details = plan_details(poly, k, iter("БГДЖИЛ"), bound=bound)
-    assert len(details) == 1
-    dt = details[0]
+    first = [dt for dt in details if dt.host is None]
+    assert len(first) == 1
+    dt = first[0]
     assert sorted(dt.run) == ["F1", "F2", "F3", "F4"]
     box = dt.box
     assert max(box[2] - box[0], box[3] - box[1]) / dt.k <= bound - 2.0 * STUB_MM + 1e-9
-    assert set(dt.listed) == {n for n in dt.run if poly[n].magnitude / dt.k < SHORT_MM}
+    short = {n for n in dt.run if poly[n].magnitude / dt.k < SHORT_MM}
+    assert short and {n for d2 in details if d2.host is dt for n in d2.run} == short
+    assert not any(d2.listed for d2 in details)
+    for d2 in details:
+        assert all(poly[n].magnitude / d2.k >= SHORT_MM for n in d2.run if d2.host is dt)
     # the finest factor of the series within the bound: the next finer outgrows it
     finer = nice_below(dt.k * 0.999, 1.0).k
     assert max(box[2] - box[0], box[3] - box[1]) / finer > bound - 2.0 * STUB_MM

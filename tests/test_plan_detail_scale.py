@@ -59,16 +59,20 @@ def _plans(path: Path, monkeypatch: pytest.MonkeyPatch) -> list[tuple[Polygon, A
 def test_a_plan_states_one_detail_scale_and_one_letter_per_circle(
     path: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
-    """Every force plan states at most two μ_F: its own (in its caption) and one for all its
-    details (each detail's caption states it); a circle on the plan is lettered with one
-    detail's letter, never a list of them."""
+    """Every force plan states its own μ_F (in its caption) and one for all its details of a
+    tier (each detail's caption states it): one for the details taken from the plan, one
+    finer for the details of those details (review 9, item 1: a detail of a detail shows
+    what the first cannot); a circle on the plan is lettered with one detail's letter,
+    never a list of them."""
     plans = _plans(path, monkeypatch)
     assert plans
     for p, _, items in plans:
         texts = [it.text for it in items if isinstance(it, TextItem)]
         stated = {m for t in texts for m in MU_F.findall(t)}
-        assert len(stated) <= 1, (path.stem, p.title, sorted(stated))
-        assert len({dt.k for dt in p.details}) <= 1, (path.stem, p.title)
+        tiers = {dt.tier for dt in p.details}
+        assert len(stated) <= len(tiers), (path.stem, p.title, sorted(stated))
+        for t in tiers:
+            assert len({dt.k for dt in p.details if dt.tier == t}) == 1, (path.stem, p.title)
         lists = [t for t in texts if LETTER_LIST.match(t)]
         assert not lists, (path.stem, p.title, lists)
 
@@ -103,7 +107,8 @@ DETAIL_LONGEST_MM = DETAIL_MAX_MM
 def test_a_detail_is_not_drawn_longer_than_its_plan_needs(
     path: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
-    """A detail enlarges its plan's short run at the coarsest μ_F that keeps its longest
+    """A plan's details of one tier (:attr:`Detail.tier`: one μ_F for them all) enlarge
+    their runs at the coarsest μ_F that keeps their longest
     vector within DETAIL_LONGEST_MM, never at a finer one: the detail copy of a small force is
     not drawn several times longer than the plan's own vectors; and at the next coarser μ_F of
     the series its shortest vector drawn would be shorter than two arrowheads, or none of its
@@ -115,17 +120,27 @@ def test_a_detail_is_not_drawn_longer_than_its_plan_needs(
 
     for p, at, _ in _plans(path, monkeypatch):
         poly = p.layers[-1][0]
-        for dt in p.details:
-            drawn = [poly[n].magnitude / dt.k for n in dt.run if n not in dt.listed]
+        for tier in sorted({dt.tier for dt in p.details}):
+            # the details of one tier share one μ_F; the vectors they draw: not those drawn
+            # again in a detail of theirs
+            of = [dt for dt in p.details if dt.tier == tier]
+            k_d = of[0].k
+            finer = {n for d2 in p.details for n in d2.run if d2.host in of}
+            drawn = [poly[n].magnitude / k_d for dt in of for n in dt.run
+                     if n not in dt.listed and n not in finer]  # fmt: skip
             drawn = [mm for mm in drawn if mm > 0.0]
             if not drawn:
                 continue
             assert max(drawn) <= DETAIL_LONGEST_MM * (1.0 + 1e-9), (path.stem, p.title, drawn)
-            coarser = nice_factor(dt.k * 1.01, 1.0, "F").k
-            shortest = min(drawn) * dt.k / coarser
-            least = coarser * DETAIL_LEAST > at.viewport.scale.k * (1.0 + 1e-9)
+            coarser = nice_factor(k_d * 1.01, 1.0, "F").k
+            shortest = min(drawn) * k_d / coarser
+            # the drawing it is taken from: the plan, or the details of the tier before
+            from_k = at.viewport.scale.k
+            if tier > 1:
+                from_k = next(d2.k for d2 in p.details if d2.tier == tier - 1)
+            least = coarser * DETAIL_LEAST > from_k * (1.0 + 1e-9)
             assert (
                 shortest < SHORT_MM * (1.0 - 1e-9)
-                or max(drawn) * dt.k / coarser > DETAIL_LONGEST_MM
+                or max(drawn) * k_d / coarser > DETAIL_LONGEST_MM
                 or least
-            ), (path.stem, p.title, dt.k, coarser, min(drawn))
+            ), (path.stem, p.title, k_d, coarser, min(drawn))

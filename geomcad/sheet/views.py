@@ -336,8 +336,8 @@ def draw_polygon(
               v.p(pv.head + shift.get(pv.name, Vec(0.0, 0.0)))) for pv in drawn]  # fmt: skip
     sides += [(v.p(r.tail + shift.get(r.name, Vec(0.0, 0.0))),
                v.p(r.head + shift.get(r.name, Vec(0.0, 0.0)))) for r, _ in res]  # fmt: skip
-    for spot in detail_spots(v, poly, details):
-        mark_detail(v, *spot, segs=sides, bound=bound)
+    for spot in detail_spots(v, poly, [dt for dt in details if dt.host is None]):
+        mark_detail(v, *spot, segs=sides + _slot_sides(v, details), bound=bound)
     if pair:
         # two forces (nearly) in balance: one line, the first's arrow at its head, the
         # second's back along it to the first's tail, named "R₃₂ = −R₁₂" (a load between them,
@@ -841,10 +841,16 @@ class Detail:
     cap: float = 0.0
     #: the vectors up to this magnitude are left out (negligible): no line of them is joined
     floor: float = 0.0
-    #: the vectors of the run shorter than two arrowheads at ``k`` (a detail no larger than
-    #: its plan could not enlarge them more): drawn as lines, listed with their values under
+    #: the vectors of the run shorter than two arrowheads at ``k`` that no finer detail
+    #: shows (past :data:`DETAIL_TIERS`): drawn as lines, listed with their values under
     #: the detail's caption
     listed: tuple[str, ...] = ()
+    #: the detail whose drawing holds this one's spot (a detail of a detail, at a finer μ_F:
+    #: its circle and letter are on that one); None: its spot is on the plan
+    host: Detail | None = None
+    #: its tier: 1 taken from the plan at the plan's details' μ_F, 2 at the next finer one
+    #: (from a detail of tier 1, or from the plan where tier 1 showed nothing of its run), …
+    tier: int = 1
 
 
 def detail_k(mags: Sequence[float], k: float) -> float:
@@ -864,17 +870,32 @@ def plan_details(
 ) -> list[Detail]:
     """The details of ``poly`` drawn at μ_F ``k_ref``: one per run of its vectors shorter
     than two arrowheads there (:func:`regroup` makes it one run where the polygon's order
-    allows), all at ONE μ_F (:func:`details_k`), as a view's insets are at one: a plan
-    states at most two scales, its own and its details' (review 7: plans with details at
-    4 / 0,5 / 0,05 / 1 N/mm read as four drawings). A run is never cut into pieces (each
-    circle on the plan marks one run, lettered with one letter). The vectors of a run still
-    shorter than two arrowheads at that μ_F are its :attr:`Detail.listed`: drawn as lines,
-    named with their values under the plan's caption. The vectors up to ``floor``
-    (negligible) are in none. ``bound`` (mm, 0: none): no detail is drawn larger than that
-    (its plan's size: a detail never outgrows its plan), its joined lines included. A run
-    whose every vector would be listed makes no detail (it would show nothing but the lines
-    it joins): its vectors are added to ``dropped`` (drawn as lines on the plan, named under
-    its caption; where ``dropped`` is None, it is a detail all the same)."""
+    allows), all at ONE μ_F (:func:`details_k`), as a view's insets are at one (review 7:
+    plans with details at 4 / 0,5 / 0,05 / 1 N/mm read as four drawings). A run is never cut
+    into pieces (each circle on the plan marks one run, lettered with one letter).
+
+    Every term of the plan's ΣF = 0 is drawn as an arrow at a stated μ_F (review 9, item 1:
+    "на выносном элементе Л не показаны: Rτ34, G4, Φ4" left the polygon unclosed on the
+    sheet). The vectors of a run still shorter than two arrowheads at the details' μ_F (a
+    run spanning more than :data:`DETAIL_MAX_MM` / :data:`DETAIL_MM`, or a detail held to
+    its plan's size) are drawn as lines in it, and each run of them again, enlarged, in a
+    detail of that detail (ESKD: a выносной элемент of a выносной элемент): a circle on the
+    first detail lettered with its own letter, at one finer μ_F for all the details of that
+    tier, stated in its caption; it joins the lines of the vectors it is chained to, so the
+    run ends on the sheet where the drawing it is taken from continues. A run with nothing
+    to show at a tier's μ_F is taken to the next tier from the same spot. Only past
+    :data:`DETAIL_TIERS` tiers (a span over 10⁴: never with the negligible ``floor`` of a
+    forces sheet) are vectors left as lines, :attr:`Detail.listed`: named with their values
+    under the plan's caption; a run whose every vector would be listed then makes no detail:
+    its vectors are added to ``dropped`` (drawn as lines on the plan, named under its
+    caption; where ``dropped`` is None, it is a detail all the same). The vectors up to
+    ``floor`` (negligible) are in none. ``bound`` (mm, 0: none): no detail is drawn larger
+    than that (its plan's size: a detail never outgrows its plan), its joined lines
+    included.
+
+    A sliver's loads (:func:`sliver_loads`: the vectors between its two balanced forces,
+    drawn as one line) are one run however long, where a detail holds them.
+    """
     limit = SHORT_MM * k_ref
     loads = sliver_loads(poly)
     if loads * DETAIL_LEAST <= DETAIL_MAX_MM * k_ref:  # a detail of them holds them
@@ -882,22 +903,74 @@ def plan_details(
     runs = _one_spot(poly, short_runs(poly.vectors, limit, floor=floor), k_ref)
     if not runs:
         return []
-    boxes = [_bbox(q for n in run for q in (poly[n].tail, poly[n].head)) for run in runs]
-    kd = details_k(
-        [[poly[n].magnitude for n in run] for run in runs],
-        [max(b[2] - b[0], b[3] - b[1]) for b in boxes],
-        k_ref,
-        bound,
-    )
     zero = max(_zero(poly), floor)
-    out = []
-    for run, box in zip(runs, boxes, strict=True):
-        listed = tuple(n for n in run if zero < poly[n].magnitude < SHORT_MM * kd)
-        if dropped is not None and len(listed) == sum(poly[n].magnitude > zero for n in run):
-            dropped += listed
-            continue
-        out.append(Detail(tuple(run), kd, next(letters), box, floor=floor, listed=listed))
+    inset = {n for run in runs for n in run}
+    # the shortest arrow of the drawing a tier's details are taken from (mm): item 6
+    shortest = min((pv.magnitude / k_ref for pv in poly.vectors
+                    if pv.magnitude > zero and pv.name not in inset), default=0.0)  # fmt: skip
+    todo: list[tuple[list[str], Detail | None]] = [(run, None) for run in runs]
+    k_from = k_ref
+    out: list[Detail] = []
+    for tier in range(DETAIL_TIERS):
+        if not todo:
+            break
+        last = tier == DETAIL_TIERS - 1
+        boxes = [_bbox(q for n in run for q in (poly[n].tail, poly[n].head)) for run, _ in todo]
+        kd = details_k(
+            [[poly[n].magnitude for n in run if poly[n].magnitude > zero] for run, _ in todo],
+            [max(b[2] - b[0], b[3] - b[1]) for b in boxes],
+            k_from,
+            bound,
+            shortest,
+        )
+        nxt: list[tuple[list[str], Detail | None]] = []
+        made: list[Detail] = []
+        for (run, host), box in zip(todo, boxes, strict=True):
+            least = SHORT_MM * kd * (1.0 - tol.REL_LENGTH)  # as details_k reckons it
+            short = [n for n in run if zero < poly[n].magnitude < least]
+            every = sum(poly[n].magnitude > zero for n in run)
+            if len(short) == every and not last:  # nothing to show here: finer, same spot
+                nxt.append((run, host))
+                continue
+            if len(short) == every and dropped is not None and host is None:
+                dropped += short
+                continue
+            dt = Detail(tuple(run), kd, next(letters), box, floor=floor, host=host, tier=tier + 1)
+            made.append(dt)
+            if last:
+                dt.listed = tuple(short)
+            else:
+                nxt += [(sub, dt) for sub in _one_spot(poly, _sub_runs(poly, run, short), kd)]
+        out += made
+        shortest = min((poly[n].magnitude / kd for dt in made for n in dt.run
+                        if poly[n].magnitude >= SHORT_MM * kd * (1.0 - tol.REL_LENGTH)),
+                       default=0.0)  # fmt: skip
+        k_from = kd
+        todo = nxt
     return out
+
+
+def _sub_runs(poly: ForcePolygon, run: Sequence[str], short: Sequence[str]) -> list[list[str]]:
+    """The runs (consecutive in ``run``) of its vectors ``short``, broken by the others (not
+    zero) between them."""
+    zero = _zero(poly)
+    out: list[list[str]] = []
+    cur: list[str] = []
+    for n in run:
+        if n in short:
+            cur.append(n)
+        elif poly[n].magnitude > zero and cur:
+            out.append(cur)
+            cur = []
+    if cur:
+        out.append(cur)
+    return out
+
+
+#: A plan's details go at most this many tiers deep (a detail of a detail, …): each tier
+#: spans DETAIL_MAX_MM / DETAIL_MM ≈ 8.6 times in magnitude, so three show a polygon's
+#: vectors over a span of 10⁴ below its shortest arrow.
+DETAIL_TIERS = 3
 
 
 def _over(ext: Extent, room: tuple[float, float], k: float) -> float:
@@ -930,21 +1003,35 @@ def _one_spot(poly: ForcePolygon, runs: list[list[str]], k: float) -> list[list[
 
 
 def details_k(
-    mags: Sequence[Sequence[float]], sizes: Sequence[float], k_ref: float, bound: float = 0.0
+    mags: Sequence[Sequence[float]],
+    sizes: Sequence[float],
+    k_ref: float,
+    bound: float = 0.0,
+    shortest: float = 0.0,
 ) -> float:
     """The one μ_F of a plan's details (runs of magnitudes ``mags``, each spanning ``sizes``
     in plan units) taken from the plan drawn at ``k_ref``: :func:`detail_k` of all their
     vectors (the shortest at least :data:`DETAIL_MM`, at least :data:`DETAIL_LEAST` times
     the plan), made coarser where a run would then draw its longest vector over
     :data:`DETAIL_MAX_MM`, or outgrow ``bound`` mm (0: none) with its joined lines: the
-    finest factor 1, 2, 2.5, 4, 5 × 10^n that keeps every run within both. What is then too
-    short in a detail is named under the plan (:attr:`Detail.listed`), never drawn at a
-    second detail μ_F. Where that leaves some too short, the μ_F is the coarsest that still
-    draws the others :data:`DETAIL_MM` long (those it names no longer set it: review 8, item
-    3, the crusher's G4 = 147 N drawn 29 mm at 5 N/mm because R^τ34 = 17 N, named, would have
-    wanted 2 N/mm; at 10 N/mm G4 is 15 mm, Ф4 9 mm)."""
+    finest factor 1, 2, 2.5, 4, 5 × 10^n that keeps every run within both. Where that leaves
+    some too short, the μ_F is the coarsest that still draws the others :data:`DETAIL_MM`
+    long (review 8, item 3, the crusher's G4 = 147 N drawn 29 mm at 5 N/mm because
+    R^τ34 = 17 N would have wanted 2 N/mm; at 10 N/mm G4 is 15 mm, Ф4 9 mm); those too short
+    are drawn in a detail of the detail (:func:`plan_details`).
+
+    Order of lengths (review 9, item 6: crank_rocker's detail drew Φ4 = 25 N 12.5 mm beside
+    the plan's G5 = 108 N at 10.8 mm): where the coarsest factor that draws the shortest
+    vector :data:`DETAIL_MM` long draws the longest no longer than ``shortest`` (mm, the
+    shortest arrow of the drawing the details are taken from; 0: none), it is that factor,
+    however little it enlarges: a detail's arrows then keep the order of the plan's.
+    Otherwise the detail is at the finer μ_F its caption states."""
     every = [m for run in mags for m in run]
-    readable = kd = detail_k(every, k_ref)
+    plain = nice_below(min(every), DETAIL_MM).k
+    if 0.0 < max(every) / plain <= shortest * (1.0 + tol.REL_LENGTH):
+        readable = kd = plain
+    else:
+        readable = kd = detail_k(every, k_ref)
     for run, size in zip(mags, sizes, strict=True):
         kd = max(kd, nice_factor(max(run), DETAIL_MAX_MM, "F").k)
         room = bound - 2.0 * STUB_MM
@@ -1228,12 +1315,15 @@ def draw_detail(
     height: float = 2.5,
     others: Sequence[Detail] = (),
     noted: Iterable[str] = (),
+    bound: tuple[float, float, float, float] | None = None,
 ) -> None:
     """Draw detail ``dt`` of ``poly`` in its slot of the polygon's viewport ``v``: its run at
     its μ_F, captioned with its letter and μ_F (and the vectors too short in it, but those
     ``noted`` under the plan's caption), the lines of the long vectors it joins (a
     vector in another of ``others``, the plan's details, lettered with that one's letter;
-    the others unnamed: the plan names them)."""
+    the others unnamed: the plan names them). The runs of the details of ``others`` taken
+    from this one (:attr:`Detail.host`) are lines in it, circled and lettered as on a plan
+    (their letters kept inside ``bound``, paper mm)."""
     sc = Scale(dt.k, "F")
     sx0, sy0, sx1, sy1 = dt.slot
     names = names or {}
@@ -1256,6 +1346,10 @@ def draw_detail(
             sub.label(b, elsewhere[pv.name], height, clear=0.5)
     run = [poly[n] for n in dt.run if poly[n].magnitude > _zero(poly)]
     shift = lanes(sc.k, run)  # those along one another side by side, tied where they meet
+    # the runs drawn again in its own details (a detail of this detail): lines here, circled
+    subs = [d for d in others if d.host is dt]
+    finer = {n for d in subs for n in d.run}
+    sides: list[tuple[tuple[float, float], tuple[float, float]]] = []
     for i, pv in enumerate(run):
         s = shift.get(pv.name, Vec(0.0, 0.0))
         if i + 1 < len(run) and (s - shift.get(run[i + 1].name, Vec(0.0, 0.0))).norm > 0.0:
@@ -1263,12 +1357,31 @@ def draw_detail(
                     "construction")  # fmt: skip
         n = pv.name
         tail, head = pv.tail + s, pv.head + s
-        if n in dt.listed:  # too short to draw at its μ_F: its line, its value listed
+        sides.append((sub.p(tail), sub.p(head)))
+        if n in dt.listed or n in finer:  # too short at its μ_F: its line (listed, or finer)
             sub.seg(tail, head, "construction")
             continue
         sub.arrow(tail, head, "result" if n in found else "vector")
         prefer = (s.unit().x, s.unit().y) if s.norm > 0.0 else _outward(poly, tail, head, False)
         sub.label((tail + head) * 0.5, names.get(n, n), height, prefer=prefer, clear=0.5)
+    for spot in detail_spots(sub, poly, subs):
+        mark_detail(sub, *spot, segs=sides + _slot_sides(v, others), bound=bound)
+
+
+def _slot_sides(
+    v: Viewport, details: Sequence[Detail]
+) -> list[tuple[tuple[float, float], tuple[float, float]]]:
+    """The sides (paper) of the slots of ``details`` drawn through ``v``: a detail's letter is
+    kept clear of them as of the polygon's sides (review 9: "П2" on its leader over the
+    caption "П2 (μF = 4 Н/мм)" of the detail under the circle)."""
+    out = []
+    for dt in details:
+        x0, y0, x1, y1 = dt.slot
+        if x1 <= x0 or y1 <= y0:
+            continue
+        a, b, c, e = v.p((x0, y0)), v.p((x1, y0)), v.p((x1, y1)), v.p((x0, y1))
+        out += [(a, b), (b, c), (c, e), (e, a)]
+    return out
 
 
 class Polygon(View):
@@ -1408,13 +1521,17 @@ class Polygon(View):
         plan = (x0, y0, x1, y1)
         if room is not None:
             _, ext = self._placed(k, iter(_ANY), bound, plan, room)
+            left = len(self.noted) + len(self.lined)
             # the room free beside or under the plan, less a detail's slot round its run
             free = max(room[0] - (x1 - x0), room[1] - (y1 - y0)) / k
             cap = DETAIL_CAPTION_H * 1.5 + 1.5 + DETAIL_CAPTION_H * DETAIL_LINES
             tight = free - 2.0 * DETAIL_PAD_MM - cap - DETAIL_GAP_MM
             if _over(ext, room, k) > 0.0 and 2.0 * STUB_MM + DETAIL_MM < tight < bound:
                 _, ext2 = self._placed(k, iter(_ANY), tight, plan, room)
-                if _over(ext2, room, k) < _over(ext, room, k):
+                # never at the cost of a vector drawn (review 9, item 1: sixbar_coupler's
+                # group (4, 5) named all four of its short vectors, no detail of them)
+                kept = len(self.noted) + len(self.lined) <= left
+                if _over(ext2, room, k) < _over(ext, room, k) and kept:
                     bound = tight
         details, ext = self._placed(k, letters, bound, plan, room)
         return details, thin, ext
@@ -1535,7 +1652,7 @@ class Polygon(View):
             found = self.found if self.found is not None else {n for n, _ in poly.solved}
             for dt in self.details:
                 draw_detail(v, poly, dt, self.names, found, self.label_height, self.details,
-                            self.noted)  # fmt: skip
+                            self.noted, at.box)  # fmt: skip
 
     def _listed_note(self, values: bool = True) -> str:
         """The line under the caption that names the vectors too short in the plan's
