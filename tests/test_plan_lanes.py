@@ -25,7 +25,7 @@ from geomcad.sheet.frame import TitleBlock
 from geomcad.sheet.linkage_forces import force_position
 from geomcad.sheet.loads import AT_POINT_MM, BESIDE_MM, Clearance, force
 from geomcad.sheet.model import CircleItem, Polyline, Sheet
-from geomcad.sheet.views import SLIVER_MM, SLIVER_SHARE, Polygon
+from geomcad.sheet.views import LANE_ANGLE, SLIVER_MM, SLIVER_SHARE, Polygon
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
 TESTS = Path(__file__).resolve().parent / "linkages"
@@ -103,15 +103,15 @@ def test_vectors_along_one_line_are_drawn_side_by_side() -> None:
 
 
 def _one_line(a: Any, b: Any) -> bool:
-    """Whether arrows ``a`` and ``b`` (tail, head) are a sliver's two vectors drawn as one line
-    (:func:`~geomcad.sheet.views.sliver_pair`): opposite, on one line, b's head at a's tail."""
+    """Whether arrows ``a`` and ``b`` (tail, head) are a sliver's two vectors drawn as its thin
+    triangle (:func:`~geomcad.sheet.views.sliver_pair`): each exactly where the polygon has
+    it, meeting at the vertex they share, running opposite ways within LANE_ANGLE."""
     (a0, a1), (b0, b1) = a, b
-    la = math.dist(a0, a1)
-    if la == 0.0 or math.dist(b1, a0) > 1e-6:
+    la, lb = math.dist(a0, a1), math.dist(b0, b1)
+    if la == 0.0 or lb == 0.0 or min(math.dist(b1, a0), math.dist(b0, a1)) > 1e-6:
         return False
-    ux, uy = (a1[0] - a0[0]) / la, (a1[1] - a0[1]) / la
-    off = abs(ux * (b0[1] - a0[1]) - uy * (b0[0] - a0[0]))
-    return off < 1e-6 and ux * (b0[0] - a0[0]) + uy * (b0[1] - a0[1]) > 0.0
+    cos = ((a1[0] - a0[0]) * (b1[0] - b0[0]) + (a1[1] - a0[1]) * (b1[1] - b0[1])) / (la * lb)
+    return cos < -math.cos(LANE_ANGLE)
 
 
 @pytest.mark.parametrize("path", FILES, ids=lambda p: p.stem)

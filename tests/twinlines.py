@@ -16,8 +16,11 @@ XY = tuple[float, float]
 Box = tuple[float, float, float, float]
 #: Lines closer than this (mm) …
 NEAR_MM = 1.0
-#: … but not on one another (one line drawn twice, e.g. two arrows of one line) …
+#: … but not on one another (one line drawn twice, e.g. two arrows of one line), nor two sides
+#: of the polygon meeting at a vertex (a thin triangle: one end of one on the other's line) …
 SAME_MM = 0.05
+#: (two sides meet where their lines cross this close (mm) to an end of each: an arrowhead)
+MEET_MM = 4.0
 #: … within this angle …
 ANGLE = math.radians(4.0)
 #: … along one another longer than this (mm) are a twin line (a detail's stub, the 4 mm end of
@@ -81,6 +84,8 @@ def _twin(a: tuple[XY, XY], b: tuple[XY, XY], near: float = NEAR_MM) -> float:
         return 0.0
     t = [ux * (q[0] - ax) + uy * (q[1] - ay) for q in b]
     d = [ux * (q[1] - ay) - uy * (q[0] - ax) for q in b]
+    if _meet(t, d, la):
+        return 0.0  # two sides meeting at a vertex: a thin triangle, as the plan is
     if t[1] < t[0]:
         t, d = t[::-1], d[::-1]
     lo, hi = max(t[0], 0.0), min(t[1], la)
@@ -97,6 +102,16 @@ def _twin(a: tuple[XY, XY], b: tuple[XY, XY], near: float = NEAR_MM) -> float:
         if SAME_MM < abs(across(x)) < near:
             run += (hi - lo) / steps
     return run
+
+
+def _meet(t: list[float], d: list[float], la: float) -> bool:
+    """Whether a segment (``t``, ``d``: its ends along and across a segment ``la`` long) and
+    that segment are two sides meeting at their vertex: their lines cross within MEET_MM of an
+    end of each (a side's line may stop an arrowhead short of its head)."""
+    if abs(d[1] - d[0]) <= SAME_MM:
+        return False  # parallel: side by side, never meeting
+    x = t[0] - d[0] * (t[1] - t[0]) / (d[1] - d[0])  # where b's line crosses a's, along a
+    return min(abs(x - t[0]), abs(x - t[1])) <= MEET_MM and min(abs(x), abs(x - la)) <= MEET_MM
 
 
 def twin_lines(

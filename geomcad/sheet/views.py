@@ -343,10 +343,10 @@ def draw_polygon(
         # second's back along it to the first's tail, named "R₃₂ = −R₁₂" (a load between them,
         # in a detail where it closes the gap: "R₃₂ ≈ −R₁₂")
         a, b = pair
-        u = (a.head - a.tail).unit()
-        # b at its own length on a's line, its head at a's tail (the loads' chain between
-        # its tail and a's head: the difference of the two, closed in the detail)
-        for pv, (tail, head) in ((a, (a.tail, a.head)), (b, (a.tail + u * b.magnitude, a.tail))):
+        # each exactly where the polygon has it, with no lanes between them: they meet at the
+        # vertex they share and part at the other end by the loads' chain, which closes there
+        # (in the detail) — a thin triangle, as the plan is; never a direction bent to one line
+        for pv, (tail, head) in ((a, (a.tail, a.head)), (b, (b.tail, b.head))):
             if v.mm(pv.magnitude) < SHORT_MM:
                 short.append(pv.name)
             v.arrow(tail, head, "result" if pv.name in found else role)
