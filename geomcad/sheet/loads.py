@@ -691,8 +691,19 @@ def force(
         end = tail if back else tip
         mid = ((tail[0] + tip[0]) / 2.0, (tail[1] + tip[1]) / 2.0)
         away = (-ux, -uy) if back else (ux, uy)
-        v.d.label(end, label, height, prefer=prefer or away, clear=1.0, others=(mid,))
+        room = (end[0] + away[0] * LABEL_ROOM_MM, end[1] + away[1] * LABEL_ROOM_MM)
+        box = clear.box if clear is not None else None
+        if box is not None and not (box[0] <= room[0] <= box[2] and box[1] <= room[1] <= box[3]):
+            # no room beyond the end inside the view (an arrow at its edge): beside its middle
+            v.d.label(mid, label, height, prefer=prefer or (-uy, ux), clear=1.0)
+        else:
+            v.d.label(end, label, height, prefer=prefer or away, clear=1.0, others=(mid,))
     return tail, tip
+
+
+#: The room (mm) a force's label takes beyond the arrow's end: where that leaves the view's
+#: box (an arrow at its edge), the label goes beside the arrow's middle instead.
+LABEL_ROOM_MM = 8.0
 
 
 def line_of_action(
