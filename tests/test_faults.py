@@ -152,6 +152,26 @@ def test_a_toml_syntax_error_is_bad_input(tmp_path: Path) -> None:
     assert code == 2 and "not valid TOML" in one_error_line(err) and "line 1" in err
 
 
+def test_two_sliding_pairs_named_by_one_point_are_refused_by_the_key(tmp_path: Path) -> None:
+    """Review 10: an RPR block turning on an RRP's slider joint B (``slider = "B"``) stopped
+    the solve with an internal AssertionError (both pairs' v_rel and a_cor keyed by B). The
+    file is refused on the group's key, with the way out; the same mechanism with a point K
+    of the slider at B solves."""
+    bad = Path(__file__).parent / "linkages_bad" / "rpr_on_rrp_slider_joint.toml"
+    code, _, err = run("solve", str(bad))
+    line = one_error_line(err)
+    assert code == 2 and "group 2: slider: B" in line and "group 1 (RRP)" in line, line
+    good = bad.read_text(encoding="utf-8").replace(
+        "[[group]]                 # RPR",
+        '[[point]]\nname = "K"\nlink = 3\nfrom = "B"\ntoward = "A"\nalong = 0.0\nleft = 0.0\n\n'
+        "[[group]]                 # RPR",
+    )
+    f = tmp_path / "rpr_on_a_point_of_the_slider.toml"
+    f.write_text(good.replace('slider = "B"', 'slider = "K"'), encoding="utf-8")
+    code, out, err = run("solve", str(f), "--json")
+    assert code == 0 and not err and out, (code, err)
+
+
 # --- the file system -----------------------------------------------------------------------------
 
 

@@ -553,6 +553,7 @@ def parse(data: Mapping[str, Any]) -> Linkage:
     for i, t in enumerate(_tables(data, "group"), start=1):
         g = _group(i, t, owner, used_links)
         _check_guide(lk, g)
+        _check_sliding_point(lk, g)
         lk = _replace(lk, groups=(*lk.groups, g))
         lk = _take_points(lk, pending, owner, final=False)
     groups = list(lk.groups)
@@ -686,6 +687,37 @@ def _new(where: str, name: str, owner: dict[str, int], link: int, key: str) -> N
     if name in owner:
         raise FileKeyError(where, name, f'{key}: point "{name}" is named twice')
     owner[name] = link
+
+
+def _sliding_points(g: Group) -> tuple[str, ...]:
+    """The points that name ``g``'s sliding pairs (their relative velocity and Coriolis
+    acceleration are the pair's, keyed by the point): an RRP's slider joint, an RPR's slider,
+    a PRP's point and slider."""
+    if g.kind == "RRP":
+        return (g.joint,)
+    if g.kind == "RPR":
+        return (g.slider,)
+    if g.kind == "PRP":
+        return (g.joint, g.slider)
+    return ()
+
+
+def _check_sliding_point(lk: Linkage, g: Group) -> None:
+    """Two sliding pairs named by one point are refused: each pair's v_rel and a_cor belong
+    to its point (review 10: an RPR block turning on an RRP's slider joint B stopped the
+    solve with an internal error)."""
+    for name in _sliding_points(g):
+        for h in lk.groups:
+            if name in _sliding_points(h):
+                key = "slider" if g.kind != "RRP" else "joint"
+                raise FileKeyError(
+                    f"group {g.index}",
+                    name,
+                    f"{key}: {name} already names the sliding pair of group {h.index} "
+                    f"({h.kind}); one point names one sliding pair: add a point on link "
+                    f"{lk.owner.get(name, '…')} at {name} "
+                    "([[point]] with along = 0, left = 0) and use it here",
+                )
 
 
 def _group(i: int, t: Mapping[str, Any], owner: dict[str, int], used: set[int]) -> Group:
