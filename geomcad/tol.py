@@ -83,3 +83,8 @@ TURN_START = 1.0e-9
 #: Points of a mechanism view nearer than this fraction of the crank's length are at one place
 #: (named by one label).
 SAME_PLACE = 1.0e-6
+
+#: A layout laid out so far whose leaves overflow by this much (mm) more than the best one's
+#: total overflow loses to it whatever the rest adds (the layout score compares overflow rounded
+#: to a millionth of a mm, so this is well above round-off).
+LAYOUT_BEATEN_MM = 1.0e-3

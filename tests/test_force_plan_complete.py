@@ -16,23 +16,12 @@ from pathlib import Path
 from typing import Any
 
 import pytest
+from test_plan_detail_scale import FILES
 
 import geomcad
 from geomcad.sheet.drawing import SHORT_MM
 from geomcad.sheet.model import TextItem
 from geomcad.sheet.views import Polygon, _zero, nice_below
-
-ROOT = Path(__file__).resolve().parents[1]
-TESTS = Path(__file__).resolve().parent
-TOMLS = [
-    *sorted((ROOT / "examples").glob("*.toml")),
-    *sorted((TESTS / "linkages_layout").glob("*.toml")),
-]
-FILES = [
-    p
-    for p in TOMLS
-    if "[drive]" in p.read_text(encoding="utf-8") and "[[group]]" in p.read_text(encoding="utf-8")
-]
 
 #: A stated μ_F: "μF = 0,5 Н/мм" or its markup "μ_F = …" (the value, decimal comma).
 MU_F = re.compile(r"μ_?F = ([\d\s]+(?:,\d+)?)")

@@ -689,16 +689,16 @@ def _new(where: str, name: str, owner: dict[str, int], link: int, key: str) -> N
     owner[name] = link
 
 
-def _sliding_points(g: Group) -> tuple[str, ...]:
+def _sliding_points(g: Group) -> tuple[tuple[str, str], ...]:
     """The points that name ``g``'s sliding pairs (their relative velocity and Coriolis
-    acceleration are the pair's, keyed by the point): an RRP's slider joint, an RPR's slider,
-    a PRP's point and slider."""
+    acceleration are the pair's, keyed by the point), each with its file key: an RRP's slider
+    joint, an RPR's slider, a PRP's point and slider."""
     if g.kind == "RRP":
-        return (g.joint,)
+        return (("joint", g.joint),)
     if g.kind == "RPR":
-        return (g.slider,)
+        return (("slider", g.slider),)
     if g.kind == "PRP":
-        return (g.joint, g.slider)
+        return (("point", g.joint), ("slider", g.slider))
     return ()
 
 
@@ -706,10 +706,9 @@ def _check_sliding_point(lk: Linkage, g: Group) -> None:
     """Two sliding pairs named by one point are refused: each pair's v_rel and a_cor belong
     to its point (review 10: an RPR block turning on an RRP's slider joint B stopped the
     solve with an internal error)."""
-    for name in _sliding_points(g):
+    for key, name in _sliding_points(g):
         for h in lk.groups:
-            if name in _sliding_points(h):
-                key = "slider" if g.kind != "RRP" else "joint"
+            if name in (n for _, n in _sliding_points(h)):
                 raise FileKeyError(
                     f"group {g.index}",
                     name,

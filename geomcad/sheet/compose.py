@@ -908,8 +908,8 @@ class _Beaten(Exception):
 
 #: A layout laid out so far whose leaves overflow by this much (mm) more than the best one's
 #: total overflow loses to it, whatever the rest adds (only overflow is added; :func:`_score`
-#: compares it rounded to 1e-6 mm).
-BEATEN = 1e-3
+#: compares it rounded to a millionth of a mm).
+BEATEN = tol.LAYOUT_BEATEN_MM
 
 
 class _Solver:

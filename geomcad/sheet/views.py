@@ -339,17 +339,15 @@ def draw_polygon(
     for spot in detail_spots(v, poly, [dt for dt in details if dt.host is None]):
         mark_detail(v, *spot, segs=sides + _slot_sides(v, details), bound=bound)
     if pair:
-        # two forces (nearly) in balance: one line, the first's arrow at its head, the
-        # second's back along it to the first's tail, named "R₃₂ = −R₁₂" (a load between them,
-        # in a detail where it closes the gap: "R₃₂ ≈ −R₁₂")
+        # two forces (nearly) in balance, each exactly where the polygon has it, with no lanes
+        # between them: they meet at the vertex they share and part at the other end by the
+        # loads' chain, which closes there (in the detail) — a thin triangle, as the plan is,
+        # named "R₃₂ = −R₁₂" (a load between them: "R₃₂ ≈ −R₁₂")
         a, b = pair
-        # each exactly where the polygon has it, with no lanes between them: they meet at the
-        # vertex they share and part at the other end by the loads' chain, which closes there
-        # (in the detail) — a thin triangle, as the plan is; never a direction bent to one line
-        for pv, (tail, head) in ((a, (a.tail, a.head)), (b, (b.tail, b.head))):
+        for pv in pair:
             if v.mm(pv.magnitude) < SHORT_MM:
                 short.append(pv.name)
-            v.arrow(tail, head, "result" if pv.name in found else role)
+            v.arrow(pv.tail, pv.head, "result" if pv.name in found else role)
         na, nb = ((names or {}).get(pv.name, pv.name) for pv in pair)
         exact = (a.head - b.tail).norm <= zero and (b.head - a.tail).norm <= zero
         n = (a.head - a.tail).unit().perp()
