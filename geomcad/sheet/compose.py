@@ -1452,27 +1452,33 @@ def _titled(tree: Tree) -> Iterator[View | Node]:
             yield from _titled(it)
 
 
-def _set_title_lines(tree: Tree, lines: Mapping[int, int]) -> None:
+def _set_title_lines(tree: Tree, lines: Mapping[int, int], only_changed: bool = False) -> None:
     """Set the lines of every title of the tree (1 unless ``lines`` says otherwise), dropping
-    what the layout remembered of the old room where a count changed."""
-    changed = False
+    what the layout remembered of the old room where a count changed: of every view, or,
+    ``only_changed`` (the titles broken within one :func:`arrange`, nothing else about the
+    views changed), of the views whose own count changed (a view's cells depend on its own
+    title's room only; the nodes' natural sizes are always dropped)."""
+    changed: set[int] = set()
     for t in _titled(tree):
         n = lines.get(id(t), 1)
         if n != t.title_lines:
-            t.title_lines, t._title_w, changed = n, None, True
+            t.title_lines, t._title_w = n, None
+            changed.add(id(t))
     if changed:
-        _forget(tree)
+        _forget(tree, changed if only_changed else None)
 
 
-def _forget(tree: Tree) -> None:
-    """Drop the layout's memory of boxes and natural sizes that counted the titles' room."""
+def _forget(tree: Tree, views: set[int] | None = None) -> None:
+    """Drop the layout's memory of boxes and natural sizes that counted the titles' room (of
+    the views in ``views`` only, where given)."""
     if isinstance(tree, View):
-        for key in [k for k in tree._memo if k not in ("ext", "nat", "lengths")]:
-            del tree._memo[key]
+        if views is None or id(tree) in views:
+            for key in [k for k in tree._memo if k not in ("ext", "nat", "lengths")]:
+                del tree._memo[key]
         return
     tree._natural, tree._fixed = False, {}
     for it in tree.items:
-        _forget(it)
+        _forget(it, views)
 
 
 def _title_start(box: Box, height: float, obstacles: Sequence[Box]) -> float:
@@ -1504,7 +1510,7 @@ def _break_titles(tree: Tree, lay: Layout, obstacles: Sequence[Box] = ()) -> boo
     grown = {id(t): max(t.title_lines, want.get(id(t), 1)) for t in _titled(tree)}
     if all(grown[id(t)] == t.title_lines for t in _titled(tree)):
         return False
-    _set_title_lines(tree, grown)
+    _set_title_lines(tree, grown, only_changed=True)
     return True
 
 
