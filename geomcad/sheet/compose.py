@@ -1336,6 +1336,7 @@ def _score(part: _Part, floor: tuple[float, ...] | None = None) -> tuple[float, 
     areas_r: dict[object, list[float]] = {}
     areas_c: dict[object, list[float]] = {}
     log = math.log
+    inf = math.inf
     for v, leaf in items:
         kind = leaf.kind
         if kind == "fixed":
@@ -1360,16 +1361,27 @@ def _score(part: _Part, floor: tuple[float, ...] | None = None) -> tuple[float, 
                 )
         cw, ch = leaf.content
         w = v.weight
-        for kk, out in ((k, areas_r), (raw[g], areas_c)):
-            area = (cw / kk) * (ch / kk) if 0.0 < kk < math.inf and cw > 0.0 else small
-            area = area if area > small else small
-            prev = out.get(g)
-            if prev is None:
-                out[g] = [0.0 + area, w if w > 0.0 else 0.0]
-            else:
-                prev[0] += area
-                if w > prev[1]:
-                    prev[1] = w
+        # (the rounded scales' areas, then the raw ones': written out twice, not as a loop
+        # over the pair, the search's hottest lines)
+        area = (cw / k) * (ch / k) if 0.0 < k < inf and cw > 0.0 else small
+        area = area if area > small else small
+        prev = areas_r.get(g)
+        if prev is None:
+            areas_r[g] = [0.0 + area, w if w > 0.0 else 0.0]
+        else:
+            prev[0] += area
+            if w > prev[1]:
+                prev[1] = w
+        kk = raw[g]
+        area = (cw / kk) * (ch / kk) if 0.0 < kk < inf and cw > 0.0 else small
+        area = area if area > small else small
+        prev = areas_c.get(g)
+        if prev is None:
+            areas_c[g] = [0.0 + area, w if w > 0.0 else 0.0]
+        else:
+            prev[0] += area
+            if w > prev[1]:
+                prev[1] = w
     score_r = sum([w * log(a) for a, w in areas_r.values()])
     score_c = sum([w * log(a) for a, w in areas_c.values()])
     return (-round(bad, 6), score_r + 0.1 * score_c - SHORT_COST * short - RULE_COST * rule)
