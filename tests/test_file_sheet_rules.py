@@ -137,10 +137,10 @@ def test_designation_printed_as_typed(tmp_path: Path) -> None:
     src = EXAMPLES / "slider-crank.toml"
     path = tmp_path / "sixbar_press.toml"
     shutil.copy(src, path)
-    assert code(str(path)) == "SIXBAR.PRESS"
+    assert code(str(path)) == "СИКСБАР.ПРЕСС"
     sol = geomcad.solve(str(path))
     default = sol.sheets()
-    des = {t.text for _, sh in default for t in sh.texts() if "SIXBAR.PRESS" in t.text}
+    des = {t.text for _, sh in default for t in sh.texts() if "СИКСБАР.ПРЕСС" in t.text}
     assert des and all("_" not in d for d in des)
     typed = "ТММ.press_01.000 ^x{y}"
     sheets = sol.sheets(TitleData(designation=typed))

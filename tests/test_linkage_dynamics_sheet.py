@@ -9,6 +9,8 @@ import functools
 import math
 from pathlib import Path
 
+import pytest
+
 from geomcad import documents
 from geomcad.sheet.lang import language
 from geomcad.sheet.linkage_forces import _nonzero
@@ -176,4 +178,44 @@ def test_wittenbauers_tangents_are_drawn_steep_enough_in_any_box() -> None:
         for w, h in ((400.0, 80.0), (560.0, 120.0), (200.0, 200.0), (120.0, 400.0)):
             ax, ay = witt._axes(w, h)
             steep = math.degrees(math.atan(0.5 * fw.omega_min**2 * ax.k / ay.k))
-            assert steep >= lf.WITT_MIN_DEG * (1.0 - 1e-9), (path.stem, w, h, steep)
+            wide = ax.mm(ax.hi - ax.lo)
+            # review 10: steep, unless that draws the I_пр axis short of WITT_LEAST_MM (and
+            # of the ΔT axis): then that long, at the rounded factor next above
+            least = min(lf.WITT_LEAST_MM, ay.mm(ay.hi - ay.lo))
+            if steep < lf.WITT_MIN_DEG * (1.0 - 1e-9):
+                assert wide <= 2.0 * least + 1e-6, (path.stem, w, h, steep, wide)
+            assert wide >= least / 2.0 - 1e-6, (path.stem, w, h, wide)
+
+
+LAYOUT = Path(__file__).resolve().parent / "linkages_layout"
+
+
+@pytest.mark.parametrize(
+    "path",
+    sorted(EXAMPLES.glob("*.toml")) + sorted(LAYOUT.glob("*.toml")),
+    ids=lambda p: p.stem,
+)
+def test_wittenbauers_diagram_is_a_construction_both_ways(path: Path) -> None:
+    """Review 10: slider_rocker_rpr's energy–mass diagram was a 15 mm-wide sliver (I_пр ≤
+    0,007 kg·m² at 0,0005 per mm beside 140 mm of ΔT): on every file's dynamics sheet both
+    axes are drawn long (a readable construction): the I_пр axis at least WITT_LEAST_MM or as
+    long as the ΔT axis, the ΔT axis at least 50 mm (the box's least 100 mm less its margins and
+    the factor's rounding: v_compressor's is 58 mm), the tangents at the angles their scales
+    give."""
+    from geomcad.linkage.analysis import analyse
+    from geomcad.sheet import linkage_forces as lf
+
+    sol = documents.solve(str(path))
+    s = sol.data
+    if not hasattr(s, "linkage") or not hasattr(s, "cycle"):
+        pytest.skip("not a linkage file")
+    fw = analyse(s).flywheel
+    if fw is None:
+        pytest.skip("no dynamics sheet")
+    _, z = lf.fit(lambda h: (lf._sheet3(s, fw, h), {}), lf.sheet_formats(s.linkage))
+    (pl,) = [pl for pl in z.layout if isinstance(pl.view, lf._Wittenbauer)]
+    x0, y0, x1, y1 = pl.inner
+    ax, ay = pl.view._axes(x1 - x0, y1 - y0)
+    wide, tall = ax.mm(ax.hi - ax.lo), ay.mm(ay.hi - ay.lo)
+    assert wide >= min(lf.WITT_LEAST_MM, tall) - 1e-6, (path.stem, wide, tall)
+    assert tall >= 50.0, (path.stem, wide, tall)

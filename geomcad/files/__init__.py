@@ -70,15 +70,20 @@ def stem(pid: str) -> str:
     return Path(pid).stem
 
 
-#: The longest code a file's stem gives a default designation: "ТММ.<code>.01" fits графа 26
-#: (70 mm) 3.5 mm high in letters of common width, and at GOST's smaller heights in any.
-CODE_CHARS = 17
+#: The height at which a default designation fits графа 26 (70 mm, turned, in the frame's
+#: top-left corner): 5 mm, the height typed designations take there (review 10 of issue 27:
+#: ``ТММ.KULISA.INCLINED.01`` shrank to 3.5 mm where the others were 5).
+CODE_HEIGHT = 5.0
 #: The mark between a code's words: a dot, as between the parts of an ESKD designation (GOST
 #: 2.201: ``АБВГ.301261.001``); not a hyphen, which there marks an execution's number
 #: (``АБВГ.301261.001-01``), nor nothing (``CRANKROCKER`` does not read as two words). A
 #: default designation is then letters, digits and dots only, as the issue asks of a code:
-#: ``ТММ.CRANK.ROCKER.01`` (review 8 of issue 27).
+#: ``ТММ.КРАНК.РОКЕР.01`` (review 8 of issue 27).
 CODE_JOIN = "."
+#: The fixed parts of a default designation in each language, ``ТММ.<code>.01``, as its width
+#: is measured (the sheet kinds' own templates differ only in the last two digits: 01, 04,
+#: 05, of which 05 is the widest).
+_CODE_FRAME = {"ru": "ТММ{j}{code}{j}05", "en": "TMM{j}{code}{j}05"}
 
 
 def _words(name: str) -> list[str]:
@@ -90,23 +95,62 @@ def _words(name: str) -> list[str]:
     return out
 
 
+def _script(word: str, lang: str) -> str:
+    """A word in the script of the designation's ``ТММ`` (``TMM``), upper case: on a Russian
+    sheet its Latin letters transliterated to Cyrillic, on an English one its Cyrillic letters
+    to Latin (the ``cyrtranslit`` library's Russian table; x, which it leaves, as кс; marks
+    that are not letters dropped), so that a code never mixes scripts (review 10:
+    ``ТММ.KULISA…``)."""
+    other = r"[A-Za-z]" if lang == "ru" else r"[А-Яа-яЁё]"
+    if not re.search(other, word):
+        return word.upper()
+    import cyrtranslit
+
+    if lang == "ru":
+        out = str(cyrtranslit.to_cyrillic(re.sub(r"[xX]", "ks", word.lower()), "ru"))
+    else:
+        out = str(cyrtranslit.to_latin(word.lower(), "ru"))
+    return re.sub(r"[^\w]|_", "", out).upper()
+
+
 def code(pid: str) -> str:
     """The file's stem as a part of a designation that reads back to the file, as an ESKD code
-    writes it (upper case, letters and digits only, at most :data:`CODE_CHARS`): the stem's
-    words whole, joined by :data:`CODE_JOIN` (a dot), as many of its first words as fit; the
-    words are cut at a word's end, never inside one (review 7: the syllables of ``TANGROCKSLID``,
-    ``YOKPUMDOUSLI`` did not read as words); a first word longer than :data:`CODE_CHARS` alone
-    is cut to it. A stem without letters or digits gives ``""``.
+    writes it: upper case, letters and digits only, in one script with the designation's ``ТММ``
+    (Latin letters transliterated to Cyrillic on a Russian sheet, :func:`_script`), and short
+    enough that ``ТММ.<code>.01`` fits графа 26 (:data:`~geomcad.sheet.frame.G26_WIDTH`) at
+    :data:`CODE_HEIGHT`. The code is the stem's first words whole, joined by
+    :data:`CODE_JOIN` (a dot), as many as fit, then the initials of the words left (one part,
+    digits whole) where they fit; words are cut at a word's end, never inside one (review 7:
+    the syllables of ``TANGROCKSLID`` did not read as words); where not even the first word
+    fits, the code is the initials (cut to the width only if they too do not fit). A stem
+    without letters or digits gives ``""``.
 
-    >>> code("sixbar_press.toml"), code("tangent_rocking_slider"), code("a/kulisa-23110713")
-    ('SIXBAR.PRESS', 'TANGENT.ROCKING', 'KULISA.23110713')
+    >>> code("sixbar_press.toml"), code("kulisa_inclined_ram"), code("a/kulisa-23110713")
+    ('СИКСБАР.ПРЕСС', 'КУЛИСА.ИР', 'КУЛИСА')
     """
-    words = [w.upper() for w in _words(stem(pid))]
+    from geomcad.sheet.frame import G26_WIDTH
+    from geomcad.sheet.lang import current
+    from geomcad.sheet.text import box, parse
+
+    lang = current()
+    words = [_script(w, lang) for w in _words(stem(pid))]
     if not words:
         return ""
-    out = words[0][:CODE_CHARS]
-    for w in words[1:]:
-        if len(out) + len(CODE_JOIN) + len(w) > CODE_CHARS:
-            break
-        out += CODE_JOIN + w
+    frame = _CODE_FRAME.get(lang, _CODE_FRAME["en"])
+
+    def fits(c: str) -> bool:
+        text = frame.format(j=CODE_JOIN, code=c)
+        return box(parse(text), CODE_HEIGHT)[0] <= G26_WIDTH - 2.0
+
+    k = 0
+    while k < len(words) and fits(CODE_JOIN.join(words[: k + 1])):
+        k += 1
+    out = CODE_JOIN.join(words[:k])
+    rest = "".join(w if w.isdigit() else w[0] for w in words[k:])
+    if rest and fits(CODE_JOIN.join([*words[:k], rest])):
+        return CODE_JOIN.join([*words[:k], rest])
+    if not out:  # not even the initials fit: they are cut
+        while len(rest) > 1 and not fits(rest):
+            rest = rest[:-1]
+        return rest
     return out

@@ -340,7 +340,10 @@ class Grid(Node):
     them the largest; ``cols`` fixes the number of columns. ``fitted`` (views of one scale
     group): each column as wide and each row as high as its largest drawing needs at their one
     scale, not equal cells (the velocity plans of a turn, long in one position and tall in
-    another: review 8's rocking cylinder's twelve plans fitted no A2 in equal cells)."""
+    another: review 8's rocking cylinder's twelve plans fitted no A2 in equal cells).
+    ``rows_own`` (with ``fitted``): each row's cells as wide as that row's own drawings need,
+    not as their columns' widest (review 10: tangent's plans 9 and 10, 161 and 143 mm wide at
+    pa = 40 mm, widened two whole columns and the twelve fitted no A2)."""
 
     def __init__(
         self,
@@ -351,10 +354,12 @@ class Grid(Node):
         title_height: float = 5.0,
         group: str = "",
         fitted: bool = False,
+        rows_own: bool = False,
     ) -> None:
         super().__init__(*items, gap=gap, title=title, title_height=title_height, group=group)
         self.cols = cols
         self.fitted = fitted
+        self.rows_own = rows_own
 
 
 class Choice(Node):
@@ -844,8 +849,19 @@ def _grid_cells(node: Grid, box: Box, cols: int) -> list[tuple[Tree, Box]]:
     fitted = _fitted_lengths(node, cols, x1 - x0, y1 - y0) if node.fitted else None
     if fitted is not None:
         ws, hs = fitted
-    xs = [x0 + sum(ws[:c]) + c * node.gap for c in range(cols)]
     ys = [y0 + sum(hs[:r]) + r * node.gap for r in range(rows)]
+    if fitted is not None and node.rows_own:
+        out: list[tuple[Tree, Box]] = []
+        for r in range(rows):
+            row = list(range(r * cols, min(n, (r + 1) * cols)))
+            own = _fitted_lengths(node, len(row), x1 - x0, y1 - y0, row)
+            rws = own[0] if own is not None else ws[: len(row)]
+            xr = x0
+            for i, w in zip(row, rws, strict=True):
+                out.append((node.items[i], (xr, ys[r], xr + w, ys[r] + hs[r])))
+                xr += w + node.gap
+        return out
+    xs = [x0 + sum(ws[:c]) + c * node.gap for c in range(cols)]
     return [
         (
             it,
@@ -861,17 +877,19 @@ def _grid_cells(node: Grid, box: Box, cols: int) -> list[tuple[Tree, Box]]:
 
 
 def _fitted_lengths(
-    node: Grid, cols: int, width: float, height: float
+    node: Grid, cols: int, width: float, height: float, only: Sequence[int] | None = None
 ) -> tuple[list[float], list[float]] | None:
     """A fitted grid's column widths and row heights (mm) in ``width`` × ``height``: each
     column's (row's) margins and titles, and a share of the rest in proportion to its largest
     drawing's model width (height), so that one scale draws every cell's drawing to its
     column's or row's limit; None (equal cells) where an item is no view with an extent or the
-    fixed parts leave no room."""
-    n = len(node.items)
+    fixed parts leave no room. ``only``: of these items alone (one row of a ``rows_own``
+    grid)."""
+    items = node.items if only is None else [node.items[i] for i in only]
+    n = len(items)
     rows = math.ceil(n / cols)
     sizes = []
-    for it in node.items:
+    for it in items:
         ext = _ext(it) if isinstance(it, View) else None
         if ext is None or not isinstance(it, View):
             return None
@@ -1657,7 +1675,13 @@ def _least(t: Tree, wants: Mapping[View, float]) -> list[tuple[float, float]]:
         lh = [min(h for _, h in kid) for kid in kids]
         for cols in [t.cols] if t.cols else range(1, n + 1):
             rows = math.ceil(n / cols)
-            if t.fitted:  # each column (row) as its largest child needs
+            if t.fitted and t.rows_own:  # each row as its own children need
+                cws = max(sum(lw[r * cols : (r + 1) * cols]) for r in range(rows))
+                chs = sum(
+                    max(lh[i] for i in range(r * cols, min(n, r * cols + cols)))
+                    for r in range(rows)
+                )
+            elif t.fitted:  # each column (row) as its largest child needs
                 cws = sum(max(lw[i] for i in range(c, n, cols)) for c in range(cols))
                 chs = sum(
                     max(lh[i] for i in range(r * cols, min(n, r * cols + cols)))

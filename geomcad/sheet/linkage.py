@@ -396,7 +396,15 @@ def _trees(
         # the plans' sheet: its grid over the whole field, or above the title block's height
         # (review 7: tangent's last plan, tall, in the cell the title block cuts drew all
         # twelve at pa = 39 mm; a row of cells clear of it keeps pa at its rule)
-        plans_sheet = Choice(vplans, Column(vplans, title_block_spacer()))
+        # or in rows each as wide as its own plans need (review 10: tangent's plans 9 and 10
+        # widened two columns of the aligned grid, which fitted no A2 at pa = 40 mm; the A1
+        # taken was 68 % blank)
+        shelves = Grid(*vviews, title=WORDS("vplans"), group="v", title_height=TITLE_H,
+                       fitted=True, rows_own=True)  # fmt: skip
+        plans_sheet = Choice(
+            vplans, Column(vplans, title_block_spacer()),
+            shelves, Column(shelves, title_block_spacer()),
+        )  # fmt: skip
         return (first, plans_sheet), mech, True, wants
     sheet = Choice(
         Column(Row(mech_node(), vplans), Row(diagrams, aplans, Column(tables, order))),

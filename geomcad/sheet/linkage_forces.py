@@ -2208,6 +2208,10 @@ def _thin(y: npt.NDArray[np.float64]) -> npt.NDArray[np.float64]:
 
 #: Wittenbauer's tangents are drawn at least this steep (degrees; the ω_min one, the flatter).
 WITT_MIN_DEG = 5.0
+#: ... unless that would draw the I_пр axis shorter than this (mm): then the axis is this long
+#: (where the box has the room) and the tangents as steep as its scale makes them (review 10:
+#: slider_rocker_rpr's I_пр ≤ 0,007 kg·m² beside ΔT over 270 J drew a 15 mm-wide sliver).
+WITT_LEAST_MM = 60.0
 
 
 class _Wittenbauer(View):
@@ -2234,11 +2238,20 @@ class _Wittenbauer(View):
         ay = Axis.fit("ΔT", WORDS("J"), lo, hi, max(h - self.BELOW - self.ABOVE - 6.0, 1.0), "T")
         # the I_пр axis no longer than draws the ω_min tangent WITT_MIN_DEG steep (review 9: a
         # wide flat box drew the tangents at 2.2° and 1.9°, a strip no hand could construct)
-        room = max(w - self.LEFT - self.RIGHT, 1.0)
+        box = max(w - self.LEFT - self.RIGHT, 1.0)
+        room = box
         slope = 0.5 * fw.omega_min**2
         if slope > 0.0 and i_hi > 0.0:
-            room = min(room, max(i_hi * slope / (math.tan(math.radians(WITT_MIN_DEG)) * ay.k), 1.0))
+            steep = i_hi * slope / (math.tan(math.radians(WITT_MIN_DEG)) * ay.k)
+            room = min(box, max(steep, 1.0))
         ax = Axis.fit(WORDS("I_pr"), WORDS("kgm2"), 0.0, i_hi, room, "I")
+        least = min(WITT_LEAST_MM, box, ay.mm(ay.hi - ay.lo))  # never flatter than square
+        for _ in range(3):  # the factor's rounding up may leave the axis short of `least`
+            drawn = ax.mm(ax.hi - ax.lo)
+            if drawn >= least or room >= box:
+                break
+            room = min(box, room * max(least, room) / max(drawn, 1.0))
+            ax = Axis.fit(WORDS("I_pr"), WORDS("kgm2"), 0.0, i_hi, room, "I")
         return ax, ay
 
     def used(self, w: float, h: float) -> tuple[float, float]:
