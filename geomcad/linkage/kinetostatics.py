@@ -83,6 +83,7 @@ ORDER_KINDS = frozenset(
         "polygon_closing",
         "slide_arm",
         "slide_couple",
+        "slide_far",
         "crank",
         "balancing_moment",
         "zhukovsky",
@@ -108,6 +109,11 @@ def _part(
 #: A sliding pair's reaction lies at most this many crank lengths from its joint; beyond, the
 #: normal force is about zero and the pair carries a couple (see :class:`Reaction`).
 ARM_MAX = 1.0e3
+#: ... and at most this many times the mechanism's reach at the position (the largest distance
+#: between two of its points): a point farther off lies on no drawing of the link (review 11: a
+#: guide bar's 0.34 N weight reaction 2.8 m off a 0.1 m mechanism drew its free body at 1:15);
+#: beyond, the reaction is drawn at its joint with the pair's couple, the same equivalent system.
+REACH_MAX = 2.0
 
 
 @dataclass(frozen=True)
@@ -472,6 +478,12 @@ def _name(i: int, j: int) -> str:
 class _Solver:
     def __init__(self, lk: Linkage, P: Position, c: Construction) -> None:
         self.lk, self.P, self.c = lk, P, c
+        pts = list(P.pos.values())
+        reach = max(((p - q).norm for p in pts for q in pts), default=0.0)
+        #: the farthest a sliding pair's reaction lies from its joint (m)
+        self.arm_max = (
+            min(ARM_MAX * lk.length, REACH_MAX * reach) if reach > 0.0 else (ARM_MAX * lk.length)
+        )
         self.reactions: list[Reaction] = []
 
     def _react(
@@ -612,8 +624,9 @@ class _Solver:
     ) -> tuple[float, float]:
         """h with h·n = couple: the point of a sliding pair's reaction along the slide, and no
         couple; where that point would lie farther than :data:`ARM_MAX` crank lengths (a normal
-        force of about zero), h = 0 and the pair's couple."""
-        if n != 0.0 and abs(couple) <= abs(n) * ARM_MAX * self.lk.length:
+        force of about zero) or :data:`REACH_MAX` times the mechanism's reach (off any drawing
+        of the link), h = 0 and the pair's couple."""
+        if n != 0.0 and abs(couple) <= abs(n) * self.arm_max:
             h = couple / n
             self.c.value(
                 name,
@@ -624,6 +637,17 @@ class _Solver:
                 args={"F": force, "J": joint, "link": link, "value": abs(h)},
             )
             return h, 0.0
+        if n != 0.0 and abs(couple) <= abs(n) * ARM_MAX * self.lk.length:
+            self.c.value(
+                name + " (couple)",
+                couple,
+                f"ΣM_{joint}(link {link}) = 0: the reaction's point, {abs(couple / n):.4g} m "
+                f"along the slide from {joint}, lies off the mechanism: the force at {joint} "
+                "and the slide's couple",
+                kind="slide_far",
+                args={"F": force, "J": joint, "link": link, "value": couple, "h": abs(couple / n)},
+            )
+            return 0.0, couple
         self.c.value(
             name + " (couple)",
             couple,

@@ -58,6 +58,7 @@ import numpy.typing as npt
 
 from geomcad import tol
 from geomcad.construction.recorder import Step
+from geomcad.errors import ParameterError
 from geomcad.forces import ForcePolygon
 from geomcad.geom import Vec
 from geomcad.linkage.analysis import analyse
@@ -477,8 +478,13 @@ def _rowed(
     under = isinstance(found[0], Choice) and len(found[0].items) > ARRANGEMENTS
     tree, _w = _sheet2(s, P, f, k, TEXT_H, None, shared, kin, own, under, rowed=True)
     last = len(_alternatives(tree)) - 1
-    cand, _rules = _final2(s, P, f, k, found[1], shared, found[1].fmt, kin, own, under,
-                           only=last, rowed=True)  # fmt: skip
+    try:
+        cand, _rules = _final2(s, P, f, k, found[1], shared, found[1].fmt, kin, own, under,
+                               only=last, rowed=True)  # fmt: skip
+    except ParameterError:
+        # the row has no room for a view on this format (review 11: a 12 mm crank's groups
+        # beside a rocker's long arm): the arrangement found stands
+        return found
     got = cand[1].layout
     was = {(type(pl.view).__name__, pl.view.title): pl.scale.k for pl in lay if pl.scale}
     now = {(type(pl.view).__name__, pl.view.title): pl.scale.k for pl in got if pl.scale}
