@@ -253,12 +253,18 @@ class Insets:
             free.mark(it)
         marks: list[tuple[str, Vec, list[Short], tuple[float, float]]] = []
         # the circles and their letters first (each beside its own circle), then the insets
-        for q, shorts, c, r in self.clusters(v):
+        rings = self.clusters(v)
+        radii = [r for *_, r in rings]
+        for i, (q, shorts, c, r) in enumerate(rings):
             letter = next(letters)
             self.drawn.append((letter, self.scale))
-            circle = CircleItem(c, _clear_radius(d.sheet.items[start:], c, r), "thin")
+            # past a block or an arc round the point, as far as the other circles leave room
+            room = min((math.dist(c, o[2]) - radii[j] - CIRCLES_APART_MM
+                        for j, o in enumerate(rings) if j != i), default=math.inf)  # fmt: skip
+            radii[i] = max(r, min(_clear_radius(d.sheet.items[start:], c, r), room))
+            circle = CircleItem(c, radii[i], "thin")
             d.sheet.add(circle)
-            free.letter(d, letter, c, r)  # its own circle is not in its way
+            free.letter(d, letter, c, radii[i])  # its own circle is not in its way
             free.mark(circle)
             marks.append((letter, q, shorts, c))
         for letter, q, shorts, c in marks:
