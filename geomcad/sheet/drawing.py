@@ -369,10 +369,13 @@ class Viewport:
         the stand points along the model direction ``down``."""
         symbols.pivot(self.sheet, self.p(q), self.paper_dir(down))
 
-    def guide(self, a: PointLike, b: PointLike, side: tuple[float, float] = (0.0, -1.0)) -> None:
+    def guide(
+        self, a: PointLike, b: PointLike, side: tuple[float, float] = (0.0, -1.0),
+        block: float = symbols.SLIDER_SIZE[1],
+    ) -> None:  # fmt: skip
         """A slider's fixed guide from a to b, hatched on the model side ``side``, drawn
-        clear of the slider block."""
-        symbols.guide(self.sheet, self.p(a), self.p(b), self.paper_dir(side))
+        clear of the slider block (``block`` mm across the guide)."""
+        symbols.guide(self.sheet, self.p(a), self.p(b), self.paper_dir(side), block)
 
     def slider(
         self,

@@ -20,7 +20,7 @@ from __future__ import annotations
 
 import itertools
 import math
-from collections.abc import Iterator, Mapping
+from collections.abc import Iterator, Mapping, Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -40,6 +40,48 @@ WORDS = Words(__package__, "linkage_forces")
 
 #: The radius (mm) of the thin circle round a point whose short forces are in an inset.
 MARK_R = 3.5
+#: An inset's circle round a point inside a filled block larger than the circle (a knot's
+#: slider, scheme.KNOT_SLIDER) runs this far (mm) past the block's corners: not hidden by it.
+PAST_BLOCK_MM = 0.5
+#: An inset's circle keeps this far (mm) from a moment's arc about the same point.
+ARC_APART_MM = 2.0
+
+
+def _past_blocks(items: Sequence[object], c: tuple[float, float]) -> float:
+    """The radius (mm) about sheet point ``c`` that clears, by :data:`PAST_BLOCK_MM`, the
+    corners of every filled block among ``items`` that holds ``c`` (0 where none does)."""
+    out = 0.0
+    for it in items:
+        if not (isinstance(it, Polyline) and it.fill and it.closed and len(it.points) > 3):
+            continue
+        if _holds(it.points, c):
+            out = max(out, max(math.dist(q, c) for q in it.points) + PAST_BLOCK_MM)
+    return out
+
+
+def _clear_radius(items: Sequence[object], c: tuple[float, float], r: float) -> float:
+    """An inset's circle's radius about sheet point ``c``: ``r``, or past a filled block round
+    the point (:func:`_past_blocks`), and then :data:`ARC_APART_MM` outside every arc about
+    the same point it would come closer to (a moment's arc: two lines apart, not one)."""
+    r = max(r, _past_blocks(items, c))
+    arcs = sorted(it.r for it in items
+                  if isinstance(it, ArcItem) and math.dist(it.c, c) < CIRCLES_APART_MM)  # fmt: skip
+    for ra in arcs:
+        if abs(ra - r) < ARC_APART_MM:
+            r = ra + ARC_APART_MM
+    return r
+
+
+def _holds(poly: Sequence[tuple[float, float]], c: tuple[float, float]) -> bool:
+    """Whether the closed polygon ``poly`` holds the point ``c`` (crossings of a ray)."""
+    inside = False
+    for a, b in zip(poly, (*poly[1:], poly[0]), strict=True):
+        if (a[1] > c[1]) != (b[1] > c[1]):
+            x = a[0] + (c[1] - a[1]) * (b[0] - a[0]) / (b[1] - a[1])
+            inside ^= c[0] < x
+    return inside
+
+
 #: Two insets' circles on a view keep at least this far (mm) apart; closer, they are one.
 CIRCLES_APART_MM = 1.0
 #: An inset draws its points at least this far (mm) apart: one of points closer on the view
@@ -211,12 +253,18 @@ class Insets:
             free.mark(it)
         marks: list[tuple[str, Vec, list[Short], tuple[float, float]]] = []
         # the circles and their letters first (each beside its own circle), then the insets
-        for q, shorts, c, r in self.clusters(v):
+        rings = self.clusters(v)
+        radii = [r for *_, r in rings]
+        for i, (q, shorts, c, r) in enumerate(rings):
             letter = next(letters)
             self.drawn.append((letter, self.scale))
-            circle = CircleItem(c, r, "thin")
+            # past a block or an arc round the point, as far as the other circles leave room
+            room = min((math.dist(c, o[2]) - radii[j] - CIRCLES_APART_MM
+                        for j, o in enumerate(rings) if j != i), default=math.inf)  # fmt: skip
+            radii[i] = max(r, min(_clear_radius(d.sheet.items[start:], c, r), room))
+            circle = CircleItem(c, radii[i], "thin")
             d.sheet.add(circle)
-            free.letter(d, letter, c, r)  # its own circle is not in its way
+            free.letter(d, letter, c, radii[i])  # its own circle is not in its way
             free.mark(circle)
             marks.append((letter, q, shorts, c))
         for letter, q, shorts, c in marks:

@@ -1056,7 +1056,7 @@ class _Mechanism(View):
             for P in s.drawn:
                 if not any(_in_block(v.p(P.pos[name]), c, u) for c, u in blocks):
                     v.dot(P.pos[name])
-        lettered = set(labels.values())
+        lettered = {n for t in labels.values() for n in t.split(", ")}  # "B, K": K lettered
         marked = {k: ", ".join(markup_of(n) for n in t.split(", ")) for k, t in labels.items()}
         numbers: dict[str, Vec] = {}
         for g in lk.groups:  # a yoke's number on its rod between the slot and the guide

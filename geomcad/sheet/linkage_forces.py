@@ -124,6 +124,7 @@ from geomcad.sheet.loads import (
     VIEW_NEGLIGIBLE,
     Clearance,
     ForceScales,
+    _inside,
     force,
     moment,
     view_scales,
@@ -1151,7 +1152,7 @@ def _draw_loads(
     for ld in loads:
         if ld.force is None and ld.moment != 0.0:
             c = centre_vec(lk, ld.link, P.pos)
-            r = _moment_radius(v, c, arcs)
+            r = _moment_radius(v, c, arcs, clear)
             moment(v, c, ld.moment, r, load_name(ld.name), role, height=2.5)
     forces = [ld for ld in loads if ld.force is not None and ld.at is not None]
     if clear is not None:
@@ -1197,15 +1198,27 @@ def _cost(v: Viewport, ld: Applied, fs: ForceScales, clear: Clearance) -> float:
     return clear.best(v.p(ld.at), u, F.norm / fs.k_at(F.norm), False)[0]
 
 
-def _moment_radius(v: Viewport, c: Vec, arcs: dict[tuple[float, float], int]) -> float:
+def _moment_radius(
+    v: Viewport, c: Vec, arcs: dict[tuple[float, float], int], clear: Clearance | None = None
+) -> float:
     """The radius (mm) of the next moment's arc about model point ``c``: :data:`MOMENT_MM`,
     each further one about the same point (within 0.5 mm on the sheet) :data:`MOMENT_STEP_MM`
-    larger."""
+    larger; and at least :data:`MOMENT_PAST_MM` past the corners of a filled block round the
+    point (``clear``'s solids: a knot's slider, which would hide the arc)."""
     x, y = v.p(c)
     key = next((q for q in arcs if math.hypot(q[0] - x, q[1] - y) < 0.5), (x, y))
     n = arcs.get(key, 0)
     arcs[key] = n + 1
-    return MOMENT_MM + MOMENT_STEP_MM * n
+    reach = [
+        float(np.hypot(q[:, 0] - x, q[:, 1] - y).max())
+        for q in (clear.solids() if clear is not None else [])
+        if _inside(np.array([(x, y)]), [q])[0]
+    ]
+    return max([MOMENT_MM, *(r + MOMENT_PAST_MM for r in reach)]) + MOMENT_STEP_MM * n
+
+
+#: A moment's arc runs this far (mm) past the corners of a filled block round its point.
+MOMENT_PAST_MM = 0.5
 
 
 #: The height (mm) of the line under a view's caption that states the further μ_F.
@@ -1431,10 +1444,17 @@ class _Loaded(_Forces):
         ins = Insets(self.fs, P.pos)
         clear = Clearance(d.sheet, len(d.sheet.items), _field(at))
         draw_scheme(v, scheme(lk, P), bodies=link_bodies(lk, P), pair_labels={},
-                    label_height=3.5, guides=frame_guides(lk))  # fmt: skip
-        for name in P.pos:  # every named point, the frame's (O, C) too
+                    label_height=3.5, guides=frame_guides(lk), guide_axes=True)  # fmt: skip
+        places: dict[str, list[str]] = {}  # every named point, the frame's (O, C) too; the
+        for name in P.pos:  # names of one place in one label ("B, K": a pin carrying a block)
             if name in lk.owner:
-                v.label(P.pos[name], markup_of(name), 3.5, clear=1.0)
+                there = next(
+                    (k for k in places if P.pos[k].dist(P.pos[name]) <= tol.SAME_PLACE * lk.length),
+                    name,
+                )
+                places.setdefault(there, []).append(name)
+        for there, names in places.items():
+            v.label(P.pos[there], ", ".join(markup_of(n) for n in names), 3.5, clear=1.0)
         # the moments, then the forces, each clear of the links and of the arrows before it
         _draw_loads(v, lk, P, self.loads, self.fs, "vector", clear, insets=ins)
         omega_arrow(v, lk, P)

@@ -494,7 +494,7 @@ class Clearance:
             return known
         out: list[tuple[XY, XY]] = []
         for it in items[max(done, self.start) :]:
-            if isinstance(it, TextItem):
+            if isinstance(it, TextItem) or it.role == "centre":  # an axis: a load may run on it
                 continue
             pts = chord_points(it)
             out += [(a_, b_) for a_, b_ in itertools.pairwise(pts) if a_ != b_]

@@ -28,6 +28,8 @@ from geomcad.structure import Mechanism, Pair
 
 #: Half the length (mm) of a guide drawn for a prismatic pair on the frame.
 GUIDE_HALF = 7.0
+#: A guide's dash-dot axis runs this far (mm) past its hatched ends (where no travel is drawn).
+GUIDE_AXIS_PAST = 4.0
 
 
 @dataclass(frozen=True)
@@ -93,6 +95,7 @@ def draw_scheme(
     travel: Mapping[str, Sequence[PointLike]] | None = None,
     link_space: float = 0.0,
     letter_space: float = 0.0,
+    guide_axes: bool = False,
 ) -> None:
     """Draw ``mech`` in viewport ``v`` (see the module docstring).
 
@@ -111,7 +114,8 @@ def draw_scheme(
     guide hatched along it (GOST 2.770: the frame's guide over the slider's travel). A link
     given a body is drawn as that body, never as a block. ``link_space``: mm the links'
     numbers keep further than usual from other texts (where position numbers stand near them),
-    ``letter_space`` the pairs' letters.
+    ``letter_space`` the pairs' letters. ``guide_axes``: each guide of the frame without a
+    ``travel`` gets its axis, dash-dot (a caller that draws no axis of its own).
     """
     bodies = dict(bodies or {})
     size = mech.size()
@@ -127,11 +131,13 @@ def draw_scheme(
     for p in mech.pairs:
         if not p.lower:
             _higher(v, mech, p, role)
-    for p in mech.pairs:
-        if p.kind == "P":
-            at = (guides or {}).get(p.name)
-            run = [vec(q) for q in (travel or {}).get(p.name, ())]
-            _prismatic(v, mech, p, role, ghosts, drawn, None if at is None else vec(at), run)
+    knots = _knots(mech, drawn, ghosts)  # a knot's carried block drawn last, in its slider
+    for p in sorted((p for p in mech.pairs if p.kind == "P"), key=lambda p: p.name in knots):
+        at = (guides or {}).get(p.name)
+        run = [vec(q) for q in (travel or {}).get(p.name, ())]
+        knot = p.name in knots or p.name in knots.values()
+        _prismatic(v, mech, p, role, ghosts, drawn, None if at is None else vec(at), run, knot,
+                   guide_axes)  # fmt: skip
     for p in mech.pairs:
         if p.kind == "R":
             if mech.frame in p.links:
@@ -140,6 +146,64 @@ def draw_scheme(
                 v.joint(p.at)
     _labels(v, mech, drawn, size, pair_labels, link_labels, label_height, ghosts, link_space,
             letter_space)  # fmt: skip
+
+
+#: Where a slider on the frame's guide carries, at its own point, a block that slides on a moving
+#: link (a knot: review 10's slider_rocker_rpr, block 4 on arm 5 at the slider's pin B ≡ K), the
+#: carried block is drawn this size (mm) on its link and the slider round it, large enough to
+#: hold it at any turn (:data:`KNOT_SLIDER`), on a guide that wide: neither hides the other.
+KNOT_BLOCK = (6.0, 3.5)
+#: The knot's slider: the carried block's circumscribed circle with 0.5 mm to spare across the
+#: guide, and 3 mm of its ends showing beyond that circle along it.
+KNOT_SLIDER = (math.hypot(*KNOT_BLOCK) + 6.0, math.hypot(*KNOT_BLOCK) + 1.0)
+
+
+def _knots(
+    mech: Mechanism, drawn: Mapping[str, Sequence[Body]], ghosts: Collection[str]
+) -> dict[str, str]:
+    """The knots of ``mech``: each prismatic pair between moving links whose block sits at the
+    point of a block sliding on the frame's guide, mapped to that frame pair's name."""
+    size = mech.size()
+
+    def block(p: Pair) -> bool:
+        return any(is_block(mech, lk) and not drawn.get(lk) and lk not in ghosts
+                   for lk in p.links if lk != mech.frame)  # fmt: skip
+
+    slides = [p for p in mech.pairs if p.kind == "P" and mech.frame in p.links and block(p)]
+    out: dict[str, str] = {}
+    for p in mech.pairs:
+        if p.kind == "P" and mech.frame not in p.links and block(p):
+            on = next((f for f in slides if _same(f.at, p.at, size)), None)
+            if on is not None and not any(lk in ghosts for lk in (*p.links, *on.links)):
+                out[p.name] = on.name
+    return out
+
+
+def knots_axis(mech: Mechanism, p: Pair) -> Vec:
+    """The axis of the frame's guide whose slider carries the knot's block of pair ``p``."""
+    size = mech.size()
+    f = next(q for q in mech.pairs if q.kind == "P" and mech.frame in q.links
+             and _same(q.at, p.at, size))  # fmt: skip
+    assert f.axis is not None
+    return f.axis
+
+
+def _across(v: Viewport, q: Vec, u: Vec, size: tuple[float, float], along: Vec, role: str) -> None:
+    """The line of a link through ``q`` along model direction ``u`` drawn across a slider
+    block of ``size`` (mm) centred on ``q`` along ``along`` (the block's fill hides it there):
+    a strip of the main line's width on the fill's layer, to the block's outline."""
+    c, w = Vec(*v.p(q)), Vec(*v.paper_dir(u)).unit()
+    a = Vec(*v.paper_dir(along)).unit()
+    n = a.perp()
+    t = min(
+        size[0] / 2.0 / abs(w.dot(a)) if abs(w.dot(a)) > 0.0 else math.inf,
+        size[1] / 2.0 / abs(w.dot(n)) if abs(w.dot(n)) > 0.0 else math.inf,
+    )
+    S = MAIN_LINE.get(v.sheet.format, 0.7)
+    half = (STYLES[role].weight - STYLES["joint"].weight) * S / 2.0
+    h = w.perp() * half
+    strip = (c - w * t + h, c + w * t + h, c + w * t - h, c - w * t - h)
+    v.sheet.add(Polyline(tuple((x.x, x.y) for x in strip), "joint", closed=True))
 
 
 #: A frame hinge's support stands upright (pointing down) unless a link it carries comes
@@ -192,14 +256,15 @@ def support_direction(dirs: Sequence[Vec]) -> tuple[float, float]:
 
 def _block(
     v: Viewport, q: Vec, along: Vec, role: str, drawn: Mapping[str, Sequence[Body]] | None = None,
+    size: tuple[float, float] = SLIDER_SIZE,
 ) -> None:  # fmt: skip
     """A slider block centred on q along the sliding axis (no joint circle: a joint, where
     there is one, is its own pair); a highlighted block is filled. A line of the ``drawn``
     bodies that ends at q runs on over the block's fill to q (GOST 2.770: a rod jointed to the
     block reaches its joint circle, not the block's edge): a strip of the main line's width
     on the fill's layer, under the joint circle drawn after it."""
-    symbols.block(v.sheet, v.p(q), v.paper_dir(along), role, with_joint=False)
-    reach = math.hypot(*SLIDER_SIZE) / 2.0  # mm: the block's half-diagonal
+    symbols.block(v.sheet, v.p(q), v.paper_dir(along), role, with_joint=False, size=size)
+    reach = math.hypot(*size) / 2.0  # mm: the block's half-diagonal
     c = Vec(*v.p(q))
     S = MAIN_LINE.get(v.sheet.format, 0.7)
     half = (STYLES["link"].weight - STYLES["joint"].weight) * S / 2.0
@@ -230,9 +295,15 @@ def _prismatic(
     drawn: Mapping[str, Sequence[Body]],
     guide_at: Vec | None = None,
     run: Sequence[Vec] = (),
+    knot: bool = False,
+    axis: bool = False,
 ) -> None:
+    """A prismatic pair's symbol (see the module docstring); ``knot``: the pair is a knot's
+    (:data:`KNOT_BLOCK`): the frame's slider drawn round the carried block, on a guide that
+    wide, the carried block smaller."""
     assert p.axis is not None
     u = p.axis
+    size = (KNOT_SLIDER if mech.frame in p.links else KNOT_BLOCK) if knot else SLIDER_SIZE
 
     def block(lk: str) -> bool:  # a link of one point, not given a body of its own
         return is_block(mech, lk) and not drawn.get(lk)
@@ -253,18 +324,24 @@ def _prismatic(
             ts = [(q - g).dot(u) for q in run]
             lo, hi = min(*ts, -k) - k, max(*ts, k) + k
             v.seg(g + u * lo, g + u * hi, "thin")
+        elif axis:  # the guide's axis (dash-dot) a little past the hatched guide's ends
+            e = v.scale.model(GUIDE_AXIS_PAST)
+            v.seg(g + u * (lo - e), g + u * (hi + e), "centre")
         # the fixed guide hatched on both sides over that travel (at least the slider's length)
         a, b = g + u * lo, g + u * hi
         n = u.perp()
-        v.guide(a, b, (n.x, n.y))
-        v.guide(b, a, (-n.x, -n.y))
+        v.guide(a, b, (n.x, n.y), size[1])
+        v.guide(b, a, (-n.x, -n.y), size[1])
         link = p.other(mech.frame)
         if block(link):
-            _block(v, p.at, u, role[link], drawn)
+            _block(v, p.at, u, role[link], drawn, size)
         return
     for lk in p.links:
         if block(lk):
-            _block(v, p.at, u, role[lk], drawn)
+            if knot:  # the link it slides on runs across the slider's fill to the block
+                on = p.other(lk)
+                _across(v, p.at, u, KNOT_SLIDER, knots_axis(mech, p), role[on])
+            _block(v, p.at, u, role[lk], drawn, size)
             return
 
 

@@ -93,12 +93,14 @@ def pivot(sheet: Sheet, at: XY, down: tuple[float, float] = (0.0, 1.0)) -> None:
     joint(sheet, at)
 
 
-def guide(sheet: Sheet, a: XY, b: XY, side: tuple[float, float]) -> None:
-    """A fixed guide along the sliding axis from a to b, drawn clear of the slider block on the
-    paper side ``side`` and hatched away from the axis (the offset and the hatching scale
-    with ``side``'s length: give a unit vector)."""
+def guide(
+    sheet: Sheet, a: XY, b: XY, side: tuple[float, float], block: float = SLIDER_SIZE[1]
+) -> None:
+    """A fixed guide along the sliding axis from a to b, drawn clear of the slider block
+    (``block`` mm across the guide) on the paper side ``side`` and hatched away from the axis
+    (the offset and the hatching scale with ``side``'s length: give a unit vector)."""
     out = side
-    off = SLIDER_SIZE[1] / 2.0 + 0.6
+    off = block / 2.0 + 0.6
     ground(
         sheet,
         (a[0] + out[0] * off, a[1] + out[1] * off),
