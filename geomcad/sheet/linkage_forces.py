@@ -94,6 +94,7 @@ from geomcad.sheet.compose import (
     arrange,
     compose,
     natural_of,
+    round_scale,
     round_scale_down,
 )
 from geomcad.sheet.compose import _title_width as title_width
@@ -555,7 +556,11 @@ def _pinned(
         own = [g for g in _coarser(pin) if pin / g >= GROUPS_SHARE / e] if short else []
         for pg in (pin, *own):
             got_one = _pin_try(s, P, f, k, kin, largest, field, pin, pg)
-            if got_one is not None and (not kept or _no_coarser(best[1].layout, got_one[1].layout)):
+            # (the plans keep their μ_F: one step of their series coarser at most where the
+            # rule is mended, none where the views only grow)
+            if got_one is not None and (
+                short or _no_coarser(best[1].layout, got_one[1].layout, not kept)
+            ):
                 break
         else:
             break
@@ -589,9 +594,10 @@ def _pin_try(
 GROW_L_STEPS = 2
 
 
-def _no_coarser(was: Layout, now: Layout) -> bool:
+def _no_coarser(was: Layout, now: Layout, step: bool = False) -> bool:
     """Whether ``now`` draws every view but the drawings of links at a scale no coarser than
-    ``was`` does (the same views by kind and title)."""
+    ``was`` does (the same views by kind and title); ``step``: a force plan at most one step of
+    its series coarser."""
 
     def scales(lay: Layout) -> dict[tuple[str, str], float]:
         links = _Loaded | _FreeBody
@@ -599,6 +605,9 @@ def _no_coarser(was: Layout, now: Layout) -> bool:
                 if pl.scale is not None and not isinstance(pl.view, links)}  # fmt: skip
 
     a, b = scales(was), scales(now)
+    if step:
+        a = {key: round_scale(kk * (1.0 + 4.0 * tol.REL_LENGTH), "F", "nice").k
+             if key[0] == "Polygon" else kk for key, kk in a.items()}  # fmt: skip
     return a.keys() == b.keys() and all(b[key] <= kk * (1.0 + tol.REL_LENGTH)
                                         for key, kk in a.items())  # fmt: skip
 
