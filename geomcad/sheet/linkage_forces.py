@@ -39,6 +39,13 @@ composition (:func:`force_layout`, issue 27):
   detail only where no arrangement on the largest format holds the mechanism's μ_l with it, and
   the crank cut out at its own μ_l where that takes less of the other views' room than its
   crank lost (review 7);
+- once the search has chosen, on the largest format: the mechanism, its groups and its crank
+  at ONE μ_l with the crank CRANK_MM long on it, pinned as a constraint in an arrangement of
+  its own (the mechanism as a band across the top or down the left edge, :func:`_pinned`),
+  where the search left them apart or the crank short; where no such arrangement holds them,
+  the mechanism at its crank's rule and the groups at one coarser μ_l of their own; where the
+  search kept the rule, the drawings of links one GOST step finer while every other view
+  keeps its scale (review 10);
 - the smallest format on which, besides, every force polygon is :data:`POLY_MM` across: the
   views grow, and the groups take their own μ_l, before a larger format is taken; on the format
   taken the tables are 3.5 mm high where the drawings of links keep their scales with it.
@@ -71,6 +78,7 @@ from geomcad.linkage.solution import Solved, scheme
 from geomcad.sheet import Drawing, Sheet, TitleBlock, fmt_number, formats, symbols
 from geomcad.sheet.compose import _GOST_K as GOST_K
 from geomcad.sheet.compose import (
+    GAP,
     TITLE_LEAD,
     TITLE_SPACING,
     Choice,
@@ -85,6 +93,8 @@ from geomcad.sheet.compose import (
     View,
     arrange,
     compose,
+    natural_of,
+    round_scale,
     round_scale_down,
 )
 from geomcad.sheet.compose import _title_width as title_width
@@ -416,6 +426,7 @@ def force_layout(s: Solved) -> tuple[Tree, formats.Sized]:
         ):
             found = own
     found = _rowed(s, P, forces, k, found, kin)
+    found = _pinned(s, P, forces, k, found, kin)
     for pl in found[1].layout:
         if isinstance(pl.view, _Lever):
             pl.view.grow(pl, found[1].layout)
@@ -502,6 +513,109 @@ def _rowed(
     ):
         return cand
     return found
+
+
+def _pinned(
+    s: Solved, P: Position, f: Forces, k: int | None, found: tuple[Tree, formats.Sized],
+    kin: float | None,
+) -> tuple[Tree, formats.Sized]:  # fmt: skip
+    """Once the search has chosen, on the largest format: the mechanism, its groups and its
+    crank at ONE μ_l with the crank at least CRANK_MM long on it, the μ_l pinned as a
+    constraint (:func:`_sheet2`'s ``pin``), where the search left them apart (groups at 1:4
+    beside a 1:2 mechanism, a crank cut out alone at 1:1) or the crank short (review 10: the
+    slider-rocker's 20 mm crank at 1:2.5, the sine mechanism's 18 mm at 1:2.5 where a 1:1 band
+    across the top holds 45 mm): the GOST steps from the coarsest that keeps the crank's rule,
+    finer while one holds; and, where the search kept the rule, the views grown into the
+    field: the next finer steps while the sheet holds every other view at a scale no coarser
+    (review 10: kulisa at 1:4 on a 52 %-blank A1). A step is taken where the sheet fits with
+    its tables whole, its plans' details in their boxes and the crank kept at the step; the
+    first that fails ends the search (a finer one needs more room still)."""
+    lk = s.linkage
+    fmts = sheet_formats(lk)
+    largest = max(fmts, key=lambda fm: FORMATS[fm][0] * FORMATS[fm][1])
+    best = found
+    lay = found[1].layout
+    if found[1].fmt != largest:
+        return found  # a smaller format holds the sheet with its rules: it is full enough
+    main = [pl.scale.k for pl in lay if isinstance(pl.view, _Loaded) and pl.scale is not None]
+    if not main:
+        return found
+    mk = main[0]
+    e = 1.0 + tol.REL_LENGTH
+    one = all(pl.scale.k <= mk * e and pl.scale.k >= mk / e for pl in lay
+              if isinstance(pl.view, _FreeBody) and pl.scale is not None)  # fmt: skip
+    kept = one and lk.length / mk >= CRANK_MM / e
+    steps = sorted((g for g in GOST_K if lk.length / g >= CRANK_MM / e), reverse=True)
+    if kept:
+        steps = [g for g in steps if g < mk / e][:GROW_L_STEPS]
+    field = Field.of_format(largest, True)
+    room = (field.box[2] - field.box[0], field.box[3] - field.box[1])
+    w, h = sweep_box(s)
+    for pin in steps:
+        if w / pin > room[0] or h / pin > room[1]:
+            break  # the mechanism alone is larger than the field
+        # one μ_l; where none holds, the groups at a coarser one of their own, at least
+        # GROUPS_SHARE of the mechanism's size, said in their captions
+        # (only where that lengthens the mechanism's crank: groups apart for groups apart
+        # would only move the views)
+        short = lk.length / mk < CRANK_MM / e
+        own = [g for g in _coarser(pin) if pin / g >= GROUPS_SHARE / e] if short else []
+        for pg in (pin, *own):
+            got_one = _pin_try(s, P, f, k, kin, largest, field, pin, pg)
+            # (the plans keep their μ_F: one step of their series coarser at most where the
+            # rule is mended, none where the views only grow)
+            if got_one is not None and (
+                short or _no_coarser(best[1].layout, got_one[1].layout, not kept)
+            ):
+                break
+        else:
+            break
+        best, kept = got_one, True
+        if pg != pin:
+            break  # the groups apart: the mechanism grows no further
+    return best
+
+
+def _pin_try(
+    s: Solved, P: Position, f: Forces, k: int | None, kin: float | None, fmt: str,
+    field: Field, pin: float, pin_groups: float,
+) -> tuple[Tree, formats.Sized] | None:  # fmt: skip
+    """Sheet 2 with its drawings of links pinned (:func:`_pinned`) where it fits on ``fmt``
+    with its tables whole, its plans' details in their boxes and the crank kept."""
+    tree, _wants = _sheet2(s, P, f, k, TEXT_H, shared=True, kin=kin, pin=pin,
+                           pin_groups=pin_groups)  # fmt: skip
+    try:
+        first = formats.Sized(fmt, True, arrange(tree, field))
+    except ParameterError:
+        return None  # a view finds no room at all
+    cand, _rules = _final2(s, P, f, k, first, True, fmt, kin, pin=pin, pin_groups=pin_groups)
+    got = cand[1].layout
+    if got.fits and _crank_kept(got) and _groups_kept(got) and _whole(got) and not _spilt(got):
+        return cand
+    return None
+
+
+#: The finer GOST steps of the mechanism's μ_l :func:`_pinned` tries where the search kept
+#: the crank's rule (the views grown into the field).
+GROW_L_STEPS = 2
+
+
+def _no_coarser(was: Layout, now: Layout, step: bool = False) -> bool:
+    """Whether ``now`` draws every view but the drawings of links at a scale no coarser than
+    ``was`` does (the same views by kind and title); ``step``: a force plan at most one step of
+    its series coarser."""
+
+    def scales(lay: Layout) -> dict[tuple[str, str], float]:
+        links = _Loaded | _FreeBody
+        return {(type(pl.view).__name__, pl.view.title): pl.scale.k for pl in lay
+                if pl.scale is not None and not isinstance(pl.view, links)}  # fmt: skip
+
+    a, b = scales(was), scales(now)
+    if step:
+        a = {key: round_scale(kk * (1.0 + 4.0 * tol.REL_LENGTH), "F", "nice").k
+             if key[0] == "Polygon" else kk for key, kk in a.items()}  # fmt: skip
+    return a.keys() == b.keys() and all(b[key] <= kk * (1.0 + tol.REL_LENGTH)
+                                        for key, kk in a.items())  # fmt: skip
 
 
 def _held(
@@ -657,6 +771,7 @@ def _final2(
     s: Solved, P: Position, f: Forces, k: int | None, z: formats.Sized, shared: bool,
     largest: str, kin: float | None = None, crank_own: bool = False, under: bool = False,
     weight: float = 1.0, held: bool = False, only: int | None = None, rowed: bool = False,
+    pin: float | None = None, pin_groups: float = 0.0,
 ) -> tuple[tuple[Tree, formats.Sized], bool]:  # fmt: skip
     """Sheet 2 on the format of ``z`` with its polygons' details reckoned at the μ_F each got
     there (see :func:`_compose2`), and whether it keeps the rules (where it does not on a format
@@ -670,7 +785,9 @@ def _final2(
     rules: list[bool] = []
     good: list[bool] = []
     for h in (TEXT_H, SMALL_TEXT_H):
-        tree, w = _sheet2(s, P, f, k, h, refs, shared, kin, crank_own, under, weight, held, rowed)
+        tree, w = _sheet2(
+            s, P, f, k, h, refs, shared, kin, crank_own, under, weight, held, rowed, pin, pin_groups
+        )
         tree = tree if only is None else _alternatives(tree)[only]
         lay = arrange(tree, field)
         # a plan placed at a coarser μ_F than its details were reckoned at may not hold them
@@ -678,7 +795,7 @@ def _final2(
         spilt = _spilt(lay)
         if spilt:
             tree, w = _sheet2(s, P, f, k, h, {**refs, **spilt}, shared, kin, crank_own, under,
-                              weight, held, rowed)  # fmt: skip
+                              weight, held, rowed, pin, pin_groups)  # fmt: skip
             tree = tree if only is None else _alternatives(tree)[only]
             lay = arrange(tree, field)
         tried.append((tree, formats.Sized(z.fmt, z.landscape, lay)))
@@ -828,7 +945,7 @@ def _sheet2(
     s: Solved, P: Position, f: Forces, k: int | None, h: float,
     refs: Mapping[str, tuple[float, tuple[float, float]]] | None = None, shared: bool = True,
     kin: float | None = None, crank_own: bool = False, under: bool = False, weight: float = 1.0,
-    held: bool = False, rowed: bool = False,
+    held: bool = False, rowed: bool = False, pin: float | None = None, pin_groups: float = 0.0,
 ) -> tuple[Tree, dict[View, float]]:  # fmt: skip
     """Sheet 2's tree, its tables and texts ``h`` high, and the scales its views want. The
     force polygons are drawn with their details where ``refs`` gives their reference μ_F and
@@ -846,7 +963,11 @@ def _sheet2(
     scale that takes a third of the sheet; tried only where the others leave the crank short).
     ``rowed``: one more, the last, the drawings of links and the lever side by side over the
     polygons and the tables in a row (tall narrow drawings: a press's vertical slider-crank;
-    tried once the search has chosen, :func:`_rowed`)."""
+    tried once the search has chosen, :func:`_rowed`). ``pin``: the mechanism, its groups and
+    its crank at this one μ_l (m/mm), never finer, sought as a constraint, with one arrangement
+    more, the last, the mechanism as a band across the top, the groups and the lever in a row
+    under it, the polygons and the tables under those (:func:`_pinned`); ``pin_groups``: the
+    groups and the crank cut out at this coarser μ_l of their own (0: at ``pin``)."""
     lk = s.linkage
     # the length scales from the geometry alone (a change of ω or of the loads rescales no
     # drawing of links): never finer than links_scale; the crank CRANK_MM long where the
@@ -860,7 +981,7 @@ def _sheet2(
     # the crank drawn short on the mechanism (where the format keeps no μ_l that draws it
     # CRANK_MM long) is drawn again in a detail (its letter taken where it is drawn)
     mech.solved = s
-    if sweep_mm(s, crank_scale(lk).k) <= SWEEP_MAX_MM:
+    if sweep_mm(s, crank_scale(lk).k) <= SWEEP_MAX_MM or pin is not None:
         mech.readable, mech.readable_mm = weight * lk.length, weight * CRANK_MM
     else:
         if kin is not None:
@@ -887,6 +1008,18 @@ def _sheet2(
         if crank_own and b.gf.group is None:
             b.group, b.least_k = CRANK_L, crank_scale(lk).k
             b.readable, b.readable_mm = lk.length, CRANK_MM
+    if pin is not None:
+        # one μ_l for all the drawings of links, the crank on it CRANK_MM long or more
+        for v in (mech, *bodies):
+            v.group, v.least_k, v.most_k = L_GROUP, pin, pin
+        if pin_groups > pin:
+            # the groups apart, at one μ_l of their own; the crank cut out (a small drawing)
+            # keeps the mechanism's, CRANK_MM long
+            for b in bodies:
+                b.group, b.least_k, b.most_k = GROUPS_L, pin_groups, pin_groups
+                if b.gf.group is None:
+                    b.group, b.least_k, b.most_k = CRANK_L, pin, pin
+        mech.readable, mech.readable_mm = lk.length, lk.length / pin
     mech.weight = 2.0 + sum(b.group == L_GROUP for b in bodies)
     if not shared:
         for b in bodies:
@@ -937,7 +1070,42 @@ def _sheet2(
     # beside the polygons, or down the right edge over the title block
     k_b = max(k_l, max(sweep_box(s)) / SWEEP_MM)
     band = _band(bodies, k_b)
-    tree = Choice(
+    if pin is not None:
+        # the mechanism at the pinned μ_l: a wide flat one (a long guide, a long rod) as a band
+        # across the top, a tall narrow one (a slotted lever, a press) down the left edge
+        tree: Tree = _pinned_tree(s, mech, bodies, lever, polys, right, pin,
+                                  max(pin, pin_groups))  # fmt: skip
+    else:
+        tree = _choice2(mech, band, lever, polys, right, groups, bodies, under, held, rowed)
+    # the format: the smallest on which the crank is CRANK_MM long (where the sweep allows it),
+
+    # every force polygon at least POLY_MM across and its longest vector at least PLAN_MM (a
+    # course project draws its plans large): a format too small for that is passed over
+    wants: dict[View, float] = {}
+    for p in polys:
+        big = max(pv.magnitude for poly, _ in p.layers for pv in poly.vectors)
+        side = max(_side(p))
+        want = max(big / PLAN_MM, side / POLY_MM)
+        if is_sliver(p.layers[-1][0]):
+            # a sliver (R01 = -R21) shows no more drawn long: at most SLIVER_MM in its cell
+            p.longest_mm = SLIVER_MM
+        if want > 0.0:
+            wants[p] = want
+        if big > 0.0 and pin is None:
+            # and on the largest format the search seeks it (its longest vector PLAN_SEEK_MM;
+            # with the μ_l pinned, the plans take what the drawings of links leave)
+            p.readable = max(p.readable, big * p.readable_mm / PLAN_SEEK_MM)
+    if mech.readable > 0.0:
+        wants[mech] = mech.readable / mech.readable_mm
+    return tree, wants
+
+
+def _choice2(
+    mech: View, band: Row, lever: View, polys: Sequence[View], right: Column, groups: Row,
+    bodies: Sequence[View], under: bool, held: bool, rowed: bool,
+) -> Choice:  # fmt: skip
+    """The arrangements of sheet 2 its search chooses from (see :func:`_sheet2`)."""
+    return Choice(
         Column(Row(mech, band), Row(lever, Grid(*polys), right)),
         Row(Column(mech, lever), Column(band, Row(Grid(*polys), right))),
         Column(Row(mech, lever, right), groups),
@@ -953,25 +1121,94 @@ def _sheet2(
         ),
         *([Column(Row(mech, band, lever), Row(Grid(*polys), Row(*right.items)))] if rowed else []),
     )
-    # the format: the smallest on which the crank is CRANK_MM long (where the sweep allows it),
-    # every force polygon at least POLY_MM across and its longest vector at least PLAN_MM (a
-    # course project draws its plans large): a format too small for that is passed over
-    wants: dict[View, float] = {}
-    for p in polys:
-        big = max(pv.magnitude for poly, _ in p.layers for pv in poly.vectors)
-        side = max(_side(p))
-        want = max(big / PLAN_MM, side / POLY_MM)
-        if is_sliver(p.layers[-1][0]):
-            # a sliver (R01 = -R21) shows no more drawn long: at most SLIVER_MM in its cell
-            p.longest_mm = SLIVER_MM
-        if want > 0.0:
-            wants[p] = want
-        if big > 0.0:
-            # and on the largest format the search seeks it (its longest vector PLAN_SEEK_MM)
-            p.readable = max(p.readable, big * p.readable_mm / PLAN_SEEK_MM)
-    if mech.readable > 0.0:
-        wants[mech] = mech.readable / mech.readable_mm
-    return tree, wants
+
+
+def _pinned_tree(
+    s: Solved, mech: _Loaded, bodies: Sequence[_FreeBody], lever: View, polys: Sequence[View],
+    right: Column, pin: float, pin_groups: float,
+) -> Tree:  # fmt: skip
+    """The one arrangement of :func:`_pinned`'s sheet, its drawings of links at ``pin``
+    m/mm: a mechanism whose drawing is wider than BAND_ASPECT of its height as a band across
+    the top, the groups and the lever in a row under it, the polygons and the tables under
+    those; a taller one down the left edge, the groups and the lever beside it over the
+    polygons and the tables. The boxes of the mechanism and of the groups are given, as large
+    as their drawings at ``pin`` (margins and captions included): the search shares only the
+    rest among the lever and the polygons."""
+    fmts = sheet_formats(s.linkage)
+    largest = max(fmts, key=lambda fm: FORMATS[fm][0] * FORMATS[fm][1])
+    field = Field.of_format(largest, True)
+    fw, fh = field.box[2] - field.box[0], field.box[3] - field.box[1]
+    mw, mh = _body_size(mech, pin)
+    band = _band(bodies, pin_groups)
+    bw, bh = _band_size(bodies, pin_groups)
+    if mw >= BAND_ASPECT * mh:
+        # under the band: the groups over the polygons, the table beside the order at the
+        # right edge (over the title block); the lever beside the mechanism where it leaves
+        # room, else beside the polygons
+        tables = Row(*right.items)
+        rest = max(fh - mh - bh - 2.0 * GAP, 1.0)
+        if fw - mw - GAP >= LEVER_SHARE * fw:  # the lever beside the mechanism
+            top: Tree = Row(lever, mech, weights=[fw - mw - GAP, mw])
+            below = Column(band, Grid(*polys), weights=[bh, rest])
+        else:  # the lever beside the polygons (the form's box in the field's corner above)
+            top = mech
+            mh += max((o[3] - field.box[1] for o in field.obstacles if o[1] <= field.box[1]),
+                      default=0.0)  # fmt: skip
+            rest = max(fh - mh - bh - 2.0 * GAP, 1.0)
+            below = Column(band, Row(lever, Grid(*polys)), weights=[bh, rest])
+        return Column(top, Row(below, tables), weights=[mh, max(fh - mh - GAP, 1.0)])
+    # the groups and the lever over the polygons, the mechanism beside them, the tables down
+    # the right edge
+    rw = max((nat[0] for it in right.items if (nat := natural_of(it)) is not None), default=0.0)
+    left = fw - mw - rw - 2.0 * GAP
+    rest = max(fh - bh - GAP, 1.0)
+    if bw <= BAND_SHARE * left:
+        side = Column(Row(band, lever, weights=[bw, max(left - bw - GAP, 1.0)]), Grid(*polys),
+                      weights=[bh, rest])  # fmt: skip
+    else:
+        side = Column(band, Row(lever, Grid(*polys)), weights=[bh, rest])
+    return Row(side, mech, right, weights=[max(left, 1.0), mw, 1.0])
+
+
+#: The room beside a mechanism drawn across the top (:func:`_pinned_tree`) takes the lever
+#: where it is at least this share of the field's width.
+LEVER_SHARE = 0.25
+#: The groups cut out take at most this share of the width beside the lever
+#: (:func:`_pinned_tree`); wider, the lever goes beside the polygons.
+BAND_SHARE = 0.6
+
+
+#: A mechanism drawn at least this many times wider than tall goes across the top of
+#: :func:`_pinned_tree`'s sheet, a narrower one down its left edge.
+BAND_ASPECT = 1.2
+
+
+def _body_size(v: View, k: float) -> tuple[float, float]:
+    """The box (mm) a drawing of links takes at ``k`` m/mm, its margins and caption in."""
+    w, h = _side(v)
+    return (max(w / k + 2.0 * v.margin, title_width(v)) + PIN_SLACK_MM,
+            h / k + 2.0 * v.margin + v.title_room() + PIN_SLACK_MM)  # fmt: skip
+
+
+#: What :func:`_pinned_tree` adds to a box it gives a drawing of links (mm): the layout's
+#: rounding of its scale never takes it one GOST step coarser.
+PIN_SLACK_MM = 2.0
+
+
+def _band_size(bodies: Sequence[_FreeBody], k: float) -> tuple[float, float]:
+    """The box (mm) :func:`_band` packs the groups and the crank cut out in at ``k``."""
+    size = {id(b): _body_size(b, b.least_k if b.group == CRANK_L else k) for b in bodies}
+    tall = max(bodies, key=lambda b: size[id(b)][1])
+    rest = [b for b in bodies if b is not tall]
+    if len(rest) > 1 and sum(size[id(b)][1] for b in rest) <= size[id(tall)][1]:
+        return size[id(tall)][0] + GAP + max(size[id(b)][0] for b in rest), size[id(tall)][1]
+    return (sum(size[id(b)][0] for b in bodies) + GAP * (len(bodies) - 1),
+            max(size[id(b)][1] for b in bodies))  # fmt: skip
+
+
+#: A mechanism's sweep at least this many times wider than tall is drawn as a band across
+#: the top of the sheet (:func:`_pinned_tree`), a narrower one down the left edge.
+BAND_ASPECT = 0.7
 
 
 def _band(bodies: Sequence[_FreeBody], k: float) -> Row:
