@@ -43,3 +43,8 @@ def test_the_forces_sheet_of_a_small_traverse_is_laid_out() -> None:
     _tree, sized = lf.force_layout(s)  # raised "has no room on the sheet" (review 11)
     titles = {pl.view.title for pl in sized.layout}
     assert {"Группа II(2, 3)", "Группа II(4, 5)"} <= titles
+    # no GOST step draws its 12 mm crank 30 mm long on an A1 with the rest: the finest that
+    # holds the sheet (1:1; the search alone took 1:4, a 3 mm crank)
+    (mech,) = [pl for pl in sized.layout if isinstance(pl.view, lf._Loaded)]
+    assert mech.scale is not None
+    assert s.linkage.length / mech.scale.k >= 12.0 * (1.0 - 1e-9)

@@ -573,6 +573,20 @@ def _pinned(
         best, kept = got_one, True
         if pg != pin:
             break  # the groups apart: the mechanism grows no further
+    if not kept and steps:
+        # no step holds the crank's rule (review 11: a 12 mm crank wants 2,5:1, the traverse's
+        # mechanism then takes the sheet's height): the finest step between that keeps the
+        # sheet, the crank as long as the field lets it be (1:1, not the search's 1:4)
+        for pin in sorted(g for g in GOST_K if steps[0] * e < g < mk / e):
+            if w / pin > room[0] or h / pin > room[1]:
+                continue
+            got_one = next(
+                (got for pg in (pin, *[g for g in _coarser(pin) if pin / g >= GROUPS_SHARE / e])
+                 if (got := _pin_try(s, P, f, k, kin, largest, field, pin, pg)) is not None),
+                None,
+            )  # fmt: skip
+            if got_one is not None:
+                return got_one
     return best
 
 
