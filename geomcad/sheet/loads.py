@@ -237,11 +237,14 @@ def force_tiers(forces: Iterable[float], room_mm: float) -> ForceScales:
 
 
 #: A load of a view under this share of the view's largest force is named ("не показаны",
-#: with its value) under its caption, not drawn (:func:`view_scales`): its arrow at the view's
-#: μ_F would be shorter than a 200-mm arrow's drawing error (1 mm). Every load over it is
+#: with its value and the share stated) under its caption, not drawn (:func:`view_scales`):
+#: the teacher's "negligible, listed" — 0,1 % of the largest, the share a force plan leaves
+#: out too (:data:`NEGLIGIBLE`), under the width of a line (0,2 mm) on a 200-mm arrow (a 2 N
+#: weight beside 4560 N, 0,04 %, is listed; one of 0,3 % is drawn at a stated μ_F: review 10,
+#: slider_rocker_rpr hid G1…G4, Ф4 < 0,34 % under the 0,5 % of before). Every load over it is
 #: drawn: to scale in the view or in its insets, else as a direction arrow VIEW_SHORT_MM long
 #: (review 8: a lever that hid 12 of its loads "менее 7,5 %" could not be checked).
-HIDE_SHARE = 0.005
+HIDE_SHARE = NEGLIGIBLE
 #: A reaction of a free body (or the lever's P_ур) over this share of the view's largest force
 #: is drawn to scale (the insets' μ_F is the one that draws it, :func:`view_scales`); a smaller
 #: one is a direction arrow, never left out.
