@@ -144,6 +144,8 @@ def test_an_inset_names_the_point_its_loads_act_at() -> None:
         ins = Insets(fs, {name: at for name in order})
         ins.add(at, Vec(3.0, 0.0), 1, "Ф_4", "vector", "K")
         assert ins.point_name(at, ins.shorts, 1e-6) == "K"
+    ins.add(at, Vec(0.0, -2.0), 1, "G_3", "vector", "B")
+    assert ins.point_name(at, ins.shorts, 1e-6) == "K, B"
     ins = Insets(fs, {"B": at})
     ins.add(at, Vec(3.0, 0.0), 1, "Ф_4", "vector")
     assert ins.point_name(at, ins.shorts, 1e-6) == "B"

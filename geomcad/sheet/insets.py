@@ -185,11 +185,11 @@ class Insets:
         return [(q, ss, *circle(ss)) for q, ss in out]
 
     def point_name(self, q: Vec, shorts: list[Short], eps: float) -> str:
-        """The name an inset gives its point at ``q``: the point its loads ``shorts`` there
-        act at (review 10: the block's K, not the slider's B at the same place), else the
-        view's point there (:meth:`name_of`)."""
+        """The name an inset gives its point at ``q``: the points its loads ``shorts`` there
+        act at, each once ("B, K": the slider's B and the block's K at one place; review 10
+        named the block's loads "B"), else the view's point there (:meth:`name_of`)."""
         own = [s.point for s in shorts if s.at.dist(q) <= eps and s.point in self.points]
-        return own[0] if own else self.name_of(q, eps)
+        return ", ".join(dict.fromkeys(own)) if own else self.name_of(q, eps)
 
     def name_of(self, q: Vec, eps: float) -> str:
         """The name of the view's point at ``q`` ("" where none is)."""
