@@ -8,6 +8,7 @@ into the body). A moment is an arc around its point with an arrowhead giving its
 
 from __future__ import annotations
 
+import functools
 import itertools
 import math
 from collections.abc import Iterable
@@ -264,6 +265,15 @@ INSET_CAP_MM = 25.0
 
 def view_scales(
     forces: Iterable[float], room_mm: float, keep: Iterable[float] = (), given: Iterable[float] = ()
+) -> ForceScales:
+    """:func:`_view_scales`, remembered: the layout asks a view's scales for each room it
+    tries, the same forces each time (a frozen :class:`ForceScales`, shared)."""
+    return _view_scales(tuple(forces), room_mm, tuple(keep), tuple(given))
+
+
+@functools.lru_cache(maxsize=4096)
+def _view_scales(
+    forces: tuple[float, ...], room_mm: float, keep: tuple[float, ...], given: tuple[float, ...]
 ) -> ForceScales:
     """The force scales of a view that draws its forces at ONE μ_F and its short ones at ONE
     more (a teacher accepts the view's μ_F and one other), so that a longer arrow is a larger
