@@ -52,7 +52,7 @@ FILES = [
 INSET_TIERS = 2
 
 #: The share of a view's largest force under which the forces it leaves out are, on every
-#: view of these files: HIDE_SHARE (0.5 %), whatever the view's size (review 8: the rule
+#: view of these files: HIDE_SHARE (0.1 %, review 10), whatever the view's size (review 8: the rule
 #: before it left out the forces 5 mm short at the insets' μ_F, up to 8.5 % on the rocking
 #: cylinder and 7.5 % of its lever's loads; review 7: 23 %). Every larger load is drawn: to
 #: scale, or as a direction arrow VIEW_SHORT_MM long.

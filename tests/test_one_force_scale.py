@@ -244,7 +244,8 @@ def test_view_scales_never_leave_out_a_kept_force() -> None:
     shortest arrow (R_05 = 201 N beside F = 420 N, Ф_5 = 1219 N and F_D = 4124 N)."""
     from geomcad.sheet.loads import VIEW_SHORT_MM, view_scales
 
-    forces = [4124.0, 1567.0, 1528.0, 1219.0, 420.0, 201.4, 15.7]
+    # (a weight of 3.5 N, 0,085 %: under HIDE_SHARE, 0,1 % since review 10)
+    forces = [4124.0, 1567.0, 1528.0, 1219.0, 420.0, 201.4, 3.5]
     # 201.4 N (4.9 %) drawn to a stated scale, a reaction or not (review 9: a load of
     # HIDE_SHARE or more is never a direction arrow)
     free = view_scales(forces, 24.8)
@@ -255,10 +256,10 @@ def test_view_scales_never_leave_out_a_kept_force() -> None:
     assert t == 1 and 201.4 / fs.scales[1].k >= VIEW_SHORT_MM
     assert fs.tier(420.0) == 1  # the larger short one at the same, one inset μ_F
     assert fs.over > 1.0  # … past the view's shortest arrow: the cost the reaction takes
-    assert fs.tier(15.7) is None  # a weight under 0,5 % of the largest is still named
+    assert fs.tier(3.5) is None  # a weight under 0,1 % of the largest is still named
     # a reaction under HIDE_SHARE no tier draws is a direction arrow, never left out
     tiny = view_scales([*forces, 2.0], 24.8, keep=[1528.0, 2.0])
-    assert tiny.is_fixed(2.0) and tiny.tier(15.7) is not None
+    assert tiny.is_fixed(2.0) and tiny.tier(3.5) is not None
 
 
 def test_insets_set_an_arrow_beside_where_it_ends_on_none() -> None:

@@ -123,13 +123,15 @@ _W_FAR = 1.0e3
 @dataclass(frozen=True)
 class Short:
     """A force drawn in an inset: at model point ``at``, ``F`` (N), its label and role, the
-    index ``tier`` of its μ_F in the view's :class:`ForceScales`."""
+    index ``tier`` of its μ_F in the view's :class:`ForceScales`; ``point``: the name of the
+    point it acts at ("" where it has none: the view's point there names it)."""
 
     at: Vec
     F: Vec
     label: str
     role: str
     tier: int
+    point: str = ""
 
 
 class Insets:
@@ -146,8 +148,8 @@ class Insets:
         #: lines the view draws after its insets (a detail's circle): no inset over them
         self.reserved: list[CircleItem] = []
 
-    def add(self, at: Vec, F: Vec, tier: int, label: str, role: str) -> None:
-        self.shorts.append(Short(at, F, label, role, tier))
+    def add(self, at: Vec, F: Vec, tier: int, label: str, role: str, point: str = "") -> None:
+        self.shorts.append(Short(at, F, label, role, tier, point))
 
     @property
     def scale(self) -> Scale:
@@ -223,6 +225,13 @@ class Insets:
                     joined = True
                     break
         return [(q, ss, *circle(ss)) for q, ss in out]
+
+    def point_name(self, q: Vec, shorts: list[Short], eps: float) -> str:
+        """The name an inset gives its point at ``q``: the points its loads ``shorts`` there
+        act at, each once ("B, K": the slider's B and the block's K at one place; review 10
+        named the block's loads "B"), else the view's point there (:meth:`name_of`)."""
+        own = [s.point for s in shorts if s.at.dist(q) <= eps and s.point in self.points]
+        return ", ".join(dict.fromkeys(own)) if own else self.name_of(q, eps)
 
     def name_of(self, q: Vec, eps: float) -> str:
         """The name of the view's point at ``q`` ("" where none is)."""
@@ -335,7 +344,7 @@ class Insets:
                 pts.append(s.at)
         for u in pts:
             iv.dot(u)
-            name = self.name_of(u, eps)
+            name = self.point_name(u, shorts, eps)
             if name:
                 iv.label(u, markup_of(name), CAPTION_H, clear=0.8)
         for o, e, a, s, k in zip(starts, rel, arrive, shorts, ks, strict=True):
@@ -351,13 +360,10 @@ class Insets:
         ``выносные элементы Б, В: μ_F = 2 Н/мм`` ("" without insets)."""
         return self.line([letter for letter, _ in self.drawn])
 
-    def line(self, letters: list[str], short: bool = False) -> str:
-        """:meth:`text` for insets lettered ``letters`` (``short``: the μ_F alone, without
-        the letters: ``выносные элементы: μ_F = 2 Н/мм``)."""
+    def line(self, letters: list[str]) -> str:
+        """:meth:`text` for insets lettered ``letters`` (never the μ_F without them)."""
         if not letters or not self.scaled:
             return ""
-        if short:
-            return WORDS("insets_all", scale=self.scale_text())
         return WORDS("insets", items=f"{', '.join(letters)}: {self.scale_text()}")
 
 

@@ -101,7 +101,7 @@ from geomcad.sheet.compose import _title_width as title_width
 from geomcad.sheet.drawing import SHORT_MM, Viewport
 from geomcad.sheet.frame import FORMATS, LEFT_MARGIN, MARGIN, reserved
 from geomcad.sheet.graph import ARROW_OVER, Axis, Graph
-from geomcad.sheet.insets import Insets
+from geomcad.sheet.insets import Insets, _seg_dist
 from geomcad.sheet.lang import Words, current
 from geomcad.sheet.linkage import (
     CRANK_MM,
@@ -136,6 +136,7 @@ from geomcad.sheet.loads import (
     ForceScales,
     _inside,
     force,
+    line_of_action,
     moment,
     view_scales,
 )
@@ -1370,17 +1371,19 @@ def _bbox(pts: Sequence[Vec], minimum: float) -> tuple[float, float, float, floa
 def _force(
     v: Viewport, at: Vec, F: Vec, fs: ForceScales, label: str, arrive: bool = False,
     role: str = "vector", clear: Clearance | None = None, insets: Insets | None = None,
+    point: str = "",
 ) -> None:  # fmt: skip
     """A force as an arrow at the view's μ_F, or, shorter than :data:`SHORT_MM` there, in the
     view's ``insets`` at a finer stated μ_F (:func:`~geomcad.sheet.loads.view_scales`); never
     a dot. A zero force, or a negligible one, draws nothing. ``clear``: on a drawing of links,
     the arrow goes where its line of action is clear of them
-    (:class:`~geomcad.sheet.loads.Clearance`)."""
+    (:class:`~geomcad.sheet.loads.Clearance`). ``point``: the name of the point it acts at
+    (its inset names it)."""
     tier = fs.tier(F.norm)
     if tier is None:
         return
     if tier > 0 and insets is not None:
-        insets.add(at, F, tier, label, role)
+        insets.add(at, F, tier, label, role, point)
         return
     force(v, at, F, fs.k_at(F.norm), label + fs.mark(min(tier, len(fs.scales) - 1)),
           arrive=arrive, role=role, height=2.5, clear=clear)  # fmt: skip
@@ -1414,7 +1417,7 @@ def _draw_loads(
     for ld in forces:
         assert ld.force is not None and ld.at is not None
         _force(v, ld.at, ld.force, fs, load_name(ld.name), role=role, clear=clear,
-               insets=insets)  # fmt: skip
+               insets=insets, point=ld.point)  # fmt: skip
 
 
 #: Loads whose arrows are about as clear at their points (their costs,
@@ -1537,9 +1540,9 @@ def draw_insets(
     arrows ("G_1, Ф_1 — стрелки 5 мм без масштаба", else by the share they are under: "силы
     менее 1,7 % — …") and name the forces it leaves out,
     wrapped at the box's width into the lines its title's room holds (:func:`further_room`).
-    Where they would need more lines, they state the μ_F without the insets' letters and the
-    forces left out without the share they are under, and where they still would, they name
-    only the forces left out and each inset's caption states the μ_F instead."""
+    Where they would need more lines, each inset's caption states its μ_F instead (never the
+    μ_F without the letters of the insets it is of), and where they still would, the forces
+    left out are named without the share they are under."""
     assert at.viewport is not None
     letters = getattr(view, "letters", None) or detail_letters()
     mine = [next(letters) for _ in range(ins.count(at.viewport))]
@@ -1580,10 +1583,9 @@ def draw_insets(
         key = "omitted_bare_one" if len(omitted) == 1 else "omitted_bare"
         parts[-1] = WORDS(key, items=", ".join(omitted))
 
-    if mine and ins.scaled and not fits():
-        parts[0] = ins.line(mine, short=True)  # one μ_F for all: the letters go without saying
-        if omitted and not fits():
-            bare()
+    # never the μ_F without the letters it is of (review 10: slider_rocker's group (4, 5)
+    # stated "выносные элементы: μF = 1 Н/мм" beside its insets Я and Г1): where the line
+    # has no room for them, each inset's caption states its letter's μ_F
     each = bool(mine) and ins.scaled and not fits()
     if each:
         parts = parts[1:]
@@ -1901,7 +1903,9 @@ class _FreeBody(_Forces):
                     arcs=arcs)  # fmt: skip
         # the reactions found at their joints first, then the loads where they are clear
         for r in external(gf):
-            _force(v, r.at, r.force, self.fs, load_name(r.name), True, "result", clear, ins)
+            _force(
+                v, r.at, r.force, self.fs, load_name(r.name), True, "result", clear, ins, r.joint
+            )
         _draw_loads(v, lk, P, [ld for ld in loads if ld.force is not None], self.fs, "vector",
                     clear, insets=ins)  # fmt: skip
         if gf.group is None:
@@ -2137,6 +2141,78 @@ def load_sides(
     return [(side[i], starts[i]) for i in range(len(loads))]
 
 
+#: Two arrows of the lever, each with its label's room past its far end (LABEL_ROOM_MM), keep
+#: this far (mm) apart where they act at different points: closer, one is slid along its line
+#: of action (:func:`uncross`; review 10: kulisa's F_D and P_ур crossed near s4, their labels
+#: side by side).
+ARROWS_CLEAR_MM = 1.5
+#: The slides (mm) tried past an arrow's point, beyond arriving at it or leaving it (tied back
+#: to it by its thin line of action), each mm costing _W_SLIDE; an arrow over the view's edge
+#: (its margin) costs _W_EDGE per mm.
+SLIDES_MM = (4.0, 8.0, 12.0, 16.0, 24.0, 32.0)
+_W_SLIDE, _W_EDGE = 0.05, 1.0
+_Seg = tuple[tuple[float, float], tuple[float, float]]
+
+
+def uncross(
+    loads: Sequence[tuple[Vec, Vec, str, str]],
+    k: float,
+    lengths: Sequence[float],
+    sides: Sequence[tuple[bool, Vec]],
+    ext: tuple[float, float, float, float] | None = None,
+    slack: float = 0.0,
+) -> list[tuple[bool, Vec]]:
+    """:func:`load_sides` (``sides``) with no two arrows of different points crossing or
+    within :data:`ARROWS_CLEAR_MM` of each other, an arrow's label's room
+    (:data:`LABEL_ROOM_MM` past its far end) counted with it: the longer arrows keep their
+    places, and a shorter one that would meet one of them is slid along its line of action —
+    arriving at its point instead of leaving it (or the other way), else past it by one of
+    :data:`SLIDES_MM` (its thin line of action ties it back) — to the place that meets none
+    and keeps most within the view's extent ``ext`` plus ``slack`` mm, the nearest first. An
+    arrow set on from another's tip (one line, one point) keeps its place. Model units,
+    ``k`` model units per mm."""
+    n = len(loads)
+    out = list(sides)
+    eps = 0.8 * k
+
+    def foot(i: int, arrive: bool, start: Vec) -> _Seg:
+        # the arrow and its label's room past its far end from its point, in mm
+        run = loads[i][1].unit() * (lengths[i] * k * (-1.0 if arrive else 1.0))
+        a, b = start, start + run
+        q = loads[i][0]
+        far, near = (a, b) if (a - q).norm > (b - q).norm else (b, a)
+        room = far + (far - near).unit() * (LABEL_ROOM_MM * k) if (far - near).norm > 0 else far
+        return ((near.x / k, near.y / k), (room.x / k, room.y / k))
+
+    def past(seg: _Seg) -> float:
+        if ext is None:
+            return 0.0
+        x0, y0, x1, y1 = (e / k for e in ext)
+        return sum(max(x0 - slack - x, x - x1 - slack, 0.0) + max(y0 - slack - y, y - y1 - slack,
+                   0.0) for x, y in seg)  # fmt: skip
+
+    def meets(seg: _Seg, feet: Sequence[_Seg]) -> int:
+        return sum(_seg_dist(seg, f) < ARROWS_CLEAR_MM for f in feet)
+
+    placed: list[int] = []
+    for i in sorted(range(n), key=lambda i: -lengths[i]):
+        q, F = loads[i][0], loads[i][1]
+        arrive, start = out[i]
+        feet = [foot(j, *out[j]) for j in placed if (loads[j][0] - q).norm > eps]
+        placed.append(i)
+        if F.norm == 0.0 or not feet or (start - q).norm > eps or not meets(foot(i, *out[i]), feet):
+            continue
+        u = F.unit()
+        tries = [(arrive, start, 0.0), (not arrive, q, 0.0)]
+        for g in SLIDES_MM:
+            tries.append((False, q + u * (g * k), g))  # leaving, past its point
+            tries.append((True, q - u * (g * k), g))  # arriving, short of it
+        best = min(tries, key=lambda t: (meets(seg := foot(i, t[0], t[1]), feet),
+                                         _W_EDGE * past(seg) + _W_SLIDE * t[2]))  # fmt: skip
+        out[i] = (best[0], best[1])
+    return out
+
+
 #: The lever asks the layout for a μ_V that draws the images its loads act at this far (mm)
 #: apart at least (its ``most_k``): two insets' circles round them side by side, their
 #: letters between (review 9: the rocking cylinder's lever, drawn 80 × 60 mm, crowded its
@@ -2200,35 +2276,40 @@ class _Lever(_ByScale, View):
         return [(it.image, it.force) for it in lev.items] + [(lev.images[self.lk.joint], lev.F_bal)]
 
     def _sides(
-        self, k: float, images: Mapping[str, Vec], fs: ForceScales | None = None
+        self, k: float, images: Mapping[str, Vec], fs: ForceScales | None = None, slide: bool = True
     ) -> tuple[Insets, list[tuple[Vec, Vec, str, str]], list[float], list[tuple[bool, Vec]]]:
         """The lever's insets (the forces short at ``fs``, the view's by default), the loads
-        drawn in it, their lengths (mm) and how each is drawn (:func:`load_sides`) at scale
-        ``k`` (model units per mm)."""
+        drawn in it, their lengths (mm) and how each is drawn (:func:`load_sides`, then
+        :func:`uncross` where ``slide``) at scale ``k`` (model units per mm)."""
         fs = fs or self.fs
         lev = self.f.lever
         loads = [(it.image, it.force, load_name(n), "vector")
                  for n, it in zip(self.names, lev.items, strict=True)]  # fmt: skip
         loads.append((lev.images[self.lk.joint], lev.F_bal, WORDS("P_bal"), "result"))
+        points = [self.P.pn(it.point) if it.point else "" for it in lev.items]
+        points.append(self.P.pn(self.lk.joint))
         # the forces short at the view's μ_F go to its insets, the others are drawn here
         ins = Insets(fs, images)
         here = []
-        for q, F, name, role in loads:
+        for (q, F, name, role), point in zip(loads, points, strict=True):
             t = fs.tier(F.norm)
             if t is not None and t > 0:
-                ins.add(q, F, t, name, role)
+                ins.add(q, F, t, name, role, point)
             elif t is not None:
                 here.append((q, F, name, role))
         lengths = [F.norm / fs.k for _, F, _, _ in here]
         # an arrow leaves its point unless it would run out of the view (past its margin,
         # less a label's room)
         sides = load_sides(here, k, lengths, self._ext, self.margin - LABEL_ROOM_MM)
+        if slide:
+            sides = uncross(here, k, lengths, sides, self._ext, self.margin - LABEL_ROOM_MM)
         return ins, here, lengths, sides
 
     def _fits(self, fs: ForceScales, scale: Scale, box: tuple[float, float, float, float]) -> bool:
         """As on a drawing of links, each arrow as :func:`load_sides` draws it (a force on from
         another's tip: the two together)."""
-        _, here, lengths, sides = self._sides(scale.k, {}, fs)
+        # (the arrows at their points: the scale a slide of uncross would not change)
+        _, here, lengths, sides = self._sides(scale.k, {}, fs, slide=False)
         for (_, F, _, _), (arrive, p), n in zip(here, sides, lengths, strict=True):
             if F.norm > 0.0:
                 e = p + F.unit() * (scale.k * n * (-1.0 if arrive else 1.0))
@@ -2323,9 +2404,19 @@ class _Lever(_ByScale, View):
         for q, names in groups:
             v.dot(q)
             v.label(q, ", ".join(names), 2.5, clear=0.8)
-        ins, here, _, sides = self._sides(kv.k, images)
-        for (_, F, name, role), (arrive, at_) in zip(here, sides, strict=True):
+        ins, here, lengths, sides = self._sides(kv.k, images)
+        segs = []
+        for (_, F, _, _), (arrive, at_), n in zip(here, sides, lengths, strict=True):
+            run = F.unit() * (kv.k * n) if F.norm > 0.0 else Vec(0.0, 0.0)
+            segs.append((v.p(at_ - run), v.p(at_)) if arrive else (v.p(at_), v.p(at_ + run)))
+        for i, ((q, F, name, role), (arrive, at_)) in enumerate(zip(here, sides, strict=True)):
             _force(v, at_, F, self.fs, name, arrive, role)
+            # slid off its point (:func:`uncross`), not on from another arrow there: its
+            # thin line of action ties it back
+            p = v.p(q)
+            on = [segs[j] for j, (p0, *_) in enumerate(here) if j != i and kv.mm(p0.dist(q)) < 0.8]
+            if F.norm > 0.0 and not any(_seg_dist((p, p), e) < 1.0 for e in on):
+                line_of_action(v.sheet, p, *segs[i])
         draw_insets(d, at, self, ins, start, self.omitted)
 
 
