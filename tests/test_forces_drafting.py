@@ -174,23 +174,31 @@ def test_the_order_writes_each_plan_as_it_is_laid_off(
     from geomcad.sheet import views as vw
 
     drawn: list[ForcePolygon] = []
-    steps: list[list[Any]] = []
-    pdraw, steps_init = vw.Polygon.draw, lf.Steps.__init__
+    # the steps of every order the layout search builds, and the one it draws (the search
+    # tries sheets after the one it keeps: the last built is not always the one drawn)
+    shown: list[list[Any]] = []
+    pdraw, steps_init, sdraw = vw.Polygon.draw, lf.Steps.__init__, lf.Steps.draw
 
     def rec_draw(self: Any, d: Any, at: Any) -> None:
         drawn.append(self.layers[-1][0])
         pdraw(self, d, at)
 
     def rec_steps(self: Any, st: Any, *a: Any, **kw: Any) -> None:
-        steps.append(list(st))
+        self.recorded = list(st)
         steps_init(self, st, *a, **kw)
+
+    def rec_sdraw(self: Any, d: Any, at: Any) -> None:
+        shown.append(self.recorded)
+        sdraw(self, d, at)
 
     monkeypatch.setattr(vw.Polygon, "draw", rec_draw)
     monkeypatch.setattr(lf.Steps, "__init__", rec_steps)
+    monkeypatch.setattr(lf.Steps, "draw", rec_sdraw)
     s = solve(_linkage(name))
     f = lf.force_position(s)[1]
     lf.force_sheets(s, name)
-    plans = {st.name: st for st in steps[-1] if st.kind in ("force_polygon", "polygon_closing")}
+    order = shown[0]  # sheet 2's order (drawn before the dynamics sheet's)
+    plans = {st.name: st for st in order if st.kind in ("force_polygon", "polygon_closing")}
     n = sum(len(gf.polygons) for gf in f.groups)
     assert len(plans) == n
     reordered = 0

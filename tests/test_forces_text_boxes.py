@@ -74,7 +74,9 @@ def test_the_lines_under_a_caption_wrap_in_the_narrowest_box(
 
     from geomcad.sheet.compose import _title_width
 
-    path = ROOT / "linkages_layout" / "sixbar_coupler_slider.toml"
+    # (a file whose views still leave forces out under the 0,1 % rule: review 10's light links
+    # beside loads of 4560 N)
+    path = ROOT / "linkages_layout" / "slider_rocker_rpr.toml"
     _drawn, lay = _sheet(path, monkeypatch)
     s = geomcad.solve(str(path)).data
     _tree, z = lf.force_layout(s)

@@ -574,7 +574,8 @@ def _pinned(
         best, kept = got_one, True
         if pg != pin:
             break  # the groups apart: the mechanism grows no further
-    if not kept and steps:
+    waived = sweep_mm(s, crank_scale(lk).k) > SWEEP_MAX_MM  # (the kinematic μ_l rules then)
+    if not kept and steps and not waived and lk.length / mk < CRANK_MM * CRANK_FLOOR:
         # no step holds the crank's rule (review 11: a 12 mm crank wants 2,5:1, the traverse's
         # mechanism then takes the sheet's height): the finest step between that keeps the
         # sheet, the crank as long as the field lets it be (1:1, not the search's 1:4)
@@ -610,6 +611,10 @@ def _pin_try(
     return None
 
 
+#: Where no GOST step holds the crank's rule, :func:`_pinned` pins the mechanism finer only
+#: where the search drew its crank under this share of CRANK_MM (a 3 mm crank at 1:4); above,
+#: the crank's detail reads it (the sine file's 18 mm crank and its 1:1 detail).
+CRANK_FLOOR = 0.5
 #: The finer GOST steps of the mechanism's μ_l :func:`_pinned` tries where the search kept
 #: the crank's rule (the views grown into the field).
 GROW_L_STEPS = 2
