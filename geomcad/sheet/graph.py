@@ -38,6 +38,9 @@ ARROW_OVER = 7.0  # the axis runs this far past the last value (mm), ending in a
 HATCH_STEP_MM = 2.0
 #: The most decimals a tick's value is written with.
 TICK_PLACES = 6
+#: An axis whose tick step needs more decimals than this writes its values times a power of
+#: ten, named by the axis (``J_пр·10^6, кг·м²``: 2, 4, 6 where 0,000002, 0,000004 …).
+FACTOR_PLACES = 4
 
 
 def nice_step(raw: float) -> float:
@@ -122,12 +125,33 @@ class Axis:
             TICK_PLACES,
         )
 
+    def power(self) -> int:
+        """The power of ten n the values along the axis are written times (10^n · value), a
+        multiple of 3; 0 where the tick step needs at most :data:`FACTOR_PLACES` decimals."""
+        step = self.tick or nice_step(TICK_MIN_MM * self.k)
+        if self.places() <= FACTOR_PLACES:
+            return 0
+        return 3 * math.ceil(-math.log10(step) / 3.0 - tol.DERIVED)
+
     def tick_text(self, value: float, lang: Lang | None = None) -> str:
-        """A tick's value as the axis writes it: :meth:`places` decimals (zero as "0")."""
+        """A tick's value as the axis writes it: :meth:`places` decimals (zero as "0"), or
+        times 10^:meth:`power` with the decimals that writes its step exactly."""
         step = self.tick or nice_step(TICK_MIN_MM * self.k)
         if abs(value) <= tol.DERIVED * step:
             return "0"
+        n = self.power()
+        if n:
+            s = step * 10.0**n
+            exact = (d for d in range(TICK_PLACES) if abs(s - round(s, d)) <= tol.DERIVED * s)
+            places = next(exact, TICK_PLACES)
+            return fmt_fixed(value * 10.0**n, places, lang)
         return fmt_fixed(value, self.places(), lang)
+
+    def caption(self) -> str:
+        """The axis' name by its arrow: ``symbol, unit``, the symbol times 10^:meth:`power`
+        where its values are written so."""
+        n = self.power()
+        return f"{self.symbol}·10^{{{n}}}, {self.unit}" if n else f"{self.symbol}, {self.unit}"
 
     def factor_text(self, lang: Lang | None = None) -> str:
         """``μ_φ = 0,02 рад/мм`` (``lang``: default the language being drawn)."""
@@ -205,9 +229,9 @@ class Graph:
                 )
         # the symbols by the arrows' tips, placed clear of the curves drawn before the sheet is
         # finished
-        self.d.label((x1 + ARROW_OVER, ay), f"{self.x.symbol}, {self.x.unit}", 3.5,
+        self.d.label((x1 + ARROW_OVER, ay), self.x.caption(), 3.5,
                      prefer=(-1.0, 1.0), clear=0.5)  # fmt: skip
-        self.d.label((ax, y0 - ARROW_OVER), f"{self.y.symbol}, {self.y.unit}", 3.5,
+        self.d.label((ax, y0 - ARROW_OVER), self.y.caption(), 3.5,
                      prefer=(1.0, 0.3), clear=1.0)  # fmt: skip
 
     def factors(self, at: XY, lang: Lang | None = None, height: float = 2.5) -> None:

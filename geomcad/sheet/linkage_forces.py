@@ -2752,13 +2752,21 @@ def _omega(lk: Linkage, fw: Flywheel) -> Diagram:
     )
 
 
+#: A column of I_пр whose largest value is under this (kg·m²) is written times a power of ten.
+TABLE_SMALL = 1.0e-3
+
+
 def _tables3(lk: Linkage, fw: Flywheel, h: float) -> list[View]:
     n = len(fw.phis)
     step = max(1, math.ceil(n / 12))
-    rows: list[list[str]] = [
-        ["№", "φ_1, °", f"{WORDS('I_pr')}, {WORDS('kgm2')}", f"{WORDS('M_pr')}, {WORDS('Nm')}"]
-    ]
     si = max(abs(x) for x in fw.I_pr)
+    # a column of tiny I_пр written times 10^n as its diagram's axis writes it (review 11: an
+    # instrument's 0,00000236 кг·м²): I_пр·10^6 = 2,360
+    n_i = 3 * math.ceil(-math.log10(si) / 3.0) if 0.0 < si < TABLE_SMALL else 0
+    i_head = f"{WORDS('I_pr')}·10^{{{n_i}}}" if n_i else WORDS("I_pr")
+    rows: list[list[str]] = [
+        ["№", "φ_1, °", f"{i_head}, {WORDS('kgm2')}", f"{WORDS('M_pr')}, {WORDS('Nm')}"]
+    ]
     sm = max(abs(x) for x in fw.M_pr)
     # M_пр in the diagram's convention (> 0 in the crank's sense of rotation: ΣP/|ω1|); each
     # column one count of decimals
@@ -2767,7 +2775,11 @@ def _tables3(lk: Linkage, fw: Flywheel, h: float) -> list[View]:
     degs = [math.degrees(fw.phis[i]) % 360.0 for i in idx]
     cols = [
         [fmt_fixed(x, angle_places(degs), current()) for x in degs],
-        _nonzero([0.0 if abs(fw.I_pr[i]) <= ZERO * si else fw.I_pr[i] for i in idx], current(), 4),
+        _nonzero(
+            [0.0 if abs(fw.I_pr[i]) <= ZERO * si else fw.I_pr[i] * 10.0**n_i for i in idx],
+            current(),
+            4,
+        ),
         fmt_column(
             [0.0 if abs(fw.M_pr[i]) <= ZERO * sm else sign * fw.M_pr[i] for i in idx], current(), 4
         ),
