@@ -481,9 +481,9 @@ class _Solver:
         pts = list(P.pos.values())
         reach = max(((p - q).norm for p in pts for q in pts), default=0.0)
         #: the farthest a sliding pair's reaction lies from its joint (m)
-        self.arm_max = (
-            min(ARM_MAX * lk.length, REACH_MAX * reach) if reach > 0.0 else (ARM_MAX * lk.length)
-        )
+        self.arm_max = ARM_MAX * lk.length
+        if reach > 0.0:
+            self.arm_max = min(self.arm_max, REACH_MAX * reach)
         self.reactions: list[Reaction] = []
 
     def _react(

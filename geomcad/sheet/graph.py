@@ -54,6 +54,20 @@ def nice_step(raw: float) -> float:
     return 10.0 ** (e + 2)
 
 
+def exact_places(step: float) -> int:
+    """The decimals that write ``step`` (> 0) exactly, at most :data:`TICK_PLACES`."""
+    return next(
+        (d for d in range(TICK_PLACES) if abs(step - round(step, d)) <= tol.DERIVED * step),
+        TICK_PLACES,
+    )
+
+
+def thousands_power(x: float) -> int:
+    """The least multiple n of 3 with 10^n · ``x`` ≥ 1 (``x`` > 0): a small value written
+    times 10^n (2,5·10⁻⁵ → 6, 25)."""
+    return 3 * math.ceil(-math.log10(x) / 3.0 - tol.DERIVED)
+
+
 @dataclass(frozen=True)
 class Axis:
     """One axis of a diagram.
@@ -119,19 +133,13 @@ class Axis:
         """The decimals of every value written along the axis: those that write its tick step
         exactly (0,016 and 0,020, never 0,02 beside 0,016; 14,0 beside 14,1), at most
         :data:`TICK_PLACES`."""
-        step = self.tick or nice_step(TICK_MIN_MM * self.k)
-        return next(
-            (d for d in range(TICK_PLACES) if abs(step - round(step, d)) <= tol.DERIVED * step),
-            TICK_PLACES,
-        )
+        return exact_places(self.tick or nice_step(TICK_MIN_MM * self.k))
 
     def power(self) -> int:
         """The power of ten n the values along the axis are written times (10^n · value), a
         multiple of 3; 0 where the tick step needs at most :data:`FACTOR_PLACES` decimals."""
         step = self.tick or nice_step(TICK_MIN_MM * self.k)
-        if self.places() <= FACTOR_PLACES:
-            return 0
-        return 3 * math.ceil(-math.log10(step) / 3.0 - tol.DERIVED)
+        return 0 if self.places() <= FACTOR_PLACES else thousands_power(step)
 
     def tick_text(self, value: float, lang: Lang | None = None) -> str:
         """A tick's value as the axis writes it: :meth:`places` decimals (zero as "0"), or
@@ -140,12 +148,7 @@ class Axis:
         if abs(value) <= tol.DERIVED * step:
             return "0"
         n = self.power()
-        if n:
-            s = step * 10.0**n
-            exact = (d for d in range(TICK_PLACES) if abs(s - round(s, d)) <= tol.DERIVED * s)
-            places = next(exact, TICK_PLACES)
-            return fmt_fixed(value * 10.0**n, places, lang)
-        return fmt_fixed(value, self.places(), lang)
+        return fmt_fixed(value * 10.0**n, exact_places(step * 10.0**n), lang)
 
     def caption(self) -> str:
         """The axis' name by its arrow: ``symbol, unit``, the symbol times 10^:meth:`power`

@@ -100,7 +100,7 @@ from geomcad.sheet.compose import (
 from geomcad.sheet.compose import _title_width as title_width
 from geomcad.sheet.drawing import SHORT_MM, Viewport
 from geomcad.sheet.frame import FORMATS, LEFT_MARGIN, MARGIN, reserved
-from geomcad.sheet.graph import ARROW_OVER, Axis, Graph
+from geomcad.sheet.graph import ARROW_OVER, FACTOR_PLACES, Axis, Graph, thousands_power
 from geomcad.sheet.insets import Insets, _seg_dist
 from geomcad.sheet.lang import Words, current
 from geomcad.sheet.linkage import (
@@ -582,13 +582,10 @@ def _pinned(
         for pin in sorted(g for g in GOST_K if steps[0] * e < g < mk / e):
             if w / pin > room[0] or h / pin > room[1]:
                 continue
-            got_one = next(
-                (got for pg in (pin, *[g for g in _coarser(pin) if pin / g >= GROUPS_SHARE / e])
-                 if (got := _pin_try(s, P, f, k, kin, largest, field, pin, pg)) is not None),
-                None,
-            )  # fmt: skip
-            if got_one is not None:
-                return got_one
+            for pg in (pin, *[g for g in _coarser(pin) if pin / g >= GROUPS_SHARE / e]):
+                got_one = _pin_try(s, P, f, k, kin, largest, field, pin, pg)
+                if got_one is not None:
+                    return got_one
     return best
 
 
@@ -2752,8 +2749,9 @@ def _omega(lk: Linkage, fw: Flywheel) -> Diagram:
     )
 
 
-#: A column of I_пр whose largest value is under this (kg·m²) is written times a power of ten.
-TABLE_SMALL = 1.0e-3
+#: A column of I_пр whose largest value is under this (kg·m²) is written times a power of ten:
+#: where its first figure stands past the decimals a diagram's axis writes without one.
+TABLE_SMALL = 10.0 ** (1 - FACTOR_PLACES)
 
 
 def _tables3(lk: Linkage, fw: Flywheel, h: float) -> list[View]:
@@ -2762,7 +2760,7 @@ def _tables3(lk: Linkage, fw: Flywheel, h: float) -> list[View]:
     si = max(abs(x) for x in fw.I_pr)
     # a column of tiny I_пр written times 10^n as its diagram's axis writes it (review 11: an
     # instrument's 0,00000236 кг·м²): I_пр·10^6 = 2,360
-    n_i = 3 * math.ceil(-math.log10(si) / 3.0) if 0.0 < si < TABLE_SMALL else 0
+    n_i = thousands_power(si) if 0.0 < si < TABLE_SMALL else 0
     i_head = f"{WORDS('I_pr')}·10^{{{n_i}}}" if n_i else WORDS("I_pr")
     rows: list[list[str]] = [
         ["№", "φ_1, °", f"{i_head}, {WORDS('kgm2')}", f"{WORDS('M_pr')}, {WORDS('Nm')}"]
