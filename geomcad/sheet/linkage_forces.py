@@ -1891,7 +1891,7 @@ class _FreeBody(_Forces):
         mech = Mechanism(tuple(Link(x) for x in sorted(own | near)), pairs, full.frame)
         clear = Clearance(d.sheet, len(d.sheet.items), _field(at))
         draw_scheme(v, mech, bodies=link_bodies(lk, P, links), pair_labels={},
-                    ghosts=sorted(near), guides=frame_guides(lk))  # fmt: skip
+                    ghosts=sorted(near), guides=frame_guides(lk), cut_free=True)  # fmt: skip
         for name in joint_names(lk, links):  # lettered as on the mechanism
             v.label(P.pos[name], markup_of(name), 3.5, clear=1.0)
         arcs: dict[tuple[float, float], int] = {}

@@ -96,6 +96,7 @@ def draw_scheme(
     link_space: float = 0.0,
     letter_space: float = 0.0,
     guide_axes: bool = False,
+    cut_free: bool = False,
 ) -> None:
     """Draw ``mech`` in viewport ``v`` (see the module docstring).
 
@@ -115,7 +116,12 @@ def draw_scheme(
     given a body is drawn as that body, never as a block. ``link_space``: mm the links'
     numbers keep further than usual from other texts (where position numbers stand near them),
     ``letter_space`` the pairs' letters. ``guide_axes``: each guide of the frame without a
-    ``travel`` gets its axis, dash-dot (a caller that draws no axis of its own).
+    ``travel`` gets its axis, dash-dot (a caller that draws no axis of its own). ``cut_free``:
+    ``mech`` is a free body cut from the frame (a cut-out Assur group or the crank of the
+    kinetostatics, whose frame's reactions R_0j stand for the frame): a revolute on the frame
+    is drawn as its joint only and a prismatic pair on the frame as its block on a dash-dot
+    stub of the guide's axis (the direction the reaction is normal to), neither with the
+    frame's hatched support or guide.
     """
     bodies = dict(bodies or {})
     size = mech.size()
@@ -137,10 +143,10 @@ def draw_scheme(
         run = [vec(q) for q in (travel or {}).get(p.name, ())]
         knot = p.name in knots or p.name in knots.values()
         _prismatic(v, mech, p, role, ghosts, drawn, None if at is None else vec(at), run, knot,
-                   guide_axes)  # fmt: skip
+                   guide_axes, cut_free)  # fmt: skip
     for p in mech.pairs:
         if p.kind == "R":
-            if mech.frame in p.links:
+            if mech.frame in p.links and not cut_free:
                 v.pivot(p.at, (supports or {}).get(p.name) or _support_direction(mech, p, drawn))
             else:
                 v.joint(p.at)
@@ -297,10 +303,12 @@ def _prismatic(
     run: Sequence[Vec] = (),
     knot: bool = False,
     axis: bool = False,
+    cut_free: bool = False,
 ) -> None:
     """A prismatic pair's symbol (see the module docstring); ``knot``: the pair is a knot's
     (:data:`KNOT_BLOCK`): the frame's slider drawn round the carried block, on a guide that
-    wide, the carried block smaller."""
+    wide, the carried block smaller; ``cut_free``: a pair on the frame is drawn cut free of it
+    (its block on a stub of the guide's axis, no hatched guide)."""
     assert p.axis is not None
     u = p.axis
     size = (KNOT_SLIDER if mech.frame in p.links else KNOT_BLOCK) if knot else SLIDER_SIZE
@@ -308,15 +316,18 @@ def _prismatic(
     def block(lk: str) -> bool:  # a link of one point, not given a body of its own
         return is_block(mech, lk) and not drawn.get(lk)
 
-    if any(lk in ghosts for lk in p.links):
-        # a group drawn on its own: its block with a stub of the guide it slides on
+    on_frame = mech.frame in p.links
+    if any(lk in ghosts for lk in p.links) or (cut_free and on_frame):
+        # a group drawn on its own (or cut from the frame): its block with a stub of the guide
+        # it slides on, at the guide's point (a yoke's rod slides off its block's point)
+        g = p.at if guide_at is None or not on_frame else guide_at
         k = v.scale.model(GUIDE_HALF * 1.6)
-        v.seg(p.at - u * k, p.at + u * k, "centre")
+        v.seg(g - u * k, g + u * k, "centre")
         for lk in p.links:
-            if lk not in ghosts and block(lk):
-                _block(v, p.at, u, role[lk], drawn)
+            if lk not in ghosts and lk != mech.frame and block(lk):
+                _block(v, p.at, u, role[lk], drawn, size)
         return
-    if mech.frame in p.links:
+    if on_frame:
         k = v.scale.model(GUIDE_HALF)
         g = p.at if guide_at is None else guide_at
         lo, hi = -k, k
