@@ -28,12 +28,13 @@ import numpy.typing as npt
 
 from geomcad import tol
 from geomcad.geom import Vec
-from geomcad.sheet.drawing import Drawing, Viewport
+from geomcad.sheet.drawing import JOINT_R, Drawing, Viewport
 from geomcad.sheet.lang import Words
 from geomcad.sheet.loads import ForceScales, _inside, chord_points, force
 from geomcad.sheet.model import ArcItem, CircleItem, Polyline, TextItem
 from geomcad.sheet.plans import markup_of
 from geomcad.sheet.scale import Scale
+from geomcad.sheet.symbols import HATCH_LEN, HATCH_STEP, STAND_DEPTH, STAND_HALF
 from geomcad.sheet.text import box, parse
 
 WORDS = Words(__package__, "linkage_forces")
@@ -70,6 +71,109 @@ def _clear_radius(items: Sequence[object], c: tuple[float, float], r: float) -> 
         if abs(ra - r) < ARC_APART_MM:
             r = ra + ARC_APART_MM
     return r
+
+
+#: An inset's circle keeps this far (mm) off a support of the frame (a hinge's stand and
+#: hatched ground, a guide's hatching: review 11's kulisa drew Ж's circle round S3 over O's
+#: support; 1.3 mm off it read as on it, the base line's and the circle's widths between):
+#: where its point is that near one, the circle is moved off the support …
+SUPPORT_GAP_MM = 2.0
+#: … its centre off its point, so far as its point stays this far (mm) inside it (a joint's
+#: circle and a gap: the circle still reads as round its point).
+POINT_INSIDE_MM = JOINT_R + 0.5
+#: The step (mm) and the directions tried for that move.
+SHIFT_STEP_MM = 0.25
+SHIFT_TURNS = 24
+
+
+def supports(items: Sequence[object]) -> list[npt.NDArray[np.float64]]:
+    """The outlines (k, 2; sheet mm) of the frame's supports among ``items``: the convex hull
+    of each run of hatching strokes (role ``ground``; strokes closer than two hatch steps, one
+    run), with the stand over it where a hinge's is (its two lines from the joint, each of a
+    stand's length, :func:`~geomcad.sheet.symbols.pivot`)."""
+    strokes = [np.asarray(it.points, dtype=float) for it in items
+               if isinstance(it, Polyline) and it.role == "ground"]  # fmt: skip
+    leg = math.hypot(STAND_DEPTH, STAND_HALF)
+    stands = [np.asarray(it.points, dtype=float) for it in items
+              if isinstance(it, Polyline) and it.role == "link" and len(it.points) == 2
+              and abs(math.dist(*it.points) - leg) <= tol.SHEET_MM]  # fmt: skip
+    runs: list[list[npt.NDArray[np.float64]]] = []
+    for st in strokes:
+        near = [r for r in runs
+                if min(float(np.hypot(*(st[0] - o[0]))) for o in r) < 2.0 * HATCH_STEP]  # fmt: skip
+        runs = [r for r in runs if not any(r is n for n in near)]
+        runs.append([st, *(x for r in near for x in r)])
+    out: list[npt.NDArray[np.float64]] = []
+    for r in runs:
+        pts = np.concatenate(r)
+        lo, hi = pts.min(axis=0) - HATCH_LEN, pts.max(axis=0) + HATCH_LEN
+        legs = [st for st in stands if ((st[1] >= lo) & (st[1] <= hi)).all()]
+        out.append(_hull(np.concatenate([pts, *legs])))
+    return out
+
+
+def _hull(pts: npt.NDArray[np.float64]) -> npt.NDArray[np.float64]:
+    """The convex hull (k, 2) of points (n, 2), counter-clockwise (monotone chain)."""
+    q = sorted({(float(x), float(y)) for x, y in pts})
+    if len(q) < 3:
+        return np.asarray(q, dtype=float)
+
+    def half(seq: list[tuple[float, float]]) -> list[tuple[float, float]]:
+        h: list[tuple[float, float]] = []
+        for p in seq:
+            while len(h) >= 2:
+                (ax, ay), (bx, by) = h[-2], h[-1]
+                if (bx - ax) * (p[1] - ay) - (by - ay) * (p[0] - ax) > 0.0:
+                    break
+                h.pop()
+            h.append(p)
+        return h
+
+    lower, upper = half(q), half(q[::-1])
+    return np.asarray(lower[:-1] + upper[:-1], dtype=float)
+
+
+def _to_outline(c: tuple[float, float], poly: npt.NDArray[np.float64]) -> float:
+    """The distance (mm) from ``c`` to the closed outline ``poly`` (k, 2): 0 inside it."""
+    if len(poly) >= 3 and _holds([(float(x), float(y)) for x, y in poly], c):
+        return 0.0
+    a, b = poly, np.roll(poly, -1, axis=0)
+    ab = b - a
+    n2 = np.maximum((ab**2).sum(axis=1), tol.SHEET_MM**2)
+    t = np.clip(((np.asarray(c) - a) * ab).sum(axis=1) / n2, 0.0, 1.0)
+    foot = a + t[:, None] * ab
+    return float(np.hypot(*(np.asarray(c) - foot).T).min())
+
+
+def off_supports(
+    c: tuple[float, float], r: float, points: Sequence[tuple[float, float]],
+    outlines: Sequence[npt.NDArray[np.float64]],
+    keep: Sequence[tuple[tuple[float, float], float]] = (),
+) -> tuple[float, float]:  # fmt: skip
+    """The centre of an inset's circle of radius ``r`` (sheet mm) round the ``points`` it
+    marks: ``c``, or, where the circle would come within :data:`SUPPORT_GAP_MM` of a
+    support's outline (:func:`supports`), the nearest centre that keeps it that far off every
+    one with each point :data:`POINT_INSIDE_MM` inside it and the circle
+    :data:`CIRCLES_APART_MM` off the circles ``keep`` ((centre, radius)); ``c`` where none
+    does (a point on a guide: the circle round its block crosses the guide's hatching)."""
+
+    def clear(q: tuple[float, float]) -> bool:
+        return all(_to_outline(q, o) >= r + SUPPORT_GAP_MM for o in outlines)
+
+    if not outlines or clear(c):
+        return c
+    turns = [2.0 * math.pi * i / SHIFT_TURNS for i in range(SHIFT_TURNS)]
+    most = r - POINT_INSIDE_MM - max((math.dist(c, p) for p in points), default=0.0)
+    t = SHIFT_STEP_MM
+    while t <= most + tol.SHEET_MM:
+        for a in turns:
+            q = (c[0] + t * math.cos(a), c[1] + t * math.sin(a))
+            inside = all(math.dist(q, p) <= r - POINT_INSIDE_MM for p in points)
+            apart = all(math.dist(q, o) >= r + ro + CIRCLES_APART_MM for o, ro in keep)
+            if inside and apart and clear(q):
+                return q
+        t += SHIFT_STEP_MM
+    return c
 
 
 def _holds(poly: Sequence[tuple[float, float]], c: tuple[float, float]) -> bool:
@@ -264,6 +368,7 @@ class Insets:
         # the circles and their letters first (each beside its own circle), then the insets
         rings = self.clusters(v)
         radii = [r for *_, r in rings]
+        outlines = supports(d.sheet.items[start:])
         for i, (q, shorts, c, r) in enumerate(rings):
             letter = next(letters)
             self.drawn.append((letter, self.scale))
@@ -271,6 +376,9 @@ class Insets:
             room = min((math.dist(c, o[2]) - radii[j] - CIRCLES_APART_MM
                         for j, o in enumerate(rings) if j != i), default=math.inf)  # fmt: skip
             radii[i] = max(r, min(_clear_radius(d.sheet.items[start:], c, r), room))
+            others = [(o[2], radii[j]) for j, o in enumerate(rings) if j != i]
+            c = off_supports(c, radii[i], [v.p(s.at) for s in shorts], outlines, others)
+            rings[i] = (q, shorts, c, radii[i])
             circle = CircleItem(c, radii[i], "thin")
             d.sheet.add(circle)
             free.letter(d, letter, c, radii[i])  # its own circle is not in its way
