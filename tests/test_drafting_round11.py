@@ -119,3 +119,32 @@ def test_no_inset_circle_on_the_kulisa_hinge_support(monkeypatch: pytest.MonkeyP
     near = [(it.c, round(g, 2)) for it in rings
             if (g := min(_ring_gap(it.c, it.r, a, b) for a, b in support)) < 2.0]  # fmt: skip
     assert not near, near
+
+
+# -- no thin line through a label --------------------------------------------------------------
+
+
+@pytest.mark.parametrize("name", ["kulisa_inclined_ram", "sixbar_coupler_slider"])
+def test_no_thin_line_runs_through_a_label(name: str) -> None:
+    """On the kinematic sheet no thin line (the twelve positions' lines, paths, centre lines,
+    construction, hatching) runs through a label: it is broken at the label's box (review 11:
+    thin lines through "9", "11", "S5"; on main kulisa's "S3" and sixbar_coupler_slider's "B"
+    were crossed). The measure is the layout checker's: the label's box less 0.25 mm all round
+    meets the line's ink over more than AREA_EPS mm²."""
+    from layout import AREA_EPS, stroke, text_poly
+
+    from geomcad.sheet.linkage import kinematic_sheets
+    from geomcad.sheet.model import TextItem
+    from geomcad.sheet.placer import BROKEN_ROLES
+
+    sheet = next(sh for _, sh in kinematic_sheets(solve(_linkage(name))))
+    thin = [it for it in sheet.items if isinstance(it, Polyline) and it.role in BROKEN_ROLES]
+    inks = [stroke(it, sheet.format) for it in thin]
+    bad = []
+    for t in sheet.items:
+        if isinstance(t, TextItem) and t.role == "label":
+            p = text_poly(t).buffer(-0.25)
+            if p.is_empty:
+                continue
+            bad += [t.text for g in inks if g.intersects(p) and g.intersection(p).area > AREA_EPS]
+    assert not bad, (name, bad)

@@ -26,6 +26,7 @@ from geomcad.sheet.placer import (
     DimText,
     Index,
     LabelRequest,
+    break_under_labels,
     drop_crossed,
     place_dims,
     place_labels,
@@ -241,10 +242,11 @@ class Drawing:
         return y + height + (len(lines) - 1) * lead + (lead - height)
 
     # -- label placement -----------------------------------------------------------------------
-    def finish(self) -> Sheet:
+    def finish(self, breaks: bool = True) -> Sheet:
         """Drop the optional texts a line crosses, place every dimension's text and every pending
-        label (:mod:`geomcad.sheet.placer`)
-        and return the sheet."""
+        label (:mod:`geomcad.sheet.placer`), break the thin lines under the labels
+        (:func:`~geomcad.sheet.placer.break_under_labels`; ``breaks=False``: the caller moves
+        labels after and breaks them itself) and return the sheet."""
         shrink_moved(self.sheet, self.moved)
         self.moved.clear()
         index = Index(self.sheet, self.frame)  # the lines drawn; texts join it as they are set
@@ -254,6 +256,8 @@ class Drawing:
         self.dims.clear()
         place_labels(self.sheet, index, self.pending)
         self.pending.clear()
+        if breaks:
+            break_under_labels(self.sheet)
         return self.sheet
 
 

@@ -65,7 +65,7 @@ from geomcad.sheet.lang import Words, current, per_language
 from geomcad.sheet.loads import clear_turn
 from geomcad.sheet.model import ArcItem, CircleItem, Polyline, TextItem
 from geomcad.sheet.motion import Frames, turn
-from geomcad.sheet.placer import clip_to_circle, within_hull
+from geomcad.sheet.placer import break_under_labels, clip_to_circle, within_hull
 from geomcad.sheet.plans import markup_of
 from geomcad.sheet.scale import Scale, angle_places, fmt_column, fmt_fixed
 from geomcad.sheet.scheme import Body, draw_scheme, is_block
@@ -647,12 +647,13 @@ def kinematic_sheets(s: Solved, stem: str = "") -> list[tuple[str, Sheet]]:
     compose(d, lay.trees[0], layout=lays[0])
     if d.sheet.block is not None:
         d.sheet.block = replace(d.sheet.block, scale=lay.k_l.ratio_text())
-    first = d.finish()
+    first = d.finish(breaks=False)
     for pl in lays[0]:  # a link's number never reads as a position's
         if isinstance(pl.view, _Mechanism | _CrankDetail):
             if isinstance(pl.view, _Mechanism):
                 keep_tracks_apart(first, pl.box, pl.view.tracks, pl.view.rows)
             keep_link_numbers_clear(first, pl.box)
+    break_under_labels(first)  # the labels where they stay
     out: list[tuple[str, Sheet]] = [("", first)]
     if lay.second:
         d2 = lay.sized[1].start(_title(lk, WORDS("vplans_sheet"), designation, None, 2, count))
