@@ -103,8 +103,11 @@ def test_one_length_scale_with_the_crank_long(path: Path) -> None:
 #: files after the one-μ_l rule: 0.445 (slider-crank) … 0.631 (press_offset_long_rod); on review
 #: 10's eight sheets 0.51–0.57 by this count (39–54 % by review 10's field.py). The aim of
 #: ≤ 40 % is not reached (only watt2 by field.py): the guard keeps every sheet within the worst
-#: measured, so that a change leaving more of a sheet blank fails.
-BLANK_MAX = 0.64
+#: measured, so that a change leaving more of a sheet blank fails. Review 11 item 6 took the
+#: frame's hatched supports off the cut-out groups (a group is cut free of the frame): their
+#: hatching was the only ink of one 30 mm cell of tangent_rocking_slider's sheet (0.639 →
+#: 0.641), no view moved; the guard is set by that much higher, not for a sparser layout.
+BLANK_MAX = 0.645
 
 
 @pytest.mark.parametrize("path", FILES, ids=lambda p: p.stem)
