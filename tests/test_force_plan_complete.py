@@ -56,15 +56,9 @@ def _plans(
     return list(rec.values())
 
 
-#: The files whose failing plan another item owns: the yoke's link 2 is a two-force plan
-#: (R₃₂ ≈ −R₁₂, G₂ and Ф₂ under 0,1 % of them named as negligible): review 9 item 4, two-force
-#: plans ("R = −R"), seedsA's this round.
-OWNED = {
-    "yoke_pump_double_slider": "review 9 item 4 (seedsA): the two-force plan of link 2 names "
-    "its G2, Ф2 (under 0,1 %) as not shown",
-    "slider_rocker_rpr": "review 10 item 3 (polish, not merged: its rule broke four other "
-    "tests): link 4's plan names its G4 (under 0,1 %) as not shown",
-}
+#: The files whose failing plan another item owns (none: review 11 item 5 drew the yoke's
+#: link 2 G2, Ф2 and slider_rocker_rpr's link 4 G4, under 0,1 %, in details at stated μ_F).
+OWNED: dict[str, str] = {}
 
 
 def _owned(paths: list[Path]) -> list[Any]:

@@ -1047,7 +1047,10 @@ def _sheet2(
                 b.readable_mm = weight * GROUPS_SHARE * lk.length / k_l
     # each group's polygons under the group cut out (the crank's under the crank); a
     # polygon's vectors too short for its μ_F are drawn again, enlarged, in details at their
-    # own stated μ_F beside it in its view (one letter each on the sheet)
+    # own stated μ_F beside it in its view (one letter each on the sheet). A plan leaves out
+    # no term of its ΣF = 0, however small (review 11 item 5: slider_rocker_rpr's "G4 (менее
+    # 0,1 %) не показана"): its details' tiers (DETAIL_TIERS, a span of 10⁴) reach the 0,1 %
+    # the views leave out (NEGLIGIBLE), so each term is an arrow at a stated μ_F
     per_group = [
         [
             Polygon(
@@ -1058,7 +1061,6 @@ def _sheet2(
                 detail=refs is not None,
                 letters=letters,
                 ref=(refs or {}).get(_poly_title(gf, name)),
-                negligible=(NEGLIGIBLE, _negligible_note),
             )
             for name, poly in gf.polygons
         ]
@@ -1612,13 +1614,6 @@ def _share_text(share: float) -> str:
     pct = share * 100.0
     e = math.floor(math.log10(pct)) - 1
     return fmt_number(math.ceil(pct / 10.0**e * (1.0 + tol.DERIVED)) * 10.0**e)
-
-
-def _negligible_note(names: Sequence[str]) -> str:
-    """The line under a force plan's caption that names the vectors it leaves out as
-    negligible (under :data:`~geomcad.sheet.loads.NEGLIGIBLE` of its largest)."""
-    key = "negligible_one" if len(names) == 1 else "negligible"
-    return WORDS(key, names=", ".join(names), share=fmt_number(NEGLIGIBLE * 100.0))
 
 
 class _Forces(_ByScale, View):
