@@ -364,7 +364,7 @@ class Insets:
         free = _Free(d, start, field)
         for it in self.reserved:
             free.mark(it)
-        marks: list[tuple[str, Vec, list[Short], tuple[float, float]]] = []
+        marks: list[tuple[str, Vec, list[Short], tuple[float, float], TextItem]] = []
         # the circles and their letters first (each beside its own circle), then the insets
         rings = self.clusters(v)
         radii = [r for *_, r in rings]
@@ -381,11 +381,11 @@ class Insets:
             rings[i] = (q, shorts, c, radii[i])
             circle = CircleItem(c, radii[i], "thin")
             d.sheet.add(circle)
-            free.letter(d, letter, c, radii[i])  # its own circle is not in its way
+            mark = free.letter(d, letter, c, radii[i])  # its own circle is not in its way
             free.mark(circle)
-            marks.append((letter, q, shorts, c))
-        for letter, q, shorts, c in marks:
-            self._one(d, v, free, q, c, letter, shorts, eps, each)
+            marks.append((letter, q, shorts, c, mark))
+        for letter, q, shorts, c, mark in marks:
+            self._one(d, v, free, q, c, letter, shorts, eps, each, mark)
 
     def _one(
         self,
@@ -398,6 +398,7 @@ class Insets:
         shorts: list[Short],
         eps: float,
         each: bool,
+        mark: TextItem | None = None,
     ) -> None:
         from geomcad.sheet.compose import round_scale_down, scale_text
 
@@ -444,7 +445,11 @@ class Insets:
         corner = free.place(w, h, p)
         # the point in the inset, its arrows' box under the caption
         at = (corner[0] + (w - (x1 - x0)) / 2.0 - x0, corner[1] + cap - y0)
-        d.text(caption, (corner[0] + (w - cap_w) / 2.0, corner[1] + cap_h), cap_h)
+        cap_at = (corner[0] + (w - cap_w) / 2.0, corner[1] + cap_h)
+        # a caption that is the bare letter, set where it would meet the circle's own letter
+        # (the copy just under its circle), is left out: that letter names the copy too
+        if parts or mark is None or not _meets(mark, caption, cap_at, cap_h):
+            d.text(caption, cap_at, cap_h)
         iv = Viewport(d, sl, q.x, q.y, at)
         pts: list[Vec] = []
         for s in shorts:
@@ -734,6 +739,19 @@ class _Free:
     def take(self, corner: tuple[float, float], w: float, h: float) -> None:
         self._rect(self.grid, corner[0] - KEEP_MM, corner[1] - KEEP_MM,
                    w + 2 * KEEP_MM, h + 2 * KEEP_MM)  # fmt: skip
+
+
+def _meets(mark: TextItem, text: str, at: tuple[float, float], h: float) -> bool:
+    """Whether ``text`` set at ``at`` (baseline's left end), ``h`` high, meets the box of the
+    text ``mark`` (a circle's letter) or comes within :data:`KEEP_MM` of it."""
+    w, up, down = box(parse(text), h)
+    mw, mup, mdown = box(mark.runs, mark.height)
+    return (
+        at[0] - KEEP_MM < mark.at[0] + mw
+        and mark.at[0] - KEEP_MM < at[0] + w
+        and at[1] - up - KEEP_MM < mark.at[1] + mdown
+        and mark.at[1] - mup - KEEP_MM < at[1] + down
+    )
 
 
 def _grow(grid: npt.NDArray[np.bool_], n: int) -> npt.NDArray[np.bool_]:
