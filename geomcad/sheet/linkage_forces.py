@@ -594,18 +594,30 @@ def _pin_try(
     field: Field, pin: float, pin_groups: float,
 ) -> tuple[Tree, formats.Sized] | None:  # fmt: skip
     """Sheet 2 with its drawings of links pinned (:func:`_pinned`) where it fits on ``fmt``
-    with its tables whole, its plans' details in their boxes and the crank kept."""
+    with its tables whole, its plans' details in their boxes and the crank kept: of the
+    arrangements of :func:`_pinned_tree`, each tried alone (the joint search would take the
+    one that scores best with the pinned μ_l given up), the best that keeps them."""
     tree, _wants = _sheet2(s, P, f, k, TEXT_H, shared=True, kin=kin, pin=pin,
                            pin_groups=pin_groups)  # fmt: skip
-    try:
-        first = formats.Sized(fmt, True, arrange(tree, field))
-    except ParameterError:
-        return None  # a view finds no room at all
-    cand, _rules = _final2(s, P, f, k, first, True, fmt, kin, pin=pin, pin_groups=pin_groups)
-    got = cand[1].layout
-    if got.fits and _crank_kept(got) and _groups_kept(got) and _whole(got) and not _spilt(got):
-        return cand
-    return None
+    best: tuple[Tree, formats.Sized] | None = None
+    for only, alt in enumerate(_alternatives(tree)):
+        try:
+            first = formats.Sized(fmt, True, arrange(alt, field))
+        except ParameterError:
+            continue  # a view finds no room at all
+        cand, _rules = _final2(s, P, f, k, first, True, fmt, kin, pin=pin,
+                               pin_groups=pin_groups, only=only)  # fmt: skip
+        got = cand[1].layout
+        if (
+            got.fits
+            and _crank_kept(got)
+            and _groups_kept(got)
+            and _whole(got)
+            and not _spilt(got)
+            and (best is None or got.score > best[1].layout.score)
+        ):
+            best = cand
+    return best
 
 
 #: Where no GOST step holds the crank's rule, :func:`_pinned` pins the mechanism finer only
@@ -1184,7 +1196,15 @@ def _pinned_tree(
                       weights=[bh, rest])  # fmt: skip
     else:
         side = Column(band, Row(lever, Grid(*polys)), weights=[bh, rest])
-    return Row(side, mech, right, weights=[max(left, 1.0), mw, 1.0])
+    beside = Row(side, mech, right, weights=[max(left, 1.0), mw, 1.0])
+    # or the mechanism the sheet's height at the left edge and the tables in a row under the
+    # groups, beside the polygons: the groups and the lever take the width the tables' column
+    # left them (review 11: the yarn traverse's 12 mm crank at 2,5:1 with its groups at 2:1
+    # holds only so on A1; down a right column its groups fell to 1:1 and the crank to 12 mm)
+    wide = fw - mw - GAP
+    top = Row(band, lever, weights=[bw, max(wide - bw - GAP, 1.0)])
+    under = Column(top, Row(Grid(*polys), Row(*right.items)), weights=[bh, rest])
+    return Choice(beside, Row(mech, under, weights=[mw, max(wide, 1.0)]))
 
 
 #: The room beside a mechanism drawn across the top (:func:`_pinned_tree`) takes the lever
