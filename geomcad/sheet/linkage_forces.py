@@ -565,8 +565,16 @@ def _pinned(
             got_one = _pin_try(s, P, f, k, kin, largest, field, pin, pg)
             # (the plans keep their μ_F: one step of their series coarser at most where the
             # rule is mended, none where the views only grow)
+            # (or, where the views grow, coarser plans while each still reads: the larger
+            # μ_l wins over larger plans down to PLAN_READ_MM, review 11: kulisa at 1:4)
             if got_one is not None and (
-                short or _no_coarser(best[1].layout, got_one[1].layout, not kept)
+                short
+                or _no_coarser(best[1].layout, got_one[1].layout, not kept)
+                or (
+                    kept
+                    and _no_coarser(best[1].layout, got_one[1].layout, plans=False)
+                    and _plans_read(got_one[1].layout)
+                )
             ):
                 break
         else:
@@ -629,13 +637,14 @@ CRANK_FLOOR = 0.5
 GROW_L_STEPS = 2
 
 
-def _no_coarser(was: Layout, now: Layout, step: bool = False) -> bool:
+def _no_coarser(was: Layout, now: Layout, step: bool = False, plans: bool = True) -> bool:
     """Whether ``now`` draws every view but the drawings of links at a scale no coarser than
     ``was`` does (the same views by kind and title); ``step``: a force plan at most one step of
-    its series coarser."""
+    its series coarser; ``plans``: the force plans counted (else left out: :func:`_plans_read`
+    judges them)."""
 
     def scales(lay: Layout) -> dict[tuple[str, str], float]:
-        links = _Loaded | _FreeBody
+        links = (_Loaded, _FreeBody) if plans else (_Loaded, _FreeBody, Polygon)
         return {(type(pl.view).__name__, pl.view.title): pl.scale.k for pl in lay
                 if pl.scale is not None and not isinstance(pl.view, links)}  # fmt: skip
 
@@ -645,6 +654,27 @@ def _no_coarser(was: Layout, now: Layout, step: bool = False) -> bool:
              if key[0] == "Polygon" else kk for key, kk in a.items()}  # fmt: skip
     return a.keys() == b.keys() and all(b[key] <= kk * (1.0 + tol.REL_LENGTH)
                                         for key, kk in a.items())  # fmt: skip
+
+
+#: The trade-off of the drawings of links against the force plans (fix-list 11, item 1):
+#: where the search kept the crank's rule, the mechanism and its groups take the next finer
+#: GOST step at the cost of coarser force plans while every plan's longest vector stays at
+#: least this long (mm): half a course project's plan (:data:`PLAN_MM`), a polygon still read
+#: at its own μ_F with its 7 mm arrows, the shorter ones in its details. Below it the plans
+#: keep their μ_F and the links their step (kulisa at 1:2,5 with plans 55–103 mm, not at 1:4).
+PLAN_READ_MM = 0.5 * PLAN_MM
+
+
+def _plans_read(lay: Layout) -> bool:
+    """Whether every force plan of ``lay`` but a sliver (capped at its own length,
+    :attr:`Polygon.longest_mm`) draws its longest vector at least :data:`PLAN_READ_MM` long."""
+    for pl in lay:
+        v = pl.view
+        if isinstance(v, Polygon) and pl.scale is not None and v.longest_mm <= 0.0:
+            big = max((pv.magnitude for poly, _ in v.layers for pv in poly.vectors), default=0.0)
+            if big / pl.scale.k < PLAN_READ_MM * (1.0 - tol.REL_LENGTH):
+                return False
+    return True
 
 
 def _held(
