@@ -103,8 +103,11 @@ def test_one_length_scale_with_the_crank_long(path: Path) -> None:
 #: files after the one-μ_l rule: 0.445 (slider-crank) … 0.631 (press_offset_long_rod); on review
 #: 10's eight sheets 0.51–0.57 by this count (39–54 % by review 10's field.py). The aim of
 #: ≤ 40 % is not reached (only watt2 by field.py): the guard keeps every sheet within the worst
-#: measured, so that a change leaving more of a sheet blank fails.
-BLANK_MAX = 0.64
+#: measured, so that a change leaving more of a sheet blank fails. Review 11's fix list (item
+#: 1) took press_offset_long_rod from 1:2,5 to 1:2 (its crank 40 mm, the mechanism the sheet's
+#: height, every plan at the μ_F it had): 0.641 by this count, its drawing larger but centred
+#: in a taller box; the guard moved to it, no further.
+BLANK_MAX = 0.645
 
 
 @pytest.mark.parametrize("path", FILES, ids=lambda p: p.stem)
