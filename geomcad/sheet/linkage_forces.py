@@ -41,11 +41,14 @@ composition (:func:`force_layout`, issue 27):
   crank lost (review 7);
 - once the search has chosen, on the largest format: the mechanism, its groups and its crank
   at ONE μ_l with the crank CRANK_MM long on it, pinned as a constraint in an arrangement of
-  its own (the mechanism as a band across the top or down the left edge, :func:`_pinned`),
-  where the search left them apart or the crank short; where no such arrangement holds them,
-  the mechanism at its crank's rule and the groups at one coarser μ_l of their own; where the
+  its own (the mechanism as a band across the top, or down the left edge the sheet's height
+  with the tables down the right edge or in a row under the groups, :func:`_pinned_tree`),
+  where the search left them apart or the crank short (an instrument-size mechanism enlarged:
+  the yarn traverse's 12 mm crank at 2,5:1); where no such arrangement holds them, the
+  mechanism at its crank's rule and the groups at one coarser μ_l of their own; where the
   search kept the rule, the drawings of links one GOST step finer while every other view
-  keeps its scale (review 10);
+  keeps its scale (review 10), the force plans coarser while each still reads
+  (:data:`PLAN_READ_MM`, review 11: kulisa at 1:2,5, not 1:4);
 - the smallest format on which, besides, every force polygon is :data:`POLY_MM` across: the
   views grow, and the groups take their own μ_l, before a larger format is taken; on the format
   taken the tables are 3.5 mm high where the drawings of links keep their scales with it.
@@ -1186,11 +1189,13 @@ def _pinned_tree(
     s: Solved, mech: _Loaded, bodies: Sequence[_FreeBody], lever: View, polys: Sequence[View],
     right: Column, pin: float, pin_groups: float,
 ) -> Tree:  # fmt: skip
-    """The one arrangement of :func:`_pinned`'s sheet, its drawings of links at ``pin``
-    m/mm: a mechanism whose drawing is wider than BAND_ASPECT of its height as a band across
-    the top, the groups and the lever in a row under it, the polygons and the tables under
-    those; a taller one down the left edge, the groups and the lever beside it over the
-    polygons and the tables. The boxes of the mechanism and of the groups are given, as large
+    """The arrangements of :func:`_pinned`'s sheet, its drawings of links at ``pin`` m/mm
+    (:func:`_pin_try` tries each alone): a mechanism whose drawing is wider than BAND_ASPECT
+    of its height as a band across the top, the groups and the lever in a row under it, the
+    polygons and the tables under those; a taller one down the left edge, either the groups
+    and the lever beside it over the polygons and the tables down the right edge, or the
+    groups and the lever over the polygons and the tables in a row (a :class:`Choice` of the
+    two). The boxes of the mechanism and of the groups are given, as large
     as their drawings at ``pin`` (margins and captions included): the search shares only the
     rest among the lever and the polygons."""
     fmts = sheet_formats(s.linkage)
