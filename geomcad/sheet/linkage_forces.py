@@ -41,11 +41,14 @@ composition (:func:`force_layout`, issue 27):
   crank lost (review 7);
 - once the search has chosen, on the largest format: the mechanism, its groups and its crank
   at ONE μ_l with the crank CRANK_MM long on it, pinned as a constraint in an arrangement of
-  its own (the mechanism as a band across the top or down the left edge, :func:`_pinned`),
-  where the search left them apart or the crank short; where no such arrangement holds them,
-  the mechanism at its crank's rule and the groups at one coarser μ_l of their own; where the
+  its own (the mechanism as a band across the top, or down the left edge the sheet's height
+  with the tables down the right edge or in a row under the groups, :func:`_pinned_tree`),
+  where the search left them apart or the crank short (an instrument-size mechanism enlarged:
+  the yarn traverse's 12 mm crank at 2,5:1); where no such arrangement holds them, the
+  mechanism at its crank's rule and the groups at one coarser μ_l of their own; where the
   search kept the rule, the drawings of links one GOST step finer while every other view
-  keeps its scale (review 10);
+  keeps its scale (review 10), the force plans coarser while each still reads
+  (:data:`PLAN_READ_MM`, review 11: kulisa at 1:2,5, not 1:4);
 - the smallest format on which, besides, every force polygon is :data:`POLY_MM` across: the
   views grow, and the groups take their own μ_l, before a larger format is taken; on the format
   taken the tables are 3.5 mm high where the drawings of links keep their scales with it.
@@ -566,8 +569,16 @@ def _pinned(
             got_one = _pin_try(s, P, f, k, kin, largest, field, pin, pg)
             # (the plans keep their μ_F: one step of their series coarser at most where the
             # rule is mended, none where the views only grow)
+            # (or, where the views grow, coarser plans while each still reads: the larger
+            # μ_l wins over larger plans down to PLAN_READ_MM, review 11: kulisa at 1:4)
             if got_one is not None and (
-                short or _no_coarser(best[1].layout, got_one[1].layout, not kept)
+                short
+                or _no_coarser(best[1].layout, got_one[1].layout, not kept)
+                or (
+                    kept
+                    and _no_coarser(best[1].layout, got_one[1].layout, plans=False)
+                    and _plans_read(got_one[1].layout)
+                )
             ):
                 break
         else:
@@ -595,18 +606,30 @@ def _pin_try(
     field: Field, pin: float, pin_groups: float,
 ) -> tuple[Tree, formats.Sized] | None:  # fmt: skip
     """Sheet 2 with its drawings of links pinned (:func:`_pinned`) where it fits on ``fmt``
-    with its tables whole, its plans' details in their boxes and the crank kept."""
+    with its tables whole, its plans' details in their boxes and the crank kept: of the
+    arrangements of :func:`_pinned_tree`, each tried alone (the joint search would take the
+    one that scores best with the pinned μ_l given up), the best that keeps them."""
     tree, _wants = _sheet2(s, P, f, k, TEXT_H, shared=True, kin=kin, pin=pin,
                            pin_groups=pin_groups)  # fmt: skip
-    try:
-        first = formats.Sized(fmt, True, arrange(tree, field))
-    except ParameterError:
-        return None  # a view finds no room at all
-    cand, _rules = _final2(s, P, f, k, first, True, fmt, kin, pin=pin, pin_groups=pin_groups)
-    got = cand[1].layout
-    if got.fits and _crank_kept(got) and _groups_kept(got) and _whole(got) and not _spilt(got):
-        return cand
-    return None
+    best: tuple[Tree, formats.Sized] | None = None
+    for only, alt in enumerate(_alternatives(tree)):
+        try:
+            first = formats.Sized(fmt, True, arrange(alt, field))
+        except ParameterError:
+            continue  # a view finds no room at all
+        cand, _rules = _final2(s, P, f, k, first, True, fmt, kin, pin=pin,
+                               pin_groups=pin_groups, only=only)  # fmt: skip
+        got = cand[1].layout
+        if (
+            got.fits
+            and _crank_kept(got)
+            and _groups_kept(got)
+            and _whole(got)
+            and not _spilt(got)
+            and (best is None or got.score > best[1].layout.score)
+        ):
+            best = cand
+    return best
 
 
 #: Where no GOST step holds the crank's rule, :func:`_pinned` pins the mechanism finer only
@@ -618,13 +641,14 @@ CRANK_FLOOR = 0.5
 GROW_L_STEPS = 2
 
 
-def _no_coarser(was: Layout, now: Layout, step: bool = False) -> bool:
+def _no_coarser(was: Layout, now: Layout, step: bool = False, plans: bool = True) -> bool:
     """Whether ``now`` draws every view but the drawings of links at a scale no coarser than
     ``was`` does (the same views by kind and title); ``step``: a force plan at most one step of
-    its series coarser."""
+    its series coarser; ``plans``: the force plans counted (else left out: :func:`_plans_read`
+    judges them)."""
 
     def scales(lay: Layout) -> dict[tuple[str, str], float]:
-        links = _Loaded | _FreeBody
+        links = (_Loaded, _FreeBody) if plans else (_Loaded, _FreeBody, Polygon)
         return {(type(pl.view).__name__, pl.view.title): pl.scale.k for pl in lay
                 if pl.scale is not None and not isinstance(pl.view, links)}  # fmt: skip
 
@@ -634,6 +658,27 @@ def _no_coarser(was: Layout, now: Layout, step: bool = False) -> bool:
              if key[0] == "Polygon" else kk for key, kk in a.items()}  # fmt: skip
     return a.keys() == b.keys() and all(b[key] <= kk * (1.0 + tol.REL_LENGTH)
                                         for key, kk in a.items())  # fmt: skip
+
+
+#: The trade-off of the drawings of links against the force plans (fix-list 11, item 1):
+#: where the search kept the crank's rule, the mechanism and its groups take the next finer
+#: GOST step at the cost of coarser force plans while every plan's longest vector stays at
+#: least this long (mm): half a course project's plan (:data:`PLAN_MM`), a polygon still read
+#: at its own μ_F with its 7 mm arrows, the shorter ones in its details. Below it the plans
+#: keep their μ_F and the links their step (kulisa at 1:2,5 with plans 55–103 mm, not at 1:4).
+PLAN_READ_MM = 0.5 * PLAN_MM
+
+
+def _plans_read(lay: Layout) -> bool:
+    """Whether every force plan of ``lay`` but a sliver (capped at its own length,
+    :attr:`Polygon.longest_mm`) draws its longest vector at least :data:`PLAN_READ_MM` long."""
+    for pl in lay:
+        v = pl.view
+        if isinstance(v, Polygon) and pl.scale is not None and v.longest_mm <= 0.0:
+            big = max((pv.magnitude for poly, _ in v.layers for pv in poly.vectors), default=0.0)
+            if big / pl.scale.k < PLAN_READ_MM * (1.0 - tol.REL_LENGTH):
+                return False
+    return True
 
 
 def _held(
@@ -1147,11 +1192,13 @@ def _pinned_tree(
     s: Solved, mech: _Loaded, bodies: Sequence[_FreeBody], lever: View, polys: Sequence[View],
     right: Column, pin: float, pin_groups: float,
 ) -> Tree:  # fmt: skip
-    """The one arrangement of :func:`_pinned`'s sheet, its drawings of links at ``pin``
-    m/mm: a mechanism whose drawing is wider than BAND_ASPECT of its height as a band across
-    the top, the groups and the lever in a row under it, the polygons and the tables under
-    those; a taller one down the left edge, the groups and the lever beside it over the
-    polygons and the tables. The boxes of the mechanism and of the groups are given, as large
+    """The arrangements of :func:`_pinned`'s sheet, its drawings of links at ``pin`` m/mm
+    (:func:`_pin_try` tries each alone): a mechanism whose drawing is wider than BAND_ASPECT
+    of its height as a band across the top, the groups and the lever in a row under it, the
+    polygons and the tables under those; a taller one down the left edge, either the groups
+    and the lever beside it over the polygons and the tables down the right edge, or the
+    groups and the lever over the polygons and the tables in a row (a :class:`Choice` of the
+    two). The boxes of the mechanism and of the groups are given, as large
     as their drawings at ``pin`` (margins and captions included): the search shares only the
     rest among the lever and the polygons."""
     fmts = sheet_formats(s.linkage)
@@ -1187,7 +1234,15 @@ def _pinned_tree(
                       weights=[bh, rest])  # fmt: skip
     else:
         side = Column(band, Row(lever, Grid(*polys)), weights=[bh, rest])
-    return Row(side, mech, right, weights=[max(left, 1.0), mw, 1.0])
+    beside = Row(side, mech, right, weights=[max(left, 1.0), mw, 1.0])
+    # or the mechanism the sheet's height at the left edge and the tables in a row under the
+    # groups, beside the polygons: the groups and the lever take the width the tables' column
+    # left them (review 11: the yarn traverse's 12 mm crank at 2,5:1 with its groups at 2:1
+    # holds only so on A1; down a right column its groups fell to 1:1 and the crank to 12 mm)
+    wide = fw - mw - GAP
+    top = Row(band, lever, weights=[bw, max(wide - bw - GAP, 1.0)])
+    under = Column(top, Row(Grid(*polys), Row(*right.items)), weights=[bh, rest])
+    return Choice(beside, Row(mech, under, weights=[mw, max(wide, 1.0)]))
 
 
 #: The room beside a mechanism drawn across the top (:func:`_pinned_tree`) takes the lever
