@@ -107,10 +107,9 @@ def test_one_length_scale_with_the_crank_long(path: Path) -> None:
 #: frame's hatched supports off the cut-out groups (a group is cut free of the frame): their
 #: hatching was the only ink of one 30 mm cell of tangent_rocking_slider's sheet (0.639 →
 #: 0.641), no view moved; the guard is set by that much higher, not for a sparser layout.
-#: Review 11's fix list (item
-#: 1) took press_offset_long_rod from 1:2,5 to 1:2 (its crank 40 mm, the mechanism the sheet's
-#: height, every plan at the μ_F it had): 0.641 by this count, its drawing larger but centred
-#: in a taller box; the guard moved to it, no further.
+#: Review 11's item 1 took press_offset_long_rod from 1:2,5 to 1:2 (its crank 40 mm, the
+#: mechanism the sheet's height, every plan at the μ_F it had): 0.641 by this count too, its
+#: drawing larger but centred in a taller box.
 BLANK_MAX = 0.645
 
 
