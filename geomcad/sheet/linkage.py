@@ -255,10 +255,13 @@ class Layout:
     mech: View  # the mechanism's view (on the first sheet)
     sized: tuple[formats.Sized, ...] = ()  # each sheet's format and arrangement
     #: the output's diagrams in equal heights; else their split searched, as the equal one
-    #: drew a curve shorter than DIAGRAM_SPAN_MM (these its curves' heights, mm) or the
+    #: drew a curve shorter than DIAGRAM_SPAN_LEAST_MM (these its curves' heights, mm) or the
     #: mechanism at a coarser scale
     balanced: bool = True
     squeezed: tuple[float, ...] = ()
+    #: the diagrams' boxes keep DIAGRAM_SPAN_MM (else the crank's rule took the room, and
+    #: only DIAGRAM_SPAN_LEAST_MM is sought)
+    spans: bool = True
 
 
 def _accel_positions(s: Solved) -> tuple[Position, ...]:
@@ -588,7 +591,8 @@ def _arrange(s: Solved, spans: bool) -> tuple[Layout, tuple[Arranged, ...], floa
     # sheet with the mechanism (a test file's 1:1 became 1:2). Taken where it helps and keeps
     # the size rules as well.
     squeezed = _spans(fitted)
-    low = min(squeezed, default=DIAGRAM_SPAN_MM) < DIAGRAM_SPAN_MM - tol.SHEET_MM
+    floor = DIAGRAM_SPAN_MM if spans else DIAGRAM_SPAN_LEAST_MM
+    low = min(squeezed, default=floor) < floor - tol.SHEET_MM
     if low or second:
         balanced = False
         tried = attempt()
@@ -612,7 +616,7 @@ def _arrange(s: Solved, spans: bool) -> tuple[Layout, tuple[Arranged, ...], floa
             and all(z.layout.fits for _, z in tried[0])
             and [z.fmt for _, z in tried[0]] == [z.fmt for _, z in fitted]
             and _rules_share(s, tried[0]) >= _rules_share(s, fitted) - tol.REL_LENGTH
-            and min(_spans(tried[0]), default=DIAGRAM_SPAN_MM) >= DIAGRAM_SPAN_MM - tol.SHEET_MM
+            and min(_spans(tried[0]), default=floor) >= floor - tol.SHEET_MM
         ):
             break
         fitted, mech, second = tried
@@ -626,7 +630,7 @@ def _arrange(s: Solved, spans: bool) -> tuple[Layout, tuple[Arranged, ...], floa
                 view.shown = short
     k_v = lays[-1].scale("v")
     out = Layout(lays[0][mech].scale or Scale(1.0), k_v, lays[0].scale("a"), second, accel,
-                 trees, mech, sized, balanced, squeezed)  # fmt: skip
+                 trees, mech, sized, balanced, squeezed, spans)  # fmt: skip
     return out, lays, _rules_share(s, fitted)
 
 
@@ -2307,6 +2311,10 @@ DIAGRAM_H = 60.0
 #: 20–30 mm high in 63 mm boxes, read as squeezed; a teacher reads a diagram off a curve
 #: about as tall as the crank's 60 mm circle).
 DIAGRAM_SPAN_MM = 35.0
+#: The least height (mm) of a diagram's curve on every sheet, the crank's rule's too: where the
+#: equal boxes of DIAGRAM_H draw one lower, the search splits the column (review 5: a(φ) was
+#: squeezed to 12 mm beside a column of plans).
+DIAGRAM_SPAN_LEAST_MM = 25.0
 #: The height (mm) of each output diagram's plot (its y axis's room) the layout seeks where the
 #: sheet has room: lower, its drawn area counts in the search as if it shrank by the plot's
 #: shortfall to the power :data:`DIAGRAM_PLOT_POWER` (review 9: the rocking cylinder's ψ, ω,
