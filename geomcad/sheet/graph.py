@@ -54,6 +54,18 @@ def nice_step(raw: float) -> float:
     return 10.0 ** (e + 2)
 
 
+def nice_step_below(raw: float) -> float:
+    """The largest 1, 2, 2.5, 4 or 5 × 10^n that is ≤ ``raw`` (> 0): the coarsest factor that
+    still draws ``raw`` units at least 1 mm (a curve's span at least its least height)."""
+    e = math.floor(math.log10(raw))
+    for exp in (e, e - 1):
+        for m in reversed(NICE):
+            step = m * 10.0**exp
+            if step <= raw * (1.0 + tol.DERIVED):
+                return step
+    return 10.0 ** (e - 1)
+
+
 def exact_places(step: float) -> int:
     """The decimals that write ``step`` (> 0) exactly, at most :data:`TICK_PLACES`."""
     return next(

@@ -27,6 +27,7 @@ import math
 import re
 from collections.abc import Callable, Collection, Mapping, Sequence
 from dataclasses import dataclass, replace
+from typing import Any
 
 import numpy as np
 import numpy.typing as npt
@@ -61,6 +62,7 @@ from geomcad.sheet.compose import (
 from geomcad.sheet.drawing import SHORT_MM, Viewport
 from geomcad.sheet.form import title_block_spacer
 from geomcad.sheet.frame import FORMATS, name_fits, text_at
+from geomcad.sheet.graph import nice_step_below
 from geomcad.sheet.lang import Words, current, per_language
 from geomcad.sheet.loads import clear_turn
 from geomcad.sheet.model import ArcItem, CircleItem, Polyline, TextItem
@@ -99,6 +101,10 @@ PLANS_ON_SHEET = 12
 #: The width of the order of construction and of the notes (mm), for 2.5 mm text; wider in
 #: proportion to the square root of a larger text's height.
 ORDER_W = 190.0
+#: After the search, the mechanism is tried at up to this many finer GOST steps, one at a time,
+#: each kept where every sheet still fits with the size rules and the diagrams' spans (a step
+#: costs one more search: two keep a build within a few seconds).
+FINER_STEPS = 2
 #: Samples of the exact diagrams over a turn.
 DIAGRAM_SAMPLES = 361
 
@@ -249,10 +255,13 @@ class Layout:
     mech: View  # the mechanism's view (on the first sheet)
     sized: tuple[formats.Sized, ...] = ()  # each sheet's format and arrangement
     #: the output's diagrams in equal heights; else their split searched, as the equal one
-    #: drew a curve shorter than DIAGRAM_SPAN_MM (these its curves' heights, mm) or the
+    #: drew a curve shorter than DIAGRAM_SPAN_LEAST_MM (these its curves' heights, mm) or the
     #: mechanism at a coarser scale
     balanced: bool = True
     squeezed: tuple[float, ...] = ()
+    #: the diagrams' boxes keep DIAGRAM_SPAN_MM (else the crank's rule took the room, and
+    #: only DIAGRAM_SPAN_LEAST_MM is sought)
+    spans: bool = True
 
 
 def _accel_positions(s: Solved) -> tuple[Position, ...]:
@@ -266,7 +275,7 @@ def _accel_positions(s: Solved) -> tuple[Position, ...]:
 def _trees(
     s: Solved, accel: Sequence[Position], h: float = TEXT_H, enlarge: bool = False,
     rules: tuple[bool, bool] = (False, False), apart: bool = False, balanced: bool = True,
-    k_v: float = 0.0, mech_k: float = 0.0,
+    k_v: float = 0.0, mech_k: float = 0.0, seek_k: float = 0.0, spans: bool = True,
 ) -> tuple[tuple[Tree, ...], _Mechanism, bool, dict[View, float]]:  # fmt: skip
     """The sheets' view trees (see the module's docstring), tables and orders written ``h``
     high, and the scales (model units per mm) the format is chosen to reach: the mechanism's
@@ -280,7 +289,10 @@ def _trees(
     velocity plans' scale on their own sheet, at which the velocity plan of an acceleration
     plan's position that is not a numbered one is drawn beside it (one μ_V for a file's
     velocity plans). ``mech_k`` (m/mm, 0: none): with the crank's detail, the scale the
-    mechanism reached without it, which its search still seeks."""
+    mechanism reached without it, which its search still seeks. ``seek_k`` (m/mm, 0: none):
+    without the detail, a finer scale the mechanism's search seeks (:data:`FINER_STEPS`).
+    ``spans``: each output diagram at least as high as draws its curve :data:`DIAGRAM_SPAN_MM`
+    high (:meth:`_OutputDiagram.stretch`), else :data:`DIAGRAM_H`."""
     lk = s.linkage
     n = len(s.drawn)
     second = apart or n > PLANS_ON_SHEET
@@ -326,7 +338,7 @@ def _trees(
     aplans: Tree = Grid(*cells, title=WORDS("vaplans" if both else "aplans"), group="a",
                         title_height=TITLE_H)  # fmt: skip
     # s, v and a share the column's height (review 6: whitworth's s took 250 mm, v and a 60)
-    graphs = _diagrams(s)
+    graphs = _diagrams(s, spans)
     diagrams = Column(
         Text([_through(s)], height=h), *graphs, title=WORDS("diagrams"), title_height=TITLE_H,
         weights=(1.0,) * (len(graphs) + 1) if balanced else None,
@@ -364,6 +376,8 @@ def _trees(
     if rules[0]:
         cv: View = mech if crank is None else crank
         cv.most_k = round_scale_down(lk.length / CRANK_MM, "l", cv.series).k
+    if crank is None and seek_k > 0.0 and not 0.0 < mech.most_k <= seek_k:
+        mech.most_k = wants[mech] = seek_k
     if rules[1]:
         for view in vviews:
             view.most_k = round_scale_down(wants[view], view.quantity, view.series).k
@@ -456,17 +470,42 @@ def layout(s: Solved) -> Layout:
 def _arranged(s: Solved) -> tuple[Layout, tuple[Arranged, ...]]:
     """The arrangement of the sheets, once per solution and language (the build asks for the
     scales and its draw for the sheets: the search runs once). Each sheet takes the smallest
-    format of the file's on which its views reach the scales :func:`_trees` wants."""
+    format of the file's on which its views reach the scales :func:`_trees` wants. The output's
+    diagrams keep their curves :data:`DIAGRAM_SPAN_MM` high as a least size of their boxes,
+    except where that costs the mechanism the crank's rule at its own scale (the crank's
+    detail, or a rule missed, where the arrangement without it keeps them): the crank's rule
+    outranks the diagrams' (round 2: sixbar-slider's tall mechanism keeps 1:2 beside them)."""
+    spanned = _arrange(s, True)
+    if _detailed(spanned[0]) or spanned[2] < 1.0 - tol.REL_LENGTH:
+        plain = _arrange(s, False)
+        if (_detailed(spanned[0]) and not _detailed(plain[0])) or plain[2] > spanned[
+            2
+        ] + tol.REL_LENGTH:
+            return plain[0], plain[1]
+    return spanned[0], spanned[1]
+
+
+def _detailed(lay: Layout) -> bool:
+    """Whether the layout draws the crank on its detail view."""
+    return isinstance(lay.mech, _Mechanism) and lay.mech.detail is not None
+
+
+def _arrange(s: Solved, spans: bool) -> tuple[Layout, tuple[Arranged, ...], float]:
+    """:func:`_arranged` with or without the diagrams' span as their least size, and how far
+    it keeps the size rules (:func:`_rules_share`)."""
     accel = _accel_positions(s)
     fmts = sheet_formats(s.linkage)
     made: list[tuple[tuple[Tree, ...], _Mechanism, bool, dict[View, float]]] = []
     detail, rules, apart, balanced = False, (False, False), False, True
     plans_k = 0.0  # the velocity plans' scale on their own sheet, once it is arranged
     mech_k = 0.0  # the mechanism's finest scale without its crank's detail, once tried
+    seek_k = 0.0  # a finer scale the mechanism's search seeks (FINER_STEPS)
 
     def make(i: int) -> Callable[[float], tuple[Tree, Mapping[View, float]]]:
         def tree(h: float) -> tuple[Tree, Mapping[View, float]]:
-            made.append(_trees(s, accel, h, detail, rules, apart, balanced, plans_k, mech_k))
+            made.append(
+                _trees(s, accel, h, detail, rules, apart, balanced, plans_k, mech_k, seek_k, spans)
+            )
             t, _, _, wants = made[-1]
             return t[i], {v: k for v, k in wants.items() if v in _views(t[i])}
 
@@ -485,18 +524,26 @@ def _arranged(s: Solved) -> tuple[Layout, tuple[Arranged, ...]]:
             # pa = 188 mm beside the plans sheet's 0,01)
             plans = fit(make(1), fmts, True, rules[0])
             plans_k = plans[1].layout.scale("v").k
-        first = fit(make(0), fmts, readable=True, each=rules[0])
+        first = fit(make(0), fmts, readable=True, each=rules[0] or seek_k > 0.0)
         trees_all, mech, second, _ = made_of(first[0])
         fitted = [first] + ([plans] if plans is not None else [])
         fitted += [fit(make(i), fmts, True, rules[0]) for i in range(len(fitted), len(trees_all))]
         return fitted, mech, second
+
+    def attempt_seeking(k: float) -> tuple[list[tuple[Tree, formats.Sized]], _Mechanism, bool]:
+        nonlocal seek_k
+        seek_k = k
+        try:
+            return attempt()
+        finally:
+            seek_k = 0.0
 
     fitted, mech, second = attempt()
     k_first = _mech_k((fitted, mech, second))
     if fitted[0][1].layout.fits and math.isfinite(k_first):
         mech_k = k_first
     if k_first * CRANK_MM * DETAIL_BELOW > s.linkage.length > 0.0 and not any(
-        _crank_may_keep(s, accel, fmts, sep) for sep in (False, True)
+        _crank_may_keep(s, accel, fmts, sep, spans) for sep in (False, True)
     ):
         # the long links set the mechanism's scale and leave the crank short, and no
         # arrangement draws the mechanism at the crank's rule: the crank with its numbered
@@ -520,7 +567,7 @@ def _arranged(s: Solved) -> tuple[Layout, tuple[Arranged, ...]]:
         for enlarge, sep in tries:
             if sep and len(s.drawn) > PLANS_ON_SHEET:
                 continue  # the plans are on their own sheet already
-            if not enlarge and not _crank_may_keep(s, accel, fmts, sep):
+            if not enlarge and not _crank_may_keep(s, accel, fmts, sep, spans):
                 continue  # no arrangement draws the mechanism at the crank's rule: its detail
             detail, apart = enlarge, sep
             tried = attempt()
@@ -544,7 +591,8 @@ def _arranged(s: Solved) -> tuple[Layout, tuple[Arranged, ...]]:
     # sheet with the mechanism (a test file's 1:1 became 1:2). Taken where it helps and keeps
     # the size rules as well.
     squeezed = _spans(fitted)
-    low = min(squeezed, default=DIAGRAM_SPAN_MM) < DIAGRAM_SPAN_MM - tol.SHEET_MM
+    floor = DIAGRAM_SPAN_MM if spans else DIAGRAM_SPAN_LEAST_MM
+    low = min(squeezed, default=floor) < floor - tol.SHEET_MM
     if low or second:
         balanced = False
         tried = attempt()
@@ -553,6 +601,25 @@ def _arranged(s: Solved) -> tuple[Layout, tuple[Arranged, ...]]:
             fitted, mech, second = tried
         else:
             balanced = True
+    # the mechanism at the next finer GOST step while the sheets still fit with the size rules
+    # and the diagrams' spans kept (review 11: the kulisa drawn 1:4 on an A1 49 % blank, where
+    # its mechanism, tables and diagrams fit at 1:2,5): the search, scoring every view's
+    # drawn area, settles on splits that leave the field blank rather than grow one view
+    for _ in range(FINER_STEPS):
+        k_now = _mech_k((fitted, mech, second))
+        if detail or not math.isfinite(k_now):
+            break
+        seek = round_scale_down(k_now * (1.0 - 2.0 * tol.REL_LENGTH), "l", mech.series).k
+        tried = attempt_seeking(seek)
+        if not (
+            _mech_k(tried) <= seek * (1.0 + tol.REL_LENGTH)
+            and all(z.layout.fits for _, z in tried[0])
+            and [z.fmt for _, z in tried[0]] == [z.fmt for _, z in fitted]
+            and _rules_share(s, tried[0]) >= _rules_share(s, fitted) - tol.REL_LENGTH
+            and min(_spans(tried[0]), default=floor) >= floor - tol.SHEET_MM
+        ):
+            break
+        fitted, mech, second = tried
     trees = tuple(t for t, _ in fitted)
     sized = tuple(z for _, z in fitted)
     lays = tuple(z.layout for z in sized)
@@ -563,16 +630,18 @@ def _arranged(s: Solved) -> tuple[Layout, tuple[Arranged, ...]]:
                 view.shown = short
     k_v = lays[-1].scale("v")
     out = Layout(lays[0][mech].scale or Scale(1.0), k_v, lays[0].scale("a"), second, accel,
-                 trees, mech, sized, balanced, squeezed)  # fmt: skip
-    return out, lays
+                 trees, mech, sized, balanced, squeezed, spans)  # fmt: skip
+    return out, lays, _rules_share(s, fitted)
 
 
-def _crank_may_keep(s: Solved, accel: Sequence[Position], fmts: Sequence[str], apart: bool) -> bool:
+def _crank_may_keep(
+    s: Solved, accel: Sequence[Position], fmts: Sequence[str], apart: bool, spans: bool = True
+) -> bool:
     """A necessary test before the search (:func:`geomcad.sheet.formats.may_reach`): whether
     the first sheet, on the largest of ``fmts``, has room for the mechanism at the crank's
     rule (:data:`CRANK_MM`) with the other views at their least sizes, without the crank's
     detail view (a crusher's 0,9 m mechanism at 1:1 has none)."""
-    trees, mech, _, _ = _trees(s, accel, SMALL_TEXT_H, rules=(True, True), apart=apart)
+    trees, mech, _, _ = _trees(s, accel, SMALL_TEXT_H, rules=(True, True), apart=apart, spans=spans)
     k = round_scale_down(s.linkage.length / CRANK_MM, "l", mech.series).k
     largest = max(fmts, key=lambda f: FORMATS[f][0] * FORMATS[f][1])
     fmt, land = next(formats.candidates((largest,)))
@@ -849,16 +918,16 @@ def link_bodies(
             u = P.slide[g.links[0]]
             if slot_half > 0.0:
                 w = u.perp() * slot_half
-                e0, e1 = E - u * yk.slot, E + u * yk.slot
+                e0, e1 = E + u * yk.slot[0], E + u * yk.slot[1]
                 slot = Body.of([e0 + w, e1 + w, e1 - w, e0 - w], closed=True)
                 side = slot_half / max(abs(d.cross(u)), 0.2)  # the slot's side along the rod
                 rod = Body.of([E + d * math.copysign(side, yk.rod), E + d * yk.rod])
             else:
-                slot = Body.of([E - u * yk.slot, E + u * yk.slot])
+                slot = Body.of([E + u * yk.slot[0], E + u * yk.slot[1]])
                 rod = Body.of([E, E + d * yk.rod])
             # the yoke's own outline where it reaches a point off its rod and slot (a crosshead's
             # arm to the joint F a rocker hangs on: review 9, drawn nowhere in the thin positions)
-            rod_slot = [(E - u * yk.slot, E + u * yk.slot), (E, E + d * yk.rod)]
+            rod_slot = [(E + u * yk.slot[0], E + u * yk.slot[1]), (E, E + d * yk.rod)]
             off = any(
                 min(_to_segment((q.x, q.y), (p.x, p.y), (r.x, r.y)) for p, r in rod_slot)
                 > tol.DERIVED * max(1.0, q.norm)
@@ -880,13 +949,16 @@ def link_bodies(
 @dataclass(frozen=True)
 class Yoke:
     """How a PRP group's yoke is drawn: ``rod`` (model units, signed along the guide's
-    direction) from its point on the guide to the rod's end, ``slot`` the slot's half length,
-    ``guide`` the middle of the fixed guide (the frame's, the same in every position) the rod
+    direction) from its point on the guide to the rod's end, ``slot`` the slot's two ends
+    (signed along the slot's direction from the yoke's point on the guide): over the block's
+    travel in the slot and on to the guide, never past them (review 11: the yarn traverse's
+    bar, its block all below the guide, drawn as far above it), ``guide`` the middle of the
+    fixed guide (the frame's, the same in every position) the rod
     slides in, clear of the yoke's travel on the side away from the crank's pivot, and
     ``half`` the guide's half length: the rod's travel, so that the guide is drawn over it."""
 
     rod: float
-    slot: float
+    slot: tuple[float, float]
     guide: Vec
     half: float = 0.0
 
@@ -913,7 +985,13 @@ def yoke(lk: Linkage, g: Group) -> Yoke:
         clear, half = 0.5 * lk.length, 0.5 * (t1 - t0)
         tg = t0 - clear - half if side < 0.0 else t1 + clear + half
         rod = side * (max(abs(t1 - tg), abs(t0 - tg)) + half + 0.2 * lk.length)
-        slot = SLOT_PAST * max(float(np.max(np.hypot(*(A - E).T))), lk.length)
+        # the block's place in the slot, signed along the slot (the yoke translates: one
+        # direction in every position), and the slot on past it at either end it travels to
+        w = np.asarray(st.slide[g.links[0]])
+        r = ((A - E) * w).sum(axis=1)
+        r0, r1 = float(r.min()), float(r.max())
+        past = (SLOT_PAST - 1.0) * max(abs(r0), abs(r1), lk.length)
+        slot = (min(r0 - past, 0.0), max(r1 + past, 0.0))
         held[1][g.index] = Yoke(rod, slot, q + d * tg, half)
     return held[1][g.index]
 
@@ -2228,8 +2306,16 @@ def _output_curves(
 #: at least :data:`DIAGRAM_SPAN_MM` high at the coarsest rounding of its μ (1, 2, 2.5, 4, 5 ×
 #: 10^n), so that a tall column of plans beside the diagrams never squeezes one to a tick.
 DIAGRAM_H = 60.0
-#: The least height (mm) of a diagram's curve from its lowest to its highest point.
-DIAGRAM_SPAN_MM = 25.0
+#: The least height (mm) of a diagram's curve from its lowest to its highest point: each
+#: output diagram's box is at least as high as the room at which its μ (rounded coarse to 1, 2,
+#: 2.5, 4, 5 × 10^n) draws its curve this high (review 11: the yarn traverse's s, v, a were
+#: 20–30 mm high in 63 mm boxes, read as squeezed; a teacher reads a diagram off a curve
+#: about as tall as the crank's 60 mm circle).
+DIAGRAM_SPAN_MM = 35.0
+#: The least height (mm) of a diagram's curve on every sheet, the crank's rule's too: where the
+#: equal boxes of DIAGRAM_H draw one lower, the search splits the column (review 5: a(φ) was
+#: squeezed to 12 mm beside a column of plans).
+DIAGRAM_SPAN_LEAST_MM = 25.0
 #: The height (mm) of each output diagram's plot (its y axis's room) the layout seeks where the
 #: sheet has room: lower, its drawn area counts in the search as if it shrank by the plot's
 #: shortfall to the power :data:`DIAGRAM_PLOT_POWER` (review 9: the rocking cylinder's ψ, ω,
@@ -2238,10 +2324,35 @@ DIAGRAM_PLOT_MM = 60.0
 DIAGRAM_PLOT_POWER = 2.0
 
 
+def span_room(span: float, mm: float) -> float:
+    """The least plot height (mm) at which a diagram's axis (its factor the smallest of 1, 2,
+    2.5, 4, 5 × 10^n that puts ``span`` into the room) draws ``span`` at least ``mm`` high: the
+    span at the coarsest such factor not above span/mm (between mm and 2·mm); ``mm`` for no
+    span (a constant, drawn ±|value|)."""
+    if not span > 0.0:
+        return mm
+    return span / nice_step_below(span / mm)
+
+
 class _OutputDiagram(Diagram):
     """An output's diagram on the kinematic sheet: a plot lower than :data:`DIAGRAM_PLOT_MM`
     counts in the layout's search as a smaller drawing (:meth:`used`), so the search gives
     the diagrams their height where it costs the other views less."""
+
+    def __init__(self, *args: Any, spans: bool = True, **kw: Any) -> None:
+        super().__init__(*args, **kw)
+        self.spans = spans
+
+    def stretch(self) -> tuple[tuple[float, float], tuple[float, float]]:
+        """With ``spans``, the least height that draws the curve :data:`DIAGRAM_SPAN_MM` high
+        at least: the room at which the coarsest factor of the series not above
+        span/DIAGRAM_SPAN_MM puts the span into the plot exactly (:func:`span_room`)."""
+        (lw, lh), (pw, ph) = super().stretch()
+        if not self.spans:
+            return (lw, lh), (pw, ph)
+        lo, hi = self._range(self.y, 1)
+        need = self.BELOW + self.ABOVE + span_room(hi - lo, DIAGRAM_SPAN_MM)
+        return (lw, max(lh, need)), (pw, max(ph, need))
 
     def used(self, w: float, h: float) -> tuple[float, float]:
         uw, uh = super().used(w, h)
@@ -2251,7 +2362,7 @@ class _OutputDiagram(Diagram):
         return uw, uh
 
 
-def _diagrams(s: Solved) -> list[Diagram]:
+def _diagrams(s: Solved, spans: bool = True) -> list[Diagram]:
     """The output's diagrams over a turn from position 0: the exact curves of the sweep, and
     the derivatives by chords through the numbered positions (graphical differentiation)."""
     lk = s.linkage
@@ -2273,7 +2384,8 @@ def _diagrams(s: Solved) -> list[Diagram]:
             Curve(np.degrees(gx), gy, "construction", points=True),
         ]
         out.append(_OutputDiagram(x, AxisSpec(sym, unit, name), curves, least=(120.0, DIAGRAM_H),
-                                  prefer=(600.0, 160.0), marks=position_marks(n)))  # fmt: skip
+                                  prefer=(600.0, 160.0), marks=position_marks(n),
+                                  spans=spans))  # fmt: skip
     return out
 
 
