@@ -370,27 +370,7 @@ def test_insets_drawn_as_their_scales_say(drawn: dict[str, Any]) -> None:
             if w is not v:
                 continue
             assert (fs.tier(F) not in (0, None)) is inset, (type(view).__name__, F)
-            if inset and _own_scales(view) and not fs.is_fixed(F):
-                # the lever's insets: each at one μ_F of its own (review 11), a GOST step
-                # that draws it at least VIEW_SHORT_MM long
-                assert mm >= VIEW_SHORT_MM * (1.0 - 1e-6), (F, mm)
-                assert _gost_step(F / mm), (F, mm)
-                continue
             assert math.isclose(mm, F / fs.k_at(F), rel_tol=1e-6), (type(view).__name__, F, mm)
-
-
-def _gost_step(k: float) -> bool:
-    """Whether ``k`` is a GOST step of μ_F: 1, 2, 2.5, 4 or 5 times a power of ten."""
-    e = math.floor(math.log10(k) + 1e-9)
-    return any(math.isclose(k / 10.0**e, m, rel_tol=1e-6) for m in (1.0, 2.0, 2.5, 4.0, 5.0))
-
-
-def _own_scales(view: Any) -> bool:
-    """Whether each inset of ``view`` draws at one μ_F of its own (Zhukovsky's lever,
-    review 11: one μ_F per inset, not the view's tiers μ_F*, μ_F** in one)."""
-    from geomcad.sheet import linkage_forces as lf
-
-    return isinstance(view, lf._Lever)
 
 
 def _texts(sheet: Any) -> list[str]:
@@ -437,8 +417,6 @@ def test_lengths_monotone_within_each_tier(drawn: dict[str, Any]) -> None:
         fixed = [F for F in view._forces if fs.zero < F and fs.is_fixed(F)]
         arrows = sorted((F, mm) for w, F, mm, _ in drawn["arrows"] if w is v)
         for t in range(len(fs.scales) + 1):
-            if t and _own_scales(view):
-                continue  # the lever's insets: one μ_F each (test_insets_drawn_as_…)
             band = [a for a in arrows if fs.tier(a[0]) == t]
             for (F1, mm1), (F2, mm2) in itertools.pairwise(band):
                 assert F1 > F2 * (1.0 - 1e-9) or mm1 <= mm2 * (1.0 + 1e-6) + 1e-6, (
@@ -468,12 +446,8 @@ def test_inset_circles_apart_and_lettered_once(drawn: dict[str, Any]) -> None:
     letters = drawn["letters"]
     assert len(letters) == len(set(letters)), letters
     texts = _texts(drawn["sheet"])
-    # (one point's insets at two μ_F, the lever's, review 11: one circle lettered "Г, Д")
-    together = [n for t in texts if re.fullmatch(r"[А-ЯЁ]\d*(, [А-ЯЁ]\d*)+", t)
-                for n in t.split(", ")]  # fmt: skip
     for letter in letters:
-        n = texts.count(letter) + together.count(letter)
-        assert 1 <= n <= 2, (letter, n)
+        assert 1 <= texts.count(letter) <= 2, (letter, texts.count(letter))
 
 
 #: The loads of the rocking cylinder's lever (review 9, N): P_M5 twice, P_ур, then G5 … PMФ4.

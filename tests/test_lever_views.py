@@ -23,7 +23,7 @@ from test_inset_scale_rule import _cases
 import geomcad
 from geomcad.geom import Vec
 from geomcad.sheet.insets import Insets, _seg_dist
-from geomcad.sheet.loads import HIDE_SHARE, VIEW_SHORT_MM, view_scales
+from geomcad.sheet.loads import HIDE_SHARE, view_scales
 from geomcad.sheet.model import TextItem
 
 #: Two arrows whose ends are this near (mm) act at a shared point (two loads of one point, one
@@ -149,102 +149,3 @@ def test_an_inset_names_the_point_its_loads_act_at() -> None:
     ins = Insets(fs, {"B": at})
     ins.add(at, Vec(3.0, 0.0), 1, "Ф_4", "vector")
     assert ins.point_name(at, ins.shorts, 1e-6) == "B"
-
-
-#: Review 11's levers whose insets held forces at two μ_F (stephenson's Ш: Ф4* and G4**).
-ONE_SCALE_FILES = ("stephenson_coupler_rocker", "watt2_bellcrank_drive", "sixbar_coupler_slider")
-
-
-@pytest.mark.parametrize("stem", ONE_SCALE_FILES)
-def test_each_lever_inset_at_one_stated_scale(stem: str, monkeypatch: pytest.MonkeyPatch) -> None:
-    """Zhukovsky's lever (review 11, fix 4): every inset draws its forces to scale at ONE μ_F
-    (the direction arrows VIEW_SHORT_MM long aside), no force label with a tier's mark
-    (μF*, μF**: a second μ_F in one inset), and the line under the lever's caption states
-    each inset's letter with its μ_F."""
-    from geomcad.sheet import insets as ins_mod
-    from geomcad.sheet import linkage_forces as lf
-
-    seen: dict[str, set[float]] = {}
-    labels: list[str] = []
-    cur: dict[str, Any] = {}
-    lever_draw, one, force = lf._Lever.draw, ins_mod.Insets._one, ins_mod.force
-
-    def draw(self: Any, d: Any, at: Any) -> Any:
-        cur["lever"] = True
-        try:
-            return lever_draw(self, d, at)
-        finally:
-            cur["lever"] = False
-
-    def rec_one(self: Any, d: Any, v: Any, free: Any, q: Any, p: Any, letter: str,
-                *a: Any, **kw: Any) -> Any:  # fmt: skip
-        cur["letter"], cur["fs"] = letter, self.fs
-        try:
-            return one(self, d, v, free, q, p, letter, *a, **kw)
-        finally:
-            cur.pop("letter")
-
-    def rec_force(iv: Any, at: Any, F: Any, k: float, label: str, *a: Any, **kw: Any) -> Any:
-        if cur.get("lever") and "letter" in cur:
-            labels.append(label)
-            if not math.isclose(F.norm / k, cur["fs"].fixed, rel_tol=1e-9):
-                seen.setdefault(cur["letter"], set()).add(round(k, 9))
-        return force(iv, at, F, k, label, *a, **kw)
-
-    monkeypatch.setattr(lf._Lever, "draw", draw)
-    monkeypatch.setattr(ins_mod.Insets, "_one", rec_one)
-    monkeypatch.setattr(ins_mod, "force", rec_force)
-    path = Path(__file__).parent / "linkages_layout" / f"{stem}.toml"
-    sheet = dict(geomcad.solve(str(path)).sheets())["forces"]
-    assert seen, stem
-    assert all(len(ks) == 1 for ks in seen.values()), seen
-    assert not any(label.endswith("*") for label in labels), labels
-    line = " ".join(t for t in _texts(sheet) if t.startswith("выносные элементы"))
-    own = " ".join(t for t in _texts(sheet) if re.match(r"\w+ \(", t))
-    for letter in seen:
-        assert re.search(rf"[ ,]{letter}[,:]", line) or f"{letter} (" in own, (letter, line)
-
-
-class _Paper:
-    """A view at 1 model unit per mm (sheet mm = model units): what Insets.clusters asks."""
-
-    class scale:
-        k = 1.0
-
-        @staticmethod
-        def model(mm: float) -> float:
-            return mm
-
-    @staticmethod
-    def p(q: Vec) -> tuple[float, float]:
-        return (q.x, -q.y)
-
-
-def test_lever_insets_join_near_points_and_split_a_point_of_two_scales() -> None:
-    """Review 11 (fix 4): the lever's insets, each at one μ_F of its own (``Insets.one``):
-    short forces at images 14 mm apart that one μ_F draws are ONE inset (one circle), not
-    two; a point whose forces no one μ_F draws within ``one`` mm has an inset per μ_F under
-    ONE circle (same centre, lettered together), each at one μ_F; images farther apart than
-    one circle of ``join_mm`` takes stay apart."""
-    from geomcad.sheet.linkage_forces import LEVER_INSET_MM, LEVER_JOIN_MM
-
-    fs = view_scales([1000.0, 40.0, 20.0, 30.0, 1.5], 40.0)
-    assert len(fs.scales) == 3, fs.scales  # the lever's μ_F and two of its insets
-    a, b, far = Vec(0.0, 0.0), Vec(14.0, 0.0), Vec(200.0, 0.0)
-    ins = Insets(fs, {"s2": a, "s3": b, "e": far})
-    ins.one, ins.join_mm = LEVER_INSET_MM, LEVER_JOIN_MM
-    for at, F, name, point in ((a, 40.0, "G_2", "s2"), (b, 20.0, "G_3", "s3"),
-                               (far, 30.0, "G_4", "e"), (far, 1.5, "Ф_4", "e")):  # fmt: skip
-        t = fs.tier(F)
-        assert t is not None and t > 0, (F, fs.scales)
-        ins.add(at, Vec(0.0, -F), t, name, "vector", point)
-    rings = ins.clusters(_Paper())  # type: ignore[arg-type]
-    assert len(rings) == 3, [[s.label for s in ss] for _, ss, _, _ in rings]
-    assert sorted(s.label for s in rings[0][1]) == ["G_2", "G_3"]  # one circle for s2, s3
-    # e's G_4 and Ф_4 (20 times apart, no one μ_F within LEVER_INSET_MM): two insets, one
-    # circle (the same centre)
-    assert rings[1][2] == rings[2][2]
-    for _, ss, _, _ in rings:
-        sc = ins.scale_of(ss)
-        mm = [s.F.norm / sc.k for s in ss]
-        assert min(mm) >= VIEW_SHORT_MM * (1.0 - 1e-9) and max(mm) <= LEVER_INSET_MM, (sc, mm)

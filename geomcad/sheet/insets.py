@@ -14,13 +14,6 @@ fixed length VIEW_SHORT_MM, at no scale (the line under the caption names it: "G
 short forces of a point (of points closer than the circle) in one inset, under one letter. The
 insets go where the view's box is free of what is drawn, the nearest such place to their
 circle (within BESIDE_MAX_MM where the view has room there).
-
-Zhukovsky's lever (``Insets.one``, review 11) draws each inset at ONE μ_F of its own instead of
-the view's tiers (μF*, μF** in one inset): the coarsest that draws its forces between
-VIEW_SHORT_MM and ``one`` mm, stated with its letter under the caption ("выносные элементы Г,
-Ж: μ_F = 4 Н/мм; Ш: μ_F = 0,5 Н/мм"); insets near one another share one circle where one μ_F
-draws them all (``join_mm``), and a point whose forces no one μ_F draws has an inset per μ_F
-under one circle lettered "Г, Д".
 """
 
 from __future__ import annotations
@@ -37,10 +30,10 @@ from geomcad import tol
 from geomcad.geom import Vec
 from geomcad.sheet.drawing import JOINT_R, Drawing, Viewport
 from geomcad.sheet.lang import Words
-from geomcad.sheet.loads import VIEW_SHORT_MM, ForceScales, _inside, chord_points, force
+from geomcad.sheet.loads import ForceScales, _inside, chord_points, force
 from geomcad.sheet.model import ArcItem, CircleItem, Polyline, TextItem
 from geomcad.sheet.plans import markup_of
-from geomcad.sheet.scale import Scale, nice_below
+from geomcad.sheet.scale import Scale
 from geomcad.sheet.symbols import HATCH_LEN, HATCH_STEP, STAND_DEPTH, STAND_HALF
 from geomcad.sheet.text import box, parse
 
@@ -195,29 +188,6 @@ def _holds(poly: Sequence[tuple[float, float]], c: tuple[float, float]) -> bool:
 
 #: Two insets' circles on a view keep at least this far (mm) apart; closer, they are one.
 CIRCLES_APART_MM = 1.0
-
-
-def places(rings: Sequence[tuple[Vec, list[Short], tuple[float, float], float]]) -> list[list[int]]:
-    """The indices of ``rings`` (:meth:`Insets.clusters`) by the circle they are drawn under:
-    those whose circles would come closer than :data:`CIRCLES_APART_MM` (one point's insets
-    at two μ_F), through each other, together; in the order of their first."""
-    out: list[list[int]] = []
-    for i, (_, _, c, r) in enumerate(rings):
-        near = [pl for pl in out if any(math.dist(c, rings[j][2]) - r - rings[j][3]
-                                        < CIRCLES_APART_MM for j in pl)]  # fmt: skip
-        if not near:
-            out.append([i])
-            continue
-        near[0].append(i)
-        for pl in near[1:]:
-            near[0].extend(pl)
-            out.remove(pl)
-    for pl in out:
-        pl.sort()
-    out.sort(key=lambda pl: pl[0])
-    return out
-
-
 #: An inset draws its points at least this far (mm) apart: one of points closer on the view
 #: is an enlarged detail (its length scale stated in its caption).
 INSET_APART_MM = 10.0
@@ -281,15 +251,6 @@ class Insets:
         self.drawn: list[tuple[str, Scale]] = []
         #: lines the view draws after its insets (a detail's circle): no inset over them
         self.reserved: list[CircleItem] = []
-        #: each inset at ONE μ_F of its own (:meth:`scale_of`), its arrows at most ``one``
-        #: mm long where one μ_F of the view's insets draws them so (0: the view's tiers, a
-        #: force's mark its tier's): Zhukovsky's lever (review 11: stephenson's inset Ш drew
-        #: Ф4* and G4** at two μ_F)
-        self.one = 0.0
-        #: where each inset has its own μ_F (:attr:`one`): two insets are one where one
-        #: circle of at most this radius (mm) takes both and one μ_F draws all their forces
-        #: (:meth:`clusters`)
-        self.join_mm = MARK_R
 
     def add(self, at: Vec, F: Vec, tier: int, label: str, role: str, point: str = "") -> None:
         self.shorts.append(Short(at, F, label, role, tier, point))
@@ -298,46 +259,6 @@ class Insets:
     def scale(self) -> Scale:
         """The one μ_F of the view's insets."""
         return self.fs.scales[-1]
-
-    def scale_of(self, shorts: Sequence[Short]) -> Scale:
-        """The μ_F an inset of the forces ``shorts`` draws them at: the view's insets' one
-        (:attr:`scale`), or where each inset has one of its own (:attr:`one`) the coarsest of
-        the view's inset μ_F that draws its smallest force drawn to scale at least
-        VIEW_SHORT_MM long and its largest at most :attr:`one` mm, else the coarsest GOST
-        step that draws its smallest that long (a longer arrow rather than a second μ_F)."""
-        if not self.one:
-            return self.scale
-        mags = [s.F.norm for s in shorts if not self.fixed(s)]
-        if not mags:
-            return self.scale
-        lo, hi = min(mags), max(mags)
-        short = VIEW_SHORT_MM * (1.0 - tol.DERIVED)
-        for sc in self.fs.scales[1:]:
-            if lo / sc.k >= short and hi / sc.k <= self.one * (1.0 + tol.DERIVED):
-                return sc
-        return nice_below(lo, VIEW_SHORT_MM)
-
-    def _split(self, groups: list[tuple[Vec, list[Short]]]) -> list[tuple[Vec, list[Short]]]:
-        """``groups`` with each whose forces no one μ_F draws (:meth:`_one_fits`) cut into
-        one group per tier of the view (its forces at one μ_F of the view's insets each)."""
-        out: list[tuple[Vec, list[Short]]] = []
-        for q, ss in groups:
-            if self._one_fits(ss):
-                out.append((q, ss))
-                continue
-            # (a direction arrow with the finest tier's forces)
-            last = len(self.fs.scales) - 1
-            for t in sorted({min(s.tier, last) for s in ss}):
-                out.append((q, [s for s in ss if min(s.tier, last) == t]))
-        return out
-
-    def _one_fits(self, shorts: Sequence[Short]) -> bool:
-        """Whether one μ_F draws all of ``shorts`` between VIEW_SHORT_MM and :attr:`one` mm."""
-        mags = [s.F.norm for s in shorts if not self.fixed(s)]
-        if not mags:
-            return True
-        k = nice_below(min(mags), VIEW_SHORT_MM).k
-        return max(mags) / k <= self.one * (1.0 + tol.DERIVED)
 
     def fixed(self, s: Short) -> bool:
         """Whether ``s`` is a direction arrow of the fixed length ``fs.fixed``, at no scale."""
@@ -354,8 +275,6 @@ class Insets:
         0,5 Н/мм``), of the forces ``shorts`` drawn to scale only where given (an inset's)."""
         from geomcad.sheet.compose import scale_text
 
-        if self.one and shorts is not None:
-            return scale_text(self.scale_of(shorts))
         if not self.marked:
             return scale_text(self.scale)
         mine = self.shorts if shorts is None else shorts
@@ -391,10 +310,6 @@ class Insets:
         (point, its short forces, the circle's centre, its radius), one letter each."""
         out: list[tuple[Vec, list[Short]]] = [(q, list(ss)) for q, ss in
                                               self.groups(v.scale.model(2.0 * MARK_R))]  # fmt: skip
-        if self.one:
-            # one μ_F per inset: a point whose forces no one μ_F draws (:meth:`_one_fits`)
-            # has an inset for each of the view's tiers, their circles one round the other
-            out = self._split(out)
 
         def circle(ss: list[Short]) -> tuple[tuple[float, float], float]:
             ats = [v.p(s.at) for s in ss]
@@ -408,26 +323,12 @@ class Insets:
             rings = [circle(ss) for _, ss in out]
             for i, j in itertools.combinations(range(len(out)), 2):
                 (ci, ri), (cj, rj) = rings[i], rings[j]
-                gap = math.dist(ci, cj) - ri - rj
-                both = out[i][1] + out[j][1]
-                if self.one:
-                    # one circle of at most join_mm round both, clear of the other circles
-                    cb, rb = circle(both)
-                    clear = all(math.dist(cb, ck) - rb - rk >= CIRCLES_APART_MM
-                                for k, (ck, rk) in enumerate(rings) if k not in (i, j))  # fmt: skip
-                    join = self._one_fits(both) and rb <= self.join_mm and clear
-                else:
-                    join = gap < CIRCLES_APART_MM
-                if join:
+                if math.dist(ci, cj) < ri + rj + CIRCLES_APART_MM:
                     out[i] = (out[i][0], out[i][1] + out[j][1])
                     del out[j]
                     joined = True
                     break
-        out4 = [(q, ss, *circle(ss)) for q, ss in out]
-        # the insets whose circles would meet (one point's at two μ_F, :meth:`_split`) one
-        # after the other: one circle round them, lettered in this order (:meth:`draw`)
-        order = {i: n for n, pl in enumerate(places(out4)) for i in pl}
-        return [out4[i] for i in sorted(range(len(out4)), key=lambda i: (order[i], i))]
+        return [(q, ss, *circle(ss)) for q, ss in out]
 
     def point_name(self, q: Vec, shorts: list[Short], eps: float) -> str:
         """The name an inset gives its point at ``q``: the points its loads ``shorts`` there
@@ -468,34 +369,21 @@ class Insets:
         rings = self.clusters(v)
         radii = [r for *_, r in rings]
         outlines = supports(d.sheet.items[start:])
-        # the insets whose circles would meet (one point's at two μ_F, :meth:`_split`): one
-        # circle round all their points, their letters together beside it ("Г, Д"), each
-        # inset captioned with its own
-        for pl in places(rings):
-            ats = [v.p(s.at) for j in pl for s in rings[j][1]]
-            xs, ys = [a[0] for a in ats], [a[1] for a in ats]
-            c = ((min(xs) + max(xs)) / 2.0, (min(ys) + max(ys)) / 2.0)
-            r = max(max(radii[j] for j in pl), MARK_R + max(math.dist(c, a) for a in ats))
-            mine = []
-            for j in pl:
-                letter = next(letters)
-                self.drawn.append((letter, self.scale_of(rings[j][1])))
-                mine.append((letter, j))
+        for i, (q, shorts, c, r) in enumerate(rings):
+            letter = next(letters)
+            self.drawn.append((letter, self.scale))
             # past a block or an arc round the point, as far as the other circles leave room
             room = min((math.dist(c, o[2]) - radii[j] - CIRCLES_APART_MM
-                        for j, o in enumerate(rings) if j not in pl), default=math.inf)  # fmt: skip
-            r = max(r, min(_clear_radius(d.sheet.items[start:], c, r), room))
-            others = [(o[2], radii[j]) for j, o in enumerate(rings) if j not in pl]
-            c = off_supports(c, r, ats, outlines, others)
-            for j in pl:
-                radii[j] = r
-                rings[j] = (rings[j][0], rings[j][1], c, r)
-            circle = CircleItem(c, r, "thin")
+                        for j, o in enumerate(rings) if j != i), default=math.inf)  # fmt: skip
+            radii[i] = max(r, min(_clear_radius(d.sheet.items[start:], c, r), room))
+            others = [(o[2], radii[j]) for j, o in enumerate(rings) if j != i]
+            c = off_supports(c, radii[i], [v.p(s.at) for s in shorts], outlines, others)
+            rings[i] = (q, shorts, c, radii[i])
+            circle = CircleItem(c, radii[i], "thin")
             d.sheet.add(circle)
-            # its own circle is not in its way
-            mark = free.letter(d, ", ".join(m for m, _ in mine), c, r)
+            beside = free.letter(d, letter, c, radii[i])  # its own circle is not in its way
             free.mark(circle)
-            marks.extend((m, rings[j][0], rings[j][1], c, mark) for m, j in mine)
+            marks.append((letter, q, shorts, c, beside))
         for letter, q, shorts, c, beside in marks:
             self._one(d, v, free, q, c, letter, shorts, eps, each, beside)
 
@@ -514,7 +402,7 @@ class Insets:
     ) -> None:
         from geomcad.sheet.compose import round_scale_down, scale_text
 
-        sc = self.scale_of(shorts)
+        sc = self.scale
         scaled = any(not self.fixed(s) for s in shorts)
         # points of the view closer than INSET_APART_MM (one inset's circle took them): the
         # inset enlarges them, at the coarsest step of the view's series that sets them that
@@ -532,9 +420,8 @@ class Insets:
         if each and scaled:
             parts.append(self.scale_text(shorts))
         caption = WORDS("inset", letter=letter, scale="; ".join(parts)) if parts else letter
-        # each force at the insets' μ_F (its own: :attr:`one`), or a direction arrow
-        # fs.fixed mm long
-        ks = [sc.k if self.one and not self.fixed(s) else self.fs.k_at(s.F.norm) for s in shorts]
+        # each force at the insets' μ_F, or a direction arrow fs.fixed mm long
+        ks = [self.fs.k_at(s.F.norm) for s in shorts]
         arrive = pushes([s.F for s in shorts])
         lengths = [s.F.norm / k for s, k in zip(shorts, ks, strict=True)]
         # paper mm from the point: the far ends of the arrows (leaving it, or arriving)
@@ -577,8 +464,7 @@ class Insets:
             q2 = q + Vec(o[0], -o[1]) * sl.k
             if o != e:  # set beside the others on its line: a thin line to its point
                 iv.seg(s.at, q2, "thin")
-            tiered = self.marked and not self.one and not self.fixed(s)
-            mark = self.fs.mark(s.tier) if tiered else ""
+            mark = self.fs.mark(s.tier) if self.marked and not self.fixed(s) else ""
             force(iv, q2, s.F, k, s.label + mark, arrive=a, role=s.role, height=CAPTION_H)
         free.take(corner, w, h)
 
@@ -587,24 +473,11 @@ class Insets:
         ``выносные элементы Б, В: μ_F = 2 Н/мм`` ("" without insets)."""
         return self.line([letter for letter, _ in self.drawn])
 
-    def line(self, letters: list[str], v: Viewport | None = None) -> str:
-        """:meth:`text` for insets lettered ``letters`` (never the μ_F without them); where
-        each inset has its own μ_F (:attr:`one`, on the view ``v``), the letters of each μ_F
-        with it, the coarsest first: ``выносные элементы Б, В: μ_F = 2 Н/мм; Г: μ_F = 0,5
-        Н/мм``."""
-        from geomcad.sheet.compose import scale_text
-
+    def line(self, letters: list[str]) -> str:
+        """:meth:`text` for insets lettered ``letters`` (never the μ_F without them)."""
         if not letters or not self.scaled:
             return ""
-        if not self.one or v is None:
-            return WORDS("insets", items=f"{', '.join(letters)}: {self.scale_text()}")
-        by: dict[Scale, list[str]] = {}
-        for letter, (_, ss, _, _) in zip(letters, self.clusters(v), strict=False):
-            if any(not self.fixed(s) for s in ss):
-                by.setdefault(self.scale_of(ss), []).append(letter)
-        items = [f"{', '.join(ls)}: {scale_text(sc)}"
-                 for sc, ls in sorted(by.items(), key=lambda kv: -kv[0].k)]  # fmt: skip
-        return WORDS("insets", items="; ".join(items))
+        return WORDS("insets", items=f"{', '.join(letters)}: {self.scale_text()}")
 
 
 #: Two forces at one point closer in direction than this (degrees) are set side by side.

@@ -104,7 +104,7 @@ from geomcad.sheet.compose import _title_width as title_width
 from geomcad.sheet.drawing import SHORT_MM, Viewport
 from geomcad.sheet.frame import FORMATS, LEFT_MARGIN, MARGIN, reserved
 from geomcad.sheet.graph import ARROW_OVER, FACTOR_PLACES, Axis, Graph, thousands_power
-from geomcad.sheet.insets import MARK_R, Insets, _seg_dist
+from geomcad.sheet.insets import Insets, _seg_dist
 from geomcad.sheet.lang import Words, current
 from geomcad.sheet.linkage import (
     CRANK_MM,
@@ -133,7 +133,6 @@ from geomcad.sheet.linkage import (
 from geomcad.sheet.linkage import WORDS as KIN_WORDS
 from geomcad.sheet.linkage import layout as kinematic_layout
 from geomcad.sheet.loads import (
-    INSET_CAP_MM,
     NEGLIGIBLE,
     VIEW_NEGLIGIBLE,
     Clearance,
@@ -1635,7 +1634,7 @@ def draw_insets(
     assert at.viewport is not None
     letters = getattr(view, "letters", None) or detail_letters()
     mine = [next(letters) for _ in range(ins.count(at.viewport))]
-    parts = [ins.line(mine, at.viewport)] if mine and ins.scaled else []
+    parts = [ins.line(mine)] if mine and ins.scaled else []
     # the forces drawn as direction arrows: by name, or by their share where the names
     # would not fit
     names = ins.fixed_names()
@@ -2304,18 +2303,6 @@ LEVER_APART_MM = 10.0
 #: size are one (an inset's circle takes them together).
 LEVER_MOST_MM = 250.0
 LEVER_ONE = 0.01
-#: The lever's insets (review 11: feeder 8, stephenson 9, watt2 10 circles on one lever, and
-#: stephenson's Ш held Ф4* and G4** at two μ_F): each inset draws its forces at ONE μ_F of its
-#: own, stated with its letter under the caption, its arrows at most this long (mm) where one
-#: μ_F does that — the cap of every view's insets (loads.INSET_CAP_MM; with 40 mm the
-#: rocking cylinder's larger insets found no free room and were drawn over each other); a
-#: point whose forces no one μ_F draws so has an inset per μ_F under one circle ("Г, Д") …
-LEVER_INSET_MM = INSET_CAP_MM
-#: … and two insets are one where one circle of at most this radius (mm) takes the images of
-#: both (s3 beside s5: points up to about 2 · (LEVER_JOIN_MM − MARK_R) = 28 mm apart) and one
-#: μ_F draws all their forces: five times an inset's circle round one point, no larger (a
-#: circle of 50 mm, joined without it, hid half of watt2's lever).
-LEVER_JOIN_MM = 5.0 * MARK_R
 
 
 def lever_k(points: Sequence[Vec], ext: tuple[float, float, float, float], series: Series) -> float:
@@ -2384,7 +2371,6 @@ class _Lever(_ByScale, View):
         points.append(self.P.pn(self.lk.joint))
         # the forces short at the view's μ_F go to its insets, the others are drawn here
         ins = Insets(fs, images)
-        ins.one, ins.join_mm = LEVER_INSET_MM, LEVER_JOIN_MM
         here = []
         for (q, F, name, role), point in zip(loads, points, strict=True):
             t = fs.tier(F.norm)
