@@ -44,7 +44,7 @@ composition (:func:`force_layout`, issue 27):
   its own (the mechanism as a band across the top, or down the left edge the sheet's height
   with the tables down the right edge or in a row under the groups, :func:`_pinned_tree`),
   where the search left them apart or the crank short (an instrument-size mechanism enlarged:
-  the yarn traverse's 12 mm crank at 2,5:1); where no such arrangement holds them, the
+  the yarn traverse's 12 mm crank at 2:1); where no such arrangement holds them, the
   mechanism at its crank's rule and the groups at one coarser μ_l of their own; where the
   search kept the rule, the drawings of links one GOST step finer while every other view
   keeps its scale (review 10), the force plans coarser while each still reads
