@@ -23,7 +23,7 @@ from geomcad.errors import ParameterError
 from geomcad.sheet.drawing import DOT_R, Drawing, _arrow, _head
 from geomcad.sheet.lang import Lang, Words
 from geomcad.sheet.model import XY, CircleItem, Polyline
-from geomcad.sheet.scale import NICE, fmt_fixed, fmt_number
+from geomcad.sheet.scale import NICE, fmt_fixed, fmt_number, nice_below
 from geomcad.sheet.style import fit_open, style
 from geomcad.sheet.text import box, parse
 
@@ -57,13 +57,7 @@ def nice_step(raw: float) -> float:
 def nice_step_below(raw: float) -> float:
     """The largest 1, 2, 2.5, 4 or 5 × 10^n that is ≤ ``raw`` (> 0): the coarsest factor that
     still draws ``raw`` units at least 1 mm (a curve's span at least its least height)."""
-    e = math.floor(math.log10(raw))
-    for exp in (e, e - 1):
-        for m in reversed(NICE):
-            step = m * 10.0**exp
-            if step <= raw * (1.0 + tol.DERIVED):
-                return step
-    return 10.0 ** (e - 1)
+    return nice_below(raw, 1.0).k
 
 
 def exact_places(step: float) -> int:

@@ -25,6 +25,7 @@ from dataclasses import dataclass
 
 import numpy as np
 import numpy.typing as npt
+import shapely
 
 from geomcad import tol
 from geomcad.geom import Vec
@@ -86,11 +87,11 @@ SHIFT_STEP_MM = 0.25
 SHIFT_TURNS = 24
 
 
-def supports(items: Sequence[object]) -> list[npt.NDArray[np.float64]]:
-    """The outlines (k, 2; sheet mm) of the frame's supports among ``items``: the convex hull
-    of each run of hatching strokes (role ``ground``; strokes closer than two hatch steps, one
-    run), with the stand over it where a hinge's is (its two lines from the joint, each of a
-    stand's length, :func:`~geomcad.sheet.symbols.pivot`)."""
+def supports(items: Sequence[object]) -> list[shapely.Polygon]:
+    """The outlines (sheet mm) of the frame's supports among ``items``: the convex hull of each
+    run of hatching strokes (role ``ground``; strokes closer than two hatch steps, one run),
+    with the stand over it where a hinge's is (its two lines from the joint, each of a stand's
+    length, :func:`~geomcad.sheet.symbols.pivot`)."""
     strokes = [np.asarray(it.points, dtype=float) for it in items
                if isinstance(it, Polyline) and it.role == "ground"]  # fmt: skip
     leg = math.hypot(STAND_DEPTH, STAND_HALF)
@@ -103,51 +104,18 @@ def supports(items: Sequence[object]) -> list[npt.NDArray[np.float64]]:
                 if min(float(np.hypot(*(st[0] - o[0]))) for o in r) < 2.0 * HATCH_STEP]  # fmt: skip
         runs = [r for r in runs if not any(r is n for n in near)]
         runs.append([st, *(x for r in near for x in r)])
-    out: list[npt.NDArray[np.float64]] = []
+    out: list[shapely.Polygon] = []
     for r in runs:
         pts = np.concatenate(r)
         lo, hi = pts.min(axis=0) - HATCH_LEN, pts.max(axis=0) + HATCH_LEN
         legs = [st for st in stands if ((st[1] >= lo) & (st[1] <= hi)).all()]
-        out.append(_hull(np.concatenate([pts, *legs])))
+        out.append(shapely.MultiPoint(np.concatenate([pts, *legs])).convex_hull)
     return out
-
-
-def _hull(pts: npt.NDArray[np.float64]) -> npt.NDArray[np.float64]:
-    """The convex hull (k, 2) of points (n, 2), counter-clockwise (monotone chain)."""
-    q = sorted({(float(x), float(y)) for x, y in pts})
-    if len(q) < 3:
-        return np.asarray(q, dtype=float)
-
-    def half(seq: list[tuple[float, float]]) -> list[tuple[float, float]]:
-        h: list[tuple[float, float]] = []
-        for p in seq:
-            while len(h) >= 2:
-                (ax, ay), (bx, by) = h[-2], h[-1]
-                if (bx - ax) * (p[1] - ay) - (by - ay) * (p[0] - ax) > 0.0:
-                    break
-                h.pop()
-            h.append(p)
-        return h
-
-    lower, upper = half(q), half(q[::-1])
-    return np.asarray(lower[:-1] + upper[:-1], dtype=float)
-
-
-def _to_outline(c: tuple[float, float], poly: npt.NDArray[np.float64]) -> float:
-    """The distance (mm) from ``c`` to the closed outline ``poly`` (k, 2): 0 inside it."""
-    if len(poly) >= 3 and _holds([(float(x), float(y)) for x, y in poly], c):
-        return 0.0
-    a, b = poly, np.roll(poly, -1, axis=0)
-    ab = b - a
-    n2 = np.maximum((ab**2).sum(axis=1), tol.SHEET_MM**2)
-    t = np.clip(((np.asarray(c) - a) * ab).sum(axis=1) / n2, 0.0, 1.0)
-    foot = a + t[:, None] * ab
-    return float(np.hypot(*(np.asarray(c) - foot).T).min())
 
 
 def off_supports(
     c: tuple[float, float], r: float, points: Sequence[tuple[float, float]],
-    outlines: Sequence[npt.NDArray[np.float64]],
+    outlines: Sequence[shapely.Geometry],
     keep: Sequence[tuple[tuple[float, float], float]] = (),
 ) -> tuple[float, float]:  # fmt: skip
     """The centre of an inset's circle of radius ``r`` (sheet mm) round the ``points`` it
@@ -158,7 +126,8 @@ def off_supports(
     does (a point on a guide: the circle round its block crosses the guide's hatching)."""
 
     def clear(q: tuple[float, float]) -> bool:
-        return all(_to_outline(q, o) >= r + SUPPORT_GAP_MM for o in outlines)
+        at = shapely.Point(q)
+        return all(o.distance(at) >= r + SUPPORT_GAP_MM for o in outlines)
 
     if not outlines or clear(c):
         return c
