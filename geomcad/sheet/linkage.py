@@ -475,14 +475,12 @@ def _arranged(s: Solved) -> tuple[Layout, tuple[Arranged, ...]]:
     except where that costs the mechanism the crank's rule at its own scale (the crank's
     detail, or a rule missed, where the arrangement without it keeps them): the crank's rule
     outranks the diagrams' (round 2: sixbar-slider's tall mechanism keeps 1:2 beside them)."""
-    spanned = _arrange(s, True)
-    if _detailed(spanned[0]) or spanned[2] < 1.0 - tol.REL_LENGTH:
-        plain = _arrange(s, False)
-        if (_detailed(spanned[0]) and not _detailed(plain[0])) or plain[2] > spanned[
-            2
-        ] + tol.REL_LENGTH:
-            return plain[0], plain[1]
-    return spanned[0], spanned[1]
+    lay, views, share = _arrange(s, True)
+    if _detailed(lay) or share < 1.0 - tol.REL_LENGTH:
+        lay2, views2, share2 = _arrange(s, False)
+        if (_detailed(lay) and not _detailed(lay2)) or share2 > share + tol.REL_LENGTH:
+            return lay2, views2
+    return lay, views
 
 
 def _detailed(lay: Layout) -> bool:
