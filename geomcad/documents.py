@@ -75,8 +75,9 @@ def read(pid: str) -> dict[str, Any]:
         raise FileKeyError(pid, "", f"is not valid TOML: {HUGE_INTEGER}") from None
 
 
-def parse_value(text: str) -> Any:
-    """A ``--set`` value read as TOML (number, bool, string, array); bare words are strings."""
+def parse_value(text: str, key: str = "") -> Any:
+    """A ``--set`` value read as TOML (number, bool, string, array); bare words are strings.
+    ``key`` is the dotted key it is set to, named by the error of a value that is not finite."""
     t = text.strip()
     try:
         value = tomllib.loads(f"v = {t}")["v"]
@@ -90,7 +91,7 @@ def parse_value(text: str) -> Any:
                 pass
         return t
     if isinstance(value, float) and not math.isfinite(value):
-        raise ParameterError(t, text, "must be a finite number")
+        raise ParameterError(key or t, text, "must be a finite number")
     return value
 
 
@@ -113,12 +114,12 @@ def apply_set(data: dict[str, Any], key: str, text: str) -> None:
                     key, text, f"{where}: the list has items 1 … {len(node)} (counted from 1)"
                 )
             if last:
-                node[int(part) - 1] = parse_value(text)
+                node[int(part) - 1] = parse_value(text, key)
                 return
             node = node[int(part) - 1]
         elif isinstance(node, dict):
             if last:
-                node[part] = parse_value(text)
+                node[part] = parse_value(text, key)
                 return
             if part not in node:
                 node[part] = {}

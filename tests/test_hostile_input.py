@@ -232,3 +232,13 @@ def test_verify_batch_json_writes_json(tmp_path: Path, monkeypatch: pytest.Monke
     assert code == 1 and err == ""
     assert json.loads((tmp_path / "verdicts.json").read_text(encoding="utf-8")) == obj
     assert out.endswith("verdicts: verdicts.json\n")
+
+
+@pytest.mark.parametrize("value", ["nan", "inf", "-inf"])
+@pytest.mark.parametrize("key", ["drive.omega", "group.1.lengths.1"])
+def test_a_set_value_that_is_not_finite_names_its_key(key: str, value: str) -> None:
+    """The error names the dotted key the value was set to, not the value as a key
+    ("parameter nan = 'nan'" before)."""
+    argv = ["solve", str(EXAMPLES / "shaper.toml"), "--set", f"{key}={value}"]
+    err = bad(argv, "must be a finite number")
+    assert f"parameter {key} = '{value}'" in err, err
