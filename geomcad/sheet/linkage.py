@@ -953,7 +953,8 @@ class Yoke:
     bar, its block all below the guide, drawn as far above it), ``guide`` the middle of the
     fixed guide (the frame's, the same in every position) the rod
     slides in, clear of the yoke's travel on the side away from the crank's pivot, and
-    ``half`` the guide's half length: the rod's travel, so that the guide is drawn over it."""
+    ``half`` the guide's half length: over the rod's end in every position (the rod's travel
+    and its hold, :data:`GUIDE_HOLD`), so that the rod never runs out past its guide."""
 
     rod: float
     slot: tuple[float, float]
@@ -962,6 +963,10 @@ class Yoke:
 
 
 _YOKES: dict[int, tuple[Linkage, dict[int, Yoke]]] = {}
+#: A yoke's rod keeps this share of its travel inside its guide where it stands farthest from
+#: it (the guide drawn that much longer than the travel): a rod whose end only touched the
+#: guide's near end would read as run out of it.
+GUIDE_HOLD = 0.5
 
 
 def yoke(lk: Linkage, g: Group) -> Yoke:
@@ -979,10 +984,15 @@ def yoke(lk: Linkage, g: Group) -> Yoke:
         t = (E - [q.x, q.y]) @ [d.x, d.y]
         t0, t1 = float(t.min()), float(t.max())
         side = -1.0 if (lk.frame[lk.pivot] - q).dot(d) >= 0.5 * (t0 + t1) else 1.0
-        # the guide over the rod's travel (the yoke's), this far past the yoke's travel
-        clear, half = 0.5 * lk.length, 0.5 * (t1 - t0)
-        tg = t0 - clear - half if side < 0.0 else t1 + clear + half
-        rod = side * (max(abs(t1 - tg), abs(t0 - tg)) + half + 0.2 * lk.length)
+        # the guide this far past the yoke's travel, as long as the rod's travel and the
+        # rod's hold in it (GUIDE_HOLD): the rod's end, drawn to the guide's far end where
+        # the yoke stands nearest the guide, stays in the hatched guide in every position
+        # (review 12: the yarn traverse's bar drawn ≈55 mm past its guide)
+        clear, travel = 0.5 * lk.length, t1 - t0
+        half = 0.5 * travel * (1.0 + GUIDE_HOLD)
+        near = t1 if side > 0.0 else t0  # the yoke's place nearest the guide
+        tg = near + side * (clear + half)
+        rod = side * (clear + 2.0 * half)
         # the block's place in the slot, signed along the slot (the yoke translates: one
         # direction in every position), and the slot on past it at either end it travels to
         w = np.asarray(st.slide[g.links[0]])
