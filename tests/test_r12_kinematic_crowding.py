@@ -2,6 +2,9 @@
 
 - A yoke's rod (the yarn traverse's guide bar 5) was drawn ≈55 mm past the end of its hatched
   guide: its guide now covers the rod's end in every position (GUIDE_HOLD).
+- Position numbers stacked ("4 3", "2 5 1" on the sewing machine's E and M, "6 7 5 8" on the
+  yarn traverse's E) and tangled with their leaders (the bloom shear's S5): every number of the
+  mechanism view keeps NUMBER_APART_MM from every other and no line runs through it.
 """
 
 from __future__ import annotations
@@ -14,7 +17,22 @@ import pytest
 from geomcad import tol
 from geomcad.linkage.model import parse
 from geomcad.linkage.solution import solve
-from geomcad.sheet.linkage import GUIDE_HOLD, link_bodies, yoke
+from geomcad.sheet.lang import language
+from geomcad.sheet.linkage import (
+    GUIDE_HOLD,
+    INK_GROW_MM,
+    NUMBER_APART_MM,
+    NUMBER_H,
+    _arranged,
+    _CrankDetail,
+    _gap,
+    _Ink,
+    _Mechanism,
+    kinematic_sheets,
+    link_bodies,
+    yoke,
+)
+from geomcad.sheet.model import TextItem
 
 ROOT = Path(__file__).parent
 YOKED = [
@@ -56,3 +74,48 @@ def test_a_yoke_rod_ends_inside_its_guide_in_every_position(path: Path) -> None:
         travel = max(ends) - min(ends)
         hold = min(abs(t - (g0 if yk.rod > 0 else g1)) for t in ends)
         assert hold >= GUIDE_HOLD * travel - tol.SAME_PLACE * lk.length, (hold, travel)
+
+
+CROWDED = [
+    ROOT / "linkages_review12" / "needle_takeup_sewing.toml",
+    ROOT / "linkages_review12" / "bloom_shear_swing_knife.toml",
+    ROOT / "linkages_review11" / "yarn_guide_traverse.toml",
+]
+
+
+def _digits_box(t: TextItem) -> tuple[float, float, float, float]:
+    """A number's ink: its advance width, from its baseline up its cap height (digits have no
+    descent)."""
+    return (t.at[0], t.at[1] - t.height, t.at[0] + t.width, t.at[1])
+
+
+@pytest.mark.parametrize("path", CROWDED, ids=lambda p: p.stem)
+def test_position_numbers_stand_apart_and_off_the_lines(path: Path) -> None:
+    """On the mechanism view (and its crank's detail), no two position numbers nearer than
+    NUMBER_APART_MM, and no line (a link, a path, a leader) within INK_GROW_MM of a number."""
+    s = _solved(path)
+    with language("ru"):
+        _, lays = _arranged(s)
+        sheet = kinematic_sheets(s)[0][1]
+    views = [pl.box for pl in lays[0] if isinstance(pl.view, _Mechanism | _CrankDetail)]
+    nums = [
+        t
+        for t in sheet.items
+        if isinstance(t, TextItem)
+        and t.role == "label"
+        and t.text.isdigit()
+        and abs(t.height - NUMBER_H) <= tol.SHEET_MM
+        and any(b[0] <= t.at[0] <= b[2] and b[1] <= t.at[1] <= b[3] for b in views)
+    ]
+    assert len(nums) >= len(s.drawn)
+    boxes = [_digits_box(t) for t in nums]
+    near = [
+        (nums[i].text, nums[j].text, round(_gap(boxes[i], boxes[j]), 2))
+        for i in range(len(nums))
+        for j in range(i + 1, len(nums))
+        if _gap(boxes[i], boxes[j]) < NUMBER_APART_MM - tol.SHEET_MM
+    ]
+    assert not near, near
+    ink = _Ink(sheet)
+    on = [t.text for t, b in zip(nums, boxes, strict=True) if ink.crossed([b], INK_GROW_MM)]
+    assert not on, on

@@ -1474,10 +1474,13 @@ def _support_down(lk: Linkage, P: Position) -> tuple[float, float]:
 #: A position of one point that falls within this (mm on the drawing) of the same position of a
 #: point numbered before is numbered once (a scotch yoke's slider at the crank's extremes).
 SHARE_MM = 2.5
+#: Two position numbers stand at least this far apart (mm): nearer, "4 3" or "6 7 5 8" read as
+#: one number (review 12: the sewing machine's E and M, the yarn traverse's E at 0.8–1.2 mm).
+NUMBER_APART_MM = 1.5
 #: The numbers of the positions are written this high (mm; GOST 2.304's least) and kept this
 #: much further than other labels from each other (mm), so that two numbers never read as one.
 NUMBER_H = 2.5
-NUMBER_SPACE = 0.8
+NUMBER_SPACE = NUMBER_APART_MM
 #: The links' numbers (3.5 mm) keep this much further (mm) from other texts, so that a link's
 #: number never reads as a position's.
 LINK_SPACE = 2.6
@@ -1485,8 +1488,9 @@ LINK_SPACE = 2.6
 #: their numbers cannot each stand beside their own point, so they stand in a row off the path,
 #: each joined to its point by a leader.
 CROWD_MM = 5.0
-#: A row's numbers stand this far (mm) off the outermost point of their crowd, this far apart.
-ROW_OFF_MM, ROW_GAP_MM = 2.2, 1.2
+#: A row's numbers stand this far (mm) off the outermost point of their crowd, this far apart
+#: (NUMBER_APART_MM, and a little for the font's side bearings measured in their boxes).
+ROW_OFF_MM, ROW_GAP_MM = 2.2, NUMBER_APART_MM + 0.1
 #: A crowd's row stands at least this share of its numbers' largest shift along it off the
 #: crowd, so that no leader runs flatter than about 55° to the row.
 ROW_STEEP = 0.7
@@ -1640,6 +1644,7 @@ def _number_row(
     assert best is not None
     _, boxes, shifts, n = best
     sheet = v.sheet
+    leads: list[tuple[tuple[float, float], tuple[float, float]]] = []  # (point, number) drawn
     for i in g:
         # a number a line crosses moves to the nearest place no line crosses: further out and
         # a little along its row (never onto a number); else it stays where fewest cross it
@@ -1650,6 +1655,20 @@ def _number_row(
             dy = n[1] * out_k * ROW_STEP_MM + n[0] * along_k * ROW_STEP_MM
             cand = (b[0] + dx, b[1] + dy, b[2] + dx, b[3] + dy)
             if any(_overlaps(cand, o) for o in taken):
+                continue
+            # its leader never runs through a number set before (review 12: the bloom shear's
+            # S5, position 9's leader through position 3's number)
+            if _through_text(paper[i], cand, taken):
+                continue
+            # nor across the leader of a number set before from another point (review 12: the
+            # bloom shear's S5, the leaders of 10 and 2 crossed under D; two leaders from points
+            # nearer than LEADER_FROM_MM start off them at one place and part, never cross)
+            led = leaders or out_k or along_k or shifts[i] > ROW_SHIFT_MM
+            mid = ((cand[0] + cand[2]) / 2.0, (cand[1] + cand[3]) / 2.0)
+            if led and any(
+                math.dist(p, paper[i]) > LEADER_FROM_MM and _cross(p, c, paper[i], mid)
+                for p, c in leads
+            ):
                 continue
             hits = ink.crossed([cand])
             if best_at is None or hits < best_at[0]:
@@ -1663,7 +1682,11 @@ def _number_row(
         text_at(sheet, str(i), (boxes[i][0], boxes[i][1] + up), NUMBER_H, role="label")
         taken.append(boxes[i])
         if leaders or moved or shifts[i] > ROW_SHIFT_MM:
+            drawn = len(sheet.items)
             _leader(sheet, paper[i], boxes[i])
+            ink.add(sheet.items[drawn:])  # the next numbers keep off it too
+            leads.append((paper[i], ((boxes[i][0] + boxes[i][2]) / 2.0,
+                                     (boxes[i][1] + boxes[i][3]) / 2.0)))  # fmt: skip
 
 
 def _row_boxes(
