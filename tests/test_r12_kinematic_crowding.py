@@ -5,6 +5,9 @@
 - Position numbers stacked ("4 3", "2 5 1" on the sewing machine's E and M, "6 7 5 8" on the
   yarn traverse's E) and tangled with their leaders (the bloom shear's S5): every number of the
   mechanism view keeps NUMBER_APART_MM from every other and no line runs through it.
+- The slotter's s-diagram drawn 26 mm high at μ_s = 0,01 м/мм in a 44 mm room (30 mm empty
+  under it): the output's diagrams share their column by their curves (fill_diagrams), each
+  curve at least FILL_SHARE of its room, none drawn smaller than the layout gave it.
 """
 
 from __future__ import annotations
@@ -28,6 +31,8 @@ from geomcad.sheet.linkage import (
     _gap,
     _Ink,
     _Mechanism,
+    _OutputDiagram,
+    fill_diagrams,
     kinematic_sheets,
     link_bodies,
     yoke,
@@ -119,3 +124,51 @@ def test_position_numbers_stand_apart_and_off_the_lines(path: Path) -> None:
     ink = _Ink(sheet)
     on = [t.text for t, b in zip(nums, boxes, strict=True) if ink.crossed([b], INK_GROW_MM)]
     assert not on, on
+
+
+DIAGRAMMED = [
+    *sorted((ROOT / "linkages_review12").glob("*.toml")),
+    ROOT / "linkages_review11" / "yarn_guide_traverse.toml",
+    *sorted((ROOT / "linkages_layout").glob("*.toml")),
+]
+#: The least share of its plot's room an output diagram's curve fills (review 12's item 5).
+FILL_SHARE = 0.6
+
+
+def _curves(arranged) -> list[tuple[float, float]]:  # type: ignore[no-untyped-def]
+    """Each output diagram's (curve's height, plot's room) in mm, top to bottom."""
+    out = []
+    for pl in sorted(
+        (p for p in arranged if isinstance(p.view, _OutputDiagram)), key=lambda p: p.box[1]
+    ):
+        dg = pl.view
+        w, h = pl.inner[2] - pl.inner[0], pl.inner[3] - pl.inner[1]
+        _, ay = dg.axes(w, h)
+        out.append((ay.mm(ay.hi - ay.lo), h - dg.BELOW - dg.ABOVE))
+    return out
+
+
+@pytest.mark.parametrize("path", DIAGRAMMED, ids=lambda p: p.stem)
+def test_the_output_diagrams_fill_their_band(path: Path) -> None:
+    """After fill_diagrams every output diagram's curve fills at least FILL_SHARE of its plot's
+    room, none is drawn lower than the layout drew it, the column's band is kept (its top and
+    bottom), and a second call changes nothing."""
+    s = _solved(path)
+    with language("ru"):
+        _, lays = _arranged(s)
+        placed = [p for p in lays[0] if isinstance(p.view, _OutputDiagram)]
+        top, bottom = min(p.box[1] for p in placed), max(p.box[3] for p in placed)
+        before = _curves(lays[0])
+        fill_diagrams(lays[0])
+        after = _curves(lays[0])
+        fill_diagrams(lays[0])
+        again = _curves(lays[0])
+    for (c1, r1), (c2, r2) in zip(after, again, strict=True):
+        assert c2 == pytest.approx(c1, abs=tol.LAYOUT_BEATEN_MM)
+        assert r2 == pytest.approx(r1, abs=tol.LAYOUT_BEATEN_MM)
+    placed = [p for p in lays[0] if isinstance(p.view, _OutputDiagram)]
+    assert min(p.box[1] for p in placed) == pytest.approx(top, abs=tol.SHEET_MM)
+    assert max(p.box[3] for p in placed) <= bottom + tol.LAYOUT_BEATEN_MM
+    for (c0, _), (c1, room) in zip(before, after, strict=True):
+        assert c1 >= c0 - tol.LAYOUT_BEATEN_MM
+        assert c1 >= FILL_SHARE * room, (c1, room, after)
