@@ -711,6 +711,7 @@ def kinematic_sheets(s: Solved, stem: str = "") -> list[tuple[str, Sheet]]:
     count = len(lay.trees)
     designation = WORDS("designation", stem=stem or WORDS("stem"))
     d = lay.sized[0].start(_title(lk, WORDS("kinematics"), designation, None, 1, count))
+    fill_diagrams(lays[0])
     compose(d, lay.trees[0], layout=lays[0])
     if d.sheet.block is not None:
         d.sheet.block = replace(d.sheet.block, scale=lay.k_l.ratio_text())
@@ -953,7 +954,8 @@ class Yoke:
     bar, its block all below the guide, drawn as far above it), ``guide`` the middle of the
     fixed guide (the frame's, the same in every position) the rod
     slides in, clear of the yoke's travel on the side away from the crank's pivot, and
-    ``half`` the guide's half length: the rod's travel, so that the guide is drawn over it."""
+    ``half`` the guide's half length: over the rod's end in every position (the rod's travel
+    and its hold, :data:`GUIDE_HOLD`), so that the rod never runs out past its guide."""
 
     rod: float
     slot: tuple[float, float]
@@ -962,6 +964,10 @@ class Yoke:
 
 
 _YOKES: dict[int, tuple[Linkage, dict[int, Yoke]]] = {}
+#: A yoke's rod keeps this share of its travel inside its guide where it stands farthest from
+#: it (the guide drawn that much longer than the travel): a rod whose end only touched the
+#: guide's near end would read as run out of it.
+GUIDE_HOLD = 0.5
 
 
 def yoke(lk: Linkage, g: Group) -> Yoke:
@@ -979,10 +985,15 @@ def yoke(lk: Linkage, g: Group) -> Yoke:
         t = (E - [q.x, q.y]) @ [d.x, d.y]
         t0, t1 = float(t.min()), float(t.max())
         side = -1.0 if (lk.frame[lk.pivot] - q).dot(d) >= 0.5 * (t0 + t1) else 1.0
-        # the guide over the rod's travel (the yoke's), this far past the yoke's travel
-        clear, half = 0.5 * lk.length, 0.5 * (t1 - t0)
-        tg = t0 - clear - half if side < 0.0 else t1 + clear + half
-        rod = side * (max(abs(t1 - tg), abs(t0 - tg)) + half + 0.2 * lk.length)
+        # the guide this far past the yoke's travel, as long as the rod's travel and the
+        # rod's hold in it (GUIDE_HOLD): the rod's end, drawn to the guide's far end where
+        # the yoke stands nearest the guide, stays in the hatched guide in every position
+        # (review 12: the yarn traverse's bar drawn ≈55 mm past its guide)
+        clear, travel = 0.5 * lk.length, t1 - t0
+        half = 0.5 * travel * (1.0 + GUIDE_HOLD)
+        near = t1 if side > 0.0 else t0  # the yoke's place nearest the guide
+        tg = near + side * (clear + half)
+        rod = side * (clear + 2.0 * half)
         # the block's place in the slot, signed along the slot (the yoke translates: one
         # direction in every position), and the slot on past it at either end it travels to
         w = np.asarray(st.slide[g.links[0]])
@@ -1464,10 +1475,13 @@ def _support_down(lk: Linkage, P: Position) -> tuple[float, float]:
 #: A position of one point that falls within this (mm on the drawing) of the same position of a
 #: point numbered before is numbered once (a scotch yoke's slider at the crank's extremes).
 SHARE_MM = 2.5
+#: Two position numbers stand at least this far apart (mm): nearer, "4 3" or "6 7 5 8" read as
+#: one number (review 12: the sewing machine's E and M, the yarn traverse's E at 0.8–1.2 mm).
+NUMBER_APART_MM = 1.5
 #: The numbers of the positions are written this high (mm; GOST 2.304's least) and kept this
 #: much further than other labels from each other (mm), so that two numbers never read as one.
 NUMBER_H = 2.5
-NUMBER_SPACE = 0.8
+NUMBER_SPACE = NUMBER_APART_MM
 #: The links' numbers (3.5 mm) keep this much further (mm) from other texts, so that a link's
 #: number never reads as a position's.
 LINK_SPACE = 2.6
@@ -1475,8 +1489,9 @@ LINK_SPACE = 2.6
 #: their numbers cannot each stand beside their own point, so they stand in a row off the path,
 #: each joined to its point by a leader.
 CROWD_MM = 5.0
-#: A row's numbers stand this far (mm) off the outermost point of their crowd, this far apart.
-ROW_OFF_MM, ROW_GAP_MM = 2.2, 1.2
+#: A row's numbers stand this far (mm) off the outermost point of their crowd, this far apart
+#: (NUMBER_APART_MM, and a little for the font's side bearings measured in their boxes).
+ROW_OFF_MM, ROW_GAP_MM = 2.2, NUMBER_APART_MM + 0.1
 #: A crowd's row stands at least this share of its numbers' largest shift along it off the
 #: crowd, so that no leader runs flatter than about 55° to the row.
 ROW_STEEP = 0.7
@@ -1630,6 +1645,7 @@ def _number_row(
     assert best is not None
     _, boxes, shifts, n = best
     sheet = v.sheet
+    leads: list[tuple[tuple[float, float], tuple[float, float]]] = []  # (point, number) drawn
     for i in g:
         # a number a line crosses moves to the nearest place no line crosses: further out and
         # a little along its row (never onto a number); else it stays where fewest cross it
@@ -1640,6 +1656,20 @@ def _number_row(
             dy = n[1] * out_k * ROW_STEP_MM + n[0] * along_k * ROW_STEP_MM
             cand = (b[0] + dx, b[1] + dy, b[2] + dx, b[3] + dy)
             if any(_overlaps(cand, o) for o in taken):
+                continue
+            # its leader never runs through a number set before (review 12: the bloom shear's
+            # S5, position 9's leader through position 3's number)
+            if _through_text(paper[i], cand, taken):
+                continue
+            # nor across the leader of a number set before from another point (review 12: the
+            # bloom shear's S5, the leaders of 10 and 2 crossed under D; two leaders from points
+            # nearer than LEADER_FROM_MM start off them at one place and part, never cross)
+            led = leaders or out_k or along_k or shifts[i] > ROW_SHIFT_MM
+            mid = ((cand[0] + cand[2]) / 2.0, (cand[1] + cand[3]) / 2.0)
+            if led and any(
+                math.dist(p, paper[i]) > LEADER_FROM_MM and _cross(p, c, paper[i], mid)
+                for p, c in leads
+            ):
                 continue
             hits = ink.crossed([cand])
             if best_at is None or hits < best_at[0]:
@@ -1653,7 +1683,11 @@ def _number_row(
         text_at(sheet, str(i), (boxes[i][0], boxes[i][1] + up), NUMBER_H, role="label")
         taken.append(boxes[i])
         if leaders or moved or shifts[i] > ROW_SHIFT_MM:
+            drawn = len(sheet.items)
             _leader(sheet, paper[i], boxes[i])
+            ink.add(sheet.items[drawn:])  # the next numbers keep off it too
+            leads.append((paper[i], ((boxes[i][0] + boxes[i][2]) / 2.0,
+                                     (boxes[i][1] + boxes[i][3]) / 2.0)))  # fmt: skip
 
 
 def _row_boxes(
@@ -2358,6 +2392,62 @@ class _OutputDiagram(Diagram):
         if 0.0 < plot < DIAGRAM_PLOT_MM:
             uh *= (plot / DIAGRAM_PLOT_MM) ** DIAGRAM_PLOT_POWER
         return uw, uh
+
+
+def fill_diagrams(arranged: Arranged) -> None:
+    """The output's diagrams, one under another in their column, share its band by their
+    curves: each box as high as its curve at its factor and its room over it, the factors
+    made finer (1, 2, 2,5, 4, 5 × 10^n) where the band holds the finer curve, the one whose
+    step costs least first, the height left over shared alike (review 12: the slotter's s
+    drawn 26 mm high at μ_s = 0,01 м/мм in a 56 mm room, 30 mm empty under it, where the a
+    diagram's room had 18 mm to spare: at 0,005 it draws 52 mm). The arrangement's boxes are
+    set anew in place (a second call finds no finer step to take: it keeps them)."""
+    placed = sorted((pl for pl in arranged if isinstance(pl.view, _OutputDiagram)),
+                    key=lambda pl: pl.box[1])  # fmt: skip
+    if len(placed) < 2 or any(
+        abs(a.box[0] - b.box[0]) > tol.SHEET_MM or abs(a.box[2] - b.box[2]) > tol.SHEET_MM
+        for a, b in itertools.pairwise(placed)
+    ):
+        return  # not one column
+    spans: list[float] = []
+    ks: list[float] = []
+    over: list[float] = []  # each box's height less its curve's room
+    for pl in placed:
+        dg = pl.view
+        assert isinstance(dg, _OutputDiagram)
+        room = pl.inner[3] - pl.inner[1] - dg.BELOW - dg.ABOVE
+        _, ay = dg.axes(pl.inner[2] - pl.inner[0], pl.inner[3] - pl.inner[1])
+        if room <= 0.0 or dg.y.tick:
+            return
+        spans.append(ay.hi - ay.lo)
+        ks.append(ay.k)
+        over.append(pl.box[3] - pl.box[1] - room)
+    heights = [pl.box[3] - pl.box[1] for pl in placed]
+    spare = sum(heights) - sum(sp / k + o for sp, k, o in zip(spans, ks, over, strict=True))
+    while True:
+        steps = [
+            (sp / nice_step_below(k * (1.0 - FINER)) - sp / k, i)
+            for i, (sp, k) in enumerate(zip(spans, ks, strict=True))
+        ]
+        cost, i = min(steps)
+        if cost > spare:
+            break
+        ks[i] = nice_step_below(ks[i] * (1.0 - FINER))
+        spare -= cost
+    share = max(spare, 0.0) / len(placed)
+    y = placed[0].box[1]
+    for k, (pl, sp, o) in enumerate(zip(placed, spans, over, strict=True)):
+        h = sp / ks[k] + o + share
+        top, bottom = pl.inner[1] - pl.box[1], pl.box[3] - pl.inner[3]
+        box = (pl.box[0], y, pl.box[2], y + h)
+        inner = (pl.inner[0], y + top, pl.inner[2], y + h - bottom)
+        arranged.placed[id(pl.view)] = replace(pl, box=box, inner=inner)
+        if k + 1 < len(placed):
+            y += h + (placed[k + 1].box[1] - pl.box[3])
+
+
+#: A factor this share below another is the next finer of the series (not the same one).
+FINER = 1.0e-6
 
 
 def _diagrams(s: Solved, spans: bool = True) -> list[Diagram]:
