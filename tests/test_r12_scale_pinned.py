@@ -59,3 +59,33 @@ def test_pinned_tree_offers_every_form() -> None:
         # and one with the mechanism across the top
         assert any(isinstance(a, Column) and lf._Loaded in map(type, _leaves(a.items[0]))
                    for a in alts), path  # fmt: skip
+
+
+NEEDLE = ROOT / "tests" / "linkages_review12" / "needle_takeup_sewing.toml"
+
+
+def test_pinned_box_holds_its_caption_at_its_scale() -> None:
+    """The box :func:`~geomcad.sheet.linkage_forces._pinned_tree` gives the mechanism holds its
+    caption as it reads at the pinned μ_l on one line (on main the typical caption's width: the
+    needle's at 2,5:1 broke into two lines, its drawing fell to 2:1)."""
+    from geomcad.sheet.compose import Scale, _lines_width
+
+    s = geomcad.solve(str(NEEDLE)).data
+    P, f, _k = lf.force_position(s)
+    mech = lf._Loaded(s.linkage, P, f, "Механизм в положении 4, φ_1 = 210°")
+    mech.solved = s
+    for pin in (0.0004, 0.0005, 0.001):
+        said = _lines_width(mech.caption(Scale(pin, "l")), mech.title_height, 1)
+        assert lf._body_size(mech, pin)[0] >= said, pin
+
+
+def test_needle_at_the_kinematic_enlargement() -> None:
+    """The needle (15 mm crank): its forces sheet at 2,5:1 (crank 37,5 mm), the scale of its
+    kinematic sheet, which its left column holds (on main 2:1, the crank exactly 30 mm), the
+    groups and crank cut out at it too."""
+    s = geomcad.solve(str(NEEDLE)).data
+    _tree, z = lf.force_layout(s)
+    mech = [pl.scale.k for pl in z.layout if isinstance(pl.view, lf._Loaded) and pl.scale]
+    bodies = [pl.scale.k for pl in z.layout if isinstance(pl.view, lf._FreeBody) and pl.scale]
+    assert mech[0] <= 0.0004 * E, mech
+    assert all(mech[0] / E <= kk <= mech[0] * E for kk in bodies), (mech, bodies)

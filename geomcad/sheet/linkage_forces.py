@@ -100,6 +100,7 @@ from geomcad.sheet.compose import (
     round_scale,
     round_scale_down,
 )
+from geomcad.sheet.compose import _lines_width as lines_width
 from geomcad.sheet.compose import _title_width as title_width
 from geomcad.sheet.drawing import SHORT_MM, Viewport
 from geomcad.sheet.frame import FORMATS, LEFT_MARGIN, MARGIN, reserved
@@ -1301,9 +1302,12 @@ BAND_SHARE = 0.6
 
 
 def _body_size(v: View, k: float) -> tuple[float, float]:
-    """The box (mm) a drawing of links takes at ``k`` m/mm, its margins and caption in."""
+    """The box (mm) a drawing of links takes at ``k`` m/mm, its margins and caption in (the
+    caption as it reads at ``k``, on one line: at 2,5:1 the needle's ran 2 mm past the width
+    of its typical caption, was set in two lines and took its drawing one step coarser)."""
     w, h = _side(v)
-    return (max(w / k + 2.0 * v.margin, title_width(v)) + PIN_SLACK_MM,
+    said = lines_width(v.caption(Scale(k, "l")), v.title_height, 1)
+    return (max(w / k + 2.0 * v.margin, title_width(v), said) + PIN_SLACK_MM,
             h / k + 2.0 * v.margin + v.title_room() + PIN_SLACK_MM)  # fmt: skip
 
 
