@@ -41,10 +41,11 @@ composition (:func:`force_layout`, issue 27):
   crank lost (review 7);
 - once the search has chosen, on the largest format: the mechanism, its groups and its crank
   at ONE μ_l with the crank CRANK_MM long on it, pinned as a constraint in an arrangement of
-  its own (the mechanism as a band across the top, or down the left edge the sheet's height
-  with the tables down the right edge or in a row under the groups, :func:`_pinned_tree`),
-  where the search left them apart or the crank short (an instrument-size mechanism enlarged:
-  the yarn traverse's 12 mm crank at 2:1); where no such arrangement holds them, the
+  its own (every form offered whatever the mechanism's shape: the mechanism as a band across
+  the top, or down the left edge the sheet's height, alone or over the lever, with the tables
+  down the right edge or in a row under the groups, :func:`_pinned_tree`), where the search
+  left them apart or the crank short (an instrument-size mechanism enlarged: the yarn
+  traverse's 12 mm crank at 2,5:1, 30 mm); where no such arrangement holds them, the
   mechanism at its crank's rule and the groups at one coarser μ_l of their own; where the
   search kept the rule, the drawings of links one GOST step finer while every other view
   keeps its scale (review 10), the force plans coarser while each still reads
