@@ -1304,8 +1304,8 @@ BAND_SHARE = 0.6
 
 def _body_size(v: View, k: float) -> tuple[float, float]:
     """The box (mm) a drawing of links takes at ``k`` m/mm, its margins and caption in (the
-    caption as it reads at ``k``, on one line: at 2,5:1 the needle's ran 2 mm past the width
-    of its typical caption, was set in two lines and took its drawing one step coarser)."""
+    caption as it reads at ``k``, on one line: at 2,5:1 the needle's is 248 mm, its typical
+    caption's 242 mm; it was set in two lines and took its drawing one step coarser)."""
     w, h = _side(v)
     said = lines_width(v.caption(Scale(k, "l")), v.title_height, 1)
     return (max(w / k + 2.0 * v.margin, title_width(v), said) + PIN_SLACK_MM,
