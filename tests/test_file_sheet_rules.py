@@ -269,10 +269,12 @@ def _ratios(sheet: Sheet) -> list[str]:
 
 def test_forces_sheet_scales_from_geometry(tmp_path: Path) -> None:
     """The forces sheet's drawings of links are never finer than the scale the geometry gives
-    them (links_scale: the crank 30 mm long, or the mechanism's sweep 200 mm), its Масштаб
-    cell is the loaded mechanism's, and a change of ω alone rescales no drawing of links (the
-    shaper at ω1 = −8 and −12 1/s)."""
-    from geomcad.sheet.linkage_forces import links_scale
+    them (links_scale: the crank 30 mm long, or the mechanism's sweep 200 mm) grown by at most
+    GROW_L_STEPS GOST steps into the field (review 10's rule in _pinned: the shaper's 1:2,5
+    grows to 1:2 since round 12's pinned forms hold it), its Масштаб cell is the loaded
+    mechanism's, and a change of ω alone rescales no drawing of links (the shaper at ω1 = −8
+    and −12 1/s)."""
+    from geomcad.sheet.linkage_forces import GOST_K, GROW_L_STEPS, links_scale
 
     src = (EXAMPLES / "shaper.toml").read_text(encoding="utf-8")
     seen = []
@@ -282,8 +284,12 @@ def test_forces_sheet_scales_from_geometry(tmp_path: Path) -> None:
         sol = geomcad.solve(str(path))
         sheets = dict(sol.sheets())
         forces = _ratios(sheets["forces"])
-        least = float(links_scale(sol.data).ratio_text().split(":")[1].replace(",", "."))
-        assert all(float(r.split(":")[1].replace(",", ".")) >= least for r in forces), forces
+        k_l = links_scale(sol.data).k
+        finer = sorted((g for g in GOST_K if g < k_l * (1.0 - 1e-9)), reverse=True)
+        k_least = finer[GROW_L_STEPS - 1] if len(finer) >= GROW_L_STEPS else k_l
+        least = 0.001 / k_least  # the reduction 1:n of the finest step allowed
+        assert all(float(r.split(":")[1].replace(",", ".")) >= least * (1.0 - 1e-9)
+                   for r in forces), forces  # fmt: skip
         block = forces[0]
         assert block in {t.text for t in sheets["forces"].texts() if t.role == "title"}
         seen.append(forces)

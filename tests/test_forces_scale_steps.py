@@ -56,12 +56,6 @@ def _links(lay: Layout) -> tuple[float, list[float]]:
     return mech[0], bodies
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="since the yoke's slot ends at its guide (review 11 item 7, merged after this rule) the "
-    "yarn's mechanism is 297 x 325 mm at 2,5:1 and no pinned arrangement holds it: 2:1, crank "
-    "24 mm (review 12 graded it so); owned by the next round's forces-scale item",
-)
 def test_instrument_mechanism_enlarged() -> None:
     """The yarn traverse (12 mm crank): its forces sheet's mechanism at the GOST enlargement
     that draws the crank CRANK_MM long, its groups at least GROUPS_SHARE of its size, the title

@@ -41,10 +41,11 @@ composition (:func:`force_layout`, issue 27):
   crank lost (review 7);
 - once the search has chosen, on the largest format: the mechanism, its groups and its crank
   at ONE μ_l with the crank CRANK_MM long on it, pinned as a constraint in an arrangement of
-  its own (the mechanism as a band across the top, or down the left edge the sheet's height
-  with the tables down the right edge or in a row under the groups, :func:`_pinned_tree`),
-  where the search left them apart or the crank short (an instrument-size mechanism enlarged:
-  the yarn traverse's 12 mm crank at 2:1); where no such arrangement holds them, the
+  its own (every form offered whatever the mechanism's shape: the mechanism as a band across
+  the top, or down the left edge the sheet's height, alone or over the lever, with the tables
+  down the right edge or in a row under the groups, :func:`_pinned_tree`), where the search
+  left them apart or the crank short (an instrument-size mechanism enlarged: the yarn
+  traverse's 12 mm crank at 2,5:1, 30 mm); where no such arrangement holds them, the
   mechanism at its crank's rule and the groups at one coarser μ_l of their own; where the
   search kept the rule, the drawings of links one GOST step finer while every other view
   keeps its scale (review 10), the force plans coarser while each still reads
@@ -100,6 +101,7 @@ from geomcad.sheet.compose import (
     round_scale,
     round_scale_down,
 )
+from geomcad.sheet.compose import _lines_width as lines_width
 from geomcad.sheet.compose import _title_width as title_width
 from geomcad.sheet.drawing import SHORT_MM, Viewport
 from geomcad.sheet.frame import FORMATS, LEFT_MARGIN, MARGIN, reserved
@@ -1221,14 +1223,16 @@ def _pinned_tree(
     right: Column, pin: float, pin_groups: float,
 ) -> Tree:  # fmt: skip
     """The arrangements of :func:`_pinned`'s sheet, its drawings of links at ``pin`` m/mm
-    (:func:`_pin_try` tries each alone): a mechanism whose drawing is wider than BAND_ASPECT
-    of its height as a band across the top, the groups and the lever in a row under it, the
-    polygons and the tables under those; a taller one down the left edge, either the groups
-    and the lever beside it over the polygons and the tables down the right edge, or the
-    groups and the lever over the polygons and the tables in a row (a :class:`Choice` of the
-    two). The boxes of the mechanism and of the groups are given, as large
-    as their drawings at ``pin`` (margins and captions included): the search shares only the
-    rest among the lever and the polygons."""
+    (:func:`_pin_try` tries each alone and keeps the best that holds its rules): the mechanism
+    as a band across the top, the groups and the lever in a row under it, the polygons and the
+    tables under those; or the mechanism down the left edge the field's height, either the
+    groups and the lever beside it over the polygons and the tables down the right edge, or the
+    groups and the lever over the polygons and the tables in a row. Every form is offered
+    whatever the mechanism's shape (review 12: the yarn traverse's 297 x 325 mm mechanism at
+    2,5:1 was given the band alone by its aspect, which has no room for the polygons under it,
+    and fell to 2:1, its crank 24 mm; down the left edge it holds). The boxes of the mechanism
+    and of the groups are given, as large as their drawings at ``pin`` (margins and captions
+    included): the search shares only the rest among the lever and the polygons."""
     fmts = sheet_formats(s.linkage)
     largest = max(fmts, key=lambda fm: FORMATS[fm][0] * FORMATS[fm][1])
     field = Field.of_format(largest, True)
@@ -1236,24 +1240,24 @@ def _pinned_tree(
     mw, mh = _body_size(mech, pin)
     band = _band(bodies, pin_groups)
     bw, bh = _band_size(bodies, pin_groups)
-    if mw >= BAND_ASPECT * mh:
-        # under the band: the groups over the polygons, the table beside the order at the
-        # right edge (over the title block); the lever beside the mechanism where it leaves
-        # room, else beside the polygons
-        tables = Row(*right.items)
-        rest = max(fh - mh - bh - 2.0 * GAP, 1.0)
-        if fw - mw - GAP >= LEVER_SHARE * fw:  # the lever beside the mechanism
-            top: Tree = Row(lever, mech, weights=[fw - mw - GAP, mw])
-            below = Column(band, Grid(*polys), weights=[bh, rest])
-        else:  # the lever beside the polygons (the form's box in the field's corner above)
-            top = mech
-            mh += max((o[3] - field.box[1] for o in field.obstacles if o[1] <= field.box[1]),
+    # across the top: under the band the groups over the polygons, the table beside the order
+    # at the right edge (over the title block); the lever beside the mechanism where it leaves
+    # room, else beside the polygons
+    tables = Row(*right.items)
+    rest = max(fh - mh - bh - 2.0 * GAP, 1.0)
+    if fw - mw - GAP >= LEVER_SHARE * fw:  # the lever beside the mechanism
+        top: Tree = Row(lever, mech, weights=[max(fw - mw - GAP, 1.0), mw])
+        below = Column(band, Grid(*polys), weights=[bh, rest])
+        th = mh
+    else:  # the lever beside the polygons (the form's box in the field's corner above)
+        top = mech
+        th = mh + max((o[3] - field.box[1] for o in field.obstacles if o[1] <= field.box[1]),
                       default=0.0)  # fmt: skip
-            rest = max(fh - mh - bh - 2.0 * GAP, 1.0)
-            below = Column(band, Row(lever, Grid(*polys)), weights=[bh, rest])
-        return Column(top, Row(below, tables), weights=[mh, max(fh - mh - GAP, 1.0)])
-    # the groups and the lever over the polygons, the mechanism beside them, the tables down
-    # the right edge
+        rest = max(fh - th - bh - 2.0 * GAP, 1.0)
+        below = Column(band, Row(lever, Grid(*polys)), weights=[bh, rest])
+    across = Column(top, Row(below, tables), weights=[th, max(fh - th - GAP, 1.0)])
+    # down the left edge: the groups and the lever over the polygons, the mechanism beside
+    # them, the tables down the right edge
     rw = max((nat[0] for it in right.items if (nat := natural_of(it)) is not None), default=0.0)
     left = fw - mw - rw - 2.0 * GAP
     rest = max(fh - bh - GAP, 1.0)
@@ -1268,9 +1272,26 @@ def _pinned_tree(
     # left them (review 11: the yarn traverse's 12 mm crank at 2,5:1 with its groups at 2:1
     # holds only so on A1; down a right column its groups fell to 1:1 and the crank to 12 mm)
     wide = fw - mw - GAP
-    top = Row(band, lever, weights=[bw, max(wide - bw - GAP, 1.0)])
-    under = Column(top, Row(Grid(*polys), Row(*right.items)), weights=[bh, rest])
-    return Choice(beside, Row(mech, under, weights=[mw, max(wide, 1.0)]))
+    upper = Row(band, lever, weights=[bw, max(wide - bw - GAP, 1.0)])
+    under = Column(upper, Row(Grid(*polys), Row(*right.items)), weights=[bh, rest])
+    # or the mechanism over the lever down the left edge, the groups over the polygons and
+    # the tables beside it (review 12: the yarn traverse's groups at 2,5:1 take 506 mm in a
+    # row, no room for the lever beside them)
+    # (the mechanism's box the form's corner above it taken in: графа 26)
+    th = mh + max((o[3] - field.box[1] for o in field.obstacles if o[1] <= field.box[1]
+                   and o[0] <= field.box[0] + mw), default=0.0)  # fmt: skip
+    column = Column(mech, lever, weights=[th, max(fh - th - GAP, 1.0)])
+    # (the tables in a row their natural widths: the search gives the polygons the rest)
+    tw = sum(nat[0] for it in right.items if (nat := natural_of(it)) is not None)
+    tw += GAP * (len(right.items) - 1)
+    low = Row(Grid(*polys), Row(*right.items), weights=[max(wide - tw - GAP, 1.0), tw])
+    grouped = Column(band, low, weights=[bh, rest])
+    return Choice(
+        across,
+        beside,
+        Row(mech, under, weights=[mw, max(wide, 1.0)]),
+        Row(column, grouped, weights=[mw, max(wide, 1.0)]),
+    )
 
 
 #: The room beside a mechanism drawn across the top (:func:`_pinned_tree`) takes the lever
@@ -1281,15 +1302,13 @@ LEVER_SHARE = 0.25
 BAND_SHARE = 0.6
 
 
-#: A mechanism drawn at least this many times wider than tall goes across the top of
-#: :func:`_pinned_tree`'s sheet, a narrower one down its left edge.
-BAND_ASPECT = 1.2
-
-
 def _body_size(v: View, k: float) -> tuple[float, float]:
-    """The box (mm) a drawing of links takes at ``k`` m/mm, its margins and caption in."""
+    """The box (mm) a drawing of links takes at ``k`` m/mm, its margins and caption in (the
+    caption as it reads at ``k``, on one line: at 2,5:1 the needle's is 248 mm, its typical
+    caption's 242 mm; it was set in two lines and took its drawing one step coarser)."""
     w, h = _side(v)
-    return (max(w / k + 2.0 * v.margin, title_width(v)) + PIN_SLACK_MM,
+    said = lines_width(v.caption(Scale(k, "l")), v.title_height, 1)
+    return (max(w / k + 2.0 * v.margin, title_width(v), said) + PIN_SLACK_MM,
             h / k + 2.0 * v.margin + v.title_room() + PIN_SLACK_MM)  # fmt: skip
 
 
@@ -1307,11 +1326,6 @@ def _band_size(bodies: Sequence[_FreeBody], k: float) -> tuple[float, float]:
         return size[id(tall)][0] + GAP + max(size[id(b)][0] for b in rest), size[id(tall)][1]
     return (sum(size[id(b)][0] for b in bodies) + GAP * (len(bodies) - 1),
             max(size[id(b)][1] for b in bodies))  # fmt: skip
-
-
-#: A mechanism's sweep at least this many times wider than tall is drawn as a band across
-#: the top of the sheet (:func:`_pinned_tree`), a narrower one down the left edge.
-BAND_ASPECT = 0.7
 
 
 def _band(bodies: Sequence[_FreeBody], k: float) -> Row:
