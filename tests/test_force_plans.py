@@ -96,8 +96,9 @@ def test_details_are_in_tiers_one_scale_each_and_show_every_vector() -> None:
     4 / 0,5 / 0,05 / 1 N/mm; review 9, item 1: "на выносном элементе Л не показаны: Rτ34,
     G4, Φ4"): the details taken from the plan are all at ONE stated μ_F, at least
     DETAIL_LEAST times the polygon's, with the longest at most DETAIL_MAX_MM; the vectors
-    still too short there are drawn in details of those details (a circle on the detail, its
-    own letter), all at one finer μ_F: one μ_F per tier. Every vector is an arrow at least
+    still too short there are drawn in details beside those, at one finer μ_F, taken from
+    the same spot of the plan (their own letters on its circle: one detail level, review 12):
+    one μ_F per tier. Every vector is an arrow at least
     two arrowheads long at a μ_F the plan states; nothing is named as not shown; each circle
     carries one letter."""
     vs = chain([5000.0, 3.0, 40.0, 400.0, 7.0], ["F0", "F1", "F2", "F3", "F4"])
@@ -115,7 +116,7 @@ def test_details_are_in_tiers_one_scale_each_and_show_every_vector() -> None:
     assert len({dt.k for dt in first}) == 1 and len({dt.k for dt in second}) == 1
     assert all(dt.host is None for dt in first) and second[0].k < first[0].k
     assert all(dt.host is None or dt.host in first for dt in second)
-    assert any(dt.host is not None for dt in second)  # a detail of a detail
+    assert any(dt.host is not None for dt in second)  # shows what a detail of tier 1 leaves short
     drawn = p.layers[-1][0]
     runs = [n for dt in first for n in dt.run]
     assert len(runs) == len(set(runs))  # each short vector in exactly one detail of a tier
@@ -144,8 +145,9 @@ def test_details_are_in_tiers_one_scale_each_and_show_every_vector() -> None:
         assert any(math.isclose(mm * kd, pv.magnitude, rel_tol=1e-6) for mm, kd in arrows), pv
     captions = [t.text for t in sheet.texts() if "(μ" in t.text]
     assert len(captions) == len(p.details)
-    # each circle on the plan carries the letter of one detail, and the details of the
-    # details are circled on theirs, not on the plan
+    # each circle on the plan carries the letter of one detail; one detail level (review 12,
+    # item 1): the finer tier is taken from the same spot of the plan, its letter on that
+    # circle, never a circle on a detail
     v = lay[p].viewport
     assert v is not None
     on_plan = [dt for dt in p.details if dt.host is None]
@@ -153,7 +155,7 @@ def test_details_are_in_tiers_one_scale_each_and_show_every_vector() -> None:
     assert len(spots) == len(on_plan)
     assert not any(", " in letters for _, _, letters in spots)
     circles = [it for it in sheet.items if isinstance(it, CircleItem) and not it.fill]
-    assert len(circles) == len(p.details)
+    assert len(circles) == len(on_plan)
 
 
 def test_runs_at_one_spot_of_the_plan_are_one_detail_with_one_letter() -> None:

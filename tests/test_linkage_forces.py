@@ -896,9 +896,9 @@ def _drawn_polygons(name: str, monkeypatch: pytest.MonkeyPatch) -> tuple[Linkage
         finally:
             rec["in"][0] = False
 
-    def rec_mark(v: Viewport, c: Any, r: float, letters: str, **kw: Any) -> None:
+    def rec_mark(v: Viewport, c: Any, r: float, letters: str, **kw: Any) -> Any:
         rec["letters"] += letters.split(", ")  # one circle for the pieces of one run
-        mark(v, c, r, letters, **kw)
+        return mark(v, c, r, letters, **kw)
 
     def rec_detail(v: Viewport, poly: Any, dt: Any, *args: Any, **kw: Any) -> None:
         rec["in"][1] = True

@@ -336,8 +336,17 @@ def draw_polygon(
               v.p(pv.head + shift.get(pv.name, Vec(0.0, 0.0)))) for pv in drawn]  # fmt: skip
     sides += [(v.p(r.tail + shift.get(r.name, Vec(0.0, 0.0))),
                v.p(r.head + shift.get(r.name, Vec(0.0, 0.0)))) for r, _ in res]  # fmt: skip
-    for spot in detail_spots(v, poly, [dt for dt in details if dt.host is None]):
-        mark_detail(v, *spot, segs=sides + _slot_sides(v, details), bound=bound)
+    segs = sides + _slot_sides(v, details)
+    for centre, radius, letters in detail_spots(v, poly, [dt for dt in details if dt.host is None]):
+        taken = [mark_detail(v, centre, radius, letters, segs=segs, bound=bound)]
+        # one detail level (review 12, item 1): the details that show what a detail's μ_F
+        # leaves short are taken from the same spot of the plan, side by side with it, their
+        # letters on the same circle (never a circle on a detail)
+        own = set(letters.split(", "))
+        for dt in details:
+            if dt.host is not None and root_of(dt).letter in own:
+                taken.append(mark_detail(v, centre, radius, dt.letter, segs=segs, bound=bound,
+                                         circle=False, taken=taken))  # fmt: skip
     if pair:
         # two forces (nearly) in balance, each exactly where the polygon has it, with no lanes
         # between them: they meet at the vertex they share and part at the other end by the
@@ -672,16 +681,27 @@ def mark_detail(
     letter: str,
     segs: Sequence[tuple[tuple[float, float], tuple[float, float]]] = (),
     bound: tuple[float, float, float, float] | None = None,
-) -> None:
+    circle: bool = True,
+    taken: Sequence[tuple[float, float]] = (),
+) -> tuple[float, float]:
     """Circle (thin) the spot of radius ``r`` mm round ``c`` (paper) and letter it on a short
     leader (ESKD выносной элемент): of the eight ways round the circle (up-right first), the
     one whose letter is farthest from the polygon's sides ``segs`` (paper), among those that
     keep the letter inside the view's ``bound`` (paper) where any does (CI: sixbar_coupler's
-    "Ю1" 1 mm into the next plan's box)."""
+    "Ю1" 1 mm into the next plan's box). ``circle`` False: the circle is drawn already, one
+    more letter on a leader of its own, none of the ways ``taken`` by its other letters nor
+    next to them where another is free. Returns the way taken."""
     cx, cy = c
     k = v.scale.k
-    v.circle(Vec(v.ox + (cx - v.at[0]) * k, v.oy - (cy - v.at[1]) * k), r * k, "construction")
+    if circle:
+        v.circle(Vec(v.ox + (cx - v.at[0]) * k, v.oy - (cy - v.at[1]) * k), r * k,
+                 "construction")  # fmt: skip
     ways = [(math.cos(math.radians(a)), -math.sin(math.radians(a))) for a in range(45, 405, 45)]
+    if taken:
+        # a way and its neighbours (45° on) are the letter's room: the next letter beyond
+        near = [w for w in ways if all(w[0] * t[0] + w[1] * t[1] < WAY_NEAR for t in taken)]
+        free = [w for w in ways if all(math.dist(w, t) > tol.REL_LENGTH for t in taken)]
+        ways = near or free or ways
     half = text_width(letter, 3.5) / 2.0 + 1.0
 
     def middle(u: tuple[float, float]) -> tuple[float, float]:
@@ -703,6 +723,20 @@ def mark_detail(
     leader = (edge[0] + 4.2 * u[0], edge[1] + 4.2 * u[1])
     v.sheet.add(Polyline((edge, leader), "construction"))
     v.d.label(leader, letter, 3.5, prefer=u, clear=0.5)
+    return u
+
+
+#: Two letters on one detail circle take ways round it whose cosine is under this (more than
+#: 45° apart: two neighbouring ways put two letters 3.5 mm high side by side, touching).
+WAY_NEAR = math.cos(math.radians(60.0))
+
+
+def root_of(dt: Detail) -> Detail:
+    """The detail taken from the plan whose spot ``dt`` shows at a finer μ_F (``dt`` itself
+    where it is one)."""
+    while dt.host is not None:
+        dt = dt.host
+    return dt
 
 
 def _seg_dist(q: tuple[float, float], a: tuple[float, float], b: tuple[float, float]) -> float:
@@ -843,8 +877,9 @@ class Detail:
     #: shows (past :data:`DETAIL_TIERS`): drawn as lines, listed with their values under
     #: the detail's caption
     listed: tuple[str, ...] = ()
-    #: the detail whose drawing holds this one's spot (a detail of a detail, at a finer μ_F:
-    #: its circle and letter are on that one); None: its spot is on the plan
+    #: the detail whose short vectors this one shows at a finer μ_F (drawn as lines in that
+    #: one, no circle there: this one's letter is on the plan's circle of that one's spot,
+    #: :func:`root_of`); None: the first detail of its spot of the plan
     host: Detail | None = None
     #: its tier: 1 taken from the plan at the plan's details' μ_F, 2 at the next finer one
     #: (from a detail of tier 1, or from the plan where tier 1 showed nothing of its run), …
@@ -877,10 +912,11 @@ def plan_details(
     sheet). The vectors of a run still shorter than two arrowheads at the details' μ_F (a
     run spanning more than :data:`DETAIL_MAX_MM` / :data:`DETAIL_MM`, or a detail held to
     its plan's size) are drawn as lines in it, and each run of them again, enlarged, in a
-    detail of that detail (ESKD: a выносной элемент of a выносной элемент): a circle on the
-    first detail lettered with its own letter, at one finer μ_F for all the details of that
-    tier, stated in its caption; it joins the lines of the vectors it is chained to, so the
-    run ends on the sheet where the drawing it is taken from continues. A run with nothing
+    detail beside it at one finer μ_F for all the details of that tier, stated in its
+    caption, taken from the same spot of the plan: one detail level (review 12, item 1: the
+    slotter's Ц → Ш → Я, three deep), its letter on the plan's circle beside the first's,
+    never a circle on a detail; it joins the lines of the vectors it is chained to, so the
+    run ends on the sheet where the drawing before it continues. A run with nothing
     to show at a tier's μ_F is taken to the next tier from the same spot. Only past
     :data:`DETAIL_TIERS` tiers (a span over 10⁴: never with the negligible ``floor`` of a
     forces sheet) are vectors left as lines, :attr:`Detail.listed`: named with their values
@@ -1313,15 +1349,15 @@ def draw_detail(
     height: float = 2.5,
     others: Sequence[Detail] = (),
     noted: Iterable[str] = (),
-    bound: tuple[float, float, float, float] | None = None,
 ) -> None:
     """Draw detail ``dt`` of ``poly`` in its slot of the polygon's viewport ``v``: its run at
     its μ_F, captioned with its letter and μ_F (and the vectors too short in it, but those
     ``noted`` under the plan's caption), the lines of the long vectors it joins (a
     vector in another of ``others``, the plan's details, lettered with that one's letter;
-    the others unnamed: the plan names them). The runs of the details of ``others`` taken
-    from this one (:attr:`Detail.host`) are lines in it, circled and lettered as on a plan
-    (their letters kept inside ``bound``, paper mm)."""
+    the others unnamed: the plan names them). The runs of the details of ``others`` that
+    show its short vectors at a finer μ_F (:attr:`Detail.host`) are lines in it: those
+    details are taken from the same spot of the plan, lettered on its circle there (one
+    detail level, review 12: never a circle on a detail)."""
     sc = Scale(dt.k, "F")
     sx0, sy0, sx1, sy1 = dt.slot
     names = names or {}
@@ -1344,10 +1380,10 @@ def draw_detail(
             sub.label(b, elsewhere[pv.name], height, clear=0.5)
     run = [poly[n] for n in dt.run if poly[n].magnitude > _zero(poly)]
     shift = lanes(sc.k, run)  # those along one another side by side, tied where they meet
-    # the runs drawn again in its own details (a detail of this detail): lines here, circled
+    # the runs drawn again at a finer μ_F (the details beside it taken from its spot of the
+    # plan, lettered on the plan's circle): lines here, never a circle on a detail
     subs = [d for d in others if d.host is dt]
     finer = {n for d in subs for n in d.run}
-    sides: list[tuple[tuple[float, float], tuple[float, float]]] = []
     for i, pv in enumerate(run):
         s = shift.get(pv.name, Vec(0.0, 0.0))
         if i + 1 < len(run) and (s - shift.get(run[i + 1].name, Vec(0.0, 0.0))).norm > 0.0:
@@ -1355,15 +1391,12 @@ def draw_detail(
                     "construction")  # fmt: skip
         n = pv.name
         tail, head = pv.tail + s, pv.head + s
-        sides.append((sub.p(tail), sub.p(head)))
         if n in dt.listed or n in finer:  # too short at its μ_F: its line (listed, or finer)
             sub.seg(tail, head, "construction")
             continue
         sub.arrow(tail, head, "result" if n in found else "vector")
         prefer = (s.unit().x, s.unit().y) if s.norm > 0.0 else _outward(poly, tail, head, False)
         sub.label((tail + head) * 0.5, names.get(n, n), height, prefer=prefer, clear=0.5)
-    for spot in detail_spots(sub, poly, subs):
-        mark_detail(sub, *spot, segs=sides + _slot_sides(v, others), bound=bound)
 
 
 def _slot_sides(
@@ -1650,7 +1683,7 @@ class Polygon(View):
             found = self.found if self.found is not None else {n for n, _ in poly.solved}
             for dt in self.details:
                 draw_detail(v, poly, dt, self.names, found, self.label_height, self.details,
-                            self.noted, at.box)  # fmt: skip
+                            self.noted)  # fmt: skip
 
     def _listed_note(self, values: bool = True) -> str:
         """The line under the caption that names the vectors too short in the plan's
