@@ -767,7 +767,7 @@ SLIVER_SHARE = 0.125
 #: line across its cell (review 7, item 4), so 30–60 mm.
 SLIVER_MM = 60.0
 #: Two vectors of a plan within this angle of each other …
-LANE_ANGLE = math.radians(4.0)
+LANE_ANGLE = math.radians(5.0)
 #: … that run within THIN_MM of one another longer than this (mm) are drawn side by side.
 LANE_OVERLAP_MM = 3.0
 #: The passes of :func:`lanes` that move apart again the vectors still along one another.
