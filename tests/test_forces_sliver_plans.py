@@ -1,11 +1,12 @@
 """A sliver force plan (review 9, fix 4): a plan whose two long vectors run opposite ways along
 one line with small loads between them (a link's R₁₂ and R₃₂ with G₂ and Ф₂, a two-force
-member's R₀₁ = −R₂₁) is drawn as ONE line, the first's arrow at its head and the second's back
-along it, named "R₃₂ = −R₁₂" (or "≈" where loads lie between them); the loads close the gap
-in the plan's detail at its stated μ_F. Before, the two were drawn side by side a lane
-(2.5 mm) apart: two long lines that read as one smudged twin line (watt2's link 2 and crank,
-double_kulisa's links 2 and 4 and crank). And on no forces sheet do two near-parallel lines
-of a plan run closer than 1 mm (tests/twinlines.py)."""
+member's R₀₁ = −R₂₁) is drawn with its two long vectors side by side a sliver's lane
+(views.SLIVER_LANE_MM) apart, the loads' chain between them closing the gap in the plan's
+detail at its stated μ_F. Review 9 found them a lane (2.5 mm) apart: two long lines that read
+as one smudged twin line (watt2's link 2 and crank, double_kulisa's links 2 and 4 and crank);
+review 12 found them drawn as ONE line ("R₀₁ ≈ −R₂₁"): two superposed arrows (the bloom shear's
+crank). And on no forces sheet do two near-parallel lines of a plan run closer than 1 mm
+(tests/twinlines.py)."""
 
 from __future__ import annotations
 
@@ -37,8 +38,8 @@ def test_no_twin_lines_on_any_plan(path: Path) -> None:
     sheet, boxes = forces_sheet(s)
     # no two near-parallel lines of a plan closer than 1 mm over more than 5 mm
     assert twin_lines(sheet, boxes) == []
-    # a sliver plan's two long vectors on one line: none of its lines runs beside another
-    # within a lane's width (plus its strokes) over 10 mm
+    # a sliver plan's two long vectors a sliver's lane apart: none of its lines runs beside
+    # another within a lane's width (plus its strokes) over 10 mm
     twins = twin_lines(sheet, sliver_boxes(s), OFFSET_MM + 0.5, 10.0)
     assert twins == [], [(round(run, 1), round(gap, 2)) for _b, run, gap in twins]
 

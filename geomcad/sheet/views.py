@@ -243,7 +243,8 @@ def draw_polygon(
     ``role``. The runs of ``details`` are drawn thin, circled and lettered (ESKD выносной
     элемент; :func:`draw_detail` draws them enlarged). ``thin``: the polygon lies along one
     line (two opposite reactions): its vectors are drawn side by side :data:`OFFSET_MM` apart,
-    joined by thin lines, as a textbook draws them (two such: labelled "R₀₁ = −R₂₁"). Never
+    joined by thin lines, as a textbook draws them (a sliver's two long opposite ones
+    :data:`SLIVER_LANE_MM` apart, :func:`_pair_lanes`). Never
     a dot: a vector outside every detail is an arrow however short; those in ``omit`` (a
     negligible share of the polygon, named under its caption) are not drawn; those in ``lines``
     (too short even for a detail, named under its caption) are drawn as lines. Returns the names
@@ -258,7 +259,9 @@ def draw_polygon(
     omit = set(omit)
     # a resultant along its long component (the other too short to part them): one line
     twins = twin_resultants(poly, v.scale.k)
-    # a sliver's two long vectors: one line, "R₃₂ = −R₁₂" (review 9, fix 4)
+    # a sliver's two long opposite vectors: side by side a sliver's lane apart, the loads'
+    # chain (in its detail) between them (review 12, fix 2: one line read as two superposed
+    # arrows; review 9, fix 4: a 2,5 mm lane read as one smudged twin line)
     pair = sliver_pair(poly, in_detail | omit)
     paired = {pv.name for pv in pair} if pair else set()
     shift = (
@@ -266,6 +269,8 @@ def draw_polygon(
         if thin
         else lanes(v.scale.k, _lane_vectors(poly, in_detail | paired, omit | set(twins)))
     )
+    if pair:
+        shift.update(_pair_lanes(pair, v.scale.k))
     short: list[str] = []
     drawn = [pv for pv in poly.vectors if pv.magnitude > zero and pv.name not in omit]
     res = [(r, c) for r, c in resultants(poly) if r.name not in twins]
@@ -288,8 +293,6 @@ def draw_polygon(
         text = (names or {}).get(pv.name, pv.name)
         if pv.name in also:  # its resultant drawn over it: "Rⁿ₃₄ ≈ R₃₄"
             text = f"{text} ≈ {(names or {}).get(also[pv.name], also[pv.name])}"
-        if pv.name in paired:
-            continue
         if pv.name in in_detail:
             # its line keeps the chain whole (its arrow, named, is drawn in its detail: the
             # circle round it is clear of labels)
@@ -347,27 +350,21 @@ def draw_polygon(
             if dt.host is not None and root_of(dt).letter in own:
                 taken.append(mark_detail(v, centre, radius, dt.letter, segs=segs, bound=bound,
                                          circle=False, taken=taken))  # fmt: skip
-    if pair:
-        # two forces (nearly) in balance, each exactly where the polygon has it, with no lanes
-        # between them: they meet at the vertex they share and part at the other end by the
-        # loads' chain, which closes there (in the detail) — a thin triangle, as the plan is,
-        # named "R₃₂ = −R₁₂" (a load between them: "R₃₂ ≈ −R₁₂")
-        a, b = pair
-        for pv in pair:
-            if v.mm(pv.magnitude) < SHORT_MM:
-                short.append(pv.name)
-            v.arrow(pv.tail, pv.head, "result" if pv.name in found else role)
-        na, nb = ((names or {}).get(pv.name, pv.name) for pv in pair)
-        exact = (a.head - b.tail).norm <= zero and (b.head - a.tail).norm <= zero
-        n = (a.head - a.tail).unit().perp()
-        mid = (a.tail + a.head) * 0.5
-        v.label(mid, na, height, prefer=(n.x, n.y), clear=0.5)
-        v.label(mid, nb, height, prefer=(-n.x, -n.y), clear=0.5)
-        far = n * (-(OFFSET_MM + height * 1.6) * v.scale.k)  # a line beyond b's label
-        v.label(mid + far, f"{nb} {'=' if exact else '≈'} −{na}", height,
-                prefer=(-n.x, -n.y), clear=0.5)  # fmt: skip
     v.dot(poly.pole)
     return short
+
+
+def _pair_lanes(pair: tuple[PlanVector, PlanVector], k: float) -> dict[str, Vec]:
+    """The sideways shifts (model units, at μ_F ``k``) that draw a sliver's two long opposite
+    vectors side by side :data:`SLIVER_LANE_MM` apart across the first's line, each on the side
+    of the other that it lies on in the plan (the loads' chain between them), centred where
+    they were."""
+    a, b = pair
+    n = (a.head - a.tail).unit().perp()
+    mid = (b.tail + b.head) * 0.5
+    side = 1.0 if n.dot(mid - a.tail) >= 0.0 else -1.0
+    half = n * (side * SLIVER_LANE_MM * k / 2.0)
+    return {a.name: -half, b.name: half}
 
 
 #: A reaction's component: R^n_{12}, R^τ_{12} (its resultant R_{12}).
@@ -378,7 +375,7 @@ def sliver_pair(
     poly: ForcePolygon, hidden: Iterable[str] = ()
 ) -> tuple[PlanVector, PlanVector] | None:
     """The two long vectors of a sliver plan (:func:`is_sliver`: a two-force member's R₁₂,
-    R₃₂, or a link's two reactions with small loads between) that a plan draws as one line:
+    R₃₂, or a link's two reactions with small loads between) that a plan draws side by side:
     the only two of its vectors drawn as arrows (the others ``hidden``: in its details, drawn
     as lines or left out), running opposite ways (within :data:`LANE_ANGLE`); ``None`` where
     there are no such two (a plan with a split reaction's components, or a load drawn large)."""
@@ -398,7 +395,7 @@ def sliver_pair(
 def sliver_loads(poly: ForcePolygon) -> float:
     """The magnitude under which a sliver plan's vectors go into its detail: all but its two
     long opposite ones (:func:`sliver_pair`), however long they would be drawn, so that the
-    two are drawn as one line and the loads between them close the gap in the detail at a
+    two are drawn side by side and the loads between them close the gap in the detail at a
     stated μ_F (review 9, fix 4: R₁₂ and R₃₂ of watt2's link 2 drawn side by side about the
     7.6 mm arrow of G₂); 0 where the plan is no such sliver."""
     zero = _zero(poly)
@@ -525,7 +522,16 @@ def _along(a: PlanVector, b: PlanVector, k: float, near_mm: float) -> tuple[floa
         lo, hi = max(min(ta, tb), lo), min(max(ta, tb), hi)
         if hi <= lo:
             return none
-    return (hi - lo) / k, a.tail + u * ((lo + hi) / 2.0)
+    # the spot where they come nearest (two sides of a thin triangle at its sharp vertex: set a
+    # lane apart there, they part further along), a lane's overlap in from that end so the side
+    # each lies on is read; two parallel ones at the middle
+    mid = (lo + hi) / 2.0
+    near_lo, near_hi = abs(d(lo)), abs(d(hi))
+    if abs(near_lo - near_hi) <= tol.DERIVED * max(near_lo, near_hi, near):
+        return (hi - lo) / k, a.tail + u * mid
+    inset = min(LANE_OVERLAP_MM * k, (hi - lo) / 2.0)
+    at = lo + inset if near_lo < near_hi else hi - inset
+    return (hi - lo) / k, a.tail + u * at
 
 
 def lanes(k: float, vectors: Sequence[PlanVector]) -> dict[str, Vec]:
@@ -795,11 +801,16 @@ SLIVER_SHARE = 0.125
 #: line across its cell (review 7, item 4), so 30–60 mm.
 SLIVER_MM = 60.0
 #: Two vectors of a plan within this angle of each other …
-LANE_ANGLE = math.radians(4.0)
+LANE_ANGLE = math.radians(5.0)
 #: … that run within THIN_MM of one another longer than this (mm) are drawn side by side.
 LANE_OVERLAP_MM = 3.0
 #: The passes of :func:`lanes` that move apart again the vectors still along one another.
 LANE_PASSES = 2
+#: A sliver's two long opposite vectors are drawn side by side this far apart (mm): one line
+#: read as two superposed arrows (review 12, fix 2), a lane (:data:`OFFSET_MM`) as one smudged
+#: twin line (review 9, fix 4); each a lane and a line's clearance (:data:`THIN_MM`) from the
+#: loads' chain left on the plan's line between them.
+SLIVER_LANE_MM = 2.0 * (OFFSET_MM + THIN_MM)
 
 
 #: The Cyrillic capitals that read as Latin ones (a detail lettered with one reads as a point):
