@@ -79,7 +79,7 @@ def test_the_lever_draws_only_explained_points(drawn: dict[str, Any]) -> None:
     on the lever acts at (never a point of loads all left out)."""
     if drawn["sheet"] is None:
         pytest.skip("no forces sheet")
-    for sheet, lev, items in drawn["lever"]:
+    for sheet, lev, _ in drawn["lever"]:
         if sheet is not drawn["sheet"]:
             continue
         P, f = lev.P, lev.f

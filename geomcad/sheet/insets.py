@@ -312,11 +312,11 @@ class Insets:
                     del out[j]
                     joined = True
                     break
-        rings: list[tuple[Vec, list[Short], tuple[float, float], float]] = []
+        out2: list[tuple[Vec, list[Short], tuple[float, float], float]] = []
         for q, ss in out:
             tiers = sorted({s.tier for s in ss if not self.fixed(s)})
             if len(tiers) < 2:
-                rings.append((q, ss, *circle(ss)))
+                out2.append((q, ss, *circle(ss)))
                 continue
             # forces of two μ_F at one place (:func:`one_scale_per_inset` could not draw them
             # at one): an inset each, their circles side by side round it (twins), the
@@ -325,8 +325,8 @@ class Insets:
             for n, t in enumerate(tiers):
                 mine = [s for s in ss if s.tier == t or (self.fixed(s) and t == tiers[-1])]
                 side = -1.0 if n == 0 else 1.0
-                rings.append((q, mine, (c[0] + side * TWIN_SHIFT_MM, c[1]), r + TWIN_SHIFT_MM))
-        return rings
+                out2.append((q, mine, (c[0] + side * TWIN_SHIFT_MM, c[1]), r + TWIN_SHIFT_MM))
+        return out2
 
     def point_name(self, q: Vec, shorts: list[Short], eps: float) -> str:
         """The name an inset gives its point at ``q``: the points its loads ``shorts`` there
