@@ -299,7 +299,12 @@ class Insets:
             ats = [v.p(s.at) for s in ss]
             xs, ys = [a[0] for a in ats], [a[1] for a in ats]
             c = ((min(xs) + max(xs)) / 2.0, (min(ys) + max(ys)) / 2.0)
-            return c, MARK_R + max(math.dist(c, a) for a in ats)
+            r = MARK_R + max(math.dist(c, a) for a in ats)
+            # twins (below) reach 2·TWIN_SHIFT_MM further on their sides: kept apart as such
+            return c, r + (2.0 * TWIN_SHIFT_MM if twins(ss) else 0.0)
+
+        def twins(ss: list[Short]) -> bool:
+            return len({s.tier for s in ss if not self.fixed(s)}) > 1
 
         joined = True
         while joined:
@@ -322,6 +327,7 @@ class Insets:
             # at one): an inset each, their circles side by side round it (twins), the
             # direction arrows with the finer
             c, r = circle(ss)
+            r -= 2.0 * TWIN_SHIFT_MM
             for n, t in enumerate(tiers):
                 mine = [s for s in ss if s.tier == t or (self.fixed(s) and t == tiers[-1])]
                 side = -1.0 if n == 0 else 1.0
