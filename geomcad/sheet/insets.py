@@ -11,7 +11,9 @@ directions, no inset arrow longer than the view's own shortest; a force too shor
 too (and not under the view's HIDE_SHARE) is drawn in its inset as a direction arrow of the
 fixed length VIEW_SHORT_MM, at no scale (the line under the caption names it: "G1, Ф1 —
 стрелки 5 мм без масштаба"), no longer than any arrow drawn to scale. One inset per point: all the
-short forces of a point (of points closer than the circle) in one inset, under one letter. The
+short forces of a point (of points closer than the circle) in one inset, under one letter, at
+ONE μ_F (:func:`one_scale_per_inset`; where one μ_F cannot draw a point's forces, an inset per
+μ_F, two circles side by side round the point: twins). The
 insets go where the view's box is free of what is drawn, the nearest such place to their
 circle (within BESIDE_MAX_MM where the view has room there).
 """
