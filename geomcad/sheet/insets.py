@@ -11,7 +11,9 @@ directions, no inset arrow longer than the view's own shortest; a force too shor
 too (and not under the view's HIDE_SHARE) is drawn in its inset as a direction arrow of the
 fixed length VIEW_SHORT_MM, at no scale (the line under the caption names it: "G1, Ф1 —
 стрелки 5 мм без масштаба"), no longer than any arrow drawn to scale. One inset per point: all the
-short forces of a point (of points closer than the circle) in one inset, under one letter. The
+short forces of a point (of points closer than the circle) in one inset, under one letter, at
+ONE μ_F (:func:`one_scale_per_inset`; where one μ_F cannot draw a point's forces, an inset per
+μ_F, two circles side by side round the point: twins). The
 insets go where the view's box is free of what is drawn, the nearest such place to their
 circle (within BESIDE_MAX_MM where the view has room there).
 """
@@ -21,7 +23,7 @@ from __future__ import annotations
 import itertools
 import math
 from collections.abc import Iterator, Mapping, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 import numpy.typing as npt
@@ -31,7 +33,14 @@ from geomcad import tol
 from geomcad.geom import Vec
 from geomcad.sheet.drawing import JOINT_R, Drawing, Viewport
 from geomcad.sheet.lang import Words
-from geomcad.sheet.loads import ForceScales, _inside, chord_points, force
+from geomcad.sheet.loads import (
+    INSET_CAP_MM,
+    TIER_LIMIT,
+    ForceScales,
+    _inside,
+    chord_points,
+    force,
+)
 from geomcad.sheet.model import ArcItem, CircleItem, Polyline, TextItem
 from geomcad.sheet.plans import markup_of
 from geomcad.sheet.scale import Scale
@@ -155,6 +164,12 @@ def _holds(poly: Sequence[tuple[float, float]], c: tuple[float, float]) -> bool:
     return inside
 
 
+#: The forces of one place at two of the insets' μ_F that one μ_F cannot draw (its arrows
+#: past INSET_ONE_MM) are two insets, their circles this far (mm) each side of the place and
+#: as much larger: side by side round it, each lettered on its own side (within
+#: TWIN_TURN_DEG of the way from the other circle's centre to its own).
+TWIN_SHIFT_MM = 1.5
+TWIN_TURN_DEG = 60.0
 #: Two insets' circles on a view keep at least this far (mm) apart; closer, they are one.
 CIRCLES_APART_MM = 1.0
 #: An inset draws its points at least this far (mm) apart: one of points closer on the view
@@ -218,6 +233,8 @@ class Insets:
         self.shorts: list[Short] = []
         #: (letter, μ_F) of each inset drawn, in order
         self.drawn: list[tuple[str, Scale]] = []
+        #: the short forces of each inset drawn, in order
+        self.members: list[list[Short]] = []
         #: lines the view draws after its insets (a detail's circle): no inset over them
         self.reserved: list[CircleItem] = []
 
@@ -284,7 +301,12 @@ class Insets:
             ats = [v.p(s.at) for s in ss]
             xs, ys = [a[0] for a in ats], [a[1] for a in ats]
             c = ((min(xs) + max(xs)) / 2.0, (min(ys) + max(ys)) / 2.0)
-            return c, MARK_R + max(math.dist(c, a) for a in ats)
+            r = MARK_R + max(math.dist(c, a) for a in ats)
+            # twins (below) reach 2·TWIN_SHIFT_MM further on their sides: kept apart as such
+            return c, r + (2.0 * TWIN_SHIFT_MM if twins(ss) else 0.0)
+
+        def twins(ss: list[Short]) -> bool:
+            return len({s.tier for s in ss if not self.fixed(s)}) > 1
 
         joined = True
         while joined:
@@ -297,7 +319,22 @@ class Insets:
                     del out[j]
                     joined = True
                     break
-        return [(q, ss, *circle(ss)) for q, ss in out]
+        out2: list[tuple[Vec, list[Short], tuple[float, float], float]] = []
+        for q, ss in out:
+            tiers = sorted({s.tier for s in ss if not self.fixed(s)})
+            if len(tiers) < 2:
+                out2.append((q, ss, *circle(ss)))
+                continue
+            # forces of two μ_F at one place (:func:`one_scale_per_inset` could not draw them
+            # at one): an inset each, their circles side by side round it (twins), the
+            # direction arrows with the finer
+            c, r = circle(ss)
+            r -= 2.0 * TWIN_SHIFT_MM
+            for n, t in enumerate(tiers):
+                mine = [s for s in ss if s.tier == t or (self.fixed(s) and t == tiers[-1])]
+                side = -1.0 if n == 0 else 1.0
+                out2.append((q, mine, (c[0] + side * TWIN_SHIFT_MM, c[1]), r + TWIN_SHIFT_MM))
+        return out2
 
     def point_name(self, q: Vec, shorts: list[Short], eps: float) -> str:
         """The name an inset gives its point at ``q``: the points its loads ``shorts`` there
@@ -340,7 +377,12 @@ class Insets:
         outlines = supports(d.sheet.items[start:])
         for i, (q, shorts, c, r) in enumerate(rings):
             letter = next(letters)
-            self.drawn.append((letter, self.scale))
+            tiers = [s.tier for s in shorts if not self.fixed(s)]
+            self.drawn.append((letter, self.fs.scales[tiers[0]] if tiers else self.scale))
+            self.members.append(shorts)
+            # a twin (an inset of the other μ_F at the same place): its letter on its own side
+            twin = next((o[2] for j, o in enumerate(rings) if j != i and o[0] is q), None)
+            side = None if twin is None else (c[0] - twin[0], c[1] - twin[1])
             # past a block or an arc round the point, as far as the other circles leave room
             room = min((math.dist(c, o[2]) - radii[j] - CIRCLES_APART_MM
                         for j, o in enumerate(rings) if j != i), default=math.inf)  # fmt: skip
@@ -350,7 +392,7 @@ class Insets:
             rings[i] = (q, shorts, c, radii[i])
             circle = CircleItem(c, radii[i], "thin")
             d.sheet.add(circle)
-            beside = free.letter(d, letter, c, radii[i])  # its own circle is not in its way
+            beside = free.letter(d, letter, c, radii[i], side)  # its own circle is not in its way
             free.mark(circle)
             marks.append((letter, q, shorts, c, beside))
         for letter, q, shorts, c, beside in marks:
@@ -599,11 +641,16 @@ class _Free:
         self.ink |= mine
         self.grid |= _grow(mine, math.ceil(KEEP_MM / CELL_MM))
 
-    def letter(self, d: Drawing, letter: str, c: tuple[float, float], r: float) -> TextItem:
+    def letter(
+        self, d: Drawing, letter: str, c: tuple[float, float], r: float,
+        side: tuple[float, float] | None = None,
+    ) -> TextItem:  # fmt: skip
         """The letter of an inset beside its circle (centre ``c``, radius ``r``, sheet mm):
         its box one of :data:`LETTER_GAPS` outside the circle in one of the directions
         :data:`LETTER_TURNS`, where it covers fewest lines and texts drawn (and labels still to
-        be placed), the nearest and first such place; its cells taken."""
+        be placed), the nearest and first such place; its cells taken. ``side``: a twin's
+        (sheet mm, away from the other circle round its point): only the directions within
+        TWIN_TURN_DEG of it, so that the letter is nearer its own circle."""
         w, up, down = box(parse(letter), LETTER_H)
         hw, hh = w / 2.0, (up + down) / 2.0
         XY = tuple[float, float]
@@ -613,6 +660,10 @@ class _Free:
             for i, deg in enumerate(LETTER_TURNS):
                 t = math.radians(deg)
                 u = (math.cos(t), -math.sin(t))
+                if side is not None and u[0] * side[0] + u[1] * side[1] < math.cos(
+                    math.radians(TWIN_TURN_DEG)
+                ) * math.hypot(*side):
+                    continue
                 # the box's centre along u where its nearest point is ``gap`` off the circle
                 lo, hi = 0.0, r + gap + hw + hh
                 for _ in range(30):
@@ -734,3 +785,57 @@ def _grow(grid: npt.NDArray[np.bool_], n: int) -> npt.NDArray[np.bool_]:
         g[:, :-1] |= out[:, 1:]
         out = g
     return out
+
+
+#: The longest arrow (mm) of an inset whose forces one μ_F draws though they were at two (the
+#: finer: its larger forces drawn longer than the insets' cap): a further μ_F's arrows reach
+#: TIER_LIMIT times their room (loads.force_tiers); longer, the place's forces are two insets
+#: (twins, TWIN_SHIFT_MM), each at one μ_F.
+INSET_ONE_MM = TIER_LIMIT * INSET_CAP_MM
+
+
+def one_scale_per_inset(
+    fs: ForceScales, arrows: Sequence[tuple[Vec, Vec]], v: Viewport
+) -> ForceScales:
+    """The view's force scales ``fs`` with each of its insets at ONE μ_F (review 12: the
+    needle's inset Г held Φ5* and G5**, two stated μ in one detail): the forces ``arrows``
+    (point, force; model) short at the view's own μ_F, by the insets the view ``v`` draws
+    (:meth:`Insets.clusters`); where one inset's forces are at two of the insets' μ_F, all of
+    them at the finer (:attr:`ForceScales.pinned`: the larger of them drawn longer, none
+    shorter than it was) where that draws none past :data:`INSET_ONE_MM` (else the place
+    is two insets, twins, one per μ_F), until no more join; then a μ_F that no force is
+    drawn at any more is not stated (the view states at most as many as before)."""
+    if len(fs.scales) < 3:
+        return fs  # one inset μ_F at most: every inset at it
+    pinned: dict[float, int] = {}
+    while True:
+        cur = replace(fs, pinned=tuple(pinned.items()))
+        ins = Insets(cur, {})
+        for at, F in arrows:
+            t = cur.tier(F.norm)
+            if t is not None and 0 < t < len(cur.scales):
+                ins.add(at, F, t, "", "")
+        more = False
+        places: dict[int, list[Short]] = {}  # an inset's forces, a twin's joined
+        for q, shorts, _, _ in ins.clusters(v) if ins.shorts else []:
+            places.setdefault(id(q), []).extend(shorts)
+        for shorts in places.values():
+            tiers = {s.tier for s in shorts}
+            fine = cur.scales[max(tiers)].k if len(tiers) > 1 else 0.0
+            if fine and max(s.F.norm for s in shorts) / fine <= INSET_ONE_MM:
+                for s in shorts:
+                    if s.tier != max(tiers):
+                        pinned[s.F.norm] = max(tiers)
+                        more = True
+        if not more:
+            break
+    if not pinned:
+        return fs
+    cur = replace(fs, pinned=tuple(pinned.items()))
+    used = {cur.tier(F.norm) for _, F in arrows} | {0}
+    keep = [i for i in range(len(fs.scales)) if i in used]
+    if len(keep) == len(fs.scales):
+        return cur
+    index = {i: n for n, i in enumerate(keep)}
+    scales = tuple(fs.scales[i] for i in keep)
+    return replace(fs, scales=scales, pinned=tuple((F, index[t]) for F, t in pinned.items()))

@@ -70,6 +70,10 @@ class ForceScales:
     #: drawn without a scale: the view's caption says so); 0: no such tier (those forces are
     #: drawn at the last μ_F)
     fixed: float = 0.0
+    #: (force N, tier) of the forces an inset draws at a tier other than their magnitude's:
+    #: every force at one point (one inset) at ONE μ_F, the finest of theirs
+    #: (:func:`~geomcad.sheet.insets.one_scale_per_inset`)
+    pinned: tuple[tuple[float, int], ...] = ()
 
     @property
     def k(self) -> float:
@@ -80,6 +84,9 @@ class ForceScales:
         """The index of the scale a force of ``F`` N is drawn at (``None``: a zero force)."""
         if max(self.zero, self.negligible) >= F:
             return None
+        for G, t in self.pinned:
+            if abs(G - F) <= tol.DERIVED * G:
+                return t
         for i, sc in enumerate(self.scales):
             if F / sc.k >= self.short * (1.0 - tol.DERIVED) and (i > 0 or self.least <= F):
                 return i
