@@ -806,8 +806,11 @@ def test_the_lever_joins_each_links_images_and_letters_every_load_point(
             anchors.append((Vec(*q), markup, v.mm(1.0)))
         label(v, q, markup, *args, **kw)
 
+    levers: list[Any] = []
+
     def rec_draw(self: Any, d: Any, at: Any) -> None:
         inside[0] = True
+        levers.append(self)
         try:
             draw(self, d, at)
         finally:
@@ -817,7 +820,7 @@ def test_the_lever_joins_each_links_images_and_letters_every_load_point(
     monkeypatch.setattr(Viewport, "label", rec_label)
     monkeypatch.setattr(lf._Lever, "draw", rec_draw)
     lf.force_sheets(s, name, first_no=2)
-    assert segs and anchors
+    assert segs and anchors and levers
 
     k = segs[0][2]
     for link in lk.moving_links:
@@ -826,7 +829,12 @@ def test_the_lever_joins_each_links_images_and_letters_every_load_point(
         # the images closer than 0.3 mm are one point; segments between them join them all
         assert joined_up(pts, segs, k), (name, link, pts)
     lev = f.lever
-    for q in [*(it.image for it in lev.items), lev.images[lk.joint]]:
+    # (a point off the velocity plan whose loads are all left out, named in the caption as
+    # under the share drawn, is not drawn: review 12's unexplained d4)
+    fs = levers[-1].fs
+    drawn = [it.image for it in lev.items
+             if fs.tier(it.force.norm) is not None or P.pn(it.point) in P.vp.points]  # fmt: skip
+    for q in [*drawn, lev.images[lk.joint]]:
         assert any(a.dist(q) * k < 0.85 and m.strip() for a, m, k in anchors), (name, q)
 
 

@@ -7,6 +7,8 @@ from __future__ import annotations
 
 from pathlib import Path
 
+import pytest
+
 import geomcad
 from geomcad import tol
 from geomcad.sheet import linkage_forces as lf
@@ -19,15 +21,28 @@ SHAPER = ROOT / "examples" / "shaper.toml"
 E = 1.0 + tol.REL_LENGTH
 
 
-def test_yarn_main_view_crank_and_one_scale() -> None:
+def test_yarn_main_view_crank() -> None:
     """The yarn traverse (12 mm crank, mechanism 297 x 325 mm at 2,5:1): its forces sheet's
     main view draws the crank at least CRANK_MM long (on main: 2:1, 24 mm, the rule met only in
-    a crank detail), and its groups and crank cut out take the mechanism's μ_l."""
+    a crank detail)."""
+    s = geomcad.solve(str(YARN)).data
+    _tree, z = lf.force_layout(s)
+    mech = [pl.scale.k for pl in z.layout if isinstance(pl.view, lf._Loaded) and pl.scale]
+    assert s.linkage.length / mech[0] >= CRANK_MM / E, mech
+
+
+@pytest.mark.xfail(
+    strict=True,
+    reason="merged with the kinematic branch's longer yoke guide (the rod on its guide in every "
+    "position) the yarn's groups no longer fit at 2,5:1 beside its mechanism: they are drawn at "
+    "2:1, said in their captions (review 13)",
+)
+def test_yarn_groups_at_the_main_views_scale() -> None:
+    """The yarn traverse's groups and crank cut out at its main view's μ_l (2,5:1)."""
     s = geomcad.solve(str(YARN)).data
     _tree, z = lf.force_layout(s)
     mech = [pl.scale.k for pl in z.layout if isinstance(pl.view, lf._Loaded) and pl.scale]
     bodies = [pl.scale.k for pl in z.layout if isinstance(pl.view, lf._FreeBody) and pl.scale]
-    assert s.linkage.length / mech[0] >= CRANK_MM / E, mech
     assert all(mech[0] / E <= kk <= mech[0] * E for kk in bodies), (mech, bodies)
 
 
