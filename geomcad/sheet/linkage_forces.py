@@ -1209,6 +1209,13 @@ def _choice2(
         Column(Row(mech, lever, right), groups),
         Row(Column(mech, lever), Column(Grid(*bodies), Grid(*polys)), right),
         *([Row(Column(mech, Grid(*polys)), Column(band, lever), right)] if under else []),
+        # the mechanism the field's height at the left edge, the groups, the lever and the
+        # polygons in a column beside it (or the lever beside the polygons under the groups),
+        # the tables at the right edge (review 12: the slotter's five plans 27-54 mm in 104 x 93
+        # mm cells under its mechanism while its lever took 387 x 287 mm for a 320 x 130 mm
+        # drawing; so its plans reach 108 mm, its mechanism 1:2 instead of 1:2,5)
+        Row(mech, Column(band, lever, Grid(*polys)), right),
+        Row(mech, Column(band, Row(lever, Grid(*polys))), right),
         # the mechanism at its rule's scale with the tables and the polygons beside it, the
         # groups and the lever under them (review 8: a 55 mm crank's mechanism at 1:1 holds
         # only so on A1; tried only where the others leave the crank short, :func:`_held`)
