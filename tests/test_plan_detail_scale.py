@@ -8,14 +8,13 @@ from __future__ import annotations
 
 import re
 from pathlib import Path
-from typing import Any
 
 import pytest
+from drawn_plans import drawn_plans
 
-import geomcad
 from geomcad.sheet.linkage_forces import SLIVER_GROW_MM
 from geomcad.sheet.model import TextItem
-from geomcad.sheet.views import DETAIL_MAX_MM, SLIVER_MM, Polygon, is_sliver
+from geomcad.sheet.views import DETAIL_MAX_MM, SLIVER_MM, is_sliver
 
 ROOT = Path(__file__).resolve().parents[1]
 TESTS = Path(__file__).resolve().parent
@@ -39,25 +38,6 @@ TWO_FORCE_MM = 80.0
 LETTER_LIST = re.compile(r"^[А-ЯA-Z]\d*(, [А-ЯA-Z]\d*)+$")
 
 
-def _plans(path: Path, monkeypatch: pytest.MonkeyPatch) -> list[tuple[Polygon, Any, list[Any]]]:
-    """Each force plan of the file's forces sheet as drawn last: (plan, placed, its items)."""
-    from geomcad.sheet import views
-
-    rec: dict[str, tuple[Polygon, Any, list[Any]]] = {}
-    draw = views.Polygon.draw
-
-    def rec_draw(self: Polygon, d: Any, at: Any) -> None:
-        i = len(d.sheet.items)
-        draw(self, d, at)
-        rec[self.title] = (self, at, d.sheet.items[i:])
-
-    monkeypatch.setattr(views.Polygon, "draw", rec_draw)
-    sheets = dict(geomcad.solve(str(path)).sheets())
-    if "forces" not in sheets:
-        pytest.skip("no forces sheet")
-    return list(rec.values())
-
-
 @pytest.mark.parametrize("path", FILES, ids=lambda p: p.stem)
 def test_a_plan_states_one_detail_scale_and_one_letter_per_circle(
     path: Path, monkeypatch: pytest.MonkeyPatch
@@ -67,7 +47,7 @@ def test_a_plan_states_one_detail_scale_and_one_letter_per_circle(
     finer for the details of those details (review 9, item 1: a detail of a detail shows
     what the first cannot); a circle on the plan is lettered with one detail's letter,
     never a list of them."""
-    plans = _plans(path, monkeypatch)
+    plans = drawn_plans(path, monkeypatch)
     assert plans
     for p, _, items in plans:
         texts = [it.text for it in items if isinstance(it, TextItem)]
@@ -87,7 +67,7 @@ def test_a_two_force_plan_is_drawn_short(path: Path, monkeypatch: pytest.MonkeyP
     μ_F its caption states (the shaper's links 2, 3 and crank were 90–100 mm twin lines), and
     SLIVER_MM is within the review's bound."""
     assert SLIVER_MM <= SLIVER_GROW_MM <= TWO_FORCE_MM
-    plans = _plans(path, monkeypatch)
+    plans = drawn_plans(path, monkeypatch)
     for p, at, _ in plans:
         poly = p.layers[-1][0]
         if not is_sliver(poly):
@@ -103,7 +83,7 @@ def test_a_two_force_plan_grows_into_its_box(monkeypatch: pytest.MonkeyPatch) ->
     its longest vector within SLIVER_GROW_MM, so at least half that long (review 11, item 2:
     the shaper's link 3, R23 = 3458 N at 100 N/mm, 35 mm in a 138 mm × 62 mm cell)."""
     slivers = 0
-    for p, at, _ in _plans(ROOT / "examples" / "shaper.toml", monkeypatch):
+    for p, at, _ in drawn_plans(ROOT / "examples" / "shaper.toml", monkeypatch):
         poly = p.layers[-1][0]
         if not is_sliver(poly):
             continue
@@ -139,7 +119,7 @@ def test_a_detail_is_not_drawn_longer_than_its_plan_needs(
     from geomcad.sheet.scale import nice_factor
     from geomcad.sheet.views import DETAIL_LEAST
 
-    for p, at, _ in _plans(path, monkeypatch):
+    for p, at, _ in drawn_plans(path, monkeypatch):
         poly = p.layers[-1][0]
         for tier in sorted({dt.tier for dt in p.details}):
             # the details of one tier share one μ_F; the vectors they draw: not those drawn

@@ -7,13 +7,11 @@ drawn beside it at a finer μ_F, their letters on the same circle of the plan.""
 from __future__ import annotations
 
 from pathlib import Path
-from typing import Any
 
 import pytest
+from drawn_plans import drawn_plans
 
-import geomcad
 from geomcad.sheet.model import CircleItem
-from geomcad.sheet.views import Polygon
 
 TESTS = Path(__file__).resolve().parent
 ROOT = TESTS.parent
@@ -24,31 +22,12 @@ FILES = [
 ]
 
 
-def _plans(path: Path, monkeypatch: pytest.MonkeyPatch) -> list[tuple[Polygon, Any, list[Any]]]:
-    """Each force plan of the file's forces sheet as drawn last: (plan, placed, its items)."""
-    from geomcad.sheet import views
-
-    rec: dict[str, tuple[Polygon, Any, list[Any]]] = {}
-    draw = views.Polygon.draw
-
-    def rec_draw(self: Polygon, d: Any, at: Any) -> None:
-        i = len(d.sheet.items)
-        draw(self, d, at)
-        rec[self.title] = (self, at, d.sheet.items[i:])
-
-    monkeypatch.setattr(views.Polygon, "draw", rec_draw)
-    sheets = dict(geomcad.solve(str(path)).sheets())
-    if "forces" not in sheets:
-        pytest.skip("no forces sheet")
-    return list(rec.values())
-
-
 @pytest.mark.parametrize("path", FILES, ids=lambda p: p.stem)
 def test_no_detail_circle_is_drawn_on_a_detail(path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
     """Every circle that marks a detail of a force plan lies on the plan (its centre in none
     of the plan's details' slots: no detail of a detail), one circle per spot of the plan
     (the details taken from the plan; those beside them at a finer μ_F are lettered on it)."""
-    for p, at, items in _plans(path, monkeypatch):
+    for p, at, items in drawn_plans(path, monkeypatch):
         v = at.viewport
         slots = []
         for dt in p.details:

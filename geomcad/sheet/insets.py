@@ -303,10 +303,11 @@ class Insets:
             c = ((min(xs) + max(xs)) / 2.0, (min(ys) + max(ys)) / 2.0)
             r = MARK_R + max(math.dist(c, a) for a in ats)
             # twins (below) reach 2·TWIN_SHIFT_MM further on their sides: kept apart as such
-            return c, r + (2.0 * TWIN_SHIFT_MM if twins(ss) else 0.0)
+            return c, r + (2.0 * TWIN_SHIFT_MM if len(tiers(ss)) > 1 else 0.0)
 
-        def twins(ss: list[Short]) -> bool:
-            return len({s.tier for s in ss if not self.fixed(s)}) > 1
+        def tiers(ss: list[Short]) -> list[int]:
+            """The insets' μ_F (tiers) of a place's forces drawn to scale, finest last."""
+            return sorted({s.tier for s in ss if not self.fixed(s)})
 
         joined = True
         while joined:
@@ -321,8 +322,8 @@ class Insets:
                     break
         out2: list[tuple[Vec, list[Short], tuple[float, float], float]] = []
         for q, ss in out:
-            tiers = sorted({s.tier for s in ss if not self.fixed(s)})
-            if len(tiers) < 2:
+            ts = tiers(ss)
+            if len(ts) < 2:
                 out2.append((q, ss, *circle(ss)))
                 continue
             # forces of two μ_F at one place (:func:`one_scale_per_inset` could not draw them
@@ -330,8 +331,8 @@ class Insets:
             # direction arrows with the finer
             c, r = circle(ss)
             r -= 2.0 * TWIN_SHIFT_MM
-            for n, t in enumerate(tiers):
-                mine = [s for s in ss if s.tier == t or (self.fixed(s) and t == tiers[-1])]
+            for n, t in enumerate(ts):
+                mine = [s for s in ss if s.tier == t or (self.fixed(s) and t == ts[-1])]
                 side = -1.0 if n == 0 else 1.0
                 out2.append((q, mine, (c[0] + side * TWIN_SHIFT_MM, c[1]), r + TWIN_SHIFT_MM))
         return out2

@@ -2424,15 +2424,13 @@ def fill_diagrams(arranged: Arranged) -> None:
         over.append(pl.box[3] - pl.box[1] - room)
     heights = [pl.box[3] - pl.box[1] for pl in placed]
     spare = sum(heights) - sum(sp / k + o for sp, k, o in zip(spans, ks, over, strict=True))
+    finer = [_finer(k) for k in ks]
     while True:
-        steps = [
-            (sp / nice_step_below(k * (1.0 - FINER)) - sp / k, i)
-            for i, (sp, k) in enumerate(zip(spans, ks, strict=True))
-        ]
-        cost, i = min(steps)
+        steps = zip(spans, ks, finer, strict=True)
+        cost, i = min((sp / f - sp / k, i) for i, (sp, k, f) in enumerate(steps))
         if cost > spare:
             break
-        ks[i] = nice_step_below(ks[i] * (1.0 - FINER))
+        ks[i], finer[i] = finer[i], _finer(finer[i])
         spare -= cost
     share = max(spare, 0.0) / len(placed)
     y = placed[0].box[1]
@@ -2446,8 +2444,9 @@ def fill_diagrams(arranged: Arranged) -> None:
             y += h + (placed[k + 1].box[1] - pl.box[3])
 
 
-#: A factor this share below another is the next finer of the series (not the same one).
-FINER = 1.0e-6
+def _finer(k: float) -> float:
+    """The next finer factor of the series 1, 2, 2,5, 4, 5 × 10^n below ``k`` (one of it)."""
+    return nice_step_below(k * (1.0 - 4.0 * tol.REL_LENGTH))
 
 
 def _diagrams(s: Solved, spans: bool = True) -> list[Diagram]:
