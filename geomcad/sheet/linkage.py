@@ -290,7 +290,9 @@ def _trees(
     plan's position that is not a numbered one is drawn beside it (one μ_V for a file's
     velocity plans). ``mech_k`` (m/mm, 0: none): with the crank's detail, the scale the
     mechanism reached without it, which its search still seeks. ``seek_k`` (m/mm, 0: none):
-    without the detail, a finer scale the mechanism's search seeks (:data:`FINER_STEPS`).
+    a finer scale the mechanism's search seeks (:data:`FINER_STEPS`), with the detail or
+    without it (review 13: the coining press's mechanism kept 1:2,5 beside its crank's detail
+    where 1:2 fitted).
     ``spans``: each output diagram at least as high as draws its curve :data:`DIAGRAM_SPAN_MM`
     high (:meth:`_OutputDiagram.stretch`), else :data:`DIAGRAM_H`."""
     lk = s.linkage
@@ -376,7 +378,7 @@ def _trees(
     if rules[0]:
         cv: View = mech if crank is None else crank
         cv.most_k = round_scale_down(lk.length / CRANK_MM, "l", cv.series).k
-    if crank is None and seek_k > 0.0 and not 0.0 < mech.most_k <= seek_k:
+    if seek_k > 0.0 and not 0.0 < mech.most_k <= seek_k:
         mech.most_k = wants[mech] = seek_k
     if rules[1]:
         for view in vviews:
@@ -602,10 +604,13 @@ def _arrange(s: Solved, spans: bool) -> tuple[Layout, tuple[Arranged, ...], floa
     # the mechanism at the next finer GOST step while the sheets still fit with the size rules
     # and the diagrams' spans kept (review 11: the kulisa drawn 1:4 on an A1 49 % blank, where
     # its mechanism, tables and diagrams fit at 1:2,5): the search, scoring every view's
-    # drawn area, settles on splits that leave the field blank rather than grow one view
+    # drawn area, settles on splits that leave the field blank rather than grow one view;
+    # beside the crank's detail too (review 13: the coining press's mechanism at 1:2,5, its
+    # crank 22 mm, where 1:2 fitted the field: the detail keeps the crank's rule, and the
+    # mechanism takes the finest GOST scale that fits)
     for _ in range(FINER_STEPS):
         k_now = _mech_k((fitted, mech, second))
-        if detail or not math.isfinite(k_now):
+        if not math.isfinite(k_now):
             break
         seek = round_scale_down(k_now * (1.0 - 2.0 * tol.REL_LENGTH), "l", mech.series).k
         tried = attempt_seeking(seek)
