@@ -970,9 +970,11 @@ class Yoke:
 
 _YOKES: dict[int, tuple[Linkage, dict[int, Yoke]]] = {}
 #: A yoke's rod keeps this share of its travel inside its guide where it stands farthest from
-#: it (the guide drawn that much longer than the travel): a rod whose end only touched the
-#: guide's near end would read as run out of it.
-GUIDE_HOLD = 0.5
+#: it (the guide drawn that much longer than the travel, and the scheme's hatching runs
+#: :data:`~geomcad.sheet.scheme.GUIDE_HALF` past either end): a rod whose end only touched the
+#: guide's near end would read as run out of it. Review 13: half its travel (0.5) hatched the
+#: clipper's guide 225 mm for a 140 mm stroke, "far beyond it".
+GUIDE_HOLD = 0.1
 
 
 def yoke(lk: Linkage, g: Group) -> Yoke:
