@@ -154,12 +154,16 @@ class Drawing:
         id: str = "",
         others: tuple[XY, ...] = (),
         space: float = 0.0,
+        within: tuple[float, float, float, float] | None = None,
     ) -> None:
         """Ask for a label next to a sheet point (or one of ``others``); :meth:`finish` places
-        it, ``space`` mm further than usual from other texts."""
+        it, ``space`` mm further than usual from other texts, inside the box ``within`` (sheet
+        mm: its view's cell) where it can."""
         space = max(space, self.keep)
         self.pending.append(
-            LabelRequest(anchor, markup, height, role, prefer, clear, id, others, space, self.keep)
+            LabelRequest(
+                anchor, markup, height, role, prefer, clear, id, others, space, self.keep, within
+            )
         )
 
     def table(
@@ -269,6 +273,9 @@ class Viewport:
         self.scale = scale
         self.ox, self.oy = ox, oy
         self.at = at
+        #: The box (sheet mm) its labels keep inside where they can (:meth:`label`): its view's
+        #: cell, for a view among others in a grid (a plan); ``None``: anywhere on the field.
+        self.within: tuple[float, float, float, float] | None = None
 
     @property
     def sheet(self) -> Sheet:
@@ -548,7 +555,10 @@ class Viewport:
         from other texts."""
         pref = None if prefer is None else (prefer[0], -prefer[1])
         at = tuple(self.p(o) for o in others)
-        self.d.label(self.p(q), markup, height, pref, clear, id=id, space=space, others=at)
+        self.d.label(
+            self.p(q), markup, height, pref, clear, id=id, space=space, others=at,
+            within=self.within,
+        )  # fmt: skip
 
 
 def _head(sheet: Sheet, tip: XY, u: tuple[float, float], role: str) -> None:
