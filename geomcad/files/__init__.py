@@ -106,8 +106,8 @@ def _initials(title: str, lang: str) -> str:
     bare = re.sub(r"\([^()]*\)", " ", title)
     letters = _SCRIPT.get(lang, _SCRIPT["en"])
     word = rf"[{letters}]+|\d+"
-    words = re.findall(word, bare) or re.findall(word, title)
-    words = [w for w in words if w.lower() not in _SKIPPED]
+    found: list[str] = re.findall(word, bare) or re.findall(word, title)
+    words = [w for w in found if w.lower() not in _SKIPPED]
     if not any(not w.isdigit() for w in words):
         return ""
     if len(words) == 1:
