@@ -16,6 +16,7 @@ import math
 import re
 from collections.abc import Sequence
 from dataclasses import dataclass, field
+from typing import Any
 
 from geomcad import tol
 from geomcad.geom import Arc, Circle, Line, PointLike, vec
@@ -118,6 +119,10 @@ class Drawing:
     #: they can (:attr:`LabelRequest.keep`), and at least as much further from other texts
     #: (``space``: "1" beside "O" reads "10"): a view sets it while it draws (0: the placer's).
     keep: float = 0.0
+    #: Areas (shapely polygons, sheet mm) that :meth:`finish`'s labels keep out of as out of a
+    #: text: lines a view cleared from round a symbol (a hub's joint and support) that a label
+    #: would otherwise take for free room.
+    occupied: list[Any] = field(default_factory=list)
 
     def viewport(self, scale: Scale, origin: PointLike, at: XY) -> Viewport:
         """A viewport that puts model point ``origin`` at sheet point ``at``."""
@@ -254,6 +259,8 @@ class Drawing:
         shrink_moved(self.sheet, self.moved)
         self.moved.clear()
         index = Index(self.sheet, self.frame)  # the lines drawn; texts join it as they are set
+        for area in self.occupied:
+            index.add_text(area)
         drop_crossed(self.sheet, index, self.optional)
         self.optional.clear()
         place_dims(self.sheet, index, self.dims)

@@ -1166,7 +1166,10 @@ class _Mechanism(View):
                     guides=guides, travel=travel, link_space=LINK_SPACE,
                     link_labels=numbers, letter_space=LETTER_SPACE)  # fmt: skip
         hubs = [v.p(p.at) for p in mech.pairs if p.kind == "R" and mech.frame in p.links]
-        break_round(d.sheet, thin, thin_end, hub_zones(d.sheet.items[symbols_from:], hubs))
+        zones = hub_zones(d.sheet.items[symbols_from:], hubs)
+        break_round(d.sheet, thin, thin_end, zones)
+        # no letter on a hub's joint and support (its cleared ring is a letter's free room)
+        d.occupied += [z.buffer(-HUB_CLEAR_MM) for z in zones]
         for p in lk.points:
             if p.name not in lettered:
                 v.dot(P0.pos[p.name])
@@ -1224,7 +1227,10 @@ def hub_zones(symbols: Sequence[Any], hubs: Sequence[tuple[float, float]]) -> li
             m = math.hypot(mx, my)
             dx, dy = mx / m, my / m
             for (x, y), sgn in ((legs[0], 1.0), (legs[1], -1.0)):
-                ex, ey = x + sgn * ux * (1.5 + HATCH_LEN), y + sgn * uy * (1.5 + HATCH_LEN)
+                ex, ey = (
+                    x + sgn * ux * (1.5 + 0.6 * HATCH_LEN),
+                    y + sgn * uy * (1.5 + 0.6 * HATCH_LEN),
+                )
                 pts += [(ex, ey), (ex + dx * HATCH_LEN, ey + dy * HATCH_LEN)]
         zone = MultiPoint(pts).convex_hull.buffer(HUB_CLEAR_MM)
         zones.append(zone.union(Point(c).buffer(JOINT_R + HUB_CLEAR_MM)))
