@@ -453,8 +453,8 @@ def test_cam_order_of_construction_is_the_recorded_steps(name: str) -> None:
 
 
 def test_every_design_file_is_its_own_document() -> None:
-    """The designation (графа 2) from the file's name (its first words whole, as a code),
-    one per file, in either language."""
+    """The designation (графа 2) from the file's title (its initials) or, on a sheet of the
+    other script, its name (a number), one per file, in either language."""
     from geomcad.files import cam_sheets as sheets_cam
     from geomcad.files import code
     from geomcad.files import gears_sheets as sheets_gears
@@ -468,7 +468,7 @@ def test_every_design_file_is_its_own_document() -> None:
                 )
                 for n in ALL
             }
-            codes = {n: code(n) for n in ALL}
+            codes = {n: code(n, solution(n).problem.inputs["title"]) for n in ALL}
         assert len(set(got.values())) == len(ALL)
         assert all(d.split(".")[1:-1] == codes[n].split(".") for n, d in got.items())
 

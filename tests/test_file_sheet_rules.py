@@ -133,15 +133,16 @@ def test_no_polygon_vector_is_a_dot(path: Path) -> None:
 
 def test_designation_printed_as_typed(tmp_path: Path) -> None:
     """A designation with an underscore keeps it (no subscript) in графа 2 and 26, and a file's
-    default designation is a code of its stem's letters and digits."""
+    default designation is a code: its title's initials (review 13), ``ТММ.КПМ.01`` for a
+    Кривошипно-ползунный механизм, in both графы."""
     src = EXAMPLES / "slider-crank.toml"
     path = tmp_path / "sixbar_press.toml"
     shutil.copy(src, path)
-    assert code(str(path)) == "СИКСБАР.ПРЕСС"
+    assert code(str(path), "Кривошипно-ползунный механизм") == "КПМ"
     sol = geomcad.solve(str(path))
     default = sol.sheets()
-    des = {t.text for _, sh in default for t in sh.texts() if "СИКСБАР.ПРЕСС" in t.text}
-    assert des and all("_" not in d for d in des)
+    des = [t.text for _, sh in default for t in sh.texts() if "ТММ." in t.text]
+    assert des and set(des) == {"ТММ.КПМ.01"} and len(des) == 2 * len(default)
     typed = "ТММ.press_01.000 ^x{y}"
     sheets = sol.sheets(TitleData(designation=typed))
     for _, sheet in sheets:

@@ -7,6 +7,7 @@ from __future__ import annotations
 import itertools
 import math
 import re
+import tomllib
 from pathlib import Path
 
 import pytest
@@ -102,28 +103,25 @@ def test_a_tables_heading_is_wrapped_to_its_width() -> None:
 
 
 @pytest.mark.parametrize(
-    ("stem", "expected"),
+    ("title", "expected"),
     [
-        ("sixbar_press", "СИКСБАР.ПРЕСС"),
-        ("shaper", "ШАПЕР"),
-        ("sixbar-2013-6", "СИКСБАР.2013"),
-        # review 7: a syllable code (TANGROCKSLID, YOKPUMDOUSLI) did not read back to the file;
-        # whole words do, cut at a word's end; review 8: joined by dots, as the parts of an ESKD
-        # designation (a hyphen marks an execution's number there); review 10: one script with
-        # ТММ (ТММ.KULISA.INCLINED.01 mixed two) and графа 26 at 5 mm (it shrank to 3.5): the
-        # words that do not fit whole are kept as their initials
-        ("kulisa_inclined_ram", "КУЛИСА.ИР"),
-        ("tangent_rocking_slider", "ТАНГЕНТ.РС"),
-        ("yoke_pump_double_slider", "ЁКЕ.ПУМП.ДС"),
-        ("stephenson_coupler_rocker", "СТЕФЕНСОН.КР"),
-        ("kulisa-23110713", "КУЛИСА"),
-        ("myCrankRockerWithPoint", "МИ.КРАНК.РВП"),
-        ("supercalifragilisticexpialidocious", "С"),
-        ("кулиса_с_ползуном", "КУЛИСА.С.П"),
+        # review 13: the default code is the file's title's initials, as a mechanism's name is
+        # abbreviated (the stem's English words transliterated, ТММ.ГАНГ.САВ.ФФ.01, read as
+        # nonsense); prepositions and conjunctions skipped, each part of a hyphenated word
+        # kept, a gloss in brackets left out, a one-word title whole
+        ("Шестизвенный кривошипно-ползунный механизм", "ШКПМ"),
+        ("Шестизвенный кривошипно-ползунный механизм (задача 2013-6)", "ШКПМ"),
+        ("Механизм лесопильной рамы с приводом подачи", "МЛРПП"),
+        ("Кривошипно-ползунный механизм с качающейся кулисой", "КПМКК"),
+        ("Механизм V-образного двухцилиндрового компрессора", "МОДК"),
+        ("Станок-качалка (балансирный привод штангового насоса)", "СК"),
+        ("(балансирный привод штангового насоса)", "БПШН"),
+        ("Пресс", "ПРЕСС"),
+        ("Рычажный механизм 2", "РМ2"),
     ],
 )
-def test_a_default_code_reads_as_a_code(stem: str, expected: str) -> None:
-    assert code(f"dir/{stem}.toml") == expected
+def test_a_default_code_is_the_titles_initials(title: str, expected: str) -> None:
+    assert code("dir/gang_saw_frame_feed.toml", title) == expected
 
 
 STEMS = [
@@ -140,17 +138,34 @@ STEMS = [
     "кулиса_с_ползуном",
 ]
 ROOT = Path(__file__).resolve().parent.parent
-LAYOUT_STEMS = [p.stem for p in sorted((ROOT / "tests" / "linkages_layout").glob("*.toml"))]
+LAYOUT_TITLES = {
+    p.stem: tomllib.loads(p.read_text(encoding="utf-8")).get("title", "")
+    for p in sorted((ROOT / "tests" / "linkages_layout").glob("*.toml"))
+}
 
 
-def test_default_codes_stay_apart_where_a_cut_would_not() -> None:
-    codes = [code(s + ".toml") for s in STEMS]
-    assert len(set(codes)) == len(STEMS)
+@pytest.mark.parametrize("stem", [*STEMS, "gang_saw_frame_feed", "W" * 40])
+@pytest.mark.parametrize("title", ["", "Crank-rocker mechanism"])
+def test_without_a_title_in_the_sheets_script_the_code_is_a_number(stem: str, title: str) -> None:
+    """A file with no title in the sheet's script (none, or an English one on a Russian sheet)
+    gets a neutral six-digit code, never its stem transliterated (review 13: ГАНГ.САВ.ФФ), the
+    same for the same file and apart for the files here."""
+    c = code(stem + ".toml", title)
+    assert re.fullmatch(r"\d{6}", c), c
+    assert c == code(f"elsewhere/{stem}.toml", title)
+    assert len({code(s + ".toml", title) for s in STEMS}) == len(STEMS)
 
 
 @pytest.mark.parametrize("lang", ["ru", "en"])
-@pytest.mark.parametrize("stem", STEMS + LAYOUT_STEMS + ["W" * 40, "Ш" * 40])
-def test_a_default_designation_is_one_script_and_fits_графа_26(stem: str, lang: str) -> None:
+@pytest.mark.parametrize(
+    ("stem", "title"),
+    [(s, "") for s in STEMS]
+    + list(LAYOUT_TITLES.items())
+    + [("w", "W" * 40), ("ш", "Ш" * 40), ("ws", "W " * 40), ("шс", "Ш " * 40)],
+)
+def test_a_default_designation_is_one_script_and_fits_графа_26(
+    stem: str, title: str, lang: str
+) -> None:
     """Review 10: a default designation is letters of one script (Cyrillic with ТММ on a
     Russian sheet, Latin with TMM on an English one), digits and dots, and fits графа 26 at
     the 5 mm that typed designations take (ТММ.KULISA.INCLINED.01 shrank to 3.5 mm)."""
@@ -158,37 +173,18 @@ def test_a_default_designation_is_one_script_and_fits_графа_26(stem: str, l
     from geomcad.sheet.lang import language
 
     with language(lang):
-        c = code(stem + ".toml")
+        c = code(stem + ".toml", title)
     letters = "А-ЯЁ" if lang == "ru" else "A-Z"
     assert re.fullmatch(rf"[{letters}0-9]+(\.[{letters}0-9]+)*", c), c
     prefix = "ТММ" if lang == "ru" else "TMM"
     assert box(parse(f"{prefix}.{c}.05"), 5.0)[0] <= G26_WIDTH - 2.0
 
 
-@pytest.mark.parametrize("stem", [s for s in STEMS + LAYOUT_STEMS if s.isascii()])
-def test_a_default_code_is_the_stems_first_words_whole(stem: str) -> None:
-    """The code's parts are the stem's first words whole, in order (in English, where no
-    transliteration hides them), then at most one part of the initials of the words left:
-    the code is cut at a word's end, never inside a word."""
-    from geomcad.sheet.lang import language
-
-    words = [w.upper() for w in re.findall(r"\d+|[^\W\d_]+", stem)]
-    with language("en"):
-        got = code(stem + ".toml").split(".")
-    whole = [g for g, w in zip(got, words, strict=False) if g == w]
-    assert got[: len(whole)] == words[: len(whole)]
-    rest = got[len(whole) :]
-    assert len(rest) <= 1
-    if rest:
-        left = words[len(whole) :]
-        assert rest[0] == "".join(w if w.isdigit() else w[0] for w in left)
-
-
 @pytest.mark.parametrize("letter", ["W", "Ш", "M"])
 def test_the_longest_default_designation_fits_графа_2_and_26(letter: str) -> None:
     """The widest letters still fit both cells (at a GOST height), so a default designation
     never refuses to draw."""
-    designation = f"ТММ.{code(letter * 40)}.05"  # the kinds' template, its widest sheet number
+    designation = f"ТММ.{code('x.toml', letter * 40)}.05"  # the kinds' widest sheet number
     sheet, _ = new_sheet("A3", TitleBlock(title="x", designation=designation, scale="1:1"))
     fill_title_blocks([sheet])
     assert sum(t.text == designation for t in sheet.texts()) == 2

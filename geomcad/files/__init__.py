@@ -74,83 +74,87 @@ def stem(pid: str) -> str:
 #: top-left corner): 5 mm, the height typed designations take there (review 10 of issue 27:
 #: ``ТММ.KULISA.INCLINED.01`` shrank to 3.5 mm where the others were 5).
 CODE_HEIGHT = 5.0
-#: The mark between a code's words: a dot, as between the parts of an ESKD designation (GOST
-#: 2.201: ``АБВГ.301261.001``); not a hyphen, which there marks an execution's number
-#: (``АБВГ.301261.001-01``), nor nothing (``CRANKROCKER`` does not read as two words). A
-#: default designation is then letters, digits and dots only, as the issue asks of a code:
-#: ``ТММ.КРАНК.РОКЕР.01`` (review 8 of issue 27).
+#: The mark between a designation's parts: a dot, as between the parts of an ESKD designation
+#: (GOST 2.201: ``АБВГ.301261.001``); not a hyphen, which there marks an execution's number
+#: (``АБВГ.301261.001-01``). A default designation is then capitals, digits and dots only.
 CODE_JOIN = "."
 #: The fixed parts of a default designation in each language, ``ТММ.<code>.01``, as its width
 #: is measured (the sheet kinds' own templates differ only in the last two digits: 01, 04,
 #: 05, of which 05 is the widest).
 _CODE_FRAME = {"ru": "ТММ{j}{code}{j}05", "en": "TMM{j}{code}{j}05"}
+#: The digits of a numeric code (:func:`code`): six, as the classification part of an ESKD
+#: designation (GOST 2.201: ``АБВГ.301261.001``).
+CODE_DIGITS = 6
+#: The letters of each script a title's initials are taken in (:func:`code`).
+_SCRIPT = {"ru": "А-ЯЁа-яё", "en": "A-Za-z"}
+#: The words a title's initials skip: prepositions, conjunctions and articles, which an
+#: abbreviation of a name leaves out (кривошипно-ползунный механизм с качающейся кулисой →
+#: КПМКК, not КПМСКК).
+_SKIPPED = frozenset((
+    "а", "без", "в", "во", "для", "до", "за", "и", "из", "или", "к", "ко", "на", "над", "о", "об",
+    "обо", "от", "по", "под", "при", "с", "со", "у", "через",
+    "a", "an", "and", "at", "by", "for", "in", "of", "on", "or", "the", "to", "with",
+))  # fmt: skip
 
 
-def _words(name: str) -> list[str]:
-    """A stem's words: its runs of letters and of digits, a camelCase word split at its capitals
-    (``sixBar_press-2`` → six, Bar, press, 2)."""
-    out: list[str] = []
-    for run in re.findall(r"\d+|[^\W\d_]+", name):
-        out += re.findall(r"\d+|[^\W\d_][^\W\d_A-ZА-ЯЁ]*|[A-ZА-ЯЁ]+(?![a-zа-яё])", run) or [run]
-    return out
+def _initials(title: str, lang: str) -> str:
+    """A title's initials in the sheet's script, in capitals: the first letter of each word
+    (each part of a hyphenated word: кривошипно-ползунный → КП), a run of digits whole,
+    without the words of :data:`_SKIPPED`, letters of the other script, and a gloss in
+    brackets (``(задача 2013-6)``) where the rest of the title has words; a title of one word
+    gives that word whole. ``""`` where the title has no word in the script."""
+    bare = re.sub(r"\([^()]*\)", " ", title)
+    letters = _SCRIPT.get(lang, _SCRIPT["en"])
+    word = rf"[{letters}]+|\d+"
+    found: list[str] = re.findall(word, bare) or re.findall(word, title)
+    words = [w for w in found if w.lower() not in _SKIPPED]
+    if not any(not w.isdigit() for w in words):
+        return ""
+    if len(words) == 1:
+        return words[0].upper()
+    return "".join(w if w.isdigit() else w[0] for w in words).upper()
 
 
-def _script(word: str, lang: str) -> str:
-    """A word in the script of the designation's ``ТММ`` (``TMM``), upper case: on a Russian
-    sheet its Latin letters transliterated to Cyrillic, on an English one its Cyrillic letters
-    to Latin (the ``cyrtranslit`` library's Russian table; x, which it leaves, as кс; marks
-    that are not letters dropped), so that a code never mixes scripts (review 10:
-    ``ТММ.KULISA…``)."""
-    other = r"[A-Za-z]" if lang == "ru" else r"[А-Яа-яЁё]"
-    if not re.search(other, word):
-        return word.upper()
-    import cyrtranslit
+def code(pid: str, title: str = "") -> str:
+    """The part of a file's default designation ``ТММ.<code>.01`` that names the file, as an
+    ESKD code writes it (review 13 of issue 27: the stem's English words transliterated,
+    ``ТММ.ГАНГ.САВ.ФФ.01``, read as nonsense to a teacher):
 
-    if lang == "ru":
-        out = str(cyrtranslit.to_cyrillic(re.sub(r"[xX]", "ks", word.lower()), "ru"))
-    else:
-        out = str(cyrtranslit.to_latin(word.lower(), "ru"))
-    return re.sub(r"[^\w]|_", "", out).upper()
+    - where the file's ``title`` has words in the sheet's script (Cyrillic on a Russian
+      sheet, Latin on an English one), the title's initials, as a mechanism's name is
+      abbreviated (Шестизвенный кривошипно-ползунный механизм → ШКПМ; :func:`_initials`),
+      so the code reads back to the title printed beside it in the title block;
+    - else a numeric code of :data:`CODE_DIGITS` digits, as the classification part of an
+      ESKD designation: the CRC-32 of the file's stem, so that a file keeps its number from
+      build to build and two files' numbers differ but by chance.
 
+    The code is cut (initials from the end) until ``ТММ.<code>.05`` fits графа 26
+    (:data:`~geomcad.sheet.frame.G26_WIDTH`) at :data:`CODE_HEIGHT`.
 
-def code(pid: str) -> str:
-    """The file's stem as a part of a designation that reads back to the file, as an ESKD code
-    writes it: upper case, letters and digits only, in one script with the designation's ``ТММ``
-    (Latin letters transliterated to Cyrillic on a Russian sheet, :func:`_script`), and short
-    enough that ``ТММ.<code>.01`` fits графа 26 (:data:`~geomcad.sheet.frame.G26_WIDTH`) at
-    :data:`CODE_HEIGHT`. The code is the stem's first words whole, joined by
-    :data:`CODE_JOIN` (a dot), as many as fit, then the initials of the words left (one part,
-    digits whole) where they fit; words are cut at a word's end, never inside one (review 7:
-    the syllables of ``TANGROCKSLID`` did not read as words); where not even the first word
-    fits, the code is the initials (cut to the width only if they too do not fit). A stem
-    without letters or digits gives ``""``.
-
-    >>> code("sixbar_press.toml"), code("kulisa_inclined_ram"), code("a/kulisa-23110713")
-    ('СИКСБАР.ПРЕСС', 'КУЛИСА.ИР', 'КУЛИСА')
+    >>> code("a/sixbar.toml", "Шестизвенный кривошипно-ползунный механизм (задача 2013-6)")
+    'ШКПМ'
+    >>> code("gang_saw_frame_feed.toml", "Механизм лесопильной рамы с приводом подачи")
+    'МЛРПП'
+    >>> code("gang_saw_frame_feed.toml")
+    '829264'
     """
+    import zlib
+
     from geomcad.sheet.frame import G26_WIDTH
     from geomcad.sheet.lang import current
     from geomcad.sheet.text import box, parse
 
     lang = current()
-    words = [_script(w, lang) for w in _words(stem(pid))]
-    if not words:
-        return ""
     frame = _CODE_FRAME.get(lang, _CODE_FRAME["en"])
 
     def fits(c: str) -> bool:
         text = frame.format(j=CODE_JOIN, code=c)
         return box(parse(text), CODE_HEIGHT)[0] <= G26_WIDTH - 2.0
 
-    k = 0
-    while k < len(words) and fits(CODE_JOIN.join(words[: k + 1])):
-        k += 1
-    out = CODE_JOIN.join(words[:k])
-    rest = "".join(w if w.isdigit() else w[0] for w in words[k:])
-    if rest and fits(CODE_JOIN.join([*words[:k], rest])):
-        return CODE_JOIN.join([*words[:k], rest])
-    if not out:  # not even the initials fit: they are cut
-        while len(rest) > 1 and not fits(rest):
-            rest = rest[:-1]
-        return rest
+    out = _initials(title, lang)
+    if not out:
+        number = zlib.crc32(stem(pid).encode("utf-8")) % 10**CODE_DIGITS
+        return f"{number:0{CODE_DIGITS}d}"
+    while len(out) > 1 and not fits(out):
+        out = out[:-1]
     return out

@@ -91,12 +91,13 @@ def _sized(sol: Solution[CamDesign]) -> tuple[Tree, Inversion, Figure, Sized]:
 
 
 def designation(sol: Solution[Any]) -> str:
-    """The document's designation from its file's name (as a linkage file's), so that every
-    design file is its own document; ``designation`` in [sheet] or ``--designation`` override
-    it."""
+    """The document's designation from its file's title, else its name (as a linkage file's:
+    :func:`geomcad.files.code`), so that every design file is its own document;
+    ``designation`` in [sheet] or ``--designation`` override it."""
     from geomcad.files import code
 
-    return WORDS("designation", stem=code(sol.problem.id) or "CAM")
+    title = (sol.problem.inputs or {}).get("title", "")
+    return WORDS("designation", stem=code(sol.problem.id, str(title)) or "CAM")
 
 
 def scales(sol: Solution[CamDesign]) -> dict[str, float]:

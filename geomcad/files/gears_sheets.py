@@ -121,12 +121,13 @@ def _planetary_sized(sol: Solution[GearsDesign]) -> tuple[Tree, Figure, Sized]:
 
 
 def designation(sol: Solution[Any]) -> str:
-    """The document's designation from its file's name (as a linkage file's), so that every
-    design file is its own document; ``designation`` in [sheet] or ``--designation`` override
-    it."""
+    """The document's designation from its file's title, else its name (as a linkage file's:
+    :func:`geomcad.files.code`), so that every design file is its own document;
+    ``designation`` in [sheet] or ``--designation`` override it."""
     from geomcad.files import code
 
-    return WORDS("designation", stem=code(sol.problem.id) or "GEAR")
+    title = (sol.problem.inputs or {}).get("title", "")
+    return WORDS("designation", stem=code(sol.problem.id, str(title)) or "GEAR")
 
 
 def scales(sol: Solution[GearsDesign]) -> dict[str, float]:

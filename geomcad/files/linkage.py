@@ -126,11 +126,12 @@ def make_problem(file_id: str, data: dict[str, Any]) -> Problem[Solved]:
         from geomcad.files import code
         from geomcad.sheet.linkage_forces import force_sheets  # sheets 2 and 3 (issue 15)
 
-        kinematic = kinematic_sheets(solved, code(file_id))
-        sheets = kinematic + force_sheets(solved, code(file_id), first_no=len(kinematic) + 1)
+        named = code(file_id, str(data.get("title", "")))  # the file's own title, if any
+        kinematic = kinematic_sheets(solved, named)
+        sheets = kinematic + force_sheets(solved, named, first_no=len(kinematic) + 1)
         from geomcad.sheet.synthesis import with_sheet  # the synthesis' own sheet, first
 
-        return with_sheet(solved, code(file_id), sheets)
+        return with_sheet(solved, named, sheets)
 
     def motion(sol: Solution[Solved], frames: int) -> Frames:
         from geomcad.sheet.linkage import motion as linkage_motion

@@ -16,6 +16,7 @@ import math
 import re
 from collections.abc import Sequence
 from dataclasses import dataclass, field
+from typing import Any
 
 from geomcad import tol
 from geomcad.geom import Arc, Circle, Line, PointLike, vec
@@ -118,6 +119,10 @@ class Drawing:
     #: they can (:attr:`LabelRequest.keep`), and at least as much further from other texts
     #: (``space``: "1" beside "O" reads "10"): a view sets it while it draws (0: the placer's).
     keep: float = 0.0
+    #: Areas (shapely polygons, sheet mm) that :meth:`finish`'s labels keep out of as out of a
+    #: text: lines a view cleared from round a symbol (a hub's joint and support) that a label
+    #: would otherwise take for free room.
+    occupied: list[Any] = field(default_factory=list)
 
     def viewport(self, scale: Scale, origin: PointLike, at: XY) -> Viewport:
         """A viewport that puts model point ``origin`` at sheet point ``at``."""
@@ -154,12 +159,16 @@ class Drawing:
         id: str = "",
         others: tuple[XY, ...] = (),
         space: float = 0.0,
+        within: tuple[float, float, float, float] | None = None,
     ) -> None:
         """Ask for a label next to a sheet point (or one of ``others``); :meth:`finish` places
-        it, ``space`` mm further than usual from other texts."""
+        it, ``space`` mm further than usual from other texts, inside the box ``within`` (sheet
+        mm: its view's cell) where it can."""
         space = max(space, self.keep)
         self.pending.append(
-            LabelRequest(anchor, markup, height, role, prefer, clear, id, others, space, self.keep)
+            LabelRequest(
+                anchor, markup, height, role, prefer, clear, id, others, space, self.keep, within
+            )
         )
 
     def table(
@@ -250,6 +259,8 @@ class Drawing:
         shrink_moved(self.sheet, self.moved)
         self.moved.clear()
         index = Index(self.sheet, self.frame)  # the lines drawn; texts join it as they are set
+        for area in self.occupied:
+            index.add_text(area)
         drop_crossed(self.sheet, index, self.optional)
         self.optional.clear()
         place_dims(self.sheet, index, self.dims)
@@ -269,6 +280,9 @@ class Viewport:
         self.scale = scale
         self.ox, self.oy = ox, oy
         self.at = at
+        #: The box (sheet mm) its labels keep inside where they can (:meth:`label`): its view's
+        #: cell, for a view among others in a grid (a plan); ``None``: anywhere on the field.
+        self.within: tuple[float, float, float, float] | None = None
 
     @property
     def sheet(self) -> Sheet:
@@ -548,7 +562,10 @@ class Viewport:
         from other texts."""
         pref = None if prefer is None else (prefer[0], -prefer[1])
         at = tuple(self.p(o) for o in others)
-        self.d.label(self.p(q), markup, height, pref, clear, id=id, space=space, others=at)
+        self.d.label(
+            self.p(q), markup, height, pref, clear, id=id, space=space, others=at,
+            within=self.within,
+        )  # fmt: skip
 
 
 def _head(sheet: Sheet, tip: XY, u: tuple[float, float], role: str) -> None:

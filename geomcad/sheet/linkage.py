@@ -67,11 +67,11 @@ from geomcad.sheet.lang import Words, current, per_language
 from geomcad.sheet.loads import clear_turn
 from geomcad.sheet.model import ArcItem, CircleItem, Polyline, TextItem
 from geomcad.sheet.motion import Frames, turn
-from geomcad.sheet.placer import break_under_labels, clip_to_circle, within_hull
+from geomcad.sheet.placer import break_round, break_under_labels, clip_to_circle, within_hull
 from geomcad.sheet.plans import markup_of
 from geomcad.sheet.scale import Scale, angle_places, fmt_column, fmt_fixed
 from geomcad.sheet.scheme import Body, draw_scheme, is_block
-from geomcad.sheet.symbols import HATCH_LEN, SLIDER_SIZE
+from geomcad.sheet.symbols import HATCH_LEN, JOINT_R, SLIDER_SIZE, STAND_DEPTH, STAND_HALF
 from geomcad.sheet.text import box, parse
 from geomcad.sheet.views import AxisSpec, Curve, Diagram, PlanView, Steps, Table, Text
 
@@ -290,7 +290,9 @@ def _trees(
     plan's position that is not a numbered one is drawn beside it (one μ_V for a file's
     velocity plans). ``mech_k`` (m/mm, 0: none): with the crank's detail, the scale the
     mechanism reached without it, which its search still seeks. ``seek_k`` (m/mm, 0: none):
-    without the detail, a finer scale the mechanism's search seeks (:data:`FINER_STEPS`).
+    a finer scale the mechanism's search seeks (:data:`FINER_STEPS`), with the detail or
+    without it (review 13: the coining press's mechanism kept 1:2,5 beside its crank's detail
+    where 1:2 fitted).
     ``spans``: each output diagram at least as high as draws its curve :data:`DIAGRAM_SPAN_MM`
     high (:meth:`_OutputDiagram.stretch`), else :data:`DIAGRAM_H`."""
     lk = s.linkage
@@ -376,7 +378,7 @@ def _trees(
     if rules[0]:
         cv: View = mech if crank is None else crank
         cv.most_k = round_scale_down(lk.length / CRANK_MM, "l", cv.series).k
-    if crank is None and seek_k > 0.0 and not 0.0 < mech.most_k <= seek_k:
+    if seek_k > 0.0 and not 0.0 < mech.most_k <= seek_k:
         mech.most_k = wants[mech] = seek_k
     if rules[1]:
         for view in vviews:
@@ -602,10 +604,13 @@ def _arrange(s: Solved, spans: bool) -> tuple[Layout, tuple[Arranged, ...], floa
     # the mechanism at the next finer GOST step while the sheets still fit with the size rules
     # and the diagrams' spans kept (review 11: the kulisa drawn 1:4 on an A1 49 % blank, where
     # its mechanism, tables and diagrams fit at 1:2,5): the search, scoring every view's
-    # drawn area, settles on splits that leave the field blank rather than grow one view
+    # drawn area, settles on splits that leave the field blank rather than grow one view;
+    # beside the crank's detail too (review 13: the coining press's mechanism at 1:2,5, its
+    # crank 22 mm, where 1:2 fitted the field: the detail keeps the crank's rule, and the
+    # mechanism takes the finest GOST scale that fits)
     for _ in range(FINER_STEPS):
         k_now = _mech_k((fitted, mech, second))
-        if detail or not math.isfinite(k_now):
+        if not math.isfinite(k_now):
             break
         seek = round_scale_down(k_now * (1.0 - 2.0 * tol.REL_LENGTH), "l", mech.series).k
         tried = attempt_seeking(seek)
@@ -965,9 +970,11 @@ class Yoke:
 
 _YOKES: dict[int, tuple[Linkage, dict[int, Yoke]]] = {}
 #: A yoke's rod keeps this share of its travel inside its guide where it stands farthest from
-#: it (the guide drawn that much longer than the travel): a rod whose end only touched the
-#: guide's near end would read as run out of it.
-GUIDE_HOLD = 0.5
+#: it (the guide drawn that much longer than the travel, and the scheme's hatching runs
+#: :data:`~geomcad.sheet.scheme.GUIDE_HALF` past either end): a rod whose end only touched the
+#: guide's near end would read as run out of it. Review 13: half its travel (0.5) hatched the
+#: clipper's guide 225 mm for a 140 mm stroke, "far beyond it".
+GUIDE_HOLD = 0.1
 
 
 def yoke(lk: Linkage, g: Group) -> Yoke:
@@ -1099,11 +1106,13 @@ class _Mechanism(View):
         # every other position in thin lines, numbered at the crank's joint and the output; the
         # principal one (the force analysis' position, else position 0) in main lines
         P0, k0 = _principal(s)
+        thin = len(d.sheet.items)
         for i, P in enumerate(s.drawn):
             if i != k0:
                 for bs in link_bodies(lk, P, axes=True).values():
                     for b in bs:
                         v.polyline(b.points, "thin", closed=b.closed)
+        thin_end = len(d.sheet.items)
         labels: dict[str, str] = {}
         mech = scheme(lk, P0)  # the pairs where the principal position has them
         bodies = link_bodies(lk, P0, slot_half=v.scale.model(SLOT_HALF_MM))
@@ -1152,9 +1161,15 @@ class _Mechanism(View):
                 yk, gd = yoke(lk, g), g.guide.direction
                 near = yk.guide - gd * math.copysign(yk.half, yk.rod)
                 numbers[str(g.links[1])] = (P0.pos[g.joint] + near) * 0.5
+        symbols_from = len(d.sheet.items)
         draw_scheme(v, mech, bodies=bodies, pair_labels=marked, label_height=3.5,
                     guides=guides, travel=travel, link_space=LINK_SPACE,
                     link_labels=numbers, letter_space=LETTER_SPACE)  # fmt: skip
+        hubs = [v.p(p.at) for p in mech.pairs if p.kind == "R" and mech.frame in p.links]
+        zones = hub_zones(d.sheet.items[symbols_from:], hubs)
+        break_round(d.sheet, thin, thin_end, zones)
+        # no letter on a hub's joint and support (its cleared ring is a letter's free room)
+        d.occupied += [z.buffer(-HUB_CLEAR_MM) for z in zones]
         for p in lk.points:
             if p.name not in lettered:
                 v.dot(P0.pos[p.name])
@@ -1180,6 +1195,46 @@ class _Mechanism(View):
             position_numbers(v, pts, vels, lk.frame[lk.pivot], numbered, clear, taken)
             self.rows[name] = taken[rowed:]
             numbered = pts
+
+
+#: A hub (a joint of the frame where the links of every position meet) is drawn once, clean:
+#: the other positions' thin lines end this far (mm) from its joint's circle and from its
+#: support's stand and hatching (review 13: the slotter's crank hub, twelve positions' lines
+#: through its joint and support, read as a knot).
+HUB_CLEAR_MM = 1.0
+
+
+def hub_zones(symbols: Sequence[Any], hubs: Sequence[tuple[float, float]]) -> list[Any]:
+    """The zones (shapely, paper mm) that the thin lines keep out of round each hub (a joint
+    of the frame, paper mm): its joint's circle and its support (the stand's two legs from the
+    joint among ``symbols``, the scheme's items, their ground line and its hatching) grown by
+    :data:`HUB_CLEAR_MM`."""
+    zones = []
+    leg = math.hypot(STAND_DEPTH, STAND_HALF)
+    for c in hubs:
+        pts = [c]
+        legs = [
+            it.points[1] for it in symbols
+            if isinstance(it, Polyline) and len(it.points) == 2 and it.role == "link"
+            and math.dist(it.points[0], c) <= tol.SHEET_MM
+            and abs(math.dist(it.points[0], it.points[1]) - leg) <= tol.SHEET_MM
+        ]  # fmt: skip
+        if len(legs) == 2:  # the ground line 1.5 mm past the legs, hatched HATCH_LEN under it
+            (ax, ay), (bx, by) = legs
+            n = math.dist(legs[0], legs[1])
+            ux, uy = (ax - bx) / n, (ay - by) / n
+            mx, my = (ax + bx) / 2.0 - c[0], (ay + by) / 2.0 - c[1]
+            m = math.hypot(mx, my)
+            dx, dy = mx / m, my / m
+            for (x, y), sgn in ((legs[0], 1.0), (legs[1], -1.0)):
+                ex, ey = (
+                    x + sgn * ux * (1.5 + 0.6 * HATCH_LEN),
+                    y + sgn * uy * (1.5 + 0.6 * HATCH_LEN),
+                )
+                pts += [(ex, ey), (ex + dx * HATCH_LEN, ey + dy * HATCH_LEN)]
+        zone = MultiPoint(pts).convex_hull.buffer(HUB_CLEAR_MM)
+        zones.append(zone.union(Point(c).buffer(JOINT_R + HUB_CLEAR_MM)))
+    return zones
 
 
 #: On the mechanism in its positions, a point's letter keeps this much (mm) further than usual

@@ -89,6 +89,11 @@ W_KEEP = 6.0
 #: … for at most this many lines (a hatch's strokes are many lines: a letter beside the hatch
 #: pays no more than beside a joint's circle and its link).
 KEEP_LINES = 2
+#: A label of a view that keeps its letters in its own cell (:attr:`LabelRequest.within`: a
+#: plan in a grid of plans) pays this for a box that leaves the cell, and W_LINE more for each
+#: mm it leaves it by (review 13: position 0's "p, o, e, f, s₃, d, g" stood in position 1's
+#: plan, where the free side of its own cell was as near).
+W_CELL = W_TEXT
 
 
 @dataclass
@@ -105,6 +110,7 @@ class LabelRequest:
     others: tuple[XY, ...] = ()  # further anchors to try, each at a small extra cost
     space: float = 0.0  # mm kept from other texts beyond PAD (labels that must read apart)
     keep: float = 0.0  # mm kept from every line's centre line where it can (W_KEEP a line)
+    within: tuple[float, float, float, float] | None = None  # its view's cell (W_CELL outside)
 
 
 @dataclass
@@ -482,6 +488,12 @@ def _candidates(
         wide = shapely.box(*(shapely.bounds(core[kept]) + g).T)
         ki, _ = index.tree.query(wide, predicate="intersects")
         base[kept] += W_KEEP * np.minimum(np.bincount(ki, minlength=len(kept)), KEEP_LINES)
+    cell = np.array([r.within or (np.nan,) * 4 for r in requests], dtype=np.float64)[who]
+    celled = np.flatnonzero(~np.isnan(cell[:, 0]))
+    if len(celled):
+        b, c = shapely.bounds(core[celled]), cell[celled]
+        out = np.maximum(np.maximum(c[:, :2] - b[:, :2], b[:, 2:] - c[:, 2:]), 0.0).max(axis=1)
+        base[celled] += np.where(out > tol.SHEET_MM, W_CELL + W_LINE * out, 0.0)
     # the cheapest few measured exactly: the ink inside each (a line through the letters
     # against one that grazes an edge); the others wait behind them
     best = np.concatenate(
@@ -671,6 +683,33 @@ def break_under_labels(sheet: Sheet) -> None:
                 pts = tuple((float(x), float(y)) for x, y in part.coords)
                 out.append(dataclasses.replace(
                     it, points=pts, dash=fit_open(style(it.role).line, part.length)))  # fmt: skip
+    sheet.items[:] = out
+
+
+def break_round(sheet: Sheet, first: int, last: int, zones: Sequence[shapely.Geometry]) -> None:
+    """Break the lines among ``sheet.items[first:last]`` (polylines, open or closed, not filled)
+    where they run into one of ``zones`` (paper mm): their parts outside the zones are kept,
+    each an open line with its own dash pattern; the other items are left as they are."""
+    if not zones:
+        return
+    zone = shapely.union_all(list(zones))
+    out: list[Item] = list(sheet.items[:first])
+    for it in sheet.items[first:last]:
+        if not isinstance(it, Polyline) or it.fill or len(it.points) < 2:
+            out.append(it)
+            continue
+        pts = (*it.points, it.points[0]) if it.closed else it.points
+        line = LineString(pts)
+        if not line.intersects(zone):
+            out.append(it)
+            continue
+        rest = line.difference(zone)
+        for part in getattr(rest, "geoms", [rest]):
+            if isinstance(part, LineString) and part.length > BREAK_PAD:
+                q = tuple((float(x), float(y)) for x, y in part.coords)
+                dash = fit_open(style(it.role).line, part.length)
+                out.append(dataclasses.replace(it, points=q, closed=False, dash=dash))
+    out += sheet.items[last:]
     sheet.items[:] = out
 
 

@@ -198,7 +198,10 @@ class PlanView(View):
         return [(pts[v.head] - pts[v.tail]).norm for v in self.plan.vectors]
 
     def draw(self, d: Drawing, at: Placed) -> None:
+        """The plan in its cell, its letters kept inside the cell where they can (review 13:
+        position 0's letters stood in position 1's plan on a grid of plans)."""
         assert at.viewport is not None
+        at.viewport.within = at.box
         plan_lines(at.viewport, self.plan, self.min_mm, self.over_mm)
         if self.extra is not None:
             self.extra(at.viewport)
