@@ -604,12 +604,16 @@ def _pinned(
             # rule is mended, none where the views only grow)
             # (or, where the views grow, coarser plans while each still reads: the larger
             # μ_l wins over larger plans down to PLAN_READ_MM, review 11: kulisa at 1:4)
+            # (and where the search left the groups apart from a mechanism that keeps the
+            # crank's rule, one μ_l outranks larger plans the same way: review 13, the gang
+            # saw's groups at 1:15 beside its 1:10, the yarn traverse's at 2:1 beside 2,5:1)
             if got_one is not None and (
                 short
                 or _no_coarser(best[1].layout, got_one[1].layout, not kept)
                 or (
-                    kept
-                    and _no_coarser(best[1].layout, got_one[1].layout, plans=False)
+                    (kept or not one)
+                    and _no_coarser(best[1].layout, got_one[1].layout, plans=False,
+                                    lever=not one)  # fmt: skip
                     and _plans_read(got_one[1].layout)
                 )
             ):
@@ -619,12 +623,17 @@ def _pinned(
         best, kept = got_one, True
         if pg != pin:
             break  # the groups apart: the mechanism grows no further
-    waived = sweep_mm(s, crank_scale(lk).k) > SWEEP_MAX_MM  # (the kinematic μ_l rules then)
-    if not kept and steps and not waived and lk.length / mk < CRANK_MM * CRANK_FLOOR:
+    if not kept and lk.length / mk < CRANK_MM / e:
         # no step holds the crank's rule (review 11: a 12 mm crank wants 2,5:1, the traverse's
-        # mechanism then takes the sheet's height): the finest step between that keeps the
-        # sheet, the crank as long as the field lets it be (1:1, not the search's 1:4)
-        for pin in sorted(g for g in GOST_K if steps[0] * e < g < mk / e):
+        # mechanism then takes the sheet's height; review 13: the coining press's 55 mm crank
+        # wants 1:1, its 0,65 m stroke then twice the field's height): the finest step between
+        # that keeps the sheet, the crank as long as the field lets it be (1:2 with the crank
+        # enlarged in a detail, not the search's 1:10 with a 5,5 mm crank). The same where the
+        # sweep waives the crank's rule (the kinematic sheet's μ_l only a floor then), and
+        # where the crank came out short of CRANK_MM at all (the sine mechanism's 18 mm crank
+        # at 1:2,5 on a sheet that holds it at 1:2)
+        first = steps[0] if steps else min(GOST_K)
+        for pin in sorted(g for g in GOST_K if first * e < g < mk / e):
             if w / pin > room[0] or h / pin > room[1]:
                 continue
             for pg in (pin, *[g for g in _coarser(pin) if pin / g >= GROUPS_SHARE / e]):
@@ -665,20 +674,19 @@ def _pin_try(
     return best
 
 
-#: Where no GOST step holds the crank's rule, :func:`_pinned` pins the mechanism finer only
-#: where the search drew its crank under this share of CRANK_MM (a 3 mm crank at 1:4); above,
-#: the crank's detail reads it (the sine file's 18 mm crank and its 1:1 detail).
-CRANK_FLOOR = 0.5
 #: The finer GOST steps of the mechanism's μ_l :func:`_pinned` tries where the search kept
 #: the crank's rule (the views grown into the field).
 GROW_L_STEPS = 2
 
 
-def _no_coarser(was: Layout, now: Layout, step: bool = False, plans: bool = True) -> bool:
+def _no_coarser(
+    was: Layout, now: Layout, step: bool = False, plans: bool = True, lever: bool = False
+) -> bool:
     """Whether ``now`` draws every view but the drawings of links at a scale no coarser than
     ``was`` does (the same views by kind and title); ``step``: a force plan at most one step of
     its series coarser; ``plans``: the force plans counted (else left out: :func:`_plans_read`
-    judges them)."""
+    judges them); ``lever``: Zhukovsky's lever at most one step of its series coarser (the
+    price of one μ_l for the drawings of links, :func:`_pinned`)."""
 
     def scales(lay: Layout) -> dict[tuple[str, str], float]:
         links = (_Loaded, _FreeBody) if plans else (_Loaded, _FreeBody, Polygon)
@@ -689,6 +697,13 @@ def _no_coarser(was: Layout, now: Layout, step: bool = False, plans: bool = True
     if step:
         a = {key: round_scale(kk * (1.0 + 4.0 * tol.REL_LENGTH), "F", "nice").k
              if key[0] == "Polygon" else kk for key, kk in a.items()}  # fmt: skip
+    if lever:
+        levers = {(type(pl.view).__name__, pl.view.title): pl for pl in was
+                  if isinstance(pl.view, _Lever) and pl.scale is not None}  # fmt: skip
+        for key, pl in levers.items():
+            assert pl.scale is not None and isinstance(pl.view, _Lever)
+            a[key] = round_scale(pl.scale.k * (1.0 + 4.0 * tol.REL_LENGTH), pl.scale.q,
+                                 pl.view.series).k  # fmt: skip
     return a.keys() == b.keys() and all(b[key] <= kk * (1.0 + tol.REL_LENGTH)
                                         for key, kk in a.items())  # fmt: skip
 
@@ -1115,6 +1130,15 @@ def _sheet2(
                 b.group, b.least_k, b.most_k = GROUPS_L, pin_groups, pin_groups
                 if b.gf.group is None:
                     b.group, b.least_k, b.most_k = CRANK_L, pin, pin
+        if lk.length / pin < CRANK_MM * (1.0 - tol.REL_LENGTH):
+            # the field holds no μ_l that draws the crank CRANK_MM long on the mechanism
+            # (review 13: the coining press's 55 mm crank on a 0,65 m stroke at 1:2): the
+            # crank cut out is its enlarged view, at the μ_l that draws it CRANK_MM long,
+            # stated in its caption (never a crank read only at 27 mm, or at 5 mm)
+            own = crank_scale(lk).k
+            for b in bodies:
+                if b.gf.group is None:
+                    b.group, b.least_k, b.most_k = CRANK_L, own, own
         mech.readable, mech.readable_mm = lk.length, lk.length / pin
     mech.weight = 2.0 + sum(b.group == L_GROUP for b in bodies)
     if not shared:
