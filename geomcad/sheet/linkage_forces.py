@@ -612,8 +612,7 @@ def _pinned(
                 or _no_coarser(best[1].layout, got_one[1].layout, not kept)
                 or (
                     (kept or not one)
-                    and _no_coarser(best[1].layout, got_one[1].layout, plans=False,
-                                    lever=not one)  # fmt: skip
+                    and _no_coarser(best[1].layout, got_one[1].layout, plans=False, lever=not one)
                     and _plans_read(got_one[1].layout)
                 )
             ):
@@ -640,7 +639,49 @@ def _pinned(
                 got_one = _pin_try(s, P, f, k, kin, largest, field, pin, pg)
                 if got_one is not None:
                     return got_one
-    return best
+    return _enlarged(s, P, f, k, kin, largest, field, best)
+
+
+def _enlarged(
+    s: Solved, P: Position, f: Forces, k: int | None, kin: float | None, fmt: str,
+    field: Field, found: tuple[Tree, formats.Sized],
+) -> tuple[Tree, formats.Sized]:  # fmt: skip
+    """Where the sheet ``found`` draws the crank shorter than CRANK_MM on the mechanism and on
+    the crank cut out both (no finer μ_l holds the mechanism: review 13, the knot's 50 mm crank
+    at 1:2 beside a 1:1 that overflows A1): the same μ_l pinned (:func:`_pin_try`), the crank
+    cut out enlarged at the μ_l that draws it CRANK_MM long, stated in its caption; ``found``
+    where that does not fit."""
+    lay = found[1].layout
+    lk = s.linkage
+    main = [pl.scale.k for pl in lay if isinstance(pl.view, _Loaded) and pl.scale is not None]
+    if not main or lk.length / main[0] >= CRANK_MM * (1.0 - tol.REL_LENGTH):
+        return found
+    if not _crank_short(lay):
+        return found
+    groups = [pl.scale.k for pl in lay if isinstance(pl.view, _FreeBody)
+              and pl.view.gf.group is not None and pl.scale is not None]  # fmt: skip
+    got = _pin_try(s, P, f, k, kin, fmt, field, main[0], max([main[0], *groups]))
+    if got is not None:
+        return got
+    # the pinned arrangements hold no sheet at that μ_l: the search's own arrangements with
+    # the crank cut out at its own μ_l (:func:`_sheet2`'s ``crank_own``), where they keep the
+    # mechanism's μ_l and every rule
+    shared = not any(isinstance(pl.view, _FreeBody) and pl.view.group == GROUPS_L for pl in lay)
+    under = isinstance(found[0], Choice) and len(found[0].items) > ARRANGEMENTS
+    own, _kept = _final2(s, P, f, k, found[1], shared, fmt, kin, True, under)
+    now = own[1].layout
+    again = [pl.scale.k for pl in now if isinstance(pl.view, _Loaded) and pl.scale is not None]
+    if (
+        now.fits
+        and again
+        and again[0] <= main[0] * (1.0 + tol.REL_LENGTH)
+        and not _crank_short(now)
+        and _groups_kept(now)
+        and _whole(now)
+        and not _spilt(now)
+    ):
+        return own
+    return found
 
 
 def _pin_try(
