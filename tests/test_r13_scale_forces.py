@@ -118,14 +118,18 @@ def test_forces_sheet_scales(path: Path) -> None:
 def _crank_on_the_main_view(path: Path) -> None:
     """The crank CRANK_MM long on the main view; where it is shorter, the main view no coarser
     than the field allows (the next finer GOST step holds no sheet, even with the groups one
-    step apart) and the crank enlarged at least CRANK_MM long beside it: the crank cut out at
-    its own μ_l or a detail of the crank (the knot's 50 mm crank at 1:2, a detail at 1:1)."""
+    step apart; where the crank is under CRANK_FLOOR of the rule) and
+    the crank enlarged at least CRANK_MM long beside it: the crank cut out at its own μ_l or a
+    detail of the crank (the knot's 50 mm crank at 1:2, a detail at 1:1)."""
     s, mk, _groups, crank = _scales(path)
     length = s.linkage.length  # type: ignore[attr-defined]
     if length / mk >= CRANK_MM / E:
         return
     finer = [g for g in GOST_K if g < mk / E]
-    if finer:
+    # the main view as fine as the field allows where the crank is under CRANK_FLOOR of the
+    # rule (the sweep waiving it or not); above, at least an enlarged crank view (the sine
+    # file's 18 mm crank at 1:2,5 beside its detail at 1:1: at 1:2 the detail finds no room)
+    if finer and length / mk < CRANK_MM * lf.CRANK_FLOOR / E:
         pin = max(finer)
         for pg in (pin, *[g for g in GOST_K if g > pin * E and pin / g >= lf.GROUPS_SHARE / E]):
             assert not _one_scale_holds(s, pin, pg), (

@@ -622,15 +622,15 @@ def _pinned(
         best, kept = got_one, True
         if pg != pin:
             break  # the groups apart: the mechanism grows no further
-    if not kept and lk.length / mk < CRANK_MM / e:
+    if not kept and lk.length / mk < CRANK_MM * CRANK_FLOOR / e:
         # no step holds the crank's rule (review 11: a 12 mm crank wants 2,5:1, the traverse's
         # mechanism then takes the sheet's height; review 13: the coining press's 55 mm crank
         # wants 1:1, its 0,65 m stroke then twice the field's height): the finest step between
         # that keeps the sheet, the crank as long as the field lets it be (1:2 with the crank
-        # enlarged in a detail, not the search's 1:10 with a 5,5 mm crank). The same where the
-        # sweep waives the crank's rule (the kinematic sheet's μ_l only a floor then), and
-        # where the crank came out short of CRANK_MM at all (the sine mechanism's 18 mm crank
-        # at 1:2,5 on a sheet that holds it at 1:2)
+        # enlarged in a detail, not the search's 1:10 with a 5,5 mm crank), also where the
+        # sweep waives the crank's rule (the kinematic sheet's μ_l only a floor then: the
+        # crusher at 1:4, not 1:5); only under CRANK_FLOOR of the rule (above, the crank's
+        # detail reads it: at 1:2 the sine file's leaves its detail no room)
         first = steps[0] if steps else min(GOST_K)
         for pin in sorted(g for g in GOST_K if first * e < g < mk / e):
             if w / pin > room[0] or h / pin > room[1]:
@@ -715,6 +715,11 @@ def _pin_try(
     return best
 
 
+#: Where no GOST step holds the crank's rule, :func:`_pinned` pins the mechanism finer only
+#: where the search drew its crank under this share of CRANK_MM (a 3 mm crank at 1:4), the
+#: sweep waiving the rule or not (review 13: the coining press's 5,5 mm crank at 1:10);
+#: above, the crank's detail reads it (the sine file's 18 mm crank and its 1:1 detail).
+CRANK_FLOOR = 0.5
 #: The finer GOST steps of the mechanism's μ_l :func:`_pinned` tries where the search kept
 #: the crank's rule (the views grown into the field).
 GROW_L_STEPS = 2
