@@ -30,9 +30,9 @@ def test_yarn_main_view_crank() -> None:
 
 
 def test_yarn_groups_at_the_main_views_scale() -> None:
-    """The yarn traverse's groups and crank cut out at its main view's μ_l (2,5:1); round 13:
-    with the yoke's guide hatched over its stroke and a margin (GUIDE_HOLD 0.1, was 0.5) they
-    fit at 2,5:1 again (an xfail while the longer guide pushed them to 2:1)."""
+    """The yarn traverse's groups and crank cut out at its main view's μ_l (2,5:1; review 13:
+    the pinned search takes one μ_l where the groups were apart at the cost of its lever one
+    step coarser, its plans still read)."""
     s = geomcad.solve(str(YARN)).data
     _tree, z = lf.force_layout(s)
     mech = [pl.scale.k for pl in z.layout if isinstance(pl.view, lf._Loaded) and pl.scale]

@@ -604,12 +604,15 @@ def _pinned(
             # rule is mended, none where the views only grow)
             # (or, where the views grow, coarser plans while each still reads: the larger
             # μ_l wins over larger plans down to PLAN_READ_MM, review 11: kulisa at 1:4)
+            # (and where the search left the groups apart from a mechanism that keeps the
+            # crank's rule, one μ_l outranks larger plans the same way: review 13, the gang
+            # saw's groups at 1:15 beside its 1:10, the yarn traverse's at 2:1 beside 2,5:1)
             if got_one is not None and (
                 short
                 or _no_coarser(best[1].layout, got_one[1].layout, not kept)
                 or (
-                    kept
-                    and _no_coarser(best[1].layout, got_one[1].layout, plans=False)
+                    (kept or not one)
+                    and _no_coarser(best[1].layout, got_one[1].layout, plans=False, lever=not one)
                     and _plans_read(got_one[1].layout)
                 )
             ):
@@ -619,19 +622,66 @@ def _pinned(
         best, kept = got_one, True
         if pg != pin:
             break  # the groups apart: the mechanism grows no further
-    waived = sweep_mm(s, crank_scale(lk).k) > SWEEP_MAX_MM  # (the kinematic μ_l rules then)
-    if not kept and steps and not waived and lk.length / mk < CRANK_MM * CRANK_FLOOR:
+    if not kept and lk.length / mk < CRANK_MM * CRANK_FLOOR / e:
         # no step holds the crank's rule (review 11: a 12 mm crank wants 2,5:1, the traverse's
-        # mechanism then takes the sheet's height): the finest step between that keeps the
-        # sheet, the crank as long as the field lets it be (1:1, not the search's 1:4)
-        for pin in sorted(g for g in GOST_K if steps[0] * e < g < mk / e):
+        # mechanism then takes the sheet's height; review 13: the coining press's 55 mm crank
+        # wants 1:1, its 0,65 m stroke then twice the field's height): the finest step between
+        # that keeps the sheet, the crank as long as the field lets it be (1:2 with the crank
+        # enlarged in a detail, not the search's 1:10 with a 5,5 mm crank), also where the
+        # sweep waives the crank's rule (the kinematic sheet's μ_l only a floor then: the
+        # crusher at 1:4, not 1:5); only under CRANK_FLOOR of the rule (above, the crank's
+        # detail reads it: at 1:2 the sine file's leaves its detail no room)
+        first = steps[0] if steps else min(GOST_K)
+        for pin in sorted(g for g in GOST_K if first * e < g < mk / e):
             if w / pin > room[0] or h / pin > room[1]:
                 continue
             for pg in (pin, *[g for g in _coarser(pin) if pin / g >= GROUPS_SHARE / e]):
                 got_one = _pin_try(s, P, f, k, kin, largest, field, pin, pg)
                 if got_one is not None:
                     return got_one
-    return best
+    return _enlarged(s, P, f, k, kin, largest, field, best)
+
+
+def _enlarged(
+    s: Solved, P: Position, f: Forces, k: int | None, kin: float | None, fmt: str,
+    field: Field, found: tuple[Tree, formats.Sized],
+) -> tuple[Tree, formats.Sized]:  # fmt: skip
+    """Where the sheet ``found`` draws the crank shorter than CRANK_MM on the mechanism and on
+    the crank cut out both (no finer μ_l holds the mechanism: review 13, the knot's 50 mm crank
+    at 1:2 beside a 1:1 that overflows A1): the same μ_l pinned (:func:`_pin_try`), the crank
+    cut out enlarged at the μ_l that draws it CRANK_MM long, stated in its caption; ``found``
+    where that does not fit."""
+    lay = found[1].layout
+    lk = s.linkage
+    main = [pl.scale.k for pl in lay if isinstance(pl.view, _Loaded) and pl.scale is not None]
+    if not main or lk.length / main[0] >= CRANK_MM * (1.0 - tol.REL_LENGTH):
+        return found
+    if not _crank_short(lay):
+        return found
+    groups = [pl.scale.k for pl in lay if isinstance(pl.view, _FreeBody)
+              and pl.view.gf.group is not None and pl.scale is not None]  # fmt: skip
+    got = _pin_try(s, P, f, k, kin, fmt, field, main[0], max([main[0], *groups]))
+    if got is not None:
+        return got
+    # the pinned arrangements hold no sheet at that μ_l: the search's own arrangements with
+    # the crank cut out at its own μ_l (:func:`_sheet2`'s ``crank_own``), where they keep the
+    # mechanism's μ_l and every rule
+    shared = not any(isinstance(pl.view, _FreeBody) and pl.view.group == GROUPS_L for pl in lay)
+    under = isinstance(found[0], Choice) and len(found[0].items) > ARRANGEMENTS
+    own, _kept = _final2(s, P, f, k, found[1], shared, fmt, kin, True, under)
+    now = own[1].layout
+    again = [pl.scale.k for pl in now if isinstance(pl.view, _Loaded) and pl.scale is not None]
+    if (
+        now.fits
+        and again
+        and again[0] <= main[0] * (1.0 + tol.REL_LENGTH)
+        and not _crank_short(now)
+        and _groups_kept(now)
+        and _whole(now)
+        and not _spilt(now)
+    ):
+        return own
+    return found
 
 
 def _pin_try(
@@ -666,19 +716,23 @@ def _pin_try(
 
 
 #: Where no GOST step holds the crank's rule, :func:`_pinned` pins the mechanism finer only
-#: where the search drew its crank under this share of CRANK_MM (a 3 mm crank at 1:4); above,
-#: the crank's detail reads it (the sine file's 18 mm crank and its 1:1 detail).
+#: where the search drew its crank under this share of CRANK_MM (a 3 mm crank at 1:4), the
+#: sweep waiving the rule or not (review 13: the coining press's 5,5 mm crank at 1:10);
+#: above, the crank's detail reads it (the sine file's 18 mm crank and its 1:1 detail).
 CRANK_FLOOR = 0.5
 #: The finer GOST steps of the mechanism's μ_l :func:`_pinned` tries where the search kept
 #: the crank's rule (the views grown into the field).
 GROW_L_STEPS = 2
 
 
-def _no_coarser(was: Layout, now: Layout, step: bool = False, plans: bool = True) -> bool:
+def _no_coarser(
+    was: Layout, now: Layout, step: bool = False, plans: bool = True, lever: bool = False
+) -> bool:
     """Whether ``now`` draws every view but the drawings of links at a scale no coarser than
     ``was`` does (the same views by kind and title); ``step``: a force plan at most one step of
     its series coarser; ``plans``: the force plans counted (else left out: :func:`_plans_read`
-    judges them)."""
+    judges them); ``lever``: Zhukovsky's lever at most one step of its series coarser (the
+    price of one μ_l for the drawings of links, :func:`_pinned`)."""
 
     def scales(lay: Layout) -> dict[tuple[str, str], float]:
         links = (_Loaded, _FreeBody) if plans else (_Loaded, _FreeBody, Polygon)
@@ -689,6 +743,13 @@ def _no_coarser(was: Layout, now: Layout, step: bool = False, plans: bool = True
     if step:
         a = {key: round_scale(kk * (1.0 + 4.0 * tol.REL_LENGTH), "F", "nice").k
              if key[0] == "Polygon" else kk for key, kk in a.items()}  # fmt: skip
+    if lever:
+        levers = {(type(pl.view).__name__, pl.view.title): pl for pl in was
+                  if isinstance(pl.view, _Lever) and pl.scale is not None}  # fmt: skip
+        for key, pl in levers.items():
+            assert pl.scale is not None and isinstance(pl.view, _Lever)
+            a[key] = round_scale(pl.scale.k * (1.0 + 4.0 * tol.REL_LENGTH), pl.scale.q,
+                                 pl.view.series).k  # fmt: skip
     return a.keys() == b.keys() and all(b[key] <= kk * (1.0 + tol.REL_LENGTH)
                                         for key, kk in a.items())  # fmt: skip
 
@@ -1115,6 +1176,15 @@ def _sheet2(
                 b.group, b.least_k, b.most_k = GROUPS_L, pin_groups, pin_groups
                 if b.gf.group is None:
                     b.group, b.least_k, b.most_k = CRANK_L, pin, pin
+        if lk.length / pin < CRANK_MM * (1.0 - tol.REL_LENGTH):
+            # the field holds no μ_l that draws the crank CRANK_MM long on the mechanism
+            # (review 13: the coining press's 55 mm crank on a 0,65 m stroke at 1:2): the
+            # crank cut out is its enlarged view, at the μ_l that draws it CRANK_MM long,
+            # stated in its caption (never a crank read only at 27 mm, or at 5 mm)
+            own = crank_scale(lk).k
+            for b in bodies:
+                if b.gf.group is None:
+                    b.group, b.least_k, b.most_k = CRANK_L, own, own
         mech.readable, mech.readable_mm = lk.length, lk.length / pin
     mech.weight = 2.0 + sum(b.group == L_GROUP for b in bodies)
     if not shared:
