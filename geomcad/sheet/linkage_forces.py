@@ -436,6 +436,7 @@ def force_layout(s: Solved) -> tuple[Tree, formats.Sized]:
             found = own
     found = _rowed(s, P, forces, k, found, kin)
     found = _pinned(s, P, forces, k, found, kin)
+    _fitted_plans(found[1].layout)
     for pl in found[1].layout:
         if isinstance(pl.view, _Lever):
             pl.view.grow(pl, found[1].layout)
@@ -481,7 +482,7 @@ def grow_plan(pl: Placed) -> None:
 
 
 #: The finer steps of its series :func:`grow_plan` tries for a plan.
-GROW_STEPS = 3
+GROW_STEPS = 8
 
 #: A sliver (:func:`views.is_sliver`, reckoned by the layout with its longest vector at most
 #: SLIVER_MM) is drawn with it at most this long (mm) where its box holds it so, details and
@@ -508,6 +509,158 @@ def _grow_sliver(pl: Placed) -> None:
         ext = view.extent() or (0.0, 0.0, 0.0, 0.0)
     if (ext[2] - ext[0]) / k > w + tol.SHEET_MM or (ext[3] - ext[1]) / k > h + tol.SHEET_MM:
         view.longest_mm = was
+
+
+#: The growth :func:`_fitted_plans` seeks for the plans in their new cells, at most (a plan
+#: drawn this many times its placed size), and the steps of its search.
+FIT_GROW_MOST = 6.0
+FIT_GROW_STEPS = 24
+#: The slack (mm) a fitted cell keeps round the plan's reckoned need (the details are planned
+#: again in it, :func:`grow_plan`).
+FIT_SLACK_MM = 2.0
+
+
+def _plan_need(pl: Placed) -> tuple[float, float, bool]:
+    """The size (mm) of a force plan as placed, its details planned in its box at its μ_F,
+    and whether it keeps that size at any μ_F (a sliver, drawn at its cap)."""
+    view = pl.view
+    assert isinstance(view, Polygon) and pl.scale is not None
+    w, h = pl.size
+    fixed = view.longest_mm > 0.0
+    was = view.longest_mm
+    if fixed:
+        view.longest_mm = max(was, SLIVER_GROW_MM)
+    k = view.drawn_k(pl.scale.k)
+    if view.detail:
+        _d, _t, ext = view._with_details(k, iter("W" * 99), (w * k, h * k))
+    else:
+        ext = view.extent() or (0.0, 0.0, 0.0, 0.0)
+    view.longest_mm = was
+    return (ext[2] - ext[0]) / k, (ext[3] - ext[1]) / k, fixed
+
+
+def _partitions(n: int) -> Iterator[list[int]]:
+    """The ways to cut a run of ``n`` items into consecutive runs: the runs' lengths."""
+    for cuts in itertools.product((False, True), repeat=max(n - 1, 0)):
+        runs, run = [], 1
+        for c in cuts:
+            if c:
+                runs.append(run)
+                run = 1
+            else:
+                run += 1
+        runs.append(run)
+        yield runs
+
+
+def _shared(sizes: Sequence[float], spare: float, grows: Sequence[bool]) -> list[float]:
+    """``sizes`` with the ``spare`` room shared among them in proportion, only among those
+    that ``grows`` (a plan that grows into it; a sliver keeps its size at its cap, and its
+    cell would be left blank) where any does."""
+    if not any(grows):
+        grows = [True] * len(sizes)
+    total = sum(sz for sz, g in zip(sizes, grows, strict=True) if g)
+    return [sz + spare * sz / total if g else sz for sz, g in zip(sizes, grows, strict=True)]
+
+
+def _fitted_plans(lay: Layout) -> None:
+    """The force plans' cells fitted to the plans' own shapes (review 13, item 1: the plans
+    shared a Grid of equal cells, a 116 × 6 mm sliver's cell as large as a square plan's, the
+    square plans 54 mm long in 170 × 83 mm cells, the sheets 59–77 % blank). Once the layout
+    has placed them, the region their Grid took (where no other view's box reaches into it)
+    is cut again, the plans in their order, into rows (or columns) of cells each as large as
+    its plan needs: the plans drawn the same number of times larger (a sliver, capped at its
+    length, at its size), the largest that fits, every cell at least as wide as its caption;
+    the spare room shared among the cells in proportion. The plans are then grown into them
+    (:func:`grow_plan`). Nothing is drawn coarser: the cut is taken only where it holds every
+    plan at its placed size."""
+    plans = [pl for pl in lay if isinstance(pl.view, Polygon) and pl.scale is not None]
+    if len(plans) < 2 or len(plans) > 8:
+        return
+    X0 = min(pl.box[0] for pl in plans)
+    Y0 = min(pl.box[1] for pl in plans)
+    X1 = max(pl.box[2] for pl in plans)
+    Y1 = max(pl.box[3] for pl in plans)
+    e = tol.SHEET_MM
+    mine = {id(pl) for pl in plans}
+    for pl in lay:
+        if id(pl) in mine:
+            continue
+        b = pl.box
+        if b[0] < X1 - e and b[2] > X0 + e and b[1] < Y1 - e and b[3] > Y0 + e:
+            return  # the plans' boxes are not one region of their own
+    needs = [_plan_need(pl) for pl in plans]
+    # a cell's frame round its plan: the margins, the caption's room over it
+    pads = [
+        (
+            2.0 * pl.view.margin + FIT_SLACK_MM,
+            pl.view.title_room() + 2.0 * pl.view.margin + FIT_SLACK_MM,
+        )
+        for pl in plans
+    ]
+    least_w = [title_width(pl.view) + FIT_SLACK_MM for pl in plans]
+    W, H = X1 - X0, Y1 - Y0
+
+    def cell(i: int, g: float) -> tuple[float, float]:
+        nw, nh, fixed = needs[i]
+        f = 1.0 if fixed else g
+        return max(nw * f + pads[i][0], least_w[i]), nh * f + pads[i][1]
+
+    def holds(runs: list[int], g: float, across: bool) -> bool:
+        i = 0
+        used = 0.0
+        for r in runs:
+            cells = [cell(j, g) for j in range(i, i + r)]
+            i += r
+            if across:  # rows: the widths side by side, the row as high as its highest
+                if sum(c[0] for c in cells) + GAP * (r - 1) > W + e:
+                    return False
+                used += max(c[1] for c in cells)
+            else:  # columns
+                if sum(c[1] for c in cells) + GAP * (r - 1) > H + e:
+                    return False
+                used += max(c[0] for c in cells)
+        return used + GAP * (len(runs) - 1) <= (H if across else W) + e
+
+    best: tuple[float, list[int], bool] | None = None
+    for runs in _partitions(len(plans)):
+        for across in (True, False):
+            if not holds(runs, 1.0, across):
+                continue
+            lo, hi = 1.0, FIT_GROW_MOST
+            if holds(runs, hi, across):
+                lo = hi
+            for _ in range(FIT_GROW_STEPS):
+                mid = 0.5 * (lo + hi)
+                lo, hi = (mid, hi) if holds(runs, mid, across) else (lo, mid)
+            if best is None or lo > best[0] * (1.0 + tol.REL_LENGTH):
+                best = (lo, runs, across)
+    if best is None:
+        return
+    g, runs, across = best
+    # the cells at that growth, the spare room shared in proportion to their sizes
+    i = 0
+    lines = []
+    for r in runs:
+        lines.append([(j, cell(j, g)) for j in range(i, i + r)])
+        i += r
+    deep = [max(c[1] if across else c[0] for _j, c in ln) for ln in lines]
+    spare = (H if across else W) - sum(deep) - GAP * (len(lines) - 1)
+    deep = _shared(deep, spare, [any(not needs[j][2] for j, _c in ln) for ln in lines])
+    at = Y0 if across else X0
+    for ln, d in zip(lines, deep, strict=True):
+        long = [c[0] if across else c[1] for _j, c in ln]
+        room = (W if across else H) - sum(long) - GAP * (len(ln) - 1)
+        long = _shared(long, room, [not needs[j][2] for j, _c in ln])
+        pos = X0 if across else Y0
+        for (j, _c), s in zip(ln, long, strict=True):
+            box = (pos, at, pos + s, at + d) if across else (at, pos, at + d, pos + s)
+            pl, v = plans[j], plans[j].view
+            top = box[1] + v.title_room()
+            pl.box = box
+            pl.inner = (box[0] + v.margin, top + v.margin, box[2] - v.margin, box[3] - v.margin)
+            pos += s + GAP
+        at += d + GAP
 
 
 def _rowed(
