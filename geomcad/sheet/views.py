@@ -1480,12 +1480,16 @@ def draw_detail(
     # plan: the plan names them by the circle): one drawn in another detail (a run cut in
     # two) is lettered with that detail's letter
     elsewhere = {n: d.letter for d in others if d is not dt for n in d.run}
-    for pv, a, b in _stubs(poly, dt, sc.k):
-        sub.seg(a, b, "construction")
-        if pv.name in elsewhere:
-            sub.label(b, elsewhere[pv.name], height, clear=0.5)
     run = [poly[n] for n in dt.run if poly[n].magnitude > _zero(poly)]
     shift = lanes(sc.k, run)  # those along one another side by side, tied where they meet
+    none = Vec(0.0, 0.0)
+    for pv, a, b in _stubs(poly, dt, sc.k):
+        # from the end of the run's first (or last) vector, where lanes moved it
+        first = (a - poly[dt.run[0]].tail).norm <= (a - poly[dt.run[-1]].head).norm
+        s = shift.get(run[0 if first else -1].name, none) if run else none
+        sub.seg(a + s, b + s, "construction")
+        if pv.name in elsewhere:
+            sub.label(b + s, elsewhere[pv.name], height, clear=0.5)
     # the runs drawn again at a finer μ_F (the details beside it taken from its spot of the
     # plan, lettered on the plan's circle): lines here, never a circle on a detail
     subs = [d for d in others if d.host is dt]
