@@ -145,7 +145,7 @@ from geomcad.sheet.loads import (
     moment,
     view_scales,
 )
-from geomcad.sheet.model import CircleItem, TextItem
+from geomcad.sheet.model import XY, CircleItem, TextItem
 from geomcad.sheet.plans import markup_of
 from geomcad.sheet.scale import (
     ANGLE_PLACES,
@@ -2736,8 +2736,10 @@ class _Lever(_ByScale, View):
                     break
             else:
                 groups.append((im, [markup_of(name)]))
+        asked = []
         for q, names in groups:
             v.dot(q)
+            asked.append(len(d.pending))
             v.label(q, ", ".join(names), 2.5, clear=0.8)
         ins, here, lengths, sides = self._sides(kv.k, images)
         segs = []
@@ -2753,6 +2755,45 @@ class _Lever(_ByScale, View):
             if F.norm > 0.0 and not any(_seg_dist((p, p), e) < 1.0 for e in on):
                 line_of_action(v.sheet, p, *segs[i])
         draw_insets(d, at, self, ins, start, self.omitted)
+        # a point the insets' circles are drawn round (the pole p, o, c of the shaper) is
+        # lettered outside them, next to their outline, not pushed off past the gaps the
+        # placer tries beyond a joint's clearance (review 13: 'p, o, c' 6,8 mm off its point
+        # under the twin circles of Ш and Ю, 5 mm round it); where the circles reach farther
+        # than a label may stand off its point (a cluster's circle round several points), it
+        # keeps its place by its point inside them
+        rings = [it for it in d.sheet.items[start:] if isinstance(it, CircleItem) and not it.fill]
+        for j in asked:
+            rq = d.pending[j]
+            out = ring_clearance(rq.anchor, rings)
+            if out <= RING_LABEL_MM:
+                rq.clear = max(rq.clear, out)
+
+
+#: A lever's point is lettered outside the insets' circles round it where their outline is at
+#: most this far (mm) from it: the label a gap (1 mm) past the outline stays within the 6 mm a
+#: label stands off its point at most (the layout checker's ANCHOR_MAX).
+RING_LABEL_MM = 5.0
+
+
+def ring_clearance(q: XY, rings: Sequence[CircleItem], steps: int = 72) -> float:
+    """How far (mm) from the point ``q`` (paper) a label must keep to stand outside the
+    circles ``rings`` round it: the least distance, over the directions from ``q``, at which
+    a ray leaves every circle that holds ``q`` (0 where none does)."""
+    holding = [c for c in rings if math.dist(c.c, q) < c.r]
+    if not holding:
+        return 0.0
+    least = math.inf
+    for i in range(steps):
+        a = 2.0 * math.pi * i / steps
+        ux, uy = math.cos(a), math.sin(a)
+        out = 0.0
+        for c in holding:
+            # the ray q + s·u leaves circle c at the larger root of |q + s·u − c| = r
+            dx, dy = q[0] - c.c[0], q[1] - c.c[1]
+            b = dx * ux + dy * uy
+            out = max(out, -b + math.sqrt(b * b - (dx * dx + dy * dy - c.r * c.r)))
+        least = min(least, out)
+    return least
 
 
 def pair_name(moment: str) -> str:

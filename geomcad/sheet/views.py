@@ -324,6 +324,11 @@ def draw_polygon(
             v.seg(r.head, r.head + s, "construction")
             r = PlanVector(r.name, r.tail + s, r.head + s)
             corner = corner + s
+        else:
+            # its ends go with its components' where lanes moved them (review 13: rocker_
+            # centres' R_12 ended between R^τ_12 and G_2 set apart at their vertex)
+            ends = _component_shifts(r, drawn, shift, zero)
+            r = PlanVector(r.name, r.tail + ends[0], r.head + ends[1])
         if v.mm(r.magnitude) < SHORT_MM:  # its components in a detail: its line, named
             v.seg(r.tail, r.head, "construction")
         else:
@@ -355,6 +360,20 @@ def draw_polygon(
                                          circle=False, taken=taken))  # fmt: skip
     v.dot(poly.pole)
     return short
+
+
+def _component_shifts(
+    r: PlanVector, drawn: Sequence[PlanVector], shift: Mapping[str, Vec], zero: float
+) -> tuple[Vec, Vec]:
+    """The shifts of a resultant's tail and head: those of its component that starts at its
+    tail and of the one that ends at its head (none where lanes left them)."""
+    none = Vec(0.0, 0.0)
+    parts = [pv for pv in drawn if _resultant_of(pv.name) == r.name]
+    tail = next((shift.get(pv.name, none) for pv in parts if (pv.tail - r.tail).norm <= zero),
+                none)  # fmt: skip
+    head = next((shift.get(pv.name, none) for pv in parts if (pv.head - r.head).norm <= zero),
+                none)  # fmt: skip
+    return tail, head
 
 
 def _pair_lanes(pair: tuple[PlanVector, PlanVector], k: float) -> dict[str, Vec]:
@@ -501,7 +520,7 @@ def _along(a: PlanVector, b: PlanVector, k: float, near_mm: float) -> tuple[floa
     if la <= 0.0 or lb <= 0.0:
         return none
     u, w = (a.head - a.tail).unit(), (b.head - b.tail).unit()
-    if abs(u.cross(w)) > math.sin(LANE_ANGLE):
+    if abs(u.cross(w)) > math.sin(LANE_ANGLE) and not one_line(a, b, k):
         return none
     # b's ends along a's line (t) and across it (d); d is linear in t along b
     t0, t1 = u.dot(b.tail - a.tail), u.dot(b.head - a.tail)
@@ -537,6 +556,46 @@ def _along(a: PlanVector, b: PlanVector, k: float, near_mm: float) -> tuple[floa
     return (hi - lo) / k, a.tail + u * at
 
 
+def one_line(a: PlanVector, b: PlanVector, k: float) -> bool:
+    """Whether two sides of a plan, drawn at μ_F ``k``, read as one line whatever the angle
+    between them: the shorter stays within :data:`SLIVER_LANE_MM` of the longer's line over
+    the whole of their common run (narrower than a sliver drawn in lanes), and they run
+    within a lane (:data:`OFFSET_MM`) of one another longer than two arrowheads
+    (:data:`SHORT_MM`: an arrowhead at their sharp vertex merges into the other line). The
+    angle at which two sides part so is the one at which their lengths make them readable:
+    about 9° for a 46 mm side (review 13: the gang saw's link 4, R₁₄ and R₅₄ at 8,8° read as
+    one line), :data:`LANE_ANGLE` for a side twice :data:`SLIVER_MM`, never over
+    asin(OFFSET_MM / SHORT_MM), 21°, for a short one."""
+    if a.magnitude < b.magnitude:
+        a, b = b, a
+    la = a.magnitude
+    if la <= 0.0 or b.magnitude <= 0.0:
+        return False
+    u = (a.head - a.tail).unit()
+    t0, t1 = u.dot(b.tail - a.tail), u.dot(b.head - a.tail)
+    d0, d1 = u.cross(b.tail - a.tail), u.cross(b.head - a.tail)
+    if t1 < t0:
+        t0, t1, d0, d1 = t1, t0, d1, d0
+    lo, hi = max(t0, 0.0), min(t1, la)
+    if hi <= lo or t1 == t0:
+        return False
+
+    def d(t: float) -> float:
+        return d0 + (d1 - d0) * (t - t0) / (t1 - t0)
+
+    if max(abs(d(lo)), abs(d(hi))) >= SLIVER_LANE_MM * k:
+        return False
+    # the part of the common run where they are within a lane of one another
+    lane = OFFSET_MM * k
+    da, db = d(lo), d(hi)
+    if da == db:
+        near = hi - lo if abs(da) < lane else 0.0
+    else:
+        ta, tb = (lo + (x - da) * (hi - lo) / (db - da) for x in (-lane, lane))
+        near = max(0.0, min(max(ta, tb), hi) - max(min(ta, tb), lo))
+    return near > SHORT_MM * k
+
+
 def lanes(k: float, vectors: Sequence[PlanVector]) -> dict[str, Vec]:
     """The sideways shifts (model units) that draw side by side, :data:`OFFSET_MM` apart on the
     paper at μ_F ``k``, the vectors of a plan that would run along one another (over
@@ -567,11 +626,16 @@ def _lanes(k: float, vectors: Sequence[PlanVector], near_mm: float) -> dict[str,
     n = len(vs)
     # (those nearer than a lane's width count: moved into lanes, none lands on another)
     over: dict[tuple[int, int], Vec] = {}
+    # the pairs at an angle over LANE_ANGLE that read as one line (:func:`one_line`)
+    wide: set[tuple[int, int]] = set()
     for i in range(n):
         for j in range(i + 1, n):
             run, spot = _along(vs[i], vs[j], k, near_mm)
             if run > LANE_OVERLAP_MM:
                 over[i, j] = spot
+                u, w = (vs[i].head - vs[i].tail).unit(), (vs[j].head - vs[j].tail).unit()
+                if abs(u.cross(w)) > math.sin(LANE_ANGLE):
+                    wide.add((i, j))
     if not over:
         return {}
     root = list(range(n))
@@ -603,20 +667,33 @@ def _lanes(k: float, vectors: Sequence[PlanVector], near_mm: float) -> dict[str,
             w = pv.head - pv.tail
             t = min(max(w.dot(c - pv.tail) / w.dot(w), 0.0), 1.0)
             at[i] = across.dot(pv.tail + w * t - big.tail)
+        apart = any(p in wide for p in over if p[0] in members)
         lane: dict[int, int] = {}
         for i in sorted(members, key=lambda i: (at[i], i)):
             taken = {lane[j] for j in lane if (min(i, j), max(i, j)) in over}
             lane[i] = next(x for x in range(n) if x not in taken)
         # a lane moves as one (vectors end to end in it stay joined), the lanes in the order
-        # they lie across, OFFSET_MM apart, centred where they were
+        # they lie across, OFFSET_MM apart, centred where they were. Sides that meet at a
+        # wider angle (:func:`one_line`) meet at their vertices, wherever those are along the
+        # set (a thin triangle's two sharp ones at either end of its long side): each lane is
+        # moved by its place across, the lanes a lane and a line's clearance (half
+        # SLIVER_LANE_MM) apart at every vertex (review 13: the gang saw's link 4, R_54's
+        # arrowhead on R_14 at 2 mm; sixbar_coupler_slider's link 2, R_12 and R_32 on R_42)
+        step = SLIVER_LANE_MM / 2.0 if apart else OFFSET_MM
         count = max(lane.values()) + 1
+        if apart:
+            # the side each lies on read where they have parted, at their middles (two that
+            # cut one another near their vertex, v_compressor's R_21 and R_01 through the
+            # pole's detail, are set on the sides they part to, uncrossed)
+            for i in members:
+                at[i] = across.dot((vs[i].tail + vs[i].head) * 0.5 - big.tail)
         where = [sum(at[i] for i in members if lane[i] == x) / sum(lane[i] == x for i in members)
                  for x in range(count)]  # fmt: skip
         rank = {x: r for r, x in enumerate(sorted(range(count), key=lambda x: where[x]))}
         mid = sum(where) / count
         for i in members:
-            want = mid + (rank[lane[i]] - (count - 1) / 2.0) * OFFSET_MM * k
-            move = want - where[lane[i]]
+            place = (rank[lane[i]] - (count - 1) / 2.0) * step * k
+            move = place if apart else mid + place - where[lane[i]]
             if move != 0.0:
                 out[vs[i].name] = across * move
     return out
@@ -1173,11 +1250,21 @@ REGROUP_LONGS = 5
 def crossings(poly: ForcePolygon, least: float = 0.0) -> int:
     """How many times the polygon's sides (its vectors not zero) cross one another: pairs of
     sides, both at least ``least`` long, that are not neighbours in the chain and cut each
-    other inside both, farther than ``least`` from their ends."""
+    other inside both. A crossing within ``least`` of an end where the chain goes on with a
+    side shorter than ``least`` is in that run's detail circle (short sides join there) and
+    is not counted; at an end between two long sides only a touch (:data:`TOUCH_SHARE` of
+    ``least``) is not a crossing (review 13: stephenson's group (2, 3), R₄₂ over R^n₁₂ 5 mm
+    short of its head, where Ф₂ turned back across it, read as crossed sides)."""
     zero = _zero(poly)
-    sides = [(pv.tail, pv.head, pv.magnitude >= least)
-             for pv in poly.vectors if pv.magnitude > zero]  # fmt: skip
+    vs = [pv for pv in poly.vectors if pv.magnitude > zero]
+    sides = [(pv.tail, pv.head, pv.magnitude >= least) for pv in vs]
     n = len(sides)
+    touch = TOUCH_SHARE * least
+
+    def room(i: int, j: int) -> float:
+        """How far from its end towards side j (i ± 1) a crossing of side i is not one."""
+        return least if not sides[j % n][2] else touch
+
     out = 0
     for i in range(n):
         a, b, long_i = sides[i]
@@ -1190,13 +1277,21 @@ def crossings(poly: ForcePolygon, least: float = 0.0) -> int:
                 continue  # parallel: lanes draw them apart
             t = (c - a).cross(d - c) / den
             u = (c - a).cross(b - a) / den
-            # sides that only touch at an end do not cross, nor those that cross within
-            # ``least`` of an end (in a detail's circle, where short sides join them)
-            e = max(tol.DERIVED, least / (b - a).norm)
-            f = max(tol.DERIVED, least / (d - c).norm)
-            if e < t < 1.0 - e and f < u < 1.0 - f:
+            la, lc = (b - a).norm, (d - c).norm
+            e0 = max(tol.DERIVED, room(i, i - 1) / la)
+            e1 = max(tol.DERIVED, room(i, i + 1) / la)
+            f0 = max(tol.DERIVED, room(j, j - 1) / lc)
+            f1 = max(tol.DERIVED, room(j, j + 1) / lc)
+            if e0 < t < 1.0 - e1 and f0 < u < 1.0 - f1:
                 out += 1
     return out
+
+
+#: Two long sides that cut one another within this (mm on the paper) of the end where they
+#: meet a long side only touch there; :func:`crossings` takes it as this share of its
+#: ``least`` (two arrowheads, :data:`SHORT_MM`).
+TOUCH_MM = 1.0
+TOUCH_SHARE = TOUCH_MM / SHORT_MM
 
 
 def place_details(
@@ -1388,12 +1483,16 @@ def draw_detail(
     # plan: the plan names them by the circle): one drawn in another detail (a run cut in
     # two) is lettered with that detail's letter
     elsewhere = {n: d.letter for d in others if d is not dt for n in d.run}
-    for pv, a, b in _stubs(poly, dt, sc.k):
-        sub.seg(a, b, "construction")
-        if pv.name in elsewhere:
-            sub.label(b, elsewhere[pv.name], height, clear=0.5)
     run = [poly[n] for n in dt.run if poly[n].magnitude > _zero(poly)]
     shift = lanes(sc.k, run)  # those along one another side by side, tied where they meet
+    none = Vec(0.0, 0.0)
+    for pv, a, b in _stubs(poly, dt, sc.k):
+        # from the end of the run's first (or last) vector, where lanes moved it
+        first = (a - poly[dt.run[0]].tail).norm <= (a - poly[dt.run[-1]].head).norm
+        s = shift.get(run[0 if first else -1].name, none) if run else none
+        sub.seg(a + s, b + s, "construction")
+        if pv.name in elsewhere:
+            sub.label(b + s, elsewhere[pv.name], height, clear=0.5)
     # the runs drawn again at a finer μ_F (the details beside it taken from its spot of the
     # plan, lettered on the plan's circle): lines here, never a circle on a detail
     subs = [d for d in others if d.host is dt]
