@@ -33,7 +33,8 @@ FILES = sorted(p for p in ROOT.glob("tests/linkages_*/*.toml") if p.parent.name 
 FILES += [EXAMPLES / f"{n}.toml" for n in ("shaper", "sixbar-2013-6", "crusher", "slider-crank")]
 
 #: The least ratio of a force plan's longest vector (as drawn, at its stated μ_F) to its
-#: cell's smaller side, for a plan that grows (not a sliver at its cap).
+#: room's smaller side (its cell less margins and caption), for a plan that grows (not a
+#: sliver at its cap).
 FILL = 0.45
 
 
@@ -47,12 +48,14 @@ def _layout(path: Path) -> Layout | None:
 
 
 def _plans(lay: Layout) -> list[tuple[Polygon, float, tuple[float, float, float, float]]]:
+    """Each force plan, its longest vector in mm as drawn, and its room: the cell less its
+    margins and its caption (:attr:`Placed.inner`), what the plan has to grow into."""
     out = []
     for pl in lay:
         v = pl.view
         if isinstance(v, Polygon) and pl.scale is not None:
             big = max(pv.magnitude for poly, _ in v.layers for pv in poly.vectors)
-            out.append((v, big / v.drawn_k(pl.scale.k), pl.box))
+            out.append((v, big / v.drawn_k(pl.scale.k), pl.inner))
     return out
 
 
