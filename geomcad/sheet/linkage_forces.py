@@ -821,7 +821,10 @@ def _enlarged(
     # mechanism's μ_l and every rule
     shared = not any(isinstance(pl.view, _FreeBody) and pl.view.group == GROUPS_L for pl in lay)
     under = isinstance(found[0], Choice) and len(found[0].items) > ARRANGEMENTS
-    own, _kept = _final2(s, P, f, k, found[1], shared, fmt, kin, True, under)
+    try:
+        own, _kept = _final2(s, P, f, k, found[1], shared, fmt, kin, True, under)
+    except ParameterError:
+        return found  # the crank cut out at its own μ_l leaves a view no room
     now = own[1].layout
     again = [pl.scale.k for pl in now if isinstance(pl.view, _Loaded) and pl.scale is not None]
     if (
@@ -853,8 +856,11 @@ def _pin_try(
             first = formats.Sized(fmt, True, arrange(alt, field))
         except ParameterError:
             continue  # a view finds no room at all
-        cand, _rules = _final2(s, P, f, k, first, True, fmt, kin, pin=pin,
-                               pin_groups=pin_groups, only=only)  # fmt: skip
+        try:
+            cand, _rules = _final2(s, P, f, k, first, True, fmt, kin, pin=pin,
+                                   pin_groups=pin_groups, only=only)  # fmt: skip
+        except ParameterError:
+            continue  # reckoned again at its plans' μ_F, a view finds no room: not this one
         got = cand[1].layout
         if (
             got.fits
