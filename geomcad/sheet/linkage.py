@@ -290,9 +290,7 @@ def _trees(
     plan's position that is not a numbered one is drawn beside it (one μ_V for a file's
     velocity plans). ``mech_k`` (m/mm, 0: none): with the crank's detail, the scale the
     mechanism reached without it, which its search still seeks. ``seek_k`` (m/mm, 0: none):
-    a finer scale the mechanism's search seeks (:data:`FINER_STEPS`), with the detail or
-    without it (review 13: the coining press's mechanism kept 1:2,5 beside its crank's detail
-    where 1:2 fitted).
+    without the detail, a finer scale the mechanism's search seeks (:data:`FINER_STEPS`).
     ``spans``: each output diagram at least as high as draws its curve :data:`DIAGRAM_SPAN_MM`
     high (:meth:`_OutputDiagram.stretch`), else :data:`DIAGRAM_H`."""
     lk = s.linkage
@@ -378,7 +376,7 @@ def _trees(
     if rules[0]:
         cv: View = mech if crank is None else crank
         cv.most_k = round_scale_down(lk.length / CRANK_MM, "l", cv.series).k
-    if seek_k > 0.0 and not 0.0 < mech.most_k <= seek_k:
+    if crank is None and seek_k > 0.0 and not 0.0 < mech.most_k <= seek_k:
         mech.most_k = wants[mech] = seek_k
     if rules[1]:
         for view in vviews:
@@ -604,13 +602,10 @@ def _arrange(s: Solved, spans: bool) -> tuple[Layout, tuple[Arranged, ...], floa
     # the mechanism at the next finer GOST step while the sheets still fit with the size rules
     # and the diagrams' spans kept (review 11: the kulisa drawn 1:4 on an A1 49 % blank, where
     # its mechanism, tables and diagrams fit at 1:2,5): the search, scoring every view's
-    # drawn area, settles on splits that leave the field blank rather than grow one view;
-    # beside the crank's detail too (review 13: the coining press's mechanism at 1:2,5, its
-    # crank 22 mm, where 1:2 fitted the field: the detail keeps the crank's rule, and the
-    # mechanism takes the finest GOST scale that fits)
+    # drawn area, settles on splits that leave the field blank rather than grow one view
     for _ in range(FINER_STEPS):
         k_now = _mech_k((fitted, mech, second))
-        if not math.isfinite(k_now):
+        if detail or not math.isfinite(k_now):
             break
         seek = round_scale_down(k_now * (1.0 - 2.0 * tol.REL_LENGTH), "l", mech.series).k
         tried = attempt_seeking(seek)
@@ -973,8 +968,11 @@ _YOKES: dict[int, tuple[Linkage, dict[int, Yoke]]] = {}
 #: it (the guide drawn that much longer than the travel, and the scheme's hatching runs
 #: :data:`~geomcad.sheet.scheme.GUIDE_HALF` past either end): a rod whose end only touched the
 #: guide's near end would read as run out of it. Review 13: half its travel (0.5) hatched the
-#: clipper's guide 225 mm for a 140 mm stroke, "far beyond it".
-GUIDE_HOLD = 0.1
+#: clipper's guide 225 mm for a 140 mm stroke, "far beyond it"; 0.1 drew it 137 mm, but then
+#: the sine crosshead rocker's forces sheet went to 1:2 with its crank 22.5 mm and no detail
+#: (the forces layout does not yet draw the crank's detail wherever it goes finer): 0.5 kept
+#: until it does (round 13).
+GUIDE_HOLD = 0.5
 
 
 def yoke(lk: Linkage, g: Group) -> Yoke:
