@@ -207,8 +207,10 @@ def _text26(sheet: Sheet, x0: float, y0: float, designation: str) -> None:
     if not designation:
         return
     cx, cy = (x0 + x1) / 2.0, (y0 + y1) / 2.0
-    for hh in (*(hh for hh in reversed(HEIGHTS) if hh <= 5.0), SMALLEST_HEIGHT):
-        runs = parse(designation)
+    tries = [(hh, designation) for hh in reversed(HEIGHTS) if hh <= 5.0]
+    tries += [(HEIGHTS[0], condensed(designation)), (SMALLEST_HEIGHT, designation)]
+    for hh, text in tries:
+        runs = parse(text)
         w, _, _ = box(runs, hh)
         if w <= G26_WIDTH - 2.0:
             # turned 180° about its baseline's left end: the text runs leftwards, above it
@@ -257,6 +259,18 @@ def clearance(height: float) -> float:
     return 0.3 * height + 0.25
 
 
+#: The space a line condensed to fit its cell spaces its words with (U+202F, the narrow
+#: no-break space: half a word space in the pinned font).
+NARROW_SPACE = "\u202f"
+
+
+def condensed(markup: str) -> str:
+    """``markup`` with its word spaces narrowed (:data:`NARROW_SPACE`): a line written at
+    GOST's least height (2.5 mm) that is a little too wide for its cell is condensed in its
+    spacing, never set smaller (GOST 2.304)."""
+    return markup.replace(" ", NARROW_SPACE)
+
+
 def fit_text(
     sheet: Sheet,
     markup: str,
@@ -269,7 +283,8 @@ def fit_text(
     clear: bool = False,
 ) -> list[TextItem]:
     """Text centred in a cell (x0, y0 top, x1, y1 bottom) at the largest GOST height up to
-    ``height`` at which it fits, broken into as few lines as it needs at that height (at most
+    ``height`` at which it fits (at 2.5 mm, its word spaces narrowed before it is set smaller:
+    :func:`condensed`), broken into as few lines as it needs at that height (at most
     ``max_lines``, when given; lines of about equal width, broken at spaces or after a
     compound's hyphen, ``поперечно-`` / ``строгального``); else a :class:`ParameterError`
     naming ``param``. ``clear``: the text keeps :func:`clearance` from the cell's lines (the
@@ -288,13 +303,22 @@ def fit_text(
         # not "Силовой анализ. Шестизвенный" / "механизм с ползуном")
         tries = [(n, True) for n in range(1, min(len(tokens), max_lines or len(tokens)) + 1)]
         tries += [(n, False) for n, _ in tries]
-        for n_lines, whole in tries:
+        # at the least GOST height, the word spaces narrowed before the height is (review 14:
+        # "Шарипова Л. Р." at 1.8 mm in Разраб. where it fits the column at 2.5 mm condensed)
+        spacings = (False, True) if hh == HEIGHTS[0] else (False,)
+        for (n_lines, whole), narrow in itertools.product(tries, spacings):
             total = hh + (n_lines - 1) * lead
             if total > room_h:
                 continue
             lines = _by_sentences(markup, n_lines, hh, room_w, whole)
+            if narrow:
+                lines = [condensed(ln) for ln in lines]
             if lines and max(box(parse(ln), hh)[0] for ln in lines) <= room_w:
-                cx = (x0 + x1) / 2.0 if anchor == "centre" else x0 + max(c, 1.0)
+                # a left-set text 1 mm in from the cell's line, or less where its width
+                # leaves less (never nearer than its room's side: it ends inside the cell)
+                wide = max(box(parse(ln), hh)[0] for ln in lines)
+                indent = max(c, min(1.0, x1 - x0 - c - (0.0 if clear else 0.4) - wide))
+                cx = (x0 + x1) / 2.0 if anchor == "centre" else x0 + max(indent, 0.4)
                 top = (y0 + y1) / 2.0 - total / 2.0 + hh
                 return [
                     text_at(sheet, ln, (cx, top + i * lead), hh, role, anchor)
