@@ -26,6 +26,7 @@ def test_a_name_a_little_too_wide_is_condensed_not_shrunk(name: str) -> None:
     (item,) = fit_text(sheet, name, COLUMN, 2.5, anchor="left")
     assert item.height == 2.5
     assert item.text.replace(NARROW_SPACE, " ") == name
+    assert item.at[0] >= COLUMN[0] + 0.4 - 1e-9
     assert item.at[0] + item.width <= COLUMN[2] - 0.4 + 1e-9
 
 

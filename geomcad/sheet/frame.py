@@ -314,11 +314,11 @@ def fit_text(
             if narrow:
                 lines = [condensed(ln) for ln in lines]
             if lines and max(box(parse(ln), hh)[0] for ln in lines) <= room_w:
-                # a left-set text 1 mm in from the cell's line, or less where its width
-                # leaves less (never nearer than its room's side: it ends inside the cell)
+                # a left-set text 1 mm in from the cell's line (its clearance where more), or
+                # centred where its width leaves less room either side
                 wide = max(box(parse(ln), hh)[0] for ln in lines)
-                indent = max(c, min(1.0, x1 - x0 - c - (0.0 if clear else 0.4) - wide))
-                cx = (x0 + x1) / 2.0 if anchor == "centre" else x0 + max(indent, 0.4)
+                indent = min(max(c, 1.0), (x1 - x0 - wide) / 2.0)
+                cx = (x0 + x1) / 2.0 if anchor == "centre" else x0 + indent
                 top = (y0 + y1) / 2.0 - total / 2.0 + hh
                 return [
                     text_at(sheet, ln, (cx, top + i * lead), hh, role, anchor)
