@@ -51,3 +51,22 @@ def test_every_графа_of_a_filled_block_is_at_least_2_5_mm() -> None:
     assert any("Шарипова" in t.text for t in texts)
     small = [(t.text, t.height) for t in texts if t.height < 2.5]
     assert not small
+
+
+@pytest.mark.parametrize("name", ["Ахмедова-Лунд С. И.", "Никифоров С. Ю."])
+def test_a_name_too_wide_even_condensed_takes_a_width_factor(name: str) -> None:
+    """Wider than the column with narrow spaces too: set at a width factor (GOST 2.304's
+    narrow type), 2.5 mm high, inside the column; every backend condenses its glyphs."""
+    from geomcad.render.dxf import to_dxf_document
+    from geomcad.render.svg import to_svg
+
+    sheet, _ = new_sheet("A3", TitleBlock(title="t", designation="x"))
+    (item,) = fit_text(sheet, name, COLUMN, 2.5, anchor="left")
+    assert item.height == 2.5
+    assert 0.7 <= item.stretch < 1.0
+    assert item.width == pytest.approx(box(parse(item.text), 2.5)[0] * item.stretch)
+    assert COLUMN[0] + 0.4 <= item.at[0] and item.at[0] + item.width <= COLUMN[2] - 0.4 + 1e-9
+    assert f"matrix({item.stretch:.3f}".rstrip("0") in to_svg(sheet)
+    widths = [e.dxf.width for e in to_dxf_document(sheet).modelspace().query("TEXT")
+              if "." in e.dxf.text and e.dxf.width != 1.0]  # fmt: skip
+    assert widths and widths[0] == pytest.approx(item.stretch)
