@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import math
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 import pytest
@@ -24,6 +25,12 @@ LINKAGES = [
     and ("[[group]]" in p.read_text(encoding="utf-8") or "[synthesis]" in p.read_text("utf-8"))
 ]
 DYNAMICS = [p for p in LINKAGES if "[dynamics]" in p.read_text(encoding="utf-8")]
+
+
+def _views(tree: Any) -> list[Any]:
+    """The views of a sheet's tree, the diagrams of a stack of them (the dynamics sheet's
+    M_пр, A, ΔT, I_пр: one view of the layout) each on its own."""
+    return [x for v in tree.views() for x in getattr(v, "diagrams", [v])]
 
 
 def _graphical(d: Diagram) -> Curve:
@@ -46,7 +53,7 @@ def test_graphical_integration_closes_over_the_cycle(path: Path) -> None:
     fw = analyse(s).flywheel
     assert fw is not None
     tree = _sheet3(s, fw, 3.5)
-    diagrams = {v.y.name: v for v in tree.views() if isinstance(v, Diagram)}
+    diagrams = {v.y.name: v for v in _views(tree) if isinstance(v, Diagram)}
     A, T = diagrams["A"], diagrams["T"]
     A_c = float(fw.M_drive * 2.0 * math.pi)
     gx, gy = _xy(_graphical(A))
@@ -71,7 +78,8 @@ def test_every_curve_of_a_diagram_of_several_is_named(path: Path) -> None:
     s = solve(geomcad.solve(str(path)).data.linkage)
     fw = analyse(s).flywheel
     assert fw is not None
-    for d in _sheet3(s, fw, 3.5).views():
+    named = 0
+    for d in _views(_sheet3(s, fw, 3.5)):
         if isinstance(d, Diagram):
             curves = [c for c in d.curves if not c.points]
             if len(curves) > 1:
@@ -79,6 +87,8 @@ def test_every_curve_of_a_diagram_of_several_is_named(path: Path) -> None:
                 assert len({c.label for c in curves}) == len(curves)
                 points = [p for _c, p, _up in d._label_points(d.axes(400.0, 150.0)[1])]
                 assert len(set(points)) == len(points), (d.y.name, points)
+                named += 1
+    assert named >= 2  # M_пр beside M_дв, A_с beside A_д
 
 
 @pytest.mark.parametrize("path", LINKAGES, ids=lambda p: p.stem)

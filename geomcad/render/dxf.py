@@ -350,6 +350,9 @@ class _Writer:
         cos, sin = math.cos(a), math.sin(a)
         for run, x, y, size in placed_runs(t):
             attrs: dict[str, object] = {"layer": t.role, "style": TEXT_STYLE}
+            if t.stretch != 1.0:  # condensed about its start: TEXT's width factor
+                x = t.at[0] + (x - t.at[0]) * t.stretch
+                attrs["width"] = t.stretch
             if t.angle:
                 dx, dy = x - t.at[0], y - t.at[1]
                 x, y = t.at[0] + dx * cos + dy * sin, t.at[1] - dx * sin + dy * cos

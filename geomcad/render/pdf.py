@@ -75,10 +75,12 @@ def _shape(ctx: Any, item: Polyline | CircleItem | ArcItem, st: Style, width: fl
 
 def _text(ctx: Any, t: TextItem, st: Style) -> None:
     ctx.set_source_rgb(*_rgb(_fill_colour(st)))
-    if t.angle:
+    turned = bool(t.angle) or t.stretch != 1.0
+    if turned:
         ctx.save()
         ctx.translate(t.at[0], t.at[1])
         ctx.rotate(math.radians(-t.angle))
+        ctx.scale(t.stretch, 1.0)  # condensed about its start, as the SVG's matrix
         ctx.translate(-t.at[0], -t.at[1])
     for run, x, y, size in placed_runs(t):
         if run.text.isspace():
@@ -86,7 +88,7 @@ def _text(ctx: Any, t: TextItem, st: Style) -> None:
         ctx.set_font_size(size)
         ctx.move_to(x, y)
         ctx.show_text(run.text)
-    if t.angle:
+    if turned:
         ctx.restore()
 
 

@@ -152,9 +152,14 @@ def _text(dwg: svgwrite.Drawing, t: TextItem, st: Style, ids: _Ids) -> svgwrite.
     }
     if t.id:
         attrs["id"] = ids.take(t.id)
+    turns = []
     if t.angle:
         # SVG turns clockwise on the paper (y down); the model's angle is counter-clockwise.
-        attrs["transform"] = f"rotate({num(-t.angle)} {num(t.at[0])} {num(t.at[1])})"
+        turns.append(f"rotate({num(-t.angle)} {num(t.at[0])} {num(t.at[1])})")
+    if t.stretch != 1.0:  # condensed about its start, the glyphs with their positions
+        turns.append(f"matrix({num(t.stretch)} 0 0 1 {num(t.at[0] * (1.0 - t.stretch))} 0)")
+    if turns:
+        attrs["transform"] = " ".join(turns)
     # x and y set as attributes (one number each), not through svgwrite's x= and y= lists,
     # which flatten and join every value: the same attribute text, a third of the time
     el = dwg.text("", **attrs)

@@ -207,8 +207,10 @@ def _text26(sheet: Sheet, x0: float, y0: float, designation: str) -> None:
     if not designation:
         return
     cx, cy = (x0 + x1) / 2.0, (y0 + y1) / 2.0
-    for hh in (*(hh for hh in reversed(HEIGHTS) if hh <= 5.0), SMALLEST_HEIGHT):
-        runs = parse(designation)
+    tries = [(hh, designation) for hh in reversed(HEIGHTS) if hh <= 5.0]
+    tries += [(HEIGHTS[0], condensed(designation)), (SMALLEST_HEIGHT, designation)]
+    for hh, text in tries:
+        runs = parse(text)
         w, _, _ = box(runs, hh)
         if w <= G26_WIDTH - 2.0:
             # turned 180° about its baseline's left end: the text runs leftwards, above it
@@ -236,12 +238,15 @@ def text_at(
     role: str = "title",
     anchor: str = "left",
     id: str = "",
+    stretch: float = 1.0,
 ) -> TextItem:
-    """Put a line of text with its baseline at ``at``; ``anchor`` left, centre or right."""
+    """Put a line of text with its baseline at ``at``; ``anchor`` left, centre or right;
+    ``stretch``: its width factor (a condensed line)."""
     runs = parse(markup)
-    w, _, _ = box(runs, height)
+    w = box(runs, height)[0] * stretch
     x = at[0] - (w / 2.0 if anchor == "centre" else w if anchor == "right" else 0.0)
-    item = TextItem((x, at[1]), runs, height, metrics().font_size(height), w, role, id)
+    item = TextItem((x, at[1]), runs, height, metrics().font_size(height), w, role, id,
+                    stretch=stretch)  # fmt: skip
     sheet.add(item)
     return item
 
@@ -257,6 +262,24 @@ def clearance(height: float) -> float:
     return 0.3 * height + 0.25
 
 
+#: The least width factor a title-block line is condensed to at GOST's least height before
+#: it is set smaller (GOST 2.304's type A is about 0.7 of type B's width).
+MIN_STRETCH = 0.7
+#: The room (mm) a condensed line (narrow spaces, a width factor) keeps from its cell's room,
+#: either side: clear of the half of a thick line.
+STRETCH_CLEAR = 0.4
+#: The space a line condensed to fit its cell spaces its words with (U+202F, the narrow
+#: no-break space: half a word space in the pinned font).
+NARROW_SPACE = "\u202f"
+
+
+def condensed(markup: str) -> str:
+    """``markup`` with its word spaces narrowed (:data:`NARROW_SPACE`): a line written at
+    GOST's least height (2.5 mm) that is a little too wide for its cell is condensed in its
+    spacing, never set smaller (GOST 2.304)."""
+    return markup.replace(" ", NARROW_SPACE)
+
+
 def fit_text(
     sheet: Sheet,
     markup: str,
@@ -269,7 +292,8 @@ def fit_text(
     clear: bool = False,
 ) -> list[TextItem]:
     """Text centred in a cell (x0, y0 top, x1, y1 bottom) at the largest GOST height up to
-    ``height`` at which it fits, broken into as few lines as it needs at that height (at most
+    ``height`` at which it fits (at 2.5 mm, its word spaces narrowed before it is set smaller:
+    :func:`condensed`), broken into as few lines as it needs at that height (at most
     ``max_lines``, when given; lines of about equal width, broken at spaces or after a
     compound's hyphen, ``поперечно-`` / ``строгального``); else a :class:`ParameterError`
     naming ``param``. ``clear``: the text keeps :func:`clearance` from the cell's lines (the
@@ -288,16 +312,33 @@ def fit_text(
         # not "Силовой анализ. Шестизвенный" / "механизм с ползуном")
         tries = [(n, True) for n in range(1, min(len(tokens), max_lines or len(tokens)) + 1)]
         tries += [(n, False) for n, _ in tries]
-        for n_lines, whole in tries:
+        # at the least GOST height, the word spaces narrowed before the height is (review 14:
+        # "Шарипова Л. Р." at 1.8 mm in Разраб. where it fits the column at 2.5 mm condensed),
+        # then, the lines in as few as the cell holds, their width factor (GOST 2.304's
+        # narrow type A: "Никифоров С. Ю.", "Ахмедова-Лунд С. И." in the 23 mm column)
+        modes = (1.0, "narrow", "stretch") if hh == HEIGHTS[0] else (1.0,)
+        for mode, (n_lines, whole) in ((m, t) for m in modes for t in tries):
             total = hh + (n_lines - 1) * lead
             if total > room_h:
                 continue
-            lines = _by_sentences(markup, n_lines, hh, room_w, whole)
-            if lines and max(box(parse(ln), hh)[0] for ln in lines) <= room_w:
-                cx = (x0 + x1) / 2.0 if anchor == "centre" else x0 + max(c, 1.0)
+            lines = _by_sentences(markup, n_lines, hh, room_w / (MIN_STRETCH if mode ==
+                                  "stretch" else 1.0), whole)  # fmt: skip
+            if mode != 1.0:
+                lines = [condensed(ln) for ln in lines]
+            if not lines:
+                continue
+            wide = max(box(parse(ln), hh)[0] for ln in lines)
+            # a condensed line keeps STRETCH_CLEAR more from the cell's (thick) lines
+            room = room_w - (2.0 * STRETCH_CLEAR if mode != 1.0 else 0.0)
+            k = min(1.0, room / wide) if mode == "stretch" else 1.0
+            if wide * k <= room * (1.0 + 1e-9) and k >= MIN_STRETCH:
+                # a left-set text 1 mm in from the cell's line (its clearance where more), or
+                # centred where its width leaves less room either side
+                indent = min(max(c, 1.0), (x1 - x0 - wide * k) / 2.0)
+                cx = (x0 + x1) / 2.0 if anchor == "centre" else x0 + indent
                 top = (y0 + y1) / 2.0 - total / 2.0 + hh
                 return [
-                    text_at(sheet, ln, (cx, top + i * lead), hh, role, anchor)
+                    text_at(sheet, ln, (cx, top + i * lead), hh, role, anchor, stretch=k)
                     for i, ln in enumerate(lines)
                 ]
     raise ParameterError(

@@ -22,7 +22,7 @@ from geomcad import tol
 from geomcad.errors import ParameterError
 from geomcad.sheet.drawing import DOT_R, Drawing, _arrow, _head
 from geomcad.sheet.lang import Lang, Words
-from geomcad.sheet.model import XY, CircleItem, Polyline
+from geomcad.sheet.model import XY, CircleItem, Polyline, Sheet
 from geomcad.sheet.scale import NICE, fmt_fixed, fmt_number, nice_below
 from geomcad.sheet.style import fit_open, style
 from geomcad.sheet.text import box, parse
@@ -168,6 +168,29 @@ class Axis:
         return f"μ_{{{self.name}}} = {fmt_number(self.k, lang)} {self.unit}/{per}"
 
 
+#: An axis broken by the origin (its values not starting at 0): the zigzag begins this far
+#: (mm) from the origin, is this long along the axis and swings this far either side of it.
+BREAK_AT = 2.0
+BREAK_LEN = 4.0
+BREAK_SWING = 1.5
+
+
+def _zigzag(s: Sheet, at: XY, along: XY) -> None:
+    """The break mark of an axis: from the origin ``at`` along the unit direction ``along``
+    a straight piece, then a zigzag across the axis (GOST 2.319's break of a scale that does
+    not start at zero); the axis's arrow starts where it ends."""
+    ux, uy = along
+    nx, ny = -uy, ux
+    q = BREAK_LEN / 4.0
+
+    def pt(t: float, side: float) -> XY:
+        return (at[0] + ux * t + nx * side, at[1] + uy * t + ny * side)
+
+    pts = (pt(0.0, 0.0), pt(BREAK_AT, 0.0), pt(BREAK_AT + q, BREAK_SWING),
+           pt(BREAK_AT + 3.0 * q, -BREAK_SWING), pt(BREAK_AT + BREAK_LEN, 0.0))  # fmt: skip
+    s.add(Polyline(pts, "vector"))
+
+
 class Graph:
     """A diagram: the data point (x0, y0) = (x.zero, y.zero) lands on sheet point ``at``."""
 
@@ -203,8 +226,18 @@ class Graph:
         x0, y0, x1, y1 = self.box
         ax, ay = self.at
         s = self.d.sheet
-        _arrow(s, (x0 - 2.0 if x0 < ax else ax, ay), (x1 + ARROW_OVER, ay), "vector")
-        _arrow(s, (ax, y1 + 2.0 if y1 > ay else ay), (ax, y0 - ARROW_OVER), "vector")
+        # an axis whose values do not start at 0 (ω1 about its mean) is broken by a zigzag by
+        # the origin (review 14: ω1's axis began at 4,04 with nothing to say so); no tick by it
+        x_break, y_break = (not (a.lo <= 0.0 <= a.hi) for a in (self.x, self.y))
+        cut = BREAK_AT + BREAK_LEN
+        if x_break:
+            _zigzag(s, (ax, ay), (1.0, 0.0))
+        if y_break:
+            _zigzag(s, (ax, ay), (0.0, -1.0))
+        _arrow(s, (x0 - 2.0 if x0 < ax else ax + (cut if x_break else 0.0), ay),
+               (x1 + ARROW_OVER, ay), "vector")  # fmt: skip
+        _arrow(s, (ax, y1 + 2.0 if y1 > ay else ay - (cut if y_break else 0.0)),
+               (ax, y0 - ARROW_OVER), "vector")  # fmt: skip
         # the rows of values: at the bottom and left edges (the zero axes when they are there)
         bottom = max(ay, y1)
         left = min(ax, x0)
@@ -215,6 +248,8 @@ class Graph:
         right_of_last = -math.inf  # the right edge of the last x value written
         for v in self.x.ticks():
             px, _ = self.p(v, self.y.zero)
+            if x_break and px < ax + cut + TICK_GAP_MM:
+                continue
             for yy in (ay,) if bottom == ay else (ay, bottom):
                 s.add(Polyline(((px, yy), (px, yy + TICK_LEN)), "dimension"))
             text = self.x.tick_text(v, lang)
@@ -227,6 +262,8 @@ class Graph:
                 right_of_last = px + half
         for v in self.y.ticks():
             _, py = self.p(self.x.zero, v)
+            if y_break and py > ay - cut - TICK_GAP_MM:
+                continue
             for xx in (ax,) if left == ax else (ax, left):
                 s.add(Polyline(((xx - TICK_LEN, py), (xx, py)), "dimension"))
             # zero too where the x values stand on an edge of their own (ΔT's 0 on

@@ -69,7 +69,7 @@ from geomcad.sheet.model import ArcItem, CircleItem, Polyline, TextItem
 from geomcad.sheet.motion import Frames, turn
 from geomcad.sheet.placer import break_round, break_under_labels, clip_to_circle, within_hull
 from geomcad.sheet.plans import markup_of
-from geomcad.sheet.scale import Scale, angle_places, fmt_column, fmt_fixed
+from geomcad.sheet.scale import Scale, angle_places, column_places, fmt_column, fmt_fixed
 from geomcad.sheet.scheme import Body, draw_scheme, is_block
 from geomcad.sheet.symbols import HATCH_LEN, JOINT_R, SLIDER_SIZE, STAND_DEPTH, STAND_HALF
 from geomcad.sheet.text import box, parse
@@ -2657,6 +2657,7 @@ def _tables(s: Solved, accel: Sequence[Position], h: float = TEXT_H) -> list[Tab
         *[_zeroed([P.omega[j] for P in s.drawn], abs(lk.omega)) for j in links],
         angle=1,
         places=_places(s),
+        shared=range(2 if r else 3, 3 + len(links)),
     )]  # fmt: skip
     head2 = ["φ_1, °", out_a, *[f"{_joined('ε', i, with_)}, {per_s2}" for i in links]]
     rows2 = [head2, *_columns(
@@ -2665,6 +2666,7 @@ def _tables(s: Solved, accel: Sequence[Position], h: float = TEXT_H) -> list[Tab
         *[_zeroed([P.eps[j] for P in accel], lk.omega**2) for j in links],
         angle=0,
         places=_places(s),
+        shared=range(1 if r else 2, 2 + len(links)),
     )]  # fmt: skip
     row_h = row_height(h)
     return [
@@ -2798,16 +2800,23 @@ def _zeroed(xs: Sequence[float], scale: float) -> list[float]:
     return [0.0 if abs(x) <= ZERO * scale else float(x) for x in xs]
 
 
-def _columns(*cols: Sequence[float], angle: int = -1, places: int = 1) -> list[list[str]]:
+def _columns(
+    *cols: Sequence[float], angle: int = -1, places: int = 1, shared: Sequence[int] = ()
+) -> list[list[str]]:
     """Table rows from columns of one quantity each, a column's numbers with the same count of
     decimals (:func:`~geomcad.sheet.scale.fmt_column`): 4 significant figures at its largest
-    (the order of construction prints a value as its cell does); the crank angle (column
-    ``angle``) with the sheets' ``places``."""
+    (the order of construction prints a value as its cell does); the columns ``shared`` (of
+    one quantity and unit: ω2, ω3, ω4 in s⁻¹) one count of decimals together, 4 significant
+    figures at their largest (review 14: ω2, ω3 with 3 decimals beside ω4 with 4); the crank
+    angle (column ``angle``) with the sheets' ``places``."""
     n = len(cols)
+    one = column_places([x for i in shared for x in cols[i]]) if shared else 0
     texts = [
-        [fmt_fixed(x, places, current()) for x in c] if i == angle % n else fmt_column(c, current())
+        [fmt_fixed(x, places, current()) for x in c] if i == angle % n
+        else [fmt_fixed(x, one, current()) for x in c] if i in shared
+        else fmt_column(c, current())
         for i, c in enumerate(cols)
-    ]
+    ]  # fmt: skip
     return [list(r) for r in zip(*texts, strict=True)]
 
 

@@ -105,7 +105,14 @@ from geomcad.sheet.compose import _lines_width as lines_width
 from geomcad.sheet.compose import _title_width as title_width
 from geomcad.sheet.drawing import SHORT_MM, Viewport
 from geomcad.sheet.frame import FORMATS, LEFT_MARGIN, MARGIN, reserved
-from geomcad.sheet.graph import ARROW_OVER, FACTOR_PLACES, Axis, Graph, thousands_power
+from geomcad.sheet.graph import (
+    ARROW_OVER,
+    FACTOR_PLACES,
+    Axis,
+    Graph,
+    nice_step,
+    thousands_power,
+)
 from geomcad.sheet.insets import Insets, _seg_dist, one_scale_per_inset
 from geomcad.sheet.lang import Words, current
 from geomcad.sheet.linkage import (
@@ -2894,8 +2901,8 @@ def _sheet3(s: Solved, fw: Flywheel, h: float) -> Tree:
             for j, (c, lab) in enumerate(curves)
         ]  # fmt: skip
         cs.append(Curve(np.degrees(psi_k), gy, "construction", points=True))
-        graphs.append(Diagram(x, AxisSpec(sym, unit, name), cs, least=(120.0, 45.0),
-                              prefer=(600.0, 150.0), marks=position_marks(n)))  # fmt: skip
+        graphs.append(_DynDiagram(x, AxisSpec(sym, unit, name), cs, least=(120.0, 45.0),
+                                  prefer=(600.0, 150.0), marks=position_marks(n)))  # fmt: skip
     phi0 = math.degrees(fw.phis[0]) % 360.0  # the flywheel's ψ = 0: numbered position 0
     origin = WORDS(
         "phi_origin",
@@ -2904,7 +2911,7 @@ def _sheet3(s: Solved, fw: Flywheel, h: float) -> Tree:
         step=fmt_fixed(360.0 / n, angle_places([360.0 / n]), current()),  # 30°, not 30,0°
     )
     note = Text(paragraph=origin, width=order_width(h), height=h)
-    column = Column(note, *graphs, title=WORDS("graphs"), title_height=TITLE_H)
+    column = Column(note, _Stacked(graphs), title=WORDS("graphs"), title_height=TITLE_H)
     witt = _Wittenbauer(fw)
     omega = _omega(lk, fw)
     tables = Column(*_tables3(lk, fw, h))
@@ -2916,6 +2923,98 @@ def _sheet3(s: Solved, fw: Flywheel, h: float) -> Tree:
         Row(column, Column(witt, omega), tables),
         Row(column, Column(Row(witt, tables), omega)),
     )
+
+
+class _DynDiagram(Diagram):
+    """A diagram of the dynamics sheet: its curves named at the axis captions' height (review
+    14: M_дв and M_пр written small, stacked between the two lines at the diagram's end)."""
+
+    LABEL_H = 3.5
+    LABEL_GAP = 3.0 * LABEL_H
+
+
+#: The finer-to-coarser nice factors each diagram of :class:`_Stacked` may take, tried together.
+STACK_CHOICES = 7
+
+
+def stack_factors(ranges: Sequence[float], room: float, first_tallest: bool = True) -> list[float]:
+    """The y factors (nice, units per mm) of diagrams stacked in ``room`` mm of plot height,
+    their values' ``ranges``: of the few finest each range allows, the choice whose plots fit
+    ``room`` together with the largest least height, then the least spread of heights (one
+    height), then the largest sum; with ``first_tallest``, where any choice allows it, the
+    first diagram (M_пр, the one the student integrates) at least as tall as each other."""
+    options = []
+    for r in ranges:
+        r = r if r > 0.0 else 1.0
+        ks = [nice_step(r / max(room, 1.0))]
+        while len(ks) < STACK_CHOICES:
+            ks.append(nice_step(ks[-1] * (1.0 + 1e-3)))
+        options.append(ks)
+    best: tuple[tuple[float, ...], list[float]] | None = None
+    for combo in itertools.product(*options):
+        h = [(r if r > 0.0 else 1.0) / k for r, k in zip(ranges, combo, strict=True)]
+        fits = sum(h) <= room * (1.0 + tol.DERIVED)
+        tallest = not first_tallest or all(h[0] >= x * (1.0 - tol.DERIVED) for x in h[1:])
+        key = (float(fits), float(tallest), min(h), min(h) - max(h), sum(h))
+        if best is None or key > best[0]:
+            best = (key, list(combo))
+    assert best is not None, "at least one diagram"
+    return best[1]
+
+
+class _Stacked(View):
+    """The dynamics sheet's diagrams one under another over one φ axis (one μ_φ), their y
+    factors chosen together (:func:`stack_factors`) so that they are drawn at about one
+    height, M_пр (the first) at least as tall as the others (review 14: the walkbeam's M_пр
+    drew −431 … +145 N·m 29 mm high at μ_M = 20 N·m/mm over a 110 mm A(φ)). The room left
+    over is shared out between them."""
+
+    def __init__(self, diagrams: Sequence[Diagram], gap: float = GAP) -> None:
+        super().__init__(margin=0.0, weight=float(len(diagrams)))
+        self.diagrams = list(diagrams)
+        self.gap = gap
+
+    def _pad(self, dg: Diagram) -> float:
+        return dg.BELOW + dg.ABOVE + 2.0 * dg.margin
+
+    def stretch(self) -> tuple[tuple[float, float], tuple[float, float]]:
+        sizes = [dg.stretch() for dg in self.diagrams]
+        extra = self.gap * (len(sizes) - 1)
+        return ((max(s[0][0] for s in sizes), sum(s[0][1] for s in sizes) + extra),
+                (max(s[1][0] for s in sizes), sum(s[1][1] for s in sizes) + extra))  # fmt: skip
+
+    def plots(self, h: float) -> tuple[list[float], float]:
+        """Each diagram's plot height (mm) in a room ``h`` mm high, and the room left over
+        under each (shared out equally)."""
+        key = ("plots", round(h, 6))
+        if key not in self._memo:
+            room = h - self.gap * (len(self.diagrams) - 1) - sum(map(self._pad, self.diagrams))
+            ranges = [dg._range(dg.y, 1) for dg in self.diagrams]
+            spans = [hi - lo if hi > lo else 1.0 for lo, hi in ranges]
+            ks = stack_factors(spans, max(room, 1.0))
+            plots = [r / k for r, k in zip(spans, ks, strict=True)]
+            self._memo[key] = plots, max(room - sum(plots), 0.0) / len(plots)
+        return self._memo[key]  # type: ignore[no-any-return]
+
+    def used(self, w: float, h: float) -> tuple[float, float]:
+        if h <= sum(map(self._pad, self.diagrams)):
+            return 0.0, 0.0
+        plots, spare = self.plots(h)
+        uw = max(dg.used(w - 2.0 * dg.margin, p + dg.BELOW + dg.ABOVE)[0] + 2.0 * dg.margin
+                 for dg, p in zip(self.diagrams, plots, strict=True))  # fmt: skip
+        return uw, h - spare * len(plots)
+
+    def draw(self, d: Drawing, at: Placed) -> None:
+        x0, y0, x1, y1 = at.inner
+        plots, spare = self.plots(y1 - y0)
+        top = y0
+        for dg, p in zip(self.diagrams, plots, strict=True):
+            # the box as tall as the plot at its factor (a box a hair taller keeps the
+            # factor: the plot is range / factor exactly), the spare room under it
+            m = dg.margin
+            box = (x0, top, x1, top + p * (1.0 + 1e-9) + self._pad(dg))
+            dg.draw(d, Placed(dg, box, (box[0] + m, box[1] + m, box[2] - m, box[3] - m)))
+            top = box[3] + spare + self.gap
 
 
 def _nonzero(xs: Sequence[float], lang: str, digits: int = 4) -> list[str]:
@@ -3078,7 +3177,7 @@ def _clear_of_axis_name(gr: Graph, y0: float, slope: float, x_end: float, touch:
 OMEGA_PAD = 0.1
 
 
-class _Filled(Diagram):
+class _Filled(_DynDiagram):
     """A diagram whose y axis (through no zero: ω1 about its mean) is drawn the height of its
     box: its range widened about its middle to the whole room at the axis's factor (review 7:
     tangent's ω1 drew 60 mm with 4 ticks in a taller box, its factor rounded coarse). The
@@ -3118,13 +3217,16 @@ def _omega(lk: Linkage, fw: Flywheel) -> Diagram:
         Curve([0.0, 360.0], [fw.omega_max, fw.omega_max], "construction", label="ω_{max}"),
         Curve([0.0, 360.0], [fw.omega_min, fw.omega_min], "construction", label="ω_{min}"),
     ]
+    # its φ axis as the other diagrams': ticks every 30° and the numbered positions under it
+    # (review 14: ω1's axis had neither 0 nor the positions' numbers)
     return _Filled(
-        AxisSpec("φ", WORDS("deg"), "φ", 0.0, 360.0, 60.0),
+        AxisSpec("φ", WORDS("deg"), "φ", 0.0, 360.0, 30.0),
         AxisSpec("ω_1", WORDS("per_s"), "ω", lo - pad, hi + pad),
         curves,
         least=(120.0, 60.0),
         prefer=(400.0, 160.0),
         zero=False,
+        marks=position_marks(len(fw.phis)),
         title=f"{WORDS('omega')}; {delta}",
     )
 

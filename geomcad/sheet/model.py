@@ -86,7 +86,9 @@ class TextItem:
     ``height`` is the GOST cap height (mm); ``font_size`` the matching em size, measured from the
     font. ``width`` is the text's advance width in mm, as the backends will set it. ``angle`` turns
     the text about ``at`` (degrees, counter-clockwise as seen on the paper): a dimension's text
-    along a slanted dimension line, графа 26 turned 180°.
+    along a slanted dimension line, графа 26 turned 180°. ``stretch``: the text's width factor
+    (below 1: condensed about ``at``, a title-block name too wide for its графа at GOST's least
+    height, never set smaller); ``width`` is the condensed width.
     """
 
     at: XY
@@ -97,6 +99,7 @@ class TextItem:
     role: str
     id: str = ""
     angle: float = 0.0
+    stretch: float = 1.0
 
     @property
     def text(self) -> str:

@@ -304,7 +304,9 @@ def _wrapped(markup: str, width: float, height: float, indent: float) -> tuple[s
 def placed_runs(t: TextItem) -> Iterator[tuple[Run, float, float, float]]:
     """Each non-empty run of a text with the start of its baseline (x, y) on the paper, before
     the text is turned by its ``angle`` about ``t.at``, and its font size: the one layout every
-    backend sets (subscripts dropped, superscripts raised, runs one after another)."""
+    backend sets (subscripts dropped, superscripts raised, runs one after another), before
+    its ``stretch`` (a width factor about ``t.at``, which each backend applies to the glyphs
+    and their positions alike)."""
     m = metrics()
     x, base = t.at
     for run in t.runs:

@@ -1871,6 +1871,10 @@ class Diagram(View):
     BELOW = 12.0
     ABOVE = 10.0
     RIGHT = 12.0
+    #: The height (mm) of a curve's name, and the least gap (mm) between two curves' ends
+    #: at which each is named at its end.
+    LABEL_H = 2.5
+    LABEL_GAP = 6.0  # curves farther apart than this at their ends are named there
 
     def __init__(
         self,
@@ -1960,7 +1964,8 @@ class Diagram(View):
                 d.text(mark, (px, bottom), MARK_H, anchor="centre")
                 right_of_last = px + half
         for c, (xx, yy), up in self._label_points(ay):
-            d.label(gr.p(xx, yy), c.label, 2.5, prefer=(0.3, -1.0 if up else 1.0), clear=0.5)
+            d.label(gr.p(xx, yy), c.label, self.LABEL_H, prefer=(0.3, -1.0 if up else 1.0),
+                    clear=0.5)  # fmt: skip
         # the factors: right of the title, or on a line of their own under a long title
         factors = f"{ay.factor_text(current())};  {ax.factor_text(current())}"
         right = min(at.box[2], x0 + self.used(x1 - x0, y1 - y0)[0])
@@ -2002,7 +2007,7 @@ class Diagram(View):
             near = np.argmin(np.abs(diff), axis=0)
             signed = diff[near, np.arange(len(k))]
             gap = np.abs(signed)
-            j = len(k) - 1 if ay.mm(float(gap[-1])) >= LABEL_GAP_MM else int(np.argmax(gap))
+            j = len(k) - 1 if ay.mm(float(gap[-1])) >= self.LABEL_GAP else int(np.argmax(gap))
             i = int(k[j])
             out.append((c, (float(xs[i]), float(ys[i])), bool(signed[j] >= 0.0)))
         return out
@@ -2012,8 +2017,6 @@ class Diagram(View):
 MARK_H = 3.5
 #: A curve's name is written within this share of the x range from its end.
 LABEL_SPAN = 0.2
-#: Curves farther apart than this (mm) at their ends are named there.
-LABEL_GAP_MM = 6.0
 
 
 # --- tables and text ------------------------------------------------------------------------------
