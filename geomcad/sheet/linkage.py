@@ -331,7 +331,7 @@ def _trees(
             continue
         # a position of an acceleration plan that is not a numbered one: its velocity plan
         # beside its acceleration plan (every plan's position has both, linkages.md)
-        vp = PlanView(P.vp, title=WORDS("vplan_detail", phi=_deg(P.phi, s)), group="v",
+        vp = _TopPlan(P.vp, title=WORDS("vplan_detail", phi=_deg(P.phi, s)), group="v",
                       weight=2.0, min_mm=SHORT_MM, least_k=k_v)  # fmt: skip
         cells.append(Row(vp, ap))
     # a section holding a position's velocity plan beside its acceleration plan is titled by
@@ -432,8 +432,8 @@ def _trees(
 
 class _TopPlan(PlanView):
     """A plan drawn right under its own caption (:func:`_under_title`), not centred in a cell
-    the layout may have made much taller than the plan: an acceleration plan beside its
-    position's velocity plan, in a cell as tall as the taller of the two."""
+    the layout may have made much taller than the plan: an acceleration plan and the velocity
+    plan beside it, in cells as tall as the taller of the two."""
 
     def draw(self, d: Drawing, at: Placed) -> None:
         ext = self.plan.extent()
