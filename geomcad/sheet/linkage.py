@@ -319,8 +319,10 @@ def _trees(
     cells: list[View | Node] = []
     aviews: list[PlanView] = []
     for P in accel:
-        ap = PlanView(P.ap, title=WORDS("aplan", phi=_deg(P.phi, s)), group="a", show_scale=False,
-                      weight=2.0, min_mm=SHORT_MM)  # fmt: skip
+        # each acceleration plan captioned by itself, with its μa, and drawn right under its
+        # caption (review 14: "φ1 = 60°" alone at its cell's top, 100 mm from its plan)
+        ap = _TopPlan(P.ap, title=WORDS("aplan", phi=_deg(P.phi, s)), group="a", weight=2.0,
+                      min_mm=SHORT_MM)  # fmt: skip
         # πa′ = ω1²·l at least PA_MM, as pa (review 6: sixbar's was 27 mm in a 250 mm column)
         ap.most_k = round_scale_down(lk.omega**2 * lk.length / PA_MM, "a", ap.series).k
         aviews.append(ap)
@@ -329,7 +331,7 @@ def _trees(
             continue
         # a position of an acceleration plan that is not a numbered one: its velocity plan
         # beside its acceleration plan (every plan's position has both, linkages.md)
-        vp = PlanView(P.vp, title=WORDS("vplan_detail", phi=_deg(P.phi, s)), group="v",
+        vp = _TopPlan(P.vp, title=WORDS("vplan_detail", phi=_deg(P.phi, s)), group="v",
                       weight=2.0, min_mm=SHORT_MM, least_k=k_v)  # fmt: skip
         cells.append(Row(vp, ap))
     # a section holding a position's velocity plan beside its acceleration plan is titled by
@@ -426,6 +428,18 @@ def _trees(
         Column(Row(mech_node(), vplans), Row(diagrams, aplans), Row(tables, order)),
     )
     return (sheet,), mech, False, wants
+
+
+class _TopPlan(PlanView):
+    """A plan drawn right under its own caption (:func:`_under_title`), not centred in a cell
+    the layout may have made much taller than the plan: an acceleration plan and the velocity
+    plan beside it, in cells as tall as the taller of the two."""
+
+    def draw(self, d: Drawing, at: Placed) -> None:
+        ext = self.plan.extent()
+        if ext is not None and at.scale is not None:
+            _under_title(d, at, ext)
+        super().draw(d, at)
 
 
 class _Note(Text):
@@ -1105,11 +1119,13 @@ class _Mechanism(View):
         # principal one (the force analysis' position, else position 0) in main lines
         P0, k0 = _principal(s)
         thin = len(d.sheet.items)
+        swept: list[tuple[Vec, ...]] = []  # the thin positions' lines, the guides clear of them
         for i, P in enumerate(s.drawn):
             if i != k0:
                 for bs in link_bodies(lk, P, axes=True).values():
                     for b in bs:
                         v.polyline(b.points, "thin", closed=b.closed)
+                        swept.append(b.points + ((b.points[0],) if b.closed else ()))
         thin_end = len(d.sheet.items)
         labels: dict[str, str] = {}
         mech = scheme(lk, P0)  # the pairs where the principal position has them
@@ -1162,7 +1178,7 @@ class _Mechanism(View):
         symbols_from = len(d.sheet.items)
         draw_scheme(v, mech, bodies=bodies, pair_labels=marked, label_height=3.5,
                     guides=guides, travel=travel, link_space=LINK_SPACE,
-                    link_labels=numbers, letter_space=LETTER_SPACE)  # fmt: skip
+                    link_labels=numbers, letter_space=LETTER_SPACE, swept=swept)  # fmt: skip
         hubs = [v.p(p.at) for p in mech.pairs if p.kind == "R" and mech.frame in p.links]
         zones = hub_zones(d.sheet.items[symbols_from:], hubs)
         break_round(d.sheet, thin, thin_end, zones)

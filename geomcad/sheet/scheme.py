@@ -97,6 +97,7 @@ def draw_scheme(
     letter_space: float = 0.0,
     guide_axes: bool = False,
     cut_free: bool = False,
+    swept: Sequence[Sequence[PointLike]] = (),
 ) -> None:
     """Draw ``mech`` in viewport ``v`` (see the module docstring).
 
@@ -121,7 +122,9 @@ def draw_scheme(
     kinetostatics, whose frame's reactions R_0j stand for the frame): a revolute on the frame
     is drawn as its joint only and a prismatic pair on the frame as its block on a dash-dot
     stub of the guide's axis (the direction the reaction is normal to), neither with the
-    frame's hatched support or guide.
+    frame's hatched support or guide. ``swept``: the polylines (model) of the links in the other
+    positions drawn: a fixed guide's hatched walls are drawn clear of them and of the links drawn
+    here (:func:`guide_walls`).
     """
     bodies = dict(bodies or {})
     size = mech.size()
@@ -138,12 +141,14 @@ def draw_scheme(
         if not p.lower:
             _higher(v, mech, p, role)
     knots = _knots(mech, drawn, ghosts)  # a knot's carried block drawn last, in its slider
+    lines = [tuple(vec(q) for q in pl) for pl in swept]
+    lines += [b.points + ((b.points[0],) if b.closed else ()) for bs in drawn.values() for b in bs]
     for p in sorted((p for p in mech.pairs if p.kind == "P"), key=lambda p: p.name in knots):
         at = (guides or {}).get(p.name)
         run = [vec(q) for q in (travel or {}).get(p.name, ())]
         knot = p.name in knots or p.name in knots.values()
         _prismatic(v, mech, p, role, ghosts, drawn, None if at is None else vec(at), run, knot,
-                   guide_axes, cut_free)  # fmt: skip
+                   guide_axes, cut_free, lines)  # fmt: skip
     for p in mech.pairs:
         if p.kind == "R":
             if mech.frame in p.links and not cut_free:
@@ -304,6 +309,7 @@ def _prismatic(
     knot: bool = False,
     axis: bool = False,
     cut_free: bool = False,
+    lines: Sequence[Sequence[Vec]] = (),
 ) -> None:
     """A prismatic pair's symbol (see the module docstring); ``knot``: the pair is a knot's
     (:data:`KNOT_BLOCK`): the frame's slider drawn round the carried block, on a guide that
@@ -340,11 +346,16 @@ def _prismatic(
         elif axis:  # the guide's axis (dash-dot) a little past the hatched guide's ends
             e = v.scale.model(GUIDE_AXIS_PAST)
             v.seg(g + u * (lo - e), g + u * (hi + e), "centre")
-        # the fixed guide hatched on both sides over that travel (at least the slider's length)
-        a, b = g + u * lo, g + u * hi
+        # the fixed guide hatched on both sides over that travel (at least the slider's length),
+        # each wall only where no link of any position drawn runs through it
         n = u.perp()
-        v.guide(a, b, (n.x, n.y), size[1])
-        v.guide(b, a, (-n.x, -n.y), size[1])
+        for side, pieces in guide_walls(v, g, u, lo, hi, size, lines):
+            for t0, t1 in pieces:
+                a, b = g + u * t0, g + u * t1
+                if side > 0.0:
+                    v.guide(a, b, (n.x, n.y), size[1])
+                else:
+                    v.guide(b, a, (-n.x, -n.y), size[1])
         link = p.other(mech.frame)
         if block(link):
             _block(v, p.at, u, role[link], drawn, size)
@@ -356,6 +367,89 @@ def _prismatic(
                 _across(v, p.at, u, KNOT_SLIDER, knots_axis(mech, p), role[on])
             _block(v, p.at, u, role[lk], drawn, size)
             return
+
+
+#: A guide's wall is hatched only where no link line passes within this (mm) of its hatching.
+WALL_CLEAR_MM = 1.5
+#: A wall's clear piece shorter than this (mm) is not hatched (a scrap of hatching reads as
+#: nothing): the slider's length.
+WALL_MIN_MM = SLIDER_SIZE[0]
+
+
+def _blocked(
+    g: Vec, u: Vec, n: Vec, s0: float, s1: float, lines: Sequence[Sequence[Vec]]
+) -> list[tuple[float, float]]:
+    """The stretches (along ``u`` from ``g``) where a line of ``lines`` passes through the band
+    ``s0 <= (q - g)·n <= s1`` beside the axis."""
+    out: list[tuple[float, float]] = []
+    for pl in lines:
+        for a, b in itertools.pairwise(pl):
+            sa, sb = (a - g).dot(n), (b - g).dot(n)
+            ta, tb = (a - g).dot(u), (b - g).dot(u)
+            if abs(sb - sa) <= 1e-12:
+                if s0 <= sa <= s1:
+                    out.append((min(ta, tb), max(ta, tb)))
+                continue
+            k0, k1 = sorted(((s0 - sa) / (sb - sa), (s1 - sa) / (sb - sa)))
+            k0, k1 = max(k0, 0.0), min(k1, 1.0)
+            if k0 <= k1:
+                t0, t1 = ta + (tb - ta) * k0, ta + (tb - ta) * k1
+                out.append((min(t0, t1), max(t0, t1)))
+    return out
+
+
+def _clear_pieces(
+    lo: float, hi: float, blocked: Sequence[tuple[float, float]], grow: float
+) -> list[tuple[float, float]]:
+    """[lo, hi] less the ``blocked`` stretches grown by ``grow`` at either end."""
+    pieces, at = [], lo
+    for b0, b1 in sorted((b0 - grow, b1 + grow) for b0, b1 in blocked):
+        if b1 < at:
+            continue
+        if b0 > at:
+            pieces.append((at, min(b0, hi)))
+        at = max(at, b1)
+        if at >= hi:
+            break
+    if at < hi:
+        pieces.append((at, hi))
+    return [(a, b) for a, b in pieces if b > a]
+
+
+def guide_walls(
+    v: Viewport,
+    g: Vec,
+    u: Vec,
+    lo: float,
+    hi: float,
+    size: tuple[float, float],
+    lines: Sequence[Sequence[Vec]],
+) -> list[tuple[float, list[tuple[float, float]]]]:
+    """The hatched walls of a fixed guide along ``u`` through ``g`` over ``[lo, hi]`` (model):
+    ``(side, pieces)``, ``side`` ±1 along ``u.perp()``. GOST 2.770 draws a guide as a line hatched
+    on one side or both; review 14: the ellipsograph's bar and its twelve positions ran straight
+    through both hatched walls of its ram's and its slide's guides. So each wall is drawn only
+    over its stretches clear of every link line (``lines``: the positions drawn, thin or main)
+    by :data:`WALL_CLEAR_MM`, none shorter than :data:`WALL_MIN_MM`; a wall crossed anywhere is
+    left out altogether where the other one is clear end to end (a guide hatched on the side the
+    links do not pass). Where no clear stretch is left, both walls are drawn whole, as before."""
+    n = u.perp()
+    m = v.scale.model
+    off = m(size[1] / 2.0 + 0.6)  # symbols.guide's wall, and its hatching outward
+    depth = m(symbols.HATCH_LEN)
+    grow, least = m(WALL_CLEAR_MM), m(WALL_MIN_MM)
+    walls: list[tuple[float, list[tuple[float, float]], bool]] = []
+    for side in (1.0, -1.0):
+        s0, s1 = (off - grow, off + depth + grow)
+        blocked = _blocked(g, u, n * side, s0, s1, lines)
+        pieces = [(a, b) for a, b in _clear_pieces(lo, hi, blocked, grow) if b - a >= least]
+        whole = len(pieces) == 1 and pieces[0] == (lo, hi)
+        walls.append((side, pieces, whole))
+    if not any(pieces for _, pieces, _ in walls):
+        return [(1.0, [(lo, hi)]), (-1.0, [(lo, hi)])]
+    if any(whole for *_, whole in walls):
+        return [(side, pieces) for side, pieces, whole in walls if whole]
+    return [(side, pieces) for side, pieces, _ in walls]
 
 
 def _higher(v: Viewport, mech: Mechanism, p: Pair, role: Mapping[str, str]) -> None:
