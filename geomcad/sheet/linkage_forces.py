@@ -61,7 +61,7 @@ from __future__ import annotations
 
 import itertools
 import math
-from collections.abc import Iterator, Mapping, Sequence
+from collections.abc import Callable, Iterator, Mapping, Sequence
 from dataclasses import replace
 
 import numpy as np
@@ -69,7 +69,7 @@ import numpy.typing as npt
 
 from geomcad import tol
 from geomcad.construction.recorder import Step
-from geomcad.errors import ParameterError
+from geomcad.errors import GeomcadError, ParameterError
 from geomcad.forces import ForcePolygon
 from geomcad.geom import Vec
 from geomcad.linkage.analysis import analyse
@@ -358,38 +358,66 @@ def force_position(s: Solved) -> tuple[Position, Forces, int | None]:
 
 
 def force_sheets(
-    s: Solved, stem: str = "", first_no: int = 2, count: int = 0
+    s: Solved,
+    stem: str = "",
+    first_no: int = 2,
+    count: int = 0,
+    failures: list[tuple[str, Exception]] | None = None,
 ) -> list[tuple[str, Sheet]]:
     """Sheet 2 (where the file gives masses or loads) and sheet 3 (with ``[dynamics]``),
-    numbered from ``first_no`` of ``count`` sheets (0: these are the last ones)."""
+    numbered from ``first_no`` of ``count`` sheets (0: these are the last ones).
+
+    Each sheet is drawn on its own (review 14: the forces layout that failed cost a file all
+    its sheets): with ``failures`` given, a sheet that raises a :class:`GeomcadError` is
+    ``(name, None)`` in the list, keeping its number, and its error is appended to ``failures``;
+    without, the error propagates."""
     a = analyse(s)
-    lk = s.linkage
     mine = (a.forces is not None) + (a.flywheel is not None)
     count = count or first_no - 1 + mine
     designation = KIN_WORDS("designation", stem=stem or KIN_WORDS("stem"))
     out: list[tuple[str, Sheet]] = []
     no = first_no
-    fmts = sheet_formats(lk)
+    jobs: list[tuple[str, Callable[[int], Sheet]]] = []
     if a.forces is not None:
-        tree, z = force_layout(s)
-        d = z.start(_title(lk, WORDS("forces"), designation, no, count))
-        compose(d, tree, layout=z.layout)
-        for pl in z.layout:
-            if isinstance(pl.view, _Loaded):
-                pl.view.sheet_detail(d, pl)
-        main = [pl.scale for pl in z.layout if isinstance(pl.view, _Loaded)]
-        if d.sheet.block is not None and main and main[0] is not None:
-            # the title block's Масштаб: the main view's, the loaded mechanism's
-            d.sheet.block = replace(d.sheet.block, scale=main[0].ratio_text())
-        out.append(("forces", d.finish()))
-        no += 1
+        jobs.append(("forces", lambda n: _forces_sheet(s, designation, n, count)))
     if a.flywheel is not None:
         flywheel = a.flywheel
-        tree, z = fit(lambda h: (_sheet3(s, flywheel, h), {}), fmts)
-        d = z.start(_title(lk, WORDS("dynamics"), designation, no, count))
-        compose(d, tree, layout=z.layout)
-        out.append(("dynamics", d.finish()))
+        jobs.append(("dynamics", lambda n: _dynamics_sheet(s, flywheel, designation, n, count)))
+    for name, job in jobs:
+        try:
+            out.append((name, job(no)))
+        except GeomcadError as exc:
+            if failures is None:
+                raise
+            failures.append((name, exc))
+            out.append((name, None))  # type: ignore[arg-type]  # its place kept
+        no += 1
     return out
+
+
+def _forces_sheet(s: Solved, designation: str, no: int, count: int) -> Sheet:
+    """Sheet 2: the loaded mechanism, its groups, the force plans and Zhukovsky's lever."""
+    lk = s.linkage
+    tree, z = force_layout(s)
+    d = z.start(_title(lk, WORDS("forces"), designation, no, count))
+    compose(d, tree, layout=z.layout)
+    for pl in z.layout:
+        if isinstance(pl.view, _Loaded):
+            pl.view.sheet_detail(d, pl)
+    main = [pl.scale for pl in z.layout if isinstance(pl.view, _Loaded)]
+    if d.sheet.block is not None and main and main[0] is not None:
+        # the title block's Масштаб: the main view's, the loaded mechanism's
+        d.sheet.block = replace(d.sheet.block, scale=main[0].ratio_text())
+    return d.finish()
+
+
+def _dynamics_sheet(s: Solved, flywheel: Flywheel, designation: str, no: int, count: int) -> Sheet:
+    """Sheet 3: the flywheel by Wittenbauer's method."""
+    lk = s.linkage
+    tree, z = fit(lambda h: (_sheet3(s, flywheel, h), {}), sheet_formats(lk))
+    d = z.start(_title(lk, WORDS("dynamics"), designation, no, count))
+    compose(d, tree, layout=z.layout)
+    return d.finish()
 
 
 def force_layout(s: Solved) -> tuple[Tree, formats.Sized]:
