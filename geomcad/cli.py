@@ -42,6 +42,7 @@ from geomcad.errors import (
     GeomcadError,
     MissingDependency,
     ParameterError,
+    SheetsFailed,
     UnknownProblem,
     shorten_name,
 )
@@ -595,7 +596,7 @@ def _cmd_build(ns: argparse.Namespace) -> int:
     if n_jobs > 1:
         return _build_parallel(ns, ids, formats, plain, n_jobs, started, (options, workdir))
     # solve and draw everything first, so that bad input writes no file and prints nothing
-    prepared: list[tuple[str, Any]] = []
+    prepared: list[tuple[str, Any, str]] = []
     with jobs.bar(2 * len(ids), "step", "build") as tick:
         for pid in ids:
             prepared.append(
@@ -618,15 +619,17 @@ def _prepare(
     pages: dict[str, str] | None = None,
     strict: bool = True,
     sets: tuple[str, ...] = (),
-) -> tuple[str, Any]:
+) -> tuple[str, Any, str]:
     """Solve and draw one problem, file or variant file for ``build`` (with the ``--set``
     pairs): (its file stem, its sheets), in the language the title data name (``--lang``, else
     the file's or ./geomcad.toml's); with ``pages``, its interactive page too
     (geomcad.render.html), by its stem (a problem with no motion is bad input, or, not
-    ``strict``, gets no page)."""
+    ``strict``, gets no page); and the text of the ``error:`` line of the sheets that could not
+    be drawn ("" when all were: the others are returned and written, review 14)."""
     from geomcad import documents
     from geomcad.sheet.lang import language
 
+    failed = ""
     try:
         if _is_variant_file(pid):
             from geomcad.teach.variants import variant_sets
@@ -654,7 +657,10 @@ def _prepare(
         # the options over the file's own [sheet] table over ./geomcad.toml's
         title = options.over(workdir if own is None else own.over(workdir))
         with language(title.lang or "ru"):
-            sheets = sol.sheets(title)
+            try:
+                sheets = sol.sheets(title)
+            except SheetsFailed as exc:  # the other sheets are written all the same
+                sheets, failed = exc.drawn(), _prefixed(pid, exc)
             if review:
                 from geomcad.review import review_sheets
 
@@ -668,12 +674,12 @@ def _prepare(
                 pages[stem] = to_html(page_of(sol, sheets, source))
     except GeomcadError as exc:
         raise _Failed(_prefixed(pid, exc)) from exc
-    return (stem, sheets)
+    return (stem, sheets, failed)
 
 
 def _write_prepared(
     ns: argparse.Namespace,
-    prepared: list[tuple[str, Any]],
+    prepared: list[tuple[str, Any, str]],
     formats: list[str],
     plain: list[str],
     tick: Any,
@@ -687,7 +693,7 @@ def _write_prepared(
     missing: MissingDependency | None = None
     try:
         out.mkdir(parents=True, exist_ok=True)
-        for pid, sheets in prepared:
+        for pid, sheets, _failed in prepared:
             if missing is None:
                 try:
                     paths = write_sheets(pid, sheets, out, formats, colour=ns.color)
@@ -707,11 +713,16 @@ def _write_prepared(
     except OSError as exc:
         where = exc.filename if exc.filename else out
         raise _Failed(f"cannot write to {where}: {exc.strerror or exc}") from exc
+    failed = [f for _, _, f in prepared if f]
+    for f in failed:  # a sheet that could not be drawn: its own error: line, the rest written
+        _write(sys.stderr, _error_line(f))
     if missing is not None:
         what = "SVG and DXF files" if "dxf" in plain else "SVGs"
         _write(sys.stderr, _error_line(f"{_one_line(str(missing))}; only the {what} were written"))
         return EXIT_BAD_INPUT
-    _build_summary(sum(len(sheets) for _, sheets in prepared), len(prepared), started)
+    if failed:
+        return EXIT_BAD_INPUT
+    _build_summary(sum(len(sheets) for _, sheets, _ in prepared), len(prepared), started)
     return EXIT_OK
 
 
@@ -751,15 +762,18 @@ def _build_parallel(
     ]
     out = Path(ns.out)
     missing, failed, n_sheets = "", "", 0
+    partly: list[str] = []  # the error: lines of sheets not drawn, the file's others written
     done: dict[int, list[Path]] = {}
     shown = 0
     try:  # a signal unwinds through here as geomcad.interrupts.Interrupted: the pool is torn down
         with jobs.bar(len(ids), "problem", "build") as tick, jobs.pool(n_jobs, tick) as run:
             for i, (_stem, n, files, error, lacking) in run.stream(build.build_one, args):
-                if error:
+                if error and not files:
                     failed = failed or _prefixed(ids[i], GeomcadError(error))
                     done[i] = []
-                else:
+                else:  # with an error, the sheets that were drawn (review 14)
+                    if error:
+                        partly.append(error)
                     missing = missing or lacking
                     n_sheets += n
                     done[i] = build.write(out, files)
@@ -768,11 +782,15 @@ def _build_parallel(
                     shown += 1
     except OSError as exc:
         raise _Failed(f"cannot write to {out}: {exc.strerror or exc}") from exc
+    for error in partly:
+        _write(sys.stderr, _error_line(error))
     if failed:
         raise _Failed(failed)
     if missing:
         what = "SVG and DXF files" if "dxf" in plain else "SVGs"
         _write(sys.stderr, _error_line(f"{_one_line(missing)}; only the {what} were written"))
+        return EXIT_BAD_INPUT
+    if partly:
         return EXIT_BAD_INPUT
     _build_summary(n_sheets, len(ids), started)
     return EXIT_OK

@@ -8,6 +8,8 @@ turns any of them into one ``error:`` line and exit status 2.
 
 from __future__ import annotations
 
+from typing import Any
+
 #: The most of a bad value (or of a name) an error message quotes, in characters: a 5 MB
 #: string given as a parameter is named by its start, not repeated.
 QUOTE_CHARS = 60
@@ -125,3 +127,29 @@ class FileKeyError(ParameterError):
 
     def __str__(self) -> str:
         return f"{shorten_name(self.name)}: {self.why}"
+
+
+class SheetsFailed(GeomcadError):
+    """Some sheets of a document could not be drawn; the others were (issue 27, review 14).
+
+    ``sheets`` holds the document's sheets in order as ``(name, Sheet)``, a failed sheet as
+    ``(name, None)`` so that it keeps its place: the drawn sheets keep the numbers of the whole
+    planned document (Лист i of Листов n counts the failed sheet too), and a sheet drawn later
+    by hand takes the missing number. ``failures`` pairs each failed sheet's name with its error;
+    the message names every one of them, each with its own construction step or parameter.
+
+    >>> e = SheetsFailed([("", None)], [("forces", ParameterError("layout", "x", "no room"))])
+    >>> str(e)
+    "sheet forces: parameter layout = 'x': no room"
+    """
+
+    def __init__(
+        self, sheets: list[tuple[str, Any]], failures: list[tuple[str, Exception]]
+    ) -> None:
+        self.sheets = sheets
+        self.failures = failures
+        super().__init__("; ".join(f"sheet {name}: {exc}" for name, exc in failures))
+
+    def drawn(self) -> list[tuple[str, Any]]:
+        """The sheets that were drawn, in order (the failed ones left out)."""
+        return [(n, s) for n, s in self.sheets if s is not None]

@@ -29,7 +29,7 @@ from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any, Generic, Literal, TypeVar
 
-from geomcad.errors import ConstructionError, ParameterError
+from geomcad.errors import ConstructionError, ParameterError, SheetsFailed
 from geomcad.units import PHYSICAL, check_display, wrap_deg
 
 if TYPE_CHECKING:
@@ -544,6 +544,10 @@ class Solution(Generic[D]):
         in ``title.lang`` when it is given (``TitleData(lang="en")``), else in the language being
         drawn (Russian unless inside ``with geomcad.sheet.lang.language("en"):``). Each sheet
         shows itself as SVG in Jupyter (:mod:`geomcad.notebook`).
+
+        A sheet that cannot be drawn raises :class:`~geomcad.errors.SheetsFailed` once the
+        others are drawn: its ``sheets`` are those others, filled as sheets of the whole planned
+        document (Лист i of Листов n counting the failed one).
         """
         import geomcad.notebook  # noqa: F401  (sets the sheets' SVG display)
         from geomcad.construction.guard import guarded
@@ -552,7 +556,14 @@ class Solution(Generic[D]):
 
         lang = (title.lang if title is not None else "") or current()
         with guarded(f"drawing the sheets of {self.problem.id}"), language(lang):
-            out = list(self.problem.draw(self))
+            try:
+                out = list(self.problem.draw(self))
+            except SheetsFailed as exc:
+                # the sheets that were drawn, filled as the planned document (a failed sheet
+                # keeps its number), handed back on the error
+                fill_title_blocks([s for _, s in exc.sheets], title)
+                exc.sheets = exc.drawn()
+                raise
             fill_title_blocks([s for _, s in out], title)
         return out
 

@@ -13,6 +13,7 @@ from collections.abc import Mapping, Sequence
 from typing import TYPE_CHECKING, Any
 
 from geomcad.construction import Construction
+from geomcad.errors import GeomcadError, SheetsFailed
 from geomcad.linkage import parse
 from geomcad.linkage.solution import Solved, results, solve
 from geomcad.problem import Build, ParamValue, Problem, ResultSpec, Solution
@@ -120,6 +121,9 @@ def make_problem(file_id: str, data: dict[str, Any]) -> Problem[Solved]:
         return found
 
     def draw(sol: Solution[Solved]) -> list[tuple[str, Sheet]]:
+        """The file's sheets, each drawn on its own: one that fails leaves the others drawn
+        (:class:`~geomcad.errors.SheetsFailed` carries them, the failed one keeping its place
+        and number)."""
         from geomcad.sheet.linkage import kinematic_sheets
 
         solved = sol.data
@@ -127,11 +131,26 @@ def make_problem(file_id: str, data: dict[str, Any]) -> Problem[Solved]:
         from geomcad.sheet.linkage_forces import force_sheets  # sheets 2 and 3 (issue 15)
 
         named = code(file_id, str(data.get("title", "")))  # the file's own title, if any
-        kinematic = kinematic_sheets(solved, named)
-        sheets = kinematic + force_sheets(solved, named, first_no=len(kinematic) + 1)
+        failures: list[tuple[str, Exception]] = []
+        kinematic: list[tuple[str, Any]]
+        try:
+            kinematic = list(kinematic_sheets(solved, named))
+        except GeomcadError as exc:  # counted as one sheet (its plans sheet not known)
+            failures.append(("kinematic", exc))
+            kinematic = [("", None)]
+        sheets = kinematic + force_sheets(
+            solved, named, first_no=len(kinematic) + 1, failures=failures
+        )
         from geomcad.sheet.synthesis import with_sheet  # the synthesis' own sheet, first
 
-        return with_sheet(solved, named, sheets)
+        try:
+            sheets = with_sheet(solved, named, sheets)
+        except GeomcadError as exc:
+            failures.insert(0, ("synthesis", exc))
+            sheets = [("synthesis", None), *sheets]
+        if failures:
+            raise SheetsFailed(list(sheets), failures)
+        return sheets
 
     def motion(sol: Solution[Solved], frames: int) -> Frames:
         from geomcad.sheet.linkage import motion as linkage_motion

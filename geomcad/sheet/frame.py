@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import itertools
 import re
+from collections.abc import Sequence
 from dataclasses import dataclass, field, replace
 
 from geomcad.errors import ParameterError
@@ -149,16 +150,18 @@ def new_sheet(fmt: str, tb: TitleBlock, landscape: bool = True) -> tuple[Sheet, 
     return sheet, Frame(x0, y0, x1, y1, x1 - TB_WIDTH, y1 - TB_HEIGHT)
 
 
-def fill_title_blocks(sheets: list[Sheet], data: TitleData | None = None) -> None:
+def fill_title_blocks(sheets: Sequence[Sheet | None], data: TitleData | None = None) -> None:
     """Fill the title blocks of one document's sheets, in order: Лист i of Листов n, one
     designation (the user's, else the first sheet's), the user's people, places and date, and
-    графа 26. A sheet drawn without :func:`new_sheet`, or already filled, is left alone."""
+    графа 26. A sheet drawn without :func:`new_sheet`, or already filled, is left alone; a
+    ``None`` is a sheet of the document that could not be drawn: it keeps its number (the
+    others are numbered as in the whole planned document)."""
     data = data or TitleData()
-    blocks = [s.block for s in sheets if s.block is not None]
+    blocks = [s.block for s in sheets if s is not None and s.block is not None]
     if not blocks:
         return
     designation = escape(data.designation) or blocks[0].designation  # plain text, as with_user
-    n = len(blocks)
+    n = len(blocks) + sum(s is None for s in sheets)
     # one height for the names of the document's sheets: the least any of them needs
     scratch = Sheet(1.0, 1.0, "A4", "")
     title_h = min(
@@ -168,6 +171,9 @@ def fill_title_blocks(sheets: list[Sheet], data: TitleData | None = None) -> Non
     )  # fmt: skip
     i = 0
     for sheet in sheets:
+        if sheet is None:
+            i += 1  # the failed sheet's number
+            continue
         tb = sheet.block
         if tb is None:
             continue

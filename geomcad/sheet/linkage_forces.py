@@ -59,9 +59,10 @@ The words come from ``strings/<lang>/linkage_forces.toml``.
 
 from __future__ import annotations
 
+import contextvars
 import itertools
 import math
-from collections.abc import Iterator, Mapping, Sequence
+from collections.abc import Callable, Iterator, Mapping, Sequence
 from dataclasses import replace
 
 import numpy as np
@@ -69,7 +70,7 @@ import numpy.typing as npt
 
 from geomcad import tol
 from geomcad.construction.recorder import Step
-from geomcad.errors import ParameterError
+from geomcad.errors import GeomcadError, ParameterError
 from geomcad.forces import ForcePolygon
 from geomcad.geom import Vec
 from geomcad.linkage.analysis import analyse
@@ -365,55 +366,126 @@ def force_position(s: Solved) -> tuple[Position, Forces, int | None]:
 
 
 def force_sheets(
-    s: Solved, stem: str = "", first_no: int = 2, count: int = 0
+    s: Solved,
+    stem: str = "",
+    first_no: int = 2,
+    count: int = 0,
+    failures: list[tuple[str, Exception]] | None = None,
 ) -> list[tuple[str, Sheet]]:
     """Sheet 2 (where the file gives masses or loads) and sheet 3 (with ``[dynamics]``),
-    numbered from ``first_no`` of ``count`` sheets (0: these are the last ones)."""
+    numbered from ``first_no`` of ``count`` sheets (0: these are the last ones).
+
+    Each sheet is drawn on its own (review 14: the forces layout that failed cost a file all
+    its sheets): with ``failures`` given, a sheet that raises a :class:`GeomcadError` is
+    ``(name, None)`` in the list, keeping its number, and its error is appended to ``failures``;
+    without, the error propagates."""
     a = analyse(s)
-    lk = s.linkage
     mine = (a.forces is not None) + (a.flywheel is not None)
     count = count or first_no - 1 + mine
     designation = KIN_WORDS("designation", stem=stem or KIN_WORDS("stem"))
     out: list[tuple[str, Sheet]] = []
     no = first_no
-    fmts = sheet_formats(lk)
+    jobs: list[tuple[str, Callable[[int], Sheet]]] = []
     if a.forces is not None:
-        tree, z = force_layout(s)
-        d = z.start(_title(lk, WORDS("forces"), designation, no, count))
-        compose(d, tree, layout=z.layout)
-        for pl in z.layout:
-            if isinstance(pl.view, _Loaded):
-                pl.view.sheet_detail(d, pl)
-        main = [pl.scale for pl in z.layout if isinstance(pl.view, _Loaded)]
-        if d.sheet.block is not None and main and main[0] is not None:
-            # the title block's Масштаб: the main view's, the loaded mechanism's
-            d.sheet.block = replace(d.sheet.block, scale=main[0].ratio_text())
-        out.append(("forces", d.finish()))
-        no += 1
+        jobs.append(("forces", lambda n: _forces_sheet(s, designation, n, count)))
     if a.flywheel is not None:
         flywheel = a.flywheel
-        tree, z = fit(lambda h: (_sheet3(s, flywheel, h), {}), fmts)
-        d = z.start(_title(lk, WORDS("dynamics"), designation, no, count))
-        compose(d, tree, layout=z.layout)
-        out.append(("dynamics", d.finish()))
+        jobs.append(("dynamics", lambda n: _dynamics_sheet(s, flywheel, designation, n, count)))
+    for name, job in jobs:
+        try:
+            out.append((name, job(no)))
+        except GeomcadError as exc:
+            if failures is None:
+                raise
+            failures.append((name, exc))
+            out.append((name, None))  # type: ignore[arg-type]  # its place kept
+        no += 1
     return out
+
+
+def _forces_sheet(s: Solved, designation: str, no: int, count: int) -> Sheet:
+    """Sheet 2: the loaded mechanism, its groups, the force plans and Zhukovsky's lever."""
+    lk = s.linkage
+    tree, z = force_layout(s)
+    d = z.start(_title(lk, WORDS("forces"), designation, no, count))
+    compose(d, tree, layout=z.layout)
+    for pl in z.layout:
+        if isinstance(pl.view, _Loaded):
+            pl.view.sheet_detail(d, pl)
+    main = [pl.scale for pl in z.layout if isinstance(pl.view, _Loaded)]
+    if d.sheet.block is not None and main and main[0] is not None:
+        # the title block's Масштаб: the main view's, the loaded mechanism's
+        d.sheet.block = replace(d.sheet.block, scale=main[0].ratio_text())
+    return d.finish()
+
+
+def _dynamics_sheet(s: Solved, flywheel: Flywheel, designation: str, no: int, count: int) -> Sheet:
+    """Sheet 3: the flywheel by Wittenbauer's method."""
+    lk = s.linkage
+    tree, z = fit(lambda h: (_sheet3(s, flywheel, h), {}), sheet_formats(lk))
+    d = z.start(_title(lk, WORDS("dynamics"), designation, no, count))
+    compose(d, tree, layout=z.layout)
+    return d.finish()
+
+
+#: The formats the forces layout falls back on (:func:`force_layout`), set while it does.
+_FALLBACK: contextvars.ContextVar[tuple[str, ...] | None] = contextvars.ContextVar(
+    "forces_fallback", default=None
+)
+
+
+def _formats(lk: Linkage) -> tuple[str, ...]:
+    """The formats the forces sheet may take: the file's (:func:`sheet_formats`), or the
+    larger one it falls back on (:func:`force_layout`)."""
+    return _FALLBACK.get() or sheet_formats(lk)
+
+
+def fallback_formats(lk: Linkage) -> tuple[str, ...]:
+    """The next larger format after the largest the file's sheets may take (A1 → A0), where
+    there is one: the forces sheet's last resort before it fails (review 14)."""
+    order = sorted(FORMATS, key=lambda fm: FORMATS[fm][0] * FORMATS[fm][1])
+    largest = max(sheet_formats(lk), key=lambda fm: FORMATS[fm][0] * FORMATS[fm][1])
+    bigger = order[order.index(largest) + 1 :]
+    return (bigger[0],) if bigger else ()
 
 
 def force_layout(s: Solved) -> tuple[Tree, formats.Sized]:
     """Sheet 2's tree and its format and arrangement (:func:`_compose2`; for the size rules'
-    bench and the tests: the scales and the format without drawing)."""
+    bench and the tests: the scales and the format without drawing).
+
+    A layout that finds no room for a view on the file's formats (``ParameterError`` "has no
+    room on the sheet", review 14: the pump's plan of group (4, 5) at its position 4 cost the
+    file all its sheets) falls back on the next larger format (:func:`fallback_formats`, A1 →
+    A0) before it fails: a sheet larger than planned beats no sheet."""
+    try:
+        return _force_layout(s)
+    except ParameterError as exc:
+        more = fallback_formats(s.linkage) if exc.name == "layout" else ()
+        if not more:
+            raise
+        token = _FALLBACK.set(more)
+        try:
+            return _force_layout(s)
+        except ParameterError:
+            raise exc from None
+        finally:
+            _FALLBACK.reset(token)
+
+
+def _force_layout(s: Solved) -> tuple[Tree, formats.Sized]:
+    """:func:`force_layout` on the formats :func:`_formats` gives."""
     P, forces, k = force_position(s)
     waived = sweep_mm(s, crank_scale(s.linkage).k) > SWEEP_MAX_MM
     # where the sweep waives the crank's length, the mechanism sought at the kinematic sheet's μ_l
     kin: float | None = kinematic_scale(s).k if waived else None
-    found = _compose2(s, P, forces, k, sheet_formats(s.linkage), kin=kin)
+    found = _compose2(s, P, forces, k, _formats(s.linkage), kin=kin)
     if not found[1].layout.fits and kin is not None:
         # the kinematic sheet's μ_l keeps the sheet from fitting: the next coarser GOST steps
         # one by one, then the mechanism as large as the field draws it (a kinematic sheet at
         # 1:4 beside a forces sheet at 1:5, not at 1:10)
         for step in (*_coarser(kin), None):
             kin = step
-            found = _compose2(s, P, forces, k, sheet_formats(s.linkage), kin=kin)
+            found = _compose2(s, P, forces, k, _formats(s.linkage), kin=kin)
             if found[1].layout.fits:
                 break
     if not _crank_kept(found[1].layout):
@@ -425,7 +497,7 @@ def force_layout(s: Solved) -> tuple[Tree, formats.Sized]:
         # that fits
         shared = not any(isinstance(pl.view, _FreeBody) and pl.view.group == GROUPS_L
                          for pl in lay)  # fmt: skip
-        fmts = sheet_formats(s.linkage)
+        fmts = _formats(s.linkage)
         largest = max(fmts, key=lambda fm: FORMATS[fm][0] * FORMATS[fm][1])
         under = isinstance(found[0], Choice) and len(found[0].items) > ARRANGEMENTS
         own, _kept = _final2(s, P, forces, k, found[1], shared, largest, kin, True, under)
@@ -729,7 +801,7 @@ def _pinned(
     its tables whole, its plans' details in their boxes and the crank kept at the step; the
     first that fails ends the search (a finer one needs more room still)."""
     lk = s.linkage
-    fmts = sheet_formats(lk)
+    fmts = _formats(lk)
     largest = max(fmts, key=lambda fm: FORMATS[fm][0] * FORMATS[fm][1])
     best = found
     lay = found[1].layout
@@ -957,7 +1029,7 @@ def _held(
     mechanism at its rule's scale with the tables and polygons beside it, the groups and the
     lever under it; review 8: the rocking cylinder's 55 mm crank at 1:1), that arrangement kept
     (the joint search would pass it over for a larger score, the crank short again)."""
-    fmts = sheet_formats(s.linkage)
+    fmts = _formats(s.linkage)
     largest = max(fmts, key=lambda fm: FORMATS[fm][0] * FORMATS[fm][1])
     for held in (False, True):
         for shared in (True, False):
@@ -1479,7 +1551,7 @@ def _pinned_tree(
     and fell to 2:1, its crank 24 mm; down the left edge it holds). The boxes of the mechanism
     and of the groups are given, as large as their drawings at ``pin`` (margins and captions
     included): the search shares only the rest among the lever and the polygons."""
-    fmts = sheet_formats(s.linkage)
+    fmts = _formats(s.linkage)
     largest = max(fmts, key=lambda fm: FORMATS[fm][0] * FORMATS[fm][1])
     field = Field.of_format(largest, True)
     fw, fh = field.box[2] - field.box[0], field.box[3] - field.box[1]

@@ -32,13 +32,15 @@ def build_one(
     missing dependency).
 
     Errors come back as text (worker exceptions need not pickle): the files are then none, or
-    only the ``plain`` formats (SVG, DXF) when libcairo is missing.
+    only the ``plain`` formats (SVG, DXF) when libcairo is missing; a sheet that could not be
+    drawn comes back as its ``error:`` text beside the files of the problem's other sheets
+    (already prefixed with the problem id, review 14).
     """
     from geomcad import cli
     from geomcad.render import write_sheets
 
     try:
-        stem, sheets = cli._prepare(pid, options, workdir, review, sets=sets)
+        stem, sheets, failed = cli._prepare(pid, options, workdir, review, sets=sets)
     except (GeomcadError, cli._Failed) as exc:
         return pid, 0, [], str(exc), ""
     missing = ""
@@ -51,7 +53,7 @@ def build_one(
         except GeomcadError as exc:
             return pid, 0, [], str(exc), ""
         files = [(p.name, p.read_bytes()) for p in paths]
-    return stem, len(sheets), files, "", missing
+    return stem, len(sheets), files, failed, missing
 
 
 def write(out: Path, files: list[tuple[str, bytes]]) -> list[Path]:
