@@ -150,6 +150,26 @@ class SheetsFailed(GeomcadError):
         self.failures = failures
         super().__init__("; ".join(f"sheet {name}: {exc}" for name, exc in failures))
 
+    @staticmethod
+    def sheet_own(exc: Exception) -> bool:
+        """Whether ``exc`` is a failure of one sheet's drawing (a construction step of it, or its
+        layout finding no room), which leaves the document's other sheets drawn; an error of the
+        input (a file key, a parameter the user gave: ``sheet.format``, a point name the font
+        cannot letter …) refuses the whole document, as a solve would, and writes nothing.
+
+        >>> SheetsFailed.sheet_own(ParameterError("layout", "x", "has no room on the sheet"))
+        True
+        >>> SheetsFailed.sheet_own(ParameterError("sheet.format", "B5", "must be one of A4, A1"))
+        False
+        """
+        if isinstance(exc, ConstructionError):
+            return True
+        return (
+            isinstance(exc, ParameterError)
+            and not isinstance(exc, FileKeyError)
+            and exc.name == "layout"
+        )
+
     def drawn(self) -> list[tuple[str, Any]]:
         """The sheets that were drawn, in order (the failed ones left out)."""
         return [(n, s) for n, s in self.sheets if s is not None]

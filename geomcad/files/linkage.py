@@ -136,6 +136,8 @@ def make_problem(file_id: str, data: dict[str, Any]) -> Problem[Solved]:
         try:
             kinematic = list(kinematic_sheets(solved, named))
         except GeomcadError as exc:  # counted as one sheet (its plans sheet not known)
+            if not SheetsFailed.sheet_own(exc):
+                raise  # an error of the input: the whole file refused
             failures.append(("kinematic", exc))
             kinematic = [("", None)]
         sheets = kinematic + force_sheets(
@@ -146,6 +148,8 @@ def make_problem(file_id: str, data: dict[str, Any]) -> Problem[Solved]:
         try:
             sheets = with_sheet(solved, named, sheets)
         except GeomcadError as exc:
+            if not SheetsFailed.sheet_own(exc):
+                raise
             failures.insert(0, ("synthesis", exc))
             sheets = [("synthesis", None), *sheets]
         if failures:

@@ -70,7 +70,7 @@ import numpy.typing as npt
 
 from geomcad import tol
 from geomcad.construction.recorder import Step
-from geomcad.errors import GeomcadError, ParameterError
+from geomcad.errors import GeomcadError, ParameterError, SheetsFailed
 from geomcad.forces import ForcePolygon
 from geomcad.geom import Vec
 from geomcad.linkage.analysis import analyse
@@ -395,7 +395,7 @@ def force_sheets(
         try:
             out.append((name, job(no)))
         except GeomcadError as exc:
-            if failures is None:
+            if failures is None or not SheetsFailed.sheet_own(exc):
                 raise
             failures.append((name, exc))
             out.append((name, None))  # type: ignore[arg-type]  # its place kept
