@@ -14,16 +14,13 @@ import tomllib
 from pathlib import Path
 
 import pytest
-from shapely import affinity
-from shapely.geometry import LineString, Point, Polygon
-from shapely.geometry import box as sbox
+from shapely.geometry import LineString, Point
 from shapely.strtree import STRtree
 
 from geomcad.linkage import parse
 from geomcad.linkage.solution import Solved, solve
 from geomcad.sheet.linkage import _arranged, kinematic_sheets
 from geomcad.sheet.model import Polyline, Sheet, TextItem
-from geomcad.sheet.text import box
 from geomcad.sheet.views import PlanView
 
 ROOT = Path(__file__).resolve().parent
@@ -102,43 +99,3 @@ def test_each_acceleration_plan_is_captioned_right_over_it(
         top = min(v.p(q)[1] for q in pl.view.plan.points.values())
         gap = top - (pl.box[1] + pl.view.title_height)
         assert gap <= CAPTION_GAP_MM, (caption, gap)
-
-
-#: The letters and signs with a tail below the baseline, and its depth (share of the cap
-#: height, GOST 2.304's 3/10 h): the box a label's letters take is theirs too.
-TAILS = set("gjpqy,;()ρφдруфцщ")
-TAIL = 0.3
-#: Half a thin line's width (mm).
-STROKE_MM = 0.1
-
-
-def _ink(t: TextItem) -> Polygon:
-    """A label's letters' box on the paper, their tails below the baseline included."""
-    w, up, down = box(t.runs, t.height)
-    if any(ch in TAILS for r in t.runs if r.shift == "base" for ch in r.text):
-        down = max(down, TAIL * t.height)
-    p = sbox(t.at[0], t.at[1] - up, t.at[0] + w, t.at[1] + down)
-    return affinity.rotate(p, -t.angle, origin=t.at) if t.angle else p
-
-
-@pytest.mark.parametrize("name", ["ellipsograph", "slider-crank"])
-def test_no_plan_letter_stands_on_a_construction_line(
-    drawn: dict[str, tuple[Solved, list[tuple[str, Sheet]]]], name: str
-) -> None:
-    """The plans' letters (the pole's "p, o, b, d") are not run through by their construction
-    lines, the letters' tails included (review 14: positions 0 and 6 of the ellipsograph)."""
-    crossed = []
-    for _, sheet in drawn[name][1]:
-        lines = [
-            LineString(it.points)
-            for it in sheet.items
-            if isinstance(it, Polyline) and it.role == "construction" and len(it.points) >= 2
-        ]
-        tree = STRtree(lines)
-        for t in sheet.items:
-            if not (isinstance(t, TextItem) and t.role == "label"):
-                continue
-            # a thin line's ink is STROKE_MM either side of its centre line
-            ink = _ink(t).buffer(STROKE_MM)
-            crossed += [t.text for j in tree.query(ink, predicate="intersects")]
-    assert not crossed, crossed

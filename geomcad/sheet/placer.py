@@ -649,20 +649,6 @@ BROKEN_ROLES = frozenset({"thin", "construction", "centre", "extreme", "locus", 
 #: The gap (mm) a broken line keeps from the label's box; a piece left shorter than it is
 #: dropped (a crumb of a line, no line).
 BREAK_PAD = 0.5
-#: The letters and signs that reach below the baseline (the box of :func:`box` stops at it) …
-DESCENDERS = frozenset("gjpqy,;()[]{}|βγζημξρςφχψдзруфцщДЦЩ")
-#: … by this share of the cap height (GOST 2.304: a lowercase letter's tail, 3/10 of h).
-DESCENT = 0.3
-
-
-def ink_outline(t: TextItem, pad: float = 0.0) -> Polygon:
-    """:func:`text_outline` with the tails of the letters that reach below the baseline (review
-    14: the plans' "p, o, c" and "p, o, b, d" stood on their pole's construction line, which
-    ran through the tails of p and the commas, under the box the line was broken at)."""
-    _, up, down = box(t.runs, t.height)
-    if any(ch in DESCENDERS for r in t.runs if r.shift == "base" for ch in r.text):
-        down = max(down, DESCENT * t.height)
-    return _turned_box(t.at, t.width, up, down, t.angle, pad)
 
 
 def break_under_labels(sheet: Sheet) -> None:
@@ -674,8 +660,9 @@ def break_under_labels(sheet: Sheet) -> None:
     labels = [t for t in sheet.items if isinstance(t, TextItem) and t.role == "label"]
     if not labels:
         return
-    grown = [ink_outline(t, BREAK_PAD) for t in labels]
-    tree = STRtree(np.array(grown, dtype=object))
+    own = [text_outline(t) for t in labels]
+    grown = [text_outline(t, BREAK_PAD) for t in labels]
+    tree = STRtree(np.array(own, dtype=object))
     out: list[Item] = []
     for it in sheet.items:
         if not (
