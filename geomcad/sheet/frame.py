@@ -21,6 +21,7 @@ import re
 from collections.abc import Sequence
 from dataclasses import dataclass, field, replace
 
+from geomcad import tol
 from geomcad.errors import ParameterError
 from geomcad.sheet.lang import Lang, Words, current
 from geomcad.sheet.model import XY, Polyline, Sheet, TextItem
@@ -322,22 +323,22 @@ def fit_text(
         # "Шарипова Л. Р." at 1.8 mm in Разраб. where it fits the column at 2.5 mm condensed),
         # then, the lines in as few as the cell holds, their width factor (GOST 2.304's
         # narrow type A: "Никифоров С. Ю.", "Ахмедова-Лунд С. И." in the 23 mm column)
-        modes = (1.0, "narrow", "stretch") if hh == HEIGHTS[0] else (1.0,)
+        modes = ("plain", "narrow", "stretch") if hh == HEIGHTS[0] else ("plain",)
         for mode, (n_lines, whole) in ((m, t) for m in modes for t in tries):
             total = hh + (n_lines - 1) * lead
             if total > room_h:
                 continue
             lines = _by_sentences(markup, n_lines, hh, room_w / (MIN_STRETCH if mode ==
                                   "stretch" else 1.0), whole)  # fmt: skip
-            if mode != 1.0:
+            if mode != "plain":
                 lines = [condensed(ln) for ln in lines]
             if not lines:
                 continue
             wide = max(box(parse(ln), hh)[0] for ln in lines)
             # a condensed line keeps STRETCH_CLEAR more from the cell's (thick) lines
-            room = room_w - (2.0 * STRETCH_CLEAR if mode != 1.0 else 0.0)
+            room = room_w - (2.0 * STRETCH_CLEAR if mode != "plain" else 0.0)
             k = min(1.0, room / wide) if mode == "stretch" else 1.0
-            if wide * k <= room * (1.0 + 1e-9) and k >= MIN_STRETCH:
+            if wide * k <= room * (1.0 + tol.DERIVED) and k >= MIN_STRETCH:
                 # a left-set text 1 mm in from the cell's line (its clearance where more), or
                 # centred where its width leaves less room either side
                 indent = min(max(c, 1.0), (x1 - x0 - wide * k) / 2.0)

@@ -54,6 +54,16 @@ def nice_step(raw: float) -> float:
     return 10.0 ** (e + 2)
 
 
+def nice_steps(raw: float, n: int) -> list[float]:
+    """The ``n`` finest nice factors from :func:`nice_step` of ``raw`` up, each the next step of
+    the series (its steps lie at least 1.25 apart, so 1.001 × a step is past it): the choices a
+    curve's factor is tried at together with others' (stacked diagrams)."""
+    ks = [nice_step(raw)]
+    while len(ks) < n:
+        ks.append(nice_step(ks[-1] * 1.001))
+    return ks
+
+
 def nice_step_below(raw: float) -> float:
     """The largest 1, 2, 2.5, 4 or 5 × 10^n that is ≤ ``raw`` (> 0): the coarsest factor that
     still draws ``raw`` units at least 1 mm (a curve's span at least its least height)."""

@@ -111,7 +111,7 @@ from geomcad.sheet.graph import (
     FACTOR_PLACES,
     Axis,
     Graph,
-    nice_step,
+    nice_steps,
     thousands_power,
 )
 from geomcad.sheet.insets import Insets, _seg_dist, one_scale_per_inset
@@ -3015,13 +3015,7 @@ def stack_factors(ranges: Sequence[float], room: float, first_tallest: bool = Tr
     ``room`` together with the largest least height, then the least spread of heights (one
     height), then the largest sum; with ``first_tallest``, where any choice allows it, the
     first diagram (M_пр, the one the student integrates) at least as tall as each other."""
-    options = []
-    for r in ranges:
-        r = r if r > 0.0 else 1.0
-        ks = [nice_step(r / max(room, 1.0))]
-        while len(ks) < STACK_CHOICES:
-            ks.append(nice_step(ks[-1] * (1.0 + 1e-3)))
-        options.append(ks)
+    options = [nice_steps((r if r > 0.0 else 1.0) / max(room, 1.0), STACK_CHOICES) for r in ranges]
     best: tuple[tuple[float, ...], list[float]] | None = None
     for combo in itertools.product(*options):
         h = [(r if r > 0.0 else 1.0) / k for r, k in zip(ranges, combo, strict=True)]
@@ -3084,7 +3078,7 @@ class _Stacked(View):
             # the box as tall as the plot at its factor (a box a hair taller keeps the
             # factor: the plot is range / factor exactly), the spare room under it
             m = dg.margin
-            box = (x0, top, x1, top + p * (1.0 + 1e-9) + self._pad(dg))
+            box = (x0, top, x1, top + p * (1.0 + tol.DERIVED) + self._pad(dg))
             dg.draw(d, Placed(dg, box, (box[0] + m, box[1] + m, box[2] - m, box[3] - m)))
             top = box[3] + spare + self.gap
 

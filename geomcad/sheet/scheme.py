@@ -18,6 +18,7 @@ import math
 from collections.abc import Collection, Mapping, Sequence
 from dataclasses import dataclass
 
+from geomcad import tol
 from geomcad.geom import PointLike, Vec, vec
 from geomcad.sheet import symbols
 from geomcad.sheet.drawing import JOINT_R, Viewport
@@ -386,7 +387,7 @@ def _blocked(
         for a, b in itertools.pairwise(pl):
             sa, sb = (a - g).dot(n), (b - g).dot(n)
             ta, tb = (a - g).dot(u), (b - g).dot(u)
-            if abs(sb - sa) <= 1e-12:
+            if abs(sb - sa) <= tol.SHEET_MM:  # the segment along the band
                 if s0 <= sa <= s1:
                     out.append((min(ta, tb), max(ta, tb)))
                 continue

@@ -19,7 +19,7 @@ import numpy.typing as npt
 
 from geomcad.sheet.compose import Placed, View
 from geomcad.sheet.drawing import Drawing
-from geomcad.sheet.graph import Axis, Graph, nice_step
+from geomcad.sheet.graph import Axis, Graph, nice_steps
 from geomcad.sheet.lang import current
 from geomcad.sheet.model import Polyline
 
@@ -60,13 +60,7 @@ def row_factors(ranges: Sequence[float], span: float, pad: float = ROW_PAD_MM) -
     choice whose curves, stacked with their rows' room ``pad``, fill ``span`` mm with the
     largest least height."""
     total = span - pad * len(ranges)
-    options = []
-    for r in ranges:
-        r = r if r > 0.0 else 1.0
-        ks = [nice_step(r / max(total, 1.0))]
-        while len(ks) < CHOICES:
-            ks.append(nice_step(ks[-1] * 1.001))
-        options.append(ks)
+    options = [nice_steps((r if r > 0.0 else 1.0) / max(total, 1.0), CHOICES) for r in ranges]
     best: tuple[tuple[float, float], list[float]] | None = None
     for combo in itertools.product(*options):
         h = [(r if r > 0.0 else 1.0) / k for r, k in zip(ranges, combo, strict=True)]
