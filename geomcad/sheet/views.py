@@ -1189,7 +1189,8 @@ def details_k(
     R^τ34 = 17 N would have wanted 2 N/mm; at 10 N/mm G4 is 15 mm, Ф4 9 mm); those too short
     are drawn in a detail of the detail (:func:`plan_details`). In the ``last`` tier (one
     detail μ_F per plan, :data:`DETAIL_TIERS`) none is: the μ_F is the finest within both
-    limits, which leaves the fewest of them too short.
+    limits where that draws more of them at least :data:`LISTED_MM` long (fewer are named
+    under the caption) than the coarser one would.
 
     Order of lengths (review 9, item 6: crank_rocker's detail drew Φ4 = 25 N 12.5 mm beside
     the plan's G5 = 108 N at 10.8 mm): where the coarsest factor that draws the shortest
@@ -1208,10 +1209,18 @@ def details_k(
         room = bound - 2.0 * STUB_MM
         if bound > 0.0 and room > 0.0 and size > 0.0:
             kd = max(kd, nice_factor(size, room, "F").k)
-    if kd > readable * (1.0 + tol.REL_LENGTH) and not last:
+    if kd > readable * (1.0 + tol.REL_LENGTH):
         shown = [m for m in every if m >= DETAIL_MM * kd * (1.0 - tol.REL_LENGTH)]
         if shown:
-            kd = max(kd, detail_k(shown, k_ref))
+            coarse = max(kd, detail_k(shown, k_ref))
+
+            def listed(k: float) -> int:
+                return sum(m < LISTED_MM * k * (1.0 - tol.REL_LENGTH) for m in every)
+
+            # the last tier keeps the finer one only where it draws more of them as arrows
+            # (a detail larger for nothing pushed the clipper's link 4 plan to 24 mm)
+            if not last or listed(coarse) <= listed(kd):
+                kd = coarse
     return kd
 
 
