@@ -6,7 +6,10 @@ states (in its caption or in a detail's), none is "не показан" under it
 of a detail is at least two arrowheads long, each detail is inside its plan's box; a detail
 of a detail is marked on the detail it is taken from. Review 9: "на выносном элементе Л не
 показаны (короче 7 мм): Rτ34 = 13,31 Н, G4 = 29,43 Н, Φ4 = 17,7 Н" (the shaper's group
-(4, 5)), a compressor's given F_B with G2, G3 named instead of drawn."""
+(4, 5)), a compressor's given F_B with G2, G3 named instead of drawn. Review 14 (fix 2): a
+plan has ONE detail μ_F (its three tiers read as four drawings); what that μ_F draws shorter
+than one arrowhead (loads and R^τ components of a few tenths of a per cent of the plan's
+largest) is named with its value under the caption, never a reaction."""
 
 from __future__ import annotations
 
@@ -21,7 +24,7 @@ from test_plan_detail_scale import FILES
 import geomcad
 from geomcad.sheet.drawing import SHORT_MM
 from geomcad.sheet.model import TextItem
-from geomcad.sheet.views import Polygon, _zero, nice_below
+from geomcad.sheet.views import LISTED_MM, Polygon, _zero, main_arrows, nice_below
 
 #: A stated μ_F: "μF = 0,5 Н/мм" or its markup "μ_F = …" (the value, decimal comma).
 MU_F = re.compile(r"μ_?F = ([\d\s]+(?:,\d+)?)")
@@ -75,22 +78,31 @@ def test_every_term_of_a_plan_is_an_arrow_at_a_stated_scale(
     path: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
     """Per plan: each term of its ΣF = 0 is an arrow |F|/μ_F long in its direction at a μ_F
-    the plan states; no line under its caption says a term is not shown; every arrow of a
-    detail is at least SHORT_MM long and every detail keeps inside the plan's box."""
+    the plan states, but those its one detail μ_F draws shorter than one arrowhead (review
+    14: one detail μ_F per plan, no second tier; :data:`views.LISTED_MM`), which are named
+    with their values on the line under the caption; no reaction is among them (a reaction
+    is an arrow of the plan); every other arrow of a detail is at least LISTED_MM long and
+    every detail keeps inside the plan's box."""
     plans = _plans(path, monkeypatch)
     assert plans
     for p, at, items, scaled in plans:
         poly = p.layers[-1][0]
         texts = [it.text for it in items if isinstance(it, TextItem)]
         where = (path.stem, p.title)
-        assert not [t for t in texts if "не показан" in t], (where, texts)
+        listed = {n for dt in p.details for n in dt.listed} | set(p.lined)
+        for n in listed:  # too short at the one detail μ_F: named, never a reaction
+            assert n not in main_arrows(poly), (where, n)
+            assert any(poly[n].magnitude / dt.k < LISTED_MM for dt in p.details
+                       if n in dt.run) or n in p.lined, (where, n)  # fmt: skip
+        if not listed:
+            assert not [t for t in texts if "не показан" in t], (where, texts)
         assert not p.omitted, where  # nothing left out as negligible either
         # its caption (drawn by the sheet's layout) states the μ_F drawn; its details' theirs
         stated = _stated(texts) | {at.viewport.scale.k}
         assert _stated([p.caption(at.viewport.scale)]) == {at.viewport.scale.k}, where
         zero = _zero(poly)
         for pv in poly.vectors:
-            if pv.magnitude <= zero:
+            if pv.magnitude <= zero or pv.name in listed:
                 continue
             hits = [
                 (a, b, sc)
@@ -107,9 +119,10 @@ def test_every_term_of_a_plan_is_an_arrow_at_a_stated_scale(
         v = at.viewport
         for dt in p.details:
             for n in dt.run:
-                if poly[n].magnitude > zero and n not in dt.listed:
+                # (a reaction is an arrow however short, of its plan and in its detail)
+                if poly[n].magnitude > zero and n not in dt.listed and n not in main_arrows(poly):
                     finer = any(d.host is dt and n in d.run for d in p.details)
-                    assert finer or poly[n].magnitude / dt.k >= SHORT_MM * (1.0 - 1e-9), (
+                    assert finer or poly[n].magnitude / dt.k >= LISTED_MM * (1.0 - 1e-9), (
                         where, dt.letter, n, poly[n].magnitude / dt.k)  # fmt: skip
             (sx0, sy0), (sx1, sy1) = v.p((dt.slot[0], dt.slot[1])), v.p((dt.slot[2], dt.slot[3]))
             assert x0 - 0.5 <= min(sx0, sx1) and max(sx0, sx1) <= x1 + 0.5, (where, dt.letter)

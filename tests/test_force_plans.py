@@ -31,6 +31,7 @@ from geomcad.sheet.text import parse
 from geomcad.sheet.views import (
     DETAIL_LEAST,
     DETAIL_MAX_MM,
+    LISTED_MM,
     Polygon,
     detail_spots,
     is_sliver,
@@ -91,16 +92,15 @@ def test_regroup_lays_the_short_loads_off_as_one_run() -> None:
     assert regroup(new, k) is new
 
 
-def test_details_are_in_tiers_one_scale_each_and_show_every_vector() -> None:
+def test_details_are_at_one_scale_and_name_what_it_leaves_short() -> None:
     """A run of forces over three decades (review 7, item 4: plans with details at
-    4 / 0,5 / 0,05 / 1 N/mm; review 9, item 1: "на выносном элементе Л не показаны: Rτ34,
-    G4, Φ4"): the details taken from the plan are all at ONE stated μ_F, at least
-    DETAIL_LEAST times the polygon's, with the longest at most DETAIL_MAX_MM; the vectors
-    still too short there are drawn in details beside those, at one finer μ_F, taken from
-    the same spot of the plan (their own letters on its circle: one detail level, review 12):
-    one μ_F per tier. Every vector is an arrow at least
-    two arrowheads long at a μ_F the plan states; nothing is named as not shown; each circle
-    carries one letter."""
+    4 / 0,5 / 0,05 / 1 N/mm; review 14, fix 2: the knuckle press's six details at three more
+    μ_F round one vertex): the details taken from the plan are all at ONE stated μ_F, at
+    least DETAIL_LEAST times the polygon's, with the longest at most DETAIL_MAX_MM; none is
+    taken from a detail. Every vector is an arrow at a μ_F the plan states, at least one
+    arrowhead (LISTED_MM) long in a detail, but those the details' μ_F draws shorter than
+    that: lines in the detail, named with their values on a line under the caption (review 9
+    drew them in a second tier of details); each circle carries one letter."""
     vs = chain([5000.0, 3.0, 40.0, 400.0, 7.0], ["F0", "F1", "F2", "F3", "F4"])
     vs.append(PlanVector("R", vs[-1].head, Vec(0.0, 0.0)))
     poly = ForcePolygon(Vec(0.0, 0.0), tuple(vs), ())
@@ -110,52 +110,36 @@ def test_details_are_in_tiers_one_scale_each_and_show_every_vector() -> None:
     sheet = d.finish()
     k = lay[p].scale.k
     assert p.details and len({dt.letter for dt in p.details}) == len(p.details)
-    first = [dt for dt in p.details if dt.tier == 1]
-    second = [dt for dt in p.details if dt.tier == 2]
-    assert first and second and len(first) + len(second) == len(p.details)
-    assert len({dt.k for dt in first}) == 1 and len({dt.k for dt in second}) == 1
-    assert all(dt.host is None for dt in first) and second[0].k < first[0].k
-    assert all(dt.host is None or dt.host in first for dt in second)
-    assert any(dt.host is not None for dt in second)  # shows what a detail of tier 1 leaves short
+    assert all(dt.tier == 1 and dt.host is None for dt in p.details)
+    assert len({dt.k for dt in p.details}) == 1
+    kd = p.details[0].k
+    assert kd * DETAIL_LEAST <= k * (1.0 + 1e-9)
     drawn = p.layers[-1][0]
-    runs = [n for dt in first for n in dt.run]
-    assert len(runs) == len(set(runs))  # each short vector in exactly one detail of a tier
+    runs = [n for dt in p.details for n in dt.run]
+    assert len(runs) == len(set(runs))  # each short vector in exactly one detail
+    listed = {n for dt in p.details for n in dt.listed} | set(p.lined)
     for dt in p.details:
-        # at least DETAIL_LEAST times finer than the drawing it is taken from, or as coarse
-        # as keeps its arrows no longer than that one's shortest (review 9, item 6)
-        from_k = k if dt.tier == 1 else first[0].k
-        assert dt.k < from_k
-        if dt.k * DETAIL_LEAST > from_k * (1.0 + 1e-9):
-            assert dt.tier == 2
-            shortest = min(drawn[n].magnitude / d.k for d in first for n in d.run
-                           if drawn[n].magnitude / d.k >= SHORT_MM * (1.0 - 1e-9))  # fmt: skip
-            assert max(drawn[n].magnitude / dt.k for n in dt.run) <= shortest * (1.0 + 1e-9)
         assert max(drawn[n].magnitude for n in dt.run) / dt.k <= DETAIL_MAX_MM
-        assert not dt.listed
-        # a vector short in a detail is in a detail taken from it
         for n in dt.run:
-            if drawn[n].magnitude / dt.k < SHORT_MM * (1.0 - 1e-9):
-                assert any(d2.host is dt and n in d2.run for d2 in p.details), (dt.letter, n)
-    assert not p.noted and not p.lined
-    assert not [t.text for t in sheet.texts() if "не показан" in t.text]
+            assert (drawn[n].magnitude / dt.k < LISTED_MM) == (n in dt.listed), (dt.letter, n)
+    assert listed == {"F1"}  # 3 N at the details' μ_F: the one vector a span of 10³ leaves
+    notes = [t.text for t in sheet.texts() if "не показан" in t.text]
+    assert len(notes) == 1 and "F" in notes[0]
     arrows = [(math.dist(t, h), sc.k) for t, h, sc in sheet.scaled]
-    assert min(mm for mm, _ in arrows) >= SHORT_MM * (1.0 - 1e-9)
-    assert {sc for _, sc in arrows} <= {k, first[0].k, second[0].k}
+    assert {sc for _, sc in arrows} <= {k, kd}
+    assert min(mm for mm, sc in arrows if sc == kd) >= LISTED_MM * (1.0 - 1e-9)
     for pv in poly.vectors:
-        assert any(math.isclose(mm * kd, pv.magnitude, rel_tol=1e-6) for mm, kd in arrows), pv
+        if pv.name not in listed:
+            assert any(math.isclose(mm * s, pv.magnitude, rel_tol=1e-6) for mm, s in arrows), pv
     captions = [t.text for t in sheet.texts() if "(μ" in t.text]
     assert len(captions) == len(p.details)
-    # each circle on the plan carries the letter of one detail; one detail level (review 12,
-    # item 1): the finer tier is taken from the same spot of the plan, its letter on that
-    # circle, never a circle on a detail
     v = lay[p].viewport
     assert v is not None
-    on_plan = [dt for dt in p.details if dt.host is None]
-    spots = detail_spots(v, drawn, on_plan)
-    assert len(spots) == len(on_plan)
+    spots = detail_spots(v, drawn, p.details)
+    assert len(spots) == len(p.details)
     assert not any(", " in letters for _, _, letters in spots)
     circles = [it for it in sheet.items if isinstance(it, CircleItem) and not it.fill]
-    assert len(circles) == len(on_plan)
+    assert len(circles) == len(p.details)
 
 
 def test_runs_at_one_spot_of_the_plan_are_one_detail_with_one_letter() -> None:

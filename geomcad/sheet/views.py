@@ -52,6 +52,7 @@ from geomcad.sheet.compose import (
     text_width,
 )
 from geomcad.sheet.drawing import (
+    ARROW_LEN,
     LINE_SPACING,
     SHORT_MM,
     Drawing,
@@ -258,6 +259,9 @@ def draw_polygon(
     found = set(found)
     inward = set(inward)
     in_detail = {n for dt in details for n in dt.run} | set(lines)
+    # a reaction is an arrow of the plan at its μ_F, however short, where a detail shows it
+    # enlarged too (review 14: the gang saw's crank plan had R₄₁, 16 750 N, only in its detail)
+    main = main_arrows(poly)
     zero = _zero(poly)
     omit = set(omit)
     # a resultant along its long component (the other too short to part them): one line
@@ -296,13 +300,13 @@ def draw_polygon(
         text = (names or {}).get(pv.name, pv.name)
         if pv.name in also:  # its resultant drawn over it: "Rⁿ₃₄ ≈ R₃₄"
             text = f"{text} ≈ {(names or {}).get(also[pv.name], also[pv.name])}"
-        if pv.name in in_detail:
+        if pv.name in in_detail and pv.name not in main:
             # its line keeps the chain whole (its arrow, named, is drawn in its detail: the
             # circle round it is clear of labels)
             v.seg(tail, head, "construction")
             continue
         else:
-            if v.mm(pv.magnitude) < SHORT_MM:
+            if v.mm(pv.magnitude) < SHORT_MM and pv.name not in in_detail:
                 short.append(pv.name)
             v.arrow(tail, head, "result" if pv.name in found else role)
         if s.norm > 0.0:
@@ -329,10 +333,8 @@ def draw_polygon(
             # centres' R_12 ended between R^τ_12 and G_2 set apart at their vertex)
             ends = _component_shifts(r, drawn, shift, zero)
             r = PlanVector(r.name, r.tail + ends[0], r.head + ends[1])
-        if v.mm(r.magnitude) < SHORT_MM:  # its components in a detail: its line, named
-            v.seg(r.tail, r.head, "construction")
-        else:
-            v.arrow(r.tail, r.head, "result")
+        # (its components may be in a detail: the reaction itself is an arrow of the plan)
+        v.arrow(r.tail, r.head, "result")
         n = (r.head - r.tail).perp().unit()
         if n.dot(corner - r.tail) > 0.0:
             n = -n
@@ -360,6 +362,22 @@ def draw_polygon(
                                          circle=False, taken=taken))  # fmt: skip
     v.dot(poly.pole)
     return short
+
+
+#: A reaction's name (R_{12}, R_{1,12}), not a component's (R^n_{12}: :data:`_COMPONENT`).
+_REACTION = re.compile(r"R_.+")
+
+
+def main_arrows(poly: ForcePolygon) -> set[str]:
+    """The vectors of ``poly`` drawn as arrows of the plan at its own μ_F however short, also
+    where a detail shows them enlarged: its reactions (R₁₂; those it finds, which close it,
+    and those of other links laid off as known loads), and the resultants of its split
+    reactions (R₁₂ of R^n₁₂, R^τ₁₂, drawn in :func:`draw_polygon` whatever its length). A
+    teacher reads the plan's equation on the plan: a reaction only in a detail leaves the
+    polygon unclosed on the plan (review 14, fix 2: the gang saw's crank plan, R₄₁ only in
+    its detail; the knuckle press's R₀₅). Only loads (G, Φ, F) and a split reaction's
+    components are drawn only in a detail."""
+    return {pv.name for pv in poly.vectors if _REACTION.fullmatch(pv.name)}
 
 
 def _component_shifts(
@@ -998,25 +1016,28 @@ def plan_details(
     plans with details at 4 / 0,5 / 0,05 / 1 N/mm read as four drawings). A run is never cut
     into pieces (each circle on the plan marks one run, lettered with one letter).
 
-    Every term of the plan's ΣF = 0 is drawn as an arrow at a stated μ_F (review 9, item 1:
-    "на выносном элементе Л не показаны: Rτ34, G4, Φ4" left the polygon unclosed on the
-    sheet). The vectors of a run still shorter than two arrowheads at the details' μ_F (a
-    run spanning more than :data:`DETAIL_MAX_MM` / :data:`DETAIL_MM`, or a detail held to
-    its plan's size) are drawn as lines in it, and each run of them again, enlarged, in a
-    detail beside it at one finer μ_F for all the details of that tier, stated in its
-    caption, taken from the same spot of the plan: one detail level (review 12, item 1: the
-    slotter's Ц → Ш → Я, three deep), its letter on the plan's circle beside the first's,
-    never a circle on a detail; it joins the lines of the vectors it is chained to, so the
-    run ends on the sheet where the drawing before it continues. A run with nothing
-    to show at a tier's μ_F is taken to the next tier from the same spot. Only past
-    :data:`DETAIL_TIERS` tiers (a span over 10⁴: never with the negligible ``floor`` of a
-    forces sheet) are vectors left as lines, :attr:`Detail.listed`: named with their values
-    under the plan's caption; a run whose every vector would be listed then makes no detail:
-    its vectors are added to ``dropped`` (drawn as lines on the plan, named under its
-    caption; where ``dropped`` is None, it is a detail all the same). The vectors up to
-    ``floor`` (negligible) are in none. ``bound`` (mm, 0: none): no detail is drawn larger
-    than that (its plan's size: a detail never outgrows its plan), its joined lines
-    included.
+    One μ_F of details per plan (:data:`DETAIL_TIERS` = 1; review 14, fix 2: the knuckle
+    press's group (4, 5), a sliver with six details at three more μ_F round one vertex; review
+    12, item 1: the slotter's Ц → Ш → Я): a teacher reads a plan as one polygon at its μ_F and
+    its details at one finer μ_F, each taken from the plan (its circle there, one letter),
+    never from a detail; a detail joins the lines of the vectors its run is chained to, so the
+    run ends on the sheet where the plan continues. Every reaction of the plan is an arrow of
+    the plan itself at the plan's μ_F (:func:`main_arrows`; drawn in its detail too), so the
+    plan's equation closes on the plan; a run of reactions only, each at least
+    :data:`LISTED_MM` long on the plan, makes no detail. In the details a vector is an arrow
+    where it is at least :data:`LISTED_MM` (one arrowhead) long; the shorter ones (a run
+    spanning more than :data:`DETAIL_MAX_MM` / :data:`LISTED_MM`, or a detail held to its
+    plan's size: loads and R^τ components under about 1,5 % of the plan's largest over the
+    round's 39 files) are lines in it, :attr:`Detail.listed`: named with their values under
+    the plan's caption (review 9 wanted every term an arrow, which took up to three tiers of
+    details; review 14 ranks one μ_F above the arrows of loads of a few newtons). A run whose
+    every vector would be listed makes no detail: its vectors are added to ``dropped`` (drawn
+    as lines on the plan, named under its caption; where ``dropped`` is None, it is a detail
+    all the same). With more tiers (:data:`DETAIL_TIERS` over 1) the listed vectors of a tier
+    are drawn again in a detail beside it at the next finer μ_F, lettered on the same circle
+    of the plan. The vectors up to ``floor`` (negligible) are in none. ``bound`` (mm, 0:
+    none): no detail is drawn larger than that (its plan's size: a detail never outgrows its
+    plan), its joined lines included.
 
     A sliver's loads (:func:`sliver_loads`: the vectors between its two balanced forces,
     drawn as one line) are one run however long, where a detail holds them.
@@ -1026,6 +1047,15 @@ def plan_details(
     if loads * DETAIL_LEAST <= DETAIL_MAX_MM * k_ref:  # a detail of them holds them
         limit = max(limit, loads)
     runs = _one_spot(poly, short_runs(poly.vectors, limit, floor=floor), k_ref)
+    # a run of reactions only, each an arrow at least one arrowhead long on the plan, is
+    # read there (:func:`main_arrows`): no detail repeats it (review 14: the knuckle press's
+    # group (4, 5), a detail of R₀₅ alone beside its arrow)
+    main = main_arrows(poly)
+    runs = [
+        run
+        for run in runs
+        if not all(n in main and poly[n].magnitude >= LISTED_MM * k_ref for n in run)
+    ]
     if not runs:
         return []
     zero = max(_zero(poly), floor)
@@ -1047,11 +1077,14 @@ def plan_details(
             k_from,
             bound,
             shortest,
+            last,
         )
         nxt: list[tuple[list[str], Detail | None]] = []
         made: list[Detail] = []
         for (run, host), box in zip(todo, boxes, strict=True):
-            least = SHORT_MM * kd * (1.0 - tol.REL_LENGTH)  # as details_k reckons it
+            # as details_k reckons it; in the last tier's (one μ_F, the plan's only detail
+            # scale) an arrow one arrowhead long is drawn (a plan's short arrow, not named)
+            least = (LISTED_MM if last else SHORT_MM) * kd * (1.0 - tol.REL_LENGTH)
             short = [n for n in run if zero < poly[n].magnitude < least]
             every = sum(poly[n].magnitude > zero for n in run)
             if len(short) == every and not last:  # nothing to show here: finer, same spot
@@ -1063,7 +1096,8 @@ def plan_details(
             dt = Detail(tuple(run), kd, next(letters), box, floor=floor, host=host, tier=tier + 1)
             made.append(dt)
             if last:
-                dt.listed = tuple(short)
+                # (a reaction is an arrow however short, in its detail as on the plan)
+                dt.listed = tuple(n for n in short if n not in main_arrows(poly))
             else:
                 nxt += [(sub, dt) for sub in _one_spot(poly, _sub_runs(poly, run, short), kd)]
         out += made
@@ -1092,10 +1126,19 @@ def _sub_runs(poly: ForcePolygon, run: Sequence[str], short: Sequence[str]) -> l
     return out
 
 
-#: A plan's details go at most this many tiers deep (a detail of a detail, …): each tier
-#: spans DETAIL_MAX_MM / DETAIL_MM ≈ 8.6 times in magnitude, so three show a polygon's
-#: vectors over a span of 10⁴ below its shortest arrow.
-DETAIL_TIERS = 3
+#: A plan's details go at most this many tiers deep (a detail of a detail, …). One: a plan
+#: is one polygon at its μ_F with its details at ONE finer μ_F, one circle per spot (review
+#: 14, fix 2: the knuckle press's group (4, 5), a 40 mm sliver with six details at three
+#: more μ_F, 500, 100 and 10 N/mm, round one vertex; the walkbeam's group (2, 3) at 20, 4
+#: and 0,5 N/mm; review 12 had three tiers, review 7 four drawings). Each tier spans
+#: DETAIL_MAX_MM / DETAIL_MM ≈ 8.6 times in magnitude (LISTED_MM in the last: 17 times); a
+#: vector shorter than that below the detail's shortest arrow (mostly under 1 % of the
+#: plan's largest) is a line in it, named with its value under the plan's caption.
+DETAIL_TIERS = 1
+#: In the last tier's details (the plan's one detail μ_F) a vector is an arrow where it is
+#: drawn at least one arrowhead long (mm): a short arrow, as the plan draws its own short
+#: vectors outside its details; shorter ones are lines, named under the caption.
+LISTED_MM = ARROW_LEN
 
 
 def _over(ext: Extent, room: tuple[float, float], k: float) -> float:
@@ -1133,6 +1176,7 @@ def details_k(
     k_ref: float,
     bound: float = 0.0,
     shortest: float = 0.0,
+    last: bool = False,
 ) -> float:
     """The one μ_F of a plan's details (runs of magnitudes ``mags``, each spanning ``sizes``
     in plan units) taken from the plan drawn at ``k_ref``: :func:`detail_k` of all their
@@ -1143,7 +1187,10 @@ def details_k(
     some too short, the μ_F is the coarsest that still draws the others :data:`DETAIL_MM`
     long (review 8, item 3, the crusher's G4 = 147 N drawn 29 mm at 5 N/mm because
     R^τ34 = 17 N would have wanted 2 N/mm; at 10 N/mm G4 is 15 mm, Ф4 9 mm); those too short
-    are drawn in a detail of the detail (:func:`plan_details`).
+    are drawn in a detail of the detail (:func:`plan_details`). In the ``last`` tier (one
+    detail μ_F per plan, :data:`DETAIL_TIERS`) none is: the μ_F is the finest within both
+    limits where that draws more of them at least :data:`LISTED_MM` long (fewer are named
+    under the caption) than the coarser one would.
 
     Order of lengths (review 9, item 6: crank_rocker's detail drew Φ4 = 25 N 12.5 mm beside
     the plan's G5 = 108 N at 10.8 mm): where the coarsest factor that draws the shortest
@@ -1165,7 +1212,15 @@ def details_k(
     if kd > readable * (1.0 + tol.REL_LENGTH):
         shown = [m for m in every if m >= DETAIL_MM * kd * (1.0 - tol.REL_LENGTH)]
         if shown:
-            kd = max(kd, detail_k(shown, k_ref))
+            coarse = max(kd, detail_k(shown, k_ref))
+
+            def listed(k: float) -> int:
+                return sum(m < LISTED_MM * k * (1.0 - tol.REL_LENGTH) for m in every)
+
+            # the last tier keeps the finer one only where it draws more of them as arrows
+            # (a detail larger for nothing pushed the clipper's link 4 plan to 24 mm)
+            if not last or listed(coarse) <= listed(kd):
+                kd = coarse
     return kd
 
 
@@ -1419,7 +1474,7 @@ def _detail_listed(
     left = [n for n in dt.listed if n not in set(noted)]
     if not left:
         return []
-    return [WORDS("detail_listed", items=listed_items(poly, left, names), mm=num(SHORT_MM))]
+    return [WORDS("detail_listed", items=listed_items(poly, left, names), mm=num(LISTED_MM))]
 
 
 def listed_items(
@@ -1809,13 +1864,13 @@ class Polygon(View):
             return ", ".join((self.names or {}).get(n, n) for n in names)
 
         if self.lined:  # too short for a detail at the plan's one detail μ_F: lines on the plan
-            return WORDS("plan_lined", mm=num(SHORT_MM), items=items([*self.noted, *self.lined]))
+            return WORDS("plan_lined", mm=num(LISTED_MM), items=items([*self.noted, *self.lined]))
         letters = ", ".join(dt.letter for dt in self.details if dt.listed)
         many = sum(bool(dt.listed) for dt in self.details) > 1
         key = "plan_listed_many" if many else "plan_listed"
         if len(self.noted) == 1:
             key += "_one"
-        return WORDS(key, letters=letters, mm=num(SHORT_MM), items=items(self.noted))
+        return WORDS(key, letters=letters, mm=num(LISTED_MM), items=items(self.noted))
 
 
 #: The μ_F a plan may be drawn at, as a multiple of its reference μ_F, whose details'
