@@ -100,14 +100,17 @@ def _named(text: str) -> set[str]:
 
 @pytest.mark.parametrize("path", LINKAGES, ids=lambda p: p.stem)
 def test_no_polygon_vector_is_a_dot(path: Path) -> None:
-    """Every non-zero vector of every force polygon is an arrow at least two arrowheads long at
-    a μ_F the sheet states: at the polygon's own, or, too short there, in a detail at its
-    larger μ_F (the vector's length on the paper is |F|/μ_F of that arrow), or, too short
-    even in a detail no larger than its plan (at the plan's one detail μ_F), named with its
-    value under the plan's caption (or the detail's)."""
+    """Every non-zero vector of every force polygon is an arrow at a μ_F the sheet states: at
+    the polygon's own, or, too short there, in the plan's one detail at its larger μ_F (the
+    vector's length on the paper is |F|/μ_F of that arrow), or, too short even there, named
+    with its value under the plan's caption. An arrow is at least one arrowhead long
+    (LISTED_MM, round 14's one detail μ_F), except a reaction on its own plan: every reaction
+    is an arrow of the plan however short (``views.main_arrows``: the plan's equation closes
+    on the plan), and one shorter than an arrowhead there is drawn again, at least an
+    arrowhead long, in the plan's detail."""
     from layout import unstated_vectors
 
-    from geomcad.sheet.views import WORDS
+    from geomcad.sheet.views import LISTED_MM, WORDS
 
     s = solve(geomcad.solve(str(path)).data.linkage)
     if analyse(s).forces is None:
@@ -115,12 +118,19 @@ def test_no_polygon_vector_is_a_dot(path: Path) -> None:
     sheet = dict(geomcad.solve(str(path)).sheets())["forces"]
     assert not unstated_vectors(sheet)
     arrows = [(math.dist(t, h), sc.k) for t, h, sc in sheet.scaled if sc.q == "F"]
-    short = [(mm, k) for mm, k in arrows if mm < SHORT_MM * (1.0 - 1e-9)]
-    assert not short
     _, f, _ = force_position(s)
     polys = [poly for gf in f.groups for _, poly in gf.polygons]
     big = max(pv.magnitude for poly in polys for pv in poly.vectors)
-    head = WORDS("detail_listed", mm=fmt_number(SHORT_MM), items="")
+    reactions = [pv.magnitude for poly in polys for pv in poly.vectors if pv.name.startswith("R_")]
+    least = LISTED_MM * (1.0 - 1e-9)
+
+    def enlarged(force: float) -> bool:
+        return any(mm >= least and math.isclose(mm * k, force, rel_tol=1e-6) for mm, k in arrows)
+
+    short = [(mm, k) for mm, k in arrows if mm < least
+             and not any(math.isclose(mm * k, r, rel_tol=1e-6) and enlarged(r) for r in reactions)]  # fmt: skip
+    assert not short
+    head = WORDS("detail_listed", mm=fmt_number(LISTED_MM), items="")
     lists = [t.text for t in sheet.texts() if t.text.startswith((head, *_LISTED))]
     for poly in polys:
         for pv in poly.vectors:

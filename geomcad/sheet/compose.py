@@ -1423,6 +1423,12 @@ def arrange(tree: Tree, field_: Field, _titles_broken: bool = False) -> Layout:
     the box it gets is broken into lines and the tree laid out again with their room."""
     if not _titles_broken:
         _set_title_lines(tree, {})
+        notes = {id(t) for t in _titled(tree) if getattr(t, "note_lines", 1) != 1}
+        for t in _titled(tree):
+            if id(t) in notes:
+                t.note_lines = 1  # type: ignore[union-attr]
+        if notes:
+            _forget(tree, notes)
     # the search allocates many small tuples and no cycles: the cyclic collector, which would
     # scan the whole heap again and again meanwhile, waits till it is done
     collect = gc.isenabled()
@@ -1537,9 +1543,20 @@ def _break_titles(tree: Tree, lay: Layout, obstacles: Sequence[Box] = ()) -> boo
         text = _node_caption(node, lay)
         w = cell[2] - _title_start(cell, node.title_height, obstacles)
         want[id(node)] = len(title_text_lines(text, w, node.title_height))
+    # a view's lines under its caption (a force plan's line naming what its details cannot
+    # show) broken for its box like the caption
+    notes: set[int] = set()
+    for pl in lay:
+        v = pl.view
+        lines_in = getattr(v, "note_lines_in", None)
+        if lines_in is not None and (n := lines_in(pl.box[2] - pl.box[0])) > v.note_lines:
+            v.note_lines = n
+            notes.add(id(v))
+    if notes:
+        _forget(tree, notes)
     grown = {id(t): max(t.title_lines, want.get(id(t), 1)) for t in _titled(tree)}
     if all(grown[id(t)] == t.title_lines for t in _titled(tree)):
-        return False
+        return bool(notes)
     _set_title_lines(tree, grown, only_changed=True)
     return True
 

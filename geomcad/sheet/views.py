@@ -50,6 +50,7 @@ from geomcad.sheet.compose import (
     View,
     scale_text,
     text_width,
+    title_text_lines,
 )
 from geomcad.sheet.drawing import (
     ARROW_LEN,
@@ -1642,6 +1643,8 @@ class Polygon(View):
         #: whether the vectors too short in the details are named on a line under the
         #: caption (:attr:`noted`; where none was at the reference μ_F, under a detail's)
         self.listed_line = False
+        #: the lines that line takes in the box the layout gave the plan (:meth:`note_lines_in`)
+        self.note_lines = 1
         self.noted: list[str] = []
         #: the vectors of runs too short even at the details' μ_F (no detail of them): lines
         self.lined: list[str] = []
@@ -1780,8 +1783,25 @@ class Polygon(View):
     def note_room(self) -> float:
         """The height (mm) of the lines under the caption (the note of the vectors left out,
         the line naming what the details cannot show)."""
-        lines = bool(self.note) + self.listed_line
+        lines = bool(self.note) + (self.note_lines if self.listed_line else 0)
         return NOTE_H * TITLE_LEAD * lines + NOTE_GAP if lines else 0.0
+
+    def listed_lines(self, width: float) -> list[str]:
+        """The line naming what the details cannot show, as drawn in a box ``width`` mm wide:
+        with the vectors' values where it fits on one line, else without them (their values
+        are in the table), broken at spaces into lines of about equal width where even that
+        is wider than the box (review 14's sixbar-2013-6: 100 mm in an 85 mm box)."""
+        if not (self.noted or self.lined):
+            return []
+        note = self._listed_note()
+        if text_width(note, NOTE_H) > width:
+            note = self._listed_note(values=False)
+        return title_text_lines(note, width, NOTE_H)
+
+    def note_lines_in(self, width: float) -> int:
+        """How many lines the listed line takes in a box ``width`` mm wide (the layout gives
+        it that room under the caption and lays the sheet out again where it grew)."""
+        return len(self.listed_lines(width)) if self.listed_line else 0
 
     def spill(self, k: float, inner: Extent) -> float:
         """How far (mm) the polygon with its details, planned again at the μ_F ``k`` it is
@@ -1830,11 +1850,8 @@ class Polygon(View):
             v = Viewport(d, v.scale, centre[0], centre[1], where)
             at.viewport = v
         notes = [self.note] if self.note else []
-        if self.noted or self.lined:  # what the details cannot show, on a line of its own
-            note = self._listed_note()
-            if text_width(note, NOTE_H) > at.box[2] - at.box[0]:
-                note = self._listed_note(values=False)  # their values are in the table
-            notes.append(note)
+        # what the details cannot show, on lines of its own
+        notes += self.listed_lines(at.box[2] - at.box[0])
         lines = (self.title_lines - 1) * TITLE_SPACING
         for i, note in enumerate(notes):  # each on a line of its own under the caption
             top = at.box[1] + self.title_height * (TITLE_LEAD + lines) + NOTE_H + NOTE_GAP
