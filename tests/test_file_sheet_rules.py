@@ -131,7 +131,16 @@ def test_no_polygon_vector_is_a_dot(path: Path) -> None:
              and not any(math.isclose(mm * k, r, rel_tol=1e-6) and enlarged(r) for r in reactions)]  # fmt: skip
     assert not short
     head = WORDS("detail_listed", mm=fmt_number(LISTED_MM), items="")
-    lists = [t.text for t in sheet.texts() if t.text.startswith((head, *_LISTED))]
+    texts = [t.text for t in sheet.texts()]
+    lists = []
+    for i, t in enumerate(texts):
+        if t.startswith((head, *_LISTED)):
+            # a note broken into lines for its box: its lines joined up to the names
+            j = i
+            while ": " not in t and j + 1 < len(texts):
+                j += 1
+                t += " " + texts[j]
+            lists.append(t)
     for poly in polys:
         for pv in poly.vectors:
             if pv.magnitude > 1e-9 * big:

@@ -515,13 +515,37 @@ def _force_layout(s: Solved) -> tuple[Tree, formats.Sized]:
             found = own
     found = _rowed(s, P, forces, k, found, kin)
     found = _pinned(s, P, forces, k, found, kin)
-    _fitted_plans(found[1].layout)
+    _fit_and_grow_plans(found[1].layout)
     for pl in found[1].layout:
         if isinstance(pl.view, _Lever):
             pl.view.grow(pl, found[1].layout)
-        elif isinstance(pl.view, Polygon):
-            grow_plan(pl)
     return found
+
+
+def _fit_and_grow_plans(lay: Layout) -> None:
+    """The force plans' cells fitted to their shapes (:func:`_fitted_plans`) and the plans
+    grown into them (:func:`grow_plan`), the shapes taken at the μ_F each was placed at or
+    at the next finer step of its series, whichever grows the plans more (the product of
+    their growths; the first on a tie). A detail keeps its size in mm at any μ_F, so a plan
+    whose details lie beside it at the μ_F placed may have them under it a step finer: the
+    crusher's group (4, 5), 36 × 49 mm with its detail beside it at 200 N/mm, cut a row cell
+    112 mm high, and stayed at 200 N/mm (its longest vector 47 mm) where a column cell held
+    it at 100 N/mm."""
+    plans = [pl for pl in lay if isinstance(pl.view, Polygon) and pl.scale is not None]
+    was = [(pl.box, pl.inner, pl.scale) for pl in plans]
+
+    def run(finer: bool) -> float:
+        for pl, (box, inner, scale) in zip(plans, was, strict=True):
+            pl.box, pl.inner, pl.scale = box, inner, scale
+        _fitted_plans(lay, finer)
+        for pl in plans:
+            grow_plan(pl)
+        return sum(math.log(sc.k / pl.scale.k) for pl, (_b, _i, sc) in zip(plans, was, strict=True)
+                   if sc is not None and pl.scale is not None)  # fmt: skip
+
+    grown = [run(False), run(True)]
+    if grown[0] >= grown[1] - tol.REL_LENGTH:
+        run(False)
 
 
 def grow_plan(pl: Placed) -> None:
@@ -599,9 +623,11 @@ FIT_GROW_STEPS = 24
 FIT_SLACK_MM = 2.0
 
 
-def _plan_need(pl: Placed) -> tuple[float, float, bool]:
+def _plan_need(pl: Placed, finer: bool = False) -> tuple[float, float, bool]:
     """The size (mm) of a force plan as placed, its details planned in its box at its μ_F,
-    and whether it keeps that size at any μ_F (a sliver, drawn at its cap)."""
+    and whether it keeps that size at any μ_F (a sliver, drawn at its cap); ``finer``: its
+    shape as planned at the next finer step of its series, drawn at the μ_F placed (the
+    details, which keep their size in mm, then take less of it)."""
     view = pl.view
     assert isinstance(view, Polygon) and pl.scale is not None
     w, h = pl.size
@@ -611,7 +637,10 @@ def _plan_need(pl: Placed) -> tuple[float, float, bool]:
         view.longest_mm = max(was, SLIVER_GROW_MM)
     k = view.drawn_k(pl.scale.k)
     if view.detail:
-        _d, _t, ext = view._with_details(k, iter("W" * 99), (w * k, h * k))
+        kk = k
+        if finer and not fixed:
+            kk = round_scale_down(k * (1.0 - 4.0 * tol.REL_LENGTH), pl.scale.q, view.series).k
+        _d, _t, ext = view._with_details(kk, iter("W" * 99), (w * kk, h * kk))
     else:
         ext = view.extent() or (0.0, 0.0, 0.0, 0.0)
     view.longest_mm = was
@@ -642,7 +671,7 @@ def _shared(sizes: Sequence[float], spare: float, grows: Sequence[bool]) -> list
     return [sz + spare * sz / total if g else sz for sz, g in zip(sizes, grows, strict=True)]
 
 
-def _fitted_plans(lay: Layout) -> None:
+def _fitted_plans(lay: Layout, finer: bool = False) -> None:
     """The force plans' cells fitted to the plans' own shapes (review 13, item 1: the plans
     shared a Grid of equal cells, a 116 × 6 mm sliver's cell as large as a square plan's, the
     square plans 54 mm long in 170 × 83 mm cells, the sheets 59–77 % blank). Once the layout
@@ -668,7 +697,7 @@ def _fitted_plans(lay: Layout) -> None:
         b = pl.box
         if b[0] < X1 - e and b[2] > X0 + e and b[1] < Y1 - e and b[3] > Y0 + e:
             return  # the plans' boxes are not one region of their own
-    needs = [_plan_need(pl) for pl in plans]
+    needs = [_plan_need(pl, finer) for pl in plans]
     # a cell's frame round its plan: the margins, the caption's room over it
     pads = [
         (

@@ -1723,16 +1723,18 @@ class Polygon(View):
         plan = (x0, y0, x1, y1)
         if room is not None:
             _, ext = self._placed(k, iter(_ANY), bound, plan, room)
-            left = len(self.noted) + len(self.lined)
+            lined = len(self.lined)
             # the room free beside or under the plan, less a detail's slot round its run
             free = max(room[0] - (x1 - x0), room[1] - (y1 - y0)) / k
             cap = DETAIL_CAPTION_H * 1.5 + 1.5 + DETAIL_CAPTION_H * DETAIL_LINES
             tight = free - 2.0 * DETAIL_PAD_MM - cap - DETAIL_GAP_MM
             if _over(ext, room, k) > 0.0 and 2.0 * STUB_MM + DETAIL_MM < tight < bound:
                 _, ext2 = self._placed(k, iter(_ANY), tight, plan, room)
-                # never at the cost of a vector drawn (review 9, item 1: sixbar_coupler's
+                # at the cost of a vector drawn only where the plan's one detail μ_F names
+                # it (round 14: a plan drawn half as large for a 0,2 % vector's arrow); not
+                # where it leaves a run with no detail (review 9, item 1: sixbar_coupler's
                 # group (4, 5) named all four of its short vectors, no detail of them)
-                kept = len(self.noted) + len(self.lined) <= left
+                kept = len(self.lined) <= lined
                 if _over(ext2, room, k) < _over(ext, room, k) and kept:
                     bound = tight
         details, ext = self._placed(k, letters, bound, plan, room)
