@@ -127,8 +127,10 @@ def test_no_polygon_vector_is_a_dot(path: Path) -> None:
     def enlarged(force: float) -> bool:
         return any(mm >= least and math.isclose(mm * k, force, rel_tol=1e-6) for mm, k in arrows)
 
-    short = [(mm, k) for mm, k in arrows if mm < least
-             and not any(math.isclose(mm * k, r, rel_tol=1e-6) and enlarged(r) for r in reactions)]  # fmt: skip
+    def reaction_enlarged(mm: float, k: float) -> bool:
+        return any(math.isclose(mm * k, r, rel_tol=1e-6) and enlarged(r) for r in reactions)
+
+    short = [(mm, k) for mm, k in arrows if mm < least and not reaction_enlarged(mm, k)]
     assert not short
     head = WORDS("detail_listed", mm=fmt_number(LISTED_MM), items="")
     texts = [t.text for t in sheet.texts()]

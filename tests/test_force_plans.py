@@ -213,8 +213,8 @@ def test_a_plan_placed_coarser_than_its_details_were_reckoned_at_spills() -> Non
 def test_a_run_too_large_for_its_bound_is_one_detail_its_short_vectors_named() -> None:
     """A run whose detail at its μ_F would outgrow its plan (as the crusher's group (2, 3):
     G_2, G_3, Ф_3 and R^τ_12 one under the other, here over two decades) is one detail within
-    the bound at one μ_F (not cut into pieces at several: review 7, item 4); the vectors of it then shorter than one
-    arrowhead, and only those, are named with their values under the plan's caption: the
+    the bound at one μ_F (not cut into pieces at several: review 7, item 4); the vectors of it
+    then shorter than one arrowhead, and only those, are named with their values under the plan's caption: the
     plan's one detail μ_F has no detail of its own (round 14: review 9's tiers gave the
     knuckle press six details at three more μ_F round one vertex)."""
     from geomcad.sheet.views import LISTED_MM, STUB_MM
