@@ -214,9 +214,9 @@ def test_a_run_too_large_for_its_bound_is_one_detail_its_short_vectors_named() -
     """A run whose detail at its μ_F would outgrow its plan (as the crusher's group (2, 3):
     G_2, G_3, Ф_3 and R^τ_12 one under the other, here over two decades) is one detail within
     the bound at one μ_F (not cut into pieces at several: review 7, item 4); the vectors of it
-    then shorter than one arrowhead, and only those, are named with their values under the plan's caption: the
-    plan's one detail μ_F has no detail of its own (round 14: review 9's tiers gave the
-    knuckle press six details at three more μ_F round one vertex)."""
+    then shorter than one arrowhead, and only those, are named with their values under the
+    plan's caption: the plan's one detail μ_F has no detail of its own (round 14: review 9's
+    tiers gave the knuckle press six details at three more μ_F round one vertex)."""
     from geomcad.sheet.views import LISTED_MM, STUB_MM
 
     vs = chain([5000.0, 470.0, 40.0, 196.0, 588.0, 3000.0],
