@@ -192,7 +192,14 @@ class View:
         self._title_w: float | None = None
         #: the lines the title takes (more than one where it is wider than its box)
         self.title_lines = 1
+        #: the lines its note under the caption takes in its box (:meth:`note_lines_in`)
+        self.note_lines = 1
         self._memo: dict[object, Any] = {}
+
+    def note_lines_in(self, width: float) -> int:
+        """The lines a note under the caption takes in a box ``width`` mm wide (0: none; a
+        force plan's line naming what its details cannot show is broken like a caption)."""
+        return 0
 
     @property
     def kind(self) -> Kind:
@@ -1423,10 +1430,10 @@ def arrange(tree: Tree, field_: Field, _titles_broken: bool = False) -> Layout:
     the box it gets is broken into lines and the tree laid out again with their room."""
     if not _titles_broken:
         _set_title_lines(tree, {})
-        notes = {id(t) for t in _titled(tree) if getattr(t, "note_lines", 1) != 1}
-        for t in _titled(tree):
-            if id(t) in notes:
-                t.note_lines = 1  # type: ignore[union-attr]
+        noted = [t for t in _titled(tree) if isinstance(t, View) and t.note_lines != 1]
+        notes = {id(t) for t in noted}
+        for t in noted:
+            t.note_lines = 1
         if notes:
             _forget(tree, notes)
     # the search allocates many small tuples and no cycles: the cyclic collector, which would
@@ -1548,8 +1555,7 @@ def _break_titles(tree: Tree, lay: Layout, obstacles: Sequence[Box] = ()) -> boo
     notes: set[int] = set()
     for pl in lay:
         v = pl.view
-        lines_in = getattr(v, "note_lines_in", None)
-        if lines_in is not None and (n := lines_in(pl.box[2] - pl.box[0])) > v.note_lines:
+        if (n := v.note_lines_in(pl.box[2] - pl.box[0])) > v.note_lines:
             v.note_lines = n
             notes.add(id(v))
     if notes:

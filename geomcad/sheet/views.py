@@ -1643,8 +1643,6 @@ class Polygon(View):
         #: whether the vectors too short in the details are named on a line under the
         #: caption (:attr:`noted`; where none was at the reference μ_F, under a detail's)
         self.listed_line = False
-        #: the lines that line takes in the box the layout gave the plan (:meth:`note_lines_in`)
-        self.note_lines = 1
         self.noted: list[str] = []
         #: the vectors of runs too short even at the details' μ_F (no detail of them): lines
         self.lined: list[str] = []
