@@ -7,8 +7,6 @@ from __future__ import annotations
 
 from pathlib import Path
 
-import pytest
-
 import geomcad
 from geomcad import tol
 from geomcad.sheet import linkage_forces as lf
@@ -90,12 +88,6 @@ def test_pinned_box_holds_its_caption_at_its_scale() -> None:
         assert lf._body_size(mech, pin)[0] >= said, pin
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="round 14 (plans): with one detail μ_F per plan the needle's plans changed extent and "
-    "the layout takes 2:1 (crank 30 mm) with its plans 90-140 mm instead of 2,5:1 with plans "
-    "66-72 mm; the layout's call (_pinned), for the lead",
-)
 def test_needle_at_the_kinematic_enlargement() -> None:
     """The needle (15 mm crank): its forces sheet at 2,5:1 (crank 37,5 mm), the scale of its
     kinematic sheet, which its left column holds (on main 2:1, the crank exactly 30 mm), the
