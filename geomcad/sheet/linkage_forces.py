@@ -406,12 +406,15 @@ def force_sheets(
 def _forces_sheet(s: Solved, designation: str, no: int, count: int) -> Sheet:
     """Sheet 2: the loaded mechanism, its groups, the force plans and Zhukovsky's lever."""
     lk = s.linkage
-    tree, z = force_layout(s)
-    d = z.start(_title(lk, WORDS("forces"), designation, no, count))
-    compose(d, tree, layout=z.layout)
-    for pl in z.layout:
-        if isinstance(pl.view, _Loaded):
-            pl.view.sheet_detail(d, pl)
+    for grow in (True, False):
+        tree, z = force_layout(s, grow)
+        d = z.start(_title(lk, WORDS("forces"), designation, no, count))
+        compose(d, tree, layout=z.layout)
+        held = [pl.view.sheet_detail(d, pl) for pl in z.layout if isinstance(pl.view, _Loaded)]
+        if all(held):
+            break
+        # the plans grown into the room the short crank's detail wanted (review 7: a 20 mm
+        # crank and no detail): the sheet drawn again with the plans as laid out
     main = [pl.scale for pl in z.layout if isinstance(pl.view, _Loaded)]
     if d.sheet.block is not None and main and main[0] is not None:
         # the title block's Масштаб: the main view's, the loaded mechanism's
@@ -449,30 +452,31 @@ def fallback_formats(lk: Linkage) -> tuple[str, ...]:
     return (bigger[0],) if bigger else ()
 
 
-def force_layout(s: Solved) -> tuple[Tree, formats.Sized]:
+def force_layout(s: Solved, grow: bool = True) -> tuple[Tree, formats.Sized]:
     """Sheet 2's tree and its format and arrangement (:func:`_compose2`; for the size rules'
     bench and the tests: the scales and the format without drawing).
 
     A layout that finds no room for a view on the file's formats (``ParameterError`` "has no
     room on the sheet", review 14: the pump's plan of group (4, 5) at its position 4 cost the
     file all its sheets) falls back on the next larger format (:func:`fallback_formats`, A1 →
-    A0) before it fails: a sheet larger than planned beats no sheet."""
+    A0) before it fails: a sheet larger than planned beats no sheet. ``grow``: the force plans
+    grown into the field once laid out (:func:`_fit_and_grow_plans`)."""
     try:
-        return _force_layout(s)
+        return _force_layout(s, grow)
     except ParameterError as exc:
         more = fallback_formats(s.linkage) if exc.name == "layout" else ()
         if not more:
             raise
         token = _FALLBACK.set(more)
         try:
-            return _force_layout(s)
+            return _force_layout(s, grow)
         except ParameterError:
             raise exc from None
         finally:
             _FALLBACK.reset(token)
 
 
-def _force_layout(s: Solved) -> tuple[Tree, formats.Sized]:
+def _force_layout(s: Solved, grow: bool = True) -> tuple[Tree, formats.Sized]:
     """:func:`force_layout` on the formats :func:`_formats` gives."""
     P, forces, k = force_position(s)
     waived = sweep_mm(s, crank_scale(s.linkage).k) > SWEEP_MAX_MM
@@ -515,7 +519,8 @@ def _force_layout(s: Solved) -> tuple[Tree, formats.Sized]:
             found = own
     found = _rowed(s, P, forces, k, found, kin)
     found = _pinned(s, P, forces, k, found, kin)
-    _fit_and_grow_plans(found[1].layout)
+    if grow:  # (not where the plans grown leave a short crank's detail no room)
+        _fit_and_grow_plans(found[1].layout)
     for pl in found[1].layout:
         if isinstance(pl.view, _Lever):
             pl.view.grow(pl, found[1].layout)
@@ -2193,18 +2198,19 @@ class _Loaded(_Forces):
             return
         self._place_detail(d, at, drawn.segments(), _field(at))
 
-    def sheet_detail(self, d: Drawing, at: Placed) -> None:
+    def sheet_detail(self, d: Drawing, at: Placed) -> bool:
         """Where the view's box left no room for :meth:`crank_detail` (review 7: a 20 mm crank
         at 1:2.5 and no detail): the detail in the sheet's free room, once every view is drawn,
         clear of all that is drawn on it, its texts and the form's boxes (ESKD 2.305: a detail
-        lettered by its circle may stand anywhere on the sheet)."""
+        lettered by its circle may stand anywhere on the sheet). Whether the sheet draws the
+        crank as its rule wants (false: short, and no room for its detail)."""
         v = at.viewport
         if v is None or self.solved is None or self.detail_scale is not None:
-            return
+            return True
         if self.detail is None and self.letters is None:
-            return
+            return True
         if v.scale.mm(self.lk.length) >= CRANK_MM * (1.0 - tol.REL_LENGTH):
-            return
+            return True
         sheet = d.sheet
         boxes = [*reserved(sheet.width, sheet.height)]
         for it in sheet.items:
@@ -2220,6 +2226,7 @@ class _Loaded(_Forces):
         )
         field = (LEFT_MARGIN, MARGIN, sheet.width - MARGIN, sheet.height - MARGIN)
         self._place_detail(d, at, segs, field)
+        return self.detail_scale is not None
 
     def _place_detail(
         self, d: Drawing, at: Placed, segs: npt.NDArray[np.float64],
