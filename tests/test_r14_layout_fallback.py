@@ -75,8 +75,8 @@ def test_a_format_the_file_states_is_kept(
 
     monkeypatch.setattr(lf, "_compose2", no_room)
     path = tmp_path / PUMP.name
-    path.write_text(PUMP.read_text(encoding="utf-8").replace("[sheet]\n", '[sheet]\nformat = "A1"\n'),
-                    encoding="utf-8")  # fmt: skip
+    text = PUMP.read_text(encoding="utf-8").replace("[sheet]\n", '[sheet]\nformat = "A1"\n')
+    path.write_text(text, encoding="utf-8")
     s = _solved(path)
     assert s.linkage.sheet["format"] == "A1"
     assert lf.fallback_formats(s.linkage) == ()
