@@ -61,9 +61,7 @@ def test_the_fallback_is_the_next_larger_format() -> None:
     assert lf.fallback_formats(lk) == ("A0",)
 
 
-def test_a_format_the_file_states_is_kept(
-    monkeypatch: pytest.MonkeyPatch, tmp_path: Path
-) -> None:
+def test_a_format_the_file_states_is_kept(monkeypatch: pytest.MonkeyPatch, tmp_path: Path) -> None:
     """A file's ``[sheet] format`` is the format the sheets are handed in on: no room on it is
     the layout's error naming the view, never a sheet on the next larger format."""
     real = lf._compose2
