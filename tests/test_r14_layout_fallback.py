@@ -61,6 +61,27 @@ def test_the_fallback_is_the_next_larger_format() -> None:
     assert lf.fallback_formats(lk) == ("A0",)
 
 
+def test_a_format_the_file_states_is_kept(monkeypatch: pytest.MonkeyPatch, tmp_path: Path) -> None:
+    """A file's ``[sheet] format`` is the format the sheets are handed in on: no room on it is
+    the layout's error naming the view, never a sheet on the next larger format."""
+    real = lf._compose2
+
+    def no_room(s: Any, P: Any, f: Any, k: Any, fmts: Any, kin: Any = None) -> Any:
+        if "A0" not in fmts:
+            raise ParameterError("layout", "План сил группы (4, 5)", "has no room on the sheet")
+        return real(s, P, f, k, fmts, kin=kin)
+
+    monkeypatch.setattr(lf, "_compose2", no_room)
+    path = tmp_path / PUMP.name
+    text = PUMP.read_text(encoding="utf-8").replace("[sheet]\n", '[sheet]\nformat = "A1"\n')
+    path.write_text(text, encoding="utf-8")
+    s = _solved(path)
+    assert s.linkage.sheet["format"] == "A1"
+    assert lf.fallback_formats(s.linkage) == ()
+    with pytest.raises(ParameterError, match="has no room on the sheet"):
+        lf.force_layout(s)
+
+
 @pytest.mark.parametrize(
     ("path", "position"),
     [(PUMP, 4), (ELLIPSOGRAPH, None), (WALKBEAM, 7)],

@@ -445,7 +445,11 @@ def _formats(lk: Linkage) -> tuple[str, ...]:
 
 def fallback_formats(lk: Linkage) -> tuple[str, ...]:
     """The next larger format after the largest the file's sheets may take (A1 → A0), where
-    there is one: the forces sheet's last resort before it fails (review 14)."""
+    there is one: the forces sheet's last resort before it fails (review 14). None where the
+    file states its ``[sheet] format``: a format the student was given is kept, and a sheet
+    with no room on it fails, naming the view (a course project on A1 is not handed in on A0)."""
+    if lk.sheet and lk.sheet.get("format") is not None:
+        return ()
     order = sorted(FORMATS, key=lambda fm: FORMATS[fm][0] * FORMATS[fm][1])
     largest = max(sheet_formats(lk), key=lambda fm: FORMATS[fm][0] * FORMATS[fm][1])
     bigger = order[order.index(largest) + 1 :]
