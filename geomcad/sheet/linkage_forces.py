@@ -2124,7 +2124,7 @@ class _Loaded(_Forces):
         start = len(d.sheet.items)
         lk, P = self.lk, self.P
         ins = Insets(self.fs, P.pos)
-        clear = Clearance(d.sheet, len(d.sheet.items), _field(at))
+        clear = Clearance(d.sheet, len(d.sheet.items), _load_field(at))
         draw_scheme(v, scheme(lk, P), bodies=link_bodies(lk, P), pair_labels={},
                     label_height=3.5, guides=frame_guides(lk), guide_axes=True)  # fmt: skip
         places: dict[str, list[str]] = {}  # every named point, the frame's (O, C) too; the
@@ -2319,7 +2319,7 @@ class _FreeBody(_Forces):
         pairs = tuple(p for p in full.pairs if own & set(p.links))
         near = {x for p in pairs for x in p.links} - own - {full.frame}
         mech = Mechanism(tuple(Link(x) for x in sorted(own | near)), pairs, full.frame)
-        clear = Clearance(d.sheet, len(d.sheet.items), _field(at))
+        clear = Clearance(d.sheet, len(d.sheet.items), _load_field(at))
         draw_scheme(v, mech, bodies=link_bodies(lk, P, links), pair_labels={},
                     ghosts=sorted(near), guides=frame_guides(lk), cut_free=True)  # fmt: skip
         for name in joint_names(lk, links):  # lettered as on the mechanism
@@ -2416,6 +2416,18 @@ def body_lines(bodies: Mapping[str, Sequence[Body]]) -> list[tuple[Vec, Vec]]:
 def _field(at: Placed) -> tuple[float, float, float, float]:
     """Where a view's force arrows go: its box below its caption."""
     return at.box[0], at.inner[1], at.box[2], at.box[3]
+
+
+def _load_field(at: Placed) -> tuple[float, float, float, float]:
+    """Where the load arrows of a drawing of links go (:class:`Clearance`'s box): as
+    :func:`_field`, and over the drawing up to :data:`LABEL_ROOM_MM` under its caption (the
+    view's top margin, which :func:`_field` leaves to the drawing): a load along a slider's
+    guide arrives at the block's face from above where the guide's axis runs up, outside the
+    body on its line of action, rather than down its link (review 14:
+    tangent_rocking_slider's F_D on its rod, the compressor's F_B down its connecting rod)."""
+    x0, y0, x1, y1 = _field(at)
+    caption = at.inner[1] - at.view.margin
+    return x0, min(y0, caption + LABEL_ROOM_MM), x1, y1
 
 
 def _within(p: tuple[float, float], box: tuple[float, float, float, float], e: float) -> bool:
