@@ -143,6 +143,7 @@ from geomcad.sheet.linkage import (
 from geomcad.sheet.linkage import WORDS as KIN_WORDS
 from geomcad.sheet.linkage import layout as kinematic_layout
 from geomcad.sheet.loads import (
+    AT_POINT_MM,
     NEGLIGIBLE,
     VIEW_NEGLIGIBLE,
     Clearance,
@@ -163,7 +164,7 @@ from geomcad.sheet.scale import (
     fmt_column,
     fmt_fixed,
 )
-from geomcad.sheet.scheme import draw_scheme
+from geomcad.sheet.scheme import Body, draw_scheme
 from geomcad.sheet.text import box as text_box
 from geomcad.sheet.text import parse, wrap
 from geomcad.sheet.views import (
@@ -290,16 +291,28 @@ class _ByScale:
         memo[key] = fs
         return fs
 
+    def outline(self) -> list[tuple[Vec, Vec]]:
+        """The lines of the links the view draws (model units): an arrow along one of them
+        would be hidden by it (none: a view without links)."""
+        return []
+
     def _fits(self, fs: ForceScales, scale: Scale, box: tuple[float, float, float, float]) -> bool:
         """Whether each arrow of the view at ``fs`` drawn at ``scale`` at its point, leaving
-        it or arriving at it, keeps within ``box`` (model units)."""
+        it or arriving at it, keeps within ``box`` (model units): of the two, one that runs
+        along none of the view's links (:meth:`outline`, :func:`side_run`) where one does (a
+        load along its link leaves its point outside the link, on the side away from it,
+        with the room it takes there: review 14, the clipper's F_N along its knife bar)."""
+        lines = self.outline()
         for p, F in self.arrows():
             if fs.tier(F.norm) == 0:
                 u = F * (scale.k / fs.k)
-                if not (
-                    _within((p.x + u.x, p.y + u.y), box, 0.1 * scale.k)
-                    or _within((p.x - u.x, p.y - u.y), box, 0.1 * scale.k)
-                ):
+                ends = [p + u, p - u]
+                if lines:
+                    free = [e for e in ends
+                            if side_run(e if e is ends[1] else p, u, scale.k, lines)
+                            <= SIDE_RUN_MM + AT_POINT_MM]  # fmt: skip
+                    ends = free or ends
+                if not any(_within((e.x, e.y), box, 0.1 * scale.k) for e in ends):
                     return False
         return True
 
@@ -2140,13 +2153,16 @@ class _Loaded(_Forces):
             (ld.at, ld.force) for ld in self.loads if ld.force is not None and ld.at is not None
         ]
 
+    def outline(self) -> list[tuple[Vec, Vec]]:
+        return body_lines(link_bodies(self.lk, self.P))
+
     def links(self, d: Drawing, at: Placed) -> None:
         v = at.viewport
         assert v is not None
         start = len(d.sheet.items)
         lk, P = self.lk, self.P
         ins = Insets(self.fs, P.pos)
-        clear = Clearance(d.sheet, len(d.sheet.items), _field(at))
+        clear = Clearance(d.sheet, len(d.sheet.items), _load_field(at))
         draw_scheme(v, scheme(lk, P), bodies=link_bodies(lk, P), pair_labels={},
                     label_height=3.5, guides=frame_guides(lk), guide_axes=True)  # fmt: skip
         places: dict[str, list[str]] = {}  # every named point, the frame's (O, C) too; the
@@ -2328,6 +2344,9 @@ class _FreeBody(_Forces):
                if ld.force is not None and ld.at is not None]  # fmt: skip
         return out + [(r.at, r.force) for r in external(self.gf)]
 
+    def outline(self) -> list[tuple[Vec, Vec]]:
+        return body_lines(link_bodies(self.lk, self.P, self.gf.links))
+
     def links(self, d: Drawing, at: Placed) -> None:
         v = at.viewport
         assert v is not None
@@ -2340,7 +2359,7 @@ class _FreeBody(_Forces):
         pairs = tuple(p for p in full.pairs if own & set(p.links))
         near = {x for p in pairs for x in p.links} - own - {full.frame}
         mech = Mechanism(tuple(Link(x) for x in sorted(own | near)), pairs, full.frame)
-        clear = Clearance(d.sheet, len(d.sheet.items), _field(at))
+        clear = Clearance(d.sheet, len(d.sheet.items), _load_field(at))
         draw_scheme(v, mech, bodies=link_bodies(lk, P, links), pair_labels={},
                     ghosts=sorted(near), guides=frame_guides(lk), cut_free=True)  # fmt: skip
         for name in joint_names(lk, links):  # lettered as on the mechanism
@@ -2424,9 +2443,31 @@ def free_spot(
     return float(corners[best, 0]), float(corners[best, 1])
 
 
+def body_lines(bodies: Mapping[str, Sequence[Body]]) -> list[tuple[Vec, Vec]]:
+    """The straight pieces (model units) of the links' bodies (:func:`link_bodies`)."""
+    out: list[tuple[Vec, Vec]] = []
+    for bs in bodies.values():
+        for b in bs:
+            pts = [*b.points, b.points[0]] if b.closed else list(b.points)
+            out += [(x, y) for x, y in itertools.pairwise(pts) if x != y]
+    return out
+
+
 def _field(at: Placed) -> tuple[float, float, float, float]:
     """Where a view's force arrows go: its box below its caption."""
     return at.box[0], at.inner[1], at.box[2], at.box[3]
+
+
+def _load_field(at: Placed) -> tuple[float, float, float, float]:
+    """Where the load arrows of a drawing of links go (:class:`Clearance`'s box): as
+    :func:`_field`, and over the drawing up to :data:`LABEL_ROOM_MM` under its caption (the
+    view's top margin, which :func:`_field` leaves to the drawing): a load along a slider's
+    guide arrives at the block's face from above where the guide's axis runs up, outside the
+    body on its line of action, rather than down its link (review 14:
+    tangent_rocking_slider's F_D on its rod, the compressor's F_B down its connecting rod)."""
+    x0, y0, x1, y1 = _field(at)
+    caption = at.inner[1] - at.view.margin
+    return x0, min(y0, caption + LABEL_ROOM_MM), x1, y1
 
 
 def _within(p: tuple[float, float], box: tuple[float, float, float, float], e: float) -> bool:
@@ -2529,6 +2570,40 @@ def figure_edges(pts: Sequence[Vec], eps: float) -> list[tuple[Vec, Vec]]:
 #: Two forces at one point of the lever closer in direction than this (degrees) would be drawn
 #: over one another: the second is drawn arriving at the point.
 SAME_LINE_DEG = 20.0
+#: A load's arrow within this angle (degrees) and distance (mm) of a side of the lever runs
+#: along it; more than SIDE_RUN_MM of it so is a load drawn along an outline, which a teacher
+#: returns (review 14: the walkbeam's G₅ down pd for 49 mm).
+SIDE_DEG = 10.0
+SIDE_MM = 1.0
+SIDE_RUN_MM = 2.0
+#: The slides (mm) past its point tried for a load along a side on both sides of its point.
+SIDE_SLIDES_MM = tuple(float(g) for g in range(2, 302, 2))
+
+
+def side_run(a: Vec, run: Vec, k: float, lines: Sequence[tuple[Vec, Vec]]) -> float:
+    """How much (mm) of the arrow from model point ``a`` along ``run`` (model units) lies
+    within :data:`SIDE_MM` and :data:`SIDE_DEG` of one of ``lines`` (model segments), at
+    ``k`` model units per mm."""
+    n_mm = run.norm / k
+    if n_mm <= 0.0 or not lines:
+        return 0.0
+    segs = np.array([((p.x, p.y), (q.x, q.y)) for p, q in lines], dtype=float) / k
+    ab = segs[:, 1] - segs[:, 0]
+    n2 = (ab**2).sum(axis=1)
+    u = (run.x / run.norm, run.y / run.norm)
+    ok = n2 > 0.0
+    sin = np.abs(ab[:, 0] * u[1] - ab[:, 1] * u[0]) / np.sqrt(np.where(ok, n2, 1.0))
+    ok &= sin <= math.sin(math.radians(SIDE_DEG))
+    if not ok.any():
+        return 0.0
+    segs, ab, n2 = segs[ok], ab[ok], n2[ok]
+    m = max(2, int(n_mm / 0.25))
+    t = (np.arange(m) + 0.5) / m * n_mm
+    pts = np.column_stack([a.x / k + t * u[0], a.y / k + t * u[1]])
+    w = np.clip(((pts[:, None, :] - segs[None, :, 0]) * ab[None]).sum(axis=2) / n2, 0.0, 1.0)
+    foot = segs[None, :, 0] + w[..., None] * ab[None]
+    d = np.linalg.norm(pts[:, None, :] - foot, axis=2)
+    return float(np.count_nonzero((d < SIDE_MM).any(axis=1)) * n_mm / m)
 
 
 def load_sides(
@@ -2537,6 +2612,7 @@ def load_sides(
     lengths: Sequence[float],
     ext: tuple[float, float, float, float] | None = None,
     slack: float = 0.0,
+    lines: Sequence[tuple[Vec, Vec]] = (),
 ) -> list[tuple[bool, Vec]]:
     """How each load (point, force, …) of the lever is drawn: whether it arrives at its point
     (else leaves it), and from where (model units). A force along the line of a longer one at
@@ -2544,7 +2620,11 @@ def load_sides(
     tip (Φ₃ after F_B at b); of opposite senses they leave the point
     back to back; a force that, ``lengths`` mm long, would run more than ``slack`` mm (the
     view's margin) past the view's extent ``ext`` (model units) arrives at its point where
-    that keeps more of it over the drawing and no arrow there lies on that side. ``k``: the
+    that keeps more of it over the drawing and no arrow there lies on that side. A force
+    that would run along one of ``lines`` (the lever's sides, model units: within
+    :data:`SIDE_DEG` and :data:`SIDE_MM` of one for more than :data:`SIDE_RUN_MM`) is drawn
+    from the point's other side (arriving instead of leaving, or the reverse) where that runs
+    along less of them (review 14: the walkbeam's G₅ down the side pd for 49 mm). ``k``: the
     view's scale (model units per mm; points within 0.8 mm on the paper are one)."""
     starts = [q for q, _, _, _ in loads]
     side: dict[int, bool] = {}
@@ -2580,10 +2660,17 @@ def load_sides(
         ]  # fmt: skip
         run = u * (lengths[i] * k)
         out = past(q + run)
+        free_back = not any(r.dot(-u) > cos for _, r in rays)
+        on_side = side_run(q, run, k, lines), side_run(q - run, run, k, lines)
+        if on_side[0] > SIDE_RUN_MM and on_side[1] < on_side[0] and free_back:
+            # along a side leaving the point: arriving at it from the other side
+            side[i] = True
+            continue
         if (
             out > slack * k
             and past(q - run) < out - 1.0 * k
-            and not any(r.dot(-u) > cos for _, r in rays)
+            and free_back
+            and (on_side[1] <= SIDE_RUN_MM or on_side[1] <= on_side[0])
         ):
             side[i] = True
             continue
@@ -2591,6 +2678,23 @@ def load_sides(
         ahead = [lengths[j] for j, r in rays if r.dot(u) > cos]
         if ahead:
             starts[i] = q + u * (max(ahead) * k)
+            continue
+        if min(on_side) > SIDE_RUN_MM and lines:
+            # along a side on either side of its point (Φ₁ at s₁ on pa, the crank's
+            # centripetal inertia): slid along its own line past the side's end, its thin
+            # line of action (drawn over the side) tying it back
+            def slid(g: float, q: Vec = q, u: Vec = u, run: Vec = run) -> tuple[Vec, Vec]:
+                # the arrow's tail and its far end, g mm past its point (< 0: arriving)
+                s0 = q + u * (g * k)
+                return (s0, s0 + run) if g > 0.0 else (s0 - run, s0)
+
+            tries = [(g, side_run(slid(g)[0], run, k, lines), abs(g))
+                     for g in (x * sgn for x in SIDE_SLIDES_MM for sgn in (1.0, -1.0))]  # fmt: skip
+            g, along, _ = min(tries, key=lambda t: (t[1] > SIDE_RUN_MM,
+                              sum(past(e) for e in slid(t[0])), t[2]))  # fmt: skip
+            if along <= SIDE_RUN_MM:
+                side[i] = g < 0.0
+                starts[i] = q + u * (g * k)
     return [(side[i], starts[i]) for i in range(len(loads))]
 
 
@@ -2614,6 +2718,7 @@ def uncross(
     sides: Sequence[tuple[bool, Vec]],
     ext: tuple[float, float, float, float] | None = None,
     slack: float = 0.0,
+    lines: Sequence[tuple[Vec, Vec]] = (),
 ) -> list[tuple[bool, Vec]]:
     """:func:`load_sides` (``sides``) with no two arrows of different points crossing or
     within :data:`ARROWS_CLEAR_MM` of each other, an arrow's label's room
@@ -2621,9 +2726,10 @@ def uncross(
     places, and a shorter one that would meet one of them is slid along its line of action —
     arriving at its point instead of leaving it (or the other way), else past it by one of
     :data:`SLIDES_MM` (its thin line of action ties it back) — to the place that meets none
-    and keeps most within the view's extent ``ext`` plus ``slack`` mm, the nearest first. An
-    arrow set on from another's tip (one line, one point) keeps its place. Model units,
-    ``k`` model units per mm."""
+    and keeps most within the view's extent ``ext`` plus ``slack`` mm, the nearest first, and
+    of those one that runs along none of ``lines`` (the lever's sides, :func:`side_run`)
+    first. An arrow set on from another's tip (one line, one point) keeps its place. Model
+    units, ``k`` model units per mm."""
     n = len(loads)
     out = list(sides)
     eps = 0.8 * k
@@ -2660,7 +2766,12 @@ def uncross(
         for g in SLIDES_MM:
             tries.append((False, q + u * (g * k), g))  # leaving, past its point
             tries.append((True, q - u * (g * k), g))  # arriving, short of it
-        best = min(tries, key=lambda t: (meets(seg := foot(i, t[0], t[1]), feet),
+
+        def along(t: tuple[bool, Vec, float], i: int = i, u: Vec = u) -> bool:
+            run = u * (lengths[i] * k)
+            return side_run(t[1] - run if t[0] else t[1], run, k, lines) > SIDE_RUN_MM
+
+        best = min(tries, key=lambda t: (meets(seg := foot(i, t[0], t[1]), feet), along(t),
                                          _W_EDGE * past(seg) + _W_SLIDE * t[2]))  # fmt: skip
         out[i] = (best[0], best[1])
     return out
@@ -2752,11 +2863,41 @@ class _Lever(_ByScale, View):
                 here.append((q, F, name, role))
         lengths = [F.norm / fs.k for _, F, _, _ in here]
         # an arrow leaves its point unless it would run out of the view (past its margin,
-        # less a label's room)
-        sides = load_sides(here, k, lengths, self._ext, self.margin - LABEL_ROOM_MM)
+        # less a label's room) or along a side of the lever
+        lines = self.lines(k, fs)
+        sides = load_sides(here, k, lengths, self._ext, self.margin - LABEL_ROOM_MM, lines)
         if slide:
-            sides = uncross(here, k, lengths, sides, self._ext, self.margin - LABEL_ROOM_MM)
+            sides = uncross(here, k, lengths, sides, self._ext, self.margin - LABEL_ROOM_MM,
+                            lines)  # fmt: skip
         return ins, here, lengths, sides
+
+    def lines(self, k: float, fs: ForceScales | None = None) -> list[tuple[Vec, Vec]]:
+        """The lines the lever draws at ``k`` model units per mm (model units): the velocity
+        plan's vectors turned 90° (those over 0.3 mm) and the sides of the links' images
+        (:func:`figure_edges`) the plan does not draw already, at the points it draws
+        (``fs``: the view's force scales, by which a point whose loads are all left out is
+        not drawn)."""
+        fs = fs or self.fs
+        P, lev = self.P, self.f.lever
+        drawn: list[tuple[Vec, Vec]] = []
+        for vec in P.vp.vectors:
+            a, b = P.vp.points[vec.tail].perp(), P.vp.points[vec.head].perp()
+            if (b - a).norm / k > 0.3:
+                drawn.append((a, b))
+        images = lever_images(P, lev)
+        # a point off the velocity plan whose loads are all left out (review 12: the bloom
+        # shear's d4 of P_MФ4 = 27 N, 0,02 %) would be a point nothing on the sheet
+        # explains: not drawn, nor its link's side to it
+        drawn_at = {P.pn(it.point) for it in lev.items
+                    if it.point and fs.tier(it.force.norm) is not None}  # fmt: skip
+        images = {n: q for n, q in images.items() if n in P.vp.points or n in drawn_at}
+        for figure in lever_links(self.lk, P, lev).values():
+            mine = [images[n] for n in figure if n in images]
+            for x, y in figure_edges(mine, 0.3 * k):
+                # a side the plan draws already (pa, a3a …) is not drawn twice
+                if not any({x, y} == {a, b} for a, b in drawn):
+                    drawn.append((x, y))
+        return drawn
 
     def _fits(self, fs: ForceScales, scale: Scale, box: tuple[float, float, float, float]) -> bool:
         """As on a drawing of links, each arrow as :func:`load_sides` draws it (a force on from
@@ -2832,27 +2973,13 @@ class _Lever(_ByScale, View):
         assert v is not None
         start = len(d.sheet.items)
         kv = v.scale
-        lk, P, lev = self.lk, self.P, self.f.lever
-        drawn: list[tuple[Vec, Vec]] = []
-        for vec in P.vp.vectors:
-            a, b = P.vp.points[vec.tail].perp(), P.vp.points[vec.head].perp()
-            if kv.mm((b - a).norm) > 0.3:
-                v.seg(a, b, "construction")
-                drawn.append((a, b))
+        P, lev = self.P, self.f.lever
+        for a, b in self.lines(kv.k):
+            v.seg(a, b, "construction")
         images = lever_images(P, lev)
-        # a point off the velocity plan whose loads are all left out (review 12: the bloom
-        # shear's d4 of P_MФ4 = 27 N, 0,02 %) would be a point nothing on the sheet
-        # explains: not drawn, nor its link's side to it
         drawn_at = {P.pn(it.point) for it in lev.items
                     if it.point and self.fs.tier(it.force.norm) is not None}  # fmt: skip
         images = {n: q for n, q in images.items() if n in P.vp.points or n in drawn_at}
-        for figure in lever_links(lk, P, lev).values():
-            mine = [images[n] for n in figure if n in images]
-            for x, y in figure_edges(mine, kv.model(0.3)):
-                # a side the plan draws already (pa, a3a …) is not drawn twice
-                if not any({x, y} == {a, b} for a, b in drawn):
-                    v.seg(x, y, "construction")
-                    drawn.append((x, y))
         groups: list[tuple[Vec, list[str]]] = []
         for name, im in images.items():
             for q, names in groups:

@@ -455,6 +455,19 @@ _W_LINE, _W_HEAD, _W_OUT, _W_GAP, _W_END = 1.0, 4.0, 3.0, 0.1, 0.5
 #: one (review 9: Φ1 slid past A, its line of action along the crank OA, read as the arrow
 #: drawn along the crank).
 _W_CROSS, _W_TIE = 2.0, 1.0
+#: … of the thin line of action where it runs along a line (a load along its link, slid past
+#: the link's end: its line of action lies under the link's thick line), well under an arrow
+#: along one (_W_LINE): a load is drawn on its own line, never on a parallel beside it nor with
+#: an elbow (review 14: the walkbeam's F_D 10 mm under its guide)
+_W_TIE_ALONG = 0.25
+#: An arrow's shaft this near (mm) a line that runs with it lies under that line's ink (a
+#: link's main line is up to 1 mm wide): the arrow is not seen there, only its head, and each
+#: such mm costs _W_INK more than one along a line (review 14: the crusher's G₂ drawn down its
+#: own link, rocking_cylinder_rocker's Φ₁ on its crank, tangent_rocking_slider's F_D on its
+#: rod). Sliding it along its line of action past the link's end, its thin line of action
+#: under the link, is then cheaper wherever there is room.
+INK_MM = 0.6
+_W_INK = 3.0
 #: How far (mm) an arrow may be moved along its line of action beyond either of its ends
 #: (farther, it would no longer read as acting at its point).
 SLIDE_MM = 60.0
@@ -557,7 +570,13 @@ class Clearance:
 
     def best(self, p: XY, u: XY, length: float, arrive: bool) -> tuple[float, XY, XY]:
         """:meth:`place`'s arrow with its cost (0: at its point and clear of everything)."""
-        reach = SLIDE_MM
+        # past its point by up to SLIDE_MM beyond the arrows drawn on its line so far (F_E and
+        # Φ₅ of the yarn guide's slider, both along its bar: Φ₅ on before F_E's tail)
+        drawn = np.array(self.sheet.vectors[self.first_vector :], dtype=float).reshape(-1, 2, 2)
+        drawn = drawn[_near_line(drawn, p, u, mask=True)] if len(drawn) else drawn
+        lens = np.linalg.norm(drawn[:, 1] - drawn[:, 0], axis=1) if len(drawn) else [0.0]
+        longest = float(np.max(lens))
+        reach = SLIDE_MM + min(longest, SLIDE_MM * 2.0)
         lo, hi = -length - reach, length + reach
         ts = np.arange(lo, hi + _STEP / 2.0, _STEP)
         pts = np.column_stack([p[0] + ts * u[0], p[1] + ts * u[1]])
@@ -565,6 +584,7 @@ class Clearance:
         d, along = _distances(pts, segs, u)
         # near a line that runs with the arrow (within PARALLEL), or on one it crosses
         on_along = ((d < ALONG_MM) & along).any(axis=1)
+        on_ink = ((d < INK_MM) & along).any(axis=1)
         on_cross = (d < CROSS_MM).any(axis=1) & ~on_along
         # a head clear of every line but those through the point of application (the body
         # the force acts on: the joint there, the links that meet in it)
@@ -578,7 +598,11 @@ class Clearance:
         arrows = _near_line(arrows, p, u)
         on_arrow = (_distances(pts, arrows, u)[0] < ARROW_GAP_MM).any(axis=1)
         free = np.abs(ts) <= AT_POINT_MM  # the point of application: the body is there
+        # inside a slider's block (its filled outline): the arrow would lie on the body it
+        # acts on, not outside it at its point (review 14: F_D through the walkbeam's block)
+        solid = _inside(pts, self.solids()) & ~free
         on_along &= ~free
+        on_ink &= ~free
         on_cross &= ~free
         on_head &= ~free
         out = np.zeros(len(ts), dtype=bool)
@@ -589,10 +613,12 @@ class Clearance:
             k: np.concatenate([[0.0], np.cumsum(a.astype(float))])
             for k, a in (
                 ("line", on_along),
+                ("ink", on_ink),
                 ("cross", on_cross),
                 ("head", on_head),
                 ("out", out),
                 ("arrow", on_arrow),
+                ("solid", solid),
             )
         }
 
@@ -614,8 +640,11 @@ class Clearance:
         cost = (
             _W_HEAD * 2.0 * ARROW_LEN * hidden
             + _W_LINE * run("line", S, E)
+            + _W_INK * run("ink", S, E)
+            + _W_LINE * run("solid", S, E)
             + _W_CROSS * run("cross", S, E)
-            + _W_TIE * (run("line", t0, t1) + run("cross", t0, t1))
+            + _W_TIE_ALONG * run("line", t0, t1)
+            + _W_TIE * run("cross", t0, t1)
             + _W_HEAD * run("head", E - ARROW_LEN, E)
             + _W_OUT * run("out", S, E)
             + _W_OUT * run("arrow", S, E)
@@ -646,15 +675,16 @@ def _inside(pts: npt.NDArray[np.float64], shapes: list[npt.NDArray[np.float64]])
     return out
 
 
-def _near_line(segs: npt.NDArray[np.float64], p: XY, u: XY) -> npt.NDArray[np.float64]:
+def _near_line(segs: npt.NDArray[np.float64], p: XY, u: XY, mask: bool = False) -> Any:
     """The segments (n, 2, 2) that come near the line through ``p`` along ``u``: within the
-    largest clearance of it, or across it (the others cost an arrow on it nothing)."""
+    largest clearance of it, or across it (the others cost an arrow on it nothing); ``mask``:
+    which of them, (n,) booleans."""
     if len(segs) == 0:
-        return segs
+        return np.zeros(0, dtype=bool) if mask else segs
     reach = max(CLEAR_MM + HEAD_CLEAR_MM, ARROW_GAP_MM) + _STEP
     side = (segs[..., 0] - p[0]) * u[1] - (segs[..., 1] - p[1]) * u[0]  # (n, 2)
     keep = (np.abs(side).min(axis=1) < reach) | (side[:, 0] * side[:, 1] < 0.0)
-    return np.asarray(segs[keep], dtype=np.float64)
+    return keep if mask else np.asarray(segs[keep], dtype=np.float64)
 
 
 def _distances(
@@ -698,8 +728,8 @@ def force(
     p = v.p(at)
     ux, uy = F.x / F.norm, -F.y / F.norm  # paper direction (y down)
     if clear is not None:
-        foot, tail, tip = clear.beside(p, (ux, uy), length, arrive)
-        line_of_action(v.sheet, p, tail, tip, None if foot == p else foot)
+        tail, tip = clear.place(p, (ux, uy), length, arrive)
+        line_of_action(v.sheet, p, tail, tip)
     elif arrive:
         tail, tip = (p[0] - ux * length, p[1] - uy * length), p
     else:
