@@ -194,9 +194,7 @@ def test_no_load_arrow_lies_along_a_link(name: str, monkeypatch: pytest.MonkeyPa
             assert on.sum() * 0.1 <= 2.0, (name, view["kind"], tail, tip, on.sum() * 0.1)
 
 
-def test_force_beside_its_link_is_tied_to_its_point() -> None:
-    """force() with a clearance: an arrow drawn beside its link has a thin line from its point
-    of application across to its own line (and along it to its nearer end)."""
+def _force_along_its_link(box: tuple[float, float, float, float]) -> tuple[Any, Any]:
     from geomcad.sheet.scale import Scale
 
     d = start("A3", TitleBlock("t", "d"))
@@ -204,10 +202,29 @@ def test_force_beside_its_link_is_tied_to_its_point() -> None:
     v = d.viewport(Scale(0.001, "l"), (0.0, 0.0), (150.0, 100.0))
     n = len(sheet.items)
     sheet.add(Polyline(((20.0, 100.0), (280.0, 100.0)), "link"))
-    clear = Clearance(sheet, n, (0.0, 0.0, 300.0, 200.0))
+    clear = Clearance(sheet, n, box)
     out = force(v, (0.0, 0.0), Vec(200.0, 0.0), 10.0, clear=clear)
     assert out is not None
-    tail, tip = out
-    assert math.isclose(abs(tail[1] - 100.0), BESIDE_MM) and tail[1] == tip[1]
-    thin = [it for it in sheet.items if isinstance(it, Polyline) and it.role == "thin"]
-    assert any(it.points[-1] == (150.0, 100.0) for it in thin)
+    return out
+
+
+def test_force_along_its_link_is_on_its_line_of_action() -> None:
+    """force() with a clearance: a load whose line of action runs along its link is drawn on
+    that line through its point (round 14: no arrow beside it on a parallel, tied back by an
+    elbow; review 14, "GOST practice puts the load on its line of action")."""
+    tail, tip = _force_along_its_link((0.0, 0.0, 300.0, 200.0))
+    assert tail[1] == tip[1] == 100.0
+    assert abs(tip[0] - tail[0]) > 0.0
+
+
+@pytest.mark.xfail(
+    strict=True,
+    reason="round 15: the arrow lies on its own link (150-170 mm of a 20-280 mm link) where the "
+    "box leaves room to slide it past the link's end; Clearance.best's costs (the tie along "
+    "the link against the arrow under its ink) do not yet slide it there",
+)
+def test_force_along_its_link_slides_off_it_where_the_box_has_room() -> None:
+    """Where the box has room past the link's end, the arrow is slid along its line of action
+    off the link, its thin line of action tying it back to its point."""
+    tail, tip = _force_along_its_link((0.0, 0.0, 400.0, 200.0))
+    assert min(tail[0], tip[0]) >= 280.0 or max(tail[0], tip[0]) <= 20.0

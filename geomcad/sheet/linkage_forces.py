@@ -2662,16 +2662,21 @@ def load_sides(
         out = past(q + run)
         free_back = not any(r.dot(-u) > cos for _, r in rays)
         on_side = side_run(q, run, k, lines), side_run(q - run, run, k, lines)
-        if on_side[0] > SIDE_RUN_MM and on_side[1] < on_side[0] and free_back:
-            # along a side leaving the point: arriving at it from the other side
+        if (
+            on_side[0] > SIDE_RUN_MM
+            and on_side[1] < on_side[0]
+            and free_back
+            and past(q - run) <= max(slack * k, out)
+        ):
+            # along a side leaving the point: arriving at it from the other side, where that
+            # keeps within the view's margin as far as leaving does (never at the cost of the
+            # lever's size: the walkbeam's G5 from above held its lever at 0,0025 for 0,002)
             side[i] = True
             continue
-        if (
-            out > slack * k
-            and past(q - run) < out - 1.0 * k
-            and free_back
-            and (on_side[1] <= SIDE_RUN_MM or on_side[1] <= on_side[0])
-        ):
+        if out > slack * k and past(q - run) < out - 1.0 * k and free_back:
+            # out of the view leaving it: arriving, along a side or not (a load along a side
+            # beats a lever drawn smaller: the crusher's P_M5 held it at 0,01 for 0,004
+            # (m/s)/mm)
             side[i] = True
             continue
         # leaving along an arrow that arrives there (of the opposite sense): from its tail
