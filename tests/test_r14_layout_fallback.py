@@ -41,7 +41,8 @@ def _forces_sheet(s: Any) -> Any:
     return z, d.finish()
 
 
-def test_no_room_on_a1_falls_back_on_a0(monkeypatch: pytest.MonkeyPatch) -> None:
+def _no_room_below_a0(monkeypatch: pytest.MonkeyPatch) -> None:
+    """The forces layout finds no room for a view on any format smaller than A0."""
     real = lf._compose2
 
     def no_room(s: Any, P: Any, f: Any, k: Any, fmts: Any, kin: Any = None) -> Any:
@@ -50,6 +51,10 @@ def test_no_room_on_a1_falls_back_on_a0(monkeypatch: pytest.MonkeyPatch) -> None
         return real(s, P, f, k, fmts, kin=kin)
 
     monkeypatch.setattr(lf, "_compose2", no_room)
+
+
+def test_no_room_on_a1_falls_back_on_a0(monkeypatch: pytest.MonkeyPatch) -> None:
+    _no_room_below_a0(monkeypatch)
     z, sheet = _forces_sheet(_solved(PUMP))
     assert z.fmt == "A0"
     assert (sheet.width, sheet.height) == (1189.0, 841.0)
@@ -64,14 +69,7 @@ def test_the_fallback_is_the_next_larger_format() -> None:
 def test_a_format_the_file_states_is_kept(monkeypatch: pytest.MonkeyPatch, tmp_path: Path) -> None:
     """A file's ``[sheet] format`` is the format the sheets are handed in on: no room on it is
     the layout's error naming the view, never a sheet on the next larger format."""
-    real = lf._compose2
-
-    def no_room(s: Any, P: Any, f: Any, k: Any, fmts: Any, kin: Any = None) -> Any:
-        if "A0" not in fmts:
-            raise ParameterError("layout", "План сил группы (4, 5)", "has no room on the sheet")
-        return real(s, P, f, k, fmts, kin=kin)
-
-    monkeypatch.setattr(lf, "_compose2", no_room)
+    _no_room_below_a0(monkeypatch)
     path = tmp_path / PUMP.name
     text = PUMP.read_text(encoding="utf-8").replace("[sheet]\n", '[sheet]\nformat = "A1"\n')
     path.write_text(text, encoding="utf-8")
