@@ -220,6 +220,12 @@ LEVER_EDGE_MM = 2.0
 ARROW_SHARE = 1.0 / 3.0
 
 
+#: The share of a view's larger drawn side its longest load arrow may take where that draws a
+#: force the view shows (the lever's P_ур, a free body's reaction) in the view itself rather
+#: than only in an inset (:meth:`_ByScale.scales_at`).
+KEEP_SHARE = 1.0
+
+
 def arrow_room(least: float, margin: float, size: tuple[float, float]) -> float:
     """The room (mm) of the longest load arrow of a view drawn ``size`` (mm, without its
     margin): :data:`ARROW_SHARE` of its larger side, at least ``least``, at most ``margin`` and
@@ -247,6 +253,10 @@ class _ByScale:
     _keep: tuple[float, ...] = ()
     #: the loads the file gives (F_B, a moment's pair of forces): never without a scale
     _given: tuple[float, ...] = ()
+    #: whether :meth:`scales_at` draws the arrows longer, up to KEEP_SHARE, where that draws a
+    #: force of ``_keep`` in the view rather than only in an inset (the lever: only once it is
+    #: drawn as large as its box allows, :meth:`_Lever.grow`, a larger lever first)
+    _keep_long: bool = True
 
     def arrows(self) -> list[tuple[Vec, Vec]]:
         """The forces the view draws as arrows (point, force; model units)."""
@@ -287,6 +297,16 @@ class _ByScale:
                 r = min(far, r * 1.25)
                 at = view_scales(self._forces, r, self._keep, self._given)
                 if self._cost(at)[0] < self._cost(fs)[0] and self._fits(at, scale, box):
+                    fs = at
+            # a force the view shows (the lever's P_ур, a free body's reaction) still drawn
+            # only in an inset: longer arrows, up to KEEP_SHARE of the view's larger side,
+            # where they keep within its box (review 15: the knuckle press's P_ур in inset
+            # Л1 at a third μ_F, its lever showing F_D alone)
+            most = KEEP_SHARE * max(scale.mm(x1 - x0), scale.mm(y1 - y0))
+            while self._keep_long and self._cost(fs)[1] and r < most:
+                r = min(most, r * 1.25)
+                at = view_scales(self._forces, r, self._keep, self._given)
+                if self._cost(at)[:2] < self._cost(fs)[:2] and self._fits(at, scale, box):
                     fs = at
         memo[key] = fs
         return fs
@@ -336,13 +356,16 @@ class _ByScale:
         """How many of the view's forces ``fs`` draws in insets."""
         return sum(1 for F in self._forces if fs.tier(F) not in (0, None))
 
-    def _cost(self, fs: ForceScales) -> tuple[int, int, int]:
+    def _cost(self, fs: ForceScales) -> tuple[int, int, int, int]:
         """How many of the view's forces ``fs`` draws to no scale (named, not drawn, or a
-        direction arrow), whether its insets' longest arrow outgrows the view's shortest (a
-        reaction drawn past their cap), and how many it draws in insets."""
+        direction arrow), how many of those it shows (``_keep``: the lever's P_ур, a free
+        body's reactions) it draws only in insets, whether its insets' longest arrow outgrows
+        the view's shortest (a reaction drawn past their cap), and how many it draws in
+        insets."""
         left = sum(1 for F in self._forces
                    if fs.zero < F and (fs.tier(F) is None or fs.is_fixed(F)))  # fmt: skip
-        return left, int(fs.over > 1.0 + tol.DERIVED), self._shorts(fs)
+        kept = sum(1 for F in self._keep if fs.zero < F and fs.tier(F) not in (0, None))
+        return left, kept, int(fs.over > 1.0 + tol.DERIVED), self._shorts(fs)
 
 
 #: The least length (mm) of a force plan's longest vector (a course project draws its plans
@@ -2824,6 +2847,7 @@ class _Lever(_ByScale, View):
         self._given = tuple(it.force.norm for it in lev.items if it.name in mine)
         self.fs = view_scales(forces, LEVER_LOAD_MM, self._keep, self._given)
         self.short = False
+        self._keep_long = False  # (until :meth:`grow`)
         super().__init__(title=WORDS("lever"), title_height=5.0, quantity="v", series="nice",
                          margin=LEVER_LOAD_MM)  # fmt: skip
         self.lk, self.P, self.f = lk, P, f
@@ -2923,6 +2947,20 @@ class _Lever(_ByScale, View):
         return super().title_room() + self.further_room()
 
     def grow(self, pl: Placed, lay: Layout) -> None:
+        """:meth:`_grow`, then P_ур drawn in the lever rather than in an inset where longer
+        arrows do that within its box (:meth:`_ByScale.scales_at`): the lever as large as its
+        box allows first, its arrows as long as P_ур needs then."""
+        self._keep_long = False
+        self.__dict__.pop("_by_scale", None)
+        try:
+            self._grow(pl, lay)
+        finally:
+            self._keep_long = True
+            self.__dict__.pop("_by_scale", None)
+        if pl.scale is not None:
+            self.fs = self.scales_at(pl.scale)
+
+    def _grow(self, pl: Placed, lay: Layout) -> None:
         """The lever drawn larger in its box where its arrows allow: the layout reserves
         LEVER_LOAD_MM round it for its arrows whatever they are; here the finer steps of its
         series are tried, each with the margin its box leaves round the drawing, while the
