@@ -564,6 +564,8 @@ def _force_layout(s: Solved, grow: bool = True) -> tuple[Tree, formats.Sized]:
     for pl in found[1].layout:
         if isinstance(pl.view, _Lever):
             pl.view.grow(pl, found[1].layout)
+        elif isinstance(pl.view, _FreeBody):
+            pl.view.grow(pl)
     return found
 
 
@@ -2333,6 +2335,11 @@ def detail_scales(length: float, k_view: float) -> list[float]:
     return span or sorted(fine, reverse=True)[:1]
 
 
+#: The room (mm) the layout keeps round a free body's drawing for its arrows (its margin);
+#: :meth:`_FreeBody.grow` takes more where its box has it.
+FREE_MARGIN = LOAD_MM * 0.75
+
+
 class _FreeBody(_Forces):
     """An Assur group (or the crank) cut out, its joints lettered as on the mechanism, with its
     loads and the reactions of the links it is cut from (the external forces of its free body:
@@ -2343,7 +2350,7 @@ class _FreeBody(_Forces):
     def __init__(self, lk: Linkage, P: Position, gf: GroupForces) -> None:
         links = gf.links
         title = WORDS("group", a=links[0], b=links[1]) if gf.group is not None else WORDS("crank")
-        super().__init__(title=title, margin=LOAD_MM * 0.75)
+        super().__init__(title=title, margin=FREE_MARGIN)
         self.lk, self.P, self.gf = lk, P, gf
         pts: list[Vec] = []
         for i in links:
@@ -2360,6 +2367,22 @@ class _FreeBody(_Forces):
         self._given = _given([ld for i in links for ld in gf.loads[i]])
         self.fs = view_scales(self._forces, LOAD_MM, self._keep, self._given)
         self.omitted = omitted_values(self.fs, named)
+
+    def grow(self, pl: Placed) -> None:
+        """The arrows' margin the room the view's box leaves round its drawing (centred in
+        it), less a label's room past an arrow, where that is more than :data:`FREE_MARGIN`:
+        a free body in a large box draws its forces longer, up to :func:`arrow_room` (review
+        15: "μ_F as fine as fits"; the gang saw's group (4, 5) drew R05 10 mm in a box with
+        room for 25 mm). Before its caption is drawn (it states the view's μ_F)."""
+        self.margin = FREE_MARGIN
+        self.__dict__.pop("_by_scale", None)
+        if pl.scale is not None:
+            x0, y0, x1, y1 = self._ext
+            w, h = pl.size
+            room = FREE_MARGIN + min(0.5 * (w - pl.scale.mm(x1 - x0)),
+                                     0.5 * (h - pl.scale.mm(y1 - y0))) - LABEL_ROOM_MM  # fmt: skip
+            self.margin = max(FREE_MARGIN, room)
+            self.fs = self.scales_at(pl.scale)
 
     def arrows(self) -> list[tuple[Vec, Vec]]:
         gf = self.gf
