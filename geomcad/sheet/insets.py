@@ -455,9 +455,19 @@ class Insets:
         cap = cap_h * 2.0
         w, h = max(x1 - x0, cap_w), (y1 - y0) + cap
         corner = free.place(w, h, p)
-        # the point in the inset, its arrows' box under the caption
-        at = (corner[0] + (w - (x1 - x0)) / 2.0 - x0, corner[1] + cap - y0)
-        cap_at = (corner[0] + (w - cap_w) / 2.0, corner[1] + cap_h)
+        # the point in the inset, its arrows' box under the caption; over it where the place
+        # found is not free (a large inset in a full view) and the caption there meets fewer
+        # lines and texts drawn (review 15: the rocking cylinder's lever set "Г2 (μV = …)" over
+        # the letter Ш1)
+        cx = corner[0] + (w - cap_w) / 2.0
+        top = free._count(free.grid, cx, corner[1], cap_w, cap)
+        low = free._count(free.grid, cx, corner[1] + (y1 - y0), cap_w, cap) if top else 0
+        if low < top:
+            at = (corner[0] + (w - (x1 - x0)) / 2.0 - x0, corner[1] - y0)
+            cap_at = (cx, corner[1] + (y1 - y0) + cap - cap_h * 0.5)
+        else:
+            at = (corner[0] + (w - (x1 - x0)) / 2.0 - x0, corner[1] + cap - y0)
+            cap_at = (cx, corner[1] + cap_h)
         # a caption that is the bare letter, set where it would meet the circle's own letter
         # (the copy just under its circle), is left out: that letter names the copy too
         if parts or beside is None or not _meets(beside, caption, cap_at, cap_h):
