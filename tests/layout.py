@@ -193,8 +193,11 @@ def layout_problems(sheet: Sheet, drawing_right: float | None = None) -> list[st
     return out
 
 
-#: A scale factor as a sheet states it: ``μV = 0,01``, ``μ_F = 2,5`` (the markup's plain text).
-STATED = re.compile(r"μ_?\{?([A-Za-z]+)\}?\s*=\s*([0-9][0-9.,]*(?:·10\^?\{?[–-]?\d+\}?)?)")
+#: A scale factor as a sheet states it: ``μV = 0,01``, ``μ_F = 2,5``, ``μF = 10 000`` (grouped by
+#: threes with a narrow no-break space; the markup's plain text).
+STATED = re.compile(
+    r"μ_?\{?([A-Za-z]+)\}?\s*=\s*([0-9](?:[0-9.,]|\u202f(?=\d))*(?:·10\^?\{?[–-]?\d+\}?)?)"
+)
 
 
 def stated_scales(sheet: Sheet) -> set[tuple[str, str]]:
