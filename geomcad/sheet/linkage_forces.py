@@ -2187,7 +2187,7 @@ class _Loaded(_Forces):
         start = len(d.sheet.items)
         lk, P = self.lk, self.P
         ins = Insets(self.fs, P.pos)
-        clear = Clearance(d.sheet, len(d.sheet.items), _load_field(at))
+        clear = Clearance(d.sheet, len(d.sheet.items), _load_field(at), at.box)
         draw_scheme(v, scheme(lk, P), bodies=link_bodies(lk, P), pair_labels={},
                     label_height=3.5, guides=frame_guides(lk), guide_axes=True)  # fmt: skip
         places: dict[str, list[str]] = {}  # every named point, the frame's (O, C) too; the
@@ -2405,7 +2405,7 @@ class _FreeBody(_Forces):
         pairs = tuple(p for p in full.pairs if own & set(p.links))
         near = {x for p in pairs for x in p.links} - own - {full.frame}
         mech = Mechanism(tuple(Link(x) for x in sorted(own | near)), pairs, full.frame)
-        clear = Clearance(d.sheet, len(d.sheet.items), _load_field(at))
+        clear = Clearance(d.sheet, len(d.sheet.items), _load_field(at), at.box)
         draw_scheme(v, mech, bodies=link_bodies(lk, P, links), pair_labels={},
                     ghosts=sorted(near), guides=frame_guides(lk), cut_free=True)  # fmt: skip
         for name in joint_names(lk, links):  # lettered as on the mechanism

@@ -450,6 +450,13 @@ AT_POINT_MM = JOINT_R + 0.5
 #: point of application and its nearer end; and the cost of the end the caller did not ask for
 #: (leaving instead of arriving, or back).
 _W_LINE, _W_HEAD, _W_OUT, _W_GAP, _W_END = 1.0, 4.0, 3.0, 0.1, 0.5
+#: The cost (per mm) of an arrow outside its view's whole box (:attr:`Clearance.limit`): on
+#: another view, or past the sheet's frame, worse than along a link, where it is drawn but
+#: hidden (_W_LINE + _W_INK): a load along its own link slid past the link's end stays in the
+#: view (a sweep of the force positions: the clipper's F_N at its positions 6 and 9 slid 40 mm
+#: past the knife bar's end, over the frame). Outside the arrows' field but in the box (the
+#: margin under the caption) costs _W_OUT as before.
+_W_BOX = 10.0
 #: The cost (per mm) of the arrow across a line (a link outline crossed), and of the thin line
 #: of action that ties a moved arrow back to its point where it runs along a line or across
 #: one (review 9: Φ1 slid past A, its line of action along the crank OA, read as the arrow
@@ -509,6 +516,9 @@ class Clearance:
     sheet: Sheet
     start: int
     box: tuple[float, float, float, float] | None = None
+    #: the view's whole box (sheet mm): an arrow outside it is on another view or past the
+    #: frame (:data:`_W_BOX` a mm); ``None``: ``box``'s cost alone
+    limit: tuple[float, float, float, float] | None = None
     #: The first of the sheet's vectors drawn on this free body (set from ``sheet``).
     first_vector: int = -1
 
@@ -609,9 +619,14 @@ class Clearance:
         if self.box is not None:
             x0, y0, x1, y1 = self.box
             out = (pts[:, 0] < x0) | (pts[:, 0] > x1) | (pts[:, 1] < y0) | (pts[:, 1] > y1)
+        far = np.zeros(len(ts), dtype=bool)
+        if self.limit is not None:
+            x0, y0, x1, y1 = self.limit
+            far = (pts[:, 0] < x0) | (pts[:, 0] > x1) | (pts[:, 1] < y0) | (pts[:, 1] > y1)
         cum = {
             k: np.concatenate([[0.0], np.cumsum(a.astype(float))])
             for k, a in (
+                ("far", far),
                 ("line", on_along),
                 ("ink", on_ink),
                 ("cross", on_cross),
@@ -647,6 +662,7 @@ class Clearance:
             + _W_TIE * run("cross", t0, t1)
             + _W_HEAD * run("head", E - ARROW_LEN, E)
             + _W_OUT * run("out", S, E)
+            + _W_BOX * run("far", S, E)
             + _W_OUT * run("arrow", S, E)
             + _W_GAP * np.minimum(np.abs(S), np.abs(E))
             + _W_END * (((S >= 0.0) & arrive) | ((E <= 0.0) & (not arrive)))
