@@ -455,10 +455,10 @@ class Insets:
         cap = cap_h * 2.0
         w, h = max(x1 - x0, cap_w), (y1 - y0) + cap
         corner = free.place(w, h, p)
-        # the point in the inset, its arrows' box under the caption; over it where the place
-        # found is not free (a large inset in a full view) and the caption there meets fewer
-        # lines and texts drawn (review 15: the rocking cylinder's lever set "Г2 (μV = …)" over
-        # the letter Ш1)
+        # the point in the inset, its arrows' box under the caption; the caption under the
+        # arrows instead where the place found is not free (a large inset in a full view) and
+        # there it meets fewer of the lines, texts and insets drawn (review 15: the rocking
+        # cylinder's lever set "Г2 (μV = …)" over the caption Ш1 of another inset)
         cx = corner[0] + (w - cap_w) / 2.0
         top = free._count(free.grid, cx, corner[1], cap_w, cap)
         low = free._count(free.grid, cx, corner[1] + (y1 - y0), cap_w, cap) if top else 0
