@@ -22,6 +22,7 @@ from geomcad.linkage import parse
 from geomcad.linkage.solution import solve
 from geomcad.sheet import linkage_forces as lf
 from geomcad.sheet.loads import VIEW_OWN_MM
+from geomcad.sheet.model import TextItem
 
 ROOT = Path(__file__).resolve().parent.parent
 GANG_SAW = ROOT / "tests" / "linkages_review13" / "gang_saw_frame_feed.toml"
@@ -83,8 +84,6 @@ def test_the_lever_is_drawn_as_large_as_its_box_allows_first() -> None:
 
 @pytest.mark.parametrize("path", [GANG_SAW, SIXBAR], ids=lambda p: p.stem)
 def test_a_free_body_draws_its_forces_as_long_as_its_box_allows(path: Path) -> None:
-    from geomcad.sheet.model import TextItem
-
     arrows: list[tuple[Any, float, tuple[tuple[float, float], tuple[float, float]]]] = []
     orig = lf.force
 

@@ -615,14 +615,7 @@ class Clearance:
         on_ink &= ~free
         on_cross &= ~free
         on_head &= ~free
-        out = np.zeros(len(ts), dtype=bool)
-        if self.box is not None:
-            x0, y0, x1, y1 = self.box
-            out = (pts[:, 0] < x0) | (pts[:, 0] > x1) | (pts[:, 1] < y0) | (pts[:, 1] > y1)
-        far = np.zeros(len(ts), dtype=bool)
-        if self.limit is not None:
-            x0, y0, x1, y1 = self.limit
-            far = (pts[:, 0] < x0) | (pts[:, 0] > x1) | (pts[:, 1] < y0) | (pts[:, 1] > y1)
+        out, far = _outside(pts, self.box), _outside(pts, self.limit)
         cum = {
             k: np.concatenate([[0.0], np.cumsum(a.astype(float))])
             for k, a in (
@@ -675,6 +668,14 @@ class Clearance:
         tail = (p[0] + u[0] * s, p[1] + u[1] * s)
         tip = (p[0] + u[0] * (s + length), p[1] + u[1] * (s + length))
         return best[0], tail, tip
+
+
+def _outside(pts: npt.NDArray[np.float64], box: tuple[float, float, float, float] | None) -> Any:
+    """Which points (m, 2) lie outside ``box`` (sheet mm; none where ``box`` is ``None``)."""
+    if box is None:
+        return np.zeros(len(pts), dtype=bool)
+    x0, y0, x1, y1 = box
+    return (pts[:, 0] < x0) | (pts[:, 0] > x1) | (pts[:, 1] < y0) | (pts[:, 1] > y1)
 
 
 def _inside(pts: npt.NDArray[np.float64], shapes: list[npt.NDArray[np.float64]]) -> Any:
