@@ -902,6 +902,17 @@ def link_bodies(
                 q = P.pos[n]
                 if (q - C).dot(d) < -tol.DERIVED * max(1.0, q.norm) and not (axes and n in lone):
                     out[str(link)].append(Body.of([C, q]))
+                    continue
+                # a point of the link off its slot (review 17: a planer's B set "from C toward
+                # A" on an offset slot, 0,015 m beside it, drawn free of link 3 with link 4 hung
+                # on it): joined to the slot by an arm square to it; a point no other link
+                # carries only in the main position and where it lies farther than PLATE_NEAR
+                # of the slot's length from it (a centre of mass 1 mm off is on the slot)
+                at = foot + d * (q - foot).dot(d)
+                off = q.dist(at)
+                near = PLATE_NEAR * far if n in lone else tol.DERIVED * max(1.0, q.norm)
+                if n != g.pivot and off > near and not (axes and n in lone):
+                    out[str(link)].append(Body.of([at, q]))
         elif len(uniq) == 2:
             out[str(link)] = [Body.of(uniq)]
         elif len(uniq) > 2 and axes:
