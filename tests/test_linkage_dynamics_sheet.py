@@ -219,3 +219,17 @@ def test_wittenbauers_diagram_is_a_construction_both_ways(path: Path) -> None:
     wide, tall = ax.mm(ax.hi - ax.lo), ay.mm(ay.hi - ay.lo)
     assert wide >= min(lf.WITT_LEAST_MM, tall) - 1e-6, (path.stem, wide, tall)
     assert tall >= 50.0, (path.stem, wide, tall)
+
+
+def test_wittenbauers_curve_numbers_the_positions() -> None:
+    """Each numbered position's point on Wittenbauer's curve is a dot with its number (review
+    17: a curve without 0 … 11 could not be read against the ΔT and I_пр diagrams)."""
+    for stem in ("shaper", "crusher"):
+        sheet = _dynamics(stem)
+        dots = [it.c for it in sheet.items if isinstance(it, CircleItem) and it.role == "point"]
+        labels = {t.text: t for t in sheet.texts() if t.role == "label"}
+        for i in range(12):
+            t = labels.get(str(i))
+            assert t is not None, (stem, i)
+            c = (t.at[0] + t.width / 2.0, t.at[1] - t.height / 2.0)
+            assert min(math.dist(c, q) for q in dots) < 5.0, (stem, i, t.at)

@@ -3433,6 +3433,13 @@ class _Wittenbauer(View):
         gr = Graph(d, ax, ay, (x0 + self.LEFT, y0 + self.ABOVE + 6.0 + ay.mm(ay.hi - ay.zero)))
         gr.axes(current(), tick_labels=True)
         gr.curve(_thin(fw.dense.I_pr), _thin(fw.dA), "result")
+        # the numbered positions' points on the curve, each with its number (review 17: the
+        # curve "without 0 … 11" could not be read against the ΔT and I_пр diagrams it is
+        # built from): I_пр of the position, ΔT of the dense curve at its ψ
+        n = len(fw.phis)
+        psi_k = np.array([2.0 * math.pi * i / n for i in range(n)])
+        for i, (x, y) in enumerate(zip(fw.I_pr, np.interp(psi_k, fw.psi, fw.dA), strict=True)):
+            gr.point(float(x), float(y), str(i))
         gr.point(0.0, a, "a", prefer=(-1.0, 0.0))
         gr.point(0.0, b, "b", prefer=(-1.0, 0.0))
         # each tangent named at its far end, clear of the axes, of a and b and of the curve
