@@ -37,6 +37,7 @@ from geomcad import tol
 from geomcad.construction.recorder import Step
 from geomcad.errors import ParameterError
 from geomcad.geom import Vec
+from geomcad.kinematics.plan import Plan
 from geomcad.linkage.model import Group, Linkage
 from geomcad.linkage.plans import Position, construct
 from geomcad.linkage.solution import Solved, scheme
@@ -264,6 +265,29 @@ class Layout:
     spans: bool = True
 
 
+def centres(lk: Linkage, P: Position, plan: Plan) -> dict[str, tuple[str, str]]:
+    """The images of the links' centres of mass that ``plan`` (P's velocity or acceleration
+    plan) draws beside its own points (:class:`PlanView`'s ``centres``): of each link with a
+    mass whose centre is the middle of its two joints (linkages.md) and is no point of the
+    plan, ``s2`` the middle of the joints' images ab by similarity, with its vector from the
+    pole (V_S2 = ps2·μ_V, a_S2 = πs2′·μ_a: the forces sheet's inertia forces are read off
+    them; review 17, "s_i on no plan")."""
+    out: dict[str, tuple[str, str]] = {}
+    for link in lk.moving_links:
+        m = lk.masses.get(link)
+        joints = lk.link_points(link)
+        if m is None or m.mass <= 0.0 or lk.centre(link) or len(joints) != 2:
+            continue
+        names = dict(P.handles.get(link, []))
+        if not all(j in names for j in joints):
+            continue
+        a, b = (plan.name(names[j]) for j in joints)
+        name = plan.name(f"s{link}")
+        if a in plan.points and b in plan.points and name not in plan.points:
+            out[name] = (a, b)
+    return out
+
+
 def _accel_positions(s: Solved) -> tuple[Position, ...]:
     lk = s.linkage
     return tuple(
@@ -308,6 +332,7 @@ def _trees(
     # vectors shorter than two arrowheads are drawn as their lettered end point (a note says so)
     vviews = [
         PlanView(P.vp, title=WORDS("position", i=i, phi=_deg(P.phi, s)), group="v",
+                 centres=centres(lk, P, P.vp),
                  show_scale=False, weight=2.0, min_mm=SHORT_MM)
         for i, P in enumerate(s.drawn)
     ]  # fmt: skip
@@ -322,6 +347,7 @@ def _trees(
         # each acceleration plan captioned by itself, with its μa, and drawn right under its
         # caption (review 14: "φ1 = 60°" alone at its cell's top, 100 mm from its plan)
         ap = _TopPlan(P.ap, title=WORDS("aplan", phi=_deg(P.phi, s)), group="a", weight=2.0,
+                      centres=centres(lk, P, P.ap),
                       min_mm=SHORT_MM)  # fmt: skip
         # πa′ = ω1²·l at least PA_MM, as pa (review 6: sixbar's was 27 mm in a 250 mm column)
         ap.most_k = round_scale_down(lk.omega**2 * lk.length / PA_MM, "a", ap.series).k
@@ -332,6 +358,7 @@ def _trees(
         # a position of an acceleration plan that is not a numbered one: its velocity plan
         # beside its acceleration plan (every plan's position has both, linkages.md)
         vp = _TopPlan(P.vp, title=WORDS("vplan_detail", phi=_deg(P.phi, s)), group="v",
+                      centres=centres(lk, P, P.vp),
                       weight=2.0, min_mm=SHORT_MM, least_k=k_v)  # fmt: skip
         cells.append(Row(vp, ap))
     # a section holding a position's velocity plan beside its acceleration plan is titled by
@@ -436,7 +463,7 @@ class _TopPlan(PlanView):
     plan beside it, in cells as tall as the taller of the two."""
 
     def draw(self, d: Drawing, at: Placed) -> None:
-        ext = self.plan.extent()
+        ext = self.shown.extent()
         if ext is not None and at.scale is not None:
             _under_title(d, at, ext)
         super().draw(d, at)

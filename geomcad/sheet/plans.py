@@ -9,8 +9,9 @@ coincident points share one label, ``p, o_1, o_2``), and a title with the scale 
 
 from __future__ import annotations
 
+import copy
 import re
-from collections.abc import Mapping
+from collections.abc import Collection, Mapping
 
 from geomcad.geom import Vec
 from geomcad.kinematics.plan import Plan
@@ -73,11 +74,62 @@ def draw_plan(
     return v
 
 
-def plan_lines(v: Viewport, plan: Plan, min_mm: float = 0.5, over_mm: float = LINE_OVER_MM) -> None:
+#: A centre of mass's image (:func:`with_centres`) is drawn where it stands at least this far
+#: (mm) from every other point of its plan: nearer, its letters would crowd theirs (a rocker's
+#: s3 beside "p, o, c" where the rocker is nearly at rest).
+CENTRE_APART_MM = 2.0 * NEAR_POINT_MM
+#: ... and its letters keep this much more room (mm) from the plan's other letters.
+CENTRE_SPACE_MM = 0.5
+
+
+def with_centres(plan: Plan, centres: Mapping[str, tuple[str, str]]) -> Plan:
+    """A copy of ``plan`` with the images of links' centres of mass: ``centres`` maps a new
+    point's name to the two plan points whose middle it is (``s2``: the middle of ab, by
+    similarity: S2 is the middle of AB). The position's own plan is its construction's
+    record and keeps its points."""
+    add = {n: (plan.points[a] + plan.points[b]) * 0.5 for n, (a, b) in centres.items()}
+    if not add:
+        return plan
+    out = copy.copy(plan)
+    out.points = {**plan.points, **add}
+    out.images = [*plan.images, *((a, b, n) for n, (a, b) in centres.items())]
+    return out
+
+
+def _crowded(plan: Plan, scale: Scale, centres: Collection[str]) -> Plan:
+    """``plan`` without those of its ``centres`` that stand nearer than
+    :data:`CENTRE_APART_MM` on the paper to another of its points."""
+    near = {
+        n
+        for n in centres
+        if n in plan.points
+        and any(
+            m != n and scale.mm((q - plan.points[n]).norm) < CENTRE_APART_MM
+            for m, q in plan.points.items()
+        )
+    }
+    if not near:
+        return plan
+    out = copy.copy(plan)
+    out.points = {n: q for n, q in plan.points.items() if n not in near}
+    out.images = [im for im in plan.images if im[2] not in near]
+    return out
+
+
+def plan_lines(
+    v: Viewport,
+    plan: Plan,
+    min_mm: float = 0.5,
+    over_mm: float = LINE_OVER_MM,
+    centres: Collection[str] = (),
+) -> None:
     """The plan drawn through viewport ``v`` (its pole where ``v`` puts the plan's origin): the
     construction lines (run on ``over_mm`` past their points), the vectors (those shorter than
-    ``min_mm`` on the paper without an arrow) and the lettered points."""
+    ``min_mm`` on the paper without an arrow) and the lettered points; of the images of
+    centres of mass named in ``centres``, those clear of the other points
+    (:data:`CENTRE_APART_MM`)."""
     scale = v.scale
+    plan = _crowded(plan, scale, centres)
     over = scale.model(over_mm)
     for ln in plan.lines:
         solved = ln.step.rsplit(":", 1)[0]
@@ -95,7 +147,11 @@ def plan_lines(v: Viewport, plan: Plan, min_mm: float = 0.5, over_mm: float = LI
             if all(scale.mm((q - o).norm) >= SAME_POINT_MM for o in places):
                 places.append(q)
                 v.dot(q)
-        v.label(places[0], ", ".join(markup_of(n) for n in g), 3.5, clear=1.0, others=places[1:])
+        # a centre's letters (drawn where they find room: CENTRE_APART_MM) kept a little
+        # further from the others' than a plan's own letters
+        space = CENTRE_SPACE_MM if any(n in centres for n in g) else 0.0
+        v.label(places[0], ", ".join(markup_of(n) for n in g), 3.5, clear=1.0,
+                others=places[1:], space=space)  # fmt: skip
 
 
 def _near(points: Mapping[str, Vec], scale: Scale) -> list[list[str]]:

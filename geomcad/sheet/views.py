@@ -64,7 +64,7 @@ from geomcad.sheet.drawing import (
 from geomcad.sheet.graph import Axis, Graph, nice_step
 from geomcad.sheet.lang import Words, current
 from geomcad.sheet.model import Polyline
-from geomcad.sheet.plans import LINE_OVER_MM, markup_of, plan_lines
+from geomcad.sheet.plans import LINE_OVER_MM, markup_of, plan_lines, with_centres
 from geomcad.sheet.scale import FIGURES, Scale, ScaleStyle, fmt_number, nice_below, nice_factor
 from geomcad.sheet.scheme import Body, draw_scheme
 from geomcad.sheet.text import balanced, break_points, metrics, wrap, wrap_balanced
@@ -180,6 +180,7 @@ class PlanView(View):
         extra: Callable[[Viewport], None] | None = None,
         min_mm: float = 0.5,
         over_mm: float = LINE_OVER_MM,
+        centres: Mapping[str, tuple[str, str]] | None = None,
         **kw: Any,
     ) -> None:
         kw.setdefault("title", WORDS(f"plan_{plan.kind}"))
@@ -188,12 +189,16 @@ class PlanView(View):
         kw.setdefault("margin", LINE_OVER_MM)
         super().__init__(**kw)
         self.plan = plan
+        #: the plan as drawn: with the images of the links' centres of mass ``centres`` (their
+        #: names: each the middle of two plan points, :func:`with_centres`)
+        self.shown = with_centres(plan, centres or {})
+        self.centres = tuple(centres or ())
         self.extra = extra
         self.min_mm = min_mm
         self.over_mm = over_mm
 
     def extent(self) -> Extent | None:
-        return self.plan.extent()
+        return self.shown.extent()
 
     def lengths(self) -> Sequence[float]:
         pts = self.plan.points
@@ -204,7 +209,7 @@ class PlanView(View):
         position 0's letters stood in position 1's plan on a grid of plans)."""
         assert at.viewport is not None
         at.viewport.within = at.box
-        plan_lines(at.viewport, self.plan, self.min_mm, self.over_mm)
+        plan_lines(at.viewport, self.shown, self.min_mm, self.over_mm, self.centres)
         if self.extra is not None:
             self.extra(at.viewport)
 
