@@ -289,11 +289,25 @@ def centres(lk: Linkage, P: Position, plan: Plan) -> dict[str, tuple[str, str]]:
 
 
 def _accel_positions(s: Solved) -> tuple[Position, ...]:
+    """The positions of the kinematic sheet's acceleration plans: those of ``s.accel_phis``
+    (the file's first two ``phi``, else the largest output accelerations, linkages.md), then
+    the force analysis' position where the file gives masses or loads and it is none of them
+    (review 17: "the inertia forces rest on an a_S that no plan shows"; its plan gives the
+    forces sheet's a_Si = πs_i′·μ_a)."""
     lk = s.linkage
-    return tuple(
+    out = [
         next((P for P in s.drawn if abs(P.phi - phi) <= tol.ANGLE), None) or construct(lk, phi)
         for phi in s.accel_phis
-    )
+    ]
+    if lk.masses or lk.loads:
+        P0, _ = _principal(s)
+        turn = 2.0 * math.pi
+        if all(
+            P is not P0 and min((P.phi - P0.phi) % turn, (P0.phi - P.phi) % turn) > tol.ANGLE
+            for P in out
+        ):
+            out.append(P0)
+    return tuple(out)
 
 
 def _trees(
@@ -516,12 +530,35 @@ def _arranged(s: Solved) -> tuple[Layout, tuple[Arranged, ...]]:
     except where that costs the mechanism the crank's rule at its own scale (the crank's
     detail, or a rule missed, where the arrangement without it keeps them): the crank's rule
     outranks the diagrams' (round 2: sixbar-slider's tall mechanism keeps 1:2 beside them)."""
-    lay, views, share = _arrange(s, True)
-    if _detailed(lay) or share < 1.0 - tol.REL_LENGTH:
-        lay2, views2, share2 = _arrange(s, False)
-        if (_detailed(lay) and not _detailed(lay2)) or share2 > share + tol.REL_LENGTH:
+    accel = _accel_positions(s)
+    lay, views, share = _arranged_with(s, accel)
+    two = accel[: len(s.accel_phis)]
+    if len(two) < len(accel):
+        # the force analysis' acceleration plan (:func:`_accel_positions`) where the sheet
+        # keeps its rules with it as without it: never at the cost of the crank's detail, of
+        # a size rule or of the diagrams' plots (review 17 asked for the plan; the layouts of
+        # sixbar-slider and press_offset_long_rod had no room for it)
+        lay2, views2, share2 = _arranged_with(s, two)
+        if (
+            (_detailed(lay) and not _detailed(lay2))
+            or share2 > share + tol.REL_LENGTH
+            or (_plot_low(views[0]) and not _plot_low(views2[0]))
+        ):
             return lay2, views2
     return lay, views
+
+
+def _arranged_with(
+    s: Solved, accel: Sequence[Position]
+) -> tuple[Layout, tuple[Arranged, ...], float]:
+    """:func:`_arranged` with the acceleration plans of ``accel``, and how far it keeps the
+    size rules (:func:`_rules_share`)."""
+    lay, views, share = _arrange(s, accel, True)
+    if _detailed(lay) or share < 1.0 - tol.REL_LENGTH:
+        lay2, views2, share2 = _arrange(s, accel, False)
+        if (_detailed(lay) and not _detailed(lay2)) or share2 > share + tol.REL_LENGTH:
+            return lay2, views2, share2
+    return lay, views, share
 
 
 def _detailed(lay: Layout) -> bool:
@@ -529,10 +566,12 @@ def _detailed(lay: Layout) -> bool:
     return isinstance(lay.mech, _Mechanism) and lay.mech.detail is not None
 
 
-def _arrange(s: Solved, spans: bool) -> tuple[Layout, tuple[Arranged, ...], float]:
-    """:func:`_arranged` with or without the diagrams' span as their least size, and how far
-    it keeps the size rules (:func:`_rules_share`)."""
-    accel = _accel_positions(s)
+def _arrange(
+    s: Solved, accel: Sequence[Position], spans: bool
+) -> tuple[Layout, tuple[Arranged, ...], float]:
+    """:func:`_arranged` with the acceleration plans of ``accel``, with or without the
+    diagrams' span as their least size, and how far it keeps the size rules
+    (:func:`_rules_share`)."""
     fmts = sheet_formats(s.linkage)
     made: list[tuple[tuple[Tree, ...], _Mechanism, bool, dict[View, float]]] = []
     detail, rules, apart, balanced = False, (False, False), False, True
@@ -668,7 +707,7 @@ def _arrange(s: Solved, spans: bool) -> tuple[Layout, tuple[Arranged, ...], floa
             if isinstance(view, _Note):
                 view.shown = short
     k_v = lays[-1].scale("v")
-    out = Layout(lays[0][mech].scale or Scale(1.0), k_v, lays[0].scale("a"), second, accel,
+    out = Layout(lays[0][mech].scale or Scale(1.0), k_v, lays[0].scale("a"), second, tuple(accel),
                  trees, mech, sized, balanced, squeezed, spans)  # fmt: skip
     return out, lays, _rules_share(s, fitted)
 
@@ -2856,6 +2895,8 @@ def tabled_cells(s: Solved, P: Position) -> dict[str, str]:
     """The kinematic sheet's table cells of the position at ``P``'s crank angle, by their
     column's symbol (``ω_{2}``, ``ε_{3}``, ``a_{B}``): another sheet prints a value the
     kinematic sheet tables as its cell reads (one rounding per value in a set of sheets)."""
+    # (the force analysis' position among the acceleration plans': its ε read as the
+    # kinematic sheet tables it where that draws its plan, without running that layout)
     accel = _accel_positions(s)
     omega, eps = _tables(s, accel)
     return _cells(P, [(omega, s.drawn), (eps, accel)], same=True)

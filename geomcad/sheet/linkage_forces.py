@@ -119,6 +119,7 @@ from geomcad.sheet.lang import Words, current
 from geomcad.sheet.linkage import (
     CRANK_MM,
     DETAIL_RING_MM,
+    NO_SCALE,
     SMALL_TEXT_H,
     TEXT_COST,
     TEXT_H,
@@ -462,7 +463,9 @@ def _dynamics_sheet(s: Solved, flywheel: Flywheel, designation: str, no: int, co
     """Sheet 3: the flywheel by Wittenbauer's method."""
     lk = s.linkage
     tree, z = fit(lambda h: (_sheet3(s, flywheel, h), {}), sheet_formats(lk))
-    d = z.start(_title(lk, WORDS("dynamics"), designation, no, count))
+    # its diagrams have no length scale: "—" in the Масштаб cell, as on the velocity plans'
+    # sheet (review 17: the cell left empty on the dynamics sheet alone)
+    d = z.start(replace(_title(lk, WORDS("dynamics"), designation, no, count), scale=NO_SCALE))
     compose(d, tree, layout=z.layout)
     return d.finish()
 
