@@ -533,11 +533,13 @@ def _arranged(s: Solved) -> tuple[Layout, tuple[Arranged, ...]]:
     accel = _accel_positions(s)
     lay, views, share = _arranged_with(s, accel)
     two = accel[: len(s.accel_phis)]
-    if len(two) < len(accel):
+    kept = not _detailed(lay) and share >= 1.0 - tol.REL_LENGTH and not _plot_low(views[0])
+    if len(two) < len(accel) and not kept:
         # the force analysis' acceleration plan (:func:`_accel_positions`) where the sheet
         # keeps its rules with it as without it: never at the cost of the crank's detail, of
         # a size rule or of the diagrams' plots (review 17 asked for the plan; the layouts of
-        # sixbar-slider and press_offset_long_rod had no room for it)
+        # sixbar-slider and press_offset_long_rod had no room for it); with every rule kept
+        # (``kept``) the sheet without it can be no better, and is not laid out
         lay2, views2, share2 = _arranged_with(s, two)
         if (
             (_detailed(lay) and not _detailed(lay2))
