@@ -88,3 +88,7 @@ SAME_PLACE = 1.0e-6
 #: total overflow loses to it whatever the rest adds (the layout score compares overflow rounded
 #: to a millionth of a mm, so this is well above round-off).
 LAYOUT_BEATEN_MM = 1.0e-3
+
+#: A closed path on a sheet whose enclosed area is under this share of its length squared (and
+#: that turns back on itself exactly twice) runs over one curve forth and back: a rocker's joint.
+RETRACED_AREA = 1.0e-6

@@ -9,22 +9,14 @@ import tomllib
 from pathlib import Path
 
 import pytest
+from test_slotted_link_arms import _distance
 
 from geomcad import tol
-from geomcad.geom import Vec
 from geomcad.linkage import parse
 from geomcad.linkage.solution import solve
 from geomcad.sheet.linkage import link_bodies
 
 FILE = Path(__file__).resolve().parent / "linkages_review17" / "planer_offset_kulisa.toml"
-
-
-def _distance(q: Vec, a: Vec, b: Vec) -> float:
-    d = b - a
-    if d.dot(d) == 0.0:
-        return (q - a).norm
-    t = max(0.0, min(1.0, (q - a).dot(d) / d.dot(d)))
-    return (a + d * t - q).norm
 
 
 @pytest.mark.parametrize("axes", [False, True], ids=["main", "thin"])

@@ -1142,23 +1142,18 @@ def _paths(lk: Linkage, joints: Sequence[str] = ()) -> dict[str, list[Vec]]:
     return {n: [Vec(float(a), float(b)) for a, b in st.pos[n]] for n in names}
 
 
-#: A closed path whose enclosed area is under this share of its length squared, and that turns
-#: back on itself exactly twice, runs over one curve forth and back (a rocker's joint).
-RETRACED_AREA = 1e-6
-
-
 def one_pass(path: Sequence[Vec]) -> list[Vec]:
     """A point's path over a turn as it is drawn: where it runs over one curve forth and back
     (a rocker's joint on its arc: review 17, its dash-dot line drawn twice, the two passes' dashes
     out of step, printed as a solid thin line), that curve once, between the two points where it
-    turns back; any other path as it is."""
+    turns back (:data:`~geomcad.tol.RETRACED_AREA`); any other path as it is."""
     pts = list(path)
     if len(pts) < 4:
         return pts
     segs = [b - a for a, b in itertools.pairwise(pts)]
     length = sum(s.norm for s in segs)
     area = 0.5 * abs(sum(a.cross(b) for a, b in itertools.pairwise([*pts, pts[0]])))
-    if length <= 0.0 or area > RETRACED_AREA * length * length:
+    if length <= 0.0 or area > tol.RETRACED_AREA * length * length:
         return pts
     live = [i for i, s in enumerate(segs) if s.norm > tol.DERIVED * length]
     turns = [j for i, j in itertools.pairwise([*live, live[0]]) if segs[i].dot(segs[j]) < 0.0]
