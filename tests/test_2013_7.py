@@ -510,13 +510,13 @@ def test_sheet_layout_and_scales(seed_sheet: Sheet) -> None:
     words = [t.text for t in seed_sheet.texts()]
     # the layout step's scales: the mechanism 1:2.5, the plans at 1 N/mm, the joints enlarged
     assert "1:2,5" in words  # the title block's scale
-    assert any("μl = 0,0025 м/мм" in w and "M 1:2,5" in w for w in words)
+    assert any("μl = 0,0025 м/мм" in w and "М 1:2,5" in w for w in words)
     assert "План сил звена 6, μF = 1 Н/мм" in words
     assert "План сил звена 2, μF = 1 Н/мм" in words
     assert sum(w.startswith("Шарнир ") for w in words) == 3
     kj = Scale(geomcad.solve(PID).scales["j"], "l")
     assert kj.k < 0.0025  # larger than the mechanism's 1:2.5
-    assert any(w.startswith("Шарниры") and f"(M {kj.ratio_text()})" in w for w in words)
+    assert any(w.startswith("Шарниры") and f"(М {kj.ratio_text()})" in w for w in words)
 
 
 def test_sheet_labels_name_the_points_and_forces(seed_sheet: Sheet) -> None:

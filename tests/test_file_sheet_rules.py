@@ -286,7 +286,7 @@ def test_dynamics_table_has_the_diagrams_sign_and_one_format_per_column() -> Non
 
 
 def _ratios(sheet: Sheet) -> list[str]:
-    return [t.text.split("(M ")[1].split(")")[0] for t in sheet.texts() if "μl = " in t.text]
+    return [t.text.split("(М ")[1].split(")")[0] for t in sheet.texts() if "μl = " in t.text]
 
 
 def test_forces_sheet_scales_from_geometry(tmp_path: Path) -> None:

@@ -831,9 +831,12 @@ def test_the_lever_joins_each_links_images_and_letters_every_load_point(
     lev = f.lever
     # (a point off the velocity plan whose loads are all left out, named in the caption as
     # under the share drawn, is not drawn: review 12's unexplained d4)
+    # (a moment is an arc on its link's image: its couple's points, the image's ends, drawn)
     fs = levers[-1].fs
-    drawn = [it.image for it in lev.items
+    forces, moments = lf.lever_loads(f)
+    drawn = [it.image for it in forces
              if fs.tier(it.force.norm) is not None or P.pn(it.point) in P.vp.points]  # fmt: skip
+    drawn += [it.image for m in moments for it in m.pair]
     for q in [*drawn, lev.images[lk.joint]]:
         assert any(a.dist(q) * k < 0.85 and m.strip() for a, m, k in anchors), (name, q)
 

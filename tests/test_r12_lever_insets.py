@@ -3,7 +3,7 @@ the groups' free bodies, Zhukovsky's lever) draws its forces at ONE stated μ_F 
 inset Г held Φ5* and G5**): a place's forces at two of the insets' μ_F are drawn at the finer
 where that keeps them within INSET_ONE_MM, else as two insets (twins) of one μ_F each; and
 the lever draws no point nothing on the sheet explains (the bloom shear's "d₄": the point of
-P_MФ4, a force left out as negligible)."""
+P_MФ4, a force left out as negligible; a moment is now an arc on its link's image)."""
 
 from __future__ import annotations
 
@@ -75,19 +75,22 @@ def test_no_inset_holds_forces_at_two_scales(drawn: dict[str, Any]) -> None:
 
 
 def test_the_lever_draws_only_explained_points(drawn: dict[str, Any]) -> None:
-    """Every point lettered on the lever is a point of the velocity plan or one a load drawn
-    on the lever acts at (never a point of loads all left out)."""
+    """Every point lettered on the lever is a point of the velocity plan, one a force drawn
+    on the lever acts at (never a point of loads all left out), or one a moment's arc is
+    drawn on (the ends of its link's image: its couple's points)."""
     if drawn["sheet"] is None:
         pytest.skip("no forces sheet")
+    from geomcad.sheet.linkage_forces import lever_loads
+
     for sheet, lev, _ in drawn["lever"]:
         if sheet is not drawn["sheet"]:
             continue
         P, f = lev.P, lev.f
+        forces, moments = lever_loads(f)
         named = set(P.vp.points) | {
-            P.pn(it.point)
-            for it in f.lever.items
-            if it.point and lev.fs.tier(it.force.norm) is not None
+            P.pn(it.point) for it in forces if it.point and lev.fs.tier(it.force.norm) is not None
         }
+        named |= {P.pn(it.point) for m in moments for it in m.pair if it.point}
         # the points' labels are placed once the sheet's views are drawn: the sheet's
         for t in drawn["sheet"].items:
             if not isinstance(t, TextItem):

@@ -3,9 +3,8 @@ free body and Zhukovsky's lever draw their forces at the view's μ_F and at most
 μ_F of all the view's insets (two, μF* and μF**, where one cannot draw every load of 0.5 %
 of the view's largest or more to scale: review 9); one inset per point (all its short forces
 under one letter, one circle), its letter at its own circle (touching it, just outside it,
-or on a short leader from it), never nearer another inset's circle; the lever names a
-moment's couple by its pair of forces (P_MФ3 in N), never by the moment (MФ3 is N·m in the
-table).
+or on a short leader from it), never nearer another inset's circle; the lever draws a
+moment as its arc on the link's image, named by the moment (review 17), not as a couple.
 
 Each forces sheet is drawn with its views, their insets and their arrows recorded: every arrow
 goes through ``loads.force`` (the view's through ``linkage_forces``, an inset's through
@@ -276,26 +275,36 @@ def test_one_inset_per_point_its_letter_at_its_circle(drawn: dict[str, Any]) -> 
                     assert _gap(t, other.c, other.r) > gap, (letter, gap)
 
 
-def test_the_lever_names_a_moments_couple_by_its_pair_of_forces(drawn: dict[str, Any]) -> None:
-    from geomcad.sheet.linkage_forces import _Lever, load_name
+def test_the_lever_draws_a_moment_as_its_arc_on_the_links_image(drawn: dict[str, Any]) -> None:
+    """A moment (M_Ф3, a given M_3) goes onto the lever as an arc on its link's image named by
+    the moment, as M·xy/l_XY (review 17: its couple's two arrows P_MФ3 took insets at two more
+    μ_F): no arrow of the lever is named by a moment or by its couple, none is left out, and
+    the moment's name is lettered in the lever's box."""
+    from geomcad.sheet.linkage_forces import _Lever, lever_loads, load_name
+    from geomcad.sheet.text import parse
 
     levers = [(view, at) for view, at, _ in drawn["views"] if isinstance(view, _Lever)]
     assert len(levers) == 1
     lever, at = levers[0]
-    f = lever.f
-    moments = {ld.name for lds in f.loads.values() for ld in lds if ld.force is None}
-    couples = [it for it in f.lever.items if it.name in moments]
-    if not couples:
+    forces, moments = lever_loads(lever.f)
+    if not moments:
         pytest.skip("no moment on this lever")
+    # every load of the lever's model is drawn: a force as an arrow, a couple as its moment
+    assert len(forces) + 2 * len(moments) == len(lever.f.lever.items)
     v = at.viewport
-    # (a label's mark of its inset tier, ^{*}, ^{**}, is not its name)
     labels = [label.split("^{*", 1)[0] for w, _, label in drawn["arrows"] if w is v]
+    x0, y0, x1, y1 = at.box
+    texts = [
+        _text(t)
+        for t in drawn["sheet"].items
+        if isinstance(t, TextItem) and x0 <= t.at[0] <= x1 and y0 <= t.at[1] <= y1
+    ]
     for m in moments:
-        name = load_name(m)
+        name = load_name(m.name)
         pair = "P_{" + name.replace("_{", "").replace("}", "").replace("_", "") + "}"
-        # the moment's own name (N·m) is never a force's label or named with a value in N
-        assert name not in labels
-        assert not any(o.startswith(f"{name} =") for o in lever.omitted)
-        if any(it.name == m for it in couples):
-            # each couple drawn under its pair's name, or named so among those left out
-            assert labels.count(pair) == 2 or any(o.startswith(f"{pair} =") for o in lever.omitted)
+        assert name not in labels and pair not in labels
+        assert not any(o.startswith((f"{name} =", f"{pair} =")) for o in lever.omitted)
+        shown = "".join(r.text for r in parse(name))
+        assert shown in texts, (shown, texts)
+        # its sense: that of the couple's moment about the pole, M·ω of its link turned
+        assert m.value == pytest.approx(sum(it.moment for it in m.pair), rel=1e-9)

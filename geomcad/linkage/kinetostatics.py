@@ -876,6 +876,7 @@ def zhukovsky(
             f"the moment about p of {it.name} at its image ({it.image.x:.6g}, {it.image.y:.6g})",
         )
     total = sum(it.moment for it in items)
+    moments = any(ld.force is None for lds in given.values() for ld in lds)
     e = (P.pos[lk.joint] - P.pos[lk.pivot]).unit()
     # F_bal = f·e⊥ at the image of A: its lever moment is −ω1·l·f; the lever balances
     f = total / (lk.omega * lk.length)
@@ -887,6 +888,9 @@ def zhukovsky(
         "balancing force ⊥ OA at the image of the crank's joint = 0; M = F_bal·l_OA",
         kind="zhukovsky",
         args={
+            # how the loads go onto the lever: forces only, or forces and moments (each
+            # on its link's image, as the sheet draws it)
+            "loads": "@lever_moments" if moments else "@lever_forces",
             "a": plan_name(lk.joint),
             "OA": f"{lk.pivot}{lk.joint}",
             "F": _clean(f * lk.length, scale) / lk.length,

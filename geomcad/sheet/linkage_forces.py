@@ -63,7 +63,7 @@ import contextvars
 import itertools
 import math
 from collections.abc import Callable, Iterator, Mapping, Sequence
-from dataclasses import replace
+from dataclasses import dataclass, replace
 
 import numpy as np
 import numpy.typing as npt
@@ -75,7 +75,14 @@ from geomcad.forces import ForcePolygon
 from geomcad.geom import Vec
 from geomcad.linkage.analysis import analyse
 from geomcad.linkage.dynamics import Flywheel
-from geomcad.linkage.kinetostatics import Applied, Forces, GroupForces, Lever, Reaction
+from geomcad.linkage.kinetostatics import (
+    Applied,
+    Forces,
+    GroupForces,
+    Lever,
+    LeverItem,
+    Reaction,
+)
 from geomcad.linkage.loads import centre_vec
 from geomcad.linkage.model import Linkage
 from geomcad.linkage.plans import Position
@@ -114,7 +121,7 @@ from geomcad.sheet.graph import (
     nice_steps,
     thousands_power,
 )
-from geomcad.sheet.insets import Insets, _seg_dist, one_scale_per_inset
+from geomcad.sheet.insets import MARK_R, TWIN_SHIFT_MM, Insets, _seg_dist, one_scale_per_inset
 from geomcad.sheet.lang import Words, current
 from geomcad.sheet.linkage import (
     CRANK_MM,
@@ -2203,6 +2210,7 @@ class _Loaded(_Forces):
                 places.setdefault(there, []).append(name)
         for there, names in places.items():
             v.label(P.pos[there], ", ".join(markup_of(n) for n in names), 3.5, clear=1.0)
+        label_centres(v, lk, P, self.loads, [P.pos[n] for n in places])
         # the moments, then the forces, each clear of the links and of the arrows before it
         _draw_loads(v, lk, P, self.loads, self.fs, "vector", clear, insets=ins)
         omega_arrow(v, lk, P)
@@ -2413,6 +2421,8 @@ class _FreeBody(_Forces):
                     ghosts=sorted(near), guides=frame_guides(lk), cut_free=True)  # fmt: skip
         for name in joint_names(lk, links):  # lettered as on the mechanism
             v.label(P.pos[name], markup_of(name), 3.5, clear=1.0)
+        label_centres(v, lk, P, [ld for i in links for ld in gf.loads[i]],
+                      [P.pos[n] for n in joint_names(lk, links)])  # fmt: skip
         arcs: dict[tuple[float, float], int] = {}
         for r in external(gf):
             if r.couple:
@@ -2439,6 +2449,24 @@ class _FreeBody(_Forces):
             v.turn(P.pos[lk.pivot], M, m_bal_start(lk, P, M), WORDS("M_bal"), M_BAL_MM,
                    M_BAL_SWEEP_DEG, "result", 2.5)  # fmt: skip
         draw_insets(d, at, self, ins, start, self.omitted)
+
+
+def label_centres(
+    v: Viewport, lk: Linkage, P: Position, loads: Sequence[Applied], named: Sequence[Vec]
+) -> None:
+    """Each centre of mass S_i a weight or an inertia force of ``loads`` acts at: a dot,
+    lettered as the order of the analysis names it ("в точке S_5"), where it is the middle
+    of its link's joints (a named point, ``named`` places, is lettered already)."""
+    seen: set[int] = set()
+    for ld in loads:
+        if ld.kind not in ("weight", "inertia") or ld.link in seen or lk.centre(ld.link):
+            continue
+        seen.add(ld.link)
+        q = centre_vec(lk, ld.link, P.pos)
+        if any(q.dist(n) <= tol.SAME_PLACE * lk.length for n in named):
+            continue
+        v.dot(q)
+        v.label(q, markup_of(f"S{ld.link}"), 3.5, clear=1.0)
 
 
 #: The forces sheet's crank detail reaches this many crank lengths round the pivot (the crank,
@@ -2867,19 +2895,21 @@ class _Lever(_ByScale, View):
 
     def __init__(self, lk: Linkage, P: Position, f: Forces) -> None:
         lev = f.lever
-        forces = [it.force.norm for it in lev.items] + [lev.F_bal.norm]
+        #: the forces drawn as arrows, and each moment's couple, drawn as the moment's arc
+        #: on its link's image (:func:`lever_loads`)
+        self.items, self.moments = lever_loads(f)
+        forces = [it.force.norm for it in self.items] + [lev.F_bal.norm]
         self._forces, self._least, self._keep = forces, LEVER_LOAD_MM, (lev.F_bal.norm,)
         mine = {ld.name for lds in f.loads.values() for ld in _given_loads(lds)}
-        self._given = tuple(it.force.norm for it in lev.items if it.name in mine)
+        self._given = tuple(it.force.norm for it in self.items if it.name in mine)
         self.fs = view_scales(forces, LEVER_LOAD_MM, self._keep, self._given)
         self.short = False
         self._keep_long = False  # (until :meth:`grow`)
         super().__init__(title=WORDS("lever"), title_height=5.0, quantity="v", series="nice",
                          margin=LEVER_LOAD_MM)  # fmt: skip
         self.lk, self.P, self.f = lk, P, f
-        #: each load's name on the lever: a moment's couple by its pair of forces (P_MФ3)
-        self.names = lever_names(f)
-        self._named = [(n, it.force.norm) for n, it in zip(self.names, lev.items, strict=True)]
+        self.names = [it.name for it in self.items]
+        self._named = [(n, it.force.norm) for n, it in zip(self.names, self.items, strict=True)]
         self.omitted = omitted_values(self.fs, self._named)
         pts = [Vec(0.0, 0.0), *lever_images(P, lev).values(), *(it.image for it in lev.items)]
         xs = [q.x for q in pts]
@@ -2887,12 +2917,22 @@ class _Lever(_ByScale, View):
         self._ext = (min(xs), min(ys), max(xs), max(ys))
         self.most_k = lever_k([q for q, _ in self.arrows()], self._ext, self.series)
 
+    def _drawn_at(self, fs: ForceScales) -> set[str]:
+        """The names of the points off the velocity plan the lever draws: those of the forces
+        it draws (at ``fs``) and the ends of the links' images its moments are drawn on."""
+        P = self.P
+        at = {P.pn(it.point) for it in self.items
+              if it.point and fs.tier(it.force.norm) is not None}  # fmt: skip
+        return at | {P.pn(it.point) for m in self.moments for it in m.pair if it.point}
+
     def extent(self) -> tuple[float, float, float, float]:
         return self._ext
 
     def arrows(self) -> list[tuple[Vec, Vec]]:
         lev = self.f.lever
-        return [(it.image, it.force) for it in lev.items] + [(lev.images[self.lk.joint], lev.F_bal)]
+        return [(it.image, it.force) for it in self.items] + [
+            (lev.images[self.lk.joint], lev.F_bal)
+        ]
 
     def _sides(
         self, k: float, images: Mapping[str, Vec], fs: ForceScales | None = None, slide: bool = True
@@ -2903,9 +2943,9 @@ class _Lever(_ByScale, View):
         fs = fs or self.fs
         lev = self.f.lever
         loads = [(it.image, it.force, load_name(n), "vector")
-                 for n, it in zip(self.names, lev.items, strict=True)]  # fmt: skip
+                 for n, it in zip(self.names, self.items, strict=True)]  # fmt: skip
         loads.append((lev.images[self.lk.joint], lev.F_bal, WORDS("P_bal"), "result"))
-        points = [self.P.pn(it.point) if it.point else "" for it in lev.items]
+        points = [self.P.pn(it.point) if it.point else "" for it in self.items]
         points.append(self.P.pn(self.lk.joint))
         # the forces short at the view's μ_F go to its insets, the others are drawn here
         ins = Insets(fs, images)
@@ -2941,10 +2981,9 @@ class _Lever(_ByScale, View):
                 drawn.append((a, b))
         images = lever_images(P, lev)
         # a point off the velocity plan whose loads are all left out (review 12: the bloom
-        # shear's d4 of P_MФ4 = 27 N, 0,02 %) would be a point nothing on the sheet
+        # shear's d4 of a force left out, 0,02 %) would be a point nothing on the sheet
         # explains: not drawn, nor its link's side to it
-        drawn_at = {P.pn(it.point) for it in lev.items
-                    if it.point and fs.tier(it.force.norm) is not None}  # fmt: skip
+        drawn_at = self._drawn_at(fs)
         images = {n: q for n, q in images.items() if n in P.vp.points or n in drawn_at}
         for figure in lever_links(self.lk, P, lev).values():
             mine = [images[n] for n in figure if n in images]
@@ -3046,8 +3085,7 @@ class _Lever(_ByScale, View):
         for a, b in self.lines(kv.k):
             v.seg(a, b, "construction")
         images = lever_images(P, lev)
-        drawn_at = {P.pn(it.point) for it in lev.items
-                    if it.point and self.fs.tier(it.force.norm) is not None}  # fmt: skip
+        drawn_at = self._drawn_at(self.fs)
         images = {n: q for n, q in images.items() if n in P.vp.points or n in drawn_at}
         groups: list[tuple[Vec, list[str]]] = []
         for name, im in images.items():
@@ -3063,6 +3101,18 @@ class _Lever(_ByScale, View):
             asked.append(len(d.pending))
             v.label(q, ", ".join(names), 2.5, clear=0.8)
         ins, here, lengths, sides = self._sides(kv.k, images)
+        # the moments: each an arc on its link's image, in the sense of M·xy/l_XY, clear of
+        # the lettered points (and their insets) where the image is long enough
+        arcs: dict[tuple[float, float], int] = {}
+        clear_of = [Vec(0.0, 0.0), *(q for q, _ in groups), *(sh.at for sh in ins.shorts)]
+        for m in self.moments:
+            if abs(m.value) > tol.DERIVED * max(abs(it.moment) for it in m.pair):
+                q = m.at(kv.k, clear_of, MOMENT_MM)
+                r = _moment_radius(v, q, arcs)
+                if any(kv.mm(c.dist(q)) < 1.0 for c in clear_of):
+                    r += INSET_ARC_MM
+                moment(v, q, m.value, r, load_name(m.name), "vector", height=2.5)
+                clear_of.append(q)
         segs = []
         for (_, F, _, _), (arrive, at_), n in zip(here, sides, lengths, strict=True):
             run = F.unit() * (kv.k * n) if F.norm > 0.0 else Vec(0.0, 0.0)
@@ -3089,6 +3139,17 @@ class _Lever(_ByScale, View):
             if out <= RING_LABEL_MM:
                 rq.clear = max(rq.clear, out)
 
+
+#: How much larger (mm) a moment's arc on the lever is round a point an inset is drawn at: past
+#: the inset's circles (MARK_R, twins TWIN_SHIFT_MM apart) by 3 mm.
+INSET_ARC_MM = MARK_R + TWIN_SHIFT_MM + 3.0 - MOMENT_MM
+
+#: A moment's arc on the lever keeps this far (mm) past its radius from the lettered points
+#: where it can (:meth:`LeverMoment.at`): tried at ARC_PLACES + 1 places along its link's
+#: image from its middle out, then on the image's line past its ends, ARC_STEP_MM apart.
+ARC_CLEAR_MM = 4.0
+ARC_PLACES = 8
+ARC_STEP_MM = 2.0
 
 #: A lever's point is lettered outside the insets' circles round it where their outline is at
 #: most this far (mm) from it: the label a gap (1 mm) past the outline stays within the 6 mm a
@@ -3117,18 +3178,63 @@ def ring_clearance(q: XY, rings: Sequence[CircleItem], steps: int = 72) -> float
     return least
 
 
-def pair_name(moment: str) -> str:
-    """The name of the pair of forces that stands for the moment ``moment`` on Zhukovsky's
-    lever: P with the moment's name as its index (``M_{Ф3}`` → ``P_{MФ3}``)."""
-    return f"P_{{{moment.replace('_{', '').replace('_', '').replace('}', '')}}}"
+@dataclass(frozen=True)
+class LeverMoment:
+    """A moment load on Zhukovsky's lever: its name (``M_{Ф3}``), its couple's two forces
+    ``pair`` (the model's :class:`LeverItem` s, at the images of two points of its link) and
+    their moment about the pole, M·xy/l_XY on the lever (the sense its arc is drawn in)."""
+
+    name: str
+    pair: tuple[LeverItem, LeverItem]
+
+    def at(self, k: float, clear_of: Sequence[Vec], r_mm: float) -> Vec:
+        """Where its arc of radius ``r_mm`` is drawn at ``k`` model units per mm: on its
+        link's image xy (the segment between its couple's images), at the place nearest the
+        middle whose arc keeps :data:`ARC_CLEAR_MM` clear of the points ``clear_of`` (their
+        letters and insets), else on the line of xy past its nearer end as little as does;
+        where none does, the place farthest from them."""
+        a, b = self.pair[0].image, self.pair[1].image
+        ts = [0.5 + (0.5 if i % 2 else -0.5) * ((i + 1) // 2) / (ARC_PLACES // 2 + 1)
+              for i in range(ARC_PLACES + 1)]  # fmt: skip
+        # a short image: on its line past its ends (a moment is the same anywhere on its link)
+        run = a.dist(b) / k
+        if run > 0.0:
+            steps = int((r_mm + ARC_CLEAR_MM) // ARC_STEP_MM) + 1
+            for j in range(1, steps + 1):
+                ts += [1.0 + j * ARC_STEP_MM / run, -j * ARC_STEP_MM / run]
+        best, far = a + (b - a) * 0.5, -1.0
+        for t in ts:
+            q = a + (b - a) * t
+            gap = min((q.dist(c) / k for c in clear_of), default=math.inf)
+            if gap >= r_mm + ARC_CLEAR_MM:
+                return q
+            if gap > far:
+                best, far = q, gap
+        return best
+
+    @property
+    def value(self) -> float:
+        return self.pair[0].moment + self.pair[1].moment
 
 
-def lever_names(f: Forces) -> list[str]:
-    """The name of each load of the lever of ``f`` (model names): a force's own, each force
-    of a moment's couple its pair's (:func:`pair_name`), never the moment's (a force in N
-    is not the moment in N·m of the table)."""
+def lever_loads(f: Forces) -> tuple[list[LeverItem], list[LeverMoment]]:
+    """The loads of the lever of ``f`` as the lever draws them: the forces, each an arrow at
+    the image of its point; and the moments (M_Ф3, a given M_5), each on the image xy of
+    its link as the moment M·xy/l_XY its couple (±M/l_XY ⊥ XY at X and Y, the model's
+    two items) has about any point of the lever: an arc named by the moment, not two arrows
+    at a further μ_F (review 17: the crusher's lever drew five couples, ten arrows, nine in
+    insets at μ_F* and μ_F**)."""
     moments = {ld.name for lds in f.loads.values() for ld in lds if ld.force is None}
-    return [pair_name(it.name) if it.name in moments else it.name for it in f.lever.items]
+    forces = [it for it in f.lever.items if it.name not in moments]
+    pairs: dict[tuple[str, int], list[LeverItem]] = {}
+    for it in f.lever.items:
+        if it.name in moments:
+            pairs.setdefault((it.name, it.link), []).append(it)
+    out = []
+    for (name, _), its in pairs.items():
+        assert len(its) == 2, (name, its)
+        out.append(LeverMoment(name, (its[0], its[1])))
+    return forces, out
 
 
 def _table2(f: Forces, h: float) -> Table:

@@ -279,7 +279,7 @@ def linkage_scheme(d: Drawing, data: Mapping[str, Any], position: Mapping[str, A
     v = d.viewport(k, centre, ((LEFT + RIGHT) / 2, top + 8.0 + (height - 8.0) / 2))
     phi = position.get("phi_deg")
     where = f"   φ_1 = {float(phi):.4g}°" if isinstance(phi, int | float) else ""
-    d.text(f"{k.label(ScaleStyle(lang=lang))}   (M {k.ratio_text() or '-'}){where}",
+    d.text(f"{k.label(ScaleStyle(lang=lang))}   (\u041c {k.ratio_text() or '-'}){where}",
            (LEFT + PAD, top + 4.0), TEXT_H)  # fmt: skip
 
     def seg(a: object, b: object) -> None:
