@@ -144,7 +144,7 @@ def _tree(sol: Solution[Geometry], k_l: float, k_v: float) -> tuple[Node, dict[s
     head = V.Text(paragraph=WORDS("title"), width=160.0, height=5.0)
     factors = V.Text(
         lines=[
-            f"{factor(k)} (\u041c {k.ratio_text() or '—'});  {factor(kv)};  "
+            f"{factor(k)} ({WORDS('ratio', ratio=k.ratio_text() or '—')});  {factor(kv)};  "
             f"μ_ω = {num(k_omega, 6)} {WORDS('rad_s_mm')}"
         ],
         height=3.5,

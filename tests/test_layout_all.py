@@ -78,8 +78,10 @@ BASELINE: dict[tuple[str, str], dict[str, int]] = {
     # neither tier draws 5 mm long (G_4, Φ_4 on the mechanism, group (4, 5) and the lever) is a
     # 5 mm direction arrow, stated "стрелки 5 мм без масштаба" under its view's caption (7 × 5.00)
     # (anchor 9: the lever pole's "p, o, c" 6,8 mm off, pushed out by the twins Г1/Ж1 round it,
-    # round 12's one μ_F per inset; round 13: lettered next to the twins' outline, 8)
-    ("linkage-shaper", "forces"): {"anchor": 8, "empty": 1, "short-vector": 8},
+    # round 12's one μ_F per inset; round 13: lettered next to the twins' outline, 8; review
+    # 17: S4, the rod's centre of mass its G4 and Ф4 act at, lettered at the rod's middle where
+    # its number 4 stands, on the mechanism and on group (4, 5): both 7 mm off, 10)
+    ("linkage-shaper", "forces"): {"anchor": 10, "empty": 1, "short-vector": 8},
     ("linkage-shaper", "dynamics"): {"empty": 1},
     # the twelve numbered positions drawn beside the file's phi: B's labels crowd near the
     # rocker's extreme (7 … 11 mm)

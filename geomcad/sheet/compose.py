@@ -252,13 +252,16 @@ class View:
 def scale_text(scale: Scale, style: ScaleStyle | None = None) -> str:
     """A scale's label as the title of a view shows it, in the language being drawn:
     ``μ_l = 0,0025 м/мм (М 1:2,5)`` (a Cyrillic М), ``μ_l = 0.0025 m/mm (1:2.5)``."""
+    from geomcad.sheet.scale import WORDS as SCALE_WORDS
+
     lang = current()
     text = scale.label(style or ScaleStyle(lang=lang))
     ratio = scale.ratio_text()
     if lang != "ru":
         ratio = ratio.replace(",", ".")
-    # the Cyrillic М (U+041C) of «масштаб»: the Latin M prints the same but is another letter
-    return (f"{text} (\u041c {ratio})" if lang == "ru" else f"{text} ({ratio})") if ratio else text
+    # "(М 1:2,5)" with the Cyrillic М of «масштаб» (the Latin M prints the same but is
+    # another letter); "(1:2.5)" in English
+    return f"{text} ({SCALE_WORDS('ratio', ratio=ratio)})" if ratio else text
 
 
 class Figure(View):

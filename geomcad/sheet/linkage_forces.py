@@ -2897,19 +2897,21 @@ class _Lever(_ByScale, View):
         lev = f.lever
         #: the forces drawn as arrows, and each moment's couple, drawn as the moment's arc
         #: on its link's image (:func:`lever_loads`)
-        self.items, self.moments = lever_loads(f)
-        forces = [it.force.norm for it in self.items] + [lev.F_bal.norm]
+        self.lever_forces, self.moments = lever_loads(f)
+        forces = [it.force.norm for it in self.lever_forces] + [lev.F_bal.norm]
         self._forces, self._least, self._keep = forces, LEVER_LOAD_MM, (lev.F_bal.norm,)
         mine = {ld.name for lds in f.loads.values() for ld in _given_loads(lds)}
-        self._given = tuple(it.force.norm for it in self.items if it.name in mine)
+        self._given = tuple(it.force.norm for it in self.lever_forces if it.name in mine)
         self.fs = view_scales(forces, LEVER_LOAD_MM, self._keep, self._given)
         self.short = False
         self._keep_long = False  # (until :meth:`grow`)
         super().__init__(title=WORDS("lever"), title_height=5.0, quantity="v", series="nice",
                          margin=LEVER_LOAD_MM)  # fmt: skip
         self.lk, self.P, self.f = lk, P, f
-        self.names = [it.name for it in self.items]
-        self._named = [(n, it.force.norm) for n, it in zip(self.names, self.items, strict=True)]
+        self.names = [it.name for it in self.lever_forces]
+        self._named = [
+            (n, it.force.norm) for n, it in zip(self.names, self.lever_forces, strict=True)
+        ]
         self.omitted = omitted_values(self.fs, self._named)
         pts = [Vec(0.0, 0.0), *lever_images(P, lev).values(), *(it.image for it in lev.items)]
         xs = [q.x for q in pts]
@@ -2921,7 +2923,7 @@ class _Lever(_ByScale, View):
         """The names of the points off the velocity plan the lever draws: those of the forces
         it draws (at ``fs``) and the ends of the links' images its moments are drawn on."""
         P = self.P
-        at = {P.pn(it.point) for it in self.items
+        at = {P.pn(it.point) for it in self.lever_forces
               if it.point and fs.tier(it.force.norm) is not None}  # fmt: skip
         return at | {P.pn(it.point) for m in self.moments for it in m.pair if it.point}
 
@@ -2930,7 +2932,7 @@ class _Lever(_ByScale, View):
 
     def arrows(self) -> list[tuple[Vec, Vec]]:
         lev = self.f.lever
-        return [(it.image, it.force) for it in self.items] + [
+        return [(it.image, it.force) for it in self.lever_forces] + [
             (lev.images[self.lk.joint], lev.F_bal)
         ]
 
@@ -2943,9 +2945,9 @@ class _Lever(_ByScale, View):
         fs = fs or self.fs
         lev = self.f.lever
         loads = [(it.image, it.force, load_name(n), "vector")
-                 for n, it in zip(self.names, self.items, strict=True)]  # fmt: skip
+                 for n, it in zip(self.names, self.lever_forces, strict=True)]  # fmt: skip
         loads.append((lev.images[self.lk.joint], lev.F_bal, WORDS("P_bal"), "result"))
-        points = [self.P.pn(it.point) if it.point else "" for it in self.items]
+        points = [self.P.pn(it.point) if it.point else "" for it in self.lever_forces]
         points.append(self.P.pn(self.lk.joint))
         # the forces short at the view's μ_F go to its insets, the others are drawn here
         ins = Insets(fs, images)

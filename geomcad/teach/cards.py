@@ -27,6 +27,7 @@ from geomcad.sheet import Scale, ScaleStyle, Sheet, TitleBlock, gost_scale_to_fi
 from geomcad.sheet.drawing import Drawing
 from geomcad.sheet.frame import fill_title_blocks
 from geomcad.sheet.lang import Lang
+from geomcad.sheet.scale import WORDS as SCALE_WORDS
 from geomcad.sheet.text import box, parse
 from geomcad.teach import quantities
 
@@ -279,7 +280,8 @@ def linkage_scheme(d: Drawing, data: Mapping[str, Any], position: Mapping[str, A
     v = d.viewport(k, centre, ((LEFT + RIGHT) / 2, top + 8.0 + (height - 8.0) / 2))
     phi = position.get("phi_deg")
     where = f"   φ_1 = {float(phi):.4g}°" if isinstance(phi, int | float) else ""
-    d.text(f"{k.label(ScaleStyle(lang=lang))}   (\u041c {k.ratio_text() or '-'}){where}",
+    ratio = SCALE_WORDS("ratio", lang, ratio=k.ratio_text() or "-")
+    d.text(f"{k.label(ScaleStyle(lang=lang))}   ({ratio}){where}",
            (LEFT + PAD, top + 4.0), TEXT_H)  # fmt: skip
 
     def seg(a: object, b: object) -> None:
