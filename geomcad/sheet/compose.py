@@ -56,6 +56,7 @@ from geomcad.sheet.drawing import Drawing, Viewport
 from geomcad.sheet.frame import Frame
 from geomcad.sheet.lang import current
 from geomcad.sheet.scale import GOST_RATIOS, NICE, PLAN_NICE, Quantity, Scale, ScaleStyle
+from geomcad.sheet.scale import WORDS as SCALE_WORDS
 from geomcad.sheet.text import balanced, break_points, parse
 from geomcad.sheet.text import box as text_box
 
@@ -252,8 +253,6 @@ class View:
 def scale_text(scale: Scale, style: ScaleStyle | None = None) -> str:
     """A scale's label as the title of a view shows it, in the language being drawn:
     ``μ_l = 0,0025 м/мм (М 1:2,5)`` (a Cyrillic М), ``μ_l = 0.0025 m/mm (1:2.5)``."""
-    from geomcad.sheet.scale import WORDS as SCALE_WORDS
-
     lang = current()
     text = scale.label(style or ScaleStyle(lang=lang))
     ratio = scale.ratio_text()

@@ -2908,10 +2908,7 @@ class _Lever(_ByScale, View):
         super().__init__(title=WORDS("lever"), title_height=5.0, quantity="v", series="nice",
                          margin=LEVER_LOAD_MM)  # fmt: skip
         self.lk, self.P, self.f = lk, P, f
-        self.names = [it.name for it in self.lever_forces]
-        self._named = [
-            (n, it.force.norm) for n, it in zip(self.names, self.lever_forces, strict=True)
-        ]
+        self._named = [(it.name, it.force.norm) for it in self.lever_forces]
         self.omitted = omitted_values(self.fs, self._named)
         pts = [Vec(0.0, 0.0), *lever_images(P, lev).values(), *(it.image for it in lev.items)]
         xs = [q.x for q in pts]
@@ -2944,8 +2941,7 @@ class _Lever(_ByScale, View):
         :func:`uncross` where ``slide``) at scale ``k`` (model units per mm)."""
         fs = fs or self.fs
         lev = self.f.lever
-        loads = [(it.image, it.force, load_name(n), "vector")
-                 for n, it in zip(self.names, self.lever_forces, strict=True)]  # fmt: skip
+        loads = [(it.image, it.force, load_name(it.name), "vector") for it in self.lever_forces]
         loads.append((lev.images[self.lk.joint], lev.F_bal, WORDS("P_bal"), "result"))
         points = [self.P.pn(it.point) if it.point else "" for it in self.lever_forces]
         points.append(self.P.pn(self.lk.joint))
