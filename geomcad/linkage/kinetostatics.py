@@ -471,7 +471,8 @@ def _tangential(o: int, link: int, E: str, J: str, M: float, length: float) -> d
     }
 
 
-def _name(i: int, j: int) -> str:
+def reaction_name(i: int, j: int) -> str:
+    """The reaction of link ``i`` on link ``j``: R_ij (R_i,j past link 9)."""
     return f"R_{{{i}{j}}}" if i < 10 and j < 10 else f"R_{{{i},{j}}}"
 
 
@@ -501,7 +502,7 @@ class _Solver:
     ) -> None:
         """Record the force of ``of`` on ``on``; its opposite goes on ``of``'s loads (an
         earlier link) unless ``of`` is in the group or the frame."""
-        r = Reaction(_name(of, on), of, on, F, at, joint, sliding, h, couple)
+        r = Reaction(reaction_name(of, on), of, on, F, at, joint, sliding, h, couple)
         gf.reactions.append(r)
         self.reactions.append(r)
         self.c.record(
@@ -515,7 +516,16 @@ class _Solver:
         if of != 0 and of not in gf.links:
             vel = self._velocity(of, at)
             on_loads[of].append(
-                Applied(_name(on, of), of, "reaction", -F, at, 0.0, joint if h == 0.0 else "", vel)
+                Applied(
+                    reaction_name(on, of),
+                    of,
+                    "reaction",
+                    -F,
+                    at,
+                    0.0,
+                    joint if h == 0.0 else "",
+                    vel,
+                )
             )
             if couple:
                 on_loads[of].append(Applied(f"M_{{{on}{of}}}", of, "reaction", None, None, -couple))
@@ -564,9 +574,9 @@ class _Solver:
             c,
             gf,
             f"{g.key}: polygon of link {a}",
-            [Known(_name(o1, a), R1), *_knowns(La)],
-            _name(b, a),
-            f"{_name(o1, a)} + ΣF_{a} + {_name(b, a)} = 0",
+            [Known(reaction_name(o1, a), R1), *_knowns(La)],
+            reaction_name(b, a),
+            f"{reaction_name(o1, a)} + ΣF_{a} + {reaction_name(b, a)} = 0",
         )
         self._react(gf, o1, a, R1, P.pos[E1], E1, loads)
         self._react(gf, o2, b, R2, P.pos[E2], E2, loads)
@@ -596,25 +606,25 @@ class _Solver:
             Known(f"R^τ_{{{o}{a}}}", t * Rt),
             *_knowns(La),
             *_knowns(Lb),
-            Unknown(_name(gl, b), n_dir),
+            Unknown(reaction_name(gl, b), n_dir),
             Unknown(f"R^n_{{{o}{a}}}", u),
         ]
         poly = force_polygon(c, f"{g.key}: force polygon", terms)
         gf.polygons.append((f"{g.key}: force polygon", poly))
-        n = poly.signed(_name(gl, b))
+        n = poly.signed(reaction_name(gl, b))
         N = n_dir * n
         R = t * Rt + u * poly.signed(f"R^n_{{{o}{a}}}")
         Rab = _closing(
             c,
             gf,
             f"{g.key}: polygon of link {b}",
-            [*_knowns(Lb), Known(_name(gl, b), N)],
-            _name(a, b),
-            f"ΣF_{b} + {_name(gl, b)} + {_name(a, b)} = 0",
+            [*_knowns(Lb), Known(reaction_name(gl, b), N)],
+            reaction_name(a, b),
+            f"ΣF_{b} + {reaction_name(gl, b)} + {reaction_name(a, b)} = 0",
         )
         # the slider about J: ΣM_J(loads) + h·n = 0
         Mb = _moment(Lb, pJ)
-        h, m = self._arm(f"{g.key}: h_{gl}{b}", -Mb, n, J, b, _name(gl, b))
+        h, m = self._arm(f"{g.key}: h_{gl}{b}", -Mb, n, J, b, reaction_name(gl, b))
         self._react(gf, o, a, R, pE, E, loads)
         self._react(gf, a, b, Rab, pJ, J, loads)
         self._react(gf, gl, b, N, pJ + d * h, J, loads, sliding=True, h=h, couple=m)
@@ -676,7 +686,7 @@ class _Solver:
             f"N·{arm:.6g} m = ΣM_{C}(link {b}) + ΣM_{A}(block {a})",
             kind="slot_normal",
             args={
-                "N": _name(b, a),
+                "N": reaction_name(b, a),
                 "a": a,
                 "b": b,
                 "A": A,
@@ -687,22 +697,22 @@ class _Solver:
             },
         )
         N = n_dir * n
-        h, m = self._arm(f"{g.key}: h_{b}{a}", -MA, n, A, a, _name(b, a))
+        h, m = self._arm(f"{g.key}: h_{b}{a}", -MA, n, A, a, reaction_name(b, a))
         RC = _closing(
             c,
             gf,
             f"{g.key}: polygon of link {b}",
-            [*_knowns(Lb), Known(_name(a, b), -N)],
-            _name(own[C], b),
-            f"ΣF_{b} + {_name(a, b)} + {_name(own[C], b)} = 0",
+            [*_knowns(Lb), Known(reaction_name(a, b), -N)],
+            reaction_name(own[C], b),
+            f"ΣF_{b} + {reaction_name(a, b)} + {reaction_name(own[C], b)} = 0",
         )
         RA = _closing(
             c,
             gf,
             f"{g.key}: polygon of link {a}",
-            [*_knowns(La), Known(_name(b, a), N)],
-            _name(own[A], a),
-            f"ΣF_{a} + {_name(b, a)} + {_name(own[A], a)} = 0",
+            [*_knowns(La), Known(reaction_name(b, a), N)],
+            reaction_name(own[A], a),
+            f"ΣF_{a} + {reaction_name(b, a)} + {reaction_name(own[A], a)} = 0",
         )
         self._react(gf, own[A], a, RA, pA, A, loads)
         self._react(gf, b, a, N, pA + d * h, A, loads, sliding=True, h=h, couple=m)
@@ -719,28 +729,30 @@ class _Solver:
         La, Lb = gf.loads[a], gf.loads[b]
         terms: list[Term] = [
             *_knowns(Lb),
-            Unknown(_name(a, b), sdir.perp()),
-            Unknown(_name(0, b), gdir.perp()),
+            Unknown(reaction_name(a, b), sdir.perp()),
+            Unknown(reaction_name(0, b), gdir.perp()),
         ]
         poly = force_polygon(c, f"{g.key}: force polygon of link {b}", terms)
         gf.polygons.append((f"{g.key}: force polygon of link {b}", poly))
-        Nab = sdir.perp() * poly.signed(_name(a, b))  # of a on b
-        N0b = gdir.perp() * poly.signed(_name(0, b))
+        Nab = sdir.perp() * poly.signed(reaction_name(a, b))  # of a on b
+        N0b = gdir.perp() * poly.signed(reaction_name(0, b))
         RA = _closing(
             c,
             gf,
             f"{g.key}: polygon of link {a}",
-            [*_knowns(La), Known(_name(b, a), -Nab)],
-            _name(own[A], a),
-            f"ΣF_{a} + {_name(b, a)} + {_name(own[A], a)} = 0",
+            [*_knowns(La), Known(reaction_name(b, a), -Nab)],
+            reaction_name(own[A], a),
+            f"ΣF_{a} + {reaction_name(b, a)} + {reaction_name(own[A], a)} = 0",
         )
         # the block about A: ΣM_A + h1·n_ba = 0, N_ba = −N_ab along the slot's normal
-        n_ba = -poly.signed(_name(a, b))
-        h1, m1 = self._arm(f"{g.key}: h_{b}{a}", -_moment(La, pA), n_ba, A, a, _name(b, a))
+        n_ba = -poly.signed(reaction_name(a, b))
+        h1, m1 = self._arm(f"{g.key}: h_{b}{a}", -_moment(La, pA), n_ba, A, a, reaction_name(b, a))
         at1 = pA + sdir * h1
         # the yoke about E: ΣM_E(loads) + (at1 − E) × N_ab − m1 + h2·n_0b (+ m2) = 0
         Mb = _moment(Lb, pE) + (at1 - pE).cross(Nab) - m1
-        h2, m2 = self._arm(f"{g.key}: h_0{b}", -Mb, poly.signed(_name(0, b)), E, b, _name(0, b))
+        h2, m2 = self._arm(
+            f"{g.key}: h_0{b}", -Mb, poly.signed(reaction_name(0, b)), E, b, reaction_name(0, b)
+        )
         self._react(gf, own[A], a, RA, pA, A, loads)
         self._react(gf, b, a, -Nab, at1, A, loads, sliding=True, h=h1, couple=m1)
         self._react(gf, 0, b, N0b, pE + gdir * h2, E, loads, sliding=True, h=h2, couple=m2)
@@ -764,7 +776,12 @@ class _Solver:
             args={"O": lk.pivot, "A": lk.joint},
         )
         R01 = _closing(
-            c, gf, "crank: polygon of link 1", _knowns(L1), _name(0, 1), f"ΣF_1 + {_name(0, 1)} = 0"
+            c,
+            gf,
+            "crank: polygon of link 1",
+            _knowns(L1),
+            reaction_name(0, 1),
+            f"ΣF_1 + {reaction_name(0, 1)} = 0",
         )
         M = c.value(
             "M_bal",

@@ -82,6 +82,7 @@ from geomcad.linkage.kinetostatics import (
     Lever,
     LeverItem,
     Reaction,
+    reaction_name,
 )
 from geomcad.linkage.loads import centre_vec
 from geomcad.linkage.model import Linkage
@@ -3249,7 +3250,9 @@ def _table2(f: Forces, h: float) -> Table:
                 order.append(("M", len(moments) - 1))
     big = max(r.force.norm for r in f.reactions)
     for i, j in f.pairs:
-        name = f"R_{{{i}{j}}}" if j < 10 else f"R_{{{i},{j}}}"
+        # a reaction between two moving links by both its names, R_23 = R_32: the drawings
+        # name it by the link it acts on (link 2's polygon R_32, link 3's R_23; review 18)
+        name = reaction_name(i, j) if i == 0 else f"{reaction_name(i, j)} = {reaction_name(j, i)}"
         forces.append((name, f.R(i, j).norm, big))
         order.append(("F", len(forces) - 1))
     for r in f.reactions:
