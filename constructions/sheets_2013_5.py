@@ -57,6 +57,7 @@ from geomcad.sheet.drawing import SHORT_MM
 from geomcad.sheet.form import composed
 from geomcad.sheet.gearing import gear_web, ground_line, ring_gear, shaft_bearing
 from geomcad.sheet.lang import Words
+from geomcad.sheet.scale import WORDS as SCALE_WORDS
 from geomcad.sheet.scale import gost_length_scale, nice_factor
 from geomcad.sheet.trains import AngleDiagram, linear_velocities, scaled_rays
 
@@ -144,7 +145,7 @@ def _tree(sol: Solution[Geometry], k_l: float, k_v: float) -> tuple[Node, dict[s
     head = V.Text(paragraph=WORDS("title"), width=160.0, height=5.0)
     factors = V.Text(
         lines=[
-            f"{factor(k)} ({WORDS('ratio', ratio=k.ratio_text() or '—')});  {factor(kv)};  "
+            f"{factor(k)} ({SCALE_WORDS('ratio', ratio=k.ratio_text() or '—')});  {factor(kv)};  "
             f"μ_ω = {num(k_omega, 6)} {WORDS('rad_s_mm')}"
         ],
         height=3.5,
